@@ -1,0 +1,68 @@
+"""Command line: ``python -m navcore ledger|figures``.
+
+``python -m navcore ledger [--paper KEY] [--json] [--csv]``
+    print the verification ledger; exit status 1 if any claim fails its own check.
+``python -m navcore figures [--out DIR] [--only ID ...]``
+    write every registered figure to ``DIR`` (default ``figures/``) as SVG and PNG.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import io
+import sys
+from pathlib import Path
+
+
+def _cmd_ledger(args: argparse.Namespace) -> int:
+    from navcore import ledger
+    from navcore.ledger.render import json_dump, rows, text_table
+
+    evals = ledger.evaluations(paper=args.paper)
+    if args.json:
+        print(json_dump(evals))
+    elif args.csv:
+        buf = io.StringIO()
+        data = rows(evals)
+        writer = csv.DictWriter(buf, fieldnames=list(data[0]) if data else ["id"])
+        writer.writeheader()
+        writer.writerows(data)
+        sys.stdout.write(buf.getvalue())
+    else:
+        print(text_table(evals))
+    failing = [e for e in evals if not e.passes]
+    for e in failing:
+        print(f"FAIL {e.claim.id}: {e.detail}", file=sys.stderr)
+    return 1 if failing else 0
+
+
+def _cmd_figures(args: argparse.Namespace) -> int:
+    from navcore import figures
+
+    out = Path(args.out)
+    written = figures.write_all(out, only=args.only or None)
+    for path in written:
+        print(path)
+    return 0
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m navcore", description=__doc__.splitlines()[0])
+    sub = parser.add_subparsers(dest="command", required=True)
+    p_ledger = sub.add_parser("ledger", help="print the verification ledger")
+    p_ledger.add_argument("--paper", choices=["WF", "SP", "ATC10", "KZL"], default=None)
+    fmt = p_ledger.add_mutually_exclusive_group()
+    fmt.add_argument("--json", action="store_true", help="JSON array of claim objects")
+    fmt.add_argument("--csv", action="store_true", help="CSV rows")
+    p_ledger.set_defaults(func=_cmd_ledger)
+    p_fig = sub.add_parser("figures", help="write every registered figure as SVG and PNG")
+    p_fig.add_argument("--out", default="figures", help="output folder (default: figures)")
+    p_fig.add_argument("--only", nargs="*", help="figure ids to write")
+    p_fig.set_defaults(func=_cmd_figures)
+    args = parser.parse_args(argv)
+    return int(args.func(args))
+
+
+if __name__ == "__main__":
+    sys.exit(main())

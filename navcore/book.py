@@ -1,0 +1,118 @@
+"""Helpers for the book's notebooks: style, ledger rows, figures, summary boxes.
+
+A chapter typically starts with::
+
+    from navcore import book
+    book.setup()
+    book.chapter_summary("WF")          # counts of the chapter's claims by status
+
+shows a registered figure (glued, so the Markdown can give it a numbered caption)::
+
+    book.show_figure("WF-fig1")
+
+and ends a section with its published-versus-reproduced rows::
+
+    book.claims_table(prefix="WF-sec3")
+"""
+
+from __future__ import annotations
+
+import html
+from typing import Any
+
+from navcore import figures as _figures
+from navcore import ledger
+from navcore.ledger.core import STATUSES
+from navcore.ledger.render import STATUS_COLOURS, CountsTable, ErrataList, LedgerTable
+
+__all__ = [
+    "setup",
+    "claims_table",
+    "counts_table",
+    "errata_list",
+    "chapter_summary",
+    "show_figure",
+    "Markdown",
+]
+
+
+def setup() -> None:
+    """Apply the figure style and quiet numpy's printing for the notebooks."""
+    import numpy as np
+
+    _figures.apply_style()
+    np.set_printoptions(precision=5, suppress=True, linewidth=100)
+
+
+def claims_table(
+    paper: str | None = None, prefix: str | None = None, ids: list[str] | None = None, *, notes: bool = True
+) -> LedgerTable:
+    """Published-versus-reproduced table of the selected claims (HTML coloured; PDF table)."""
+    if ids is not None:
+        evals = [ledger.evaluate_claim(i) for i in ids]
+    else:
+        evals = ledger.evaluations(paper=paper, prefix=prefix)
+    if not evals:
+        raise ValueError(f"no claims match paper={paper!r}, prefix={prefix!r}, ids={ids!r}")
+    return LedgerTable(evals, show_notes=notes)
+
+
+def counts_table(paper: str | None = None) -> CountsTable:
+    """Counts of claims per paper and status."""
+    return CountsTable(paper)
+
+
+def errata_list(paper: str | None = None) -> ErrataList:
+    """The registered errata (of one paper, or all)."""
+    return ErrataList(ledger.errata(paper))
+
+
+class Markdown:
+    """An output with HTML and Markdown representations (for boxes and short notes)."""
+
+    def __init__(self, markdown: str, html_text: str | None = None) -> None:
+        self.markdown = markdown
+        self.html_text = html_text
+
+    def _repr_markdown_(self) -> str:
+        return self.markdown
+
+    def _repr_html_(self) -> str | None:
+        return self.html_text
+
+
+def chapter_summary(paper: str) -> Markdown:
+    """A box with the chapter's ledger counts by status, for the top of a chapter."""
+    c = ledger.counts(paper)[paper]
+    failing = sum(not e.passes for e in ledger.evaluations(paper))
+    parts = [f"{c[s]} {s}" for s in STATUSES if c[s]]
+    md = (
+        f"**Ledger for {paper}:** {c['total']} claims — " + ", ".join(parts)
+        + (f"; **{failing} failing their check**" if failing else "; every check passes") + "."
+    )
+    chips = "".join(
+        f'<span style="background:{STATUS_COLOURS[s]};padding:2px 8px;border-radius:4px;'
+        f'margin-right:6px">{c[s]} {html.escape(s)}</span>'
+        for s in STATUSES
+    )
+    html_text = (
+        f'<div class="ledger-summary" style="border:1px solid #ccc;border-radius:6px;padding:8px 12px;'
+        f'margin:8px 0"><b>Ledger for {paper}:</b> {c["total"]} claims &nbsp; {chips}'
+        + (f"<b style='color:#b00'>{failing} failing</b>" if failing else "every check passes")
+        + "</div>"
+    )
+    return Markdown(md, html_text)
+
+
+def show_figure(fig_id: str, *, display: bool = False) -> Any:
+    """Render a registered figure and glue it under ``fig_id`` for a ``{glue:figure}``.
+
+    With ``display=True`` the figure is also shown in the cell output.
+    """
+    import matplotlib.pyplot as plt
+    from myst_nb import glue
+
+    fig = _figures.render(fig_id)
+    glue(fig_id, fig, display=display)
+    plt.close(fig)
+    return None

@@ -1,0 +1,53 @@
+"""Estimation: one Kalman filter and its relatives for all four papers.
+
+Modules
+-------
+kalman
+    prediction, Joseph-form update, information form.
+riccati
+    steady state of the scalar Riccati recursion.
+discretize
+    Van Loan discretisation and the first-order transition.
+covariance
+    linear covariance analysis over a measurement schedule.
+layout
+    named state layouts.
+"""
+
+from navcore.estimation.covariance import CovarianceHistory, Measurement, propagate_covariance
+from navcore.estimation.discretize import first_order_transition, van_loan
+from navcore.estimation.kalman import (
+    KalmanUpdate,
+    covariance_from_information,
+    information_from_covariance,
+    information_update,
+    kf_predict,
+    kf_update,
+    symmetrize,
+)
+from navcore.estimation.layout import StateBlock, StateLayout
+from navcore.estimation.riccati import (
+    ScalarSteadyState,
+    scalar_riccati_iterate,
+    scalar_riccati_steady_state,
+)
+
+__all__ = [
+    "CovarianceHistory",
+    "Measurement",
+    "propagate_covariance",
+    "first_order_transition",
+    "van_loan",
+    "KalmanUpdate",
+    "covariance_from_information",
+    "information_from_covariance",
+    "information_update",
+    "kf_predict",
+    "kf_update",
+    "symmetrize",
+    "StateBlock",
+    "StateLayout",
+    "ScalarSteadyState",
+    "scalar_riccati_iterate",
+    "scalar_riccati_steady_state",
+]

@@ -1,0 +1,149 @@
+r"""Linear covariance analysis over a schedule of measurement updates.
+
+The optimal filter's covariance does not depend on the measurements' values, only on when
+they arrive and with what geometry. Propagating
+
+.. math::
+
+    P^-_{k+1} = \Phi_k P^+_k \Phi_k^T + Q_k,\qquad
+    P^+_k = (I - K_k H_k) P^-_k (I - K_k H_k)^T + K_k R_k K_k^T
+
+over a time grid with the measurements a schedule says are available is the covariance
+analysis that the SP paper uses to compare architectures, and that the WF and ATC10
+chapters use for their local filters and trackers.
+
+A step with no measurement is a pure prediction; a measurement with infinite variance is
+skipped (an outage).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from navcore._validate import require_square, require_symmetric_psd
+from navcore.estimation.kalman import symmetrize
+
+__all__ = ["Measurement", "CovarianceHistory", "propagate_covariance"]
+
+Array = NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class Measurement:
+    """A linear measurement ``z = H x + v`` with ``cov(v) = R``."""
+
+    H: Array
+    R: Array
+
+    @classmethod
+    def scalar(cls, h: ArrayLike, r: float) -> Measurement:
+        """A scalar measurement with row ``h`` and variance ``r``."""
+        return cls(np.atleast_2d(np.asarray(h, dtype=float)), np.array([[float(r)]]))
+
+
+@dataclass(frozen=True)
+class CovarianceHistory:
+    """Covariances over a time grid.
+
+    Attributes
+    ----------
+    t : (N+1,) array
+        Times; ``t[0]`` is the initial time.
+    prior : (N+1, n, n) array
+        Covariance before the updates at each time (``prior[0] = P0``).
+    posterior : (N+1, n, n) array
+        Covariance after the updates at each time.
+    n_updates : (N+1,) int array
+        Number of measurement updates applied at each time.
+    """
+
+    t: Array
+    prior: Array
+    posterior: Array
+    n_updates: NDArray[np.int64]
+
+    def sigma(self, index: int | slice | Sequence[int], *, posterior: bool = True) -> Array:
+        """1-sigma of state(s) ``index`` over time (square root of the diagonal)."""
+        P = self.posterior if posterior else self.prior
+        diag = np.diagonal(P, axis1=1, axis2=2)[:, index]
+        return np.sqrt(np.clip(diag, 0.0, None))
+
+    def rss(self, indices: Sequence[int] | slice, *, posterior: bool = True) -> Array:
+        """Root-sum-square 1-sigma of several states (e.g. horizontal position)."""
+        P = self.posterior if posterior else self.prior
+        diag = np.diagonal(P, axis1=1, axis2=2)[:, indices]
+        return np.sqrt(np.clip(diag.sum(axis=1), 0.0, None))
+
+
+MatrixOrFunc = ArrayLike | Callable[[int, float], ArrayLike]
+
+
+def _at(value: MatrixOrFunc, k: int, t: float) -> Array:
+    return np.asarray(value(k, t) if callable(value) else value, dtype=float)
+
+
+def propagate_covariance(
+    P0: ArrayLike,
+    t: ArrayLike,
+    Phi: MatrixOrFunc,
+    Q: MatrixOrFunc,
+    schedule: Callable[[int, float], Sequence[Measurement]] | None = None,
+) -> CovarianceHistory:
+    """Propagate a covariance over the grid ``t`` with scheduled measurement updates.
+
+    Parameters
+    ----------
+    P0 : (n, n) array
+        Initial covariance at ``t[0]`` (before any update at ``t[0]``).
+    t : (N+1,) array
+        Strictly increasing times.
+    Phi, Q : (n, n) array or callable ``(k, t_k) -> array``
+        Transition and process-noise covariance from ``t[k-1]`` to ``t[k]`` (called for
+        ``k = 1..N``).
+    schedule : callable ``(k, t_k) -> sequence of Measurement``, optional
+        Measurements available at ``t[k]`` (``k = 0..N``), processed sequentially. A
+        measurement whose ``R`` has an infinite diagonal entry is skipped (outage).
+
+    Returns
+    -------
+    CovarianceHistory
+    """
+    P = require_square("P0", P0)
+    require_symmetric_psd("P0", P)
+    t = np.asarray(t, dtype=float)
+    if t.ndim != 1 or t.size < 1 or np.any(np.diff(t) <= 0):
+        raise ValueError("t must be a 1-D array of strictly increasing times")
+    n = P.shape[0]
+    N = t.size
+    prior = np.empty((N, n, n))
+    post = np.empty((N, n, n))
+    counts = np.zeros(N, dtype=np.int64)
+    eye = np.eye(n)
+    for k in range(N):
+        if k > 0:
+            F = _at(Phi, k, t[k])
+            Qk = _at(Q, k, t[k])
+            P = symmetrize(F @ P @ F.T + Qk)  # P- = Phi P Phi' + Q
+        prior[k] = P
+        if schedule is not None:
+            for meas in schedule(k, float(t[k])):
+                H = np.atleast_2d(meas.H)
+                R = np.atleast_2d(meas.R)
+                if H.shape[1] != n or R.shape != (H.shape[0], H.shape[0]):
+                    raise ValueError(
+                        f"measurement at t={t[k]} must have H of shape (m, {n}) and R (m, m); "
+                        f"got {H.shape} and {R.shape}"
+                    )
+                if np.any(np.isinf(np.diag(R))):
+                    continue  # outage: infinite variance carries no information
+                S = H @ P @ H.T + R
+                K = np.linalg.solve(S, H @ P).T  # K = P H' S^-1
+                I_KH = eye - K @ H
+                P = symmetrize(I_KH @ P @ I_KH.T + K @ R @ K.T)  # Joseph form
+                counts[k] += 1
+        post[k] = P
+    return CovarianceHistory(t, prior, post, counts)

@@ -1,0 +1,193 @@
+r"""The discrete Kalman filter: prediction, Joseph-form update, information-form update.
+
+Model
+-----
+.. math::
+
+    x_{k+1} = \Phi_k x_k + w_k,\quad w_k \sim N(0, Q_k);\qquad
+    z_k = H_k x_k + v_k,\quad v_k \sim N(0, R_k).
+
+Prediction: :math:`x^- = \Phi x,\ P^- = \Phi P \Phi^T + Q`.
+Update (Joseph form, valid for any gain and numerically symmetric):
+
+.. math::
+
+    S = H P^- H^T + R,\quad K = P^- H^T S^{-1},\quad
+    x^+ = x^- + K (z - H x^-),\quad
+    P^+ = (I - K H) P^- (I - K H)^T + K R K^T.
+
+Information form: :math:`Y = P^{-1},\ y = P^{-1} x`, and the update adds
+:math:`H^T R^{-1} H` and :math:`H^T R^{-1} z`.
+
+All functions are pure: they take arrays and return new arrays. Covariances are returned
+exactly symmetric.
+
+References
+----------
+.. [1] R. E. Kalman, "A New Approach to Linear Filtering and Prediction Problems",
+   J. Basic Eng. 82 (1960).
+.. [2] P. S. Maybeck, Stochastic Models, Estimation, and Control, Vol. 1 (1979), Ch. 5.
+.. [3] R. S. Bucy and P. D. Joseph, Filtering for Stochastic Processes (1968) (Joseph form).
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from navcore._validate import as_finite_array, require_symmetric_psd
+
+__all__ = [
+    "symmetrize",
+    "kf_predict",
+    "kf_update",
+    "KalmanUpdate",
+    "information_update",
+    "information_from_covariance",
+    "covariance_from_information",
+]
+
+Array = NDArray[np.float64]
+
+
+def symmetrize(P: ArrayLike) -> Array:
+    """Return ``(P + P^T) / 2``."""
+    P = np.asarray(P, dtype=float)
+    return 0.5 * (P + np.swapaxes(P, -1, -2))
+
+
+def _matrix(name: str, value: ArrayLike, shape: tuple[int, int]) -> Array:
+    arr = as_finite_array(name, np.atleast_2d(np.asarray(value, dtype=float)))
+    if arr.shape != shape:
+        raise ValueError(f"{name} must have shape {shape}, got {arr.shape}")
+    return arr
+
+
+def kf_predict(
+    x: ArrayLike, P: ArrayLike, Phi: ArrayLike, Q: ArrayLike
+) -> tuple[Array, Array]:
+    """Kalman prediction ``x- = Phi x``, ``P- = Phi P Phi^T + Q``.
+
+    Parameters
+    ----------
+    x : (n,) array
+        State estimate.
+    P : (n, n) array
+        Its covariance (symmetric positive semi-definite).
+    Phi : (n, n) array
+        State transition matrix.
+    Q : (n, n) array
+        Discrete process-noise covariance.
+
+    Returns
+    -------
+    x_pred, P_pred : arrays
+        Predicted state and (exactly symmetric) covariance.
+    """
+    x = as_finite_array("x", x, ndim=1)
+    n = x.size
+    P = _matrix("P", P, (n, n))
+    Phi = _matrix("Phi", Phi, (n, n))
+    Q = _matrix("Q", Q, (n, n))
+    return Phi @ x, symmetrize(Phi @ P @ Phi.T + Q)  # P- = Phi P Phi' + Q
+
+
+class KalmanUpdate(NamedTuple):
+    """Result of a measurement update."""
+
+    x: Array
+    P: Array
+    K: Array
+    innovation: Array
+    S: Array
+
+
+def kf_update(x: ArrayLike, P: ArrayLike, z: ArrayLike, H: ArrayLike, R: ArrayLike) -> KalmanUpdate:
+    """Kalman measurement update in Joseph form.
+
+    Parameters
+    ----------
+    x : (n,) array
+        Prior state.
+    P : (n, n) array
+        Prior covariance.
+    z : (m,) array
+        Measurement.
+    H : (m, n) array
+        Measurement matrix.
+    R : (m, m) array
+        Measurement-noise covariance (positive definite).
+
+    Returns
+    -------
+    KalmanUpdate
+        Posterior ``x`` and ``P``, gain ``K``, innovation ``z - H x`` and its covariance
+        ``S``.
+
+    Notes
+    -----
+    ``P+ = (I-KH) P- (I-KH)^T + K R K^T`` (Joseph form): it stays symmetric and positive
+    semi-definite under round-off, unlike ``(I-KH) P-``.
+    """
+    x = as_finite_array("x", x, ndim=1)
+    n = x.size
+    P = _matrix("P", P, (n, n))
+    z = np.atleast_1d(as_finite_array("z", z))
+    if z.ndim != 1:
+        raise ValueError(f"z must be a vector, got shape {z.shape}")
+    m = z.size
+    H = _matrix("H", H, (m, n))
+    R = _matrix("R", R, (m, m))
+    require_symmetric_psd("R", R, definite=True)
+    innovation = z - H @ x
+    S = symmetrize(H @ P @ H.T + R)
+    K = np.linalg.solve(S, H @ P.T).T  # K = P H' S^-1 (S symmetric)
+    I_KH = np.eye(n) - K @ H
+    P_post = symmetrize(I_KH @ P @ I_KH.T + K @ R @ K.T)  # Joseph form
+    return KalmanUpdate(x + K @ innovation, P_post, K, innovation, S)
+
+
+def information_from_covariance(x: ArrayLike, P: ArrayLike) -> tuple[Array, Array]:
+    """Return the information vector ``y = P^-1 x`` and matrix ``Y = P^-1``."""
+    P = require_symmetric_psd("P", P, definite=True)
+    Y = symmetrize(np.linalg.inv(P))
+    return Y @ np.asarray(x, dtype=float), Y
+
+
+def covariance_from_information(y: ArrayLike, Y: ArrayLike) -> tuple[Array, Array]:
+    """Return ``x = Y^-1 y`` and ``P = Y^-1`` from information form."""
+    Y = require_symmetric_psd("Y", Y, definite=True)
+    P = symmetrize(np.linalg.inv(Y))
+    return P @ np.asarray(y, dtype=float), P
+
+
+def information_update(
+    y: ArrayLike, Y: ArrayLike, z: ArrayLike, H: ArrayLike, R: ArrayLike
+) -> tuple[Array, Array]:
+    """Information-form measurement update.
+
+    ``Y+ = Y- + H^T R^-1 H`` and ``y+ = y- + H^T R^-1 z``. A zero information matrix
+    (no prior knowledge) is allowed, which the covariance form cannot express.
+
+    Parameters
+    ----------
+    y : (n,) array
+        Prior information vector ``P^-1 x``.
+    Y : (n, n) array
+        Prior information matrix ``P^-1`` (positive semi-definite).
+    z, H, R
+        Measurement, measurement matrix and noise covariance as in :func:`kf_update`.
+    """
+    y = as_finite_array("y", y, ndim=1)
+    n = y.size
+    Y = _matrix("Y", Y, (n, n))
+    require_symmetric_psd("Y", Y)
+    z = np.atleast_1d(as_finite_array("z", z))
+    m = z.size
+    H = _matrix("H", H, (m, n))
+    R = _matrix("R", R, (m, m))
+    require_symmetric_psd("R", R, definite=True)
+    Rinv_H = np.linalg.solve(R, H)
+    return y + Rinv_H.T @ z, symmetrize(Y + H.T @ Rinv_H)

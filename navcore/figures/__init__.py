@@ -1,0 +1,166 @@
+"""The figure registry: every reproduced figure is a function of navcore results.
+
+A figure is a function returning a :class:`matplotlib.figure.Figure`, registered with
+:func:`register` in a module of this package (one module per paper or section; modules are
+discovered, so adding one never edits a shared list)::
+
+    from navcore.figures import register
+
+    @register("SP-fig2.1", paper="SP", reproduces="Fig. 2.1",
+              caption="Third-order loop error after a 1 g acceleration step ...")
+    def tracking_loop_step_error() -> Figure:
+        ...
+
+``python -m navcore figures`` (or ``nox -s figures``) writes every registered figure to
+``figures/<id>.svg`` and ``figures/<id>.png`` with deterministic metadata, and the book
+shows the same figures through :func:`navcore.book.show_figure`.
+"""
+
+from __future__ import annotations
+
+import importlib
+import pkgutil
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+from functools import cache
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg", force=False)
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.figure import Figure  # noqa: E402
+
+from navcore.ledger.core import PAPERS  # noqa: E402
+
+__all__ = [
+    "FigureSpec",
+    "register",
+    "registry",
+    "spec",
+    "render",
+    "write",
+    "write_all",
+    "STYLE",
+    "apply_style",
+]
+
+STYLE: dict[str, object] = {
+    "figure.figsize": (6.4, 4.0),
+    "figure.dpi": 110,
+    "savefig.dpi": 160,
+    "savefig.bbox": "tight",
+    "font.size": 10,
+    "axes.grid": True,
+    "grid.alpha": 0.35,
+    "axes.spines.top": False,
+    "axes.spines.right": False,
+    "legend.frameon": False,
+    "svg.hashsalt": "navcore",
+    "svg.fonttype": "path",
+    "lines.linewidth": 1.6,
+}
+
+
+def apply_style() -> None:
+    """Apply the book's matplotlib style (idempotent)."""
+    plt.rcParams.update(STYLE)
+
+
+@dataclass(frozen=True)
+class FigureSpec:
+    """A registered figure.
+
+    Attributes
+    ----------
+    id : str
+        File stem and glue name, e.g. ``"SP-fig2.1"``.
+    paper : str
+        Paper key.
+    reproduces : str
+        The paper figure it reproduces (``"Fig. 2.1"``), or ``"new"`` for a figure the
+        paper does not have (an end-to-end example, a Monte Carlo check).
+    caption : str
+        What it shows, which paper figure it reproduces and what was assumed.
+    func : callable
+        Returns the figure.
+    """
+
+    id: str
+    paper: str
+    reproduces: str
+    caption: str
+    func: Callable[[], Figure]
+
+
+_REGISTRY: dict[str, FigureSpec] = {}
+
+
+def register(
+    fig_id: str, *, paper: str, reproduces: str, caption: str
+) -> Callable[[Callable[[], Figure]], Callable[[], Figure]]:
+    """Decorator registering a figure function under ``fig_id``."""
+    if paper not in PAPERS:
+        raise ValueError(f"paper must be one of {list(PAPERS)}, got {paper!r}")
+    if not caption.strip():
+        raise ValueError(f"caption must say what figure {fig_id!r} shows")
+
+    def deco(func: Callable[[], Figure]) -> Callable[[], Figure]:
+        if fig_id in _REGISTRY and _REGISTRY[fig_id].func.__qualname__ != func.__qualname__:
+            raise ValueError(f"figure id {fig_id!r} is registered twice")
+        _REGISTRY[fig_id] = FigureSpec(fig_id, paper, reproduces, caption, func)
+        return func
+
+    return deco
+
+
+@cache
+def _discover() -> None:
+    for m in pkgutil.iter_modules(__path__):
+        if not m.name.startswith("_"):
+            importlib.import_module(f"{__name__}.{m.name}")
+
+
+def registry() -> dict[str, FigureSpec]:
+    """All registered figures, by id, in id order."""
+    _discover()
+    return dict(sorted(_REGISTRY.items()))
+
+
+def spec(fig_id: str) -> FigureSpec:
+    """The registered figure ``fig_id``."""
+    reg = registry()
+    if fig_id not in reg:
+        raise ValueError(f"fig_id {fig_id!r} is not registered; known: {sorted(reg)}")
+    return reg[fig_id]
+
+
+def render(fig_id: str) -> Figure:
+    """Build the figure ``fig_id`` with the book's style."""
+    apply_style()
+    fig = spec(fig_id).func()
+    if not isinstance(fig, Figure):
+        raise TypeError(f"figure function for {fig_id!r} must return a matplotlib Figure")
+    return fig
+
+
+def write(fig: Figure, stem: Path) -> list[Path]:
+    """Save ``fig`` as ``stem.svg`` and ``stem.png`` with deterministic metadata."""
+    stem.parent.mkdir(parents=True, exist_ok=True)
+    svg = stem.with_suffix(".svg")
+    png = stem.with_suffix(".png")
+    fig.savefig(svg, format="svg", metadata={"Date": None})
+    fig.savefig(png, format="png", metadata={"Software": None})
+    return [svg, png]
+
+
+def write_all(out: Path | str = "figures", only: Iterable[str] | None = None) -> list[Path]:
+    """Write every registered figure (or those in ``only``) to the folder ``out``."""
+    out = Path(out)
+    ids = list(only) if only is not None else list(registry())
+    written: list[Path] = []
+    for fig_id in ids:
+        fig = render(fig_id)
+        written += write(fig, out / fig_id)
+        plt.close(fig)
+    return written

@@ -1,0 +1,185 @@
+r"""A nominal GPS constellation and line-of-sight geometry.
+
+Orbits are circular with the nominal GPS elements: semi-major axis 26 559.7 km, inclination
+55 deg, six planes (A-F) 60 deg apart in right ascension of the ascending node, four slots
+per plane. The in-plane phasing of the four slots and the between-plane offset follow a
+Walker-like 24/6/1 pattern (slots 90 deg apart, successive planes offset by 15 deg); this
+is a stated, reproducible geometry, not an almanac of any particular day.
+
+Satellite positions are computed in ECEF by rotating the inertial circular-orbit position
+by the Earth rotation angle :math:`\omega_e t`.
+
+References
+----------
+.. [1] IS-GPS-200 / SPS Performance Standard (2020), Sec. 3.2 (nominal 24-slot
+   constellation, 55 deg inclination, semi-major axis 26 559.7 km).
+.. [2] P. D. Groves (2013), Sec. 8.5.2 (satellite position from orbital elements).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from navcore._validate import as_finite_array, require_in_range, require_integer, require_positive
+from navcore.frames import dcm_ecef_to_ned, geodetic_to_ecef
+from navcore.units import DEG, OMEGA_EARTH
+
+__all__ = [
+    "GPS_SEMI_MAJOR_AXIS_M",
+    "GPS_INCLINATION_RAD",
+    "EARTH_MU",
+    "Constellation",
+    "nominal_gps_constellation",
+    "line_of_sight",
+    "elevation_azimuth",
+    "visible",
+    "geometry_matrix",
+    "dop",
+]
+
+GPS_SEMI_MAJOR_AXIS_M = 26_559_700.0
+GPS_INCLINATION_RAD = 55.0 * DEG
+EARTH_MU = 3.986_004_418e14  # WGS-84 gravitational parameter, m^3/s^2
+
+
+@dataclass(frozen=True)
+class Constellation:
+    """Circular-orbit constellation.
+
+    Attributes
+    ----------
+    raan : (N,) array
+        Right ascension of the ascending node at t = 0 (rad).
+    arg_lat0 : (N,) array
+        Argument of latitude at t = 0 (rad).
+    inclination : float
+        Orbit inclination (rad).
+    radius : float
+        Orbit radius (m).
+    prn : (N,) int array
+        Satellite labels.
+    """
+
+    raan: NDArray[np.float64]
+    arg_lat0: NDArray[np.float64]
+    inclination: float
+    radius: float
+    prn: NDArray[np.int64]
+
+    @property
+    def mean_motion(self) -> float:
+        """Orbital angular rate ``sqrt(mu / r^3)`` (rad/s)."""
+        return float(np.sqrt(EARTH_MU / self.radius**3))
+
+    def positions_ecef(self, t: ArrayLike) -> NDArray[np.float64]:
+        """ECEF satellite positions (m) at times ``t`` (s): shape ``(..., N, 3)``."""
+        t = np.asarray(t, dtype=float)[..., None]
+        u = self.arg_lat0 + self.mean_motion * t  # argument of latitude
+        lon_node = self.raan - OMEGA_EARTH * t  # node longitude in the rotating frame
+        ci, si = np.cos(self.inclination), np.sin(self.inclination)
+        cu, su = np.cos(u), np.sin(u)
+        cO, sO = np.cos(lon_node), np.sin(lon_node)
+        x = self.radius * (cu * cO - su * ci * sO)
+        y = self.radius * (cu * sO + su * ci * cO)
+        z = self.radius * (su * si)
+        return np.stack([x, y, z], axis=-1)
+
+    def velocities_ecef(self, t: ArrayLike, dt: float = 0.5) -> NDArray[np.float64]:
+        """ECEF satellite velocities (m/s) by central difference of :meth:`positions_ecef`."""
+        t = np.asarray(t, dtype=float)
+        return (self.positions_ecef(t + dt) - self.positions_ecef(t - dt)) / (2 * dt)
+
+
+def nominal_gps_constellation(
+    n_planes: int = 6, per_plane: int = 4, phase_offset_deg: float = 15.0, raan0_deg: float = 0.0
+) -> Constellation:
+    """The nominal 24-satellite GPS constellation as a Walker-like pattern.
+
+    Parameters
+    ----------
+    n_planes, per_plane : int
+        Planes and slots per plane (defaults: 6 x 4).
+    phase_offset_deg : float
+        Argument-of-latitude offset between successive planes (deg).
+    raan0_deg : float
+        Right ascension of plane A at t = 0 (deg), to rotate the whole pattern.
+    """
+    require_integer("n_planes", n_planes, minimum=1)
+    require_integer("per_plane", per_plane, minimum=1)
+    planes = np.repeat(np.arange(n_planes), per_plane)
+    slots = np.tile(np.arange(per_plane), n_planes)
+    raan = (raan0_deg * DEG + planes * 2 * np.pi / n_planes) % (2 * np.pi)
+    arg = (slots * 2 * np.pi / per_plane + planes * phase_offset_deg * DEG) % (2 * np.pi)
+    return Constellation(
+        raan, arg, GPS_INCLINATION_RAD, GPS_SEMI_MAJOR_AXIS_M, np.arange(1, planes.size + 1)
+    )
+
+
+def line_of_sight(r_user: ArrayLike, r_sat: ArrayLike) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Unit line-of-sight vectors from user to satellites and the ranges (m).
+
+    Parameters
+    ----------
+    r_user : (3,) array
+        User ECEF position.
+    r_sat : (N, 3) array
+        Satellite ECEF positions.
+
+    Returns
+    -------
+    u : (N, 3) array
+        Unit vectors user -> satellite (ECEF).
+    rho : (N,) array
+        Geometric ranges.
+    """
+    d = as_finite_array("r_sat", r_sat) - as_finite_array("r_user", r_user)
+    rho = np.linalg.norm(d, axis=-1)
+    return d / rho[..., None], rho
+
+
+def elevation_azimuth(
+    r_user: ArrayLike, r_sat: ArrayLike, lat: float, lon: float
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Elevation and azimuth (rad) of satellites seen from ``r_user`` at (lat, lon) (rad)."""
+    u, _ = line_of_sight(r_user, r_sat)
+    ned = u @ dcm_ecef_to_ned(lat, lon).T
+    el = np.arcsin(np.clip(-ned[..., 2], -1.0, 1.0))
+    az = np.arctan2(ned[..., 1], ned[..., 0]) % (2 * np.pi)
+    return el, az
+
+
+def visible(
+    constellation: Constellation, t: float, lat: float, lon: float, h: float, mask_deg: float = 5.0
+) -> NDArray[np.bool_]:
+    """Mask of satellites above ``mask_deg`` elevation at time ``t`` from (lat, lon, h) (rad, m)."""
+    require_in_range("mask_deg", mask_deg, -90.0, 90.0)
+    r_user = geodetic_to_ecef(lat, lon, h)
+    el, _ = elevation_azimuth(r_user, constellation.positions_ecef(t), lat, lon)
+    return el >= mask_deg * DEG
+
+
+def geometry_matrix(u: ArrayLike) -> NDArray[np.float64]:
+    """Pseudorange geometry matrix ``G = [-u, 1]`` (N x 4) for position and clock bias."""
+    u = as_finite_array("u", u, ndim=2)
+    return np.hstack([-u, np.ones((u.shape[0], 1))])
+
+
+def dop(u_ned: ArrayLike) -> dict[str, float]:
+    """Dilution of precision from NED unit vectors (N >= 4): GDOP, PDOP, HDOP, VDOP, TDOP."""
+    u_ned = as_finite_array("u_ned", u_ned, ndim=2)
+    if u_ned.shape[0] < 4:
+        raise ValueError(f"u_ned must have at least 4 satellites for DOP, got {u_ned.shape[0]}")
+    G = geometry_matrix(u_ned)
+    Qm = np.linalg.inv(G.T @ G)
+    d = np.diag(Qm)
+    require_positive("diag((G'G)^-1)", d)
+    return {
+        "GDOP": float(np.sqrt(d.sum())),
+        "PDOP": float(np.sqrt(d[:3].sum())),
+        "HDOP": float(np.sqrt(d[:2].sum())),
+        "VDOP": float(np.sqrt(d[2])),
+        "TDOP": float(np.sqrt(d[3])),
+    }

@@ -1,0 +1,2 @@
+"""Inertial navigation: IMU error specifications, strapdown mechanization, INS error-state
+dynamics, initial alignment."""

@@ -1,0 +1,74 @@
+"""The verification ledger: every published number as a claim, checked by navcore.
+
+Schema and policy: see the book's introduction and ``shared/design/LEDGER.md``. Typical use
+from a paper module::
+
+    from navcore.ledger import Claim, Erratum, Tolerance, printed
+
+    value, tol = printed("17.67")
+    CLAIMS = [
+        Claim(
+            id="SP-fig2.1-omega0",
+            paper="SP",
+            locator="Fig. 2.1",
+            quantity="loop natural frequency for a 90 deg peak error",
+            published=value,
+            unit="rad/s",
+            compute=lambda: natural_frequency_for_peak(...),
+            tolerance=tol,
+            status="reproduced",
+            note="phase converted with ...",
+        )
+    ]
+
+and from anywhere::
+
+    from navcore import ledger
+    ledger.evaluations(paper="SP")
+"""
+
+from navcore.ledger.core import (
+    EXACT,
+    PAPERS,
+    RELATIONS,
+    STATUSES,
+    Claim,
+    Erratum,
+    Evaluation,
+    Tolerance,
+    evaluate,
+    printed,
+)
+from navcore.ledger.registry import (
+    claim,
+    claims,
+    counts,
+    erratum,
+    errata,
+    evaluate_claim,
+    evaluations,
+    paper_modules,
+    validate_registry,
+)
+
+__all__ = [
+    "EXACT",
+    "PAPERS",
+    "RELATIONS",
+    "STATUSES",
+    "Claim",
+    "Erratum",
+    "Evaluation",
+    "Tolerance",
+    "evaluate",
+    "printed",
+    "claim",
+    "claims",
+    "counts",
+    "erratum",
+    "errata",
+    "evaluate_claim",
+    "evaluations",
+    "paper_modules",
+    "validate_registry",
+]

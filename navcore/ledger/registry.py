@@ -1,0 +1,144 @@
+"""The claim and erratum registry.
+
+Claims and errata live in the modules of :mod:`navcore.papers`, one module per paper or
+section, each defining module-level ``CLAIMS`` and ``ERRATA`` lists. The registry discovers
+every such module, so adding a section never means editing a shared list.
+"""
+
+from __future__ import annotations
+
+import importlib
+import pkgutil
+from functools import cache
+
+from navcore.ledger.core import PAPERS, STATUSES, Claim, Erratum, Evaluation, evaluate
+
+__all__ = [
+    "paper_modules",
+    "claims",
+    "errata",
+    "claim",
+    "erratum",
+    "evaluate_claim",
+    "evaluations",
+    "counts",
+    "validate_registry",
+]
+
+
+@cache
+def paper_modules() -> tuple[str, ...]:
+    """Names of the modules in :mod:`navcore.papers`, sorted."""
+    import navcore.papers as pkg
+
+    return tuple(
+        sorted(
+            f"{pkg.__name__}.{m.name}"
+            for m in pkgutil.iter_modules(pkg.__path__)
+            if not m.name.startswith("_")
+        )
+    )
+
+
+@cache
+def _load() -> tuple[tuple[Claim, ...], tuple[Erratum, ...]]:
+    all_claims: list[Claim] = []
+    all_errata: list[Erratum] = []
+    for name in paper_modules():
+        module = importlib.import_module(name)
+        all_claims.extend(getattr(module, "CLAIMS", ()))
+        all_errata.extend(getattr(module, "ERRATA", ()))
+    validate_registry(all_claims, all_errata)
+    paper_order = {k: i for i, k in enumerate(PAPERS)}
+    # stable order: by paper, then by the order of definition within the paper's modules
+    all_claims.sort(key=lambda c: paper_order[c.paper])
+    all_errata.sort(key=lambda e: paper_order[e.paper])
+    return tuple(all_claims), tuple(all_errata)
+
+
+def validate_registry(all_claims: list[Claim], all_errata: list[Erratum]) -> None:
+    """Check uniqueness of ids and the links between claims and errata.
+
+    Raises
+    ------
+    ValueError
+        On a duplicate id, a discrepant claim naming an unknown erratum, or an erratum
+        naming an unknown claim.
+    """
+    seen: set[str] = set()
+    for c in all_claims:
+        if c.id in seen:
+            raise ValueError(f"duplicate claim id {c.id!r}")
+        seen.add(c.id)
+    eseen: set[str] = set()
+    for e in all_errata:
+        if e.id in eseen:
+            raise ValueError(f"duplicate erratum id {e.id!r}")
+        eseen.add(e.id)
+    for c in all_claims:
+        if c.erratum and c.erratum not in eseen:
+            raise ValueError(f"claim {c.id!r} names unknown erratum {c.erratum!r}")
+    for e in all_errata:
+        for cid in e.claims:
+            if cid not in seen:
+                raise ValueError(f"erratum {e.id!r} names unknown claim {cid!r}")
+
+
+def claims(paper: str | None = None, prefix: str | None = None) -> tuple[Claim, ...]:
+    """Registered claims, optionally filtered by paper key and id prefix."""
+    if paper is not None and paper not in PAPERS:
+        raise ValueError(f"paper must be one of {list(PAPERS)}, got {paper!r}")
+    out = _load()[0]
+    if paper is not None:
+        out = tuple(c for c in out if c.paper == paper)
+    if prefix is not None:
+        out = tuple(c for c in out if c.id.startswith(prefix))
+    return out
+
+
+def errata(paper: str | None = None) -> tuple[Erratum, ...]:
+    """Registered errata, optionally filtered by paper key."""
+    if paper is not None and paper not in PAPERS:
+        raise ValueError(f"paper must be one of {list(PAPERS)}, got {paper!r}")
+    out = _load()[1]
+    return out if paper is None else tuple(e for e in out if e.paper == paper)
+
+
+def claim(claim_id: str) -> Claim:
+    """The claim with id ``claim_id``."""
+    for c in _load()[0]:
+        if c.id == claim_id:
+            return c
+    raise ValueError(f"claim_id {claim_id!r} is not in the ledger")
+
+
+def erratum(erratum_id: str) -> Erratum:
+    """The erratum with id ``erratum_id``."""
+    for e in _load()[1]:
+        if e.id == erratum_id:
+            return e
+    raise ValueError(f"erratum_id {erratum_id!r} is not in the ledger")
+
+
+@cache
+def evaluate_claim(claim_id: str) -> Evaluation:
+    """Evaluate one claim (memoised for the life of the process)."""
+    return evaluate(claim(claim_id))
+
+
+def evaluations(paper: str | None = None, prefix: str | None = None) -> list[Evaluation]:
+    """Evaluate every claim selected by ``paper`` and ``prefix``."""
+    return [evaluate_claim(c.id) for c in claims(paper, prefix)]
+
+
+def counts(paper: str | None = None) -> dict[str, dict[str, int]]:
+    """Declared-status counts per paper: ``{paper: {status: n, ..., "total": n}}``."""
+    papers = [paper] if paper else list(PAPERS)
+    out: dict[str, dict[str, int]] = {}
+    for p in papers:
+        row = {s: 0 for s in STATUSES}
+        for c in claims(p):
+            row[c.status] += 1
+        row["total"] = sum(row[s] for s in STATUSES)
+        out[p] = row
+    return out

@@ -1,0 +1,252 @@
+"""Rendering the ledger: plain text for the terminal, HTML and Markdown for the book.
+
+The book shows tables through :class:`LedgerTable`, an object with both ``_repr_html_``
+(coloured by status, for the HTML builder) and ``_repr_markdown_`` (a plain pipe table that
+MyST turns into a real LaTeX table for the PDF builder).
+"""
+
+from __future__ import annotations
+
+import html
+import json
+import math
+from collections.abc import Iterable, Sequence
+from typing import Any
+
+from navcore.ledger.core import STATUSES, Erratum, Evaluation
+from navcore.ledger.registry import counts, errata, evaluations
+
+__all__ = [
+    "format_value",
+    "rows",
+    "text_table",
+    "json_dump",
+    "LedgerTable",
+    "CountsTable",
+    "ErrataList",
+    "STATUS_COLOURS",
+]
+
+STATUS_COLOURS = {
+    "reproduced": "#d8f0d8",
+    "consistent": "#e6f0fa",
+    "discrepant": "#fbe3d4",
+    "not-reproducible": "#eeeeee",
+}
+
+
+def format_value(value: Any, digits: int = 5) -> str:
+    """Format a published or reproduced value for a table."""
+    if value is None:
+        return "—"
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    v = float(value)
+    if math.isinf(v):
+        return "∞" if v > 0 else "−∞"
+    if v == int(v) and abs(v) < 1e6:
+        return str(int(v))
+    return f"{v:.{digits}g}"
+
+
+def _published(e: Evaluation) -> str:
+    c = e.claim
+    rel = "" if c.relation == "=" else c.relation.replace(">=", "≥").replace("<=", "≤") + " "
+    return rel + format_value(c.published)
+
+
+def rows(evals: Iterable[Evaluation]) -> list[dict[str, str]]:
+    """Table rows (strings) for a sequence of evaluations."""
+    out = []
+    for e in evals:
+        c = e.claim
+        out.append(
+            {
+                "id": c.id,
+                "locator": c.locator,
+                "quantity": c.quantity,
+                "published": _published(e),
+                "reproduced": format_value(e.reproduced),
+                "unit": c.unit,
+                "tolerance": c.tolerance.describe(),
+                "status": c.status,
+                "check": "ok" if e.passes else "FAIL",
+                "note": c.note,
+                "tolerance_reason": c.tolerance.reason,
+                "erratum": c.erratum,
+            }
+        )
+    return out
+
+
+def text_table(evals: Sequence[Evaluation], *, width: int = 38) -> str:
+    """A fixed-width text table with a counts footer (for ``python -m navcore ledger``)."""
+    cols = ["id", "locator", "published", "reproduced", "unit", "tolerance", "status", "check"]
+    data = rows(evals)
+
+    def clip(s: str) -> str:
+        return s if len(s) <= width else s[: width - 1] + "…"
+
+    widths = {k: max([len(k)] + [len(clip(r[k])) for r in data]) for k in cols}
+    lines = ["  ".join(k.ljust(widths[k]) for k in cols)]
+    lines.append("  ".join("-" * widths[k] for k in cols))
+    for r in data:
+        lines.append("  ".join(clip(r[k]).ljust(widths[k]) for k in cols))
+    lines.append("")
+    papers = sorted({e.claim.paper for e in evals}, key=lambda p: list(counts()).index(p))
+    all_counts = counts()
+    lines.append("paper   " + "  ".join(s.rjust(16) for s in (*STATUSES, "total")))
+    for p in papers:
+        row = all_counts[p]
+        lines.append(f"{p:<8}" + "  ".join(str(row[s]).rjust(16) for s in (*STATUSES, "total")))
+    failing = sum(not e.passes for e in evals)
+    lines.append(f"{len(evals)} claims, {failing} failing their check")
+    return "\n".join(lines)
+
+
+def json_dump(evals: Sequence[Evaluation]) -> str:
+    """The ledger as a JSON array of claim objects (LEDGER.md fields), stable and sorted."""
+    return json.dumps([e.as_json() for e in evals], indent=2, ensure_ascii=False, sort_keys=False)
+
+
+def _md_escape(s: str) -> str:
+    return s.replace("|", "\\|").replace("\n", " ")
+
+
+class LedgerTable:
+    """Published-versus-reproduced table for the book (HTML coloured, Markdown for PDF).
+
+    Parameters
+    ----------
+    evals : sequence of Evaluation
+        The claims to show, in order.
+    show_notes : bool
+        Include the note and tolerance reason (HTML: as a second line; Markdown: a column).
+    link_errata : bool
+        Link erratum ids to their entry on the errata page.
+    """
+
+    def __init__(
+        self, evals: Sequence[Evaluation], *, show_notes: bool = True, link_errata: bool = True
+    ) -> None:
+        self.evals = list(evals)
+        self.show_notes = show_notes
+        self.link_errata = link_errata
+
+    def _repr_html_(self) -> str:
+        head = ["Claim", "Locator", "Quantity", "Published", "Reproduced", "Unit", "Tolerance", "Status"]
+        out = ['<div class="ledger-table-wrap"><table class="ledger-table">', "<thead><tr>"]
+        out += [f"<th>{h}</th>" for h in head]
+        out.append("</tr></thead><tbody>")
+        for r, e in zip(rows(self.evals), self.evals, strict=True):
+            colour = STATUS_COLOURS[r["status"]]
+            status = html.escape(r["status"])
+            if r["check"] != "ok":
+                status += " <b>(check fails)</b>"
+            if r["erratum"] and self.link_errata:
+                status += f'<br><a href="../errata.html#{r["erratum"].lower()}">{html.escape(r["erratum"])}</a>'
+            cells = [
+                f'<code id="{html.escape(r["id"].lower())}">{html.escape(r["id"])}</code>',
+                html.escape(r["locator"]),
+                html.escape(r["quantity"]),
+                html.escape(r["published"]),
+                html.escape(r["reproduced"]),
+                html.escape(r["unit"]),
+                f'<span title="{html.escape(r["tolerance_reason"])}">{html.escape(r["tolerance"])}</span>',
+                status,
+            ]
+            out.append(f'<tr style="background:{colour}">' + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
+            if self.show_notes:
+                note = html.escape(r["note"]) + "<br><i>Tolerance:</i> " + html.escape(r["tolerance_reason"])
+                out.append(
+                    f'<tr class="ledger-note" style="background:{colour}"><td></td>'
+                    f'<td colspan="7"><small>{note}</small></td></tr>'
+                )
+        out.append("</tbody></table></div>")
+        return "".join(out)
+
+    def _repr_markdown_(self) -> str:
+        head = ["Locator", "Quantity", "Published", "Reproduced", "Unit", "Status"]
+        lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+        for r in rows(self.evals):
+            status = r["status"] + ("" if r["check"] == "ok" else " (check fails)")
+            cells = [r["locator"], r["quantity"], r["published"], r["reproduced"], r["unit"], status]
+            lines.append("| " + " | ".join(_md_escape(c) for c in cells) + " |")
+        return "\n".join(lines)
+
+    def __repr__(self) -> str:
+        return text_table(self.evals)
+
+
+class CountsTable:
+    """Counts of claims per paper and status (HTML and Markdown)."""
+
+    def __init__(self, paper: str | None = None) -> None:
+        self.counts = counts(paper)
+        self.failing = {
+            p: sum(not e.passes for e in evaluations(p)) for p in self.counts
+        }
+
+    def _table(self) -> tuple[list[str], list[list[str]]]:
+        head = ["Paper", *STATUSES, "total", "failing check"]
+        body = [
+            [p, *(str(row[s]) for s in STATUSES), str(row["total"]), str(self.failing[p])]
+            for p, row in self.counts.items()
+        ]
+        if len(body) > 1:
+            tot = [sum(int(r[i]) for r in body) for i in range(1, len(head))]
+            body.append(["all", *map(str, tot)])
+        return head, body
+
+    def _repr_html_(self) -> str:
+        head, body = self._table()
+        out = ['<table class="ledger-counts"><thead><tr>']
+        out += [f"<th>{h}</th>" for h in head]
+        out.append("</tr></thead><tbody>")
+        for r in body:
+            out.append("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in r) + "</tr>")
+        out.append("</tbody></table>")
+        return "".join(out)
+
+    def _repr_markdown_(self) -> str:
+        head, body = self._table()
+        lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+        lines += ["| " + " | ".join(r) + " |" for r in body]
+        return "\n".join(lines)
+
+
+class ErrataList:
+    """The errata as a list of entries (HTML with anchors; Markdown for the PDF)."""
+
+    def __init__(self, items: Sequence[Erratum] | None = None) -> None:
+        self.items = list(errata() if items is None else items)
+
+    def _repr_html_(self) -> str:
+        out = []
+        for e in self.items:
+            where = (
+                f' Discussed in <a href="{html.escape(e.discussed_in)}.html">{html.escape(e.discussed_in)}</a>.'
+                if e.discussed_in
+                else ""
+            )
+            claims_html = ", ".join(f"<code>{html.escape(c)}</code>" for c in e.claims) or "none"
+            out.append(
+                f'<div class="erratum" id="{html.escape(e.id.lower())}">'
+                f"<h4>{html.escape(e.id)} — {html.escape(e.paper)}, {html.escape(e.locator)}</h4>"
+                f"<p><b>Printed:</b> {html.escape(e.printed)}</p>"
+                f"<p><b>The book finds:</b> {html.escape(e.finding)}</p>"
+                f"<p><b>Evidence:</b> {html.escape(e.evidence)}</p>"
+                f"<p><b>Claims affected:</b> {claims_html}.{where}</p></div>"
+            )
+        return "".join(out) or "<p>No errata registered.</p>"
+
+    def _repr_markdown_(self) -> str:
+        out = []
+        for e in self.items:
+            claims_md = ", ".join(f"`{c}`" for c in e.claims) or "none"
+            out.append(
+                f"**{e.id}** ({e.paper}, {e.locator})\n\n"
+                f"- *Printed:* {e.printed}\n- *The book finds:* {e.finding}\n"
+                f"- *Evidence:* {e.evidence}\n- *Claims affected:* {claims_md}\n"
+            )
+        return "\n".join(out) or "No errata registered."

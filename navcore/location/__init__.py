@@ -1,0 +1,1 @@
+"""Location: frequency-of-arrival emitter location and satellite multilateration."""
