@@ -14,13 +14,13 @@ from numpy.typing import ArrayLike, NDArray
 __all__ = [
     "as_finite_array",
     "require_finite",
-    "require_positive",
-    "require_nonnegative",
-    "require_probability",
     "require_in_range",
+    "require_integer",
+    "require_nonnegative",
+    "require_positive",
+    "require_probability",
     "require_square",
     "require_symmetric_psd",
-    "require_integer",
 ]
 
 

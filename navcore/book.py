@@ -26,13 +26,13 @@ from navcore.ledger.core import STATUSES
 from navcore.ledger.render import STATUS_COLOURS, CountsTable, ErrataList, LedgerTable
 
 __all__ = [
-    "setup",
+    "Markdown",
+    "chapter_summary",
     "claims_table",
     "counts_table",
     "errata_list",
-    "chapter_summary",
+    "setup",
     "show_figure",
-    "Markdown",
 ]
 
 
@@ -87,8 +87,10 @@ def chapter_summary(paper: str) -> Markdown:
     failing = sum(not e.passes for e in ledger.evaluations(paper))
     parts = [f"{c[s]} {s}" for s in STATUSES if c[s]]
     md = (
-        f"**Ledger for {paper}:** {c['total']} claims — " + ", ".join(parts)
-        + (f"; **{failing} failing their check**" if failing else "; every check passes") + "."
+        f"**Ledger for {paper}:** {c['total']} claims — "
+        + ", ".join(parts)
+        + (f"; **{failing} failing their check**" if failing else "; every check passes")
+        + "."
     )
     chips = "".join(
         f'<span style="background:{STATUS_COLOURS[s]};padding:2px 8px;border-radius:4px;'

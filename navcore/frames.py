@@ -32,28 +32,28 @@ from navcore._validate import as_finite_array
 from navcore.units import WGS84_A, WGS84_B, WGS84_E2
 
 __all__ = [
-    "skew",
+    "dcm_ecef_to_ned",
+    "dcm_from_euler",
+    "dcm_from_quat",
+    "ecef_to_geodetic",
+    "ecef_to_ned",
+    "euler_from_dcm",
+    "euler_from_quat",
+    "geodetic_to_ecef",
+    "ned_to_ecef",
+    "quat_conjugate",
+    "quat_from_dcm",
+    "quat_from_euler",
+    "quat_from_rotvec",
+    "quat_multiply",
+    "quat_normalize",
+    "quat_rotate",
+    "radii_of_curvature",
     "rot_x",
     "rot_y",
     "rot_z",
-    "dcm_from_euler",
-    "euler_from_dcm",
-    "quat_multiply",
-    "quat_conjugate",
-    "quat_normalize",
-    "quat_from_rotvec",
     "rotvec_from_quat",
-    "dcm_from_quat",
-    "quat_from_dcm",
-    "quat_from_euler",
-    "euler_from_quat",
-    "quat_rotate",
-    "geodetic_to_ecef",
-    "ecef_to_geodetic",
-    "dcm_ecef_to_ned",
-    "ecef_to_ned",
-    "ned_to_ecef",
-    "radii_of_curvature",
+    "skew",
 ]
 
 Array = NDArray[np.float64]
@@ -221,7 +221,7 @@ def euler_from_quat(q: ArrayLike) -> tuple[float, float, float]:
 def quat_rotate(q: ArrayLike, v: ArrayLike) -> Array:
     """Rotate vector(s) ``v`` by unit quaternion ``q``: ``q ⊗ [0, v] ⊗ q*``."""
     v = as_finite_array("v", v)
-    vq = np.concatenate([np.zeros(v.shape[:-1] + (1,)), v], axis=-1)
+    vq = np.concatenate([np.zeros((*v.shape[:-1], 1)), v], axis=-1)
     return quat_multiply(quat_multiply(q, vq), quat_conjugate(q))[..., 1:]
 
 

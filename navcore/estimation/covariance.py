@@ -27,7 +27,7 @@ from numpy.typing import ArrayLike, NDArray
 from navcore._validate import require_square, require_symmetric_psd
 from navcore.estimation.kalman import symmetrize
 
-__all__ = ["Measurement", "CovarianceHistory", "propagate_covariance"]
+__all__ = ["CovarianceHistory", "Measurement", "propagate_covariance"]
 
 Array = NDArray[np.float64]
 

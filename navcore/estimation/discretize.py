@@ -30,7 +30,7 @@ from numpy.typing import ArrayLike, NDArray
 from navcore._validate import require_positive, require_square, require_symmetric_psd
 from navcore.estimation.kalman import symmetrize
 
-__all__ = ["van_loan", "first_order_transition"]
+__all__ = ["first_order_transition", "van_loan"]
 
 
 def van_loan(F: ArrayLike, GQGt: ArrayLike, dt: float) -> tuple[NDArray[np.float64], NDArray[np.float64]]:

@@ -40,13 +40,13 @@ from numpy.typing import ArrayLike, NDArray
 from navcore._validate import as_finite_array, require_symmetric_psd
 
 __all__ = [
-    "symmetrize",
+    "KalmanUpdate",
+    "covariance_from_information",
+    "information_from_covariance",
+    "information_update",
     "kf_predict",
     "kf_update",
-    "KalmanUpdate",
-    "information_update",
-    "information_from_covariance",
-    "covariance_from_information",
+    "symmetrize",
 ]
 
 Array = NDArray[np.float64]
@@ -65,9 +65,7 @@ def _matrix(name: str, value: ArrayLike, shape: tuple[int, int]) -> Array:
     return arr
 
 
-def kf_predict(
-    x: ArrayLike, P: ArrayLike, Phi: ArrayLike, Q: ArrayLike
-) -> tuple[Array, Array]:
+def kf_predict(x: ArrayLike, P: ArrayLike, Phi: ArrayLike, Q: ArrayLike) -> tuple[Array, Array]:
     """Kalman prediction ``x- = Phi x``, ``P- = Phi P Phi^T + Q``.
 
     Parameters

@@ -25,7 +25,7 @@ from typing import NamedTuple
 
 from navcore._validate import require_finite, require_nonnegative, require_positive
 
-__all__ = ["ScalarSteadyState", "scalar_riccati_steady_state", "scalar_riccati_iterate"]
+__all__ = ["ScalarSteadyState", "scalar_riccati_iterate", "scalar_riccati_steady_state"]
 
 
 class ScalarSteadyState(NamedTuple):

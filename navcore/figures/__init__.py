@@ -28,21 +28,21 @@ from pathlib import Path
 import matplotlib
 
 matplotlib.use("Agg", force=False)
-import matplotlib.pyplot as plt  # noqa: E402
-from matplotlib.figure import Figure  # noqa: E402
+import matplotlib.pyplot as plt
+from matplotlib.figure import Figure
 
-from navcore.ledger.core import PAPERS  # noqa: E402
+from navcore.ledger.core import PAPERS
 
 __all__ = [
+    "STYLE",
     "FigureSpec",
+    "apply_style",
     "register",
     "registry",
-    "spec",
     "render",
+    "spec",
     "write",
     "write_all",
-    "STYLE",
-    "apply_style",
 ]
 
 STYLE: dict[str, object] = {

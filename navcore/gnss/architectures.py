@@ -25,13 +25,13 @@ from __future__ import annotations
 from navcore.estimation.layout import StateBlock, StateLayout
 
 __all__ = [
-    "PVA",
-    "CLOCK",
     "ALTIMETER",
-    "INS_CORE",
+    "CLOCK",
     "IMU_ERRORS",
-    "receiver_pva_layout",
+    "INS_CORE",
+    "PVA",
     "loosely_coupled_layout",
+    "receiver_pva_layout",
     "tightly_coupled_layout",
 ]
 
@@ -41,9 +41,7 @@ PVA = StateLayout.of(
     StateBlock("acceleration", 3, "m/s^2"),
     name="PVA",
 )
-CLOCK = StateLayout.of(
-    StateBlock("clock bias", 1, "m"), StateBlock("clock drift", 1, "m/s"), name="clock"
-)
+CLOCK = StateLayout.of(StateBlock("clock bias", 1, "m"), StateBlock("clock drift", 1, "m/s"), name="clock")
 ALTIMETER = StateLayout.of(StateBlock("altimeter bias", 1, "m"), name="altimeter")
 INS_CORE = StateLayout.of(
     StateBlock("position", 3, "m"),
@@ -85,4 +83,6 @@ def tightly_coupled_layout() -> StateLayout:
     is kept.
     """
     core = INS_CORE.blocks
-    return StateLayout(core[:2] + CLOCK.blocks + core[2:] + IMU_ERRORS.blocks + ALTIMETER.blocks, "tightly coupled")
+    return StateLayout(
+        core[:2] + CLOCK.blocks + core[2:] + IMU_ERRORS.blocks + ALTIMETER.blocks, "tightly coupled"
+    )

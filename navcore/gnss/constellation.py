@@ -28,16 +28,16 @@ from navcore.frames import dcm_ecef_to_ned, geodetic_to_ecef
 from navcore.units import DEG, OMEGA_EARTH
 
 __all__ = [
-    "GPS_SEMI_MAJOR_AXIS_M",
-    "GPS_INCLINATION_RAD",
     "EARTH_MU",
+    "GPS_INCLINATION_RAD",
+    "GPS_SEMI_MAJOR_AXIS_M",
     "Constellation",
-    "nominal_gps_constellation",
-    "line_of_sight",
-    "elevation_azimuth",
-    "visible",
-    "geometry_matrix",
     "dop",
+    "elevation_azimuth",
+    "geometry_matrix",
+    "line_of_sight",
+    "nominal_gps_constellation",
+    "visible",
 ]
 
 GPS_SEMI_MAJOR_AXIS_M = 26_559_700.0
@@ -113,9 +113,7 @@ def nominal_gps_constellation(
     slots = np.tile(np.arange(per_plane), n_planes)
     raan = (raan0_deg * DEG + planes * 2 * np.pi / n_planes) % (2 * np.pi)
     arg = (slots * 2 * np.pi / per_plane + planes * phase_offset_deg * DEG) % (2 * np.pi)
-    return Constellation(
-        raan, arg, GPS_INCLINATION_RAD, GPS_SEMI_MAJOR_AXIS_M, np.arange(1, planes.size + 1)
-    )
+    return Constellation(raan, arg, GPS_INCLINATION_RAD, GPS_SEMI_MAJOR_AXIS_M, np.arange(1, planes.size + 1))
 
 
 def line_of_sight(r_user: ArrayLike, r_sat: ArrayLike) -> tuple[NDArray[np.float64], NDArray[np.float64]]:

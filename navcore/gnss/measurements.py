@@ -36,8 +36,8 @@ from navcore._validate import as_finite_array
 
 __all__ = [
     "pseudorange",
-    "pseudorange_rate",
     "pseudorange_jacobian",
+    "pseudorange_rate",
     "pseudorange_rate_jacobian",
 ]
 

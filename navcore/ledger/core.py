@@ -31,14 +31,14 @@ from typing import Any, Literal
 
 __all__ = [
     "PAPERS",
-    "STATUSES",
     "RELATIONS",
-    "Tolerance",
+    "STATUSES",
     "Claim",
     "Erratum",
     "Evaluation",
-    "printed",
+    "Tolerance",
     "evaluate",
+    "printed",
 ]
 
 PAPERS: dict[str, str] = {
@@ -224,8 +224,7 @@ class Claim:
     def __post_init__(self) -> None:
         if not _ID_RE.match(self.id):
             raise ValueError(
-                f"Claim.id must start with its paper key and a dash and use [A-Za-z0-9._+-], "
-                f"got {self.id!r}"
+                f"Claim.id must start with its paper key and a dash and use [A-Za-z0-9._+-], got {self.id!r}"
             )
         if self.paper not in PAPERS:
             raise ValueError(f"Claim.paper must be one of {list(PAPERS)}, got {self.paper!r}")
@@ -249,8 +248,7 @@ class Claim:
                 raise ValueError(f"a discrepant claim must name its erratum (claim {self.id})")
             if self.oracle is None or self.oracle_tolerance is None:
                 raise ValueError(
-                    f"a discrepant claim needs an independent oracle and oracle_tolerance "
-                    f"(claim {self.id})"
+                    f"a discrepant claim needs an independent oracle and oracle_tolerance (claim {self.id})"
                 )
         if isinstance(self.published, bool) and self.relation != "=":
             raise ValueError(f"a statement claim uses relation '=' (claim {self.id})")

@@ -14,14 +14,14 @@ from functools import cache
 from navcore.ledger.core import PAPERS, STATUSES, Claim, Erratum, Evaluation, evaluate
 
 __all__ = [
-    "paper_modules",
-    "claims",
-    "errata",
     "claim",
+    "claims",
+    "counts",
+    "errata",
     "erratum",
     "evaluate_claim",
     "evaluations",
-    "counts",
+    "paper_modules",
     "validate_registry",
 ]
 

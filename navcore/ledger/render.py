@@ -17,14 +17,14 @@ from navcore.ledger.core import STATUSES, Erratum, Evaluation
 from navcore.ledger.registry import counts, errata, evaluations
 
 __all__ = [
-    "format_value",
-    "rows",
-    "text_table",
-    "json_dump",
-    "LedgerTable",
+    "STATUS_COLOURS",
     "CountsTable",
     "ErrataList",
-    "STATUS_COLOURS",
+    "LedgerTable",
+    "format_value",
+    "json_dump",
+    "rows",
+    "text_table",
 ]
 
 STATUS_COLOURS = {
@@ -138,13 +138,15 @@ class LedgerTable:
         out = ['<div class="ledger-table-wrap"><table class="ledger-table">', "<thead><tr>"]
         out += [f"<th>{h}</th>" for h in head]
         out.append("</tr></thead><tbody>")
-        for r, e in zip(rows(self.evals), self.evals, strict=True):
+        for r in rows(self.evals):
             colour = STATUS_COLOURS[r["status"]]
             status = html.escape(r["status"])
             if r["check"] != "ok":
                 status += " <b>(check fails)</b>"
             if r["erratum"] and self.link_errata:
-                status += f'<br><a href="../errata.html#{r["erratum"].lower()}">{html.escape(r["erratum"])}</a>'
+                status += (
+                    f'<br><a href="../errata.html#{r["erratum"].lower()}">{html.escape(r["erratum"])}</a>'
+                )
             cells = [
                 f'<code id="{html.escape(r["id"].lower())}">{html.escape(r["id"])}</code>',
                 html.escape(r["locator"]),
@@ -155,7 +157,9 @@ class LedgerTable:
                 f'<span title="{html.escape(r["tolerance_reason"])}">{html.escape(r["tolerance"])}</span>',
                 status,
             ]
-            out.append(f'<tr style="background:{colour}">' + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
+            out.append(
+                f'<tr style="background:{colour}">' + "".join(f"<td>{c}</td>" for c in cells) + "</tr>"
+            )
             if self.show_notes:
                 note = html.escape(r["note"]) + "<br><i>Tolerance:</i> " + html.escape(r["tolerance_reason"])
                 out.append(
@@ -183,9 +187,7 @@ class CountsTable:
 
     def __init__(self, paper: str | None = None) -> None:
         self.counts = counts(paper)
-        self.failing = {
-            p: sum(not e.passes for e in evaluations(p)) for p in self.counts
-        }
+        self.failing = {p: sum(not e.passes for e in evaluations(p)) for p in self.counts}
 
     def _table(self) -> tuple[list[str], list[list[str]]]:
         head = ["Paper", *STATUSES, "total", "failing check"]
@@ -224,11 +226,8 @@ class ErrataList:
     def _repr_html_(self) -> str:
         out = []
         for e in self.items:
-            where = (
-                f' Discussed in <a href="{html.escape(e.discussed_in)}.html">{html.escape(e.discussed_in)}</a>.'
-                if e.discussed_in
-                else ""
-            )
+            page = html.escape(e.discussed_in)
+            where = f' Discussed in <a href="{page}.html">{page}</a>.' if e.discussed_in else ""
             claims_html = ", ".join(f"<code>{html.escape(c)}</code>" for c in e.claims) or "none"
             out.append(
                 f'<div class="erratum" id="{html.escape(e.id.lower())}">'

@@ -1,0 +1,137 @@
+"""nox sessions: tests, book (HTML), pdf, figures, lint, ledger, bench.
+
+Every session installs the full stack from ``requirements/lock.txt`` (a committed
+``uv pip compile`` lock), then navcore itself without dependencies, so that a build next year
+computes the same numbers. uv is the virtual-environment backend, with virtualenv as the
+fallback.
+
+    python3 -m pip install "nox[uv]" && nox -s tests     # the test command
+    python3 -m pip install "nox[uv]" && nox -s book pdf   # the book, HTML and PDF
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import nox
+
+ROOT = Path(__file__).resolve().parent
+LOCK = ROOT / "requirements" / "lock.txt"
+TEX_PACKAGES = [
+    "texlive-latex-recommended",
+    "texlive-latex-extra",
+    "texlive-fonts-recommended",
+    "texlive-xetex",
+    "latexmk",
+    "fonts-freefont-otf",
+]
+
+nox.options.default_venv_backend = "uv|virtualenv"
+nox.options.sessions = ["lint", "tests", "book"]
+nox.options.reuse_existing_virtualenvs = True
+# uv must trust the system certificate store behind this network's TLS proxy
+os.environ.setdefault("UV_SYSTEM_CERTS", "1")
+# deterministic figures and hashing in every subprocess
+os.environ.setdefault("PYTHONHASHSEED", "0")
+os.environ.setdefault("MPLBACKEND", "Agg")
+os.environ.setdefault("SOURCE_DATE_EPOCH", "1767225600")
+
+
+def _install(session: nox.Session) -> None:
+    session.install("-r", str(LOCK))
+    session.install("--no-deps", "-e", ".")
+
+
+@nox.session
+def tests(session: nox.Session) -> None:
+    """Run pytest: unit tests against oracles, one test per ledger claim, figures, strict build."""
+    _install(session)
+    session.run("python", "-m", "pytest", *(session.posargs or ["-q"]))
+
+
+@nox.session
+def book(session: nox.Session) -> None:
+    """Build the HTML book strictly (-W -n, failing cells fail) into _build/html.
+
+    Notebooks execute through a cache keyed by navcore's sources (see tools/build_book.py),
+    so on a clean checkout everything executes and the PDF build reuses the results.
+    """
+    _install(session)
+    session.run("python", "tools/build_book.py", "--builder", "html", "--cache", *session.posargs)
+    session.log(f"HTML book: {ROOT / '_build' / 'html' / 'index.html'}")
+
+
+def _ensure_tex(session: nox.Session) -> None:
+    missing = [tool for tool in ("xelatex", "latexmk") if shutil.which(tool) is None]
+    fonts = (
+        subprocess.run(["fc-list", "FreeSerif"], capture_output=True, text=True).stdout
+        if shutil.which("fc-list")
+        else ""
+    )
+    if not missing and fonts.strip():
+        return
+    command = ["apt-get", "install", "-y", "--no-install-recommends", *TEX_PACKAGES]
+    if hasattr(os, "geteuid") and os.geteuid() == 0 and shutil.which("apt-get"):
+        session.log("installing the TeX packages for the PDF book with apt-get")
+        env = {"DEBIAN_FRONTEND": "noninteractive"}
+        session.run("apt-get", "update", "-qq", external=True, env=env)
+        session.run(*command, "-qq", external=True, env=env)
+    else:
+        session.error(
+            "The PDF book needs XeLaTeX, latexmk and the FreeFont fonts. Install them with:\n"
+            f"    sudo {' '.join(command)}"
+        )
+
+
+@nox.session
+def pdf(session: nox.Session) -> None:
+    """Build the PDF book with XeLaTeX into _build/latex/book.pdf (installs TeX if root)."""
+    _ensure_tex(session)
+    _install(session)
+    session.run("python", "tools/build_book.py", "--builder", "pdflatex", "--cache", *session.posargs)
+    pdf_path = ROOT / "_build" / "latex" / "book.pdf"
+    if not pdf_path.exists():
+        session.error(f"the LaTeX build did not produce {pdf_path}")
+    session.log(f"PDF book: {pdf_path}")
+
+
+@nox.session
+def figures(session: nox.Session) -> None:
+    """Write every registered figure to figures/ as SVG and PNG."""
+    _install(session)
+    session.run("python", "-m", "navcore", "figures", "--out", "figures", *session.posargs)
+
+
+@nox.session
+def lint(session: nox.Session) -> None:
+    """ruff check and ruff format --check."""
+    session.install(next(line for line in LOCK.read_text().splitlines() if line.startswith("ruff==")))
+    session.run("ruff", "check", "navcore", "tests", "tools", "noxfile.py")
+    session.run("ruff", "format", "--check", "navcore", "tests", "tools", "noxfile.py")
+
+
+@nox.session
+def ledger(session: nox.Session) -> None:
+    """Print the ledger and write _build/ledger.json; fails if any claim fails its check."""
+    _install(session)
+    session.run("python", "-m", "navcore", "ledger", *session.posargs)
+    out = ROOT / "_build" / "ledger.json"
+    out.parent.mkdir(exist_ok=True)
+    with out.open("w") as fh:
+        session.run("python", "-m", "navcore", "ledger", "--json", stdout=fh)
+    session.log(f"ledger JSON: {out}")
+
+
+@nox.session
+def bench(session: nox.Session) -> None:
+    """Time each chapter's execution and the heavy models; write _build/bench.md."""
+    _install(session)
+    session.run("python", "tools/bench.py", *session.posargs)
+
+
+if __name__ == "__main__":  # pragma: no cover - convenience
+    sys.exit(subprocess.call(["nox", *sys.argv[1:]], cwd=ROOT))

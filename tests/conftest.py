@@ -1,0 +1,17 @@
+"""Shared pytest configuration: numpy floating-point problems are errors, not warnings."""
+
+from __future__ import annotations
+
+import matplotlib
+import numpy as np
+import pytest
+
+matplotlib.use("Agg")
+
+
+@pytest.fixture(autouse=True)
+def _numpy_errors_raise():
+    """Make numpy raise on invalid operations, division by zero and overflow in every test."""
+    old = np.seterr(invalid="raise", divide="raise", over="raise", under="ignore")
+    yield
+    np.seterr(**old)

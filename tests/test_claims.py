@@ -1,0 +1,44 @@
+"""One test per ledger claim, named by its id: the claim must pass its own check.
+
+The check depends on the declared status (see ``navcore.ledger.core``): a reproduced or
+consistent claim must agree with the published value within its tolerance; a discrepant claim
+must still disagree and must match its independent oracle; a not-reproducible claim is
+skipped with its note as the reason.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from navcore import ledger
+
+CLAIM_IDS = [c.id for c in ledger.claims()]
+
+
+@pytest.mark.parametrize("claim_id", CLAIM_IDS)
+def test_claim(claim_id: str) -> None:
+    result = ledger.evaluate_claim(claim_id)
+    if result.claim.status == "not-reproducible":
+        pytest.skip(f"not reproducible: {result.claim.note}")
+    assert result.passes, (
+        f"{claim_id} ({result.claim.locator}, {result.claim.quantity}): {result.detail}; "
+        f"published {result.claim.relation} {result.claim.published} {result.claim.unit}, "
+        f"reproduced {result.reproduced!r}, tolerance {result.claim.tolerance.describe()}"
+    )
+
+
+def test_registry_is_consistent() -> None:
+    """Unique ids, every discrepant claim names a registered erratum, errata name real claims."""
+    ledger.validate_registry(list(ledger.claims()), list(ledger.errata()))
+    for c in ledger.claims():
+        if c.status == "discrepant":
+            e = ledger.erratum(c.erratum)
+            assert e.paper == c.paper
+
+
+def test_every_paper_module_defines_claims_or_errata() -> None:
+    import importlib
+
+    for name in ledger.paper_modules():
+        module = importlib.import_module(name)
+        assert hasattr(module, "CLAIMS") or hasattr(module, "ERRATA"), name

@@ -1,0 +1,224 @@
+"""Estimation core: Kalman filter, information form, Riccati steady state, Van Loan, covariance
+analysis, state layouts.
+
+Oracles: filterpy's KalmanFilter on the same problem; closed-form discretisation of a double
+integrator and of a first-order Gauss-Markov process; the iterated scalar Riccati recursion;
+a seeded Monte Carlo of the same linear model for the covariance propagation.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from filterpy.kalman import KalmanFilter
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from navcore.estimation import (
+    Measurement,
+    StateLayout,
+    covariance_from_information,
+    first_order_transition,
+    information_from_covariance,
+    information_update,
+    kf_predict,
+    kf_update,
+    propagate_covariance,
+    scalar_riccati_iterate,
+    scalar_riccati_steady_state,
+    van_loan,
+)
+
+
+def _random_spd(rng, n, scale=1.0):
+    A = rng.normal(size=(n, n))
+    return scale * (A @ A.T + n * np.eye(n))
+
+
+def test_kalman_filter_matches_filterpy():
+    """Oracle: filterpy.kalman.KalmanFilter (predict/update) over 50 steps of a 4-state model."""
+    rng = np.random.default_rng(7)
+    n, m = 4, 2
+    F = np.eye(n) + 0.1 * rng.normal(size=(n, n))
+    Q = _random_spd(rng, n, 0.01)
+    H = rng.normal(size=(m, n))
+    R = _random_spd(rng, m, 0.1)
+    x = np.zeros(n)
+    P = _random_spd(rng, n)
+    kf = KalmanFilter(dim_x=n, dim_z=m)
+    kf.x, kf.P, kf.F, kf.Q, kf.H, kf.R = x.copy(), P.copy(), F, Q, H, R
+    for _ in range(50):
+        z = rng.normal(size=m)
+        x, P = kf_predict(x, P, F, Q)
+        res = kf_update(x, P, z, H, R)
+        x, P = res.x, res.P
+        kf.predict()
+        kf.update(z)
+        np.testing.assert_allclose(x, kf.x, rtol=1e-9, atol=1e-12)
+        np.testing.assert_allclose(P, kf.P, rtol=1e-9, atol=1e-12)
+        assert np.array_equal(P, P.T)
+
+
+def test_information_update_equals_covariance_update():
+    """Oracle: the covariance-form Joseph update on the same prior and measurement."""
+    rng = np.random.default_rng(8)
+    n, m = 3, 2
+    P = _random_spd(rng, n)
+    x = rng.normal(size=n)
+    H = rng.normal(size=(m, n))
+    R = _random_spd(rng, m)
+    z = rng.normal(size=m)
+    y, Y = information_from_covariance(x, P)
+    y2, Y2 = information_update(y, Y, z, H, R)
+    x2, P2 = covariance_from_information(y2, Y2)
+    ref = kf_update(x, P, z, H, R)
+    np.testing.assert_allclose(P2, ref.P, rtol=1e-10)
+    np.testing.assert_allclose(x2, ref.x, rtol=1e-10, atol=1e-12)
+
+
+def test_information_update_from_zero_prior():
+    """With no prior information, one full-rank update gives the weighted least-squares solution."""
+    H = np.array([[1.0, 0.0], [1.0, 1.0], [0.0, 2.0]])
+    R = np.diag([1.0, 4.0, 2.0])
+    z = np.array([1.0, 3.0, 4.0])
+    y, Y = information_update(np.zeros(2), np.zeros((2, 2)), z, H, R)
+    W = np.linalg.inv(R)
+    ls = np.linalg.solve(H.T @ W @ H, H.T @ W @ z)
+    np.testing.assert_allclose(np.linalg.solve(Y, y), ls)
+
+
+@settings(max_examples=80, deadline=None)
+@given(
+    st.floats(-1.2, 1.2),
+    st.floats(1e-4, 10.0),
+    st.floats(0.1, 3.0),
+    st.floats(1e-3, 10.0),
+)
+def test_scalar_riccati_steady_state_matches_iteration(phi, q, h, r):
+    """Oracle: iterate the Riccati recursion 5000 times from P0 = 1 (contracting for these ranges)."""
+    ss = scalar_riccati_steady_state(phi, q, h, r)
+    it = scalar_riccati_iterate(phi, q, h, r, p0=1.0, steps=5000)
+    assert ss.prior == pytest.approx(it.prior, rel=1e-8)
+    assert ss.posterior == pytest.approx(it.posterior, rel=1e-8)
+    assert ss.gain == pytest.approx(it.gain, rel=1e-8)
+
+
+def test_scalar_riccati_random_walk_closed_form():
+    """Oracle: for phi = 1, h = 1, P- = (q + sqrt(q^2 + 4 q r)) / 2."""
+    q, r = 0.3, 2.0
+    ss = scalar_riccati_steady_state(1.0, q, 1.0, r)
+    assert ss.prior == pytest.approx((q + np.sqrt(q * q + 4 * q * r)) / 2)
+
+
+def test_scalar_riccati_tiny_q_no_cancellation():
+    """With q -> 0 for a stable state, P- ~ q/(1-phi^2) must stay positive and accurate."""
+    ss = scalar_riccati_steady_state(0.5, 1e-14, 1.0, 1.0)
+    assert ss.prior > 0
+    assert ss.prior == pytest.approx(1e-14 / 0.75, rel=1e-6)
+
+
+@pytest.mark.parametrize("bad", [{"r": 0.0}, {"h": 0.0}, {"q": -1.0}, {"phi": float("nan")}])
+def test_scalar_riccati_rejects_bad_input(bad):
+    args = {"phi": 0.9, "q": 1.0, "h": 1.0, "r": 1.0} | bad
+    with pytest.raises(ValueError, match=next(iter(bad))):
+        scalar_riccati_steady_state(**args)
+
+
+@pytest.mark.parametrize("dt", [0.01, 0.5, 3.0])
+def test_van_loan_double_integrator_closed_form(dt):
+    """Oracle: Qd = q [[dt^3/3, dt^2/2], [dt^2/2, dt]] for white acceleration of PSD q."""
+    q = 0.7
+    Phi, Qd = van_loan([[0, 1], [0, 0]], [[0, 0], [0, q]], dt)
+    np.testing.assert_allclose(Phi, [[1, dt], [0, 1]], atol=1e-14)
+    np.testing.assert_allclose(Qd, q * np.array([[dt**3 / 3, dt**2 / 2], [dt**2 / 2, dt]]), rtol=1e-10)
+
+
+def test_van_loan_gauss_markov_closed_form():
+    """Oracle: first-order Markov x' = -x/T + w: Phi = e^{-dt/T}, Qd = sigma^2 (1 - e^{-2dt/T})."""
+    T, sigma, dt = 37.0, 2.5, 1.3
+    Phi, Qd = van_loan([[-1 / T]], [[2 * sigma**2 / T]], dt)
+    assert Phi[0, 0] == pytest.approx(np.exp(-dt / T))
+    assert Qd[0, 0] == pytest.approx(sigma**2 * (1 - np.exp(-2 * dt / T)), rel=1e-10)
+
+
+def test_first_order_transition():
+    F = np.array([[0.0, 1.0], [-4.0, 0.0]])
+    np.testing.assert_allclose(first_order_transition(F, 0.1), np.eye(2) + 0.1 * F)
+
+
+def test_propagate_covariance_matches_monte_carlo():
+    """Oracle: seeded Monte Carlo (20000 runs) of the same linear model and Kalman filter.
+
+    The sample covariance of the estimation error must match the propagated posterior within
+    the sampling error of a variance estimate (about 4 sqrt(2/N) relative).
+    """
+    rng = np.random.default_rng(11)
+    dt, q, r = 1.0, 0.05, 4.0
+    Phi, Q = van_loan([[0, 1], [0, 0]], [[0, 0], [0, q]], dt)
+    H = np.array([[1.0, 0.0]])
+    R = np.array([[r]])
+    P0 = np.diag([100.0, 1.0])
+    t = np.arange(0, 31.0)
+    meas = [Measurement(H, R)]
+    hist = propagate_covariance(P0, t, Phi, Q, lambda k, tk: meas if k % 3 == 0 else [])
+
+    N = 20_000
+    L0 = np.linalg.cholesky(P0)
+    LQ = np.linalg.cholesky(Q)
+    x = (L0 @ rng.normal(size=(2, N))).T  # truth
+    xh = np.zeros((N, 2))  # estimate
+    P = P0.copy()
+    for k, _ in enumerate(t):
+        if k > 0:
+            x = x @ Phi.T + (LQ @ rng.normal(size=(2, N))).T
+            xh = xh @ Phi.T
+            P = Phi @ P @ Phi.T + Q
+        if k % 3 == 0:
+            z = x @ H.T + np.sqrt(r) * rng.normal(size=(N, 1))
+            K = P @ H.T / (H @ P @ H.T + R)
+            xh = xh + (z - xh @ H.T) @ K.T
+            P = (np.eye(2) - K @ H) @ P
+    err = x - xh
+    sample = np.cov(err.T)
+    rel = 4 * np.sqrt(2 / N)
+    np.testing.assert_allclose(np.diag(sample), np.diag(hist.posterior[-1]), rtol=rel)
+    assert hist.n_updates.sum() == len(range(0, 31, 3))
+
+
+def test_propagate_covariance_outage_is_prediction():
+    """An infinite-variance measurement carries no information: same as no measurement."""
+    Phi, Q = van_loan([[0, 1], [0, 0]], [[0, 0], [0, 0.1]], 1.0)
+    t = np.arange(5.0)
+    P0 = np.eye(2)
+    outage = propagate_covariance(P0, t, Phi, Q, lambda k, tk: [Measurement.scalar([1, 0], np.inf)])
+    none = propagate_covariance(P0, t, Phi, Q)
+    np.testing.assert_array_equal(outage.posterior, none.posterior)
+    assert outage.n_updates.sum() == 0
+    np.testing.assert_allclose(none.sigma(0)[0], 1.0)
+    np.testing.assert_allclose(none.rss([0, 1])[0], np.sqrt(2.0))
+
+
+def test_kf_rejects_bad_shapes_and_noise():
+    with pytest.raises(ValueError, match="H must have shape"):
+        kf_update(np.zeros(2), np.eye(2), [1.0], np.ones((1, 3)), [[1.0]])
+    with pytest.raises(ValueError, match="R must be positive definite"):
+        kf_update(np.zeros(2), np.eye(2), [1.0], np.ones((1, 2)), [[0.0]])
+    with pytest.raises(ValueError, match="x must be finite"):
+        kf_predict([np.nan, 0.0], np.eye(2), np.eye(2), np.eye(2))
+    with pytest.raises(ValueError, match="t must be"):
+        propagate_covariance(np.eye(1), [0.0, 0.0], np.eye(1), np.eye(1))
+
+
+def test_state_layout():
+    lay = StateLayout.of(("position", 3), ("velocity", 3), ("clock", 2))
+    assert lay.size == 8
+    assert lay.slice("velocity") == slice(3, 6)
+    assert lay.index("clock", 1) == 7
+    assert StateLayout.of(("velocity", 3)).issubset(lay)
+    assert not StateLayout.of(("velocity", 2)).issubset(lay)
+    with pytest.raises(ValueError, match="unique names"):
+        StateLayout.of(("a", 1), ("a", 2))
+    with pytest.raises(ValueError, match="size must be an integer >= 1"):
+        StateLayout.of(("a", 0))
+    with pytest.raises(ValueError, match="name must be one of"):
+        lay.slice("attitude")

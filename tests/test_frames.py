@@ -1,0 +1,125 @@
+"""Frames: rotations, Hamilton quaternions, Euler angles, geodesy.
+
+Oracles: pymap3d (an independent geodesy implementation) for geodetic/ECEF/NED; scipy's
+Rotation for quaternion and Euler conventions (scipy is scalar-last: converted explicitly);
+algebraic identities (orthogonality, cross product).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pymap3d
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from scipy.spatial.transform import Rotation
+
+from navcore import frames as fr
+
+angles = st.floats(-np.pi, np.pi, allow_nan=False)
+pitches = st.floats(-1.5, 1.5, allow_nan=False)
+
+
+def test_skew_is_cross_product():
+    rng = np.random.default_rng(0)
+    a, b = rng.normal(size=(2, 3))
+    np.testing.assert_allclose(fr.skew(a) @ b, np.cross(a, b))
+    np.testing.assert_allclose(fr.skew(a), -fr.skew(a).T)
+
+
+@settings(max_examples=60, deadline=None)
+@given(angles, pitches, angles)
+def test_euler_dcm_against_scipy(roll, pitch, yaw):
+    """Oracle: scipy Rotation 'ZYX' intrinsic = yaw, pitch, roll (3-2-1), body to nav."""
+    C = fr.dcm_from_euler(roll, pitch, yaw)
+    ref = Rotation.from_euler("ZYX", [yaw, pitch, roll]).as_matrix()
+    np.testing.assert_allclose(C, ref, atol=1e-12)
+    np.testing.assert_allclose(C @ C.T, np.eye(3), atol=1e-12)
+    r2, p2, y2 = fr.euler_from_dcm(C)
+    np.testing.assert_allclose(fr.dcm_from_euler(r2, p2, y2), C, atol=1e-12)
+
+
+@settings(max_examples=60, deadline=None)
+@given(angles, pitches, angles)
+def test_quaternion_matches_scipy_and_dcm(roll, pitch, yaw):
+    """Oracle: scipy's quaternion (x, y, z, w) reordered to scalar-first, up to sign."""
+    q = fr.quat_from_euler(roll, pitch, yaw)
+    ref = Rotation.from_euler("ZYX", [yaw, pitch, roll]).as_quat()  # scalar last
+    ref = np.roll(ref, 1)
+    if ref[0] < 0:
+        ref = -ref
+    np.testing.assert_allclose(q, ref, atol=1e-12)
+    np.testing.assert_allclose(fr.dcm_from_quat(q), fr.dcm_from_euler(roll, pitch, yaw), atol=1e-12)
+    np.testing.assert_allclose(fr.quat_from_dcm(fr.dcm_from_quat(q)), q, atol=1e-12)
+
+
+def test_hamilton_product_convention():
+    """Hamilton: i*j = k (not -k, which would be the JPL convention)."""
+    i = np.array([0.0, 1, 0, 0])
+    j = np.array([0.0, 0, 1, 0])
+    np.testing.assert_allclose(fr.quat_multiply(i, j), [0, 0, 0, 1])
+    # composition: q_ab ⊗ q_bc corresponds to C_ab @ C_bc
+    rng = np.random.default_rng(3)
+    qa, qb = fr.quat_normalize(rng.normal(size=(2, 4)))
+    np.testing.assert_allclose(
+        fr.dcm_from_quat(fr.quat_multiply(qa, qb)), fr.dcm_from_quat(qa) @ fr.dcm_from_quat(qb), atol=1e-12
+    )
+
+
+def test_quat_rotate_and_rotvec():
+    """Oracle: scipy Rotation.from_rotvec applied to a vector."""
+    rng = np.random.default_rng(4)
+    rv = rng.normal(size=3)
+    v = rng.normal(size=3)
+    q = fr.quat_from_rotvec(rv)
+    np.testing.assert_allclose(fr.quat_rotate(q, v), Rotation.from_rotvec(rv).apply(v), atol=1e-12)
+    np.testing.assert_allclose(fr.rotvec_from_quat(q), rv, atol=1e-12)
+    # small-angle branch
+    tiny = np.array([1e-10, -2e-10, 3e-10])
+    np.testing.assert_allclose(fr.rotvec_from_quat(fr.quat_from_rotvec(tiny)), tiny, rtol=1e-6)
+
+
+def test_geodetic_ecef_against_pymap3d():
+    """Oracle: pymap3d.geodetic2ecef / ecef2geodetic (WGS-84)."""
+    lats = np.array([0.0, 51.0, -33.9, 89.9, -89.99])
+    lons = np.array([0.0, 8.0, 151.2, -120.0, 45.0])
+    hs = np.array([0.0, 3000.0, -50.0, 20_200e3, 35_786e3])
+    r = fr.geodetic_to_ecef(lats, lons, hs, deg=True)
+    ref = np.stack(pymap3d.geodetic2ecef(lats, lons, hs), axis=-1)
+    np.testing.assert_allclose(r, ref, atol=1e-6)
+    lat, lon, h = fr.ecef_to_geodetic(r, deg=True)
+    np.testing.assert_allclose(lat, lats, atol=1e-9)
+    np.testing.assert_allclose(lon, lons, atol=1e-9)
+    np.testing.assert_allclose(h, hs, atol=1e-4)
+
+
+def test_ned_against_pymap3d():
+    """Oracle: pymap3d.ecef2ned / ned2ecef."""
+    lat0, lon0, h0 = 51.0, 8.0, 3000.0
+    pts = fr.geodetic_to_ecef(
+        np.array([51.1, 50.9]), np.array([8.2, 7.9]), np.array([2000.0, 9000.0]), deg=True
+    )
+    ned = fr.ecef_to_ned(pts, lat0, lon0, h0, deg=True)
+    ref = np.stack(pymap3d.ecef2ned(pts[:, 0], pts[:, 1], pts[:, 2], lat0, lon0, h0), axis=-1)
+    np.testing.assert_allclose(ned, ref, atol=1e-6)
+    np.testing.assert_allclose(fr.ned_to_ecef(ned, lat0, lon0, h0, deg=True), pts, atol=1e-6)
+
+
+def test_radii_of_curvature_equator_and_pole():
+    """Oracle: closed forms R_N(0) = a(1-e2), R_E(0) = a; R_N(90) = R_E(90) = a/sqrt(1-e2)."""
+    from navcore.units import WGS84_A, WGS84_E2
+
+    RN, RE = fr.radii_of_curvature(np.array([0.0, np.pi / 2]))
+    np.testing.assert_allclose(RN, [WGS84_A * (1 - WGS84_E2), WGS84_A / np.sqrt(1 - WGS84_E2)])
+    np.testing.assert_allclose(RE, [WGS84_A, WGS84_A / np.sqrt(1 - WGS84_E2)])
+
+
+def test_bad_inputs_raise():
+    with pytest.raises(ValueError, match="v must be a 3-vector"):
+        fr.skew([1.0, 2.0])
+    with pytest.raises(ValueError, match="lat must lie"):
+        fr.geodetic_to_ecef(100.0, 0.0, 0.0, deg=True)
+    with pytest.raises(ValueError, match="q must be non-zero"):
+        fr.quat_normalize([0.0, 0, 0, 0])
+    with pytest.raises(ValueError, match="finite"):
+        fr.dcm_from_euler(float("nan"), 0.0, 0.0)

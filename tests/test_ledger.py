@@ -1,0 +1,209 @@
+"""The ledger machinery, on synthetic claims built in the test (not the paper registry).
+
+Oracle: the check rules of LEDGER.md written out by hand for each case.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import pytest
+
+from navcore.ledger import Claim, Erratum, Tolerance, evaluate, printed, validate_registry
+from navcore.ledger.render import LedgerTable, json_dump
+
+TOL = Tolerance(reason="test", abs=0.5)
+
+
+def make(**kw):
+    base = dict(
+        id="WF-test",
+        paper="WF",
+        locator="Eq. (1)",
+        quantity="q",
+        published=10.0,
+        unit="m",
+        compute=lambda: 10.2,
+        tolerance=TOL,
+        status="reproduced",
+        note="n",
+    )
+    base.update(kw)
+    return Claim(**base)
+
+
+def test_printed_half_last_digit():
+    assert printed("17.67") == (17.67, printed("17.67")[1])
+    assert printed("17.67")[1].abs == pytest.approx(0.005)
+    assert printed("1131")[1].abs == pytest.approx(0.5)
+    assert printed("1.5e-3")[1].abs == pytest.approx(0.05e-3)
+    assert printed("0.002")[1].abs == pytest.approx(0.0005)
+    _, t = printed("90", extra_abs=1.0, why="rounded intermediate")
+    assert t.abs == pytest.approx(1.5) and "rounded intermediate" in t.reason
+    with pytest.raises(ValueError, match="printed number"):
+        printed("about 5")
+
+
+def test_reproduced_within_and_outside_tolerance():
+    assert evaluate(make()).passes
+    assert not evaluate(make(compute=lambda: 10.6)).passes
+
+
+@pytest.mark.parametrize(
+    ("relation", "value", "ok"),
+    [(">", 131.0, True), (">", 120.0, False), ("<", 5.0, True), (">=", 9.6, True), ("<=", 10.6, False)],
+)
+def test_relations(relation, value, ok):
+    published = 130.0 if relation == ">" else 10.0
+    assert evaluate(make(relation=relation, published=published, compute=lambda: value)).passes is ok
+
+
+def test_relative_tolerance():
+    c = make(published=1000.0, compute=lambda: 1040.0, tolerance=Tolerance(reason="r", rel=0.05))
+    assert evaluate(c).passes
+    c = make(published=1000.0, compute=lambda: 1060.0, tolerance=Tolerance(reason="r", rel=0.05))
+    assert not evaluate(c).passes
+
+
+def test_statement():
+    assert evaluate(make(published=True, unit="statement", compute=lambda: 3 > 2)).passes
+    assert not evaluate(make(published=True, unit="statement", compute=lambda: 3 < 2)).passes
+
+
+def test_discrepant_requires_erratum_and_oracle():
+    with pytest.raises(ValueError, match="must name its erratum"):
+        make(status="discrepant", compute=lambda: 20.0)
+    with pytest.raises(ValueError, match="independent oracle"):
+        make(status="discrepant", erratum="WF-E1", compute=lambda: 20.0)
+
+
+def test_discrepant_check():
+    ot = Tolerance(reason="oracle", rel=1e-6)
+    ok = make(
+        status="discrepant", erratum="WF-E1", compute=lambda: 20.0, oracle=lambda: 20.0, oracle_tolerance=ot
+    )
+    assert evaluate(ok).passes
+    # the book's value drifts away from its oracle: a regression is caught
+    drift = make(
+        status="discrepant", erratum="WF-E1", compute=lambda: 21.0, oracle=lambda: 20.0, oracle_tolerance=ot
+    )
+    assert not evaluate(drift).passes
+    # the discrepancy vanished: the status must be re-examined
+    gone = make(
+        status="discrepant", erratum="WF-E1", compute=lambda: 10.0, oracle=lambda: 10.0, oracle_tolerance=ot
+    )
+    assert not evaluate(gone).passes
+
+
+def test_not_reproducible_has_no_compute():
+    c = make(status="not-reproducible", compute=None)
+    assert evaluate(c).passes and evaluate(c).reproduced is None
+    with pytest.raises(ValueError, match="has no compute"):
+        make(status="not-reproducible")
+
+
+def test_compute_failure_and_nan_fail_the_check():
+    def boom():
+        raise RuntimeError("x")
+
+    assert not evaluate(make(compute=boom)).passes
+    assert not evaluate(make(compute=lambda: float("nan"))).passes
+
+
+@pytest.mark.parametrize(
+    ("field", "value", "match"),
+    [
+        ("id", "XX-1", "must start with its paper key"),
+        ("id", "SP-1", "must start with 'WF-'"),
+        ("paper", "ZZ", "paper must be one of"),
+        ("status", "fine", "status must be one of"),
+        ("relation", "~", "relation must be one of"),
+        ("note", " ", "note must state"),
+    ],
+)
+def test_claim_validation(field, value, match):
+    with pytest.raises(ValueError, match=match):
+        make(**{field: value})
+
+
+def test_tolerance_needs_reason():
+    with pytest.raises(ValueError, match="reason"):
+        Tolerance(reason="", abs=1.0)
+    with pytest.raises(ValueError, match="abs must be finite"):
+        Tolerance(reason="r", abs=-1.0)
+
+
+def test_registry_validation():
+    c = make(
+        status="discrepant", erratum="WF-E9", compute=lambda: 1.0, oracle=lambda: 1.0, oracle_tolerance=TOL
+    )
+    with pytest.raises(ValueError, match="unknown erratum"):
+        validate_registry([c], [])
+    e = Erratum("WF-E9", "WF", "Eq. (1)", "p", "f", "e", claims=("WF-nope",))
+    with pytest.raises(ValueError, match="unknown claim"):
+        validate_registry([c], [e])
+    with pytest.raises(ValueError, match="duplicate claim"):
+        validate_registry([make(), make()], [])
+
+
+def test_json_has_exactly_the_documented_fields():
+    out = json.loads(
+        json_dump(
+            [
+                evaluate(make()),
+                evaluate(make(id="WF-b", published=True, unit="statement", compute=lambda: True)),
+            ]
+        )
+    )
+    fields = {
+        "id",
+        "paper",
+        "locator",
+        "quantity",
+        "published",
+        "relation",
+        "unit",
+        "reproduced",
+        "tolerance",
+        "status",
+        "note",
+    }
+    assert all(set(o) == fields for o in out)
+    assert out[0]["published"] == 10.0 and out[0]["reproduced"] == 10.2
+    assert out[0]["tolerance"] == {"abs": 0.5, "rel": None, "reason": "test"}
+    assert out[1]["published"] is True
+
+
+def test_table_renders_html_and_markdown():
+    t = LedgerTable([evaluate(make())])
+    assert "<table" in t._repr_html_() and "WF-test" in t._repr_html_()
+    md = t._repr_markdown_()
+    assert md.startswith("| Locator") and "reproduced" in md
+
+
+def test_cli_ledger_json_and_exit_status():
+    """The command line prints valid JSON with the documented fields and exits 0 when all pass."""
+    proc = subprocess.run(
+        [sys.executable, "-m", "navcore", "ledger", "--json"], capture_output=True, text=True
+    )
+    data = json.loads(proc.stdout)
+    assert isinstance(data, list) and data
+    # exit status 0 exactly when no claim reports FAIL
+    assert (proc.returncode == 0) == ("FAIL" not in proc.stderr)
+    proc = subprocess.run(
+        [sys.executable, "-m", "navcore", "ledger", "--paper", "SP"], capture_output=True, text=True
+    )
+    assert "SP-tab2.3-total" in proc.stdout and "claims" in proc.stdout
+
+
+def test_cli_exit_status_nonzero_on_failure(monkeypatch, capsys):
+    """Oracle: a registry with one failing claim must make `ledger` exit with status 1."""
+    from navcore import __main__ as cli
+    from navcore import ledger
+
+    failing = make(compute=lambda: 99.0)
+    monkeypatch.setattr(ledger, "evaluations", lambda paper=None, prefix=None: [evaluate(failing)])
+    assert cli.main(["ledger"]) == 1
+    assert "FAIL WF-test" in capsys.readouterr().err

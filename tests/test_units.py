@@ -1,0 +1,71 @@
+"""Units: each conversion factor checked against an independent definition.
+
+Oracles: exact SI definitions (international foot 0.3048 m, nautical mile 1852 m, statute
+mile 5280 ft), and scipy.constants for c and g0.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+import scipy.constants as sc
+
+from navcore import units as u
+
+
+def test_constants_match_scipy_constants():
+    """Oracle: scipy.constants (CODATA)."""
+    assert u.C == sc.c
+    assert u.G0 == sc.g
+    assert u.NMI == sc.nautical_mile
+    assert u.FT == pytest.approx(sc.foot, rel=1e-15)
+    assert u.MILE == pytest.approx(sc.mile, rel=1e-15)
+
+
+def test_speed_and_rate_units():
+    """Oracle: definitions (1 knot = 1 nmi/h; mph = 5280 ft per hour)."""
+    assert u.KNOT == pytest.approx(1852 / 3600)
+    assert u.NMI_PER_H == u.KNOT
+    assert u.MPH == pytest.approx(5280 * 0.3048 / 3600)
+    assert 1.0 * u.DEG_PER_H == pytest.approx(math.radians(1) / 3600)
+    assert u.ARCSEC == pytest.approx(math.radians(1 / 3600))
+    assert 100 * u.MICRO_G == pytest.approx(100e-6 * 9.80665)
+
+
+def test_random_walk_units():
+    """Oracle: 1 deg/sqrt(h) = (pi/180) rad / sqrt(3600 s); 1 deg/h/sqrt(Hz) = (pi/180)/3600 rad/sqrt(s)."""
+    assert u.DEG_PER_SQRT_H == pytest.approx(math.pi / 180 / 60)
+    assert u.DEG_PER_H_PER_SQRT_HZ == pytest.approx(math.pi / 180 / 3600)
+    # an ARW of 1 deg/sqrt(h) is 60 deg/h/sqrt(Hz)
+    assert u.DEG_PER_SQRT_H / u.DEG_PER_H_PER_SQRT_HZ == pytest.approx(60.0)
+
+
+def test_gps_l1_wavelength():
+    """Oracle: lambda = c / f with f = 154 x 10.23 MHz."""
+    assert u.GPS_L1_HZ == pytest.approx(154 * 10.23e6)
+    assert u.GPS_L1_WAVELENGTH_M == pytest.approx(0.19029, abs=1e-5)
+    assert u.GPS_CA_CHIP_M == pytest.approx(293.05, abs=0.01)
+
+
+@pytest.mark.parametrize("ratio", [1e-30, 0.5, 1.0, 100.0, 1e12])
+def test_db_round_trip(ratio):
+    """Oracle: round trip power ratio -> dB -> power ratio, and 20 dB = factor 100."""
+    assert u.power_ratio_from_db(u.db_from_power_ratio(ratio)) == pytest.approx(ratio, rel=1e-12)
+    assert u.amplitude_ratio_from_db(u.db_from_amplitude_ratio(ratio)) == pytest.approx(ratio, rel=1e-12)
+    assert u.power_ratio_from_db(20.0) == pytest.approx(100.0)
+    assert u.watts_from_dbw(u.dbw_from_watts(ratio)) == pytest.approx(ratio, rel=1e-12)
+
+
+def test_db_vectorised():
+    out = u.db_from_power_ratio(np.array([1.0, 10.0, 100.0]))
+    np.testing.assert_allclose(out, [0.0, 10.0, 20.0])
+
+
+@pytest.mark.parametrize("bad", [0.0, -1.0, float("nan")])
+def test_db_rejects_nonpositive(bad):
+    with pytest.raises(ValueError, match="ratio must be > 0"):
+        u.db_from_power_ratio(bad)
+    with pytest.raises(ValueError, match="power_w must be > 0"):
+        u.dbw_from_watts(bad)
