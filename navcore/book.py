@@ -45,7 +45,12 @@ def setup() -> None:
 
 
 def claims_table(
-    paper: str | None = None, prefix: str | None = None, ids: list[str] | None = None, *, notes: bool = True
+    paper: str | None = None,
+    prefix: str | None = None,
+    ids: list[str] | None = None,
+    *,
+    notes: bool = True,
+    root: str = "../",
 ) -> LedgerTable:
     """Published-versus-reproduced table of the selected claims (HTML coloured; PDF table)."""
     if ids is not None:
@@ -54,7 +59,7 @@ def claims_table(
         evals = ledger.evaluations(paper=paper, prefix=prefix)
     if not evals:
         raise ValueError(f"no claims match paper={paper!r}, prefix={prefix!r}, ids={ids!r}")
-    return LedgerTable(evals, show_notes=notes)
+    return LedgerTable(evals, show_notes=notes, root=root)
 
 
 def counts_table(paper: str | None = None) -> CountsTable:

@@ -124,12 +124,21 @@ class LedgerTable:
         Include the note and tolerance reason (HTML: as a second line; Markdown: a column).
     link_errata : bool
         Link erratum ids to their entry on the errata page.
+    root : str
+        Relative path from the page showing the table to the book's root (``"../"`` for a
+        chapter page, ``""`` for a top-level page).
     """
 
     def __init__(
-        self, evals: Sequence[Evaluation], *, show_notes: bool = True, link_errata: bool = True
+        self,
+        evals: Sequence[Evaluation],
+        *,
+        show_notes: bool = True,
+        link_errata: bool = True,
+        root: str = "../",
     ) -> None:
         self.evals = list(evals)
+        self.root = root
         self.show_notes = show_notes
         self.link_errata = link_errata
 
@@ -144,9 +153,8 @@ class LedgerTable:
             if r["check"] != "ok":
                 status += " <b>(check fails)</b>"
             if r["erratum"] and self.link_errata:
-                status += (
-                    f'<br><a href="../errata.html#{r["erratum"].lower()}">{html.escape(r["erratum"])}</a>'
-                )
+                anchor = r["erratum"].lower()
+                status += f'<br><a href="{self.root}errata.html#{anchor}">{html.escape(r["erratum"])}</a>'
             cells = [
                 f'<code id="{html.escape(r["id"].lower())}">{html.escape(r["id"])}</code>',
                 html.escape(r["locator"]),
