@@ -1,0 +1,557 @@
+"""Multiple-access noise at the output of a matched filter (ATC-10 Section 3.4, Appendix E).
+
+N aircraft transmit unit-energy signatures of duration tau once every alpha seconds, at
+independent, uniformly distributed arrival times. At a sampling instant, interferer j
+overlaps the matched filter of aircraft i with probability ``q = 2 tau / alpha`` and then
+contributes an amplitude drawn from its *amplitude density* C(x). The noise sample is the
+sum of the N - 1 gated contributions, so its cumulant generating function is
+
+    mu(s) = (N - 1) ln((1 - q) + q M_C(s)),
+
+the logarithm of ATC-10 Eq. (3.4.6) with v = s / j. Everything here works with ``mu`` and
+its first two derivatives in the log domain; the ROC bounds of
+:mod:`navcore.detection.roc_bounds` only need those.
+
+Amplitude densities are objects with ``log_mgf(s)``, ``dlog_mgf(s)`` (= M'/M),
+``d2_ratio(s)`` (= M''/M), ``moment(r)``, ``char_fn(v)`` and ``sample(rng, size)``. Four
+closed forms of equal second moment b are provided (two-point, uniform, triangular,
+Gaussian), a general point-mass density (which also represents a tabulated continuous
+density or an empirical sample), and a density given only by its log-MGF.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from math import comb
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+from scipy import special, stats
+
+from navcore._validate import require_integer, require_positive, require_probability
+
+__all__ = [
+    "GaussianDensity",
+    "LogMGFDensity",
+    "MultipleAccessNoise",
+    "PointMassDensity",
+    "TriangularDensity",
+    "UniformDensity",
+    "cumulants_from_raw_moments",
+    "edgeworth_density",
+    "edgeworth_tail",
+    "gaussian_mixture_exact_tail",
+    "psk_amplitude_samples",
+    "sample_noise",
+    "stratified_tail",
+    "tabulated_density",
+    "two_point_density",
+    "two_point_exact_tail",
+]
+
+FloatArray = NDArray[np.float64]
+
+
+def _log_sinhc(x: FloatArray) -> FloatArray:
+    """ln(sinh(x)/x), stable for small and large |x|."""
+    x = np.abs(np.asarray(x, dtype=float))
+    small = x < 1e-3
+    xs = np.where(small, 1.0, x)
+    big = xs + np.log1p(-np.exp(-2.0 * xs)) - np.log(2.0) - np.log(xs)
+    series = x**2 / 6.0 - x**4 / 180.0
+    return np.where(small, series, big)
+
+
+def _langevin(x: FloatArray) -> FloatArray:
+    """L(x) = coth x - 1/x, with its series near 0."""
+    x = np.asarray(x, dtype=float)
+    small = np.abs(x) < 1e-3
+    xs = np.where(small, 1.0, x)
+    return np.where(small, x / 3.0 - x**3 / 45.0, 1.0 / np.tanh(xs) - 1.0 / xs)
+
+
+def _langevin_over_x(x: FloatArray) -> FloatArray:
+    """L(x)/x, with its series near 0."""
+    x = np.asarray(x, dtype=float)
+    small = np.abs(x) < 1e-3
+    xs = np.where(small, 1.0, x)
+    return np.where(small, 1.0 / 3.0 - x**2 / 45.0, (1.0 / np.tanh(xs) - 1.0 / xs) / xs)
+
+
+@dataclass(frozen=True)
+class PointMassDensity:
+    """Amplitude density made of point masses ``weights`` at ``values`` (ATC-10 Eq. 3.3.8).
+
+    Also represents a tabulated continuous density (quadrature nodes, see
+    :func:`tabulated_density`) or an empirical sample (equal weights).
+    """
+
+    values: tuple[float, ...]
+    weights: tuple[float, ...]
+    name: str = "point masses"
+    _x: FloatArray = field(init=False, repr=False, compare=False)
+    _logw: FloatArray = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        x = np.asarray(self.values, dtype=float).ravel()
+        w = np.asarray(self.weights, dtype=float).ravel()
+        if x.size == 0 or x.shape != w.shape:
+            raise ValueError("values and weights must be non-empty and of equal length")
+        if np.any(w < 0) or not np.isfinite(w).all() or not np.isfinite(x).all():
+            raise ValueError("weights must be finite and >= 0, values finite")
+        total = w.sum()
+        if not total > 0:
+            raise ValueError("weights must have a positive sum")
+        w = w / total
+        with np.errstate(divide="ignore"):
+            object.__setattr__(self, "_x", x)
+            object.__setattr__(self, "_logw", np.log(w))
+
+    @property
+    def second_moment(self) -> float:
+        return self.moment(2)
+
+    def _tilted(self, s: ArrayLike) -> tuple[FloatArray, FloatArray]:
+        s = np.asarray(s, dtype=float)
+        a = s[..., None] * self._x + self._logw
+        lm = special.logsumexp(a, axis=-1)
+        return lm, np.exp(a - lm[..., None])
+
+    def log_mgf(self, s: ArrayLike) -> FloatArray:
+        """ln E exp(s x)."""
+        return self._tilted(s)[0]
+
+    def dlog_mgf(self, s: ArrayLike) -> FloatArray:
+        """M'(s)/M(s): the mean of the exponentially tilted density."""
+        return self._tilted(s)[1] @ self._x
+
+    def d2_ratio(self, s: ArrayLike) -> FloatArray:
+        """M''(s)/M(s): the second moment of the tilted density."""
+        return self._tilted(s)[1] @ self._x**2
+
+    def moment(self, r: int) -> float:
+        return float(np.exp(self._logw) @ self._x**r)
+
+    def char_fn(self, v: ArrayLike) -> NDArray[np.complex128]:
+        v = np.asarray(v, dtype=float)
+        return np.exp(1j * v[..., None] * self._x) @ np.exp(self._logw)
+
+    def sample(self, rng: np.random.Generator, size: int) -> FloatArray:
+        return rng.choice(self._x, size=size, p=np.exp(self._logw))
+
+
+def two_point_density(b: float) -> PointMassDensity:
+    """The quasi-optimal density: masses 1/2 at +-sqrt(b) (ATC-10 Eq. 3.7.1 with b = p/((N-1)q))."""
+    require_positive("b", b)
+    a = float(np.sqrt(b))
+    return PointMassDensity((-a, a), (0.5, 0.5), name="two-point")
+
+
+def tabulated_density(
+    pdf: Callable[[FloatArray], FloatArray], lo: float, hi: float, n: int = 200, name: str = "tabulated"
+) -> PointMassDensity:
+    """A continuous density on [lo, hi] as Gauss-Legendre point masses (exact MGF to quadrature order)."""
+    if not hi > lo:
+        raise ValueError(f"hi must be > lo, got lo={lo}, hi={hi}")
+    require_integer("n", n, minimum=2)
+    t, w = np.polynomial.legendre.leggauss(n)
+    x = 0.5 * (hi - lo) * t + 0.5 * (hi + lo)
+    return PointMassDensity(tuple(x), tuple(w * pdf(x) * 0.5 * (hi - lo)), name=name)
+
+
+@dataclass(frozen=True)
+class UniformDensity:
+    """Uniform amplitude density on [-sqrt(3b), sqrt(3b)] (second moment b)."""
+
+    b: float
+    name: str = "uniform"
+
+    def __post_init__(self) -> None:
+        require_positive("b", self.b)
+
+    @property
+    def half_width(self) -> float:
+        return float(np.sqrt(3.0 * self.b))
+
+    @property
+    def second_moment(self) -> float:
+        return self.b
+
+    def log_mgf(self, s: ArrayLike) -> FloatArray:
+        return _log_sinhc(self.half_width * np.asarray(s, dtype=float))
+
+    def dlog_mgf(self, s: ArrayLike) -> FloatArray:
+        a = self.half_width
+        return a * _langevin(a * np.asarray(s, dtype=float))
+
+    def d2_ratio(self, s: ArrayLike) -> FloatArray:
+        a = self.half_width
+        return a**2 * (1.0 - 2.0 * _langevin_over_x(a * np.asarray(s, dtype=float)))
+
+    def moment(self, r: int) -> float:
+        return 0.0 if r % 2 else self.half_width**r / (r + 1)
+
+    def char_fn(self, v: ArrayLike) -> FloatArray:
+        return np.sinc(self.half_width * np.asarray(v, dtype=float) / np.pi)
+
+    def sample(self, rng: np.random.Generator, size: int) -> FloatArray:
+        return rng.uniform(-self.half_width, self.half_width, size)
+
+
+@dataclass(frozen=True)
+class TriangularDensity:
+    """Triangular density on [-sqrt(6b), sqrt(6b)]: the sum of two uniforms of second moment b/2."""
+
+    b: float
+    name: str = "triangular"
+
+    def __post_init__(self) -> None:
+        require_positive("b", self.b)
+
+    @property
+    def second_moment(self) -> float:
+        return self.b
+
+    @property
+    def _u(self) -> UniformDensity:
+        return UniformDensity(self.b / 2.0)
+
+    def log_mgf(self, s: ArrayLike) -> FloatArray:
+        return 2.0 * self._u.log_mgf(s)
+
+    def dlog_mgf(self, s: ArrayLike) -> FloatArray:
+        return 2.0 * self._u.dlog_mgf(s)
+
+    def d2_ratio(self, s: ArrayLike) -> FloatArray:
+        u = self._u
+        return 2.0 * u.d2_ratio(s) + 2.0 * u.dlog_mgf(s) ** 2
+
+    def moment(self, r: int) -> float:
+        a = float(np.sqrt(6.0 * self.b))
+        return 0.0 if r % 2 else 2.0 * a**r / ((r + 1) * (r + 2))
+
+    def char_fn(self, v: ArrayLike) -> FloatArray:
+        return self._u.char_fn(v) ** 2
+
+    def sample(self, rng: np.random.Generator, size: int) -> FloatArray:
+        return self._u.sample(rng, size) + self._u.sample(rng, size)
+
+
+@dataclass(frozen=True)
+class GaussianDensity:
+    """Gaussian amplitude density N(0, b)."""
+
+    b: float
+    name: str = "Gaussian"
+
+    def __post_init__(self) -> None:
+        require_positive("b", self.b)
+
+    @property
+    def second_moment(self) -> float:
+        return self.b
+
+    def log_mgf(self, s: ArrayLike) -> FloatArray:
+        return 0.5 * self.b * np.asarray(s, dtype=float) ** 2
+
+    def dlog_mgf(self, s: ArrayLike) -> FloatArray:
+        return self.b * np.asarray(s, dtype=float)
+
+    def d2_ratio(self, s: ArrayLike) -> FloatArray:
+        s = np.asarray(s, dtype=float)
+        return self.b + (self.b * s) ** 2
+
+    def moment(self, r: int) -> float:
+        return 0.0 if r % 2 else float(special.factorial2(r - 1, exact=True)) * self.b ** (r // 2)
+
+    def char_fn(self, v: ArrayLike) -> FloatArray:
+        return np.exp(-0.5 * self.b * np.asarray(v, dtype=float) ** 2)
+
+    def sample(self, rng: np.random.Generator, size: int) -> FloatArray:
+        return rng.normal(0.0, np.sqrt(self.b), size)
+
+
+@dataclass(frozen=True)
+class LogMGFDensity:
+    """A density known only through its log-MGF; derivatives by central differences.
+
+    ``moment`` uses finite differences of the MGF at 0 (orders <= 4) and there is no sampler.
+    """
+
+    log_mgf_fn: Callable[[FloatArray], FloatArray]
+    name: str = "log-MGF"
+    step: float = 1e-4
+
+    def log_mgf(self, s: ArrayLike) -> FloatArray:
+        return np.asarray(self.log_mgf_fn(np.asarray(s, dtype=float)), dtype=float)
+
+    def dlog_mgf(self, s: ArrayLike) -> FloatArray:
+        s = np.asarray(s, dtype=float)
+        h = self.step
+        return (self.log_mgf(s + h) - self.log_mgf(s - h)) / (2 * h)
+
+    def d2_ratio(self, s: ArrayLike) -> FloatArray:
+        s = np.asarray(s, dtype=float)
+        h = self.step
+        k2 = (self.log_mgf(s + h) - 2 * self.log_mgf(s) + self.log_mgf(s - h)) / h**2
+        return k2 + self.dlog_mgf(s) ** 2
+
+    @property
+    def second_moment(self) -> float:
+        return float(self.d2_ratio(0.0))
+
+    def moment(self, r: int) -> float:
+        if r == 1:
+            return float(self.dlog_mgf(0.0))
+        if r == 2:
+            return self.second_moment
+        raise ValueError("LogMGFDensity.moment supports r in {1, 2}")
+
+
+@dataclass(frozen=True)
+class MultipleAccessNoise:
+    """The multiple-access noise sample n_i(t) for a common amplitude density (ATC-10 Sec. 3.4).
+
+    Parameters
+    ----------
+    n_aircraft : int
+        N, the number of aircraft; N - 1 of them interfere.
+    tau_over_alpha : float
+        Signature duration over repetition period; an interferer overlaps the sample with
+        probability ``q = 2 tau/alpha`` (Eq. 3.4.4).
+    density : amplitude density
+        The common C(x) of Eq. (3.3.8).
+    """
+
+    n_aircraft: int
+    tau_over_alpha: float
+    density: object
+
+    def __post_init__(self) -> None:
+        require_integer("n_aircraft", self.n_aircraft, minimum=2)
+        require_probability("2*tau_over_alpha", 2.0 * self.tau_over_alpha)
+        require_positive("tau_over_alpha", self.tau_over_alpha)
+
+    @property
+    def q(self) -> float:
+        """Overlap probability 2 tau/alpha."""
+        return 2.0 * self.tau_over_alpha
+
+    @property
+    def n_interferers(self) -> int:
+        return self.n_aircraft - 1
+
+    def _weight(self, s: ArrayLike) -> tuple[FloatArray, FloatArray]:
+        lm = self.density.log_mgf(s)
+        k1 = np.logaddexp(np.log1p(-self.q), np.log(self.q) + lm)
+        return k1, np.exp(np.log(self.q) + lm - k1)
+
+    def cgf(self, s: ArrayLike) -> FloatArray:
+        """mu(s) = ln E exp(s n) = (N-1) ln((1-q) + q M_C(s)); ATC-10 Eq. (3.4.6) at v = s/j."""
+        return self.n_interferers * self._weight(s)[0]
+
+    def cgf_d1(self, s: ArrayLike) -> FloatArray:
+        """mu'(s), the mean of the tilted noise."""
+        w = self._weight(s)[1]
+        return self.n_interferers * w * self.density.dlog_mgf(s)
+
+    def cgf_d2(self, s: ArrayLike) -> FloatArray:
+        """mu''(s) > 0, the variance of the tilted noise."""
+        w = self._weight(s)[1]
+        r1 = self.density.dlog_mgf(s)
+        return self.n_interferers * (w * self.density.d2_ratio(s) - (w * r1) ** 2)
+
+    def char_fn(self, v: ArrayLike) -> NDArray[np.complex128]:
+        """M_i(v) = E exp(j v n), ATC-10 Eq. (3.4.6)."""
+        phi = np.asarray(self.density.char_fn(v), dtype=complex)
+        return np.exp(self.n_interferers * np.log((1.0 - self.q) + self.q * phi))
+
+    @property
+    def mean(self) -> float:
+        """E(n), Eq. (3.4.9)."""
+        return self.n_interferers * self.q * self.density.moment(1)
+
+    @property
+    def power(self) -> float:
+        """E(n^2), Eq. (3.4.10); equals (N-1) q b for a symmetric C (Eq. 3.4.13)."""
+        m1 = self.density.moment(1)
+        m2 = self.density.moment(2)
+        k = self.n_interferers
+        return k * self.q * m2 + (self.q * k * m1) ** 2 - self.q**2 * k * m1**2
+
+    @property
+    def gaussian_limit_variance(self) -> float:
+        """N (2 tau/alpha) b: the variance of Theorem 3.1's limit (uses N, as the paper does)."""
+        return self.n_aircraft * self.q * self.density.moment(2)
+
+    def cumulants(self, order: int = 6) -> FloatArray:
+        """Cumulants kappa_1..kappa_order of n: (N-1) times the cumulants of Q (Eqs. E.2-E.6)."""
+        raw = [self.q * self.density.moment(r) for r in range(1, order + 1)]
+        return self.n_interferers * cumulants_from_raw_moments(raw)
+
+
+def cumulants_from_raw_moments(raw: ArrayLike) -> FloatArray:
+    """Cumulants from raw moments m_1..m_n by the standard recursion.
+
+    >>> cumulants_from_raw_moments([0.0, 1.0, 0.0, 3.0]).round(12).tolist()  # N(0,1)
+    [0.0, 1.0, 0.0, 0.0]
+    """
+    m = np.asarray(raw, dtype=float)
+    k = np.zeros_like(m)
+    for n in range(1, m.size + 1):
+        acc = m[n - 1]
+        for j in range(1, n):
+            acc -= comb(n - 1, j - 1) * k[j - 1] * m[n - j - 1]
+        k[n - 1] = acc
+    return k
+
+
+def _edgeworth_coefficients(noise: MultipleAccessNoise, use_n: bool) -> tuple[float, dict[int, float]]:
+    kap = noise.cumulants(6) / noise.n_interferers
+    nn = noise.n_aircraft if use_n else noise.n_interferers
+    var = nn * kap[1]
+    c = {3: nn * kap[2] / 6.0, 4: nn * kap[3] / 24.0, 6: nn * kap[5] / 720.0 + nn**2 * kap[2] ** 2 / 72.0}
+    return var, c
+
+
+def edgeworth_density(
+    noise: MultipleAccessNoise, n: ArrayLike, terms: int = 2, use_n: bool = True
+) -> FloatArray:
+    """The expansion (E.15): Gaussian term plus the lambda_3, lambda_4 (terms >= 2) and (jv)^6 terms.
+
+    ``terms=0`` is Theorem 3.1's Gaussian limit. ``use_n`` replaces N - 1 by N as App. E does.
+    """
+    var, c = _edgeworth_coefficients(noise, use_n)
+    sig = np.sqrt(var)
+    z = np.asarray(n, dtype=float) / sig
+    phi = np.exp(-0.5 * z**2) / np.sqrt(2 * np.pi) / sig
+    out = phi.copy()
+    orders = [3, 4, 6][: max(0, terms + 1)] if terms else []
+    for k in orders:
+        out = out + c[k] * sig ** (-k) * special.eval_hermitenorm(k, z) * phi
+    return out
+
+
+def edgeworth_tail(
+    noise: MultipleAccessNoise, t: ArrayLike, terms: int = 2, use_n: bool = True
+) -> FloatArray:
+    """P(n >= t) from the expansion (E.15) integrated term by term."""
+    var, c = _edgeworth_coefficients(noise, use_n)
+    sig = np.sqrt(var)
+    z = np.asarray(t, dtype=float) / sig
+    phi = np.exp(-0.5 * z**2) / np.sqrt(2 * np.pi)
+    out = special.ndtr(-z)
+    orders = [3, 4, 6][: max(0, terms + 1)] if terms else []
+    for k in orders:
+        out = out + c[k] * sig ** (-k) * special.eval_hermitenorm(k - 1, z) * phi
+    return out
+
+
+def sample_noise(noise: MultipleAccessNoise, n_samples: int, rng: np.random.Generator) -> FloatArray:
+    """Seeded Monte Carlo of n: K ~ Binomial(N-1, q) overlapping interferers, each drawn from C."""
+    require_integer("n_samples", n_samples, minimum=1)
+    k = rng.binomial(noise.n_interferers, noise.q, size=n_samples)
+    draws = noise.density.sample(rng, int(k.sum()))
+    owner = np.repeat(np.arange(n_samples), k)
+    return np.bincount(owner, weights=draws, minlength=n_samples)
+
+
+def _k_range(n_interferers: int, q: float, tail: float = 1e-16) -> tuple[NDArray[np.int64], FloatArray]:
+    kmax = int(stats.binom.isf(tail, n_interferers, q)) + 2
+    ks = np.arange(0, kmax + 1)
+    return ks, stats.binom.pmf(ks, n_interferers, q)
+
+
+@dataclass(frozen=True)
+class TailEstimate:
+    """Stratified Monte Carlo estimate of P(n >= t) (``upper``) and P(n <= -t) (``lower``)."""
+
+    t: FloatArray
+    upper: FloatArray
+    upper_se: FloatArray
+    lower: FloatArray
+    lower_se: FloatArray
+
+
+def stratified_tail(
+    noise: MultipleAccessNoise, t: ArrayLike, n_per_stratum: int, rng: np.random.Generator
+) -> TailEstimate:
+    """Exact ROC by Monte Carlo stratified on the number K of overlapping interferers.
+
+    The binomial weights of K are exact; for each K >= 1 the tail of a sum of K draws
+    from C is estimated from ``n_per_stratum`` seeded samples. Rare events at large K are
+    therefore resolved far below 1/(total samples).
+    """
+    t = np.atleast_1d(np.asarray(t, dtype=float))
+    ks, w = _k_range(noise.n_interferers, noise.q)
+    up = np.where(t <= 0, w[0], 0.0)
+    lo = np.where(-t >= 0, w[0], 0.0)
+    var_up = np.zeros_like(t)
+    var_lo = np.zeros_like(t)
+    for k, wk in zip(ks[1:], w[1:], strict=True):
+        s = noise.density.sample(rng, n_per_stratum * int(k)).reshape(n_per_stratum, int(k)).sum(axis=1)
+        s.sort()
+        pu = 1.0 - np.searchsorted(s, t, side="left") / n_per_stratum
+        pl = np.searchsorted(s, -t, side="right") / n_per_stratum
+        up += wk * pu
+        lo += wk * pl
+        var_up += wk**2 * pu * (1 - pu) / n_per_stratum
+        var_lo += wk**2 * pl * (1 - pl) / n_per_stratum
+    return TailEstimate(t, up, np.sqrt(var_up), lo, np.sqrt(var_lo))
+
+
+def two_point_exact_tail(amplitude: float, n_interferers: int, q: float, t: ArrayLike) -> FloatArray:
+    """Exact P(n >= t) for the two-point density +-a: sum_K Bin(K) P(a(2J - K) >= t), J ~ Bin(K, 1/2)."""
+    t = np.atleast_1d(np.asarray(t, dtype=float))
+    ks, w = _k_range(n_interferers, q)
+    out = np.zeros_like(t)
+    for k, wk in zip(ks, w, strict=True):
+        # a(2J-K) >= t  <=>  J >= (t/a + K)/2
+        jmin = np.ceil((t / amplitude + k) / 2.0 - 1e-12)
+        out += wk * stats.binom.sf(jmin - 1, k, 0.5)
+    return out
+
+
+def gaussian_mixture_exact_tail(b: float, n_interferers: int, q: float, t: ArrayLike) -> FloatArray:
+    """Exact P(n >= t) for Gaussian C = N(0, b): sum_K Bin(K) Q(t / sqrt(K b))."""
+    t = np.atleast_1d(np.asarray(t, dtype=float))
+    ks, w = _k_range(n_interferers, q)
+    out = w[0] * (t <= 0)
+    kk = ks[1:, None].astype(float)
+    out = out + (w[1:, None] * special.ndtr(-t[None, :] / np.sqrt(kk * b))).sum(axis=0)
+    return out
+
+
+def psk_amplitude_samples(
+    code_i: ArrayLike, n_events: int, rng: np.random.Generator, chunk: int = 20000
+) -> FloatArray:
+    """Samples of n_ij(t) given overlap (Eq. 3.3.7) for random PSK interferers.
+
+    Each interferer has a fresh random +-1 code of the same length L as ``code_i``,
+    rectangular chips, unit energy, a delay d uniform over (-tau, tau) relative to the
+    matched-filter peak and a uniform carrier phase. The cross-correlation at a continuous
+    delay d = (k + f) tau_c is (1-f) c_k + f c_{k+1}, with c_k the aperiodic discrete
+    cross-correlation divided by L.
+    """
+    ci = np.asarray(code_i, dtype=float).ravel()
+    L = ci.size
+    require_integer("n_events", n_events, minimum=1)
+    out = np.empty(n_events)
+    m = np.arange(L)
+    for start in range(0, n_events, chunk):
+        e = min(chunk, n_events - start)
+        d = rng.uniform(-L, L, e)  # delay in chips
+        k = np.floor(d).astype(int)
+        f = d - k
+        cj = rng.choice(np.array([-1.0, 1.0]), size=(e, L))
+        pad = np.zeros((e, 3 * L + 2))
+        pad[:, L : 2 * L] = cj
+
+        def corr(lag: NDArray[np.int64], cj_pad: FloatArray = pad) -> FloatArray:
+            idx = m[None, :] - lag[:, None] + L
+            return (np.take_along_axis(cj_pad, idx, axis=1) @ ci) / L
+
+        x = (1.0 - f) * corr(k) + f * corr(k + 1)
+        out[start : start + e] = np.cos(rng.uniform(0, 2 * np.pi, e)) * x
+    return out

@@ -1,0 +1,251 @@
+"""Bounds to the receiver operating characteristic in multiple-access noise (ATC-10 Secs. 3.5-3.8).
+
+The detector decides "signal present" when the matched-filter sample y = R + n exceeds a
+threshold theta, with R = 1 (signal at its peak) or 0. Thus
+
+    p_f = P(n >= theta),     1 - p_d = P(n < theta - 1) = P(-n > 1 - theta).
+
+All bounds take a *cumulant generating function* object with ``cgf(s)``, ``cgf_d1(s)`` and
+``cgf_d2(s)`` (e.g. :class:`navcore.detection.multiple_access.MultipleAccessNoise`) and
+return natural logarithms of probabilities, so that exponents of hundreds stay finite.
+
+* :func:`chernoff_log_tail`: ln P(S >= t) <= min_{r>=0} [mu(r) - r t]  (Eqs. 3.5.5-3.5.13),
+  with the optimum found by bracketing and Brent's method on mu'(r) = t.
+* :func:`gallager_log_tail_lower`: the tilted-Chebyshev lower bound that Eq. (3.5.14) intends,
+  as corrected: ln P(S >= t) >= -ln 2 + mu(r1) - r1 t - 2 r1 sqrt(2 mu''(r1)), where
+  mu'(r1) - sqrt(2 mu''(r1)) = t.
+* closed forms for the two-point (quasi-optimal) density, Eqs. (3.7.20)-(3.7.27);
+* the Gaussian ROC (3.8.3), its Chernoff bound (3.8.7)-(3.8.9) and Exp(N, tau/alpha, Exp_g) (3.8.16).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Protocol
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+from scipy import optimize, special
+
+from navcore._validate import require_positive
+
+__all__ = [
+    "CumulantGenerating",
+    "NegatedCGF",
+    "TailBound",
+    "chernoff_log_tail",
+    "exponent_from_gaussian_exponent",
+    "exponent_from_gaussian_exponent_large_n",
+    "gallager_log_tail_lower",
+    "gaussian_chernoff_exponent",
+    "gaussian_roc",
+    "quasi_optimal_amplitude",
+    "quasi_optimal_chernoff_parameter",
+    "quasi_optimal_exponent",
+    "quasi_optimal_exponent_approx",
+    "roc_lower_bound",
+    "roc_upper_bound",
+]
+
+FloatArray = NDArray[np.float64]
+
+
+class CumulantGenerating(Protocol):
+    def cgf(self, s: ArrayLike) -> FloatArray: ...
+    def cgf_d1(self, s: ArrayLike) -> FloatArray: ...
+    def cgf_d2(self, s: ArrayLike) -> FloatArray: ...
+
+
+@dataclass(frozen=True)
+class NegatedCGF:
+    """The CGF of -S from that of S: mu~(g) = mu(-g) (used for the p_d side, Eq. 3.5.9)."""
+
+    base: CumulantGenerating
+
+    def cgf(self, s: ArrayLike) -> FloatArray:
+        return self.base.cgf(-np.asarray(s, dtype=float))
+
+    def cgf_d1(self, s: ArrayLike) -> FloatArray:
+        return -self.base.cgf_d1(-np.asarray(s, dtype=float))
+
+    def cgf_d2(self, s: ArrayLike) -> FloatArray:
+        return self.base.cgf_d2(-np.asarray(s, dtype=float))
+
+
+@dataclass(frozen=True)
+class TailBound:
+    """A bound on ln P(S >= t) with the tilt parameter that produced it."""
+
+    log_p: float
+    parameter: float
+
+
+def _find_root_increasing(fun, target: float, r_max: float = 1e7) -> float | None:
+    """Smallest r >= 0 with fun(r) = target, by a geometric scan and Brent's method.
+
+    Returns None when fun stays below target up to r_max.
+    """
+    f0 = float(fun(0.0)) - target
+    if f0 >= 0:
+        return 0.0
+    lo, hi = 0.0, 1e-3
+    while hi <= r_max:
+        fh = float(fun(hi)) - target
+        if not np.isfinite(fh):
+            hi = 0.5 * (lo + hi)
+            if hi - lo < 1e-12:
+                return None
+            continue
+        if fh >= 0:
+            return float(optimize.brentq(lambda r: float(fun(r)) - target, lo, hi, xtol=1e-14, rtol=1e-13))
+        lo, hi = hi, 2.0 * hi
+    return None
+
+
+def chernoff_log_tail(cgf: CumulantGenerating, t: float) -> TailBound:
+    """Chernoff bound ln P(S >= t) <= mu(r*) - r* t, r* >= 0 optimal (ATC-10 Eqs. 3.5.5-3.5.7).
+
+    mu is convex, so mu(r) - r t is minimised where mu'(r) = t; for t <= E S the minimum is
+    at r = 0 (the bound is 1). If mu'(r) never reaches t the tail is empty (-inf).
+    """
+    r = _find_root_increasing(cgf.cgf_d1, float(t))
+    if r is None:
+        return TailBound(-np.inf, np.inf)
+    return TailBound(float(cgf.cgf(r)) - r * float(t), r)
+
+
+def gallager_log_tail_lower(cgf: CumulantGenerating, t: float) -> TailBound:
+    """Tilted-Chebyshev lower bound on ln P(S >= t) (Eq. 3.5.14 as corrected, erratum E3-1).
+
+    Tilt by r1 chosen so that mu'(r1) - sqrt(2 mu''(r1)) = t. Under the tilted law S has
+    mean mu'(r1) and variance mu''(r1); by Chebyshev it lies in (t, t + 2 sqrt(2 mu''))
+    with probability >= 1/2, and there the likelihood ratio is at least
+    exp(mu(r1) - r1 (t + 2 sqrt(2 mu''(r1)))).
+    """
+
+    def lhs(r: float) -> float:
+        return float(cgf.cgf_d1(r)) - np.sqrt(2.0 * float(cgf.cgf_d2(r)))
+
+    r1 = _find_root_increasing(lhs, float(t))
+    if r1 is None:
+        return TailBound(-np.inf, np.inf)
+    d2 = float(cgf.cgf_d2(r1))
+    return TailBound(-np.log(2.0) + float(cgf.cgf(r1)) - r1 * float(t) - 2.0 * r1 * np.sqrt(2.0 * d2), r1)
+
+
+def roc_upper_bound(cgf: CumulantGenerating, theta: ArrayLike) -> tuple[FloatArray, FloatArray]:
+    """Worst-case ROC (Eq. 3.5.13): (ln of the upper bound to p_f, ln of the upper bound to 1 - p_d)."""
+    th = np.atleast_1d(np.asarray(theta, dtype=float))
+    neg = NegatedCGF(cgf)
+    lpf = np.array([chernoff_log_tail(cgf, x).log_p for x in th])
+    lmiss = np.array([chernoff_log_tail(neg, 1.0 - x).log_p for x in th])
+    return lpf, lmiss
+
+
+def roc_lower_bound(cgf: CumulantGenerating, theta: ArrayLike) -> tuple[FloatArray, FloatArray]:
+    """Best-case ROC (Eq. 3.5.14 corrected): (ln lower bound to p_f, ln lower bound to 1 - p_d)."""
+    th = np.atleast_1d(np.asarray(theta, dtype=float))
+    neg = NegatedCGF(cgf)
+    lpf = np.array([gallager_log_tail_lower(cgf, x).log_p for x in th])
+    lmiss = np.array([gallager_log_tail_lower(neg, 1.0 - x).log_p for x in th])
+    return lpf, lmiss
+
+
+def quasi_optimal_amplitude(power: float, n_aircraft: int, tau_over_alpha: float) -> float:
+    """a = sqrt(p alpha / ((N-1) 2 tau)): the atoms +-a of the optimal density (Eq. 3.7.1)."""
+    require_positive("power", power)
+    return float(np.sqrt(power / ((n_aircraft - 1) * 2.0 * tau_over_alpha)))
+
+
+def quasi_optimal_chernoff_parameter(
+    theta: ArrayLike, power: float, n_aircraft: int, tau_over_alpha: float
+) -> FloatArray:
+    """Closed-form optimal rho for the two-point density (Eq. 3.7.23, with 1 - 2 tau/alpha).
+
+    Solves A sinh x - B cosh x = C with x = rho a, A = (N-1) q a, B = theta q,
+    C = theta (1 - q): x = asinh(C / sqrt(A^2 - B^2)) + atanh(B / A).
+    """
+    th = np.asarray(theta, dtype=float)
+    q = 2.0 * tau_over_alpha
+    a = quasi_optimal_amplitude(power, n_aircraft, tau_over_alpha)
+    big_a = (n_aircraft - 1) * q * a
+    big_b = th * q
+    x = np.arcsinh(th * (1.0 - q) / np.sqrt(big_a**2 - big_b**2)) + np.arctanh(big_b / big_a)
+    return x / a
+
+
+def quasi_optimal_exponent(
+    theta: ArrayLike, power: float, n_aircraft: int, tau_over_alpha: float
+) -> FloatArray:
+    """Expf = rho theta - (N-1) ln(1 - q + q cosh(rho a)) at the optimal rho (Eqs. 3.7.21, 3.7.24).
+
+    Expd is the same function of 1 - theta (Eq. 3.7.25).
+    """
+    th = np.asarray(theta, dtype=float)
+    q = 2.0 * tau_over_alpha
+    a = quasi_optimal_amplitude(power, n_aircraft, tau_over_alpha)
+    rho = quasi_optimal_chernoff_parameter(th, power, n_aircraft, tau_over_alpha)
+    x = rho * a
+    return rho * th - (n_aircraft - 1) * np.log1p(
+        2.0 * q * np.sinh(0.5 * x) ** 2
+    )  # cosh x - 1 = 2 sinh^2(x/2)
+
+
+def quasi_optimal_exponent_approx(
+    theta: ArrayLike, power: float, n_aircraft: int, tau_over_alpha: float
+) -> FloatArray:
+    """The large-N approximation (3.7.26)/(3.7.27): N for N-1, the atanh term and 1-q in the ratio dropped.
+
+    Expf ~ theta sqrt(N q / p) asinh(u) - N ln(1 - q + q sqrt(1 + u^2)), u = theta / sqrt(N q p).
+    """
+    th = np.asarray(theta, dtype=float)
+    q = 2.0 * tau_over_alpha
+    u = th / np.sqrt(n_aircraft * q * power)
+    return th * np.sqrt(n_aircraft * q / power) * np.arcsinh(u) - n_aircraft * np.log1p(
+        q * (np.sqrt(1.0 + u**2) - 1.0)
+    )
+
+
+def gaussian_roc(theta: ArrayLike, power: float) -> tuple[FloatArray, FloatArray]:
+    """ROC_g (Eq. 3.8.3) in logs: (ln p_f, ln(1 - p_d)).
+
+    p_f = Q(theta/sqrt(P)) and 1 - p_d = Q((1-theta)/sqrt(P)).
+    """
+    require_positive("power", power)
+    th = np.asarray(theta, dtype=float)
+    s = np.sqrt(power)
+    return special.log_ndtr(-th / s), special.log_ndtr(-(1.0 - th) / s)
+
+
+def gaussian_chernoff_exponent(threshold: ArrayLike, power: float) -> FloatArray:
+    """Expfg = theta^2/(2p) (Eq. 3.8.8); the optimal tilt is mu = theta/p (Eqs. 3.8.5-3.8.7)."""
+    require_positive("power", power)
+    return np.asarray(threshold, dtype=float) ** 2 / (2.0 * power)
+
+
+def exponent_from_gaussian_exponent(
+    n_aircraft: ArrayLike, tau_over_alpha: ArrayLike, exp_g: ArrayLike
+) -> FloatArray:
+    """Exp(N, tau/alpha, Exp_g) of Eq. (3.8.16) (with Exp_g/(N tau/alpha), erratum E3-9).
+
+    Exp = sqrt(4 N tau/alpha Exp_g) asinh(sqrt(u)) - N ln(1 - 2tau/alpha + (2tau/alpha) sqrt(1+u)),
+    u = Exp_g / (N tau/alpha). It is the approximate quasi-optimal exponent (3.7.26) with
+    theta eliminated through Exp_g = theta^2/(2p).
+    """
+    n = np.asarray(n_aircraft, dtype=float)
+    r = np.asarray(tau_over_alpha, dtype=float)
+    g = np.asarray(exp_g, dtype=float)
+    u = g / (n * r)
+    return np.sqrt(4.0 * n * r * g) * np.arcsinh(np.sqrt(u)) - n * np.log1p(
+        2.0 * r * (np.sqrt(1.0 + u) - 1.0)
+    )
+
+
+def exponent_from_gaussian_exponent_large_n(
+    n_aircraft: ArrayLike, tau_over_alpha: ArrayLike, exp_g: ArrayLike
+) -> FloatArray:
+    """First-order large-N expansion of (3.8.16): Exp_g - Exp_g^2 (1 - 6 tau/alpha) / (12 N tau/alpha)."""
+    n = np.asarray(n_aircraft, dtype=float)
+    r = np.asarray(tau_over_alpha, dtype=float)
+    g = np.asarray(exp_g, dtype=float)
+    return g - g**2 * (1.0 - 6.0 * r) / (12.0 * n * r)

@@ -1,0 +1,159 @@
+"""Zakai bandwidth and the multiple-access noise power of PSK signatures (ATC-10 Sec. 3.9, App. F).
+
+The Zakai bandwidth of a unit-energy signal with autocorrelation R(t) is
+W = [2 integral R(t)^2 dt]^{-1} (Theorem 3.3). For rectangular-chip PSK sequences R is
+piecewise linear between multiples of the chip duration, so the integral is exact from the
+chip-lag samples R_k: integral R^2 = tau_c sum_k (R_k^2 + R_k R_{k+1} + R_{k+1}^2) / 3.
+
+Appendix F shows E(n^2) = (1/(2 alpha)) sum_j integral R_ii R_jj (Eq. F.6) and, by
+Cauchy-Schwarz, E(n^2) <= sum_j 1/(4 alpha sqrt(W_i W_j)) with equality when all
+autocorrelations are equal, giving (N-1)/(4 alpha W) (Eq. 3.9.2).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from navcore._validate import require_integer, require_positive
+
+__all__ = [
+    "alternating_sidelobe_autocorrelation",
+    "aperiodic_autocorrelation",
+    "barker_code",
+    "cross_term_noise_power",
+    "equal_autocorrelation_noise_power",
+    "m_sequence",
+    "paper_psk_zakai_bandwidth",
+    "piecewise_linear_energy",
+    "piecewise_linear_inner",
+    "psk_zakai_bandwidth",
+    "zakai_bandwidth",
+    "zakai_noise_power_bound",
+]
+
+FloatArray = NDArray[np.float64]
+
+_BARKER = {
+    2: (1, -1),
+    3: (1, 1, -1),
+    4: (1, 1, -1, 1),
+    5: (1, 1, 1, -1, 1),
+    7: (1, 1, 1, -1, -1, 1, -1),
+    11: (1, 1, 1, -1, -1, -1, 1, -1, -1, 1, -1),
+    13: (1, 1, 1, 1, 1, -1, -1, 1, 1, -1, 1, -1, 1),
+}
+# Primitive polynomial taps (Fibonacci LFSR, x^n + ... ), degree -> feedback taps (1-based).
+_MSEQ_TAPS = {3: (3, 2), 4: (4, 3), 5: (5, 3), 6: (6, 5), 7: (7, 6), 8: (8, 6, 5, 4), 9: (9, 5), 10: (10, 7)}
+
+
+def barker_code(length: int) -> FloatArray:
+    """The Barker code of the given length (2, 3, 4, 5, 7, 11 or 13) as +-1."""
+    if length not in _BARKER:
+        raise ValueError(f"length must be one of {sorted(_BARKER)}, got {length}")
+    return np.array(_BARKER[length], dtype=float)
+
+
+def m_sequence(degree: int) -> FloatArray:
+    """A maximal-length sequence of length 2^degree - 1 (degree 3..10) as +-1, from a Fibonacci LFSR."""
+    if degree not in _MSEQ_TAPS:
+        raise ValueError(f"degree must be one of {sorted(_MSEQ_TAPS)}, got {degree}")
+    taps = _MSEQ_TAPS[degree]
+    state = [1] * degree
+    out = []
+    for _ in range(2**degree - 1):
+        out.append(state[-1])
+        fb = 0
+        for t in taps:
+            fb ^= state[t - 1]
+        state = [fb, *state[:-1]]
+    return 1.0 - 2.0 * np.array(out, dtype=float)
+
+
+def aperiodic_autocorrelation(code: ArrayLike) -> FloatArray:
+    """R_k / R_0 of a +-1 (or real) chip sequence at lags -(L-1)..(L-1), unit-energy normalised."""
+    c = np.asarray(code, dtype=float).ravel()
+    if c.size < 1:
+        raise ValueError("code must be non-empty")
+    r = np.correlate(c, c, mode="full")
+    return r / r[c.size - 1]
+
+
+def _closed(samples: ArrayLike) -> FloatArray:
+    s = np.asarray(samples, dtype=float).ravel()
+    return np.concatenate([[0.0], s, [0.0]])
+
+
+def piecewise_linear_energy(samples: ArrayLike, spacing: float) -> float:
+    """Exact integral of R(t)^2 for R linear between samples ``spacing`` apart and zero outside."""
+    require_positive("spacing", spacing)
+    r = _closed(samples)
+    return float(spacing * np.sum(r[:-1] ** 2 + r[:-1] * r[1:] + r[1:] ** 2) / 3.0)
+
+
+def piecewise_linear_inner(f: ArrayLike, g: ArrayLike, spacing: float) -> float:
+    """Exact integral of f(t) g(t) for two piecewise-linear functions on the same sample grid."""
+    require_positive("spacing", spacing)
+    a, b = _closed(f), _closed(g)
+    if a.shape != b.shape:
+        raise ValueError("f and g must have the same number of samples")
+    return float(
+        spacing * np.sum(2 * a[:-1] * b[:-1] + a[:-1] * b[1:] + a[1:] * b[:-1] + 2 * a[1:] * b[1:]) / 6.0
+    )
+
+
+def zakai_bandwidth(samples: ArrayLike, spacing: float) -> float:
+    """W = [2 integral R^2]^{-1} (Theorem 3.3) for a piecewise-linear, unit-peak autocorrelation."""
+    return 1.0 / (2.0 * piecewise_linear_energy(samples, spacing))
+
+
+def psk_zakai_bandwidth(code: ArrayLike, chip_s: float) -> float:
+    """Zakai bandwidth (Hz) of a rectangular-chip PSK signature with the given chip sequence."""
+    return zakai_bandwidth(aperiodic_autocorrelation(code), chip_s)
+
+
+def alternating_sidelobe_autocorrelation(
+    n_chips: int, n_sidelobes: int, first_sign: float = 1.0
+) -> FloatArray:
+    """Idealised 'good' PSK autocorrelation (cf. Fig. 3.11): peak 1, sidelobes +-1/L alternating in sign.
+
+    Returns the samples at lags -n_sidelobes..n_sidelobes (chip units).
+    """
+    require_integer("n_chips", n_chips, minimum=1)
+    require_integer("n_sidelobes", n_sidelobes, minimum=0)
+    k = np.arange(1, n_sidelobes + 1)
+    side = first_sign * (-1.0) ** (k - 1) / n_chips
+    return np.concatenate([side[::-1], [1.0], side])
+
+
+def paper_psk_zakai_bandwidth(chip_s: float, tau_s: float) -> float:
+    """The printed W = [(4/3) tau_c (1 + 2 tau_c/tau + 2 (tau_c/tau)^2)]^{-1} (Sec. 3.9)."""
+    r = chip_s / tau_s
+    return 1.0 / (4.0 / 3.0 * chip_s * (1.0 + 2.0 * r + 2.0 * r**2))
+
+
+def equal_autocorrelation_noise_power(n_aircraft: int, alpha_s: float, zakai_w_hz: float) -> float:
+    """E(n^2) = (N - 1)/(4 alpha W) when all signatures share one autocorrelation (Eq. 3.9.2)."""
+    require_positive("alpha_s", alpha_s)
+    require_positive("zakai_w_hz", zakai_w_hz)
+    return (n_aircraft - 1) / (4.0 * alpha_s * zakai_w_hz)
+
+
+def zakai_noise_power_bound(w_i_hz: float, w_j_hz: ArrayLike, alpha_s: float) -> float:
+    """Theorem 3.3 (corrected, erratum E3-6): E(n^2) <= sum_j 1/(4 alpha sqrt(W_i W_j))."""
+    wj = np.asarray(w_j_hz, dtype=float)
+    return float(np.sum(1.0 / (4.0 * alpha_s * np.sqrt(w_i_hz * wj))))
+
+
+def cross_term_noise_power(
+    code_i: ArrayLike, codes_j: list[ArrayLike], chip_s: float, alpha_s: float
+) -> float:
+    """E(n^2) = (1/(2 alpha)) sum_j integral R_ii R_jj (Eq. F.6), exact for rectangular chips."""
+    ri = aperiodic_autocorrelation(code_i)
+    total = 0.0
+    for cj in codes_j:
+        rj = aperiodic_autocorrelation(cj)
+        if rj.size != ri.size:
+            raise ValueError("all codes must have the same length")
+        total += piecewise_linear_inner(ri, rj, chip_s)
+    return total / (2.0 * alpha_s)
