@@ -39,6 +39,7 @@ PARTS = {
 def subset_toc(paper: str) -> str:
     return (
         "format: jb-book\nroot: intro\nparts:\n"
+        "  - caption: Introduction\n    chapters:\n      - file: about\n"
         f"  - caption: {PARTS[paper]}\n    chapters:\n      - file: {paper}/index\n"
         f"        sections:\n          - glob: {paper}/[0-9]*\n"
         "  - caption: Verification\n    chapters:\n      - file: ledger\n      - file: errata\n"
