@@ -1,0 +1,100 @@
+r"""Initial alignment of a low-cost IMU: accelerometer levelling and heading from GPS velocity.
+
+Levelling (KZL Eqs. 2-3). A level, unaccelerated IMU measures the specific force
+:math:`f^b = R_n^b [0, 0, -g]^T`, i.e. :math:`f^b = -g[-\sin\theta,\ \sin\phi\cos\theta,\
+\cos\phi\cos\theta]`. Solving for roll and pitch gives
+
+.. math::
+
+    \theta = \arctan\frac{f_x}{\sqrt{f_y^2 + f_z^2}},\qquad
+    \phi = \operatorname{atan2}(-f_y, -f_z).
+
+The paper prints :math:`\theta = \arctan(-a_x/\sqrt{a_y^2+a_z^2})` and
+:math:`\phi = \operatorname{atan2}(a_y, a_z)`, which is the same pair for
+:math:`a = -f` (the *reaction* to gravity, "gravity measured by the accelerometer"), not for
+the specific force of Eq. 8. :func:`levelling` implements both conventions so the book can
+show the difference.
+
+Heading (KZL Eq. 4): the track angle :math:`\psi = \operatorname{atan2}(v_E, v_N)`; equal to
+the heading only without crab or sideslip.
+
+References
+----------
+.. [1] S. Knedlik, J. Zhou, O. Loffeld (2009), Eqs. (2)-(4).
+.. [2] P. D. Groves (2013), Sec. 5.6.2 (levelling).
+"""
+
+from __future__ import annotations
+
+from typing import Literal
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from navcore._validate import as_finite_array
+
+__all__ = ["heading_from_velocity", "levelling", "levelling_as_printed"]
+
+Array = NDArray[np.float64]
+
+
+def levelling(
+    f_b: ArrayLike, convention: Literal["specific-force", "gravity-reaction"] = "specific-force"
+) -> tuple[Array, Array]:
+    """Roll and pitch (rad) from an averaged accelerometer vector (KZL Eqs. 2-3, corrected).
+
+    Parameters
+    ----------
+    f_b : (..., 3) array
+        Averaged accelerometer output in body axes (m/s^2).
+    convention : {"specific-force", "gravity-reaction"}
+        ``"specific-force"``: ``f_b`` is the specific force of KZL Eq. 8 (level at rest:
+        ``[0, 0, -g]``). ``"gravity-reaction"``: ``f_b`` is its negative, the convention
+        under which the printed Eqs. 2-3 are right.
+
+    Returns
+    -------
+    roll, pitch : arrays
+        Bank (roll) ``phi`` and elevation (pitch) ``theta`` in radians.
+
+    Examples
+    --------
+    >>> roll, pitch = levelling([0.0, 0.0, -9.81])
+    >>> float(roll), float(pitch)
+    (0.0, 0.0)
+    """
+    f = as_finite_array("f_b", f_b)
+    if f.shape[-1] != 3:
+        raise ValueError(f"f_b must have shape (..., 3), got {f.shape}")
+    if convention == "gravity-reaction":
+        f = -f
+    elif convention != "specific-force":
+        raise ValueError(f"convention must be 'specific-force' or 'gravity-reaction', got {convention!r}")
+    fx, fy, fz = f[..., 0], f[..., 1], f[..., 2]
+    pitch = np.arctan(fx / np.hypot(fy, fz))
+    roll = np.arctan2(-fy, -fz)
+    return roll, pitch
+
+
+def levelling_as_printed(a_b: ArrayLike) -> tuple[Array, Array]:
+    """KZL Eqs. 2-3 exactly as printed: ``theta = arctan(-a_x/sqrt(a_y^2+a_z^2))``,
+    ``phi = atan2(a_y, a_z)``. Correct only if ``a_b`` is minus the specific force."""
+    a = as_finite_array("a_b", a_b)
+    ax, ay, az = a[..., 0], a[..., 1], a[..., 2]
+    return np.arctan2(ay, az), np.arctan(-ax / np.hypot(ay, az))
+
+
+def heading_from_velocity(v_ned: ArrayLike) -> Array:
+    """Track angle ``atan2(v_E, v_N)`` (rad) from a NED velocity (KZL Eq. 4).
+
+    Examples
+    --------
+    >>> round(float(np.degrees(heading_from_velocity([0.0, 110.0, 0.0]))), 9)
+    90.0
+    """
+    v = as_finite_array("v_ned", v_ned)
+    if v.shape[-1] != 3:
+        raise ValueError(f"v_ned must have shape (..., 3), got {v.shape}")
+    if np.any(np.hypot(v[..., 0], v[..., 1]) == 0):
+        raise ValueError("v_ned must have a non-zero horizontal component to define a heading")
+    return np.arctan2(v[..., 1], v[..., 0])

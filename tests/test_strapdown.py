@@ -1,0 +1,138 @@
+"""Strapdown mechanization (KZL Eqs. 7-9) and alignment (Eqs. 2-4).
+
+Oracles: closed forms (rest stays at rest; constant body rate gives q0 ⊗ exp(w t / 2);
+constant specific force gives x = v0 t + a t^2 / 2), scipy's Rotation for the attitude, and
+the geometric definition of roll/pitch for levelling.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from scipy.spatial.transform import Rotation
+
+from navcore import frames as fr
+from navcore.inertial.alignment import heading_from_velocity, levelling, levelling_as_printed
+from navcore.inertial.strapdown import (
+    MechanizationTerms,
+    NavState,
+    dcm_from_quat_batch,
+    earth_rate_ned,
+    strapdown_step,
+)
+from navcore.units import DEG, G0, OMEGA_EARTH
+
+
+def _run(state, w, f, dt, n, terms=None):
+    terms = terms or MechanizationTerms()
+    for _ in range(n):
+        state = strapdown_step(state, w, f, dt, terms)
+    return state
+
+
+def _level_state(n_runs, yaw=0.0, vel=(0.0, 0.0, 0.0)):
+    q = np.tile(fr.quat_from_euler(0.0, 0.0, yaw), (n_runs, 1))
+    return NavState(np.zeros((n_runs, 3)), np.tile(vel, (n_runs, 1)).astype(float), q)
+
+
+def test_stationary_stays_put():
+    """Oracle: a level IMU at rest measuring f = [0,0,-g] and w = 0 never moves."""
+    s0 = _level_state(3, yaw=np.pi / 2)
+    s = _run(s0, np.zeros((3, 3)), np.tile([0, 0, -G0], (3, 1)), 0.01, 1000)
+    np.testing.assert_allclose(s.pos, 0.0, atol=1e-12)
+    np.testing.assert_allclose(s.vel, 0.0, atol=1e-12)
+    np.testing.assert_allclose(s.quat, s0.quat, atol=1e-14)
+
+
+def test_tilted_stationary_stays_put():
+    """Oracle: the specific force of gravity reaction R_n^b [0,0,-g] balances gravity at any attitude."""
+    C = fr.dcm_from_euler(0.2, -0.1, 1.0)
+    f = C.T @ np.array([0, 0, -G0])
+    s0 = NavState(np.zeros((1, 3)), np.zeros((1, 3)), fr.quat_from_euler(0.2, -0.1, 1.0)[None])
+    s = _run(s0, np.zeros((1, 3)), f[None], 0.01, 500)
+    np.testing.assert_allclose(s.vel, 0.0, atol=1e-11)
+
+
+def test_constant_rate_closed_form_attitude():
+    """Oracle: scipy Rotation — constant body rate w for t gives R0 * exp([w t x])."""
+    w = np.array([0.1, -0.2, 0.3])
+    s0 = _level_state(1, yaw=0.4)
+    s = _run(s0, w[None], np.array([[0, 0, -G0]]), 0.01, 300)
+    expected = Rotation.from_euler("ZYX", [0.4, 0, 0]) * Rotation.from_rotvec(w * 3.0)
+    np.testing.assert_allclose(dcm_from_quat_batch(s.quat)[0], expected.as_matrix(), atol=1e-12)
+
+
+def test_quaternion_norm_preserved():
+    """Oracle: |q| = 1 (the update multiplies unit quaternions and renormalises)."""
+    rng = np.random.default_rng(1)
+    s = _level_state(4)
+    for _ in range(200):
+        s = strapdown_step(s, rng.normal(size=(4, 3)), rng.normal(size=(4, 3)), 0.01)
+    np.testing.assert_allclose(np.linalg.norm(s.quat, axis=-1), 1.0, atol=1e-14)
+
+
+def test_constant_specific_force_closed_form():
+    """Oracle: x = v0 t + (R f + g) t^2 / 2 for a constant attitude and specific force."""
+    f = np.array([[0.5, -0.2, -G0]])
+    s0 = _level_state(1, yaw=0.0, vel=(1.0, 2.0, 0.0))
+    s = _run(s0, np.zeros((1, 3)), f, 0.01, 100)
+    a = np.array([0.5, -0.2, 0.0])
+    np.testing.assert_allclose(s.vel[0], np.array([1.0, 2.0, 0.0]) + a, atol=1e-12)
+    np.testing.assert_allclose(s.pos[0], np.array([1.0, 2.0, 0.0]) + 0.5 * a, atol=1e-12)
+
+
+def test_earth_rate_switch_rotates_nav_frame():
+    """Oracle: with only Earth rate on and w_ib = w_ie^b, the attitude w.r.t. NED stays constant."""
+    lat = 51 * DEG
+    terms = MechanizationTerms(earth_rate=True, lat0=lat, h0=0.0)
+    w_b = earth_rate_ned(lat)  # level, north-pointing: body = NED
+    s0 = _level_state(1)
+    s = _run(s0, w_b[None], np.array([[0, 0, -G0]]), 1.0, 100, terms)
+    np.testing.assert_allclose(s.quat, s0.quat, atol=1e-12)
+    assert np.linalg.norm(earth_rate_ned(lat)) == pytest.approx(OMEGA_EARTH)
+
+
+def test_coriolis_switch_magnitude():
+    """Oracle: closed form (2 w_ie + w_en) x v for 110 m/s east at 51 N after one short step."""
+    lat = 51 * DEG
+    terms = MechanizationTerms(coriolis=True, lat0=lat, h0=3000.0)
+    s0 = _level_state(1, yaw=np.pi / 2, vel=(0.0, 110.0, 0.0))
+    s = strapdown_step(s0, np.zeros((1, 3)), np.array([[0, 0, -G0]]), 1e-3, terms)
+    acc = (s.vel[0] - s0.vel[0]) / 1e-3
+    _, R_E = fr.radii_of_curvature(lat)
+    w_en = np.array([110 / (R_E + 3000), 0.0, -110 * np.tan(lat) / (R_E + 3000)])
+    expected = -np.cross(2 * earth_rate_ned(lat) + w_en, [0, 110, 0])
+    np.testing.assert_allclose(acc, expected, rtol=1e-9)
+
+
+def test_levelling_round_trip_specific_force():
+    """Oracle: f^b = R_n^b [0,0,-g] for random roll/pitch; levelling recovers them."""
+    rng = np.random.default_rng(2)
+    for _ in range(50):
+        roll, pitch, yaw = rng.uniform(-1.4, 1.4), rng.uniform(-1.4, 1.4), rng.uniform(-3, 3)
+        f = fr.dcm_from_euler(roll, pitch, yaw).T @ [0, 0, -G0]
+        r, p = levelling(f)
+        assert float(r) == pytest.approx(roll, abs=1e-12)
+        assert float(p) == pytest.approx(pitch, abs=1e-12)
+        r2, p2 = levelling_as_printed(-f)
+        assert float(r2) == pytest.approx(roll, abs=1e-12) and float(p2) == pytest.approx(pitch, abs=1e-12)
+
+
+def test_printed_levelling_fails_for_specific_force():
+    """Oracle: a level aircraft (f = [0,0,-g]) has roll 0; the printed Eq. 3 gives 180 deg."""
+    roll, pitch = levelling_as_printed([0.0, 0.0, -G0])
+    assert abs(float(roll)) == pytest.approx(np.pi)
+    assert float(pitch) == 0.0
+
+
+def test_heading_from_velocity():
+    """Oracle: east flight has heading 90 deg, north-west 315 deg (-45)."""
+    assert float(heading_from_velocity([0, 110, 0])) == pytest.approx(np.pi / 2)
+    assert float(heading_from_velocity([1, -1, 0])) == pytest.approx(-np.pi / 4)
+    with pytest.raises(ValueError, match="v_ned"):
+        heading_from_velocity([0, 0, 1])
+
+
+def test_levelling_rejects_bad_convention():
+    with pytest.raises(ValueError, match="convention"):
+        levelling([0, 0, -1], convention="down")
