@@ -1,0 +1,86 @@
+"""Parabolic-dish antenna relations for jammer hardware (ATC-10 Table 1.1).
+
+The gain of a dish of diameter ``D`` with aperture efficiency ``eta`` at wavelength
+``lambda = c / f`` is ``G = eta (pi D / lambda)**2``; its half-power beamwidth is about
+``k lambda / D`` degrees with ``k = 70`` (a common rule for a tapered illumination). The
+radiated power needed for an effective radiated power ``ERP`` is ``ERP / G``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from navcore import units
+from navcore._validate import as_finite_array, require_positive
+
+__all__ = [
+    "beamwidth_from_gain_deg",
+    "dish_beamwidth_deg",
+    "dish_diameter",
+    "dish_gain",
+    "rf_power_dbw",
+]
+
+FloatArray = NDArray[np.float64]
+
+
+def _wavelength(frequency_hz: float) -> float:
+    require_positive("frequency_hz", frequency_hz)
+    return units.C / frequency_hz
+
+
+def _efficiency(efficiency: float) -> float:
+    if not 0.0 < efficiency <= 1.0:
+        raise ValueError("efficiency must lie in (0, 1]")
+    return efficiency
+
+
+def dish_gain(diameter_m: ArrayLike, frequency_hz: float, efficiency: float) -> FloatArray:
+    """Linear gain ``eta (pi D / lambda)**2`` of a parabolic dish.
+
+    Examples
+    --------
+    >>> round(float(10 * np.log10(dish_gain(2 * 0.3048, 1.6e9, 0.6))), 2)
+    17.97
+    """
+    d = as_finite_array("diameter_m", diameter_m)
+    if np.any(d <= 0):
+        raise ValueError("diameter_m must be > 0")
+    return _efficiency(efficiency) * (np.pi * d / _wavelength(frequency_hz)) ** 2
+
+
+def dish_diameter(gain: ArrayLike, frequency_hz: float, efficiency: float) -> FloatArray:
+    """Diameter ``(lambda / pi) sqrt(G / eta)`` in metres giving linear gain ``G``."""
+    g = as_finite_array("gain", gain)
+    if np.any(g <= 0):
+        raise ValueError("gain must be > 0")
+    return _wavelength(frequency_hz) / np.pi * np.sqrt(g / _efficiency(efficiency))
+
+
+def dish_beamwidth_deg(diameter_m: ArrayLike, frequency_hz: float, factor_deg: float = 70.0) -> FloatArray:
+    """Half-power beamwidth ``factor_deg * lambda / D`` in degrees (70 by default)."""
+    d = as_finite_array("diameter_m", diameter_m)
+    if np.any(d <= 0):
+        raise ValueError("diameter_m must be > 0")
+    require_positive("factor_deg", factor_deg)
+    return factor_deg * _wavelength(frequency_hz) / d
+
+
+def beamwidth_from_gain_deg(gain: ArrayLike) -> FloatArray:
+    """Pencil-beam rule ``theta = sqrt(27000 / G)`` degrees (``G ~ 27000 / theta**2``)."""
+    g = as_finite_array("gain", gain)
+    if np.any(g <= 0):
+        raise ValueError("gain must be > 0")
+    return np.sqrt(27000.0 / g)
+
+
+def rf_power_dbw(erp_dbw: ArrayLike, gain_db: ArrayLike) -> FloatArray:
+    """Transmitter rf power ``ERP - G`` in dBW for an ERP in dBW and an antenna gain in dB.
+
+    Examples
+    --------
+    >>> float(rf_power_dbw(33.0, 18.0))
+    15.0
+    """
+    return as_finite_array("erp_dbw", erp_dbw) - as_finite_array("gain_db", gain_db)

@@ -1,0 +1,167 @@
+"""Tests of navcore.detection.jamming against independent oracles (mpmath, scipy, brute force)."""
+
+from __future__ import annotations
+
+import math
+
+import mpmath
+import numpy as np
+import pytest
+from scipy import optimize, stats
+
+from navcore.detection import jamming as jm
+from navcore.detection.neyman_pearson import detection_index_from_jammer_ratio
+
+GEOM = jm.SurveillanceGeometry()
+
+
+def _mp_log_one_minus_power(p: mpmath.mpf, n: float) -> mpmath.mpf:
+    return mpmath.log(-mpmath.expm1(n * mpmath.log1p(-p)))
+
+
+def _mp_log_pf(x_db: float, p_d: float) -> mpmath.mpf:
+    d = mpmath.mpf(float(detection_index_from_jammer_ratio(10 ** (x_db / 10))))
+    z = d - mpmath.sqrt(2) * mpmath.erfinv(2 * mpmath.mpf(p_d) - 1)
+    return mpmath.log(mpmath.erfc(z / mpmath.sqrt(2)) / 2)
+
+
+def test_sample_counts() -> None:
+    """Oracle: hand arithmetic, 2 B alpha = 2e7, 4 B beta = 9.6e5, (8/3) B v alpha / c = 23.8586."""
+    assert GEOM.samples_per_period == 2e7
+    assert GEOM.samples_per_delay_window == pytest.approx(9.6e5, rel=1e-15)
+    assert GEOM.samples_per_track_window == pytest.approx(8 / 3 * 1e7 * (1 / 6) / 186282.397, rel=1e-6)
+    assert GEOM.energy_bandwidth_dbw == pytest.approx(50.0, abs=1e-12)
+
+
+@pytest.mark.parametrize("log10_p", [-0.5, -3, -6, -10, -17, -20, -40, -60, -200])
+@pytest.mark.parametrize("n", [2e7, 9.6e5, 23.8586])
+def test_log_one_minus_power_matches_mpmath(log10_p: float, n: float) -> None:
+    """Oracle: ln(1 - (1-p)^n) at 80 digits with mpmath."""
+    with mpmath.workdps(80):
+        expected = float(_mp_log_one_minus_power(mpmath.mpf(10) ** log10_p, n))
+    got = float(jm.log_one_minus_power(log10_p * math.log(10), n))
+    assert got == pytest.approx(expected, rel=1e-12, abs=1e-15)
+
+
+@pytest.mark.parametrize("a", [1e-300, 1e-20, 1e-5, 0.5, math.log(2), 1.0, 30.0, 800.0])
+def test_log1mexp_matches_mpmath(a: float) -> None:
+    """Oracle: mpmath log(1 - exp(-a)) at 50 digits."""
+    with mpmath.workdps(50):
+        expected = float(mpmath.log(-mpmath.expm1(-mpmath.mpf(a))))
+    assert float(jm.log1mexp(a)) == pytest.approx(expected, rel=1e-14, abs=1e-300)
+
+
+@pytest.mark.parametrize(("t", "q"), [(0.05, 0.3), (0.2, 0.5), (0.01, 0.0069), (0.4, 0.3), (0.3, 0.9)])
+def test_exponent_closed_form_matches_numeric_maximisation(t: float, q: float) -> None:
+    """Oracle: bounded numerical maximisation over nu >= 0 of nu(1-t) - ln((1-q) e^nu + q)."""
+
+    def neg(nu: float) -> float:
+        return -(nu * (1 - t) - (nu + math.log((1 - q) + q * math.exp(-nu))))
+
+    res = optimize.minimize_scalar(neg, bounds=(0.0, 60.0), method="bounded", options={"xatol": 1e-12})
+    numeric = max(-res.fun, 0.0)
+    assert float(jm.list_rule_exponent(t, q)) == pytest.approx(numeric, abs=1e-10)
+    if t < q:
+        assert float(jm.list_rule_optimal_nu(t, q)) == pytest.approx(res.x, rel=1e-4)
+
+
+def test_t_zero_bound_is_exact_binomial() -> None:
+    """Oracle: scipy.stats.binom, P(at least one of K lists non-empty) = 1 - (1-q)^K."""
+    for k in (1, 10, 100, 1000):
+        for p_d in (0.2145, 0.5, 0.84):
+            q = p_d**4
+            exact = stats.binom.sf(0, k, q)
+            assert float(jm.detection_lower_bound(p_d, k, 0.0)) == pytest.approx(exact, rel=1e-12)
+
+
+def test_bound_below_exact_for_positive_t() -> None:
+    """Oracle: the exact binomial probability of the (A.11) rule dominates the Chernoff bound."""
+    for k in (10, 100, 1000):
+        for t in (0.05, 0.1, 0.3):
+            for q in np.linspace(0.05, 0.95, 19):
+                bound = float(jm.detection_lower_bound(q**0.25, k, t))
+                assert bound <= float(jm.list_rule_detection_probability(q, k, t)) + 1e-15
+
+
+def test_design_point_inversion() -> None:
+    """Oracle: the catalog-independent closed form at t = 0 and the forward bound for t > 0."""
+    assert jm.filter_detection_probability_for_bound(0.88, 10) == pytest.approx(
+        (1 - 0.12**0.1) ** 0.25, rel=1e-13
+    )
+    for k, t in ((10, 0.1), (100, 0.05), (1000, 0.2)):
+        p_d = jm.filter_detection_probability_for_bound(0.999, k, t)
+        assert float(jm.detection_lower_bound(p_d, k, t)) == pytest.approx(0.999, rel=1e-10)
+
+
+def test_literal_a9_rule_differs() -> None:
+    """Oracle: binomial probabilities of the two readings at K=10, q=0.3, t=0.2."""
+    assert float(jm.list_rule_false_alarm_probability(0.3, 10, 0.2)) == pytest.approx(
+        stats.binom.cdf(2, 10, 0.7), rel=1e-12
+    )
+    assert float(jm.list_rule_detection_probability(0.3, 10, 0.2)) == pytest.approx(
+        stats.binom.sf(2, 10, 0.3)
+    )
+
+
+@pytest.mark.parametrize(
+    ("x_db", "k", "p_d"), [(-10.0, 1000, 0.288), (0.0, 1000, 0.288), (-18.0, 1, 0.9685), (-8.0, 10, 0.66)]
+)
+def test_ambiguous_bound_matches_mpmath(x_db: float, k: int, p_d: float) -> None:
+    """Oracle: the whole N_ADL product (K-1 factors of G) evaluated directly at 60 digits."""
+    with mpmath.workdps(60):
+        pf = mpmath.exp(_mp_log_pf(x_db, p_d))
+        q = mpmath.mpf(p_d) ** 4
+        pdl = 1 - (1 - q) ** k
+        f = _mp_log_one_minus_power(pf, 2e7) + 3 * _mp_log_one_minus_power(pf, 9.6e5)
+        g = _mp_log_one_minus_power(pf, 2e7) + 3 * _mp_log_one_minus_power(pf, GEOM.samples_per_track_window)
+        expected = float(mpmath.log(mpmath.mpf("0.05") * pdl) + (k - 1) * g + f)
+    got = float(jm.log_ambiguous_detection_bound(10 ** (x_db / 10), p_d, k))
+    assert got == pytest.approx(expected, rel=1e-11)
+
+
+@pytest.mark.parametrize("k", [1, 10, 100, 1000])
+def test_sweep_over_60_db_is_finite_and_monotone(k: int) -> None:
+    """Oracle: properties. No NaN, no -inf, no underflow over x from -40 to +20 dB, and monotone."""
+    x = 10 ** (np.linspace(-40.0, 20.0, 601) / 10)
+    for p_dl in (0.88, 0.999):
+        p_d = jm.filter_detection_probability_for_bound(p_dl, k)
+        with np.errstate(all="raise"):
+            fl = jm.log_false_location_bound(x, p_d, k)
+            adl = jm.log_ambiguous_detection_bound(x, p_d, k)
+        for arr in (fl, adl):
+            assert np.all(np.isfinite(arr))
+            assert np.all(np.diff(arr) >= -1e-12)
+        assert np.all(np.exp(fl[-1]) > 0)
+
+
+def test_bounds_approach_ceiling_as_jamming_grows() -> None:
+    """Oracle: p_f -> p_d as J -> inf, so the bounds approach their J = inf values."""
+    for k, p_dl in ((1, 0.88), (100, 0.999), (1000, 0.999)):
+        p_d = jm.filter_detection_probability_for_bound(p_dl, k)
+        for fn, ceil in (
+            (jm.log_false_location_bound, jm.log_false_location_ceiling),
+            (jm.log_ambiguous_detection_bound, jm.log_ambiguous_detection_ceiling),
+        ):
+            assert float(fn(1e12, p_d, k)) == pytest.approx(ceil(p_d, k), abs=1e-4)
+    assert math.exp(jm.log_false_location_ceiling(0.9, 1)) == pytest.approx(0.9, rel=1e-15)
+
+
+def test_threshold_root_and_infinite_case() -> None:
+    """Oracle: re-evaluating the bound at the returned root gives the level; ceiling < level gives inf."""
+    p_d = jm.filter_detection_probability_for_bound(0.88, 100)
+    x_db = jm.jammer_ratio_threshold_db("ambiguous", 0.01, p_d, 100)
+    assert math.exp(float(jm.log_ambiguous_detection_bound(10 ** (x_db / 10), p_d, 100))) == pytest.approx(
+        0.01, rel=1e-8
+    )
+    p_d = jm.filter_detection_probability_for_bound(0.98, 1000)
+    assert jm.jammer_ratio_threshold_db("ambiguous", 0.01, p_d, 1000) == math.inf
+    assert jm.jammer_ratio_threshold_db("false", 0.9, 0.9, 1) == math.inf
+    with pytest.raises(ValueError):
+        jm.jammer_ratio_threshold_db("other", 0.01, 0.9, 1)
+    with pytest.raises(ValueError):
+        jm.detection_lower_bound(0.5, 0)
+
+
+def test_erp_conversion() -> None:
+    """Oracle: 10 mJ x 10 MHz = 1e5 W = 50 dBW."""
+    assert float(jm.jammer_erp_dbw(0.0)) == pytest.approx(50.0, abs=1e-12)
