@@ -11,8 +11,22 @@ from __future__ import annotations
 from dataclasses import dataclass, field, fields
 
 from navcore._validate import require_nonnegative
+from navcore.units import (
+    ARCSEC,
+    DEG_PER_H,
+    DEG_PER_H_PER_SQRT_HZ,
+    MICRO_G,
+    MICRO_G_PER_SQRT_HZ,
+    PPM,
+)
 
-__all__ = ["ImuSpec"]
+__all__ = [
+    "ImuSpec",
+    "angle_random_walk_deg_per_sqrt_h",
+    "imu_spec_from_published",
+    "noise_only",
+    "velocity_random_walk_m_per_s_per_sqrt_h",
+]
 
 
 @dataclass(frozen=True)
@@ -70,3 +84,86 @@ class ImuSpec:
             if f.name not in ("name", "source", "extra")
         }
         return ImuSpec(name=name or f"{self.name} x {factor:g}", source=self.source, **values)
+
+
+def angle_random_walk_deg_per_sqrt_h(root_psd_deg_per_h_per_sqrt_hz: float) -> float:
+    """Convert a gyro rate-noise root PSD in deg/h/sqrt(Hz) to angle random walk in deg/sqrt(h).
+
+    ``1 deg/h/sqrt(Hz) = 1 deg/h * sqrt(s) = (1/60) deg/sqrt(h)``.
+
+    Examples
+    --------
+    >>> round(angle_random_walk_deg_per_sqrt_h(4.7), 4)
+    0.0783
+    """
+    require_nonnegative("root_psd_deg_per_h_per_sqrt_hz", root_psd_deg_per_h_per_sqrt_hz)
+    return root_psd_deg_per_h_per_sqrt_hz / 60.0
+
+
+def velocity_random_walk_m_per_s_per_sqrt_h(root_psd_micro_g_per_sqrt_hz: float) -> float:
+    """Convert an accelerometer noise root PSD in micro-g/sqrt(Hz) to velocity random walk in m/s/sqrt(h).
+
+    ``1 micro-g/sqrt(Hz) = 9.80665e-6 m/s/sqrt(s) = 9.80665e-6 * 60 m/s/sqrt(h)``.
+
+    Examples
+    --------
+    >>> round(velocity_random_walk_m_per_s_per_sqrt_h(56.0), 4)
+    0.0330
+    """
+    require_nonnegative("root_psd_micro_g_per_sqrt_hz", root_psd_micro_g_per_sqrt_hz)
+    return root_psd_micro_g_per_sqrt_hz * MICRO_G * 60.0
+
+
+def imu_spec_from_published(
+    name: str,
+    *,
+    accel_bias_micro_g: float,
+    accel_scale_factor_ppm: float,
+    accel_misalignment_arcsec: float,
+    accel_random_walk_micro_g_per_sqrt_hz: float,
+    gyro_bias_deg_per_h: float,
+    gyro_scale_factor_ppm: float,
+    gyro_misalignment_arcsec: float,
+    gyro_random_walk_deg_per_h_per_sqrt_hz: float,
+    source: str = "",
+) -> ImuSpec:
+    """Build an :class:`ImuSpec` from the units in which IMU tables are usually printed.
+
+    Parameters are 1-sigma values in micro-g, ppm, arcsec, micro-g/sqrt(Hz), deg/h and
+    deg/h/sqrt(Hz); the result is in SI (see :class:`ImuSpec`).
+
+    Examples
+    --------
+    >>> s = imu_spec_from_published("x", accel_bias_micro_g=100, accel_scale_factor_ppm=0,
+    ...     accel_misalignment_arcsec=0, accel_random_walk_micro_g_per_sqrt_hz=0,
+    ...     gyro_bias_deg_per_h=0.01, gyro_scale_factor_ppm=0, gyro_misalignment_arcsec=0,
+    ...     gyro_random_walk_deg_per_h_per_sqrt_hz=0)
+    >>> round(s.accel_bias, 8), round(s.gyro_bias * 180 / 3.141592653589793 * 3600, 6)
+    (0.00098067, 0.01)
+    """
+    return ImuSpec(
+        name=name,
+        gyro_bias=gyro_bias_deg_per_h * DEG_PER_H,
+        gyro_scale_factor=gyro_scale_factor_ppm * PPM,
+        gyro_misalignment=gyro_misalignment_arcsec * ARCSEC,
+        gyro_random_walk=gyro_random_walk_deg_per_h_per_sqrt_hz * DEG_PER_H_PER_SQRT_HZ,
+        accel_bias=accel_bias_micro_g * MICRO_G,
+        accel_scale_factor=accel_scale_factor_ppm * PPM,
+        accel_misalignment=accel_misalignment_arcsec * ARCSEC,
+        accel_random_walk=accel_random_walk_micro_g_per_sqrt_hz * MICRO_G_PER_SQRT_HZ,
+        source=source,
+    )
+
+
+def noise_only(spec: ImuSpec) -> ImuSpec:
+    """The spec with every bias-type error removed, keeping only the two random walks.
+
+    This is the "perfectly calibrated" instrument: what remains after GPS has estimated
+    every bias, scale factor and misalignment exactly.
+    """
+    return ImuSpec(
+        name=f"{spec.name} (noise only)",
+        gyro_random_walk=spec.gyro_random_walk,
+        accel_random_walk=spec.accel_random_walk,
+        source=spec.source,
+    )

@@ -1,0 +1,475 @@
+r"""INS error-state dynamics in a local-level (NED) frame, psi-angle form.
+
+State blocks (any subset, in any order, named as in :mod:`navcore.gnss.architectures`):
+
+=======================  ====  ================================================================
+block                    size  meaning
+=======================  ====  ================================================================
+``position``             3     NED position error (m)
+``velocity``             3     velocity error in the computed frame (m/s)
+``misalignment``         3     psi angle: computed-frame attitude error (rad)
+``gyro drift``           3     gyro bias, random constant (rad/s)
+``gyro scale factor``    3     (-)
+``gyro misalignment``    3     small-angle input-axis misalignment of the gyro triad (rad)
+``accel bias``           3     (m/s^2)
+``accel scale factor``   3     (-)
+``accel misalignment``   3     small-angle input-axis misalignment of the accelerometers (rad)
+``gravity``              3     gravity anomaly, first-order Gauss-Markov (m/s^2)
+``altimeter bias``       1     barometric altimeter bias, first-order Gauss-Markov (m)
+``clock bias``           1     user clock bias (m)
+``clock drift``          1     user clock drift (m/s)
+``clock g-sensitivity``  1     clock frequency sensitivity to specific force (m/s per g)
+``pseudorange bias``     n     one random-constant bias per receiver channel (m)
+``range-rate bias``      n     one random-constant bias per receiver channel (m/s)
+``doppler bias``         3     Doppler ground-speed sensor bias, body axes (m/s)
+``doppler scale factor`` 3     (-)
+``doppler misalignment`` 3     boresight misalignment (rad)
+=======================  ====  ================================================================
+
+Dynamics (psi-angle form, Benson 1975):
+
+.. math::
+
+    \begin{aligned}
+    \delta\dot r &= \delta v - \omega_{en}\times\delta r\\
+    \delta\dot v &= -(2\omega_{ie}+\omega_{en})\times\delta v - \psi\times f^n
+        + \tfrac{g}{R}\,\mathrm{diag}(-1,-1,2)\,\delta r + C^n_b\,\delta f^b + \delta g\\
+    \dot\psi &= -(\omega_{ie}+\omega_{en})\times\psi - C^n_b\,\delta\omega^b_{ib}\\
+    \delta f^b &= b_a + \mathrm{diag}(f^b)\,s_a + [f^b\times]\,\mu_a + w_a,\qquad
+    \delta\omega^b_{ib} = b_g + \mathrm{diag}(\omega^b_{ib})\,s_g + [\omega^b_{ib}\times]\,\mu_g + w_g
+    \end{aligned}
+
+The horizontal channels oscillate at the Schuler frequency :math:`\sqrt{g/R}` (84.4-min
+period) and the psi angle rotates with Earth and transport rate; the vertical channel is
+unstable (:math:`+2g/R`) and must be aided (barometer). A first-order Gauss-Markov
+process characterised by a standard deviation and a *distance* constant :math:`d` (SP Table
+2.4) has the time constant :math:`\tau = d/|v|` at ground speed :math:`|v|`: rate
+:math:`\beta = |v|/d` and driving PSD :math:`2\sigma^2\beta`, so its variance stays
+:math:`\sigma^2`. The clock bias integrates the drift plus the g-sensitive frequency error
+:math:`k_g\,|f|/g`; its drift is a random walk.
+
+References
+----------
+.. [1] D. O. Benson, "A Comparison of Two Approaches to Pure-Inertial and Doppler-Inertial
+   Error Analysis", IEEE Trans. AES-11(4), 447-455 (1975) (psi-angle form).
+.. [2] G. T. Schmidt and R. E. Phillips, NATO RTO-EN-SET-116, Sec. 2.3 and Tables 2.2-2.5.
+.. [3] R. G. Brown and P. Y. C. Hwang, Introduction to Random Signals and Applied Kalman
+   Filtering, 4th ed. (2012), Sec. 9.3 (clock model) and 2.9 (Gauss-Markov processes).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from navcore._validate import require_nonnegative, require_positive
+from navcore.estimation.layout import StateBlock, StateLayout
+from navcore.inertial.imu import ImuSpec
+from navcore.units import G0, OMEGA_EARTH, WGS84_A
+
+__all__ = [
+    "SCHULER_RADIUS_M",
+    "ClockModel",
+    "ErrorSources",
+    "GaussMarkov",
+    "earth_rate_ned",
+    "error_dynamics",
+    "gauss_markov_rate",
+    "gyrocompass_alignment",
+    "initial_covariance",
+    "ins_error_layout",
+    "process_noise_psd",
+    "schuler_frequency",
+    "schuler_period",
+    "skew_stack",
+    "transport_rate_ned",
+]
+
+Array = NDArray[np.float64]
+
+#: Earth radius used for the Schuler loop (m): the WGS-84 equatorial radius.
+SCHULER_RADIUS_M = WGS84_A
+
+
+def schuler_frequency(g: float = G0, radius: float = SCHULER_RADIUS_M) -> float:
+    """Schuler angular frequency ``sqrt(g / R)`` (rad/s).
+
+    Examples
+    --------
+    >>> round(2 * np.pi / schuler_frequency() / 60, 2)
+    84.45
+    """
+    require_positive("g", g)
+    require_positive("radius", radius)
+    return float(np.sqrt(g / radius))
+
+
+def schuler_period(g: float = G0, radius: float = SCHULER_RADIUS_M) -> float:
+    """Schuler period ``2 pi sqrt(R / g)`` (s)."""
+    return 2 * np.pi / schuler_frequency(g, radius)
+
+
+@dataclass(frozen=True)
+class GaussMarkov:
+    """First-order Gauss-Markov process: 1-sigma and a distance constant (m).
+
+    ``distance_constant_m = inf`` makes a random constant.
+    """
+
+    sigma: float
+    distance_constant_m: float
+
+    def __post_init__(self) -> None:
+        require_nonnegative("GaussMarkov.sigma", self.sigma)
+        require_positive("GaussMarkov.distance_constant_m", self.distance_constant_m)
+
+
+def gauss_markov_rate(distance_constant_m: float, speed_mps: float) -> float:
+    """Inverse time constant ``beta = |v| / d`` (1/s) of a distance-correlated process."""
+    require_nonnegative("speed_mps", speed_mps)
+    require_positive("distance_constant_m", distance_constant_m)
+    return float(speed_mps / distance_constant_m)
+
+
+@dataclass(frozen=True)
+class ClockModel:
+    """Receiver clock: initial sigmas and the two-state random-process PSDs.
+
+    Attributes
+    ----------
+    bias_sigma : float
+        Initial clock-bias 1-sigma (m).
+    drift_sigma : float
+        Initial clock-drift 1-sigma (m/s).
+    g_sensitivity_sigma : float
+        1-sigma g-sensitivity of the frequency (m/s per g).
+    bias_psd : float
+        White frequency-noise PSD driving the bias (m^2/s).
+    drift_psd : float
+        Random-walk frequency PSD driving the drift (m^2/s^3).
+    """
+
+    bias_sigma: float
+    drift_sigma: float
+    g_sensitivity_sigma: float = 0.0
+    bias_psd: float = 0.0
+    drift_psd: float = 0.0
+
+    def __post_init__(self) -> None:
+        for name in ("bias_sigma", "drift_sigma", "g_sensitivity_sigma", "bias_psd", "drift_psd"):
+            require_nonnegative(f"ClockModel.{name}", getattr(self, name))
+
+
+@dataclass(frozen=True)
+class ErrorSources:
+    """Everything the error model needs besides the layout.
+
+    Attributes
+    ----------
+    imu : ImuSpec
+        Inertial instrument errors (biases and scale factors are random constants).
+    gravity : GaussMarkov or None
+        Gravity-anomaly process per axis (m/s^2).
+    altimeter : GaussMarkov or None
+        Barometric altimeter bias (m).
+    clock : ClockModel or None
+    pseudorange_bias_sigma, range_rate_bias_sigma : float
+        Per-channel constant biases (m, m/s).
+    doppler_bias, doppler_scale_factor : (3,) arrays
+        Doppler sensor 1-sigma per body axis (m/s, -).
+    doppler_misalignment : float
+        Doppler boresight misalignment 1-sigma per axis (rad).
+    """
+
+    imu: ImuSpec
+    gravity: GaussMarkov | None = None
+    altimeter: GaussMarkov | None = None
+    clock: ClockModel | None = None
+    pseudorange_bias_sigma: float = 0.0
+    range_rate_bias_sigma: float = 0.0
+    doppler_bias: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    doppler_scale_factor: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    doppler_misalignment: float = 0.0
+
+
+_UNITS = {
+    "position": "m",
+    "velocity": "m/s",
+    "misalignment": "rad",
+    "gyro drift": "rad/s",
+    "gyro scale factor": "-",
+    "gyro misalignment": "rad",
+    "accel bias": "m/s^2",
+    "accel scale factor": "-",
+    "accel misalignment": "rad",
+    "gravity": "m/s^2",
+    "altimeter bias": "m",
+    "clock bias": "m",
+    "clock drift": "m/s",
+    "clock g-sensitivity": "m/s per g",
+    "pseudorange bias": "m",
+    "range-rate bias": "m/s",
+    "doppler bias": "m/s",
+    "doppler scale factor": "-",
+    "doppler misalignment": "rad",
+}
+
+
+def ins_error_layout(*names: str, channels: int = 4, name: str = "") -> StateLayout:
+    """A layout of the named error-state blocks (sizes from the table in the module docstring).
+
+    Examples
+    --------
+    >>> ins_error_layout("position", "velocity", "misalignment").size
+    9
+    >>> ins_error_layout("position", "pseudorange bias", channels=5).size
+    8
+    """
+    blocks = []
+    for n in names:
+        if n not in _UNITS:
+            raise ValueError(f"names must be among {sorted(_UNITS)}, got {n!r}")
+        size = (
+            channels
+            if n in ("pseudorange bias", "range-rate bias")
+            else (1 if n in ("altimeter bias", "clock bias", "clock drift", "clock g-sensitivity") else 3)
+        )
+        blocks.append(StateBlock(n, size, _UNITS[n]))
+    return StateLayout(tuple(blocks), name)
+
+
+def skew_stack(v: ArrayLike) -> Array:
+    """Skew-symmetric cross-product matrices of vectors ``(..., 3) -> (..., 3, 3)``."""
+    v = np.asarray(v, dtype=float)
+    z = np.zeros(v.shape[:-1])
+    x, y, w = v[..., 0], v[..., 1], v[..., 2]
+    return np.stack([np.stack([z, -w, y], -1), np.stack([w, z, -x], -1), np.stack([-y, x, z], -1)], -2)
+
+
+def earth_rate_ned(lat: ArrayLike) -> Array:
+    """Earth rate in NED at latitude ``lat`` (rad): ``Omega [cos L, 0, -sin L]``."""
+    lat = np.asarray(lat, dtype=float)
+    return OMEGA_EARTH * np.stack([np.cos(lat), np.zeros_like(lat), -np.sin(lat)], -1)
+
+
+def transport_rate_ned(v_ned: ArrayLike, lat: ArrayLike, h: ArrayLike = 0.0) -> Array:
+    """Transport rate ``[v_E, -v_N, -v_E tan L] / (R + h)`` (rad/s), spherical Earth."""
+    v = np.asarray(v_ned, dtype=float)
+    lat = np.asarray(lat, dtype=float)
+    r = SCHULER_RADIUS_M + np.asarray(h, dtype=float)
+    return np.stack([v[..., 1], -v[..., 0], -v[..., 1] * np.tan(lat)], -1) / r[..., None]
+
+
+def error_dynamics(
+    layout: StateLayout,
+    *,
+    f_ned: ArrayLike,
+    C_bn: ArrayLike,
+    omega_ib_b: ArrayLike = (0.0, 0.0, 0.0),
+    v_ned: ArrayLike = (0.0, 0.0, 0.0),
+    lat: float = 0.0,
+    h: float = 0.0,
+    sources: ErrorSources | None = None,
+    g: float = G0,
+    vertical_channel: bool = True,
+) -> Array:
+    """Continuous error-dynamics matrix ``F`` for one flight condition.
+
+    Parameters
+    ----------
+    layout : StateLayout
+        Blocks named as in :func:`ins_error_layout` (must contain position, velocity and
+        misalignment).
+    f_ned : (3,) array
+        Specific force in NED (m/s^2); ``(0, 0, -g)`` at rest.
+    C_bn : (3, 3) array
+        Body-to-NED direction cosine matrix.
+    omega_ib_b : (3,) array
+        Body angular rate with respect to inertial space, body axes (rad/s).
+    v_ned : (3,) array
+        Ground velocity (m/s) for the transport rate, Coriolis and Gauss-Markov rates.
+    lat, h : float
+        Latitude (rad) and height (m).
+    sources : ErrorSources, optional
+        Supplies the Gauss-Markov distance constants (ignored if absent).
+    g : float
+        Gravity magnitude (m/s^2).
+    vertical_channel : bool
+        ``False`` freezes the vertical position and velocity errors (rows and columns
+        zeroed): the horizontal-only model of an unaided INS whose vertical channel is
+        slaved to an external height reference that carries no horizontal information.
+
+    Returns
+    -------
+    F : (n, n) array
+    """
+    n = layout.size
+    F = np.zeros((n, n))
+    names = set(layout.names)
+    for req in ("position", "velocity", "misalignment"):
+        if req not in names:
+            raise ValueError(f"layout must contain block {req!r}")
+    f = np.asarray(f_ned, dtype=float)
+    C = np.asarray(C_bn, dtype=float)
+    w_ib = np.asarray(omega_ib_b, dtype=float)
+    v = np.asarray(v_ned, dtype=float)
+    f_b = C.T @ f
+    w_ie = earth_rate_ned(lat)
+    w_en = transport_rate_ned(v, lat, h)
+    R = SCHULER_RADIUS_M + h
+    sl = layout.slice
+    p, vv, a = sl("position"), sl("velocity"), sl("misalignment")
+    F[p, vv] = np.eye(3)
+    F[p, p] = -skew_stack(w_en)
+    F[vv, vv] = -skew_stack(2 * w_ie + w_en)
+    F[vv, a] = skew_stack(f)  # -psi x f = f x psi
+    F[vv, p] = (g / R) * np.diag([-1.0, -1.0, 2.0])
+    F[a, a] = -skew_stack(w_ie + w_en)
+    couplings = {
+        "accel bias": (vv, C),
+        "accel scale factor": (vv, C @ np.diag(f_b)),
+        "accel misalignment": (vv, C @ skew_stack(f_b)),
+        "gyro drift": (a, -C),
+        "gyro scale factor": (a, -C @ np.diag(w_ib)),
+        "gyro misalignment": (a, -C @ skew_stack(w_ib)),
+    }
+    for block, (rows, M) in couplings.items():
+        if block in names:
+            F[rows, sl(block)] = M
+    speed = float(np.linalg.norm(v))
+    if "gravity" in names:
+        F[vv, sl("gravity")] = np.eye(3)
+        if sources is not None and sources.gravity is not None:
+            beta = gauss_markov_rate(sources.gravity.distance_constant_m, speed)
+            F[sl("gravity"), sl("gravity")] = -beta * np.eye(3)
+    if "altimeter bias" in names and sources is not None and sources.altimeter is not None:
+        beta = gauss_markov_rate(sources.altimeter.distance_constant_m, speed)
+        F[sl("altimeter bias"), sl("altimeter bias")] = -beta
+    if "clock bias" in names and "clock drift" in names:
+        F[sl("clock bias"), sl("clock drift")] = 1.0
+    if "clock bias" in names and "clock g-sensitivity" in names:
+        F[sl("clock bias"), sl("clock g-sensitivity")] = np.linalg.norm(f) / G0
+    if not vertical_channel:
+        for i in (p.start + 2, vv.start + 2):
+            F[i, :] = 0.0
+            F[:, i] = 0.0
+    return F
+
+
+def process_noise_psd(layout: StateLayout, sources: ErrorSources, *, speed_mps: float = 0.0) -> Array:
+    """Diagonal state-space noise PSD ``G Q G^T`` for :func:`error_dynamics`.
+
+    Velocity gets the accelerometer white noise (``accel_random_walk^2``), the psi angle the
+    gyro white noise (``gyro_random_walk^2``); Gauss-Markov blocks get ``2 sigma^2 beta``;
+    the clock bias and drift their PSDs.
+    """
+    q = np.zeros(layout.size)
+    names = layout.names
+    imu = sources.imu
+    q[layout.slice("velocity")] = imu.accel_random_walk**2
+    q[layout.slice("misalignment")] = imu.gyro_random_walk**2
+    if "gravity" in names and sources.gravity is not None:
+        beta = gauss_markov_rate(sources.gravity.distance_constant_m, speed_mps)
+        q[layout.slice("gravity")] = 2 * sources.gravity.sigma**2 * beta
+    if "altimeter bias" in names and sources.altimeter is not None:
+        beta = gauss_markov_rate(sources.altimeter.distance_constant_m, speed_mps)
+        q[layout.slice("altimeter bias")] = 2 * sources.altimeter.sigma**2 * beta
+    if sources.clock is not None:
+        if "clock bias" in names:
+            q[layout.slice("clock bias")] = sources.clock.bias_psd
+        if "clock drift" in names:
+            q[layout.slice("clock drift")] = sources.clock.drift_psd
+    return np.diag(q)
+
+
+def initial_covariance(
+    layout: StateLayout,
+    sources: ErrorSources,
+    *,
+    position_sigma: tuple[float, float, float] = (0.0, 0.0, 0.0),
+    velocity_sigma: tuple[float, float, float] = (0.0, 0.0, 0.0),
+    attitude_sigma: tuple[float, float, float] = (0.0, 0.0, 0.0),
+) -> Array:
+    """Diagonal initial covariance: navigation errors as given, sensor states at their 1-sigma.
+
+    Use :func:`navcore.inertial.error_dynamics.gyrocompass_alignment` afterwards to replace
+    the attitude block by the instrument-dependent, correlated gyrocompass errors.
+    """
+    s = np.zeros(layout.size)
+    imu = sources.imu
+    values: dict[str, object] = {
+        "position": position_sigma,
+        "velocity": velocity_sigma,
+        "misalignment": attitude_sigma,
+        "gyro drift": imu.gyro_bias,
+        "gyro scale factor": imu.gyro_scale_factor,
+        "gyro misalignment": imu.gyro_misalignment,
+        "accel bias": imu.accel_bias,
+        "accel scale factor": imu.accel_scale_factor,
+        "accel misalignment": imu.accel_misalignment,
+        "gravity": sources.gravity.sigma if sources.gravity else 0.0,
+        "altimeter bias": sources.altimeter.sigma if sources.altimeter else 0.0,
+        "clock bias": sources.clock.bias_sigma if sources.clock else 0.0,
+        "clock drift": sources.clock.drift_sigma if sources.clock else 0.0,
+        "clock g-sensitivity": sources.clock.g_sensitivity_sigma if sources.clock else 0.0,
+        "pseudorange bias": sources.pseudorange_bias_sigma,
+        "range-rate bias": sources.range_rate_bias_sigma,
+        "doppler bias": sources.doppler_bias,
+        "doppler scale factor": sources.doppler_scale_factor,
+        "doppler misalignment": sources.doppler_misalignment,
+    }
+    for b in layout.blocks:
+        s[layout.slice(b.name)] = values[b.name]
+    return np.diag(s**2)
+
+
+def gyrocompass_alignment(
+    P0: ArrayLike,
+    layout: StateLayout,
+    *,
+    lat: float,
+    C_bn: ArrayLike | None = None,
+    g: float = G0,
+) -> Array:
+    """Replace the attitude errors by the steady state of a stationary gyrocompass alignment.
+
+    At rest the levelled, gyrocompassed platform has zero horizontal velocity-error rate and
+    zero east psi-rate, which ties the attitude error to the sensor errors: with
+    :math:`e_f = C^n_b\\delta f^b` and :math:`e_\\omega = C^n_b\\delta\\omega^b` (linear in the
+    sensor states, rows of :func:`error_dynamics`),
+
+    .. math::
+
+        \\psi_N = e_{f,E}/g,\\quad \\psi_E = -e_{f,N}/g,\\quad
+        \\psi_D = \\frac{e_{\\omega,E} - \\Omega\\sin L\\,\\psi_N}{\\Omega\\cos L}
+
+    (Earth-rate :math:`\\Omega`, latitude :math:`L`). The returned covariance has
+    :math:`\\psi = T x_s` with the sensor covariance of ``P0`` and the correlations that make
+    the tilt cancel the accelerometer bias and the heading cancel the east gyro drift.
+    """
+    P0 = np.array(P0, dtype=float)
+    C_bn = np.eye(3) if C_bn is None else C_bn
+    F = error_dynamics(layout, f_ned=(0.0, 0.0, -g), C_bn=C_bn, lat=lat, g=g)
+    vv, a = layout.slice("velocity"), layout.slice("misalignment")
+    sensor = [b.name for b in layout.blocks if b.name.startswith(("gyro", "accel"))]
+    idx = np.concatenate([np.arange(layout.size)[layout.slice(s)] for s in sensor]) if sensor else []
+    idx = np.asarray(idx, dtype=int)
+    ef = F[vv][:, idx]  # north, east, down specific-force error per sensor state
+    ew = -F[a][:, idx]  # C_bn delta omega
+    T = np.zeros((3, idx.size))
+    T[0] = ef[1] / g
+    T[1] = -ef[0] / g
+    W = OMEGA_EARTH
+    # psi_dot_E = Omega sinL psi_N + Omega cosL psi_D - e_w,E = 0
+    T[2] = (ew[1] - W * np.sin(lat) * T[0]) / (W * np.cos(lat))
+    A = np.eye(layout.size)
+    ai = np.arange(layout.size)[a]
+    A[ai, :] = 0.0
+    A[np.ix_(ai, idx)] = T
+    P_s = P0.copy()
+    P_s[ai, :] = 0.0
+    P_s[:, ai] = 0.0
+    P = A @ P_s @ A.T
+    return 0.5 * (P + P.T)

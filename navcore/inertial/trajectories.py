@@ -1,0 +1,181 @@
+r"""Vehicle trajectories for covariance analysis, built from kinematic segments.
+
+A trajectory is sampled on a uniform time grid and gives what the error dynamics need:
+position (geodetic and local NED), ground velocity, specific force, body attitude and body
+angular rate. It is generated from a list of :class:`Segment` objects, each holding the
+rates of airspeed, heading and flight-path angle constant for its duration (point-mass
+kinematics, coordinated turns, body x-axis along the velocity, no wind, spherical Earth for
+the latitude/longitude increments):
+
+.. math::
+
+    v^n = V\,[\cos\gamma\cos\chi,\ \cos\gamma\sin\chi,\ -\sin\gamma],\qquad
+    f^n = \dot v^n - g^n,\qquad \phi = \arctan\frac{V\dot\chi\cos\gamma}{g}.
+
+That is the level of detail the SP Section 2.6 missions need: straight-and-level legs,
+climbs, dives, turns and terrain-following height changes.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from navcore._validate import require_nonnegative, require_positive
+from navcore.units import G0, WGS84_A
+
+__all__ = ["Segment", "Trajectory", "euler_to_dcm_stack", "fly", "straight_and_level"]
+
+Array = NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class Segment:
+    """A flight segment with constant rates.
+
+    Attributes
+    ----------
+    duration : float
+        Seconds.
+    speed_rate : float
+        Along-track acceleration (m/s^2).
+    turn_rate : float
+        Heading rate (rad/s), coordinated turn.
+    path_angle_rate : float
+        Flight-path-angle rate (rad/s); positive pitches up.
+    """
+
+    duration: float
+    speed_rate: float = 0.0
+    turn_rate: float = 0.0
+    path_angle_rate: float = 0.0
+
+    def __post_init__(self) -> None:
+        require_positive("Segment.duration", self.duration)
+
+
+@dataclass(frozen=True)
+class Trajectory:
+    """Trajectory samples on a uniform grid (all arrays have ``len(t)`` rows)."""
+
+    t: Array
+    lat: Array
+    lon: Array
+    h: Array
+    pos_ned: Array
+    vel_ned: Array
+    f_ned: Array
+    C_bn: Array
+    omega_nb_b: Array
+
+    @property
+    def dt(self) -> float:
+        return float(self.t[1] - self.t[0])
+
+    @property
+    def speed(self) -> Array:
+        """Ground speed magnitude (m/s)."""
+        return np.linalg.norm(self.vel_ned, axis=1)
+
+    def __len__(self) -> int:
+        return self.t.size
+
+
+def euler_to_dcm_stack(roll: Array, pitch: Array, yaw: Array) -> Array:
+    """``C_bn = Rz(yaw) Ry(pitch) Rx(roll)`` for arrays of angles: shape ``(N, 3, 3)``."""
+    cr, sr = np.cos(roll), np.sin(roll)
+    cp, sp = np.cos(pitch), np.sin(pitch)
+    cy, sy = np.cos(yaw), np.sin(yaw)
+    return np.stack(
+        [
+            np.stack([cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr], -1),
+            np.stack([sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr], -1),
+            np.stack([-sp, cp * sr, cp * cr], -1),
+        ],
+        -2,
+    )
+
+
+def fly(
+    segments: Sequence[Segment],
+    *,
+    dt: float = 1.0,
+    lat0: float = 0.0,
+    lon0: float = 0.0,
+    h0: float = 0.0,
+    speed0: float = 0.0,
+    heading0: float = 0.0,
+    path_angle0: float = 0.0,
+    g: float = G0,
+) -> Trajectory:
+    """Integrate a sequence of segments into a sampled trajectory.
+
+    Parameters
+    ----------
+    segments : sequence of Segment
+    dt : float
+        Sample interval (s).
+    lat0, lon0 : float
+        Start latitude and longitude (rad).
+    h0, speed0, heading0, path_angle0 : float
+        Start height (m), speed (m/s), heading and flight-path angle (rad).
+
+    Examples
+    --------
+    >>> tr = fly([Segment(100.0)], speed0=200.0, heading0=np.pi / 2)
+    >>> round(float(tr.pos_ned[-1, 1]), 6), len(tr)
+    (20000.0, 101)
+    """
+    require_positive("dt", dt)
+    require_nonnegative("speed0", speed0)
+    if not segments:
+        raise ValueError("segments must not be empty")
+    n_steps = [round(s.duration / dt) for s in segments]
+    rates = np.concatenate(
+        [
+            np.tile([s.speed_rate, s.turn_rate, s.path_angle_rate], (k, 1))
+            for s, k in zip(segments, n_steps, strict=True)
+        ]
+    )
+    N = rates.shape[0] + 1
+    t = np.arange(N) * dt
+    # integrate the rates exactly (piecewise-constant)
+    V = speed0 + np.concatenate([[0.0], np.cumsum(rates[:, 0]) * dt])
+    chi = heading0 + np.concatenate([[0.0], np.cumsum(rates[:, 1]) * dt])
+    gam = path_angle0 + np.concatenate([[0.0], np.cumsum(rates[:, 2]) * dt])
+    if np.any(V < 0):
+        raise ValueError("segments must not make the speed negative")
+    v = V[:, None] * np.stack([np.cos(gam) * np.cos(chi), np.cos(gam) * np.sin(chi), -np.sin(gam)], -1)
+    pos = np.concatenate([np.zeros((1, 3)), np.cumsum(0.5 * (v[1:] + v[:-1]) * dt, axis=0)])
+    acc = np.gradient(v, dt, axis=0)
+    f = acc - np.array([0.0, 0.0, g])
+    chi_dot = np.concatenate([rates[:, 1], rates[-1:, 1]])
+    roll = np.arctan2(V * chi_dot * np.cos(gam), g)
+    C = euler_to_dcm_stack(roll, gam, chi)
+    # body rate from C^T dC/dt (central differences)
+    dC = np.gradient(C, dt, axis=0)
+    Om = np.einsum("nji,njk->nik", C, dC)
+    w = np.stack([Om[:, 2, 1] - Om[:, 1, 2], Om[:, 0, 2] - Om[:, 2, 0], Om[:, 1, 0] - Om[:, 0, 1]], -1) / 2
+    h = h0 - pos[:, 2]
+    lat = lat0 + pos[:, 0] / (WGS84_A + h)
+    lon = lon0 + pos[:, 1] / ((WGS84_A + h) * np.cos(lat))
+    if np.any(h < -500.0):
+        raise ValueError("segments must not fly the vehicle below -500 m")
+    return Trajectory(t, lat, lon, h, pos, v, f, C, w)
+
+
+def straight_and_level(
+    duration: float,
+    *,
+    speed: float = 0.0,
+    heading: float = 0.0,
+    dt: float = 1.0,
+    lat0: float = 0.0,
+    lon0: float = 0.0,
+    h0: float = 0.0,
+) -> Trajectory:
+    """Constant speed, heading and height (``speed = 0`` gives a stationary vehicle)."""
+    return fly([Segment(duration)], dt=dt, lat0=lat0, lon0=lon0, h0=h0, speed0=speed, heading0=heading)
