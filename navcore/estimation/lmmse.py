@@ -1,0 +1,137 @@
+"""Linear minimum-mean-square-error estimation with a nonrandom nuisance vector.
+
+Observation model (ATC-10 Appendix H, Eq. H.1)::
+
+    z = F x + G y + n,
+
+with x random (mean mu_x, covariance P_x), y nonrandom and completely unknown, and noise n
+(mean mu_n, covariance P_n, cross-covariance P_nx with x). The estimator of y is generalised
+least squares with the "noise" ``eps = n + F x`` (Eqs. H.4-H.8); the estimator of x is the
+LMMSE estimator among linear functions of z that do not depend on y, i.e. that annihilate
+the columns of G (Eqs. H.9-H.16). With P_nx = 0 the covariances take the information forms
+(H.21)-(H.22). For a scalar x and white noise the gain is
+``gamma = sigma_x^2 / (sigma^2 + sigma_x^2 F'(I - P_G)F)`` (Eq. H.26; the printed numerator
+sigma^2 is erratum E4-10).
+
+In ATC-10 Section 4 x is the clock error tau_n (F = 1) and y the aircraft position
+(G = the satellite matrix).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from navcore._validate import as_finite_array, require_positive
+from navcore.estimation.kalman import symmetrize
+
+__all__ = [
+    "NuisanceLMMSE",
+    "lmmse_with_nuisance",
+    "lmmse_with_nuisance_information_form",
+    "scalar_nuisance_gain",
+]
+
+
+@dataclass(frozen=True)
+class NuisanceLMMSE:
+    """Gains and error covariances of the joint estimator (ATC-10 App. H).
+
+    ``x_hat = H (z - mu_eps) + mu_x`` and ``y_hat = K (z - mu_eps)`` with
+    ``mu_eps = mu_n + F mu_x``. ``P_x_err`` is (H.16) and ``P_y_err`` is (H.8).
+    """
+
+    H: np.ndarray
+    K: np.ndarray
+    P_x_err: np.ndarray
+    P_y_err: np.ndarray
+    mu_eps: np.ndarray
+    mu_x: np.ndarray
+
+    def estimate(self, z: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Return ``(x_hat, y_hat)`` for observation(s) z (shape r or n x r)."""
+        d = np.asarray(z, dtype=float) - self.mu_eps
+        return d @ self.H.T + self.mu_x, d @ self.K.T
+
+
+def lmmse_with_nuisance(
+    F: np.ndarray,
+    G: np.ndarray,
+    mu_x: np.ndarray,
+    P_x: np.ndarray,
+    mu_n: np.ndarray,
+    P_n: np.ndarray,
+    P_xn: np.ndarray | None = None,
+) -> NuisanceLMMSE:
+    """Joint estimator of random x and nonrandom y (ATC-10 Eqs. H.5-H.8, H.14-H.16).
+
+    Parameters
+    ----------
+    F, G : array (r x p), (r x q)
+        Observation matrices; G must have full column rank q (H.3).
+    mu_x, P_x : prior mean and covariance of x.
+    mu_n, P_n : noise mean and covariance.
+    P_xn : array (p x r), optional
+        Cross-covariance ``E[(x - mu_x)(n - mu_n)']`` (default 0).
+    """
+    F = np.atleast_2d(as_finite_array("F", F))
+    G = np.atleast_2d(as_finite_array("G", G))
+    r = F.shape[0]
+    if G.shape[0] != r:
+        raise ValueError(f"G must have {r} rows like F, got {G.shape}")
+    if np.linalg.matrix_rank(G) < G.shape[1]:
+        raise ValueError("G must have full column rank (Eq. H.3)")
+    mu_x = as_finite_array("mu_x", mu_x).reshape(-1)
+    mu_n = as_finite_array("mu_n", mu_n).reshape(-1)
+    P_x = np.atleast_2d(as_finite_array("P_x", P_x))
+    P_n = np.atleast_2d(as_finite_array("P_n", P_n))
+    P_xn = np.zeros((F.shape[1], r)) if P_xn is None else np.atleast_2d(as_finite_array("P_xn", P_xn))
+    P_xeps = P_x @ F.T + P_xn
+    P_eps = symmetrize(P_n + F @ P_x @ F.T + P_xn.T @ F.T + F @ P_xn)
+    if np.min(np.linalg.eigvalsh(P_eps)) <= 0:
+        raise ValueError("P_n + F P_x F' + P_nx F' + F P_xn must be positive definite (Eq. H.2)")
+    Pi = np.linalg.inv(P_eps)
+    info_y = G.T @ Pi @ G
+    K = np.linalg.solve(info_y, G.T @ Pi)  # (H.6)
+    H = P_xeps @ Pi @ (np.eye(r) - G @ K)  # (H.15)
+    middle = Pi - Pi @ G @ np.linalg.solve(info_y, G.T @ Pi)
+    P_x_err = symmetrize(P_x - P_xeps @ middle @ P_xeps.T)  # (H.16)
+    P_y_err = symmetrize(np.linalg.inv(info_y))  # (H.8)
+    return NuisanceLMMSE(H=H, K=K, P_x_err=P_x_err, P_y_err=P_y_err, mu_eps=mu_n + F @ mu_x, mu_x=mu_x)
+
+
+def lmmse_with_nuisance_information_form(
+    F: np.ndarray, G: np.ndarray, P_x: np.ndarray, P_n: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """Error covariances in information form for P_nx = 0 (ATC-10 Eqs. H.21-H.22).
+
+    ``P_x_err = [P_x^-1 + F'Pn^-1 F - F'Pn^-1 G (G'Pn^-1 G)^-1 G'Pn^-1 F]^-1`` and
+    ``P_y_err = (G'Pn^-1 G)^-1 + (G'Pn^-1 G)^-1 G'Pn^-1 F P_x_err F'Pn^-1 G (G'Pn^-1 G)^-1``.
+    """
+    F = np.atleast_2d(as_finite_array("F", F))
+    G = np.atleast_2d(as_finite_array("G", G))
+    P_x = np.atleast_2d(as_finite_array("P_x", P_x))
+    Wn = np.linalg.inv(np.atleast_2d(as_finite_array("P_n", P_n)))
+    A = np.linalg.inv(G.T @ Wn @ G)
+    B = F.T @ Wn @ G
+    P_x_err = symmetrize(np.linalg.inv(np.linalg.inv(P_x) + F.T @ Wn @ F - B @ A @ B.T))
+    P_y_err = symmetrize(A + A @ B.T @ P_x_err @ B @ A)
+    return P_x_err, P_y_err
+
+
+def scalar_nuisance_gain(f: np.ndarray, G: np.ndarray, sigma: float, sigma_x: float) -> float:
+    """Gain of the scalar-x corollary (ATC-10 Eq. H.26, corrected numerator).
+
+    ``x_hat = gamma f'(I - P_G)(z - f mu_x - mu_n) + mu_x`` with
+    ``gamma = sigma_x^2 / (sigma^2 + sigma_x^2 f'(I - P_G) f)``; the error variance is
+    ``sigma^2 gamma``. In ATC-10 Section 4 (f = 1, G = satellite matrix) this is
+    ``gamma_n = s_n / (sigma^2 + beta s_n)``.
+    """
+    require_positive("sigma", sigma)
+    require_positive("sigma_x", sigma_x)
+    f = as_finite_array("f", f).reshape(-1)
+    G = np.atleast_2d(as_finite_array("G", G))
+    coef, *_ = np.linalg.lstsq(G, f, rcond=None)
+    resid = f - G @ coef
+    return sigma_x**2 / (sigma**2 + sigma_x**2 * float(resid @ resid))
