@@ -1,0 +1,370 @@
+r"""Local velocity estimators and their federated fusion, with a correlation-free bound.
+
+Local estimators (Wu & Fowler, WF Sec. IV.B)
+--------------------------------------------
+* Navigation-data mapping (WF Eqs. (10)-(11)): a map :math:`T` from navigation states to
+  the local state, with Jacobian :math:`\boldsymbol\tau` and mapping uncertainty
+  :math:`\mathbf Q_T`: :math:`\mathbf P_{DN} = \boldsymbol\tau\mathbf P_N\boldsymbol\tau^T + \mathbf Q_T`.
+  :func:`lever_arm_velocity` is the rigid-body example
+  :math:`T = \mathbf v + \boldsymbol\omega\times\mathbf r`.
+* Accelerometer-driven Kalman filter (WF Eqs. (12)-(14)): a random walk driven by the
+  measured acceleration, :math:`\mathbf x(k+1)=\mathbf x(k)+\mathbf y_a(k)T_s+\mathbf w_a(k)T_s`,
+  updated with a local velocity measurement :math:`\mathbf y_L = \mathbf x + \mathbf v_L`.
+  The innovation is :math:`\mathbf y_L - \hat{\mathbf x}` (WF prints :math:`\mathbf y_a`).
+* GPS-Doppler update (WF Eqs. (15)-(17)): one Kalman update of the accelerometer prior.
+
+Fusion (WF Sec. IV.C)
+---------------------
+* :func:`federated_fusion`: :math:`\mathbf P_D^{-1}=\sum_i\mathbf P_i^{-1}`,
+  :math:`\hat{\mathbf x}_D=\mathbf P_D\sum_i\mathbf P_i^{-1}\hat{\mathbf x}_i` (WF Eqs. (18)-(19)),
+  with an outage expressed as infinite covariance (zero information).
+* :func:`fused_error_covariance`: the true covariance given the joint covariance of the
+  local errors (WF Eq. (20)).
+* :func:`federated_covariance_bound` and :func:`minkowski_trace_bound`: the bound of the
+  theorem (WF Eqs. (21)-(23)), which needs only the local covariances. Any weights
+  :math:`k_i > 0` with :math:`\sum_i 1/k_i = 1` give a valid matrix bound; WF Eq. (22) and the
+  remark's choice are such weights.
+
+Everything is general: any state dimension, any number of local estimators.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+from scipy.linalg import solve_discrete_are
+
+from navcore._validate import as_finite_array, require_positive, require_symmetric_psd
+from navcore.estimation.kalman import KalmanUpdate, kf_predict, kf_update, symmetrize
+from navcore.estimation.riccati import ScalarSteadyState, scalar_riccati_steady_state
+from navcore.frames import skew
+
+__all__ = [
+    "accelerometer_predict",
+    "accelerometer_steady_state",
+    "accelerometer_steady_state_isotropic",
+    "feasible_weights",
+    "federated_covariance_bound",
+    "federated_fusion",
+    "fused_error_covariance",
+    "gps_doppler_covariance",
+    "gps_doppler_update",
+    "lever_arm_velocity",
+    "local_velocity_update",
+    "minkowski_trace_bound",
+    "navigation_mapped_covariance",
+    "optimal_weights",
+]
+
+Array = NDArray[np.float64]
+
+
+# --------------------------------------------------------------------------- Eqs. (10)-(11)
+def lever_arm_velocity(
+    velocity: ArrayLike, angular_rate: ArrayLike, lever_arm: ArrayLike
+) -> tuple[Array, Array]:
+    r"""Rigid-body map from navigation states to aperture velocity and its Jacobian (WF Eq. (10)).
+
+    ``T(x_N) = v + omega x r`` with ``x_N = [v, omega]`` (m/s, rad/s) and lever arm ``r`` (m),
+    all in one frame.
+
+    Returns
+    -------
+    v_aperture : (3,) array
+        Mapped velocity, m/s.
+    tau : (3, 6) array
+        :math:`\partial T/\partial\mathbf x_N = [\mathbf I,\; -[\mathbf r\times]]`.
+    """
+    v = as_finite_array("velocity", velocity, ndim=1)
+    w = as_finite_array("angular_rate", angular_rate, ndim=1)
+    r = as_finite_array("lever_arm", lever_arm, ndim=1)
+    return v + np.cross(w, r), np.hstack([np.eye(3), -skew(r)])
+
+
+def navigation_mapped_covariance(tau: ArrayLike, P_N: ArrayLike, Q_T: ArrayLike) -> Array:
+    r"""Local-state covariance from navigation data (WF Eq. (11)).
+
+    :math:`\mathbf P_{DN}=\boldsymbol\tau\mathbf P_N\boldsymbol\tau^T+\mathbf Q_T`.
+
+    Assumes the mapping uncertainty :math:`\mathbf w_T` is independent of the navigation error.
+    """
+    tau = as_finite_array("tau", tau, ndim=2)
+    P_N = require_symmetric_psd("P_N", P_N)
+    Q_T = require_symmetric_psd("Q_T", Q_T)
+    if P_N.shape[0] != tau.shape[1] or Q_T.shape[0] != tau.shape[0]:
+        raise ValueError(f"shapes must agree: tau {tau.shape}, P_N {P_N.shape}, Q_T {Q_T.shape}")
+    return symmetrize(tau @ P_N @ tau.T + Q_T)
+
+
+# --------------------------------------------------------------------------- Eqs. (12)-(14)
+def accelerometer_predict(
+    x: ArrayLike, P: ArrayLike, accel: ArrayLike, Q_a: ArrayLike, Ts: float
+) -> tuple[Array, Array]:
+    """Time update of the accelerometer-integration filter (WF Eqs. (13)-(14), first lines).
+
+    ``x- = x + y_a Ts`` and ``P- = P + Q_a Ts^2``; ``accel`` in m/s^2, ``Q_a`` in (m/s^2)^2.
+    """
+    require_positive("Ts", Ts)
+    x = as_finite_array("x", x, ndim=1)
+    a = as_finite_array("accel", accel, ndim=1)
+    Q_a = require_symmetric_psd("Q_a", Q_a)
+    x_pred, P_pred = kf_predict(x, P, np.eye(x.size), Q_a * Ts**2)
+    return x_pred + a * Ts, P_pred
+
+
+def local_velocity_update(x: ArrayLike, P: ArrayLike, y_L: ArrayLike, R_L: ArrayLike) -> KalmanUpdate:
+    """Measurement update with a direct local velocity measurement (WF Eq. (13), corrected).
+
+    The innovation is ``y_L - x-`` (a velocity); WF Eq. (13) prints ``y_a - x-``. The posterior
+    information is ``P-^-1 + R_L^-1`` (WF Eq. (14), second line).
+    """
+    x = as_finite_array("x", x, ndim=1)
+    return kf_update(x, P, y_L, np.eye(x.size), R_L)
+
+
+def accelerometer_steady_state_isotropic(sigma_a: float, Ts: float, sigma_L: float) -> ScalarSteadyState:
+    """Per-axis steady state of WF Eq. (14) for ``Q_a = sigma_a^2 I``, ``R_L = sigma_L^2 I``.
+
+    Parameters
+    ----------
+    sigma_a : float
+        Accelerometer noise standard deviation, m/s^2.
+    Ts : float
+        Update interval, s.
+    sigma_L : float
+        Local velocity measurement standard deviation, m/s.
+
+    Returns
+    -------
+    ScalarSteadyState
+        ``prior`` = P(k/k-1), ``posterior`` = P(k/k) in (m/s)^2, and the gain. For
+        ``sigma_a Ts << sigma_L`` the posterior is close to ``sigma_a Ts sigma_L``.
+
+    Examples
+    --------
+    >>> ss = accelerometer_steady_state_isotropic(1e-3, 0.02, 0.2)
+    >>> round(ss.posterior ** 0.5, 6)
+    0.002
+    """
+    require_positive("sigma_a", sigma_a)
+    require_positive("Ts", Ts)
+    require_positive("sigma_L", sigma_L)
+    return scalar_riccati_steady_state(1.0, (sigma_a * Ts) ** 2, 1.0, sigma_L**2)
+
+
+def accelerometer_steady_state(Q_a: ArrayLike, R_L: ArrayLike, Ts: float) -> tuple[Array, Array]:
+    """Matrix steady state of WF Eq. (14): prior and posterior covariances.
+
+    Solves the filter Riccati equation for ``Phi = I, Q = Q_a Ts^2, H = I, R = R_L`` with
+    :func:`scipy.linalg.solve_discrete_are`.
+    """
+    require_positive("Ts", Ts)
+    Q = require_symmetric_psd("Q_a", Q_a) * Ts**2
+    R = require_symmetric_psd("R_L", R_L, definite=True)
+    n = Q.shape[0]
+    prior = symmetrize(solve_discrete_are(np.eye(n), np.eye(n), Q, R))
+    posterior = symmetrize(np.linalg.inv(np.linalg.inv(prior) + np.linalg.inv(R)))
+    return prior, posterior
+
+
+# --------------------------------------------------------------------------- Eqs. (15)-(17)
+def gps_doppler_update(
+    x_prior: ArrayLike, P_prior: ArrayLike, y_G: ArrayLike, H_G: ArrayLike, R_G: ArrayLike
+) -> KalmanUpdate:
+    """Single-step GPS-Doppler update of the accelerometer prior (WF Eq. (16)).
+
+    ``y_G = H_G x + v_G`` (WF Eq. (15)) with ``H_G`` in Hz per (m/s) and ``R_G`` in Hz^2.
+    """
+    return kf_update(x_prior, P_prior, y_G, H_G, R_G)
+
+
+def gps_doppler_covariance(P_prior: ArrayLike, H_G: ArrayLike, R_G: ArrayLike) -> Array:
+    r"""Information-form covariance after the GPS-Doppler update (WF Eq. (17)).
+
+    :math:`\mathbf P_{DG}=[\mathbf P^{-1} + \mathbf H_G^T\mathbf R_G^{-1}\mathbf H_G]^{-1}`.
+    """
+    P = require_symmetric_psd("P_prior", P_prior, definite=True)
+    H = as_finite_array("H_G", H_G, ndim=2)
+    R = require_symmetric_psd("R_G", R_G, definite=True)
+    info = np.linalg.inv(P) + H.T @ np.linalg.solve(R, H)
+    return symmetrize(np.linalg.inv(symmetrize(info)))
+
+
+# --------------------------------------------------------------------------- Eqs. (18)-(20)
+def _informations(covariances: Sequence[ArrayLike | float | None], n: int | None = None) -> list[Array]:
+    """Information matrices; ``None`` or ``inf`` (an outage) gives zero information."""
+    out = []
+    for i, P in enumerate(covariances):
+        if P is None or (np.ndim(P) == 0 and np.isinf(float(P))):  # type: ignore[arg-type]
+            if n is None:
+                raise ValueError("covariances: an outage needs the state size from another estimator")
+            out.append(np.zeros((n, n)))
+            continue
+        Pa = np.asarray(P, dtype=float)
+        if Pa.ndim == 2 and np.all(np.isinf(np.diag(Pa))):
+            out.append(np.zeros_like(Pa))
+            continue
+        Pa = require_symmetric_psd(f"covariances[{i}]", Pa, definite=True)
+        out.append(symmetrize(np.linalg.inv(Pa)))
+    return out
+
+
+def _state_size(covariances: Sequence[ArrayLike | float | None]) -> int:
+    for P in covariances:
+        if P is not None and np.ndim(P) == 2:
+            return int(np.shape(P)[0])
+    raise ValueError("covariances must contain at least one matrix")
+
+
+def federated_fusion(
+    estimates: Sequence[ArrayLike], covariances: Sequence[ArrayLike | float | None]
+) -> tuple[Array, Array]:
+    r"""Information-weighted (federated) fusion of local estimates (WF Eqs. (18)-(19)).
+
+    Parameters
+    ----------
+    estimates : sequence of (n,) arrays
+        Local estimates :math:`\hat{\mathbf x}_i`.
+    covariances : sequence of (n, n) arrays, ``None`` or ``inf``
+        Their covariances. An outage is ``None``, ``inf`` or a matrix with infinite diagonal:
+        that estimator gets zero weight.
+
+    Returns
+    -------
+    x_D : (n,) array
+        :math:`\mathbf P_D\sum_i\mathbf P_i^{-1}\hat{\mathbf x}_i`.
+    P_D : (n, n) array
+        :math:`(\sum_i\mathbf P_i^{-1})^{-1}`, the true covariance only if the local errors are
+        uncorrelated.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> x, P = federated_fusion([np.array([1.0]), np.array([3.0])], [np.eye(1), np.eye(1)])
+    >>> float(x[0]), float(P[0, 0])
+    (2.0, 0.5)
+    """
+    if len(estimates) != len(covariances) or not estimates:
+        raise ValueError("estimates and covariances must be non-empty and of equal length")
+    n = _state_size(covariances)
+    infos = _informations(covariances, n)
+    total = symmetrize(sum(infos))
+    if np.linalg.matrix_rank(total) < n:
+        raise ValueError("covariances: the estimators left after outages do not observe every state")
+    P_D = symmetrize(np.linalg.inv(total))
+    y = sum(
+        Y @ as_finite_array(f"estimates[{i}]", x, ndim=1) if np.any(Y) else 0.0
+        for i, (Y, x) in enumerate(zip(infos, estimates, strict=True))
+    )
+    return P_D @ y, P_D
+
+
+def fused_error_covariance(covariances: Sequence[ArrayLike | float | None], joint: ArrayLike) -> Array:
+    r"""True covariance of the fused error given the joint local-error covariance (WF Eq. (20)).
+
+    ``Cov = P_D [P_1^-1 ... P_N^-1] P [P_1^-1 ... P_N^-1]^T P_D``, where ``P`` is the
+    ``(N n) x (N n)`` joint covariance of the stacked local errors, whose ``(i, j)`` block is the
+    cross-covariance of estimators ``i`` and ``j`` (WF prints the (2, 3) block as ``P_NG``; it is
+    ``P_LG``). Blocks belonging to outages are ignored (zero weight).
+    """
+    n = _state_size(covariances)
+    infos = _informations(covariances, n)
+    P_D = symmetrize(np.linalg.inv(symmetrize(sum(infos))))
+    joint = np.asarray(joint, dtype=float)
+    N = len(infos)
+    if joint.shape != (N * n, N * n):
+        raise ValueError(f"joint must be ({N * n}, {N * n}), got {joint.shape}")
+    J = np.where(np.isfinite(joint), joint, 0.0)  # outage blocks get zero weight anyway
+    require_symmetric_psd("joint", J)
+    A = P_D @ np.hstack(infos)  # [P_D P_1^-1, ..., P_D P_N^-1]
+    return symmetrize(A @ J @ A.T)
+
+
+# --------------------------------------------------------------------------- Eqs. (21)-(23)
+def feasible_weights(
+    covariances: Sequence[ArrayLike | float | None],
+    directions: Sequence[ArrayLike] | None = None,
+    sigmas: ArrayLike | None = None,
+) -> Array:
+    r"""Weights :math:`k_i` of the theorem (WF Eq. (22) or Remark (i)).
+
+    With ``directions`` :math:`\mathbf z_i`: :math:`s_i=\sqrt{\mathbf z_i^T\mathbf P_i\mathbf z_i}`
+    (WF Eq. (22)); with ``sigmas``: :math:`s_i=\sqrt{\sigma_i}` (Remark (i)); by default
+    :math:`s_i=\sqrt{\sigma_{\max}(\mathbf P_i)}`. Then :math:`k_i=\sum_j s_j/s_i`, which always
+    satisfies :math:`\sum_i 1/k_i = 1`. Outages get ``k_i = inf`` (their term vanishes).
+    """
+    n = _state_size(covariances)
+    active = [
+        P is not None and not (np.ndim(P) == 0) and not np.all(np.isinf(np.diag(np.asarray(P))))
+        for P in covariances
+    ]
+    s = np.full(len(covariances), np.inf)
+    for i, P in enumerate(covariances):
+        if not active[i]:
+            continue
+        Pa = np.asarray(P, dtype=float)
+        if directions is not None:
+            z = as_finite_array(f"directions[{i}]", directions[i], ndim=1)
+            if z.shape != (n,) or not np.any(z):
+                raise ValueError(f"directions[{i}] must be a non-zero {n}-vector")
+            s[i] = np.sqrt(z @ Pa @ z)
+        elif sigmas is not None:
+            s[i] = np.sqrt(float(require_positive(f"sigmas[{i}]", np.asarray(sigmas, dtype=float)[i])))
+        else:
+            s[i] = np.sqrt(np.linalg.eigvalsh(Pa)[-1])
+    total = s[np.isfinite(s)].sum()
+    with np.errstate(divide="ignore"):
+        return np.where(np.isfinite(s), total / np.where(np.isfinite(s), s, 1.0), np.inf)
+
+
+def optimal_weights(covariances: Sequence[ArrayLike | float | None]) -> Array:
+    r"""Weights that minimise the trace of WF Eq. (21): :math:`k_i=\sum_j t_j/t_i`.
+
+    Here :math:`t_i=\sqrt{\operatorname{tr}(\mathbf P_D\mathbf P_i^{-1}\mathbf P_D)}`; with them the
+    trace of the bound equals :func:`minkowski_trace_bound` (the middle term of WF Eq. (23)).
+    They are an instance of WF Eq. (22) with suitably scaled :math:`\mathbf z_i`, but in general
+    not of Remark (i)'s choice with :math:`\sigma_j` inside the spectrum of :math:`\mathbf P_j`.
+    """
+    n = _state_size(covariances)
+    infos = _informations(covariances, n)
+    P_D = symmetrize(np.linalg.inv(symmetrize(sum(infos))))
+    t = np.array([np.sqrt(np.trace(P_D @ Y @ P_D)) for Y in infos])
+    with np.errstate(divide="ignore"):
+        return np.where(t > 0, t.sum() / np.where(t > 0, t, 1.0), np.inf)
+
+
+def federated_covariance_bound(
+    covariances: Sequence[ArrayLike | float | None], weights: ArrayLike | None = None
+) -> Array:
+    r"""Correlation-free bound :math:`\mathbf P_D[\sum_i k_i\mathbf P_i^{-1}]\mathbf P_D` (WF Eq. (21)).
+
+    Holds for any joint covariance of the local errors whenever :math:`k_i > 0` and
+    :math:`\sum_i 1/k_i \le 1` (default weights: :func:`feasible_weights`).
+    """
+    n = _state_size(covariances)
+    infos = _informations(covariances, n)
+    P_D = symmetrize(np.linalg.inv(symmetrize(sum(infos))))
+    k = feasible_weights(covariances) if weights is None else np.asarray(weights, dtype=float)
+    if k.shape != (len(infos),):
+        raise ValueError(f"weights must have one entry per estimator ({len(infos)}), got {k.shape}")
+    fin = np.isfinite(k)
+    if np.any(k[fin] <= 0) or np.sum(1.0 / k[fin]) > 1.0 + 1e-12:
+        raise ValueError("weights must be positive with sum(1/k_i) <= 1")
+    M = sum(ki * Y for ki, Y in zip(k, infos, strict=True) if np.isfinite(ki))
+    return symmetrize(P_D @ M @ P_D)
+
+
+def minkowski_trace_bound(covariances: Sequence[ArrayLike | float | None]) -> float:
+    r"""Middle term of WF Eq. (23), the Minkowski trace bound.
+
+    :math:`(\sum_i\sqrt{\operatorname{tr}(\mathbf P_D\mathbf P_i^{-1}\mathbf P_D)})^2`.
+
+    Bounds :math:`E\|\mathbf x_D-\hat{\mathbf x}_D\|^2` for any correlation between the local
+    errors; it equals the trace of WF Eq. (21) minimised over the weights.
+    """
+    n = _state_size(covariances)
+    infos = _informations(covariances, n)
+    P_D = symmetrize(np.linalg.inv(symmetrize(sum(infos))))
+    return float(sum(np.sqrt(np.trace(P_D @ Y @ P_D)) for Y in infos) ** 2)

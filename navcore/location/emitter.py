@@ -1,0 +1,343 @@
+r"""Frequency-of-arrival (Doppler) emitter location from a single moving aperture.
+
+Model
+-----
+A stationary emitter at position :math:`\mathbf p^e` radiates an unknown carrier
+:math:`f_0`. An aperture at position :math:`\mathbf p(k)` moving with velocity
+:math:`\mathbf v(k)` receives, to first order in :math:`v/c` (Wu & Fowler, WF Eq. (1)),
+
+.. math::
+
+    f(k) = f_0 + \frac{f_0}{c}\,\mathbf v(k)^T \mathbf u_R(k),\qquad
+    \mathbf u_R(k) = \frac{\mathbf p^e - \mathbf p(k)}{\|\mathbf p^e - \mathbf p(k)\|}.
+
+The emitter parameter vector is :math:`\boldsymbol\psi = [p^e_x, p^e_y, p^e_z, f_0]^T` and the
+local (aperture) states are the positions and velocities. Weighted least squares solves
+:math:`\mathbf H^T\mathbf W[\mathbf m - \mathbf f(\hat{\boldsymbol\psi})] = 0` (WF Eq. (3))
+by Gauss-Newton, with :math:`\mathbf H = \partial\mathbf f/\partial\boldsymbol\psi` (WF Eq. (4)).
+To first order the estimate error is (WF Eq. (6))
+
+.. math::
+
+    \hat{\boldsymbol\psi} - \boldsymbol\psi
+    = (\mathbf H^T\mathbf W\mathbf H)^{-1}\mathbf H^T\mathbf W\,[\mathbf e + \tilde{\mathbf f}_\theta],
+
+where :math:`\tilde{\mathbf f}_\theta` is the signal-model error caused by using estimated
+aperture states. The gradients with respect to the aperture states (WF Eqs. (7)-(9)) are
+
+.. math::
+
+    \frac{\partial f}{\partial\mathbf v} = \frac{f_0}{c}\mathbf u_R^T,\qquad
+    \frac{\partial f}{\partial\mathbf p} = -\frac{f_0}{c R}\,
+        \big(\mathbf v - (\mathbf v^T\mathbf u_R)\mathbf u_R\big)^T,
+
+so :math:`\|\partial f/\partial\mathbf p\| = (f_0/c)\|\mathbf v_\perp\|/R`, half of the bound
+:math:`(f_0/c)\,2\|\mathbf v\|/R` printed as WF Eq. (9) at most.
+
+All quantities are SI: metres, metres per second, hertz.
+
+References
+----------
+N. E. Wu and M. L. Fowler, "Application of MEMS for improved emitter location accuracy".
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from navcore._validate import as_finite_array, require_integer, require_positive, require_symmetric_psd
+from navcore.units import C
+
+__all__ = [
+    "GaussNewtonResult",
+    "doppler_frequency",
+    "doppler_gradient_position",
+    "doppler_gradient_velocity",
+    "doppler_jacobian_emitter",
+    "emitter_gauss_newton",
+    "linearized_location_error",
+    "location_error_covariance",
+    "position_sensitivity_bound",
+    "signal_model_error",
+    "velocity_to_position_sensitivity_ratio",
+]
+
+Array = NDArray[np.float64]
+
+
+def _track(name: str, value: ArrayLike) -> Array:
+    a = as_finite_array(name, value)
+    if a.ndim == 1:
+        a = a[None, :]
+    if a.ndim != 2 or a.shape[1] != 3:
+        raise ValueError(f"{name} must have shape (M, 3) or (3,), got {a.shape}")
+    return a
+
+
+def _geometry(emitter: ArrayLike, position: ArrayLike) -> tuple[Array, Array]:
+    pe = as_finite_array("emitter", emitter, ndim=1)
+    if pe.shape != (3,):
+        raise ValueError(f"emitter must be a 3-vector, got shape {pe.shape}")
+    p = _track("position", position)
+    rel = pe[None, :] - p
+    R = np.linalg.norm(rel, axis=1)
+    if np.any(R <= 0):
+        raise ValueError("position must differ from the emitter position (range > 0)")
+    return rel / R[:, None], R
+
+
+def doppler_frequency(f0: float, emitter: ArrayLike, position: ArrayLike, velocity: ArrayLike) -> Array:
+    """Received frequency of a stationary emitter at a moving aperture (WF Eq. (1)).
+
+    Parameters
+    ----------
+    f0 : float
+        Emitter carrier frequency, Hz (> 0).
+    emitter : (3,) array
+        Emitter position, m.
+    position, velocity : (M, 3) or (3,) arrays
+        Aperture positions (m) and velocities (m/s) at the M measurement times.
+
+    Returns
+    -------
+    (M,) array
+        ``f0 + (f0/c) v . u_R`` in Hz; positive shift when closing on the emitter.
+
+    Examples
+    --------
+    >>> float(doppler_frequency(1e9, [1000.0, 0, 0], [0.0, 0, 0], [299.792458, 0, 0])[0])
+    1000001000.0
+    """
+    require_positive("f0", f0)
+    u, _ = _geometry(emitter, position)
+    v = _track("velocity", velocity)
+    if v.shape[0] != u.shape[0]:
+        raise ValueError(f"velocity must have as many rows as position, got {v.shape[0]} and {u.shape[0]}")
+    return f0 + (f0 / C) * np.einsum("ij,ij->i", v, u)
+
+
+def doppler_gradient_velocity(f0: float, emitter: ArrayLike, position: ArrayLike) -> Array:
+    """Gradient of the received frequency w.r.t. aperture velocity, ``(f0/c) u_R`` (WF Eq. (8)).
+
+    Returns an (M, 3) array in Hz per (m/s); each row has norm ``f0/c``.
+    """
+    require_positive("f0", f0)
+    u, _ = _geometry(emitter, position)
+    return (f0 / C) * u
+
+
+def doppler_gradient_position(
+    f0: float, emitter: ArrayLike, position: ArrayLike, velocity: ArrayLike
+) -> Array:
+    """Gradient of the received frequency w.r.t. aperture position (WF Eq. (9), exact form).
+
+    ``df/dp = -(f0/(c R)) (v - (v.u_R) u_R)``: only the velocity component across the line
+    of sight matters. Returns an (M, 3) array in Hz per m.
+    """
+    require_positive("f0", f0)
+    u, R = _geometry(emitter, position)
+    v = _track("velocity", velocity)
+    v_perp = v - np.einsum("ij,ij->i", v, u)[:, None] * u
+    return -(f0 / C) * v_perp / R[:, None]
+
+
+def position_sensitivity_bound(f0: float, speed: ArrayLike, range_m: ArrayLike) -> Array:
+    """The printed upper bound ``(f0/c) 2||v|| / R`` on ``||df/dp||`` (WF Eq. (9)), Hz/m."""
+    require_positive("f0", f0)
+    speed = np.asarray(require_positive("speed", speed), dtype=float)
+    range_m = np.asarray(require_positive("range_m", range_m), dtype=float)
+    return (f0 / C) * 2.0 * speed / range_m
+
+
+def velocity_to_position_sensitivity_ratio(speed: ArrayLike, range_m: ArrayLike) -> Array:
+    """Ratio of WF Eq. (8) to the bound of WF Eq. (9): ``R / (2 ||v||)``.
+
+    The ratio carries units of seconds (m per m/s): it compares the frequency change caused
+    by a 1 m/s velocity error with that of a 1 m position error.
+    """
+    speed = np.asarray(require_positive("speed", speed), dtype=float)
+    range_m = np.asarray(require_positive("range_m", range_m), dtype=float)
+    return range_m / (2.0 * speed)
+
+
+def doppler_jacobian_emitter(
+    f0: float, emitter: ArrayLike, position: ArrayLike, velocity: ArrayLike
+) -> Array:
+    r"""Jacobian ``H = df/d[p^e, f0]`` of the stacked frequencies (WF Eq. (4)).
+
+    Row k is :math:`[\,(f_0/c)(\mathbf v-(\mathbf v^T\mathbf u_R)\mathbf u_R)^T/R,\;
+    1 + \mathbf v^T\mathbf u_R/c\,]`. The emitter-position block is minus the aperture-position
+    gradient (only the difference of the two positions enters).
+
+    Returns
+    -------
+    (M, 4) array
+        Columns in Hz/m (three) and Hz/Hz (one).
+    """
+    dp = -doppler_gradient_position(f0, emitter, position, velocity)
+    u, _ = _geometry(emitter, position)
+    v = _track("velocity", velocity)
+    df0 = 1.0 + np.einsum("ij,ij->i", v, u) / C
+    return np.column_stack([dp, df0])
+
+
+def signal_model_error(
+    f0: float,
+    emitter: ArrayLike,
+    position: ArrayLike,
+    velocity: ArrayLike,
+    position_est: ArrayLike,
+    velocity_est: ArrayLike,
+) -> Array:
+    r"""Signal-model error of WF Eq. (6).
+
+    :math:`\tilde{\mathbf f}_\theta = \mathbf f(\mathbf p^e,\Theta) - \mathbf f(\mathbf p^e,\hat\Theta)`.
+
+    The true aperture states are ``position, velocity``; the processing uses the estimates.
+    """
+    return doppler_frequency(f0, emitter, position, velocity) - doppler_frequency(
+        f0, emitter, position_est, velocity_est
+    )
+
+
+def _weight(W: ArrayLike | None, M: int) -> Array:
+    if W is None:
+        return np.eye(M)
+    Wa = np.asarray(W, dtype=float)
+    if Wa.ndim == 1:
+        Wa = np.diag(Wa)
+    require_symmetric_psd("W", Wa, definite=True)
+    if Wa.shape != (M, M):
+        raise ValueError(f"W must be ({M}, {M}) to match the measurements, got {Wa.shape}")
+    return Wa
+
+
+def linearized_location_error(H: ArrayLike, error: ArrayLike, W: ArrayLike | None = None) -> Array:
+    r"""First-order emitter-parameter error (WF Eq. (6)).
+
+    :math:`(\mathbf H^T\mathbf W\mathbf H)^{-1}\mathbf H^T\mathbf W\,\boldsymbol\epsilon`.
+
+    Parameters
+    ----------
+    H : (M, n) array
+        Jacobian of WF Eq. (4).
+    error : (M,) or (M, T) array
+        Total frequency error ``e + f_tilde`` (Hz); columns are independent trials.
+    W : (M, M) or (M,) array, optional
+        Positive-definite weight (identity by default; a vector means a diagonal).
+
+    Returns
+    -------
+    (n,) or (n, T) array
+        Error of ``[p^e, f0]`` in m and Hz.
+    """
+    H = as_finite_array("H", H, ndim=2)
+    e = as_finite_array("error", error)
+    if e.shape[0] != H.shape[0]:
+        raise ValueError(f"error must have {H.shape[0]} rows to match H, got {e.shape[0]}")
+    Wm = _weight(W, H.shape[0])
+    HtW = H.T @ Wm
+    return np.linalg.solve(HtW @ H, HtW @ e)
+
+
+def location_error_covariance(H: ArrayLike, error_covariance: ArrayLike, W: ArrayLike | None = None) -> Array:
+    r"""Covariance of the WF Eq. (6) error for a frequency-error covariance :math:`\Sigma`.
+
+    ``G Sigma G^T`` with ``G = (H^T W H)^{-1} H^T W``; it reduces to ``(H^T Sigma^-1 H)^-1``
+    when ``W = Sigma^-1``.
+    """
+    H = as_finite_array("H", H, ndim=2)
+    S = require_symmetric_psd("error_covariance", error_covariance)
+    Wm = _weight(W, H.shape[0])
+    HtW = H.T @ Wm
+    G = np.linalg.solve(HtW @ H, HtW)
+    out = G @ S @ G.T
+    return 0.5 * (out + out.T)
+
+
+@dataclass(frozen=True)
+class GaussNewtonResult:
+    """Result of :func:`emitter_gauss_newton`.
+
+    Attributes
+    ----------
+    estimate : (4,) array
+        ``[p^e_x, p^e_y, p^e_z, f0]`` in m and Hz.
+    jacobian : (M, 4) array
+        ``H`` of WF Eq. (4) at the estimate.
+    residual : (M,) array
+        ``m - f(estimate)`` in Hz.
+    normal_equation : (4,) array
+        ``H^T W residual`` (WF Eq. (3)); zero at the solution.
+    iterations : int
+    converged : bool
+    """
+
+    estimate: Array
+    jacobian: Array
+    residual: Array
+    normal_equation: Array
+    iterations: int
+    converged: bool
+
+
+def emitter_gauss_newton(
+    measurements: ArrayLike,
+    position: ArrayLike,
+    velocity: ArrayLike,
+    initial: ArrayLike,
+    W: ArrayLike | None = None,
+    *,
+    max_iter: int = 20,
+    tol_m: float = 1e-3,
+) -> GaussNewtonResult:
+    """Weighted Gauss-Newton least squares for emitter position and frequency (WF Eqs. (2)-(4)).
+
+    Parameters
+    ----------
+    measurements : (M,) array
+        Measured frequencies ``m`` (Hz), WF Eq. (2).
+    position, velocity : (M, 3) arrays
+        Aperture states used by the processing (the estimates, WF's :math:`\\hat\\Theta`).
+    initial : (4,) array
+        Starting ``[p^e, f0]``.
+    W : array, optional
+        Positive-definite weight (identity by default).
+    max_iter : int
+        Iteration limit.
+    tol_m : float
+        Stop when the position step is below this (m).
+
+    Returns
+    -------
+    GaussNewtonResult
+    """
+    m = as_finite_array("measurements", measurements, ndim=1)
+    p = _track("position", position)
+    v = _track("velocity", velocity)
+    if p.shape[0] != m.size or v.shape[0] != m.size:
+        raise ValueError("position and velocity must have one row per measurement")
+    psi = as_finite_array("initial", initial, ndim=1).copy()
+    if psi.shape != (4,):
+        raise ValueError(f"initial must be [x, y, z, f0], got shape {psi.shape}")
+    require_integer("max_iter", max_iter, minimum=1)
+    require_positive("tol_m", tol_m)
+    Wm = _weight(W, m.size)
+    # scale f0 column so the normal matrix is well conditioned (Hz/m vs Hz/Hz)
+    converged = False
+    iterations = 0
+    for iterations in range(1, max_iter + 1):  # noqa: B007 (reported after the loop)
+        H = doppler_jacobian_emitter(psi[3], psi[:3], p, v)
+        r = m - doppler_frequency(psi[3], psi[:3], p, v)
+        HtW = H.T @ Wm
+        step = np.linalg.lstsq(HtW @ H, HtW @ r, rcond=None)[0]
+        psi = psi + step
+        if np.linalg.norm(step[:3]) < tol_m:
+            converged = True
+            break
+    H = doppler_jacobian_emitter(psi[3], psi[:3], p, v)
+    r = m - doppler_frequency(psi[3], psi[:3], p, v)
+    return GaussNewtonResult(psi, H, r, H.T @ Wm @ r, iterations, converged)

@@ -1,0 +1,181 @@
+"""Tests of navcore.estimation.federated (WF Eqs. (10)-(23)) against independent oracles."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from filterpy.kalman import KalmanFilter
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from navcore.estimation.federated import (
+    accelerometer_predict,
+    accelerometer_steady_state,
+    accelerometer_steady_state_isotropic,
+    feasible_weights,
+    federated_covariance_bound,
+    federated_fusion,
+    fused_error_covariance,
+    gps_doppler_covariance,
+    gps_doppler_update,
+    lever_arm_velocity,
+    local_velocity_update,
+    minkowski_trace_bound,
+    navigation_mapped_covariance,
+    optimal_weights,
+)
+
+
+def _spd(rng, n, scale=1.0):
+    A = rng.normal(size=(n, n))
+    return scale * (A @ A.T + 0.1 * np.eye(n))
+
+
+def test_lever_arm_jacobian_finite_difference():
+    """Oracle: finite differences of v + omega x r (the map is linear, so FD is exact)."""
+    r = np.array([1.0, 15.0, -0.5])
+    v0, w0 = np.array([200.0, 3.0, -1.0]), np.array([0.01, -0.02, 0.05])
+    _, tau = lever_arm_velocity(v0, w0, r)
+    x0 = np.r_[v0, w0]
+    fd = np.column_stack(
+        [
+            lever_arm_velocity((x0 + d)[:3], (x0 + d)[3:], r)[0] - lever_arm_velocity(v0, w0, r)[0]
+            for d in np.eye(6)
+        ]
+    )
+    np.testing.assert_allclose(tau, fd, atol=1e-12)
+
+
+def test_mapped_covariance_monte_carlo():
+    """Oracle: seeded Monte Carlo of WF Eq. (10) with independent w_T (1e5 samples)."""
+    rng = np.random.default_rng(1)
+    _, tau = lever_arm_velocity(np.zeros(3), np.zeros(3), [2.0, 10.0, 0.3])
+    P_N, Q_T = _spd(rng, 6, 0.01), _spd(rng, 3, 0.5)
+    n = 100_000
+    e = rng.multivariate_normal(np.zeros(6), P_N, n) @ tau.T + rng.multivariate_normal(np.zeros(3), Q_T, n)
+    np.testing.assert_allclose(np.cov(e.T), navigation_mapped_covariance(tau, P_N, Q_T), rtol=0.03, atol=2e-3)
+
+
+def test_accelerometer_filter_matches_filterpy():
+    """Oracle: filterpy's KalmanFilter with F = I, B = Ts I, Q = Q_a Ts^2, H = I (WF Eqs. (12)-(14))."""
+    rng = np.random.default_rng(2)
+    Ts, Q_a, R_L = 0.02, _spd(rng, 3, 1e-4), _spd(rng, 3, 0.04)
+    kf = KalmanFilter(dim_x=3, dim_z=3, dim_u=3)
+    kf.F, kf.B, kf.H, kf.Q, kf.R, kf.P = np.eye(3), Ts * np.eye(3), np.eye(3), Q_a * Ts**2, R_L, np.eye(3)
+    x, P = np.zeros(3), np.eye(3)
+    for _ in range(50):
+        a, y = rng.normal(size=3), rng.normal(size=3)
+        kf.predict(u=a.reshape(3, 1))
+        kf.update(y.reshape(3, 1))
+        x, P = accelerometer_predict(x, P, a, Q_a, Ts)
+        upd = local_velocity_update(x, P, y, R_L)
+        x, P = upd.x, upd.P
+    np.testing.assert_allclose(x, kf.x.ravel(), rtol=1e-9, atol=1e-12)
+    np.testing.assert_allclose(P, kf.P, rtol=1e-9, atol=1e-15)
+
+
+def test_steady_state_closed_form_and_matrix():
+    """Oracle: closed form P+ = (-q + sqrt(q^2 + 4 q r))/2 of WF Eq. (14); iterating the recursion."""
+    sa, Ts, sL = 1e-3, 0.02, 0.2
+    q, r = (sa * Ts) ** 2, sL**2
+    ss = accelerometer_steady_state_isotropic(sa, Ts, sL)
+    assert ss.posterior == pytest.approx((-q + np.sqrt(q * q + 4 * q * r)) / 2, rel=1e-12)
+    Q_a = np.diag([1e-6, 4e-6, 9e-6])
+    prior, post = accelerometer_steady_state(Q_a, 0.04 * np.eye(3), Ts)
+    qd = np.diag(Q_a) * Ts**2  # independent axes: the scalar closed form per axis is the oracle
+    np.testing.assert_allclose(np.diag(post), (-qd + np.sqrt(qd * qd + 4 * qd * 0.04)) / 2, rtol=1e-9)
+    np.testing.assert_allclose(post - np.diag(np.diag(post)), 0.0, atol=1e-15)
+    np.testing.assert_allclose(prior, post + Q_a * Ts**2, rtol=1e-9)
+
+
+def test_gps_covariance_information_equals_joseph():
+    """Oracle: the Joseph-form covariance of the WF Eq. (16) update equals WF Eq. (17)."""
+    rng = np.random.default_rng(4)
+    P = _spd(rng, 3, 1e-4)
+    H = 5.255 * np.array([[1.0, 0.0, 0.0]])
+    R = np.eye(1)
+    upd = gps_doppler_update(np.zeros(3), P, [0.3], H, R)
+    np.testing.assert_allclose(gps_doppler_covariance(P, H, R), upd.P, rtol=1e-9, atol=1e-18)
+
+
+def test_fusion_equals_stacked_gls_and_outage():
+    """Oracle: generalized least squares on the stacked estimates with block-diagonal covariance."""
+    rng = np.random.default_rng(5)
+    Ps = [_spd(rng, 3) for _ in range(3)]
+    xs = [rng.normal(size=3) for _ in range(3)]
+    x, P = federated_fusion(xs, Ps)
+    A = np.vstack([np.eye(3)] * 3)
+    Winv = np.zeros((9, 9))
+    for i, Pi in enumerate(Ps):
+        Winv[3 * i : 3 * i + 3, 3 * i : 3 * i + 3] = np.linalg.inv(Pi)
+    P_gls = np.linalg.inv(A.T @ Winv @ A)
+    np.testing.assert_allclose(P, P_gls, rtol=1e-10)
+    np.testing.assert_allclose(x, P_gls @ A.T @ Winv @ np.concatenate(xs), rtol=1e-10)
+    x2, P2 = federated_fusion(xs, [Ps[0], None, Ps[2]])
+    x3, P3 = federated_fusion([xs[0], xs[2]], [Ps[0], Ps[2]])
+    np.testing.assert_allclose(x2, x3, rtol=1e-12)
+    np.testing.assert_allclose(P2, P3, rtol=1e-12)
+    x4, _ = federated_fusion(xs, [Ps[0], np.diag([np.inf] * 3), Ps[2]])
+    np.testing.assert_allclose(x4, x3, rtol=1e-12)
+    with pytest.raises(ValueError, match="covariances"):
+        federated_fusion(xs[:1], [None])
+
+
+def test_fused_covariance_monte_carlo():
+    """Oracle: sample covariance of the fused error for correlated local errors (WF Eq. (20), 2e5 draws)."""
+    rng = np.random.default_rng(6)
+    J = _spd(rng, 9)
+    Ps = [J[3 * i : 3 * i + 3, 3 * i : 3 * i + 3] for i in range(3)]
+    E = rng.multivariate_normal(np.zeros(9), J, 200_000)
+    infos = [np.linalg.inv(P) for P in Ps]
+    PD = np.linalg.inv(sum(infos))
+    fused = sum(E[:, 3 * i : 3 * i + 3] @ (PD @ infos[i]).T for i in range(3))
+    np.testing.assert_allclose(fused_error_covariance(Ps, J), np.cov(fused.T), rtol=0.03, atol=0.01)
+
+
+def _random_joint(rng, n, N, rho):
+    """Joint covariance with correlation rho between estimators (common + independent parts)."""
+    L = [np.linalg.cholesky(_spd(rng, n)) for _ in range(N)]
+    common = np.vstack(L)
+    J = rho * common @ common.T
+    for i, Li in enumerate(L):
+        J[n * i : n * i + n, n * i : n * i + n] += (1 - rho) * Li @ Li.T
+    return J
+
+
+@settings(max_examples=50, deadline=None)
+@given(st.integers(0, 2**32 - 1), st.integers(1, 4), st.integers(2, 4), st.floats(0.0, 1.0))
+def test_theorem_bound_holds(seed, n, N, rho):
+    """Oracle: WF Eq. (20) exact covariance vs the bound (21) and the trace chain (23), any correlation."""
+    rng = np.random.default_rng(seed)
+    J = _random_joint(rng, n, N, rho)
+    Ps = [J[n * i : n * i + n, n * i : n * i + n] for i in range(N)]
+    cov = fused_error_covariance(Ps, J)
+    z = [rng.normal(size=n) + 1e-3 for _ in range(N)]
+    k = feasible_weights(Ps, directions=z)
+    assert np.sum(1 / k) == pytest.approx(1.0)
+    B = federated_covariance_bound(Ps, k)
+    assert np.linalg.eigvalsh(B - cov)[0] >= -1e-9 * np.linalg.norm(B)
+    mink = minkowski_trace_bound(Ps)
+    assert np.trace(cov) <= mink * (1 + 1e-9)
+    assert mink <= np.trace(B) * (1 + 1e-9)
+
+
+def test_bound_exact_for_fully_correlated_isotropic():
+    """Oracle: remark (ii): e_i = sigma_i * w with a common w makes (21) an equality for isotropic P_i."""
+    s = np.array([0.02, 0.002, 0.5])
+    n = 3
+    J = np.kron(np.outer(s, s), np.eye(n))  # completely correlated
+    Ps = [si**2 * np.eye(n) for si in s]
+    cov = fused_error_covariance(Ps, J)
+    np.testing.assert_allclose(federated_covariance_bound(Ps, optimal_weights(Ps)), cov, rtol=1e-12)
+    # the remark (i) choice with sigma_i in the spectrum of P_i is valid but not the tight one here
+    loose = federated_covariance_bound(Ps, feasible_weights(Ps, sigmas=s**2))
+    assert np.trace(loose) > 10 * np.trace(cov)
+    assert minkowski_trace_bound(Ps) == pytest.approx(np.trace(cov), rel=1e-12)
+
+
+def test_weights_validation():
+    """Validation: infeasible weights are rejected with the constraint named."""
+    with pytest.raises(ValueError, match="weights"):
+        federated_covariance_bound([np.eye(2), np.eye(2)], [1.5, 1.5])
