@@ -418,16 +418,17 @@ def _edgeworth_coefficients(noise: MultipleAccessNoise, use_n: bool) -> tuple[fl
 def edgeworth_density(
     noise: MultipleAccessNoise, n: ArrayLike, terms: int = 2, use_n: bool = True
 ) -> FloatArray:
-    """The expansion (E.15): Gaussian term plus the lambda_3, lambda_4 (terms >= 2) and (jv)^6 terms.
+    """The expansion (E.15) truncated after ``terms`` correction terms.
 
-    ``terms=0`` is Theorem 3.1's Gaussian limit. ``use_n`` replaces N - 1 by N as App. E does.
+    ``terms=0`` is Theorem 3.1's Gaussian limit; 1 adds the lambda_3 term, 2 the lambda_4 term
+    and 3 the (jv)^6 term (lambda_6 and lambda_3^2). ``use_n`` replaces N - 1 by N as App. E does.
     """
     var, c = _edgeworth_coefficients(noise, use_n)
     sig = np.sqrt(var)
     z = np.asarray(n, dtype=float) / sig
     phi = np.exp(-0.5 * z**2) / np.sqrt(2 * np.pi) / sig
     out = phi.copy()
-    orders = [3, 4, 6][: max(0, terms + 1)] if terms else []
+    orders = (3, 4, 6)[: max(0, terms)]
     for k in orders:
         out = out + c[k] * sig ** (-k) * special.eval_hermitenorm(k, z) * phi
     return out
@@ -442,7 +443,7 @@ def edgeworth_tail(
     z = np.asarray(t, dtype=float) / sig
     phi = np.exp(-0.5 * z**2) / np.sqrt(2 * np.pi)
     out = special.ndtr(-z)
-    orders = [3, 4, 6][: max(0, terms + 1)] if terms else []
+    orders = (3, 4, 6)[: max(0, terms)]
     for k in orders:
         out = out + c[k] * sig ** (-k) * special.eval_hermitenorm(k - 1, z) * phi
     return out
