@@ -1,0 +1,243 @@
+r"""Third-order tracking loop: error responses to acceleration steps and jerks.
+
+A third-order phase-lock loop with Butterworth closed-loop poles (loop-filter coefficients
+:math:`a_3 = b_3 = 2`) has the closed-loop and error transfer functions
+
+.. math::
+
+    H(s) = \frac{2\omega_0 s^2 + 2\omega_0^2 s + \omega_0^3}{D(s)},\qquad
+    \frac{E(s)}{\Theta(s)} = \frac{s^3}{D(s)},\qquad
+    D(s) = s^3 + 2\omega_0 s^2 + 2\omega_0^2 s + \omega_0^3 = (s+\omega_0)(s^2+\omega_0 s+\omega_0^2).
+
+For an acceleration step of size :math:`R` (input :math:`\theta = R t^2/2`) the tracking
+error is :math:`E(s) = R/D(s)`, whose inverse transform is (SP Sec. 2.5, the equation above
+Fig. 2.1, with the exponent read as :math:`-\omega_0 t/2`)
+
+.. math::
+
+    \Delta\Phi(t) = \frac{R}{\omega_0^2}\Big[e^{-\omega_0 t}
+        + \frac{e^{-\omega_0 t/2}}{\sqrt3}\Big(\sin\tfrac{\sqrt3}{2}\omega_0 t
+        - \sqrt3\cos\tfrac{\sqrt3}{2}\omega_0 t\Big)\Big].
+
+Its peak is :math:`f_{\max} R/\omega_0^2` with :math:`f_{\max} = 0.404453` at
+:math:`\omega_0 t = 2.05439`. For a jerk of size :math:`J` (input :math:`J t^3/6`) the error is
+
+.. math::
+
+    \frac{J}{\omega_0^3}\Big[1 - e^{-\omega_0 t}
+        - \tfrac{2}{\sqrt3}e^{-\omega_0 t/2}\sin\tfrac{\sqrt3}{2}\omega_0 t\Big].
+
+Since the peak error scales as :math:`R/\omega_0^2`, the natural frequency that keeps the
+same peak under a smaller (aided) step scales as the square root of the step ratio
+(SP Eq. 2.1).
+
+Distances are converted to phase with an explicit wavelength: one cycle (360 degrees) per
+``wavelength_m`` metres, so that the convention is visible wherever it is used.
+
+References
+----------
+.. [SP] G. T. Schmidt and R. E. Phillips, "INS/GPS Integration Architecture Performance
+   Comparisons", NATO RTO-EN-SET-116, Sec. 2.5, Fig. 2.1, Eq. (2.1), Table 2.6.
+.. [Kaplan] E. D. Kaplan and C. J. Hegarty (eds.), *Understanding GPS: Principles and
+   Applications*, 2nd ed., Table 5.6 (loop noise bandwidth of a third-order loop).
+"""
+
+from __future__ import annotations
+
+import math
+from functools import cache
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+from scipy.optimize import minimize_scalar
+
+from navcore._validate import as_finite_array, require_nonnegative, require_positive
+
+__all__ = [
+    "PEAK_TIME_FACTOR",
+    "aided_natural_frequency",
+    "distance_to_phase_deg",
+    "error_transfer_coefficients",
+    "jerk_pulse_error",
+    "natural_frequency_for_peak_error",
+    "peak_factor",
+    "third_order_loop_jerk_error",
+    "third_order_loop_step_error",
+    "third_order_noise_bandwidth_hz",
+    "third_order_peak_step_error",
+    "wavelength_for_peak_error",
+]
+
+Array = NDArray[np.float64]
+_S3 = math.sqrt(3.0)
+
+
+def distance_to_phase_deg(distance_m: ArrayLike, wavelength_m: float) -> Array | float:
+    """Convert a distance (or its derivatives) to phase in degrees: 360 deg per wavelength.
+
+    Parameters
+    ----------
+    distance_m : array_like
+        Distance, velocity or acceleration in metres (per second, per second squared).
+    wavelength_m : float
+        Metres per cycle of the tracked signal (the L1 carrier is 0.1903 m).
+
+    Examples
+    --------
+    >>> float(distance_to_phase_deg(0.5, 2.0))
+    90.0
+    """
+    require_positive("wavelength_m", wavelength_m)
+    out = 360.0 * as_finite_array("distance_m", distance_m) / wavelength_m
+    return float(out) if out.ndim == 0 else out
+
+
+def error_transfer_coefficients(omega0: float) -> tuple[Array, Array]:
+    """Numerator and denominator of :math:`E(s)/\\Theta(s) = s^3/D(s)` (highest power first).
+
+    Useful for independent time-domain checks (``scipy.signal.lsim``).
+    """
+    require_positive("omega0", omega0)
+    return np.array([1.0, 0.0, 0.0, 0.0]), np.array([1.0, 2 * omega0, 2 * omega0**2, omega0**3])
+
+
+def third_order_loop_step_error(t_s: ArrayLike, step: float, omega0: float) -> Array | float:
+    """Tracking error of the third-order loop after an acceleration step (SP Sec. 2.5).
+
+    Parameters
+    ----------
+    t_s : array_like
+        Time since the step, s (>= 0).
+    step : float
+        Step size in phase units per s^2 (deg/s^2 gives degrees; m/s^2 gives metres).
+    omega0 : float
+        Natural frequency, rad/s.
+
+    Returns
+    -------
+    Error in the units of ``step`` times s^2: zero at t = 0 and as t -> infinity.
+
+    Examples
+    --------
+    >>> round(float(third_order_loop_step_error(2.05439, 1.0, 1.0)), 6)
+    0.404453
+    """
+    require_positive("omega0", omega0)
+    t = as_finite_array("t_s", t_s)
+    if np.any(t < 0):
+        raise ValueError("t_s must be >= 0")
+    tau = omega0 * t
+    out = (step / omega0**2) * (
+        np.exp(-tau) + np.exp(-tau / 2) / _S3 * (np.sin(_S3 / 2 * tau) - _S3 * np.cos(_S3 / 2 * tau))
+    )
+    return float(out) if out.ndim == 0 else out
+
+
+def third_order_loop_jerk_error(t_s: ArrayLike, jerk: float, omega0: float) -> Array | float:
+    """Tracking error of the third-order loop after a jerk starts at t = 0 (input J t^3/6).
+
+    The inverse Laplace transform of :math:`J/(s D(s))`; it settles at :math:`J/\\omega_0^3`.
+    """
+    require_positive("omega0", omega0)
+    t = as_finite_array("t_s", t_s)
+    if np.any(t < 0):
+        raise ValueError("t_s must be >= 0")
+    tau = omega0 * t
+    out = (jerk / omega0**3) * (1.0 - np.exp(-tau) - 2.0 / _S3 * np.exp(-tau / 2) * np.sin(_S3 / 2 * tau))
+    return float(out) if out.ndim == 0 else out
+
+
+def jerk_pulse_error(t_s: ArrayLike, jerk: float, duration_s: float, omega0: float) -> Array | float:
+    """Error for a jerk lasting ``duration_s`` (acceleration ramps to ``jerk*duration_s``, then holds).
+
+    By linearity: the jerk response minus the same response delayed by the duration.
+    """
+    require_nonnegative("duration_s", duration_s)
+    t = as_finite_array("t_s", t_s)
+    late = np.clip(t - duration_s, 0.0, None)
+    out = np.asarray(third_order_loop_jerk_error(t, jerk, omega0)) - np.where(
+        t > duration_s, third_order_loop_jerk_error(late, jerk, omega0), 0.0
+    )
+    return float(out) if out.ndim == 0 else out
+
+
+@cache
+def _peak() -> tuple[float, float]:
+    res = minimize_scalar(
+        lambda tau: -third_order_loop_step_error(tau, 1.0, 1.0),
+        bounds=(1.0, 3.5),
+        method="bounded",
+        options={"xatol": 1e-12},
+    )
+    return float(-res.fun), float(res.x)
+
+
+def peak_factor() -> float:
+    """:math:`f_{\\max}`: peak of the unit-step error at unit natural frequency (0.404453).
+
+    Examples
+    --------
+    >>> round(peak_factor(), 6)
+    0.404453
+    """
+    return _peak()[0]
+
+
+#: :math:`\omega_0 t` at which the step error peaks (2.05439).
+PEAK_TIME_FACTOR = _peak()[1]
+
+
+def third_order_peak_step_error(step: float, omega0: float) -> float:
+    """Peak tracking error :math:`f_{\\max} R/\\omega_0^2` for an acceleration step ``R``."""
+    require_positive("omega0", omega0)
+    return peak_factor() * step / omega0**2
+
+
+def natural_frequency_for_peak_error(step: float, peak_error: float) -> float:
+    """Natural frequency (rad/s) at which the step error peaks at ``peak_error``.
+
+    ``step`` and ``peak_error`` share a unit (deg/s^2 and deg, or m/s^2 and m).
+    """
+    require_positive("step", step)
+    require_positive("peak_error", peak_error)
+    return math.sqrt(peak_factor() * step / peak_error)
+
+
+def wavelength_for_peak_error(accel_mps2: float, omega0: float, peak_deg: float) -> float:
+    """Wavelength (m per cycle) at which an ``accel_mps2`` step gives a ``peak_deg`` peak at ``omega0``."""
+    require_positive("accel_mps2", accel_mps2)
+    require_positive("peak_deg", peak_deg)
+    return 360.0 * third_order_peak_step_error(accel_mps2, omega0) / peak_deg
+
+
+def aided_natural_frequency(
+    step_aided: ArrayLike, step_unaided: float, omega0_unaided: float
+) -> Array | float:
+    """Natural frequency that keeps the unaided peak error under a smaller aided step (SP Eq. 2.1).
+
+    :math:`\\omega_{0,aided} = \\sqrt{R_{aided}/R_{unaided}}\\,\\omega_{0,unaided}`.
+
+    Examples
+    --------
+    >>> round(float(aided_natural_frequency(0.011, 6.0, 18.0)), 4)
+    0.7707
+    """
+    require_positive("step_unaided", step_unaided)
+    require_positive("omega0_unaided", omega0_unaided)
+    r = as_finite_array("step_aided", step_aided)
+    if np.any(r < 0):
+        raise ValueError("step_aided must be >= 0")
+    out = np.sqrt(r / step_unaided) * omega0_unaided
+    return float(out) if out.ndim == 0 else out
+
+
+def third_order_noise_bandwidth_hz(omega0: float, a3: float = 2.0, b3: float = 2.0) -> float:
+    """One-sided noise bandwidth (Hz) of a third-order loop with coefficients ``a3``, ``b3``.
+
+    :math:`B_n = \\omega_0 (a_3 b_3^2 + a_3^2 - b_3) / (4 (a_3 b_3 - 1))`; for the Butterworth
+    loop (a3 = b3 = 2) this is :math:`5\\omega_0/6` (Kaplan Table 5.6 uses a3 = 1.1, b3 = 2.4).
+    """
+    require_positive("omega0", omega0)
+    if a3 * b3 <= 1:
+        raise ValueError("a3*b3 must exceed 1 for a stable loop")
+    return omega0 * (a3 * b3**2 + a3**2 - b3) / (4.0 * (a3 * b3 - 1.0))
