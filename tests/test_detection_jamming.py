@@ -95,7 +95,7 @@ def test_design_point_inversion() -> None:
 
 def test_literal_a9_rule_differs() -> None:
     """Oracle: binomial probabilities of the two readings at K=10, q=0.3, t=0.2."""
-    assert float(jm.list_rule_false_alarm_probability(0.3, 10, 0.2)) == pytest.approx(
+    assert float(jm.empty_list_rule_detection_probability(0.3, 10, 0.2)) == pytest.approx(
         stats.binom.cdf(2, 10, 0.7), rel=1e-12
     )
     assert float(jm.list_rule_detection_probability(0.3, 10, 0.2)) == pytest.approx(

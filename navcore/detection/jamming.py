@@ -44,13 +44,13 @@ __all__ = [
     "SurveillanceGeometry",
     "binary_divergence",
     "detection_lower_bound",
+    "empty_list_rule_detection_probability",
     "filter_detection_probability_for_bound",
     "jammer_erp_dbw",
     "jammer_ratio_threshold_db",
     "list_probability_for_detection_bound",
     "list_rule_detection_probability",
     "list_rule_exponent",
-    "list_rule_false_alarm_probability",
     "list_rule_optimal_nu",
     "log1mexp",
     "log_ambiguous_detection_bound",
@@ -254,7 +254,7 @@ def list_rule_detection_probability(q: ArrayLike, k: int, t: float = 0.0) -> Flo
     return stats.binom.sf(math.floor(k * t), k, as_finite_array("q", q))
 
 
-def list_rule_false_alarm_probability(q: ArrayLike, k: int, t: float = 0.0) -> FloatArray:
+def empty_list_rule_detection_probability(q: ArrayLike, k: int, t: float = 0.0) -> FloatArray:
     """Same rule under the paper's literal (A.9)/(A.10): "H1 if at most ``K t`` lists are
     empty", i.e. ``P(K_0 <= K t)`` with ``K_0 ~ Binomial(K, 1 - q)``. Kept to show that it is
     not the rule the bounds use (at ``t = 0`` it is ``q**K``)."""
