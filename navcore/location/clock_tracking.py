@@ -77,7 +77,7 @@ def psi(alpha: np.ndarray | float) -> np.ndarray | float:
     Examples
     --------
     >>> round(float(psi(1.61e-2)), 5)
-    0.40196
+    0.40204
     """
     a = as_finite_array("alpha", alpha)
     if np.any(a < 0):

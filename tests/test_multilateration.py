@@ -1,0 +1,135 @@
+"""Multilateration geometry against independent constructions (pymap3d, brute force)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pymap3d
+import pytest
+
+from navcore.location.multilateration import (
+    EARTH_MEAN_RADIUS_M,
+    beta_parameter,
+    clock_direction_term,
+    constellation_parameters,
+    frame_dependent_clock_term,
+    geometric_dilution,
+    geometric_dilution_covariance,
+    line_of_sight_matrix,
+    most_widely_spaced_triplet,
+    position_on_sphere,
+    position_trace,
+    synchronous_orbit_radius,
+    zenith_angles_deg,
+)
+
+SATS_I = np.array(
+    [(14.9, 152.7), (63.4, 115.0), (36.6, 101.8), (51.0, 123.2), (51.0, 106.8), (60.1, 80.5), (60.1, 79.5)]
+)
+R_RATIO = 42_164.17 / 6371.0
+
+
+def _geometry(ratio: float = R_RATIO):
+    sats = position_on_sphere(SATS_I[:, 0], SATS_I[:, 1], ratio * EARTH_MEAN_RADIUS_M)
+    ac = position_on_sphere(45.0, 120.0, EARTH_MEAN_RADIUS_M)
+    return sats, ac
+
+
+def test_synchronous_radius_kepler():
+    """Oracle: the textbook GEO radius 42 164 km."""
+    assert synchronous_orbit_radius() == pytest.approx(42_164.17e3, rel=1e-6)
+
+
+def test_positions_match_pymap3d_sphere():
+    """Oracle: pymap3d geodetic2ecef on a spherical ellipsoid (altitude = r - R)."""
+    sphere = pymap3d.Ellipsoid(EARTH_MEAN_RADIUS_M, EARTH_MEAN_RADIUS_M)
+    sats, _ = _geometry()
+    for (lat, lon), s in zip(SATS_I, sats, strict=True):
+        ref = pymap3d.geodetic2ecef(lat, lon, (R_RATIO - 1.0) * EARTH_MEAN_RADIUS_M, ell=sphere)
+        np.testing.assert_allclose(s, ref, rtol=1e-12, atol=1e-3)
+
+
+def test_zenith_angles_match_pymap3d_elevation():
+    """Oracle: pymap3d ecef2aer elevation; zenith = 90 deg - elevation."""
+    sphere = pymap3d.Ellipsoid(EARTH_MEAN_RADIUS_M, EARTH_MEAN_RADIUS_M)
+    sats, ac = _geometry()
+    zen = zenith_angles_deg(sats, ac)
+    for s, z in zip(sats, zen, strict=True):
+        _, el, _ = pymap3d.ecef2aer(*s, 45.0, 120.0, 0.0, ell=sphere)
+        assert z == pytest.approx(90.0 - float(el), abs=1e-9)
+    assert zen[0] == pytest.approx(47.18, abs=0.01)
+
+
+def test_invariants_match_pymap3d_enu_frame():
+    """Oracle: unit vectors rebuilt in the local ENU frame from pymap3d azimuth/elevation.
+
+    beta, tr{(F'F)^-1}, S and the K = 3 invariant are rotation invariant; the printed
+    K = 3 term 1'(F'F)^-1 1 is not.
+    """
+    sphere = pymap3d.Ellipsoid(EARTH_MEAN_RADIUS_M, EARTH_MEAN_RADIUS_M)
+    sats, ac = _geometry()
+    U = line_of_sight_matrix(sats, ac)
+    rows = []
+    for s in sats:
+        az, el, _ = pymap3d.ecef2aer(*s, 45.0, 120.0, 0.0, ell=sphere)
+        az, el = math.radians(float(az)), math.radians(float(el))
+        rows.append([-math.cos(el) * math.sin(az), -math.cos(el) * math.cos(az), -math.sin(el)])
+    V = np.array(rows)
+    for f in (beta_parameter, position_trace, clock_direction_term):
+        assert f(U) == pytest.approx(f(V), rel=1e-9)
+    assert clock_direction_term(U[:3]) == pytest.approx(clock_direction_term(V[:3]), rel=1e-9)
+    assert abs(frame_dependent_clock_term(U[:3]) - frame_dependent_clock_term(V[:3])) > 0.5
+
+
+def test_k3_clock_term_equals_ffprime_inverse():
+    """Oracle: closed form 1'(FF')^-1 1 for a square F."""
+    sats, ac = _geometry()
+    F = line_of_sight_matrix(sats, ac)[:3]
+    assert clock_direction_term(F) == pytest.approx(float(np.ones(3) @ np.linalg.solve(F @ F.T, np.ones(3))))
+    assert beta_parameter(F) == pytest.approx(0.0, abs=1e-12)
+
+
+def test_dilution_any_differencing_matrix():
+    """Oracle: Eq. 4.1.1 with random zero-row-sum H equals tr + S/beta (Eq. 4.5.6/4.5.7)."""
+    sats, ac = _geometry()
+    F = line_of_sight_matrix(sats, ac)
+    rng = np.random.default_rng(3)
+    K = F.shape[0]
+    p = constellation_parameters(F)
+    for _ in range(3):
+        H = rng.normal(size=(K - 1, K))
+        H -= H.mean(axis=1, keepdims=True)
+        P = geometric_dilution_covariance(F, H)
+        assert np.trace(P) == pytest.approx(p.trace + p.clock_term / p.beta, rel=1e-9)
+    assert geometric_dilution(F) ** 2 == pytest.approx(np.trace(geometric_dilution_covariance(F)), rel=1e-9)
+
+
+def test_beta_brute_force_projection():
+    """Oracle: beta = K - 1'F(F'F)^-1F'1 with explicit inverse."""
+    sats, ac = _geometry(9.2351)
+    F = line_of_sight_matrix(sats, ac)
+    one = np.ones(F.shape[0])
+    ref = F.shape[0] - one @ F @ np.linalg.inv(F.T @ F) @ F.T @ one
+    assert beta_parameter(F) == pytest.approx(ref, rel=1e-9)
+    assert beta_parameter(F) == pytest.approx(0.0543, rel=0.005)
+
+
+def test_triplet_brute_force():
+    """Oracle: exhaustive loop over all triplets by smallest trace."""
+    sats, ac = _geometry()
+    U = line_of_sight_matrix(sats, ac)
+    best = min(
+        ((i, j, k) for i in range(7) for j in range(i + 1, 7) for k in range(j + 1, 7)),
+        key=lambda t: np.trace(np.linalg.inv(U[list(t)].T @ U[list(t)])),
+    )
+    assert most_widely_spaced_triplet(sats, ac, 90.0)[0] == best == (0, 1, 2)
+    # inside the 45 deg cone satellite 1 (index 0) is excluded
+    assert 0 not in most_widely_spaced_triplet(sats, ac, 45.0)[0]
+
+
+def test_bad_input_raises():
+    with pytest.raises(ValueError, match="F must"):
+        beta_parameter(np.ones((2, 3)))
+    with pytest.raises(ValueError, match="criterion"):
+        most_widely_spaced_triplet(*_geometry(), criterion="bogus")
