@@ -32,6 +32,7 @@ from navcore.location.clock_tracking import (
     gain_recursion,
     psi,
     simulate_tracker,
+    three_satellite_clock_variance,
     three_satellite_clock_variance_steady,
 )
 from navcore.location.multilateration import (
@@ -294,6 +295,24 @@ def outage_rms_ft(example: str, sigma0: float, m: np.ndarray, inputs: dict[str, 
     """Steady-state rms position error m epochs after the drop to three satellites (ft)."""
     v = three_satellite_clock_variance_steady(inputs["beta"], SIGMA_NS, sigma0, m)
     return C_FT_PER_NS * np.sqrt(SIGMA_NS**2 * inputs["trace_123"] + v * inputs["s_123"])
+
+
+def rms_history_ft(
+    inputs: dict[str, float], sigma0: float, n_last: int, m_after: int
+) -> tuple[np.ndarray, np.ndarray]:
+    """rms position error (ft) for n = 0..N (all satellites) and N+1..N+M (satellites 1, 2, 3).
+
+    Least squares at n = 0, the optimal gain recursion for 1..N, the exact extrapolation
+    variance after the drop (finite N). ``inputs`` holds the Table 4.2 quantities; pass
+    ``s_123`` as the printed value or the invariant.
+    """
+    h = gain_recursion(inputs["beta"], SIGMA_NS, sigma0, n_last)
+    before = SIGMA_NS**2 * (inputs["trace_all"] + h.gamma * inputs["s_all"])
+    m = np.arange(1, m_after + 1)
+    v = three_satellite_clock_variance(h.gamma[-1], h.cross[-1], SIGMA_NS, sigma0, m)
+    after = SIGMA_NS**2 * inputs["trace_123"] + v * inputs["s_123"]
+    n = np.arange(n_last + m_after + 1)
+    return n, C_FT_PER_NS * np.sqrt(np.concatenate([before, after]))
 
 
 #: The acceptability threshold inferred for rule of thumb (4): 1.8 x the all-satellite LS rms.
