@@ -46,6 +46,7 @@ __all__ = [
     "dcm_from_quat_batch",
     "earth_rate_ned",
     "quat_multiply_batch",
+    "strapdown_interval",
     "strapdown_step",
     "transport_rate_ned",
 ]
@@ -207,3 +208,56 @@ def strapdown_step(
     # position (Eq. 7)
     x1 = state.pos + 0.5 * (state.vel + v1) * dt
     return NavState(x1, v1, q1)
+
+
+def strapdown_interval(
+    state: NavState, omega_ib_b: ArrayLike, f_ib_b: ArrayLike, dt: float, gravity: float = G0
+) -> tuple[NavState, Array]:
+    """Advance the simplified mechanization (all switches off) over ``S`` IMU intervals at once.
+
+    Same arithmetic as ``S`` calls of :func:`strapdown_step` with the default
+    :class:`MechanizationTerms`, but vectorised over the intervals as well as the runs: the
+    attitude increments are chained with a parallel prefix product of quaternions
+    (``log2 S`` Hamilton products), velocity and position with cumulative sums.
+
+    Parameters
+    ----------
+    state : NavState
+        State at the start (leading run axis ``N``).
+    omega_ib_b, f_ib_b : (N, S, 3) arrays
+        Angular rate (rad/s) and specific force (m/s^2) of each of the ``S`` intervals.
+    dt : float
+        IMU interval (s).
+    gravity : float
+        Local gravity along +down (m/s^2).
+
+    Returns
+    -------
+    state : NavState
+        The state after the ``S`` intervals.
+    f_n : (N, S, 3) array
+        The specific force resolved in NED in each interval (for the error model's F23).
+    """
+    require_positive("dt", dt)
+    w = np.asarray(omega_ib_b, dtype=float)
+    f = np.asarray(f_ib_b, dtype=float)
+    N, S = w.shape[:2]
+    dq = quat_from_rotvec(w * dt)  # (N, S, 4)
+    # inclusive prefix product P_i = dq_0 ⊗ ... ⊗ dq_i (Hillis-Steele scan)
+    pref = dq.copy()
+    d = 1
+    while d < S:
+        pref[:, d:] = quat_multiply_batch(pref[:, :-d], pref[:, d:])
+        d *= 2
+    q0 = state.quat[:, None, :]
+    start = np.concatenate([np.broadcast_to(q0, (N, 1, 4)), quat_multiply_batch(q0, pref[:, :-1])], axis=1)
+    q_mid = quat_multiply_batch(start, quat_from_rotvec(0.5 * w * dt))
+    f_n = np.einsum("nsij,nsj->nsi", dcm_from_quat_batch(q_mid), f)
+    acc = f_n.copy()
+    acc[..., 2] += gravity
+    v_all = state.vel[:, None, :] + np.cumsum(acc, axis=1) * dt  # v_1 .. v_S
+    v_prev = np.concatenate([state.vel[:, None, :], v_all[:, :-1]], axis=1)
+    x_end = state.pos + 0.5 * dt * np.sum(v_prev + v_all, axis=1)
+    q_end = quat_multiply_batch(state.quat, pref[:, -1])
+    q_end = q_end / np.linalg.norm(q_end, axis=-1, keepdims=True)
+    return NavState(x_end, v_all[:, -1], q_end), f_n

@@ -1,0 +1,553 @@
+r"""Tightly coupled, indirect feedback INS/GPS extended Kalman filter, batched over Monte Carlo runs.
+
+Structure (KZL Sec. 3.5, Fig. 3):
+
+1. the strapdown mechanization (:mod:`navcore.inertial.strapdown`) runs at the IMU rate on
+   bias-corrected sensor data;
+2. the 17-state error covariance (:mod:`navcore.inertial.error_model17`) is predicted at the
+   GPS rate with the exact transition :math:`e^{FT}` (a cubic, F being nilpotent) and the
+   exact discrete noise :math:`Q_d = \int_0^T e^{Fs} GQG^T e^{F^Ts} ds` (Gauss-Legendre with
+   four nodes, exact for the degree-6 polynomial integrand);
+3. at each GPS epoch the measurements ``y = predicted - measured`` are processed one scalar
+   at a time (correlated DD phases are whitened first with the Cholesky factor of their
+   covariance), which gives the same posterior as one batch update;
+4. feedback: position, velocity, biases and clock are corrected by subtraction, the
+   attitude by the n-frame rotation :math:`q^+ = q(-\Delta\hat\psi)\otimes q^-`
+   (:func:`correct_attitude`), and the error state is reset to zero.
+
+Everything carries a leading run axis so that ``N`` Monte Carlo runs advance together.
+
+References
+----------
+.. [1] S. Knedlik, J. Zhou, O. Loffeld (2009), Secs. 3.4-3.6.
+.. [2] P. S. Maybeck, Stochastic Models, Estimation, and Control, Vol. 1 (1979), Sec. 7.6.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Literal
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from navcore._validate import require_integer, require_positive
+from navcore.estimation.kalman import symmetrize
+from navcore.frames import dcm_from_euler, quat_from_dcm, quat_from_rotvec
+from navcore.gnss.carrier_phase import DEFAULT_BASELINES_B, dd_covariance
+from navcore.inertial.alignment import heading_from_velocity, levelling
+from navcore.inertial.error_model17 import ERROR_LAYOUT_17, error_dynamics_17, transition_exact
+from navcore.inertial.imu import ImuSpec
+from navcore.inertial.strapdown import (
+    NavState,
+    dcm_from_quat_batch,
+    quat_multiply_batch,
+    strapdown_interval,
+)
+from navcore.units import G0, GPS_L1_WAVELENGTH_M
+
+__all__ = [
+    "MODES",
+    "GnssNoise",
+    "MonteCarloResult",
+    "Scenario",
+    "correct_attitude",
+    "discrete_noise_nilpotent",
+    "euler_batch",
+    "euler_jacobian_batch",
+    "run_monte_carlo",
+    "sequential_scalar_updates",
+]
+
+Array = NDArray[np.float64]
+Mode = Literal["ins", "tc", "tc_att", "tc_dd"]
+#: Filter configurations: stand-alone INS, tightly coupled (code + delta range), plus Euler
+#: attitude from a multi-antenna receiver (Eq. 12), plus double-difference phases (Eq. 17).
+MODES = ("ins", "tc", "tc_att", "tc_dd")
+
+L = ERROR_LAYOUT_17
+_P, _V, _A = L.slice("position"), L.slice("velocity"), L.slice("misalignment")
+_BA, _BG = L.slice("accel bias"), L.slice("gyro bias")
+_CB, _CD = L.index("clock bias"), L.index("clock drift")
+
+
+# --- small batched helpers ----------------------------------------------------------------
+def correct_attitude(q: ArrayLike, dpsi: ArrayLike, side: Literal["left", "right"] = "left") -> Array:
+    """Remove an estimated n-frame attitude error ``dpsi`` (rad) from ``q_bn`` (KZL Sec. 3.5).
+
+    ``side="left"`` applies the n-frame rotation ``q(-dpsi) ⊗ q`` (correct for
+    :math:`\\hat R = (I + [\\Delta\\psi\\times]) R`); ``side="right"`` is the printed order
+    ``q ⊗ q(-dpsi)``, which rotates about *body* axes instead.
+    """
+    if side not in ("left", "right"):
+        raise ValueError(f"side must be 'left' or 'right', got {side!r}")
+    q = np.asarray(q, dtype=float)
+    dq = quat_from_rotvec(-np.asarray(dpsi, dtype=float))
+    out = quat_multiply_batch(dq, q) if side == "left" else quat_multiply_batch(q, dq)
+    return out / np.linalg.norm(out, axis=-1, keepdims=True)
+
+
+def euler_batch(C: Array) -> Array:
+    """Roll, pitch, yaw (rad) of body-to-NED matrices ``(..., 3, 3)``: shape ``(..., 3)``."""
+    pitch = np.arcsin(np.clip(-C[..., 2, 0], -1.0, 1.0))
+    roll = np.arctan2(C[..., 2, 1], C[..., 2, 2])
+    yaw = np.arctan2(C[..., 1, 0], C[..., 0, 0])
+    return np.stack([roll, pitch, yaw], axis=-1)
+
+
+def euler_jacobian_batch(C: Array) -> Array:
+    """``d(roll, pitch, yaw)/d(dpsi) = J_b^{-1} C^T`` for ``C = (I + [dpsi x]) C0`` (batched)."""
+    e = euler_batch(C)
+    sr, cr, tp, cp = np.sin(e[..., 0]), np.cos(e[..., 0]), np.tan(e[..., 1]), np.cos(e[..., 1])
+    one, zero = np.ones_like(sr), np.zeros_like(sr)
+    Jb = np.stack(
+        [
+            np.stack([one, sr * tp, cr * tp], -1),
+            np.stack([zero, cr, -sr], -1),
+            np.stack([zero, sr / cp, cr / cp], -1),
+        ],
+        -2,
+    )
+    return Jb @ np.swapaxes(C, -1, -2)
+
+
+def _wrap(a: Array) -> Array:
+    return (a + np.pi) % (2 * np.pi) - np.pi
+
+
+def _dd_phase_batch(pos: Array, ant: Array, sat_n: Array, sat_m: Array) -> Array:
+    """DD phase (rad) of KZL Eq. 15 for runs ``pos (N, 3)`` and antenna offsets ``ant (N, nb, 3)``.
+
+    Cancellation-free form of :func:`navcore.gnss.carrier_phase.double_difference_phase`.
+    """
+
+    def rdiff(sat: Array) -> Array:
+        a0 = pos[:, None, :]
+        ai = a0 + ant
+        num = np.sum((a0 - ai) * (2.0 * sat - a0 - ai), axis=-1)
+        return num / (np.linalg.norm(sat - ai, axis=-1) + np.linalg.norm(sat - a0, axis=-1))
+
+    return 2 * np.pi / GPS_L1_WAVELENGTH_M * (rdiff(sat_n) - rdiff(sat_m))
+
+
+def discrete_noise_nilpotent(F: Array, GQGt: Array, dt: float) -> Array:
+    """:math:`Q_d=\\int_0^{dt} e^{Fs} GQG^T e^{F^Ts} ds` for ``F^4 = 0`` (batched over F).
+
+    ``e^{Fs}`` is a cubic in ``s``, so the integrand is a polynomial of degree 6 and the
+    four-node Gauss-Legendre rule is exact.
+    """
+    require_positive("dt", dt)
+    nodes, weights = np.polynomial.legendre.leggauss(4)
+    Qd = np.zeros_like(np.asarray(F, dtype=float))
+    for s, w in zip(0.5 * dt * (nodes + 1.0), 0.5 * dt * weights, strict=True):
+        Phi = transition_exact(F, s) if s > 0 else np.broadcast_to(np.eye(F.shape[-1]), F.shape)
+        Qd = Qd + w * Phi @ GQGt @ np.swapaxes(Phi, -1, -2)
+    return symmetrize(Qd)
+
+
+def sequential_scalar_updates(x: Array, P: Array, y: Array, H: Array, r: Array) -> tuple[Array, Array]:
+    """Process measurements one scalar at a time, for a batch of runs.
+
+    Parameters
+    ----------
+    x : (N, n) array
+        Error-state estimates.
+    P : (N, n, n) array
+        Covariances.
+    y : (N, m) array
+        Measurements ``y = H x + v`` with uncorrelated noise of variances ``r``.
+    H : (N, m, n) array
+        Rows.
+    r : (m,) array
+        Noise variances.
+
+    Returns
+    -------
+    x, P : arrays
+        Posterior; equal to one batch update with ``R = diag(r)`` (the Joseph form is used for
+        each scalar step, :func:`navcore.estimation.kf_update` is the batch oracle in the tests).
+    """
+    n = x.shape[-1]
+    eye = np.eye(n)
+    for j in range(y.shape[-1]):
+        h = H[:, j, :]
+        Ph = np.einsum("nij,nj->ni", P, h)
+        s = np.einsum("ni,ni->n", h, Ph) + r[j]
+        K = Ph / s[:, None]
+        x = x + K * (y[:, j] - np.einsum("ni,ni->n", h, x))[:, None]
+        IKH = eye - K[:, :, None] * h[:, None, :]
+        P = IKH @ P @ np.swapaxes(IKH, -1, -2) + r[j] * K[:, :, None] * K[:, None, :]  # Joseph
+    return x, symmetrize(P)
+
+
+# --- scenario ---------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class GnssNoise:
+    """1-sigma GPS measurement noises (assumptions: the paper gives none).
+
+    Attributes
+    ----------
+    pseudorange : float
+        Code pseudorange (m).
+    delta_range : float
+        Delta range / pseudorange rate (m/s).
+    phase : float
+        Undifferenced carrier phase per antenna and satellite (m); DDs have 4x its variance.
+    attitude : float
+        Each Euler angle from the multi-antenna attitude system (rad).
+    """
+
+    pseudorange: float = 3.0
+    delta_range: float = 0.05
+    phase: float = 0.003
+    attitude: float = 0.003
+
+
+@dataclass(frozen=True)
+class Scenario:
+    """A straight, unaccelerated flight observed by an IMU and a GPS receiver.
+
+    Attributes
+    ----------
+    velocity_ned : (3,) array
+        Constant true velocity (m/s).
+    attitude : (3,) array
+        Nominal roll, pitch, heading (rad); each run adds a heading offset ``heading_sigma``.
+    duration, imu_rate, gps_rate : float
+        Seconds and Hz.
+    imu : ImuSpec
+        Turn-on biases and scale factors (random constants per run) and white noises.
+    sat_pos_ned, sat_vel_ned : (n_epochs + 1, n_sat, 3) arrays
+        Satellite positions/velocities in the fixed NED frame of the origin at each epoch.
+    n_visible : (n_epochs + 1,) int array
+        How many satellites are tracked at each epoch: the first ``n_visible[k]`` in
+        priority order (index 0 is the master satellite of the DDs).
+    gnss : GnssNoise
+        Measurement noises.
+    init_time : float
+        Averaging time (s) of the initialisation (levelling, gyro-bias and vertical
+        accelerometer calibration).
+    heading_sigma : float
+        1-sigma true heading offset from the GPS track (crab angle), rad: what Eq. 4 cannot see.
+    pos0_sigma, vel0_sigma : float
+        Errors of the initial GPS position (m) and velocity (m/s).
+    clock_bias_sigma, clock_drift_sigma : float
+        Initial clock uncertainty (m, m/s).
+    clock_phase_walk, clock_drift_walk : float
+        Clock random walks, root PSD (m/sqrt(s), m/s/sqrt(s)).
+    accel_bias_walk, gyro_bias_walk : float
+        Filter tuning of the bias random walks (the truth biases are constant).
+    baselines_b : (2, 3) array
+        Antenna baselines A0->A1, A0->A2 in body axes (m).
+    """
+
+    velocity_ned: Array
+    attitude: Array
+    duration: float
+    imu_rate: float
+    gps_rate: float
+    imu: ImuSpec
+    sat_pos_ned: Array
+    sat_vel_ned: Array
+    n_visible: NDArray[np.int64]
+    gnss: GnssNoise = field(default_factory=GnssNoise)
+    init_time: float = 300.0
+    heading_sigma: float = 0.0
+    pos0_sigma: float = 3.0
+    vel0_sigma: float = 0.05
+    clock_bias_sigma: float = 30.0
+    clock_drift_sigma: float = 1.0
+    clock_phase_walk: float = 0.1
+    clock_drift_walk: float = 0.2
+    accel_bias_walk: float = 1e-5
+    gyro_bias_walk: float = 1e-6
+    baselines_b: Array = field(default_factory=lambda: DEFAULT_BASELINES_B.copy())
+
+    @property
+    def n_epochs(self) -> int:
+        return round(self.duration * self.gps_rate)
+
+    @property
+    def steps_per_epoch(self) -> int:
+        return round(self.imu_rate / self.gps_rate)
+
+
+@dataclass(frozen=True)
+class MonteCarloResult:
+    """Errors (estimated - true) at each GPS epoch, for every run, and the filter's 1-sigma.
+
+    Attributes
+    ----------
+    t : (K,) array
+        Epoch times (s), ``K = n_epochs + 1``.
+    pos_err, vel_err : (N, K, 3) arrays
+        NED position (m) and velocity (m/s) errors.
+    att_err : (N, K, 3) arrays
+        Roll, pitch, heading errors (rad).
+    pos_sigma, vel_sigma, att_sigma : (K, 3) arrays
+        Filter 1-sigma (root of the run-averaged variance); attitude mapped to Euler angles.
+    n_visible : (K,) int array
+    """
+
+    t: Array
+    pos_err: Array
+    vel_err: Array
+    att_err: Array
+    pos_sigma: Array
+    vel_sigma: Array
+    att_sigma: Array
+    n_visible: NDArray[np.int64]
+
+    def rms(self, name: str) -> Array:
+        """RMS over runs of ``pos_err``, ``vel_err`` or ``att_err``: shape (K, 3)."""
+        return np.sqrt(np.mean(getattr(self, name) ** 2, axis=0))
+
+    def horizontal_rms(self, name: str) -> Array:
+        """RMS over runs of the horizontal (north-east) norm: shape (K,)."""
+        e = getattr(self, name)
+        return np.sqrt(np.mean(e[..., 0] ** 2 + e[..., 1] ** 2, axis=0))
+
+
+def _gqgt(sc: Scenario) -> Array:
+    q = np.zeros(17)
+    q[_V] = sc.imu.accel_random_walk**2
+    q[_A] = sc.imu.gyro_random_walk**2
+    q[_BA] = sc.accel_bias_walk**2
+    q[_BG] = sc.gyro_bias_walk**2
+    q[_CB] = sc.clock_phase_walk**2
+    q[_CD] = sc.clock_drift_walk**2
+    return np.diag(q)
+
+
+def _initial_covariance(sc: Scenario, C0: Array, initialise: bool) -> Array:
+    """P0 of the error state, with the tilt/accel-bias correlation that levelling creates."""
+    P = np.zeros((17, 17))
+    P[_P, _P] = sc.pos0_sigma**2 * np.eye(3)
+    P[_V, _V] = sc.vel0_sigma**2 * np.eye(3)
+    P[_CB, _CB] = sc.clock_bias_sigma**2
+    P[_CD, _CD] = sc.clock_drift_sigma**2
+    imu = sc.imu
+    speed = float(np.hypot(sc.velocity_ned[0], sc.velocity_ned[1]))
+    if initialise:
+        T = sc.init_time
+        # levelling makes the computed specific force exactly vertical: beta = R dba (n-frame)
+        # and the tilt satisfy dpsi_n = beta_e / g, dpsi_e = -beta_n / g.
+        s_h2 = imu.accel_bias**2 + imu.accel_random_walk**2 / T
+        Sb = np.diag([s_h2, s_h2, imu.accel_random_walk**2 / T])
+        M = np.array([[0.0, 1.0 / G0, 0.0], [-1.0 / G0, 0.0, 0.0], [0.0, 0.0, 0.0]])
+        P[_A, _A] = M @ Sb @ M.T
+        P[_A.start + 2, _A.start + 2] = sc.heading_sigma**2 + (sc.vel0_sigma / speed) ** 2
+        P[_A, _BA] = M @ Sb @ C0
+        P[_BA, _A] = P[_A, _BA].T
+        P[_BA, _BA] = C0.T @ Sb @ C0
+        P[_BG, _BG] = imu.gyro_random_walk**2 / T * np.eye(3)
+    else:
+        P[_A, _A] = np.diag([0.0, 0.0, sc.heading_sigma**2])
+        P[_BA, _BA] = (imu.accel_bias**2 + (imu.accel_scale_factor * G0) ** 2 / 3) * np.eye(3)
+        P[_BG, _BG] = imu.gyro_bias**2 * np.eye(3)
+    return P
+
+
+def run_monte_carlo(
+    sc: Scenario,
+    mode: Mode,
+    n_runs: int,
+    seed: int,
+    *,
+    initialise: bool = True,
+    attitude_min_sats: int = 4,
+) -> MonteCarloResult:
+    """Seeded Monte Carlo of one filter configuration over ``n_runs`` runs, batched.
+
+    The same ``seed`` gives the same truth (IMU errors, noises, GPS noises) for every
+    ``mode``, so configurations are compared on common random numbers.
+
+    Parameters
+    ----------
+    sc : Scenario
+        The flight, the IMU, the satellites and the visibility schedule.
+    mode : {"ins", "tc", "tc_att", "tc_dd"}
+        Stand-alone INS, tightly coupled, plus Euler attitude (only with at least
+        ``attitude_min_sats`` satellites), plus double-difference phases.
+    n_runs, seed : int
+        Number of runs and the random seed.
+    initialise : bool
+        Levelling + GPS heading + gyro-bias/vertical-accelerometer calibration (KZL Sec. 3.1);
+        ``False`` starts from the nominal attitude with uncompensated sensors.
+    """
+    if mode not in MODES:
+        raise ValueError(f"mode must be one of {MODES}, got {mode!r}")
+    require_integer("n_runs", n_runs, minimum=1)
+    N = n_runs
+    rng = np.random.default_rng(seed)
+    imu = sc.imu
+    dt = 1.0 / sc.imu_rate
+    T = 1.0 / sc.gps_rate
+    K = sc.n_epochs
+    steps = sc.steps_per_epoch
+    v_true = np.asarray(sc.velocity_ned, dtype=float)
+    roll0, pitch0, yaw0 = (float(a) for a in sc.attitude)
+
+    # --- truth (constant attitude and velocity; flat non-rotating Earth, as in Eqs. 7-9) ---
+    yaw_true = yaw0 + sc.heading_sigma * rng.standard_normal(N)
+    C_true = np.stack([dcm_from_euler(roll0, pitch0, y) for y in yaw_true])
+    f_true_b = np.einsum("nji,j->ni", C_true, np.array([0.0, 0.0, -G0]))
+    b_g = imu.gyro_bias * rng.standard_normal((N, 3))
+    b_a = imu.accel_bias * rng.standard_normal((N, 3))
+    rng.standard_normal((N, 3))  # gyro scale factors: drawn for the record, the true rate is zero
+    s_a = imu.accel_scale_factor * rng.standard_normal((N, 3))
+    f_sensor_const = f_true_b * (1.0 + s_a) + b_a  # accelerometer output without noise
+    clock = np.stack(
+        [sc.clock_bias_sigma * rng.standard_normal(N), sc.clock_drift_sigma * rng.standard_normal(N)], -1
+    )
+
+    # --- initialisation (KZL Sec. 3.1) ---
+    Tinit = sc.init_time
+    pos_hat = sc.pos0_sigma * rng.standard_normal((N, 3))
+    v_meas0 = v_true + sc.vel0_sigma * rng.standard_normal((N, 3))
+    f_avg = f_sensor_const + imu.accel_random_walk / np.sqrt(Tinit) * rng.standard_normal((N, 3))
+    w_avg = b_g + imu.gyro_random_walk / np.sqrt(Tinit) * rng.standard_normal((N, 3))
+    if initialise:
+        roll_h, pitch_h = levelling(f_avg)
+        yaw_h = heading_from_velocity(v_meas0)
+        C_hat0 = np.stack([dcm_from_euler(r, p, y) for r, p, y in zip(roll_h, pitch_h, yaw_h, strict=True)])
+        bg_hat = w_avg.copy()
+        ba_hat = f_avg - np.einsum("nji,j->ni", C_hat0, np.array([0.0, 0.0, -G0]))
+    else:
+        C_hat0 = np.tile(dcm_from_euler(roll0, pitch0, yaw0), (N, 1, 1))
+        bg_hat = np.zeros((N, 3))
+        ba_hat = np.zeros((N, 3))
+    q_hat = np.stack([quat_from_dcm(C) for C in C_hat0])
+    nav = NavState(pos_hat, v_meas0.copy(), q_hat)
+    clock_hat = np.zeros((N, 2))
+    P = np.tile(_initial_covariance(sc, dcm_from_euler(roll0, pitch0, yaw0), initialise), (N, 1, 1))
+    GQGt = _gqgt(sc)
+    g = sc.gnss
+    k2pi = 2 * np.pi / GPS_L1_WAVELENGTH_M
+
+    out_pos = np.zeros((N, K + 1, 3))
+    out_vel = np.zeros((N, K + 1, 3))
+    out_att = np.zeros((N, K + 1, 3))
+    sig_pos = np.zeros((K + 1, 3))
+    sig_vel = np.zeros((K + 1, 3))
+    sig_att = np.zeros((K + 1, 3))
+    eul_true = euler_batch(C_true)
+
+    def record(k: int, t: float) -> None:
+        C_hat = dcm_from_quat_batch(nav.quat)
+        out_pos[:, k] = nav.pos - v_true * t
+        out_vel[:, k] = nav.vel - v_true
+        out_att[:, k] = _wrap(euler_batch(C_hat) - eul_true)
+        J = euler_jacobian_batch(C_hat)
+        sig_pos[k] = np.sqrt(np.mean(np.diagonal(P[:, _P, _P], axis1=1, axis2=2), axis=0))
+        sig_vel[k] = np.sqrt(np.mean(np.diagonal(P[:, _V, _V], axis1=1, axis2=2), axis=0))
+        Pe = J @ P[:, _A, _A] @ np.swapaxes(J, -1, -2)
+        sig_att[k] = np.sqrt(np.mean(np.diagonal(Pe, axis1=1, axis2=2), axis=0))
+
+    record(0, 0.0)
+    for k in range(1, K + 1):
+        # IMU noise for this second, drawn in the same order for every mode
+        n_a = imu.accel_random_walk / np.sqrt(dt) * rng.standard_normal((N, steps, 3))
+        n_g = imu.gyro_random_walk / np.sqrt(dt) * rng.standard_normal((N, steps, 3))
+        # 100 Hz strapdown on bias-corrected data (Eqs. 7-9), vectorised over the interval
+        w_hat = (b_g - bg_hat)[:, None, :] + n_g
+        f_hat = (f_sensor_const - ba_hat)[:, None, :] + n_a
+        nav, f_n = strapdown_interval(nav, w_hat, f_hat, dt)
+        clock = clock + np.stack([clock[:, 1] * T, np.zeros(N)], -1)
+        clock = clock + np.stack(
+            [
+                sc.clock_phase_walk * np.sqrt(T) * rng.standard_normal(N),
+                sc.clock_drift_walk * np.sqrt(T) * rng.standard_normal(N),
+            ],
+            -1,
+        )
+        clock_hat = clock_hat + np.stack([clock_hat[:, 1] * T, np.zeros(N)], -1)
+        t = k * T
+        # GPS noise draws (always drawn, used or not)
+        nsat_all = sc.sat_pos_ned.shape[1]
+        e_pr = g.pseudorange * rng.standard_normal((N, nsat_all))
+        e_prr = g.delta_range * rng.standard_normal((N, nsat_all))
+        e_ph = g.phase * rng.standard_normal((N, nsat_all, 3))
+        e_att = g.attitude * rng.standard_normal((N, 3))
+
+        # covariance prediction over the GPS interval
+        C_hat = dcm_from_quat_batch(nav.quat)
+        F = error_dynamics_17(C_hat, f_n.mean(axis=1))
+        Phi = transition_exact(F, T)
+        P = symmetrize(Phi @ P @ np.swapaxes(Phi, -1, -2) + discrete_noise_nilpotent(F, GQGt, T))
+
+        nu = int(sc.n_visible[k])
+        if mode != "ins" and nu >= 1:
+            sats = sc.sat_pos_ned[k, :nu]
+            svel = sc.sat_vel_ned[k, :nu]
+            x_true = v_true * t
+            d_hat = sats[None] - nav.pos[:, None]
+            rho_hat = np.linalg.norm(d_hat, axis=-1)
+            u_hat = d_hat / rho_hat[..., None]
+            d_true = sats - x_true
+            rho_true = np.linalg.norm(d_true, axis=-1)
+            u_true = d_true / rho_true[:, None]
+            y_rho = (rho_hat + clock_hat[:, :1]) - (rho_true[None] + clock[:, :1] + e_pr[:, :nu])
+            rate_hat = np.einsum("nsi,nsi->ns", u_hat, svel[None] - nav.vel[:, None]) + clock_hat[:, 1:]
+            rate_true = np.einsum("si,si->s", u_true, svel - v_true)[None] + clock[:, 1:] + e_prr[:, :nu]
+            y = np.empty((N, 2 * nu))
+            y[:, 0::2] = y_rho
+            y[:, 1::2] = rate_hat - rate_true
+            H = np.zeros((N, 2 * nu, 17))
+            H[:, 0::2, _P] = -u_hat
+            H[:, 0::2, _CB] = 1.0
+            H[:, 1::2, _V] = -u_hat
+            H[:, 1::2, _CD] = 1.0
+            r = np.tile([g.pseudorange**2, g.delta_range**2], nu)
+            dx = np.zeros((N, 17))
+            dx, P = sequential_scalar_updates(dx, P, y, H, r)
+            if mode == "tc_att" and nu >= attitude_min_sats:
+                eul_hat = euler_batch(C_hat)
+                y_att = _wrap(eul_hat - (eul_true + e_att))
+                H_att = np.zeros((N, 3, 17))
+                H_att[:, :, _A] = euler_jacobian_batch(C_hat)
+                # the attitude rows see the already-updated error state through H dx
+                dx, P = sequential_scalar_updates(dx, P, y_att, H_att, np.full(3, g.attitude**2))
+            if mode == "tc_dd" and nu >= 2:
+                nb = sc.baselines_b.shape[0]
+                ant_hat = np.einsum("nij,bj->nbi", C_hat, sc.baselines_b)  # (N, nb, 3) NED
+                ant_true = np.einsum("nij,bj->nbi", C_true, sc.baselines_b)
+
+                y_dd = np.zeros((N, (nu - 1) * nb))
+                H_dd = np.zeros((N, (nu - 1) * nb, 17))
+                for s in range(1, nu):
+                    dd_hat = _dd_phase_batch(nav.pos, ant_hat, sats[s], sats[0])
+                    noise = e_ph[:, s, 1:] - e_ph[:, s, :1] - e_ph[:, 0, 1:] + e_ph[:, 0, :1]
+                    dd_meas = (
+                        _dd_phase_batch(np.broadcast_to(x_true, (N, 3)), ant_true, sats[s], sats[0])
+                        + k2pi * noise[:, :nb]
+                    )
+                    rows = slice((s - 1) * nb, s * nb)
+                    y_dd[:, rows] = dd_hat - dd_meas
+                    # Eq. 17 (corrected): (l_m - l_n)^T [R l x]_paper = (R l) x (l_m - l_n)
+                    H_dd[:, rows, _A] = k2pi * np.cross(ant_hat, (u_hat[:, 0] - u_hat[:, s])[:, None, :])
+                R_dd = dd_covariance(nu, k2pi * g.phase, nb)
+                Lc = np.linalg.cholesky(R_dd)
+                Linv = np.linalg.inv(Lc)
+                y_w = np.einsum("ij,nj->ni", Linv, y_dd)
+                H_w = np.einsum("ij,njk->nik", Linv, H_dd)
+                dx, P = sequential_scalar_updates(dx, P, y_w, H_w, np.ones(y_w.shape[1]))
+            # feedback correction and reset (KZL Sec. 3.5)
+            nav = NavState(
+                nav.pos - dx[:, _P], nav.vel - dx[:, _V], correct_attitude(nav.quat, dx[:, _A], "left")
+            )
+            ba_hat = ba_hat - dx[:, _BA]
+            bg_hat = bg_hat - dx[:, _BG]
+            clock_hat = clock_hat - dx[:, _CB : _CD + 1]
+        record(k, t)
+
+    return MonteCarloResult(
+        t=np.arange(K + 1) * T,
+        pos_err=out_pos,
+        vel_err=out_vel,
+        att_err=out_att,
+        pos_sigma=sig_pos,
+        vel_sigma=sig_vel,
+        att_sigma=sig_att,
+        n_visible=np.asarray(sc.n_visible),
+    )
