@@ -1,0 +1,121 @@
+"""ATC-10 Figs. 2.1-2.16 redrawn: lower bounds on false and ambiguous locations against J/(P0 B tau)."""
+
+from __future__ import annotations
+
+import math
+
+import matplotlib.pyplot as plt
+import numpy as np
+from matplotlib.figure import Figure
+
+from navcore.detection import jamming as jm
+from navcore.figures import register
+from navcore.papers import atc10_jamming as paper
+
+#: Fraction t of the first-stage rule drawn in Figs. 2.3-2.16 (the paper's sets are lost).
+T_VALUES = (0.0, 0.05, 0.1, 0.2, 0.3)
+K1_PDL = (0.88, 0.9, 0.99, 0.999)
+LOG10_FLOOR = -12.0
+
+#: (figure number, quantity, K, P_DL) for Figs. 2.3-2.16, in the paper's order.
+K_FIGURES = (
+    (3, "false", 10, 0.88),
+    (4, "ambiguous", 10, 0.88),
+    (5, "false", 10, 0.999),
+    (6, "ambiguous", 10, 0.999),
+    (7, "false", 100, 0.88),
+    (8, "ambiguous", 100, 0.88),
+    (9, "false", 100, 0.999),
+    (10, "ambiguous", 100, 0.999),
+    (11, "false", 1000, 0.88),
+    (12, "ambiguous", 1000, 0.88),
+    (13, "ambiguous", 1000, 0.98),
+    (14, "false", 1000, 0.98),
+    (15, "false", 1000, 0.999),
+    (16, "ambiguous", 1000, 0.999),
+)
+
+_NAME = {"false": r"$\bar N_{FL}/N_T$", "ambiguous": r"$\bar N_{ADL}/N_T$"}
+
+
+def log10_bound(quantity: str, x_db: np.ndarray, p_dl: float, k: int, t: float) -> np.ndarray:
+    """log10 of N_FL/N_T or N_ADL/N_T at the design point (P_DL, K, t), from the log-domain model."""
+    p_d = paper.design_p_d(p_dl, k, t)
+    fn = jm.log_false_location_bound if quantity == "false" else jm.log_ambiguous_detection_bound
+    return np.asarray(fn(10.0 ** (x_db / 10.0), p_d, k, t, paper.GEOMETRY)) / math.log(10.0)
+
+
+def _level(quantity: str) -> float:
+    if quantity == "ambiguous":
+        return paper.ADL_LEVEL
+    return paper.FL_FRACTION_OF_CEILING * (1.0 - paper.GEOMETRY.airborne_fraction)
+
+
+def _axes_common(ax, quantity: str, x_lo: float, x_hi: float) -> None:
+    ax.axhline(math.log10(_level(quantity)), color="0.3", lw=0.8, ls="--", label="level")
+    ax.set_ylim(LOG10_FLOOR, 0.5)
+    ax.set_xlim(x_lo, x_hi)
+    ax.set_xlabel(r"$J/(P_0 B \tau)$ [dB]  (ERP = value + 50 dBW)")
+    ax.set_ylabel(r"$\log_{10}$ " + _NAME[quantity])
+    ax.legend(loc="lower right", fontsize=8)
+
+
+def _k1_figure(quantity: str) -> Figure:
+    fig, ax = plt.subplots()
+    x = np.linspace(-25.0, -5.0, 401)
+    for p_dl in K1_PDL:
+        ax.plot(x, log10_bound(quantity, x, p_dl, 1, 0.0), label=rf"$P_{{DL}}$ = {p_dl}")
+    _axes_common(ax, quantity, -25.0, -5.0)
+    return fig
+
+
+@register(
+    "ATC10-fig2.1",
+    paper="ATC10",
+    reproduces="Fig. 2.1",
+    caption="Lower bound on the mean number of falsely located aircraft, N_FL/N_T, for K = 1 against "
+    "J/(P0 B tau), for P_DL = p_d^4 in {0.88, 0.9, 0.99, 0.999} (the paper names 0.9 and 0.999). "
+    "Dashed: 99 % of the supremum 0.9 N_T used as the failure level.",
+)
+def false_locations_single_pulse() -> Figure:
+    return _k1_figure("false")
+
+
+@register(
+    "ATC10-fig2.2",
+    paper="ATC10",
+    reproduces="Fig. 2.2",
+    caption="Lower bound on the mean number of ambiguous detections, N_ADL/N_T, for K = 1 against "
+    "J/(P0 B tau), for P_DL in {0.88, 0.9, 0.99, 0.999}. Dashed: the failure level 0.01 N_T.",
+)
+def ambiguous_detections_single_pulse() -> Figure:
+    return _k1_figure("ambiguous")
+
+
+def _make_k_figure(quantity: str, k: int, p_dl: float):
+    def draw() -> Figure:
+        fig, ax = plt.subplots()
+        x = np.linspace(-20.0, 80.0, 501)
+        for t in T_VALUES:
+            p_d = paper.design_p_d(p_dl, k, t)
+            ax.plot(x, log10_bound(quantity, x, p_dl, k, t), label=rf"$t$ = {t:g}, $p_d$ = {p_d:.3f}")
+        _axes_common(ax, quantity, -20.0, 80.0)
+        ax.set_title(rf"$K$ = {k}, $P_{{DL}}$ = {p_dl}", fontsize=10)
+        return fig
+
+    return draw
+
+
+for _n, _q, _k, _p in K_FIGURES:
+    _f = _make_k_figure(_q, _k, _p)
+    _f.__qualname__ = f"fig2_{_n}"
+    _f.__name__ = f"fig2_{_n}"
+    register(
+        f"ATC10-fig2.{_n}",
+        paper="ATC10",
+        reproduces=f"Fig. 2.{_n}",
+        caption=f"Lower bound {'N_FL' if _q == 'false' else 'N_ADL'}/N_T against J/(P0 B tau) "
+        f"for K = {_k} and P_DL = {_p}, with t in {{0, 0.05, 0.1, 0.2, 0.3}} and p_d re-solved "
+        "from Eq. (2.4.2) for each t (assumed: the paper's (p_d, t) sets are lost). Dashed: "
+        + ("99 % of the supremum 0.9 N_T." if _q == "false" else "the failure level 0.01 N_T."),
+    )(_f)
