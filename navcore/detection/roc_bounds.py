@@ -25,7 +25,7 @@ from typing import Protocol
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
-from scipy import optimize, special
+from scipy import special
 
 from navcore._validate import require_positive
 
@@ -80,26 +80,59 @@ class TailBound:
     parameter: float
 
 
-def _find_root_increasing(fun, target: float, r_max: float = 1e7) -> float | None:
-    """Smallest r >= 0 with fun(r) = target, by a geometric scan and Brent's method.
+def _solve_increasing(fun, targets: ArrayLike, r_max: float = 1e7) -> FloatArray:
+    """Vectorised root of fun(r) = target over r >= 0, for fun increasing (at least up to the root).
 
-    Returns None when fun stays below target up to r_max.
+    r = 0 where fun(0) >= target; otherwise the first doubling bracket [r, 2r] (from 1e-3)
+    that crosses the target, then 70 bisection steps (relative precision 2^-70). NaN where
+    fun stays below the target up to ``r_max``.
     """
-    f0 = float(fun(0.0)) - target
-    if f0 >= 0:
-        return 0.0
-    lo, hi = 0.0, 1e-3
-    while hi <= r_max:
-        fh = float(fun(hi)) - target
-        if not np.isfinite(fh):
-            hi = 0.5 * (lo + hi)
-            if hi - lo < 1e-12:
-                return None
-            continue
-        if fh >= 0:
-            return float(optimize.brentq(lambda r: float(fun(r)) - target, lo, hi, xtol=1e-14, rtol=1e-13))
-        lo, hi = hi, 2.0 * hi
-    return None
+    t = np.atleast_1d(np.asarray(targets, dtype=float))
+    at_zero = fun(np.zeros_like(t)) >= t
+    lo = np.zeros_like(t)
+    hi = np.full_like(t, 1e-3)
+    open_ = ~at_zero
+    bracketed = np.zeros_like(t, dtype=bool)
+    while np.any(open_) and np.min(hi[open_]) <= r_max:
+        fh = fun(np.where(open_, hi, 1e-3))
+        cross = open_ & np.isfinite(fh) & (fh >= t)
+        bracketed |= cross
+        open_ &= ~cross & np.isfinite(fh) & (hi <= r_max)
+        lo = np.where(open_, hi, lo)
+        hi = np.where(open_, 2.0 * hi, hi)
+    work = bracketed.copy()
+    a, b = np.where(work, lo, 0.0), np.where(work, hi, 1.0)
+    for _ in range(70):
+        mid = 0.5 * (a + b)
+        below = fun(mid) < t
+        a = np.where(below, mid, a)
+        b = np.where(below, b, mid)
+    out = np.where(at_zero, 0.0, np.where(bracketed, 0.5 * (a + b), np.nan))
+    return out
+
+
+def chernoff_log_tails(cgf: CumulantGenerating, t: ArrayLike) -> tuple[FloatArray, FloatArray]:
+    """Vectorised :func:`chernoff_log_tail`: (ln bound, optimal r) for each threshold."""
+    t = np.atleast_1d(np.asarray(t, dtype=float))
+    r = _solve_increasing(cgf.cgf_d1, t)
+    found = np.isfinite(r)
+    rr = np.where(found, r, 0.0)
+    logp = np.where(found, cgf.cgf(rr) - rr * t, -np.inf)
+    return logp, np.where(found, r, np.inf)
+
+
+def gallager_log_tails_lower(cgf: CumulantGenerating, t: ArrayLike) -> tuple[FloatArray, FloatArray]:
+    """Vectorised :func:`gallager_log_tail_lower`: (ln bound, r1) for each threshold."""
+    t = np.atleast_1d(np.asarray(t, dtype=float))
+
+    def lhs(r: FloatArray) -> FloatArray:
+        return cgf.cgf_d1(r) - np.sqrt(2.0 * cgf.cgf_d2(r))
+
+    r1 = _solve_increasing(lhs, t)
+    found = np.isfinite(r1)
+    rr = np.where(found, r1, 0.0)
+    logp = -np.log(2.0) + cgf.cgf(rr) - rr * t - 2.0 * rr * np.sqrt(2.0 * cgf.cgf_d2(rr))
+    return np.where(found, logp, -np.inf), np.where(found, r1, np.inf)
 
 
 def chernoff_log_tail(cgf: CumulantGenerating, t: float) -> TailBound:
@@ -108,10 +141,8 @@ def chernoff_log_tail(cgf: CumulantGenerating, t: float) -> TailBound:
     mu is convex, so mu(r) - r t is minimised where mu'(r) = t; for t <= E S the minimum is
     at r = 0 (the bound is 1). If mu'(r) never reaches t the tail is empty (-inf).
     """
-    r = _find_root_increasing(cgf.cgf_d1, float(t))
-    if r is None:
-        return TailBound(-np.inf, np.inf)
-    return TailBound(float(cgf.cgf(r)) - r * float(t), r)
+    logp, r = chernoff_log_tails(cgf, [t])
+    return TailBound(float(logp[0]), float(r[0]))
 
 
 def gallager_log_tail_lower(cgf: CumulantGenerating, t: float) -> TailBound:
@@ -122,33 +153,20 @@ def gallager_log_tail_lower(cgf: CumulantGenerating, t: float) -> TailBound:
     with probability >= 1/2, and there the likelihood ratio is at least
     exp(mu(r1) - r1 (t + 2 sqrt(2 mu''(r1)))).
     """
-
-    def lhs(r: float) -> float:
-        return float(cgf.cgf_d1(r)) - np.sqrt(2.0 * float(cgf.cgf_d2(r)))
-
-    r1 = _find_root_increasing(lhs, float(t))
-    if r1 is None:
-        return TailBound(-np.inf, np.inf)
-    d2 = float(cgf.cgf_d2(r1))
-    return TailBound(-np.log(2.0) + float(cgf.cgf(r1)) - r1 * float(t) - 2.0 * r1 * np.sqrt(2.0 * d2), r1)
+    logp, r = gallager_log_tails_lower(cgf, [t])
+    return TailBound(float(logp[0]), float(r[0]))
 
 
 def roc_upper_bound(cgf: CumulantGenerating, theta: ArrayLike) -> tuple[FloatArray, FloatArray]:
     """Worst-case ROC (Eq. 3.5.13): (ln of the upper bound to p_f, ln of the upper bound to 1 - p_d)."""
     th = np.atleast_1d(np.asarray(theta, dtype=float))
-    neg = NegatedCGF(cgf)
-    lpf = np.array([chernoff_log_tail(cgf, x).log_p for x in th])
-    lmiss = np.array([chernoff_log_tail(neg, 1.0 - x).log_p for x in th])
-    return lpf, lmiss
+    return chernoff_log_tails(cgf, th)[0], chernoff_log_tails(NegatedCGF(cgf), 1.0 - th)[0]
 
 
 def roc_lower_bound(cgf: CumulantGenerating, theta: ArrayLike) -> tuple[FloatArray, FloatArray]:
     """Best-case ROC (Eq. 3.5.14 corrected): (ln lower bound to p_f, ln lower bound to 1 - p_d)."""
     th = np.atleast_1d(np.asarray(theta, dtype=float))
-    neg = NegatedCGF(cgf)
-    lpf = np.array([gallager_log_tail_lower(cgf, x).log_p for x in th])
-    lmiss = np.array([gallager_log_tail_lower(neg, 1.0 - x).log_p for x in th])
-    return lpf, lmiss
+    return gallager_log_tails_lower(cgf, th)[0], gallager_log_tails_lower(NegatedCGF(cgf), 1.0 - th)[0]
 
 
 def quasi_optimal_amplitude(power: float, n_aircraft: int, tau_over_alpha: float) -> float:
