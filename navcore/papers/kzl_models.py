@@ -1,0 +1,491 @@
+"""KZL Secs. 3.1-3.5: state vector, initialisation, discretisation, mechanization, error and
+observation models, correction step. Claims computed from the models, and the errata.
+"""
+
+from __future__ import annotations
+
+from functools import cache
+
+import numpy as np
+import scipy.linalg
+from scipy.spatial.transform import Rotation
+
+from navcore.estimation import kf_update
+from navcore.estimation.ekf_ins_gnss import correct_attitude, sequential_scalar_updates
+from navcore.frames import dcm_from_euler, dcm_from_quat, euler_from_dcm, quat_from_dcm, skew
+from navcore.gnss.carrier_phase import (
+    attitude_observation_rows_count,
+    dd_covariance,
+    dd_observation_rows_count,
+    euler_attitude_rows,
+    euler_rate_matrix_body,
+    tc_attitude_observation_matrix,
+    tc_dd_observation_matrix,
+)
+from navcore.inertial.alignment import heading_from_velocity, levelling_as_printed
+from navcore.inertial.error_model17 import (
+    ERROR_LAYOUT_17,
+    code_doppler_rows,
+    error_dynamics_17,
+    observability_rank,
+    transition_exact,
+)
+from navcore.inertial.strapdown import earth_rate_ned, transport_rate_ned
+from navcore.ledger import EXACT, Claim, Erratum, Tolerance
+from navcore.papers.kzl_scenario import KZL_IMU, TABLE1, table1_scenario
+from navcore.units import DEG, DEG_PER_H, G0
+
+PAGE1 = "kzl/01-mechanization"
+PAGE2 = "kzl/02-error-model"
+
+
+# --- helpers --------------------------------------------------------------------------------
+def table1_attitude() -> np.ndarray:
+    """Body-to-NED DCM of the Table 1 attitude (roll 0, pitch 0, heading 90 deg)."""
+    r, p, y = (a * DEG for a in TABLE1["attitude_deg"])
+    return dcm_from_euler(r, p, y)
+
+
+def table1_heading_deg() -> float:
+    """KZL Eq. 4 applied to the Table 1 ENU velocity."""
+    ve, vn, vu = TABLE1["velocity_enu_mps"]
+    return float(np.degrees(heading_from_velocity([vn, ve, -vu])))
+
+
+def printed_levelling_level_roll_deg() -> float:
+    """Roll (deg) that printed Eq. 3 gives for a level IMU measuring the specific force [0, 0, -g]."""
+    roll, _ = levelling_as_printed([0.0, 0.0, -G0])
+    return float(np.degrees(roll))
+
+
+def _printed_levelling_ok_for_specific_force() -> bool:
+    return abs(printed_levelling_level_roll_deg()) < 1e-6
+
+
+def _printed_levelling_oracle() -> bool:
+    """Independent check with scipy's Rotation: random attitudes, specific force R^T [0,0,-g]."""
+    rng = np.random.default_rng(11)
+    ok = True
+    for _ in range(20):
+        roll, pitch, yaw = rng.uniform(-0.5, 0.5, 3)
+        R = Rotation.from_euler("ZYX", [yaw, pitch, roll]).as_matrix()
+        f = R.T @ np.array([0.0, 0.0, -G0])
+        r_hat, p_hat = levelling_as_printed(f)
+        ok &= bool(abs(r_hat - roll) < 1e-9 and abs(p_hat - pitch) < 1e-9)
+    return ok
+
+
+def neglected_rates_deg_per_h() -> float:
+    """|omega_in^n| = |Earth rate + transport rate| (deg/h) in the Table 1 scenario."""
+    lat, h = TABLE1["lat_deg"] * DEG, TABLE1["height_m"]
+    ve = TABLE1["velocity_enu_mps"][0]
+    w = earth_rate_ned(lat) + transport_rate_ned([0.0, ve, 0.0], lat, h)
+    return float(np.linalg.norm(w) / DEG_PER_H)
+
+
+def neglected_coriolis_micro_g() -> float:
+    """|(2 omega_ie + omega_en) x v| (micro-g) in the Table 1 scenario."""
+    lat, h = TABLE1["lat_deg"] * DEG, TABLE1["height_m"]
+    v = np.array([0.0, TABLE1["velocity_enu_mps"][0], 0.0])
+    a = np.cross(2 * earth_rate_ned(lat) + transport_rate_ned(v, lat, h), v)
+    return float(np.linalg.norm(a) / (1e-6 * G0))
+
+
+def table1_F() -> np.ndarray:
+    C = table1_attitude()
+    return error_dynamics_17(C, np.array([0.0, 0.0, -G0]))
+
+
+def series_terminates() -> bool:
+    """KZL Eq. 5: expm(F T) equals I + FT + (FT)^2/2 + (FT)^3/6 (F nilpotent) at T = 1 s."""
+    F = table1_F()
+    return bool(np.abs(scipy.linalg.expm(F) - transition_exact(F, 1.0)).max() < 1e-12)
+
+
+def table1_los(nu: int, k: int = 0) -> np.ndarray:
+    """Unit LOS (NED) of the first ``nu`` satellites in priority order at epoch ``k``."""
+    sats = table1_scenario().sat_pos_ned[k, :nu]
+    d = sats - np.array([0.0, 0.0, 0.0])
+    return d / np.linalg.norm(d, axis=1, keepdims=True)
+
+
+@cache
+def observability_ranks() -> dict[str, dict[int, int]]:
+    """Observability ranks of TC, TC + attitude and TC + DD for nu = 1..8 (Table 1 geometry)."""
+    F, C = table1_F(), table1_attitude()
+    out: dict[str, dict[int, int]] = {"tc": {}, "tc_att": {}, "tc_dd": {}}
+    for nu in range(1, 9):
+        los = table1_los(nu)
+        out["tc"][nu] = observability_rank(F, code_doppler_rows(los))
+        out["tc_att"][nu] = observability_rank(F, tc_attitude_observation_matrix(los, C, 0.0, 0.0))
+        out["tc_dd"][nu] = observability_rank(F, tc_dd_observation_matrix(los, C))
+    return out
+
+
+def _complete_only_with_attitude() -> bool:
+    r = observability_ranks()
+    return all(r["tc"][nu] < 17 for nu in range(1, 9)) and all(
+        r["tc_att"][nu] == 17 and r["tc_dd"][nu] == 17 for nu in range(4, 9)
+    )
+
+
+def _row_counts_eq13() -> bool:
+    return all(attitude_observation_rows_count(nu) == 3 + 2 * nu for nu in range(1, 9))
+
+
+def _row_counts_eq17() -> bool:
+    return all(dd_observation_rows_count(nu) == 2 + 4 * (nu - 1) for nu in range(1, 9))
+
+
+def _sequential_equals_batch() -> bool:
+    """Eight satellites with DD: whitened sequential scalar updates vs one batch update."""
+    C = table1_attitude()
+    H = tc_dd_observation_matrix(table1_los(8), C)
+    n_code = 16
+    R = scipy.linalg.block_diag(np.diag(np.tile([9.0, 0.0025], 8)), dd_covariance(8, 0.1))
+    rng = np.random.default_rng(4)
+    A = rng.normal(size=(17, 17))
+    P = A @ A.T + np.eye(17)
+    y = rng.normal(size=H.shape[0])
+    ref = kf_update(np.zeros(17), P, y, H, R)
+    Linv = np.linalg.inv(np.linalg.cholesky(R[n_code:, n_code:]))
+    Hw = np.vstack([H[:n_code], Linv @ H[n_code:]])
+    yw = np.concatenate([y[:n_code], Linv @ y[n_code:]])
+    rw = np.concatenate([np.diag(R)[:n_code], np.ones(len(y) - n_code)])
+    x, Ps = sequential_scalar_updates(np.zeros((1, 17)), P[None], yw[None], Hw[None], rw)
+    return bool(np.allclose(x[0], ref.x, atol=1e-9) and np.allclose(Ps[0], ref.P, atol=1e-9))
+
+
+QCORR_DPSI = np.array([1.0, -0.5, 2.0]) * DEG
+
+
+def printed_correction_residual_deg() -> float:
+    """Residual attitude error (deg) after the printed right-hand correction at the Table 1 attitude."""
+    C = table1_attitude()
+    C_hat = scipy.linalg.expm(skew(QCORR_DPSI)) @ C
+    q = correct_attitude(quat_from_dcm(C_hat)[None], QCORR_DPSI[None], "right")[0]
+    return float(np.degrees(np.linalg.norm(Rotation.from_matrix(dcm_from_quat(q) @ C.T).as_rotvec())))
+
+
+def _printed_correction_removes_error() -> bool:
+    return printed_correction_residual_deg() < 1e-6
+
+
+def _printed_correction_oracle() -> bool:
+    """Independent: scipy Rotation composes R_hat * Exp(-dpsi) (body side) and compares with R."""
+    R = Rotation.from_matrix(table1_attitude())
+    R_hat = Rotation.from_rotvec(QCORR_DPSI) * R
+    corrected = R_hat * Rotation.from_rotvec(-QCORR_DPSI)
+    return bool((corrected * R.inv()).magnitude() < 1e-8)
+
+
+def _printed_R_block_is_jacobian() -> bool:
+    """Is the body-rate-to-Euler-rate matrix the Euler-attitude Jacobian at the Table 1 attitude?"""
+    C = table1_attitude()
+    return bool(np.allclose(euler_rate_matrix_body(0.0, 0.0), euler_attitude_rows(C, 0.0, 0.0)[:, 6:9]))
+
+
+def _printed_R_block_oracle() -> bool:
+    """Independent: central finite differences of euler_from_dcm(expm([d x]) C)."""
+    C = table1_attitude()
+    eps = 1e-6
+    J = np.column_stack(
+        [
+            (
+                np.array(euler_from_dcm(scipy.linalg.expm(skew(eps * e)) @ C))
+                - np.array(euler_from_dcm(scipy.linalg.expm(skew(-eps * e)) @ C))
+            )
+            / (2 * eps)
+            for e in np.eye(3)
+        ]
+    )
+    return bool(np.allclose(euler_rate_matrix_body(0.0, 0.0), J, atol=1e-6))
+
+
+# --- errata -----------------------------------------------------------------------------------
+ERRATA = [
+    Erratum(
+        id="KZL-E1-levelling-sign",
+        paper="KZL",
+        locator="Eqs. (2)-(3)",
+        printed="theta = arctan(-a_x / sqrt(a_y^2 + a_z^2)), phi = arctan2(a_y / a_z)",
+        finding="With a = the specific force of Eq. (8) (a level IMU measures [0, 0, -g] in NED body "
+        "axes) the printed pair returns roll = 180 deg for a level aircraft. It is right for a = -f; "
+        "for the specific force: theta = arctan(f_x / sqrt(f_y^2 + f_z^2)), phi = atan2(-f_y, -f_z).",
+        evidence="navcore.inertial.alignment.levelling_as_printed on f = [0, 0, -g]; round trip on "
+        "random attitudes built with scipy's Rotation (tests/test_strapdown.py).",
+        claims=("KZL-eq2-3-levelling",),
+        discussed_in=PAGE1,
+    ),
+    Erratum(
+        id="KZL-E2-time-invariant",
+        paper="KZL",
+        locator="Eq. (5), preceding text",
+        printed="in case of a time-variant system the state transition is described as A(k) = e^{FT}",
+        finding="The chain A = e^{FT} = L^-1{(sI - F)^-1} holds for a time-invariant F (or F frozen "
+        "over T). For the simplified model F is nilpotent (F^4 = 0), so the series ends at (FT)^3/6.",
+        evidence="scipy.linalg.expm against the cubic polynomial at the Table 1 attitude.",
+        claims=("KZL-eq5-series",),
+        discussed_in=PAGE1,
+    ),
+    Erratum(
+        id="KZL-E3-skew-notation",
+        paper="KZL",
+        locator="Eq. (11)",
+        printed="F23 = [a x] = [[0, a_d, -a_e], [-a_d, 0, a_n], [a_e, -a_n, 0]]",
+        finding="The explicit matrix is minus the usual cross-product matrix: [a x]_paper b = b x a. "
+        "The explicit matrix is the right F23 for error = estimated - true and "
+        "R_hat = (I + [dpsi x]) R; reading the bracket as the standard skew flips the sign of F23 "
+        "and of the DD rows of Eq. (17).",
+        evidence="Finite differences of the nonlinear velocity-error rate (tests/test_error_model17.py).",
+        discussed_in=PAGE2,
+    ),
+    Erratum(
+        id="KZL-E4-euler-rows",
+        paper="KZL",
+        locator="Eq. (13), block R",
+        printed="R is a frame rotation matrix for the transformation from body-axes angular rates to "
+        "the Euler angle angular rates",
+        finding="The Jacobian of the Euler angles with respect to the n-frame attitude error is "
+        "J_b^-1(phi, theta) R_n^b, not J_b^-1 alone. At the Table 1 attitude (heading 90 deg) they "
+        "differ by swapping north/east tilt into roll/pitch.",
+        evidence="Central finite differences of euler_from_dcm(expm([dpsi x]) R).",
+        claims=("KZL-eq13-R",),
+        discussed_in=PAGE2,
+    ),
+    Erratum(
+        id="KZL-E5-dd-typos",
+        paper="KZL",
+        locator="Eqs. (1), (10), (14), (17)",
+        printed="Eq. (17): both DD rows use l_02 and rows 2 and 4 have an extra 0^T block; Eq. (14) lists "
+        "rho^(n) twice; Eq. (10) says O is the identity and I the zero matrix; Eq. (1)'s compact "
+        "form drops dpsi, db_w and the clock",
+        finding="The first DD row uses l_01; Eq. (14) has 6 rows for two satellites, matching "
+        "2 + 4 (nu - 1); O is the zero and I the identity matrix.",
+        evidence="Row counts from the builders in navcore.gnss.carrier_phase; with l_02 in both rows "
+        "the DD attitude block of one satellite pair has rank 1 instead of 2.",
+        discussed_in=PAGE2,
+    ),
+    Erratum(
+        id="KZL-E6-quaternion-order",
+        paper="KZL",
+        locator="Sec. 3.5, attitude correction",
+        printed="q_b^{n,+} = q_b^{n,-} (x) q^n with the n-frame rotation quaternion q^n of phi = -dpsi",
+        finding="An n-frame rotation multiplies q_b^n from the left: q^{n,+} = q^n (x) q^{n,-}. The "
+        "printed order rotates about body axes; at the Table 1 heading of 90 deg a 2.29 deg "
+        "error leaves a 1.58 deg residual.",
+        evidence="navcore.estimation.ekf_ins_gnss.correct_attitude both ways, checked with scipy's "
+        "Rotation (tests/test_ekf_ins_gnss.py).",
+        claims=("KZL-qcorr",),
+        discussed_in=PAGE2,
+    ),
+]
+
+
+# --- claims --------------------------------------------------------------------------------------
+CLAIMS = [
+    Claim(
+        id="KZL-eq1-states",
+        paper="KZL",
+        locator="Sec. 3.1, Eq. (1)",
+        quantity="number of states of the tightly coupled error-state vector",
+        published=17,
+        unit="states",
+        compute=lambda: ERROR_LAYOUT_17.size,
+        tolerance=EXACT,
+        status="reproduced",
+        note="Position, velocity, misalignment, accelerometer and gyro bias (3 each) plus clock bias "
+        "and drift, as a named layout.",
+        discussed_in=PAGE1,
+    ),
+    Claim(
+        id="KZL-eq4-heading",
+        paper="KZL",
+        locator="Eq. (4) and Table 1",
+        quantity="heading from the Table 1 GPS velocity (110 m/s east)",
+        published=90.0,
+        unit="deg",
+        compute=table1_heading_deg,
+        tolerance=Tolerance(
+            reason="Table 1 prints the integer 90 for a velocity exactly along east", abs=1e-9
+        ),
+        status="reproduced",
+        note="atan2(v_E, v_N) with v_ENU = [110, 0, 0] m/s, the Table 1 heading.",
+        discussed_in=PAGE1,
+    ),
+    Claim(
+        id="KZL-eq2-3-levelling",
+        paper="KZL",
+        locator="Eqs. (2)-(3)",
+        quantity="the printed levelling formulas recover roll and pitch from the specific force of Eq. (8)",
+        published=True,
+        unit="statement",
+        compute=_printed_levelling_ok_for_specific_force,
+        tolerance=EXACT,
+        status="discrepant",
+        note="A level IMU measures f = [0, 0, -g]; printed Eq. (3) returns roll = 180 deg. The formulas "
+        "hold for a = -f.",
+        erratum="KZL-E1-levelling-sign",
+        oracle=_printed_levelling_oracle,
+        oracle_tolerance=EXACT,
+        discussed_in=PAGE1,
+    ),
+    Claim(
+        id="KZL-c11-earth-rate",
+        paper="KZL",
+        locator="Sec. 3.1",
+        quantity="a MEMS gyro bias of several 100 deg/h swamps the horizontal Earth rate (no gyrocompassing)",
+        published=True,
+        unit="statement",
+        compute=lambda: KZL_IMU.gyro_bias > 10 * float(np.linalg.norm(earth_rate_ned(51 * DEG)[:2])),
+        tolerance=EXACT,
+        status="reproduced",
+        note="Table 1 gyro bias 360 deg/h against the horizontal Earth rate 9.46 deg/h at 51 N (38x).",
+        discussed_in=PAGE1,
+    ),
+    Claim(
+        id="KZL-c13-neglected-rates",
+        paper="KZL",
+        locator="Secs. 3.1-3.2",
+        quantity="Earth and transport rate are negligible against the low-cost gyro bias",
+        published=True,
+        unit="statement",
+        compute=lambda: neglected_rates_deg_per_h() < 0.1 * KZL_IMU.gyro_bias / DEG_PER_H,
+        tolerance=EXACT,
+        status="consistent",
+        note="|omega_in| = 20.7 deg/h against 360 deg/h (factor 17). The neglected Coriolis term "
+        "(about 1900 micro-g) is NOT small against the 2400 micro-g accelerometer bias; inside the "
+        "GPS-aided filter it is absorbed by the accelerometer-bias states.",
+        discussed_in=PAGE1,
+    ),
+    Claim(
+        id="KZL-eq5-series",
+        paper="KZL",
+        locator="Eq. (5)",
+        quantity="e^{FT} = I + FT + (FT)^2/2 + h.o.t. for the 17-state F",
+        published=True,
+        unit="statement",
+        compute=series_terminates,
+        tolerance=EXACT,
+        status="reproduced",
+        note="F is nilpotent (F^4 = 0): the series ends at (FT)^3/6 and equals scipy's expm to 1e-12.",
+        discussed_in=PAGE1,
+    ),
+    Claim(
+        id="KZL-dim13",
+        paper="KZL",
+        locator="Sec. 3.4, after Eq. (13)",
+        quantity="rows of the observation matrix with redundant attitude = 3 + 2 nu (nu = 1..8)",
+        published=True,
+        unit="statement",
+        compute=_row_counts_eq13,
+        tolerance=EXACT,
+        status="reproduced",
+        note="Counted from the stacked matrix built by navcore.gnss.carrier_phase.",
+        discussed_in=PAGE2,
+    ),
+    Claim(
+        id="KZL-dim17",
+        paper="KZL",
+        locator="Sec. 3.4, before Eq. (17)",
+        quantity="rows of the DD observation matrix = 2 + 4 (nu - 1) (nu = 1..8)",
+        published=True,
+        unit="statement",
+        compute=_row_counts_eq17,
+        tolerance=EXACT,
+        status="reproduced",
+        note="Code and delta range per satellite plus two DDs (baselines A0-A1, A0-A2) per non-master "
+        "satellite. Eq. (14) as printed has 7 rows for nu = 2 (a duplicated row); the formula gives 6.",
+        discussed_in=PAGE2,
+    ),
+    Claim(
+        id="KZL-c12-observability",
+        paper="KZL",
+        locator="Sec. 3.1",
+        quantity="complete observability only with redundant attitude information, depending on nu",
+        published=True,
+        unit="statement",
+        compute=_complete_only_with_attitude,
+        tolerance=EXACT,
+        status="reproduced",
+        note="LTI observability rank in straight and level flight at the Table 1 attitude: code and "
+        "delta range alone never reach 17 (heading and z-gyro bias are unobservable); with Euler "
+        "attitude or DD phases the rank is 17 for nu >= 4.",
+        discussed_in=PAGE2,
+    ),
+    Claim(
+        id="KZL-c14-sequential",
+        paper="KZL",
+        locator="Sec. 3.4",
+        quantity="sequential processing gives the batch update without inverting the full innovation matrix",
+        published=True,
+        unit="statement",
+        compute=_sequential_equals_batch,
+        tolerance=EXACT,
+        status="consistent",
+        note="Equal posteriors for 8 satellites with DD rows, provided the correlated DD phases are "
+        "whitened (Cholesky) first; the paper does not mention the correlation.",
+        discussed_in=PAGE2,
+    ),
+    Claim(
+        id="KZL-eq13-R",
+        paper="KZL",
+        locator="Eq. (13), block R",
+        quantity="the body-rate-to-Euler-rate matrix is the attitude block of the observation matrix",
+        published=True,
+        unit="statement",
+        compute=_printed_R_block_is_jacobian,
+        tolerance=EXACT,
+        status="discrepant",
+        note="At heading 90 deg the true block is J_b^-1 R_n^b, a north/east swap of J_b^-1 = I.",
+        erratum="KZL-E4-euler-rows",
+        oracle=_printed_R_block_oracle,
+        oracle_tolerance=EXACT,
+        discussed_in=PAGE2,
+    ),
+    Claim(
+        id="KZL-qcorr",
+        paper="KZL",
+        locator="Sec. 3.5",
+        quantity="q+ = q- (x) q^n (right product) removes an estimated n-frame attitude error",
+        published=True,
+        unit="statement",
+        compute=_printed_correction_removes_error,
+        tolerance=EXACT,
+        status="discrepant",
+        note="At the Table 1 attitude a (1, -0.5, 2) deg error leaves 1.58 deg after the printed "
+        "correction; the left product leaves nothing.",
+        erratum="KZL-E6-quaternion-order",
+        oracle=_printed_correction_oracle,
+        oracle_tolerance=EXACT,
+        discussed_in=PAGE2,
+    ),
+    Claim(
+        id="KZL-c1",
+        paper="KZL",
+        locator="Sec. 1",
+        quantity="satellite speed about 76 times the aircraft speed in the hybrid experiments",
+        published=76.0,
+        unit="",
+        compute=None,
+        tolerance=Tolerance(reason="not evaluated", abs=0.0),
+        status="not-reproducible",
+        note="The aircraft speed of the TerraSAR-X hybrid experiments is not given (a 514 km circular "
+        "orbit gives 7.6 km/s, so 76x means about 100 m/s; Table 1's 110 m/s gives 69x).",
+        discussed_in="kzl/index",
+    ),
+    Claim(
+        id="KZL-c6",
+        paper="KZL",
+        locator="Sec. 2.1",
+        quantity="position error of a 50,000-100,000 $ INS without aiding, km per hour",
+        published=1.0,
+        unit="km/h",
+        compute=None,
+        tolerance=Tolerance(reason="not evaluated", abs=0.0),
+        status="not-reproducible",
+        note="No sensor specification is given for the navigation-grade INS; a 0.01 deg/h gyro gives the "
+        "classic 1 nmi/h class, but that input is an assumption, not the paper's.",
+        discussed_in="kzl/index",
+    ),
+]
