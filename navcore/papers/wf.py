@@ -11,8 +11,6 @@ from __future__ import annotations
 from functools import cache
 
 import numpy as np
-from sympy.physics.units import length, time
-from sympy.physics.units.systems.si import dimsys_SI
 
 from navcore.estimation.federated import (
     accelerometer_steady_state_isotropic,
@@ -212,12 +210,18 @@ def _eq13_printed_innovation_consistent() -> bool:
 
 def _eq13_dimension_oracle() -> bool:
     """Oracle: the printed innovation subtracts a velocity from an acceleration (sympy units)."""
+    from sympy.physics.units import length, time  # lazy: sympy is slow to import
+    from sympy.physics.units.systems.si import dimsys_SI
+
     deps = dimsys_SI.get_dimensional_dependencies
     return bool(deps(length / time**2) == deps(length / time))
 
 
 def _eq24_literal_consistent() -> bool:
     """WF Eq. (24) 'P_N P_N^T = sigma_N^2 I' read with Eq. (11): is it dimensionally consistent?"""
+    from sympy.physics.units import length, time  # lazy: sympy is slow to import
+    from sympy.physics.units.systems.si import dimsys_SI
+
     deps = dimsys_SI.get_dimensional_dependencies
     speed = length / time
     return bool(deps(speed**2 * speed**2) == deps(speed**2))  # P_N P_N^T with P_N in (m/s)^2

@@ -87,7 +87,7 @@ def run(trials: int = 20, sigma_a: float = SIGMA_A_EXAMPLE) -> dict:
         errors at the measurement times (m/s); ``t``: measurement times (s).
     """
     rng = np.random.default_rng(SEED)
-    n_steps = int(round(DURATION / TS))
+    n_steps = round(DURATION / TS)
     t_all = np.arange(n_steps + 1) * TS
     idx = np.arange(0, n_steps + 1, DECIM)
     t = t_all[idx]
