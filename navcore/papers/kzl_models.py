@@ -202,6 +202,33 @@ def _printed_R_block_oracle() -> bool:
     return bool(np.allclose(euler_rate_matrix_body(0.0, 0.0), J, atol=1e-6))
 
 
+@cache
+def discretisation_comparison(dt: float = 1.0) -> dict[str, float]:
+    """Stand-alone covariance over the 180 s Table 1 flight with the exact transition and Van
+    Loan noise (Eq. 5) and with I + F T and Q_d = G Q G^T T (Eq. 6): north-position and
+    east-velocity 1-sigma at 180 s."""
+    from navcore.estimation import first_order_transition, van_loan
+    from navcore.estimation.ekf_ins_gnss import _gqgt, _initial_covariance
+
+    sc = table1_scenario()
+    C = table1_attitude()
+    F = error_dynamics_17(C, np.array([0.0, 0.0, -G0]))
+    GQG = _gqgt(sc)
+    P0 = _initial_covariance(sc, C, True)
+    Phi_e, Qd_e = van_loan(F, GQG, dt)
+    Phi_1, Qd_1 = first_order_transition(F, dt), GQG * dt
+    Pe, P1 = P0.copy(), P0.copy()
+    for _ in range(round(180.0 / dt)):
+        Pe = Phi_e @ Pe @ Phi_e.T + Qd_e
+        P1 = Phi_1 @ P1 @ Phi_1.T + Qd_1
+    return {
+        "pos_exact_m": float(np.sqrt(Pe[0, 0])),
+        "pos_first_order_m": float(np.sqrt(P1[0, 0])),
+        "vel_exact_mps": float(np.sqrt(Pe[4, 4])),
+        "vel_first_order_mps": float(np.sqrt(P1[4, 4])),
+    }
+
+
 # --- errata -----------------------------------------------------------------------------------
 ERRATA = [
     Erratum(
