@@ -36,6 +36,7 @@ __all__ = [
     "LogMGFDensity",
     "MultipleAccessNoise",
     "PointMassDensity",
+    "StratifiedSums",
     "TriangularDensity",
     "UniformDensity",
     "cumulants_from_raw_moments",
@@ -44,6 +45,7 @@ __all__ = [
     "gaussian_mixture_exact_tail",
     "psk_amplitude_samples",
     "sample_noise",
+    "stratified_sums",
     "stratified_tail",
     "tabulated_density",
     "two_point_density",
@@ -475,31 +477,62 @@ class TailEstimate:
     lower_se: FloatArray
 
 
+@dataclass(frozen=True)
+class StratifiedSums:
+    """Sorted Monte Carlo sums of K draws from C for each K, with the exact binomial weights of K.
+
+    Build once with :func:`stratified_sums`; :meth:`tail` then estimates P(n >= t) for any
+    thresholds (and, since the sums scale, ``scale`` evaluates a density stretched by a factor).
+    """
+
+    weights: FloatArray  # P(K = k), k = 0..kmax
+    sums: tuple[FloatArray, ...]  # sorted sums for k = 1..kmax
+    n_per_stratum: int
+
+    def tail(self, t: ArrayLike, scale: float = 1.0) -> tuple[FloatArray, FloatArray]:
+        """(P(scale * n >= t), standard error)."""
+        t = np.atleast_1d(np.asarray(t, dtype=float)) / scale
+        est = np.where(t <= 0, self.weights[0], 0.0)
+        var = np.zeros_like(t)
+        m = self.n_per_stratum
+        for wk, s in zip(self.weights[1:], self.sums, strict=True):
+            pu = 1.0 - np.searchsorted(s, t, side="left") / m
+            est = est + wk * pu
+            var = var + wk**2 * pu * (1 - pu) / m
+        return est, np.sqrt(var)
+
+
+def stratified_sums(
+    noise: MultipleAccessNoise, n_per_stratum: int, rng: np.random.Generator
+) -> StratifiedSums:
+    """Seeded Monte Carlo sums stratified on the number K of overlapping interferers.
+
+    The binomial weights of K are exact; for each K >= 1, ``n_per_stratum`` sums of K draws
+    from C are stored sorted. Rare events at large K are therefore resolved far below
+    1/(total samples).
+    """
+    require_integer("n_per_stratum", n_per_stratum, minimum=1)
+    ks, w = _k_range(noise.n_interferers, noise.q)
+    sums = []
+    for k in ks[1:]:
+        s = noise.density.sample(rng, n_per_stratum * int(k)).reshape(n_per_stratum, int(k)).sum(axis=1)
+        s.sort()
+        sums.append(s)
+    return StratifiedSums(w, tuple(sums), n_per_stratum)
+
+
 def stratified_tail(
     noise: MultipleAccessNoise, t: ArrayLike, n_per_stratum: int, rng: np.random.Generator
 ) -> TailEstimate:
     """Exact ROC by Monte Carlo stratified on the number K of overlapping interferers.
 
-    The binomial weights of K are exact; for each K >= 1 the tail of a sum of K draws
-    from C is estimated from ``n_per_stratum`` seeded samples. Rare events at large K are
-    therefore resolved far below 1/(total samples).
+    Returns P(n >= t) (``upper``) and P(n <= -t) (``lower``) with standard errors.
     """
     t = np.atleast_1d(np.asarray(t, dtype=float))
-    ks, w = _k_range(noise.n_interferers, noise.q)
-    up = np.where(t <= 0, w[0], 0.0)
-    lo = np.where(-t >= 0, w[0], 0.0)
-    var_up = np.zeros_like(t)
-    var_lo = np.zeros_like(t)
-    for k, wk in zip(ks[1:], w[1:], strict=True):
-        s = noise.density.sample(rng, n_per_stratum * int(k)).reshape(n_per_stratum, int(k)).sum(axis=1)
-        s.sort()
-        pu = 1.0 - np.searchsorted(s, t, side="left") / n_per_stratum
-        pl = np.searchsorted(s, -t, side="right") / n_per_stratum
-        up += wk * pu
-        lo += wk * pl
-        var_up += wk**2 * pu * (1 - pu) / n_per_stratum
-        var_lo += wk**2 * pl * (1 - pl) / n_per_stratum
-    return TailEstimate(t, up, np.sqrt(var_up), lo, np.sqrt(var_lo))
+    ss = stratified_sums(noise, n_per_stratum, rng)
+    up, up_se = ss.tail(t)
+    ge, ge_se = ss.tail(np.nextafter(-t, np.inf))  # P(n > -t)
+    return TailEstimate(t, up, up_se, 1.0 - ge, ge_se)
 
 
 def two_point_exact_tail(amplitude: float, n_interferers: int, q: float, t: ArrayLike) -> FloatArray:

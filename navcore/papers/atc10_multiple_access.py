@@ -21,11 +21,13 @@ from navcore.detection.multiple_access import (
     GaussianDensity,
     MultipleAccessNoise,
     PointMassDensity,
+    StratifiedSums,
     TriangularDensity,
     UniformDensity,
     edgeworth_density,
     gaussian_mixture_exact_tail,
     psk_amplitude_samples,
+    stratified_sums,
     stratified_tail,
     two_point_density,
     two_point_exact_tail,
@@ -142,15 +144,18 @@ def exact_roc(name: str, x: float) -> ExactROC:
         pm = gaussian_mixture_exact_tail(b, nint, q, 1.0 - th)
         z = np.zeros_like(th)
         return ExactROC(th, pf, z, pm, z, "exact Gaussian mixture")
-    unit = MultipleAccessNoise(N_SEC36, TAU_OVER_ALPHA_SEC36, density(name, 1.0))
-    rng = np.random.default_rng(31 + DENSITY_NAMES.index(name))  # same seed for every contour
-    t_all = np.concatenate([th, th - 1.0]) / np.sqrt(b)
-    est = stratified_tail(unit, t_all, MC_PER_STRATUM, rng)
-    k = th.size
+    sums = _unit_sums(name)
+    pf, pf_se = sums.tail(th, scale=np.sqrt(b))
+    ge, ge_se = sums.tail(th - 1.0, scale=np.sqrt(b))
     # p_f = P(n >= theta); 1 - p_d = P(n < theta - 1) = 1 - P(n >= theta - 1)
-    return ExactROC(
-        th, est.upper[:k], est.upper_se[:k], 1.0 - est.upper[k:], est.upper_se[k:], "stratified Monte Carlo"
-    )
+    return ExactROC(th, pf, pf_se, 1.0 - ge, ge_se, "stratified Monte Carlo")
+
+
+@cache
+def _unit_sums(name: str) -> StratifiedSums:
+    """One seeded stratified sample per density at b = 1, rescaled for every contour."""
+    unit = MultipleAccessNoise(N_SEC36, TAU_OVER_ALPHA_SEC36, density(name, 1.0))
+    return stratified_sums(unit, MC_PER_STRATUM, np.random.default_rng(31 + DENSITY_NAMES.index(name)))
 
 
 def best_pf_at_pd(roc_pf: np.ndarray, roc_miss: np.ndarray, pd_min: float) -> float:
