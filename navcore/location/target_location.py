@@ -1,0 +1,82 @@
+r"""Target location error from a vehicle's position error and its attitude error over a lever arm.
+
+An observer at a position in error by :math:`\delta r_v` locates a target at the vector
+:math:`r` from itself with an attitude (pointing) error :math:`\delta\alpha`; the target's
+coordinates are then in error by (SP Sec. 2.6.4)
+
+.. math::
+
+    \delta r_{tgt} = \delta r_v + \delta\alpha\times r,\qquad
+    \langle\delta r_{tgt}\delta r_{tgt}^T\rangle = P_r + [r\times] P_\alpha [r\times]^T
+    \quad(\text{uncorrelated } \delta r_v, \delta\alpha).
+
+References
+----------
+.. [SP] G. T. Schmidt and R. E. Phillips, "INS/GPS Integration Architecture Performance
+   Comparisons", NATO RTO-EN-SET-116, Sec. 2.6.4 (helicopter scout, target at 8 km).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from navcore._validate import as_finite_array, require_nonnegative, require_symmetric_psd
+from navcore.frames import skew
+
+__all__ = [
+    "pointing_error_m",
+    "target_location_covariance",
+    "target_location_error",
+    "target_location_rss",
+]
+
+Array = NDArray[np.float64]
+
+
+def _vec3(name: str, v: ArrayLike) -> Array:
+    a = as_finite_array(name, v)
+    if a.shape[-1] != 3:
+        raise ValueError(f"{name} must have a last dimension of 3, got shape {a.shape}")
+    return a
+
+
+def target_location_error(dr_vehicle_m: ArrayLike, dalpha_rad: ArrayLike, r_target_m: ArrayLike) -> Array:
+    """Target coordinate error (m): position error plus misalignment crossed with the lever arm.
+
+    Examples
+    --------
+    >>> target_location_error([1.0, 0, 0], [0, 0, 1e-3], [8000.0, 0, 0]).tolist()
+    [1.0, 8.0, 0.0]
+    """
+    return _vec3("dr_vehicle_m", dr_vehicle_m) + np.cross(
+        _vec3("dalpha_rad", dalpha_rad), _vec3("r_target_m", r_target_m)
+    )
+
+
+def target_location_covariance(P_position: ArrayLike, P_attitude: ArrayLike, r_target_m: ArrayLike) -> Array:
+    """Covariance of the target error for uncorrelated position and attitude errors (m^2)."""
+    Pr = require_symmetric_psd("P_position", P_position)
+    Pa = require_symmetric_psd("P_attitude", P_attitude)
+    if Pr.shape != (3, 3) or Pa.shape != (3, 3):
+        raise ValueError("P_position and P_attitude must be 3x3")
+    S = skew(_vec3("r_target_m", r_target_m))
+    C = Pr + S @ Pa @ S.T
+    return 0.5 * (C + C.T)
+
+
+def pointing_error_m(misalignment_rad: ArrayLike, range_m: ArrayLike) -> Array | float:
+    """Displacement (m) of the target caused by a misalignment perpendicular to the line of sight."""
+    m = require_nonnegative("misalignment_rad", misalignment_rad)
+    r = require_nonnegative("range_m", range_m)
+    out = np.asarray(m, dtype=float) * np.asarray(r, dtype=float)
+    return float(out) if out.ndim == 0 else out
+
+
+def target_location_rss(
+    position_rss_m: ArrayLike, misalignment_rad: ArrayLike, range_m: ArrayLike
+) -> Array | float:
+    """Root-sum-square of position error and pointing error (independent errors), m."""
+    p = require_nonnegative("position_rss_m", position_rss_m)
+    out = np.hypot(np.asarray(p, dtype=float), pointing_error_m(misalignment_rad, range_m))
+    return float(out) if np.ndim(out) == 0 else out

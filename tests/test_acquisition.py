@@ -1,0 +1,71 @@
+"""Acquisition search time and Gaussian box probabilities against independent oracles."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy.stats import norm
+
+from navcore.gnss import acquisition as acq
+
+
+def test_search_time_by_brute_force_enumeration() -> None:
+    """Oracle: enumerate the cell centres of the +-1 sigma region one by one (SP Sec. 2.5 Delta T)."""
+    for sr, sv in [(75.0, 0.1), (1230.0, 4.0), (630.0, 9.0), (15.0, 0.0), (1000.0, 12.0)]:
+        n_r = 0
+        x = -sr
+        while True:
+            n_r += 1
+            x += 30.0
+            if x >= sr - 1e-9:
+                break
+        n_v = 0
+        v = -sv
+        while True:
+            n_v += 1
+            v += 10.0
+            if v >= sv - 1e-9:
+                break
+        assert acq.search_time(sr, sv) == pytest.approx(0.020 * n_r * n_v)
+
+
+def test_vectorised_cells() -> None:
+    np.testing.assert_array_equal(acq.search_cells(np.array([0.0, 15.0, 15.1, 30.0]), 30.0), [1, 1, 2, 2])
+
+
+def test_box_probability_against_scipy_norm() -> None:
+    """Oracle: binomial expansion of 1 - (1 - q)^n with q = 2 norm.sf(k) (scipy.stats.norm)."""
+    for n in (1, 2, 3):
+        for k in (0.5, 1.0, 3.0, 8.0):
+            q = 2 * norm.sf(k)
+            expected = sum(math.comb(n, j) * (-1) ** (j + 1) * q**j for j in range(1, n + 1))
+            assert acq.probability_outside_sigma_box(n, k) == pytest.approx(expected, rel=1e-9, abs=1e-300)
+
+
+def test_box_probability_far_tail_keeps_precision() -> None:
+    """Oracle: for large k, 1-(1-2Phi(-k))^n ~ 2 n Phi(-k) (Mills-ratio regime; scipy.stats.norm.sf)."""
+    assert acq.probability_outside_sigma_box(2, 10.0) == pytest.approx(4 * norm.sf(10.0), rel=1e-9)
+
+
+def test_doppler_conversions() -> None:
+    assert acq.doppler_cell_hz(0.020) == pytest.approx(50.0)
+    assert acq.range_rate_from_doppler(50.0, 0.19029367279836487) == pytest.approx(9.5147, abs=1e-4)
+    assert math.isclose(acq.search_time_from_cells(82), 1.64)
+
+
+@pytest.mark.parametrize(
+    ("call", "match"),
+    [
+        (lambda: acq.search_cells(-1.0, 30.0), "sigma"),
+        (lambda: acq.search_cells(1.0, 0.0), "cell"),
+        (lambda: acq.search_time_from_cells(0), "n_range"),
+        (lambda: acq.search_time(1.0, 1.0, dwell_s=-1), "dwell_s"),
+        (lambda: acq.probability_outside_sigma_box(0), "n_dims"),
+        (lambda: acq.range_rate_from_doppler(1.0, 0.0), "wavelength_m"),
+    ],
+)
+def test_bad_input_raises(call, match) -> None:
+    with pytest.raises(ValueError, match=match):
+        call()
