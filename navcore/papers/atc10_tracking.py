@@ -22,8 +22,6 @@ import math
 from functools import cache
 
 import numpy as np
-import pymap3d
-from scipy.optimize import minimize_scalar
 
 from navcore.ledger import EXACT, Claim, Erratum, Tolerance, printed
 from navcore.location.clock_tracking import (
@@ -161,6 +159,8 @@ def fitted_radius_ratio() -> float:
     Least squares on the log ratios computed / printed, col. 5 with the printed formula.
     """
 
+    from scipy.optimize import minimize_scalar
+
     def cost(r: float) -> float:
         total = 0.0
         for ex in ("I", "II"):
@@ -175,6 +175,8 @@ def fitted_radius_ratio() -> float:
 
 def _pymap3d_enu_line_of_sight(example: str, radius_ratio: float) -> np.ndarray:
     """Independent construction: pymap3d (spherical ellipsoid) azimuth/elevation -> ENU unit vectors."""
+    import pymap3d
+
     sphere = pymap3d.Ellipsoid(EARTH_MEAN_RADIUS_M, EARTH_MEAN_RADIUS_M, name="sphere")
     lat0, lon0 = AIRCRAFT_LAT_LON
     rows = []
