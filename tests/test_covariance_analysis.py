@@ -167,11 +167,14 @@ def test_lock_table_and_tightly_coupled_rows():
     geo = satellite_geometry(tr, nominal_gps_constellation(), [0, 1])
     sched = tightly_coupled_schedule(lay, geo, code, carrier, pseudorange_noise=1.0, range_rate_noise=0.1)
     m = sched(6)  # channel 0: nothing; channel 1: code and carrier
-    assert len(m) == 2
-    assert m[0].H[0, :3] == pytest.approx(-geo.u_ned[6, 1])
-    assert m[0].H[0, lay.slice("clock bias")] == 1.0
-    assert m[0].H[0, lay.index("pseudorange bias", 1)] == 1.0
-    assert m[1].H[0, 3:6] == pytest.approx(-geo.u_ned[6, 1])
+    assert len(m) == 1 and m[0].H.shape == (2, lay.size)
+    H = m[0].H
+    assert H[0, :3] == pytest.approx(-geo.u_ned[6, 1])
+    assert H[0, lay.slice("clock bias")] == 1.0
+    assert H[0, lay.index("pseudorange bias", 1)] == 1.0
+    assert H[0, lay.index("pseudorange bias", 0)] == 0.0
+    assert H[1, 3:6] == pytest.approx(-geo.u_ned[6, 1])
+    assert np.diag(m[0].R) == pytest.approx([1.0, 0.01])
 
 
 def test_loosely_coupled_gating():

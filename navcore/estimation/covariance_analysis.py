@@ -30,8 +30,9 @@ error is small enough, barometric altitude, and Doppler ground speed in body axe
 
 Discretisation: :math:`\Phi = \sum_{j\le 4} (F\Delta t)^j/j!` (exact for the
 nilpotent chains gyro drift -> attitude -> velocity -> position) and
-:math:`Q = (\Phi\,GQG^T\Phi^T + GQG^T)\Delta t/2`, relinearised whenever the flight
-condition changes (a 1-s step is far below the 84-min Schuler period).
+:math:`Q = \int_0^{\Delta t}\Phi(s)\,GQG^T\Phi(s)^T ds` by Gauss-Legendre quadrature,
+relinearised whenever the flight condition changes (1-s and 10-s steps are far below the
+84-min Schuler period).
 
 References
 ----------
@@ -43,6 +44,7 @@ References
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
@@ -66,8 +68,11 @@ __all__ = [
     "CovarianceAnalysis",
     "SatelliteGeometry",
     "baro_schedule",
+    "best_geometry_channels",
     "circular_error_probable",
     "combine_schedules",
+    "concatenate_analyses",
+    "discrete_noise",
     "doppler_schedule",
     "embedding",
     "horizontal_sigma",
@@ -112,6 +117,9 @@ class CovarianceAnalysis:
         Scalar measurements processed at each time.
     snapshots : dict
         Full true covariance at requested step indices.
+    final_true, final_filter : arrays
+        Full true and filter covariances at the last step (to resume an analysis, e.g. with
+        a different step size, via ``P0`` and ``P0_filter``).
     """
 
     t: Array
@@ -123,6 +131,8 @@ class CovarianceAnalysis:
     horizontal_velocity: Array
     n_updates: NDArray[np.int64]
     snapshots: dict[int, Array]
+    final_true: Array | None = None
+    final_filter: Array | None = None
 
     def sigma(self, block: str, *, filter_model: bool = False) -> Array:
         """1-sigma time series of a block (``(N, size)``), true or as the filter believes."""
@@ -146,15 +156,20 @@ def run_covariance_analysis(
     trajectory: Trajectory,
     truth_layout: StateLayout,
     filter_layout: StateLayout,
-    sources: ErrorSources,
+    sources: ErrorSources | Sequence[ErrorSources],
     P0: ArrayLike,
     schedule: Schedule | None = None,
     *,
     snapshots: Sequence[int] = (),
-    relinearize_every: int = 30,
+    relinearize_every: int = 120,
     inflate_filter_noise: bool = True,
     vertical_channel: bool = True,
-) -> CovarianceAnalysis:
+    P0_filter: ArrayLike | None = None,
+    P0_apriori: ArrayLike | None = None,
+    measurement_steps: ArrayLike | None = None,
+    stride: int = 10,
+    filter_added_psd: ArrayLike | None = None,
+) -> CovarianceAnalysis | list[CovarianceAnalysis]:
     """Propagate the true and the filter covariance along a trajectory.
 
     Parameters
@@ -163,10 +178,13 @@ def run_covariance_analysis(
         Sampled flight condition; the analysis steps at its interval.
     truth_layout, filter_layout : StateLayout
         Truth and filter states (filter blocks must all be truth blocks).
-    sources : ErrorSources
-        Error-source magnitudes (process noise, Gauss-Markov constants).
-    P0 : (n_t, n_t) array
-        Initial truth covariance; the filter starts from its restriction.
+    sources : ErrorSources or sequence of ErrorSources
+        Error-source magnitudes (process noise, Gauss-Markov constants). A sequence runs
+        a batch of systems that share the trajectory, the layouts and the schedule (for
+        instance several IMU grades) in one pass; their Gauss-Markov constants must agree.
+    P0 : (n_t, n_t) or (B, n_t, n_t) array
+        Initial truth covariance (one per batch member); the filter starts from its
+        restriction.
     schedule : callable ``k -> sequence of Measurement``
         Measurements (over the truth layout) at step ``k``.
     snapshots : sequence of int
@@ -179,30 +197,67 @@ def run_covariance_analysis(
     vertical_channel : bool
         Passed to :func:`~navcore.inertial.error_dynamics.error_dynamics` (``False`` for a
         horizontal-only unaided analysis).
+    P0_filter : (n_f, n_f) or (B, n_f, n_f) array, optional
+        Initial filter covariance when resuming an analysis (default: restriction of
+        ``P0``, right at the start of a mission).
+    P0_apriori : array like ``P0``, optional
+        The mission's a-priori truth covariance, whose unmodelled block inflates the filter's
+        measurement noise (default ``P0``; pass the original one when resuming).
+    measurement_steps : (N,) bool array, optional
+        ``True`` where ``schedule`` may return measurements. Where it is known to be
+        ``False`` for ``stride - 1`` consecutive steps and the flight condition does not
+        change, the engine takes one composite step ``Phi^L`` (cached per linearisation)
+        and interpolates the variances of the skipped samples linearly. Default: every
+        step is a single step.
+    stride : int
+        Length of a composite step.
+    filter_added_psd : (n_f,) array, optional
+        Extra white-noise PSD the filter adds to its own model (tuning for unmodelled
+        processes, e.g. gravity anomalies on the velocity states); the truth is unchanged.
 
     Returns
     -------
-    CovarianceAnalysis
+    CovarianceAnalysis, or a list of them for a batch of sources
     """
-    Pt = np.array(P0, dtype=float)
+    batch = not isinstance(sources, ErrorSources)
+    src_list = list(sources) if batch else [sources]
+    if not src_list:
+        raise ValueError("sources must not be empty")
+    for s_ in src_list[1:]:
+        if (s_.gravity, s_.altimeter) != (src_list[0].gravity, src_list[0].altimeter):
+            raise ValueError("sources in a batch must share their Gauss-Markov constants")
+    B = len(src_list)
     n_t = truth_layout.size
-    if Pt.shape != (n_t, n_t):
-        raise ValueError(f"P0 must have shape ({n_t}, {n_t}), got {Pt.shape}")
-    require_symmetric_psd("P0", Pt)
+    Pt = np.array(P0, dtype=float)
+    if Pt.ndim == 2:
+        Pt = np.broadcast_to(Pt, (B, n_t, n_t)).copy()
+    if Pt.shape != (B, n_t, n_t):
+        raise ValueError(f"P0 must have shape ({n_t}, {n_t}) or ({B}, {n_t}, {n_t}), got {Pt.shape}")
+    for b in range(B):
+        require_symmetric_psd("P0", Pt[b])
     require_positive("relinearize_every", relinearize_every)
     idx = embedding(filter_layout, truth_layout)
+    n_f = idx.size
     unmodelled = np.setdiff1d(np.arange(n_t), idx)
-    P0_uu = Pt[np.ix_(unmodelled, unmodelled)]
-    Pf = Pt[np.ix_(idx, idx)].copy()
+    Pa = Pt if P0_apriori is None else np.broadcast_to(np.asarray(P0_apriori, dtype=float), Pt.shape)
+    P0_uu = Pa[:, unmodelled][:, :, unmodelled]
+    if P0_filter is None:
+        Pf = Pt[:, idx][:, :, idx].copy()
+    else:
+        Pf = np.array(P0_filter, dtype=float)
+        if Pf.ndim == 2:
+            Pf = np.broadcast_to(Pf, (B, n_f, n_f)).copy()
+        if Pf.shape != (B, n_f, n_f):
+            raise ValueError(
+                f"P0_filter must have shape ({n_f}, {n_f}) or ({B}, {n_f}, {n_f}), got {Pf.shape}"
+            )
     N = len(trajectory)
     dt = trajectory.dt
-    tv = np.empty((N, n_t))
-    fv = np.empty((N, idx.size))
+    tv = np.empty((B, N, n_t))
+    fv = np.empty((B, N, n_f))
     counts = np.zeros(N, dtype=np.int64)
-    snaps: dict[int, Array] = {}
+    snaps: list[dict[int, Array]] = [{} for _ in range(B)]
     want = {k % N for k in snapshots}
-    eye_t = np.eye(n_t)
-    eye_f = np.eye(idx.size)
     key = None
     since = 0
     Phi_t = Q_t = Phi_f = Q_f = None
@@ -211,13 +266,22 @@ def run_covariance_analysis(
         trajectory.vel_ned, trajectory.lat, trajectory.h
     )
     omega_ib_b = trajectory.omega_nb_b + np.einsum("nji,nj->ni", trajectory.C_bn, omega_in)
-    for k in range(N):
+    # relinearise when the flight condition moves by more than: 1e-4 m/s^2 of specific force,
+    # 1e-2 m/s of velocity, 1e-5 in a direction cosine, 1e-8 rad/s of body rate
+    tol = np.concatenate([np.full(3, 1e-4), np.full(3, 1e-2), np.full(9, 1e-5), np.full(3, 1e-8)])
+    ix_f = np.ix_(idx, idx)
+    conds = np.concatenate(
+        [trajectory.f_ned, trajectory.vel_ned, trajectory.C_bn.reshape(N, 9), omega_ib_b], axis=1
+    )
+    free = None if measurement_steps is None else ~np.asarray(measurement_steps, dtype=bool)
+    exact = np.ones(N, dtype=bool)
+    stride_cache = None
+    k = 0
+    while k < N:
         if k > 0:
             j = k - 1
-            cond = np.concatenate(
-                [trajectory.f_ned[j], trajectory.vel_ned[j], trajectory.C_bn[j].ravel(), omega_ib_b[j]]
-            )
-            if key is None or since >= relinearize_every or np.max(np.abs(cond - key)) > 1e-9:
+            cond = conds[j]
+            if key is None or since >= relinearize_every or np.any(np.abs(cond - key) > tol):
                 F = error_dynamics(
                     truth_layout,
                     f_ned=trajectory.f_ned[j],
@@ -226,19 +290,47 @@ def run_covariance_analysis(
                     v_ned=trajectory.vel_ned[j],
                     lat=float(trajectory.lat[j]),
                     h=float(trajectory.h[j]),
-                    sources=sources,
+                    sources=src_list[0],
                     vertical_channel=vertical_channel,
                 )
-                S = process_noise_psd(truth_layout, sources, speed_mps=float(speed[j]))
+                S = np.stack(
+                    [process_noise_psd(truth_layout, s_, speed_mps=float(speed[j])) for s_ in src_list]
+                )
                 Phi_t = taylor_transition(F, dt)
-                Q_t = 0.5 * (Phi_t @ S @ Phi_t.T + S) * dt
-                Q_t = 0.5 * (Q_t + Q_t.T)
-                Phi_f = Phi_t[np.ix_(idx, idx)]
-                Q_f = Q_t[np.ix_(idx, idx)]
-                key, since = cond, 0
-            since += 1
-            Pt = Phi_t @ Pt @ Phi_t.T + Q_t
-            Pf = Phi_f @ Pf @ Phi_f.T + Q_f
+                Q_t = discrete_noise(F, S, dt)
+                Phi_f = Phi_t[ix_f]
+                Q_f = Q_t[:, idx][:, :, idx]
+                if filter_added_psd is not None:
+                    Q_f = Q_f + np.diag(np.asarray(filter_added_psd, dtype=float)) * dt
+                key, since, stride_cache = cond, 0, None
+            L = stride
+            if (
+                free is not None
+                and L > 1
+                and j + L < N
+                and since + L <= relinearize_every
+                and free[j + 1 : j + L].all()
+                and not any(j < w < j + L for w in want)
+                and np.all(np.abs(conds[j : j + L] - key) <= tol)
+            ):
+                # L measurement-free steps under one linearisation: one composite step
+                if stride_cache is None:
+                    PhiL, QL, QLf = np.eye(n_t), np.zeros_like(Q_t), np.zeros_like(Q_f)
+                    for _ in range(L):
+                        PhiL = Phi_t @ PhiL
+                        QL = Phi_t @ QL @ Phi_t.T + Q_t
+                        QLf = Phi_f @ QLf @ Phi_f.T + Q_f
+                    stride_cache = (PhiL, QL, PhiL[ix_f], QLf)
+                PhiL, QL, PhiLf, QLf = stride_cache
+                Pt = PhiL @ Pt @ PhiL.T + QL
+                Pf = PhiLf @ Pf @ PhiLf.T + QLf
+                exact[j + 1 : j + L] = False
+                k = j + L
+                since += L
+            else:
+                since += 1
+                Pt = Phi_t @ Pt @ Phi_t.T + Q_t
+                Pf = Phi_f @ Pf @ Phi_f.T + Q_f
         if schedule is not None:
             meas = list(schedule(k))
             if meas:
@@ -247,34 +339,94 @@ def run_covariance_analysis(
                 m_tot = Ht.shape[0]
                 Rt = np.zeros((m_tot, m_tot))
                 r0 = 0
-                for B in blocks:
-                    Rt[r0 : r0 + B.shape[0], r0 : r0 + B.shape[0]] = B
-                    r0 += B.shape[0]
+                for Rb in blocks:
+                    Rt[r0 : r0 + Rb.shape[0], r0 : r0 + Rb.shape[0]] = Rb
+                    r0 += Rb.shape[0]
                 Hf = Ht[:, idx]
-                Rf = Rt
+                Rf = np.broadcast_to(Rt, (B, m_tot, m_tot))
                 if inflate_filter_noise and unmodelled.size:
                     Hu = Ht[:, unmodelled]
                     Rf = Rt + Hu @ P0_uu @ Hu.T
-                Sf = Hf @ Pf @ Hf.T + Rf
-                K = np.linalg.solve(Sf, Hf @ Pf).T
-                A = eye_f - K @ Hf
-                Pf = A @ Pf @ A.T + K @ Rf @ K.T
-                EK = np.zeros((n_t, m_tot))
-                EK[idx] = K
-                At = eye_t - EK @ Ht
-                Pt = At @ Pt @ At.T + EK @ Rt @ EK.T
+                HP = Hf @ Pf  # (B, m, n_f)
+                Sf = HP @ Hf.T + Rf
+                K = np.swapaxes(np.linalg.solve(Sf, HP), 1, 2)  # (B, n_f, m)
+                # optimal gain for the filter's own model: P+ = P - K S K^T (rank-m downdate)
+                Pf = Pf - K @ HP
+                # any gain for the truth: P+ = P - EK H P - P H' EK' + EK (H P H' + R) EK'
+                # (the Joseph form expanded, O(n^2 m) instead of O(n^3))
+                EK = np.zeros((B, n_t, m_tot))
+                EK[:, idx] = K
+                HPt = Ht @ Pt  # (B, m, n_t)
+                EKHP = EK @ HPt
+                St = HPt @ Ht.T + Rt
+                Pt = Pt - EKHP - np.swapaxes(EKHP, 1, 2) + EK @ St @ np.swapaxes(EK, 1, 2)
                 counts[k] = m_tot
-        Pt = 0.5 * (Pt + Pt.T)
-        Pf = 0.5 * (Pf + Pf.T)
-        tv[k] = np.diagonal(Pt)
-        fv[k] = np.diagonal(Pf)
+        Pt = 0.5 * (Pt + np.swapaxes(Pt, 1, 2))
+        Pf = 0.5 * (Pf + np.swapaxes(Pf, 1, 2))
+        tv[:, k] = np.diagonal(Pt, axis1=1, axis2=2)
+        fv[:, k] = np.diagonal(Pf, axis1=1, axis2=2)
         if k in want:
-            snaps[k] = Pt.copy()
+            for b in range(B):
+                snaps[b][k] = Pt[b].copy()
+        k += 1
+    if not exact.all():
+        # samples skipped by composite steps: interpolate the variances linearly in time
+        t_all = trajectory.t
+        for arr in (tv, fv):
+            for b in range(B):
+                for c in range(arr.shape[2]):
+                    arr[b, ~exact, c] = np.interp(t_all[~exact], t_all[exact], arr[b, exact, c])
     p = truth_layout.slice("position").start
     v = truth_layout.slice("velocity").start
-    hp = np.sqrt(np.clip(tv[:, p] + tv[:, p + 1], 0.0, None))
-    hv = np.sqrt(np.clip(tv[:, v] + tv[:, v + 1], 0.0, None))
-    return CovarianceAnalysis(trajectory.t, truth_layout, filter_layout, tv, fv, hp, hv, counts, snaps)
+    out = []
+    for b in range(B):
+        hp = np.sqrt(np.clip(tv[b, :, p] + tv[b, :, p + 1], 0.0, None))
+        hv = np.sqrt(np.clip(tv[b, :, v] + tv[b, :, v + 1], 0.0, None))
+        out.append(
+            CovarianceAnalysis(
+                trajectory.t,
+                truth_layout,
+                filter_layout,
+                tv[b],
+                fv[b],
+                hp,
+                hv,
+                counts,
+                snaps[b],
+                Pt[b],
+                Pf[b],
+            )
+        )
+    return out if batch else out[0]
+
+
+_GAUSS3 = np.polynomial.legendre.leggauss(3)
+
+
+def discrete_noise(F: ArrayLike, S: ArrayLike, dt: float) -> Array:
+    """``Q = int_0^dt Phi(s) S Phi(s)^T ds`` by 3-point Gauss-Legendre quadrature.
+
+    The 3-point rule integrates polynomials of degree 5 exactly, i.e. every term of the
+    integrand up to the third power of ``F s``; the neglected terms are of relative size
+    ``(|F| dt)^6``. ``S`` may be a stack
+    ``(B, n, n)`` of noise PSDs.
+
+    Examples
+    --------
+    A double integrator driven by white acceleration of PSD ``q``:
+
+    >>> Q = discrete_noise([[0.0, 1.0], [0.0, 0.0]], [[0.0, 0.0], [0.0, 2.0]], 0.5)
+    >>> np.allclose(Q, 2.0 * np.array([[0.5**3 / 3, 0.5**2 / 2], [0.5**2 / 2, 0.5]]))
+    True
+    """
+    F = np.asarray(F, dtype=float)
+    S = np.asarray(S, dtype=float)
+    x, w = _GAUSS3
+    Q = np.zeros(S.shape)
+    for xi, wi in zip(x, w, strict=True):
+        P = taylor_transition(F, 0.5 * dt * (xi + 1.0))
+        Q = Q + (0.5 * dt * wi) * (P @ S @ P.T)
+    return 0.5 * (Q + np.swapaxes(Q, -1, -2))
 
 
 def taylor_transition(F: ArrayLike, dt: float, order: int = 4) -> Array:
@@ -286,11 +438,48 @@ def taylor_transition(F: ArrayLike, dt: float, order: int = 4) -> Array:
     [[1.0, 2.0], [0.0, 1.0]]
     """
     A = np.asarray(F, dtype=float) * dt
-    n = A.shape[0]
-    Phi = np.eye(n)
+    eye = np.eye(A.shape[0])
+    Phi = eye
     for j in range(order, 0, -1):
-        Phi = np.eye(n) + (A @ Phi) / j
+        Phi = eye + (A @ Phi) / j
     return Phi
+
+
+def concatenate_analyses(parts: Sequence[CovarianceAnalysis]) -> CovarianceAnalysis:
+    """Join consecutive analyses (each resumed from the previous one's final covariances)
+    into one time series; a part's first sample, equal to the previous part's last, is
+    dropped."""
+    if not parts:
+        raise ValueError("parts must not be empty")
+    for a, b in itertools.pairwise(parts):
+        if abs(b.t[0] - a.t[-1]) > 1e-9:
+            raise ValueError("parts must be consecutive: each starts where the previous ends")
+
+    def join(attr: str) -> Array:
+        return np.concatenate([getattr(parts[0], attr)] + [getattr(p, attr)[1:] for p in parts[1:]])
+
+    snaps: dict[int, Array] = {}
+    offset = 0
+    for j, p in enumerate(parts):
+        for k, v in p.snapshots.items():
+            snaps[offset + k] = v
+        offset += len(p.t) - 1
+        if j == 0:
+            offset = len(p.t) - 1
+    last = parts[-1]
+    return CovarianceAnalysis(
+        join("t"),
+        parts[0].truth_layout,
+        parts[0].filter_layout,
+        join("true_var"),
+        join("filter_var"),
+        join("horizontal_position"),
+        join("horizontal_velocity"),
+        join("n_updates"),
+        snaps,
+        last.final_true,
+        last.final_filter,
+    )
 
 
 # --------------------------------------------------------------------------- GPS geometry
@@ -377,8 +566,12 @@ def tightly_coupled_schedule(
     range_rate_noise: float,
     every: int = 1,
     mask_rad: float = 0.0,
+    g_load: NDArray[np.float64] | None = None,
 ) -> Schedule:
     """Pseudorange (code lock) and range rate (carrier lock) from each channel every ``every`` steps.
+
+    ``g_load`` (specific-force magnitude in g at each step) enters the range-rate rows
+    through the clock's g-sensitivity state, consistently with the clock-bias dynamics.
 
     Rows (truth layout): ``d rho = -u . dr + db + b_pr[c]``, ``d rho_dot = -u . dv + d(b_dot) + b_rr[c]``.
     """
@@ -386,33 +579,43 @@ def tightly_coupled_schedule(
     require_positive("range_rate_noise", range_rate_noise)
     n = layout.size
     names = layout.names
-    p, v = layout.slice("position"), layout.slice("velocity")
+    p0, v0 = layout.slice("position").start, layout.slice("velocity").start
+    n_ch = geometry.u_ned.shape[1]
+    i_b = layout.index("clock bias") if "clock bias" in names else None
+    i_d = layout.index("clock drift") if "clock drift" in names else None
+    i_pb = layout.slice("pseudorange bias").start if "pseudorange bias" in names else None
+    i_rb = layout.slice("range-rate bias").start if "range-rate bias" in names else None
+    i_g = (
+        layout.index("clock g-sensitivity") if "clock g-sensitivity" in names and g_load is not None else None
+    )
+    use_code = code & (geometry.elevation >= mask_rad)
+    use_carr = carrier & (geometry.elevation >= mask_rad)
+    ch = np.arange(n_ch)
 
     def sched(k: int) -> list[Measurement]:
         if k % every:
             return []
-        out = []
-        for c in range(geometry.u_ned.shape[1]):
-            if geometry.elevation[k, c] < mask_rad:
-                continue
-            u = geometry.u_ned[k, c]
-            if code[k, c]:
-                H = np.zeros((1, n))
-                H[0, p] = -u
-                if "clock bias" in names:
-                    H[0, layout.slice("clock bias")] = 1.0
-                if "pseudorange bias" in names:
-                    H[0, layout.index("pseudorange bias", c)] = 1.0
-                out.append(Measurement(H, np.array([[pseudorange_noise**2]])))
-            if carrier[k, c]:
-                H = np.zeros((1, n))
-                H[0, v] = -u
-                if "clock drift" in names:
-                    H[0, layout.slice("clock drift")] = 1.0
-                if "range-rate bias" in names:
-                    H[0, layout.index("range-rate bias", c)] = 1.0
-                out.append(Measurement(H, np.array([[range_rate_noise**2]])))
-        return out
+        cc, cr = ch[use_code[k]], ch[use_carr[k]]
+        if cc.size + cr.size == 0:
+            return []
+        H = np.zeros((cc.size + cr.size, n))
+        u = geometry.u_ned[k]
+        rows = np.arange(cc.size)
+        H[rows, p0 : p0 + 3] = -u[cc]
+        if i_b is not None:
+            H[rows, i_b] = 1.0
+        if i_pb is not None:
+            H[rows, i_pb + cc] = 1.0
+        rows = cc.size + np.arange(cr.size)
+        H[rows, v0 : v0 + 3] = -u[cr]
+        if i_d is not None:
+            H[rows, i_d] = 1.0
+        if i_rb is not None:
+            H[rows, i_rb + cr] = 1.0
+        if i_g is not None:
+            H[rows, i_g] = g_load[k]
+        R = np.diag(np.r_[np.full(cc.size, pseudorange_noise**2), np.full(cr.size, range_rate_noise**2)])
+        return [Measurement(H, R)]
 
     return sched
 
@@ -569,3 +772,34 @@ def circular_error_probable(P2: ArrayLike, p: float = 0.5) -> float:
 
     hi = 10.0 * np.sqrt(max(a, b))
     return float(brentq(lambda r: prob(r) - p, 0.0, hi, xtol=1e-12 * hi))
+
+
+def best_geometry_channels(
+    trajectory: Trajectory, constellation: Constellation, n: int = 4, mask_deg: float = 10.0
+) -> NDArray[np.int64]:
+    """The ``n`` satellites with the smallest mean PDOP among those above ``mask_deg`` for
+    the whole trajectory (brute force over combinations of the always-visible satellites)."""
+    from itertools import combinations
+
+    require_positive("n", n)
+    geo = satellite_geometry(trajectory, constellation, range(constellation.prn.size))
+    always = np.flatnonzero(np.all(geo.elevation >= mask_deg * np.pi / 180, axis=0))
+    if always.size < n:
+        raise ValueError(
+            f"only {always.size} satellites stay above mask_deg={mask_deg} for the whole trajectory"
+        )
+    ks = np.linspace(0, len(trajectory) - 1, 12).astype(int)
+    best, best_val = None, np.inf
+    for combo in combinations(always.tolist(), n):
+        u = geo.u_ned[np.ix_(ks, combo)]  # (K, n, 3)
+        G = np.concatenate([-u, np.ones((*u.shape[:2], 1))], axis=-1)
+        GtG = np.einsum("kni,knj->kij", G, G)
+        if np.any(np.abs(np.linalg.det(GtG)) < 1e-9):
+            continue
+        Q = np.linalg.inv(GtG)
+        val = float(np.mean(np.sqrt(Q[:, 0, 0] + Q[:, 1, 1] + Q[:, 2, 2])))
+        if val < best_val:
+            best, best_val = combo, val
+    if best is None:
+        raise ValueError("no satellite combination gives a usable geometry")
+    return np.asarray(best, dtype=np.int64)

@@ -243,6 +243,9 @@ def ins_error_layout(*names: str, channels: int = 4, name: str = "") -> StateLay
 def skew_stack(v: ArrayLike) -> Array:
     """Skew-symmetric cross-product matrices of vectors ``(..., 3) -> (..., 3, 3)``."""
     v = np.asarray(v, dtype=float)
+    if v.shape == (3,):
+        x, y, w = v
+        return np.array([[0.0, -w, y], [w, 0.0, -x], [-y, x, 0.0]])
     z = np.zeros(v.shape[:-1])
     x, y, w = v[..., 0], v[..., 1], v[..., 2]
     return np.stack([np.stack([z, -w, y], -1), np.stack([w, z, -x], -1), np.stack([-y, x, z], -1)], -2)
@@ -250,6 +253,8 @@ def skew_stack(v: ArrayLike) -> Array:
 
 def earth_rate_ned(lat: ArrayLike) -> Array:
     """Earth rate in NED at latitude ``lat`` (rad): ``Omega [cos L, 0, -sin L]``."""
+    if np.ndim(lat) == 0:
+        return OMEGA_EARTH * np.array([np.cos(lat), 0.0, -np.sin(lat)])
     lat = np.asarray(lat, dtype=float)
     return OMEGA_EARTH * np.stack([np.cos(lat), np.zeros_like(lat), -np.sin(lat)], -1)
 
@@ -338,14 +343,14 @@ def error_dynamics(
     for block, (rows, M) in couplings.items():
         if block in names:
             F[rows, sl(block)] = M
-    speed = float(np.linalg.norm(v))
+    speed = float(np.sqrt(v @ v))
     if "gravity" in names:
         F[vv, sl("gravity")] = np.eye(3)
         if sources is not None and sources.gravity is not None:
-            beta = gauss_markov_rate(sources.gravity.distance_constant_m, speed)
+            beta = speed / sources.gravity.distance_constant_m
             F[sl("gravity"), sl("gravity")] = -beta * np.eye(3)
     if "altimeter bias" in names and sources is not None and sources.altimeter is not None:
-        beta = gauss_markov_rate(sources.altimeter.distance_constant_m, speed)
+        beta = speed / sources.altimeter.distance_constant_m
         F[sl("altimeter bias"), sl("altimeter bias")] = -beta
     if "clock bias" in names and "clock drift" in names:
         F[sl("clock bias"), sl("clock drift")] = 1.0
@@ -371,10 +376,10 @@ def process_noise_psd(layout: StateLayout, sources: ErrorSources, *, speed_mps: 
     q[layout.slice("velocity")] = imu.accel_random_walk**2
     q[layout.slice("misalignment")] = imu.gyro_random_walk**2
     if "gravity" in names and sources.gravity is not None:
-        beta = gauss_markov_rate(sources.gravity.distance_constant_m, speed_mps)
+        beta = speed_mps / sources.gravity.distance_constant_m
         q[layout.slice("gravity")] = 2 * sources.gravity.sigma**2 * beta
     if "altimeter bias" in names and sources.altimeter is not None:
-        beta = gauss_markov_rate(sources.altimeter.distance_constant_m, speed_mps)
+        beta = speed_mps / sources.altimeter.distance_constant_m
         q[layout.slice("altimeter bias")] = 2 * sources.altimeter.sigma**2 * beta
     if sources.clock is not None:
         if "clock bias" in names:

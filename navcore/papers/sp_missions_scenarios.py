@@ -1,0 +1,495 @@
+"""SP Section 2.6 missions set up for the covariance-analysis engine.
+
+The paper publishes the error budgets (Tables 2.4, 2.5, 2.8), the filter state vectors
+(Tables 2.2, 2.3), the measurement rules (Sec. 2.1-2.2) and the event times of the
+sequential outage, but not the trajectories, the satellite geometry, the receiver noise, the
+clock model or the jammer. Every such input is collected in :class:`Assumptions` with the
+value used here; the book prints it next to each figure.
+
+Nothing here is a model: the models are :mod:`navcore.inertial.error_dynamics` and
+:mod:`navcore.estimation.covariance_analysis`. This module only wires the paper's inputs
+into them.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, fields
+from functools import cache
+
+import numpy as np
+
+from navcore.estimation.covariance_analysis import (
+    CovarianceAnalysis,
+    baro_schedule,
+    best_geometry_channels,
+    combine_schedules,
+    concatenate_analyses,
+    doppler_schedule,
+    lock_table,
+    loosely_coupled_schedule,
+    run_covariance_analysis,
+    satellite_geometry,
+    tightly_coupled_schedule,
+)
+from navcore.estimation.layout import StateLayout
+from navcore.gnss.architectures import loosely_coupled_layout, tightly_coupled_layout
+from navcore.gnss.constellation import nominal_gps_constellation
+from navcore.inertial.error_dynamics import (
+    ClockModel,
+    ErrorSources,
+    GaussMarkov,
+    gyrocompass_alignment,
+    initial_covariance,
+    ins_error_layout,
+)
+from navcore.inertial.imu import ImuSpec
+from navcore.inertial.trajectories import Segment, Trajectory, fly
+from navcore.papers.sp_tables import (
+    BAROMETER_MARKOV,
+    GRAVITY_MARKOV,
+    TABLE_2_8,
+    sp_imu_grades,
+    table_2_4,
+)
+from navcore.units import DEG, FT, G0, MINUTE
+
+__all__ = [
+    "ASSUMED",
+    "SYSTEMS",
+    "Assumptions",
+    "System",
+    "error_sources",
+    "head_on_approach",
+    "head_on_trajectory",
+    "helicopter",
+    "helicopter_trajectory",
+    "sequential_outage",
+    "sequential_outage_events",
+    "sequential_outage_trajectory",
+    "target_location_sigma",
+    "truth_layout",
+]
+
+
+@dataclass(frozen=True)
+class Assumptions:
+    """Inputs the paper does not publish, with the values used in this book."""
+
+    latitude_deg: float = 35.0
+    longitude_deg: float = -117.0
+    cruise_altitude_m: float = 7000.0
+    cruise_speed_mps: float = 200.0
+    turn_rate_deg_s: float = 1.5
+    pseudorange_noise_m: float = 1.0
+    range_rate_noise_mps: float = 0.05
+    clock_bias_psd_m2_s: float = 0.0036
+    clock_drift_psd_m2_s3: float = 7.1e-5
+    channels: int = 4
+    mask_deg: float = 10.0
+    step_s: float = 1.0
+    helicopter_speed_mps: float = 40.0
+    helicopter_calibration_min: float = 30.0
+    doppler_noise_mps: float = 0.1
+    baro_interval_s: float = 10.0
+    target_range_m: float = 8000.0
+
+    def table(self) -> list[tuple[str, float]]:
+        """``[(field, value), ...]`` for printing."""
+        return [(f.name, getattr(self, f.name)) for f in fields(self)]
+
+
+ASSUMED = Assumptions()
+
+
+@dataclass(frozen=True)
+class System:
+    """A navigation system of Sec. 2.6: architecture and IMU quality (nmi/h)."""
+
+    architecture: str  # "loose" or "tight"
+    grade: float
+
+    @property
+    def label(self) -> str:
+        return f"{'LC' if self.architecture == 'loose' else 'TC'} {self.grade:g} nmi/h"
+
+
+#: The five systems of Figs. 2.4-2.8: the loosely coupled 1 nmi/h and four tightly coupled.
+SYSTEMS: tuple[System, ...] = (
+    System("loose", 1.0),
+    System("tight", 10.0),
+    System("tight", 1.0),
+    System("tight", 0.5),
+    System("tight", 0.2),
+)
+
+
+def truth_layout(*, doppler: bool = False, channels: int = ASSUMED.channels) -> StateLayout:
+    """Truth states: the 24 tightly coupled states plus everything Table 2.4/2.5 lists that
+    the filters do not carry (instrument misalignments, gravity anomaly, clock
+    g-sensitivity, per-channel pseudorange and range-rate biases, Doppler errors)."""
+    extra = [
+        "gyro misalignment",
+        "accel misalignment",
+        "gravity",
+        "clock g-sensitivity",
+        "pseudorange bias",
+        "range-rate bias",
+    ]
+    if doppler:
+        extra += ["doppler bias", "doppler scale factor", "doppler misalignment"]
+    return StateLayout(
+        tightly_coupled_layout().blocks + ins_error_layout(*extra, channels=channels).blocks, "truth"
+    )
+
+
+def error_sources(spec: ImuSpec) -> ErrorSources:
+    """Table 2.4 (INS-independent) and Table 2.8 errors around one Table 2.5 instrument."""
+    t = table_2_4()
+    return ErrorSources(
+        imu=spec,
+        gravity=GaussMarkov(GRAVITY_MARKOV.sigma, GRAVITY_MARKOV.distance_constant_m),
+        altimeter=GaussMarkov(BAROMETER_MARKOV.sigma, BAROMETER_MARKOV.distance_constant_m),
+        clock=ClockModel(
+            bias_sigma=t["clock initial offset"].si,
+            drift_sigma=t["clock initial drift"].si,
+            g_sensitivity_sigma=t["clock g-sensitive drift"].si,
+            bias_psd=ASSUMED.clock_bias_psd_m2_s,
+            drift_psd=ASSUMED.clock_drift_psd_m2_s3,
+        ),
+        pseudorange_bias_sigma=t["pseudorange bias"].si,
+        range_rate_bias_sigma=t["range-rate bias"].si,
+        doppler_bias=(TABLE_2_8.bias_horizontal, TABLE_2_8.bias_horizontal, TABLE_2_8.bias_vertical),
+        doppler_scale_factor=(
+            TABLE_2_8.scale_factor_horizontal,
+            TABLE_2_8.scale_factor_horizontal,
+            TABLE_2_8.scale_factor_vertical,
+        ),
+        doppler_misalignment=TABLE_2_8.misalignment,
+    )
+
+
+def _gravity_tuning(filt: StateLayout, sources: ErrorSources, speed: float) -> np.ndarray:
+    """Filter tuning for the unmodelled gravity anomaly: white acceleration noise with the
+    low-frequency PSD ``2 sigma^2 tau`` of the Gauss-Markov process (``tau = d / v``)."""
+    q = np.zeros(filt.size)
+    gm = sources.gravity
+    if gm is not None and speed > 0:
+        q[filt.slice("velocity")] = 2 * gm.sigma**2 * gm.distance_constant_m / speed
+    return q
+
+
+def _apriori_point(tr: Trajectory) -> Trajectory:
+    return tr
+
+
+def _initial_covariance(truth: StateLayout, sources: ErrorSources, tr: Trajectory) -> np.ndarray:
+    t = table_2_4()
+    ph = t["initial position (horizontal)"].si
+    P0 = initial_covariance(
+        truth,
+        sources,
+        position_sigma=(ph, ph, t["initial position (vertical)"].si),
+        velocity_sigma=(t["initial velocity"].si,) * 3,
+    )
+    return gyrocompass_alignment(P0, truth, lat=float(tr.lat[0]), C_bn=tr.C_bn[0])
+
+
+def _slice(tr: Trajectory, t0: float, t1: float, step: int = 1) -> Trajectory:
+    """Samples of ``tr`` from ``t0`` to ``t1`` (inclusive), every ``step``-th."""
+    i0 = int(np.argmin(np.abs(tr.t - t0)))
+    i1 = int(np.argmin(np.abs(tr.t - t1)))
+    sl = slice(i0, i1 + 1, step)
+    return Trajectory(*(getattr(tr, f.name)[sl] for f in fields(tr)))
+
+
+def _run(
+    systems: tuple[System, ...],
+    tr: Trajectory,
+    code: np.ndarray,
+    carrier: np.ndarray,
+    channels: np.ndarray,
+    *,
+    doppler: bool = False,
+    snapshots: tuple[int, ...] = (-1,),
+    resume: dict[System, CovarianceAnalysis] | None = None,
+) -> dict[System, CovarianceAnalysis]:
+    """Run several systems on one trajectory and lock table (one batched pass per
+    architecture), from the mission start or resuming from ``resume``'s final covariances."""
+    out: dict[System, CovarianceAnalysis] = {}
+    truth = truth_layout(doppler=doppler, channels=len(channels))
+    geo = satellite_geometry(tr, nominal_gps_constellation(), channels)
+    every = max(1, round(ASSUMED.baro_interval_s / tr.dt))
+    baro = baro_schedule(truth, noise_m=table_2_4()["barometer noise"].si, every=every)
+    dop = doppler_schedule(truth, tr, noise_mps=ASSUMED.doppler_noise_mps) if doppler else None
+    for arch in ("loose", "tight"):
+        group = [s for s in systems if s.architecture == arch]
+        if not group:
+            continue
+        sources = [error_sources(sp_imu_grades()[s.grade]) for s in group]
+        filt = loosely_coupled_layout() if arch == "loose" else tightly_coupled_layout()
+        if doppler:
+            filt = StateLayout(
+                filt.blocks + ins_error_layout("doppler bias", "doppler scale factor").blocks, filt.name
+            )
+        if arch == "loose":
+            gps = loosely_coupled_schedule(
+                truth,
+                geo,
+                code,
+                pseudorange_noise=ASSUMED.pseudorange_noise_m,
+                pseudorange_bias_sigma=sources[0].pseudorange_bias_sigma,
+            )
+        else:
+            gps = tightly_coupled_schedule(
+                truth,
+                geo,
+                code,
+                carrier,
+                pseudorange_noise=ASSUMED.pseudorange_noise_m,
+                range_rate_noise=ASSUMED.range_rate_noise_mps,
+                g_load=np.linalg.norm(tr.f_ned, axis=1) / G0,
+            )
+        apriori = np.stack([_initial_covariance(truth, src, _apriori_point(tr)) for src in sources])
+        if resume is None:
+            P0, Pf0 = apriori, None
+        else:
+            P0 = np.stack([resume[s].final_true for s in group])
+            Pf0 = np.stack([resume[s].final_filter for s in group])
+        steps = np.zeros(len(tr), dtype=bool)
+        steps[::every] = True  # barometer
+        if arch == "loose":
+            steps[::10] = True
+        else:
+            steps |= (code | carrier).any(axis=1)
+        if doppler:
+            steps[:] = True
+        res = run_covariance_analysis(
+            tr,
+            truth,
+            filt,
+            sources,
+            P0,
+            combine_schedules(gps, baro, dop),
+            snapshots=snapshots,
+            P0_filter=Pf0,
+            P0_apriori=apriori,
+            measurement_steps=steps,
+            filter_added_psd=_gravity_tuning(filt, sources[0], float(np.mean(tr.speed))),
+        )
+        out.update(zip(group, res, strict=True))
+    return out
+
+
+# ------------------------------------------------------------------ sequential outage
+
+
+def sequential_outage_events(
+    channels: int = 4,
+    first_carrier_loss_s: float = 360.0,
+    first_code_loss_s: float = 1020.0,
+    interval_s: float = 180.0,
+    outage_s: float | None = 20 * MINUTE,
+) -> list[tuple[float, int, str, bool]]:
+    """Loss and reacquisition events of SP Sec. 2.6.1.
+
+    Carriers are lost one by one at ``interval_s`` from ``first_carrier_loss_s``, codes from
+    ``first_code_loss_s``; after ``outage_s`` of total outage the signals come back in the
+    inverse order (codes first, last-lost first), at the same interval. ``outage_s=None``
+    gives the free-inertial variant (no reacquisition).
+    """
+    ev = []
+    for c in range(channels):
+        ev.append((first_carrier_loss_s + c * interval_s, c, "carrier", False))
+        ev.append((first_code_loss_s + c * interval_s, c, "code", False))
+    if outage_s is not None:
+        t0 = first_code_loss_s + (channels - 1) * interval_s + outage_s
+        order = [(c, "code") for c in reversed(range(channels))] + [
+            (c, "carrier") for c in reversed(range(channels))
+        ]
+        for j, (c, kind) in enumerate(order):
+            ev.append((t0 + j * interval_s, c, kind, True))
+    return ev
+
+
+def sequential_outage_trajectory(duration_s: float) -> Trajectory:
+    """Cruise at constant height and speed with a 90-degree coordinated turn every 10 min
+    (alternating left and right), which makes heading and the gyro errors observable."""
+    a = ASSUMED
+    turn_s = 90.0 / a.turn_rate_deg_s
+    segs: list[Segment] = [Segment(240.0)]
+    t = 240.0
+    sign = 1.0
+    while t < duration_s:
+        segs.append(Segment(turn_s, turn_rate=sign * a.turn_rate_deg_s * DEG))
+        segs.append(Segment(600.0 - turn_s))
+        t += 600.0
+        sign = -sign
+    tr = fly(
+        segs,
+        dt=a.step_s,
+        lat0=a.latitude_deg * DEG,
+        lon0=a.longitude_deg * DEG,
+        h0=a.cruise_altitude_m,
+        speed0=a.cruise_speed_mps,
+    )
+    n = round(duration_s / a.step_s) + 1
+    return Trajectory(*(getattr(tr, f.name)[:n] for f in fields(tr)))
+
+
+#: Phases of the sequential-outage mission (s): to the last code loss, to reacquisition, to the end.
+_LAST_CODE_LOSS_S = 1020.0 + 3 * 180.0
+_REACQUISITION_S = _LAST_CODE_LOSS_S + 20 * MINUTE
+_END_S = 104 * MINUTE
+_END_FREE_S = _LAST_CODE_LOSS_S + 84 * MINUTE
+
+
+def _phase(systems, tr_full, channels, t0, t1, step, events, resume):
+    tr = _slice(tr_full, t0, t1, step)
+    code, carrier = lock_table(tr.t, len(channels), events)
+    return _run(systems, tr, code, carrier, channels, resume=resume)
+
+
+@cache
+def _sequential_common() -> tuple[Trajectory, np.ndarray, dict, dict]:
+    tr = sequential_outage_trajectory(_END_FREE_S)
+    channels = _channels(_END_FREE_S)
+    ev = sequential_outage_events(len(channels), outage_s=20 * MINUTE)
+    a = _phase(SYSTEMS, tr, channels, 0.0, _LAST_CODE_LOSS_S, 1, ev, None)
+    b = _phase(SYSTEMS, tr, channels, _LAST_CODE_LOSS_S, _REACQUISITION_S, 1, ev, a)
+    return tr, channels, a, b
+
+
+@cache
+def sequential_outage(free_inertial: bool = False) -> dict[System, CovarianceAnalysis]:
+    """Run the sequential outage for the five systems: the 20-min outage with reacquisition
+    (to 104 min) or, with ``free_inertial``, 84 min without GPS after the last code loss.
+
+    The two variants share the mission up to reacquisition, which is computed once."""
+    tr, channels, a, b = _sequential_common()
+    ev = sequential_outage_events(len(channels), outage_s=None if free_inertial else 20 * MINUTE)
+    if free_inertial:
+        c = _phase(SYSTEMS, tr, channels, _REACQUISITION_S, _END_FREE_S, 1, ev, b)
+    else:
+        c = _phase(SYSTEMS, tr, channels, _REACQUISITION_S, _END_S, 1, ev, b)
+    return {s: concatenate_analyses([a[s], b[s], c[s]]) for s in SYSTEMS}
+
+
+@cache
+def _channels(duration: float) -> np.ndarray:
+    return best_geometry_channels(
+        sequential_outage_trajectory(duration),
+        nominal_gps_constellation(),
+        ASSUMED.channels,
+        ASSUMED.mask_deg,
+    )
+
+
+# ------------------------------------------------------------------ head-on approach
+
+
+def head_on_trajectory() -> Trajectory:
+    """Take-off climb to 40,000 ft, a missile-evasion turn, dive to 200 ft, low-level
+    ingress, pop-up climb to about 3,000 ft and release (times in :data:`HEAD_ON_TIMES`)."""
+    a = ASSUMED
+    segs = [
+        Segment(20.0, path_angle_rate=0.5 * DEG),  # rotate to a 10 deg climb
+        Segment(60.0, speed_rate=2.0),  # accelerate in the climb
+        Segment(183.0),  # climb to about 40,000 ft
+        Segment(20.0, path_angle_rate=-0.5 * DEG),  # level off
+        Segment(300.0),  # cruise
+        Segment(20.0, turn_rate=4.0 * DEG),  # break turn (missile evasion)
+        Segment(20.0, turn_rate=-4.0 * DEG),
+        Segment(30.0, path_angle_rate=-0.5 * DEG),  # push over into a 15 deg dive
+        Segment(135.0),  # dive
+        Segment(30.0, path_angle_rate=0.5 * DEG),  # pull out near 200 ft
+        Segment(600.0),  # low-level ingress
+        Segment(10.0, path_angle_rate=1.0 * DEG),  # pop-up
+        Segment(12.0),
+        Segment(10.0, path_angle_rate=-1.0 * DEG),
+        Segment(130.0),  # run in to release
+    ]
+    return fly(
+        segs, dt=a.step_s, lat0=a.latitude_deg * DEG, lon0=a.longitude_deg * DEG, h0=100.0, speed0=160.0
+    )
+
+
+@cache
+def head_on_approach(architecture: str, free_inertial_s: float) -> dict[System, CovarianceAnalysis]:
+    """All satellites lost together ``free_inertial_s`` before the end (bomb release), for
+    the systems of :data:`SYSTEMS` with the given architecture."""
+    tr = head_on_trajectory()
+    channels = best_geometry_channels(tr, nominal_gps_constellation(), ASSUMED.channels, ASSUMED.mask_deg)
+    t_loss = tr.t[-1] - free_inertial_s
+    ev = [(t_loss, c, k, False) for c in range(len(channels)) for k in ("code", "carrier")]
+    code, carrier = lock_table(tr.t, len(channels), ev)
+    return _run(tuple(s for s in SYSTEMS if s.architecture == architecture), tr, code, carrier, channels)
+
+
+# ------------------------------------------------------------------ helicopter
+
+
+def helicopter_trajectory(duration_s: float) -> Trajectory:
+    """Terrain following at constant ground speed: the flight-path angle swings +-4 deg
+    with a 60-s period (height changes of about +-25 m), plus a 90-degree turn every 5 min."""
+    a = ASSUMED
+    segs: list[Segment] = []
+    t = 0.0
+    sign = 1.0
+    k = 0
+    while t < duration_s:
+        for rate in (1.0, -1.0, -1.0, 1.0):  # one 60-s terrain undulation
+            segs.append(Segment(15.0, path_angle_rate=rate * 4.0 / 15.0 * DEG))
+        t += 60.0
+        k += 1
+        if k % 5 == 0:
+            segs.append(Segment(30.0, turn_rate=sign * 3.0 * DEG))
+            sign = -sign
+            t += 30.0
+    tr = fly(
+        segs,
+        dt=a.step_s,
+        lat0=a.latitude_deg * DEG,
+        lon0=a.longitude_deg * DEG,
+        h0=100.0,
+        speed0=a.helicopter_speed_mps,
+    )
+    n = round(duration_s / a.step_s) + 1
+    return Trajectory(*(getattr(tr, f.name)[:n] for f in fields(tr)))
+
+
+@cache
+def helicopter(doppler: bool) -> dict[float, CovarianceAnalysis]:
+    """Tightly coupled helicopter: GPS until calibration reaches steady state
+    (``helicopter_calibration_min``), then 19 min jammed; Doppler throughout if ``doppler``."""
+    a = ASSUMED
+    duration = (a.helicopter_calibration_min + 19.0) * MINUTE
+    tr = helicopter_trajectory(duration)
+    channels = best_geometry_channels(tr, nominal_gps_constellation(), a.channels, a.mask_deg)
+    t_loss = a.helicopter_calibration_min * MINUTE
+    ev = [(t_loss, c, k, False) for c in range(len(channels)) for k in ("code", "carrier")]
+    code, carrier = lock_table(tr.t, len(channels), ev)
+    res = _run((System("tight", 10.0), System("tight", 1.0)), tr, code, carrier, channels, doppler=doppler)
+    return {s.grade: r for s, r in res.items()}
+
+
+def target_location_sigma(result: CovarianceAnalysis, range_m: float = ASSUMED.target_range_m) -> float:
+    """rss 1-sigma horizontal target-location error at the end of ``result``.
+
+    SP Sec. 2.6.4: :math:`\\delta r_{tgt} = \\delta r + \\delta\\alpha \\times r` with the target
+    ``range_m`` ahead (north-east diagonal, level), using the full end covariance of position
+    and attitude error.
+    """
+    from navcore.inertial.error_dynamics import skew_stack
+
+    P = next(iter(result.snapshots.values()))
+    lay = result.truth_layout
+    idx = np.r_[np.arange(lay.size)[lay.slice("position")], np.arange(lay.size)[lay.slice("misalignment")]]
+    r = range_m * np.array([np.sqrt(0.5), np.sqrt(0.5), 0.0])
+    M = np.hstack([np.eye(3), -skew_stack(r)])  # dr + da x r = dr - r x da
+    Pt = M @ P[np.ix_(idx, idx)] @ M.T
+    return float(np.sqrt(Pt[0, 0] + Pt[1, 1]))
+
+
+#: Grade list for convenience.
+GRADES = (10.0, 1.0, 0.5, 0.2)
+ALT_40K_FT = 40_000 * FT
