@@ -229,10 +229,11 @@ CLAIMS = [
         "and Doppler it would be 53.4 %.",
     ),
     Claim(
-        id="SP-sec2.6.4-pointing-negligible",
+        id="SP-sec2.6.4-pointing-gyrocompass",
         paper="SP",
         locator="Sec. 2.6.4",
-        quantity="pointing error over 8 km is negligible next to the helicopter's position error",
+        quantity="pointing error over 8 km is negligible next to the helicopter's position error "
+        "(gyrocompass heading error assumed)",
         published=True,
         unit="statement",
         compute=pointing_negligible,
@@ -241,7 +242,8 @@ CLAIMS = [
         note="Target error = rss of the printed position error (192 m, 2750 m) and misalignment x 8 km; "
         "the attitude error is not published, so the steady-state gyrocompass heading error of the "
         "Table 2.5 gyro bias at 45 deg latitude is assumed (0.42 and 10.3 mrad): the target error is "
-        "within 1 % of the position error for both IMUs.",
+        "within 1 % of the position error for both IMUs. The mission pages check the same statement "
+        "with their end-of-mission covariance (SP-sec2.6.4-pointing-negligible).",
         discussed_in=PAGE_TGT,
     ),
 ]

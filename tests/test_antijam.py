@@ -1,0 +1,116 @@
+"""Anti-jam models against independent oracles (closed forms, brute force, Monte Carlo, filterpy-free KF)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from navcore.gnss import antijam as aj
+from navcore.units import GPS_L1_WAVELENGTH_M, GPS_P_CHIP_RATE_HZ, MILLI_G
+
+
+def test_correlation_and_discriminator_shape() -> None:
+    """Oracle: the piecewise-linear closed form of the half-chip early-minus-late discriminator."""
+    tau = np.linspace(-2, 2, 4001)
+    expected = np.where(
+        np.abs(tau) <= 0.25,
+        2 * tau,
+        np.where(
+            np.abs(tau) <= 0.75, 0.5 * np.sign(tau), np.clip(1.25 - np.abs(tau), 0, None) * np.sign(tau)
+        ),
+    )
+    np.testing.assert_allclose(aj.early_minus_late(tau, 0.5), expected, atol=1e-12)
+    assert aj.ideal_correlation(0.0) == 1.0
+    assert aj.ideal_correlation(1.0) == 0.0
+
+
+def test_spectral_separation_limits() -> None:
+    """Oracle: Q -> 1 for a narrow jammer; Q = B/(Rc * 0.9028) for a 2 Rc-wide jammer (main-lobe fraction)."""
+    assert aj.spectral_separation_q(1.0, 1e6) == pytest.approx(1.0, rel=1e-6)
+    # fraction of BPSK power within +-Rc (main lobe) is 0.90282 (tabulated Si-function value)
+    assert aj.spectral_separation_q(2e6, 1e6) == pytest.approx(2.0 / 0.90282, rel=1e-4)
+
+
+def test_effective_cn0_inverse() -> None:
+    """Oracle: the linear-power closed form solved by hand and the round trip through the inverse."""
+    js = aj.js_for_effective_cn0(41.0, 19.0, GPS_P_CHIP_RATE_HZ, 2.0)
+    assert aj.effective_cn0_dbhz(41.0, js, GPS_P_CHIP_RATE_HZ, 2.0) == pytest.approx(19.0, abs=1e-10)
+    lin = 1 / (1 / 10**4.1 + 10 ** (54 / 10) / (2 * 10.23e6))
+    assert aj.effective_cn0_dbhz(41.0, 54.0, GPS_P_CHIP_RATE_HZ, 2.0) == pytest.approx(10 * math.log10(lin))
+
+
+def test_free_space_js_friis() -> None:
+    """Oracle: Friis received power P G (lambda / 4 pi d)^2 in watts, then the dB ratio by hand."""
+    d, p, s_dbw = 9260.0, 100.0, -163.0
+    received = p * (GPS_L1_WAVELENGTH_M / (4 * math.pi * d)) ** 2
+    expected = 10 * math.log10(received) - s_dbw
+    assert aj.free_space_js_db(p, d, GPS_L1_WAVELENGTH_M, s_dbw) == pytest.approx(expected, abs=1e-10)
+
+
+def test_cep_estimator_on_a_large_seeded_sample() -> None:
+    """Oracle: the median radius of a circular normal sample (seed 5, 1e6 samples) is the CEP."""
+    rng = np.random.default_rng(5)
+    e = 3.0 * rng.standard_normal((1_000_000, 2))
+    assert aj.cep_from_horizontal_errors(e) == pytest.approx(np.median(np.hypot(e[:, 0], e[:, 1])), rel=3e-3)
+
+
+def _model(**kw) -> aj.NavigatorErrorModel:
+    base = dict(
+        accel_bias=1 * MILLI_G,
+        accel_tau_s=300.0,
+        gyro_bias=4.8e-5,
+        gyro_tau_s=300.0,
+        accel_vrw=1e-4,
+        gyro_arw=1e-5,
+        nonorthogonality=1e-3,
+        init_pos=10.0,
+        init_vel=0.2,
+        init_tilt=1e-3,
+        range_bias=0.0,
+        hdop_axis=1.0,
+    )
+    base.update(kw)
+    return aj.NavigatorErrorModel(**base)
+
+
+def test_monte_carlo_matches_filter_covariance() -> None:
+    """Oracle: the filter's own covariance; with a matched model the run-ensemble rms equals it (seed 3)."""
+    sig = np.r_[np.full(200, 3.0), np.full(60, np.nan)]
+    res = aj.simulate_impact_errors(_model(), sig, runs=4000, seed=3)
+    rms = math.sqrt(np.mean(res.impact_errors_m**2))
+    assert rms == pytest.approx(res.filter_sigma_m, rel=0.03)
+
+
+def test_free_inertial_accel_bias_growth() -> None:
+    """Oracle: with no fixes and only a constant accel bias, position error = b t^2 / 2 (closed form)."""
+    m = _model(
+        accel_tau_s=1e12,
+        gyro_bias=0.0,
+        accel_vrw=0.0,
+        gyro_arw=0.0,
+        nonorthogonality=0.0,
+        init_pos=0.0,
+        init_vel=0.0,
+        init_tilt=0.0,
+    )
+    res = aj.simulate_impact_errors(m, np.full(100, np.nan), runs=20000, seed=9)
+    rms = math.sqrt(np.mean(res.impact_errors_m**2))
+    assert rms == pytest.approx(1 * MILLI_G * 100.0**2 / 2, rel=0.02)
+
+
+@pytest.mark.parametrize(
+    ("call", "match"),
+    [
+        (lambda: aj.js_for_effective_cn0(20.0, 30.0, 1e6), "threshold_dbhz"),
+        (lambda: aj.effective_cn0_dbhz(41.0, 50.0, -1.0), "chip_rate_hz"),
+        (lambda: aj.free_space_js_db(-1.0, 10.0, 0.19, -160.0), "jammer_power_w"),
+        (lambda: aj.early_minus_late(0.0, 0.0), "spacing_chips"),
+        (lambda: aj.cep_from_horizontal_errors(np.ones(3)), "errors_m"),
+        (lambda: aj.simulate_impact_errors(_model(), np.ones(3), runs=0), "runs"),
+    ],
+)
+def test_bad_input_raises(call, match) -> None:
+    with pytest.raises(ValueError, match=match):
+        call()
