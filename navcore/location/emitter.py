@@ -325,14 +325,13 @@ def emitter_gauss_newton(
         raise ValueError(f"initial must be [x, y, z, f0], got shape {psi.shape}")
     require_integer("max_iter", max_iter, minimum=1)
     require_positive("tol_m", tol_m)
-    Wm = _weight(W, m.size)
-    # scale f0 column so the normal matrix is well conditioned (Hz/m vs Hz/Hz)
+    Wm = None if W is None else _weight(W, m.size)
     converged = False
     iterations = 0
     for iterations in range(1, max_iter + 1):  # noqa: B007 (reported after the loop)
         H = doppler_jacobian_emitter(psi[3], psi[:3], p, v)
         r = m - doppler_frequency(psi[3], psi[:3], p, v)
-        HtW = H.T @ Wm
+        HtW = H.T if Wm is None else H.T @ Wm
         step = np.linalg.lstsq(HtW @ H, HtW @ r, rcond=None)[0]
         psi = psi + step
         if np.linalg.norm(step[:3]) < tol_m:
@@ -340,4 +339,5 @@ def emitter_gauss_newton(
             break
     H = doppler_jacobian_emitter(psi[3], psi[:3], p, v)
     r = m - doppler_frequency(psi[3], psi[:3], p, v)
-    return GaussNewtonResult(psi, H, r, H.T @ Wm @ r, iterations, converged)
+    HtW = H.T if Wm is None else H.T @ Wm
+    return GaussNewtonResult(psi, H, r, HtW @ r, iterations, converged)
