@@ -164,19 +164,17 @@ def sequential_scalar_updates(x: Array, P: Array, y: Array, H: Array, r: Array) 
     Returns
     -------
     x, P : arrays
-        Posterior; equal to one batch update with ``R = diag(r)`` (the Joseph form is used for
-        each scalar step, :func:`navcore.estimation.kf_update` is the batch oracle in the tests).
+        Posterior; equal to one batch update with ``R = diag(r)``
+        (:func:`navcore.estimation.kf_update`, Joseph form, is the batch oracle in the tests).
     """
-    n = x.shape[-1]
-    eye = np.eye(n)
     for j in range(y.shape[-1]):
         h = H[:, j, :]
         Ph = np.einsum("nij,nj->ni", P, h)
         s = np.einsum("ni,ni->n", h, Ph) + r[j]
         K = Ph / s[:, None]
         x = x + K * (y[:, j] - np.einsum("ni,ni->n", h, x))[:, None]
-        IKH = eye - K[:, :, None] * h[:, None, :]
-        P = IKH @ P @ np.swapaxes(IKH, -1, -2) + r[j] * K[:, :, None] * K[:, None, :]  # Joseph
+        # P+ = P - K (P h)^T: the optimal-gain form, O(n^2) per scalar; symmetrised below
+        P = P - K[:, :, None] * Ph[:, None, :]
     return x, symmetrize(P)
 
 

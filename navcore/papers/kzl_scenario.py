@@ -26,7 +26,14 @@ random-walk tuning.
 
 from __future__ import annotations
 
+import hashlib
+import inspect
+import os
+import sys
+import tempfile
+from dataclasses import fields
 from functools import cache
+from pathlib import Path
 
 import numpy as np
 
@@ -164,8 +171,47 @@ def table1_scenario(imu: ImuSpec = KZL_IMU) -> Scenario:
     )
 
 
+def _source_key(*parts: object) -> str:
+    """Hash of the sources of every module the Monte Carlo depends on, and of ``parts``."""
+    import navcore.estimation.ekf_ins_gnss as m1
+    import navcore.frames as m2
+    import navcore.gnss.carrier_phase as m3
+    import navcore.gnss.constellation as m4
+    import navcore.inertial.alignment as m5
+    import navcore.inertial.error_model17 as m6
+    import navcore.inertial.imu as m7
+    import navcore.inertial.strapdown as m8
+
+    h = hashlib.sha256()
+    for mod in (m1, m2, m3, m4, m5, m6, m7, m8, sys.modules[__name__]):
+        h.update(inspect.getsource(mod).encode())
+    h.update(repr((parts, N_RUNS, SEED, np.__version__)).encode())
+    return h.hexdigest()[:24]
+
+
 @cache
 def monte_carlo(mode: str, initialise: bool = True, imu_name: str = "table1") -> MonteCarloResult:
-    """Cached seeded Monte Carlo (``N_RUNS`` runs) of one configuration of the Table 1 scenario."""
+    """Cached seeded Monte Carlo (``N_RUNS`` runs) of one configuration of the Table 1 scenario.
+
+    Results are also kept on disk (in the system temporary directory, under a key hashed from
+    the sources of every module involved), so that the chapter's notebooks, the ledger page
+    and the tests share one computation per code version. Set ``NAVCORE_NO_DISK_CACHE=1`` to
+    recompute.
+    """
     imu = {"table1": KZL_IMU, "swapped": KZL_IMU_SWAPPED}[imu_name]
-    return run_monte_carlo(table1_scenario(imu), mode, N_RUNS, SEED, initialise=initialise)
+    path = (
+        Path(tempfile.gettempdir())
+        / "navcore-kzl-mc"
+        / f"{mode}-{initialise}-{imu_name}-{_source_key(mode, initialise, imu_name)}.npz"
+    )
+    use_disk = not os.environ.get("NAVCORE_NO_DISK_CACHE")
+    if use_disk and path.exists():
+        with np.load(path) as data:
+            return MonteCarloResult(**{f.name: data[f.name] for f in fields(MonteCarloResult)})
+    result = run_monte_carlo(table1_scenario(imu), mode, N_RUNS, SEED, initialise=initialise)
+    if use_disk:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        tmp = path.with_suffix(f".{os.getpid()}.npz")
+        np.savez(tmp, **{f.name: getattr(result, f.name) for f in fields(MonteCarloResult)})
+        os.replace(tmp, path)
+    return result
