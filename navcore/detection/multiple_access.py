@@ -94,6 +94,7 @@ class PointMassDensity:
     name: str = "point masses"
     _x: FloatArray = field(init=False, repr=False, compare=False)
     _logw: FloatArray = field(init=False, repr=False, compare=False)
+    _cdf: FloatArray = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         x = np.asarray(self.values, dtype=float).ravel()
@@ -109,6 +110,9 @@ class PointMassDensity:
         with np.errstate(divide="ignore"):
             object.__setattr__(self, "_x", x)
             object.__setattr__(self, "_logw", np.log(w))
+        cdf = np.cumsum(w)
+        cdf[-1] = 1.0
+        object.__setattr__(self, "_cdf", cdf)
 
     @property
     def second_moment(self) -> float:
@@ -140,7 +144,8 @@ class PointMassDensity:
         return np.exp(1j * v[..., None] * self._x) @ np.exp(self._logw)
 
     def sample(self, rng: np.random.Generator, size: int) -> FloatArray:
-        return rng.choice(self._x, size=size, p=np.exp(self._logw))
+        idx = np.searchsorted(self._cdf, rng.random(size), side="right")
+        return self._x[np.minimum(idx, self._x.size - 1)]
 
 
 def two_point_density(b: float) -> PointMassDensity:
