@@ -81,6 +81,7 @@ def required_erp_dbw(quantity: str, p_dl: float, k: int, t: float = 0.0) -> floa
     return float(jm.jammer_erp_dbw(x_db, GEOMETRY.pulse_energy_j, GEOMETRY.bandwidth_hz))
 
 
+@cache
 def direct_adl_erp_dbw(p_dl: float, k: int) -> float:
     """Independent oracle for the t = 0 N_ADL threshold: plain floating-point probabilities
     (no logarithms), a per-list probability from the binomial, and a dense dB grid refined
@@ -107,6 +108,7 @@ def direct_adl_erp_dbw(p_dl: float, k: int) -> float:
     return 0.5 * (lo + hi) + 10 * math.log10(0.01 * 1e7)
 
 
+@cache
 def erf_argument_coefficient(x_db: float = 0.0, p_d: float = 0.5) -> float:
     """The coefficient c in p_f = 1/2 - 1/2 erf(c sqrt(P0 B tau / J) - phi), recovered from
     navcore's Neyman-Pearson p_f (App. D): c = (erfinv(1 - 2 p_f) + phi) / sqrt(P0 B tau / J)."""
@@ -116,6 +118,7 @@ def erf_argument_coefficient(x_db: float = 0.0, p_d: float = 0.5) -> float:
     return (float(special.erfinv(1.0 - 2.0 * pf)) + phi) / math.sqrt(1.0 / x)
 
 
+@cache
 def monte_carlo_erf_coefficient(x_db: float = 0.0, p_d: float = 0.5, n: int = 1_000_000) -> float:
     """Oracle for :func:`erf_argument_coefficient`: simulate the matched-filter output with
     noise variance J/B and signal amplitude sqrt(E), set the threshold from simulated
@@ -503,7 +506,7 @@ CLAIMS: list[Claim] = [
         tolerance=printed("5e-8")[1],
         status="reproduced",
         note="Fractional stability = time error / update interval.",
-        discussed_in=PAGE,
+        discussed_in=PAGE_T11,
     ),
     Claim(
         id="ATC10-sec2.7-pulse-energy",
