@@ -330,11 +330,15 @@ def acceptable_outage_s(example: str, sigma0: float, inputs: dict[str, float]) -
     return float(m[above[0]] - 1) * TAU_BAR_S if above.size else math.inf
 
 
+#: Three-satellite epochs simulated for the outage oracle (beyond the corrected durations).
+OUTAGE_MC_EPOCHS = {"I": 110, "II": 320}
+
+
 def acceptable_outage_mc_s(example: str, sigma0: float) -> float:
     """Same duration from the Monte Carlo of the full tracker (fitted geometry, invariant S3)."""
     inputs = table_4_2_from_geometry(example, fitted_radius_ratio())
     threshold = OUTAGE_THRESHOLD_FACTOR * table_4_3_row(inputs, sigma0)[2]
-    mc = tracker_monte_carlo(example, sigma0, m_after=320, n_runs=4000)
+    mc = tracker_monte_carlo(example, sigma0, m_after=OUTAGE_MC_EPOCHS[example], n_runs=4000)
     rms = np.sqrt(mc.position_mse[MC_N_LAST + 1 :])
     above = np.flatnonzero(rms > threshold)
     return float(above[0]) * TAU_BAR_S if above.size else math.inf
