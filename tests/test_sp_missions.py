@@ -1,0 +1,70 @@
+"""SP Sec. 2.6 mission set-up against the paper's printed event times and simple oracles."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from navcore.estimation.covariance_analysis import CovarianceAnalysis, concatenate_analyses
+from navcore.papers import sp_missions_scenarios as sc
+from navcore.units import FT
+
+
+def test_sequential_outage_events_match_printed_times():
+    """Oracle: SP Sec. 2.6.1 prints first carrier loss 360 s, first code loss 1020 s, code
+    reacquisition from 2760 s (= last code loss 1560 s + 20 min)."""
+    ev = sc.sequential_outage_events(4)
+    carrier_loss = sorted(t for t, _, k, on in ev if k == "carrier" and not on)
+    code_loss = sorted(t for t, _, k, on in ev if k == "code" and not on)
+    code_back = sorted(t for t, _, k, on in ev if k == "code" and on)
+    assert carrier_loss == [360.0, 540.0, 720.0, 900.0]
+    assert code_loss == [1020.0, 1200.0, 1380.0, 1560.0]
+    assert code_back[0] == 2760.0
+    # inverse order: the last channel lost is the first back
+    first_back = min((e for e in ev if e[3]), key=lambda e: e[0])
+    assert first_back[1] == 3 and first_back[2] == "code"
+    assert not any(on for *_, on in sc.sequential_outage_events(4, outage_s=None))
+
+
+def test_head_on_profile():
+    """Oracle: SP Sec. 2.6.3 profile: about 40,000 ft, down to low level (200 ft class),
+    pop-up to a few thousand feet at release."""
+    tr = sc.head_on_trajectory()
+    assert tr.h.max() / FT == pytest.approx(40_000, rel=0.03)
+    assert tr.h[int(0.8 * len(tr))] / FT < 500
+    assert 2000 < tr.h[-1] / FT < 6000
+
+
+def _fake(P: np.ndarray) -> CovarianceAnalysis:
+    lay = sc.truth_layout()
+    t = np.array([0.0, 1.0])
+    z = np.zeros((2, lay.size))
+    return CovarianceAnalysis(t, lay, lay, z, z, np.zeros(2), np.zeros(2), np.zeros(2, int), {1: P}, P, P)
+
+
+def test_target_location_sigma_closed_form():
+    """Oracle: target error = position error when attitude is exact; = range x heading
+    error when position is exact (level target 8 km away, heading error only)."""
+    lay = sc.truth_layout()
+    P = np.zeros((lay.size, lay.size))
+    P[0, 0] = P[1, 1] = 50.0**2
+    assert sc.target_location_sigma(_fake(P), 8000.0) == pytest.approx(50.0 * np.sqrt(2))
+    P[:] = 0.0
+    a = lay.index("misalignment", 2)
+    P[a, a] = 1e-3**2
+    assert sc.target_location_sigma(_fake(P), 8000.0) == pytest.approx(8.0, rel=1e-9)
+
+
+def test_concatenate_analyses_drops_shared_sample():
+    """Oracle: two parts of 3 and 2 samples sharing t = 2 give 4 samples."""
+    lay = sc.truth_layout()
+
+    def part(t):
+        n = len(t)
+        z = np.zeros((n, lay.size))
+        return CovarianceAnalysis(np.array(t), lay, lay, z, z, np.array(t), np.array(t), np.zeros(n, int), {})
+
+    c = concatenate_analyses([part([0.0, 1.0, 2.0]), part([2.0, 3.0])])
+    assert c.t.tolist() == [0.0, 1.0, 2.0, 3.0]
+    with pytest.raises(ValueError, match="consecutive"):
+        concatenate_analyses([part([0.0, 1.0]), part([5.0, 6.0])])
