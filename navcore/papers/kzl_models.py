@@ -229,6 +229,26 @@ def discretisation_comparison(dt: float = 1.0) -> dict[str, float]:
     }
 
 
+def _geometry_rank_is_min_nu_4() -> bool:
+    """Rank of the code geometry [-l^T 1] equals min(nu, 4) for nu = 1..8 (Table 1 sky)."""
+    ranks = [np.linalg.matrix_rank(np.hstack([-table1_los(nu), np.ones((nu, 1))])) for nu in range(1, 9)]
+    return ranks == [min(nu, 4) for nu in range(1, 9)]
+
+
+def _rotation_vector_equals_euler() -> bool:
+    """Is d(roll, pitch, heading)/d(rotation vector) close to I at the Table 1 attitude?"""
+    return bool(np.allclose(euler_attitude_rows(table1_attitude(), 0.0, 0.0)[:, 6:9], np.eye(3), atol=0.1))
+
+
+def _rotation_vector_oracle() -> bool:
+    """Independent: scipy Rotation - Euler angles of Exp(d) R minus those of R, for a 0.1 deg d."""
+    R = Rotation.from_matrix(table1_attitude())
+    d = np.array([1e-3, 0.0, 0.0])
+    e0 = R.as_euler("ZYX")[::-1]
+    e1 = (Rotation.from_rotvec(d) * R).as_euler("ZYX")[::-1]
+    return bool(np.allclose(e1 - e0, d, atol=1e-4))
+
+
 # --- errata -----------------------------------------------------------------------------------
 ERRATA = [
     Erratum(
@@ -277,7 +297,7 @@ ERRATA = [
         "J_b^-1(phi, theta) R_n^b, not J_b^-1 alone. At the Table 1 attitude (heading 90 deg) they "
         "differ by swapping north/east tilt into roll/pitch.",
         evidence="Central finite differences of euler_from_dcm(expm([dpsi x]) R).",
-        claims=("KZL-eq13-R",),
+        claims=("KZL-eq13-R", "KZL-c15"),
         discussed_in=PAGE2,
     ),
     Erratum(
@@ -514,5 +534,36 @@ CLAIMS = [
         note="No sensor specification is given for the navigation-grade INS; a 0.01 deg/h gyro gives the "
         "classic 1 nmi/h class, but that input is an assumption, not the paper's.",
         discussed_in="kzl/index",
+    ),
+    Claim(
+        id="KZL-c7",
+        paper="KZL",
+        locator="Sec. 2.1",
+        quantity="four or more simultaneous measurements are needed for 3-D position and clock bias",
+        published=True,
+        unit="statement",
+        compute=_geometry_rank_is_min_nu_4,
+        tolerance=EXACT,
+        status="reproduced",
+        note="Rank of the pseudorange geometry matrix [-l^T 1] is min(nu, 4) for the first nu "
+        "satellites of the simulation's sky.",
+        discussed_in=PAGE2,
+    ),
+    Claim(
+        id="KZL-c15",
+        paper="KZL",
+        locator="Sec. 3.5",
+        quantity="for small rotations the rotation-vector components equal the Euler angles",
+        published=True,
+        unit="statement",
+        compute=_rotation_vector_equals_euler,
+        tolerance=EXACT,
+        status="discrepant",
+        note="True only near zero heading. At the Table 1 heading of 90 deg a north rotation is a "
+        "pitch change and an east rotation a roll change (the Jacobian of Eq. (13)).",
+        erratum="KZL-E4-euler-rows",
+        oracle=_rotation_vector_oracle,
+        oracle_tolerance=EXACT,
+        discussed_in=PAGE2,
     ),
 ]
