@@ -367,4 +367,50 @@ CLAIMS = [
         "(11 dB apart, erratum SP-E-di-improvement-15dB) and stays below 15 dB; see the page.",
         discussed_in=PAGE,
     ),
+    Claim(
+        id="SP-fig3.3-aj-above-10dB",
+        paper="SP",
+        locator="Sec. 3.1, Fig. 3.3",
+        quantity="A/J improvement of deep integration at every rss error (second scenario)",
+        published=10.0,
+        unit="dB",
+        relation=">",
+        compute=None,
+        tolerance=Tolerance(reason="read from the text", abs=0.0),
+        status="not-reproducible",
+        note="Figs. 3.1-3.3 come from a nonlinear 6-DOF Monte Carlo (27 and 35 runs) of two scenarios whose "
+        "trajectories, receiver and filter tuning are not published; only the stated lock limits (54 and "
+        "65 dB) can be checked, see SP-sec3.1-improvement-15dB.",
+        discussed_in=PAGE,
+    ),
+    Claim(
+        id="SP-fig3.3-aj-15dB-above-35m",
+        paper="SP",
+        locator="Sec. 3.1, Fig. 3.3",
+        quantity="A/J improvement of deep integration for rss errors above 35 m",
+        published=15.0,
+        unit="dB",
+        relation=">",
+        compute=None,
+        tolerance=Tolerance(reason="read from the text", abs=0.0),
+        status="not-reproducible",
+        note="Needs the Fig. 3.2 rss curves (6-DOF Monte Carlo, 35 runs, 10 and 1 deg/h IMUs), not "
+        "published; the reduced PGM model of this page is not the second scenario.",
+        discussed_in=PAGE,
+    ),
+    Claim(
+        id="SP-fig3.1-di-lower-initial-rss",
+        paper="SP",
+        locator="Sec. 3.1, Fig. 3.1",
+        quantity="deep integration has the lower rss error during the 60-s, 30-dB initialisation phase",
+        published=True,
+        unit="statement",
+        compute=None,
+        tolerance=EXACT,
+        status="not-reproducible",
+        note="The difference comes from how the deeply integrated filter weights the correlator outputs, "
+        "which the paper does not describe; in the reduced model both navigators use the same fixes "
+        "while in lock.",
+        discussed_in=PAGE,
+    ),
 ]
