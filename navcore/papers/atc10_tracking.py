@@ -764,20 +764,6 @@ for _ex, _pub_s in (("I", 30.0), ("II", 60.0)):
 
 CLAIMS += [
     Claim(
-        id="ATC10-sec1.3-stability-5e-8",
-        paper="ATC10",
-        locator="Sec. 1.3 / Sec. 4.6",
-        quantity="clock stability needed for a significant gain with a 50 ns time-of-arrival error",
-        published=5e-8,
-        unit="fractional frequency",
-        compute=lambda: SIGMA_NS * 1e-9 / TAU_BAR_S,
-        tolerance=printed("5e-8")[1],
-        status="reproduced",
-        note="Gains become marginal at sigma0 = sigma (Sec. 4.6); sigma0 / tau_bar with sigma0 = 50 ns, "
-        "tau_bar = 1 s.",
-        discussed_in=PAGE_EXAMPLES,
-    ),
-    Claim(
         id="ATC10-eq4.5.38-coefficient",
         paper="ATC10",
         locator="Eq. (4.5.38)",
