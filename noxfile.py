@@ -116,13 +116,18 @@ def lint(session: nox.Session) -> None:
 
 @nox.session
 def ledger(session: nox.Session) -> None:
-    """Print the ledger and write _build/ledger.json; fails if any claim fails its check."""
+    """Print the ledger and write _build/ledger.json; fails if any claim fails its check.
+
+    Every claim is computed afresh (the on-disk evaluation cache is off), so two runs of this
+    session are an honest determinism check.
+    """
     _install(session)
-    session.run("python", "-m", "navcore", "ledger", *session.posargs)
+    env = {"NAVCORE_CACHE": "off"}
+    session.run("python", "-m", "navcore", "ledger", *session.posargs, env=env)
     out = ROOT / "_build" / "ledger.json"
     out.parent.mkdir(exist_ok=True)
     with out.open("w") as fh:
-        session.run("python", "-m", "navcore", "ledger", "--json", stdout=fh)
+        session.run("python", "-m", "navcore", "ledger", "--json", stdout=fh, env=env)
     session.log(f"ledger JSON: {out}")
 
 

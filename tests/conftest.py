@@ -2,9 +2,14 @@
 
 from __future__ import annotations
 
+import os
+
 import matplotlib
 import numpy as np
 import pytest
+
+# Every test computes for itself: the ledger's on-disk evaluation cache is off.
+os.environ["NAVCORE_CACHE"] = "off"
 
 matplotlib.use("Agg")
 

@@ -50,6 +50,15 @@ def test_figure_files_are_deterministic(tmp_path):
     assert digests[0] == digests[1]
 
 
+def test_dotted_ids_keep_their_full_name(tmp_path):
+    """Regression: 'X-fig2.16' must be written as X-fig2.16.svg, not X-fig2.svg."""
+    fig, ax = plt.subplots()
+    ax.plot([0, 1])
+    paths = figures.write(fig, tmp_path / "X-fig2.16")
+    plt.close(fig)
+    assert sorted(p.name for p in paths) == ["X-fig2.16.png", "X-fig2.16.svg"]
+
+
 def test_register_rejects_bad_specs():
     with pytest.raises(ValueError, match="paper must be one of"):
         figures.register("X", paper="ZZ", reproduces="Fig. 1", caption="c")

@@ -147,8 +147,9 @@ def render(fig_id: str) -> Figure:
 def write(fig: Figure, stem: Path) -> list[Path]:
     """Save ``fig`` as ``stem.svg`` and ``stem.png`` with deterministic metadata."""
     stem.parent.mkdir(parents=True, exist_ok=True)
-    svg = stem.with_suffix(".svg")
-    png = stem.with_suffix(".png")
+    # ids such as "ATC10-fig2.16" contain dots: append the suffix, never replace one
+    svg = stem.parent / f"{stem.name}.svg"
+    png = stem.parent / f"{stem.name}.png"
     fig.savefig(svg, format="svg", metadata={"Date": None})
     fig.savefig(png, format="png", metadata={"Software": None})
     return [svg, png]

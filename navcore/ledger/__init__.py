@@ -40,6 +40,7 @@ from navcore.ledger.core import (
     printed,
 )
 from navcore.ledger.registry import (
+    cache_dir,
     claim,
     claims,
     counts,
@@ -60,6 +61,7 @@ __all__ = [
     "Erratum",
     "Evaluation",
     "Tolerance",
+    "cache_dir",
     "claim",
     "claims",
     "counts",

@@ -7,13 +7,20 @@ every such module, so adding a section never means editing a shared list.
 
 from __future__ import annotations
 
+import hashlib
 import importlib
+import json
+import math
+import os
 import pkgutil
 from functools import cache
+from pathlib import Path
+from typing import Any
 
 from navcore.ledger.core import PAPERS, STATUSES, Claim, Erratum, Evaluation, evaluate
 
 __all__ = [
+    "cache_dir",
     "claim",
     "claims",
     "counts",
@@ -121,9 +128,107 @@ def erratum(erratum_id: str) -> Erratum:
 
 
 @cache
+def _source_key() -> str:
+    """Hash of navcore's sources and the numerical libraries' versions.
+
+    Every claim is a deterministic (seeded) function of these, so an evaluation stored under
+    this key can be reused until any of them changes.
+    """
+    import numpy
+    import scipy
+
+    root = Path(__file__).resolve().parents[1]
+    h = hashlib.sha256(f"numpy {numpy.__version__} scipy {scipy.__version__}".encode())
+    for f in sorted(root.rglob("*.py")):
+        h.update(str(f.relative_to(root)).encode())
+        h.update(f.read_bytes())
+    return h.hexdigest()[:20]
+
+
+def cache_dir() -> Path | None:
+    """Folder of the on-disk evaluation cache, or ``None`` when caching is off.
+
+    ``NAVCORE_CACHE=off`` disables it (the test suite and the determinism check do);
+    ``NAVCORE_CACHE=<folder>`` chooses its parent folder. By default it lives in
+    ``_build/navcore-cache`` of a source checkout, else in ``~/.cache/navcore``. The folder
+    is named by a hash of navcore's sources, so a change to any of them starts afresh.
+    """
+    setting = os.environ.get("NAVCORE_CACHE", "")
+    if setting.lower() in ("off", "0", "no", "false"):
+        return None
+    if setting:
+        parent = Path(setting)
+    else:
+        checkout = Path(__file__).resolve().parents[2]
+        if (checkout / "pyproject.toml").exists() and os.access(checkout, os.W_OK):
+            parent = checkout / "_build" / "navcore-cache"
+        else:
+            parent = Path.home() / ".cache" / "navcore"
+    return parent / _source_key()
+
+
+def _to_json(value: Any) -> Any:
+    if value is None or isinstance(value, bool):
+        return value
+    v = float(value)
+    return {"float": repr(v)} if not math.isfinite(v) else v
+
+
+def _from_json(value: Any) -> Any:
+    if isinstance(value, dict):
+        return float(value["float"])
+    return value
+
+
+def _cached(claim_id: str) -> Evaluation | None:
+    folder = cache_dir()
+    if folder is None:
+        return None
+    try:
+        data = json.loads((folder / f"{claim_id}.json").read_text())
+    except (OSError, ValueError):
+        return None
+    return Evaluation(
+        claim(claim_id),
+        _from_json(data["reproduced"]),
+        bool(data["passes"]),
+        data["detail"],
+        _from_json(data["oracle_value"]),
+    )
+
+
+def _store(ev: Evaluation) -> None:
+    folder = cache_dir()
+    if folder is None:
+        return
+    data = {
+        "reproduced": _to_json(ev.reproduced),
+        "passes": ev.passes,
+        "detail": ev.detail,
+        "oracle_value": _to_json(ev.oracle_value),
+    }
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+        tmp = folder / f".{ev.claim.id}.{os.getpid()}.tmp"
+        tmp.write_text(json.dumps(data))
+        tmp.replace(folder / f"{ev.claim.id}.json")  # atomic: readers never see half a file
+    except OSError:
+        pass  # a read-only location only costs speed
+
+
+@cache
 def evaluate_claim(claim_id: str) -> Evaluation:
-    """Evaluate one claim (memoised for the life of the process)."""
-    return evaluate(claim(claim_id))
+    """Evaluate one claim (memoised in the process and, unless disabled, on disk).
+
+    The on-disk cache (:func:`cache_dir`) is keyed by a hash of navcore's sources, so a
+    stored evaluation is exactly what a fresh evaluation would give.
+    """
+    hit = _cached(claim_id)
+    if hit is not None:
+        return hit
+    ev = evaluate(claim(claim_id))
+    _store(ev)
+    return ev
 
 
 def evaluations(paper: str | None = None, prefix: str | None = None) -> list[Evaluation]:
