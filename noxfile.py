@@ -37,7 +37,6 @@ nox.options.reuse_existing_virtualenvs = True
 os.environ.setdefault("UV_SYSTEM_CERTS", "1")
 # deterministic figures and hashing in every subprocess
 os.environ.setdefault("PYTHONHASHSEED", "0")
-os.environ.setdefault("MPLBACKEND", "Agg")
 os.environ.setdefault("SOURCE_DATE_EPOCH", "1767225600")
 
 

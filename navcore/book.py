@@ -37,9 +37,24 @@ __all__ = [
 
 
 def setup() -> None:
-    """Apply the figure style and quiet numpy's printing for the notebooks."""
+    """Inline PNG figures, the book's figure style, and compact numpy printing.
+
+    In a notebook kernel this selects matplotlib's inline backend (a kernel started with
+    ``MPLBACKEND=Agg`` would otherwise show figures as ``<Figure size ...>`` text) with PNG
+    output, which both the HTML and the LaTeX builders can use.
+    """
     import numpy as np
 
+    try:
+        from IPython import get_ipython
+    except ImportError:  # pragma: no cover - plain Python
+        get_ipython = None
+    shell = get_ipython() if get_ipython is not None else None
+    if shell is not None and hasattr(shell, "kernel"):
+        shell.run_line_magic("matplotlib", "inline")
+        from matplotlib_inline.backend_inline import set_matplotlib_formats
+
+        set_matplotlib_formats("png")
     _figures.apply_style()
     np.set_printoptions(precision=5, suppress=True, linewidth=100)
 

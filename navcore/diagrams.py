@@ -23,9 +23,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-import matplotlib
-
-matplotlib.use("Agg", force=False)
 import schemdraw
 from matplotlib.figure import Figure
 from schemdraw import dsp, flow

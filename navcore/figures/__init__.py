@@ -25,9 +25,8 @@ from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
 
-import matplotlib
-
-matplotlib.use("Agg", force=False)
+# No backend is forced here: a notebook kernel keeps its inline backend (so glued figures
+# render as images), and a headless script gets matplotlib's default, Agg.
 import matplotlib.pyplot as plt
 from matplotlib.figure import Figure
 
