@@ -51,7 +51,7 @@ from navcore.papers.sp_tables import (
     sp_imu_grades,
     table_2_4,
 )
-from navcore.units import DEG, FT, G0, MINUTE
+from navcore.units import DEG, G0, MINUTE
 
 __all__ = [
     "ASSUMED",
@@ -178,10 +178,6 @@ def _gravity_tuning(filt: StateLayout, sources: ErrorSources, speed: float) -> n
     return q
 
 
-def _apriori_point(tr: Trajectory) -> Trajectory:
-    return tr
-
-
 def _initial_covariance(truth: StateLayout, sources: ErrorSources, tr: Trajectory) -> np.ndarray:
     t = table_2_4()
     ph = t["initial position (horizontal)"].si
@@ -249,7 +245,7 @@ def _run(
                 range_rate_noise=ASSUMED.range_rate_noise_mps,
                 g_load=np.linalg.norm(tr.f_ned, axis=1) / G0,
             )
-        apriori = np.stack([_initial_covariance(truth, src, _apriori_point(tr)) for src in sources])
+        apriori = np.stack([_initial_covariance(truth, src, tr) for src in sources])
         if resume is None:
             P0, Pf0 = apriori, None
         else:
@@ -488,8 +484,3 @@ def target_location_sigma(result: CovarianceAnalysis, range_m: float = ASSUMED.t
     M = np.hstack([np.eye(3), -skew_stack(r)])  # dr + da x r = dr - r x da
     Pt = M @ P[np.ix_(idx, idx)] @ M.T
     return float(np.sqrt(Pt[0, 0] + Pt[1, 1]))
-
-
-#: Grade list for convenience.
-GRADES = (10.0, 1.0, 0.5, 0.2)
-ALT_40K_FT = 40_000 * FT
