@@ -270,7 +270,7 @@ def _input_rounding_band(example: str, sigma0: float, col: int) -> float:
         corner = {k: base_inputs[k] + s * halves[k] for k, s in zip(COLUMNS, signs, strict=True)}
         for pv in psi_choices:
             worst = max(worst, abs(table_4_3_row(corner, sigma0, psi_value=pv)[col] - nominal))
-    return worst
+    return float(worst)
 
 
 def corrected_first_three_satellite_sd(example: str, sigma0: float) -> float:
