@@ -121,7 +121,7 @@ _SAMPLING = Tolerance(
     reason=f"RMS over {N_RUNS} runs has a relative standard error 1/sqrt(2N) = "
     f"{1 / np.sqrt(2 * N_RUNS):.2f}; 1.5 of it, plus the Euler-vs-n-frame heading mapping at "
     "20 deg tilts (about 6 %)",
-    rel=1.5 / np.sqrt(2 * N_RUNS) + 0.06,
+    rel=float(1.5 / np.sqrt(2 * N_RUNS) + 0.06),
 )
 
 ERRATA = [
