@@ -68,6 +68,7 @@ __all__ = [
     "sequential_outage_trajectory",
     "target_location_sigma",
     "truth_layout",
+    "unaided_after_ground_alignment",
 ]
 
 
@@ -208,9 +209,11 @@ def _run(
     doppler: bool = False,
     snapshots: tuple[int, ...] = (-1,),
     resume: dict[System, CovarianceAnalysis] | None = None,
+    initial_position: bool = True,
 ) -> dict[System, CovarianceAnalysis]:
     """Run several systems on one trajectory and lock table (one batched pass per
-    architecture), from the mission start or resuming from ``resume``'s final covariances."""
+    architecture), from the mission start or resuming from ``resume``'s final covariances.
+    ``initial_position=False`` starts without horizontal position error."""
     out: dict[System, CovarianceAnalysis] = {}
     truth = truth_layout(doppler=doppler, channels=len(channels))
     geo = satellite_geometry(tr, nominal_gps_constellation(), channels)
@@ -247,7 +250,12 @@ def _run(
             )
         apriori = np.stack([_initial_covariance(truth, src, tr) for src in sources])
         if resume is None:
-            P0, Pf0 = apriori, None
+            P0, Pf0 = apriori.copy(), None
+            if not initial_position:
+                for i in range(2):
+                    j = truth.index("position", i)
+                    P0[:, j, :] = 0.0
+                    P0[:, :, j] = 0.0
         else:
             P0 = np.stack([resume[s].final_true for s in group])
             Pf0 = np.stack([resume[s].final_filter for s in group])
@@ -378,6 +386,19 @@ def _channels(duration: float) -> np.ndarray:
         ASSUMED.channels,
         ASSUMED.mask_deg,
     )
+
+
+@cache
+def unaided_after_ground_alignment(initial_position: bool = True) -> dict[System, CovarianceAnalysis]:
+    """The tightly coupled systems flying the sequential-outage trajectory for 84 min with no
+    GPS at all, from the ground alignment: Table 2.4 initial errors and gyrocompass attitude
+    (``initial_position=False`` removes the 600 m horizontal position error)."""
+    tr = sequential_outage_trajectory(84 * MINUTE)
+    channels = _channels(_END_FREE_S)
+    ev = [(0.0, c, k, False) for c in range(len(channels)) for k in ("code", "carrier")]
+    code, carrier = lock_table(tr.t, len(channels), ev)
+    tight = tuple(s for s in SYSTEMS if s.architecture == "tight")
+    return _run(tight, tr, code, carrier, channels, initial_position=initial_position)
 
 
 # ------------------------------------------------------------------ head-on approach
