@@ -268,6 +268,10 @@ class Evaluation:
     detail: str
     oracle_value: Any = None
 
+    def __post_init__(self) -> None:
+        # comparisons on numpy scalars give numpy booleans: store a plain bool
+        object.__setattr__(self, "passes", bool(self.passes))
+
     @property
     def deviation(self) -> float | None:
         """``reproduced - published`` for numeric claims, else ``None``."""

@@ -203,7 +203,7 @@ def _store(ev: Evaluation) -> None:
         return
     data = {
         "reproduced": _to_json(ev.reproduced),
-        "passes": ev.passes,
+        "passes": bool(ev.passes),
         "detail": ev.detail,
         "oracle_value": _to_json(ev.oracle_value),
     }

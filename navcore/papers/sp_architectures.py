@@ -48,8 +48,12 @@ TABLE_2_3 = (
 
 def _printed_rows_match_layout(rows: tuple[tuple[str, int], ...], layout_rows: list[tuple[str, int]]) -> bool:
     """The layout has the printed rows, in order, with the printed sizes."""
-    norm = {"user clock bias": "clock bias", "user clock drift": "clock drift", "accel. bias": "accel bias",
-            "accel. scale factor": "accel scale factor"}
+    norm = {
+        "user clock bias": "clock bias",
+        "user clock drift": "clock drift",
+        "accel. bias": "accel bias",
+        "accel. scale factor": "accel scale factor",
+    }
     printed_rows = [(norm.get(n.lower(), n.lower()), k) for n, k in rows]
     return printed_rows == [(n.lower(), k) for n, k in layout_rows]
 
