@@ -1,2 +1,19 @@
-"""Detection theory: Neyman-Pearson relations, Chernoff and Gallager bounds, jamming bounds on
-false alarms and ambiguous detections, multiple-access noise and its ROC, Zakai bandwidth."""
+"""Detection theory.
+
+Modules
+-------
+neyman_pearson
+    detection of a known signal in white Gaussian noise, in the log domain.
+jamming
+    lower bounds on false and ambiguous aircraft locations under barrage jamming.
+antenna
+    parabolic-dish antenna relations for jammer hardware.
+multiple_access
+    multiple-access noise at a matched filter: characteristic function, cumulants,
+    Edgeworth terms, amplitude densities, Monte Carlo.
+roc_bounds
+    Chernoff and corrected Gallager-type ROC bounds, the quasi-optimal density, the
+    Gaussian ROC.
+zakai
+    Zakai bandwidth and the multiple-access noise power of PSK signatures.
+"""

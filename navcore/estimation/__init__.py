@@ -12,6 +12,17 @@ covariance
     linear covariance analysis over a measurement schedule.
 layout
     named state layouts.
+covariance_analysis
+    truth-versus-filter covariance analysis of an aided INS (missions, schedules).
+federated
+    local velocity estimators, federated fusion and its correlation-free bound.
+lmmse
+    linear MMSE estimation with a nonrandom nuisance vector.
+ekf_ins_gnss
+    tightly coupled indirect feedback INS/GNSS EKF, batched over Monte Carlo runs.
+
+The specialised modules are imported from their own paths
+(``from navcore.estimation.federated import ...``); the core is re-exported here.
 """
 
 from navcore.estimation.covariance import CovarianceHistory, Measurement, propagate_covariance

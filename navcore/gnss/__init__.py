@@ -1,8 +1,20 @@
-"""GNSS models: constellations and line-of-sight geometry, pseudorange, delta-range and
-double-difference carrier-phase measurements, DOP, tracking loops, acquisition, jamming.
+"""GNSS models.
 
 Modules
 -------
+constellation
+    a nominal 24-satellite GPS constellation, line of sight, elevation/azimuth, DOP.
+measurements
+    pseudorange and pseudorange-rate models and their Jacobians.
+carrier_phase
+    multi-antenna attitude: Euler-angle attitude rows, double-difference carrier phase.
+tracking
+    third-order tracking loop responses to acceleration steps and jerks, aided bandwidth.
+acquisition
+    acquisition search time over a code-phase by Doppler uncertainty region.
+antijam
+    correlation and discriminators, effective C/N0 and loss of lock under jamming,
+    free-space J/S along a trajectory, CEP under jamming.
 architectures
     INS/GPS integration architectures as named state layouts.
 """
