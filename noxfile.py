@@ -121,7 +121,7 @@ def ledger(session: nox.Session) -> None:
     session are an honest determinism check.
     """
     _install(session)
-    env = {"NAVCORE_CACHE": "off"}
+    env = {"NAVCORE_CACHE": "off", "NAVCORE_NO_DISK_CACHE": "1"}
     session.run("python", "-m", "navcore", "ledger", *session.posargs, env=env)
     out = ROOT / "_build" / "ledger.json"
     out.parent.mkdir(exist_ok=True)

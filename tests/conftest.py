@@ -10,6 +10,7 @@ import pytest
 
 # Every test computes for itself: the ledger's on-disk evaluation cache is off.
 os.environ["NAVCORE_CACHE"] = "off"
+os.environ["NAVCORE_NO_DISK_CACHE"] = "1"  # the KZL Monte Carlo's own disk cache, likewise
 
 matplotlib.use("Agg")
 
