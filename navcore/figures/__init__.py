@@ -114,10 +114,14 @@ def register(
 
 
 @cache
-def _discover() -> None:
+def _discover(paper: str | None = None) -> None:
+    """Import the figure modules (of one paper, plus the shared ``diagrams`` module)."""
     for m in pkgutil.iter_modules(__path__):
-        if not m.name.startswith("_"):
-            importlib.import_module(f"{__name__}.{m.name}")
+        if m.name.startswith("_"):
+            continue
+        if paper is not None and m.name != "diagrams" and m.name.split("_", 1)[0].upper() != paper:
+            continue
+        importlib.import_module(f"{__name__}.{m.name}")
 
 
 def registry() -> dict[str, FigureSpec]:
@@ -127,7 +131,12 @@ def registry() -> dict[str, FigureSpec]:
 
 
 def spec(fig_id: str) -> FigureSpec:
-    """The registered figure ``fig_id``."""
+    """The registered figure ``fig_id`` (imports only its paper's figure modules)."""
+    key = fig_id.split("-", 1)[0]
+    if key in PAPERS:
+        _discover(key)
+        if fig_id in _REGISTRY:
+            return _REGISTRY[fig_id]
     reg = registry()
     if fig_id not in reg:
         raise ValueError(f"fig_id {fig_id!r} is not registered; known: {sorted(reg)}")

@@ -47,14 +47,32 @@ def paper_modules() -> tuple[str, ...]:
     )
 
 
+def _module_paper(name: str) -> str:
+    """Paper key of a module named ``<paper>_<section>`` or ``<paper>`` (lower case)."""
+    return name.rsplit(".", 1)[-1].split("_", 1)[0].upper()
+
+
 @cache
-def _load() -> tuple[tuple[Claim, ...], tuple[Erratum, ...]]:
+def _load(paper: str | None = None) -> tuple[tuple[Claim, ...], tuple[Erratum, ...]]:
+    """Import the paper modules (only those of ``paper`` if given) and collect their lists.
+
+    Loading one paper imports only that paper's models, which keeps a chapter's notebook
+    kernels from importing all four papers' dependencies.
+    """
     all_claims: list[Claim] = []
     all_errata: list[Erratum] = []
     for name in paper_modules():
+        if paper is not None and _module_paper(name) != paper:
+            continue
         module = importlib.import_module(name)
         all_claims.extend(getattr(module, "CLAIMS", ()))
         all_errata.extend(getattr(module, "ERRATA", ()))
+    if paper is not None:
+        strays = [c.id for c in all_claims if c.paper != paper] + [
+            e.id for e in all_errata if e.paper != paper
+        ]
+        if strays:
+            raise ValueError(f"modules named for {paper} define items of another paper: {strays}")
     validate_registry(all_claims, all_errata)
     paper_order = {k: i for i, k in enumerate(PAPERS)}
     # stable order: by paper, then by the order of definition within the paper's modules
@@ -95,9 +113,9 @@ def claims(paper: str | None = None, prefix: str | None = None) -> tuple[Claim, 
     """Registered claims, optionally filtered by paper key and id prefix."""
     if paper is not None and paper not in PAPERS:
         raise ValueError(f"paper must be one of {list(PAPERS)}, got {paper!r}")
-    out = _load()[0]
-    if paper is not None:
-        out = tuple(c for c in out if c.paper == paper)
+    if paper is None and prefix is not None and prefix.split("-", 1)[0] in PAPERS and "-" in prefix:
+        paper = prefix.split("-", 1)[0]  # ids start with their paper key
+    out = _load(paper)[0]
     if prefix is not None:
         out = tuple(c for c in out if c.id.startswith(prefix))
     return out
@@ -107,13 +125,13 @@ def errata(paper: str | None = None) -> tuple[Erratum, ...]:
     """Registered errata, optionally filtered by paper key."""
     if paper is not None and paper not in PAPERS:
         raise ValueError(f"paper must be one of {list(PAPERS)}, got {paper!r}")
-    out = _load()[1]
-    return out if paper is None else tuple(e for e in out if e.paper == paper)
+    return _load(paper)[1]
 
 
 def claim(claim_id: str) -> Claim:
     """The claim with id ``claim_id``."""
-    for c in _load()[0]:
+    key = claim_id.split("-", 1)[0]
+    for c in _load(key if key in PAPERS else None)[0]:
         if c.id == claim_id:
             return c
     raise ValueError(f"claim_id {claim_id!r} is not in the ledger")
@@ -121,7 +139,8 @@ def claim(claim_id: str) -> Claim:
 
 def erratum(erratum_id: str) -> Erratum:
     """The erratum with id ``erratum_id``."""
-    for e in _load()[1]:
+    key = erratum_id.split("-", 1)[0]
+    for e in _load(key if key in PAPERS else None)[1]:
         if e.id == erratum_id:
             return e
     raise ValueError(f"erratum_id {erratum_id!r} is not in the ledger")
