@@ -122,11 +122,8 @@ def ledger(session: nox.Session) -> None:
     """
     _install(session)
     env = {"NAVCORE_CACHE": "off", "NAVCORE_NO_DISK_CACHE": "1"}
-    session.run("python", "-m", "navcore", "ledger", *session.posargs, env=env)
     out = ROOT / "_build" / "ledger.json"
-    out.parent.mkdir(exist_ok=True)
-    with out.open("w") as fh:
-        session.run("python", "-m", "navcore", "ledger", "--json", stdout=fh, env=env)
+    session.run("python", "-m", "navcore", "ledger", "--json-out", str(out), *session.posargs, env=env)
     session.log(f"ledger JSON: {out}")
 
 

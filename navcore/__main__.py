@@ -20,6 +20,11 @@ def _cmd_ledger(args: argparse.Namespace) -> int:
     from navcore.ledger.render import json_dump, rows, text_table
 
     evals = ledger.evaluations(paper=args.paper)
+    if args.json_out:
+        from pathlib import Path
+
+        Path(args.json_out).parent.mkdir(parents=True, exist_ok=True)
+        Path(args.json_out).write_text(json_dump(evals) + "\n")
     if args.json:
         print(json_dump(evals))
     elif args.csv:
@@ -55,6 +60,7 @@ def main(argv: list[str] | None = None) -> int:
     fmt = p_ledger.add_mutually_exclusive_group()
     fmt.add_argument("--json", action="store_true", help="JSON array of claim objects")
     fmt.add_argument("--csv", action="store_true", help="CSV rows")
+    p_ledger.add_argument("--json-out", default=None, help="also write the JSON array to this file")
     p_ledger.set_defaults(func=_cmd_ledger)
     p_fig = sub.add_parser("figures", help="write every registered figure as SVG and PNG")
     p_fig.add_argument("--out", default="figures", help="output folder (default: figures)")
