@@ -122,23 +122,3 @@ def standalone_heading() -> Figure:
     ax.legend(fontsize=8)
     fig.tight_layout()
     return fig
-
-
-def glue_png(fig_id: str) -> None:
-    """Render a registered figure to PNG and glue it (as an image) for a ``{glue:figure}``.
-
-    A stop-gap for notebooks: gluing the matplotlib Figure itself under the Agg backend
-    stores only its text representation, so the page would show ``<Figure size ...>``.
-    """
-    import io
-
-    from IPython.display import Image
-    from myst_nb import glue
-
-    from navcore.figures import render
-
-    fig = render(fig_id)
-    buf = io.BytesIO()
-    fig.savefig(buf, format="png", dpi=110, bbox_inches="tight")
-    plt.close(fig)
-    glue(fig_id, Image(data=buf.getvalue(), format="png"), display=False)
