@@ -109,8 +109,8 @@ def figures(session: nox.Session) -> None:
 def lint(session: nox.Session) -> None:
     """ruff check and ruff format --check."""
     session.install(next(line for line in LOCK.read_text().splitlines() if line.startswith("ruff==")))
-    session.run("ruff", "check", "navcore", "tests", "tools", "noxfile.py")
-    session.run("ruff", "format", "--check", "navcore", "tests", "tools", "noxfile.py")
+    session.run("ruff", "check", "navcore", "tests", "tools", "book/_ext", "noxfile.py")
+    session.run("ruff", "format", "--check", "navcore", "tests", "tools", "book/_ext", "noxfile.py")
 
 
 @nox.session

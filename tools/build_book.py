@@ -13,6 +13,16 @@ is executed (as with ``force``), and a second build with the same code (the PDF 
 HTML, or a rebuild after editing one chapter) re-executes only the notebooks whose text
 changed. Any change to navcore changes the key, so results are never stale.
 
+With ``--cache`` the notebooks that the cache lacks are executed *before* Sphinx runs,
+``--jobs`` at a time (default: the number of cores), each in its own kernel exactly as
+MyST-NB would execute it (same reader, same working directory, same executor), and stored in
+the cache; Sphinx then finds every notebook there. The ledger's on-disk evaluation cache is
+filled first, one paper per worker, so that the pages' claims tables, the ledger page and the
+errata page read the same evaluations instead of recomputing them. A notebook that fails
+is not stored, so Sphinx executes it again and the strict build fails with its traceback.
+The execution time of every page and chapter is printed and written to
+``<out>/_build/page-times.json``.
+
 The build is strict: forced execution, a failing cell fails it (``nb_execution_raise_on_error``),
 and ``-W -n --keep-going`` turns warnings, broken references and missing citations into errors.
 Paths are absolute because ``jupyter-book build .`` breaks singlehtml and walks ``.nox/``.
@@ -21,10 +31,15 @@ Paths are absolute because ``jupyter-book build .`` breaks singlehtml and walks 
 from __future__ import annotations
 
 import argparse
+import fnmatch
 import hashlib
+import json
+import os
 import subprocess
 import sys
 import tempfile
+import time
+from concurrent.futures import ProcessPoolExecutor, as_completed
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -56,6 +71,7 @@ def source_key() -> str:
         ROOT / "_config.yml",
     ]
     files += sorted((ROOT / "tools").glob("*.py"))
+    files += sorted((ROOT / "book" / "_ext").glob("*.py"))
     for f in files:
         if f.exists():
             h.update(str(f.relative_to(ROOT)).encode())
@@ -70,14 +86,248 @@ def cached_config() -> Path:
     config = yaml.safe_load((ROOT / "_config.yml").read_text())
     config["execute"]["execute_notebooks"] = "cache"
     config["execute"]["cache"] = str(ROOT / "_build" / "jupyter_cache" / source_key())
+    # local extension folders are relative to the config file, which moves to _build/
+    local = config.get("sphinx", {}).get("local_extensions") or {}
+    for name, folder in local.items():
+        local[name] = str(ROOT / folder)
     path = ROOT / "_build" / "_config_cached.yml"
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(yaml.safe_dump(config, sort_keys=False))
     return path
 
 
+def toc_pages(toc: Path) -> list[Path]:
+    """The book pages a toc names, globs resolved, in toc order."""
+    import yaml
+
+    book = ROOT / "book"
+    found: list[Path] = []
+
+    def walk(node: object) -> None:
+        if isinstance(node, dict):
+            if "file" in node:
+                found.extend(sorted(book.glob(node["file"] + ".*"))[:1])
+            if "glob" in node:
+                pattern = node["glob"]
+                found.extend(
+                    sorted(
+                        p
+                        for p in book.rglob("*.md")
+                        if fnmatch.fnmatch(p.relative_to(book).with_suffix("").as_posix(), pattern)
+                    )
+                )
+            for key in ("root",):
+                if key in node:
+                    found.extend(sorted(book.glob(node[key] + ".*"))[:1])
+            for value in node.values():
+                if isinstance(value, (list, dict)):
+                    walk(value)
+        elif isinstance(node, list):
+            for item in node:
+                walk(item)
+
+    walk(yaml.safe_load(toc.read_text()))
+    return list(dict.fromkeys(found))
+
+
+def _is_notebook(path: Path) -> bool:
+    text = path.read_text()
+    return path.suffix == ".md" and text.startswith("---") and "kernelspec:" in text.split("\n---", 1)[0]
+
+
+def _read_notebook(path: Path):
+    """The notebook MyST-NB builds from a MyST Markdown page (same reader, same hash)."""
+    from myst_nb.core.read import read_myst_markdown_notebook
+
+    return read_myst_markdown_notebook(path.read_text(), path=str(path))
+
+
+_RESET = """\
+%reset -f
+import os as _os
+import matplotlib.pyplot as _plt
+_plt.close("all")
+_os.chdir({cwd!r})
+del _os, _plt
+"""
+
+
+def _execute_group(
+    paper: str | None, paths: list[str], timeout: int
+) -> list[tuple[str, float, object, str | None]]:
+    """Execute a chapter's pages one after another in ONE kernel (in a worker process).
+
+    The kernel first evaluates the chapter's ledger claims (filling the on-disk evaluation
+    cache that the ledger and errata pages read); then, before each page, the user namespace
+    is reset (``%reset -f``), open figures are closed and the working directory is set to the
+    page's folder, so a page sees none of the previous page's variables. What carries over
+    is what Python keeps per process: imported modules and navcore's pure-function caches
+    (``functools.cache``), which is what makes a chapter's pages cheaper together than apart.
+    ``tools/bench.py`` executes every page alone in a fresh kernel, as a reader would.
+    """
+    import nbformat
+    from jupyter_client.manager import KernelManager
+    from nbclient import NotebookClient
+    from nbclient.exceptions import CellExecutionError
+
+    km = KernelManager(kernel_name="python3")
+    km.start_kernel(cwd=str(ROOT / "book"))
+    kc = None
+    results = []
+
+    def run(nb, cwd: str):
+        nonlocal kc
+        client = NotebookClient(
+            nb,
+            km=km,
+            kc=kc,
+            timeout=timeout,
+            allow_errors=False,
+            record_timing=False,
+            resources={"metadata": {"path": cwd}},
+        )
+        client.execute()
+        kc = client.kc
+
+    try:
+        if paper is not None:
+            start = time.perf_counter()
+            warm = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(
+                f"from navcore import ledger\n_ = ledger.evaluations({paper!r})\ndel _, ledger"
+            )])  # fmt: skip
+            warm.metadata["kernelspec"] = {
+                "name": "python3",
+                "display_name": "Python 3",
+                "language": "python",
+            }
+            run(warm, str(ROOT / "book"))
+            results.append((f"(ledger {paper})", time.perf_counter() - start, None, None))
+        for path_str in paths:
+            path = Path(path_str)
+            nb = _read_notebook(path)
+            start = time.perf_counter()
+            err = None
+            try:
+                reset = nbformat.v4.new_notebook(
+                    cells=[nbformat.v4.new_code_cell(_RESET.format(cwd=str(path.parent)))]
+                )
+                reset.metadata["kernelspec"] = nb.metadata.get("kernelspec", {})
+                run(reset, str(path.parent))
+                run(nb, str(path.parent))
+            except CellExecutionError as exc:
+                err = f"CellExecutionError: {exc}"[:2000]
+            except Exception as exc:  # a dead kernel, a timeout: report, let Sphinx re-run it
+                err = f"{type(exc).__name__}: {exc}"[:2000]
+            count = 0
+            for cell in nb.cells:  # number the cells as a fresh kernel would
+                if cell.cell_type == "code" and cell.get("execution_count") is not None:
+                    count += 1
+                    cell.execution_count = count
+                    for out in cell.get("outputs", []):
+                        if "execution_count" in out:
+                            out["execution_count"] = count
+            results.append((path_str, time.perf_counter() - start, nb, err))
+    finally:
+        if kc is not None:
+            kc.stop_channels()
+        km.shutdown_kernel(now=True)
+    return results
+
+
+def _group_pages(pages: list[Path]) -> tuple[list[tuple[str | None, list[str]]], list[str]]:
+    """Split pages into one group per chapter folder and the front and back matter."""
+    chapters: dict[str, list[str]] = {}
+    other: list[str] = []
+    for page in pages:
+        rel = page.relative_to(ROOT / "book")
+        if len(rel.parts) > 1:
+            chapters.setdefault(rel.parts[0], []).append(str(page))
+        else:
+            other.append(str(page))
+    # the biggest chapters first, so that two workers finish at about the same time
+    groups = sorted(chapters.items(), key=lambda item: -len(item[1]))
+    return [(name.upper(), paths) for name, paths in groups], other
+
+
+def prefill(cache_path: Path, pages: list[Path], jobs: int, timeout: int = 900) -> dict[str, float]:
+    """Execute the pages missing from the jupyter-cache, ``jobs`` chapters at a time, and store them."""
+    from jupyter_cache import get_cache
+    from jupyter_cache.base import CacheBundleIn
+
+    cache = get_cache(str(cache_path))
+    todo = []
+    for page in pages:
+        if not _is_notebook(page):
+            continue
+        try:
+            cache.match_cache_notebook(_read_notebook(page))
+        except KeyError:
+            todo.append(page)
+    times: dict[str, float] = {}
+    if not todo:
+        print(f"prefill: all {len(pages)} pages are in the cache", flush=True)
+        return times
+    groups, other = _group_pages(todo)
+    papers = {"WF", "SP", "ATC10", "KZL"}
+    jobs = max(1, min(jobs, len(groups) or 1))
+    start = time.perf_counter()
+
+    def store(results) -> None:
+        for path_str, seconds, nb, err in results:
+            if nb is None:
+                times[path_str] = seconds
+                print(f"prefill: {seconds:7.1f} s  {path_str}", flush=True)
+                continue
+            rel = Path(path_str).relative_to(ROOT / "book").as_posix()
+            if err is not None:
+                print(f"prefill: {rel} FAILED ({err.splitlines()[0]}); Sphinx will re-run it", flush=True)
+                continue
+            times[rel] = seconds
+            cache.cache_notebook_bundle(
+                CacheBundleIn(nb, path_str, data={"execution_seconds": seconds}),
+                check_validity=False,
+                overwrite=True,
+            )
+            print(f"prefill: {seconds:7.1f} s  {rel}", flush=True)
+
+    with ProcessPoolExecutor(max_workers=jobs) as pool:
+        futures = [
+            pool.submit(_execute_group, name if name in papers else None, paths, timeout)
+            for name, paths in groups
+        ]
+        for fut in as_completed(futures):
+            store(fut.result())
+        # the front and back matter (intro, about, ledger, errata) read every paper's claims:
+        # they run last, from the evaluation cache that the chapters filled
+        if other:
+            store(pool.submit(_execute_group, None, other, timeout).result())
+    print(
+        f"prefill: {len(todo)} pages in {time.perf_counter() - start:.1f} s with {jobs} workers", flush=True
+    )
+    return times
+
+
+def report_times(times: dict[str, float], out: Path) -> None:
+    """Print the execution time of each chapter (sum of its pages) and write them as JSON."""
+    chapters: dict[str, float] = {}
+    for rel, seconds in times.items():
+        if rel.startswith("(ledger "):
+            chapter = rel[len("(ledger ") : -1].lower()  # the chapter's claims, evaluated first
+        else:
+            chapter = rel.split("/")[0] if "/" in rel else "(front and back matter)"
+        chapters[chapter] = chapters.get(chapter, 0.0) + seconds
+    for chapter, seconds in sorted(chapters.items()):
+        print(f"execution: {seconds:7.1f} s  {chapter}", flush=True)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    out.write_text(json.dumps({"pages": times, "chapters": chapters}, indent=1, sort_keys=True) + "\n")
+
+
 def build(
-    builder: str = "html", only: str | None = None, out: Path | None = None, cache: bool = False
+    builder: str = "html",
+    only: str | None = None,
+    out: Path | None = None,
+    cache: bool = False,
+    jobs: int | None = None,
 ) -> int:
     config = cached_config() if cache else ROOT / "_config.yml"
     toc = ROOT / "book" / "_toc.yml"
@@ -94,6 +344,13 @@ def build(
         toc = Path(tmp.name)
         out = out or ROOT / "_build" / f"subset-{only}"
     out = out or ROOT
+    if cache:
+        import yaml
+
+        cache_path = Path(yaml.safe_load(config.read_text())["execute"]["cache"])
+        times = prefill(cache_path, toc_pages(toc), jobs or os.cpu_count() or 1)
+        if times:
+            report_times(times, out / "_build" / "page-times.json")
     cmd = [
         str(Path(sys.executable).with_name("jupyter-book")), "build", str(ROOT / "book"),
         "--config", str(config), "--toc", str(toc), "--path-output", str(out),
@@ -113,8 +370,11 @@ def main() -> int:
     parser.add_argument("--only", default=None, help="build only one paper's chapter: wf, sp, atc10, kzl")
     parser.add_argument("--out", type=Path, default=None, help="output folder (default: the repository)")
     parser.add_argument("--cache", action="store_true", help="execute through a source-keyed jupyter-cache")
+    parser.add_argument(
+        "--jobs", type=int, default=None, help="with --cache: pages executed at once (default: the cores)"
+    )
     args = parser.parse_args()
-    return build(args.builder, args.only, args.out, args.cache)
+    return build(args.builder, args.only, args.out, args.cache, args.jobs)
 
 
 if __name__ == "__main__":
