@@ -1,0 +1,340 @@
+r"""A ground jammer seen from a moving receiver: effective C/N0, lock thresholds, crossing times.
+
+The receiver (antenna gain :math:`G_s(e)` towards a satellite at elevation :math:`e`,
+:math:`G_{rj}` towards the jammer) receives the satellite's carrier power
+:math:`C = S + G_s(e)` and, from a jammer of effective radiated power :math:`P_{ERP}` at
+slant range :math:`d`, the power (free space, wavelength :math:`\lambda`)
+
+.. math::
+
+    J = P_{ERP} + G_{rj} - 20\log_{10}\frac{4\pi d}{\lambda}\quad\text{(dBW)}.
+
+A jammer spread over the band adds the density :math:`J/(Q R_c)` to the thermal
+:math:`N_0` (chip rate :math:`R_c`, spectral-separation factor :math:`Q`), so the effective
+carrier-to-noise density is
+
+.. math::
+
+    (C/N_0)_{eff} = \frac{C}{N_0 + J/(Q R_c)} .
+
+It falls below a threshold :math:`\gamma` when :math:`J > J^* = Q R_c (C/\gamma - N_0)`, i.e.
+inside the *threshold range* :math:`d^* = \frac{\lambda}{4\pi}10^{(P_{ERP} + G_{rj} - J^*)/20}`.
+Along a straight, level track at speed :math:`v` whose slant range at closest approach
+(time :math:`t_{ca}`) is :math:`d_{min}`,
+:math:`d(t)^2 = d_{min}^2 + v^2 (t - t_{ca})^2`, so the crossings solve a quadratic in
+:math:`t`:
+
+.. math::
+
+    t_{in,out} = t_{ca} \mp \frac{\sqrt{d^{*2} - d_{min}^2}}{v}.
+
+Loss of lock and reacquisition use different thresholds (hysteresis): a loop locked is lost
+when :math:`(C/N_0)_{eff}` drops below its loss threshold and is back only when it rises
+above its (higher) reacquisition threshold. A carrier loop's loss threshold is the larger of
+a stated C/N0 floor and the C/N0 at which :math:`k` times its thermal phase jitter
+(PLL, noise bandwidth :math:`B_n`, coherent integration :math:`T`)
+
+.. math::
+
+    \sigma_\phi^2 = \frac{B_n}{C/N_0}\Big(1 + \frac{1}{2T\,C/N_0}\Big)\ \text{rad}^2
+
+reaches the allowed phase error :math:`\phi_{max}`; that C/N0 is the positive root of
+:math:`(\phi_{max}/k)^2 x^2 - B_n x - B_n/(2T) = 0`.
+
+References
+----------
+.. [SP] G. T. Schmidt and R. E. Phillips, "INS/GPS Integration Architecture Performance
+   Comparisons", NATO RTO-EN-SET-116, Sec. 2.5 (thresholds) and 2.6.2 (jammer flyby).
+.. [Kaplan] E. D. Kaplan and C. J. Hegarty (eds.), *Understanding GPS*, 2nd ed., Sec. 5.6
+   (PLL thermal jitter) and Sec. 6.3 (effective C/N0 under interference).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from navcore._validate import as_finite_array, require_nonnegative, require_positive
+
+__all__ = [
+    "LockThresholds",
+    "carrier_loss_threshold_dbhz",
+    "effective_cn0_with_jammer_dbhz",
+    "elevation_gain_dbi",
+    "free_space_loss_db",
+    "hysteresis_lock",
+    "jammer_power_at_threshold_dbw",
+    "outage_intervals",
+    "pll_jitter_threshold_dbhz",
+    "received_jammer_power_dbw",
+    "slant_range_m",
+    "straight_track_crossing_times",
+    "straight_track_range_m",
+    "threshold_range_m",
+]
+
+Array = NDArray[np.float64]
+
+
+def _out(x: Array) -> Array | float:
+    return float(x) if np.ndim(x) == 0 else x
+
+
+def straight_track_range_m(
+    t_s: ArrayLike, speed_mps: float, closest_range_m: float, t_closest_s: float = 0.0
+) -> Array | float:
+    """Slant range along a straight, level track: ``sqrt(d_min^2 + v^2 (t - t_ca)^2)``.
+
+    Parameters
+    ----------
+    t_s : array_like
+        Times (s).
+    speed_mps : float
+        Ground speed (m/s), > 0.
+    closest_range_m : float
+        Slant range at closest approach (m), >= 0 (combines altitude and cross-track offset).
+    t_closest_s : float
+        Time of closest approach (s).
+
+    Examples
+    --------
+    >>> float(straight_track_range_m(10.0, 300.0, 4000.0))
+    5000.0
+    """
+    require_positive("speed_mps", speed_mps)
+    require_nonnegative("closest_range_m", closest_range_m)
+    t = as_finite_array("t_s", t_s)
+    return _out(np.hypot(closest_range_m, speed_mps * (t - t_closest_s)))
+
+
+def slant_range_m(position_ned_m: ArrayLike, emitter_ned_m: ArrayLike) -> Array | float:
+    """Distance (m) from positions ``(..., 3)`` to an emitter at ``(3,)`` (same local frame)."""
+    p = as_finite_array("position_ned_m", position_ned_m)
+    e = as_finite_array("emitter_ned_m", emitter_ned_m)
+    if p.shape[-1] != 3 or e.shape != (3,):
+        raise ValueError("position_ned_m must have shape (..., 3) and emitter_ned_m shape (3,)")
+    return _out(np.linalg.norm(p - e, axis=-1))
+
+
+def free_space_loss_db(range_m: ArrayLike, wavelength_m: float) -> Array | float:
+    """Free-space path loss ``20 log10(4 pi d / lambda)`` (dB).
+
+    Examples
+    --------
+    >>> round(float(free_space_loss_db(1.0 / (4 * np.pi), 1.0)), 12)
+    0.0
+    """
+    require_positive("wavelength_m", wavelength_m)
+    d = require_positive("range_m", as_finite_array("range_m", range_m))
+    return _out(20.0 * np.log10(4.0 * np.pi * d / wavelength_m))
+
+
+def received_jammer_power_dbw(
+    erp_dbw: float, range_m: ArrayLike, wavelength_m: float, rx_gain_dbi: float = 0.0
+) -> Array | float:
+    """Jammer power at the receiver (dBW): ``ERP + G_rj - 20 log10(4 pi d / lambda)``."""
+    as_finite_array("erp_dbw", erp_dbw)
+    as_finite_array("rx_gain_dbi", rx_gain_dbi)
+    return _out(erp_dbw + rx_gain_dbi - np.asarray(free_space_loss_db(range_m, wavelength_m)))
+
+
+def effective_cn0_with_jammer_dbhz(
+    carrier_dbw: ArrayLike,
+    jammer_dbw: ArrayLike,
+    n0_dbw_hz: float,
+    chip_rate_hz: float,
+    q: float = 2.0,
+) -> Array | float:
+    """Effective C/N0 (dB-Hz): ``C - 10 log10(N0 + J/(Q Rc))`` (arrays broadcast).
+
+    ``carrier_dbw`` of shape ``(n_sat,)`` and ``jammer_dbw`` of shape ``(N, 1)`` give
+    ``(N, n_sat)``; ``jammer_dbw = -inf`` is not allowed (use a very low power instead).
+
+    Examples
+    --------
+    >>> round(float(effective_cn0_with_jammer_dbhz(-160.0, -300.0, -204.0, 1e6)), 9)
+    44.0
+    """
+    require_positive("chip_rate_hz", chip_rate_hz)
+    require_positive("q", q)
+    as_finite_array("n0_dbw_hz", n0_dbw_hz)
+    c = as_finite_array("carrier_dbw", carrier_dbw)
+    j = as_finite_array("jammer_dbw", jammer_dbw)
+    dens = np.logaddexp(n0_dbw_hz * _LN10_10, j * _LN10_10 - math.log(q * chip_rate_hz)) / _LN10_10
+    return _out(c - dens)
+
+
+_LN10_10 = math.log(10.0) / 10.0
+
+
+def jammer_power_at_threshold_dbw(
+    carrier_dbw: ArrayLike, threshold_dbhz: ArrayLike, n0_dbw_hz: float, chip_rate_hz: float, q: float = 2.0
+) -> Array | float:
+    """Received jammer power (dBW) that brings the effective C/N0 down to ``threshold_dbhz``:
+    ``J* = Q Rc (C/gamma - N0)``.
+
+    Raises ValueError if a threshold is not below the unjammed C/N0 (the loop would never be
+    in lock).
+    """
+    require_positive("chip_rate_hz", chip_rate_hz)
+    require_positive("q", q)
+    c = as_finite_array("carrier_dbw", carrier_dbw)
+    g = as_finite_array("threshold_dbhz", threshold_dbhz)
+    margin = c - g - n0_dbw_hz  # unjammed C/N0 minus threshold, dB
+    if np.any(margin <= 0):
+        raise ValueError("threshold_dbhz must be below the unjammed C/N0 (carrier_dbw - n0_dbw_hz)")
+    # Q Rc (C/gamma - N0) = Q Rc N0 (10^(margin/10) - 1), in the log domain
+    out = 10.0 * np.log10(q * chip_rate_hz) + n0_dbw_hz + 10.0 * np.log10(np.expm1(margin * _LN10_10))
+    return _out(out)
+
+
+def threshold_range_m(
+    erp_dbw: float, jammer_threshold_dbw: ArrayLike, wavelength_m: float, rx_gain_dbi: float = 0.0
+) -> Array | float:
+    """Range (m) at which the received jammer power equals ``jammer_threshold_dbw`` (free space).
+
+    Examples
+    --------
+    >>> r = float(threshold_range_m(10.0, -100.0, 0.19))
+    >>> round(float(received_jammer_power_dbw(10.0, r, 0.19)), 9)
+    -100.0
+    """
+    require_positive("wavelength_m", wavelength_m)
+    jt = as_finite_array("jammer_threshold_dbw", jammer_threshold_dbw)
+    return _out(wavelength_m / (4.0 * np.pi) * 10.0 ** ((erp_dbw + rx_gain_dbi - jt) / 20.0))
+
+
+def straight_track_crossing_times(
+    threshold_range: ArrayLike, closest_range_m: float, speed_mps: float, t_closest_s: float = 0.0
+) -> tuple[Array | float, Array | float]:
+    """Times at which a straight track enters and leaves the sphere of radius ``threshold_range``.
+
+    The roots of ``d_min^2 + v^2 (t - t_ca)^2 = d*^2``; NaN where the track never comes
+    that close (``d* < d_min``).
+    """
+    require_positive("speed_mps", speed_mps)
+    require_nonnegative("closest_range_m", closest_range_m)
+    r = require_nonnegative("threshold_range", as_finite_array("threshold_range", threshold_range))
+    disc = r**2 - closest_range_m**2
+    half = np.where(disc >= 0, np.sqrt(np.clip(disc, 0.0, None)), np.nan) / speed_mps
+    return _out(t_closest_s - half), _out(t_closest_s + half)
+
+
+def elevation_gain_dbi(elevation_rad: ArrayLike, zenith_dbi: float, horizon_dbi: float) -> Array | float:
+    """Antenna gain linear in elevation from ``horizon_dbi`` (0 deg) to ``zenith_dbi`` (90 deg).
+
+    A simple stand-in for a fixed upward-looking patch; elevations are clipped to [0, 90] deg.
+    """
+    e = np.clip(as_finite_array("elevation_rad", elevation_rad), 0.0, np.pi / 2)
+    return _out(horizon_dbi + (zenith_dbi - horizon_dbi) * e / (np.pi / 2))
+
+
+def pll_jitter_threshold_dbhz(
+    noise_bandwidth_hz: ArrayLike,
+    max_phase_error_deg: float = 90.0,
+    k_sigma: float = 3.0,
+    coherent_s: float = 0.02,
+) -> Array | float:
+    """C/N0 (dB-Hz) at which ``k_sigma`` times the PLL thermal jitter equals ``max_phase_error_deg``.
+
+    Positive root of ``a x^2 - Bn x - Bn/(2T) = 0`` with ``a = (phi_max/k)^2`` (rad^2).
+
+    Examples
+    --------
+    >>> round(float(pll_jitter_threshold_dbhz(5.83)), 2)
+    15.57
+    """
+    require_positive("max_phase_error_deg", max_phase_error_deg)
+    require_positive("k_sigma", k_sigma)
+    require_positive("coherent_s", coherent_s)
+    bn = require_positive("noise_bandwidth_hz", as_finite_array("noise_bandwidth_hz", noise_bandwidth_hz))
+    a = (math.radians(max_phase_error_deg) / k_sigma) ** 2
+    x = (bn + np.sqrt(bn**2 + 2.0 * a * bn / coherent_s)) / (2.0 * a)
+    return _out(10.0 * np.log10(x))
+
+
+def carrier_loss_threshold_dbhz(
+    noise_bandwidth_hz: ArrayLike,
+    floor_dbhz: float,
+    max_phase_error_deg: float = 90.0,
+    k_sigma: float = 3.0,
+    coherent_s: float = 0.02,
+) -> Array | float:
+    """Carrier-loop loss threshold: the larger of a C/N0 floor and the jitter threshold."""
+    jit = np.asarray(pll_jitter_threshold_dbhz(noise_bandwidth_hz, max_phase_error_deg, k_sigma, coherent_s))
+    return _out(np.maximum(as_finite_array("floor_dbhz", floor_dbhz), jit))
+
+
+@dataclass(frozen=True)
+class LockThresholds:
+    """Effective-C/N0 thresholds (dB-Hz) of one receiver: loss and reacquisition, code and carrier."""
+
+    code_loss: float
+    carrier_loss: float
+    code_reacquisition: float
+    carrier_reacquisition: float
+
+    def __post_init__(self) -> None:
+        for kind in ("code", "carrier"):
+            lo, hi = getattr(self, f"{kind}_loss"), getattr(self, f"{kind}_reacquisition")
+            if not (math.isfinite(lo) and math.isfinite(hi)):
+                raise ValueError(f"LockThresholds.{kind}_loss and {kind}_reacquisition must be finite")
+            if hi < lo:
+                raise ValueError(f"LockThresholds.{kind}_reacquisition must be >= {kind}_loss")
+
+
+def hysteresis_lock(
+    cn0_dbhz: ArrayLike, loss_dbhz: ArrayLike, reacquisition_dbhz: ArrayLike, *, initially_locked: bool = True
+) -> NDArray[np.bool_]:
+    """Lock state over time of each channel with hysteresis (vectorised).
+
+    A channel is unlocked from the first sample below ``loss_dbhz`` and locked again from the
+    first later sample at or above ``reacquisition_dbhz``; in between it keeps its state.
+
+    Parameters
+    ----------
+    cn0_dbhz : (N, n) array
+        Effective C/N0 per time sample and channel.
+    loss_dbhz, reacquisition_dbhz : float or (n,) array
+        Thresholds (reacquisition >= loss).
+
+    Examples
+    --------
+    >>> hysteresis_lock([[30.0], [17.0], [20.0], [22.0]], 18.0, 21.0)[:, 0].tolist()
+    [True, False, False, True]
+    """
+    c = as_finite_array("cn0_dbhz", cn0_dbhz)
+    if c.ndim != 2:
+        raise ValueError(f"cn0_dbhz must have shape (N, n), got {c.shape}")
+    lo = as_finite_array("loss_dbhz", loss_dbhz)
+    hi = as_finite_array("reacquisition_dbhz", reacquisition_dbhz)
+    if np.any(hi < lo):
+        raise ValueError("reacquisition_dbhz must be >= loss_dbhz")
+    set_ = c >= hi
+    reset = c < lo
+    event = set_ | reset
+    n = c.shape[0]
+    idx = np.where(event, np.arange(n)[:, None], -1)
+    last = np.maximum.accumulate(idx, axis=0)  # index of the last decisive sample
+    state = np.take_along_axis(set_, np.clip(last, 0, None), axis=0)
+    return np.where(last >= 0, state, initially_locked)
+
+
+def outage_intervals(t_s: ArrayLike, available: ArrayLike) -> list[tuple[float, float]]:
+    """``[(start, end), ...]`` of the stretches where ``available`` is False.
+
+    ``start`` is the first unavailable sample's time and ``end`` the first available sample's
+    time after it (the last sample's time if the outage lasts to the end).
+    """
+    t = as_finite_array("t_s", t_s)
+    a = np.asarray(available, dtype=bool)
+    if a.shape != t.shape:
+        raise ValueError(f"available must have the shape of t_s {t.shape}, got {a.shape}")
+    off = np.r_[False, ~a, False].astype(np.int8)
+    d = np.diff(off)
+    starts = np.flatnonzero(d == 1)
+    ends = np.flatnonzero(d == -1)
+    return [(float(t[s]), float(t[min(e, t.size - 1)])) for s, e in zip(starts, ends, strict=True)]

@@ -1,0 +1,176 @@
+"""Tests of the jammer-geometry model (navcore.gnss.jammer_geometry) and the SP flyby scenario."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+
+from navcore.estimation.covariance_analysis import lock_table
+from navcore.gnss import jammer_geometry as jg
+from navcore.gnss.antijam import effective_cn0_dbhz, js_for_effective_cn0
+from navcore.units import GPS_L1_WAVELENGTH_M, GPS_P_CHIP_RATE_HZ
+
+N0 = -204.0
+RC = GPS_P_CHIP_RATE_HZ
+LAM = GPS_L1_WAVELENGTH_M
+
+
+def _loop_hysteresis(c: np.ndarray, lo: float, hi: float) -> np.ndarray:
+    """Brute-force state machine, one sample at a time."""
+    out = np.empty(c.shape, dtype=bool)
+    state = np.ones(c.shape[1], dtype=bool)
+    for k in range(c.shape[0]):
+        state = np.where(c[k] < lo, False, np.where(c[k] >= hi, True, state))
+        out[k] = state
+    return out
+
+
+def test_effective_cn0_matches_js_form():
+    """Oracle: the J/S form of navcore.gnss.antijam, 1/(C/N0) + (J/S)/(Q Rc), evaluated with
+    C/N0 = C - N0 and J/S = J - C (an independent formulation of the same law)."""
+    C = np.array([-163.0, -160.0, -158.0])
+    J = np.linspace(-150.0, -90.0, 7)[:, None]
+    ours = jg.effective_cn0_with_jammer_dbhz(C, J, N0, RC, 2.0)
+    ref = effective_cn0_dbhz(C - N0, J - C, RC, 2.0)
+    np.testing.assert_allclose(ours, ref, atol=1e-9)
+
+
+def test_threshold_jammer_power_matches_antijam_js():
+    """Oracle: js_for_effective_cn0 (J/S at the threshold) plus the carrier power gives J*,
+    and J* fed back into the effective C/N0 gives the threshold."""
+    C = -161.0
+    for gamma in (18.0, 21.0, 30.0):
+        js = js_for_effective_cn0(C - N0, gamma, RC, 2.0)
+        jstar = jg.jammer_power_at_threshold_dbw(C, gamma, N0, RC, 2.0)
+        assert jstar == pytest.approx(C + js, abs=1e-9)
+        assert jg.effective_cn0_with_jammer_dbhz(C, jstar, N0, RC, 2.0) == pytest.approx(gamma, abs=1e-9)
+
+
+def test_straight_track_crossings_closed_form_against_grid():
+    """Oracle: the quadratic d_min^2 + v^2 (t - t_ca)^2 = d*^2 (closed form) against a 0.05-s
+    grid of the effective C/N0 with the vectorised hysteresis; crossings agree within a step."""
+    erp, v, dmin, tca = 40.0, 200.0, 12_000.0, 1500.0
+    C = np.array([-160.0, -163.0])
+    t = np.arange(0.0, 3000.0, 0.05)
+    d = jg.straight_track_range_m(t, v, dmin, tca)
+    J = jg.received_jammer_power_dbw(erp, d, LAM, -10.0)
+    cn0 = jg.effective_cn0_with_jammer_dbhz(C, J[:, None], N0, RC)
+    locked = jg.hysteresis_lock(cn0, 18.0, 21.0)
+    for c in range(2):
+        r_in = jg.threshold_range_m(erp, jg.jammer_power_at_threshold_dbw(C[c], 18.0, N0, RC), LAM, -10.0)
+        r_out = jg.threshold_range_m(erp, jg.jammer_power_at_threshold_dbw(C[c], 21.0, N0, RC), LAM, -10.0)
+        t_in, _ = jg.straight_track_crossing_times(r_in, dmin, v, tca)
+        _, t_out = jg.straight_track_crossing_times(r_out, dmin, v, tca)
+        iv = jg.outage_intervals(t, locked[:, c])
+        assert len(iv) == 1
+        assert iv[0][0] == pytest.approx(t_in, abs=0.05)
+        assert iv[0][1] == pytest.approx(t_out, abs=0.05)
+    # the stronger satellite (index 0) is lost later and back earlier
+    iv0, iv1 = (jg.outage_intervals(t, locked[:, c])[0] for c in range(2))
+    assert iv0[0] > iv1[0] and iv0[1] < iv1[1]
+
+
+def test_crossing_nan_when_track_stays_outside():
+    """Closed form: no real root when the threshold range is below the closest approach."""
+    t_in, t_out = jg.straight_track_crossing_times(5000.0, 8000.0, 100.0)
+    assert np.isnan(t_in) and np.isnan(t_out)
+    t_in, t_out = jg.straight_track_crossing_times(10_000.0, 8000.0, 100.0, 50.0)
+    assert (t_in, t_out) == pytest.approx((50.0 - 60.0, 50.0 + 60.0))
+
+
+def test_range_closed_form():
+    """Pythagoras: 3-4-5 triangle, and slant_range_m against the same geometry in NED."""
+    assert jg.straight_track_range_m(10.0, 300.0, 4000.0) == pytest.approx(5000.0)
+    pos = np.array([[0.0, 0.0, -7000.0], [3000.0, 0.0, -7000.0]])
+    r = jg.slant_range_m(pos, np.array([0.0, 4000.0, 0.0]))
+    np.testing.assert_allclose(r, [np.hypot(4000.0, 7000.0), np.sqrt(3000.0**2 + 4000.0**2 + 7000.0**2)])
+
+
+def test_effective_cn0_monotone_in_range_and_power():
+    """Monotonicity: C/N0 rises with range and falls with jammer power; it tends to the
+    unjammed C - N0 far away."""
+    d = np.geomspace(1e3, 1e8, 200)
+    c1 = jg.effective_cn0_with_jammer_dbhz(-163.0, jg.received_jammer_power_dbw(30.0, d, LAM), N0, RC)
+    c2 = jg.effective_cn0_with_jammer_dbhz(-163.0, jg.received_jammer_power_dbw(40.0, d, LAM), N0, RC)
+    assert np.all(np.diff(c1) > 0)
+    assert np.all(c2 < c1)
+    assert c1[-1] == pytest.approx(-163.0 - N0, abs=1e-2)
+
+
+def test_pll_jitter_threshold_root():
+    """Oracle: brentq on k * sigma_phi(C/N0) = phi_max with the jitter formula evaluated directly."""
+    for bn in (0.225, 0.64, 5.83, 15.0):
+        x = 10 ** (jg.pll_jitter_threshold_dbhz(bn, 90.0, 3.0, 0.02) / 10)
+
+        def f(c, bn=bn):
+            return 3.0 * np.degrees(np.sqrt(bn / c * (1 + 1 / (2 * 0.02 * c)))) - 90.0
+
+        assert x == pytest.approx(brentq(f, 1e-3, 1e6, xtol=1e-12), rel=1e-9)
+    assert jg.carrier_loss_threshold_dbhz(5.83, 19.0) == 19.0
+    assert jg.carrier_loss_threshold_dbhz(5.83, 10.0) == pytest.approx(jg.pll_jitter_threshold_dbhz(5.83))
+
+
+def test_hysteresis_matches_state_machine():
+    """Oracle: a sample-by-sample state machine on seeded random C/N0 histories."""
+    rng = np.random.default_rng(5)
+    c = 19.5 + np.cumsum(rng.normal(0, 1.0, (400, 6)), axis=0) * 0.3
+    np.testing.assert_array_equal(jg.hysteresis_lock(c, 18.0, 21.0), _loop_hysteresis(c, 18.0, 21.0))
+
+
+def test_constant_js_limit_is_the_all_satellites_outage():
+    """Constant-J/S limit: a J/S held above every loss threshold from t1 and dropped below the
+    reacquisition thresholds at t2 gives the same lock table as the engine's event list with
+    all satellites lost at t1 and back at t2 (the head-on approach's kind of outage)."""
+    t = np.arange(0.0, 600.0, 1.0)
+    C = np.array([-163.0, -161.0, -160.0, -158.0])
+    J = np.where((t >= 120.0) & (t < 420.0), -80.0, -200.0)
+    cn0 = jg.effective_cn0_with_jammer_dbhz(C, J[:, None], N0, RC)
+    code = jg.hysteresis_lock(cn0, 18.0, 21.0)
+    ev = [(120.0, c, "code", False) for c in range(4)] + [(420.0, c, "code", True) for c in range(4)]
+    ref, _ = lock_table(t, 4, ev)
+    np.testing.assert_array_equal(code, ref)
+    avail_tc = jg.outage_intervals(t, code.sum(1) >= 1)
+    avail_lc = jg.outage_intervals(t, code.sum(1) >= 4)
+    assert avail_tc == avail_lc == [(120.0, 420.0)]
+
+
+def test_outage_intervals_edges():
+    t = np.arange(6.0)
+    assert jg.outage_intervals(t, [True, False, False, True, False, False]) == [(1.0, 3.0), (4.0, 5.0)]
+    assert jg.outage_intervals(t, np.ones(6, bool)) == []
+
+
+@pytest.mark.parametrize(
+    ("call", "name"),
+    [
+        (lambda: jg.straight_track_range_m(0.0, -1.0, 10.0), "speed_mps"),
+        (lambda: jg.straight_track_range_m(0.0, 1.0, -10.0), "closest_range_m"),
+        (lambda: jg.free_space_loss_db(0.0, LAM), "range_m"),
+        (lambda: jg.free_space_loss_db(1.0, 0.0), "wavelength_m"),
+        (lambda: jg.jammer_power_at_threshold_dbw(-163.0, 45.0, N0, RC), "threshold_dbhz"),
+        (lambda: jg.effective_cn0_with_jammer_dbhz(-163.0, -100.0, N0, RC, q=0.0), "q"),
+        (lambda: jg.hysteresis_lock(np.zeros(5), 18.0, 21.0), "cn0_dbhz"),
+        (lambda: jg.hysteresis_lock(np.zeros((5, 1)), 21.0, 18.0), "reacquisition_dbhz"),
+        (lambda: jg.LockThresholds(18.0, 19.0, 17.0, 22.0), "code_reacquisition"),
+        (lambda: jg.pll_jitter_threshold_dbhz(-1.0), "noise_bandwidth_hz"),
+        (lambda: jg.outage_intervals(np.arange(3.0), [True]), "available"),
+    ],
+)
+def test_bad_input_names_parameter(call, name):
+    with pytest.raises(ValueError, match=name):
+        call()
+
+
+def test_flyby_calibration_and_isotropic_limit():
+    """Scenario: the calibrated ERP gives the 20-min loosely coupled blackout (C/N0 crossings
+    on the 1-s grid), and with an isotropic antenna (zero spread of C/N0 between satellites)
+    the tightly and loosely coupled blackouts coincide."""
+    from navcore.papers import sp_flyby as fb
+    from navcore.papers import sp_missions_scenarios as sc
+
+    s, e = fb._blackout(sc.SYSTEMS[0], fb.calibrated_erp_dbw())
+    assert (e - s) / 60.0 == pytest.approx(20.0, abs=1.0 / 60.0)
+    rows = fb.pattern_sensitivity((fb.ASSUMED_FLYBY.antenna_zenith_dbic, -5.0))
+    assert rows[0]["shortening (min)"] == pytest.approx(0.0, abs=1e-9)
+    assert rows[1]["shortening (min)"] > 0.0
