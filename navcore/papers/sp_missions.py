@@ -217,12 +217,6 @@ _GRADE_NOTE = (
     "metric, the alignment or the motion."
 )
 
-_FLYBY_MISSING = (
-    "Jammer flyby: the jammer's power, antenna and position, the aircraft's track past it and the "
-    "loop thresholds actually used are not published, so the loss-of-lock and reacquisition "
-    "times cannot be computed."
-)
-
 ERRATA = [
     Erratum(
         id="SP-E-grade-labels",
@@ -472,67 +466,6 @@ CLAIMS = [
         "the ratio of SP-sec2.6.1-20min-ratio, close to 10 rather than above it.",
         discussed_in="sp/21-missions",
     ),
-    *[
-        Claim(
-            id=cid,
-            paper="SP",
-            locator=loc,
-            quantity=qty,
-            published=pub,
-            unit=unit,
-            compute=None,
-            tolerance=Tolerance(reason=tol_reason, abs=tol_abs),
-            status="not-reproducible",
-            note=_FLYBY_MISSING + extra,
-            discussed_in="sp/21-missions",
-        )
-        for cid, loc, qty, pub, unit, tol_abs, tol_reason, extra in (
-            (
-                "SP-fig2.6-lc-blackout",
-                "Sec. 2.6.2 (Fig. 2.6)",
-                "loss-of-lock (blackout) duration of the loosely coupled system in the jammer flyby",
-                20.0,
-                "min",
-                1.0,
-                "'about 20 min', read from the text",
-                " The duration is set by the jammer placement, which the paper chose to cause it.",
-            ),
-            (
-                "SP-sec2.6.2-blackout-reduction",
-                "Sec. 2.6.2 (Fig. 2.6)",
-                "blackout shortening by the best tightly coupled IMU relative to the loosely coupled one",
-                2.0,
-                "min",
-                0.5,
-                "'only about 2 min', read from the text",
-                " With the Sec. 2.5 C/N0 thresholds alone, loss and reacquisition of lock happen at "
-                "the same jammer ranges for both architectures; the 2 min depend on the unpublished "
-                "J/S profile.",
-            ),
-            (
-                "SP-fig2.7-tc10",
-                "Sec. 2.6.2 (Fig. 2.7)",
-                "tightly coupled 10 nmi/h horizontal position error just before reacquisition",
-                3300.0,
-                "m",
-                50.0,
-                "half a unit of the two printed significant figures",
-                " The outage's length and the state at its start depend on the flyby; the "
-                "sequential outage's 20-min blackout (SP-sec2.6.1-20min-ratio) is the closest "
-                "reproducible analogue.",
-            ),
-            (
-                "SP-fig2.7-tc1",
-                "Sec. 2.6.2 (Fig. 2.7)",
-                "tightly coupled 1 nmi/h horizontal position error just before reacquisition",
-                260.0,
-                "m",
-                5.0,
-                "half a unit of the two printed significant figures",
-                " As for SP-fig2.7-tc10.",
-            ),
-        )
-    ],
     Claim(
         id="SP-sec2.6.3-minutes",
         paper="SP",
