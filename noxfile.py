@@ -54,13 +54,15 @@ def tests(session: nox.Session) -> None:
 
 @nox.session
 def book(session: nox.Session) -> None:
-    """Build the HTML book strictly (-W -n, failing cells fail) into _build/html.
+    """Build the HTML book strictly (-W -n, failing cells fail) into _build/html; check its links.
 
     Notebooks execute through a cache keyed by navcore's sources (see tools/build_book.py),
     so on a clean checkout everything executes and the PDF build reuses the results.
     """
     _install(session)
     session.run("python", "tools/build_book.py", "--builder", "html", "--cache", *session.posargs)
+    # release gate: every internal link and anchor of the HTML resolves
+    session.run("python", "tools/check_links.py", str(ROOT / "_build" / "html"))
     session.log(f"HTML book: {ROOT / '_build' / 'html' / 'index.html'}")
 
 
@@ -129,7 +131,11 @@ def ledger(session: nox.Session) -> None:
 
 @nox.session
 def bench(session: nox.Session) -> None:
-    """Time each chapter's execution and the heavy models; write _build/bench.md."""
+    """Clean full HTML build, each chapter's execution, and the floor; write _build/bench.md.
+
+    ``nox -s bench -- --standalone --models`` also times every page alone in a fresh kernel and
+    every paper's ledger and figure in a fresh process.
+    """
     _install(session)
     session.run("python", "tools/bench.py", *session.posargs)
 

@@ -18,6 +18,7 @@ and ends a section with its published-versus-reproduced rows::
 from __future__ import annotations
 
 import html
+from pathlib import Path
 from typing import Any
 
 from navcore import figures as _figures
@@ -27,6 +28,7 @@ from navcore.ledger.render import STATUS_COLOURS, CountsTable, ErrataList, Ledge
 
 __all__ = [
     "Markdown",
+    "book_root_prefix",
     "chapter_summary",
     "claims_table",
     "counts_table",
@@ -59,22 +61,43 @@ def setup() -> None:
     np.set_printoptions(precision=5, suppress=True, linewidth=100)
 
 
+def book_root_prefix() -> str:
+    """Relative link prefix from the executing page's folder to the book's root.
+
+    The book executes every page in its own folder, so the folder holding ``_toc.yml`` above
+    the working directory is the book's root: ``""`` for a top-level page, ``"../"`` for a
+    chapter page. Outside a book checkout the chapter prefix ``"../"`` is returned.
+    """
+    here = Path.cwd().resolve()
+    for depth, folder in enumerate([here, *here.parents][:4]):
+        if (folder / "_toc.yml").exists():
+            return "../" * depth
+    return "../"
+
+
 def claims_table(
     paper: str | None = None,
     prefix: str | None = None,
     ids: list[str] | None = None,
     *,
     notes: bool = True,
-    root: str = "../",
+    root: str | None = None,
+    link_pages: bool = False,
 ) -> LedgerTable:
-    """Published-versus-reproduced table of the selected claims (HTML coloured; PDF table)."""
+    """Published-versus-reproduced table of the selected claims (HTML coloured; PDF table).
+
+    ``root`` is the link prefix to the book's root (default: found from the working
+    directory, see :func:`book_root_prefix`); ``link_pages`` links each claim to the page
+    that derives it (for the ledger page).
+    """
     if ids is not None:
         evals = [ledger.evaluate_claim(i) for i in ids]
     else:
         evals = ledger.evaluations(paper=paper, prefix=prefix)
     if not evals:
         raise ValueError(f"no claims match paper={paper!r}, prefix={prefix!r}, ids={ids!r}")
-    return LedgerTable(evals, show_notes=notes, root=root)
+    root = book_root_prefix() if root is None else root
+    return LedgerTable(evals, show_notes=notes, root=root, link_pages=link_pages)
 
 
 def counts_table(paper: str | None = None) -> CountsTable:
@@ -82,9 +105,9 @@ def counts_table(paper: str | None = None) -> CountsTable:
     return CountsTable(paper)
 
 
-def errata_list(paper: str | None = None) -> ErrataList:
-    """The registered errata (of one paper, or all)."""
-    return ErrataList(ledger.errata(paper))
+def errata_list(paper: str | None = None, *, root: str | None = None) -> ErrataList:
+    """The registered errata (of one paper, or all), linked to the pages that discuss them."""
+    return ErrataList(ledger.errata(paper), root=book_root_prefix() if root is None else root)
 
 
 class Markdown:

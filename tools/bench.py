@@ -1,39 +1,131 @@
-"""Benchmark: execution time of each book page, of the ledger per paper, and of each figure.
+"""Benchmark the book build: clean full build, each chapter, and the floor.
 
-Usage: ``python tools/bench.py [--pages GLOB ...] [--out _build/bench.md]``
+Usage: ``python tools/bench.py [--jobs N] [--standalone] [--models] [--out _build/bench.md]``
 
-Each page is executed in a fresh kernel with nbclient (as the book build does) and timed
-wall-clock; the ledger and figure timings run in this process, each in a fresh subprocess so
-that caches from one measurement don't flatter the next. The table is printed and written to
-``_build/bench.md``. Timings are measurements for the reader, not assertions.
+1. **Clean full build.** The HTML book is built exactly as ``nox -s book`` builds it
+   (``tools/build_book.py --cache``), but with empty caches: a fresh jupyter-cache folder, a
+   fresh ledger evaluation cache and no KZL Monte Carlo disk cache, so every chapter executes.
+   The wall-clock time is split into execution (before Sphinx) and Sphinx itself; each
+   chapter's execution time comes from the build's own ``page-times.json``.
+2. **Floor.** The same book with every code cell removed, built with the same configuration
+   and forced execution (a notebook without code cells still starts no computation), not
+   strict (glued figures are missing, by construction). Its time is what the build costs
+   without any of navcore's computation: Sphinx, MyST parsing and the themes.
+3. ``--standalone`` also executes every page alone in a fresh kernel, cold, as a reader who
+   downloads one notebook would; ``--models`` times each paper's ledger evaluation and each
+   figure in a fresh process.
+
+The table is printed and written to ``_build/bench.md``; the aims of issue 10 (full build
+under 5 minutes on 2 cores, within 1.5x of the floor) are reported, never asserted.
+Timings are measurements for the reader, not tests.
 """
 
 from __future__ import annotations
 
 import argparse
+import json
+import os
+import shutil
 import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "tools"))
+
+import build_book  # noqa: E402
+
+
+def clean_full_build(jobs: int | None, workdir: Path) -> dict:
+    env = dict(
+        os.environ,
+        NAVCORE_BOOK_CACHE=str(workdir / "jupyter_cache"),
+        NAVCORE_CACHE=str(workdir / "ledger_cache"),
+        NAVCORE_NO_DISK_CACHE="1",
+    )
+    out = workdir / "full"
+    cmd = [sys.executable, str(ROOT / "tools" / "build_book.py"), "--cache", "--out", str(out)]
+    if jobs:
+        cmd += ["--jobs", str(jobs)]
+    start = time.perf_counter()
+    sphinx_start = None
+    log_lines = []
+    with subprocess.Popen(
+        cmd, cwd=ROOT, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True
+    ) as proc:
+        assert proc.stdout is not None
+        for line in proc.stdout:
+            log_lines.append(line)
+            if line.startswith("+ ") and sphinx_start is None:
+                sphinx_start = time.perf_counter()
+            if line.startswith(("prefill:", "execution:")):
+                print("   ", line.rstrip(), flush=True)
+    total = time.perf_counter() - start
+    if proc.returncode != 0:
+        print("".join(log_lines[-40:]))
+        raise SystemExit(f"the clean full build failed (exit {proc.returncode})")
+    times = json.loads((out / "_build" / "page-times.json").read_text())
+    return {
+        "total": total,
+        "execution": (sphinx_start or start) - start,
+        "sphinx": total - ((sphinx_start or start) - start),
+        "chapters": times["chapters"],
+        "pages": times["pages"],
+    }
+
+
+def strip_code_cells(book: Path) -> int:
+    """Remove every code cell from the MyST notebooks under ``book``; return how many pages."""
+    import jupytext
+
+    count = 0
+    for page in book.rglob("*.md"):
+        if not build_book._is_notebook(page):
+            continue
+        nb = jupytext.read(page)
+        nb.cells = [cell for cell in nb.cells if cell.cell_type != "code"]
+        jupytext.write(nb, page, fmt="md:myst")
+        count += 1
+    return count
+
+
+def floor_build(workdir: Path) -> dict:
+    """Build a copy of the book whose notebooks have no code cells (not strict)."""
+    import yaml
+
+    book = workdir / "floor-src"
+    shutil.copytree(ROOT / "book", book, ignore=shutil.ignore_patterns("_build", "_toc_subset_*"))
+    pages = strip_code_cells(book)
+    config = yaml.safe_load((ROOT / "_config.yml").read_text())
+    for name, folder in (config.get("sphinx", {}).get("local_extensions") or {}).items():
+        config["sphinx"]["local_extensions"][name] = str(ROOT / folder)
+    config["execute"]["execute_notebooks"] = "force"
+    config["sphinx"]["config"]["nb_execution_raise_on_error"] = False
+    config_path = workdir / "_config_floor.yml"
+    config_path.write_text(yaml.safe_dump(config, sort_keys=False))
+    cmd = [
+        str(Path(sys.executable).with_name("jupyter-book")), "build", str(book),
+        "--config", str(config_path), "--toc", str(book / "_toc.yml"),
+        "--path-output", str(workdir / "floor"), "--builder", "html", "--all", "--keep-going",
+    ]  # fmt: skip
+    start = time.perf_counter()
+    proc = subprocess.run(cmd, cwd=workdir, capture_output=True, text=True)
+    total = time.perf_counter() - start
+    if proc.returncode != 0 and not (workdir / "floor" / "_build" / "html" / "index.html").exists():
+        print(proc.stdout[-3000:], proc.stderr[-3000:])
+        raise SystemExit("the floor build failed")
+    return {"total": total, "pages": pages}
 
 
 def time_page(path: Path) -> tuple[float, str]:
-    import jupytext
-    from nbclient import NotebookClient
+    """Execute one page alone in a fresh kernel (as MyST-NB does), cold."""
+    from jupyter_cache.executors.utils import single_nb_execution
 
-    nb = jupytext.read(path)
-    client = NotebookClient(
-        nb, timeout=1800, kernel_name="python3", resources={"metadata": {"path": str(path.parent)}}
-    )
-    start = time.perf_counter()
-    try:
-        client.execute()
-        status = "ok"
-    except Exception as exc:  # report, don't stop the benchmark
-        status = f"error: {type(exc).__name__}"
-    return time.perf_counter() - start, status
+    nb = build_book._read_notebook(path)
+    result = single_nb_execution(nb, cwd=str(path.parent), allow_errors=False, timeout=1800)
+    return result.time, "ok" if result.err is None else f"error: {type(result.err).__name__}"
 
 
 def time_subprocess(code: str) -> tuple[float, str]:
@@ -44,51 +136,78 @@ def time_subprocess(code: str) -> tuple[float, str]:
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--pages", nargs="*", default=None, help="page paths (default: every book page)")
+    parser.add_argument("--jobs", type=int, default=None, help="workers for the build (default: the cores)")
+    parser.add_argument("--standalone", action="store_true", help="also time each page alone, cold")
+    parser.add_argument("--models", action="store_true", help="also time each ledger paper and figure")
     parser.add_argument("--out", type=Path, default=ROOT / "_build" / "bench.md")
-    parser.add_argument("--skip-pages", action="store_true")
     args = parser.parse_args()
-
-    rows: list[tuple[str, str, float, str]] = []
-    if not args.skip_pages:
-        pages = (
-            [Path(p) for p in args.pages]
-            if args.pages
-            else sorted(
-                p
-                for p in (ROOT / "book").rglob("*.md")
-                if "_build" not in p.parts and p.read_text().startswith("---")
-            )
-        )
-        for page in pages:
+    cores = os.cpu_count() or 1
+    lines = [
+        f"# Build benchmark ({cores} cores, jobs = {args.jobs or cores})",
+        "",
+        "| measurement | seconds |",
+        "|---|---:|",
+    ]
+    with tempfile.TemporaryDirectory(prefix="navcore-bench-") as tmp:
+        workdir = Path(tmp)
+        print("clean full build (HTML, every chapter executed) ...", flush=True)
+        full = clean_full_build(args.jobs, workdir)
+        print("floor build (the same book without code cells) ...", flush=True)
+        floor = floor_build(workdir)
+    lines += [
+        f"| clean full build, total | {full['total']:.1f} |",
+        f"| of which: executing the notebooks (parallel, before Sphinx) | {full['execution']:.1f} |",
+        f"| of which: Sphinx (reading from the cache, writing HTML) | {full['sphinx']:.1f} |",
+        f"| floor: the same build without code cells ({floor['pages']} notebooks) | {floor['total']:.1f} |",
+        f"| ratio full / floor (aim: at most 1.5) | {full['total'] / floor['total']:.2f} |",
+        "",
+        "| chapter | execution in the build (s, one kernel per chapter, ledger included) |",
+        "|---|---:|",
+    ]
+    lines += [f"| {name} | {seconds:.1f} |" for name, seconds in sorted(full["chapters"].items())]
+    lines += ["", "| page | execution in the build (s) |", "|---|---:|"]
+    lines += [f"| {name} | {seconds:.1f} |" for name, seconds in sorted(full["pages"].items())]
+    aims = [
+        ("full build under 5 min", full["total"] < 300),
+        ("full build within 1.5x of the floor", full["total"] <= 1.5 * floor["total"]),
+    ]
+    lines += ["", *[f"- {'met' if ok else 'NOT met'}: {aim}" for aim, ok in aims]]
+    ok = True
+    if args.standalone:
+        lines += [
+            "",
+            "| page alone, fresh kernel, cold (as a reader runs it) | seconds | status |",
+            "|---|---:|---|",
+        ]
+        for page in build_book.toc_pages(ROOT / "book" / "_toc.yml"):
+            if not build_book._is_notebook(page):
+                continue
             seconds, status = time_page(page)
-            rows.append(("page", str(page.relative_to(ROOT)), seconds, status))
-            print(f"{seconds:8.2f} s  {page.relative_to(ROOT)}  {status}", flush=True)
-    for paper in ("WF", "SP", "ATC10", "KZL"):
-        code = (
-            f"from navcore import ledger; ev = ledger.evaluations('{paper}'); "
-            "assert all(e.passes for e in ev)"
-        )
-        seconds, status = time_subprocess(code)
-        rows.append(("ledger", paper, seconds, status))
-        print(f"{seconds:8.2f} s  ledger {paper}  {status}", flush=True)
-    from navcore import figures
+            ok &= status == "ok"
+            rel = page.relative_to(ROOT / "book").as_posix()
+            lines.append(f"| {rel} | {seconds:.1f} | {status} |")
+            print(f"{seconds:8.1f} s  {rel} (alone)  {status}", flush=True)
+    if args.models:
+        from navcore import figures
 
-    for fig_id in figures.registry():
-        code = f"from navcore import figures; figures.render('{fig_id}')"
-        seconds, status = time_subprocess(code)
-        rows.append(("figure", fig_id, seconds, status))
-        print(f"{seconds:8.2f} s  figure {fig_id}  {status}", flush=True)
-
-    lines = ["| kind | item | seconds | status |", "|---|---|---:|---|"]
-    lines += [f"| {k} | {item} | {s:.2f} | {st} |" for k, item, s, st in rows]
-    total_pages = sum(s for k, _, s, _ in rows if k == "page")
-    lines.append(f"| total | all pages | {total_pages:.2f} | |")
+        lines += ["", "| model, fresh process | seconds | status |", "|---|---:|---|"]
+        for paper in ("WF", "SP", "ATC10", "KZL"):
+            code = (
+                "import os; os.environ['NAVCORE_CACHE'] = 'off'; os.environ['NAVCORE_NO_DISK_CACHE'] = '1'\n"
+                f"from navcore import ledger; assert all(e.passes for e in ledger.evaluations('{paper}'))"
+            )
+            seconds, status = time_subprocess(code)
+            ok &= status == "ok"
+            lines.append(f"| ledger {paper} | {seconds:.1f} | {status} |")
+        for fig_id in figures.registry():
+            seconds, status = time_subprocess(f"from navcore import figures; figures.render('{fig_id}')")
+            ok &= status == "ok"
+            lines.append(f"| figure {fig_id} | {seconds:.1f} | {status} |")
     args.out.parent.mkdir(parents=True, exist_ok=True)
     args.out.write_text("\n".join(lines) + "\n")
     print("\n".join(lines))
     print(f"written to {args.out}")
-    return 0 if all(st == "ok" for *_, st in rows) else 1
+    return 0 if ok else 1
 
 
 if __name__ == "__main__":

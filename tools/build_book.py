@@ -85,12 +85,14 @@ def cached_config() -> Path:
 
     config = yaml.safe_load((ROOT / "_config.yml").read_text())
     config["execute"]["execute_notebooks"] = "cache"
-    config["execute"]["cache"] = str(ROOT / "_build" / "jupyter_cache" / source_key())
+    # NAVCORE_BOOK_CACHE chooses another parent folder (the benchmark's clean build does)
+    parent = Path(os.environ.get("NAVCORE_BOOK_CACHE") or ROOT / "_build" / "jupyter_cache")
+    config["execute"]["cache"] = str(parent / source_key())
     # local extension folders are relative to the config file, which moves to _build/
     local = config.get("sphinx", {}).get("local_extensions") or {}
     for name, folder in local.items():
         local[name] = str(ROOT / folder)
-    path = ROOT / "_build" / "_config_cached.yml"
+    path = parent / "_config_cached.yml"
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(yaml.safe_dump(config, sort_keys=False))
     return path

@@ -23,7 +23,7 @@ from docutils import nodes
 from sphinx.application import Sphinx
 from sphinx.environment import BuildEnvironment
 
-PAPER_LABEL = re.compile(r"^eq-(?:wf|sp|atc10|kzl)-(?P<number>[a-z]?\d+[a-z]?(?:\.\d+[a-z]?)*)$")
+PAPER_LABEL = re.compile(r"^eq-(?:wf|sp|atc10|kzl)-(?P<number>(?:[a-z]\.?)?\d+[a-z]?(?:\.\d+[a-z]?)*)$")
 
 
 def paper_number(label: str) -> str | None:

@@ -74,6 +74,7 @@ def rows(evals: Iterable[Evaluation]) -> list[dict[str, str]]:
                 "note": c.note,
                 "tolerance_reason": c.tolerance.reason,
                 "erratum": c.erratum,
+                "discussed_in": c.discussed_in,
             }
         )
     return out
@@ -127,6 +128,8 @@ class LedgerTable:
     root : str
         Relative path from the page showing the table to the book's root (``"../"`` for a
         chapter page, ``""`` for a top-level page).
+    link_pages : bool
+        Link each claim id to its row on the page that discusses it (for the ledger page).
     """
 
     def __init__(
@@ -136,11 +139,13 @@ class LedgerTable:
         show_notes: bool = True,
         link_errata: bool = True,
         root: str = "../",
+        link_pages: bool = False,
     ) -> None:
         self.evals = list(evals)
         self.root = root
         self.show_notes = show_notes
         self.link_errata = link_errata
+        self.link_pages = link_pages
 
     def _repr_html_(self) -> str:
         head = ["Claim", "Locator", "Quantity", "Published", "Reproduced", "Unit", "Tolerance", "Status"]
@@ -155,8 +160,12 @@ class LedgerTable:
             if r["erratum"] and self.link_errata:
                 anchor = r["erratum"].lower()
                 status += f'<br><a href="{self.root}errata.html#{anchor}">{html.escape(r["erratum"])}</a>'
+            claim_id = f'<code id="{html.escape(r["id"].lower())}">{html.escape(r["id"])}</code>'
+            if self.link_pages and r["discussed_in"]:
+                target = f"{self.root}{r['discussed_in']}.html#{r['id'].lower()}"
+                claim_id = f'<a href="{html.escape(target)}" title="where the book derives it">{claim_id}</a>'
             cells = [
-                f'<code id="{html.escape(r["id"].lower())}">{html.escape(r["id"])}</code>',
+                claim_id,
                 html.escape(r["locator"]),
                 html.escape(r["quantity"]),
                 html.escape(r["published"]),
@@ -228,14 +237,16 @@ class CountsTable:
 class ErrataList:
     """The errata as a list of entries (HTML with anchors; Markdown for the PDF)."""
 
-    def __init__(self, items: Sequence[Erratum] | None = None) -> None:
+    def __init__(self, items: Sequence[Erratum] | None = None, *, root: str = "") -> None:
         self.items = list(errata() if items is None else items)
+        self.root = root
 
     def _repr_html_(self) -> str:
         out = []
         for e in self.items:
             page = html.escape(e.discussed_in)
-            where = f' Discussed in <a href="{page}.html">{page}</a>.' if e.discussed_in else ""
+            link = html.escape(f"{self.root}{e.discussed_in}.html")
+            where = f' Discussed in <a href="{link}">{page}</a>.' if e.discussed_in else ""
             claims_html = ", ".join(f"<code>{html.escape(c)}</code>" for c in e.claims) or "none"
             out.append(
                 f'<div class="erratum" id="{html.escape(e.id.lower())}">'
