@@ -49,12 +49,16 @@ __all__ = [
     "FlybyAssumptions",
     "blackouts_min",
     "calibrated_erp_dbw",
+    "carrier_noise_bandwidth_hz",
     "channels",
     "effective_cn0",
     "errors_before_reacquisition",
     "flyby_runs",
     "flyby_trajectory",
+    "jammer_position_ned",
+    "jammer_range_m",
     "lock_thresholds",
+    "pattern_sensitivity",
     "reacquisition_search",
 ]
 
@@ -159,7 +163,9 @@ def _carrier_dbw(horizon_dbic: float | None = None) -> np.ndarray:
     return a.signal_dbw + np.asarray(elevation_gain_dbi(geo.elevation, a.antenna_zenith_dbic, hz))
 
 
+@cache
 def jammer_range_m() -> np.ndarray:
+    """Slant range (m) from the aircraft to the jammer at every sample."""
     return np.asarray(slant_range_m(flyby_trajectory().pos_ned, jammer_position_ned()))
 
 
