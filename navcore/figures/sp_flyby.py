@@ -13,7 +13,7 @@ from navcore.papers import sp_missions_scenarios as sc
 from navcore.units import MINUTE
 
 _ASSUMED = (
-    "Assumed (the paper does not publish them): a ground jammer 10 km abeam a straight northbound "
+    "Assumed (the paper does not publish them): a ground jammer 10 km abeam a straight eastbound "
     "leg flown at 7 km and 200 m/s after two calibration turns, closest approach at 40 min; "
     "free-space propagation; receiver antenna +3 dBic at zenith falling linearly to -5 dBic at "
     "the horizon, -10 dBic towards the jammer; P(Y) code at -163 dBW, N0 = -204 dBW/Hz, "
