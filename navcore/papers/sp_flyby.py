@@ -242,7 +242,7 @@ def calibrated_erp_dbw(horizon_dbic: float | None = None) -> float:
     lo, hi = 0.0, 80.0
     if not length(lo) < LC_BLACKOUT_MIN < length(hi):
         raise ValueError("the 20-min blackout is not bracketed by 0-80 dBW")
-    for _ in range(40):
+    while hi - lo > 1e-4:  # dB
         mid = 0.5 * (lo + hi)
         lo, hi = (mid, hi) if length(mid) < LC_BLACKOUT_MIN else (lo, mid)
     return hi
