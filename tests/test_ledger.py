@@ -180,7 +180,19 @@ def test_table_renders_html_and_markdown():
     t = LedgerTable([evaluate(make())])
     assert "<table" in t._repr_html_() and "WF-test" in t._repr_html_()
     md = t._repr_markdown_()
-    assert md.startswith("| Locator") and "reproduced" in md
+    # the PDF book gets a raw-LaTeX longtable whose columns add up to the text width
+    assert md.startswith("```{raw} latex\n") and md.endswith("\n```")
+    assert r"\begin{longtable}" in md and "reproduced" in md
+    assert r"WF-\allowbreak{}test" in md
+
+
+def test_latex_escaping_of_ledger_text():
+    """Oracle: LaTeX's ten special characters written out by hand."""
+    from navcore.ledger.render import _tex_escape
+
+    assert _tex_escape("50 % & $x_1$ #2 {a} ~ ^ \\") == (
+        r"50 \% \& \$x\_1\$ \#2 \{a\} \textasciitilde{} \textasciicircum{} \textbackslash{}"
+    )
 
 
 def test_cli_ledger_json_and_exit_status(monkeypatch, capsys):

@@ -114,6 +114,46 @@ def _md_escape(s: str) -> str:
     return s.replace("|", "\\|").replace("\n", " ")
 
 
+_TEX_SPECIAL = {
+    "\\": r"\textbackslash{}",
+    "&": r"\&",
+    "%": r"\%",
+    "$": r"\$",
+    "#": r"\#",
+    "_": r"\_",
+    "{": r"\{",
+    "}": r"\}",
+    "~": r"\textasciitilde{}",
+    "^": r"\textasciicircum{}",
+}
+
+
+def _tex_escape(text: str) -> str:
+    """Escape LaTeX's special characters (the PDF engine is XeLaTeX: Unicode passes)."""
+    return "".join(_TEX_SPECIAL.get(ch, ch) for ch in text.replace("\n", " "))
+
+
+def _tex_breakable(text: str) -> str:
+    """Escaped text that may break after ``-``, ``.`` and ``_`` (claim and erratum ids)."""
+    out = _tex_escape(text)
+    for ch in ("-", "."):
+        out = out.replace(ch, ch + r"\allowbreak{}")
+    return out.replace(r"\_", r"\_\allowbreak{}")
+
+
+def _plain_with_unit(value: str, unit: str) -> str:
+    if value in ("", "—") or unit in ("", "statement"):
+        return value
+    return f"{value} {unit}"
+
+
+def _with_unit(value: str, unit: str) -> str:
+    """A table cell: the value with its unit (statements and dimensionless values bare)."""
+    if value in ("", "—") or unit in ("", "statement"):
+        return html.escape(value)
+    return f"{html.escape(value)}&nbsp;{html.escape(unit)}"
+
+
 class LedgerTable:
     """Published-versus-reproduced table for the book (HTML coloured, Markdown for PDF).
 
@@ -148,7 +188,7 @@ class LedgerTable:
         self.link_pages = link_pages
 
     def _repr_html_(self) -> str:
-        head = ["Claim", "Locator", "Quantity", "Published", "Reproduced", "Unit", "Tolerance", "Status"]
+        head = ["Claim", "Locator", "Quantity", "Published", "Reproduced", "Status"]
         out = ['<div class="ledger-table-wrap"><table class="ledger-table">', "<thead><tr>"]
         out += [f"<th>{h}</th>" for h in head]
         out.append("</tr></thead><tbody>")
@@ -168,32 +208,79 @@ class LedgerTable:
                 claim_id,
                 html.escape(r["locator"]),
                 html.escape(r["quantity"]),
-                html.escape(r["published"]),
-                html.escape(r["reproduced"]),
-                html.escape(r["unit"]),
-                f'<span title="{html.escape(r["tolerance_reason"])}">{html.escape(r["tolerance"])}</span>',
+                _with_unit(r["published"], r["unit"]),
+                _with_unit(r["reproduced"], r["unit"]),
                 status,
             ]
             out.append(
                 f'<tr style="background:{colour}">' + "".join(f"<td>{c}</td>" for c in cells) + "</tr>"
             )
             if self.show_notes:
-                note = html.escape(r["note"]) + "<br><i>Tolerance:</i> " + html.escape(r["tolerance_reason"])
+                note = (
+                    html.escape(r["note"])
+                    + f"<br><i>Tolerance:</i> {html.escape(r['tolerance'])}, "
+                    + html.escape(r["tolerance_reason"])
+                )
                 out.append(
                     f'<tr class="ledger-note" style="background:{colour}"><td></td>'
-                    f'<td colspan="7"><small>{note}</small></td></tr>'
+                    f'<td colspan="5"><small>{note}</small></td></tr>'
                 )
         out.append("</tbody></table></div>")
         return "".join(out)
 
     def _repr_markdown_(self) -> str:
-        head = ["Locator", "Quantity", "Published", "Reproduced", "Unit", "Status"]
-        lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+        """A raw-LaTeX block for the PDF book (MyST renders Markdown outputs there).
+
+        A ``longtable`` whose paragraph columns add up to the text width, rows coloured by
+        status as in HTML, each claim's note in a full-width row below it, and claim ids
+        that may break after ``-`` and ``.``; the HTML builder uses :meth:`_repr_html_`.
+        """
+        return "```{raw} latex\n" + self.latex() + "\n```"
+
+    def latex(self) -> str:
+        """The table as a LaTeX ``longtable`` that fits the text width."""
+        widths = (0.15, 0.13, 0.31, 0.12, 0.13, 0.16)
+        cols = "".join(
+            rf">{{\raggedright\arraybackslash}}p{{\dimexpr {w}\linewidth-2\tabcolsep\relax}}" for w in widths
+        )
+        head = " & ".join(
+            rf"\textbf{{{h}}}" for h in ("Claim", "Locator", "Quantity", "Published", "Reproduced", "Status")
+        )
+        out = [
+            r"\begingroup\footnotesize\setlength{\tabcolsep}{3pt}\sloppy",
+            rf"\begin{{longtable}}{{{cols}}}",
+            rf"\hline {head} \\ \hline \endfirsthead",
+            rf"\hline {head} \\ \hline \endhead",
+            r"\hline \endfoot",
+        ]
         for r in rows(self.evals):
-            status = r["status"] + ("" if r["check"] == "ok" else " (check fails)")
-            cells = [r["locator"], r["quantity"], r["published"], r["reproduced"], r["unit"], status]
-            lines.append("| " + " | ".join(_md_escape(c) for c in cells) + " |")
-        return "\n".join(lines)
+            colour = STATUS_COLOURS[r["status"]].lstrip("#").upper()
+            status = _tex_escape(r["status"]) + ("" if r["check"] == "ok" else r" \textbf{(check fails)}")
+            if r["erratum"]:
+                status += r"\newline{}\scriptsize " + _tex_breakable(r["erratum"])
+            cells = [
+                r"\texttt{" + _tex_breakable(r["id"]) + "}",
+                _tex_escape(r["locator"]),
+                _tex_escape(r["quantity"]),
+                _tex_escape(_plain_with_unit(r["published"], r["unit"])),
+                _tex_escape(_plain_with_unit(r["reproduced"], r["unit"])),
+                status,
+            ]
+            out.append(rf"\rowcolor[HTML]{{{colour}}}" + " & ".join(cells) + r" \\*")
+            if self.show_notes:
+                note = (
+                    _tex_escape(r["note"])
+                    + r" \textit{Tolerance:} "
+                    + _tex_escape(f"{r['tolerance']}, {r['tolerance_reason']}")
+                )
+                out.append(
+                    rf"\rowcolor[HTML]{{{colour}}}\multicolumn{{6}}{{p{{\dimexpr\linewidth-2\tabcolsep\relax}}}}"
+                    rf"{{\scriptsize {note}}} \\ \hline"
+                )
+            else:
+                out.append(r"\hline")
+        out += [r"\end{longtable}", r"\endgroup"]
+        return "\n".join(out)
 
     def __repr__(self) -> str:
         return text_table(self.evals)
