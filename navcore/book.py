@@ -35,13 +35,16 @@ __all__ = [
     "errata_list",
     "setup",
     "show_figure",
+    "table",
 ]
 
 
 def setup() -> None:
     """Inline PNG figures, the book's figure style, and compact numpy printing.
 
-    In a notebook kernel this selects matplotlib's inline backend (a kernel started with
+    In a notebook kernel this also gives pandas DataFrames and Stylers a Markdown
+    representation next to their HTML, so that the PDF shows them as tables rather than as
+    plain text. It selects matplotlib's inline backend (a kernel started with
     ``MPLBACKEND=Agg`` would otherwise show figures as ``<Figure size ...>`` text) with PNG
     output, which both the HTML and the LaTeX builders can use.
     """
@@ -57,6 +60,10 @@ def setup() -> None:
         from matplotlib_inline.backend_inline import set_matplotlib_formats
 
         set_matplotlib_formats("png")
+        # pandas tables: a Markdown twin of their HTML, which the PDF builder renders as a table
+        markdown = shell.display_formatter.formatters["text/markdown"]
+        markdown.for_type_by_name("pandas.core.frame", "DataFrame", _markdown_table)
+        markdown.for_type_by_name("pandas.io.formats.style", "Styler", _markdown_table)
     _figures.apply_style()
     np.set_printoptions(precision=5, suppress=True, linewidth=100)
 
@@ -108,6 +115,41 @@ def counts_table(paper: str | None = None) -> CountsTable:
 def errata_list(paper: str | None = None, *, root: str | None = None) -> ErrataList:
     """The registered errata (of one paper, or all), linked to the pages that discuss them."""
     return ErrataList(ledger.errata(paper), root=book_root_prefix() if root is None else root)
+
+
+class Table:
+    """A pandas table for both builders: the Styler's HTML, and a Markdown table for the PDF.
+
+    A ``pandas.Styler`` (or a DataFrame) has no representation that the LaTeX builder can
+    use (its plain-text fallback prints ``<pandas.io.formats.style.Styler at 0x...>``), so
+    the chapters wrap their tables with :func:`table`.
+    """
+
+    def __init__(self, data: Any) -> None:
+        self.styler = data if hasattr(data, "to_html") and hasattr(data, "data") else data.style
+
+    def _repr_html_(self) -> str:
+        return self.styler.to_html()
+
+    def _repr_markdown_(self) -> str:
+        sep = "\x1f"
+        lines = [ln.split(sep) for ln in self.styler.to_string(delimiter=sep).splitlines() if ln.strip()]
+        width = max(len(ln) for ln in lines)
+        lines = [ln + [""] * (width - len(ln)) for ln in lines]
+
+        def row(cells: list[str]) -> str:
+            return "| " + " | ".join(c.strip().replace("|", "\\|") or " " for c in cells) + " |"
+
+        return "\n".join([row(lines[0]), "|" + "---|" * width, *(row(ln) for ln in lines[1:])])
+
+
+def _markdown_table(data: Any) -> str:
+    return Table(data)._repr_markdown_()
+
+
+def table(data: Any) -> Table:
+    """Show a DataFrame or a formatted ``df.style`` in the HTML and the PDF book alike."""
+    return Table(data)
 
 
 class Markdown:

@@ -84,3 +84,16 @@ def test_errata_and_ledger_links_use_the_root_prefix():
     first = ledger.claims("WF")[0]
     table = book.claims_table(ids=[first.id], root="", link_pages=True)
     assert f'href="{first.discussed_in}.html#{first.id.lower()}"' in table._repr_html_()
+
+
+def test_pandas_table_has_a_markdown_twin_for_the_pdf():
+    """Oracle: the pipe table written out by hand (formatting and hidden index honoured)."""
+    import numpy as np
+    import pandas as pd
+
+    from navcore import book
+
+    df = pd.DataFrame({"a": [1.23456, np.nan], "b|c": ["u", "v"]})
+    styled = df.style.format(precision=2, na_rep="").hide(axis="index")
+    assert book.table(styled)._repr_markdown_() == "| a | b\\|c |\n|---|---|\n| 1.23 | u |\n|   | v |"
+    assert "<table" in book.table(df)._repr_html_()
