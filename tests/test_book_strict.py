@@ -72,6 +72,9 @@ def _build(tmp_path: Path, body: str) -> subprocess.CompletedProcess:
     config["bibtex_bibfiles"] = ["refs.bib"]
     config["sphinx"]["config"].pop("html_static_path", None)
     config["sphinx"]["config"].pop("html_css_files", None)
+    # the book's local Sphinx extensions, found from the copied config's folder
+    for name, folder in (config["sphinx"].get("local_extensions") or {}).items():
+        config["sphinx"]["local_extensions"][name] = str(ROOT / folder)
     (tmp_path / "_config.yml").write_text(yaml.safe_dump(config))
     cmd = [
         JB,
