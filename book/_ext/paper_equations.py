@@ -16,23 +16,15 @@ after Sphinx has assigned its sequential ones. LaTeX: the equation gets ``\\tag{
 
 from __future__ import annotations
 
-import re
 from typing import Any
 
 from docutils import nodes
 from sphinx.application import Sphinx
 from sphinx.environment import BuildEnvironment
 
-PAPER_LABEL = re.compile(r"^eq-(?:wf|sp|atc10|kzl)-(?P<number>(?:[a-z]\.?)?\d+[a-z]?(?:\.\d+[a-z]?)*)$")
+from navcore.traceability import paper_equation_number as paper_number
 
-
-def paper_number(label: str) -> str | None:
-    """The paper's equation number encoded in a label, or None for a derived equation."""
-    match = PAPER_LABEL.match(label)
-    if match is None:
-        return None
-    number = match["number"]
-    return number[0].upper() + number[1:] if number[0].isalpha() else number
+# one rule for the book, the index and the tests: navcore.traceability.paper_equation_number
 
 
 def _collect(app: Sphinx, doctree: nodes.document) -> None:

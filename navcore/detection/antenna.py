@@ -13,6 +13,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from navcore import units
 from navcore._validate import as_finite_array, require_positive
+from navcore.trace import implements
 
 __all__ = [
     "beamwidth_from_gain_deg",
@@ -36,6 +37,7 @@ def _efficiency(efficiency: float) -> float:
     return efficiency
 
 
+@implements("ATC10 Table 1.1")
 def dish_gain(diameter_m: ArrayLike, frequency_hz: float, efficiency: float) -> FloatArray:
     """Linear gain ``eta (pi D / lambda)**2`` of a parabolic dish.
 
@@ -50,6 +52,7 @@ def dish_gain(diameter_m: ArrayLike, frequency_hz: float, efficiency: float) -> 
     return _efficiency(efficiency) * (np.pi * d / _wavelength(frequency_hz)) ** 2
 
 
+@implements("ATC10 Table 1.1")
 def dish_diameter(gain: ArrayLike, frequency_hz: float, efficiency: float) -> FloatArray:
     """Diameter ``(lambda / pi) sqrt(G / eta)`` in metres giving linear gain ``G``."""
     g = as_finite_array("gain", gain)
@@ -58,6 +61,7 @@ def dish_diameter(gain: ArrayLike, frequency_hz: float, efficiency: float) -> Fl
     return _wavelength(frequency_hz) / np.pi * np.sqrt(g / _efficiency(efficiency))
 
 
+@implements("ATC10 Table 1.1")
 def dish_beamwidth_deg(diameter_m: ArrayLike, frequency_hz: float, factor_deg: float = 70.0) -> FloatArray:
     """Half-power beamwidth ``factor_deg * lambda / D`` in degrees (70 by default)."""
     d = as_finite_array("diameter_m", diameter_m)
@@ -75,6 +79,7 @@ def beamwidth_from_gain_deg(gain: ArrayLike) -> FloatArray:
     return np.sqrt(27000.0 / g)
 
 
+@implements("ATC10 Table 1.1")
 def rf_power_dbw(erp_dbw: ArrayLike, gain_db: ArrayLike) -> FloatArray:
     """Transmitter rf power ``ERP - G`` in dBW for an ERP in dBW and an antenna gain in dB.
 

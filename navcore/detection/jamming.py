@@ -39,6 +39,7 @@ from scipy import optimize, special, stats
 from navcore import units
 from navcore._validate import as_finite_array, require_positive
 from navcore.detection.neyman_pearson import detection_index_from_jammer_ratio, log_false_alarm_probability
+from navcore.trace import implements
 
 __all__ = [
     "SurveillanceGeometry",
@@ -197,6 +198,7 @@ def binary_divergence(t: ArrayLike, q: ArrayLike) -> FloatArray:
     return special.xlogy(tt, tt / qq) + special.xlogy(1.0 - tt, (1.0 - tt) / (1.0 - qq))
 
 
+@implements("ATC10 A.15", "ATC10 A.16", "ATC10 A.17", "ATC10 A.18")
 def list_rule_exponent(t: ArrayLike, q: ArrayLike) -> FloatArray:
     """``max_{nu >= 0} [nu (1 - t) - ln((1 - q) e^nu + q)]`` in closed form (ATC-10 (A.15)-(A.18)).
 
@@ -223,6 +225,7 @@ def list_rule_optimal_nu(t: ArrayLike, q: ArrayLike) -> FloatArray:
     return np.where(tt < qq, nu, 0.0)
 
 
+@implements("ATC10 2.4.1", "ATC10 2.4.2")
 def log_detection_lower_bound(p_d: ArrayLike, k: int, t: ArrayLike = 0.0) -> FloatArray:
     """``ln P_DL`` with ``P_DL = 1 - exp(-K E(t, p_d**4))`` (ATC-10 Eqs. 2.4.1-2.4.2, (A.17)).
 
@@ -234,6 +237,7 @@ def log_detection_lower_bound(p_d: ArrayLike, k: int, t: ArrayLike = 0.0) -> Flo
     return log1mexp(k * list_rule_exponent(t, q))
 
 
+@implements("ATC10 2.4.2")
 def detection_lower_bound(p_d: ArrayLike, k: int, t: ArrayLike = 0.0) -> FloatArray:
     """``P_DL = 1 - exp(-K E(t, p_d**4))`` (ATC-10 Eq. 2.4.2); ``p_d**4`` for ``K = 1``.
 
@@ -247,6 +251,7 @@ def detection_lower_bound(p_d: ArrayLike, k: int, t: ArrayLike = 0.0) -> FloatAr
     return -np.expm1(-k * list_rule_exponent(t, q))
 
 
+@implements("ATC10 A.11")
 def list_rule_detection_probability(q: ArrayLike, k: int, t: float = 0.0) -> FloatArray:
     """Exact ``P(more than K t of K lists non-empty)`` for i.i.d. lists, each non-empty with
     probability ``q`` (the rule of ATC-10 (A.11)); a binomial survival function."""
@@ -262,6 +267,7 @@ def empty_list_rule_detection_probability(q: ArrayLike, k: int, t: float = 0.0) 
     return stats.binom.cdf(math.floor(k * t), k, 1.0 - as_finite_array("q", q))
 
 
+@implements("ATC10 2.4.2")
 def list_probability_for_detection_bound(p_dl: float, k: int, t: float = 0.0) -> float:
     """Per-list probability ``q = p_d**4`` at which ``P_DL`` of Eq. (2.4.2) equals ``p_dl``.
 
@@ -313,6 +319,7 @@ def _log_pf(jammer_ratio: ArrayLike, p_d: float) -> FloatArray:
     return log_false_alarm_probability(p_d, detection_index_from_jammer_ratio(jammer_ratio))
 
 
+@implements("ATC10 2.5.5")
 def log_false_location_bound(
     jammer_ratio: ArrayLike, p_d: float, k: int, t: float = 0.0, geometry: SurveillanceGeometry | None = None
 ) -> FloatArray:
@@ -338,6 +345,7 @@ def log_false_location_bound(
     return math.log1p(-g.airborne_fraction) + (k * t + 1.0) * log_f
 
 
+@implements("ATC10 2.5.12")
 def log_ambiguous_detection_bound(
     jammer_ratio: ArrayLike, p_d: float, k: int, t: float = 0.0, geometry: SurveillanceGeometry | None = None
 ) -> FloatArray:
@@ -379,6 +387,7 @@ def log_ambiguous_detection_ceiling(
     )
 
 
+@implements("ATC10 2.5.5", "ATC10 2.5.12")
 def jammer_ratio_threshold_db(
     quantity: str,
     level: float,

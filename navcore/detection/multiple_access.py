@@ -30,6 +30,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy import special, stats
 
 from navcore._validate import require_integer, require_positive, require_probability
+from navcore.trace import implements
 
 __all__ = [
     "GaussianDensity",
@@ -148,6 +149,7 @@ class PointMassDensity:
         return self._x[np.minimum(idx, self._x.size - 1)]
 
 
+@implements("ATC10 3.7.1")
 def two_point_density(b: float) -> PointMassDensity:
     """The quasi-optimal density: masses 1/2 at +-sqrt(b) (ATC-10 Eq. 3.7.1 with b = p/((N-1)q))."""
     require_positive("b", b)
@@ -562,6 +564,7 @@ def gaussian_mixture_exact_tail(b: float, n_interferers: int, q: float, t: Array
     return out
 
 
+@implements("ATC10 3.3.7")
 def psk_amplitude_samples(
     code_i: ArrayLike, n_events: int, rng: np.random.Generator, chunk: int = 20000
 ) -> FloatArray:

@@ -27,6 +27,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy import special
 
 from navcore._validate import as_finite_array
+from navcore.trace import implements
 
 __all__ = [
     "detection_index_from_jammer_ratio",
@@ -48,6 +49,7 @@ def _open_probability(p: ArrayLike, name: str) -> FloatArray:
     return arr
 
 
+@implements("ATC10 D.7", "ATC10 D.8")
 def detection_index_from_jammer_ratio(jammer_ratio: ArrayLike) -> FloatArray:
     """Detection index ``d = (J / (P0 B tau))**(-1/2)`` of the matched-filter sample.
 
@@ -82,6 +84,7 @@ def threshold_from_detection_probability(p_d: ArrayLike, d: ArrayLike) -> FloatA
     return dd - special.ndtri(pd)
 
 
+@implements("ATC10 2.7.2")
 def erf_parameter_from_detection_probability(p_d: ArrayLike) -> FloatArray:
     """The paper's ``phi`` with ``p_d = 1/2 + 1/2 erf(phi)`` (ATC-10 Eq. 2.7.2, D.13-D.15).
 
@@ -94,6 +97,7 @@ def erf_parameter_from_detection_probability(p_d: ArrayLike) -> FloatArray:
     return special.ndtri(pd) / np.sqrt(2.0)
 
 
+@implements("ATC10 2.7.1")
 def log_false_alarm_probability(p_d: ArrayLike, d: ArrayLike) -> FloatArray:
     """Natural log of ``p_f = Q(d - Phi^{-1}(p_d))`` (ATC-10 Eqs. 2.7.1, D.16-D.17).
 
@@ -121,6 +125,7 @@ def log_false_alarm_probability(p_d: ArrayLike, d: ArrayLike) -> FloatArray:
     return special.log_ndtr(special.ndtri(pd) - dd)
 
 
+@implements("ATC10 D.17")
 def false_alarm_probability(p_d: ArrayLike, d: ArrayLike) -> FloatArray:
     """``p_f = Q(d - Phi^{-1}(p_d))`` (ATC-10 Eq. D.17); see :func:`log_false_alarm_probability`."""
     return np.exp(log_false_alarm_probability(p_d, d))

@@ -28,6 +28,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy import special
 
 from navcore._validate import require_positive
+from navcore.trace import implements
 
 __all__ = [
     "CumulantGenerating",
@@ -135,6 +136,7 @@ def gallager_log_tails_lower(cgf: CumulantGenerating, t: ArrayLike) -> tuple[Flo
     return np.where(found, logp, -np.inf), np.where(found, r1, np.inf)
 
 
+@implements("ATC10 3.5.5", "ATC10 3.5.6", "ATC10 3.5.7")
 def chernoff_log_tail(cgf: CumulantGenerating, t: float) -> TailBound:
     """Chernoff bound ln P(S >= t) <= mu(r*) - r* t, r* >= 0 optimal (ATC-10 Eqs. 3.5.5-3.5.7).
 
@@ -145,6 +147,7 @@ def chernoff_log_tail(cgf: CumulantGenerating, t: float) -> TailBound:
     return TailBound(float(logp[0]), float(r[0]))
 
 
+@implements("ATC10 3.5.14")
 def gallager_log_tail_lower(cgf: CumulantGenerating, t: float) -> TailBound:
     """Tilted-Chebyshev lower bound on ln P(S >= t) (Eq. 3.5.14 as corrected, erratum E3-1).
 
@@ -157,24 +160,28 @@ def gallager_log_tail_lower(cgf: CumulantGenerating, t: float) -> TailBound:
     return TailBound(float(logp[0]), float(r[0]))
 
 
+@implements("ATC10 3.5.13")
 def roc_upper_bound(cgf: CumulantGenerating, theta: ArrayLike) -> tuple[FloatArray, FloatArray]:
     """Worst-case ROC (Eq. 3.5.13): (ln of the upper bound to p_f, ln of the upper bound to 1 - p_d)."""
     th = np.atleast_1d(np.asarray(theta, dtype=float))
     return chernoff_log_tails(cgf, th)[0], chernoff_log_tails(NegatedCGF(cgf), 1.0 - th)[0]
 
 
+@implements("ATC10 3.5.14")
 def roc_lower_bound(cgf: CumulantGenerating, theta: ArrayLike) -> tuple[FloatArray, FloatArray]:
     """Best-case ROC (Eq. 3.5.14 corrected): (ln lower bound to p_f, ln lower bound to 1 - p_d)."""
     th = np.atleast_1d(np.asarray(theta, dtype=float))
     return gallager_log_tails_lower(cgf, th)[0], gallager_log_tails_lower(NegatedCGF(cgf), 1.0 - th)[0]
 
 
+@implements("ATC10 3.7.1")
 def quasi_optimal_amplitude(power: float, n_aircraft: int, tau_over_alpha: float) -> float:
     """a = sqrt(p alpha / ((N-1) 2 tau)): the atoms +-a of the optimal density (Eq. 3.7.1)."""
     require_positive("power", power)
     return float(np.sqrt(power / ((n_aircraft - 1) * 2.0 * tau_over_alpha)))
 
 
+@implements("ATC10 3.7.23")
 def quasi_optimal_chernoff_parameter(
     theta: ArrayLike, power: float, n_aircraft: int, tau_over_alpha: float
 ) -> FloatArray:
@@ -192,6 +199,7 @@ def quasi_optimal_chernoff_parameter(
     return x / a
 
 
+@implements("ATC10 3.7.21", "ATC10 3.7.25")
 def quasi_optimal_exponent(
     theta: ArrayLike, power: float, n_aircraft: int, tau_over_alpha: float
 ) -> FloatArray:
@@ -224,6 +232,7 @@ def quasi_optimal_exponent_approx(
     )
 
 
+@implements("ATC10 3.8.3")
 def gaussian_roc(theta: ArrayLike, power: float) -> tuple[FloatArray, FloatArray]:
     """ROC_g (Eq. 3.8.3) in logs: (ln p_f, ln(1 - p_d)).
 
@@ -235,12 +244,14 @@ def gaussian_roc(theta: ArrayLike, power: float) -> tuple[FloatArray, FloatArray
     return special.log_ndtr(-th / s), special.log_ndtr(-(1.0 - th) / s)
 
 
+@implements("ATC10 3.8.8", "ATC10 3.8.5", "ATC10 3.8.6", "ATC10 3.8.7")
 def gaussian_chernoff_exponent(threshold: ArrayLike, power: float) -> FloatArray:
     """Expfg = theta^2/(2p) (Eq. 3.8.8); the optimal tilt is mu = theta/p (Eqs. 3.8.5-3.8.7)."""
     require_positive("power", power)
     return np.asarray(threshold, dtype=float) ** 2 / (2.0 * power)
 
 
+@implements("ATC10 3.8.16")
 def exponent_from_gaussian_exponent(
     n_aircraft: ArrayLike, tau_over_alpha: ArrayLike, exp_g: ArrayLike
 ) -> FloatArray:

@@ -16,6 +16,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from navcore._validate import require_integer, require_positive
+from navcore.trace import implements
 
 __all__ = [
     "alternating_sidelobe_autocorrelation",
@@ -132,6 +133,7 @@ def paper_psk_zakai_bandwidth(chip_s: float, tau_s: float) -> float:
     return 1.0 / (4.0 / 3.0 * chip_s * (1.0 + 2.0 * r + 2.0 * r**2))
 
 
+@implements("ATC10 3.9.2")
 def equal_autocorrelation_noise_power(n_aircraft: int, alpha_s: float, zakai_w_hz: float) -> float:
     """E(n^2) = (N - 1)/(4 alpha W) when all signatures share one autocorrelation (Eq. 3.9.2)."""
     require_positive("alpha_s", alpha_s)
@@ -145,6 +147,7 @@ def zakai_noise_power_bound(w_i_hz: float, w_j_hz: ArrayLike, alpha_s: float) ->
     return float(np.sum(1.0 / (4.0 * alpha_s * np.sqrt(w_i_hz * wj))))
 
 
+@implements("ATC10 F.6")
 def cross_term_noise_power(
     code_i: ArrayLike, codes_j: list[ArrayLike], chip_s: float, alpha_s: float
 ) -> float:

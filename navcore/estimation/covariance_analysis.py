@@ -63,6 +63,7 @@ from navcore.inertial.error_dynamics import (
     transport_rate_ned,
 )
 from navcore.inertial.trajectories import Trajectory
+from navcore.trace import implements
 
 __all__ = [
     "CovarianceAnalysis",
@@ -152,6 +153,7 @@ def horizontal_sigma(P: ArrayLike, layout: StateLayout, block: str = "position")
     return float(np.sqrt(max(P[i, i] + P[i + 1, i + 1], 0.0)))
 
 
+@implements("SP Sec. 2.6")
 def run_covariance_analysis(
     trajectory: Trajectory,
     truth_layout: StateLayout,
@@ -556,6 +558,7 @@ def lock_table(
     return code, carrier
 
 
+@implements("SP Sec. 2.2")
 def tightly_coupled_schedule(
     layout: StateLayout,
     geometry: SatelliteGeometry,
@@ -620,6 +623,7 @@ def tightly_coupled_schedule(
     return sched
 
 
+@implements("SP Sec. 2.1")
 def loosely_coupled_schedule(
     layout: StateLayout,
     geometry: SatelliteGeometry,
@@ -688,6 +692,7 @@ def baro_schedule(layout: StateLayout, *, noise_m: float, every: int = 1) -> Sch
     return sched
 
 
+@implements("SP Table 2.8")
 def doppler_schedule(
     layout: StateLayout,
     trajectory: Trajectory,

@@ -40,6 +40,7 @@ from navcore._validate import as_finite_array, require_positive, require_symmetr
 from navcore.estimation.kalman import KalmanUpdate, kf_predict, kf_update, symmetrize
 from navcore.estimation.riccati import ScalarSteadyState, scalar_riccati_steady_state
 from navcore.frames import skew
+from navcore.trace import implements
 
 __all__ = [
     "accelerometer_predict",
@@ -62,6 +63,7 @@ Array = NDArray[np.float64]
 
 
 # --------------------------------------------------------------------------- Eqs. (10)-(11)
+@implements("WF 10")
 def lever_arm_velocity(
     velocity: ArrayLike, angular_rate: ArrayLike, lever_arm: ArrayLike
 ) -> tuple[Array, Array]:
@@ -83,6 +85,7 @@ def lever_arm_velocity(
     return v + np.cross(w, r), np.hstack([np.eye(3), -skew(r)])
 
 
+@implements("WF 11")
 def navigation_mapped_covariance(tau: ArrayLike, P_N: ArrayLike, Q_T: ArrayLike) -> Array:
     r"""Local-state covariance from navigation data (WF Eq. (11)).
 
@@ -99,6 +102,7 @@ def navigation_mapped_covariance(tau: ArrayLike, P_N: ArrayLike, Q_T: ArrayLike)
 
 
 # --------------------------------------------------------------------------- Eqs. (12)-(14)
+@implements("WF 13", "WF 14")
 def accelerometer_predict(
     x: ArrayLike, P: ArrayLike, accel: ArrayLike, Q_a: ArrayLike, Ts: float
 ) -> tuple[Array, Array]:
@@ -114,6 +118,7 @@ def accelerometer_predict(
     return x_pred + a * Ts, P_pred
 
 
+@implements("WF 13", "WF 14")
 def local_velocity_update(x: ArrayLike, P: ArrayLike, y_L: ArrayLike, R_L: ArrayLike) -> KalmanUpdate:
     """Measurement update with a direct local velocity measurement (WF Eq. (13), corrected).
 
@@ -124,6 +129,7 @@ def local_velocity_update(x: ArrayLike, P: ArrayLike, y_L: ArrayLike, R_L: Array
     return kf_update(x, P, y_L, np.eye(x.size), R_L)
 
 
+@implements("WF 14")
 def accelerometer_steady_state_isotropic(sigma_a: float, Ts: float, sigma_L: float) -> ScalarSteadyState:
     """Per-axis steady state of WF Eq. (14) for ``Q_a = sigma_a^2 I``, ``R_L = sigma_L^2 I``.
 
@@ -154,6 +160,7 @@ def accelerometer_steady_state_isotropic(sigma_a: float, Ts: float, sigma_L: flo
     return scalar_riccati_steady_state(1.0, (sigma_a * Ts) ** 2, 1.0, sigma_L**2)
 
 
+@implements("WF 14")
 def accelerometer_steady_state(Q_a: ArrayLike, R_L: ArrayLike, Ts: float) -> tuple[Array, Array]:
     """Matrix steady state of WF Eq. (14): prior and posterior covariances.
 
@@ -170,6 +177,7 @@ def accelerometer_steady_state(Q_a: ArrayLike, R_L: ArrayLike, Ts: float) -> tup
 
 
 # --------------------------------------------------------------------------- Eqs. (15)-(17)
+@implements("WF 16", "WF 15")
 def gps_doppler_update(
     x_prior: ArrayLike, P_prior: ArrayLike, y_G: ArrayLike, H_G: ArrayLike, R_G: ArrayLike
 ) -> KalmanUpdate:
@@ -180,6 +188,7 @@ def gps_doppler_update(
     return kf_update(x_prior, P_prior, y_G, H_G, R_G)
 
 
+@implements("WF 17")
 def gps_doppler_covariance(P_prior: ArrayLike, H_G: ArrayLike, R_G: ArrayLike) -> Array:
     r"""Information-form covariance after the GPS-Doppler update (WF Eq. (17)).
 
@@ -218,6 +227,7 @@ def _state_size(covariances: Sequence[ArrayLike | float | None]) -> int:
     raise ValueError("covariances must contain at least one matrix")
 
 
+@implements("WF 18", "WF 19")
 def federated_fusion(
     estimates: Sequence[ArrayLike], covariances: Sequence[ArrayLike | float | None]
 ) -> tuple[Array, Array]:
@@ -261,6 +271,7 @@ def federated_fusion(
     return P_D @ y, P_D
 
 
+@implements("WF 20")
 def fused_error_covariance(covariances: Sequence[ArrayLike | float | None], joint: ArrayLike) -> Array:
     r"""True covariance of the fused error given the joint local-error covariance (WF Eq. (20)).
 
@@ -283,6 +294,7 @@ def fused_error_covariance(covariances: Sequence[ArrayLike | float | None], join
 
 
 # --------------------------------------------------------------------------- Eqs. (21)-(23)
+@implements("WF 22")
 def feasible_weights(
     covariances: Sequence[ArrayLike | float | None],
     directions: Sequence[ArrayLike] | None = None,
@@ -319,6 +331,7 @@ def feasible_weights(
         return np.where(np.isfinite(s), total / np.where(np.isfinite(s), s, 1.0), np.inf)
 
 
+@implements("WF 21", "WF 23", "WF 22")
 def optimal_weights(covariances: Sequence[ArrayLike | float | None]) -> Array:
     r"""Weights that minimise the trace of WF Eq. (21): :math:`k_i=\sum_j t_j/t_i`.
 
@@ -335,6 +348,7 @@ def optimal_weights(covariances: Sequence[ArrayLike | float | None]) -> Array:
         return np.where(t > 0, t.sum() / np.where(t > 0, t, 1.0), np.inf)
 
 
+@implements("WF 21")
 def federated_covariance_bound(
     covariances: Sequence[ArrayLike | float | None], weights: ArrayLike | None = None
 ) -> Array:
@@ -356,6 +370,7 @@ def federated_covariance_bound(
     return symmetrize(P_D @ M @ P_D)
 
 
+@implements("WF 23", "WF 21")
 def minkowski_trace_bound(covariances: Sequence[ArrayLike | float | None]) -> float:
     r"""Middle term of WF Eq. (23), the Minkowski trace bound.
 

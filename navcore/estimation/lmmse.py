@@ -25,6 +25,7 @@ import numpy as np
 
 from navcore._validate import as_finite_array, require_positive
 from navcore.estimation.kalman import symmetrize
+from navcore.trace import implements
 
 __all__ = [
     "NuisanceLMMSE",
@@ -55,6 +56,7 @@ class NuisanceLMMSE:
         return d @ self.H.T + self.mu_x, d @ self.K.T
 
 
+@implements("ATC10 H.5", "ATC10 H.6", "ATC10 H.7", "ATC10 H.8")
 def lmmse_with_nuisance(
     F: np.ndarray,
     G: np.ndarray,
@@ -101,6 +103,7 @@ def lmmse_with_nuisance(
     return NuisanceLMMSE(H=H, K=K, P_x_err=P_x_err, P_y_err=P_y_err, mu_eps=mu_n + F @ mu_x, mu_x=mu_x)
 
 
+@implements("ATC10 H.21", "ATC10 H.22")
 def lmmse_with_nuisance_information_form(
     F: np.ndarray, G: np.ndarray, P_x: np.ndarray, P_n: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray]:
@@ -120,6 +123,7 @@ def lmmse_with_nuisance_information_form(
     return P_x_err, P_y_err
 
 
+@implements("ATC10 H.26")
 def scalar_nuisance_gain(f: np.ndarray, G: np.ndarray, sigma: float, sigma_x: float) -> float:
     """Gain of the scalar-x corollary (ATC-10 Eq. H.26, corrected numerator).
 

@@ -27,6 +27,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.special import log_ndtr
 
 from navcore._validate import as_finite_array, require_integer, require_positive
+from navcore.trace import implements
 
 __all__ = [
     "doppler_cell_hz",
@@ -40,6 +41,7 @@ __all__ = [
 Array = NDArray[np.float64]
 
 
+@implements("SP Table 2.7")
 def search_cells(sigma: ArrayLike, cell: float, n_sigma: float = 1.0) -> Array | int:
     """Number of cells covering +-n_sigma*sigma: ceil(2 n_sigma sigma / cell), at least 1."""
     require_positive("cell", cell)
@@ -64,6 +66,7 @@ def search_time_from_cells(
     return float(out) if out.ndim == 0 else out
 
 
+@implements("SP Sec. 2.5")
 def search_time(
     sigma_range_m: ArrayLike,
     sigma_range_rate_mps: ArrayLike,
@@ -85,6 +88,7 @@ def search_time(
     return search_time_from_cells(nr, nd, dwell_s)
 
 
+@implements("SP Sec. 2.5")
 def doppler_cell_hz(dwell_s: float) -> float:
     """Frequency cell of a coherent dwell: 1/T (Hz)."""
     require_positive("dwell_s", dwell_s)

@@ -46,6 +46,7 @@ from scipy.integrate import quad
 from scipy.linalg import expm
 
 from navcore._validate import as_finite_array, require_integer, require_positive
+from navcore.trace import implements
 from navcore.units import G0
 
 __all__ = [
@@ -104,6 +105,7 @@ def spectral_separation_q(jammer_bandwidth_hz: float, chip_rate_hz: float) -> fl
     return 1.0 / (chip_rate_hz * kappa)
 
 
+@implements("SP Sec. 3.1")
 def effective_cn0_dbhz(
     cn0_dbhz: ArrayLike, js_db: ArrayLike, chip_rate_hz: float, q: float = 2.0
 ) -> Array | float:
@@ -129,6 +131,7 @@ def js_for_effective_cn0(
     )
 
 
+@implements("SP Sec. 3.3")
 def free_space_js_db(
     jammer_power_w: ArrayLike,
     distance_m: ArrayLike,
@@ -169,6 +172,7 @@ def code_tracking_sigma_chips(
     return float(out) if out.ndim == 0 else out
 
 
+@implements("SP Sec. 3.3")
 def cep_from_horizontal_errors(errors_m: ArrayLike) -> float:
     """CEP (m) from horizontal error samples (N, 2): 1.1774 x the per-axis rms (circular normal)."""
     e = as_finite_array("errors_m", errors_m)
@@ -237,6 +241,7 @@ def _channel_matrices(m: NavigatorErrorModel, dt: float) -> tuple[Array, Array]:
     return Phi, Q
 
 
+@implements("SP Sec. 3.3")
 def simulate_impact_errors(
     model: NavigatorErrorModel,
     fix_sigma_m: ArrayLike,

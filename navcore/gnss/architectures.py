@@ -23,6 +23,7 @@ References
 from __future__ import annotations
 
 from navcore.estimation.layout import StateBlock, StateLayout
+from navcore.trace import implements
 
 __all__ = [
     "ALTIMETER",
@@ -58,6 +59,7 @@ IMU_ERRORS = StateLayout.of(
 )
 
 
+@implements("SP Table 2.1")
 def receiver_pva_layout() -> StateLayout:
     """States of a GPS receiver's own PVA Kalman filter (SP Table 2.1).
 
@@ -66,6 +68,7 @@ def receiver_pva_layout() -> StateLayout:
     return StateLayout((PVA + CLOCK + ALTIMETER).blocks, "GPS receiver (PVA)")
 
 
+@implements("SP Table 2.2")
 def loosely_coupled_layout() -> StateLayout:
     """Error states of the loosely coupled integration filter (SP Table 2.2).
 
@@ -75,6 +78,7 @@ def loosely_coupled_layout() -> StateLayout:
     return StateLayout((INS_CORE + IMU_ERRORS + ALTIMETER).blocks, "loosely coupled")
 
 
+@implements("SP Table 2.3")
 def tightly_coupled_layout() -> StateLayout:
     """Error states of the tightly coupled integration filter (SP Table 2.3).
 

@@ -38,6 +38,7 @@ from numpy.typing import ArrayLike, NDArray
 from navcore._validate import as_finite_array, require_integer, require_positive
 from navcore.frames import skew
 from navcore.inertial.error_model17 import ERROR_LAYOUT_17, code_doppler_rows
+from navcore.trace import implements
 from navcore.units import GPS_L1_WAVELENGTH_M
 
 __all__ = [
@@ -67,6 +68,7 @@ def _range_difference(sat: Array, a0: Array, ai: Array) -> Array:
     return num / (np.linalg.norm(sat - ai, axis=-1) + np.linalg.norm(sat - a0, axis=-1))
 
 
+@implements("KZL 15")
 def double_difference_phase(
     sat_m: ArrayLike,
     sat_n: ArrayLike,
@@ -91,6 +93,7 @@ def double_difference_phase(
     return 2 * np.pi / wavelength * (_range_difference(sn, a0, ai) - _range_difference(sm, a0, ai))
 
 
+@implements("KZL 17")
 def dd_observation_rows(
     los_m: ArrayLike,
     los_n: ArrayLike,
@@ -149,6 +152,7 @@ def dd_covariance(nu: int, sigma_phase: float, n_baselines: int = 2) -> Array:
     return sigma_phase**2 * D @ D.T
 
 
+@implements("KZL 13")
 def euler_rate_matrix_body(roll: float, pitch: float) -> Array:
     """Body-rate to Euler-rate matrix :math:`J_b^{-1}` of the 3-2-1 sequence (the "R" KZL Eq. 13 names)."""
     sr, cr = np.sin(roll), np.cos(roll)
@@ -156,6 +160,7 @@ def euler_rate_matrix_body(roll: float, pitch: float) -> Array:
     return np.array([[1.0, sr * tp, cr * tp], [0.0, cr, -sr], [0.0, sr / cp, cr / cp]])
 
 
+@implements("KZL 12")
 def euler_attitude_rows(C_bn: ArrayLike, roll: float, pitch: float) -> Array:
     """Rows (3 x 17) of the Euler-angle attitude observation (KZL Eq. 12/13, corrected block).
 
@@ -167,11 +172,13 @@ def euler_attitude_rows(C_bn: ArrayLike, roll: float, pitch: float) -> Array:
     return H
 
 
+@implements("KZL 13")
 def tc_attitude_observation_matrix(los_ned: ArrayLike, C_bn: ArrayLike, roll: float, pitch: float) -> Array:
     """Observation matrix of KZL Eq. 13 stacked over satellites: ``(2 nu + 3, 17)``."""
     return np.vstack([code_doppler_rows(los_ned), euler_attitude_rows(C_bn, roll, pitch)])
 
 
+@implements("KZL 17")
 def tc_dd_observation_matrix(
     los_ned: ArrayLike, C_bn: ArrayLike, baselines_b: ArrayLike = DEFAULT_BASELINES_B
 ) -> Array:
@@ -184,6 +191,7 @@ def tc_dd_observation_matrix(
     return np.vstack(rows)
 
 
+@implements("KZL 13")
 def attitude_observation_rows_count(nu: int) -> int:
     """Rows of the stacked Eq. 13 matrix, counted from the builder (code, Doppler, 3 angles)."""
     require_integer("nu", nu, minimum=1)
@@ -191,6 +199,7 @@ def attitude_observation_rows_count(nu: int) -> int:
     return tc_attitude_observation_matrix(los, np.eye(3), 0.0, 0.0).shape[0]
 
 
+@implements("KZL 17")
 def dd_observation_rows_count(nu: int, n_baselines: int = 2) -> int:
     """Rows of the stacked Eq. 17 matrix, counted from the builder."""
     require_integer("nu", nu, minimum=1)

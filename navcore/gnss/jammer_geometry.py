@@ -58,6 +58,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from navcore._validate import as_finite_array, require_nonnegative, require_positive
+from navcore.trace import implements
 
 __all__ = [
     "LockThresholds",
@@ -141,6 +142,7 @@ def received_jammer_power_dbw(
     return _out(erp_dbw + rx_gain_dbi - np.asarray(free_space_loss_db(range_m, wavelength_m)))
 
 
+@implements("SP Sec. 2.6.2")
 def effective_cn0_with_jammer_dbhz(
     carrier_dbw: ArrayLike,
     jammer_dbw: ArrayLike,
@@ -207,6 +209,7 @@ def threshold_range_m(
     return _out(wavelength_m / (4.0 * np.pi) * 10.0 ** ((erp_dbw + rx_gain_dbi - jt) / 20.0))
 
 
+@implements("SP Sec. 2.6.2")
 def straight_track_crossing_times(
     threshold_range: ArrayLike, closest_range_m: float, speed_mps: float, t_closest_s: float = 0.0
 ) -> tuple[Array | float, Array | float]:
@@ -256,6 +259,7 @@ def pll_jitter_threshold_dbhz(
     return _out(10.0 * np.log10(x))
 
 
+@implements("SP Sec. 2.5")
 def carrier_loss_threshold_dbhz(
     noise_bandwidth_hz: ArrayLike,
     floor_dbhz: float,
@@ -286,6 +290,7 @@ class LockThresholds:
                 raise ValueError(f"LockThresholds.{kind}_reacquisition must be >= {kind}_loss")
 
 
+@implements("SP Sec. 2.5")
 def hysteresis_lock(
     cn0_dbhz: ArrayLike, loss_dbhz: ArrayLike, reacquisition_dbhz: ArrayLike, *, initially_locked: bool = True
 ) -> NDArray[np.bool_]:

@@ -52,6 +52,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import minimize_scalar
 
 from navcore._validate import as_finite_array, require_nonnegative, require_positive
+from navcore.trace import implements
 
 __all__ = [
     "PEAK_TIME_FACTOR",
@@ -210,6 +211,7 @@ def wavelength_for_peak_error(accel_mps2: float, omega0: float, peak_deg: float)
     return 360.0 * third_order_peak_step_error(accel_mps2, omega0) / peak_deg
 
 
+@implements("SP 2.1")
 def aided_natural_frequency(
     step_aided: ArrayLike, step_unaided: float, omega0_unaided: float
 ) -> Array | float:

@@ -32,12 +32,14 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from navcore._validate import as_finite_array
+from navcore.trace import implements
 
 __all__ = ["heading_from_velocity", "levelling", "levelling_as_printed"]
 
 Array = NDArray[np.float64]
 
 
+@implements("KZL 2", "KZL 3", "KZL 8")
 def levelling(
     f_b: ArrayLike, convention: Literal["specific-force", "gravity-reaction"] = "specific-force"
 ) -> tuple[Array, Array]:
@@ -76,6 +78,7 @@ def levelling(
     return roll, pitch
 
 
+@implements("KZL 2", "KZL 3")
 def levelling_as_printed(a_b: ArrayLike) -> tuple[Array, Array]:
     """KZL Eqs. 2-3 exactly as printed: ``theta = arctan(-a_x/sqrt(a_y^2+a_z^2))``,
     ``phi = atan2(a_y, a_z)``. Correct only if ``a_b`` is minus the specific force."""
@@ -84,6 +87,7 @@ def levelling_as_printed(a_b: ArrayLike) -> tuple[Array, Array]:
     return np.arctan2(ay, az), np.arctan(-ax / np.hypot(ay, az))
 
 
+@implements("KZL 4")
 def heading_from_velocity(v_ned: ArrayLike) -> Array:
     """Track angle ``atan2(v_E, v_N)`` (rad) from a NED velocity (KZL Eq. 4).
 

@@ -67,6 +67,7 @@ from numpy.typing import ArrayLike, NDArray
 from navcore._validate import require_nonnegative, require_positive
 from navcore.estimation.layout import StateBlock, StateLayout
 from navcore.inertial.imu import ImuSpec
+from navcore.trace import implements
 from navcore.units import G0, OMEGA_EARTH, WGS84_A
 
 __all__ = [
@@ -126,6 +127,7 @@ class GaussMarkov:
         require_positive("GaussMarkov.distance_constant_m", self.distance_constant_m)
 
 
+@implements("SP Table 2.4")
 def gauss_markov_rate(distance_constant_m: float, speed_mps: float) -> float:
     """Inverse time constant ``beta = |v| / d`` (1/s) of a distance-correlated process."""
     require_nonnegative("speed_mps", speed_mps)
@@ -267,6 +269,7 @@ def transport_rate_ned(v_ned: ArrayLike, lat: ArrayLike, h: ArrayLike = 0.0) -> 
     return np.stack([v[..., 1], -v[..., 0], -v[..., 1] * np.tan(lat)], -1) / r[..., None]
 
 
+@implements("SP Sec. 2.3")
 def error_dynamics(
     layout: StateLayout,
     *,
@@ -430,6 +433,7 @@ def initial_covariance(
     return np.diag(s**2)
 
 
+@implements("SP Sec. 2.6.1")
 def gyrocompass_alignment(
     P0: ArrayLike,
     layout: StateLayout,

@@ -48,6 +48,7 @@ from numpy.typing import ArrayLike, NDArray
 from navcore._validate import as_finite_array, require_nonnegative, require_positive
 from navcore.estimation.layout import StateBlock, StateLayout
 from navcore.frames import skew
+from navcore.trace import implements
 
 __all__ = [
     "ERROR_LAYOUT_17",
@@ -85,11 +86,13 @@ _CB = ERROR_LAYOUT_17.index("clock bias")
 _CD = ERROR_LAYOUT_17.index("clock drift")
 
 
+@implements("KZL 11")
 def skew_paper(a: ArrayLike) -> Array:
     """The matrix KZL Eq. 11 prints as ``[a x]``: ``-skew(a)``, so ``skew_paper(a) @ b = b x a``."""
     return -skew(a)
 
 
+@implements("KZL 10")
 def error_dynamics_17(C_bn: ArrayLike, f_n: ArrayLike) -> Array:
     """Continuous-time dynamics matrix F (17 x 17) of KZL Eq. 10 (reconstructed).
 
@@ -160,6 +163,7 @@ def noise_psd_17(
     return np.diag(q)
 
 
+@implements("KZL 5")
 def transition_exact(F: ArrayLike, dt: float) -> Array:
     """:math:`e^{F\\,dt}` of the nilpotent 17-state F: ``I + F dt + (F dt)^2/2 + (F dt)^3/6``.
 
@@ -172,12 +176,14 @@ def transition_exact(F: ArrayLike, dt: float) -> Array:
     return np.eye(A.shape[-1]) + A + A2 / 2.0 + (A2 @ A) / 6.0
 
 
+@implements("KZL 6")
 def transition_first_order(F: ArrayLike, dt: float) -> Array:
     """KZL Eq. 6: ``I + F dt``."""
     require_positive("dt", dt)
     return np.eye(np.shape(F)[-1]) + np.asarray(F, dtype=float) * dt
 
 
+@implements("KZL 13")
 def code_doppler_rows(los_ned: ArrayLike) -> Array:
     """Jacobian rows of pseudorange and delta range (KZL Eq. 13, first two rows per satellite).
 

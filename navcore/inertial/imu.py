@@ -11,6 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field, fields
 
 from navcore._validate import require_nonnegative
+from navcore.trace import implements
 from navcore.units import (
     ARCSEC,
     DEG_PER_H,
@@ -114,6 +115,7 @@ def velocity_random_walk_m_per_s_per_sqrt_h(root_psd_micro_g_per_sqrt_hz: float)
     return root_psd_micro_g_per_sqrt_hz * MICRO_G * 60.0
 
 
+@implements("SP Table 2.5")
 def imu_spec_from_published(
     name: str,
     *,

@@ -55,6 +55,7 @@ from scipy.special import erf
 
 from navcore._validate import as_finite_array, require_integer, require_probability, require_symmetric_psd
 from navcore.frames import skew
+from navcore.trace import implements
 
 __all__ = [
     "residual_acceleration_covariance",
@@ -67,6 +68,7 @@ __all__ = [
 Array = NDArray[np.float64]
 
 
+@implements("SP Table 2.6")
 def scale_factor_misalignment_sensitivity(
     accel: ArrayLike = (1.0, 1.0, 1.0), convention: Literal["cross", "printed"] = "cross"
 ) -> Array:
@@ -99,6 +101,7 @@ def scale_factor_misalignment_sensitivity(
     return np.hstack([np.diag(a), mis])
 
 
+@implements("SP Table 2.6")
 def residual_acceleration_covariance(sensitivity: ArrayLike, error_covariance: ArrayLike) -> Array:
     """Covariance :math:`H P H^T` of the residual acceleration (SP Sec. 2.5), symmetrised."""
     H = as_finite_array("sensitivity", sensitivity)
@@ -174,6 +177,7 @@ def sphere_probability(cov: ArrayLike, radius: float) -> float:
     return _probability_inside(lam, float(radius))
 
 
+@implements("SP Table 2.6")
 def sphere_radius(cov: ArrayLike, p: float = 0.9) -> float:
     """Radius of the sphere about the origin enclosing probability ``p`` of N(0, cov).
 

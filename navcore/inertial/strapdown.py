@@ -38,6 +38,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from navcore._validate import as_finite_array, require_positive
 from navcore.frames import quat_from_rotvec, radii_of_curvature
+from navcore.trace import implements
 from navcore.units import G0, OMEGA_EARTH
 
 __all__ = [
@@ -136,6 +137,7 @@ def transport_rate_ned(vel: ArrayLike, lat: ArrayLike, h: ArrayLike) -> Array:
     return np.stack([ve / (R_E + h), -vn / (R_N + h), -ve * np.tan(lat) / (R_E + h)], axis=-1)
 
 
+@implements("KZL 7", "KZL 8", "KZL 9")
 def strapdown_step(
     state: NavState,
     omega_ib_b: ArrayLike,

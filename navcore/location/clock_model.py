@@ -7,7 +7,8 @@ fractional-Brownian "1/f" (flicker frequency) component with Hurst exponent ``rh
     E[(tau_n - tau_0)(tau_m - tau_0)] = s1^2 min(m, n) + s2^2/2 (m^2H + n^2H - |m - n|^2H)
                                          (+ tau_bar^2 m n for the raw second moment),
 
-ATC-10 Eq. 4.3.0 with the "(1/tau^2) mn" typo read as tau_bar^2 mn (erratum E4-9). With
+the unnumbered model of ATC-10 Sec. 4.3, with the "(1/tau^2) mn" typo read as tau_bar^2 mn
+(erratum E4-9). With
 ``s1 = s2 = sigma0`` and ``rho_h = 1`` it reduces to ``sigma0^2 (min(m, n) + m n)``: a
 random walk plus a random frequency offset (Eq. 4.3.1).
 
@@ -25,6 +26,7 @@ import numpy as np
 from scipy import integrate, special
 
 from navcore._validate import require_in_range, require_integer, require_nonnegative
+from navcore.trace import implements
 
 __all__ = [
     "clock_covariance",
@@ -35,6 +37,7 @@ __all__ = [
 ]
 
 
+@implements("ATC10 G.5")
 def mandelbrot_van_ness_constant(rho_h: float) -> float:
     """``V0 = 1 / (Gamma(2 rho + 1) sin(pi rho))`` (ATC-10 Eq. G.5), for 0 < rho < 1.
 
@@ -49,6 +52,7 @@ def mandelbrot_van_ness_constant(rho_h: float) -> float:
     return float(1.0 / (special.gamma(2.0 * rho_h + 1.0) * math.sin(math.pi * rho_h)))
 
 
+@implements("ATC10 G.5")
 def mandelbrot_van_ness_constant_integral(rho_h: float) -> float:
     """V0 from its defining integral (ATC-10 Eq. G.5, corrected integrand).
 
@@ -74,10 +78,11 @@ def mandelbrot_van_ness_constant_integral(rho_h: float) -> float:
     return (1.0 / (2.0 * rho_h) + a + b) / special.gamma(rho_h + 0.5) ** 2
 
 
+@implements("ATC10 Sec. 4.3", "ATC10 4.3.1b")
 def clock_covariance(
     n_epochs: int, sigma1: float, sigma2: float, rho_h: float = 1.0, tau_bar: float = 0.0
 ) -> np.ndarray:
-    """Second moments ``E[(tau_n - tau_0)(tau_m - tau_0)]`` for n, m = 1..n_epochs (Eq. 4.3.0).
+    """Second moments ``E[(tau_n - tau_0)(tau_m - tau_0)]``, n, m = 1..n_epochs (ATC-10 Sec. 4.3).
 
     ``tau_bar = 0`` gives the covariance; a nonzero ``tau_bar`` adds the mean product
     ``tau_bar^2 m n``. ``rho_h`` in (0, 1]; rho_h = 1 is the random-frequency-offset limit.
@@ -95,6 +100,7 @@ def clock_covariance(
     return sigma1**2 * np.minimum(m, k) + sigma2**2 * fbm + tau_bar**2 * m * k
 
 
+@implements("ATC10 4.5.23", "ATC10 4.3.1")
 def clock_increment_covariance(n_epochs: int, sigma0: float) -> np.ndarray:
     """Covariance of the increments Delta_n for the Eq. 4.3.1 model.
 

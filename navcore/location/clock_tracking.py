@@ -30,6 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from navcore._validate import as_finite_array, require_integer, require_nonnegative, require_positive
+from navcore.trace import implements
 
 __all__ = [
     "GainHistory",
@@ -50,6 +51,7 @@ __all__ = [
 ]
 
 
+@implements("ATC10 4.5.32")
 def alpha_parameter(sigma0: float, sigma: float, beta: float) -> float:
     """``alpha = (8/27) sigma0^2 beta / sigma^2`` (ATC-10 Eq. 4.5.32).
 
@@ -64,6 +66,7 @@ def alpha_parameter(sigma0: float, sigma: float, beta: float) -> float:
     return 8.0 / 27.0 * sigma0**2 * beta / sigma**2
 
 
+@implements("ATC10 4.5.34")
 def psi(alpha: np.ndarray | float) -> np.ndarray | float:
     """Steady-state gain factor ``psi = gamma beta`` (ATC-10 Eq. 4.5.34), real cube roots.
 
@@ -99,6 +102,7 @@ def psi_cubic_root(alpha: float) -> float:
     return float(real[(real > 0) & (real < 1)][0])
 
 
+@implements("ATC10 4.5.38")
 def psi_small_alpha(alpha: np.ndarray | float) -> np.ndarray | float:
     """``1.5 * 2^(1/3) [alpha^(1/3) - (alpha/2)^(2/3)]``, the alpha <= 0.3 approximation (Eq. 4.5.38)."""
     a = as_finite_array("alpha", alpha)
@@ -106,6 +110,7 @@ def psi_small_alpha(alpha: np.ndarray | float) -> np.ndarray | float:
     return float(out) if out.ndim == 0 else out
 
 
+@implements("ATC10 4.5.38")
 def psi_large_alpha(alpha: np.ndarray | float) -> np.ndarray | float:
     """``1 - 4 / (27 alpha)``, the alpha >= 1 approximation (Eq. 4.5.38)."""
     a = as_finite_array("alpha", alpha)
@@ -115,6 +120,7 @@ def psi_large_alpha(alpha: np.ndarray | float) -> np.ndarray | float:
     return float(out) if out.ndim == 0 else out
 
 
+@implements("ATC10 4.5.33")
 def steady_state_gain(beta: float, sigma: float, sigma0: float) -> float:
     """``gamma = psi(alpha) / beta`` (ATC-10 Eq. 4.5.33)."""
     require_positive("beta", beta)
@@ -141,6 +147,7 @@ class GainHistory:
     cross: np.ndarray
 
 
+@implements("ATC10 4.5.16", "ATC10 4.5.25")
 def gain_recursion(beta: float, sigma: float, sigma0: float, n_steps: int) -> GainHistory:
     """Optimal gains of the constrained clock tracker (ATC-10 Eqs. 4.5.16-4.5.25, corrected).
 
@@ -177,6 +184,7 @@ def three_satellite_clock_variance(
     return sigma**2 * gamma_last + sigma0**2 * (mm + mm**2) + 2.0 * mm * cross_last
 
 
+@implements("ATC10 4.5.27")
 def three_satellite_clock_variance_steady(
     beta: float, sigma: float, sigma0: float, m: np.ndarray | int
 ) -> np.ndarray:
@@ -186,6 +194,7 @@ def three_satellite_clock_variance_steady(
     return sigma**2 * p / beta + sigma0**2 * ((2.0 - p) / p * mm + mm**2)
 
 
+@implements("ATC10 4.5.35")
 def position_mse(
     sigma: float, trace: float, clock_term: float, gamma: np.ndarray | float
 ) -> np.ndarray | float:

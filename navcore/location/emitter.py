@@ -49,6 +49,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from navcore._validate import as_finite_array, require_integer, require_positive, require_symmetric_psd
+from navcore.trace import implements
 from navcore.units import C
 
 __all__ = [
@@ -89,6 +90,7 @@ def _geometry(emitter: ArrayLike, position: ArrayLike) -> tuple[Array, Array]:
     return rel / R[:, None], R
 
 
+@implements("WF 1")
 def doppler_frequency(f0: float, emitter: ArrayLike, position: ArrayLike, velocity: ArrayLike) -> Array:
     """Received frequency of a stationary emitter at a moving aperture (WF Eq. (1)).
 
@@ -119,6 +121,7 @@ def doppler_frequency(f0: float, emitter: ArrayLike, position: ArrayLike, veloci
     return f0 + (f0 / C) * np.einsum("ij,ij->i", v, u)
 
 
+@implements("WF 8")
 def doppler_gradient_velocity(f0: float, emitter: ArrayLike, position: ArrayLike) -> Array:
     """Gradient of the received frequency w.r.t. aperture velocity, ``(f0/c) u_R`` (WF Eq. (8)).
 
@@ -129,6 +132,7 @@ def doppler_gradient_velocity(f0: float, emitter: ArrayLike, position: ArrayLike
     return (f0 / C) * u
 
 
+@implements("WF 9")
 def doppler_gradient_position(
     f0: float, emitter: ArrayLike, position: ArrayLike, velocity: ArrayLike
 ) -> Array:
@@ -144,6 +148,7 @@ def doppler_gradient_position(
     return -(f0 / C) * v_perp / R[:, None]
 
 
+@implements("WF 9")
 def position_sensitivity_bound(f0: float, speed: ArrayLike, range_m: ArrayLike) -> Array:
     """The printed upper bound ``(f0/c) 2||v|| / R`` on ``||df/dp||`` (WF Eq. (9)), Hz/m."""
     require_positive("f0", f0)
@@ -152,6 +157,7 @@ def position_sensitivity_bound(f0: float, speed: ArrayLike, range_m: ArrayLike) 
     return (f0 / C) * 2.0 * speed / range_m
 
 
+@implements("WF 8", "WF 9")
 def velocity_to_position_sensitivity_ratio(speed: ArrayLike, range_m: ArrayLike) -> Array:
     """Ratio of WF Eq. (8) to the bound of WF Eq. (9): ``R / (2 ||v||)``.
 
@@ -163,6 +169,7 @@ def velocity_to_position_sensitivity_ratio(speed: ArrayLike, range_m: ArrayLike)
     return range_m / (2.0 * speed)
 
 
+@implements("WF 4")
 def doppler_jacobian_emitter(
     f0: float, emitter: ArrayLike, position: ArrayLike, velocity: ArrayLike
 ) -> Array:
@@ -184,6 +191,7 @@ def doppler_jacobian_emitter(
     return np.column_stack([dp, df0])
 
 
+@implements("WF 6")
 def signal_model_error(
     f0: float,
     emitter: ArrayLike,
@@ -215,6 +223,7 @@ def _weight(W: ArrayLike | None, M: int) -> Array:
     return Wa
 
 
+@implements("WF 6", "WF 4")
 def linearized_location_error(H: ArrayLike, error: ArrayLike, W: ArrayLike | None = None) -> Array:
     r"""First-order emitter-parameter error (WF Eq. (6)).
 
@@ -243,6 +252,7 @@ def linearized_location_error(H: ArrayLike, error: ArrayLike, W: ArrayLike | Non
     return np.linalg.solve(HtW @ H, HtW @ e)
 
 
+@implements("WF 6")
 def location_error_covariance(H: ArrayLike, error_covariance: ArrayLike, W: ArrayLike | None = None) -> Array:
     r"""Covariance of the WF Eq. (6) error for a frequency-error covariance :math:`\Sigma`.
 
@@ -284,6 +294,7 @@ class GaussNewtonResult:
     converged: bool
 
 
+@implements("WF 2", "WF 3", "WF 4")
 def emitter_gauss_newton(
     measurements: ArrayLike,
     position: ArrayLike,

@@ -29,6 +29,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from navcore._validate import as_finite_array, require_in_range, require_positive
+from navcore.trace import implements
 
 __all__ = [
     "EARTH_MEAN_RADIUS_M",
@@ -82,6 +83,7 @@ def position_on_sphere(lat_deg: np.ndarray | float, lon_deg: np.ndarray | float,
     return radius * np.stack([np.cos(lat) * np.cos(lon), np.cos(lat) * np.sin(lon), np.sin(lat)], axis=-1)
 
 
+@implements("ATC10 4.2.2")
 def line_of_sight_matrix(satellites: np.ndarray, aircraft: np.ndarray) -> np.ndarray:
     """Unit vectors from each satellite to the aircraft, one per row (K x 3).
 
@@ -114,6 +116,7 @@ def _check_f(F: np.ndarray) -> np.ndarray:
     return F
 
 
+@implements("ATC10 4.5.2")
 def beta_parameter(F: np.ndarray) -> float:
     """``beta = K - 1'F(F'F)^-1 F'1 = |(I - P)1|^2`` (ATC-10 Eq. 4.5.2, "K minus" reading).
 
@@ -133,6 +136,7 @@ def position_trace(F: np.ndarray) -> float:
     return float(np.trace(np.linalg.inv(F.T @ F)))
 
 
+@implements("ATC10 4.5.30")
 def clock_direction_term(F: np.ndarray) -> float:
     """``S = 1'F(F'F)^-2 F'1``, the position error per unit clock-error variance.
 
@@ -144,6 +148,7 @@ def clock_direction_term(F: np.ndarray) -> float:
     return float(v @ v)
 
 
+@implements("ATC10 4.5.30")
 def frame_dependent_clock_term(F: np.ndarray) -> float:
     """``1'(F'F)^-1 1`` for K = 3: the term printed in ATC-10 Eq. 4.5.30.
 
@@ -157,6 +162,7 @@ def frame_dependent_clock_term(F: np.ndarray) -> float:
     return float(ones @ np.linalg.solve(F.T @ F, ones))
 
 
+@implements("ATC10 4.1.1")
 def geometric_dilution_covariance(F: np.ndarray, H: np.ndarray | None = None) -> np.ndarray:
     """Position error covariance per unit sigma^2, ``[F'H'(HH')^-1 H F]^-1`` (Eq. 4.1.1).
 
@@ -177,6 +183,7 @@ def geometric_dilution_covariance(F: np.ndarray, H: np.ndarray | None = None) ->
     return np.linalg.inv(info)
 
 
+@implements("ATC10 4.1.2", "ATC10 4.6.2")
 def geometric_dilution(F: np.ndarray) -> float:
     """``k = sqrt(tr{(F'F)^-1} + S / beta)`` (Eqs. 4.1.2 and 4.6.2); inf when beta = 0."""
     b = beta_parameter(F)

@@ -23,6 +23,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from navcore._validate import as_finite_array, require_nonnegative, require_symmetric_psd
 from navcore.frames import skew
+from navcore.trace import implements
 
 __all__ = [
     "pointing_error_m",
@@ -41,6 +42,7 @@ def _vec3(name: str, v: ArrayLike) -> Array:
     return a
 
 
+@implements("SP Sec. 2.6.4")
 def target_location_error(dr_vehicle_m: ArrayLike, dalpha_rad: ArrayLike, r_target_m: ArrayLike) -> Array:
     """Target coordinate error (m): position error plus misalignment crossed with the lever arm.
 
@@ -73,6 +75,7 @@ def pointing_error_m(misalignment_rad: ArrayLike, range_m: ArrayLike) -> Array |
     return float(out) if out.ndim == 0 else out
 
 
+@implements("SP Sec. 2.6.4")
 def target_location_rss(
     position_rss_m: ArrayLike, misalignment_rad: ArrayLike, range_m: ArrayLike
 ) -> Array | float:

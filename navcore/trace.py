@@ -1,0 +1,118 @@
+"""Which paper items each navcore model implements: the ``@implements`` decorator.
+
+A model function names the paper equations (or tables, figures, sections) it implements::
+
+    @implements("WF 13", "WF 14")
+    def accelerometer_filter_step(...): ...
+
+A reference is ``"<PAPER> <item>"``: the paper key (``WF``, ``SP``, ``ATC10``, ``KZL``) and
+either an equation number as the paper prints it (``13``, ``2.4.2``, ``A.18``) or a labelled
+item (``Table 2.6``, ``Fig. 2.1``, ``Sec. 2.5``). The decorator only records the references;
+it returns the function itself, unchanged. :func:`registry` imports every navcore module and
+returns what was recorded; :mod:`navcore.traceability` builds the book's index from it and
+checks it against the book's pages and the ledger's locators.
+
+This module imports nothing heavy, so that every model module can use it.
+"""
+
+from __future__ import annotations
+
+import importlib
+import pkgutil
+import re
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import TypeVar
+
+__all__ = ["PAPER_KEYS", "Implementation", "Ref", "implements", "parse_ref", "registry"]
+
+PAPER_KEYS = ("WF", "SP", "ATC10", "KZL")
+_EQUATION = re.compile(r"^(?:[A-H]\.?)?\d+(?:\.\d+)*[a-z]?$")
+_LABELLED = re.compile(r"^(Table|Fig\.|Sec\.|Appendix|Theorem) [A-H0-9][0-9.]*$")
+
+F = TypeVar("F", bound=Callable)
+
+
+@dataclass(frozen=True, order=True)
+class Ref:
+    """One paper item: ``paper`` key and ``item`` (``"13"``, ``"A.18"``, ``"Table 2.6"``)."""
+
+    paper: str
+    item: str
+
+    @property
+    def is_equation(self) -> bool:
+        return _EQUATION.match(self.item) is not None
+
+    def __str__(self) -> str:
+        return f"{self.paper} {self.item}"
+
+
+@dataclass(frozen=True)
+class Implementation:
+    """A model function and the paper items it implements."""
+
+    module: str
+    qualname: str
+    refs: tuple[Ref, ...]
+
+    @property
+    def name(self) -> str:
+        return f"{self.module}.{self.qualname}"
+
+
+_REGISTRY: dict[str, Implementation] = {}
+
+
+def parse_ref(ref: str) -> Ref:
+    """Parse ``"<PAPER> <item>"``; raise ``ValueError`` naming what is wrong."""
+    if not isinstance(ref, str) or " " not in ref.strip():
+        raise ValueError(f"ref must be '<PAPER> <item>' such as 'WF 13', got {ref!r}")
+    paper, item = ref.strip().split(" ", 1)
+    if paper not in PAPER_KEYS:
+        raise ValueError(f"ref {ref!r}: the paper key must be one of {PAPER_KEYS}, got {paper!r}")
+    item = item.strip()
+    if not (_EQUATION.match(item) or _LABELLED.match(item)):
+        raise ValueError(
+            f"ref {ref!r}: the item must be an equation number as printed ('13', '2.4.2', 'A.18') "
+            f"or 'Table N', 'Fig. N', 'Sec. N', 'Appendix X'; got {item!r}"
+        )
+    if _EQUATION.match(item) and item[0].isalpha() and item[1] != ".":
+        item = f"{item[0]}.{item[1:]}"  # 'A18' -> 'A.18', as the papers print appendix numbers
+    return Ref(paper, item)
+
+
+def implements(*refs: str) -> Callable[[F], F]:
+    """Record that the decorated function implements the given paper items.
+
+    Parameters
+    ----------
+    *refs : str
+        ``"<PAPER> <item>"`` references, at least one (see the module docstring).
+
+    Returns
+    -------
+    callable
+        A decorator that registers the function and returns it unchanged.
+    """
+    if not refs:
+        raise ValueError("refs: give at least one paper item, e.g. implements('WF 13')")
+    parsed = tuple(parse_ref(r) for r in refs)
+
+    def register(func: F) -> F:
+        impl = Implementation(func.__module__, func.__qualname__, parsed)
+        _REGISTRY[impl.name] = impl
+        return func
+
+    return register
+
+
+def registry() -> tuple[Implementation, ...]:
+    """Every recorded implementation, after importing all navcore modules (sorted by name)."""
+    import navcore
+
+    for info in pkgutil.walk_packages(navcore.__path__, prefix="navcore."):
+        if info.name.endswith("__main__"):
+            continue
+        importlib.import_module(info.name)
+    return tuple(_REGISTRY[k] for k in sorted(_REGISTRY))

@@ -1,0 +1,331 @@
+"""The traceability index: paper item -> navcore function -> tests -> book pages, and back.
+
+Sources, all read from the checkout (nothing is typed in):
+
+* the ``@implements`` records of the model functions (:func:`navcore.trace.registry`);
+* the book's pages (``book/**/*.md``): an equation is *displayed* on a page when a display
+  equation carries the label ``eq-<paper>-<number>`` (the label convention of
+  ``book/_ext/paper_equations.py``), and an item is *mentioned* when the page's text names it
+  ("Eq. (13)", "Eqs. (2.4.1)-(2.4.2)", "Table 2.6", "Fig. 2.1", "Sec. 2.5", "Appendix C");
+* the tests (``tests/*.py``), scanned with :mod:`ast` for the functions they use;
+* the ledger's claims (their ``locator``), and the papers' texts (``../shared/papers``), which
+  say which equations, tables, figures and sections exist.
+
+:func:`build_index` assembles it; :func:`problems` lists what breaks the chain (a function
+claiming an item that no page shows, a label or a claim naming an item the paper lacks);
+``tests/test_traceability.py`` fails on any problem, and ``book/traceability.md`` shows the
+index.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+from collections import defaultdict
+from dataclasses import dataclass, field
+from functools import cache
+from pathlib import Path
+
+from navcore.trace import Implementation, Ref, registry
+
+__all__ = [
+    "BookPage",
+    "Index",
+    "build_index",
+    "index_markdown",
+    "items_in_text",
+    "paper_equation_number",
+    "paper_items",
+    "problems",
+    "reverse_markdown",
+]
+
+ROOT = Path(__file__).resolve().parents[1]
+CHAPTER_PAPER = {"wf": "WF", "sp": "SP", "atc10": "ATC10", "kzl": "KZL"}
+PAPER_FILES = {
+    "WF": "wu-fowler-mems-emitter-location.txt",
+    "SP": "schmidt-phillips-insgps-architecture-comparisons.txt",
+    "ATC10": "lincoln-atc10-satellite-surveillance-1972.txt",
+    "KZL": "knedlik-zhou-loffeld-bistatic-sar-attitude.txt",
+}
+_NUM = r"(?:[A-H]\.)?\d+(?:\.\d+)*[a-z]?"
+_LABEL = re.compile(r"\$\$\s*\((eq-(?:wf|sp|atc10|kzl)-[^)\s]+)\)")
+_PAPER_LABEL = re.compile(r"^eq-(?:wf|sp|atc10|kzl)-(?P<number>(?:[a-z]\.?)?\d+[a-z]?(?:\.\d+[a-z]?)*)$")
+_EQ_MENTION = re.compile(
+    r"\bEq(?:uation)?s?\.?\s*\(?(" + _NUM + r")\)?((?:\s*(?:,|-|–|to|and|&)\s*\(?" + _NUM + r"\)?)*)"
+)
+_MORE_NUM = re.compile(r"\(?(" + _NUM + r")\)?")
+_LABELLED = {
+    "Table": re.compile(r"\bTables?\s+((?:[A-Z]\.)?\d+(?:\.\d+)*)((?:\s*(?:,|-|–|and)\s*\d+(?:\.\d+)*)*)"),
+    "Fig.": re.compile(r"\bFig(?:ure)?s?\.?\s+(\d+(?:\.\d+)*)((?:\s*(?:,|-|–|and)\s*\d+(?:\.\d+)*)*)"),
+    "Sec.": re.compile(r"\bSec(?:tion)?s?\.?\s+(\d+(?:\.\d+)*|[IV]+(?:\.[A-D])?)"),
+    "Appendix": re.compile(r"\b(?:Appendi(?:x|ces)|App\.)\s+([A-H])\b"),
+    "Theorem": re.compile(r"\bTheorem\s+(\d+(?:\.\d+)*)"),
+    "Remark": re.compile(r"\bRemark\s+\(?([ivx]+)\)"),
+}
+
+
+def paper_equation_number(label: str) -> str | None:
+    """The paper's equation number encoded in a book label (``eq-atc10-a.18`` -> ``A.18``)."""
+    match = _PAPER_LABEL.match(label)
+    if match is None:
+        return None
+    number = match["number"]
+    if number[0].isalpha():
+        number = number[0].upper() + ("" if number[1] == "." else ".") + number[1:]
+    return number
+
+
+def _expand(first: str, rest: str) -> list[str]:
+    """``13`` and ``-(14)`` -> 13, 14; integer ranges are filled in, dotted ones keep ends."""
+    numbers = [first, *_MORE_NUM.findall(rest)]
+    out = list(numbers)
+    if (len(numbers) == 2 and "-" in rest) or "–" in rest or " to " in rest:
+        a, b = numbers[0], numbers[-1]
+        head_a, _, tail_a = a.rpartition(".")
+        head_b, _, tail_b = b.rpartition(".")
+        if head_a == head_b and tail_a.isdigit() and tail_b.isdigit() and 0 < int(tail_b) - int(tail_a) < 30:
+            prefix = f"{head_a}." if head_a else ""
+            out = [f"{prefix}{i}" for i in range(int(tail_a), int(tail_b) + 1)]
+    return out
+
+
+_DOTTED = re.compile(r"\((?:\\text\{)?((?:[A-H]\.)?\d+(?:\.\d+)+[a-z]?|[A-H]\.\d+[a-z]?)\}?\)")
+
+_DOTTED_RANGE = re.compile(
+    r"\(((?:[A-H]\.)?\d+(?:\.\d+)+|[A-H]\.\d+)\)\s*(?:-|–|to)\s*\(((?:[A-H]\.)?\d+(?:\.\d+)+|[A-H]\.\d+)\)"
+)
+
+#: Items the papers' OCR texts lost (their numbers or headings), checked by hand against the
+#: texts: each is named by the book or the ledger, and the reason says where it stands.
+OCR_LOST = {
+    "ATC10 4.5.38": "the gamma_n extrapolation formula after (4.5.37) is printed without its tag",
+    "ATC10 4.6.2": "Sec. 4.6's equations lost their tags in the OCR text",
+    "ATC10 G.5": "Appendix G keeps only the tag (G.1); the V0(rho) integral follows it untagged",
+    "ATC10 Fig. 2.10": "the captions of Figs. 2.10, 2.13, 2.14 and 2.16 are missing from the OCR text",
+    "ATC10 Fig. 2.13": "the captions of Figs. 2.10, 2.13, 2.14 and 2.16 are missing from the OCR text",
+    "ATC10 Fig. 2.14": "the captions of Figs. 2.10, 2.13, 2.14 and 2.16 are missing from the OCR text",
+    "ATC10 Fig. 2.16": "the captions of Figs. 2.10, 2.13, 2.14 and 2.16 are missing from the OCR text",
+    "KZL 10": "the KZL text keeps the tags (3), (4), (7)-(9) and (16) only; (10) is the 17-state model",
+    "SP Sec. 2.4": "the heading of Sec. 2.4 (IMU quality, Table 2.5) is lost; 2.3 and 2.5 surround it",
+}
+
+
+def items_in_text(text: str, *, dotted: bool = False) -> set[str]:
+    """The paper items a piece of prose names (equations as numbers; others with their kind).
+
+    ``dotted`` also counts a bare parenthesised dotted number such as "(2.4.2)" or "(A.18)"
+    as an equation (safe for the chapters of the papers with sectioned equation numbers).
+    """
+    found: set[str] = set()
+    for m in _EQ_MENTION.finditer(text):
+        found.update(_expand(m.group(1), m.group(2) or ""))
+    if dotted:
+        found.update(_DOTTED.findall(text))
+        for m in _DOTTED_RANGE.finditer(text):
+            found.update(_expand(m.group(1), "-" + m.group(2)))
+    for kind, rx in _LABELLED.items():
+        for m in rx.finditer(text):
+            rest = m.group(2) if rx.groups > 1 else ""
+            for number in _expand(m.group(1), rest or ""):
+                found.add(f"{kind} {number}")
+    return found
+
+
+@cache
+def paper_items(paper: str) -> frozenset[str] | None:
+    """Equations, tables, figures and sections that the paper's text contains (None if absent)."""
+    path = ROOT.parent / "shared" / "papers" / PAPER_FILES[paper]
+    if not path.exists():
+        return None
+    text = path.read_text()
+    items = set(items_in_text(text, dotted=True))
+    section = None  # lettered subsections under a roman-numbered section (WF: "IV." then "C.")
+    for line in text.splitlines():
+        roman = re.match(r"^(?:#+\s*)?([IVX]+)\.\s+[A-Z]", line)
+        letter = re.match(r"^(?:#+\s*)?([A-H])\.\s+[A-Z][a-z]", line)
+        if roman:
+            section = roman.group(1)
+        elif letter and section:
+            items.add(f"Sec. {section}.{letter.group(1)}")
+    items.update(re.findall(r"\\tag\{(" + _NUM + r")\}", text))
+    items.update(re.findall(r"\((" + _NUM + r")\)", text))
+    items.update(f"Sec. {m}" for m in re.findall(r"(?m)^(?:#+\s*)?(\d+(?:\.\d+)*)\.?\s+[A-Z]", text))
+    items.update(f"Sec. {m}" for m in re.findall(r"(?m)^(?:#+\s*)?([IV]+(?:\.[A-D])?)\.?\s+[A-Z]", text))
+    for block in re.findall(r"Remarks?:(.{0,3000})", text, flags=re.S):  # "Remarks: (i) ... (ii) ..."
+        items.update(f"Remark {m}" for m in re.findall(r"\(([ivx]+)\)", block))
+    appendix = re.compile(r"(?m)^(?:#+\s*)?APPENDIX\s+([A-H])\b", flags=re.I)
+    items.update(f"Appendix {m}" for m in appendix.findall(text))
+    return frozenset(items)
+
+
+@dataclass(frozen=True)
+class BookPage:
+    """One page of the book: its docname, title, chapter paper, labels and mentions."""
+
+    docname: str
+    title: str
+    paper: str | None
+    displayed: frozenset[str]  # paper equation numbers with a labelled display
+    labels: tuple[str, ...]
+    mentioned: frozenset[str]
+
+
+@cache
+def book_pages() -> tuple[BookPage, ...]:
+    pages = []
+    book = ROOT / "book"
+    for path in sorted(book.rglob("*.md")):
+        if "_build" in path.parts or path.name.startswith("_"):
+            continue
+        rel = path.relative_to(book).with_suffix("").as_posix()
+        text = path.read_text()
+        title = next((ln[2:].strip() for ln in text.splitlines() if ln.startswith("# ")), rel)
+        labels = tuple(_LABEL.findall(text))
+        numbers = {paper_equation_number(label) for label in labels}
+        pages.append(
+            BookPage(
+                docname=rel,
+                title=title,
+                paper=CHAPTER_PAPER.get(rel.split("/")[0]) if "/" in rel else None,
+                displayed=frozenset(n for n in numbers if n),
+                labels=labels,
+                mentioned=frozenset(items_in_text(text, dotted=True)),
+            )
+        )
+    return tuple(pages)
+
+
+@cache
+def test_uses() -> dict[str, tuple[str, ...]]:
+    """Function name -> the test files that use it (imports, calls, attribute access)."""
+    uses: dict[str, set[str]] = defaultdict(set)
+    for path in sorted((ROOT / "tests").glob("test_*.py")):
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, ast.Name):
+                uses[node.id].add(path.name)
+            elif isinstance(node, ast.Attribute):
+                uses[node.attr].add(path.name)
+            elif isinstance(node, ast.ImportFrom):
+                for alias in node.names:
+                    uses[alias.name].add(path.name)
+    return {k: tuple(sorted(v)) for k, v in uses.items()}
+
+
+@dataclass
+class Entry:
+    """One paper item with everything that refers to it."""
+
+    ref: Ref
+    functions: list[Implementation] = field(default_factory=list)
+    displayed_on: list[BookPage] = field(default_factory=list)
+    mentioned_on: list[BookPage] = field(default_factory=list)
+    tests: set[str] = field(default_factory=set)
+    claims: list[str] = field(default_factory=list)
+
+
+@dataclass
+class Index:
+    entries: dict[Ref, Entry]
+    implementations: tuple[Implementation, ...]
+
+    def by_paper(self, paper: str) -> list[Entry]:
+        def key(e: Entry) -> tuple:
+            item = e.ref.item
+            kind = 0 if e.ref.is_equation else 1
+            parts = re.findall(r"\d+|[A-Za-z]+", item)
+            return (kind, [(0, int(p)) if p.isdigit() else (1, p) for p in parts])
+
+        return sorted((e for e in self.entries.values() if e.ref.paper == paper), key=key)
+
+
+def claim_refs(locator: str, paper: str) -> list[Ref]:
+    """The items a claim's locator names, as references of its paper."""
+    return [Ref(paper, item) for item in sorted(items_in_text(locator, dotted=True))]
+
+
+@cache
+def build_index() -> Index:
+    """Assemble the index from the decorators, the book's pages, the tests and the ledger."""
+    from navcore import ledger
+
+    implementations = registry()
+    entries: dict[Ref, Entry] = {}
+
+    def entry(ref: Ref) -> Entry:
+        return entries.setdefault(ref, Entry(ref))
+
+    uses = test_uses()
+    for impl in implementations:
+        for ref in impl.refs:
+            e = entry(ref)
+            e.functions.append(impl)
+            e.tests.update(uses.get(impl.qualname.split(".")[-1], ()))
+    for claim in ledger.claims():
+        for ref in claim_refs(claim.locator, claim.paper):
+            entry(ref).claims.append(claim.id)
+    for page in book_pages():
+        if page.paper is None:
+            continue
+        for number in page.displayed:
+            entry(Ref(page.paper, number)).displayed_on.append(page)
+    for ref, e in entries.items():
+        e.mentioned_on = [
+            p
+            for p in book_pages()
+            if p.paper == ref.paper and ref.item in p.mentioned and p not in e.displayed_on
+        ]
+    return Index(entries, implementations)
+
+
+def problems(index: Index | None = None) -> list[str]:
+    """Every broken link of the chain, as sentences (empty when the index is whole)."""
+    index = index or build_index()
+    out = []
+    for ref, e in sorted(index.entries.items()):
+        if e.functions and not (e.displayed_on or e.mentioned_on):
+            names = ", ".join(f.name for f in e.functions)
+            out.append(f"{ref}: implemented by {names} but shown on no page of the {ref.paper} chapter")
+        known = paper_items(ref.paper)
+        if known is not None and ref.item not in known and str(ref) not in OCR_LOST:
+            who = [f.name for f in e.functions] + e.claims + [p.docname for p in e.displayed_on]
+            out.append(f"{ref}: not an item of the paper's text (named by {', '.join(who)})")
+    for page in book_pages():
+        if page.paper is None:
+            continue
+        for label in page.labels:
+            if label.startswith(f"eq-{page.paper.lower()}-x-"):
+                continue
+            if paper_equation_number(label) is None:
+                out.append(
+                    f"{page.docname}: label {label!r} is neither eq-<paper>-<number> nor eq-<paper>-x-<name>"
+                )
+    return out
+
+
+def _page_link(page: BookPage, displayed: bool) -> str:
+    mark = " ★" if displayed else ""
+    return f"{{doc}}`{page.docname} </{page.docname}>`{mark}"
+
+
+def index_markdown(paper: str, index: Index | None = None) -> str:
+    """The paper's items as a Markdown table: functions, tests, pages, claims."""
+    index = index or build_index()
+    rows = ["| Item | navcore | Tests | Book | Claims |", "|---|---|---|---|---|"]
+    for e in index.by_paper(paper):
+        item = f"Eq. ({e.ref.item})" if e.ref.is_equation else e.ref.item
+        funcs = "<br>".join(f"`{f.module.removeprefix('navcore.')}.{f.qualname}`" for f in e.functions) or "—"
+        tests = ", ".join(f"`{t}`" for t in sorted(e.tests)) or "—"
+        pages = [_page_link(p, True) for p in e.displayed_on] + [_page_link(p, False) for p in e.mentioned_on]
+        rows.append(f"| {item} | {funcs} | {tests} | {'<br>'.join(pages) or '—'} | {len(e.claims) or '—'} |")
+    return "\n".join(rows)
+
+
+def reverse_markdown(index: Index | None = None) -> str:
+    """Each decorated navcore function and the paper items it implements."""
+    index = index or build_index()
+    rows = ["| navcore function | Implements |", "|---|---|"]
+    for impl in index.implementations:
+        refs = ", ".join(f"{r.paper} Eq. ({r.item})" if r.is_equation else str(r) for r in impl.refs)
+        rows.append(f"| `{impl.module.removeprefix('navcore.')}.{impl.qualname}` | {refs} |")
+    return "\n".join(rows)
