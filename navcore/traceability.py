@@ -304,8 +304,13 @@ def problems(index: Index | None = None) -> list[str]:
 
 
 def _page_link(page: BookPage, displayed: bool) -> str:
-    mark = " ★" if displayed else ""
-    return f"{{doc}}`{page.docname} </{page.docname}>`{mark}"
+    mark = "\u00a0★" if displayed else ""
+    return f"{{doc}}`{page.docname.split('/')[-1]} </{page.docname}>`{mark}"
+
+
+def _boxed(rows: list[str]) -> str:
+    """A Markdown table in a container the book's CSS sets in a smaller font."""
+    return "```{container} trace-table\n" + "\n".join(rows) + "\n```"
 
 
 def index_markdown(paper: str, index: Index | None = None) -> str:
@@ -313,12 +318,12 @@ def index_markdown(paper: str, index: Index | None = None) -> str:
     index = index or build_index()
     rows = ["| Item | navcore | Tests | Book | Claims |", "|---|---|---|---|---|"]
     for e in index.by_paper(paper):
-        item = f"Eq. ({e.ref.item})" if e.ref.is_equation else e.ref.item
-        funcs = "<br>".join(f"`{f.module.removeprefix('navcore.')}.{f.qualname}`" for f in e.functions) or "—"
-        tests = ", ".join(f"`{t}`" for t in sorted(e.tests)) or "—"
+        item = f"Eq.\u00a0({e.ref.item})" if e.ref.is_equation else e.ref.item
+        funcs = "<br>".join(f"`{f.qualname}`" for f in e.functions) or "—"
+        tests = "<br>".join(t.removesuffix(".py") for t in sorted(e.tests)) or "—"
         pages = [_page_link(p, True) for p in e.displayed_on] + [_page_link(p, False) for p in e.mentioned_on]
         rows.append(f"| {item} | {funcs} | {tests} | {'<br>'.join(pages) or '—'} | {len(e.claims) or '—'} |")
-    return "\n".join(rows)
+    return _boxed(rows)
 
 
 def reverse_markdown(index: Index | None = None) -> str:
@@ -328,4 +333,4 @@ def reverse_markdown(index: Index | None = None) -> str:
     for impl in index.implementations:
         refs = ", ".join(f"{r.paper} Eq. ({r.item})" if r.is_equation else str(r) for r in impl.refs)
         rows.append(f"| `{impl.module.removeprefix('navcore.')}.{impl.qualname}` | {refs} |")
-    return "\n".join(rows)
+    return _boxed(rows)
