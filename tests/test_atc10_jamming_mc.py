@@ -16,3 +16,26 @@ def test_simulated_rates_exceed_bounds() -> None:
         sigma_d = mc.binomial_sigma(r.detection, r.trials)
         assert np.all(r.detection_bound <= r.detection + 3 * sigma_d)
         assert np.all(np.isfinite(r.false_alarm_bound)) and np.all(r.false_alarm_bound > 0)
+
+
+def test_false_track_search_matches_brute_force() -> None:
+    """Oracle: explicit search over every chain of quadruplets, trial by trial, for K = 1-3."""
+    rng = np.random.default_rng(7)
+    for k in (1, 2, 3):
+        r = mc.TRACK_W + (k - 1) * mc.TRACK_V
+        decl = rng.random((200, k, 4, 12 + 2 * r)) < 0.25
+        fast = mc.false_track_exists(decl, mc.TRACK_W, mc.TRACK_V)
+        slow = mc.false_track_exists_brute_force(decl, mc.TRACK_W, mc.TRACK_V)
+        assert np.array_equal(fast, slow)
+        assert 0.05 < fast.mean() < 0.95  # both outcomes occur, so the comparison has teeth
+
+
+def test_false_track_bound_below_simulation() -> None:
+    """Oracle: the seeded false-track simulation; F G^(K-1) must not exceed it (3 sigma)."""
+    for r in mc.simulate_false_tracks():
+        sigma = mc.binomial_sigma(r.simulated, r.trials)
+        assert np.all(r.bound <= r.simulated + 3 * sigma)
+        assert np.all(np.diff(r.simulated) >= 0)  # common random numbers: monotone in p_f
+    k1 = mc.simulate_false_tracks()[0]
+    # K = 1: the event is a consistent quadruplet, as in the first-stage false-alarm bound
+    assert k1.k == 1 and np.allclose(k1.bound, mc.false_track_bound(k1.p_f, 1))

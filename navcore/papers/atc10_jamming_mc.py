@@ -13,7 +13,14 @@ structure is simulated at reduced size so that the events are frequent enough to
 
 The simulated false-alarm rate is compared with ``F^(K t + 1)`` (B.11), where
 ``F = [1 - (1 - p_f)^n_a][1 - (1 - p_f)^(2w+1)]^3`` is (B.6) for this window, and the
-simulated detection rate with ``P_DL`` of (2.4.2). No part of this module is a published claim.
+simulated detection rate with ``P_DL`` of (2.4.2).
+
+The ambiguous-detection bound (Appendix C) rests on false *tracks*: one noise quadruplet per
+segment, the first a consistent list entry, each later one within the track window of the
+previous one. :func:`simulate_false_tracks` decides exactly whether such a chain exists (by
+propagating the reachable offset triples; :func:`false_track_exists_brute_force` is the
+explicit search used as its test oracle) and compares the rate with ``F G^(K-1)`` of (B.6) and
+(C.14) at the reduced sizes. No part of this module is a published claim.
 """
 
 from __future__ import annotations
@@ -110,3 +117,126 @@ def binomial_sigma(rate: np.ndarray, trials: int) -> np.ndarray:
     """Standard error of a simulated rate (with a floor of one event for zero counts)."""
     r = np.maximum(rate, 1.0 / trials)
     return np.sqrt(r * (1 - r) / trials)
+
+
+# --- ambiguous detections (Appendix C): false tracks across segments --------------------------
+
+#: Reduced sizes of the false-track simulation: filter-1 samples per segment, the list window
+#: (+-W samples: a consistent quadruplet) and the track window (+-V samples: how far a time
+#: difference may move from one segment to the next), trials, and the p_f grid.
+TRACK_N_A = 60
+TRACK_W = 2
+TRACK_V = 1
+TRACK_TRIALS = 2000
+TRACK_SEED = 19720623
+TRACK_PF = np.geomspace(0.02, 0.3, 8)
+TRACK_KS = (1, 2, 3)
+
+
+@dataclass(frozen=True)
+class FalseTrackRates:
+    """Simulated probability that a false track exists over K segments, and the bound F G^(K-1)."""
+
+    k: int
+    p_f: np.ndarray
+    simulated: np.ndarray
+    bound: np.ndarray
+    trials: int
+
+
+def _shift_or(reach: np.ndarray, v: int) -> np.ndarray:
+    """Dilate a boolean (trials, S, S, S) array by +-v along the three offset axes."""
+    out = reach.copy()
+    for axis in (1, 2, 3):
+        acc = out.copy()
+        for s in range(1, v + 1):
+            acc[(slice(None),) * axis + (slice(s, None),)] |= out[(slice(None),) * axis + (slice(None, -s),)]
+            acc[(slice(None),) * axis + (slice(None, -s),)] |= out[(slice(None),) * axis + (slice(s, None),)]
+        out = acc
+    return out
+
+
+def false_track_exists(decl: np.ndarray, w: int, v: int) -> np.ndarray:
+    """Whether a false track exists, for declarations ``decl`` of shape (trials, K, 4, n_a + 2R).
+
+    Filter 1 uses the central ``n_a`` samples; ``R = w + (K - 1) v`` pads filters 2-4. A false
+    track is one quadruplet per segment: a filter-1 declaration at ``a_k`` and, for each filter
+    ``j = 2..4``, a declaration at ``a_k + delta_kj`` with ``|delta_1j| <= w`` in the first
+    segment (a consistent list entry) and ``|delta_kj - delta_(k-1)j| <= v`` afterwards (a
+    physically possible track). The existence is decided exactly, by propagating the set of
+    reachable offset triples from segment to segment.
+    """
+    trials, k, _, length = decl.shape
+    r = w + (k - 1) * v
+    n_a = length - 2 * r
+    size = 2 * r + 1
+    idx = np.arange(n_a)[:, None] + np.arange(size)[None, :]  # (n_a, S): sample of offset i - r
+    central = np.zeros(size, bool)
+    central[r - w : r + w + 1] = True
+    reach = None
+    for seg in range(k):
+        d1 = decl[:, seg, 0, r : r + n_a].astype(np.float32)
+        e2, e3, e4 = (decl[:, seg, j][:, idx].astype(np.float32) for j in (1, 2, 3))  # (T, n_a, S)
+        pair = (d1[:, :, None, None] * e2[:, :, :, None] * e3[:, :, None, :]).reshape(
+            trials, n_a, size * size
+        )
+        q = (np.matmul(pair.transpose(0, 2, 1), e4) > 0).reshape(trials, size, size, size)
+        if reach is None:
+            reach = q & central[:, None, None] & central[None, :, None] & central[None, None, :]
+        else:
+            reach = q & _shift_or(reach, v)
+    return reach.reshape(trials, -1).any(axis=1)
+
+
+def false_track_exists_brute_force(decl: np.ndarray, w: int, v: int) -> np.ndarray:
+    """The same decision by explicit search over every chain of quadruplets (slow; for tests)."""
+    trials, k, _, length = decl.shape
+    r = w + (k - 1) * v
+    n_a = length - 2 * r
+    out = np.zeros(trials, bool)
+    for t in range(trials):
+        states = set()
+        for seg in range(k):
+            new = set()
+            for a in np.flatnonzero(decl[t, seg, 0, r : r + n_a]):
+                lists = [[dj for dj in range(-r, r + 1) if decl[t, seg, j, r + a + dj]] for j in (1, 2, 3)]
+                for d2 in lists[0]:
+                    for d3 in lists[1]:
+                        for d4 in lists[2]:
+                            cand = (d2, d3, d4)
+                            if seg == 0:
+                                ok = max(map(abs, cand)) <= w
+                            else:
+                                ok = any(
+                                    max(abs(c - p) for c, p in zip(cand, prev, strict=True)) <= v
+                                    for prev in states
+                                )
+                            if ok:
+                                new.add(cand)
+            states = new
+        out[t] = bool(states)
+    return out
+
+
+def false_track_bound(p_f: np.ndarray, k: int) -> np.ndarray:
+    """``F G^(K-1)`` at the reduced sizes: (B.6) and (C.14) with n_a, 2W+1 and 2V+1 samples."""
+    log_pf = np.log(p_f)
+    log_f = jm.log_one_minus_power(log_pf, TRACK_N_A) + 3 * jm.log_one_minus_power(log_pf, 2 * TRACK_W + 1)
+    log_g = jm.log_one_minus_power(log_pf, TRACK_N_A) + 3 * jm.log_one_minus_power(log_pf, 2 * TRACK_V + 1)
+    return np.exp(log_f + (k - 1) * log_g)
+
+
+@cache
+def simulate_false_tracks() -> tuple[FalseTrackRates, ...]:
+    """Seeded simulation of false tracks for K in :data:`TRACK_KS` (common random numbers over p_f)."""
+    rng = np.random.default_rng(TRACK_SEED)
+    k_max = max(TRACK_KS)
+    r_max = TRACK_W + (k_max - 1) * TRACK_V
+    u = rng.random((TRACK_TRIALS, k_max, 4, TRACK_N_A + 2 * r_max), dtype=np.float32)
+    out = []
+    for k in TRACK_KS:
+        pad = r_max - (TRACK_W + (k - 1) * TRACK_V)
+        uk = u[:, :k, :, pad : u.shape[-1] - pad]
+        sim = np.array([false_track_exists(uk < p, TRACK_W, TRACK_V).mean() for p in TRACK_PF])
+        out.append(FalseTrackRates(k, TRACK_PF, sim, false_track_bound(TRACK_PF, k), TRACK_TRIALS))
+    return tuple(out)
