@@ -39,3 +39,11 @@ def test_false_track_bound_below_simulation() -> None:
     k1 = mc.simulate_false_tracks()[0]
     # K = 1: the event is a consistent quadruplet, as in the first-stage false-alarm bound
     assert k1.k == 1 and np.allclose(k1.bound, mc.false_track_bound(k1.p_f, 1))
+
+
+def test_false_track_simulation_is_deterministic() -> None:
+    """Oracle: a second, uncached run of the seeded simulation reproduces the cached one exactly."""
+    first = mc.simulate_false_tracks()
+    second = mc.simulate_false_tracks.__wrapped__()
+    for a, b in zip(first, second, strict=True):
+        assert np.array_equal(a.simulated, b.simulated) and np.array_equal(a.bound, b.bound)
