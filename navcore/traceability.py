@@ -197,7 +197,7 @@ def book_pages() -> tuple[BookPage, ...]:
 
 
 @cache
-def test_uses() -> dict[str, tuple[str, ...]]:
+def functions_used_by_tests() -> dict[str, tuple[str, ...]]:
     """Function name -> the test files that use it (imports, calls, attribute access)."""
     uses: dict[str, set[str]] = defaultdict(set)
     for path in sorted((ROOT / "tests").glob("test_*.py")):
@@ -255,7 +255,7 @@ def build_index() -> Index:
     def entry(ref: Ref) -> Entry:
         return entries.setdefault(ref, Entry(ref))
 
-    uses = test_uses()
+    uses = functions_used_by_tests()
     for impl in implementations:
         for ref in impl.refs:
             e = entry(ref)
