@@ -115,12 +115,15 @@ def test_gyrocompass_alignment_cancels_tilt_and_east_drift():
     src = ErrorSources(imu=spec)
     P = gyrocompass_alignment(initial_covariance(lay, src), lay, lat=45 * DEG)
     F = error_dynamics(lay, f_ned=(0, 0, -G0), C_bn=np.eye(3), lat=45 * DEG)
-    rng = np.random.default_rng(1)
-    X = rng.multivariate_normal(np.zeros(lay.size), P, size=5, method="eigh").T
-    xdot = F @ X
-    # terms of size g psi ~ 1e-3 m/s^2 cancel to sampling round-off; east psi rate likewise
-    assert np.max(np.abs(xdot[[3, 4]])) < 1e-5 * 100 * MICRO_G
-    assert np.max(np.abs(xdot[7])) < 1e-5 * 0.1 * DEG_PER_H
+    # F x = 0 on a row for every x the covariance admits <=> that row of F P vanishes. Compare
+    # with the size of the terms that cancel (|F| |P|, g psi ~ 1e-3 m/s^2), not with an absolute
+    # number: sampling x from the singular P (as an earlier version did) leaks eigen-solver
+    # round-off of the large position variances into these rows, which varies with the LAPACK.
+    FP = F @ P
+    scale = np.abs(F) @ np.abs(P)
+    for row in (3, 4, 7):  # north and east velocity error, east psi
+        assert np.all(np.abs(FP[row]) <= 1e-12 * np.max(scale[row])), row
+    assert np.max(scale[[3, 4, 7]]) > 0  # the rows do carry cancelling terms
     # heading error ~ east gyro drift / (Omega cos L)
     from navcore.units import OMEGA_EARTH
 
