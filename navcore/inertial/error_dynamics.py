@@ -81,6 +81,7 @@ __all__ = [
     "gyrocompass_alignment",
     "initial_covariance",
     "ins_error_layout",
+    "levelling_alignment",
     "process_noise_psd",
     "schuler_frequency",
     "schuler_period",
@@ -433,6 +434,34 @@ def initial_covariance(
     return np.diag(s**2)
 
 
+def _sensor_error_rates(layout: StateLayout, *, lat: float, C_bn: ArrayLike | None, g: float):
+    """Indices of the misalignment and sensor states, and ``(e_f, e_w)`` at rest.
+
+    ``e_f`` (3 x n_s) is the north/east/down specific-force error and ``e_w`` the rate error
+    ``C_bn delta omega`` produced by each sensor state (rows of :func:`error_dynamics`).
+    """
+    C_bn = np.eye(3) if C_bn is None else C_bn
+    F = error_dynamics(layout, f_ned=(0.0, 0.0, -g), C_bn=C_bn, lat=lat, g=g)
+    vv, a = layout.slice("velocity"), layout.slice("misalignment")
+    sensor = [b.name for b in layout.blocks if b.name.startswith(("gyro", "accel"))]
+    idx = np.concatenate([np.arange(layout.size)[layout.slice(s)] for s in sensor]) if sensor else []
+    idx = np.asarray(idx, dtype=int)
+    return np.arange(layout.size)[a], idx, F[vv][:, idx], -F[a][:, idx]
+
+
+def _replace_attitude(P0: ArrayLike, layout: StateLayout, ai: Array, idx: Array, T: Array) -> Array:
+    """Covariance with ``psi = T x_s`` (sensor states ``idx``) and the rest of ``P0`` kept."""
+    P0 = np.array(P0, dtype=float)
+    A = np.eye(layout.size)
+    A[ai, :] = 0.0
+    A[np.ix_(ai, idx)] = T
+    P_s = P0.copy()
+    P_s[ai, :] = 0.0
+    P_s[:, ai] = 0.0
+    P = A @ P_s @ A.T
+    return 0.5 * (P + P.T)
+
+
 @implements("SP Sec. 2.6.1")
 def gyrocompass_alignment(
     P0: ArrayLike,
@@ -458,27 +487,43 @@ def gyrocompass_alignment(
     :math:`\\psi = T x_s` with the sensor covariance of ``P0`` and the correlations that make
     the tilt cancel the accelerometer bias and the heading cancel the east gyro drift.
     """
-    P0 = np.array(P0, dtype=float)
-    C_bn = np.eye(3) if C_bn is None else C_bn
-    F = error_dynamics(layout, f_ned=(0.0, 0.0, -g), C_bn=C_bn, lat=lat, g=g)
-    vv, a = layout.slice("velocity"), layout.slice("misalignment")
-    sensor = [b.name for b in layout.blocks if b.name.startswith(("gyro", "accel"))]
-    idx = np.concatenate([np.arange(layout.size)[layout.slice(s)] for s in sensor]) if sensor else []
-    idx = np.asarray(idx, dtype=int)
-    ef = F[vv][:, idx]  # north, east, down specific-force error per sensor state
-    ew = -F[a][:, idx]  # C_bn delta omega
+    ai, idx, ef, ew = _sensor_error_rates(layout, lat=lat, C_bn=C_bn, g=g)
     T = np.zeros((3, idx.size))
     T[0] = ef[1] / g
     T[1] = -ef[0] / g
     W = OMEGA_EARTH
     # psi_dot_E = Omega sinL psi_N + Omega cosL psi_D - e_w,E = 0
     T[2] = (ew[1] - W * np.sin(lat) * T[0]) / (W * np.cos(lat))
-    A = np.eye(layout.size)
-    ai = np.arange(layout.size)[a]
-    A[ai, :] = 0.0
-    A[np.ix_(ai, idx)] = T
-    P_s = P0.copy()
-    P_s[ai, :] = 0.0
-    P_s[:, ai] = 0.0
-    P = A @ P_s @ A.T
-    return 0.5 * (P + P.T)
+    return _replace_attitude(P0, layout, ai, idx, T)
+
+
+@implements("KZL Sec. 3.1")
+def levelling_alignment(
+    P0: ArrayLike,
+    layout: StateLayout,
+    *,
+    heading_sigma: float,
+    lat: float,
+    C_bn: ArrayLike | None = None,
+    g: float = G0,
+    tilt_noise_sigma: float = 0.0,
+) -> Array:
+    """Attitude errors after levelling at rest and a heading from an external source.
+
+    Levelling makes the computed specific force exactly vertical, so the tilt cancels the
+    horizontal accelerometer errors, :math:`\\psi_N = e_{f,E}/g` and
+    :math:`\\psi_E = -e_{f,N}/g` (as in :func:`gyrocompass_alignment`). The heading does not
+    come from the gyros (a MEMS gyro cannot sense the Earth rate through its bias) but from
+    outside, e.g. the GPS track of KZL Eq. 4: an independent error of 1-sigma
+    ``heading_sigma`` (rad). ``tilt_noise_sigma`` (rad) adds an independent tilt per
+    horizontal axis, e.g. the averaged accelerometer noise :math:`N_a/(g\\sqrt{T})`.
+    """
+    require_nonnegative("heading_sigma", heading_sigma)
+    require_nonnegative("tilt_noise_sigma", tilt_noise_sigma)
+    ai, idx, ef, _ = _sensor_error_rates(layout, lat=lat, C_bn=C_bn, g=g)
+    T = np.zeros((3, idx.size))
+    T[0] = ef[1] / g
+    T[1] = -ef[0] / g
+    P = _replace_attitude(P0, layout, ai, idx, T)
+    P[ai, ai] += np.array([tilt_noise_sigma**2, tilt_noise_sigma**2, heading_sigma**2])
+    return P

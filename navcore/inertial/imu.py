@@ -8,9 +8,10 @@ factors of :mod:`navcore.units`, e.g. ``gyro_bias=0.01 * DEG_PER_H``.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, fields
+import math
+from dataclasses import dataclass, field, fields, replace
 
-from navcore._validate import require_nonnegative
+from navcore._validate import require_nonnegative, require_positive
 from navcore.trace import implements
 from navcore.units import (
     ARCSEC,
@@ -24,6 +25,7 @@ from navcore.units import (
 __all__ = [
     "ImuSpec",
     "angle_random_walk_deg_per_sqrt_h",
+    "gyro_bias_calibrated_at_rest",
     "imu_spec_from_published",
     "noise_only",
     "velocity_random_walk_m_per_s_per_sqrt_h",
@@ -168,4 +170,28 @@ def noise_only(spec: ImuSpec) -> ImuSpec:
         gyro_random_walk=spec.gyro_random_walk,
         accel_random_walk=spec.accel_random_walk,
         source=spec.source,
+    )
+
+
+@implements("KZL Sec. 3.1")
+def gyro_bias_calibrated_at_rest(spec: ImuSpec, averaging_time: float) -> ImuSpec:
+    """The spec after the turn-on gyro bias was measured by averaging at rest for ``averaging_time``.
+
+    Averaging white rate noise of root PSD :math:`N` for :math:`T` seconds leaves a random
+    constant residual of 1-sigma :math:`N/\\sqrt{T}`; that residual replaces ``gyro_bias``
+    (KZL Sec. 3.1: the gyro biases are calibrated while the vehicle is stationary). The
+    Earth rate the gyros also sense is assumed known and removed.
+
+    Examples
+    --------
+    >>> from navcore.units import DEG_PER_H, DEG_PER_H_PER_SQRT_HZ
+    >>> s = ImuSpec("x", gyro_bias=360 * DEG_PER_H, gyro_random_walk=180 * DEG_PER_H_PER_SQRT_HZ)
+    >>> round(gyro_bias_calibrated_at_rest(s, 300.0).gyro_bias / DEG_PER_H, 3)
+    10.392
+    """
+    require_positive("averaging_time", averaging_time)
+    return replace(
+        spec,
+        name=f"{spec.name} (gyro bias calibrated over {averaging_time:g} s)",
+        gyro_bias=spec.gyro_random_walk / math.sqrt(averaging_time),
     )

@@ -133,9 +133,9 @@ ERRATA = [
         finding="With the Table 1 gyro bias (360 deg/h) the heading error after 180 s is about 18-19 deg "
         "RMS, below 20 deg; exceeding 20 deg needs a bias above about 400 deg/h or an extra "
         "initial heading error.",
-        evidence="Seeded 100 Hz Monte Carlo without initialisation against the closed form "
-        "sqrt((b t)^2 + N^2 t + sigma0^2) = 18.0 deg.",
-        claims=("KZL-c17",),
+        evidence="Seeded 100 Hz Monte Carlo without initialisation and the linear covariance "
+        "engine of SP Sec. 2.6, both against the closed form sqrt((b t)^2 + N^2 t + sigma0^2) = 18.0 deg.",
+        claims=("KZL-c17", "KZL-c17-covariance"),
         discussed_in=PAGE3,
     ),
     Erratum(
