@@ -134,7 +134,6 @@ _ASSUMED_INIT = (
     f"paper) spans {INIT_TIME_RANGE_S[0]:g}-{INIT_TIME_RANGE_S[1]:g} s"
 )
 
-_WHY = "engine 1-sigma, exact for the linear model; "
 _C16 = printed("3", why="the paper prints an integer bound")
 _C17 = printed("20", why="the paper prints an integer bound")
 _C22P = printed("1", extra_abs=init_time_band("position", 0) / 1000.0, why=_ASSUMED_INIT)
@@ -146,8 +145,9 @@ _ARW_VEL = G0 * KZL_IMU.gyro_random_walk * np.sqrt(_T**3 / 3)
 _BIAS_VEL = G0 * gyro_bias_calibrated_at_rest(KZL_IMU, INIT_TIME_S).gyro_bias * _T**2 / 2
 
 _NOTE_INIT = (
-    "Linear covariance analysis with the SP Sec. 2.6 engine (psi-angle model, Earth and transport "
-    "rate), 1 s steps, the Table 1 IMU and flight. Initialisation: levelling correlated with the "
+    "Exact 1-sigma of the linearised model (no sampling error): covariance analysis with the SP "
+    "Sec. 2.6 engine (psi-angle model, Earth and transport rate), 1 s steps, the Table 1 IMU and "
+    "flight. Initialisation: levelling correlated with the "
     f"accelerometer bias, GPS heading with a {HEADING_SIGMA_RAD / DEG:g} deg crab angle (assumed), "
     f"gyro bias calibrated at rest over {INIT_TIME_S:g} s (assumed)."
 )
@@ -164,7 +164,7 @@ CLAIMS = [
         compute=lambda: float(standalone_sigma("misalignment")[2]),
         tolerance=_C16[1],
         status="consistent",
-        note=_WHY + _NOTE_INIT + " Consistent, not reproduced: the crab angle and averaging time are "
+        note=_NOTE_INIT + " Consistent, not reproduced: the crab angle and averaging time are "
         "assumed. The Monte Carlo RMS of the same flight is KZL-c16.",
         discussed_in=PAGE3,
     ),
@@ -179,7 +179,8 @@ CLAIMS = [
         compute=lambda: float(standalone_sigma("misalignment", initialise=False)[2]),
         tolerance=_C17[1],
         status="discrepant",
-        note=_WHY + "no initialisation: nominal attitude, only the crab angle unknown, the full "
+        note="Exact 1-sigma of the linearised model (SP Sec. 2.6 engine) with no initialisation: "
+        "nominal attitude, only the crab angle unknown, the full "
         "Table 1 gyro bias (360 deg/h) as a random constant. The Monte Carlo RMS is KZL-c17.",
         erratum="KZL-E7-uncalibrated-heading",
         oracle=lambda: heading_closed_form_deg(180.0, calibrated=False),
@@ -200,7 +201,7 @@ CLAIMS = [
         compute=lambda: float(standalone_sigma("position")[0]) / 1000.0,
         tolerance=_C22P[1],
         status="consistent",
-        note=_WHY + _NOTE_INIT + " 'About 1 km' read per horizontal axis (north shown; east agrees "
+        note=_NOTE_INIT + " 'About 1 km' read per horizontal axis (north shown; east agrees "
         "to 0.1 %). The Monte Carlo RMS is KZL-c22-position.",
         discussed_in=PAGE3,
     ),
@@ -214,7 +215,7 @@ CLAIMS = [
         compute=lambda: float(standalone_sigma("velocity")[0]),
         tolerance=_C22V[1],
         status="consistent",
-        note=_WHY + _NOTE_INIT + f" Angle random walk (g N sqrt(t^3/3) = {_ARW_VEL:.1f} m/s) and the "
+        note=_NOTE_INIT + f" Angle random walk (g N sqrt(t^3/3) = {_ARW_VEL:.1f} m/s) and the "
         f"calibration residual of the gyro bias (g b t^2/2 = {_BIAS_VEL:.1f} m/s) add in quadrature. "
         "The Monte Carlo RMS is KZL-c22-velocity.",
         discussed_in=PAGE3,
