@@ -99,6 +99,31 @@ def test_sensitivity_norms_and_bound(seed):
     assert gp <= 0.5 * position_sensitivity_bound(F0, np.linalg.norm(v), R) * (1 + 1e-12)
 
 
+def test_total_differential_is_second_order_accurate():
+    """Oracle: WF Eq. (1) evaluated directly; the residual of Eq. (7) falls as the square of the step."""
+    p, e, v = np.array([100.0, -300, 8000]), np.array([20000.0, 35000, 0]), np.array([190.0, 40, -3])
+    dp, dv = np.array([300.0, -200.0, 100.0]), np.array([5.0, 2.0, -4.0])
+    f0 = 1.0  # f is linear in f0: a 1 Hz carrier keeps the differences free of round-off
+
+    def residual(h):
+        df = doppler_frequency(f0, e, p + h * dp, v + h * dv)[0] - doppler_frequency(f0, e, p, v)[0]
+        gv, gp = doppler_gradient_velocity(f0, e, p)[0], doppler_gradient_position(f0, e, p, v)[0]
+        return abs(df - (gv @ (h * dv) + gp @ (h * dp)))
+
+    assert residual(1.0) < 0.05 * abs(doppler_gradient_velocity(f0, e, p)[0] @ dv)
+    assert residual(1.0) / residual(0.1) == pytest.approx(100.0, rel=0.05)
+
+
+def test_constant_position_error_translates_the_estimate():
+    """Oracle: WF Eq. (1) depends on p^e - p only, so a constant aperture-position error d moves the
+    first-order estimate of Eq. (6) by exactly d (the frequency estimate does not move)."""
+    pos, vel = _arc()
+    H = doppler_jacobian_emitter(F0, EMITTER, pos, vel)
+    d = np.array([1.0, -2.0, 0.5])
+    ft = signal_model_error(F0, EMITTER, pos, vel, pos + d, vel)  # exact, not linearised
+    np.testing.assert_allclose(linearized_location_error(H, ft), np.r_[d, 0.0], atol=1e-3)
+
+
 def test_ratio():
     """Oracle: arithmetic R / (2 |v|)."""
     assert velocity_to_position_sensitivity_ratio(200.0, 40_000.0) == pytest.approx(100.0)

@@ -44,3 +44,37 @@ def test_worked_example_federated_matches_true_velocity():
     assert np.sqrt(np.mean(r["vel_err"]["federated"] ** 2)) < 0.01
     np.testing.assert_allclose(e_fed, e_true, atol=2.0)
     assert np.sqrt(np.mean(e_nav[:, :2] ** 2)) > 3 * np.sqrt(np.mean(e_true[:, :2] ** 2))
+
+
+@pytest.mark.parametrize("sigma_a", [1e-5, 1e-3, 1e-2])
+@pytest.mark.parametrize("sigma_t", wf.SIGMA_T)
+def test_three_satellite_bound_is_weighted_mean_of_sigmas(sigma_a, sigma_t):
+    """Oracle: closed forms of WF Eqs. (14) and (17); with isotropic P_i the per-axis bound of Eq. (23) is
+    sum_i s_i / sum_i s_i^2 (s_i = 1/sigma_i), the mean of the sigma_i weighted by s_i^2 (premise of the
+    WF-fig2-order slack)."""
+    q, r = (sigma_a * wf.TS) ** 2, (200 * sigma_a) ** 2
+    post = (-q + np.sqrt(q * q + 4 * q * r)) / 2
+    prior = post + q
+    f_over_c = 1575.42e6 / 299_792_458.0
+    var_dg = 1 / (1 / prior + f_over_c**2 / wf.SIGMA_G**2)
+    s = 1 / np.sqrt([wf.SIGMA_N**2 + sigma_t**2, post, var_dg])
+    assert wf.sigma_d_bound(sigma_a, sigma_t, 3) == pytest.approx(s.sum() / (s**2).sum(), rel=1e-9)
+
+
+def test_prior_gap_closed_form():
+    """Oracle: 10 log10(1 + q/P+) with the closed-form steady state, largest over the figures' grid."""
+    grid = np.logspace(np.log10(wf.SIGMA_A_RANGE[0]), np.log10(wf.SIGMA_A_RANGE[1]), 31)
+    q = (grid * wf.TS) ** 2
+    post = (-q + np.sqrt(q * q + 4 * q * (200 * grid) ** 2)) / 2
+    assert wf.accelerometer_prior_gap_db() == pytest.approx(np.max(10 * np.log10(1 + q / post)), rel=1e-9)
+
+
+def test_gps_doppler_velocity_sigma():
+    """Oracle: arithmetic sigma_G c / f_L1 with the L1 carrier 1575.42 MHz."""
+    assert wf.gps_doppler_velocity_sigma() == pytest.approx(1.0 * 299_792_458.0 / 1575.42e6, rel=1e-12)
+
+
+def test_location_leverage_position_bias_is_a_translation():
+    """Oracle: WF Eq. (1) depends on p^e - p only: a constant 1 m aperture-position error moves the emitter
+    estimate by 1 m (to second order), whatever its direction."""
+    np.testing.assert_allclose(wf.location_error_leverage()["bias_p"], 1.0, atol=1e-3)

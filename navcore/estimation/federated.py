@@ -102,13 +102,15 @@ def navigation_mapped_covariance(tau: ArrayLike, P_N: ArrayLike, Q_T: ArrayLike)
 
 
 # --------------------------------------------------------------------------- Eqs. (12)-(14)
-@implements("WF 13", "WF 14")
+@implements("WF 12", "WF 13", "WF 14")
 def accelerometer_predict(
     x: ArrayLike, P: ArrayLike, accel: ArrayLike, Q_a: ArrayLike, Ts: float
 ) -> tuple[Array, Array]:
     """Time update of the accelerometer-integration filter (WF Eqs. (13)-(14), first lines).
 
-    ``x- = x + y_a Ts`` and ``P- = P + Q_a Ts^2``; ``accel`` in m/s^2, ``Q_a`` in (m/s^2)^2.
+    It propagates the process model of WF Eq. (12), ``x(k+1) = x(k) + y_a(k) Ts + w_a(k) Ts``
+    with ``Cov w_a = Q_a``: ``x- = x + y_a Ts`` and ``P- = P + Q_a Ts^2``; ``accel`` in m/s^2,
+    ``Q_a`` in (m/s^2)^2.
     """
     require_positive("Ts", Ts)
     x = as_finite_array("x", x, ndim=1)
@@ -118,12 +120,13 @@ def accelerometer_predict(
     return x_pred + a * Ts, P_pred
 
 
-@implements("WF 13", "WF 14")
+@implements("WF 12", "WF 13", "WF 14")
 def local_velocity_update(x: ArrayLike, P: ArrayLike, y_L: ArrayLike, R_L: ArrayLike) -> KalmanUpdate:
     """Measurement update with a direct local velocity measurement (WF Eq. (13), corrected).
 
-    The innovation is ``y_L - x-`` (a velocity); WF Eq. (13) prints ``y_a - x-``. The posterior
-    information is ``P-^-1 + R_L^-1`` (WF Eq. (14), second line).
+    The measurement model is the second line of WF Eq. (12), ``y_L = x + v_L`` with
+    ``Cov v_L = R_L`` (m/s and (m/s)^2). The innovation is ``y_L - x-`` (a velocity); WF Eq. (13)
+    prints ``y_a - x-``. The posterior information is ``P-^-1 + R_L^-1`` (WF Eq. (14), second line).
     """
     x = as_finite_array("x", x, ndim=1)
     return kf_update(x, P, y_L, np.eye(x.size), R_L)

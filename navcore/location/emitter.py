@@ -121,10 +121,11 @@ def doppler_frequency(f0: float, emitter: ArrayLike, position: ArrayLike, veloci
     return f0 + (f0 / C) * np.einsum("ij,ij->i", v, u)
 
 
-@implements("WF 8")
+@implements("WF 7", "WF 8")
 def doppler_gradient_velocity(f0: float, emitter: ArrayLike, position: ArrayLike) -> Array:
     """Gradient of the received frequency w.r.t. aperture velocity, ``(f0/c) u_R`` (WF Eq. (8)).
 
+    It is the velocity term ``df/dv`` of the total differential WF Eq. (7).
     Returns an (M, 3) array in Hz per (m/s); each row has norm ``f0/c``.
     """
     require_positive("f0", f0)
@@ -132,14 +133,15 @@ def doppler_gradient_velocity(f0: float, emitter: ArrayLike, position: ArrayLike
     return (f0 / C) * u
 
 
-@implements("WF 9")
+@implements("WF 7", "WF 9")
 def doppler_gradient_position(
     f0: float, emitter: ArrayLike, position: ArrayLike, velocity: ArrayLike
 ) -> Array:
     """Gradient of the received frequency w.r.t. aperture position (WF Eq. (9), exact form).
 
     ``df/dp = -(f0/(c R)) (v - (v.u_R) u_R)``: only the velocity component across the line
-    of sight matters. Returns an (M, 3) array in Hz per m.
+    of sight matters. It is the position term of the total differential WF Eq. (7).
+    Returns an (M, 3) array in Hz per m.
     """
     require_positive("f0", f0)
     u, R = _geometry(emitter, position)
@@ -223,11 +225,19 @@ def _weight(W: ArrayLike | None, M: int) -> Array:
     return Wa
 
 
-@implements("WF 6", "WF 4")
+@implements("WF 5", "WF 6", "WF 4")
 def linearized_location_error(H: ArrayLike, error: ArrayLike, W: ArrayLike | None = None) -> Array:
-    r"""First-order emitter-parameter error (WF Eq. (6)).
+    r"""First-order emitter-parameter error (WF Eqs. (5)-(6)).
 
-    :math:`(\mathbf H^T\mathbf W\mathbf H)^{-1}\mathbf H^T\mathbf W\,\boldsymbol\epsilon`.
+    :math:`(\mathbf H^T\mathbf W\mathbf H)^{-1}\mathbf H^T\mathbf W\,\boldsymbol\epsilon`: the
+    weighted least-squares solution of the linearised model WF Eq. (5),
+
+    .. math::
+
+        \mathbf H(\mathbf p^e-\hat{\mathbf p}^e)
+        = \mathbf f(\mathbf p^e,\hat\Theta)-\mathbf f(\hat{\mathbf p}^e,\hat\Theta),
+
+    combined with the normal equation WF Eq. (3).
 
     Parameters
     ----------
