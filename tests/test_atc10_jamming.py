@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import numpy as np
@@ -59,3 +60,52 @@ def test_table11_k100_would_need_pdl_098() -> None:
     assert paper.required_erp_dbw("ambiguous", 0.98, 100) == pytest.approx(
         paper.direct_adl_erp_dbw(0.98, 100), abs=1e-3
     )
+
+
+def test_pulse_energy_input_matches_printed_power_and_duration() -> None:
+    """Oracle: hand arithmetic, 30 dBW = 1000 W, 1000 W x 10 us = 10 mJ, and 10 mJ x 10 MHz = 50 dBW.
+
+    The thresholds use GEOMETRY.pulse_energy_j (the printed 10 mJ); it must equal the printed P0 tau.
+    """
+    assert paper.PULSE_POWER_DBW == 30.0 and paper.PULSE_DURATION_S == 10e-6
+    assert paper.GEOMETRY.pulse_energy_j == pytest.approx(1000.0 * 10e-6, rel=1e-15)
+    assert paper.GEOMETRY.energy_bandwidth_dbw == pytest.approx(50.0, abs=1e-12)
+
+
+def test_erp_by_transmission_length_against_direct_oracle() -> None:
+    """Oracle: the plain-probability grid search (direct_adl_erp_dbw) at every K of Table 1.1.
+
+    Sec. 1.1: the ERP rises with K; at the caption's P_D = 0.88 the K = 1000 system has no finite
+    threshold, at P_DL = 0.999 it has one.
+    """
+    for p_dl in (0.88, 0.999):
+        model = paper.erp_by_transmission_length(p_dl)
+        direct = [paper.direct_adl_erp_dbw(p_dl, k) for k in paper.TABLE_1_1_KS]
+        for m, d in zip(model, direct, strict=True):
+            assert (math.isinf(m) and math.isinf(d)) or m == pytest.approx(d, abs=0.01)
+        assert all(a < b for a, b in itertools.pairwise(direct))
+    assert math.isinf(paper.erp_by_transmission_length(0.88)[-1])
+    assert math.isfinite(paper.erp_by_transmission_length(0.999)[-1])
+
+
+def test_threshold_helpers_for_the_errata() -> None:
+    """Oracle: re-evaluating the bounds at the returned thresholds (an independent forward check)."""
+    # without the P_DL factor: 1/2 N G^(K-1) F = 0.01 N_T at the returned ERP
+    for p_dl, k in ((0.88, 1), (0.999, 100)):
+        x = 10 ** ((paper.adl_erp_dbw_without_pdl_factor(p_dl, k) - 50.0) / 10)
+        p_d = paper.design_p_d(p_dl, k)
+        log_n = float(jm.log_ambiguous_detection_bound(x, p_d, k)) - float(
+            jm.log_detection_lower_bound(p_d, k)
+        )
+        assert math.exp(log_n) == pytest.approx(0.01, rel=1e-8)
+        assert paper.adl_erp_dbw_without_pdl_factor(p_dl, k) < paper.required_erp_dbw("ambiguous", p_dl, k)
+    # half the samples: every count of (B.6) and (C.14) halves, the ERP scale does not
+    half, full = paper.HALF_SAMPLES_GEOMETRY, paper.GEOMETRY
+    assert half.samples_per_period == full.samples_per_period / 2
+    assert half.samples_per_delay_window == pytest.approx(full.samples_per_delay_window / 2, rel=1e-15)
+    assert half.samples_per_track_window == pytest.approx(full.samples_per_track_window / 2, rel=1e-15)
+    x = 10 ** ((paper.adl_erp_dbw_half_samples(0.88, 100) - 50.0) / 10)
+    n = math.exp(float(jm.log_ambiguous_detection_bound(x, paper.design_p_d(0.88, 100), 100, 0.0, half)))
+    assert n == pytest.approx(0.01, rel=1e-8)
+    # the p_f at the K = 1000, P_DL = 0.999 threshold, against the catalog's independent 0.27067
+    assert math.exp(paper.threshold_log_pf(0.999, 1000)) == pytest.approx(0.27067, abs=5e-5)

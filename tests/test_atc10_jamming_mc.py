@@ -47,3 +47,17 @@ def test_false_track_simulation_is_deterministic() -> None:
     second = mc.simulate_false_tracks.__wrapped__()
     for a, b in zip(first, second, strict=True):
         assert np.array_equal(a.simulated, b.simulated) and np.array_equal(a.bound, b.bound)
+
+
+def test_window_simulation_against_independent_formula() -> None:
+    """Oracle: the closed form (1 - p_f)^n for independent samples; correlated samples (neighbour
+    correlation 1/2) leave a window empty more often (Slepian's inequality), by a clear margin at
+    the K >= 10 threshold values of p_f."""
+    r = mc.simulate_window_declarations()
+    sigma = np.sqrt(r.empty_formula * (1 - r.empty_formula) / r.trials)
+    assert np.all(np.abs(r.empty_independent - r.empty_formula) <= 4 * sigma)
+    sigma_c = np.sqrt(r.empty_correlated * (1 - r.empty_correlated) / r.trials)
+    assert np.all(r.empty_correlated >= r.empty_formula - 3 * sigma_c)
+    high = r.p_f >= 0.1
+    assert np.all(r.empty_correlated[high] > r.empty_formula[high] + 10 * sigma_c[high])
+    assert np.all(np.diff(r.empty_correlated) < 0)  # common random numbers: monotone in p_f

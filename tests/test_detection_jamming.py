@@ -11,6 +11,8 @@ from scipy import optimize, stats
 
 from navcore.detection import jamming as jm
 from navcore.detection.neyman_pearson import detection_index_from_jammer_ratio
+from navcore.figures import atc10_jamming as fj
+from navcore.papers import atc10_jamming as paper
 
 GEOM = jm.SurveillanceGeometry()
 
@@ -119,19 +121,77 @@ def test_ambiguous_bound_matches_mpmath(x_db: float, k: int, p_d: float) -> None
     assert got == pytest.approx(expected, rel=1e-11)
 
 
-@pytest.mark.parametrize("k", [1, 10, 100, 1000])
-def test_sweep_over_60_db_is_finite_and_monotone(k: int) -> None:
-    """Oracle: properties. No NaN, no -inf, no underflow over x from -40 to +20 dB, and monotone."""
-    x = 10 ** (np.linspace(-40.0, 20.0, 601) / 10)
-    for p_dl in (0.88, 0.999):
-        p_d = jm.filter_detection_probability_for_bound(p_dl, k)
-        with np.errstate(all="raise"):
-            fl = jm.log_false_location_bound(x, p_d, k)
-            adl = jm.log_ambiguous_detection_bound(x, p_d, k)
-        for arr in (fl, adl):
-            assert np.all(np.isfinite(arr))
-            assert np.all(np.diff(arr) >= -1e-12)
-        assert np.all(np.exp(fl[-1]) > 0)
+def _figure_sweep_cases() -> list:
+    """Every (quantity, K, P_DL, t) that Figs. 2.1-2.16 draw, with the figure's J range in dB.
+
+    The ranges are widened to include -40..+20 dB (the original sweep) for every case.
+    """
+    cases = []
+    for p_dl in fj.K1_PDL:
+        for quantity in ("false", "ambiguous"):
+            cases.append(
+                pytest.param(quantity, 1, p_dl, 0.0, (-40.0, 20.0), id=f"{quantity}-K1-pdl{p_dl}-t0")
+            )
+    for _, quantity, k, p_dl in fj.K_FIGURES:
+        for t in fj.T_VALUES:
+            cases.append(
+                pytest.param(quantity, k, p_dl, t, (-40.0, 80.0), id=f"{quantity}-K{k}-pdl{p_dl}-t{t:g}")
+            )
+    return cases
+
+
+def _mp_log_bound(quantity: str, x_db: float, p_d: float, k: int, t: float) -> float:
+    """ln N_FL/N_T or ln N_ADL/N_T of (2.5.5)/(2.5.12) at 60 digits, with P_DL = 1 - exp(-K D(t || q))."""
+    with mpmath.workdps(60):
+        pf = mpmath.exp(_mp_log_pf(x_db, p_d))
+        f = _mp_log_one_minus_power(pf, 2e7) + 3 * _mp_log_one_minus_power(pf, 9.6e5)
+        if quantity == "false":
+            return float(mpmath.log(mpmath.mpf("0.9")) + (k * mpmath.mpf(t) + 1) * f)
+        q = mpmath.mpf(p_d) ** 4
+        tt = mpmath.mpf(t)
+        if t == 0:
+            div = -mpmath.log(1 - q)
+        else:
+            div = tt * mpmath.log(tt / q) + (1 - tt) * mpmath.log((1 - tt) / (1 - q))
+        pdl = -mpmath.expm1(-k * div)
+        g = _mp_log_one_minus_power(pf, 2e7) + 3 * _mp_log_one_minus_power(pf, GEOM.samples_per_track_window)
+        return float(mpmath.log(mpmath.mpf("0.05") * pdl) + (k - 1) * g + f)
+
+
+@pytest.mark.parametrize(("quantity", "k", "p_dl", "t", "x_range"), _figure_sweep_cases())
+def test_figure_sweeps_are_finite_exact_and_monotone(
+    quantity: str, k: int, p_dl: float, t: float, x_range: tuple[float, float]
+) -> None:
+    """Oracle: 60-digit mpmath at the ends and the middle of the sweep, plus properties.
+
+    Every bound the figures draw, on a 0.1 dB grid over the figure's range (and -40..+20 dB), with
+    every numpy floating-point error raising, underflow included: no NaN, no -inf (a silent zero in
+    the linear domain), non-decreasing in J, and equal to the 60-digit value where a clamp or an
+    underflowed intermediate would show (the low end, where the bounds are smallest).
+    """
+    lo, hi = x_range
+    x_db = np.linspace(lo, hi, round((hi - lo) * 10) + 1)
+    p_d = paper.design_p_d(p_dl, k, t)
+    fn = jm.log_false_location_bound if quantity == "false" else jm.log_ambiguous_detection_bound
+    with np.errstate(all="raise"):
+        log_bound = np.asarray(fn(10 ** (x_db / 10), p_d, k, t, paper.GEOMETRY))
+        log10_fig = fj.log10_bound(quantity, x_db, p_dl, k, t)
+    assert log_bound.shape == x_db.shape
+    assert np.all(np.isfinite(log_bound)) and np.all(np.isfinite(log10_fig))
+    assert np.all(np.diff(log_bound) >= -1e-12)
+    np.testing.assert_allclose(log10_fig, log_bound / math.log(10), rtol=1e-14, atol=0)
+    # no silent zero: wherever the bound is representable as a float, it is strictly positive
+    representable = log_bound > math.log(np.finfo(float).tiny)
+    with np.errstate(under="ignore"):
+        assert np.all(np.exp(log_bound[representable]) > 0)
+    # the bound stays below its J -> inf ceiling, which the top of every K > 1 range approaches
+    ceil = (jm.log_false_location_ceiling if quantity == "false" else jm.log_ambiguous_detection_ceiling)(
+        p_d, k, t, paper.GEOMETRY
+    )
+    assert np.all(log_bound <= ceil + 1e-12 * abs(ceil))
+    for i in (0, len(x_db) // 2, len(x_db) - 1):
+        expected = _mp_log_bound(quantity, float(x_db[i]), p_d, k, t)
+        assert float(log_bound[i]) == pytest.approx(expected, rel=1e-10, abs=1e-12)
 
 
 def test_bounds_approach_ceiling_as_jamming_grows() -> None:

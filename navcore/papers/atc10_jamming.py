@@ -8,6 +8,7 @@ alpha = 1 s, beta = 24 ms, v = 600 mph, 10 mJ pulses; design point t = 0).
 
 from __future__ import annotations
 
+import itertools
 import math
 from functools import cache
 
@@ -22,6 +23,7 @@ from navcore.detection.neyman_pearson import (
     detection_index_from_jammer_ratio,
     erf_parameter_from_detection_probability,
     false_alarm_probability,
+    log_false_alarm_probability,
 )
 from navcore.ledger import EXACT, Claim, Erratum, Tolerance, printed
 
@@ -38,6 +40,14 @@ FL_FRACTION_OF_CEILING = 0.99
 #: Antenna model assumed for Table 1.1 (L band; not stated in the paper).
 DISH_FREQUENCY_HZ = 1.6e9
 DISH_EFFICIENCY = 0.60
+#: Sec. 2.7, as printed: "10 mJoules (e.g. P0 = 30 dbw, tau = 10 usec)".
+PULSE_POWER_DBW = 30.0
+PULSE_DURATION_S = 10e-6
+#: Sec. 1.3, as printed: 50 ns rms time-of-arrival error, one position update per second.
+TOA_RMS_ERROR_S = 50e-9
+UPDATE_INTERVAL_S = 1.0
+#: The transmission lengths of Table 1.1 and Sec. 1.1.
+TABLE_1_1_KS = (1, 10, 100, 1000)
 
 #: Table 2.1 as printed: (K, P_DL, ERP dBW, relation).
 TABLE_2_1 = (
@@ -250,6 +260,72 @@ def _k1000_depends_critically() -> bool:
     )
 
 
+@cache
+def threshold_log_pf(p_dl: float, k: int) -> float:
+    """ln p_f at the t = 0 N_ADL = 0.01 N_T threshold of the design point (P_DL, K)."""
+    p_d = design_p_d(p_dl, k)
+    x_db = jm.jammer_ratio_threshold_db("ambiguous", ADL_LEVEL, p_d, k, 0.0, GEOMETRY)
+    return float(log_false_alarm_probability(p_d, detection_index_from_jammer_ratio(10 ** (x_db / 10))))
+
+
+#: The sample counts of (B.6) and (C.14) halved (B samples per second instead of 2B), with the
+#: energy-bandwidth product, and so the ERP scale, unchanged: a sensitivity to sample correlation.
+HALF_SAMPLES_GEOMETRY = jm.SurveillanceGeometry(bandwidth_hz=GEOMETRY.bandwidth_hz / 2)
+
+
+@cache
+def adl_erp_dbw_half_samples(p_dl: float, k: int) -> float:
+    """N_ADL = 0.01 N_T ERP (t = 0) when every window holds half as many independent samples."""
+    x_db = jm.jammer_ratio_threshold_db(
+        "ambiguous", ADL_LEVEL, design_p_d(p_dl, k), k, 0.0, HALF_SAMPLES_GEOMETRY
+    )
+    return float(jm.jammer_erp_dbw(x_db, GEOMETRY.pulse_energy_j, GEOMETRY.bandwidth_hz))
+
+
+@cache
+def adl_erp_dbw_without_pdl_factor(p_dl: float, k: int) -> float:
+    """ERP at which 1/2 N G^(K-1) F (the N_ADL bound without its P_DL factor) reaches 0.01 N_T.
+
+    Solving N_ADL = 0.01 P_DL N_T with the printed bound is the same equation.
+    """
+    p_d = design_p_d(p_dl, k)
+    x_db = jm.jammer_ratio_threshold_db("ambiguous", ADL_LEVEL * p_dl, p_d, k, 0.0, GEOMETRY)
+    return float(jm.jammer_erp_dbw(x_db, GEOMETRY.pulse_energy_j, GEOMETRY.bandwidth_hz))
+
+
+def max_pdl_factor_shift_db() -> float:
+    """Largest drop of the t = 0 N_ADL threshold when the P_DL factor of (2.5.12) is dropped, over
+    K = 1 (P_DL 0.88-0.999) and the finite Table 2.1 entries."""
+    points = [(p, 1) for p in (0.88, 0.9, 0.99, 0.999)] + [(p, k) for k, p, _, rel in TABLE_2_1 if rel == "="]
+    return max(required_erp_dbw("ambiguous", p, k) - adl_erp_dbw_without_pdl_factor(p, k) for p, k in points)
+
+
+def erp_by_transmission_length(p_dl: float) -> tuple[float, ...]:
+    """N_ADL = 0.01 N_T jammer ERP (dBW, t = 0) for K = 1, 10, 100, 1000 (``inf``: no finite power)."""
+    return tuple(required_erp_dbw("ambiguous", p_dl, k) for k in TABLE_1_1_KS)
+
+
+def _erp_rises_with_k() -> bool:
+    """Sec. 1.1: the required ERP grows with K, at the caption's P_D = 0.88 and at Table 2.1's 0.999.
+
+    The K < 100 values must be finite (a jammer exists); ``inf`` counts as larger than any number.
+    """
+    ok = True
+    for p_dl in (0.88, 0.999):
+        erps = erp_by_transmission_length(p_dl)
+        ok &= all(math.isfinite(e) for e in erps[:2]) and all(a < b for a, b in itertools.pairwise(erps))
+    return bool(ok)
+
+
+def _k1000_beyond_practical() -> bool:
+    """Sec. 1.1 "prohibit", for the caption's P_D >= 0.88 design: at K = 1000 the N_ADL ceiling
+    (J -> inf) stays below 0.01 N_T, so the threshold search returns no finite ERP, which is
+    beyond Table 2.1's ">130 dBW" (its K = 1000 entry for P_DL = 0.98)."""
+    ceiling = jm.log_ambiguous_detection_ceiling(design_p_d(0.88, 1000), 1000, 0.0, GEOMETRY)
+    table21_bound = next(float(text) for k, p, text, rel in TABLE_2_1 if k == 1000 and rel == ">")
+    return bool(ceiling < math.log(ADL_LEVEL) and required_erp_dbw("ambiguous", 0.88, 1000) > table21_bound)
+
+
 def _table11_matches_caption_pdl(direct: bool) -> bool:
     """Does every Table 1.1 ERP match the caption's P_D = 0.88 model within 1 dB?"""
     ok = True
@@ -302,6 +378,13 @@ E_A7 = "ATC10-E-jam-A7-ratio"
 E_KT = "ATC10-E-jam-floor-Kt"
 E_SUP = "ATC10-E-jam-NF-supremum"
 E_MINOR = "ATC10-E-jam-cosmetic"
+E_P0 = "ATC10-E-jam-P0-average-peak"
+E_INDEP = "ATC10-E-jam-sample-independence"
+E_C2 = "ATC10-E-jam-C2-track-window"
+E_B10 = "ATC10-E-jam-B10-reference"
+E_A_END = "ATC10-E-jam-appA-strict-sign"
+E_258 = "ATC10-E-jam-2.5.8-independence"
+E_A16 = "ATC10-E-jam-A16-small-pd"
 
 ERRATA = [
     Erratum(
@@ -429,6 +512,136 @@ ERRATA = [
         evidence="Cross-reading the text, the table of contents and the figure captions.",
         discussed_in=PAGE_K,
     ),
+    Erratum(
+        id=E_P0,
+        paper="ATC10",
+        locator="Sec. 2.6 and App. D (before (D.17))",
+        printed="Sec. 2.6: 'The average power of s_i(t) during transmission is P_0 = E/tau'; App. D: "
+        "'E = P_o tau, where P_o is peak signature power'",
+        finding="The two names agree only for a constant-envelope signature; for any other the peak power "
+        "exceeds E/tau. Read P0 as Sec. 2.6 defines it, the average power during the pulse, E/tau. No "
+        "number changes: every result depends on P0 and tau only through E = P0 tau (10 mJ).",
+        evidence="E is the integral of s_i(t)^2 over the pulse, so E = (average power) x tau by definition, "
+        "while (peak power) x tau >= E with equality only for a constant envelope. (D.17) and every bound "
+        "contain P0 only in the product P0 B tau = E B.",
+        claims=("ATC10-sec2.7-pulse-energy",),
+        discussed_in=PAGE,
+    ),
+    Erratum(
+        id=E_INDEP,
+        paper="ATC10",
+        locator="Eqs. (B.6), (C.14) and Sec. 2.3",
+        printed="Prob(Phi_1 | H_0) = (1 - (1 - p_f)^(2B alpha)) (1 - (1 - p_f)^(4B beta))^3, with the "
+        "filter output 'sampled at twice the Nyquist rate'",
+        finding="The product treats the 2B samples per second of one filter as independent. At twice the "
+        "Nyquist rate neighbouring samples of the matched-filter noise are correlated, and the segment edges "
+        "are ignored, so the '=' of (B.6) and the window factor of (C.14) are approximations. F, G and the "
+        "bounds N_FL and N_ADL built from them are therefore approximate lower bounds, not guaranteed ones, "
+        "and so is the paper's upper bound on the required jammer power.",
+        evidence="Positively correlated Gaussian samples cross a threshold somewhere in a window less often "
+        "than independent ones (Slepian's inequality), so the independent-sample factor overstates the "
+        "window probability. A seeded Monte Carlo of 24-sample windows with correlation 1/2 between "
+        "neighbours (a rectangular-chip code sampled twice per chip) shows the window left empty markedly "
+        "more often than (1 - p_f)^n at the K >= 10 threshold values of p_f. The list-level Monte Carlo of "
+        "the same page draws independent samples by construction and so cannot test this assumption. As a "
+        "sensitivity, counting half as many independent samples (B instead of 2B per second) moves the "
+        "K = 100 thresholds from "
+        f"{required_erp_dbw('ambiguous', 0.88, 100):.1f} to {adl_erp_dbw_half_samples(0.88, 100):.1f} dBW "
+        f"(P_DL = 0.88) and from {required_erp_dbw('ambiguous', 0.999, 100):.1f} to "
+        f"{adl_erp_dbw_half_samples(0.999, 100):.1f} dBW (0.999); K = 1000, P_DL = 0.999 then has "
+        + (
+            "no finite threshold."
+            if math.isinf(adl_erp_dbw_half_samples(0.999, 1000))
+            else f"a threshold of {adl_erp_dbw_half_samples(0.999, 1000):.1f} dBW."
+        ),
+        discussed_in=PAGE,
+    ),
+    Erratum(
+        id=E_C2,
+        paper="ATC10",
+        locator="Eqs. (C.2)-(C.5)",
+        printed="|T_1(1) - T_2(1)| <= v alpha / c seconds (and likewise for satellite 2)",
+        finding="T_1(1) - T_2(1) is the change in satellite 1's reception time between two successive "
+        "pulses: one repetition period alpha plus the change in range. Only the range change is bounded by "
+        "v alpha / c. The periods cancel in the difference of differences of (C.2), so (C.5) is right when "
+        "the triangle inequality is applied to the range-change terms alone. The bound also ignores the "
+        "satellites' own motion: only the aircraft moves the ranges.",
+        evidence=f"With alpha = {GEOMETRY.repetition_s:g} s and v = 600 mph, v alpha / c = "
+        f"{GEOMETRY.max_speed_m_s * GEOMETRY.repetition_s / units.C * 1e6:.3f} us, while the printed left "
+        "side is about alpha itself; (T_1(1) - T_2(1)) - (T_1(2) - T_2(2)) contains no alpha. Sec. 4 places "
+        "the satellites in synchronous orbits, whose slow drift makes the omission of satellite motion "
+        "small, but the appendix does not say so.",
+        discussed_in=PAGE,
+    ),
+    Erratum(
+        id=E_B10,
+        paper="ATC10",
+        locator="Eq. (B.10)",
+        printed="'From (B.8) and the statistical independence of rho(i,j), we obtain immediately' (B.10)",
+        finding="(B.10) follows from the event inclusion (B.9) and independence; read 'From (B.9)'. (B.8) "
+        "is the K = 1 bound, which enters only in the next step, (B.11).",
+        evidence="(B.10) bounds P_F by the probability of the intersection of Kt + 1 events rho(i,j) = 1 "
+        "named in (B.9), which factorises by independence; the text then applies (B.5) and (B.6), the "
+        "ingredients of (B.8), to reach (B.11).",
+        discussed_in=PAGE,
+    ),
+    Erratum(
+        id=E_A_END,
+        paper="ATC10",
+        locator="App. A, last line (after (A.18))",
+        printed="P_D > p_d^4",
+        finding="The K = 1 bound is P_D >= p_d^4, as printed in (2.4.1) and (A.10a). The appendix derives "
+        "the non-strict bound, and p_d^4 is approached as p_f -> 0.",
+        evidence="(2.4.1) and (A.10a) print >=. At K = 1 the list is non-empty with probability p_d^4 from "
+        "the true arrival alone, plus what noise declarations add, which vanishes as the jammer power goes "
+        "to zero; the closed-form bound at K = 1 equals p_d^4 exactly.",
+        claims=("ATC10-eq2.4.1",),
+        discussed_in=PAGE,
+    ),
+    Erratum(
+        id=E_258,
+        paper="ATC10",
+        locator="Eq. (2.5.8)",
+        printed="Prob(Gamma_D, gamma_D, psi_D, theta_D = 1) = Prob(Gamma_D | gamma_D, psi_D, theta_D) "
+        "Prob(gamma_D) Prob(psi_D | theta_D) Prob(theta_D)",
+        finding="The factorisation takes the false-track indicator gamma_D to be independent of the "
+        "detection and presence indicators (psi_D, theta_D), which the text does not state. It is not "
+        "exact: a false track puts an entry on every one of the K lists, so gamma_D = 1 forces the first "
+        "stage to decide 'present' (psi_D = 1) for any t < 1. The dependence is positive, so the product "
+        "still bounds the joint probability from below, and the factor P_DL in (2.5.12) is conservative.",
+        evidence="By the definitions of Sec. 2.5.2 and the rule of Sec. 2.4, Prob(gamma_D = 1, psi_D = 1 | "
+        "theta_D = 1) = Prob(gamma_D = 1 | theta_D = 1) >= Prob(gamma_D = 1 | theta_D = 1) Prob(psi_D = 1 | "
+        "theta_D = 1). The Appendix C bound on gamma_D uses noise-only declarations, so it holds given "
+        "theta_D = 1 as well (up to the one signal sample per filter). Dropping the factor P_DL lowers the "
+        "finite t = 0 thresholds of Table 2.1 and of K = 1 by at most "
+        f"{max_pdl_factor_shift_db():.2f} dB"
+        + (
+            ", and leaves the K = 1000, P_DL = 0.98 entry without a finite power."
+            if math.isinf(adl_erp_dbw_without_pdl_factor(0.98, 1000))
+            else "."
+        ),
+        discussed_in=PAGE,
+    ),
+    Erratum(
+        id=E_A16,
+        paper="ATC10",
+        locator="Eq. (A.16)",
+        printed="P(rho = 1 | H_1) ~ p_d^4, 'the approximation holds closely assuming reasonably large "
+        "enough values for p_d'",
+        finding="The K = 1000 designs do not have a large p_d: "
+        + ", ".join(f"p_d = {design_p_d(p, 1000):.3f} for P_DL = {p}" for p in (0.88, 0.98, 0.999))
+        + f", so p_d^4 <= {design_p_d(0.999, 1000) ** 4:.4f}, while near the jamming threshold noise alone "
+        "fills a list almost surely. The "
+        "approximation fails there, but, as the text says, the bound (A.17) stays valid: it is only loose.",
+        evidence="P(rho = 1 | H_1) >= p_d^4 because the true arrival alone fills the list, and the Chernoff "
+        "exponent D(t || q) increases with q for q > t (dD/dq = (q - t) / (q (1 - q))), so replacing "
+        "P(rho = 1 | H_1) by the smaller p_d^4 can only lower the bound. At the K = 1000, P_DL = 0.999 "
+        "threshold p_f = "
+        f"{math.exp(threshold_log_pf(0.999, 1000)):.2f}, and the noise-only list factor F(p_f) of (B.6) "
+        "differs from 1 by "
+        f"{-math.expm1(float(jm.log_false_list_factor(threshold_log_pf(0.999, 1000), GEOMETRY))):.0e}.",
+        discussed_in=PAGE,
+    ),
 ]
 
 
@@ -483,17 +696,41 @@ def _table21_claim(k: int, p_dl: float, text: str, relation: str) -> Claim:
 
 CLAIMS: list[Claim] = [
     Claim(
-        id="ATC10-sec1.1-level",
+        id="ATC10-sec1.1-erp-rises-with-K",
         paper="ATC10",
-        locator="Sec. 1.1 and Sec. 2.7",
-        quantity="10 % of the airborne aircraft equals the level N_AD = 0.01 N_T",
+        locator="Sec. 1.1 and Table 1.1",
+        quantity="the jammer ERP needed to disable the system rises with the transmission length K = 1, 10, "
+        "100, 1000 ('for K less than 100 the required jammer is modest ... as K approaches 1000 ...')",
         published=True,
         unit="statement",
-        compute=lambda: math.isclose(0.1 * GEOMETRY.airborne_fraction, ADL_LEVEL, rel_tol=1e-15),
+        compute=_erp_rises_with_k,
         tolerance=EXACT,
         status="reproduced",
-        note="N = 0.1 N_T airborne, so 0.1 N = 0.01 N_T.",
-        discussed_in=PAGE_K1,
+        note="Threshold search for N_ADL = 0.01 N_T at t = 0, for the caption's P_D = 0.88 and for "
+        "Table 2.1's P_DL = 0.999 (the design point most Table 1.1 entries use): both sequences increase "
+        "strictly, and the K < 100 values are finite. 'Modest' is read as: a finite requirement for K = 1 "
+        "and 10, of the size Table 1.1 equips with at most 20 dBW (100 W) of rf power and a 4 ft dish; the "
+        "dollar cost is not testable.",
+        discussed_in=PAGE_T11,
+    ),
+    Claim(
+        id="ATC10-sec1.1-K1000-prohibitive",
+        paper="ATC10",
+        locator="Sec. 1.1 and Table 2.1",
+        quantity="as K approaches 1000 the barrage jammer becomes prohibitive: for the caption's P_D >= 0.88 "
+        "design no finite ERP disables a K = 1000 system (beyond Table 2.1's '>130 dBW')",
+        published=True,
+        unit="statement",
+        compute=_k1000_beyond_practical,
+        tolerance=EXACT,
+        status="reproduced",
+        note="'Prohibit' read at the caption's P_D = 0.88: the K = 1000 N_ADL ceiling (J -> inf) lies "
+        "below 0.01 N_T, so the threshold search returns infinity, above the printed >130 dBW. At P_DL = "
+        "0.999, the design Table 1.1's K = 1000 row actually uses, the ERP is finite (claim "
+        "ATC10-tab1.1-K1000-erp); "
+        "there 'prohibit' can only mean cost and complexity (Table 1.1: 40 dBW rf, an 18 ft dish), which "
+        "the book cannot test.",
+        discussed_in=PAGE_T11,
     ),
     Claim(
         id="ATC10-sec1.3-oscillator",
@@ -502,10 +739,12 @@ CLAIMS: list[Claim] = [
         quantity="oscillator stability for 50 ns rms over a 1 s update",
         published=5e-8,
         unit="",
-        compute=lambda: 50e-9 / 1.0,
+        compute=lambda: TOA_RMS_ERROR_S / UPDATE_INTERVAL_S,
         tolerance=printed("5e-8")[1],
         status="reproduced",
-        note="Fractional stability = time error / update interval.",
+        note="Arithmetic on two printed values only (50 ns rms, one update per second): fractional stability "
+        "= time error / update interval. No navcore model is involved; the check guards the reading, not a "
+        "computation.",
         discussed_in=PAGE_T11,
     ),
     Claim(
@@ -515,10 +754,13 @@ CLAIMS: list[Claim] = [
         quantity="pulse energy for P0 = 30 dBW and tau = 10 us",
         published=10.0,
         unit="mJ",
-        compute=lambda: units.watts_from_dbw(30.0) * 10e-6 * 1e3,
+        compute=lambda: units.watts_from_dbw(PULSE_POWER_DBW) * PULSE_DURATION_S * 1e3,
         tolerance=Tolerance(reason="exact arithmetic up to rounding", abs=1e-9),
         status="reproduced",
-        note="E = P0 tau; with B = 10 MHz, P0 tau B = 1e5 W = 50 dBW.",
+        note="Arithmetic on printed values only: E = P0 tau from the module inputs PULSE_POWER_DBW and "
+        "PULSE_DURATION_S (the printed 30 dBW and 10 us). The thresholds use GEOMETRY.pulse_energy_j, the "
+        "printed 10 mJ, and a test checks that it equals P0 tau. P0 is the average power during the pulse "
+        "(erratum ATC10-E-jam-P0-average-peak).",
         discussed_in=PAGE_K1,
     ),
     Claim(

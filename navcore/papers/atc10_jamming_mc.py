@@ -20,7 +20,9 @@ segment, the first a consistent list entry, each later one within the track wind
 previous one. :func:`simulate_false_tracks` decides exactly whether such a chain exists (by
 propagating the reachable offset triples; :func:`false_track_exists_brute_force` is the
 explicit search used as its test oracle) and compares the rate with ``F G^(K-1)`` of (B.6) and
-(C.14) at the reduced sizes. No part of this module is a published claim.
+(C.14) at the reduced sizes. :func:`simulate_window_declarations` tests the independent-sample
+product ``1 - (1 - p_f)^n`` of one window itself, against samples with correlation 1/2 between
+neighbours. No part of this module is a published claim.
 """
 
 from __future__ import annotations
@@ -240,3 +242,46 @@ def simulate_false_tracks() -> tuple[FalseTrackRates, ...]:
         sim = np.array([false_track_exists(uk < p, TRACK_W, TRACK_V).mean() for p in TRACK_PF])
         out.append(FalseTrackRates(k, TRACK_PF, sim, false_track_bound(TRACK_PF, k), TRACK_TRIALS))
     return tuple(out)
+
+
+# --- correlated samples (B.6)/(C.14): is one window's declaration probability 1 - (1 - p_f)^n? ------
+
+#: Window length (samples; the track window of (C.14) holds 23.86), trials, seed and p_f grid (the
+#: K >= 10 N_ADL thresholds lie at p_f of about 0.1-0.27).
+WINDOW_N = 24
+WINDOW_TRIALS = 400_000
+WINDOW_SEED = 19720624
+WINDOW_PF = np.array([0.01, 0.03, 0.1, 0.2, 0.27])
+
+
+@dataclass(frozen=True)
+class WindowRates:
+    """Probability that an n-sample window holds no declaration: independent and correlated samples."""
+
+    p_f: np.ndarray
+    empty_formula: np.ndarray
+    empty_independent: np.ndarray
+    empty_correlated: np.ndarray
+    n: int
+    trials: int
+
+
+@cache
+def simulate_window_declarations() -> WindowRates:
+    """Seeded simulation of one window of ``WINDOW_N`` normalised matched-filter noise samples.
+
+    Independent samples are i.i.d. N(0, 1). Correlated samples are ``(z_k + z_(k+1)) / sqrt(2)``:
+    correlation 1/2 between neighbours and 0 beyond, the noise at the output of a filter matched to
+    a code of rectangular chips sampled twice per chip (the paper's "twice the Nyquist rate"). Both
+    use the same ``z`` (common random numbers). A sample is declared where it exceeds
+    ``Q^{-1}(p_f)``, so each sample alone has false-alarm probability ``p_f`` in both cases.
+    """
+    rng = np.random.default_rng(WINDOW_SEED)
+    z = rng.standard_normal((WINDOW_TRIALS, WINDOW_N + 1))
+    peak_independent = z[:, :WINDOW_N].max(axis=1)
+    peak_correlated = ((z[:, :-1] + z[:, 1:]) / math.sqrt(2.0)).max(axis=1)
+    threshold = -special.ndtri(WINDOW_PF)
+    empty_i = np.array([np.mean(peak_independent <= u) for u in threshold])
+    empty_c = np.array([np.mean(peak_correlated <= u) for u in threshold])
+    formula = np.exp(WINDOW_N * np.log1p(-WINDOW_PF))
+    return WindowRates(WINDOW_PF, formula, empty_i, empty_c, WINDOW_N, WINDOW_TRIALS)
