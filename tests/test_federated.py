@@ -161,26 +161,16 @@ def test_theorem_bound_holds(seed, n, N, rho):
     assert mink <= np.trace(B) * (1 + 1e-9)
 
 
-def _fusion_matrices(Ps):
-    """The linear maps x_i -> x_D of WF Eqs. (18)-(19), read off federated_fusion column by column."""
-    n, N = Ps[0].shape[0], len(Ps)
-    return [
-        np.column_stack(
-            [federated_fusion([d if j == i else np.zeros(n) for j in range(N)], Ps)[0] for d in np.eye(n)]
-        )
-        for i in range(N)
-    ]
-
-
 @pytest.mark.parametrize("N", [2, 3, 4])
 @pytest.mark.parametrize("kind", ["generic", "mixed", "complete"])
 def test_theorem_bound_monte_carlo(N, kind):
-    """Oracle: seeded Monte Carlo of the fused error (the sample covariance of 20 000 draws).
+    """Oracle: seeded Monte Carlo of the fused error (the sample covariance S of 20 000 draws).
 
     Local errors of 3 states with a random joint covariance J ("generic": A A' + 0.1 I; "mixed": a
     common and an independent part, correlation uniform in [0, 1]; "complete": e_i = sigma_i w,
-    where the bound with the optimal weights is exact) are fused with the weights of WF Eqs. (18)-(19).
-    Criteria, in sampling standard deviations (sd) of the sample covariance S of n draws:
+    where the bound with the optimal weights is exact) are fused with the weights of WF Eqs. (18)-(19)
+    (``wf.theorem_monte_carlo_case``, which the ledger claim WF-thm-montecarlo also runs, on other
+    seeds). Criteria, in sampling standard deviations (sd) of S:
 
     * WF Eq. (21): whitening by the bound B, lambda_max(B^-1/2 S B^-1/2) - 1 <= 5 sd, sd = sqrt(2/(n-1))
       (the sd of a whitened sample variance whose true value is 1, the largest it can be);
@@ -188,38 +178,16 @@ def test_theorem_bound_monte_carlo(N, kind):
     * WF Eq. (20): |S_jk - C_jk| <= 5 sd_jk, sd_jk = sqrt((S_jj S_kk + S_jk^2)/(n-1)); and Eq. (20) applied to
       the sample joint covariance of the local errors is S itself (to round-off), so E[S] = Eq. (20) exactly.
     """
-    n, samples = 3, 20_000
+    from navcore.papers import wf
+
     rng = np.random.default_rng([N, ("generic", "mixed", "complete").index(kind), 31])
-    if kind == "generic":
-        J = _spd(rng, n * N)
-    elif kind == "mixed":
-        J = _random_joint(rng, n, N, rng.uniform())
-    else:
-        sig = rng.uniform(0.1, 2.0, N)
-        J = np.kron(np.outer(sig, sig), np.eye(n))
-    Ps = [J[n * i : n * i + n, n * i : n * i + n] for i in range(N)]
-    w, V = np.linalg.eigh(J)
-    E = rng.normal(size=(samples, n * N)) @ (V * np.sqrt(np.clip(w, 0.0, None))).T
-    fused = sum(E[:, n * i : n * i + n] @ A.T for i, A in enumerate(_fusion_matrices(Ps)))
-    S = np.cov(fused.T)
-    dof = samples - 1
-    if kind == "complete":
-        k = optimal_weights(Ps)
-    else:
-        k = feasible_weights(Ps, directions=[rng.normal(size=n) for _ in range(N)])
-    B = federated_covariance_bound(Ps, k)
-    Li = np.linalg.inv(np.linalg.cholesky(B))
-    assert np.linalg.eigvalsh(Li @ S @ Li.T)[-1] - 1 <= 5 * np.sqrt(2 / dof)
-    assert np.trace(S) - minkowski_trace_bound(Ps) <= 5 * np.sqrt(2 * np.trace(S @ S) / dof)
-    C = fused_error_covariance(Ps, J)
-    sd = np.sqrt((np.outer(np.diag(S), np.diag(S)) + S**2) / dof)
-    assert np.max(np.abs(S - C) / sd) <= 5
-    np.testing.assert_allclose(
-        fused_error_covariance(Ps, np.cov(E.T)), S, rtol=1e-10, atol=1e-12 * np.abs(S).max()
-    )
+    r = wf.theorem_monte_carlo_case(rng, N, kind, 20_000)
+    assert r["z_bound"] <= 5 and r["z_trace"] <= 5 and r["z_eq20"] <= 5
+    assert r["exact"] < 1e-10
     if kind == "complete":  # the criterion has power: it rejects the naive P_D of Eq. (19) as a bound
-        Ld = np.linalg.inv(np.linalg.cholesky(federated_fusion([np.zeros(n)] * N, Ps)[1]))
-        assert np.linalg.eigvalsh(Ld @ S @ Ld.T)[-1] - 1 > 5 * np.sqrt(2 / dof)
+        S, n = r["S"], 3
+        Ld = np.linalg.inv(np.linalg.cholesky(federated_fusion([np.zeros(n)] * N, r["Ps"])[1]))
+        assert np.linalg.eigvalsh(Ld @ S @ Ld.T)[-1] - 1 > 5 * np.sqrt(2 / r["dof"])
 
 
 def test_bound_exact_for_fully_correlated_isotropic():

@@ -380,45 +380,53 @@ def theorem_monte_carlo(cases: int = 12, samples: int = 20_000, seed: int = 29) 
       covariance of the local errors (zero up to round-off: E[S] equals Eq. (20) exactly).
     """
     rng = np.random.default_rng(seed)
-    n = 3
     out = []
     for case in range(cases):
-        N = 2 + case % 3
         kind = ("generic", "mixed", "complete")[(case // 3) % 3]
-        if kind == "generic":
-            J = _spd(rng, n * N)
-        elif kind == "mixed":
-            J = _random_joint(rng, n, N, rng.uniform())
-        else:
-            sig = rng.uniform(0.1, 2.0, N)
-            J = np.kron(np.outer(sig, sig), np.eye(n))
-        Ps = [J[n * i : n * i + n, n * i : n * i + n] for i in range(N)]
-        w, V = np.linalg.eigh(J)
-        E = rng.normal(size=(samples, n * N)) @ (V * np.sqrt(np.clip(w, 0.0, None))).T
-        fused = sum(E[:, n * i : n * i + n] @ A.T for i, A in enumerate(_fusion_maps(Ps)))
-        S = np.cov(fused.T)
-        C = fused_error_covariance(Ps, J)
-        z = list(rng.normal(size=(N, n)))
-        k = optimal_weights(Ps) if kind == "complete" else feasible_weights(Ps, directions=z)
-        B = federated_covariance_bound(Ps, k)
-        Li = np.linalg.inv(np.linalg.cholesky(B))
-        dof = samples - 1
-        sd = np.sqrt((np.outer(np.diag(S), np.diag(S)) + S**2) / dof)
-        out.append(
-            {
-                "N": N,
-                "kind": kind,
-                "z_bound": float((np.linalg.eigvalsh(Li @ S @ Li.T)[-1] - 1) / np.sqrt(2 / dof)),
-                "z_trace": float(
-                    (np.trace(S) - minkowski_trace_bound(Ps)) / np.sqrt(2 * np.trace(S @ S) / dof)
-                ),
-                "z_eq20": float(np.max(np.abs(S - C) / sd)),
-                "exact": float(
-                    np.linalg.norm(S - fused_error_covariance(Ps, np.cov(E.T))) / np.linalg.norm(S)
-                ),
-            }
-        )
+        r = theorem_monte_carlo_case(rng, 2 + case % 3, kind, samples)
+        out.append({key: r[key] for key in ("N", "kind", "z_bound", "z_trace", "z_eq20", "exact")})
     return tuple(out)
+
+
+def theorem_monte_carlo_case(rng: np.random.Generator, N: int, kind: str, samples: int) -> dict:
+    """One case of :func:`theorem_monte_carlo`: ``N`` local errors of 3 states of the given kind.
+
+    Returns the criteria (``z_bound``, ``z_trace``, ``z_eq20``, ``exact``) and, for further checks,
+    the local covariances ``Ps``, the sample covariance ``S`` of the fused error and ``dof``.
+    """
+    n = 3
+    if kind == "generic":
+        J = _spd(rng, n * N)
+    elif kind == "mixed":
+        J = _random_joint(rng, n, N, rng.uniform())
+    elif kind == "complete":
+        sig = rng.uniform(0.1, 2.0, N)
+        J = np.kron(np.outer(sig, sig), np.eye(n))
+    else:
+        raise ValueError(f"kind must be 'generic', 'mixed' or 'complete', got {kind!r}")
+    Ps = [J[n * i : n * i + n, n * i : n * i + n] for i in range(N)]
+    w, V = np.linalg.eigh(J)
+    E = rng.normal(size=(samples, n * N)) @ (V * np.sqrt(np.clip(w, 0.0, None))).T
+    fused = sum(E[:, n * i : n * i + n] @ A.T for i, A in enumerate(_fusion_maps(Ps)))
+    S = np.cov(fused.T)
+    C = fused_error_covariance(Ps, J)
+    z = list(rng.normal(size=(N, n)))
+    k = optimal_weights(Ps) if kind == "complete" else feasible_weights(Ps, directions=z)
+    B = federated_covariance_bound(Ps, k)
+    Li = np.linalg.inv(np.linalg.cholesky(B))
+    dof = samples - 1
+    sd = np.sqrt((np.outer(np.diag(S), np.diag(S)) + S**2) / dof)
+    return {
+        "N": N,
+        "kind": kind,
+        "z_bound": float((np.linalg.eigvalsh(Li @ S @ Li.T)[-1] - 1) / np.sqrt(2 / dof)),
+        "z_trace": float((np.trace(S) - minkowski_trace_bound(Ps)) / np.sqrt(2 * np.trace(S @ S) / dof)),
+        "z_eq20": float(np.max(np.abs(S - C) / sd)),
+        "exact": float(np.linalg.norm(S - fused_error_covariance(Ps, np.cov(E.T))) / np.linalg.norm(S)),
+        "Ps": Ps,
+        "S": S,
+        "dof": dof,
+    }
 
 
 def _theorem_mc_holds() -> bool:
