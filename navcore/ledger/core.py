@@ -1,24 +1,38 @@
-"""Claims, tolerances, errata and their evaluation.
+"""Claims, tolerances, errata, and the verdicts the ledger derives for them.
 
-A :class:`Claim` is one number (or statement) that a paper publishes, together with a
-function that makes navcore compute it. Its published value is typed once, with its
-locator; its reproduced value is never typed: it is whatever ``compute()`` returns.
+A :class:`Claim` is one number (or statement) that a paper publishes, with a function that
+makes navcore compute it. Its published value is typed once, with its locator; its
+reproduced value is never typed: it is whatever ``compute()`` returns. The claim declares
+its ``kind``, its tolerance (fixed by how the paper printed the number, through a named
+policy) and the verdict it expects; :func:`evaluate` derives the verdict from the
+computation, the tolerance and the provenance of every input the computation read
+(:mod:`navcore.ledger.inputs`), and the ledger fails where the two differ.
 
-Check rules, by declared status
--------------------------------
-``reproduced`` / ``consistent``
-    the reproduced value satisfies the published relation within the tolerance:
-    ``=``: ``|reproduced - published| <= tol``; ``<``/``<=``/``>``/``>=``: the inequality
-    holds (the tolerance widens it); a statement (``published`` is ``True``/``False``) must
-    evaluate to the published truth value.
-``discrepant``
-    the reproduced value violates the published relation beyond the tolerance (the
-    disagreement persists), the claim names an erratum, and it agrees with an independent
-    ``oracle`` computation within ``oracle_tolerance``, so a regression is still caught
-    without typing the book's value in.
+Verdicts, as derived (LEDGER.md)
+--------------------------------
 ``not-reproducible``
-    ``compute`` is ``None``; the note says which inputs are missing. There is nothing to
-    check and the test is reported as skipped with the note as its reason.
+    nothing is computed (``compute is None``); the note names the missing input.
+``reproduced``
+    kind ``reproduction`` or ``statement``, every input read is ``published`` or
+    ``convention``, and the value satisfies the published relation within the tolerance.
+``consistent``
+    agreement that rests on more than published inputs: some value in the band of the
+    ``assumed`` inputs agrees, or the computation reads a ``fitted`` input, or the kind is
+    ``cross-check`` (arithmetic on printed numbers) or ``fit``.
+``inconsistent``
+    the model under declared assumptions disagrees across the whole band (or a fit that
+    does not agree).
+``discrepant``
+    disagreement with published inputs only, or for every admissible input (every assumed
+    input read declares its range ``admissible``); the claim names an erratum and an
+    independent oracle with which the book's value must agree.
+
+Tolerance policies
+------------------
+``printed-digits`` (half a unit in the last printed digit, :func:`printed`), ``prose`` (the
+band of a word such as "about", :func:`prose`), ``figure-reading`` (the reading resolution
+of a figure's axis, :func:`figure_reading`), ``monte-carlo`` (the sampling error of a run
+count, :func:`monte_carlo`) and ``exact`` (:data:`EXACT`).
 """
 
 from __future__ import annotations
@@ -29,8 +43,14 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
+from navcore.ledger.inputs import declaring, overriding, recording
+
 __all__ = [
+    "EXACT",
+    "KINDS",
     "PAPERS",
+    "POLICIES",
+    "PROSE_WORDS",
     "RELATIONS",
     "STATUSES",
     "Claim",
@@ -38,7 +58,10 @@ __all__ = [
     "Evaluation",
     "Tolerance",
     "evaluate",
+    "figure_reading",
+    "monte_carlo",
     "printed",
+    "prose",
 ]
 
 PAPERS: dict[str, str] = {
@@ -47,9 +70,13 @@ PAPERS: dict[str, str] = {
     "ATC10": "Schneider, Stiglitz & Eckberg, Surveillance Aspects of the AATMS (ATC-10)",
     "KZL": "Knedlik, Zhou & Loffeld, Position and Attitude Estimation for Bistatic SAR",
 }
-STATUSES = ("reproduced", "consistent", "discrepant", "not-reproducible")
+STATUSES = ("reproduced", "consistent", "inconsistent", "discrepant", "not-reproducible")
+KINDS = ("reproduction", "cross-check", "statement", "fit")
+POLICIES = ("printed-digits", "prose", "figure-reading", "monte-carlo", "exact")
 RELATIONS = ("=", "<", "<=", ">", ">=")
-Status = Literal["reproduced", "consistent", "discrepant", "not-reproducible"]
+Status = Literal["reproduced", "consistent", "inconsistent", "discrepant", "not-reproducible"]
+Kind = Literal["reproduction", "cross-check", "statement", "fit"]
+Policy = Literal["printed-digits", "prose", "figure-reading", "monte-carlo", "exact"]
 Relation = Literal["=", "<", "<=", ">", ">="]
 
 _ID_RE = re.compile(r"^(WF|SP|ATC10|KZL)-[A-Za-z0-9][A-Za-z0-9._+-]*$")
@@ -57,19 +84,23 @@ _ID_RE = re.compile(r"^(WF|SP|ATC10|KZL)-[A-Za-z0-9][A-Za-z0-9._+-]*$")
 
 @dataclass(frozen=True)
 class Tolerance:
-    """An absolute and/or relative tolerance with the reason it has that size.
+    """An absolute and/or relative tolerance, the policy that fixed it and the reason.
 
-    The allowed deviation is ``max(abs, rel * |published|)``. ``reason`` is mandatory: a
-    tolerance without a written reason is a defect (LEDGER.md, tolerance policy).
+    The allowed deviation is ``max(abs, rel * |published|)``. ``policy`` is one of
+    :data:`POLICIES` and ``reason`` says how the printed text gives the size; both are
+    mandatory (LEDGER.md, "Tolerance: fixed before the value is computed").
     """
 
     reason: str
     abs: float | None = None
     rel: float | None = None
+    policy: str = ""
 
     def __post_init__(self) -> None:
         if not self.reason or not self.reason.strip():
             raise ValueError("Tolerance.reason must say why the tolerance has its size")
+        if self.policy and self.policy not in POLICIES:
+            raise ValueError(f"Tolerance.policy must be one of {POLICIES}, got {self.policy!r}")
         for name in ("abs", "rel"):
             value = getattr(self, name)
             if value is not None and not (value >= 0 and math.isfinite(value)):
@@ -82,18 +113,37 @@ class Tolerance:
         return max(a, r)
 
     def as_dict(self) -> dict[str, Any]:
-        return {"abs": self.abs, "rel": self.rel, "reason": self.reason}
+        return {"abs": self.abs, "rel": self.rel, "reason": self.reason, "policy": self.policy}
 
     def describe(self) -> str:
         parts = []
-        if self.abs is not None:
+        if self.abs is not None and (self.abs or self.rel is None):
             parts.append(f"±{self.abs:.4g}")
         if self.rel is not None:
             parts.append(f"±{100 * self.rel:.3g} %")
-        return " or ".join(parts) if parts else "exact"
+        return " or ".join(parts) if parts and parts != ["±0"] else "exact"
 
 
-EXACT = Tolerance(reason="exact: an integer count or a logical statement", abs=0.0)
+EXACT = Tolerance(reason="exact: an integer count or a logical statement", abs=0.0, policy="exact")
+
+#: The one table of prose words and their bands (shown on the ledger page). A claim about a
+#: word of this table compares with ``rel`` (relative) or ``abs_log10`` (in decades, for
+#: claims published as a base-10 logarithm of a ratio).
+PROSE_WORDS: dict[str, dict[str, Any]] = {
+    "about": {"rel": 0.10, "meaning": "within ±10 %"},
+    "approximately": {"rel": 0.10, "meaning": "within ±10 %"},
+    "nearly": {"rel": 0.10, "meaning": "within ±10 %"},
+    "roughly": {"rel": 0.20, "meaning": "within ±20 %"},
+    "on the order of": {"rel": 0.50, "meaning": "within ±50 %"},
+    "of the order of": {"rel": 0.50, "meaning": "within ±50 %"},
+    "several": {"abs": 3.0, "meaning": "3 to 9 (published as 6 ± 3)"},
+    "a few": {"abs": 1.5, "meaning": "2 to 5 (published as 3.5 ± 1.5)"},
+    "an order of magnitude": {
+        "abs_log10": 0.5,
+        "meaning": "a factor 3.16 either way of 10 (log10 ratio 1 ± 0.5)",
+    },
+    "orders of magnitude": {"abs_log10": 0.5, "meaning": "±0.5 decade on the log10 ratio"},
+}
 
 
 def printed(text: str, *, extra_abs: float = 0.0, why: str = "") -> tuple[float, Tolerance]:
@@ -101,13 +151,14 @@ def printed(text: str, *, extra_abs: float = 0.0, why: str = "") -> tuple[float,
 
     ``printed("17.67")`` gives ``(17.67, Tolerance(abs=0.005, ...))``; ``printed("1.2e-3")``
     gives half a unit of the last mantissa digit times the exponent. ``extra_abs`` adds what
-    the paper's own rounding of intermediate values can explain; ``why`` says so.
+    the paper's own rounding of intermediate values can explain (the text must show that
+    rounding); ``why`` says so. Policy ``printed-digits``.
 
     Examples
     --------
     >>> value, tol = printed("17.67")
-    >>> value, tol.abs
-    (17.67, 0.005)
+    >>> value, tol.abs, tol.policy
+    (17.67, 0.005, 'printed-digits')
     """
     s = text.strip().replace("−", "-")
     m = re.fullmatch(r"([+-]?)(\d*)(?:\.(\d*))?(?:[eE]([+-]?\d+))?", s)
@@ -122,7 +173,55 @@ def printed(text: str, *, extra_abs: float = 0.0, why: str = "") -> tuple[float,
         reason += f", plus {extra_abs:g}" + (f" ({why})" if why else "")
     elif why:
         reason += f"; {why}"
-    return value, Tolerance(reason=reason, abs=round(half + extra_abs, 15))
+    return value, Tolerance(reason=reason, abs=round(half + extra_abs, 15), policy="printed-digits")
+
+
+def prose(word: str, *, why: str = "") -> Tolerance:
+    """The tolerance of a prose word from :data:`PROSE_WORDS` (policy ``prose``).
+
+    Examples
+    --------
+    >>> prose("about").rel
+    0.1
+    """
+    key = word.strip().lower()
+    if key not in PROSE_WORDS:
+        raise ValueError(f"word must be one of {sorted(PROSE_WORDS)}, got {word!r}")
+    band = PROSE_WORDS[key]
+    reason = f"'{key}' in prose: {band['meaning']}" + (f"; {why}" if why else "")
+    if "rel" in band:
+        return Tolerance(reason=reason, rel=band["rel"], policy="prose")
+    if "abs" in band:
+        return Tolerance(reason=reason, abs=band["abs"], policy="prose")
+    return Tolerance(reason=reason, abs=band["abs_log10"], policy="prose")
+
+
+def figure_reading(resolution: float, *, figure: str, axis: str) -> Tolerance:
+    """Tolerance of a value read off ``figure``: the reading resolution of its ``axis``.
+
+    Examples
+    --------
+    >>> figure_reading(0.5, figure="Fig. 2.1", axis="loop bandwidth, 0.5 Hz per minor division").abs
+    0.5
+    """
+    if not (resolution > 0 and math.isfinite(resolution)):
+        raise ValueError(f"resolution must be finite and > 0, got {resolution!r}")
+    return Tolerance(
+        reason=f"read off {figure}: {axis} (reading resolution {resolution:g})",
+        abs=resolution,
+        policy="figure-reading",
+    )
+
+
+def monte_carlo(*, rel: float | None = None, abs: float | None = None, runs: int, why: str) -> Tolerance:
+    """Tolerance from the sampling error of ``runs`` Monte Carlo runs (policy ``monte-carlo``).
+
+    The size is computed by the caller from the run count and the published value (never from
+    the reproduced one) and ``why`` says how (e.g. "3 standard errors of a 25-run CEP").
+    """
+    if runs < 1:
+        raise ValueError(f"runs must be >= 1, got {runs!r}")
+    return Tolerance(reason=f"Monte Carlo of {runs} runs: {why}", abs=abs, rel=rel, policy="monte-carlo")
 
 
 @dataclass(frozen=True)
@@ -184,24 +283,32 @@ class Claim:
         The published value's unit (``""`` for dimensionless, ``"statement"`` for truth
         values).
     compute : callable or None
-        Returns the reproduced value in ``unit`` (``None`` only for ``not-reproducible``).
-    tolerance : Tolerance
-        The allowed deviation and why.
-    status : str
-        One of :data:`STATUSES` (the book's verdict; the check enforces it).
+        Returns the reproduced value in ``unit``; it reads its inputs from the paper
+        module's :class:`~navcore.ledger.inputs.InputSet`. ``None`` when nothing can be
+        computed (the verdict is then ``not-reproducible``).
+    tolerance : Tolerance or callable
+        The allowed deviation, its policy and reason; fixed by the printed text. A callable
+        is resolved by the ledger before ``compute`` runs, where no input can be read.
+    expected_status : str
+        The verdict the paper module expects (:data:`STATUSES`); the ledger derives the
+        verdict and fails when the two differ.
     note : str
         The interpretation used, the assumptions made, the erratum if any.
     relation : str
         How the published value relates to the quantity: ``=``, or a bound such as ``>``
         for a printed ``>130``.
+    kind : str
+        :data:`KINDS`; defaults to ``statement`` for a truth value, else ``reproduction``.
     erratum : str
-        Id of the erratum (required when ``status == "discrepant"``).
+        Id of the erratum (required when the verdict is ``discrepant``).
     oracle : callable or None
         Independent computation of the book's value (required for ``discrepant``).
     oracle_tolerance : Tolerance or None
         How closely ``compute()`` must agree with ``oracle()``.
     discussed_in : str
-        Book docname where the claim is derived (filled by chapters for cross-links).
+        Book docname where the claim is derived (for cross-links).
+    aliases : tuple of str
+        Former ids that still refer to this claim.
     """
 
     id: str
@@ -211,14 +318,16 @@ class Claim:
     published: float | bool
     unit: str
     compute: Callable[[], Any] | None
-    tolerance: Tolerance
-    status: Status
+    tolerance: Tolerance | Callable[[], Tolerance]
+    expected_status: Status
     note: str
     relation: Relation = "="
+    kind: Kind | None = None
     erratum: str = ""
     oracle: Callable[[], Any] | None = None
     oracle_tolerance: Tolerance | None = None
     discussed_in: str = ""
+    aliases: tuple[str, ...] = ()
     _meta: dict[str, Any] = field(default_factory=dict, compare=False, repr=False)
 
     def __post_init__(self) -> None:
@@ -230,20 +339,31 @@ class Claim:
             raise ValueError(f"Claim.paper must be one of {list(PAPERS)}, got {self.paper!r}")
         if not self.id.startswith(self.paper + "-"):
             raise ValueError(f"Claim.id must start with '{self.paper}-', got {self.id!r}")
-        if self.status not in STATUSES:
-            raise ValueError(f"Claim.status must be one of {STATUSES}, got {self.status!r}")
+        if self.expected_status not in STATUSES:
+            raise ValueError(f"Claim.expected_status must be one of {STATUSES}, got {self.expected_status!r}")
         if self.relation not in RELATIONS:
             raise ValueError(f"Claim.relation must be one of {RELATIONS}, got {self.relation!r}")
-        if not isinstance(self.tolerance, Tolerance):
-            raise ValueError(f"Claim.tolerance must be a Tolerance (claim {self.id})")
+        if self.kind is None:
+            object.__setattr__(
+                self, "kind", "statement" if isinstance(self.published, bool) else "reproduction"
+            )
+        if self.kind not in KINDS:
+            raise ValueError(f"Claim.kind must be one of {KINDS}, got {self.kind!r} (claim {self.id})")
+        if isinstance(self.published, bool) and self.kind == "reproduction":
+            raise ValueError(
+                f"a truth-valued claim is a statement, cross-check or fit, not a reproduction ({self.id})"
+            )
+        if not (isinstance(self.tolerance, Tolerance) or callable(self.tolerance)):
+            raise ValueError(
+                f"Claim.tolerance must be a Tolerance or a callable returning one (claim {self.id})"
+            )
         if not self.note.strip():
             raise ValueError(f"Claim.note must state the interpretation (claim {self.id})")
-        if self.status == "not-reproducible":
-            if self.compute is not None:
-                raise ValueError(f"a not-reproducible claim has no compute (claim {self.id})")
-        elif self.compute is None:
-            raise ValueError(f"Claim.compute is required unless not-reproducible ({self.id})")
-        if self.status == "discrepant":
+        if self.expected_status == "not-reproducible" and self.compute is not None:
+            raise ValueError(
+                f"a claim that computes a value is never not-reproducible: show the value (claim {self.id})"
+            )
+        if self.expected_status == "discrepant":
             if not self.erratum:
                 raise ValueError(f"a discrepant claim must name its erratum (claim {self.id})")
             if self.oracle is None or self.oracle_tolerance is None:
@@ -257,16 +377,31 @@ class Claim:
     def is_statement(self) -> bool:
         return isinstance(self.published, bool)
 
+    @property
+    def status(self) -> str:
+        """The expected verdict (the derived one is on the :class:`Evaluation`)."""
+        return self.expected_status
+
 
 @dataclass(frozen=True)
 class Evaluation:
-    """The result of evaluating one claim."""
+    """The result of evaluating one claim: its value, band, inputs and derived verdict.
+
+    ``passes`` is true when the derived ``status`` equals the claim's ``expected_status``
+    and, for a discrepancy, the erratum is named and the oracle agrees.
+    """
 
     claim: Claim
     reproduced: Any
     passes: bool
     detail: str
     oracle_value: Any = None
+    status: str = "not-reproducible"
+    tolerance: Tolerance | None = None
+    inputs: tuple[dict[str, Any], ...] = ()
+    band: tuple[Any, Any] | None = None
+    sensitivity: tuple[tuple[str, tuple[tuple[Any, Any], ...]], ...] = ()
+    alternatives: tuple[tuple[str, Any, Any], ...] = ()
 
     def __post_init__(self) -> None:
         # comparisons on numpy scalars give numpy booleans: store a plain bool
@@ -279,15 +414,22 @@ class Evaluation:
             return None
         return float(self.reproduced) - float(self.claim.published)
 
+    @property
+    def kind(self) -> str:
+        return str(self.claim.kind)
+
+    def note(self) -> str:
+        """The claim's note, followed by what the other reading of each convention gives."""
+        text = self.claim.note.rstrip()
+        for name, alt, value in self.alternatives:
+            text += f" Other reading of {name} ({_plain(alt)}): {_plain(value)}."
+        return text
+
     def as_json(self) -> dict[str, Any]:
-        """The documented fields of LEDGER.md, and no others."""
+        """The fields of LEDGER.md, and no others."""
         c = self.claim
-        rep = self.reproduced
-        if rep is not None and not isinstance(rep, bool):
-            rep = float(rep)
-            if not math.isfinite(rep):
-                rep = None if math.isnan(rep) else ("Infinity" if rep > 0 else "-Infinity")
         pub = c.published if isinstance(c.published, bool) else float(c.published)
+        tol = self.tolerance if self.tolerance is not None else c.tolerance
         return {
             "id": c.id,
             "paper": c.paper,
@@ -296,11 +438,52 @@ class Evaluation:
             "published": pub,
             "relation": c.relation,
             "unit": c.unit,
-            "reproduced": rep,
-            "tolerance": c.tolerance.as_dict(),
-            "status": c.status,
-            "note": c.note,
+            "kind": c.kind,
+            "inputs": [dict(i) for i in self.inputs],
+            "reproduced": _json_value(self.reproduced),
+            "band": None if self.band is None else [_json_value(b) for b in self.band],
+            "tolerance": tol.as_dict() if isinstance(tol, Tolerance) else None,
+            "status": self.status,
+            "expected_status": c.expected_status,
+            "note": self.note(),
         }
+
+
+def _plain(value: Any) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, float):
+        return f"{value:.6g}"
+    return str(value)
+
+
+def _json_value(value: Any) -> Any:
+    if value is None or isinstance(value, bool):
+        return value
+    v = float(value)
+    if not math.isfinite(v):
+        return None if math.isnan(v) else ("Infinity" if v > 0 else "-Infinity")
+    return v
+
+
+def jsonable(value: Any) -> Any:
+    """An input value as plain JSON (numbers, strings, lists, objects)."""
+    if value is None or isinstance(value, bool | str):
+        return value
+    if isinstance(value, int):
+        return value
+    if isinstance(value, float):
+        return _json_value(value)
+    if isinstance(value, dict):
+        return {str(k): jsonable(v) for k, v in value.items()}
+    if hasattr(value, "tolist"):
+        return jsonable(value.tolist())
+    if isinstance(value, list | tuple):
+        return [jsonable(v) for v in value]
+    try:
+        return _json_value(value)
+    except (TypeError, ValueError):
+        return repr(value)
 
 
 def _satisfies(value: float, relation: str, published: float, allowed: float) -> bool:
@@ -317,6 +500,15 @@ def _satisfies(value: float, relation: str, published: float, allowed: float) ->
     raise ValueError(f"relation must be one of {RELATIONS}, got {relation!r}")
 
 
+def _band_satisfies(lo: float, hi: float, relation: str, published: float, allowed: float) -> bool:
+    """Whether some value in [lo, hi] satisfies the relation (the band is an interval)."""
+    if relation == "=":
+        return lo <= published + allowed and hi >= published - allowed
+    if relation in ("<", "<="):
+        return _satisfies(lo, relation, published, allowed)
+    return _satisfies(hi, relation, published, allowed)
+
+
 def _coerce(value: Any, claim: Claim) -> Any:
     if claim.is_statement:
         if not isinstance(value, bool | int) and not hasattr(value, "__bool__"):
@@ -326,42 +518,188 @@ def _coerce(value: Any, claim: Claim) -> Any:
     return out
 
 
-def evaluate(claim: Claim) -> Evaluation:
-    """Compute a claim's reproduced value and check it against its declared status."""
-    if claim.status == "not-reproducible":
-        return Evaluation(claim, None, True, "not reproducible: " + claim.note)
+def resolve_tolerance(claim: Claim) -> Tolerance:
+    """The claim's tolerance, resolved where no input can be read (before any computation)."""
+    with declaring():
+        tol = (
+            claim.tolerance()
+            if callable(claim.tolerance) and not isinstance(claim.tolerance, Tolerance)
+            else claim.tolerance
+        )
+    if not isinstance(tol, Tolerance):
+        raise TypeError(f"claim {claim.id}: tolerance must resolve to a Tolerance, got {type(tol).__name__}")
+    if tol.policy not in POLICIES:
+        raise ValueError(f"claim {claim.id}: the tolerance names no policy of {POLICIES}")
+    return tol
+
+
+def _run(claim: Claim, overrides: dict[str, Any] | None = None) -> tuple[Any, dict[str, Any]]:
     assert claim.compute is not None
-    try:
-        reproduced = _coerce(claim.compute(), claim)
-    except Exception as exc:  # a claim whose computation fails is a failing claim
-        return Evaluation(claim, None, False, f"compute raised {type(exc).__name__}: {exc}")
+    with recording() as reads:
+        if overrides:
+            with overriding(overrides):
+                value = _coerce(claim.compute(), claim)
+        else:
+            value = _coerce(claim.compute(), claim)
+    if not claim.is_statement and math.isnan(value):
+        raise ValueError("the computation returned NaN")
+    return value, reads
 
+
+def _band_runs(
+    claim: Claim, assumed: list[Any]
+) -> tuple[list[Any], list[tuple[str, tuple[tuple[Any, Any], ...]]]]:
+    """Values across the assumed inputs' ranges: one at a time, and corners for up to three."""
+    values: list[Any] = []
+    sensitivity = []
+    for inp in assumed:
+        row = []
+        for point in inp.band_points:
+            v, _ = _run(claim, {inp.name: point})
+            values.append(v)
+            row.append((point, v))
+        sensitivity.append((inp.name, tuple(row)))
+    if 2 <= len(assumed) <= 3:
+        import itertools
+
+        for corner in itertools.product(*[(inp.low, inp.high) for inp in assumed]):
+            v, _ = _run(claim, {inp.name: p for inp, p in zip(assumed, corner, strict=True)})
+            values.append(v)
+    return values, sensitivity
+
+
+def derive_status(
+    claim: Claim, tol: Tolerance, value: Any, values: list[Any], provenances: set[str], admissible: bool
+) -> str:
+    """The verdict of LEDGER.md from the nominal value, the band's values and the provenances read.
+
+    ``values`` are the computed values across the assumed inputs' ranges (empty when none is
+    assumed); ``admissible`` says every assumed input read spans all admissible values.
+    """
     if claim.is_statement:
-        agrees = reproduced == claim.published
+        agree_nominal = value == claim.published
+        agree_any = agree_nominal or any(v == claim.published for v in values)
     else:
-        if math.isnan(reproduced):
-            return Evaluation(claim, reproduced, False, "reproduced value is NaN")
-        allowed = claim.tolerance.allowed(float(claim.published))
-        agrees = _satisfies(reproduced, claim.relation, float(claim.published), allowed)
+        pub = float(claim.published)
+        allowed = tol.allowed(pub)
+        agree_nominal = _satisfies(value, claim.relation, pub, allowed)
+        lo, hi = (min([value, *values]), max([value, *values]))
+        agree_any = agree_nominal or _band_satisfies(lo, hi, claim.relation, pub, allowed)
+    assumed = "assumed" in provenances
+    fitted = "fitted" in provenances
+    if claim.kind == "cross-check":
+        return "consistent" if agree_nominal else "discrepant"
+    if claim.kind == "fit" or fitted:
+        return "consistent" if agree_any else "inconsistent"
+    if assumed:
+        if agree_any:
+            return "consistent"
+        return "discrepant" if admissible else "inconsistent"
+    return "reproduced" if agree_nominal else "discrepant"
 
-    if claim.status in ("reproduced", "consistent"):
-        detail = "agrees with the published value" if agrees else "disagrees with the published value"
-        return Evaluation(claim, reproduced, agrees, detail)
 
-    # discrepant: the disagreement must persist and the value must match the oracle
-    assert claim.oracle is not None and claim.oracle_tolerance is not None
+def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
+    """Compute a claim, its band and inputs, derive its verdict and check it against the expected one.
+
+    The tolerance is resolved first, where no input can be read; then ``compute`` runs at the
+    nominal inputs with every read recorded; then across each assumed input's range (the
+    band, unless ``bands`` is false) and with each convention's other reading.
+    """
     try:
-        oracle_value = _coerce(claim.oracle(), claim)
+        tol = resolve_tolerance(claim)
     except Exception as exc:
-        return Evaluation(claim, reproduced, False, f"oracle raised {type(exc).__name__}: {exc}")
+        return Evaluation(
+            claim,
+            None,
+            False,
+            f"tolerance could not be resolved: {type(exc).__name__}: {exc}",
+            status="error",
+        )
+    if claim.compute is None:
+        ok = claim.expected_status == "not-reproducible"
+        detail = (
+            "not reproducible: " + claim.note
+            if ok
+            else "nothing is computed: the verdict is not-reproducible"
+        )
+        return Evaluation(claim, None, ok, detail, status="not-reproducible", tolerance=tol)
+    try:
+        value, reads = _run(claim)
+    except Exception as exc:  # a claim whose computation fails is a failing claim
+        return Evaluation(
+            claim, None, False, f"compute raised {type(exc).__name__}: {exc}", status="error", tolerance=tol
+        )
+
+    from navcore.ledger.inputs import Input
+
+    read: list[Input] = [reads[k] for k in sorted(reads)]
+    inputs = tuple(
+        {
+            "name": i.name,
+            "provenance": i.provenance,
+            ("locator" if i.provenance == "published" else "reason"): i.source(),
+            "value": jsonable(i.value),
+        }
+        for i in read
+    )
+    assumed = [i for i in read if i.provenance == "assumed"]
+    try:
+        values, sensitivity = _band_runs(claim, assumed) if (assumed and bands) else ([], [])
+        alternatives = tuple(
+            (i.name, i.alternative, _run(claim, {i.name: i.alternative})[0])
+            for i in read
+            if i.provenance == "convention"
+        )
+    except Exception as exc:
+        return Evaluation(
+            claim,
+            value,
+            False,
+            f"the band or a convention's other reading raised {type(exc).__name__}: {exc}",
+            status="error",
+            tolerance=tol,
+            inputs=inputs,
+        )
+    band = (min([value, *values]), max([value, *values])) if assumed else None
+    provenances = {i.provenance for i in read}
+    admissible = bool(assumed) and all(i.admissible for i in assumed)
+    status = derive_status(claim, tol, value, values, provenances, admissible)
+
+    common = dict(
+        status=status,
+        tolerance=tol,
+        inputs=inputs,
+        band=band,
+        sensitivity=tuple(sensitivity),
+        alternatives=alternatives,
+    )
+    if status != claim.expected_status:
+        return Evaluation(
+            claim,
+            value,
+            False,
+            f"derived verdict {status!r} differs from the expected {claim.expected_status!r}",
+            **common,
+        )
+    if status != "discrepant":
+        return Evaluation(claim, value, True, f"derived verdict {status}", **common)
+    # discrepant: an erratum, and the book's value must agree with its independent oracle
+    if not claim.erratum or claim.oracle is None or claim.oracle_tolerance is None:
+        return Evaluation(
+            claim, value, False, "a discrepancy needs its erratum and an independent oracle", **common
+        )
+    try:
+        with recording():
+            oracle_value = _coerce(claim.oracle(), claim)
+    except Exception as exc:
+        return Evaluation(claim, value, False, f"oracle raised {type(exc).__name__}: {exc}", **common)
     if claim.is_statement:
-        matches = oracle_value == reproduced
+        matches = oracle_value == value
     else:
-        matches = abs(reproduced - oracle_value) <= claim.oracle_tolerance.allowed(oracle_value)
-    if agrees:
-        detail = "declared discrepant but now agrees with the published value: re-examine"
-    elif not matches:
-        detail = f"disagrees with its independent oracle ({oracle_value!r})"
-    else:
-        detail = "discrepancy confirmed by an independent oracle"
-    return Evaluation(claim, reproduced, (not agrees) and matches, detail, oracle_value)
+        matches = abs(value - oracle_value) <= claim.oracle_tolerance.allowed(oracle_value)
+    detail = (
+        "discrepancy confirmed by an independent oracle"
+        if matches
+        else f"disagrees with its independent oracle ({oracle_value!r})"
+    )
+    return Evaluation(claim, value, matches, detail, oracle_value, **common)

@@ -17,17 +17,19 @@ from functools import cache
 from pathlib import Path
 from typing import Any
 
-from navcore.ledger.core import PAPERS, STATUSES, Claim, Erratum, Evaluation, evaluate
+from navcore.ledger.core import KINDS, PAPERS, STATUSES, Claim, Erratum, Evaluation, evaluate
 
 __all__ = [
     "cache_dir",
     "claim",
     "claims",
     "counts",
+    "counts_by_kind",
     "errata",
     "erratum",
     "evaluate_claim",
     "evaluations",
+    "inputs_report",
     "paper_modules",
     "validate_registry",
 ]
@@ -103,10 +105,23 @@ def validate_registry(all_claims: list[Claim], all_errata: list[Erratum]) -> Non
     for c in all_claims:
         if c.erratum and c.erratum not in eseen:
             raise ValueError(f"claim {c.id!r} names unknown erratum {c.erratum!r}")
+    for c in all_claims:
+        for alias in c.aliases:
+            if alias in seen:
+                raise ValueError(f"alias {alias!r} of claim {c.id!r} is already an id or alias")
+            seen.add(alias)
     for e in all_errata:
         for cid in e.claims:
             if cid not in seen:
                 raise ValueError(f"erratum {e.id!r} names unknown claim {cid!r}")
+    from navcore.ledger.inputs import all_inputs
+
+    papers_loaded = {c.paper for c in all_claims}
+    for inp in all_inputs():
+        if inp.provenance == "fitted" and inp.paper in papers_loaded:
+            unknown = [cid for cid in inp.fitted_to if cid not in seen]
+            if unknown:
+                raise ValueError(f"fitted input {inp.name} names unknown claims {unknown}")
 
 
 def claims(paper: str | None = None, prefix: str | None = None) -> tuple[Claim, ...]:
@@ -132,7 +147,7 @@ def claim(claim_id: str) -> Claim:
     """The claim with id ``claim_id``."""
     key = claim_id.split("-", 1)[0]
     for c in _load(key if key in PAPERS else None)[0]:
-        if c.id == claim_id:
+        if c.id == claim_id or claim_id in c.aliases:
             return c
     raise ValueError(f"claim_id {claim_id!r} is not in the ledger")
 
@@ -187,7 +202,13 @@ def cache_dir() -> Path | None:
 
 
 def _to_json(value: Any) -> Any:
-    if value is None or isinstance(value, bool):
+    if value is None or isinstance(value, bool | str):
+        return value
+    if isinstance(value, list | tuple):
+        return [_to_json(v) for v in value]
+    if isinstance(value, dict):
+        return {k: _to_json(v) for k, v in value.items()}
+    if isinstance(value, int):
         return value
     v = float(value)
     return {"float": repr(v)} if not math.isfinite(v) else v
@@ -195,8 +216,25 @@ def _to_json(value: Any) -> Any:
 
 def _from_json(value: Any) -> Any:
     if isinstance(value, dict):
-        return float(value["float"])
+        if set(value) == {"float"}:
+            return float(value["float"])
+        return {k: _from_json(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return tuple(_from_json(v) for v in value)
     return value
+
+
+_RECORD_FIELDS = (
+    "reproduced",
+    "passes",
+    "detail",
+    "oracle_value",
+    "status",
+    "inputs",
+    "band",
+    "sensitivity",
+    "alternatives",
+)
 
 
 def _cached(claim_id: str) -> Evaluation | None:
@@ -205,27 +243,21 @@ def _cached(claim_id: str) -> Evaluation | None:
         return None
     try:
         data = json.loads((folder / f"{claim_id}.json").read_text())
-    except (OSError, ValueError):
+        c = claim(claim_id)
+        from navcore.ledger.core import resolve_tolerance
+
+        fields = {k: _from_json(data[k]) for k in _RECORD_FIELDS}
+    except (OSError, ValueError, KeyError):
         return None
-    return Evaluation(
-        claim(claim_id),
-        _from_json(data["reproduced"]),
-        bool(data["passes"]),
-        data["detail"],
-        _from_json(data["oracle_value"]),
-    )
+    inputs = tuple(dict(i) for i in fields.pop("inputs"))
+    return Evaluation(c, **fields, inputs=inputs, tolerance=resolve_tolerance(c))
 
 
 def _store(ev: Evaluation) -> None:
     folder = cache_dir()
     if folder is None:
         return
-    data = {
-        "reproduced": _to_json(ev.reproduced),
-        "passes": bool(ev.passes),
-        "detail": ev.detail,
-        "oracle_value": _to_json(ev.oracle_value),
-    }
+    data = {k: _to_json(getattr(ev, k)) for k in _RECORD_FIELDS}
     try:
         folder.mkdir(parents=True, exist_ok=True)
         tmp = folder / f".{ev.claim.id}.{os.getpid()}.tmp"
@@ -256,13 +288,49 @@ def evaluations(paper: str | None = None, prefix: str | None = None) -> list[Eva
 
 
 def counts(paper: str | None = None) -> dict[str, dict[str, int]]:
-    """Declared-status counts per paper: ``{paper: {status: n, ..., "total": n}}``."""
+    """Derived-verdict counts per paper: ``{paper: {status: n, ..., "total": n}}``."""
     papers = [paper] if paper else list(PAPERS)
     out: dict[str, dict[str, int]] = {}
     for p in papers:
         row = {s: 0 for s in STATUSES}
-        for c in claims(p):
-            row[c.status] += 1
-        row["total"] = sum(row[s] for s in STATUSES)
+        for e in evaluations(p):
+            row[e.status] = row.get(e.status, 0) + 1
+        row["total"] = sum(v for k, v in row.items())
         out[p] = row
+    return out
+
+
+def counts_by_kind(paper: str | None = None) -> dict[str, dict[str, dict[str, int]]]:
+    """Counts per paper, kind and derived verdict: ``{paper: {kind: {status: n}}}``."""
+    papers = [paper] if paper else list(PAPERS)
+    out: dict[str, dict[str, dict[str, int]]] = {}
+    for p in papers:
+        table = {k: {s: 0 for s in STATUSES} for k in KINDS}
+        for e in evaluations(p):
+            table[e.kind][e.status] = table[e.kind].get(e.status, 0) + 1
+        out[p] = table
+    return out
+
+
+def inputs_report(paper: str | None = None) -> list[dict[str, Any]]:
+    """Every assumed, fitted and convention input with the claims that read it and how far each moves.
+
+    Each entry: ``input`` (the :class:`~navcore.ledger.inputs.Input`), ``claims`` (ids of
+    the claims whose computation read it) and ``moves`` (for an assumed input, per claim the
+    values at the ends of its range: ``[(claim_id, nominal, ((point, value), ...)), ...]``).
+    """
+    from navcore.ledger.inputs import all_inputs
+
+    evals = evaluations(paper)
+    out = []
+    for inp in all_inputs(paper):
+        if inp.provenance == "published":
+            continue
+        readers = [e for e in evals if any(i["name"] == inp.name for i in e.inputs)]
+        moves = []
+        for e in readers:
+            for name, row in e.sensitivity:
+                if name == inp.name:
+                    moves.append((e.claim.id, e.reproduced, row))
+        out.append({"input": inp, "claims": [e.claim.id for e in readers], "moves": moves})
     return out

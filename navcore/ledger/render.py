@@ -30,8 +30,10 @@ __all__ = [
 STATUS_COLOURS = {
     "reproduced": "#d8f0d8",
     "consistent": "#e6f0fa",
+    "inconsistent": "#f6e7f7",
     "discrepant": "#fbe3d4",
     "not-reproducible": "#eeeeee",
+    "error": "#ffb3b3",
 }
 
 
@@ -60,6 +62,8 @@ def rows(evals: Iterable[Evaluation]) -> list[dict[str, str]]:
     out = []
     for e in evals:
         c = e.claim
+        tol = e.tolerance if e.tolerance is not None else c.tolerance
+        band = "" if e.band is None else f"{format_value(e.band[0])} to {format_value(e.band[1])}"
         out.append(
             {
                 "id": c.id,
@@ -67,12 +71,16 @@ def rows(evals: Iterable[Evaluation]) -> list[dict[str, str]]:
                 "quantity": c.quantity,
                 "published": _published(e),
                 "reproduced": format_value(e.reproduced),
+                "band": band,
                 "unit": c.unit,
-                "tolerance": c.tolerance.describe(),
-                "status": c.status,
+                "kind": str(c.kind),
+                "tolerance": tol.describe() if hasattr(tol, "describe") else "",
+                "policy": getattr(tol, "policy", ""),
+                "status": e.status,
+                "expected_status": c.expected_status,
                 "check": "ok" if e.passes else "FAIL",
-                "note": c.note,
-                "tolerance_reason": c.tolerance.reason,
+                "note": e.note(),
+                "tolerance_reason": getattr(tol, "reason", ""),
                 "erratum": c.erratum,
                 "discussed_in": c.discussed_in,
             }
@@ -94,14 +102,9 @@ def text_table(evals: Sequence[Evaluation], *, width: int = 38) -> str:
     for r in data:
         lines.append("  ".join(clip(r[k]).ljust(widths[k]) for k in cols))
     lines.append("")
-    papers = sorted({e.claim.paper for e in evals}, key=lambda p: list(counts()).index(p))
-    all_counts = counts()
-    lines.append("paper   " + "  ".join(s.rjust(16) for s in (*STATUSES, "total")))
-    for p in papers:
-        row = all_counts[p]
-        lines.append(f"{p:<8}" + "  ".join(str(row[s]).rjust(16) for s in (*STATUSES, "total")))
-    failing = sum(not e.passes for e in evals)
-    lines.append(f"{len(evals)} claims, {failing} failing their check")
+    from navcore.ledger.summary import summary_text
+
+    lines.append(summary_text(evals))
     return "\n".join(lines)
 
 

@@ -681,7 +681,7 @@ def _table21_claim(k: int, p_dl: float, text: str, relation: str) -> Claim:
         unit="dBW",
         compute=lambda: required_erp_dbw("ambiguous", p_dl, k),
         tolerance=tol,
-        status=status,  # type: ignore[arg-type]
+        expected_status=status,  # type: ignore[arg-type]
         relation=relation,  # type: ignore[arg-type]
         note="t = 0, p_f from (D.17) = (2.7.1), N_ADL of (2.8.4) with 2B alpha = 2e7, 4B beta = 9.6e5 and "
         "n_v = 23.86 samples; ERP = x_dB + 10 log10(P0 tau B) = x_dB + 50 dBW."
@@ -705,7 +705,7 @@ CLAIMS: list[Claim] = [
         unit="statement",
         compute=_erp_rises_with_k,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="Threshold search for N_ADL = 0.01 N_T at t = 0, for the caption's P_D = 0.88 and for "
         "Table 2.1's P_DL = 0.999 (the design point most Table 1.1 entries use): both sequences increase "
         "strictly, and the K < 100 values are finite. 'Modest' is read as: a finite requirement for K = 1 "
@@ -723,7 +723,7 @@ CLAIMS: list[Claim] = [
         unit="statement",
         compute=_k1000_beyond_practical,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="'Prohibit' read at the caption's P_D = 0.88: the K = 1000 N_ADL ceiling (J -> inf) lies "
         "below 0.01 N_T, so the threshold search returns infinity, above the printed >130 dBW. At P_DL = "
         "0.999, the design Table 1.1's K = 1000 row actually uses, the ERP is finite (claim "
@@ -741,7 +741,7 @@ CLAIMS: list[Claim] = [
         unit="",
         compute=lambda: TOA_RMS_ERROR_S / UPDATE_INTERVAL_S,
         tolerance=printed("5e-8")[1],
-        status="reproduced",
+        expected_status="reproduced",
         note="Arithmetic on two printed values only (50 ns rms, one update per second): fractional stability "
         "= time error / update interval. No navcore model is involved; the check guards the reading, not a "
         "computation.",
@@ -756,7 +756,7 @@ CLAIMS: list[Claim] = [
         unit="mJ",
         compute=lambda: units.watts_from_dbw(PULSE_POWER_DBW) * PULSE_DURATION_S * 1e3,
         tolerance=Tolerance(reason="exact arithmetic up to rounding", abs=1e-9),
-        status="reproduced",
+        expected_status="reproduced",
         note="Arithmetic on printed values only: E = P0 tau from the module inputs PULSE_POWER_DBW and "
         "PULSE_DURATION_S (the printed 30 dBW and 10 us). The thresholds use GEOMETRY.pulse_energy_j, the "
         "printed 10 mJ, and a test checks that it equals P0 tau. P0 is the average power during the pulse "
@@ -772,7 +772,7 @@ CLAIMS: list[Claim] = [
         unit="statement",
         compute=_k1_bound_is_pd4,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="The closed-form Chernoff bound at K = 1, t = 0 against p_d^4 on a grid of p_d.",
         discussed_in=PAGE,
     ),
@@ -787,7 +787,7 @@ CLAIMS: list[Claim] = [
         unit="statement",
         compute=_exponent_matches_numeric,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="Closed form against bounded numerical maximisation over nu >= 0 at five (t, q) pairs, to "
         "1e-10.",
         discussed_in=PAGE,
@@ -801,7 +801,7 @@ CLAIMS: list[Claim] = [
         unit="statement",
         compute=_bound_tends_to_one,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="p_d = 0.7 (p_d^4 = 0.24), t = 0.2: the bound increases with K and exceeds 1 - 1e-12 at K = "
         "1e4.",
         discussed_in=PAGE,
@@ -818,7 +818,7 @@ CLAIMS: list[Claim] = [
         relation=">=",
         compute=lambda: float(jm.empty_list_rule_detection_probability(design_p_d(0.999, 10) ** 4, 10, 0.0)),
         tolerance=Tolerance(reason="a lower bound as stated; no allowance", abs=0.0),
-        status="discrepant",
+        expected_status="discrepant",
         erratum=E_RULE,
         oracle=lambda: design_p_d(0.999, 10) ** 40,
         oracle_tolerance=Tolerance(
@@ -837,7 +837,7 @@ CLAIMS: list[Claim] = [
         unit="",
         compute=printed_a15_value,
         tolerance=printed("0.999")[1],
-        status="discrepant",
+        expected_status="discrepant",
         erratum=E_A15,
         oracle=lambda: float(stats.binom.pmf(0, 10, design_p_d(0.999, 10) ** 4)),
         oracle_tolerance=Tolerance(reason="exp(-K D) at t = 0 is (1-q)^K exactly: rounding only", rel=1e-9),
@@ -855,7 +855,7 @@ CLAIMS: list[Claim] = [
         unit="statement",
         compute=lambda: printed_c1_equals_b6(False),
         tolerance=EXACT,
-        status="discrepant",
+        expected_status="discrepant",
         erratum=E_C1,
         oracle=lambda: printed_c1_equals_b6(True),
         oracle_tolerance=EXACT,
@@ -872,7 +872,7 @@ CLAIMS: list[Claim] = [
         unit="",
         compute=erf_argument_coefficient,
         tolerance=Tolerance(reason="an exact coefficient; rounding only", abs=1e-9),
-        status="discrepant",
+        expected_status="discrepant",
         erratum=E_ERF,
         oracle=monte_carlo_erf_coefficient,
         oracle_tolerance=Tolerance(
@@ -895,7 +895,7 @@ CLAIMS: list[Claim] = [
         unit="dBW",
         compute=lambda: required_erp_dbw("ambiguous", 0.9, 1),
         tolerance=_READ,
-        status="consistent",
+        expected_status="consistent",
         note="Read off Fig. 2.2; 33.6 dBW for P_DL = 0.88 and 31.7 dBW for 0.999. The N_FL threshold "
         "(99 % of 0.9 N_T) is 34.0 dBW.",
         discussed_in=PAGE_K1,
@@ -910,7 +910,7 @@ CLAIMS: list[Claim] = [
         relation="<",
         compute=lambda: required_erp_dbw("ambiguous", 0.9, 1) - required_erp_dbw("ambiguous", 0.999, 1),
         tolerance=_STRICT,
-        status="reproduced",
+        expected_status="reproduced",
         note="Thresholds at N_ADL = 0.01 N_T; higher P_DL needs less jamming.",
         discussed_in=PAGE_K1,
     ),
@@ -924,7 +924,7 @@ CLAIMS: list[Claim] = [
         relation="<",
         compute=lambda: required_erp_dbw("false", 0.9, 1) - required_erp_dbw("false", 0.999, 1),
         tolerance=_STRICT,
-        status="reproduced",
+        expected_status="reproduced",
         note="Thresholds at 99 % of the N_FL supremum 0.9 N_T.",
         discussed_in=PAGE_K1,
     ),
@@ -937,7 +937,7 @@ CLAIMS: list[Claim] = [
         unit="statement",
         compute=_plateau_below_minus_12db,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="Both bounds are within 0.1 % of their J -> inf ceilings at -12 dB for P_DL in {0.88, 0.9, "
         "0.99, "
         "0.999}; the threshold falls 2-4 dB further down.",
@@ -956,7 +956,7 @@ CLAIMS: list[Claim] = [
             "(1.6 GHz, eta = 0.6) is assumed",
             rel=0.12,
         ),
-        status="consistent",
+        expected_status="consistent",
         note="2 ft from Table 1.1; gain 17.97 dB at 1.6 GHz with efficiency 0.6.",
         discussed_in=PAGE_T11,
     ),
@@ -971,7 +971,7 @@ CLAIMS: list[Claim] = [
             antenna.beamwidth_from_gain_deg(units.power_ratio_from_db(33.0 - units.dbw_from_watts(30.0)))
         ),
         tolerance=printed("20")[1],
-        status="reproduced",
+        expected_status="reproduced",
         note="G = 33 - 14.77 = 18.2 dB; beamwidth sqrt(27000/G) degrees (70 lambda/D for a 2 ft dish at 1.6 "
         "GHz gives 21.4).",
         discussed_in=PAGE_T11,
@@ -987,7 +987,7 @@ CLAIMS: list[Claim] = [
         unit="dB",
         compute=lambda: required_erp_dbw("ambiguous", 0.999, 10) - required_erp_dbw("ambiguous", 0.999, 1),
         tolerance=Tolerance(reason="'about 10 dB' in prose: a band of +-2.5 dB (a quarter decade)", abs=2.5),
-        status="consistent",
+        expected_status="consistent",
         note="N_ADL = 0.01 N_T thresholds at t = 0.",
         discussed_in=PAGE_K,
     ),
@@ -1000,7 +1000,7 @@ CLAIMS: list[Claim] = [
         unit="dB",
         compute=lambda: required_erp_dbw("ambiguous", 0.88, 10) - required_erp_dbw("ambiguous", 0.88, 1),
         tolerance=Tolerance(reason="'about 10 dB' in prose: a band of +-2.5 dB (a quarter decade)", abs=2.5),
-        status="consistent",
+        expected_status="consistent",
         note="N_ADL = 0.01 N_T thresholds at t = 0.",
         discussed_in=PAGE_K,
     ),
@@ -1013,7 +1013,7 @@ CLAIMS: list[Claim] = [
         unit="dB",
         compute=lambda: required_erp_dbw("ambiguous", 0.999, 100) - required_erp_dbw("ambiguous", 0.999, 10),
         tolerance=Tolerance(reason="'about 10 dB' in prose: a band of +-2.5 dB (a quarter decade)", abs=2.5),
-        status="consistent",
+        expected_status="consistent",
         note="N_ADL = 0.01 N_T thresholds at t = 0.",
         discussed_in=PAGE_K,
     ),
@@ -1026,7 +1026,7 @@ CLAIMS: list[Claim] = [
         unit="dB",
         compute=lambda: required_erp_dbw("ambiguous", 0.88, 100) - required_erp_dbw("ambiguous", 0.88, 10),
         tolerance=Tolerance(reason="'about 10 dB' in prose: a band of +-2.5 dB (a quarter decade)", abs=2.5),
-        status="consistent",
+        expected_status="consistent",
         note="N_ADL = 0.01 N_T thresholds at t = 0.",
         discussed_in=PAGE_K,
     ),
@@ -1039,7 +1039,7 @@ CLAIMS: list[Claim] = [
         unit="statement",
         compute=_t_zero_needs_most_power,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="t in {0, 0.05, 0.1, 0.2, 0.3}, both bounds, every finite Table 2.1 design point; p_d re-solved "
         "for each t so that P_DL stays fixed.",
         discussed_in=PAGE_K,
@@ -1053,7 +1053,7 @@ CLAIMS: list[Claim] = [
         unit="statement",
         compute=_fl_less_sensitive_to_t,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="Spread of the required ERP between t = 0 and t = 0.3 at (K, P_DL) = (10, 0.88), (100, 0.88), "
         "(1000, 0.999).",
         discussed_in=PAGE_K,
@@ -1067,7 +1067,7 @@ CLAIMS: list[Claim] = [
         unit="statement",
         compute=_fl_degrades_first,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="At every finite Table 2.1 design point (t = 0) the N_FL threshold (99 % of 0.9 N_T) lies below "
         "the N_ADL threshold (0.01 N_T).",
         discussed_in=PAGE_K,
@@ -1082,7 +1082,7 @@ CLAIMS: list[Claim] = [
         unit="statement",
         compute=_k1000_depends_critically,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="The N_ADL ceiling at K = 1000 reaches 0.01 N_T only for P_DL above about 0.9954.",
         discussed_in=PAGE_K,
     ),
@@ -1095,7 +1095,7 @@ CLAIMS: list[Claim] = [
         unit="statement",
         compute=None,
         tolerance=EXACT,
-        status="not-reproducible",
+        expected_status="not-reproducible",
         note="The figures survive only as captions; only the t = 0 curves are pinned down by the text. The "
         "book draws t in {0, 0.05, 0.1, 0.2, 0.3}.",
         discussed_in=PAGE_K,
@@ -1110,7 +1110,7 @@ CLAIMS: list[Claim] = [
         unit="dBW",
         compute=lambda: required_erp_dbw("ambiguous", 0.88, 1),
         tolerance=_READ,
-        status="consistent",
+        expected_status="consistent",
         note="N_ADL = 0.01 N_T, P_DL = p_d^4 = 0.88.",
         discussed_in=PAGE_T11,
     ),
@@ -1123,7 +1123,7 @@ CLAIMS: list[Claim] = [
         unit="dBW",
         compute=lambda: required_erp_dbw("ambiguous", 0.999, 10),
         tolerance=printed("43")[1],
-        status="reproduced",
+        expected_status="reproduced",
         note="Equals Table 2.1's P_DL = 0.999 row; the caption's 0.88 would give 45.8 dBW (erratum).",
         discussed_in=PAGE_T11,
     ),
@@ -1136,7 +1136,7 @@ CLAIMS: list[Claim] = [
         unit="dBW",
         compute=lambda: required_erp_dbw("ambiguous", 0.999, 100),
         tolerance=_READ,
-        status="discrepant",
+        expected_status="discrepant",
         erratum=E_TAB11,
         oracle=lambda: direct_adl_erp_dbw(0.999, 100),
         oracle_tolerance=_ORACLE_DB,
@@ -1153,7 +1153,7 @@ CLAIMS: list[Claim] = [
         unit="dBW",
         compute=lambda: required_erp_dbw("ambiguous", 0.999, 1000),
         tolerance=_READ_FLAT,
-        status="consistent",
+        expected_status="consistent",
         note="Same entry as Table 2.1; the caption's P_DL = 0.88 gives no finite power.",
         discussed_in=PAGE_T11,
     ),
@@ -1166,7 +1166,7 @@ CLAIMS: list[Claim] = [
         unit="statement",
         compute=lambda: _table11_matches_caption_pdl(False),
         tolerance=EXACT,
-        status="discrepant",
+        expected_status="discrepant",
         erratum=E_TAB11,
         oracle=lambda: _table11_matches_caption_pdl(True),
         oracle_tolerance=EXACT,
@@ -1190,7 +1190,7 @@ for _i, (_k, _erp, _rf, _dia, _bw) in enumerate(TABLE_1_1):
                 "assumed, not stated",
                 abs=1.0,
             ),
-            status="consistent",
+            expected_status="consistent",
             note="G = eta (pi D / lambda)^2 at 1.6 GHz, eta = 0.6.",
             discussed_in=PAGE_T11,
         )
@@ -1205,7 +1205,7 @@ for _i, (_k, _erp, _rf, _dia, _bw) in enumerate(TABLE_1_1):
             unit="ft",
             compute=lambda i=_i: table11_diameter_ft(i),
             tolerance=Tolerance(reason="printed to whole feet; the dish model is assumed", abs=0.5),
-            status="consistent",
+            expected_status="consistent",
             note="D = (lambda/pi) sqrt(G/eta), 1.6 GHz, eta = 0.6 (chosen as a typical L-band dish; the pair "
             "is not unique).",
             discussed_in=PAGE_T11,
@@ -1224,7 +1224,7 @@ for _i, (_k, _erp, _rf, _dia, _bw) in enumerate(TABLE_1_1):
                 tolerance=Tolerance(
                     reason="whole degrees, plus 0.5 deg for the beamwidth rule of thumb", abs=1.0
                 ),
-                status="discrepant",
+                expected_status="discrepant",
                 erratum=E_BEAM,
                 oracle=lambda i=_i: table11_beamwidth_from_gain_deg(i),
                 oracle_tolerance=Tolerance(
@@ -1247,7 +1247,7 @@ for _i, (_k, _erp, _rf, _dia, _bw) in enumerate(TABLE_1_1):
                 tolerance=Tolerance(
                     reason="whole degrees, plus 0.5 deg for the beamwidth rule of thumb", abs=1.0
                 ),
-                status="consistent",
+                expected_status="consistent",
                 note="70 lambda/D for the dish whose gain is ERP - rf power (1.6 GHz, eta = 0.6).",
                 discussed_in=PAGE_T11,
             )

@@ -454,7 +454,7 @@ for _ex in ("I", "II"):
                 unit="",
                 compute=lambda ex=_ex, col=_col: table_4_2_from_geometry(ex, physical_radius_ratio())[col],
                 tolerance=_tol,
-                status="discrepant",
+                expected_status="discrepant",
                 note=(
                     "Spherical Earth R = 6371 km, synchronous orbit r = 42 164 km (ratio 6.618), aircraft "
                     "on the surface, F = unit vectors. "
@@ -483,7 +483,7 @@ for _ex in ("I", "II"):
                     col
                 ],
                 tolerance=_FIT_TOL,
-                status="consistent",
+                expected_status="consistent",
                 note="Same geometry with r_orbit/R_E fitted to the table (9.235)"
                 + (
                     "; col. 5 with the printed, frame-dependent 1'(F3'F3)^-1 1 in east-positive ECEF."
@@ -504,7 +504,7 @@ CLAIMS += [
         unit="statement",
         compute=lambda: max_zenith_angle_deg("I", physical_radius_ratio()) <= 45.0,
         tolerance=EXACT,
-        status="discrepant",
+        expected_status="discrepant",
         note="Physical geometry: satellite 1 is at zenith angle 47.2 deg (45.2 deg at the fitted ratio).",
         erratum=_E2,
         oracle=lambda: _oracle_invariants("I", physical_radius_ratio())["max_zenith_deg"] <= 45.0,
@@ -520,7 +520,7 @@ CLAIMS += [
         unit="statement",
         compute=lambda: max_zenith_angle_deg("II", physical_radius_ratio()) <= 45.0,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="Physical geometry: largest zenith angle 44.0 deg.",
         discussed_in=PAGE_GEOMETRY,
     ),
@@ -533,7 +533,7 @@ CLAIMS += [
         unit="statement",
         compute=lambda: best_triplet("I", physical_radius_ratio(), "trace") == (0, 1, 2),
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="Smallest tr{(F3'F3)^-1} among all 35 triplets (also largest |det F3| and largest "
         "smallest pairwise angle).",
         discussed_in=PAGE_GEOMETRY,
@@ -547,7 +547,7 @@ CLAIMS += [
         unit="statement",
         compute=lambda: best_triplet("II", physical_radius_ratio(), "trace") == (0, 1, 2),
         tolerance=EXACT,
-        status="discrepant",
+        expected_status="discrepant",
         note="Satellites 2, 3, 6 have tr{(F3'F3)^-1} = 8.5 against 13.6 for 1, 2, 3.",
         erratum=_E6,
         oracle=lambda: _oracle_invariants("II", physical_radius_ratio())["triplet_angle"] == (0, 1, 2),
@@ -566,7 +566,7 @@ CLAIMS += [
             for ex in ("I", "II")
         ),
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="True with beta = K - 1'P1 (P = I for K = 3); the printed 'K^-1 1'1' would give 1, not 0.",
         discussed_in=PAGE_GEOMETRY,
     ),
@@ -583,7 +583,7 @@ CLAIMS += [
             for r in (physical_radius_ratio(), fitted_radius_ratio())
         ),
         tolerance=EXACT,
-        status="consistent",
+        expected_status="consistent",
         note="Read as: log10 k rounds to 1 or 2. The two examples give k = 5.2/5.6 (I) and "
         "16.8/18.3 (II), physical/fitted geometry; Ex I is at the low end.",
         discussed_in=PAGE_GEOMETRY,
@@ -629,7 +629,7 @@ for (_ex, _s0), _row in TABLE_4_3.items():
                 unit="" if _ci < 2 else "ft",
                 compute=lambda ex=_ex, s0=_s0, ci=_ci: table_4_3_row(printed_table_4_2(ex), s0)[ci],
                 tolerance=_tol,
-                status=_status,
+                expected_status=_status,
                 note="From the printed Table 4.2 with sigma = 50 ns, c = 1 ft/ns, exact psi (real cube roots)"
                 + (
                     "; gamma_{N+1} = [psi + (27/8) alpha 2/psi]/beta with the printed S3 = "
@@ -655,7 +655,7 @@ for (_ex, _s0), _row in TABLE_4_3.items():
             unit="ft",
             compute=lambda ex=_ex, s0=_s0: corrected_first_three_satellite_sd(ex, s0),
             tolerance=_tol,
-            status="discrepant",
+            expected_status="discrepant",
             note="Fitted-ratio geometry with S3 = 1'(F3F3')^-1 1; steady-state Eq. 4.5.27 at m = 1.",
             erratum=_E1,
             oracle=lambda ex=_ex, s0=_s0: float(
@@ -680,7 +680,7 @@ CLAIMS += [
         unit="statement",
         compute=lambda: ms_ratio_tracking("II", 50.0) <= 0.5 and ms_ratio_tracking("II", 5.0) <= 0.5,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="'Significant' read as: tracking at least halves the mean-square position error "
         "(sd_N^2 / sd_0^2 = 0.19 at sigma0 = sigma, 0.05 at sigma0 = 0.1 sigma).",
         discussed_in=PAGE_EXAMPLES,
@@ -694,7 +694,7 @@ CLAIMS += [
         unit="statement",
         compute=lambda: ms_ratio_tracking("I", 5.0) <= 0.5 < ms_ratio_tracking("I", 50.0),
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="Same criterion: sd_N^2/sd_0^2 = 0.32 at sigma0 = 5 ns, 0.55 at 50 ns.",
         discussed_in=PAGE_EXAMPLES,
     ),
@@ -709,7 +709,7 @@ CLAIMS += [
             jump_share_from_clock_term(_corrected_inputs(ex), 5.0) > 0.5 for ex in ("I", "II")
         ),
         tolerance=EXACT,
-        status="discrepant",
+        expected_status="discrepant",
         note="'Largely' read as: more than half of the mean-square jump at sigma0 = 5 ns. With the "
         "invariant S3 the clock term hardly grows (1.30 -> 1.36, 1.16 -> 1.17); the jump comes from "
         "tr and the lost measurement update. With the printed S3 the statement would hold.",
@@ -732,7 +732,7 @@ for _ex, _pub_s in (("I", 30.0), ("II", 60.0)):
             unit="s",
             compute=lambda ex=_ex: acceptable_outage_s(ex, 5.0, _printed_inputs(ex)),
             tolerance=Tolerance(abs=5.0, reason="'about 30 to 60 seconds': a stated band of 5 s"),
-            status="consistent",
+            expected_status="consistent",
             note="The paper gives no threshold. Inferred: acceptable while the rms stays below 1.8 x the "
             "all-satellite least-squares rms (508 ft, 1637 ft); printed Table 4.2 (printed S3), steady "
             "state before the drop, tau_bar = 1 s.",
@@ -751,7 +751,7 @@ for _ex, _pub_s in (("I", 30.0), ("II", 60.0)):
             unit="s",
             compute=lambda ex=_ex: acceptable_outage_s(ex, 5.0, _corrected_inputs(ex)),
             tolerance=Tolerance(abs=5.0, reason="'about 30 to 60 seconds': a stated band of 5 s"),
-            status="discrepant",
+            expected_status="discrepant",
             note="Same inferred threshold, fitted geometry with S3 = 1'(F3F3')^-1 1.",
             erratum=_E1,
             oracle=lambda ex=_ex: acceptable_outage_mc_s(ex, 5.0),
@@ -772,7 +772,7 @@ CLAIMS += [
         unit="",
         compute=lambda: 1.5 * float(np.cbrt(2.0)),
         tolerance=printed("1.89")[1],
-        status="reproduced",
+        expected_status="reproduced",
         note="1.5 x 2^(1/3) = 1.88988.",
         discussed_in=PAGE_TRACKER,
     ),
@@ -785,7 +785,7 @@ CLAIMS += [
         unit="statement",
         compute=_convergence_rule_holds,
         tolerance=EXACT,
-        status="consistent",
+        expected_status="consistent",
         note="'About' read as: the estimated number of terms 2.3/psi bounds the recursion's n + 1 from "
         "above and is within a factor 3 of it. The recursion converges about twice as fast "
         "(10/2/0/25/5/1 steps against "
@@ -801,7 +801,7 @@ CLAIMS += [
         unit="statement",
         compute=_printed_steps_formula_positive,
         tolerance=EXACT,
-        status="discrepant",
+        expected_status="discrepant",
         note="1/log10(1 - psi) is negative for 0 < psi < 1: a sign is lost (-1/log10(1 - psi) - 1).",
         erratum=_E5,
         oracle=_brute_force_steps_positive,

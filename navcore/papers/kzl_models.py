@@ -340,7 +340,7 @@ CLAIMS = [
         unit="states",
         compute=lambda: ERROR_LAYOUT_17.size,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="Position, velocity, misalignment, accelerometer and gyro bias (3 each) plus clock bias "
         "and drift, as a named layout.",
         discussed_in=PAGE1,
@@ -356,7 +356,7 @@ CLAIMS = [
         tolerance=Tolerance(
             reason="Table 1 prints the integer 90 for a velocity exactly along east", abs=1e-9
         ),
-        status="reproduced",
+        expected_status="reproduced",
         note="atan2(v_E, v_N) with v_ENU = [110, 0, 0] m/s, the Table 1 heading.",
         discussed_in=PAGE1,
     ),
@@ -369,7 +369,7 @@ CLAIMS = [
         unit="statement",
         compute=_printed_levelling_ok_for_specific_force,
         tolerance=EXACT,
-        status="discrepant",
+        expected_status="discrepant",
         note="A level IMU measures f = [0, 0, -g]; printed Eq. (3) returns roll = 180 deg. The formulas "
         "hold for a = -f.",
         erratum="KZL-E1-levelling-sign",
@@ -386,7 +386,7 @@ CLAIMS = [
         unit="statement",
         compute=lambda: KZL_IMU.gyro_bias > 10 * float(np.linalg.norm(earth_rate_ned(51 * DEG)[:2])),
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="Table 1 gyro bias 360 deg/h against the horizontal Earth rate 9.46 deg/h at 51 N (38x).",
         discussed_in=PAGE1,
     ),
@@ -399,7 +399,7 @@ CLAIMS = [
         unit="statement",
         compute=lambda: neglected_rates_deg_per_h() < 0.1 * KZL_IMU.gyro_bias / DEG_PER_H,
         tolerance=EXACT,
-        status="consistent",
+        expected_status="consistent",
         note="|omega_in| = 20.7 deg/h against 360 deg/h (factor 17). The neglected Coriolis term "
         "(about 1900 micro-g) is NOT small against the 2400 micro-g accelerometer bias; inside the "
         "GPS-aided filter it is absorbed by the accelerometer-bias states.",
@@ -414,7 +414,7 @@ CLAIMS = [
         unit="statement",
         compute=series_terminates,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="F is nilpotent (F^4 = 0): the series ends at (FT)^3/6 and equals scipy's expm to 1e-12.",
         discussed_in=PAGE1,
     ),
@@ -427,7 +427,7 @@ CLAIMS = [
         unit="statement",
         compute=_row_counts_eq13,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="Counted from the stacked matrix built by navcore.gnss.carrier_phase.",
         discussed_in=PAGE2,
     ),
@@ -440,7 +440,7 @@ CLAIMS = [
         unit="statement",
         compute=_row_counts_eq17,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="Code and delta range per satellite plus two DDs (baselines A0-A1, A0-A2) per non-master "
         "satellite. Eq. (14) as printed has 7 rows for nu = 2 (a duplicated row); the formula gives 6.",
         discussed_in=PAGE2,
@@ -454,7 +454,7 @@ CLAIMS = [
         unit="statement",
         compute=_complete_only_with_attitude,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="LTI observability rank in straight and level flight at the Table 1 attitude: code and "
         "delta range alone never reach 17 (heading and z-gyro bias are unobservable); with Euler "
         "attitude or DD phases the rank is 17 for nu >= 4.",
@@ -469,7 +469,7 @@ CLAIMS = [
         unit="statement",
         compute=_sequential_equals_batch,
         tolerance=EXACT,
-        status="consistent",
+        expected_status="consistent",
         note="Equal posteriors for 8 satellites with DD rows, provided the correlated DD phases are "
         "whitened (Cholesky) first; the paper does not mention the correlation.",
         discussed_in=PAGE2,
@@ -483,7 +483,7 @@ CLAIMS = [
         unit="statement",
         compute=_printed_R_block_is_jacobian,
         tolerance=EXACT,
-        status="discrepant",
+        expected_status="discrepant",
         note="At heading 90 deg the true block is J_b^-1 R_n^b, a north/east swap of J_b^-1 = I.",
         erratum="KZL-E4-euler-rows",
         oracle=_printed_R_block_oracle,
@@ -499,7 +499,7 @@ CLAIMS = [
         unit="statement",
         compute=_printed_correction_removes_error,
         tolerance=EXACT,
-        status="discrepant",
+        expected_status="discrepant",
         note="At the Table 1 attitude a (1, -0.5, 2) deg error leaves 1.58 deg after the printed "
         "correction; the left product leaves nothing.",
         erratum="KZL-E6-quaternion-order",
@@ -516,7 +516,7 @@ CLAIMS = [
         unit="",
         compute=None,
         tolerance=Tolerance(reason="not evaluated", abs=0.0),
-        status="not-reproducible",
+        expected_status="not-reproducible",
         note="The aircraft speed of the TerraSAR-X hybrid experiments is not given (a 514 km circular "
         "orbit gives 7.6 km/s, so 76x means about 100 m/s; Table 1's 110 m/s gives 69x).",
         discussed_in="kzl/index",
@@ -530,7 +530,7 @@ CLAIMS = [
         unit="km/h",
         compute=None,
         tolerance=Tolerance(reason="not evaluated", abs=0.0),
-        status="not-reproducible",
+        expected_status="not-reproducible",
         note="No sensor specification is given for the navigation-grade INS; a 0.01 deg/h gyro gives the "
         "classic 1 nmi/h class, but that input is an assumption, not the paper's.",
         discussed_in="kzl/index",
@@ -544,7 +544,7 @@ CLAIMS = [
         unit="statement",
         compute=_geometry_rank_is_min_nu_4,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="Rank of the pseudorange geometry matrix [-l^T 1] is min(nu, 4) for the first nu "
         "satellites of the simulation's sky.",
         discussed_in=PAGE2,
@@ -558,7 +558,7 @@ CLAIMS = [
         unit="statement",
         compute=_rotation_vector_equals_euler,
         tolerance=EXACT,
-        status="discrepant",
+        expected_status="discrepant",
         note="True only near zero heading. At the Table 1 heading of 90 deg a north rotation is a "
         "pitch change and an east rotation a roll change (the Jacobian of Eq. (13)).",
         erratum="KZL-E4-euler-rows",

@@ -233,7 +233,7 @@ def _cep_claim(arch: str, power: float) -> Claim:
                 "(50 horizontal-axis samples); the book's value uses 2000 runs",
                 rel=rel,
             ),
-            status="consistent",
+            expected_status="consistent",
             note="Reduced two-channel navigator with the paper's MEMS IMU, initial errors and 2-m range "
             "bias; trajectory, antenna gain and code assumptions are the book's (listed on the page). The "
             "DI error here is set by the unestimated range bias and the short outage near the jammer.",
@@ -248,7 +248,7 @@ def _cep_claim(arch: str, power: float) -> Claim:
         unit="m",
         compute=None,
         tolerance=Tolerance(reason="25-run sampling error, 10 % per standard error", rel=0.2),
-        status="not-reproducible",
+        expected_status="not-reproducible",
         note="The TC error after loss of lock is free-inertial error growth over an outage whose length "
         "depends on the unpublished trajectory (Fig. 3.4), speed, antenna pattern, manoeuvres and "
         "reacquisition logic. The book's reduced model (page sp/06) does not match this value: its "
@@ -267,7 +267,7 @@ CLAIMS = [
         unit="dB",
         compute=lambda: js_for_effective_cn0(CN0_DBHZ, CARRIER_LOSS_CN0, GPS_P_CHIP_RATE_HZ, 2.0),
         tolerance=_js54[1],
-        status="consistent",
+        expected_status="consistent",
         note="Assumptions: P(Y) code (10.23 Mchip/s), unjammed C/N0 41 dB-Hz, wideband Q = 2, and the "
         "Sec. 2.5 tracking threshold of 19 dB(-Hz): J/S = 10 log10(Q Rc (1/19 dB-Hz - 1/41 dB-Hz)).",
         discussed_in=PAGE,
@@ -281,7 +281,7 @@ CLAIMS = [
         unit="dB",
         compute=lambda: DI_LOCK_JS_DB - TC_LOSS_JS_DB,
         tolerance=printed("15", why="'approximately 15 dB'")[1],
-        status="discrepant",
+        expected_status="discrepant",
         erratum="SP-E-di-improvement-15dB",
         oracle=lambda: threshold_dbhz("TC") - threshold_dbhz("DI"),
         oracle_tolerance=Tolerance(
@@ -301,7 +301,7 @@ CLAIMS = [
         unit="x",
         compute=lambda: power_ratio_from_db(20.0),
         tolerance=_aj100,
-        status="reproduced",
+        expected_status="reproduced",
         note="10^(20/10) = 100; in free space the jammer could instead come 10 times closer.",
     ),
     Claim(
@@ -320,7 +320,7 @@ CLAIMS = [
             < 1e-9
         ),
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="Free-space loss grows as 20 log10(d).",
     ),
     *(_cep_claim(a, p) for a, p in (("DI", 100.0), ("TC", 100.0), ("DI", 10.0), ("TC", 10.0))),
@@ -333,7 +333,7 @@ CLAIMS = [
         unit="statement",
         compute=di_better_at_10_and_100w,
         tolerance=EXACT,
-        status="consistent",
+        expected_status="consistent",
         note="Reduced navigator model with the book's trajectory and link assumptions (2000 runs per point).",
         discussed_in=PAGE,
     ),
@@ -346,7 +346,7 @@ CLAIMS = [
         unit="statement",
         compute=comparable_at_low_power,
         tolerance=EXACT,
-        status="consistent",
+        expected_status="consistent",
         note="At 1 W wideband the two CEPs of the reduced model agree within 25 %: both keep lock and are "
         "limited by the unestimated range bias.",
         discussed_in=PAGE,
@@ -361,7 +361,7 @@ CLAIMS = [
         relation=">=",
         compute=None,
         tolerance=Tolerance(reason="read from the text", abs=0.0),
-        status="not-reproducible",
+        expected_status="not-reproducible",
         note="Needs the paper's CEP curves (Figs. 3.6-3.7), whose 6-DOF simulation inputs are not "
         "published. In the book's reduced model the improvement follows the stated 54/65 dB thresholds "
         "(11 dB apart, erratum SP-E-di-improvement-15dB) and stays below 15 dB; see the page.",
@@ -377,7 +377,7 @@ CLAIMS = [
         relation=">",
         compute=None,
         tolerance=Tolerance(reason="read from the text", abs=0.0),
-        status="not-reproducible",
+        expected_status="not-reproducible",
         note="Figs. 3.1-3.3 come from a nonlinear 6-DOF Monte Carlo (27 and 35 runs) of two scenarios whose "
         "trajectories, receiver and filter tuning are not published; only the stated lock limits (54 and "
         "65 dB) can be checked, see SP-sec3.1-improvement-15dB.",
@@ -393,7 +393,7 @@ CLAIMS = [
         relation=">",
         compute=None,
         tolerance=Tolerance(reason="read from the text", abs=0.0),
-        status="not-reproducible",
+        expected_status="not-reproducible",
         note="Needs the Fig. 3.2 rss curves (6-DOF Monte Carlo, 35 runs, 10 and 1 deg/h IMUs), not "
         "published; the reduced PGM model of this page is not the second scenario.",
         discussed_in=PAGE,
@@ -407,7 +407,7 @@ CLAIMS = [
         unit="statement",
         compute=None,
         tolerance=EXACT,
-        status="not-reproducible",
+        expected_status="not-reproducible",
         note="The difference comes from how the deeply integrated filter weights the correlator outputs, "
         "which the paper does not describe; in the reduced model both navigators use the same fixes "
         "while in lock.",

@@ -73,7 +73,7 @@ CLAIMS = [
         unit="states",
         compute=lambda: receiver_pva_layout().size,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="Sum of the block sizes of the receiver layout (PVA + clock + altimeter bias), "
         "whose rows match the printed rows. The table's caption is lost in the source text.",
     ),
@@ -86,7 +86,7 @@ CLAIMS = [
         unit="states",
         compute=lambda: loosely_coupled_layout().size,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="INS core (9) + IMU errors (12) + altimeter bias (1); no clock states, which "
         "live in the receiver's filter.",
     ),
@@ -99,7 +99,7 @@ CLAIMS = [
         unit="states",
         compute=lambda: tightly_coupled_layout().size,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="The loosely coupled states plus user clock bias and drift.",
     ),
     Claim(
@@ -111,7 +111,7 @@ CLAIMS = [
         unit="statement",
         compute=_tight_within_loose_cascade,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="Set inclusion of the Table 2.3 blocks in the union of the Table 2.1 and 2.2 "
         "blocks, with equal block sizes.",
     ),

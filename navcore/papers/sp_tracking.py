@@ -162,7 +162,7 @@ CLAIMS = [
         unit="deg",
         compute=lambda: peak_deg(FOOT_PER_CYCLE_M),
         tolerance=_peak90[1],
-        status="reproduced",
+        expected_status="reproduced",
         note="Corrected closed form (exponent -w0 t/2), peak 0.404453 R/w0^2, with the conversion that "
         "reproduces the paper: 360 deg per 0.3048 m. The stated 300-m code length and the L1 carrier do "
         "not reproduce it (see the two discrepant claims and erratum SP-E-phase-conversion).",
@@ -176,7 +176,7 @@ CLAIMS = [
         unit="rad/s",
         compute=lambda: natural_frequency_for_peak_error(step_deg_s2(FOOT_PER_CYCLE_M), PEAK_LIMIT_DEG),
         tolerance=_omega[1],
-        status="reproduced",
+        expected_status="reproduced",
         note="w0 = sqrt(f_max R / 90 deg) with R = 6 g in deg/s^2 at 360 deg per foot. With the L1 "
         "carrier the same requirement gives 22.37 rad/s.",
     ),
@@ -189,7 +189,7 @@ CLAIMS = [
         unit="deg",
         compute=lambda: peak_deg(CODE_LENGTH_M),
         tolerance=_peak90[1],
-        status="discrepant",
+        expected_status="discrepant",
         erratum="SP-E-phase-conversion",
         oracle=lambda: lsim_peak_deg(CODE_LENGTH_M),
         oracle_tolerance=Tolerance(reason="time-domain simulation on a 25-us grid: 1e-5 relative", rel=1e-5),
@@ -204,7 +204,7 @@ CLAIMS = [
         unit="deg",
         compute=lambda: peak_deg(GPS_L1_WAVELENGTH_M),
         tolerance=_peak90[1],
-        status="discrepant",
+        expected_status="discrepant",
         erratum="SP-E-phase-conversion",
         oracle=lambda: lsim_peak_deg(GPS_L1_WAVELENGTH_M),
         oracle_tolerance=Tolerance(reason="time-domain simulation on a 25-us grid: 1e-5 relative", rel=1e-5),
@@ -220,7 +220,7 @@ CLAIMS = [
         unit="statement",
         compute=closed_form_matches_simulation,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="Compared with a scipy.signal.lsim simulation of E/Theta = s^3/(s^3+2w0 s^2+2w0^2 s+w0^3) "
         "driven by t^2/2 (Butterworth poles, a3 = b3 = 2); the printed t^2 is an OCR error "
         "(erratum SP-E-exponent-t2).",
@@ -234,7 +234,7 @@ CLAIMS = [
         unit="statement",
         compute=eq21_keeps_peak,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="Peaks found on a fine time grid (not from the peak factor) for the four aided steps of "
         "Table 2.6 against the 6 g, 18 rad/s unaided loop: equal to 1e-9 relative, because the error is "
         "R/w0^2 times a function of w0 t.",
@@ -248,7 +248,7 @@ CLAIMS = [
         unit="g",
         compute=lambda: JERK_G_PER_S * JERK_DURATION_S,
         tolerance=Tolerance(reason="exact product of the printed jerk and duration", abs=1e-12),
-        status="reproduced",
+        expected_status="reproduced",
         note="The step the paper substitutes for the jerk has the jerk's final acceleration.",
     ),
     Claim(
@@ -260,7 +260,7 @@ CLAIMS = [
         unit="statement",
         compute=step_more_stringent_than_jerk,
         tolerance=EXACT,
-        status="reproduced",
+        expected_status="reproduced",
         note="True for both conversions at 17.67 rad/s; but the ratio is about 4, not 'slightly' "
         "(erratum SP-E-slightly-stringent).",
     ),
@@ -273,7 +273,7 @@ CLAIMS = [
         unit="ns",
         compute=lambda: 0.5 * GPS_P_CHIP_M / C * 1e9,
         tolerance=Tolerance(reason="'50 ns' has one significant figure: half a unit of 10 ns", abs=5.0),
-        status="reproduced",
+        expected_status="reproduced",
         note="Half a P(Y) chip (10.23 Mchip/s) is 48.9 ns; half a C/A chip would be 489 ns, so the code "
         "loop here tracks P(Y), while the 300-m phase convention of Fig. 2.1 suggests C/A.",
     ),
@@ -286,7 +286,7 @@ CLAIMS = [
         unit="Hz",
         compute=None,
         tolerance=printed("5.83")[1],
-        status="not-reproducible",
+        expected_status="not-reproducible",
         note="No design rule for it is given. For the Butterworth loop of Fig. 2.1 the noise bandwidth "
         "is (5/6) w0 = 14.7 Hz at 17.67 rad/s; 5.83 Hz would need w0 = 7.0 rad/s. The loop's "
         "coefficients and the requirement behind 5.83 Hz are missing.",

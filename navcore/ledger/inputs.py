@@ -1,0 +1,456 @@
+"""Inputs of the ledger's computations, each registered once with its provenance.
+
+A claim's computation reads the numbers it needs from an :class:`InputSet` that its paper
+module defines. Each input is declared once with where it comes from:
+
+``published``
+    printed in the paper; ``locator`` says where (``"Table 2.1"``).
+``convention``
+    a reading the text leaves open (a unit, a sign, which of two printed formulas);
+    ``alternative`` is the other reading, and the ledger shows what it would give.
+``assumed``
+    not in the paper; a nominal value, a plausible ``low``-``high`` range and the reason for
+    both. The ledger evaluates the claim across the range and reports the band.
+``fitted``
+    solved from printed results; ``fitted_to`` names the claims it was fitted to, which are
+    then not evidence.
+
+Reading an input is an attribute access on its set (``SP_IN.tc_loss_js_db``). While the
+ledger evaluates a claim, every read is recorded, so a claim's list of inputs is what its
+computation actually read and cannot drift from the code; the same mechanism lets the
+ledger re-run a claim with one input changed (:func:`overriding`).
+
+Two rules keep verdicts honest:
+
+* inputs may not be read while a paper module is being imported, nor while the ledger
+  resolves a tolerance: a tolerance or an expected status can therefore never be computed
+  from the model (LEDGER.md, "fixed before the value is computed");
+* a function that memoises a result computed from inputs must use :func:`input_cache`
+  (not :func:`functools.cache`), which keys the memo on the values the result read and
+  replays those reads, so cached results are recorded and follow overrides.
+
+Example
+-------
+>>> from navcore.ledger.inputs import InputSet, recording
+>>> IN = InputSet("WF", "doc")
+>>> IN.published("carrier_hz", 1.0e9, unit="Hz", locator="Sec. IV", quantity="carrier frequency")
+>>> with recording() as reads:
+...     wavelength = 3.0e8 / IN.carrier_hz
+>>> sorted(reads)
+['WF.doc.carrier_hz']
+"""
+
+from __future__ import annotations
+
+import contextlib
+import contextvars
+import functools
+import math
+import sys
+from collections.abc import Callable, Iterator, Sequence
+from dataclasses import dataclass, field
+from typing import Any, Literal, TypeVar
+
+__all__ = [
+    "PROVENANCES",
+    "Input",
+    "InputReadError",
+    "InputSet",
+    "all_inputs",
+    "declaring",
+    "get_input",
+    "input_cache",
+    "overriding",
+    "recording",
+]
+
+Provenance = Literal["published", "convention", "assumed", "fitted"]
+PROVENANCES: tuple[str, ...] = ("published", "convention", "assumed", "fitted")
+
+F = TypeVar("F", bound=Callable[..., Any])
+
+
+class InputReadError(RuntimeError):
+    """An input was read where no computation may run (import of a paper module, tolerance)."""
+
+
+@dataclass(frozen=True)
+class Input:
+    """One registered input of a claim's computation.
+
+    Parameters
+    ----------
+    name : str
+        Full name, ``"<PAPER>.<set>.<attribute>"`` (``"SP.antijam.tc_loss_js_db"``).
+    paper : str
+        Paper key.
+    value : Any
+        The nominal value (published, the convention's reading, the assumption's nominal, or
+        the fitted value), in ``unit``.
+    provenance : str
+        One of :data:`PROVENANCES`.
+    unit, quantity : str
+        Unit of ``value`` and what it is, in words.
+    locator : str
+        Where a ``published`` input is printed.
+    reason : str
+        Why a ``convention``, ``assumed`` or ``fitted`` input has its value (and range).
+    low, high : float or None
+        Plausible range of an ``assumed`` input.
+    grid : int
+        Number of points across ``low``-``high`` at which the band is evaluated (0: the two
+        ends only; use a grid where the response is not monotone).
+    admissible : bool
+        ``True`` when ``low``-``high`` is every admissible value (a physical limit), so a
+        disagreement across the whole band is a discrepancy, not an inconsistency.
+    alternative : Any
+        The other reading of a ``convention`` input.
+    fitted_to : tuple of str
+        Claim ids a ``fitted`` input was solved from.
+    """
+
+    name: str
+    paper: str
+    value: Any
+    provenance: Provenance
+    unit: str = ""
+    quantity: str = ""
+    locator: str = ""
+    reason: str = ""
+    low: float | None = None
+    high: float | None = None
+    grid: int = 0
+    admissible: bool = False
+    alternative: Any = None
+    fitted_to: tuple[str, ...] = field(default_factory=tuple)
+
+    def __post_init__(self) -> None:
+        if self.provenance not in PROVENANCES:
+            raise ValueError(f"Input.provenance must be one of {PROVENANCES}, got {self.provenance!r}")
+        if self.provenance == "published" and not self.locator.strip():
+            raise ValueError(f"published input {self.name} needs the locator where it is printed")
+        if self.provenance != "published" and not self.reason.strip():
+            raise ValueError(f"{self.provenance} input {self.name} needs a reason")
+        if self.provenance == "assumed":
+            if self.low is None or self.high is None:
+                raise ValueError(f"assumed input {self.name} needs a plausible range low..high")
+            if not (self.low <= float(self.value) <= self.high):
+                raise ValueError(
+                    f"assumed input {self.name}: nominal {self.value!r} must lie in [{self.low}, {self.high}]"
+                )
+        if self.provenance == "convention" and self.alternative is None:
+            raise ValueError(f"convention input {self.name} needs the alternative reading")
+        if self.provenance == "fitted" and not self.fitted_to:
+            raise ValueError(f"fitted input {self.name} must name the claims it was fitted to")
+
+    @property
+    def band_points(self) -> tuple[Any, ...]:
+        """The values at which the band is evaluated (assumed inputs only)."""
+        if self.provenance != "assumed":
+            return ()
+        assert self.low is not None and self.high is not None
+        if self.grid and self.grid > 2:
+            step = (self.high - self.low) / (self.grid - 1)
+            pts = [self.low + i * step for i in range(self.grid)]
+        else:
+            pts = [self.low, self.high]
+        if isinstance(self.value, int) and not isinstance(self.value, bool):
+            pts = sorted({round(p) for p in pts})
+        return tuple(pts)
+
+    def source(self) -> str:
+        """The locator of a published input, else the reason."""
+        return self.locator if self.provenance == "published" else self.reason
+
+
+_REGISTRY: dict[str, Input] = {}
+
+# the reads of the innermost active recording; None when nothing records
+_RECORDER: contextvars.ContextVar[dict[str, Input] | None] = contextvars.ContextVar(
+    "navcore_input_recorder", default=None
+)
+_NO_OVERRIDES: dict[str, Any] = {}  # never mutated: overriding() sets a fresh dict
+_OVERRIDES: contextvars.ContextVar[dict[str, Any]] = contextvars.ContextVar(
+    "navcore_input_overrides",
+    default=_NO_OVERRIDES,
+)
+_DECLARING: contextvars.ContextVar[bool] = contextvars.ContextVar("navcore_input_declaring", default=False)
+
+
+def _importing_paper_module() -> str | None:
+    """Name of a ``navcore.papers`` module whose top level is executing on this stack."""
+    frame = sys._getframe(2)
+    while frame is not None:
+        if frame.f_code.co_name == "<module>":
+            mod = frame.f_globals.get("__name__", "")
+            if mod.startswith("navcore.papers."):
+                return mod
+        frame = frame.f_back  # type: ignore[assignment]
+    return None
+
+
+def _guard(name: str, recorded: bool) -> None:
+    if _DECLARING.get():
+        raise InputReadError(
+            f"input {name} read while a tolerance was resolved: tolerances are fixed by the "
+            "printed text before anything is computed"
+        )
+    if not recorded:
+        module = _importing_paper_module()
+        if module is not None:
+            raise InputReadError(
+                f"input {name} read while {module} was imported: a paper module declares its "
+                "claims (tolerance, expected status) before anything is computed; compute inside "
+                "a claim's compute function"
+            )
+
+
+def _read(inp: Input) -> Any:
+    rec = _RECORDER.get()
+    _guard(inp.name, rec is not None)
+    if rec is not None:
+        rec[inp.name] = inp
+    overrides = _OVERRIDES.get()
+    return overrides[inp.name] if inp.name in overrides else inp.value
+
+
+class InputSet:
+    """The registered inputs of one paper module, read as attributes.
+
+    Parameters
+    ----------
+    paper : str
+        Paper key (``"SP"``).
+    section : str
+        A short name for the module's set (``"antijam"``); full input names are
+        ``"<paper>.<section>.<attribute>"``.
+    """
+
+    def __init__(self, paper: str, section: str) -> None:
+        object.__setattr__(self, "_paper", paper)
+        object.__setattr__(self, "_section", section)
+        object.__setattr__(self, "_inputs", {})
+
+    # -- declaration ---------------------------------------------------------------------
+    def _add(self, attr: str, **kw: Any) -> None:
+        if not attr.isidentifier() or attr.startswith("_"):
+            raise ValueError(f"input name must be a public identifier, got {attr!r}")
+        inputs: dict[str, Input] = object.__getattribute__(self, "_inputs")
+        if attr in inputs:
+            raise ValueError(f"input {attr!r} is declared twice in {self!r}")
+        full = f"{self._paper}.{self._section}.{attr}"
+        if full in _REGISTRY and _REGISTRY[full] != Input(name=full, paper=self._paper, **kw):
+            raise ValueError(f"input {full} is registered twice with different declarations")
+        inp = Input(name=full, paper=self._paper, **kw)
+        inputs[attr] = inp
+        _REGISTRY[full] = inp
+
+    def published(self, attr: str, value: Any, *, locator: str, unit: str = "", quantity: str = "") -> None:
+        """Declare an input printed in the paper at ``locator``."""
+        self._add(attr, value=value, provenance="published", locator=locator, unit=unit, quantity=quantity)
+
+    def convention(
+        self, attr: str, value: Any, *, alternative: Any, reason: str, unit: str = "", quantity: str = ""
+    ) -> None:
+        """Declare a reading the text leaves open, with the other reading."""
+        self._add(
+            attr,
+            value=value,
+            provenance="convention",
+            alternative=alternative,
+            reason=reason,
+            unit=unit,
+            quantity=quantity,
+        )
+
+    def assumed(
+        self,
+        attr: str,
+        value: Any,
+        *,
+        low: float,
+        high: float,
+        reason: str,
+        unit: str = "",
+        quantity: str = "",
+        grid: int = 0,
+        admissible: bool = False,
+    ) -> None:
+        """Declare an input the paper does not give: nominal, plausible range and reason."""
+        self._add(
+            attr,
+            value=value,
+            provenance="assumed",
+            low=low,
+            high=high,
+            reason=reason,
+            unit=unit,
+            quantity=quantity,
+            grid=grid,
+            admissible=admissible,
+        )
+
+    def fitted(
+        self,
+        attr: str,
+        value: Any,
+        *,
+        fitted_to: Sequence[str],
+        reason: str,
+        unit: str = "",
+        quantity: str = "",
+    ) -> None:
+        """Declare a parameter solved from printed results, naming the claims it was fitted to."""
+        self._add(
+            attr,
+            value=value,
+            provenance="fitted",
+            fitted_to=tuple(fitted_to),
+            reason=reason,
+            unit=unit,
+            quantity=quantity,
+        )
+
+    # -- reading -------------------------------------------------------------------------
+    def __getattr__(self, attr: str) -> Any:
+        inputs: dict[str, Input] = object.__getattribute__(self, "_inputs")
+        try:
+            inp = inputs[attr]
+        except KeyError:
+            raise AttributeError(f"{self!r} has no input {attr!r}") from None
+        return _read(inp)
+
+    def __setattr__(self, attr: str, value: Any) -> None:
+        raise AttributeError("inputs are declared with published(), convention(), assumed() or fitted()")
+
+    def nominal(self, attr: str) -> Any:
+        """The declared value without recording a read: for labels and ids only, never a computation."""
+        return object.__getattribute__(self, "_inputs")[attr].value
+
+    def input(self, attr: str) -> Input:
+        """The :class:`Input` record of ``attr``."""
+        return object.__getattribute__(self, "_inputs")[attr]
+
+    def __iter__(self) -> Iterator[Input]:
+        return iter(object.__getattribute__(self, "_inputs").values())
+
+    def __repr__(self) -> str:
+        return f"InputSet({self._paper!r}, {self._section!r})"
+
+
+def all_inputs(paper: str | None = None) -> tuple[Input, ...]:
+    """Every registered input (of ``paper`` if given), in declaration order.
+
+    Only the inputs of paper modules already imported are registered; the ledger's registry
+    imports them all.
+    """
+    return tuple(i for i in _REGISTRY.values() if paper is None or i.paper == paper)
+
+
+def get_input(name: str) -> Input:
+    """The registered input with full name ``name``."""
+    try:
+        return _REGISTRY[name]
+    except KeyError:
+        raise ValueError(f"name {name!r} is not a registered input") from None
+
+
+@contextlib.contextmanager
+def recording() -> Iterator[dict[str, Input]]:
+    """Record every input read inside the block into the yielded dict (name -> Input)."""
+    reads: dict[str, Input] = {}
+    token = _RECORDER.set(reads)
+    try:
+        yield reads
+    finally:
+        _RECORDER.reset(token)
+
+
+@contextlib.contextmanager
+def overriding(values: dict[str, Any]) -> Iterator[None]:
+    """Read the inputs named in ``values`` (full names) with those values inside the block."""
+    for name in values:
+        get_input(name)  # unknown names are an error, not a silent no-op
+    merged = {**_OVERRIDES.get(), **values}
+    token = _OVERRIDES.set(merged)
+    try:
+        yield
+    finally:
+        _OVERRIDES.reset(token)
+
+
+@contextlib.contextmanager
+def declaring() -> Iterator[None]:
+    """Forbid every input read inside the block (the ledger resolves tolerances in one)."""
+    token = _DECLARING.set(True)
+    try:
+        yield
+    finally:
+        _DECLARING.reset(token)
+
+
+def _same(a: Any, b: Any) -> bool:
+    if a is b:
+        return True
+    try:
+        eq = a == b
+        if isinstance(eq, bool):
+            return eq
+        return bool(eq.all())
+    except Exception:
+        return repr(a) == repr(b)
+
+
+def _current(inp: Input) -> Any:
+    overrides = _OVERRIDES.get()
+    return overrides[inp.name] if inp.name in overrides else inp.value
+
+
+def _hashable(obj: Any) -> Any:
+    try:
+        hash(obj)
+        return obj
+    except TypeError:
+        return repr(obj)
+
+
+def input_cache(fn: F) -> F:
+    """Memoise ``fn`` keyed on its arguments and on the values of the inputs it read.
+
+    The first call records the inputs ``fn`` reads; a later call with the same arguments
+    returns the stored result only if those inputs still have the same values (overrides
+    included), and replays the reads into the caller's recording. Use it instead of
+    :func:`functools.cache` for anything that reads inputs.
+    """
+    store: dict[Any, list[tuple[tuple[tuple[Input, Any], ...], Any]]] = {}
+
+    @functools.wraps(fn)
+    def wrapper(*args: Any, **kwargs: Any) -> Any:
+        key = (tuple(_hashable(a) for a in args), tuple(sorted((k, _hashable(v)) for k, v in kwargs.items())))
+        outer = _RECORDER.get()
+        _guard(getattr(fn, "__qualname__", "a cached computation"), outer is not None)
+        for reads, result in store.get(key, ()):
+            if all(_same(_current(inp), value) for inp, value in reads):
+                if outer is not None:
+                    for inp, _ in reads:
+                        _read(inp)
+                return result
+        with recording() as inner:
+            result = fn(*args, **kwargs)
+        reads = tuple((inp, _current(inp)) for inp in inner.values())
+        if outer is not None:
+            for inp, _ in reads:
+                _read(inp)
+        variants = store.setdefault(key, [])
+        variants.append((reads, result))
+        if len(variants) > 64:  # bounded: perturbation runs create variants
+            del variants[:-64]
+        return result
+
+    wrapper.cache_clear = store.clear  # type: ignore[attr-defined]
+    return wrapper  # type: ignore[return-value]
+
+
+def is_number(value: Any) -> bool:
+    """True for a real scalar (not a bool)."""
+    return isinstance(value, int | float) and not isinstance(value, bool) and math.isfinite(float(value))
