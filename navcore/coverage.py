@@ -133,7 +133,7 @@ def summary(paper: str) -> dict[str, Any]:
         "percent": 100.0 * sum(i.covered for i in counted) / len(counted) if counted else 0.0,
         "equations": len(eqs),
         "equations_checked": sum(i.covered for i in eqs),
-        "equations_reasoned": sum((not i.covered) for i in eqs),
+        "equations_reasoned": sum((not i.covered) and bool(i.reason.strip()) for i in eqs),
         "inputs": len(inputs),
         "errata": len(errs),
         "errata_with_claims": sum(bool(e.claims) for e in errs),
