@@ -193,14 +193,17 @@ def test_input_declarations_are_checked():
 # --- the real registry -------------------------------------------------------------------
 
 
-def _perturbed(value):
+def _perturbations(value):
+    """Changes of a published scalar, smallest first: a statement may need a large one to flip."""
     if isinstance(value, bool):
-        return not value
+        return [not value]
     if isinstance(value, int):
-        return value + 1
+        return [value + 1, 2 * value + 1, 10 * value + 10]
     if isinstance(value, float):
-        return value * 1.1 if value else 0.1
-    return None
+        if not value:
+            return [0.1, 1.0, -1.0]
+        return [value * f for f in (1.1, 2.0, 0.5, 10.0, 0.1, -1.0)]
+    return []
 
 
 def _moved(a, b) -> bool:
@@ -231,16 +234,19 @@ def test_each_published_input_moves_the_claims_that_read_it(paper):
         pytest.skip(f"{paper} reads no published input yet")
     silent, ledger_fails = [], False
     for inp in published:
-        new = _perturbed(inp.value)
-        if new is None:
+        changes = _perturbations(inp.value)
+        if not changes:
             continue
         moved = False
-        for cid in readers[inp.name]:
-            with overriding({inp.name: new}):
-                ev = evaluate(ledger.claim(cid), bands=False)
-            if _moved(ev, base[cid]):
-                moved = True
-                ledger_fails = ledger_fails or not ev.passes
+        for new in changes:
+            for cid in readers[inp.name]:
+                with overriding({inp.name: new}):
+                    ev = evaluate(ledger.claim(cid), bands=False)
+                if _moved(ev, base[cid]):
+                    moved = True
+                    ledger_fails = ledger_fails or not ev.passes
+                    break
+            if moved:
                 break
         if not moved:
             silent.append(f"{inp.name} (read by {readers[inp.name]})")
