@@ -299,6 +299,14 @@ def gaussian_always_more_optimistic() -> bool:
     return all(act > g for act, g in gaussian_comparison_table().values())
 
 
+def gaussian_smallest_pf_ratio() -> float:
+    """Smallest ratio actual best p_f / ROC_g p_f over densities, contours and p_d = 0.9, 0.99.
+
+    The Sec. 3.8 conclusion 'ROC_g p_f always lower than the actual p_f' is this ratio > 1.
+    """
+    return float(min(act / g for act, g in gaussian_comparison_table().values()))
+
+
 def gaussian_beaten_at_low_snr_oracle() -> bool:
     """Independent check: at x = 3 the exact Gaussian-C mixture beats ROC_g at p_d = 0.9.
 
@@ -1020,13 +1028,17 @@ CLAIMS = [
         id="ATC10-sec3.8-gauss-always-optimistic",
         paper="ATC10",
         locator="Sec. 3.8, comparison of Figs. 3.3-3.6 with Fig. 3.8",
-        quantity="the p_f of ROC_g is always lower than the actual p_f (N = 1e5, tau/alpha = 2e-5, C1..C4)",
-        published=True,
-        unit="statement",
-        compute=gaussian_always_more_optimistic,
-        tolerance=STATEMENT,
+        quantity="the p_f of ROC_g is always lower than the actual p_f (N = 1e5, tau/alpha = 2e-5, C1..C4): "
+        "smallest ratio actual best p_f / ROC_g p_f",
+        published=1.0,
+        relation=">",
+        unit="ratio",
+        kind="statement",
+        compute=gaussian_smallest_pf_ratio,
+        tolerance=EXACT,
         expected_status="consistent",
-        note="Actual ROCs from exact sums (C2, C4) and stratified Monte Carlo (C1, C3) at p_d >= 0.9 "
+        note="'Always lower' is the smallest ratio > 1, over the four densities, the contours and p_d = 0.9, "
+        "0.99. Actual ROCs from exact sums (C2, C4) and stratified Monte Carlo (C1, C3) at p_d >= 0.9 "
         "and 0.99 at the contours: ROC_g is more optimistic at high SNR but not at 1/sqrt(3b) = 3, where "
         "the continuous densities beat it (confirmed by the exact Gaussian-C mixture, "
         "gaussian_beaten_at_low_snr_oracle). The contour labels are lost: if the figures' lowest contour "
@@ -1060,6 +1072,24 @@ CLAIMS = [
         expected_status="consistent",
         note="Exp = 3.30 against 4: a shortfall of 17 %, against the assumed reading of 'non-negligible' "
         "(5-20 %; false only above 17 %).",
+        discussed_in=PAGE_GAUSS,
+    ),
+    Claim(
+        id="ATC10-fig3.9-exp-below",
+        paper="ATC10",
+        locator="Sec. 3.8, Fig. 3.9",
+        quantity="Exp at N = 1e5, tau/alpha = 1e-5 is less than Exp_g = 4",
+        published=float(IN.nominal("exp_g_fig39")),
+        relation="<",
+        unit="",
+        kind="statement",
+        compute=lambda: float(
+            exponent_from_gaussian_exponent(IN.n_fig39, IN.tau_over_alpha_fig39, IN.exp_g_fig39)
+        ),
+        tolerance=EXACT,
+        expected_status="reproduced",
+        note="The numbers behind ATC10-fig3.9-shortfall: Eq. (3.8.16) gives Exp = 3.30 (the published value "
+        "is the printed Exp_g = 4, the relation the text's 'less than').",
         discussed_in=PAGE_GAUSS,
     ),
     Claim(
