@@ -25,8 +25,8 @@ def test_outage_threshold_factor_gives_rule_4():
         assert got == pytest.approx(printed_s, rel=0.1)
 
 
-def test_table_4_3_inconsistent_cell_reaches_printed_at_a_corner():
-    """The one inconsistent Table 4.3 cell (Ex I, 50 ns, col. v) reaches 450 +- 0.5 at a rounding corner."""
+def test_table_4_3_cell_at_the_edge_reaches_printed_only_at_a_corner():
+    """Table 4.3 Ex I, 50 ns, col. v reaches 450 +- 0.5 only at a corner of the rounding box."""
     import itertools
 
     from navcore.ledger.inputs import overriding
