@@ -13,7 +13,11 @@ machine without the papers' texts. An item is one thing a reader could look up:
     reason such as "a definition");
 ``input``
     a number the paper gives as an input (parameter tables, scenario values): counted
-    apart; covered when a registered input or claim reads it.
+    apart; covered when a registered input or claim reads it;
+``context``
+    printed text with nothing a computation could check (a quotation of another report, a
+    judgement of cost or practicality, a remark on the analysis's scope, a modelling
+    assumption stated as such): counted apart, each with its reason.
 
 Each item names the claims that check it (``claims``) or says why it has none (``reason``).
 :func:`problems` lists what breaks that rule, and :func:`summary` gives the percentages the
@@ -40,7 +44,7 @@ __all__ = [
     "summary_frame",
 ]
 
-CATEGORIES = ("quantity", "statement", "equation", "input")
+CATEGORIES = ("quantity", "statement", "equation", "input", "context")
 COUNTED = ("quantity", "statement")  # the quantitative items of the coverage percentage
 
 
@@ -125,6 +129,7 @@ def summary(paper: str) -> dict[str, Any]:
     counted = [i for i in its if i.category in COUNTED]
     eqs = [i for i in its if i.category == "equation"]
     inputs = [i for i in its if i.category == "input"]
+    context = [i for i in its if i.category == "context"]
     errs = ledger.errata(paper)
     return {
         "paper": paper,
@@ -135,6 +140,7 @@ def summary(paper: str) -> dict[str, Any]:
         "equations_checked": sum(i.covered for i in eqs),
         "equations_reasoned": sum((not i.covered) and bool(i.reason.strip()) for i in eqs),
         "inputs": len(inputs),
+        "context": len(context),
         "errata": len(errs),
         "errata_with_claims": sum(bool(e.claims) for e in errs),
     }
