@@ -254,28 +254,33 @@ def test_each_published_input_moves_the_claims_that_read_it(paper):
     assert ledger_fails, f"no perturbation of a {paper} published input makes the ledger fail"
 
 
-def _wrong(claim: Claim, tol: Tolerance):
+def _wrong(claim: Claim, tol: Tolerance, expected: str):
+    """A value that reverses the claim's agreement: far off the print if it agrees, the print if not."""
+    disagrees = expected in ("discrepant", "inconsistent")
     if claim.is_statement:
-        return not claim.published
+        return claim.published if disagrees else not claim.published
     pub = float(claim.published)
+    if disagrees:
+        return pub
     far = 100.0 * tol.allowed(pub) + 10.0 * abs(pub) + 1.0
     return pub - far if claim.relation in (">", ">=") else pub + far
 
 
 @pytest.mark.parametrize("paper", list(ledger.PAPERS))
 def test_a_wrong_value_changes_the_verdict_not_the_tolerance(paper):
-    """Substitute a value far outside the printed one: the verdict moves to a disagreement,
-    the tolerance (fixed before the computation) stays what it was."""
+    """Substitute a value that reverses the claim's agreement with the print (far outside it when
+    the claim agrees, the printed value itself when it does not): the derived verdict changes and
+    the ledger fails; the tolerance, fixed before the computation, stays what it was."""
     from navcore.ledger.core import resolve_tolerance
 
     for c in ledger.claims(paper):
         if c.compute is None:
             continue
         tol = resolve_tolerance(c)
-        wrong = _wrong(c, tol)
+        wrong = _wrong(c, tol, c.expected_status)
         ev = evaluate(dataclasses.replace(c, compute=lambda w=wrong: w), bands=False)
         assert ev.tolerance == tol, c.id
-        assert ev.status in ("discrepant", "inconsistent"), (c.id, ev.status)
+        assert ev.status != c.expected_status, (c.id, ev.status)
         assert not ev.passes, c.id
 
 
