@@ -1161,6 +1161,7 @@ ERRATA += [
         evidence="The corrected recursion reproduces Table 4.3 and its fixed point is the root of the "
         "printed cubic (4.5.26); a seeded Monte Carlo of the tracker matches its variances (tests).",
         discussed_in=PAGE_TRACKER,
+        claims=("ATC10-eq4.5.31-printed", "ATC10-eq4.5.35-printed"),
     ),
     Erratum(
         id=_E5,
@@ -1193,6 +1194,7 @@ ERRATA += [
         evidence="With the corrected integrand the quadrature equals 1/(Gamma(2 rho+1) sin pi rho) to 1e-8 "
         "(test).",
         discussed_in=PAGE_TRACKER,
+        claims=("ATC10-appG-V0-printed",),
     ),
     Erratum(
         id="ATC10-E4.8-var-of-norm",
@@ -1203,6 +1205,7 @@ ERRATA += [
         evidence="Monte Carlo: at n = 0 in Example I the variance of the norm is about a quarter of "
         "E|xi_p|^2, which is what the formulas give.",
         discussed_in=PAGE_EXAMPLES,
+        claims=("ATC10-tab4.3-exI-sd0-norm-variance",),
     ),
     Erratum(
         id="ATC10-E4.10-scalar-gain",
@@ -1213,5 +1216,6 @@ ERRATA += [
         evidence="Equals the general gain H of Eq. (H.20) to 1e-12 and gives the error variance "
         "sigma^2 gamma of (H.21); the printed numerator does not (test).",
         discussed_in=PAGE_TRACKER,
+        claims=("ATC10-appH-scalar-gain-printed",),
     ),
 ]
