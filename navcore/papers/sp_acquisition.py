@@ -21,7 +21,7 @@ from navcore.gnss.acquisition import (
 from navcore.gnss.tracking import distance_to_phase_deg
 from navcore.ledger import EXACT, Claim, Erratum, Tolerance, printed
 from navcore.location.target_location import target_location_rss
-from navcore.papers.sp_tables import TABLE_2_5_PRINTED
+from navcore.papers.sp_tables import table_2_5_value
 from navcore.units import DEG, DEG_PER_H, GPS_L1_WAVELENGTH_M, OMEGA_EARTH
 
 PAGE_ACQ = "sp/04-acquisition"
@@ -54,10 +54,6 @@ HELICOPTER_ERROR_10NMI_M = 2750.0
 #: Assumption for the pointing error: the steady-state gyrocompass heading error of the Table 2.5
 #: gyro bias at latitude 45 deg, psi = eps / (Omega cos L); the paper gives no attitude error.
 ASSUMED_LATITUDE_DEG = 45.0
-GYRO_BIAS_DEG_PER_H = {
-    "10": TABLE_2_5_PRINTED["gyro_bias_deg_per_h"][0],
-    "1": TABLE_2_5_PRINTED["gyro_bias_deg_per_h"][1],
-}
 
 
 def search_times_s(system: str) -> np.ndarray:
@@ -79,7 +75,11 @@ def table_2_7_monotone() -> bool:
 
 def gyrocompass_heading_error_rad(grade: str) -> float:
     """Assumed heading error: gyro bias / (Earth rate x cos latitude)."""
-    return GYRO_BIAS_DEG_PER_H[grade] * DEG_PER_H / (OMEGA_EARTH * math.cos(ASSUMED_LATITUDE_DEG * DEG))
+    return (
+        table_2_5_value("gyro_bias_deg_per_h", float(grade))
+        * DEG_PER_H
+        / (OMEGA_EARTH * math.cos(ASSUMED_LATITUDE_DEG * DEG))
+    )
 
 
 def pointing_negligible() -> bool:
