@@ -123,25 +123,27 @@ IN.assumed(
     "turn for a transport; half to twice that covers a gentle to a brisk turn",
 )
 IN.assumed(
-    "lc_pseudorange_noise_m",
+    "headon_lc_pseudorange_noise_m",
     1.0,
     low=0.5,
     high=3.0,
     unit="m",
-    quantity="pseudorange noise behind the loosely coupled receiver's own position fix",
-    reason="not published ('this particular loosely coupled system'); 0.5-3 m spans P(Y) code "
-    "receivers of the period. The tightly coupled filter's pseudorange noise is fixed at 1 m "
-    "(it moves no claim: the 84-min 1 nmi/h error is 883-886 m for 0.5-3 m)",
+    quantity="pseudorange noise behind the position fix of the head-on mission's loosely coupled receiver",
+    reason="Sec. 2.6.3 speaks of 'this particular loosely coupled system' and its receiver is not "
+    "published; 0.5-3 m spans P(Y) code receivers of the period. Elsewhere the pseudorange noise "
+    "is fixed at 1 m: it moves no other claim (the 84-min 1 nmi/h error is 883-886 m for 0.5-3 m)",
 )
 IN.assumed(
-    "helicopter_calibration_min",
-    30.0,
-    low=15.0,
-    high=60.0,
-    unit="min",
-    quantity="GPS-aided flight of the helicopter before jamming",
-    reason="'until on-board estimates of IMU calibration and alignment had reached steady state' "
-    "(Sec. 2.6.4): not given; 15-60 min spans a few to many 5-min manoeuvre cycles",
+    "target_bearing_deg",
+    45.0,
+    low=0.0,
+    high=180.0,
+    grid=5,
+    unit="deg",
+    quantity="bearing (from north) of the helicopter's target, level, 8 km away",
+    reason="Sec. 2.6.4 gives the distance (8 km), not the direction; the attitude error's "
+    "contribution depends on it, so the band covers half a turn (the other half mirrors it); "
+    "a grid because the response need not be monotone",
 )
 IN.assumed(
     "doppler_noise_mps",
@@ -175,6 +177,7 @@ class Assumptions:
     mask_deg: float = 10.0
     step_s: float = 1.0
     helicopter_speed_mps: float = 40.0
+    helicopter_calibration_min: float = 30.0
     baro_interval_s: float = 10.0
 
     def table(self) -> list[tuple[str, float]]:
@@ -294,10 +297,12 @@ def _run(
     snapshots: tuple[int, ...] = (-1,),
     resume: dict[System, CovarianceAnalysis] | None = None,
     initial_position: bool = True,
+    lc_pseudorange_noise_m: float | None = None,
 ) -> dict[System, CovarianceAnalysis]:
     """Run several systems on one trajectory and lock table (one batched pass per
     architecture), from the mission start or resuming from ``resume``'s final covariances.
-    ``initial_position=False`` starts without horizontal position error."""
+    ``initial_position=False`` starts without horizontal position error;
+    ``lc_pseudorange_noise_m`` replaces the loosely coupled receiver's pseudorange noise."""
     out: dict[System, CovarianceAnalysis] = {}
     truth = truth_layout(doppler=doppler, channels=len(channels))
     geo = satellite_geometry(tr, nominal_gps_constellation(), channels)
@@ -319,7 +324,9 @@ def _run(
                 truth,
                 geo,
                 code,
-                pseudorange_noise=IN.lc_pseudorange_noise_m,
+                pseudorange_noise=(
+                    ASSUMED.pseudorange_noise_m if lc_pseudorange_noise_m is None else lc_pseudorange_noise_m
+                ),
                 pseudorange_bias_sigma=sources[0].pseudorange_bias_sigma,
             )
         else:
@@ -565,7 +572,8 @@ def head_on_approach(
     t_loss = tr.t[-1] - free_inertial_s
     ev = [(t_loss, c, k, False) for c in range(len(channels)) for k in ("code", "carrier")]
     code, carrier = lock_table(tr.t, len(channels), ev)
-    return _run(tuple(s for s in SYSTEMS if s.architecture == architecture), tr, code, carrier, channels)
+    noise = IN.headon_lc_pseudorange_noise_m if architecture == "loose" else None
+    return _run(_group(architecture), tr, code, carrier, channels, lc_pseudorange_noise_m=noise)
 
 
 # ------------------------------------------------------------------ helicopter
@@ -605,7 +613,7 @@ def helicopter(doppler: bool) -> dict[float, CovarianceAnalysis]:
     """Tightly coupled helicopter: GPS until calibration reaches steady state
     (``helicopter_calibration_min``), then 19 min jammed; Doppler throughout if ``doppler``."""
     a = ASSUMED
-    calibration_min = IN.helicopter_calibration_min
+    calibration_min = a.helicopter_calibration_min
     duration = (calibration_min + IN.helicopter_jammed_min) * MINUTE
     tr = helicopter_trajectory(duration)
     channels = best_geometry_channels(tr, nominal_gps_constellation(), a.channels, a.mask_deg)
@@ -616,21 +624,27 @@ def helicopter(doppler: bool) -> dict[float, CovarianceAnalysis]:
     return {s.grade: r for s, r in res.items()}
 
 
-def target_location_sigma(result: CovarianceAnalysis, range_m: float | None = None) -> float:
+def target_location_sigma(
+    result: CovarianceAnalysis, range_m: float | None = None, bearing_deg: float | None = None
+) -> float:
     """rss 1-sigma horizontal target-location error at the end of ``result``.
 
     SP Sec. 2.6.4: :math:`\\delta r_{tgt} = \\delta r + \\delta\\alpha \\times r` with the target
-    ``range_m`` ahead (default the paper's 8 km; north-east diagonal, level), using the full
-    end covariance of position and attitude error.
+    ``range_m`` away (default the paper's 8 km) at ``bearing_deg`` from north (default the
+    assumed 45 deg, the north-east diagonal), level, using the full end covariance of position
+    and attitude error.
     """
     from navcore.inertial.error_dynamics import skew_stack
 
     if range_m is None:
         range_m = IN.target_range_km * KM
+    if bearing_deg is None:
+        bearing_deg = IN.target_bearing_deg
+    b = np.radians(bearing_deg)
     P = next(iter(result.snapshots.values()))
     lay = result.truth_layout
     idx = np.r_[np.arange(lay.size)[lay.slice("position")], np.arange(lay.size)[lay.slice("misalignment")]]
-    r = range_m * np.array([np.sqrt(0.5), np.sqrt(0.5), 0.0])
+    r = range_m * np.array([np.cos(b), np.sin(b), 0.0])
     M = np.hstack([np.eye(3), -skew_stack(r)])  # dr + da x r = dr - r x da
     Pt = M @ P[np.ix_(idx, idx)] @ M.T
     return float(np.sqrt(Pt[0, 0] + Pt[1, 1]))
