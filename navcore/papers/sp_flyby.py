@@ -37,6 +37,7 @@ from navcore.gnss.tracking import third_order_noise_bandwidth_hz
 from navcore.inertial.trajectories import Segment, Trajectory, fly
 from navcore.ledger import EXACT, Claim, input_cache, printed, prose
 from navcore.ledger.inputs import InputSet
+from navcore.papers import sp_acquisition as spa
 from navcore.papers import sp_missions_scenarios as sc
 from navcore.papers import sp_residual_acceleration as spr
 from navcore.papers.sp_tables import GRADE_LABELS_NMI_PER_H
@@ -85,8 +86,6 @@ IN.published(
 IN.published(
     "range_rate_cell_mps", 10.0, locator="Sec. 2.6.2 ('10 m/s (one Doppler shift interval)')", unit="m/s"
 )
-IN.published("range_cell_m", 30.0, locator="Sec. 2.5 ('30 m' per code-phase interval)", unit="m")
-IN.published("dwell_s", 0.020, locator="Sec. 2.5 ('a 20-ms integration period')", unit="s")
 
 # printed results: the claims' published values (typed once, here)
 LC_BLACKOUT_MIN = 20.0  # "to cause an approximate 20min outage"
@@ -230,13 +229,8 @@ def carrier_noise_bandwidth_hz(system: sc.System) -> float:
     """LC: the printed 5.83 Hz; TC: (5/6) w0 of the Table 2.6 natural frequency of its grade."""
     if system.architecture == "loose":
         return IN.lc_carrier_bandwidth_hz
-    return third_order_noise_bandwidth_hz(_tab26_natural_frequency_hz(system.grade))
-
-
-def _tab26_natural_frequency_hz(grade: float) -> float:
-    """Table 2.6 column 4 (aided loop natural frequency, Hz) of ``grade``: read from the
-    residual-acceleration module, which owns Table 2.6."""
-    return float(spr.TAB26_COL4[f"{grade:g}"])
+    # Table 2.6 column 4, declared with the residual-acceleration claims (which own Table 2.6)
+    return third_order_noise_bandwidth_hz(float(spr.col4_printed_rad_s(f"{system.grade:g}")))
 
 
 def lock_thresholds(system: sc.System) -> LockThresholds:
@@ -259,8 +253,12 @@ def _locks(
     system: sc.System, erp_dbw: float, horizon_dbic: float | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
     cn0 = effective_cn0(erp_dbw, horizon_dbic)
+    code = hysteresis_lock(cn0, IN.code_loss_dbhz, IN.code_reacquisition_dbhz)
+    if system.architecture == "loose":
+        # the loosely coupled filter uses the receiver's position fix (codes) only: its carrier
+        # loop is not modelled, so its thresholds are not read
+        return code, code.copy()
     th = lock_thresholds(system)
-    code = hysteresis_lock(cn0, th.code_loss, th.code_reacquisition)
     carrier = hysteresis_lock(cn0, th.carrier_loss, th.carrier_reacquisition) & code
     return code, carrier
 
@@ -417,7 +415,7 @@ def reacquisition_search() -> dict[str, dict]:
             "step": [x[1] for x in rows],
             "sigma_range_m": sr,
             "sigma_range_rate_mps": srr,
-            "range_cells": np.asarray(search_cells(sr, IN.range_cell_m)),
+            "range_cells": np.asarray(search_cells(sr, spa.IN.range_cell_m)),
             "search_s": np.asarray(_search_time(sr, srr)),
             "first_search_s": float(np.asarray(_search_time(sr, srr))[0]),
         }
@@ -425,9 +423,14 @@ def reacquisition_search() -> dict[str, dict]:
 
 
 def _search_time(sr, srr):
-    """Sec. 2.5 search time with the paper's 20 ms dwell, 30 m and 10 m/s cells."""
+    """Sec. 2.5 search time with the paper's 20 ms dwell, 30 m and 10 m/s cells (the dwell and
+    the range cell are declared with the acquisition claims, :mod:`navcore.papers.sp_acquisition`)."""
     return search_time(
-        sr, srr, dwell_s=IN.dwell_s, range_cell_m=IN.range_cell_m, rate_cell_mps=IN.range_rate_cell_mps
+        sr,
+        srr,
+        dwell_s=spa.IN.dwell_s,
+        range_cell_m=spa.IN.range_cell_m,
+        rate_cell_mps=IN.range_rate_cell_mps,
     )
 
 

@@ -45,9 +45,16 @@ from navcore.inertial.imu import ImuSpec
 from navcore.inertial.trajectories import Segment, Trajectory, fly
 from navcore.ledger import input_cache
 from navcore.ledger.inputs import InputSet
+from navcore.papers import sp_acquisition as spa
 from navcore.papers import sp_tables as tab
-from navcore.papers.sp_tables import barometer_markov, gravity_markov, sp_imu_grade, table_2_8
-from navcore.units import DEG, G0, KM, MINUTE
+from navcore.papers.sp_tables import (
+    DopplerErrorModel,
+    barometer_markov,
+    gravity_markov,
+    sp_imu_grade,
+    table_2_8,
+)
+from navcore.units import DEG, G0, MINUTE
 
 __all__ = [
     "ASSUMED",
@@ -108,7 +115,6 @@ IN.published(
 IN.published(
     "helicopter_jammed_min", 19.0, locator="Sec. 2.6.4 ('another 19 min')", unit="min", quantity="jammed span"
 )
-IN.published("target_range_km", 8.0, locator="Sec. 2.6.4 ('(8 km)')", unit="km", quantity="target distance")
 
 # --- assumed: the few unpublished inputs that move the claims (bands) -----------------------
 IN.assumed(
@@ -229,10 +235,12 @@ def truth_layout(*, doppler: bool = False, channels: int = ASSUMED.channels) -> 
     )
 
 
-def error_sources(spec: ImuSpec) -> ErrorSources:
-    """Table 2.4 (INS-independent) and Table 2.8 errors around one Table 2.5 instrument."""
+def error_sources(spec: ImuSpec, doppler: bool = True) -> ErrorSources:
+    """Table 2.4 (INS-independent) and Table 2.8 errors around one Table 2.5 instrument
+    (``doppler=False``: without the Doppler sensor, whose Table 2.8 errors are then not read)."""
     t = tab.table_2_4()
-    grav, baro, dop = gravity_markov(), barometer_markov(), table_2_8()
+    grav, baro = gravity_markov(), barometer_markov()
+    dop = table_2_8() if doppler else DopplerErrorModel(0.0, 0.0, 0.0, 0.0, 0.0)
     return ErrorSources(
         imu=spec,
         gravity=GaussMarkov(grav.sigma, grav.distance_constant_m),
@@ -313,7 +321,7 @@ def _run(
         group = [s for s in systems if s.architecture == arch]
         if not group:
             continue
-        sources = [error_sources(sp_imu_grade(s.grade)) for s in group]
+        sources = [error_sources(sp_imu_grade(s.grade), doppler) for s in group]
         filt = loosely_coupled_layout() if arch == "loose" else tightly_coupled_layout()
         if doppler:
             filt = StateLayout(
@@ -637,7 +645,7 @@ def target_location_sigma(
     from navcore.inertial.error_dynamics import skew_stack
 
     if range_m is None:
-        range_m = IN.target_range_km * KM
+        range_m = spa.IN.target_range_m  # Sec. 2.6.4 '(8 km)', declared with the acquisition claims
     if bearing_deg is None:
         bearing_deg = IN.target_bearing_deg
     b = np.radians(bearing_deg)
