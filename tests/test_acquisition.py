@@ -28,7 +28,9 @@ def test_search_time_by_brute_force_enumeration() -> None:
             v += 10.0
             if v >= sv - 1e-9:
                 break
-        assert acq.search_time(sr, sv) == pytest.approx(0.020 * n_r * n_v)
+        assert acq.search_time(sr, sv, dwell_s=0.020, range_cell_m=30.0, rate_cell_mps=10.0) == pytest.approx(
+            0.020 * n_r * n_v
+        )
 
 
 def test_vectorised_cells() -> None:
@@ -61,7 +63,7 @@ def test_doppler_conversions() -> None:
         (lambda: acq.search_cells(-1.0, 30.0), "sigma"),
         (lambda: acq.search_cells(1.0, 0.0), "cell"),
         (lambda: acq.search_time_from_cells(0), "n_range"),
-        (lambda: acq.search_time(1.0, 1.0, dwell_s=-1), "dwell_s"),
+        (lambda: acq.search_time(1.0, 1.0, dwell_s=-1, range_cell_m=30.0, rate_cell_mps=10.0), "dwell_s"),
         (lambda: acq.probability_outside_sigma_box(0), "n_dims"),
         (lambda: acq.range_rate_from_doppler(1.0, 0.0), "wavelength_m"),
     ],

@@ -107,8 +107,10 @@ def test_pll_jitter_threshold_root():
             return 3.0 * np.degrees(np.sqrt(bn / c * (1 + 1 / (2 * 0.02 * c)))) - 90.0
 
         assert x == pytest.approx(brentq(f, 1e-3, 1e6, xtol=1e-12), rel=1e-9)
-    assert jg.carrier_loss_threshold_dbhz(5.83, 19.0) == 19.0
-    assert jg.carrier_loss_threshold_dbhz(5.83, 10.0) == pytest.approx(jg.pll_jitter_threshold_dbhz(5.83))
+    assert jg.carrier_loss_threshold_dbhz(5.83, 19.0, max_phase_error_deg=90.0) == 19.0
+    assert jg.carrier_loss_threshold_dbhz(5.83, 10.0, max_phase_error_deg=90.0) == pytest.approx(
+        jg.pll_jitter_threshold_dbhz(5.83, 90.0)
+    )
 
 
 def test_hysteresis_matches_state_machine():

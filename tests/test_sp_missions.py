@@ -68,3 +68,11 @@ def test_concatenate_analyses_drops_shared_sample():
     assert c.t.tolist() == [0.0, 1.0, 2.0, 3.0]
     with pytest.raises(ValueError, match="consecutive"):
         concatenate_analyses([part([0.0, 1.0]), part([5.0, 6.0])])
+
+
+def test_grade_label_erratum_monte_carlo():
+    """SP-E-grade-labels evidence: a seeded Monte Carlo of the same error model agrees with the
+    covariance propagation (the claims are inconsistent, so the ledger runs no oracle)."""
+    from navcore.papers import sp_missions as spm
+
+    assert spm.grade_cep_monte_carlo_nmi(1.0, runs=5000) == pytest.approx(spm.grade_cep_nmi()[1.0], rel=0.04)

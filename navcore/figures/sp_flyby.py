@@ -46,12 +46,12 @@ def sp_flyby_cn0() -> Figure:
     for c in range(cn0.shape[1]):
         ax.plot(t, cn0[:, c], lw=1.0, label=f"PRN {prn[c]}")
     for y, ls, lab in (
-        (fb.CODE_LOSS_DBHZ, "--", "code loss 18"),
-        (fb.CODE_REACQ_DBHZ, "-.", "code reacquisition 21"),
-        (fb.CARRIER_LOSS_DBHZ, ":", "carrier loss 19 / back 22"),
+        (fb.IN.code_loss_dbhz, "--", "code loss 18"),
+        (fb.IN.code_reacquisition_dbhz, "-.", "code reacquisition 21"),
+        (fb.IN.carrier_loss_dbhz, ":", "carrier loss 19 / back 22"),
     ):
         ax.axhline(y, color="k", lw=0.8, ls=ls, label=lab)
-    ax.axhline(fb.CARRIER_REACQ_DBHZ, color="k", lw=0.8, ls=":")
+    ax.axhline(fb.IN.carrier_reacquisition_dbhz, color="k", lw=0.8, ls=":")
     _blackout_span(ax, sc.SYSTEMS[0], "tab:red", "LC blackout")
     _blackout_span(ax, sc.SYSTEMS[1], "tab:blue", "TC blackout")
     ax.set_xlim(25, t[-1])

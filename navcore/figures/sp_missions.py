@@ -133,8 +133,8 @@ def sp_seq_position() -> Figure:
 )
 def sp_fig2_8() -> Figure:
     vals = {}
-    for arch, tfree in (("loose", 159.0), ("tight", 153.0)):
-        for s, r in sc.head_on_approach(arch, tfree).items():
+    for arch in ("loose", "tight"):
+        for s, r in sc.head_on_approach(arch).items():
             vals[s.label] = float(r.horizontal_position[-1])
     return _bars(vals, "horizontal position error at release (m)")
 

@@ -71,16 +71,16 @@ def search_time(
     sigma_range_m: ArrayLike,
     sigma_range_rate_mps: ArrayLike,
     *,
-    dwell_s: float = 0.020,
-    range_cell_m: float = 30.0,
-    rate_cell_mps: float = 10.0,
+    dwell_s: float,
+    range_cell_m: float,
+    rate_cell_mps: float,
     n_sigma: float = 1.0,
 ) -> Array | float:
     """Time (s) to search the +-n_sigma region (SP Sec. 2.5 Delta T, brackets read as ceilings).
 
     Examples
     --------
-    >>> round(search_time(1230.0, 4.0), 3)
+    >>> round(search_time(1230.0, 4.0, dwell_s=0.020, range_cell_m=30.0, rate_cell_mps=10.0), 3)
     1.64
     """
     nr = search_cells(sigma_range_m, range_cell_m, n_sigma)

@@ -263,7 +263,8 @@ def pll_jitter_threshold_dbhz(
 def carrier_loss_threshold_dbhz(
     noise_bandwidth_hz: ArrayLike,
     floor_dbhz: float,
-    max_phase_error_deg: float = 90.0,
+    *,
+    max_phase_error_deg: float,
     k_sigma: float = 3.0,
     coherent_s: float = 0.02,
 ) -> Array | float:

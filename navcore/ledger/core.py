@@ -133,6 +133,7 @@ PROSE_WORDS: dict[str, dict[str, Any]] = {
     "about": {"rel": 0.10, "meaning": "within ±10 %"},
     "approximately": {"rel": 0.10, "meaning": "within ±10 %"},
     "nearly": {"rel": 0.10, "meaning": "within ±10 %"},
+    "close to": {"rel": 0.10, "meaning": "within ±10 %"},
     "roughly": {"rel": 0.20, "meaning": "within ±20 %"},
     "on the order of": {"rel": 0.50, "meaning": "within ±50 %"},
     "of the order of": {"rel": 0.50, "meaning": "within ±50 %"},

@@ -14,7 +14,6 @@ into them.
 from __future__ import annotations
 
 from dataclasses import dataclass, fields
-from functools import cache
 
 import numpy as np
 
@@ -44,17 +43,22 @@ from navcore.inertial.error_dynamics import (
 )
 from navcore.inertial.imu import ImuSpec
 from navcore.inertial.trajectories import Segment, Trajectory, fly
+from navcore.ledger import input_cache
+from navcore.ledger.inputs import InputSet
+from navcore.papers import sp_acquisition as spa
+from navcore.papers import sp_tables as tab
 from navcore.papers.sp_tables import (
-    BAROMETER_MARKOV,
-    GRAVITY_MARKOV,
-    TABLE_2_8,
-    sp_imu_grades,
-    table_2_4,
+    DopplerErrorModel,
+    barometer_markov,
+    gravity_markov,
+    sp_imu_grade,
+    table_2_8,
 )
 from navcore.units import DEG, G0, MINUTE
 
 __all__ = [
     "ASSUMED",
+    "IN",
     "SYSTEMS",
     "Assumptions",
     "System",
@@ -72,15 +76,105 @@ __all__ = [
 ]
 
 
+IN = InputSet("SP", "missions")
+
+# --- published (Sec. 2.6) ----------------------------------------------------------------
+IN.published(
+    "first_carrier_loss_s",
+    360.0,
+    locator="Sec. 2.6.1 (Figs. 2.2-2.3)",
+    unit="s",
+    quantity="first carrier loss",
+)
+IN.published(
+    "first_code_loss_s", 1020.0, locator="Sec. 2.6.1 (Figs. 2.2-2.3)", unit="s", quantity="first code loss"
+)
+IN.published(
+    "loss_interval_min",
+    3.0,
+    locator="Sec. 2.6.1 ('forced at 3-min intervals')",
+    unit="min",
+    quantity="loss interval",
+)
+IN.published(
+    "outage_min", 20.0, locator="Sec. 2.6.1 ('the 20-min blackout')", unit="min", quantity="total outage"
+)
+IN.published(
+    "free_inertial_min",
+    84.0,
+    locator="Sec. 2.6.1 ('at the end of 84 min')",
+    unit="min",
+    quantity="free-inertial span",
+)
+IN.published(
+    "headon_free_loose_s", 159.0, locator="Fig. 2.8", unit="s", quantity="LC free inertial before release"
+)
+IN.published(
+    "headon_free_tight_s", 153.0, locator="Fig. 2.8", unit="s", quantity="TC free inertial before release"
+)
+IN.published(
+    "helicopter_jammed_min", 19.0, locator="Sec. 2.6.4 ('another 19 min')", unit="min", quantity="jammed span"
+)
+
+# --- assumed: the few unpublished inputs that move the claims (bands) -----------------------
+IN.assumed(
+    "turn_rate_deg_s",
+    1.5,
+    low=0.75,
+    high=3.0,
+    unit="deg/s",
+    quantity="rate of the 90-deg calibration turns of the sequential-outage cruise",
+    reason="the paper gives no trajectory; the turns make heading and the gyro errors observable "
+    "(how well they are calibrated sets the free-inertial growth). 1.5 deg/s is a standard-rate "
+    "turn for a transport; half to twice that covers a gentle to a brisk turn",
+)
+IN.assumed(
+    "headon_lc_pseudorange_noise_m",
+    1.0,
+    low=0.5,
+    high=3.0,
+    unit="m",
+    quantity="pseudorange noise behind the position fix of the head-on mission's loosely coupled receiver",
+    reason="Sec. 2.6.3 speaks of 'this particular loosely coupled system' and its receiver is not "
+    "published; 0.5-3 m spans P(Y) code receivers of the period. Elsewhere the pseudorange noise "
+    "is fixed at 1 m: it moves no other claim (the 84-min 1 nmi/h error is 883-886 m for 0.5-3 m)",
+)
+IN.assumed(
+    "target_bearing_deg",
+    45.0,
+    low=0.0,
+    high=180.0,
+    grid=5,
+    unit="deg",
+    quantity="bearing (from north) of the helicopter's target, level, 8 km away",
+    reason="Sec. 2.6.4 gives the distance (8 km), not the direction; the attitude error's "
+    "contribution depends on it, so the band covers half a turn (the other half mirrors it); "
+    "a grid because the response need not be monotone",
+)
+IN.assumed(
+    "doppler_noise_mps",
+    0.1,
+    low=0.03,
+    high=0.3,
+    unit="m/s",
+    quantity="white noise of the Doppler ground-speed sensor, per axis and 1-s sample",
+    reason="Table 2.8 gives bias, scale factor and misalignment but no noise; 0.03-0.3 m/s per "
+    "second spans Doppler velocity sensors of the period",
+)
+
+
 @dataclass(frozen=True)
 class Assumptions:
-    """Inputs the paper does not publish, with the values used in this book."""
+    """Scenario design the paper does not publish, fixed in this book (printed on the page).
+
+    They define the scenarios rather than enter the ledger as inputs: the assumed inputs that
+    move the claims are declared in :data:`IN` with their ranges.
+    """
 
     latitude_deg: float = 35.0
     longitude_deg: float = -117.0
     cruise_altitude_m: float = 7000.0
     cruise_speed_mps: float = 200.0
-    turn_rate_deg_s: float = 1.5
     pseudorange_noise_m: float = 1.0
     range_rate_noise_mps: float = 0.05
     clock_bias_psd_m2_s: float = 0.0036
@@ -90,9 +184,7 @@ class Assumptions:
     step_s: float = 1.0
     helicopter_speed_mps: float = 40.0
     helicopter_calibration_min: float = 30.0
-    doppler_noise_mps: float = 0.1
     baro_interval_s: float = 10.0
-    target_range_m: float = 8000.0
 
     def table(self) -> list[tuple[str, float]]:
         """``[(field, value), ...]`` for printing."""
@@ -143,13 +235,16 @@ def truth_layout(*, doppler: bool = False, channels: int = ASSUMED.channels) -> 
     )
 
 
-def error_sources(spec: ImuSpec) -> ErrorSources:
-    """Table 2.4 (INS-independent) and Table 2.8 errors around one Table 2.5 instrument."""
-    t = table_2_4()
+def error_sources(spec: ImuSpec, doppler: bool = True) -> ErrorSources:
+    """Table 2.4 (INS-independent) and Table 2.8 errors around one Table 2.5 instrument
+    (``doppler=False``: without the Doppler sensor, whose Table 2.8 errors are then not read)."""
+    t = tab.table_2_4()
+    grav, baro = gravity_markov(), barometer_markov()
+    dop = table_2_8() if doppler else DopplerErrorModel(0.0, 0.0, 0.0, 0.0, 0.0)
     return ErrorSources(
         imu=spec,
-        gravity=GaussMarkov(GRAVITY_MARKOV.sigma, GRAVITY_MARKOV.distance_constant_m),
-        altimeter=GaussMarkov(BAROMETER_MARKOV.sigma, BAROMETER_MARKOV.distance_constant_m),
+        gravity=GaussMarkov(grav.sigma, grav.distance_constant_m),
+        altimeter=GaussMarkov(baro.sigma, baro.distance_constant_m),
         clock=ClockModel(
             bias_sigma=t["clock initial offset"].si,
             drift_sigma=t["clock initial drift"].si,
@@ -159,13 +254,13 @@ def error_sources(spec: ImuSpec) -> ErrorSources:
         ),
         pseudorange_bias_sigma=t["pseudorange bias"].si,
         range_rate_bias_sigma=t["range-rate bias"].si,
-        doppler_bias=(TABLE_2_8.bias_horizontal, TABLE_2_8.bias_horizontal, TABLE_2_8.bias_vertical),
+        doppler_bias=(dop.bias_horizontal, dop.bias_horizontal, dop.bias_vertical),
         doppler_scale_factor=(
-            TABLE_2_8.scale_factor_horizontal,
-            TABLE_2_8.scale_factor_horizontal,
-            TABLE_2_8.scale_factor_vertical,
+            dop.scale_factor_horizontal,
+            dop.scale_factor_horizontal,
+            dop.scale_factor_vertical,
         ),
-        doppler_misalignment=TABLE_2_8.misalignment,
+        doppler_misalignment=dop.misalignment,
     )
 
 
@@ -180,7 +275,7 @@ def _gravity_tuning(filt: StateLayout, sources: ErrorSources, speed: float) -> n
 
 
 def _initial_covariance(truth: StateLayout, sources: ErrorSources, tr: Trajectory) -> np.ndarray:
-    t = table_2_4()
+    t = tab.table_2_4()
     ph = t["initial position (horizontal)"].si
     P0 = initial_covariance(
         truth,
@@ -210,21 +305,23 @@ def _run(
     snapshots: tuple[int, ...] = (-1,),
     resume: dict[System, CovarianceAnalysis] | None = None,
     initial_position: bool = True,
+    lc_pseudorange_noise_m: float | None = None,
 ) -> dict[System, CovarianceAnalysis]:
     """Run several systems on one trajectory and lock table (one batched pass per
     architecture), from the mission start or resuming from ``resume``'s final covariances.
-    ``initial_position=False`` starts without horizontal position error."""
+    ``initial_position=False`` starts without horizontal position error;
+    ``lc_pseudorange_noise_m`` replaces the loosely coupled receiver's pseudorange noise."""
     out: dict[System, CovarianceAnalysis] = {}
     truth = truth_layout(doppler=doppler, channels=len(channels))
     geo = satellite_geometry(tr, nominal_gps_constellation(), channels)
     every = max(1, round(ASSUMED.baro_interval_s / tr.dt))
-    baro = baro_schedule(truth, noise_m=table_2_4()["barometer noise"].si, every=every)
-    dop = doppler_schedule(truth, tr, noise_mps=ASSUMED.doppler_noise_mps) if doppler else None
+    baro = baro_schedule(truth, noise_m=tab.IN.barometer_noise_m, every=every)
+    dop = doppler_schedule(truth, tr, noise_mps=IN.doppler_noise_mps) if doppler else None
     for arch in ("loose", "tight"):
         group = [s for s in systems if s.architecture == arch]
         if not group:
             continue
-        sources = [error_sources(sp_imu_grades()[s.grade]) for s in group]
+        sources = [error_sources(sp_imu_grade(s.grade), doppler) for s in group]
         filt = loosely_coupled_layout() if arch == "loose" else tightly_coupled_layout()
         if doppler:
             filt = StateLayout(
@@ -235,7 +332,9 @@ def _run(
                 truth,
                 geo,
                 code,
-                pseudorange_noise=ASSUMED.pseudorange_noise_m,
+                pseudorange_noise=(
+                    ASSUMED.pseudorange_noise_m if lc_pseudorange_noise_m is None else lc_pseudorange_noise_m
+                ),
                 pseudorange_bias_sigma=sources[0].pseudorange_bias_sigma,
             )
         else:
@@ -289,18 +388,27 @@ def _run(
 
 def sequential_outage_events(
     channels: int = 4,
-    first_carrier_loss_s: float = 360.0,
-    first_code_loss_s: float = 1020.0,
-    interval_s: float = 180.0,
-    outage_s: float | None = 20 * MINUTE,
+    first_carrier_loss_s: float | None = None,
+    first_code_loss_s: float | None = None,
+    interval_s: float | None = None,
+    outage_s: float | None = -1.0,
 ) -> list[tuple[float, int, str, bool]]:
     """Loss and reacquisition events of SP Sec. 2.6.1.
 
     Carriers are lost one by one at ``interval_s`` from ``first_carrier_loss_s``, codes from
     ``first_code_loss_s``; after ``outage_s`` of total outage the signals come back in the
     inverse order (codes first, last-lost first), at the same interval. ``outage_s=None``
-    gives the free-inertial variant (no reacquisition).
+    gives the free-inertial variant (no reacquisition). Times not given are the paper's
+    (360 s, 1020 s, 3 min, 20 min: :data:`IN`).
     """
+    if first_carrier_loss_s is None:
+        first_carrier_loss_s = IN.first_carrier_loss_s
+    if first_code_loss_s is None:
+        first_code_loss_s = IN.first_code_loss_s
+    if interval_s is None:
+        interval_s = IN.loss_interval_min * MINUTE
+    if outage_s is not None and outage_s < 0:
+        outage_s = IN.outage_min * MINUTE
     ev = []
     for c in range(channels):
         ev.append((first_carrier_loss_s + c * interval_s, c, "carrier", False))
@@ -315,16 +423,18 @@ def sequential_outage_events(
     return ev
 
 
+@input_cache
 def sequential_outage_trajectory(duration_s: float) -> Trajectory:
     """Cruise at constant height and speed with a 90-degree coordinated turn every 10 min
     (alternating left and right), which makes heading and the gyro errors observable."""
     a = ASSUMED
-    turn_s = 90.0 / a.turn_rate_deg_s
+    rate = IN.turn_rate_deg_s
+    turn_s = 90.0 / rate
     segs: list[Segment] = [Segment(240.0)]
     t = 240.0
     sign = 1.0
     while t < duration_s:
-        segs.append(Segment(turn_s, turn_rate=sign * a.turn_rate_deg_s * DEG))
+        segs.append(Segment(turn_s, turn_rate=sign * rate * DEG))
         segs.append(Segment(600.0 - turn_s))
         t += 600.0
         sign = -sign
@@ -340,11 +450,23 @@ def sequential_outage_trajectory(duration_s: float) -> Trajectory:
     return Trajectory(*(getattr(tr, f.name)[:n] for f in fields(tr)))
 
 
-#: Phases of the sequential-outage mission (s): to the last code loss, to reacquisition, to the end.
-_LAST_CODE_LOSS_S = 1020.0 + 3 * 180.0
-_REACQUISITION_S = _LAST_CODE_LOSS_S + 20 * MINUTE
-_END_S = 104 * MINUTE
-_END_FREE_S = _LAST_CODE_LOSS_S + 84 * MINUTE
+#: Duration of the sequential-outage mission with reacquisition (s): the extent of Figs. 2.2-2.4.
+END_S = 104 * MINUTE
+
+
+def last_code_loss_s() -> float:
+    """Time of the fourth code loss (s): 1020 s + 3 x 3 min."""
+    return IN.first_code_loss_s + 3 * IN.loss_interval_min * MINUTE
+
+
+def reacquisition_s() -> float:
+    """Time of the first reacquisition (s): the last code loss plus the 20-min outage."""
+    return last_code_loss_s() + IN.outage_min * MINUTE
+
+
+def end_free_s() -> float:
+    """End of the free-inertial variant (s): 84 min after the last code loss."""
+    return last_code_loss_s() + IN.free_inertial_min * MINUTE
 
 
 def _phase(systems, tr_full, channels, t0, t1, step, events, resume):
@@ -353,32 +475,47 @@ def _phase(systems, tr_full, channels, t0, t1, step, events, resume):
     return _run(systems, tr, code, carrier, channels, resume=resume)
 
 
-@cache
-def _sequential_common() -> tuple[Trajectory, np.ndarray, dict, dict]:
-    tr = sequential_outage_trajectory(_END_FREE_S)
-    channels = _channels(_END_FREE_S)
-    ev = sequential_outage_events(len(channels), outage_s=20 * MINUTE)
-    a = _phase(SYSTEMS, tr, channels, 0.0, _LAST_CODE_LOSS_S, 1, ev, None)
-    b = _phase(SYSTEMS, tr, channels, _LAST_CODE_LOSS_S, _REACQUISITION_S, 1, ev, a)
+def _group(architecture: str) -> tuple[System, ...]:
+    return tuple(s for s in SYSTEMS if s.architecture == architecture)
+
+
+@input_cache
+def _sequential_common(architecture: str) -> tuple[Trajectory, np.ndarray, dict, dict]:
+    tr = sequential_outage_trajectory(end_free_s())
+    channels = _channels(end_free_s())
+    ev = sequential_outage_events(len(channels))
+    group = _group(architecture)
+    a = _phase(group, tr, channels, 0.0, last_code_loss_s(), 1, ev, None)
+    b = _phase(group, tr, channels, last_code_loss_s(), reacquisition_s(), 1, ev, a)
     return tr, channels, a, b
 
 
-@cache
-def sequential_outage(free_inertial: bool = False) -> dict[System, CovarianceAnalysis]:
-    """Run the sequential outage for the five systems: the 20-min outage with reacquisition
-    (to 104 min) or, with ``free_inertial``, 84 min without GPS after the last code loss.
-
-    The two variants share the mission up to reacquisition, which is computed once."""
-    tr, channels, a, b = _sequential_common()
-    ev = sequential_outage_events(len(channels), outage_s=None if free_inertial else 20 * MINUTE)
-    if free_inertial:
-        c = _phase(SYSTEMS, tr, channels, _REACQUISITION_S, _END_FREE_S, 1, ev, b)
-    else:
-        c = _phase(SYSTEMS, tr, channels, _REACQUISITION_S, _END_S, 1, ev, b)
-    return {s: concatenate_analyses([a[s], b[s], c[s]]) for s in SYSTEMS}
+@input_cache
+def _sequential_group(architecture: str, free_inertial: bool) -> dict[System, CovarianceAnalysis]:
+    tr, channels, a, b = _sequential_common(architecture)
+    ev = sequential_outage_events(len(channels), outage_s=None if free_inertial else -1.0)
+    end = end_free_s() if free_inertial else END_S
+    c = _phase(_group(architecture), tr, channels, reacquisition_s(), end, 1, ev, b)
+    return {s: concatenate_analyses([a[s], b[s], c[s]]) for s in _group(architecture)}
 
 
-@cache
+def sequential_outage(
+    free_inertial: bool = False, architecture: str | None = None
+) -> dict[System, CovarianceAnalysis]:
+    """Run the sequential outage for the five systems (or those of one ``architecture``):
+    the 20-min outage with reacquisition (to 104 min) or, with ``free_inertial``, 84 min
+    without GPS after the last code loss.
+
+    Each architecture runs (and is cached) separately, so a claim about the tightly coupled
+    systems reads only their inputs; the two variants share the mission up to reacquisition."""
+    archs = ("loose", "tight") if architecture is None else (architecture,)
+    out: dict[System, CovarianceAnalysis] = {}
+    for arch in archs:
+        out.update(_sequential_group(arch, free_inertial))
+    return {s: out[s] for s in SYSTEMS if s in out}
+
+
+@input_cache
 def _channels(duration: float) -> np.ndarray:
     return best_geometry_channels(
         sequential_outage_trajectory(duration),
@@ -388,17 +525,16 @@ def _channels(duration: float) -> np.ndarray:
     )
 
 
-@cache
+@input_cache
 def unaided_after_ground_alignment(initial_position: bool = True) -> dict[System, CovarianceAnalysis]:
     """The tightly coupled systems flying the sequential-outage trajectory for 84 min with no
     GPS at all, from the ground alignment: Table 2.4 initial errors and gyrocompass attitude
     (``initial_position=False`` removes the 600 m horizontal position error)."""
-    tr = sequential_outage_trajectory(84 * MINUTE)
-    channels = _channels(_END_FREE_S)
+    tr = sequential_outage_trajectory(IN.free_inertial_min * MINUTE)
+    channels = _channels(end_free_s())
     ev = [(0.0, c, k, False) for c in range(len(channels)) for k in ("code", "carrier")]
     code, carrier = lock_table(tr.t, len(channels), ev)
-    tight = tuple(s for s in SYSTEMS if s.architecture == "tight")
-    return _run(tight, tr, code, carrier, channels, initial_position=initial_position)
+    return _run(_group("tight"), tr, code, carrier, channels, initial_position=initial_position)
 
 
 # ------------------------------------------------------------------ head-on approach
@@ -430,16 +566,22 @@ def head_on_trajectory() -> Trajectory:
     )
 
 
-@cache
-def head_on_approach(architecture: str, free_inertial_s: float) -> dict[System, CovarianceAnalysis]:
+@input_cache
+def head_on_approach(
+    architecture: str, free_inertial_s: float | None = None
+) -> dict[System, CovarianceAnalysis]:
     """All satellites lost together ``free_inertial_s`` before the end (bomb release), for
-    the systems of :data:`SYSTEMS` with the given architecture."""
+    the systems of :data:`SYSTEMS` with the given architecture (default: the paper's 159 s
+    loosely coupled, 153 s tightly coupled, Fig. 2.8)."""
+    if free_inertial_s is None:
+        free_inertial_s = IN.headon_free_loose_s if architecture == "loose" else IN.headon_free_tight_s
     tr = head_on_trajectory()
     channels = best_geometry_channels(tr, nominal_gps_constellation(), ASSUMED.channels, ASSUMED.mask_deg)
     t_loss = tr.t[-1] - free_inertial_s
     ev = [(t_loss, c, k, False) for c in range(len(channels)) for k in ("code", "carrier")]
     code, carrier = lock_table(tr.t, len(channels), ev)
-    return _run(tuple(s for s in SYSTEMS if s.architecture == architecture), tr, code, carrier, channels)
+    noise = IN.headon_lc_pseudorange_noise_m if architecture == "loose" else None
+    return _run(_group(architecture), tr, code, carrier, channels, lc_pseudorange_noise_m=noise)
 
 
 # ------------------------------------------------------------------ helicopter
@@ -474,34 +616,43 @@ def helicopter_trajectory(duration_s: float) -> Trajectory:
     return Trajectory(*(getattr(tr, f.name)[:n] for f in fields(tr)))
 
 
-@cache
+@input_cache
 def helicopter(doppler: bool) -> dict[float, CovarianceAnalysis]:
     """Tightly coupled helicopter: GPS until calibration reaches steady state
     (``helicopter_calibration_min``), then 19 min jammed; Doppler throughout if ``doppler``."""
     a = ASSUMED
-    duration = (a.helicopter_calibration_min + 19.0) * MINUTE
+    calibration_min = a.helicopter_calibration_min
+    duration = (calibration_min + IN.helicopter_jammed_min) * MINUTE
     tr = helicopter_trajectory(duration)
     channels = best_geometry_channels(tr, nominal_gps_constellation(), a.channels, a.mask_deg)
-    t_loss = a.helicopter_calibration_min * MINUTE
+    t_loss = calibration_min * MINUTE
     ev = [(t_loss, c, k, False) for c in range(len(channels)) for k in ("code", "carrier")]
     code, carrier = lock_table(tr.t, len(channels), ev)
     res = _run((System("tight", 10.0), System("tight", 1.0)), tr, code, carrier, channels, doppler=doppler)
     return {s.grade: r for s, r in res.items()}
 
 
-def target_location_sigma(result: CovarianceAnalysis, range_m: float = ASSUMED.target_range_m) -> float:
+def target_location_sigma(
+    result: CovarianceAnalysis, range_m: float | None = None, bearing_deg: float | None = None
+) -> float:
     """rss 1-sigma horizontal target-location error at the end of ``result``.
 
     SP Sec. 2.6.4: :math:`\\delta r_{tgt} = \\delta r + \\delta\\alpha \\times r` with the target
-    ``range_m`` ahead (north-east diagonal, level), using the full end covariance of position
+    ``range_m`` away (default the paper's 8 km) at ``bearing_deg`` from north (default the
+    assumed 45 deg, the north-east diagonal), level, using the full end covariance of position
     and attitude error.
     """
     from navcore.inertial.error_dynamics import skew_stack
 
+    if range_m is None:
+        range_m = spa.IN.target_range_m  # Sec. 2.6.4 '(8 km)', declared with the acquisition claims
+    if bearing_deg is None:
+        bearing_deg = IN.target_bearing_deg
+    b = np.radians(bearing_deg)
     P = next(iter(result.snapshots.values()))
     lay = result.truth_layout
     idx = np.r_[np.arange(lay.size)[lay.slice("position")], np.arange(lay.size)[lay.slice("misalignment")]]
-    r = range_m * np.array([np.sqrt(0.5), np.sqrt(0.5), 0.0])
+    r = range_m * np.array([np.cos(b), np.sin(b), 0.0])
     M = np.hstack([np.eye(3), -skew_stack(r)])  # dr + da x r = dr - r x da
     Pt = M @ P[np.ix_(idx, idx)] @ M.T
     return float(np.sqrt(Pt[0, 0] + Pt[1, 1]))
