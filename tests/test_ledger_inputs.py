@@ -260,8 +260,11 @@ def _wrong(claim: Claim, tol: Tolerance, expected: str):
     if claim.is_statement:
         return claim.published if disagrees else not claim.published
     pub = float(claim.published)
-    if disagrees:
-        return pub
+    if disagrees:  # a value that satisfies the printed relation with room to spare
+        margin = tol.allowed(pub) + abs(pub) + 1.0
+        return {"=": pub, "<": pub - margin, "<=": pub - margin, ">": pub + margin, ">=": pub + margin}[
+            claim.relation
+        ]
     far = 100.0 * tol.allowed(pub) + 10.0 * abs(pub) + 1.0
     return pub - far if claim.relation in (">", ">=") else pub + far
 
