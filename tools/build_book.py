@@ -35,6 +35,7 @@ import fnmatch
 import hashlib
 import json
 import os
+import signal
 import subprocess
 import sys
 import tempfile
@@ -144,6 +145,67 @@ def _read_notebook(path: Path):
     return read_myst_markdown_notebook(path.read_text(), path=str(path))
 
 
+# --- stopping a build -------------------------------------------------------------------------
+# Ctrl-C (SIGINT to the process group) or SIGTERM stops every process a build started within
+# seconds: the parent terminates its workers and the Sphinx subprocess; each worker kills its
+# kernel and exits (a pool worker would otherwise treat KeyboardInterrupt as one task's result
+# and go on with the next task); a worker whose parent dies gets SIGTERM from the kernel
+# (Linux parent-death signal). The parent stores executed notebooks with both signals blocked,
+# so an interrupt never leaves a half-written cache entry.
+
+_KERNEL_PIDS: set[int] = set()
+
+
+def _set_parent_death_signal(signum: int = signal.SIGTERM) -> None:
+    """Ask Linux to send ``signum`` to this process when its parent exits (no-op elsewhere)."""
+    if not sys.platform.startswith("linux"):
+        return
+    try:
+        import ctypes
+
+        libc = ctypes.CDLL(None, use_errno=True)
+        libc.prctl(1, int(signum), 0, 0, 0)  # PR_SET_PDEATHSIG
+    except (OSError, AttributeError):  # pragma: no cover - no libc prctl
+        pass
+
+
+def _worker_stop(signum: int, frame: object) -> None:
+    for pid in list(_KERNEL_PIDS):
+        try:
+            os.kill(pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+    os._exit(128 + signum)
+
+
+def _worker_init() -> None:
+    """Pool initializer: die with the parent, and on SIGINT/SIGTERM kill the kernel and exit."""
+    _set_parent_death_signal()
+    signal.signal(signal.SIGINT, _worker_stop)
+    signal.signal(signal.SIGTERM, _worker_stop)
+    if os.getppid() == 1:  # the parent died before the death signal was armed
+        _worker_stop(signal.SIGTERM, None)
+
+
+def _raise_interrupt(signum: int, frame: object) -> None:
+    raise KeyboardInterrupt(f"signal {signum}")
+
+
+def _stop_pool(pool: ProcessPoolExecutor, grace: float = 5.0) -> None:
+    """Terminate the pool's workers (each kills its kernel), then kill any that linger."""
+    procs = list((getattr(pool, "_processes", None) or {}).values())
+    for proc in procs:
+        if proc.is_alive():
+            proc.terminate()
+    deadline = time.monotonic() + grace
+    for proc in procs:
+        proc.join(max(0.0, deadline - time.monotonic()))
+        if proc.is_alive():
+            proc.kill()
+            proc.join(1.0)
+    pool.shutdown(wait=False, cancel_futures=True)
+
+
 _RESET = """\
 %reset -f
 import os as _os
@@ -174,6 +236,9 @@ def _execute_group(
 
     km = KernelManager(kernel_name="python3")
     km.start_kernel(cwd=str(ROOT / "book"))
+    kernel_pid = getattr(km.provisioner, "pid", None)
+    if kernel_pid:
+        _KERNEL_PIDS.add(kernel_pid)
     kc = None
     results = []
 
@@ -233,15 +298,18 @@ def _execute_group(
         if kc is not None:
             kc.stop_channels()
         km.shutdown_kernel(now=True)
+        _KERNEL_PIDS.discard(kernel_pid)
     return results
 
 
-def _group_pages(pages: list[Path]) -> tuple[list[tuple[str | None, list[str]]], list[str]]:
+def _group_pages(
+    pages: list[Path], book: Path = ROOT / "book"
+) -> tuple[list[tuple[str | None, list[str]]], list[str]]:
     """Split pages into one group per chapter folder and the front and back matter."""
     chapters: dict[str, list[str]] = {}
     other: list[str] = []
     for page in pages:
-        rel = page.relative_to(ROOT / "book")
+        rel = page.relative_to(book)
         if len(rel.parts) > 1:
             chapters.setdefault(rel.parts[0], []).append(str(page))
         else:
@@ -251,8 +319,14 @@ def _group_pages(pages: list[Path]) -> tuple[list[tuple[str | None, list[str]]],
     return [(name.upper(), paths) for name, paths in groups], other
 
 
-def prefill(cache_path: Path, pages: list[Path], jobs: int, timeout: int = 900) -> dict[str, float]:
-    """Execute the pages missing from the jupyter-cache, ``jobs`` chapters at a time, and store them."""
+def prefill(
+    cache_path: Path, pages: list[Path], jobs: int, timeout: int = 900, book: Path = ROOT / "book"
+) -> dict[str, float]:
+    """Execute the pages missing from the jupyter-cache, ``jobs`` chapters at a time, and store them.
+
+    An interrupt (SIGINT, or SIGTERM, which raises KeyboardInterrupt here) stops the workers
+    and their kernels and re-raises; what was stored before it stays valid.
+    """
     from jupyter_cache import get_cache
     from jupyter_cache.base import CacheBundleIn
 
@@ -269,7 +343,7 @@ def prefill(cache_path: Path, pages: list[Path], jobs: int, timeout: int = 900) 
     if not todo:
         print(f"prefill: all {len(pages)} pages are in the cache", flush=True)
         return times
-    groups, other = _group_pages(todo)
+    groups, other = _group_pages(todo, book)
     papers = {"WF", "SP", "ATC10", "KZL"}
     jobs = max(1, min(jobs, len(groups) or 1))
     start = time.perf_counter()
@@ -280,19 +354,26 @@ def prefill(cache_path: Path, pages: list[Path], jobs: int, timeout: int = 900) 
                 times[path_str] = seconds
                 print(f"prefill: {seconds:7.1f} s  {path_str}", flush=True)
                 continue
-            rel = Path(path_str).relative_to(ROOT / "book").as_posix()
+            rel = Path(path_str).relative_to(book).as_posix()
             if err is not None:
                 print(f"prefill: {rel} FAILED ({err.splitlines()[0]}); Sphinx will re-run it", flush=True)
                 continue
             times[rel] = seconds
-            cache.cache_notebook_bundle(
-                CacheBundleIn(nb, path_str, data={"execution_seconds": seconds}),
-                check_validity=False,
-                overwrite=True,
-            )
+            # no interrupt between the cache's database record and its notebook file
+            blocked = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
+            try:
+                cache.cache_notebook_bundle(
+                    CacheBundleIn(nb, path_str, data={"execution_seconds": seconds}),
+                    check_validity=False,
+                    overwrite=True,
+                )
+            finally:
+                signal.pthread_sigmask(signal.SIG_SETMASK, blocked)
             print(f"prefill: {seconds:7.1f} s  {rel}", flush=True)
 
-    with ProcessPoolExecutor(max_workers=jobs) as pool:
+    previous = signal.signal(signal.SIGTERM, _raise_interrupt)
+    pool = ProcessPoolExecutor(max_workers=jobs, initializer=_worker_init)
+    try:
         futures = [
             pool.submit(_execute_group, name if name in papers else None, paths, timeout)
             for name, paths in groups
@@ -303,6 +384,14 @@ def prefill(cache_path: Path, pages: list[Path], jobs: int, timeout: int = 900) 
         # they run last, from the evaluation cache that the chapters filled
         if other:
             store(pool.submit(_execute_group, None, other, timeout).result())
+    except BaseException:
+        print("prefill: interrupted; stopping the workers and their kernels", flush=True)
+        _stop_pool(pool)
+        raise
+    else:
+        pool.shutdown(wait=True)
+    finally:
+        signal.signal(signal.SIGTERM, previous)
     print(
         f"prefill: {len(todo)} pages in {time.perf_counter() - start:.1f} s with {jobs} workers", flush=True
     )
@@ -359,9 +448,20 @@ def build(
         "--builder", builder, "--all", "-W", "-n", "--keep-going",
     ]  # fmt: skip
     print("+", " ".join(cmd), flush=True)
+    previous = signal.signal(signal.SIGTERM, _raise_interrupt)
+    proc = subprocess.Popen(cmd, cwd=ROOT)
     try:
-        return subprocess.call(cmd, cwd=ROOT)
+        return proc.wait()
+    except BaseException:  # SIGINT or SIGTERM: stop Sphinx (and its kernels) too
+        proc.terminate()
+        try:
+            proc.wait(5)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            proc.wait()
+        raise
     finally:
+        signal.signal(signal.SIGTERM, previous)
         if tmp is not None:
             Path(tmp.name).unlink(missing_ok=True)
 
@@ -376,7 +476,13 @@ def main() -> int:
         "--jobs", type=int, default=None, help="with --cache: pages executed at once (default: the cores)"
     )
     args = parser.parse_args()
-    return build(args.builder, args.only, args.out, args.cache, args.jobs)
+    if os.environ.get("NAVCORE_STOP_WITH_PARENT"):  # nox sets it: a killed nox stops the build
+        _set_parent_death_signal()
+    try:
+        return build(args.builder, args.only, args.out, args.cache, args.jobs)
+    except KeyboardInterrupt:
+        print("build_book: interrupted", file=sys.stderr, flush=True)
+        return 130
 
 
 if __name__ == "__main__":
