@@ -24,7 +24,7 @@ from typing import Any
 from navcore import figures as _figures
 from navcore import ledger
 from navcore.ledger.core import STATUSES
-from navcore.ledger.render import STATUS_COLOURS, CountsTable, ErrataList, LedgerTable
+from navcore.ledger.render import CountsTable, ErrataList, InteractiveLedger, LedgerTable
 
 __all__ = [
     "Markdown",
@@ -33,6 +33,7 @@ __all__ = [
     "claims_table",
     "counts_table",
     "errata_list",
+    "ledger_table",
     "setup",
     "show_figure",
     "table",
@@ -64,6 +65,10 @@ def setup() -> None:
         markdown = shell.display_formatter.formatters["text/markdown"]
         markdown.for_type_by_name("pandas.core.frame", "DataFrame", _markdown_table)
         markdown.for_type_by_name("pandas.io.formats.style", "Styler", _markdown_table)
+        # and an HTML whose element ids do not change from run to run (pandas draws a random uuid)
+        shell.display_formatter.formatters["text/html"].for_type_by_name(
+            "pandas.io.formats.style", "Styler", _styler_html
+        )
     _figures.apply_style()
     np.set_printoptions(precision=5, suppress=True, linewidth=100)
 
@@ -114,7 +119,25 @@ def counts_table(paper: str | None = None) -> CountsTable:
 
 def errata_list(paper: str | None = None, *, root: str | None = None) -> ErrataList:
     """The registered errata (of one paper, or all), linked to the pages that discuss them."""
-    return ErrataList(ledger.errata(paper), root=book_root_prefix() if root is None else root)
+    root = book_root_prefix() if root is None else root
+    return ErrataList(ledger.errata(paper), root=root, titles=_page_titles(Path.cwd() / root))
+
+
+def ledger_table(paper: str | None = None, *, root: str | None = None) -> InteractiveLedger:
+    """Every claim (or one paper's) as one table that sorts, filters, searches and downloads."""
+    root = book_root_prefix() if root is None else root
+    return InteractiveLedger(ledger.evaluations(paper=paper), root=root)
+
+
+def _page_titles(book_dir: Path) -> dict[str, str]:
+    """Each page's title (its first level-1 heading), keyed by its path without suffix."""
+    titles = {}
+    for page in sorted(book_dir.rglob("*.md")):
+        for line in page.read_text(encoding="utf-8").splitlines():
+            if line.startswith("# "):
+                titles[page.relative_to(book_dir).with_suffix("").as_posix()] = line[2:].strip()
+                break
+    return titles
 
 
 class Table:
@@ -129,7 +152,7 @@ class Table:
         self.styler = data if hasattr(data, "to_html") and hasattr(data, "data") else data.style
 
     def _repr_html_(self) -> str:
-        return self.styler.to_html()
+        return _styler_html(self.styler)
 
     def _repr_markdown_(self) -> str:
         sep = "\x1f"
@@ -141,6 +164,15 @@ class Table:
             return "| " + " | ".join(c.strip().replace("|", "\\|") or " " for c in cells) + " |"
 
         return "\n".join([row(lines[0]), "|" + "---|" * width, *(row(ln) for ln in lines[1:])])
+
+
+def _styler_html(styler: Any) -> str:
+    """A Styler's HTML with an id derived from its content, so that two builds are identical."""
+    import hashlib
+
+    digest = hashlib.sha256(styler.data.to_csv().encode() + repr(styler.data.columns).encode())
+    styler.set_uuid(digest.hexdigest()[:8])
+    return styler.to_html()
 
 
 def _markdown_table(data: Any) -> str:
@@ -178,14 +210,12 @@ def chapter_summary(paper: str) -> Markdown:
         + "."
     )
     chips = "".join(
-        f'<span style="background:{STATUS_COLOURS[s]};padding:2px 8px;border-radius:4px;'
-        f'margin-right:6px">{c[s]} {html.escape(s)}</span>'
+        f'<span class="ledger-chip ledger-status-{html.escape(s)}">{c[s]} {html.escape(s)}</span>'
         for s in STATUSES
     )
     html_text = (
-        f'<div class="ledger-summary" style="border:1px solid #ccc;border-radius:6px;padding:8px 12px;'
-        f'margin:8px 0"><b>Ledger for {paper}:</b> {c["total"]} claims &nbsp; {chips}'
-        + (f"<b style='color:#b00'>{failing} failing</b>" if failing else "every check passes")
+        f'<div class="ledger-summary"><b>Ledger for {paper}:</b> {c["total"]} claims &nbsp; {chips}'
+        + (f"<b class='ledger-failing'>{failing} failing</b>" if failing else "every check passes")
         + "</div>"
     )
     return Markdown(md, html_text)

@@ -97,3 +97,99 @@ def test_pandas_table_has_a_markdown_twin_for_the_pdf():
     styled = df.style.format(precision=2, na_rep="").hide(axis="index")
     assert book.table(styled)._repr_markdown_() == "| a | b\\|c |\n|---|---|\n| 1.23 | u |\n|   | v |"
     assert "<table" in book.table(df)._repr_html_()
+
+
+book_presentation = _load(ROOT / "book" / "_ext" / "book_presentation.py", "book_presentation")
+check_book = _load(ROOT / "tools" / "check_book.py", "check_book")
+
+
+def test_build_helpers_are_stripped_from_displayed_cells():
+    """Oracle: the displayed source written out by hand."""
+    source = (
+        "import numpy as np\n"
+        "from myst_nb import glue\n"
+        "from navcore import book\n"
+        "%matplotlib inline\n"
+        "book.setup()\n"
+        "x = np.arange(3)\n"
+        'glue("a-key",\n     int(x.sum()), display=False)\n'
+        'book.show_figure("WF-fig1")\n'
+        "print(x)"
+    )
+    assert book_presentation.strip_helpers(source) == "import numpy as np\nx = np.arange(3)\nprint(x)"
+    # a cell that uses book for something else keeps the import
+    kept = "from navcore import book\nbook.setup()\nbook.table(df)"
+    assert book_presentation.strip_helpers(kept) == "from navcore import book\nbook.table(df)"
+    assert book_presentation.strip_helpers("book.setup()\n") == ""
+
+
+@pytest.mark.parametrize(
+    ("name", "number"),
+    [
+        ("fig-atc10-2-1", "2.1"),
+        ("fig-kzl-fig4", "4"),
+        ("fig-wf-1", "1"),
+        ("fig-sp-architectures", None),  # the book's own: N-numbered
+        ("fig-atc10-ma-tails", None),
+    ],
+)
+def test_paper_figure_number_from_name(name, number):
+    assert book_presentation.paper_figure_number(name) == number
+
+
+def test_html_gate_finds_helpers_and_notebooks_without_outputs(tmp_path):
+    cell = (
+        '<div class="cell_input docutils container"><div class="highlight-ipython3 notranslate">'
+        '<div class="highlight"><pre><span class="n">glue</span><span class="p">(</span>"k", 1)</pre>'
+    )
+    _page(tmp_path / "wf" / "a.html", cell)
+    nb = {"cells": [{"cell_type": "code", "execution_count": None, "outputs": [], "source": "1"}]}
+    (tmp_path / "_sources" / "wf").mkdir(parents=True)
+    (tmp_path / "_sources" / "wf" / "a.ipynb").write_text(__import__("json").dumps(nb))
+    problems = check_book.check_html(tmp_path)
+    assert len(problems) == 2
+    assert "shows 'glue('" in problems[0] and "not executed" in problems[1]
+
+
+def test_latex_gate_counts_only_wide_overfull_boxes(tmp_path):
+    (tmp_path / "book.log").write_text(
+        "Overfull \\hbox (1.5pt too wide) in paragraph at lines 1--2\n"
+        "Overfull \\hbox (842.0pt too wide) in alignment at lines 9--12\n"
+    )
+    problems = check_book.check_latex(tmp_path)
+    assert len(problems) == 1 and "842.0 pt" in problems[0]
+
+
+def test_same_gate_ignores_only_pdf_dates(tmp_path):
+    for run, date in (("a", b"20260101"), ("b", b"20270202")):
+        (tmp_path / run).mkdir()
+        (tmp_path / run / "book.pdf").write_bytes(b"%PDF /CreationDate (D:" + date + b") body")
+        (tmp_path / run / "x.html").write_text("same")
+    assert check_book.same_trees(tmp_path / "a", tmp_path / "b") == []
+    (tmp_path / "b" / "x.html").write_text("other")
+    assert check_book.same_trees(tmp_path / "a", tmp_path / "b") == ["differs: x.html"]
+
+
+def test_interactive_ledger_filters_by_the_fields_present():
+    from navcore import ledger
+    from navcore.ledger.render import STATUS_COLOURS, InteractiveLedger
+
+    assert "inconsistent" in STATUS_COLOURS
+    evals = ledger.evaluations("WF")[:3]
+    page = InteractiveLedger(evals, root="")._repr_html_()
+    for control in ('data-filter="paper"', 'data-filter="status"', 'data-download="csv"', 'type="search"'):
+        assert control in page
+    assert f'id="{evals[0].claim.id.lower()}"' in page
+    # kind and band columns appear exactly when the records carry them
+    has_kind = any(e.as_json().get("kind") for e in evals)
+    assert ('data-filter="kind"' in page) == has_kind
+    assert "\\begin{longtable}" in InteractiveLedger(evals)._repr_markdown_()
+
+
+def test_styler_html_is_the_same_every_time():
+    import pandas as pd
+
+    from navcore import book
+
+    df = pd.DataFrame({"a": [1.0, 2.0]})
+    assert book.table(df.style)._repr_html_() == book.table(df.style)._repr_html_()
