@@ -24,10 +24,11 @@ from typing import Any
 from navcore import figures as _figures
 from navcore import ledger
 from navcore.ledger.core import STATUSES
-from navcore.ledger.render import CountsTable, ErrataList, InteractiveLedger, LedgerTable
+from navcore.ledger.render import CountsTable, ErrataList, InteractiveLedger, LedgerTable, latex_table
 
 __all__ = [
     "Markdown",
+    "assumptions_table",
     "book_root_prefix",
     "chapter_summary",
     "claims_table",
@@ -155,15 +156,17 @@ class Table:
         return _styler_html(self.styler)
 
     def _repr_markdown_(self) -> str:
+        """The printed table (a LaTeX longtable that fits the page; see ``latex_table``)."""
+        head, body = self.cells()
+        return latex_table(head, body)
+
+    def cells(self) -> tuple[list[str], list[list[str]]]:
+        """Heading and rows as the Styler formats them (index included unless hidden)."""
         sep = "\x1f"
         lines = [ln.split(sep) for ln in self.styler.to_string(delimiter=sep).splitlines() if ln.strip()]
         width = max(len(ln) for ln in lines)
-        lines = [ln + [""] * (width - len(ln)) for ln in lines]
-
-        def row(cells: list[str]) -> str:
-            return "| " + " | ".join(c.strip().replace("|", "\\|") or " " for c in cells) + " |"
-
-        return "\n".join([row(lines[0]), "|" + "---|" * width, *(row(ln) for ln in lines[1:])])
+        lines = [[c.strip() for c in ln] + [""] * (width - len(ln)) for ln in lines]
+        return lines[0], lines[1:]
 
 
 def _styler_html(styler: Any) -> str:
@@ -233,3 +236,64 @@ def show_figure(fig_id: str, *, display: bool = False) -> Any:
     glue(fig_id, fig, display=display)
     plt.close(fig)
     return None
+
+
+_UNITS = {
+    "m": "m",
+    "km": "km",
+    "mps": "m/s",
+    "s": "s",
+    "min": "min",
+    "h": "h",
+    "deg": "deg",
+    "deg_s": "deg/s",
+    "deg_h": "deg/h",
+    "rad": "rad",
+    "hz": "Hz",
+    "dbw": "dBW",
+    "dbw_hz": "dBW/Hz",
+    "dbic": "dBic",
+    "db": "dB",
+    "dbhz": "dB-Hz",
+    "ppm": "ppm",
+    "ug": "µg",
+    "g": "g",
+    "nmi": "nmi",
+    "nmi_h": "nmi/h",
+    "w": "W",
+    "mps2": "m/s²",
+    "ft": "ft",
+    "m2_s": "m²/s",
+    "m2_s2": "m²/s²",
+    "m2_s3": "m²/s³",
+}
+
+
+def _readable_name(name: str) -> str:
+    """``cruise_altitude_m`` -> ``cruise altitude (m)``; text that is not a name is kept."""
+    if " " in name or name != name.lower():
+        return name
+    parts = name.split("_")
+    for n in (2, 1):
+        unit = "_".join(parts[-n:])
+        if len(parts) > n and unit in _UNITS:
+            return " ".join(parts[:-n]) + f" ({_UNITS[unit]})"
+    return " ".join(parts)
+
+
+def _readable_value(value: Any) -> str:
+    if isinstance(value, bool) or value is None:
+        return {True: "yes", False: "no", None: "—"}[value]
+    if isinstance(value, int | float):
+        return f"{value:g}"
+    if isinstance(value, tuple | list):
+        return ", ".join(_readable_value(v) for v in value)
+    return str(value)
+
+
+def assumptions_table(rows: Any, head: tuple[str, str] = ("assumption", "value")) -> Table:
+    """A two-column table of assumed inputs: readable names with units, compact numbers."""
+    import pandas as pd
+
+    data = pd.DataFrame([(_readable_name(str(k)), _readable_value(v)) for k, v in rows], columns=list(head))
+    return Table(data.style.hide(axis="index"))

@@ -93,9 +93,13 @@ def test_pandas_table_has_a_markdown_twin_for_the_pdf():
 
     from navcore import book
 
-    df = pd.DataFrame({"a": [1.23456, np.nan], "b|c": ["u", "v"]})
+    df = pd.DataFrame({"a": [1.23456, np.nan], "b_c": ["u", "v"]})
     styled = df.style.format(precision=2, na_rep="").hide(axis="index")
-    assert book.table(styled)._repr_markdown_() == "| a | b\\|c |\n|---|---|\n| 1.23 | u |\n|   | v |"
+    assert book.table(styled).cells() == (["a", "b_c"], [["1.23", "u"], ["", "v"]])
+    latex = book.table(styled)._repr_markdown_()
+    # a printed table: numbers right-aligned and unbreakable, LaTeX specials escaped
+    assert latex.startswith("```{raw} latex") and "\\begin{longtable}{rl}" in latex
+    assert "\\mbox{1.23} & u \\\\" in latex and "\\textbf{b\\_c}" in latex
     assert "<table" in book.table(df)._repr_html_()
 
 

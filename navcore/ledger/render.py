@@ -10,6 +10,7 @@ from __future__ import annotations
 import html
 import json
 import math
+import re
 from collections.abc import Iterable, Sequence
 from typing import Any
 
@@ -24,6 +25,7 @@ __all__ = [
     "LedgerTable",
     "format_value",
     "json_dump",
+    "latex_table",
     "rows",
     "text_table",
 ]
@@ -151,6 +153,56 @@ def _tex_breakable(text: str) -> str:
     for ch in ("-", "."):
         out = out.replace(ch, ch + r"\allowbreak{}")
     return out.replace(r"\_", r"\_\allowbreak{}")
+
+
+_NUMBER = re.compile(r"^[−+-]?(?:\d[\d,]*\.?\d*|\.\d+)(?:[eE][−+-]?\d+)?(?:\s*%)?$")
+
+
+def latex_table(head: Sequence[str], body: Sequence[Sequence[str]]) -> str:
+    """The book's one printed table: a ``longtable`` that fits the text width.
+
+    Column widths follow their content (the longest word of the heading, the longest cell);
+    numbers are right-aligned and never broken across lines; text cells wrap ragged-right
+    without hyphenation. Used for every pandas table and count table in the PDF.
+    """
+    ncols = len(head)
+    cells = [[str(c) for c in row] + [""] * (ncols - len(row)) for row in body]
+    numeric = [
+        all(_NUMBER.match(row[j].strip()) or not row[j].strip() for row in cells)
+        and any(row[j].strip() for row in cells)
+        for j in range(ncols)
+    ]
+
+    def need(j: int) -> int:
+        words = [len(w) for w in str(head[j]).split()] or [1]
+        longest = max([len(row[j]) if numeric[j] else min(len(row[j]), 28) for row in cells] or [1])
+        return max(max(words), longest, 3)
+
+    widths = [need(j) for j in range(ncols)]
+    total = sum(widths)
+    cols = "".join(
+        (r">{\raggedleft\arraybackslash}" if numeric[j] else r">{\raggedright\arraybackslash}")
+        + rf"p{{\dimexpr {widths[j] / total:.4f}\linewidth-2\tabcolsep\relax}}"
+        for j in range(ncols)
+    )
+    if total <= 60:  # a narrow table keeps its natural width
+        cols = "".join("r" if numeric[j] else "l" for j in range(ncols))
+
+    def cell(text: str, j: int) -> str:
+        text = _tex_escape(text)
+        return rf"\mbox{{{text}}}" if numeric[j] and text else text
+
+    header = " & ".join(rf"\textbf{{{_tex_escape(str(h))}}}" for h in head)
+    out = [
+        r"\begingroup\footnotesize\setlength{\tabcolsep}{4pt}\hyphenpenalty=10000\exhyphenpenalty=10000",
+        rf"\begin{{longtable}}{{{cols}}}",
+        rf"\hline {header} \\ \hline \endfirsthead",
+        rf"\hline {header} \\ \hline \endhead",
+        r"\hline \endfoot",
+    ]
+    out += [" & ".join(cell(c, j) for j, c in enumerate(row)) + r" \\" for row in cells]
+    out += [r"\end{longtable}", r"\endgroup"]
+    return "```{raw} latex\n" + "\n".join(out) + "\n```"
 
 
 def _plain_with_unit(value: str, unit: str) -> str:
@@ -315,19 +367,17 @@ class CountsTable:
 
     def _repr_html_(self) -> str:
         head, body = self._table()
-        out = ['<table class="ledger-counts"><thead><tr>']
-        out += [f"<th>{h}</th>" for h in head]
+        out = ['<div class="ledger-counts-wrap"><table class="ledger-counts"><thead><tr>']
+        out += [f"<th>{html.escape(h).replace('-', '-<wbr>').replace(' ', '<br>')}</th>" for h in head]
         out.append("</tr></thead><tbody>")
         for r in body:
             out.append("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in r) + "</tr>")
-        out.append("</tbody></table>")
+        out.append("</tbody></table></div>")
         return "".join(out)
 
     def _repr_markdown_(self) -> str:
         head, body = self._table()
-        lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
-        lines += ["| " + " | ".join(r) + " |" for r in body]
-        return "\n".join(lines)
+        return latex_table(head, body)
 
 
 class ErrataList:
@@ -433,6 +483,9 @@ _LEDGER_JS = r"""
         keep.forEach(function (tr) { tr.hidden = false; });
         count.textContent = keep.length + " of " + rows.length + " claims";
       }
+      function rank(v) {
+        return typeof v === "number" ? 0 : v === null || v === undefined || v === "" ? 2 : 1;
+      }
       function value(tr, key) {
         var v = data[+tr.dataset.index][key];
         if (v && typeof v === "object") v = JSON.stringify(v);
@@ -448,9 +501,10 @@ _LEDGER_JS = r"""
           th.setAttribute("aria-sort", sortDir > 0 ? "ascending" : "descending");
           rows.sort(function (a, b) {
             var x = value(a, key), y = value(b, key);
-            if (typeof x === "number" && typeof y === "number") return sortDir * (x - y);
-            if (x === null || x === undefined) return 1;
-            if (y === null || y === undefined) return -1;
+            var rx = rank(x), ry = rank(y);
+            if (rx !== ry) return rx - ry;  // numbers, then text and true/false, then blanks
+            if (rx === 0) return sortDir * (x - y);
+            if (rx === 2) return 0;
             return sortDir * String(x).localeCompare(String(y), undefined, {numeric: true});
           });
           rows.forEach(function (tr) { tbody.appendChild(tr); });
