@@ -18,6 +18,7 @@ and ends a section with its published-versus-reproduced rows::
 from __future__ import annotations
 
 import html
+import re
 from pathlib import Path
 from typing import Any
 
@@ -297,3 +298,75 @@ def assumptions_table(rows: Any, head: tuple[str, str] = ("assumption", "value")
 
     data = pd.DataFrame([(_readable_name(str(k)), _readable_value(v)) for k, v in rows], columns=list(head))
     return Table(data.style.hide(axis="index"))
+
+
+class _HtmlLatexTable:
+    """A table with its own HTML (cells already HTML) and the book's printed table."""
+
+    def __init__(self, head: list[str], html_rows: list[list[str]], text_rows: list[list[str]]) -> None:
+        self.head, self.html_rows, self.text_rows = head, html_rows, text_rows
+
+    def _repr_html_(self) -> str:
+        head = "".join(f"<th>{html.escape(h)}</th>" for h in self.head)
+        body = "".join("<tr>" + "".join(f"<td>{c}</td>" for c in row) + "</tr>" for row in self.html_rows)
+        table = f"<table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
+        return f'<div class="trace-table">{table}</div>'
+
+    def _repr_markdown_(self) -> str:
+        return latex_table(self.head, self.text_rows)
+
+
+def trace_table(paper: str | None = None, index: Any = None, *, root: str | None = None) -> _HtmlLatexTable:
+    """The traceability index of one paper (item, functions, tests, pages, claims), or with
+    ``paper=None`` the reverse index (function, the items it implements).
+
+    Pages are linked by their titles; the printed table lists one name per line.
+    """
+    from navcore import traceability
+
+    index = index or traceability.build_index()
+    root = book_root_prefix() if root is None else root
+    titles = _page_titles(Path.cwd() / root)
+
+    def link(page: Any, displayed: bool) -> tuple[str, str]:
+        title = re.sub(r"\s*\([^()]*\)$", "", titles.get(page.docname, page.title))  # no section list
+        mark = "\u00a0★" if displayed else ""
+        href = html.escape(f"{root}{page.docname}.html")
+        return f'<a href="{href}">{html.escape(title)}</a>{mark}', title + mark
+
+    if paper is None:
+        head = ["navcore function", "Implements"]
+        html_rows, text_rows = [], []
+        for impl in index.implementations:
+            name = f"{impl.module.removeprefix('navcore.')}.{impl.qualname}"
+            refs = ", ".join(f"{r.paper} Eq. ({r.item})" if r.is_equation else str(r) for r in impl.refs)
+            html_rows.append([f"<code>{html.escape(name)}</code>", html.escape(refs)])
+            text_rows.append([name.replace(".", ".\u200b").replace("_", "_\u200b"), refs])
+        return _HtmlLatexTable(head, html_rows, text_rows)
+
+    head = ["Item", "navcore", "Tests", "Book", "Claims"]
+    html_rows, text_rows = [], []
+    for e in index.by_paper(paper):
+        item = f"Eq.\u00a0({e.ref.item})" if e.ref.is_equation else e.ref.item
+        funcs = [f.qualname for f in e.functions]
+        tests = [t.removesuffix(".py") for t in sorted(e.tests)]
+        pages = [link(p, True) for p in e.displayed_on] + [link(p, False) for p in e.mentioned_on]
+        html_rows.append(
+            [
+                html.escape(item),
+                "<br>".join(f"<code>{html.escape(f)}</code>" for f in funcs) or "—",
+                "<br>".join(html.escape(t) for t in tests) or "—",
+                "<br>".join(h for h, _ in pages) or "—",
+                str(len(e.claims) or "—"),
+            ]
+        )
+        text_rows.append(
+            [
+                item,
+                "; ".join(f.replace("_", "_\u200b") for f in funcs) or "—",
+                "; ".join(t.replace("_", "_\u200b") for t in tests) or "—",
+                "; ".join(t for _, t in pages) or "—",
+                str(len(e.claims) or "—"),
+            ]
+        )
+    return _HtmlLatexTable(head, html_rows, text_rows)

@@ -189,7 +189,7 @@ def latex_table(head: Sequence[str], body: Sequence[Sequence[str]]) -> str:
         cols = "".join("r" if numeric[j] else "l" for j in range(ncols))
 
     def cell(text: str, j: int) -> str:
-        text = _tex_escape(text)
+        text = _tex_escape(text).replace("\u200b", r"\allowbreak{}")  # zero-width space: may break
         return rf"\mbox{{{text}}}" if numeric[j] and text else text
 
     header = " & ".join(rf"\textbf{{{_tex_escape(str(h))}}}" for h in head)
