@@ -197,3 +197,27 @@ def test_styler_html_is_the_same_every_time():
 
     df = pd.DataFrame({"a": [1.0, 2.0]})
     assert book.table(df.style)._repr_html_() == book.table(df.style)._repr_html_()
+
+
+def test_numbering_papers_numbers_and_the_books_own_per_chapter():
+    """Oracle: the numbers written out by hand for a two-chapter toy environment."""
+    from types import SimpleNamespace
+
+    env = SimpleNamespace(
+        toc_fignumbers={
+            "wf/01": {"figure": {"fig-wf-1": (3,), "fig-wf-example": (4,)}, "exercise": {"ex-a": (1,)}},
+            "wf/02": {"figure": {"fig-wf-sensitivity": (5,)}, "theorem": {"thm": (1,), "own": (2,)}},
+            "kzl/01": {
+                "figure": {"fig-kzl-fig4": (6,), "fig-kzl-standalone": (7,)},
+                "exercise": {"ex-b": (2,)},
+            },
+        },
+        paper_theorem_numbers={"wf/02": {"thm": "3.1"}},
+    )
+    book_presentation._renumber(None, env)
+    n = env.toc_fignumbers
+    assert n["wf/01"]["figure"] == {"fig-wf-1": ("1",), "fig-wf-example": ("N1",)}
+    assert n["wf/02"]["figure"] == {"fig-wf-sensitivity": ("N2",)}
+    assert n["wf/02"]["theorem"] == {"thm": ("3.1",), "own": ("N1",)}  # its own counter
+    assert n["kzl/01"]["figure"] == {"fig-kzl-fig4": ("4",), "fig-kzl-standalone": ("N1",)}
+    assert n["wf/01"]["exercise"] == {"ex-a": ("1",)} and n["kzl/01"]["exercise"] == {"ex-b": ("1",)}

@@ -8,10 +8,10 @@ Usage::
                                                # into _build/subset-wf (fast check of one chapter)
 
 ``--cache`` executes through a jupyter-cache whose folder is keyed by a hash of navcore's
-sources, the lock file, ``_config.yml`` and the build tools: on a clean checkout every notebook
-is executed (as with ``force``), and a second build with the same code (the PDF after the
-HTML, or a rebuild after editing one chapter) re-executes only the notebooks whose text
-changed. Any change to navcore changes the key, so results are never stale.
+sources, the lock file, the execution settings of ``_config.yml`` and this tool: on a clean
+checkout every notebook is executed (as with ``force``), and a second build with the same
+code (the PDF after the HTML, or a rebuild after editing one chapter) re-executes only the
+notebooks whose text changed. Any change to navcore changes the key, so results are never stale.
 
 With ``--cache`` the notebooks that the cache lacks are executed *before* Sphinx runs,
 ``--jobs`` at a time (default: the number of cores), each in its own kernel exactly as
@@ -63,20 +63,41 @@ def subset_toc(paper: str) -> str:
     )
 
 
+# configuration that only changes how executed pages are rendered (LaTeX, HTML theme,
+# bibliography, numbering): a change there re-renders the book without re-executing it
+_RENDER_ONLY = {"title", "author", "copyright", "logo", "latex", "html", "bibtex_bibfiles", "launch_buttons"}
+_RENDER_ONLY_SPHINX = ("latex_", "html_", "bibtex_", "numfig", "math_", "suppress_warnings")
+
+
+def _execution_config() -> str:
+    """The part of _config.yml that can change what a notebook's execution produces."""
+    import yaml
+
+    config = yaml.safe_load((ROOT / "_config.yml").read_text())
+    config = {k: v for k, v in config.items() if k not in _RENDER_ONLY}
+    sphinx = dict(config.get("sphinx") or {})
+    sphinx["config"] = {
+        k: v for k, v in (sphinx.get("config") or {}).items() if not k.startswith(_RENDER_ONLY_SPHINX)
+    }
+    sphinx.pop("local_extensions", None)  # Sphinx extensions render; they never execute cells
+    config["sphinx"] = sphinx
+    return json.dumps(config, sort_keys=True, default=str)
+
+
 def source_key() -> str:
-    """Hash of everything besides a notebook's own text that can change its outputs."""
+    """Hash of everything besides a notebook's own text that can change its outputs.
+
+    navcore's sources, the lock, the execution-relevant part of ``_config.yml`` and this
+    file (which executes the notebooks); not the Sphinx extensions or the rendering settings.
+    """
     h = hashlib.sha256()
-    files = [
-        *sorted((ROOT / "navcore").rglob("*.py")),
-        ROOT / "requirements" / "lock.txt",
-        ROOT / "_config.yml",
-    ]
-    files += sorted((ROOT / "tools").glob("*.py"))
-    files += sorted((ROOT / "book" / "_ext").glob("*.py"))
+    files = [*sorted((ROOT / "navcore").rglob("*.py")), ROOT / "requirements" / "lock.txt"]
+    files.append(Path(__file__).resolve())
     for f in files:
         if f.exists():
             h.update(str(f.relative_to(ROOT)).encode())
             h.update(f.read_bytes())
+    h.update(_execution_config().encode())
     return h.hexdigest()[:16]
 
 

@@ -105,9 +105,26 @@ def _hide_helpers(app: Sphinx, doctree: nodes.document) -> None:
                 break
 
 
+def _captions(app: Sphinx, doctree: nodes.document) -> None:
+    """A reproduced figure's caption does not repeat its number ("Fig. 2.1: Fig. 2.1 redrawn")."""
+    for figure in doctree.findall(nodes.figure):
+        number = next((paper_figure_number(i) for i in figure.get("ids", []) if paper_figure_number(i)), None)
+        caption = next(iter(figure.findall(nodes.caption)), None)
+        if number is None or caption is None:
+            continue
+        first = next(iter(caption.findall(nodes.Text)), None)
+        if first is None:
+            continue
+        text = first.astext()
+        m = re.match(rf"^(?:Fig\.|Figure)\s*{re.escape(number)}\b[\s:.,]*", text)
+        if m:
+            rest = text[m.end() :]
+            first.parent.replace(first, nodes.Text(rest[:1].upper() + rest[1:]))
+
+
 # --- anchors for errata -------------------------------------------------------------------------
 
-ERRATUM_RE = re.compile(r"\b(?:WF|SP|ATC10|KZL)-E[0-9]*-[A-Za-z0-9.-]*[A-Za-z0-9]")
+ERRATUM_RE = re.compile(r"\b(?:WF|SP|ATC10|KZL)-E[0-9.]*-[A-Za-z0-9.-]*[A-Za-z0-9]")
 
 
 def _erratum_anchors(app: Sphinx, doctree: nodes.document) -> None:
@@ -156,9 +173,10 @@ def _collect_titles(app: Sphinx, doctree: nodes.document) -> None:
         if tm is None:
             continue
         found[node["ids"][0]] = tm.group(1)
+        rest = re.sub(r"\s*\(([^()]*)\)$", r", \1", tm.group(2))  # no parentheses in parentheses
         for text_node in list(title.findall(nodes.Text)):
             if inner.strip() in text_node.astext():
-                new = text_node.astext().replace(inner.strip(), tm.group(2))
+                new = text_node.astext().replace(inner.strip(), rest)
                 text_node.parent.replace(text_node, nodes.Text(new))
     if not hasattr(env, "paper_theorem_numbers"):
         env.paper_theorem_numbers = {}
@@ -194,11 +212,11 @@ def _renumber(app: Sphinx, env: BuildEnvironment) -> list[str]:
                 if paper is not None:
                     numbers[node_id] = (paper,)
                     continue
-                key = (chapter, "exercise" if kind in ("exercise", "solution") else "own")
                 if kind == "solution":
                     continue  # a solution refers to its exercise's number
+                key = (chapter, kind)
                 own[key] = own.get(key, 0) + 1
-                numbers[node_id] = (str(own[key]) if key[1] == "exercise" else f"N{own[key]}",)
+                numbers[node_id] = (str(own[key]) if kind == "exercise" else f"N{own[key]}",)
     return []
 
 
@@ -227,6 +245,7 @@ def _latex_figure_numbers(app: Sphinx, doctree: nodes.document, docname: str) ->
 def setup(app: Sphinx) -> dict[str, Any]:
     app.connect("doctree-read", _hide_helpers)
     app.connect("doctree-read", _erratum_anchors)
+    app.connect("doctree-read", _captions)
     app.connect("doctree-read", _collect_titles)
     app.connect("env-purge-doc", _purge)
     app.connect("env-merge-info", _merge)
