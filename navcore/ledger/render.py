@@ -368,7 +368,7 @@ class CountsTable:
     def _repr_html_(self) -> str:
         head, body = self._table()
         out = ['<div class="ledger-counts-wrap"><table class="ledger-counts"><thead><tr>']
-        out += [f"<th>{html.escape(h).replace('-', '-<wbr>').replace(' ', '<br>')}</th>" for h in head]
+        out += [f"<th>{_breakable_heading(h)}</th>" for h in head]
         out.append("</tr></thead><tbody>")
         for r in body:
             out.append("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in r) + "</tr>")
@@ -378,6 +378,25 @@ class CountsTable:
     def _repr_markdown_(self) -> str:
         head, body = self._table()
         return latex_table(head, body)
+
+
+_SOFT_HYPHENS = {
+    "reproduced": "repro&shy;duced",
+    "consistent": "consis&shy;tent",
+    "inconsistent": "incon&shy;sistent",
+    "discrepant": "discrep&shy;ant",
+    "reproducible": "repro&shy;ducible",
+}
+
+
+def _breakable_heading(text: str) -> str:
+    """A column heading that may break in a narrow window: between words, after a hyphen,
+    and at a soft hyphen inside the verdict names."""
+    words = []
+    for word in text.split(" "):
+        parts = [_SOFT_HYPHENS.get(part, html.escape(part)) for part in word.split("-")]
+        words.append("-<wbr>".join(parts))
+    return "<br>".join(words)
 
 
 class ErrataList:
