@@ -148,11 +148,19 @@ def _tex_escape(text: str) -> str:
 
 
 def _tex_breakable(text: str) -> str:
-    """Escaped text that may break after ``-``, ``.`` and ``_`` (claim and erratum ids)."""
-    out = _tex_escape(text)
-    for ch in ("-", "."):
-        out = out.replace(ch, ch + r"\allowbreak{}")
-    return out.replace(r"\_", r"\_\allowbreak{}")
+    """Escaped text that may break after ``-``, ``.``, ``_`` and ``/``, and inside words longer
+    than ten letters (claim and erratum ids, locators with formulas): a narrow table column
+    never runs over."""
+    pieces = re.split(r"([-./_ ])", text)
+    out = []
+    for piece in pieces:
+        if len(piece) > 10:
+            piece = "\x00".join(piece[i : i + 7] for i in range(0, len(piece), 7))
+        out.append(piece)
+    escaped = _tex_escape("".join(out)).replace("\x00", r"\allowbreak{}")
+    for ch in ("-", ".", "/"):
+        escaped = escaped.replace(ch, ch + r"\allowbreak{}")
+    return escaped.replace(r"\_", r"\_\allowbreak{}")
 
 
 _NUMBER = re.compile(r"^[−+-]?(?:\d[\d,]*\.?\d*|\.\d+)(?:[eE][−+-]?\d+)?(?:\s*%)?$")
@@ -173,19 +181,20 @@ def latex_table(head: Sequence[str], body: Sequence[Sequence[str]]) -> str:
         for j in range(ncols)
     ]
 
-    def need(j: int) -> int:
-        words = [len(w) for w in str(head[j]).split()] or [1]
+    def need(j: int) -> float:
+        words = [1.25 * len(w) + 1 for w in str(head[j]).split()] or [1.0]  # bold headings
         longest = max([len(row[j]) if numeric[j] else min(len(row[j]), 28) for row in cells] or [1])
         return max(max(words), longest, 3)
 
     widths = [need(j) for j in range(ncols)]
     total = sum(widths)
+    natural = sum(max([1.25 * len(str(head[j]))] + [len(row[j]) for row in cells]) for j in range(ncols))
     cols = "".join(
         (r">{\raggedleft\arraybackslash}" if numeric[j] else r">{\raggedright\arraybackslash}")
         + rf"p{{\dimexpr {widths[j] / total:.4f}\linewidth-2\tabcolsep\relax}}"
         for j in range(ncols)
     )
-    if total <= 60:  # a narrow table keeps its natural width
+    if natural <= 60:  # a narrow table keeps its natural width
         cols = "".join("r" if numeric[j] else "l" for j in range(ncols))
 
     def cell(text: str, j: int) -> str:
@@ -321,7 +330,7 @@ class LedgerTable:
                 status += r"\newline{}\scriptsize " + _tex_breakable(r["erratum"])
             cells = [
                 r"\texttt{" + _tex_breakable(r["id"]) + "}",
-                _tex_escape(r["locator"]),
+                _tex_breakable(r["locator"]),
                 _tex_escape(r["quantity"]),
                 _tex_escape(_plain_with_unit(r["published"], r["unit"])),
                 _tex_escape(_plain_with_unit(r["reproduced"], r["unit"])),
@@ -437,7 +446,7 @@ class ErrataList:
     def _repr_markdown_(self) -> str:
         out = []
         for e in self.items:
-            claims_md = ", ".join(f"`{c}`" for c in e.claims) or "none"
+            claims_md = "; ".join(c.replace("_", "\\_") for c in e.claims) or "none"
             out.append(
                 f"**{e.id}** ({e.paper}, {e.locator})\n\n"
                 f"- *Printed:* {e.printed}\n- *The book finds:* {e.finding}\n"
