@@ -161,6 +161,10 @@ class Table:
         head, body = self.cells()
         return latex_table(head, body)
 
+    def __repr__(self) -> str:
+        head, body = self.cells()
+        return "\n".join("  ".join(row) for row in [head, *body])
+
     def cells(self) -> tuple[list[str], list[list[str]]]:
         """Heading and rows as the Styler formats them (index included unless hidden)."""
         sep = "\x1f"
@@ -200,6 +204,9 @@ class Markdown:
 
     def _repr_html_(self) -> str | None:
         return self.html_text
+
+    def __repr__(self) -> str:
+        return self.markdown
 
 
 def chapter_summary(paper: str) -> Markdown:
@@ -314,6 +321,9 @@ class _HtmlLatexTable:
 
     def _repr_markdown_(self) -> str:
         return latex_table(self.head, self.text_rows)
+
+    def __repr__(self) -> str:
+        return "\n".join("  ".join(row) for row in [self.head, *self.text_rows])
 
 
 def trace_table(paper: str | None = None, index: Any = None, *, root: str | None = None) -> _HtmlLatexTable:

@@ -237,6 +237,27 @@ del _os, _plt
 """
 
 
+def _merge_streams(nb) -> None:
+    """One stream output per name and cell, the chunks joined exactly as they were written.
+
+    The kernel sends a cell's printed text in chunks whose boundaries depend on timing, and
+    MyST-NB joins stored chunks with a newline after stripping each; merging them here first
+    makes the stored and rendered output the same on every run.
+    """
+    for cell in nb.cells:
+        if cell.cell_type != "code":
+            continue
+        merged, first = [], {}
+        for out in cell.get("outputs", []):
+            if out.get("output_type") == "stream":
+                if out["name"] in first:
+                    first[out["name"]]["text"] += out["text"]
+                    continue
+                first[out["name"]] = out
+            merged.append(out)
+        cell.outputs = merged
+
+
 def _execute_group(
     paper: str | None, paths: list[str], timeout: int
 ) -> list[tuple[str, float, object, str | None]]:
@@ -306,6 +327,7 @@ def _execute_group(
                 err = f"CellExecutionError: {exc}"[:2000]
             except Exception as exc:  # a dead kernel, a timeout: report, let Sphinx re-run it
                 err = f"{type(exc).__name__}: {exc}"[:2000]
+            _merge_streams(nb)
             count = 0
             for cell in nb.cells:  # number the cells as a fresh kernel would
                 if cell.cell_type == "code" and cell.get("execution_count") is not None:

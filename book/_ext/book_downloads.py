@@ -14,6 +14,7 @@ copied into the HTML output and every page's download menu links it.
 
 from __future__ import annotations
 
+import re
 import shutil
 from pathlib import Path
 from typing import Any
@@ -21,6 +22,7 @@ from typing import Any
 from sphinx.application import Sphinx
 
 PDF_NAME = "book.pdf"
+_ADDRESS = re.compile(r" at 0x[0-9a-fA-F]+>")
 
 
 def _build_dir(app: Sphinx) -> Path:
@@ -46,6 +48,10 @@ def executed_notebook(path: Path, cache_path: str | None = None) -> Any:
             pass
     for index, cell in enumerate(nb.cells):
         cell["id"] = f"cell-{index}"
+        for out in cell.get("outputs", []):  # "<... at 0x7f...>" differs from run to run
+            plain = out.get("data", {}).get("text/plain")
+            if isinstance(plain, str):
+                out["data"]["text/plain"] = _ADDRESS.sub(">", plain)
     return nb
 
 

@@ -388,6 +388,10 @@ class CountsTable:
         head, body = self._table()
         return latex_table(head, body)
 
+    def __repr__(self) -> str:
+        head, body = self._table()
+        return "\n".join("  ".join(row) for row in [head, *body])
+
 
 _SOFT_HYPHENS = {
     "reproduced": "repro&shy;duced",
@@ -453,6 +457,9 @@ class ErrataList:
                 f"- *Evidence:* {e.evidence}\n- *Claims affected:* {claims_md}\n"
             )
         return "\n".join(out) or "No errata registered."
+
+    def __repr__(self) -> str:
+        return "\n".join(f"{e.id}: {e.paper}, {e.locator}" for e in self.items) or "No errata registered."
 
 
 _LEDGER_JS = r"""
