@@ -221,3 +221,18 @@ def test_numbering_papers_numbers_and_the_books_own_per_chapter():
     assert n["wf/02"]["theorem"] == {"thm": ("3.1",), "own": ("N1",)}  # its own counter
     assert n["kzl/01"]["figure"] == {"fig-kzl-fig4": ("4",), "fig-kzl-standalone": ("N1",)}
     assert n["wf/01"]["exercise"] == {"ex-a": ("1",)} and n["kzl/01"]["exercise"] == {"ex-b": ("1",)}
+
+
+def test_printed_chunks_are_merged_exactly():
+    """Oracle: the text as printed, whatever the chunking of the kernel's stream messages."""
+    import nbformat
+
+    build_book = _load(ROOT / "tools" / "build_book.py", "build_book_merge")
+    chunks = ["Example beta:", " [0.07 0.06]\n", " K  gain\n", "\n", "   1   18\n"]
+    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell("print()")])
+    nb.cells[0].outputs = [nbformat.v4.new_output("stream", name="stdout", text=c) for c in chunks]
+    nb.cells[0].outputs.insert(2, nbformat.v4.new_output("stream", name="stderr", text="warn\n"))
+    build_book._merge_streams(nb)
+    outs = nb.cells[0].outputs
+    assert [o["name"] for o in outs] == ["stdout", "stderr"]
+    assert outs[0]["text"] == "".join(chunks)
