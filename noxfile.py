@@ -38,6 +38,10 @@ os.environ.setdefault("UV_SYSTEM_CERTS", "1")
 # deterministic figures and hashing in every subprocess
 os.environ.setdefault("PYTHONHASHSEED", "0")
 os.environ.setdefault("SOURCE_DATE_EPOCH", "1767225600")
+os.environ.setdefault("FORCE_SOURCE_DATE", "1")  # TeX: dates from SOURCE_DATE_EPOCH too
+# a book build started by nox stops when nox is stopped or killed (tools/build_book.py)
+os.environ.setdefault("NAVCORE_STOP_WITH_PARENT", "1")
+HTML = ROOT / "_build" / "html"
 
 
 def _install(session: nox.Session) -> None:
@@ -60,10 +64,16 @@ def book(session: nox.Session) -> None:
     so on a clean checkout everything executes and the PDF build reuses the results.
     """
     _install(session)
+    _build_html(session)
+
+
+def _build_html(session: nox.Session) -> None:
     session.run("python", "tools/build_book.py", "--builder", "html", "--cache", *session.posargs)
-    # release gate: every internal link and anchor of the HTML resolves
-    session.run("python", "tools/check_links.py", str(ROOT / "_build" / "html"))
-    session.log(f"HTML book: {ROOT / '_build' / 'html' / 'index.html'}")
+    # release gates: every internal link and anchor resolves; no code cell shows a build
+    # helper; every downloadable notebook carries its outputs
+    session.run("python", "tools/check_links.py", str(HTML))
+    session.run("python", "tools/check_book.py", "html", str(HTML))
+    session.log(f"HTML book: {HTML / 'index.html'}")
 
 
 def _ensure_tex(session: nox.Session) -> None:
@@ -90,14 +100,51 @@ def _ensure_tex(session: nox.Session) -> None:
 
 @nox.session
 def pdf(session: nox.Session) -> None:
-    """Build the PDF book with XeLaTeX into _build/latex/book.pdf (installs TeX if root)."""
+    """Build the PDF book with XeLaTeX into _build/latex/book.pdf (installs TeX if root).
+
+    If an HTML book already exists (``nox -s book pdf`` builds it first), it is rebuilt from
+    the execution cache so that every page links the PDF, whatever the order of the sessions.
+    """
     _ensure_tex(session)
     _install(session)
-    session.run("python", "tools/build_book.py", "--builder", "pdflatex", "--cache", *session.posargs)
     pdf_path = ROOT / "_build" / "latex" / "book.pdf"
+    pdf_path.unlink(missing_ok=True)
+    session.run("python", "tools/build_book.py", "--builder", "pdflatex", "--cache", *session.posargs)
     if not pdf_path.exists():
         session.error(f"the LaTeX build did not produce {pdf_path}")
+    # release gate: nothing runs off the page; no code listing shows a build helper
+    session.run("python", "tools/check_book.py", "latex", str(pdf_path.parent))
     session.log(f"PDF book: {pdf_path}")
+    if (HTML / "book.pdf").exists():  # the HTML already links a PDF: give it the new one
+        shutil.copy2(pdf_path, HTML / "book.pdf")
+    elif (HTML / "index.html").exists():
+        session.log("an HTML book exists without the PDF: rebuilding it to link the PDF")
+        _build_html(session)
+
+
+@nox.session
+def reproducible(session: nox.Session) -> None:
+    """Two clean HTML builds of this commit (executing every page) must be byte-identical.
+
+    Both builds use the same output and cache folders (emptied in between), so that only
+    what the build itself does can differ; the first build's HTML is kept aside.
+    """
+    _install(session)
+    import tempfile
+
+    with tempfile.TemporaryDirectory(prefix="navcore-repro-") as tmp:
+        out, cache, first = Path(tmp) / "out", Path(tmp) / "cache", Path(tmp) / "first"
+        ledger_cache = Path(tmp) / "navcore-cache"  # the claims are evaluated afresh too
+        for run in ("first", "second"):
+            for folder in (out, cache, ledger_cache):
+                shutil.rmtree(folder, ignore_errors=True)
+            session.run(
+                "python", "tools/build_book.py", "--builder", "html", "--cache", "--out", str(out),
+                env={"NAVCORE_BOOK_CACHE": str(cache), "NAVCORE_CACHE": str(ledger_cache)},
+            )  # fmt: skip
+            if run == "first":
+                shutil.move(str(out / "_build" / "html"), first)
+        session.run("python", "tools/check_book.py", "same", str(first), str(out / "_build" / "html"))
 
 
 @nox.session

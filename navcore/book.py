@@ -18,21 +18,24 @@ and ends a section with its published-versus-reproduced rows::
 from __future__ import annotations
 
 import html
+import re
 from pathlib import Path
 from typing import Any
 
 from navcore import figures as _figures
 from navcore import ledger
 from navcore.ledger.core import STATUSES
-from navcore.ledger.render import STATUS_COLOURS, CountsTable, ErrataList, LedgerTable
+from navcore.ledger.render import CountsTable, ErrataList, InteractiveLedger, LedgerTable, latex_table
 
 __all__ = [
     "Markdown",
+    "assumptions_table",
     "book_root_prefix",
     "chapter_summary",
     "claims_table",
     "counts_table",
     "errata_list",
+    "ledger_table",
     "setup",
     "show_figure",
     "table",
@@ -64,6 +67,10 @@ def setup() -> None:
         markdown = shell.display_formatter.formatters["text/markdown"]
         markdown.for_type_by_name("pandas.core.frame", "DataFrame", _markdown_table)
         markdown.for_type_by_name("pandas.io.formats.style", "Styler", _markdown_table)
+        # and an HTML whose element ids do not change from run to run (pandas draws a random uuid)
+        shell.display_formatter.formatters["text/html"].for_type_by_name(
+            "pandas.io.formats.style", "Styler", _styler_html
+        )
     _figures.apply_style()
     np.set_printoptions(precision=5, suppress=True, linewidth=100)
 
@@ -114,7 +121,25 @@ def counts_table(paper: str | None = None) -> CountsTable:
 
 def errata_list(paper: str | None = None, *, root: str | None = None) -> ErrataList:
     """The registered errata (of one paper, or all), linked to the pages that discuss them."""
-    return ErrataList(ledger.errata(paper), root=book_root_prefix() if root is None else root)
+    root = book_root_prefix() if root is None else root
+    return ErrataList(ledger.errata(paper), root=root, titles=_page_titles(Path.cwd() / root))
+
+
+def ledger_table(paper: str | None = None, *, root: str | None = None) -> InteractiveLedger:
+    """Every claim (or one paper's) as one table that sorts, filters, searches and downloads."""
+    root = book_root_prefix() if root is None else root
+    return InteractiveLedger(ledger.evaluations(paper=paper), root=root)
+
+
+def _page_titles(book_dir: Path) -> dict[str, str]:
+    """Each page's title (its first level-1 heading), keyed by its path without suffix."""
+    titles = {}
+    for page in sorted(book_dir.rglob("*.md")):
+        for line in page.read_text(encoding="utf-8").splitlines():
+            if line.startswith("# "):
+                titles[page.relative_to(book_dir).with_suffix("").as_posix()] = line[2:].strip()
+                break
+    return titles
 
 
 class Table:
@@ -129,18 +154,33 @@ class Table:
         self.styler = data if hasattr(data, "to_html") and hasattr(data, "data") else data.style
 
     def _repr_html_(self) -> str:
-        return self.styler.to_html()
+        return _styler_html(self.styler)
 
     def _repr_markdown_(self) -> str:
+        """The printed table (a LaTeX longtable that fits the page; see ``latex_table``)."""
+        head, body = self.cells()
+        return latex_table(head, body)
+
+    def __repr__(self) -> str:
+        head, body = self.cells()
+        return "\n".join("  ".join(row) for row in [head, *body])
+
+    def cells(self) -> tuple[list[str], list[list[str]]]:
+        """Heading and rows as the Styler formats them (index included unless hidden)."""
         sep = "\x1f"
         lines = [ln.split(sep) for ln in self.styler.to_string(delimiter=sep).splitlines() if ln.strip()]
         width = max(len(ln) for ln in lines)
-        lines = [ln + [""] * (width - len(ln)) for ln in lines]
+        lines = [[c.strip() for c in ln] + [""] * (width - len(ln)) for ln in lines]
+        return lines[0], lines[1:]
 
-        def row(cells: list[str]) -> str:
-            return "| " + " | ".join(c.strip().replace("|", "\\|") or " " for c in cells) + " |"
 
-        return "\n".join([row(lines[0]), "|" + "---|" * width, *(row(ln) for ln in lines[1:])])
+def _styler_html(styler: Any) -> str:
+    """A Styler's HTML with an id derived from its content, so that two builds are identical."""
+    import hashlib
+
+    digest = hashlib.sha256(styler.data.to_csv().encode() + repr(styler.data.columns).encode())
+    styler.set_uuid(digest.hexdigest()[:8])
+    return styler.to_html()
 
 
 def _markdown_table(data: Any) -> str:
@@ -165,6 +205,9 @@ class Markdown:
     def _repr_html_(self) -> str | None:
         return self.html_text
 
+    def __repr__(self) -> str:
+        return self.markdown
+
 
 def chapter_summary(paper: str) -> Markdown:
     """A box with the chapter's ledger counts by status, for the top of a chapter."""
@@ -178,14 +221,12 @@ def chapter_summary(paper: str) -> Markdown:
         + "."
     )
     chips = "".join(
-        f'<span style="background:{STATUS_COLOURS[s]};padding:2px 8px;border-radius:4px;'
-        f'margin-right:6px">{c[s]} {html.escape(s)}</span>'
+        f'<span class="ledger-chip ledger-status-{html.escape(s)}">{c[s]} {html.escape(s)}</span>'
         for s in STATUSES
     )
     html_text = (
-        f'<div class="ledger-summary" style="border:1px solid #ccc;border-radius:6px;padding:8px 12px;'
-        f'margin:8px 0"><b>Ledger for {paper}:</b> {c["total"]} claims &nbsp; {chips}'
-        + (f"<b style='color:#b00'>{failing} failing</b>" if failing else "every check passes")
+        f'<div class="ledger-summary"><b>Ledger for {paper}:</b> {c["total"]} claims &nbsp; {chips}'
+        + (f"<b class='ledger-failing'>{failing} failing</b>" if failing else "every check passes")
         + "</div>"
     )
     return Markdown(md, html_text)
@@ -203,3 +244,139 @@ def show_figure(fig_id: str, *, display: bool = False) -> Any:
     glue(fig_id, fig, display=display)
     plt.close(fig)
     return None
+
+
+_UNITS = {
+    "m": "m",
+    "km": "km",
+    "mps": "m/s",
+    "s": "s",
+    "min": "min",
+    "h": "h",
+    "deg": "deg",
+    "deg_s": "deg/s",
+    "deg_h": "deg/h",
+    "rad": "rad",
+    "hz": "Hz",
+    "dbw": "dBW",
+    "dbw_hz": "dBW/Hz",
+    "dbic": "dBic",
+    "db": "dB",
+    "dbhz": "dB-Hz",
+    "ppm": "ppm",
+    "ug": "µg",
+    "g": "g",
+    "nmi": "nmi",
+    "nmi_h": "nmi/h",
+    "w": "W",
+    "mps2": "m/s²",
+    "ft": "ft",
+    "m2_s": "m²/s",
+    "m2_s2": "m²/s²",
+    "m2_s3": "m²/s³",
+}
+
+
+def _readable_name(name: str) -> str:
+    """``cruise_altitude_m`` -> ``cruise altitude (m)``; text that is not a name is kept."""
+    if " " in name or name != name.lower():
+        return name
+    parts = name.split("_")
+    for n in (2, 1):
+        unit = "_".join(parts[-n:])
+        if len(parts) > n and unit in _UNITS:
+            return " ".join(parts[:-n]) + f" ({_UNITS[unit]})"
+    return " ".join(parts)
+
+
+def _readable_value(value: Any) -> str:
+    if isinstance(value, bool) or value is None:
+        return {True: "yes", False: "no", None: "—"}[value]
+    if isinstance(value, int | float):
+        return f"{value:g}"
+    if isinstance(value, tuple | list):
+        return ", ".join(_readable_value(v) for v in value)
+    return str(value)
+
+
+def assumptions_table(rows: Any, head: tuple[str, str] = ("assumption", "value")) -> Table:
+    """A two-column table of assumed inputs: readable names with units, compact numbers."""
+    import pandas as pd
+
+    data = pd.DataFrame([(_readable_name(str(k)), _readable_value(v)) for k, v in rows], columns=list(head))
+    return Table(data.style.hide(axis="index"))
+
+
+class _HtmlLatexTable:
+    """A table with its own HTML (cells already HTML) and the book's printed table."""
+
+    def __init__(self, head: list[str], html_rows: list[list[str]], text_rows: list[list[str]]) -> None:
+        self.head, self.html_rows, self.text_rows = head, html_rows, text_rows
+
+    def _repr_html_(self) -> str:
+        head = "".join(f"<th>{html.escape(h)}</th>" for h in self.head)
+        body = "".join("<tr>" + "".join(f"<td>{c}</td>" for c in row) + "</tr>" for row in self.html_rows)
+        table = f"<table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
+        return f'<div class="trace-table">{table}</div>'
+
+    def _repr_markdown_(self) -> str:
+        return latex_table(self.head, self.text_rows)
+
+    def __repr__(self) -> str:
+        return "\n".join("  ".join(row) for row in [self.head, *self.text_rows])
+
+
+def trace_table(paper: str | None = None, index: Any = None, *, root: str | None = None) -> _HtmlLatexTable:
+    """The traceability index of one paper (item, functions, tests, pages, claims), or with
+    ``paper=None`` the reverse index (function, the items it implements).
+
+    Pages are linked by their titles; the printed table lists one name per line.
+    """
+    from navcore import traceability
+
+    index = index or traceability.build_index()
+    root = book_root_prefix() if root is None else root
+    titles = _page_titles(Path.cwd() / root)
+
+    def link(page: Any, displayed: bool) -> tuple[str, str]:
+        title = re.sub(r"\s*\([^()]*\)$", "", titles.get(page.docname, page.title))  # no section list
+        mark = "\u00a0★" if displayed else ""
+        href = html.escape(f"{root}{page.docname}.html")
+        return f'<a href="{href}">{html.escape(title)}</a>{mark}', title + mark
+
+    if paper is None:
+        head = ["navcore function", "Implements"]
+        html_rows, text_rows = [], []
+        for impl in index.implementations:
+            name = f"{impl.module.removeprefix('navcore.')}.{impl.qualname}"
+            refs = ", ".join(f"{r.paper} Eq. ({r.item})" if r.is_equation else str(r) for r in impl.refs)
+            html_rows.append([f"<code>{html.escape(name)}</code>", html.escape(refs)])
+            text_rows.append([name.replace(".", ".\u200b").replace("_", "_\u200b"), refs])
+        return _HtmlLatexTable(head, html_rows, text_rows)
+
+    head = ["Item", "navcore", "Tests", "Book", "Claims"]
+    html_rows, text_rows = [], []
+    for e in index.by_paper(paper):
+        item = f"Eq.\u00a0({e.ref.item})" if e.ref.is_equation else e.ref.item
+        funcs = [f.qualname for f in e.functions]
+        tests = [t.removesuffix(".py") for t in sorted(e.tests)]
+        pages = [link(p, True) for p in e.displayed_on] + [link(p, False) for p in e.mentioned_on]
+        html_rows.append(
+            [
+                html.escape(item),
+                "<br>".join(f"<code>{html.escape(f)}</code>" for f in funcs) or "—",
+                "<br>".join(html.escape(t) for t in tests) or "—",
+                "<br>".join(h for h, _ in pages) or "—",
+                str(len(e.claims) or "—"),
+            ]
+        )
+        text_rows.append(
+            [
+                item,
+                "; ".join(f.replace("_", "_\u200b") for f in funcs) or "—",
+                "; ".join(t.replace("_", "_\u200b") for t in tests) or "—",
+                "; ".join(t for _, t in pages) or "—",
+                str(len(e.claims) or "—"),
+            ]
+        )
+    return _HtmlLatexTable(head, html_rows, text_rows)

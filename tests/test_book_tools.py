@@ -93,7 +93,146 @@ def test_pandas_table_has_a_markdown_twin_for_the_pdf():
 
     from navcore import book
 
-    df = pd.DataFrame({"a": [1.23456, np.nan], "b|c": ["u", "v"]})
+    df = pd.DataFrame({"a": [1.23456, np.nan], "b_c": ["u", "v"]})
     styled = df.style.format(precision=2, na_rep="").hide(axis="index")
-    assert book.table(styled)._repr_markdown_() == "| a | b\\|c |\n|---|---|\n| 1.23 | u |\n|   | v |"
+    assert book.table(styled).cells() == (["a", "b_c"], [["1.23", "u"], ["", "v"]])
+    latex = book.table(styled)._repr_markdown_()
+    # a printed table: numbers right-aligned and unbreakable, LaTeX specials escaped
+    assert latex.startswith("```{raw} latex") and "\\begin{longtable}{rl}" in latex
+    assert "\\mbox{1.23} & u \\\\" in latex and "\\textbf{b\\_c}" in latex
     assert "<table" in book.table(df)._repr_html_()
+
+
+book_presentation = _load(ROOT / "book" / "_ext" / "book_presentation.py", "book_presentation")
+check_book = _load(ROOT / "tools" / "check_book.py", "check_book")
+
+
+def test_build_helpers_are_stripped_from_displayed_cells():
+    """Oracle: the displayed source written out by hand."""
+    source = (
+        "import numpy as np\n"
+        "from myst_nb import glue\n"
+        "from navcore import book\n"
+        "%matplotlib inline\n"
+        "book.setup()\n"
+        "x = np.arange(3)\n"
+        'glue("a-key",\n     int(x.sum()), display=False)\n'
+        'book.show_figure("WF-fig1")\n'
+        "print(x)"
+    )
+    assert book_presentation.strip_helpers(source) == "import numpy as np\nx = np.arange(3)\nprint(x)"
+    # a cell that uses book for something else keeps the import
+    kept = "from navcore import book\nbook.setup()\nbook.table(df)"
+    assert book_presentation.strip_helpers(kept) == "from navcore import book\nbook.table(df)"
+    assert book_presentation.strip_helpers("book.setup()\n") == ""
+
+
+@pytest.mark.parametrize(
+    ("name", "number"),
+    [
+        ("fig-atc10-2-1", "2.1"),
+        ("fig-kzl-fig4", "4"),
+        ("fig-wf-1", "1"),
+        ("fig-sp-architectures", None),  # the book's own: N-numbered
+        ("fig-atc10-ma-tails", None),
+    ],
+)
+def test_paper_figure_number_from_name(name, number):
+    assert book_presentation.paper_figure_number(name) == number
+
+
+def test_html_gate_finds_helpers_and_notebooks_without_outputs(tmp_path):
+    cell = (
+        '<div class="cell_input docutils container"><div class="highlight-ipython3 notranslate">'
+        '<div class="highlight"><pre><span class="n">glue</span><span class="p">(</span>"k", 1)</pre>'
+    )
+    _page(tmp_path / "wf" / "a.html", cell)
+    nb = {"cells": [{"cell_type": "code", "execution_count": None, "outputs": [], "source": "1"}]}
+    (tmp_path / "_sources" / "wf").mkdir(parents=True)
+    (tmp_path / "_sources" / "wf" / "a.ipynb").write_text(__import__("json").dumps(nb))
+    problems = check_book.check_html(tmp_path)
+    assert len(problems) == 2
+    assert "shows 'glue('" in problems[0] and "not executed" in problems[1]
+
+
+def test_latex_gate_counts_only_wide_overfull_boxes(tmp_path):
+    (tmp_path / "book.log").write_text(
+        "Overfull \\hbox (1.5pt too wide) in paragraph at lines 1--2\n"
+        "Overfull \\hbox (842.0pt too wide) in alignment at lines 9--12\n"
+    )
+    problems = check_book.check_latex(tmp_path)
+    assert len(problems) == 1 and "842.0 pt" in problems[0]
+
+
+def test_same_gate_ignores_only_pdf_dates(tmp_path):
+    for run, date in (("a", b"20260101"), ("b", b"20270202")):
+        (tmp_path / run).mkdir()
+        (tmp_path / run / "book.pdf").write_bytes(b"%PDF /CreationDate (D:" + date + b") body")
+        (tmp_path / run / "x.html").write_text("same")
+    assert check_book.same_trees(tmp_path / "a", tmp_path / "b") == []
+    (tmp_path / "b" / "x.html").write_text("other")
+    assert check_book.same_trees(tmp_path / "a", tmp_path / "b") == ["differs: x.html"]
+
+
+def test_interactive_ledger_filters_by_the_fields_present():
+    from navcore import ledger
+    from navcore.ledger.render import STATUS_COLOURS, InteractiveLedger
+
+    assert "inconsistent" in STATUS_COLOURS
+    evals = ledger.evaluations("WF")[:3]
+    page = InteractiveLedger(evals, root="")._repr_html_()
+    for control in ('data-filter="paper"', 'data-filter="status"', 'data-download="csv"', 'type="search"'):
+        assert control in page
+    assert f'id="{evals[0].claim.id.lower()}"' in page
+    # kind and band columns appear exactly when the records carry them
+    has_kind = any(e.as_json().get("kind") for e in evals)
+    assert ('data-filter="kind"' in page) == has_kind
+    assert "\\begin{longtable}" in InteractiveLedger(evals)._repr_markdown_()
+
+
+def test_styler_html_is_the_same_every_time():
+    import pandas as pd
+
+    from navcore import book
+
+    df = pd.DataFrame({"a": [1.0, 2.0]})
+    assert book.table(df.style)._repr_html_() == book.table(df.style)._repr_html_()
+
+
+def test_numbering_papers_numbers_and_the_books_own_per_chapter():
+    """Oracle: the numbers written out by hand for a two-chapter toy environment."""
+    from types import SimpleNamespace
+
+    env = SimpleNamespace(
+        toc_fignumbers={
+            "wf/01": {"figure": {"fig-wf-1": (3,), "fig-wf-example": (4,)}, "exercise": {"ex-a": (1,)}},
+            "wf/02": {"figure": {"fig-wf-sensitivity": (5,)}, "theorem": {"thm": (1,), "own": (2,)}},
+            "kzl/01": {
+                "figure": {"fig-kzl-fig4": (6,), "fig-kzl-standalone": (7,)},
+                "exercise": {"ex-b": (2,)},
+            },
+        },
+        paper_theorem_numbers={"wf/02": {"thm": "3.1"}},
+    )
+    book_presentation._renumber(None, env)
+    n = env.toc_fignumbers
+    assert n["wf/01"]["figure"] == {"fig-wf-1": ("1",), "fig-wf-example": ("N1",)}
+    assert n["wf/02"]["figure"] == {"fig-wf-sensitivity": ("N2",)}
+    assert n["wf/02"]["theorem"] == {"thm": ("3.1",), "own": ("N1",)}  # its own counter
+    assert n["kzl/01"]["figure"] == {"fig-kzl-fig4": ("4",), "fig-kzl-standalone": ("N1",)}
+    assert n["wf/01"]["exercise"] == {"ex-a": ("1",)} and n["kzl/01"]["exercise"] == {"ex-b": ("1",)}
+
+
+def test_printed_chunks_are_merged_exactly():
+    """Oracle: the text as printed, whatever the chunking of the kernel's stream messages."""
+    import nbformat
+
+    build_book = _load(ROOT / "tools" / "build_book.py", "build_book_merge")
+    chunks = ["Example beta:", " [0.07 0.06]\n", " K  gain\n", "\n", "   1   18\n"]
+    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell("print()")])
+    nb.cells[0].outputs = [nbformat.v4.new_output("stream", name="stdout", text=c) for c in chunks]
+    nb.cells[0].outputs.insert(2, nbformat.v4.new_output("stream", name="stderr", text="warn\n"))
+    build_book._merge_streams(nb)
+    outs = nb.cells[0].outputs
+    assert [o["name"] for o in outs] == ["stdout", "stderr"]
+    assert outs[0]["text"] == "".join(chunks)

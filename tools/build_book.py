@@ -8,10 +8,10 @@ Usage::
                                                # into _build/subset-wf (fast check of one chapter)
 
 ``--cache`` executes through a jupyter-cache whose folder is keyed by a hash of navcore's
-sources, the lock file, ``_config.yml`` and the build tools: on a clean checkout every notebook
-is executed (as with ``force``), and a second build with the same code (the PDF after the
-HTML, or a rebuild after editing one chapter) re-executes only the notebooks whose text
-changed. Any change to navcore changes the key, so results are never stale.
+sources, the lock file, the execution settings of ``_config.yml`` and this tool: on a clean
+checkout every notebook is executed (as with ``force``), and a second build with the same
+code (the PDF after the HTML, or a rebuild after editing one chapter) re-executes only the
+notebooks whose text changed. Any change to navcore changes the key, so results are never stale.
 
 With ``--cache`` the notebooks that the cache lacks are executed *before* Sphinx runs,
 ``--jobs`` at a time (default: the number of cores), each in its own kernel exactly as
@@ -35,6 +35,7 @@ import fnmatch
 import hashlib
 import json
 import os
+import signal
 import subprocess
 import sys
 import tempfile
@@ -62,20 +63,41 @@ def subset_toc(paper: str) -> str:
     )
 
 
+# configuration that only changes how executed pages are rendered (LaTeX, HTML theme,
+# bibliography, numbering): a change there re-renders the book without re-executing it
+_RENDER_ONLY = {"title", "author", "copyright", "logo", "latex", "html", "bibtex_bibfiles", "launch_buttons"}
+_RENDER_ONLY_SPHINX = ("latex_", "html_", "bibtex_", "numfig", "math_", "suppress_warnings")
+
+
+def _execution_config() -> str:
+    """The part of _config.yml that can change what a notebook's execution produces."""
+    import yaml
+
+    config = yaml.safe_load((ROOT / "_config.yml").read_text())
+    config = {k: v for k, v in config.items() if k not in _RENDER_ONLY}
+    sphinx = dict(config.get("sphinx") or {})
+    sphinx["config"] = {
+        k: v for k, v in (sphinx.get("config") or {}).items() if not k.startswith(_RENDER_ONLY_SPHINX)
+    }
+    sphinx.pop("local_extensions", None)  # Sphinx extensions render; they never execute cells
+    config["sphinx"] = sphinx
+    return json.dumps(config, sort_keys=True, default=str)
+
+
 def source_key() -> str:
-    """Hash of everything besides a notebook's own text that can change its outputs."""
+    """Hash of everything besides a notebook's own text that can change its outputs.
+
+    navcore's sources, the lock, the execution-relevant part of ``_config.yml`` and this
+    file (which executes the notebooks); not the Sphinx extensions or the rendering settings.
+    """
     h = hashlib.sha256()
-    files = [
-        *sorted((ROOT / "navcore").rglob("*.py")),
-        ROOT / "requirements" / "lock.txt",
-        ROOT / "_config.yml",
-    ]
-    files += sorted((ROOT / "tools").glob("*.py"))
-    files += sorted((ROOT / "book" / "_ext").glob("*.py"))
+    files = [*sorted((ROOT / "navcore").rglob("*.py")), ROOT / "requirements" / "lock.txt"]
+    files.append(Path(__file__).resolve())
     for f in files:
         if f.exists():
             h.update(str(f.relative_to(ROOT)).encode())
             h.update(f.read_bytes())
+    h.update(_execution_config().encode())
     return h.hexdigest()[:16]
 
 
@@ -144,6 +166,67 @@ def _read_notebook(path: Path):
     return read_myst_markdown_notebook(path.read_text(), path=str(path))
 
 
+# --- stopping a build -------------------------------------------------------------------------
+# Ctrl-C (SIGINT to the process group) or SIGTERM stops every process a build started within
+# seconds: the parent terminates its workers and the Sphinx subprocess; each worker kills its
+# kernel and exits (a pool worker would otherwise treat KeyboardInterrupt as one task's result
+# and go on with the next task); a worker whose parent dies gets SIGTERM from the kernel
+# (Linux parent-death signal). The parent stores executed notebooks with both signals blocked,
+# so an interrupt never leaves a half-written cache entry.
+
+_KERNEL_PIDS: set[int] = set()
+
+
+def _set_parent_death_signal(signum: int = signal.SIGTERM) -> None:
+    """Ask Linux to send ``signum`` to this process when its parent exits (no-op elsewhere)."""
+    if not sys.platform.startswith("linux"):
+        return
+    try:
+        import ctypes
+
+        libc = ctypes.CDLL(None, use_errno=True)
+        libc.prctl(1, int(signum), 0, 0, 0)  # PR_SET_PDEATHSIG
+    except (OSError, AttributeError):  # pragma: no cover - no libc prctl
+        pass
+
+
+def _worker_stop(signum: int, frame: object) -> None:
+    for pid in list(_KERNEL_PIDS):
+        try:
+            os.kill(pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+    os._exit(128 + signum)
+
+
+def _worker_init() -> None:
+    """Pool initializer: die with the parent, and on SIGINT/SIGTERM kill the kernel and exit."""
+    _set_parent_death_signal()
+    signal.signal(signal.SIGINT, _worker_stop)
+    signal.signal(signal.SIGTERM, _worker_stop)
+    if os.getppid() == 1:  # the parent died before the death signal was armed
+        _worker_stop(signal.SIGTERM, None)
+
+
+def _raise_interrupt(signum: int, frame: object) -> None:
+    raise KeyboardInterrupt(f"signal {signum}")
+
+
+def _stop_pool(pool: ProcessPoolExecutor, grace: float = 5.0) -> None:
+    """Terminate the pool's workers (each kills its kernel), then kill any that linger."""
+    procs = list((getattr(pool, "_processes", None) or {}).values())
+    for proc in procs:
+        if proc.is_alive():
+            proc.terminate()
+    deadline = time.monotonic() + grace
+    for proc in procs:
+        proc.join(max(0.0, deadline - time.monotonic()))
+        if proc.is_alive():
+            proc.kill()
+            proc.join(1.0)
+    pool.shutdown(wait=False, cancel_futures=True)
+
+
 _RESET = """\
 %reset -f
 import os as _os
@@ -152,6 +235,27 @@ _plt.close("all")
 _os.chdir({cwd!r})
 del _os, _plt
 """
+
+
+def _merge_streams(nb) -> None:
+    """One stream output per name and cell, the chunks joined exactly as they were written.
+
+    The kernel sends a cell's printed text in chunks whose boundaries depend on timing, and
+    MyST-NB joins stored chunks with a newline after stripping each; merging them here first
+    makes the stored and rendered output the same on every run.
+    """
+    for cell in nb.cells:
+        if cell.cell_type != "code":
+            continue
+        merged, first = [], {}
+        for out in cell.get("outputs", []):
+            if out.get("output_type") == "stream":
+                if out["name"] in first:
+                    first[out["name"]]["text"] += out["text"]
+                    continue
+                first[out["name"]] = out
+            merged.append(out)
+        cell.outputs = merged
 
 
 def _execute_group(
@@ -174,6 +278,9 @@ def _execute_group(
 
     km = KernelManager(kernel_name="python3")
     km.start_kernel(cwd=str(ROOT / "book"))
+    kernel_pid = getattr(km.provisioner, "pid", None)
+    if kernel_pid:
+        _KERNEL_PIDS.add(kernel_pid)
     kc = None
     results = []
 
@@ -220,6 +327,7 @@ def _execute_group(
                 err = f"CellExecutionError: {exc}"[:2000]
             except Exception as exc:  # a dead kernel, a timeout: report, let Sphinx re-run it
                 err = f"{type(exc).__name__}: {exc}"[:2000]
+            _merge_streams(nb)
             count = 0
             for cell in nb.cells:  # number the cells as a fresh kernel would
                 if cell.cell_type == "code" and cell.get("execution_count") is not None:
@@ -233,15 +341,18 @@ def _execute_group(
         if kc is not None:
             kc.stop_channels()
         km.shutdown_kernel(now=True)
+        _KERNEL_PIDS.discard(kernel_pid)
     return results
 
 
-def _group_pages(pages: list[Path]) -> tuple[list[tuple[str | None, list[str]]], list[str]]:
+def _group_pages(
+    pages: list[Path], book: Path = ROOT / "book"
+) -> tuple[list[tuple[str | None, list[str]]], list[str]]:
     """Split pages into one group per chapter folder and the front and back matter."""
     chapters: dict[str, list[str]] = {}
     other: list[str] = []
     for page in pages:
-        rel = page.relative_to(ROOT / "book")
+        rel = page.relative_to(book)
         if len(rel.parts) > 1:
             chapters.setdefault(rel.parts[0], []).append(str(page))
         else:
@@ -251,8 +362,14 @@ def _group_pages(pages: list[Path]) -> tuple[list[tuple[str | None, list[str]]],
     return [(name.upper(), paths) for name, paths in groups], other
 
 
-def prefill(cache_path: Path, pages: list[Path], jobs: int, timeout: int = 900) -> dict[str, float]:
-    """Execute the pages missing from the jupyter-cache, ``jobs`` chapters at a time, and store them."""
+def prefill(
+    cache_path: Path, pages: list[Path], jobs: int, timeout: int = 900, book: Path = ROOT / "book"
+) -> dict[str, float]:
+    """Execute the pages missing from the jupyter-cache, ``jobs`` chapters at a time, and store them.
+
+    An interrupt (SIGINT, or SIGTERM, which raises KeyboardInterrupt here) stops the workers
+    and their kernels and re-raises; what was stored before it stays valid.
+    """
     from jupyter_cache import get_cache
     from jupyter_cache.base import CacheBundleIn
 
@@ -269,7 +386,7 @@ def prefill(cache_path: Path, pages: list[Path], jobs: int, timeout: int = 900) 
     if not todo:
         print(f"prefill: all {len(pages)} pages are in the cache", flush=True)
         return times
-    groups, other = _group_pages(todo)
+    groups, other = _group_pages(todo, book)
     papers = {"WF", "SP", "ATC10", "KZL"}
     jobs = max(1, min(jobs, len(groups) or 1))
     start = time.perf_counter()
@@ -280,19 +397,26 @@ def prefill(cache_path: Path, pages: list[Path], jobs: int, timeout: int = 900) 
                 times[path_str] = seconds
                 print(f"prefill: {seconds:7.1f} s  {path_str}", flush=True)
                 continue
-            rel = Path(path_str).relative_to(ROOT / "book").as_posix()
+            rel = Path(path_str).relative_to(book).as_posix()
             if err is not None:
                 print(f"prefill: {rel} FAILED ({err.splitlines()[0]}); Sphinx will re-run it", flush=True)
                 continue
             times[rel] = seconds
-            cache.cache_notebook_bundle(
-                CacheBundleIn(nb, path_str, data={"execution_seconds": seconds}),
-                check_validity=False,
-                overwrite=True,
-            )
+            # no interrupt between the cache's database record and its notebook file
+            blocked = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
+            try:
+                cache.cache_notebook_bundle(
+                    CacheBundleIn(nb, path_str, data={"execution_seconds": seconds}),
+                    check_validity=False,
+                    overwrite=True,
+                )
+            finally:
+                signal.pthread_sigmask(signal.SIG_SETMASK, blocked)
             print(f"prefill: {seconds:7.1f} s  {rel}", flush=True)
 
-    with ProcessPoolExecutor(max_workers=jobs) as pool:
+    previous = signal.signal(signal.SIGTERM, _raise_interrupt)
+    pool = ProcessPoolExecutor(max_workers=jobs, initializer=_worker_init)
+    try:
         futures = [
             pool.submit(_execute_group, name if name in papers else None, paths, timeout)
             for name, paths in groups
@@ -303,6 +427,14 @@ def prefill(cache_path: Path, pages: list[Path], jobs: int, timeout: int = 900) 
         # they run last, from the evaluation cache that the chapters filled
         if other:
             store(pool.submit(_execute_group, None, other, timeout).result())
+    except BaseException:
+        print("prefill: interrupted; stopping the workers and their kernels", flush=True)
+        _stop_pool(pool)
+        raise
+    else:
+        pool.shutdown(wait=True)
+    finally:
+        signal.signal(signal.SIGTERM, previous)
     print(
         f"prefill: {len(todo)} pages in {time.perf_counter() - start:.1f} s with {jobs} workers", flush=True
     )
@@ -359,9 +491,20 @@ def build(
         "--builder", builder, "--all", "-W", "-n", "--keep-going",
     ]  # fmt: skip
     print("+", " ".join(cmd), flush=True)
+    previous = signal.signal(signal.SIGTERM, _raise_interrupt)
+    proc = subprocess.Popen(cmd, cwd=ROOT)
     try:
-        return subprocess.call(cmd, cwd=ROOT)
+        return proc.wait()
+    except BaseException:  # SIGINT or SIGTERM: stop Sphinx (and its kernels) too
+        proc.terminate()
+        try:
+            proc.wait(5)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            proc.wait()
+        raise
     finally:
+        signal.signal(signal.SIGTERM, previous)
         if tmp is not None:
             Path(tmp.name).unlink(missing_ok=True)
 
@@ -376,7 +519,13 @@ def main() -> int:
         "--jobs", type=int, default=None, help="with --cache: pages executed at once (default: the cores)"
     )
     args = parser.parse_args()
-    return build(args.builder, args.only, args.out, args.cache, args.jobs)
+    if os.environ.get("NAVCORE_STOP_WITH_PARENT"):  # nox sets it: a killed nox stops the build
+        _set_parent_death_signal()
+    try:
+        return build(args.builder, args.only, args.out, args.cache, args.jobs)
+    except KeyboardInterrupt:
+        print("build_book: interrupted", file=sys.stderr, flush=True)
+        return 130
 
 
 if __name__ == "__main__":

@@ -149,7 +149,68 @@ def render(fig_id: str) -> Figure:
     fig = spec(fig_id).func()
     if not isinstance(fig, Figure):
         raise TypeError(f"figure function for {fig_id!r} must return a matplotlib Figure")
+    tidy_legends(fig)
     return fig
+
+
+_LEGEND_LOCS = (
+    "upper right",
+    "upper left",
+    "lower left",
+    "lower right",
+    "center right",
+    "center left",
+    "upper center",
+    "lower center",
+)
+
+
+def _covered(ax, legend) -> int:
+    """How many of the axes' data points, bar tops and text labels the legend's box covers."""
+    box = legend.get_window_extent().padded(2)
+    count = 0
+    for line in ax.get_lines():
+        if not line.get_visible() or len(line.get_xydata()) == 0:
+            continue
+        path = line.get_transform().transform_path(line.get_path())
+        count += int(path.intersects_bbox(box, filled=False))
+    for patch in ax.patches:
+        count += int(box.overlaps(patch.get_window_extent()))
+    for text in ax.texts:
+        count += int(box.overlaps(text.get_window_extent()))
+    for coll in ax.collections:
+        offsets = coll.get_offsets()
+        if len(offsets):
+            pts = coll.get_offset_transform().transform(offsets)
+            inside = (
+                (pts[:, 0] >= box.x0) & (pts[:, 0] <= box.x1) & (pts[:, 1] >= box.y0) & (pts[:, 1] <= box.y1)
+            )
+            count += int(inside.sum())
+    return count
+
+
+def tidy_legends(fig: Figure) -> None:
+    """The book's one rule for legends: never over the data.
+
+    A legend that covers data points, bars or value labels moves to the corner of its axes
+    that covers none; if every corner covers some, it goes below the axes.
+    """
+    legends = [(ax, ax.get_legend()) for ax in fig.axes if ax.get_legend() is not None]
+    if not legends:
+        return
+    fig.canvas.draw()
+    for ax, legend in legends:
+        if _covered(ax, legend) == 0:
+            continue
+        for loc in _LEGEND_LOCS:
+            legend.set_loc(loc)
+            legend.set_bbox_to_anchor(None)
+            fig.canvas.draw()
+            if _covered(ax, legend) == 0:
+                break
+        else:
+            legend.set_loc("upper center")
+            legend.set_bbox_to_anchor((0.5, -0.14), transform=ax.transAxes)
 
 
 def write(fig: Figure, stem: Path) -> list[Path]:

@@ -10,6 +10,7 @@ from __future__ import annotations
 import html
 import json
 import math
+import re
 from collections.abc import Iterable, Sequence
 from typing import Any
 
@@ -20,21 +21,33 @@ __all__ = [
     "STATUS_COLOURS",
     "CountsTable",
     "ErrataList",
+    "InteractiveLedger",
     "LedgerTable",
     "format_value",
     "json_dump",
+    "latex_table",
     "rows",
     "text_table",
 ]
 
+# light-mode row colours (the PDF uses them too); the HTML sets them by class
+# (``ledger-status-<verdict>``) so that the book's dark mode can override them
 STATUS_COLOURS = {
     "reproduced": "#d8f0d8",
     "consistent": "#e6f0fa",
-    "inconsistent": "#f6e7f7",
     "discrepant": "#fbe3d4",
+    "inconsistent": "#f6d6e8",
     "not-reproducible": "#eeeeee",
     "error": "#ffb3b3",
 }
+
+
+def _status_colour(status: str) -> str:
+    return STATUS_COLOURS.get(status, "#ffffff")
+
+
+def _status_class(status: str) -> str:
+    return "ledger-status-" + "".join(ch if ch.isalnum() or ch == "-" else "-" for ch in status)
 
 
 def format_value(value: Any, digits: int = 5) -> str:
@@ -137,11 +150,70 @@ def _tex_escape(text: str) -> str:
 
 
 def _tex_breakable(text: str) -> str:
-    """Escaped text that may break after ``-``, ``.`` and ``_`` (claim and erratum ids)."""
-    out = _tex_escape(text)
-    for ch in ("-", "."):
-        out = out.replace(ch, ch + r"\allowbreak{}")
-    return out.replace(r"\_", r"\_\allowbreak{}")
+    """Escaped text that may break after ``-``, ``.``, ``_`` and ``/``, and inside words longer
+    than ten letters (claim and erratum ids, locators with formulas): a narrow table column
+    never runs over."""
+    pieces = re.split(r"([-./_ ])", text)
+    out = []
+    for piece in pieces:
+        if len(piece) > 10:
+            piece = "\x00".join(piece[i : i + 7] for i in range(0, len(piece), 7))
+        out.append(piece)
+    escaped = _tex_escape("".join(out)).replace("\x00", r"\allowbreak{}")
+    for ch in ("-", ".", "/"):
+        escaped = escaped.replace(ch, ch + r"\allowbreak{}")
+    return escaped.replace(r"\_", r"\_\allowbreak{}")
+
+
+_NUMBER = re.compile(r"^[−+-]?(?:\d[\d,]*\.?\d*|\.\d+)(?:[eE][−+-]?\d+)?(?:\s*%)?$")
+
+
+def latex_table(head: Sequence[str], body: Sequence[Sequence[str]]) -> str:
+    """The book's one printed table: a ``longtable`` that fits the text width.
+
+    Column widths follow their content (the longest word of the heading, the longest cell);
+    numbers are right-aligned and never broken across lines; text cells wrap ragged-right
+    without hyphenation. Used for every pandas table and count table in the PDF.
+    """
+    ncols = len(head)
+    cells = [[str(c) for c in row] + [""] * (ncols - len(row)) for row in body]
+    numeric = [
+        all(_NUMBER.match(row[j].strip()) or not row[j].strip() for row in cells)
+        and any(row[j].strip() for row in cells)
+        for j in range(ncols)
+    ]
+
+    def need(j: int) -> float:
+        words = [1.25 * len(w) + 1 for w in str(head[j]).split()] or [1.0]  # bold headings
+        longest = max([len(row[j]) if numeric[j] else min(len(row[j]), 28) for row in cells] or [1])
+        return max(max(words), longest, 3)
+
+    widths = [need(j) for j in range(ncols)]
+    total = sum(widths)
+    natural = sum(max([1.25 * len(str(head[j]))] + [len(row[j]) for row in cells]) for j in range(ncols))
+    cols = "".join(
+        (r">{\raggedleft\arraybackslash}" if numeric[j] else r">{\raggedright\arraybackslash}")
+        + rf"p{{\dimexpr {widths[j] / total:.4f}\linewidth-2\tabcolsep\relax}}"
+        for j in range(ncols)
+    )
+    if natural <= 60:  # a narrow table keeps its natural width
+        cols = "".join("r" if numeric[j] else "l" for j in range(ncols))
+
+    def cell(text: str, j: int) -> str:
+        text = _tex_escape(text).replace("\u200b", r"\allowbreak{}")  # zero-width space: may break
+        return rf"\mbox{{{text}}}" if numeric[j] and text else text
+
+    header = " & ".join(rf"\textbf{{{_tex_escape(str(h))}}}" for h in head)
+    out = [
+        r"\begingroup\footnotesize\setlength{\tabcolsep}{4pt}\hyphenpenalty=10000\exhyphenpenalty=10000",
+        rf"\begin{{longtable}}{{{cols}}}",
+        rf"\hline {header} \\ \hline \endfirsthead",
+        rf"\hline {header} \\ \hline \endhead",
+        r"\hline \endfoot",
+    ]
+    out += [" & ".join(cell(c, j) for j, c in enumerate(row)) + r" \\" for row in cells]
+    out += [r"\end{longtable}", r"\endgroup"]
+    return "```{raw} latex\n" + "\n".join(out) + "\n```"
 
 
 def _plain_with_unit(value: str, unit: str) -> str:
@@ -196,7 +268,7 @@ class LedgerTable:
         out += [f"<th>{h}</th>" for h in head]
         out.append("</tr></thead><tbody>")
         for r in rows(self.evals):
-            colour = STATUS_COLOURS[r["status"]]
+            css = _status_class(r["status"])
             status = html.escape(r["status"])
             if r["check"] != "ok":
                 status += " <b>(check fails)</b>"
@@ -215,9 +287,7 @@ class LedgerTable:
                 _with_unit(r["reproduced"], r["unit"]),
                 status,
             ]
-            out.append(
-                f'<tr style="background:{colour}">' + "".join(f"<td>{c}</td>" for c in cells) + "</tr>"
-            )
+            out.append(f'<tr class="{css}">' + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
             if self.show_notes:
                 note = (
                     html.escape(r["note"])
@@ -225,8 +295,7 @@ class LedgerTable:
                     + html.escape(r["tolerance_reason"])
                 )
                 out.append(
-                    f'<tr class="ledger-note" style="background:{colour}"><td></td>'
-                    f'<td colspan="5"><small>{note}</small></td></tr>'
+                    f'<tr class="ledger-note {css}"><td></td><td colspan="5"><small>{note}</small></td></tr>'
                 )
         out.append("</tbody></table></div>")
         return "".join(out)
@@ -257,13 +326,13 @@ class LedgerTable:
             r"\hline \endfoot",
         ]
         for r in rows(self.evals):
-            colour = STATUS_COLOURS[r["status"]].lstrip("#").upper()
+            colour = _status_colour(r["status"]).lstrip("#").upper()
             status = _tex_escape(r["status"]) + ("" if r["check"] == "ok" else r" \textbf{(check fails)}")
             if r["erratum"]:
                 status += r"\newline{}\scriptsize " + _tex_breakable(r["erratum"])
             cells = [
                 r"\texttt{" + _tex_breakable(r["id"]) + "}",
-                _tex_escape(r["locator"]),
+                _tex_breakable(r["locator"]),
                 _tex_escape(r["quantity"]),
                 _tex_escape(_plain_with_unit(r["published"], r["unit"])),
                 _tex_escape(_plain_with_unit(r["reproduced"], r["unit"])),
@@ -309,35 +378,67 @@ class CountsTable:
 
     def _repr_html_(self) -> str:
         head, body = self._table()
-        out = ['<table class="ledger-counts"><thead><tr>']
-        out += [f"<th>{h}</th>" for h in head]
+        out = ['<div class="ledger-counts-wrap"><table class="ledger-counts"><thead><tr>']
+        out += [f"<th>{_breakable_heading(h)}</th>" for h in head]
         out.append("</tr></thead><tbody>")
         for r in body:
             out.append("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in r) + "</tr>")
-        out.append("</tbody></table>")
+        out.append("</tbody></table></div>")
         return "".join(out)
 
     def _repr_markdown_(self) -> str:
         head, body = self._table()
-        lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
-        lines += ["| " + " | ".join(r) + " |" for r in body]
-        return "\n".join(lines)
+        return latex_table(head, body)
+
+    def __repr__(self) -> str:
+        head, body = self._table()
+        return "\n".join("  ".join(row) for row in [head, *body])
+
+
+_SOFT_HYPHENS = {
+    "reproduced": "repro&shy;duced",
+    "consistent": "consis&shy;tent",
+    "inconsistent": "incon&shy;sistent",
+    "discrepant": "discrep&shy;ant",
+    "reproducible": "repro&shy;ducible",
+}
+
+
+def _breakable_heading(text: str) -> str:
+    """A column heading that may break in a narrow window: between words, after a hyphen,
+    and at a soft hyphen inside the verdict names."""
+    words = []
+    for word in text.split(" "):
+        parts = [_SOFT_HYPHENS.get(part, html.escape(part)) for part in word.split("-")]
+        words.append("-<wbr>".join(parts))
+    return "<br>".join(words)
 
 
 class ErrataList:
     """The errata as a list of entries (HTML with anchors; Markdown for the PDF)."""
 
-    def __init__(self, items: Sequence[Erratum] | None = None, *, root: str = "") -> None:
+    def __init__(
+        self, items: Sequence[Erratum] | None = None, *, root: str = "", titles: dict[str, str] | None = None
+    ) -> None:
         self.items = list(errata() if items is None else items)
         self.root = root
+        # page -> its title, for link texts (a reader should not see file paths)
+        self.titles = titles or {}
 
     def _repr_html_(self) -> str:
         out = []
         for e in self.items:
-            page = html.escape(e.discussed_in)
-            link = html.escape(f"{self.root}{e.discussed_in}.html")
-            where = f' Discussed in <a href="{link}">{page}</a>.' if e.discussed_in else ""
-            claims_html = ", ".join(f"<code>{html.escape(c)}</code>" for c in e.claims) or "none"
+            link = html.escape(f"{self.root}{e.discussed_in}.html#{e.id.lower()}")
+            title = html.escape(self.titles.get(e.discussed_in, "the chapter"))
+            where = f' Discussed in <a href="{link}">{title}</a>.' if e.discussed_in else ""
+            claims_html = (
+                ", ".join(
+                    f'<a href="{html.escape(self.root)}ledger.html#{html.escape(c.lower())}"><code>'
+                    f"{html.escape(c)}</code></a>"
+                    for c in e.claims
+                )
+                or "none"
+            )
             out.append(
                 f'<div class="erratum" id="{html.escape(e.id.lower())}">'
                 f"<h4>{html.escape(e.id)} — {html.escape(e.paper)}, {html.escape(e.locator)}</h4>"
@@ -351,10 +452,238 @@ class ErrataList:
     def _repr_markdown_(self) -> str:
         out = []
         for e in self.items:
-            claims_md = ", ".join(f"`{c}`" for c in e.claims) or "none"
+            claims_md = "; ".join(c.replace("_", "\\_") for c in e.claims) or "none"
             out.append(
                 f"**{e.id}** ({e.paper}, {e.locator})\n\n"
                 f"- *Printed:* {e.printed}\n- *The book finds:* {e.finding}\n"
                 f"- *Evidence:* {e.evidence}\n- *Claims affected:* {claims_md}\n"
             )
         return "\n".join(out) or "No errata registered."
+
+    def __repr__(self) -> str:
+        return "\n".join(f"{e.id}: {e.paper}, {e.locator}" for e in self.items) or "No errata registered."
+
+
+_LEDGER_JS = r"""
+(function () {
+  function ready(fn) {
+    if (document.readyState !== "loading") fn(); else document.addEventListener("DOMContentLoaded", fn);
+  }
+  function csvCell(v) {
+    if (v === null || v === undefined) return "";
+    if (typeof v === "object") v = JSON.stringify(v);
+    v = String(v);
+    return /[",\n]/.test(v) ? '"' + v.replace(/"/g, '""') + '"' : v;
+  }
+  function flatten(rec) {
+    var out = {};
+    Object.keys(rec).forEach(function (k) {
+      var v = rec[k];
+      if (v && typeof v === "object" && !Array.isArray(v)) {
+        Object.keys(v).forEach(function (j) { out[k + "." + j] = v[j]; });
+      } else out[k] = v;
+    });
+    return out;
+  }
+  function download(name, type, text) {
+    var a = document.createElement("a");
+    a.href = URL.createObjectURL(new Blob([text], {type: type}));
+    a.download = name;
+    document.body.appendChild(a);
+    a.click();
+    setTimeout(function () { URL.revokeObjectURL(a.href); a.remove(); }, 0);
+  }
+  ready(function () {
+    document.querySelectorAll("[data-ledger-app]").forEach(function (app) {
+      if (app.dataset.ready) return;
+      app.dataset.ready = "1";
+      var data = JSON.parse(app.querySelector("script.ledger-data").textContent);
+      var tbody = app.querySelector("tbody");
+      var rows = Array.prototype.slice.call(tbody.querySelectorAll("tr[data-index]"));
+      var search = app.querySelector("input[type=search]");
+      var selects = app.querySelectorAll("select[data-filter]");
+      var count = app.querySelector(".ledger-count");
+      var sortKey = null, sortDir = 1;
+      function visible() {
+        var q = (search.value || "").toLowerCase().trim();
+        var want = {};
+        selects.forEach(function (s) { if (s.value) want[s.dataset.filter] = s.value; });
+        return rows.filter(function (tr) {
+          var rec = data[+tr.dataset.index];
+          for (var k in want) if (String(rec[k]) !== want[k]) return false;
+          return !q || tr.textContent.toLowerCase().indexOf(q) >= 0;
+        });
+      }
+      function update() {
+        var keep = visible();
+        rows.forEach(function (tr) { tr.hidden = true; });
+        keep.forEach(function (tr) { tr.hidden = false; });
+        count.textContent = keep.length + " of " + rows.length + " claims";
+      }
+      function rank(v) {
+        return typeof v === "number" ? 0 : v === null || v === undefined || v === "" ? 2 : 1;
+      }
+      function value(tr, key) {
+        var v = data[+tr.dataset.index][key];
+        if (v && typeof v === "object") v = JSON.stringify(v);
+        return v;
+      }
+      app.querySelectorAll("th[data-key]").forEach(function (th) {
+        var button = th.querySelector("button");
+        button.addEventListener("click", function () {
+          var key = th.dataset.key;
+          sortDir = sortKey === key ? -sortDir : 1;
+          sortKey = key;
+          app.querySelectorAll("th[data-key]").forEach(function (o) { o.removeAttribute("aria-sort"); });
+          th.setAttribute("aria-sort", sortDir > 0 ? "ascending" : "descending");
+          rows.sort(function (a, b) {
+            var x = value(a, key), y = value(b, key);
+            var rx = rank(x), ry = rank(y);
+            if (rx !== ry) return rx - ry;  // numbers, then text and true/false, then blanks
+            if (rx === 0) return sortDir * (x - y);
+            if (rx === 2) return 0;
+            return sortDir * String(x).localeCompare(String(y), undefined, {numeric: true});
+          });
+          rows.forEach(function (tr) { tbody.appendChild(tr); });
+        });
+      });
+      search.addEventListener("input", update);
+      selects.forEach(function (s) { s.addEventListener("change", update); });
+      app.querySelectorAll("button[data-download]").forEach(function (b) {
+        b.addEventListener("click", function () {
+          var recs = visible().map(function (tr) { return data[+tr.dataset.index]; });
+          if (b.dataset.download === "json") {
+            download("ledger.json", "application/json", JSON.stringify(recs, null, 2) + "\n");
+          } else {
+            var flat = recs.map(flatten), keys = [];
+            flat.forEach(function (r) {
+              Object.keys(r).forEach(function (k) { if (keys.indexOf(k) < 0) keys.push(k); });
+            });
+            var lines = [keys.map(csvCell).join(",")].concat(flat.map(function (r) {
+              return keys.map(function (k) { return csvCell(r[k]); }).join(",");
+            }));
+            download("ledger.csv", "text/csv", lines.join("\n") + "\n");
+          }
+        });
+      });
+      app.classList.add("ledger-app-ready");
+      update();
+    });
+  });
+})();
+"""
+
+
+def _band(record: dict[str, Any], unit: str) -> str:
+    band = record.get("band")
+    if not band:
+        return ""
+    low, high = band
+    return f"{format_value(low)} – {format_value(high)}" + (
+        f" {unit}" if unit not in ("", "statement") else ""
+    )
+
+
+class InteractiveLedger:
+    """The whole ledger as one table that sorts, filters, searches and downloads, offline.
+
+    HTML: a plain table (readable without JavaScript) with a small inline script that sorts
+    by any column, filters by paper, verdict and (when the claims carry it) kind, searches the
+    text, and downloads the rows shown as CSV or JSON (the records of
+    :meth:`Evaluation.as_json`, so the download is the command line's JSON). Columns for the
+    optional record fields ``kind`` and ``band`` appear when any claim has them. Below 640 px
+    each row becomes a card. PDF: a compact table without notes.
+    """
+
+    def __init__(self, evals: Sequence[Evaluation], *, root: str = "") -> None:
+        self.evals = list(evals)
+        self.root = root
+        self.records = [e.as_json() for e in self.evals]
+
+    def _columns(self) -> list[tuple[str, str]]:
+        cols = [("id", "Claim"), ("paper", "Paper")]
+        if any(r.get("kind") for r in self.records):
+            cols.append(("kind", "Kind"))
+        cols += [("locator", "Locator"), ("quantity", "Quantity"), ("published", "Published")]
+        cols.append(("reproduced", "Reproduced"))
+        if any(r.get("band") for r in self.records):
+            cols.append(("band", "Band"))
+        cols.append(("status", "Verdict"))
+        return cols
+
+    def _select(self, key: str, label: str, values: list[str]) -> str:
+        options = "".join(f'<option value="{html.escape(v)}">{html.escape(v)}</option>' for v in values)
+        return (
+            f'<label>{html.escape(label)} <select data-filter="{key}">'
+            f'<option value="">all</option>{options}</select></label>'
+        )
+
+    def _repr_html_(self) -> str:
+        cols = self._columns()
+        papers = list(dict.fromkeys(r["paper"] for r in self.records))
+        order = {s: i for i, s in enumerate((*STATUSES, "inconsistent"))}
+        statuses = sorted({r["status"] for r in self.records}, key=lambda s: (order.get(s, 99), s))
+        controls = [
+            '<input type="search" placeholder="Search claims" aria-label="Search claims">',
+            self._select("paper", "Paper", papers),
+            self._select("status", "Verdict", statuses),
+        ]
+        if any(r.get("kind") for r in self.records):
+            kinds = sorted({r["kind"] for r in self.records if r.get("kind")})
+            controls.append(self._select("kind", "Kind", kinds))
+        controls += [
+            '<span class="ledger-count" aria-live="polite"></span>',
+            '<span class="ledger-downloads">Download the rows shown: '
+            '<button type="button" data-download="csv">CSV</button> '
+            '<button type="button" data-download="json">JSON</button></span>',
+        ]
+        head = "".join(
+            f'<th data-key="{k}" scope="col"><button type="button" title="sort">{html.escape(h)}'
+            "</button></th>"
+            for k, h in cols
+        )
+        body = []
+        for index, (rec, r) in enumerate(zip(self.records, rows(self.evals), strict=True)):
+            status = html.escape(r["status"]) + ("" if r["check"] == "ok" else " <b>(check fails)</b>")
+            if r["erratum"]:
+                anchor = html.escape(r["erratum"].lower())
+                status += f'<br><a href="{self.root}errata.html#{anchor}">{html.escape(r["erratum"])}</a>'
+            claim = f"<code>{html.escape(r['id'])}</code>"
+            if r["discussed_in"]:
+                target = html.escape(f"{self.root}{r['discussed_in']}.html#{r['id'].lower()}")
+                claim = f'<a href="{target}" title="where the book derives it">{claim}</a>'
+            note = (
+                html.escape(r["note"])
+                + f"<br><i>Tolerance:</i> {html.escape(r['tolerance'])}, {html.escape(r['tolerance_reason'])}"
+            )
+            cells = {
+                "id": claim,
+                "paper": html.escape(str(rec.get("paper", ""))),
+                "kind": html.escape(str(rec.get("kind") or "")),
+                "locator": html.escape(r["locator"]),
+                "quantity": f"{html.escape(r['quantity'])}<details><summary>note</summary>{note}</details>",
+                "published": _with_unit(r["published"], r["unit"]),
+                "reproduced": _with_unit(r["reproduced"], r["unit"]),
+                "band": html.escape(_band(rec, r["unit"])),
+                "status": status,
+            }
+            tds = "".join(f'<td data-label="{html.escape(h)}">{cells[k]}</td>' for k, h in cols)
+            body.append(
+                f'<tr id="{html.escape(r["id"].lower())}" data-index="{index}" '
+                f'class="{_status_class(r["status"])}">{tds}</tr>'
+            )
+        data = json.dumps(self.records, ensure_ascii=False, sort_keys=True).replace("</", "<\\/")
+        return (
+            '<div class="ledger-app" data-ledger-app>'
+            f'<div class="ledger-controls">{"".join(controls)}</div>'
+            f'<script type="application/json" class="ledger-data">{data}</script>'
+            '<div class="ledger-table-wrap"><table class="ledger-table ledger-interactive">'
+            f"<thead><tr>{head}</tr></thead><tbody>{''.join(body)}</tbody></table></div>"
+            f"<script>{_LEDGER_JS}</script></div>"
+        )
+
+    def _repr_markdown_(self) -> str:
+        return "```{raw} latex\n" + LedgerTable(self.evals, show_notes=False).latex() + "\n```"
+
+    def __repr__(self) -> str:
+        return text_table(self.evals)

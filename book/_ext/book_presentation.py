@@ -1,0 +1,255 @@
+"""What readers see of the notebooks: no build helpers in code cells, the papers' numbering.
+
+Build helpers. A code cell may call ``glue(...)``, ``book.show_figure(...)``,
+``book.setup()`` or ``%matplotlib``: bookkeeping that the page needs to run on its own but
+that teaches the reader nothing. Their statements are removed from the *displayed* source
+of every code cell (the downloaded notebook keeps them, so it still runs); a cell left with
+no source shows only its outputs, and a cell with neither disappears.
+
+Numbering. One scheme for figures, theorems and exercises, in HTML and in the PDF:
+
+- a figure named ``fig-<paper>-<n>[-<m>...]`` (or ``fig-<paper>-fig<n>``) reproduces the
+  paper's figure and carries its number: ``fig-atc10-2-1`` is Fig. 2.1;
+- a theorem titled ``Theorem <n> of <paper>...`` carries the paper's number ``<n>`` and
+  keeps the rest of the title;
+- everything the book adds is numbered N1, N2, ... per chapter (figures and theorems), so
+  that it cannot be mistaken for one of the paper's; exercises restart at 1 in each chapter.
+
+HTML takes these numbers from ``env.toc_fignumbers``, which this extension overwrites after
+Sphinx has assigned its sequential ones; the LaTeX writer gets ``\\thefigure`` set before
+each figure, and sphinx-proof and sphinx-exercise read ``env.toc_fignumbers`` in both.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+from docutils import nodes
+from sphinx.application import Sphinx
+from sphinx.environment import BuildEnvironment
+
+PAPERS = ("wf", "sp", "atc10", "kzl")
+FIGURE_RE = re.compile(r"^fig-(?:wf|sp|atc10|kzl)-(?:fig)?(\d+(?:-\d+)*)$")
+THEOREM_RE = re.compile(r"^Theorem\s+([A-Z]?\d+(?:\.\d+)*)\s+of\s+(.*)$")
+
+# statements that are bookkeeping for the build, not part of the model being shown
+HELPER_RE = re.compile(
+    r"^\s*(?:"
+    r"(?:\w+\s*=\s*)?(?:book\.)?show_figure\s*\("
+    r"|glue\s*\("
+    r"|book\.setup\s*\(\s*\)"
+    r"|%matplotlib\b"
+    r"|from\s+myst_nb\s+import\s+glue\s*$"
+    r")"
+)
+
+
+def paper_figure_number(name: str) -> str | None:
+    """The paper's figure number that a figure name carries, or None for the book's own."""
+    m = FIGURE_RE.match(name)
+    return m.group(1).replace("-", ".") if m else None
+
+
+def _statements(source: str) -> list[list[str]]:
+    """Split cell source into statements (lists of lines), following brackets and backslashes."""
+    out: list[list[str]] = []
+    current: list[str] = []
+    depth = 0
+    for line in source.splitlines():
+        current.append(line)
+        code = re.sub(r"(\"[^\"]*\"|'[^']*'|#.*$)", "", line)
+        depth += sum(code.count(c) for c in "([{") - sum(code.count(c) for c in ")]}")
+        if depth <= 0 and not line.rstrip().endswith("\\"):
+            out.append(current)
+            current, depth = [], 0
+    if current:
+        out.append(current)
+    return out
+
+
+def strip_helpers(source: str) -> str:
+    """The source of a code cell without its build-helper statements (and their imports)."""
+    kept = [s for s in _statements(source) if not HELPER_RE.match(s[0])]
+    text = "\n".join(line for s in kept for line in s)
+    rest = [s for s in kept if not re.match(r"^\s*from\s+navcore\s+import\s+book\s*$", s[0])]
+    rest_text = "\n".join(line for s in rest for line in s)
+    if not re.search(r"\bbook\.", rest_text):  # the import served only the helpers
+        text = rest_text
+    return text.strip("\n")
+
+
+def _hide_helpers(app: Sphinx, doctree: nodes.document) -> None:
+    for cell in list(doctree.findall(nodes.container)):
+        if "cell_input" not in cell.get("classes", []):
+            continue
+        for block in list(cell.findall(nodes.literal_block)):
+            source = block.astext()
+            stripped = strip_helpers(source)
+            if stripped == source.strip("\n"):
+                continue
+            if stripped.strip():
+                block.children = [nodes.Text(stripped)]
+                block.rawsource = stripped
+            else:
+                parent = cell.parent
+                cell.parent.remove(cell)
+                if parent is not None and "cell" in parent.get("classes", []):
+                    has_output = any(
+                        "cell_output" in c.get("classes", [])
+                        for c in parent.children
+                        if isinstance(c, nodes.Element)
+                    )
+                    if not has_output and parent.parent is not None:
+                        parent.parent.remove(parent)
+                break
+
+
+def _captions(app: Sphinx, doctree: nodes.document) -> None:
+    """A reproduced figure's caption does not repeat its number ("Fig. 2.1: Fig. 2.1 redrawn")."""
+    for figure in doctree.findall(nodes.figure):
+        number = next((paper_figure_number(i) for i in figure.get("ids", []) if paper_figure_number(i)), None)
+        caption = next(iter(figure.findall(nodes.caption)), None)
+        if number is None or caption is None:
+            continue
+        first = next(iter(caption.findall(nodes.Text)), None)
+        if first is None:
+            continue
+        text = first.astext()
+        m = re.match(rf"^(?:Fig\.|Figure)\s*{re.escape(number)}\b[\s:.,]*", text)
+        if m:
+            rest = text[m.end() :]
+            first.parent.replace(first, nodes.Text(rest[:1].upper() + rest[1:]))
+
+
+# --- anchors for errata -------------------------------------------------------------------------
+
+ERRATUM_RE = re.compile(r"\b(?:WF|SP|ATC10|KZL)-E[0-9.]*-[A-Za-z0-9.-]*[A-Za-z0-9]")
+
+
+def _erratum_anchors(app: Sphinx, doctree: nodes.document) -> None:
+    """Give each erratum discussed on a page an anchor (its id in lower case).
+
+    The admonition titled ``Erratum <id>`` gets it; an erratum only named in the text gets it
+    on the first paragraph that names it. The errata page links its "Discussed in" there.
+    """
+    done: set[str] = set()
+    for node in doctree.findall(nodes.admonition):
+        title = next(iter(node.findall(nodes.title)), None)
+        m = ERRATUM_RE.search(title.astext()) if title is not None else None
+        if m and title.astext().lstrip().startswith("Erratum") and m.group(0).lower() not in done:
+            node["ids"].append(m.group(0).lower())
+            done.add(m.group(0).lower())
+    for para in doctree.findall(nodes.paragraph):
+        for m in ERRATUM_RE.finditer(para.astext()):
+            anchor = m.group(0).lower()
+            if anchor not in done:
+                para["ids"].append(anchor)
+                done.add(anchor)
+
+
+# --- numbering ---------------------------------------------------------------------------------
+
+
+def _chapter(docname: str) -> str:
+    return docname.split("/")[0] if "/" in docname else ""
+
+
+def _collect_titles(app: Sphinx, doctree: nodes.document) -> None:
+    """Theorems titled 'Theorem 3.1 of ATC-10': remember 3.1, keep 'ATC-10' as the title."""
+    env = app.env
+    found: dict[str, str] = {}
+    for node in doctree.findall(nodes.Element):
+        if node.get("countertype") != "theorem" and node.get("realtype") != "theorem":
+            continue
+        title = next(iter(node.findall(nodes.title)), None)
+        if title is None or not node.get("ids"):
+            continue
+        text = title.astext()
+        # sphinx-proof's title node reads "Theorem #<n> (Title)"; match the parenthesised part
+        m = re.search(r"\((.*)\)\s*$", text, re.S)
+        inner = m.group(1) if m else text
+        tm = THEOREM_RE.match(inner.strip())
+        if tm is None:
+            continue
+        found[node["ids"][0]] = tm.group(1)
+        rest = re.sub(r"\s*\(([^()]*)\)$", r", \1", tm.group(2))  # no parentheses in parentheses
+        for text_node in list(title.findall(nodes.Text)):
+            if inner.strip() in text_node.astext():
+                new = text_node.astext().replace(inner.strip(), rest)
+                text_node.parent.replace(text_node, nodes.Text(new))
+    if not hasattr(env, "paper_theorem_numbers"):
+        env.paper_theorem_numbers = {}
+    env.paper_theorem_numbers[env.docname] = found
+
+
+def _purge(app: Sphinx, env: BuildEnvironment, docname: str) -> None:
+    getattr(env, "paper_theorem_numbers", {}).pop(docname, None)
+
+
+def _merge(app: Sphinx, env: BuildEnvironment, docnames: set[str], other: BuildEnvironment) -> None:
+    if not hasattr(env, "paper_theorem_numbers"):
+        env.paper_theorem_numbers = {}
+    env.paper_theorem_numbers.update(getattr(other, "paper_theorem_numbers", {}))
+
+
+def _renumber(app: Sphinx, env: BuildEnvironment) -> list[str]:
+    """Overwrite Sphinx's sequential numbers: the paper's where reproduced, N<k> per chapter."""
+    own: dict[tuple[str, str], int] = {}
+    theorems = getattr(env, "paper_theorem_numbers", {})
+    for docname, kinds in env.toc_fignumbers.items():
+        chapter = _chapter(docname)
+        for kind, numbers in kinds.items():
+            if kind in ("displaymath", "code-block", "table"):
+                continue  # equations: paper_equations; no numbered code or tables
+            for node_id in list(numbers):
+                if kind == "figure":
+                    paper = paper_figure_number(node_id)
+                elif kind == "theorem":
+                    paper = theorems.get(docname, {}).get(node_id)
+                else:
+                    paper = None
+                if paper is not None:
+                    numbers[node_id] = (paper,)
+                    continue
+                if kind == "solution":
+                    continue  # a solution refers to its exercise's number
+                key = (chapter, kind)
+                own[key] = own.get(key, 0) + 1
+                numbers[node_id] = (str(own[key]) if kind == "exercise" else f"N{own[key]}",)
+    return []
+
+
+def _latex_figure_numbers(app: Sphinx, doctree: nodes.document, docname: str) -> None:
+    """LaTeX numbers figures with its own counter: set ``\\thefigure`` before each figure."""
+    if app.builder.format != "latex":
+        return
+    for figure in list(doctree.findall(nodes.figure)):
+        ids = figure.get("ids") or []
+        if not ids:
+            continue
+        number = None
+        for doc in (docname, figure.get("docname")):
+            number = number or app.env.toc_fignumbers.get(doc or "", {}).get("figure", {}).get(ids[0])
+        if number is None:
+            for nums in app.env.toc_fignumbers.values():
+                if ids[0] in nums.get("figure", {}):
+                    number = nums["figure"][ids[0]]
+                    break
+        if number:
+            tag = ".".join(map(str, number))
+            raw = nodes.raw("", rf"\renewcommand{{\thefigure}}{{{tag}}}" + "\n", format="latex")
+            figure.parent.insert(figure.parent.index(figure), raw)
+
+
+def setup(app: Sphinx) -> dict[str, Any]:
+    app.connect("doctree-read", _hide_helpers)
+    app.connect("doctree-read", _erratum_anchors)
+    app.connect("doctree-read", _captions)
+    app.connect("doctree-read", _collect_titles)
+    app.connect("env-purge-doc", _purge)
+    app.connect("env-merge-info", _merge)
+    # after the toctree collector (priority 500) has assigned Sphinx's own numbers
+    app.connect("env-get-updated", _renumber, priority=900)
+    app.connect("doctree-resolved", _latex_figure_numbers)
+    return {"version": "1.0", "parallel_read_safe": True, "parallel_write_safe": True}
