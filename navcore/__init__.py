@@ -11,7 +11,7 @@ re-derives from
           with Bistatic SAR" (2009).
 
 Conventions (every module follows them unless its docstring says otherwise)
---------------------------------------------------------------------------
+---------------------------------------------------------------------------
 Units
     SI inside the library: metres, seconds, radians, m/s^2, rad/s, watts, hertz.
     Conversions from the papers' units (ft, nmi, deg/h, micro-g, ppm, dB ...) happen at the

@@ -28,7 +28,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import as_finite_array
+from navcore._validate import as_finite_array, check_public
 from navcore.units import WGS84_A, WGS84_B, WGS84_E2
 
 __all__ = [
@@ -309,3 +309,8 @@ def ned_to_ecef(r_n: ArrayLike, lat0: float, lon0: float, h0: float, *, deg: boo
     """ECEF coordinates (m) of NED point(s) relative to a geodetic origin."""
     origin = geodetic_to_ecef(lat0, lon0, h0, deg=deg)
     return as_finite_array("r_n", r_n) @ dcm_ecef_to_ned(lat0, lon0, deg=deg) + origin
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())

@@ -37,7 +37,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy import optimize, special, stats
 
 from navcore import units
-from navcore._validate import as_finite_array, require_positive
+from navcore._validate import as_finite_array, check_public, require_positive
 from navcore.detection.neyman_pearson import detection_index_from_jammer_ratio, log_false_alarm_probability
 from navcore.trace import implements
 
@@ -453,3 +453,8 @@ def jammer_erp_dbw(
     require_positive("pulse_energy_j", pulse_energy_j)
     require_positive("bandwidth_hz", bandwidth_hz)
     return np.asarray(jammer_ratio_db, float) + 10.0 * np.log10(pulse_energy_j * bandwidth_hz)
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals(), jammer_erp_dbw={"allow_inf": ("jammer_ratio_db",)})

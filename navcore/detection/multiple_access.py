@@ -29,7 +29,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy import special, stats
 
-from navcore._validate import require_integer, require_positive, require_probability
+from navcore._validate import check_public, require_integer, require_positive, require_probability
 from navcore.trace import implements
 
 __all__ = [
@@ -597,3 +597,8 @@ def psk_amplitude_samples(
         x = (1.0 - f) * corr(k) + f * corr(k + 1)
         out[start : start + e] = np.cos(rng.uniform(0, 2 * np.pi, e)) * x
     return out
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())

@@ -27,7 +27,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy import special
 
-from navcore._validate import require_positive
+from navcore._validate import check_public, require_positive
 from navcore.trace import implements
 
 __all__ = [
@@ -278,3 +278,8 @@ def exponent_from_gaussian_exponent_large_n(
     r = np.asarray(tau_over_alpha, dtype=float)
     g = np.asarray(exp_g, dtype=float)
     return g - g**2 * (1.0 - 6.0 * r) / (12.0 * n * r)
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())

@@ -15,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import require_integer, require_positive
+from navcore._validate import check_public, require_integer, require_positive
 from navcore.trace import implements
 
 __all__ = [
@@ -160,3 +160,8 @@ def cross_term_noise_power(
             raise ValueError("all codes must have the same length")
         total += piecewise_linear_inner(ri, rj, chip_s)
     return total / (2.0 * alpha_s)
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())

@@ -22,7 +22,7 @@ The filter accounts for unmodelled measurement errors by inflating its noise wit
 a-priori covariance, :math:`R_f = R_t + H_u P_{0,uu} H_u^T`. When both layouts coincide the
 two covariances are identical (the optimal filter).
 
-Measurements are supplied per time step as :class:`~navcore.estimation.Measurement`
+Measurements are supplied per time step as :class:`~navcore.estimation.covariance.Measurement`
 objects over the *truth* layout by schedule functions built here: tightly coupled
 pseudorange and range rate from each tracked channel, the loosely coupled receiver
 position every 10 s when at least four codes are tracked and the expected horizontal
@@ -51,7 +51,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import require_nonnegative, require_positive, require_symmetric_psd
+from navcore._validate import check_public, require_nonnegative, require_positive, require_symmetric_psd
 from navcore.estimation.covariance import Measurement
 from navcore.estimation.layout import StateLayout
 from navcore.gnss.constellation import Constellation
@@ -808,3 +808,8 @@ def best_geometry_channels(
     if best is None:
         raise ValueError("no satellite combination gives a usable geometry")
     return np.asarray(best, dtype=np.int64)
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())

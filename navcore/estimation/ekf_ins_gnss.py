@@ -31,7 +31,7 @@ from typing import Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import require_integer, require_positive
+from navcore._validate import check_public, require_integer, require_positive
 from navcore.estimation.kalman import symmetrize
 from navcore.frames import dcm_from_euler, quat_from_dcm, quat_from_rotvec
 from navcore.gnss.carrier_phase import DEFAULT_BASELINES_B, dd_covariance
@@ -165,7 +165,7 @@ def sequential_scalar_updates(x: Array, P: Array, y: Array, H: Array, r: Array) 
     -------
     x, P : arrays
         Posterior; equal to one batch update with ``R = diag(r)``
-        (:func:`navcore.estimation.kf_update`, Joseph form, is the batch oracle in the tests).
+        (:func:`navcore.estimation.kalman.kf_update`, Joseph form, is the batch oracle in the tests).
     """
     for j in range(y.shape[-1]):
         h = H[:, j, :]
@@ -549,3 +549,8 @@ def run_monte_carlo(
         att_sigma=sig_att,
         n_visible=np.asarray(sc.n_visible),
     )
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())

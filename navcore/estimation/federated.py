@@ -36,7 +36,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.linalg import solve_discrete_are
 
-from navcore._validate import as_finite_array, require_positive, require_symmetric_psd
+from navcore._validate import as_finite_array, check_public, require_positive, require_symmetric_psd
 from navcore.estimation.kalman import KalmanUpdate, kf_predict, kf_update, symmetrize
 from navcore.estimation.riccati import ScalarSteadyState, scalar_riccati_steady_state
 from navcore.frames import skew
@@ -168,7 +168,7 @@ def accelerometer_steady_state(Q_a: ArrayLike, R_L: ArrayLike, Ts: float) -> tup
     """Matrix steady state of WF Eq. (14): prior and posterior covariances.
 
     Solves the filter Riccati equation for ``Phi = I, Q = Q_a Ts^2, H = I, R = R_L`` with
-    :func:`scipy.linalg.solve_discrete_are`.
+    ``scipy.linalg.solve_discrete_are``.
     """
     require_positive("Ts", Ts)
     Q = require_symmetric_psd("Q_a", Q_a) * Ts**2
@@ -386,3 +386,8 @@ def minkowski_trace_bound(covariances: Sequence[ArrayLike | float | None]) -> fl
     infos = _informations(covariances, n)
     P_D = symmetrize(np.linalg.inv(symmetrize(sum(infos))))
     return float(sum(np.sqrt(np.trace(P_D @ Y @ P_D)) for Y in infos) ** 2)
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())

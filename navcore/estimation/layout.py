@@ -15,6 +15,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from navcore._validate import check_public
+
 __all__ = ["StateBlock", "StateLayout"]
 
 
@@ -101,3 +103,8 @@ class StateLayout:
     def table(self) -> list[tuple[str, int]]:
         """``[(block name, size), ...]`` in order."""
         return [(b.name, b.size) for b in self.blocks]
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())

@@ -26,7 +26,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.special import log_ndtr
 
-from navcore._validate import as_finite_array, require_integer, require_positive
+from navcore._validate import as_finite_array, check_public, require_integer, require_positive
 from navcore.trace import implements
 
 __all__ = [
@@ -116,3 +116,8 @@ def probability_outside_sigma_box(n_dims: int = 1, k: float = 1.0) -> float:
     require_positive("k", k)
     two_tail = 2.0 * math.exp(float(log_ndtr(-k)))
     return -math.expm1(n * math.log1p(-two_tail))
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())

@@ -45,7 +45,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.integrate import quad
 from scipy.linalg import expm
 
-from navcore._validate import as_finite_array, require_integer, require_positive
+from navcore._validate import as_finite_array, check_public, require_integer, require_positive
 from navcore.trace import implements
 from navcore.units import G0
 
@@ -67,7 +67,7 @@ Array = NDArray[np.float64]
 
 
 def ideal_correlation(tau_chips: ArrayLike) -> Array | float:
-    """Ideal code autocorrelation, 1 - |tau| inside one chip, 0 outside (SP Sec. 3.0).
+    """Ideal code autocorrelation, ``1 - |tau|`` inside one chip, 0 outside (SP Sec. 3.0).
 
     Examples
     --------
@@ -300,3 +300,8 @@ def simulate_impact_errors(
             P = IKH @ P @ IKH.T + r * np.outer(K, K)  # Joseph form
     err = (x[:, 0] - xh[:, 0]).reshape(runs, 2)
     return RunResult(err, float(math.sqrt(P[0, 0])), locked, seed)
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals(), simulate_impact_errors={"skip": ("fix_sigma_m",)})

@@ -35,7 +35,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import as_finite_array, require_integer, require_positive
+from navcore._validate import as_finite_array, check_public, require_integer, require_positive
 from navcore.frames import skew
 from navcore.inertial.error_model17 import ERROR_LAYOUT_17, code_doppler_rows
 from navcore.trace import implements
@@ -205,3 +205,8 @@ def dd_observation_rows_count(nu: int, n_baselines: int = 2) -> int:
     require_integer("nu", nu, minimum=1)
     los = np.tile([0.0, 0.0, -1.0], (nu, 1))
     return tc_dd_observation_matrix(los, np.eye(3), DEFAULT_BASELINES_B[:n_baselines]).shape[0]
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())

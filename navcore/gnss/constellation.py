@@ -23,7 +23,13 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import as_finite_array, require_in_range, require_integer, require_positive
+from navcore._validate import (
+    as_finite_array,
+    check_public,
+    require_in_range,
+    require_integer,
+    require_positive,
+)
 from navcore.frames import dcm_ecef_to_ned, geodetic_to_ecef
 from navcore.units import DEG, OMEGA_EARTH
 
@@ -181,3 +187,8 @@ def dop(u_ned: ArrayLike) -> dict[str, float]:
         "VDOP": float(np.sqrt(d[2])),
         "TDOP": float(np.sqrt(d[3])),
     }
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())

@@ -57,7 +57,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import as_finite_array, require_nonnegative, require_positive
+from navcore._validate import as_finite_array, check_public, require_nonnegative, require_positive
 from navcore.trace import implements
 
 __all__ = [
@@ -343,3 +343,8 @@ def outage_intervals(t_s: ArrayLike, available: ArrayLike) -> list[tuple[float, 
     starts = np.flatnonzero(d == 1)
     ends = np.flatnonzero(d == -1)
     return [(float(t[s]), float(t[min(e, t.size - 1)])) for s, e in zip(starts, ends, strict=True)]
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())

@@ -32,7 +32,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import as_finite_array
+from navcore._validate import as_finite_array, check_public
 
 __all__ = [
     "pseudorange",
@@ -87,3 +87,8 @@ def pseudorange_rate_jacobian(
     # d(u . dv)/dr = -(dv - (u.dv) u)^T / |d|
     proj = dv - np.einsum("ij,ij->i", u, dv)[:, None] * u
     return np.hstack([-proj / rng, -u, np.ones((u.shape[0], 1))])
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())

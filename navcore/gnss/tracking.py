@@ -51,7 +51,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import minimize_scalar
 
-from navcore._validate import as_finite_array, require_nonnegative, require_positive
+from navcore._validate import as_finite_array, check_public, require_nonnegative, require_positive
 from navcore.trace import implements
 
 __all__ = [
@@ -243,3 +243,8 @@ def third_order_noise_bandwidth_hz(omega0: float, a3: float = 2.0, b3: float = 2
     if a3 * b3 <= 1:
         raise ValueError("a3*b3 must exceed 1 for a stable loop")
     return omega0 * (a3 * b3**2 + a3**2 - b3) / (4.0 * (a3 * b3 - 1.0))
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())

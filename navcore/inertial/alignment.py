@@ -31,7 +31,7 @@ from typing import Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import as_finite_array
+from navcore._validate import as_finite_array, check_public
 from navcore.trace import implements
 
 __all__ = ["heading_from_velocity", "levelling", "levelling_as_printed"]
@@ -102,3 +102,8 @@ def heading_from_velocity(v_ned: ArrayLike) -> Array:
     if np.any(np.hypot(v[..., 0], v[..., 1]) == 0):
         raise ValueError("v_ned must have a non-zero horizontal component to define a heading")
     return np.arctan2(v[..., 1], v[..., 0])
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())

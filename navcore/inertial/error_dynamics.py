@@ -2,29 +2,29 @@ r"""INS error-state dynamics in a local-level (NED) frame, psi-angle form.
 
 State blocks (any subset, in any order, named as in :mod:`navcore.gnss.architectures`):
 
-=======================  ====  ================================================================
-block                    size  meaning
-=======================  ====  ================================================================
-``position``             3     NED position error (m)
-``velocity``             3     velocity error in the computed frame (m/s)
-``misalignment``         3     psi angle: computed-frame attitude error (rad)
-``gyro drift``           3     gyro bias, random constant (rad/s)
-``gyro scale factor``    3     (-)
-``gyro misalignment``    3     small-angle input-axis misalignment of the gyro triad (rad)
-``accel bias``           3     (m/s^2)
-``accel scale factor``   3     (-)
-``accel misalignment``   3     small-angle input-axis misalignment of the accelerometers (rad)
-``gravity``              3     gravity anomaly, first-order Gauss-Markov (m/s^2)
-``altimeter bias``       1     barometric altimeter bias, first-order Gauss-Markov (m)
-``clock bias``           1     user clock bias (m)
-``clock drift``          1     user clock drift (m/s)
-``clock g-sensitivity``  1     clock frequency sensitivity to specific force (m/s per g)
-``pseudorange bias``     n     one random-constant bias per receiver channel (m)
-``range-rate bias``      n     one random-constant bias per receiver channel (m/s)
-``doppler bias``         3     Doppler ground-speed sensor bias, body axes (m/s)
-``doppler scale factor`` 3     (-)
-``doppler misalignment`` 3     boresight misalignment (rad)
-=======================  ====  ================================================================
+========================  ====  ================================================================
+block                     size  meaning
+========================  ====  ================================================================
+``position``              3     NED position error (m)
+``velocity``              3     velocity error in the computed frame (m/s)
+``misalignment``          3     psi angle: computed-frame attitude error (rad)
+``gyro drift``            3     gyro bias, random constant (rad/s)
+``gyro scale factor``     3     (-)
+``gyro misalignment``     3     small-angle input-axis misalignment of the gyro triad (rad)
+``accel bias``            3     (m/s^2)
+``accel scale factor``    3     (-)
+``accel misalignment``    3     small-angle input-axis misalignment of the accelerometers (rad)
+``gravity``               3     gravity anomaly, first-order Gauss-Markov (m/s^2)
+``altimeter bias``        1     barometric altimeter bias, first-order Gauss-Markov (m)
+``clock bias``            1     user clock bias (m)
+``clock drift``           1     user clock drift (m/s)
+``clock g-sensitivity``   1     clock frequency sensitivity to specific force (m/s per g)
+``pseudorange bias``      n     one random-constant bias per receiver channel (m)
+``range-rate bias``       n     one random-constant bias per receiver channel (m/s)
+``doppler bias``          3     Doppler ground-speed sensor bias, body axes (m/s)
+``doppler scale factor``  3     (-)
+``doppler misalignment``  3     boresight misalignment (rad)
+========================  ====  ================================================================
 
 Dynamics (psi-angle form, Benson 1975):
 
@@ -64,7 +64,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import require_nonnegative, require_positive
+from navcore._validate import check_public, require_nonnegative, require_positive
 from navcore.estimation.layout import StateBlock, StateLayout
 from navcore.inertial.imu import ImuSpec
 from navcore.trace import implements
@@ -527,3 +527,8 @@ def levelling_alignment(
     P = _replace_attitude(P0, layout, ai, idx, T)
     P[ai, ai] += np.array([tilt_noise_sigma**2, tilt_noise_sigma**2, heading_sigma**2])
     return P
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())

@@ -36,7 +36,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import as_finite_array, require_positive
+from navcore._validate import as_finite_array, check_public, require_positive
 from navcore.frames import quat_from_rotvec, radii_of_curvature
 from navcore.trace import implements
 from navcore.units import G0, OMEGA_EARTH
@@ -263,3 +263,8 @@ def strapdown_interval(
     q_end = quat_multiply_batch(state.quat, pref[:, -1])
     q_end = q_end / np.linalg.norm(q_end, axis=-1, keepdims=True)
     return NavState(x_end, v_all[:, -1], q_end), f_n
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())

@@ -29,7 +29,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from navcore._validate import as_finite_array, require_integer, require_nonnegative, require_positive
+from navcore._validate import (
+    as_finite_array,
+    check_public,
+    require_integer,
+    require_nonnegative,
+    require_positive,
+)
 from navcore.trace import implements
 
 __all__ = [
@@ -302,3 +308,8 @@ def simulate_tracker(
     return TrackerMonteCarlo(
         clock_mse=clock_mse, position_mse=pos_mse, position_norm_variance=pos_var, n_runs=n_runs
     )
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())

@@ -48,7 +48,13 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import as_finite_array, require_integer, require_positive, require_symmetric_psd
+from navcore._validate import (
+    as_finite_array,
+    check_public,
+    require_integer,
+    require_positive,
+    require_symmetric_psd,
+)
 from navcore.trace import implements
 from navcore.units import C
 
@@ -362,3 +368,8 @@ def emitter_gauss_newton(
     r = m - doppler_frequency(psi[3], psi[:3], p, v)
     HtW = H.T if Wm is None else H.T @ Wm
     return GaussNewtonResult(psi, H, r, HtW @ r, iterations, converged)
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())
