@@ -101,8 +101,8 @@ def kf_predict(
 
     Notes
     -----
-    The time update of Kalman (1960), reference 1 of the module. The checks cost more than the arithmetic for a
-    small state (a 9-state step takes a few microseconds of matrix products and tens of
+    The time update of Kalman (1960), reference 1 of the module. The checks cost more than
+    the arithmetic for a small state (a 9-state step takes a few microseconds of matrix products and tens of
     microseconds of checks), so a filter loop checks its model once and then calls
     ``kf_predict(..., validate=False)`` and ``kf_update(..., validate=False)``.
 
@@ -174,8 +174,8 @@ def kf_update(
 
     Notes
     -----
-    ``P+ = (I-KH) P- (I-KH)^T + K R K^T`` (Joseph form, Bucy and Joseph 1968, reference 3 of the module): it stays
-    symmetric and positive semi-definite under round-off, unlike ``(I-KH) P-``.
+    ``P+ = (I-KH) P- (I-KH)^T + K R K^T`` (Joseph form, Bucy and Joseph 1968, reference 3 of
+    the module): it stays symmetric and positive semi-definite under round-off, unlike ``(I-KH) P-``.
 
     Examples
     --------

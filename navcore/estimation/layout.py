@@ -38,7 +38,7 @@ class StateBlock:
 
 @dataclass(frozen=True)
 class StateLayout:
-    """An ordered tuple of uniquely named :class:`StateBlock` objects."""
+    """An ordered tuple of uniquely named :class:`~navcore.estimation.layout.StateBlock` objects."""
 
     blocks: tuple[StateBlock, ...]
     name: str = ""
