@@ -65,7 +65,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from navcore._validate import check_public, require_nonnegative, require_positive
-from navcore.estimation.layout import StateBlock, StateLayout
+from navcore.estimation.layout import StateBlock, StateLayout, ins_block_name
 from navcore.inertial.imu import ImuSpec
 from navcore.trace import implements
 from navcore.units import G0, OMEGA_EARTH, WGS84_A
@@ -232,8 +232,7 @@ def ins_error_layout(*names: str, channels: int = 4, name: str = "") -> StateLay
     """
     blocks = []
     for n in names:
-        if n not in _UNITS:
-            raise ValueError(f"names must be among {sorted(_UNITS)}, got {n!r}")
+        n = ins_block_name(n, argument="names").value  # raises naming the closest block
         size = (
             channels
             if n in ("pseudorange bias", "range-rate bias")
