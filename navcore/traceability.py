@@ -170,7 +170,7 @@ def write_items_snapshot() -> Path:
     if missing:
         where = paper_text_path(missing[0])
         raise ValueError(f"the papers' texts are absent for {missing}: expected at {where}")
-    ITEMS_SNAPSHOT.write_text(json.dumps({p: sorted(v) for p, v in items.items()}, indent=1) + "\n")
+    ITEMS_SNAPSHOT.write_text(json.dumps({p: sorted(v or ()) for p, v in items.items()}, indent=1) + "\n")
     return ITEMS_SNAPSHOT
 
 

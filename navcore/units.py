@@ -183,8 +183,8 @@ def power_ratio_from_db(db: ArrayLike) -> np.ndarray | float:
 
     Examples
     --------
-    >>> power_ratio_from_db(-3.0)
-    0.501...
+    >>> round(power_ratio_from_db(-3.0), 4)
+    0.5012
     """
     return _from_db("db", db, 10.0)
 

@@ -18,6 +18,7 @@ and in either case finishes within a second. Any other exception fails the test.
 from __future__ import annotations
 
 import dataclasses
+import enum
 import importlib
 import inspect
 import math
@@ -31,28 +32,17 @@ import pytest
 from hypothesis import HealthCheck, Phase, given, settings
 from hypothesis import strategies as st
 
+from navcore import _validate
+
 SUBPACKAGES = ("units", "frames", "estimation", "inertial", "gnss", "detection", "location")
 
 #: Result records: containers a function returns, not inputs a user builds; not checked.
-RESULT_RECORDS = {
-    "CovarianceHistory",
-    "KalmanUpdate",
-    "ScalarSteadyState",
-    "GainHistory",
-    "TrackerMonteCarlo",
-    "GaussNewtonResult",
-    "MonteCarloResult",
-    "RunResult",
-    "CovarianceAnalysis",
-    "NuisanceLMMSE",
-    "TailBound",
-    "MechanizationTerms",
-    "ConstellationParameters",
-    "SatelliteGeometry",
-}
+RESULT_RECORDS = _validate.RESULT_RECORDS | {"KalmanUpdate", "ScalarSteadyState"}
 
 #: Functions whose documented value includes infinity (an unreachable threshold, a log of 0).
-MAY_RETURN_INF: set[str] = set()
+MAY_RETURN_INF: set[str] = {
+    "log1mexp",  # log(1 - exp(-a)) is -inf at a = 0 (the probability of an impossible event)
+}
 
 
 def _modules() -> list[Any]:
@@ -75,8 +65,12 @@ def public_callables() -> list[tuple[str, Any]]:
             obj = getattr(mod, name)
             if not callable(obj) or name in RESULT_RECORDS or id(obj) in seen:
                 continue
-            if inspect.isclass(obj) and (issubclass(obj, tuple) or not _parameters(obj)):
-                continue  # a NamedTuple record, or an enumeration / protocol
+            if inspect.isclass(obj) and (
+                issubclass(obj, tuple | enum.Enum)
+                or getattr(obj, "_is_protocol", False)
+                or not _parameters(obj)
+            ):
+                continue  # a NamedTuple record, an enumeration, a protocol
             seen[id(obj)] = (f"{obj.__module__}.{name}", obj)
     return sorted(seen.values(), key=lambda item: item[0])
 

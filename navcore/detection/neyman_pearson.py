@@ -26,7 +26,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy import special
 
-from navcore._validate import as_finite_array, check_public
+from navcore._validate import OPEN_PROBABILITY, as_finite_array, check_public
 from navcore.trace import implements
 
 __all__ = [
@@ -148,4 +148,4 @@ def detection_probability(threshold: ArrayLike, d: ArrayLike) -> FloatArray:
 
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
-check_public(globals())
+check_public(globals(), {"p_d": OPEN_PROBABILITY})

@@ -151,4 +151,4 @@ def propagate_covariance(
 
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
-check_public(globals())
+check_public(globals(), Measurement={"allow_inf": ("R",)})

@@ -32,7 +32,7 @@ References
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from typing import NamedTuple, cast
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -117,8 +117,9 @@ def kf_predict(
            [1. , 1.1]])
     """
     if not validate:  # float ndarrays checked by the caller; np.dot is the cheapest product
+        xa, Pa, F, Qa = cast(Array, x), cast(Array, P), cast(Array, Phi), cast(Array, Q)
         # P- is symmetric up to round-off here; kf_update symmetrizes what it returns
-        return np.dot(Phi, x), np.dot(np.dot(Phi, P), Phi.T) + Q  # type: ignore[arg-type,union-attr,operator]
+        return np.dot(F, xa), np.dot(np.dot(F, Pa), F.T) + Qa
     x = as_finite_array("x", x, ndim=1)
     n = x.size
     P = _matrix("P", P, (n, n))
@@ -185,20 +186,22 @@ def kf_update(
     (array([1., 0.]), array([0.5, 0. ]))
     """
     if not validate:  # float ndarrays checked by the caller
-        PHt = np.dot(P, H.T)  # type: ignore[arg-type,union-attr]
-        S = np.dot(H, PHt) + R  # type: ignore[arg-type,operator]
+        xa, Pa, za = cast(Array, x), cast(Array, P), cast(Array, z)
+        Ha, Ra = cast(Array, H), cast(Array, R)
+        PHt = np.dot(Pa, Ha.T)
+        S = np.dot(Ha, PHt) + Ra
         # K' = S^-1 (P H')' by Cholesky (LAPACK posv: S symmetric positive definite)
         _, Kt, info = lapack.dposv(S, PHt.T)
         if info != 0:
             raise ValueError("the innovation covariance H P H' + R is not positive definite")
-        K = Kt.T
-        innovation = z - np.dot(H, x)  # type: ignore[arg-type,operator]
-        I_KH = -np.dot(K, H)  # type: ignore[arg-type]
+        K: Array = Kt.T
+        innovation = za - np.dot(Ha, xa)
+        I_KH = -np.dot(K, Ha)
         I_KH.flat[:: I_KH.shape[0] + 1] += 1.0  # I - K H
-        P_post = np.dot(np.dot(I_KH, P), I_KH.T) + np.dot(np.dot(K, R), K.T)  # type: ignore[arg-type]
+        P_post = np.dot(np.dot(I_KH, Pa), I_KH.T) + np.dot(np.dot(K, Ra), K.T)
         P_post += P_post.T  # Joseph form, made exactly symmetric
         P_post *= 0.5
-        return KalmanUpdate(x + np.dot(K, innovation), P_post, K, innovation, S)  # type: ignore[operator]
+        return KalmanUpdate(xa + np.dot(K, innovation), P_post, K, innovation, S)
     x = as_finite_array("x", x, ndim=1)
     n = x.size
     P = _matrix("P", P, (n, n))
@@ -212,7 +215,7 @@ def kf_update(
     require_symmetric_psd("R", R, definite=True)
     innovation = z - H @ x
     S = symmetrize(H @ P @ H.T + R)
-    K = np.linalg.solve(S, H @ P.T).T  # K = P H' S^-1 (S symmetric)
+    K = cast(Array, np.linalg.solve(S, H @ P.T).T)  # K = P H' S^-1 (S symmetric)
     I_KH = np.eye(n) - K @ H
     P_post = symmetrize(I_KH @ P @ I_KH.T + K @ R @ K.T)  # Joseph form
     return KalmanUpdate(x + K @ innovation, P_post, K, innovation, S)

@@ -64,6 +64,8 @@ def pseudorange_rate(
 ) -> Array:
     """Pseudorange rates (m/s): line-of-sight relative velocity plus clock drift (m/s)."""
     d = _sat("r_sat", r_sat) - as_finite_array("r_user", r_user)
+    if np.any(np.linalg.norm(d, axis=-1) == 0.0):
+        raise ValueError("r_sat must differ from r_user (zero range has no line of sight)")
     u = d / np.linalg.norm(d, axis=-1, keepdims=True)
     dv = _sat("v_sat", v_sat) - as_finite_array("v_user", v_user)
     return np.einsum("ij,ij->i", u, dv) + clock_drift_mps

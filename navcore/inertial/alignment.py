@@ -84,6 +84,8 @@ def levelling_as_printed(a_b: ArrayLike) -> tuple[Array, Array]:
     ``phi = atan2(a_y, a_z)``. Correct only if ``a_b`` is minus the specific force."""
     a = as_finite_array("a_b", a_b)
     ax, ay, az = a[..., 0], a[..., 1], a[..., 2]
+    if np.any(np.hypot(ay, az) == 0.0):
+        raise ValueError("a_b must have a nonzero y-z component (pitch of +-90 deg is undefined here)")
     return np.arctan2(ay, az), np.arctan(-ax / np.hypot(ay, az))
 
 

@@ -60,11 +60,19 @@ References
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import check_public, require_nonnegative, require_positive
+from navcore._validate import (
+    COUNT0,
+    NONNEGATIVE,
+    POSITIVE,
+    check_public,
+    require_nonnegative,
+    require_positive,
+)
 from navcore.estimation.layout import StateBlock, StateLayout, ins_block_name
 from navcore.inertial.imu import ImuSpec
 from navcore.trace import implements
@@ -407,7 +415,7 @@ def initial_covariance(
     """
     s = np.zeros(layout.size)
     imu = sources.imu
-    values: dict[str, object] = {
+    values: dict[str, Any] = {
         "position": position_sigma,
         "velocity": velocity_sigma,
         "misalignment": attitude_sigma,
@@ -443,12 +451,16 @@ def _sensor_error_rates(layout: StateLayout, *, lat: float, C_bn: ArrayLike | No
     F = error_dynamics(layout, f_ned=(0.0, 0.0, -g), C_bn=C_bn, lat=lat, g=g)
     vv, a = layout.slice("velocity"), layout.slice("misalignment")
     sensor = [b.name for b in layout.blocks if b.name.startswith(("gyro", "accel"))]
-    idx = np.concatenate([np.arange(layout.size)[layout.slice(s)] for s in sensor]) if sensor else []
-    idx = np.asarray(idx, dtype=int)
+    idx: NDArray[np.intp] = np.asarray(
+        np.concatenate([np.arange(layout.size)[layout.slice(s)] for s in sensor]) if sensor else [],
+        dtype=np.intp,
+    )
     return np.arange(layout.size)[a], idx, F[vv][:, idx], -F[a][:, idx]
 
 
-def _replace_attitude(P0: ArrayLike, layout: StateLayout, ai: Array, idx: Array, T: Array) -> Array:
+def _replace_attitude(
+    P0: ArrayLike, layout: StateLayout, ai: NDArray[np.intp], idx: NDArray[np.intp], T: Array
+) -> Array:
     """Covariance with ``psi = T x_s`` (sensor states ``idx``) and the rest of ``P0`` kept."""
     P0 = np.array(P0, dtype=float)
     A = np.eye(layout.size)
@@ -530,4 +542,23 @@ def levelling_alignment(
 
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
-check_public(globals())
+check_public(
+    globals(),
+    {
+        "channels": COUNT0,
+        "g": POSITIVE,
+        "radius": POSITIVE,
+        "speed_mps": NONNEGATIVE,
+        "distance_constant_m": POSITIVE,
+        "sigma": NONNEGATIVE,
+        "drift_sigma": NONNEGATIVE,
+        "bias_sigma": NONNEGATIVE,
+        "drift_psd": NONNEGATIVE,
+        "bias_psd": NONNEGATIVE,
+        "g_sensitivity_sigma": NONNEGATIVE,
+        "heading_sigma": NONNEGATIVE,
+        "pseudorange_bias_sigma": NONNEGATIVE,
+        "range_rate_bias_sigma": NONNEGATIVE,
+        "tilt_noise_sigma": NONNEGATIVE,
+    },
+)

@@ -54,6 +54,9 @@ from scipy.optimize import brentq
 from scipy.special import erf
 
 from navcore._validate import (
+    COUNT,
+    NONNEGATIVE,
+    OPEN_PROBABILITY,
     as_finite_array,
     check_public,
     require_integer,
@@ -213,4 +216,4 @@ def sphere_radius_monte_carlo(cov: ArrayLike, p: float = 0.9, n: int = 200_000, 
 
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
-check_public(globals())
+check_public(globals(), {"n": COUNT, "p": OPEN_PROBABILITY, "radius": NONNEGATIVE})

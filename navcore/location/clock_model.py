@@ -25,7 +25,16 @@ import math
 import numpy as np
 from scipy import integrate, special
 
-from navcore._validate import check_public, require_in_range, require_integer, require_nonnegative
+from navcore._validate import (
+    COUNT,
+    NONNEGATIVE,
+    POSITIVE,
+    Range,
+    check_public,
+    require_in_range,
+    require_integer,
+    require_nonnegative,
+)
 from navcore.trace import implements
 
 __all__ = [
@@ -136,4 +145,15 @@ def sample_clock_paths(
 
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
-check_public(globals())
+check_public(
+    globals(),
+    {
+        "n_epochs": COUNT,
+        "n_paths": COUNT,
+        "rho_h": Range(0.0, 1.0),
+        "sigma0": NONNEGATIVE,
+        "sigma1": NONNEGATIVE,
+        "sigma2": NONNEGATIVE,
+        "tau_bar": POSITIVE,
+    },
+)

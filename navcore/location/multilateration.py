@@ -28,7 +28,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from navcore._validate import as_finite_array, check_public, require_in_range, require_positive
+from navcore._validate import (
+    POSITIVE,
+    Range,
+    as_finite_array,
+    check_public,
+    require_in_range,
+    require_positive,
+)
 from navcore.trace import implements
 
 __all__ = [
@@ -253,4 +260,13 @@ def most_widely_spaced_triplet(
 
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
-check_public(globals())
+check_public(
+    globals(),
+    {
+        "radius": POSITIVE,
+        "gm": POSITIVE,
+        "period_s": POSITIVE,
+        "trace": POSITIVE,
+        "cone_half_angle_deg": Range(0.0, 90.0, low_open=True),
+    },
+)
