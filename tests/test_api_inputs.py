@@ -23,6 +23,7 @@ import importlib
 import inspect
 import math
 import pkgutil
+import re
 import signal
 import time
 from typing import Any
@@ -183,3 +184,63 @@ def test_public_function_rejects_bad_input(name: str, func: Any, data: st.DataOb
         signal.signal(signal.SIGALRM, previous)
     elapsed = time.perf_counter() - start
     assert elapsed < 1.0, f"{name}({target.name}={label}) ran {elapsed:.2f} s"
+
+
+# The calls of issue 19 that returned a wrong value silently or raised an unclear error: each
+# now raises naming the parameter the caller passed.
+def _issue_cases() -> list[tuple[str, Any, type[Exception], str]]:
+    from navcore.detection.jamming import detection_lower_bound, jammer_ratio_threshold_db
+    from navcore.estimation.federated import minkowski_trace_bound
+    from navcore.estimation.kalman import kf_predict
+    from navcore.estimation.riccati import scalar_riccati_iterate
+    from navcore.gnss.acquisition import search_time
+    from navcore.gnss.constellation import dop
+    from navcore.gnss.tracking import third_order_noise_bandwidth_hz
+    from navcore.location.clock_tracking import gain_recursion, position_mse
+    from navcore.location.emitter import emitter_gauss_newton
+
+    eye = np.eye(3)
+    track = np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]])
+    return [
+        ("p_d=1.2", lambda: jammer_ratio_threshold_db("ambiguous", 0.01, 1.2, 10), ValueError, "p_d"),
+        ("search_time(-100, 4)", lambda: search_time(-100, 4), ValueError, "sigma_range_m"),
+        ("dop (5, 2)", lambda: dop(np.ones((5, 2))), ValueError, "u_ned"),
+        ("minkowski sizes", lambda: minkowski_trace_bound([np.eye(2), eye]), ValueError, "covariances[1]"),
+        ("Q = -I", lambda: kf_predict(np.zeros(3), eye, eye, -eye), ValueError, "Q"),
+        ("a3 = b3 = -2", lambda: third_order_noise_bandwidth_hz(1.0, a3=-2, b3=-2), ValueError, "a3"),
+        ("p_d = -0.5", lambda: detection_lower_bound(-0.5, 10), ValueError, "p_d"),
+        ("trace = -7.8", lambda: position_mse(50.0, -7.8, 1.0, 0.1), ValueError, "trace"),
+        ("steps = -1", lambda: scalar_riccati_iterate(1.0, 1.0, 1.0, 1.0, 1.0, -1), ValueError, "steps"),
+        ("n_steps = 1e8", lambda: gain_recursion(0.05, 50.0, 5.0, 1e8), TypeError, "n_steps"),
+        ("n_steps = 10**8", lambda: gain_recursion(0.05, 50.0, 5.0, 10**8), ValueError, "n_steps"),
+        (
+            "0 measurements",
+            lambda: emitter_gauss_newton([], np.zeros((0, 3)), np.zeros((0, 3)), [0, 0, 0, 1e9]),
+            ValueError,
+            "measurements",
+        ),
+        (
+            "2 identical measurements",
+            lambda: emitter_gauss_newton([1e9, 1e9], track, track, [0, 0, 0, 1e9]),
+            ValueError,
+            "measurements",
+        ),
+    ]
+
+
+@pytest.mark.parametrize(
+    ("label", "call", "error", "name"), _issue_cases(), ids=[c[0] for c in _issue_cases()]
+)
+def test_issue_19_cases_raise_naming_the_parameter(label, call, error, name):
+    with pytest.raises(error, match=re.escape(name)):
+        call()
+
+
+def test_gauss_newton_rank_deficient_track_is_not_converged():
+    """Repeated apertures give a zero step on a singular problem: not a solution."""
+    from navcore.location.emitter import emitter_gauss_newton
+
+    p = np.zeros((5, 3))
+    v = np.tile([100.0, 0.0, 0.0], (5, 1))
+    res = emitter_gauss_newton(np.full(5, 1e9), p, v, [1e4, 1e4, 0.0, 1e9])
+    assert not res.converged
