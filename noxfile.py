@@ -156,10 +156,11 @@ def figures(session: nox.Session) -> None:
 
 @nox.session
 def lint(session: nox.Session) -> None:
-    """ruff check and ruff format --check."""
-    session.install(next(line for line in LOCK.read_text().splitlines() if line.startswith("ruff==")))
+    """ruff check, ruff format --check, and mypy type-checking navcore (pyproject.toml [tool.mypy])."""
+    _install(session)  # mypy reads numpy's and matplotlib's own type information
     session.run("ruff", "check", "navcore", "tests", "tools", "book/_ext", "noxfile.py")
     session.run("ruff", "format", "--check", "navcore", "tests", "tools", "book/_ext", "noxfile.py")
+    session.run("mypy")
 
 
 @nox.session
@@ -178,10 +179,12 @@ def ledger(session: nox.Session) -> None:
 
 @nox.session
 def bench(session: nox.Session) -> None:
-    """Clean full HTML build, each chapter's execution, and the floor; write _build/bench.md.
+    """Clean full HTML build, each chapter's execution, the floor, and the library; write _build/bench.md.
 
-    ``nox -s bench -- --standalone --models`` also times every page alone in a fresh kernel and
-    every paper's ledger and figure in a fresh process.
+    The library numbers: the Kalman filter step against filterpy's (a ratio from one run) and
+    the covariance-analysis engine on a 104-minute mission. ``nox -s bench -- --library-only``
+    measures only those; ``-- --standalone --models`` also times every page alone in a fresh
+    kernel and every paper's ledger and figure in a fresh process.
     """
     _install(session)
     session.run("python", "tools/bench.py", *session.posargs)

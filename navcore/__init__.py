@@ -1,4 +1,4 @@
-"""navcore: the models of four navigation and surveillance papers, and their ledger.
+r"""navcore: the models of four navigation and surveillance papers, and their ledger.
 
 The package implements, by model rather than by paper, what the verification book
 re-derives from
@@ -11,12 +11,33 @@ re-derives from
           with Bistatic SAR" (2009).
 
 Conventions (every module follows them unless its docstring says otherwise)
---------------------------------------------------------------------------
+---------------------------------------------------------------------------
 Units
-    SI inside the library: metres, seconds, radians, m/s^2, rad/s, watts, hertz.
-    Conversions from the papers' units (ft, nmi, deg/h, micro-g, ppm, dB ...) happen at the
-    boundary with the factors of :mod:`navcore.units`; a parameter that is not SI says its
-    unit in its name (``sigma_a_ug``, ``bandwidth_hz``) or its docstring.
+    SI inside the library: metres, seconds, radians, m/s^2, rad/s, watts, hertz. Every
+    number a model function takes or returns is SI unless its name or docstring says
+    otherwise, and then it says the unit: in the name (``sigma_a_ug``, ``bandwidth_hz``,
+    ``cn0_dbhz``, ``mask_deg``) or in the parameter's docstring line.
+    Conversions from the papers' units (ft, nmi, deg/h, micro-g, ppm, dB ...) happen once, at
+    the boundary, with the factors and functions of :mod:`navcore.units` (``x * units.FT``
+    to go in, ``x / units.FT`` to come out; ``units.power_ratio_from_db``); a model never
+    converts silently. Sensor noise follows one convention: angle random walk and velocity
+    random walk are root PSDs in SI, rad/sqrt(s) and (m/s)/sqrt(s) (``ImuSpec``); a datasheet
+    ARW in deg/sqrt(h) or deg/h/sqrt(Hz) goes through ``units.DEG_PER_SQRT_H`` or
+    ``units.DEG_PER_H_PER_SQRT_HZ`` (and
+    :func:`navcore.inertial.imu.angle_random_walk_deg_per_sqrt_h` converts the one to the
+    other).
+Names
+    Parameters keep the paper's symbol where the model is the paper's equation (``x, P,
+    Phi, Q, H, R`` in the Kalman filter; ``a3, b3`` the third-order loop coefficients of
+    :math:`\omega_0 s^2` and :math:`\omega_0^2 s`, see
+    :func:`navcore.gnss.tracking.third_order_noise_bandwidth_hz`). Error-state blocks have
+    fixed names, enumerated by :class:`navcore.estimation.layout.InsBlock` ("gyro drift" is
+    the gyro bias); an unknown name raises and suggests the closest one.
+Options that remove part of a model
+    are explicit keywords, never defaults that change a result silently; where one exists it
+    is documented where it acts (``vertical_channel=False`` in
+    :func:`navcore.inertial.error_dynamics.error_dynamics` zeroes the rows and columns of the
+    vertical position and velocity errors, the horizontal-only model of an unaided INS).
 Frames
     ``e`` Earth-centred Earth-fixed (WGS-84), ``n`` local level North-East-Down, ``b`` body
     (x forward, y right, z down). ``C_bn`` (``mat_bn``) maps body coordinates to navigation
@@ -31,7 +52,13 @@ Randomness
     Only ``numpy.random.default_rng(seed)``; every stochastic function takes a ``seed`` or a
     ``Generator`` and results record the seed.
 Errors
-    Bad input raises ``ValueError`` naming the parameter and the constraint.
+    Bad input raises ``ValueError`` (a value out of range, a NaN, a wrong shape) or
+    ``TypeError`` (a wrong type) whose message names the parameter as the caller spelled it
+    and the constraint. Every public function of the models checks its arguments at entry
+    (``navcore._validate.checked``, from the annotations and a per-module table of
+    ranges); loops sized by an argument are bounded (``n_steps``, ``runs``... at most
+    ``navcore._validate.MAX_LOOP_COUNT``). Inner loops skip the checks where a function
+    offers ``validate=False`` (:func:`navcore.estimation.kalman.kf_predict`).
 
 Subpackages
 -----------

@@ -122,7 +122,7 @@ def ins_block_diagram(imu_rate_hz: float) -> Figure:
     c.text(((env.W[0] + att.E[0]) / 2, env.W[1] + 0.4), r"$\omega_{in}^n$")
     c.arrow(pos.N, env.E, "|-")
     c.text((pos.N[0] + 0.2, 1.0), "position,\nvelocity", ha="left")
-    c.d.add(flow.Arrow().at(pos.E).right(1.8))
+    c.d.add(flow.Arrow().at(pos.E).right(1.8))  # type: ignore[call-arg]  # schemdraw accepts a length
     c.text((pos.E[0] + 2.0, pos.E[1]), "position,\nvelocity,\nattitude", ha="left")
     c.text((imu.S[0], imu.S[1] - 0.5), f"increments at {imu_rate_hz:g} Hz", va="top")
     return c.figure(9.0)
@@ -178,7 +178,7 @@ def gnss_receiver_block_diagram(nav_rate_hz: float) -> Figure:
     c.d.add(flow.Line().at(knco.S).to(bottom))
     c.arrow(bottom, nav.S, "-|")
     c.text((17.0, bottom[1] - 0.45), "code phase (pseudorange)")
-    c.d.add(flow.Arrow().at(nav.E).right(1.8))
+    c.d.add(flow.Arrow().at(nav.E).right(1.8))  # type: ignore[call-arg]  # schemdraw accepts a length
     c.text((nav.E[0] + 2.0, nav.E[1]), "position,\nvelocity,\ntime", ha="left")
     return c.figure(9.5)
 
@@ -224,7 +224,7 @@ def tightly_coupled_feedback_diagram(n_states: int, imu_rate_hz: float, gnss_rat
     c.text((comp.S[0] - 0.2, -2.4), "bias and\nscale-factor\nestimates", ha="right")
     c.arrow((kf.N[0] - 1.2, kf.N[1]), (sd.S[0] - 1.2, sd.S[1]))
     c.text((sd.S[0] - 1.4, 0.1), "position, velocity,\nattitude corrections", ha="right")
-    c.d.add(flow.Arrow().at(sd.N).up(1.2))
+    c.d.add(flow.Arrow().at(sd.N).up(1.2))  # type: ignore[call-arg]  # schemdraw accepts a length
     c.text((sd.N[0], sd.N[1] + 1.5), "corrected position, velocity, attitude", va="bottom")
     return c.figure(9.5)
 
@@ -258,9 +258,9 @@ def matched_filter_receiver_diagram(signature_label: str = "i") -> Figure:
     dec = c.d.add(
         flow.Decision(w=3.8, h=2.0).at(smp).anchor("W").fill(FILL_FILTER).label(rf"$y_{i}(t) \geq \theta$ ?")
     )
-    c.d.add(flow.Arrow().at(dec.E).right(1.6))
+    c.d.add(flow.Arrow().at(dec.E).right(1.6))  # type: ignore[call-arg]  # schemdraw accepts a length
     c.text((dec.E[0] + 1.8, 0.0), f"signature ${i}$ received\n" + r"at $t - \tau$", ha="left")
-    c.d.add(flow.Arrow().at(dec.S).down(1.2))
+    c.d.add(flow.Arrow().at(dec.S).down(1.2))  # type: ignore[call-arg]  # schemdraw accepts a length
     c.text((dec.S[0], dec.S[1] - 1.4), "not received", va="top")
     c.text((dec.N[0], dec.N[1] + 0.3), "sample at $t$", va="bottom")
     return c.figure(9.5)

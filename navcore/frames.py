@@ -28,7 +28,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import as_finite_array
+from navcore._validate import as_finite_array, check_public
 from navcore.units import WGS84_A, WGS84_B, WGS84_E2
 
 __all__ = [
@@ -142,8 +142,8 @@ def quat_normalize(q: ArrayLike) -> Array:
     norm = np.linalg.norm(q, axis=-1, keepdims=True)
     if np.any(norm == 0):
         raise ValueError("q must be non-zero to normalise")
-    q = q / norm
-    return np.where(q[..., :1] < 0, -q, q)
+    unit = q / norm
+    return np.where(unit[..., :1] < 0, -unit, unit)
 
 
 def quat_from_rotvec(rotvec: ArrayLike) -> Array:
@@ -258,6 +258,10 @@ def geodetic_to_ecef(lat: ArrayLike, lon: ArrayLike, h: ArrayLike, *, deg: bool 
 def ecef_to_geodetic(r_e: ArrayLike, *, deg: bool = False) -> tuple[Array, Array, Array]:
     """Geodetic latitude, longitude, height of ECEF position(s) ``(..., 3)`` (Zhu 1994)."""
     r = as_finite_array("r_e", r_e)
+    if r.ndim == 0 or r.shape[-1] != 3:
+        raise ValueError(f"r_e must have shape (..., 3), got {r.shape}")
+    if np.any(np.linalg.norm(r, axis=-1) < 1e5):
+        raise ValueError("r_e must be at least 100 km from the Earth's centre (geodetic latitude undefined)")
     x, y, z = r[..., 0], r[..., 1], r[..., 2]
     a, b, e2 = WGS84_A, WGS84_B, WGS84_E2
     ep2 = (a * a - b * b) / (b * b)
@@ -309,3 +313,8 @@ def ned_to_ecef(r_n: ArrayLike, lat0: float, lon0: float, h0: float, *, deg: boo
     """ECEF coordinates (m) of NED point(s) relative to a geodetic origin."""
     origin = geodetic_to_ecef(lat0, lon0, h0, deg=deg)
     return as_finite_array("r_n", r_n) @ dcm_ecef_to_ned(lat0, lon0, deg=deg) + origin
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())

@@ -170,7 +170,7 @@ def write_items_snapshot() -> Path:
     if missing:
         where = paper_text_path(missing[0])
         raise ValueError(f"the papers' texts are absent for {missing}: expected at {where}")
-    data: dict[str, object] = {p: sorted(v) for p, v in items.items()}
+    data: dict[str, object] = {p: sorted(v or ()) for p, v in items.items()}
     if ITEMS_SNAPSHOT.exists():  # the printed-item inventory (navcore.coverage) is kept as it is
         old = json.loads(ITEMS_SNAPSHOT.read_text())
         if "printed" in old:
@@ -360,13 +360,26 @@ def _boxed(rows: list[str]) -> str:
     return "```{container} trace-table\n" + "\n".join(rows) + "\n```"
 
 
+def _function_link(module: str, qualname: str, text: str) -> str:
+    """``text`` as a link to the API reference when the function is public there, else code."""
+    import importlib
+
+    if module.startswith("navcore.papers") or "." in qualname:
+        return f"`{text}`"
+    try:
+        public = qualname in getattr(importlib.import_module(module), "__all__", ())
+    except ImportError:
+        public = False
+    return f"{{py:func}}`{text} <{module}.{qualname}>`" if public else f"`{text}`"
+
+
 def index_markdown(paper: str, index: Index | None = None) -> str:
     """The paper's items as a Markdown table: functions, tests, pages, claims."""
     index = index or build_index()
     rows = ["| Item | navcore | Tests | Book | Claims |", "|---|---|---|---|---|"]
     for e in index.by_paper(paper):
         item = f"Eq.\u00a0({e.ref.item})" if e.ref.is_equation else e.ref.item
-        funcs = "<br>".join(f"`{f.qualname}`" for f in e.functions) or "—"
+        funcs = "<br>".join(_function_link(f.module, f.qualname, f.qualname) for f in e.functions) or "—"
         tests = "<br>".join(t.removesuffix(".py") for t in sorted(e.tests)) or "—"
         pages = [_page_link(p, True) for p in e.displayed_on] + [_page_link(p, False) for p in e.mentioned_on]
         rows.append(f"| {item} | {funcs} | {tests} | {'<br>'.join(pages) or '—'} | {len(e.claims) or '—'} |")
@@ -379,5 +392,6 @@ def reverse_markdown(index: Index | None = None) -> str:
     rows = ["| navcore function | Implements |", "|---|---|"]
     for impl in index.implementations:
         refs = ", ".join(f"{r.paper} Eq. ({r.item})" if r.is_equation else str(r) for r in impl.refs)
-        rows.append(f"| `{impl.module.removeprefix('navcore.')}.{impl.qualname}` | {refs} |")
+        text = f"{impl.module.removeprefix('navcore.')}.{impl.qualname}"
+        rows.append(f"| {_function_link(impl.module, impl.qualname, text)} | {refs} |")
     return _boxed(rows)

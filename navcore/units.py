@@ -30,7 +30,7 @@ import math
 import numpy as np
 from numpy.typing import ArrayLike
 
-from navcore._validate import require_positive
+from navcore._validate import check_public, require_positive
 
 __all__ = [
     "ARCMIN",
@@ -51,6 +51,7 @@ __all__ = [
     "HOUR",
     "KM",
     "KNOT",
+    "MAX_DB",
     "MICRO_G",
     "MICRO_G_PER_SQRT_HZ",
     "MILE",
@@ -122,38 +123,179 @@ M_PER_S_PER_SQRT_H = 1.0 / math.sqrt(HOUR)  # velocity random walk -> m/s/sqrt(s
 
 
 # --- decibels --------------------------------------------------------------------------
+#: Largest magnitude (dB) a decibel value may have: 10**(3000/10) is near the largest double.
+MAX_DB = 3000.0
+
+
+def _from_db(name: str, db: ArrayLike, per_decade: float) -> np.ndarray | float:
+    arr = np.asarray(db, dtype=float)
+    if arr.size and np.max(np.abs(arr)) > MAX_DB:
+        raise ValueError(f"{name} must lie in [-{MAX_DB:g}, {MAX_DB:g}] dB (a finite ratio), got {db!r}")
+    out = np.power(10.0, arr / per_decade)
+    return float(out) if np.ndim(out) == 0 else out
+
+
 def db_from_power_ratio(ratio: ArrayLike) -> np.ndarray | float:
-    """Return ``10 log10(ratio)`` for a power ratio ``ratio > 0``."""
+    """Return ``10 log10(ratio)``, a power ratio in decibels.
+
+    Parameters
+    ----------
+    ratio : float or array_like
+        Power ratio (dimensionless), ``> 0``.
+
+    Returns
+    -------
+    float or ndarray
+        The ratio in dB (a float for scalar input).
+
+    Raises
+    ------
+    ValueError
+        If ``ratio`` is not positive and finite.
+
+    Examples
+    --------
+    >>> db_from_power_ratio(100.0)
+    20.0
+    """
     require_positive("ratio", ratio)
     out = 10.0 * np.log10(np.asarray(ratio, dtype=float))
     return float(out) if np.ndim(out) == 0 else out
 
 
 def power_ratio_from_db(db: ArrayLike) -> np.ndarray | float:
-    """Return the power ratio ``10**(db/10)``."""
-    out = np.power(10.0, np.asarray(db, dtype=float) / 10.0)
-    return float(out) if np.ndim(out) == 0 else out
+    """Return the power ratio ``10**(db/10)``.
+
+    Parameters
+    ----------
+    db : float or array_like
+        Power ratio in dB, finite, of magnitude at most :data:`MAX_DB`.
+
+    Returns
+    -------
+    float or ndarray
+        The power ratio (dimensionless; a float for scalar input).
+
+    Raises
+    ------
+    ValueError
+        If ``db`` is not finite or its magnitude exceeds :data:`MAX_DB`.
+
+    Examples
+    --------
+    >>> round(power_ratio_from_db(-3.0), 4)
+    0.5012
+    """
+    return _from_db("db", db, 10.0)
 
 
 def db_from_amplitude_ratio(ratio: ArrayLike) -> np.ndarray | float:
-    """Return ``20 log10(ratio)`` for an amplitude (root-power) ratio ``ratio > 0``."""
+    """Return ``20 log10(ratio)``, an amplitude (root-power) ratio in decibels.
+
+    Parameters
+    ----------
+    ratio : float or array_like
+        Amplitude ratio (dimensionless), ``> 0``.
+
+    Returns
+    -------
+    float or ndarray
+        The ratio in dB.
+
+    Raises
+    ------
+    ValueError
+        If ``ratio`` is not positive and finite.
+
+    Examples
+    --------
+    >>> db_from_amplitude_ratio(10.0)
+    20.0
+    """
     require_positive("ratio", ratio)
     out = 20.0 * np.log10(np.asarray(ratio, dtype=float))
     return float(out) if np.ndim(out) == 0 else out
 
 
 def amplitude_ratio_from_db(db: ArrayLike) -> np.ndarray | float:
-    """Return the amplitude ratio ``10**(db/20)``."""
-    out = np.power(10.0, np.asarray(db, dtype=float) / 20.0)
-    return float(out) if np.ndim(out) == 0 else out
+    """Return the amplitude ratio ``10**(db/20)``.
+
+    Parameters
+    ----------
+    db : float or array_like
+        Amplitude ratio in dB, finite, of magnitude at most :data:`MAX_DB`.
+
+    Returns
+    -------
+    float or ndarray
+        The amplitude ratio (dimensionless).
+
+    Raises
+    ------
+    ValueError
+        If ``db`` is not finite or its magnitude exceeds :data:`MAX_DB`.
+
+    Examples
+    --------
+    >>> amplitude_ratio_from_db(20.0)
+    10.0
+    """
+    return _from_db("db", db, 20.0)
 
 
 def dbw_from_watts(power_w: ArrayLike) -> np.ndarray | float:
-    """Return a power in dBW (decibels relative to 1 W) for ``power_w > 0`` watts."""
+    """Return a power in dBW (decibels relative to 1 W).
+
+    Parameters
+    ----------
+    power_w : float or array_like
+        Power (W), ``> 0``.
+
+    Returns
+    -------
+    float or ndarray
+        The power in dBW.
+
+    Raises
+    ------
+    ValueError
+        If ``power_w`` is not positive and finite.
+
+    Examples
+    --------
+    >>> dbw_from_watts(1000.0)
+    30.0
+    """
     require_positive("power_w", power_w)
     return db_from_power_ratio(power_w)
 
 
 def watts_from_dbw(power_dbw: ArrayLike) -> np.ndarray | float:
-    """Return a power in watts from dBW."""
-    return power_ratio_from_db(power_dbw)
+    """Return a power in watts from dBW.
+
+    Parameters
+    ----------
+    power_dbw : float or array_like
+        Power in dBW, finite, of magnitude at most :data:`MAX_DB`.
+
+    Returns
+    -------
+    float or ndarray
+        The power (W).
+
+    Raises
+    ------
+    ValueError
+        If ``power_dbw`` is not finite or its magnitude exceeds :data:`MAX_DB`.
+
+    Examples
+    --------
+    >>> watts_from_dbw(30.0)
+    1000.0
+    """
+    return _from_db("power_dbw", power_dbw, 10.0)
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())

@@ -16,6 +16,12 @@ Usage: ``python tools/bench.py [--jobs N] [--standalone] [--models] [--out _buil
 4. ``--standalone`` also executes every page alone in a fresh kernel, cold, as a reader who
    downloads one notebook would; ``--models`` times each paper's ledger evaluation and each
    figure in a fresh process.
+5. **Library.** Always (and alone with ``--library-only``, which skips the book builds): the
+   Kalman filter step, a 9-state, 3-measurement predict + update with navcore's fast path
+   (``kf_predict``/``kf_update`` with ``validate=False`` after one checked call) against
+   filterpy's ``KalmanFilter`` on the same problem, interleaved in one run and reported as a
+   ratio (aim: at most 1.0); and the covariance-analysis engine on the 104-minute SP
+   sequential-outage mission (five systems, 1-s steps), in a fresh process.
 
 The table is printed and written to ``_build/bench.md``; the aims of issue 10 (full build
 under 5 minutes on 2 cores, within 1.5x of the floor) are reported, never asserted.
@@ -164,6 +170,95 @@ def ledger_times() -> list[str]:
     return rows
 
 
+FILTER_STEP_CODE = """
+import timeit
+import numpy as np
+from filterpy.kalman import KalmanFilter
+from navcore.estimation import kf_predict, kf_update
+
+n, m = 9, 3
+rng = np.random.default_rng(0)
+F = np.eye(n) + 0.01 * rng.standard_normal((n, n))
+Q = 0.01 * np.eye(n)
+H = rng.standard_normal((m, n))
+R = np.eye(m)
+zs = rng.standard_normal((256, m))
+
+kf = KalmanFilter(dim_x=n, dim_z=m)
+kf.F, kf.Q, kf.H, kf.R, kf.P, kf.x = F, Q, H, R, np.eye(n), np.zeros((n, 1))
+
+def filterpy_steps():
+    for z in zs:
+        kf.predict()
+        kf.update(z)
+
+def navcore_steps():
+    # checked once at the boundary (shapes, finiteness, P, Q, R), then the fast path
+    x, P = kf_predict(np.zeros(n), np.eye(n), F, Q)
+    x, P = kf_update(x, P, zs[0], H, R)[:2]
+    for z in zs:
+        x, P = kf_predict(x, P, F, Q, validate=False)
+        x, P = kf_update(x, P, z, H, R, validate=False)[:2]
+
+def checked_steps():
+    x, P = np.zeros(n), np.eye(n)
+    for z in zs[:32]:
+        x, P = kf_predict(x, P, F, Q)
+        x, P = kf_update(x, P, z, H, R)[:2]
+
+best = {"filterpy": 1e9, "navcore": 1e9, "checked": 1e9}
+for _ in range(7):  # interleaved, so that both see the same machine load
+    best["filterpy"] = min(best["filterpy"], timeit.timeit(filterpy_steps, number=4) / (4 * len(zs)))
+    best["navcore"] = min(best["navcore"], timeit.timeit(navcore_steps, number=4) / (4 * len(zs)))
+    best["checked"] = min(best["checked"], timeit.timeit(checked_steps, number=1) / 32)
+print(best["filterpy"], best["navcore"], best["checked"])
+"""
+
+MISSION_CODE = """
+import os, time
+os.environ["NAVCORE_CACHE"] = "off"
+os.environ["NAVCORE_NO_DISK_CACHE"] = "1"
+from navcore.papers import sp_missions_scenarios as s
+start = time.perf_counter()
+runs = s.sequential_outage(False)
+elapsed = time.perf_counter() - start
+t = next(iter(runs.values())).t
+print(elapsed, float(t[-1] - t[0]) / 60.0, len(runs))
+"""
+
+
+def library_benchmarks() -> tuple[list[str], bool]:
+    """The filter step against filterpy (one run, interleaved) and a 104-min covariance mission."""
+    lines = ["", "| library | value |", "|---|---:|"]
+    proc = subprocess.run([sys.executable, "-c", FILTER_STEP_CODE], capture_output=True, text=True, cwd=ROOT)
+    ok = proc.returncode == 0
+    if ok:
+        filterpy_s, navcore_s, checked_s = map(float, proc.stdout.split())
+        ratio = navcore_s / filterpy_s
+        lines += [
+            f"| filter step (9 states, 3 measurements), filterpy KalmanFilter, µs | {filterpy_s * 1e6:.1f} |",
+            f"| filter step, navcore fast path (validate=False), µs | {navcore_s * 1e6:.1f} |",
+            f"| filter step, navcore checked on every call, µs | {checked_s * 1e6:.1f} |",
+            f"| ratio navcore fast path / filterpy, same run (aim: at most 1.0) | {ratio:.2f} |",
+        ]
+        us = f"navcore {navcore_s * 1e6:.1f} us, filterpy {filterpy_s * 1e6:.1f} us"
+        print(f"filter step: {us}, ratio {ratio:.2f}")
+    else:
+        lines.append(f"| filter step benchmark | failed: {proc.stderr.strip().splitlines()[-1:]} |")
+    proc = subprocess.run([sys.executable, "-c", MISSION_CODE], capture_output=True, text=True, cwd=ROOT)
+    if proc.returncode == 0:
+        seconds, minutes, systems = proc.stdout.split()
+        lines.append(
+            f"| covariance analysis, SP sequential-outage mission ({float(minutes):.0f} min, "
+            f"{systems} systems, 1-s steps), s | {float(seconds):.1f} |"
+        )
+        print(f"covariance analysis: {float(minutes):.0f}-min mission in {float(seconds):.1f} s")
+    else:
+        ok = False
+        lines.append(f"| covariance-analysis mission | failed: {proc.stderr.strip().splitlines()[-1:]} |")
+    return lines, ok
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--jobs", type=int, default=None, help="workers for the build (default: the cores)")
@@ -174,6 +269,9 @@ def main() -> int:
         action="store_true",
         help="only time the whole ledger, uncached and cached (no book build)",
     )
+    parser.add_argument(
+        "--library-only", action="store_true", help="only the library numbers (filter step, mission)"
+    )
     parser.add_argument("--out", type=Path, default=ROOT / "_build" / "bench.md")
     args = parser.parse_args()
     if args.ledger:
@@ -182,6 +280,13 @@ def main() -> int:
         args.out.write_text("\n".join(lines) + "\n")
         print("\n".join(lines))
         return 0
+    if args.library_only:
+        lines, ok = library_benchmarks()
+        text = "# Library benchmark\n" + "\n".join(lines) + "\n"
+        args.out.parent.mkdir(parents=True, exist_ok=True)
+        args.out.write_text(text)
+        print(text)
+        return 0 if ok else 1
     cores = os.cpu_count() or 1
     lines = [
         f"# Build benchmark ({cores} cores, jobs = {args.jobs or cores})",
@@ -246,6 +351,9 @@ def main() -> int:
             seconds, status = time_subprocess(f"from navcore import figures; figures.render('{fig_id}')")
             ok &= status == "ok"
             lines.append(f"| figure {fig_id} | {seconds:.1f} | {status} |")
+    library, library_ok = library_benchmarks()
+    lines += library
+    ok &= library_ok
     args.out.parent.mkdir(parents=True, exist_ok=True)
     args.out.write_text("\n".join(lines) + "\n")
     print("\n".join(lines))

@@ -49,10 +49,19 @@ PARTS = {
     "sp": "Schmidt & Phillips",
     "atc10": "ATC-10",
     "kzl": "Knedlik, Zhou & Loffeld",
+    "reference": "Reference",
 }
+
+REFERENCE_PAGES = ("units", "frames", "estimation", "inertial", "gnss", "detection", "location", "ledger")
 
 
 def subset_toc(paper: str) -> str:
+    if paper == "reference":  # the API reference alone: no notebook executes
+        pages = "".join(f"          - file: reference/{name}\n" for name in REFERENCE_PAGES)
+        return (
+            "format: jb-book\nroot: reference/index\nparts:\n"
+            "  - caption: Reference\n    chapters:\n" + pages.replace("          - file", "      - file")
+        )
     return (
         "format: jb-book\nroot: intro\nparts:\n"
         "  - caption: Introduction\n    chapters:\n      - file: about\n"
@@ -512,7 +521,11 @@ def build(
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--builder", default="html", choices=["html", "pdflatex", "latex", "linkcheck"])
-    parser.add_argument("--only", default=None, help="build only one paper's chapter: wf, sp, atc10, kzl")
+    parser.add_argument(
+        "--only",
+        default=None,
+        help="build one paper's chapter (wf, sp, atc10, kzl) or the API reference (reference)",
+    )
     parser.add_argument("--out", type=Path, default=None, help="output folder (default: the repository)")
     parser.add_argument("--cache", action="store_true", help="execute through a source-keyed jupyter-cache")
     parser.add_argument(

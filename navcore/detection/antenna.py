@@ -12,7 +12,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from navcore import units
-from navcore._validate import as_finite_array, require_positive
+from navcore._validate import POSITIVE, Range, as_finite_array, check_public, require_positive
 from navcore.trace import implements
 
 __all__ = [
@@ -89,3 +89,17 @@ def rf_power_dbw(erp_dbw: ArrayLike, gain_db: ArrayLike) -> FloatArray:
     15.0
     """
     return as_finite_array("erp_dbw", erp_dbw) - as_finite_array("gain_db", gain_db)
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(
+    globals(),
+    {
+        "diameter_m": POSITIVE,
+        "efficiency": Range(0.0, 1.0, low_open=True),
+        "frequency_hz": POSITIVE,
+        "gain": POSITIVE,
+        "factor_deg": POSITIVE,
+    },
+)

@@ -37,7 +37,15 @@ from numpy.typing import ArrayLike, NDArray
 from scipy import optimize, special, stats
 
 from navcore import units
-from navcore._validate import as_finite_array, require_positive
+from navcore._validate import (
+    COUNT,
+    OPEN_PROBABILITY,
+    POSITIVE,
+    Range,
+    as_finite_array,
+    check_public,
+    require_positive,
+)
 from navcore.detection.neyman_pearson import detection_index_from_jammer_ratio, log_false_alarm_probability
 from navcore.trace import implements
 
@@ -409,6 +417,8 @@ def jammer_ratio_threshold_db(
         approaches its supremum ``1 - N/N_T``, so use a fraction of that).
     p_d, k, t, geometry
         As in :func:`log_false_location_bound`.
+    lower_db, upper_db : float
+        The bracket (dB) searched for the threshold.
 
     Returns
     -------
@@ -450,3 +460,26 @@ def jammer_erp_dbw(jammer_ratio_db: ArrayLike, pulse_energy_j: float, bandwidth_
     require_positive("pulse_energy_j", pulse_energy_j)
     require_positive("bandwidth_hz", bandwidth_hz)
     return np.asarray(jammer_ratio_db, float) + 10.0 * np.log10(pulse_energy_j * bandwidth_hz)
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(
+    globals(),
+    {
+        "p_d": OPEN_PROBABILITY,
+        "p_dl": OPEN_PROBABILITY,
+        "q": OPEN_PROBABILITY,
+        "t": Range(0.0, 1.0, high_open=True),
+        "k": COUNT,
+        "level": POSITIVE,
+        "n": POSITIVE,
+        "airborne_fraction": Range(0.0, 1.0, low_open=True),
+        "bandwidth_hz": POSITIVE,
+        "pulse_energy_j": POSITIVE,
+        "repetition_s": POSITIVE,
+        "differential_delay_s": POSITIVE,
+        "max_speed_m_s": POSITIVE,
+    },
+    jammer_erp_dbw={"allow_inf": ("jammer_ratio_db",)},
+)

@@ -24,12 +24,23 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from math import comb
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy import special, stats
 
-from navcore._validate import require_integer, require_positive, require_probability
+from navcore._validate import (
+    COUNT,
+    COUNT0,
+    POSITIVE,
+    PROBABILITY,
+    Range,
+    check_public,
+    require_integer,
+    require_positive,
+    require_probability,
+)
 from navcore.trace import implements
 
 __all__ = [
@@ -335,7 +346,7 @@ class MultipleAccessNoise:
 
     n_aircraft: int
     tau_over_alpha: float
-    density: object
+    density: Any
 
     def __post_init__(self) -> None:
         require_integer("n_aircraft", self.n_aircraft, minimum=2)
@@ -464,7 +475,7 @@ def sample_noise(noise: MultipleAccessNoise, n_samples: int, rng: np.random.Gene
     k = rng.binomial(noise.n_interferers, noise.q, size=n_samples)
     draws = noise.density.sample(rng, int(k.sum()))
     owner = np.repeat(np.arange(n_samples), k)
-    return np.bincount(owner, weights=draws, minlength=n_samples)
+    return np.bincount(owner, weights=draws, minlength=n_samples).astype(float)
 
 
 def _k_range(n_interferers: int, q: float, tail: float = 1e-16) -> tuple[NDArray[np.int64], FloatArray]:
@@ -597,3 +608,22 @@ def psk_amplitude_samples(
         x = (1.0 - f) * corr(k) + f * corr(k + 1)
         out[start : start + e] = np.cos(rng.uniform(0, 2 * np.pi, e)) * x
     return out
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(
+    globals(),
+    {
+        "n_aircraft": Range(1.0, None),
+        "n_events": COUNT,
+        "n_interferers": COUNT0,
+        "n_per_stratum": COUNT,
+        "n_samples": COUNT,
+        "chunk": COUNT,
+        "terms": COUNT0,
+        "q": PROBABILITY,
+        "tau_over_alpha": POSITIVE,
+        "step": POSITIVE,
+    },
+)

@@ -15,7 +15,7 @@ probability ``p_d`` fixes the threshold, and then
 where ``Q`` is the Gaussian upper tail. The paper writes this as
 ``1/2 - 1/2 erf(sqrt(P0 B tau / (2 J)) - phi)`` with ``phi = erfinv(2 p_d - 1)``.
 
-Everything is evaluated in the log domain with :func:`scipy.special.log_ndtr`, so tail
+Everything is evaluated in the log domain with ``scipy.special.log_ndtr``, so tail
 probabilities such as 1e-45 (or 1e-300) are computed to full relative precision instead of
 cancelling to zero as ``0.5 - 0.5 * erf(z)`` does.
 """
@@ -26,7 +26,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy import special
 
-from navcore._validate import as_finite_array
+from navcore._validate import OPEN_PROBABILITY, as_finite_array, check_public
 from navcore.trace import implements
 
 __all__ = [
@@ -144,3 +144,8 @@ def log_detection_probability(threshold: ArrayLike, d: ArrayLike) -> FloatArray:
 def detection_probability(threshold: ArrayLike, d: ArrayLike) -> FloatArray:
     """``P(d + n > threshold) = Q(threshold - d)``; see :func:`log_detection_probability`."""
     return np.exp(log_detection_probability(threshold, d))
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals(), {"p_d": OPEN_PROBABILITY})

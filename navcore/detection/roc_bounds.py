@@ -21,13 +21,13 @@ return natural logarithms of probabilities, so that exponents of hundreds stay f
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Protocol
+from typing import Protocol, runtime_checkable
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy import special
 
-from navcore._validate import require_positive
+from navcore._validate import POSITIVE, Range, check_public, require_positive
 from navcore.trace import implements
 
 __all__ = [
@@ -51,6 +51,7 @@ __all__ = [
 FloatArray = NDArray[np.float64]
 
 
+@runtime_checkable
 class CumulantGenerating(Protocol):
     def cgf(self, s: ArrayLike) -> FloatArray: ...
     def cgf_d1(self, s: ArrayLike) -> FloatArray: ...
@@ -278,3 +279,8 @@ def exponent_from_gaussian_exponent_large_n(
     r = np.asarray(tau_over_alpha, dtype=float)
     g = np.asarray(exp_g, dtype=float)
     return g - g**2 * (1.0 - 6.0 * r) / (12.0 * n * r)
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals(), {"tau_over_alpha": POSITIVE, "n_aircraft": Range(1.0, None), "power": POSITIVE})

@@ -15,7 +15,14 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import require_integer, require_positive
+from navcore._validate import (
+    COUNT0,
+    POSITIVE,
+    Range,
+    check_public,
+    require_integer,
+    require_positive,
+)
 from navcore.trace import implements
 
 __all__ = [
@@ -77,6 +84,8 @@ def aperiodic_autocorrelation(code: ArrayLike) -> FloatArray:
     if c.size < 1:
         raise ValueError("code must be non-empty")
     r = np.correlate(c, c, mode="full")
+    if r[c.size - 1] <= 0.0:
+        raise ValueError("code must have nonzero energy (not all chips zero)")
     return r / r[c.size - 1]
 
 
@@ -152,6 +161,8 @@ def cross_term_noise_power(
     code_i: ArrayLike, codes_j: list[ArrayLike], chip_s: float, alpha_s: float
 ) -> float:
     """E(n^2) = (1/(2 alpha)) sum_j integral R_ii R_jj (Eq. F.6), exact for rectangular chips."""
+    if np.size(code_i) < 1:
+        raise ValueError("code_i must be non-empty")
     ri = aperiodic_autocorrelation(code_i)
     total = 0.0
     for cj in codes_j:
@@ -160,3 +171,24 @@ def cross_term_noise_power(
             raise ValueError("all codes must have the same length")
         total += piecewise_linear_inner(ri, rj, chip_s)
     return total / (2.0 * alpha_s)
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(
+    globals(),
+    {
+        "alpha_s": POSITIVE,
+        "chip_s": POSITIVE,
+        "tau_s": POSITIVE,
+        "w_i_hz": POSITIVE,
+        "w_j_hz": POSITIVE,
+        "zakai_w_hz": POSITIVE,
+        "degree": Range(2, 20),
+        "length": Range(1, 100000),
+        "n_chips": Range(1, 100000),
+        "n_aircraft": Range(1.0, None),
+        "n_sidelobes": COUNT0,
+        "spacing": POSITIVE,
+    },
+)

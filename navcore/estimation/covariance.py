@@ -24,7 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import require_square, require_symmetric_psd
+from navcore._validate import check_public, require_square, require_symmetric_psd
 from navcore.estimation.kalman import symmetrize
 
 __all__ = ["CovarianceHistory", "Measurement", "propagate_covariance"]
@@ -147,3 +147,8 @@ def propagate_covariance(
                 counts[k] += 1
         post[k] = P
     return CovarianceHistory(t, prior, post, counts)
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals(), Measurement={"allow_inf": ("R",)})

@@ -22,7 +22,7 @@ The filter accounts for unmodelled measurement errors by inflating its noise wit
 a-priori covariance, :math:`R_f = R_t + H_u P_{0,uu} H_u^T`. When both layouts coincide the
 two covariances are identical (the optimal filter).
 
-Measurements are supplied per time step as :class:`~navcore.estimation.Measurement`
+Measurements are supplied per time step as :class:`~navcore.estimation.covariance.Measurement`
 objects over the *truth* layout by schedule functions built here: tightly coupled
 pseudorange and range rate from each tracked channel, the loosely coupled receiver
 position every 10 s when at least four codes are tracked and the expected horizontal
@@ -47,11 +47,22 @@ from __future__ import annotations
 import itertools
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import require_nonnegative, require_positive, require_symmetric_psd
+from navcore._validate import (
+    COUNT,
+    NONNEGATIVE,
+    OPEN_PROBABILITY,
+    POSITIVE,
+    Range,
+    check_public,
+    require_nonnegative,
+    require_positive,
+    require_symmetric_psd,
+)
 from navcore.estimation.covariance import Measurement
 from navcore.estimation.layout import StateLayout
 from navcore.gnss.constellation import Constellation
@@ -222,7 +233,7 @@ def run_covariance_analysis(
     CovarianceAnalysis, or a list of them for a batch of sources
     """
     batch = not isinstance(sources, ErrorSources)
-    src_list = list(sources) if batch else [sources]
+    src_list: list[ErrorSources] = [sources] if isinstance(sources, ErrorSources) else list(sources)
     if not src_list:
         raise ValueError("sources must not be empty")
     for s_ in src_list[1:]:
@@ -262,7 +273,10 @@ def run_covariance_analysis(
     want = {k % N for k in snapshots}
     key = None
     since = 0
-    Phi_t = Q_t = Phi_f = Q_f = None
+    Phi_t: Any = None  # the transitions of the current linearisation (set at k = 0)
+    Q_t: Any = None
+    Phi_f: Any = None
+    Q_f: Any = None
     speed = trajectory.speed
     omega_in = earth_rate_ned(trajectory.lat) + transport_rate_ned(
         trajectory.vel_ned, trajectory.lat, trajectory.h
@@ -277,7 +291,7 @@ def run_covariance_analysis(
     )
     free = None if measurement_steps is None else ~np.asarray(measurement_steps, dtype=bool)
     exact = np.ones(N, dtype=bool)
-    stride_cache = None
+    stride_cache: Any = None
     k = 0
     while k < N:
         if k > 0:
@@ -457,7 +471,7 @@ def concatenate_analyses(parts: Sequence[CovarianceAnalysis]) -> CovarianceAnaly
         if abs(b.t[0] - a.t[-1]) > 1e-9:
             raise ValueError("parts must be consecutive: each starts where the previous ends")
 
-    def join(attr: str) -> Array:
+    def join(attr: str) -> Any:
         return np.concatenate([getattr(parts[0], attr)] + [getattr(p, attr)[1:] for p in parts[1:]])
 
     snaps: dict[int, Array] = {}
@@ -542,6 +556,8 @@ def lock_table(
     n_channels : int
     events : sequence of ``(time, channel, "code" | "carrier", locked)``
         From ``time`` on, the channel's code or carrier is (un)locked.
+    start_locked : bool, default True
+        Lock state of every channel before its first event.
 
     Returns
     -------
@@ -616,7 +632,7 @@ def tightly_coupled_schedule(
         if i_rb is not None:
             H[rows, i_rb + cr] = 1.0
         if i_g is not None:
-            H[rows, i_g] = g_load[k]
+            H[rows, i_g] = g_load[k]  # type: ignore[index]  # i_g is None when g_load is
         R = np.diag(np.r_[np.full(cc.size, pseudorange_noise**2), np.full(cr.size, range_rate_noise**2)])
         return [Measurement(H, R)]
 
@@ -796,7 +812,7 @@ def best_geometry_channels(
     ks = np.linspace(0, len(trajectory) - 1, 12).astype(int)
     best, best_val = None, np.inf
     for combo in combinations(always.tolist(), n):
-        u = geo.u_ned[np.ix_(ks, combo)]  # (K, n, 3)
+        u = geo.u_ned[np.ix_(ks, np.asarray(combo, dtype=np.intp))]  # (K, n, 3)
         G = np.concatenate([-u, np.ones((*u.shape[:2], 1))], axis=-1)
         GtG = np.einsum("kni,knj->kij", G, G)
         if np.any(np.abs(np.linalg.det(GtG)) < 1e-9):
@@ -808,3 +824,27 @@ def best_geometry_channels(
     if best is None:
         raise ValueError("no satellite combination gives a usable geometry")
     return np.asarray(best, dtype=np.int64)
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(
+    globals(),
+    {
+        "dt": POSITIVE,
+        "mask_deg": Range(-90.0, 90.0),
+        "p": OPEN_PROBABILITY,
+        "n_channels": COUNT,
+        "every": COUNT,
+        "relinearize_every": COUNT,
+        "stride": COUNT,
+        "interval_steps": COUNT,
+        "order": COUNT,
+        "noise_m": NONNEGATIVE,
+        "noise_mps": NONNEGATIVE,
+        "pseudorange_noise": NONNEGATIVE,
+        "range_rate_noise": NONNEGATIVE,
+        "pseudorange_bias_sigma": NONNEGATIVE,
+        "max_ehe_m": POSITIVE,
+    },
+)

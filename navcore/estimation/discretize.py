@@ -27,7 +27,13 @@ import numpy as np
 import scipy.linalg
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import require_positive, require_square, require_symmetric_psd
+from navcore._validate import (
+    NONNEGATIVE,
+    check_public,
+    require_positive,
+    require_square,
+    require_symmetric_psd,
+)
 from navcore.estimation.kalman import symmetrize
 
 __all__ = ["first_order_transition", "van_loan"]
@@ -79,3 +85,8 @@ def first_order_transition(F: ArrayLike, dt: float) -> NDArray[np.float64]:
     F = require_square("F", F)
     require_positive("dt", dt)
     return np.eye(F.shape[0]) + F * dt
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals(), {"dt": NONNEGATIVE})

@@ -31,7 +31,7 @@ from typing import Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import require_integer, require_positive
+from navcore._validate import COUNT, NONNEGATIVE, POSITIVE, check_public, require_integer, require_positive
 from navcore.estimation.kalman import symmetrize
 from navcore.frames import dcm_from_euler, quat_from_dcm, quat_from_rotvec
 from navcore.gnss.carrier_phase import DEFAULT_BASELINES_B, dd_covariance
@@ -165,7 +165,7 @@ def sequential_scalar_updates(x: Array, P: Array, y: Array, H: Array, r: Array) 
     -------
     x, P : arrays
         Posterior; equal to one batch update with ``R = diag(r)``
-        (:func:`navcore.estimation.kf_update`, Joseph form, is the batch oracle in the tests).
+        (:func:`navcore.estimation.kalman.kf_update`, Joseph form, is the batch oracle in the tests).
     """
     for j in range(y.shape[-1]):
         h = H[:, j, :]
@@ -369,6 +369,9 @@ def run_monte_carlo(
         ``attitude_min_sats`` satellites), plus double-difference phases.
     n_runs, seed : int
         Number of runs and the random seed.
+    attitude_min_sats : int, default 4
+        Fewest visible satellites for the ``"tc_att"`` mode to use the carrier-phase
+        attitude rows.
     initialise : bool
         Levelling + GPS heading + gyro-bias/vertical-accelerometer calibration (KZL Sec. 3.1);
         ``False`` starts from the nominal attitude with uncompensated sensors.
@@ -540,7 +543,7 @@ def run_monte_carlo(
         record(k, t)
 
     return MonteCarloResult(
-        t=np.arange(K + 1) * T,
+        t=np.arange(K + 1, dtype=float) * T,
         pos_err=out_pos,
         vel_err=out_vel,
         att_err=out_att,
@@ -549,3 +552,28 @@ def run_monte_carlo(
         att_sigma=sig_att,
         n_visible=np.asarray(sc.n_visible),
     )
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(
+    globals(),
+    {
+        "dt": POSITIVE,
+        "n_runs": COUNT,
+        "imu_rate": POSITIVE,
+        "gps_rate": POSITIVE,
+        "duration": POSITIVE,
+        "pos0_sigma": NONNEGATIVE,
+        "vel0_sigma": NONNEGATIVE,
+        "heading_sigma": NONNEGATIVE,
+        "clock_bias_sigma": NONNEGATIVE,
+        "clock_drift_sigma": NONNEGATIVE,
+        "accel_bias_walk": NONNEGATIVE,
+        "gyro_bias_walk": NONNEGATIVE,
+        "clock_drift_walk": NONNEGATIVE,
+        "clock_phase_walk": NONNEGATIVE,
+        "init_time": NONNEGATIVE,
+        "attitude_min_sats": COUNT,
+    },
+)

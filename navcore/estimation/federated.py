@@ -30,13 +30,21 @@ Everything is general: any state dimension, any number of local estimators.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.linalg import solve_discrete_are
 
-from navcore._validate import as_finite_array, require_positive, require_symmetric_psd
+from navcore._validate import (
+    NONNEGATIVE,
+    POSITIVE,
+    as_finite_array,
+    check_public,
+    require_positive,
+    require_symmetric_psd,
+)
 from navcore.estimation.kalman import KalmanUpdate, kf_predict, kf_update, symmetrize
 from navcore.estimation.riccati import ScalarSteadyState, scalar_riccati_steady_state
 from navcore.frames import skew
@@ -49,6 +57,7 @@ __all__ = [
     "feasible_weights",
     "federated_covariance_bound",
     "federated_fusion",
+    "federated_improvement_db",
     "fused_error_covariance",
     "gps_doppler_covariance",
     "gps_doppler_update",
@@ -168,7 +177,7 @@ def accelerometer_steady_state(Q_a: ArrayLike, R_L: ArrayLike, Ts: float) -> tup
     """Matrix steady state of WF Eq. (14): prior and posterior covariances.
 
     Solves the filter Riccati equation for ``Phi = I, Q = Q_a Ts^2, H = I, R = R_L`` with
-    :func:`scipy.linalg.solve_discrete_are`.
+    ``scipy.linalg.solve_discrete_are``.
     """
     require_positive("Ts", Ts)
     Q = require_symmetric_psd("Q_a", Q_a) * Ts**2
@@ -214,7 +223,12 @@ def _informations(covariances: Sequence[ArrayLike | float | None], n: int | None
                 raise ValueError("covariances: an outage needs the state size from another estimator")
             out.append(np.zeros((n, n)))
             continue
-        Pa = np.asarray(P, dtype=float)
+        try:
+            Pa = np.asarray(P, dtype=float)
+        except (TypeError, ValueError):
+            raise TypeError(f"covariances[{i}] must be a matrix, None or inf, got {P!r}") from None
+        if n is not None and Pa.shape != (n, n):
+            raise ValueError(f"covariances[{i}] must have shape ({n}, {n}) like the others, got {Pa.shape}")
         if Pa.ndim == 2 and np.all(np.isinf(np.diag(Pa))):
             out.append(np.zeros_like(Pa))
             continue
@@ -224,6 +238,8 @@ def _informations(covariances: Sequence[ArrayLike | float | None], n: int | None
 
 
 def _state_size(covariances: Sequence[ArrayLike | float | None]) -> int:
+    if isinstance(covariances, str) or not isinstance(covariances, Sequence | np.ndarray):
+        raise TypeError(f"covariances must be a sequence of matrices, got {covariances!r}")
     for P in covariances:
         if P is not None and np.ndim(P) == 2:
             return int(np.shape(P)[0])
@@ -386,3 +402,49 @@ def minkowski_trace_bound(covariances: Sequence[ArrayLike | float | None]) -> fl
     infos = _informations(covariances, n)
     P_D = symmetrize(np.linalg.inv(symmetrize(sum(infos))))
     return float(sum(np.sqrt(np.trace(P_D @ Y @ P_D)) for Y in infos) ** 2)
+
+
+@implements("WF 23")
+def federated_improvement_db(
+    covariances: Sequence[ArrayLike | float | None], reference_sigma: float
+) -> float:
+    r"""Improvement (dB) of the federated per-axis bound over a reference per-axis sigma.
+
+    :math:`20\log_{10}(\sigma_D/\sigma_{ref})` with
+    :math:`\sigma_D = \sqrt{b/n}`, ``b`` the Minkowski trace bound of WF Eq. (23)
+    (:func:`minkowski_trace_bound`) over the ``n`` states. Negative values are an
+    improvement; WF Figs. 1-2 plot it with ``reference_sigma`` the aperture-velocity error
+    without MEMS aiding.
+
+    Parameters
+    ----------
+    covariances : sequence of (n, n) arrays, ``None`` or ``inf``
+        The local estimators' error covariances (units^2; an outage is ``None`` or ``inf``).
+    reference_sigma : float
+        Per-axis standard deviation to compare with, in the units of the states, ``> 0``.
+
+    Returns
+    -------
+    float
+        The ratio in dB.
+
+    Raises
+    ------
+    ValueError
+        If ``reference_sigma`` is not positive or a covariance is not positive definite.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> round(federated_improvement_db([np.eye(3) * 0.01, np.eye(3) * 0.01], 0.1), 3)
+    0.0
+    """
+    require_positive("reference_sigma", reference_sigma)
+    n = _state_size(covariances)
+    sigma_d = math.sqrt(minkowski_trace_bound(covariances) / n)
+    return float(20.0 * math.log10(sigma_d / reference_sigma))
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals(), {"Ts": POSITIVE, "sigma_L": POSITIVE, "sigma_a": NONNEGATIVE})

@@ -13,9 +13,114 @@ Examples
 
 from __future__ import annotations
 
+import difflib
 from dataclasses import dataclass
+from enum import StrEnum
 
-__all__ = ["StateBlock", "StateLayout"]
+from navcore._validate import check_public
+
+__all__ = ["INS_BLOCK_SYNONYMS", "InsBlock", "StateBlock", "StateLayout", "ins_block_name"]
+
+
+class InsBlock(StrEnum):
+    """The names of the INS/GNSS error-state blocks that navcore's error models know.
+
+    A member is a ``str``, so ``InsBlock.GYRO_DRIFT == "gyro drift"`` and either spelling
+    may be passed wherever a block name is expected (for instance to
+    :func:`navcore.inertial.error_dynamics.ins_error_layout`). The sizes and units are in
+    the table of :mod:`navcore.inertial.error_dynamics`. Note the papers' vocabulary: a gyro
+    *drift* is the random-constant gyro bias (rad/s); the accelerometer's is ``accel bias``.
+    """
+
+    POSITION = "position"
+    VELOCITY = "velocity"
+    MISALIGNMENT = "misalignment"
+    GYRO_DRIFT = "gyro drift"
+    GYRO_SCALE_FACTOR = "gyro scale factor"
+    GYRO_MISALIGNMENT = "gyro misalignment"
+    ACCEL_BIAS = "accel bias"
+    ACCEL_SCALE_FACTOR = "accel scale factor"
+    ACCEL_MISALIGNMENT = "accel misalignment"
+    GRAVITY = "gravity"
+    ALTIMETER_BIAS = "altimeter bias"
+    CLOCK_BIAS = "clock bias"
+    CLOCK_DRIFT = "clock drift"
+    CLOCK_G_SENSITIVITY = "clock g-sensitivity"
+    PSEUDORANGE_BIAS = "pseudorange bias"
+    RANGE_RATE_BIAS = "range-rate bias"
+    DOPPLER_BIAS = "doppler bias"
+    DOPPLER_SCALE_FACTOR = "doppler scale factor"
+    DOPPLER_MISALIGNMENT = "doppler misalignment"
+
+
+#: Common other names of the INS blocks, mapped to navcore's name; used in error messages
+#: ("did you mean ...?"), never substituted silently.
+INS_BLOCK_SYNONYMS: dict[str, InsBlock] = {
+    "gyro bias": InsBlock.GYRO_DRIFT,
+    "gyro biases": InsBlock.GYRO_DRIFT,
+    "accelerometer bias": InsBlock.ACCEL_BIAS,
+    "accel drift": InsBlock.ACCEL_BIAS,
+    "attitude": InsBlock.MISALIGNMENT,
+    "attitude error": InsBlock.MISALIGNMENT,
+    "tilt": InsBlock.MISALIGNMENT,
+    "psi": InsBlock.MISALIGNMENT,
+    "accelerometer scale factor": InsBlock.ACCEL_SCALE_FACTOR,
+    "accelerometer misalignment": InsBlock.ACCEL_MISALIGNMENT,
+    "clock offset": InsBlock.CLOCK_BIAS,
+    "clock frequency": InsBlock.CLOCK_DRIFT,
+}
+
+
+def _suggestion(name: str, known: list[str]) -> str:
+    hint = INS_BLOCK_SYNONYMS.get(name.strip().lower()) if isinstance(name, str) else None
+    if hint is not None and hint.value in known:
+        return f"; did you mean {hint.value!r}?"
+    close = difflib.get_close_matches(name, known, n=1) if isinstance(name, str) else []
+    return f"; did you mean {close[0]!r}?" if close else ""
+
+
+def ins_block_name(name: str, *, argument: str = "name") -> InsBlock:
+    """Return the :class:`InsBlock` called ``name``, or raise naming the closest one.
+
+    Parameters
+    ----------
+    name : str
+        A block name (``"gyro drift"``) or an :class:`InsBlock` member.
+    argument : str, default "name"
+        How the caller's parameter is spelled, for the error message.
+
+    Returns
+    -------
+    InsBlock
+        The block.
+
+    Raises
+    ------
+    TypeError
+        If ``name`` is not a string.
+    ValueError
+        If ``name`` is not a block name; the message suggests the closest one, and the
+        navcore name of common synonyms (``"gyro bias"`` is ``"gyro drift"``).
+
+    Examples
+    --------
+    >>> ins_block_name("gyro drift")
+    <InsBlock.GYRO_DRIFT: 'gyro drift'>
+    >>> try:
+    ...     ins_block_name("gyro bias")
+    ... except ValueError as exc:
+    ...     print(str(exc).split("; ")[1])
+    did you mean 'gyro drift'?
+    """
+    if not isinstance(name, str):
+        raise TypeError(f"{argument} must be a string (a block name), got {name!r}")
+    try:
+        return InsBlock(name)
+    except ValueError:
+        known = [b.value for b in InsBlock]
+        raise ValueError(
+            f"{argument} must be among {known}, got {name!r}{_suggestion(name, known)}"
+        ) from None
 
 
 @dataclass(frozen=True)
@@ -28,15 +133,15 @@ class StateBlock:
     description: str = ""
 
     def __post_init__(self) -> None:
-        if not self.name:
-            raise ValueError("StateBlock.name must not be empty")
+        if not isinstance(self.name, str) or not self.name:
+            raise ValueError(f"StateBlock.name must be a non-empty string, got {self.name!r}")
         if isinstance(self.size, bool) or not isinstance(self.size, int) or self.size < 1:
             raise ValueError(f"StateBlock.size must be an integer >= 1, got {self.size!r}")
 
 
 @dataclass(frozen=True)
 class StateLayout:
-    """An ordered tuple of uniquely named :class:`StateBlock` objects."""
+    """An ordered tuple of uniquely named :class:`~navcore.estimation.layout.StateBlock` objects."""
 
     blocks: tuple[StateBlock, ...]
     name: str = ""
@@ -65,7 +170,9 @@ class StateLayout:
         for b in self.blocks:
             if b.name == name:
                 return b
-        raise ValueError(f"name must be one of {list(self.names)}, got {name!r}")
+        raise ValueError(
+            f"name must be one of {list(self.names)}, got {name!r}{_suggestion(name, list(self.names))}"
+        )
 
     def slice(self, name: str) -> slice:
         """The slice of block ``name`` in the state vector."""
@@ -74,7 +181,9 @@ class StateLayout:
             if b.name == name:
                 return slice(start, start + b.size)
             start += b.size
-        raise ValueError(f"name must be one of {list(self.names)}, got {name!r}")
+        raise ValueError(
+            f"name must be one of {list(self.names)}, got {name!r}{_suggestion(name, list(self.names))}"
+        )
 
     def index(self, name: str, component: int = 0) -> int:
         """Index of component ``component`` of block ``name``."""
@@ -101,3 +210,8 @@ class StateLayout:
     def table(self) -> list[tuple[str, int]]:
         """``[(block name, size), ...]`` in order."""
         return [(b.name, b.size) for b in self.blocks]
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())

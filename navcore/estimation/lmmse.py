@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from navcore._validate import as_finite_array, require_positive
+from navcore._validate import NONNEGATIVE, POSITIVE, as_finite_array, check_public, require_positive
 from navcore.estimation.kalman import symmetrize
 from navcore.trace import implements
 
@@ -139,3 +139,8 @@ def scalar_nuisance_gain(f: np.ndarray, G: np.ndarray, sigma: float, sigma_x: fl
     coef, *_ = np.linalg.lstsq(G, f, rcond=None)
     resid = f - G @ coef
     return sigma_x**2 / (sigma**2 + sigma_x**2 * float(resid @ resid))
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals(), {"sigma": POSITIVE, "sigma_x": NONNEGATIVE})

@@ -23,7 +23,15 @@ from __future__ import annotations
 import math
 from typing import NamedTuple
 
-from navcore._validate import require_finite, require_nonnegative, require_positive
+from navcore._validate import (
+    COUNT,
+    NONNEGATIVE,
+    POSITIVE,
+    check_public,
+    require_finite,
+    require_nonnegative,
+    require_positive,
+)
 
 __all__ = ["ScalarSteadyState", "scalar_riccati_iterate", "scalar_riccati_steady_state"]
 
@@ -91,3 +99,8 @@ def scalar_riccati_iterate(
         posterior = prior * r / (h * h * prior + r)
         prior = phi * phi * posterior + q
     return ScalarSteadyState(prior, posterior, gain)
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals(), {"q": NONNEGATIVE, "r": POSITIVE, "p0": NONNEGATIVE, "steps": COUNT})

@@ -24,6 +24,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
+from typing import Any
 
 # No backend is forced here: a notebook kernel keeps its inline backend (so glued figures
 # render as images), and a headless script gets matplotlib's default, Agg.
@@ -44,7 +45,7 @@ __all__ = [
     "write_all",
 ]
 
-STYLE: dict[str, object] = {
+STYLE: dict[str, Any] = {
     "figure.figsize": (6.4, 4.0),
     "figure.dpi": 110,
     "savefig.dpi": 160,
@@ -63,7 +64,7 @@ STYLE: dict[str, object] = {
 
 def apply_style() -> None:
     """Apply the book's matplotlib style (idempotent)."""
-    plt.rcParams.update(STYLE)
+    plt.rcParams.update(STYLE)  # type: ignore[arg-type]  # matplotlib types the keys as literals
 
 
 @dataclass(frozen=True)

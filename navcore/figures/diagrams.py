@@ -8,6 +8,7 @@ covariance engine's loosely coupled schedule.
 from __future__ import annotations
 
 import inspect
+from typing import cast
 
 from matplotlib.figure import Figure
 
@@ -28,7 +29,7 @@ __all__: list[str] = []
 def kzl_ins_block_diagram() -> Figure:
     from navcore.papers.kzl_scenario import TABLE1
 
-    return diagrams.ins_block_diagram(imu_rate_hz=TABLE1["imu_rate_hz"])
+    return diagrams.ins_block_diagram(imu_rate_hz=cast(float, TABLE1["imu_rate_hz"]))
 
 
 @register(
@@ -42,7 +43,7 @@ def kzl_ins_block_diagram() -> Figure:
 def kzl_gnss_receiver_diagram() -> Figure:
     from navcore.papers.kzl_scenario import TABLE1
 
-    return diagrams.gnss_receiver_block_diagram(nav_rate_hz=TABLE1["gps_rate_hz"])
+    return diagrams.gnss_receiver_block_diagram(nav_rate_hz=cast(float, TABLE1["gps_rate_hz"]))
 
 
 @register(
@@ -59,7 +60,9 @@ def kzl_tightly_coupled_diagram() -> Figure:
     from navcore.papers.kzl_scenario import TABLE1
 
     return diagrams.tightly_coupled_feedback_diagram(
-        n_states=ERROR_LAYOUT_17.size, imu_rate_hz=TABLE1["imu_rate_hz"], gnss_rate_hz=TABLE1["gps_rate_hz"]
+        n_states=ERROR_LAYOUT_17.size,
+        imu_rate_hz=cast(float, TABLE1["imu_rate_hz"]),
+        gnss_rate_hz=cast(float, TABLE1["gps_rate_hz"]),
     )
 
 

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.figure import Figure
@@ -18,8 +20,16 @@ def _axis_ug(ax: plt.Axes) -> None:
     ax.set_xscale("log")
     ax.set_xlabel(r"accelerometer resolution $\sigma_a$ at 50 Hz (m/s$^2$)")
     ax.set_ylabel(r"$20\log_{10}(\sigma_D/\sigma_{DN})$ (dB)")
-    sec = ax.secondary_xaxis("top", functions=(lambda x: x / MICRO_G, lambda x: x * MICRO_G))
+    sec = ax.secondary_xaxis("top", functions=(_to_micro_g, _from_micro_g))
     sec.set_xlabel(r"$\sigma_a$ ($\mu g$)")
+
+
+def _to_micro_g(x: Any) -> Any:
+    return x / MICRO_G
+
+
+def _from_micro_g(x: Any) -> Any:
+    return x * MICRO_G
 
 
 @register(
@@ -112,7 +122,7 @@ def position_bound_ratio() -> Figure:
     apply_style()
     ratios = wf.position_bound_ratios()
     fig, ax = plt.subplots(figsize=(6.4, 3.2))
-    ax.hist(ratios, bins=np.linspace(0, 0.55, 45), color="C0")
+    ax.hist(ratios, bins=np.linspace(0, 0.55, 45).tolist(), color="C0")
     ax.axvline(0.5, color="k", ls="--", lw=1)
     ax.set_xlabel(r"$\|\partial f/\partial \mathbf{p}\|$ / printed bound")
     ax.set_ylabel("number of geometries")

@@ -26,7 +26,15 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.special import log_ndtr
 
-from navcore._validate import as_finite_array, require_integer, require_positive
+from navcore._validate import (
+    COUNT,
+    NONNEGATIVE,
+    POSITIVE,
+    as_finite_array,
+    check_public,
+    require_integer,
+    require_positive,
+)
 from navcore.trace import implements
 
 __all__ = [
@@ -116,3 +124,23 @@ def probability_outside_sigma_box(n_dims: int = 1, k: float = 1.0) -> float:
     require_positive("k", k)
     two_tail = 2.0 * math.exp(float(log_ndtr(-k)))
     return -math.expm1(n * math.log1p(-two_tail))
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(
+    globals(),
+    {
+        "dwell_s": POSITIVE,
+        "wavelength_m": POSITIVE,
+        "n_dims": COUNT,
+        "k": NONNEGATIVE,
+        "n_sigma": POSITIVE,
+        "range_cell_m": POSITIVE,
+        "rate_cell_mps": POSITIVE,
+        "cell": POSITIVE,
+        "sigma": NONNEGATIVE,
+        "sigma_range_m": NONNEGATIVE,
+        "sigma_range_rate_mps": NONNEGATIVE,
+    },
+)

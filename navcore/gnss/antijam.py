@@ -45,7 +45,16 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.integrate import quad
 from scipy.linalg import expm
 
-from navcore._validate import as_finite_array, require_integer, require_positive
+from navcore._validate import (
+    COUNT,
+    NONNEGATIVE,
+    POSITIVE,
+    Range,
+    as_finite_array,
+    check_public,
+    require_integer,
+    require_positive,
+)
 from navcore.trace import implements
 from navcore.units import G0
 
@@ -67,7 +76,7 @@ Array = NDArray[np.float64]
 
 
 def ideal_correlation(tau_chips: ArrayLike) -> Array | float:
-    """Ideal code autocorrelation, 1 - |tau| inside one chip, 0 outside (SP Sec. 3.0).
+    """Ideal code autocorrelation, ``1 - |tau|`` inside one chip, 0 outside (SP Sec. 3.0).
 
     Examples
     --------
@@ -262,6 +271,8 @@ def simulate_impact_errors(
         Monte Carlo runs; each run has two independent horizontal channels.
     seed : int
         Seed of ``numpy.random.default_rng`` (recorded in the result).
+    dt : float
+        Step (s) of the fix-noise history.
     """
     runs = require_integer("runs", runs, minimum=1)
     sig = np.asarray(fix_sigma_m, dtype=float)
@@ -300,3 +311,28 @@ def simulate_impact_errors(
             P = IKH @ P @ IKH.T + r * np.outer(K, K)  # Joseph form
     err = (x[:, 0] - xh[:, 0]).reshape(runs, 2)
     return RunResult(err, float(math.sqrt(P[0, 0])), locked, seed)
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(
+    globals(),
+    {
+        "runs": COUNT,
+        "dt": POSITIVE,
+        "chip_rate_hz": POSITIVE,
+        "coherent_s": POSITIVE,
+        "integration_s": POSITIVE,
+        "jammer_bandwidth_hz": POSITIVE,
+        "spacing_chips": Range(0.0, 2.0, low_open=True, high_open=True),
+        "q": POSITIVE,
+        "wavelength_m": POSITIVE,
+        "filter_sigma_m": NONNEGATIVE,
+        "hdop_axis": POSITIVE,
+        "accel_tau_s": POSITIVE,
+        "gyro_tau_s": POSITIVE,
+        "distance_m": POSITIVE,
+        "jammer_power_w": NONNEGATIVE,
+    },
+    simulate_impact_errors={"skip": ("fix_sigma_m",)},
+)

@@ -22,6 +22,7 @@ References
 
 from __future__ import annotations
 
+from navcore._validate import check_public
 from navcore.estimation.layout import StateBlock, StateLayout
 from navcore.trace import implements
 
@@ -90,3 +91,8 @@ def tightly_coupled_layout() -> StateLayout:
     return StateLayout(
         core[:2] + CLOCK.blocks + core[2:] + IMU_ERRORS.blocks + ALTIMETER.blocks, "tightly coupled"
     )
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())

@@ -35,7 +35,15 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import as_finite_array, require_integer, require_positive
+from navcore._validate import (
+    COUNT,
+    COUNT0,
+    POSITIVE,
+    as_finite_array,
+    check_public,
+    require_integer,
+    require_positive,
+)
 from navcore.frames import skew
 from navcore.inertial.error_model17 import ERROR_LAYOUT_17, code_doppler_rows
 from navcore.trace import implements
@@ -65,7 +73,10 @@ def _range_difference(sat: Array, a0: Array, ai: Array) -> Array:
     """``|sat - ai| - |sat - a0|`` without cancellation: ``(|d_i|^2 - |d_0|^2)/(|d_i| + |d_0|)``."""
     # d_i - d_0 = a0 - ai exactly (no cancellation of the ~2e7 m ranges)
     num = np.sum((a0 - ai) * (2.0 * sat - a0 - ai), axis=-1)
-    return num / (np.linalg.norm(sat - ai, axis=-1) + np.linalg.norm(sat - a0, axis=-1))
+    den = np.linalg.norm(sat - ai, axis=-1) + np.linalg.norm(sat - a0, axis=-1)
+    if np.any(den == 0.0):
+        raise ValueError("sat_m and sat_n must not coincide with the antennas r_a0, r_ai")
+    return num / den
 
 
 @implements("KZL 15")
@@ -111,6 +122,8 @@ def dd_observation_rows(
         Computed attitude :math:`\\hat R_b^n`.
     baselines_b : (k, 3) array
         Body baselines :math:`l^b_{0i}` (m).
+    wavelength : float
+        Carrier wavelength (m).
 
     Returns
     -------
@@ -205,3 +218,8 @@ def dd_observation_rows_count(nu: int, n_baselines: int = 2) -> int:
     require_integer("nu", nu, minimum=1)
     los = np.tile([0.0, 0.0, -1.0], (nu, 1))
     return tc_dd_observation_matrix(los, np.eye(3), DEFAULT_BASELINES_B[:n_baselines]).shape[0]
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals(), {"wavelength": POSITIVE, "sigma_phase": POSITIVE, "n_baselines": COUNT, "nu": COUNT0})

@@ -23,7 +23,15 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import as_finite_array, require_in_range, require_integer, require_positive
+from navcore._validate import (
+    POSITIVE,
+    Range,
+    as_finite_array,
+    check_public,
+    require_in_range,
+    require_integer,
+    require_positive,
+)
 from navcore.frames import dcm_ecef_to_ned, geodetic_to_ecef
 from navcore.units import DEG, OMEGA_EARTH
 
@@ -168,10 +176,13 @@ def geometry_matrix(u: ArrayLike) -> NDArray[np.float64]:
 def dop(u_ned: ArrayLike) -> dict[str, float]:
     """Dilution of precision from NED unit vectors (N >= 4): GDOP, PDOP, HDOP, VDOP, TDOP."""
     u_ned = as_finite_array("u_ned", u_ned, ndim=2)
-    if u_ned.shape[0] < 4:
-        raise ValueError(f"u_ned must have at least 4 satellites for DOP, got {u_ned.shape[0]}")
+    if u_ned.shape[0] < 4 or u_ned.shape[1] != 3:
+        raise ValueError(f"u_ned must have shape (N, 3) with N >= 4 satellites for DOP, got {u_ned.shape}")
     G = geometry_matrix(u_ned)
-    Qm = np.linalg.inv(G.T @ G)
+    try:
+        Qm = np.linalg.inv(G.T @ G)
+    except np.linalg.LinAlgError:
+        raise ValueError("u_ned: the geometry is singular (the lines of sight do not span 3-D)") from None
     d = np.diag(Qm)
     require_positive("diag((G'G)^-1)", d)
     return {
@@ -181,3 +192,17 @@ def dop(u_ned: ArrayLike) -> dict[str, float]:
         "VDOP": float(np.sqrt(d[2])),
         "TDOP": float(np.sqrt(d[3])),
     }
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(
+    globals(),
+    {
+        "n_planes": Range(1, 1000),
+        "per_plane": Range(1, 1000),
+        "radius": POSITIVE,
+        "mask_deg": Range(-90.0, 90.0),
+        "lat": Range(-1.5707963267948966, 1.5707963267948966),
+    },
+)

@@ -57,7 +57,15 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import as_finite_array, require_nonnegative, require_positive
+from navcore._validate import (
+    NONNEGATIVE,
+    POSITIVE,
+    Range,
+    as_finite_array,
+    check_public,
+    require_nonnegative,
+    require_positive,
+)
 from navcore.trace import implements
 
 __all__ = [
@@ -306,6 +314,8 @@ def hysteresis_lock(
         Effective C/N0 per time sample and channel.
     loss_dbhz, reacquisition_dbhz : float or (n,) array
         Thresholds (reacquisition >= loss).
+    initially_locked : bool, default True
+        Lock state before the first sample that decides it.
 
     Examples
     --------
@@ -343,4 +353,23 @@ def outage_intervals(t_s: ArrayLike, available: ArrayLike) -> list[tuple[float, 
     d = np.diff(off)
     starts = np.flatnonzero(d == 1)
     ends = np.flatnonzero(d == -1)
-    return [(float(t[s]), float(t[min(e, t.size - 1)])) for s, e in zip(starts, ends, strict=True)]
+    return [(float(t[s]), float(t[min(int(e), t.size - 1)])) for s, e in zip(starts, ends, strict=True)]
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(
+    globals(),
+    {
+        "chip_rate_hz": POSITIVE,
+        "coherent_s": POSITIVE,
+        "noise_bandwidth_hz": POSITIVE,
+        "wavelength_m": POSITIVE,
+        "speed_mps": POSITIVE,
+        "range_m": POSITIVE,
+        "closest_range_m": NONNEGATIVE,
+        "q": POSITIVE,
+        "k_sigma": POSITIVE,
+        "max_phase_error_deg": Range(0.0, 180.0, low_open=True),
+    },
+)

@@ -32,7 +32,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import as_finite_array
+from navcore._validate import as_finite_array, check_public
 
 __all__ = [
     "pseudorange",
@@ -64,6 +64,8 @@ def pseudorange_rate(
 ) -> Array:
     """Pseudorange rates (m/s): line-of-sight relative velocity plus clock drift (m/s)."""
     d = _sat("r_sat", r_sat) - as_finite_array("r_user", r_user)
+    if np.any(np.linalg.norm(d, axis=-1) == 0.0):
+        raise ValueError("r_sat must differ from r_user (zero range has no line of sight)")
     u = d / np.linalg.norm(d, axis=-1, keepdims=True)
     dv = _sat("v_sat", v_sat) - as_finite_array("v_user", v_user)
     return np.einsum("ij,ij->i", u, dv) + clock_drift_mps
@@ -87,3 +89,8 @@ def pseudorange_rate_jacobian(
     # d(u . dv)/dr = -(dv - (u.dv) u)^T / |d|
     proj = dv - np.einsum("ij,ij->i", u, dv)[:, None] * u
     return np.hstack([-proj / rng, -u, np.ones((u.shape[0], 1))])
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())

@@ -51,7 +51,14 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import minimize_scalar
 
-from navcore._validate import as_finite_array, require_nonnegative, require_positive
+from navcore._validate import (
+    NONNEGATIVE,
+    POSITIVE,
+    as_finite_array,
+    check_public,
+    require_nonnegative,
+    require_positive,
+)
 from navcore.trace import implements
 
 __all__ = [
@@ -234,12 +241,64 @@ def aided_natural_frequency(
 
 
 def third_order_noise_bandwidth_hz(omega0: float, a3: float = 2.0, b3: float = 2.0) -> float:
-    """One-sided noise bandwidth (Hz) of a third-order loop with coefficients ``a3``, ``b3``.
+    r"""One-sided noise bandwidth (Hz) of a third-order loop with coefficients ``a3``, ``b3``.
 
-    :math:`B_n = \\omega_0 (a_3 b_3^2 + a_3^2 - b_3) / (4 (a_3 b_3 - 1))`; for the Butterworth
-    loop (a3 = b3 = 2) this is :math:`5\\omega_0/6` (Kaplan Table 5.6 uses a3 = 1.1, b3 = 2.4).
+    The loop's closed-loop denominator is
+    :math:`D(s) = s^3 + a_3\omega_0 s^2 + b_3\omega_0^2 s + \omega_0^3`: ``a3`` multiplies
+    the :math:`s^2` term and ``b3`` the :math:`s` term (Kaplan's convention; the Butterworth
+    loop of this module has ``a3 = b3 = 2``). Its noise bandwidth is
+
+    :math:`B_n = \omega_0 (a_3 b_3^2 + a_3^2 - b_3) / (4 (a_3 b_3 - 1))`,
+
+    :math:`5\omega_0/6` for the Butterworth loop (Kaplan Table 5.6 uses a3 = 1.1, b3 = 2.4).
+
+    Parameters
+    ----------
+    omega0 : float
+        Loop natural frequency (rad/s), ``> 0``.
+    a3 : float, default 2.0
+        Coefficient of :math:`\omega_0 s^2` in :math:`D(s)`, ``> 0``.
+    b3 : float, default 2.0
+        Coefficient of :math:`\omega_0^2 s` in :math:`D(s)`, ``> 0``.
+
+    Returns
+    -------
+    float
+        :math:`B_n` in Hz (one-sided).
+
+    Raises
+    ------
+    ValueError
+        If ``omega0``, ``a3`` or ``b3`` is not positive, or ``a3 * b3 <= 1`` (Routh-Hurwitz:
+        the loop is unstable and has no finite noise bandwidth).
+
+    Examples
+    --------
+    >>> round(third_order_noise_bandwidth_hz(6.0), 6)
+    5.0
+    >>> round(third_order_noise_bandwidth_hz(1.0, a3=1.1, b3=2.4), 4)
+    0.7844
     """
     require_positive("omega0", omega0)
+    require_positive("a3", a3)
+    require_positive("b3", b3)
     if a3 * b3 <= 1:
-        raise ValueError("a3*b3 must exceed 1 for a stable loop")
+        raise ValueError(f"a3*b3 must exceed 1 for a stable loop, got a3={a3!r}, b3={b3!r}")
     return omega0 * (a3 * b3**2 + a3**2 - b3) / (4.0 * (a3 * b3 - 1.0))
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(
+    globals(),
+    {
+        "omega0": POSITIVE,
+        "omega0_unaided": POSITIVE,
+        "wavelength_m": POSITIVE,
+        "duration_s": NONNEGATIVE,
+        "peak_deg": POSITIVE,
+        "peak_error": POSITIVE,
+        "a3": POSITIVE,
+        "b3": POSITIVE,
+    },
+)

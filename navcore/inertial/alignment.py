@@ -31,7 +31,7 @@ from typing import Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import as_finite_array
+from navcore._validate import as_finite_array, check_public
 from navcore.trace import implements
 
 __all__ = ["heading_from_velocity", "levelling", "levelling_as_printed"]
@@ -84,6 +84,8 @@ def levelling_as_printed(a_b: ArrayLike) -> tuple[Array, Array]:
     ``phi = atan2(a_y, a_z)``. Correct only if ``a_b`` is minus the specific force."""
     a = as_finite_array("a_b", a_b)
     ax, ay, az = a[..., 0], a[..., 1], a[..., 2]
+    if np.any(np.hypot(ay, az) == 0.0):
+        raise ValueError("a_b must have a nonzero y-z component (pitch of +-90 deg is undefined here)")
     return np.arctan2(ay, az), np.arctan(-ax / np.hypot(ay, az))
 
 
@@ -102,3 +104,8 @@ def heading_from_velocity(v_ned: ArrayLike) -> Array:
     if np.any(np.hypot(v[..., 0], v[..., 1]) == 0):
         raise ValueError("v_ned must have a non-zero horizontal component to define a heading")
     return np.arctan2(v[..., 1], v[..., 0])
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())

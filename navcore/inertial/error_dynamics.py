@@ -2,29 +2,29 @@ r"""INS error-state dynamics in a local-level (NED) frame, psi-angle form.
 
 State blocks (any subset, in any order, named as in :mod:`navcore.gnss.architectures`):
 
-=======================  ====  ================================================================
-block                    size  meaning
-=======================  ====  ================================================================
-``position``             3     NED position error (m)
-``velocity``             3     velocity error in the computed frame (m/s)
-``misalignment``         3     psi angle: computed-frame attitude error (rad)
-``gyro drift``           3     gyro bias, random constant (rad/s)
-``gyro scale factor``    3     (-)
-``gyro misalignment``    3     small-angle input-axis misalignment of the gyro triad (rad)
-``accel bias``           3     (m/s^2)
-``accel scale factor``   3     (-)
-``accel misalignment``   3     small-angle input-axis misalignment of the accelerometers (rad)
-``gravity``              3     gravity anomaly, first-order Gauss-Markov (m/s^2)
-``altimeter bias``       1     barometric altimeter bias, first-order Gauss-Markov (m)
-``clock bias``           1     user clock bias (m)
-``clock drift``          1     user clock drift (m/s)
-``clock g-sensitivity``  1     clock frequency sensitivity to specific force (m/s per g)
-``pseudorange bias``     n     one random-constant bias per receiver channel (m)
-``range-rate bias``      n     one random-constant bias per receiver channel (m/s)
-``doppler bias``         3     Doppler ground-speed sensor bias, body axes (m/s)
-``doppler scale factor`` 3     (-)
-``doppler misalignment`` 3     boresight misalignment (rad)
-=======================  ====  ================================================================
+========================  ====  ================================================================
+block                     size  meaning
+========================  ====  ================================================================
+``position``              3     NED position error (m)
+``velocity``              3     velocity error in the computed frame (m/s)
+``misalignment``          3     psi angle: computed-frame attitude error (rad)
+``gyro drift``            3     gyro bias, random constant (rad/s)
+``gyro scale factor``     3     (-)
+``gyro misalignment``     3     small-angle input-axis misalignment of the gyro triad (rad)
+``accel bias``            3     (m/s^2)
+``accel scale factor``    3     (-)
+``accel misalignment``    3     small-angle input-axis misalignment of the accelerometers (rad)
+``gravity``               3     gravity anomaly, first-order Gauss-Markov (m/s^2)
+``altimeter bias``        1     barometric altimeter bias, first-order Gauss-Markov (m)
+``clock bias``            1     user clock bias (m)
+``clock drift``           1     user clock drift (m/s)
+``clock g-sensitivity``   1     clock frequency sensitivity to specific force (m/s per g)
+``pseudorange bias``      n     one random-constant bias per receiver channel (m)
+``range-rate bias``       n     one random-constant bias per receiver channel (m/s)
+``doppler bias``          3     Doppler ground-speed sensor bias, body axes (m/s)
+``doppler scale factor``  3     (-)
+``doppler misalignment``  3     boresight misalignment (rad)
+========================  ====  ================================================================
 
 Dynamics (psi-angle form, Benson 1975):
 
@@ -60,12 +60,20 @@ References
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import require_nonnegative, require_positive
-from navcore.estimation.layout import StateBlock, StateLayout
+from navcore._validate import (
+    COUNT0,
+    NONNEGATIVE,
+    POSITIVE,
+    check_public,
+    require_nonnegative,
+    require_positive,
+)
+from navcore.estimation.layout import StateBlock, StateLayout, ins_block_name
 from navcore.inertial.imu import ImuSpec
 from navcore.trace import implements
 from navcore.units import G0, OMEGA_EARTH, WGS84_A
@@ -232,8 +240,7 @@ def ins_error_layout(*names: str, channels: int = 4, name: str = "") -> StateLay
     """
     blocks = []
     for n in names:
-        if n not in _UNITS:
-            raise ValueError(f"names must be among {sorted(_UNITS)}, got {n!r}")
+        n = ins_block_name(n, argument="names").value  # raises naming the closest block
         size = (
             channels
             if n in ("pseudorange bias", "range-rate bias")
@@ -408,7 +415,7 @@ def initial_covariance(
     """
     s = np.zeros(layout.size)
     imu = sources.imu
-    values: dict[str, object] = {
+    values: dict[str, Any] = {
         "position": position_sigma,
         "velocity": velocity_sigma,
         "misalignment": attitude_sigma,
@@ -444,12 +451,16 @@ def _sensor_error_rates(layout: StateLayout, *, lat: float, C_bn: ArrayLike | No
     F = error_dynamics(layout, f_ned=(0.0, 0.0, -g), C_bn=C_bn, lat=lat, g=g)
     vv, a = layout.slice("velocity"), layout.slice("misalignment")
     sensor = [b.name for b in layout.blocks if b.name.startswith(("gyro", "accel"))]
-    idx = np.concatenate([np.arange(layout.size)[layout.slice(s)] for s in sensor]) if sensor else []
-    idx = np.asarray(idx, dtype=int)
+    idx: NDArray[np.intp] = np.asarray(
+        np.concatenate([np.arange(layout.size)[layout.slice(s)] for s in sensor]) if sensor else [],
+        dtype=np.intp,
+    )
     return np.arange(layout.size)[a], idx, F[vv][:, idx], -F[a][:, idx]
 
 
-def _replace_attitude(P0: ArrayLike, layout: StateLayout, ai: Array, idx: Array, T: Array) -> Array:
+def _replace_attitude(
+    P0: ArrayLike, layout: StateLayout, ai: NDArray[np.intp], idx: NDArray[np.intp], T: Array
+) -> Array:
     """Covariance with ``psi = T x_s`` (sensor states ``idx``) and the rest of ``P0`` kept."""
     P0 = np.array(P0, dtype=float)
     A = np.eye(layout.size)
@@ -527,3 +538,27 @@ def levelling_alignment(
     P = _replace_attitude(P0, layout, ai, idx, T)
     P[ai, ai] += np.array([tilt_noise_sigma**2, tilt_noise_sigma**2, heading_sigma**2])
     return P
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(
+    globals(),
+    {
+        "channels": COUNT0,
+        "g": POSITIVE,
+        "radius": POSITIVE,
+        "speed_mps": NONNEGATIVE,
+        "distance_constant_m": POSITIVE,
+        "sigma": NONNEGATIVE,
+        "drift_sigma": NONNEGATIVE,
+        "bias_sigma": NONNEGATIVE,
+        "drift_psd": NONNEGATIVE,
+        "bias_psd": NONNEGATIVE,
+        "g_sensitivity_sigma": NONNEGATIVE,
+        "heading_sigma": NONNEGATIVE,
+        "pseudorange_bias_sigma": NONNEGATIVE,
+        "range_rate_bias_sigma": NONNEGATIVE,
+        "tilt_noise_sigma": NONNEGATIVE,
+    },
+)

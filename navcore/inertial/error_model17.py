@@ -45,7 +45,14 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import as_finite_array, require_nonnegative, require_positive
+from navcore._validate import (
+    NONNEGATIVE,
+    POSITIVE,
+    as_finite_array,
+    check_public,
+    require_nonnegative,
+    require_positive,
+)
 from navcore.estimation.layout import StateBlock, StateLayout
 from navcore.frames import skew
 from navcore.trace import implements
@@ -228,3 +235,20 @@ def observability_rank(F: ArrayLike, H: ArrayLike, rtol: float = 1e-9) -> int:
         return 0
     s = np.linalg.svd(O_, compute_uv=False)
     return int(np.sum(s > rtol * s[0]))
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(
+    globals(),
+    {
+        "dt": POSITIVE,
+        "accel_noise": NONNEGATIVE,
+        "gyro_noise": NONNEGATIVE,
+        "accel_bias_walk": NONNEGATIVE,
+        "gyro_bias_walk": NONNEGATIVE,
+        "clock_bias_walk": NONNEGATIVE,
+        "clock_drift_walk": NONNEGATIVE,
+        "rtol": POSITIVE,
+    },
+)

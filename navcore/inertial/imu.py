@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field, fields, replace
 
-from navcore._validate import require_nonnegative, require_positive
+from navcore._validate import NONNEGATIVE, POSITIVE, check_public, require_nonnegative, require_positive
 from navcore.trace import implements
 from navcore.units import (
     ARCSEC,
@@ -195,3 +195,19 @@ def gyro_bias_calibrated_at_rest(spec: ImuSpec, averaging_time: float) -> ImuSpe
         name=f"{spec.name} (gyro bias calibrated over {averaging_time:g} s)",
         gyro_bias=spec.gyro_random_walk / math.sqrt(averaging_time),
     )
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(
+    globals(),
+    {
+        "averaging_time": POSITIVE,
+        "gyro_random_walk": NONNEGATIVE,
+        "accel_random_walk": NONNEGATIVE,
+        "root_psd_deg_per_h_per_sqrt_hz": NONNEGATIVE,
+        "root_psd_micro_g_per_sqrt_hz": NONNEGATIVE,
+        "accel_random_walk_micro_g_per_sqrt_hz": NONNEGATIVE,
+        "gyro_random_walk_deg_per_h_per_sqrt_hz": NONNEGATIVE,
+    },
+)

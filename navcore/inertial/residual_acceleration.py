@@ -53,7 +53,16 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq
 from scipy.special import erf
 
-from navcore._validate import as_finite_array, require_integer, require_probability, require_symmetric_psd
+from navcore._validate import (
+    COUNT,
+    NONNEGATIVE,
+    OPEN_PROBABILITY,
+    as_finite_array,
+    check_public,
+    require_integer,
+    require_probability,
+    require_symmetric_psd,
+)
 from navcore.frames import skew
 from navcore.trace import implements
 
@@ -194,7 +203,7 @@ def sphere_radius(cov: ArrayLike, p: float = 0.9) -> float:
 
 
 def sphere_radius_monte_carlo(cov: ArrayLike, p: float = 0.9, n: int = 200_000, seed: int = 0) -> float:
-    """Monte Carlo estimate of :func:`sphere_radius`: the ``p`` quantile of |x| over ``n`` draws."""
+    """Monte Carlo estimate of :func:`sphere_radius`: the ``p`` quantile of ``|x|`` over ``n`` draws."""
     require_probability("p", p)
     require_integer("n", n)
     C = require_symmetric_psd("cov", cov)
@@ -203,3 +212,8 @@ def sphere_radius_monte_carlo(cov: ArrayLike, p: float = 0.9, n: int = 200_000, 
     L = V * np.sqrt(np.clip(w, 0.0, None))
     x = rng.standard_normal((n, C.shape[0])) @ L.T
     return float(np.quantile(np.linalg.norm(x, axis=1), p))
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals(), {"n": COUNT, "p": OPEN_PROBABILITY, "radius": NONNEGATIVE})

@@ -36,7 +36,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import as_finite_array, require_positive
+from navcore._validate import POSITIVE, as_finite_array, check_public, require_positive
 from navcore.frames import quat_from_rotvec, radii_of_curvature
 from navcore.trace import implements
 from navcore.units import G0, OMEGA_EARTH
@@ -132,6 +132,7 @@ def transport_rate_ned(vel: ArrayLike, lat: ArrayLike, h: ArrayLike) -> Array:
     """Transport rate :math:`\\omega_{en}^n` (rad/s) of NED velocity ``vel`` (Groves Eq. 5.44)."""
     vel = np.asarray(vel, dtype=float)
     lat = np.asarray(lat, dtype=float)
+    h = np.asarray(h, dtype=float)
     R_N, R_E = radii_of_curvature(lat)
     vn, ve = vel[..., 0], vel[..., 1]
     return np.stack([ve / (R_E + h), -vn / (R_N + h), -ve * np.tan(lat) / (R_E + h)], axis=-1)
@@ -263,3 +264,8 @@ def strapdown_interval(
     q_end = quat_multiply_batch(state.quat, pref[:, -1])
     q_end = q_end / np.linalg.norm(q_end, axis=-1, keepdims=True)
     return NavState(x_end, v_all[:, -1], q_end), f_n
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals(), {"dt": POSITIVE, "gravity": POSITIVE})

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from navcore._validate import require_nonnegative, require_positive
+from navcore._validate import NONNEGATIVE, POSITIVE, check_public, require_nonnegative, require_positive
 from navcore.units import G0, WGS84_A
 
 __all__ = ["Segment", "Trajectory", "euler_to_dcm_stack", "fly", "straight_and_level"]
@@ -122,6 +122,8 @@ def fly(
         Start latitude and longitude (rad).
     h0, speed0, heading0, path_angle0 : float
         Start height (m), speed (m/s), heading and flight-path angle (rad).
+    g : float
+        Gravity magnitude (m/s^2) in the specific force.
 
     Examples
     --------
@@ -179,3 +181,8 @@ def straight_and_level(
 ) -> Trajectory:
     """Constant speed, heading and height (``speed = 0`` gives a stationary vehicle)."""
     return fly([Segment(duration)], dt=dt, lat0=lat0, lon0=lon0, h0=h0, speed0=speed, heading0=heading)
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals(), {"dt": POSITIVE, "duration": NONNEGATIVE, "g": POSITIVE})

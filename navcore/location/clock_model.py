@@ -2,7 +2,7 @@
 
 The phase error of the clock (in seconds, after removing the nominal period) is modelled as
 an independent-increment component (white frequency noise, a Wiener process) plus a
-fractional-Brownian "1/f" (flicker frequency) component with Hurst exponent ``rho_h``:
+fractional-Brownian "1/f" (flicker frequency) component with Hurst exponent ``rho_h``::
 
     E[(tau_n - tau_0)(tau_m - tau_0)] = s1^2 min(m, n) + s2^2/2 (m^2H + n^2H - |m - n|^2H)
                                          (+ tau_bar^2 m n for the raw second moment),
@@ -25,7 +25,16 @@ import math
 import numpy as np
 from scipy import integrate, special
 
-from navcore._validate import require_in_range, require_integer, require_nonnegative
+from navcore._validate import (
+    COUNT,
+    NONNEGATIVE,
+    POSITIVE,
+    Range,
+    check_public,
+    require_in_range,
+    require_integer,
+    require_nonnegative,
+)
 from navcore.trace import implements
 
 __all__ = [
@@ -132,3 +141,21 @@ def sample_clock_paths(
     L = np.linalg.cholesky(C + jitter * np.eye(C.shape[0]))
     rng = np.random.default_rng(seed)
     return rng.standard_normal((n_paths, C.shape[0])) @ L.T
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(
+    globals(),
+    {
+        "n_epochs": COUNT,
+        "n_paths": COUNT,
+        "rho_h": Range(0.0, 1.0),
+        "sigma0": NONNEGATIVE,
+        "sigma1": NONNEGATIVE,
+        "sigma2": NONNEGATIVE,
+        "tau_bar": POSITIVE,
+    },
+    # the defining integral has 1/(2 rho): rho_h = 0 is the closed form's limit only
+    mandelbrot_van_ness_constant_integral={"ranges": {"rho_h": Range(0.0, 1.0, low_open=True)}},
+)

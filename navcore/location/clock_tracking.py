@@ -26,15 +26,27 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
-from navcore._validate import as_finite_array, require_integer, require_nonnegative, require_positive
+from navcore._validate import (
+    COUNT,
+    COUNT0,
+    NONNEGATIVE,
+    POSITIVE,
+    as_finite_array,
+    check_public,
+    require_integer,
+    require_nonnegative,
+    require_positive,
+)
 from navcore.trace import implements
 
 __all__ = [
     "GainHistory",
     "TrackerMonteCarlo",
+    "TrackingErrors",
     "alpha_parameter",
     "convergence_steps",
     "convergence_steps_geometric",
@@ -48,6 +60,7 @@ __all__ = [
     "steady_state_gain",
     "three_satellite_clock_variance",
     "three_satellite_clock_variance_steady",
+    "tracking_position_errors",
 ]
 
 
@@ -136,7 +149,8 @@ class GainHistory:
     gamma : ndarray
         gamma_n; the clock-error variance is ``sigma^2 gamma_n`` (gamma_0 = 1/beta).
     prior_variance : ndarray
-        ``s_n``, variance of the predicted clock error (``nan`` at n = 0).
+        ``s_n``, variance of the predicted clock error; at n = 0, where nothing is predicted,
+        the least-squares variance ``sigma^2 gamma_0``.
     cross : ndarray
         ``d_n = -E[Delta_{n+1} xi_n]``, the correlation of the estimation error with the
         next clock increment (d_0 = 0).
@@ -160,10 +174,11 @@ def gain_recursion(beta: float, sigma: float, sigma0: float, n_steps: int) -> Ga
     require_nonnegative("sigma0", sigma0)
     n_steps = require_integer("n_steps", n_steps, minimum=0)
     gamma = np.empty(n_steps + 1)
-    prior = np.full(n_steps + 1, np.nan)
+    prior = np.empty(n_steps + 1)
     cross = np.zeros(n_steps + 1)
     gamma[0] = 1.0 / beta
     s2, q2 = sigma**2, sigma0**2
+    prior[0] = s2 * gamma[0]  # no prediction at n = 0: the least-squares variance
     for n in range(1, n_steps + 1):
         s = 2.0 * q2 + s2 * gamma[n - 1] + 2.0 * cross[n - 1]
         prior[n] = s
@@ -220,6 +235,10 @@ def convergence_steps_geometric(psi_value: float, rel: float) -> float:
     ``n = log(rel) / log(1 - psi) - 1``; for small psi about ``2.3 / psi - 1`` (rel = 0.1).
     """
     require_positive("psi_value", psi_value)
+    if not 0.0 < psi_value < 1.0:
+        raise ValueError(f"psi_value must lie in (0, 1), got {psi_value!r}")
+    if not 0.0 < rel < 1.0:
+        raise ValueError(f"rel must lie in (0, 1), got {rel!r}")
     return math.log(rel) / math.log1p(-psi_value) - 1.0
 
 
@@ -302,3 +321,117 @@ def simulate_tracker(
     return TrackerMonteCarlo(
         clock_mse=clock_mse, position_mse=pos_mse, position_norm_variance=pos_var, n_runs=n_runs
     )
+
+
+class TrackingErrors(NamedTuple):
+    """Position errors of multilateration with clock tracking (one row of an ATC-10 Table 4.3).
+
+    The three errors are root-mean-square position errors in the length unit of
+    ``c * sigma`` (see :func:`tracking_position_errors`).
+    """
+
+    alpha: float
+    psi: float
+    sd_least_squares: float
+    sd_tracking_limit: float
+    sd_first_three_satellite: float
+
+
+@implements("ATC10 4.5.27", "ATC10 4.5.35", "ATC10 Table 4.3")
+def tracking_position_errors(
+    trace_all: float,
+    s_all: float,
+    trace_three: float,
+    s_three: float,
+    beta: float,
+    sigma0: float,
+    sigma: float,
+    *,
+    c: float,
+    psi_value: float | None = None,
+) -> TrackingErrors:
+    """RMS position errors with clock tracking for any geometry and clock (a Table 4.3 row).
+
+    Parameters
+    ----------
+    trace_all, s_all : float
+        ``tr{(F'F)^-1}`` and the clock-direction term ``S`` of all the satellites in view
+        (dimensionless, F built from unit line-of-sight vectors; see
+        :mod:`navcore.location.multilateration`).
+    trace_three, s_three : float
+        The same for the three satellites that remain after the others are lost.
+    beta : float
+        The geometry parameter ``beta`` of ATC-10 Eq. 4.5.19 (dimensionless, ``> 0``).
+    sigma0 : float
+        Clock random-walk standard deviation per pulse interval (time unit of ``sigma``),
+        ``>= 0``.
+    sigma : float
+        Time-of-arrival noise standard deviation (a time unit, e.g. ns or s), ``> 0``.
+    c : float
+        Length per time unit of ``sigma``: the speed of light in the units wanted, e.g.
+        ``navcore.units.C`` (m/s) with ``sigma`` in seconds for metres, or the ATC-10
+        convention ``c = 1`` ft/ns with ``sigma`` in ns (physically 0.98357 ft/ns), which
+        makes position errors in ft equal the ns numbers. There is no default: the
+        convention is the caller's choice.
+    psi_value : float, optional
+        Use this steady-state gain factor instead of the exact ``psi(alpha)`` (to propagate
+        a printed, rounded psi).
+
+    Returns
+    -------
+    TrackingErrors
+        ``alpha`` (Eq. 4.5.32), ``psi`` (Eq. 4.5.34), and the RMS position errors: least
+        squares without tracking ``c sigma sqrt(tr + S/beta)``, the tracking limit
+        ``c sigma sqrt(tr + (psi/beta) S)`` (Eq. 4.5.35 corrected) and the first
+        three-satellite estimate ``c sigma sqrt(tr3 + gamma_{N+1} S3)`` with
+        ``gamma_{N+1} = [psi + (27/8) alpha (2/psi)] / beta`` (Eq. 4.5.27).
+
+    Raises
+    ------
+    ValueError
+        If a trace is not positive, an ``S`` negative, ``beta``, ``sigma`` or ``c`` not
+        positive, or ``sigma0`` negative (``sigma0 = 0`` gives psi = 0 and no first
+        three-satellite estimate, so it is rejected too).
+
+    Examples
+    --------
+    >>> row = tracking_position_errors(2.0, 1.5, 4.0, 2.0, 0.05, 5.0, 50.0, c=1.0)
+    >>> round(row.sd_least_squares, 2), round(row.sd_tracking_limit, 2)
+    (282.84, 110.68)
+    """
+    for name, value in (("trace_all", trace_all), ("trace_three", trace_three)):
+        require_positive(name, value)
+    for name, value in (("s_all", s_all), ("s_three", s_three)):
+        require_nonnegative(name, value)
+    require_positive("beta", beta)
+    require_positive("sigma0", sigma0)
+    require_positive("sigma", sigma)
+    require_positive("c", c)
+    a = alpha_parameter(sigma0, sigma, beta)
+    p = float(psi(a)) if psi_value is None else float(require_positive("psi_value", psi_value))
+    scale = c * sigma
+    sd0 = scale * math.sqrt(trace_all + s_all / beta)
+    sdn = scale * math.sqrt(trace_all + p / beta * s_all)
+    gamma_first = (p + 27.0 / 8.0 * a * 2.0 / p) / beta
+    sdn1 = scale * math.sqrt(trace_three + gamma_first * s_three)
+    return TrackingErrors(a, p, sd0, sdn, sdn1)
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(
+    globals(),
+    {
+        "n_steps": COUNT0,
+        "n_runs": COUNT,
+        "sigma": POSITIVE,
+        "sigma0": NONNEGATIVE,
+        "beta": POSITIVE,
+        "tau_bar": POSITIVE,
+        "trace": POSITIVE,
+        "clock_term": NONNEGATIVE,
+        "rel": POSITIVE,
+        "m_after": COUNT0,
+        "n_last": COUNT0,
+    },
+)

@@ -48,7 +48,15 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import as_finite_array, require_integer, require_positive, require_symmetric_psd
+from navcore._validate import (
+    COUNT,
+    POSITIVE,
+    as_finite_array,
+    check_public,
+    require_integer,
+    require_positive,
+    require_symmetric_psd,
+)
 from navcore.trace import implements
 from navcore.units import C
 
@@ -259,7 +267,7 @@ def linearized_location_error(H: ArrayLike, error: ArrayLike, W: ArrayLike | Non
         raise ValueError(f"error must have {H.shape[0]} rows to match H, got {e.shape[0]}")
     Wm = _weight(W, H.shape[0])
     HtW = H.T @ Wm
-    return np.linalg.solve(HtW @ H, HtW @ e)
+    return np.asarray(np.linalg.solve(HtW @ H, HtW @ e), dtype=float)
 
 
 @implements("WF 6")
@@ -335,8 +343,20 @@ def emitter_gauss_newton(
     Returns
     -------
     GaussNewtonResult
+        ``converged`` is True only if the step fell below ``tol_m`` *and* the Jacobian has
+        full column rank 4 there (the four unknowns are determined by the data).
+
+    Raises
+    ------
+    ValueError
+        If there are fewer than 4 measurements, the arrays disagree in length, or an input
+        is not finite; ``max_iter`` is bounded by ``navcore._validate.MAX_LOOP_COUNT``.
     """
     m = as_finite_array("measurements", measurements, ndim=1)
+    if m.size < 4:
+        raise ValueError(
+            f"measurements must hold at least 4 frequencies for the 4 unknowns [x, y, z, f0], got {m.size}"
+        )
     p = _track("position", position)
     v = _track("velocity", velocity)
     if p.shape[0] != m.size or v.shape[0] != m.size:
@@ -356,9 +376,15 @@ def emitter_gauss_newton(
         step = np.linalg.lstsq(HtW @ H, HtW @ r, rcond=None)[0]
         psi = psi + step
         if np.linalg.norm(step[:3]) < tol_m:
-            converged = True
+            # a zero step on a rank-deficient problem (repeated apertures) is not a solution
+            converged = bool(np.linalg.matrix_rank(H) == 4)
             break
     H = doppler_jacobian_emitter(psi[3], psi[:3], p, v)
     r = m - doppler_frequency(psi[3], psi[:3], p, v)
     HtW = H.T if Wm is None else H.T @ Wm
     return GaussNewtonResult(psi, H, r, HtW @ r, iterations, converged)
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals(), {"f0": POSITIVE, "max_iter": COUNT, "tol_m": POSITIVE})

@@ -28,7 +28,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from navcore._validate import as_finite_array, require_in_range, require_positive
+from navcore._validate import (
+    POSITIVE,
+    Range,
+    as_finite_array,
+    check_public,
+    require_in_range,
+    require_positive,
+)
 from navcore.trace import implements
 
 __all__ = [
@@ -221,9 +228,9 @@ def most_widely_spaced_triplet(
 ) -> tuple[tuple[int, int, int], float]:
     """Best three satellites inside the cone about the local vertical (0-based indices).
 
-    ``criterion``: ``"trace"`` minimises tr{(F3'F3)^-1}; ``"det"`` maximises |det F3|;
+    ``criterion``: ``"trace"`` minimises tr{(F3'F3)^-1}; ``"det"`` maximises ``|det F3|``;
     ``"angle"`` maximises the smallest pairwise angle between the lines of sight. Returns the
-    triplet and its score (trace, |det| or angle in degrees).
+    triplet and its score (trace, ``|det|`` or angle in degrees).
     """
     require_in_range("cone_half_angle_deg", cone_half_angle_deg, 0.0, 90.0)
     if criterion not in ("trace", "det", "angle"):
@@ -249,3 +256,17 @@ def most_widely_spaced_triplet(
     if best is None:
         raise ValueError("fewer than three satellites lie inside the cone")
     return best
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(
+    globals(),
+    {
+        "radius": POSITIVE,
+        "gm": POSITIVE,
+        "period_s": POSITIVE,
+        "trace": POSITIVE,
+        "cone_half_angle_deg": Range(0.0, 90.0, low_open=True),
+    },
+)

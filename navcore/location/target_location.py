@@ -21,7 +21,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import as_finite_array, require_nonnegative, require_symmetric_psd
+from navcore._validate import as_finite_array, check_public, require_nonnegative, require_symmetric_psd
 from navcore.frames import skew
 from navcore.trace import implements
 
@@ -83,3 +83,8 @@ def target_location_rss(
     p = require_nonnegative("position_rss_m", position_rss_m)
     out = np.hypot(np.asarray(p, dtype=float), pointing_error_m(misalignment_rad, range_m))
     return float(out) if np.ndim(out) == 0 else out
+
+
+# Every public function checks its arguments against their annotations (finite numbers,
+# numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
+check_public(globals())
