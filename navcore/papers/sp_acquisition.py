@@ -206,20 +206,6 @@ CLAIMS = [
         note="50 Hz x 0.1903 m = 9.51 m/s, printed as 10 m/s.",
     ),
     Claim(
-        id="SP-tab2.7-intervals",
-        paper="SP",
-        locator="Table 2.7",
-        quantity="code-phase intervals to be searched per satellite at reacquisition",
-        published=73.0,
-        unit="intervals",
-        compute=None,
-        tolerance=EXACT,
-        expected_status="not-reproducible",
-        note="Needs the flyby trajectory, jammer position and power, antenna pattern, satellite geometry "
-        "and the covariance history of each system, which Sec. 2.6.2 / Table 2.7 do not give; the table "
-        "is used as input (value shown: TC 10 nmi/h, SV 3).",
-    ),
-    Claim(
         id="SP-tab2.7-ordering",
         paper="SP",
         locator="Table 2.7",

@@ -116,14 +116,8 @@ _T27_NOTE = (
 def _t27_claim(system: str, col: int) -> Claim:
     label, key = _T27_SYSTEM[system]
     sat = spa.TABLE_2_7_SATELLITES[col]
-    # the printed cell as published value (typed once in sp_acquisition's input declaration)
-    cell = {
-        "tab27_tc10": (73, 64, 70, 42, 82, 70, 43),
-        "tab27_lc1": (8, 8, 8, 6, 9, 8, 6),
-        "tab27_tc1": (7, 6, 6, 5, 7, 6, 5),
-        "tab27_tc05": (6, 6, 6, 5, 6, 6, 5),
-        "tab27_tc02": (6, 5, 6, 5, 6, 5, 5),
-    }[spa.TABLE_2_7_ROWS[system]][col]
+    # the printed cell, declared once as a published input in sp_acquisition (read for the label only)
+    cell = spa.IN.nominal(spa.TABLE_2_7_ROWS[system])[col]
     value, tol = printed(str(cell))
     return Claim(
         id=f"SP-tab2.7-{key}-sv{sat}",
@@ -140,6 +134,7 @@ def _t27_claim(system: str, col: int) -> Claim:
         + " Across the assumed horizon gain (-10 to -2 dBic, ERP refitted) the counts span 15-16 (LC 1), "
         "19-38 (TC 10) and 7-12 (TC 1, 0.5, 0.2).",
         discussed_in=PAGE_FLYBY,
+        aliases=("SP-tab2.7-intervals",) if (key == "tc10" and sat == 3) else (),
     )
 
 
