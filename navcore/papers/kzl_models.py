@@ -31,7 +31,7 @@ from navcore.inertial.error_model17 import (
 from navcore.inertial.strapdown import earth_rate_ned, transport_rate_ned
 from navcore.ledger import EXACT, Claim, Erratum, InputSet, input_cache, printed, prose
 from navcore.papers.kzl_scenario import IN as SCEN
-from navcore.papers.kzl_scenario import kzl_imu, table1_scenario, table1_sky
+from navcore.papers.kzl_scenario import kzl_imu, table1_baselines_b, table1_scenario, table1_sky
 from navcore.units import DEG, DEG_PER_H, G0, WGS84_A
 
 #: Inputs of the Sec. 1-2 claims that the paper states without their ingredients.
@@ -152,7 +152,7 @@ def observability_ranks() -> dict[str, dict[int, int]]:
         los = table1_los(nu)
         out["tc"][nu] = observability_rank(F, code_doppler_rows(los))
         out["tc_att"][nu] = observability_rank(F, tc_attitude_observation_matrix(los, C, 0.0, 0.0))
-        out["tc_dd"][nu] = observability_rank(F, tc_dd_observation_matrix(los, C))
+        out["tc_dd"][nu] = observability_rank(F, tc_dd_observation_matrix(los, C, table1_baselines_b()))
     return out
 
 
@@ -167,7 +167,7 @@ def heading_observable(mode: str = "tc", nu: int = 8) -> bool:
     H = {
         "tc": lambda: code_doppler_rows(los),
         "tc_att": lambda: tc_attitude_observation_matrix(los, C, 0.0, 0.0),
-        "tc_dd": lambda: tc_dd_observation_matrix(los, C),
+        "tc_dd": lambda: tc_dd_observation_matrix(los, C, table1_baselines_b()),
     }[mode]()
     blocks, M = [], np.atleast_2d(H)
     for _ in range(F.shape[0]):
@@ -204,7 +204,7 @@ def _row_counts_eq17() -> bool:
 def _sequential_equals_batch() -> bool:
     """Eight satellites with DD: whitened sequential scalar updates vs one batch update."""
     C = table1_attitude()
-    H = tc_dd_observation_matrix(table1_los(8), C)
+    H = tc_dd_observation_matrix(table1_los(8), C, table1_baselines_b())
     n_code = 16
     R = scipy.linalg.block_diag(np.diag(np.tile([9.0, 0.0025], 8)), dd_covariance(8, 0.1))
     rng = np.random.default_rng(4)
