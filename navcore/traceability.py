@@ -170,7 +170,12 @@ def write_items_snapshot() -> Path:
     if missing:
         where = paper_text_path(missing[0])
         raise ValueError(f"the papers' texts are absent for {missing}: expected at {where}")
-    ITEMS_SNAPSHOT.write_text(json.dumps({p: sorted(v) for p, v in items.items()}, indent=1) + "\n")
+    data: dict[str, object] = {p: sorted(v) for p, v in items.items()}
+    if ITEMS_SNAPSHOT.exists():  # the printed-item inventory (navcore.coverage) is kept as it is
+        old = json.loads(ITEMS_SNAPSHOT.read_text())
+        if "printed" in old:
+            data["printed"] = old["printed"]
+    ITEMS_SNAPSHOT.write_text(json.dumps(data, indent=1, ensure_ascii=False) + "\n")
     return ITEMS_SNAPSHOT
 
 

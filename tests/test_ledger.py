@@ -1,6 +1,6 @@
 """The ledger machinery, on synthetic claims built in the test (not the paper registry).
 
-Oracle: the check rules of LEDGER.md written out by hand for each case.
+Oracle: the verdict rules of LEDGER.md written out by hand for each case.
 """
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ import pytest
 from navcore.ledger import Claim, Erratum, Tolerance, evaluate, printed, validate_registry
 from navcore.ledger.render import LedgerTable, json_dump
 
-TOL = Tolerance(reason="test", abs=0.5)
+TOL = Tolerance(reason="test", abs=0.5, policy="printed-digits")
 
 
 def make(**kw):
@@ -27,7 +27,7 @@ def make(**kw):
         unit="m",
         compute=lambda: 10.2,
         tolerance=TOL,
-        status="reproduced",
+        expected_status="reproduced",
         note="n",
     )
     base.update(kw)
@@ -61,47 +61,68 @@ def test_relations(relation, value, ok):
 
 
 def test_relative_tolerance():
-    c = make(published=1000.0, compute=lambda: 1040.0, tolerance=Tolerance(reason="r", rel=0.05))
+    c = make(
+        published=1000.0, compute=lambda: 1040.0, tolerance=Tolerance(reason="r", rel=0.05, policy="prose")
+    )
     assert evaluate(c).passes
-    c = make(published=1000.0, compute=lambda: 1060.0, tolerance=Tolerance(reason="r", rel=0.05))
+    c = make(
+        published=1000.0, compute=lambda: 1060.0, tolerance=Tolerance(reason="r", rel=0.05, policy="prose")
+    )
     assert not evaluate(c).passes
 
 
 def test_statement():
     assert evaluate(make(published=True, unit="statement", compute=lambda: 3 > 2)).passes
-    assert not evaluate(make(published=True, unit="statement", compute=lambda: 3 < 2)).passes
+    false = evaluate(make(published=True, unit="statement", compute=lambda: 3 < 2))
+    assert not false.passes and false.status == "discrepant"
 
 
 def test_discrepant_requires_erratum_and_oracle():
     with pytest.raises(ValueError, match="must name its erratum"):
-        make(status="discrepant", compute=lambda: 20.0)
+        make(expected_status="discrepant", compute=lambda: 20.0)
     with pytest.raises(ValueError, match="independent oracle"):
-        make(status="discrepant", erratum="WF-E1", compute=lambda: 20.0)
+        make(expected_status="discrepant", erratum="WF-E1", compute=lambda: 20.0)
 
 
 def test_discrepant_check():
     ot = Tolerance(reason="oracle", rel=1e-6)
     ok = make(
-        status="discrepant", erratum="WF-E1", compute=lambda: 20.0, oracle=lambda: 20.0, oracle_tolerance=ot
+        expected_status="discrepant",
+        erratum="WF-E1",
+        compute=lambda: 20.0,
+        oracle=lambda: 20.0,
+        oracle_tolerance=ot,
     )
     assert evaluate(ok).passes
     # the book's value drifts away from its oracle: a regression is caught
     drift = make(
-        status="discrepant", erratum="WF-E1", compute=lambda: 21.0, oracle=lambda: 20.0, oracle_tolerance=ot
+        expected_status="discrepant",
+        erratum="WF-E1",
+        compute=lambda: 21.0,
+        oracle=lambda: 20.0,
+        oracle_tolerance=ot,
     )
     assert not evaluate(drift).passes
     # the discrepancy vanished: the status must be re-examined
     gone = make(
-        status="discrepant", erratum="WF-E1", compute=lambda: 10.0, oracle=lambda: 10.0, oracle_tolerance=ot
+        expected_status="discrepant",
+        erratum="WF-E1",
+        compute=lambda: 10.0,
+        oracle=lambda: 10.0,
+        oracle_tolerance=ot,
     )
     assert not evaluate(gone).passes
 
 
 def test_not_reproducible_has_no_compute():
-    c = make(status="not-reproducible", compute=None)
+    c = make(expected_status="not-reproducible", compute=None)
     assert evaluate(c).passes and evaluate(c).reproduced is None
-    with pytest.raises(ValueError, match="has no compute"):
-        make(status="not-reproducible")
+    assert evaluate(c).status == "not-reproducible"
+    with pytest.raises(ValueError, match="never not-reproducible"):
+        make(expected_status="not-reproducible")
+    # nothing computed is not-reproducible, whatever was expected
+    assert evaluate(make(compute=None)).status == "not-reproducible"
+    assert not evaluate(make(compute=None)).passes
 
 
 def test_compute_failure_and_nan_fail_the_check():
@@ -118,7 +139,8 @@ def test_compute_failure_and_nan_fail_the_check():
         ("id", "XX-1", "must start with its paper key"),
         ("id", "SP-1", "must start with 'WF-'"),
         ("paper", "ZZ", "paper must be one of"),
-        ("status", "fine", "status must be one of"),
+        ("expected_status", "fine", "expected_status must be one of"),
+        ("kind", "guess", "kind must be one of"),
         ("relation", "~", "relation must be one of"),
         ("note", " ", "note must state"),
     ],
@@ -128,16 +150,25 @@ def test_claim_validation(field, value, match):
         make(**{field: value})
 
 
-def test_tolerance_needs_reason():
+def test_tolerance_needs_reason_and_policy():
     with pytest.raises(ValueError, match="reason"):
-        Tolerance(reason="", abs=1.0)
+        Tolerance(reason="", abs=1.0, policy="exact")
     with pytest.raises(ValueError, match="abs must be finite"):
-        Tolerance(reason="r", abs=-1.0)
+        Tolerance(reason="r", abs=-1.0, policy="prose")
+    with pytest.raises(ValueError, match="policy must be one of"):
+        Tolerance(reason="r", abs=1.0, policy="generous")
+    # a tolerance without a policy fails the claim's evaluation
+    ev = evaluate(make(tolerance=Tolerance(reason="r", abs=1.0)))
+    assert not ev.passes and "policy" in ev.detail
 
 
 def test_registry_validation():
     c = make(
-        status="discrepant", erratum="WF-E9", compute=lambda: 1.0, oracle=lambda: 1.0, oracle_tolerance=TOL
+        expected_status="discrepant",
+        erratum="WF-E9",
+        compute=lambda: 1.0,
+        oracle=lambda: 1.0,
+        oracle_tolerance=TOL,
     )
     with pytest.raises(ValueError, match="unknown erratum"):
         validate_registry([c], [])
@@ -165,14 +196,20 @@ def test_json_has_exactly_the_documented_fields():
         "published",
         "relation",
         "unit",
+        "kind",
+        "inputs",
         "reproduced",
+        "band",
         "tolerance",
         "status",
+        "expected_status",
         "note",
     }
     assert all(set(o) == fields for o in out)
     assert out[0]["published"] == 10.0 and out[0]["reproduced"] == 10.2
-    assert out[0]["tolerance"] == {"abs": 0.5, "rel": None, "reason": "test"}
+    assert out[0]["tolerance"] == {"abs": 0.5, "rel": None, "reason": "test", "policy": "printed-digits"}
+    assert out[0]["kind"] == "reproduction" and out[1]["kind"] == "statement"
+    assert out[0]["band"] is None and out[0]["inputs"] == []
     assert out[1]["published"] is True
 
 

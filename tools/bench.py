@@ -11,7 +11,9 @@ Usage: ``python tools/bench.py [--jobs N] [--standalone] [--models] [--out _buil
    and forced execution (a notebook without code cells still starts no computation), not
    strict (glued figures are missing, by construction). Its time is what the build costs
    without any of navcore's computation: Sphinx, MyST parsing and the themes.
-3. ``--standalone`` also executes every page alone in a fresh kernel, cold, as a reader who
+3. ``--ledger`` only times the whole ledger with its bands (uncached, filling a fresh
+   evaluation cache, and cached), without building the book; ``--models`` includes it.
+4. ``--standalone`` also executes every page alone in a fresh kernel, cold, as a reader who
    downloads one notebook would; ``--models`` times each paper's ledger evaluation and each
    figure in a fresh process.
 
@@ -134,13 +136,52 @@ def time_subprocess(code: str) -> tuple[float, str]:
     return time.perf_counter() - start, "ok" if proc.returncode == 0 else "error"
 
 
+def ledger_times() -> list[str]:
+    """The whole ledger (bands included) evaluated in a fresh process: uncached, then from its cache.
+
+    The first cached run fills a fresh on-disk evaluation cache (what the book build does once
+    per source change); the second reads it (what every later page and build does).
+    """
+    rows = ["| ledger, fresh process, all claims with their bands | seconds | status |", "|---|---:|---|"]
+    code = "from navcore import ledger; assert all(e.passes for e in ledger.evaluations())"
+    with tempfile.TemporaryDirectory(prefix="navcore-ledger-bench-") as tmp:
+        for label, env in (
+            ("uncached (NAVCORE_CACHE=off)", {"NAVCORE_CACHE": "off"}),
+            ("filling a fresh cache", {"NAVCORE_CACHE": tmp}),
+            ("cached (read from the cache)", {"NAVCORE_CACHE": tmp}),
+        ):
+            start = time.perf_counter()
+            proc = subprocess.run(
+                [sys.executable, "-c", code],
+                capture_output=True,
+                text=True,
+                cwd=ROOT,
+                env={**os.environ, **env},
+            )
+            seconds = time.perf_counter() - start
+            rows.append(f"| {label} | {seconds:.1f} | {'ok' if proc.returncode == 0 else 'error'} |")
+            print(rows[-1], flush=True)
+    return rows
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--jobs", type=int, default=None, help="workers for the build (default: the cores)")
     parser.add_argument("--standalone", action="store_true", help="also time each page alone, cold")
     parser.add_argument("--models", action="store_true", help="also time each ledger paper and figure")
+    parser.add_argument(
+        "--ledger",
+        action="store_true",
+        help="only time the whole ledger, uncached and cached (no book build)",
+    )
     parser.add_argument("--out", type=Path, default=ROOT / "_build" / "bench.md")
     args = parser.parse_args()
+    if args.ledger:
+        lines = ["# Ledger benchmark", "", *ledger_times()]
+        args.out.parent.mkdir(parents=True, exist_ok=True)
+        args.out.write_text("\n".join(lines) + "\n")
+        print("\n".join(lines))
+        return 0
     cores = os.cpu_count() or 1
     lines = [
         f"# Build benchmark ({cores} cores, jobs = {args.jobs or cores})",
@@ -189,6 +230,8 @@ def main() -> int:
             print(f"{seconds:8.1f} s  {rel} (alone)  {status}", flush=True)
     if args.models:
         from navcore import figures
+
+        lines += ["", *ledger_times()]
 
         lines += ["", "| model, fresh process | seconds | status |", "|---|---:|---|"]
         for paper in ("WF", "SP", "ATC10", "KZL"):

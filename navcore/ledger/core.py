@@ -244,6 +244,9 @@ class Erratum:
         Ids of the ledger claims it affects.
     discussed_in : str
         The book page (docname, e.g. ``"atc10/02-jamming"``) where it is discussed.
+    no_claim_reason : str
+        Why no ledger claim can check it (an erratum of wording with no number, say); every
+        erratum has a claim or this reason.
     """
 
     id: str
@@ -254,6 +257,7 @@ class Erratum:
     evidence: str
     claims: tuple[str, ...] = ()
     discussed_in: str = ""
+    no_claim_reason: str = ""
 
     def __post_init__(self) -> None:
         if self.paper not in PAPERS:

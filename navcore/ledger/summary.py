@@ -13,7 +13,17 @@ from typing import Any
 from navcore.ledger.core import KINDS, PAPERS, STATUSES, Evaluation
 from navcore.ledger.inputs import Input, get_input
 
-__all__ = ["count_table", "input_readers", "summary_text"]
+__all__ = [
+    "assumed_inputs_frame",
+    "convention_inputs_frame",
+    "count_table",
+    "fitted_inputs_frame",
+    "input_readers",
+    "kind_counts_frame",
+    "prose_words_frame",
+    "sensitivity_frame",
+    "summary_text",
+]
 
 
 def count_table(evals: Sequence[Evaluation]) -> list[dict[str, Any]]:
@@ -78,3 +88,137 @@ def summary_text(evals: Sequence[Evaluation]) -> str:
                 f"  {inp.name} = {inp.value!r} [{inp.low!r}, {inp.high!r}] {inp.unit}: {len(ids)} claims"
             )
     return "\n".join(lines)
+
+
+def _fmt(value: Any) -> str:
+    from navcore.ledger.render import format_value
+
+    if isinstance(value, tuple | list):
+        return "(" + ", ".join(_fmt(v) for v in value) + ")"
+    if isinstance(value, str):
+        return value
+    return format_value(value)
+
+
+def kind_counts_frame(evals: Sequence[Evaluation]) -> Any:
+    """Claims counted by paper, kind and derived verdict, as a DataFrame (for the book)."""
+    import pandas as pd
+
+    rows = count_table(evals)
+    cols = ["paper", "kind", *STATUSES, "total"]
+    frame = pd.DataFrame([{k: r[k] for k in cols} for r in rows], columns=cols)
+    return frame.rename(columns={"paper": "Paper", "kind": "Kind", "total": "Total"})
+
+
+def prose_words_frame() -> Any:
+    """The one table of prose words and the bands the ledger gives them."""
+    import pandas as pd
+
+    from navcore.ledger.core import PROSE_WORDS
+
+    return pd.DataFrame(
+        [{"Word in the paper": w, "Band the ledger uses": b["meaning"]} for w, b in PROSE_WORDS.items()]
+    )
+
+
+def _inputs_of(evals: Sequence[Evaluation], provenance: str) -> list[tuple[Input, list[Evaluation]]]:
+    by_id = {e.claim.id: e for e in evals}
+    return [(inp, [by_id[i] for i in ids]) for inp, ids in input_readers(evals, provenance)]
+
+
+def assumed_inputs_frame(evals: Sequence[Evaluation]) -> Any:
+    """Every assumed input read by ``evals``: nominal, range, reason and the claims it moves."""
+    import pandas as pd
+
+    rows = []
+    for inp, readers in _inputs_of(evals, "assumed"):
+        rows.append(
+            {
+                "Paper": inp.paper,
+                "Input": inp.quantity or inp.name.rsplit(".", 1)[-1].replace("_", " "),
+                "Nominal": _fmt(inp.value),
+                "Range": f"{_fmt(inp.low)} to {_fmt(inp.high)}",
+                "Unit": inp.unit,
+                "Reason": inp.reason,
+                "Claims": len(readers),
+            }
+        )
+    return pd.DataFrame(rows, columns=["Paper", "Input", "Nominal", "Range", "Unit", "Reason", "Claims"])
+
+
+def fitted_inputs_frame(evals: Sequence[Evaluation]) -> Any:
+    """Every fitted parameter: value, the claims it was fitted to, and the claims that read it."""
+    import pandas as pd
+
+    rows = [
+        {
+            "Paper": inp.paper,
+            "Parameter": inp.quantity or inp.name.rsplit(".", 1)[-1].replace("_", " "),
+            "Value": _fmt(inp.value),
+            "Unit": inp.unit,
+            "Fitted to": ", ".join(inp.fitted_to),
+            "Reason": inp.reason,
+            "Claims reading it": len(readers),
+        }
+        for inp, readers in _inputs_of(evals, "fitted")
+    ]
+    return pd.DataFrame(
+        rows, columns=["Paper", "Parameter", "Value", "Unit", "Fitted to", "Reason", "Claims reading it"]
+    )
+
+
+def convention_inputs_frame(evals: Sequence[Evaluation]) -> Any:
+    """Every convention: the reading used, the other reading and the reason."""
+    import pandas as pd
+
+    rows = [
+        {
+            "Paper": inp.paper,
+            "Convention": inp.quantity or inp.name.rsplit(".", 1)[-1].replace("_", " "),
+            "Reading used": _fmt(inp.value),
+            "Other reading": _fmt(inp.alternative),
+            "Unit": inp.unit,
+            "Reason": inp.reason,
+            "Claims": len(readers),
+        }
+        for inp, readers in _inputs_of(evals, "convention")
+    ]
+    return pd.DataFrame(
+        rows, columns=["Paper", "Convention", "Reading used", "Other reading", "Unit", "Reason", "Claims"]
+    )
+
+
+def sensitivity_frame(evals: Sequence[Evaluation]) -> Any:
+    """How far each claim moves across each assumed input's range (computed, one input at a time).
+
+    One row per (assumed input, claim): the claim's value at the low end, at the nominal and
+    at the high end of the range (or at each grid point), its band over all assumed inputs,
+    the printed value and the derived verdict.
+    """
+    import pandas as pd
+
+    from navcore.ledger.render import _published
+
+    rows = []
+    for inp, readers in _inputs_of(evals, "assumed"):
+        for e in readers:
+            row = dict(e.sensitivity).get(inp.name)
+            if row is None:
+                continue
+            unit = e.claim.unit if e.claim.unit != "statement" else ""
+            rows.append(
+                {
+                    "Input": inp.quantity or inp.name.rsplit(".", 1)[-1].replace("_", " "),
+                    "Claim": e.claim.id,
+                    "At low end": _fmt(row[0][1]),
+                    "At nominal": _fmt(e.reproduced),
+                    "At high end": _fmt(row[-1][1]),
+                    "Band": "" if e.band is None else f"{_fmt(e.band[0])} to {_fmt(e.band[1])}",
+                    "Printed": _published(e) + (f" {unit}" if unit else ""),
+                    "Verdict": e.status,
+                }
+            )
+    return pd.DataFrame(
+        rows,
+        columns=["Input", "Claim", "At low end", "At nominal", "At high end", "Band", "Printed", "Verdict"],
+    )

@@ -1,0 +1,293 @@
+"""Verdicts derived from evidence: inputs with provenance, bands, kinds, a-priori tolerances.
+
+Two groups of tests:
+
+* the derivation rules of LEDGER.md on synthetic claims and inputs built here (oracle: the
+  rules written out by hand for each case);
+* the real registry: every published input of each paper, perturbed in turn, moves the
+  claims that read it (and makes the ledger fail); a wrong computed value changes the
+  derived verdict, never the tolerance; no paper module memoises around the input registry.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import importlib.util
+import re
+import sys
+from pathlib import Path
+
+import pytest
+
+from navcore import ledger
+from navcore.ledger import Claim, InputSet, Tolerance, evaluate, input_cache, printed, prose
+from navcore.ledger.inputs import InputReadError, all_inputs, overriding, recording
+
+ROOT = Path(__file__).resolve().parents[1]
+TOL = Tolerance(reason="test", abs=0.5, policy="printed-digits")
+
+# one synthetic input set for the rule tests (a name no paper module uses)
+IN = InputSet("WF", "synthetic_test")
+IN.published("gain", 2.0, locator="Eq. (99)", unit="")
+IN.assumed("offset", 0.0, low=-1.0, high=3.0, reason="test range", unit="m")
+IN.assumed("wall", 0.0, low=-1.0, high=1.0, reason="every admissible value", admissible=True)
+IN.fitted("k", 5.0, fitted_to=("WF-test",), reason="solved from the printed value")
+IN.convention("ft_per_ns", 1.0, alternative=0.9836, reason="the paper's c = 1 ft/ns")
+
+
+def make(**kw):
+    base = dict(
+        id="WF-test",
+        paper="WF",
+        locator="Eq. (1)",
+        quantity="q",
+        published=10.0,
+        unit="m",
+        compute=lambda: 5.0 * IN.gain,
+        tolerance=TOL,
+        expected_status="reproduced",
+        note="n",
+    )
+    base.update(kw)
+    return Claim(**base)
+
+
+# --- the derivation rules ---------------------------------------------------------------
+
+
+def test_published_inputs_only_give_reproduced_or_discrepant():
+    ev = evaluate(make())
+    assert ev.status == "reproduced" and ev.passes
+    assert [i["name"] for i in ev.inputs] == ["WF.synthetic_test.gain"]
+    assert ev.inputs[0] == {
+        "name": "WF.synthetic_test.gain",
+        "provenance": "published",
+        "locator": "Eq. (99)",
+        "value": 2.0,
+    }
+    assert ev.band is None
+    assert evaluate(make(compute=lambda: 6.0 * IN.gain)).status == "discrepant"
+
+
+def test_assumed_input_band_decides_consistent_or_inconsistent():
+    # 8 + offset over [-1, 3] spans [7, 11]: 10 is inside the band, the nominal 8 is not
+    c = make(compute=lambda: 8.0 + IN.offset, expected_status="consistent")
+    ev = evaluate(c)
+    assert ev.band == (7.0, 11.0) and ev.status == "consistent" and ev.passes
+    assert ev.reproduced == 8.0  # the value at the nominal is shown whatever the verdict
+    assert dict(ev.sensitivity)["WF.synthetic_test.offset"] == ((-1.0, 7.0), (3.0, 11.0))
+    far = evaluate(make(compute=lambda: 20.0 + IN.offset, expected_status="inconsistent"))
+    assert far.status == "inconsistent" and far.band == (19.0, 23.0) and far.passes
+    # agreement at the nominal with an assumed input is consistent, never reproduced
+    assert evaluate(make(compute=lambda: 10.0 + IN.offset)).status == "consistent"
+
+
+def test_disagreement_over_every_admissible_input_is_a_discrepancy():
+    ev = evaluate(make(compute=lambda: 20.0 + IN.wall))
+    assert ev.status == "discrepant"
+
+
+def test_corners_of_two_assumed_inputs_enter_the_band():
+    ev = evaluate(make(compute=lambda: 10.0 + IN.offset * IN.wall, expected_status="consistent"))
+    # one at a time gives 10 only; the corners give -3 and 3 in the product
+    assert ev.band == (7.0, 13.0)
+
+
+def test_fitted_inputs_and_fit_and_cross_check_kinds_are_at_best_consistent():
+    assert evaluate(make(compute=lambda: 2.0 * IN.k)).status == "consistent"
+    assert evaluate(make(compute=lambda: 3.0 * IN.k)).status == "inconsistent"
+    assert evaluate(make(compute=lambda: 10.0, kind="fit")).status == "consistent"
+    assert evaluate(make(compute=lambda: 10.0, kind="cross-check")).status == "consistent"
+    assert evaluate(make(compute=lambda: 12.0, kind="cross-check")).status == "discrepant"
+
+
+def test_convention_shows_the_other_reading_in_the_note():
+    ev = evaluate(make(compute=lambda: 10.0 * IN.ft_per_ns))
+    assert ev.status == "reproduced"
+    assert ev.alternatives == (("WF.synthetic_test.ft_per_ns", 0.9836, 9.836),)
+    assert "Other reading of WF.synthetic_test.ft_per_ns (0.9836): 9.836." in ev.as_json()["note"]
+
+
+def test_expected_status_that_differs_from_the_derived_one_fails():
+    ev = evaluate(make(expected_status="consistent"))
+    assert ev.status == "reproduced" and not ev.passes and "differs from the expected" in ev.detail
+
+
+def test_prose_words_come_from_one_table():
+    assert prose("about").rel == 0.10 and prose("about").policy == "prose"
+    with pytest.raises(ValueError, match="word must be one of"):
+        prose("ish")
+
+
+# --- tolerances and statuses cannot be computed from the model ---------------------------
+
+
+def test_tolerance_is_resolved_before_compute_where_no_input_can_be_read():
+    calls = []
+
+    def tol_from_the_model():
+        calls.append("tol")
+        return printed(str(5.0 * IN.gain))[1]  # reads an input: forbidden
+
+    def compute():
+        calls.append("compute")
+        return 5.0 * IN.gain
+
+    ev = evaluate(make(tolerance=tol_from_the_model, compute=compute))
+    assert not ev.passes and "InputReadError" in ev.detail
+    assert calls == ["tol"]  # compute never ran
+
+
+def test_a_paper_module_cannot_read_inputs_at_import(tmp_path):
+    src = tmp_path / "guard_probe.py"
+    src.write_text(
+        "from navcore.ledger import InputSet\n"
+        "IN = InputSet('WF', 'guard_probe')\n"
+        "IN.published('x', 1.0, locator='Eq. (1)')\n"
+        "TOLERANCE_FROM_MODEL = 2 * IN.x\n"
+    )
+    spec = importlib.util.spec_from_file_location("navcore.papers.guard_probe", src)
+    module = importlib.util.module_from_spec(spec)
+    try:
+        with pytest.raises(InputReadError, match=r"while navcore\.papers\.guard_probe was imported"):
+            spec.loader.exec_module(module)
+    finally:
+        sys.modules.pop("navcore.papers.guard_probe", None)
+
+
+def test_input_cache_replays_reads_and_follows_overrides():
+    runs = []
+
+    @input_cache
+    def heavy(scale):
+        runs.append(scale)
+        return scale * IN.gain
+
+    with recording() as first:
+        assert heavy(3.0) == 6.0
+    with recording() as second:
+        assert heavy(3.0) == 6.0  # from the memo, but the read is still recorded
+    assert list(first) == list(second) == ["WF.synthetic_test.gain"] and runs == [3.0]
+    with overriding({"WF.synthetic_test.gain": 4.0}):
+        assert heavy(3.0) == 12.0
+    assert heavy(3.0) == 6.0 and runs == [3.0, 3.0]
+
+
+def test_input_declarations_are_checked():
+    s = InputSet("WF", "synthetic_checks")
+    with pytest.raises(ValueError, match="needs the locator"):
+        s.published("a", 1.0, locator="")
+    with pytest.raises(ValueError, match="plausible range"):
+        s.assumed("b", 1.0, low=None, high=2.0, reason="r")  # type: ignore[arg-type]
+    with pytest.raises(ValueError, match="must lie in"):
+        s.assumed("c", 5.0, low=0.0, high=2.0, reason="r")
+    with pytest.raises(ValueError, match="must name the claims"):
+        s.fitted("d", 1.0, fitted_to=(), reason="r")
+    with pytest.raises(ValueError, match="alternative"):
+        s.convention("e", 1.0, alternative=None, reason="r")
+    with pytest.raises(ValueError, match="not a registered input"):
+        with overriding({"WF.nowhere.x": 1.0}):
+            pass
+
+
+# --- the real registry -------------------------------------------------------------------
+
+
+def _perturbed(value):
+    if isinstance(value, bool):
+        return not value
+    if isinstance(value, int):
+        return value + 1
+    if isinstance(value, float):
+        return value * 1.1 if value else 0.1
+    return None
+
+
+def _moved(a, b) -> bool:
+    if a.status != b.status:
+        return True
+    if isinstance(a.reproduced, bool) or isinstance(b.reproduced, bool) or a.reproduced is None:
+        return a.reproduced != b.reproduced
+    x, y = float(a.reproduced), float(b.reproduced)
+    return abs(x - y) > 1e-12 * max(1.0, abs(x), abs(y))
+
+
+@pytest.mark.parametrize("paper", list(ledger.PAPERS))
+def test_each_published_input_moves_the_claims_that_read_it(paper):
+    """Change each published scalar input of the paper in turn (x1.1, +1 or negated).
+
+    At least one claim that read it must move (its value or its verdict), and across the
+    paper some perturbation must make the ledger fail. A claim's input list is recorded
+    from what its computation read, so a reader that never moves points at a read that
+    does not matter, and a claim missing from the readers would not be re-run.
+    """
+    base = {e.claim.id: e for e in ledger.evaluations(paper)}
+    readers: dict[str, list[str]] = {}
+    for e in base.values():
+        for i in e.inputs:
+            readers.setdefault(i["name"], []).append(e.claim.id)
+    published = [i for i in all_inputs(paper) if i.provenance == "published" and i.name in readers]
+    if not published:
+        pytest.skip(f"{paper} reads no published input yet")
+    silent, ledger_fails = [], False
+    for inp in published:
+        new = _perturbed(inp.value)
+        if new is None:
+            continue
+        moved = False
+        for cid in readers[inp.name]:
+            with overriding({inp.name: new}):
+                ev = evaluate(ledger.claim(cid), bands=False)
+            if _moved(ev, base[cid]):
+                moved = True
+                ledger_fails = ledger_fails or not ev.passes
+                break
+        if not moved:
+            silent.append(f"{inp.name} (read by {readers[inp.name]})")
+    assert not silent, "perturbing these published inputs moves none of their readers: " + "; ".join(silent)
+    assert ledger_fails, f"no perturbation of a {paper} published input makes the ledger fail"
+
+
+def _wrong(claim: Claim, tol: Tolerance):
+    if claim.is_statement:
+        return not claim.published
+    pub = float(claim.published)
+    far = 100.0 * tol.allowed(pub) + 10.0 * abs(pub) + 1.0
+    return pub - far if claim.relation in (">", ">=") else pub + far
+
+
+@pytest.mark.parametrize("paper", list(ledger.PAPERS))
+def test_a_wrong_value_changes_the_verdict_not_the_tolerance(paper):
+    """Substitute a value far outside the printed one: the verdict moves to a disagreement,
+    the tolerance (fixed before the computation) stays what it was."""
+    from navcore.ledger.core import resolve_tolerance
+
+    for c in ledger.claims(paper):
+        if c.compute is None:
+            continue
+        tol = resolve_tolerance(c)
+        wrong = _wrong(c, tol)
+        ev = evaluate(dataclasses.replace(c, compute=lambda w=wrong: w), bands=False)
+        assert ev.tolerance == tol, c.id
+        assert ev.status in ("discrepant", "inconsistent"), (c.id, ev.status)
+        assert not ev.passes, c.id
+
+
+def test_every_tolerance_has_a_policy_and_no_cross_check_or_fit_is_reproduced():
+    for e in ledger.evaluations():
+        assert e.tolerance is not None and e.tolerance.policy in ledger.POLICIES, e.claim.id
+        if e.status == "reproduced":
+            assert e.kind in ("reproduction", "statement"), e.claim.id
+            assert all(i["provenance"] in ("published", "convention") for i in e.inputs), e.claim.id
+        if e.status == "not-reproducible":
+            assert e.reproduced is None and e.claim.compute is None, e.claim.id
+
+
+def test_paper_modules_memoise_only_through_input_cache():
+    """functools caches would hide input reads from the ledger and ignore overrides."""
+    offenders = []
+    for path in sorted((ROOT / "navcore" / "papers").glob("*.py")):
+        text = path.read_text()
+        if re.search(r"^\s*@(functools\.)?(cache|lru_cache)\b", text, re.M):
+            offenders.append(path.name)
+    assert not offenders, f"use navcore.ledger.input_cache in {offenders}"
