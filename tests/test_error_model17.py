@@ -167,9 +167,7 @@ def test_dd_rows_match_finite_differences():
 
     def dd(dpsi, n):
         C = _perturbed(dpsi)
-        return np.array(
-            [double_difference_phase(sats[0], sats[n], r, r + C @ b) for b in BASELINES_B]
-        )
+        return np.array([double_difference_phase(sats[0], sats[n], r, r + C @ b) for b in BASELINES_B])
 
     for n in (1, 2):
         H = dd_observation_rows(u[0], u[n], C_TRUE, BASELINES_B)[:, L.slice("misalignment")]

@@ -177,9 +177,7 @@ def tc_attitude_observation_matrix(los_ned: ArrayLike, C_bn: ArrayLike, roll: fl
 
 
 @implements("KZL 17")
-def tc_dd_observation_matrix(
-    los_ned: ArrayLike, C_bn: ArrayLike, baselines_b: ArrayLike
-) -> Array:
+def tc_dd_observation_matrix(los_ned: ArrayLike, C_bn: ArrayLike, baselines_b: ArrayLike) -> Array:
     """Observation matrix of KZL Eq. 17 for ``nu`` satellites (first = master): code/Doppler rows
     for every satellite, then the DD rows satellite by satellite."""
     L = as_finite_array("los_ned", los_ned, ndim=2)

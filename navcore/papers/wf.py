@@ -14,8 +14,6 @@ fixtures, not inputs of the paper.
 
 from __future__ import annotations
 
-from functools import cache
-
 import numpy as np
 
 from navcore.estimation.federated import (
@@ -267,7 +265,7 @@ def mean_range() -> float:
 
 
 # ----------------------------------------------------------------------------- Section II
-@cache
+@input_cache
 def _ls_trial() -> dict[str, float]:
     """One nonlinear Gauss-Newton fit with frequency noise and aperture-velocity errors."""
     rng = np.random.default_rng(20240601)
@@ -292,7 +290,7 @@ def _ls_trial() -> dict[str, float]:
     }
 
 
-@cache
+@input_cache
 def ls_monte_carlo(trials: int = 400, sigma_v: float = 0.05) -> dict[str, np.ndarray]:
     """Seeded Monte Carlo of the nonlinear estimator vs the WF Eq. (6) covariance (book geometry).
 
@@ -321,7 +319,7 @@ def _eq6_mc_agrees() -> bool:
 
 
 # ----------------------------------------------------------------------------- Section III
-@cache
+@input_cache
 def _random_geometries(n: int = 2000) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     rng = np.random.default_rng(11)
     p = rng.normal(0, 5000, (n, 3))
@@ -367,7 +365,7 @@ def sensitivity_ratios() -> np.ndarray:
     return gv / gp
 
 
-@cache
+@input_cache
 def location_error_leverage() -> dict[str, np.ndarray]:
     """Emitter-position error per unit aperture error through WF Eq. (6), book geometry.
 
@@ -491,7 +489,7 @@ def _spd(rng: np.random.Generator, n: int) -> np.ndarray:
     return A @ A.T + 0.1 * np.eye(n)
 
 
-@cache
+@input_cache
 def theorem_margins(cases: int = 200) -> dict[str, float]:
     """Check WF Eqs. (21)-(23) on random correlated joint covariances (3 estimators, 3 states)."""
     rng = np.random.default_rng(21)
@@ -531,7 +529,7 @@ def _fusion_maps(Ps: list[np.ndarray]) -> list[np.ndarray]:
     return maps
 
 
-@cache
+@input_cache
 def theorem_monte_carlo(cases: int = 12, samples: int = 20_000, seed: int = 29) -> tuple[dict, ...]:
     """Seeded Monte Carlo of the theorem, WF Eqs. (18)-(23), on correlated local errors.
 
