@@ -37,7 +37,7 @@ from navcore.inertial.error_dynamics import (
 from navcore.inertial.imu import gyro_bias_calibrated_at_rest
 from navcore.inertial.trajectories import straight_and_level
 from navcore.ledger import Claim, input_cache, printed, prose
-from navcore.papers.kzl_scenario import IN, kzl_imu, table1_scenario
+from navcore.papers.kzl_scenario import IN, POS0_SIGMA_M, VEL0_SIGMA_MPS, kzl_imu
 from navcore.papers.kzl_simulation import PAGE3
 from navcore.units import DEG, G0
 
@@ -88,7 +88,6 @@ def standalone_covariance(initialise: bool = True, init_time: float | None = Non
         lon0=lon,
         h0=IN.height_m,
     )
-    sc = table1_scenario("ins", False)  # the Monte Carlo's initial GPS position and velocity errors
     imu = kzl_imu()
     heading_sigma = IN.crab_angle_deg * DEG
     if initialise:
@@ -98,8 +97,8 @@ def standalone_covariance(initialise: bool = True, init_time: float | None = Non
     P0 = initial_covariance(
         layout,
         src,
-        position_sigma=(sc.pos0_sigma,) * 3,
-        velocity_sigma=(sc.vel0_sigma,) * 3,
+        position_sigma=(POS0_SIGMA_M,) * 3,
+        velocity_sigma=(VEL0_SIGMA_MPS,) * 3,
         attitude_sigma=(0.0, 0.0, heading_sigma),
     )
     if initialise:
@@ -107,7 +106,7 @@ def standalone_covariance(initialise: bool = True, init_time: float | None = Non
             P0,
             layout,
             # Eq. 4 on a velocity with noise vel0_sigma per axis, on top of the crab angle
-            heading_sigma=float(np.hypot(heading_sigma, sc.vel0_sigma / speed)),
+            heading_sigma=float(np.hypot(heading_sigma, VEL0_SIGMA_MPS / speed)),
             lat=lat,
             C_bn=tr.C_bn[0],
             tilt_noise_sigma=kzl_imu().accel_random_walk / (G0 * np.sqrt(init_time)),

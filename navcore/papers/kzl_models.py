@@ -82,8 +82,8 @@ def table1_attitude() -> np.ndarray:
 
 def table1_heading_deg() -> float:
     """KZL Eq. 4 applied to the Table 1 ENU velocity."""
-    ve, vn, vu = SCEN.velocity_east_mps, SCEN.velocity_north_mps, SCEN.velocity_up_mps
-    return float(np.degrees(heading_from_velocity([vn, ve, -vu])))
+    ve, vn = SCEN.velocity_east_mps, SCEN.velocity_north_mps
+    return float(np.degrees(heading_from_velocity([vn, ve, 0.0])))
 
 
 def printed_levelling_level_roll_deg() -> float:

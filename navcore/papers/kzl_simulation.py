@@ -130,9 +130,10 @@ def _dd_best() -> bool:
     return bool(ok)
 
 
-def _pointing_requirement_met() -> bool:
+def pointing_accuracy_deg() -> float:
+    """Largest attitude error of TC + DD after 10 s (deg): RMS over runs or filter 1-sigma, any axis."""
     r = monte_carlo("tc_dd")
-    return bool(np.all(r.att_sigma[10:] < 0.5 * DEG) and np.all(r.rms("att_err")[10:] < 0.5 * DEG))
+    return float(max(np.max(r.att_sigma[10:]), np.max(r.rms("att_err")[10:])) / DEG)
 
 
 _C16 = printed("3", why="the paper prints an integer bound")
@@ -371,15 +372,17 @@ CLAIMS = [
         id="KZL-c3",
         paper="KZL",
         locator="Sec. 1",
-        quantity="about 0.5 deg pointing accuracy is achievable (footprint chasing requirement)",
-        published=True,
-        unit="statement",
-        kind="statement",
-        compute=_pointing_requirement_met,
-        tolerance=EXACT,
+        quantity="about 0.5 deg pointing accuracy is achievable (footprint chasing requirement): the "
+        "largest TC + DD attitude error after 10 s",
+        published=0.5,
+        relation="<=",
+        unit="deg",
+        kind="reproduction",
+        compute=pointing_accuracy_deg,
+        tolerance=prose("about", why="'about 0.5 deg pointing accuracy'"),
         expected_status="consistent",
-        note="TC + DD attitude RMS and filter 1-sigma below 0.5 deg on every axis after 10 s, with 2-8 "
-        "satellites. " + _MC_NOTE,
+        note="Largest TC + DD attitude RMS or filter 1-sigma on any axis after 10 s, with 2-8 "
+        "satellites. Was a statement (everything below 0.5 deg); now the number itself. " + _MC_NOTE,
         discussed_in=PAGE3,
     ),
 ]
