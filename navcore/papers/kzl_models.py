@@ -29,7 +29,7 @@ from navcore.inertial.error_model17 import (
     transition_exact,
 )
 from navcore.inertial.strapdown import earth_rate_ned, transport_rate_ned
-from navcore.ledger import EXACT, Claim, Erratum, InputSet, input_cache, printed, prose
+from navcore.ledger import EXACT, Claim, Erratum, InputSet, Tolerance, input_cache, printed, prose
 from navcore.papers.kzl_scenario import IN as SCEN
 from navcore.papers.kzl_scenario import kzl_imu, table1_baselines_b, table1_scenario, table1_sky
 from navcore.units import DEG, DEG_PER_H, G0, WGS84_A
@@ -92,21 +92,18 @@ def printed_levelling_level_roll_deg() -> float:
     return float(np.degrees(roll))
 
 
-def _printed_levelling_ok_for_specific_force() -> bool:
-    return abs(printed_levelling_level_roll_deg()) < 1e-6
-
-
-def _printed_levelling_oracle() -> bool:
-    """Independent check with scipy's Rotation: random attitudes, specific force R^T [0,0,-g]."""
+def _printed_levelling_oracle_deg() -> float:
+    """Independent: largest roll error (deg) of printed Eq. (3) on the specific force R^T [0, 0, -g]
+    of random near-level attitudes built with scipy's Rotation."""
     rng = np.random.default_rng(11)
-    ok = True
+    worst = 0.0
     for _ in range(20):
-        roll, pitch, yaw = rng.uniform(-0.5, 0.5, 3)
+        roll, pitch, yaw = rng.uniform(-0.01, 0.01, 3)
         R = Rotation.from_euler("ZYX", [yaw, pitch, roll]).as_matrix()
         f = R.T @ np.array([0.0, 0.0, -G0])
-        r_hat, p_hat = levelling_as_printed(f)
-        ok &= bool(abs(r_hat - roll) < 1e-9 and abs(p_hat - pitch) < 1e-9)
-    return ok
+        phi = np.arctan2(f[1], f[2])  # Eq. (3) typed from the paper, not the library function
+        worst = max(worst, abs(np.degrees(np.angle(np.exp(1j * (phi - roll))))))
+    return float(worst)
 
 
 def neglected_rates_deg_per_h() -> float:
@@ -231,26 +228,22 @@ def printed_correction_residual_deg() -> float:
     return float(np.degrees(np.linalg.norm(Rotation.from_matrix(dcm_from_quat(q) @ C.T).as_rotvec())))
 
 
-def _printed_correction_removes_error() -> bool:
-    return printed_correction_residual_deg() < 1e-6
-
-
-def _printed_correction_oracle() -> bool:
-    """Independent: scipy Rotation composes R_hat * Exp(-dpsi) (body side) and compares with R."""
+def _printed_correction_oracle() -> float:
+    """Independent: scipy Rotation composes R_hat * Exp(-dpsi) (body side); residual angle to R, deg."""
     R = Rotation.from_matrix(table1_attitude())
     R_hat = Rotation.from_rotvec(QCORR_DPSI) * R
     corrected = R_hat * Rotation.from_rotvec(-QCORR_DPSI)
-    return bool((corrected * R.inv()).magnitude() < 1e-8)
+    return float(np.degrees((corrected * R.inv()).magnitude()))
 
 
-def _printed_R_block_is_jacobian() -> bool:
-    """Is the body-rate-to-Euler-rate matrix the Euler-attitude Jacobian at the Table 1 attitude?"""
+def printed_R_block_error() -> float:
+    """Largest entry of (printed block R - Euler-attitude Jacobian) at the Table 1 attitude."""
     C = table1_attitude()
-    return bool(np.allclose(euler_rate_matrix_body(0.0, 0.0), euler_attitude_rows(C, 0.0, 0.0)[:, 6:9]))
+    return float(np.max(np.abs(euler_rate_matrix_body(0.0, 0.0) - euler_attitude_rows(C, 0.0, 0.0)[:, 6:9])))
 
 
-def _printed_R_block_oracle() -> bool:
-    """Independent: central finite differences of euler_from_dcm(expm([d x]) C)."""
+def _printed_R_block_oracle() -> float:
+    """Independent: the printed block against central finite differences of euler_from_dcm(expm([d x]) C)."""
     C = table1_attitude()
     eps = 1e-6
     J = np.column_stack(
@@ -263,7 +256,7 @@ def _printed_R_block_oracle() -> bool:
             for e in np.eye(3)
         ]
     )
-    return bool(np.allclose(euler_rate_matrix_body(0.0, 0.0), J, atol=1e-6))
+    return float(np.max(np.abs(euler_rate_matrix_body(0.0, 0.0) - J)))
 
 
 @input_cache
@@ -299,18 +292,21 @@ def _geometry_rank_is_min_nu_4() -> bool:
     return ranks == [min(nu, 4) for nu in range(1, 9)]
 
 
-def _rotation_vector_equals_euler() -> bool:
-    """Is d(roll, pitch, heading)/d(rotation vector) close to I at the Table 1 attitude?"""
-    return bool(np.allclose(euler_attitude_rows(table1_attitude(), 0.0, 0.0)[:, 6:9], np.eye(3), atol=0.1))
+def rotation_vector_euler_mismatch() -> float:
+    """Largest entry of d(roll, pitch, heading)/d(rotation vector) - I at the Table 1 attitude."""
+    return float(np.max(np.abs(euler_attitude_rows(table1_attitude(), 0.0, 0.0)[:, 6:9] - np.eye(3))))
 
 
-def _rotation_vector_oracle() -> bool:
-    """Independent: scipy Rotation - Euler angles of Exp(d) R minus those of R, for a 0.1 deg d."""
+def _rotation_vector_oracle() -> float:
+    """Independent: scipy Rotation - Euler-angle change of Exp(d) R for small d along each n-axis,
+    per unit d, minus the identity (largest entry)."""
     R = Rotation.from_matrix(table1_attitude())
-    d = np.array([1e-3, 0.0, 0.0])
     e0 = R.as_euler("ZYX")[::-1]
-    e1 = (Rotation.from_rotvec(d) * R).as_euler("ZYX")[::-1]
-    return bool(np.allclose(e1 - e0, d, atol=1e-4))
+    cols = []
+    for d in 1e-6 * np.eye(3):
+        e1 = (Rotation.from_rotvec(d) * R).as_euler("ZYX")[::-1]
+        cols.append((e1 - e0) / 1e-6)
+    return float(np.max(np.abs(np.column_stack(cols) - np.eye(3))))
 
 
 def satellite_to_aircraft_speed() -> float:
@@ -440,17 +436,22 @@ CLAIMS = [
         id="KZL-eq2-3-levelling",
         paper="KZL",
         locator="Eqs. (2)-(3)",
-        quantity="the printed levelling formulas recover roll and pitch from the specific force of Eq. (8)",
-        published=True,
-        unit="statement",
-        compute=_printed_levelling_ok_for_specific_force,
-        tolerance=EXACT,
+        quantity="roll that the printed levelling formula (Eq. 3) returns for the level Table 1 attitude, "
+        "from the specific force of Eq. (8)",
+        published=0.0,
+        unit="deg",
+        kind="reproduction",
+        compute=printed_levelling_level_roll_deg,
+        tolerance=printed("0", why="Table 1 prints roll 0")[1],
         expected_status="discrepant",
         note="A level IMU measures f = [0, 0, -g]; printed Eq. (3) returns roll = 180 deg. The formulas "
-        "hold for a = -f.",
+        "hold for a = -f. Was the truth value 'the formulas recover roll and pitch'; now the roll "
+        "itself, so a wrong value is caught by the oracle.",
         erratum="KZL-E1-levelling-sign",
-        oracle=_printed_levelling_oracle,
-        oracle_tolerance=EXACT,
+        oracle=_printed_levelling_oracle_deg,
+        oracle_tolerance=Tolerance(
+            abs=1e-6, reason="the printed roll is off by 180 deg at every attitude; round-off", policy="exact"
+        ),
         discussed_in=PAGE1,
     ),
     Claim(
@@ -558,33 +559,39 @@ CLAIMS = [
         id="KZL-eq13-R",
         paper="KZL",
         locator="Eq. (13), block R",
-        quantity="the body-rate-to-Euler-rate matrix is the attitude block of the observation matrix",
-        published=True,
-        unit="statement",
-        compute=_printed_R_block_is_jacobian,
+        quantity="largest entry of (printed block R - Euler-attitude Jacobian) at the Table 1 attitude",
+        published=0.0,
+        unit="",
+        kind="reproduction",
+        compute=printed_R_block_error,
         tolerance=EXACT,
         expected_status="discrepant",
-        note="At heading 90 deg the true block is J_b^-1 R_n^b, a north/east swap of J_b^-1 = I.",
+        note="At heading 90 deg the true block is J_b^-1 R_n^b, a north/east swap of J_b^-1 = I: entries "
+        "differ by 1. Was the truth value 'R is the attitude block'; now the difference itself.",
         erratum="KZL-E4-euler-rows",
         oracle=_printed_R_block_oracle,
-        oracle_tolerance=EXACT,
+        oracle_tolerance=Tolerance(
+            abs=1e-6, reason="central differences with a 1e-6 rad step", policy="exact"
+        ),
         discussed_in=PAGE2,
     ),
     Claim(
         id="KZL-qcorr",
         paper="KZL",
         locator="Sec. 3.5",
-        quantity="q+ = q- (x) q^n (right product) removes an estimated n-frame attitude error",
-        published=True,
-        unit="statement",
-        compute=_printed_correction_removes_error,
+        quantity="attitude error left by q+ = q- (x) q^n (right product) after an estimated (1, -0.5, 2) deg "
+        "n-frame error, at the Table 1 attitude",
+        published=0.0,
+        unit="deg",
+        kind="reproduction",
+        compute=printed_correction_residual_deg,
         tolerance=EXACT,
         expected_status="discrepant",
-        note="At the Table 1 attitude a (1, -0.5, 2) deg error leaves 1.58 deg after the printed "
-        "correction; the left product leaves nothing.",
+        note="The printed correction should remove the error (0 deg); it leaves 1.58 deg. The left "
+        "product leaves nothing. Was the truth value 'removes the error'; now the residual itself.",
         erratum="KZL-E6-quaternion-order",
         oracle=_printed_correction_oracle,
-        oracle_tolerance=EXACT,
+        oracle_tolerance=Tolerance(abs=1e-6, reason="round-off of two rotation libraries", policy="exact"),
         discussed_in=PAGE2,
     ),
     Claim(
@@ -639,17 +646,22 @@ CLAIMS = [
         id="KZL-c15",
         paper="KZL",
         locator="Sec. 3.5",
-        quantity="for small rotations the rotation-vector components equal the Euler angles",
-        published=True,
-        unit="statement",
-        compute=_rotation_vector_equals_euler,
+        quantity="for small rotations the rotation-vector components equal the Euler angles: largest entry "
+        "of d(Euler angles)/d(rotation vector) - I at the Table 1 attitude",
+        published=0.0,
+        unit="",
+        kind="reproduction",
+        compute=rotation_vector_euler_mismatch,
         tolerance=EXACT,
         expected_status="discrepant",
         note="True only near zero heading. At the Table 1 heading of 90 deg a north rotation is a "
-        "pitch change and an east rotation a roll change (the Jacobian of Eq. (13)).",
+        "pitch change and an east rotation a roll change (the Jacobian of Eq. (13)): entries differ by 1. "
+        "Was a truth value; now the mismatch itself.",
         erratum="KZL-E4-euler-rows",
         oracle=_rotation_vector_oracle,
-        oracle_tolerance=EXACT,
+        oracle_tolerance=Tolerance(
+            abs=1e-5, reason="forward differences with a 1e-6 rad step", policy="exact"
+        ),
         discussed_in=PAGE2,
     ),
 ]

@@ -26,7 +26,18 @@ from navcore.estimation.federated import (
     minkowski_trace_bound,
     optimal_weights,
 )
-from navcore.ledger import EXACT, Claim, Erratum, InputSet, figure_reading, input_cache, printed, prose
+from navcore.ledger import (
+    EXACT,
+    Claim,
+    Erratum,
+    InputSet,
+    Tolerance,
+    figure_reading,
+    input_cache,
+    printed,
+    prose,
+)
+from navcore.ledger import monte_carlo as mc_tolerance
 from navcore.location.emitter import (
     doppler_frequency,
     doppler_gradient_position,
@@ -392,26 +403,44 @@ def location_error_leverage() -> dict[str, np.ndarray]:
 
 
 # ----------------------------------------------------------------------------- Section IV.A-C
-def _eq13_printed_innovation_consistent() -> bool:
-    """Run WF Eq. (13) literally (innovation y_a - x) and test its error against Eq. (14)."""
+#: Test case of the Eq. (13) check: accelerometer 1 mm/s^2, sigma_L = 200 sigma_a, a gentle
+#: 0.5 m/s^2 sinusoidal manoeuvre at 0.2 Hz over 5000 steps.
+_EQ13_SA, _EQ13_STEPS, _EQ13_PATHS = 1e-3, 5000, 200
+
+
+def _eq13_manoeuvre(ts: float) -> np.ndarray:
+    return 0.5 * np.sin(2 * np.pi * 0.2 * ts * np.arange(_EQ13_STEPS))
+
+
+def eq13_printed_error_ratio() -> float:
+    """Run WF Eq. (13) literally (innovation y_a - x): final RMS error over sqrt(P_DL(k/k)) of Eq. (14)."""
     rng = np.random.default_rng(3)
-    sa, sL = 1e-3, 200 * 1e-3
     ts = IN.ts
-    ss = accelerometer_steady_state_isotropic(sa, ts, sL)
+    ss = accelerometer_steady_state_isotropic(_EQ13_SA, ts, IN.sigma_l_per_sigma_a * _EQ13_SA)
     K = ss.gain
-    n, paths = 5000, 200
-    v = np.zeros(paths)
-    x = rng.normal(0, np.sqrt(ss.posterior), paths)
-    acc = 0.5 * np.sin(2 * np.pi * 0.2 * ts * np.arange(n))  # a gentle manoeuvre
-    for k in range(n):
+    v = np.zeros(_EQ13_PATHS)
+    x = rng.normal(0, np.sqrt(ss.posterior), _EQ13_PATHS)
+    acc = _eq13_manoeuvre(ts)
+    for k in range(_EQ13_STEPS):
         v = v + acc[k] * ts
-        y_a = acc[k] + rng.normal(0, sa, paths)
+        y_a = acc[k] + rng.normal(0, _EQ13_SA, _EQ13_PATHS)
         x = x + y_a * ts
         x = x + K * (y_a - x)  # as printed
-    return bool(
-        abs(np.std(x - v) / np.sqrt(ss.posterior) - 1) < 0.1
-        and abs(np.mean(x - v)) < 3 * np.sqrt(ss.posterior)
-    )
+    return float(np.sqrt(np.mean((x - v) ** 2)) / np.sqrt(ss.posterior))
+
+
+def _eq13_oracle() -> float:
+    """Independent: the printed recursion is the linear filter x_k = (1-K) x_{k-1} + ((1-K) T + K) a_k;
+    its noise-free error at the end (scipy.signal.lfilter) over sqrt(P_DL(k/k))."""
+    import scipy.signal
+
+    ts = IN.ts
+    ss = accelerometer_steady_state_isotropic(_EQ13_SA, ts, IN.sigma_l_per_sigma_a * _EQ13_SA)
+    K = ss.gain
+    acc = _eq13_manoeuvre(ts)
+    x = scipy.signal.lfilter([(1 - K) * ts + K], [1.0, -(1 - K)], acc)
+    v = np.cumsum(acc) * ts
+    return float(abs(x[-1] - v[-1]) / np.sqrt(ss.posterior))
 
 
 #: SI dimension exponents (length, time) for the dimensional checks of Eqs. (13) and (24).
@@ -423,25 +452,23 @@ def _dim_product(*dims: tuple[int, int]) -> tuple[int, int]:
     return (sum(d[0] for d in dims), sum(d[1] for d in dims))
 
 
-def _eq13_dimension_oracle() -> bool:
-    """Oracle: the printed innovation subtracts a velocity from an acceleration (dimensions)."""
-    return _ACCEL == _SPEED
-
-
-def _eq24_literal_consistent() -> bool:
-    """WF Eq. (24) 'P_N P_N^T = sigma_N^2 I' read with Eq. (11): is it dimensionally consistent?"""
-    variance = _dim_product(_SPEED, _SPEED)  # entries of P_N, (m/s)^2
-    return _dim_product(variance, variance) == variance  # P_N P_N^T against sigma_N^2
-
-
-def _eq24_literal_oracle() -> bool:
-    """Oracle: the literal reading makes sigma_DN depend on the unit of velocity (m/s vs cm/s)."""
+def eq24_literal_unit_ratio() -> float:
+    """WF Eq. (24) read literally (P_N P_N^T = sigma_N^2 I, so P_N = sigma_N I): sigma_DN computed with
+    velocities in cm/s, converted to m/s, over sigma_DN computed in m/s (1 for a consistent reading)."""
 
     def sigma_dn(scale: float) -> float:  # velocities expressed in units of 1/scale m/s
-        p_n = np.sqrt(IN.sigma_n * scale) ** 2  # P_N = sigma_N I from P_N P_N^T = sigma_N^2 I
-        return np.sqrt(p_n) / scale
+        p_n = IN.sigma_n * scale  # P_N = sigma_N I (in the chosen unit) from P_N P_N^T = sigma_N^2 I
+        return float(np.sqrt(p_n) / scale)
 
-    return bool(np.isclose(sigma_dn(1.0), sigma_dn(100.0)))
+    return sigma_dn(100.0) / sigma_dn(1.0)
+
+
+def _eq24_oracle() -> float:
+    """Independent derivation: the literal reading gives sigma_DN ~ sqrt(unit), so a unit 100 times
+    smaller scales it by 100^(-1/2); equivalently P_N P_N^T is in (m/s)^4 against sigma_N^2 in (m/s)^2."""
+    variance = _dim_product(_SPEED, _SPEED)
+    assert _dim_product(variance, variance) != variance
+    return 100.0**-0.5
 
 
 def _joint_for_eq20() -> tuple[list[np.ndarray], np.ndarray]:
@@ -458,21 +485,21 @@ def _printed_joint(J: np.ndarray) -> np.ndarray:
     return Jp
 
 
-def _eq20_printed_matches_truth() -> bool:
-    Ps, J = _joint_for_eq20()
+def eq20_printed_block_error() -> float:
+    """Largest entry of (printed block (2, 3) - the L-G cross-covariance), over the largest entry of J."""
+    _, J = _joint_for_eq20()
     Jp = _printed_joint(J)
-    if not np.allclose(Jp, Jp.T):
-        return False
-    return bool(np.allclose(fused_error_covariance(Ps, Jp), fused_error_covariance(Ps, J)))
+    return float(np.max(np.abs(Jp[3:6, 6:9] - J[3:6, 6:9])) / np.max(np.abs(J)))
 
 
-def _eq20_oracle() -> bool:
-    """Oracle: seeded Monte Carlo; the sample (L, G) cross-covariance against the printed P_NG."""
+def _eq20_oracle() -> float:
+    """Oracle: seeded Monte Carlo of the stacked errors; the printed P_NG against the sample (L, G)
+    cross-covariance, over the largest entry of J."""
     _, J = _joint_for_eq20()
     rng = np.random.default_rng(18)
     E = rng.multivariate_normal(np.zeros(9), J, 200_000)
     S = np.cov(E.T)
-    return bool(np.allclose(S[3:6, 6:9], J[0:3, 6:9], atol=0.05 * np.abs(J).max()))
+    return float(np.max(np.abs(J[0:3, 6:9] - S[3:6, 6:9])) / np.max(np.abs(J)))
 
 
 def _random_joint(rng: np.random.Generator, n: int, N: int, rho: float) -> np.ndarray:
@@ -641,7 +668,7 @@ def bound_tightness(rho: float, kind: str = "isotropic") -> float:
     return minkowski_trace_bound(Ps) / float(np.trace(fused_error_covariance(Ps, J)))
 
 
-def _remark2_generic_oracle() -> bool:
+def _remark2_generic_oracle() -> float:
     """Oracle: Monte Carlo of completely correlated generic errors, sample trace vs the bound."""
     rng = np.random.default_rng(9)
     L = [np.linalg.cholesky(_spd(rng, 3)) for _ in range(3)]
@@ -650,8 +677,7 @@ def _remark2_generic_oracle() -> bool:
     infos = [np.linalg.inv(P) for P in Ps]
     PD = np.linalg.inv(sum(infos))
     fused = sum(w @ (PD @ Y @ Li).T for Y, Li in zip(infos, L, strict=True))
-    ratio = minkowski_trace_bound(Ps) / np.trace(np.cov(fused.T))
-    return bool(ratio <= 1.01)
+    return float(minkowski_trace_bound(Ps) / np.trace(np.cov(fused.T)))
 
 
 def _fusion_is_wls() -> bool:
@@ -1110,35 +1136,51 @@ CLAIMS = [
         id="WF-eq13-innovation",
         paper="WF",
         locator="Eq. (13)",
-        quantity="the printed filter (innovation y_a - x) attains the Eq. (14) covariance",
-        published=True,
-        unit="statement",
-        compute=_eq13_printed_innovation_consistent,
-        tolerance=EXACT,
+        quantity="the printed filter (innovation y_a - x) attains the Eq. (14) covariance: its RMS error "
+        "over sqrt(P_DL(k/k))",
+        published=1.0,
+        unit="",
+        kind="reproduction",
+        compute=eq13_printed_error_ratio,
+        tolerance=mc_tolerance(
+            rel=0.15, runs=_EQ13_PATHS, why="3 standard errors (1/sqrt(2 N) = 5 %) of an RMS over 200 paths"
+        ),
         expected_status="discrepant",
         erratum="WF-E1-eq13-innovation",
-        oracle=_eq13_dimension_oracle,
-        oracle_tolerance=EXACT,
-        note="Seeded simulation of the printed recursion (200 paths, 5000 steps, sigma_a = 1e-3 m/s^2); "
-        "its error is not consistent with P_DL(k/k). Oracle: acceleration and velocity have "
-        "different dimensions.",
+        oracle=_eq13_oracle,
+        oracle_tolerance=Tolerance(
+            rel=0.02, reason="the oracle leaves out the accelerometer noise (below 1 % here)", policy="exact"
+        ),
+        note="Seeded simulation of the printed recursion (200 paths, 5000 steps, sigma_a = 1e-3 m/s^2, a "
+        "0.5 m/s^2 manoeuvre): its error is about 80 times sqrt(P_DL(k/k)), because the printed innovation "
+        "subtracts a velocity from an acceleration (the estimate follows the acceleration). Oracle: the "
+        "same recursion as a linear filter, noise-free, by scipy. Was the truth value 'attains Eq. (14)'; "
+        "now the ratio itself.",
         discussed_in=DOCS["IV"],
     ),
     Claim(
         id="WF-eq20-PNG",
         paper="WF",
         locator="Eq. (20)",
-        quantity="the printed joint matrix (block (2,3) = P_NG) gives the fused error covariance",
-        published=True,
-        unit="statement",
-        compute=_eq20_printed_matches_truth,
+        quantity="the printed joint matrix (block (2,3) = P_NG) is the covariance of the stacked errors: "
+        "largest difference of its block (2,3) from the L-G cross-covariance, relative to the largest entry",
+        published=0.0,
+        unit="",
+        kind="reproduction",
+        compute=eq20_printed_block_error,
         tolerance=EXACT,
         expected_status="discrepant",
         erratum="WF-E3-eq20-PNG",
         oracle=_eq20_oracle,
-        oracle_tolerance=EXACT,
-        note="A seeded random 9x9 joint covariance; the printed matrix is not symmetric. Oracle: the "
-        "Monte Carlo L-G cross-covariance differs from P_NG.",
+        oracle_tolerance=mc_tolerance(
+            abs=0.02,
+            runs=200_000,
+            why="about 6 sampling standard deviations (sqrt(2/n) of the largest entry) of a sample "
+            "cross-covariance",
+        ),
+        note="A seeded random 9x9 joint covariance; with P_NG in block (2,3) the matrix is not symmetric "
+        "and not the covariance of the stacked errors. Oracle: the Monte Carlo L-G cross-covariance. Was "
+        "a truth value; now the difference itself.",
         discussed_in=DOCS["IV"],
     ),
     Claim(
@@ -1243,17 +1285,22 @@ CLAIMS = [
         id="WF-rem2-generic",
         paper="WF",
         locator="Remark (ii)",
-        quantity="the bound is exact (within 1 %) for completely correlated errors, general covariances",
-        published=True,
-        unit="statement",
-        compute=lambda: bound_tightness(1.0, "generic") < 1.01,
+        quantity="the bound is exact for completely correlated errors, general covariances: trace of the "
+        "bound over the true trace",
+        published=1.0,
+        unit="",
+        kind="reproduction",
+        compute=lambda: bound_tightness(1.0, "generic"),
         tolerance=EXACT,
         expected_status="discrepant",
         erratum="WF-E4-remark2-correlated",
         oracle=_remark2_generic_oracle,
-        oracle_tolerance=EXACT,
-        note="Seeded non-commuting covariances, completely correlated errors: the ratio stays above 1. "
-        "Oracle: a Monte Carlo of the fused error.",
+        oracle_tolerance=mc_tolerance(
+            rel=0.02, runs=100_000, why="about 4 sampling standard deviations of a trace from 100 000 draws"
+        ),
+        note="Seeded non-commuting covariances, completely correlated errors: the ratio stays above 1 "
+        "(about 1.25). Oracle: a Monte Carlo of the fused error. Was the truth value 'exact within 1 %'; "
+        "now the ratio itself.",
         discussed_in=DOCS["IV"],
     ),
     # Section IV.D
@@ -1329,17 +1376,20 @@ CLAIMS = [
         id="WF-eq24-PN",
         paper="WF",
         locator="Eq. (24)",
-        quantity="P_N P_N^T = sigma_N^2 I is consistent with Eq. (11)",
-        published=True,
-        unit="statement",
-        compute=_eq24_literal_consistent,
+        quantity="P_N P_N^T = sigma_N^2 I is consistent with Eq. (11): sigma_DN of the literal reading "
+        "computed in cm/s over the same computed in m/s",
+        published=1.0,
+        unit="",
+        kind="reproduction",
+        compute=eq24_literal_unit_ratio,
         tolerance=EXACT,
         expected_status="discrepant",
         erratum="WF-E2-eq24-PN",
-        oracle=_eq24_literal_oracle,
-        oracle_tolerance=EXACT,
-        note="Dimensions: (m/s)^4 against (m/s)^2. Oracle: the literal reading's sigma_DN changes when "
-        "velocities are expressed in cm/s instead of m/s.",
+        oracle=_eq24_oracle,
+        oracle_tolerance=Tolerance(abs=1e-12, reason="round-off", policy="exact"),
+        note="A consistent reading gives the same sigma_DN in any velocity unit (ratio 1); the literal "
+        "reading gives 0.1. Oracle: the derivation (P_N P_N^T in (m/s)^4 against sigma_N^2 in (m/s)^2, "
+        "so sigma_DN scales as the square root of the unit). Was a truth value; now the ratio itself.",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
