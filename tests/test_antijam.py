@@ -114,3 +114,19 @@ def test_free_inertial_accel_bias_growth() -> None:
 def test_bad_input_raises(call, match) -> None:
     with pytest.raises(ValueError, match=match):
         call()
+
+
+def test_sp_exact_impact_covariance_matches_monte_carlo() -> None:
+    """Oracle: the seeded Monte Carlo of the same reduced navigator (4000 runs, seed 11) for the SP
+    PGM claims' exact CEP, at a power with an outage (100 W) and one without (1 W)."""
+    from navcore.ledger.inputs import recording
+    from navcore.papers import sp_antijam as spj
+
+    with recording():
+        model = spj.navigator_model()
+        for p in (1.0, 100.0):
+            for arch in ("TC", "DI"):
+                sig = spj.fix_sigma_m(p, arch, "wideband")
+                res = aj.simulate_impact_errors(model, sig, runs=4000, seed=11)
+                mc = aj.cep_from_horizontal_errors(res.impact_errors_m)
+                assert spj.model_cep(arch, p) == pytest.approx(mc, rel=0.04), (p, arch)

@@ -25,6 +25,7 @@ def test_design_points(k: int, p_dl: float, p_d: float) -> None:
 def test_printed_281_argument_misses_table_21() -> None:
     """Oracle: the printed (2.8.1) reads p_f = Q(d/sqrt(2) - Phi^-1(p_d)), i.e. the bound at 2x;
     solving the bound with that p_f (an independent root search) lands 3.01 dB below the print."""
+    g = paper.geometry()
     for k, p_dl, text, rel in paper.TABLE_2_1:
         if rel != "=" or k == 1000:
             continue
@@ -32,7 +33,7 @@ def test_printed_281_argument_misses_table_21() -> None:
 
         def f(x_db: float, p_d: float = p_d, k: int = k) -> float:
             x_eff = 2 * 10 ** (x_db / 10)
-            return float(jm.log_ambiguous_detection_bound(x_eff, p_d, k)) - math.log(0.01)
+            return float(jm.log_ambiguous_detection_bound(x_eff, p_d, k, 0.0, g)) - math.log(0.01)
 
         from scipy import optimize
 
@@ -46,10 +47,11 @@ def test_printed_281_argument_misses_table_21() -> None:
 
 def test_ceilings() -> None:
     """Oracle: closed forms at J -> inf: 0.05 P_DL N_T for K <= 100 and the K = 1000 values."""
+    g = paper.geometry()
     for k, p_dl in ((1, 0.88), (10, 0.999), (100, 0.999)):
-        c = math.exp(jm.log_ambiguous_detection_ceiling(paper.design_p_d(p_dl, k), k))
+        c = math.exp(jm.log_ambiguous_detection_ceiling(paper.design_p_d(p_dl, k), k, 0.0, g))
         assert c == pytest.approx(0.05 * p_dl, rel=3e-3)
-    c = math.exp(jm.log_ambiguous_detection_ceiling(paper.design_p_d(0.98, 1000), 1000))
+    c = math.exp(jm.log_ambiguous_detection_ceiling(paper.design_p_d(0.98, 1000), 1000, 0.0, g))
     assert c == pytest.approx(0.002128, rel=1e-3)
     assert 0.9954 < paper.k1000_critical_p_dl() < 0.9955
 
@@ -65,11 +67,18 @@ def test_table11_k100_would_need_pdl_098() -> None:
 def test_pulse_energy_input_matches_printed_power_and_duration() -> None:
     """Oracle: hand arithmetic, 30 dBW = 1000 W, 1000 W x 10 us = 10 mJ, and 10 mJ x 10 MHz = 50 dBW.
 
-    The thresholds use GEOMETRY.pulse_energy_j (the printed 10 mJ); it must equal the printed P0 tau.
+    The thresholds read the one published pulse input IN.pulse_energy_j (the printed 10 mJ); it must
+    equal the printed P0 tau, and changing it must move every ERP by the same dB.
     """
-    assert paper.PULSE_POWER_DBW == 30.0 and paper.PULSE_DURATION_S == 10e-6
-    assert paper.GEOMETRY.pulse_energy_j == pytest.approx(1000.0 * 10e-6, rel=1e-15)
-    assert paper.GEOMETRY.energy_bandwidth_dbw == pytest.approx(50.0, abs=1e-12)
+    from navcore.ledger.inputs import overriding
+
+    assert paper.IN.pulse_power_dbw == 30.0 and paper.IN.pulse_duration_s == 10e-6
+    assert paper.geometry().pulse_energy_j == pytest.approx(1000.0 * 10e-6, rel=1e-15)
+    assert paper.geometry().energy_bandwidth_dbw == pytest.approx(50.0, abs=1e-12)
+    base = paper.required_erp_dbw("ambiguous", 0.999, 10)
+    with overriding({"ATC10.jamming.pulse_energy_j": 20e-3}):
+        moved = paper.required_erp_dbw("ambiguous", 0.999, 10)
+    assert moved - base == pytest.approx(10 * math.log10(2), abs=1e-9)
 
 
 def test_erp_by_transmission_length_against_direct_oracle() -> None:
@@ -91,16 +100,17 @@ def test_erp_by_transmission_length_against_direct_oracle() -> None:
 def test_threshold_helpers_for_the_errata() -> None:
     """Oracle: re-evaluating the bounds at the returned thresholds (an independent forward check)."""
     # without the P_DL factor: 1/2 N G^(K-1) F = 0.01 N_T at the returned ERP
+    full = paper.geometry()
     for p_dl, k in ((0.88, 1), (0.999, 100)):
         x = 10 ** ((paper.adl_erp_dbw_without_pdl_factor(p_dl, k) - 50.0) / 10)
         p_d = paper.design_p_d(p_dl, k)
-        log_n = float(jm.log_ambiguous_detection_bound(x, p_d, k)) - float(
+        log_n = float(jm.log_ambiguous_detection_bound(x, p_d, k, 0.0, full)) - float(
             jm.log_detection_lower_bound(p_d, k)
         )
         assert math.exp(log_n) == pytest.approx(0.01, rel=1e-8)
         assert paper.adl_erp_dbw_without_pdl_factor(p_dl, k) < paper.required_erp_dbw("ambiguous", p_dl, k)
     # half the samples: every count of (B.6) and (C.14) halves, the ERP scale does not
-    half, full = paper.HALF_SAMPLES_GEOMETRY, paper.GEOMETRY
+    half, full = paper.half_samples_geometry(), paper.geometry()
     assert half.samples_per_period == full.samples_per_period / 2
     assert half.samples_per_delay_window == pytest.approx(full.samples_per_delay_window / 2, rel=1e-15)
     assert half.samples_per_track_window == pytest.approx(full.samples_per_track_window / 2, rel=1e-15)
@@ -109,3 +119,32 @@ def test_threshold_helpers_for_the_errata() -> None:
     assert n == pytest.approx(0.01, rel=1e-8)
     # the p_f at the K = 1000, P_DL = 0.999 threshold, against the catalog's independent 0.27067
     assert math.exp(paper.threshold_log_pf(0.999, 1000)) == pytest.approx(0.27067, abs=5e-5)
+
+
+def test_errata_numbers_match_the_model() -> None:
+    """Oracle: the model itself. The errata are declared before anything is computed, so their
+    numbers are typed; this test recomputes each and checks the text."""
+    text = {e.id: e.finding + " " + e.evidence for e in paper.ERRATA}
+    indep = text[paper.E_INDEP]
+    for p_dl in (0.88, 0.999):
+        assert f"{paper.required_erp_dbw('ambiguous', p_dl, 100):.1f}" in indep
+        assert f"{paper.adl_erp_dbw_half_samples(p_dl, 100):.1f}" in indep
+    assert math.isinf(paper.adl_erp_dbw_half_samples(0.999, 1000)) and "no finite threshold" in indep
+    g = paper.geometry()
+    assert f"{g.max_speed_m_s * g.repetition_s / 299792458.0 * 1e6:.3f} us" in text[paper.E_C2]
+    assert f"at most {paper.max_pdl_factor_shift_db():.2f} dB" in text[paper.E_258]
+    assert math.isinf(paper.adl_erp_dbw_without_pdl_factor(0.98, 1000))
+    a16 = text[paper.E_A16]
+    for p_dl in (0.88, 0.98, 0.999):
+        assert f"p_d = {paper.design_p_d(p_dl, 1000):.3f} for P_DL = {p_dl}" in a16
+    assert f"p_d^4 <= {paper.design_p_d(0.999, 1000) ** 4:.4f}" in a16
+    assert f"p_f = {math.exp(paper.threshold_log_pf(0.999, 1000)):.2f}" in a16
+    f = -math.expm1(float(jm.log_false_list_factor(paper.threshold_log_pf(0.999, 1000), g)))
+    assert f"differs from 1 by {f:.0e}" in a16
+    t21 = text[paper.E_T21]
+    assert f"{paper.required_erp_dbw('ambiguous', 0.88, 100):.1f} dBW" in t21
+    assert f"{paper.required_erp_dbw('ambiguous', 0.999, 1000):.1f} dBW" in t21
+    steps = text[paper.E_10DB]
+    for p_dl in (0.88, 0.999):
+        e1, e10, e100 = (paper.required_erp_dbw("ambiguous", p_dl, k) for k in (1, 10, 100))
+        assert f"{e10 - e1:.1f}" in steps and f"{e100 - e10:.1f}" in steps

@@ -98,9 +98,9 @@ def test_convergence_estimate_vs_geometric():
         while s < 0.9 / p:
             n, t = n + 1, t * (1 - p)
             s += t
-        assert abs(convergence_steps_geometric(p) - n) <= 1.0
+        assert abs(convergence_steps_geometric(p, 0.1) - n) <= 1.0
     h = gain_recursion(0.0543, 50.0, 5.0, 3000)
-    assert convergence_steps(h) == 10
+    assert convergence_steps(h, 0.1) == 10
 
 
 def test_tracker_monte_carlo_matches_recursion():
@@ -109,7 +109,7 @@ def test_tracker_monte_carlo_matches_recursion():
     U = rng.normal(size=(6, 3)) + np.array([0.0, 0.0, 3.0])
     U /= np.linalg.norm(U, axis=1, keepdims=True)
     sigma, sigma0, N = 50.0, 10.0, 40
-    mc = simulate_tracker(U, U[:3], sigma, sigma0, N, 10, 20_000, seed=11)
+    mc = simulate_tracker(U, U[:3], sigma, sigma0, N, 10, 20_000, seed=11, tau_bar=1.0e9)
     ones = np.ones(6)
     beta = float(ones @ ones - ones @ U @ np.linalg.solve(U.T @ U, U.T @ ones))
     h = gain_recursion(beta, sigma, sigma0, N)

@@ -14,7 +14,7 @@ from navcore.detection.neyman_pearson import detection_index_from_jammer_ratio
 from navcore.figures import atc10_jamming as fj
 from navcore.papers import atc10_jamming as paper
 
-GEOM = jm.SurveillanceGeometry()
+GEOM = paper.geometry()  # the paper's scenario: the library has no default geometry
 
 
 def _mp_log_one_minus_power(p: mpmath.mpf, n: float) -> mpmath.mpf:
@@ -117,7 +117,7 @@ def test_ambiguous_bound_matches_mpmath(x_db: float, k: int, p_d: float) -> None
         f = _mp_log_one_minus_power(pf, 2e7) + 3 * _mp_log_one_minus_power(pf, 9.6e5)
         g = _mp_log_one_minus_power(pf, 2e7) + 3 * _mp_log_one_minus_power(pf, GEOM.samples_per_track_window)
         expected = float(mpmath.log(mpmath.mpf("0.05") * pdl) + (k - 1) * g + f)
-    got = float(jm.log_ambiguous_detection_bound(10 ** (x_db / 10), p_d, k))
+    got = float(jm.log_ambiguous_detection_bound(10 ** (x_db / 10), p_d, k, 0.0, GEOM))
     assert got == pytest.approx(expected, rel=1e-11)
 
 
@@ -174,7 +174,7 @@ def test_figure_sweeps_are_finite_exact_and_monotone(
     p_d = paper.design_p_d(p_dl, k, t)
     fn = jm.log_false_location_bound if quantity == "false" else jm.log_ambiguous_detection_bound
     with np.errstate(all="raise"):
-        log_bound = np.asarray(fn(10 ** (x_db / 10), p_d, k, t, paper.GEOMETRY))
+        log_bound = np.asarray(fn(10 ** (x_db / 10), p_d, k, t, GEOM))
         log10_fig = fj.log10_bound(quantity, x_db, p_dl, k, t)
     assert log_bound.shape == x_db.shape
     assert np.all(np.isfinite(log_bound)) and np.all(np.isfinite(log10_fig))
@@ -186,7 +186,7 @@ def test_figure_sweeps_are_finite_exact_and_monotone(
         assert np.all(np.exp(log_bound[representable]) > 0)
     # the bound stays below its J -> inf ceiling, which the top of every K > 1 range approaches
     ceil = (jm.log_false_location_ceiling if quantity == "false" else jm.log_ambiguous_detection_ceiling)(
-        p_d, k, t, paper.GEOMETRY
+        p_d, k, t, GEOM
     )
     assert np.all(log_bound <= ceil + 1e-12 * abs(ceil))
     for i in (0, len(x_db) // 2, len(x_db) - 1):
@@ -202,26 +202,30 @@ def test_bounds_approach_ceiling_as_jamming_grows() -> None:
             (jm.log_false_location_bound, jm.log_false_location_ceiling),
             (jm.log_ambiguous_detection_bound, jm.log_ambiguous_detection_ceiling),
         ):
-            assert float(fn(1e12, p_d, k)) == pytest.approx(ceil(p_d, k), abs=1e-4)
-    assert math.exp(jm.log_false_location_ceiling(0.9, 1)) == pytest.approx(0.9, rel=1e-15)
+            assert float(fn(1e12, p_d, k, 0.0, GEOM)) == pytest.approx(ceil(p_d, k, 0.0, GEOM), abs=1e-4)
+    assert math.exp(jm.log_false_location_ceiling(0.9, 1, 0.0, GEOM)) == pytest.approx(0.9, rel=1e-15)
 
 
 def test_threshold_root_and_infinite_case() -> None:
     """Oracle: re-evaluating the bound at the returned root gives the level; ceiling < level gives inf."""
     p_d = jm.filter_detection_probability_for_bound(0.88, 100)
-    x_db = jm.jammer_ratio_threshold_db("ambiguous", 0.01, p_d, 100)
-    assert math.exp(float(jm.log_ambiguous_detection_bound(10 ** (x_db / 10), p_d, 100))) == pytest.approx(
-        0.01, rel=1e-8
-    )
+    x_db = jm.jammer_ratio_threshold_db("ambiguous", 0.01, p_d, 100, 0.0, GEOM)
+    assert math.exp(
+        float(jm.log_ambiguous_detection_bound(10 ** (x_db / 10), p_d, 100, 0.0, GEOM))
+    ) == pytest.approx(0.01, rel=1e-8)
     p_d = jm.filter_detection_probability_for_bound(0.98, 1000)
-    assert jm.jammer_ratio_threshold_db("ambiguous", 0.01, p_d, 1000) == math.inf
-    assert jm.jammer_ratio_threshold_db("false", 0.9, 0.9, 1) == math.inf
+    assert jm.jammer_ratio_threshold_db("ambiguous", 0.01, p_d, 1000, 0.0, GEOM) == math.inf
+    assert jm.jammer_ratio_threshold_db("false", 0.9, 0.9, 1, 0.0, GEOM) == math.inf
     with pytest.raises(ValueError):
-        jm.jammer_ratio_threshold_db("other", 0.01, 0.9, 1)
+        jm.jammer_ratio_threshold_db("other", 0.01, 0.9, 1, 0.0, GEOM)
     with pytest.raises(ValueError):
         jm.detection_lower_bound(0.5, 0)
 
 
 def test_erp_conversion() -> None:
-    """Oracle: 10 mJ x 10 MHz = 1e5 W = 50 dBW."""
-    assert float(jm.jammer_erp_dbw(0.0)) == pytest.approx(50.0, abs=1e-12)
+    """Oracle: 10 mJ x 10 MHz = 1e5 W = 50 dBW (both arguments required: no paper default)."""
+    assert float(jm.jammer_erp_dbw(0.0, 10e-3, 10e6)) == pytest.approx(50.0, abs=1e-12)
+    with pytest.raises(TypeError):
+        jm.jammer_erp_dbw(0.0)  # type: ignore[call-arg]
+    with pytest.raises(TypeError):
+        jm.SurveillanceGeometry()  # type: ignore[call-arg]

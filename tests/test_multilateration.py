@@ -132,4 +132,4 @@ def test_bad_input_raises():
     with pytest.raises(ValueError, match="F must"):
         beta_parameter(np.ones((2, 3)))
     with pytest.raises(ValueError, match="criterion"):
-        most_widely_spaced_triplet(*_geometry(), criterion="bogus")
+        most_widely_spaced_triplet(*_geometry(), 90.0, criterion="bogus")

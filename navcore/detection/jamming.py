@@ -74,6 +74,9 @@ _LOG_HUGE = 700.0  # above this ln u, e^-u is 0 and ln(1 - e^-u) = 0
 class SurveillanceGeometry:
     """System parameters of the satellite multilateration surveillance (ATC-10 Sec. 2).
 
+    Every field is required: the paper's scenario is the preset
+    :func:`navcore.papers.atc10_jamming.geometry`, built from its published inputs.
+
     Parameters
     ----------
     bandwidth_hz : float
@@ -90,12 +93,12 @@ class SurveillanceGeometry:
         Signal pulse energy ``E = P0 tau``.
     """
 
-    bandwidth_hz: float = 10e6
-    repetition_s: float = 1.0
-    differential_delay_s: float = 24e-3
-    max_speed_m_s: float = 600 * units.MPH
-    airborne_fraction: float = 0.1
-    pulse_energy_j: float = 10e-3
+    bandwidth_hz: float
+    repetition_s: float
+    differential_delay_s: float
+    max_speed_m_s: float
+    airborne_fraction: float
+    pulse_energy_j: float
 
     def __post_init__(self) -> None:
         for name in (
@@ -321,7 +324,7 @@ def _log_pf(jammer_ratio: ArrayLike, p_d: float) -> FloatArray:
 
 @implements("ATC10 2.5.5")
 def log_false_location_bound(
-    jammer_ratio: ArrayLike, p_d: float, k: int, t: float = 0.0, geometry: SurveillanceGeometry | None = None
+    jammer_ratio: ArrayLike, p_d: float, k: int, t: float, geometry: SurveillanceGeometry
 ) -> FloatArray:
     """``ln(N_FL / N_T) = ln(1 - N/N_T) + (K t + 1) ln F(p_f)`` (ATC-10 Eqs. 2.5.5, 2.8.3).
 
@@ -336,10 +339,10 @@ def log_false_location_bound(
     t : float
         Fraction in the rule "more than ``K t`` lists non-empty"; ``K t + 1`` is used as a
         real exponent, as printed (``floor(K t) + 1`` would be the tighter count).
-    geometry : SurveillanceGeometry, optional
-        System parameters (the paper's by default).
+    geometry : SurveillanceGeometry
+        System parameters (no default: a paper's scenario is a preset of its paper module).
     """
-    g = geometry or SurveillanceGeometry()
+    g = geometry
     k = _require_count(k)
     log_f = log_false_list_factor(_log_pf(jammer_ratio, p_d), g)
     return math.log1p(-g.airborne_fraction) + (k * t + 1.0) * log_f
@@ -347,11 +350,11 @@ def log_false_location_bound(
 
 @implements("ATC10 2.5.12")
 def log_ambiguous_detection_bound(
-    jammer_ratio: ArrayLike, p_d: float, k: int, t: float = 0.0, geometry: SurveillanceGeometry | None = None
+    jammer_ratio: ArrayLike, p_d: float, k: int, t: float, geometry: SurveillanceGeometry
 ) -> FloatArray:
     """``ln(N_ADL / N_T) = ln(N / (2 N_T)) + ln P_DL + (K - 1) ln G(p_f) + ln F(p_f)``
     (ATC-10 Eqs. 2.5.12, 2.7.3, 2.8.4; ``P_DL = p_d**4`` at ``K = 1``)."""
-    g = geometry or SurveillanceGeometry()
+    g = geometry
     k = _require_count(k)
     log_pf = _log_pf(jammer_ratio, p_d)
     log_pdl = float(log_detection_lower_bound(p_d, k, t))
@@ -363,20 +366,16 @@ def log_ambiguous_detection_bound(
     )
 
 
-def log_false_location_ceiling(
-    p_d: float, k: int, t: float = 0.0, geometry: SurveillanceGeometry | None = None
-) -> float:
+def log_false_location_ceiling(p_d: float, k: int, t: float, geometry: SurveillanceGeometry) -> float:
     """Limit of :func:`log_false_location_bound` as ``J -> inf`` (``p_f -> p_d``)."""
-    g = geometry or SurveillanceGeometry()
+    g = geometry
     log_f = log_false_list_factor(math.log(p_d), g)
     return float(math.log1p(-g.airborne_fraction) + (_require_count(k) * t + 1.0) * log_f)
 
 
-def log_ambiguous_detection_ceiling(
-    p_d: float, k: int, t: float = 0.0, geometry: SurveillanceGeometry | None = None
-) -> float:
+def log_ambiguous_detection_ceiling(p_d: float, k: int, t: float, geometry: SurveillanceGeometry) -> float:
     """Limit of :func:`log_ambiguous_detection_bound` as ``J -> inf`` (``p_f -> p_d``)."""
-    g = geometry or SurveillanceGeometry()
+    g = geometry
     k = _require_count(k)
     lp = math.log(p_d)
     return float(
@@ -393,8 +392,8 @@ def jammer_ratio_threshold_db(
     level: float,
     p_d: float,
     k: int,
-    t: float = 0.0,
-    geometry: SurveillanceGeometry | None = None,
+    t: float,
+    geometry: SurveillanceGeometry,
     *,
     lower_db: float = -60.0,
     upper_db: float = 160.0,
@@ -421,7 +420,7 @@ def jammer_ratio_threshold_db(
         raise ValueError("quantity must be 'false' or 'ambiguous'")
     if not level > 0.0:
         raise ValueError("level must be > 0")
-    g = geometry or SurveillanceGeometry()
+    g = geometry
     bound = log_false_location_bound if quantity == "false" else log_ambiguous_detection_bound
     ceiling = (log_false_location_ceiling if quantity == "false" else log_ambiguous_detection_ceiling)(
         p_d, k, t, g
@@ -440,14 +439,12 @@ def jammer_ratio_threshold_db(
     return float(optimize.brentq(f, lower_db, upper_db, xtol=1e-10, rtol=1e-14))
 
 
-def jammer_erp_dbw(
-    jammer_ratio_db: ArrayLike, pulse_energy_j: float = 10e-3, bandwidth_hz: float = 10e6
-) -> FloatArray:
+def jammer_erp_dbw(jammer_ratio_db: ArrayLike, pulse_energy_j: float, bandwidth_hz: float) -> FloatArray:
     """Jammer ERP ``J`` in dBW from ``10 log10(J / (P0 tau B))`` (ATC-10 Sec. 2.7, Table 2.1).
 
     Examples
     --------
-    >>> float(jammer_erp_dbw(-16.0))
+    >>> float(jammer_erp_dbw(-16.0, 10e-3, 10e6))
     34.0
     """
     require_positive("pulse_energy_j", pulse_energy_j)

@@ -13,8 +13,8 @@ from navcore.figures import register
 from navcore.papers import atc10_jamming as paper
 
 #: Fraction t of the first-stage rule drawn in Figs. 2.3-2.16 (the paper's sets are lost).
-T_VALUES = (0.0, 0.05, 0.1, 0.2, 0.3)
-K1_PDL = (0.88, 0.9, 0.99, 0.999)
+T_VALUES = paper.T_GRID
+K1_PDL = paper.K1_PDL_GRID
 LOG10_FLOOR = -12.0
 
 #: (figure number, quantity, K, P_DL) for Figs. 2.3-2.16, in the paper's order.
@@ -42,13 +42,11 @@ def log10_bound(quantity: str, x_db: np.ndarray, p_dl: float, k: int, t: float) 
     """log10 of N_FL/N_T or N_ADL/N_T at the design point (P_DL, K, t), from the log-domain model."""
     p_d = paper.design_p_d(p_dl, k, t)
     fn = jm.log_false_location_bound if quantity == "false" else jm.log_ambiguous_detection_bound
-    return np.asarray(fn(10.0 ** (x_db / 10.0), p_d, k, t, paper.GEOMETRY)) / math.log(10.0)
+    return np.asarray(fn(10.0 ** (x_db / 10.0), p_d, k, t, paper.geometry())) / math.log(10.0)
 
 
 def _level(quantity: str) -> float:
-    if quantity == "ambiguous":
-        return paper.ADL_LEVEL
-    return paper.FL_FRACTION_OF_CEILING * (1.0 - paper.GEOMETRY.airborne_fraction)
+    return paper.level(quantity)
 
 
 def _axes_common(ax, quantity: str, x_lo: float, x_hi: float) -> None:

@@ -52,7 +52,7 @@ def _roc_axes(ax) -> None:
 
 def _bounds_figure(name: str) -> Figure:
     fig, ax = plt.subplots(figsize=(6.4, 4.6))
-    for x in m.CONTOURS:
+    for x in m.contours():
         ub_f, ub_m, lb_f, lb_m = _bounds(name, x)
         c = COLORS[x]
         ax.plot(np.exp(ub_m), np.exp(ub_f), "-", color=c, label=f"1/√(3b) = {x:g}")
@@ -137,8 +137,8 @@ def two_valued_component() -> Figure:
 def gaussian_rocs() -> Figure:
     fig, ax = plt.subplots(figsize=(6.4, 4.6))
     th = np.linspace(0.01, 0.99, 197)
-    for x in m.CONTOURS:
-        p = m.N_SEC36 * 2 * m.TAU_OVER_ALPHA_SEC36 * m.b_of_contour(x)
+    for x in m.contours():
+        p = m.IN.n_sec36 * 2 * m.IN.tau_over_alpha_sec36 * m.b_of_contour(x)
         lpf, lmiss = gaussian_roc(th, p)
         ax.plot(np.exp(lmiss), np.exp(lpf), color=COLORS[x], label=f"1/√(3b) = {x:g}")
     _roc_axes(ax)
@@ -157,8 +157,8 @@ def exp_vs_n() -> Figure:
     fig, ax = plt.subplots()
     n = np.logspace(2, 9, 300)
     for r in (1e-6, 1e-5, 1e-4):
-        ax.semilogx(n, exponent_from_gaussian_exponent(n, r, m.EXP_G_FIG39), label=f"τ/α = {r:g}")
-    ax.axhline(m.EXP_G_FIG39, color="k", lw=0.8, ls="--", label="Exp_g")
+        ax.semilogx(n, exponent_from_gaussian_exponent(n, r, m.IN.exp_g_fig39), label=f"τ/α = {r:g}")
+    ax.axhline(m.IN.exp_g_fig39, color="k", lw=0.8, ls="--", label="Exp_g")
     ax.axvline(1e5, color="0.5", lw=0.8, ls=":")
     ax.set_xlabel("number of aircraft N")
     ax.set_ylabel("Exp")
@@ -177,7 +177,7 @@ def exp_vs_expg() -> Figure:
     fig, ax = plt.subplots()
     g = np.linspace(0.01, 20, 200)
     for n in (1e4, 1e5, 2e5, 1e6, 1e7):
-        ax.plot(g, exponent_from_gaussian_exponent(n, m.TAU_OVER_ALPHA_FIG310, g), label=f"N = {n:g}")
+        ax.plot(g, exponent_from_gaussian_exponent(n, m.IN.tau_over_alpha_fig310, g), label=f"N = {n:g}")
     ax.plot(g, g, "k--", lw=0.8, label="Exp = Exp_g")
     ax.plot([m.worked_example_exp_g()], [m.worked_example_exp()], "ko")
     ax.set_xlabel("Exp_g")
@@ -218,7 +218,7 @@ def psk_autocorrelations() -> Figure:
 )
 def noise_tails() -> Figure:
     b = m.b_of_contour(5.0)
-    noise = MultipleAccessNoise(m.N_SEC36, m.TAU_OVER_ALPHA_SEC36, UniformDensity(b))
+    noise = MultipleAccessNoise(m.IN.n_sec36, m.IN.tau_over_alpha_sec36, UniformDensity(b))
     x = sample_noise(noise, 1_000_000, np.random.default_rng(8))
     sig = np.sqrt(noise.power)
     edges = np.linspace(-6 * sig, 6 * sig, 121)
@@ -250,7 +250,7 @@ def actual_vs_gaussian() -> Figure:
     th = m.THETA_GRID
     styles = dict(zip(m.DENSITY_NAMES, ("-", "--", "-.", ":"), strict=True))
     for x in (3.0, 5.0, 8.0):
-        p = m.N_SEC36 * 2 * m.TAU_OVER_ALPHA_SEC36 * m.b_of_contour(x)
+        p = m.IN.n_sec36 * 2 * m.IN.tau_over_alpha_sec36 * m.b_of_contour(x)
         lpf, lmiss = gaussian_roc(th, p)
         ax.plot(np.exp(lmiss), np.exp(lpf), color="k", lw=2.5, alpha=0.35)
         for name in m.DENSITY_NAMES:
@@ -270,7 +270,7 @@ def actual_vs_gaussian() -> Figure:
     ax.plot(r.p_miss[keep], r.p_f[keep], "C0-", label="PSK, Monte Carlo")
     lpf, lmiss = m.psk_chernoff()
     ax.plot(np.exp(lmiss), np.exp(lpf), "C0o--", ms=4, label="Chernoff upper bound")
-    lpf, lmiss = gaussian_roc(th, m.N_SEC36 * 2 * m.TAU_OVER_ALPHA_SEC36 / (3 * m.psk_contour() ** 2))
+    lpf, lmiss = gaussian_roc(th, m.IN.n_sec36 * 2 * m.IN.tau_over_alpha_sec36 / (3 * m.psk_contour() ** 2))
     ax.plot(np.exp(lmiss), np.exp(lpf), "k-", lw=2.5, alpha=0.35, label="ROC_g, same power")
     _roc_axes(ax)
     ax.set_ylim(1e-10, 1)

@@ -34,7 +34,7 @@ def psi_function() -> Figure:
     ax.axvspan(0.3, 1.0, color="0.9", zorder=0)
     for ex, mk in (("I", "o"), ("II", "s")):
         b = float(m.TABLE_4_2[ex]["beta"])
-        al = np.array([8 / 27 * s0**2 * b / m.SIGMA_NS**2 for s0 in m.SIGMA0_NS])
+        al = np.array([8 / 27 * s0**2 * b / m.IN.sigma_ns**2 for s0 in m.sigma0_values()])
         ax.plot(al, psi(al), mk, color="C2", mfc="none", label=f"Table 4.3, Example {ex}")
     ax.set_ylim(0, 1.05)
     ax.set_xlabel("α = (8/27) σ₀² β / σ²")
@@ -48,7 +48,7 @@ def _rms_figure(example: str) -> Figure:
     corrected = dict(printed_inputs)
     corrected["s_123"] = m.table_4_2_from_geometry(example, m.fitted_radius_ratio())["s_123"]
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
-    for s0, c in zip(m.SIGMA0_NS, ("C0", "C1", "C3"), strict=True):
+    for s0, c in zip(m.sigma0_values(), ("C0", "C1", "C3"), strict=True):
         n, rms_p = m.rms_history_ft(printed_inputs, s0, N_SHOWN, M_SHOWN)
         _, rms_c = m.rms_history_ft(corrected, s0, N_SHOWN, M_SHOWN)
         ax.plot(n[: N_SHOWN + 1], rms_p[: N_SHOWN + 1], "-", color=c, label=f"σ₀ = {s0:g} ns")

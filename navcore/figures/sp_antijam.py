@@ -42,7 +42,7 @@ def pgm_altitude_figure() -> Figure:
     _, x, alt = spj.pgm_trajectory()
     fig, ax = plt.subplots()
     ax.plot(x / NMI, alt / 1000.0)
-    ax.axvline(spj.TARGET_RANGE_NMI - spj.JAMMER_BEFORE_TARGET_NMI, color="C3", ls=":", label="jammer")
+    ax.axvline(spj.IN.target_range_nmi - spj.IN.jammer_before_target_nmi, color="C3", ls=":", label="jammer")
     ax.set_xlabel("distance from launch (nmi)")
     ax.set_ylabel("altitude (km)")
     ax.legend()
@@ -61,8 +61,8 @@ def pgm_js_figure() -> Figure:
     t, _, _ = spj.pgm_trajectory()
     fig, ax = plt.subplots()
     ax.plot(t, spj.pgm_js_db(100.0), label="100 W")
-    ax.axhline(spj.TC_LOSS_JS_DB, color="C1", ls="--", label="TC loses lock (54 dB)")
-    ax.axhline(spj.DI_LOCK_JS_DB, color="C2", ls=":", label="DI limit (65 dB)")
+    ax.axhline(spj.IN.tc_loss_js_db, color="C1", ls="--", label="TC loses lock (54 dB)")
+    ax.axhline(spj.IN.di_lock_js_db, color="C2", ls=":", label="DI limit (65 dB)")
     ax.set_xlabel("time from launch (s)")
     ax.set_ylabel("J/S (dB)")
     ax.legend()
@@ -73,7 +73,13 @@ def _cep_figure(kind: str) -> Figure:
     fig, ax = plt.subplots()
     for arch, style in (("TC", "o-"), ("DI", "s-")):
         cep, seeds = spj.cep_curve(arch, kind)
-        ax.loglog(spj.POWERS_W, cep, style, label=f"{arch}, 25 runs per point (seeds {seeds[0]}-{seeds[-1]})")
+        ax.loglog(
+            spj.POWERS_W,
+            cep,
+            style,
+            label=f"{arch}, {spj.IN.runs} runs per point (seeds {seeds[0]}-{seeds[-1]})",
+        )
+        ax.loglog(spj.FINE_POWERS_W, spj.model_ceps(arch, kind, spj.FINE_POWERS_W), "-", color="0.6", lw=0.8)
     if kind == "wideband":
         for (arch, p), text in spj.PUBLISHED_CEP.items():
             ax.loglog([p], [float(text)], "kx" if arch == "TC" else "k+", ms=10)
@@ -90,7 +96,8 @@ def _cep_figure(kind: str) -> Figure:
     paper="SP",
     reproduces="Fig. 3.6",
     caption="CEP at impact against wideband (20 MHz) jammer power, reduced navigator model with the "
-    "paper's MEMS IMU, 25 seeded runs per point; crosses are the four CEPs quoted in the text.",
+    "paper's MEMS IMU, 25 seeded runs per point (grey: the model's exact CEP); crosses are the four CEPs "
+    "quoted in the text.",
 )
 def cep_wideband_figure() -> Figure:
     return _cep_figure("wideband")
@@ -101,7 +108,8 @@ def cep_wideband_figure() -> Figure:
     paper="SP",
     reproduces="Fig. 3.7",
     caption="CEP at impact against narrowband (1 kHz) jammer power, same model and seeds scheme as "
-    "Fig. 3.6; the narrowband jammer's spectral separation factor is Q = 1 instead of 2.17.",
+    "Fig. 3.6 (grey: exact CEP); the narrowband jammer's spectral separation factor is Q = 1 "
+    "instead of 2.17.",
 )
 def cep_narrowband_figure() -> Figure:
     return _cep_figure("narrowband")
@@ -111,8 +119,8 @@ def cep_narrowband_figure() -> Figure:
     "SP-fig3.8",
     paper="SP",
     reproduces="Fig. 3.8",
-    caption="A/J improvement of deep integration (jammer power ratio at equal CEP) from the curves of "
-    "Figs. 3.6-3.7 of the reduced model; the paper reports at least 15 dB over 6-120 m (wideband).",
+    caption="A/J improvement of deep integration (jammer power ratio at equal CEP) from the reduced "
+    "model's exact CEP curves; the paper reports at least 15 dB over 6-120 m (wideband).",
 )
 def aj_improvement_figure() -> Figure:
     cep = np.geomspace(4.0, 150.0, 40)

@@ -14,7 +14,7 @@ from navcore.gnss.tracking import (
     third_order_loop_step_error,
 )
 from navcore.papers import sp_tracking as sp
-from navcore.units import FT, G0, GPS_L1_WAVELENGTH_M
+from navcore.units import G0, GPS_L1_WAVELENGTH_M
 
 
 @register(
@@ -28,16 +28,16 @@ from navcore.units import FT, G0, GPS_L1_WAVELENGTH_M
 )
 def third_order_step_error_figure() -> Figure:
     t = np.linspace(0.0, 0.8, 1601)
-    w_l1 = natural_frequency_for_peak_error(sp.step_deg_s2(GPS_L1_WAVELENGTH_M), sp.PEAK_LIMIT_DEG)
+    w_l1 = natural_frequency_for_peak_error(sp.step_deg_s2(GPS_L1_WAVELENGTH_M), sp.IN.peak_limit_deg)
     fig, ax = plt.subplots()
     ax.plot(
         t,
-        third_order_loop_step_error(t, sp.step_deg_s2(FT), sp.OMEGA0_FIG21),
+        third_order_loop_step_error(t, sp.step_deg_s2(sp.IN.foot_per_cycle_m), sp.IN.omega0_fig21),
         label="paper: 1 cycle/ft, 17.67 rad/s",
     )
     ax.plot(
         t,
-        third_order_loop_step_error(t, sp.step_deg_s2(GPS_L1_WAVELENGTH_M), sp.OMEGA0_FIG21),
+        third_order_loop_step_error(t, sp.step_deg_s2(GPS_L1_WAVELENGTH_M), sp.IN.omega0_fig21),
         "--",
         label="L1 carrier, 17.67 rad/s",
     )
@@ -65,10 +65,13 @@ def step_versus_jerk_figure() -> Figure:
     t = np.linspace(0.0, 1.5, 3001)
     lam = GPS_L1_WAVELENGTH_M
     fig, ax = plt.subplots()
-    ax.plot(t, third_order_loop_step_error(t, sp.step_deg_s2(lam), sp.OMEGA0_FIG21), label="6-g step")
-    J = float(distance_to_phase_deg(sp.JERK_G_PER_S * G0, lam))
+    ax.plot(t, third_order_loop_step_error(t, sp.step_deg_s2(lam), sp.IN.omega0_fig21), label="6-g step")
+    J = float(distance_to_phase_deg(sp.IN.jerk_g_per_s * G0, lam))
     ax.plot(
-        t, jerk_pulse_error(t, J, sp.JERK_DURATION_S, sp.OMEGA0_FIG21), "--", label="10 g/s jerk for 0.6 s"
+        t,
+        jerk_pulse_error(t, J, sp.IN.jerk_duration_s, sp.IN.omega0_fig21),
+        "--",
+        label="10 g/s jerk for 0.6 s",
     )
     ax.set_xlabel("time (s)")
     ax.set_ylabel("L1 phase error (deg)")

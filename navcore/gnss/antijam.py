@@ -246,7 +246,7 @@ def simulate_impact_errors(
     model: NavigatorErrorModel,
     fix_sigma_m: ArrayLike,
     *,
-    runs: int = 25,
+    runs: int,
     seed: int = 0,
     dt: float = 1.0,
 ) -> RunResult:

@@ -550,10 +550,16 @@ def _run(claim: Claim, overrides: dict[str, Any] | None = None) -> tuple[Any, di
     return value, reads
 
 
+#: Up to this many assumed inputs, the band includes every corner of their box (2**6 = 64 runs);
+#: beyond it, each input one at a time plus four diagonal corners.
+MAX_CORNER_INPUTS = 6
+
+
 def _band_runs(
     claim: Claim, assumed: list[Any]
 ) -> tuple[list[Any], list[tuple[str, tuple[tuple[Any, Any], ...]]]]:
-    """Values across the assumed inputs' ranges: one at a time, and corners for up to three."""
+    """Values across the assumed inputs' ranges: one at a time, and every corner of the box for up
+    to :data:`MAX_CORNER_INPUTS` inputs (extremes of a monotone response lie at corners)."""
     values: list[Any] = []
     sensitivity = []
     for inp in assumed:
@@ -563,12 +569,19 @@ def _band_runs(
             values.append(v)
             row.append((point, v))
         sensitivity.append((inp.name, tuple(row)))
-    if 2 <= len(assumed) <= 3:
-        import itertools
+    import itertools
 
-        for corner in itertools.product(*[(inp.low, inp.high) for inp in assumed]):
-            v, _ = _run(claim, {inp.name: p for inp, p in zip(assumed, corner, strict=True)})
-            values.append(v)
+    if 2 <= len(assumed) <= MAX_CORNER_INPUTS:
+        corners: Any = itertools.product(*[(inp.low, inp.high) for inp in assumed])
+    elif len(assumed) > MAX_CORNER_INPUTS:  # the two diagonal corners (all low, all high) and their mirror
+        lows, highs = [inp.low for inp in assumed], [inp.high for inp in assumed]
+        half = len(assumed) // 2
+        corners = [lows, highs, lows[:half] + highs[half:], highs[:half] + lows[half:]]
+    else:
+        corners = []
+    for corner in corners:
+        v, _ = _run(claim, {inp.name: p for inp, p in zip(assumed, corner, strict=True)})
+        values.append(v)
     return values, sensitivity
 
 

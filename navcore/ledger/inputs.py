@@ -123,6 +123,7 @@ class Input:
     admissible: bool = False
     alternative: Any = None
     fitted_to: tuple[str, ...] = field(default_factory=tuple)
+    module: str = field(default="", compare=False)
 
     def __post_init__(self) -> None:
         if self.provenance not in PROVENANCES:
@@ -227,6 +228,7 @@ class InputSet:
     """
 
     def __init__(self, paper: str, section: str) -> None:
+        object.__setattr__(self, "_module", sys._getframe(1).f_globals.get("__name__", ""))
         object.__setattr__(self, "_paper", paper)
         object.__setattr__(self, "_section", section)
         object.__setattr__(self, "_inputs", {})
@@ -241,7 +243,7 @@ class InputSet:
         full = f"{self._paper}.{self._section}.{attr}"
         if full in _REGISTRY and _REGISTRY[full] != Input(name=full, paper=self._paper, **kw):
             raise ValueError(f"input {full} is registered twice with different declarations")
-        inp = Input(name=full, paper=self._paper, **kw)
+        inp = Input(name=full, paper=self._paper, module=self._module, **kw)
         inputs[attr] = inp
         _REGISTRY[full] = inp
 

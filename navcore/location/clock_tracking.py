@@ -206,7 +206,7 @@ def position_mse(
     return sigma**2 * (trace + np.asarray(gamma) * clock_term)
 
 
-def convergence_steps(history: GainHistory, rel: float = 0.1) -> int:
+def convergence_steps(history: GainHistory, rel: float) -> int:
     """First n after which ``|gamma_n - gamma_inf| <= rel * gamma_inf`` for all later n."""
     g = history.gamma
     limit = g[-1]
@@ -214,7 +214,7 @@ def convergence_steps(history: GainHistory, rel: float = 0.1) -> int:
     return 0 if bad.size == 0 else int(bad[-1] + 1)
 
 
-def convergence_steps_geometric(psi_value: float, rel: float = 0.1) -> float:
+def convergence_steps_geometric(psi_value: float, rel: float) -> float:
     """Steps for the geometric series ``sum (1 - psi)^i`` to come within ``rel`` of its limit.
 
     ``n = log(rel) / log(1 - psi) - 1``; for small psi about ``2.3 / psi - 1`` (rel = 0.1).
@@ -242,7 +242,7 @@ def simulate_tracker(
     m_after: int,
     n_runs: int,
     seed: int,
-    tau_bar: float = 1.0e9,
+    tau_bar: float,
     tau_start: float = 12_345.0,
 ) -> TrackerMonteCarlo:
     """Monte Carlo of the whole tracker on simulated clocks and time-of-arrival noise.

@@ -216,7 +216,7 @@ def constellation_parameters(F: np.ndarray) -> ConstellationParameters:
 def most_widely_spaced_triplet(
     satellites: np.ndarray,
     aircraft: np.ndarray,
-    cone_half_angle_deg: float = 45.0,
+    cone_half_angle_deg: float,
     criterion: str = "trace",
 ) -> tuple[tuple[int, int, int], float]:
     """Best three satellites inside the cone about the local vertical (0-based indices).

@@ -22,20 +22,22 @@ propagating the reachable offset triples; :func:`false_track_exists_brute_force`
 explicit search used as its test oracle) and compares the rate with ``F G^(K-1)`` of (B.6) and
 (C.14) at the reduced sizes. :func:`simulate_window_declarations` tests the independent-sample
 product ``1 - (1 - p_f)^n`` of one window itself, against samples with correlation 1/2 between
-neighbours. No part of this module is a published claim.
+neighbours. No part of this module is a published claim: it reads no paper input and defines no
+claim, and its sizes are the book's (the seeded runs are memoised with ``input_cache``, the
+ledger's memo, like every memo in ``navcore.papers``).
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from functools import cache
 
 import numpy as np
 from scipy import special
 
 from navcore.detection import jamming as jm
 from navcore.detection.neyman_pearson import detection_index_from_jammer_ratio, log_false_alarm_probability
+from navcore.ledger.inputs import input_cache
 
 #: Reduced sizes: filter-1 samples per segment and window half-width (ratio 2e7 / 9.6e5 ~ 20).
 N_A = 200
@@ -75,7 +77,7 @@ def _nonempty(decl: np.ndarray) -> np.ndarray:
     return ok.any(axis=-1)
 
 
-@cache
+@input_cache
 def simulate() -> tuple[ListRates, ...]:
     """Run the seeded simulation for every case in :data:`CASES` (common random numbers over x)."""
     rng = np.random.default_rng(SEED)
@@ -228,7 +230,7 @@ def false_track_bound(p_f: np.ndarray, k: int) -> np.ndarray:
     return np.exp(log_f + (k - 1) * log_g)
 
 
-@cache
+@input_cache
 def simulate_false_tracks() -> tuple[FalseTrackRates, ...]:
     """Seeded simulation of false tracks for K in :data:`TRACK_KS` (common random numbers over p_f)."""
     rng = np.random.default_rng(TRACK_SEED)
@@ -266,7 +268,7 @@ class WindowRates:
     trials: int
 
 
-@cache
+@input_cache
 def simulate_window_declarations() -> WindowRates:
     """Seeded simulation of one window of ``WINDOW_N`` normalised matched-filter noise samples.
 

@@ -12,7 +12,6 @@ from __future__ import annotations
 import itertools
 from dataclasses import dataclass
 from fractions import Fraction
-from functools import cache
 
 import numpy as np
 from scipy import integrate, special
@@ -49,7 +48,8 @@ from navcore.detection.zakai import (
     psk_zakai_bandwidth,
     zakai_bandwidth,
 )
-from navcore.ledger import Claim, Erratum, Tolerance, printed
+from navcore.ledger import EXACT, Claim, Erratum, Tolerance, monte_carlo, printed, prose
+from navcore.ledger.inputs import InputSet, input_cache
 
 PAGE_NOISE = "atc10/20-multiple-access-noise"
 PAGE_ROC = "atc10/21-roc-bounds"
@@ -57,31 +57,139 @@ PAGE_GAUSS = "atc10/22-gaussian-comparison"
 PAGE_ZAKAI = "atc10/23-zakai-bandwidth"
 
 # ---------------------------------------------------------------------------------------
-# Published inputs (typed once, with locators)
+# Inputs, each declared once with its provenance
 # ---------------------------------------------------------------------------------------
-#: Sec. 3.6 (i), (ii): the typical parameter set of Figs. 3.3-3.8.
-N_SEC36 = 100_000
-TAU_OVER_ALPHA_SEC36 = 2e-5
-#: Contour labels 1/sqrt(3b) of Figs. 3.3-3.6 and 3.8 are lost with the figures; the book uses these.
-CONTOURS = (3.0, 4.0, 5.0, 6.0, 8.0)
-#: Sec. 3.8, Fig. 3.9: Exp_g = 4; tau/alpha values are not legible, the book uses 1e-6, 1e-5, 1e-4.
-EXP_G_FIG39 = 4.0
-#: Sec. 3.8, Fig. 3.10 and the worked example: tau/alpha = 1e-5 (printed "10^5", E3-9).
-TAU_OVER_ALPHA_FIG310 = 1e-5
-#: Worked example (end of Sec. 3.8): Ref. [1] parameters.
-N_EFFECTIVE_EXAMPLE = 200_000  # 1e5 aircraft, two pulses per alpha ("N effectively equal to 2(10^5)")
-BANDWIDTH_EXAMPLE_HZ = 1e7  # "B was assumed to be 10^7 Hz"
-ALPHA_EXAMPLE_S = 1.0  # 5 pulses in 2.5 s or 4 in 2 s: one repetition of the pair per second
-THETA_EXAMPLE = 0.5  # "we let theta = 0.5"
+IN = InputSet("ATC10", "multiple_access")
+IN.published("n_sec36", 100_000, locator="Sec. 3.6 (i)", quantity="number of aircraft N of Figs. 3.3-3.8")
+IN.published(
+    "tau_over_alpha_sec36", 2e-5, locator="Sec. 3.6 (ii)", quantity="duty ratio tau/alpha of Figs. 3.3-3.8"
+)
+IN.published(
+    "n_fig39",
+    100_000,
+    locator="Sec. 3.8 ('when N = 10^5, tau/alpha = 10^-5, typical system parameter values')",
+    quantity="number of aircraft of the Fig. 3.9 remark",
+)
+IN.published(
+    "tau_over_alpha_fig39",
+    1e-5,
+    locator="Sec. 3.8 ('when N = 10^5, tau/alpha = 10^-5, typical system parameter values')",
+    quantity="duty ratio of the Fig. 3.9 remark",
+)
+IN.published("exp_g_fig39", 4.0, locator="Sec. 3.8, Fig. 3.9", quantity="Gaussian exponent Exp_g of Fig. 3.9")
+IN.published(
+    "tau_over_alpha_fig310",
+    1e-5,
+    locator="Sec. 3.8 ('Figure 3.10 which corresponds to a tau/alpha = 10^-5')",
+    quantity="duty ratio of Fig. 3.10 and the worked example",
+)
+IN.published(
+    "n_effective_example",
+    200_000,
+    locator="Sec. 3.8, worked example ('N effectively equal to 2(10^5)')",
+    quantity="effective number of aircraft of Ref. [1]",
+)
+IN.published(
+    "bandwidth_example_hz", 1e7, locator="Sec. 3.8, worked example ('B was assumed to be 10^7 Hz')", unit="Hz"
+)
+IN.published("theta_example", 0.5, locator="Sec. 3.8, worked example ('we let theta = 0.5')")
+IN.convention(
+    "alpha_example_s",
+    1.0,
+    alternative=2.5,
+    unit="s",
+    quantity="signature repetition period alpha in p = (N - 1)/(B alpha)",
+    reason="the text gives 5 pulses in alpha = 2.5 s or 4 in 2 s and counts N effectively as 2e5, i.e. "
+    "one pulse pair per second per aircraft; alpha = 1 s is the reading that gives the printed Exp_g = 12.5, "
+    "the printed 2.5 s the other",
+)
+IN.assumed(
+    "contour_low",
+    3.0,
+    low=2.5,
+    high=4.0,
+    quantity="lowest contour label 1/sqrt(3b) of Figs. 3.3-3.6 and 3.8",
+    reason="the contour labels are lost with the figures; at N = 1e5, tau/alpha = 2e-5 a useful ROC "
+    "(p_d >= 0.9 at some p_f < 1) needs 1/sqrt(3b) of about 2.5 or more, and a plot spanning p_d 0.5-1 "
+    "would start below 4",
+)
+IN.assumed(
+    "contour_high",
+    8.0,
+    low=6.0,
+    high=10.0,
+    quantity="highest contour label 1/sqrt(3b) of Figs. 3.3-3.6 and 3.8",
+    reason="the contour labels are lost with the figures; beyond 1/sqrt(3b) of about 8 every p_f of "
+    "interest is below 1e-9, the bottom of a 1970s ROC plot; 6-10 plausible",
+)
+IN.assumed(
+    "psk_chips",
+    32,
+    low=16,
+    high=64,
+    quantity="chips per PSK signature in the book's physical simulation",
+    reason="Sec. 3.9 gives no code length (tau of the order of 10 us, chip length open); 16-64 chips span "
+    "the short codes for which a 'good' aperiodic autocorrelation is found by search",
+)
+IN.assumed(
+    "fig311_extra_lags",
+    1,
+    low=0,
+    high=1,
+    quantity="sidelobe lags of the idealised Fig. 3.11 autocorrelation beyond L = tau/tau_c",
+    reason="Fig. 3.11 is lost; the alternating +-tau_c/tau sidelobes extend over L (confined to |t| < tau) "
+    "or L + 1 lags (the triangle of the last chip reaching tau + tau_c)",
+)
+IN.assumed(
+    "msequence_degree",
+    10,
+    low=7,
+    high=10,
+    quantity="degree of the m-sequence used as a long PSK code with good autocorrelation",
+    reason="Sec. 3.9 names no code; maximal-length sequences of 127-1023 chips are the classic binary "
+    "codes with good autocorrelation",
+)
+IN.assumed(
+    "good_approximation_rel",
+    1e-4,
+    low=1e-5,
+    high=1e-2,
+    quantity="relative error below which (3.7.26) 'can be approximated' for (3.7.24)",
+    reason="'can be approximated' is not quantified; 1e-5 to 1 % relative error of an exponent",
+)
+IN.assumed(
+    "non_negligible_fraction",
+    0.1,
+    low=0.05,
+    high=0.2,
+    quantity="relative shortfall of Exp below Exp_g that is 'non-negligible'",
+    reason="'non-negligible' is not quantified; 5-20 % of an exponent",
+)
+IN.assumed(
+    "practically_linear_r2",
+    0.99,
+    low=0.95,
+    high=0.999,
+    quantity="R^2 of a line fit above which a curve is 'practically linear'",
+    reason="'practically linear' is not quantified; R^2 of 0.95-0.999",
+)
+
+
+def contours() -> tuple[float, ...]:
+    """Contour labels 1/sqrt(3b) (lost with Figs. 3.3-3.8): the assumed ends and the book's 4, 5, 6."""
+    return tuple(sorted({IN.contour_low, 4.0, 5.0, 6.0, IN.contour_high}))
+
+
+#: Test points 1/sqrt(3b) for identities that hold at every power (not the figures' contours).
+CHECK_CONTOURS = (3.0, 4.0, 5.0, 6.0, 8.0)
+#: Printed results of the worked example (the claims compare with them).
 P_EXAMPLE_PRINTED = "50"
 EXP_G_EXAMPLE_PRINTED = "12.5"
 EXP_EXAMPLE_PRINTED = "9"
 RATIO_EXAMPLE_PRINTED = "1.4"
-#: Sec. 3.9: W ~ (3/4)/tau_c and E(n^2) = N tau_c / (3 alpha).
-W_TIMES_CHIP_PRINTED = 0.75
+#: Sec. 3.9: W ~ (3/4)/tau_c and E(n^2) = N tau_c / (3 alpha) as printed.
+W_TIMES_CHIP_PRINTED = "0.75"
 POWER_COEFF_PRINTED = 1.0 / 3.0
-#: Physical PSK simulation: code length (chips per signature) for the Monte Carlo of Sec. 3.9.
-PSK_CHIPS = 32
 
 
 def density(name: str, b: float):
@@ -103,7 +211,7 @@ def b_of_contour(x: float) -> float:
 
 
 def noise_sec36(name: str, x: float) -> MultipleAccessNoise:
-    return MultipleAccessNoise(N_SEC36, TAU_OVER_ALPHA_SEC36, density(name, b_of_contour(x)))
+    return MultipleAccessNoise(IN.n_sec36, IN.tau_over_alpha_sec36, density(name, b_of_contour(x)))
 
 
 # ---------------------------------------------------------------------------------------
@@ -126,7 +234,7 @@ class ExactROC:
     method: str
 
 
-@cache
+@input_cache
 def exact_roc(name: str, x: float) -> ExactROC:
     """The actual ROC at the Sec. 3.6 parameters: exact sums (two-point, Gaussian C) or stratified MC.
 
@@ -135,7 +243,7 @@ def exact_roc(name: str, x: float) -> ExactROC:
     """
     b = b_of_contour(x)
     th = THETA_GRID
-    nint, q = N_SEC36 - 1, 2 * TAU_OVER_ALPHA_SEC36
+    nint, q = IN.n_sec36 - 1, 2 * IN.tau_over_alpha_sec36
     if name == "C2 two-point":
         pf = two_point_exact_tail(np.sqrt(b), nint, q, th)
         pm = 1.0 - two_point_exact_tail(np.sqrt(b), nint, q, th - 1.0)  # P(n < theta - 1)
@@ -153,10 +261,10 @@ def exact_roc(name: str, x: float) -> ExactROC:
     return ExactROC(th, pf, pf_se, 1.0 - ge, ge_se, "stratified Monte Carlo")
 
 
-@cache
+@input_cache
 def _unit_sums(name: str) -> StratifiedSums:
     """One seeded stratified sample per density at b = 1, rescaled for every contour."""
-    unit = MultipleAccessNoise(N_SEC36, TAU_OVER_ALPHA_SEC36, density(name, 1.0))
+    unit = MultipleAccessNoise(IN.n_sec36, IN.tau_over_alpha_sec36, density(name, 1.0))
     return stratified_sums(unit, MC_PER_STRATUM, np.random.default_rng(31 + DENSITY_NAMES.index(name)))
 
 
@@ -168,16 +276,16 @@ def best_pf_at_pd(roc_pf: np.ndarray, roc_miss: np.ndarray, pd_min: float) -> fl
 
 def gaussian_best_pf(x: float, pd_min: float) -> float:
     """ROC_g (Eq. 3.8.3) p_f at p_d = pd_min, with the Theorem 3.1 power N q b."""
-    p = N_SEC36 * 2 * TAU_OVER_ALPHA_SEC36 * b_of_contour(x)
+    p = IN.n_sec36 * 2 * IN.tau_over_alpha_sec36 * b_of_contour(x)
     theta = 1.0 - np.sqrt(p) * special.ndtri(pd_min)  # 1 - p_d = Q((1-theta)/sqrt(p))
     return float(np.exp(gaussian_roc(np.array([theta]), p)[0][0]))
 
 
-@cache
+@input_cache
 def gaussian_comparison_table() -> dict[tuple[str, float, float], tuple[float, float]]:
     """(density, x, pd_min) -> (actual best p_f, ROC_g p_f)."""
     out = {}
-    for x in CONTOURS:
+    for x in contours():
         for pd_min in (0.9, 0.99):
             g = gaussian_best_pf(x, pd_min)
             for name in DENSITY_NAMES:
@@ -191,6 +299,14 @@ def gaussian_always_more_optimistic() -> bool:
     return all(act > g for act, g in gaussian_comparison_table().values())
 
 
+def gaussian_smallest_pf_ratio() -> float:
+    """Smallest ratio actual best p_f / ROC_g p_f over densities, contours and p_d = 0.9, 0.99.
+
+    The Sec. 3.8 conclusion 'ROC_g p_f always lower than the actual p_f' is this ratio > 1.
+    """
+    return float(min(act / g for act, g in gaussian_comparison_table().values()))
+
+
 def gaussian_beaten_at_low_snr_oracle() -> bool:
     """Independent check: at x = 3 the exact Gaussian-C mixture beats ROC_g at p_d = 0.9.
 
@@ -198,22 +314,25 @@ def gaussian_beaten_at_low_snr_oracle() -> bool:
     """
     b = b_of_contour(3.0)
     th = np.linspace(0.0, 1.0, 4001)
-    pf = gaussian_mixture_exact_tail(b, N_SEC36 - 1, 2 * TAU_OVER_ALPHA_SEC36, th)
-    pm = gaussian_mixture_exact_tail(b, N_SEC36 - 1, 2 * TAU_OVER_ALPHA_SEC36, 1 - th)
+    pf = gaussian_mixture_exact_tail(b, IN.n_sec36 - 1, 2 * IN.tau_over_alpha_sec36, th)
+    pm = gaussian_mixture_exact_tail(b, IN.n_sec36 - 1, 2 * IN.tau_over_alpha_sec36, 1 - th)
     actual = best_pf_at_pd(pf, pm, 0.9)
     return not (actual < gaussian_best_pf(3.0, 0.9))
 
 
-@cache
+@input_cache
 def chernoff_exponents(name: str, x: float) -> tuple[np.ndarray, np.ndarray]:
     """(-ln ub p_f, -ln ub (1 - p_d)) on a coarse theta grid, for the Theorem 3.2 ordering."""
     lpf, lmiss = roc_upper_bound(noise_sec36(name, x), np.linspace(0.05, 0.95, 19))
     return -lpf, -lmiss
 
 
-def theorem_32_ordering(strict_order: tuple[str, ...]) -> bool:
-    """Chernoff exponents ordered as ``strict_order`` (best first) at every contour and theta."""
-    for x in CONTOURS:
+def theorem_32_ordering(strict_order: tuple[str, ...], xs: tuple[float, ...] | None = None) -> bool:
+    """Chernoff exponents ordered as ``strict_order`` (best first) at every contour and theta.
+
+    ``xs``: the contours 1/sqrt(3b); default the figures' (assumed) contours.
+    """
+    for x in contours() if xs is None else xs:
         ef = [chernoff_exponents(n, x)[0] for n in strict_order]
         ed = [chernoff_exponents(n, x)[1] for n in strict_order]
         for a, b in itertools.pairwise(ef):
@@ -227,7 +346,7 @@ def theorem_32_ordering(strict_order: tuple[str, ...]) -> bool:
 
 def deteriorates_with_power() -> bool:
     """Sec. 3.6: for each density the ROC bound worsens as 1/sqrt(3b) decreases."""
-    xs = sorted(CONTOURS)
+    xs = sorted(contours())
     for name in DENSITY_NAMES:
         ef = np.array([chernoff_exponents(name, x)[0] for x in xs])
         if np.any(np.diff(ef, axis=0) < -1e-12):
@@ -238,24 +357,25 @@ def deteriorates_with_power() -> bool:
 def bound_monotone_in_n_and_duty() -> bool:
     """Sec. 3.5: the p_f upper bound increases with N and with tau/alpha."""
     b = b_of_contour(5.0)
+    n0, r0 = IN.n_sec36, IN.tau_over_alpha_sec36
     vals_n = [
-        chernoff_log_tail(MultipleAccessNoise(n, 2e-5, UniformDensity(b)), 0.5).log_p
-        for n in (50_000, 100_000, 200_000)
+        chernoff_log_tail(MultipleAccessNoise(int(f * n0), r0, UniformDensity(b)), 0.5).log_p
+        for f in (0.5, 1.0, 2.0)
     ]
     vals_q = [
-        chernoff_log_tail(MultipleAccessNoise(100_000, r, UniformDensity(b)), 0.5).log_p
-        for r in (1e-5, 2e-5, 4e-5)
+        chernoff_log_tail(MultipleAccessNoise(n0, f * r0, UniformDensity(b)), 0.5).log_p
+        for f in (0.5, 1.0, 2.0)
     ]
     return bool(np.all(np.diff(vals_n) > 0) and np.all(np.diff(vals_q) > 0))
 
 
 def closed_form_matches_numerical() -> bool:
     """Eqs. (3.7.23)-(3.7.24) equal the numerical Chernoff optimum for the two-point density."""
-    for x in CONTOURS:
+    for x in CHECK_CONTOURS:
         noise = noise_sec36("C2 two-point", x)
         for th in (0.3, 0.5, 0.7):
             num = -chernoff_log_tail(noise, th).log_p
-            cf = float(quasi_optimal_exponent(th, noise.power, N_SEC36, TAU_OVER_ALPHA_SEC36))
+            cf = float(quasi_optimal_exponent(th, noise.power, IN.n_sec36, IN.tau_over_alpha_sec36))
             if abs(cf - num) > 1e-6 * max(1.0, num):
                 return False
     return True
@@ -264,11 +384,11 @@ def closed_form_matches_numerical() -> bool:
 def approximation_accurate_at_typical_values() -> float:
     """Largest relative error of (3.7.26) against (3.7.24) at the Sec. 3.6 values."""
     err = 0.0
-    for x in CONTOURS:
+    for x in CHECK_CONTOURS:
         p = noise_sec36("C2 two-point", x).power
         th = np.linspace(0.1, 0.9, 9)
-        ex = quasi_optimal_exponent(th, p, N_SEC36, TAU_OVER_ALPHA_SEC36)
-        ap = quasi_optimal_exponent_approx(th, p, N_SEC36, TAU_OVER_ALPHA_SEC36)
+        ex = quasi_optimal_exponent(th, p, IN.n_sec36, IN.tau_over_alpha_sec36)
+        ap = quasi_optimal_exponent_approx(th, p, IN.n_sec36, IN.tau_over_alpha_sec36)
         err = max(err, float(np.max(np.abs(ap / ex - 1))))
     return err
 
@@ -278,34 +398,37 @@ def approximation_accurate_at_typical_values() -> float:
 
 def worked_example_power() -> float:
     """p = (N - 1)/(B alpha) for Ref. [1]'s parameters (end of Sec. 3.8)."""
-    return (N_EFFECTIVE_EXAMPLE - 1) / (BANDWIDTH_EXAMPLE_HZ * ALPHA_EXAMPLE_S)
+    return (IN.n_effective_example - 1) / (IN.bandwidth_example_hz * IN.alpha_example_s)
 
 
 def worked_example_power_oracle() -> float:
     """Exact rational arithmetic of the same definition, as an independent check."""
     return float(
-        Fraction(N_EFFECTIVE_EXAMPLE - 1, int(BANDWIDTH_EXAMPLE_HZ)) / Fraction(int(ALPHA_EXAMPLE_S))
+        Fraction(IN.n_effective_example - 1)
+        / (Fraction(IN.bandwidth_example_hz) * Fraction(IN.alpha_example_s))
     )
 
 
 def worked_example_exp_g() -> float:
     """Exp_g = a^2/p with a = theta = 0.5, as the example writes it (E3-3 discusses 2p)."""
-    return THETA_EXAMPLE**2 / worked_example_power()
+    return IN.theta_example**2 / worked_example_power()
 
 
 def worked_example_exp() -> float:
     """Exp(N = 2e5, tau/alpha = 1e-5, Exp_g) from Eq. (3.8.16)."""
     return float(
-        exponent_from_gaussian_exponent(N_EFFECTIVE_EXAMPLE, TAU_OVER_ALPHA_FIG310, worked_example_exp_g())
+        exponent_from_gaussian_exponent(
+            IN.n_effective_example, IN.tau_over_alpha_fig310, worked_example_exp_g()
+        )
     )
 
 
 def worked_example_exp_oracle() -> float:
     """The exact quasi-optimal exponent (3.7.24) with theta fixed by Exp_g = theta^2/(2 p N/(N-1))."""
-    n = N_EFFECTIVE_EXAMPLE
+    n = IN.n_effective_example
     p_n = 2e-3  # any power: Exp depends only on Exp_g; choose one and solve theta
     theta = np.sqrt(2 * p_n * worked_example_exp_g())
-    return float(quasi_optimal_exponent(theta, p_n * (n - 1) / n, n, TAU_OVER_ALPHA_FIG310))
+    return float(quasi_optimal_exponent(theta, p_n * (n - 1) / n, n, IN.tau_over_alpha_fig310))
 
 
 def worked_example_ratio() -> float:
@@ -331,7 +454,7 @@ def exp_rate_faster_for_low_exp_g() -> bool:
     """Fig. 3.10: Exp/Exp_g is larger (closer to 1) for smaller Exp_g at every N."""
     g = np.linspace(0.5, 20, 40)
     for n in (1e4, 1e5, 2e5, 1e6, 1e7):
-        ratio = exponent_from_gaussian_exponent(n, TAU_OVER_ALPHA_FIG310, g) / g
+        ratio = exponent_from_gaussian_exponent(n, IN.tau_over_alpha_fig310, g) / g
         if np.any(np.diff(ratio) >= 0):
             return False
     return True
@@ -340,7 +463,7 @@ def exp_rate_faster_for_low_exp_g() -> bool:
 def exp_linearity_r2(n: float = 1e5) -> float:
     """R^2 of a straight-line fit of Exp against Exp_g on [0, 20] (Fig. 3.10 'practically linear')."""
     g = np.linspace(0.0, 20.0, 81)
-    e = exponent_from_gaussian_exponent(n, TAU_OVER_ALPHA_FIG310, np.maximum(g, 1e-12))
+    e = exponent_from_gaussian_exponent(n, IN.tau_over_alpha_fig310, np.maximum(g, 1e-12))
     coef = np.polyfit(g, e, 1)
     res = e - np.polyval(coef, g)
     return float(1 - res.var() / e.var())
@@ -348,7 +471,8 @@ def exp_linearity_r2(n: float = 1e5) -> float:
 
 def exp_fig39_shortfall() -> float:
     """Relative shortfall 1 - Exp/Exp_g at N = 1e5, tau/alpha = 1e-5, Exp_g = 4."""
-    return float(1 - exponent_from_gaussian_exponent(1e5, 1e-5, EXP_G_FIG39) / EXP_G_FIG39)
+    g = IN.exp_g_fig39
+    return float(1 - exponent_from_gaussian_exponent(IN.n_fig39, IN.tau_over_alpha_fig39, g) / g)
 
 
 # ---- App. E: order of the Edgeworth terms ------------------------------------------------
@@ -363,7 +487,7 @@ def _term_scaling_exponent(order: int) -> float:
     vals = []
     ns = (10**6, 10**8)
     for n in ns:
-        noise = MultipleAccessNoise(n, 2e-5, dens)
+        noise = MultipleAccessNoise(n, IN.tau_over_alpha_sec36, dens)
         sig = np.sqrt(noise.gaussian_limit_variance)
         g0 = edgeworth_density(noise, sig, terms=0)
         if order == 0:
@@ -387,15 +511,15 @@ def gaussian_term_order() -> float:
     return _term_scaling_exponent(0)
 
 
-@cache
+@input_cache
 def clt_tail_convergence() -> tuple[float, ...]:
     """|P(n >= 2 sigma) - Q(2)| for Gaussian C at N q = 4, 40, 400 (Theorem 3.1)."""
     out = []
     for n in (100_000, 1_000_000, 10_000_000):
         b = 1e-3
-        noise = MultipleAccessNoise(n, 2e-5, GaussianDensity(b))
+        noise = MultipleAccessNoise(n, IN.tau_over_alpha_sec36, GaussianDensity(b))
         sig = np.sqrt(noise.power)
-        exact = float(gaussian_mixture_exact_tail(b, n - 1, 4e-5, np.array([2 * sig]))[0])
+        exact = float(gaussian_mixture_exact_tail(b, n - 1, noise.q, np.array([2 * sig]))[0])
         out.append(abs(exact - special.ndtr(-2.0)))
     return tuple(out)
 
@@ -404,15 +528,19 @@ def clt_tail_convergence() -> tuple[float, ...]:
 
 
 def w_chip_limit_ideal(n_chips: int = 10_000) -> float:
-    """W tau_c for the idealised alternating-sidelobe autocorrelation with tau_c/tau = 1/n_chips."""
-    return zakai_bandwidth(alternating_sidelobe_autocorrelation(n_chips, n_chips + 1), 1.0)
+    """W tau_c for the idealised alternating-sidelobe autocorrelation with tau_c/tau = 1/n_chips.
+
+    The sidelobes extend over L + ``fig311_extra_lags`` lags (Fig. 3.11 is lost).
+    """
+    return zakai_bandwidth(alternating_sidelobe_autocorrelation(n_chips, n_chips + IN.fig311_extra_lags), 1.0)
 
 
 def paper_bracket_reproduced() -> bool:
-    """The printed W formula equals the alternating-sidelobe model over L+1 lags (L = 13, 100)."""
+    """The printed W formula equals the alternating-sidelobe model (L = 13, 31, 100 chips)."""
+    extra = IN.fig311_extra_lags
     return all(
         abs(
-            zakai_bandwidth(alternating_sidelobe_autocorrelation(n, n + 1), 1.0)
+            zakai_bandwidth(alternating_sidelobe_autocorrelation(n, n + extra), 1.0)
             / paper_psk_zakai_bandwidth(1.0, float(n))
             - 1
         )
@@ -422,13 +550,13 @@ def paper_bracket_reproduced() -> bool:
 
 
 def w_chip_msequence() -> float:
-    """W tau_c for a 1023-chip m-sequence (a real 'good' PSK code)."""
-    return psk_zakai_bandwidth(m_sequence(10), 1.0)
+    """W tau_c for an m-sequence (a real 'good' PSK code; 1023 chips at the nominal degree 10)."""
+    return psk_zakai_bandwidth(m_sequence(IN.msequence_degree), 1.0)
 
 
-def w_chip_msequence_oracle() -> float:
+def w_chip_msequence_oracle(degree: int = 10) -> float:
     """Brute force: correlate the sampled chip waveform and integrate R(t)^2 by Simpson's rule."""
-    c = m_sequence(10)
+    c = m_sequence(degree)
     over = 4
     s = np.repeat(c, over) / np.sqrt(c.size)  # chip = 1 s, unit energy
     r = np.concatenate([[0.0], np.correlate(s, s, mode="full") / over, [0.0]])  # exact at the samples
@@ -437,24 +565,24 @@ def w_chip_msequence_oracle() -> float:
     return 1.0 / (2.0 * energy)
 
 
-@cache
+@input_cache
 def psk_target_code() -> np.ndarray:
-    """A 'good' PSK code of PSK_CHIPS chips (seeded search among 4000 random codes).
+    """A 'good' PSK code of IN.psk_chips chips (seeded search among 4000 random codes).
 
     The smallest peak sidelobe among codes whose first sidelobe is the smallest possible (|R_1| L = 1).
     """
     rng = np.random.default_rng(1972)
-    codes = rng.choice([-1.0, 1.0], size=(4000, PSK_CHIPS))
+    codes = rng.choice([-1.0, 1.0], size=(4000, IN.psk_chips))
     best, best_peak = codes[0], np.inf
     for c in codes:
         r = np.correlate(c, c, mode="full")
-        peak = np.max(np.abs(r[: PSK_CHIPS - 1]))
-        if abs(r[PSK_CHIPS - 2]) == 1 and peak < best_peak:
+        peak = np.max(np.abs(r[: IN.psk_chips - 1]))
+        if abs(r[IN.psk_chips - 2]) == 1 and peak < best_peak:
             best, best_peak = c, peak
     return best
 
 
-@cache
+@input_cache
 def psk_physical_samples() -> np.ndarray:
     """n_ij given overlap: random PSK interferers (fresh random codes, delays, carrier phases), seeded."""
     rng = np.random.default_rng(2024)
@@ -464,16 +592,16 @@ def psk_physical_samples() -> np.ndarray:
 def psk_power_coefficient() -> float:
     """E(n^2) alpha / (N tau_c) from the physical PSK simulation: (N-1) q b with q = 2 L tau_c/alpha."""
     b = float(np.mean(psk_physical_samples() ** 2))
-    n = N_SEC36
-    return (n - 1) * 2 * PSK_CHIPS * b / n
+    n = IN.n_sec36
+    return (n - 1) * 2 * IN.psk_chips * b / n
 
 
 def psk_power_coefficient_se() -> float:
     x2 = psk_physical_samples() ** 2
-    return float(2 * PSK_CHIPS * x2.std() / np.sqrt(x2.size))
+    return float(2 * IN.psk_chips * x2.std() / np.sqrt(x2.size))
 
 
-@cache
+@input_cache
 def psk_density() -> PointMassDensity:
     """The empirical amplitude density of the physical PSK simulation, on a 1e-4 amplitude grid.
 
@@ -489,14 +617,14 @@ def psk_contour() -> float:
     return float(1.0 / np.sqrt(3.0 * np.mean(psk_physical_samples() ** 2)))
 
 
-@cache
+@input_cache
 def psk_roc() -> ExactROC:
     """Actual ROC of a matched filter in PSK multiple-access noise (N = 1e5, tau/alpha = 2e-5).
 
     Stratified Monte Carlo over the number of overlapping interferers, each drawn from the
     simulated n_ij (independent interferers make this exact up to sampling error).
     """
-    noise = MultipleAccessNoise(N_SEC36, TAU_OVER_ALPHA_SEC36, psk_density())
+    noise = MultipleAccessNoise(IN.n_sec36, IN.tau_over_alpha_sec36, psk_density())
     th = THETA_GRID
     est = stratified_tail(noise, np.concatenate([th, th - 1.0]), MC_PER_STRATUM, np.random.default_rng(77))
     k = th.size
@@ -513,11 +641,11 @@ def psk_roc() -> ExactROC:
 PSK_BOUND_THETAS = np.linspace(0.2, 0.8, 7)
 
 
-@cache
+@input_cache
 def psk_chernoff() -> tuple[np.ndarray, np.ndarray]:
     """(ln ub p_f, ln ub (1 - p_d)) at PSK_BOUND_THETAS for the simulated PSK density."""
     return roc_upper_bound(
-        MultipleAccessNoise(N_SEC36, TAU_OVER_ALPHA_SEC36, psk_density()), PSK_BOUND_THETAS
+        MultipleAccessNoise(IN.n_sec36, IN.tau_over_alpha_sec36, psk_density()), PSK_BOUND_THETAS
     )
 
 
@@ -545,9 +673,9 @@ def bounds_tight_at_large_n(
 
     Two-point density scaled to keep the power fixed; 'approach' read as |ln bound - ln exact| < 0.1.
     """
-    q = 2 * TAU_OVER_ALPHA_SEC36
+    q = 2 * IN.tau_over_alpha_sec36
     b = power / ((n_aircraft - 1) * q)
-    noise = MultipleAccessNoise(n_aircraft, TAU_OVER_ALPHA_SEC36, two_point_density(b))
+    noise = MultipleAccessNoise(n_aircraft, IN.tau_over_alpha_sec36, two_point_density(b))
     exact = float(np.log(two_point_exact_tail(np.sqrt(b), n_aircraft - 1, q, np.array([theta]))[0]))
     ub = chernoff_log_tail(noise, theta).log_p
     lb = float(gallager_log_tails_lower(noise, np.array([theta]))[0][0])
@@ -710,8 +838,22 @@ _p_example, _p_tol = printed(P_EXAMPLE_PRINTED)
 _expg, _expg_tol = printed(EXP_G_EXAMPLE_PRINTED)
 _exp, _exp_tol = printed(EXP_EXAMPLE_PRINTED)
 _ratio, _ratio_tol = printed(RATIO_EXAMPLE_PRINTED)
+_w_pub, _w_tol = printed(
+    W_TIMES_CHIP_PRINTED,
+    why="printed as the fraction 3/4 in a limit tau_c/tau -> 0, compared to two decimals",
+)
 
-STATEMENT = Tolerance(reason="a statement: true or false", abs=0.0)
+STATEMENT = EXACT
+#: Sampling error of the PSK power: the amplitudes are sums of many +-1 chip products, no more
+#: kurtotic than a Gaussian, so Var(x^2) <= 2 b^2 and the relative standard error of the mean
+#: square of 200 000 samples is at most sqrt(2 / 200 000) = 0.32 %.
+_PSK_SAMPLES = 200_000
+_PSK_POWER_TOL = monte_carlo(
+    abs=4.0 * POWER_COEFF_PRINTED * (2.0 / _PSK_SAMPLES) ** 0.5,
+    runs=_PSK_SAMPLES,
+    why="4 standard errors of a mean square, sqrt(2/n) relative for amplitudes no more kurtotic than "
+    "a Gaussian, at the published 1/3",
+)
 
 CLAIMS = [
     Claim(
@@ -722,9 +864,10 @@ CLAIMS = [
         published=True,
         unit="statement",
         compute=lambda: all(
-            abs(noise_sec36(n, x).power - 2 * (N_SEC36 - 1) * TAU_OVER_ALPHA_SEC36 * b_of_contour(x)) < 1e-15
+            abs(noise_sec36(n, x).power - 2 * (IN.n_sec36 - 1) * IN.tau_over_alpha_sec36 * b_of_contour(x))
+            < 1e-15
             for n in DENSITY_NAMES
-            for x in CONTOURS
+            for x in CHECK_CONTOURS
         ),
         tolerance=STATEMENT,
         expected_status="reproduced",
@@ -755,7 +898,12 @@ CLAIMS = [
         published=-0.5,
         unit="power of N",
         compute=gaussian_term_order,
-        tolerance=Tolerance(reason="log-log slope over N = 1e6..1e8; exact in the limit", abs=1e-6),
+        kind="reproduction",
+        tolerance=printed(
+            "-0.5",
+            why="the printed order is an exact exponent; the log-log slope is compared "
+            "to the half unit of its one printed decimal",
+        )[1],
         expected_status="reproduced",
         note="Slope of the Gaussian term at n = sigma.",
         discussed_in=PAGE_NOISE,
@@ -768,13 +916,20 @@ CLAIMS = [
         published=-1.5,
         unit="power of N",
         compute=lambda3_term_order,
-        tolerance=Tolerance(reason="log-log slope over N = 1e6..1e8; exact in the limit", abs=1e-6),
+        kind="reproduction",
+        tolerance=printed(
+            "-1.5",
+            why="the printed order is an exact exponent; the log-log slope is compared "
+            "to the half unit of its one printed decimal",
+        )[1],
         expected_status="discrepant",
         note="For a C with lambda_3 != 0 the term is O(1/N). It is absent (lambda_3 = 0) for the uniform "
         "signature sets the paper studies, and the lambda_4 term O(N^{-3/2}) then leads.",
         erratum="ATC10-E3-5",
         oracle=lambda3_term_order_oracle,
-        oracle_tolerance=Tolerance(reason="numerical slope against an exact exponent", abs=1e-6),
+        oracle_tolerance=Tolerance(
+            reason="numerical slope against an exact exponent", abs=1e-6, policy="exact"
+        ),
         discussed_in=PAGE_NOISE,
     ),
     Claim(
@@ -803,7 +958,8 @@ CLAIMS = [
         expected_status="consistent",
         note="Fig. 3.2 is lost: C1, C3, C4 are the book's choices (uniform, triangular, Gaussian), so "
         "only the position of C2 (the two-point optimum) is the paper's. Checked on the Chernoff "
-        "exponents of p_f and 1 - p_d at 19 thresholds and 1/sqrt(3b) = 3, 4, 5, 6, 8.",
+        "exponents of p_f and 1 - p_d at 19 thresholds and at the contours 1/sqrt(3b), whose labels "
+        "are lost (assumed 3 and 8 at the ends, 4, 5, 6 between).",
         discussed_in=PAGE_ROC,
     ),
     Claim(
@@ -815,8 +971,10 @@ CLAIMS = [
         unit="statement",
         compute=deteriorates_with_power,
         tolerance=STATEMENT,
-        expected_status="reproduced",
-        note="Chernoff exponents of p_f, four densities, 1/sqrt(3b) = 3..8.",
+        expected_status="consistent",
+        note="Chernoff exponents of p_f, four densities (C1, C3, C4 the book's), at the assumed contours "
+        "1/sqrt(3b) = 3..8. Verdict changed from reproduced: the contour labels and three of the four "
+        "densities are lost with Figs. 3.2-3.6.",
         discussed_in=PAGE_ROC,
     ),
     Claim(
@@ -827,13 +985,14 @@ CLAIMS = [
         published=True,
         unit="statement",
         compute=lambda: all(
-            theorem_32_ordering(("C2 two-point", other))
+            theorem_32_ordering(("C2 two-point", other), CHECK_CONTOURS)
             for other in ("C1 uniform", "C3 triangular", "C4 Gaussian")
         ),
         tolerance=STATEMENT,
         expected_status="reproduced",
-        note="Against the three other symmetric densities of equal second moment, at every contour and "
-        "threshold; the theorem is about the Chernoff bound, not the actual ROC.",
+        note="Against the three other symmetric densities of equal second moment, at the test powers "
+        "1/sqrt(3b) = 3, 4, 5, 6, 8 and every threshold; the theorem is about the Chernoff bound, not "
+        "the actual ROC.",
         discussed_in=PAGE_ROC,
     ),
     Claim(
@@ -853,34 +1012,39 @@ CLAIMS = [
         id="ATC10-eq3.7.26-approx",
         paper="ATC10",
         locator="Eqs. (3.7.26)-(3.7.27)",
-        quantity="largest relative error of the large-N approximation at N = 1e5, tau/alpha = 2e-5",
-        published=0.0,
-        unit="",
-        compute=approximation_accurate_at_typical_values,
-        tolerance=Tolerance(
-            reason="'can be approximated': the book calls 1e-4 relative a good approximation", abs=1e-4
-        ),
-        expected_status="reproduced",
-        note="Thresholds 0.1..0.9, contours 3..8; (3.7.27) read with the square root restored (E3-9).",
+        quantity="(3.7.26) approximates (3.7.24) at N = 1e5, tau/alpha = 2e-5",
+        published=True,
+        unit="statement",
+        compute=lambda: approximation_accurate_at_typical_values() <= IN.good_approximation_rel,
+        tolerance=STATEMENT,
+        expected_status="consistent",
+        note="Largest relative error over thresholds 0.1..0.9 and 1/sqrt(3b) = 3..8, against the assumed "
+        "reading of 'can be approximated' (1e-5 to 1 %); (3.7.27) read with the square root restored "
+        "(E3-9). Verdict changed from reproduced: the accuracy 'can be approximated' asks for is an "
+        "assumption (it was a tolerance of 1e-4 with no policy).",
         discussed_in=PAGE_ROC,
     ),
     Claim(
         id="ATC10-sec3.8-gauss-always-optimistic",
         paper="ATC10",
         locator="Sec. 3.8, comparison of Figs. 3.3-3.6 with Fig. 3.8",
-        quantity="the p_f of ROC_g is always lower than the actual p_f (N = 1e5, tau/alpha = 2e-5, C1..C4)",
-        published=True,
-        unit="statement",
-        compute=gaussian_always_more_optimistic,
-        tolerance=STATEMENT,
-        expected_status="discrepant",
-        note="Actual ROCs from exact sums (C2, C4) and stratified Monte Carlo (C1, C3) at p_d >= 0.9 "
-        "and 0.99, "
-        "1/sqrt(3b) = 3..8: ROC_g is more optimistic at high SNR but not at 1/sqrt(3b) = 3, where the "
-        "continuous densities beat it. The paper's evidence (the lower bound) is invalid (E3-1).",
+        quantity="the p_f of ROC_g is always lower than the actual p_f (N = 1e5, tau/alpha = 2e-5, C1..C4): "
+        "smallest ratio actual best p_f / ROC_g p_f",
+        published=1.0,
+        relation=">",
+        unit="ratio",
+        kind="statement",
+        compute=gaussian_smallest_pf_ratio,
+        tolerance=EXACT,
+        expected_status="consistent",
+        note="'Always lower' is the smallest ratio > 1, over the four densities, the contours and p_d = 0.9, "
+        "0.99. Actual ROCs from exact sums (C2, C4) and stratified Monte Carlo (C1, C3) at p_d >= 0.9 "
+        "and 0.99 at the contours: ROC_g is more optimistic at high SNR but not at 1/sqrt(3b) = 3, where "
+        "the continuous densities beat it (confirmed by the exact Gaussian-C mixture, "
+        "gaussian_beaten_at_low_snr_oracle). The contour labels are lost: if the figures' lowest contour "
+        "was 4 or more, the statement holds for them. The paper's evidence (the lower bound) is invalid "
+        "(E3-1). Verdict changed from discrepant: the outcome turns on the assumed lowest contour.",
         erratum="ATC10-E3-1",
-        oracle=gaussian_beaten_at_low_snr_oracle,
-        oracle_tolerance=STATEMENT,
         discussed_in=PAGE_GAUSS,
     ),
     Claim(
@@ -901,13 +1065,31 @@ CLAIMS = [
         paper="ATC10",
         locator="Sec. 3.8, Fig. 3.9",
         quantity="at N = 1e5, tau/alpha = 1e-5, Exp is below Exp_g = 4 by a non-negligible amount",
-        published=0.1,
-        unit="fraction of Exp_g",
-        relation=">",
-        compute=exp_fig39_shortfall,
-        tolerance=Tolerance(reason="'non-negligible' read as a shortfall of more than 10 %", abs=0.0),
+        published=True,
+        unit="statement",
+        compute=lambda: exp_fig39_shortfall() > IN.non_negligible_fraction,
+        tolerance=STATEMENT,
         expected_status="consistent",
-        note="Exp = 3.30 against 4: a shortfall of 17 %. The threshold 10 % interprets the prose.",
+        note="Exp = 3.30 against 4: a shortfall of 17 %, against the assumed reading of 'non-negligible' "
+        "(5-20 %; false only above 17 %).",
+        discussed_in=PAGE_GAUSS,
+    ),
+    Claim(
+        id="ATC10-fig3.9-exp-below",
+        paper="ATC10",
+        locator="Sec. 3.8, Fig. 3.9",
+        quantity="Exp at N = 1e5, tau/alpha = 1e-5 is less than Exp_g = 4",
+        published=float(IN.nominal("exp_g_fig39")),
+        relation="<",
+        unit="",
+        kind="statement",
+        compute=lambda: float(
+            exponent_from_gaussian_exponent(IN.n_fig39, IN.tau_over_alpha_fig39, IN.exp_g_fig39)
+        ),
+        tolerance=EXACT,
+        expected_status="reproduced",
+        note="The numbers behind ATC10-fig3.9-shortfall: Eq. (3.8.16) gives Exp = 3.30 (the published value "
+        "is the printed Exp_g = 4, the relation the text's 'less than').",
         discussed_in=PAGE_GAUSS,
     ),
     Claim(
@@ -928,13 +1110,13 @@ CLAIMS = [
         paper="ATC10",
         locator="Sec. 3.8, Fig. 3.10",
         quantity="Exp is practically linear in Exp_g (R^2 of a line fit on [0, 20], N = 1e5)",
-        published=1.0,
-        unit="",
-        compute=exp_linearity_r2,
-        tolerance=Tolerance(reason="'practically linear' read as R^2 within 0.01 of 1", abs=0.01),
+        published=True,
+        unit="statement",
+        compute=lambda: exp_linearity_r2() >= IN.practically_linear_r2,
+        tolerance=STATEMENT,
         expected_status="consistent",
-        note="R^2 of a least-squares line; the curve is visibly concave for N <= 2e5 and straighter "
-        "for N >= 1e6.",
+        note="R^2 of a least-squares line against the assumed reading of 'practically linear' (R^2 of "
+        "0.95-0.999); the curve is visibly concave for N <= 2e5 and straighter for N >= 1e6.",
         discussed_in=PAGE_GAUSS,
     ),
     Claim(
@@ -950,7 +1132,9 @@ CLAIMS = [
         note="N = 2e5, B = 1e7 Hz, alpha = 1 s give p = 0.02 = 1/50.",
         erratum="ATC10-E3-2",
         oracle=worked_example_power_oracle,
-        oracle_tolerance=Tolerance(reason="float against exact rational arithmetic", rel=1e-12),
+        oracle_tolerance=Tolerance(
+            reason="float against exact rational arithmetic", rel=1e-12, policy="exact"
+        ),
         discussed_in=PAGE_GAUSS,
     ),
     Claim(
@@ -980,7 +1164,9 @@ CLAIMS = [
         "would give 8.62.",
         erratum="ATC10-E3-10",
         oracle=worked_example_exp_oracle,
-        oracle_tolerance=Tolerance(reason="(3.8.16) drops the atanh term of the exact (3.7.24)", rel=1e-3),
+        oracle_tolerance=Tolerance(
+            reason="(3.8.16) drops the atanh term of the exact (3.7.24)", rel=1e-3, policy="exact"
+        ),
         discussed_in=PAGE_GAUSS,
     ),
     Claim(
@@ -996,7 +1182,9 @@ CLAIMS = [
         note="12.5/9.70 = 1.29; the printed 1.4 matches N = 1e5 (1.45).",
         erratum="ATC10-E3-10",
         oracle=worked_example_ratio_oracle,
-        oracle_tolerance=Tolerance(reason="(3.8.16) drops the atanh term of the exact (3.7.24)", rel=1e-3),
+        oracle_tolerance=Tolerance(
+            reason="(3.8.16) drops the atanh term of the exact (3.7.24)", rel=1e-3, policy="exact"
+        ),
         discussed_in=PAGE_GAUSS,
     ),
     Claim(
@@ -1017,13 +1205,14 @@ CLAIMS = [
         paper="ATC10",
         locator="Eq. (3.9.3)",
         quantity="Zakai bandwidth times chip duration for tau_c/tau << 1",
-        published=W_TIMES_CHIP_PRINTED,
+        published=_w_pub,
         unit="",
         compute=w_chip_limit_ideal,
-        tolerance=Tolerance(reason="the limit evaluated at tau_c/tau = 1e-4 (bracket 1 + 2e-4)", abs=2e-4),
-        expected_status="reproduced",
-        note="Idealised Fig. 3.11 autocorrelation: peak 1, sidelobes +-tau_c/tau alternating over L+1 lags, "
-        "which reproduces the printed bracket exactly.",
+        tolerance=_w_tol,
+        expected_status="consistent",
+        note="Idealised Fig. 3.11 autocorrelation: peak 1, sidelobes +-tau_c/tau alternating over L (+1, "
+        "assumed) lags, evaluated at tau_c/tau = 1e-4; both extents give 3/4 in the limit. Verdict "
+        "changed from reproduced: Fig. 3.11 is lost, the sidelobe model is the book's reconstruction.",
         discussed_in=PAGE_ZAKAI,
     ),
     Claim(
@@ -1037,25 +1226,26 @@ CLAIMS = [
         tolerance=STATEMENT,
         expected_status="consistent",
         note="Fig. 3.11 is lost; the sidelobe model (alternating +-1/L over L+1 lags) is the book's "
-        "reconstruction. Sidelobes confined to |t| < tau give 1 + 2 tau_c/tau instead.",
+        "reconstruction and gives the printed bracket exactly. Sidelobes confined to |t| < tau (the other "
+        "end of the assumed extent) give 1 + 2 tau_c/tau instead.",
         discussed_in=PAGE_ZAKAI,
     ),
     Claim(
         id="ATC10-sec3.9-W-real-code",
         paper="ATC10",
         locator="Eq. (3.9.3)",
-        quantity="W tau_c of a long PSK sequence with good autocorrelation (1023-chip m-sequence)",
-        published=W_TIMES_CHIP_PRINTED,
+        quantity="W tau_c of a long PSK sequence with good autocorrelation (m-sequence, 127-1023 chips)",
+        published=_w_pub,
         unit="",
         compute=w_chip_msequence,
-        tolerance=Tolerance(reason="'approximately' read as 5 %", rel=0.05),
-        expected_status="discrepant",
-        note="The m-sequence's aperiodic sidelobes carry as much energy as the main lobe: W tau_c = 0.563.",
+        tolerance=prose("approximately", why="'W ~ (3/4)/tau_c', the symbol read as the word"),
+        expected_status="inconsistent",
+        note="The m-sequence's aperiodic sidelobes carry as much energy as the main lobe: W tau_c = 0.563 "
+        "for 1023 chips (confirmed by brute-force integration of the chip waveform, "
+        "w_chip_msequence_oracle), and no m-sequence of 127-1023 chips comes within 10 % of 3/4; the code "
+        "would need an aperiodic sidelobe energy about a third of the m-sequence's (E3-7). Verdict "
+        "changed from discrepant: the code is the book's choice of a 'good' sequence.",
         erratum="ATC10-E3-7",
-        oracle=w_chip_msequence_oracle,
-        oracle_tolerance=Tolerance(
-            reason="Simpson's rule is exact for piecewise-quadratic R^2; rounding only", rel=1e-9
-        ),
         discussed_in=PAGE_ZAKAI,
     ),
     Claim(
@@ -1066,16 +1256,12 @@ CLAIMS = [
         published=POWER_COEFF_PRINTED,
         unit="N tau_c / alpha",
         compute=psk_power_coefficient,
-        tolerance=Tolerance(
-            reason="4 standard errors of the 200 000-sample Monte Carlo (0.0016) plus the target-code "
-            "factor 1 + R_1/2 with |R_1| <= 1/32 (0.005)",
-            abs=0.012,
-        ),
+        tolerance=_PSK_POWER_TOL,
         expected_status="consistent",
-        note="Seeded physical simulation: random +-1 interferer codes of 32 chips, uniform delays and "
-        "carrier "
-        "phases, against a target code with low sidelobes; E(n^2) = (N-1) q b with q = 2 L tau_c/alpha. "
-        "The target's first sidelobe R_1 shifts b by the factor 1 + R_1/2.",
+        note="Seeded physical simulation: random +-1 interferer codes of L chips (assumed 16-64), uniform "
+        "delays and carrier phases, against a target code with low sidelobes; E(n^2) = (N-1) q b with "
+        "q = 2 L tau_c/alpha. The target's first sidelobe R_1 shifts b by the factor 1 + R_1/2 (up to "
+        "1/(2L)); the tolerance is now the sampling error only (before, the R_1 factor was added to it).",
         discussed_in=PAGE_ZAKAI,
     ),
     Claim(
@@ -1089,8 +1275,8 @@ CLAIMS = [
         compute=psk_gaussian_optimistic,
         tolerance=STATEMENT,
         expected_status="consistent",
-        note="Book's signature set: random 32-chip PSK codes (1/sqrt(3b) about 8) at N = 1e5, "
-        "tau/alpha = 2e-5; "
+        note="Book's signature set: random PSK codes of L chips (assumed 16-64; 1/sqrt(3b) about 8 at "
+        "L = 32) at N = 1e5, tau/alpha = 2e-5; "
         "best p_f at p_d >= 0.9 from the stratified Monte Carlo (3.5e-5) against ROC_g (1.1e-8).",
         discussed_in=PAGE_GAUSS,
     ),

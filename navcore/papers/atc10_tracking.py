@@ -1,8 +1,11 @@
 """ATC-10 Section 4 and Appendices G-H: aircraft position tracking with clock tracking.
 
-Published inputs (Table 4.1 sub-satellite points, the aircraft at 45 deg N 120 deg, sigma = 50 ns,
-sigma0 = 5/50/500 ns) and published results (Tables 4.2-4.3, the rules of thumb) are typed
-once here with their locators. Everything else is computed by
+Every input is declared once in :data:`IN` with its provenance: the published Table 4.1
+sub-satellite points, the aircraft at 45 deg N 120 deg, sigma = 50 ns, sigma0 = 5/50/500 ns and
+the printed Table 4.2; the conventions (c = 1 ft/ns, east-positive longitudes); the fitted
+effective radius ratio (9.235, solved from Table 4.2) and outage threshold factor (1.8, inferred
+from rule 4); the assumed unrounded Table 4.2 values behind Table 4.3 and the readings of
+'significantly' and 'largely'. Everything else is computed by
 :mod:`navcore.location.multilateration` and :mod:`navcore.location.clock_tracking`.
 
 Conventions used to reproduce the paper:
@@ -19,11 +22,11 @@ from __future__ import annotations
 
 import itertools
 import math
-from functools import cache
 
 import numpy as np
 
-from navcore.ledger import EXACT, Claim, Erratum, Tolerance, printed
+from navcore.ledger import EXACT, Claim, Erratum, Tolerance, figure_reading, printed, prose
+from navcore.ledger.inputs import InputSet, input_cache
 from navcore.location.clock_tracking import (
     alpha_parameter,
     convergence_steps,
@@ -51,8 +54,40 @@ PAGE_GEOMETRY = "atc10/30-tracking-geometry"
 PAGE_TRACKER = "atc10/31-clock-tracking"
 PAGE_EXAMPLES = "atc10/32-tracking-examples"
 
-#: Table 4.1: sub-satellite points (latitude, longitude) in degrees, satellites 1..K.
-TABLE_4_1: dict[str, tuple[tuple[float, float], ...]] = {
+EXAMPLES = ("I", "II")
+COLUMNS = ("beta", "trace_all", "trace_123", "s_all", "s_123")
+COLUMN_NAMES = {
+    "beta": "beta",
+    "trace_all": "tr{(F'F)^-1}, all satellites",
+    "trace_123": "tr{(F'F)^-1}, satellites 1,2,3",
+    "s_all": "1'F(F'F)^-2F'1, all satellites",
+    "s_123": "1'F(F'F)^-2F'1, satellites 1,2,3",
+}
+#: Table 4.2 as printed (the text; each cell is declared once as a published input below).
+TABLE_4_2: dict[str, dict[str, str]] = {
+    "I": {"beta": ".0543", "trace_all": "7.84", "trace_123": "9.39", "s_all": "1.30", "s_123": "5.76"},
+    "II": {"beta": ".00355", "trace_all": "3.99", "trace_123": "14.9", "s_all": "1.16", "s_123": "14.3"},
+}
+TABLE_4_3_COLUMNS = ("alpha", "psi", "sd0", "sdN", "sdN1")
+#: Table 4.3 as printed (the results the claims compare with): alpha, psi(alpha), LS sd,
+#: tracking limit, first 3-satellite estimate (ft); keyed by (example, sigma0 in ns).
+TABLE_4_3: dict[tuple[str, float], tuple[str, str, str, str, str]] = {
+    ("I", 5.0): ("1.61e-4", ".10", "282", "160", "230"),
+    ("I", 50.0): ("1.61e-2", ".40", "282", "209", "450"),
+    ("I", 500.0): ("1.61", ".925", "282", "274", "1840"),
+    ("II", 5.0): ("1.05e-5", ".04", "910", "205", "677"),
+    ("II", 50.0): ("1.05e-3", ".18", "910", "396", "1500"),
+    ("II", 500.0): ("1.05e-1", ".635", "910", "727", "4200"),
+}
+#: Which sigma0 input each printed Table 4.3 row uses.
+SIGMA0_INPUTS = {5.0: "sigma0_low_ns", 50.0: "sigma0_mid_ns", 500.0: "sigma0_high_ns"}
+
+# ---------------------------------------------------------------------------------------
+# Inputs, each declared once with its provenance
+# ---------------------------------------------------------------------------------------
+IN = InputSet("ATC10", "tracking")
+
+_TABLE_4_1: dict[str, tuple[tuple[float, float], ...]] = {
     "I": (
         (14.9, 152.7),
         (63.4, 115.0),
@@ -73,39 +108,173 @@ TABLE_4_1: dict[str, tuple[tuple[float, float], ...]] = {
         (56.2, 83.4),
     ),
 }
-#: Sec. 4.6: aircraft latitude and longitude, deg.
-AIRCRAFT_LAT_LON = (45.0, 120.0)
-#: Sec. 4.6: rms time-of-arrival error sigma, ns, and the clock parameters sigma0, ns.
-SIGMA_NS = 50.0
-SIGMA0_NS = (5.0, 50.0, 500.0)
-#: Sec. 1.3 / 4.3: nominal pulse period tau_bar, s ("a position update rate of one per second").
-TAU_BAR_S = 1.0
-#: The paper's effective conversion (Table 4.3 ft = ns numbers), ft per ns.
-C_FT_PER_NS = 1.0
+for _ex, _pts in _TABLE_4_1.items():
+    for _k, (_lat, _lon) in enumerate(_pts, start=1):
+        IN.published(
+            f"ex{_ex}_sat{_k}_lat_deg",
+            _lat,
+            locator="Table 4.1",
+            unit="deg",
+            quantity=f"Example {_ex}, satellite {_k}: sub-satellite latitude",
+        )
+        IN.published(
+            f"ex{_ex}_sat{_k}_lon_deg",
+            _lon,
+            locator="Table 4.1",
+            unit="deg",
+            quantity=f"Example {_ex}, satellite {_k}: sub-satellite longitude",
+        )
+IN.published("aircraft_lat_deg", 45.0, locator="Sec. 4.6", unit="deg", quantity="aircraft latitude")
+IN.published("aircraft_lon_deg", 120.0, locator="Sec. 4.6", unit="deg", quantity="aircraft longitude")
+IN.published("sigma_ns", 50.0, locator="Sec. 4.6", unit="ns", quantity="rms time-of-arrival error sigma")
+IN.published(
+    "sigma0_low_ns",
+    5.0,
+    locator="Sec. 4.6, Table 4.3",
+    unit="ns",
+    quantity="clock parameter sigma0 = 0.1 sigma",
+)
+IN.published(
+    "sigma0_mid_ns", 50.0, locator="Sec. 4.6, Table 4.3", unit="ns", quantity="clock parameter sigma0 = sigma"
+)
+IN.published(
+    "sigma0_high_ns",
+    500.0,
+    locator="Sec. 4.6, Table 4.3",
+    unit="ns",
+    quantity="clock parameter sigma0 = 10 sigma",
+)
+IN.published(
+    "tau_bar_s",
+    1.0,
+    locator="Sec. 4 opening (tau_{i+1} - tau_i = 1 s); Sec. 1.3 (one update per second)",
+    unit="s",
+    quantity="nominal pulse period tau_bar",
+)
+IN.published(
+    "cone_half_angle_deg",
+    45.0,
+    locator="Sec. 4.6",
+    unit="deg",
+    quantity="half-angle of the cone about the local vertical containing the satellites",
+)
+IN.published(
+    "convergence_fraction",
+    0.1,
+    locator="Sec. 4.5.4 ('to within (0.1) gamma of gamma')",
+    quantity="convergence criterion of gamma_n",
+)
+for _ex in EXAMPLES:
+    for _col in COLUMNS:
+        IN.published(
+            f"tab42_ex{_ex}_{_col}",
+            float(TABLE_4_2[_ex][_col]),
+            locator="Table 4.2",
+            quantity=f"Example {_ex}: {COLUMN_NAMES[_col]}",
+        )
+for _ex in EXAMPLES:
+    for _col in COLUMNS:
+        _half = printed(TABLE_4_2[_ex][_col])[1].abs
+        IN.assumed(
+            f"tab42_ex{_ex}_{_col}_unrounded",
+            0.0,
+            low=-_half,
+            high=_half,
+            quantity=f"Example {_ex}: {COLUMN_NAMES[_col]}, the paper's unrounded value minus the printed "
+            + TABLE_4_2[_ex][_col],
+            reason="Table 4.3 was computed from Table 4.2 before its rounding to the printed digits; the "
+            "unrounded value lies within half a unit of the last printed digit (the range)",
+        )
+for (_ex, _s0), _row in TABLE_4_3.items():
+    _key = f"tab43_ex{_ex}_s{int(_s0)}_psi"
+    IN.published(
+        _key,
+        float(_row[1]),
+        locator="Table 4.3 col. (ii), 'psi(alpha) (Fig. 4.1)'",
+        quantity=f"Example {_ex}, sigma0 = {int(_s0)} ns: psi as the paper read it off Fig. 4.1",
+    )
+    _half = printed(_row[1])[1].abs
+    IN.assumed(
+        _key + "_unrounded",
+        0.0,
+        low=-_half,
+        high=_half,
+        quantity=f"Example {_ex}, sigma0 = {int(_s0)} ns: the paper's psi reading minus the printed "
+        + _row[1],
+        reason="cols. (iv)-(v) of Table 4.3 use the psi read off Fig. 4.1 before its rounding to the "
+        "printed digits; it lies within half a unit of the last printed digit (the range)",
+    )
+IN.convention(
+    "c_ft_per_ns",
+    1.0,
+    alternative=0.299792458 / 0.3048,
+    unit="ft/ns",
+    quantity="speed of light used to turn ns into ft",
+    reason="Table 4.3 prints sigma[ns] * sqrt(...) as ft, i.e. c = 1 ft/ns; the true c is 0.98357 ft/ns",
+)
+IN.convention(
+    "longitude_sign",
+    1.0,
+    alternative=-1.0,
+    quantity="sign of the printed longitudes (+1 east-positive)",
+    reason="Table 4.1 prints longitudes without E/W; the aircraft at 120 deg is in North America "
+    "(west), but the printed three-satellite term 5.76/14.3 is reproduced in east-positive ECEF "
+    "(E4-1); every rotation-invariant quantity is the same under both readings",
+)
+IN.fitted(
+    "radius_ratio",
+    9.235,
+    fitted_to=tuple(f"ATC10-tab4.2-ex{ex}-{col}-fitted" for ex in EXAMPLES for col in COLUMNS),
+    quantity="effective satellite orbit radius over Earth radius",
+    reason="the one shape parameter r_orbit/R_E that best reproduces the ten printed Table 4.2 "
+    "numbers (least squares on log ratios, col. 5 with the printed formula; solve_radius_ratio); the "
+    "physical synchronous orbit gives 6.618",
+)
+IN.fitted(
+    "outage_threshold_factor",
+    1.8,
+    fitted_to=("ATC10-sec4.6-rule4-outage-exI", "ATC10-sec4.6-rule4-outage-exII"),
+    quantity="acceptable three-satellite rms error over the all-satellite least-squares rms",
+    reason="the paper names no threshold for 'acceptable'; 1.8 x the least-squares rms was inferred "
+    "so that the printed Table 4.2 gives rule 4's 30 s and 60 s",
+)
+IN.assumed(
+    "significant_ms_fraction",
+    0.5,
+    low=0.3,
+    high=0.6,
+    quantity="largest mean-square fraction left by tracking that counts as a 'significant' reduction",
+    reason="'significantly reduce' (rules 1-2) is not quantified; read as tracking removing at least "
+    "half of the mean-square error, plausibly 40 % to 70 %",
+)
+IN.assumed(
+    "largely_share",
+    0.5,
+    low=0.4,
+    high=0.7,
+    quantity="share of the mean-square jump that counts as 'largely' due to the clock term",
+    reason="'due largely to' (rule 3) is not quantified; read as more than half, plausibly 40 % to 70 %",
+)
 
-COLUMNS = ("beta", "trace_all", "trace_123", "s_all", "s_123")
-COLUMN_NAMES = {
-    "beta": "beta",
-    "trace_all": "tr{(F'F)^-1}, all satellites",
-    "trace_123": "tr{(F'F)^-1}, satellites 1,2,3",
-    "s_all": "1'F(F'F)^-2F'1, all satellites",
-    "s_123": "1'F(F'F)^-2F'1, satellites 1,2,3",
-}
-#: Table 4.2 as printed.
-TABLE_4_2: dict[str, dict[str, str]] = {
-    "I": {"beta": ".0543", "trace_all": "7.84", "trace_123": "9.39", "s_all": "1.30", "s_123": "5.76"},
-    "II": {"beta": ".00355", "trace_all": "3.99", "trace_123": "14.9", "s_all": "1.16", "s_123": "14.3"},
-}
-TABLE_4_3_COLUMNS = ("alpha", "psi", "sd0", "sdN", "sdN1")
-#: Table 4.3 as printed: alpha, psi(alpha), LS sd, tracking limit, first 3-satellite estimate (ft).
-TABLE_4_3: dict[tuple[str, float], tuple[str, str, str, str, str]] = {
-    ("I", 5.0): ("1.61e-4", ".10", "282", "160", "230"),
-    ("I", 50.0): ("1.61e-2", ".40", "282", "209", "450"),
-    ("I", 500.0): ("1.61", ".925", "282", "274", "1840"),
-    ("II", 5.0): ("1.05e-5", ".04", "910", "205", "677"),
-    ("II", 50.0): ("1.05e-3", ".18", "910", "396", "1500"),
-    ("II", 500.0): ("1.05e-1", ".635", "910", "727", "4200"),
-}
+
+def sigma0_values() -> tuple[float, float, float]:
+    """The three published sigma0 (ns), read from :data:`IN`."""
+    return (IN.sigma0_low_ns, IN.sigma0_mid_ns, IN.sigma0_high_ns)
+
+
+def table_4_1(example: str) -> np.ndarray:
+    """Table 4.1 sub-satellite points (lat, lon in deg) of ``example``, read from :data:`IN`."""
+    k = len(_TABLE_4_1[example])
+    return np.array(
+        [
+            (getattr(IN, f"ex{example}_sat{i}_lat_deg"), getattr(IN, f"ex{example}_sat{i}_lon_deg"))
+            for i in range(1, k + 1)
+        ]
+    )
+
+
+def aircraft_lat_lon() -> tuple[float, float]:
+    return (IN.aircraft_lat_deg, IN.aircraft_lon_deg)
 
 
 # --------------------------------------------------------------------------- geometry
@@ -114,17 +283,29 @@ def physical_radius_ratio() -> float:
     return synchronous_orbit_radius() / EARTH_MEAN_RADIUS_M
 
 
-@cache
+def fitted_radius_ratio() -> float:
+    """The fitted effective ratio r_orbit/R_E (:data:`IN`, fitted to Table 4.2)."""
+    return IN.radius_ratio
+
+
+def _positions(
+    example: str, radius_ratio: float, west_positive: bool = False
+) -> tuple[np.ndarray, np.ndarray]:
+    pts = table_4_1(example)
+    lat0, lon0 = aircraft_lat_lon()
+    sign = IN.longitude_sign * (-1.0 if west_positive else 1.0)
+    sats = position_on_sphere(pts[:, 0], sign * pts[:, 1], radius_ratio)
+    ac = position_on_sphere(lat0, sign * lon0, 1.0)
+    return sats, ac
+
+
+@input_cache
 def example_line_of_sight(example: str, radius_ratio: float, west_positive: bool = False) -> np.ndarray:
     """Unit vectors satellite -> aircraft (ECEF rows) for Table 4.1 example ``example``."""
-    pts = np.array(TABLE_4_1[example])
-    sign = -1.0 if west_positive else 1.0
-    sats = position_on_sphere(pts[:, 0], sign * pts[:, 1], radius_ratio)
-    ac = position_on_sphere(AIRCRAFT_LAT_LON[0], sign * AIRCRAFT_LAT_LON[1], 1.0)
-    return line_of_sight_matrix(sats, ac)
+    return line_of_sight_matrix(*_positions(example, radius_ratio, west_positive))
 
 
-@cache
+@input_cache
 def table_4_2_from_geometry(
     example: str, radius_ratio: float, west_positive: bool = False
 ) -> dict[str, float]:
@@ -152,21 +333,22 @@ def _printed_table_4_2_as_computed(example: str, radius_ratio: float) -> dict[st
     return t
 
 
-@cache
-def fitted_radius_ratio() -> float:
-    """The one shape parameter r_orbit / R_E that best reproduces all ten Table 4.2 numbers.
+def solve_radius_ratio() -> float:
+    """Solve the one shape parameter r_orbit / R_E that best reproduces all ten Table 4.2 numbers.
 
-    Least squares on the log ratios computed / printed, col. 5 with the printed formula.
+    Least squares on the log ratios computed / printed, col. 5 with the printed formula. This is
+    how the fitted input ``radius_ratio`` was obtained (a test checks the declared value).
     """
 
     from scipy.optimize import minimize_scalar
 
     def cost(r: float) -> float:
         total = 0.0
-        for ex in ("I", "II"):
+        for ex in EXAMPLES:
             t = _printed_table_4_2_as_computed(ex, float(r))
+            printed_t = printed_table_4_2(ex)
             for col in COLUMNS:
-                total += math.log(t[col] / float(TABLE_4_2[ex][col])) ** 2
+                total += math.log(t[col] / printed_t[col]) ** 2
         return total
 
     res = minimize_scalar(cost, bounds=(7.0, 12.0), method="bounded", options={"xatol": 1e-6})
@@ -178,9 +360,9 @@ def _pymap3d_enu_line_of_sight(example: str, radius_ratio: float) -> np.ndarray:
     import pymap3d
 
     sphere = pymap3d.Ellipsoid(EARTH_MEAN_RADIUS_M, EARTH_MEAN_RADIUS_M, name="sphere")
-    lat0, lon0 = AIRCRAFT_LAT_LON
+    lat0, lon0 = aircraft_lat_lon()
     rows = []
-    for lat, lon in TABLE_4_1[example]:
+    for lat, lon in table_4_1(example):
         x, y, z = pymap3d.geodetic2ecef(lat, lon, (radius_ratio - 1.0) * EARTH_MEAN_RADIUS_M, ell=sphere)
         az, el, _ = pymap3d.ecef2aer(x, y, z, lat0, lon0, 0.0, ell=sphere)
         az, el = math.radians(float(az)), math.radians(float(el))
@@ -212,65 +394,73 @@ def _oracle_invariants(example: str, radius_ratio: float) -> dict[str, float]:
 
 
 def max_zenith_angle_deg(example: str, radius_ratio: float) -> float:
-    pts = np.array(TABLE_4_1[example])
-    sats = position_on_sphere(pts[:, 0], pts[:, 1], radius_ratio)
-    ac = position_on_sphere(*AIRCRAFT_LAT_LON, 1.0)
-    return float(zenith_angles_deg(sats, ac).max())
+    return float(zenith_angles_deg(*_positions(example, radius_ratio)).max())
+
+
+def within_cone(example: str, radius_ratio: float) -> bool:
+    """Sec. 4.6: all satellites of ``example`` within the published cone about the local vertical."""
+    return max_zenith_angle_deg(example, radius_ratio) <= IN.cone_half_angle_deg
 
 
 def best_triplet(example: str, radius_ratio: float, criterion: str = "trace") -> tuple[int, int, int]:
     """Most widely spaced triplet among all satellites of the example (0-based)."""
-    pts = np.array(TABLE_4_1[example])
-    sats = position_on_sphere(pts[:, 0], pts[:, 1], radius_ratio)
-    ac = position_on_sphere(*AIRCRAFT_LAT_LON, 1.0)
+    sats, ac = _positions(example, radius_ratio)
     return most_widely_spaced_triplet(sats, ac, cone_half_angle_deg=90.0, criterion=criterion)[0]
 
 
 # --------------------------------------------------------------------------- Table 4.3
 def printed_table_4_2(example: str) -> dict[str, float]:
-    return {k: float(v) for k, v in TABLE_4_2[example].items()}
+    """The printed Table 4.2 of ``example`` (published inputs)."""
+    return {col: getattr(IN, f"tab42_ex{example}_{col}") for col in COLUMNS}
+
+
+def unrounded_table_4_2(example: str) -> dict[str, float]:
+    """Table 4.2 as the paper held it before rounding: printed value + assumed offset (nominal 0)."""
+    return {
+        col: getattr(IN, f"tab42_ex{example}_{col}") + getattr(IN, f"tab42_ex{example}_{col}_unrounded")
+        for col in COLUMNS
+    }
 
 
 def table_4_3_row(
-    inputs: dict[str, float], sigma0: float, sigma: float = SIGMA_NS, psi_value: float | None = None
+    inputs: dict[str, float], sigma0: float, sigma: float | None = None, psi_value: float | None = None
 ):
     """Table 4.3 columns (alpha, psi, sd0, sdN, sdN1 in ft) from Table 4.2-type inputs.
 
     sd0 = sigma sqrt(tr + S/beta); sdN = sigma sqrt(tr + (psi/beta) S); sdN1 = sigma sqrt(tr3 +
     gamma_{N+1} S3) with gamma_{N+1} = [psi + (27/8) alpha (2/psi)] / beta (Eqs. 4.5.27, 4.5.35).
-    ``psi_value`` overrides the exact psi (to propagate a printed, rounded psi).
+    ``sigma`` defaults to the published 50 ns; ``psi_value`` overrides the exact psi (to
+    propagate a printed, rounded psi).
     """
+    sigma = IN.sigma_ns if sigma is None else sigma
     b = inputs["beta"]
     a = alpha_parameter(sigma0, sigma, b)
     p = float(psi(a)) if psi_value is None else psi_value
-    c = C_FT_PER_NS
+    c = IN.c_ft_per_ns
     sd0 = c * sigma * math.sqrt(inputs["trace_all"] + inputs["s_all"] / b)
     sdn = c * sigma * math.sqrt(inputs["trace_all"] + p / b * inputs["s_all"])
     g1 = (p + 27.0 / 8.0 * a * 2.0 / p) / b
     sdn1 = c * sigma * math.sqrt(inputs["trace_123"] + g1 * inputs["s_123"])
-    return a, float(psi(a)) if psi_value is None else p, sd0, sdn, sdn1
+    return a, p, sd0, sdn, sdn1
 
 
-def _input_rounding_band(example: str, sigma0: float, col: int) -> float:
-    """Largest change of a Table 4.3 entry over the half-last-digit box of its printed inputs.
+def paper_psi(example: str, sigma0_nominal: float) -> float:
+    """The psi the paper used in cols. (iv)-(v): its Fig. 4.1 reading (printed col. (ii)) before rounding."""
+    key = f"tab43_ex{example}_s{int(sigma0_nominal)}_psi"
+    return getattr(IN, key) + getattr(IN, key + "_unrounded")
 
-    Inputs: the five printed Table 4.2 numbers and, for the columns that use it, the
-    printed psi (the paper reads psi from its Fig. 4.1).
+
+def table_4_3_cell(example: str, sigma0_nominal: float, column: int) -> float:
+    """One Table 4.3 cell as the paper computed it.
+
+    From Table 4.2 before rounding (printed + assumed offset), sigma = 50 ns, c = 1 ft/ns;
+    alpha and psi (cols. i-ii) exact, cols. (iv)-(v) with the paper's psi read off Fig. 4.1.
     """
-    base_inputs = printed_table_4_2(example)
-    nominal = table_4_3_row(base_inputs, sigma0)[col]
-    halves = {k: printed(v)[1].abs for k, v in TABLE_4_2[example].items()}
-    psi_text = TABLE_4_3[(example, sigma0)][1]
-    psi_p, psi_tol = printed(psi_text)
-    psi_choices: list[float | None] = [None]
-    if col >= 3:
-        psi_choices += [psi_p - psi_tol.abs, psi_p + psi_tol.abs]
-    worst = 0.0
-    for signs in itertools.product((-1.0, 1.0), repeat=len(COLUMNS)):
-        corner = {k: base_inputs[k] + s * halves[k] for k, s in zip(COLUMNS, signs, strict=True)}
-        for pv in psi_choices:
-            worst = max(worst, abs(table_4_3_row(corner, sigma0, psi_value=pv)[col] - nominal))
-    return float(worst)
+    sigma0 = getattr(IN, SIGMA0_INPUTS[sigma0_nominal])
+    inputs = unrounded_table_4_2(example)
+    if column < 3:
+        return table_4_3_row(inputs, sigma0)[column]
+    return table_4_3_row(inputs, sigma0, psi_value=paper_psi(example, sigma0_nominal))[column]
 
 
 def corrected_first_three_satellite_sd(example: str, sigma0: float) -> float:
@@ -280,23 +470,34 @@ def corrected_first_three_satellite_sd(example: str, sigma0: float) -> float:
 
 
 MC_RUNS = 10_000
+#: Epochs with all satellites before the drop in the Monte Carlo (the paper's N is not stated;
+#: 150 is beyond every convergence time, i.e. steady state).
 MC_N_LAST = 150
 
 
-@cache
+@input_cache
 def tracker_monte_carlo(example: str, sigma0: float, m_after: int = 1, n_runs: int = MC_RUNS, seed: int = 4):
     """Seeded Monte Carlo of the full tracker at the fitted geometry (N = 150 all-satellite epochs)."""
     U = example_line_of_sight(example, fitted_radius_ratio())
     return simulate_tracker(
-        U, U[:3], SIGMA_NS, sigma0, MC_N_LAST, m_after, n_runs, seed=seed + int(sigma0) + len(example)
+        U,
+        U[:3],
+        IN.sigma_ns,
+        sigma0,
+        MC_N_LAST,
+        m_after,
+        n_runs,
+        seed=seed + int(sigma0) + len(example),
+        tau_bar=IN.tau_bar_s * 1.0e9,
     )
 
 
 # --------------------------------------------------------------------------- 3-satellite outage
 def outage_rms_ft(example: str, sigma0: float, m: np.ndarray, inputs: dict[str, float]) -> np.ndarray:
     """Steady-state rms position error m epochs after the drop to three satellites (ft)."""
-    v = three_satellite_clock_variance_steady(inputs["beta"], SIGMA_NS, sigma0, m)
-    return C_FT_PER_NS * np.sqrt(SIGMA_NS**2 * inputs["trace_123"] + v * inputs["s_123"])
+    sigma = IN.sigma_ns
+    v = three_satellite_clock_variance_steady(inputs["beta"], sigma, sigma0, m)
+    return IN.c_ft_per_ns * np.sqrt(sigma**2 * inputs["trace_123"] + v * inputs["s_123"])
 
 
 def rms_history_ft(
@@ -308,26 +509,26 @@ def rms_history_ft(
     variance after the drop (finite N). ``inputs`` holds the Table 4.2 quantities; pass
     ``s_123`` as the printed value or the invariant.
     """
-    h = gain_recursion(inputs["beta"], SIGMA_NS, sigma0, n_last)
-    before = SIGMA_NS**2 * (inputs["trace_all"] + h.gamma * inputs["s_all"])
+    sigma = IN.sigma_ns
+    h = gain_recursion(inputs["beta"], sigma, sigma0, n_last)
+    before = sigma**2 * (inputs["trace_all"] + h.gamma * inputs["s_all"])
     m = np.arange(1, m_after + 1)
-    v = three_satellite_clock_variance(h.gamma[-1], h.cross[-1], SIGMA_NS, sigma0, m)
-    after = SIGMA_NS**2 * inputs["trace_123"] + v * inputs["s_123"]
+    v = three_satellite_clock_variance(h.gamma[-1], h.cross[-1], sigma, sigma0, m)
+    after = sigma**2 * inputs["trace_123"] + v * inputs["s_123"]
     n = np.arange(n_last + m_after + 1)
-    return n, C_FT_PER_NS * np.sqrt(np.concatenate([before, after]))
-
-
-#: The acceptability threshold inferred for rule of thumb (4): 1.8 x the all-satellite LS rms.
-OUTAGE_THRESHOLD_FACTOR = 1.8
+    return n, IN.c_ft_per_ns * np.sqrt(np.concatenate([before, after]))
 
 
 def acceptable_outage_s(example: str, sigma0: float, inputs: dict[str, float]) -> float:
-    """Seconds (epochs of tau_bar = 1 s) for which the 3-satellite rms stays below the threshold."""
-    threshold = OUTAGE_THRESHOLD_FACTOR * table_4_3_row(inputs, sigma0)[2]
+    """Seconds (epochs of tau_bar = 1 s) for which the 3-satellite rms stays below the threshold.
+
+    The threshold is the fitted factor (1.8) times the all-satellite least-squares rms.
+    """
+    threshold = IN.outage_threshold_factor * table_4_3_row(inputs, sigma0)[2]
     m = np.arange(1, 5001)
     rms = outage_rms_ft(example, sigma0, m, inputs)
     above = np.flatnonzero(rms > threshold)
-    return float(m[above[0]] - 1) * TAU_BAR_S if above.size else math.inf
+    return float(m[above[0]] - 1) * IN.tau_bar_s if above.size else math.inf
 
 
 #: Three-satellite epochs simulated for the outage oracle (beyond the corrected durations).
@@ -337,11 +538,11 @@ OUTAGE_MC_EPOCHS = {"I": 110, "II": 320}
 def acceptable_outage_mc_s(example: str, sigma0: float) -> float:
     """Same duration from the Monte Carlo of the full tracker (fitted geometry, invariant S3)."""
     inputs = table_4_2_from_geometry(example, fitted_radius_ratio())
-    threshold = OUTAGE_THRESHOLD_FACTOR * table_4_3_row(inputs, sigma0)[2]
+    threshold = IN.outage_threshold_factor * table_4_3_row(inputs, sigma0)[2]
     mc = tracker_monte_carlo(example, sigma0, m_after=OUTAGE_MC_EPOCHS[example], n_runs=4000)
-    rms = np.sqrt(mc.position_mse[MC_N_LAST + 1 :])
+    rms = IN.c_ft_per_ns * np.sqrt(mc.position_mse[MC_N_LAST + 1 :])
     above = np.flatnonzero(rms > threshold)
-    return float(above[0]) * TAU_BAR_S if above.size else math.inf
+    return float(above[0]) * IN.tau_bar_s if above.size else math.inf
 
 
 def _corrected_inputs(example: str) -> dict[str, float]:
@@ -362,7 +563,7 @@ def ms_ratio_tracking(example: str, sigma0: float) -> float:
 def jump_share_from_clock_term(inputs: dict[str, float], sigma0: float) -> float:
     """Share of the jump E|xi|^2_{N+1} - E|xi|^2_N due to the increase of the clock term S -> S3."""
     b = inputs["beta"]
-    a = alpha_parameter(sigma0, SIGMA_NS, b)
+    a = alpha_parameter(sigma0, IN.sigma_ns, b)
     p = float(psi(a))
     g, g1 = p / b, (p + 27.0 / 8.0 * a * 2.0 / p) / b
     total = (inputs["trace_123"] - inputs["trace_all"]) + g1 * inputs["s_123"] - g * inputs["s_all"]
@@ -374,27 +575,61 @@ def _oracle_corrected_jump_share(example: str, sigma0: float) -> float:
     return jump_share_from_clock_term(o, sigma0)
 
 
-def _convergence_rule_holds() -> bool:
-    """Terms n + 1: recursion's (n + 1) <= 2.3/psi <= 3 x recursion's (n + 1), in all six cases."""
-    for ex in ("I", "II"):
-        b = float(TABLE_4_2[ex]["beta"])
-        for s0 in SIGMA0_NS:
-            p = float(psi(alpha_parameter(s0, SIGMA_NS, b)))
-            actual = convergence_steps(gain_recursion(b, SIGMA_NS, s0, 3000))
-            estimate = 2.3 / p - 1.0
-            if not (actual + 1.0 <= estimate + 1.0 <= 3.0 * (actual + 1.0)):
-                return False
-    return True
+def _six_cases() -> list[tuple[float, float]]:
+    """(printed beta, sigma0) of the six Table 4.3 cases."""
+    return [(getattr(IN, f"tab42_ex{ex}_beta"), s0) for ex in EXAMPLES for s0 in sigma0_values()]
+
+
+def convergence_rule_terms() -> list[tuple[float, float]]:
+    """(recursion's n + 1, printed estimate 2.3/psi = ln(10)/psi) in the six cases of Table 4.3."""
+    out = []
+    for b, s0 in _six_cases():
+        p = float(psi(alpha_parameter(s0, IN.sigma_ns, b)))
+        actual = convergence_steps(gain_recursion(b, IN.sigma_ns, s0, 3000), IN.convergence_fraction)
+        # the printed 2.3/psi is ln(1/0.1)/psi, the small-psi form for the 10 % criterion
+        out.append((actual + 1.0, -math.log(IN.convergence_fraction) / p))
+    return out
+
+
+def convergence_rule_worst_ratio() -> float:
+    """The ratio estimate / recursion of the number of terms n + 1 farthest from 1 in the six cases."""
+    ratios = [est / act for act, est in convergence_rule_terms()]
+    return float(max(ratios, key=lambda r: abs(math.log(r))))
+
+
+def _oracle_convergence_rule_worst_ratio() -> float:
+    """Independent count: iterate the scalar error variances of the tracker written out by hand.
+
+    The clock error e_n = tau_hat_n - tau_n of the constrained tracker obeys
+    e_n = (1 - g beta) (e_{n-1} - w_n - A) + g (I - P) noise; its variance P_n and its
+    correlation D_n with the next increment are propagated in the Joseph form (not the library's
+    gain form), and the first n with |P_m - P_inf| <= 0.1 P_inf for all later m is counted.
+    """
+    ratios = []
+    for b, s0 in _six_cases():
+        s2, q2 = IN.sigma_ns**2, s0**2
+        p_var, d = s2 / b, 0.0  # least squares at n = 0: Var = sigma^2 / beta
+        hist = [p_var]
+        for _ in range(3000):
+            prior = p_var + 2.0 * q2 + 2.0 * d  # Var(e_{n-1} - Delta_n), Delta = w + A
+            gain = prior / (s2 + b * prior)  # minimises (1 - g b)^2 prior + g^2 b s2
+            p_var = (1.0 - gain * b) ** 2 * prior + gain**2 * b * s2
+            d = (1.0 - gain * b) * (q2 + d)
+            hist.append(p_var)
+        h = np.array(hist)
+        bad = np.flatnonzero(np.abs(h - h[-1]) > IN.convergence_fraction * h[-1])
+        actual = 0 if bad.size == 0 else int(bad[-1] + 1)
+        p = float(psi(alpha_parameter(s0, IN.sigma_ns, b)))
+        ratios.append((-math.log(IN.convergence_fraction) / p) / (actual + 1.0))
+    return float(max(ratios, key=lambda r: abs(math.log(r))))
 
 
 def _printed_steps_formula_positive() -> bool:
     """The printed n = 1/Log(1 - psi) - 1 (Log = log10) gives a positive count in all six cases."""
     out = []
-    for ex in ("I", "II"):
-        b = float(TABLE_4_2[ex]["beta"])
-        for s0 in SIGMA0_NS:
-            p = float(psi(alpha_parameter(s0, SIGMA_NS, b)))
-            out.append(1.0 / math.log10(1.0 - p) - 1.0 > 0)
+    for b, s0 in _six_cases():
+        p = float(psi(alpha_parameter(s0, IN.sigma_ns, b)))
+        out.append(1.0 / math.log10(1.0 - p) - 1.0 > 0)
     return all(out)
 
 
@@ -405,16 +640,14 @@ def _brute_force_steps_positive() -> bool:
     with the printed 1/log10(1 - psi) - 1 (within 1.5 steps).
     """
     out = []
-    for ex in ("I", "II"):
-        b = float(TABLE_4_2[ex]["beta"])
-        for s0 in SIGMA0_NS:
-            p = float(psi(alpha_parameter(s0, SIGMA_NS, b)))
-            n, s, term = 0, 1.0, 1.0
-            while s < 0.9 / p:
-                n += 1
-                term *= 1.0 - p
-                s += term
-            out.append(abs((1.0 / math.log10(1.0 - p) - 1.0) - n) <= 1.5)
+    for b, s0 in _six_cases():
+        p = float(psi(alpha_parameter(s0, IN.sigma_ns, b)))
+        n, s, term = 0, 1.0, 1.0
+        while s < (1.0 - IN.convergence_fraction) / p:
+            n += 1
+            term *= 1.0 - p
+            s += term
+        out.append(abs((1.0 / math.log10(1.0 - p) - 1.0) - n) <= 1.5)
     return all(out)
 
 
@@ -422,13 +655,9 @@ def _brute_force_steps_positive() -> bool:
 CLAIMS: list[Claim] = []
 ERRATA: list[Erratum] = []
 
-_FIT_TOL = Tolerance(
-    rel=0.005,
-    reason="one shape parameter (r_orbit/R_E) fitted to all ten Table 4.2 numbers; no single ratio "
-    "reproduces every printed digit (Ex II beta and Ex II S_all want disjoint ratio intervals), "
-    "the largest fit residual is 0.43 %",
+_GEOM_ORACLE_TOL = Tolerance(
+    rel=1e-9, reason="two exact constructions of the same geometry; floating point", policy="exact"
 )
-_GEOM_ORACLE_TOL = Tolerance(rel=1e-9, reason="two exact constructions of the same geometry; floating point")
 
 _E1 = "ATC10-E4.1-three-satellite-clock-term"
 _E2 = "ATC10-E4.2-effective-orbit-radius"
@@ -439,7 +668,11 @@ _E6 = "ATC10-E4.6-widest-triplet"
 _e1_claims: list[str] = []
 _e2_claims: list[str] = []
 
-for _ex in ("I", "II"):
+#: Fit claims whose printed digits the fitted ratio 9.235 misses (Ex I and Ex II beta want
+#: ratios the other eight numbers do not allow). The verdict is derived; this only states it.
+_FIT_MISSES = {("I", "beta"), ("II", "beta")}
+
+for _ex in EXAMPLES:
     for _col in COLUMNS:
         _pub, _tol = printed(TABLE_4_2[_ex][_col])
         _cid = f"ATC10-tab4.2-ex{_ex}-{_col}"
@@ -452,6 +685,7 @@ for _ex in ("I", "II"):
                 quantity=f"Example {_ex}: {COLUMN_NAMES[_col]}, physical geometry",
                 published=_pub,
                 unit="",
+                kind="reproduction",
                 compute=lambda ex=_ex, col=_col: table_4_2_from_geometry(ex, physical_radius_ratio())[col],
                 tolerance=_tol,
                 expected_status="discrepant",
@@ -471,6 +705,7 @@ for _ex in ("I", "II"):
             )
         )
         (_e1_claims if _is_s3 else _e2_claims).append(_cid + "-physical")
+        _miss = (_ex, _col) in _FIT_MISSES
         CLAIMS.append(
             Claim(
                 id=_cid + "-fitted",
@@ -479,16 +714,27 @@ for _ex in ("I", "II"):
                 quantity=f"Example {_ex}: {COLUMN_NAMES[_col]}, fitted radius ratio",
                 published=_pub,
                 unit="",
+                kind="fit",
                 compute=lambda ex=_ex, col=_col: _printed_table_4_2_as_computed(ex, fitted_radius_ratio())[
                     col
                 ],
-                tolerance=_FIT_TOL,
-                expected_status="consistent",
-                note="Same geometry with r_orbit/R_E fitted to the table (9.235)"
+                tolerance=_tol,
+                expected_status="inconsistent" if _miss else "consistent",
+                note="Same geometry with r_orbit/R_E fitted to the ten Table 4.2 numbers (9.235); a fit "
+                "claim, not evidence"
                 + (
                     "; col. 5 with the printed, frame-dependent 1'(F3'F3)^-1 1 in east-positive ECEF."
                     if _is_s3
                     else "."
+                )
+                + (
+                    " The one-parameter fit misses this printed digit: no single ratio reproduces every "
+                    "printed digit (the two beta values want ratios the other columns do not allow). "
+                    "Verdict changed from consistent: the old tolerance (0.5 %) was the fit's own "
+                    "largest residual; printed digits now."
+                    if _miss
+                    else " Verdict unchanged (consistent); tolerance now the printed digits instead of the "
+                    "fit's largest residual (0.5 %)."
                 ),
                 discussed_in=PAGE_GEOMETRY,
             )
@@ -502,12 +748,14 @@ CLAIMS += [
         quantity="Example I: all satellites within a 45 deg half-angle cone about the local vertical",
         published=True,
         unit="statement",
-        compute=lambda: max_zenith_angle_deg("I", physical_radius_ratio()) <= 45.0,
+        compute=lambda: within_cone("I", physical_radius_ratio()),
         tolerance=EXACT,
         expected_status="discrepant",
         note="Physical geometry: satellite 1 is at zenith angle 47.2 deg (45.2 deg at the fitted ratio).",
         erratum=_E2,
-        oracle=lambda: _oracle_invariants("I", physical_radius_ratio())["max_zenith_deg"] <= 45.0,
+        oracle=lambda: (
+            _oracle_invariants("I", physical_radius_ratio())["max_zenith_deg"] <= IN.cone_half_angle_deg
+        ),
         oracle_tolerance=EXACT,
         discussed_in=PAGE_GEOMETRY,
     ),
@@ -518,7 +766,7 @@ CLAIMS += [
         quantity="Example II: all satellites within a 45 deg half-angle cone about the local vertical",
         published=True,
         unit="statement",
-        compute=lambda: max_zenith_angle_deg("II", physical_radius_ratio()) <= 45.0,
+        compute=lambda: within_cone("II", physical_radius_ratio()),
         tolerance=EXACT,
         expected_status="reproduced",
         note="Physical geometry: largest zenith angle 44.0 deg.",
@@ -563,7 +811,7 @@ CLAIMS += [
         unit="statement",
         compute=lambda: all(
             abs(beta_parameter(example_line_of_sight(ex, physical_radius_ratio())[:3])) < 1e-12
-            for ex in ("I", "II")
+            for ex in EXAMPLES
         ),
         tolerance=EXACT,
         expected_status="reproduced",
@@ -578,14 +826,17 @@ CLAIMS += [
         published=True,
         unit="statement",
         compute=lambda: all(
-            0.5 <= math.log10(table_4_2_from_geometry(ex, r)["dilution"]) < 2.5
-            for ex in ("I", "II")
+            1.0 - prose("orders of magnitude").abs
+            <= math.log10(table_4_2_from_geometry(ex, r)["dilution"])
+            < 2.0 + prose("orders of magnitude").abs
+            for ex in EXAMPLES
             for r in (physical_radius_ratio(), fitted_radius_ratio())
         ),
         tolerance=EXACT,
         expected_status="consistent",
-        note="Read as: log10 k rounds to 1 or 2. The two examples give k = 5.2/5.6 (I) and "
-        "16.8/18.3 (II), physical/fitted geometry; Ex I is at the low end.",
+        note="Read with the prose table ('orders of magnitude': +-0.5 decade): log10 k in [0.5, 2.5). "
+        "The two examples give k = 5.2/5.6 (I) and 16.8/18.3 (II), physical/fitted geometry; Ex I is "
+        "at the low end. Consistent because it also reads the fitted ratio.",
         discussed_in=PAGE_GEOMETRY,
     ),
 ]
@@ -597,28 +848,43 @@ _TAB3_NAMES = {
     "sdN": "limiting rms error while tracking with all satellites",
     "sdN1": "rms error of the first three-satellite estimate (printed formula)",
 }
+
+
+def _table_4_3_tolerance(text: str, column: str) -> Tolerance:
+    """Printed digits; an integer ending in 0 is read to three significant figures, as the column prints.
+
+    The psi column is read from Fig. 4.1 (its header cites the figure): its reading resolution,
+    or half the last printed digit if that is larger.
+    """
+    if column == "psi":
+        half = printed(text)[1].abs
+        if half >= 0.0025:
+            return printed(text, why="read from Fig. 4.1; the printed digits are coarser than the figure")[1]
+        return figure_reading(0.0025, figure="Fig. 4.1", axis="psi on a 0-1 axis, 0.0025 per reading")
+    if column in ("sd0", "sdN", "sdN1") and len(text) > 3 and text.endswith("0"):
+        return printed(
+            f"{text[:3]}e{len(text) - 3}",
+            why=f"{text} read to three significant figures, as the column prints (282, 677)",
+        )[1]
+    return printed(text)[1]
+
+
+#: Table 4.3 cells outside the printed digits across the whole rounding band of Table 4.2
+#: (derived verdicts, stated here; the test checks them). None since the band takes every
+#: corner of the rounding box: Example I, sigma0 = 50 ns, col. (v) reaches 450 only there.
+_TAB43_INCONSISTENT: dict[tuple[str, float, str], str] = {}
+_TAB43_NOTES: dict[tuple[str, float, str], str] = {
+    ("I", 50.0, "sdN1"): " Within the printed digits only when several Table 4.2 entries and the psi "
+    "reading sit at the edges of their rounding together (the band's corners reach 449.7 against "
+    "450 +- 0.5; one input at a time reaches 449.4).",
+}
+
 for (_ex, _s0), _row in TABLE_4_3.items():
+    _sin = SIGMA0_INPUTS[_s0]
     for _ci, _col in enumerate(TABLE_4_3_COLUMNS):
         _text = _row[_ci]
-        if _col == "psi":
-            _pub, _ = printed(_text)
-            _tol = Tolerance(
-                abs=max(0.0025, printed(_text)[1].abs),
-                reason="the column is read from Fig. 4.1 (its header cites the figure): reading "
-                "resolution 0.0025 on the 0-1 psi axis, or half the last printed digit if larger",
-            )
-            _status = "consistent"
-        elif _col == "alpha":
-            _pub, _tol = printed(_text)
-            _status = "reproduced"
-        else:
-            _pub, _tol = printed(
-                _text,
-                extra_abs=_input_rounding_band(_ex, _s0, _ci),
-                why="rounding of the printed Table 4.2 inputs"
-                + (" and of the printed psi" if _ci >= 3 else ""),
-            )
-            _status = "reproduced"
+        _pub = float(_text)
+        _bad = (_ex, _s0, _col) in _TAB43_INCONSISTENT
         CLAIMS.append(
             Claim(
                 id=f"ATC10-tab4.3-ex{_ex}-s{int(_s0)}-{_col}",
@@ -627,23 +893,35 @@ for (_ex, _s0), _row in TABLE_4_3.items():
                 quantity=f"Example {_ex}, sigma0 = {int(_s0)} ns: {_TAB3_NAMES[_col]}",
                 published=_pub,
                 unit="" if _ci < 2 else "ft",
-                compute=lambda ex=_ex, s0=_s0, ci=_ci: table_4_3_row(printed_table_4_2(ex), s0)[ci],
-                tolerance=_tol,
-                expected_status=_status,
-                note="From the printed Table 4.2 with sigma = 50 ns, c = 1 ft/ns, exact psi (real cube roots)"
+                kind="reproduction",
+                compute=lambda ex=_ex, s0=_s0, ci=_ci: table_4_3_cell(ex, s0, ci),
+                tolerance=_table_4_3_tolerance(_text, _col),
+                expected_status="inconsistent" if _bad else "consistent",
+                note="From Table 4.2 (printed, plus the assumed unrounded offsets within half its last "
+                "digit: the band) with sigma = 50 ns, c = 1 ft/ns"
+                + (
+                    ", exact alpha and psi (real cube roots)"
+                    if _ci < 3
+                    else ", and psi as the paper read it off Fig. 4.1 (col. ii as printed, "
+                    "with its rounding in the band)"
+                )
                 + (
                     "; gamma_{N+1} = [psi + (27/8) alpha 2/psi]/beta with the printed S3 = "
                     + TABLE_4_2[_ex]["s_123"]
                     if _col == "sdN1"
                     else ""
                 )
-                + ".",
+                + "."
+                + _TAB43_INCONSISTENT.get((_ex, _s0, _col), _TAB43_NOTES.get((_ex, _s0, _col), ""))
+                + " Verdict changed from "
+                + ("consistent" if _col == "psi" else "reproduced")
+                + ": the unrounded Table 4.2 the paper computed from is an assumption (before, a "
+                "rounding allowance was computed from the model into the tolerance).",
                 discussed_in=PAGE_EXAMPLES,
             )
         )
     _cid = f"ATC10-tab4.3-ex{_ex}-s{int(_s0)}-sdN1-corrected"
     _e1_claims.append(_cid)
-    _pub, _tol = printed(_row[4])
     CLAIMS.append(
         Claim(
             id=_cid,
@@ -651,21 +929,19 @@ for (_ex, _s0), _row in TABLE_4_3.items():
             locator="Table 4.3",
             quantity=f"Example {_ex}, sigma0 = {int(_s0)} ns: rms error of the first three-satellite "
             "estimate, rotation-invariant clock term",
-            published=_pub,
+            published=float(_row[4]),
             unit="ft",
-            compute=lambda ex=_ex, s0=_s0: corrected_first_three_satellite_sd(ex, s0),
-            tolerance=_tol,
-            expected_status="discrepant",
-            note="Fitted-ratio geometry with S3 = 1'(F3F3')^-1 1; steady-state Eq. 4.5.27 at m = 1.",
+            kind="reproduction",
+            compute=lambda ex=_ex, sin=_sin: corrected_first_three_satellite_sd(ex, getattr(IN, sin)),
+            tolerance=_table_4_3_tolerance(_row[4], "sdN1"),
+            expected_status="inconsistent",
+            note="Fitted-ratio geometry with S3 = 1'(F3F3')^-1 1; steady-state Eq. 4.5.27 at m = 1. The "
+            "printed value needs the frame-dependent S3 of the printed Eq. 4.5.30 (erratum E4-1, "
+            "confirmed by the Monte Carlo of the full tracker on the page); the invariant term would have "
+            "to be 4-12 times larger "
+            "(printed 5.76/14.3 against 1.36/1.17). Verdict changed from discrepant: the geometry "
+            "reads the fitted radius ratio, so the disagreement rests on a fit.",
             erratum=_E1,
-            oracle=lambda ex=_ex, s0=_s0: float(
-                np.sqrt(tracker_monte_carlo(ex, s0).position_mse[MC_N_LAST + 1])
-            ),
-            oracle_tolerance=Tolerance(
-                rel=0.03,
-                reason="seeded Monte Carlo of the full tracker, 10 000 runs: about 3 standard errors "
-                "of an rms",
-            ),
             discussed_in=PAGE_EXAMPLES,
         )
     )
@@ -678,11 +954,15 @@ CLAIMS += [
         quantity="Example II (small beta): tracking significantly reduces the error when sigma0 <~ sigma",
         published=True,
         unit="statement",
-        compute=lambda: ms_ratio_tracking("II", 50.0) <= 0.5 and ms_ratio_tracking("II", 5.0) <= 0.5,
+        compute=lambda: (
+            ms_ratio_tracking("II", IN.sigma0_mid_ns) <= IN.significant_ms_fraction
+            and ms_ratio_tracking("II", IN.sigma0_low_ns) <= IN.significant_ms_fraction
+        ),
         tolerance=EXACT,
-        expected_status="reproduced",
-        note="'Significant' read as: tracking at least halves the mean-square position error "
-        "(sd_N^2 / sd_0^2 = 0.19 at sigma0 = sigma, 0.05 at sigma0 = 0.1 sigma).",
+        expected_status="consistent",
+        note="'Significant' read as: tracking leaves at most half of the mean-square position error "
+        "(assumed, 0.3-0.6); sd_N^2 / sd_0^2 = 0.19 at sigma0 = sigma, 0.05 at sigma0 = 0.1 sigma. "
+        "Verdict changed from reproduced: the reading of 'significantly' is an assumption.",
         discussed_in=PAGE_EXAMPLES,
     ),
     Claim(
@@ -692,10 +972,16 @@ CLAIMS += [
         quantity="Example I: the reduction is significant only when sigma0 <~ 0.1 sigma",
         published=True,
         unit="statement",
-        compute=lambda: ms_ratio_tracking("I", 5.0) <= 0.5 < ms_ratio_tracking("I", 50.0),
+        compute=lambda: (
+            ms_ratio_tracking("I", IN.sigma0_low_ns)
+            <= IN.significant_ms_fraction
+            < ms_ratio_tracking("I", IN.sigma0_mid_ns)
+        ),
         tolerance=EXACT,
-        expected_status="reproduced",
-        note="Same criterion: sd_N^2/sd_0^2 = 0.32 at sigma0 = 5 ns, 0.55 at 50 ns.",
+        expected_status="consistent",
+        note="Same reading: sd_N^2/sd_0^2 = 0.32 at sigma0 = 5 ns, 0.55 at 50 ns; true for thresholds "
+        "0.32-0.55, false at the ends of the assumed 0.3-0.6. Verdict changed from reproduced: the "
+        "reading of 'significantly' is an assumption.",
         discussed_in=PAGE_EXAMPLES,
     ),
     Claim(
@@ -706,16 +992,17 @@ CLAIMS += [
         published=True,
         unit="statement",
         compute=lambda: all(
-            jump_share_from_clock_term(_corrected_inputs(ex), 5.0) > 0.5 for ex in ("I", "II")
+            jump_share_from_clock_term(_corrected_inputs(ex), IN.sigma0_low_ns) > IN.largely_share
+            for ex in EXAMPLES
         ),
         tolerance=EXACT,
-        expected_status="discrepant",
-        note="'Largely' read as: more than half of the mean-square jump at sigma0 = 5 ns. With the "
-        "invariant S3 the clock term hardly grows (1.30 -> 1.36, 1.16 -> 1.17); the jump comes from "
-        "tr and the lost measurement update. With the printed S3 the statement would hold.",
+        expected_status="inconsistent",
+        note="'Largely' read as: more than half (assumed, 0.4-0.7) of the mean-square jump at sigma0 = "
+        "5 ns. With the invariant S3 the clock term hardly grows (1.30 -> 1.36, 1.16 -> 1.17); the jump "
+        "comes from tr and the lost measurement update, so no reading of 'largely' above a few per cent "
+        "holds. With the printed S3 (E4-1) the statement would hold. Verdict changed from discrepant: "
+        "the geometry reads the fitted radius ratio and the reading of 'largely' is assumed.",
         erratum=_E1,
-        oracle=lambda: all(_oracle_corrected_jump_share(ex, 5.0) > 0.5 for ex in ("I", "II")),
-        oracle_tolerance=EXACT,
         discussed_in=PAGE_EXAMPLES,
     ),
 ]
@@ -730,12 +1017,13 @@ for _ex, _pub_s in (("I", 30.0), ("II", 60.0)):
             quantity=f"Example {_ex}, sigma0 = 0.1 sigma: time the three-satellite error stays acceptable",
             published=_pub_s,
             unit="s",
-            compute=lambda ex=_ex: acceptable_outage_s(ex, 5.0, _printed_inputs(ex)),
-            tolerance=Tolerance(abs=5.0, reason="'about 30 to 60 seconds': a stated band of 5 s"),
+            kind="fit",
+            compute=lambda ex=_ex: acceptable_outage_s(ex, IN.sigma0_low_ns, _printed_inputs(ex)),
+            tolerance=prose("about", why="'from about 30 to 60 seconds'"),
             expected_status="consistent",
-            note="The paper gives no threshold. Inferred: acceptable while the rms stays below 1.8 x the "
-            "all-satellite least-squares rms (508 ft, 1637 ft); printed Table 4.2 (printed S3), steady "
-            "state before the drop, tau_bar = 1 s.",
+            note="The paper gives no threshold. The factor 1.8 x the all-satellite least-squares rms "
+            "(508 ft, 1637 ft) was fitted to these two numbers (printed Table 4.2 with the printed S3, "
+            "steady state before the drop, tau_bar = 1 s): a fit claim, not evidence.",
             discussed_in=PAGE_EXAMPLES,
         )
     )
@@ -749,15 +1037,15 @@ for _ex, _pub_s in (("I", 30.0), ("II", 60.0)):
             quantity=f"Example {_ex}, sigma0 = 0.1 sigma: acceptable three-satellite time, invariant S3",
             published=_pub_s,
             unit="s",
-            compute=lambda ex=_ex: acceptable_outage_s(ex, 5.0, _corrected_inputs(ex)),
-            tolerance=Tolerance(abs=5.0, reason="'about 30 to 60 seconds': a stated band of 5 s"),
-            expected_status="discrepant",
-            note="Same inferred threshold, fitted geometry with S3 = 1'(F3F3')^-1 1.",
+            kind="reproduction",
+            compute=lambda ex=_ex: acceptable_outage_s(ex, IN.sigma0_low_ns, _corrected_inputs(ex)),
+            tolerance=prose("about", why="'from about 30 to 60 seconds'"),
+            expected_status="inconsistent",
+            note="Same fitted threshold, fitted geometry with S3 = 1'(F3F3')^-1 1: the coasting time is 2-5 "
+            "times the printed one (confirmed by a 4000-run Monte Carlo of the tracker, "
+            "acceptable_outage_mc_s); the printed times need the frame-dependent S3 of E4-1. Verdict "
+            "changed from discrepant: it reads two fitted inputs (radius ratio, threshold factor).",
             erratum=_E1,
-            oracle=lambda ex=_ex: acceptable_outage_mc_s(ex, 5.0),
-            oracle_tolerance=Tolerance(
-                abs=4.0, reason="threshold crossing of a 4000-run Monte Carlo rms curve: a few epochs"
-            ),
             discussed_in=PAGE_EXAMPLES,
         )
     )
@@ -770,6 +1058,7 @@ CLAIMS += [
         quantity="coefficient (3/2) 2^(1/3) of the small-alpha approximation of psi",
         published=1.89,
         unit="",
+        kind="reproduction",
         compute=lambda: 1.5 * float(np.cbrt(2.0)),
         tolerance=printed("1.89")[1],
         expected_status="reproduced",
@@ -780,16 +1069,24 @@ CLAIMS += [
         id="ATC10-sec4.5.4-convergence-rule",
         paper="ATC10",
         locator="Sec. 4.5.4",
-        quantity="gamma_n comes within 10 % of its limit in about 2.3/psi - 1 steps",
-        published=True,
-        unit="statement",
-        compute=_convergence_rule_holds,
-        tolerance=EXACT,
-        expected_status="consistent",
-        note="'About' read as: the estimated number of terms 2.3/psi bounds the recursion's n + 1 from "
-        "above and is within a factor 3 of it. The recursion converges about twice as fast "
-        "(10/2/0/25/5/1 steps against "
-        "22/4.7/1.5/55/12/2.6).",
+        quantity="gamma_n comes within 10 % of its limit in approximately 2.3/psi - 1 steps: the ratio "
+        "estimate / recursion of the number of terms n + 1 farthest from 1 in the six cases",
+        published=1.0,
+        unit="ratio",
+        kind="statement",
+        compute=convergence_rule_worst_ratio,
+        tolerance=prose("approximately", why="'approximately 2.3/psi - 1' on the number of terms n + 1"),
+        expected_status="discrepant",
+        note="'Approximately' read with the prose table (+-10 %) on the number of terms n + 1, in the six "
+        "cases of Table 4.3 (printed beta). The recursion converges about twice as fast "
+        "(10/2/0/25/5/1 steps against 22/4.7/1.5/55/12/2.6): the estimate treats gamma_n as the "
+        "geometric series s_n, whose ratio the recursion does not have. Verdict changed from "
+        "consistent: 'about' was read as 'within a factor 3', which no table word allows.",
+        erratum=_E5,
+        oracle=_oracle_convergence_rule_worst_ratio,
+        oracle_tolerance=Tolerance(
+            rel=1e-9, reason="two forms of the same recursion; floating point", policy="exact"
+        ),
         discussed_in=PAGE_TRACKER,
     ),
     Claim(
@@ -873,7 +1170,7 @@ ERRATA += [
         finding="n = -1/log10(1 - psi) - 1; the recursion itself converges about twice as fast as this.",
         evidence="1/log10(1 - psi) < 0 for every 0 < psi < 1; the gain recursion reaches 10 % in "
         "10/2/0/25/5/1 steps against 22/4.7/1.5/55/12/2.6.",
-        claims=("ATC10-sec4.5.4-steps-formula-sign",),
+        claims=("ATC10-sec4.5.4-steps-formula-sign", "ATC10-sec4.5.4-convergence-rule"),
         discussed_in=PAGE_TRACKER,
     ),
     Erratum(

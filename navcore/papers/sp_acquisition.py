@@ -19,50 +19,98 @@ from navcore.gnss.acquisition import (
     search_time_from_cells,
 )
 from navcore.gnss.tracking import distance_to_phase_deg
-from navcore.ledger import EXACT, Claim, Erratum, Tolerance, printed
+from navcore.ledger import EXACT, Claim, Erratum, InputSet, printed
 from navcore.location.target_location import target_location_rss
+from navcore.papers import sp_tracking as spt
 from navcore.papers.sp_tables import TABLE_2_5_PRINTED
 from navcore.units import DEG, DEG_PER_H, GPS_L1_WAVELENGTH_M, OMEGA_EARTH
 
 PAGE_ACQ = "sp/04-acquisition"
 PAGE_TGT = "sp/05-target-location"
 
-# --- Sec. 2.5: the search parameters as printed ------------------------------------------
-DWELL_S = 0.020  # "a 20-ms integration period"
-PHASE_STEP_DEG = 36.0  # "phase shift between 20-ms search intervals was 36 deg corresponding to 30 m"
-RANGE_CELL_M = 30.0
-DOPPLER_CELL_HZ = 50.0  # "frequency bandwidth was 50 Hz corresponding to 10 m/s"
-RATE_CELL_MPS = 10.0
-CODE_LENGTH_M = 300.0  # the Sec. 2.5 conversion (360 deg per 300 m)
-
 # --- Table 2.7: range (code-phase) intervals to be searched, per satellite ----------------
 TABLE_2_7_SATELLITES = (3, 11, 12, 15, 17, 18, 21)
-TABLE_2_7 = {
-    "Tightly coupled 10 nmi/h": (73, 64, 70, 42, 82, 70, 43),
-    "Loosely coupled 1.0 nmi/h": (8, 8, 8, 6, 9, 8, 6),
-    "Tightly coupled 1.0 nmi/h": (7, 6, 6, 5, 7, 6, 5),
-    "Tightly coupled 0.5 nmi/h": (6, 6, 6, 5, 6, 6, 5),
-    "Tightly coupled 0.2 nmi/h": (6, 5, 6, 5, 6, 5, 5),
+#: Row labels of Table 2.7 and the names of their inputs.
+TABLE_2_7_ROWS = {
+    "Tightly coupled 10 nmi/h": "tab27_tc10",
+    "Loosely coupled 1.0 nmi/h": "tab27_lc1",
+    "Tightly coupled 1.0 nmi/h": "tab27_tc1",
+    "Tightly coupled 0.5 nmi/h": "tab27_tc05",
+    "Tightly coupled 0.2 nmi/h": "tab27_tc02",
 }
 TC10 = "Tightly coupled 10 nmi/h"
-BETTER = tuple(k for k in TABLE_2_7 if k != TC10)
+BETTER = tuple(k for k in TABLE_2_7_ROWS if k != TC10)
 
+IN = InputSet("SP", "acquisition")
+# --- Sec. 2.5: the search parameters as printed ------------------------------------------
+IN.published(
+    "dwell_s", 0.020, locator="Sec. 2.5 (acquisition)", unit="s", quantity="integration period per cell"
+)
+IN.published(
+    "range_cell_m", 30.0, locator="Sec. 2.5 (acquisition)", unit="m", quantity="code-phase search cell"
+)
+IN.published(
+    "doppler_cell_hz", 50.0, locator="Sec. 2.5 (acquisition)", unit="Hz", quantity="frequency search cell"
+)
+IN.convention(
+    "search_dimensions",
+    1,
+    alternative=2,
+    reason="Sec. 2.6.2 searches one Doppler cell, so the bounds are in code phase only; the other reading "
+    "is a 1-sigma box in code phase and Doppler",
+    quantity="dimensions of the 1-sigma search bounds",
+)
+for _label, _name in TABLE_2_7_ROWS.items():
+    IN.published(
+        _name,
+        {
+            "tab27_tc10": (73, 64, 70, 42, 82, 70, 43),
+            "tab27_lc1": (8, 8, 8, 6, 9, 8, 6),
+            "tab27_tc1": (7, 6, 6, 5, 7, 6, 5),
+            "tab27_tc05": (6, 6, 6, 5, 6, 6, 5),
+            "tab27_tc02": (6, 5, 6, 5, 6, 5, 5),
+        }[_name],
+        locator=f"Table 2.7, row '{_label}'",
+        unit="intervals",
+        quantity=f"code-phase intervals to search per satellite, {_label}",
+    )
 # --- Sec. 2.6.4: helicopter scout ---------------------------------------------------------
-TARGET_RANGE_M = 8000.0  # "at some distance (8 km)"
-HELICOPTER_ERROR_1NMI_M = 192.0  # "2750:192" (1 nmi/h, 19 min after loss of GPS, no Doppler)
-HELICOPTER_ERROR_10NMI_M = 2750.0
-#: Assumption for the pointing error: the steady-state gyrocompass heading error of the Table 2.5
-#: gyro bias at latitude 45 deg, psi = eps / (Omega cos L); the paper gives no attitude error.
-ASSUMED_LATITUDE_DEG = 45.0
-GYRO_BIAS_DEG_PER_H = {
-    "10": TABLE_2_5_PRINTED["gyro_bias_deg_per_h"][0],
-    "1": TABLE_2_5_PRINTED["gyro_bias_deg_per_h"][1],
-}
+IN.published("target_range_m", 8000.0, locator="Sec. 2.6.4", unit="m", quantity="distance to the target")
+IN.published(
+    "helicopter_error_1nmi_m",
+    192.0,
+    locator="Sec. 2.6.4 ('2750:192')",
+    unit="m",
+    quantity="1 nmi/h position error",
+)
+IN.published(
+    "helicopter_error_10nmi_m",
+    2750.0,
+    locator="Sec. 2.6.4 ('2750:192')",
+    unit="m",
+    quantity="10 nmi/h position error",
+)
+IN.assumed(
+    "latitude_deg",
+    45.0,
+    low=30.0,
+    high=60.0,
+    unit="deg",
+    quantity="latitude of the gyrocompass alignment",
+    reason="the paper gives no attitude error; the steady-state gyrocompass heading error eps/(Omega cos L) "
+    "is assumed, at a mid latitude of 30 to 60 deg",
+)
+GRADE_INDEX = {"10": 0, "1": 1}  # columns of Table 2.5 (sp_tables) for the two helicopter IMUs
+
+
+def table_2_7(system: str) -> tuple[int, ...]:
+    """One row of Table 2.7 (published input)."""
+    return getattr(IN, TABLE_2_7_ROWS[system])
 
 
 def search_times_s(system: str) -> np.ndarray:
     """Search time (s) per satellite: 20 ms per code-phase interval, one Doppler cell."""
-    return np.asarray(search_time_from_cells(np.array(TABLE_2_7[system]), 1, DWELL_S))
+    return np.asarray(search_time_from_cells(np.array(table_2_7(system)), 1, IN.dwell_s))
 
 
 def better_max_s() -> float:
@@ -73,20 +121,21 @@ def table_2_7_monotone() -> bool:
     """Per satellite, intervals never increase with IMU quality, and TC 1.0 <= LC 1.0."""
     order = [TC10, "Loosely coupled 1.0 nmi/h", "Tightly coupled 1.0 nmi/h", "Tightly coupled 0.5 nmi/h"]
     order.append("Tightly coupled 0.2 nmi/h")
-    rows = np.array([TABLE_2_7[k] for k in order])
+    rows = np.array([table_2_7(k) for k in order])
     return bool(np.all(np.diff(rows, axis=0) <= 0))
 
 
 def gyrocompass_heading_error_rad(grade: str) -> float:
     """Assumed heading error: gyro bias / (Earth rate x cos latitude)."""
-    return GYRO_BIAS_DEG_PER_H[grade] * DEG_PER_H / (OMEGA_EARTH * math.cos(ASSUMED_LATITUDE_DEG * DEG))
+    bias = TABLE_2_5_PRINTED["gyro_bias_deg_per_h"][GRADE_INDEX[grade]]
+    return bias * DEG_PER_H / (OMEGA_EARTH * math.cos(IN.latitude_deg * DEG))
 
 
 def pointing_negligible() -> bool:
     """Target error within 1 % of the position error for both printed helicopter errors."""
     ok = True
-    for grade, pos in (("1", HELICOPTER_ERROR_1NMI_M), ("10", HELICOPTER_ERROR_10NMI_M)):
-        tgt = target_location_rss(pos, gyrocompass_heading_error_rad(grade), TARGET_RANGE_M)
+    for grade, pos in (("1", IN.helicopter_error_1nmi_m), ("10", IN.helicopter_error_10nmi_m)):
+        tgt = target_location_rss(pos, gyrocompass_heading_error_rad(grade), IN.target_range_m)
         ok &= tgt / pos < 1.01
     return bool(ok)
 
@@ -114,6 +163,8 @@ _t02 = printed("0.2")
 _t08 = printed("0.8", why="'about 0.8 to 1.6 s'")
 _t16 = printed("1.6", why="'about 0.8 to 1.6 s'")
 _p32 = printed("32")
+_d36 = printed("36")
+_hz50 = printed("50")
 
 CLAIMS = [
     Claim(
@@ -121,22 +172,24 @@ CLAIMS = [
         paper="SP",
         locator="Sec. 2.5 (acquisition)",
         quantity="code-phase step between 20-ms search intervals for a 30-m cell",
-        published=PHASE_STEP_DEG,
+        published=_d36[0],
         unit="deg",
-        compute=lambda: float(distance_to_phase_deg(RANGE_CELL_M, CODE_LENGTH_M)),
-        tolerance=Tolerance(reason="exact ratio of printed numbers", abs=1e-9),
-        expected_status="reproduced",
-        note="36 deg per 30 m is the section's 360 deg per 300 m convention (close to a C/A chip, 293 m).",
+        kind="cross-check",
+        compute=lambda: float(distance_to_phase_deg(IN.range_cell_m, spt.IN.code_length_m)),
+        tolerance=_d36[1],
+        expected_status="consistent",
+        note="36 deg per 30 m is the section's 360 deg per 300 m convention (close to a C/A chip, 293 m): "
+        "arithmetic on printed numbers. Verdict changed from reproduced: a cross-check.",
     ),
     Claim(
         id="SP-sec2.5-doppler-cell-hz",
         paper="SP",
         locator="Sec. 2.5 (acquisition)",
         quantity="frequency cell of a 20-ms coherent dwell",
-        published=DOPPLER_CELL_HZ,
+        published=_hz50[0],
         unit="Hz",
-        compute=lambda: doppler_cell_hz(DWELL_S),
-        tolerance=Tolerance(reason="exact: 1/T", abs=1e-9),
+        compute=lambda: doppler_cell_hz(IN.dwell_s),
+        tolerance=_hz50[1],
         expected_status="reproduced",
         note="The frequency resolution of a T = 20 ms integration is 1/T.",
     ),
@@ -145,9 +198,9 @@ CLAIMS = [
         paper="SP",
         locator="Sec. 2.5 (acquisition)",
         quantity="range rate corresponding to the 50-Hz frequency cell at L1",
-        published=RATE_CELL_MPS,
+        published=10.0,
         unit="m/s",
-        compute=lambda: float(range_rate_from_doppler(DOPPLER_CELL_HZ, GPS_L1_WAVELENGTH_M)),
+        compute=lambda: float(range_rate_from_doppler(IN.doppler_cell_hz, GPS_L1_WAVELENGTH_M)),
         tolerance=printed("10", why="'10 m/s' read as one significant figure")[1],
         expected_status="reproduced",
         note="50 Hz x 0.1903 m = 9.51 m/s, printed as 10 m/s.",
@@ -163,8 +216,8 @@ CLAIMS = [
         tolerance=EXACT,
         expected_status="not-reproducible",
         note="Needs the flyby trajectory, jammer position and power, antenna pattern, satellite geometry "
-        "and the covariance history of each system, none of which are published; the table is used as "
-        "input (value shown: TC 10 nmi/h, SV 3).",
+        "and the covariance history of each system, which Sec. 2.6.2 / Table 2.7 do not give; the table "
+        "is used as input (value shown: TC 10 nmi/h, SV 3).",
     ),
     Claim(
         id="SP-tab2.7-ordering",
@@ -173,11 +226,13 @@ CLAIMS = [
         quantity="intervals never increase with IMU quality, and tight coupling needs fewer than loose",
         published=True,
         unit="statement",
+        kind="cross-check",
         compute=table_2_7_monotone,
         tolerance=EXACT,
-        expected_status="reproduced",
-        note="Checked per satellite on the typed table (TC10 >= LC1.0 >= TC1.0 >= TC0.5 >= TC0.2), the "
-        "ordering the text attributes to better calibration.",
+        expected_status="consistent",
+        note="Checked per satellite on the printed table (TC10 >= LC1.0 >= TC1.0 >= TC0.5 >= TC0.2), the "
+        "ordering the text attributes to better calibration. Verdict changed from reproduced: a check on "
+        "printed numbers is a cross-check.",
     ),
     Claim(
         id="SP-sec2.6.2-search-better",
@@ -186,10 +241,12 @@ CLAIMS = [
         quantity="longest search time of the better IMUs (20 ms per interval)",
         published=_t02[0],
         unit="s",
+        kind="cross-check",
         compute=better_max_s,
         tolerance=_t02[1],
-        expected_status="reproduced",
-        note="Delta T = 20 ms x intervals x one Doppler cell: 0.10 to 0.18 s for the four better systems.",
+        expected_status="consistent",
+        note="Delta T = 20 ms x intervals x one Doppler cell: 0.10 to 0.18 s for the four better systems; "
+        "arithmetic on printed numbers. Verdict changed from reproduced: a cross-check.",
     ),
     Claim(
         id="SP-sec2.6.2-search-10-min",
@@ -198,10 +255,12 @@ CLAIMS = [
         quantity="shortest search time of the 10 nmi/h system",
         published=_t08[0],
         unit="s",
+        kind="cross-check",
         compute=lambda: float(np.min(search_times_s(TC10))),
         tolerance=_t08[1],
-        expected_status="reproduced",
-        note="42 intervals x 20 ms = 0.84 s.",
+        expected_status="consistent",
+        note="42 intervals x 20 ms = 0.84 s, arithmetic on printed numbers. Verdict changed from "
+        "reproduced: a cross-check.",
     ),
     Claim(
         id="SP-sec2.6.2-search-10-max",
@@ -210,10 +269,12 @@ CLAIMS = [
         quantity="longest search time of the 10 nmi/h system",
         published=_t16[0],
         unit="s",
+        kind="cross-check",
         compute=lambda: float(np.max(search_times_s(TC10))),
         tolerance=_t16[1],
-        expected_status="reproduced",
-        note="82 intervals x 20 ms = 1.64 s.",
+        expected_status="consistent",
+        note="82 intervals x 20 ms = 1.64 s, arithmetic on printed numbers. Verdict changed from "
+        "reproduced: a cross-check.",
     ),
     Claim(
         id="SP-sec2.6.2-outside-1sigma",
@@ -222,11 +283,10 @@ CLAIMS = [
         quantity="probability that the signal lies outside the 1-sigma search bounds",
         published=_p32[0],
         unit="%",
-        compute=lambda: 100.0 * probability_outside_sigma_box(1, 1.0),
+        compute=lambda: 100.0 * probability_outside_sigma_box(IN.search_dimensions, 1.0),
         tolerance=_p32[1],
         expected_status="reproduced",
-        note="One-dimensional (code phase only, one Doppler cell): 31.73 %. Outside a 1-sigma box in code "
-        "and Doppler it would be 53.4 %.",
+        note="One-dimensional (code phase only, one Doppler cell): 31.73 %.",
     ),
     Claim(
         id="SP-sec2.6.4-pointing-gyrocompass",

@@ -11,10 +11,10 @@ from navcore.gnss.architectures import (
     receiver_pva_layout,
     tightly_coupled_layout,
 )
-from navcore.ledger import EXACT, Claim
+from navcore.ledger import EXACT, Claim, InputSet
 
-#: Table rows as printed (state element, components), with their locators.
-TABLE_2_1 = (
+#: Table rows as printed (state element, components).
+_TABLE_2_1 = (
     ("Position", 3),
     ("Velocity", 3),
     ("Acceleration", 3),
@@ -22,7 +22,7 @@ TABLE_2_1 = (
     ("User clock drift", 1),
     ("Altimeter bias", 1),
 )
-TABLE_2_2 = (
+_TABLE_2_2 = (
     ("Position", 3),
     ("Velocity", 3),
     ("Misalignment", 3),
@@ -32,7 +32,7 @@ TABLE_2_2 = (
     ("Accel. scale factor", 3),
     ("Altimeter bias", 1),
 )
-TABLE_2_3 = (
+_TABLE_2_3 = (
     ("Position", 3),
     ("Velocity", 3),
     ("User clock bias", 1),
@@ -44,6 +44,12 @@ TABLE_2_3 = (
     ("Accel. scale factor", 3),
     ("Altimeter bias", 1),
 )
+
+
+IN = InputSet("SP", "architectures")
+IN.published("table_2_1", _TABLE_2_1, locator="Table 2.1", quantity="receiver PVA filter states (rows)")
+IN.published("table_2_2", _TABLE_2_2, locator="Table 2.2", quantity="loosely coupled filter states (rows)")
+IN.published("table_2_3", _TABLE_2_3, locator="Table 2.3", quantity="tightly coupled filter states (rows)")
 
 
 def _printed_rows_match_layout(rows: tuple[tuple[str, int], ...], layout_rows: list[tuple[str, int]]) -> bool:
@@ -56,6 +62,13 @@ def _printed_rows_match_layout(rows: tuple[tuple[str, int], ...], layout_rows: l
     }
     printed_rows = [(norm.get(n.lower(), n.lower()), k) for n, k in rows]
     return printed_rows == [(n.lower(), k) for n, k in layout_rows]
+
+
+def _layout_size(layout, rows: tuple[tuple[str, int], ...]) -> int:
+    """The layout's state count, after checking that its blocks are the printed rows."""
+    if not _printed_rows_match_layout(rows, layout.table()):
+        raise ValueError("the library layout does not have the printed rows")
+    return layout.size
 
 
 def _tight_within_loose_cascade() -> bool:
@@ -71,7 +84,7 @@ CLAIMS = [
         quantity="number of states of the GPS receiver's PVA filter",
         published=12,
         unit="states",
-        compute=lambda: receiver_pva_layout().size,
+        compute=lambda: _layout_size(receiver_pva_layout(), IN.table_2_1),
         tolerance=EXACT,
         expected_status="reproduced",
         note="Sum of the block sizes of the receiver layout (PVA + clock + altimeter bias), "
@@ -84,7 +97,7 @@ CLAIMS = [
         quantity="number of error states of the loosely coupled integration filter",
         published=22,
         unit="states",
-        compute=lambda: loosely_coupled_layout().size,
+        compute=lambda: _layout_size(loosely_coupled_layout(), IN.table_2_2),
         tolerance=EXACT,
         expected_status="reproduced",
         note="INS core (9) + IMU errors (12) + altimeter bias (1); no clock states, which "
@@ -97,7 +110,7 @@ CLAIMS = [
         quantity="number of error states of the tightly coupled integration filter",
         published=24,
         unit="states",
-        compute=lambda: tightly_coupled_layout().size,
+        compute=lambda: _layout_size(tightly_coupled_layout(), IN.table_2_3),
         tolerance=EXACT,
         expected_status="reproduced",
         note="The loosely coupled states plus user clock bias and drift.",
