@@ -47,6 +47,7 @@ from navcore.ledger import InputSet, input_cache
 from navcore.units import DEG
 
 __all__ = [
+    "GNSS_NOMINAL",
     "IN",
     "N_RUNS",
     "SEED",
@@ -144,43 +145,21 @@ IN.assumed(
     quantity="1-sigma crab angle (heading minus GPS track)",
 )
 IN.assumed(
-    "pseudorange_m",
-    3.0,
-    low=1.0,
-    high=6.0,
-    reason="the paper gives no GPS noise; 1-6 m 1-sigma code noise (after the troposphere/ionosphere "
-    "corrections of Table 1) for a Novatel receiver on a signal simulator",
-    unit="m",
-    quantity="code pseudorange noise",
+    "gnss_noise_scale",
+    1.0,
+    low=0.5,
+    high=2.0,
+    reason="the paper gives no GPS noise; the book's nominal 1-sigma noises (GNSS_NOMINAL: 3 m code, "
+    "5 cm/s delta range, 3 mm undifferenced phase, 0.17 deg per Euler angle from the 2-m multi-antenna "
+    "system) are scaled together over 0.5-2 (1.5-6 m, 2.5-10 cm/s, 1.5-6 mm, 0.09-0.34 deg): a "
+    "receiver noisier in code is noisier in phase, and one scale keeps the Monte Carlo band affordable",
+    unit="",
+    quantity="scale of the GPS measurement noises",
 )
-IN.assumed(
-    "delta_range_mps",
-    0.05,
-    low=0.02,
-    high=0.1,
-    reason="the paper gives no GPS noise; 2-10 cm/s 1-sigma delta-range (Doppler) noise",
-    unit="m/s",
-    quantity="delta-range noise",
-)
-IN.assumed(
-    "phase_m",
-    0.003,
-    low=0.001,
-    high=0.005,
-    reason="the paper gives no GPS noise; 1-5 mm 1-sigma undifferenced carrier-phase noise",
-    unit="m",
-    quantity="carrier-phase noise per antenna and satellite",
-)
-IN.assumed(
-    "attitude_rad",
-    0.003,
-    low=0.0015,
-    high=0.006,
-    reason="the multi-antenna attitude accuracy is not given; 2-m baselines and mm phases give "
-    "0.1-0.35 deg per Euler angle",
-    unit="rad",
-    quantity="multi-antenna attitude noise per Euler angle",
-)
+
+#: Nominal GPS noises (1-sigma) that ``gnss_noise_scale`` multiplies: code pseudorange (m), delta
+#: range (m/s), undifferenced carrier phase (m), multi-antenna attitude per Euler angle (rad).
+GNSS_NOMINAL = {"pseudorange": 3.0, "delta_range": 0.05, "phase": 0.003, "attitude": 0.003}
 
 #: Visibility schedule (start time s, satellites tracked): 8 -> 4 -> 3 -> 2 -> 5. The paper's
 #: is only in Figs. 4-5 (Table 1: "2-8, as depicted"); the claims name its segments.
@@ -233,16 +212,17 @@ def kzl_imu(swapped: bool = False) -> ImuSpec:
     )
 
 
-def gnss_noise(mode: str = "tc_dd") -> GnssNoise:
-    """The assumed GPS noises that ``mode`` uses; a noise the mode never uses is NaN (not read)."""
+def gnss_noise(mode: str = "all") -> GnssNoise:
+    """The assumed GPS noises that ``mode`` uses; a noise the mode never uses is NaN."""
     nan = float("nan")
     if mode == "ins":
         return GnssNoise(pseudorange=nan, delta_range=nan, phase=nan, attitude=nan)
+    k = IN.gnss_noise_scale
     return GnssNoise(
-        pseudorange=IN.pseudorange_m,
-        delta_range=IN.delta_range_mps,
-        phase=IN.phase_m if mode in ("tc_dd", "all") else nan,
-        attitude=IN.attitude_rad if mode in ("tc_att", "all") else nan,
+        pseudorange=k * GNSS_NOMINAL["pseudorange"],
+        delta_range=k * GNSS_NOMINAL["delta_range"],
+        phase=k * GNSS_NOMINAL["phase"] if mode in ("tc_dd", "all") else nan,
+        attitude=k * GNSS_NOMINAL["attitude"] if mode in ("tc_att", "all") else nan,
     )
 
 
