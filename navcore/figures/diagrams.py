@@ -27,9 +27,9 @@ __all__: list[str] = []
     "Earth and transport rates fed back from position and velocity. The IMU rate is the Table 1 scenario's.",
 )
 def kzl_ins_block_diagram() -> Figure:
-    from navcore.papers.kzl_scenario import TABLE1
+    from navcore.papers.kzl_scenario import IN
 
-    return diagrams.ins_block_diagram(imu_rate_hz=cast(float, TABLE1["imu_rate_hz"]))
+    return diagrams.ins_block_diagram(imu_rate_hz=cast(float, IN.imu_rate_hz))
 
 
 @register(
@@ -41,9 +41,9 @@ def kzl_ins_block_diagram() -> Figure:
     "phase/Doppler into position, velocity and time at the Table 1 GPS rate.",
 )
 def kzl_gnss_receiver_diagram() -> Figure:
-    from navcore.papers.kzl_scenario import TABLE1
+    from navcore.papers.kzl_scenario import IN
 
-    return diagrams.gnss_receiver_block_diagram(nav_rate_hz=cast(float, TABLE1["gps_rate_hz"]))
+    return diagrams.gnss_receiver_block_diagram(nav_rate_hz=cast(float, IN.gps_rate_hz))
 
 
 @register(
@@ -57,12 +57,12 @@ def kzl_gnss_receiver_diagram() -> Figure:
 )
 def kzl_tightly_coupled_diagram() -> Figure:
     from navcore.inertial.error_model17 import ERROR_LAYOUT_17
-    from navcore.papers.kzl_scenario import TABLE1
+    from navcore.papers.kzl_scenario import IN
 
     return diagrams.tightly_coupled_feedback_diagram(
         n_states=ERROR_LAYOUT_17.size,
-        imu_rate_hz=cast(float, TABLE1["imu_rate_hz"]),
-        gnss_rate_hz=cast(float, TABLE1["gps_rate_hz"]),
+        imu_rate_hz=cast(float, IN.imu_rate_hz),
+        gnss_rate_hz=cast(float, IN.gps_rate_hz),
     )
 
 
