@@ -354,10 +354,19 @@ def trace_table(paper: str | None = None, index: Any = None, *, root: str | None
             text_rows.append([name.replace(".", ".\u200b").replace("_", "_\u200b"), refs])
         return _HtmlLatexTable(head, html_rows, text_rows)
 
+    from navcore import coverage
+
+    # an equation without a claim says why it needs none (the coverage inventory's reason)
+    reasons = {
+        it.locator: it.reason
+        for it in coverage.items(paper)
+        if it.category == "equation" and not it.claims and it.reason
+    }
     head = ["Item", "navcore", "Tests", "Book", "Claims"]
     html_rows, text_rows = [], []
     for e in index.by_paper(paper):
         item = f"Eq.\u00a0({e.ref.item})" if e.ref.is_equation else e.ref.item
+        why = reasons.get(f"Eq. ({e.ref.item})", "") if (e.ref.is_equation and not e.claims) else ""
         funcs = [f.qualname for f in e.functions]
         tests = [t.removesuffix(".py") for t in sorted(e.tests)]
         pages = [link(p, True) for p in e.displayed_on] + [link(p, False) for p in e.mentioned_on]
@@ -367,7 +376,7 @@ def trace_table(paper: str | None = None, index: Any = None, *, root: str | None
                 "<br>".join(f"<code>{html.escape(f)}</code>" for f in funcs) or "—",
                 "<br>".join(html.escape(t) for t in tests) or "—",
                 "<br>".join(h for h, _ in pages) or "—",
-                str(len(e.claims) or "—"),
+                str(len(e.claims)) if e.claims else (f"none: {html.escape(why)}" if why else "—"),
             ]
         )
         text_rows.append(
@@ -376,7 +385,7 @@ def trace_table(paper: str | None = None, index: Any = None, *, root: str | None
                 "; ".join(f.replace("_", "_\u200b") for f in funcs) or "—",
                 "; ".join(t.replace("_", "_\u200b") for t in tests) or "—",
                 "; ".join(t for _, t in pages) or "—",
-                str(len(e.claims) or "—"),
+                str(len(e.claims)) if e.claims else (f"none: {why}" if why else "—"),
             ]
         )
     return _HtmlLatexTable(head, html_rows, text_rows)
