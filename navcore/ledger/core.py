@@ -180,6 +180,26 @@ def printed(text: str, *, extra_abs: float = 0.0, why: str = "") -> tuple[float,
 def prose(word: str, *, why: str = "") -> Tolerance:
     """The tolerance of a prose word from :data:`PROSE_WORDS` (policy ``prose``).
 
+    Parameters
+    ----------
+    word : str
+        The word or phrase as the paper prints it (``"about"``, ``"on the order of"``); case
+        and surrounding spaces are ignored. It must be a key of :data:`PROSE_WORDS`.
+    why : str, optional
+        Appended to the tolerance's reason (how the word applies to this claim).
+
+    Returns
+    -------
+    Tolerance
+        Policy ``prose``: ``rel`` for a relative band, ``abs`` for an absolute band, or
+        ``abs`` in decades for a base-10 logarithm of a ratio (LEDGER.md, "Tolerance: fixed
+        before the value is computed").
+
+    Raises
+    ------
+    ValueError
+        If ``word`` is not in :data:`PROSE_WORDS`.
+
     Examples
     --------
     >>> prose("about").rel
@@ -200,6 +220,27 @@ def prose(word: str, *, why: str = "") -> Tolerance:
 def figure_reading(resolution: float, *, figure: str, axis: str) -> Tolerance:
     """Tolerance of a value read off ``figure``: the reading resolution of its ``axis``.
 
+    Parameters
+    ----------
+    resolution : float
+        The reading resolution of the axis, in the claim's unit; finite and > 0.
+    figure : str
+        The figure the value is read off (``"Fig. 2.1"``).
+    axis : str
+        The axis and how finely it can be read (``"loop bandwidth, 0.5 Hz per minor
+        division"``).
+
+    Returns
+    -------
+    Tolerance
+        Policy ``figure-reading`` with ``abs = resolution`` (LEDGER.md, "Tolerance: fixed
+        before the value is computed").
+
+    Raises
+    ------
+    ValueError
+        If ``resolution`` is not finite and > 0.
+
     Examples
     --------
     >>> figure_reading(0.5, figure="Fig. 2.1", axis="loop bandwidth, 0.5 Hz per minor division").abs
@@ -219,6 +260,28 @@ def monte_carlo(*, rel: float | None = None, abs: float | None = None, runs: int
 
     The size is computed by the caller from the run count and the published value (never from
     the reproduced one) and ``why`` says how (e.g. "3 standard errors of a 25-run CEP").
+
+    Parameters
+    ----------
+    rel : float or None, optional
+        Relative tolerance (a fraction of the published value).
+    abs : float or None, optional
+        Absolute tolerance, in the claim's unit.
+    runs : int
+        The number of Monte Carlo runs behind the published value; >= 1.
+    why : str
+        How the size follows from ``runs`` and the published value.
+
+    Returns
+    -------
+    Tolerance
+        Policy ``monte-carlo`` (LEDGER.md, "Tolerance: fixed before the value is computed").
+
+    Raises
+    ------
+    ValueError
+        If ``runs < 1``, or (from :class:`Tolerance`) ``rel`` or ``abs`` is negative or not
+        finite.
     """
     if runs < 1:
         raise ValueError(f"runs must be >= 1, got {runs!r}")

@@ -345,12 +345,39 @@ def all_inputs(paper: str | None = None) -> tuple[Input, ...]:
 
     Only the inputs of paper modules already imported are registered; the ledger's registry
     imports them all.
+
+    Parameters
+    ----------
+    paper : str or None, optional
+        Paper key (``"SP"``); ``None`` for the inputs of every paper.
+
+    Returns
+    -------
+    tuple of Input
+        The registered inputs, in the order they were declared.
     """
     return tuple(i for i in _REGISTRY.values() if paper is None or i.paper == paper)
 
 
 def get_input(name: str) -> Input:
-    """The registered input with full name ``name``."""
+    """The registered input with full name ``name``.
+
+    Parameters
+    ----------
+    name : str
+        Full name, ``"<PAPER>.<set>.<attribute>"`` (``"SP.antijam.tc_loss_js_db"``).
+
+    Returns
+    -------
+    Input
+        Its registered declaration.
+
+    Raises
+    ------
+    ValueError
+        If no input of that name is registered (its paper module is not imported, or the
+        name is wrong).
+    """
     try:
         return _REGISTRY[name]
     except KeyError:
@@ -359,7 +386,16 @@ def get_input(name: str) -> Input:
 
 @contextlib.contextmanager
 def recording() -> Iterator[dict[str, Input]]:
-    """Record every input read inside the block into the yielded dict (name -> Input)."""
+    """Record every input read inside the block into the yielded dict (name -> Input).
+
+    Recordings nest: only the innermost one receives the reads. The ledger evaluates each
+    claim's computation in one, so a claim's inputs are what it actually read.
+
+    Yields
+    ------
+    dict of str to Input
+        Filled, as the block runs, with each input read, keyed by its full name.
+    """
     reads: dict[str, Input] = {}
     token = _RECORDER.set(reads)
     try:
@@ -370,7 +406,27 @@ def recording() -> Iterator[dict[str, Input]]:
 
 @contextlib.contextmanager
 def overriding(values: dict[str, Any]) -> Iterator[None]:
-    """Read the inputs named in ``values`` (full names) with those values inside the block."""
+    """Read the inputs named in ``values`` (full names) with those values inside the block.
+
+    Overrides nest: an inner block adds to (and may replace) the outer block's values. The
+    ledger uses it to evaluate a claim across an assumed input's range and at a convention's
+    other reading (LEDGER.md, "Provenance of an input").
+
+    Parameters
+    ----------
+    values : dict of str to Any
+        Full input name to the value every read of that input returns inside the block.
+
+    Yields
+    ------
+    None
+        Control of the block; the overrides are undone when it exits.
+
+    Raises
+    ------
+    ValueError
+        If a name in ``values`` is not a registered input.
+    """
     for name in values:
         get_input(name)  # unknown names are an error, not a silent no-op
     merged = {**_OVERRIDES.get(), **values}
@@ -383,7 +439,17 @@ def overriding(values: dict[str, Any]) -> Iterator[None]:
 
 @contextlib.contextmanager
 def declaring() -> Iterator[None]:
-    """Forbid every input read inside the block (the ledger resolves tolerances in one)."""
+    """Forbid every input read inside the block (the ledger resolves tolerances in one).
+
+    A tolerance is fixed by the printed text before anything is computed (LEDGER.md,
+    "Tolerance: fixed before the value is computed"); a read inside the block raises
+    :class:`InputReadError`.
+
+    Yields
+    ------
+    None
+        Control of the block; reads are allowed again when it exits.
+    """
     token = _DECLARING.set(True)
     try:
         yield
@@ -423,6 +489,23 @@ def input_cache(fn: F) -> F:
     returns the stored result only if those inputs still have the same values (overrides
     included), and replays the reads into the caller's recording. Use it instead of
     :func:`functools.cache` for anything that reads inputs.
+
+    Parameters
+    ----------
+    fn : callable
+        The function to memoise; unhashable arguments are keyed by their ``repr``.
+
+    Returns
+    -------
+    callable
+        A wrapper with the signature of ``fn`` and a ``cache_clear()`` method. Up to 64
+        results (for differing input values) are kept per argument key.
+
+    Raises
+    ------
+    InputReadError
+        When the wrapper is called outside a recording while a paper module is imported, or
+        inside :func:`declaring` (as a direct read would).
     """
     store: dict[Any, list[tuple[tuple[tuple[Input, Any], ...], Any]]] = {}
 

@@ -305,7 +305,26 @@ def counts(paper: str | None = None) -> dict[str, dict[str, int]]:
 
 
 def counts_by_kind(paper: str | None = None) -> dict[str, dict[str, dict[str, int]]]:
-    """Counts per paper, kind and derived verdict: ``{paper: {kind: {status: n}}}``."""
+    """Counts per paper, kind and derived verdict: ``{paper: {kind: {status: n}}}``.
+
+    Parameters
+    ----------
+    paper : str or None, optional
+        Paper key; ``None`` for every paper of :data:`~navcore.ledger.core.PAPERS`.
+
+    Returns
+    -------
+    dict
+        ``{paper: {kind: {status: n}}}`` with every kind of
+        :data:`~navcore.ledger.core.KINDS` and every verdict of
+        :data:`~navcore.ledger.core.STATUSES` present (zero when none), as LEDGER.md
+        ("Kinds", "Verdicts, as the ledger derives them") defines them.
+
+    Raises
+    ------
+    ValueError
+        If ``paper`` is not a paper key.
+    """
     papers = [paper] if paper else list(PAPERS)
     out: dict[str, dict[str, dict[str, int]]] = {}
     for p in papers:
@@ -322,6 +341,22 @@ def inputs_report(paper: str | None = None) -> list[dict[str, Any]]:
     Each entry: ``input`` (the :class:`~navcore.ledger.inputs.Input`), ``claims`` (ids of
     the claims whose computation read it) and ``moves`` (for an assumed input, per claim the
     values at the ends of its range: ``[(claim_id, nominal, ((point, value), ...)), ...]``).
+
+    Parameters
+    ----------
+    paper : str or None, optional
+        Paper key; ``None`` for every paper.
+
+    Returns
+    -------
+    list of dict
+        One entry per non-``published`` input (LEDGER.md, "Provenance of an input"), in
+        declaration order, with the keys ``input``, ``claims`` and ``moves`` above.
+
+    Raises
+    ------
+    ValueError
+        If ``paper`` is not a paper key.
     """
     from navcore.ledger.inputs import all_inputs
 

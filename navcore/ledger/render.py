@@ -174,6 +174,19 @@ def latex_table(head: Sequence[str], body: Sequence[Sequence[str]]) -> str:
     Column widths follow their content (the longest word of the heading, the longest cell);
     numbers are right-aligned and never broken across lines; text cells wrap ragged-right
     without hyphenation. Used for every pandas table and count table in the PDF.
+
+    Parameters
+    ----------
+    head : sequence of str
+        The column headings (set in bold); their number fixes the number of columns.
+    body : sequence of sequence of str
+        The rows; cells are converted with ``str`` and short rows are padded with empty
+        cells. A zero-width space in a cell marks where it may break.
+
+    Returns
+    -------
+    str
+        A MyST ``{raw} latex`` block holding the table, ready to be emitted as Markdown.
     """
     ncols = len(head)
     cells = [[str(c) for c in row] + [""] * (ncols - len(row)) for row in body]

@@ -27,7 +27,21 @@ __all__ = [
 
 
 def count_table(evals: Sequence[Evaluation]) -> list[dict[str, Any]]:
-    """Rows ``{paper, kind, <status>: n, ..., total}`` per paper and kind present, then totals."""
+    """Rows ``{paper, kind, <status>: n, ..., total}`` per paper and kind present, then totals.
+
+    Parameters
+    ----------
+    evals : sequence of Evaluation
+        The evaluations to summarise (from :func:`~navcore.ledger.registry.evaluations`).
+
+    Returns
+    -------
+    list of dict
+        One row per (paper, kind) with claims, in the order of
+        :data:`~navcore.ledger.core.PAPERS` and :data:`~navcore.ledger.core.KINDS`: a count
+        per verdict of :data:`~navcore.ledger.core.STATUSES`, ``error`` (claims whose
+        evaluation failed) and ``total``; the last row, paper and kind ``"all"``, sums them.
+    """
     rows: list[dict[str, Any]] = []
     papers = [p for p in PAPERS if any(e.claim.paper == p for e in evals)]
     for p in papers:
@@ -50,7 +64,26 @@ def count_table(evals: Sequence[Evaluation]) -> list[dict[str, Any]]:
 
 
 def input_readers(evals: Sequence[Evaluation], provenance: str) -> list[tuple[Input, list[str]]]:
-    """The inputs of ``provenance`` read by ``evals``, each with the ids of the claims that read it."""
+    """The inputs of ``provenance`` read by ``evals``, each with the ids of the claims that read it.
+
+    Parameters
+    ----------
+    evals : sequence of Evaluation
+        The evaluations to summarise (from :func:`~navcore.ledger.registry.evaluations`).
+    provenance : str
+        One of :data:`~navcore.ledger.inputs.PROVENANCES` (LEDGER.md, "Provenance of an
+        input").
+
+    Returns
+    -------
+    list of tuple of (Input, list of str)
+        Each input read, sorted by full name, with the ids of the claims that read it.
+
+    Raises
+    ------
+    ValueError
+        If an input read is no longer registered.
+    """
     readers: dict[str, list[str]] = {}
     for e in evals:
         for i in e.inputs:
@@ -60,7 +93,19 @@ def input_readers(evals: Sequence[Evaluation], provenance: str) -> list[tuple[In
 
 
 def summary_text(evals: Sequence[Evaluation]) -> str:
-    """Counts by paper, kind and verdict; fitted parameters; assumed inputs (plain text)."""
+    """Counts by paper, kind and verdict; fitted parameters; assumed inputs (plain text).
+
+    Parameters
+    ----------
+    evals : sequence of Evaluation
+        The evaluations to summarise (from :func:`~navcore.ledger.registry.evaluations`).
+
+    Returns
+    -------
+    str
+        The summary of LEDGER.md for a terminal: the :func:`count_table`, the number of
+        claims failing their check, then the fitted parameters and the assumed inputs read.
+    """
     lines = []
     head = ["paper", "kind", *STATUSES, "total"]
     widths = [6, 13, *(max(len(s), 3) for s in STATUSES), 5]
@@ -101,7 +146,19 @@ def _fmt(value: Any) -> str:
 
 
 def kind_counts_frame(evals: Sequence[Evaluation]) -> Any:
-    """Claims counted by paper, kind and derived verdict, as a DataFrame (for the book)."""
+    """Claims counted by paper, kind and derived verdict, as a DataFrame (for the book).
+
+    Parameters
+    ----------
+    evals : sequence of Evaluation
+        The evaluations to summarise (from :func:`~navcore.ledger.registry.evaluations`).
+
+    Returns
+    -------
+    pandas.DataFrame
+        The rows of :func:`count_table` (without ``error``), columns ``Paper``, ``Kind``,
+        one per verdict and ``Total``.
+    """
     import pandas as pd
 
     rows = count_table(evals)
@@ -111,7 +168,15 @@ def kind_counts_frame(evals: Sequence[Evaluation]) -> Any:
 
 
 def prose_words_frame() -> Any:
-    """The one table of prose words and the bands the ledger gives them."""
+    """The one table of prose words and the bands the ledger gives them.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per word of :data:`~navcore.ledger.core.PROSE_WORDS`, columns ``Word in the
+        paper`` and ``Band the ledger uses`` (LEDGER.md, "Tolerance: fixed before the value
+        is computed").
+    """
     import pandas as pd
 
     from navcore.ledger.core import PROSE_WORDS
@@ -127,7 +192,19 @@ def _inputs_of(evals: Sequence[Evaluation], provenance: str) -> list[tuple[Input
 
 
 def assumed_inputs_frame(evals: Sequence[Evaluation]) -> Any:
-    """Every assumed input read by ``evals``: nominal, range, reason and the claims it moves."""
+    """Every assumed input read by ``evals``: nominal, range, reason and the claims it moves.
+
+    Parameters
+    ----------
+    evals : sequence of Evaluation
+        The evaluations to summarise (from :func:`~navcore.ledger.registry.evaluations`).
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per assumed input, columns ``Paper``, ``Input``, ``Nominal``, ``Range``,
+        ``Unit``, ``Reason`` and ``Claims`` (the number of claims that read it).
+    """
     import pandas as pd
 
     rows = []
@@ -147,7 +224,19 @@ def assumed_inputs_frame(evals: Sequence[Evaluation]) -> Any:
 
 
 def fitted_inputs_frame(evals: Sequence[Evaluation]) -> Any:
-    """Every fitted parameter: value, the claims it was fitted to, and the claims that read it."""
+    """Every fitted parameter: value, the claims it was fitted to, and the claims that read it.
+
+    Parameters
+    ----------
+    evals : sequence of Evaluation
+        The evaluations to summarise (from :func:`~navcore.ledger.registry.evaluations`).
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per fitted input read, columns ``Paper``, ``Parameter``, ``Value``, ``Unit``,
+        ``Fitted to``, ``Reason`` and ``Claims reading it``.
+    """
     import pandas as pd
 
     rows = [
@@ -168,7 +257,19 @@ def fitted_inputs_frame(evals: Sequence[Evaluation]) -> Any:
 
 
 def convention_inputs_frame(evals: Sequence[Evaluation]) -> Any:
-    """Every convention: the reading used, the other reading and the reason."""
+    """Every convention: the reading used, the other reading and the reason.
+
+    Parameters
+    ----------
+    evals : sequence of Evaluation
+        The evaluations to summarise (from :func:`~navcore.ledger.registry.evaluations`).
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per convention input read, columns ``Paper``, ``Convention``, ``Reading
+        used``, ``Other reading``, ``Unit``, ``Reason`` and ``Claims``.
+    """
     import pandas as pd
 
     rows = [
@@ -194,6 +295,17 @@ def sensitivity_frame(evals: Sequence[Evaluation]) -> Any:
     One row per (assumed input, claim): the claim's value at the low end, at the nominal and
     at the high end of the range (or at each grid point), its band over all assumed inputs,
     the printed value and the derived verdict.
+
+    Parameters
+    ----------
+    evals : sequence of Evaluation
+        The evaluations to summarise (from :func:`~navcore.ledger.registry.evaluations`).
+
+    Returns
+    -------
+    pandas.DataFrame
+        Columns ``Input``, ``Claim``, ``At low end``, ``At nominal``, ``At high end``,
+        ``Band``, ``Printed`` and ``Verdict``.
     """
     import pandas as pd
 
