@@ -15,7 +15,6 @@ import scipy.linalg
 from navcore import frames as fr
 from navcore.estimation import van_loan
 from navcore.gnss.carrier_phase import (
-    DEFAULT_BASELINES_B,
     attitude_observation_rows_count,
     dd_covariance,
     dd_observation_rows,
@@ -42,6 +41,9 @@ RNG = np.random.default_rng(7)
 C_TRUE = fr.dcm_from_euler(0.1, -0.05, 1.3)
 F_B = np.array([0.3, -0.2, -G0])  # true specific force (body)
 EPS = 1e-6
+
+#: KZL Table 1: three antennas, 2 m baselines (laid along the body x and y axes).
+BASELINES_B = np.array([[2.0, 0.0, 0.0], [0.0, 2.0, 0.0]])
 
 
 def _vee(M):
@@ -165,17 +167,15 @@ def test_dd_rows_match_finite_differences():
 
     def dd(dpsi, n):
         C = _perturbed(dpsi)
-        return np.array(
-            [double_difference_phase(sats[0], sats[n], r, r + C @ b) for b in DEFAULT_BASELINES_B]
-        )
+        return np.array([double_difference_phase(sats[0], sats[n], r, r + C @ b) for b in BASELINES_B])
 
     for n in (1, 2):
-        H = dd_observation_rows(u[0], u[n], C_TRUE)[:, L.slice("misalignment")]
+        H = dd_observation_rows(u[0], u[n], C_TRUE, BASELINES_B)[:, L.slice("misalignment")]
         J = np.column_stack([(dd(1e-5 * e, n) - dd(-1e-5 * e, n)) / 2e-5 for e in np.eye(3)])
         np.testing.assert_allclose(H, J, rtol=1e-5, atol=1e-5)  # plane-wave Jacobian: O(|b|/rho)
     # plane-wave form of Eq. 15
-    dd0 = double_difference_phase(sats[0], sats[1], r, r + C_TRUE @ DEFAULT_BASELINES_B[0])
-    plane = 2 * np.pi / GPS_L1_WAVELENGTH_M * (u[0] - u[1]) @ C_TRUE @ DEFAULT_BASELINES_B[0]
+    dd0 = double_difference_phase(sats[0], sats[1], r, r + C_TRUE @ BASELINES_B[0])
+    plane = 2 * np.pi / GPS_L1_WAVELENGTH_M * (u[0] - u[1]) @ C_TRUE @ BASELINES_B[0]
     assert float(dd0) == pytest.approx(float(plane), abs=1e-5)
 
 
@@ -211,4 +211,4 @@ def test_heading_unobservable_without_attitude_aiding():
     for k in range(17):
         assert np.abs(H @ np.linalg.matrix_power(F, k) @ e).max() == 0.0
     assert observability_rank(F, H) < 17
-    assert observability_rank(F, tc_dd_observation_matrix(u, C)) == 17
+    assert observability_rank(F, tc_dd_observation_matrix(u, C, BASELINES_B)) == 17

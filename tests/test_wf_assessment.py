@@ -10,15 +10,15 @@ from navcore.papers import wf_example as ex
 
 
 @pytest.mark.parametrize("sigma_a", [1e-5, 1e-4, 1e-3, 1e-2])
-@pytest.mark.parametrize("sigma_t", wf.SIGMA_T)
+@pytest.mark.parametrize("sigma_t", wf.sigma_t_values())
 def test_two_estimator_bound_closed_form(sigma_a, sigma_t):
     """Oracle: two isotropic estimators give the per-axis bound (s1 + s2)/(s1^2 + s2^2), s_i = 1/sigma_i.
 
     sigma_DL comes from the closed-form random-walk steady state P+ = (-q + sqrt(q^2 + 4 q r))/2.
     """
-    q, r = (sigma_a * wf.TS) ** 2, (200 * sigma_a) ** 2
+    q, r = (sigma_a * wf.IN.ts) ** 2, (200 * sigma_a) ** 2
     s_dl = np.sqrt((-q + np.sqrt(q * q + 4 * q * r)) / 2)
-    s_dn = np.hypot(wf.SIGMA_N, sigma_t)
+    s_dn = np.hypot(wf.IN.sigma_n, sigma_t)
     s1, s2 = 1 / s_dn, 1 / s_dl
     assert wf.sigma_d_bound(sigma_a, sigma_t) == pytest.approx((s1 + s2) / (s1**2 + s2**2), rel=1e-10)
 
@@ -47,24 +47,24 @@ def test_worked_example_federated_matches_true_velocity():
 
 
 @pytest.mark.parametrize("sigma_a", [1e-5, 1e-3, 1e-2])
-@pytest.mark.parametrize("sigma_t", wf.SIGMA_T)
+@pytest.mark.parametrize("sigma_t", wf.sigma_t_values())
 def test_three_satellite_bound_is_weighted_mean_of_sigmas(sigma_a, sigma_t):
     """Oracle: closed forms of WF Eqs. (14) and (17); with isotropic P_i the per-axis bound of Eq. (23) is
     sum_i s_i / sum_i s_i^2 (s_i = 1/sigma_i), the mean of the sigma_i weighted by s_i^2 (premise of the
     WF-fig2-order slack)."""
-    q, r = (sigma_a * wf.TS) ** 2, (200 * sigma_a) ** 2
+    q, r = (sigma_a * wf.IN.ts) ** 2, (200 * sigma_a) ** 2
     post = (-q + np.sqrt(q * q + 4 * q * r)) / 2
     prior = post + q
     f_over_c = 1575.42e6 / 299_792_458.0
-    var_dg = 1 / (1 / prior + f_over_c**2 / wf.SIGMA_G**2)
-    s = 1 / np.sqrt([wf.SIGMA_N**2 + sigma_t**2, post, var_dg])
+    var_dg = 1 / (1 / prior + f_over_c**2 / wf.IN.sigma_g**2)
+    s = 1 / np.sqrt([wf.IN.sigma_n**2 + sigma_t**2, post, var_dg])
     assert wf.sigma_d_bound(sigma_a, sigma_t, 3) == pytest.approx(s.sum() / (s**2).sum(), rel=1e-9)
 
 
 def test_prior_gap_closed_form():
     """Oracle: 10 log10(1 + q/P+) with the closed-form steady state, largest over the figures' grid."""
-    grid = np.logspace(np.log10(wf.SIGMA_A_RANGE[0]), np.log10(wf.SIGMA_A_RANGE[1]), 31)
-    q = (grid * wf.TS) ** 2
+    grid = np.logspace(np.log10(wf.IN.sigma_a_low), np.log10(wf.IN.sigma_a_high), 31)
+    q = (grid * wf.IN.ts) ** 2
     post = (-q + np.sqrt(q * q + 4 * q * (200 * grid) ** 2)) / 2
     assert wf.accelerometer_prior_gap_db() == pytest.approx(np.max(10 * np.log10(1 + q / post)), rel=1e-9)
 

@@ -25,7 +25,7 @@ References
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Literal
 
 import numpy as np
@@ -34,7 +34,7 @@ from numpy.typing import ArrayLike, NDArray
 from navcore._validate import require_integer, require_positive
 from navcore.estimation.kalman import symmetrize
 from navcore.frames import dcm_from_euler, quat_from_dcm, quat_from_rotvec
-from navcore.gnss.carrier_phase import DEFAULT_BASELINES_B, dd_covariance
+from navcore.gnss.carrier_phase import dd_covariance
 from navcore.inertial.alignment import heading_from_velocity, levelling
 from navcore.inertial.error_model17 import ERROR_LAYOUT_17, error_dynamics_17, transition_exact
 from navcore.inertial.imu import ImuSpec
@@ -195,10 +195,10 @@ class GnssNoise:
         Each Euler angle from the multi-antenna attitude system (rad).
     """
 
-    pseudorange: float = 3.0
-    delta_range: float = 0.05
-    phase: float = 0.003
-    attitude: float = 0.003
+    pseudorange: float
+    delta_range: float
+    phase: float
+    attitude: float
 
 
 @dataclass(frozen=True)
@@ -248,18 +248,18 @@ class Scenario:
     sat_pos_ned: Array
     sat_vel_ned: Array
     n_visible: NDArray[np.int64]
-    gnss: GnssNoise = field(default_factory=GnssNoise)
-    init_time: float = 300.0
+    gnss: GnssNoise
+    init_time: float
+    pos0_sigma: float
+    vel0_sigma: float
+    baselines_b: Array
     heading_sigma: float = 0.0
-    pos0_sigma: float = 3.0
-    vel0_sigma: float = 0.05
     clock_bias_sigma: float = 30.0
     clock_drift_sigma: float = 1.0
     clock_phase_walk: float = 0.1
     clock_drift_walk: float = 0.2
     accel_bias_walk: float = 1e-5
     gyro_bias_walk: float = 1e-6
-    baselines_b: Array = field(default_factory=lambda: DEFAULT_BASELINES_B.copy())
 
     @property
     def n_epochs(self) -> int:

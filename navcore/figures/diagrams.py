@@ -26,9 +26,9 @@ __all__: list[str] = []
     "Earth and transport rates fed back from position and velocity. The IMU rate is the Table 1 scenario's.",
 )
 def kzl_ins_block_diagram() -> Figure:
-    from navcore.papers.kzl_scenario import TABLE1
+    from navcore.papers.kzl_scenario import IN
 
-    return diagrams.ins_block_diagram(imu_rate_hz=TABLE1["imu_rate_hz"])
+    return diagrams.ins_block_diagram(imu_rate_hz=IN.imu_rate_hz)
 
 
 @register(
@@ -40,9 +40,9 @@ def kzl_ins_block_diagram() -> Figure:
     "phase/Doppler into position, velocity and time at the Table 1 GPS rate.",
 )
 def kzl_gnss_receiver_diagram() -> Figure:
-    from navcore.papers.kzl_scenario import TABLE1
+    from navcore.papers.kzl_scenario import IN
 
-    return diagrams.gnss_receiver_block_diagram(nav_rate_hz=TABLE1["gps_rate_hz"])
+    return diagrams.gnss_receiver_block_diagram(nav_rate_hz=IN.gps_rate_hz)
 
 
 @register(
@@ -56,10 +56,10 @@ def kzl_gnss_receiver_diagram() -> Figure:
 )
 def kzl_tightly_coupled_diagram() -> Figure:
     from navcore.inertial.error_model17 import ERROR_LAYOUT_17
-    from navcore.papers.kzl_scenario import TABLE1
+    from navcore.papers.kzl_scenario import IN
 
     return diagrams.tightly_coupled_feedback_diagram(
-        n_states=ERROR_LAYOUT_17.size, imu_rate_hz=TABLE1["imu_rate_hz"], gnss_rate_hz=TABLE1["gps_rate_hz"]
+        n_states=ERROR_LAYOUT_17.size, imu_rate_hz=IN.imu_rate_hz, gnss_rate_hz=IN.gps_rate_hz
     )
 
 

@@ -35,9 +35,11 @@ def improvement_without_gps() -> Figure:
     apply_style()
     c = wf.improvement_curves()
     fig, ax = plt.subplots()
-    for st in wf.SIGMA_T:
+    for st in wf.sigma_t_values():
         ax.plot(c["sigma_a"], c[(st, 0)], color=_COLOURS[st], label=rf"$\sigma_T$ = {st:g} m/s")
-    ax.plot([wf.SIGMA_A_EXAMPLE], [wf.improvement_db(wf.SIGMA_A_EXAMPLE, 2.0)], "kx", label=r"100 $\mu g$")
+    ax.plot(
+        [wf.sigma_a_example()], [wf.improvement_db(wf.sigma_a_example(), 2.0)], "kx", label=r"100 $\mu g$"
+    )
     _axis_ug(ax)
     ax.legend()
     return fig
@@ -55,9 +57,11 @@ def improvement_with_gps() -> Figure:
     apply_style()
     fig, axes = plt.subplots(1, 2, figsize=(10, 4.0), sharey=True)
     for ax, c in zip(
-        axes, (wf.improvement_curves(), wf.improvement_curves(wf.SIGMA_A_RANGE[0], 1.0, 41)), strict=True
+        axes,
+        (wf.improvement_curves(), wf.improvement_curves(wf.IN.sigma_a_low, wf.IN.sigma_a_poor_max, 41)),
+        strict=True,
     ):
-        for st in wf.SIGMA_T:
+        for st in wf.sigma_t_values():
             col = _COLOURS[st]
             ax.plot(c["sigma_a"], c[(st, 1)], color=col, label=rf"$\sigma_T$ = {st:g} m/s, 1 sat")
             if st > 0:
@@ -66,7 +70,7 @@ def improvement_with_gps() -> Figure:
         _axis_ug(ax)
     axes[0].set_title("stated range")
     axes[1].set_title("extended range")
-    axes[1].axvspan(wf.SIGMA_A_RANGE[1], 1.0, color="0.9", zorder=0)
+    axes[1].axvspan(wf.IN.sigma_a_high, wf.IN.sigma_a_poor_max, color="0.9", zorder=0)
     axes[0].legend(fontsize=8)
     return fig
 

@@ -42,7 +42,6 @@ from navcore.trace import implements
 from navcore.units import GPS_L1_WAVELENGTH_M
 
 __all__ = [
-    "DEFAULT_BASELINES_B",
     "attitude_observation_rows_count",
     "dd_covariance",
     "dd_observation_rows",
@@ -58,7 +57,6 @@ Array = NDArray[np.float64]
 _A = ERROR_LAYOUT_17.slice("misalignment")
 
 #: Body-frame baselines A0->A1 (2 m forward) and A0->A2 (2 m to the right wing), metres.
-DEFAULT_BASELINES_B = np.array([[2.0, 0.0, 0.0], [0.0, 2.0, 0.0]])
 
 
 def _range_difference(sat: Array, a0: Array, ai: Array) -> Array:
@@ -98,7 +96,7 @@ def dd_observation_rows(
     los_m: ArrayLike,
     los_n: ArrayLike,
     C_bn: ArrayLike,
-    baselines_b: ArrayLike = DEFAULT_BASELINES_B,
+    baselines_b: ArrayLike,
     wavelength: float = GPS_L1_WAVELENGTH_M,
 ) -> Array:
     """DD rows of KZL Eq. 17 (corrected: ``l_01`` in the first row, ``l_02`` in the second).
@@ -179,9 +177,7 @@ def tc_attitude_observation_matrix(los_ned: ArrayLike, C_bn: ArrayLike, roll: fl
 
 
 @implements("KZL 17")
-def tc_dd_observation_matrix(
-    los_ned: ArrayLike, C_bn: ArrayLike, baselines_b: ArrayLike = DEFAULT_BASELINES_B
-) -> Array:
+def tc_dd_observation_matrix(los_ned: ArrayLike, C_bn: ArrayLike, baselines_b: ArrayLike) -> Array:
     """Observation matrix of KZL Eq. 17 for ``nu`` satellites (first = master): code/Doppler rows
     for every satellite, then the DD rows satellite by satellite."""
     L = as_finite_array("los_ned", los_ned, ndim=2)
@@ -204,4 +200,4 @@ def dd_observation_rows_count(nu: int, n_baselines: int = 2) -> int:
     """Rows of the stacked Eq. 17 matrix, counted from the builder."""
     require_integer("nu", nu, minimum=1)
     los = np.tile([0.0, 0.0, -1.0], (nu, 1))
-    return tc_dd_observation_matrix(los, np.eye(3), DEFAULT_BASELINES_B[:n_baselines]).shape[0]
+    return tc_dd_observation_matrix(los, np.eye(3), np.eye(3)[:n_baselines]).shape[0]

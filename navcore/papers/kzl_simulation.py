@@ -9,17 +9,34 @@ from __future__ import annotations
 
 import numpy as np
 
-from navcore.ledger import EXACT, Claim, Erratum, Tolerance, printed
-from navcore.papers.kzl_scenario import HEADING_SIGMA_RAD, KZL_IMU, N_RUNS, monte_carlo
+from navcore.ledger import EXACT, Claim, Erratum, printed, prose
+from navcore.ledger import monte_carlo as mc_tolerance
+from navcore.papers.kzl_scenario import IN, N_RUNS, VISIBILITY_SCHEDULE, kzl_imu, monte_carlo
 from navcore.units import DEG
 
 PAGE3 = "kzl/03-simulation"
-T_END = 180
-SEG = {8: slice(1, 60), 4: slice(60, 90), 3: slice(90, 120), 2: slice(120, 150), 5: slice(150, 181)}
 
 
-def heading_rms_deg(mode: str, initialise: bool = True, k: int = T_END) -> float:
+def t_end() -> int:
+    """Index of the last epoch (180 s at 1 Hz: Table 1 duration times GPS rate)."""
+    return round(IN.duration_s * IN.gps_rate_hz)
+
+
+def seg() -> dict[int, slice]:
+    """Epoch slices of the visibility schedule's segments, keyed by the number of satellites.
+
+    The first epoch (the initial state) is left out of the first segment.
+    """
+    starts = [round(t0 * IN.gps_rate_hz) for t0, _ in VISIBILITY_SCHEDULE] + [t_end() + 1]
+    out = {}
+    for i, (_, n) in enumerate(VISIBILITY_SCHEDULE):
+        out[n] = slice(max(starts[i], 1), starts[i + 1])
+    return out
+
+
+def heading_rms_deg(mode: str, initialise: bool = True, k: int | None = None) -> float:
     """RMS over runs of the heading error (deg) at epoch ``k``."""
+    k = t_end() if k is None else k
     return float(monte_carlo(mode, initialise).rms("att_err")[k, 2] / DEG)
 
 
@@ -30,28 +47,29 @@ def heading_closed_form_deg(t: float = 180.0, calibrated: bool = False) -> float
     (Table 1 value, or the calibration residual ``N / sqrt(T_init)``), angle random walk ``N``
     and the initial heading uncertainty.
     """
-    from navcore.papers.kzl_scenario import INIT_TIME_S
-
-    N = KZL_IMU.gyro_random_walk
-    b = N / np.sqrt(INIT_TIME_S) if calibrated else KZL_IMU.gyro_bias
-    return float(np.degrees(np.sqrt((b * t) ** 2 + N**2 * t + HEADING_SIGMA_RAD**2)))
+    imu = kzl_imu()
+    N = imu.gyro_random_walk
+    b = N / np.sqrt(IN.init_time_s) if calibrated else imu.gyro_bias
+    return float(np.degrees(np.sqrt((b * t) ** 2 + N**2 * t + (IN.crab_angle_deg * DEG) ** 2)))
 
 
 def standalone_per_axis(name: str) -> float:
     """Per-horizontal-axis RMS of the stand-alone (initialised) INS error at 180 s."""
-    return float(monte_carlo("ins").horizontal_rms(name)[T_END] / np.sqrt(2.0))
+    return float(monte_carlo("ins").horizontal_rms(name)[t_end()] / np.sqrt(2.0))
 
 
 def _heading_largest_standalone() -> bool:
-    sig = monte_carlo("ins").att_sigma[T_END]
+    sig = monte_carlo("ins").att_sigma[t_end()]
     return bool(sig[2] > max(sig[0], sig[1]))
 
 
-def _tilt_mean(mode: str, sl: slice = slice(1, 181)) -> float:
+def _tilt_mean(mode: str, sl: slice | None = None) -> float:
+    sl = slice(1, t_end() + 1) if sl is None else sl
     return float(monte_carlo(mode).rms("att_err")[sl, :2].mean())
 
 
-def _heading_mean(mode: str, sl: slice = slice(1, 181)) -> float:
+def _heading_mean(mode: str, sl: slice | None = None) -> float:
+    sl = slice(1, t_end() + 1) if sl is None else sl
     return float(monte_carlo(mode).rms("att_err")[sl, 2].mean())
 
 
@@ -59,41 +77,46 @@ def _tc_improves_tilt() -> bool:
     return _tilt_mean("tc") < 0.5 * _tilt_mean("ins")
 
 
-def _tc_improves_heading() -> bool:
-    """'Better' = at least 10 % lower time-averaged heading RMS than the initialised INS."""
-    return _heading_mean("tc") < 0.9 * _heading_mean("ins")
+def tc_heading_improvement_mc() -> float:
+    """Monte Carlo: fraction of the initialised INS's time-averaged heading RMS that TC removes."""
+    return 1.0 - _heading_mean("tc") / _heading_mean("ins")
 
 
-def _tc_heading_oracle() -> bool:
-    """Independent: heading error is in the null space of the TC observability matrix in
-    straight and level flight, so measurements cannot improve it."""
-    from navcore.papers.kzl_models import observability_ranks
+def tc_heading_improvement_bound() -> float:
+    """Largest fraction of the heading error code and delta range can remove in the Table 1 flight:
+    0 when the heading error is unobservable (it lies in the null space of the TC observability
+    matrix in straight and level flight), else up to 1. Reads the published flight only."""
+    from navcore.papers.kzl_models import heading_observable
 
-    return observability_ranks()["tc"][8] == 17
+    return 1.0 if heading_observable("tc", 8) else 0.0
 
 
 def _attitude_aiding_much_better_and_degrades_below_4() -> bool:
-    many = [SEG[8], SEG[4], SEG[5]]
+    segs = seg()
+    many = [segs[8], segs[4], segs[5]]
     better = all(_heading_mean("tc_att", s) < 0.3 * _heading_mean("tc", s) for s in many)
-    worse = max(_heading_mean("tc_att", SEG[3]), _heading_mean("tc_att", SEG[2])) > 2 * _heading_mean(
-        "tc_att", SEG[8]
+    worse = max(_heading_mean("tc_att", segs[3]), _heading_mean("tc_att", segs[2])) > 2 * _heading_mean(
+        "tc_att", segs[8]
     )
     return bool(better and worse)
 
 
 def _dd_robust_with_2_3() -> bool:
     r = monte_carlo("tc_dd")
+    segs = seg()
     comparable = all(
-        _heading_mean("tc_dd", SEG[n]) < 1.5 * _heading_mean("tc_att", SEG[n]) for n in (8, 4, 5)
+        _heading_mean("tc_dd", segs[n]) < 1.5 * _heading_mean("tc_att", segs[n]) for n in (8, 4, 5)
     )
-    robust = all(_heading_mean("tc_dd", SEG[n]) < _heading_mean("tc_att", SEG[n]) for n in (3, 2))
+    robust = all(_heading_mean("tc_dd", segs[n]) < _heading_mean("tc_att", segs[n]) for n in (3, 2))
     accurate = bool(np.all(r.rms("att_err")[10:] < 0.5 * DEG))
     return bool(comparable and robust and accurate)
 
 
 def _pos_bounded_3_grows_2() -> bool:
     h = monte_carlo("tc").horizontal_rms("pos_err")
-    return bool(h[149] > 3 * h[119] and h[119] < 10.0)
+    segs = seg()
+    end3, end2 = segs[3].stop - 1, segs[2].stop - 1
+    return bool(h[end2] > 3 * h[end3] and h[end3] < 10.0)
 
 
 def _dd_best() -> bool:
@@ -108,20 +131,18 @@ def _dd_best() -> bool:
     return bool(ok)
 
 
-def _pointing_requirement_met() -> bool:
+def pointing_accuracy_deg() -> float:
+    """Largest attitude error of TC + DD after 10 s (deg): RMS over runs or filter 1-sigma, any axis."""
     r = monte_carlo("tc_dd")
-    return bool(np.all(r.att_sigma[10:] < 0.5 * DEG) and np.all(r.rms("att_err")[10:] < 0.5 * DEG))
+    return float(max(np.max(r.att_sigma[10:]), np.max(r.rms("att_err")[10:])) / DEG)
 
 
 _C16 = printed("3", why="the paper prints an integer bound")
 _C17 = printed("20", why="the paper prints an integer bound")
-_C22P = printed("1", why="'about 1 km', read per horizontal axis")
-_C22V = printed("15", why="'about 15 m/s', read per horizontal axis")
-_SAMPLING = Tolerance(
-    reason=f"RMS over {N_RUNS} runs has a relative standard error 1/sqrt(2N) = "
-    f"{1 / np.sqrt(2 * N_RUNS):.2f}; 1.5 of it, plus the Euler-vs-n-frame heading mapping at "
-    "20 deg tilts (about 6 %)",
-    rel=float(1.5 / np.sqrt(2 * N_RUNS) + 0.06),
+_ABOUT = prose("about", why="'about 1 km and 15 m/s after 3 minutes', read per horizontal axis")
+_MC_NOTE = (
+    "Reads the assumed initialisation time and crab angle (and, for the aided filters, the assumed "
+    "GPS noises): the band spans their ranges."
 )
 
 ERRATA = [
@@ -160,14 +181,17 @@ CLAIMS = [
         paper="KZL",
         locator="Sec. 3.6",
         quantity="stand-alone IMU heading error after 180 s with initialisation",
-        published=3.0,
+        published=_C16[0],
         relation="<",
         unit="deg",
+        kind="reproduction",
         compute=lambda: heading_rms_deg("ins", True),
         tolerance=_C16[1],
-        expected_status="reproduced",
+        expected_status="consistent",
         note="RMS over the runs at 180 s. Initialisation: levelling, heading from GPS velocity (Eq. 4), "
-        "gyro-bias and vertical-accelerometer calibration by 300 s averaging (assumed), 0.5 deg crab.",
+        "gyro-bias and vertical-accelerometer calibration by averaging at rest. "
+        + _MC_NOTE
+        + " Verdict changed from reproduced: the averaging time and crab angle are assumed inputs.",
         discussed_in=PAGE3,
     ),
     Claim(
@@ -175,16 +199,20 @@ CLAIMS = [
         paper="KZL",
         locator="Sec. 3.6",
         quantity="stand-alone IMU heading error after 180 s without initialisation and calibration",
-        published=20.0,
+        published=_C17[0],
         relation=">",
         unit="deg",
+        kind="reproduction",
         compute=lambda: heading_rms_deg("ins", False),
         tolerance=_C17[1],
-        expected_status="discrepant",
-        note="RMS over the runs with the uncompensated Table 1 gyro bias (360 deg/h, random constant).",
+        expected_status="inconsistent",
+        note="RMS over the runs with the uncompensated Table 1 gyro bias (360 deg/h, random constant); "
+        "the only assumed input read is the crab angle (0.1-1 deg), and across it the RMS stays near "
+        "19 deg, below 19.5. To exceed 20 deg the unpublished initial heading uncertainty would have "
+        "to be about 6 deg (1-sigma) instead of 0.1-1 deg, or the gyro bias above about 400 deg/h "
+        "(KZL-E7; closed form sqrt((b t)^2 + N^2 t + sigma0^2) = 18 deg). Verdict changed from "
+        "discrepant: the claim reads an assumed input whose range is not every admissible value.",
         erratum="KZL-E7-uncalibrated-heading",
-        oracle=lambda: heading_closed_form_deg(180.0, calibrated=False),
-        oracle_tolerance=_SAMPLING,
         discussed_in=PAGE3,
     ),
     Claim(
@@ -194,13 +222,14 @@ CLAIMS = [
         quantity="stand-alone IMU: the largest attitude error is in heading",
         published=True,
         unit="statement",
+        kind="statement",
         compute=_heading_largest_standalone,
         tolerance=EXACT,
         expected_status="consistent",
         note="Holds in the ensemble 1-sigma (0.99 deg heading vs 0.86 deg tilt at 180 s) only because the "
         "assumed initial heading uncertainty (0.5 deg crab) exceeds the levelling tilt error; the gyro "
         "errors grow alike on all axes. The 30-run RMS cannot resolve the difference, and without "
-        "initialisation all three angles reach about 19-21 deg.",
+        "initialisation all three angles reach about 19-21 deg. " + _MC_NOTE,
         discussed_in=PAGE3,
     ),
     Claim(
@@ -208,14 +237,16 @@ CLAIMS = [
         paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 5",
         quantity="stand-alone IMU position error after 3 min",
-        published=_C22P[0],
+        published=1.0,
         unit="km",
+        kind="reproduction",
         compute=lambda: standalone_per_axis("pos_err") / 1000.0,
-        tolerance=_C22P[1],
-        expected_status="reproduced",
+        tolerance=_ABOUT,
+        expected_status="consistent",
         note="Per-horizontal-axis RMS over runs of the initialised INS; the horizontal norm is sqrt(2) "
         "larger (about 1.4 km). Driven by the angle random walk (g N sqrt(t^5/20) = 0.83 km) and the "
-        "calibration residual of the gyro bias.",
+        "calibration residual of the gyro bias. " + _MC_NOTE + " Verdict changed from reproduced: "
+        "the averaging time is an assumed input (150-600 s).",
         discussed_in=PAGE3,
     ),
     Claim(
@@ -223,13 +254,15 @@ CLAIMS = [
         paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 5",
         quantity="stand-alone IMU velocity error after 3 min",
-        published=_C22V[0],
+        published=15.0,
         unit="m/s",
+        kind="reproduction",
         compute=lambda: standalone_per_axis("vel_err"),
-        tolerance=_C22V[1],
-        expected_status="reproduced",
+        tolerance=_ABOUT,
+        expected_status="consistent",
         note="Per-horizontal-axis RMS over runs; the horizontal norm is about 21 m/s. With 30 runs the "
-        "RMS itself is uncertain by about 13 %.",
+        "RMS itself is uncertain by about 13 %. " + _MC_NOTE + " Verdict changed from reproduced: "
+        "the averaging time is an assumed input (150-600 s).",
         discussed_in=PAGE3,
     ),
     Claim(
@@ -239,27 +272,43 @@ CLAIMS = [
         quantity="tight coupling without attitude information improves roll and pitch over the INS alone",
         published=True,
         unit="statement",
+        kind="statement",
         compute=_tc_improves_tilt,
         tolerance=EXACT,
-        expected_status="reproduced",
-        note="Time-averaged roll/pitch RMS of TC below half that of the initialised INS.",
+        expected_status="consistent",
+        note="Time-averaged roll/pitch RMS of TC below half that of the initialised INS. "
+        + _MC_NOTE
+        + " Verdict changed from reproduced: the Monte Carlo reads assumed inputs.",
         discussed_in=PAGE3,
     ),
     Claim(
         id="KZL-c19-heading",
         paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 4",
-        quantity="tight coupling without attitude information improves heading over the INS alone",
-        published=True,
-        unit="statement",
-        compute=_tc_improves_heading,
+        quantity="tight coupling without attitude information improves heading over the INS alone: the "
+        "fraction of the stand-alone heading error it can remove",
+        published=0.1,
+        relation=">=",
+        unit="",
+        kind="reproduction",
+        compute=tc_heading_improvement_bound,
         tolerance=EXACT,
         expected_status="discrepant",
-        note="'Improves' = at least 10 % lower time-averaged heading RMS. Heading is unobservable in "
-        "straight and level flight.",
+        note="'Better' read as removing at least 10 % of the heading error (the paper prints no number; "
+        "the reading is the one used before). Computed from observability: the heading error is "
+        "unobservable from code and delta range in the Table 1 flight (8 satellites, "
+        "straight and level, published inputs only), so no filter can remove any of it: 0. Oracle "
+        "(independent, Monte Carlo): 1 - time-averaged heading RMS of TC / that of the initialised INS, "
+        "on common random numbers. Was the truth value with the Monte Carlo as computation (it reads "
+        "assumed noises, which would make the verdict inconsistent); the verdict is unchanged.",
         erratum="KZL-E8-tc-heading",
-        oracle=_tc_heading_oracle,
-        oracle_tolerance=EXACT,
+        oracle=tc_heading_improvement_mc,
+        oracle_tolerance=mc_tolerance(
+            abs=0.05,
+            runs=N_RUNS,
+            why="the two time-averaged RMS share random numbers; the filter's heading updates through "
+            "cross-covariances are a few per cent at most",
+        ),
         discussed_in=PAGE3,
     ),
     Claim(
@@ -269,11 +318,14 @@ CLAIMS = [
         quantity="redundant attitude: much better attitude, much larger errors with fewer than 4 satellites",
         published=True,
         unit="statement",
+        kind="statement",
         compute=_attitude_aiding_much_better_and_degrades_below_4,
         tolerance=EXACT,
-        expected_status="reproduced",
+        expected_status="consistent",
         note="Heading RMS with Eq. (12) aiding below 0.3x TC in the 8-, 4- and 5-satellite segments, and "
-        "more than twice its 8-satellite value in the 3- or 2-satellite segments.",
+        "more than twice its 8-satellite value in the 3- or 2-satellite segments. "
+        + _MC_NOTE
+        + " Verdict changed from reproduced: the Monte Carlo reads assumed inputs.",
         discussed_in=PAGE3,
     ),
     Claim(
@@ -283,12 +335,14 @@ CLAIMS = [
         quantity="DD phases: comparable with >= 4 satellites, robust and accurate with 2 or 3",
         published=True,
         unit="statement",
+        kind="statement",
         compute=_dd_robust_with_2_3,
         tolerance=EXACT,
-        expected_status="reproduced",
+        expected_status="consistent",
         note="Heading RMS with DD within 1.5x of the attitude-aided filter with >= 4 satellites, lower with "
         "2-3, and every attitude RMS below 0.5 deg after 10 s. Depends on the assumed noises (3 mm "
-        "phase, 0.17 deg Euler).",
+        "phase, 0.17 deg Euler). " + _MC_NOTE + " Verdict changed from reproduced: the Monte Carlo "
+        "reads assumed inputs.",
         discussed_in=PAGE3,
     ),
     Claim(
@@ -298,12 +352,13 @@ CLAIMS = [
         quantity="TC position error bounded with 3 satellites, growing remarkably with 2",
         published=True,
         unit="statement",
+        kind="statement",
         compute=_pos_bounded_3_grows_2,
         tolerance=EXACT,
         expected_status="consistent",
         note="Horizontal RMS at the end of the 2-satellite segment more than 3x that at the end of the "
         "3-satellite segment, which stays below 10 m. With 3 satellites one position/clock direction "
-        "is unobservable, so the error still grows slowly: bounded over 30 s, not for ever.",
+        "is unobservable, so the error still grows slowly: bounded over 30 s, not for ever. " + _MC_NOTE,
         discussed_in=PAGE3,
     ),
     Claim(
@@ -313,25 +368,30 @@ CLAIMS = [
         quantity="the DD carrier-phase integration yields the best results",
         published=True,
         unit="statement",
+        kind="statement",
         compute=_dd_best,
         tolerance=EXACT,
-        expected_status="reproduced",
+        expected_status="consistent",
         note="Time-averaged RMS norm of position, velocity and attitude errors lowest for TC + DD (5 % "
-        "slack for sampling; the runs share random numbers).",
+        "slack for sampling; the runs share random numbers). " + _MC_NOTE + " Verdict changed from "
+        "reproduced: the Monte Carlo reads assumed inputs.",
         discussed_in=PAGE3,
     ),
     Claim(
         id="KZL-c3",
         paper="KZL",
         locator="Sec. 1",
-        quantity="about 0.5 deg pointing accuracy is achievable (footprint chasing requirement)",
-        published=True,
-        unit="statement",
-        compute=_pointing_requirement_met,
-        tolerance=EXACT,
+        quantity="about 0.5 deg pointing accuracy is achievable (footprint chasing requirement): the "
+        "largest TC + DD attitude error after 10 s",
+        published=0.5,
+        relation="<=",
+        unit="deg",
+        kind="reproduction",
+        compute=pointing_accuracy_deg,
+        tolerance=prose("about", why="'about 0.5 deg pointing accuracy'"),
         expected_status="consistent",
-        note="TC + DD attitude RMS and filter 1-sigma below 0.5 deg on every axis after 10 s, with 2-8 "
-        "satellites.",
+        note="Largest TC + DD attitude RMS or filter 1-sigma on any axis after 10 s, with 2-8 "
+        "satellites. Was a statement (everything below 0.5 deg); now the number itself. " + _MC_NOTE,
         discussed_in=PAGE3,
     ),
 ]

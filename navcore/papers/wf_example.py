@@ -15,29 +15,24 @@ No claims: the paper publishes no number for this; the results appear as a table
 
 from __future__ import annotations
 
-from functools import cache
-
 import numpy as np
 
 from navcore.estimation.federated import (
     accelerometer_steady_state_isotropic,
     federated_fusion,
 )
+from navcore.ledger import input_cache
 from navcore.location.emitter import doppler_frequency, emitter_gauss_newton
 from navcore.papers.wf import (
     ALTITUDE,
     DURATION,
     EMITTER,
     F0,
-    SIGMA_A_EXAMPLE,
+    IN,
     SIGMA_F,
-    SIGMA_L_PER_SIGMA_A,
-    SIGMA_N,
     SPEED,
-    TS,
     TURN_RATE_DEG,
-    VIB_AMPLITUDE,
-    VIB_HZ,
+    sigma_a_example,
 )
 
 #: measurement decimation: one frequency measurement every DECIM accelerometer steps
@@ -52,12 +47,13 @@ N_TONES = 8
 def _vibration(t: np.ndarray, rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
     """Narrowband first-mode vibration: vertical displacement (m) and velocity (m/s) at times t.
 
-    A sum of N_TONES sinusoids with frequencies uniform within +-0.5 Hz of VIB_HZ and random
-    phases, scaled so that the displacement RMS is that of a VIB_AMPLITUDE sinusoid.
+    A sum of N_TONES sinusoids with frequencies uniform within +-0.5 Hz of the assumed first-mode
+    frequency (``IN.vib_hz``) and random phases, scaled so that the displacement RMS is that of a
+    sinusoid of the assumed amplitude (``IN.vib_amplitude_m``).
     """
-    f = VIB_HZ + rng.uniform(-0.5, 0.5, N_TONES)
+    f = IN.vib_hz + rng.uniform(-0.5, 0.5, N_TONES)
     ph = rng.uniform(0, 2 * np.pi, N_TONES)
-    a = VIB_AMPLITUDE / np.sqrt(N_TONES)
+    a = IN.vib_amplitude_m / np.sqrt(N_TONES)
     arg = 2 * np.pi * np.outer(t, f) + ph
     return (a * np.sin(arg)).sum(axis=1), (a * 2 * np.pi * f * np.cos(arg)).sum(axis=1)
 
@@ -70,8 +66,8 @@ def _rigid(t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return pos, vel
 
 
-@cache
-def run(trials: int = 20, sigma_a: float = SIGMA_A_EXAMPLE) -> dict:
+@input_cache
+def run(trials: int = 20, sigma_a: float | None = None) -> dict:
     """Monte Carlo of the worked example (seeded, all trials vectorised).
 
     The accelerometer output is modelled as the average acceleration over each 20 ms interval
@@ -86,12 +82,14 @@ def run(trials: int = 20, sigma_a: float = SIGMA_A_EXAMPLE) -> dict:
         ``"navigation"``, ``"federated"``; ``vel_err[case]``: (trials, M, 3) aperture-velocity
         errors at the measurement times (m/s); ``t``: measurement times (s).
     """
+    sigma_a = sigma_a_example() if sigma_a is None else sigma_a
+    TS, SIGMA_N = IN.ts, IN.sigma_n
     rng = np.random.default_rng(SEED)
     n_steps = round(DURATION / TS)
     t_all = np.arange(n_steps + 1) * TS
     idx = np.arange(0, n_steps + 1, DECIM)
     t = t_all[idx]
-    sigma_l = SIGMA_L_PER_SIGMA_A * sigma_a
+    sigma_l = IN.sigma_l_per_sigma_a * sigma_a
     ss = accelerometer_steady_state_isotropic(sigma_a, TS, sigma_l)
     pos_rigid, vel_rigid = _rigid(t_all)
     vib = [_vibration(t_all, rng) for _ in range(trials)]
