@@ -5,7 +5,6 @@ trade-off of Sec. 3.7, and claims for errata KZL-E3 and KZL-E5.
 
 from __future__ import annotations
 
-import dataclasses
 import itertools
 
 import numpy as np
@@ -15,7 +14,6 @@ from scipy.spatial.transform import Rotation
 from navcore.frames import skew
 from navcore.inertial.error_model17 import ERROR_LAYOUT_17, error_dynamics_17
 from navcore.ledger import EXACT, Claim, InputSet, Tolerance, printed, prose
-from navcore.papers import kzl_models
 from navcore.papers.kzl_models import IN as MODELS
 from navcore.papers.kzl_models import (
     PAGE1,
@@ -509,10 +507,3 @@ CLAIMS = [
         discussed_in=PAGE3,
     ),
 ]
-
-# Link the new claims to their errata (the Erratum objects live in kzl_models; the registry reads
-# kzl_models.ERRATA after importing this module, the modules being sorted by name).
-_LINKS = {"KZL-E3-skew-notation": ("KZL-eq11-bracket",), "KZL-E5-dd-typos": ("KZL-eq17-printed-rank",)}
-for _i, _e in enumerate(kzl_models.ERRATA):
-    if _e.id in _LINKS and not _e.claims:
-        kzl_models.ERRATA[_i] = dataclasses.replace(_e, claims=_LINKS[_e.id])

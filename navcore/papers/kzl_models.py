@@ -356,6 +356,7 @@ ERRATA = [
         "R_hat = (I + [dpsi x]) R; reading the bracket as the standard skew flips the sign of F23 "
         "and of the DD rows of Eq. (17).",
         evidence="Finite differences of the nonlinear velocity-error rate (tests/test_error_model17.py).",
+        claims=("KZL-eq11-bracket",),
         discussed_in=PAGE2,
     ),
     Erratum(
@@ -382,6 +383,7 @@ ERRATA = [
         "2 + 4 (nu - 1); O is the zero and I the identity matrix.",
         evidence="Row counts from the builders in navcore.gnss.carrier_phase; with l_02 in both rows "
         "the DD attitude block of one satellite pair has rank 1 instead of 2.",
+        claims=("KZL-eq17-printed-rank",),
         discussed_in=PAGE2,
     ),
     Erratum(
