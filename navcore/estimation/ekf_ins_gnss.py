@@ -25,8 +25,9 @@ References
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
-from typing import Literal
+from typing import Any, Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -183,22 +184,25 @@ def sequential_scalar_updates(x: Array, P: Array, y: Array, H: Array, r: Array) 
 class GnssNoise:
     """1-sigma GPS measurement noises (assumptions: the paper gives none).
 
+    A noise is ``None`` when the scenario does not measure that quantity (a stand-alone INS
+    has none of them); :func:`run_monte_carlo` raises if a mode needs one that is ``None``.
+
     Attributes
     ----------
-    pseudorange : float
+    pseudorange : float or None
         Code pseudorange (m).
-    delta_range : float
+    delta_range : float or None
         Delta range / pseudorange rate (m/s).
-    phase : float
+    phase : float or None
         Undifferenced carrier phase per antenna and satellite (m); DDs have 4x its variance.
-    attitude : float
+    attitude : float or None
         Each Euler angle from the multi-antenna attitude system (rad).
     """
 
-    pseudorange: float
-    delta_range: float
-    phase: float
-    attitude: float
+    pseudorange: float | None
+    delta_range: float | None
+    phase: float | None
+    attitude: float | None
 
 
 @dataclass(frozen=True)
@@ -222,9 +226,9 @@ class Scenario:
         priority order (index 0 is the master satellite of the DDs).
     gnss : GnssNoise
         Measurement noises.
-    init_time : float
+    init_time : float or None
         Averaging time (s) of the initialisation (levelling, gyro-bias and vertical
-        accelerometer calibration).
+        accelerometer calibration); ``None`` for a run without initialisation.
     heading_sigma : float
         1-sigma true heading offset from the GPS track (crab angle), rad: what Eq. 4 cannot see.
     pos0_sigma, vel0_sigma : float
@@ -235,8 +239,9 @@ class Scenario:
         Clock random walks, root PSD (m/sqrt(s), m/s/sqrt(s)).
     accel_bias_walk, gyro_bias_walk : float
         Filter tuning of the bias random walks (the truth biases are constant).
-    baselines_b : (2, 3) array
-        Antenna baselines A0->A1, A0->A2 in body axes (m).
+    baselines_b : (2, 3) array or None
+        Antenna baselines A0->A1, A0->A2 in body axes (m); ``None`` without a multi-antenna
+        system (the double-difference mode needs them).
     """
 
     velocity_ned: Array
@@ -249,10 +254,10 @@ class Scenario:
     sat_vel_ned: Array
     n_visible: NDArray[np.int64]
     gnss: GnssNoise
-    init_time: float
+    init_time: float | None
     pos0_sigma: float
     vel0_sigma: float
-    baselines_b: Array
+    baselines_b: Array | None
     heading_sigma: float = 0.0
     clock_bias_sigma: float = 30.0
     clock_drift_sigma: float = 1.0
@@ -317,6 +322,19 @@ def _gqgt(sc: Scenario) -> Array:
     return np.diag(q)
 
 
+def _needed(value: Any, name: str, what: str) -> Any:
+    """``value``, or a ValueError saying that ``what`` needs it (it is ``None``)."""
+    if value is None:
+        raise ValueError(f"{name} must be given for {what}, got None")
+    return value
+
+
+def _sigma(value: float | None) -> float:
+    """A noise draw's scale: 0 for a quantity not measured (the draw is still made, so every
+    mode consumes the same random numbers)."""
+    return 0.0 if value is None else float(value)
+
+
 def _initial_covariance(sc: Scenario, C0: Array, initialise: bool) -> Array:
     """P0 of the error state, with the tilt/accel-bias correlation that levelling creates."""
     P = np.zeros((17, 17))
@@ -327,7 +345,7 @@ def _initial_covariance(sc: Scenario, C0: Array, initialise: bool) -> Array:
     imu = sc.imu
     speed = float(np.hypot(sc.velocity_ned[0], sc.velocity_ned[1]))
     if initialise:
-        T = sc.init_time
+        T = _needed(sc.init_time, "sc.init_time", "an initialising run")
         # levelling makes the computed specific force exactly vertical: beta = R dba (n-frame)
         # and the tilt satisfy dpsi_n = beta_e / g, dpsi_e = -beta_n / g.
         s_h2 = imu.accel_bias**2 + imu.accel_random_walk**2 / T
@@ -403,7 +421,7 @@ def run_monte_carlo(
     )
 
     # --- initialisation (KZL Sec. 3.1) ---
-    Tinit = sc.init_time
+    Tinit = _needed(sc.init_time, "sc.init_time", "an initialising run") if initialise else math.inf
     pos_hat = sc.pos0_sigma * rng.standard_normal((N, 3))
     v_meas0 = v_true + sc.vel0_sigma * rng.standard_normal((N, 3))
     f_avg = f_sensor_const + imu.accel_random_walk / np.sqrt(Tinit) * rng.standard_normal((N, 3))
@@ -466,10 +484,10 @@ def run_monte_carlo(
         t = k * T
         # GPS noise draws (always drawn, used or not)
         nsat_all = sc.sat_pos_ned.shape[1]
-        e_pr = g.pseudorange * rng.standard_normal((N, nsat_all))
-        e_prr = g.delta_range * rng.standard_normal((N, nsat_all))
-        e_ph = g.phase * rng.standard_normal((N, nsat_all, 3))
-        e_att = g.attitude * rng.standard_normal((N, 3))
+        e_pr = _sigma(g.pseudorange) * rng.standard_normal((N, nsat_all))
+        e_prr = _sigma(g.delta_range) * rng.standard_normal((N, nsat_all))
+        e_ph = _sigma(g.phase) * rng.standard_normal((N, nsat_all, 3))
+        e_att = _sigma(g.attitude) * rng.standard_normal((N, 3))
 
         # covariance prediction over the GPS interval
         C_hat = dcm_from_quat_batch(nav.quat)
@@ -499,7 +517,13 @@ def run_monte_carlo(
             H[:, 0::2, _CB] = 1.0
             H[:, 1::2, _V] = -u_hat
             H[:, 1::2, _CD] = 1.0
-            r = np.tile([g.pseudorange**2, g.delta_range**2], nu)
+            r = np.tile(
+                [
+                    _needed(g.pseudorange, "sc.gnss.pseudorange", f"mode {mode!r}") ** 2,
+                    _needed(g.delta_range, "sc.gnss.delta_range", f"mode {mode!r}") ** 2,
+                ],
+                nu,
+            )
             dx = np.zeros((N, 17))
             dx, P = sequential_scalar_updates(dx, P, y, H, r)
             if mode == "tc_att" and nu >= attitude_min_sats:
@@ -508,11 +532,18 @@ def run_monte_carlo(
                 H_att = np.zeros((N, 3, 17))
                 H_att[:, :, _A] = euler_jacobian_batch(C_hat)
                 # the attitude rows see the already-updated error state through H dx
-                dx, P = sequential_scalar_updates(dx, P, y_att, H_att, np.full(3, g.attitude**2))
+                dx, P = sequential_scalar_updates(
+                    dx,
+                    P,
+                    y_att,
+                    H_att,
+                    np.full(3, _needed(g.attitude, "sc.gnss.attitude", f"mode {mode!r}") ** 2),
+                )
             if mode == "tc_dd" and nu >= 2:
-                nb = sc.baselines_b.shape[0]
-                ant_hat = np.einsum("nij,bj->nbi", C_hat, sc.baselines_b)  # (N, nb, 3) NED
-                ant_true = np.einsum("nij,bj->nbi", C_true, sc.baselines_b)
+                base_b = _needed(sc.baselines_b, "sc.baselines_b", f"mode {mode!r}")
+                nb = base_b.shape[0]
+                ant_hat = np.einsum("nij,bj->nbi", C_hat, base_b)  # (N, nb, 3) NED
+                ant_true = np.einsum("nij,bj->nbi", C_true, base_b)
 
                 y_dd = np.zeros((N, (nu - 1) * nb))
                 H_dd = np.zeros((N, (nu - 1) * nb, 17))
@@ -527,7 +558,7 @@ def run_monte_carlo(
                     y_dd[:, rows] = dd_hat - dd_meas
                     # Eq. 17 (corrected): (l_m - l_n)^T [R l x]_paper = (R l) x (l_m - l_n)
                     H_dd[:, rows, _A] = k2pi * np.cross(ant_hat, (u_hat[:, 0] - u_hat[:, s])[:, None, :])
-                R_dd = dd_covariance(nu, k2pi * g.phase, nb)
+                R_dd = dd_covariance(nu, k2pi * _needed(g.phase, "sc.gnss.phase", f"mode {mode!r}"), nb)
                 Lc = np.linalg.cholesky(R_dd)
                 Linv = np.linalg.inv(Lc)
                 y_w = np.einsum("ij,nj->ni", Linv, y_dd)

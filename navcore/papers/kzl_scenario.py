@@ -213,16 +213,15 @@ def kzl_imu(swapped: bool = False) -> ImuSpec:
 
 
 def gnss_noise(mode: str = "all") -> GnssNoise:
-    """The assumed GPS noises that ``mode`` uses; a noise the mode never uses is NaN."""
-    nan = float("nan")
+    """The assumed GPS noises that ``mode`` uses; a noise the mode never uses is ``None``."""
     if mode == "ins":
-        return GnssNoise(pseudorange=nan, delta_range=nan, phase=nan, attitude=nan)
+        return GnssNoise(pseudorange=None, delta_range=None, phase=None, attitude=None)
     k = IN.gnss_noise_scale
     return GnssNoise(
         pseudorange=k * GNSS_NOMINAL["pseudorange"],
         delta_range=k * GNSS_NOMINAL["delta_range"],
-        phase=k * GNSS_NOMINAL["phase"] if mode in ("tc_dd", "all") else nan,
-        attitude=k * GNSS_NOMINAL["attitude"] if mode in ("tc_att", "all") else nan,
+        phase=k * GNSS_NOMINAL["phase"] if mode in ("tc_dd", "all") else None,
+        attitude=k * GNSS_NOMINAL["attitude"] if mode in ("tc_att", "all") else None,
     )
 
 
@@ -307,11 +306,11 @@ def table1_scenario(
         sat_vel_ned=sat_vel,
         n_visible=n_vis,
         gnss=gnss_noise(mode),
-        init_time=IN.init_time_s if initialise else float("nan"),
+        init_time=IN.init_time_s if initialise else None,
         heading_sigma=IN.crab_angle_deg * DEG,
         pos0_sigma=POS0_SIGMA_M,
         vel0_sigma=VEL0_SIGMA_MPS,
-        baselines_b=table1_baselines_b() if mode in ("tc_dd", "all") else np.full((2, 3), np.nan),
+        baselines_b=table1_baselines_b() if mode in ("tc_dd", "all") else None,
     )
 
 
