@@ -577,6 +577,12 @@ def tightly_coupled_schedule(
     through the clock's g-sensitivity state, consistently with the clock-bias dynamics.
 
     Rows (truth layout): ``d rho = -u . dr + db + b_pr[c]``, ``d rho_dot = -u . dv + d(b_dot) + b_rr[c]``.
+
+    ``pseudorange_noise`` is the 1-sigma white pseudorange noise in metres and
+    ``range_rate_noise`` the 1-sigma white range-rate noise in m/s, per measurement (the
+    diagonal of R is their squares); ``u`` is the NED line-of-sight unit vector to the
+    satellite, ``dr`` (m) and ``dv`` (m/s) the NED position and velocity errors, ``db`` the
+    clock bias error (m) and ``d(b_dot)`` the clock drift error (m/s).
     """
     require_positive("pseudorange_noise", pseudorange_noise)
     require_positive("range_rate_noise", range_rate_noise)

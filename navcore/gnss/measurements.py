@@ -10,7 +10,10 @@ with user position :math:`r` and velocity :math:`v`, satellite :math:`i` positio
 :math:`r_i` and velocity :math:`v_i`, clock bias :math:`b` and drift :math:`\dot b` in metres
 and metres per second. Any frame may be used as long as all vectors share it (ECEF for
 physics; the Jacobian rows can be rotated into NED with ``C_en``). Earth rotation during
-signal transit (Sagnac) is neglected; it changes a row by less than 1e-6.
+signal transit (Sagnac) is neglected: over the 0.067-0.086 s transit the Earth turns by
+:math:`\omega_{ie}\tau` up to about 6.5e-6 rad, which moves the range by
+:math:`\omega_{ie}(x_i y - y_i x)/c`, up to a few tens of metres, so these models are for
+error (Jacobian) analysis, not for positioning from real ECEF ephemerides.
 
 Jacobians (with respect to :math:`r, b` and :math:`v, \dot b`):
 
