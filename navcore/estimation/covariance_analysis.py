@@ -76,7 +76,6 @@ __all__ = [
     "discrete_noise",
     "doppler_schedule",
     "embedding",
-    "horizontal_sigma",
     "lock_table",
     "loosely_coupled_schedule",
     "run_covariance_analysis",
@@ -144,13 +143,6 @@ class CovarianceAnalysis:
     def at(self, time: float) -> int:
         """Index of the sample closest to ``time``."""
         return int(np.argmin(np.abs(self.t - time)))
-
-
-def horizontal_sigma(P: ArrayLike, layout: StateLayout, block: str = "position") -> float:
-    """rss 1-sigma of the north and east components of ``block`` in covariance ``P``."""
-    P = np.asarray(P, dtype=float)
-    i = layout.slice(block).start
-    return float(np.sqrt(max(P[i, i] + P[i + 1, i + 1], 0.0)))
 
 
 @implements("SP Sec. 2.6")

@@ -23,7 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import as_finite_array, require_in_range, require_integer, require_positive
+from navcore._validate import as_finite_array, require_in_range, require_integer
 from navcore.frames import dcm_ecef_to_ned, geodetic_to_ecef
 from navcore.units import DEG, OMEGA_EARTH
 
@@ -32,9 +32,7 @@ __all__ = [
     "GPS_INCLINATION_RAD",
     "GPS_SEMI_MAJOR_AXIS_M",
     "Constellation",
-    "dop",
     "elevation_azimuth",
-    "geometry_matrix",
     "line_of_sight",
     "nominal_gps_constellation",
     "visible",
@@ -157,27 +155,3 @@ def visible(
     r_user = geodetic_to_ecef(lat, lon, h)
     el, _ = elevation_azimuth(r_user, constellation.positions_ecef(t), lat, lon)
     return el >= mask_deg * DEG
-
-
-def geometry_matrix(u: ArrayLike) -> NDArray[np.float64]:
-    """Pseudorange geometry matrix ``G = [-u, 1]`` (N x 4) for position and clock bias."""
-    u = as_finite_array("u", u, ndim=2)
-    return np.hstack([-u, np.ones((u.shape[0], 1))])
-
-
-def dop(u_ned: ArrayLike) -> dict[str, float]:
-    """Dilution of precision from NED unit vectors (N >= 4): GDOP, PDOP, HDOP, VDOP, TDOP."""
-    u_ned = as_finite_array("u_ned", u_ned, ndim=2)
-    if u_ned.shape[0] < 4:
-        raise ValueError(f"u_ned must have at least 4 satellites for DOP, got {u_ned.shape[0]}")
-    G = geometry_matrix(u_ned)
-    Qm = np.linalg.inv(G.T @ G)
-    d = np.diag(Qm)
-    require_positive("diag((G'G)^-1)", d)
-    return {
-        "GDOP": float(np.sqrt(d.sum())),
-        "PDOP": float(np.sqrt(d[:3].sum())),
-        "HDOP": float(np.sqrt(d[:2].sum())),
-        "VDOP": float(np.sqrt(d[2])),
-        "TDOP": float(np.sqrt(d[3])),
-    }
