@@ -10,7 +10,7 @@ import pytest
 from hypothesis import settings
 
 # Property tests: random exploration on a developer's machine, a fixed example sequence in CI
-# (any CI sets CI; .ci/run exports it), so that a CI run is reproducible and cannot fail on
+# (CI runs .ci/run with CI=true), so that a CI run is reproducible and cannot fail on
 # an example no earlier run saw. HYPOTHESIS_PROFILE=ci selects it by hand. No deadline in
 # CI: the shared runners are too loaded for per-example timing to mean anything.
 settings.register_profile("ci", derandomize=True, deadline=None, print_blob=True)
