@@ -123,3 +123,28 @@ def test_bad_inputs_raise():
         fr.quat_normalize([0.0, 0, 0, 0])
     with pytest.raises(ValueError, match="finite"):
         fr.dcm_from_euler(float("nan"), 0.0, 0.0)
+
+
+def test_quaternion_helpers_batched_against_scipy():
+    """Oracle: scipy Rotation (scalar-last quaternions) for batches of seeded random
+    rotations, tiny rotations (1e-13 rad, the small-angle branch) and quaternions with a
+    negative scalar part: rotation vector, rotated vectors and Euler angles."""
+    rng = np.random.default_rng(12)
+    rv = np.vstack([rng.normal(size=(20, 3)), 1e-13 * rng.normal(size=(5, 3)), [[0.0, 0.0, 0.0]]])
+    R = Rotation.from_rotvec(rv)
+    q = np.roll(R.as_quat(), 1, axis=-1)  # scalar first
+    q[::2] *= -1.0  # the same rotations, negative scalar part
+    np.testing.assert_allclose(fr.rotvec_from_quat(q), rv, rtol=1e-10, atol=1e-22)
+    v = rng.normal(size=(26, 3))
+    np.testing.assert_allclose(fr.quat_rotate(q, v), R.apply(v), atol=1e-12)
+    for qi, Ri in zip(q[:20], R[:20], strict=True):
+        yaw, pitch, roll = Ri.as_euler("ZYX")
+        np.testing.assert_allclose(fr.euler_from_quat(qi), (roll, pitch, yaw), atol=1e-10)
+
+
+def test_ecef_to_geodetic_default_is_radians():
+    """Oracle: pymap3d with deg=False; the keyword default is radians, as for geodetic_to_ecef."""
+    r = fr.geodetic_to_ecef(0.7, -1.2, 350.0)
+    lat, lon, h = fr.ecef_to_geodetic(r)
+    exp = pymap3d.ecef2geodetic(*r, deg=False)
+    np.testing.assert_allclose([lat, lon, h], exp, rtol=0, atol=1e-9)
