@@ -148,3 +148,18 @@ def test_ecef_to_geodetic_default_is_radians():
     lat, lon, h = fr.ecef_to_geodetic(r)
     exp = pymap3d.ecef2geodetic(*r, deg=False)
     np.testing.assert_allclose([lat, lon, h], exp, rtol=0, atol=1e-9)
+
+
+@pytest.mark.parametrize("axis", [0, 1, 2])
+@pytest.mark.parametrize("angle", [np.pi, np.pi - 1e-3, 2.5])
+def test_quat_from_dcm_half_turns_against_scipy(axis, angle):
+    """Oracle: scipy Rotation, for rotations near a half turn about each axis, where the trace
+    is about -1 and each of Shepperd's four branches is needed (w = 0 divides by zero in the
+    trace branch); quaternions agree up to sign."""
+    rv = np.zeros(3)
+    rv[axis] = angle
+    rv += 0.05 * np.eye(3)[(axis + 1) % 3] * (angle != np.pi)
+    R = Rotation.from_rotvec(rv)
+    q = fr.quat_from_dcm(R.as_matrix())
+    expected = np.roll(R.as_quat(), 1)
+    assert abs(float(q @ expected)) == pytest.approx(1.0, abs=1e-12)
