@@ -8,8 +8,9 @@ For each package a scratch project is laid out in ``_build/mutation/<package>/``
 ``navcore/`` and ``tests/`` and a ``pyproject.toml`` holding the repository's pytest options
 and a ``[tool.mutmut]`` section that mutates only that package and selects only the test
 files that exercise it (:data:`PACKAGES`; mutmut then narrows them per function, running for
-each mutant only the tests that called the mutated function in its first, clean run). The
-scratch folder is kept, so a second run re-tests only mutants whose source changed.
+each mutant only the tests that called the mutated function in its first, clean run). Each
+run starts afresh (mutmut caches verdicts by mutated source, so a survivor would stay one
+after a new test); ``--keep`` reuses the cache when only the code changed.
 
 ``mutmut run`` gets ``--budget-min`` minutes of wall-clock time per package (default 30; the
 machine has 2 cores); a run cut short reports what it checked, and the unchecked mutants
@@ -122,11 +123,15 @@ KILLED = {"killed", "timeout", "segfault", "caught by type check"}
 SURVIVED = {"survived", "no tests"}
 
 
-def scratch_project(package: str) -> Path:
+def scratch_project(package: str, keep: bool = False) -> Path:
     """Lay out (or refresh) ``_build/mutation/<package>`` for one package."""
     only, tests = PACKAGES[package]
     work = WORK / package
     work.mkdir(parents=True, exist_ok=True)
+    if not keep and (work / "mutants").exists():
+        # mutmut keys its cached verdicts on the mutated source, not on the tests: a survivor
+        # stays a survivor after a new test unless the cache goes
+        shutil.rmtree(work / "mutants")
     for folder in ("navcore", "tests"):
         if (work / folder).exists():
             shutil.rmtree(work / folder)
@@ -153,9 +158,9 @@ def scratch_project(package: str) -> Path:
     return work
 
 
-def run_package(package: str, budget_min: float, max_children: int) -> dict:
+def run_package(package: str, budget_min: float, max_children: int, keep: bool = False) -> dict:
     """Run mutmut on one package within the budget; return its counts."""
-    work = scratch_project(package)
+    work = scratch_project(package, keep)
     env = {**os.environ, "HYPOTHESIS_PROFILE": "ci", "NAVCORE_CACHE": "off", "NAVCORE_NO_DISK_CACHE": "1"}
     start = time.monotonic()
     cut = False
@@ -237,6 +242,9 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--max-children", type=int, default=2)
     parser.add_argument("--out", type=Path, default=ROOT / "_build" / "mutation.md")
     parser.add_argument("--report-only", action="store_true", help="tabulate the last runs, run nothing")
+    parser.add_argument(
+        "--keep", action="store_true", help="reuse mutmut's cached verdicts (if the tests did not change)"
+    )
     args = parser.parse_args(argv)
     packages = args.packages or list(PACKAGES)
     rows = []
@@ -246,7 +254,7 @@ def main(argv: list[str] | None = None) -> int:
             r.update(package=package, minutes=0.0, cut=False)
         else:
             print(f"mutation testing navcore.{package} ({args.budget_min:g} min budget)", flush=True)
-            r = run_package(package, args.budget_min, args.max_children)
+            r = run_package(package, args.budget_min, args.max_children, args.keep)
         rows.append(r)
     text = table(rows)
     print(text)
