@@ -163,3 +163,19 @@ def test_quat_from_dcm_half_turns_against_scipy(axis, angle):
     q = fr.quat_from_dcm(R.as_matrix())
     expected = np.roll(R.as_quat(), 1)
     assert abs(float(q @ expected)) == pytest.approx(1.0, abs=1e-12)
+
+
+def test_poles_and_radian_defaults_against_pymap3d():
+    """Oracle: pymap3d (deg=False): a point on the polar axis (p = 0, the division guard of
+    the closed form) has latitude +-90 deg; the NED helpers take radians by default."""
+    for z in (6_356_752.314245 + 100.0, -6_356_752.314245 - 100.0):
+        lat, _, h = fr.ecef_to_geodetic(np.array([0.0, 0.0, z]))
+        assert float(lat) == pytest.approx(np.sign(z) * np.pi / 2, abs=1e-12)
+        assert float(h) == pytest.approx(100.0, abs=1e-6)
+    lat0, lon0, h0 = 0.6, 0.4, 120.0
+    r = fr.geodetic_to_ecef(0.6001, 0.4002, 300.0)
+    n = fr.ecef_to_ned(r, lat0, lon0, h0)
+    np.testing.assert_allclose(n, pymap3d.ecef2ned(*r, lat0, lon0, h0, deg=False), atol=1e-6)
+    np.testing.assert_allclose(fr.ned_to_ecef(n, lat0, lon0, h0), r, atol=1e-6)
+    C = fr.dcm_ecef_to_ned(lat0, lon0)
+    np.testing.assert_allclose(C @ (r - fr.geodetic_to_ecef(lat0, lon0, h0)), n, atol=1e-6)
