@@ -224,3 +224,14 @@ def test_flyby_calibration_and_isotropic_limit():
     rows = fb.pattern_sensitivity((fb.ASSUMED_FLYBY.antenna_zenith_dbic, -5.0))
     assert rows[0]["shortening (min)"] == pytest.approx(0.0, abs=1e-9)
     assert rows[1]["shortening (min)"] > 0.0
+
+
+def test_elevation_gain_linear_and_clipped():
+    """Oracle: the stated pattern by hand: linear in elevation from the horizon gain (0 deg)
+    to the zenith gain (90 deg), held outside [0, 90] deg, elementwise on arrays."""
+    e_deg = np.array([-30.0, 0.0, 30.0, 45.0, 90.0, 120.0])
+    got = jg.elevation_gain_dbi(np.radians(e_deg), 3.0, -5.0)
+    expected = -5.0 + 8.0 * np.clip(e_deg, 0.0, 90.0) / 90.0
+    np.testing.assert_allclose(got, expected, rtol=0, atol=1e-12)
+    assert jg.elevation_gain_dbi(np.radians(60.0), 3.0, -5.0) == pytest.approx(-5.0 + 8.0 * 2 / 3, abs=1e-12)
+    assert isinstance(jg.elevation_gain_dbi(0.3, 3.0, -5.0), float)
