@@ -1,4 +1,4 @@
-"""nox sessions: tests, book (HTML), pdf, figures, lint, ledger, bench.
+"""nox sessions: tests, book (HTML), pdf, figures, lint, ledger, bench, mutation.
 
 Every session installs the full stack from ``requirements/lock.txt`` (a committed
 ``uv pip compile`` lock), then navcore itself without dependencies, so that a build next year
@@ -188,6 +188,21 @@ def bench(session: nox.Session) -> None:
     """
     _install(session)
     session.run("python", "tools/bench.py", *session.posargs)
+
+
+@nox.session
+def mutation(session: nox.Session) -> None:
+    """Mutation testing (mutmut) of the model packages; writes _build/mutation.md.
+
+    ``nox -s mutation`` runs estimation, inertial, gnss, detection, location and frames one
+    after another, each in its own scratch copy under ``_build/mutation/`` with only the test
+    files that exercise it (tools/mutation.py); ``nox -s mutation -- gnss frames`` runs some,
+    ``-- --budget-min 20`` bounds each package's wall-clock time (default 30 min on 2 cores),
+    ``-- --report-only`` tabulates the last runs. A developer's session: ``.ci/run`` does not
+    run it. Equivalent mutants are documented in ``tests/mutation_equivalents.md``.
+    """
+    _install(session)
+    session.run("python", "tools/mutation.py", *session.posargs)
 
 
 if __name__ == "__main__":  # pragma: no cover - convenience

@@ -280,7 +280,7 @@ def ecef_to_geodetic(r_e: ArrayLike, *, deg: bool = False) -> tuple[Array, Array
     V = np.sqrt((p - e2 * r0) ** 2 + (1 - e2) * z * z)
     z0 = b * b * z / (a * V)
     h = U * (1 - b * b / (a * V))
-    lat = np.arctan((z + ep2 * z0) / np.where(p == 0, np.finfo(float).tiny, p))
+    lat = np.arctan2(z + ep2 * z0, p)  # p >= 0; exact +-pi/2 on the polar axis (p = 0)
     lon = np.arctan2(y, x)
     if deg:
         return np.degrees(lat), np.degrees(lon), h

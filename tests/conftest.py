@@ -7,6 +7,15 @@ import os
 import matplotlib
 import numpy as np
 import pytest
+from hypothesis import settings
+
+# Property tests: random exploration on a developer's machine, a fixed example sequence in CI
+# (CI runs .ci/run with CI=true), so that a CI run is reproducible and cannot fail on
+# an example no earlier run saw. HYPOTHESIS_PROFILE=ci selects it by hand. No deadline in
+# CI: the shared runners are too loaded for per-example timing to mean anything.
+settings.register_profile("ci", derandomize=True, deadline=None, print_blob=True)
+settings.register_profile("dev")
+settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci" if os.environ.get("CI") else "dev"))
 
 # Every test computes for itself: the ledger's on-disk evaluation cache is off.
 os.environ["NAVCORE_CACHE"] = "off"

@@ -4,6 +4,9 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from scipy.integrate import trapezoid
+from scipy.optimize import brentq
+from scipy.special import j0
 
 from navcore import units
 from navcore.detection import antenna
@@ -16,11 +19,50 @@ def test_gain_diameter_roundtrip() -> None:
     np.testing.assert_allclose(antenna.dish_diameter(g, 1.6e9, 0.6), d, rtol=1e-14)
 
 
-def test_one_metre_dish_hand_value() -> None:
-    """Oracle: hand computation, lambda = c / 1.6 GHz = 0.18737 m, eta = 0.6."""
-    lam = units.C / 1.6e9
-    assert float(antenna.dish_gain(1.0, 1.6e9, 0.6)) == pytest.approx(0.6 * (np.pi / lam) ** 2, rel=1e-14)
-    assert float(antenna.dish_beamwidth_deg(1.0, 1.6e9)) == pytest.approx(70 * lam, rel=1e-14)
+def _aperture_pattern(u: np.ndarray, taper: int) -> np.ndarray:
+    """Far-field amplitude of a circular aperture with illumination (1 - rho^2)^taper, by
+    quadrature of the Fraunhofer integral int_0^1 f(rho) J0(u rho) rho d rho (u = k a sin theta)."""
+    rho, w = np.polynomial.legendre.leggauss(200)
+    rho, w = 0.5 * (rho + 1.0), 0.5 * w
+    f = (1.0 - rho**2) ** taper
+    return (j0(np.outer(u, rho)) * (f * rho)) @ w
+
+
+def test_dish_gain_from_aperture_diffraction() -> None:
+    """Oracle: directivity 4 pi |E(0)|^2 / int |E|^2 dOmega of a uniformly illuminated circular
+    aperture (Fraunhofer diffraction, forward hemisphere, quadrature), 20 wavelengths across;
+    the dish gain is the aperture efficiency times it (uniform illumination: efficiency 1)."""
+    f_hz = 1.6e9
+    lam = units.C / f_hz
+    d = 20.0 * lam
+    ka = np.pi * d / lam
+    theta = np.linspace(0.0, np.pi / 2, 20_001)
+    e2 = _aperture_pattern(ka * np.sin(theta), 0) ** 2
+    e0 = _aperture_pattern(np.array([0.0]), 0)[0] ** 2
+    omega = 2 * np.pi * trapezoid(e2 * np.sin(theta), theta)
+    directivity = 4 * np.pi * e0 / omega
+    assert float(antenna.dish_gain(d, f_hz, 1.0)) == pytest.approx(directivity, rel=5e-3)
+    assert float(antenna.dish_gain(d, f_hz, 0.6)) == pytest.approx(0.6 * directivity, rel=5e-3)
+
+
+def test_dish_beamwidth_rule_between_uniform_and_tapered_apertures() -> None:
+    """Oracle: half-power widths of the diffraction patterns (quadrature + brentq): a uniform
+    aperture gives 58.9 lambda/D deg, a (1 - rho^2) taper 72.8 lambda/D deg; the rule's 70
+    lambda/D ('tapered illumination') lies between, close to the taper."""
+    f_hz = 1.6e9
+    lam = units.C / f_hz
+    d = 1.0
+
+    def hpbw_factor(taper: int) -> float:
+        e0 = _aperture_pattern(np.array([0.0]), taper)[0]
+        u_half = brentq(lambda u: _aperture_pattern(np.array([u]), taper)[0] ** 2 - 0.5 * e0**2, 0.1, 3.0)
+        return float(np.degrees(2 * u_half / np.pi))  # theta_hp = 2 u / (k a) = (2 u / pi) lambda / D
+
+    lo, hi = hpbw_factor(0), hpbw_factor(1)
+    assert lo == pytest.approx(58.9, abs=0.1) and hi == pytest.approx(72.8, abs=0.1)
+    factor = float(antenna.dish_beamwidth_deg(d, f_hz)) * d / lam
+    assert lo < factor < hi
+    assert factor == pytest.approx(hi, rel=0.05)
 
 
 def test_beamwidth_rules_agree_roughly() -> None:

@@ -3,14 +3,55 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
+from navcore.detection.multiple_access import MultipleAccessNoise
 from navcore.detection.roc_bounds import roc_lower_bound, roc_upper_bound
 from navcore.papers import atc10_multiple_access as m
 
 
-def test_psk_chernoff_bound_never_below_simulated_rate():
-    """Oracle: the stratified Monte Carlo ROC of the physical PSK simulation (4 standard errors)."""
-    assert m.psk_bound_holds()
+def _compound_binomial_exact(values, weights, n_interferers, q, step=1e-4, half_range=4.0):
+    """Exact law of the sum of Binomial(n, q) i.i.d. draws from a point-mass density on a
+    ``step`` grid, by the generating function (1 - q + q phi)^n evaluated with an FFT.
+
+    Independent of the Chernoff/Gallager code and of the stratified Monte Carlo: it uses only
+    the definition of the multiple-access noise (each of n interferers overlaps with
+    probability q and adds an independent amplitude). Returns the grid and the probabilities.
+    """
+    n_grid = round(2 * half_range / step)
+    idx = np.round(np.asarray(values) / step).astype(int)
+    pmf = np.zeros(n_grid)
+    np.add.at(pmf, idx % n_grid, np.asarray(weights) / np.sum(weights))
+    law = np.fft.ifft(np.exp(n_interferers * np.log1p(q * (np.fft.fft(pmf) - 1.0)))).real
+    k = np.arange(n_grid)
+    grid = np.where(k >= n_grid // 2, k - n_grid, k) * step
+    order = np.argsort(grid)
+    return grid[order], law[order]
+
+
+def test_psk_bounds_bracket_exact_roc():
+    """Oracle: the exact ROC of the PSK multiple-access noise from its generating function
+    (FFT on the 1e-4 amplitude grid the density lives on), not the module's Monte Carlo.
+
+    The Chernoff upper bounds (3.5.13) lie above it and the Gallager lower bounds below it at
+    every PSK_BOUND_THETAS threshold; the module's stratified Monte Carlo ROC (the book's and
+    the ledger's) agrees with it within 4 standard errors.
+    """
+    d = m.psk_density()
+    noise = MultipleAccessNoise(m.N_SEC36, m.TAU_OVER_ALPHA_SEC36, d)
+    grid, law = _compound_binomial_exact(d.values, d.weights, noise.n_interferers, noise.q)
+    assert law.sum() == pytest.approx(1.0, abs=1e-12) and law.min() > -1e-13  # FFT round-off
+    th = m.PSK_BOUND_THETAS
+    p_f = np.array([law[grid > t + 1e-9].sum() for t in th])  # false alarm: noise above theta
+    p_miss = np.array([law[grid < t - 1.0 - 1e-9].sum() for t in th])  # miss: 1 + noise below theta
+    ub_f, ub_m = m.psk_chernoff()
+    lb_f, lb_m = roc_lower_bound(noise, th)
+    assert np.all(p_f <= np.exp(ub_f)) and np.all(p_miss <= np.exp(ub_m))
+    assert np.all(np.exp(lb_f) <= p_f) and np.all(np.exp(lb_m) <= p_miss)
+    r = m.psk_roc()
+    idx = [int(np.argmin(np.abs(m.THETA_GRID - t))) for t in th]
+    np.testing.assert_array_less(np.abs(r.p_f[idx] - p_f), 4 * r.p_f_se[idx])
+    np.testing.assert_array_less(np.abs(r.p_miss[idx] - p_miss), 4 * r.p_miss_se[idx])
 
 
 def test_bounds_bracket_actual_roc_at_section_36_values():

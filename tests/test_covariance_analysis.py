@@ -198,6 +198,21 @@ def test_loosely_coupled_gating():
     u = geo.u_ned[20]
     G = np.hstack([-u, np.ones((vis.size, 1))])
     assert m.R == pytest.approx(4.0 * np.linalg.inv(G.T @ G)[:3, :3])
+    # EHE = sigma_UERE * HDOP at the gate: HDOP from the sample covariance of least-squares
+    # solutions (numpy lstsq) to seeded unit-variance range noise, not from (G'G)^-1
+    rng = np.random.default_rng(8)
+    u10 = geo.u_ned[10]
+    G10 = np.hstack([-u10, np.ones((vis.size, 1))])
+    sol = np.linalg.lstsq(G10, rng.standard_normal((vis.size, 200_000)), rcond=None)[0]
+    hdop = np.sqrt(np.var(sol[0]) + np.var(sol[1]))
+    sigma_uere = np.hypot(2.0, 1.5)
+    ehe = sigma_uere * hdop
+    assert 1.0 < ehe < 20.0  # a fix of metres, so the gate below tests the square root
+    for factor, accepted in ((1.02, True), (0.98, False)):
+        gate = loosely_coupled_schedule(
+            lay, geo, code, pseudorange_noise=2.0, pseudorange_bias_sigma=1.5, max_ehe_m=factor * ehe
+        )
+        assert (len(gate(10)) == 1) is accepted, factor
 
 
 def test_embedding_requires_subset():

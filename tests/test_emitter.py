@@ -99,6 +99,24 @@ def test_sensitivity_norms_and_bound(seed):
     assert gp <= 0.5 * position_sensitivity_bound(F0, np.linalg.norm(v), R) * (1 + 1e-12)
 
 
+def test_printed_bound_is_twice_the_attained_maximum():
+    """Oracle: central finite differences of WF Eq. (1) with the velocity across the line of
+    sight, where ||df/dp|| attains its maximum (f0/c)|v|/R: the printed Eq. (9) bound
+    (f0/c) 2|v|/R is exactly twice it (checking only '<=' let a doubled bound pass)."""
+    p, v = np.zeros(3), np.array([0.0, 180.0, -60.0])
+    e = np.array([40_000.0, 0.0, 0.0])  # line of sight along x, v across it
+    f0, h = 1.0, 10.0
+    fd_p = np.array(
+        [
+            (doppler_frequency(f0, e, p + h * d, v) - doppler_frequency(f0, e, p - h * d, v))[0] / (2 * h)
+            for d in np.eye(3)
+        ]
+    )
+    attained = float(np.linalg.norm(fd_p))
+    bound = float(position_sensitivity_bound(f0, np.linalg.norm(v), 40_000.0))
+    assert bound == pytest.approx(2.0 * attained, rel=1e-6)
+
+
 def test_total_differential_is_second_order_accurate():
     """Oracle: WF Eq. (1) evaluated directly; the residual of Eq. (7) falls as the square of the step."""
     p, e, v = np.array([100.0, -300, 8000]), np.array([20000.0, 35000, 0]), np.array([190.0, 40, -3])
@@ -125,8 +143,18 @@ def test_constant_position_error_translates_the_estimate():
 
 
 def test_ratio():
-    """Oracle: arithmetic R / (2 |v|)."""
-    assert velocity_to_position_sensitivity_ratio(200.0, 40_000.0) == pytest.approx(100.0)
+    """Oracle: finite differences of WF Eq. (1): ||df/dv|| over twice the attained maximum of
+    ||df/dp|| (the printed Eq. (9) bound), at |v| = 200 m/s and R = 40 km (100 s)."""
+    p, v, e, f0 = np.zeros(3), np.array([0.0, 200.0, 0.0]), np.array([40_000.0, 0.0, 0.0]), 1.0
+
+    def fd(dp, dv):
+        return (doppler_frequency(f0, e, p + dp, v + dv) - doppler_frequency(f0, e, p - dp, v - dv))[0] / 2
+
+    g_v = np.linalg.norm([fd(0 * d, d) for d in np.eye(3)])
+    g_p = np.linalg.norm([fd(10.0 * d, 0 * d) / 10.0 for d in np.eye(3)])
+    expected = g_v / (2 * g_p)
+    assert expected == pytest.approx(100.0, rel=1e-6)
+    assert velocity_to_position_sensitivity_ratio(200.0, 40_000.0) == pytest.approx(expected, rel=1e-6)
 
 
 def test_gauss_newton_recovers_truth_and_normal_equation():

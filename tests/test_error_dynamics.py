@@ -135,3 +135,61 @@ def test_bad_layout_raises():
         error_dynamics(ins_error_layout("position", "velocity"), f_ned=(0, 0, -G0), C_bn=np.eye(3))
     with pytest.raises(ValueError, match="names must be among"):
         ins_error_layout("wobble")
+
+
+_ATT = (0.3, -0.2, 2.0)  # roll, pitch, yaw: a C_bn that is neither I nor symmetric
+_F_B = np.array([1.5, -0.7, -9.5])  # specific force, body axes (m/s^2)
+_W_B = np.array([0.05, -0.1, 0.2])  # body rate (rad/s)
+_SENSOR_CASES = {
+    "accel bias": np.array([1e-3, -2e-3, 3e-3]),
+    "accel scale factor": np.array([1e-4, -3e-4, 5e-4]),
+    "accel misalignment": np.array([2e-4, -1e-4, 3e-4]),
+    "gyro drift": np.array([1e-5, -2e-5, 3e-5]),
+    "gyro scale factor": np.array([1e-4, -3e-4, 5e-4]),
+    "gyro misalignment": np.array([2e-4, -1e-4, 3e-4]),
+}
+
+
+def _faulty_triad(true_b, block, x):
+    """A sensor triad with one error source, modelled from its physical definition: a bias
+    adds, a scale factor multiplies each axis, an input-axis misalignment mu means the triad
+    measures the components in axes rotated by mu from the body (scipy Rotation)."""
+    from scipy.spatial.transform import Rotation
+
+    kind = block.split()[-1]
+    if kind in ("bias", "drift"):
+        return true_b + x
+    if kind == "factor":
+        return true_b * (1.0 + x)
+    return Rotation.from_rotvec(x).inv().apply(true_b)
+
+
+@pytest.mark.parametrize("block", list(_SENSOR_CASES))
+def test_sensor_couplings_match_strapdown_perturbation(block):
+    """Oracle: one short strapdown step (navcore.inertial.strapdown, quaternion attitude) with
+    a faulty triad against one with perfect sensors, at a non-level, non-north attitude with
+    anisotropic (different per axis) errors: the velocity-error rate and the psi-angle rate
+    (C~_bn = (I - [psi x]) C_bn) equal F x on the velocity and misalignment rows. A transposed
+    C_bn at either coupling site, or an error rotated with the wrong frame, fails this."""
+    from navcore import frames as fr
+    from navcore.inertial.strapdown import NavState, dcm_from_quat_batch, strapdown_step
+
+    lay = ins_error_layout("position", "velocity", "misalignment", block)
+    C = fr.dcm_from_euler(*_ATT)
+    F = error_dynamics(lay, f_ned=C @ _F_B, C_bn=C, omega_ib_b=_W_B, lat=0.7)
+    x = _SENSOR_CASES[block]
+    dt = 1e-5
+    s0 = NavState(np.zeros((1, 3)), np.zeros((1, 3)), fr.quat_from_euler(*_ATT)[None])
+    w_true, f_true = _W_B, _F_B
+    w_bad = _faulty_triad(_W_B, block, x) if block.startswith("gyro") else _W_B
+    f_bad = _faulty_triad(_F_B, block, x) if block.startswith("accel") else _F_B
+    good = strapdown_step(s0, w_true[None], f_true[None], dt)
+    bad = strapdown_step(s0, w_bad[None], f_bad[None], dt)
+    dv_rate = (bad.vel[0] - good.vel[0]) / dt
+    E = dcm_from_quat_batch(bad.quat)[0] @ dcm_from_quat_batch(good.quat)[0].T
+    psi_rate = np.array([E[1, 2] - E[2, 1], E[2, 0] - E[0, 2], E[0, 1] - E[1, 0]]) / 2 / dt
+    Fx = F[:, lay.slice(block)] @ x
+    scale = np.abs(F[:, lay.slice(block)]) @ np.abs(x)
+    np.testing.assert_allclose(Fx[lay.slice("velocity")], dv_rate, rtol=0, atol=2e-3 * scale.max())
+    np.testing.assert_allclose(Fx[lay.slice("misalignment")], psi_rate, rtol=0, atol=2e-3 * scale.max())
+    assert np.abs(Fx[3:9]).max() > 0.2 * scale.max()  # the rows carry the coupling

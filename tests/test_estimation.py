@@ -142,8 +142,27 @@ def test_van_loan_gauss_markov_closed_form():
 
 
 def test_first_order_transition():
-    F = np.array([[0.0, 1.0], [-4.0, 0.0]])
-    np.testing.assert_allclose(first_order_transition(F, 0.1), np.eye(2) + 0.1 * F)
+    """Oracle: scipy.linalg.expm. The first-order transition differs from e^{F dt} by the
+    Taylor remainder F^2 dt^2 / 2 + O(dt^3), so the gap shrinks fourfold per halving of dt
+    and approaches F^2 dt^2 / 2 (an oscillator, a Markov decay and a nilpotent F)."""
+    from scipy.linalg import expm
+
+    for F in (
+        np.array([[0.0, 1.0], [-4.0, 0.0]]),
+        np.array([[-0.5, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 2.0, -1.0]]),
+        np.array([[0.0, 1.0], [0.0, 0.0]]),
+    ):
+        gaps = []
+        for dt in (0.02, 0.01, 0.005):
+            gap = expm(F * dt) - first_order_transition(F, dt)
+            scale = max(np.abs(F @ F).max(), 1e-300)
+            np.testing.assert_allclose(gap, F @ F * dt**2 / 2, atol=scale * dt**2 * 0.1 + 1e-15)
+            gaps.append(np.abs(gap).max())
+        if gaps[0] > 0:
+            assert gaps[0] / gaps[1] == pytest.approx(4.0, rel=0.05)
+            assert gaps[1] / gaps[2] == pytest.approx(4.0, rel=0.05)
+        else:  # F^2 = 0: e^{F dt} = I + F dt exactly
+            np.testing.assert_allclose(first_order_transition(F, 0.3), expm(F * 0.3), atol=1e-15)
 
 
 def test_propagate_covariance_matches_monte_carlo():

@@ -123,3 +123,59 @@ def test_bad_inputs_raise():
         fr.quat_normalize([0.0, 0, 0, 0])
     with pytest.raises(ValueError, match="finite"):
         fr.dcm_from_euler(float("nan"), 0.0, 0.0)
+
+
+def test_quaternion_helpers_batched_against_scipy():
+    """Oracle: scipy Rotation (scalar-last quaternions) for batches of seeded random
+    rotations, tiny rotations (1e-13 rad, the small-angle branch) and quaternions with a
+    negative scalar part: rotation vector, rotated vectors and Euler angles."""
+    rng = np.random.default_rng(12)
+    rv = np.vstack([rng.normal(size=(20, 3)), 1e-13 * rng.normal(size=(5, 3)), [[0.0, 0.0, 0.0]]])
+    R = Rotation.from_rotvec(rv)
+    q = np.roll(R.as_quat(), 1, axis=-1)  # scalar first
+    q[::2] *= -1.0  # the same rotations, negative scalar part
+    np.testing.assert_allclose(fr.rotvec_from_quat(q), rv, rtol=1e-10, atol=1e-22)
+    v = rng.normal(size=(26, 3))
+    np.testing.assert_allclose(fr.quat_rotate(q, v), R.apply(v), atol=1e-12)
+    for qi, Ri in zip(q[:20], R[:20], strict=True):
+        yaw, pitch, roll = Ri.as_euler("ZYX")
+        np.testing.assert_allclose(fr.euler_from_quat(qi), (roll, pitch, yaw), atol=1e-10)
+
+
+def test_ecef_to_geodetic_default_is_radians():
+    """Oracle: pymap3d with deg=False; the keyword default is radians, as for geodetic_to_ecef."""
+    r = fr.geodetic_to_ecef(0.7, -1.2, 350.0)
+    lat, lon, h = fr.ecef_to_geodetic(r)
+    exp = pymap3d.ecef2geodetic(*r, deg=False)
+    np.testing.assert_allclose([lat, lon, h], exp, rtol=0, atol=1e-9)
+
+
+@pytest.mark.parametrize("axis", [0, 1, 2])
+@pytest.mark.parametrize("angle", [np.pi, np.pi - 1e-3, 2.5])
+def test_quat_from_dcm_half_turns_against_scipy(axis, angle):
+    """Oracle: scipy Rotation, for rotations near a half turn about each axis, where the trace
+    is about -1 and each of Shepperd's four branches is needed (w = 0 divides by zero in the
+    trace branch); quaternions agree up to sign."""
+    rv = np.zeros(3)
+    rv[axis] = angle
+    rv += 0.05 * np.eye(3)[(axis + 1) % 3] * (angle != np.pi)
+    R = Rotation.from_rotvec(rv)
+    q = fr.quat_from_dcm(R.as_matrix())
+    expected = np.roll(R.as_quat(), 1)
+    assert abs(float(q @ expected)) == pytest.approx(1.0, abs=1e-12)
+
+
+def test_poles_and_radian_defaults_against_pymap3d():
+    """Oracle: pymap3d (deg=False): a point on the polar axis (p = 0, the division guard of
+    the closed form) has latitude +-90 deg; the NED helpers take radians by default."""
+    for z in (6_356_752.314245 + 100.0, -6_356_752.314245 - 100.0):
+        lat, _, h = fr.ecef_to_geodetic(np.array([0.0, 0.0, z]))
+        assert float(lat) == pytest.approx(np.sign(z) * np.pi / 2, abs=1e-12)
+        assert float(h) == pytest.approx(100.0, abs=1e-6)
+    lat0, lon0, h0 = 0.6, 0.4, 120.0
+    r = fr.geodetic_to_ecef(0.6001, 0.4002, 300.0)
+    n = fr.ecef_to_ned(r, lat0, lon0, h0)
+    np.testing.assert_allclose(n, pymap3d.ecef2ned(*r, lat0, lon0, h0, deg=False), atol=1e-6)
+    np.testing.assert_allclose(fr.ned_to_ecef(n, lat0, lon0, h0), r, atol=1e-6)
+    C = fr.dcm_ecef_to_ned(lat0, lon0)
+    np.testing.assert_allclose(C @ (r - fr.geodetic_to_ecef(lat0, lon0, h0)), n, atol=1e-6)

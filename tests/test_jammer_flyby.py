@@ -107,10 +107,58 @@ def test_pll_jitter_threshold_root():
             return 3.0 * np.degrees(np.sqrt(bn / c * (1 + 1 / (2 * 0.02 * c)))) - 90.0
 
         assert x == pytest.approx(brentq(f, 1e-3, 1e6, xtol=1e-12), rel=1e-9)
-    assert jg.carrier_loss_threshold_dbhz(5.83, 19.0, max_phase_error_deg=90.0) == 19.0
-    assert jg.carrier_loss_threshold_dbhz(5.83, 10.0, max_phase_error_deg=90.0) == pytest.approx(
-        jg.pll_jitter_threshold_dbhz(5.83, 90.0)
-    )
+    assert jg.carrier_loss_threshold_dbhz(5.83, 19.0, 90.0) == 19.0
+    assert jg.carrier_loss_threshold_dbhz(5.83, 10.0) == pytest.approx(jg.pll_jitter_threshold_dbhz(5.83))
+
+
+def _unambiguous_range_deg(discriminator) -> float:
+    """Width (deg) of the phase interval around 0 on which a simulated discriminator returns
+    the true phase error, with random data bits (seed 4) flipping the sign of I and Q."""
+    rng = np.random.default_rng(4)
+    phi = np.radians(np.arange(-179.5, 180.0, 1.0))
+    bits = rng.choice([-1.0, 1.0], size=phi.size)
+    out = discriminator(bits * np.sin(phi), bits * np.cos(phi))
+    good = np.abs(out - phi) < 1e-9
+    return float(np.degrees(phi[good].max() - phi[good].min()) + 1.0)
+
+
+def test_costas_and_pll_thresholds_follow_their_discriminators():
+    """Oracles: (i) simulated discriminators on data-modulated I/Q: the Costas atan(Q/I) is
+    unambiguous over 180 deg whatever the data bit, so its rule of thumb (3 sigma <= a quarter
+    of the pull-in range, Kaplan Sec. 5.6.2) is 45 deg, while atan2(Q, I) (a pure PLL, 360 deg)
+    is wrong whenever the bit is -1, so it needs a data-free signal; (ii) brentq on the jitter
+    formula at 45 and 90 deg. The old default was the pure-PLL 90 deg (15.6 dB-Hz at 5.83 Hz)
+    for data-modulated C/A; the Costas threshold is 20.2 dB-Hz."""
+    costas = _unambiguous_range_deg(lambda q, i: np.arctan(q / i))
+    assert costas == pytest.approx(180.0)
+    assert jg.LOOP_PHASE_LIMIT_DEG["costas"] == costas / 4
+    assert jg.LOOP_PHASE_LIMIT_DEG["pll"] == 360.0 / 4
+    rng = np.random.default_rng(5)
+    phi = rng.uniform(-np.pi, np.pi, 100)
+    bits = -np.ones(100)
+    assert not np.allclose(np.arctan2(bits * np.sin(phi), bits * np.cos(phi)), phi)  # PLL fooled by data
+
+    def root(limit_deg, bn=5.83):
+        return 10 * np.log10(
+            brentq(
+                lambda c: 3.0 * np.degrees(np.sqrt(bn / c * (1 + 1 / (2 * 0.02 * c)))) - limit_deg,
+                1e-3,
+                1e6,
+                xtol=1e-12,
+            )
+        )
+
+    assert jg.pll_jitter_threshold_dbhz(5.83) == pytest.approx(root(45.0), abs=1e-9)
+    assert jg.pll_jitter_threshold_dbhz(5.83, loop="costas") == pytest.approx(root(45.0), abs=1e-9)
+    assert jg.pll_jitter_threshold_dbhz(5.83, loop="pll") == pytest.approx(root(90.0), abs=1e-9)
+    assert jg.carrier_loss_threshold_dbhz(5.83, 19.0) == pytest.approx(
+        root(45.0), abs=1e-9
+    )  # above the floor
+    assert jg.carrier_loss_threshold_dbhz(5.83, 19.0, loop="pll") == 19.0
+    # an explicit (printed) limit overrides the loop's rule
+    assert jg.pll_jitter_threshold_dbhz(5.83, 90.0) == pytest.approx(root(90.0), abs=1e-9)
+    with pytest.raises(ValueError, match="loop"):
+        jg.pll_jitter_threshold_dbhz(5.83, loop="fll")
 
 
 def test_hysteresis_matches_state_machine():
@@ -176,3 +224,14 @@ def test_flyby_calibration_and_isotropic_limit():
     rows = fb.pattern_sensitivity((fb.ASSUMED_FLYBY.antenna_zenith_dbic, -5.0))
     assert rows[0]["shortening (min)"] == pytest.approx(0.0, abs=1e-9)
     assert rows[1]["shortening (min)"] > 0.0
+
+
+def test_elevation_gain_linear_and_clipped():
+    """Oracle: the stated pattern by hand: linear in elevation from the horizon gain (0 deg)
+    to the zenith gain (90 deg), held outside [0, 90] deg, elementwise on arrays."""
+    e_deg = np.array([-30.0, 0.0, 30.0, 45.0, 90.0, 120.0])
+    got = jg.elevation_gain_dbi(np.radians(e_deg), 3.0, -5.0)
+    expected = -5.0 + 8.0 * np.clip(e_deg, 0.0, 90.0) / 90.0
+    np.testing.assert_allclose(got, expected, rtol=0, atol=1e-12)
+    assert jg.elevation_gain_dbi(np.radians(60.0), 3.0, -5.0) == pytest.approx(-5.0 + 8.0 * 2 / 3, abs=1e-12)
+    assert isinstance(jg.elevation_gain_dbi(0.3, 3.0, -5.0), float)

@@ -133,3 +133,38 @@ def test_bad_input_raises():
         beta_parameter(np.ones((2, 3)))
     with pytest.raises(ValueError, match="criterion"):
         most_widely_spaced_triplet(*_geometry(), 90.0, criterion="bogus")
+
+
+@pytest.mark.parametrize("criterion", ["trace", "det", "angle"])
+@pytest.mark.parametrize("cone", [90.0, 60.0, 45.0])
+def test_triplet_every_criterion_brute_force(criterion, cone):
+    """Oracle: an exhaustive search written from the definitions, on seeded random geometries:
+    zenith angles from the spherical local vertical and lines of
+    sight computed with numpy, and the three criteria (smallest tr (F'F)^-1, largest |det F|, largest
+    smallest pairwise angle) with their scores."""
+    import itertools
+
+    rng = np.random.default_rng(13)
+    for _ in range(3):
+        lat_lon = np.column_stack([rng.uniform(-10, 80, 9), rng.uniform(60, 180, 9)])
+        sats = position_on_sphere(lat_lon[:, 0], lat_lon[:, 1], R_RATIO * EARTH_MEAN_RADIUS_M)
+        ac = position_on_sphere(45.0, 120.0, EARTH_MEAN_RADIUS_M)
+        d = ac - sats
+        U = d / np.linalg.norm(d, axis=1)[:, None]
+        up = ac / np.linalg.norm(ac)
+        zenith = np.degrees(np.arccos(np.clip(-U @ up, -1, 1)))
+        inside = [i for i in range(9) if zenith[i] <= cone + 1e-9]
+
+        def score(t, U=U):
+            F = U[list(t)]
+            if criterion == "trace":
+                return np.trace(np.linalg.inv(F.T @ F))
+            if criterion == "det":
+                return -abs(np.linalg.det(F))
+            return -min(np.degrees(np.arccos(F[i] @ F[j])) for i, j in ((0, 1), (0, 2), (1, 2)))
+
+        best = min(itertools.combinations(inside, 3), key=score)
+        tri, value = most_widely_spaced_triplet(sats, ac, cone, criterion)
+        assert tri == best
+        assert value == pytest.approx(abs(score(best)), rel=1e-9)
+        np.testing.assert_allclose(zenith_angles_deg(sats, ac), zenith, atol=1e-9)

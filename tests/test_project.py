@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 import re
 from pathlib import Path
 
@@ -31,3 +32,13 @@ def test_top_level_layout():
         "book/_toc.yml",
     ):
         assert (ROOT / name).exists(), name
+
+
+def test_hypothesis_is_derandomised_in_ci():
+    """Oracle: the environment (CI set, or HYPOTHESIS_PROFILE=ci) decides the loaded profile."""
+    from hypothesis import settings
+
+    want_ci = os.environ.get("HYPOTHESIS_PROFILE", "ci" if os.environ.get("CI") else "dev") == "ci"
+    assert settings.default.derandomize is want_ci
+    ci = settings.get_profile("ci")
+    assert ci.derandomize is True and ci.deadline is None

@@ -156,3 +156,80 @@ def test_interval_equals_stepwise():
     np.testing.assert_allclose(s_fast.vel, s.vel, atol=1e-12)
     np.testing.assert_allclose(np.abs(np.sum(s_fast.quat * s.quat, axis=-1)), 1.0, atol=1e-13)
     assert f_n.shape == (n, S, 3)
+
+
+# --- ideal sensors in every mechanisation mode (issue 21, error 1) -------------------------
+
+_MODES = [(er, tr, co) for er in (False, True) for tr in (False, True) for co in (False, True)]
+
+
+def _ideal_sensors_eci(lat, h, v_east, q_bn):
+    """Specific force and body rate of a vehicle flying east along a parallel at constant
+    height, speed and attitude w.r.t. NED, from its motion in inertial space.
+
+    Oracle geometry (independent of the NED mechanization equations): the vehicle moves on a
+    circle of radius rho = (R_E + h) cos(lat) about the polar axis at the inertial rate
+    Omega + v_east / rho. Its inertial acceleration is -(Omega + v/rho)^2 rho e_rho, gravity
+    g = gravitation + Earth's centrifugal Omega^2 rho e_rho along +down, so the specific force
+    is f = -(2 Omega v + v^2 / rho) e_rho - g e_down, with e_rho = [-sin L, 0, -cos L] in NED.
+    The NED frame (and the body, fixed in it) turns at (Omega + v/rho) about the polar axis,
+    e_z = [cos L, 0, -sin L] in NED.
+    """
+    _, R_E = fr.radii_of_curvature(lat)
+    rho = (R_E + h) * np.cos(lat)
+    e_rho = np.array([-np.sin(lat), 0.0, -np.cos(lat)])
+    e_z = np.array([np.cos(lat), 0.0, -np.sin(lat)])
+    f_n = -(2 * OMEGA_EARTH * v_east + v_east**2 / rho) * e_rho + np.array([0.0, 0.0, -G0])
+    w_n = (OMEGA_EARTH + v_east / rho) * e_z
+    C_nb = fr.dcm_from_quat(q_bn).T
+    return C_nb @ w_n, C_nb @ f_n
+
+
+def _ideal_sensors_mode(terms, lat, h, v_east, q_bn):
+    """The sensors a mode's world model attributes to constant NED velocity and attitude.
+
+    Each switched-off term is a rotation or acceleration that world does not have: the
+    body rate is w_in^n of the switched-on rates, the specific force is -g plus the
+    switched-on Coriolis/transport acceleration (the continuous equations of the module
+    docstring with dv/dt = 0 and dq/dt = 0). With every switch on this is the inertial
+    physics of `_ideal_sensors_eci` (checked in the test).
+    """
+    v = np.array([0.0, v_east, 0.0])
+    w_ie = earth_rate_ned(lat)
+    _, R_E = fr.radii_of_curvature(lat)
+    w_en = np.array([v_east / (R_E + h), 0.0, -v_east * np.tan(lat) / (R_E + h)])
+    w_n = terms.earth_rate * w_ie + terms.transport_rate * w_en
+    f_n = np.array([0.0, 0.0, -G0]) + terms.coriolis * np.cross(2 * w_ie + w_en, v)
+    C_nb = fr.dcm_from_quat(q_bn).T
+    return C_nb @ w_n, C_nb @ f_n
+
+
+@pytest.mark.parametrize(("earth", "transport", "coriolis"), _MODES)
+@pytest.mark.parametrize(
+    ("lat_deg", "v_east", "dt", "duration"),
+    [(50.0, 0.0, 1.0, 300.0), (45.0, 250.0, 1.0, 300.0)],
+    ids=["stationary", "flight-east-250mps"],
+)
+def test_ideal_sensors_every_mode_no_drift(earth, transport, coriolis, lat_deg, v_east, dt, duration):
+    """Oracle: constant velocity along a parallel at constant attitude w.r.t. NED solves the
+    continuous mechanization exactly, so ideal sensors must give zero drift at any dt.
+
+    The sensors come from inertial-space geometry (all switches on) or from the mode's own
+    world model (see `_ideal_sensors_mode`). Before the mid-interval attitude included the
+    navigation frame's half-rotation, every mode with a rotating navigation frame drifted:
+    8 to 20 m in 5 min at dt = 1 s (the drift is proportional to dt).
+    """
+    lat, h = lat_deg * DEG, 3000.0
+    terms = MechanizationTerms(earth_rate=earth, transport_rate=transport, coriolis=coriolis, lat0=lat, h0=h)
+    q_bn = fr.quat_from_euler(0.1, -0.05, 1.2)  # a non-level attitude, fixed w.r.t. NED
+    w_b, f_b = _ideal_sensors_mode(terms, lat, h, v_east, q_bn)
+    if earth and transport and coriolis:
+        w_eci, f_eci = _ideal_sensors_eci(lat, h, v_east, q_bn)
+        np.testing.assert_allclose(w_b, w_eci, rtol=1e-12, atol=1e-20)
+        np.testing.assert_allclose(f_b, f_eci, rtol=1e-12, atol=1e-15)
+    s0 = NavState(np.zeros((1, 3)), np.array([[0.0, v_east, 0.0]]), q_bn[None])
+    n = round(duration / dt)
+    s = _run(s0, w_b[None], f_b[None], dt, n, terms)
+    np.testing.assert_allclose(s.pos[0], [0.0, v_east * n * dt, 0.0], rtol=0, atol=1e-6)
+    np.testing.assert_allclose(s.vel[0], [0.0, v_east, 0.0], rtol=0, atol=1e-9)
+    assert abs(float(np.sum(s.quat[0] * q_bn))) == pytest.approx(1.0, abs=1e-13)

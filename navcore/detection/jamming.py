@@ -219,7 +219,7 @@ def list_rule_exponent(t: ArrayLike, q: ArrayLike) -> FloatArray:
     Examples
     --------
     >>> round(float(list_rule_exponent(0.0, 0.5)), 12)
-    0.693147180560
+    0.69314718056
     """
     tt = as_finite_array("t", t)
     qq = as_finite_array("q", q)

@@ -87,7 +87,6 @@ __all__ = [
     "discrete_noise",
     "doppler_schedule",
     "embedding",
-    "horizontal_sigma",
     "lock_table",
     "loosely_coupled_schedule",
     "run_covariance_analysis",
@@ -155,13 +154,6 @@ class CovarianceAnalysis:
     def at(self, time: float) -> int:
         """Index of the sample closest to ``time``."""
         return int(np.argmin(np.abs(self.t - time)))
-
-
-def horizontal_sigma(P: ArrayLike, layout: StateLayout, block: str = "position") -> float:
-    """rss 1-sigma of the north and east components of ``block`` in covariance ``P``."""
-    P = np.asarray(P, dtype=float)
-    i = layout.slice(block).start
-    return float(np.sqrt(max(P[i, i] + P[i + 1, i + 1], 0.0)))
 
 
 @implements("SP Sec. 2.6")
@@ -593,6 +585,12 @@ def tightly_coupled_schedule(
     through the clock's g-sensitivity state, consistently with the clock-bias dynamics.
 
     Rows (truth layout): ``d rho = -u . dr + db + b_pr[c]``, ``d rho_dot = -u . dv + d(b_dot) + b_rr[c]``.
+
+    ``pseudorange_noise`` is the 1-sigma white pseudorange noise in metres and
+    ``range_rate_noise`` the 1-sigma white range-rate noise in m/s, per measurement (the
+    diagonal of R is their squares); ``u`` is the NED line-of-sight unit vector to the
+    satellite, ``dr`` (m) and ``dv`` (m/s) the NED position and velocity errors, ``db`` the
+    clock bias error (m) and ``d(b_dot)`` the clock drift error (m/s).
     """
     require_positive("pseudorange_noise", pseudorange_noise)
     require_positive("range_rate_noise", range_rate_noise)

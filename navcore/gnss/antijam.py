@@ -164,18 +164,51 @@ def free_space_js_db(
 def code_tracking_sigma_chips(
     cn0_dbhz: ArrayLike, spacing_chips: float = 0.5, integration_s: float = 1.0, coherent_s: float = 0.02
 ) -> Array | float:
-    """1-sigma code-phase error (chips) of an early-minus-late power discriminator.
+    r"""1-sigma code-phase error (chips) of a noncoherent early-minus-late power DLL.
 
-    :math:`\\sigma^2 = \\frac{d}{2\\,(C/N_0)\\,T}\\big[1 + \\frac{2}{(2-d)(C/N_0)T_c}\\big]`
-    (Kaplan Eq. 5.81 with :math:`B_n = 1/(2T)`), T the measurement interval and T_c the
-    coherent integration time.
+    .. math::
+
+        \sigma^2 = \frac{B_n d}{2\,C/N_0}\Big[1 + \frac{2}{(2-d)\,(C/N_0)\,T_c}\Big]
+        = \frac{d}{4\,(C/N_0)\,T}\Big[1 + \frac{2}{(2-d)\,(C/N_0)\,T_c}\Big]
+        \ \text{chips}^2
+
+    (Kaplan Eq. 5.81, infinite front-end bandwidth, with :math:`B_n = 1/(2T)`, the noise
+    bandwidth of an average over the measurement interval :math:`T`).
+
+    Derivation (unit chip, triangle correlation): the complex correlators over one coherent
+    interval :math:`T_c` are :math:`E = a R(\tau - d/2) + n_E`, :math:`L = a R(\tau + d/2) + n_L`
+    with :math:`a^2/\sigma_c^2 = (C/N_0) T_c` (:math:`\sigma_c^2` the complex noise variance
+    of each) and noise correlation :math:`1 - d`. At :math:`\tau = 0`,
+    :math:`D = |E|^2 - |L|^2 = 2\,\mathrm{Re}(S^*(n_E - n_L)) + |n_E|^2 - |n_L|^2` with
+    :math:`S = a(1 - d/2)`, so :math:`\mathrm{var}\,D = 4|S|^2\sigma_c^2 d
+    + 2\sigma_c^4 d(2-d)`; the gain is :math:`\partial D/\partial\tau = 4a^2(1-d/2)`. Their
+    ratio is :math:`\frac{d}{4 (C/N_0) T_c}[1 + \frac{2}{(2-d)(C/N_0)T_c}]`, and averaging
+    :math:`T/T_c` independent intervals divides it by :math:`T/T_c`. An earlier version had
+    :math:`d/(2\,(C/N_0)\,T)`, twice this variance (``tests/test_antijam.py`` checks the
+    formula against a simulation of sampled correlators).
+
+    Parameters
+    ----------
+    cn0_dbhz : array_like
+        Carrier-to-noise density (dB-Hz).
+    spacing_chips : float
+        Early-late correlator spacing :math:`d` (chips), ``0 < d < 2``.
+    integration_s : float
+        Measurement (averaging) interval :math:`T` (s); :math:`B_n = 1/(2T)`.
+    coherent_s : float
+        Coherent integration time :math:`T_c` (s) of each correlator output.
+
+    Returns
+    -------
+    float or ndarray
+        Code-phase error standard deviation (chips).
     """
     require_positive("spacing_chips", spacing_chips)
     require_positive("integration_s", integration_s)
     require_positive("coherent_s", coherent_s)
     cn0 = 10.0 ** (as_finite_array("cn0_dbhz", cn0_dbhz) / 10.0)
     var = (
-        spacing_chips / (2.0 * cn0 * integration_s) * (1.0 + 2.0 / ((2.0 - spacing_chips) * cn0 * coherent_s))
+        spacing_chips / (4.0 * cn0 * integration_s) * (1.0 + 2.0 / ((2.0 - spacing_chips) * cn0 * coherent_s))
     )
     out = np.sqrt(var)
     return float(out) if out.ndim == 0 else out
@@ -196,8 +229,10 @@ class NavigatorErrorModel:
 
     Attributes
     ----------
-    accel_bias, accel_tau_s : Markov accelerometer bias stability and time constant.
-    gyro_bias, gyro_tau_s : Markov gyro bias stability (rad/s) and time constant.
+    accel_bias, accel_tau_s : Markov accelerometer bias stability (m/s^2, 1 sigma,
+        stationary) and its correlation time (s).
+    gyro_bias, gyro_tau_s : Markov gyro bias stability (rad/s, 1 sigma, stationary) and its
+        correlation time (s).
     accel_vrw : velocity random walk, m/s/sqrt(s).
     gyro_arw : angle random walk, rad/sqrt(s).
     nonorthogonality : fixed axis nonorthogonality (rad); times g it is a constant bias.

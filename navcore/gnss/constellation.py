@@ -30,7 +30,6 @@ from navcore._validate import (
     check_public,
     require_in_range,
     require_integer,
-    require_positive,
 )
 from navcore.frames import dcm_ecef_to_ned, geodetic_to_ecef
 from navcore.units import DEG, OMEGA_EARTH
@@ -40,9 +39,7 @@ __all__ = [
     "GPS_INCLINATION_RAD",
     "GPS_SEMI_MAJOR_AXIS_M",
     "Constellation",
-    "dop",
     "elevation_azimuth",
-    "geometry_matrix",
     "line_of_sight",
     "nominal_gps_constellation",
     "visible",
@@ -165,33 +162,6 @@ def visible(
     r_user = geodetic_to_ecef(lat, lon, h)
     el, _ = elevation_azimuth(r_user, constellation.positions_ecef(t), lat, lon)
     return el >= mask_deg * DEG
-
-
-def geometry_matrix(u: ArrayLike) -> NDArray[np.float64]:
-    """Pseudorange geometry matrix ``G = [-u, 1]`` (N x 4) for position and clock bias."""
-    u = as_finite_array("u", u, ndim=2)
-    return np.hstack([-u, np.ones((u.shape[0], 1))])
-
-
-def dop(u_ned: ArrayLike) -> dict[str, float]:
-    """Dilution of precision from NED unit vectors (N >= 4): GDOP, PDOP, HDOP, VDOP, TDOP."""
-    u_ned = as_finite_array("u_ned", u_ned, ndim=2)
-    if u_ned.shape[0] < 4 or u_ned.shape[1] != 3:
-        raise ValueError(f"u_ned must have shape (N, 3) with N >= 4 satellites for DOP, got {u_ned.shape}")
-    G = geometry_matrix(u_ned)
-    try:
-        Qm = np.linalg.inv(G.T @ G)
-    except np.linalg.LinAlgError:
-        raise ValueError("u_ned: the geometry is singular (the lines of sight do not span 3-D)") from None
-    d = np.diag(Qm)
-    require_positive("diag((G'G)^-1)", d)
-    return {
-        "GDOP": float(np.sqrt(d.sum())),
-        "PDOP": float(np.sqrt(d[:3].sum())),
-        "HDOP": float(np.sqrt(d[:2].sum())),
-        "VDOP": float(np.sqrt(d[2])),
-        "TDOP": float(np.sqrt(d[3])),
-    }
 
 
 # Every public function checks its arguments against their annotations (finite numbers,

@@ -41,6 +41,18 @@ a stated C/N0 floor and the C/N0 at which :math:`k` times its thermal phase jitt
 reaches the allowed phase error :math:`\phi_{max}`; that C/N0 is the positive root of
 :math:`(\phi_{max}/k)^2 x^2 - B_n x - B_n/(2T) = 0`.
 
+The allowed phase error depends on the loop's discriminator (Kaplan Sec. 5.6.2, rule of thumb
+:math:`3\sigma \le` a quarter of the discriminator's pull-in range): a *pure PLL*
+(``atan2``, pull-in :math:`\pm 180^\circ`, only for a data-free pilot or data-wiped signal)
+keeps :math:`3\sigma_\phi \le 90^\circ`; a *Costas loop* (``atan(Q/I)``, insensitive to the
+data bits, pull-in :math:`\pm 90^\circ`), which a data-modulated signal such as L1 C/A or
+P(Y) needs, keeps :math:`3\sigma_\phi \le 45^\circ`. At :math:`B_n = 5.83` Hz and
+:math:`T = 20` ms the thresholds are 15.6 and 20.2 dB-Hz. The functions below take the loop
+type explicitly (``loop="costas"`` by default). SP Sec. 2.5 prints "carrier phase error
+exceeded 90 deg", the pure-PLL rule, and :mod:`navcore.papers.sp_flyby` reproduces that
+printed value (``max_phase_error_deg=90``); a Costas loop would put the loosely coupled
+5.83 Hz loop's jitter threshold (20.2 dB-Hz) above the printed 19 dB-Hz floor.
+
 References
 ----------
 .. [SP] G. T. Schmidt and R. E. Phillips, "INS/GPS Integration Architecture Performance
@@ -69,6 +81,7 @@ from navcore._validate import (
 from navcore.trace import implements
 
 __all__ = [
+    "LOOP_PHASE_LIMIT_DEG",
     "LockThresholds",
     "carrier_loss_threshold_dbhz",
     "effective_cn0_with_jammer_dbhz",
@@ -243,22 +256,54 @@ def elevation_gain_dbi(elevation_rad: ArrayLike, zenith_dbi: float, horizon_dbi:
     return _out(horizon_dbi + (zenith_dbi - horizon_dbi) * e / (np.pi / 2))
 
 
+#: Allowed 1-sigma-times-k phase error (deg) of each carrier-loop type (Kaplan Sec. 5.6.2).
+LOOP_PHASE_LIMIT_DEG = {"pll": 90.0, "costas": 45.0}
+
+
+def _phase_limit_deg(loop: str, max_phase_error_deg: float | None) -> float:
+    if loop not in LOOP_PHASE_LIMIT_DEG:
+        raise ValueError(f"loop must be one of {sorted(LOOP_PHASE_LIMIT_DEG)}, got {loop!r}")
+    if max_phase_error_deg is None:
+        return LOOP_PHASE_LIMIT_DEG[loop]
+    return require_positive("max_phase_error_deg", max_phase_error_deg)
+
+
 def pll_jitter_threshold_dbhz(
     noise_bandwidth_hz: ArrayLike,
-    max_phase_error_deg: float = 90.0,
+    max_phase_error_deg: float | None = None,
     k_sigma: float = 3.0,
     coherent_s: float = 0.02,
+    *,
+    loop: str = "costas",
 ) -> Array | float:
-    """C/N0 (dB-Hz) at which ``k_sigma`` times the PLL thermal jitter equals ``max_phase_error_deg``.
+    """C/N0 (dB-Hz) at which ``k_sigma`` times the carrier loop's thermal jitter equals the
+    allowed phase error.
 
     Positive root of ``a x^2 - Bn x - Bn/(2T) = 0`` with ``a = (phi_max/k)^2`` (rad^2).
 
+    Parameters
+    ----------
+    noise_bandwidth_hz : array_like
+        Carrier-loop noise bandwidth :math:`B_n` (Hz).
+    max_phase_error_deg : float, optional
+        Allowed phase error (deg); default: the rule of ``loop`` (45 deg for a Costas loop,
+        90 deg for a pure PLL). A value given here overrides the rule (e.g. a printed one).
+    k_sigma : float
+        Multiple of the 1-sigma jitter that must stay within the allowed error.
+    coherent_s : float
+        Coherent integration (predetection) time :math:`T` (s).
+    loop : {"costas", "pll"}
+        Loop type: ``"costas"`` for a data-modulated signal (L1 C/A, P(Y)), ``"pll"`` for a
+        pure PLL on a data-free signal.
+
     Examples
     --------
-    >>> round(float(pll_jitter_threshold_dbhz(5.83)), 2)
+    >>> round(float(pll_jitter_threshold_dbhz(5.83)), 2)  # Costas loop, 3 sigma <= 45 deg
+    20.22
+    >>> round(float(pll_jitter_threshold_dbhz(5.83, loop="pll")), 2)  # 3 sigma <= 90 deg
     15.57
     """
-    require_positive("max_phase_error_deg", max_phase_error_deg)
+    max_phase_error_deg = _phase_limit_deg(loop, max_phase_error_deg)
     require_positive("k_sigma", k_sigma)
     require_positive("coherent_s", coherent_s)
     bn = require_positive("noise_bandwidth_hz", as_finite_array("noise_bandwidth_hz", noise_bandwidth_hz))
@@ -271,13 +316,17 @@ def pll_jitter_threshold_dbhz(
 def carrier_loss_threshold_dbhz(
     noise_bandwidth_hz: ArrayLike,
     floor_dbhz: float,
-    *,
-    max_phase_error_deg: float,
+    max_phase_error_deg: float | None = None,
     k_sigma: float = 3.0,
     coherent_s: float = 0.02,
+    *,
+    loop: str = "costas",
 ) -> Array | float:
-    """Carrier-loop loss threshold: the larger of a C/N0 floor and the jitter threshold."""
-    jit = np.asarray(pll_jitter_threshold_dbhz(noise_bandwidth_hz, max_phase_error_deg, k_sigma, coherent_s))
+    """Carrier-loop loss threshold (dB-Hz): the larger of a C/N0 floor and the jitter threshold
+    of :func:`pll_jitter_threshold_dbhz` for the given ``loop`` (``"costas"`` or ``"pll"``)."""
+    jit = np.asarray(
+        pll_jitter_threshold_dbhz(noise_bandwidth_hz, max_phase_error_deg, k_sigma, coherent_s, loop=loop)
+    )
     return _out(np.maximum(as_finite_array("floor_dbhz", floor_dbhz), jit))
 
 

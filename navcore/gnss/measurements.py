@@ -1,4 +1,4 @@
-r"""Pseudorange and pseudorange-rate (delta-range) measurement models and Jacobians.
+r"""Pseudorange and pseudorange-rate (delta-range) measurement models.
 
 .. math::
 
@@ -10,9 +10,14 @@ with user position :math:`r` and velocity :math:`v`, satellite :math:`i` positio
 :math:`r_i` and velocity :math:`v_i`, clock bias :math:`b` and drift :math:`\dot b` in metres
 and metres per second. Any frame may be used as long as all vectors share it (ECEF for
 physics; the Jacobian rows can be rotated into NED with ``C_en``). Earth rotation during
-signal transit (Sagnac) is neglected; it changes a row by less than 1e-6.
+signal transit (Sagnac) is neglected: over the 0.067-0.086 s transit the Earth turns by
+:math:`\omega_{ie}\tau` up to about 6.5e-6 rad, which moves the range by
+:math:`\omega_{ie}(x_i y - y_i x)/c`, up to a few tens of metres, so these models are for
+error (Jacobian) analysis, not for positioning from real ECEF ephemerides.
 
-Jacobians (with respect to :math:`r, b` and :math:`v, \dot b`):
+Their Jacobians (with respect to :math:`r, b` and :math:`v, \dot b`), which the error models'
+measurement rows implement (:mod:`navcore.inertial.error_model17`, checked against finite
+differences of these functions in ``tests/test_error_model17.py``):
 
 .. math::
 
@@ -36,9 +41,7 @@ from navcore._validate import as_finite_array, check_public
 
 __all__ = [
     "pseudorange",
-    "pseudorange_jacobian",
     "pseudorange_rate",
-    "pseudorange_rate_jacobian",
 ]
 
 Array = NDArray[np.float64]
@@ -69,26 +72,6 @@ def pseudorange_rate(
     u = d / np.linalg.norm(d, axis=-1, keepdims=True)
     dv = _sat("v_sat", v_sat) - as_finite_array("v_user", v_user)
     return np.einsum("ij,ij->i", u, dv) + clock_drift_mps
-
-
-def pseudorange_jacobian(r_user: ArrayLike, r_sat: ArrayLike) -> Array:
-    """Rows ``[d rho/d r (1x3), d rho/d b]`` for each satellite: shape ``(N, 4)``."""
-    d = _sat("r_sat", r_sat) - as_finite_array("r_user", r_user)
-    u = d / np.linalg.norm(d, axis=-1, keepdims=True)
-    return np.hstack([-u, np.ones((u.shape[0], 1))])
-
-
-def pseudorange_rate_jacobian(
-    r_user: ArrayLike, v_user: ArrayLike, r_sat: ArrayLike, v_sat: ArrayLike
-) -> Array:
-    """Rows ``[d/d r (1x3), d/d v (1x3), d/d b_dot]`` for each satellite: shape ``(N, 7)``."""
-    d = _sat("r_sat", r_sat) - as_finite_array("r_user", r_user)
-    rng = np.linalg.norm(d, axis=-1, keepdims=True)
-    u = d / rng
-    dv = _sat("v_sat", v_sat) - as_finite_array("v_user", v_user)
-    # d(u . dv)/dr = -(dv - (u.dv) u)^T / |d|
-    proj = dv - np.einsum("ij,ij->i", u, dv)[:, None] * u
-    return np.hstack([-proj / rng, -u, np.ones((u.shape[0], 1))])
 
 
 # Every public function checks its arguments against their annotations (finite numbers,

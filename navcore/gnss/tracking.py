@@ -145,6 +145,20 @@ def third_order_loop_jerk_error(t_s: ArrayLike, jerk: float, omega0: float) -> A
     """Tracking error of the third-order loop after a jerk starts at t = 0 (input J t^3/6).
 
     The inverse Laplace transform of :math:`J/(s D(s))`; it settles at :math:`J/\\omega_0^3`.
+
+    Parameters
+    ----------
+    t_s : array_like
+        Time since the jerk started, s (>= 0).
+    jerk : float
+        Jerk in phase units per s^3 (deg/s^3 gives degrees; m/s^3 gives metres).
+    omega0 : float
+        Natural frequency, rad/s.
+
+    Returns
+    -------
+    float or ndarray
+        Error in the units of ``jerk`` times s^3 (degrees or metres as above).
     """
     require_positive("omega0", omega0)
     t = as_finite_array("t_s", t_s)
@@ -159,6 +173,22 @@ def jerk_pulse_error(t_s: ArrayLike, jerk: float, duration_s: float, omega0: flo
     """Error for a jerk lasting ``duration_s`` (acceleration ramps to ``jerk*duration_s``, then holds).
 
     By linearity: the jerk response minus the same response delayed by the duration.
+
+    Parameters
+    ----------
+    t_s : array_like
+        Time since the jerk started, s (>= 0).
+    jerk : float
+        Jerk in phase units per s^3 (deg/s^3 gives degrees; m/s^3 gives metres).
+    duration_s : float
+        How long the jerk lasts, s (>= 0).
+    omega0 : float
+        Natural frequency, rad/s.
+
+    Returns
+    -------
+    float or ndarray
+        Error in the units of ``jerk`` times s^3 (degrees or metres as above).
     """
     require_nonnegative("duration_s", duration_s)
     t = as_finite_array("t_s", t_s)

@@ -63,7 +63,7 @@ def levelling(
     --------
     >>> roll, pitch = levelling([0.0, 0.0, -9.81])
     >>> float(roll), float(pitch)
-    (0.0, 0.0)
+    (-0.0, 0.0)
     """
     f = as_finite_array("f_b", f_b)
     if f.shape[-1] != 3:

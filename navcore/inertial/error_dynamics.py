@@ -85,7 +85,6 @@ __all__ = [
     "GaussMarkov",
     "earth_rate_ned",
     "error_dynamics",
-    "gauss_markov_rate",
     "gyrocompass_alignment",
     "initial_covariance",
     "ins_error_layout",
@@ -134,14 +133,6 @@ class GaussMarkov:
     def __post_init__(self) -> None:
         require_nonnegative("GaussMarkov.sigma", self.sigma)
         require_positive("GaussMarkov.distance_constant_m", self.distance_constant_m)
-
-
-@implements("SP Table 2.4")
-def gauss_markov_rate(distance_constant_m: float, speed_mps: float) -> float:
-    """Inverse time constant ``beta = |v| / d`` (1/s) of a distance-correlated process."""
-    require_nonnegative("speed_mps", speed_mps)
-    require_positive("distance_constant_m", distance_constant_m)
-    return float(speed_mps / distance_constant_m)
 
 
 @dataclass(frozen=True)

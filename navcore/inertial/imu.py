@@ -111,7 +111,7 @@ def velocity_random_walk_m_per_s_per_sqrt_h(root_psd_micro_g_per_sqrt_hz: float)
     Examples
     --------
     >>> round(velocity_random_walk_m_per_s_per_sqrt_h(56.0), 4)
-    0.0330
+    0.033
     """
     require_nonnegative("root_psd_micro_g_per_sqrt_hz", root_psd_micro_g_per_sqrt_hz)
     return root_psd_micro_g_per_sqrt_hz * MICRO_G * 60.0
@@ -142,8 +142,8 @@ def imu_spec_from_published(
     ...     accel_misalignment_arcsec=0, accel_random_walk_micro_g_per_sqrt_hz=0,
     ...     gyro_bias_deg_per_h=0.01, gyro_scale_factor_ppm=0, gyro_misalignment_arcsec=0,
     ...     gyro_random_walk_deg_per_h_per_sqrt_hz=0)
-    >>> round(s.accel_bias, 8), round(s.gyro_bias * 180 / 3.141592653589793 * 3600, 6)
-    (0.00098067, 0.01)
+    >>> round(s.accel_bias, 9), round(s.gyro_bias * 180 / 3.141592653589793 * 3600, 6)
+    (0.000980665, 0.01)
     """
     return ImuSpec(
         name=name,

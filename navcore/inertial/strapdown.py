@@ -16,8 +16,19 @@ is the paper's simplified low-cost mechanization: flat, non-rotating Earth,
 :math:`\dot q = \frac12 q \otimes [0,\omega_{ib}^b]` (KZL Eq. 9, right-most form). The Coriolis
 switch includes the centripetal transport term :math:`\omega_{en}\times v`.
 
-Position is kept in metres in the NED tangent frame at a fixed origin; the latitude and
-height needed for Earth rate and transport rate are taken from that position.
+Position is kept in metres relative to a fixed origin, as curvilinear NED coordinates:
+``pos[0]`` and ``pos[1]`` are the north and east *distances travelled over the Earth* (the
+time integrals of :math:`v_N` and :math:`v_E`, i.e. arc lengths, not coordinates in a
+tangent plane) and ``-pos[2]`` is the height gained. The velocity is resolved in the local
+NED frame that moves with the vehicle. The latitude and height needed for Earth rate and
+transport rate follow from ``lat = lat0 + pos[0] / (R_N(lat0) + h)`` and
+``h = h0 - pos[2]``. Gravity is the constant ``terms.gravity`` along +down: there is no
+latitude or height model of gravity (nor of its centripetal part).
+
+When the navigation frame rotates (Earth rate or transport rate switched on), the
+specific force is resolved with the attitude at mid-interval, which includes half of the
+navigation frame's rotation over the interval, :math:`-\tfrac12\omega_{in}^n\Delta t`, as
+well as half of the body increment (Groves Sec. 5.4.2).
 
 All functions take arrays with a leading run axis (``(N, 3)``, ``(N, 4)``) so that Monte
 Carlo runs are advanced together.
@@ -81,7 +92,8 @@ class MechanizationTerms:
 
 @dataclass(frozen=True)
 class NavState:
-    """Position (m, NED from the origin), velocity (m/s, NED) and attitude quaternion ``q_bn``.
+    """Position (m: north and east distance travelled, minus height gained, from the origin),
+    velocity (m/s, NED) and attitude quaternion ``q_bn`` (body to NED).
 
     Each field has a leading run axis: ``pos (N, 3)``, ``vel (N, 3)``, ``quat (N, 4)``.
     """
@@ -165,8 +177,10 @@ def strapdown_step(
     -------
     NavState
         The state at the end of the interval. The attitude update is exact for a constant
-        body rate (``q ⊗ exp(omega dt / 2)``); velocity uses the start-of-interval attitude
-        rotated by half the increment, position is trapezoidal in velocity.
+        body rate (``q ⊗ exp(omega dt / 2)``, then the navigation-frame rotation
+        ``exp(-omega_in dt / 2) ⊗ q``); velocity uses the mid-interval attitude (the start
+        attitude rotated by half the body increment and by half the navigation-frame
+        rotation); position is trapezoidal in velocity.
 
     Examples
     --------
@@ -198,8 +212,12 @@ def strapdown_step(
         if terms.transport_rate:
             w_in = w_in + w_en
         if terms.earth_rate or terms.transport_rate:
-            # n-frame rotation of the navigation frame itself: - 1/2 [0, w_in] ⊗ q
+            # n-frame rotation of the navigation frame itself: - 1/2 [0, w_in] ⊗ q, over the
+            # whole interval for q1 and over its first half for the mid-interval attitude
+            # that resolves the specific force (Groves Sec. 5.4.2/5.5.3: the attitude
+            # averaged over the interval includes -1/2 Omega_in^n dt on the left)
             q1 = quat_multiply_batch(quat_from_rotvec(-w_in * dt), q1)
+            q_mid = quat_multiply_batch(quat_from_rotvec(-0.5 * w_in * dt), q_mid)
     q1 = q1 / np.linalg.norm(q1, axis=-1, keepdims=True)
     # velocity (Eq. 8): specific force rotated with the mid-interval attitude, plus gravity
     C_mid = dcm_from_quat_batch(q_mid)
