@@ -41,13 +41,13 @@ def test_tracking_position_errors_matches_paper_row_and_oracle(example, sigma0):
         inputs["s_123"],
         inputs["beta"],
         sigma0,
-        atc10_tracking.SIGMA_NS,
-        c=atc10_tracking.C_FT_PER_NS,
+        atc10_tracking.IN.sigma_ns,
+        c=atc10_tracking.IN.c_ft_per_ns,
     )
-    assert row == pytest.approx(atc10_tracking.table_4_3_row(inputs, sigma0), rel=1e-12)
-    oracle = _table_4_3_oracle(inputs, sigma0, atc10_tracking.SIGMA_NS, atc10_tracking.C_FT_PER_NS)
+    assert tuple(row) == pytest.approx(atc10_tracking.table_4_3_row(inputs, sigma0), rel=1e-12)
+    oracle = _table_4_3_oracle(inputs, sigma0, atc10_tracking.IN.sigma_ns, atc10_tracking.IN.c_ft_per_ns)
     assert tuple(row) == pytest.approx(oracle, rel=1e-10)
-    assert row.alpha == alpha_parameter(sigma0, atc10_tracking.SIGMA_NS, inputs["beta"])
+    assert row.alpha == alpha_parameter(sigma0, atc10_tracking.IN.sigma_ns, inputs["beta"])
     assert row.psi == pytest.approx(float(psi(row.alpha)))
 
 
@@ -68,7 +68,7 @@ def test_tracking_position_errors_convention_is_a_parameter():
 @pytest.mark.parametrize(("sigma_a", "sigma_t", "n_sat"), [(3e-4, 0.0, 0), (3e-4, 0.01, 3), (1e-3, 0.02, 1)])
 def test_federated_improvement_db_matches_wf(sigma_a, sigma_t, n_sat):
     covs = wf.local_covariances(sigma_a, sigma_t, n_sat)
-    reference = math.hypot(wf.SIGMA_N, sigma_t)
+    reference = math.hypot(wf.IN.sigma_n, sigma_t)
     lib = federated_improvement_db(covs, reference)
     assert lib == pytest.approx(wf.improvement_db(sigma_a, sigma_t, n_sat), abs=1e-12)
     oracle = 20 * math.log10(math.sqrt(minkowski_trace_bound(covs) / 3) / reference)  # WF Eq. (23)

@@ -35,6 +35,7 @@ from navcore.location.clock_tracking import (
     simulate_tracker,
     three_satellite_clock_variance,
     three_satellite_clock_variance_steady,
+    tracking_position_errors,
 )
 from navcore.location.multilateration import (
     EARTH_MEAN_RADIUS_M,
@@ -433,15 +434,18 @@ def table_4_3_row(
     propagate a printed, rounded psi).
     """
     sigma = IN.sigma_ns if sigma is None else sigma
-    b = inputs["beta"]
-    a = alpha_parameter(sigma0, sigma, b)
-    p = float(psi(a)) if psi_value is None else psi_value
-    c = IN.c_ft_per_ns
-    sd0 = c * sigma * math.sqrt(inputs["trace_all"] + inputs["s_all"] / b)
-    sdn = c * sigma * math.sqrt(inputs["trace_all"] + p / b * inputs["s_all"])
-    g1 = (p + 27.0 / 8.0 * a * 2.0 / p) / b
-    sdn1 = c * sigma * math.sqrt(inputs["trace_123"] + g1 * inputs["s_123"])
-    return a, p, sd0, sdn, sdn1
+    row = tracking_position_errors(
+        inputs["trace_all"],
+        inputs["s_all"],
+        inputs["trace_123"],
+        inputs["s_123"],
+        inputs["beta"],
+        sigma0,
+        sigma,
+        c=IN.c_ft_per_ns,
+        psi_value=psi_value,
+    )
+    return tuple(row)
 
 
 def paper_psi(example: str, sigma0_nominal: float) -> float:

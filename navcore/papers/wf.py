@@ -21,6 +21,7 @@ from navcore.estimation.federated import (
     feasible_weights,
     federated_covariance_bound,
     federated_fusion,
+    federated_improvement_db,
     fused_error_covariance,
     gps_doppler_covariance,
     minkowski_trace_bound,
@@ -736,7 +737,9 @@ def sigma_d_bound(sigma_a: float, sigma_t: float, n_sat: int = 0) -> float:
 
 def improvement_db(sigma_a: float, sigma_t: float, n_sat: int = 0) -> float:
     """20 log10(sigma_D / sigma_DN) of Figs. 1-2, dB (negative = improvement)."""
-    return float(20 * np.log10(sigma_d_bound(sigma_a, sigma_t, n_sat) / np.hypot(IN.sigma_n, sigma_t)))
+    return federated_improvement_db(
+        local_covariances(sigma_a, sigma_t, n_sat), float(np.hypot(IN.sigma_n, sigma_t))
+    )
 
 
 def sigma_a_grid(lo: float | None = None, hi: float | None = None, n: int = 31) -> np.ndarray:
