@@ -194,7 +194,6 @@ def _issue_cases() -> list[tuple[str, Any, type[Exception], str]]:
     from navcore.estimation.kalman import kf_predict
     from navcore.estimation.riccati import scalar_riccati_iterate
     from navcore.gnss.acquisition import search_time
-    from navcore.gnss.constellation import dop
     from navcore.gnss.tracking import third_order_noise_bandwidth_hz
     from navcore.location.clock_tracking import gain_recursion, position_mse
     from navcore.location.emitter import emitter_gauss_newton
@@ -204,7 +203,6 @@ def _issue_cases() -> list[tuple[str, Any, type[Exception], str]]:
     return [
         ("p_d=1.2", lambda: jammer_ratio_threshold_db("ambiguous", 0.01, 1.2, 10), ValueError, "p_d"),
         ("search_time(-100, 4)", lambda: search_time(-100, 4), ValueError, "sigma_range_m"),
-        ("dop (5, 2)", lambda: dop(np.ones((5, 2))), ValueError, "u_ned"),
         ("minkowski sizes", lambda: minkowski_trace_bound([np.eye(2), eye]), ValueError, "covariances[1]"),
         ("Q = -I", lambda: kf_predict(np.zeros(3), eye, eye, -eye), ValueError, "Q"),
         ("a3 = b3 = -2", lambda: third_order_noise_bandwidth_hz(1.0, a3=-2, b3=-2), ValueError, "a3"),
