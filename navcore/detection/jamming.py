@@ -83,7 +83,7 @@ class SurveillanceGeometry:
     """System parameters of the satellite multilateration surveillance (ATC-10 Sec. 2).
 
     Every field is required: the paper's scenario is the preset
-    :func:`navcore.papers.atc10_jamming.geometry`, built from its published inputs.
+    ``navcore.papers.atc10_jamming.geometry()``, built from its published inputs.
 
     Parameters
     ----------

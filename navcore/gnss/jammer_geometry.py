@@ -49,7 +49,7 @@ data bits, pull-in :math:`\pm 90^\circ`), which a data-modulated signal such as 
 P(Y) needs, keeps :math:`3\sigma_\phi \le 45^\circ`. At :math:`B_n = 5.83` Hz and
 :math:`T = 20` ms the thresholds are 15.6 and 20.2 dB-Hz. The functions below take the loop
 type explicitly (``loop="costas"`` by default). SP Sec. 2.5 prints "carrier phase error
-exceeded 90 deg", the pure-PLL rule, and :mod:`navcore.papers.sp_flyby` reproduces that
+exceeded 90 deg", the pure-PLL rule, and ``navcore.papers.sp_flyby`` reproduces that
 printed value (``max_phase_error_deg=90``); a Costas loop would put the loosely coupled
 5.83 Hz loop's jitter threshold (20.2 dB-Hz) above the printed 19 dB-Hz floor.
 

@@ -26,7 +26,7 @@ Two rules keep verdicts honest:
   resolves a tolerance: a tolerance or an expected status can therefore never be computed
   from the model (LEDGER.md, "fixed before the value is computed");
 * a function that memoises a result computed from inputs must use :func:`input_cache`
-  (not :func:`functools.cache`), which keys the memo on the values the result read and
+  (not ``functools.cache``), which keys the memo on the values the result read and
   replays those reads, so cached results are recorded and follow overrides.
 
 Example
@@ -488,7 +488,7 @@ def input_cache(fn: F) -> F:
     The first call records the inputs ``fn`` reads; a later call with the same arguments
     returns the stored result only if those inputs still have the same values (overrides
     included), and replays the reads into the caller's recording. Use it instead of
-    :func:`functools.cache` for anything that reads inputs.
+    ``functools.cache`` for anything that reads inputs.
 
     Parameters
     ----------

@@ -603,9 +603,9 @@ class InteractiveLedger:
     HTML: a plain table (readable without JavaScript) with a small inline script that sorts
     by any column, filters by paper, verdict and (when the claims carry it) kind, searches the
     text, and downloads the rows shown as CSV or JSON (the records of
-    :meth:`Evaluation.as_json`, so the download is the command line's JSON). Columns for the
-    optional record fields ``kind`` and ``band`` appear when any claim has them. Below 640 px
-    each row becomes a card. PDF: a compact table without notes.
+    :meth:`~navcore.ledger.core.Evaluation.as_json`, so the download is the command line's
+    JSON). Columns for the optional record fields ``kind`` and ``band`` appear when any claim
+    has them. Below 640 px each row becomes a card. PDF: a compact table without notes.
     """
 
     def __init__(self, evals: Sequence[Evaluation], *, root: str = "") -> None:
