@@ -38,7 +38,7 @@ def test_psk_bounds_bracket_exact_roc():
     the ledger's) agrees with it within 4 standard errors.
     """
     d = m.psk_density()
-    noise = MultipleAccessNoise(m.N_SEC36, m.TAU_OVER_ALPHA_SEC36, d)
+    noise = MultipleAccessNoise(m.IN.n_sec36, m.IN.tau_over_alpha_sec36, d)
     grid, law = _compound_binomial_exact(d.values, d.weights, noise.n_interferers, noise.q)
     assert law.sum() == pytest.approx(1.0, abs=1e-12) and law.min() > -1e-13  # FFT round-off
     th = m.PSK_BOUND_THETAS

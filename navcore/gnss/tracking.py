@@ -307,7 +307,7 @@ def third_order_noise_bandwidth_hz(omega0: float, a3: float = 2.0, b3: float = 2
     >>> round(third_order_noise_bandwidth_hz(6.0), 6)
     5.0
     >>> round(third_order_noise_bandwidth_hz(1.0, a3=1.1, b3=2.4), 4)
-    0.7844
+    0.7845
     """
     require_positive("omega0", omega0)
     require_positive("a3", a3)

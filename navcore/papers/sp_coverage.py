@@ -339,12 +339,13 @@ CLAIMS = [
         unit="statement",
         compute=aj_falls_beyond_100m,
         tolerance=EXACT,
-        expected_status="consistent",
+        expected_status="inconsistent",
         note="A/J improvement at 100 m against 0.95 x the largest CEP both reduced-model curves reach "
         "(towards the free-inertial CEP as power grows). In the reduced model the improvement does "
-        "not fall at the nominal inputs: about 8.7 dB at 100 m, 9.4 dB at 300 m, 9.7 dB at 500 m, and "
-        "larger near the top; it falls only at some corners of the assumed ranges (the band), so the "
-        "agreement rests on the assumptions. The reduced model's deeply integrated navigator keeps "
+        "not fall, neither at the nominal inputs nor at any corner of the assumed ranges: the band "
+        "is false throughout. (With the code-loop jitter twice too large, before the correction of "
+        "the DLL formula, it fell at some corners and the claim was consistent.) "
+        "The reduced model's deeply integrated navigator keeps "
         "lock up to the 65-dB limit and then loses it at once: its CEP curve lacks the gradual "
         "degradation of tracking quality the paper gives as the reason, which is in the unpublished "
         "6-DOF model.",
