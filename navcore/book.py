@@ -385,7 +385,7 @@ def trace_table(paper: str | None = None, index: Any = None, *, root: str | None
                 "; ".join(f.replace("_", "_\u200b") for f in funcs) or "—",
                 "; ".join(t.replace("_", "_\u200b") for t in tests) or "—",
                 "; ".join(t for _, t in pages) or "—",
-                str(len(e.claims)) if e.claims else (f"none: {why}" if why else "—"),
+                str(len(e.claims)) if e.claims else ("none (Coverage)" if why else "—"),
             ]
         )
     return _HtmlLatexTable(head, html_rows, text_rows)

@@ -135,6 +135,18 @@ def summary_text(evals: Sequence[Evaluation]) -> str:
     return "\n".join(lines)
 
 
+def _breakable(text: str) -> str:
+    """``text`` with zero-width spaces after ``-``, ``.``, ``_``, ``,`` and ``/`` inside long
+    tokens, where the printed table may break a claim id or an input name."""
+    out = []
+    for word in str(text).split(" "):
+        if len(word) > 14:
+            for ch in "-._,/":
+                word = word.replace(ch, ch + "\u200b")
+        out.append(word)
+    return " ".join(out)
+
+
 def _fmt(value: Any) -> str:
     from navcore.ledger.render import format_value
 
@@ -245,7 +257,7 @@ def fitted_inputs_frame(evals: Sequence[Evaluation]) -> Any:
             "Parameter": inp.quantity or inp.name.rsplit(".", 1)[-1].replace("_", " "),
             "Value": _fmt(inp.value),
             "Unit": inp.unit,
-            "Fitted to": ", ".join(inp.fitted_to),
+            "Fitted to": _breakable(", ".join(inp.fitted_to)),
             "Reason": inp.reason,
             "Claims reading it": len(readers),
         }
@@ -292,9 +304,10 @@ def convention_inputs_frame(evals: Sequence[Evaluation]) -> Any:
 def sensitivity_frame(evals: Sequence[Evaluation]) -> Any:
     """How far each claim moves across each assumed input's range (computed, one input at a time).
 
-    One row per (assumed input, claim): the claim's value at the low end, at the nominal and
-    at the high end of the range (or at each grid point), its band over all assumed inputs,
-    the printed value and the derived verdict.
+    One row per (assumed input, claim): the claim's value with that input at the low end of
+    its range, at the nominal value and at the high end (the other inputs nominal), the
+    printed value and the derived verdict. The band over all the assumed inputs a claim
+    reads is on the ledger page.
 
     Parameters
     ----------
@@ -304,8 +317,8 @@ def sensitivity_frame(evals: Sequence[Evaluation]) -> Any:
     Returns
     -------
     pandas.DataFrame
-        Columns ``Input``, ``Claim``, ``At low end``, ``At nominal``, ``At high end``,
-        ``Band``, ``Printed`` and ``Verdict``.
+        Columns ``Assumed input / claim``, ``Low end``, ``Nominal``, ``High end``,
+        ``Printed`` and ``Verdict``.
     """
     import pandas as pd
 
@@ -313,6 +326,7 @@ def sensitivity_frame(evals: Sequence[Evaluation]) -> Any:
 
     rows = []
     for inp, readers in _inputs_of(evals, "assumed"):
+        label = inp.quantity or inp.name.rsplit(".", 1)[-1].replace("_", " ")
         for e in readers:
             row = dict(e.sensitivity).get(inp.name)
             if row is None:
@@ -320,17 +334,13 @@ def sensitivity_frame(evals: Sequence[Evaluation]) -> Any:
             unit = e.claim.unit if e.claim.unit != "statement" else ""
             rows.append(
                 {
-                    "Input": inp.quantity or inp.name.rsplit(".", 1)[-1].replace("_", " "),
-                    "Claim": e.claim.id,
-                    "At low end": _fmt(row[0][1]),
-                    "At nominal": _fmt(e.reproduced),
-                    "At high end": _fmt(row[-1][1]),
-                    "Band": "" if e.band is None else f"{_fmt(e.band[0])} to {_fmt(e.band[1])}",
+                    "Assumed input / claim": f"{label}: " + _breakable(e.claim.id),
+                    "Low end": _fmt(row[0][1]),
+                    "Nominal": _fmt(e.reproduced),
+                    "High end": _fmt(row[-1][1]),
                     "Printed": _published(e) + (f" {unit}" if unit else ""),
                     "Verdict": e.status,
                 }
             )
-    return pd.DataFrame(
-        rows,
-        columns=["Input", "Claim", "At low end", "At nominal", "At high end", "Band", "Printed", "Verdict"],
-    )
+    columns = ["Assumed input / claim", "Low end", "Nominal", "High end", "Printed", "Verdict"]
+    return pd.DataFrame(rows, columns=columns)
