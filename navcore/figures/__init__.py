@@ -196,7 +196,7 @@ def tidy_legends(fig: Figure) -> None:
     A legend that covers data points, bars or value labels moves to the corner of its axes
     that covers none; if every corner covers some, it goes below the axes.
     """
-    legends = [(ax, ax.get_legend()) for ax in fig.axes if ax.get_legend() is not None]
+    legends: list[tuple[Any, Any]] = [(ax, ax.get_legend()) for ax in fig.axes if ax.get_legend() is not None]
     if not legends:
         return
     fig.canvas.draw()

@@ -742,11 +742,11 @@ def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
             inputs=inputs,
         )
     band = (min([value, *values]), max([value, *values])) if assumed else None
-    provenances = {i.provenance for i in read}
+    provenances: set[str] = {str(i.provenance) for i in read}
     admissible = bool(assumed) and all(i.admissible for i in assumed)
     status = derive_status(claim, tol, value, values, provenances, admissible)
 
-    common = dict(
+    common: dict[str, Any] = dict(
         status=status,
         tolerance=tol,
         inputs=inputs,
