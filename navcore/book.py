@@ -39,6 +39,7 @@ __all__ = [
     "setup",
     "show_figure",
     "table",
+    "text_table",
 ]
 
 
@@ -190,6 +191,23 @@ def _markdown_table(data: Any) -> str:
 def table(data: Any) -> Table:
     """Show a DataFrame or a formatted ``df.style`` in the HTML and the PDF book alike."""
     return Table(data)
+
+
+def text_table(frame: Any) -> Table:
+    """A DataFrame of mostly text (reasons, names) without its index, read left to right.
+
+    Parameters
+    ----------
+    frame : pandas.DataFrame
+        The table to show.
+
+    Returns
+    -------
+    Table
+        The table for both builders (HTML from the Styler, the printed table for the PDF).
+    """
+    styler = frame.style.hide(axis="index").set_properties(**{"text-align": "left"})
+    return Table(styler.set_table_styles([{"selector": "th", "props": "text-align: left;"}]))
 
 
 class Markdown:

@@ -17,19 +17,17 @@ from functools import cache
 from pathlib import Path
 from typing import Any
 
-from navcore.ledger.core import KINDS, PAPERS, STATUSES, Claim, Erratum, Evaluation, evaluate
+from navcore.ledger.core import PAPERS, STATUSES, Claim, Erratum, Evaluation, evaluate
 
 __all__ = [
     "cache_dir",
     "claim",
     "claims",
     "counts",
-    "counts_by_kind",
     "errata",
     "erratum",
     "evaluate_claim",
     "evaluations",
-    "inputs_report",
     "paper_modules",
     "validate_registry",
 ]
@@ -301,75 +299,4 @@ def counts(paper: str | None = None) -> dict[str, dict[str, int]]:
             row[e.status] = row.get(e.status, 0) + 1
         row["total"] = sum(v for k, v in row.items())
         out[p] = row
-    return out
-
-
-def counts_by_kind(paper: str | None = None) -> dict[str, dict[str, dict[str, int]]]:
-    """Counts per paper, kind and derived verdict: ``{paper: {kind: {status: n}}}``.
-
-    Parameters
-    ----------
-    paper : str or None, optional
-        Paper key; ``None`` for every paper of :data:`~navcore.ledger.core.PAPERS`.
-
-    Returns
-    -------
-    dict
-        ``{paper: {kind: {status: n}}}`` with every kind of
-        :data:`~navcore.ledger.core.KINDS` and every verdict of
-        :data:`~navcore.ledger.core.STATUSES` present (zero when none), as LEDGER.md
-        ("Kinds", "Verdicts, as the ledger derives them") defines them.
-
-    Raises
-    ------
-    ValueError
-        If ``paper`` is not a paper key.
-    """
-    papers = [paper] if paper else list(PAPERS)
-    out: dict[str, dict[str, dict[str, int]]] = {}
-    for p in papers:
-        table = {k: {s: 0 for s in STATUSES} for k in KINDS}
-        for e in evaluations(p):
-            table[e.kind][e.status] = table[e.kind].get(e.status, 0) + 1
-        out[p] = table
-    return out
-
-
-def inputs_report(paper: str | None = None) -> list[dict[str, Any]]:
-    """Every assumed, fitted and convention input with the claims that read it and how far each moves.
-
-    Each entry: ``input`` (the :class:`~navcore.ledger.inputs.Input`), ``claims`` (ids of
-    the claims whose computation read it) and ``moves`` (for an assumed input, per claim the
-    values at the ends of its range: ``[(claim_id, nominal, ((point, value), ...)), ...]``).
-
-    Parameters
-    ----------
-    paper : str or None, optional
-        Paper key; ``None`` for every paper.
-
-    Returns
-    -------
-    list of dict
-        One entry per non-``published`` input (LEDGER.md, "Provenance of an input"), in
-        declaration order, with the keys ``input``, ``claims`` and ``moves`` above.
-
-    Raises
-    ------
-    ValueError
-        If ``paper`` is not a paper key.
-    """
-    from navcore.ledger.inputs import all_inputs
-
-    evals = evaluations(paper)
-    out = []
-    for inp in all_inputs(paper):
-        if inp.provenance == "published":
-            continue
-        readers = [e for e in evals if any(i["name"] == inp.name for i in e.inputs)]
-        moves = []
-        for e in readers:
-            for name, row in e.sensitivity:
-                if name == inp.name:
-                    moves.append((e.claim.id, e.reproduced, row))
-        out.append({"input": inp, "claims": [e.claim.id for e in readers], "moves": moves})
     return out

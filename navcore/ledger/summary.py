@@ -198,6 +198,11 @@ def prose_words_frame() -> Any:
     )
 
 
+def _label(inp: Input) -> str:
+    """What an input is, in words: its quantity, else its attribute name spelled out."""
+    return inp.quantity or inp.name.rsplit(".", 1)[-1].replace("_", " ")
+
+
 def _inputs_of(evals: Sequence[Evaluation], provenance: str) -> list[tuple[Input, list[Evaluation]]]:
     by_id = {e.claim.id: e for e in evals}
     return [(inp, [by_id[i] for i in ids]) for inp, ids in input_readers(evals, provenance)]
@@ -224,7 +229,7 @@ def assumed_inputs_frame(evals: Sequence[Evaluation]) -> Any:
         rows.append(
             {
                 "Paper": inp.paper,
-                "Input": inp.quantity or inp.name.rsplit(".", 1)[-1].replace("_", " "),
+                "Input": _label(inp),
                 "Nominal": _fmt(inp.value),
                 "Range": f"{_fmt(inp.low)} to {_fmt(inp.high)}",
                 "Unit": inp.unit,
@@ -254,7 +259,7 @@ def fitted_inputs_frame(evals: Sequence[Evaluation]) -> Any:
     rows = [
         {
             "Paper": inp.paper,
-            "Parameter": inp.quantity or inp.name.rsplit(".", 1)[-1].replace("_", " "),
+            "Parameter": _label(inp),
             "Value": _fmt(inp.value),
             "Unit": inp.unit,
             "Fitted to": _breakable(", ".join(inp.fitted_to)),
@@ -287,7 +292,7 @@ def convention_inputs_frame(evals: Sequence[Evaluation]) -> Any:
     rows = [
         {
             "Paper": inp.paper,
-            "Convention": inp.quantity or inp.name.rsplit(".", 1)[-1].replace("_", " "),
+            "Convention": _label(inp),
             "Reading used": _fmt(inp.value),
             "Other reading": _fmt(inp.alternative),
             "Unit": inp.unit,
@@ -326,7 +331,7 @@ def sensitivity_frame(evals: Sequence[Evaluation]) -> Any:
 
     rows = []
     for inp, readers in _inputs_of(evals, "assumed"):
-        label = inp.quantity or inp.name.rsplit(".", 1)[-1].replace("_", " ")
+        label = _label(inp)
         for e in readers:
             row = dict(e.sensitivity).get(inp.name)
             if row is None:
