@@ -41,6 +41,7 @@ __all__ = [
     "registry",
     "render",
     "spec",
+    "value_bars",
     "write",
     "write_all",
 ]
@@ -65,6 +66,73 @@ STYLE: dict[str, Any] = {
 def apply_style() -> None:
     """Apply the book's matplotlib style (idempotent)."""
     plt.rcParams.update(STYLE)  # type: ignore[arg-type]  # matplotlib types the keys as literals
+
+
+def value_bars(
+    ax: Any,
+    values: dict[str, float],
+    *,
+    fmt: str = "{:.0f}",
+    printed: dict[str, float] | None = None,
+    printed_label: str = "printed in the paper",
+    colours: dict[str, str] | None = None,
+    legend: dict[str, str] | None = None,
+    log: bool = False,
+) -> None:
+    """Bars of the book's values, each labelled with its value, and the paper's printed values.
+
+    The printed values are black diamonds drawn at the right edge of their bar, so a printed
+    value close to the computed one never strikes through the bar's value label (centred
+    above the bar). The legend is built from explicit handles, so its colours are the bars'.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        Axes to draw on.
+    values : dict of str to float
+        Bar label to the book's value, in drawing order.
+    fmt : str
+        Format of the value labels.
+    printed : dict of str to float, optional
+        Bar label to the value the paper prints (bars without one get no mark).
+    printed_label : str
+        Legend text of the printed marks.
+    colours : dict of str to str, optional
+        Bar label to colour (default: the book's blue for every bar).
+    legend : dict of str to str, optional
+        Colour to legend text, one entry per colour used (default: blue is "this book").
+    log : bool
+        Logarithmic value axis.
+    """
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+
+    labels = list(values)
+    colours = colours or {}
+    bar_colours = [colours.get(k, "tab:blue") for k in labels]
+    width = 0.7
+    ax.bar(range(len(labels)), [values[k] for k in labels], width=width, color=bar_colours)
+    if log:
+        ax.set_yscale("log")
+    for i, k in enumerate(labels):
+        ax.annotate(
+            fmt.format(values[k]),
+            (i, values[k]),
+            ha="center",
+            va="bottom",
+            fontsize=8,
+            xytext=(0, 2),
+            textcoords="offset points",
+        )
+    handles: list[Any] = [Patch(color=c, label=t) for c, t in (legend or {"tab:blue": "this book"}).items()]
+    if printed:
+        xs = [i + width / 2 for i, k in enumerate(labels) if k in printed]
+        ys = [printed[k] for k in labels if k in printed]
+        ax.plot(xs, ys, "D", color="k", ms=6, ls="none", zorder=3)
+        handles.append(Line2D([], [], marker="D", color="k", ls="none", ms=6, label=printed_label))
+    ax.set_xticks(range(len(labels)), labels, rotation=20)
+    ax.margins(y=0.12)
+    ax.legend(handles=handles, loc="upper right", fontsize=8)
 
 
 @dataclass(frozen=True)

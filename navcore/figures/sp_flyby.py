@@ -3,10 +3,9 @@
 from __future__ import annotations
 
 import matplotlib.pyplot as plt
-import numpy as np
 from matplotlib.figure import Figure
 
-from navcore.figures import register
+from navcore.figures import register, value_bars
 from navcore.gnss.constellation import nominal_gps_constellation
 from navcore.papers import sp_flyby as fb
 from navcore.papers import sp_missions_scenarios as sc
@@ -75,23 +74,17 @@ def sp_fig2_6() -> Figure:
     b = fb.blackouts_min()
     labels = list(b)
     fig, ax = plt.subplots()
-    x = np.arange(len(labels))
-    ax.bar(x, [b[k] for k in labels], color=["tab:red"] + ["tab:blue"] * (len(labels) - 1), label="this book")
-    ax.plot(0, fb.LC_BLACKOUT_MIN, "k_", ms=30, mew=2, label="text (20 min: calibration)")
-    ax.plot(
-        len(labels) - 1,
-        fb.LC_BLACKOUT_MIN - fb.BLACKOUT_REDUCTION_MIN,
-        "kx",
-        ms=10,
-        mew=2,
-        label="text: about 2 min less",
+    value_bars(
+        ax,
+        b,
+        fmt="{:.2f}",
+        colours={labels[0]: "tab:red"},
+        legend={"tab:red": "this book, jammer calibrated to it", "tab:blue": "this book"},
+        printed={labels[0]: fb.LC_BLACKOUT_MIN, labels[-1]: fb.LC_BLACKOUT_MIN - fb.BLACKOUT_REDUCTION_MIN},
+        printed_label="text: 20 min; about 2 min less",
     )
-    for i, k in enumerate(labels):
-        ax.annotate(f"{b[k]:.2f}", (i, b[k]), ha="center", va="bottom", fontsize=8)
-    ax.set_xticks(x, labels, rotation=20)
     ax.set_ylabel("blackout (min)")
-    ax.set_ylim(0, 27)
-    ax.legend(loc="upper right", fontsize=8, ncol=3)
+    ax.set_ylim(0, 32)
     return fig
 
 

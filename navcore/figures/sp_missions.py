@@ -6,7 +6,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.figure import Figure
 
-from navcore.figures import register
+from navcore.figures import register, value_bars
 from navcore.papers import sp_missions as spm
 from navcore.papers import sp_missions_scenarios as sc
 from navcore.papers.sp_tables import GRADE_LABELS_NMI_PER_H
@@ -63,20 +63,8 @@ def sp_fig2_3() -> Figure:
 
 def _bars(values: dict[str, float], ylabel: str, published: dict[str, float] | None = None) -> Figure:
     fig, ax = plt.subplots()
-    labels = list(values)
-    x = np.arange(len(labels))
-    ax.bar(x, [values[k] for k in labels], color="tab:blue", label="this book")
-    if published:
-        for i, k in enumerate(labels):
-            if k in published:
-                ax.plot(i, published[k], "k_", ms=30, mew=2, label="printed in the text" if i == 0 else None)
-    ax.set_xticks(x, labels, rotation=20)
-    ax.set_yscale("log")
+    value_bars(ax, values, printed=published, printed_label="printed in the text", log=True)
     ax.set_ylabel(ylabel)
-    for i, k in enumerate(labels):
-        ax.annotate(f"{values[k]:.0f}", (i, values[k]), ha="center", va="bottom", fontsize=8)
-    if published:
-        ax.legend()
     return fig
 
 
