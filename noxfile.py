@@ -128,23 +128,39 @@ def reproducible(session: nox.Session) -> None:
 
     Both builds use the same output and cache folders (emptied in between), so that only
     what the build itself does can differ; the first build's HTML is kept aside.
+
+    ``nox -s reproducible -- --against _build/html`` makes one clean build and compares it
+    with an existing one (CI passes the book it has just built from a clean checkout, so
+    the notebooks execute twice in all, not three times). If that book links the PDF, the
+    clean build is given the same PDF to link.
     """
     _install(session)
     import tempfile
 
+    against = None
+    if session.posargs:
+        if len(session.posargs) != 2 or session.posargs[0] != "--against":
+            session.error("usage: nox -s reproducible [-- --against BUILT_HTML_DIR]")
+        against = Path(session.posargs[1]).resolve()
+        if not (against / "index.html").exists():
+            session.error(f"--against {against}: no built HTML book there")
     with tempfile.TemporaryDirectory(prefix="navcore-repro-") as tmp:
         out, cache, first = Path(tmp) / "out", Path(tmp) / "cache", Path(tmp) / "first"
         ledger_cache = Path(tmp) / "navcore-cache"  # the claims are evaluated afresh too
-        for run in ("first", "second"):
+        for run in ("first", "second") if against is None else ("second",):
             for folder in (out, cache, ledger_cache):
                 shutil.rmtree(folder, ignore_errors=True)
+            if against is not None and (against / "book.pdf").exists():
+                (out / "_build" / "latex").mkdir(parents=True)
+                shutil.copy2(against / "book.pdf", out / "_build" / "latex" / "book.pdf")
             session.run(
                 "python", "tools/build_book.py", "--builder", "html", "--cache", "--out", str(out),
                 env={"NAVCORE_BOOK_CACHE": str(cache), "NAVCORE_CACHE": str(ledger_cache)},
             )  # fmt: skip
             if run == "first":
                 shutil.move(str(out / "_build" / "html"), first)
-        session.run("python", "tools/check_book.py", "same", str(first), str(out / "_build" / "html"))
+        reference = first if against is None else against
+        session.run("python", "tools/check_book.py", "same", str(reference), str(out / "_build" / "html"))
 
 
 @nox.session
