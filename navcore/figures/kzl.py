@@ -107,7 +107,7 @@ def navigation_errors() -> Figure:
 def standalone_heading() -> Figure:
     from navcore.papers.kzl_simulation import heading_closed_form_deg
 
-    fig, ax = plt.subplots(figsize=(6.4, 4.0))
+    fig, ax = plt.subplots(figsize=(6.4, 4.6))
     for init, color, label in ((True, "tab:blue", "initialised"), (False, "tab:red", "no initialisation")):
         r = monte_carlo("ins", init)
         ax.plot(r.t, r.rms("att_err")[:, 2] / DEG, color=color, label=f"Monte Carlo, {label}")
@@ -117,8 +117,10 @@ def standalone_heading() -> Figure:
     ax.axhline(3, color="k", lw=0.8, ls=":")
     ax.text(2, 20.4, "paper: > 20 deg", fontsize=8)
     ax.text(2, 3.4, "paper: < 3 deg", fontsize=8)
+    ax.set_ylim(0, 22.5)
     ax.set_xlabel("time (s)")
     ax.set_ylabel("heading error (deg)")
-    ax.legend(fontsize=8)
+    # The legend goes under the axes: inside, any corner meets a curve or a marked level.
+    ax.legend(fontsize=8, ncol=2, loc="upper center", bbox_to_anchor=(0.5, -0.16), frameon=False)
     fig.tight_layout()
     return fig
