@@ -56,7 +56,8 @@ def attitude_errors() -> Figure:
         ax.set_ylabel(f"{names[i]} error (deg)")
         _shade_satellites(ax)
         ax.axhline(0.5, color="green", lw=0.8, ls="-.")
-    axes[0].legend(fontsize=8, ncol=2, loc="upper left")
+    # above the top panel: inside it, the legend covered the stand-alone curve and the requirement line
+    axes[0].legend(fontsize=8, ncol=2, loc="lower center", bbox_to_anchor=(0.5, 1.02), frameon=False)
     _sat_strip(axes[3])
     fig.tight_layout()
     return fig
@@ -89,7 +90,7 @@ def navigation_errors() -> Figure:
     axes[2].set_ylabel("attitude, RSS of 3 angles (deg)")
     for ax in axes[:3]:
         _shade_satellites(ax)
-    axes[0].legend(fontsize=8, loc="upper left")
+    axes[0].legend(fontsize=8, ncol=3, loc="lower center", bbox_to_anchor=(0.5, 1.02), frameon=False)
     _sat_strip(axes[3])
     fig.tight_layout()
     return fig
