@@ -56,7 +56,8 @@ def attitude_errors() -> Figure:
         ax.set_ylabel(f"{names[i]} error (deg)")
         _shade_satellites(ax)
         ax.axhline(0.5, color="green", lw=0.8, ls="-.")
-    axes[0].legend(fontsize=8, ncol=2, loc="upper left")
+    # above the top panel: inside it, the legend covered the stand-alone curve and the requirement line
+    axes[0].legend(fontsize=8, ncol=2, loc="lower center", bbox_to_anchor=(0.5, 1.02), frameon=False)
     _sat_strip(axes[3])
     fig.tight_layout()
     return fig
@@ -89,7 +90,7 @@ def navigation_errors() -> Figure:
     axes[2].set_ylabel("attitude, RSS of 3 angles (deg)")
     for ax in axes[:3]:
         _shade_satellites(ax)
-    axes[0].legend(fontsize=8, loc="upper left")
+    axes[0].legend(fontsize=8, ncol=3, loc="lower center", bbox_to_anchor=(0.5, 1.02), frameon=False)
     _sat_strip(axes[3])
     fig.tight_layout()
     return fig
@@ -107,7 +108,7 @@ def navigation_errors() -> Figure:
 def standalone_heading() -> Figure:
     from navcore.papers.kzl_simulation import heading_closed_form_deg
 
-    fig, ax = plt.subplots(figsize=(6.4, 4.0))
+    fig, ax = plt.subplots(figsize=(6.4, 4.6))
     for init, color, label in ((True, "tab:blue", "initialised"), (False, "tab:red", "no initialisation")):
         r = monte_carlo("ins", init)
         ax.plot(r.t, r.rms("att_err")[:, 2] / DEG, color=color, label=f"Monte Carlo, {label}")
@@ -117,8 +118,10 @@ def standalone_heading() -> Figure:
     ax.axhline(3, color="k", lw=0.8, ls=":")
     ax.text(2, 20.4, "paper: > 20 deg", fontsize=8)
     ax.text(2, 3.4, "paper: < 3 deg", fontsize=8)
+    ax.set_ylim(0, 22.5)
     ax.set_xlabel("time (s)")
     ax.set_ylabel("heading error (deg)")
-    ax.legend(fontsize=8)
+    # The legend goes under the axes: inside, any corner meets a curve or a marked level.
+    ax.legend(fontsize=8, ncol=2, loc="upper center", bbox_to_anchor=(0.5, -0.16), frameon=False)
     fig.tight_layout()
     return fig
