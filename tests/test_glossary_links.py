@@ -19,6 +19,8 @@ spec.loader.exec_module(glossary_links)
 
 GLOSSARY = """# Glossary
 
+% glossary-links ignore: consistent
+
 ```{glossary}
 CEP
 circular error probable
@@ -71,6 +73,11 @@ reference/api
 """
 
 
+def test_ignored_terms_come_from_the_comment_line():
+    assert glossary_links.ignored_terms(GLOSSARY) == {"consistent"}
+    assert glossary_links.ignored_terms("% glossary-links ignore: a, b c\n") == {"a", "b c"}
+
+
 def test_glossary_entries_read_term_lines_and_synonyms():
     entries = glossary_links.glossary_entries(GLOSSARY)
     assert entries == [
@@ -121,7 +128,6 @@ def _project(tmp_path: Path) -> Path:
         f"sys.path.insert(0, {str(EXT)!r})\n"
         "extensions = ['myst_parser', 'glossary_links']\n"
         "myst_enable_extensions = ['dollarmath']\n"
-        "glossary_links_ignore = ['consistent']\n"
         "project = 't'\n"
         "latex_documents = [('index', 't.tex', 't', 'a', 'manual')]\n"
     )
@@ -197,3 +203,13 @@ def test_latex_resolves_the_links_and_prints_the_index(built):
     assert re.search(r"\\hyperref\[\\detokenize\{glossary:term-CEP\}\]", tex)
     assert r"\index{CEP@\spxentry{CEP}" in tex
     assert r"\printindex" in tex
+
+
+def test_a_build_without_the_glossary_links_nothing(tmp_path):
+    """A subset build (the glossary page excluded) stays strict and unlinked."""
+    src = _project(tmp_path)
+    (src / "index.md").write_text("# Book\n\n```{toctree}\npage\nreference/api\n```\n")
+    with (src / "conf.py").open("a") as conf:
+        conf.write("exclude_patterns = ['glossary.md']\n")
+    _build(src, tmp_path / "out", "html")
+    assert "glossary.html" not in (tmp_path / "out" / "html" / "page.html").read_text()

@@ -10,14 +10,19 @@ text into a ``term`` cross-reference to it, with an index entry at that place.
 
 Matching: whole words only; a term with a capital letter (an acronym such as ``CEP`` or
 ``C/N0``, a name such as ``Monte Carlo``) matches with its case, a lower-case term also
-with a capital first letter; a trailing plural "s" is included. The first
-use of an entry is the first of any of its term lines; terms listed in
-``glossary_links_ignore`` (ordinary words with a narrower meaning in the glossary) are never
-linked automatically.
+with a capital first letter; a trailing plural "s" is included. The first use of an entry
+is the first of any of its term lines; terms listed in
+``glossary_links_ignore`` or on a comment line ``% glossary-links ignore: a, b`` of the
+glossary page (ordinary words with a narrower meaning in the glossary) are never linked
+automatically. (The comment keeps the list out of ``_config.yml``, whose Sphinx settings key
+the book's execution cache.)
+
+With the glossary page outside the build (a subset build), nothing is linked.
 
 Never linked: text in titles, captions, code and literals, math, raw output, existing
 references and links, the glossary itself, definition-list terms, table header cells, cell
-outputs, index and target nodes.
+outputs, index and target nodes, and ``only`` blocks (so that the web pages and the PDF link
+the same use).
 
 The links are ``pending_xref`` nodes of the standard domain's ``term`` role, inserted by a
 transform that runs before Sphinx collects the document's index entries and objects; Sphinx
@@ -36,6 +41,7 @@ from sphinx import addnodes
 from sphinx.application import Sphinx
 from sphinx.transforms import SphinxTransform
 
+IGNORE_LINE = re.compile(r"^%\s*glossary-links\s+ignore:(.*)$", re.M)
 FENCE = re.compile(r"^(?P<fence>`{3,}|:{3,})\s*\{glossary\}[^\n]*$")
 
 # no link inside these: code, math, raw, links, headings, captions, definitions of terms
@@ -160,8 +166,14 @@ def _skipped(node: nodes.Node) -> bool:
     return False
 
 
-def _is_excluded(docname: str, config: Any) -> bool:
-    if docname == config.glossary_links_docname:
+def ignored_terms(source: str) -> set[str]:
+    """Terms named on ``% glossary-links ignore: ...`` comment lines of the glossary source."""
+    return {t.strip() for line in IGNORE_LINE.findall(source) for t in line.split(",") if t.strip()}
+
+
+def _is_excluded(docname: str, env: Any) -> bool:
+    config = env.config
+    if docname == config.glossary_links_docname or config.glossary_links_docname not in env.found_docs:
         return True
     return any(docname.startswith(prefix) for prefix in config.glossary_links_exclude)
 
@@ -174,7 +186,7 @@ class GlossaryLinks(SphinxTransform):
     def apply(self, **kwargs: Any) -> None:
         env = self.env
         matcher: Matcher | None = getattr(self.app, "_glossary_links_matcher", None)
-        if matcher is None or not matcher.patterns or _is_excluded(env.docname, self.config):
+        if matcher is None or not matcher.patterns or _is_excluded(env.docname, env):
             return
         done: set[int] = set()
         for text in list(self.document.findall(nodes.Text)):
@@ -228,7 +240,8 @@ def _read_glossary(app: Sphinx) -> None:
     text = source.read_text(encoding="utf-8") if source else ""
     app._glossary_links_source_hash = hashlib.sha256(text.encode()).hexdigest()  # type: ignore[attr-defined]
     entries = glossary_entries(text)
-    app._glossary_links_matcher = Matcher(entries, set(config.glossary_links_ignore))  # type: ignore[attr-defined]
+    ignore = set(config.glossary_links_ignore) | ignored_terms(text)
+    app._glossary_links_matcher = Matcher(entries, ignore)  # type: ignore[attr-defined]
 
 
 def _outdated(app: Sphinx, env: Any, added: set[str], changed: set[str], removed: set[str]) -> list[str]:
