@@ -155,6 +155,60 @@ def test_html_gate_finds_helpers_and_notebooks_without_outputs(tmp_path):
     assert "shows 'glue('" in problems[0] and "not executed" in problems[1]
 
 
+PROSE_PAGE = """
+<nav><p>sidebar: navcore.location.fdoa is navigation, not prose</p></nav>
+<article class="bd-article"><section>
+<h1>Title with level_arm</h1>
+<p>The model is <code class="docutils literal">navcore.inertial.alignment</code>, see
+<a href="x.html">federated_fuse</a>; math <span class="math">\\(C/N_0\\) and \\(x_k\\)</span>.</p>
+<p>Here navcore.gnss.tracking stands bare, and so does levelling_alignment.</p>
+<ul><li><p>Call fuse() to fuse.</p></li></ul>
+<div class="admonition note"><p class="admonition-title">Note</p><p>The C/N0 of 41 dB-Hz is fine.</p></div>
+<dl><dt>term_name</dt><dd>defined with <kbd>ctrl_c</kbd> and the set_point value.</dd></dl>
+<table><thead><tr><th>col_name</th></tr></thead><tbody><tr><td>row_value</td></tr></tbody></table>
+<div class="cell_output docutils container"><p>printed_name from a cell</p></div>
+<table class="ledger-table"><tr><td>claim_note</td></tr></table>
+<figure><img src="a.png"/><figcaption><p>Figure of sigma_a.</p></figcaption></figure>
+<pre>code_in_pre()</pre>
+</section></article>
+"""
+
+
+def test_prose_gate_finds_identifiers_only_in_running_prose():
+    """Oracle: a hand-made page; the bare identifiers are the ones outside code, links,
+    math, headings, header cells, cell outputs and claim tables."""
+    found = [ident for ident, _ in check_book.prose_identifiers(PROSE_PAGE)]
+    bare = ["navcore.gnss.tracking", "levelling_alignment", "fuse()", "set_point", "row_value", "sigma_a"]
+    assert found == bare
+
+
+@pytest.mark.parametrize(
+    ("text", "identifiers"),
+    [
+        ("the loosely coupled filter (Section 2)", []),
+        ("the C/N_0 ratio and N_0 itself", []),  # math typed as text: no letter after the underscore
+        ("navcore.ledger", ["navcore.ledger"]),
+        ("call book.setup() first", ["book.setup()"]),
+        ("f(x) is a function, g(...) too", ["g(...)"]),
+        ("a snake_case name, and x_k", ["snake_case", "x_k"]),
+        ("a well-known, built-in word", []),
+    ],
+)
+def test_prose_gate_identifier_patterns(text, identifiers):
+    found = [ident for ident, _ in check_book.prose_identifiers(f"<p>{text}</p>")]
+    assert found == identifiers
+
+
+def test_prose_gate_skips_the_reference_and_generated_pages(tmp_path):
+    body = "<p>bare navcore.units here</p>"
+    pages = ("reference/units.html", "genindex.html", "_modules/x.html", "search.html", "wf/a.html")
+    for rel in pages:
+        _page(tmp_path / rel, body)
+    problems = check_book.check_prose(tmp_path)
+    assert problems == ["wf/a.html: identifier 'navcore.units' in prose: ...bare navcore.units here..."]
+    assert check_book.check_html(tmp_path) == problems
+
+
 def test_latex_gate_counts_only_wide_overfull_boxes(tmp_path):
     (tmp_path / "book.log").write_text(
         "Overfull \\hbox (1.5pt too wide) in paragraph at lines 1--2\n"

@@ -7,8 +7,12 @@ Usage::
     python tools/check_book.py same BUILD_A BUILD_B    # byte-identical trees (PDF: up to its dates)
 
 ``html``: no rendered code cell shows a build helper (``glue(...)``, ``show_figure``,
-``book.setup()``, ``%matplotlib``), and every downloadable notebook under ``_sources`` is
-executed (each code cell has an execution count) and carries outputs.
+``book.setup()``, ``%matplotlib``); every downloadable notebook under ``_sources`` is
+executed (each code cell has an execution count) and carries outputs; and no library
+identifier stands in running prose (see ``prose_identifiers``): a dotted ``navcore.`` path,
+a snake_case name or a call such as ``name()`` in the text of a paragraph, list item,
+definition, table cell, caption or admonition, outside code, links, math, cell outputs and
+claim tables, on every page but the API reference and the generated ones.
 ``latex``: the LaTeX log reports no overfull box wider than ``--max-overfull`` points, and
 no code listing shows a build helper.
 ``same``: every file of the two trees is byte-identical, except that PDFs are compared
@@ -24,6 +28,7 @@ import html
 import json
 import re
 import sys
+from html.parser import HTMLParser
 from pathlib import Path
 
 HELPERS = re.compile(
@@ -39,6 +44,102 @@ VERBATIM = re.compile(r"\\begin\{sphinxVerbatim\}.*?\n(.*?)\\end\{sphinxVerbatim
 
 def _text(fragment: str) -> str:
     return html.unescape(re.sub(r"<[^>]+>", "", fragment))
+
+
+# --- library identifiers in running prose -------------------------------------------------
+
+IDENTIFIER = re.compile(
+    r"\bnavcore(?:\.[A-Za-z_]\w*)+"  # a dotted path into the library
+    r"|\b[A-Za-z_][\w.]*\((?:\.\.\.)?\)"  # a call: name() or name(...)
+    r"|\b\w*[A-Za-z]_[A-Za-z]\w*"  # snake_case: an underscore between letters
+)
+# the text of these elements is running prose
+PROSE_TAGS = {"p", "li", "dd", "td", "figcaption"}
+# nothing inside these is prose: code, links, math, and what a program printed
+SKIP_TAGS = {"code", "pre", "kbd", "samp", "tt", "var", "a", "script", "style", "svg", "math", "th", "button"}
+SKIP_CLASSES = {"math", "cell_output", "output", "output_area", "highlight", "headerlink", "sig"}
+VOID_TAGS = {"area", "base", "br", "col", "embed", "hr", "img", "input", "link", "meta", "source", "wbr"}
+# pages that are not prose: the API reference, generated indexes, highlighted sources, search
+NOT_PROSE = re.compile(
+    r"^(?:reference/|_modules/|_sources/|_static/|_images/|genindex|py-modindex|search\.html)"
+)
+
+
+class _ProseText(HTMLParser):
+    """Collects the running-prose text of a page, one string per outermost prose block."""
+
+    def __init__(self, whole_page: bool):
+        super().__init__(convert_charrefs=True)
+        self.stack: list[tuple[str, bool, bool]] = []  # (tag, skips, is prose)
+        self.in_main = whole_page
+        self.main_depth = 0 if whole_page else None
+        self.blocks: list[list[str]] = []
+
+    def _skipping(self) -> bool:
+        return any(skip for _, skip, _ in self.stack)
+
+    def _in_prose(self) -> bool:
+        return any(prose for _, _, prose in self.stack)
+
+    def handle_starttag(self, tag, attrs):
+        if tag in VOID_TAGS:
+            return
+        classes = set((dict(attrs).get("class") or "").split())
+        if not self.in_main and tag == "article" and "bd-article" in classes:
+            self.in_main, self.main_depth = True, len(self.stack)
+        skip = (
+            tag in SKIP_TAGS
+            or tag.startswith("mjx-")
+            or bool(classes & SKIP_CLASSES)
+            or any(c.startswith("ledger-") for c in classes)
+        )
+        prose = self.in_main and (tag in PROSE_TAGS or (tag == "div" and "admonition" in classes))
+        if prose and not self._in_prose():
+            self.blocks.append([])
+        self.stack.append((tag, skip, prose))
+
+    def handle_startendtag(self, tag, attrs):
+        pass
+
+    def handle_endtag(self, tag):
+        for i in range(len(self.stack) - 1, -1, -1):
+            if self.stack[i][0] == tag:
+                del self.stack[i:]
+                break
+        if self.main_depth is not None and len(self.stack) <= self.main_depth and tag == "article":
+            self.in_main = False
+        if self.blocks and self._in_prose() is False and self.blocks[-1] and self.blocks[-1][-1] != " ":
+            self.blocks[-1].append(" ")
+
+    def handle_data(self, data):
+        if not (self.in_main and self._in_prose()):
+            return
+        self.blocks[-1].append(" " if self._skipping() else data)
+
+
+def prose_identifiers(page_html: str) -> list[tuple[str, str]]:
+    """(identifier, context) for each library identifier in the running prose of a page."""
+    parser = _ProseText(whole_page='class="bd-article"' not in page_html)
+    parser.feed(page_html)
+    parser.close()
+    found = []
+    for block in parser.blocks:
+        text = re.sub(r"\s+", " ", "".join(block)).strip()
+        for m in IDENTIFIER.finditer(text):
+            start, end = max(0, m.start() - 40), min(len(text), m.end() + 40)
+            found.append((m.group(0), text[start:end]))
+    return found
+
+
+def check_prose(root: Path) -> list[str]:
+    problems = []
+    for page in sorted(root.rglob("*.html")):
+        rel = page.relative_to(root).as_posix()
+        if NOT_PROSE.match(rel):
+            continue
+        for ident, context in prose_identifiers(page.read_text(encoding="utf-8", errors="replace")):
+            problems.append(f"{rel}: identifier {ident!r} in prose: ...{context}...")
+    return problems
 
 
 def check_html(root: Path) -> list[str]:
@@ -62,7 +163,7 @@ def check_html(root: Path) -> list[str]:
                 f"({unrun} of {len(code)} code cells without execution count, "
                 f"{sum(bool(c.get('outputs')) for c in code)} with outputs)"
             )
-    return problems
+    return problems + check_prose(root)
 
 
 def check_latex(root: Path, max_overfull: float = 3.0) -> list[str]:
