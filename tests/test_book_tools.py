@@ -175,10 +175,19 @@ PROSE_PAGE = """
 
 
 def test_prose_gate_finds_identifiers_only_in_running_prose():
-    """Oracle: a hand-made page; the bare identifiers are the ones outside code, links,
-    math, headings, header cells, cell outputs and claim tables."""
+    """Oracle: a hand-made page; the identifiers in prose are the ones outside code blocks,
+    links, math, headings, header cells, cell outputs and claim tables. A name set in inline
+    code type inside a sentence still stands in the prose (issue 20's `levelling_alignment`)."""
     found = [ident for ident, _ in check_book.prose_identifiers(PROSE_PAGE)]
-    bare = ["navcore.gnss.tracking", "levelling_alignment", "fuse()", "set_point", "row_value", "sigma_a"]
+    bare = [
+        "navcore.inertial.alignment",
+        "navcore.gnss.tracking",
+        "levelling_alignment",
+        "fuse()",
+        "set_point",
+        "row_value",
+        "sigma_a",
+    ]
     assert found == bare
 
 

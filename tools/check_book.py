@@ -55,8 +55,9 @@ IDENTIFIER = re.compile(
 )
 # the text of these elements is running prose
 PROSE_TAGS = {"p", "li", "dd", "td", "figcaption"}
-# nothing inside these is prose: code, links, math, and what a program printed
-SKIP_TAGS = {"code", "pre", "kbd", "samp", "tt", "var", "a", "script", "style", "svg", "math", "th", "button"}
+# nothing inside these is prose: code blocks, links, math, and what a program printed. Inline
+# code in a sentence is prose: a library name set in code type still stands in the text
+SKIP_TAGS = {"pre", "kbd", "samp", "tt", "var", "a", "script", "style", "svg", "math", "th", "button"}
 SKIP_CLASSES = {"math", "cell_output", "output", "output_area", "highlight", "headerlink", "sig"}
 VOID_TAGS = {"area", "base", "br", "col", "embed", "hr", "img", "input", "link", "meta", "source", "wbr"}
 # pages that are not prose: the API reference, generated indexes, highlighted sources, search
