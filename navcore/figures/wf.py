@@ -111,7 +111,8 @@ def worked_example() -> Figure:
         bx.plot(r["t"], r["vel_err"][case][0, :, 2], color=styles[case][0], label=case)
     bx.set_xlabel("time (s)")
     bx.set_ylabel("vertical aperture-velocity error (m/s)")
-    bx.legend()
+    # the navigation trace fills the whole panel: the legend sits above it, never over the data
+    bx.legend(loc="lower right", bbox_to_anchor=(1.0, 1.0), ncol=2, frameon=False, borderaxespad=0.2)
     return fig
 
 
