@@ -413,9 +413,9 @@ def reacquisition_search() -> dict[str, dict]:
         out[s.label] = {
             "prn": [x[0] for x in rows],
             "step": [x[1] for x in rows],
-            "sigma_range_m": sr,
-            "sigma_range_rate_mps": srr,
-            "range_cells": np.asarray(search_cells(sr, spa.IN.range_cell_m)),
+            "sigma_range_m": sr_all,
+            "sigma_range_rate_mps": srr_all,
+            "range_cells": np.asarray(search_cells(sr_all, spa.IN.range_cell_m)),
             "search_s": np.asarray(_search_time(sr_all, srr_all)),
             "first_search_s": float(np.asarray(_search_time(sr_all, srr_all))[0]),
         }
