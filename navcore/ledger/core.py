@@ -106,6 +106,19 @@ class Tolerance:
             if value is not None and not (value >= 0 and math.isfinite(value)):
                 raise ValueError(f"Tolerance.{name} must be finite and >= 0, got {value!r}")
 
+    @property
+    def absolute(self) -> float:
+        """The absolute part of the tolerance (a printed-digits half unit, say).
+
+        Raises
+        ------
+        ValueError
+            If the tolerance has no absolute part.
+        """
+        if self.abs is None:
+            raise ValueError(f"tolerance {self.describe()!r} has no absolute part")
+        return self.abs
+
     def allowed(self, published: float) -> float:
         """Return the allowed absolute deviation around ``published``."""
         a = self.abs or 0.0
@@ -385,14 +398,14 @@ class Claim:
     quantity: str
     published: float | bool
     unit: str
-    compute: Callable[[], Any] | None
+    compute: Callable[..., Any] | None  # called with no arguments; lambdas bind loop values as defaults
     tolerance: Tolerance | Callable[[], Tolerance]
     expected_status: Status
     note: str
     relation: Relation = "="
     kind: Kind | None = None
     erratum: str = ""
-    oracle: Callable[[], Any] | None = None
+    oracle: Callable[..., Any] | None = None
     oracle_tolerance: Tolerance | None = None
     discussed_in: str = ""
     aliases: tuple[str, ...] = ()

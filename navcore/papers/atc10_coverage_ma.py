@@ -224,7 +224,7 @@ def smallest_peak() -> bool:
     }
     # any symmetric density with E x^2 = b has max|x| >= sqrt(b)
     return (
-        min(peaks, key=peaks.get) == "two-point"
+        min(peaks, key=lambda name: peaks[name]) == "two-point"
         and abs(float(np.max(two_point_density(b).values)) - math.sqrt(b)) < 1e-12
     )
 

@@ -171,8 +171,8 @@ def state_model_matches() -> bool:
         state = T @ state + np.outer(B, e)
         coef[n] = state[0]
     cov = s0**2 * coef @ coef.T
-    m, n = np.meshgrid(np.arange(n_max + 1), np.arange(n_max + 1), indexing="ij")
-    want = s0**2 * (np.minimum(m, n) + m * n)
+    rows, cols = np.meshgrid(np.arange(n_max + 1), np.arange(n_max + 1), indexing="ij")
+    want = s0**2 * (np.minimum(rows, cols) + rows * cols)
     return bool(np.allclose(cov, want, rtol=1e-12, atol=1e-9))
 
 

@@ -189,6 +189,7 @@ def false_track_exists(decl: np.ndarray, w: int, v: int) -> np.ndarray:
             reach = q & central[:, None, None] & central[None, :, None] & central[None, None, :]
         else:
             reach = q & _shift_or(reach, v)
+    assert reach is not None  # k >= 1 segments
     return reach.reshape(trials, -1).any(axis=1)
 
 
@@ -199,7 +200,7 @@ def false_track_exists_brute_force(decl: np.ndarray, w: int, v: int) -> np.ndarr
     n_a = length - 2 * r
     out = np.zeros(trials, bool)
     for t in range(trials):
-        states = set()
+        states: set[tuple[int, int, int]] = set()
         for seg in range(k):
             new = set()
             for a in np.flatnonzero(decl[t, seg, 0, r : r + n_a]):

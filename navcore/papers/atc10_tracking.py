@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import itertools
 import math
+from typing import Any
 
 import numpy as np
 
@@ -175,7 +176,7 @@ for _ex in EXAMPLES:
         )
 for _ex in EXAMPLES:
     for _col in COLUMNS:
-        _half = printed(TABLE_4_2[_ex][_col])[1].abs
+        _half = printed(TABLE_4_2[_ex][_col])[1].absolute
         IN.assumed(
             f"tab42_ex{_ex}_{_col}_unrounded",
             0.0,
@@ -194,7 +195,7 @@ for (_ex, _s0), _row in TABLE_4_3.items():
         locator="Table 4.3 col. (ii), 'psi(alpha) (Fig. 4.1)'",
         quantity=f"Example {_ex}, sigma0 = {int(_s0)} ns: psi as the paper read it off Fig. 4.1",
     )
-    _half = printed(_row[1])[1].abs
+    _half = printed(_row[1])[1].absolute
     IN.assumed(
         _key + "_unrounded",
         0.0,
@@ -371,7 +372,7 @@ def _pymap3d_enu_line_of_sight(example: str, radius_ratio: float) -> np.ndarray:
     return -np.array(rows)  # satellite -> aircraft
 
 
-def _oracle_invariants(example: str, radius_ratio: float) -> dict[str, float]:
+def _oracle_invariants(example: str, radius_ratio: float) -> dict[str, Any]:
     """Table 4.2 invariants from the pymap3d construction via QR / SVD / pseudo-inverse."""
     U = _pymap3d_enu_line_of_sight(example, radius_ratio)
     ones = np.ones(U.shape[0])
@@ -830,9 +831,9 @@ CLAIMS += [
         published=True,
         unit="statement",
         compute=lambda: all(
-            1.0 - prose("orders of magnitude").abs
+            1.0 - prose("orders of magnitude").absolute
             <= math.log10(table_4_2_from_geometry(ex, r)["dilution"])
-            < 2.0 + prose("orders of magnitude").abs
+            < 2.0 + prose("orders of magnitude").absolute
             for ex in EXAMPLES
             for r in (physical_radius_ratio(), fitted_radius_ratio())
         ),
@@ -861,7 +862,7 @@ def _table_4_3_tolerance(text: str, column: str) -> Tolerance:
     or half the last printed digit if that is larger.
     """
     if column == "psi":
-        half = printed(text)[1].abs
+        half = printed(text)[1].absolute
         if half >= 0.0025:
             return printed(text, why="read from Fig. 4.1; the printed digits are coarser than the figure")[1]
         return figure_reading(0.0025, figure="Fig. 4.1", axis="psi on a 0-1 axis, 0.0025 per reading")

@@ -49,6 +49,14 @@ __all__ = [
 ]
 
 
+def _accel_random_walk() -> float:
+    """The Table 1 accelerometer's velocity random walk (m/s/sqrt(s)); the IMU must state it."""
+    vrw = kzl_imu().accel_random_walk
+    if vrw is None:
+        raise ValueError("the KZL IMU has no accelerometer random walk")
+    return vrw
+
+
 def standalone_layout():
     """Error states of the stand-alone INS: navigation errors and every Table 1 sensor error."""
     return ins_error_layout(
@@ -90,9 +98,10 @@ def standalone_covariance(initialise: bool = True, init_time: float | None = Non
     )
     imu = kzl_imu()
     heading_sigma = IN.crab_angle_deg * DEG
+    init_s = 0.0
     if initialise:
-        init_time = IN.init_time_s if init_time is None else init_time
-        imu = gyro_bias_calibrated_at_rest(imu, init_time)
+        init_s = IN.init_time_s if init_time is None else init_time
+        imu = gyro_bias_calibrated_at_rest(imu, init_s)
     src = ErrorSources(imu=imu)
     P0 = initial_covariance(
         layout,
@@ -109,9 +118,11 @@ def standalone_covariance(initialise: bool = True, init_time: float | None = Non
             heading_sigma=float(np.hypot(heading_sigma, VEL0_SIGMA_MPS / speed)),
             lat=lat,
             C_bn=tr.C_bn[0],
-            tilt_noise_sigma=kzl_imu().accel_random_walk / (G0 * np.sqrt(init_time)),
+            tilt_noise_sigma=_accel_random_walk() / (G0 * np.sqrt(init_s)),
         )
-    return run_covariance_analysis(tr, layout, layout, src, P0, vertical_channel=False)
+    result = run_covariance_analysis(tr, layout, layout, src, P0, vertical_channel=False)
+    assert not isinstance(result, list)  # one initial covariance, one run
+    return result
 
 
 def standalone_sigma(block: str, initialise: bool = True, init_time: float | None = None) -> np.ndarray:

@@ -207,7 +207,7 @@ def _sequential_equals_batch() -> bool:
     rng = np.random.default_rng(4)
     A = rng.normal(size=(17, 17))
     P = A @ A.T + np.eye(17)
-    y = rng.normal(size=H.shape[0])
+    y = np.asarray(rng.normal(size=H.shape[0]))
     ref = kf_update(np.zeros(17), P, y, H, R)
     Linv = np.linalg.inv(np.linalg.cholesky(R[n_code:, n_code:]))
     Hw = np.vstack([H[:n_code], Linv @ H[n_code:]])

@@ -36,10 +36,11 @@ import sys
 import tempfile
 from dataclasses import fields
 from pathlib import Path
+from typing import cast
 
 import numpy as np
 
-from navcore.estimation.ekf_ins_gnss import GnssNoise, MonteCarloResult, Scenario, run_monte_carlo
+from navcore.estimation.ekf_ins_gnss import GnssNoise, Mode, MonteCarloResult, Scenario, run_monte_carlo
 from navcore.frames import dcm_ecef_to_ned, ecef_to_ned, geodetic_to_ecef
 from navcore.gnss.constellation import elevation_azimuth, nominal_gps_constellation
 from navcore.inertial.imu import ImuSpec, imu_spec_from_published
@@ -256,6 +257,7 @@ def satellite_priority(
             val = np.linalg.slogdet(Gs.T @ Gs + 1e-3 * np.eye(4))[1]
             if val > best_val:
                 best, best_val = c, val
+        assert best is not None  # every remaining satellite is a candidate
         order.append(int(best))
     return vis[order]
 
@@ -360,7 +362,7 @@ def monte_carlo(mode: str, initialise: bool = True, imu_name: str = "table1") ->
     if use_disk and path.exists():
         with np.load(path) as data:
             return MonteCarloResult(**{f.name: data[f.name] for f in fields(MonteCarloResult)})
-    result = run_monte_carlo(sc, mode, N_RUNS, SEED, initialise=initialise)
+    result = run_monte_carlo(sc, cast(Mode, mode), N_RUNS, SEED, initialise=initialise)
     if use_disk:
         path.parent.mkdir(parents=True, exist_ok=True)
         tmp = path.with_suffix(f".{os.getpid()}.npz")

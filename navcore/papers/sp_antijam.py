@@ -14,6 +14,7 @@ with the paper's 25 runs.
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
@@ -485,7 +486,7 @@ def _cep_claim(arch: str, power: float) -> Claim:
     cid = f"SP-sec3.3-cep-{arch.lower()}-{int(power)}W"
     name = "deeply integrated" if arch == "DI" else "tightly coupled"
     quantity = f"CEP at impact, {name}, {power:g}-W wideband jammer (paper: 25-run Monte Carlo)"
-    common = dict(
+    common: dict[str, Any] = dict(
         id=cid,
         paper="SP",
         locator="Sec. 3.3, Fig. 3.6",

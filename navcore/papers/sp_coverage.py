@@ -162,7 +162,7 @@ def half_column_exceptions() -> tuple[str, ...]:
     for row, _, texts in tab.TABLE_2_5_ROWS:
         half = tab.table_2_5_value(row, 1.0) / 2.0
         # half a unit of the 0.5 cell's last digit, plus half of the 1.0 cell's (it is halved)
-        allowed = printed(texts[2])[1].abs + printed(texts[1])[1].abs / 2.0
+        allowed = printed(texts[2])[1].absolute + printed(texts[1])[1].absolute / 2.0
         if abs(tab.table_2_5_value(row, 0.5) - half) > allowed:
             out.append(row)
     return tuple(out)

@@ -199,7 +199,7 @@ def _carrier_dbw(horizon_dbic: float | None = None) -> np.ndarray:
     """Received carrier power (dBW) per sample and channel; ``horizon_dbic`` overrides the
     antenna's horizon gain (pattern sensitivity)."""
     a, tr = ASSUMED_FLYBY, flyby_trajectory()
-    geo = satellite_geometry(tr, nominal_gps_constellation(), channels())
+    geo = satellite_geometry(tr, nominal_gps_constellation(), [int(c) for c in channels()])
     hz = IN.antenna_horizon_dbic if horizon_dbic is None else horizon_dbic
     return a.signal_dbw + np.asarray(elevation_gain_dbi(geo.elevation, a.antenna_zenith_dbic, hz))
 
@@ -371,7 +371,7 @@ def reacquisition_search() -> dict[str, dict]:
     bias), the Sec. 2.5 search cells and search time; and the first satellite's search time."""
     erp = calibrated_erp_dbw()
     tr = flyby_trajectory()
-    geo = satellite_geometry(tr, nominal_gps_constellation(), channels())
+    geo = satellite_geometry(tr, nominal_gps_constellation(), [int(c) for c in channels()])
     out = {}
     for s, r in flyby_runs().items():
         code, _ = _locks(s, erp)
@@ -408,16 +408,16 @@ def reacquisition_search() -> dict[str, dict]:
             sr, srr = float(np.sqrt(h @ P @ h + extra[0])), float(np.sqrt(hv @ P @ hv + extra[1]))
             rows.append((int(nominal_gps_constellation().prn[channels()[c]]), k + 1, sr, srr))
         rows.sort(key=lambda x: x[1])
-        sr = np.array([x[2] for x in rows])
-        srr = np.array([x[3] for x in rows])
+        sr_all = np.array([x[2] for x in rows])
+        srr_all = np.array([x[3] for x in rows])
         out[s.label] = {
             "prn": [x[0] for x in rows],
             "step": [x[1] for x in rows],
-            "sigma_range_m": sr,
-            "sigma_range_rate_mps": srr,
-            "range_cells": np.asarray(search_cells(sr, spa.IN.range_cell_m)),
-            "search_s": np.asarray(_search_time(sr, srr)),
-            "first_search_s": float(np.asarray(_search_time(sr, srr))[0]),
+            "sigma_range_m": sr_all,
+            "sigma_range_rate_mps": srr_all,
+            "range_cells": np.asarray(search_cells(sr_all, spa.IN.range_cell_m)),
+            "search_s": np.asarray(_search_time(sr_all, srr_all)),
+            "first_search_s": float(np.asarray(_search_time(sr_all, srr_all))[0]),
         }
     return out
 

@@ -216,6 +216,13 @@ SYSTEMS: tuple[System, ...] = (
 )
 
 
+def _final(covariance: np.ndarray | None) -> np.ndarray:
+    """A run's final covariance, which a resumed phase starts from (every run keeps one)."""
+    if covariance is None:
+        raise ValueError("the previous phase kept no final covariance to resume from")
+    return covariance
+
+
 def truth_layout(*, doppler: bool = False, channels: int = ASSUMED.channels) -> StateLayout:
     """Truth states: the 24 tightly coupled states plus everything Table 2.4/2.5 lists that
     the filters do not carry (instrument misalignments, gravity anomaly, clock
@@ -313,7 +320,7 @@ def _run(
     ``lc_pseudorange_noise_m`` replaces the loosely coupled receiver's pseudorange noise."""
     out: dict[System, CovarianceAnalysis] = {}
     truth = truth_layout(doppler=doppler, channels=len(channels))
-    geo = satellite_geometry(tr, nominal_gps_constellation(), channels)
+    geo = satellite_geometry(tr, nominal_gps_constellation(), [int(c) for c in channels])
     every = max(1, round(ASSUMED.baro_interval_s / tr.dt))
     baro = baro_schedule(truth, noise_m=tab.IN.barometer_noise_m, every=every)
     dop = doppler_schedule(truth, tr, noise_mps=IN.doppler_noise_mps) if doppler else None
@@ -356,8 +363,8 @@ def _run(
                     P0[:, j, :] = 0.0
                     P0[:, :, j] = 0.0
         else:
-            P0 = np.stack([resume[s].final_true for s in group])
-            Pf0 = np.stack([resume[s].final_filter for s in group])
+            P0 = np.stack([_final(resume[s].final_true) for s in group])
+            Pf0 = np.stack([_final(resume[s].final_filter) for s in group])
         steps = np.zeros(len(tr), dtype=bool)
         steps[::every] = True  # barometer
         if arch == "loose":
@@ -379,6 +386,7 @@ def _run(
             measurement_steps=steps,
             filter_added_psd=_gravity_tuning(filt, sources[0], float(np.mean(tr.speed))),
         )
+        assert isinstance(res, list)  # a stack of initial covariances gives one run each
         out.update(zip(group, res, strict=True))
     return out
 

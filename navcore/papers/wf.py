@@ -14,6 +14,8 @@ fixtures, not inputs of the paper.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from navcore.estimation.federated import (
@@ -677,7 +679,7 @@ def _remark2_generic_oracle() -> float:
     w = np.random.default_rng(10).normal(size=(100_000, 3))
     infos = [np.linalg.inv(P) for P in Ps]
     PD = np.linalg.inv(sum(infos))
-    fused = sum(w @ (PD @ Y @ Li).T for Y, Li in zip(infos, L, strict=True))
+    fused = sum((w @ (PD @ Y @ Li).T for Y, Li in zip(infos, L, strict=True)), start=np.zeros(w.shape))
     return float(minkowski_trace_bound(Ps) / np.trace(np.cov(fused.T)))
 
 
@@ -756,7 +758,7 @@ def sigma_a_grid(lo: float | None = None, hi: float | None = None, n: int = 31) 
 def improvement_curves(lo: float | None = None, hi: float | None = None, n: int = 31) -> dict:
     """Curves of Figs. 1-2 on a log grid of sigma_a: {(sigma_t, n_sat): dB array} and the grid."""
     grid = sigma_a_grid(lo, hi, n)
-    out = {"sigma_a": grid}
+    out: dict[Any, np.ndarray] = {"sigma_a": grid}
     for st in sigma_t_values():
         for ns in (0, 1, 3):
             out[(st, ns)] = np.array([improvement_db(sa, st, ns) for sa in grid])
