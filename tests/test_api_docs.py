@@ -8,6 +8,9 @@
   The functions that do not yet are listed in ``tests/api_docs_todo.txt``: a function missing
   from that list must be documented, and a listed function that gains both sections must be
   removed from it, so the list only shrinks.
+- A public function has an ``Examples`` section (a doctest, run by ``--doctest-modules``).
+  The functions that do not yet are listed in ``tests/api_examples_todo.txt``, which may
+  likewise only shrink.
 """
 
 from __future__ import annotations
@@ -25,6 +28,7 @@ from numpydoc.docscrape import FunctionDoc
 ROOT = Path(__file__).resolve().parents[1]
 SUBPACKAGES = ("units", "frames", "estimation", "inertial", "gnss", "detection", "location", "ledger")
 TODO = ROOT / "tests" / "api_docs_todo.txt"
+EXAMPLES_TODO = ROOT / "tests" / "api_examples_todo.txt"
 
 
 def _modules() -> list:
@@ -103,12 +107,28 @@ def test_parameters_section_matches_signature(name, func):
     assert signature <= documented, f"{name} does not document {sorted(signature - documented)}"
 
 
+def _lacks_examples(func: object) -> bool:
+    return not "".join(_doc(func)["Examples"]).strip()
+
+
+def _todo(path: Path) -> set[str]:
+    lines = path.read_text().splitlines()
+    return {line.strip() for line in lines if line.strip() and not line.startswith("#")}
+
+
 def test_undocumented_functions_only_shrink():
-    todo = {
-        line.strip() for line in TODO.read_text().splitlines() if line.strip() and not line.startswith("#")
-    }
+    todo = _todo(TODO)
     lacking = {name for name, func in FUNCTIONS if _lacks_sections(func)}
     new = sorted(lacking - todo)
     done = sorted(todo - lacking)
     assert not new, f"public functions without Parameters/Returns sections (document them): {new}"
     assert not done, f"documented now, remove from {TODO.name}: {done}"
+
+
+def test_functions_without_examples_only_shrink():
+    todo = _todo(EXAMPLES_TODO)
+    lacking = {name for name, func in FUNCTIONS if _lacks_examples(func)}
+    new = sorted(lacking - todo)
+    done = sorted(todo - lacking)
+    assert not new, f"public functions without an Examples section (add a doctest): {new}"
+    assert not done, f"have examples now, remove from {EXAMPLES_TODO.name}: {done}"
