@@ -376,6 +376,11 @@ def code_tracking_sigma_chips(
     -------
     float or ndarray
         Code-phase error standard deviation (chips).
+
+    Examples
+    --------
+    >>> round(float(code_tracking_sigma_chips(45.0)), 5)
+    0.00199
     """
     require_positive("spacing_chips", spacing_chips)
     require_positive("integration_s", integration_s)

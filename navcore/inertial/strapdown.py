@@ -341,6 +341,17 @@ def strapdown_interval(
         The state after the ``S`` intervals.
     f_n : (N, S, 3) array
         The specific force resolved in NED in each interval (for the error model's F23).
+
+    Examples
+    --------
+    At rest, with the accelerometers reading the reaction to gravity, nothing moves:
+
+    >>> import numpy as np
+    >>> s0 = NavState(np.zeros((1, 3)), np.zeros((1, 3)), np.array([[1.0, 0.0, 0.0, 0.0]]))
+    >>> f = np.tile([0.0, 0.0, -G0], (1, 100, 1))
+    >>> s1, f_n = strapdown_interval(s0, np.zeros((1, 100, 3)), f, 0.01)
+    >>> float(np.abs(s1.vel).max()) < 1e-12, f_n.shape
+    (True, (1, 100, 3))
     """
     require_positive("dt", dt)
     w = np.asarray(omega_ib_b, dtype=float)

@@ -438,6 +438,13 @@ def linearized_location_error(H: ArrayLike, error: ArrayLike, W: ArrayLike | Non
     -------
     (n,) or (n, T) array
         Error of ``[p^e, f0]`` in m and Hz.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> H = np.array([[1.0, 0.0], [0.0, 2.0], [1.0, 1.0]])
+    >>> linearized_location_error(H, [0.1, 0.2, 0.2]).round(6).tolist()
+    [0.1, 0.1]
     """
     H = as_finite_array("H", H, ndim=2)
     e = as_finite_array("error", error)
@@ -558,6 +565,20 @@ def emitter_gauss_newton(
     ValueError
         If there are fewer than 4 measurements, the arrays disagree in length, or an input
         is not finite; ``max_iter`` is bounded by ``navcore._validate.MAX_LOOP_COUNT``.
+
+    Examples
+    --------
+    Noise-free frequencies along a curved, descending pass (a straight track leaves the
+    emitter's rotation about it unobservable): the iteration returns the emitter.
+
+    >>> import numpy as np
+    >>> s = np.linspace(0.0, 1.0, 21)
+    >>> p = np.column_stack([2000.0 * s, 500.0 * np.sin(np.pi * s), -1000.0 - 300.0 * s])
+    >>> v = np.gradient(p, axis=0) * 20.0  # samples 0.05 s apart
+    >>> m = doppler_frequency(1e9, [1000.0, 3000.0, 0.0], p, v)
+    >>> res = emitter_gauss_newton(m, p, v, [900.0, 2800.0, -100.0, 1e9 + 5.0])
+    >>> res.converged, (np.round(res.estimate, 3) + 0.0).tolist()
+    (True, [1000.0, 3000.0, 0.0, 1000000000.0])
     """
     m = as_finite_array("measurements", measurements, ndim=1)
     if m.size < 4:
