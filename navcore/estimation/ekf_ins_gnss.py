@@ -529,6 +529,24 @@ def run_monte_carlo(
     Knedlik, Zhou & Loffeld, "On Position and Attitude Estimation for Remote Sensing with
     Bistatic SAR" (2009), Secs. 3.1-3.5 (initialisation, strapdown Eqs. (7)-(9), error
     model, tightly coupled updates with double-difference phases Eq. (17), feedback).
+
+    Examples
+    --------
+    Five seconds of level flight with four fixed satellites: the tightly coupled filter ends
+    with a smaller horizontal error than the stand-alone INS on the same random numbers.
+
+    >>> import numpy as np
+    >>> from navcore.inertial.imu import ImuSpec
+    >>> sats = np.array([[2e7, 0.0, -1e7], [-2e7, 0.0, -1e7], [0.0, 2e7, -1e7], [0.0, -2e7, -1e7]])
+    >>> sc = Scenario(velocity_ned=np.array([100.0, 0.0, 0.0]), attitude=np.zeros(3),
+    ...     duration=5.0, imu_rate=100.0, gps_rate=1.0, imu=ImuSpec("example", accel_bias=1e-2),
+    ...     sat_pos_ned=np.tile(sats, (6, 1, 1)), sat_vel_ned=np.zeros((6, 4, 3)),
+    ...     n_visible=np.full(6, 4), gnss=GnssNoise(3.0, 0.1, None, None), init_time=None,
+    ...     pos0_sigma=3.0, vel0_sigma=0.1, baselines_b=None)
+    >>> ins = run_monte_carlo(sc, "ins", 50, seed=1, initialise=False)
+    >>> tc = run_monte_carlo(sc, "tc", 50, seed=1, initialise=False)
+    >>> [round(float(r.horizontal_rms("pos_err")[-1]), 2) for r in (ins, tc)]
+    [4.42, 1.48]
     """
     if mode not in MODES:
         raise ValueError(f"mode must be one of {MODES}, got {mode!r}")
