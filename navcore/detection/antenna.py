@@ -206,6 +206,11 @@ def rf_power_dbw(erp_dbw: ArrayLike, gain_db: ArrayLike) -> FloatArray:
     ndarray
         Transmitter power, dBW.
 
+    Raises
+    ------
+    ValueError
+        If an input is not finite.
+
     References
     ----------
     Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic

@@ -331,6 +331,11 @@ def list_rule_optimal_nu(t: ArrayLike, q: ArrayLike) -> FloatArray:
     ndarray
         ``nu*`` (dimensionless).
 
+    Raises
+    ------
+    ValueError
+        If an input is not finite.
+
     References
     ----------
     Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic

@@ -66,6 +66,15 @@ def detection_index_from_jammer_ratio(jammer_ratio: ArrayLike) -> FloatArray:
         with the output noise variance ``J/B`` of ATC-10 App. D (Eqs. D.7-D.8). A one-sided
         noise-density convention would give ``sqrt(2)`` times this value.
 
+    Raises
+    ------
+    ValueError
+        If a jammer ratio is not positive or not finite.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, ATC-10 (1972), Appendix D, Eqs. (D.7)-(D.8).
+
     Examples
     --------
     >>> float(detection_index_from_jammer_ratio(0.01))
@@ -91,6 +100,11 @@ def threshold_from_detection_probability(p_d: ArrayLike, d: ArrayLike) -> FloatA
     -------
     ndarray
         Threshold (in units of the noise standard deviation).
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite.
 
     References
     ----------
@@ -151,6 +165,11 @@ def log_false_alarm_probability(p_d: ArrayLike, d: ArrayLike) -> FloatArray:
     ndarray
         ``ln p_f``, accurate to full relative precision however small ``p_f`` is.
 
+    Raises
+    ------
+    ValueError
+        If ``d`` is negative or an input is not finite.
+
     Examples
     --------
     >>> round(float(np.exp(log_false_alarm_probability(0.5, 0.0))), 12)
@@ -208,6 +227,11 @@ def log_detection_probability(threshold: ArrayLike, d: ArrayLike) -> FloatArray:
     -------
     ndarray
         Natural log of the probability (finite far into the tail).
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite.
 
     References
     ----------

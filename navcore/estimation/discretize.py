@@ -56,6 +56,12 @@ def van_loan(F: ArrayLike, GQGt: ArrayLike, dt: float) -> tuple[NDArray[np.float
     Phi, Qd : arrays
         ``e^{F dt}`` and the (exactly symmetric) discrete covariance.
 
+    Raises
+    ------
+    ValueError
+        If ``F`` or ``GQGt`` is not square of the same size, ``GQGt`` is not symmetric
+        positive semi-definite, or ``dt`` is not positive.
+
     Examples
     --------
     A double integrator driven by white acceleration of PSD ``q`` gives

@@ -282,6 +282,11 @@ def accelerometer_steady_state_isotropic(sigma_a: float, Ts: float, sigma_L: flo
         ``prior`` = P(k/k-1), ``posterior`` = P(k/k) in (m/s)^2, and the gain. For
         ``sigma_a Ts << sigma_L`` the posterior is close to ``sigma_a Ts sigma_L``.
 
+    Raises
+    ------
+    ValueError
+        If ``sigma_a``, ``Ts`` or ``sigma_L`` is not positive.
+
     Examples
     --------
     >>> ss = accelerometer_steady_state_isotropic(1e-3, 0.02, 0.2)
@@ -484,6 +489,12 @@ def federated_fusion(
     P_D : (n, n) array
         :math:`(\sum_i\mathbf P_i^{-1})^{-1}`, the true covariance only if the local errors are
         uncorrelated.
+
+    Raises
+    ------
+    ValueError
+        If ``estimates`` and ``covariances`` are empty or differ in length, an estimate is
+        not finite, or the estimators left after outages do not observe every state.
 
     Examples
     --------
@@ -783,6 +794,10 @@ def federated_improvement_db(
     ------
     ValueError
         If ``reference_sigma`` is not positive or a covariance is not positive definite.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eq. (23).
 
     Examples
     --------

@@ -377,6 +377,12 @@ def code_tracking_sigma_chips(
     float or ndarray
         Code-phase error standard deviation (chips).
 
+    Raises
+    ------
+    ValueError
+        If ``spacing_chips``, ``integration_s`` or ``coherent_s`` is not positive or a C/N0 is
+        not finite.
+
     Examples
     --------
     >>> round(float(code_tracking_sigma_chips(45.0)), 5)

@@ -164,6 +164,11 @@ def third_order_loop_step_error(t_s: ArrayLike, step: float, omega0: float) -> A
     float or ndarray
         Error in the units of ``step`` times s^2: zero at t = 0 and as t -> infinity.
 
+    Raises
+    ------
+    ValueError
+        If ``omega0`` is not positive or a time is negative or not finite.
+
     Examples
     --------
     >>> round(float(third_order_loop_step_error(2.05439, 1.0, 1.0)), 6)
@@ -198,6 +203,11 @@ def third_order_loop_jerk_error(t_s: ArrayLike, jerk: float, omega0: float) -> A
     -------
     float or ndarray
         Error in the units of ``jerk`` times s^3 (degrees or metres as above).
+
+    Raises
+    ------
+    ValueError
+        If ``omega0`` is not positive or a time is negative or not finite.
 
     Examples
     --------
@@ -235,6 +245,12 @@ def jerk_pulse_error(t_s: ArrayLike, jerk: float, duration_s: float, omega0: flo
     -------
     float or ndarray
         Error in the units of ``jerk`` times s^3 (degrees or metres as above).
+
+    Raises
+    ------
+    ValueError
+        If ``duration_s`` or a time is negative, ``omega0`` is not positive, or a time is not
+        finite.
 
     Examples
     --------

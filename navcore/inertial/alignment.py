@@ -59,6 +59,11 @@ def levelling(
     roll, pitch : arrays
         Bank (roll) ``phi`` and elevation (pitch) ``theta`` in radians.
 
+    Raises
+    ------
+    ValueError
+        If ``f_b`` does not end in an axis of 3 or is not finite, or ``convention`` is unknown.
+
     Examples
     --------
     >>> roll, pitch = levelling([0.0, 0.0, -9.81])

@@ -445,6 +445,12 @@ def error_dynamics(
     F : (n, n) ndarray
         Continuous error-dynamics matrix, 1/s (in the units of the layout's blocks).
 
+    Raises
+    ------
+    ValueError
+        If ``layout`` lacks the position, velocity or misalignment block, or an input is not
+        finite.
+
     References
     ----------
     Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",

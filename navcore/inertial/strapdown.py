@@ -265,6 +265,11 @@ def strapdown_step(
         attitude rotated by half the body increment and by half the navigation-frame
         rotation); position is trapezoidal in velocity.
 
+    Raises
+    ------
+    ValueError
+        If ``dt`` is not positive or a rate or specific force is not finite.
+
     Examples
     --------
     A level IMU at rest measuring ``f = [0, 0, -g]`` stays at rest:
@@ -341,6 +346,11 @@ def strapdown_interval(
         The state after the ``S`` intervals.
     f_n : (N, S, 3) array
         The specific force resolved in NED in each interval (for the error model's F23).
+
+    Raises
+    ------
+    ValueError
+        If ``dt`` is not positive or an input is not finite.
 
     Examples
     --------

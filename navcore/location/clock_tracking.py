@@ -773,6 +773,10 @@ def tracking_position_errors(
         positive, or ``sigma0`` negative (``sigma0 = 0`` gives psi = 0 and no first
         three-satellite estimate, so it is rejected too).
 
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, ATC-10 (1972), Eqs. (4.5.27), (4.5.35) and Table 4.3.
+
     Examples
     --------
     >>> row = tracking_position_errors(2.0, 1.5, 4.0, 2.0, 0.05, 5.0, 50.0, c=1.0)

@@ -116,6 +116,12 @@ def doppler_frequency(f0: float, emitter: ArrayLike, position: ArrayLike, veloci
     (M,) array
         ``f0 + (f0/c) v . u_R`` in Hz; positive shift when closing on the emitter.
 
+    Raises
+    ------
+    ValueError
+        If ``f0`` is not positive, a position or velocity is not finite or has the wrong
+        shape, or ``velocity`` and ``position`` differ in rows.
+
     Examples
     --------
     >>> float(doppler_frequency(1e9, [1000.0, 0, 0], [0.0, 0, 0], [299.792458, 0, 0])[0])
@@ -438,6 +444,12 @@ def linearized_location_error(H: ArrayLike, error: ArrayLike, W: ArrayLike | Non
     -------
     (n,) or (n, T) array
         Error of ``[p^e, f0]`` in m and Hz.
+
+    Raises
+    ------
+    ValueError
+        If ``H`` or ``error`` is not finite or their rows differ, or ``W`` is not a valid
+        weight.
 
     Examples
     --------
