@@ -99,6 +99,15 @@ class PointMassDensity:
 
     Also represents a tabulated continuous density (quadrature nodes, see
     :func:`tabulated_density`) or an empirical sample (equal weights).
+
+    Attributes
+    ----------
+    values : tuple of float
+        Atom positions (relative to the unit peak).
+    weights : tuple of float
+        Atom probabilities (sum 1).
+    name : str
+        Label.
     """
 
     values: tuple[float, ...]
@@ -242,7 +251,15 @@ def tabulated_density(
 
 @dataclass(frozen=True)
 class UniformDensity:
-    """Uniform amplitude density on [-sqrt(3b), sqrt(3b)] (second moment b)."""
+    """Uniform amplitude density on [-sqrt(3b), sqrt(3b)] (second moment b).
+
+    Attributes
+    ----------
+    b : float
+        Second moment (relative to the unit peak squared).
+    name : str
+        Label.
+    """
 
     b: float
     name: str = "uniform"
@@ -281,7 +298,15 @@ class UniformDensity:
 
 @dataclass(frozen=True)
 class TriangularDensity:
-    """Triangular density on [-sqrt(6b), sqrt(6b)]: the sum of two uniforms of second moment b/2."""
+    """Triangular density on [-sqrt(6b), sqrt(6b)]: the sum of two uniforms of second moment b/2.
+
+    Attributes
+    ----------
+    b : float
+        Second moment (relative to the unit peak squared).
+    name : str
+        Label.
+    """
 
     b: float
     name: str = "triangular"
@@ -320,7 +345,15 @@ class TriangularDensity:
 
 @dataclass(frozen=True)
 class GaussianDensity:
-    """Gaussian amplitude density N(0, b)."""
+    """Gaussian amplitude density N(0, b).
+
+    Attributes
+    ----------
+    b : float
+        Variance (relative to the unit peak squared).
+    name : str
+        Label.
+    """
 
     b: float
     name: str = "Gaussian"
@@ -357,6 +390,15 @@ class LogMGFDensity:
     """A density known only through its log-MGF; derivatives by central differences.
 
     ``moment`` uses finite differences of the MGF at 0 (orders <= 4) and there is no sampler.
+
+    Attributes
+    ----------
+    log_mgf_fn : callable
+        ``s -> ln E[exp(s X)]``.
+    name : str
+        Label.
+    step : float
+        Central-difference step in ``s``.
     """
 
     log_mgf_fn: Callable[[FloatArray], FloatArray]
@@ -661,6 +703,15 @@ class StratifiedSums:
 
     Build once with :func:`stratified_sums`; :meth:`tail` then estimates P(n >= t) for any
     thresholds (and, since the sums scale, ``scale`` evaluates a density stretched by a factor).
+
+    Attributes
+    ----------
+    weights : ndarray
+        ``P(K = k)``, k = 0..kmax.
+    sums : tuple of ndarray
+        Sorted sums of k draws, k = 1..kmax.
+    n_per_stratum : int
+        Sums per value of K.
     """
 
     weights: FloatArray  # P(K = k), k = 0..kmax

@@ -60,7 +60,13 @@ class CumulantGenerating(Protocol):
 
 @dataclass(frozen=True)
 class NegatedCGF:
-    """The CGF of -S from that of S: mu~(g) = mu(-g) (used for the p_d side, Eq. 3.5.9)."""
+    """The CGF of -S from that of S: mu~(g) = mu(-g) (used for the p_d side, Eq. 3.5.9).
+
+    Attributes
+    ----------
+    base : CumulantGenerating
+        The CGF of S.
+    """
 
     base: CumulantGenerating
 
@@ -76,7 +82,15 @@ class NegatedCGF:
 
 @dataclass(frozen=True)
 class TailBound:
-    """A bound on ln P(S >= t) with the tilt parameter that produced it."""
+    """A bound on ln P(S >= t) with the tilt parameter that produced it.
+
+    Attributes
+    ----------
+    log_p : float
+        Natural log of the bound on ``P(S >= t)``.
+    parameter : float
+        The tilt that produced it.
+    """
 
     log_p: float
     parameter: float

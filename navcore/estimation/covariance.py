@@ -34,7 +34,16 @@ Array = NDArray[np.float64]
 
 @dataclass(frozen=True)
 class Measurement:
-    """A linear measurement ``z = H x + v`` with ``cov(v) = R``."""
+    """A linear measurement ``z = H x + v`` with ``cov(v) = R``.
+
+    Attributes
+    ----------
+    H : (m, n) ndarray
+        Measurement matrix (measurement units per state unit).
+    R : (m, m) ndarray
+        Measurement-noise covariance (measurement units squared); an infinite diagonal
+        entry marks an outage.
+    """
 
     H: Array
     R: Array

@@ -628,6 +628,15 @@ class SatelliteGeometry:
     """Line-of-sight unit vectors (NED) and elevations of tracked channels over a trajectory.
 
     ``u_ned[k, c]`` points from the vehicle to the satellite of channel ``c`` at step ``k``.
+
+    Attributes
+    ----------
+    prn : (c,) ndarray of int
+        PRN of each channel.
+    u_ned : (N, c, 3) ndarray
+        Unit line-of-sight vectors in NED.
+    elevation : (N, c) ndarray
+        Elevations, rad.
     """
 
     prn: NDArray[np.int64]

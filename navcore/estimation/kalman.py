@@ -153,7 +153,21 @@ def kf_predict(
 
 
 class KalmanUpdate(NamedTuple):
-    """Result of a measurement update."""
+    """Result of a measurement update.
+
+    Attributes
+    ----------
+    x : (n,) ndarray
+        Posterior state.
+    P : (n, n) ndarray
+        Posterior covariance.
+    K : (n, m) ndarray
+        Kalman gain.
+    innovation : (m,) ndarray
+        ``z - H x`` (measurement units).
+    S : (m, m) ndarray
+        Innovation covariance ``H P H^T + R``.
+    """
 
     x: Array
     P: Array

@@ -41,6 +41,21 @@ class NuisanceLMMSE:
 
     ``x_hat = H (z - mu_eps) + mu_x`` and ``y_hat = K (z - mu_eps)`` with
     ``mu_eps = mu_n + F mu_x``. ``P_x_err`` is (H.16) and ``P_y_err`` is (H.8).
+
+    Attributes
+    ----------
+    H : (p, r) ndarray
+        Gain of the estimator of x (Eq. H.15).
+    K : (q, r) ndarray
+        Gain of the estimator of y (Eq. H.6).
+    P_x_err : (p, p) ndarray
+        Error covariance of x (Eq. H.16).
+    P_y_err : (q, q) ndarray
+        Error covariance of y (Eq. H.8).
+    mu_eps : (r,) ndarray
+        Mean of ``n + F x``.
+    mu_x : (p,) ndarray
+        Prior mean of x.
     """
 
     H: np.ndarray

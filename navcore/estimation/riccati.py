@@ -37,7 +37,17 @@ __all__ = ["ScalarSteadyState", "scalar_riccati_iterate", "scalar_riccati_steady
 
 
 class ScalarSteadyState(NamedTuple):
-    """Steady-state variances and gain of a scalar Kalman filter."""
+    """Steady-state variances and gain of a scalar Kalman filter.
+
+    Attributes
+    ----------
+    prior : float
+        Prior variance ``P-`` (state unit squared).
+    posterior : float
+        Posterior variance ``P+``.
+    gain : float
+        Kalman gain ``K``.
+    """
 
     prior: float
     posterior: float

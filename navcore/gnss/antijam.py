@@ -468,7 +468,19 @@ class NavigatorErrorModel:
 
 @dataclass(frozen=True)
 class RunResult:
-    """Monte Carlo output: impact errors (runs, 2), final filter sigma per axis, lock history."""
+    """Monte Carlo output: impact errors (runs, 2), final filter sigma per axis, lock history.
+
+    Attributes
+    ----------
+    impact_errors_m : (runs, 2) ndarray
+        Horizontal impact errors (north, east), m.
+    filter_sigma_m : float
+        The filter's final 1-sigma per axis, m.
+    locked : (N,) bool ndarray
+        Code lock at each step.
+    seed : int
+        Seed of the run.
+    """
 
     impact_errors_m: Array
     filter_sigma_m: float

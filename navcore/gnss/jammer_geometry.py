@@ -612,7 +612,19 @@ def carrier_loss_threshold_dbhz(
 
 @dataclass(frozen=True)
 class LockThresholds:
-    """Effective-C/N0 thresholds (dB-Hz) of one receiver: loss and reacquisition, code and carrier."""
+    """Effective-C/N0 thresholds (dB-Hz) of one receiver: loss and reacquisition, code and carrier.
+
+    Attributes
+    ----------
+    code_loss : float
+        Code-loop loss threshold, dB-Hz.
+    carrier_loss : float
+        Carrier-loop loss threshold, dB-Hz.
+    code_reacquisition : float
+        Code reacquisition threshold, dB-Hz.
+    carrier_reacquisition : float
+        Carrier reacquisition threshold, dB-Hz.
+    """
 
     code_loss: float
     carrier_loss: float

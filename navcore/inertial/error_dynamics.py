@@ -174,6 +174,13 @@ class GaussMarkov:
     """First-order Gauss-Markov process: 1-sigma and a distance constant (m).
 
     ``distance_constant_m = inf`` makes a random constant.
+
+    Attributes
+    ----------
+    sigma : float
+        Stationary 1-sigma (unit of the process).
+    distance_constant_m : float
+        Correlation distance, m (``inf`` for a random constant).
     """
 
     sigma: float

@@ -58,6 +58,8 @@ class ImuSpec:
         Velocity random walk, root PSD of acceleration noise, m/s/sqrt(s).
     source : str
         Where the numbers come from (paper and table).
+    extra : dict of str to float
+        Further named values kept with the specification (no model reads them).
     """
 
     name: str

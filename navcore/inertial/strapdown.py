@@ -96,6 +96,15 @@ class NavState:
     velocity (m/s, NED) and attitude quaternion ``q_bn`` (body to NED).
 
     Each field has a leading run axis: ``pos (N, 3)``, ``vel (N, 3)``, ``quat (N, 4)``.
+
+    Attributes
+    ----------
+    pos : (N, 3) ndarray
+        Position from the origin, m (north, east, down).
+    vel : (N, 3) ndarray
+        Velocity, m/s (NED).
+    quat : (N, 4) ndarray
+        Attitude quaternion ``q_bn``, scalar first.
     """
 
     pos: Array

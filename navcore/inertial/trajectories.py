@@ -77,7 +77,29 @@ class Segment:
 
 @dataclass(frozen=True)
 class Trajectory:
-    """Trajectory samples on a uniform grid (all arrays have ``len(t)`` rows)."""
+    """Trajectory samples on a uniform grid (all arrays have ``len(t)`` rows).
+
+    Attributes
+    ----------
+    t : (N,) ndarray
+        Times, s.
+    lat : (N,) ndarray
+        Geodetic latitude, rad.
+    lon : (N,) ndarray
+        Longitude, rad.
+    h : (N,) ndarray
+        Height, m.
+    pos_ned : (N, 3) ndarray
+        Position from the start, m (NED).
+    vel_ned : (N, 3) ndarray
+        Ground velocity, m/s (NED).
+    f_ned : (N, 3) ndarray
+        Specific force resolved in NED, m/s^2.
+    C_bn : (N, 3, 3) ndarray
+        Body-to-NED attitude.
+    omega_nb_b : (N, 3) ndarray
+        Body rate relative to the NED frame, body axes, rad/s.
+    """
 
     t: Array
     lat: Array

@@ -577,7 +577,19 @@ def convergence_steps_geometric(psi_value: float, rel: float) -> float:
 
 @dataclass(frozen=True)
 class TrackerMonteCarlo:
-    """Empirical second moments of the tracker's errors, per epoch n = 0..N+M."""
+    """Empirical second moments of the tracker's errors, per epoch n = 0..N+M.
+
+    Attributes
+    ----------
+    clock_mse : (N+M+1,) ndarray
+        Mean square clock error per epoch (time unit squared).
+    position_mse : (N+M+1,) ndarray
+        Mean square position error per epoch.
+    position_norm_variance : (N+M+1,) ndarray
+        Variance of the position error norm per epoch.
+    n_runs : int
+        Number of runs.
+    """
 
     clock_mse: np.ndarray
     position_mse: np.ndarray
@@ -708,6 +720,19 @@ class TrackingErrors(NamedTuple):
 
     The three errors are root-mean-square position errors in the length unit of
     ``c * sigma`` (see :func:`tracking_position_errors`).
+
+    Attributes
+    ----------
+    alpha : float
+        ``alpha`` of Eq. (4.5.32).
+    psi : float
+        ``psi(alpha)`` of Eq. (4.5.34).
+    sd_least_squares : float
+        RMS position error of least squares without clock tracking.
+    sd_tracking_limit : float
+        RMS position error of the tracker in steady state.
+    sd_first_three_satellite : float
+        RMS position error at the first epoch with three satellites.
     """
 
     alpha: float

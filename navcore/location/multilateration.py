@@ -462,7 +462,19 @@ def geometric_dilution(F: np.ndarray) -> float:
 
 @dataclass(frozen=True)
 class ConstellationParameters:
-    """The invariants of a constellation (ATC-10 Table 4.2 columns) for one satellite set."""
+    """The invariants of a constellation (ATC-10 Table 4.2 columns) for one satellite set.
+
+    Attributes
+    ----------
+    beta : float
+        ``1'(I - P)1`` (Eq. 4.5.2).
+    trace : float
+        ``tr{(F'F)^-1}``.
+    clock_term : float
+        ``S = 1'F(F'F)^-2 F'1``.
+    dilution : float
+        Geometric dilution ``k`` (Eqs. 4.1.2, 4.6.2).
+    """
 
     beta: float
     trace: float
