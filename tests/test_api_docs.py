@@ -11,10 +11,14 @@
 - A public function has an ``Examples`` section (a doctest, run by ``--doctest-modules``).
   The functions that do not yet are listed in ``tests/api_examples_todo.txt``, which may
   likewise only shrink.
+- Every field of a public dataclass or named tuple is documented in its ``Attributes`` (or
+  ``Parameters``) section; the classes that are not yet complete are listed in
+  ``tests/api_fields_todo.txt``, which may only shrink.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import importlib
 import inspect
 import pkgutil
@@ -23,12 +27,13 @@ import warnings
 from pathlib import Path
 
 import pytest
-from numpydoc.docscrape import FunctionDoc
+from numpydoc.docscrape import ClassDoc, FunctionDoc
 
 ROOT = Path(__file__).resolve().parents[1]
 SUBPACKAGES = ("units", "frames", "estimation", "inertial", "gnss", "detection", "location", "ledger")
 TODO = ROOT / "tests" / "api_docs_todo.txt"
 EXAMPLES_TODO = ROOT / "tests" / "api_examples_todo.txt"
+FIELDS_TODO = ROOT / "tests" / "api_fields_todo.txt"
 
 
 def _modules() -> list:
@@ -131,3 +136,28 @@ def test_functions_without_examples_only_shrink():
     done = sorted(todo - lacking)
     assert not new, f"public functions without an Examples section (add a doctest): {new}"
     assert not done, f"have examples now, remove from {EXAMPLES_TODO.name}: {done}"
+
+
+def _undocumented_fields(cls: type) -> list[str]:
+    if dataclasses.is_dataclass(cls):
+        fields = [f.name for f in dataclasses.fields(cls) if not f.name.startswith("_")]
+    else:
+        fields = list(getattr(cls, "_fields", ()))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        doc = ClassDoc(cls, config={"show_class_members": False})
+    documented: set[str] = set()
+    for section in ("Parameters", "Attributes"):
+        for param in doc[section]:
+            documented |= {n.strip() for n in param.name.split(",")}
+    return [f for f in fields if f not in documented]
+
+
+def test_class_fields_documented_only_shrink():
+    todo = _todo(FIELDS_TODO)
+    classes = [(n, c) for n, c in PUBLIC if inspect.isclass(c)]
+    lacking = {name for name, cls in classes if _undocumented_fields(cls)}
+    new = sorted(lacking - todo)
+    done = sorted(todo - lacking)
+    assert not new, f"public classes with undocumented fields (add Attributes): {new}"
+    assert not done, f"fields documented now, remove from {FIELDS_TODO.name}: {done}"
