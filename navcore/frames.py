@@ -60,7 +60,28 @@ Array = NDArray[np.float64]
 
 
 def skew(v: ArrayLike) -> Array:
-    """Skew-symmetric (cross-product) matrix: ``skew(v) @ w == np.cross(v, w)``."""
+    """Skew-symmetric (cross-product) matrix: ``skew(v) @ w == np.cross(v, w)``.
+
+    Parameters
+    ----------
+    v : (3,) array
+        Vector (any unit).
+
+    Returns
+    -------
+    (3, 3) ndarray
+        ``[v x]``.
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite or has the wrong shape.
+
+    Examples
+    --------
+    >>> skew([1.0, 2.0, 3.0]).tolist()
+    [[0.0, -3.0, 2.0], [3.0, 0.0, -1.0], [-2.0, 1.0, 0.0]]
+    """
     v = as_finite_array("v", v)
     if v.shape != (3,):
         raise ValueError(f"v must be a 3-vector, got shape {v.shape}")
@@ -69,33 +90,149 @@ def skew(v: ArrayLike) -> Array:
 
 
 def rot_x(angle: float) -> Array:
-    """Active rotation of vectors by ``angle`` (rad) about the x axis."""
+    """Active rotation of vectors by ``angle`` about the x axis.
+
+    Parameters
+    ----------
+    angle : float
+        Rotation angle, rad.
+
+    Returns
+    -------
+    (3, 3) ndarray
+        Rotation matrix.
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite or has the wrong shape.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> (np.round(rot_x(np.pi / 2) @ [0.0, 1.0, 0.0], 12) + 0.0).tolist()
+    [0.0, 0.0, 1.0]
+    """
     c, s = np.cos(angle), np.sin(angle)
     return np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])
 
 
 def rot_y(angle: float) -> Array:
-    """Active rotation of vectors by ``angle`` (rad) about the y axis."""
+    """Active rotation of vectors by ``angle`` about the y axis.
+
+    Parameters
+    ----------
+    angle : float
+        Rotation angle, rad.
+
+    Returns
+    -------
+    (3, 3) ndarray
+        Rotation matrix.
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite or has the wrong shape.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> (np.round(rot_y(np.pi / 2) @ [0.0, 0.0, 1.0], 12) + 0.0).tolist()
+    [1.0, 0.0, 0.0]
+    """
     c, s = np.cos(angle), np.sin(angle)
     return np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]])
 
 
 def rot_z(angle: float) -> Array:
-    """Active rotation of vectors by ``angle`` (rad) about the z axis."""
+    """Active rotation of vectors by ``angle`` about the z axis.
+
+    Parameters
+    ----------
+    angle : float
+        Rotation angle, rad.
+
+    Returns
+    -------
+    (3, 3) ndarray
+        Rotation matrix.
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite or has the wrong shape.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> (np.round(rot_z(np.pi / 2) @ [1.0, 0.0, 0.0], 12) + 0.0).tolist()
+    [0.0, 1.0, 0.0]
+    """
     c, s = np.cos(angle), np.sin(angle)
     return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
 
 
 def dcm_from_euler(roll: float, pitch: float, yaw: float) -> Array:
-    """``C_bn = Rz(yaw) Ry(pitch) Rx(roll)`` (body to NED), angles in radians."""
+    """``C_bn = Rz(yaw) Ry(pitch) Rx(roll)`` (body to NED).
+
+    Parameters
+    ----------
+    roll : float
+        Roll, rad.
+    pitch : float
+        Pitch, rad.
+    yaw : float
+        Yaw (heading), rad.
+
+    Returns
+    -------
+    (3, 3) ndarray
+        Body-to-NED direction cosine matrix (3-2-1 sequence).
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite or has the wrong shape.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> (np.round(dcm_from_euler(0.0, 0.0, np.pi / 2), 12) + 0.0).tolist()
+    [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]
+    """
     as_finite_array("roll, pitch, yaw", [roll, pitch, yaw])
     return rot_z(yaw) @ rot_y(pitch) @ rot_x(roll)
 
 
 def euler_from_dcm(C_bn: ArrayLike) -> tuple[float, float, float]:
-    """Roll, pitch, yaw (rad) of a body-to-NED matrix (inverse of :func:`dcm_from_euler`).
+    """Roll, pitch, yaw of a body-to-NED matrix (inverse of :func:`dcm_from_euler`).
 
     Pitch is in [-pi/2, pi/2]; roll and yaw in (-pi, pi].
+
+    Parameters
+    ----------
+    C_bn : (3, 3) array
+        Body-to-NED direction cosine matrix.
+
+    Returns
+    -------
+    roll : float
+        Roll, rad.
+    pitch : float
+        Pitch, rad.
+    yaw : float
+        Yaw, rad.
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite or has the wrong shape.
+
+    Examples
+    --------
+    >>> [round(a, 9) for a in euler_from_dcm(dcm_from_euler(0.1, -0.2, 0.3))]
+    [0.1, -0.2, 0.3]
     """
     C = as_finite_array("C_bn", C_bn, ndim=2)
     if C.shape != (3, 3):
@@ -114,7 +251,30 @@ def _quat(name: str, q: ArrayLike) -> Array:
 
 
 def quat_multiply(q: ArrayLike, p: ArrayLike) -> Array:
-    """Hamilton product ``q ⊗ p`` (scalar first; broadcasts over leading axes)."""
+    """Hamilton product ``q ⊗ p`` (scalar first; broadcasts over leading axes).
+
+    Parameters
+    ----------
+    q : (..., 4) array
+        Left quaternion(s).
+    p : (..., 4) array
+        Right quaternion(s).
+
+    Returns
+    -------
+    (..., 4) ndarray
+        Product(s).
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite or has the wrong shape.
+
+    Examples
+    --------
+    >>> quat_multiply([0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0]).tolist()
+    [0.0, 0.0, 0.0, 1.0]
+    """
     q = _quat("q", q)
     p = _quat("p", p)
     w1, x1, y1, z1 = np.moveaxis(q, -1, 0)
@@ -131,13 +291,55 @@ def quat_multiply(q: ArrayLike, p: ArrayLike) -> Array:
 
 
 def quat_conjugate(q: ArrayLike) -> Array:
-    """Conjugate ``[w, -x, -y, -z]``."""
+    """Conjugate ``[w, -x, -y, -z]`` (the inverse rotation of a unit quaternion).
+
+    Parameters
+    ----------
+    q : (..., 4) array
+        Quaternion(s), scalar first.
+
+    Returns
+    -------
+    (..., 4) ndarray
+        Conjugate.
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite or has the wrong shape.
+
+    Examples
+    --------
+    >>> quat_conjugate([1.0, 2.0, 3.0, 4.0]).tolist()
+    [1.0, -2.0, -3.0, -4.0]
+    """
     q = _quat("q", q)
     return q * np.array([1.0, -1.0, -1.0, -1.0])
 
 
 def quat_normalize(q: ArrayLike) -> Array:
-    """Unit quaternion with non-negative scalar part."""
+    """Unit quaternion with non-negative scalar part.
+
+    Parameters
+    ----------
+    q : (..., 4) array
+        Non-zero quaternion(s).
+
+    Returns
+    -------
+    (..., 4) ndarray
+        Unit quaternion(s) with ``w >= 0``.
+
+    Raises
+    ------
+    ValueError
+        If a quaternion is zero or not finite.
+
+    Examples
+    --------
+    >>> (quat_normalize([-2.0, 0.0, 0.0, 0.0]) + 0.0).tolist()
+    [1.0, 0.0, 0.0, 0.0]
+    """
     q = _quat("q", q)
     norm = np.linalg.norm(q, axis=-1, keepdims=True)
     if np.any(norm == 0):
@@ -147,7 +349,29 @@ def quat_normalize(q: ArrayLike) -> Array:
 
 
 def quat_from_rotvec(rotvec: ArrayLike) -> Array:
-    """Quaternion of a rotation vector ``alpha * u`` (rad), accurate for small angles."""
+    """Quaternion of a rotation vector ``alpha * u``, accurate for small angles.
+
+    Parameters
+    ----------
+    rotvec : (..., 3) array
+        Rotation vector, rad.
+
+    Returns
+    -------
+    (..., 4) ndarray
+        Unit quaternion(s), scalar first.
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite or has the wrong shape.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> np.round(quat_from_rotvec([0.0, 0.0, np.pi / 2]), 6).tolist()
+    [0.707107, 0.0, 0.0, 0.707107]
+    """
     r = as_finite_array("rotvec", rotvec)
     angle = np.linalg.norm(r, axis=-1, keepdims=True)
     half = 0.5 * angle
@@ -158,7 +382,29 @@ def quat_from_rotvec(rotvec: ArrayLike) -> Array:
 
 
 def rotvec_from_quat(q: ArrayLike) -> Array:
-    """Rotation vector (rad) of a unit quaternion (angle in [0, pi])."""
+    """Rotation vector of a unit quaternion (angle in [0, pi]).
+
+    Parameters
+    ----------
+    q : (..., 4) array
+        Unit quaternion(s), scalar first.
+
+    Returns
+    -------
+    (..., 3) ndarray
+        Rotation vector(s), rad.
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite or has the wrong shape.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> np.round(rotvec_from_quat(quat_from_rotvec([0.0, 0.3, 0.0])), 12).tolist()
+    [0.0, 0.3, 0.0]
+    """
     q = quat_normalize(q)
     w = np.clip(q[..., :1], -1.0, 1.0)
     v = q[..., 1:]
@@ -170,7 +416,30 @@ def rotvec_from_quat(q: ArrayLike) -> Array:
 
 
 def dcm_from_quat(q: ArrayLike) -> Array:
-    """Rotation matrix of a unit quaternion (``v_n = C @ v_b`` for ``q`` = body to NED)."""
+    """Rotation matrix of a unit quaternion (``v_n = C @ v_b`` for ``q`` = body to NED).
+
+    Parameters
+    ----------
+    q : (4,) array
+        Unit quaternion, scalar first.
+
+    Returns
+    -------
+    (3, 3) ndarray
+        Direction cosine matrix.
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite or has the wrong shape.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> q = quat_from_euler(0.0, 0.0, np.pi / 2)
+    >>> np.allclose(dcm_from_quat(q), dcm_from_euler(0.0, 0.0, np.pi / 2))
+    True
+    """
     q = quat_normalize(q)
     w, x, y, z = q
     return np.array(
@@ -183,7 +452,33 @@ def dcm_from_quat(q: ArrayLike) -> Array:
 
 
 def quat_from_dcm(C: ArrayLike) -> Array:
-    """Unit quaternion of a rotation matrix (Shepperd's method, numerically robust)."""
+    """Unit quaternion of a rotation matrix (Shepperd's method, numerically robust).
+
+    Parameters
+    ----------
+    C : (3, 3) array
+        Rotation matrix.
+
+    Returns
+    -------
+    (4,) ndarray
+        Unit quaternion, scalar first, non-negative scalar part.
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite or has the wrong shape.
+
+    References
+    ----------
+    S. W. Shepperd, "Quaternion from rotation matrix", J. Guidance and Control 1(3) (1978).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> np.round(quat_from_dcm(dcm_from_euler(0.0, 0.0, np.pi / 2)), 6).tolist()
+    [0.707107, 0.0, 0.0, 0.707107]
+    """
     C = as_finite_array("C", C, ndim=2)
     if C.shape != (3, 3):
         raise ValueError(f"C must be 3x3, got {C.shape}")
@@ -206,7 +501,33 @@ def quat_from_dcm(C: ArrayLike) -> Array:
 
 
 def quat_from_euler(roll: float, pitch: float, yaw: float) -> Array:
-    """Quaternion of ``dcm_from_euler(roll, pitch, yaw)``."""
+    """Quaternion of ``dcm_from_euler(roll, pitch, yaw)``.
+
+    Parameters
+    ----------
+    roll : float
+        Roll, rad.
+    pitch : float
+        Pitch, rad.
+    yaw : float
+        Yaw, rad.
+
+    Returns
+    -------
+    (4,) ndarray
+        Unit quaternion, body to NED, scalar first.
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite or has the wrong shape.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> np.round(quat_from_euler(0.0, 0.0, np.pi / 2), 6).tolist()
+    [0.707107, 0.0, 0.0, 0.707107]
+    """
     qx = np.array([np.cos(roll / 2), np.sin(roll / 2), 0.0, 0.0])
     qy = np.array([np.cos(pitch / 2), 0.0, np.sin(pitch / 2), 0.0])
     qz = np.array([np.cos(yaw / 2), 0.0, 0.0, np.sin(yaw / 2)])
@@ -214,12 +535,62 @@ def quat_from_euler(roll: float, pitch: float, yaw: float) -> Array:
 
 
 def euler_from_quat(q: ArrayLike) -> tuple[float, float, float]:
-    """Roll, pitch, yaw (rad) of a body-to-NED quaternion."""
+    """Roll, pitch, yaw of a body-to-NED quaternion.
+
+    Parameters
+    ----------
+    q : (4,) array
+        Unit quaternion, scalar first.
+
+    Returns
+    -------
+    roll : float
+        Roll, rad.
+    pitch : float
+        Pitch, rad.
+    yaw : float
+        Yaw, rad.
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite or has the wrong shape.
+
+    Examples
+    --------
+    >>> [round(a, 9) for a in euler_from_quat(quat_from_euler(0.1, -0.2, 0.3))]
+    [0.1, -0.2, 0.3]
+    """
     return euler_from_dcm(dcm_from_quat(q))
 
 
 def quat_rotate(q: ArrayLike, v: ArrayLike) -> Array:
-    """Rotate vector(s) ``v`` by unit quaternion ``q``: ``q ⊗ [0, v] ⊗ q*``."""
+    """Rotate vector(s) ``v`` by unit quaternion ``q``: ``q ⊗ [0, v] ⊗ q*``.
+
+    Parameters
+    ----------
+    q : (..., 4) array
+        Unit quaternion(s), scalar first.
+    v : (..., 3) array
+        Vector(s) (any unit).
+
+    Returns
+    -------
+    (..., 3) ndarray
+        Rotated vector(s), same unit.
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite or has the wrong shape.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> q = quat_from_euler(0.0, 0.0, np.pi / 2)
+    >>> (np.round(quat_rotate(q, [1.0, 0.0, 0.0]), 12) + 0.0).tolist()
+    [0.0, 1.0, 0.0]
+    """
     v = as_finite_array("v", v)
     vq = np.concatenate([np.zeros((*v.shape[:-1], 1)), v], axis=-1)
     return quat_multiply(quat_multiply(q, vq), quat_conjugate(q))[..., 1:]
@@ -227,9 +598,35 @@ def quat_rotate(q: ArrayLike, v: ArrayLike) -> Array:
 
 # --- geodesy ---------------------------------------------------------------------------
 def radii_of_curvature(lat: ArrayLike) -> tuple[Array, Array]:
-    """Meridian (north-south) radius ``R_N`` and transverse radius ``R_E`` (m) at ``lat`` (rad).
+    """Meridian (north-south) radius ``R_N`` and transverse radius ``R_E`` at ``lat`` (WGS-84).
 
-    Groves (2013) Eqs. 2.105-2.106.
+    Parameters
+    ----------
+    lat : array_like
+        Geodetic latitude, rad.
+
+    Returns
+    -------
+    R_N : ndarray
+        Meridian radius of curvature, m.
+    R_E : ndarray
+        Transverse (prime-vertical) radius of curvature, m.
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite or has the wrong shape.
+
+    References
+    ----------
+    Groves, Principles of GNSS, Inertial, and Multisensor Integrated Navigation Systems,
+    2nd ed. (2013), Eqs. (2.105)-(2.106).
+
+    Examples
+    --------
+    >>> R_N, R_E = radii_of_curvature(0.0)
+    >>> round(float(R_N), 3), round(float(R_E), 3)
+    (6335439.327, 6378137.0)
     """
     s2 = np.sin(np.asarray(lat, dtype=float)) ** 2
     den = 1.0 - WGS84_E2 * s2
@@ -239,7 +636,39 @@ def radii_of_curvature(lat: ArrayLike) -> tuple[Array, Array]:
 
 
 def geodetic_to_ecef(lat: ArrayLike, lon: ArrayLike, h: ArrayLike, *, deg: bool = False) -> Array:
-    """ECEF position (m), shape ``(..., 3)``, of geodetic latitude, longitude, height."""
+    """ECEF position of geodetic latitude, longitude, height (WGS-84).
+
+    Parameters
+    ----------
+    lat : array_like
+        Geodetic latitude, rad (deg with ``deg=True``).
+    lon : array_like
+        Longitude, rad (deg with ``deg=True``).
+    h : array_like
+        Height above the ellipsoid, m.
+    deg : bool, default False
+        Angles in degrees instead of radians.
+
+    Returns
+    -------
+    (..., 3) ndarray
+        ECEF position, m.
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite or has the wrong shape.
+
+    References
+    ----------
+    Groves, Principles of GNSS, Inertial, and Multisensor Integrated Navigation Systems,
+    2nd ed. (2013), Eq. (2.112).
+
+    Examples
+    --------
+    >>> geodetic_to_ecef(0.0, 0.0, 0.0).tolist()
+    [6378137.0, 0.0, 0.0]
+    """
     lat = as_finite_array("lat", lat)
     lon = as_finite_array("lon", lon)
     h = as_finite_array("h", h)
@@ -256,7 +685,41 @@ def geodetic_to_ecef(lat: ArrayLike, lon: ArrayLike, h: ArrayLike, *, deg: bool 
 
 
 def ecef_to_geodetic(r_e: ArrayLike, *, deg: bool = False) -> tuple[Array, Array, Array]:
-    """Geodetic latitude, longitude, height of ECEF position(s) ``(..., 3)`` (Zhu 1994)."""
+    """Geodetic latitude, longitude, height of ECEF position(s) ``(..., 3)`` (Zhu 1994).
+
+    Parameters
+    ----------
+    r_e : (..., 3) array
+        ECEF position, m (at least 100 km from the Earth's centre).
+    deg : bool, default False
+        Angles in degrees instead of radians.
+
+    Returns
+    -------
+    lat : ndarray
+        Geodetic latitude, rad (deg with ``deg=True``).
+    lon : ndarray
+        Longitude, rad (deg with ``deg=True``).
+    h : ndarray
+        Height above the WGS-84 ellipsoid, m.
+
+    Raises
+    ------
+    ValueError
+        If ``r_e`` does not end in an axis of 3, is not finite, or is within 100 km of the
+        Earth's centre.
+
+    References
+    ----------
+    J. Zhu, "Conversion of Earth-centered Earth-fixed coordinates to geodetic coordinates",
+    IEEE Trans. Aerospace and Electronic Systems 30(3) (1994).
+
+    Examples
+    --------
+    >>> lat, lon, h = ecef_to_geodetic(geodetic_to_ecef(45.0, 10.0, 1000.0, deg=True), deg=True)
+    >>> round(float(lat), 9), round(float(lon), 9), round(float(h), 4)
+    (45.0, 10.0, 1000.0)
+    """
     r = as_finite_array("r_e", r_e)
     if r.ndim == 0 or r.shape[-1] != 3:
         raise ValueError(f"r_e must have shape (..., 3), got {r.shape}")
@@ -288,7 +751,38 @@ def ecef_to_geodetic(r_e: ArrayLike, *, deg: bool = False) -> tuple[Array, Array
 
 
 def dcm_ecef_to_ned(lat: float, lon: float, *, deg: bool = False) -> Array:
-    """``C_en``: maps ECEF vectors to NED at (lat, lon). Groves (2013) Eq. 2.150."""
+    """``C_en``: maps ECEF vectors to NED at (lat, lon).
+
+    Parameters
+    ----------
+    lat : float
+        Geodetic latitude, rad (deg with ``deg=True``).
+    lon : float
+        Longitude, rad (deg with ``deg=True``).
+    deg : bool, default False
+        Angles in degrees instead of radians.
+
+    Returns
+    -------
+    (3, 3) ndarray
+        Direction cosine matrix, ``v_n = C_en @ v_e``.
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite or has the wrong shape.
+
+    References
+    ----------
+    Groves, Principles of GNSS, Inertial, and Multisensor Integrated Navigation Systems,
+    2nd ed. (2013), Eq. (2.150).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> (np.round(dcm_ecef_to_ned(0.0, 0.0), 12) + 0.0).tolist()
+    [[0.0, 0.0, 1.0], [0.0, 1.0, 0.0], [-1.0, 0.0, 0.0]]
+    """
     if deg:
         lat, lon = np.radians(lat), np.radians(lon)
     sl, cl = np.sin(lat), np.cos(lat)
@@ -303,14 +797,73 @@ def dcm_ecef_to_ned(lat: float, lon: float, *, deg: bool = False) -> Array:
 
 
 def ecef_to_ned(r_e: ArrayLike, lat0: float, lon0: float, h0: float, *, deg: bool = False) -> Array:
-    """NED coordinates (m) of ECEF point(s) relative to a geodetic origin."""
+    """NED coordinates of ECEF point(s) relative to a geodetic origin.
+
+    Parameters
+    ----------
+    r_e : (..., 3) array
+        ECEF positions, m.
+    lat0 : float
+        Latitude of the origin, rad (deg with ``deg=True``).
+    lon0 : float
+        Longitude of the origin, rad (deg with ``deg=True``).
+    h0 : float
+        Height of the origin, m.
+    deg : bool, default False
+        Angles in degrees instead of radians.
+
+    Returns
+    -------
+    (..., 3) ndarray
+        NED coordinates, m.
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite or has the wrong shape.
+
+    Examples
+    --------
+    >>> r = geodetic_to_ecef(0.0, 0.0, 100.0)
+    >>> (ecef_to_ned(r, 0.0, 0.0, 0.0).round(9) + 0.0).tolist()
+    [0.0, 0.0, -100.0]
+    """
     origin = geodetic_to_ecef(lat0, lon0, h0, deg=deg)
     d = as_finite_array("r_e", r_e) - origin
     return d @ dcm_ecef_to_ned(lat0, lon0, deg=deg).T
 
 
 def ned_to_ecef(r_n: ArrayLike, lat0: float, lon0: float, h0: float, *, deg: bool = False) -> Array:
-    """ECEF coordinates (m) of NED point(s) relative to a geodetic origin."""
+    """ECEF coordinates of NED point(s) relative to a geodetic origin.
+
+    Parameters
+    ----------
+    r_n : (..., 3) array
+        NED coordinates, m.
+    lat0 : float
+        Latitude of the origin, rad (deg with ``deg=True``).
+    lon0 : float
+        Longitude of the origin, rad (deg with ``deg=True``).
+    h0 : float
+        Height of the origin, m.
+    deg : bool, default False
+        Angles in degrees instead of radians.
+
+    Returns
+    -------
+    (..., 3) ndarray
+        ECEF positions, m.
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite or has the wrong shape.
+
+    Examples
+    --------
+    >>> (ned_to_ecef([0.0, 0.0, -100.0], 0.0, 0.0, 0.0).round(6) + 0.0).tolist()
+    [6378237.0, 0.0, 0.0]
+    """
     origin = geodetic_to_ecef(lat0, lon0, h0, deg=deg)
     return as_finite_array("r_n", r_n) @ dcm_ecef_to_ned(lat0, lon0, deg=deg) + origin
 

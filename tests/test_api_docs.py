@@ -8,10 +8,17 @@
   The functions that do not yet are listed in ``tests/api_docs_todo.txt``: a function missing
   from that list must be documented, and a listed function that gains both sections must be
   removed from it, so the list only shrinks.
+- A public function has an ``Examples`` section (a doctest, run by ``--doctest-modules``).
+  The functions that do not yet are listed in ``tests/api_examples_todo.txt``, which may
+  likewise only shrink.
+- Every field of a public dataclass or named tuple is documented in its ``Attributes`` (or
+  ``Parameters``) section; the classes that are not yet complete are listed in
+  ``tests/api_fields_todo.txt``, which may only shrink.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import importlib
 import inspect
 import pkgutil
@@ -20,11 +27,13 @@ import warnings
 from pathlib import Path
 
 import pytest
-from numpydoc.docscrape import FunctionDoc
+from numpydoc.docscrape import ClassDoc, FunctionDoc
 
 ROOT = Path(__file__).resolve().parents[1]
 SUBPACKAGES = ("units", "frames", "estimation", "inertial", "gnss", "detection", "location", "ledger")
 TODO = ROOT / "tests" / "api_docs_todo.txt"
+EXAMPLES_TODO = ROOT / "tests" / "api_examples_todo.txt"
+FIELDS_TODO = ROOT / "tests" / "api_fields_todo.txt"
 
 
 def _modules() -> list:
@@ -93,22 +102,62 @@ def test_parameters_section_matches_signature(name, func):
     doc = _doc(func)
     if not doc["Parameters"]:
         return
-    signature = {
-        p.name
-        for p in inspect.signature(func).parameters.values()
-        if p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD)
-    }
+    params = inspect.signature(func).parameters.values()
+    signature = {p.name for p in params if p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD)}
+    variadic = {p.name for p in params if p.kind in (p.VAR_POSITIONAL, p.VAR_KEYWORD)}
     documented = _documented_names(doc)
-    assert documented <= signature | {"args", "kwargs"}, f"{name} documents {sorted(documented - signature)}"
+    allowed = signature | variadic | {"args", "kwargs"}
+    assert documented <= allowed, f"{name} documents {sorted(documented - allowed)}"
     assert signature <= documented, f"{name} does not document {sorted(signature - documented)}"
 
 
+def _lacks_examples(func: object) -> bool:
+    return not "".join(_doc(func)["Examples"]).strip()
+
+
+def _todo(path: Path) -> set[str]:
+    lines = path.read_text().splitlines()
+    return {line.strip() for line in lines if line.strip() and not line.startswith("#")}
+
+
 def test_undocumented_functions_only_shrink():
-    todo = {
-        line.strip() for line in TODO.read_text().splitlines() if line.strip() and not line.startswith("#")
-    }
+    todo = _todo(TODO)
     lacking = {name for name, func in FUNCTIONS if _lacks_sections(func)}
     new = sorted(lacking - todo)
     done = sorted(todo - lacking)
     assert not new, f"public functions without Parameters/Returns sections (document them): {new}"
     assert not done, f"documented now, remove from {TODO.name}: {done}"
+
+
+def test_functions_without_examples_only_shrink():
+    todo = _todo(EXAMPLES_TODO)
+    lacking = {name for name, func in FUNCTIONS if _lacks_examples(func)}
+    new = sorted(lacking - todo)
+    done = sorted(todo - lacking)
+    assert not new, f"public functions without an Examples section (add a doctest): {new}"
+    assert not done, f"have examples now, remove from {EXAMPLES_TODO.name}: {done}"
+
+
+def _undocumented_fields(cls: type) -> list[str]:
+    if dataclasses.is_dataclass(cls):
+        fields = [f.name for f in dataclasses.fields(cls) if not f.name.startswith("_")]
+    else:
+        fields = list(getattr(cls, "_fields", ()))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        doc = ClassDoc(cls, config={"show_class_members": False})
+    documented: set[str] = set()
+    for section in ("Parameters", "Attributes"):
+        for param in doc[section]:
+            documented |= {n.strip() for n in param.name.split(",")}
+    return [f for f in fields if f not in documented]
+
+
+def test_class_fields_documented_only_shrink():
+    todo = _todo(FIELDS_TODO)
+    classes = [(n, c) for n, c in PUBLIC if inspect.isclass(c)]
+    lacking = {name for name, cls in classes if _undocumented_fields(cls)}
+    new = sorted(lacking - todo)
+    done = sorted(todo - lacking)
+    assert not new, f"public classes with undocumented fields (add Attributes): {new}"
+    assert not done, f"fields documented now, remove from {FIELDS_TODO.name}: {done}"

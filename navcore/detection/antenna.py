@@ -41,8 +41,33 @@ def _efficiency(efficiency: float) -> float:
 def dish_gain(diameter_m: ArrayLike, frequency_hz: float, efficiency: float) -> FloatArray:
     """Linear gain ``eta (pi D / lambda)**2`` of a parabolic dish.
 
+    Parameters
+    ----------
+    diameter_m : array_like
+        Dish diameter, m (``> 0``).
+    frequency_hz : float
+        Carrier frequency, Hz (``> 0``).
+    efficiency : float
+        Aperture efficiency, in (0, 1].
+
+    Returns
+    -------
+    ndarray
+        Linear gain (dimensionless).
+
+    Raises
+    ------
+    ValueError
+        If the diameter or frequency is not positive or the efficiency not in (0, 1].
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Table 1.1.
+
     Examples
     --------
+    >>> import numpy as np
     >>> round(float(10 * np.log10(dish_gain(2 * 0.3048, 1.6e9, 0.6))), 2)
     17.97
     """
@@ -54,7 +79,37 @@ def dish_gain(diameter_m: ArrayLike, frequency_hz: float, efficiency: float) -> 
 
 @implements("ATC10 Table 1.1")
 def dish_diameter(gain: ArrayLike, frequency_hz: float, efficiency: float) -> FloatArray:
-    """Diameter ``(lambda / pi) sqrt(G / eta)`` in metres giving linear gain ``G``."""
+    """Diameter ``(lambda / pi) sqrt(G / eta)`` giving linear gain ``G``.
+
+    Parameters
+    ----------
+    gain : array_like
+        Linear gain (``> 0``).
+    frequency_hz : float
+        Carrier frequency, Hz (``> 0``).
+    efficiency : float
+        Aperture efficiency ``eta``, in (0, 1].
+
+    Returns
+    -------
+    ndarray
+        Diameter, m.
+
+    Raises
+    ------
+    ValueError
+        If the gain or frequency is not positive or the efficiency not in (0, 1].
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Table 1.1.
+
+    Examples
+    --------
+    >>> round(float(dish_diameter(dish_gain(0.6096, 1.6e9, 0.6), 1.6e9, 0.6)), 6)
+    0.6096
+    """
     g = as_finite_array("gain", gain)
     if np.any(g <= 0):
         raise ValueError("gain must be > 0")
@@ -63,7 +118,37 @@ def dish_diameter(gain: ArrayLike, frequency_hz: float, efficiency: float) -> Fl
 
 @implements("ATC10 Table 1.1")
 def dish_beamwidth_deg(diameter_m: ArrayLike, frequency_hz: float, factor_deg: float = 70.0) -> FloatArray:
-    """Half-power beamwidth ``factor_deg * lambda / D`` in degrees (70 by default)."""
+    """Half-power beamwidth ``factor_deg * lambda / D`` in degrees (70 by default).
+
+    Parameters
+    ----------
+    diameter_m : array_like
+        Dish diameter, m (``> 0``).
+    frequency_hz : float
+        Carrier frequency, Hz (``> 0``).
+    factor_deg : float, default 70.0
+        Beamwidth factor, deg (``> 0``).
+
+    Returns
+    -------
+    ndarray
+        Half-power beamwidth, deg.
+
+    Raises
+    ------
+    ValueError
+        If an argument is not positive.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Table 1.1.
+
+    Examples
+    --------
+    >>> round(float(dish_beamwidth_deg(2 * 0.3048, 1.6e9)), 2)
+    21.52
+    """
     d = as_finite_array("diameter_m", diameter_m)
     if np.any(d <= 0):
         raise ValueError("diameter_m must be > 0")
@@ -72,7 +157,33 @@ def dish_beamwidth_deg(diameter_m: ArrayLike, frequency_hz: float, factor_deg: f
 
 
 def beamwidth_from_gain_deg(gain: ArrayLike) -> FloatArray:
-    """Pencil-beam rule ``theta = sqrt(27000 / G)`` degrees (``G ~ 27000 / theta**2``)."""
+    """Pencil-beam rule ``theta = sqrt(27000 / G)`` degrees (``G ~ 27000 / theta**2``).
+
+    Parameters
+    ----------
+    gain : array_like
+        Linear antenna gain (``> 0``).
+
+    Returns
+    -------
+    ndarray
+        Half-power beamwidth, deg.
+
+    Raises
+    ------
+    ValueError
+        If a gain is not positive.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Table 1.1 (antenna sizes).
+
+    Examples
+    --------
+    >>> round(float(beamwidth_from_gain_deg(100.0)), 3)
+    16.432
+    """
     g = as_finite_array("gain", gain)
     if np.any(g <= 0):
         raise ValueError("gain must be > 0")
@@ -82,6 +193,28 @@ def beamwidth_from_gain_deg(gain: ArrayLike) -> FloatArray:
 @implements("ATC10 Table 1.1")
 def rf_power_dbw(erp_dbw: ArrayLike, gain_db: ArrayLike) -> FloatArray:
     """Transmitter rf power ``ERP - G`` in dBW for an ERP in dBW and an antenna gain in dB.
+
+    Parameters
+    ----------
+    erp_dbw : array_like
+        Effective radiated power, dBW.
+    gain_db : array_like
+        Antenna gain, dB.
+
+    Returns
+    -------
+    ndarray
+        Transmitter power, dBW.
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Table 1.1.
 
     Examples
     --------

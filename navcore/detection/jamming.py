@@ -147,6 +147,25 @@ class SurveillanceGeometry:
 def log1mexp(a: ArrayLike) -> FloatArray:
     """``ln(1 - exp(-a))`` for ``a >= 0``, accurate everywhere (Maechler 2012).
 
+    Parameters
+    ----------
+    a : array_like
+        Argument (``>= 0``; ``inf`` allowed).
+
+    Returns
+    -------
+    ndarray
+        ``ln(1 - exp(-a))`` (``-inf`` at 0).
+
+    Raises
+    ------
+    ValueError
+        If an element is NaN or negative.
+
+    References
+    ----------
+    M. Maechler, "Accurately Computing ``log(1 - exp(-|a|))``", R package Rmpfr vignette (2012).
+
     Examples
     --------
     >>> float(log1mexp(1e-20))
@@ -178,8 +197,26 @@ def log_one_minus_power(log_p: ArrayLike, n: float) -> FloatArray:
     With ``u = -n ln(1 - p)`` the result is ``ln(1 - e^-u)``; ``ln u`` is formed as
     ``ln n + ln p + ln(-ln(1 - p) / p)`` so that neither ``p`` nor ``u`` under- or overflows.
 
+    Parameters
+    ----------
+    log_p : array_like
+        ``ln p`` (``< 0``).
+    n : float
+        Exponent (``> 0``, need not be an integer).
+
+    Returns
+    -------
+    ndarray
+        ``ln(1 - (1 - p)**n)``.
+
+    Raises
+    ------
+    ValueError
+        If a ``log_p`` is not negative or ``n`` not positive.
+
     Examples
     --------
+    >>> import numpy as np
     >>> round(float(log_one_minus_power(np.log(1e-20), 2e7)), 4)
     -29.2405
     """
@@ -199,7 +236,36 @@ def log_one_minus_power(log_p: ArrayLike, n: float) -> FloatArray:
 
 
 def binary_divergence(t: ArrayLike, q: ArrayLike) -> FloatArray:
-    """Kullback-Leibler divergence ``D(t || q)`` of Bernoulli(t) from Bernoulli(q), in nats."""
+    """Kullback-Leibler divergence ``D(t || q)`` of Bernoulli(t) from Bernoulli(q).
+
+    Parameters
+    ----------
+    t : array_like
+        Probability, in [0, 1].
+    q : array_like
+        Probability, strictly in (0, 1).
+
+    Returns
+    -------
+    ndarray
+        Divergence, nats.
+
+    Raises
+    ------
+    ValueError
+        If ``t`` is outside [0, 1] or ``q`` outside (0, 1).
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972),
+    Appendix A (the Chernoff exponent, Eqs. (A.15)-(A.18)).
+
+    Examples
+    --------
+    >>> [round(float(binary_divergence(t, 0.5)), 6) for t in (0.0, 0.5)]
+    [0.693147, 0.0]
+    """
     tt = as_finite_array("t", t)
     qq = as_finite_array("q", q)
     if np.any((tt < 0) | (tt > 1)):
@@ -216,6 +282,28 @@ def list_rule_exponent(t: ArrayLike, q: ArrayLike) -> FloatArray:
     Equals ``D(t || q)`` when ``t < q`` and 0 when ``t >= q`` (the maximiser is then
     ``nu = 0`` and the Chernoff bound is vacuous). At ``t = 0`` it is ``-ln(1 - q)``.
 
+    Parameters
+    ----------
+    t : array_like
+        Fraction of the rule, in [0, 1].
+    q : array_like
+        Per-list probability, in (0, 1).
+
+    Returns
+    -------
+    ndarray
+        Chernoff exponent ``E(t, q)``, nats.
+
+    Raises
+    ------
+    ValueError
+        If ``t`` or ``q`` is out of range.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eqs. (A.15)-(A.18).
+
     Examples
     --------
     >>> round(float(list_rule_exponent(0.0, 0.5)), 12)
@@ -227,8 +315,37 @@ def list_rule_exponent(t: ArrayLike, q: ArrayLike) -> FloatArray:
 
 
 def list_rule_optimal_nu(t: ArrayLike, q: ArrayLike) -> FloatArray:
-    """The maximising ``nu* = ln[(1 - t) q / (t (1 - q))]`` for ``0 < t < q``; 0 for
-    ``t >= q`` and ``+inf`` at ``t = 0``."""
+    """The maximising ``nu* = ln[(1 - t) q / (t (1 - q))]`` for ``0 < t < q``.
+
+    0 for ``t >= q`` and ``+inf`` at ``t = 0``.
+
+    Parameters
+    ----------
+    t : array_like
+        Fraction of the rule, in [0, 1].
+    q : array_like
+        Per-list probability, in (0, 1).
+
+    Returns
+    -------
+    ndarray
+        ``nu*`` (dimensionless).
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eqs. (A.15)-(A.16).
+
+    Examples
+    --------
+    >>> round(float(list_rule_optimal_nu(0.25, 0.5)), 6), float(list_rule_optimal_nu(0.75, 0.5))
+    (1.098612, 0.0)
+    """
     tt = as_finite_array("t", t)
     qq = as_finite_array("q", q)
     with np.errstate(divide="ignore"):
@@ -242,6 +359,36 @@ def log_detection_lower_bound(p_d: ArrayLike, k: int, t: ArrayLike = 0.0) -> Flo
 
     ``P_DL`` lower-bounds the probability that more than ``K t`` of ``K`` lists are non-empty
     when the aircraft is present; at ``t = 0`` it equals that probability exactly.
+
+    Parameters
+    ----------
+    p_d : array_like
+        Per-sample detection probability, in (0, 1).
+    k : int
+        Number of segments (``>= 1``).
+    t : array_like, default 0.0
+        Fraction of the rule.
+
+    Returns
+    -------
+    ndarray
+        ``ln P_DL``.
+
+    Raises
+    ------
+    ValueError
+        If ``k`` is not a positive integer or a probability is out of range.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eqs. (2.4.1)-(2.4.2), (A.17).
+
+    Examples
+    --------
+    >>> import math
+    >>> round(math.exp(float(log_detection_lower_bound(0.5, 1))), 12)
+    0.0625
     """
     q = as_finite_array("p_d", p_d) ** 4
     k = _require_count(k)
@@ -251,6 +398,30 @@ def log_detection_lower_bound(p_d: ArrayLike, k: int, t: ArrayLike = 0.0) -> Flo
 @implements("ATC10 2.4.2")
 def detection_lower_bound(p_d: ArrayLike, k: int, t: ArrayLike = 0.0) -> FloatArray:
     """``P_DL = 1 - exp(-K E(t, p_d**4))`` (ATC-10 Eq. 2.4.2); ``p_d**4`` for ``K = 1``.
+
+    Parameters
+    ----------
+    p_d : array_like
+        Per-sample detection probability, in (0, 1).
+    k : int
+        Number of segments (``>= 1``).
+    t : array_like, default 0.0
+        Fraction in the rule "more than ``K t`` lists non-empty".
+
+    Returns
+    -------
+    ndarray
+        Lower bound on the probability of declaring the aircraft present.
+
+    Raises
+    ------
+    ValueError
+        If ``k`` is not a positive integer or a probability is out of range.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (2.4.2).
 
     Examples
     --------
@@ -264,16 +435,79 @@ def detection_lower_bound(p_d: ArrayLike, k: int, t: ArrayLike = 0.0) -> FloatAr
 
 @implements("ATC10 A.11")
 def list_rule_detection_probability(q: ArrayLike, k: int, t: float = 0.0) -> FloatArray:
-    """Exact ``P(more than K t of K lists non-empty)`` for i.i.d. lists, each non-empty with
-    probability ``q`` (the rule of ATC-10 (A.11)); a binomial survival function."""
+    """Exact ``P(more than K t of K lists non-empty)`` for i.i.d. lists.
+
+    Each list is non-empty with probability ``q`` (the rule of ATC-10 (A.11)); a binomial
+    survival function.
+
+    Parameters
+    ----------
+    q : array_like
+        Probability that one list is non-empty, in [0, 1].
+    k : int
+        Number of lists (``>= 1``).
+    t : float, default 0.0
+        Fraction of the rule.
+
+    Returns
+    -------
+    ndarray
+        Detection probability.
+
+    Raises
+    ------
+    ValueError
+        If ``k`` is not a positive integer or ``q`` not finite.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (A.11).
+
+    Examples
+    --------
+    >>> round(float(list_rule_detection_probability(0.5, 2)), 6)
+    0.75
+    """
     k = _require_count(k)
     return stats.binom.sf(math.floor(k * t), k, as_finite_array("q", q))
 
 
 def empty_list_rule_detection_probability(q: ArrayLike, k: int, t: float = 0.0) -> FloatArray:
-    """Same rule under the paper's literal (A.9)/(A.10): "H1 if at most ``K t`` lists are
-    empty", i.e. ``P(K_0 <= K t)`` with ``K_0 ~ Binomial(K, 1 - q)``. Kept to show that it is
-    not the rule the bounds use (at ``t = 0`` it is ``q**K``)."""
+    """The rule under the paper's literal (A.9)/(A.10): "H1 if at most ``K t`` lists are empty".
+
+    That is ``P(K_0 <= K t)`` with ``K_0 ~ Binomial(K, 1 - q)``. Kept to show that it is not the
+    rule the bounds use (at ``t = 0`` it is ``q**K``).
+
+    Parameters
+    ----------
+    q : array_like
+        Probability that one list is non-empty, in [0, 1].
+    k : int
+        Number of lists (``>= 1``).
+    t : float, default 0.0
+        Fraction of the rule.
+
+    Returns
+    -------
+    ndarray
+        Detection probability.
+
+    Raises
+    ------
+    ValueError
+        If ``k`` is not a positive integer or ``q`` not finite.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eqs. (A.9)-(A.10).
+
+    Examples
+    --------
+    >>> round(float(empty_list_rule_detection_probability(0.5, 3)), 6)
+    0.125
+    """
     k = _require_count(k)
     return stats.binom.cdf(math.floor(k * t), k, 1.0 - as_finite_array("q", q))
 
@@ -284,6 +518,35 @@ def list_probability_for_detection_bound(p_dl: float, k: int, t: float = 0.0) ->
 
     Closed form at ``t = 0``: ``q = 1 - (1 - P_DL)**(1/K)``; for ``t > 0`` the root of
     ``K D(t || q) = -ln(1 - P_DL)`` on ``(t, 1)``.
+
+    Parameters
+    ----------
+    p_dl : float
+        Required lower bound on the detection probability, in (0, 1).
+    k : int
+        Number of segments (``>= 1``).
+    t : float, default 0.0
+        Fraction of the rule, in [0, 1).
+
+    Returns
+    -------
+    float
+        Per-list probability ``q``.
+
+    Raises
+    ------
+    ValueError
+        If ``p_dl`` is not in (0, 1), ``t`` not in [0, 1) or ``k`` not a positive integer.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (2.4.2).
+
+    Examples
+    --------
+    >>> round(list_probability_for_detection_bound(0.75, 2), 6)
+    0.5
     """
     if not 0.0 < p_dl < 1.0:
         raise ValueError("p_dl must lie strictly between 0 and 1")
@@ -299,7 +562,37 @@ def list_probability_for_detection_bound(p_dl: float, k: int, t: float = 0.0) ->
 
 
 def filter_detection_probability_for_bound(p_dl: float, k: int, t: float = 0.0) -> float:
-    """Per-sample ``p_d = q**(1/4)`` needed for ``P_DL = p_dl`` (four filters per list)."""
+    """Per-sample ``p_d = q**(1/4)`` needed for ``P_DL = p_dl`` (four filters per list).
+
+    Parameters
+    ----------
+    p_dl : float
+        Required lower bound on the detection probability, in (0, 1).
+    k : int
+        Number of segments (``>= 1``).
+    t : float, default 0.0
+        Fraction of the rule, in [0, 1).
+
+    Returns
+    -------
+    float
+        Per-sample detection probability.
+
+    Raises
+    ------
+    ValueError
+        As :func:`list_probability_for_detection_bound`.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (2.4.2) inverted.
+
+    Examples
+    --------
+    >>> round(filter_detection_probability_for_bound(0.0625, 1), 6)
+    0.5
+    """
     return list_probability_for_detection_bound(p_dl, k, t) ** 0.25
 
 
@@ -313,6 +606,36 @@ def log_false_list_factor(log_pf: ArrayLike, geometry: SurveillanceGeometry) -> 
     """``ln F(p_f)``, ``F = [1 - (1 - p_f)**(2 B alpha)] [1 - (1 - p_f)**(4 B beta)]**3`` (B.6).
 
     ``F`` lower-bounds the probability that a list is non-empty from noise alone.
+
+    Parameters
+    ----------
+    log_pf : array_like
+        Natural logarithm of the per-sample false-alarm probability (``< 0``).
+    geometry : SurveillanceGeometry
+        System parameters (sample counts per window).
+
+    Returns
+    -------
+    ndarray
+        ``ln F``.
+
+    Raises
+    ------
+    ValueError
+        If a ``log_pf`` is not negative.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (B.6).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> g = SurveillanceGeometry(bandwidth_hz=1e7, repetition_s=1.0, differential_delay_s=0.03,
+    ...                          max_speed_m_s=300.0, airborne_fraction=0.5, pulse_energy_j=1e-2)
+    >>> round(float(log_false_list_factor(np.log(1e-9), g)), 3)
+    -24.1
     """
     return log_one_minus_power(log_pf, geometry.samples_per_period) + 3.0 * log_one_minus_power(
         log_pf, geometry.samples_per_delay_window
@@ -320,7 +643,38 @@ def log_false_list_factor(log_pf: ArrayLike, geometry: SurveillanceGeometry) -> 
 
 
 def log_ambiguous_list_factor(log_pf: ArrayLike, geometry: SurveillanceGeometry) -> FloatArray:
-    """``ln G(p_f)``, ``G = [1 - (1 - p_f)**(2 B alpha)] [1 - (1 - p_f)**n_v]**3`` (C.14)."""
+    """``ln G(p_f)``, ``G = [1 - (1 - p_f)**(2 B alpha)] [1 - (1 - p_f)**n_v]**3`` (C.14).
+
+    Parameters
+    ----------
+    log_pf : array_like
+        Natural logarithm of the per-sample false-alarm probability (``< 0``).
+    geometry : SurveillanceGeometry
+        System parameters (sample counts per window).
+
+    Returns
+    -------
+    ndarray
+        ``ln G``.
+
+    Raises
+    ------
+    ValueError
+        If a ``log_pf`` is not negative.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (C.14).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> g = SurveillanceGeometry(bandwidth_hz=1e7, repetition_s=1.0, differential_delay_s=0.03,
+    ...                          max_speed_m_s=300.0, airborne_fraction=0.5, pulse_energy_j=1e-2)
+    >>> round(float(log_ambiguous_list_factor(np.log(1e-9), g)), 3)
+    -56.239
+    """
     return log_one_minus_power(log_pf, geometry.samples_per_period) + 3.0 * log_one_minus_power(
         log_pf, geometry.samples_per_track_window
     )
@@ -349,6 +703,27 @@ def log_false_location_bound(
         real exponent, as printed (``floor(K t) + 1`` would be the tighter count).
     geometry : SurveillanceGeometry
         System parameters (no default: a paper's scenario is a preset of its paper module).
+
+    Returns
+    -------
+    ndarray
+        Natural log of the lower bound on false locations per aircraft, ``N_FL / N_T``.
+
+    Raises
+    ------
+    ValueError
+        If ``k`` is not a positive integer or a probability is out of range.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, ATC-10 (1972), Eqs. (2.5.5) and (2.8.3).
+
+    Examples
+    --------
+    >>> g = SurveillanceGeometry(bandwidth_hz=1e7, repetition_s=1.0, differential_delay_s=0.03,
+    ...                          max_speed_m_s=300.0, airborne_fraction=0.5, pulse_energy_j=1e-2)
+    >>> [round(float(log_false_location_bound(x, 0.9, 2, 0.0, g)), 3) for x in (0.01, 1.0)]
+    [-106.3, -0.693]
     """
     g = geometry
     k = _require_count(k)
@@ -360,8 +735,45 @@ def log_false_location_bound(
 def log_ambiguous_detection_bound(
     jammer_ratio: ArrayLike, p_d: float, k: int, t: float, geometry: SurveillanceGeometry
 ) -> FloatArray:
-    """``ln(N_ADL / N_T) = ln(N / (2 N_T)) + ln P_DL + (K - 1) ln G(p_f) + ln F(p_f)``
-    (ATC-10 Eqs. 2.5.12, 2.7.3, 2.8.4; ``P_DL = p_d**4`` at ``K = 1``)."""
+    """``ln(N_ADL / N_T) = ln(N / (2 N_T)) + ln P_DL + (K - 1) ln G(p_f) + ln F(p_f)``.
+
+    ATC-10 Eqs. 2.5.12, 2.7.3, 2.8.4; ``P_DL = p_d**4`` at ``K = 1``.
+
+    Parameters
+    ----------
+    jammer_ratio : array_like
+        ``x = J / (P0 B tau)``, linear.
+    p_d : float
+        Per-sample detection probability the filters are designed for, in (0, 1).
+    k : int
+        Number of segments (lists) in the first-stage decision (``>= 1``).
+    t : float
+        Fraction in the rule "more than ``K t`` lists non-empty", in [0, 1).
+    geometry : SurveillanceGeometry
+        System parameters (bandwidth in Hz, periods in s, speed in m/s, pulse energy in J).
+
+    Returns
+    -------
+    ndarray
+        Natural log of the lower bound on ambiguous locations per aircraft.
+
+    Raises
+    ------
+    ValueError
+        If ``k`` is not a positive integer or a probability is out of range.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eqs. (2.5.12) (as corrected), (2.7.3), (2.8.4).
+
+    Examples
+    --------
+    >>> g = SurveillanceGeometry(bandwidth_hz=1e7, repetition_s=1.0, differential_delay_s=0.03,
+    ...                          max_speed_m_s=300.0, airborne_fraction=0.5, pulse_energy_j=1e-2)
+    >>> round(float(log_ambiguous_detection_bound(1e3, 0.9, 2, 0.0, g)), 3)
+    -1.512
+    """
     g = geometry
     k = _require_count(k)
     log_pf = _log_pf(jammer_ratio, p_d)
@@ -375,14 +787,82 @@ def log_ambiguous_detection_bound(
 
 
 def log_false_location_ceiling(p_d: float, k: int, t: float, geometry: SurveillanceGeometry) -> float:
-    """Limit of :func:`log_false_location_bound` as ``J -> inf`` (``p_f -> p_d``)."""
+    """Limit of :func:`log_false_location_bound` as ``J -> inf`` (``p_f -> p_d``).
+
+    Parameters
+    ----------
+    p_d : float
+        Per-sample detection probability the filters are designed for, in (0, 1).
+    k : int
+        Number of segments (lists) in the first-stage decision (``>= 1``).
+    t : float
+        Fraction in the rule "more than ``K t`` lists non-empty", in [0, 1).
+    geometry : SurveillanceGeometry
+        System parameters (bandwidth in Hz, periods in s, speed in m/s, pulse energy in J).
+
+    Returns
+    -------
+    float
+        Natural log of the supremum of ``N_FL / N_T``.
+
+    Raises
+    ------
+    ValueError
+        If ``k`` is not a positive integer or ``p_d`` is out of range.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (2.5.5).
+
+    Examples
+    --------
+    >>> g = SurveillanceGeometry(bandwidth_hz=1e7, repetition_s=1.0, differential_delay_s=0.03,
+    ...                          max_speed_m_s=300.0, airborne_fraction=0.5, pulse_energy_j=1e-2)
+    >>> round(log_false_location_ceiling(0.9, 2, 0.0, g), 4)
+    -0.6931
+    """
     g = geometry
     log_f = log_false_list_factor(math.log(p_d), g)
     return float(math.log1p(-g.airborne_fraction) + (_require_count(k) * t + 1.0) * log_f)
 
 
 def log_ambiguous_detection_ceiling(p_d: float, k: int, t: float, geometry: SurveillanceGeometry) -> float:
-    """Limit of :func:`log_ambiguous_detection_bound` as ``J -> inf`` (``p_f -> p_d``)."""
+    """Limit of :func:`log_ambiguous_detection_bound` as ``J -> inf`` (``p_f -> p_d``).
+
+    Parameters
+    ----------
+    p_d : float
+        Per-sample detection probability the filters are designed for, in (0, 1).
+    k : int
+        Number of segments (lists) in the first-stage decision (``>= 1``).
+    t : float
+        Fraction in the rule "more than ``K t`` lists non-empty", in [0, 1).
+    geometry : SurveillanceGeometry
+        System parameters (bandwidth in Hz, periods in s, speed in m/s, pulse energy in J).
+
+    Returns
+    -------
+    float
+        Natural log of the supremum of ``N_ADL / N_T``.
+
+    Raises
+    ------
+    ValueError
+        If ``k`` is not a positive integer or ``p_d`` is out of range.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (2.5.12).
+
+    Examples
+    --------
+    >>> g = SurveillanceGeometry(bandwidth_hz=1e7, repetition_s=1.0, differential_delay_s=0.03,
+    ...                          max_speed_m_s=300.0, airborne_fraction=0.5, pulse_energy_j=1e-2)
+    >>> round(log_ambiguous_detection_ceiling(0.9, 2, 0.0, g), 3)
+    -1.512
+    """
     g = geometry
     k = _require_count(k)
     lp = math.log(p_d)
@@ -415,8 +895,14 @@ def jammer_ratio_threshold_db(
     level : float
         Target as a fraction of ``N_T`` (the paper: 0.01 for ``N_ADL``; ``N_FL`` only
         approaches its supremum ``1 - N/N_T``, so use a fraction of that).
-    p_d, k, t, geometry
-        As in :func:`log_false_location_bound`.
+    p_d : float
+        Per-sample detection probability, as in :func:`log_false_location_bound`.
+    k : int
+        Number of segments (lists).
+    t : float
+        Fraction in the rule "more than ``K t`` lists non-empty".
+    geometry : SurveillanceGeometry
+        System parameters.
     lower_db, upper_db : float
         The bracket (dB) searched for the threshold.
 
@@ -425,6 +911,24 @@ def jammer_ratio_threshold_db(
     float
         The ratio in dB, or ``inf`` when the bound's ceiling (``J -> inf``) is at or below
         ``level``: no jammer power reaches it.
+
+    Raises
+    ------
+    ValueError
+        If ``quantity`` is unknown, ``level`` is not positive, or the bracket does not
+        contain the threshold.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, ATC-10 (1972), Eqs. (2.5.5) and (2.5.12), Table 2.1.
+
+    Examples
+    --------
+    >>> g = SurveillanceGeometry(bandwidth_hz=1e7, repetition_s=1.0, differential_delay_s=0.03,
+    ...                          max_speed_m_s=300.0, airborne_fraction=0.5, pulse_energy_j=1e-2)
+    >>> x_db = jammer_ratio_threshold_db("ambiguous", 0.01, 0.9, 2, 0.0, g)
+    >>> round(x_db, 2)
+    -10.67
     """
     if quantity not in ("false", "ambiguous"):
         raise ValueError("quantity must be 'false' or 'ambiguous'")
@@ -451,6 +955,30 @@ def jammer_ratio_threshold_db(
 
 def jammer_erp_dbw(jammer_ratio_db: ArrayLike, pulse_energy_j: float, bandwidth_hz: float) -> FloatArray:
     """Jammer ERP ``J`` in dBW from ``10 log10(J / (P0 tau B))`` (ATC-10 Sec. 2.7, Table 2.1).
+
+    Parameters
+    ----------
+    jammer_ratio_db : array_like
+        ``10 log10(J / (P0 tau B))``, dB.
+    pulse_energy_j : float
+        Signal pulse energy ``P0 tau``, J (``> 0``).
+    bandwidth_hz : float
+        Bandwidth ``B``, Hz (``> 0``).
+
+    Returns
+    -------
+    ndarray
+        Jammer ERP, dBW.
+
+    Raises
+    ------
+    ValueError
+        If ``pulse_energy_j`` or ``bandwidth_hz`` is not positive.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Sec. 2.7, Table 2.1.
 
     Examples
     --------

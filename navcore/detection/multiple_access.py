@@ -99,6 +99,15 @@ class PointMassDensity:
 
     Also represents a tabulated continuous density (quadrature nodes, see
     :func:`tabulated_density`) or an empirical sample (equal weights).
+
+    Attributes
+    ----------
+    values : tuple of float
+        Atom positions (relative to the unit peak).
+    weights : tuple of float
+        Atom probabilities (sum 1).
+    name : str
+        Label.
     """
 
     values: tuple[float, ...]
@@ -162,7 +171,34 @@ class PointMassDensity:
 
 @implements("ATC10 3.7.1")
 def two_point_density(b: float) -> PointMassDensity:
-    """The quasi-optimal density: masses 1/2 at +-sqrt(b) (ATC-10 Eq. 3.7.1 with b = p/((N-1)q))."""
+    """The quasi-optimal density: masses 1/2 at +-sqrt(b) (ATC-10 Eq. 3.7.1 with ``b = p/((N-1)q)``).
+
+    Parameters
+    ----------
+    b : float
+        Variance of one interferer's amplitude (``> 0``).
+
+    Returns
+    -------
+    PointMassDensity
+        The two atoms and their weights.
+
+    Raises
+    ------
+    ValueError
+        If ``b`` is not positive.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (3.7.1).
+
+    Examples
+    --------
+    >>> d = two_point_density(0.04)
+    >>> [round(v, 6) for v in d.values], [round(w, 6) for w in d.weights]
+    ([-0.2, 0.2], [0.5, 0.5])
+    """
     require_positive("b", b)
     a = float(np.sqrt(b))
     return PointMassDensity((-a, a), (0.5, 0.5), name="two-point")
@@ -171,7 +207,40 @@ def two_point_density(b: float) -> PointMassDensity:
 def tabulated_density(
     pdf: Callable[[FloatArray], FloatArray], lo: float, hi: float, n: int = 200, name: str = "tabulated"
 ) -> PointMassDensity:
-    """A continuous density on [lo, hi] as Gauss-Legendre point masses (exact MGF to quadrature order)."""
+    """A continuous density on [lo, hi] as Gauss-Legendre point masses (exact MGF to quadrature order).
+
+    Parameters
+    ----------
+    pdf : callable
+        Probability density ``pdf(x)`` on [lo, hi]; the weights are ``pdf`` at the nodes
+        times the quadrature weights, so pass a density that integrates to 1.
+    lo : float
+        Lower end of the support.
+    hi : float
+        Upper end of the support.
+    n : int, default 200
+        Number of nodes (``>= 2``).
+    name : str, default "tabulated"
+        Name of the density.
+
+    Returns
+    -------
+    PointMassDensity
+        Nodes and weights.
+
+    Raises
+    ------
+    ValueError
+        If ``n`` is less than 2.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> d = tabulated_density(lambda x: np.full_like(x, 0.5), -1.0, 1.0, n=20)
+    >>> w, x = np.array(d.weights), np.array(d.values)
+    >>> round(float(w.sum()), 12), round(float(np.sum(w * x**2)), 6)
+    (1.0, 0.333333)
+    """
     if not hi > lo:
         raise ValueError(f"hi must be > lo, got lo={lo}, hi={hi}")
     require_integer("n", n, minimum=2)
@@ -182,7 +251,15 @@ def tabulated_density(
 
 @dataclass(frozen=True)
 class UniformDensity:
-    """Uniform amplitude density on [-sqrt(3b), sqrt(3b)] (second moment b)."""
+    """Uniform amplitude density on [-sqrt(3b), sqrt(3b)] (second moment b).
+
+    Attributes
+    ----------
+    b : float
+        Second moment (relative to the unit peak squared).
+    name : str
+        Label.
+    """
 
     b: float
     name: str = "uniform"
@@ -221,7 +298,15 @@ class UniformDensity:
 
 @dataclass(frozen=True)
 class TriangularDensity:
-    """Triangular density on [-sqrt(6b), sqrt(6b)]: the sum of two uniforms of second moment b/2."""
+    """Triangular density on [-sqrt(6b), sqrt(6b)]: the sum of two uniforms of second moment b/2.
+
+    Attributes
+    ----------
+    b : float
+        Second moment (relative to the unit peak squared).
+    name : str
+        Label.
+    """
 
     b: float
     name: str = "triangular"
@@ -260,7 +345,15 @@ class TriangularDensity:
 
 @dataclass(frozen=True)
 class GaussianDensity:
-    """Gaussian amplitude density N(0, b)."""
+    """Gaussian amplitude density N(0, b).
+
+    Attributes
+    ----------
+    b : float
+        Variance (relative to the unit peak squared).
+    name : str
+        Label.
+    """
 
     b: float
     name: str = "Gaussian"
@@ -297,6 +390,15 @@ class LogMGFDensity:
     """A density known only through its log-MGF; derivatives by central differences.
 
     ``moment`` uses finite differences of the MGF at 0 (orders <= 4) and there is no sampler.
+
+    Attributes
+    ----------
+    log_mgf_fn : callable
+        ``s -> ln E[exp(s X)]``.
+    name : str
+        Label.
+    step : float
+        Central-difference step in ``s``.
     """
 
     log_mgf_fn: Callable[[FloatArray], FloatArray]
@@ -412,8 +514,20 @@ class MultipleAccessNoise:
 
 
 def cumulants_from_raw_moments(raw: ArrayLike) -> FloatArray:
-    """Cumulants from raw moments m_1..m_n by the standard recursion.
+    """Cumulants from raw moments ``m_1..m_n`` by the standard recursion.
 
+    Parameters
+    ----------
+    raw : array_like
+        Raw moments ``m_1, m_2, ...`` (units of the variable to the power of the order).
+
+    Returns
+    -------
+    ndarray
+        Cumulants ``kappa_1..kappa_n``.
+
+    Examples
+    --------
     >>> cumulants_from_raw_moments([0.0, 1.0, 0.0, 3.0]).round(12).tolist()  # N(0,1)
     [0.0, 1.0, 0.0, 0.0]
     """
@@ -441,7 +555,35 @@ def edgeworth_density(
     """The expansion (E.15) truncated after ``terms`` correction terms.
 
     ``terms=0`` is Theorem 3.1's Gaussian limit; 1 adds the lambda_3 term, 2 the lambda_4 term
-    and 3 the (jv)^6 term (lambda_6 and lambda_3^2). ``use_n`` replaces N - 1 by N as App. E does.
+    and 3 the (jv)^6 term (lambda_6 and lambda_3^2). ``use_n`` replaces N - 1 by N as App. E
+    does.
+
+    Parameters
+    ----------
+    noise : MultipleAccessNoise
+        The multiple-access noise model (N aircraft, overlap probability, amplitude density C).
+    n : array_like
+        Noise values (relative to the unit signal peak).
+    terms : int, default 2
+        Number of correction terms, 0..3.
+    use_n : bool, default True
+        Use N instead of N - 1 interferers, as Appendix E does.
+
+    Returns
+    -------
+    ndarray
+        Approximate probability density of the noise (per unit of ``n``).
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Appendix E, Eq. (E.15), and Theorem 3.1.
+
+    Examples
+    --------
+    >>> noise = MultipleAccessNoise(100, 0.01, UniformDensity(0.3))
+    >>> round(float(edgeworth_density(noise, 0.0, terms=0)), 4)
+    0.515
     """
     var, c = _edgeworth_coefficients(noise, use_n)
     sig = np.sqrt(var)
@@ -457,7 +599,35 @@ def edgeworth_density(
 def edgeworth_tail(
     noise: MultipleAccessNoise, t: ArrayLike, terms: int = 2, use_n: bool = True
 ) -> FloatArray:
-    """P(n >= t) from the expansion (E.15) integrated term by term."""
+    """``P(n >= t)`` from the expansion (E.15) integrated term by term.
+
+    Parameters
+    ----------
+    noise : MultipleAccessNoise
+        The multiple-access noise model (N aircraft, overlap probability, amplitude density C).
+    t : array_like
+        Thresholds (relative to the unit signal peak).
+    terms : int, default 2
+        Number of correction terms, 0..3.
+    use_n : bool, default True
+        Use N instead of N - 1 interferers, as Appendix E does.
+
+    Returns
+    -------
+    ndarray
+        Approximate tail probability.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Appendix E, Eq. (E.15).
+
+    Examples
+    --------
+    >>> noise = MultipleAccessNoise(100, 0.01, UniformDensity(0.3))
+    >>> round(float(edgeworth_tail(noise, 0.0, terms=0)), 4)
+    0.5
+    """
     var, c = _edgeworth_coefficients(noise, use_n)
     sig = np.sqrt(var)
     z = np.asarray(t, dtype=float) / sig
@@ -470,7 +640,39 @@ def edgeworth_tail(
 
 
 def sample_noise(noise: MultipleAccessNoise, n_samples: int, rng: np.random.Generator) -> FloatArray:
-    """Seeded Monte Carlo of n: K ~ Binomial(N-1, q) overlapping interferers, each drawn from C."""
+    """Seeded Monte Carlo of n: ``K ~ Binomial(N-1, q)`` overlapping interferers, each drawn from C.
+
+    Parameters
+    ----------
+    noise : MultipleAccessNoise
+        The multiple-access noise model (N aircraft, overlap probability, amplitude density C).
+    n_samples : int
+        Number of samples (``>= 1``, bounded).
+    rng : numpy.random.Generator
+        Seeded generator (``numpy.random.default_rng(seed)``).
+
+    Returns
+    -------
+    (n_samples,) ndarray
+        Noise samples (relative to the unit peak).
+
+    Raises
+    ------
+    ValueError
+        If ``n_samples`` is not a positive integer.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Sec. 3.3.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> noise = MultipleAccessNoise(100, 0.01, UniformDensity(0.3))
+    >>> sample_noise(noise, 5, np.random.default_rng(0)).shape
+    (5,)
+    """
     require_integer("n_samples", n_samples, minimum=1)
     k = rng.binomial(noise.n_interferers, noise.q, size=n_samples)
     draws = noise.density.sample(rng, int(k.sum()))
@@ -501,6 +703,15 @@ class StratifiedSums:
 
     Build once with :func:`stratified_sums`; :meth:`tail` then estimates P(n >= t) for any
     thresholds (and, since the sums scale, ``scale`` evaluates a density stretched by a factor).
+
+    Attributes
+    ----------
+    weights : ndarray
+        ``P(K = k)``, k = 0..kmax.
+    sums : tuple of ndarray
+        Sorted sums of k draws, k = 1..kmax.
+    n_per_stratum : int
+        Sums per value of K.
     """
 
     weights: FloatArray  # P(K = k), k = 0..kmax
@@ -528,6 +739,35 @@ def stratified_sums(
     The binomial weights of K are exact; for each K >= 1, ``n_per_stratum`` sums of K draws
     from C are stored sorted. Rare events at large K are therefore resolved far below
     1/(total samples).
+
+    Parameters
+    ----------
+    noise : MultipleAccessNoise
+        The multiple-access noise model (N aircraft, overlap probability, amplitude density C).
+    n_per_stratum : int
+        Sums per value of K (``>= 1``, bounded).
+    rng : numpy.random.Generator
+        Seeded generator (``numpy.random.default_rng(seed)``).
+
+    Returns
+    -------
+    StratifiedSums
+        Sorted sums per K with their binomial weights; :meth:`StratifiedSums.tail` estimates
+        tail probabilities.
+
+    Raises
+    ------
+    ValueError
+        If ``n_per_stratum`` is not a positive integer.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> noise = MultipleAccessNoise(100, 0.01, UniformDensity(0.3))
+    >>> ss = stratified_sums(noise, 200, np.random.default_rng(0))
+    >>> p, se = ss.tail(0.0)
+    >>> round(float(np.ravel(p)[0]), 2)
+    0.59
     """
     require_integer("n_per_stratum", n_per_stratum, minimum=1)
     ks, w = _k_range(noise.n_interferers, noise.q)
@@ -544,7 +784,39 @@ def stratified_tail(
 ) -> TailEstimate:
     """Exact ROC by Monte Carlo stratified on the number K of overlapping interferers.
 
-    Returns P(n >= t) (``upper``) and P(n <= -t) (``lower``) with standard errors.
+    Parameters
+    ----------
+    noise : MultipleAccessNoise
+        The multiple-access noise model (N aircraft, overlap probability, amplitude density C).
+    t : array_like
+        Thresholds (``>= 0``, relative to the unit peak).
+    n_per_stratum : int
+        Sums per value of K.
+    rng : numpy.random.Generator
+        Seeded generator (``numpy.random.default_rng(seed)``).
+
+    Returns
+    -------
+    TailEstimate
+        ``P(n >= t)`` (``upper``) and ``P(n <= -t)`` (``lower``) with standard errors.
+
+    Raises
+    ------
+    ValueError
+        If ``n_per_stratum`` is not a positive integer.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Sec. 3.5 (the exact ROC the bounds bracket).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> noise = MultipleAccessNoise(100, 0.01, UniformDensity(0.3))
+    >>> est = stratified_tail(noise, [0.5], 2000, np.random.default_rng(0))
+    >>> bool(est.upper[0] > 0.0), bool(est.upper_se[0] < est.upper[0])
+    (True, True)
     """
     t = np.atleast_1d(np.asarray(t, dtype=float))
     ss = stratified_sums(noise, n_per_stratum, rng)
@@ -554,7 +826,36 @@ def stratified_tail(
 
 
 def two_point_exact_tail(amplitude: float, n_interferers: int, q: float, t: ArrayLike) -> FloatArray:
-    """Exact P(n >= t) for the two-point density +-a: sum_K Bin(K) P(a(2J - K) >= t), J ~ Bin(K, 1/2)."""
+    """Exact ``P(n >= t)`` for the two-point density +-a.
+
+    ``sum_K Bin(K) P(a(2J - K) >= t)``, ``J ~ Bin(K, 1/2)``.
+
+    Parameters
+    ----------
+    amplitude : float
+        Atom amplitude ``a`` (relative to the unit peak).
+    n_interferers : int
+        Number of potential interferers ``N - 1``.
+    q : float
+        Overlap probability, in [0, 1].
+    t : array_like
+        Thresholds.
+
+    Returns
+    -------
+    ndarray
+        Tail probability.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Sec. 3.7 (the quasi-optimal density).
+
+    Examples
+    --------
+    >>> round(float(two_point_exact_tail(0.2, 1, 1.0, [0.1])[0]), 6)
+    0.5
+    """
     t = np.atleast_1d(np.asarray(t, dtype=float))
     ks, w = _k_range(n_interferers, q)
     out = np.zeros_like(t)
@@ -566,7 +867,34 @@ def two_point_exact_tail(amplitude: float, n_interferers: int, q: float, t: Arra
 
 
 def gaussian_mixture_exact_tail(b: float, n_interferers: int, q: float, t: ArrayLike) -> FloatArray:
-    """Exact P(n >= t) for Gaussian C = N(0, b): sum_K Bin(K) Q(t / sqrt(K b))."""
+    """Exact ``P(n >= t)`` for Gaussian ``C = N(0, b)``: ``sum_K Bin(K) Q(t / sqrt(K b))``.
+
+    Parameters
+    ----------
+    b : float
+        Variance of one interferer's amplitude (relative to the unit peak squared).
+    n_interferers : int
+        Number of potential interferers ``N - 1``.
+    q : float
+        Probability that an interferer overlaps, in [0, 1].
+    t : array_like
+        Thresholds.
+
+    Returns
+    -------
+    ndarray
+        Tail probability.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Sec. 3.3 (the binomial mixture of overlaps).
+
+    Examples
+    --------
+    >>> round(float(gaussian_mixture_exact_tail(0.01, 99, 0.02, [0.0])[0]), 4)
+    0.5677
+    """
     t = np.atleast_1d(np.asarray(t, dtype=float))
     ks, w = _k_range(n_interferers, q)
     out = w[0] * (t <= 0)
@@ -579,13 +907,47 @@ def gaussian_mixture_exact_tail(b: float, n_interferers: int, q: float, t: Array
 def psk_amplitude_samples(
     code_i: ArrayLike, n_events: int, rng: np.random.Generator, chunk: int = 20000
 ) -> FloatArray:
-    """Samples of n_ij(t) given overlap (Eq. 3.3.7) for random PSK interferers.
+    """Samples of ``n_ij(t)`` given overlap (Eq. 3.3.7) for random PSK interferers.
 
     Each interferer has a fresh random +-1 code of the same length L as ``code_i``,
     rectangular chips, unit energy, a delay d uniform over (-tau, tau) relative to the
     matched-filter peak and a uniform carrier phase. The cross-correlation at a continuous
     delay d = (k + f) tau_c is (1-f) c_k + f c_{k+1}, with c_k the aperiodic discrete
     cross-correlation divided by L.
+
+    Parameters
+    ----------
+    code_i : array_like
+        Chip sequence of the wanted signature.
+    n_events : int
+        Number of samples (``>= 1``, bounded).
+    rng : numpy.random.Generator
+        Seeded generator (``numpy.random.default_rng(seed)``).
+    chunk : int, default 20000
+        Samples drawn per batch (memory bound).
+
+    Returns
+    -------
+    (n_events,) ndarray
+        Cross-term amplitudes relative to the unit peak.
+
+    Raises
+    ------
+    ValueError
+        If ``n_events`` is not a positive integer.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (3.3.7).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from navcore.detection.zakai import barker_code
+    >>> x = psk_amplitude_samples(barker_code(13), 1000, np.random.default_rng(0))
+    >>> x.shape, bool(np.abs(x).max() <= 1.0)
+    ((1000,), True)
     """
     ci = np.asarray(code_i, dtype=float).ravel()
     L = ci.size

@@ -66,6 +66,15 @@ def detection_index_from_jammer_ratio(jammer_ratio: ArrayLike) -> FloatArray:
         with the output noise variance ``J/B`` of ATC-10 App. D (Eqs. D.7-D.8). A one-sided
         noise-density convention would give ``sqrt(2)`` times this value.
 
+    Raises
+    ------
+    ValueError
+        If a jammer ratio is not positive or not finite.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, ATC-10 (1972), Appendix D, Eqs. (D.7)-(D.8).
+
     Examples
     --------
     >>> float(detection_index_from_jammer_ratio(0.01))
@@ -78,7 +87,35 @@ def detection_index_from_jammer_ratio(jammer_ratio: ArrayLike) -> FloatArray:
 
 
 def threshold_from_detection_probability(p_d: ArrayLike, d: ArrayLike) -> FloatArray:
-    """Normalised threshold ``eta`` with ``P(d + n > eta) = p_d``, i.e. ``eta = d - Phi^{-1}(p_d)``."""
+    """Normalised threshold ``eta`` with ``P(d + n > eta) = p_d``, i.e. ``eta = d - Phi^{-1}(p_d)``.
+
+    Parameters
+    ----------
+    p_d : array_like
+        Detection probability, in (0, 1).
+    d : array_like
+        Normalised signal amplitude.
+
+    Returns
+    -------
+    ndarray
+        Threshold (in units of the noise standard deviation).
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Appendix D (the Neyman-Pearson threshold).
+
+    Examples
+    --------
+    >>> round(float(threshold_from_detection_probability(0.5, 4.0)), 6)
+    4.0
+    """
     pd = _open_probability(p_d, "p_d")
     dd = as_finite_array("d", d)
     return dd - special.ndtri(pd)
@@ -87,6 +124,21 @@ def threshold_from_detection_probability(p_d: ArrayLike, d: ArrayLike) -> FloatA
 @implements("ATC10 2.7.2")
 def erf_parameter_from_detection_probability(p_d: ArrayLike) -> FloatArray:
     """The paper's ``phi`` with ``p_d = 1/2 + 1/2 erf(phi)`` (ATC-10 Eq. 2.7.2, D.13-D.15).
+
+    Parameters
+    ----------
+    p_d : array_like
+        Detection probability, in (0, 1).
+
+    Returns
+    -------
+    ndarray
+        ``phi = erfinv(2 p_d - 1)`` (dimensionless).
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (2.7.2) and Eqs. (D.13)-(D.15).
 
     Examples
     --------
@@ -113,6 +165,11 @@ def log_false_alarm_probability(p_d: ArrayLike, d: ArrayLike) -> FloatArray:
     ndarray
         ``ln p_f``, accurate to full relative precision however small ``p_f`` is.
 
+    Raises
+    ------
+    ValueError
+        If ``d`` is negative or an input is not finite.
+
     Examples
     --------
     >>> round(float(np.exp(log_false_alarm_probability(0.5, 0.0))), 12)
@@ -127,7 +184,30 @@ def log_false_alarm_probability(p_d: ArrayLike, d: ArrayLike) -> FloatArray:
 
 @implements("ATC10 D.17")
 def false_alarm_probability(p_d: ArrayLike, d: ArrayLike) -> FloatArray:
-    """``p_f = Q(d - Phi^{-1}(p_d))`` (ATC-10 Eq. D.17); see :func:`log_false_alarm_probability`."""
+    """``p_f = Q(d - Phi^{-1}(p_d))`` (ATC-10 Eq. D.17); see :func:`log_false_alarm_probability`.
+
+    Parameters
+    ----------
+    p_d : array_like
+        Detection probability the threshold is set for, in (0, 1).
+    d : array_like
+        Normalised signal amplitude (signal-to-noise ratio in amplitude).
+
+    Returns
+    -------
+    ndarray
+        False-alarm probability.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (D.17).
+
+    Examples
+    --------
+    >>> f"{float(false_alarm_probability(0.5, 4.0)):.4e}"
+    '3.1671e-05'
+    """
     return np.exp(log_false_alarm_probability(p_d, d))
 
 
@@ -135,6 +215,33 @@ def log_detection_probability(threshold: ArrayLike, d: ArrayLike) -> FloatArray:
     """``ln P(d + n > threshold)`` for unit-variance Gaussian ``n`` (``ln Q(threshold - d)``).
 
     With ``d = 0`` it is the log false-alarm probability of the same threshold.
+
+    Parameters
+    ----------
+    threshold : array_like
+        Normalised threshold.
+    d : array_like
+        Normalised signal amplitude.
+
+    Returns
+    -------
+    ndarray
+        Natural log of the probability (finite far into the tail).
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Appendix D.
+
+    Examples
+    --------
+    >>> round(float(log_detection_probability(40.0, 0.0)), 2)
+    -804.61
     """
     th = as_finite_array("threshold", threshold)
     dd = as_finite_array("d", d)
@@ -142,7 +249,30 @@ def log_detection_probability(threshold: ArrayLike, d: ArrayLike) -> FloatArray:
 
 
 def detection_probability(threshold: ArrayLike, d: ArrayLike) -> FloatArray:
-    """``P(d + n > threshold) = Q(threshold - d)``; see :func:`log_detection_probability`."""
+    """``P(d + n > threshold) = Q(threshold - d)``; see :func:`log_detection_probability`.
+
+    Parameters
+    ----------
+    threshold : array_like
+        Normalised threshold (in units of the noise standard deviation).
+    d : array_like
+        Normalised signal amplitude (same unit).
+
+    Returns
+    -------
+    ndarray
+        Detection probability.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Appendix D.
+
+    Examples
+    --------
+    >>> round(float(detection_probability(0.0, 0.0)), 6), round(float(detection_probability(1.0, 3.0)), 6)
+    (0.5, 0.97725)
+    """
     return np.exp(log_detection_probability(threshold, d))
 
 

@@ -60,7 +60,13 @@ class CumulantGenerating(Protocol):
 
 @dataclass(frozen=True)
 class NegatedCGF:
-    """The CGF of -S from that of S: mu~(g) = mu(-g) (used for the p_d side, Eq. 3.5.9)."""
+    """The CGF of -S from that of S: mu~(g) = mu(-g) (used for the p_d side, Eq. 3.5.9).
+
+    Attributes
+    ----------
+    base : CumulantGenerating
+        The CGF of S.
+    """
 
     base: CumulantGenerating
 
@@ -76,7 +82,15 @@ class NegatedCGF:
 
 @dataclass(frozen=True)
 class TailBound:
-    """A bound on ln P(S >= t) with the tilt parameter that produced it."""
+    """A bound on ln P(S >= t) with the tilt parameter that produced it.
+
+    Attributes
+    ----------
+    log_p : float
+        Natural log of the bound on ``P(S >= t)``.
+    parameter : float
+        The tilt that produced it.
+    """
 
     log_p: float
     parameter: float
@@ -139,10 +153,36 @@ def gallager_log_tails_lower(cgf: CumulantGenerating, t: ArrayLike) -> tuple[Flo
 
 @implements("ATC10 3.5.5", "ATC10 3.5.6", "ATC10 3.5.7")
 def chernoff_log_tail(cgf: CumulantGenerating, t: float) -> TailBound:
-    """Chernoff bound ln P(S >= t) <= mu(r*) - r* t, r* >= 0 optimal (ATC-10 Eqs. 3.5.5-3.5.7).
+    """Chernoff bound ``ln P(S >= t) <= mu(r*) - r* t``, ``r* >= 0`` optimal (ATC-10 Eqs. 3.5.5-3.5.7).
 
-    mu is convex, so mu(r) - r t is minimised where mu'(r) = t; for t <= E S the minimum is
-    at r = 0 (the bound is 1). If mu'(r) never reaches t the tail is empty (-inf).
+    mu is convex, so ``mu(r) - r t`` is minimised where ``mu'(r) = t``; for ``t <= E S`` the
+    minimum is at ``r = 0`` (the bound is 1). If ``mu'(r)`` never reaches ``t`` the tail is
+    empty (``-inf``).
+
+    Parameters
+    ----------
+    cgf : CumulantGenerating
+        Object with ``cgf(s)``, ``cgf_d1(s)`` and ``cgf_d2(s)`` of the noise sum S.
+    t : float
+        Threshold (units of S).
+
+    Returns
+    -------
+    TailBound
+        ``log_p``, the natural log of the bound, and the optimal tilt ``parameter`` r*.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eqs. (3.5.5)-(3.5.7).
+
+    Examples
+    --------
+    >>> from navcore.detection.multiple_access import MultipleAccessNoise, UniformDensity
+    >>> noise = MultipleAccessNoise(100, 0.01, UniformDensity(0.3))
+    >>> b = chernoff_log_tail(noise, 0.5)
+    >>> round(b.log_p, 4), round(b.parameter, 4)
+    (-0.2046, 0.7969)
     """
     logp, r = chernoff_log_tails(cgf, [t])
     return TailBound(float(logp[0]), float(r[0]))
@@ -150,12 +190,37 @@ def chernoff_log_tail(cgf: CumulantGenerating, t: float) -> TailBound:
 
 @implements("ATC10 3.5.14")
 def gallager_log_tail_lower(cgf: CumulantGenerating, t: float) -> TailBound:
-    """Tilted-Chebyshev lower bound on ln P(S >= t) (Eq. 3.5.14 as corrected, erratum E3-1).
+    """Tilted-Chebyshev lower bound on ``ln P(S >= t)`` (Eq. 3.5.14 as corrected, erratum E3-1).
 
-    Tilt by r1 chosen so that mu'(r1) - sqrt(2 mu''(r1)) = t. Under the tilted law S has
-    mean mu'(r1) and variance mu''(r1); by Chebyshev it lies in (t, t + 2 sqrt(2 mu''))
-    with probability >= 1/2, and there the likelihood ratio is at least
-    exp(mu(r1) - r1 (t + 2 sqrt(2 mu''(r1)))).
+    Tilt by r1 chosen so that ``mu'(r1) - sqrt(2 mu''(r1)) = t``. Under the tilted law S has
+    mean ``mu'(r1)`` and variance ``mu''(r1)``; by Chebyshev it lies in
+    ``(t, t + 2 sqrt(2 mu''))`` with probability >= 1/2, and there the likelihood ratio is at
+    least ``exp(mu(r1) - r1 (t + 2 sqrt(2 mu''(r1))))``.
+
+    Parameters
+    ----------
+    cgf : CumulantGenerating
+        Object with ``cgf(s)``, ``cgf_d1(s)`` and ``cgf_d2(s)`` of the noise sum S.
+    t : float
+        Threshold (units of S).
+
+    Returns
+    -------
+    TailBound
+        ``log_p``, the natural log of the lower bound, and the tilt ``parameter`` r1.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (3.5.14) and erratum E3-1.
+
+    Examples
+    --------
+    >>> from navcore.detection.multiple_access import MultipleAccessNoise, UniformDensity
+    >>> noise = MultipleAccessNoise(100, 0.01, UniformDensity(0.3))
+    >>> lower = gallager_log_tail_lower(noise, 0.5).log_p
+    >>> round(lower, 4), lower <= chernoff_log_tail(noise, 0.5).log_p
+    (-9.1678, True)
     """
     logp, r = gallager_log_tails_lower(cgf, [t])
     return TailBound(float(logp[0]), float(r[0]))
@@ -163,21 +228,107 @@ def gallager_log_tail_lower(cgf: CumulantGenerating, t: float) -> TailBound:
 
 @implements("ATC10 3.5.13")
 def roc_upper_bound(cgf: CumulantGenerating, theta: ArrayLike) -> tuple[FloatArray, FloatArray]:
-    """Worst-case ROC (Eq. 3.5.13): (ln of the upper bound to p_f, ln of the upper bound to 1 - p_d)."""
+    """Worst-case ROC (Eq. 3.5.13): ln upper bounds to ``p_f`` and to ``1 - p_d``.
+
+    Parameters
+    ----------
+    cgf : CumulantGenerating
+        Object with ``cgf(s)``, ``cgf_d1(s)`` and ``cgf_d2(s)`` of the noise sum S.
+    theta : array_like
+        Thresholds (relative to the unit peak).
+
+    Returns
+    -------
+    log_pf : ndarray
+        ln of the upper bound to ``p_f``.
+    log_miss : ndarray
+        ln of the upper bound to ``1 - p_d``.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (3.5.13).
+
+    Examples
+    --------
+    >>> from navcore.detection.multiple_access import MultipleAccessNoise, UniformDensity
+    >>> noise = MultipleAccessNoise(100, 0.01, UniformDensity(0.3))
+    >>> lpf, lmiss = roc_upper_bound(noise, [0.5])
+    >>> round(float(lpf[0]), 4)
+    -0.2046
+    """
     th = np.atleast_1d(np.asarray(theta, dtype=float))
     return chernoff_log_tails(cgf, th)[0], chernoff_log_tails(NegatedCGF(cgf), 1.0 - th)[0]
 
 
 @implements("ATC10 3.5.14")
 def roc_lower_bound(cgf: CumulantGenerating, theta: ArrayLike) -> tuple[FloatArray, FloatArray]:
-    """Best-case ROC (Eq. 3.5.14 corrected): (ln lower bound to p_f, ln lower bound to 1 - p_d)."""
+    """Best-case ROC (Eq. 3.5.14 corrected): ln lower bounds to ``p_f`` and to ``1 - p_d``.
+
+    Parameters
+    ----------
+    cgf : CumulantGenerating
+        Object with ``cgf(s)``, ``cgf_d1(s)`` and ``cgf_d2(s)`` of the noise sum S.
+    theta : array_like
+        Thresholds (relative to the unit peak).
+
+    Returns
+    -------
+    log_pf : ndarray
+        ln of the lower bound to ``p_f``.
+    log_miss : ndarray
+        ln of the lower bound to ``1 - p_d``.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (3.5.14) and erratum E3-1.
+
+    Examples
+    --------
+    >>> from navcore.detection.multiple_access import MultipleAccessNoise, UniformDensity
+    >>> noise = MultipleAccessNoise(100, 0.01, UniformDensity(0.3))
+    >>> lpf, lmiss = roc_lower_bound(noise, [0.5])
+    >>> round(float(lpf[0]), 4)
+    -9.1678
+    """
     th = np.atleast_1d(np.asarray(theta, dtype=float))
     return gallager_log_tails_lower(cgf, th)[0], gallager_log_tails_lower(NegatedCGF(cgf), 1.0 - th)[0]
 
 
 @implements("ATC10 3.7.1")
 def quasi_optimal_amplitude(power: float, n_aircraft: int, tau_over_alpha: float) -> float:
-    """a = sqrt(p alpha / ((N-1) 2 tau)): the atoms +-a of the optimal density (Eq. 3.7.1)."""
+    """``a = sqrt(p alpha / ((N-1) 2 tau))``: the atoms +-a of the optimal density (Eq. 3.7.1).
+
+    Parameters
+    ----------
+    power : float
+        Total cross-term noise power ``p`` (``> 0``).
+    n_aircraft : int
+        Number of aircraft ``N`` (``>= 2``).
+    tau_over_alpha : float
+        ``tau/alpha`` (dimensionless).
+
+    Returns
+    -------
+    float
+        Atom amplitude ``a`` (relative to the unit peak).
+
+    Raises
+    ------
+    ValueError
+        If ``power`` is not positive.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (3.7.1).
+
+    Examples
+    --------
+    >>> round(quasi_optimal_amplitude(0.05, 100, 0.01), 6)
+    0.15891
+    """
     require_positive("power", power)
     return float(np.sqrt(power / ((n_aircraft - 1) * 2.0 * tau_over_alpha)))
 
@@ -186,10 +337,36 @@ def quasi_optimal_amplitude(power: float, n_aircraft: int, tau_over_alpha: float
 def quasi_optimal_chernoff_parameter(
     theta: ArrayLike, power: float, n_aircraft: int, tau_over_alpha: float
 ) -> FloatArray:
-    """Closed-form optimal rho for the two-point density (Eq. 3.7.23, with 1 - 2 tau/alpha).
+    """Closed-form optimal rho for the two-point density (Eq. 3.7.23, with ``1 - 2 tau/alpha``).
 
-    Solves A sinh x - B cosh x = C with x = rho a, A = (N-1) q a, B = theta q,
-    C = theta (1 - q): x = asinh(C / sqrt(A^2 - B^2)) + atanh(B / A).
+    Solves ``A sinh x - B cosh x = C`` with ``x = rho a``, ``A = (N-1) q a``, ``B = theta q``,
+    ``C = theta (1 - q)``: ``x = asinh(C / sqrt(A^2 - B^2)) + atanh(B / A)``.
+
+    Parameters
+    ----------
+    theta : array_like
+        Detection threshold, relative to the unit signal peak.
+    power : float
+        Noise power ``p`` per interferer, relative to the unit peak (``> 0``).
+    n_aircraft : int
+        Number of aircraft ``N``.
+    tau_over_alpha : float
+        Pulse duration over repetition period, ``tau/alpha`` (dimensionless).
+
+    Returns
+    -------
+    ndarray
+        Optimal Chernoff parameter ``rho``.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (3.7.23).
+
+    Examples
+    --------
+    >>> round(float(quasi_optimal_chernoff_parameter(0.5, 0.05, 100, 0.01)), 4)
+    7.9187
     """
     th = np.asarray(theta, dtype=float)
     q = 2.0 * tau_over_alpha
@@ -204,9 +381,35 @@ def quasi_optimal_chernoff_parameter(
 def quasi_optimal_exponent(
     theta: ArrayLike, power: float, n_aircraft: int, tau_over_alpha: float
 ) -> FloatArray:
-    """Expf = rho theta - (N-1) ln(1 - q + q cosh(rho a)) at the optimal rho (Eqs. 3.7.21, 3.7.24).
+    """``Expf = rho theta - (N-1) ln(1 - q + q cosh(rho a))`` at the optimal rho (Eqs. 3.7.21, 3.7.24).
 
-    Expd is the same function of 1 - theta (Eq. 3.7.25).
+    Expd is the same function of ``1 - theta`` (Eq. 3.7.25).
+
+    Parameters
+    ----------
+    theta : array_like
+        Detection threshold, relative to the unit signal peak.
+    power : float
+        Noise power ``p`` per interferer, relative to the unit peak (``> 0``).
+    n_aircraft : int
+        Number of aircraft ``N``.
+    tau_over_alpha : float
+        Pulse duration over repetition period, ``tau/alpha`` (dimensionless).
+
+    Returns
+    -------
+    ndarray
+        Chernoff exponent of the false-alarm probability, nats.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eqs. (3.7.21), (3.7.24)-(3.7.25).
+
+    Examples
+    --------
+    >>> round(float(quasi_optimal_exponent(0.5, 0.05, 100, 0.01)), 4)
+    2.1895
     """
     th = np.asarray(theta, dtype=float)
     q = 2.0 * tau_over_alpha
@@ -221,9 +424,37 @@ def quasi_optimal_exponent(
 def quasi_optimal_exponent_approx(
     theta: ArrayLike, power: float, n_aircraft: int, tau_over_alpha: float
 ) -> FloatArray:
-    """The large-N approximation (3.7.26)/(3.7.27): N for N-1, the atanh term and 1-q in the ratio dropped.
+    """The large-N approximation (3.7.26)/(3.7.27).
 
-    Expf ~ theta sqrt(N q / p) asinh(u) - N ln(1 - q + q sqrt(1 + u^2)), u = theta / sqrt(N q p).
+    N for N-1, the atanh term and ``1 - q`` in the ratio dropped:
+    ``Expf ~ theta sqrt(N q / p) asinh(u) - N ln(1 - q + q sqrt(1 + u^2))``,
+    ``u = theta / sqrt(N q p)``.
+
+    Parameters
+    ----------
+    theta : array_like
+        Detection threshold, relative to the unit signal peak.
+    power : float
+        Noise power ``p`` per interferer, relative to the unit peak (``> 0``).
+    n_aircraft : int
+        Number of aircraft ``N``.
+    tau_over_alpha : float
+        Pulse duration over repetition period, ``tau/alpha`` (dimensionless).
+
+    Returns
+    -------
+    ndarray
+        Approximate exponent, nats.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eqs. (3.7.26)-(3.7.27).
+
+    Examples
+    --------
+    >>> round(float(quasi_optimal_exponent_approx(0.5, 0.05, 100, 0.01)), 4)
+    2.1912
     """
     th = np.asarray(theta, dtype=float)
     q = 2.0 * tau_over_alpha
@@ -235,9 +466,37 @@ def quasi_optimal_exponent_approx(
 
 @implements("ATC10 3.8.3")
 def gaussian_roc(theta: ArrayLike, power: float) -> tuple[FloatArray, FloatArray]:
-    """ROC_g (Eq. 3.8.3) in logs: (ln p_f, ln(1 - p_d)).
+    """ROC_g (Eq. 3.8.3) in logs: ``(ln p_f, ln(1 - p_d))``.
 
-    p_f = Q(theta/sqrt(P)) and 1 - p_d = Q((1-theta)/sqrt(P)).
+    Parameters
+    ----------
+    theta : array_like
+        Threshold (relative to the unit peak).
+    power : float
+        Gaussian noise power ``p`` (``> 0``).
+
+    Returns
+    -------
+    log_pf : ndarray
+        ``ln p_f = ln Q(theta / sqrt(p))``.
+    log_miss : ndarray
+        ``ln(1 - p_d) = ln Q((1 - theta) / sqrt(p))``.
+
+    Raises
+    ------
+    ValueError
+        If ``power`` is not positive.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (3.8.3).
+
+    Examples
+    --------
+    >>> lpf, lmiss = gaussian_roc(0.5, 0.05)
+    >>> round(float(lpf), 4), round(float(lmiss), 4)
+    (-4.3682, -4.3682)
     """
     require_positive("power", power)
     th = np.asarray(theta, dtype=float)
@@ -247,7 +506,35 @@ def gaussian_roc(theta: ArrayLike, power: float) -> tuple[FloatArray, FloatArray
 
 @implements("ATC10 3.8.8", "ATC10 3.8.5", "ATC10 3.8.6", "ATC10 3.8.7")
 def gaussian_chernoff_exponent(threshold: ArrayLike, power: float) -> FloatArray:
-    """Expfg = theta^2/(2p) (Eq. 3.8.8); the optimal tilt is mu = theta/p (Eqs. 3.8.5-3.8.7)."""
+    """``Expfg = theta^2/(2p)`` (Eq. 3.8.8); the optimal tilt is ``mu = theta/p`` (Eqs. 3.8.5-3.8.7).
+
+    Parameters
+    ----------
+    threshold : array_like
+        Threshold ``theta`` (relative to the unit peak).
+    power : float
+        Gaussian noise power ``p`` (``> 0``).
+
+    Returns
+    -------
+    ndarray
+        Chernoff exponent, nats.
+
+    Raises
+    ------
+    ValueError
+        If ``power`` is not positive.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eqs. (3.8.5)-(3.8.8).
+
+    Examples
+    --------
+    >>> round(float(gaussian_chernoff_exponent(0.5, 0.05)), 6)
+    2.5
+    """
     require_positive("power", power)
     return np.asarray(threshold, dtype=float) ** 2 / (2.0 * power)
 
@@ -256,11 +543,34 @@ def gaussian_chernoff_exponent(threshold: ArrayLike, power: float) -> FloatArray
 def exponent_from_gaussian_exponent(
     n_aircraft: ArrayLike, tau_over_alpha: ArrayLike, exp_g: ArrayLike
 ) -> FloatArray:
-    """Exp(N, tau/alpha, Exp_g) of Eq. (3.8.16) (with Exp_g/(N tau/alpha), erratum E3-9).
+    """``Exp(N, tau/alpha, Exp_g)`` of Eq. (3.8.16) (with ``Exp_g/(N tau/alpha)``, erratum E3-9).
 
-    Exp = sqrt(4 N tau/alpha Exp_g) asinh(sqrt(u)) - N ln(1 - 2tau/alpha + (2tau/alpha) sqrt(1+u)),
-    u = Exp_g / (N tau/alpha). It is the approximate quasi-optimal exponent (3.7.26) with
-    theta eliminated through Exp_g = theta^2/(2p).
+    ``Exp = sqrt(4 N tau/alpha Exp_g) asinh(sqrt(u)) - N ln(1 - 2tau/alpha + (2tau/alpha) sqrt(1+u))``,
+    theta eliminated through ``Exp_g = theta^2/(2p)``.
+
+    Parameters
+    ----------
+    n_aircraft : array_like
+        Number of aircraft ``N``.
+    tau_over_alpha : array_like
+        ``tau/alpha`` (dimensionless).
+    exp_g : array_like
+        Gaussian exponent ``Exp_g`` (nats).
+
+    Returns
+    -------
+    ndarray
+        Exponent of the quasi-optimal density, nats.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (3.8.16) and erratum E3-9.
+
+    Examples
+    --------
+    >>> round(float(exponent_from_gaussian_exponent(100, 0.01, 2.5)), 4)
+    2.1912
     """
     n = np.asarray(n_aircraft, dtype=float)
     r = np.asarray(tau_over_alpha, dtype=float)
@@ -274,7 +584,32 @@ def exponent_from_gaussian_exponent(
 def exponent_from_gaussian_exponent_large_n(
     n_aircraft: ArrayLike, tau_over_alpha: ArrayLike, exp_g: ArrayLike
 ) -> FloatArray:
-    """First-order large-N expansion of (3.8.16): Exp_g - Exp_g^2 (1 - 6 tau/alpha) / (12 N tau/alpha)."""
+    """First-order large-N expansion of (3.8.16): ``Exp_g - Exp_g^2 (1 - 6 tau/alpha) / (12 N tau/alpha)``.
+
+    Parameters
+    ----------
+    n_aircraft : array_like
+        Number of aircraft ``N``.
+    tau_over_alpha : array_like
+        ``tau/alpha`` (dimensionless).
+    exp_g : array_like
+        Gaussian exponent (nats).
+
+    Returns
+    -------
+    ndarray
+        Approximate exponent, nats.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (3.8.16) (expanded).
+
+    Examples
+    --------
+    >>> round(float(exponent_from_gaussian_exponent_large_n(100, 0.01, 2.5)), 4)
+    2.0104
+    """
     n = np.asarray(n_aircraft, dtype=float)
     r = np.asarray(tau_over_alpha, dtype=float)
     g = np.asarray(exp_g, dtype=float)

@@ -100,7 +100,33 @@ Schedule = Callable[[int], Sequence[Measurement]]
 
 
 def embedding(filter_layout: StateLayout, truth_layout: StateLayout) -> NDArray[np.int64]:
-    """Truth-state index of each filter state (blocks matched by name and size)."""
+    """Truth-state index of each filter state (blocks matched by name and size).
+
+    Parameters
+    ----------
+    filter_layout : StateLayout
+        Filter states.
+    truth_layout : StateLayout
+        Truth states (a superset of the filter blocks).
+
+    Returns
+    -------
+    (n_f,) ndarray of int
+        ``idx[i]`` is the truth index of filter state ``i`` (the matrix :math:`E` of the module
+        docstring as an index map).
+
+    Raises
+    ------
+    ValueError
+        If a filter block is not a truth block of the same size.
+
+    Examples
+    --------
+    >>> from navcore.inertial.error_dynamics import ins_error_layout
+    >>> truth = ins_error_layout("position", "velocity", "misalignment", "gyro drift")
+    >>> embedding(ins_error_layout("position", "gyro drift"), truth)
+    array([ 0,  1,  2,  9, 10, 11])
+    """
     if not filter_layout.issubset(truth_layout):
         raise ValueError("filter_layout must be a subset of truth_layout (same block names and sizes)")
     idx = [np.arange(truth_layout.size)[truth_layout.slice(b.name)] for b in filter_layout.blocks]
@@ -222,7 +248,39 @@ def run_covariance_analysis(
 
     Returns
     -------
-    CovarianceAnalysis, or a list of them for a batch of sources
+    CovarianceAnalysis or list of CovarianceAnalysis
+        Variances of the true error and of the filter's own estimate per step (state
+        units squared), horizontal position (m) and velocity (m/s) 1-sigma, update counts,
+        snapshots and final covariances; a list (one per source) for a batch of sources.
+
+    Raises
+    ------
+    ValueError
+        If ``sources`` is empty or a batch disagrees in its Gauss-Markov constants, a
+        covariance has the wrong shape or is not symmetric positive semi-definite, the
+        filter layout is not part of the truth layout, or ``relinearize_every`` is not
+        positive.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",
+    Sec. 2.6 (covariance analysis); Gelb (1974), Sec. 7.2 (reference 1 of the module).
+
+    Examples
+    --------
+    An unaided INS with an accelerometer bias of 1 mg (1-sigma) per axis: after 60 s the
+    horizontal position error is close to ``sqrt(2) b t^2 / 2``.
+
+    >>> import numpy as np
+    >>> from navcore.inertial.error_dynamics import ErrorSources, initial_covariance, ins_error_layout
+    >>> from navcore.inertial.imu import ImuSpec
+    >>> from navcore.inertial.trajectories import straight_and_level
+    >>> lay = ins_error_layout("position", "velocity", "misalignment", "accel bias")
+    >>> src = ErrorSources(imu=ImuSpec("example", accel_bias=1e-3))
+    >>> P0 = initial_covariance(lay, src)
+    >>> res = run_covariance_analysis(straight_and_level(60.0), lay, lay, src, P0)
+    >>> round(float(res.horizontal_position[-1]), 2)
+    2.54
     """
     batch = not isinstance(sources, ErrorSources)
     src_list: list[ErrorSources] = [sources] if isinstance(sources, ErrorSources) else list(sources)
@@ -416,13 +474,32 @@ def discrete_noise(F: ArrayLike, S: ArrayLike, dt: float) -> Array:
 
     The 3-point rule integrates polynomials of degree 5 exactly, i.e. every term of the
     integrand up to the third power of ``F s``; the neglected terms are of relative size
-    ``(|F| dt)^6``. ``S`` may be a stack
-    ``(B, n, n)`` of noise PSDs.
+    ``(|F| dt)^6``.
+
+    Parameters
+    ----------
+    F : (n, n) array
+        Continuous-time system matrix, 1/s.
+    S : (n, n) or (B, n, n) array
+        White-noise PSD ``G Q G^T`` (state unit squared per second), or a stack of them.
+    dt : float
+        Step, s.
+
+    Returns
+    -------
+    ndarray
+        Discrete process-noise covariance over ``dt``, same shape as ``S``, exactly symmetric.
+
+    Notes
+    -----
+    The discretisation of the module docstring (Maybeck 1979, Ch. 4, reference 2 of the
+    module).
 
     Examples
     --------
     A double integrator driven by white acceleration of PSD ``q``:
 
+    >>> import numpy as np
     >>> Q = discrete_noise([[0.0, 1.0], [0.0, 0.0]], [[0.0, 0.0], [0.0, 2.0]], 0.5)
     >>> np.allclose(Q, 2.0 * np.array([[0.5**3 / 3, 0.5**2 / 2], [0.5**2 / 2, 0.5]]))
     True
@@ -438,7 +515,26 @@ def discrete_noise(F: ArrayLike, S: ArrayLike, dt: float) -> Array:
 
 
 def taylor_transition(F: ArrayLike, dt: float, order: int = 4) -> Array:
-    """Transition ``sum_{j <= order} (F dt)^j / j!`` (Horner form).
+    r"""Transition ``sum_{j <= order} (F dt)^j / j!`` (Horner form).
+
+    Parameters
+    ----------
+    F : (n, n) array
+        Continuous-time system matrix, 1/s.
+    dt : float
+        Step, s.
+    order : int, default 4
+        Highest power kept (4 is exact for the nilpotent INS error chains).
+
+    Returns
+    -------
+    (n, n) ndarray
+        Truncated series of :math:`e^{F\,dt}`.
+
+    Notes
+    -----
+    The discretisation of the module docstring (Maybeck 1979, Ch. 4, reference 2 of the
+    module).
 
     Examples
     --------
@@ -454,9 +550,43 @@ def taylor_transition(F: ArrayLike, dt: float, order: int = 4) -> Array:
 
 
 def concatenate_analyses(parts: Sequence[CovarianceAnalysis]) -> CovarianceAnalysis:
-    """Join consecutive analyses (each resumed from the previous one's final covariances)
-    into one time series; a part's first sample, equal to the previous part's last, is
-    dropped."""
+    """Join consecutive analyses into one time series.
+
+    Each part is resumed from the previous one's final covariances; a part's first sample,
+    equal to the previous part's last, is dropped.
+
+    Parameters
+    ----------
+    parts : sequence of CovarianceAnalysis
+        Analyses in time order, each starting where the previous ends.
+
+    Returns
+    -------
+    CovarianceAnalysis
+        The joined analysis (snapshot indices shifted to the joined time axis; final
+        covariances of the last part).
+
+    Raises
+    ------
+    ValueError
+        If ``parts`` is empty or not consecutive in time.
+
+    Examples
+    --------
+    >>> import dataclasses
+    >>> import numpy as np
+    >>> from navcore.inertial.error_dynamics import ErrorSources, ins_error_layout
+    >>> from navcore.inertial.imu import ImuSpec
+    >>> from navcore.inertial.trajectories import straight_and_level
+    >>> lay = ins_error_layout("position", "velocity", "misalignment")
+    >>> src = ErrorSources(imu=ImuSpec("example", accel_bias=1e-3))
+    >>> tr = straight_and_level(20.0, dt=1.0)
+    >>> a = run_covariance_analysis(tr, lay, lay, src, np.eye(9))
+    >>> later = dataclasses.replace(tr, t=tr.t + tr.t[-1])  # the next 20 s
+    >>> b = run_covariance_analysis(later, lay, lay, src, a.final_true)
+    >>> len(concatenate_analyses([a, b]).t) == 2 * len(a.t) - 1
+    True
+    """
     if not parts:
         raise ValueError("parts must not be empty")
     for a, b in itertools.pairwise(parts):
@@ -498,6 +628,15 @@ class SatelliteGeometry:
     """Line-of-sight unit vectors (NED) and elevations of tracked channels over a trajectory.
 
     ``u_ned[k, c]`` points from the vehicle to the satellite of channel ``c`` at step ``k``.
+
+    Attributes
+    ----------
+    prn : (c,) ndarray of int
+        PRN of each channel.
+    u_ned : (N, c, 3) ndarray
+        Unit line-of-sight vectors in NED.
+    elevation : (N, c) ndarray
+        Elevations, rad.
     """
 
     prn: NDArray[np.int64]
@@ -508,8 +647,31 @@ class SatelliteGeometry:
 def satellite_geometry(
     trajectory: Trajectory, constellation: Constellation, channels: Sequence[int]
 ) -> SatelliteGeometry:
-    """Vectorised line-of-sight geometry of the satellites ``channels`` (indices into the
-    constellation) along ``trajectory``."""
+    """Vectorised line-of-sight geometry of satellites along a trajectory.
+
+    Parameters
+    ----------
+    trajectory : Trajectory
+        Sampled flight path (geodetic latitude and longitude in rad, height in m).
+    constellation : Constellation
+        Satellite orbits.
+    channels : sequence of int
+        Indices into the constellation of the tracked satellites.
+
+    Returns
+    -------
+    SatelliteGeometry
+        PRNs, NED unit vectors from vehicle to satellite ``(N, c, 3)`` and elevations ``(N, c)``
+        in rad.
+
+    Examples
+    --------
+    >>> from navcore.gnss.constellation import nominal_gps_constellation
+    >>> from navcore.inertial.trajectories import straight_and_level
+    >>> geo = satellite_geometry(straight_and_level(2.0), nominal_gps_constellation(), [0, 1])
+    >>> geo.u_ned.shape, geo.elevation.shape
+    ((3, 2, 3), (3, 2))
+    """
     ch = np.asarray(channels, dtype=np.int64)
     lat, lon, h = trajectory.lat, trajectory.lon, trajectory.h
     from navcore.frames import geodetic_to_ecef
@@ -544,16 +706,31 @@ def lock_table(
     Parameters
     ----------
     t : (N,) array
-        Times (s).
+        Times, s.
     n_channels : int
+        Number of receiver channels.
     events : sequence of ``(time, channel, "code" | "carrier", locked)``
-        From ``time`` on, the channel's code or carrier is (un)locked.
+        From ``time`` (s) on, the channel's code or carrier is (un)locked.
     start_locked : bool, default True
         Lock state of every channel before its first event.
 
     Returns
     -------
-    code, carrier : (N, n_channels) bool arrays
+    code : (N, n_channels) bool ndarray
+        Code lock per step and channel.
+    carrier : (N, n_channels) bool ndarray
+        Carrier lock per step and channel.
+
+    Raises
+    ------
+    ValueError
+        If an event's kind is not ``"code"`` or ``"carrier"``.
+
+    Examples
+    --------
+    >>> code, carrier = lock_table([0.0, 1.0, 2.0], 2, [(1.0, 0, "carrier", False)])
+    >>> carrier.tolist()
+    [[True, True], [False, True], [False, True]]
     """
     t = np.asarray(t, dtype=float)
     code = np.full((t.size, n_channels), start_locked)
@@ -581,16 +758,63 @@ def tightly_coupled_schedule(
 ) -> Schedule:
     """Pseudorange (code lock) and range rate (carrier lock) from each channel every ``every`` steps.
 
-    ``g_load`` (specific-force magnitude in g at each step) enters the range-rate rows
-    through the clock's g-sensitivity state, consistently with the clock-bias dynamics.
+    Rows (truth layout): ``d rho = -u . dr + db + b_pr[c]``, ``d rho_dot = -u . dv + d(b_dot) + b_rr[c]``,
+    with ``u`` the NED line-of-sight unit vector to the satellite, ``dr`` (m) and ``dv`` (m/s)
+    the NED position and velocity errors, ``db`` the clock bias error (m) and ``d(b_dot)`` the
+    clock drift error (m/s). ``g_load`` enters the range-rate rows through the clock's
+    g-sensitivity state, consistently with the clock-bias dynamics.
 
-    Rows (truth layout): ``d rho = -u . dr + db + b_pr[c]``, ``d rho_dot = -u . dv + d(b_dot) + b_rr[c]``.
+    Parameters
+    ----------
+    layout : StateLayout
+        Truth layout (needs ``"position"`` and ``"velocity"``; clock, bias and g-sensitivity
+        blocks enter when present).
+    geometry : SatelliteGeometry
+        Line-of-sight vectors and elevations of the channels.
+    code : (N, n_channels) bool array
+        Code lock per step and channel.
+    carrier : (N, n_channels) bool array
+        Carrier lock per step and channel.
+    pseudorange_noise : float
+        1-sigma white pseudorange noise per measurement, m (``> 0``).
+    range_rate_noise : float
+        1-sigma white range-rate noise per measurement, m/s (``> 0``).
+    every : int, default 1
+        Measure at every ``every``-th step.
+    mask_rad : float, default 0.0
+        Elevation mask, rad.
+    g_load : (N,) array, optional
+        Specific-force magnitude at each step, in g (dimensionless).
 
-    ``pseudorange_noise`` is the 1-sigma white pseudorange noise in metres and
-    ``range_rate_noise`` the 1-sigma white range-rate noise in m/s, per measurement (the
-    diagonal of R is their squares); ``u`` is the NED line-of-sight unit vector to the
-    satellite, ``dr`` (m) and ``dv`` (m/s) the NED position and velocity errors, ``db`` the
-    clock bias error (m) and ``d(b_dot)`` the clock drift error (m/s).
+    Returns
+    -------
+    callable
+        Schedule ``k -> list[Measurement]`` (one measurement with a pseudorange row per
+        code-locked and a range-rate row per carrier-locked channel).
+
+    Raises
+    ------
+    ValueError
+        If ``pseudorange_noise`` or ``range_rate_noise`` is not positive.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",
+    Sec. 2.2 (tightly coupled architecture).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from navcore.inertial.error_dynamics import ins_error_layout
+    >>> lay = ins_error_layout("position", "velocity", "misalignment")
+    >>> u = np.array([[0.0, 0.0, -1.0], [0.6, 0.0, -0.8], [-0.6, 0.0, -0.8], [0.0, 0.6, -0.8],
+    ...               [0.0, -0.6, -0.8]])
+    >>> geo = SatelliteGeometry(np.arange(1, 6), u[None], np.arcsin(-u[None, :, 2]))
+    >>> lock = np.ones((1, 5), dtype=bool)
+    >>> m = tightly_coupled_schedule(lay, geo, lock, lock, pseudorange_noise=5.0,
+    ...                              range_rate_noise=0.1)(0)[0]
+    >>> m.H.shape
+    (10, 9)
     """
     require_positive("pseudorange_noise", pseudorange_noise)
     require_positive("range_rate_noise", range_rate_noise)
@@ -649,14 +873,62 @@ def loosely_coupled_schedule(
     max_ehe_m: float = 100.0,
     mask_rad: float = 0.0,
 ) -> Schedule:
-    """The receiver's position solution every ``interval_steps`` steps, if >= 4 codes are
-    tracked and the expected horizontal error is below ``max_ehe_m``.
+    """The receiver's position solution every ``interval_steps`` steps.
 
-    The receiver solves position and clock by least squares from the tracked pseudoranges,
-    ``dr_meas = (G^T G)^{-1} G^T (b_pr + noise)`` with ``G = [-u, 1]``: its position error is
-    the position rows of that map applied to the per-channel biases (truth states) and to
-    the noise, so the measurement is correlated with the pseudorange-bias states exactly as
-    in the tightly coupled case. EHE is ``sigma_UERE * HDOP``.
+    A fix is used when at least four codes are tracked and the expected horizontal error is
+    below ``max_ehe_m``. The receiver solves position and clock by least squares from the
+    tracked pseudoranges, ``dr_meas = (G^T G)^{-1} G^T (b_pr + noise)`` with ``G = [-u, 1]``: its
+    position error is the position rows of that map applied to the per-channel biases (truth
+    states) and to the noise, so the measurement is correlated with the pseudorange-bias
+    states exactly as in the tightly coupled case. EHE is ``sigma_UERE * HDOP``.
+
+    Parameters
+    ----------
+    layout : StateLayout
+        Truth layout (needs ``"position"``; a ``"pseudorange bias"`` block enters when
+        present).
+    geometry : SatelliteGeometry
+        Line-of-sight vectors and elevations of the channels.
+    code : (N, n_channels) bool array
+        Code lock per step and channel (see :func:`lock_table`).
+    pseudorange_noise : float
+        1-sigma white pseudorange noise, m (``> 0``).
+    pseudorange_bias_sigma : float, default 0.0
+        1-sigma per-channel pseudorange bias, m (counts in the UERE of the EHE test).
+    interval_steps : int, default 10
+        Steps between fixes.
+    max_ehe_m : float, default 100.0
+        Largest expected horizontal error accepted, m.
+    mask_rad : float, default 0.0
+        Elevation mask, rad.
+
+    Returns
+    -------
+    callable
+        Schedule ``k -> list[Measurement]`` (one 3-row position measurement per fix).
+
+    Raises
+    ------
+    ValueError
+        If ``pseudorange_noise`` is not positive or ``pseudorange_bias_sigma`` is negative.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",
+    Sec. 2.1 (loosely coupled architecture).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from navcore.inertial.error_dynamics import ins_error_layout
+    >>> lay = ins_error_layout("position", "velocity", "misalignment")
+    >>> u = np.array([[0.0, 0.0, -1.0], [0.6, 0.0, -0.8], [-0.6, 0.0, -0.8], [0.0, 0.6, -0.8],
+    ...               [0.0, -0.6, -0.8]])
+    >>> geo = SatelliteGeometry(np.arange(1, 6), u[None], np.arcsin(-u[None, :, 2]))
+    >>> lock = np.ones((1, 5), dtype=bool)
+    >>> m = loosely_coupled_schedule(lay, geo, lock, pseudorange_noise=5.0)(0)[0]
+    >>> m.H.shape, round(float(m.R[2, 2]), 2)
+    ((3, 9), 781.25)
     """
     require_positive("pseudorange_noise", pseudorange_noise)
     require_nonnegative("pseudorange_bias_sigma", pseudorange_bias_sigma)
@@ -692,7 +964,41 @@ def loosely_coupled_schedule(
 
 
 def baro_schedule(layout: StateLayout, *, noise_m: float, every: int = 1) -> Schedule:
-    """Barometric altitude: ``dz = -dr_D - b_alt + noise`` (height = minus down)."""
+    """Barometric altitude: ``dz = -dr_D - b_alt + noise`` (height = minus down).
+
+    Parameters
+    ----------
+    layout : StateLayout
+        Truth layout the rows refer to (needs a ``"position"`` block; an ``"altimeter bias"``
+        block, if present, enters the row).
+    noise_m : float
+        1-sigma white altitude noise, m (``> 0``).
+    every : int, default 1
+        Measure at every ``every``-th step.
+
+    Returns
+    -------
+    callable
+        Schedule ``k -> list[Measurement]`` (one 1-row measurement on the steps it measures).
+
+    Raises
+    ------
+    ValueError
+        If ``noise_m`` is not positive.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",
+    Sec. 2.6 (baro-aided INS).
+
+    Examples
+    --------
+    >>> from navcore.inertial.error_dynamics import ins_error_layout
+    >>> lay = ins_error_layout("position", "velocity", "misalignment")
+    >>> m = baro_schedule(lay, noise_m=3.0, every=10)
+    >>> len(m(5)), m(10)[0].H[0, :3], m(10)[0].R
+    (0, array([ 0.,  0., -1.]), array([[9.]]))
+    """
     require_positive("noise_m", noise_m)
     H = np.zeros((1, layout.size))
     H[0, layout.index("position", 2)] = -1.0
@@ -715,15 +1021,54 @@ def doppler_schedule(
     every: int = 1,
     active: NDArray[np.bool_] | None = None,
 ) -> Schedule:
-    """Doppler ground velocity in body axes.
+    r"""Doppler ground velocity in body axes.
 
-    With the computed attitude :math:`\\hat C^n_b = (I-[\\psi\\times])C^n_b`, the INS-predicted
+    With the computed attitude :math:`\hat C^n_b = (I-[\psi\times])C^n_b`, the INS-predicted
     body velocity minus the Doppler reading is
 
     .. math::
 
-        \\delta z = C^b_n\\,\\delta v - C^b_n [v^n\\times]\\,\\psi - b_d - \\mathrm{diag}(v^b)\\,s_d
-        - [v^b\\times]\\,\\mu_d + w.
+        \delta z = C^b_n\,\delta v - C^b_n [v^n\times]\,\psi - b_d - \mathrm{diag}(v^b)\,s_d
+        - [v^b\times]\,\mu_d + w.
+
+    Parameters
+    ----------
+    layout : StateLayout
+        Truth layout (needs ``"velocity"`` and ``"misalignment"``; the Doppler bias, scale
+        factor and misalignment blocks enter when present).
+    trajectory : Trajectory
+        Flight path giving the attitude and velocity at each step.
+    noise_mps : float
+        1-sigma white noise per body axis, m/s (``> 0``).
+    every : int, default 1
+        Measure at every ``every``-th step.
+    active : (N,) bool array, optional
+        Steps at which the Doppler is available (default: all).
+
+    Returns
+    -------
+    callable
+        Schedule ``k -> list[Measurement]`` (one 3-row measurement on the steps it measures).
+
+    Raises
+    ------
+    ValueError
+        If ``noise_mps`` is not positive.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",
+    Table 2.8 (Doppler-aided INS).
+
+    Examples
+    --------
+    >>> from navcore.inertial.trajectories import straight_and_level
+    >>> from navcore.inertial.error_dynamics import ins_error_layout
+    >>> lay = ins_error_layout("position", "velocity", "misalignment")
+    >>> tr = straight_and_level(10.0, speed=100.0)
+    >>> m = doppler_schedule(lay, tr, noise_mps=0.1)(0)[0]
+    >>> m.H.shape, round(float(m.R[0, 0]), 6)
+    ((3, 9), 0.01)
     """
     require_positive("noise_mps", noise_mps)
     n = layout.size
@@ -752,7 +1097,26 @@ def doppler_schedule(
 
 
 def combine_schedules(*schedules: Schedule | None) -> Schedule:
-    """A schedule that returns the measurements of all given schedules at each step."""
+    """A schedule that returns the measurements of all given schedules at each step.
+
+    Parameters
+    ----------
+    *schedules : callable or None
+        Schedules ``k -> list[Measurement]``; ``None`` entries are skipped.
+
+    Returns
+    -------
+    callable
+        Schedule returning, at step ``k``, the concatenated measurements of all schedules.
+
+    Examples
+    --------
+    >>> from navcore.inertial.error_dynamics import ins_error_layout
+    >>> lay = ins_error_layout("position", "velocity", "misalignment")
+    >>> both = combine_schedules(baro_schedule(lay, noise_m=3.0), None, baro_schedule(lay, noise_m=5.0))
+    >>> len(both(0))
+    2
+    """
     live = [s for s in schedules if s is not None]
 
     def sched(k: int) -> list[Measurement]:
@@ -765,13 +1129,37 @@ def combine_schedules(*schedules: Schedule | None) -> Schedule:
 
 
 def circular_error_probable(P2: ArrayLike, p: float = 0.5) -> float:
-    """Radius containing probability ``p`` of a zero-mean 2-D Gaussian with covariance ``P2``.
+    r"""Radius containing probability ``p`` of a zero-mean 2-D Gaussian with covariance ``P2``.
 
     With eigenvalues :math:`a, b` the probability inside radius :math:`r` is
-    :math:`\\frac{1}{2\\pi\\sqrt{ab}}\\int_0^{2\\pi}\\frac{1-e^{-r^2c(\\theta)/2}}{c(\\theta)}d\\theta`,
-    :math:`c = \\cos^2\\theta/a + \\sin^2\\theta/b`; the radius is found by bisection.
-    For a circular Gaussian the CEP is :math:`\\sigma\\sqrt{2\\ln 2}`:
+    :math:`\frac{1}{2\pi\sqrt{ab}}\int_0^{2\pi}\frac{1-e^{-r^2c(\theta)/2}}{c(\theta)}d\theta`,
+    :math:`c = \cos^2\theta/a + \sin^2\theta/b`; the radius is found by bisection.
 
+    Parameters
+    ----------
+    P2 : (2, 2) array
+        Horizontal covariance, m^2.
+    p : float, default 0.5
+        Probability inside the circle, in (0, 1); 0.5 gives the CEP.
+
+    Returns
+    -------
+    float
+        Radius, m.
+
+    Raises
+    ------
+    ValueError
+        If ``P2`` is not 2x2 or ``p`` is not in (0, 1).
+
+    Notes
+    -----
+    For a circular Gaussian the CEP is :math:`\sigma\sqrt{2\ln 2}` (Gelb 1974, reference 1 of
+    the module, for the error-ellipse probabilities).
+
+    Examples
+    --------
+    >>> import numpy as np
     >>> round(circular_error_probable(np.eye(2)), 6)
     1.17741
     """
@@ -796,8 +1184,41 @@ def circular_error_probable(P2: ArrayLike, p: float = 0.5) -> float:
 def best_geometry_channels(
     trajectory: Trajectory, constellation: Constellation, n: int = 4, mask_deg: float = 10.0
 ) -> NDArray[np.int64]:
-    """The ``n`` satellites with the smallest mean PDOP among those above ``mask_deg`` for
-    the whole trajectory (brute force over combinations of the always-visible satellites)."""
+    """The ``n`` satellites with the smallest mean PDOP above ``mask_deg`` for the whole trajectory.
+
+    Brute force over the combinations of the satellites that stay visible; the PDOP is
+    averaged over 12 epochs spread along the trajectory.
+
+    Parameters
+    ----------
+    trajectory : Trajectory
+        Sampled flight path.
+    constellation : Constellation
+        Satellite orbits.
+    n : int, default 4
+        Number of channels to choose (``> 0``).
+    mask_deg : float, default 10.0
+        Elevation mask, degrees.
+
+    Returns
+    -------
+    (n,) ndarray of int
+        Indices into the constellation of the chosen satellites.
+
+    Raises
+    ------
+    ValueError
+        If ``n`` is not positive, fewer than ``n`` satellites stay above the mask, or no
+        combination gives a usable geometry.
+
+    Examples
+    --------
+    >>> from navcore.gnss.constellation import nominal_gps_constellation
+    >>> from navcore.inertial.trajectories import straight_and_level
+    >>> tr = straight_and_level(60.0, speed=100.0, dt=10.0, lat0=0.5)
+    >>> best_geometry_channels(tr, nominal_gps_constellation(), n=4).size
+    4
+    """
     from itertools import combinations
 
     require_positive("n", n)

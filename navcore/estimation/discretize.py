@@ -56,6 +56,12 @@ def van_loan(F: ArrayLike, GQGt: ArrayLike, dt: float) -> tuple[NDArray[np.float
     Phi, Qd : arrays
         ``e^{F dt}`` and the (exactly symmetric) discrete covariance.
 
+    Raises
+    ------
+    ValueError
+        If ``F`` or ``GQGt`` is not square of the same size, ``GQGt`` is not symmetric
+        positive semi-definite, or ``dt`` is not positive.
+
     Examples
     --------
     A double integrator driven by white acceleration of PSD ``q`` gives
@@ -81,7 +87,36 @@ def van_loan(F: ArrayLike, GQGt: ArrayLike, dt: float) -> tuple[NDArray[np.float
 
 
 def first_order_transition(F: ArrayLike, dt: float) -> NDArray[np.float64]:
-    """The first-order approximation ``Phi = I + F dt`` of ``e^{F dt}``."""
+    """The first-order approximation ``Phi = I + F dt`` of ``e^{F dt}``.
+
+    Parameters
+    ----------
+    F : (n, n) array
+        Continuous-time system matrix (1/s, per the state's layout).
+    dt : float
+        Step, s (``dt > 0``).
+
+    Returns
+    -------
+    (n, n) ndarray
+        Approximate state-transition matrix over ``dt``.
+
+    Raises
+    ------
+    ValueError
+        If ``F`` is not square and finite or ``dt`` is not positive.
+
+    Notes
+    -----
+    The truncated series of the matrix exponential (Maybeck 1979, Ch. 4); adequate when
+    ``||F|| dt`` is small, as for an INS error model over a filter step.
+
+    Examples
+    --------
+    >>> first_order_transition([[0.0, 1.0], [0.0, 0.0]], 0.5)
+    array([[1. , 0.5],
+           [0. , 1. ]])
+    """
     F = require_square("F", F)
     require_positive("dt", dt)
     return np.eye(F.shape[0]) + F * dt

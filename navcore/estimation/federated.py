@@ -78,15 +78,39 @@ def lever_arm_velocity(
 ) -> tuple[Array, Array]:
     r"""Rigid-body map from navigation states to aperture velocity and its Jacobian (WF Eq. (10)).
 
-    ``T(x_N) = v + omega x r`` with ``x_N = [v, omega]`` (m/s, rad/s) and lever arm ``r`` (m),
-    all in one frame.
+    ``T(x_N) = v + omega x r`` with ``x_N = [v, omega]``, all in one frame.
+
+    Parameters
+    ----------
+    velocity : (3,) array
+        Velocity of the navigation reference point, m/s.
+    angular_rate : (3,) array
+        Angular rate of the body, rad/s.
+    lever_arm : (3,) array
+        Lever arm from the reference point to the aperture, m.
 
     Returns
     -------
-    v_aperture : (3,) array
+    v_aperture : (3,) ndarray
         Mapped velocity, m/s.
-    tau : (3, 6) array
-        :math:`\partial T/\partial\mathbf x_N = [\mathbf I,\; -[\mathbf r\times]]`.
+    tau : (3, 6) ndarray
+        :math:`\partial T/\partial\mathbf x_N = [\mathbf I,\; -[\mathbf r\times]]` (dimensionless
+        in its first three columns, m in its last three).
+
+    Raises
+    ------
+    ValueError
+        If an input is not a finite 3-vector.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eq. (10).
+
+    Examples
+    --------
+    >>> v, tau = lever_arm_velocity([100.0, 0.0, 0.0], [0.0, 0.0, 0.1], [2.0, 0.0, 0.0])
+    >>> v, tau.shape
+    (array([100. ,   0.2,   0. ]), (3, 6))
     """
     v = as_finite_array("velocity", velocity, ndim=1)
     w = as_finite_array("angular_rate", angular_rate, ndim=1)
@@ -101,6 +125,37 @@ def navigation_mapped_covariance(tau: ArrayLike, P_N: ArrayLike, Q_T: ArrayLike)
     :math:`\mathbf P_{DN}=\boldsymbol\tau\mathbf P_N\boldsymbol\tau^T+\mathbf Q_T`.
 
     Assumes the mapping uncertainty :math:`\mathbf w_T` is independent of the navigation error.
+
+    Parameters
+    ----------
+    tau : (m, k) array
+        Jacobian of the map from navigation states to the local state (e.g. the second output
+        of :func:`lever_arm_velocity`).
+    P_N : (k, k) array
+        Covariance of the navigation states (their units squared).
+    Q_T : (m, m) array
+        Covariance of the mapping uncertainty, (m/s)^2.
+
+    Returns
+    -------
+    (m, m) ndarray
+        Covariance of the mapped local state, (m/s)^2.
+
+    Raises
+    ------
+    ValueError
+        If the shapes disagree, an array is not finite, or ``P_N`` or ``Q_T`` is not symmetric
+        positive semi-definite.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eq. (11).
+
+    Examples
+    --------
+    >>> P = navigation_mapped_covariance([[1.0, 2.0]], [[1.0, 0.0], [0.0, 0.25]], [[0.5]])
+    >>> round(float(P[0, 0]), 4)
+    2.5
     """
     tau = as_finite_array("tau", tau, ndim=2)
     P_N = require_symmetric_psd("P_N", P_N)
@@ -118,8 +173,44 @@ def accelerometer_predict(
     """Time update of the accelerometer-integration filter (WF Eqs. (13)-(14), first lines).
 
     It propagates the process model of WF Eq. (12), ``x(k+1) = x(k) + y_a(k) Ts + w_a(k) Ts``
-    with ``Cov w_a = Q_a``: ``x- = x + y_a Ts`` and ``P- = P + Q_a Ts^2``; ``accel`` in m/s^2,
-    ``Q_a`` in (m/s^2)^2.
+    with ``Cov w_a = Q_a``: ``x- = x + y_a Ts`` and ``P- = P + Q_a Ts^2``.
+
+    Parameters
+    ----------
+    x : (n,) array
+        Velocity estimate, m/s.
+    P : (n, n) array
+        Its covariance, (m/s)^2 (symmetric positive semi-definite).
+    accel : (n,) array
+        Measured acceleration ``y_a``, m/s^2.
+    Q_a : (n, n) array
+        Covariance of the accelerometer noise ``w_a``, (m/s^2)^2.
+    Ts : float
+        Sample interval, s (``> 0``).
+
+    Returns
+    -------
+    x_pred : (n,) ndarray
+        Predicted velocity, m/s.
+    P_pred : (n, n) ndarray
+        Predicted covariance, (m/s)^2.
+
+    Raises
+    ------
+    ValueError
+        If ``Ts`` is not positive, an array is not finite or has the wrong shape, or ``P`` or
+        ``Q_a`` is not symmetric positive semi-definite.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eqs. (12)-(14).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> x, P = accelerometer_predict([1.0], [[0.04]], [0.5], [[0.01]], 0.1)
+    >>> round(float(x[0]), 4), round(float(P[0, 0]), 4)
+    (1.05, 0.0401)
     """
     require_positive("Ts", Ts)
     x = as_finite_array("x", x, ndim=1)
@@ -134,8 +225,39 @@ def local_velocity_update(x: ArrayLike, P: ArrayLike, y_L: ArrayLike, R_L: Array
     """Measurement update with a direct local velocity measurement (WF Eq. (13), corrected).
 
     The measurement model is the second line of WF Eq. (12), ``y_L = x + v_L`` with
-    ``Cov v_L = R_L`` (m/s and (m/s)^2). The innovation is ``y_L - x-`` (a velocity); WF Eq. (13)
-    prints ``y_a - x-``. The posterior information is ``P-^-1 + R_L^-1`` (WF Eq. (14), second line).
+    ``Cov v_L = R_L``. The innovation is ``y_L - x-`` (a velocity); WF Eq. (13) prints
+    ``y_a - x-``. The posterior information is ``P-^-1 + R_L^-1`` (WF Eq. (14), second line).
+
+    Parameters
+    ----------
+    x : (n,) array
+        Prior velocity, m/s.
+    P : (n, n) array
+        Its covariance, (m/s)^2.
+    y_L : (n,) array
+        Local velocity measurement, m/s.
+    R_L : (n, n) array
+        Its noise covariance, (m/s)^2 (positive definite).
+
+    Returns
+    -------
+    KalmanUpdate
+        Posterior velocity and covariance, gain, innovation (m/s) and its covariance.
+
+    Raises
+    ------
+    ValueError
+        As :func:`navcore.estimation.kalman.kf_update`.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eqs. (12)-(14).
+
+    Examples
+    --------
+    >>> up = local_velocity_update([0.0], [[1.0]], [1.0], [[1.0]])
+    >>> round(float(up.x[0]), 4), round(float(up.P[0, 0]), 4)
+    (0.5, 0.5)
     """
     x = as_finite_array("x", x, ndim=1)
     return kf_update(x, P, y_L, np.eye(x.size), R_L)
@@ -160,6 +282,11 @@ def accelerometer_steady_state_isotropic(sigma_a: float, Ts: float, sigma_L: flo
         ``prior`` = P(k/k-1), ``posterior`` = P(k/k) in (m/s)^2, and the gain. For
         ``sigma_a Ts << sigma_L`` the posterior is close to ``sigma_a Ts sigma_L``.
 
+    Raises
+    ------
+    ValueError
+        If ``sigma_a``, ``Ts`` or ``sigma_L`` is not positive.
+
     Examples
     --------
     >>> ss = accelerometer_steady_state_isotropic(1e-3, 0.02, 0.2)
@@ -178,6 +305,39 @@ def accelerometer_steady_state(Q_a: ArrayLike, R_L: ArrayLike, Ts: float) -> tup
 
     Solves the filter Riccati equation for ``Phi = I, Q = Q_a Ts^2, H = I, R = R_L`` with
     ``scipy.linalg.solve_discrete_are``.
+
+    Parameters
+    ----------
+    Q_a : (n, n) array
+        Covariance of the accelerometer noise, (m/s^2)^2.
+    R_L : (n, n) array
+        Covariance of the local velocity measurement, (m/s)^2 (positive definite).
+    Ts : float
+        Sample interval, s (``> 0``).
+
+    Returns
+    -------
+    prior : (n, n) ndarray
+        Steady-state prior covariance, (m/s)^2.
+    posterior : (n, n) ndarray
+        Steady-state posterior covariance, (m/s)^2.
+
+    Raises
+    ------
+    ValueError
+        If ``Ts`` is not positive, ``Q_a`` is not symmetric positive semi-definite or ``R_L``
+        not positive definite.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eq. (14).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> prior, post = accelerometer_steady_state(np.eye(2), np.eye(2), 1.0)
+    >>> round(float(prior[0, 0]), 4), round(float(post[0, 0]), 4)
+    (1.618, 0.618)
     """
     require_positive("Ts", Ts)
     Q = require_symmetric_psd("Q_a", Q_a) * Ts**2
@@ -195,7 +355,40 @@ def gps_doppler_update(
 ) -> KalmanUpdate:
     """Single-step GPS-Doppler update of the accelerometer prior (WF Eq. (16)).
 
-    ``y_G = H_G x + v_G`` (WF Eq. (15)) with ``H_G`` in Hz per (m/s) and ``R_G`` in Hz^2.
+    ``y_G = H_G x + v_G`` (WF Eq. (15)).
+
+    Parameters
+    ----------
+    x_prior : (n,) array
+        Prior velocity, m/s.
+    P_prior : (n, n) array
+        Its covariance, (m/s)^2.
+    y_G : (m,) array
+        Doppler measurement, Hz.
+    H_G : (m, n) array
+        Doppler measurement matrix, Hz per (m/s).
+    R_G : (m, m) array
+        Doppler noise covariance, Hz^2 (positive definite).
+
+    Returns
+    -------
+    KalmanUpdate
+        Posterior velocity and covariance, gain, innovation (Hz) and its covariance.
+
+    Raises
+    ------
+    ValueError
+        As :func:`navcore.estimation.kalman.kf_update`.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eqs. (15)-(16).
+
+    Examples
+    --------
+    >>> up = gps_doppler_update([0.0], [[1.0]], [2.0], [[2.0]], [[4.0]])
+    >>> round(float(up.x[0]), 4), round(float(up.P[0, 0]), 4)
+    (0.5, 0.5)
     """
     return kf_update(x_prior, P_prior, y_G, H_G, R_G)
 
@@ -205,6 +398,35 @@ def gps_doppler_covariance(P_prior: ArrayLike, H_G: ArrayLike, R_G: ArrayLike) -
     r"""Information-form covariance after the GPS-Doppler update (WF Eq. (17)).
 
     :math:`\mathbf P_{DG}=[\mathbf P^{-1} + \mathbf H_G^T\mathbf R_G^{-1}\mathbf H_G]^{-1}`.
+
+    Parameters
+    ----------
+    P_prior : (n, n) array
+        Prior velocity covariance, (m/s)^2 (positive definite).
+    H_G : (m, n) array
+        Doppler measurement matrix, Hz per (m/s).
+    R_G : (m, m) array
+        Doppler noise covariance, Hz^2 (positive definite).
+
+    Returns
+    -------
+    (n, n) ndarray
+        Posterior covariance, (m/s)^2.
+
+    Raises
+    ------
+    ValueError
+        If ``P_prior`` or ``R_G`` is not symmetric positive definite or ``H_G`` is not a
+        finite matrix.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eq. (17).
+
+    Examples
+    --------
+    >>> round(float(gps_doppler_covariance([[1.0]], [[2.0]], [[4.0]])[0, 0]), 4)
+    0.5
     """
     P = require_symmetric_psd("P_prior", P_prior, definite=True)
     H = as_finite_array("H_G", H_G, ndim=2)
@@ -268,6 +490,12 @@ def federated_fusion(
         :math:`(\sum_i\mathbf P_i^{-1})^{-1}`, the true covariance only if the local errors are
         uncorrelated.
 
+    Raises
+    ------
+    ValueError
+        If ``estimates`` and ``covariances`` are empty or differ in length, an estimate is
+        not finite, or the estimators left after outages do not observe every state.
+
     Examples
     --------
     >>> import numpy as np
@@ -292,12 +520,42 @@ def federated_fusion(
 
 @implements("WF 20")
 def fused_error_covariance(covariances: Sequence[ArrayLike | float | None], joint: ArrayLike) -> Array:
-    r"""True covariance of the fused error given the joint local-error covariance (WF Eq. (20)).
+    """True covariance of the fused error given the joint local-error covariance (WF Eq. (20)).
 
     ``Cov = P_D [P_1^-1 ... P_N^-1] P [P_1^-1 ... P_N^-1]^T P_D``, where ``P`` is the
     ``(N n) x (N n)`` joint covariance of the stacked local errors, whose ``(i, j)`` block is the
     cross-covariance of estimators ``i`` and ``j`` (WF prints the (2, 3) block as ``P_NG``; it is
     ``P_LG``). Blocks belonging to outages are ignored (zero weight).
+
+    Parameters
+    ----------
+    covariances : sequence of (n, n) array, float or None
+        Covariance of each local estimator, (m/s)^2; ``None``, a scalar or an infinite
+        diagonal marks an outage.
+    joint : (N n, N n) array
+        Joint covariance of the stacked local errors, (m/s)^2 (symmetric positive
+        semi-definite once outage blocks are zeroed).
+
+    Returns
+    -------
+    (n, n) ndarray
+        Covariance of the fused error, (m/s)^2.
+
+    Raises
+    ------
+    ValueError
+        If ``joint`` has the wrong shape or is not symmetric positive semi-definite.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eq. (20).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> C = fused_error_covariance([[[1.0]], [[1.0]]], [[1.0, 1.0], [1.0, 1.0]])
+    >>> round(float(C[0, 0]), 4)
+    1.0
     """
     n = _state_size(covariances)
     infos = _informations(covariances, n)
@@ -325,6 +583,37 @@ def feasible_weights(
     (WF Eq. (22)); with ``sigmas``: :math:`s_i=\sqrt{\sigma_i}` (Remark (i)); by default
     :math:`s_i=\sqrt{\sigma_{\max}(\mathbf P_i)}`. Then :math:`k_i=\sum_j s_j/s_i`, which always
     satisfies :math:`\sum_i 1/k_i = 1`. Outages get ``k_i = inf`` (their term vanishes).
+
+    Parameters
+    ----------
+    covariances : sequence of (n, n) array, float or None
+        Covariance of each local estimator, (m/s)^2; ``None``, a scalar or an infinite
+        diagonal marks an outage.
+    directions : sequence of (n,) array, optional
+        Non-zero direction :math:`\mathbf z_i` per estimator (WF Eq. (22)).
+    sigmas : (N,) array, optional
+        Positive variances :math:`\sigma_i`, (m/s)^2, per estimator (Remark (i)).
+
+    Returns
+    -------
+    (N,) ndarray
+        Weights :math:`k_i` (dimensionless), ``inf`` for outages.
+
+    Raises
+    ------
+    ValueError
+        If a direction is zero, not finite or of the wrong length, or a sigma is not positive.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eq. (22) and
+    Remark (i).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> feasible_weights([np.eye(2), 4.0 * np.eye(2)])
+    array([3. , 1.5])
     """
     n = _state_size(covariances)
     active = [
@@ -358,6 +647,27 @@ def optimal_weights(covariances: Sequence[ArrayLike | float | None]) -> Array:
     trace of the bound equals :func:`minkowski_trace_bound` (the middle term of WF Eq. (23)).
     They are an instance of WF Eq. (22) with suitably scaled :math:`\mathbf z_i`, but in general
     not of Remark (i)'s choice with :math:`\sigma_j` inside the spectrum of :math:`\mathbf P_j`.
+
+    Parameters
+    ----------
+    covariances : sequence of (n, n) array, float or None
+        Covariance of each local estimator, (m/s)^2; ``None``, a scalar or an infinite
+        diagonal marks an outage.
+
+    Returns
+    -------
+    (N,) ndarray
+        Weights :math:`k_i` (dimensionless), ``inf`` for outages.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eqs. (21)-(23).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> optimal_weights([np.eye(2), 4.0 * np.eye(2)])
+    array([1.5, 3. ])
     """
     n = _state_size(covariances)
     infos = _informations(covariances, n)
@@ -375,6 +685,36 @@ def federated_covariance_bound(
 
     Holds for any joint covariance of the local errors whenever :math:`k_i > 0` and
     :math:`\sum_i 1/k_i \le 1` (default weights: :func:`feasible_weights`).
+
+    Parameters
+    ----------
+    covariances : sequence of (n, n) array, float or None
+        Covariance of each local estimator, (m/s)^2; ``None``, a scalar or an infinite
+        diagonal marks an outage.
+    weights : (N,) array, optional
+        Weights :math:`k_i` (dimensionless); default :func:`feasible_weights`.
+
+    Returns
+    -------
+    (n, n) ndarray
+        Bound on the covariance of the fused error, (m/s)^2.
+
+    Raises
+    ------
+    ValueError
+        If ``weights`` has the wrong length, a non-positive entry, or
+        :math:`\sum_i 1/k_i > 1`.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eq. (21).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> B = federated_covariance_bound([np.eye(2), np.eye(2)])
+    >>> np.round(np.diag(B), 4)
+    array([1., 1.])
     """
     n = _state_size(covariances)
     infos = _informations(covariances, n)
@@ -397,6 +737,28 @@ def minkowski_trace_bound(covariances: Sequence[ArrayLike | float | None]) -> fl
 
     Bounds :math:`E\|\mathbf x_D-\hat{\mathbf x}_D\|^2` for any correlation between the local
     errors; it equals the trace of WF Eq. (21) minimised over the weights.
+
+    Parameters
+    ----------
+    covariances : sequence of (n, n) array, float or None
+        Covariance of each local estimator, (m/s)^2; ``None``, a scalar or an infinite
+        diagonal marks an outage.
+
+    Returns
+    -------
+    float
+        Bound on the mean squared fused error, (m/s)^2.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eqs. (21),
+    (23).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> round(minkowski_trace_bound([np.eye(2), np.eye(2)]), 4)
+    2.0
     """
     n = _state_size(covariances)
     infos = _informations(covariances, n)
@@ -432,6 +794,10 @@ def federated_improvement_db(
     ------
     ValueError
         If ``reference_sigma`` is not positive or a covariance is not positive definite.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eq. (23).
 
     Examples
     --------

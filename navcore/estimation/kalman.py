@@ -54,7 +54,29 @@ Array = NDArray[np.float64]
 
 
 def symmetrize(P: ArrayLike) -> Array:
-    """Return ``(P + P^T) / 2``."""
+    """Return ``(P + P^T) / 2``, the symmetric part of a matrix (or a stack of matrices).
+
+    Parameters
+    ----------
+    P : (..., n, n) array
+        Square matrix or stack of square matrices.
+
+    Returns
+    -------
+    ndarray
+        The symmetric part, same shape as ``P``.
+
+    Notes
+    -----
+    Used after every covariance update so that round-off does not break the symmetry the
+    Kalman filter (Kalman 1960, reference 1 of the module) relies on.
+
+    Examples
+    --------
+    >>> symmetrize([[1.0, 2.0], [0.0, 1.0]])
+    array([[1., 1.],
+           [1., 1.]])
+    """
     P = np.asarray(P, dtype=float)
     return 0.5 * (P + np.swapaxes(P, -1, -2))
 
@@ -131,7 +153,21 @@ def kf_predict(
 
 
 class KalmanUpdate(NamedTuple):
-    """Result of a measurement update."""
+    """Result of a measurement update.
+
+    Attributes
+    ----------
+    x : (n,) ndarray
+        Posterior state.
+    P : (n, n) ndarray
+        Posterior covariance.
+    K : (n, m) ndarray
+        Kalman gain.
+    innovation : (m,) ndarray
+        ``z - H x`` (measurement units).
+    S : (m, m) ndarray
+        Innovation covariance ``H P H^T + R``.
+    """
 
     x: Array
     P: Array
@@ -222,14 +258,76 @@ def kf_update(
 
 
 def information_from_covariance(x: ArrayLike, P: ArrayLike) -> tuple[Array, Array]:
-    """Return the information vector ``y = P^-1 x`` and matrix ``Y = P^-1``."""
+    """Return the information vector ``y = P^-1 x`` and matrix ``Y = P^-1``.
+
+    Parameters
+    ----------
+    x : (n,) array
+        State estimate (units of the state's layout).
+    P : (n, n) array
+        Its covariance (symmetric positive definite).
+
+    Returns
+    -------
+    y : (n,) ndarray
+        Information vector ``P^-1 x``.
+    Y : (n, n) ndarray
+        Information matrix ``P^-1``, exactly symmetric.
+
+    Raises
+    ------
+    ValueError
+        If ``P`` is not symmetric positive definite or has a non-finite element.
+
+    Notes
+    -----
+    The information form of Maybeck (1979), Ch. 5 (reference 2 of the module).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> y, Y = information_from_covariance([1.0, 2.0], np.diag([0.5, 4.0]))
+    >>> y, np.diag(Y)
+    (array([2. , 0.5]), array([2.  , 0.25]))
+    """
     P = require_symmetric_psd("P", P, definite=True)
     Y = symmetrize(np.linalg.inv(P))
     return Y @ np.asarray(x, dtype=float), Y
 
 
 def covariance_from_information(y: ArrayLike, Y: ArrayLike) -> tuple[Array, Array]:
-    """Return ``x = Y^-1 y`` and ``P = Y^-1`` from information form."""
+    """Return the state ``x = Y^-1 y`` and covariance ``P = Y^-1`` from information form.
+
+    Parameters
+    ----------
+    y : (n,) array
+        Information vector ``P^-1 x`` (units of the state divided by its variance).
+    Y : (n, n) array
+        Information matrix ``P^-1`` (symmetric positive definite).
+
+    Returns
+    -------
+    x : (n,) ndarray
+        State estimate.
+    P : (n, n) ndarray
+        Its covariance, exactly symmetric.
+
+    Raises
+    ------
+    ValueError
+        If ``Y`` is not symmetric positive definite or has a non-finite element.
+
+    Notes
+    -----
+    The inverse of the information form of Maybeck (1979), Ch. 5 (reference 2 of the module).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> x, P = covariance_from_information([2.0, 1.0], np.diag([4.0, 1.0]))
+    >>> x, np.diag(P)
+    (array([0.5, 1. ]), array([0.25, 1.  ]))
+    """
     Y = require_symmetric_psd("Y", Y, definite=True)
     P = symmetrize(np.linalg.inv(Y))
     return P @ np.asarray(y, dtype=float), P
@@ -249,8 +347,37 @@ def information_update(
         Prior information vector ``P^-1 x``.
     Y : (n, n) array
         Prior information matrix ``P^-1`` (positive semi-definite).
-    z, H, R
-        Measurement, measurement matrix and noise covariance as in :func:`kf_update`.
+    z : (m,) array
+        Measurement (units of the rows of ``H``).
+    H : (m, n) array
+        Measurement matrix.
+    R : (m, m) array
+        Measurement-noise covariance (symmetric positive definite).
+
+    Returns
+    -------
+    y_post : (n,) ndarray
+        Posterior information vector.
+    Y_post : (n, n) ndarray
+        Posterior information matrix, exactly symmetric.
+
+    Raises
+    ------
+    ValueError
+        If an array has the wrong shape or a non-finite element, ``Y`` is not positive
+        semi-definite or ``R`` not positive definite.
+
+    Notes
+    -----
+    The information filter of Maybeck (1979), Ch. 5 (reference 2 of the module); it gives
+    the same posterior as :func:`kf_update` whenever the prior is proper.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> y, Y = information_update([0.0], [[0.0]], [3.0], [[1.0]], [[2.0]])
+    >>> y, Y
+    (array([1.5]), array([[0.5]]))
     """
     y = as_finite_array("y", y, ndim=1)
     n = y.size

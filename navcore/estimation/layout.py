@@ -125,7 +125,19 @@ def ins_block_name(name: str, *, argument: str = "name") -> InsBlock:
 
 @dataclass(frozen=True)
 class StateBlock:
-    """A named block of ``size`` consecutive states (``unit`` of each component)."""
+    """A named block of ``size`` consecutive states (``unit`` of each component).
+
+    Attributes
+    ----------
+    name : str
+        Block name (an :class:`InsBlock` value for INS error states).
+    size : int
+        Number of states.
+    unit : str
+        Unit of each component (e.g. ``"m"``, ``"rad"``).
+    description : str
+        Free text.
+    """
 
     name: str
     size: int
@@ -141,7 +153,15 @@ class StateBlock:
 
 @dataclass(frozen=True)
 class StateLayout:
-    """An ordered tuple of uniquely named :class:`~navcore.estimation.layout.StateBlock` objects."""
+    """An ordered tuple of uniquely named :class:`~navcore.estimation.layout.StateBlock` objects.
+
+    Attributes
+    ----------
+    blocks : tuple of StateBlock
+        The blocks in state order.
+    name : str
+        Name of the layout.
+    """
 
     blocks: tuple[StateBlock, ...]
     name: str = ""

@@ -41,6 +41,21 @@ class NuisanceLMMSE:
 
     ``x_hat = H (z - mu_eps) + mu_x`` and ``y_hat = K (z - mu_eps)`` with
     ``mu_eps = mu_n + F mu_x``. ``P_x_err`` is (H.16) and ``P_y_err`` is (H.8).
+
+    Attributes
+    ----------
+    H : (p, r) ndarray
+        Gain of the estimator of x (Eq. H.15).
+    K : (q, r) ndarray
+        Gain of the estimator of y (Eq. H.6).
+    P_x_err : (p, p) ndarray
+        Error covariance of x (Eq. H.16).
+    P_y_err : (q, q) ndarray
+        Error covariance of y (Eq. H.8).
+    mu_eps : (r,) ndarray
+        Mean of ``n + F x``.
+    mu_x : (p,) ndarray
+        Prior mean of x.
     """
 
     H: np.ndarray
@@ -70,12 +85,46 @@ def lmmse_with_nuisance(
 
     Parameters
     ----------
-    F, G : array (r x p), (r x q)
-        Observation matrices; G must have full column rank q (H.3).
-    mu_x, P_x : prior mean and covariance of x.
-    mu_n, P_n : noise mean and covariance.
-    P_xn : array (p x r), optional
+    F : (r, p) array
+        Observation matrix of the random vector x (units of z per unit of x).
+    G : (r, q) array
+        Observation matrix of the nonrandom vector y; must have full column rank q (H.3).
+    mu_x : (p,) array
+        Prior mean of x.
+    P_x : (p, p) array
+        Prior covariance of x.
+    mu_n : (r,) array
+        Noise mean (units of z).
+    P_n : (r, r) array
+        Noise covariance (units of z squared).
+    P_xn : (p, r) array, optional
         Cross-covariance ``E[(x - mu_x)(n - mu_n)']`` (default 0).
+
+    Returns
+    -------
+    NuisanceLMMSE
+        Gains ``H`` (of x) and ``K`` (of y), error covariances ``P_x_err`` and ``P_y_err``,
+        the mean ``mu_eps`` of ``n + F x`` and ``mu_x``.
+
+    Raises
+    ------
+    ValueError
+        If an array is not finite, ``G`` has a different number of rows from ``F`` or is
+        column-rank deficient, or the covariance of ``n + F x`` is not positive definite
+        (Eq. H.2).
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, ATC-10 (1972), Appendix H, Eqs. (H.5)-(H.8) and
+    (H.14)-(H.16).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> G = np.array([[1.0], [1.0], [1.0]])
+    >>> est = lmmse_with_nuisance([[1.0], [0.0], [0.0]], G, [0.0], [[1.0]], np.zeros(3), np.eye(3))
+    >>> round(float(est.P_x_err[0, 0]), 4), round(float(est.P_y_err[0, 0]), 4)
+    (0.6, 0.4)
     """
     F = np.atleast_2d(as_finite_array("F", F))
     G = np.atleast_2d(as_finite_array("G", G))
@@ -111,6 +160,44 @@ def lmmse_with_nuisance_information_form(
 
     ``P_x_err = [P_x^-1 + F'Pn^-1 F - F'Pn^-1 G (G'Pn^-1 G)^-1 G'Pn^-1 F]^-1`` and
     ``P_y_err = (G'Pn^-1 G)^-1 + (G'Pn^-1 G)^-1 G'Pn^-1 F P_x_err F'Pn^-1 G (G'Pn^-1 G)^-1``.
+
+    Parameters
+    ----------
+    F : (r, p) array
+        Observation matrix of the random vector x.
+    G : (r, q) array
+        Observation matrix of the nonrandom vector y (full column rank).
+    P_x : (p, p) array
+        Prior covariance of x (positive definite).
+    P_n : (r, r) array
+        Noise covariance (positive definite).
+
+    Returns
+    -------
+    P_x_err : (p, p) ndarray
+        Error covariance of the estimate of x.
+    P_y_err : (q, q) ndarray
+        Error covariance of the estimate of y.
+
+    Raises
+    ------
+    ValueError
+        If an array has a non-finite element.
+    numpy.linalg.LinAlgError
+        If ``P_x``, ``P_n`` or ``G' P_n^-1 G`` is singular.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, ATC-10 (1972), Appendix H, Eqs. (H.21)-(H.22); equal to
+    the covariances of :func:`lmmse_with_nuisance` when ``P_xn = 0``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> G = np.array([[1.0], [1.0], [1.0]])
+    >>> Px, Py = lmmse_with_nuisance_information_form([[1.0], [0.0], [0.0]], G, [[1.0]], np.eye(3))
+    >>> round(float(Px[0, 0]), 4), round(float(Py[0, 0]), 4)
+    (0.6, 0.4)
     """
     F = np.atleast_2d(as_finite_array("F", F))
     G = np.atleast_2d(as_finite_array("G", G))
@@ -131,6 +218,38 @@ def scalar_nuisance_gain(f: np.ndarray, G: np.ndarray, sigma: float, sigma_x: fl
     ``gamma = sigma_x^2 / (sigma^2 + sigma_x^2 f'(I - P_G) f)``; the error variance is
     ``sigma^2 gamma``. In ATC-10 Section 4 (f = 1, G = satellite matrix) this is
     ``gamma_n = s_n / (sigma^2 + beta s_n)``.
+
+    Parameters
+    ----------
+    f : (r,) array
+        Observation vector of the scalar x.
+    G : (r, q) array
+        Observation matrix of the nonrandom vector y.
+    sigma : float
+        Standard deviation of the white measurement noise (units of z, ``> 0``).
+    sigma_x : float
+        Prior standard deviation of x (units of x, ``> 0``).
+
+    Returns
+    -------
+    float
+        The gain ``gamma`` (per unit of z squared).
+
+    Raises
+    ------
+    ValueError
+        If ``sigma`` or ``sigma_x`` is not positive or an array is not finite.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, ATC-10 (1972), Appendix H, Eq. (H.26); the printed
+    numerator ``sigma^2`` is erratum E4-10, corrected here to ``sigma_x^2``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> round(scalar_nuisance_gain(np.ones(3), [[1.0], [0.0], [-1.0]], 1.0, 2.0), 4)
+    0.3077
     """
     require_positive("sigma", sigma)
     require_positive("sigma_x", sigma_x)

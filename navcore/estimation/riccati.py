@@ -37,7 +37,17 @@ __all__ = ["ScalarSteadyState", "scalar_riccati_iterate", "scalar_riccati_steady
 
 
 class ScalarSteadyState(NamedTuple):
-    """Steady-state variances and gain of a scalar Kalman filter."""
+    """Steady-state variances and gain of a scalar Kalman filter.
+
+    Attributes
+    ----------
+    prior : float
+        Prior variance ``P-`` (state unit squared).
+    posterior : float
+        Posterior variance ``P+``.
+    gain : float
+        Kalman gain ``K``.
+    """
 
     prior: float
     posterior: float
@@ -50,19 +60,36 @@ def scalar_riccati_steady_state(phi: float, q: float, h: float, r: float) -> Sca
     Parameters
     ----------
     phi : float
-        Transition coefficient.
+        Transition coefficient (dimensionless).
     q : float
-        Process-noise variance per step (``q > 0``; ``q = 0`` is allowed when
-        ``|phi| > 1`` is false, giving the trivial steady state 0).
+        Process-noise variance per step, in the state's unit squared (``q >= 0``; ``q = 0``
+        with ``|phi| <= 1`` gives the trivial steady state 0).
     h : float
-        Measurement coefficient (``h != 0``).
+        Measurement coefficient (``h != 0``; measurement unit per state unit).
     r : float
-        Measurement-noise variance (``r > 0``).
+        Measurement-noise variance, in the measurement's unit squared (``r > 0``).
 
     Returns
     -------
     ScalarSteadyState
         ``prior`` (P-), ``posterior`` (P+), ``gain`` K = P- h / (h^2 P- + r).
+
+    Raises
+    ------
+    ValueError
+        If ``phi`` is not finite, ``q`` is negative, ``r`` is not positive or ``h`` is zero or
+        not finite.
+
+    Notes
+    -----
+    The positive root of the steady-state scalar Riccati equation stated in the module
+    docstring (the fixed point of the Kalman filter's variance recursion, Kalman 1960).
+
+    Examples
+    --------
+    >>> s = scalar_riccati_steady_state(1.0, 1.0, 1.0, 1.0)
+    >>> print(f"{s.prior:.4f} {s.posterior:.4f} {s.gain:.4f}")
+    1.6180 0.6180 0.6180
     """
     require_finite("phi", phi)
     require_nonnegative("q", q)
@@ -90,6 +117,42 @@ def scalar_riccati_iterate(
     """Run the scalar Riccati recursion ``steps`` times from prior variance ``p0``.
 
     Used as the oracle for :func:`scalar_riccati_steady_state` in the tests.
+
+    Parameters
+    ----------
+    phi : float
+        Transition coefficient (dimensionless).
+    q : float
+        Process-noise variance per step (state unit squared, ``q >= 0``).
+    h : float
+        Measurement coefficient (measurement unit per state unit).
+    r : float
+        Measurement-noise variance (measurement unit squared, ``r > 0``).
+    p0 : float
+        Prior variance before the first update (state unit squared, ``p0 >= 0``).
+    steps : int
+        Number of update-and-predict steps (a count, bounded).
+
+    Returns
+    -------
+    ScalarSteadyState
+        ``prior`` after the last prediction, ``posterior`` and ``gain`` of the last update
+        (NaN for the latter two when ``steps`` is 0).
+
+    Raises
+    ------
+    ValueError
+        If ``p0`` or ``q`` is negative, ``r`` not positive, or ``steps`` not a valid count.
+
+    Notes
+    -----
+    The recursion of the module docstring, step by step.
+
+    Examples
+    --------
+    >>> s = scalar_riccati_iterate(1.0, 1.0, 1.0, 1.0, 0.0, 50)
+    >>> print(f"{s.prior:.4f} {s.gain:.4f}")
+    1.6180 0.6180
     """
     require_nonnegative("p0", p0)
     prior = float(p0)

@@ -51,7 +51,37 @@ Array = NDArray[np.float64]
 
 @implements("SP Table 2.7")
 def search_cells(sigma: ArrayLike, cell: float, n_sigma: float = 1.0) -> Array | int:
-    """Number of cells covering +-n_sigma*sigma: ceil(2 n_sigma sigma / cell), at least 1."""
+    """Number of cells covering +-n_sigma*sigma: ``ceil(2 n_sigma sigma / cell)``, at least 1.
+
+    Parameters
+    ----------
+    sigma : array_like
+        1-sigma uncertainty (``>= 0``; m, m/s or Hz, the unit of ``cell``).
+    cell : float
+        Cell width (``> 0``), same unit.
+    n_sigma : float, default 1.0
+        Half-width of the search region in sigmas (``> 0``).
+
+    Returns
+    -------
+    int or ndarray of int
+        Number of cells.
+
+    Raises
+    ------
+    ValueError
+        If ``cell`` or ``n_sigma`` is not positive or a ``sigma`` is negative.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",
+    Table 2.7 (the brackets of the search-time formula read as ceilings).
+
+    Examples
+    --------
+    >>> search_cells(1230.0, 30.0), search_cells(4.0, 10.0)
+    (82, 1)
+    """
     require_positive("cell", cell)
     require_positive("n_sigma", n_sigma)
     s = as_finite_array("sigma", sigma)
@@ -64,7 +94,36 @@ def search_cells(sigma: ArrayLike, cell: float, n_sigma: float = 1.0) -> Array |
 def search_time_from_cells(
     n_range: ArrayLike, n_doppler: ArrayLike = 1, dwell_s: float = 0.020
 ) -> Array | float:
-    """Search time (s): dwell per cell times the number of code-phase and Doppler cells."""
+    """Search time: dwell per cell times the number of code-phase and Doppler cells.
+
+    Parameters
+    ----------
+    n_range : array_like
+        Number of code-phase cells (``>= 1``).
+    n_doppler : array_like, default 1
+        Number of Doppler cells (``>= 1``).
+    dwell_s : float, default 0.020
+        Dwell per cell, s (``> 0``).
+
+    Returns
+    -------
+    float or ndarray
+        Search time, s.
+
+    Raises
+    ------
+    ValueError
+        If ``dwell_s`` is not positive or a cell count is below 1.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons", Sec. 2.5.
+
+    Examples
+    --------
+    >>> round(float(search_time_from_cells(82, 1, 0.02)), 3)
+    1.64
+    """
     require_positive("dwell_s", dwell_s)
     nr = as_finite_array("n_range", n_range)
     nd = as_finite_array("n_doppler", n_doppler)
@@ -84,7 +143,36 @@ def search_time(
     rate_cell_mps: float,
     n_sigma: float = 1.0,
 ) -> Array | float:
-    """Time (s) to search the +-n_sigma region (SP Sec. 2.5 Delta T, brackets read as ceilings).
+    """Time to search the +-n_sigma region (SP Sec. 2.5 Delta T, brackets read as ceilings).
+
+    Parameters
+    ----------
+    sigma_range_m : array_like
+        1-sigma range uncertainty, m (``>= 0``).
+    sigma_range_rate_mps : array_like
+        1-sigma range-rate uncertainty, m/s (``>= 0``).
+    dwell_s : float
+        Dwell per cell, s (``> 0``).
+    range_cell_m : float
+        Code-phase cell, m (``> 0``).
+    rate_cell_mps : float
+        Range-rate cell, m/s (``> 0``).
+    n_sigma : float, default 1.0
+        Half-width of the search region in sigmas.
+
+    Returns
+    -------
+    float or ndarray
+        Search time, s.
+
+    Raises
+    ------
+    ValueError
+        If a cell, the dwell or ``n_sigma`` is not positive or an uncertainty negative.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons", Sec. 2.5 and Table 2.7.
 
     Examples
     --------
@@ -98,27 +186,98 @@ def search_time(
 
 @implements("SP Sec. 2.5")
 def doppler_cell_hz(dwell_s: float) -> float:
-    """Frequency cell of a coherent dwell: 1/T (Hz)."""
+    """Frequency cell of a coherent dwell: ``1/T``.
+
+    Parameters
+    ----------
+    dwell_s : float
+        Coherent dwell, s (``> 0``).
+
+    Returns
+    -------
+    float
+        Doppler cell width, Hz.
+
+    Raises
+    ------
+    ValueError
+        If ``dwell_s`` is not positive.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",
+    Sec. 2.5 (acquisition search).
+
+    Examples
+    --------
+    >>> doppler_cell_hz(0.02)
+    50.0
+    """
     require_positive("dwell_s", dwell_s)
     return 1.0 / dwell_s
 
 
 def range_rate_from_doppler(doppler_hz: ArrayLike, wavelength_m: float) -> Array | float:
-    """Range rate (m/s) corresponding to a Doppler shift: f * lambda."""
+    """Range rate corresponding to a Doppler shift: ``f * lambda``.
+
+    Parameters
+    ----------
+    doppler_hz : array_like
+        Doppler shift, Hz.
+    wavelength_m : float
+        Carrier wavelength, m (``> 0``).
+
+    Returns
+    -------
+    float or ndarray
+        Range rate, m/s.
+
+    Raises
+    ------
+    ValueError
+        If ``wavelength_m`` is not positive or a shift is not finite.
+
+    Examples
+    --------
+    >>> round(float(range_rate_from_doppler(50.0, 0.2)), 6)
+    10.0
+    """
     require_positive("wavelength_m", wavelength_m)
     out = as_finite_array("doppler_hz", doppler_hz) * wavelength_m
     return float(out) if out.ndim == 0 else out
 
 
 def probability_outside_sigma_box(n_dims: int = 1, k: float = 1.0) -> float:
-    """Probability that an n-D standard Gaussian falls outside the +-k sigma box.
+    r"""Probability that an n-D standard Gaussian falls outside the +-k sigma box.
 
-    :math:`1 - (1 - 2\\Phi(-k))^n`, evaluated as ``-expm1(n log1p(-2 Phi(-k)))``.
+    :math:`1 - (1 - 2\Phi(-k))^n`, evaluated as ``-expm1(n log1p(-2 Phi(-k)))``.
+
+    Parameters
+    ----------
+    n_dims : int, default 1
+        Number of independent dimensions (``>= 1``).
+    k : float, default 1.0
+        Half-width of the box in standard deviations (``> 0``).
+
+    Returns
+    -------
+    float
+        Probability in [0, 1].
+
+    Raises
+    ------
+    ValueError
+        If ``n_dims`` is not a positive integer or ``k`` is not positive.
+
+    Notes
+    -----
+    The chance that a +-1 sigma search region of Schmidt & Phillips, Sec. 2.5, misses the
+    signal.
 
     Examples
     --------
-    >>> round(probability_outside_sigma_box(1), 4)
-    0.3173
+    >>> round(probability_outside_sigma_box(1), 4), round(probability_outside_sigma_box(2), 4)
+    (0.3173, 0.5339)
     """
     n = require_integer("n_dims", n_dims, minimum=1)
     require_positive("k", k)

@@ -65,6 +65,20 @@ def receiver_pva_layout() -> StateLayout:
     """States of a GPS receiver's own PVA Kalman filter (SP Table 2.1).
 
     Position, velocity and acceleration, the user clock, and an altimeter bias.
+
+    Returns
+    -------
+    StateLayout
+        Named blocks with sizes and units.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons", Table 2.1.
+
+    Examples
+    --------
+    >>> receiver_pva_layout().size
+    12
     """
     return StateLayout((PVA + CLOCK + ALTIMETER).blocks, "GPS receiver (PVA)")
 
@@ -75,6 +89,20 @@ def loosely_coupled_layout() -> StateLayout:
 
     The INS core errors, the IMU sensor errors and the altimeter bias; the clock stays in
     the receiver's filter, which is why it is absent here.
+
+    Returns
+    -------
+    StateLayout
+        Named blocks with sizes and units.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons", Table 2.2.
+
+    Examples
+    --------
+    >>> loosely_coupled_layout().size
+    22
     """
     return StateLayout((INS_CORE + IMU_ERRORS + ALTIMETER).blocks, "loosely coupled")
 
@@ -86,6 +114,20 @@ def tightly_coupled_layout() -> StateLayout:
     The loosely coupled states plus the user clock bias and drift, which the pseudorange and
     range-rate measurements observe directly. The paper's row order (clock after velocity)
     is kept.
+
+    Returns
+    -------
+    StateLayout
+        Named blocks with sizes and units.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons", Table 2.3.
+
+    Examples
+    --------
+    >>> tightly_coupled_layout().size - loosely_coupled_layout().size
+    2
     """
     core = INS_CORE.blocks
     return StateLayout(

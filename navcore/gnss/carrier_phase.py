@@ -85,16 +85,44 @@ def double_difference_phase(
     r_ai: ArrayLike,
     wavelength: float = GPS_L1_WAVELENGTH_M,
 ) -> Array:
-    """Double-difference carrier phase (rad) of KZL Eq. 15 from exact ranges.
+    """Double-difference carrier phase of KZL Eq. 15 from exact ranges.
 
     Parameters
     ----------
-    sat_m, sat_n : (..., 3) arrays
-        Positions of the master satellite m and satellite n (m), any common frame.
-    r_a0, r_ai : (..., 3) arrays
-        Positions of the master antenna A0 and antenna Ai (m).
-    wavelength : float
-        Carrier wavelength (m), L1 by default.
+    sat_m : (..., 3) array
+        Position of the master satellite m, m (any common frame).
+    sat_n : (..., 3) array
+        Position of satellite n, m.
+    r_a0 : (..., 3) array
+        Position of the master antenna A0, m.
+    r_ai : (..., 3) array
+        Position of antenna Ai, m.
+    wavelength : float, default GPS_L1_WAVELENGTH_M
+        Carrier wavelength, m (``> 0``).
+
+    Returns
+    -------
+    ndarray
+        Double-difference phase, rad (no integer ambiguity).
+
+    Raises
+    ------
+    ValueError
+        If ``wavelength`` is not positive or a position is not finite.
+
+    References
+    ----------
+    Knedlik, Zhou & Loffeld, "On Position and Attitude Estimation for Remote Sensing with
+    Bistatic SAR" (2009), Eq. (15).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> far = 2.0e7
+    >>> phi = double_difference_phase([0.0, 0.0, -far], [far, 0.0, 0.0], [0.0, 0.0, 0.0],
+    ...                               [0.1, 0.0, 0.0], wavelength=0.2)
+    >>> round(float(phi), 4)
+    -3.1416
     """
     require_positive("wavelength", wavelength)
     sm, sn = as_finite_array("sat_m", sat_m), as_finite_array("sat_n", sat_n)
@@ -110,23 +138,42 @@ def dd_observation_rows(
     baselines_b: ArrayLike,
     wavelength: float = GPS_L1_WAVELENGTH_M,
 ) -> Array:
-    """DD rows of KZL Eq. 17 (corrected: ``l_01`` in the first row, ``l_02`` in the second).
+    r"""DD rows of KZL Eq. 17 (corrected: ``l_01`` in the first row, ``l_02`` in the second).
 
     Parameters
     ----------
-    los_m, los_n : (3,) arrays
-        Unit LOS (NED) to the master satellite m and to satellite n.
+    los_m : (3,) array
+        Unit LOS (NED) to the master satellite m.
+    los_n : (3,) array
+        Unit LOS (NED) to satellite n.
     C_bn : (3, 3) array
-        Computed attitude :math:`\\hat R_b^n`.
+        Computed attitude :math:`\hat R_b^n`.
     baselines_b : (k, 3) array
-        Body baselines :math:`l^b_{0i}` (m).
-    wavelength : float
-        Carrier wavelength (m).
+        Body baselines :math:`l^b_{0i}`, m.
+    wavelength : float, default GPS_L1_WAVELENGTH_M
+        Carrier wavelength, m.
 
     Returns
     -------
-    H : (k, 17) array
-        Non-zero only in the misalignment columns.
+    H : (k, 17) ndarray
+        Non-zero only in the misalignment columns (rad of phase per rad of attitude error).
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite or has the wrong number of dimensions.
+
+    References
+    ----------
+    Knedlik, Zhou & Loffeld, "On Position and Attitude Estimation for Remote Sensing with
+    Bistatic SAR" (2009), Eq. (17) (the printed baselines are swapped between the two rows).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> H = dd_observation_rows([0.0, 0.0, -1.0], [1.0, 0.0, 0.0], np.eye(3), [[1.0, 0.0, 0.0]])
+    >>> H.shape, np.flatnonzero(H[0]).tolist()
+    ((1, 17), [7])
     """
     lm, ln = as_finite_array("los_m", los_m), as_finite_array("los_n", los_n)
     C = as_finite_array("C_bn", C_bn, ndim=2)
@@ -138,13 +185,42 @@ def dd_observation_rows(
 
 
 def dd_covariance(nu: int, sigma_phase: float, n_baselines: int = 2) -> Array:
-    """Covariance (rad^2) of the ``(nu - 1) * n_baselines`` DDs of one epoch.
+    """Covariance of the ``(nu - 1) * n_baselines`` double differences of one epoch.
 
     Each undifferenced phase (per antenna and satellite) has standard deviation
-    ``sigma_phase`` (rad); the DDs are ``D phi`` with the differencing matrix D, so the
-    covariance is ``sigma^2 D D^T``: ``4 sigma^2`` on the diagonal, ``2 sigma^2`` between DDs
-    sharing a satellite or an antenna pair, ``sigma^2`` otherwise. Rows are ordered satellite
-    by satellite (n = 1..nu-1), baselines within.
+    ``sigma_phase``; the DDs are ``D phi`` with the differencing matrix D, so the covariance is
+    ``sigma^2 D D^T``: ``4 sigma^2`` on the diagonal, ``2 sigma^2`` between DDs sharing a
+    satellite or an antenna pair, ``sigma^2`` otherwise. Rows are ordered satellite by
+    satellite (n = 1..nu-1), baselines within.
+
+    Parameters
+    ----------
+    nu : int
+        Number of satellites, the first the master (``>= 2``).
+    sigma_phase : float
+        Standard deviation of an undifferenced phase, rad (``> 0``).
+    n_baselines : int, default 2
+        Number of baselines from the master antenna.
+
+    Returns
+    -------
+    ((nu - 1) n_baselines, (nu - 1) n_baselines) ndarray
+        Covariance, rad^2.
+
+    Raises
+    ------
+    ValueError
+        If ``nu < 2`` or ``sigma_phase`` is not positive.
+
+    References
+    ----------
+    Knedlik, Zhou & Loffeld, "On Position and Attitude Estimation for Remote Sensing with
+    Bistatic SAR" (2009), Eqs. (15)-(17) (the measurement noise of the DD rows).
+
+    Examples
+    --------
+    >>> dd_covariance(3, 1.0, n_baselines=1).tolist()
+    [[4.0, 2.0], [2.0, 4.0]]
     """
     require_integer("nu", nu, minimum=2)
     require_positive("sigma_phase", sigma_phase)
@@ -165,7 +241,31 @@ def dd_covariance(nu: int, sigma_phase: float, n_baselines: int = 2) -> Array:
 
 @implements("KZL 13")
 def euler_rate_matrix_body(roll: float, pitch: float) -> Array:
-    """Body-rate to Euler-rate matrix :math:`J_b^{-1}` of the 3-2-1 sequence (the "R" KZL Eq. 13 names)."""
+    """Body-rate to Euler-rate matrix :math:`J_b^{-1}` of the 3-2-1 sequence (the "R" of KZL Eq. 13).
+
+    Parameters
+    ----------
+    roll : float
+        Roll, rad.
+    pitch : float
+        Pitch, rad (not +-90 deg).
+
+    Returns
+    -------
+    (3, 3) ndarray
+        Maps body rates (rad/s) to roll, pitch, yaw rates (rad/s).
+
+    References
+    ----------
+    Knedlik, Zhou & Loffeld, "On Position and Attitude Estimation for Remote Sensing with
+    Bistatic SAR" (2009), Eq. (13).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> np.round(euler_rate_matrix_body(0.1, 0.2), 4).tolist()
+    [[1.0, 0.0202, 0.2017], [0.0, 0.995, -0.0998], [0.0, 0.1019, 1.0152]]
+    """
     sr, cr = np.sin(roll), np.cos(roll)
     tp, cp = np.tan(pitch), np.cos(pitch)
     return np.array([[1.0, sr * tp, cr * tp], [0.0, cr, -sr], [0.0, sr / cp, cr / cp]])
@@ -173,9 +273,40 @@ def euler_rate_matrix_body(roll: float, pitch: float) -> Array:
 
 @implements("KZL 12")
 def euler_attitude_rows(C_bn: ArrayLike, roll: float, pitch: float) -> Array:
-    """Rows (3 x 17) of the Euler-angle attitude observation (KZL Eq. 12/13, corrected block).
+    r"""Rows (3 x 17) of the Euler-angle attitude observation (KZL Eq. 12/13, corrected block).
 
-    The block is :math:`\\partial(\\phi,\\theta,\\psi)/\\partial\\Delta\\psi = J_b^{-1}\\hat R_n^b`.
+    The block is :math:`\partial(\phi,\theta,\psi)/\partial\Delta\psi = J_b^{-1}\hat R_n^b`.
+
+    Parameters
+    ----------
+    C_bn : (3, 3) array
+        Computed body-to-NED attitude.
+    roll : float
+        Roll, rad.
+    pitch : float
+        Pitch, rad.
+
+    Returns
+    -------
+    (3, 17) ndarray
+        Non-zero only in the misalignment columns (rad per rad).
+
+    Raises
+    ------
+    ValueError
+        If ``C_bn`` is not a finite matrix.
+
+    References
+    ----------
+    Knedlik, Zhou & Loffeld, "On Position and Attitude Estimation for Remote Sensing with
+    Bistatic SAR" (2009), Eqs. (12)-(13).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> H = euler_attitude_rows(np.eye(3), 0.0, 0.0)
+    >>> H[:, 6:9].tolist()
+    [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
     """
     C = as_finite_array("C_bn", C_bn, ndim=2)
     H = np.zeros((3, 17))
@@ -185,14 +316,79 @@ def euler_attitude_rows(C_bn: ArrayLike, roll: float, pitch: float) -> Array:
 
 @implements("KZL 13")
 def tc_attitude_observation_matrix(los_ned: ArrayLike, C_bn: ArrayLike, roll: float, pitch: float) -> Array:
-    """Observation matrix of KZL Eq. 13 stacked over satellites: ``(2 nu + 3, 17)``."""
+    """Observation matrix of KZL Eq. 13 stacked over satellites: ``(2 nu + 3, 17)``.
+
+    Parameters
+    ----------
+    los_ned : (nu, 3) array
+        Unit LOS vectors receiver -> satellite in NED.
+    C_bn : (3, 3) array
+        Computed body-to-NED attitude.
+    roll : float
+        Roll, rad.
+    pitch : float
+        Pitch, rad.
+
+    Returns
+    -------
+    (2 nu + 3, 17) ndarray
+        Code and Doppler rows per satellite, then the three Euler-angle rows.
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite or has the wrong shape.
+
+    References
+    ----------
+    Knedlik, Zhou & Loffeld, "On Position and Attitude Estimation for Remote Sensing with
+    Bistatic SAR" (2009), Eq. (13).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> tc_attitude_observation_matrix(np.tile([0.0, 0.0, -1.0], (4, 1)), np.eye(3), 0.0, 0.0).shape
+    (11, 17)
+    """
     return np.vstack([code_doppler_rows(los_ned), euler_attitude_rows(C_bn, roll, pitch)])
 
 
 @implements("KZL 17")
 def tc_dd_observation_matrix(los_ned: ArrayLike, C_bn: ArrayLike, baselines_b: ArrayLike) -> Array:
-    """Observation matrix of KZL Eq. 17 for ``nu`` satellites (first = master): code/Doppler rows
-    for every satellite, then the DD rows satellite by satellite."""
+    """Observation matrix of KZL Eq. 17 for ``nu`` satellites (first = master).
+
+    Code/Doppler rows for every satellite, then the DD rows satellite by satellite.
+
+    Parameters
+    ----------
+    los_ned : (nu, 3) array
+        Unit LOS vectors receiver -> satellite in NED (the first is the master).
+    C_bn : (3, 3) array
+        Computed body-to-NED attitude.
+    baselines_b : (k, 3) array
+        Body baselines, m.
+
+    Returns
+    -------
+    (2 nu + (nu - 1) k, 17) ndarray
+        Stacked observation matrix.
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite or has the wrong shape.
+
+    References
+    ----------
+    Knedlik, Zhou & Loffeld, "On Position and Attitude Estimation for Remote Sensing with
+    Bistatic SAR" (2009), Eq. (17).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> tc_dd_observation_matrix(np.tile([0.0, 0.0, -1.0], (4, 1)), np.eye(3), np.eye(3)[:2]).shape
+    (14, 17)
+    """
     L = as_finite_array("los_ned", los_ned, ndim=2)
     rows = [code_doppler_rows(L)]
     for n in range(1, L.shape[0]):
@@ -202,7 +398,33 @@ def tc_dd_observation_matrix(los_ned: ArrayLike, C_bn: ArrayLike, baselines_b: A
 
 @implements("KZL 13")
 def attitude_observation_rows_count(nu: int) -> int:
-    """Rows of the stacked Eq. 13 matrix, counted from the builder (code, Doppler, 3 angles)."""
+    """Rows of the stacked Eq. 13 matrix, counted from the builder (code, Doppler, 3 angles).
+
+    Parameters
+    ----------
+    nu : int
+        Number of visible satellites (``>= 1``).
+
+    Returns
+    -------
+    int
+        ``2 nu + 3``.
+
+    Raises
+    ------
+    ValueError
+        If ``nu`` is not an integer of at least 1.
+
+    References
+    ----------
+    Knedlik, Zhou & Loffeld, "On Position and Attitude Estimation for Remote Sensing with
+    Bistatic SAR" (2009), Eq. (13).
+
+    Examples
+    --------
+    >>> attitude_observation_rows_count(5)
+    13
+    """
     require_integer("nu", nu, minimum=1)
     los = np.tile([0.0, 0.0, -1.0], (nu, 1))
     return tc_attitude_observation_matrix(los, np.eye(3), 0.0, 0.0).shape[0]
@@ -210,7 +432,35 @@ def attitude_observation_rows_count(nu: int) -> int:
 
 @implements("KZL 17")
 def dd_observation_rows_count(nu: int, n_baselines: int = 2) -> int:
-    """Rows of the stacked Eq. 17 matrix, counted from the builder."""
+    """Rows of the stacked Eq. 17 matrix, counted from the builder.
+
+    Parameters
+    ----------
+    nu : int
+        Number of visible satellites (``>= 1``).
+    n_baselines : int, default 2
+        Number of baselines.
+
+    Returns
+    -------
+    int
+        ``2 nu + (nu - 1) n_baselines``.
+
+    Raises
+    ------
+    ValueError
+        If ``nu`` is not an integer of at least 1.
+
+    References
+    ----------
+    Knedlik, Zhou & Loffeld, "On Position and Attitude Estimation for Remote Sensing with
+    Bistatic SAR" (2009), Eq. (17).
+
+    Examples
+    --------
+    >>> dd_observation_rows_count(5)
+    18
+    """
     require_integer("nu", nu, minimum=1)
     los = np.tile([0.0, 0.0, -1.0], (nu, 1))
     return tc_dd_observation_matrix(los, np.eye(3), np.eye(3)[:n_baselines]).shape[0]

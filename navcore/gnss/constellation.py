@@ -105,12 +105,35 @@ def nominal_gps_constellation(
 
     Parameters
     ----------
-    n_planes, per_plane : int
-        Planes and slots per plane (defaults: 6 x 4).
-    phase_offset_deg : float
-        Argument-of-latitude offset between successive planes (deg).
-    raan0_deg : float
-        Right ascension of plane A at t = 0 (deg), to rotate the whole pattern.
+    n_planes : int, default 6
+        Number of orbital planes (``>= 1``).
+    per_plane : int, default 4
+        Slots per plane (``>= 1``).
+    phase_offset_deg : float, default 15.0
+        Argument-of-latitude offset between successive planes, deg.
+    raan0_deg : float, default 0.0
+        Right ascension of plane A at t = 0, deg, to rotate the whole pattern.
+
+    Returns
+    -------
+    Constellation
+        Circular orbits at the GPS inclination (55 deg) and semi-major axis, PRNs 1..N.
+
+    Raises
+    ------
+    ValueError
+        If ``n_planes`` or ``per_plane`` is not a positive integer.
+
+    Notes
+    -----
+    A stand-in for the almanac the papers used (Schmidt & Phillips simulate a 24-satellite
+    constellation); the real slots are not evenly phased.
+
+    Examples
+    --------
+    >>> c = nominal_gps_constellation()
+    >>> c.prn.size, c.positions_ecef(0.0).shape
+    (24, (24, 3))
     """
     require_integer("n_planes", n_planes, minimum=1)
     require_integer("per_plane", per_plane, minimum=1)
@@ -122,21 +145,32 @@ def nominal_gps_constellation(
 
 
 def line_of_sight(r_user: ArrayLike, r_sat: ArrayLike) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """Unit line-of-sight vectors from user to satellites and the ranges (m).
+    """Unit line-of-sight vectors from user to satellites and the ranges.
 
     Parameters
     ----------
     r_user : (3,) array
-        User ECEF position.
+        User ECEF position, m.
     r_sat : (N, 3) array
-        Satellite ECEF positions.
+        Satellite ECEF positions, m.
 
     Returns
     -------
-    u : (N, 3) array
+    u : (N, 3) ndarray
         Unit vectors user -> satellite (ECEF).
-    rho : (N,) array
-        Geometric ranges.
+    rho : (N,) ndarray
+        Geometric ranges, m.
+
+    Raises
+    ------
+    ValueError
+        If a position is not finite.
+
+    Examples
+    --------
+    >>> u, rho = line_of_sight([0.0, 0.0, 0.0], [[3.0, 4.0, 0.0]])
+    >>> u.tolist(), rho.tolist()
+    ([[0.6, 0.8, 0.0]], [5.0])
     """
     d = as_finite_array("r_sat", r_sat) - as_finite_array("r_user", r_user)
     rho = np.linalg.norm(d, axis=-1)
@@ -146,7 +180,40 @@ def line_of_sight(r_user: ArrayLike, r_sat: ArrayLike) -> tuple[NDArray[np.float
 def elevation_azimuth(
     r_user: ArrayLike, r_sat: ArrayLike, lat: float, lon: float
 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """Elevation and azimuth (rad) of satellites seen from ``r_user`` at (lat, lon) (rad)."""
+    """Elevation and azimuth of satellites seen from ``r_user`` at (lat, lon).
+
+    Parameters
+    ----------
+    r_user : (3,) array
+        User ECEF position, m.
+    r_sat : (N, 3) array
+        Satellite ECEF positions, m.
+    lat : float
+        User geodetic latitude, rad.
+    lon : float
+        User longitude, rad.
+
+    Returns
+    -------
+    el : (N,) ndarray
+        Elevation, rad.
+    az : (N,) ndarray
+        Azimuth from north, rad in [0, 2 pi).
+
+    Raises
+    ------
+    ValueError
+        If a position is not finite.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from navcore.frames import geodetic_to_ecef
+    >>> r = geodetic_to_ecef(0.0, 0.0, 0.0)
+    >>> el, az = elevation_azimuth(r, [r * 4.0, r + [1.0e7, 1.0e7, 0.0]], 0.0, 0.0)
+    >>> np.round(np.degrees(el), 3).tolist(), np.round(np.degrees(az), 3).tolist()
+    ([90.0, 45.0], [0.0, 90.0])
+    """
     u, _ = line_of_sight(r_user, r_sat)
     ned = u @ dcm_ecef_to_ned(lat, lon).T
     el = np.arcsin(np.clip(-ned[..., 2], -1.0, 1.0))
@@ -157,7 +224,38 @@ def elevation_azimuth(
 def visible(
     constellation: Constellation, t: float, lat: float, lon: float, h: float, mask_deg: float = 5.0
 ) -> NDArray[np.bool_]:
-    """Mask of satellites above ``mask_deg`` elevation at time ``t`` from (lat, lon, h) (rad, m)."""
+    """Mask of satellites above ``mask_deg`` elevation at time ``t`` from (lat, lon, h).
+
+    Parameters
+    ----------
+    constellation : Constellation
+        Satellite orbits.
+    t : float
+        Time, s.
+    lat : float
+        Latitude, rad.
+    lon : float
+        Longitude, rad.
+    h : float
+        Height, m.
+    mask_deg : float, default 5.0
+        Elevation mask, deg (in [-90, 90]).
+
+    Returns
+    -------
+    (N,) bool ndarray
+        ``True`` for satellites at or above the mask.
+
+    Raises
+    ------
+    ValueError
+        If ``mask_deg`` is outside [-90, 90].
+
+    Examples
+    --------
+    >>> int(visible(nominal_gps_constellation(), 0.0, 0.7, 0.0, 0.0).sum()) >= 4
+    True
+    """
     require_in_range("mask_deg", mask_deg, -90.0, 90.0)
     r_user = geodetic_to_ecef(lat, lon, h)
     el, _ = elevation_azimuth(r_user, constellation.positions_ecef(t), lat, lon)

@@ -113,13 +113,23 @@ def straight_track_range_m(
     Parameters
     ----------
     t_s : array_like
-        Times (s).
+        Times, s.
     speed_mps : float
-        Ground speed (m/s), > 0.
+        Ground speed, m/s (``> 0``).
     closest_range_m : float
-        Slant range at closest approach (m), >= 0 (combines altitude and cross-track offset).
-    t_closest_s : float
-        Time of closest approach (s).
+        Slant range at closest approach, m (``>= 0``; combines altitude and cross-track offset).
+    t_closest_s : float, default 0.0
+        Time of closest approach, s.
+
+    Returns
+    -------
+    float or ndarray
+        Slant range, m.
+
+    Raises
+    ------
+    ValueError
+        If ``speed_mps`` is not positive or ``closest_range_m`` is negative.
 
     Examples
     --------
@@ -133,7 +143,30 @@ def straight_track_range_m(
 
 
 def slant_range_m(position_ned_m: ArrayLike, emitter_ned_m: ArrayLike) -> Array | float:
-    """Distance (m) from positions ``(..., 3)`` to an emitter at ``(3,)`` (same local frame)."""
+    """Distance from positions ``(..., 3)`` to an emitter at ``(3,)`` (same local frame).
+
+    Parameters
+    ----------
+    position_ned_m : (..., 3) array
+        Receiver positions, m.
+    emitter_ned_m : (3,) array
+        Emitter position, m.
+
+    Returns
+    -------
+    float or ndarray
+        Slant range, m.
+
+    Raises
+    ------
+    ValueError
+        If the shapes are wrong or a coordinate is not finite.
+
+    Examples
+    --------
+    >>> float(slant_range_m([3000.0, 0.0, -4000.0], [0.0, 0.0, 0.0]))
+    5000.0
+    """
     p = as_finite_array("position_ned_m", position_ned_m)
     e = as_finite_array("emitter_ned_m", emitter_ned_m)
     if p.shape[-1] != 3 or e.shape != (3,):
@@ -142,10 +175,28 @@ def slant_range_m(position_ned_m: ArrayLike, emitter_ned_m: ArrayLike) -> Array 
 
 
 def free_space_loss_db(range_m: ArrayLike, wavelength_m: float) -> Array | float:
-    """Free-space path loss ``20 log10(4 pi d / lambda)`` (dB).
+    """Free-space path loss ``20 log10(4 pi d / lambda)``.
+
+    Parameters
+    ----------
+    range_m : array_like
+        Distance, m (``> 0``).
+    wavelength_m : float
+        Wavelength, m (``> 0``).
+
+    Returns
+    -------
+    float or ndarray
+        Loss, dB.
+
+    Raises
+    ------
+    ValueError
+        If a range or the wavelength is not positive.
 
     Examples
     --------
+    >>> import numpy as np
     >>> round(float(free_space_loss_db(1.0 / (4 * np.pi), 1.0)), 12)
     0.0
     """
@@ -157,7 +208,38 @@ def free_space_loss_db(range_m: ArrayLike, wavelength_m: float) -> Array | float
 def received_jammer_power_dbw(
     erp_dbw: float, range_m: ArrayLike, wavelength_m: float, rx_gain_dbi: float = 0.0
 ) -> Array | float:
-    """Jammer power at the receiver (dBW): ``ERP + G_rj - 20 log10(4 pi d / lambda)``."""
+    """Jammer power at the receiver: ``ERP + G_rj - 20 log10(4 pi d / lambda)``.
+
+    Parameters
+    ----------
+    erp_dbw : float
+        Effective radiated power of the jammer, dBW.
+    range_m : array_like
+        Slant range, m (``> 0``).
+    wavelength_m : float
+        Wavelength, m (``> 0``).
+    rx_gain_dbi : float, default 0.0
+        Receive-antenna gain towards the jammer, dBi.
+
+    Returns
+    -------
+    float or ndarray
+        Received power, dBW.
+
+    Raises
+    ------
+    ValueError
+        If a range or the wavelength is not positive or a power is not finite.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons", Sec. 2.6.2.
+
+    Examples
+    --------
+    >>> round(float(received_jammer_power_dbw(10.0, 1.0e4, 0.19)), 2)
+    -106.41
+    """
     as_finite_array("erp_dbw", erp_dbw)
     as_finite_array("rx_gain_dbi", rx_gain_dbi)
     return _out(erp_dbw + rx_gain_dbi - np.asarray(free_space_loss_db(range_m, wavelength_m)))
@@ -171,10 +253,38 @@ def effective_cn0_with_jammer_dbhz(
     chip_rate_hz: float,
     q: float = 2.0,
 ) -> Array | float:
-    """Effective C/N0 (dB-Hz): ``C - 10 log10(N0 + J/(Q Rc))`` (arrays broadcast).
+    """Effective C/N0: ``C - 10 log10(N0 + J/(Q Rc))`` (arrays broadcast).
 
     ``carrier_dbw`` of shape ``(n_sat,)`` and ``jammer_dbw`` of shape ``(N, 1)`` give
     ``(N, n_sat)``; ``jammer_dbw = -inf`` is not allowed (use a very low power instead).
+
+    Parameters
+    ----------
+    carrier_dbw : array_like
+        Received carrier power, dBW.
+    jammer_dbw : array_like
+        Received jammer power, dBW (finite).
+    n0_dbw_hz : float
+        Thermal noise density, dBW/Hz.
+    chip_rate_hz : float
+        Code chip rate :math:`R_c`, chips/s (``> 0``).
+    q : float, default 2.0
+        Spectral-separation factor :math:`Q` (dimensionless, ``> 0``).
+
+    Returns
+    -------
+    float or ndarray
+        Effective carrier-to-noise density, dB-Hz.
+
+    Raises
+    ------
+    ValueError
+        If ``chip_rate_hz`` or ``q`` is not positive or a power is not finite.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",
+    Sec. 2.6.2 (jammer to signal).
 
     Examples
     --------
@@ -196,11 +306,43 @@ _LN10_10 = math.log(10.0) / 10.0
 def jammer_power_at_threshold_dbw(
     carrier_dbw: ArrayLike, threshold_dbhz: ArrayLike, n0_dbw_hz: float, chip_rate_hz: float, q: float = 2.0
 ) -> Array | float:
-    """Received jammer power (dBW) that brings the effective C/N0 down to ``threshold_dbhz``:
+    r"""Received jammer power that brings the effective C/N0 down to ``threshold_dbhz``.
+
     ``J* = Q Rc (C/gamma - N0)``.
 
-    Raises ValueError if a threshold is not below the unjammed C/N0 (the loop would never be
-    in lock).
+    Parameters
+    ----------
+    carrier_dbw : array_like
+        Received carrier power, dBW.
+    threshold_dbhz : array_like
+        C/N0 threshold :math:`\gamma`, dB-Hz.
+    n0_dbw_hz : float
+        Thermal noise density, dBW/Hz.
+    chip_rate_hz : float
+        Code chip rate, chips/s (``> 0``).
+    q : float, default 2.0
+        Spectral-separation factor (``> 0``).
+
+    Returns
+    -------
+    float or ndarray
+        Jammer power :math:`J^*`, dBW.
+
+    Raises
+    ------
+    ValueError
+        If a threshold is not below the unjammed C/N0 (the loop would never be in lock), or
+        ``chip_rate_hz`` or ``q`` is not positive.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons", Sec. 2.6.2.
+
+    Examples
+    --------
+    >>> j = float(jammer_power_at_threshold_dbw(-160.0, 28.0, -204.0, 1.023e6))
+    >>> round(float(effective_cn0_with_jammer_dbhz(-160.0, j, -204.0, 1.023e6)), 9)
+    28.0
     """
     require_positive("chip_rate_hz", chip_rate_hz)
     require_positive("q", q)
@@ -217,7 +359,32 @@ def jammer_power_at_threshold_dbw(
 def threshold_range_m(
     erp_dbw: float, jammer_threshold_dbw: ArrayLike, wavelength_m: float, rx_gain_dbi: float = 0.0
 ) -> Array | float:
-    """Range (m) at which the received jammer power equals ``jammer_threshold_dbw`` (free space).
+    """Range at which the received jammer power equals ``jammer_threshold_dbw`` (free space).
+
+    Parameters
+    ----------
+    erp_dbw : float
+        Effective radiated power of the jammer, dBW.
+    jammer_threshold_dbw : array_like
+        Received jammer power at the threshold, dBW.
+    wavelength_m : float
+        Wavelength, m (``> 0``).
+    rx_gain_dbi : float, default 0.0
+        Receive-antenna gain towards the jammer, dBi.
+
+    Returns
+    -------
+    float or ndarray
+        Threshold range :math:`d^*`, m.
+
+    Raises
+    ------
+    ValueError
+        If ``wavelength_m`` is not positive or a power is not finite.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons", Sec. 2.6.2.
 
     Examples
     --------
@@ -238,6 +405,40 @@ def straight_track_crossing_times(
 
     The roots of ``d_min^2 + v^2 (t - t_ca)^2 = d*^2``; NaN where the track never comes
     that close (``d* < d_min``).
+
+    Parameters
+    ----------
+    threshold_range : array_like
+        Threshold range :math:`d^*`, m (``>= 0``).
+    closest_range_m : float
+        Slant range at closest approach, m (``>= 0``).
+    speed_mps : float
+        Ground speed, m/s (``> 0``).
+    t_closest_s : float, default 0.0
+        Time of closest approach, s.
+
+    Returns
+    -------
+    t_in : float or ndarray
+        Entry time, s (NaN if never inside).
+    t_out : float or ndarray
+        Exit time, s (NaN if never inside).
+
+    Raises
+    ------
+    ValueError
+        If ``speed_mps`` is not positive or a range is negative.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",
+    Sec. 2.6.2 (the jammer fly-by).
+
+    Examples
+    --------
+    >>> t_in, t_out = straight_track_crossing_times(5000.0, 4000.0, 300.0)
+    >>> float(t_in), float(t_out)
+    (-10.0, 10.0)
     """
     require_positive("speed_mps", speed_mps)
     require_nonnegative("closest_range_m", closest_range_m)
@@ -251,6 +452,31 @@ def elevation_gain_dbi(elevation_rad: ArrayLike, zenith_dbi: float, horizon_dbi:
     """Antenna gain linear in elevation from ``horizon_dbi`` (0 deg) to ``zenith_dbi`` (90 deg).
 
     A simple stand-in for a fixed upward-looking patch; elevations are clipped to [0, 90] deg.
+
+    Parameters
+    ----------
+    elevation_rad : array_like
+        Elevation, rad.
+    zenith_dbi : float
+        Gain at 90 deg, dBi.
+    horizon_dbi : float
+        Gain at 0 deg, dBi.
+
+    Returns
+    -------
+    float or ndarray
+        Gain, dBi.
+
+    Raises
+    ------
+    ValueError
+        If an elevation is not finite.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> round(float(elevation_gain_dbi(np.pi / 4, 3.0, -5.0)), 6)
+    -1.0
     """
     e = np.clip(as_finite_array("elevation_rad", elevation_rad), 0.0, np.pi / 2)
     return _out(horizon_dbi + (zenith_dbi - horizon_dbi) * e / (np.pi / 2))
@@ -296,6 +522,23 @@ def pll_jitter_threshold_dbhz(
         Loop type: ``"costas"`` for a data-modulated signal (L1 C/A, P(Y)), ``"pll"`` for a
         pure PLL on a data-free signal.
 
+    Returns
+    -------
+    float or ndarray
+        Threshold C/N0, dB-Hz (shape of ``noise_bandwidth_hz``).
+
+    Raises
+    ------
+    ValueError
+        If ``loop`` is unknown, or a bandwidth, ``k_sigma``, ``coherent_s`` or the phase
+        limit is not positive.
+
+    Notes
+    -----
+    The thermal-jitter rule of thumb for Costas and PLL carrier loops (Kaplan & Hegarty,
+    Understanding GPS, Sec. 5.6.2), used for the loss thresholds of Schmidt & Phillips,
+    Sec. 2.5.
+
     Examples
     --------
     >>> round(float(pll_jitter_threshold_dbhz(5.83)), 2)  # Costas loop, 3 sigma <= 45 deg
@@ -322,8 +565,45 @@ def carrier_loss_threshold_dbhz(
     *,
     loop: str = "costas",
 ) -> Array | float:
-    """Carrier-loop loss threshold (dB-Hz): the larger of a C/N0 floor and the jitter threshold
-    of :func:`pll_jitter_threshold_dbhz` for the given ``loop`` (``"costas"`` or ``"pll"``)."""
+    """Carrier-loop loss threshold: the larger of a C/N0 floor and the jitter threshold.
+
+    The jitter threshold is :func:`pll_jitter_threshold_dbhz` for the given ``loop``.
+
+    Parameters
+    ----------
+    noise_bandwidth_hz : array_like
+        Carrier-loop noise bandwidth :math:`B_n`, Hz (``> 0``).
+    floor_dbhz : float
+        C/N0 floor below which the loop is lost regardless of jitter, dB-Hz.
+    max_phase_error_deg : float, optional
+        Allowed phase error, deg (default: the rule of ``loop``).
+    k_sigma : float, default 3.0
+        Multiple of the 1-sigma jitter that must stay within the allowed error.
+    coherent_s : float, default 0.02
+        Coherent integration time, s.
+    loop : {"costas", "pll"}
+        Loop type (see :func:`pll_jitter_threshold_dbhz`).
+
+    Returns
+    -------
+    float or ndarray
+        Loss threshold, dB-Hz (shape of ``noise_bandwidth_hz``).
+
+    Raises
+    ------
+    ValueError
+        As :func:`pll_jitter_threshold_dbhz`, or if ``floor_dbhz`` is not finite.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",
+    Sec. 2.5 (tracking thresholds).
+
+    Examples
+    --------
+    >>> [round(float(carrier_loss_threshold_dbhz(5.83, floor)), 2) for floor in (25.0, 15.0)]
+    [25.0, 20.22]
+    """
     jit = np.asarray(
         pll_jitter_threshold_dbhz(noise_bandwidth_hz, max_phase_error_deg, k_sigma, coherent_s, loop=loop)
     )
@@ -332,7 +612,19 @@ def carrier_loss_threshold_dbhz(
 
 @dataclass(frozen=True)
 class LockThresholds:
-    """Effective-C/N0 thresholds (dB-Hz) of one receiver: loss and reacquisition, code and carrier."""
+    """Effective-C/N0 thresholds (dB-Hz) of one receiver: loss and reacquisition, code and carrier.
+
+    Attributes
+    ----------
+    code_loss : float
+        Code-loop loss threshold, dB-Hz.
+    carrier_loss : float
+        Carrier-loop loss threshold, dB-Hz.
+    code_reacquisition : float
+        Code reacquisition threshold, dB-Hz.
+    carrier_reacquisition : float
+        Carrier reacquisition threshold, dB-Hz.
+    """
 
     code_loss: float
     carrier_loss: float
@@ -360,11 +652,28 @@ def hysteresis_lock(
     Parameters
     ----------
     cn0_dbhz : (N, n) array
-        Effective C/N0 per time sample and channel.
-    loss_dbhz, reacquisition_dbhz : float or (n,) array
-        Thresholds (reacquisition >= loss).
+        Effective C/N0 per time sample and channel, dB-Hz.
+    loss_dbhz : float or (n,) array
+        Loss threshold, dB-Hz.
+    reacquisition_dbhz : float or (n,) array
+        Reacquisition threshold, dB-Hz (``>= loss_dbhz``).
     initially_locked : bool, default True
         Lock state before the first sample that decides it.
+
+    Returns
+    -------
+    (N, n) bool ndarray
+        Lock state per sample and channel.
+
+    Raises
+    ------
+    ValueError
+        If ``cn0_dbhz`` is not 2-D or a reacquisition threshold is below its loss threshold.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",
+    Sec. 2.5 (loss and reacquisition thresholds).
 
     Examples
     --------
@@ -393,6 +702,28 @@ def outage_intervals(t_s: ArrayLike, available: ArrayLike) -> list[tuple[float, 
 
     ``start`` is the first unavailable sample's time and ``end`` the first available sample's
     time after it (the last sample's time if the outage lasts to the end).
+
+    Parameters
+    ----------
+    t_s : (N,) array
+        Sample times, s.
+    available : (N,) bool array
+        Availability per sample.
+
+    Returns
+    -------
+    list of (float, float)
+        Start and end times of each outage, s.
+
+    Raises
+    ------
+    ValueError
+        If ``available`` and ``t_s`` differ in shape.
+
+    Examples
+    --------
+    >>> outage_intervals([0.0, 1.0, 2.0, 3.0, 4.0], [True, False, False, True, False])
+    [(1.0, 3.0), (4.0, 4.0)]
     """
     t = as_finite_array("t_s", t_s)
     a = np.asarray(available, dtype=bool)

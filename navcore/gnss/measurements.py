@@ -57,7 +57,36 @@ def _sat(name: str, r: ArrayLike) -> Array:
 
 
 def pseudorange(r_user: ArrayLike, r_sat: ArrayLike, clock_bias_m: float = 0.0) -> Array:
-    """Pseudoranges (m) from user position to each satellite, plus the clock bias (m)."""
+    """Pseudoranges from user position to each satellite, plus the clock bias.
+
+    Parameters
+    ----------
+    r_user : (3,) array
+        User position, m (ECEF or any frame shared with ``r_sat``).
+    r_sat : (N, 3) array
+        Satellite positions, m.
+    clock_bias_m : float, default 0.0
+        Receiver clock bias times the speed of light, m.
+
+    Returns
+    -------
+    (N,) ndarray
+        Pseudoranges, m.
+
+    Raises
+    ------
+    ValueError
+        If a position is not finite or ``r_sat`` has the wrong shape.
+
+    Notes
+    -----
+    The code measurement model of the tightly coupled filter (Schmidt & Phillips, Sec. 2.2).
+
+    Examples
+    --------
+    >>> pseudorange([0.0, 0.0, 0.0], [[3.0, 4.0, 0.0]], clock_bias_m=1.0).tolist()
+    [6.0]
+    """
     d = _sat("r_sat", r_sat) - as_finite_array("r_user", r_user)
     return np.linalg.norm(d, axis=-1) + clock_bias_m
 
@@ -65,7 +94,41 @@ def pseudorange(r_user: ArrayLike, r_sat: ArrayLike, clock_bias_m: float = 0.0) 
 def pseudorange_rate(
     r_user: ArrayLike, v_user: ArrayLike, r_sat: ArrayLike, v_sat: ArrayLike, clock_drift_mps: float = 0.0
 ) -> Array:
-    """Pseudorange rates (m/s): line-of-sight relative velocity plus clock drift (m/s)."""
+    """Pseudorange rates: line-of-sight relative velocity plus clock drift.
+
+    Parameters
+    ----------
+    r_user : (3,) array
+        User position, m.
+    v_user : (3,) array
+        User velocity, m/s.
+    r_sat : (N, 3) array
+        Satellite positions, m.
+    v_sat : (N, 3) array
+        Satellite velocities, m/s.
+    clock_drift_mps : float, default 0.0
+        Receiver clock drift times the speed of light, m/s.
+
+    Returns
+    -------
+    (N,) ndarray
+        Pseudorange rates, m/s.
+
+    Raises
+    ------
+    ValueError
+        If a satellite coincides with the user or an input is not finite.
+
+    Notes
+    -----
+    The range-rate measurement model of the tightly coupled filter (Schmidt & Phillips,
+    Sec. 2.2).
+
+    Examples
+    --------
+    >>> pseudorange_rate([0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [[10.0, 0.0, 0.0]], [[2.0, 5.0, 0.0]]).tolist()
+    [2.0]
+    """
     d = _sat("r_sat", r_sat) - as_finite_array("r_user", r_user)
     if np.any(np.linalg.norm(d, axis=-1) == 0.0):
         raise ValueError("r_sat must differ from r_user (zero range has no line of sight)")

@@ -88,7 +88,17 @@ def distance_to_phase_deg(distance_m: ArrayLike, wavelength_m: float) -> Array |
     distance_m : array_like
         Distance, velocity or acceleration in metres (per second, per second squared).
     wavelength_m : float
-        Metres per cycle of the tracked signal (the L1 carrier is 0.1903 m).
+        Metres per cycle of the tracked signal (the L1 carrier is 0.1903 m; ``> 0``).
+
+    Returns
+    -------
+    float or ndarray
+        Phase in degrees (per second, per second squared).
+
+    Raises
+    ------
+    ValueError
+        If ``wavelength_m`` is not positive or a distance is not finite.
 
     Examples
     --------
@@ -101,9 +111,37 @@ def distance_to_phase_deg(distance_m: ArrayLike, wavelength_m: float) -> Array |
 
 
 def error_transfer_coefficients(omega0: float) -> tuple[Array, Array]:
-    """Numerator and denominator of :math:`E(s)/\\Theta(s) = s^3/D(s)` (highest power first).
+    r"""Numerator and denominator of :math:`E(s)/\Theta(s) = s^3/D(s)` (highest power first).
 
     Useful for independent time-domain checks (``scipy.signal.lsim``).
+
+    Parameters
+    ----------
+    omega0 : float
+        Natural frequency, rad/s (``> 0``).
+
+    Returns
+    -------
+    num : (4,) ndarray
+        ``[1, 0, 0, 0]``.
+    den : (4,) ndarray
+        ``[1, 2 omega0, 2 omega0^2, omega0^3]`` (the standard third-order loop).
+
+    Raises
+    ------
+    ValueError
+        If ``omega0`` is not positive.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",
+    Sec. 2.1 (third-order tracking loop, Fig. 2.1).
+
+    Examples
+    --------
+    >>> num, den = error_transfer_coefficients(2.0)
+    >>> den.tolist()
+    [1.0, 4.0, 8.0, 8.0]
     """
     require_positive("omega0", omega0)
     return np.array([1.0, 0.0, 0.0, 0.0]), np.array([1.0, 2 * omega0, 2 * omega0**2, omega0**3])
@@ -123,7 +161,13 @@ def third_order_loop_step_error(t_s: ArrayLike, step: float, omega0: float) -> A
 
     Returns
     -------
-    Error in the units of ``step`` times s^2: zero at t = 0 and as t -> infinity.
+    float or ndarray
+        Error in the units of ``step`` times s^2: zero at t = 0 and as t -> infinity.
+
+    Raises
+    ------
+    ValueError
+        If ``omega0`` is not positive or a time is negative or not finite.
 
     Examples
     --------
@@ -159,6 +203,18 @@ def third_order_loop_jerk_error(t_s: ArrayLike, jerk: float, omega0: float) -> A
     -------
     float or ndarray
         Error in the units of ``jerk`` times s^3 (degrees or metres as above).
+
+    Raises
+    ------
+    ValueError
+        If ``omega0`` is not positive or a time is negative or not finite.
+
+    Examples
+    --------
+    The error settles at ``J / omega0^3``:
+
+    >>> round(float(third_order_loop_jerk_error(100.0, 8.0, 2.0)), 6)
+    1.0
     """
     require_positive("omega0", omega0)
     t = as_finite_array("t_s", t_s)
@@ -189,6 +245,19 @@ def jerk_pulse_error(t_s: ArrayLike, jerk: float, duration_s: float, omega0: flo
     -------
     float or ndarray
         Error in the units of ``jerk`` times s^3 (degrees or metres as above).
+
+    Raises
+    ------
+    ValueError
+        If ``duration_s`` or a time is negative, ``omega0`` is not positive, or a time is not
+        finite.
+
+    Examples
+    --------
+    A 2-s jerk: the error grows while it lasts and decays once the acceleration holds.
+
+    >>> [round(float(jerk_pulse_error(t, 1.0, 2.0, 1.0)), 4) for t in (1.0, 2.0, 5.0, 100.0)]
+    [0.0986, 0.4454, 0.2642, 0.0]
     """
     require_nonnegative("duration_s", duration_s)
     t = as_finite_array("t_s", t_s)
@@ -211,7 +280,18 @@ def _peak() -> tuple[float, float]:
 
 
 def peak_factor() -> float:
-    """:math:`f_{\\max}`: peak of the unit-step error at unit natural frequency (0.404453).
+    r""":math:`f_{\max}`: peak of the unit-step error at unit natural frequency (0.404453).
+
+    Returns
+    -------
+    float
+        Peak error of the third-order loop for a unit acceleration step at
+        :math:`\omega_0 = 1` rad/s (phase unit per unit of the step times s^2).
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",
+    Sec. 2.1 (peak error after an acceleration step).
 
     Examples
     --------
@@ -226,15 +306,69 @@ PEAK_TIME_FACTOR = _peak()[1]
 
 
 def third_order_peak_step_error(step: float, omega0: float) -> float:
-    """Peak tracking error :math:`f_{\\max} R/\\omega_0^2` for an acceleration step ``R``."""
+    r"""Peak tracking error :math:`f_{\max} R/\omega_0^2` for an acceleration step ``R``.
+
+    Parameters
+    ----------
+    step : float
+        Acceleration step (deg/s^2 gives degrees; m/s^2 gives metres).
+    omega0 : float
+        Natural frequency, rad/s (``> 0``).
+
+    Returns
+    -------
+    float
+        Peak error, in the unit of ``step`` times s^2.
+
+    Raises
+    ------
+    ValueError
+        If ``omega0`` is not positive.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons", Sec. 2.1.
+
+    Examples
+    --------
+    >>> round(third_order_peak_step_error(1.0, 1.0), 6)
+    0.404453
+    """
     require_positive("omega0", omega0)
     return peak_factor() * step / omega0**2
 
 
 def natural_frequency_for_peak_error(step: float, peak_error: float) -> float:
-    """Natural frequency (rad/s) at which the step error peaks at ``peak_error``.
+    """Natural frequency at which the step error peaks at ``peak_error``.
 
     ``step`` and ``peak_error`` share a unit (deg/s^2 and deg, or m/s^2 and m).
+
+    Parameters
+    ----------
+    step : float
+        Acceleration step (``> 0``).
+    peak_error : float
+        Allowed peak tracking error (``> 0``).
+
+    Returns
+    -------
+    float
+        Natural frequency, rad/s.
+
+    Raises
+    ------
+    ValueError
+        If ``step`` or ``peak_error`` is not positive.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons", Sec. 2.1.
+
+    Examples
+    --------
+    >>> w = natural_frequency_for_peak_error(100.0, 10.0)
+    >>> round(w, 4), round(third_order_peak_step_error(100.0, w), 6)
+    (2.0111, 10.0)
     """
     require_positive("step", step)
     require_positive("peak_error", peak_error)
@@ -242,7 +376,38 @@ def natural_frequency_for_peak_error(step: float, peak_error: float) -> float:
 
 
 def wavelength_for_peak_error(accel_mps2: float, omega0: float, peak_deg: float) -> float:
-    """Wavelength (m per cycle) at which an ``accel_mps2`` step gives a ``peak_deg`` peak at ``omega0``."""
+    """Wavelength at which an ``accel_mps2`` step gives a ``peak_deg`` peak at ``omega0``.
+
+    Parameters
+    ----------
+    accel_mps2 : float
+        Acceleration step, m/s^2 (``> 0``).
+    omega0 : float
+        Natural frequency, rad/s (``> 0``).
+    peak_deg : float
+        Peak phase error, deg (``> 0``).
+
+    Returns
+    -------
+    float
+        Wavelength, m per cycle.
+
+    Raises
+    ------
+    ValueError
+        If an argument is not positive.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons", Sec. 2.1.
+
+    Examples
+    --------
+    >>> lam = wavelength_for_peak_error(9.80665, 10.0, 45.0)
+    >>> peak_m = third_order_peak_step_error(9.80665, 10.0)
+    >>> round(lam, 4), round(float(distance_to_phase_deg(peak_m, lam)), 6)
+    (0.3173, 45.0)
+    """
     require_positive("accel_mps2", accel_mps2)
     require_positive("peak_deg", peak_deg)
     return 360.0 * third_order_peak_step_error(accel_mps2, omega0) / peak_deg
@@ -252,9 +417,34 @@ def wavelength_for_peak_error(accel_mps2: float, omega0: float, peak_deg: float)
 def aided_natural_frequency(
     step_aided: ArrayLike, step_unaided: float, omega0_unaided: float
 ) -> Array | float:
-    """Natural frequency that keeps the unaided peak error under a smaller aided step (SP Eq. 2.1).
+    r"""Natural frequency that keeps the unaided peak error under a smaller aided step (SP Eq. 2.1).
 
-    :math:`\\omega_{0,aided} = \\sqrt{R_{aided}/R_{unaided}}\\,\\omega_{0,unaided}`.
+    :math:`\omega_{0,aided} = \sqrt{R_{aided}/R_{unaided}}\,\omega_{0,unaided}`.
+
+    Parameters
+    ----------
+    step_aided : array_like
+        Acceleration step the aided loop sees (``>= 0``; any unit shared with
+        ``step_unaided``, e.g. g or m/s^2).
+    step_unaided : float
+        Acceleration step of the unaided loop (``> 0``, same unit).
+    omega0_unaided : float
+        Natural frequency of the unaided loop, rad/s (``> 0``).
+
+    Returns
+    -------
+    float or ndarray
+        Natural frequency of the aided loop, rad/s.
+
+    Raises
+    ------
+    ValueError
+        If ``step_unaided`` or ``omega0_unaided`` is not positive or a ``step_aided`` is
+        negative.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons", Eq. (2.1).
 
     Examples
     --------

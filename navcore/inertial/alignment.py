@@ -59,6 +59,11 @@ def levelling(
     roll, pitch : arrays
         Bank (roll) ``phi`` and elevation (pitch) ``theta`` in radians.
 
+    Raises
+    ------
+    ValueError
+        If ``f_b`` does not end in an axis of 3 or is not finite, or ``convention`` is unknown.
+
     Examples
     --------
     >>> roll, pitch = levelling([0.0, 0.0, -9.81])
@@ -80,8 +85,38 @@ def levelling(
 
 @implements("KZL 2", "KZL 3")
 def levelling_as_printed(a_b: ArrayLike) -> tuple[Array, Array]:
-    """KZL Eqs. 2-3 exactly as printed: ``theta = arctan(-a_x/sqrt(a_y^2+a_z^2))``,
-    ``phi = atan2(a_y, a_z)``. Correct only if ``a_b`` is minus the specific force."""
+    """KZL Eqs. 2-3 exactly as printed.
+
+    ``theta = arctan(-a_x/sqrt(a_y^2+a_z^2))``, ``phi = atan2(a_y, a_z)``. Correct only if
+    ``a_b`` is minus the specific force.
+
+    Parameters
+    ----------
+    a_b : (..., 3) array
+        Averaged accelerometer output in body axes, m/s^2.
+
+    Returns
+    -------
+    roll : ndarray
+        Roll ``phi``, rad.
+    pitch : ndarray
+        Pitch ``theta``, rad.
+
+    Raises
+    ------
+    ValueError
+        If a y-z component is zero (pitch of +-90 deg).
+
+    References
+    ----------
+    Knedlik, Zhou & Loffeld (2009), Eqs. (2)-(3).
+
+    Examples
+    --------
+    >>> roll, pitch = levelling_as_printed([0.5, 0.0, 9.81])
+    >>> round(float(roll), 4), round(float(pitch), 4)
+    (0.0, -0.0509)
+    """
     a = as_finite_array("a_b", a_b)
     ax, ay, az = a[..., 0], a[..., 1], a[..., 2]
     if np.any(np.hypot(ay, az) == 0.0):
@@ -91,10 +126,30 @@ def levelling_as_printed(a_b: ArrayLike) -> tuple[Array, Array]:
 
 @implements("KZL 4")
 def heading_from_velocity(v_ned: ArrayLike) -> Array:
-    """Track angle ``atan2(v_E, v_N)`` (rad) from a NED velocity (KZL Eq. 4).
+    """Track angle ``atan2(v_E, v_N)`` from a NED velocity (KZL Eq. 4).
+
+    Parameters
+    ----------
+    v_ned : (..., 3) array
+        NED velocity, m/s (non-zero horizontal part).
+
+    Returns
+    -------
+    ndarray
+        Heading, rad in (-pi, pi].
+
+    Raises
+    ------
+    ValueError
+        If the last axis is not 3 long or a horizontal velocity is zero.
+
+    References
+    ----------
+    Knedlik, Zhou & Loffeld (2009), Eq. (4).
 
     Examples
     --------
+    >>> import numpy as np
     >>> round(float(np.degrees(heading_from_velocity([0.0, 110.0, 0.0]))), 9)
     90.0
     """

@@ -103,10 +103,32 @@ SCHULER_RADIUS_M = WGS84_A
 
 
 def schuler_frequency(g: float = G0, radius: float = SCHULER_RADIUS_M) -> float:
-    """Schuler angular frequency ``sqrt(g / R)`` (rad/s).
+    """Schuler angular frequency ``sqrt(g / R)``.
+
+    Parameters
+    ----------
+    g : float, default G0
+        Gravity magnitude, m/s^2 (``> 0``).
+    radius : float, default SCHULER_RADIUS_M
+        Earth radius, m (``> 0``).
+
+    Returns
+    -------
+    float
+        Angular frequency, rad/s.
+
+    Raises
+    ------
+    ValueError
+        If ``g`` or ``radius`` is not positive.
+
+    Notes
+    -----
+    The natural frequency of the horizontal INS error loop (Schmidt & Phillips, Sec. 2.3).
 
     Examples
     --------
+    >>> import numpy as np
     >>> round(2 * np.pi / schuler_frequency() / 60, 2)
     84.45
     """
@@ -116,7 +138,34 @@ def schuler_frequency(g: float = G0, radius: float = SCHULER_RADIUS_M) -> float:
 
 
 def schuler_period(g: float = G0, radius: float = SCHULER_RADIUS_M) -> float:
-    """Schuler period ``2 pi sqrt(R / g)`` (s)."""
+    """Schuler period ``2 pi sqrt(R / g)``.
+
+    Parameters
+    ----------
+    g : float, default G0
+        Gravity magnitude, m/s^2 (``> 0``).
+    radius : float, default SCHULER_RADIUS_M
+        Earth radius, m (``> 0``).
+
+    Returns
+    -------
+    float
+        Period, s (about 84.4 min).
+
+    Raises
+    ------
+    ValueError
+        If ``g`` or ``radius`` is not positive.
+
+    Notes
+    -----
+    The period of the horizontal INS error oscillation (Schmidt & Phillips, Sec. 2.3).
+
+    Examples
+    --------
+    >>> round(schuler_period() / 60, 2)
+    84.45
+    """
     return 2 * np.pi / schuler_frequency(g, radius)
 
 
@@ -125,6 +174,13 @@ class GaussMarkov:
     """First-order Gauss-Markov process: 1-sigma and a distance constant (m).
 
     ``distance_constant_m = inf`` makes a random constant.
+
+    Attributes
+    ----------
+    sigma : float
+        Stationary 1-sigma (unit of the process).
+    distance_constant_m : float
+        Correlation distance, m (``inf`` for a random constant).
     """
 
     sigma: float
@@ -222,6 +278,25 @@ _UNITS = {
 def ins_error_layout(*names: str, channels: int = 4, name: str = "") -> StateLayout:
     """A layout of the named error-state blocks (sizes from the table in the module docstring).
 
+    Parameters
+    ----------
+    *names : str
+        Block names (members of :class:`navcore.estimation.layout.InsBlock`), in state order.
+    channels : int, default 4
+        Size of the per-channel blocks (pseudorange and range-rate biases).
+    name : str, default ""
+        Name of the layout.
+
+    Returns
+    -------
+    StateLayout
+        The blocks with their sizes and units (m, m/s, rad, ...).
+
+    Raises
+    ------
+    ValueError
+        If a name is not a known block (the message suggests the closest one).
+
     Examples
     --------
     >>> ins_error_layout("position", "velocity", "misalignment").size
@@ -242,7 +317,23 @@ def ins_error_layout(*names: str, channels: int = 4, name: str = "") -> StateLay
 
 
 def skew_stack(v: ArrayLike) -> Array:
-    """Skew-symmetric cross-product matrices of vectors ``(..., 3) -> (..., 3, 3)``."""
+    """Skew-symmetric cross-product matrices of vectors ``(..., 3) -> (..., 3, 3)``.
+
+    Parameters
+    ----------
+    v : (..., 3) array
+        Vectors (any unit).
+
+    Returns
+    -------
+    (..., 3, 3) ndarray
+        ``[v x]`` with ``[v x] w = v x w``.
+
+    Examples
+    --------
+    >>> skew_stack([1.0, 2.0, 3.0]).tolist()
+    [[0.0, -3.0, 2.0], [3.0, 0.0, -1.0], [-2.0, 1.0, 0.0]]
+    """
     v = np.asarray(v, dtype=float)
     if v.shape == (3,):
         x, y, w = v
@@ -253,7 +344,30 @@ def skew_stack(v: ArrayLike) -> Array:
 
 
 def earth_rate_ned(lat: ArrayLike) -> Array:
-    """Earth rate in NED at latitude ``lat`` (rad): ``Omega [cos L, 0, -sin L]``."""
+    """Earth rate in NED at latitude ``lat``: ``Omega [cos L, 0, -sin L]``.
+
+    Parameters
+    ----------
+    lat : float or (N,) array
+        Geodetic latitude, rad.
+
+    Returns
+    -------
+    (3,) or (N, 3) ndarray
+        Earth rotation rate resolved in NED, rad/s.
+
+    Notes
+    -----
+    The standard strapdown relation (Titterton & Weston, Strapdown Inertial Navigation
+    Technology, Sec. 3.5); the Earth rate is WGS-84's.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> w = earth_rate_ned(np.deg2rad(60.0))
+    >>> [f"{x:.4e}" for x in w]
+    ['3.6461e-05', '0.0000e+00', '-6.3152e-05']
+    """
     if np.ndim(lat) == 0:
         return OMEGA_EARTH * np.array([np.cos(lat), 0.0, -np.sin(lat)])
     lat = np.asarray(lat, dtype=float)
@@ -261,7 +375,32 @@ def earth_rate_ned(lat: ArrayLike) -> Array:
 
 
 def transport_rate_ned(v_ned: ArrayLike, lat: ArrayLike, h: ArrayLike = 0.0) -> Array:
-    """Transport rate ``[v_E, -v_N, -v_E tan L] / (R + h)`` (rad/s), spherical Earth."""
+    """Transport rate ``[v_E, -v_N, -v_E tan L] / (R + h)``, spherical Earth.
+
+    Parameters
+    ----------
+    v_ned : (..., 3) array
+        Ground velocity in NED, m/s.
+    lat : float or array
+        Latitude, rad.
+    h : float or array, default 0.0
+        Height, m.
+
+    Returns
+    -------
+    (..., 3) ndarray
+        Rate of the NED frame with respect to the Earth, rad/s.
+
+    Notes
+    -----
+    The standard strapdown relation (Titterton & Weston, Sec. 3.5) with the Schuler radius.
+
+    Examples
+    --------
+    >>> w = transport_rate_ned([0.0, 100.0, 0.0], 0.0)
+    >>> f"{w[0]:.4e}"
+    '1.5679e-05'
+    """
     v = np.asarray(v_ned, dtype=float)
     lat = np.asarray(lat, dtype=float)
     r = SCHULER_RADIUS_M + np.asarray(h, dtype=float)
@@ -310,7 +449,29 @@ def error_dynamics(
 
     Returns
     -------
-    F : (n, n) array
+    F : (n, n) ndarray
+        Continuous error-dynamics matrix, 1/s (in the units of the layout's blocks).
+
+    Raises
+    ------
+    ValueError
+        If ``layout`` lacks the position, velocity or misalignment block, or an input is not
+        finite.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",
+    Sec. 2.3 (INS error model).
+
+    Examples
+    --------
+    At rest, a north tilt couples into the east velocity error through gravity:
+
+    >>> import numpy as np
+    >>> lay = ins_error_layout("position", "velocity", "misalignment")
+    >>> F = error_dynamics(lay, f_ned=[0.0, 0.0, -9.80665], C_bn=np.eye(3))
+    >>> round(float(F[4, 6]), 5)
+    -9.80665
     """
     n = layout.size
     F = np.zeros((n, n))
@@ -369,8 +530,35 @@ def process_noise_psd(layout: StateLayout, sources: ErrorSources, *, speed_mps: 
     """Diagonal state-space noise PSD ``G Q G^T`` for :func:`error_dynamics`.
 
     Velocity gets the accelerometer white noise (``accel_random_walk^2``), the psi angle the
-    gyro white noise (``gyro_random_walk^2``); Gauss-Markov blocks get ``2 sigma^2 beta``;
-    the clock bias and drift their PSDs.
+    gyro white noise (``gyro_random_walk^2``); Gauss-Markov blocks get ``2 sigma^2 beta`` with
+    ``beta = speed / distance constant``; the clock bias and drift their PSDs.
+
+    Parameters
+    ----------
+    layout : StateLayout
+        Error-state layout.
+    sources : ErrorSources
+        Noise magnitudes (root PSDs in SI).
+    speed_mps : float, default 0.0
+        Ground speed, m/s (sets the Gauss-Markov rates).
+
+    Returns
+    -------
+    (n, n) ndarray
+        Diagonal PSD, state unit squared per second.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons", Sec. 2.3 (error models).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from navcore.inertial.imu import ImuSpec
+    >>> lay = ins_error_layout("position", "velocity", "misalignment")
+    >>> Q = process_noise_psd(lay, ErrorSources(imu=ImuSpec("x", accel_random_walk=1e-3)))
+    >>> np.diag(Q)[3:6].tolist()
+    [1e-06, 1e-06, 1e-06]
     """
     q = np.zeros(layout.size)
     names = layout.names
@@ -403,6 +591,34 @@ def initial_covariance(
 
     Use :func:`navcore.inertial.error_dynamics.gyrocompass_alignment` afterwards to replace
     the attitude block by the instrument-dependent, correlated gyrocompass errors.
+
+    Parameters
+    ----------
+    layout : StateLayout
+        Error-state layout (blocks of :func:`ins_error_layout`).
+    sources : ErrorSources
+        Supplies the 1-sigma of every sensor and aiding state (SI, see :class:`ErrorSources`).
+    position_sigma : (3,) tuple of float, default zeros
+        Initial NED position 1-sigma, m.
+    velocity_sigma : (3,) tuple of float, default zeros
+        Initial NED velocity 1-sigma, m/s.
+    attitude_sigma : (3,) tuple of float, default zeros
+        Initial attitude 1-sigma (north, east, down), rad.
+
+    Returns
+    -------
+    (n, n) ndarray
+        Diagonal covariance (state units squared).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from navcore.inertial.imu import ImuSpec
+    >>> lay = ins_error_layout("position", "velocity", "misalignment", "accel bias")
+    >>> P = initial_covariance(lay, ErrorSources(imu=ImuSpec("x", accel_bias=1e-3)),
+    ...                        position_sigma=(10.0, 10.0, 10.0))
+    >>> np.diag(P)[[0, 9]].tolist()
+    [100.0, 1e-06]
     """
     s = np.zeros(layout.size)
     imu = sources.imu
@@ -473,21 +689,55 @@ def gyrocompass_alignment(
     C_bn: ArrayLike | None = None,
     g: float = G0,
 ) -> Array:
-    """Replace the attitude errors by the steady state of a stationary gyrocompass alignment.
+    r"""Replace the attitude errors by the steady state of a stationary gyrocompass alignment.
 
     At rest the levelled, gyrocompassed platform has zero horizontal velocity-error rate and
     zero east psi-rate, which ties the attitude error to the sensor errors: with
-    :math:`e_f = C^n_b\\delta f^b` and :math:`e_\\omega = C^n_b\\delta\\omega^b` (linear in the
+    :math:`e_f = C^n_b\delta f^b` and :math:`e_\omega = C^n_b\delta\omega^b` (linear in the
     sensor states, rows of :func:`error_dynamics`),
 
     .. math::
 
-        \\psi_N = e_{f,E}/g,\\quad \\psi_E = -e_{f,N}/g,\\quad
-        \\psi_D = \\frac{e_{\\omega,E} - \\Omega\\sin L\\,\\psi_N}{\\Omega\\cos L}
+        \psi_N = e_{f,E}/g,\quad \psi_E = -e_{f,N}/g,\quad
+        \psi_D = \frac{e_{\omega,E} - \Omega\sin L\,\psi_N}{\Omega\cos L}
 
-    (Earth-rate :math:`\\Omega`, latitude :math:`L`). The returned covariance has
-    :math:`\\psi = T x_s` with the sensor covariance of ``P0`` and the correlations that make
+    (Earth-rate :math:`\Omega`, latitude :math:`L`). The returned covariance has
+    :math:`\psi = T x_s` with the sensor covariance of ``P0`` and the correlations that make
     the tilt cancel the accelerometer bias and the heading cancel the east gyro drift.
+
+    Parameters
+    ----------
+    P0 : (n, n) array
+        Initial covariance over ``layout`` (e.g. from :func:`initial_covariance`).
+    layout : StateLayout
+        Error-state layout (needs ``"misalignment"``).
+    lat : float
+        Latitude, rad (not at a pole).
+    C_bn : (3, 3) array, optional
+        Body-to-NED attitude (default identity).
+    g : float, default G0
+        Gravity magnitude, m/s^2.
+
+    Returns
+    -------
+    (n, n) ndarray
+        ``P0`` with its attitude rows and columns replaced (rad^2 and cross terms).
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",
+    Sec. 2.6.1 (initial alignment).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from navcore.inertial.imu import ImuSpec
+    >>> from navcore.units import DEG_PER_H
+    >>> lay = ins_error_layout("position", "velocity", "misalignment", "gyro drift")
+    >>> src = ErrorSources(imu=ImuSpec("example", gyro_bias=0.01 * DEG_PER_H))
+    >>> P = gyrocompass_alignment(initial_covariance(lay, src), lay, lat=np.deg2rad(45.0))
+    >>> round(float(np.sqrt(P[8, 8])) * 1e3, 3)  # heading error, mrad
+    0.94
     """
     ai, idx, ef, ew = _sensor_error_rates(layout, lat=lat, C_bn=C_bn, g=g)
     T = np.zeros((3, idx.size))
@@ -510,15 +760,56 @@ def levelling_alignment(
     g: float = G0,
     tilt_noise_sigma: float = 0.0,
 ) -> Array:
-    """Attitude errors after levelling at rest and a heading from an external source.
+    r"""Attitude errors after levelling at rest and a heading from an external source.
 
     Levelling makes the computed specific force exactly vertical, so the tilt cancels the
-    horizontal accelerometer errors, :math:`\\psi_N = e_{f,E}/g` and
-    :math:`\\psi_E = -e_{f,N}/g` (as in :func:`gyrocompass_alignment`). The heading does not
+    horizontal accelerometer errors, :math:`\psi_N = e_{f,E}/g` and
+    :math:`\psi_E = -e_{f,N}/g` (as in :func:`gyrocompass_alignment`). The heading does not
     come from the gyros (a MEMS gyro cannot sense the Earth rate through its bias) but from
     outside, e.g. the GPS track of KZL Eq. 4: an independent error of 1-sigma
-    ``heading_sigma`` (rad). ``tilt_noise_sigma`` (rad) adds an independent tilt per
-    horizontal axis, e.g. the averaged accelerometer noise :math:`N_a/(g\\sqrt{T})`.
+    ``heading_sigma``. ``tilt_noise_sigma`` adds an independent tilt per horizontal axis, e.g.
+    the averaged accelerometer noise :math:`N_a/(g\sqrt{T})`.
+
+    Parameters
+    ----------
+    P0 : (n, n) array
+        Initial covariance over ``layout``.
+    layout : StateLayout
+        Error-state layout (needs ``"misalignment"``).
+    heading_sigma : float
+        1-sigma of the external heading, rad (``>= 0``).
+    lat : float
+        Latitude, rad.
+    C_bn : (3, 3) array, optional
+        Body-to-NED attitude (default identity).
+    g : float, default G0
+        Gravity magnitude, m/s^2.
+    tilt_noise_sigma : float, default 0.0
+        Independent tilt 1-sigma per horizontal axis, rad (``>= 0``).
+
+    Returns
+    -------
+    (n, n) ndarray
+        ``P0`` with its attitude rows and columns replaced.
+
+    Raises
+    ------
+    ValueError
+        If ``heading_sigma`` or ``tilt_noise_sigma`` is negative.
+
+    References
+    ----------
+    Knedlik, Zhou & Loffeld (2009), Sec. 3.1 and Eq. (4) (initialisation).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from navcore.inertial.imu import ImuSpec
+    >>> lay = ins_error_layout("position", "velocity", "misalignment")
+    >>> P0 = initial_covariance(lay, ErrorSources(imu=ImuSpec("x")))
+    >>> P = levelling_alignment(P0, lay, heading_sigma=0.01, lat=0.8)
+    >>> round(float(P[8, 8]), 6)
+    0.0001
     """
     require_nonnegative("heading_sigma", heading_sigma)
     require_nonnegative("tilt_noise_sigma", tilt_noise_sigma)

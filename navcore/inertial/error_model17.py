@@ -95,7 +95,28 @@ _CD = ERROR_LAYOUT_17.index("clock drift")
 
 @implements("KZL 11")
 def skew_paper(a: ArrayLike) -> Array:
-    """The matrix KZL Eq. 11 prints as ``[a x]``: ``-skew(a)``, so ``skew_paper(a) @ b = b x a``."""
+    """The matrix KZL Eq. 11 prints as ``[a x]``: ``-skew(a)``, so ``skew_paper(a) @ b = b x a``.
+
+    Parameters
+    ----------
+    a : (3,) array
+        Vector (any unit).
+
+    Returns
+    -------
+    (3, 3) ndarray
+        ``-[a x]``.
+
+    References
+    ----------
+    Knedlik, Zhou & Loffeld, "On Position and Attitude Estimation for Remote Sensing with
+    Bistatic SAR" (2009), Eq. (11).
+
+    Examples
+    --------
+    >>> skew_paper([0.0, 0.0, 1.0]) @ [1.0, 0.0, 0.0]
+    array([ 0., -1.,  0.])
+    """
     return -skew(a)
 
 
@@ -112,7 +133,8 @@ def error_dynamics_17(C_bn: ArrayLike, f_n: ArrayLike) -> Array:
 
     Returns
     -------
-    F : (17, 17) or (N, 17, 17) array
+    F : (17, 17) or (N, 17, 17) ndarray
+        Continuous error dynamics, 1/s (in the units of the 17 states).
 
     Examples
     --------
@@ -147,16 +169,44 @@ def noise_psd_17(
 ) -> Array:
     """State-space noise PSD ``G Q G^T`` (17 x 17) for isotropic sensor noises.
 
+    The noise enters as ``-R w``; for isotropic noise ``R q I R^T = q I``, so the result does
+    not depend on the attitude.
+
     Parameters
     ----------
-    accel_noise, gyro_noise : float
-        Root PSDs of the white accelerometer (m/s/sqrt(s)) and gyro (rad/sqrt(s)) noise.
-        The noise enters as ``-R w``; for isotropic noise ``R q I R^T = q I``, so the result
-        does not depend on the attitude.
-    accel_bias_walk, gyro_bias_walk : float
-        Root PSDs of the bias random walks (m/s^2/sqrt(s), rad/s/sqrt(s)).
-    clock_drift_walk, clock_bias_walk : float
-        Root PSDs of the clock drift (m/s/sqrt(s)) and clock phase (m/sqrt(s)) random walks.
+    accel_noise : float
+        Root PSD of the white accelerometer noise, m/s/sqrt(s) (``>= 0``).
+    gyro_noise : float
+        Root PSD of the white gyro noise, rad/sqrt(s) (``>= 0``).
+    accel_bias_walk : float, default 0.0
+        Root PSD of the accelerometer-bias random walk, m/s^2/sqrt(s).
+    gyro_bias_walk : float, default 0.0
+        Root PSD of the gyro-bias random walk, rad/s/sqrt(s).
+    clock_drift_walk : float, default 0.0
+        Root PSD of the clock-drift random walk, m/s/sqrt(s).
+    clock_bias_walk : float, default 0.0
+        Root PSD of the clock-phase random walk, m/sqrt(s).
+
+    Returns
+    -------
+    (17, 17) ndarray
+        Diagonal PSD (state unit squared per second).
+
+    Raises
+    ------
+    ValueError
+        If any root PSD is negative.
+
+    References
+    ----------
+    Knedlik, Zhou & Loffeld, "On Position and Attitude Estimation for Remote Sensing with
+    Bistatic SAR" (2009), Sec. 3.3 (the 17-state error model).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> np.diag(noise_psd_17(0.01, 0.001))[3:9].tolist()
+    [0.0001, 0.0001, 0.0001, 1e-06, 1e-06, 1e-06]
     """
     for name, value in locals().items():
         require_nonnegative(name, value)
@@ -172,10 +222,37 @@ def noise_psd_17(
 
 @implements("KZL 5")
 def transition_exact(F: ArrayLike, dt: float) -> Array:
-    """:math:`e^{F\\,dt}` of the nilpotent 17-state F: ``I + F dt + (F dt)^2/2 + (F dt)^3/6``.
+    r""":math:`e^{F\,dt}` of the nilpotent 17-state F: ``I + F dt + (F dt)^2/2 + (F dt)^3/6``.
 
     Exact because ``F^4 = 0`` (KZL Eq. 5: the series terminates). Broadcasts over a leading
     axis.
+
+    Parameters
+    ----------
+    F : (..., n, n) array
+        Error dynamics with ``F^4 = 0``, 1/s.
+    dt : float
+        Interval, s (``> 0``).
+
+    Returns
+    -------
+    (..., n, n) ndarray
+        State-transition matrix.
+
+    Raises
+    ------
+    ValueError
+        If ``dt`` is not positive.
+
+    References
+    ----------
+    Knedlik, Zhou & Loffeld, "On Position and Attitude Estimation for Remote Sensing with
+    Bistatic SAR" (2009), Eq. (5).
+
+    Examples
+    --------
+    >>> transition_exact([[0.0, 1.0], [0.0, 0.0]], 2.0).tolist()
+    [[1.0, 2.0], [0.0, 1.0]]
     """
     require_positive("dt", dt)
     A = np.asarray(F, dtype=float) * dt
@@ -185,7 +262,35 @@ def transition_exact(F: ArrayLike, dt: float) -> Array:
 
 @implements("KZL 6")
 def transition_first_order(F: ArrayLike, dt: float) -> Array:
-    """KZL Eq. 6: ``I + F dt``."""
+    """KZL Eq. 6: ``I + F dt``.
+
+    Parameters
+    ----------
+    F : (..., n, n) array
+        Error dynamics, 1/s.
+    dt : float
+        Interval, s (``> 0``).
+
+    Returns
+    -------
+    (..., n, n) ndarray
+        First-order state-transition matrix.
+
+    Raises
+    ------
+    ValueError
+        If ``dt`` is not positive.
+
+    References
+    ----------
+    Knedlik, Zhou & Loffeld, "On Position and Attitude Estimation for Remote Sensing with
+    Bistatic SAR" (2009), Eq. (6).
+
+    Examples
+    --------
+    >>> transition_first_order([[0.0, 1.0], [-1.0, 0.0]], 0.5).tolist()
+    [[1.0, 0.5], [-0.5, 1.0]]
+    """
     require_positive("dt", dt)
     return np.eye(np.shape(F)[-1]) + np.asarray(F, dtype=float) * dt
 
@@ -197,13 +302,30 @@ def code_doppler_rows(los_ned: ArrayLike) -> Array:
     Parameters
     ----------
     los_ned : (nu, 3) array
-        Unit line-of-sight vectors receiver -> satellite in NED.
+        Unit line-of-sight vectors receiver -> satellite in NED (dimensionless).
 
     Returns
     -------
-    H : (2 nu, 17) array
+    H : (2 nu, 17) ndarray
         Rows ``[-l^T 0 0 0 0 1 0]`` and ``[0 -l^T 0 0 0 0 1]`` for each satellite, in the
-        order (rho_1, rho_dot_1, rho_2, ...), for ``y = predicted - measured``.
+        order (rho_1, rho_dot_1, rho_2, ...), for ``y = predicted - measured`` (m per m and
+        m/s per m/s).
+
+    Raises
+    ------
+    ValueError
+        If ``los_ned`` is not a finite 2-D array.
+
+    References
+    ----------
+    Knedlik, Zhou & Loffeld, "On Position and Attitude Estimation for Remote Sensing with
+    Bistatic SAR" (2009), Eq. (13).
+
+    Examples
+    --------
+    >>> H = code_doppler_rows([[0.0, 0.0, -1.0]])
+    >>> H.shape, H[0, :3].tolist(), float(H[0, 15])
+    ((2, 17), [-0.0, -0.0, 1.0], 1.0)
     """
     L = as_finite_array("los_ned", los_ned, ndim=2)
     nu = L.shape[0]
@@ -220,6 +342,25 @@ def observability_rank(F: ArrayLike, H: ArrayLike, rtol: float = 1e-9) -> int:
 
     Rows are normalised before the SVD so that blocks of different units count alike; the
     rank counts singular values above ``rtol`` times the largest.
+
+    Parameters
+    ----------
+    F : (n, n) array
+        System matrix, 1/s.
+    H : (m, n) array
+        Measurement matrix.
+    rtol : float, default 1e-9
+        Relative threshold on the singular values.
+
+    Returns
+    -------
+    int
+        Numerical rank, between 0 and ``n``.
+
+    Examples
+    --------
+    >>> observability_rank([[0.0, 1.0], [0.0, 0.0]], [[1.0, 0.0]])
+    2
     """
     F = np.asarray(F, dtype=float)
     H = np.atleast_2d(np.asarray(H, dtype=float))

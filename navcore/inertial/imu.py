@@ -58,6 +58,8 @@ class ImuSpec:
         Velocity random walk, root PSD of acceleration noise, m/s/sqrt(s).
     source : str
         Where the numbers come from (paper and table).
+    extra : dict of str to float
+        Further named values kept with the specification (no model reads them).
     """
 
     name: str
@@ -94,6 +96,21 @@ def angle_random_walk_deg_per_sqrt_h(root_psd_deg_per_h_per_sqrt_hz: float) -> f
 
     ``1 deg/h/sqrt(Hz) = 1 deg/h * sqrt(s) = (1/60) deg/sqrt(h)``.
 
+    Parameters
+    ----------
+    root_psd_deg_per_h_per_sqrt_hz : float
+        Rate-noise root PSD, deg/h/sqrt(Hz) (``>= 0``).
+
+    Returns
+    -------
+    float
+        Angle random walk, deg/sqrt(h).
+
+    Raises
+    ------
+    ValueError
+        If the input is negative.
+
     Examples
     --------
     >>> round(angle_random_walk_deg_per_sqrt_h(4.7), 4)
@@ -107,6 +124,21 @@ def velocity_random_walk_m_per_s_per_sqrt_h(root_psd_micro_g_per_sqrt_hz: float)
     """Convert an accelerometer noise root PSD in micro-g/sqrt(Hz) to velocity random walk in m/s/sqrt(h).
 
     ``1 micro-g/sqrt(Hz) = 9.80665e-6 m/s/sqrt(s) = 9.80665e-6 * 60 m/s/sqrt(h)``.
+
+    Parameters
+    ----------
+    root_psd_micro_g_per_sqrt_hz : float
+        Acceleration-noise root PSD, micro-g/sqrt(Hz) (``>= 0``).
+
+    Returns
+    -------
+    float
+        Velocity random walk, m/s/sqrt(h).
+
+    Raises
+    ------
+    ValueError
+        If the input is negative.
 
     Examples
     --------
@@ -133,8 +165,38 @@ def imu_spec_from_published(
 ) -> ImuSpec:
     """Build an :class:`ImuSpec` from the units in which IMU tables are usually printed.
 
-    Parameters are 1-sigma values in micro-g, ppm, arcsec, micro-g/sqrt(Hz), deg/h and
-    deg/h/sqrt(Hz); the result is in SI (see :class:`ImuSpec`).
+    Parameters
+    ----------
+    name : str
+        Name of the instrument.
+    accel_bias_micro_g : float
+        Accelerometer bias 1-sigma, micro-g.
+    accel_scale_factor_ppm : float
+        Accelerometer scale-factor error 1-sigma, ppm.
+    accel_misalignment_arcsec : float
+        Accelerometer misalignment 1-sigma, arcsec.
+    accel_random_walk_micro_g_per_sqrt_hz : float
+        Accelerometer white-noise root PSD, micro-g/sqrt(Hz).
+    gyro_bias_deg_per_h : float
+        Gyro bias 1-sigma, deg/h.
+    gyro_scale_factor_ppm : float
+        Gyro scale-factor error 1-sigma, ppm.
+    gyro_misalignment_arcsec : float
+        Gyro misalignment 1-sigma, arcsec.
+    gyro_random_walk_deg_per_h_per_sqrt_hz : float
+        Gyro white-noise root PSD, deg/h/sqrt(Hz).
+    source : str, default ""
+        Where the numbers come from.
+
+    Returns
+    -------
+    ImuSpec
+        The instrument in SI (see :class:`ImuSpec`).
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons", Table 2.5
+    (the IMU grades are printed in these units).
 
     Examples
     --------
@@ -164,6 +226,22 @@ def noise_only(spec: ImuSpec) -> ImuSpec:
 
     This is the "perfectly calibrated" instrument: what remains after GPS has estimated
     every bias, scale factor and misalignment exactly.
+
+    Parameters
+    ----------
+    spec : ImuSpec
+        The instrument (SI).
+
+    Returns
+    -------
+    ImuSpec
+        Same random walks and source; biases, scale factors and misalignments zero.
+
+    Examples
+    --------
+    >>> s = noise_only(ImuSpec("x", gyro_bias=1e-6, gyro_random_walk=1e-5))
+    >>> s.gyro_bias, s.gyro_random_walk
+    (0.0, 1e-05)
     """
     return ImuSpec(
         name=f"{spec.name} (noise only)",
@@ -175,12 +253,33 @@ def noise_only(spec: ImuSpec) -> ImuSpec:
 
 @implements("KZL Sec. 3.1")
 def gyro_bias_calibrated_at_rest(spec: ImuSpec, averaging_time: float) -> ImuSpec:
-    """The spec after the turn-on gyro bias was measured by averaging at rest for ``averaging_time``.
+    r"""The spec after the turn-on gyro bias was measured by averaging at rest for ``averaging_time``.
 
     Averaging white rate noise of root PSD :math:`N` for :math:`T` seconds leaves a random
-    constant residual of 1-sigma :math:`N/\\sqrt{T}`; that residual replaces ``gyro_bias``
+    constant residual of 1-sigma :math:`N/\sqrt{T}`; that residual replaces ``gyro_bias``
     (KZL Sec. 3.1: the gyro biases are calibrated while the vehicle is stationary). The
     Earth rate the gyros also sense is assumed known and removed.
+
+    Parameters
+    ----------
+    spec : ImuSpec
+        The instrument (SI).
+    averaging_time : float
+        Averaging time at rest, s (``> 0``).
+
+    Returns
+    -------
+    ImuSpec
+        A copy whose ``gyro_bias`` is the residual, rad/s.
+
+    Raises
+    ------
+    ValueError
+        If ``averaging_time`` is not positive.
+
+    References
+    ----------
+    Knedlik, Zhou & Loffeld (2009), Sec. 3.1.
 
     Examples
     --------

@@ -81,7 +81,7 @@ Array = NDArray[np.float64]
 def scale_factor_misalignment_sensitivity(
     accel: ArrayLike = (1.0, 1.0, 1.0), convention: Literal["cross", "printed"] = "cross"
 ) -> Array:
-    """3x6 sensitivity of the residual acceleration to (sf1, sf2, sf3, dtheta1, dtheta2, dtheta3).
+    r"""3x6 sensitivity of the residual acceleration to (sf1, sf2, sf3, dtheta1, dtheta2, dtheta3).
 
     Parameters
     ----------
@@ -89,9 +89,24 @@ def scale_factor_misalignment_sensitivity(
         The acceleration step (any unit; the result is per unit of it). The paper's "unit
         acceleration step" is ``(1, 1, 1)``.
     convention : {"cross", "printed"}
-        ``"cross"``: :math:`\\delta a_{mis} = \\delta\\theta\\times a` (the paper's skew
+        ``"cross"``: :math:`\delta a_{mis} = \delta\theta\times a` (the paper's skew
         matrix); ``"printed"``: the sign of the paper's printed 3x6 matrix,
-        :math:`a\\times\\delta\\theta`.
+        :math:`a\times\delta\theta`.
+
+    Returns
+    -------
+    (3, 6) ndarray
+        ``[diag(a), [a x] sign]``: acceleration unit per unit scale factor and per rad.
+
+    Raises
+    ------
+    ValueError
+        If ``accel`` is not a finite 3-vector or ``convention`` is unknown.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons", Sec. 2.5,
+    Table 2.6.
 
     Examples
     --------
@@ -112,7 +127,38 @@ def scale_factor_misalignment_sensitivity(
 
 @implements("SP Table 2.6")
 def residual_acceleration_covariance(sensitivity: ArrayLike, error_covariance: ArrayLike) -> Array:
-    """Covariance :math:`H P H^T` of the residual acceleration (SP Sec. 2.5), symmetrised."""
+    """Covariance :math:`H P H^T` of the residual acceleration (SP Sec. 2.5), symmetrised.
+
+    Parameters
+    ----------
+    sensitivity : (m, n) array
+        Sensitivity of the residual acceleration to the error states (e.g.
+        :func:`scale_factor_misalignment_sensitivity`).
+    error_covariance : (n, n) array
+        Covariance of the error states (scale factors dimensionless, misalignments rad^2).
+
+    Returns
+    -------
+    (m, m) ndarray
+        Covariance of the residual acceleration, in the unit of the acceleration step squared.
+
+    Raises
+    ------
+    ValueError
+        If the shapes disagree or ``error_covariance`` is not symmetric positive semi-definite.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons", Sec. 2.5 and Table 2.6.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> H = scale_factor_misalignment_sensitivity()
+    >>> C = residual_acceleration_covariance(H, 1e-8 * np.eye(6))
+    >>> [f"{x:.1e}" for x in np.diag(C)]
+    ['3.0e-08', '3.0e-08', '3.0e-08']
+    """
     H = as_finite_array("sensitivity", sensitivity)
     P = require_symmetric_psd("error_covariance", error_covariance)
     if H.ndim != 2 or H.shape[1] != P.shape[0]:
@@ -171,12 +217,30 @@ def _probability_inside(lam: Array, radius: float) -> float:
 
 
 def sphere_probability(cov: ArrayLike, radius: float) -> float:
-    """Probability that a zero-mean Gaussian with covariance ``cov`` lies within ``radius``.
+    r"""Probability that a zero-mean Gaussian with covariance ``cov`` lies within ``radius``.
 
-    Numerical integration (module docstring) of the distribution of :math:`\\sum\\lambda_i z_i^2`.
+    Numerical integration (module docstring) of the distribution of :math:`\sum\lambda_i z_i^2`.
+
+    Parameters
+    ----------
+    cov : (n, n) array
+        Covariance (symmetric positive semi-definite), unit squared.
+    radius : float
+        Sphere radius, same unit (finite, ``>= 0``).
+
+    Returns
+    -------
+    float
+        Probability in [0, 1].
+
+    Raises
+    ------
+    ValueError
+        If ``radius`` is negative or not finite, or ``cov`` is not a covariance.
 
     Examples
     --------
+    >>> import numpy as np
     >>> round(sphere_probability(np.eye(3), 2.5002777), 6)
     0.9
     """
@@ -192,6 +256,34 @@ def sphere_radius(cov: ArrayLike, p: float = 0.9) -> float:
 
     For ``cov = s^2 I`` in 3-D and p = 0.9 this is 2.500278 s; the 2-D p = 0.5 value is the
     CEP (1.17741 s). Any dimension and any (PSD) covariance.
+
+    Parameters
+    ----------
+    cov : (n, n) array
+        Covariance (symmetric positive semi-definite), unit squared.
+    p : float, default 0.9
+        Enclosed probability, in (0, 1).
+
+    Returns
+    -------
+    float
+        Radius, in the unit of ``cov``'s square root.
+
+    Raises
+    ------
+    ValueError
+        If ``p`` is not in (0, 1) or ``cov`` is not a covariance.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons", Table 2.6
+    (the 90 % spherical residual acceleration).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> round(sphere_radius(np.eye(3)), 6)
+    2.500278
     """
     require_probability("p", p)
     if not 0 < p < 1:
@@ -203,7 +295,35 @@ def sphere_radius(cov: ArrayLike, p: float = 0.9) -> float:
 
 
 def sphere_radius_monte_carlo(cov: ArrayLike, p: float = 0.9, n: int = 200_000, seed: int = 0) -> float:
-    """Monte Carlo estimate of :func:`sphere_radius`: the ``p`` quantile of ``|x|`` over ``n`` draws."""
+    """Monte Carlo estimate of :func:`sphere_radius`: the ``p`` quantile of ``|x|`` over ``n`` draws.
+
+    Parameters
+    ----------
+    cov : (n, n) array
+        Covariance (symmetric positive semi-definite), unit squared.
+    p : float, default 0.9
+        Enclosed probability.
+    n : int, default 200000
+        Number of draws.
+    seed : int, default 0
+        Seed of ``numpy.random.default_rng``.
+
+    Returns
+    -------
+    float
+        Estimated radius (unit of ``cov``'s square root).
+
+    Raises
+    ------
+    ValueError
+        If ``p`` is not a probability, ``n`` not an integer or ``cov`` not a covariance.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> round(sphere_radius_monte_carlo(np.eye(3), n=20_000, seed=1), 1)
+    2.5
+    """
     require_probability("p", p)
     require_integer("n", n)
     C = require_symmetric_psd("cov", cov)

@@ -96,6 +96,15 @@ class NavState:
     velocity (m/s, NED) and attitude quaternion ``q_bn`` (body to NED).
 
     Each field has a leading run axis: ``pos (N, 3)``, ``vel (N, 3)``, ``quat (N, 4)``.
+
+    Attributes
+    ----------
+    pos : (N, 3) ndarray
+        Position from the origin, m (north, east, down).
+    vel : (N, 3) ndarray
+        Velocity, m/s (NED).
+    quat : (N, 4) ndarray
+        Attitude quaternion ``q_bn``, scalar first.
     """
 
     pos: Array
@@ -104,7 +113,26 @@ class NavState:
 
 
 def quat_multiply_batch(q: Array, p: Array) -> Array:
-    """Hamilton product ``q ⊗ p`` over a leading axis, without input validation (hot loop)."""
+    """Hamilton product ``q ⊗ p`` over a leading axis, without input validation (hot loop).
+
+    Parameters
+    ----------
+    q : (..., 4) array
+        Left quaternions, scalar first.
+    p : (..., 4) array
+        Right quaternions, scalar first.
+
+    Returns
+    -------
+    (..., 4) ndarray
+        The products.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> quat_multiply_batch(np.array([0.0, 1.0, 0.0, 0.0]), np.array([0.0, 0.0, 1.0, 0.0])).tolist()
+    [0.0, 0.0, 0.0, 1.0]
+    """
     w1, x1, y1, z1 = q[..., 0], q[..., 1], q[..., 2], q[..., 3]
     w2, x2, y2, z2 = p[..., 0], p[..., 1], p[..., 2], p[..., 3]
     return np.stack(
@@ -122,6 +150,23 @@ def dcm_from_quat_batch(q: Array) -> Array:
     """Rotation matrices ``(..., 3, 3)`` of unit quaternions ``(..., 4)`` (body to NED).
 
     Same convention as :func:`navcore.frames.dcm_from_quat`, which handles one quaternion.
+
+    Parameters
+    ----------
+    q : (..., 4) array
+        Unit quaternions, scalar first (not checked).
+
+    Returns
+    -------
+    (..., 3, 3) ndarray
+        Body-to-NED direction cosine matrices.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> C = dcm_from_quat_batch(np.array([[np.cos(0.25), 0.0, 0.0, np.sin(0.25)]]))
+    >>> np.round(C[0], 4).tolist()
+    [[0.8776, -0.4794, 0.0], [0.4794, 0.8776, 0.0], [0.0, 0.0, 1.0]]
     """
     w, x, y, z = q[..., 0], q[..., 1], q[..., 2], q[..., 3]
     return np.stack(
@@ -135,13 +180,60 @@ def dcm_from_quat_batch(q: Array) -> Array:
 
 
 def earth_rate_ned(lat: ArrayLike) -> Array:
-    """Earth rotation rate resolved in NED, :math:`\\Omega[\\cos L, 0, -\\sin L]` (rad/s)."""
+    r"""Earth rotation rate resolved in NED, :math:`\Omega[\cos L, 0, -\sin L]`.
+
+    Parameters
+    ----------
+    lat : float or array
+        Latitude, rad.
+
+    Returns
+    -------
+    (..., 3) ndarray
+        Earth rate in NED, rad/s.
+
+    Notes
+    -----
+    Groves, Principles of GNSS, Inertial, and Multisensor Integrated Navigation Systems,
+    Eq. (5.41).
+
+    Examples
+    --------
+    >>> [f"{x:.4e}" for x in earth_rate_ned(0.5)]
+    ['6.3994e-05', '0.0000e+00', '-3.4960e-05']
+    """
     lat = np.asarray(lat, dtype=float)
     return OMEGA_EARTH * np.stack([np.cos(lat), np.zeros_like(lat), -np.sin(lat)], axis=-1)
 
 
 def transport_rate_ned(vel: ArrayLike, lat: ArrayLike, h: ArrayLike) -> Array:
-    """Transport rate :math:`\\omega_{en}^n` (rad/s) of NED velocity ``vel`` (Groves Eq. 5.44)."""
+    r"""Transport rate :math:`\omega_{en}^n` of NED velocity ``vel`` (Groves Eq. 5.44).
+
+    Parameters
+    ----------
+    vel : (..., 3) array
+        NED velocity, m/s.
+    lat : float or array
+        Geodetic latitude, rad.
+    h : float or array
+        Height, m.
+
+    Returns
+    -------
+    (..., 3) ndarray
+        Transport rate in NED, rad/s (WGS-84 radii of curvature).
+
+    Notes
+    -----
+    Groves, Principles of GNSS, Inertial, and Multisensor Integrated Navigation Systems,
+    Eq. (5.44).
+
+    Examples
+    --------
+    >>> w = transport_rate_ned([100.0, 0.0, 0.0], 0.0, 0.0)
+    >>> f"{w[1]:.4e}"
+    '-1.5784e-05'
+    """
     vel = np.asarray(vel, dtype=float)
     lat = np.asarray(lat, dtype=float)
     h = np.asarray(h, dtype=float)
@@ -181,6 +273,11 @@ def strapdown_step(
         ``exp(-omega_in dt / 2) ⊗ q``); velocity uses the mid-interval attitude (the start
         attitude rotated by half the body increment and by half the navigation-frame
         rotation); position is trapezoidal in velocity.
+
+    Raises
+    ------
+    ValueError
+        If ``dt`` is not positive or a rate or specific force is not finite.
 
     Examples
     --------
@@ -258,6 +355,22 @@ def strapdown_interval(
         The state after the ``S`` intervals.
     f_n : (N, S, 3) array
         The specific force resolved in NED in each interval (for the error model's F23).
+
+    Raises
+    ------
+    ValueError
+        If ``dt`` is not positive or an input is not finite.
+
+    Examples
+    --------
+    At rest, with the accelerometers reading the reaction to gravity, nothing moves:
+
+    >>> import numpy as np
+    >>> s0 = NavState(np.zeros((1, 3)), np.zeros((1, 3)), np.array([[1.0, 0.0, 0.0, 0.0]]))
+    >>> f = np.tile([0.0, 0.0, -G0], (1, 100, 1))
+    >>> s1, f_n = strapdown_interval(s0, np.zeros((1, 100, 3)), f, 0.01)
+    >>> float(np.abs(s1.vel).max()) < 1e-12, f_n.shape
+    (True, (1, 100, 3))
     """
     require_positive("dt", dt)
     w = np.asarray(omega_ib_b, dtype=float)

@@ -77,7 +77,29 @@ class Segment:
 
 @dataclass(frozen=True)
 class Trajectory:
-    """Trajectory samples on a uniform grid (all arrays have ``len(t)`` rows)."""
+    """Trajectory samples on a uniform grid (all arrays have ``len(t)`` rows).
+
+    Attributes
+    ----------
+    t : (N,) ndarray
+        Times, s.
+    lat : (N,) ndarray
+        Geodetic latitude, rad.
+    lon : (N,) ndarray
+        Longitude, rad.
+    h : (N,) ndarray
+        Height, m.
+    pos_ned : (N, 3) ndarray
+        Position from the start, m (NED).
+    vel_ned : (N, 3) ndarray
+        Ground velocity, m/s (NED).
+    f_ned : (N, 3) ndarray
+        Specific force resolved in NED, m/s^2.
+    C_bn : (N, 3, 3) ndarray
+        Body-to-NED attitude.
+    omega_nb_b : (N, 3) ndarray
+        Body rate relative to the NED frame, body axes, rad/s.
+    """
 
     t: Array
     lat: Array
@@ -103,7 +125,29 @@ class Trajectory:
 
 
 def euler_to_dcm_stack(roll: Array, pitch: Array, yaw: Array) -> Array:
-    """``C_bn = Rz(yaw) Ry(pitch) Rx(roll)`` for arrays of angles: shape ``(N, 3, 3)``."""
+    """``C_bn = Rz(yaw) Ry(pitch) Rx(roll)`` for arrays of angles.
+
+    Parameters
+    ----------
+    roll : (N,) array
+        Roll angles, rad.
+    pitch : (N,) array
+        Pitch angles, rad.
+    yaw : (N,) array
+        Yaw (heading) angles, rad.
+
+    Returns
+    -------
+    (N, 3, 3) ndarray
+        Body-to-NED direction cosine matrices (3-2-1 sequence).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> C = euler_to_dcm_stack(np.zeros(1), np.zeros(1), np.array([np.pi / 2]))
+    >>> (np.round(C[0], 6) + 0.0).tolist()
+    [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]
+    """
     cr, sr = np.cos(roll), np.sin(roll)
     cp, sp = np.cos(pitch), np.sin(pitch)
     cy, sy = np.cos(yaw), np.sin(yaw)
@@ -134,6 +178,7 @@ def fly(
     Parameters
     ----------
     segments : sequence of Segment
+        Manoeuvres flown one after the other (durations in s, rates in rad/s, m/s^2).
     dt : float
         Sample interval (s).
     lat0, lon0 : float
@@ -142,6 +187,18 @@ def fly(
         Start height (m), speed (m/s), heading and flight-path angle (rad).
     g : float
         Gravity magnitude (m/s^2) in the specific force.
+
+    Returns
+    -------
+    Trajectory
+        Time (s), geodetic position (rad, rad, m), NED position (m) and velocity (m/s),
+        specific force in NED (m/s^2), body-to-NED attitude and body rates (rad/s) at
+        every sample.
+
+    Raises
+    ------
+    ValueError
+        If ``dt`` or ``g`` is not positive, or an argument is not finite.
 
     Examples
     --------
@@ -200,7 +257,41 @@ def straight_and_level(
     lon0: float = 0.0,
     h0: float = 0.0,
 ) -> Trajectory:
-    """Constant speed, heading and height (``speed = 0`` gives a stationary vehicle)."""
+    """Constant speed, heading and height (``speed = 0`` gives a stationary vehicle).
+
+    Parameters
+    ----------
+    duration : float
+        Length, s (``>= 0``).
+    speed : float, default 0.0
+        Ground speed, m/s.
+    heading : float, default 0.0
+        Heading, rad from north.
+    dt : float, default 1.0
+        Sample interval, s (``> 0``).
+    lat0 : float, default 0.0
+        Start latitude, rad.
+    lon0 : float, default 0.0
+        Start longitude, rad.
+    h0 : float, default 0.0
+        Height, m.
+
+    Returns
+    -------
+    Trajectory
+        Samples at ``0, dt, ..., duration``.
+
+    Raises
+    ------
+    ValueError
+        If ``dt`` is not positive or ``duration`` is negative.
+
+    Examples
+    --------
+    >>> tr = straight_and_level(10.0, speed=50.0)
+    >>> len(tr), round(float(tr.pos_ned[-1, 0]), 6)
+    (11, 500.0)
+    """
     return fly([Segment(duration)], dt=dt, lat0=lat0, lon0=lon0, h0=h0, speed0=speed, heading0=heading)
 
 

@@ -50,6 +50,27 @@ __all__ = [
 def mandelbrot_van_ness_constant(rho_h: float) -> float:
     """``V0 = 1 / (Gamma(2 rho + 1) sin(pi rho))`` (ATC-10 Eq. G.5), for 0 < rho < 1.
 
+    Parameters
+    ----------
+    rho_h : float
+        Exponent, strictly in (0, 1).
+
+    Returns
+    -------
+    float
+        ``V0`` (dimensionless).
+
+    Raises
+    ------
+    ValueError
+        If ``rho_h`` is not strictly between 0 and 1.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972),
+    Appendix G, Eq. (G.5); Mandelbrot & Van Ness, SIAM Review 10 (1968).
+
     Examples
     --------
     >>> round(float(mandelbrot_van_ness_constant(0.5)), 12)
@@ -69,6 +90,33 @@ def mandelbrot_van_ness_constant_integral(rho_h: float) -> float:
 
     Numerical quadrature (scipy.integrate.quad), the independent oracle for
     :func:`mandelbrot_van_ness_constant`.
+
+    Parameters
+    ----------
+    rho_h : float
+        Exponent, in (0, 1).
+
+    Returns
+    -------
+    float
+        ``V0`` (dimensionless).
+
+    Raises
+    ------
+    ValueError
+        If ``rho_h`` is outside [0, 1].
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Appendix G, Eq. (G.5).
+
+    Examples
+    --------
+    >>> round(float(mandelbrot_van_ness_constant_integral(0.7)), 6)
+    0.995088
+    >>> round(mandelbrot_van_ness_constant(0.7), 6)
+    0.995088
     """
     require_in_range("rho_h", rho_h, 0.0, 1.0)
     e = rho_h - 0.5
@@ -95,6 +143,40 @@ def clock_covariance(
 
     ``tau_bar = 0`` gives the covariance; a nonzero ``tau_bar`` adds the mean product
     ``tau_bar^2 m n``. ``rho_h`` in (0, 1]; rho_h = 1 is the random-frequency-offset limit.
+
+    Parameters
+    ----------
+    n_epochs : int
+        Number of epochs (``>= 1``).
+    sigma1 : float
+        Standard deviation of the random-walk increments (a time unit, ``>= 0``).
+    sigma2 : float
+        Scale of the fractional-Brownian part (same unit, ``>= 0``).
+    rho_h : float, default 1.0
+        Hurst-like exponent, in (0, 1].
+    tau_bar : float, default 0.0
+        Mean emission interval (same unit).
+
+    Returns
+    -------
+    (n_epochs, n_epochs) ndarray
+        Second moments, time unit squared.
+
+    Raises
+    ------
+    ValueError
+        If ``n_epochs`` is not a positive integer, a sigma is negative or ``rho_h`` is not in
+        (0, 1].
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Sec. 4.3 and Eq. (4.3.1b).
+
+    Examples
+    --------
+    >>> clock_covariance(3, 1.0, 1.0).tolist()
+    [[2.0, 3.0, 4.0], [3.0, 6.0, 8.0], [4.0, 8.0, 12.0]]
     """
     n_epochs = require_integer("n_epochs", n_epochs, minimum=1)
     require_nonnegative("sigma1", sigma1)
@@ -113,9 +195,34 @@ def clock_covariance(
 def clock_increment_covariance(n_epochs: int, sigma0: float) -> np.ndarray:
     """Covariance of the increments Delta_n for the Eq. 4.3.1 model.
 
-    2 sigma0^2 on the diagonal, sigma0^2 off it.
+    ``2 sigma0^2`` on the diagonal, ``sigma0^2`` off it.
 
-    ATC-10 Eq. 4.5.23.
+    Parameters
+    ----------
+    n_epochs : int
+        Number of increments (``>= 1``).
+    sigma0 : float
+        Standard deviation of the clock increments ``w_n`` and of ``A`` (a time unit, ``>= 0``).
+
+    Returns
+    -------
+    (n_epochs, n_epochs) ndarray
+        Covariance, time unit squared.
+
+    Raises
+    ------
+    ValueError
+        If ``n_epochs`` is not a positive integer or ``sigma0`` negative.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (4.5.23).
+
+    Examples
+    --------
+    >>> clock_increment_covariance(2, 3.0).tolist()
+    [[18.0, 9.0], [9.0, 18.0]]
     """
     n_epochs = require_integer("n_epochs", n_epochs, minimum=1)
     require_nonnegative("sigma0", sigma0)
@@ -130,10 +237,45 @@ def sample_clock_paths(
     rho_h: float = 1.0,
     seed: int = 0,
 ) -> np.ndarray:
-    """Seeded sample paths of ``tau_n - tau_0 - n tau_bar``, n = 1..n_epochs (shape n_paths x n_epochs).
+    """Seeded sample paths of ``tau_n - tau_0 - n tau_bar``, n = 1..n_epochs.
 
     Exact Gaussian sampling by Cholesky factorisation of :func:`clock_covariance` (a tiny
     diagonal jitter keeps the factorisation stable for the rank-deficient rho_h = 1 case).
+
+    Parameters
+    ----------
+    n_epochs : int
+        Number of epochs (``>= 1``).
+    n_paths : int
+        Number of paths (``>= 1``).
+    sigma1 : float
+        Standard deviation of the random-walk increments (a time unit, ``>= 0``).
+    sigma2 : float
+        Scale of the fractional-Brownian part (same unit, ``>= 0``).
+    rho_h : float, default 1.0
+        Exponent, in (0, 1].
+    seed : int, default 0
+        Seed of ``numpy.random.default_rng``.
+
+    Returns
+    -------
+    (n_paths, n_epochs) ndarray
+        Clock deviations, time unit.
+
+    Raises
+    ------
+    ValueError
+        As :func:`clock_covariance`, or if ``n_paths`` is not a positive integer.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Sec. 4.3.
+
+    Examples
+    --------
+    >>> sample_clock_paths(5, 3, 1.0, 0.5, seed=2).shape
+    (3, 5)
     """
     n_paths = require_integer("n_paths", n_paths, minimum=1)
     C = clock_covariance(n_epochs, sigma1, sigma2, rho_h)

@@ -68,6 +68,30 @@ __all__ = [
 def alpha_parameter(sigma0: float, sigma: float, beta: float) -> float:
     """``alpha = (8/27) sigma0^2 beta / sigma^2`` (ATC-10 Eq. 4.5.32).
 
+    Parameters
+    ----------
+    sigma0 : float
+        Standard deviation of the clock increments (a time unit, ``>= 0``).
+    sigma : float
+        Time-of-arrival noise standard deviation (same unit, ``> 0``).
+    beta : float
+        ``1'(I - P)1`` (dimensionless, ``>= 0``).
+
+    Returns
+    -------
+    float
+        ``alpha`` (dimensionless).
+
+    Raises
+    ------
+    ValueError
+        If ``sigma`` is not positive or ``sigma0`` or ``beta`` is negative.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (4.5.32).
+
     Examples
     --------
     >>> round(alpha_parameter(5.0, 50.0, 0.0543), 7)
@@ -90,6 +114,26 @@ def psi(alpha: np.ndarray | float) -> np.ndarray | float:
     ``1.5 alpha / (cbrt(a)^2 + cbrt(a) cbrt(b) + cbrt(b)^2)`` with ``a - b = 2 sqrt(1+alpha)``
     is not needed here; both are accurate to ~1e-12 for alpha <= 1e3.
 
+    Parameters
+    ----------
+    alpha : float or ndarray
+        ``alpha`` of :func:`alpha_parameter` (``>= 0``).
+
+    Returns
+    -------
+    float or ndarray
+        ``psi`` in [0, 1).
+
+    Raises
+    ------
+    ValueError
+        If an ``alpha`` is negative or not finite.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (4.5.34).
+
     Examples
     --------
     >>> round(float(psi(1.61e-2)), 5)
@@ -107,6 +151,31 @@ def psi_cubic_root(alpha: float) -> float:
     """psi as the real root in (0, 1) of ``x^3 + q x - q = 0``, ``q = 27 alpha / 4``.
 
     Independent of :func:`psi`: uses ``numpy.roots`` (companion-matrix eigenvalues).
+
+    Parameters
+    ----------
+    alpha : float
+        ``alpha`` (``> 0``).
+
+    Returns
+    -------
+    float
+        ``psi``.
+
+    Raises
+    ------
+    ValueError
+        If ``alpha`` is not positive.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (4.5.26) (the cubic).
+
+    Examples
+    --------
+    >>> round(psi_cubic_root(1.61e-2), 5)
+    0.40204
     """
     require_positive("alpha", alpha)
     q = 27.0 * alpha / 4.0
@@ -117,7 +186,33 @@ def psi_cubic_root(alpha: float) -> float:
 
 @implements("ATC10 4.5.38")
 def psi_small_alpha(alpha: np.ndarray | float) -> np.ndarray | float:
-    """``1.5 * 2^(1/3) [alpha^(1/3) - (alpha/2)^(2/3)]``, the alpha <= 0.3 approximation (Eq. 4.5.38)."""
+    """``1.5 * 2^(1/3) [alpha^(1/3) - (alpha/2)^(2/3)]``, the alpha <= 0.3 approximation (Eq. 4.5.38).
+
+    Parameters
+    ----------
+    alpha : float or ndarray
+        ``alpha`` (``>= 0``).
+
+    Returns
+    -------
+    float or ndarray
+        Approximate ``psi``.
+
+    Raises
+    ------
+    ValueError
+        If an ``alpha`` is not finite.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (4.5.38).
+
+    Examples
+    --------
+    >>> round(float(psi_small_alpha(1.61e-2)), 5), round(float(psi(1.61e-2)), 5)
+    (0.4013, 0.40204)
+    """
     a = as_finite_array("alpha", alpha)
     out = 1.5 * np.cbrt(2.0) * (np.cbrt(a) - np.cbrt(a / 2.0) ** 2)
     return float(out) if out.ndim == 0 else out
@@ -125,7 +220,33 @@ def psi_small_alpha(alpha: np.ndarray | float) -> np.ndarray | float:
 
 @implements("ATC10 4.5.38")
 def psi_large_alpha(alpha: np.ndarray | float) -> np.ndarray | float:
-    """``1 - 4 / (27 alpha)``, the alpha >= 1 approximation (Eq. 4.5.38)."""
+    """``1 - 4 / (27 alpha)``, the alpha >= 1 approximation (Eq. 4.5.38).
+
+    Parameters
+    ----------
+    alpha : float or ndarray
+        ``alpha`` (``> 0``).
+
+    Returns
+    -------
+    float or ndarray
+        Approximate ``psi``.
+
+    Raises
+    ------
+    ValueError
+        If an ``alpha`` is not positive.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (4.5.38).
+
+    Examples
+    --------
+    >>> round(float(psi_large_alpha(10.0)), 5), round(float(psi(10.0)), 5)
+    (0.98519, 0.98581)
+    """
     a = as_finite_array("alpha", alpha)
     if np.any(a <= 0):
         raise ValueError("alpha must be > 0")
@@ -135,7 +256,38 @@ def psi_large_alpha(alpha: np.ndarray | float) -> np.ndarray | float:
 
 @implements("ATC10 4.5.33")
 def steady_state_gain(beta: float, sigma: float, sigma0: float) -> float:
-    """``gamma = psi(alpha) / beta`` (ATC-10 Eq. 4.5.33)."""
+    """``gamma = psi(alpha) / beta`` (ATC-10 Eq. 4.5.33).
+
+    Parameters
+    ----------
+    beta : float
+        ``1'(I - P)1``, the clock's share of the geometry (dimensionless, ``> 0``).
+    sigma : float
+        Time-of-arrival noise standard deviation (a time unit, e.g. ns; ``> 0``).
+    sigma0 : float
+        Standard deviation of the clock increments ``w_n`` and ``A`` (same time unit, ``>= 0``).
+
+    Returns
+    -------
+    float
+        Steady-state gain ``gamma`` (dimensionless).
+
+    Raises
+    ------
+    ValueError
+        If ``beta`` or ``sigma`` is not positive or ``sigma0`` negative.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (4.5.33).
+
+    Examples
+    --------
+    >>> h = gain_recursion(0.5, 50.0, 5.0, 400)
+    >>> round(steady_state_gain(0.5, 50.0, 5.0), 4), round(float(h.gamma[-1]), 4)
+    (0.4, 0.4)
+    """
     require_positive("beta", beta)
     return float(psi(alpha_parameter(sigma0, sigma, beta))) / beta
 
@@ -168,6 +320,40 @@ def gain_recursion(beta: float, sigma: float, sigma0: float, n_steps: int) -> Ga
     ``s_n = 2 sigma0^2 + sigma^2 gamma_{n-1} + 2 d_{n-1}``,
     ``gamma_n = s_n / (sigma^2 + beta s_n)``, ``a_n = 1 - gamma_n beta``,
     ``d_n = a_n (sigma0^2 + d_{n-1})``, starting from the least-squares ``gamma_0 = 1/beta``.
+
+    Parameters
+    ----------
+    beta : float
+        ``1'(I - P)1``, the clock's share of the geometry (dimensionless, ``> 0``).
+    sigma : float
+        Time-of-arrival noise standard deviation (a time unit, e.g. ns; ``> 0``).
+    sigma0 : float
+        Standard deviation of the clock increments ``w_n`` and ``A`` (same time unit, ``>= 0``).
+    n_steps : int
+        Number of tracked epochs after the first (``>= 0``, bounded).
+
+    Returns
+    -------
+    GainHistory
+        Gains ``gamma_n`` (dimensionless; the clock-error variance is ``sigma^2 gamma_n``),
+        prior variances ``s_n`` and cross terms ``d_n`` (time unit squared), n = 0..n_steps.
+
+    Raises
+    ------
+    ValueError
+        If ``beta`` or ``sigma`` is not positive, ``sigma0`` negative or ``n_steps`` not a
+        non-negative integer.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eqs. (4.5.16)-(4.5.25).
+
+    Examples
+    --------
+    >>> h = gain_recursion(0.5, 50.0, 5.0, 200)
+    >>> round(float(h.gamma[0]), 4), round(float(h.gamma[-1]), 4)
+    (2.0, 0.4)
     """
     require_positive("beta", beta)
     require_positive("sigma", sigma)
@@ -194,6 +380,42 @@ def three_satellite_clock_variance(
 
     ``sigma^2 gamma_N + sigma0^2 (m + m^2) + 2 m d_N``: the extrapolation
     ``tau_hat_{N+m} = tau_hat_N + m tau_bar`` accumulates the clock increments.
+
+    Parameters
+    ----------
+    gamma_last : float
+        Gain ``gamma_N`` at the last epoch with all satellites.
+    cross_last : float
+        Cross term ``d_N`` at that epoch (time unit squared).
+    sigma : float
+        Time-of-arrival noise standard deviation (a time unit, e.g. ns; ``> 0``).
+    sigma0 : float
+        Standard deviation of the clock increments ``w_n`` and ``A`` (same time unit, ``>= 0``).
+    m : int or ndarray
+        Epochs since the drop (``>= 0``).
+
+    Returns
+    -------
+    ndarray
+        Clock-error variance, time unit squared.
+
+    Raises
+    ------
+    ValueError
+        If ``m`` is not finite.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972),
+    Eqs. (4.5.27)-(4.5.30) (the exact form for any N).
+
+    Examples
+    --------
+    >>> h = gain_recursion(0.5, 50.0, 5.0, 400)
+    >>> v = three_satellite_clock_variance(h.gamma[-1], h.cross[-1], 50.0, 5.0, [0, 10])
+    >>> [round(float(x), 1) for x in v]
+    [1000.0, 5750.0]
     """
     mm = as_finite_array("m", m)
     return sigma**2 * gamma_last + sigma0**2 * (mm + mm**2) + 2.0 * mm * cross_last
@@ -203,7 +425,40 @@ def three_satellite_clock_variance(
 def three_satellite_clock_variance_steady(
     beta: float, sigma: float, sigma0: float, m: np.ndarray | int
 ) -> np.ndarray:
-    """Eq. 4.5.27: ``sigma^2 gamma + sigma0^2 [(2 - psi)/psi m + m^2]`` with gamma = psi/beta."""
+    """Eq. 4.5.27: ``sigma^2 gamma + sigma0^2 [(2 - psi)/psi m + m^2]`` with gamma = psi/beta.
+
+    Parameters
+    ----------
+    beta : float
+        ``1'(I - P)1``, the clock's share of the geometry (dimensionless, ``> 0``).
+    sigma : float
+        Time-of-arrival noise standard deviation (a time unit, e.g. ns; ``> 0``).
+    sigma0 : float
+        Standard deviation of the clock increments ``w_n`` and ``A`` (same time unit, ``>= 0``).
+    m : int or ndarray
+        Epochs since the drop to three satellites (``>= 0``).
+
+    Returns
+    -------
+    ndarray
+        Clock-error variance, time unit squared.
+
+    Raises
+    ------
+    ValueError
+        If ``m`` is not finite or ``beta`` not positive.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (4.5.27).
+
+    Examples
+    --------
+    >>> v = three_satellite_clock_variance_steady(0.5, 50.0, 5.0, [0, 10])
+    >>> [round(float(x), 1) for x in v]
+    [1000.0, 5750.0]
+    """
     p = float(psi(alpha_parameter(sigma0, sigma, beta)))
     mm = as_finite_array("m", m)
     return sigma**2 * p / beta + sigma0**2 * ((2.0 - p) / p * mm + mm**2)
@@ -217,12 +472,63 @@ def position_mse(
 
     For three satellites pass the clock term the caller believes in: the invariant
     ``1'(FF')^-1 1`` (correct) or the printed ``1'(F'F)^-1 1`` (erratum E4-1).
+
+    Parameters
+    ----------
+    sigma : float
+        Time-of-arrival noise standard deviation (a time unit; with c = 1 ft/ns, ns gives ft).
+    trace : float
+        ``tr{(F'F)^-1}`` of the position geometry (dimensionless).
+    clock_term : float
+        ``S``, the clock's contribution to the position error (dimensionless).
+    gamma : float or ndarray
+        Clock gain(s) ``gamma_n`` (dimensionless).
+
+    Returns
+    -------
+    float or ndarray
+        Mean square position error, in the time unit squared (ft^2 with ns and c = 1 ft/ns).
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (4.5.35) and erratum E4-1.
+
+    Examples
+    --------
+    >>> round(float(position_mse(50.0, 2.0, 1.5, 0.4)), 1)
+    6500.0
     """
     return sigma**2 * (trace + np.asarray(gamma) * clock_term)
 
 
 def convergence_steps(history: GainHistory, rel: float) -> int:
-    """First n after which ``|gamma_n - gamma_inf| <= rel * gamma_inf`` for all later n."""
+    """First n after which ``|gamma_n - gamma_inf| <= rel * gamma_inf`` for all later n.
+
+    ``gamma_inf`` is taken as the last gain of ``history``.
+
+    Parameters
+    ----------
+    history : GainHistory
+        Output of :func:`gain_recursion` (long enough to have converged).
+    rel : float
+        Relative tolerance (dimensionless).
+
+    Returns
+    -------
+    int
+        Number of epochs to converge.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Sec. 4.5 (the convergence of the gain).
+
+    Examples
+    --------
+    >>> convergence_steps(gain_recursion(0.5, 50.0, 5.0, 400), 0.1)
+    5
+    """
     g = history.gamma
     limit = g[-1]
     bad = np.flatnonzero(np.abs(g - limit) > rel * limit)
@@ -233,6 +539,33 @@ def convergence_steps_geometric(psi_value: float, rel: float) -> float:
     """Steps for the geometric series ``sum (1 - psi)^i`` to come within ``rel`` of its limit.
 
     ``n = log(rel) / log(1 - psi) - 1``; for small psi about ``2.3 / psi - 1`` (rel = 0.1).
+
+    Parameters
+    ----------
+    psi_value : float
+        Steady-state gain factor ``psi``, in (0, 1).
+    rel : float
+        Relative tolerance, in (0, 1).
+
+    Returns
+    -------
+    float
+        Number of steps (not rounded).
+
+    Raises
+    ------
+    ValueError
+        If ``psi_value`` or ``rel`` is not in (0, 1).
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Sec. 4.5 (the convergence estimate).
+
+    Examples
+    --------
+    >>> round(convergence_steps_geometric(0.1, 0.1), 3)
+    20.854
     """
     require_positive("psi_value", psi_value)
     if not 0.0 < psi_value < 1.0:
@@ -244,7 +577,19 @@ def convergence_steps_geometric(psi_value: float, rel: float) -> float:
 
 @dataclass(frozen=True)
 class TrackerMonteCarlo:
-    """Empirical second moments of the tracker's errors, per epoch n = 0..N+M."""
+    """Empirical second moments of the tracker's errors, per epoch n = 0..N+M.
+
+    Attributes
+    ----------
+    clock_mse : (N+M+1,) ndarray
+        Mean square clock error per epoch (time unit squared).
+    position_mse : (N+M+1,) ndarray
+        Mean square position error per epoch.
+    position_norm_variance : (N+M+1,) ndarray
+        Variance of the position error norm per epoch.
+    n_runs : int
+        Number of runs.
+    """
 
     clock_mse: np.ndarray
     position_mse: np.ndarray
@@ -272,6 +617,53 @@ def simulate_tracker(
     ``w_i, A ~ N(0, sigma0^2)``; measurement noise ``N(0, sigma^2 I)``. The aircraft track
     is an arbitrary nonrandom sequence (it cancels in the errors because the estimator is
     exact for it); only errors are simulated. Vectorised over runs.
+
+    Parameters
+    ----------
+    F_all : (K, 3) array
+        Geometry of all K satellites (unit direction rows, dimensionless).
+    F_three : (3, 3) array
+        Geometry of the three satellites that remain.
+    sigma : float
+        Time-of-arrival noise standard deviation (a time unit, e.g. ns).
+    sigma0 : float
+        Standard deviation of the clock increments (same unit).
+    n_last : int
+        Last epoch N with all satellites (``>= 0``).
+    m_after : int
+        Epochs M with three satellites (``>= 0``).
+    n_runs : int
+        Monte Carlo runs (``>= 2``).
+    seed : int
+        Seed of ``numpy.random.default_rng``.
+    tau_bar : float
+        Nominal emission interval (time unit).
+    tau_start : float, default 12345.0
+        Emission time at epoch 0 (time unit; it cancels in the errors).
+
+    Returns
+    -------
+    TrackerMonteCarlo
+        Empirical clock and position mean square errors and the variance of the position
+        error norm per epoch n = 0..N+M (time unit squared), and the number of runs.
+
+    Raises
+    ------
+    ValueError
+        If a geometry is not finite or a count is out of range.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, ATC-10 (1972), Sec. 4.5 (the Monte Carlo check of
+    Eqs. (4.5.16)-(4.5.35)).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> F = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [0.6, 0.8, 0.0]])
+    >>> mc = simulate_tracker(F, F[:3], 50.0, 5.0, 20, 5, 200, seed=1, tau_bar=1.0e6)
+    >>> mc.clock_mse.shape, mc.n_runs
+    ((26,), 200)
     """
     F = as_finite_array("F_all", F_all)
     F3 = as_finite_array("F_three", F_three)
@@ -328,6 +720,19 @@ class TrackingErrors(NamedTuple):
 
     The three errors are root-mean-square position errors in the length unit of
     ``c * sigma`` (see :func:`tracking_position_errors`).
+
+    Attributes
+    ----------
+    alpha : float
+        ``alpha`` of Eq. (4.5.32).
+    psi : float
+        ``psi(alpha)`` of Eq. (4.5.34).
+    sd_least_squares : float
+        RMS position error of least squares without clock tracking.
+    sd_tracking_limit : float
+        RMS position error of the tracker in steady state.
+    sd_first_three_satellite : float
+        RMS position error at the first epoch with three satellites.
     """
 
     alpha: float
@@ -392,6 +797,10 @@ def tracking_position_errors(
         If a trace is not positive, an ``S`` negative, ``beta``, ``sigma`` or ``c`` not
         positive, or ``sigma0`` negative (``sigma0 = 0`` gives psi = 0 and no first
         three-satellite estimate, so it is rejected too).
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, ATC-10 (1972), Eqs. (4.5.27), (4.5.35) and Table 4.3.
 
     Examples
     --------

@@ -116,6 +116,12 @@ def doppler_frequency(f0: float, emitter: ArrayLike, position: ArrayLike, veloci
     (M,) array
         ``f0 + (f0/c) v . u_R`` in Hz; positive shift when closing on the emitter.
 
+    Raises
+    ------
+    ValueError
+        If ``f0`` is not positive, a position or velocity is not finite or has the wrong
+        shape, or ``velocity`` and ``position`` differ in rows.
+
     Examples
     --------
     >>> float(doppler_frequency(1e9, [1000.0, 0, 0], [0.0, 0, 0], [299.792458, 0, 0])[0])
@@ -134,7 +140,34 @@ def doppler_gradient_velocity(f0: float, emitter: ArrayLike, position: ArrayLike
     """Gradient of the received frequency w.r.t. aperture velocity, ``(f0/c) u_R`` (WF Eq. (8)).
 
     It is the velocity term ``df/dv`` of the total differential WF Eq. (7).
-    Returns an (M, 3) array in Hz per (m/s); each row has norm ``f0/c``.
+
+    Parameters
+    ----------
+    f0 : float
+        Emitter carrier frequency, Hz (``> 0``).
+    emitter : (3,) array
+        Emitter position, m.
+    position : (M, 3) or (3,) array
+        Aperture positions at the M measurement times, m.
+
+    Returns
+    -------
+    (M, 3) ndarray
+        Gradient, Hz per (m/s); each row has norm ``f0/c``.
+
+    Raises
+    ------
+    ValueError
+        If ``f0`` is not positive or a position is not finite or has the wrong shape.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eqs. (7), (8).
+
+    Examples
+    --------
+    >>> np.round(doppler_gradient_velocity(1e9, [1000.0, 0.0, 0.0], [[0.0, 0.0, 0.0]]), 4).tolist()
+    [[3.3356, 0.0, 0.0]]
     """
     require_positive("f0", f0)
     u, _ = _geometry(emitter, position)
@@ -149,7 +182,39 @@ def doppler_gradient_position(
 
     ``df/dp = -(f0/(c R)) (v - (v.u_R) u_R)``: only the velocity component across the line
     of sight matters. It is the position term of the total differential WF Eq. (7).
-    Returns an (M, 3) array in Hz per m.
+
+    Parameters
+    ----------
+    f0 : float
+        Emitter carrier frequency, Hz (``> 0``).
+    emitter : (3,) array
+        Emitter position, m.
+    position : (M, 3) or (3,) array
+        Aperture positions at the M measurement times, m.
+    velocity : (M, 3) or (3,) array
+        Aperture velocities, m/s.
+
+    Returns
+    -------
+    (M, 3) ndarray
+        Gradient, Hz per m.
+
+    Raises
+    ------
+    ValueError
+        If ``f0`` is not positive or a position or velocity is not finite or has the wrong
+        shape.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eqs. (7), (9).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> em, p, v = [1000.0, 0.0, 0.0], [[0.0, 0.0, 0.0]], [[100.0, 100.0, 0.0]]
+    >>> (np.round(doppler_gradient_position(1e9, em, p, v), 6) + 0.0).tolist()
+    [[0.0, -0.333564, 0.0]]
     """
     require_positive("f0", f0)
     u, R = _geometry(emitter, position)
@@ -160,7 +225,36 @@ def doppler_gradient_position(
 
 @implements("WF 9")
 def position_sensitivity_bound(f0: float, speed: ArrayLike, range_m: ArrayLike) -> Array:
-    """The printed upper bound ``(f0/c) 2||v|| / R`` on ``||df/dp||`` (WF Eq. (9)), Hz/m."""
+    """The printed upper bound ``(f0/c) 2||v|| / R`` on ``||df/dp||`` (WF Eq. (9)).
+
+    Parameters
+    ----------
+    f0 : float
+        Emitter carrier frequency, Hz (``> 0``).
+    speed : array_like
+        Aperture speed ``||v||``, m/s (``> 0``).
+    range_m : array_like
+        Range to the emitter, m (``> 0``).
+
+    Returns
+    -------
+    ndarray
+        Bound, Hz per m.
+
+    Raises
+    ------
+    ValueError
+        If an argument is not positive.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eq. (9).
+
+    Examples
+    --------
+    >>> f"{float(position_sensitivity_bound(1e9, 100.0, 1.0e4)):.4e}"
+    '6.6713e-02'
+    """
     require_positive("f0", f0)
     speed = np.asarray(require_positive("speed", speed), dtype=float)
     range_m = np.asarray(require_positive("range_m", range_m), dtype=float)
@@ -173,6 +267,32 @@ def velocity_to_position_sensitivity_ratio(speed: ArrayLike, range_m: ArrayLike)
 
     The ratio carries units of seconds (m per m/s): it compares the frequency change caused
     by a 1 m/s velocity error with that of a 1 m position error.
+
+    Parameters
+    ----------
+    speed : array_like
+        Aperture speed, m/s (``> 0``).
+    range_m : array_like
+        Range to the emitter, m (``> 0``).
+
+    Returns
+    -------
+    ndarray
+        Ratio, s.
+
+    Raises
+    ------
+    ValueError
+        If an argument is not positive.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eqs. (8)-(9).
+
+    Examples
+    --------
+    >>> float(velocity_to_position_sensitivity_ratio(100.0, 1.0e4))
+    50.0
     """
     speed = np.asarray(require_positive("speed", speed), dtype=float)
     range_m = np.asarray(require_positive("range_m", range_m), dtype=float)
@@ -189,10 +309,38 @@ def doppler_jacobian_emitter(
     1 + \mathbf v^T\mathbf u_R/c\,]`. The emitter-position block is minus the aperture-position
     gradient (only the difference of the two positions enters).
 
+    Parameters
+    ----------
+    f0 : float
+        Emitter carrier frequency, Hz (``> 0``).
+    emitter : (3,) array
+        Emitter position, m.
+    position : (M, 3) or (3,) array
+        Aperture positions at the M measurement times, m.
+    velocity : (M, 3) or (3,) array
+        Aperture velocities, m/s.
+
     Returns
     -------
-    (M, 4) array
+    (M, 4) ndarray
         Columns in Hz/m (three) and Hz/Hz (one).
+
+    Raises
+    ------
+    ValueError
+        As :func:`doppler_gradient_position`.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eq. (4).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> em, p, v = [1000.0, 0.0, 0.0], [[0.0, 0.0, 0.0]], [[100.0, 100.0, 0.0]]
+    >>> H = doppler_jacobian_emitter(1e9, em, p, v)
+    >>> np.round(H, 6).tolist()
+    [[0.0, 0.333564, 0.0, 1.0]]
     """
     dp = -doppler_gradient_position(f0, emitter, position, velocity)
     u, _ = _geometry(emitter, position)
@@ -215,6 +363,42 @@ def signal_model_error(
     :math:`\tilde{\mathbf f}_\theta = \mathbf f(\mathbf p^e,\Theta) - \mathbf f(\mathbf p^e,\hat\Theta)`.
 
     The true aperture states are ``position, velocity``; the processing uses the estimates.
+
+    Parameters
+    ----------
+    f0 : float
+        Emitter carrier frequency, Hz (``> 0``).
+    emitter : (3,) array
+        Emitter position, m.
+    position : (M, 3) or (3,) array
+        Aperture positions at the M measurement times, m.
+    velocity : (M, 3) or (3,) array
+        Aperture velocities, m/s.
+    position_est : (M, 3) or (3,) array
+        Estimated aperture positions, m.
+    velocity_est : (M, 3) or (3,) array
+        Estimated aperture velocities, m/s.
+
+    Returns
+    -------
+    (M,) ndarray
+        Frequency error, Hz.
+
+    Raises
+    ------
+    ValueError
+        If ``f0`` is not positive or an array is not finite or has the wrong shape.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eq. (6).
+
+    Examples
+    --------
+    >>> e = signal_model_error(1e9, [1000.0, 0.0, 0.0], [[0.0, 0.0, 0.0]], [[0.0, 0.0, 0.0]],
+    ...                        [[0.0, 0.0, 0.0]], [[0.1, 0.0, 0.0]])
+    >>> round(float(e[0]), 4)
+    -0.3336
     """
     return doppler_frequency(f0, emitter, position, velocity) - doppler_frequency(
         f0, emitter, position_est, velocity_est
@@ -260,6 +444,19 @@ def linearized_location_error(H: ArrayLike, error: ArrayLike, W: ArrayLike | Non
     -------
     (n,) or (n, T) array
         Error of ``[p^e, f0]`` in m and Hz.
+
+    Raises
+    ------
+    ValueError
+        If ``H`` or ``error`` is not finite or their rows differ, or ``W`` is not a valid
+        weight.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> H = np.array([[1.0, 0.0], [0.0, 2.0], [1.0, 1.0]])
+    >>> linearized_location_error(H, [0.1, 0.2, 0.2]).round(6).tolist()
+    [0.1, 0.1]
     """
     H = as_finite_array("H", H, ndim=2)
     e = as_finite_array("error", error)
@@ -276,6 +473,35 @@ def location_error_covariance(H: ArrayLike, error_covariance: ArrayLike, W: Arra
 
     ``G Sigma G^T`` with ``G = (H^T W H)^{-1} H^T W``; it reduces to ``(H^T Sigma^-1 H)^-1``
     when ``W = Sigma^-1``.
+
+    Parameters
+    ----------
+    H : (M, n) array
+        Jacobian of WF Eq. (4) (Hz per m and Hz per Hz).
+    error_covariance : (M, M) array
+        Covariance :math:`\Sigma` of the frequency errors, Hz^2.
+    W : (M, M) or (M,) array, optional
+        Positive-definite weight (identity by default; a vector means a diagonal).
+
+    Returns
+    -------
+    (n, n) ndarray
+        Covariance of the error of ``[p^e, f0]`` (m^2, Hz^2 and cross terms).
+
+    Raises
+    ------
+    ValueError
+        If ``error_covariance`` is not symmetric positive semi-definite or a shape disagrees.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eq. (6).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> round(float(location_error_covariance([[2.0], [2.0]], np.eye(2))[0, 0]), 6)
+    0.125
     """
     H = as_finite_array("H", H, ndim=2)
     S = require_symmetric_psd("error_covariance", error_covariance)
@@ -351,6 +577,20 @@ def emitter_gauss_newton(
     ValueError
         If there are fewer than 4 measurements, the arrays disagree in length, or an input
         is not finite; ``max_iter`` is bounded by ``navcore._validate.MAX_LOOP_COUNT``.
+
+    Examples
+    --------
+    Noise-free frequencies along a curved, descending pass (a straight track leaves the
+    emitter's rotation about it unobservable): the iteration returns the emitter.
+
+    >>> import numpy as np
+    >>> s = np.linspace(0.0, 1.0, 21)
+    >>> p = np.column_stack([2000.0 * s, 500.0 * np.sin(np.pi * s), -1000.0 - 300.0 * s])
+    >>> v = np.gradient(p, axis=0) * 20.0  # samples 0.05 s apart
+    >>> m = doppler_frequency(1e9, [1000.0, 3000.0, 0.0], p, v)
+    >>> res = emitter_gauss_newton(m, p, v, [900.0, 2800.0, -100.0, 1e9 + 5.0])
+    >>> res.converged, (np.round(res.estimate, 3) + 0.0).tolist()
+    (True, [1000.0, 3000.0, 0.0, 1000000000.0])
     """
     m = as_finite_array("measurements", measurements, ndim=1)
     if m.size < 4:

@@ -66,7 +66,24 @@ SIDEREAL_DAY_S = 86_164.0905
 
 
 def synchronous_orbit_radius(gm: float = GM_EARTH_M3_S2, period_s: float = SIDEREAL_DAY_S) -> float:
-    """Radius of a circular orbit whose period is one sidereal day (Kepler's third law), m.
+    """Radius of a circular orbit whose period is one sidereal day (Kepler's third law).
+
+    Parameters
+    ----------
+    gm : float, default GM_EARTH_M3_S2
+        Gravitational parameter, m^3/s^2 (``> 0``).
+    period_s : float, default SIDEREAL_DAY_S
+        Orbital period, s (``> 0``).
+
+    Returns
+    -------
+    float
+        Orbit radius, m.
+
+    Raises
+    ------
+    ValueError
+        If ``gm`` or ``period_s`` is not positive.
 
     Examples
     --------
@@ -81,8 +98,32 @@ def synchronous_orbit_radius(gm: float = GM_EARTH_M3_S2, period_s: float = SIDER
 def position_on_sphere(lat_deg: np.ndarray | float, lon_deg: np.ndarray | float, radius: float) -> np.ndarray:
     """Earth-centred Cartesian position at geocentric latitude/longitude on a sphere.
 
-    Longitudes are east-positive. Returns shape ``(..., 3)``. A synchronous satellite whose
-    sub-satellite point is (lat, lon) sits at ``position_on_sphere(lat, lon, r_orbit)``.
+    Longitudes are east-positive. A synchronous satellite whose sub-satellite point is
+    (lat, lon) sits at ``position_on_sphere(lat, lon, r_orbit)``.
+
+    Parameters
+    ----------
+    lat_deg : float or ndarray
+        Geocentric latitude, deg.
+    lon_deg : float or ndarray
+        Longitude, deg east.
+    radius : float
+        Sphere radius, m (``> 0``).
+
+    Returns
+    -------
+    (..., 3) ndarray
+        Position, m.
+
+    Raises
+    ------
+    ValueError
+        If ``radius`` is not positive or an angle is not finite.
+
+    Examples
+    --------
+    >>> (position_on_sphere(0.0, 90.0, 2.0).round(12) + 0.0).tolist()
+    [0.0, 2.0, 0.0]
     """
     require_positive("radius", radius)
     lat = np.radians(as_finite_array("lat_deg", lat_deg))
@@ -96,6 +137,33 @@ def line_of_sight_matrix(satellites: np.ndarray, aircraft: np.ndarray) -> np.nda
 
     With c = 1 this is the matrix F of ATC-10 Eq. 4.2.2c (its sign is irrelevant to every
     invariant: they are quadratic in F).
+
+    Parameters
+    ----------
+    satellites : (K, 3) array
+        Satellite positions, m (Earth-centred).
+    aircraft : (3,) array
+        Aircraft position, m (same frame).
+
+    Returns
+    -------
+    (K, 3) ndarray
+        Unit vectors (dimensionless).
+
+    Raises
+    ------
+    ValueError
+        If a satellite coincides with the aircraft or an input is not finite.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (4.2.2c).
+
+    Examples
+    --------
+    >>> line_of_sight_matrix([[0.0, 0.0, 10.0], [3.0, 4.0, 0.0]], [0.0, 0.0, 0.0]).tolist()
+    [[0.0, 0.0, -1.0], [-0.6, -0.8, 0.0]]
     """
     sats = np.atleast_2d(as_finite_array("satellites", satellites))
     ac = as_finite_array("aircraft", aircraft).reshape(3)
@@ -107,7 +175,31 @@ def line_of_sight_matrix(satellites: np.ndarray, aircraft: np.ndarray) -> np.nda
 
 
 def zenith_angles_deg(satellites: np.ndarray, aircraft: np.ndarray) -> np.ndarray:
-    """Zenith angle of each satellite seen from the aircraft (spherical local vertical), deg."""
+    """Zenith angle of each satellite seen from the aircraft (spherical local vertical).
+
+    Parameters
+    ----------
+    satellites : (K, 3) array
+        Satellite positions, m (Earth-centred).
+    aircraft : (3,) array
+        Aircraft position, m (same frame).
+
+    Returns
+    -------
+    (K,) ndarray
+        Zenith angles, deg.
+
+    Raises
+    ------
+    ValueError
+        If a satellite coincides with the aircraft or an input is not finite.
+
+    Examples
+    --------
+    >>> sats = [[0.0, 0.0, 2.0e7], [2.0e7, 0.0, 6.4e6]]
+    >>> zenith_angles_deg(sats, [0.0, 0.0, 6.4e6]).round(3).tolist()
+    [0.0, 90.0]
+    """
     ac = as_finite_array("aircraft", aircraft).reshape(3)
     up = ac / np.linalg.norm(ac)
     toward_sat = -line_of_sight_matrix(satellites, ac)
@@ -129,6 +221,33 @@ def beta_parameter(F: np.ndarray) -> float:
 
     Zero for K = 3 (P = I), which is why the clock cannot be estimated with three
     satellites. Computed as the squared least-squares residual of 1 on F.
+
+    Parameters
+    ----------
+    F : (K, 3) array
+        Geometry matrix: unit line-of-sight rows (dimensionless, ``K >= 3``).
+
+    Returns
+    -------
+    float
+        ``beta`` (dimensionless, ``>= 0``).
+
+    Raises
+    ------
+    ValueError
+        If ``F`` is not a finite ``(K, 3)`` array of rank 3 with ``K >= 3``.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (4.5.2).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> F = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [0.6, 0.8, 0.0]])
+    >>> round(beta_parameter(F), 4), round(beta_parameter(F[:3]), 12)
+    (0.08, 0.0)
     """
     F = _check_f(F)
     ones = np.ones(F.shape[0])
@@ -138,7 +257,35 @@ def beta_parameter(F: np.ndarray) -> float:
 
 
 def position_trace(F: np.ndarray) -> float:
-    """``tr{(F'F)^-1}``: the position dilution with the clock known."""
+    """``tr{(F'F)^-1}``: the position dilution with the clock known.
+
+    Parameters
+    ----------
+    F : (K, 3) array
+        Geometry matrix: unit line-of-sight rows (dimensionless, ``K >= 3``).
+
+    Returns
+    -------
+    float
+        Trace (dimensionless).
+
+    Raises
+    ------
+    ValueError
+        If ``F`` is not a finite ``(K, 3)`` array of rank 3 with ``K >= 3``.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (4.5.35) (the first term).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> F = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [0.6, 0.8, 0.0]])
+    >>> round(position_trace(F), 4)
+    2.5
+    """
     F = _check_f(F)
     return float(np.trace(np.linalg.inv(F.T @ F)))
 
@@ -149,6 +296,33 @@ def clock_direction_term(F: np.ndarray) -> float:
 
     It equals ``|(F'F)^-1 F'1|^2``; for K = 3 it is the rotation invariant ``1'(FF')^-1 1``
     (the correct quantity for ATC-10 Eq. 4.5.30, erratum E4-1).
+
+    Parameters
+    ----------
+    F : (K, 3) array
+        Geometry matrix: unit line-of-sight rows (dimensionless, ``K >= 3``).
+
+    Returns
+    -------
+    float
+        ``S`` (dimensionless).
+
+    Raises
+    ------
+    ValueError
+        If ``F`` is not a finite ``(K, 3)`` array of rank 3 with ``K >= 3``.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (4.5.30) and erratum E4-1.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> F = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [0.6, 0.8, 0.0]])
+    >>> round(clock_direction_term(F), 4)
+    2.48
     """
     F = _check_f(F)
     v = np.linalg.solve(F.T @ F, F.T @ np.ones(F.shape[0]))
@@ -161,6 +335,33 @@ def frame_dependent_clock_term(F: np.ndarray) -> float:
 
     It is NOT invariant under a rotation of the coordinate frame (F -> F R'): kept only to
     reproduce what the paper tabulated (erratum E4-1).
+
+    Parameters
+    ----------
+    F : (3, 3) array
+        Geometry of three satellites (unit line-of-sight rows).
+
+    Returns
+    -------
+    float
+        The printed term (dimensionless).
+
+    Raises
+    ------
+    ValueError
+        If ``F`` is not a finite 3 x 3 array.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (4.5.30) and erratum E4-1.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> F3 = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.6, 0.0, 0.8]])
+    >>> round(frame_dependent_clock_term(F3), 4), round(clock_direction_term(F3), 4)
+    (2.625, 2.25)
     """
     F = _check_f(F)
     if F.shape[0] != 3:
@@ -175,6 +376,37 @@ def geometric_dilution_covariance(F: np.ndarray, H: np.ndarray | None = None) ->
 
     ``H`` is any (K-1) x K matrix of full row rank whose rows sum to zero (it removes the
     common emission time by differencing). The default differences against satellite 1.
+
+    Parameters
+    ----------
+    F : (K, 3) array
+        Geometry matrix: unit line-of-sight rows (dimensionless, ``K >= 3``).
+    H : (K-1, K) array, optional
+        Differencing matrix (rows summing to zero).
+
+    Returns
+    -------
+    (3, 3) ndarray
+        Position error covariance per unit time-of-arrival variance; its trace is ``k^2`` of
+        :func:`geometric_dilution`.
+
+    Raises
+    ------
+    ValueError
+        If ``F`` or ``H`` has the wrong shape or ``H``'s rows do not sum to zero.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (4.1.1).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> F = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [0.6, 0.8, 0.0]])
+    >>> C = geometric_dilution_covariance(F)
+    >>> round(float(np.trace(C)), 4), round(geometric_dilution(F) ** 2, 4)
+    (33.5, 33.5)
     """
     F = _check_f(F)
     K = F.shape[0]
@@ -192,7 +424,36 @@ def geometric_dilution_covariance(F: np.ndarray, H: np.ndarray | None = None) ->
 
 @implements("ATC10 4.1.2", "ATC10 4.6.2")
 def geometric_dilution(F: np.ndarray) -> float:
-    """``k = sqrt(tr{(F'F)^-1} + S / beta)`` (Eqs. 4.1.2 and 4.6.2); inf when beta = 0."""
+    """``k = sqrt(tr{(F'F)^-1} + S / beta)`` (Eqs. 4.1.2 and 4.6.2); inf when beta = 0.
+
+    Parameters
+    ----------
+    F : (K, 3) array
+        Geometry matrix: unit line-of-sight rows (dimensionless, ``K >= 3``).
+
+    Returns
+    -------
+    float
+        Geometric dilution ``k`` (position error per unit time-of-arrival noise; ``inf`` for
+        three satellites).
+
+    Raises
+    ------
+    ValueError
+        If ``F`` is not a finite ``(K, 3)`` array of rank 3 with ``K >= 3``.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eqs. (4.1.2) and (4.6.2).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> F = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [0.6, 0.8, 0.0]])
+    >>> round(geometric_dilution(F), 4), geometric_dilution(F[:3])
+    (5.7879, inf)
+    """
     b = beta_parameter(F)
     if b <= 1e-12 * F.shape[0]:
         return math.inf
@@ -201,7 +462,19 @@ def geometric_dilution(F: np.ndarray) -> float:
 
 @dataclass(frozen=True)
 class ConstellationParameters:
-    """The invariants of a constellation (ATC-10 Table 4.2 columns) for one satellite set."""
+    """The invariants of a constellation (ATC-10 Table 4.2 columns) for one satellite set.
+
+    Attributes
+    ----------
+    beta : float
+        ``1'(I - P)1`` (Eq. 4.5.2).
+    trace : float
+        ``tr{(F'F)^-1}``.
+    clock_term : float
+        ``S = 1'F(F'F)^-2 F'1``.
+    dilution : float
+        Geometric dilution ``k`` (Eqs. 4.1.2, 4.6.2).
+    """
 
     beta: float
     trace: float
@@ -210,7 +483,36 @@ class ConstellationParameters:
 
 
 def constellation_parameters(F: np.ndarray) -> ConstellationParameters:
-    """Compute beta, tr{(F'F)^-1}, S and the geometric dilution k of ``F``."""
+    """Compute beta, tr{(F'F)^-1}, S and the geometric dilution k of ``F``.
+
+    Parameters
+    ----------
+    F : (K, 3) array
+        Geometry matrix: unit line-of-sight rows (dimensionless, ``K >= 3``).
+
+    Returns
+    -------
+    ConstellationParameters
+        ``beta``, ``trace``, ``clock_term`` and ``dilution`` (all dimensionless).
+
+    Raises
+    ------
+    ValueError
+        If ``F`` is not a finite ``(K, 3)`` array of rank 3 with ``K >= 3``.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eqs. (4.1.2), (4.5.2), (4.5.30), (4.6.2).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> F = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [0.6, 0.8, 0.0]])
+    >>> p = constellation_parameters(F)
+    >>> round(p.trace, 4), round(p.dilution, 4)
+    (2.5, 5.7879)
+    """
     F = _check_f(F)
     return ConstellationParameters(
         beta=beta_parameter(F),
@@ -231,6 +533,42 @@ def most_widely_spaced_triplet(
     ``criterion``: ``"trace"`` minimises tr{(F3'F3)^-1}; ``"det"`` maximises ``|det F3|``;
     ``"angle"`` maximises the smallest pairwise angle between the lines of sight. Returns the
     triplet and its score (trace, ``|det|`` or angle in degrees).
+
+    Parameters
+    ----------
+    satellites : (K, 3) array
+        Satellite positions, m (Earth-centred).
+    aircraft : (3,) array
+        Aircraft position, m (same frame).
+    cone_half_angle_deg : float
+        Half-angle of the visibility cone about the local vertical, deg (in [0, 90]).
+    criterion : {"trace", "det", "angle"}, default "trace"
+        What "widely spaced" means (see above).
+
+    Returns
+    -------
+    triplet : tuple of int
+        Indices of the three satellites.
+    score : float
+        Its score: the trace (dimensionless), ``|det F3|`` or the smallest angle (deg).
+
+    Raises
+    ------
+    ValueError
+        If the cone angle is outside [0, 90], the criterion is unknown, or fewer than three
+        satellites lie inside the cone.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, ATC-10 (1972), Sec. 4.5 (the three satellites that
+    remain after the others are lost).
+
+    Examples
+    --------
+    >>> sats = [[0.0, 0.0, 2.0e7], [1.0e7, 0.0, 2.0e7], [0.0, 1.0e7, 2.0e7], [-1.0e7, 0.0, 2.0e7]]
+    >>> tri, score = most_widely_spaced_triplet(sats, [0.0, 0.0, 6.4e6], 60.0)
+    >>> tri, round(score, 3)
+    ((1, 2, 3), 6.47)
     """
     require_in_range("cone_half_angle_deg", cone_half_angle_deg, 0.0, 90.0)
     if criterion not in ("trace", "det", "angle"):

@@ -44,7 +44,32 @@ def _vec3(name: str, v: ArrayLike) -> Array:
 
 @implements("SP Sec. 2.6.4")
 def target_location_error(dr_vehicle_m: ArrayLike, dalpha_rad: ArrayLike, r_target_m: ArrayLike) -> Array:
-    """Target coordinate error (m): position error plus misalignment crossed with the lever arm.
+    """Target coordinate error: position error plus misalignment crossed with the lever arm.
+
+    ``dr + dalpha x r``.
+
+    Parameters
+    ----------
+    dr_vehicle_m : (3,) array
+        Vehicle position error, m.
+    dalpha_rad : (3,) array
+        Attitude (misalignment) error, rad.
+    r_target_m : (3,) array
+        Lever arm from vehicle to target, m (same frame).
+
+    Returns
+    -------
+    (3,) ndarray
+        Target error, m.
+
+    Raises
+    ------
+    ValueError
+        If an input is not a finite 3-vector.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons", Sec. 2.6.4.
 
     Examples
     --------
@@ -57,7 +82,41 @@ def target_location_error(dr_vehicle_m: ArrayLike, dalpha_rad: ArrayLike, r_targ
 
 
 def target_location_covariance(P_position: ArrayLike, P_attitude: ArrayLike, r_target_m: ArrayLike) -> Array:
-    """Covariance of the target error for uncorrelated position and attitude errors (m^2)."""
+    """Covariance of the target error for uncorrelated position and attitude errors.
+
+    ``P_r + [r x] P_a [r x]^T``, the covariance of :func:`target_location_error`.
+
+    Parameters
+    ----------
+    P_position : (3, 3) array
+        Vehicle position error covariance, m^2.
+    P_attitude : (3, 3) array
+        Attitude error covariance, rad^2.
+    r_target_m : (3,) array
+        Lever arm from vehicle to target, m (same frame).
+
+    Returns
+    -------
+    (3, 3) ndarray
+        Target error covariance, m^2.
+
+    Raises
+    ------
+    ValueError
+        If a covariance is not 3x3 symmetric positive semi-definite or ``r_target_m`` not a
+        finite 3-vector.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons", Sec. 2.6.4.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> C = target_location_covariance(np.eye(3), 1e-6 * np.eye(3), [8000.0, 0.0, 0.0])
+    >>> np.round(np.diag(C), 6).tolist()
+    [1.0, 65.0, 65.0]
+    """
     Pr = require_symmetric_psd("P_position", P_position)
     Pa = require_symmetric_psd("P_attitude", P_attitude)
     if Pr.shape != (3, 3) or Pa.shape != (3, 3):
@@ -68,7 +127,35 @@ def target_location_covariance(P_position: ArrayLike, P_attitude: ArrayLike, r_t
 
 
 def pointing_error_m(misalignment_rad: ArrayLike, range_m: ArrayLike) -> Array | float:
-    """Displacement (m) of the target caused by a misalignment perpendicular to the line of sight."""
+    """Displacement of the target caused by a misalignment perpendicular to the line of sight.
+
+    Parameters
+    ----------
+    misalignment_rad : array_like
+        Attitude error perpendicular to the line of sight, rad (``>= 0``).
+    range_m : array_like
+        Range to the target, m (``>= 0``).
+
+    Returns
+    -------
+    float or ndarray
+        Displacement, m (small-angle product).
+
+    Raises
+    ------
+    ValueError
+        If an argument is negative.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",
+    Sec. 2.6.4 (target location).
+
+    Examples
+    --------
+    >>> pointing_error_m(1e-3, 8000.0)
+    8.0
+    """
     m = require_nonnegative("misalignment_rad", misalignment_rad)
     r = require_nonnegative("range_m", range_m)
     out = np.asarray(m, dtype=float) * np.asarray(r, dtype=float)
@@ -79,7 +166,36 @@ def pointing_error_m(misalignment_rad: ArrayLike, range_m: ArrayLike) -> Array |
 def target_location_rss(
     position_rss_m: ArrayLike, misalignment_rad: ArrayLike, range_m: ArrayLike
 ) -> Array | float:
-    """Root-sum-square of position error and pointing error (independent errors), m."""
+    """Root-sum-square of position error and pointing error (independent errors).
+
+    Parameters
+    ----------
+    position_rss_m : array_like
+        Vehicle position error (rss), m (``>= 0``).
+    misalignment_rad : array_like
+        Attitude error perpendicular to the line of sight, rad (``>= 0``).
+    range_m : array_like
+        Range to the target, m (``>= 0``).
+
+    Returns
+    -------
+    float or ndarray
+        Target error, m.
+
+    Raises
+    ------
+    ValueError
+        If an argument is negative.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons", Sec. 2.6.4.
+
+    Examples
+    --------
+    >>> round(target_location_rss(6.0, 1e-3, 8000.0), 6)
+    10.0
+    """
     p = require_nonnegative("position_rss_m", position_rss_m)
     out = np.hypot(np.asarray(p, dtype=float), pointing_error_m(misalignment_rad, range_m))
     return float(out) if np.ndim(out) == 0 else out
