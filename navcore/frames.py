@@ -620,7 +620,7 @@ def radii_of_curvature(lat: ArrayLike) -> tuple[Array, Array]:
     References
     ----------
     Groves, Principles of GNSS, Inertial, and Multisensor Integrated Navigation Systems,
-    2nd ed. (2013), Eqs. (2.105)-(2.106).
+    2nd ed. (2013), Ch. 2 (frames and their transformations).
 
     Examples
     --------
@@ -662,7 +662,7 @@ def geodetic_to_ecef(lat: ArrayLike, lon: ArrayLike, h: ArrayLike, *, deg: bool 
     References
     ----------
     Groves, Principles of GNSS, Inertial, and Multisensor Integrated Navigation Systems,
-    2nd ed. (2013), Eq. (2.112).
+    2nd ed. (2013), Ch. 2 (frames and their transformations).
 
     Examples
     --------
@@ -775,7 +775,7 @@ def dcm_ecef_to_ned(lat: float, lon: float, *, deg: bool = False) -> Array:
     References
     ----------
     Groves, Principles of GNSS, Inertial, and Multisensor Integrated Navigation Systems,
-    2nd ed. (2013), Eq. (2.150).
+    2nd ed. (2013), Ch. 2 (frames and their transformations).
 
     Examples
     --------

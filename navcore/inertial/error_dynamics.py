@@ -359,7 +359,7 @@ def earth_rate_ned(lat: ArrayLike) -> Array:
     Notes
     -----
     The standard strapdown relation (Titterton & Weston, Strapdown Inertial Navigation
-    Technology, Sec. 3.5); the Earth rate is WGS-84's.
+    Technology, 2nd ed., Ch. 3); the Earth rate is WGS-84's.
 
     Examples
     --------
@@ -393,7 +393,7 @@ def transport_rate_ned(v_ned: ArrayLike, lat: ArrayLike, h: ArrayLike = 0.0) -> 
 
     Notes
     -----
-    The standard strapdown relation (Titterton & Weston, Sec. 3.5) with the Schuler radius.
+    The standard strapdown relation (Titterton & Weston, Ch. 3) with the Schuler radius.
 
     Examples
     --------
