@@ -195,7 +195,7 @@ def earth_rate_ned(lat: ArrayLike) -> Array:
     Notes
     -----
     Groves, Principles of GNSS, Inertial, and Multisensor Integrated Navigation Systems,
-    Eq. (5.41).
+    2nd ed. (2013), Ch. 5 (the local-navigation-frame mechanisation).
 
     Examples
     --------
