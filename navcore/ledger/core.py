@@ -385,8 +385,7 @@ class Erratum:
             raise ValueError(f"Erratum.paper must be one of {list(PAPERS)}, got {self.paper!r}")
         if self.kind and self.kind not in ERRATUM_KINDS:
             raise ValueError(
-                f"Erratum.kind must be one of {list(ERRATUM_KINDS)}, got {self.kind!r} "
-                f"(erratum {self.id!r})"
+                f"Erratum.kind must be one of {list(ERRATUM_KINDS)}, got {self.kind!r} (erratum {self.id!r})"
             )
         for name in ("id", "locator", "printed", "finding", "evidence"):
             if not str(getattr(self, name)).strip():
