@@ -98,7 +98,7 @@ ERRATUM_KINDS: dict[str, str] = {
     "or states but does not meet where it applies it",
     "inconsistent-numbers": "numbers that contradict each other across tables, figures and "
     "text, or that the paper's own stated inputs do not give",
-    "overstatement": "a statement in words (always, slightly, tight, about 10 dB, larger than) "
+    "overstatement": "a statement in words (always, slightly, tight, about, larger than) "
     "that the paper's own model and numbers do not support",
 }
 
