@@ -46,6 +46,7 @@ from typing import Any, Literal
 from navcore.ledger.inputs import declaring, overriding, recording
 
 __all__ = [
+    "ERRATUM_KINDS",
     "EXACT",
     "KINDS",
     "PAPERS",
@@ -78,6 +79,28 @@ Status = Literal["reproduced", "consistent", "inconsistent", "discrepant", "not-
 Kind = Literal["reproduction", "cross-check", "statement", "fit"]
 Policy = Literal["printed-digits", "prose", "figure-reading", "monte-carlo", "exact"]
 Relation = Literal["=", "<", "<=", ">", ">="]
+
+#: What kind of slip an erratum is, judged from what the paper prints and what the book finds
+#: (never from a verdict). Each erratum has exactly one kind: the first that fits, in this order.
+ERRATUM_KINDS: dict[str, str] = {
+    "typography": "a misprinted digit, sign, symbol, subscript, exponent or cross-reference, "
+    "where the paper's own later results or its other equations show the intended form",
+    "units": "a unit, scale or quantity confusion: a number in the wrong unit, a factor of two "
+    "between one- and two-sided densities, a quantity named as another (variance for mean "
+    "square, bandwidth for natural frequency, peak for average power)",
+    "convention": "a formula that is right under another sign, frame or ordering convention "
+    "than the one the paper states (a skew matrix of the opposite sign, a quaternion product "
+    "in the other order, a specific force of the opposite sign)",
+    "derivation": "an algebra or derivation error: a step that does not follow, a wrong "
+    "exponent or factor carried through, a bound or formula that is wrong as derived",
+    "unstated-assumption": "a result that holds only under an assumption the paper does not "
+    "state (independence, commuting covariances, a symmetric density, an accelerating flight), "
+    "or states but does not meet where it applies it",
+    "inconsistent-numbers": "numbers that contradict each other across tables, figures and "
+    "text, or that the paper's own stated inputs do not give",
+    "overstatement": "a statement in words (always, slightly, tight, about, larger than) "
+    "that the paper's own model and numbers do not support",
+}
 
 _ID_RE = re.compile(r"^(WF|SP|ATC10|KZL)-[A-Za-z0-9][A-Za-z0-9._+-]*$")
 
@@ -324,6 +347,39 @@ class Erratum:
     no_claim_reason : str
         Why no ledger claim can check it (an erratum of wording with no number, say); every
         erratum has a claim or this reason.
+    kind : str
+        What kind of slip it is, one of :data:`ERRATUM_KINDS`, judged from ``printed``,
+        ``finding`` and ``evidence`` (never from a verdict); every registered erratum declares
+        one (the paper modules pass it; an erratum built outside a paper module may leave it
+        empty). The kinds:
+
+        ``typography``
+            a misprinted digit, sign, symbol, subscript, exponent or cross-reference, where
+            the paper's own later results or other equations show the intended form.
+        ``units``
+            a unit, scale or quantity confusion: a number in the wrong unit, a factor of two
+            between one- and two-sided densities, a quantity named as another.
+        ``convention``
+            a formula that is right under another sign, frame or ordering convention than the
+            one the paper states.
+        ``derivation``
+            an algebra or derivation error: a step that does not follow, a wrong exponent or
+            factor carried through, a bound that is wrong as derived.
+        ``unstated-assumption``
+            a result that holds only under an assumption the paper does not state, or states
+            but does not meet where it applies it.
+        ``inconsistent-numbers``
+            numbers that contradict each other across tables, figures and text, or that the
+            paper's own stated inputs do not give.
+        ``overstatement``
+            a statement in words (always, slightly, tight, larger than) that the paper's own
+            model and numbers do not support.
+
+    Raises
+    ------
+    ValueError
+        If ``paper`` is unknown, a text field is empty, or ``kind`` is not one of
+        :data:`ERRATUM_KINDS`.
     """
 
     id: str
@@ -335,10 +391,15 @@ class Erratum:
     claims: tuple[str, ...] = ()
     discussed_in: str = ""
     no_claim_reason: str = ""
+    kind: str = ""
 
     def __post_init__(self) -> None:
         if self.paper not in PAPERS:
             raise ValueError(f"Erratum.paper must be one of {list(PAPERS)}, got {self.paper!r}")
+        if self.kind and self.kind not in ERRATUM_KINDS:
+            raise ValueError(
+                f"Erratum.kind must be one of {list(ERRATUM_KINDS)}, got {self.kind!r} (erratum {self.id!r})"
+            )
         for name in ("id", "locator", "printed", "finding", "evidence"):
             if not str(getattr(self, name)).strip():
                 raise ValueError(f"Erratum.{name} must not be empty (erratum {self.id!r})")

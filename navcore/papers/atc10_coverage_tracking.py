@@ -788,6 +788,7 @@ ERRATA = [
     Erratum(
         id="ATC10-E4.9-typos",
         paper="ATC10",
+        kind="typography",
         locator="Sec. 4.5.2, after (4.5.9); (4.3.0); (4.5.3)-(4.5.4); Sec. 4.5.3; (4.5.37)",
         printed="tau_n = sum_{i<=n} w_i + alpha_0 (and smaller slips: (1/tau^2) mn, a stray 1 in (4.5.3), "
         "sigma_gamma^2 for sigma^2 gamma, (4.5.37) citing (4.5.30))",
@@ -801,6 +802,7 @@ ERRATA = [
     Erratum(
         id="ATC10-E4.11-second-term",
         paper="ATC10",
+        kind="overstatement",
         locator="Sec. 4.5.4 ('the second term in (4.5.35) always significantly dominates the first term')",
         printed="the second term always significantly dominates, so tracking reduces Var to about psi Var0",
         finding="after tracking, gamma S = (psi/beta) S is smaller than tr{(F'F)^-1} in Example I at "

@@ -595,6 +595,7 @@ ERRATA = [
     Erratum(
         id=E_ERF,
         paper="ATC10",
+        kind="typography",
         locator="Eqs. (2.8.1), (2.8.3)",
         printed="p_f = 1/2 - 1/2 erf(1/2 sqrt(P0 B tau / J) - phi)",
         finding="The erf argument is sqrt(P0 B tau / (2 J)) - phi, as in (2.7.1), (2.8.4) and (D.17); "
@@ -608,6 +609,7 @@ ERRATA = [
     Erratum(
         id=E_RULE,
         paper="ATC10",
+        kind="derivation",
         locator="Eqs. (A.9)-(A.10) against (A.11), (B.1)",
         printed="Decide H1 if K_0 <= tK (K_0 the number of empty lists)",
         finding="The bounds (A.17), (B.11), the figures and the tables use the rule of (A.11)/(B.1) and of "
@@ -622,6 +624,7 @@ ERRATA = [
     Erratum(
         id=E_TAB11,
         paper="ATC10",
+        kind="inconsistent-numbers",
         locator="Table 1.1 and Sec. 1.1",
         printed="ERP 33/43/53/77 dBW for K = 1/10/100/1000 'with a processor designed to achieve a detection "
         "probability of at least 0.88'",
@@ -636,6 +639,7 @@ ERRATA = [
     Erratum(
         id=E_BEAM,
         paper="ATC10",
+        kind="inconsistent-numbers",
         locator="Table 1.1, K = 1 beamwidth",
         printed="15 degrees",
         finding="About 20-21 degrees, as Sec. 2.7 itself says ('an antenna with a 20 degree beamwidth').",
@@ -648,6 +652,7 @@ ERRATA = [
     Erratum(
         id=E_C1,
         paper="ATC10",
+        kind="typography",
         locator="Eqs. (C.1), (C.11) and cross-references of App. C",
         printed="(C.1): [1 - p_f]^(2B alpha) [1 - (1 - p_f)^(4B beta)]^3; (C.11) conditions on gamma_D(i, "
         "K) = 1",
@@ -663,6 +668,7 @@ ERRATA = [
     Erratum(
         id=E_A15,
         paper="ATC10",
+        kind="typography",
         locator="Eq. (A.15)",
         printed="P_D >= 1 exp -K(...)",
         finding="A minus sign is lost: P_D >= 1 - exp(-K(...)), as in (A.17) and (2.4.2).",
@@ -674,6 +680,7 @@ ERRATA = [
     Erratum(
         id=E_A7,
         paper="ATC10",
+        kind="typography",
         locator="Eqs. (A.7)-(A.8); text after (A.13), (A.18)",
         printed="K ln(lambda_1 P(rho=1|H0)/P(rho=1|H1)); the label (A.8) is empty; 'J' for nu",
         finding="The ratio is inverted: K ln(lambda_1 P(rho=1|H1)/P(rho=1|H0)). Harmless, since lambda_1 is "
@@ -686,6 +693,7 @@ ERRATA = [
     Erratum(
         id=E_KT,
         paper="ATC10",
+        kind="derivation",
         locator="Eqs. (2.5.4), (2.8.3), (B.9)-(B.11); (C.14)",
         printed="exponent Kt + 1; sample count (8B/3) v alpha / c",
         finding="When Kt is not an integer the count of lists is floor(Kt) + 1; the real exponent gives a "
@@ -699,6 +707,7 @@ ERRATA = [
     Erratum(
         id=E_SUP,
         paper="ATC10",
+        kind="derivation",
         locator="Sec. 2.7, level N_F = 0.9 N_T",
         printed="N_F of 0.9 N_T taken as the failure indicator",
         finding="0.9 N_T = N_T - N is the supremum of N_FL, approached as J grows but never reached; the "
@@ -714,6 +723,7 @@ ERRATA = [
     Erratum(
         id=E_MINOR,
         paper="ATC10",
+        kind="typography",
         locator="Sec. 2.8 and Figs. 2.13-2.14",
         printed="'Table 2.8.1'; heading 'K >> 1'; Fig. 2.13 (ADL) before Fig. 2.14 (FL); 'expanded in "
         "Section 2.6'",
@@ -727,6 +737,7 @@ ERRATA = [
     Erratum(
         id=E_P0,
         paper="ATC10",
+        kind="units",
         locator="Sec. 2.6 and App. D (before (D.17))",
         printed="Sec. 2.6: 'The average power of s_i(t) during transmission is P_0 = E/tau'; App. D: "
         "'E = P_o tau, where P_o is peak signature power'",
@@ -742,6 +753,7 @@ ERRATA = [
     Erratum(
         id=E_INDEP,
         paper="ATC10",
+        kind="unstated-assumption",
         locator="Eqs. (B.6), (C.14) and Sec. 2.3",
         printed="Prob(Phi_1 | H_0) = (1 - (1 - p_f)^(2B alpha)) (1 - (1 - p_f)^(4B beta))^3, with the "
         "filter output 'sampled at twice the Nyquist rate'",
@@ -765,6 +777,7 @@ ERRATA = [
     Erratum(
         id=E_C2,
         paper="ATC10",
+        kind="derivation",
         locator="Eqs. (C.2)-(C.5)",
         printed="|T_1(1) - T_2(1)| <= v alpha / c seconds (and likewise for satellite 2)",
         finding="T_1(1) - T_2(1) is the change in satellite 1's reception time between two successive "
@@ -782,6 +795,7 @@ ERRATA = [
     Erratum(
         id=E_B10,
         paper="ATC10",
+        kind="typography",
         locator="Eq. (B.10)",
         printed="'From (B.8) and the statistical independence of rho(i,j), we obtain immediately' (B.10)",
         finding="(B.10) follows from the event inclusion (B.9) and independence; read 'From (B.9)'. (B.8) "
@@ -796,6 +810,7 @@ ERRATA = [
     Erratum(
         id=E_A_END,
         paper="ATC10",
+        kind="typography",
         locator="App. A, last line (after (A.18))",
         printed="P_D > p_d^4",
         finding="The K = 1 bound is P_D >= p_d^4, as printed in (2.4.1) and (A.10a). The appendix derives "
@@ -809,6 +824,7 @@ ERRATA = [
     Erratum(
         id=E_258,
         paper="ATC10",
+        kind="unstated-assumption",
         locator="Eq. (2.5.8)",
         printed="Prob(Gamma_D, gamma_D, psi_D, theta_D = 1) = Prob(Gamma_D | gamma_D, psi_D, theta_D) "
         "Prob(gamma_D) Prob(psi_D | theta_D) Prob(theta_D)",
@@ -832,6 +848,7 @@ ERRATA = [
     Erratum(
         id=E_A16,
         paper="ATC10",
+        kind="unstated-assumption",
         locator="Eq. (A.16)",
         printed="P(rho = 1 | H_1) ~ p_d^4, 'the approximation holds closely assuming reasonably large "
         "enough values for p_d'",
@@ -854,6 +871,7 @@ ERRATA = [
     Erratum(
         id=E_T21,
         paper="ATC10",
+        kind="inconsistent-numbers",
         locator="Table 2.1 (and Table 1.1, K = 1000)",
         printed="56 dBW for K = 100, P_DL = 0.88; 77 dBW for K = 1000, P_DL = 0.999",
         finding="With the printed parameters the t = 0 N_ADL bound (2.8.4) reaches 0.01 N_T at 55.3 dBW and "
@@ -875,6 +893,7 @@ ERRATA = [
     Erratum(
         id=E_10DB,
         paper="ATC10",
+        kind="overstatement",
         locator="Sec. 2.8",
         printed="'it takes about 10 db more power to disable a K = 10 system than a K = 1 system and about "
         "10 db more power to disable a K = 100 system'",

@@ -696,6 +696,7 @@ ERRATA = [
     Erratum(
         id="ATC10-E3-11",
         paper="ATC10",
+        kind="overstatement",
         locator="Secs. 3.1.3 A and 3.5.2 (and the opening of the Exp analysis in Sec. 3.8)",
         printed="the upper and lower bounds are asymptotically tight: they approach the actual ROC "
         "as N increases",
@@ -712,6 +713,7 @@ ERRATA = [
     Erratum(
         id="ATC10-E3-1",
         paper="ATC10",
+        kind="derivation",
         locator="Eq. (3.5.14)",
         printed="p_f >= 1/2 exp[-rho theta + (sum ((1-q) + q int e^{rho x} C)) - phi_1], "
         "phi_1 = -2 rho_1 sqrt(2 mu''), with rho the Chernoff optimum of (3.5.7)",
@@ -732,6 +734,7 @@ ERRATA = [
     Erratum(
         id="ATC10-E3-2",
         paper="ATC10",
+        kind="typography",
         locator="Sec. 3.8, worked example",
         printed="p = 50",
         finding="p = (N-1)/(B alpha) = (2e5 - 1)/(1e7 * 1 s) = 0.02 = 1/50.",
@@ -742,6 +745,7 @@ ERRATA = [
     Erratum(
         id="ATC10-E3-3",
         paper="ATC10",
+        kind="units",
         locator="Sec. 3.8, worked example against Eq. (3.8.8)",
         printed="Exp_g = a^2/p",
         finding="Eq. (3.8.8) defines Exp_g = a^2/(2p), which gives 6.25, not 12.5. The example's "
@@ -753,6 +757,7 @@ ERRATA = [
     Erratum(
         id="ATC10-E3-4",
         paper="ATC10",
+        kind="derivation",
         locator="Eqs. (3.8.5)-(3.8.7)",
         printed="E e^{mu n} = exp(mu^2/2); p_f <= exp(-mu theta - mu^2/2)",
         finding="E e^{mu n} = exp(mu^2 p/2) and p_f <= exp(-mu theta + mu^2 p/2); the optimum "
@@ -764,6 +769,7 @@ ERRATA = [
     Erratum(
         id="ATC10-E3-5",
         paper="ATC10",
+        kind="unstated-assumption",
         locator="Appendix E, after Eq. (E.15)",
         printed="The second term is O(N^{-3/2})",
         finding="The lambda_3 term is O(N^{-1}) when lambda_3 != 0; it vanishes only because a uniform "
@@ -777,6 +783,7 @@ ERRATA = [
     Erratum(
         id="ATC10-E3-6",
         paper="ATC10",
+        kind="derivation",
         locator="Theorem 3.3 and Eq. (F.8)",
         printed="E(n^2) <= sum_j 1/(4 alpha sqrt(W_j) W_j); (F.8) with exponents -1 and -1/2 and 'E(n)^2'",
         finding="E(n^2) <= sum_j 1/(4 alpha sqrt(W_i W_j)); both Cauchy-Schwarz factors carry +1/2.",
@@ -788,6 +795,7 @@ ERRATA = [
     Erratum(
         id="ATC10-E3-7",
         paper="ATC10",
+        kind="unstated-assumption",
         locator="Sec. 3.9, W = [(4/3) tau_c (1 + 2 tau_c/tau + 2 (tau_c/tau)^2)]^{-1}",
         printed="W ~ (3/4)/tau_c for PSK sequences with good autocorrelation",
         finding="The formula is exact for an idealised autocorrelation with alternating +-tau_c/tau "
@@ -803,6 +811,7 @@ ERRATA = [
     Erratum(
         id="ATC10-E3-8",
         paper="ATC10",
+        kind="derivation",
         locator="Theorem 3.2, proof after Eq. (3.7.16)",
         printed="(3.7.15) is strictly convex in {sqrt(beta_j)}, hence a unique minimum under (3.7.16)",
         finding="The constraint sum beta_j = const is a sphere in sqrt(beta), not a convex set. The "
@@ -815,6 +824,7 @@ ERRATA = [
     Erratum(
         id="ATC10-E3-9",
         paper="ATC10",
+        kind="typography",
         locator="Sec. 3.3-3.9, App. E (typographical)",
         printed="R_ij for R_ii; (1-2tau)/alpha; 'rho alpha' in (3.7.20); missing sqrt in (3.7.27); "
         "Exp_g/(N tau) in (3.8.16); tau/alpha = 10^5 and N = 2(10^-5); (E.7) e^{+jnv}",
@@ -830,6 +840,7 @@ ERRATA = [
     Erratum(
         id="ATC10-E3-10",
         paper="ATC10",
+        kind="inconsistent-numbers",
         locator="Sec. 3.8, worked example",
         printed="Exp ~ 9 and Exp_g/Exp ~ 1.4 for N = 2e5, tau/alpha = 1e-5, Exp_g = 12.5",
         finding="Eq. (3.8.16) gives Exp = 9.70 and a ratio of 1.29 at N = 2e5. The printed pair "

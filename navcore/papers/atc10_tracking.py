@@ -1116,6 +1116,7 @@ ERRATA += [
     Erratum(
         id=_E1,
         paper="ATC10",
+        kind="derivation",
         locator="Eq. (4.5.30); Table 4.2 col. 5; Table 4.3 col. (v); Figs. 4.2-4.3; Sec. 4.6 rules (3)-(4)",
         printed="E|xi_p|^2 = sigma^2 tr{(F'F)^-1} + sigma_tau^2 1'(F'F)^-1 1 for three satellites "
         "(Table 4.2: 5.76 and 14.3)",
@@ -1132,6 +1133,7 @@ ERRATA += [
     Erratum(
         id=_E2,
         paper="ATC10",
+        kind="inconsistent-numbers",
         locator="Table 4.2 (from Table 4.1)",
         printed="beta = .0543/.00355, tr = 7.84/3.99 (all), 9.39/14.9 (1,2,3), S = 1.30/1.16",
         finding="A synchronous orbit (42 164 km) over a spherical Earth (6371 km) gives beta = .0658/.00425, "
@@ -1146,6 +1148,7 @@ ERRATA += [
     Erratum(
         id=_E3,
         paper="ATC10",
+        kind="typography",
         locator="Eqs. (4.5.11), (4.5.20), Sec. 4.5.4 (beta)",
         printed="beta = K^-1 1'F(F'F)^-1F'1",
         finding="beta = K - 1'F(F'F)^-1F'1 = 1'(I - P)1 (the minus sign read as an inverse).",
@@ -1157,6 +1160,7 @@ ERRATA += [
     Erratum(
         id="ATC10-E4.4-recursion-formulas",
         paper="ATC10",
+        kind="typography",
         locator="Eqs. (4.5.10), (4.5.21), (4.5.31), (4.5.35); Sec. 4.5.2 steady state",
         printed="gamma_1^-1(I - ...); sigma^2_{gamma_{n-1}}; (gamma beta^-1)(Delta - xi); 2/(sigma^2 + beta "
         "sigma_tau^2); sigma0^2 for sigma^2 in (4.5.31); gamma_n^2 F'(F'F)^-2 F in (4.5.35)",
@@ -1171,6 +1175,7 @@ ERRATA += [
     Erratum(
         id=_E5,
         paper="ATC10",
+        kind="typography",
         locator="Sec. 4.5.4 (steps to converge)",
         printed="n = 1/Log(1 - psi) - 1 = 2.3/psi - 1",
         finding="n = -1/log10(1 - psi) - 1; the recursion itself converges about twice as fast as this.",
@@ -1182,6 +1187,7 @@ ERRATA += [
     Erratum(
         id=_E6,
         paper="ATC10",
+        kind="overstatement",
         locator="Sec. 4.6 (choice of satellites 1, 2, 3)",
         printed="satellites 1, 2 and 3 are the most widely spaced triplet",
         finding="For Example II, satellites 2, 3, 6 (and 1, 4, 7) are better by trace, determinant and "
@@ -1193,6 +1199,7 @@ ERRATA += [
     Erratum(
         id="ATC10-E4.7-fbm-normalisation",
         paper="ATC10",
+        kind="typography",
         locator="App. G, Eq. (G.5) and R_x3",
         printed="integrand [s^rho - 1/2 - (s+1)^rho - 1/2]; R_x3 = beta^2 sigma^2 / 2 (...); Newton step G/G",
         finding="integrand ((1+s)^(rho-1/2) - s^(rho-1/2))^2; R_x3 = beta^2 V0 / 2 (...); Newton step G/G'.",
@@ -1204,6 +1211,7 @@ ERRATA += [
     Erratum(
         id="ATC10-E4.8-var-of-norm",
         paper="ATC10",
+        kind="units",
         locator="Eqs. (4.1.2), (4.5.7), (4.5.35); Table 4.3",
         printed="Var[|xi_p|]",
         finding="The quantity is the mean-square norm E|xi_p|^2 = tr P, not the variance of the norm.",
@@ -1215,6 +1223,7 @@ ERRATA += [
     Erratum(
         id="ATC10-E4.10-scalar-gain",
         paper="ATC10",
+        kind="typography",
         locator="App. H, corollary (Eq. H.26)",
         printed="gamma = sigma^2 / (sigma^2 + sigma_x^2 [F'F - F'G(G'G)^-1G'F])",
         finding="gamma = sigma_x^2 / (sigma^2 + sigma_x^2 [F'F - F'G(G'G)^-1G'F]).",

@@ -325,6 +325,7 @@ ERRATA = [
     Erratum(
         id="KZL-E1-levelling-sign",
         paper="KZL",
+        kind="convention",
         locator="Eqs. (2)-(3)",
         printed="theta = arctan(-a_x / sqrt(a_y^2 + a_z^2)), phi = arctan2(a_y / a_z)",
         finding="With a = the specific force of Eq. (8) (a level IMU measures [0, 0, -g] in NED body "
@@ -338,6 +339,7 @@ ERRATA = [
     Erratum(
         id="KZL-E2-time-invariant",
         paper="KZL",
+        kind="unstated-assumption",
         locator="Eq. (5), preceding text",
         printed="in case of a time-variant system the state transition is described as A(k) = e^{FT}",
         finding="The chain A = e^{FT} = L^-1{(sI - F)^-1} holds for a time-invariant F (or F frozen "
@@ -349,6 +351,7 @@ ERRATA = [
     Erratum(
         id="KZL-E3-skew-notation",
         paper="KZL",
+        kind="convention",
         locator="Eq. (11)",
         printed="F23 = [a x] = [[0, a_d, -a_e], [-a_d, 0, a_n], [a_e, -a_n, 0]]",
         finding="The explicit matrix is minus the usual cross-product matrix: [a x]_paper b = b x a. "
@@ -362,6 +365,7 @@ ERRATA = [
     Erratum(
         id="KZL-E4-euler-rows",
         paper="KZL",
+        kind="derivation",
         locator="Eq. (13), block R",
         printed="R is a frame rotation matrix for the transformation from body-axes angular rates to "
         "the Euler angle angular rates",
@@ -375,6 +379,7 @@ ERRATA = [
     Erratum(
         id="KZL-E5-dd-typos",
         paper="KZL",
+        kind="typography",
         locator="Eqs. (1), (10), (14), (17)",
         printed="Eq. (17): both DD rows use l_02 and rows 2 and 4 have an extra 0^T block; Eq. (14) lists "
         "rho^(n) twice; Eq. (10) says O is the identity and I the zero matrix; Eq. (1)'s compact "
@@ -389,6 +394,7 @@ ERRATA = [
     Erratum(
         id="KZL-E6-quaternion-order",
         paper="KZL",
+        kind="convention",
         locator="Sec. 3.5, attitude correction",
         printed="q_b^{n,+} = q_b^{n,-} (x) q^n with the n-frame rotation quaternion q^n of phi = -dpsi",
         finding="An n-frame rotation multiplies q_b^n from the left: q^{n,+} = q^n (x) q^{n,-}. The "

@@ -144,6 +144,7 @@ ERRATA = [
     Erratum(
         id="SP-E-search-doppler-factor",
         paper="SP",
+        kind="inconsistent-numbers",
         locator="Sec. 2.5, Delta T formula; Sec. 2.6.2",
         printed="Delta T = 0.020 [2 sigma_rng/30] x [2 sigma_rng-rate/10]; 'one Doppler shift interval' "
         "for range-rate uncertainties up to 10 m/s",

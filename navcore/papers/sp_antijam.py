@@ -428,6 +428,7 @@ ERRATA = [
     Erratum(
         id="SP-E-di-improvement-15dB",
         paper="SP",
+        kind="inconsistent-numbers",
         locator="Sec. 3.1",
         printed="DI holds code lock up to 65 dB J/S, 'an improvement of approximately 15 dB' over TC, "
         "whose code loop loses lock at J/S = 54 dB (Sec. 3.0)",

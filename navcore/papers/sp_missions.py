@@ -278,6 +278,7 @@ ERRATA = [
     Erratum(
         id="SP-E-grade-labels",
         paper="SP",
+        kind="inconsistent-numbers",
         locator="Table 2.5 and Sec. 2.4",
         printed="the four instrument sets were scaled to give exactly 10, 1, 0.5 and 0.2 nmi/h",
         finding="Under the definition fitted to the 10 nmi/h label (1-h CEP, stationary, "

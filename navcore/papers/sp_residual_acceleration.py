@@ -176,6 +176,7 @@ ERRATA = [
     Erratum(
         id="SP-E-misalignment-sign",
         paper="SP",
+        kind="convention",
         locator="Sec. 2.5, 3x6 sensitivity matrix",
         printed="misalignment block [[0,-1,1],[1,0,-1],[-1,1,0]] after the skew matrix [dtheta x] a",
         finding="The printed skew matrix gives dtheta x a, whose Jacobian at a = (1,1,1) is "
@@ -190,6 +191,7 @@ ERRATA = [
     Erratum(
         id="SP-E-tab2.6-columns",
         paper="SP",
+        kind="units",
         locator="Table 2.6 and the text after it",
         printed="'the quantities in the third column are the required bandwidth'; column heading "
         "'Required Carrier Tracking Loop Bandwidth' with 18 rad/s unaided",
@@ -205,6 +207,7 @@ ERRATA = [
     Erratum(
         id="SP-E-tab2.6-col2-vs-tab2.5",
         paper="SP",
+        kind="inconsistent-numbers",
         locator="Table 2.6 column 2",
         printed="1880, 431, 311, 225 ppm (90 % residual error after in-flight calibration)",
         finding="Not derivable from Table 2.5: its a-priori accelerometer scale factor and "

@@ -849,6 +849,7 @@ ERRATA = [
     Erratum(
         id="WF-E1-eq13-innovation",
         paper="WF",
+        kind="typography",
         locator="Eq. (13)",
         printed="x_DL(k/k) = x_DL(k/k-1) + K_DL(k)[y_a(k) - x_DL(k/k-1)]",
         finding="The innovation must be y_L(k) - x_DL(k/k-1): the local velocity measurement of "
@@ -862,6 +863,7 @@ ERRATA = [
     Erratum(
         id="WF-E2-eq24-PN",
         paper="WF",
+        kind="units",
         locator="Eq. (24)",
         printed="P_N P_N^T = sigma_N^2 I",
         finding="Should read tau P_N tau^T = sigma_N^2 I, the term that enters Eq. (11); then "
@@ -874,6 +876,7 @@ ERRATA = [
     Erratum(
         id="WF-E3-eq20-PNG",
         paper="WF",
+        kind="typography",
         locator="Eq. (20)",
         printed="row 2 of the joint covariance: [P_LN, P_DL, P_NG]",
         finding="The (2, 3) block is the L-G cross-covariance P_LG; with P_NG the matrix is not a "
@@ -885,6 +888,7 @@ ERRATA = [
     Erratum(
         id="WF-E4-remark2-correlated",
         paper="WF",
+        kind="unstated-assumption",
         locator="Remark (ii) after the Theorem",
         printed="The upper bound tends to be exact ... when the estimation errors of all processors "
         "are completely correlated.",
@@ -899,6 +903,7 @@ ERRATA = [
     Erratum(
         id="WF-E5-fL1c-truncated",
         paper="WF",
+        kind="typography",
         locator="Sec. IV.D, parameter list",
         printed="f_o^L1 / c = 5.25 m^-1",
         finding="1575.42 MHz / 299 792 458 m/s = 5.2550 m^-1, 5.26 to three digits: the printed value is "
