@@ -30,3 +30,9 @@ def test_unknown_kind_raises_naming_kind():
 def test_known_kind_is_accepted():
     e = Erratum("WF-E9", "WF", "Eq. (1)", "p", "f", "e", kind="typography")
     assert e.kind == "typography"
+
+
+def test_missing_kind_raises():
+    """Every erratum says what kind of slip it is: leaving the kind out is an error."""
+    with pytest.raises(ValueError, match=r"Erratum\.kind must be one of"):
+        Erratum("WF-E9", "WF", "Eq. (1)", "p", "f", "e")

@@ -172,7 +172,7 @@ def test_registry_validation():
     )
     with pytest.raises(ValueError, match="unknown erratum"):
         validate_registry([c], [])
-    e = Erratum("WF-E9", "WF", "Eq. (1)", "p", "f", "e", claims=("WF-nope",))
+    e = Erratum("WF-E9", "WF", "Eq. (1)", "p", "f", "e", claims=("WF-nope",), kind="typography")
     with pytest.raises(ValueError, match="unknown claim"):
         validate_registry([c], [e])
     with pytest.raises(ValueError, match="duplicate claim"):

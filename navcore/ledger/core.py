@@ -349,9 +349,8 @@ class Erratum:
         erratum has a claim or this reason.
     kind : str
         What kind of slip it is, one of :data:`ERRATUM_KINDS`, judged from ``printed``,
-        ``finding`` and ``evidence`` (never from a verdict); every registered erratum declares
-        one (the paper modules pass it; an erratum built outside a paper module may leave it
-        empty). The kinds:
+        ``finding`` and ``evidence`` (never from a verdict); required (an erratum without a
+        kind raises ``ValueError``). The kinds:
 
         ``typography``
             a misprinted digit, sign, symbol, subscript, exponent or cross-reference, where
@@ -396,7 +395,7 @@ class Erratum:
     def __post_init__(self) -> None:
         if self.paper not in PAPERS:
             raise ValueError(f"Erratum.paper must be one of {list(PAPERS)}, got {self.paper!r}")
-        if self.kind and self.kind not in ERRATUM_KINDS:
+        if self.kind not in ERRATUM_KINDS:
             raise ValueError(
                 f"Erratum.kind must be one of {list(ERRATUM_KINDS)}, got {self.kind!r} (erratum {self.id!r})"
             )
