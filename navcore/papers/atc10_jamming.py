@@ -770,7 +770,7 @@ ERRATA = [
         "the same page draws independent samples by construction and so cannot test this assumption. As a "
         "sensitivity, counting half as many independent samples (B instead of 2B per second) moves the "
         "K = 100 thresholds from 55.3 to 74.8 dBW (P_DL = 0.88) and from 51.2 to 58.1 dBW (0.999); K = 1000, "
-        "P_DL = 0.999 then has no finite threshold (values checked by tests/test_atc10_jamming.py).",
+        "P_DL = 0.999 then has no finite threshold (the library's tests check these values).",
         claims=("ATC10-eqB.6-correlated-samples",),
         discussed_in=PAGE,
     ),
@@ -838,7 +838,7 @@ ERRATA = [
         "theta_D = 1). The Appendix C bound on gamma_D uses noise-only declarations, so it holds given "
         "theta_D = 1 as well (up to the one signal sample per filter). Dropping the factor P_DL lowers the "
         "finite t = 0 thresholds of Table 2.1 and of K = 1 by at most 0.16 dB, and leaves the K = 1000, "
-        "P_DL = 0.98 entry without a finite power (values checked by tests/test_atc10_jamming.py).",
+        "P_DL = 0.98 entry without a finite power (the library's tests check these values).",
         no_claim_reason="the unstated independence makes (2.5.8) a lower bound rather than an equality, "
         "and the bound is what the paper uses; near the thresholds noise fills the lists "
         "so P(psi_D = 1 | theta_D = 1) is 1 to double precision and the two sides agree, "
@@ -861,7 +861,7 @@ ERRATA = [
         "exponent D(t || q) increases with q for q > t (dD/dq = (q - t) / (q (1 - q))), so replacing "
         "P(rho = 1 | H_1) by the smaller p_d^4 can only lower the bound. At the K = 1000, P_DL = 0.999 "
         "threshold p_f = 0.27, and the noise-only list factor F(p_f) of (B.6) differs from 1 by 4e-304 "
-        "(values checked by tests/test_atc10_jamming.py).",
+        "(the library's tests check these values).",
         claims=("ATC10-eqA.16-bound-stays-valid",),
         no_claim_reason="the paper qualifies the approximation ('reasonably large p_d') and says the "
         "bound stays valid without it, which claim ATC10-eqA.16-bound-stays-valid "

@@ -724,7 +724,7 @@ ERRATA = [
         "'ROC_g p_f below the lower bound of the actual p_f' cannot be made with it.",
         evidence="Tilted-Chebyshev derivation; the printed version (sign of phi_1) lies above the "
         "Chernoff upper bound; the corrected one lies below the exact compound-binomial and "
-        "stratified Monte Carlo tails at every tested point (tests/test_roc_bounds.py).",
+        "stratified Monte Carlo tails at every tested point (checked by the library's tests).",
         claims=(
             "ATC10-sec3.5-lower-bound-printed",
             "ATC10-sec3.8-gauss-always-optimistic",
@@ -788,7 +788,7 @@ ERRATA = [
         printed="E(n^2) <= sum_j 1/(4 alpha sqrt(W_j) W_j); (F.8) with exponents -1 and -1/2 and 'E(n)^2'",
         finding="E(n^2) <= sum_j 1/(4 alpha sqrt(W_i W_j)); both Cauchy-Schwarz factors carry +1/2.",
         evidence="The printed form has the wrong dimension (s^{1/2}); the corrected bound holds and "
-        "is attained for equal autocorrelations (exact piecewise-linear integrals, tests/test_zakai.py).",
+        "is attained for equal autocorrelations (exact piecewise-linear integrals).",
         discussed_in=PAGE_ZAKAI,
         claims=("ATC10-thm3.3-printed",),
     ),

@@ -332,7 +332,7 @@ ERRATA = [
         "axes) the printed pair returns roll = 180 deg for a level aircraft. It is right for a = -f; "
         "for the specific force: theta = arctan(f_x / sqrt(f_y^2 + f_z^2)), phi = atan2(-f_y, -f_z).",
         evidence="navcore.inertial.alignment.levelling_as_printed on f = [0, 0, -g]; round trip on "
-        "random attitudes built with scipy's Rotation (tests/test_strapdown.py).",
+        "random attitudes built with scipy's Rotation (checked by the library's tests).",
         claims=("KZL-eq2-3-levelling",),
         discussed_in=PAGE1,
     ),
@@ -358,7 +358,7 @@ ERRATA = [
         "The explicit matrix is the right F23 for error = estimated - true and "
         "R_hat = (I + [dpsi x]) R; reading the bracket as the standard skew flips the sign of F23 "
         "and of the DD rows of Eq. (17).",
-        evidence="Finite differences of the nonlinear velocity-error rate (tests/test_error_model17.py).",
+        evidence="Finite differences of the nonlinear velocity-error rate (checked by the library's tests).",
         claims=("KZL-eq11-bracket",),
         discussed_in=PAGE2,
     ),
@@ -401,7 +401,7 @@ ERRATA = [
         "printed order rotates about body axes; at the Table 1 heading of 90 deg a 2.29 deg "
         "error leaves a 1.58 deg residual.",
         evidence="navcore.estimation.ekf_ins_gnss.correct_attitude both ways, checked with scipy's "
-        "Rotation (tests/test_ekf_ins_gnss.py).",
+        "Rotation (checked by the library's tests).",
         claims=("KZL-qcorr",),
         discussed_in=PAGE2,
     ),

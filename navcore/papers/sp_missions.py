@@ -290,7 +290,7 @@ ERRATA = [
         "would remove the disagreement.",
         evidence="Covariance propagation of the full Table 2.5 error model, checked by a seeded "
         "20000-run Monte Carlo of the same model with exact (Van Loan) discretisation "
-        "(tests/test_covariance_analysis.py).",
+        "(checked by the library's tests).",
         claims=("SP-tab2.5-grade-1", "SP-tab2.5-grade-0.5", "SP-tab2.5-grade-0.2"),
         discussed_in="sp/20-inertial-errors",
     ),

@@ -856,7 +856,7 @@ ERRATA = [
         "Eq. (12), not the acceleration y_a.",
         evidence="Dimensional analysis (acceleration minus velocity) and a seeded simulation of the "
         "printed recursion, whose error departs from the Eq. (14) covariance; the corrected filter "
-        "matches filterpy's Kalman filter (tests/test_federated.py).",
+        "matches filterpy's Kalman filter (checked by the library's tests).",
         claims=("WF-eq13-innovation",),
         discussed_in=DOCS["IV"],
     ),
