@@ -100,7 +100,7 @@ def _column_limit(x: float) -> float:
 def bounds_grid() -> Figure:
     xs = m.contours()
     fig, axes = plt.subplots(
-        len(m.DENSITY_NAMES), len(xs), figsize=(7.6, 6.6), sharex="col", sharey="col", squeeze=False
+        len(m.DENSITY_NAMES), len(xs), figsize=(7.6, 6.4), sharex="col", sharey="col", squeeze=False
     )
     th = np.linspace(0.005, 0.995, 199)
     for j, x in enumerate(xs):
@@ -119,23 +119,23 @@ def bounds_grid() -> Figure:
             ax.set_xlim(lim, 1)
             ax.set_ylim(lim, 1)
             ax.set_aspect("equal", adjustable="box")
-            ax.tick_params(labelsize=6.5, pad=1.5)
+            ax.tick_params(labelsize=7.5, pad=1.5)
             for axis in (ax.xaxis, ax.yaxis):
                 axis.set_major_locator(LogLocator(base=10, numticks=4))
                 axis.set_minor_locator(NullLocator())
             if i == 0:
-                ax.set_title(f"1/√(3b) = {x:g}", fontsize=8.5)
+                ax.set_title(f"1/√(3b) = {x:g}", fontsize=9.5)
             if j == 0:
-                ax.set_ylabel(f"Fig. 3.{3 + i}: {name}\n$p_f$", fontsize=8)
+                ax.set_ylabel(f"Fig. 3.{3 + i}: {name}\n$p_f$", fontsize=9)
             if i == len(m.DENSITY_NAMES) - 1:
-                ax.set_xlabel("$1 - p_d$", fontsize=8)
+                ax.set_xlabel("$1 - p_d$", fontsize=9)
     handles = [
         Line2D([], [], color="C0", lw=1.2, ls="-", label="upper bound (3.5.13)"),
         Line2D([], [], color="k", lw=1.3, ls=":", label="actual ROC"),
         Line2D([], [], color="k", lw=2.5, alpha=0.25, label="ROC$_g$, Gaussian of equal power"),
     ]
-    fig.legend(handles=handles, loc="upper center", ncol=3, fontsize=7.5, bbox_to_anchor=(0.5, 1.0))
-    fig.subplots_adjust(left=0.1, right=0.99, bottom=0.07, top=0.93, wspace=0.45, hspace=0.12)
+    fig.legend(handles=handles, loc="upper center", ncol=3, fontsize=9, bbox_to_anchor=(0.5, 1.0))
+    fig.subplots_adjust(left=0.1, right=0.99, bottom=0.07, top=0.93, wspace=0.5, hspace=0.12)
     return fig
 
 
