@@ -369,7 +369,7 @@ ERRATA = [
         "J_b^-1(phi, theta) R_n^b, not J_b^-1 alone. At the Table 1 attitude (heading 90 deg) they "
         "differ by swapping north/east tilt into roll/pitch.",
         evidence="Central finite differences of euler_from_dcm(expm([dpsi x]) R).",
-        claims=("KZL-eq13-R", "KZL-c15"),
+        claims=("KZL-eq13-R", "KZL-sec3.5-small-rotation-euler-angles"),
         discussed_in=PAGE2,
     ),
     Erratum(
@@ -457,7 +457,8 @@ CLAIMS = [
         discussed_in=PAGE1,
     ),
     Claim(
-        id="KZL-c11-earth-rate",
+        id="KZL-sec3.1-gyro-bias-swamps-earth-rate",
+        aliases=("KZL-c11-earth-rate",),
         paper="KZL",
         locator="Sec. 3.1",
         quantity="a MEMS gyro bias of several 100 deg/h swamps the horizontal Earth rate (no gyrocompassing)",
@@ -472,7 +473,8 @@ CLAIMS = [
         discussed_in=PAGE1,
     ),
     Claim(
-        id="KZL-c13-neglected-rates",
+        id="KZL-sec3.2-earth-transport-rates-negligible",
+        aliases=("KZL-c13-neglected-rates",),
         paper="KZL",
         locator="Secs. 3.1-3.2",
         quantity="Earth and transport rate are negligible against the low-cost gyro bias",
@@ -528,7 +530,8 @@ CLAIMS = [
         discussed_in=PAGE2,
     ),
     Claim(
-        id="KZL-c12-observability",
+        id="KZL-sec3.1-observability-needs-attitude",
+        aliases=("KZL-c12-observability",),
         paper="KZL",
         locator="Sec. 3.1",
         quantity="complete observability only with redundant attitude information, depending on nu",
@@ -543,7 +546,8 @@ CLAIMS = [
         discussed_in=PAGE2,
     ),
     Claim(
-        id="KZL-c14-sequential",
+        id="KZL-sec3.4-sequential-update",
+        aliases=("KZL-c14-sequential",),
         paper="KZL",
         locator="Sec. 3.4",
         quantity="sequential processing gives the batch update without inverting the full innovation matrix",
@@ -597,7 +601,8 @@ CLAIMS = [
         discussed_in=PAGE2,
     ),
     Claim(
-        id="KZL-c1",
+        id="KZL-sec1-satellite-aircraft-speed-ratio",
+        aliases=("KZL-c1",),
         paper="KZL",
         locator="Sec. 1",
         quantity="satellite speed about 76 times the aircraft speed in the hybrid experiments",
@@ -614,7 +619,8 @@ CLAIMS = [
         discussed_in="kzl/index",
     ),
     Claim(
-        id="KZL-c6",
+        id="KZL-sec2.1-ins-drift-per-hour",
+        aliases=("KZL-c6",),
         paper="KZL",
         locator="Sec. 2.1",
         quantity="position error of a 50,000-100,000 $ INS without aiding, km per hour",
@@ -631,7 +637,8 @@ CLAIMS = [
         discussed_in="kzl/index",
     ),
     Claim(
-        id="KZL-c7",
+        id="KZL-sec2.1-four-measurements",
+        aliases=("KZL-c7",),
         paper="KZL",
         locator="Sec. 2.1",
         quantity="four or more simultaneous measurements are needed for 3-D position and clock bias",
@@ -645,7 +652,8 @@ CLAIMS = [
         discussed_in=PAGE2,
     ),
     Claim(
-        id="KZL-c15",
+        id="KZL-sec3.5-small-rotation-euler-angles",
+        aliases=("KZL-c15",),
         paper="KZL",
         locator="Sec. 3.5",
         quantity="for small rotations the rotation-vector components equal the Euler angles: largest entry "

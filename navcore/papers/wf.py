@@ -981,7 +981,8 @@ CLAIMS = [
         discussed_in=DOCS["II"],
     ),
     Claim(
-        id="WF-c1-additive",
+        id="WF-eq6-model-error-acts-like-noise",
+        aliases=("WF-c1-additive",),
         paper="WF",
         locator="Sec. II, after Eq. (6)",
         quantity="a signal-model error moves the estimate as much as the same measurement error (within 1 %)",
@@ -996,7 +997,8 @@ CLAIMS = [
     ),
     # Section III
     Claim(
-        id="WF-c2-position",
+        id="WF-sec3-tip-position-vs-range",
+        aliases=("WF-c2-position",),
         paper="WF",
         locator="Sec. III",
         quantity="wing-tip position perturbation relative to range",
@@ -1011,7 +1013,8 @@ CLAIMS = [
         discussed_in=DOCS["III"],
     ),
     Claim(
-        id="WF-c3-position-ins",
+        id="WF-sec3-tip-position-vs-ins",
+        aliases=("WF-c3-position-ins",),
         paper="WF",
         locator="Sec. III",
         quantity="wing-tip position perturbation relative to the best INS/GPS position accuracy",
@@ -1029,7 +1032,8 @@ CLAIMS = [
         discussed_in=DOCS["III"],
     ),
     Claim(
-        id="WF-c4-flexible-mode",
+        id="WF-sec3-flexible-mode-velocity",
+        aliases=("WF-c4-flexible-mode",),
         paper="WF",
         locator="Sec. III",
         quantity="aperture velocity amplitude of a first flexible mode of several hertz ('several m/s')",
@@ -1045,7 +1049,8 @@ CLAIMS = [
         discussed_in=DOCS["III"],
     ),
     Claim(
-        id="WF-c5-velocity-nominal",
+        id="WF-sec3-velocity-vs-nominal",
+        aliases=("WF-c5-velocity-nominal",),
         paper="WF",
         locator="Sec. III",
         quantity="velocity perturbation relative to the nominal velocity",
@@ -1059,7 +1064,8 @@ CLAIMS = [
         discussed_in=DOCS["III"],
     ),
     Claim(
-        id="WF-c6-velocity-ins",
+        id="WF-sec3-velocity-vs-ins",
+        aliases=("WF-c6-velocity-ins",),
         paper="WF",
         locator="Sec. III",
         quantity="velocity perturbation relative to the best INS/GPS velocity accuracy",
@@ -1101,7 +1107,8 @@ CLAIMS = [
         discussed_in=DOCS["III"],
     ),
     Claim(
-        id="WF-c7-ratio",
+        id="WF-eq9-velocity-position-ratio",
+        aliases=("WF-c7-ratio",),
         paper="WF",
         locator="Sec. III, after Eq. (9)",
         quantity="R / (2|v|), velocity-to-position sensitivity ratio",
@@ -1115,7 +1122,8 @@ CLAIMS = [
         discussed_in=DOCS["III"],
     ),
     Claim(
-        id="WF-c8-effective",
+        id="WF-eq9-velocity-error-dominates",
+        aliases=("WF-c8-effective",),
         paper="WF",
         locator="Sec. III, after Eq. (9)",
         quantity="a 1 m/s velocity error changes the modelled frequency at least 100 times as much as a "
@@ -1129,7 +1137,7 @@ CLAIMS = [
         note="'At least 100 times more effective', read with the exact gradients of Eqs. (8)-(9) over the "
         "Sec. III scenario (assumed speed, altitude and emitter distance: the paper gives none). The "
         "exact ratio is R/|v_perp| >= R/|v|, "
-        "so it holds on any track with R >= 100 s * |v|. The paper's own argument, R/(2|v|) (WF-c7-ratio), "
+        "so it holds on any track with R >= 100 s * |v|. The paper's own argument, R/(2|v|) (WF-eq9-velocity-position-ratio), "
         "falls short of 100 on this geometry. Through Eq. (6) the location-error leverage depends on the "
         "error: a constant vertical velocity error is mostly absorbed by the f0 estimate (page).",
         discussed_in=DOCS["III"],
@@ -1187,7 +1195,8 @@ CLAIMS = [
         discussed_in=DOCS["IV"],
     ),
     Claim(
-        id="WF-c11-outage",
+        id="WF-eq19-outage-infinite-covariance",
+        aliases=("WF-c11-outage",),
         paper="WF",
         locator="Sec. IV.C, after Eq. (19)",
         quantity="an outage is handled by setting its covariance to infinity",
@@ -1200,7 +1209,8 @@ CLAIMS = [
         discussed_in=DOCS["IV"],
     ),
     Claim(
-        id="WF-c12-wls",
+        id="WF-eq19-weighted-least-squares",
+        aliases=("WF-c12-wls",),
         paper="WF",
         locator="Sec. IV.C, after Eq. (19)",
         quantity="Eq. (18) is the solution of a weighted least-squares cost",
@@ -1327,7 +1337,8 @@ CLAIMS = [
         discussed_in=DOCS["IVD"],
     ),
     Claim(
-        id="WF-c13-sigmaG",
+        id="WF-sec4d-sigma-g-from-gps-doppler",
+        aliases=("WF-c13-sigmaG",),
         paper="WF",
         locator="Sec. IV.D",
         quantity="sigma_G = 1 Hz is consistent with the GPS velocity accuracy from Doppler: the Doppler "
@@ -1346,7 +1357,8 @@ CLAIMS = [
         discussed_in=DOCS["IVD"],
     ),
     Claim(
-        id="WF-c13-sigmaL-high-res",
+        id="WF-sec4d-sigma-l-high-resolution",
+        aliases=("WF-c13-sigmaL-high-res",),
         paper="WF",
         locator="Sec. IV.D",
         quantity="sigma_L = 200 sigma_a at sigma_a = 10 um/s^2",
@@ -1361,7 +1373,8 @@ CLAIMS = [
         discussed_in=DOCS["IVD"],
     ),
     Claim(
-        id="WF-c13-sigmaL-medium-res",
+        id="WF-sec4d-sigma-l-medium-resolution",
+        aliases=("WF-c13-sigmaL-medium-res",),
         paper="WF",
         locator="Sec. IV.D",
         quantity="sigma_L = 200 sigma_a at sigma_a = 10 mm/s^2",
@@ -1396,7 +1409,8 @@ CLAIMS = [
         discussed_in=DOCS["IVD"],
     ),
     Claim(
-        id="WF-c14-60dB",
+        id="WF-fig1-improvement-at-100ug",
+        aliases=("WF-c14-60dB",),
         paper="WF",
         locator="Sec. IV.D, Fig. 1",
         quantity="improvement with a 100 ug accelerometer at sigma_T = 2 m/s",
@@ -1411,7 +1425,8 @@ CLAIMS = [
         discussed_in=DOCS["IVD"],
     ),
     Claim(
-        id="WF-c15-factor",
+        id="WF-sec4d-improvement-factor",
+        aliases=("WF-c15-factor",),
         paper="WF",
         locator="Sec. IV.D",
         quantity="accuracy improvement factor sigma_DN / sigma_D at 100 ug, sigma_T = 2 m/s",
@@ -1427,7 +1442,8 @@ CLAIMS = [
         discussed_in=DOCS["IVD"],
     ),
     Claim(
-        id="WF-c15-sigmaD",
+        id="WF-sec4d-fused-velocity-accuracy",
+        aliases=("WF-c15-sigmaD",),
         paper="WF",
         locator="Sec. IV.D",
         quantity="improved local velocity accuracy at 100 ug, sigma_T = 2 m/s",
@@ -1441,7 +1457,8 @@ CLAIMS = [
         discussed_in=DOCS["IVD"],
     ),
     Claim(
-        id="WF-c17-unfiltered",
+        id="WF-sec4d-unfiltered-velocity-accuracy",
+        aliases=("WF-c17-unfiltered",),
         paper="WF",
         locator="Sec. IV.D",
         quantity="local velocity accuracy without filtering at 100 ug",
@@ -1490,7 +1507,8 @@ CLAIMS = [
         discussed_in=DOCS["IVD"],
     ),
     Claim(
-        id="WF-c18-gps-little",
+        id="WF-fig2-gps-adds-little",
+        aliases=("WF-c18-gps-little",),
         paper="WF",
         locator="Sec. IV.D, Fig. 2",
         quantity="GPS adds less than 1 dB to the accelerometer over the stated range",
@@ -1504,7 +1522,8 @@ CLAIMS = [
         discussed_in=DOCS["IVD"],
     ),
     Claim(
-        id="WF-c19-gps-noticeable",
+        id="WF-sec4d-gps-noticeable-only-when-severe",
+        aliases=("WF-c19-gps-noticeable",),
         paper="WF",
         locator="Sec. IV.D",
         quantity="GPS is noticeable only with severe sigma_T, a poor accelerometer and 3 satellites",
@@ -1519,7 +1538,8 @@ CLAIMS = [
         discussed_in=DOCS["IVD"],
     ),
     Claim(
-        id="WF-c20-three-vs-one",
+        id="WF-fig2-three-vs-one-satellite",
+        aliases=("WF-c20-three-vs-one",),
         paper="WF",
         locator="Sec. IV.D, Fig. 2",
         quantity="3 satellites virtually identical to 1 at sigma_T = 0: largest difference of the two "

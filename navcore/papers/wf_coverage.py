@@ -226,7 +226,8 @@ CLAIMS = [
         discussed_in=PAGE_IV,
     ),
     Claim(
-        id="WF-c21-50Hz",
+        id="WF-fig1-update-rate-50hz",
+        aliases=("WF-c21-50Hz",),
         paper="WF",
         locator="Sec. IV.D, axis label of Figs. 1-2",
         quantity="the '50 Hz measurement update rate' of the axis label is 1/T_s of the parameter list",
@@ -240,7 +241,8 @@ CLAIMS = [
         discussed_in=PAGE,
     ),
     Claim(
-        id="WF-c22-mems-sensitive",
+        id="WF-sec4d-mems-ten-times-more-sensitive",
+        aliases=("WF-c22-mems-sensitive",),
         paper="WF",
         locator="Sec. IV.D, after Fig. 2",
         quantity="MEMS devices an order of magnitude more sensitive than 100 ug: 100 ug over the "
@@ -258,7 +260,8 @@ CLAIMS = [
         discussed_in=PAGE,
     ),
     Claim(
-        id="WF-c23-negligible",
+        id="WF-sec5-aperture-errors-negligible",
+        aliases=("WF-c23-negligible",),
         paper="WF",
         locator="Sec. V",
         quantity="the processing reduces the aperture errors' impact to a negligible level: the fused bound "
