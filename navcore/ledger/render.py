@@ -480,8 +480,10 @@ def _details_html(details: dict[str, str]) -> str:
 
 
 def _details_tex(details: dict[str, str]) -> str:
+    """The details in one run of text; the printed table leaves out the inputs (the
+    Assumptions page and the ledger's JSON list them) to stay compact."""
     parts = []
-    for k in _DETAIL_FIELDS:
+    for k in _DETAIL_FIELDS[:-1]:
         if details.get(k):
             label = _DETAIL_LABELS[k]
             text = tex_text(details[k])
@@ -649,7 +651,7 @@ class LedgerTable:
             header = r"\textbf{" + tex_text(g.heading) + "}"
             if self.show_notes and g.shared:
                 header += r"\newline{}{\scriptsize " + _details_tex(g.shared) + "}"
-            out.append(rf"{full}{{{header}}} \\*")
+            out.append(rf"\rowcolor[HTML]{{F1F3F5}}{full}{{{header}}} \\*")
             for index, e in enumerate(g.evals):
                 c = e.claim
                 what = tex_text(c.quantity)
@@ -674,7 +676,8 @@ class LedgerTable:
                     verdict,
                 ]
                 last = index == len(g.evals) - 1
-                out.append(" & ".join(cells) + (r" \\ \hline" if last else r" \\"))
+                rule = r"\hline" if last else r"\arrayrulecolor{black!25}\hline\arrayrulecolor{black}"
+                out.append(" & ".join(cells) + r" \\ " + rule)
         out += [r"\end{longtable}", r"\endgroup"]
         return "\n".join(out)
 
