@@ -789,10 +789,12 @@ ERRATA = [
         id="ATC10-E4.9-typos",
         paper="ATC10",
         locator="Sec. 4.5.2, after (4.5.9); (4.3.0); (4.5.3)-(4.5.4); Sec. 4.5.3; (4.5.37)",
-        printed="tau_n = sum_{i<=n} w_i + alpha_0 (and smaller slips: (1/tau^2) mn, a stray 1 in (4.5.3), "
-        "sigma_gamma^2 for sigma^2 gamma, (4.5.37) citing (4.5.30))",
-        finding="(4.5.9) implies tau_n + alpha_n = alpha_0, hence tau_n = n alpha_0 + sum w_i; the printed "
-        "form has variance sigma0^2 (n + 1), not the sigma0^2 (n + n^2) of (4.3.1c)",
+        printed="$\\tau_n = \\sum_{i \\le n} w_i + \\alpha_0$ (and smaller slips: $(1/\\tau^2)\\, mn$, a "
+        "stray 1 in (4.5.3), "
+        "$\\sigma_\\gamma^2$ for $\\sigma^2 \\gamma$, (4.5.37) citing (4.5.30))",
+        finding="(4.5.9) implies $\\tau_n + \\alpha_n = \\alpha_0$, hence $\\tau_n = n \\alpha_0 + \\sum "
+        "w_i$; the printed "
+        "form has variance $\\sigma_0^2 (n + 1)$, not the $\\sigma_0^2 (n + n^2)$ of (4.3.1c)",
         evidence="exact propagation of (4.5.9) reproduces (4.3.1b) (ATC10-sec4.5.2-state-model); a Monte "
         "Carlo of the printed sum gives the (n + 1) variance",
         claims=("ATC10-sec4.5.2-tau-sum-printed",),
@@ -803,9 +805,11 @@ ERRATA = [
         paper="ATC10",
         locator="Sec. 4.5.4 ('the second term in (4.5.35) always significantly dominates the first term')",
         printed="the second term always significantly dominates, so tracking reduces Var to about psi Var0",
-        finding="after tracking, gamma S = (psi/beta) S is smaller than tr{(F'F)^-1} in Example I at "
-        "sigma0 = 5 ns (2.38 against 7.84), so Var[||xi_pN||] / (psi Var[||xi_p0||]) is 3.2, not about 1; "
-        "the dominance holds at n = 0 (S/beta = 23.9 against 7.84), not 'always'",
+        finding="after tracking, $\\gamma S = (\\psi/\\beta) S$ is smaller than "
+        "$\\operatorname{tr}\\{(F'F)^{-1}\\}$ in Example I at "
+        "$\\sigma_0$ = 5 ns (2.38 against 7.84), so $\\mathrm{Var}[\\|\\xi_{pN}\\|] / (\\psi "
+        "\\mathrm{Var}[\\|\\xi_{p0}\\|])$ is 3.2, not about 1; "
+        "the dominance holds at n = 0 ($S/\\beta$ = 23.9 against 7.84), not 'always'",
         evidence="Table 4.2 and 4.3 values with psi from the real root of the cubic (independent of the "
         "closed form)",
         claims=("ATC10-sec4.5.4-second-term-dominates", "ATC10-sec4.5.4-psi-approx-exI-s5"),

@@ -168,7 +168,8 @@ CLAIMS = [
         "bias (360 deg/h) as a random constant: about 18 deg across the band. Exceeding 20 deg "
         "would need an initial heading uncertainty of about 9 deg (1-sigma) instead of the assumed "
         "0.1-1 deg, or a gyro bias above 400 deg/h (KZL-E7; the closed form sqrt((b t)^2 + N^2 t + "
-        "sigma0^2) agrees to 0.1 %). The Monte Carlo RMS is KZL-sec3.6-heading-without-init. Verdict changed from "
+        "sigma0^2) agrees to 0.1 %). The Monte Carlo RMS is KZL-sec3.6-heading-without-init. Verdict changed "
+        "from "
         "discrepant: the claim reads an assumed input whose range is not every admissible value.",
         erratum="KZL-E7-uncalibrated-heading",
         discussed_in=PAGE3,

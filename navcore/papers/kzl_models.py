@@ -326,10 +326,11 @@ ERRATA = [
         id="KZL-E1-levelling-sign",
         paper="KZL",
         locator="Eqs. (2)-(3)",
-        printed="theta = arctan(-a_x / sqrt(a_y^2 + a_z^2)), phi = arctan2(a_y / a_z)",
+        printed="$\\theta = \\arctan(-a_x / \\sqrt{a_y^2 + a_z^2})$, $\\phi = \\mathrm{arctan2}(a_y / a_z)$",
         finding="With a = the specific force of Eq. (8) (a level IMU measures [0, 0, -g] in NED body "
-        "axes) the printed pair returns roll = 180 deg for a level aircraft. It is right for a = -f; "
-        "for the specific force: theta = arctan(f_x / sqrt(f_y^2 + f_z^2)), phi = atan2(-f_y, -f_z).",
+        "axes) the printed pair returns roll = 180 deg for a level aircraft. It is right for $a = -f$; "
+        "for the specific force: $\\theta = \\arctan(f_x / \\sqrt{f_y^2 + f_z^2})$, $\\phi = "
+        "\\mathrm{atan2}(-f_y, -f_z)$.",
         evidence="navcore.inertial.alignment.levelling_as_printed on f = [0, 0, -g]; round trip on "
         "random attitudes built with scipy's Rotation (tests/test_strapdown.py).",
         claims=("KZL-eq2-3-levelling",),
@@ -339,9 +340,10 @@ ERRATA = [
         id="KZL-E2-time-invariant",
         paper="KZL",
         locator="Eq. (5), preceding text",
-        printed="in case of a time-variant system the state transition is described as A(k) = e^{FT}",
-        finding="The chain A = e^{FT} = L^-1{(sI - F)^-1} holds for a time-invariant F (or F frozen "
-        "over T). For the simplified model F is nilpotent (F^4 = 0), so the series ends at (FT)^3/6.",
+        printed="in case of a time-variant system the state transition is described as $A(k) = e^{FT}$",
+        finding="The chain $A = e^{FT} = \\mathcal{L}^{-1}\\{(sI - F)^{-1}\\}$ holds for a time-invariant "
+        "$F$ (or $F$ frozen "
+        "over $T$). For the simplified model $F$ is nilpotent ($F^4 = 0$), so the series ends at $(FT)^3/6$.",
         evidence="scipy.linalg.expm against the cubic polynomial at the Table 1 attitude.",
         claims=("KZL-eq5-series",),
         discussed_in=PAGE1,
@@ -350,10 +352,12 @@ ERRATA = [
         id="KZL-E3-skew-notation",
         paper="KZL",
         locator="Eq. (11)",
-        printed="F23 = [a x] = [[0, a_d, -a_e], [-a_d, 0, a_n], [a_e, -a_n, 0]]",
-        finding="The explicit matrix is minus the usual cross-product matrix: [a x]_paper b = b x a. "
-        "The explicit matrix is the right F23 for error = estimated - true and "
-        "R_hat = (I + [dpsi x]) R; reading the bracket as the standard skew flips the sign of F23 "
+        printed="$F_{23} = [a \\times] = [[0, a_d, -a_e], [-a_d, 0, a_n], [a_e, -a_n, 0]]$",
+        finding="The explicit matrix is minus the usual cross-product matrix: $[a "
+        "\\times]_{\\text{paper}}\\, b = b \\times a$. "
+        "The explicit matrix is the right $F_{23}$ for error = estimated - true and "
+        "$\\hat{R} = (I + [\\delta\\psi \\times]) R$; reading the bracket as the standard skew flips the "
+        "sign of $F_{23}$ "
         "and of the DD rows of Eq. (17).",
         evidence="Finite differences of the nonlinear velocity-error rate (tests/test_error_model17.py).",
         claims=("KZL-eq11-bracket",),
@@ -366,7 +370,8 @@ ERRATA = [
         printed="R is a frame rotation matrix for the transformation from body-axes angular rates to "
         "the Euler angle angular rates",
         finding="The Jacobian of the Euler angles with respect to the n-frame attitude error is "
-        "J_b^-1(phi, theta) R_n^b, not J_b^-1 alone. At the Table 1 attitude (heading 90 deg) they "
+        "$J_b^{-1}(\\phi, \\theta)\\, R_n^b$, not $J_b^{-1}$ alone. At the Table 1 attitude (heading 90 deg) "
+        "they "
         "differ by swapping north/east tilt into roll/pitch.",
         evidence="Central finite differences of euler_from_dcm(expm([dpsi x]) R).",
         claims=("KZL-eq13-R", "KZL-sec3.5-small-rotation-euler-angles"),
@@ -376,12 +381,13 @@ ERRATA = [
         id="KZL-E5-dd-typos",
         paper="KZL",
         locator="Eqs. (1), (10), (14), (17)",
-        printed="Eq. (17): both DD rows use l_02 and rows 2 and 4 have an extra 0^T block; Eq. (14) lists "
-        "rho^(n) twice; Eq. (10) says O is the identity and I the zero matrix; Eq. (1)'s compact "
-        "form drops dpsi, db_w and the clock",
-        finding="The first DD row uses l_01; Eq. (14) has 6 rows for two satellites, matching "
-        "2 + 4 (nu - 1); O is the zero and I the identity matrix.",
-        evidence="Row counts from the builders in navcore.gnss.carrier_phase; with l_02 in both rows "
+        printed="Eq. (17): both DD rows use $l_{02}$ and rows 2 and 4 have an extra $0^T$ block; Eq. (14) "
+        "lists "
+        "$\\rho^{(n)}$ twice; Eq. (10) says O is the identity and I the zero matrix; Eq. (1)'s compact "
+        "form drops $\\delta\\psi$, $\\delta b_\\omega$ and the clock",
+        finding="The first DD row uses $l_{01}$; Eq. (14) has 6 rows for two satellites, matching "
+        "$2 + 4 (\\nu - 1)$; O is the zero and I the identity matrix.",
+        evidence="Row counts from the builders in navcore.gnss.carrier_phase; with $l_{02}$ in both rows "
         "the DD attitude block of one satellite pair has rank 1 instead of 2.",
         claims=("KZL-eq17-printed-rank",),
         discussed_in=PAGE2,
@@ -390,8 +396,9 @@ ERRATA = [
         id="KZL-E6-quaternion-order",
         paper="KZL",
         locator="Sec. 3.5, attitude correction",
-        printed="q_b^{n,+} = q_b^{n,-} (x) q^n with the n-frame rotation quaternion q^n of phi = -dpsi",
-        finding="An n-frame rotation multiplies q_b^n from the left: q^{n,+} = q^n (x) q^{n,-}. The "
+        printed="$q_b^{n,+} = q_b^{n,-} \\otimes q^n$ with the n-frame rotation quaternion $q^n$ of $\\phi = "
+        "-\\delta\\psi$",
+        finding="An n-frame rotation multiplies $q_b^n$ from the left: $q^{n,+} = q^n \\otimes q^{n,-}$. The "
         "printed order rotates about body axes; at the Table 1 heading of 90 deg a 2.29 deg "
         "error leaves a 1.58 deg residual.",
         evidence="navcore.estimation.ekf_ins_gnss.correct_attitude both ways, checked with scipy's "

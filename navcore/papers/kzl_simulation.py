@@ -155,7 +155,8 @@ ERRATA = [
         "RMS, below 20 deg; exceeding 20 deg needs a bias above about 400 deg/h or an extra "
         "initial heading error.",
         evidence="Seeded 100 Hz Monte Carlo without initialisation and the linear covariance "
-        "engine of SP Sec. 2.6, both against the closed form sqrt((b t)^2 + N^2 t + sigma0^2) = 18.0 deg.",
+        "engine of SP Sec. 2.6, both against the closed form $\\sqrt{(b t)^2 + N^2 t + \\sigma_0^2}$ = 18.0 "
+        "deg.",
         claims=("KZL-sec3.6-heading-without-init", "KZL-sec3.6-heading-without-init-covariance"),
         discussed_in=PAGE3,
     ),

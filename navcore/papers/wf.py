@@ -848,9 +848,9 @@ ERRATA = [
         id="WF-E1-eq13-innovation",
         paper="WF",
         locator="Eq. (13)",
-        printed="x_DL(k/k) = x_DL(k/k-1) + K_DL(k)[y_a(k) - x_DL(k/k-1)]",
-        finding="The innovation must be y_L(k) - x_DL(k/k-1): the local velocity measurement of "
-        "Eq. (12), not the acceleration y_a.",
+        printed="$x_{DL}(k/k) = x_{DL}(k/k-1) + K_{DL}(k)[y_a(k) - x_{DL}(k/k-1)]$",
+        finding="The innovation must be $y_L(k) - x_{DL}(k/k-1)$: the local velocity measurement of "
+        "Eq. (12), not the acceleration $y_a$.",
         evidence="Dimensional analysis (acceleration minus velocity) and a seeded simulation of the "
         "printed recursion, whose error departs from the Eq. (14) covariance; the corrected filter "
         "matches filterpy's Kalman filter (tests/test_federated.py).",
@@ -861,10 +861,10 @@ ERRATA = [
         id="WF-E2-eq24-PN",
         paper="WF",
         locator="Eq. (24)",
-        printed="P_N P_N^T = sigma_N^2 I",
-        finding="Should read tau P_N tau^T = sigma_N^2 I, the term that enters Eq. (11); then "
-        "sigma_DN^2 = sigma_N^2 + sigma_T^2.",
-        evidence="Units: P_N P_N^T is in (m/s)^4; the literal reading makes sigma_DN depend on the "
+        printed="$P_N P_N^T = \\sigma_N^2 I$",
+        finding="Should read $\\tau P_N \\tau^T = \\sigma_N^2 I$, the term that enters Eq. (11); then "
+        "$\\sigma_{DN}^2 = \\sigma_N^2 + \\sigma_T^2$.",
+        evidence="Units: $P_N P_N^T$ is in (m/s)$^4$; the literal reading makes $\\sigma_{DN}$ depend on the "
         "velocity unit. Only the corrected reading reproduces the 60 dB statement of Sec. IV.D.",
         claims=("WF-eq24-PN",),
         discussed_in=DOCS["IVD"],
@@ -873,9 +873,9 @@ ERRATA = [
         id="WF-E3-eq20-PNG",
         paper="WF",
         locator="Eq. (20)",
-        printed="row 2 of the joint covariance: [P_LN, P_DL, P_NG]",
-        finding="The (2, 3) block is the L-G cross-covariance P_LG; with P_NG the matrix is not a "
-        "covariance of the stacked errors (it is not symmetric: block (3, 2) is P_GL).",
+        printed="row 2 of the joint covariance: $[P_{LN}, P_{DL}, P_{NG}]$",
+        finding="The (2, 3) block is the L-G cross-covariance $P_{LG}$; with $P_{NG}$ the matrix is not a "
+        "covariance of the stacked errors (it is not symmetric: block (3, 2) is $P_{GL}$).",
         evidence="Symmetry of the printed matrix and a seeded Monte Carlo of the stacked errors.",
         claims=("WF-eq20-PNG",),
         discussed_in=DOCS["IV"],
@@ -886,7 +886,7 @@ ERRATA = [
         locator="Remark (ii) after the Theorem",
         printed="The upper bound tends to be exact ... when the estimation errors of all processors "
         "are completely correlated.",
-        finding="True when the weighted errors P_D P_i^-1 e_i are parallel (isotropic or commuting "
+        finding="True when the weighted errors $P_D P_i^{-1} e_i$ are parallel (isotropic or commuting "
         "covariances, the Sec. IV.D case); for general, non-commuting covariances the bound stays "
         "conservative even with completely correlated errors.",
         evidence="Exact covariance (Eq. (20)) and a seeded Monte Carlo for a completely correlated "
@@ -898,8 +898,8 @@ ERRATA = [
         id="WF-E5-fL1c-truncated",
         paper="WF",
         locator="Sec. IV.D, parameter list",
-        printed="f_o^L1 / c = 5.25 m^-1",
-        finding="1575.42 MHz / 299 792 458 m/s = 5.2550 m^-1, 5.26 to three digits: the printed value is "
+        printed="$f_o^{L1} / c$ = 5.25 m$^{-1}$",
+        finding="1575.42 MHz / 299 792 458 m/s = 5.2550 m$^{-1}$, 5.26 to three digits: the printed value is "
         "truncated, 0.1 % low. Immaterial for Figs. 1-2 (the book uses the exact ratio).",
         evidence="L1 = 154 x 10.23 MHz (the GPS fundamental frequency) over the defined speed of light.",
         claims=("WF-eq25-fL1c",),
@@ -1137,7 +1137,8 @@ CLAIMS = [
         note="'At least 100 times more effective', read with the exact gradients of Eqs. (8)-(9) over the "
         "Sec. III scenario (assumed speed, altitude and emitter distance: the paper gives none). The "
         "exact ratio is R/|v_perp| >= R/|v|, "
-        "so it holds on any track with R >= 100 s * |v|. The paper's own argument, R/(2|v|) (WF-eq9-velocity-position-ratio), "
+        "so it holds on any track with R >= 100 s * |v|. The paper's own argument, R/(2|v|) "
+        "(WF-eq9-velocity-position-ratio), "
         "falls short of 100 on this geometry. Through Eq. (6) the location-error leverage depends on the "
         "error: a constant vertical velocity error is mostly absorbed by the f0 estimate (page).",
         discussed_in=DOCS["III"],
