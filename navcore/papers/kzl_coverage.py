@@ -370,15 +370,15 @@ CLAIMS = [
         id="KZL-eq6-first-order",
         paper="KZL",
         locator="Eq. (6)",
-        quantity="A approx I + FT: 180 s stand-alone north-position sigma with the first-order "
-        "transition over that with e^{FT}, at the Table 1 GPS interval",
+        quantity="$A \\approx I + FT$: 180 s stand-alone north-position sigma with the first-order "
+        "transition over that with $e^{FT}$, at the Table 1 GPS interval",
         published=1.0,
         unit="",
         compute=eq6_position_ratio,
         tolerance=_approx,
         expected_status="consistent",
         note="Covariance propagation of the 17-state model over the Table 1 flight at T = 1 s; the "
-        "first-order noise Q_d = G Q G^T T goes with Eq. (6).",
+        "first-order noise $Q_d = G Q G^T T$ goes with Eq. (6).",
         discussed_in=PAGE1,
     ),
     Claim(
@@ -456,7 +456,7 @@ CLAIMS = [
         paper="KZL",
         locator="Eq. (17)",
         quantity="rank of the two DD attitude rows of Eq. (17) for one satellite pair as printed (both "
-        "rows with l_02); two baselines should give two independent rows",
+        "rows with $l_{02}$); two baselines should give two independent rows",
         published=2,
         unit="",
         kind="reproduction",
@@ -474,7 +474,7 @@ CLAIMS = [
         id="KZL-eq17-rank",
         paper="KZL",
         locator="Eq. (17)",
-        quantity="rank of the DD attitude rows with l_01 and l_02 (corrected Eq. (17))",
+        quantity="rank of the DD attitude rows with $l_{01}$ and $l_{02}$ (corrected Eq. (17))",
         published=2,
         unit="",
         compute=eq17_corrected_rank,

@@ -500,20 +500,20 @@ CLAIMS = [
         id="KZL-eq5-series",
         paper="KZL",
         locator="Eq. (5)",
-        quantity="e^{FT} = I + FT + (FT)^2/2 + h.o.t. for the 17-state F",
+        quantity="$e^{FT} = I + FT + (FT)^2/2 + \\ldots$ for the 17-state $F$",
         published=True,
         unit="statement",
         compute=series_terminates,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="F is nilpotent (F^4 = 0): the series ends at (FT)^3/6 and equals scipy's expm to 1e-12.",
+        note="$F$ is nilpotent ($F^4 = 0$): the series ends at $(FT)^3/6$ and equals scipy's expm to 1e-12.",
         discussed_in=PAGE1,
     ),
     Claim(
         id="KZL-dim13",
         paper="KZL",
         locator="Sec. 3.4, after Eq. (13)",
-        quantity="rows of the observation matrix with redundant attitude = 3 + 2 nu (nu = 1..8)",
+        quantity="rows of the observation matrix with redundant attitude = $3 + 2\\nu$ ($\\nu$ = 1..8)",
         published=True,
         unit="statement",
         compute=_row_counts_eq13,
@@ -526,7 +526,7 @@ CLAIMS = [
         id="KZL-dim17",
         paper="KZL",
         locator="Sec. 3.4, before Eq. (17)",
-        quantity="rows of the DD observation matrix = 2 + 4 (nu - 1) (nu = 1..8)",
+        quantity="rows of the DD observation matrix = $2 + 4 (\\nu - 1)$ ($\\nu$ = 1..8)",
         published=True,
         unit="statement",
         compute=_row_counts_eq17,
@@ -541,7 +541,7 @@ CLAIMS = [
         aliases=("KZL-c12-observability",),
         paper="KZL",
         locator="Sec. 3.1",
-        quantity="complete observability only with redundant attitude information, depending on nu",
+        quantity="complete observability only with redundant attitude information, depending on $\\nu$",
         published=True,
         unit="statement",
         compute=_complete_only_with_attitude,
@@ -579,7 +579,8 @@ CLAIMS = [
         compute=printed_R_block_error,
         tolerance=EXACT,
         expected_status="discrepant",
-        note="At heading 90 deg the true block is J_b^-1 R_n^b, a north/east swap of J_b^-1 = I: entries "
+        note="At heading 90 deg the true block is $J_b^{-1} R_n^b$, a north/east swap of $J_b^{-1} = I$: "
+        "entries "
         "differ by 1. Was the truth value 'R is the attitude block'; now the difference itself.",
         erratum="KZL-E4-euler-rows",
         oracle=_printed_R_block_oracle,
@@ -592,7 +593,8 @@ CLAIMS = [
         id="KZL-qcorr",
         paper="KZL",
         locator="Sec. 3.5",
-        quantity="attitude error left by q+ = q- (x) q^n (right product) after an estimated (1, -0.5, 2) deg "
+        quantity="attitude error left by $q^+ = q^- \\otimes q^n$ (right product) after an estimated (1, "
+        "-0.5, 2) deg "
         "n-frame error, at the Table 1 attitude",
         published=0.0,
         unit="deg",
@@ -619,7 +621,8 @@ CLAIMS = [
         compute=satellite_to_aircraft_speed,
         tolerance=prose("about"),
         expected_status="consistent",
-        note="Circular-orbit speed sqrt(mu / (R + h)) of TerraSAR-X (7.6 km/s at the assumed 514 km) over "
+        note="Circular-orbit speed $\\sqrt{\\mu / (R + h)}$ of TerraSAR-X (7.6 km/s at the assumed 514 km) "
+        "over "
         "the assumed aircraft speed; the paper gives neither. 76x means about 100 m/s; Table 1's "
         "110 m/s would give 69x. Verdict changed from not-reproducible: the book computes it under "
         "stated assumptions.",
@@ -654,7 +657,7 @@ CLAIMS = [
         compute=_geometry_rank_is_min_nu_4,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="Rank of the pseudorange geometry matrix [-l^T 1] is min(nu, 4) for the first nu "
+        note="Rank of the pseudorange geometry matrix $[-l^T\\ 1]$ is $\\min(\\nu, 4)$ for the first $\\nu$ "
         "satellites of the simulation's sky.",
         discussed_in=PAGE2,
     ),

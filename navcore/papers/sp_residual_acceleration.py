@@ -303,7 +303,8 @@ CLAIMS = [
         id="SP-eq2.u7-worked-example",
         paper="SP",
         locator="Sec. 2.5, worked example after Table 2.6",
-        quantity="aided natural frequency of the 10 nmi/h system, sqrt(0.011 g / 6 g) x 18 rad/s",
+        quantity="aided natural frequency of the 10 nmi/h system, $\\sqrt{0.011\\,\\mathrm{g} / "
+        "6\\,\\mathrm{g}} \\times 18$ rad/s",
         published=_w077[0],
         unit="rad/s",
         kind="cross-check",
@@ -324,7 +325,8 @@ CLAIMS = [
         compute=right_factor_is_transpose,
         tolerance=EXACT,
         expected_status="consistent",
-        note="<da da^T> = H P H^T with the middle factor a 6x6 block matrix written in 2x2 shorthand; a "
+        note="$\\langle \\delta a\\, \\delta a^T \\rangle = H P H^T$ with the middle factor a 6x6 block "
+        "matrix written in 2x2 shorthand; a "
         "check of the two printed matrices against each other. Verdict changed from reproduced: a "
         "cross-check.",
     ),

@@ -194,7 +194,8 @@ CLAIMS = [
         compute=lambda: peak_deg(IN.foot_per_cycle_m),
         tolerance=_peak90[1],
         expected_status="consistent",
-        note="Corrected closed form (exponent -w0 t/2), peak 0.404453 R/w0^2, with the conversion fitted "
+        note="Corrected closed form (exponent $-\\omega_0 t/2$), peak $0.404453\\, R/\\omega_0^2$, with the "
+        "conversion fitted "
         "to this printed pair (90 deg at 17.67 rad/s): 360 deg per 0.3048 m. Not evidence. The stated "
         "300-m code length and the L1 carrier do not reproduce it (see the two discrepant claims and "
         "erratum SP-E-phase-conversion). Verdict changed from reproduced: the conversion is a fit.",
@@ -210,7 +211,8 @@ CLAIMS = [
         compute=lambda: natural_frequency_for_peak_error(step_deg_s2(IN.foot_per_cycle_m), IN.peak_limit_deg),
         tolerance=_omega[1],
         expected_status="consistent",
-        note="w0 = sqrt(f_max R / 90 deg) with R = 6 g in deg/s^2 at the fitted 360 deg per foot (fitted to "
+        note="$\\omega_0 = \\sqrt{f_{\\max} R / 90\\,\\mathrm{deg}}$ with R = 6 g in deg/s^2 at the fitted "
+        "360 deg per foot (fitted to "
         "this claim and SP-fig2.1-peak; not evidence). With the L1 carrier the same requirement gives "
         "22.37 rad/s. Verdict changed from reproduced: the conversion is a fit.",
     ),

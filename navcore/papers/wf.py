@@ -1148,8 +1148,8 @@ CLAIMS = [
         id="WF-eq13-innovation",
         paper="WF",
         locator="Eq. (13)",
-        quantity="the printed filter (innovation y_a - x) attains the Eq. (14) covariance: its RMS error "
-        "over sqrt(P_DL(k/k))",
+        quantity="the printed filter (innovation $y_a - x$) attains the Eq. (14) covariance: its RMS error "
+        "over $\\sqrt{P_{DL}(k/k)}$",
         published=1.0,
         unit="",
         kind="reproduction",
@@ -1164,7 +1164,8 @@ CLAIMS = [
             rel=0.02, reason="the oracle leaves out the accelerometer noise (below 1 % here)", policy="exact"
         ),
         note="Seeded simulation of the printed recursion (200 paths, 5000 steps, sigma_a = 1e-3 m/s^2, a "
-        "0.5 m/s^2 manoeuvre): its error is about 80 times sqrt(P_DL(k/k)), because the printed innovation "
+        "0.5 m/s^2 manoeuvre): its error is about 80 times $\\sqrt{P_{DL}(k/k)}$, because the printed "
+        "innovation "
         "subtracts a velocity from an acceleration (the estimate follows the acceleration). Oracle: the "
         "same recursion as a linear filter, noise-free, by scipy. Was the truth value 'attains Eq. (14)'; "
         "now the ratio itself.",
@@ -1174,7 +1175,7 @@ CLAIMS = [
         id="WF-eq20-PNG",
         paper="WF",
         locator="Eq. (20)",
-        quantity="the printed joint matrix (block (2,3) = P_NG) is the covariance of the stacked errors: "
+        quantity="the printed joint matrix (block (2,3) = $P_{NG}$) is the covariance of the stacked errors: "
         "largest difference of its block (2,3) from the L-G cross-covariance, relative to the largest entry",
         published=0.0,
         unit="",
@@ -1220,7 +1221,8 @@ CLAIMS = [
         compute=_fusion_is_wls,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="The gradient of sum (x - x_i)' P_i^-1 (x - x_i) vanishes at the fused estimate. The proof "
+        note="The gradient of $\\sum (x - x_i)' P_i^{-1} (x - x_i)$ vanishes at the fused estimate. The "
+        "proof "
         "in [7] is not available; the minimum-variance reading holds for uncorrelated local errors.",
         discussed_in=DOCS["IV"],
     ),
@@ -1260,7 +1262,7 @@ CLAIMS = [
         id="WF-rem1-weights",
         paper="WF",
         locator="Remark (i)",
-        quantity="k_i = sum_j sqrt(sigma_j)/sqrt(sigma_i) is feasible",
+        quantity="$k_i = \\sum_j \\sqrt{\\sigma_j}/\\sqrt{\\sigma_i}$ is feasible",
         published=True,
         unit="statement",
         compute=_remark1_any_sigma,
@@ -1322,7 +1324,7 @@ CLAIMS = [
         id="WF-eq25-fL1c",
         paper="WF",
         locator="Sec. IV.D",
-        quantity="f_L1 / c",
+        quantity="$f_{L1} / c$",
         published=_fl1,
         unit="1/m",
         compute=f_l1_over_c,
@@ -1331,7 +1333,7 @@ CLAIMS = [
         erratum="WF-E5-fL1c-truncated",
         oracle=lambda: 154 * 10.23e6 / 299_792_458.0,
         oracle_tolerance=printed("5.2550")[1],
-        note="1575.42 MHz / 299 792 458 m/s = 5.2550 m^-1, which rounds to 5.26; the printed 5.25 is "
+        note="1575.42 MHz / 299 792 458 m/s = 5.2550 m$^{-1}$, which rounds to 5.26; the printed 5.25 is "
         "truncated (0.1 % low; no effect on the figures). Oracle: L1 = 154 x 10.23 MHz over c. "
         "Verdict changed from consistent: the tolerance had an allowance for the truncation, which the "
         "printed-digits policy does not grant.",
@@ -1342,7 +1344,7 @@ CLAIMS = [
         aliases=("WF-c13-sigmaG",),
         paper="WF",
         locator="Sec. IV.D",
-        quantity="sigma_G = 1 Hz is consistent with the GPS velocity accuracy from Doppler: the Doppler "
+        quantity="$\\sigma_G$ = 1 Hz is consistent with the GPS velocity accuracy from Doppler: the Doppler "
         "noise equivalent to that accuracy per line of sight",
         published=_sg,
         unit="Hz",
@@ -1362,7 +1364,7 @@ CLAIMS = [
         aliases=("WF-c13-sigmaL-high-res",),
         paper="WF",
         locator="Sec. IV.D",
-        quantity="sigma_L = 200 sigma_a at sigma_a = 10 um/s^2",
+        quantity="$\\sigma_L = 200 \\sigma_a$ at $\\sigma_a$ = 10 µm/s²",
         published=_sL_lo,
         unit="m/s",
         kind="cross-check",
@@ -1378,7 +1380,7 @@ CLAIMS = [
         aliases=("WF-c13-sigmaL-medium-res",),
         paper="WF",
         locator="Sec. IV.D",
-        quantity="sigma_L = 200 sigma_a at sigma_a = 10 mm/s^2",
+        quantity="$\\sigma_L = 200 \\sigma_a$ at $\\sigma_a$ = 10 mm/s²",
         published=_sL_hi,
         unit="m/s",
         kind="cross-check",
@@ -1393,7 +1395,8 @@ CLAIMS = [
         id="WF-eq24-PN",
         paper="WF",
         locator="Eq. (24)",
-        quantity="P_N P_N^T = sigma_N^2 I is consistent with Eq. (11): sigma_DN of the literal reading "
+        quantity="$P_N P_N^T = \\sigma_N^2 I$ is consistent with Eq. (11): $\\sigma_{DN}$ of the literal "
+        "reading "
         "computed in cm/s over the same computed in m/s",
         published=1.0,
         unit="",
@@ -1404,9 +1407,10 @@ CLAIMS = [
         erratum="WF-E2-eq24-PN",
         oracle=_eq24_oracle,
         oracle_tolerance=Tolerance(abs=1e-12, reason="round-off", policy="exact"),
-        note="A consistent reading gives the same sigma_DN in any velocity unit (ratio 1); the literal "
-        "reading gives 0.1. Oracle: the derivation (P_N P_N^T in (m/s)^4 against sigma_N^2 in (m/s)^2, "
-        "so sigma_DN scales as the square root of the unit). Was a truth value; now the ratio itself.",
+        note="A consistent reading gives the same $\\sigma_{DN}$ in any velocity unit (ratio 1); the literal "
+        "reading gives 0.1. Oracle: the derivation ($P_N P_N^T$ in (m/s)$^4$ against $\\sigma_N^2$ in "
+        "(m/s)$^2$, "
+        "so $\\sigma_{DN}$ scales as the square root of the unit). Was a truth value; now the ratio itself.",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
@@ -1414,15 +1418,15 @@ CLAIMS = [
         aliases=("WF-c14-60dB",),
         paper="WF",
         locator="Sec. IV.D, Fig. 1",
-        quantity="improvement with a 100 ug accelerometer at sigma_T = 2 m/s",
+        quantity="improvement with a 100 µg accelerometer at $\\sigma_T$ = 2 m/s",
         published=_c14,
         unit="dB",
         compute=lambda: improvement_db(sigma_a_example(), IN.sigma_t_large),
         tolerance=_c14_tol,
         expected_status="reproduced",
         relation="<=",
-        note="'At least 60 dB reduction'. Per-axis sigma_D = sqrt(Eq. (23) middle term / 3); "
-        "1 ug = 9.80665e-6 m/s^2; steady state; P_DL(k/k). Under the full-trace reading it is -55.4 dB.",
+        note="'At least 60 dB reduction'. Per-axis $\\sigma_D = \\sqrt{\\text{Eq. (23) middle term} / 3}$; "
+        "1 µg = 9.80665e-6 m/s²; steady state; $P_{DL}(k/k)$. Under the full-trace reading it is -55.4 dB.",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
@@ -1430,7 +1434,7 @@ CLAIMS = [
         aliases=("WF-c15-factor",),
         paper="WF",
         locator="Sec. IV.D",
-        quantity="accuracy improvement factor sigma_DN / sigma_D at 100 ug, sigma_T = 2 m/s",
+        quantity="accuracy improvement factor $\\sigma_{DN} / \\sigma_D$ at 100 µg, $\\sigma_T$ = 2 m/s",
         published=_c15f,
         unit="",
         compute=lambda: float(
@@ -1439,7 +1443,7 @@ CLAIMS = [
         tolerance=_c15f_tol,
         expected_status="reproduced",
         relation=">=",
-        note="'A factor of 10^3', read with the 'at least' of the same sentence.",
+        note="'A factor of $10^3$', read with the 'at least' of the same sentence.",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
@@ -1447,7 +1451,7 @@ CLAIMS = [
         aliases=("WF-c15-sigmaD",),
         paper="WF",
         locator="Sec. IV.D",
-        quantity="improved local velocity accuracy at 100 ug, sigma_T = 2 m/s",
+        quantity="improved local velocity accuracy at 100 µg, $\\sigma_T$ = 2 m/s",
         published=_c15,
         unit="m/s",
         compute=lambda: sigma_d_bound(sigma_a_example(), IN.sigma_t_large),
@@ -1477,14 +1481,15 @@ CLAIMS = [
         id="WF-fig1-slope",
         paper="WF",
         locator="Fig. 1",
-        quantity="the sigma_T = 2 m/s curve rises 20 dB per decade of accelerometer resolution",
+        quantity="the $\\sigma_T$ = 2 m/s curve rises 20 dB per decade of accelerometer resolution",
         published=True,
         unit="statement",
         compute=_fig1_slope,
         tolerance=EXACT,
         expected_status="reproduced",
         note="Figure-only (no curve values printed); least-squares slope within 0.5 dB/decade over "
-        "10 um/s^2 to 10 mm/s^2, as sigma_DL ~ 2 s * sigma_a predicts. Verdict changed from consistent: "
+        "10 um/s^2 to 10 mm/s^2, as $\\sigma_{DL} \\approx 2\\,\\mathrm{s} \\cdot \\sigma_a$ predicts. "
+        "Verdict changed from consistent: "
         "the computation reads published inputs only.",
         discussed_in=DOCS["IVD"],
     ),
@@ -1493,7 +1498,7 @@ CLAIMS = [
         paper="WF",
         locator="Fig. 1",
         quantity="larger lever-arm uncertainty gives more improvement: smallest separation (dB) of the "
-        "curves sigma_T = 2 below 0.2 below 0 m/s over the stated range",
+        "curves $\\sigma_T$ = 2 below 0.2 below 0 m/s over the stated range",
         published=0.0,
         relation=">",
         unit="dB",
@@ -1518,8 +1523,8 @@ CLAIMS = [
         compute=_gps_adds_little,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="|Fig. 2 - Fig. 1| < 1 dB for 1 and 3 satellites, all sigma_T, sigma_a in 10 um/s^2 to "
-        "10 mm/s^2. Beyond about 30 mm/s^2 it no longer holds.",
+        note="|Fig. 2 - Fig. 1| < 1 dB for 1 and 3 satellites, all $\\sigma_T$, $\\sigma_a$ in 10 µm/s² to "
+        "10 mm/s². Beyond about 30 mm/s² it no longer holds.",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
@@ -1527,7 +1532,7 @@ CLAIMS = [
         aliases=("WF-c19-gps-noticeable",),
         paper="WF",
         locator="Sec. IV.D",
-        quantity="GPS is noticeable only with severe sigma_T, a poor accelerometer and 3 satellites",
+        quantity="GPS is noticeable only with severe $\\sigma_T$, a poor accelerometer and 3 satellites",
         published=True,
         unit="statement",
         compute=_gps_noticeable_only_when,
@@ -1543,7 +1548,7 @@ CLAIMS = [
         aliases=("WF-c20-three-vs-one",),
         paper="WF",
         locator="Sec. IV.D, Fig. 2",
-        quantity="3 satellites virtually identical to 1 at sigma_T = 0: largest difference of the two "
+        quantity="3 satellites virtually identical to 1 at $\\sigma_T$ = 0: largest difference of the two "
         "improvement curves (dB) over the stated range",
         published=0.0,
         relation="<=",
@@ -1562,7 +1567,7 @@ CLAIMS = [
         paper="WF",
         locator="Sec. IV.D, Fig. 2",
         quantity="more GPS satellites never give less improvement: largest rise of the bound (dB) of 3 "
-        "satellites over 1, or 1 over none, any sigma_T, over the stated sigma_a range",
+        "satellites over 1, or 1 over none, any $\\sigma_T$, over the stated $\\sigma_a$ range",
         published=0.0,
         relation="<=",
         unit="dB",
