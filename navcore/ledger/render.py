@@ -240,13 +240,6 @@ def _plain_with_unit(value: str, unit: str) -> str:
     return f"{value} {unit}"
 
 
-def _with_unit(value: str, unit: str) -> str:
-    """A table cell: the value with its unit (statements and dimensionless values bare)."""
-    if value in ("", "—") or unit in ("", "statement"):
-        return html.escape(value)
-    return f"{html.escape(value)}&nbsp;{html.escape(unit)}"
-
-
 # ---------------------------------------------------------------------------------------
 # inline math: ``$...$`` in notes, quantities and errata
 
@@ -777,15 +770,35 @@ class ErrataList:
         return "".join(out) or "<p>No errata registered.</p>"
 
     def _repr_markdown_(self) -> str:
-        out = []
+        """The printed list: a raw-LaTeX block whose ``$...$`` is math, set ``\\sloppy`` so
+        that a line of formulas never runs into the margin (the HTML builder uses
+        :meth:`_repr_html_`)."""
+        if not self.items:
+            return "No errata registered."
+        return "```{raw} latex\n" + self.latex() + "\n```"
+
+    def latex(self) -> str:
+        """Each erratum as a bold heading line and an itemised list of its four fields."""
+        out = [r"\begingroup\sloppy"]
         for e in self.items:
-            claims_md = "; ".join(c.replace("_", "\\_") for c in e.claims) or "none"
-            out.append(
-                f"**{e.id}** ({e.paper}, {e.locator})\n\n"
-                f"- *Printed:* {e.printed}\n- *The book finds:* {e.finding}\n"
-                f"- *Evidence:* {e.evidence}\n- *Claims affected:* {claims_md}\n"
-            )
-        return "\n".join(out) or "No errata registered."
+            claims_tex = "; ".join(r"\texttt{" + _tex_breakable(c) + "}" for c in e.claims) or "none"
+            out += [
+                r"\par\medskip\noindent\textbf{"
+                + _tex_breakable(e.id)
+                + "} ("
+                + _tex_escape(e.paper)
+                + ", "
+                + tex_text(e.locator)
+                + r")\nopagebreak",
+                r"\begin{itemize}",
+                r"\item \textit{Printed:} " + tex_text(e.printed),
+                r"\item \textit{The book finds:} " + tex_text(e.finding),
+                r"\item \textit{Evidence:} " + tex_text(e.evidence),
+                r"\item \textit{Claims affected:} " + claims_tex,
+                r"\end{itemize}",
+            ]
+        out.append(r"\endgroup")
+        return "\n".join(out)
 
     def __repr__(self) -> str:
         return "\n".join(f"{e.id}: {e.paper}, {e.locator}" for e in self.items) or "No errata registered."
@@ -970,7 +983,7 @@ class InteractiveLedger:
             for k, h in cols
         )
         body = []
-        for index, (rec, r) in enumerate(zip(self.records, rows(self.evals), strict=True)):
+        for index, (e, rec, r) in enumerate(zip(self.evals, self.records, rows(self.evals), strict=True)):
             status = html.escape(r["status"]) + ("" if r["check"] == "ok" else " <b>(check fails)</b>")
             if r["erratum"]:
                 anchor = html.escape(r["erratum"].lower())
@@ -989,8 +1002,8 @@ class InteractiveLedger:
                 "kind": html.escape(str(rec.get("kind") or "")),
                 "locator": html.escape(r["locator"]),
                 "quantity": f"{html_text(r['quantity'])}<details><summary>note</summary>{note}</details>",
-                "published": _with_unit(r["published"], r["unit"]),
-                "reproduced": _with_unit(r["reproduced"], r["unit"]),
+                "published": _nowrap(_printed_text(e)),
+                "reproduced": _nowrap(_reproduced_text(e)),
                 "band": html.escape(_band(rec, r["unit"])),
                 "status": status,
             }
