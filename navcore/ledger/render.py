@@ -1,8 +1,10 @@
 """Rendering the ledger: plain text for the terminal, HTML and Markdown for the book.
 
-The book shows tables through :class:`LedgerTable`, an object with both ``_repr_html_``
-(coloured by status, for the HTML builder) and ``_repr_markdown_`` (a plain pipe table that
-MyST turns into a real LaTeX table for the PDF builder).
+The book shows tables through :class:`LedgerTable` (a chapter's claims, grouped by what they
+check), :class:`InteractiveLedger` (the whole ledger) and :class:`ErrataList`: each has
+``_repr_html_`` for the HTML builder and ``_repr_markdown_`` returning a raw-LaTeX block for
+the PDF builder. Notes, quantities and erratum texts may hold inline math as ``$...$``
+(:func:`html_text`, :func:`tex_text`); the plain-text output leaves it as written.
 """
 
 from __future__ import annotations
