@@ -1167,7 +1167,7 @@ CLAIMS = [
         id="ATC10-sec3.8-example-expg",
         paper="ATC10",
         locator="Sec. 3.8, worked example",
-        quantity="Gaussian exponent Exp_g = a^2/p at theta = 0.5",
+        quantity="Gaussian exponent $\\mathrm{Exp}_g = a^2/p$ at $\\theta$ = 0.5",
         published=_expg,
         unit="",
         compute=worked_example_exp_g,
