@@ -53,7 +53,9 @@ def test_every_section_has_an_exercise_and_the_chapter_all_four_types(chapter):
     assert sections, f"{chapter}: no section pages"
     missing = [s for s in sections if not by_section.get(s)]
     assert not missing, f"{chapter}: sections without an exercise: {missing}"
-    assert set(by_section) <= set(sections), f"{chapter}: exercises link to unknown pages {set(by_section) - set(sections)}"
+    assert set(by_section) <= set(sections), (
+        f"{chapter}: exercises link to unknown pages {set(by_section) - set(sections)}"
+    )
     kinds = [o.get("class", "") for opts in by_section.values() for o in opts]
     assert set(kinds) <= TYPES, f"{chapter}: unknown exercise classes {set(kinds) - TYPES}"
     assert set(kinds) == TYPES, f"{chapter}: exercise types missing: {TYPES - set(kinds)}"

@@ -269,19 +269,28 @@ def _store(ev: Evaluation) -> None:
         pass  # a read-only location only costs speed
 
 
-@cache
 def evaluate_claim(claim_id: str) -> Evaluation:
     """Evaluate one claim (memoised in the process and, unless disabled, on disk).
 
-    The on-disk cache (:func:`cache_dir`) is keyed by a hash of navcore's sources, so a
-    stored evaluation is exactly what a fresh evaluation would give.
+    ``claim_id`` may be a former id of the claim (one of its ``aliases``); the evaluation
+    is the claim's under its current id. The on-disk cache (:func:`cache_dir`) is keyed by
+    a hash of navcore's sources, so a stored evaluation is exactly what a fresh evaluation
+    would give.
     """
+    return _evaluate_claim(claim(claim_id).id)
+
+
+@cache
+def _evaluate_claim(claim_id: str) -> Evaluation:
     hit = _cached(claim_id)
     if hit is not None:
         return hit
     ev = evaluate(claim(claim_id))
     _store(ev)
     return ev
+
+
+evaluate_claim.cache_clear = _evaluate_claim.cache_clear  # type: ignore[attr-defined]
 
 
 def evaluations(paper: str | None = None, prefix: str | None = None) -> list[Evaluation]:

@@ -1,8 +1,10 @@
 """Rendering the ledger: plain text for the terminal, HTML and Markdown for the book.
 
-The book shows tables through :class:`LedgerTable`, an object with both ``_repr_html_``
-(coloured by status, for the HTML builder) and ``_repr_markdown_`` (a plain pipe table that
-MyST turns into a real LaTeX table for the PDF builder).
+The book shows tables through :class:`LedgerTable` (a chapter's claims, grouped by what they
+check), :class:`InteractiveLedger` (the whole ledger) and :class:`ErrataList`: each has
+``_repr_html_`` for the HTML builder and ``_repr_markdown_`` returning a raw-LaTeX block for
+the PDF builder. Notes, quantities and erratum texts may hold inline math as ``$...$``
+(:func:`html_text`, :func:`tex_text`); the plain-text output leaves it as written.
 """
 
 from __future__ import annotations
@@ -23,10 +25,15 @@ __all__ = [
     "ErrataList",
     "InteractiveLedger",
     "LedgerTable",
+    "claim_group",
     "format_value",
+    "group_claims",
+    "html_text",
     "json_dump",
     "latex_table",
+    "math_spans",
     "rows",
+    "tex_text",
     "text_table",
 ]
 
@@ -235,22 +242,275 @@ def _plain_with_unit(value: str, unit: str) -> str:
     return f"{value} {unit}"
 
 
-def _with_unit(value: str, unit: str) -> str:
-    """A table cell: the value with its unit (statements and dimensionless values bare)."""
-    if value in ("", "—") or unit in ("", "statement"):
-        return html.escape(value)
-    return f"{html.escape(value)}&nbsp;{html.escape(unit)}"
+# ---------------------------------------------------------------------------------------
+# inline math: ``$...$`` in notes, quantities and errata
+
+
+_MATH = re.compile(r"(?<![\\$])\$(?=[^\s$])([^$]*?[^\s\\$])\$(?!\$)")
+
+
+def math_spans(text: str) -> list[tuple[bool, str]]:
+    """``text`` cut into ``(is_math, piece)``: ``$...$`` is inline math.
+
+    A dollar sign followed by a space (``50,000 $ INS``) or escaped (``\\$``) is not math,
+    so prices and lone dollar signs stay text.
+    """
+    out: list[tuple[bool, str]] = []
+    pos = 0
+    for m in _MATH.finditer(text):
+        if m.start() > pos:
+            out.append((False, text[pos : m.start()]))
+        out.append((True, m.group(1)))
+        pos = m.end()
+    if pos < len(text):
+        out.append((False, text[pos:]))
+    return out
+
+
+def html_text(text: str) -> str:
+    """Escaped HTML with ``$...$`` as MathJax inline math, marked up as Sphinx does."""
+    return "".join(
+        f'<span class="math notranslate nohighlight">\\({html.escape(piece)}\\)</span>'
+        if is_math
+        else html.escape(piece)
+        for is_math, piece in math_spans(text)
+    )
+
+
+def tex_text(text: str) -> str:
+    """Escaped LaTeX with ``$...$`` passed through as math."""
+    return "".join(f"${piece}$" if is_math else _tex_escape(piece) for is_math, piece in math_spans(text))
+
+
+# ---------------------------------------------------------------------------------------
+# the chapters' claim tables
+
+_GROUP_PATTERNS = (
+    r"\bTables?\s+[A-Z]?\d+(?:\.\d+)*",
+    r"\bFigs?\.\s+\d+(?:\.\d+)*(?:\s*-\s*\d+(?:\.\d+)*)?",
+    r"\bTheorem(?:\s+\d+(?:\.\d+)*)?",
+    r"\bRemark\s+\([ivx]+\)",
+    r"\bProposition\b",
+    r"\bEqs?\.\s+\([^)]*\)(?:\s*-\s*\([^)]*\))?",
+    r"\b(?:Appendix|App\.)\s+[A-Z]\b",
+    r"\bSecs?\.\s+(?:[IVX]+(?:\.[A-Z0-9]+)*|\d+(?:\.\d+)*)",
+)
+
+
+def claim_group(locator: str) -> str:
+    """What a claim checks, from its locator: the table, figure, theorem, equation, appendix
+    or section it names (in that order of preference).
+
+    ``"Table 2.6, column 2"`` -> ``"Table 2.6"``; ``"Sec. 3.6, discussion of Fig. 5"`` ->
+    ``"Fig. 5"``; ``"Sec. III, after Eq. (9)"`` -> ``"Eq. (9)"``; a locator naming none of
+    them is its own group.
+    """
+    for pattern in _GROUP_PATTERNS:
+        m = re.search(pattern, locator)
+        if m:
+            return m.group(0)
+    return locator.strip()
+
+
+def _is_truth(value: Any) -> bool:
+    """A Python or numpy boolean."""
+    return isinstance(value, bool) or type(value).__name__ == "bool_"
+
+
+def _statement_word(value: Any, *, printed: bool) -> str:
+    """Words for a truth value: printed ``stated`` (``stated not to hold`` for a printed
+    falsehood), reproduced ``holds`` / ``does not hold``."""
+    if printed:
+        return "stated" if value else "stated not to hold"
+    return "holds" if value else "does not hold"
+
+
+def _printed_text(e: Evaluation) -> str:
+    c = e.claim
+    if _is_truth(c.published):
+        return _statement_word(c.published, printed=True)
+    rel = "" if c.relation == "=" else c.relation.replace(">=", "≥").replace("<=", "≤") + " "
+    return _plain_with_unit(rel + format_value(c.published), c.unit)
+
+
+def _reproduced_text(e: Evaluation) -> str:
+    if _is_truth(e.reproduced):
+        return _statement_word(bool(e.reproduced), printed=False)
+    return _plain_with_unit(format_value(e.reproduced), e.claim.unit)
+
+
+def _nowrap(text: str) -> str:
+    """A short value kept on one line (number and unit together); long text may wrap."""
+    escaped = html.escape(text)
+    return escaped.replace(" ", "&nbsp;") if len(text) <= 16 else escaped
+
+
+def _tolerance_text(e: Evaluation) -> str:
+    """The tolerance and its reason in one phrase; empty for an exact truth value (a
+    statement either holds or not)."""
+    tol = e.tolerance if e.tolerance is not None else e.claim.tolerance
+    if not hasattr(tol, "describe"):
+        return ""
+    size, reason = tol.describe(), getattr(tol, "reason", "")
+    if size == "exact" and e.claim.is_statement:
+        return ""
+    if reason.lower().startswith(size.lower()):
+        return reason
+    return f"{size}: {reason}" if reason else size
+
+
+def _input_label(name: str) -> str:
+    try:
+        from navcore.ledger.inputs import get_input
+
+        inp = get_input(name)
+        return inp.quantity or name.rsplit(".", 1)[-1].replace("_", " ")
+    except (ValueError, KeyError, ImportError):
+        return name.rsplit(".", 1)[-1].replace("_", " ")
+
+
+def _inputs_text(e: Evaluation) -> str:
+    """The inputs the computation read: name, value, where it comes from."""
+    parts = []
+    for i in e.inputs:
+        value = i.get("value")
+        shown = format_value(value) if isinstance(value, int | float) else str(value)
+        if len(shown) > 40:
+            shown = shown[:39] + "…"
+        where = i.get("provenance", "")
+        if i.get("locator"):
+            where += f", {i['locator']}"
+        parts.append(f"{_input_label(i['name'])} = {shown} ({where})")
+    return "; ".join(parts)
+
+
+def _band_text(e: Evaluation) -> str:
+    if e.band is None or e.claim.is_statement:
+        return ""
+    lo, hi = e.band
+    return f"{format_value(lo)} to {format_value(hi)}" + (
+        f" {e.claim.unit}" if e.claim.unit not in ("", "statement") else ""
+    )
+
+
+_DETAIL_FIELDS = ("note", "tolerance", "band", "inputs")
+_DETAIL_LABELS = {
+    "note": "",
+    "tolerance": "Tolerance",
+    "band": "Over the assumed inputs' ranges",
+    "inputs": "Inputs",
+}
+
+
+class _Group:
+    """Consecutive claims that check the same table, figure, equation or section."""
+
+    def __init__(self, label: str, evals: list[Evaluation]) -> None:
+        self.label = label
+        self.evals = evals
+        self.details = [
+            {
+                "note": e.note(),
+                "tolerance": _tolerance_text(e),
+                "band": _band_text(e),
+                "inputs": _inputs_text(e),
+            }
+            for e in evals
+        ]
+        locators = {e.claim.locator for e in evals}
+        # the header shows the full locator when every claim shares it
+        self.heading = locators.pop() if len(locators) == 1 else label
+        # a detail shared by every claim of a group of two or more is said once, in the header
+        self.shared = {
+            k: self.details[0][k]
+            for k in _DETAIL_FIELDS
+            if len(evals) > 1 and self.details[0][k] and all(d[k] == self.details[0][k] for d in self.details)
+        }
+
+    def own(self, index: int) -> dict[str, str]:
+        """The details of claim ``index`` that the group does not share."""
+        return {k: v for k, v in self.details[index].items() if v and k not in self.shared}
+
+
+def _locator_detail(locator: str, heading: str) -> str:
+    """What a claim's locator adds to its group's heading (``"column 2"`` under
+    ``"Table 2.6"``); empty when it adds nothing."""
+    if locator == heading:
+        return ""
+    if locator.startswith(heading):
+        rest = locator[len(heading) :].lstrip(" ,;")
+        return rest if rest and not rest.startswith(")") else locator
+    return locator
+
+
+def group_claims(evals: Sequence[Evaluation]) -> list[_Group]:
+    """``evals`` cut into runs of consecutive claims that check the same thing.
+
+    A run of two or more consecutive claims with one locator (``"Table 2.6, column 2"``)
+    is a group of its own, headed by that locator; other claims are grouped by
+    :func:`claim_group` of their locators (``"Table 2.6"``).
+    """
+    locators = [e.claim.locator for e in evals]
+    keys = []
+    for i, loc in enumerate(locators):
+        same_run = (i > 0 and locators[i - 1] == loc) or (i + 1 < len(locators) and locators[i + 1] == loc)
+        keys.append(loc if same_run else claim_group(loc))
+    groups: list[_Group] = []
+    start = 0
+    for i in range(1, len(evals) + 1):
+        if i == len(evals) or keys[i] != keys[start]:
+            groups.append(_Group(keys[start], list(evals[start:i])))
+            start = i
+    return groups
+
+
+def _details_html(details: dict[str, str]) -> str:
+    parts = []
+    for k in _DETAIL_FIELDS:
+        if details.get(k):
+            label = _DETAIL_LABELS[k]
+            text = html_text(details[k])
+            parts.append(f"<p><i>{label}:</i> {text}</p>" if label else f"<p>{text}</p>")
+    return "".join(parts)
+
+
+def _details_tex(details: dict[str, str]) -> str:
+    """The details in one run of text; the printed table leaves out the inputs (the
+    Assumptions page and the ledger's JSON list them) to stay compact."""
+    parts = []
+    for k in _DETAIL_FIELDS[:-1]:
+        if details.get(k):
+            label = _DETAIL_LABELS[k]
+            text = tex_text(details[k])
+            parts.append(rf"\textit{{{label}:}} {text}" if label else text)
+    return " ".join(parts)
+
+
+_KIND_LABELS = {
+    "reproduction": "reproduction",
+    "cross-check": "cross-check",
+    "statement": "statement",
+    "fit": "fit",
+}
 
 
 class LedgerTable:
-    """Published-versus-reproduced table for the book (HTML coloured, Markdown for PDF).
+    """Printed-versus-reproduced table of a chapter's claims (HTML and PDF).
+
+    Claims are grouped by what they check (:func:`claim_group` of their locators):
+    consecutive claims of one table, figure, equation or section share a header row naming
+    it. Each claim is one line: what it checks, the printed and the reproduced value with
+    their unit (a statement reads "stated" / "holds"), its verdict as a coloured badge and
+    its kind. The note, the tolerance with its reason, the band and the inputs sit behind a
+    disclosure; what every claim of a group shares is said once, in the group's header.
+    Each row carries the lower-cased claim id as its anchor.
 
     Parameters
     ----------
     evals : sequence of Evaluation
         The claims to show, in order.
     show_notes : bool
-        Include the note and tolerance reason (HTML: as a second line; Markdown: a column).
+        Include the notes, tolerances and inputs (HTML: disclosures; PDF: small type).
     link_errata : bool
         Link erratum ids to their entry on the errata page.
     root : str
@@ -275,62 +535,106 @@ class LedgerTable:
         self.link_errata = link_errata
         self.link_pages = link_pages
 
+    def groups(self) -> list[_Group]:
+        """The claims cut into groups (see :func:`group_claims`)."""
+        return group_claims(self.evals)
+
+    # -- HTML ------------------------------------------------------------------------------
+
+    def _verdict_html(self, e: Evaluation) -> str:
+        status = html.escape(e.status)
+        out = f'<span class="ledger-badge {_status_class(e.status)}">{status}</span>'
+        if not e.passes:
+            out += ' <b class="ledger-fails">check fails</b>'
+        if e.claim.erratum and self.link_errata:
+            anchor = html.escape(e.claim.erratum.lower())
+            out += (
+                f' <a class="ledger-erratum" href="{html.escape(self.root)}errata.html#{anchor}">'
+                f"{html.escape(e.claim.erratum)}</a>"
+            )
+        return out
+
+    def _claim_id_html(self, e: Evaluation) -> str:
+        c = e.claim
+        code = f"<code>{html.escape(c.id)}</code>"
+        if self.link_pages and c.discussed_in:
+            target = html.escape(f"{self.root}{c.discussed_in}.html#{c.id.lower()}")
+            code = f'<a href="{target}" title="where the book derives it">{code}</a>'
+        return code
+
     def _repr_html_(self) -> str:
-        head = ["Claim", "Locator", "Quantity", "Published", "Reproduced", "Status"]
-        out = ['<div class="ledger-table-wrap"><table class="ledger-table">', "<thead><tr>"]
-        out += [f"<th>{h}</th>" for h in head]
-        out.append("</tr></thead><tbody>")
-        for r in rows(self.evals):
-            css = _status_class(r["status"])
-            status = html.escape(r["status"])
-            if r["check"] != "ok":
-                status += " <b>(check fails)</b>"
-            if r["erratum"] and self.link_errata:
-                anchor = r["erratum"].lower()
-                status += f'<br><a href="{self.root}errata.html#{anchor}">{html.escape(r["erratum"])}</a>'
-            claim_id = f'<code id="{html.escape(r["id"].lower())}">{html.escape(r["id"])}</code>'
-            if self.link_pages and r["discussed_in"]:
-                target = f"{self.root}{r['discussed_in']}.html#{r['id'].lower()}"
-                claim_id = f'<a href="{html.escape(target)}" title="where the book derives it">{claim_id}</a>'
-            cells = [
-                claim_id,
-                html.escape(r["locator"]),
-                html.escape(r["quantity"]),
-                _with_unit(r["published"], r["unit"]),
-                _with_unit(r["reproduced"], r["unit"]),
-                status,
-            ]
-            out.append(f'<tr class="{css}">' + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
-            if self.show_notes:
-                note = (
-                    html.escape(r["note"])
-                    + f"<br><i>Tolerance:</i> {html.escape(r['tolerance'])}, "
-                    + html.escape(r["tolerance_reason"])
+        head = ("What it checks", "Printed", "Reproduced", "Verdict", "Kind")
+        out = [
+            '<div class="ledger-claims-wrap"><table class="ledger-claims">',
+            "<thead><tr>" + "".join(f'<th scope="col">{h}</th>' for h in head) + "</tr></thead>",
+        ]
+        for g in self.groups():
+            out.append("<tbody>")
+            shared = _details_html(g.shared) if self.show_notes else ""
+            n = len(g.evals)
+            header = f'<span class="ledger-group-label">{html_text(g.heading)}</span>'
+            if shared:
+                header += (
+                    f'<details class="ledger-shared"><summary>note for these {n} claims</summary>'
+                    f"{shared}</details>"
+                )
+            out.append(f'<tr class="ledger-group"><th colspan="5" scope="rowgroup">{header}</th></tr>')
+            for index, e in enumerate(g.evals):
+                c = e.claim
+                what = html_text(c.quantity)
+                where = _locator_detail(c.locator, g.heading)
+                if where:
+                    what += f' <span class="ledger-locator">({html.escape(where)})</span>'
+                if self.show_notes:
+                    own = _details_html(g.own(index))
+                    what += (
+                        '<details class="ledger-details"><summary>details</summary>'
+                        f'<p class="ledger-id">Claim {self._claim_id_html(e)}</p>{own}</details>'
+                    )
+                elif self.link_pages:
+                    what += f' <span class="ledger-id">{self._claim_id_html(e)}</span>'
+                kind = html.escape(_KIND_LABELS.get(str(c.kind), str(c.kind)))
+                cells = (
+                    ("ledger-what", "", what),
+                    ("ledger-value", "Printed", _nowrap(_printed_text(e))),
+                    ("ledger-value", "Reproduced", _nowrap(_reproduced_text(e))),
+                    ("ledger-verdict", "Verdict", self._verdict_html(e)),
+                    ("ledger-kind", "Kind", f'<span class="ledger-kind-label">{kind}</span>'),
+                )
+                tds = "".join(
+                    f'<td class="{cls}"' + (f' data-label="{label}"' if label else "") + f">{body}</td>"
+                    for cls, label, body in cells
                 )
                 out.append(
-                    f'<tr class="ledger-note {css}"><td></td><td colspan="5"><small>{note}</small></td></tr>'
+                    f'<tr id="{html.escape(c.id.lower())}" class="ledger-claim" '
+                    f'data-status="{html.escape(e.status)}">{tds}</tr>'
                 )
-        out.append("</tbody></table></div>")
+            out.append("</tbody>")
+        out.append("</table></div>")
         return "".join(out)
 
-    def _repr_markdown_(self) -> str:
-        """A raw-LaTeX block for the PDF book (MyST renders Markdown outputs there).
+    # -- PDF -------------------------------------------------------------------------------
 
-        A ``longtable`` whose paragraph columns add up to the text width, rows coloured by
-        status as in HTML, each claim's note in a full-width row below it, and claim ids
-        that may break after ``-`` and ``.``; the HTML builder uses :meth:`_repr_html_`.
-        """
+    def _repr_markdown_(self) -> str:
+        """A raw-LaTeX block for the PDF book (MyST renders Markdown outputs there); the HTML
+        builder uses :meth:`_repr_html_`."""
         return "```{raw} latex\n" + self.latex() + "\n```"
 
     def latex(self) -> str:
-        """The table as a LaTeX ``longtable`` that fits the text width."""
-        widths = (0.15, 0.13, 0.31, 0.12, 0.13, 0.16)
+        """The table as a compact LaTeX ``longtable`` that fits the text width.
+
+        Four columns (what it checks, printed, reproduced, verdict with the kind below it);
+        a group's header row spans the width and holds, in small type, the note shared by
+        its claims; a claim's own note follows its quantity in small type.
+        """
+        widths = (0.49, 0.16, 0.16, 0.19)
+        align = (r"\raggedright", r"\raggedleft", r"\raggedleft", r"\raggedright")
         cols = "".join(
-            rf">{{\raggedright\arraybackslash}}p{{\dimexpr {w}\linewidth-2\tabcolsep\relax}}" for w in widths
+            rf">{{{a}\arraybackslash}}p{{\dimexpr {w}\linewidth-2\tabcolsep\relax}}"
+            for a, w in zip(align, widths, strict=True)
         )
-        head = " & ".join(
-            rf"\textbf{{{h}}}" for h in ("Claim", "Locator", "Quantity", "Published", "Reproduced", "Status")
-        )
+        head = " & ".join(rf"\textbf{{{h}}}" for h in ("What it checks", "Printed", "Reproduced", "Verdict"))
+        full = r"\multicolumn{4}{>{\raggedright\arraybackslash}p{\dimexpr\linewidth-2\tabcolsep\relax}}"
         out = [
             r"\begingroup\footnotesize\setlength{\tabcolsep}{3pt}\sloppy",
             rf"\begin{{longtable}}{{{cols}}}",
@@ -338,32 +642,37 @@ class LedgerTable:
             rf"\hline {head} \\ \hline \endhead",
             r"\hline \endfoot",
         ]
-        for r in rows(self.evals):
-            colour = _status_colour(r["status"]).lstrip("#").upper()
-            status = _tex_escape(r["status"]) + ("" if r["check"] == "ok" else r" \textbf{(check fails)}")
-            if r["erratum"]:
-                status += r"\newline{}\scriptsize " + _tex_breakable(r["erratum"])
-            cells = [
-                r"\texttt{" + _tex_breakable(r["id"]) + "}",
-                _tex_breakable(r["locator"]),
-                _tex_escape(r["quantity"]),
-                _tex_escape(_plain_with_unit(r["published"], r["unit"])),
-                _tex_escape(_plain_with_unit(r["reproduced"], r["unit"])),
-                status,
-            ]
-            out.append(rf"\rowcolor[HTML]{{{colour}}}" + " & ".join(cells) + r" \\*")
-            if self.show_notes:
-                note = (
-                    _tex_escape(r["note"])
-                    + r" \textit{Tolerance:} "
-                    + _tex_escape(f"{r['tolerance']}, {r['tolerance_reason']}")
-                )
-                out.append(
-                    rf"\rowcolor[HTML]{{{colour}}}\multicolumn{{6}}{{p{{\dimexpr\linewidth-2\tabcolsep\relax}}}}"
-                    rf"{{\scriptsize {note}}} \\ \hline"
-                )
-            else:
-                out.append(r"\hline")
+        for g in self.groups():
+            header = r"\textbf{" + tex_text(g.heading) + "}"
+            if self.show_notes and g.shared:
+                header += r"\newline{}{\scriptsize " + _details_tex(g.shared) + "}"
+            out.append(rf"\rowcolor[HTML]{{F1F3F5}}{full}{{{header}}} \\*")
+            for index, e in enumerate(g.evals):
+                c = e.claim
+                what = tex_text(c.quantity)
+                where = _locator_detail(c.locator, g.heading)
+                if where:
+                    what += " (" + _tex_escape(where) + ")"
+                if self.show_notes:
+                    own = _details_tex(g.own(index))
+                    what += r"\newline{}{\scriptsize \texttt{" + _tex_breakable(c.id) + "}"
+                    what += (". " + own if own else "") + "}"
+                colour = _status_colour(e.status).lstrip("#").upper()
+                verdict = rf"\cellcolor[HTML]{{{colour}}}" + _tex_breakable(e.status)
+                if not e.passes:
+                    verdict += r" \textbf{(check fails)}"
+                if c.erratum:
+                    verdict += r"\newline{}{\scriptsize " + _tex_breakable(c.erratum) + "}"
+                verdict += r"\newline{}{\scriptsize\itshape " + _tex_escape(str(c.kind)) + "}"
+                cells = [
+                    what,
+                    _tex_escape(_printed_text(e)),
+                    _tex_escape(_reproduced_text(e)),
+                    verdict,
+                ]
+                last = index == len(g.evals) - 1
+                rule = r"\hline" if last else r"\arrayrulecolor{black!25}\hline\arrayrulecolor{black}"
+                out.append(" & ".join(cells) + r" \\ " + rule)
         out += [r"\end{longtable}", r"\endgroup"]
         return "\n".join(out)
 
@@ -455,23 +764,43 @@ class ErrataList:
             out.append(
                 f'<div class="erratum" id="{html.escape(e.id.lower())}">'
                 f"<h4>{html.escape(e.id)} — {html.escape(e.paper)}, {html.escape(e.locator)}</h4>"
-                f"<p><b>Printed:</b> {html.escape(e.printed)}</p>"
-                f"<p><b>The book finds:</b> {html.escape(e.finding)}</p>"
-                f"<p><b>Evidence:</b> {html.escape(e.evidence)}</p>"
+                f"<p><b>Printed:</b> {html_text(e.printed)}</p>"
+                f"<p><b>The book finds:</b> {html_text(e.finding)}</p>"
+                f"<p><b>Evidence:</b> {html_text(e.evidence)}</p>"
                 f"<p><b>Claims affected:</b> {claims_html}.{where}</p></div>"
             )
         return "".join(out) or "<p>No errata registered.</p>"
 
     def _repr_markdown_(self) -> str:
-        out = []
+        """The printed list: a raw-LaTeX block whose ``$...$`` is math, set ``\\sloppy`` so
+        that a line of formulas never runs into the margin (the HTML builder uses
+        :meth:`_repr_html_`)."""
+        if not self.items:
+            return "No errata registered."
+        return "```{raw} latex\n" + self.latex() + "\n```"
+
+    def latex(self) -> str:
+        """Each erratum as a bold heading line and an itemised list of its four fields."""
+        out = [r"\begingroup\sloppy"]
         for e in self.items:
-            claims_md = "; ".join(c.replace("_", "\\_") for c in e.claims) or "none"
-            out.append(
-                f"**{e.id}** ({e.paper}, {e.locator})\n\n"
-                f"- *Printed:* {e.printed}\n- *The book finds:* {e.finding}\n"
-                f"- *Evidence:* {e.evidence}\n- *Claims affected:* {claims_md}\n"
-            )
-        return "\n".join(out) or "No errata registered."
+            claims_tex = "; ".join(r"\texttt{" + _tex_breakable(c) + "}" for c in e.claims) or "none"
+            out += [
+                r"\par\medskip\noindent\textbf{"
+                + _tex_breakable(e.id)
+                + "} ("
+                + _tex_escape(e.paper)
+                + ", "
+                + tex_text(e.locator)
+                + r")\nopagebreak",
+                r"\begin{itemize}",
+                r"\item \textit{Printed:} " + tex_text(e.printed),
+                r"\item \textit{The book finds:} " + tex_text(e.finding),
+                r"\item \textit{Evidence:} " + tex_text(e.evidence),
+                r"\item \textit{Claims affected:} " + claims_tex,
+                r"\end{itemize}",
+            ]
+        out.append(r"\endgroup")
+        return "\n".join(out)
 
     def __repr__(self) -> str:
         return "\n".join(f"{e.id}: {e.paper}, {e.locator}" for e in self.items) or "No errata registered."
@@ -656,7 +985,7 @@ class InteractiveLedger:
             for k, h in cols
         )
         body = []
-        for index, (rec, r) in enumerate(zip(self.records, rows(self.evals), strict=True)):
+        for index, (e, rec, r) in enumerate(zip(self.evals, self.records, rows(self.evals), strict=True)):
             status = html.escape(r["status"]) + ("" if r["check"] == "ok" else " <b>(check fails)</b>")
             if r["erratum"]:
                 anchor = html.escape(r["erratum"].lower())
@@ -666,17 +995,17 @@ class InteractiveLedger:
                 target = html.escape(f"{self.root}{r['discussed_in']}.html#{r['id'].lower()}")
                 claim = f'<a href="{target}" title="where the book derives it">{claim}</a>'
             note = (
-                html.escape(r["note"])
-                + f"<br><i>Tolerance:</i> {html.escape(r['tolerance'])}, {html.escape(r['tolerance_reason'])}"
+                html_text(r["note"])
+                + f"<br><i>Tolerance:</i> {html.escape(r['tolerance'])}, {html_text(r['tolerance_reason'])}"
             )
             cells = {
                 "id": claim,
                 "paper": html.escape(str(rec.get("paper", ""))),
                 "kind": html.escape(str(rec.get("kind") or "")),
                 "locator": html.escape(r["locator"]),
-                "quantity": f"{html.escape(r['quantity'])}<details><summary>note</summary>{note}</details>",
-                "published": _with_unit(r["published"], r["unit"]),
-                "reproduced": _with_unit(r["reproduced"], r["unit"]),
+                "quantity": f"{html_text(r['quantity'])}<details><summary>note</summary>{note}</details>",
+                "published": _nowrap(_printed_text(e)),
+                "reproduced": _nowrap(_reproduced_text(e)),
                 "band": html.escape(_band(rec, r["unit"])),
                 "status": status,
             }

@@ -622,7 +622,7 @@ CLAIMS: list[Claim] = [
     _statement(
         "ATC10-eq2.5.12-composition",
         "Eqs. (2.5.12), (2.7.3), (2.8.4), (C.17)",
-        "N_ADL = 0.5 N P_DL G(p_f)^(K-1) F(p_f), with P_DL = p_d^4 at K = 1",
+        "$N_{ADL} = 0.5 N P_{DL} G(p_f)^{K-1} F(p_f)$, with $P_{DL} = p_d^4$ at K = 1",
         lambda: _composition(1),
         "As for N_FL: the printed K = 1 and K > 1 lines (P_DL from (2.4.2) with its nu maximiser) typed "
         "with plain floats, against navcore's log-domain bound, to 1e-6 relative where nothing underflows.",
@@ -718,7 +718,7 @@ CLAIMS: list[Claim] = [
     _statement(
         "ATC10-eqA.16-bound-stays-valid",
         "Eq. (A.16)",
-        "when P(rho = 1 | H1) ~ p_d^4 is not exact the lower bound stays true",
+        "when $P(\\rho = 1 | H_1) \\approx p_d^4$ is not exact the lower bound stays true",
         _exponent_rises_with_q,
         "P(rho=1|H1) >= p_d^4 and the exponent max_nu[nu(1-t) - ln((1-q)e^nu + q)] does not decrease in "
         "q (checked on a 400-point grid for five t), so the smaller q can only lower the bound.",
@@ -736,7 +736,7 @@ CLAIMS: list[Claim] = [
     _statement(
         "ATC10-eqB.11-monte-carlo",
         "Eqs. (B.1)-(B.11), (2.5.4), (2.4.2)",
-        "the simulated first-stage false-alarm rate is at least F^(Kt+1) and the detection rate at least "
+        "the simulated first-stage false-alarm rate is at least $F^{Kt+1}$ and the detection rate at least "
         "P_DL",
         _false_alarm_above_bound,
         "Seeded simulation of matched-filter samples, lists and the K-list rule at reduced sizes "
@@ -749,7 +749,7 @@ CLAIMS: list[Claim] = [
     _statement(
         "ATC10-eqC.17-monte-carlo",
         "Eqs. (C.10)-(C.17), (2.5.11)",
-        "the simulated probability of a noise-only track over K segments is at least F G^(K-1)",
+        "the simulated probability of a noise-only track over K segments is at least $F G^{K-1}$",
         _false_tracks_above_bound,
         f"Seeded false-track simulation (exact existence search, {mc.TRACK_TRIALS} trials, K = 1-3, p_f "
         "0.02-0.3, reduced windows): every rate at or above the bound within 3 binomial standard errors.",
@@ -782,7 +782,7 @@ CLAIMS: list[Claim] = [
         paper="ATC10",
         locator="Eqs. (B.6), (C.14); Sec. 2.3",
         quantity="probability that a 24-sample window at p_f = 0.2 holds no declaration, over the "
-        "independent-sample value (1 - p_f)^24 used by (B.6) and (C.14)",
+        "independent-sample value $(1 - p_f)^{24}$ used by (B.6) and (C.14)",
         published=1.0,
         unit="",
         compute=window_empty_ratio,
@@ -843,7 +843,8 @@ CLAIMS: list[Claim] = [
     _statement(
         "ATC10-eqD.17-direct",
         "Eqs. (D.17), (2.7.1)",
-        "p_f = 1/2 - 1/2 erf(sqrt(P0 B tau / (2 J)) - phi), with p_f -> 0 as J -> 0 and p_f -> p_d as "
+        "$p_f = \\frac{1}{2} - \\frac{1}{2} \\operatorname{erf}(\\sqrt{P_0 B \\tau / (2 J)} - \\phi)$, with "
+        "$p_f \\to 0$ as $J \\to 0$ and $p_f \\to p_d$ as "
         "J -> infinity",
         _d17_matches_direct,
         "navcore's p_f against the threshold set from p_d and the noise-only Gaussian tail (scipy), with "

@@ -529,7 +529,7 @@ CLAIMS = [
     _s(
         "ATC10-eq3.4.10-second-moment",
         "Eqs. (3.4.9)-(3.4.10)",
-        "E n^2 of the gated sum",
+        "$E n^2$ of the gated sum",
         second_moment_identity,
         "sympy, three interferers with general moments.",
         N_,
@@ -573,7 +573,7 @@ CLAIMS = [
     _s(
         "ATC10-sec3.7-convexity-operating",
         "Theorem 3.2 proof, (3.7.15)",
-        "ln(1 - q + q cosh(rho sqrt(beta))) convex in beta at the operating points",
+        "$\\ln(1 - q + q \\cosh(\\rho \\sqrt{\\beta}))$ convex in $\\beta$ at the operating points",
         convex_operating,
         "Second derivative positive for rho sqrt(beta) up to 8 (operating points reach 1.9).",
         R_,
@@ -653,7 +653,7 @@ CLAIMS = [
     _s(
         "ATC10-appF-identity",
         "Eqs. (F.2)-(F.6)",
-        "int x^2 C_ij = (1/4tau) int R_ii R_jj",
+        "$\\int x^2 C_{ij} = (1/4\\tau) \\int R_{ii} R_{jj}$",
         appf_identity,
         "Random 31-chip codes: int X_ij^2 = int R_ii R_jj to 1e-12.",
         Z_,
@@ -661,7 +661,7 @@ CLAIMS = [
     _s(
         "ATC10-thm3.3-bound",
         "Theorem 3.3, (F.7)-(F.8)",
-        "E(n^2) <= sum 1/(4 alpha sqrt(W_i W_j))",
+        "$E(n^2) \\le \\sum 1/(4 \\alpha \\sqrt{W_i W_j})$",
         thm33_bound,
         "Cauchy-Schwarz on random codes.",
         Z_,
@@ -722,7 +722,7 @@ CLAIMS = [
         id="ATC10-eq3.8.6-printed",
         paper="ATC10",
         locator="Eq. (3.8.6)",
-        quantity="ln E exp(mu n) at mu = 1 as printed (mu^2/2)",
+        quantity="$\\ln E \\exp(\\mu n)$ at $\\mu = 1$ as printed ($\\mu^2/2$)",
         published=0.5,
         unit="",
         compute=printed_386_log_mgf,
@@ -737,12 +737,12 @@ CLAIMS = [
     _s(
         "ATC10-eq3.8.7-bound",
         "Eqs. (3.8.7)-(3.8.9)",
-        "p_f <= exp(-theta^2/(2p))",
+        "$p_f \\le \\exp(-\\theta^2/(2p))$",
         gaussian_bound,
         "sympy.",
         G_,
     ),
-    _s("ATC10-eq3.8.12-series", "Eq. (3.8.12)", "sqrt(1 + x) series", series_3812, "sympy.", G_),
+    _s("ATC10-eq3.8.12-series", "Eq. (3.8.12)", "$\\sqrt{1 + x}$ series", series_3812, "sympy.", G_),
     _s(
         "ATC10-eq3.8.16-equals-closed-form",
         "Eqs. (3.8.10)-(3.8.11), (3.8.16)",

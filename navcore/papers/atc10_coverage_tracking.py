@@ -790,10 +790,12 @@ ERRATA = [
         paper="ATC10",
         kind="typography",
         locator="Sec. 4.5.2, after (4.5.9); (4.3.0); (4.5.3)-(4.5.4); Sec. 4.5.3; (4.5.37)",
-        printed="tau_n = sum_{i<=n} w_i + alpha_0 (and smaller slips: (1/tau^2) mn, a stray 1 in (4.5.3), "
-        "sigma_gamma^2 for sigma^2 gamma, (4.5.37) citing (4.5.30))",
-        finding="(4.5.9) implies tau_n + alpha_n = alpha_0, hence tau_n = n alpha_0 + sum w_i; the printed "
-        "form has variance sigma0^2 (n + 1), not the sigma0^2 (n + n^2) of (4.3.1c)",
+        printed="$\\tau_n = \\sum_{i \\le n} w_i + \\alpha_0$ (and smaller slips: $(1/\\tau^2)\\, mn$, a "
+        "stray 1 in (4.5.3), "
+        "$\\sigma_\\gamma^2$ for $\\sigma^2 \\gamma$, (4.5.37) citing (4.5.30))",
+        finding="(4.5.9) implies $\\tau_n + \\alpha_n = \\alpha_0$, hence $\\tau_n = n \\alpha_0 + \\sum "
+        "w_i$; the printed "
+        "form has variance $\\sigma_0^2 (n + 1)$, not the $\\sigma_0^2 (n + n^2)$ of (4.3.1c)",
         evidence="exact propagation of (4.5.9) reproduces (4.3.1b) (ATC10-sec4.5.2-state-model); a Monte "
         "Carlo of the printed sum gives the (n + 1) variance",
         claims=("ATC10-sec4.5.2-tau-sum-printed",),
@@ -805,9 +807,11 @@ ERRATA = [
         kind="overstatement",
         locator="Sec. 4.5.4 ('the second term in (4.5.35) always significantly dominates the first term')",
         printed="the second term always significantly dominates, so tracking reduces Var to about psi Var0",
-        finding="after tracking, gamma S = (psi/beta) S is smaller than tr{(F'F)^-1} in Example I at "
-        "sigma0 = 5 ns (2.38 against 7.84), so Var[||xi_pN||] / (psi Var[||xi_p0||]) is 3.2, not about 1; "
-        "the dominance holds at n = 0 (S/beta = 23.9 against 7.84), not 'always'",
+        finding="after tracking, $\\gamma S = (\\psi/\\beta) S$ is smaller than "
+        "$\\operatorname{tr}\\{(F'F)^{-1}\\}$ in Example I at "
+        "$\\sigma_0$ = 5 ns (2.38 against 7.84), so $\\mathrm{Var}[\\|\\xi_{pN}\\|] / (\\psi "
+        "\\mathrm{Var}[\\|\\xi_{p0}\\|])$ is 3.2, not about 1; "
+        "the dominance holds at n = 0 ($S/\\beta$ = 23.9 against 7.84), not 'always'",
         evidence="Table 4.2 and 4.3 values with psi from the real root of the cubic (independent of the "
         "closed form)",
         claims=("ATC10-sec4.5.4-second-term-dominates", "ATC10-sec4.5.4-psi-approx-exI-s5"),
@@ -890,7 +894,7 @@ CLAIMS = [
     _s(
         "ATC10-sec4.5.1-finite-iff",
         "Sec. 4.5.1",
-        "sigma^2_xi_tau0 finite iff the dilution is finite",
+        "$\\sigma^2_{\\xi_{\\tau 0}}$ finite iff the dilution is finite",
         finite_iff,
         "beta > 0 and rank(HF) = 3 with all satellites; beta = 0 and rank 2 with three.",
         PAGE_GEOMETRY,
@@ -1039,7 +1043,7 @@ CLAIMS = [
     _s(
         "ATC10-sec4.6-tr-increases",
         "Sec. 4.5.4, Sec. 4.6",
-        "tr{(F'F)^-1} increases with three satellites",
+        "$\\operatorname{tr}\\{(F'F)^{-1}\\}$ increases with three satellites",
         tr_increases,
         "Physical geometry: 8.64 > 7.19 (I), 13.6 > 3.68 (II).",
         PAGE_GEOMETRY,
@@ -1085,7 +1089,7 @@ CLAIMS = [
     _s(
         "ATC10-sec4.6-k-identity",
         "Sec. 4.6, geometric dilution k",
-        "k^2 = tr + S/beta = tr P / sigma^2",
+        "$k^2 = \\operatorname{tr} + S/\\beta = \\operatorname{tr} P / \\sigma^2$",
         k_identity,
         "Both examples, physical geometry.",
         PAGE_GEOMETRY,
@@ -1177,7 +1181,8 @@ CLAIMS = [
         id="ATC10-fig4.1-small-alpha",
         paper="ATC10",
         locator="Sec. 4.5.4 (Fig. 4.1), alpha <= 0.3",
-        quantity="largest relative error of psi ~ 1.89 [alpha^(1/3) - (alpha/2)^(2/3)] for alpha <= 0.3",
+        quantity="largest relative error of $\\psi \\approx 1.89 [\\alpha^{1/3} - (\\alpha/2)^{2/3}]$ for "
+        "$\\alpha \\le 0.3$",
         published=0.0,
         unit="",
         compute=approx_small_alpha_error,
@@ -1260,7 +1265,7 @@ CLAIMS = [
     _s(
         "ATC10-appG-newton-error",
         "Appendix G, after (G.1)",
-        "first Newton iterate's error O((k/f0) lambda^2)",
+        "first Newton iterate's error $O((k/f_0) \\lambda^2)$",
         newton_error_order,
         "Log-slope of the error in lambda is 2 and the error is below (k/f0) lambda^2 "
         "(lambda 1e-4 and 1e-5, i.e. the printed 1e-9 scaled up to be resolvable).",
@@ -1269,7 +1274,7 @@ CLAIMS = [
     _s(
         "ATC10-appG-counter-linearisation",
         "Appendix G",
-        "(nN + k)^(2rho) - (nN)^(2rho) ~ 2 rho (nN)^(2rho-1) k",
+        "$(nN + k)^{2\\rho} - (nN)^{2\\rho} \\approx 2 \\rho (nN)^{2\\rho-1} k$",
         counter_linearisation,
         "Relative error below 1e-3 at k/nN = 1e-4.",
         PAGE_TRACKER,
@@ -1322,7 +1327,7 @@ CLAIMS = [
         id="ATC10-appG-offset-like-flicker",
         paper="ATC10",
         locator="Appendix G",
-        quantity="correlation of t^2 and t^(2 rho), rho = 0.99, over 1-100 s",
+        quantity="correlation of $t^2$ and $t^{2\\rho}$, $\\rho$ = 0.99, over 1-100 s",
         published=1.0,
         unit="",
         compute=offset_like_flicker,
@@ -1350,7 +1355,7 @@ CLAIMS = [
     _s(
         "ATC10-appH-proposition",
         "Appendix H, Proposition, (H.12)-(H.13)",
-        "M0'(M0 P M0')^-1 M0 = P^-1 (I - GK)",
+        "$M_0'(M_0 P M_0')^{-1} M_0 = P^{-1} (I - GK)$",
         proposition_holds,
         "M0 from the SVD of G.",
         PAGE_TRACKER,
@@ -1366,7 +1371,7 @@ CLAIMS = [
     _s(
         "ATC10-appH-scalar-gain-printed",
         "Appendix H, corollary (H.26)",
-        "the printed scalar gain sigma^2/(...) is the LMMSE gain",
+        "the printed scalar gain $\\sigma^2/(\\ldots)$ is the LMMSE gain",
         scalar_gain_printed_matches,
         "The printed numerator sigma^2 differs from H of (H.20); sigma_x^2 is right.",
         PAGE_TRACKER,
@@ -1378,7 +1383,7 @@ CLAIMS = [
     _s(
         "ATC10-appH-scalar-gain-corrected",
         "Appendix H, corollary (H.26)",
-        "with sigma_x^2 in the numerator the scalar gain equals (H.20)",
+        "with $\\sigma_x^2$ in the numerator the scalar gain equals (H.20)",
         scalar_gain_corrected_matches,
         "Seeded example, F = 1.",
         PAGE_TRACKER,

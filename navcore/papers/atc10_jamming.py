@@ -597,9 +597,11 @@ ERRATA = [
         paper="ATC10",
         kind="typography",
         locator="Eqs. (2.8.1), (2.8.3)",
-        printed="p_f = 1/2 - 1/2 erf(1/2 sqrt(P0 B tau / J) - phi)",
-        finding="The erf argument is sqrt(P0 B tau / (2 J)) - phi, as in (2.7.1), (2.8.4) and (D.17); "
-        "the printed 1/2 should be 1/sqrt(2).",
+        printed="$p_f = \\frac{1}{2} - \\frac{1}{2} \\operatorname{erf}\\left(\\frac{1}{2} \\sqrt{P_0 B "
+        "\\tau / J} - \\phi\\right)$",
+        finding="The erf argument is $\\sqrt{P_0 B \\tau / (2 J)} - \\phi$, as in (2.7.1), (2.8.4) and "
+        "(D.17); "
+        "the printed $1/2$ should be $1/\\sqrt{2}$.",
         evidence="Appendix D re-derived in the book (sympy) and checked by a seeded Monte Carlo of the "
         "matched-filter output; Table 2.1 is reproduced only with the corrected argument (the printed one "
         "moves every threshold 3.01 dB lower).",
@@ -611,12 +613,12 @@ ERRATA = [
         paper="ATC10",
         kind="derivation",
         locator="Eqs. (A.9)-(A.10) against (A.11), (B.1)",
-        printed="Decide H1 if K_0 <= tK (K_0 the number of empty lists)",
+        printed="Decide $H_1$ if $K_0 \\le tK$ ($K_0$ the number of empty lists)",
         finding="The bounds (A.17), (B.11), the figures and the tables use the rule of (A.11)/(B.1) and of "
         "Sec. 2.4: decide H1 if more than tK lists are non-empty. (A.11) does not follow from (A.10); the "
         "two are the same family with t replaced by 1 - t.",
         evidence="Exact binomial probabilities: at the K = 10, P_DL = 0.999 design point the literal (A.9) "
-        "rule with t = 0 detects with probability q^K = 9.6e-4, far below the bound 0.999 that holds "
+        "rule with t = 0 detects with probability $q^K$ = 9.6e-4, far below the bound 0.999 that holds "
         "(with equality) for the (A.11) rule.",
         claims=("ATC10-eqA.9-rule-at-design",),
         discussed_in=PAGE,
@@ -643,8 +645,9 @@ ERRATA = [
         locator="Table 1.1, K = 1 beamwidth",
         printed="15 degrees",
         finding="About 20-21 degrees, as Sec. 2.7 itself says ('an antenna with a 20 degree beamwidth').",
-        evidence="The 18 dB gain implied by the ERP and rf columns gives 21.4 degrees by 70 lambda/D "
-        "(1.6 GHz, eta = 0.6) and 20.7 degrees by sqrt(27000/G); the other three rows agree with the same "
+        evidence="The 18 dB gain implied by the ERP and rf columns gives 21.4 degrees by $70 \\lambda/D$ "
+        "(1.6 GHz, eta = 0.6) and 20.7 degrees by $\\sqrt{27000/G}$; the other three rows agree with the "
+        "same "
         "model within half a degree.",
         claims=("ATC10-tab1.1-K1-beamwidth",),
         discussed_in=PAGE_T11,
@@ -654,14 +657,16 @@ ERRATA = [
         paper="ATC10",
         kind="typography",
         locator="Eqs. (C.1), (C.11) and cross-references of App. C",
-        printed="(C.1): [1 - p_f]^(2B alpha) [1 - (1 - p_f)^(4B beta)]^3; (C.11) conditions on gamma_D(i, "
-        "K) = 1",
-        finding="(C.1) should read [1 - (1 - p_f)^(2B alpha)][1 - (1 - p_f)^(4B beta)]^3 = F(p_f) of (B.6); "
-        "(C.11) should condition on gamma_D(i, K-1) = 1; 'than (C.4)' means (C.5), 'in (C.8)' means (C.10) "
+        printed="(C.1): $[1 - p_f]^{2B\\alpha} [1 - (1 - p_f)^{4B\\beta}]^3$; (C.11) conditions on "
+        "$\\gamma_D(i, K) = 1$",
+        finding="(C.1) should read $[1 - (1 - p_f)^{2B\\alpha}][1 - (1 - p_f)^{4B\\beta}]^3 = F(p_f)$ of "
+        "(B.6); "
+        "(C.11) should condition on $\\gamma_D(i, K-1) = 1$; 'than (C.4)' means (C.5), 'in (C.8)' means "
+        "(C.10) "
         "and 'applied to (C.14)' means (C.16).",
         evidence="At the K = 1 design threshold the printed (C.1) is smaller than F by a factor of about "
-        "e^-20 (mpmath), whereas (2.5.12) and (C.17) use F; the recursion (C.15)-(C.16) only closes with "
-        "gamma_D(i, K-1).",
+        "$e^{-20}$ (mpmath), whereas (2.5.12) and (C.17) use F; the recursion (C.15)-(C.16) only closes with "
+        "$\\gamma_D(i, K-1)$.",
         claims=("ATC10-eqC.1-printed",),
         discussed_in=PAGE,
     ),
@@ -670,8 +675,8 @@ ERRATA = [
         paper="ATC10",
         kind="typography",
         locator="Eq. (A.15)",
-        printed="P_D >= 1 exp -K(...)",
-        finding="A minus sign is lost: P_D >= 1 - exp(-K(...)), as in (A.17) and (2.4.2).",
+        printed="$P_D \\ge 1 \\exp -K(\\ldots)$",
+        finding="A minus sign is lost: $P_D \\ge 1 - \\exp(-K(\\ldots))$, as in (A.17) and (2.4.2).",
         evidence="Read literally the right side at the K = 10, P_DL = 0.999 design point is 0.001, which is "
         "the probability that all ten lists are empty (exact binomial), not a lower bound on detection.",
         claims=("ATC10-eqA.15-printed",),
@@ -682,11 +687,13 @@ ERRATA = [
         paper="ATC10",
         kind="typography",
         locator="Eqs. (A.7)-(A.8); text after (A.13), (A.18)",
-        printed="K ln(lambda_1 P(rho=1|H0)/P(rho=1|H1)); the label (A.8) is empty; 'J' for nu",
-        finding="The ratio is inverted: K ln(lambda_1 P(rho=1|H1)/P(rho=1|H0)). Harmless, since lambda_1 is "
-        "free; 'J' in the text is the Chernoff parameter nu.",
-        evidence="Taking logarithms of (A.6), Lambda_1 = a^K0 b^(K-K0) <= lambda_1^K, gives "
-        "K_0 ln(a/b) <= K ln(lambda_1/b).",
+        printed="$K \\ln(\\lambda_1 P(\\rho=1|H_0)/P(\\rho=1|H_1))$; the label (A.8) is empty; 'J' for "
+        "$\\nu$",
+        finding="The ratio is inverted: $K \\ln(\\lambda_1 P(\\rho=1|H_1)/P(\\rho=1|H_0))$. Harmless, since "
+        "$\\lambda_1$ is "
+        "free; 'J' in the text is the Chernoff parameter $\\nu$.",
+        evidence="Taking logarithms of (A.6), $\\Lambda_1 = a^{K_0} b^{K-K_0} \\le \\lambda_1^K$, gives "
+        "$K_0 \\ln(a/b) \\le K \\ln(\\lambda_1/b)$.",
         claims=("ATC10-eqA.7-printed",),
         discussed_in=PAGE,
     ),
@@ -695,9 +702,11 @@ ERRATA = [
         paper="ATC10",
         kind="derivation",
         locator="Eqs. (2.5.4), (2.8.3), (B.9)-(B.11); (C.14)",
-        printed="exponent Kt + 1; sample count (8B/3) v alpha / c",
-        finding="When Kt is not an integer the count of lists is floor(Kt) + 1; the real exponent gives a "
-        "valid but looser bound. Likewise (8B/3) v alpha/c = 23.86 is not an integer number of samples; "
+        printed="exponent $Kt + 1$; sample count $(8B/3)\\, v \\alpha / c$",
+        finding="When Kt is not an integer the count of lists is $\\lfloor Kt \\rfloor + 1$; the real "
+        "exponent gives a "
+        "valid but looser bound. Likewise $(8B/3)\\, v \\alpha/c$ = 23.86 is not an integer number of "
+        "samples; "
         "the book follows the paper and uses both as real numbers.",
         evidence="Rounding n_v down to 23 moves the K = 1000, P_DL = 0.999 threshold from 75.7 to 81.7 dBW; "
         "the K <= 100 rows move by less than 0.4 dB.",
@@ -709,11 +718,13 @@ ERRATA = [
         paper="ATC10",
         kind="derivation",
         locator="Sec. 2.7, level N_F = 0.9 N_T",
-        printed="N_F of 0.9 N_T taken as the failure indicator",
-        finding="0.9 N_T = N_T - N is the supremum of N_FL, approached as J grows but never reached; the "
+        printed="$N_F$ of $0.9 N_T$ taken as the failure indicator",
+        finding="$0.9 N_T = N_T - N$ is the supremum of $N_{FL}$, approached as $J$ grows but never reached; "
+        "the "
         "book "
         "uses 99 % of it.",
-        evidence="F(p_d) = 1 to double precision with the paper's sample counts, so N_FL -> 0.9 N_T from "
+        evidence="F(p_d) = 1 to double precision with the paper's sample counts, so $N_{FL} \\to 0.9 N_T$ "
+        "from "
         "below.",
         no_claim_reason="the level is a supremum approached from below: the gap 0.9 N_T - N_FL is of order "
         "(1 - p_d)^(4 B beta), below 10^-(10^5), so no printed number or figure can differ from the "
@@ -739,8 +750,8 @@ ERRATA = [
         paper="ATC10",
         kind="units",
         locator="Sec. 2.6 and App. D (before (D.17))",
-        printed="Sec. 2.6: 'The average power of s_i(t) during transmission is P_0 = E/tau'; App. D: "
-        "'E = P_o tau, where P_o is peak signature power'",
+        printed="Sec. 2.6: 'The average power of s_i(t) during transmission is $P_0 = E/\\tau$'; App. D: "
+        "'$E = P_o \\tau$, where $P_o$ is peak signature power'",
         finding="The two names agree only for a constant-envelope signature; for any other the peak power "
         "exceeds E/tau. Read P0 as Sec. 2.6 defines it, the average power during the pulse, E/tau. No "
         "number changes: every result depends on P0 and tau only through E = P0 tau (10 mJ).",
@@ -779,10 +790,11 @@ ERRATA = [
         paper="ATC10",
         kind="derivation",
         locator="Eqs. (C.2)-(C.5)",
-        printed="|T_1(1) - T_2(1)| <= v alpha / c seconds (and likewise for satellite 2)",
-        finding="T_1(1) - T_2(1) is the change in satellite 1's reception time between two successive "
+        printed="$|T_1(1) - T_2(1)| \\le v \\alpha / c$ seconds (and likewise for satellite 2)",
+        finding="$T_1(1) - T_2(1)$ is the change in satellite 1's reception time between two successive "
         "pulses: one repetition period alpha plus the change in range. Only the range change is bounded by "
-        "v alpha / c. The periods cancel in the difference of differences of (C.2), so (C.5) is right when "
+        "$v \\alpha / c$. The periods cancel in the difference of differences of (C.2), so (C.5) is right "
+        "when "
         "the triangle inequality is applied to the range-change terms alone. The bound also ignores the "
         "satellites' own motion: only the aircraft moves the ranges.",
         evidence="With alpha = 1 s and v = 600 mph, v alpha / c = 0.895 us, while the printed left "
@@ -812,9 +824,10 @@ ERRATA = [
         paper="ATC10",
         kind="typography",
         locator="App. A, last line (after (A.18))",
-        printed="P_D > p_d^4",
-        finding="The K = 1 bound is P_D >= p_d^4, as printed in (2.4.1) and (A.10a). The appendix derives "
-        "the non-strict bound, and p_d^4 is approached as p_f -> 0.",
+        printed="$P_D > p_d^4$",
+        finding="The K = 1 bound is $P_D \\ge p_d^4$, as printed in (2.4.1) and (A.10a). The appendix "
+        "derives "
+        "the non-strict bound, and $p_d^4$ is approached as $p_f \\to 0$.",
         evidence="(2.4.1) and (A.10a) print >=. At K = 1 the list is non-empty with probability p_d^4 from "
         "the true arrival alone, plus what noise declarations add, which vanishes as the jammer power goes "
         "to zero; the closed-form bound at K = 1 equals p_d^4 exactly.",
@@ -850,14 +863,16 @@ ERRATA = [
         paper="ATC10",
         kind="unstated-assumption",
         locator="Eq. (A.16)",
-        printed="P(rho = 1 | H_1) ~ p_d^4, 'the approximation holds closely assuming reasonably large "
+        printed="$P(\\rho = 1 | H_1) \\approx p_d^4$, 'the approximation holds closely assuming reasonably "
+        "large "
         "enough values for p_d'",
         finding="The K = 1000 designs do not have a large p_d: p_d = 0.215 for P_DL = 0.88, p_d = 0.250 for "
         "P_DL = 0.98, p_d = 0.288 for P_DL = 0.999, so p_d^4 <= 0.0069, while near the jamming "
         "threshold noise "
         "alone fills a list almost surely. The approximation fails there, but, as the text says, the bound "
         "(A.17) stays valid: it is only loose.",
-        evidence="P(rho = 1 | H_1) >= p_d^4 because the true arrival alone fills the list, and the Chernoff "
+        evidence="$P(\\rho = 1 | H_1) \\ge p_d^4$ because the true arrival alone fills the list, and the "
+        "Chernoff "
         "exponent D(t || q) increases with q for q > t (dD/dq = (q - t) / (q (1 - q))), so replacing "
         "P(rho = 1 | H_1) by the smaller p_d^4 can only lower the bound. At the K = 1000, P_DL = 0.999 "
         "threshold p_f = 0.27, and the noise-only list factor F(p_f) of (B.6) differs from 1 by 4e-304 "
@@ -1100,7 +1115,7 @@ CLAIMS: list[Claim] = [
         id="ATC10-eq2.4.1",
         paper="ATC10",
         locator="Eqs. (2.4.1), (A.10a)",
-        quantity="for K = 1 the detection bound is p_d^4",
+        quantity="for K = 1 the detection bound is $p_d^4$",
         published=True,
         unit="statement",
         compute=_k1_bound_is_pd4,
@@ -1130,7 +1145,7 @@ CLAIMS: list[Claim] = [
         id="ATC10-appA-limit",
         paper="ATC10",
         locator="App. A, after (A.18)",
-        quantity="if t < p_d^4 then P_D -> 1 as K -> infinity",
+        quantity="if $t < p_d^4$ then $P_D \\to 1$ as $K \\to \\infty$",
         published=True,
         unit="statement",
         compute=_bound_tends_to_one,
@@ -1219,7 +1234,7 @@ CLAIMS: list[Claim] = [
         id="ATC10-eq2.8.1-erf-coefficient",
         paper="ATC10",
         locator="Eqs. (2.8.1), (2.8.3)",
-        quantity="coefficient c of sqrt(P0 B tau / J) in the erf argument of p_f",
+        quantity="coefficient $c$ of $\\sqrt{P_0 B \\tau / J}$ in the erf argument of $p_f$",
         published=0.5,
         unit="",
         compute=erf_argument_coefficient,

@@ -701,7 +701,8 @@ ERRATA = [
         printed="the upper and lower bounds are asymptotically tight: they approach the actual ROC "
         "as N increases",
         finding="At fixed noise power and threshold the bounds do not approach the actual ROC: as N "
-        "grows the Chernoff bound tends to exp(-theta^2/(2p)), the actual p_f to Q(theta/sqrt(p)), "
+        "grows the Chernoff bound tends to $\\exp(-\\theta^2/(2p))$, the actual $p_f$ to "
+        "$Q(\\theta/\\sqrt{p})$, "
         "and the corrected lower bound stays several e-folds lower still. The bounds are tight "
         "only in the exponent, when the exponent itself grows (large deviations), so comparing "
         "exponents as Sec. 3.8 does is legitimate but 'we lose nothing' overstates it.",
@@ -715,14 +716,17 @@ ERRATA = [
         paper="ATC10",
         kind="derivation",
         locator="Eq. (3.5.14)",
-        printed="p_f >= 1/2 exp[-rho theta + (sum ((1-q) + q int e^{rho x} C)) - phi_1], "
-        "phi_1 = -2 rho_1 sqrt(2 mu''), with rho the Chernoff optimum of (3.5.7)",
-        finding="The exponent must use rho_1 throughout, include the logarithm, and subtract "
-        "+2 rho_1 sqrt(2 mu''(rho_1)): p_f >= 1/2 exp[mu(rho_1) - rho_1 theta - 2 rho_1 sqrt(2 mu''(rho_1))] "
-        "with mu'(rho_1) - sqrt(2 mu''(rho_1)) = theta. The corrected bound is valid but 10^2-10^9 "
+        printed="$p_f \\ge \\frac{1}{2} \\exp[-\\rho\\theta + (\\sum ((1-q) + q \\int e^{\\rho x} C)) - "
+        "\\phi_1]$, "
+        "$\\phi_1 = -2 \\rho_1 \\sqrt{2 \\mu''}$, with $\\rho$ the Chernoff optimum of (3.5.7)",
+        finding="The exponent must use $\\rho_1$ throughout, include the logarithm, and subtract "
+        "$+2 \\rho_1 \\sqrt{2 \\mu''(\\rho_1)}$: $p_f \\ge \\frac{1}{2} \\exp[\\mu(\\rho_1) - \\rho_1 "
+        "\\theta - 2 \\rho_1 \\sqrt{2 \\mu''(\\rho_1)}]$ "
+        "with $\\mu'(\\rho_1) - \\sqrt{2 \\mu''(\\rho_1)} = \\theta$. The corrected bound is valid but "
+        "$10^2$-$10^9$ "
         "times below the actual p_f at N = 1e5, tau/alpha = 2e-5, so Sec. 3.8's argument "
         "'ROC_g p_f below the lower bound of the actual p_f' cannot be made with it.",
-        evidence="Tilted-Chebyshev derivation; the printed version (sign of phi_1) lies above the "
+        evidence="Tilted-Chebyshev derivation; the printed version (sign of $\\phi_1$) lies above the "
         "Chernoff upper bound; the corrected one lies below the exact compound-binomial and "
         "stratified Monte Carlo tails at every tested point (checked by the library's tests).",
         claims=(
@@ -737,8 +741,8 @@ ERRATA = [
         kind="typography",
         locator="Sec. 3.8, worked example",
         printed="p = 50",
-        finding="p = (N-1)/(B alpha) = (2e5 - 1)/(1e7 * 1 s) = 0.02 = 1/50.",
-        evidence="Direct arithmetic; only p = 1/50 gives the printed Exp_g = 12.5 = 0.25/p.",
+        finding="$p = (N-1)/(B \\alpha)$ = (2e5 - 1)/(1e7 × 1 s) = 0.02 = 1/50.",
+        evidence="Direct arithmetic; only p = 1/50 gives the printed $\\mathrm{Exp}_g = 12.5 = 0.25/p$.",
         claims=("ATC10-sec3.8-example-p",),
         discussed_in=PAGE_GAUSS,
     ),
@@ -747,9 +751,10 @@ ERRATA = [
         paper="ATC10",
         kind="units",
         locator="Sec. 3.8, worked example against Eq. (3.8.8)",
-        printed="Exp_g = a^2/p",
-        finding="Eq. (3.8.8) defines Exp_g = a^2/(2p), which gives 6.25, not 12.5. The example's "
-        "a^2/p corresponds to p being the one-sided white-noise density N_0, with output variance N_0/2.",
+        printed="$\\mathrm{Exp}_g = a^2/p$",
+        finding="Eq. (3.8.8) defines $\\mathrm{Exp}_g = a^2/(2p)$, which gives 6.25, not 12.5. The example's "
+        "$a^2/p$ corresponds to $p$ being the one-sided white-noise density $N_0$, with output variance "
+        "$N_0/2$.",
         evidence="Eq. (3.8.7) is re-derived with sympy on the page; 0.25/(2 * 0.02) = 6.25.",
         claims=("ATC10-sec3.8-example-expg",),
         discussed_in=PAGE_GAUSS,
@@ -759,9 +764,10 @@ ERRATA = [
         paper="ATC10",
         kind="derivation",
         locator="Eqs. (3.8.5)-(3.8.7)",
-        printed="E e^{mu n} = exp(mu^2/2); p_f <= exp(-mu theta - mu^2/2)",
-        finding="E e^{mu n} = exp(mu^2 p/2) and p_f <= exp(-mu theta + mu^2 p/2); the optimum "
-        "mu = theta/p and the final bound exp(-theta^2/(2p)) are right.",
+        printed="$E e^{\\mu n} = \\exp(\\mu^2/2)$; $p_f \\le \\exp(-\\mu\\theta - \\mu^2/2)$",
+        finding="$E e^{\\mu n} = \\exp(\\mu^2 p/2)$ and $p_f \\le \\exp(-\\mu\\theta + \\mu^2 p/2)$; the "
+        "optimum "
+        "$\\mu = \\theta/p$ and the final bound $\\exp(-\\theta^2/(2p))$ are right.",
         evidence="sympy integration of the Gaussian MGF on the page.",
         discussed_in=PAGE_GAUSS,
         claims=("ATC10-eq3.8.6-printed",),
@@ -771,12 +777,13 @@ ERRATA = [
         paper="ATC10",
         kind="unstated-assumption",
         locator="Appendix E, after Eq. (E.15)",
-        printed="The second term is O(N^{-3/2})",
-        finding="The lambda_3 term is O(N^{-1}) when lambda_3 != 0; it vanishes only because a uniform "
+        printed="The second term is $O(N^{-3/2})$",
+        finding="The $\\lambda_3$ term is $O(N^{-1})$ when $\\lambda_3 \\neq 0$; it vanishes only because a "
+        "uniform "
         "signature set (or a random carrier phase) makes C symmetric. The leading correction is "
-        "then the lambda_4 term, O(N^{-3/2}) with a constant of order 1/q, so the practical "
-        "expansion parameter is 1/(N q) = alpha/(2 N tau), which is 1/4 at the Sec. 3.6 values.",
-        evidence="Log-log slope of the lambda_3 term for an asymmetric C, against the dimensional count.",
+        "then the $\\lambda_4$ term, $O(N^{-3/2})$ with a constant of order $1/q$, so the practical "
+        "expansion parameter is $1/(N q) = \\alpha/(2 N \\tau)$, which is 1/4 at the Sec. 3.6 values.",
+        evidence="Log-log slope of the $\\lambda_3$ term for an asymmetric C, against the dimensional count.",
         claims=("ATC10-appE-lambda3-order",),
         discussed_in=PAGE_NOISE,
     ),
@@ -785,9 +792,11 @@ ERRATA = [
         paper="ATC10",
         kind="derivation",
         locator="Theorem 3.3 and Eq. (F.8)",
-        printed="E(n^2) <= sum_j 1/(4 alpha sqrt(W_j) W_j); (F.8) with exponents -1 and -1/2 and 'E(n)^2'",
-        finding="E(n^2) <= sum_j 1/(4 alpha sqrt(W_i W_j)); both Cauchy-Schwarz factors carry +1/2.",
-        evidence="The printed form has the wrong dimension (s^{1/2}); the corrected bound holds and "
+        printed="$E(n^2) \\le \\sum_j 1/(4 \\alpha \\sqrt{W_j}\\, W_j)$; (F.8) with exponents $-1$ and "
+        "$-1/2$ and '$E(n)^2$'",
+        finding="$E(n^2) \\le \\sum_j 1/(4 \\alpha \\sqrt{W_i W_j})$; both Cauchy-Schwarz factors carry "
+        "$+1/2$.",
+        evidence="The printed form has the wrong dimension (s$^{1/2}$); the corrected bound holds and "
         "is attained for equal autocorrelations (exact piecewise-linear integrals).",
         discussed_in=PAGE_ZAKAI,
         claims=("ATC10-thm3.3-printed",),
@@ -797,11 +806,11 @@ ERRATA = [
         paper="ATC10",
         kind="unstated-assumption",
         locator="Sec. 3.9, W = [(4/3) tau_c (1 + 2 tau_c/tau + 2 (tau_c/tau)^2)]^{-1}",
-        printed="W ~ (3/4)/tau_c for PSK sequences with good autocorrelation",
-        finding="The formula is exact for an idealised autocorrelation with alternating +-tau_c/tau "
+        printed="$W \\approx (3/4)/\\tau_c$ for PSK sequences with good autocorrelation",
+        finding="The formula is exact for an idealised autocorrelation with alternating $\\pm\\tau_c/\\tau$ "
         "sidelobes over L+1 lags; real long binary codes have far more sidelobe energy "
-        "(1023-chip m-sequence: W tau_c = 0.563; random codes about 0.375). The noise power "
-        "N tau_c/(3 alpha) nevertheless holds for independent random codes, because the "
+        "(1023-chip m-sequence: $W \\tau_c$ = 0.563; random codes about 0.375). The noise power "
+        "$N \\tau_c/(3 \\alpha)$ nevertheless holds for independent random codes, because the "
         "cross terms of (F.6) average out.",
         evidence="Exact piecewise-linear integration against brute-force trapezoid integration of "
         "the chip waveform; seeded physical simulation of random PSK interferers.",
@@ -813,10 +822,14 @@ ERRATA = [
         paper="ATC10",
         kind="derivation",
         locator="Theorem 3.2, proof after Eq. (3.7.16)",
-        printed="(3.7.15) is strictly convex in {sqrt(beta_j)}, hence a unique minimum under (3.7.16)",
-        finding="The constraint sum beta_j = const is a sphere in sqrt(beta), not a convex set. The "
-        "argument works with convexity of ln(1 - q + q cosh(rho sqrt(beta))) in beta, which holds "
-        "only for rho sqrt(beta) below about 13 at q = 4e-5; the Sec. 3.6 operating points are well inside.",
+        printed="(3.7.15) is strictly convex in $\\{\\sqrt{\\beta_j}\\}$, hence a unique minimum under "
+        "(3.7.16)",
+        finding="The constraint $\\sum \\beta_j$ = const is a sphere in $\\sqrt{\\beta}$, not a convex set. "
+        "The "
+        "argument works with convexity of $\\ln(1 - q + q \\cosh(\\rho \\sqrt{\\beta}))$ in $\\beta$, which "
+        "holds "
+        "only for $\\rho \\sqrt{\\beta}$ below about 13 at q = 4e-5; the Sec. 3.6 operating points are well "
+        "inside.",
         evidence="Second derivative evaluated numerically on the page.",
         discussed_in=PAGE_ROC,
         claims=("ATC10-sec3.7-convexity-unconditional",),
@@ -826,10 +839,13 @@ ERRATA = [
         paper="ATC10",
         kind="typography",
         locator="Sec. 3.3-3.9, App. E (typographical)",
-        printed="R_ij for R_ii; (1-2tau)/alpha; 'rho alpha' in (3.7.20); missing sqrt in (3.7.27); "
-        "Exp_g/(N tau) in (3.8.16); tau/alpha = 10^5 and N = 2(10^-5); (E.7) e^{+jnv}",
-        finding="R_ii; 1 - 2tau/alpha; p alpha; theta/sqrt(2 N tau p/alpha); Exp_g/(N tau/alpha); "
-        "tau/alpha = 1e-5 and N = 2e5; e^{-jnv}.",
+        printed="$R_{ij}$ for $R_{ii}$; $(1-2\\tau)/\\alpha$; '$\\rho\\alpha$' in (3.7.20); missing square "
+        "root in (3.7.27); "
+        "$\\mathrm{Exp}_g/(N \\tau)$ in (3.8.16); $\\tau/\\alpha = 10^5$ and $N = 2(10^{-5})$; (E.7) "
+        "$e^{+jnv}$",
+        finding="$R_{ii}$; $1 - 2\\tau/\\alpha$; $p\\alpha$; $\\theta/\\sqrt{2 N \\tau p/\\alpha}$; "
+        "$\\mathrm{Exp}_g/(N \\tau/\\alpha)$; "
+        "$\\tau/\\alpha$ = 1e-5 and N = 2e5; $e^{-jnv}$.",
         evidence="Each corrected form is the one whose numbers the book reproduces (closed forms "
         "against numerical optima).",
         discussed_in=PAGE_ROC,
@@ -842,7 +858,8 @@ ERRATA = [
         paper="ATC10",
         kind="inconsistent-numbers",
         locator="Sec. 3.8, worked example",
-        printed="Exp ~ 9 and Exp_g/Exp ~ 1.4 for N = 2e5, tau/alpha = 1e-5, Exp_g = 12.5",
+        printed="$\\mathrm{Exp} \\approx 9$ and $\\mathrm{Exp}_g/\\mathrm{Exp} \\approx 1.4$ for N = 2e5, "
+        "$\\tau/\\alpha$ = 1e-5, $\\mathrm{Exp}_g$ = 12.5",
         finding="Eq. (3.8.16) gives Exp = 9.70 and a ratio of 1.29 at N = 2e5. The printed pair "
         "matches the N = 1e5 curve (8.62, 1.45), which was probably read from Fig. 3.10.",
         evidence="Eq. (3.8.16) against the exact closed form (3.7.24) with theta eliminated.",
@@ -1161,7 +1178,7 @@ CLAIMS = [
         id="ATC10-sec3.8-example-expg",
         paper="ATC10",
         locator="Sec. 3.8, worked example",
-        quantity="Gaussian exponent Exp_g = a^2/p at theta = 0.5",
+        quantity="Gaussian exponent $\\mathrm{Exp}_g = a^2/p$ at $\\theta$ = 0.5",
         published=_expg,
         unit="",
         compute=worked_example_exp_g,

@@ -1118,10 +1118,12 @@ ERRATA += [
         paper="ATC10",
         kind="derivation",
         locator="Eq. (4.5.30); Table 4.2 col. 5; Table 4.3 col. (v); Figs. 4.2-4.3; Sec. 4.6 rules (3)-(4)",
-        printed="E|xi_p|^2 = sigma^2 tr{(F'F)^-1} + sigma_tau^2 1'(F'F)^-1 1 for three satellites "
+        printed="$E|\\xi_p|^2 = \\sigma^2 \\operatorname{tr}\\{(F'F)^{-1}\\} + \\sigma_\\tau^2\\, "
+        "1'(F'F)^{-1} 1$ for three satellites "
         "(Table 4.2: 5.76 and 14.3)",
-        finding="The clock term for K = 3 is 1'F^-1 F^-T 1 = 1'(FF')^-1 1 (= 1'F(F'F)^-2F'1), which is "
-        "rotation invariant: 1.36 and 1.17. The printed 5.76/14.3 equal the frame-dependent 1'(F'F)^-1 1 "
+        finding="The clock term for K = 3 is $1'F^{-1} F^{-T} 1 = 1'(FF')^{-1} 1$ ($= 1'F(F'F)^{-2}F'1$), "
+        "which is "
+        "rotation invariant: 1.36 and 1.17. The printed 5.76/14.3 equal the frame-dependent $1'(F'F)^{-1} 1$ "
         "in east-positive ECEF at the fitted radius ratio. Corrected col. (v): 174/256/901 ft (I), "
         "269/468/1219 ft (II); the three-satellite coasting times are 2-5 times longer.",
         evidence="Table 4.2 col. 5 reproduced to 0.1 % by the printed formula in ECEF and not by the "
@@ -1150,10 +1152,11 @@ ERRATA += [
         paper="ATC10",
         kind="typography",
         locator="Eqs. (4.5.11), (4.5.20), Sec. 4.5.4 (beta)",
-        printed="beta = K^-1 1'F(F'F)^-1F'1",
-        finding="beta = K - 1'F(F'F)^-1F'1 = 1'(I - P)1 (the minus sign read as an inverse).",
-        evidence="gamma_0 = 1/beta (Eq. 4.5.2); the text's 'beta_0 = 0 for K = 3' holds only for K minus; "
-        "Table 4.2 is reproduced with K minus, while (1/K)1'(I-P)1 gives .0094/.00053.",
+        printed="$\\beta = K^{-1} 1'F(F'F)^{-1}F'1$",
+        finding="$\\beta = K - 1'F(F'F)^{-1}F'1 = 1'(I - P)1$ (the minus sign read as an inverse).",
+        evidence="$\\gamma_0 = 1/\\beta$ (Eq. 4.5.2); the text's '$\\beta_0 = 0$ for K = 3' holds only for K "
+        "minus; "
+        "Table 4.2 is reproduced with K minus, while $(1/K)1'(I-P)1$ gives .0094/.00053.",
         claims=("ATC10-sec4.5.4-beta-three-satellites",),
         discussed_in=PAGE_GEOMETRY,
     ),
@@ -1162,11 +1165,13 @@ ERRATA += [
         paper="ATC10",
         kind="typography",
         locator="Eqs. (4.5.10), (4.5.21), (4.5.31), (4.5.35); Sec. 4.5.2 steady state",
-        printed="gamma_1^-1(I - ...); sigma^2_{gamma_{n-1}}; (gamma beta^-1)(Delta - xi); 2/(sigma^2 + beta "
-        "sigma_tau^2); sigma0^2 for sigma^2 in (4.5.31); gamma_n^2 F'(F'F)^-2 F in (4.5.35)",
-        finding="gamma_1 1'(I - P); sigma^2 gamma_{n-1}; (1 - gamma beta)(xi - Delta); "
-        "sigma^2/(sigma^2 + beta sigma_tau^2); gamma_n = s_n/(sigma^2 + beta s_n); "
-        "E|xi|^2 = sigma^2[tr + gamma_n 1'F(F'F)^-2F'1].",
+        printed="$\\gamma_1^{-1}(I - \\ldots)$; $\\sigma^2_{\\gamma_{n-1}}$; $(\\gamma \\beta^{-1})(\\Delta "
+        "- \\xi)$; "
+        "$2/(\\sigma^2 + \\beta \\sigma_\\tau^2)$; $\\sigma_0^2$ for $\\sigma^2$ in (4.5.31); "
+        "$\\gamma_n^2 F'(F'F)^{-2} F$ in (4.5.35)",
+        finding="$\\gamma_1 1'(I - P)$; $\\sigma^2 \\gamma_{n-1}$; $(1 - \\gamma \\beta)(\\xi - \\Delta)$; "
+        "$\\sigma^2/(\\sigma^2 + \\beta \\sigma_\\tau^2)$; $\\gamma_n = s_n/(\\sigma^2 + \\beta s_n)$; "
+        "$E|\\xi|^2 = \\sigma^2[\\operatorname{tr} + \\gamma_n 1'F(F'F)^{-2}F'1]$.",
         evidence="The corrected recursion reproduces Table 4.3 and its fixed point is the root of the "
         "printed cubic (4.5.26); a seeded Monte Carlo of the tracker matches its variances (tests).",
         discussed_in=PAGE_TRACKER,
@@ -1177,9 +1182,11 @@ ERRATA += [
         paper="ATC10",
         kind="typography",
         locator="Sec. 4.5.4 (steps to converge)",
-        printed="n = 1/Log(1 - psi) - 1 = 2.3/psi - 1",
-        finding="n = -1/log10(1 - psi) - 1; the recursion itself converges about twice as fast as this.",
-        evidence="1/log10(1 - psi) < 0 for every 0 < psi < 1; the gain recursion reaches 10 % in "
+        printed="$n = 1/\\mathrm{Log}(1 - \\psi) - 1 = 2.3/\\psi - 1$",
+        finding="$n = -1/\\log_{10}(1 - \\psi) - 1$; the recursion itself converges about twice as fast as "
+        "this.",
+        evidence="$1/\\log_{10}(1 - \\psi) < 0$ for every $0 < \\psi < 1$; the gain recursion reaches 10 % "
+        "in "
         "10/2/0/25/5/1 steps against 22/4.7/1.5/55/12/2.6.",
         claims=("ATC10-sec4.5.4-steps-formula-sign", "ATC10-sec4.5.4-convergence-rule"),
         discussed_in=PAGE_TRACKER,
@@ -1201,9 +1208,12 @@ ERRATA += [
         paper="ATC10",
         kind="typography",
         locator="App. G, Eq. (G.5) and R_x3",
-        printed="integrand [s^rho - 1/2 - (s+1)^rho - 1/2]; R_x3 = beta^2 sigma^2 / 2 (...); Newton step G/G",
-        finding="integrand ((1+s)^(rho-1/2) - s^(rho-1/2))^2; R_x3 = beta^2 V0 / 2 (...); Newton step G/G'.",
-        evidence="With the corrected integrand the quadrature equals 1/(Gamma(2 rho+1) sin pi rho) to 1e-8 "
+        printed="integrand $[s^\\rho - 1/2 - (s+1)^\\rho - 1/2]$; $R_{x3} = \\beta^2 \\sigma^2 / 2\\, "
+        "(\\ldots)$; Newton step $G/G$",
+        finding="integrand $((1+s)^{\\rho-1/2} - s^{\\rho-1/2})^2$; $R_{x3} = \\beta^2 V_0 / 2\\, "
+        "(\\ldots)$; Newton step $G/G'$.",
+        evidence="With the corrected integrand the quadrature equals $1/(\\Gamma(2\\rho+1) \\sin \\pi\\rho)$ "
+        "to 1e-8 "
         "(test).",
         discussed_in=PAGE_TRACKER,
         claims=("ATC10-appG-V0-printed",),
@@ -1213,10 +1223,11 @@ ERRATA += [
         paper="ATC10",
         kind="units",
         locator="Eqs. (4.1.2), (4.5.7), (4.5.35); Table 4.3",
-        printed="Var[|xi_p|]",
-        finding="The quantity is the mean-square norm E|xi_p|^2 = tr P, not the variance of the norm.",
+        printed="$\\mathrm{Var}[|\\xi_p|]$",
+        finding="The quantity is the mean-square norm $E|\\xi_p|^2 = \\operatorname{tr} P$, not the variance "
+        "of the norm.",
         evidence="Monte Carlo: at n = 0 in Example I the variance of the norm is about a quarter of "
-        "E|xi_p|^2, which is what the formulas give.",
+        "$E|\\xi_p|^2$, which is what the formulas give.",
         discussed_in=PAGE_EXAMPLES,
         claims=("ATC10-tab4.3-exI-sd0-norm-variance",),
     ),
@@ -1225,10 +1236,10 @@ ERRATA += [
         paper="ATC10",
         kind="typography",
         locator="App. H, corollary (Eq. H.26)",
-        printed="gamma = sigma^2 / (sigma^2 + sigma_x^2 [F'F - F'G(G'G)^-1G'F])",
-        finding="gamma = sigma_x^2 / (sigma^2 + sigma_x^2 [F'F - F'G(G'G)^-1G'F]).",
+        printed="$\\gamma = \\sigma^2 / (\\sigma^2 + \\sigma_x^2 [F'F - F'G(G'G)^{-1}G'F])$",
+        finding="$\\gamma = \\sigma_x^2 / (\\sigma^2 + \\sigma_x^2 [F'F - F'G(G'G)^{-1}G'F])$.",
         evidence="Equals the general gain H of Eq. (H.20) to 1e-12 and gives the error variance "
-        "sigma^2 gamma of (H.21); the printed numerator does not (test).",
+        "$\\sigma^2 \\gamma$ of (H.21); the printed numerator does not (test).",
         discussed_in=PAGE_TRACKER,
         claims=("ATC10-appH-scalar-gain-printed",),
     ),

@@ -146,7 +146,8 @@ _NOTE_INIT = (
 
 CLAIMS = [
     Claim(
-        id="KZL-c16-covariance",
+        id="KZL-sec3.6-heading-with-init-covariance",
+        aliases=("KZL-c16-covariance",),
         paper="KZL",
         locator="Sec. 3.6",
         quantity="stand-alone IMU heading error after 180 s with initialisation (covariance engine)",
@@ -157,11 +158,12 @@ CLAIMS = [
         compute=lambda: float(standalone_sigma("misalignment")[2]),
         tolerance=_C16[1],
         expected_status="consistent",
-        note=_NOTE_INIT + " The Monte Carlo RMS of the same flight is KZL-c16.",
+        note=_NOTE_INIT + " The Monte Carlo RMS of the same flight is KZL-sec3.6-heading-with-init.",
         discussed_in=PAGE3,
     ),
     Claim(
-        id="KZL-c17-covariance",
+        id="KZL-sec3.6-heading-without-init-covariance",
+        aliases=("KZL-c17-covariance",),
         paper="KZL",
         locator="Sec. 3.6",
         quantity="stand-alone IMU heading error after 180 s without initialisation (covariance engine)",
@@ -177,13 +179,15 @@ CLAIMS = [
         "bias (360 deg/h) as a random constant: about 18 deg across the band. Exceeding 20 deg "
         "would need an initial heading uncertainty of about 9 deg (1-sigma) instead of the assumed "
         "0.1-1 deg, or a gyro bias above 400 deg/h (KZL-E7; the closed form sqrt((b t)^2 + N^2 t + "
-        "sigma0^2) agrees to 0.1 %). The Monte Carlo RMS is KZL-c17. Verdict changed from "
+        "sigma0^2) agrees to 0.1 %). The Monte Carlo RMS is KZL-sec3.6-heading-without-init. Verdict changed "
+        "from "
         "discrepant: the claim reads an assumed input whose range is not every admissible value.",
         erratum="KZL-E7-uncalibrated-heading",
         discussed_in=PAGE3,
     ),
     Claim(
-        id="KZL-c22-position-covariance",
+        id="KZL-fig5-ins-position-covariance",
+        aliases=("KZL-c22-position-covariance",),
         paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 5",
         quantity="stand-alone IMU position error after 3 min, per horizontal axis (covariance engine)",
@@ -194,13 +198,14 @@ CLAIMS = [
         tolerance=_ABOUT,
         expected_status="consistent",
         note=_NOTE_INIT + " 'About 1 km' read per horizontal axis (north shown; east agrees "
-        "to 0.1 %). The Monte Carlo RMS is KZL-c22-position. The tolerance was the printed digit plus "
+        "to 0.1 %). The Monte Carlo RMS is KZL-fig5-ins-position. The tolerance was the printed digit plus "
         "the spread over an assumed averaging time; it is now the prose 'about' and the averaging "
         "time is an assumed input whose band decides.",
         discussed_in=PAGE3,
     ),
     Claim(
-        id="KZL-c22-velocity-covariance",
+        id="KZL-fig5-ins-velocity-covariance",
+        aliases=("KZL-c22-velocity-covariance",),
         paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 5",
         quantity="stand-alone IMU velocity error after 3 min, per horizontal axis (covariance engine)",
@@ -212,7 +217,7 @@ CLAIMS = [
         expected_status="consistent",
         note=_NOTE_INIT + " Angle random walk (g N sqrt(t^3/3)) and the calibration residual of the "
         "gyro bias (g b t^2/2, b = N / sqrt(T_init)) add in quadrature. The Monte Carlo RMS is "
-        "KZL-c22-velocity. The tolerance was the printed digit plus the spread over an assumed "
+        "KZL-fig5-ins-velocity. The tolerance was the printed digit plus the spread over an assumed "
         "averaging time; it is now the prose 'about' and the averaging time is an assumed input "
         "whose band decides.",
         discussed_in=PAGE3,

@@ -259,7 +259,8 @@ _approx = prose("approximately", why="'A(k) approx I + F T'")
 
 CLAIMS = [
     Claim(
-        id="KZL-c26-overlap",
+        id="KZL-sec1-footprint-overlap",
+        aliases=("KZL-c26-overlap",),
         paper="KZL",
         locator="Sec. 1",
         quantity="longest footprint overlap in the hybrid experiment: receiver footprint over the "
@@ -274,7 +275,8 @@ CLAIMS = [
         discussed_in=PAGE1,
     ),
     Claim(
-        id="KZL-c27-positioning",
+        id="KZL-sec1-positioning-less-strict",
+        aliases=("KZL-c27-positioning",),
         paper="KZL",
         locator="Sec. 1",
         quantity="positioning requirements less strict than pointing: the footprint shift of a 0.5 deg "
@@ -289,7 +291,8 @@ CLAIMS = [
         discussed_in=PAGE1,
     ),
     Claim(
-        id="KZL-c28-baseline-angle",
+        id="KZL-sec1-baseline-tilt-accuracy",
+        aliases=("KZL-c28-baseline-angle",),
         paper="KZL",
         locator="Sec. 1",
         quantity="baseline tilt accuracy for a height error below 1 m (TerraSAR-X geometry)",
@@ -303,7 +306,8 @@ CLAIMS = [
         discussed_in=PAGE1,
     ),
     Claim(
-        id="KZL-c29-baseline-length",
+        id="KZL-sec1-baseline-length-accuracy",
+        aliases=("KZL-c29-baseline-length",),
         paper="KZL",
         locator="Sec. 1",
         quantity="baseline length accuracy for a height error below 1 m (TerraSAR-X geometry)",
@@ -317,7 +321,8 @@ CLAIMS = [
         discussed_in=PAGE1,
     ),
     Claim(
-        id="KZL-c30-ins-rate",
+        id="KZL-sec2.1-ins-data-rate",
+        aliases=("KZL-c30-ins-rate",),
         paper="KZL",
         locator="Sec. 2.1",
         quantity="the example INS data rate of Sec. 2.1 against Table 1's IMU update rate",
@@ -331,7 +336,8 @@ CLAIMS = [
         discussed_in=PAGE1,
     ),
     Claim(
-        id="KZL-c31-gnss-rate",
+        id="KZL-sec2.1-gnss-output-rate",
+        aliases=("KZL-c31-gnss-rate",),
         paper="KZL",
         locator="Sec. 2.1",
         quantity="the example GNSS output rate of Sec. 2.1 against Table 1's GPS update rate",
@@ -345,7 +351,8 @@ CLAIMS = [
         discussed_in=PAGE1,
     ),
     Claim(
-        id="KZL-c32-cascaded",
+        id="KZL-sec2.2-cascaded-nearly-uncorrelated",
+        aliases=("KZL-c32-cascaded",),
         paper="KZL",
         locator="Sec. 2.2",
         quantity="cascaded filters: GNSS outputs used only every >10 s are nearly uncorrelated "
@@ -363,15 +370,15 @@ CLAIMS = [
         id="KZL-eq6-first-order",
         paper="KZL",
         locator="Eq. (6)",
-        quantity="A approx I + FT: 180 s stand-alone north-position sigma with the first-order "
-        "transition over that with e^{FT}, at the Table 1 GPS interval",
+        quantity="$A \\approx I + FT$: 180 s stand-alone north-position sigma with the first-order "
+        "transition over that with $e^{FT}$, at the Table 1 GPS interval",
         published=1.0,
         unit="",
         compute=eq6_position_ratio,
         tolerance=_approx,
         expected_status="consistent",
         note="Covariance propagation of the 17-state model over the Table 1 flight at T = 1 s; the "
-        "first-order noise Q_d = G Q G^T T goes with Eq. (6).",
+        "first-order noise $Q_d = G Q G^T T$ goes with Eq. (6).",
         discussed_in=PAGE1,
     ),
     Claim(
@@ -449,7 +456,7 @@ CLAIMS = [
         paper="KZL",
         locator="Eq. (17)",
         quantity="rank of the two DD attitude rows of Eq. (17) for one satellite pair as printed (both "
-        "rows with l_02); two baselines should give two independent rows",
+        "rows with $l_{02}$); two baselines should give two independent rows",
         published=2,
         unit="",
         kind="reproduction",
@@ -467,7 +474,7 @@ CLAIMS = [
         id="KZL-eq17-rank",
         paper="KZL",
         locator="Eq. (17)",
-        quantity="rank of the DD attitude rows with l_01 and l_02 (corrected Eq. (17))",
+        quantity="rank of the DD attitude rows with $l_{01}$ and $l_{02}$ (corrected Eq. (17))",
         published=2,
         unit="",
         compute=eq17_corrected_rank,
@@ -477,7 +484,8 @@ CLAIMS = [
         discussed_in=PAGE2,
     ),
     Claim(
-        id="KZL-c33-loose-three",
+        id="KZL-fig5-loose-three-unbounded",
+        aliases=("KZL-c33-loose-three",),
         paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 5",
         quantity="with three satellites a loosely coupled integration is not bounded: the receiver's "
@@ -488,11 +496,12 @@ CLAIMS = [
         tolerance=EXACT,
         expected_status="reproduced",
         note="Table 1 sky, first three satellites. Without a fix the loosely coupled filter runs free "
-        "inertial, whose error grows to about 1 km in 3 min (KZL-c22-position).",
+        "inertial, whose error grows to about 1 km in 3 min (KZL-fig5-ins-position).",
         discussed_in=PAGE3,
     ),
     Claim(
-        id="KZL-c34-baselines",
+        id="KZL-sec3.7-baseline-tradeoff",
+        aliases=("KZL-c34-baselines",),
         paper="KZL",
         locator="Sec. 3.7",
         quantity="shorter baselines shrink the integer search, longer baselines improve the attitude: "

@@ -327,10 +327,11 @@ ERRATA = [
         paper="KZL",
         kind="convention",
         locator="Eqs. (2)-(3)",
-        printed="theta = arctan(-a_x / sqrt(a_y^2 + a_z^2)), phi = arctan2(a_y / a_z)",
+        printed="$\\theta = \\arctan(-a_x / \\sqrt{a_y^2 + a_z^2})$, $\\phi = \\mathrm{arctan2}(a_y / a_z)$",
         finding="With a = the specific force of Eq. (8) (a level IMU measures [0, 0, -g] in NED body "
-        "axes) the printed pair returns roll = 180 deg for a level aircraft. It is right for a = -f; "
-        "for the specific force: theta = arctan(f_x / sqrt(f_y^2 + f_z^2)), phi = atan2(-f_y, -f_z).",
+        "axes) the printed pair returns roll = 180 deg for a level aircraft. It is right for $a = -f$; "
+        "for the specific force: $\\theta = \\arctan(f_x / \\sqrt{f_y^2 + f_z^2})$, $\\phi = "
+        "\\mathrm{atan2}(-f_y, -f_z)$.",
         evidence="navcore.inertial.alignment.levelling_as_printed on f = [0, 0, -g]; round trip on "
         "random attitudes built with scipy's Rotation (checked by the library's tests).",
         claims=("KZL-eq2-3-levelling",),
@@ -341,9 +342,10 @@ ERRATA = [
         paper="KZL",
         kind="unstated-assumption",
         locator="Eq. (5), preceding text",
-        printed="in case of a time-variant system the state transition is described as A(k) = e^{FT}",
-        finding="The chain A = e^{FT} = L^-1{(sI - F)^-1} holds for a time-invariant F (or F frozen "
-        "over T). For the simplified model F is nilpotent (F^4 = 0), so the series ends at (FT)^3/6.",
+        printed="in case of a time-variant system the state transition is described as $A(k) = e^{FT}$",
+        finding="The chain $A = e^{FT} = \\mathcal{L}^{-1}\\{(sI - F)^{-1}\\}$ holds for a time-invariant "
+        "$F$ (or $F$ frozen "
+        "over $T$). For the simplified model $F$ is nilpotent ($F^4 = 0$), so the series ends at $(FT)^3/6$.",
         evidence="scipy.linalg.expm against the cubic polynomial at the Table 1 attitude.",
         claims=("KZL-eq5-series",),
         discussed_in=PAGE1,
@@ -353,10 +355,12 @@ ERRATA = [
         paper="KZL",
         kind="convention",
         locator="Eq. (11)",
-        printed="F23 = [a x] = [[0, a_d, -a_e], [-a_d, 0, a_n], [a_e, -a_n, 0]]",
-        finding="The explicit matrix is minus the usual cross-product matrix: [a x]_paper b = b x a. "
-        "The explicit matrix is the right F23 for error = estimated - true and "
-        "R_hat = (I + [dpsi x]) R; reading the bracket as the standard skew flips the sign of F23 "
+        printed="$F_{23} = [a \\times] = [[0, a_d, -a_e], [-a_d, 0, a_n], [a_e, -a_n, 0]]$",
+        finding="The explicit matrix is minus the usual cross-product matrix: $[a "
+        "\\times]_{\\text{paper}}\\, b = b \\times a$. "
+        "The explicit matrix is the right $F_{23}$ for error = estimated - true and "
+        "$\\hat{R} = (I + [\\delta\\psi \\times]) R$; reading the bracket as the standard skew flips the "
+        "sign of $F_{23}$ "
         "and of the DD rows of Eq. (17).",
         evidence="Finite differences of the nonlinear velocity-error rate (checked by the library's tests).",
         claims=("KZL-eq11-bracket",),
@@ -370,10 +374,11 @@ ERRATA = [
         printed="R is a frame rotation matrix for the transformation from body-axes angular rates to "
         "the Euler angle angular rates",
         finding="The Jacobian of the Euler angles with respect to the n-frame attitude error is "
-        "J_b^-1(phi, theta) R_n^b, not J_b^-1 alone. At the Table 1 attitude (heading 90 deg) they "
+        "$J_b^{-1}(\\phi, \\theta)\\, R_n^b$, not $J_b^{-1}$ alone. At the Table 1 attitude (heading 90 deg) "
+        "they "
         "differ by swapping north/east tilt into roll/pitch.",
         evidence="Central finite differences of euler_from_dcm(expm([dpsi x]) R).",
-        claims=("KZL-eq13-R", "KZL-c15"),
+        claims=("KZL-eq13-R", "KZL-sec3.5-small-rotation-euler-angles"),
         discussed_in=PAGE2,
     ),
     Erratum(
@@ -381,12 +386,13 @@ ERRATA = [
         paper="KZL",
         kind="typography",
         locator="Eqs. (1), (10), (14), (17)",
-        printed="Eq. (17): both DD rows use l_02 and rows 2 and 4 have an extra 0^T block; Eq. (14) lists "
-        "rho^(n) twice; Eq. (10) says O is the identity and I the zero matrix; Eq. (1)'s compact "
-        "form drops dpsi, db_w and the clock",
-        finding="The first DD row uses l_01; Eq. (14) has 6 rows for two satellites, matching "
-        "2 + 4 (nu - 1); O is the zero and I the identity matrix.",
-        evidence="Row counts from the builders in navcore.gnss.carrier_phase; with l_02 in both rows "
+        printed="Eq. (17): both DD rows use $l_{02}$ and rows 2 and 4 have an extra $0^T$ block; Eq. (14) "
+        "lists "
+        "$\\rho^{(n)}$ twice; Eq. (10) says O is the identity and I the zero matrix; Eq. (1)'s compact "
+        "form drops $\\delta\\psi$, $\\delta b_\\omega$ and the clock",
+        finding="The first DD row uses $l_{01}$; Eq. (14) has 6 rows for two satellites, matching "
+        "$2 + 4 (\\nu - 1)$; O is the zero and I the identity matrix.",
+        evidence="Row counts from the builders in navcore.gnss.carrier_phase; with $l_{02}$ in both rows "
         "the DD attitude block of one satellite pair has rank 1 instead of 2.",
         claims=("KZL-eq17-printed-rank",),
         discussed_in=PAGE2,
@@ -396,8 +402,9 @@ ERRATA = [
         paper="KZL",
         kind="convention",
         locator="Sec. 3.5, attitude correction",
-        printed="q_b^{n,+} = q_b^{n,-} (x) q^n with the n-frame rotation quaternion q^n of phi = -dpsi",
-        finding="An n-frame rotation multiplies q_b^n from the left: q^{n,+} = q^n (x) q^{n,-}. The "
+        printed="$q_b^{n,+} = q_b^{n,-} \\otimes q^n$ with the n-frame rotation quaternion $q^n$ of $\\phi = "
+        "-\\delta\\psi$",
+        finding="An n-frame rotation multiplies $q_b^n$ from the left: $q^{n,+} = q^n \\otimes q^{n,-}$. The "
         "printed order rotates about body axes; at the Table 1 heading of 90 deg a 2.29 deg "
         "error leaves a 1.58 deg residual.",
         evidence="navcore.estimation.ekf_ins_gnss.correct_attitude both ways, checked with scipy's "
@@ -463,7 +470,8 @@ CLAIMS = [
         discussed_in=PAGE1,
     ),
     Claim(
-        id="KZL-c11-earth-rate",
+        id="KZL-sec3.1-gyro-bias-swamps-earth-rate",
+        aliases=("KZL-c11-earth-rate",),
         paper="KZL",
         locator="Sec. 3.1",
         quantity="a MEMS gyro bias of several 100 deg/h swamps the horizontal Earth rate (no gyrocompassing)",
@@ -478,7 +486,8 @@ CLAIMS = [
         discussed_in=PAGE1,
     ),
     Claim(
-        id="KZL-c13-neglected-rates",
+        id="KZL-sec3.2-earth-transport-rates-negligible",
+        aliases=("KZL-c13-neglected-rates",),
         paper="KZL",
         locator="Secs. 3.1-3.2",
         quantity="Earth and transport rate are negligible against the low-cost gyro bias",
@@ -497,20 +506,20 @@ CLAIMS = [
         id="KZL-eq5-series",
         paper="KZL",
         locator="Eq. (5)",
-        quantity="e^{FT} = I + FT + (FT)^2/2 + h.o.t. for the 17-state F",
+        quantity="$e^{FT} = I + FT + (FT)^2/2 + \\ldots$ for the 17-state $F$",
         published=True,
         unit="statement",
         compute=series_terminates,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="F is nilpotent (F^4 = 0): the series ends at (FT)^3/6 and equals scipy's expm to 1e-12.",
+        note="$F$ is nilpotent ($F^4 = 0$): the series ends at $(FT)^3/6$ and equals scipy's expm to 1e-12.",
         discussed_in=PAGE1,
     ),
     Claim(
         id="KZL-dim13",
         paper="KZL",
         locator="Sec. 3.4, after Eq. (13)",
-        quantity="rows of the observation matrix with redundant attitude = 3 + 2 nu (nu = 1..8)",
+        quantity="rows of the observation matrix with redundant attitude = $3 + 2\\nu$ ($\\nu$ = 1..8)",
         published=True,
         unit="statement",
         compute=_row_counts_eq13,
@@ -523,7 +532,7 @@ CLAIMS = [
         id="KZL-dim17",
         paper="KZL",
         locator="Sec. 3.4, before Eq. (17)",
-        quantity="rows of the DD observation matrix = 2 + 4 (nu - 1) (nu = 1..8)",
+        quantity="rows of the DD observation matrix = $2 + 4 (\\nu - 1)$ ($\\nu$ = 1..8)",
         published=True,
         unit="statement",
         compute=_row_counts_eq17,
@@ -534,10 +543,11 @@ CLAIMS = [
         discussed_in=PAGE2,
     ),
     Claim(
-        id="KZL-c12-observability",
+        id="KZL-sec3.1-observability-needs-attitude",
+        aliases=("KZL-c12-observability",),
         paper="KZL",
         locator="Sec. 3.1",
-        quantity="complete observability only with redundant attitude information, depending on nu",
+        quantity="complete observability only with redundant attitude information, depending on $\\nu$",
         published=True,
         unit="statement",
         compute=_complete_only_with_attitude,
@@ -549,7 +559,8 @@ CLAIMS = [
         discussed_in=PAGE2,
     ),
     Claim(
-        id="KZL-c14-sequential",
+        id="KZL-sec3.4-sequential-update",
+        aliases=("KZL-c14-sequential",),
         paper="KZL",
         locator="Sec. 3.4",
         quantity="sequential processing gives the batch update without inverting the full innovation matrix",
@@ -574,7 +585,8 @@ CLAIMS = [
         compute=printed_R_block_error,
         tolerance=EXACT,
         expected_status="discrepant",
-        note="At heading 90 deg the true block is J_b^-1 R_n^b, a north/east swap of J_b^-1 = I: entries "
+        note="At heading 90 deg the true block is $J_b^{-1} R_n^b$, a north/east swap of $J_b^{-1} = I$: "
+        "entries "
         "differ by 1. Was the truth value 'R is the attitude block'; now the difference itself.",
         erratum="KZL-E4-euler-rows",
         oracle=_printed_R_block_oracle,
@@ -587,7 +599,8 @@ CLAIMS = [
         id="KZL-qcorr",
         paper="KZL",
         locator="Sec. 3.5",
-        quantity="attitude error left by q+ = q- (x) q^n (right product) after an estimated (1, -0.5, 2) deg "
+        quantity="attitude error left by $q^+ = q^- \\otimes q^n$ (right product) after an estimated (1, "
+        "-0.5, 2) deg "
         "n-frame error, at the Table 1 attitude",
         published=0.0,
         unit="deg",
@@ -603,7 +616,8 @@ CLAIMS = [
         discussed_in=PAGE2,
     ),
     Claim(
-        id="KZL-c1",
+        id="KZL-sec1-satellite-aircraft-speed-ratio",
+        aliases=("KZL-c1",),
         paper="KZL",
         locator="Sec. 1",
         quantity="satellite speed about 76 times the aircraft speed in the hybrid experiments",
@@ -613,14 +627,16 @@ CLAIMS = [
         compute=satellite_to_aircraft_speed,
         tolerance=prose("about"),
         expected_status="consistent",
-        note="Circular-orbit speed sqrt(mu / (R + h)) of TerraSAR-X (7.6 km/s at the assumed 514 km) over "
+        note="Circular-orbit speed $\\sqrt{\\mu / (R + h)}$ of TerraSAR-X (7.6 km/s at the assumed 514 km) "
+        "over "
         "the assumed aircraft speed; the paper gives neither. 76x means about 100 m/s; Table 1's "
         "110 m/s would give 69x. Verdict changed from not-reproducible: the book computes it under "
         "stated assumptions.",
         discussed_in="kzl/index",
     ),
     Claim(
-        id="KZL-c6",
+        id="KZL-sec2.1-ins-drift-per-hour",
+        aliases=("KZL-c6",),
         paper="KZL",
         locator="Sec. 2.1",
         quantity="position error of a 50,000-100,000 $ INS without aiding, km per hour",
@@ -637,7 +653,8 @@ CLAIMS = [
         discussed_in="kzl/index",
     ),
     Claim(
-        id="KZL-c7",
+        id="KZL-sec2.1-four-measurements",
+        aliases=("KZL-c7",),
         paper="KZL",
         locator="Sec. 2.1",
         quantity="four or more simultaneous measurements are needed for 3-D position and clock bias",
@@ -646,12 +663,13 @@ CLAIMS = [
         compute=_geometry_rank_is_min_nu_4,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="Rank of the pseudorange geometry matrix [-l^T 1] is min(nu, 4) for the first nu "
+        note="Rank of the pseudorange geometry matrix $[-l^T\\ 1]$ is $\\min(\\nu, 4)$ for the first $\\nu$ "
         "satellites of the simulation's sky.",
         discussed_in=PAGE2,
     ),
     Claim(
-        id="KZL-c15",
+        id="KZL-sec3.5-small-rotation-euler-angles",
+        aliases=("KZL-c15",),
         paper="KZL",
         locator="Sec. 3.5",
         quantity="for small rotations the rotation-vector components equal the Euler angles: largest entry "

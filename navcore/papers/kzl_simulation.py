@@ -156,8 +156,9 @@ ERRATA = [
         "RMS, below 20 deg; exceeding 20 deg needs a bias above about 400 deg/h or an extra "
         "initial heading error.",
         evidence="Seeded 100 Hz Monte Carlo without initialisation and the linear covariance "
-        "engine of SP Sec. 2.6, both against the closed form sqrt((b t)^2 + N^2 t + sigma0^2) = 18.0 deg.",
-        claims=("KZL-c17", "KZL-c17-covariance"),
+        "engine of SP Sec. 2.6, both against the closed form $\\sqrt{(b t)^2 + N^2 t + \\sigma_0^2}$ = 18.0 "
+        "deg.",
+        claims=("KZL-sec3.6-heading-without-init", "KZL-sec3.6-heading-without-init-covariance"),
         discussed_in=PAGE3,
     ),
     Erratum(
@@ -172,14 +173,15 @@ ERRATA = [
         "cannot improve it; the paper's simulated flight must have contained accelerations.",
         evidence="Observability rank 13/17 with the heading error in the null space; Monte Carlo "
         "heading RMS of TC equal to the stand-alone INS on common random numbers.",
-        claims=("KZL-c19-heading",),
+        claims=("KZL-fig4-tight-improves-heading",),
         discussed_in=PAGE3,
     ),
 ]
 
 CLAIMS = [
     Claim(
-        id="KZL-c16",
+        id="KZL-sec3.6-heading-with-init",
+        aliases=("KZL-c16",),
         paper="KZL",
         locator="Sec. 3.6",
         quantity="stand-alone IMU heading error after 180 s with initialisation",
@@ -197,7 +199,8 @@ CLAIMS = [
         discussed_in=PAGE3,
     ),
     Claim(
-        id="KZL-c17",
+        id="KZL-sec3.6-heading-without-init",
+        aliases=("KZL-c17",),
         paper="KZL",
         locator="Sec. 3.6",
         quantity="stand-alone IMU heading error after 180 s without initialisation and calibration",
@@ -218,7 +221,8 @@ CLAIMS = [
         discussed_in=PAGE3,
     ),
     Claim(
-        id="KZL-c18",
+        id="KZL-sec3.6-heading-largest-attitude-error",
+        aliases=("KZL-c18",),
         paper="KZL",
         locator="Sec. 3.6",
         quantity="stand-alone IMU: the largest attitude error is in heading",
@@ -235,7 +239,8 @@ CLAIMS = [
         discussed_in=PAGE3,
     ),
     Claim(
-        id="KZL-c22-position",
+        id="KZL-fig5-ins-position",
+        aliases=("KZL-c22-position",),
         paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 5",
         quantity="stand-alone IMU position error after 3 min",
@@ -252,7 +257,8 @@ CLAIMS = [
         discussed_in=PAGE3,
     ),
     Claim(
-        id="KZL-c22-velocity",
+        id="KZL-fig5-ins-velocity",
+        aliases=("KZL-c22-velocity",),
         paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 5",
         quantity="stand-alone IMU velocity error after 3 min",
@@ -268,7 +274,8 @@ CLAIMS = [
         discussed_in=PAGE3,
     ),
     Claim(
-        id="KZL-c19-tilt",
+        id="KZL-fig4-tight-improves-roll-pitch",
+        aliases=("KZL-c19-tilt",),
         paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 4",
         quantity="tight coupling without attitude information improves roll and pitch over the INS alone",
@@ -284,7 +291,8 @@ CLAIMS = [
         discussed_in=PAGE3,
     ),
     Claim(
-        id="KZL-c19-heading",
+        id="KZL-fig4-tight-improves-heading",
+        aliases=("KZL-c19-heading",),
         paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 4",
         quantity="tight coupling without attitude information improves heading over the INS alone: the "
@@ -314,7 +322,8 @@ CLAIMS = [
         discussed_in=PAGE3,
     ),
     Claim(
-        id="KZL-c20",
+        id="KZL-fig4-redundant-attitude",
+        aliases=("KZL-c20",),
         paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 4",
         quantity="redundant attitude: much better attitude, much larger errors with fewer than 4 satellites",
@@ -331,7 +340,8 @@ CLAIMS = [
         discussed_in=PAGE3,
     ),
     Claim(
-        id="KZL-c21",
+        id="KZL-fig4-dd-phases-robust",
+        aliases=("KZL-c21",),
         paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 4",
         quantity="DD phases: comparable with >= 4 satellites, robust and accurate with 2 or 3",
@@ -348,7 +358,8 @@ CLAIMS = [
         discussed_in=PAGE3,
     ),
     Claim(
-        id="KZL-c23-c24",
+        id="KZL-fig5-tight-three-bounded",
+        aliases=("KZL-c23-c24",),
         paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 5",
         quantity="TC position error bounded with 3 satellites, growing remarkably with 2",
@@ -364,7 +375,8 @@ CLAIMS = [
         discussed_in=PAGE3,
     ),
     Claim(
-        id="KZL-c25",
+        id="KZL-fig5-dd-best",
+        aliases=("KZL-c25",),
         paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 5",
         quantity="the DD carrier-phase integration yields the best results",
@@ -380,7 +392,8 @@ CLAIMS = [
         discussed_in=PAGE3,
     ),
     Claim(
-        id="KZL-c3",
+        id="KZL-sec1-pointing-half-degree",
+        aliases=("KZL-c3",),
         paper="KZL",
         locator="Sec. 1",
         quantity="about 0.5 deg pointing accuracy is achievable (footprint chasing requirement): the "

@@ -146,9 +146,11 @@ ERRATA = [
         paper="SP",
         kind="inconsistent-numbers",
         locator="Sec. 2.5, Delta T formula; Sec. 2.6.2",
-        printed="Delta T = 0.020 [2 sigma_rng/30] x [2 sigma_rng-rate/10]; 'one Doppler shift interval' "
+        printed="$\\Delta T = 0.020\\, [2 \\sigma_{\\text{rng}}/30] \\times [2 "
+        "\\sigma_{\\text{rng-rate}}/10]$; 'one Doppler shift interval' "
         "for range-rate uncertainties up to 10 m/s",
-        finding="Taken literally, sigma_rng-rate up to 10 m/s gives a Doppler factor up to 2, not 1; the "
+        finding="Taken literally, $\\sigma_{\\text{rng-rate}}$ up to 10 m/s gives a Doppler factor up to 2, "
+        "not 1; the "
         "brackets must be cell counts (ceilings, at least 1) and Sec. 2.6.2 counts a single 10-m/s "
         "interval. The 50-Hz cell is 9.5 m/s at L1, printed as 10 m/s. The '20 ms/chip' of Sec. 2.6.2 "
         "calls the 30-m interval a chip: it matches a P(Y) chip (29.3 m), while the 36 deg per 30 m "

@@ -178,11 +178,14 @@ ERRATA = [
         paper="SP",
         kind="convention",
         locator="Sec. 2.5, 3x6 sensitivity matrix",
-        printed="misalignment block [[0,-1,1],[1,0,-1],[-1,1,0]] after the skew matrix [dtheta x] a",
-        finding="The printed skew matrix gives dtheta x a, whose Jacobian at a = (1,1,1) is "
-        "[[0,1,-1],[-1,0,1],[1,-1,0]]: the printed block has the opposite sign (it is a x dtheta). "
-        "The 'unit step' is also 1 g on every axis at once (magnitude sqrt(3) g). The sign does not "
-        "matter unless scale factor and misalignment are correlated (c_sf-mis != 0).",
+        printed="misalignment block [[0,-1,1],[1,0,-1],[-1,1,0]] after the skew matrix $[\\delta\\theta "
+        "\\times]\\, a$",
+        finding="The printed skew matrix gives $\\delta\\theta \\times a$, whose Jacobian at $a = (1,1,1)$ "
+        "is "
+        "[[0,1,-1],[-1,0,1],[1,-1,0]]: the printed block has the opposite sign (it is $a \\times "
+        "\\delta\\theta$). "
+        "The 'unit step' is also 1 g on every axis at once (magnitude $\\sqrt{3}$ g). The sign does not "
+        "matter unless scale factor and misalignment are correlated ($c_{\\text{sf-mis}} \\neq 0$).",
         evidence="Finite-difference Jacobian of diag(sf) a + numpy.cross(dtheta, a) against the "
         "analytic -[a x] block of navcore.",
         claims=("SP-sec2.5-H-sign",),
@@ -196,11 +199,12 @@ ERRATA = [
         printed="'the quantities in the third column are the required bandwidth'; column heading "
         "'Required Carrier Tracking Loop Bandwidth' with 18 rad/s unaided",
         finding="The required bandwidths are the fourth column (the text says 'third column' twice). "
-        "They are natural frequencies w0 in rad/s, not bandwidths: the loop's noise bandwidth is "
-        "(5/6) w0 Hz. The unaided 18 rad/s is Fig. 2.1's 17.67 rad/s rounded; column 4 follows from "
+        "They are natural frequencies $\\omega_0$ in rad/s, not bandwidths: the loop's noise bandwidth is "
+        "$(5/6)\\, \\omega_0$ Hz. The unaided 18 rad/s is Fig. 2.1's 17.67 rad/s rounded; column 4 follows "
+        "from "
         "18 rad/s and the rounded column 3 (17.67 would give 0.31 for the 0.5 nmi/h row).",
         evidence="Column 4 recomputed from column 3 with Eq. (2.1) both ways; noise bandwidth of "
-        "the loop by quadrature of |H(jw)|^2 in the tests.",
+        "the loop by quadrature of $|H(j\\omega)|^2$ in the tests.",
         claims=tuple(f"SP-tab2.6-col4-{g}" for g in GRADES),
         discussed_in=PAGE,
     ),
@@ -214,7 +218,7 @@ ERRATA = [
         "misalignment give 676, 450, 226 and 53 ppm for a (1,1,1) step, so three of the four printed "
         "radii are larger than the uncalibrated a-priori errors would give, which no post-calibration "
         "covariance explains. Column 2 is treated as input.",
-        evidence="90 % sphere radius of H P H^T by numerical integration, checked by a seeded Monte "
+        evidence="90 % sphere radius of $H P H^T$ by numerical integration, checked by a seeded Monte "
         "Carlo on the book page.",
         claims=tuple(f"SP-tab2.6-col2-{g}" for g in GRADES),
         discussed_in=PAGE,
@@ -302,7 +306,8 @@ CLAIMS = [
         id="SP-eq2.u7-worked-example",
         paper="SP",
         locator="Sec. 2.5, worked example after Table 2.6",
-        quantity="aided natural frequency of the 10 nmi/h system, sqrt(0.011 g / 6 g) x 18 rad/s",
+        quantity="aided natural frequency of the 10 nmi/h system, $\\sqrt{0.011\\,\\mathrm{g} / "
+        "6\\,\\mathrm{g}} \\times 18$ rad/s",
         published=_w077[0],
         unit="rad/s",
         kind="cross-check",
@@ -323,7 +328,8 @@ CLAIMS = [
         compute=right_factor_is_transpose,
         tolerance=EXACT,
         expected_status="consistent",
-        note="<da da^T> = H P H^T with the middle factor a 6x6 block matrix written in 2x2 shorthand; a "
+        note="$\\langle \\delta a\\, \\delta a^T \\rangle = H P H^T$ with the middle factor a 6x6 block "
+        "matrix written in 2x2 shorthand; a "
         "check of the two printed matrices against each other. Verdict changed from reproduced: a "
         "cross-check.",
     ),

@@ -147,8 +147,9 @@ ERRATA = [
         "and 90 deg follow from 360 deg per 0.3048 m (one cycle per foot). With the L1 carrier "
         "(0.1903 m) the peak is 144.2 deg and a 90 deg limit needs 22.37 rad/s, so every aided "
         "natural frequency of Table 2.6 would be 1.243 times larger.",
-        evidence="Closed-form peak 0.404453 R/w0^2 and an independent scipy.signal.lsim simulation of "
-        "s^3/D(s) driven by R t^2/2; the wavelength solving peak = 90 deg at 17.67 rad/s is 0.3049 m.",
+        evidence="Closed-form peak $0.404453\\, R/\\omega_0^2$ and an independent scipy.signal.lsim "
+        "simulation of "
+        "$s^3/D(s)$ driven by $R t^2/2$; the wavelength solving peak = 90 deg at 17.67 rad/s is 0.3049 m.",
         claims=("SP-fig2.1-peak-code300", "SP-fig2.1-peak-L1", "SP-fig2.1-peak", "SP-fig2.1-omega0"),
         discussed_in=PAGE,
     ),
@@ -157,11 +158,13 @@ ERRATA = [
         paper="SP",
         kind="typography",
         locator="Sec. 2.5, equation above Fig. 2.1",
-        printed="e^{-omega_0 t^2} in the second term",
-        finding="The exponent is -omega_0 t/2 (the real part of the complex pole pair "
-        "-omega_0/2 +- j sqrt(3) omega_0/2); sin/cos arguments are (sqrt(3)/2) omega_0 t. With t^2 "
+        printed="$e^{-\\omega_0 t^2}$ in the second term",
+        finding="The exponent is $-\\omega_0 t/2$ (the real part of the complex pole pair "
+        "$-\\omega_0/2 \\pm j \\sqrt{3}\\, \\omega_0/2$); sin/cos arguments are $(\\sqrt{3}/2)\\, \\omega_0 "
+        "t$. With $t^2$ "
         "the expression is not dimensionally consistent and is not the loop's response.",
-        evidence="sympy inverse Laplace transform of R/((s+w0)(s^2+w0 s+w0^2)) equals the corrected "
+        evidence="sympy inverse Laplace transform of $R/((s+\\omega_0)(s^2+\\omega_0 s+\\omega_0^2))$ equals "
+        "the corrected "
         "form (difference 0), and a scipy.signal.lsim simulation agrees to 1e-6 relative.",
         claims=("SP-eq2.u1-closed-form",),
         discussed_in=PAGE,
@@ -194,7 +197,8 @@ CLAIMS = [
         compute=lambda: peak_deg(IN.foot_per_cycle_m),
         tolerance=_peak90[1],
         expected_status="consistent",
-        note="Corrected closed form (exponent -w0 t/2), peak 0.404453 R/w0^2, with the conversion fitted "
+        note="Corrected closed form (exponent $-\\omega_0 t/2$), peak $0.404453\\, R/\\omega_0^2$, with the "
+        "conversion fitted "
         "to this printed pair (90 deg at 17.67 rad/s): 360 deg per 0.3048 m. Not evidence. The stated "
         "300-m code length and the L1 carrier do not reproduce it (see the two discrepant claims and "
         "erratum SP-E-phase-conversion). Verdict changed from reproduced: the conversion is a fit.",
@@ -210,7 +214,8 @@ CLAIMS = [
         compute=lambda: natural_frequency_for_peak_error(step_deg_s2(IN.foot_per_cycle_m), IN.peak_limit_deg),
         tolerance=_omega[1],
         expected_status="consistent",
-        note="w0 = sqrt(f_max R / 90 deg) with R = 6 g in deg/s^2 at the fitted 360 deg per foot (fitted to "
+        note="$\\omega_0 = \\sqrt{f_{\\max} R / 90\\,\\mathrm{deg}}$ with R = 6 g in deg/s^2 at the fitted "
+        "360 deg per foot (fitted to "
         "this claim and SP-fig2.1-peak; not evidence). With the L1 carrier the same requirement gives "
         "22.37 rad/s. Verdict changed from reproduced: the conversion is a fit.",
     ),

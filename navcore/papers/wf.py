@@ -851,9 +851,9 @@ ERRATA = [
         paper="WF",
         kind="typography",
         locator="Eq. (13)",
-        printed="x_DL(k/k) = x_DL(k/k-1) + K_DL(k)[y_a(k) - x_DL(k/k-1)]",
-        finding="The innovation must be y_L(k) - x_DL(k/k-1): the local velocity measurement of "
-        "Eq. (12), not the acceleration y_a.",
+        printed="$x_{DL}(k/k) = x_{DL}(k/k-1) + K_{DL}(k)[y_a(k) - x_{DL}(k/k-1)]$",
+        finding="The innovation must be $y_L(k) - x_{DL}(k/k-1)$: the local velocity measurement of "
+        "Eq. (12), not the acceleration $y_a$.",
         evidence="Dimensional analysis (acceleration minus velocity) and a seeded simulation of the "
         "printed recursion, whose error departs from the Eq. (14) covariance; the corrected filter "
         "matches filterpy's Kalman filter (checked by the library's tests).",
@@ -865,10 +865,10 @@ ERRATA = [
         paper="WF",
         kind="units",
         locator="Eq. (24)",
-        printed="P_N P_N^T = sigma_N^2 I",
-        finding="Should read tau P_N tau^T = sigma_N^2 I, the term that enters Eq. (11); then "
-        "sigma_DN^2 = sigma_N^2 + sigma_T^2.",
-        evidence="Units: P_N P_N^T is in (m/s)^4; the literal reading makes sigma_DN depend on the "
+        printed="$P_N P_N^T = \\sigma_N^2 I$",
+        finding="Should read $\\tau P_N \\tau^T = \\sigma_N^2 I$, the term that enters Eq. (11); then "
+        "$\\sigma_{DN}^2 = \\sigma_N^2 + \\sigma_T^2$.",
+        evidence="Units: $P_N P_N^T$ is in (m/s)$^4$; the literal reading makes $\\sigma_{DN}$ depend on the "
         "velocity unit. Only the corrected reading reproduces the 60 dB statement of Sec. IV.D.",
         claims=("WF-eq24-PN",),
         discussed_in=DOCS["IVD"],
@@ -878,9 +878,9 @@ ERRATA = [
         paper="WF",
         kind="typography",
         locator="Eq. (20)",
-        printed="row 2 of the joint covariance: [P_LN, P_DL, P_NG]",
-        finding="The (2, 3) block is the L-G cross-covariance P_LG; with P_NG the matrix is not a "
-        "covariance of the stacked errors (it is not symmetric: block (3, 2) is P_GL).",
+        printed="row 2 of the joint covariance: $[P_{LN}, P_{DL}, P_{NG}]$",
+        finding="The (2, 3) block is the L-G cross-covariance $P_{LG}$; with $P_{NG}$ the matrix is not a "
+        "covariance of the stacked errors (it is not symmetric: block (3, 2) is $P_{GL}$).",
         evidence="Symmetry of the printed matrix and a seeded Monte Carlo of the stacked errors.",
         claims=("WF-eq20-PNG",),
         discussed_in=DOCS["IV"],
@@ -892,7 +892,7 @@ ERRATA = [
         locator="Remark (ii) after the Theorem",
         printed="The upper bound tends to be exact ... when the estimation errors of all processors "
         "are completely correlated.",
-        finding="True when the weighted errors P_D P_i^-1 e_i are parallel (isotropic or commuting "
+        finding="True when the weighted errors $P_D P_i^{-1} e_i$ are parallel (isotropic or commuting "
         "covariances, the Sec. IV.D case); for general, non-commuting covariances the bound stays "
         "conservative even with completely correlated errors.",
         evidence="Exact covariance (Eq. (20)) and a seeded Monte Carlo for a completely correlated "
@@ -905,8 +905,8 @@ ERRATA = [
         paper="WF",
         kind="typography",
         locator="Sec. IV.D, parameter list",
-        printed="f_o^L1 / c = 5.25 m^-1",
-        finding="1575.42 MHz / 299 792 458 m/s = 5.2550 m^-1, 5.26 to three digits: the printed value is "
+        printed="$f_o^{L1} / c$ = 5.25 m$^{-1}$",
+        finding="1575.42 MHz / 299 792 458 m/s = 5.2550 m$^{-1}$, 5.26 to three digits: the printed value is "
         "truncated, 0.1 % low. Immaterial for Figs. 1-2 (the book uses the exact ratio).",
         evidence="L1 = 154 x 10.23 MHz (the GPS fundamental frequency) over the defined speed of light.",
         claims=("WF-eq25-fL1c",),
@@ -988,7 +988,8 @@ CLAIMS = [
         discussed_in=DOCS["II"],
     ),
     Claim(
-        id="WF-c1-additive",
+        id="WF-eq6-model-error-acts-like-noise",
+        aliases=("WF-c1-additive",),
         paper="WF",
         locator="Sec. II, after Eq. (6)",
         quantity="a signal-model error moves the estimate as much as the same measurement error (within 1 %)",
@@ -1003,7 +1004,8 @@ CLAIMS = [
     ),
     # Section III
     Claim(
-        id="WF-c2-position",
+        id="WF-sec3-tip-position-vs-range",
+        aliases=("WF-c2-position",),
         paper="WF",
         locator="Sec. III",
         quantity="wing-tip position perturbation relative to range",
@@ -1018,7 +1020,8 @@ CLAIMS = [
         discussed_in=DOCS["III"],
     ),
     Claim(
-        id="WF-c3-position-ins",
+        id="WF-sec3-tip-position-vs-ins",
+        aliases=("WF-c3-position-ins",),
         paper="WF",
         locator="Sec. III",
         quantity="wing-tip position perturbation relative to the best INS/GPS position accuracy",
@@ -1036,7 +1039,8 @@ CLAIMS = [
         discussed_in=DOCS["III"],
     ),
     Claim(
-        id="WF-c4-flexible-mode",
+        id="WF-sec3-flexible-mode-velocity",
+        aliases=("WF-c4-flexible-mode",),
         paper="WF",
         locator="Sec. III",
         quantity="aperture velocity amplitude of a first flexible mode of several hertz ('several m/s')",
@@ -1052,7 +1056,8 @@ CLAIMS = [
         discussed_in=DOCS["III"],
     ),
     Claim(
-        id="WF-c5-velocity-nominal",
+        id="WF-sec3-velocity-vs-nominal",
+        aliases=("WF-c5-velocity-nominal",),
         paper="WF",
         locator="Sec. III",
         quantity="velocity perturbation relative to the nominal velocity",
@@ -1066,7 +1071,8 @@ CLAIMS = [
         discussed_in=DOCS["III"],
     ),
     Claim(
-        id="WF-c6-velocity-ins",
+        id="WF-sec3-velocity-vs-ins",
+        aliases=("WF-c6-velocity-ins",),
         paper="WF",
         locator="Sec. III",
         quantity="velocity perturbation relative to the best INS/GPS velocity accuracy",
@@ -1108,7 +1114,8 @@ CLAIMS = [
         discussed_in=DOCS["III"],
     ),
     Claim(
-        id="WF-c7-ratio",
+        id="WF-eq9-velocity-position-ratio",
+        aliases=("WF-c7-ratio",),
         paper="WF",
         locator="Sec. III, after Eq. (9)",
         quantity="R / (2|v|), velocity-to-position sensitivity ratio",
@@ -1122,7 +1129,8 @@ CLAIMS = [
         discussed_in=DOCS["III"],
     ),
     Claim(
-        id="WF-c8-effective",
+        id="WF-eq9-velocity-error-dominates",
+        aliases=("WF-c8-effective",),
         paper="WF",
         locator="Sec. III, after Eq. (9)",
         quantity="a 1 m/s velocity error changes the modelled frequency at least 100 times as much as a "
@@ -1136,7 +1144,8 @@ CLAIMS = [
         note="'At least 100 times more effective', read with the exact gradients of Eqs. (8)-(9) over the "
         "Sec. III scenario (assumed speed, altitude and emitter distance: the paper gives none). The "
         "exact ratio is R/|v_perp| >= R/|v|, "
-        "so it holds on any track with R >= 100 s * |v|. The paper's own argument, R/(2|v|) (WF-c7-ratio), "
+        "so it holds on any track with R >= 100 s * |v|. The paper's own argument, R/(2|v|) "
+        "(WF-eq9-velocity-position-ratio), "
         "falls short of 100 on this geometry. Through Eq. (6) the location-error leverage depends on the "
         "error: a constant vertical velocity error is mostly absorbed by the f0 estimate (page).",
         discussed_in=DOCS["III"],
@@ -1146,8 +1155,8 @@ CLAIMS = [
         id="WF-eq13-innovation",
         paper="WF",
         locator="Eq. (13)",
-        quantity="the printed filter (innovation y_a - x) attains the Eq. (14) covariance: its RMS error "
-        "over sqrt(P_DL(k/k))",
+        quantity="the printed filter (innovation $y_a - x$) attains the Eq. (14) covariance: its RMS error "
+        "over $\\sqrt{P_{DL}(k/k)}$",
         published=1.0,
         unit="",
         kind="reproduction",
@@ -1162,7 +1171,8 @@ CLAIMS = [
             rel=0.02, reason="the oracle leaves out the accelerometer noise (below 1 % here)", policy="exact"
         ),
         note="Seeded simulation of the printed recursion (200 paths, 5000 steps, sigma_a = 1e-3 m/s^2, a "
-        "0.5 m/s^2 manoeuvre): its error is about 80 times sqrt(P_DL(k/k)), because the printed innovation "
+        "0.5 m/s^2 manoeuvre): its error is about 80 times $\\sqrt{P_{DL}(k/k)}$, because the printed "
+        "innovation "
         "subtracts a velocity from an acceleration (the estimate follows the acceleration). Oracle: the "
         "same recursion as a linear filter, noise-free, by scipy. Was the truth value 'attains Eq. (14)'; "
         "now the ratio itself.",
@@ -1172,7 +1182,7 @@ CLAIMS = [
         id="WF-eq20-PNG",
         paper="WF",
         locator="Eq. (20)",
-        quantity="the printed joint matrix (block (2,3) = P_NG) is the covariance of the stacked errors: "
+        quantity="the printed joint matrix (block (2,3) = $P_{NG}$) is the covariance of the stacked errors: "
         "largest difference of its block (2,3) from the L-G cross-covariance, relative to the largest entry",
         published=0.0,
         unit="",
@@ -1194,7 +1204,8 @@ CLAIMS = [
         discussed_in=DOCS["IV"],
     ),
     Claim(
-        id="WF-c11-outage",
+        id="WF-eq19-outage-infinite-covariance",
+        aliases=("WF-c11-outage",),
         paper="WF",
         locator="Sec. IV.C, after Eq. (19)",
         quantity="an outage is handled by setting its covariance to infinity",
@@ -1207,7 +1218,8 @@ CLAIMS = [
         discussed_in=DOCS["IV"],
     ),
     Claim(
-        id="WF-c12-wls",
+        id="WF-eq19-weighted-least-squares",
+        aliases=("WF-c12-wls",),
         paper="WF",
         locator="Sec. IV.C, after Eq. (19)",
         quantity="Eq. (18) is the solution of a weighted least-squares cost",
@@ -1216,7 +1228,8 @@ CLAIMS = [
         compute=_fusion_is_wls,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="The gradient of sum (x - x_i)' P_i^-1 (x - x_i) vanishes at the fused estimate. The proof "
+        note="The gradient of $\\sum (x - x_i)' P_i^{-1} (x - x_i)$ vanishes at the fused estimate. The "
+        "proof "
         "in [7] is not available; the minimum-variance reading holds for uncorrelated local errors.",
         discussed_in=DOCS["IV"],
     ),
@@ -1256,7 +1269,7 @@ CLAIMS = [
         id="WF-rem1-weights",
         paper="WF",
         locator="Remark (i)",
-        quantity="k_i = sum_j sqrt(sigma_j)/sqrt(sigma_i) is feasible",
+        quantity="$k_i = \\sum_j \\sqrt{\\sigma_j}/\\sqrt{\\sigma_i}$ is feasible",
         published=True,
         unit="statement",
         compute=_remark1_any_sigma,
@@ -1318,7 +1331,7 @@ CLAIMS = [
         id="WF-eq25-fL1c",
         paper="WF",
         locator="Sec. IV.D",
-        quantity="f_L1 / c",
+        quantity="$f_{L1} / c$",
         published=_fl1,
         unit="1/m",
         compute=f_l1_over_c,
@@ -1327,17 +1340,18 @@ CLAIMS = [
         erratum="WF-E5-fL1c-truncated",
         oracle=lambda: 154 * 10.23e6 / 299_792_458.0,
         oracle_tolerance=printed("5.2550")[1],
-        note="1575.42 MHz / 299 792 458 m/s = 5.2550 m^-1, which rounds to 5.26; the printed 5.25 is "
+        note="1575.42 MHz / 299 792 458 m/s = 5.2550 m$^{-1}$, which rounds to 5.26; the printed 5.25 is "
         "truncated (0.1 % low; no effect on the figures). Oracle: L1 = 154 x 10.23 MHz over c. "
         "Verdict changed from consistent: the tolerance had an allowance for the truncation, which the "
         "printed-digits policy does not grant.",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
-        id="WF-c13-sigmaG",
+        id="WF-sec4d-sigma-g-from-gps-doppler",
+        aliases=("WF-c13-sigmaG",),
         paper="WF",
         locator="Sec. IV.D",
-        quantity="sigma_G = 1 Hz is consistent with the GPS velocity accuracy from Doppler: the Doppler "
+        quantity="$\\sigma_G$ = 1 Hz is consistent with the GPS velocity accuracy from Doppler: the Doppler "
         "noise equivalent to that accuracy per line of sight",
         published=_sg,
         unit="Hz",
@@ -1353,10 +1367,11 @@ CLAIMS = [
         discussed_in=DOCS["IVD"],
     ),
     Claim(
-        id="WF-c13-sigmaL-high-res",
+        id="WF-sec4d-sigma-l-high-resolution",
+        aliases=("WF-c13-sigmaL-high-res",),
         paper="WF",
         locator="Sec. IV.D",
-        quantity="sigma_L = 200 sigma_a at sigma_a = 10 um/s^2",
+        quantity="$\\sigma_L = 200 \\sigma_a$ at $\\sigma_a$ = 10 µm/s²",
         published=_sL_lo,
         unit="m/s",
         kind="cross-check",
@@ -1368,10 +1383,11 @@ CLAIMS = [
         discussed_in=DOCS["IVD"],
     ),
     Claim(
-        id="WF-c13-sigmaL-medium-res",
+        id="WF-sec4d-sigma-l-medium-resolution",
+        aliases=("WF-c13-sigmaL-medium-res",),
         paper="WF",
         locator="Sec. IV.D",
-        quantity="sigma_L = 200 sigma_a at sigma_a = 10 mm/s^2",
+        quantity="$\\sigma_L = 200 \\sigma_a$ at $\\sigma_a$ = 10 mm/s²",
         published=_sL_hi,
         unit="m/s",
         kind="cross-check",
@@ -1386,7 +1402,8 @@ CLAIMS = [
         id="WF-eq24-PN",
         paper="WF",
         locator="Eq. (24)",
-        quantity="P_N P_N^T = sigma_N^2 I is consistent with Eq. (11): sigma_DN of the literal reading "
+        quantity="$P_N P_N^T = \\sigma_N^2 I$ is consistent with Eq. (11): $\\sigma_{DN}$ of the literal "
+        "reading "
         "computed in cm/s over the same computed in m/s",
         published=1.0,
         unit="",
@@ -1397,31 +1414,34 @@ CLAIMS = [
         erratum="WF-E2-eq24-PN",
         oracle=_eq24_oracle,
         oracle_tolerance=Tolerance(abs=1e-12, reason="round-off", policy="exact"),
-        note="A consistent reading gives the same sigma_DN in any velocity unit (ratio 1); the literal "
-        "reading gives 0.1. Oracle: the derivation (P_N P_N^T in (m/s)^4 against sigma_N^2 in (m/s)^2, "
-        "so sigma_DN scales as the square root of the unit). Was a truth value; now the ratio itself.",
+        note="A consistent reading gives the same $\\sigma_{DN}$ in any velocity unit (ratio 1); the literal "
+        "reading gives 0.1. Oracle: the derivation ($P_N P_N^T$ in (m/s)$^4$ against $\\sigma_N^2$ in "
+        "(m/s)$^2$, "
+        "so $\\sigma_{DN}$ scales as the square root of the unit). Was a truth value; now the ratio itself.",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
-        id="WF-c14-60dB",
+        id="WF-fig1-improvement-at-100ug",
+        aliases=("WF-c14-60dB",),
         paper="WF",
         locator="Sec. IV.D, Fig. 1",
-        quantity="improvement with a 100 ug accelerometer at sigma_T = 2 m/s",
+        quantity="improvement with a 100 µg accelerometer at $\\sigma_T$ = 2 m/s",
         published=_c14,
         unit="dB",
         compute=lambda: improvement_db(sigma_a_example(), IN.sigma_t_large),
         tolerance=_c14_tol,
         expected_status="reproduced",
         relation="<=",
-        note="'At least 60 dB reduction'. Per-axis sigma_D = sqrt(Eq. (23) middle term / 3); "
-        "1 ug = 9.80665e-6 m/s^2; steady state; P_DL(k/k). Under the full-trace reading it is -55.4 dB.",
+        note="'At least 60 dB reduction'. Per-axis $\\sigma_D = \\sqrt{\\text{Eq. (23) middle term} / 3}$; "
+        "1 µg = 9.80665e-6 m/s²; steady state; $P_{DL}(k/k)$. Under the full-trace reading it is -55.4 dB.",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
-        id="WF-c15-factor",
+        id="WF-sec4d-improvement-factor",
+        aliases=("WF-c15-factor",),
         paper="WF",
         locator="Sec. IV.D",
-        quantity="accuracy improvement factor sigma_DN / sigma_D at 100 ug, sigma_T = 2 m/s",
+        quantity="accuracy improvement factor $\\sigma_{DN} / \\sigma_D$ at 100 µg, $\\sigma_T$ = 2 m/s",
         published=_c15f,
         unit="",
         compute=lambda: float(
@@ -1430,14 +1450,15 @@ CLAIMS = [
         tolerance=_c15f_tol,
         expected_status="reproduced",
         relation=">=",
-        note="'A factor of 10^3', read with the 'at least' of the same sentence.",
+        note="'A factor of $10^3$', read with the 'at least' of the same sentence.",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
-        id="WF-c15-sigmaD",
+        id="WF-sec4d-fused-velocity-accuracy",
+        aliases=("WF-c15-sigmaD",),
         paper="WF",
         locator="Sec. IV.D",
-        quantity="improved local velocity accuracy at 100 ug, sigma_T = 2 m/s",
+        quantity="improved local velocity accuracy at 100 µg, $\\sigma_T$ = 2 m/s",
         published=_c15,
         unit="m/s",
         compute=lambda: sigma_d_bound(sigma_a_example(), IN.sigma_t_large),
@@ -1448,7 +1469,8 @@ CLAIMS = [
         discussed_in=DOCS["IVD"],
     ),
     Claim(
-        id="WF-c17-unfiltered",
+        id="WF-sec4d-unfiltered-velocity-accuracy",
+        aliases=("WF-c17-unfiltered",),
         paper="WF",
         locator="Sec. IV.D",
         quantity="local velocity accuracy without filtering at 100 ug",
@@ -1466,14 +1488,15 @@ CLAIMS = [
         id="WF-fig1-slope",
         paper="WF",
         locator="Fig. 1",
-        quantity="the sigma_T = 2 m/s curve rises 20 dB per decade of accelerometer resolution",
+        quantity="the $\\sigma_T$ = 2 m/s curve rises 20 dB per decade of accelerometer resolution",
         published=True,
         unit="statement",
         compute=_fig1_slope,
         tolerance=EXACT,
         expected_status="reproduced",
         note="Figure-only (no curve values printed); least-squares slope within 0.5 dB/decade over "
-        "10 um/s^2 to 10 mm/s^2, as sigma_DL ~ 2 s * sigma_a predicts. Verdict changed from consistent: "
+        "10 um/s^2 to 10 mm/s^2, as $\\sigma_{DL} \\approx 2\\,\\mathrm{s} \\cdot \\sigma_a$ predicts. "
+        "Verdict changed from consistent: "
         "the computation reads published inputs only.",
         discussed_in=DOCS["IVD"],
     ),
@@ -1482,7 +1505,7 @@ CLAIMS = [
         paper="WF",
         locator="Fig. 1",
         quantity="larger lever-arm uncertainty gives more improvement: smallest separation (dB) of the "
-        "curves sigma_T = 2 below 0.2 below 0 m/s over the stated range",
+        "curves $\\sigma_T$ = 2 below 0.2 below 0 m/s over the stated range",
         published=0.0,
         relation=">",
         unit="dB",
@@ -1497,7 +1520,8 @@ CLAIMS = [
         discussed_in=DOCS["IVD"],
     ),
     Claim(
-        id="WF-c18-gps-little",
+        id="WF-fig2-gps-adds-little",
+        aliases=("WF-c18-gps-little",),
         paper="WF",
         locator="Sec. IV.D, Fig. 2",
         quantity="GPS adds less than 1 dB to the accelerometer over the stated range",
@@ -1506,15 +1530,16 @@ CLAIMS = [
         compute=_gps_adds_little,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="|Fig. 2 - Fig. 1| < 1 dB for 1 and 3 satellites, all sigma_T, sigma_a in 10 um/s^2 to "
-        "10 mm/s^2. Beyond about 30 mm/s^2 it no longer holds.",
+        note="|Fig. 2 - Fig. 1| < 1 dB for 1 and 3 satellites, all $\\sigma_T$, $\\sigma_a$ in 10 µm/s² to "
+        "10 mm/s². Beyond about 30 mm/s² it no longer holds.",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
-        id="WF-c19-gps-noticeable",
+        id="WF-sec4d-gps-noticeable-only-when-severe",
+        aliases=("WF-c19-gps-noticeable",),
         paper="WF",
         locator="Sec. IV.D",
-        quantity="GPS is noticeable only with severe sigma_T, a poor accelerometer and 3 satellites",
+        quantity="GPS is noticeable only with severe $\\sigma_T$, a poor accelerometer and 3 satellites",
         published=True,
         unit="statement",
         compute=_gps_noticeable_only_when,
@@ -1526,10 +1551,11 @@ CLAIMS = [
         discussed_in=DOCS["IVD"],
     ),
     Claim(
-        id="WF-c20-three-vs-one",
+        id="WF-fig2-three-vs-one-satellite",
+        aliases=("WF-c20-three-vs-one",),
         paper="WF",
         locator="Sec. IV.D, Fig. 2",
-        quantity="3 satellites virtually identical to 1 at sigma_T = 0: largest difference of the two "
+        quantity="3 satellites virtually identical to 1 at $\\sigma_T$ = 0: largest difference of the two "
         "improvement curves (dB) over the stated range",
         published=0.0,
         relation="<=",
@@ -1548,7 +1574,7 @@ CLAIMS = [
         paper="WF",
         locator="Sec. IV.D, Fig. 2",
         quantity="more GPS satellites never give less improvement: largest rise of the bound (dB) of 3 "
-        "satellites over 1, or 1 over none, any sigma_T, over the stated sigma_a range",
+        "satellites over 1, or 1 over none, any $\\sigma_T$, over the stated $\\sigma_a$ range",
         published=0.0,
         relation="<=",
         unit="dB",

@@ -140,7 +140,8 @@ CLAIMS = [
         id="WF-eq11-covariance",
         paper="WF",
         locator="Eq. (11)",
-        quantity="P_DN = tau P_N tau^T + Q_T is the covariance of the Eq. (10) error: largest relative "
+        quantity="$P_{DN} = \\tau P_N \\tau^T + Q_T$ is the covariance of the Eq. (10) error: largest "
+        "relative "
         "difference from a 200 000-draw sample covariance",
         published=0.0,
         unit="",
@@ -161,23 +162,26 @@ CLAIMS = [
         id="WF-eq11-large-QT",
         paper="WF",
         locator="Sec. IV.B.1, after Eq. (11)",
-        quantity="with a large Q_T, P_DN is large regardless of P_N: sigma_DN / sigma_T at sigma_T = 2 m/s "
+        quantity="with a large $Q_T$, $P_{DN}$ is large regardless of $P_N$: $\\sigma_{DN} / \\sigma_T$ at "
+        "$\\sigma_T$ = 2 m/s "
         "varies by less than 1 % between sigma_N = 0, 0.02 and 0.2 m/s",
         published=True,
         unit="statement",
         compute=_large_qt_regardless,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="With Eq. (24) read as tau P_N tau^T = sigma_N^2 I (WF-E2), sigma_DN = sqrt(sigma_N^2 + "
-        "sigma_T^2): 1, 1.00005 and 1.005 times sigma_T for sigma_N = 0, 0.02 and 0.2 m/s.",
+        note="With Eq. (24) read as $\\tau P_N \\tau^T = \\sigma_N^2 I$ (WF-E2), "
+        "$\\sigma_{DN} = \\sqrt{\\sigma_N^2 + \\sigma_T^2}$: 1, 1.00005 and 1.005 times $\\sigma_T$ for "
+        "$\\sigma_N$ = 0, 0.02 and 0.2 m/s.",
         discussed_in=PAGE_IV,
     ),
     Claim(
         id="WF-eq14-three-factors",
         paper="WF",
         locator="Sec. IV.B.2, after Eq. (14)",
-        quantity="the local accuracy depends on Q_a, R_L and the update rate: doubling each of Q_a, R_L, "
-        "T_s in turn raises the steady-state sqrt(P_DL(k/k)) by more than 1 %",
+        quantity="the local accuracy depends on $Q_a$, $R_L$ and the update rate: doubling each of $Q_a$, "
+        "$R_L$, "
+        "$T_s$ in turn raises the steady-state $\\sqrt{P_{DL}(k/k)}$ by more than 1 %",
         published=True,
         unit="statement",
         compute=_eq14_three_factors,
@@ -185,7 +189,7 @@ CLAIMS = [
         expected_status="reproduced",
         note="Steady state of Eq. (14) at 100 ug, T_s = 0.02 s, sigma_L = 200 sigma_a: about 0.0020 m/s; "
         "doubling Q_a or R_L raises it by about 19 % (the fourth root of 2), doubling T_s by about 41 % "
-        "(steady state close to sqrt(sigma_a T_s sigma_L)).",
+        "(steady state close to $\\sqrt{\\sigma_a T_s \\sigma_L}$).",
         discussed_in=PAGE_IV,
     ),
     Claim(
@@ -193,7 +197,7 @@ CLAIMS = [
         paper="WF",
         locator="Remark (ii)",
         quantity="the bound grows more conservative as the correlation weakens: tr(bound)/tr(true) "
-        "increases strictly as rho falls from 1 to 0, and is 1 at rho = 1",
+        "increases strictly as $\\rho$ falls from 1 to 0, and is 1 at $\\rho = 1$",
         published=True,
         unit="statement",
         compute=_more_conservative_as_weaker,
@@ -209,7 +213,7 @@ CLAIMS = [
         paper="WF",
         locator="Eqs. (16)-(17)",
         quantity="the single-step Kalman update of Eq. (16) gives the covariance of Eq. (17): largest "
-        "relative difference between (I - K H_G) P_DL and [P_DL^-1 + H_G^T R_G^-1 H_G]^-1",
+        "relative difference between $(I - K H_G) P_{DL}$ and $[P_{DL}^{-1} + H_G^T R_G^{-1} H_G]^{-1}$",
         published=0.0,
         unit="",
         kind="reproduction",
@@ -221,15 +225,17 @@ CLAIMS = [
             policy="exact",
         ),
         expected_status="reproduced",
-        note="H_G of Eq. (25) (three and one satellite) with f_L1/c, R_G = sigma_G^2 I, 20 seeded priors "
+        note="H_G of Eq. (25) (three and one satellite) with $f_{L1}/c$, $R_G = \\sigma_G^2 I$, 20 seeded "
+        "priors "
         "each (the matrix inversion lemma).",
         discussed_in=PAGE_IV,
     ),
     Claim(
-        id="WF-c21-50Hz",
+        id="WF-fig1-update-rate-50hz",
+        aliases=("WF-c21-50Hz",),
         paper="WF",
         locator="Sec. IV.D, axis label of Figs. 1-2",
-        quantity="the '50 Hz measurement update rate' of the axis label is 1/T_s of the parameter list",
+        quantity="the '50 Hz measurement update rate' of the axis label is $1/T_s$ of the parameter list",
         published=_rate,
         unit="Hz",
         kind="cross-check",
@@ -240,11 +246,12 @@ CLAIMS = [
         discussed_in=PAGE,
     ),
     Claim(
-        id="WF-c22-mems-sensitive",
+        id="WF-sec4d-mems-ten-times-more-sensitive",
+        aliases=("WF-c22-mems-sensitive",),
         paper="WF",
         locator="Sec. IV.D, after Fig. 2",
-        quantity="MEMS devices an order of magnitude more sensitive than 100 ug: 100 ug over the "
-        "high-resolution end (10 um/s^2) of the range Sec. IV.D lists from [4]",
+        quantity="MEMS devices an order of magnitude more sensitive than 100 µg: 100 µg over the "
+        "high-resolution end (10 µm/s²) of the range Sec. IV.D lists from [4]",
         published=10.0,
         unit="",
         relation=">=",
@@ -258,11 +265,12 @@ CLAIMS = [
         discussed_in=PAGE,
     ),
     Claim(
-        id="WF-c23-negligible",
+        id="WF-sec5-aperture-errors-negligible",
+        aliases=("WF-c23-negligible",),
         paper="WF",
         locator="Sec. V",
         quantity="the processing reduces the aperture errors' impact to a negligible level: the fused bound "
-        "sigma_D at 100 ug and sigma_T = 2 m/s is below the on-board navigation accuracy sigma_N",
+        "$\\sigma_D$ at 100 µg and $\\sigma_T$ = 2 m/s is below the on-board navigation accuracy $\\sigma_N$",
         published=True,
         unit="statement",
         compute=_negligible,
