@@ -9,7 +9,8 @@ no source shows only its outputs, and a cell with neither disappears.
 Numbering. One scheme for figures, theorems and exercises, in HTML and in the PDF:
 
 - a figure named ``fig-<paper>-<n>[-<m>...]`` (or ``fig-<paper>-fig<n>``) reproduces the
-  paper's figure and carries its number: ``fig-atc10-2-1`` is Fig. 2.1;
+  paper's figure and carries its number: ``fig-atc10-2-1`` is Fig. 2.1, and
+  ``fig-atc10-3-3-to-3-6`` (one grid for a run of the paper's figures) is Fig. 3.3–3.6;
 - a theorem titled ``Theorem <n> of <paper>...`` carries the paper's number ``<n>`` and
   keeps the rest of the title;
 - everything the book adds is numbered N1, N2, ... per chapter (figures and theorems), so
@@ -31,6 +32,8 @@ from sphinx.environment import BuildEnvironment
 
 PAPERS = ("wf", "sp", "atc10", "kzl")
 FIGURE_RE = re.compile(r"^fig-(?:wf|sp|atc10|kzl)-(?:fig)?(\d+(?:-\d+)*)$")
+# one figure of the book that redraws a run of the paper's figures: fig-atc10-3-3-to-3-6
+FIGURE_RANGE_RE = re.compile(r"^fig-(?:wf|sp|atc10|kzl)-(?:fig)?(\d+(?:-\d+)*)-to-(\d+(?:-\d+)*)$")
 THEOREM_RE = re.compile(r"^Theorem\s+([A-Z]?\d+(?:\.\d+)*)\s+of\s+(.*)$")
 
 # statements that are bookkeeping for the build, not part of the model being shown
@@ -46,7 +49,14 @@ HELPER_RE = re.compile(
 
 
 def paper_figure_number(name: str) -> str | None:
-    """The paper's figure number that a figure name carries, or None for the book's own."""
+    """The paper's figure number that a figure name carries, or None for the book's own.
+
+    ``fig-atc10-2-1`` carries 2.1; ``fig-atc10-3-3-to-3-6`` (one grid redrawing four of the
+    paper's figures) carries 3.3–3.6.
+    """
+    m = FIGURE_RANGE_RE.match(name)
+    if m:
+        return f"{m.group(1).replace('-', '.')}\u2013{m.group(2).replace('-', '.')}"
     m = FIGURE_RE.match(name)
     return m.group(1).replace("-", ".") if m else None
 
