@@ -133,6 +133,7 @@ def test_build_helpers_are_stripped_from_displayed_cells():
         ("fig-atc10-2-1", "2.1"),
         ("fig-kzl-fig4", "4"),
         ("fig-wf-1", "1"),
+        ("fig-atc10-3-3-to-3-6", "3.3\u20133.6"),  # one grid redrawing a run of figures
         ("fig-sp-architectures", None),  # the book's own: N-numbered
         ("fig-atc10-ma-tails", None),
     ],
