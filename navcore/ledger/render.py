@@ -221,6 +221,8 @@ def latex_table(head: Sequence[str], body: Sequence[Sequence[str]]) -> str:
 
     def cell(text: str, j: int) -> str:
         text = _tex_escape(text).replace("\u200b", r"\allowbreak{}")  # zero-width space: may break
+        if text.startswith("["):  # after the previous row's \\ a "[" would read as its option
+            text = "{}" + text
         return rf"\mbox{{{text}}}" if numeric[j] and text else text
 
     header = " & ".join(rf"\textbf{{{_tex_escape(str(h))}}}" for h in head)
