@@ -107,6 +107,22 @@ class Input:
         The other reading of a ``convention`` input.
     fitted_to : tuple of str
         Claim ids a ``fitted`` input was solved from.
+    module : str
+        The module that declared it (set by :class:`InputSet`; not compared).
+
+    Raises
+    ------
+    ValueError
+        If ``provenance`` is unknown, or the fields its provenance needs are missing: a
+        ``locator`` (published), a ``reason`` (the others), a range ``low <= value <= high``
+        (assumed), an ``alternative`` (convention) or ``fitted_to`` (fitted).
+
+    Examples
+    --------
+    >>> inp = Input(name="WF.doc.noise_m", paper="WF", value=2.0, provenance="assumed",
+    ...             unit="m", low=1.0, high=4.0, grid=4, reason="typical survey accuracy")
+    >>> inp.band_points, inp.source()
+    ((1.0, 2.0, 3.0, 4.0), 'typical survey accuracy')
     """
 
     name: str
@@ -355,6 +371,13 @@ def all_inputs(paper: str | None = None) -> tuple[Input, ...]:
     -------
     tuple of Input
         The registered inputs, in the order they were declared.
+
+    Examples
+    --------
+    >>> IN = InputSet("WF", "doc_inputs")
+    >>> IN.published("carrier_hz", 1.0e9, unit="Hz", locator="Sec. IV", quantity="carrier frequency")
+    >>> "WF.doc_inputs.carrier_hz" in [i.name for i in all_inputs("WF")]
+    True
     """
     return tuple(i for i in _REGISTRY.values() if paper is None or i.paper == paper)
 
@@ -377,6 +400,14 @@ def get_input(name: str) -> Input:
     ValueError
         If no input of that name is registered (its paper module is not imported, or the
         name is wrong).
+
+    Examples
+    --------
+    >>> IN = InputSet("WF", "doc_inputs")
+    >>> IN.published("carrier_hz", 1.0e9, unit="Hz", locator="Sec. IV", quantity="carrier frequency")
+    >>> inp = get_input("WF.doc_inputs.carrier_hz")
+    >>> inp.provenance, inp.locator, inp.value
+    ('published', 'Sec. IV', 1000000000.0)
     """
     try:
         return _REGISTRY[name]
@@ -395,6 +426,15 @@ def recording() -> Iterator[dict[str, Input]]:
     ------
     dict of str to Input
         Filled, as the block runs, with each input read, keyed by its full name.
+
+    Examples
+    --------
+    >>> IN = InputSet("WF", "doc_inputs")
+    >>> IN.published("carrier_hz", 1.0e9, unit="Hz", locator="Sec. IV", quantity="carrier frequency")
+    >>> with recording() as reads:
+    ...     wavelength_m = 3.0e8 / IN.carrier_hz
+    >>> sorted(reads), round(wavelength_m, 3)
+    (['WF.doc_inputs.carrier_hz'], 0.3)
     """
     reads: dict[str, Input] = {}
     token = _RECORDER.set(reads)
@@ -426,6 +466,16 @@ def overriding(values: dict[str, Any]) -> Iterator[None]:
     ------
     ValueError
         If a name in ``values`` is not a registered input.
+
+    Examples
+    --------
+    >>> IN = InputSet("WF", "doc_inputs")
+    >>> IN.published("carrier_hz", 1.0e9, unit="Hz", locator="Sec. IV", quantity="carrier frequency")
+    >>> with overriding({"WF.doc_inputs.carrier_hz": 1.5e9}):
+    ...     print(IN.carrier_hz)
+    1500000000.0
+    >>> IN.carrier_hz
+    1000000000.0
     """
     for name in values:
         get_input(name)  # unknown names are an error, not a silent no-op
@@ -449,6 +499,16 @@ def declaring() -> Iterator[None]:
     ------
     None
         Control of the block; reads are allowed again when it exits.
+
+    Examples
+    --------
+    >>> IN = InputSet("WF", "doc_inputs")
+    >>> IN.published("carrier_hz", 1.0e9, unit="Hz", locator="Sec. IV", quantity="carrier frequency")
+    >>> with declaring():  # doctest: +ELLIPSIS
+    ...     IN.carrier_hz
+    Traceback (most recent call last):
+    ...
+    navcore.ledger.inputs.InputReadError: input WF.doc_inputs.carrier_hz read while a tolerance ...
     """
     token = _DECLARING.set(True)
     try:
@@ -506,6 +566,25 @@ def input_cache(fn: F) -> F:
     InputReadError
         When the wrapper is called outside a recording while a paper module is imported, or
         inside :func:`declaring` (as a direct read would).
+
+    Examples
+    --------
+    >>> IN = InputSet("WF", "doc_inputs")
+    >>> IN.published("carrier_hz", 1.0e9, unit="Hz", locator="Sec. IV", quantity="carrier frequency")
+    >>> calls = []
+    >>> @input_cache
+    ... def wavelength_m(c_m_s):
+    ...     calls.append(c_m_s)
+    ...     return c_m_s / IN.carrier_hz
+    >>> with recording() as reads:
+    ...     first = wavelength_m(3.0e8)
+    >>> with recording() as again:
+    ...     second = wavelength_m(3.0e8)
+    >>> first == second, len(calls), sorted(again)
+    (True, 1, ['WF.doc_inputs.carrier_hz'])
+    >>> with overriding({"WF.doc_inputs.carrier_hz": 1.5e9}):
+    ...     round(wavelength_m(3.0e8), 3), len(calls)
+    (0.2, 2)
     """
     store: dict[Any, list[tuple[tuple[tuple[Input, Any], ...], Any]]] = {}
 
