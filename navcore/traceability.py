@@ -424,7 +424,17 @@ def claim_refs(locator: str, paper: str) -> list[Ref]:
 
 @cache
 def build_index() -> Index:
-    """Assemble the index from the decorators, the book's pages, the tests and the ledger."""
+    """Assemble the index from the decorators, the book's pages, the tests and the ledger.
+
+    Imports every navcore module (:func:`navcore.trace.registry`) and every paper's claims,
+    so the first call takes seconds; the result is cached.
+
+    Returns
+    -------
+    Index
+        Every paper item that a function implements, a claim locates or a page displays,
+        with the pages that mention it.
+    """
     from navcore import ledger
 
     implementations = registry()
