@@ -175,9 +175,11 @@ class Tolerance:
         return max(a, r)
 
     def as_dict(self) -> dict[str, Any]:
+        """The tolerance as the ledger's JSON writes it: ``abs``, ``rel``, ``reason``, ``policy``."""
         return {"abs": self.abs, "rel": self.rel, "reason": self.reason, "policy": self.policy}
 
     def describe(self) -> str:
+        """The size in short: ``"±0.005"``, ``"±10 %"``, both joined by "or", or ``"exact"``."""
         parts = []
         if self.abs is not None and (self.abs or self.rel is None):
             parts.append(f"±{self.abs:.4g}")
@@ -442,6 +444,14 @@ class Erratum:
     ValueError
         If ``paper`` is unknown, a text field is empty, or ``kind`` is not one of
         :data:`ERRATUM_KINDS`.
+
+    Examples
+    --------
+    >>> e = Erratum(id="SP-E9-doc", paper="SP", locator="Eq. (2.4.2)", printed="a + b",
+    ...             finding="a - b", evidence="the derivation in the book", kind="typography",
+    ...             no_claim_reason="a sign with no printed number to check")
+    >>> e.kind, e.claims
+    ('typography', ())
     """
 
     id: str
@@ -513,6 +523,29 @@ class Claim:
         Book docname where the claim is derived (for cross-links).
     aliases : tuple of str
         Former ids that still refer to this claim.
+
+    Raises
+    ------
+    ValueError
+        If the id does not start with its paper key and a dash, a value is not one of its
+        table (:data:`PAPERS`, :data:`STATUSES`, :data:`RELATIONS`, :data:`KINDS`), the
+        note is empty, a truth value is a ``reproduction`` or uses a bound, a computed
+        claim expects ``not-reproducible``, or a discrepant claim lacks its erratum, oracle
+        or oracle tolerance.
+
+    Examples
+    --------
+    >>> value, tol = printed("17.67")
+    >>> c = Claim(id="SP-doc-omega", paper="SP", locator="Fig. 2.1", quantity="natural frequency",
+    ...           published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
+    ...           expected_status="reproduced", note="a synthetic claim")
+    >>> c.kind, c.relation, c.is_statement
+    ('reproduction', '=', False)
+    >>> Claim(id="SP-doc-bad", paper="SP", locator="Fig. 2.1", quantity="q", published=1.0,
+    ...       unit="", compute=None, tolerance=EXACT, expected_status="reproduced", note=" ")
+    Traceback (most recent call last):
+    ...
+    ValueError: Claim.note must state the interpretation (claim SP-doc-bad)
     """
 
     id: str
@@ -579,6 +612,7 @@ class Claim:
 
     @property
     def is_statement(self) -> bool:
+        """Whether the claim is a statement (its published value is a truth value)."""
         return isinstance(self.published, bool)
 
     @property
@@ -662,6 +696,7 @@ class Evaluation:
 
     @property
     def kind(self) -> str:
+        """The claim's kind (:data:`KINDS`)."""
         return str(self.claim.kind)
 
     def note(self) -> str:
