@@ -241,6 +241,20 @@ class InputSet:
     section : str
         A short name for the module's set (``"antijam"``); full input names are
         ``"<paper>.<section>.<attribute>"``.
+
+    Notes
+    -----
+    Declaring an input registers it for the whole process (:func:`all_inputs`); declaring a
+    name twice in one set, or the same full name with another declaration, raises
+    ``ValueError``. Inputs cannot be assigned: ``IN.x = 1`` raises ``AttributeError``.
+
+    Examples
+    --------
+    >>> IN = InputSet("WF", "doc_set")
+    >>> IN.published("carrier_hz", 1.0e9, unit="Hz", locator="Sec. IV", quantity="carrier frequency")
+    >>> IN.assumed("noise_m", 2.0, low=1.0, high=4.0, unit="m", reason="typical survey accuracy")
+    >>> IN.carrier_hz, IN.nominal("noise_m"), [i.provenance for i in IN]
+    (1000000000.0, 2.0, ['published', 'assumed'])
     """
 
     def __init__(self, paper: str, section: str) -> None:
@@ -264,13 +278,39 @@ class InputSet:
         _REGISTRY[full] = inp
 
     def published(self, attr: str, value: Any, *, locator: str, unit: str = "", quantity: str = "") -> None:
-        """Declare an input printed in the paper at ``locator``."""
+        """Declare an input printed in the paper at ``locator``.
+
+        Parameters
+        ----------
+        attr : str
+            Attribute name (a public identifier, unit as suffix: ``carrier_hz``).
+        value : Any
+            The printed value, in ``unit``.
+        locator : str
+            Where it is printed (``"Table 2.1"``); not empty.
+        unit, quantity : str, optional
+            Unit of ``value`` and what it is, in words.
+        """
         self._add(attr, value=value, provenance="published", locator=locator, unit=unit, quantity=quantity)
 
     def convention(
         self, attr: str, value: Any, *, alternative: Any, reason: str, unit: str = "", quantity: str = ""
     ) -> None:
-        """Declare a reading the text leaves open, with the other reading."""
+        """Declare a reading the text leaves open, with the other reading.
+
+        Parameters
+        ----------
+        attr : str
+            Attribute name.
+        value : Any
+            The reading used.
+        alternative : Any
+            The other reading; the ledger shows what it would give.
+        reason : str
+            Why the text leaves it open and why this reading is used.
+        unit, quantity : str, optional
+            Unit of ``value`` and what it is, in words.
+        """
         self._add(
             attr,
             value=value,
@@ -294,7 +334,27 @@ class InputSet:
         grid: int = 0,
         admissible: bool = False,
     ) -> None:
-        """Declare an input the paper does not give: nominal, plausible range and reason."""
+        """Declare an input the paper does not give: nominal, plausible range and reason.
+
+        Parameters
+        ----------
+        attr : str
+            Attribute name.
+        value : Any
+            The nominal value, within ``low``-``high``.
+        low, high : float
+            The plausible range, across which the ledger evaluates the band.
+        reason : str
+            Why the nominal and the range have their values.
+        unit, quantity : str, optional
+            Unit of ``value`` and what it is, in words.
+        grid : int, optional
+            Points across the range (0: its two ends; use a grid where the response is not
+            monotone).
+        admissible : bool, optional
+            The range is every admissible value, so disagreement across it is a
+            discrepancy.
+        """
         self._add(
             attr,
             value=value,
@@ -318,7 +378,21 @@ class InputSet:
         unit: str = "",
         quantity: str = "",
     ) -> None:
-        """Declare a parameter solved from printed results, naming the claims it was fitted to."""
+        """Declare a parameter solved from printed results, naming the claims it was fitted to.
+
+        Parameters
+        ----------
+        attr : str
+            Attribute name.
+        value : Any
+            The fitted value.
+        fitted_to : sequence of str
+            Ids of the claims it was solved from (not empty; they are then not evidence).
+        reason : str
+            How it was solved.
+        unit, quantity : str, optional
+            Unit of ``value`` and what it is, in words.
+        """
         self._add(
             attr,
             value=value,
