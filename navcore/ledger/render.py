@@ -718,6 +718,18 @@ class LedgerTable:
         chapter page, ``""`` for a top-level page).
     link_pages : bool
         Link each claim id to its row on the page that discusses it (for the ledger page).
+
+    Examples
+    --------
+    >>> from navcore.ledger import Claim, evaluate, printed
+    >>> value, tol = printed("17.67")
+    >>> c = Claim(id="SP-doc-omega", paper="SP", locator="Fig. 2.1", quantity="natural frequency",
+    ...           published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
+    ...           expected_status="reproduced", note="a synthetic claim")
+    >>> ev = evaluate(c)
+    >>> html = LedgerTable([ev])._repr_html_()
+    >>> 'id="sp-doc-omega"' in html, "17.671&nbsp;rad/s" in html
+    (True, True)
     """
 
     def __init__(
@@ -881,7 +893,21 @@ class LedgerTable:
 
 
 class CountsTable:
-    """Counts of claims per paper and status (HTML and Markdown)."""
+    """Counts of claims per paper and status (HTML and Markdown).
+
+    Parameters
+    ----------
+    paper : str or None, optional
+        Paper key; ``None`` for every paper, with a row of totals. Every claim counted is
+        evaluated (:func:`~navcore.ledger.registry.counts`).
+
+    Attributes
+    ----------
+    counts : dict
+        :func:`~navcore.ledger.registry.counts` of ``paper``.
+    failing : dict of str to int
+        Per paper, the number of claims failing their check.
+    """
 
     def __init__(self, paper: str | None = None) -> None:
         self.counts = counts(paper)
@@ -937,7 +963,26 @@ def _breakable_heading(text: str) -> str:
 
 
 class ErrataList:
-    """The errata as a list of entries (HTML with anchors; Markdown for the PDF)."""
+    """The errata as a list of entries (HTML with anchors; Markdown for the PDF).
+
+    Parameters
+    ----------
+    items : sequence of Erratum or None, optional
+        The errata to list; ``None`` for every registered erratum.
+    root : str, optional
+        Link prefix from the showing page to the book's root.
+    titles : dict of str to str or None, optional
+        Page docname to its title, for the text of the links to the discussing pages.
+
+    Examples
+    --------
+    >>> from navcore.ledger import Erratum
+    >>> e = Erratum(id="SP-E9-doc", paper="SP", locator="Eq. (2.4.2)", printed="$a + b$",
+    ...             finding="$a - b$", evidence="the derivation in the book", kind="typography",
+    ...             no_claim_reason="a sign with no printed number to check")
+    >>> ErrataList([e])
+    SP-E9-doc: SP, Eq. (2.4.2)
+    """
 
     def __init__(
         self, items: Sequence[Erratum] | None = None, *, root: str = "", titles: dict[str, str] | None = None
@@ -1135,6 +1180,25 @@ class InteractiveLedger:
     :meth:`~navcore.ledger.core.Evaluation.as_json`, so the download is the command line's
     JSON). Columns for the optional record fields ``kind`` and ``band`` appear when any claim
     has them. Below 640 px each row becomes a card. PDF: a compact table without notes.
+
+    Parameters
+    ----------
+    evals : sequence of Evaluation
+        The claims to show, in order.
+    root : str, optional
+        Link prefix from the showing page to the book's root.
+
+    Examples
+    --------
+    >>> from navcore.ledger import Claim, evaluate, printed
+    >>> value, tol = printed("17.67")
+    >>> c = Claim(id="SP-doc-omega", paper="SP", locator="Fig. 2.1", quantity="natural frequency",
+    ...           published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
+    ...           expected_status="reproduced", note="a synthetic claim")
+    >>> ev = evaluate(c)
+    >>> table = InteractiveLedger([ev])
+    >>> [r["status"] for r in table.records], "data-ledger-app" in table._repr_html_()
+    (['reproduced'], True)
     """
 
     def __init__(self, evals: Sequence[Evaluation], *, root: str = "") -> None:
