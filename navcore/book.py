@@ -51,6 +51,15 @@ def setup() -> None:
     plain text. It selects matplotlib's inline backend (a kernel started with
     ``MPLBACKEND=Agg`` would otherwise show figures as ``<Figure size ...>`` text) with PNG
     output, which both the HTML and the LaTeX builders can use.
+
+    Outside a kernel it applies the figure style (:func:`navcore.figures.apply_style`) and
+    numpy's print options (5 digits, no scientific notation for small numbers, 100
+    characters a line) only.
+
+    Returns
+    -------
+    None
+        The settings are global to the process.
     """
     import numpy as np
 
@@ -82,6 +91,17 @@ def book_root_prefix() -> str:
     The book executes every page in its own folder, so the folder holding ``_toc.yml`` above
     the working directory is the book's root: ``""`` for a top-level page, ``"../"`` for a
     chapter page. Outside a book checkout the chapter prefix ``"../"`` is returned.
+
+    Returns
+    -------
+    str
+        ``""``, ``"../"``, ``"../../"`` or ``"../../../"``: one ``"../"`` per folder between
+        the working directory and the book's root (at most three are searched).
+
+    Examples
+    --------
+    >>> book_root_prefix() in ("", "../", "../../", "../../../")
+    True
     """
     here = Path.cwd().resolve()
     for depth, folder in enumerate([here, *here.parents][:4]):
@@ -104,6 +124,50 @@ def claims_table(
     ``root`` is the link prefix to the book's root (default: found from the working
     directory, see :func:`book_root_prefix`); ``link_pages`` links each claim to the page
     that derives it (for the ledger page).
+
+    Parameters
+    ----------
+    paper : str or None, optional
+        Paper key of the claims to show (with ``prefix``; ignored when ``ids`` is given).
+    prefix : str or None, optional
+        Id prefix of the claims to show (``"WF-sec3"``).
+    ids : list of str or None, optional
+        The claims to show, in this order (ids or former ids); overrides ``paper`` and
+        ``prefix``.
+    notes : bool, optional
+        Show each claim's note, tolerance, band and inputs.
+    root : str or None, optional
+        Link prefix to the book's root; ``None`` finds it.
+    link_pages : bool, optional
+        Link each claim id to the page that derives it.
+
+    Returns
+    -------
+    LedgerTable
+        The table (:class:`~navcore.ledger.render.LedgerTable`); the selected claims are
+        evaluated (memoised, :func:`~navcore.ledger.registry.evaluate_claim`).
+
+    Raises
+    ------
+    ValueError
+        If no claim is selected, or an id is not in the ledger.
+
+    Examples
+    --------
+    A real claim is evaluated when its table is made; here the evaluation is replaced by one
+    of a synthetic claim:
+
+    >>> from unittest import mock
+    >>> from navcore.ledger import Claim, evaluate, printed
+    >>> value, tol = printed("17.67")
+    >>> c = Claim(id="SP-doc-omega", paper="SP", locator="Fig. 2.1", quantity="natural frequency",
+    ...           published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
+    ...           expected_status="reproduced", note="a synthetic claim")
+    >>> ev = evaluate(c)
+    >>> with mock.patch("navcore.ledger.evaluate_claim", return_value=ev):
+    ...     t = claims_table(ids=["SP-doc-omega"], root="../")
+    >>> [g.heading for g in t.groups()], t.root
+    (['Fig. 2.1'], '../')
     """
     if ids is not None:
         evals = [ledger.evaluate_claim(i) for i in ids]
@@ -116,18 +180,107 @@ def claims_table(
 
 
 def counts_table(paper: str | None = None) -> CountsTable:
-    """Counts of claims per paper and status."""
+    """Counts of claims per paper and status.
+
+    Every claim of the paper (of every paper, by default) is evaluated.
+
+    Parameters
+    ----------
+    paper : str or None, optional
+        Paper key; ``None`` for every paper (with a row of totals).
+
+    Returns
+    -------
+    CountsTable
+        The table (:class:`~navcore.ledger.render.CountsTable`): per paper, the claims with
+        each derived verdict, the total and the number failing their check.
+
+    Examples
+    --------
+    With the evaluations replaced by the one of a synthetic claim (the real ones take
+    minutes):
+
+    >>> from unittest import mock
+    >>> from navcore.ledger import Claim, evaluate, printed
+    >>> value, tol = printed("17.67")
+    >>> c = Claim(id="SP-doc-omega", paper="SP", locator="Fig. 2.1", quantity="natural frequency",
+    ...           published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
+    ...           expected_status="reproduced", note="a synthetic claim")
+    >>> ev = evaluate(c)
+    >>> row = {"reproduced": 1, "consistent": 0, "inconsistent": 0, "discrepant": 0,
+    ...        "not-reproducible": 0, "total": 1}
+    >>> with mock.patch("navcore.ledger.render.counts", return_value={"SP": row}):
+    ...     with mock.patch("navcore.ledger.render.evaluations", return_value=[ev]):
+    ...         print(repr(counts_table("SP")))
+    Paper  reproduced  consistent  inconsistent  discrepant  not-reproducible  total  failing check
+    SP  1  0  0  0  0  1  0
+    """
     return CountsTable(paper)
 
 
 def errata_list(paper: str | None = None, *, root: str | None = None) -> ErrataList:
-    """The registered errata (of one paper, or all), linked to the pages that discuss them."""
+    """The registered errata (of one paper, or all), linked to the pages that discuss them.
+
+    Parameters
+    ----------
+    paper : str or None, optional
+        Paper key; ``None`` for every paper's errata.
+    root : str or None, optional
+        Link prefix to the book's root (``None`` finds it, :func:`book_root_prefix`); the
+        pages under it give the link texts (their titles).
+
+    Returns
+    -------
+    ErrataList
+        The list (:class:`~navcore.ledger.render.ErrataList`), one entry per erratum.
+
+    Raises
+    ------
+    ValueError
+        If ``paper`` is not a paper key.
+    """
     root = book_root_prefix() if root is None else root
     return ErrataList(ledger.errata(paper), root=root, titles=_page_titles(Path.cwd() / root))
 
 
 def ledger_table(paper: str | None = None, *, root: str | None = None) -> InteractiveLedger:
-    """Every claim (or one paper's) as one table that sorts, filters, searches and downloads."""
+    """Every claim (or one paper's) as one table that sorts, filters, searches and downloads.
+
+    Parameters
+    ----------
+    paper : str or None, optional
+        Paper key; ``None`` for every claim of the ledger.
+    root : str or None, optional
+        Link prefix to the book's root; ``None`` finds it (:func:`book_root_prefix`).
+
+    Returns
+    -------
+    InteractiveLedger
+        The table (:class:`~navcore.ledger.render.InteractiveLedger`); every selected claim
+        is evaluated.
+
+    Raises
+    ------
+    ValueError
+        If ``paper`` is not a paper key.
+
+    Examples
+    --------
+    With the evaluations replaced by the one of a synthetic claim (the real ones take
+    minutes):
+
+    >>> from unittest import mock
+    >>> from navcore.ledger import Claim, evaluate, printed
+    >>> value, tol = printed("17.67")
+    >>> c = Claim(id="SP-doc-omega", paper="SP", locator="Fig. 2.1", quantity="natural frequency",
+    ...           published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
+    ...           expected_status="reproduced", note="a synthetic claim")
+    >>> ev = evaluate(c)
+    >>> with mock.patch("navcore.ledger.evaluations", return_value=[ev]):
+    ...     t = ledger_table("SP", root="")
+    >>> [r["id"] for r in t.records]
+    ['SP-doc-omega']
+    """
     root = book_root_prefix() if root is None else root
     return InteractiveLedger(ledger.evaluations(paper=paper), root=root)
 
@@ -149,6 +302,22 @@ class Table:
     A ``pandas.Styler`` (or a DataFrame) has no representation that the LaTeX builder can
     use (its plain-text fallback prints ``<pandas.io.formats.style.Styler at 0x...>``), so
     the chapters wrap their tables with :func:`table`.
+
+    Parameters
+    ----------
+    data : pandas.DataFrame or pandas.io.formats.style.Styler
+        The table; a DataFrame is shown with its default style.
+
+    Attributes
+    ----------
+    styler : pandas.io.formats.style.Styler
+        The styled table both representations are made from.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> Table(pd.DataFrame({"paper": ["SP", "KZL"], "claims": [155, 48]})).cells()
+    (['', 'paper', 'claims'], [['0', 'SP', '155'], ['1', 'KZL', '48']])
     """
 
     def __init__(self, data: Any) -> None:
@@ -189,7 +358,26 @@ def _markdown_table(data: Any) -> str:
 
 
 def table(data: Any) -> Table:
-    """Show a DataFrame or a formatted ``df.style`` in the HTML and the PDF book alike."""
+    """Show a DataFrame or a formatted ``df.style`` in the HTML and the PDF book alike.
+
+    Parameters
+    ----------
+    data : pandas.DataFrame or pandas.io.formats.style.Styler
+        The table (a Styler keeps its formats and hidden index).
+
+    Returns
+    -------
+    Table
+        The table for both builders (HTML from the Styler, the printed table for the PDF).
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> print(repr(table(pd.DataFrame({"paper": ["SP", "KZL"], "claims": [155, 48]}))))
+      paper  claims
+    0  SP  155
+    1  KZL  48
+    """
     return Table(data)
 
 
@@ -205,13 +393,42 @@ def text_table(frame: Any) -> Table:
     -------
     Table
         The table for both builders (HTML from the Styler, the printed table for the PDF).
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> print(repr(text_table(pd.DataFrame({"paper": ["SP", "KZL"], "claims": [155, 48]}))))
+    paper  claims
+    SP  155
+    KZL  48
     """
     styler = frame.style.hide(axis="index").set_properties(**{"text-align": "left"})
     return Table(styler.set_table_styles([{"selector": "th", "props": "text-align: left;"}]))
 
 
 class Markdown:
-    """An output with HTML and Markdown representations (for boxes and short notes)."""
+    """An output with HTML and Markdown representations (for boxes and short notes).
+
+    Parameters
+    ----------
+    markdown : str
+        The Markdown (used by the PDF builder and as the plain text).
+    html_text : str or None, optional
+        The HTML; ``None`` lets the HTML builder use the Markdown.
+
+    Attributes
+    ----------
+    markdown : str
+        As given.
+    html_text : str or None
+        As given.
+
+    Examples
+    --------
+    >>> box = Markdown("**Ledger for SP:** 3 claims", "<b>Ledger for SP:</b> 3 claims")
+    >>> box
+    **Ledger for SP:** 3 claims
+    """
 
     def __init__(self, markdown: str, html_text: str | None = None) -> None:
         self.markdown = markdown
@@ -228,7 +445,45 @@ class Markdown:
 
 
 def chapter_summary(paper: str) -> Markdown:
-    """A box with the chapter's ledger counts by status, for the top of a chapter."""
+    """A box with the chapter's ledger counts by status, for the top of a chapter.
+
+    Every claim of the paper is evaluated.
+
+    Parameters
+    ----------
+    paper : str
+        Paper key (``"WF"``).
+
+    Returns
+    -------
+    Markdown
+        The counts in a sentence (Markdown) and as coloured chips (HTML), with the number
+        of claims failing their check, if any.
+
+    Raises
+    ------
+    ValueError
+        If ``paper`` is not a paper key.
+
+    Examples
+    --------
+    With the evaluations replaced by the one of a synthetic claim (the real ones take
+    minutes):
+
+    >>> from unittest import mock
+    >>> from navcore.ledger import Claim, evaluate, printed
+    >>> value, tol = printed("17.67")
+    >>> c = Claim(id="SP-doc-omega", paper="SP", locator="Fig. 2.1", quantity="natural frequency",
+    ...           published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
+    ...           expected_status="reproduced", note="a synthetic claim")
+    >>> ev = evaluate(c)
+    >>> row = {"reproduced": 1, "consistent": 0, "inconsistent": 0, "discrepant": 0,
+    ...        "not-reproducible": 0, "total": 1}
+    >>> with mock.patch("navcore.ledger.counts", return_value={"SP": row}):
+    ...     with mock.patch("navcore.ledger.evaluations", return_value=[ev]):
+    ...         chapter_summary("SP")
+    **Ledger for SP:** 1 claims — 1 reproduced; every check passes.
+    """
     c = ledger.counts(paper)[paper]
     failing = sum(not e.passes for e in ledger.evaluations(paper))
     parts = [f"{c[s]} {s}" for s in STATUSES if c[s]]
@@ -254,6 +509,24 @@ def show_figure(fig_id: str, *, display: bool = False) -> Any:
     """Render a registered figure and glue it under ``fig_id`` for a ``{glue:figure}``.
 
     With ``display=True`` the figure is also shown in the cell output.
+
+    Parameters
+    ----------
+    fig_id : str
+        The registered figure's id (``"WF-fig1"``); the Markdown shows it with
+        ``{glue:figure}`` under the same name.
+    display : bool, optional
+        Also show the figure in the cell's output.
+
+    Returns
+    -------
+    None
+        The figure is glued (and closed); nothing is returned.
+
+    Raises
+    ------
+    ValueError
+        If no figure has that id.
     """
     import matplotlib.pyplot as plt
     from myst_nb import glue
@@ -318,7 +591,30 @@ def _readable_value(value: Any) -> str:
 
 
 def assumptions_table(rows: Any, head: tuple[str, str] = ("assumption", "value")) -> Table:
-    """A two-column table of assumed inputs: readable names with units, compact numbers."""
+    """A two-column table of assumed inputs: readable names with units, compact numbers.
+
+    Parameters
+    ----------
+    rows : iterable of (str, Any)
+        Name and value pairs (``dict.items()`` of a scenario, say). A lower-case name with a
+        unit suffix reads as words and a unit (``cruise_altitude_m`` -> "cruise altitude
+        (m)"); other text is kept. Numbers are shown with ``%g``, truth values as yes/no,
+        sequences comma-separated.
+    head : tuple of (str, str), optional
+        The two column headings.
+
+    Returns
+    -------
+    Table
+        The table without its index, for both builders.
+
+    Examples
+    --------
+    >>> print(repr(assumptions_table([("cruise_altitude_m", 10000.0), ("dual_frequency", True)])))
+    assumption  value
+    cruise altitude (m)  10000
+    dual frequency  yes
+    """
     import pandas as pd
 
     data = pd.DataFrame([(_readable_name(str(k)), _readable_value(v)) for k, v in rows], columns=list(head))

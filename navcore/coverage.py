@@ -50,7 +50,34 @@ COUNTED = ("quantity", "statement")  # the quantitative items of the coverage pe
 
 @dataclass(frozen=True)
 class Item:
-    """One printed item of a paper and how the ledger covers it."""
+    """One printed item of a paper and how the ledger covers it.
+
+    Attributes
+    ----------
+    id : str
+        Stable item id, starting with the paper key (``"KZL-p001"``).
+    paper : str
+        Paper key.
+    section : str
+        The paper's section the item stands in (``"Sec. 1"``).
+    locator : str
+        Where exactly, in the paper's words (the section when nothing finer applies).
+    printed : str
+        What the paper prints, in short.
+    category : str
+        One of :data:`CATEGORIES` (module docstring).
+    claims : tuple of str
+        Ids of the ledger claims that check it; empty when it has none.
+    reason : str
+        Why it has no claim (required then).
+
+    Examples
+    --------
+    >>> it = Item(id="KZL-p999", paper="KZL", section="Sec. 1", locator="Sec. 1",
+    ...           printed="a speed ratio of 76", category="quantity")
+    >>> it.covered
+    False
+    """
 
     id: str
     paper: str
@@ -72,7 +99,27 @@ def _snapshot() -> dict[str, Any]:
 
 
 def items(paper: str | None = None) -> tuple[Item, ...]:
-    """The inventory of printed items (of ``paper`` if given), in the paper's order."""
+    """The inventory of printed items (of ``paper`` if given), in the paper's order.
+
+    Read from the committed paper snapshot; nothing is computed.
+
+    Parameters
+    ----------
+    paper : str or None, optional
+        Paper key (``"KZL"``); ``None`` for every paper.
+
+    Returns
+    -------
+    tuple of Item
+        The items, paper by paper in the snapshot's order; empty when the snapshot is
+        absent or has no such paper.
+
+    Examples
+    --------
+    >>> its = items("KZL")
+    >>> all(i.paper == "KZL" for i in its), {i.category for i in its} <= set(CATEGORIES)
+    (True, True)
+    """
     printed = _snapshot().get("printed", {})
     out = []
     for p, rows in printed.items():
@@ -95,7 +142,23 @@ def items(paper: str | None = None) -> tuple[Item, ...]:
 
 
 def problems() -> list[str]:
-    """What breaks the coverage rule: unknown claims, items with neither claim nor reason, duplicates."""
+    """What breaks the coverage rule: unknown claims, items with neither claim nor reason, duplicates.
+
+    Loads every paper's claims and errata (importing the paper modules; nothing is
+    evaluated).
+
+    Returns
+    -------
+    list of str
+        One message per problem: a duplicate item id, an unknown category, an item with
+        neither claim nor reason, an item naming an unknown claim, an erratum with neither
+        claim nor ``no_claim_reason``. Empty when the coverage is complete.
+
+    Examples
+    --------
+    >>> problems()
+    []
+    """
     from navcore import ledger
 
     known = set()
@@ -122,7 +185,27 @@ def problems() -> list[str]:
 
 
 def summary(paper: str) -> dict[str, Any]:
-    """Counts for ``paper``: quantitative items and covered ones, equations, inputs, errata."""
+    """Counts for ``paper``: quantitative items and covered ones, equations, inputs, errata.
+
+    Parameters
+    ----------
+    paper : str
+        Paper key (``"KZL"``).
+
+    Returns
+    -------
+    dict of str to Any
+        ``paper``; ``items`` (quantities and statements), ``covered`` (those with a claim)
+        and ``percent`` (covered share, 0-100 %); ``equations``, ``equations_checked`` and
+        ``equations_reasoned`` (without a claim, with a reason); ``inputs``; ``context``;
+        ``errata`` and ``errata_with_claims``.
+
+    Examples
+    --------
+    >>> s = summary("KZL")
+    >>> s["covered"] <= s["items"], 0.0 <= s["percent"] <= 100.0
+    (True, True)
+    """
     from navcore import ledger
 
     its = items(paper)
@@ -147,7 +230,26 @@ def summary(paper: str) -> dict[str, Any]:
 
 
 def section_rows(paper: str) -> list[dict[str, Any]]:
-    """Per section of ``paper``: quantitative items, covered, equations checked, left without a claim."""
+    """Per section of ``paper``: quantitative items, covered, equations checked, left without a claim.
+
+    Parameters
+    ----------
+    paper : str
+        Paper key (``"KZL"``).
+
+    Returns
+    -------
+    list of dict of str to Any
+        One row per section, in the paper's order: ``section``, ``items`` (quantities and
+        statements), ``covered``, ``equations``, ``checked`` (equations with a claim) and
+        ``left`` (the :class:`Item` objects of the section without a claim).
+
+    Examples
+    --------
+    >>> rows = section_rows("KZL")
+    >>> sum(r["items"] for r in rows) == summary("KZL")["items"]
+    True
+    """
     rows: dict[str, dict[str, Any]] = {}
     for it in items(paper):
         row = rows.setdefault(
@@ -166,7 +268,21 @@ def section_rows(paper: str) -> list[dict[str, Any]]:
 
 
 def summary_frame() -> Any:
-    """One row per paper: quantitative items, covered, percentage, equations, errata (for the book)."""
+    """One row per paper: quantitative items, covered, percentage, equations, errata (for the book).
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per paper of :data:`~navcore.ledger.core.PAPERS` (from :func:`summary`),
+        columns ``Paper``, ``Printed items``, ``With a claim``, ``Covered`` (a percentage as
+        text), ``Numbered equations``, ``Checked by a claim``, ``Errata`` and ``Errata with
+        a claim``.
+
+    Examples
+    --------
+    >>> summary_frame()["Paper"].tolist()
+    ['WF', 'SP', 'ATC10', 'KZL']
+    """
     import pandas as pd
 
     from navcore.ledger import PAPERS
@@ -190,7 +306,25 @@ def summary_frame() -> Any:
 
 
 def sections_frame(paper: str) -> Any:
-    """Per section of ``paper``: items, covered, and each item left without a claim with its reason."""
+    """Per section of ``paper``: items, covered, and each item left without a claim with its reason.
+
+    Parameters
+    ----------
+    paper : str
+        Paper key (``"KZL"``).
+
+    Returns
+    -------
+    pandas.DataFrame
+        The rows of :func:`section_rows`, columns ``Section``, ``Printed items``, ``With a
+        claim``, ``Equations``, ``Checked`` and ``Left without a claim, and why`` (each item
+        left with its reason, or a dash).
+
+    Examples
+    --------
+    >>> sections_frame("KZL").columns.tolist()[:3]
+    ['Section', 'Printed items', 'With a claim']
+    """
     import pandas as pd
 
     rows = []

@@ -96,6 +96,20 @@ def ins_block_diagram(imu_rate_hz: float) -> Figure:
     ----------
     imu_rate_hz : float
         Rate of the IMU increments (shown on the diagram).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The diagram, 9 inches wide, its axes hidden; the caller shows or saves it and
+        closes it.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> fig = ins_block_diagram(imu_rate_hz=100.0)
+    >>> round(float(fig.get_size_inches()[0]), 1)
+    9.0
+    >>> plt.close(fig)
     """
     c = _canvas()
     imu = c.box((0, 0), "IMU\ngyroscopes and\naccelerometers", w=4.2, h=2.0, fill=FILL_SENSOR)
@@ -135,6 +149,20 @@ def gnss_receiver_block_diagram(nav_rate_hz: float) -> Figure:
     ----------
     nav_rate_hz : float
         Output rate of the navigation processor (shown on the diagram).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The diagram, 9.5 inches wide, its axes hidden; the caller shows or saves it and
+        closes it.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> fig = gnss_receiver_block_diagram(nav_rate_hz=1.0)
+    >>> round(float(fig.get_size_inches()[0]), 1)
+    9.5
+    >>> plt.close(fig)
     """
     c = _canvas()
     ant = c.d.add(dsp.Antenna().at((-1.5, 1.2)))
@@ -192,6 +220,20 @@ def tightly_coupled_feedback_diagram(n_states: int, imu_rate_hz: float, gnss_rat
         Number of error states of the integration filter.
     imu_rate_hz, gnss_rate_hz : float
         Strapdown and measurement-update rates.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The diagram, 9.5 inches wide, its axes hidden; the caller shows or saves it and
+        closes it.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> fig = tightly_coupled_feedback_diagram(n_states=17, imu_rate_hz=100.0, gnss_rate_hz=1.0)
+    >>> round(float(fig.get_size_inches()[0]), 1)
+    9.5
+    >>> plt.close(fig)
     """
     c = _canvas()
     imu = c.box((0, 3.0), "IMU", w=2.2, h=1.3, fill=FILL_SENSOR)
@@ -236,6 +278,20 @@ def matched_filter_receiver_diagram(signature_label: str = "i") -> Figure:
     ----------
     signature_label : str
         Label of the aircraft whose signature the filter is matched to.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The diagram, 9.5 inches wide, its axes hidden; the caller shows or saves it and
+        closes it.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> fig = matched_filter_receiver_diagram("i")
+    >>> round(float(fig.get_size_inches()[0]), 1)
+    9.5
+    >>> plt.close(fig)
     """
     c = _canvas()
     i = signature_label
@@ -289,6 +345,20 @@ def integration_architectures_diagram(
         Rate of pseudorange and range-rate updates in the tightly coupled filter.
     min_satellites : int
         Satellites the receiver needs for its own solution.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The diagram, 10 inches wide, its axes hidden; the caller shows or saves it and
+        closes it.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> fig = integration_architectures_diagram(8, 17, 19, 1.0, 25.0, 1.0, 4)
+    >>> round(float(fig.get_size_inches()[0]), 1)
+    10.0
+    >>> plt.close(fig)
     """
     c = _canvas()
     cols = {"loose": 0.0, "tight": 13.0, "deep": 26.0}

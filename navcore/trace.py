@@ -35,7 +35,24 @@ F = TypeVar("F", bound=Callable)
 
 @dataclass(frozen=True, order=True)
 class Ref:
-    """One paper item: ``paper`` key and ``item`` (``"13"``, ``"A.18"``, ``"Table 2.6"``)."""
+    """One paper item: ``paper`` key and ``item`` (``"13"``, ``"A.18"``, ``"Table 2.6"``).
+
+    Built by :func:`parse_ref`, which checks both parts.
+
+    Attributes
+    ----------
+    paper : str
+        Paper key, one of :data:`PAPER_KEYS`.
+    item : str
+        An equation number as the paper prints it (``"13"``, ``"2.4.2"``, ``"A.18"``) or a
+        labelled item (``"Table 2.6"``, ``"Fig. 2.1"``, ``"Sec. 2.5"``).
+
+    Examples
+    --------
+    >>> ref = Ref("WF", "13")
+    >>> str(ref), ref.is_equation, Ref("SP", "Table 2.6").is_equation
+    ('WF 13', True, False)
+    """
 
     paper: str
     item: str
@@ -50,7 +67,23 @@ class Ref:
 
 @dataclass(frozen=True)
 class Implementation:
-    """A model function and the paper items it implements."""
+    """A model function and the paper items it implements (recorded by :func:`implements`).
+
+    Attributes
+    ----------
+    module : str
+        The function's module (``"navcore.location.emitter"``).
+    qualname : str
+        Its qualified name within the module.
+    refs : tuple of Ref
+        The paper items it implements, in the order given.
+
+    Examples
+    --------
+    >>> impl = Implementation("navcore.units.db", "db_to_ratio", (Ref("SP", "Table 2.6"),))
+    >>> impl.name, [str(r) for r in impl.refs]
+    ('navcore.units.db.db_to_ratio', ['SP Table 2.6'])
+    """
 
     module: str
     qualname: str
@@ -65,7 +98,36 @@ _REGISTRY: dict[str, Implementation] = {}
 
 
 def parse_ref(ref: str) -> Ref:
-    """Parse ``"<PAPER> <item>"``; raise ``ValueError`` naming what is wrong."""
+    """Parse ``"<PAPER> <item>"``; raise ``ValueError`` naming what is wrong.
+
+    Parameters
+    ----------
+    ref : str
+        ``"<PAPER> <item>"``: a key of :data:`PAPER_KEYS`, a space, and an equation number
+        as printed (``"2.4.2"``, ``"A.18"``, ``"A18"``) or ``"Table N"``, ``"Fig. N"``,
+        ``"Sec. N"``, ``"Appendix X"``, ``"Theorem N"``.
+
+    Returns
+    -------
+    Ref
+        The parsed reference; an appendix equation written ``"A18"`` becomes ``"A.18"``, as
+        the papers print it.
+
+    Raises
+    ------
+    ValueError
+        If ``ref`` is not a string with a space, the paper key is unknown, or the item is
+        neither an equation number nor a labelled item.
+
+    Examples
+    --------
+    >>> parse_ref("ATC10 A18")
+    Ref(paper='ATC10', item='A.18')
+    >>> parse_ref("XY 13")
+    Traceback (most recent call last):
+    ...
+    ValueError: ref 'XY 13': the paper key must be one of ('WF', 'SP', 'ATC10', 'KZL'), got 'XY'
+    """
     if not isinstance(ref, str) or " " not in ref.strip():
         raise ValueError(f"ref must be '<PAPER> <item>' such as 'WF 13', got {ref!r}")
     paper, item = ref.strip().split(" ", 1)
@@ -94,6 +156,23 @@ def implements(*refs: str) -> Callable[[F], F]:
     -------
     callable
         A decorator that registers the function and returns it unchanged.
+
+    Raises
+    ------
+    ValueError
+        If no reference is given, or one does not parse (:func:`parse_ref`).
+
+    Examples
+    --------
+    ``@implements("WF 13", "WF 14")`` above a model function records it; the references are
+    checked when the decorator is made:
+
+    >>> callable(implements("WF 13", "WF 14"))
+    True
+    >>> implements("WF thirteen")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    ValueError: ref 'WF thirteen': the item must be an equation number as printed ...
     """
     if not refs:
         raise ValueError("refs: give at least one paper item, e.g. implements('WF 13')")
@@ -108,7 +187,21 @@ def implements(*refs: str) -> Callable[[F], F]:
 
 
 def registry() -> tuple[Implementation, ...]:
-    """Every recorded implementation, after importing all navcore modules (sorted by name)."""
+    """Every recorded implementation, after importing all navcore modules (sorted by name).
+
+    Returns
+    -------
+    tuple of Implementation
+        One per decorated function, sorted by full name. Importing every module includes
+        the paper modules, which takes seconds.
+
+    Examples
+    --------
+    >>> from navcore.detection.roc_bounds import chernoff_log_tail
+    >>> impl = next(i for i in registry() if i.qualname == "chernoff_log_tail")
+    >>> [str(r) for r in impl.refs]
+    ['ATC10 3.5.5', 'ATC10 3.5.6', 'ATC10 3.5.7']
+    """
     import navcore
 
     for info in pkgutil.walk_packages(navcore.__path__, prefix="navcore."):

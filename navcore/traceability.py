@@ -69,7 +69,25 @@ _LABELLED = {
 
 
 def paper_equation_number(label: str) -> str | None:
-    """The paper's equation number encoded in a book label (``eq-atc10-a.18`` -> ``A.18``)."""
+    """The paper's equation number encoded in a book label (``eq-atc10-a.18`` -> ``A.18``).
+
+    Parameters
+    ----------
+    label : str
+        A display equation's label, ``eq-<paper>-<number>`` (the paper key in lower case).
+
+    Returns
+    -------
+    str or None
+        The number as the paper prints it (an appendix letter in upper case, followed by a
+        dot); ``None`` for a label of another form (``eq-wf-x-<name>``, the book's own
+        equations).
+
+    Examples
+    --------
+    >>> paper_equation_number("eq-atc10-a.18"), paper_equation_number("eq-wf-x-gain")
+    ('A.18', None)
+    """
     match = _PAPER_LABEL.match(label)
     if match is None:
         return None
@@ -119,6 +137,25 @@ def items_in_text(text: str, *, dotted: bool = False) -> set[str]:
 
     ``dotted`` also counts a bare parenthesised dotted number such as "(2.4.2)" or "(A.18)"
     as an equation (safe for the chapters of the papers with sectioned equation numbers).
+
+    Parameters
+    ----------
+    text : str
+        Prose, a page's Markdown or a claim's locator.
+    dotted : bool, optional
+        Also count bare parenthesised dotted numbers as equations.
+
+    Returns
+    -------
+    set of str
+        Equation numbers (``"13"``, ``"2.4.2"``; an integer range such as "Eqs. (13)-(15)"
+        is filled in) and labelled items (``"Table 2.6"``, ``"Fig. 2.1"``, ``"Sec. 2.5"``,
+        ``"Appendix C"``, ``"Theorem 1"``, ``"Remark ii"``).
+
+    Examples
+    --------
+    >>> sorted(items_in_text("Eqs. (13)-(15) and Table 2.6 of Sec. 2.5"))
+    ['13', '14', '15', 'Sec. 2.5', 'Table 2.6']
     """
     found: set[str] = set()
     for m in _EQ_MENTION.finditer(text):
@@ -152,6 +189,22 @@ def paper_items(paper: str) -> frozenset[str] | None:
     """Equations, tables, figures and sections of the paper: from its text, else the snapshot.
 
     ``None`` only when neither the text nor the committed snapshot has the paper.
+
+    Parameters
+    ----------
+    paper : str
+        Paper key (``"WF"``).
+
+    Returns
+    -------
+    frozenset of str or None
+        The items, spelled as :func:`items_in_text` spells them.
+
+    Examples
+    --------
+    >>> items = paper_items("WF")
+    >>> "13" in items
+    True
     """
     found = paper_items_from_text(paper)
     if found is not None:
@@ -164,7 +217,22 @@ def paper_items(paper: str) -> frozenset[str] | None:
 
 
 def write_items_snapshot() -> Path:
-    """Write :data:`ITEMS_SNAPSHOT` from the papers' texts (all four must be present)."""
+    """Write :data:`ITEMS_SNAPSHOT` from the papers' texts (all four must be present).
+
+    The printed-item inventory kept in the same file (key ``"printed"``, read by
+    :mod:`navcore.coverage`) is carried over unchanged. The file is part of the source tree,
+    so this is a maintenance step, run by hand after a paper's text changes.
+
+    Returns
+    -------
+    pathlib.Path
+        The snapshot's path.
+
+    Raises
+    ------
+    ValueError
+        If a paper's text is absent.
+    """
     items = {p: paper_items_from_text(p) for p in PAPER_FILES}
     missing = [p for p, v in items.items() if v is None]
     if missing:
@@ -181,7 +249,26 @@ def write_items_snapshot() -> Path:
 
 @cache
 def paper_items_from_text(paper: str) -> frozenset[str] | None:
-    """Equations, tables, figures and sections that the paper's text contains (None if absent)."""
+    """Equations, tables, figures and sections that the paper's text contains (None if absent).
+
+    Parameters
+    ----------
+    paper : str
+        Paper key (``"WF"``); its text is looked for at :func:`paper_text_path`.
+
+    Returns
+    -------
+    frozenset of str or None
+        The items named in the text (:func:`items_in_text` with ``dotted``), the equation
+        tags, the section and appendix headings and the remarks; ``None`` when the text is
+        absent.
+
+    Examples
+    --------
+    >>> found = paper_items_from_text("WF")
+    >>> found is None or "13" in found
+    True
+    """
     path = paper_text_path(paper)
     if not path.exists():
         return None
@@ -208,7 +295,30 @@ def paper_items_from_text(paper: str) -> frozenset[str] | None:
 
 @dataclass(frozen=True)
 class BookPage:
-    """One page of the book: its docname, title, chapter paper, labels and mentions."""
+    """One page of the book: its docname, title, chapter paper, labels and mentions.
+
+    Attributes
+    ----------
+    docname : str
+        The page's path under ``book/`` without suffix (``"atc10/21-roc-bounds"``).
+    title : str
+        Its first level-one heading.
+    paper : str or None
+        The paper key of its chapter; ``None`` for a page outside the chapters.
+    displayed : frozenset of str
+        The paper's equation numbers the page displays with a label.
+    labels : tuple of str
+        Every ``eq-<paper>-...`` label on the page.
+    mentioned : frozenset of str
+        The paper items its text names (:func:`items_in_text` with ``dotted``).
+
+    Examples
+    --------
+    >>> page = BookPage("wf/01-location-error", "Location error", "WF", frozenset({"13"}),
+    ...                 ("eq-wf-13",), frozenset({"13", "Table 1"}))
+    >>> page.paper, sorted(page.mentioned)
+    ('WF', ['13', 'Table 1'])
+    """
 
     docname: str
     title: str
@@ -273,6 +383,27 @@ class Entry:
 
 @dataclass
 class Index:
+    """The traceability index, as :func:`build_index` assembles it.
+
+    Attributes
+    ----------
+    entries : dict of Ref to Entry
+        Each paper item named anywhere, with the functions implementing it, the pages that
+        display or mention it, the tests using those functions and the claims locating it.
+    implementations : tuple of Implementation
+        Every decorated navcore function (:func:`navcore.trace.registry`).
+
+    Examples
+    --------
+    >>> from navcore.trace import Implementation, Ref
+    >>> from navcore.traceability import Entry
+    >>> ref = Ref("ATC10", "3.5.5")
+    >>> impl = Implementation("navcore.detection.roc_bounds", "chernoff_log_tail", (ref,))
+    >>> idx = Index({ref: Entry(ref, functions=[impl])}, (impl,))
+    >>> [str(e.ref) for e in idx.by_paper("ATC10")]
+    ['ATC10 3.5.5']
+    """
+
     entries: dict[Ref, Entry]
     implementations: tuple[Implementation, ...]
 
@@ -293,7 +424,17 @@ def claim_refs(locator: str, paper: str) -> list[Ref]:
 
 @cache
 def build_index() -> Index:
-    """Assemble the index from the decorators, the book's pages, the tests and the ledger."""
+    """Assemble the index from the decorators, the book's pages, the tests and the ledger.
+
+    Imports every navcore module (:func:`navcore.trace.registry`) and every paper's claims,
+    so the first call takes seconds; the result is cached.
+
+    Returns
+    -------
+    Index
+        Every paper item that a function implements, a claim locates or a page displays,
+        with the pages that mention it.
+    """
     from navcore import ledger
 
     implementations = registry()
@@ -326,7 +467,33 @@ def build_index() -> Index:
 
 
 def problems(index: Index | None = None) -> list[str]:
-    """Every broken link of the chain, as sentences (empty when the index is whole)."""
+    """Every broken link of the chain, as sentences (empty when the index is whole).
+
+    Parameters
+    ----------
+    index : Index or None, optional
+        The index to check; ``None`` builds the whole one (:func:`build_index`, which
+        imports every navcore module and the ledger's claims).
+
+    Returns
+    -------
+    list of str
+        A function's item shown on no page of its paper's chapter, an item that is not in
+        the paper's text (nor known lost from it), a label of neither book form. The book's
+        pages are always checked.
+
+    Examples
+    --------
+    >>> from navcore.trace import Implementation, Ref
+    >>> from navcore.traceability import Entry
+    >>> ref = Ref("ATC10", "3.5.5")
+    >>> impl = Implementation("navcore.detection.roc_bounds", "chernoff_log_tail", (ref,))
+    >>> idx = Index({ref: Entry(ref, functions=[impl])}, (impl,))
+    >>> for problem in problems(idx):  # doctest: +NORMALIZE_WHITESPACE
+    ...     print(problem)
+    ATC10 3.5.5: implemented by navcore.detection.roc_bounds.chernoff_log_tail but shown on
+    no page of the ATC10 chapter
+    """
     index = index or build_index()
     out = []
     for ref, e in sorted(index.entries.items()):
@@ -374,7 +541,35 @@ def _function_link(module: str, qualname: str, text: str) -> str:
 
 
 def index_markdown(paper: str, index: Index | None = None) -> str:
-    """The paper's items as a Markdown table: functions, tests, pages, claims."""
+    """The paper's items as a Markdown table: functions, tests, pages, claims.
+
+    Parameters
+    ----------
+    paper : str
+        Paper key (``"ATC10"``).
+    index : Index or None, optional
+        The index to show; ``None`` builds the whole one (:func:`build_index`).
+
+    Returns
+    -------
+    str
+        A MyST ``container`` block (class ``trace-table``) holding the table: one row per
+        item of the paper, with the functions (linked to the API reference when public),
+        the test files, the pages (a star where displayed) and the number of claims.
+
+    Examples
+    --------
+    >>> from navcore.trace import Implementation, Ref
+    >>> from navcore.traceability import Entry
+    >>> ref = Ref("ATC10", "3.5.5")
+    >>> impl = Implementation("navcore.detection.roc_bounds", "chernoff_log_tail", (ref,))
+    >>> idx = Index({ref: Entry(ref, functions=[impl])}, (impl,))
+    >>> md = index_markdown("ATC10", idx)
+    >>> print(md.splitlines()[1])
+    | Item | navcore | Tests | Book | Claims |
+    >>> "<navcore.detection.roc_bounds.chernoff_log_tail>" in md
+    True
+    """
     index = index or build_index()
     rows = ["| Item | navcore | Tests | Book | Claims |", "|---|---|---|---|---|"]
     for e in index.by_paper(paper):
@@ -387,7 +582,29 @@ def index_markdown(paper: str, index: Index | None = None) -> str:
 
 
 def reverse_markdown(index: Index | None = None) -> str:
-    """Each decorated navcore function and the paper items it implements."""
+    """Each decorated navcore function and the paper items it implements.
+
+    Parameters
+    ----------
+    index : Index or None, optional
+        The index to show; ``None`` builds the whole one (:func:`build_index`).
+
+    Returns
+    -------
+    str
+        A MyST ``container`` block (class ``trace-table``) holding a two-column Markdown
+        table: the function (linked to the API reference when public) and its items.
+
+    Examples
+    --------
+    >>> from navcore.trace import Implementation, Ref
+    >>> from navcore.traceability import Entry
+    >>> ref = Ref("ATC10", "3.5.5")
+    >>> impl = Implementation("navcore.detection.roc_bounds", "chernoff_log_tail", (ref,))
+    >>> idx = Index({ref: Entry(ref, functions=[impl])}, (impl,))
+    >>> print(reverse_markdown(idx).splitlines()[-2].split(" | ")[-1])
+    ATC10 Eq. (3.5.5) |
+    """
     index = index or build_index()
     rows = ["| navcore function | Implements |", "|---|---|"]
     for impl in index.implementations:

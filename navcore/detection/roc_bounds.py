@@ -35,6 +35,7 @@ __all__ = [
     "NegatedCGF",
     "TailBound",
     "chernoff_log_tail",
+    "chernoff_log_tails",
     "exponent_from_gaussian_exponent",
     "exponent_from_gaussian_exponent_large_n",
     "gallager_log_tail_lower",
@@ -128,7 +129,47 @@ def _solve_increasing(fun, targets: ArrayLike, r_max: float = 1e7) -> FloatArray
 
 
 def chernoff_log_tails(cgf: CumulantGenerating, t: ArrayLike) -> tuple[FloatArray, FloatArray]:
-    """Vectorised :func:`chernoff_log_tail`: (ln bound, optimal r) for each threshold."""
+    """Chernoff bounds on ``ln P(S >= t)`` for many thresholds at once (ATC-10 Eqs. 3.5.5-3.5.7).
+
+    The vectorised form of :func:`chernoff_log_tail`: for each threshold the optimal tilt
+    ``r* >= 0`` solves ``mu'(r) = t`` (``r* = 0``, a bound of 1, for ``t <= E S``) and the bound
+    is ``mu(r*) - r* t``. Where ``mu'(r)`` never reaches ``t`` the tail is empty: the bound is
+    ``-inf`` and the tilt ``inf``.
+
+    Parameters
+    ----------
+    cgf : CumulantGenerating
+        Object with ``cgf(s)``, ``cgf_d1(s)`` and ``cgf_d2(s)`` of the noise sum S.
+    t : array_like
+        Thresholds (units of S); finite. A scalar is treated as one threshold.
+
+    Returns
+    -------
+    log_p : ndarray
+        Natural log of the bound on ``P(S >= t)`` for each threshold (1-D, ``<= 0``).
+    r : ndarray
+        The optimal tilt ``r*`` for each threshold (inverse units of S).
+
+    Raises
+    ------
+    TypeError
+        If ``cgf`` does not provide the three cumulant methods, or ``t`` is not numeric.
+    ValueError
+        If ``t`` holds NaN or infinity.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eqs. (3.5.5)-(3.5.7).
+
+    Examples
+    --------
+    >>> from navcore.detection.multiple_access import MultipleAccessNoise, UniformDensity
+    >>> noise = MultipleAccessNoise(100, 0.01, UniformDensity(0.3))
+    >>> log_p, r = chernoff_log_tails(noise, [0.0, 0.5])
+    >>> [round(float(v), 4) for v in log_p], [round(float(v), 4) for v in r]
+    ([0.0, -0.2046], [0.0, 0.7969])
+    """
     t = np.atleast_1d(np.asarray(t, dtype=float))
     r = _solve_increasing(cgf.cgf_d1, t)
     found = np.isfinite(r)

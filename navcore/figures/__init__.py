@@ -64,7 +64,22 @@ STYLE: dict[str, Any] = {
 
 
 def apply_style() -> None:
-    """Apply the book's matplotlib style (idempotent)."""
+    """Apply the book's matplotlib style (idempotent).
+
+    Updates :data:`matplotlib.rcParams` with :data:`STYLE`: figure size and resolution,
+    grid, no top or right spine, deterministic SVG output.
+
+    Returns
+    -------
+    None
+        The style is global to the process.
+
+    Examples
+    --------
+    >>> apply_style()
+    >>> plt.rcParams["svg.hashsalt"], plt.rcParams["axes.spines.top"]
+    ('navcore', False)
+    """
     plt.rcParams.update(STYLE)  # type: ignore[arg-type]  # matplotlib types the keys as literals
 
 
@@ -103,6 +118,19 @@ def value_bars(
         Colour to legend text, one entry per colour used (default: blue is "this book").
     log : bool
         Logarithmic value axis.
+
+    Returns
+    -------
+    None
+        The bars, labels, marks and legend are drawn on ``ax``.
+
+    Examples
+    --------
+    >>> fig, ax = plt.subplots()
+    >>> value_bars(ax, {"loose": 12.0, "tight": 7.5}, fmt="{:.1f}", printed={"tight": 8.0})
+    >>> len(ax.patches), [t.get_text() for t in ax.texts]
+    (2, ['12.0', '7.5'])
+    >>> plt.close(fig)
     """
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
@@ -152,6 +180,12 @@ class FigureSpec:
         What it shows, which paper figure it reproduces and what was assumed.
     func : callable
         Returns the figure.
+
+    Examples
+    --------
+    >>> s = spec("KZL-fig1")
+    >>> s.paper, s.reproduces
+    ('KZL', 'Fig. 1')
     """
 
     id: str
@@ -167,7 +201,41 @@ _REGISTRY: dict[str, FigureSpec] = {}
 def register(
     fig_id: str, *, paper: str, reproduces: str, caption: str
 ) -> Callable[[Callable[[], Figure]], Callable[[], Figure]]:
-    """Decorator registering a figure function under ``fig_id``."""
+    """Decorator registering a figure function under ``fig_id``.
+
+    Parameters
+    ----------
+    fig_id : str
+        File stem and glue name, starting with the paper key (``"SP-fig2.1"``); unique.
+    paper : str
+        Paper key, one of :data:`~navcore.ledger.core.PAPERS`.
+    reproduces : str
+        The paper figure it reproduces (``"Fig. 2.1"``), or ``"new"``.
+    caption : str
+        What the figure shows, which paper figure it reproduces and what was assumed; not
+        empty.
+
+    Returns
+    -------
+    callable
+        A decorator that records a :class:`FigureSpec` and returns the function unchanged;
+        it raises ``ValueError`` if another function already has ``fig_id``.
+
+    Raises
+    ------
+    ValueError
+        If ``paper`` is unknown or ``caption`` is empty.
+
+    Examples
+    --------
+    Above a figure function, ``@register("SP-fig2.1", paper="SP", reproduces="Fig. 2.1",
+    caption=...)`` records it; the arguments are checked when the decorator is made:
+
+    >>> register("XY-fig1", paper="XY", reproduces="new", caption="a figure")
+    Traceback (most recent call last):
+    ...
+    ValueError: paper must be one of ['WF', 'SP', 'ATC10', 'KZL'], got 'XY'
+    """
     if paper not in PAPERS:
         raise ValueError(f"paper must be one of {list(PAPERS)}, got {paper!r}")
     if not caption.strip():
@@ -194,13 +262,48 @@ def _discover(paper: str | None = None) -> None:
 
 
 def registry() -> dict[str, FigureSpec]:
-    """All registered figures, by id, in id order."""
+    """All registered figures, by id, in id order.
+
+    Imports every figure module of the package first (nothing is drawn).
+
+    Returns
+    -------
+    dict of str to FigureSpec
+        Each figure's id to its :class:`FigureSpec`, sorted by id.
+
+    Examples
+    --------
+    >>> figures = registry()
+    >>> "KZL-fig1" in figures, all(fid == s.id for fid, s in figures.items())
+    (True, True)
+    """
     _discover()
     return dict(sorted(_REGISTRY.items()))
 
 
 def spec(fig_id: str) -> FigureSpec:
-    """The registered figure ``fig_id`` (imports only its paper's figure modules)."""
+    """The registered figure ``fig_id`` (imports only its paper's figure modules).
+
+    Parameters
+    ----------
+    fig_id : str
+        The figure's id (``"KZL-fig1"``).
+
+    Returns
+    -------
+    FigureSpec
+        Its registration (nothing is drawn).
+
+    Raises
+    ------
+    ValueError
+        If no figure has that id.
+
+    Examples
+    --------
+    >>> spec("KZL-fig1").caption == registry()["KZL-fig1"].caption
+    True
+    """
     key = fig_id.split("-", 1)[0]
     if key in PAPERS:
         _discover(key)
@@ -213,7 +316,35 @@ def spec(fig_id: str) -> FigureSpec:
 
 
 def render(fig_id: str) -> Figure:
-    """Build the figure ``fig_id`` with the book's style."""
+    """Build the figure ``fig_id`` with the book's style.
+
+    Applies :func:`apply_style`, calls the figure's function (which computes what it
+    shows) and moves any legend that covers data (:func:`tidy_legends`).
+
+    Parameters
+    ----------
+    fig_id : str
+        The figure's id (``"KZL-fig1"``).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure; the caller closes it.
+
+    Raises
+    ------
+    ValueError
+        If no figure has that id.
+    TypeError
+        If the figure's function does not return a matplotlib figure.
+
+    Examples
+    --------
+    >>> fig = render("KZL-fig1")  # a block diagram: quick to draw
+    >>> type(fig).__name__
+    'Figure'
+    >>> plt.close(fig)
+    """
     apply_style()
     fig = spec(fig_id).func()
     if not isinstance(fig, Figure):
@@ -283,7 +414,30 @@ def tidy_legends(fig: Figure) -> None:
 
 
 def write(fig: Figure, stem: Path) -> list[Path]:
-    """Save ``fig`` as ``stem.svg`` and ``stem.png`` with deterministic metadata."""
+    """Save ``fig`` as ``stem.svg`` and ``stem.png`` with deterministic metadata.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+        The figure to save (left open).
+    stem : pathlib.Path
+        Folder and file name without suffix; a dot in the name is kept (``"ATC10-fig2.16"``).
+        The folder is created if needed.
+
+    Returns
+    -------
+    list of pathlib.Path
+        The SVG and the PNG file written.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> fig, ax = plt.subplots()
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     print([p.name for p in write(fig, Path(tmp) / "ATC10-fig2.16")])
+    ['ATC10-fig2.16.svg', 'ATC10-fig2.16.png']
+    >>> plt.close(fig)
+    """
     stem.parent.mkdir(parents=True, exist_ok=True)
     # ids such as "ATC10-fig2.16" contain dots: append the suffix, never replace one
     svg = stem.parent / f"{stem.name}.svg"
@@ -294,7 +448,35 @@ def write(fig: Figure, stem: Path) -> list[Path]:
 
 
 def write_all(out: Path | str = "figures", only: Iterable[str] | None = None) -> list[Path]:
-    """Write every registered figure (or those in ``only``) to the folder ``out``."""
+    """Write every registered figure (or those in ``only``) to the folder ``out``.
+
+    Each figure is rendered (:func:`render`), written (:func:`write`) and closed; writing
+    every figure computes every figure's model, which takes minutes.
+
+    Parameters
+    ----------
+    out : pathlib.Path or str, optional
+        The folder (created if needed).
+    only : iterable of str or None, optional
+        The ids to write; ``None`` for every registered figure.
+
+    Returns
+    -------
+    list of pathlib.Path
+        The files written, an SVG and a PNG per figure, in the order of the ids.
+
+    Raises
+    ------
+    ValueError
+        If an id in ``only`` is not registered.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     print([p.name for p in write_all(tmp, only=["KZL-fig1"])])
+    ['KZL-fig1.svg', 'KZL-fig1.png']
+    """
     out = Path(out)
     ids = list(only) if only is not None else list(registry())
     written: list[Path] = []

@@ -111,7 +111,33 @@ class Tolerance:
 
     The allowed deviation is ``max(abs, rel * |published|)``. ``policy`` is one of
     :data:`POLICIES` and ``reason`` says how the printed text gives the size; both are
-    mandatory (LEDGER.md, "Tolerance: fixed before the value is computed").
+    mandatory (LEDGER.md, "Tolerance: fixed before the value is computed"). Build one
+    through its policy's helper (:func:`printed`, :func:`prose`, :func:`figure_reading`,
+    :func:`monte_carlo`, :data:`EXACT`).
+
+    Attributes
+    ----------
+    reason : str
+        How the printed text gives the size (not empty).
+    abs : float or None
+        Absolute tolerance, in the claim's unit (finite, >= 0); ``None`` for none.
+    rel : float or None
+        Relative tolerance, a fraction of the published value (finite, >= 0); ``None``
+        for none.
+    policy : str
+        One of :data:`POLICIES`; the ledger refuses a tolerance without one.
+
+    Raises
+    ------
+    ValueError
+        If ``reason`` is empty, ``policy`` is not one of :data:`POLICIES`, or ``abs`` or
+        ``rel`` is negative or not finite.
+
+    Examples
+    --------
+    >>> tol = Tolerance(reason="3 standard errors of a 25-run mean", rel=0.06, policy="monte-carlo")
+    >>> tol.allowed(50.0), tol.describe()
+    (3.0, '±6 %')
     """
 
     reason: str
@@ -149,9 +175,11 @@ class Tolerance:
         return max(a, r)
 
     def as_dict(self) -> dict[str, Any]:
+        """The tolerance as the ledger's JSON writes it: ``abs``, ``rel``, ``reason``, ``policy``."""
         return {"abs": self.abs, "rel": self.rel, "reason": self.reason, "policy": self.policy}
 
     def describe(self) -> str:
+        """The size in short: ``"±0.005"``, ``"±10 %"``, both joined by "or", or ``"exact"``."""
         parts = []
         if self.abs is not None and (self.abs or self.rel is None):
             parts.append(f"±{self.abs:.4g}")
@@ -191,11 +219,38 @@ def printed(text: str, *, extra_abs: float = 0.0, why: str = "") -> tuple[float,
     the paper's own rounding of intermediate values can explain (the text must show that
     rounding); ``why`` says so. Policy ``printed-digits``.
 
+    Parameters
+    ----------
+    text : str
+        The number exactly as printed (``"17.67"``, ``"1.2e-3"``, ``"−4"`` with a minus
+        sign); its digits fix the tolerance, so trailing zeros matter.
+    extra_abs : float, optional
+        Added to the half unit, in the number's unit: what the paper's own rounding of
+        intermediate values explains.
+    why : str, optional
+        Appended to the tolerance's reason (why ``extra_abs`` is added, or how the printed
+        number applies).
+
+    Returns
+    -------
+    value : float
+        The printed number.
+    tolerance : Tolerance
+        Policy ``printed-digits`` with ``abs`` half a unit in the last printed digit plus
+        ``extra_abs``.
+
+    Raises
+    ------
+    ValueError
+        If ``text`` is not a printed number.
+
     Examples
     --------
     >>> value, tol = printed("17.67")
     >>> value, tol.abs, tol.policy
     (17.67, 0.005, 'printed-digits')
+    >>> printed("1.2e-3")[1].abs
+    5e-05
     """
     s = text.strip().replace("−", "-")
     m = re.fullmatch(r"([+-]?)(\d*)(?:\.(\d*))?(?:[eE]([+-]?\d+))?", s)
@@ -318,6 +373,16 @@ def monte_carlo(*, rel: float | None = None, abs: float | None = None, runs: int
     ValueError
         If ``runs < 1``, or (from :class:`Tolerance`) ``rel`` or ``abs`` is negative or not
         finite.
+
+    Examples
+    --------
+    Three standard errors of a 25-run root-mean-square error (a relative standard error of
+    about ``1 / sqrt(2 * 25)``):
+
+    >>> tol = monte_carlo(rel=round(3 / (2 * 25) ** 0.5, 2), runs=25,
+    ...                   why="3 standard errors of a 25-run RMS error")
+    >>> tol.rel, tol.policy, tol.describe()
+    (0.42, 'monte-carlo', '±42 %')
     """
     if runs < 1:
         raise ValueError(f"runs must be >= 1, got {runs!r}")
@@ -379,6 +444,14 @@ class Erratum:
     ValueError
         If ``paper`` is unknown, a text field is empty, or ``kind`` is not one of
         :data:`ERRATUM_KINDS`.
+
+    Examples
+    --------
+    >>> e = Erratum(id="SP-E9-doc", paper="SP", locator="Eq. (2.4.2)", printed="a + b",
+    ...             finding="a - b", evidence="the derivation in the book", kind="typography",
+    ...             no_claim_reason="a sign with no printed number to check")
+    >>> e.kind, e.claims
+    ('typography', ())
     """
 
     id: str
@@ -450,6 +523,29 @@ class Claim:
         Book docname where the claim is derived (for cross-links).
     aliases : tuple of str
         Former ids that still refer to this claim.
+
+    Raises
+    ------
+    ValueError
+        If the id does not start with its paper key and a dash, a value is not one of its
+        table (:data:`PAPERS`, :data:`STATUSES`, :data:`RELATIONS`, :data:`KINDS`), the
+        note is empty, a truth value is a ``reproduction`` or uses a bound, a computed
+        claim expects ``not-reproducible``, or a discrepant claim lacks its erratum, oracle
+        or oracle tolerance.
+
+    Examples
+    --------
+    >>> value, tol = printed("17.67")
+    >>> c = Claim(id="SP-doc-omega", paper="SP", locator="Fig. 2.1", quantity="natural frequency",
+    ...           published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
+    ...           expected_status="reproduced", note="a synthetic claim")
+    >>> c.kind, c.relation, c.is_statement
+    ('reproduction', '=', False)
+    >>> Claim(id="SP-doc-bad", paper="SP", locator="Fig. 2.1", quantity="q", published=1.0,
+    ...       unit="", compute=None, tolerance=EXACT, expected_status="reproduced", note=" ")
+    Traceback (most recent call last):
+    ...
+    ValueError: Claim.note must state the interpretation (claim SP-doc-bad)
     """
 
     id: str
@@ -516,6 +612,7 @@ class Claim:
 
     @property
     def is_statement(self) -> bool:
+        """Whether the claim is a statement (its published value is a truth value)."""
         return isinstance(self.published, bool)
 
     @property
@@ -529,7 +626,49 @@ class Evaluation:
     """The result of evaluating one claim: its value, band, inputs and derived verdict.
 
     ``passes`` is true when the derived ``status`` equals the claim's ``expected_status``
-    and, for a discrepancy, the erratum is named and the oracle agrees.
+    and, for a discrepancy, the erratum is named and the oracle agrees. Built by
+    :func:`evaluate`.
+
+    Attributes
+    ----------
+    claim : Claim
+        The claim evaluated.
+    reproduced : float, bool or None
+        The value computed at the nominal inputs, in the claim's unit (a truth value for a
+        statement); ``None`` when nothing was computed or the computation failed.
+    passes : bool
+        Whether the derived verdict is the expected one (and, for a discrepancy, the
+        oracle agrees).
+    detail : str
+        Why it passes or fails, in words.
+    oracle_value : float, bool or None
+        The independent oracle's value (discrepant claims only).
+    status : str
+        The derived verdict, one of :data:`STATUSES`, or ``"error"`` when the tolerance,
+        the computation, the band or the oracle raised.
+    tolerance : Tolerance or None
+        The claim's tolerance as resolved before the computation.
+    inputs : tuple of dict
+        The inputs the computation read, sorted by name: ``name``, ``provenance``,
+        ``locator`` (published) or ``reason`` (the others), and ``value``.
+    band : tuple of (float, float) or None
+        Lowest and highest value across the assumed inputs' ranges (with the nominal);
+        ``None`` when no assumed input was read.
+    sensitivity : tuple
+        Per assumed input, ``(name, ((point, value), ...))``: the claim's value at each band
+        point of that input, the others nominal.
+    alternatives : tuple of tuple
+        Per convention input read, ``(name, other reading, value under it)``.
+
+    Examples
+    --------
+    >>> value, tol = printed("17.67")
+    >>> c = Claim(id="SP-doc-omega", paper="SP", locator="Fig. 2.1", quantity="natural frequency",
+    ...           published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
+    ...           expected_status="reproduced", note="a synthetic claim")
+    >>> ev = evaluate(c)
+    >>> ev.status, ev.passes, round(ev.deviation, 6)
+    ('reproduced', True, 0.001)
     """
 
     claim: Claim
@@ -557,6 +696,7 @@ class Evaluation:
 
     @property
     def kind(self) -> str:
+        """The claim's kind (:data:`KINDS`)."""
         return str(self.claim.kind)
 
     def note(self) -> str:
@@ -757,7 +897,41 @@ def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
 
     The tolerance is resolved first, where no input can be read; then ``compute`` runs at the
     nominal inputs with every read recorded; then across each assumed input's range (the
-    band, unless ``bands`` is false) and with each convention's other reading.
+    band, unless ``bands`` is false) and with each convention's other reading. The verdict
+    follows the rules of LEDGER.md (module docstring); a discrepant claim's value must also
+    agree with its independent oracle.
+
+    Parameters
+    ----------
+    claim : Claim
+        The claim to evaluate (registered or not).
+    bands : bool, optional
+        Evaluate across the assumed inputs' ranges (one at a time and at the corners of
+        their box). ``False`` computes the nominal value only, so a claim that needs the band
+        to agree gets a stricter verdict; the ledger always uses ``True``.
+
+    Returns
+    -------
+    Evaluation
+        The value, inputs, band, derived verdict and whether it is the expected one. A
+        failure of the tolerance, the computation, the band or the oracle does not raise: it
+        is an evaluation with status ``"error"`` (or a failing check) whose ``detail`` says
+        what raised.
+
+    Examples
+    --------
+    >>> from navcore.ledger import InputSet
+    >>> IN = InputSet("SP", "doc_evaluate")
+    >>> IN.assumed("loss_db", 2.0, low=1.0, high=3.0, unit="dB", reason="typical receivers")
+    >>> value, tol = printed("12.5")
+    >>> c = Claim(id="SP-doc-margin", paper="SP", locator="Table 1", quantity="margin",
+    ...           published=value, unit="dB", compute=lambda: 14.0 - IN.loss_db, tolerance=tol,
+    ...           expected_status="consistent", note="a synthetic claim")
+    >>> ev = evaluate(c)
+    >>> ev.reproduced, ev.band, ev.status, ev.passes
+    (12.0, (11.0, 13.0), 'consistent', True)
+    >>> evaluate(c, bands=False).status  # 12 is outside 12.5 +- 0.05 at the nominal
+    'inconsistent'
     """
     try:
         tol = resolve_tolerance(claim)

@@ -107,6 +107,22 @@ class Input:
         The other reading of a ``convention`` input.
     fitted_to : tuple of str
         Claim ids a ``fitted`` input was solved from.
+    module : str
+        The module that declared it (set by :class:`InputSet`; not compared).
+
+    Raises
+    ------
+    ValueError
+        If ``provenance`` is unknown, or the fields its provenance needs are missing: a
+        ``locator`` (published), a ``reason`` (the others), a range ``low <= value <= high``
+        (assumed), an ``alternative`` (convention) or ``fitted_to`` (fitted).
+
+    Examples
+    --------
+    >>> inp = Input(name="WF.doc.noise_m", paper="WF", value=2.0, provenance="assumed",
+    ...             unit="m", low=1.0, high=4.0, grid=4, reason="typical survey accuracy")
+    >>> inp.band_points, inp.source()
+    ((1.0, 2.0, 3.0, 4.0), 'typical survey accuracy')
     """
 
     name: str
@@ -225,6 +241,20 @@ class InputSet:
     section : str
         A short name for the module's set (``"antijam"``); full input names are
         ``"<paper>.<section>.<attribute>"``.
+
+    Notes
+    -----
+    Declaring an input registers it for the whole process (:func:`all_inputs`); declaring a
+    name twice in one set, or the same full name with another declaration, raises
+    ``ValueError``. Inputs cannot be assigned: ``IN.x = 1`` raises ``AttributeError``.
+
+    Examples
+    --------
+    >>> IN = InputSet("WF", "doc_set")
+    >>> IN.published("carrier_hz", 1.0e9, unit="Hz", locator="Sec. IV", quantity="carrier frequency")
+    >>> IN.assumed("noise_m", 2.0, low=1.0, high=4.0, unit="m", reason="typical survey accuracy")
+    >>> IN.carrier_hz, IN.nominal("noise_m"), [i.provenance for i in IN]
+    (1000000000.0, 2.0, ['published', 'assumed'])
     """
 
     def __init__(self, paper: str, section: str) -> None:
@@ -248,13 +278,39 @@ class InputSet:
         _REGISTRY[full] = inp
 
     def published(self, attr: str, value: Any, *, locator: str, unit: str = "", quantity: str = "") -> None:
-        """Declare an input printed in the paper at ``locator``."""
+        """Declare an input printed in the paper at ``locator``.
+
+        Parameters
+        ----------
+        attr : str
+            Attribute name (a public identifier, unit as suffix: ``carrier_hz``).
+        value : Any
+            The printed value, in ``unit``.
+        locator : str
+            Where it is printed (``"Table 2.1"``); not empty.
+        unit, quantity : str, optional
+            Unit of ``value`` and what it is, in words.
+        """
         self._add(attr, value=value, provenance="published", locator=locator, unit=unit, quantity=quantity)
 
     def convention(
         self, attr: str, value: Any, *, alternative: Any, reason: str, unit: str = "", quantity: str = ""
     ) -> None:
-        """Declare a reading the text leaves open, with the other reading."""
+        """Declare a reading the text leaves open, with the other reading.
+
+        Parameters
+        ----------
+        attr : str
+            Attribute name.
+        value : Any
+            The reading used.
+        alternative : Any
+            The other reading; the ledger shows what it would give.
+        reason : str
+            Why the text leaves it open and why this reading is used.
+        unit, quantity : str, optional
+            Unit of ``value`` and what it is, in words.
+        """
         self._add(
             attr,
             value=value,
@@ -278,7 +334,27 @@ class InputSet:
         grid: int = 0,
         admissible: bool = False,
     ) -> None:
-        """Declare an input the paper does not give: nominal, plausible range and reason."""
+        """Declare an input the paper does not give: nominal, plausible range and reason.
+
+        Parameters
+        ----------
+        attr : str
+            Attribute name.
+        value : Any
+            The nominal value, within ``low``-``high``.
+        low, high : float
+            The plausible range, across which the ledger evaluates the band.
+        reason : str
+            Why the nominal and the range have their values.
+        unit, quantity : str, optional
+            Unit of ``value`` and what it is, in words.
+        grid : int, optional
+            Points across the range (0: its two ends; use a grid where the response is not
+            monotone).
+        admissible : bool, optional
+            The range is every admissible value, so disagreement across it is a
+            discrepancy.
+        """
         self._add(
             attr,
             value=value,
@@ -302,7 +378,21 @@ class InputSet:
         unit: str = "",
         quantity: str = "",
     ) -> None:
-        """Declare a parameter solved from printed results, naming the claims it was fitted to."""
+        """Declare a parameter solved from printed results, naming the claims it was fitted to.
+
+        Parameters
+        ----------
+        attr : str
+            Attribute name.
+        value : Any
+            The fitted value.
+        fitted_to : sequence of str
+            Ids of the claims it was solved from (not empty; they are then not evidence).
+        reason : str
+            How it was solved.
+        unit, quantity : str, optional
+            Unit of ``value`` and what it is, in words.
+        """
         self._add(
             attr,
             value=value,
@@ -355,6 +445,13 @@ def all_inputs(paper: str | None = None) -> tuple[Input, ...]:
     -------
     tuple of Input
         The registered inputs, in the order they were declared.
+
+    Examples
+    --------
+    >>> IN = InputSet("WF", "doc_inputs")
+    >>> IN.published("carrier_hz", 1.0e9, unit="Hz", locator="Sec. IV", quantity="carrier frequency")
+    >>> "WF.doc_inputs.carrier_hz" in [i.name for i in all_inputs("WF")]
+    True
     """
     return tuple(i for i in _REGISTRY.values() if paper is None or i.paper == paper)
 
@@ -377,6 +474,14 @@ def get_input(name: str) -> Input:
     ValueError
         If no input of that name is registered (its paper module is not imported, or the
         name is wrong).
+
+    Examples
+    --------
+    >>> IN = InputSet("WF", "doc_inputs")
+    >>> IN.published("carrier_hz", 1.0e9, unit="Hz", locator="Sec. IV", quantity="carrier frequency")
+    >>> inp = get_input("WF.doc_inputs.carrier_hz")
+    >>> inp.provenance, inp.locator, inp.value
+    ('published', 'Sec. IV', 1000000000.0)
     """
     try:
         return _REGISTRY[name]
@@ -395,6 +500,15 @@ def recording() -> Iterator[dict[str, Input]]:
     ------
     dict of str to Input
         Filled, as the block runs, with each input read, keyed by its full name.
+
+    Examples
+    --------
+    >>> IN = InputSet("WF", "doc_inputs")
+    >>> IN.published("carrier_hz", 1.0e9, unit="Hz", locator="Sec. IV", quantity="carrier frequency")
+    >>> with recording() as reads:
+    ...     wavelength_m = 3.0e8 / IN.carrier_hz
+    >>> sorted(reads), round(wavelength_m, 3)
+    (['WF.doc_inputs.carrier_hz'], 0.3)
     """
     reads: dict[str, Input] = {}
     token = _RECORDER.set(reads)
@@ -426,6 +540,16 @@ def overriding(values: dict[str, Any]) -> Iterator[None]:
     ------
     ValueError
         If a name in ``values`` is not a registered input.
+
+    Examples
+    --------
+    >>> IN = InputSet("WF", "doc_inputs")
+    >>> IN.published("carrier_hz", 1.0e9, unit="Hz", locator="Sec. IV", quantity="carrier frequency")
+    >>> with overriding({"WF.doc_inputs.carrier_hz": 1.5e9}):
+    ...     print(IN.carrier_hz)
+    1500000000.0
+    >>> IN.carrier_hz
+    1000000000.0
     """
     for name in values:
         get_input(name)  # unknown names are an error, not a silent no-op
@@ -449,6 +573,16 @@ def declaring() -> Iterator[None]:
     ------
     None
         Control of the block; reads are allowed again when it exits.
+
+    Examples
+    --------
+    >>> IN = InputSet("WF", "doc_inputs")
+    >>> IN.published("carrier_hz", 1.0e9, unit="Hz", locator="Sec. IV", quantity="carrier frequency")
+    >>> with declaring():  # doctest: +ELLIPSIS
+    ...     IN.carrier_hz
+    Traceback (most recent call last):
+    ...
+    navcore.ledger.inputs.InputReadError: input WF.doc_inputs.carrier_hz read while a tolerance ...
     """
     token = _DECLARING.set(True)
     try:
@@ -506,6 +640,25 @@ def input_cache(fn: F) -> F:
     InputReadError
         When the wrapper is called outside a recording while a paper module is imported, or
         inside :func:`declaring` (as a direct read would).
+
+    Examples
+    --------
+    >>> IN = InputSet("WF", "doc_inputs")
+    >>> IN.published("carrier_hz", 1.0e9, unit="Hz", locator="Sec. IV", quantity="carrier frequency")
+    >>> calls = []
+    >>> @input_cache
+    ... def wavelength_m(c_m_s):
+    ...     calls.append(c_m_s)
+    ...     return c_m_s / IN.carrier_hz
+    >>> with recording() as reads:
+    ...     first = wavelength_m(3.0e8)
+    >>> with recording() as again:
+    ...     second = wavelength_m(3.0e8)
+    >>> first == second, len(calls), sorted(again)
+    (True, 1, ['WF.doc_inputs.carrier_hz'])
+    >>> with overriding({"WF.doc_inputs.carrier_hz": 1.5e9}):
+    ...     round(wavelength_m(3.0e8), 3), len(calls)
+    (0.2, 2)
     """
     store: dict[Any, list[tuple[tuple[tuple[Input, Any], ...], Any]]] = {}
 

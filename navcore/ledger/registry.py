@@ -35,7 +35,23 @@ __all__ = [
 
 @cache
 def paper_modules() -> tuple[str, ...]:
-    """Names of the modules in :mod:`navcore.papers`, sorted."""
+    """Names of the modules in :mod:`navcore.papers`, sorted.
+
+    Each module defines the ``CLAIMS`` and ``ERRATA`` of one paper or section; the registry
+    imports them on demand (:func:`claims`, :func:`errata`).
+
+    Returns
+    -------
+    tuple of str
+        Full module names (``"navcore.papers.kzl"``), sorted; modules whose name starts
+        with ``_`` are left out.
+
+    Examples
+    --------
+    >>> names = paper_modules()
+    >>> all(name.startswith("navcore.papers.") for name in names), names == tuple(sorted(names))
+    (True, True)
+    """
     import navcore.papers as pkg
 
     return tuple(
@@ -84,11 +100,38 @@ def _load(paper: str | None = None) -> tuple[tuple[Claim, ...], tuple[Erratum, .
 def validate_registry(all_claims: list[Claim], all_errata: list[Erratum]) -> None:
     """Check uniqueness of ids and the links between claims and errata.
 
+    The registry runs it on every set of claims and errata it loads; it also checks that a
+    fitted input of a loaded paper names only known claims.
+
+    Parameters
+    ----------
+    all_claims : list of Claim
+        The claims to check together (ids and aliases must be unique among them).
+    all_errata : list of Erratum
+        The errata to check together (ids must be unique among them).
+
+    Returns
+    -------
+    None
+        The lists are consistent.
+
     Raises
     ------
     ValueError
-        On a duplicate id, a discrepant claim naming an unknown erratum, or an erratum
-        naming an unknown claim.
+        On a duplicate id or alias, a claim naming an unknown erratum, an erratum naming an
+        unknown claim, or a fitted input fitted to an unknown claim.
+
+    Examples
+    --------
+    >>> from navcore.ledger import EXACT, Claim
+    >>> c = Claim(id="KZL-doc-states", paper="KZL", locator="Eq. (1)", quantity="states",
+    ...           published=15.0, unit="", compute=lambda: 15.0, tolerance=EXACT,
+    ...           expected_status="reproduced", note="a synthetic claim")
+    >>> validate_registry([c], [])
+    >>> validate_registry([c, c], [])
+    Traceback (most recent call last):
+    ...
+    ValueError: duplicate claim id 'KZL-doc-states'
     """
     seen: set[str] = set()
     for c in all_claims:
@@ -127,7 +170,36 @@ def validate_registry(all_claims: list[Claim], all_errata: list[Erratum]) -> Non
 
 
 def claims(paper: str | None = None, prefix: str | None = None) -> tuple[Claim, ...]:
-    """Registered claims, optionally filtered by paper key and id prefix."""
+    """Registered claims, optionally filtered by paper key and id prefix.
+
+    Importing a paper's modules declares its claims; nothing is computed.
+
+    Parameters
+    ----------
+    paper : str or None, optional
+        Paper key, one of :data:`~navcore.ledger.core.PAPERS` (``"KZL"``); ``None`` for
+        every paper. Only that paper's modules are imported.
+    prefix : str or None, optional
+        Keep only the claims whose id starts with it (``"KZL-eq"``); a prefix that starts
+        with a paper key and a dash loads only that paper.
+
+    Returns
+    -------
+    tuple of Claim
+        The claims, by paper in the order of :data:`~navcore.ledger.core.PAPERS`, then in
+        the order their modules define them.
+
+    Raises
+    ------
+    ValueError
+        If ``paper`` is not a paper key.
+
+    Examples
+    --------
+    >>> kzl = claims("KZL")
+    >>> all(c.paper == "KZL" for c in kzl), claims(prefix="KZL-") == kzl
+    (True, True)
+    """
     if paper is not None and paper not in PAPERS:
         raise ValueError(f"paper must be one of {list(PAPERS)}, got {paper!r}")
     if paper is None and prefix is not None and prefix.split("-", 1)[0] in PAPERS and "-" in prefix:
@@ -139,14 +211,62 @@ def claims(paper: str | None = None, prefix: str | None = None) -> tuple[Claim, 
 
 
 def errata(paper: str | None = None) -> tuple[Erratum, ...]:
-    """Registered errata, optionally filtered by paper key."""
+    """Registered errata, optionally filtered by paper key.
+
+    Parameters
+    ----------
+    paper : str or None, optional
+        Paper key, one of :data:`~navcore.ledger.core.PAPERS`; ``None`` for every paper.
+
+    Returns
+    -------
+    tuple of Erratum
+        The errata, by paper in the order of :data:`~navcore.ledger.core.PAPERS`, then in
+        the order their modules define them.
+
+    Raises
+    ------
+    ValueError
+        If ``paper`` is not a paper key.
+
+    Examples
+    --------
+    >>> all(e.paper == "KZL" for e in errata("KZL"))
+    True
+    """
     if paper is not None and paper not in PAPERS:
         raise ValueError(f"paper must be one of {list(PAPERS)}, got {paper!r}")
     return _load(paper)[1]
 
 
 def claim(claim_id: str) -> Claim:
-    """The claim with id ``claim_id``."""
+    """The claim with id ``claim_id``.
+
+    Parameters
+    ----------
+    claim_id : str
+        The claim's id, or one of its former ids (``aliases``).
+
+    Returns
+    -------
+    Claim
+        The registered claim (under its current id).
+
+    Raises
+    ------
+    ValueError
+        If no claim has that id or alias.
+
+    Examples
+    --------
+    >>> first = claims("KZL")[0]
+    >>> claim(first.id) is first
+    True
+    >>> claim("KZL-no-such-claim")
+    Traceback (most recent call last):
+    ...
+    ValueError: claim_id 'KZL-no-such-claim' is not in the ledger
+    """
     key = claim_id.split("-", 1)[0]
     for c in _load(key if key in PAPERS else None)[0]:
         if c.id == claim_id or claim_id in c.aliases:
@@ -155,7 +275,29 @@ def claim(claim_id: str) -> Claim:
 
 
 def erratum(erratum_id: str) -> Erratum:
-    """The erratum with id ``erratum_id``."""
+    """The erratum with id ``erratum_id``.
+
+    Parameters
+    ----------
+    erratum_id : str
+        The erratum's id (``"ATC10-E2-erf-argument"``).
+
+    Returns
+    -------
+    Erratum
+        The registered erratum.
+
+    Raises
+    ------
+    ValueError
+        If no erratum has that id.
+
+    Examples
+    --------
+    >>> first = errata("KZL")[0]
+    >>> erratum(first.id) is first
+    True
+    """
     key = erratum_id.split("-", 1)[0]
     for e in _load(key if key in PAPERS else None)[1]:
         if e.id == erratum_id:
@@ -188,6 +330,23 @@ def cache_dir() -> Path | None:
     ``NAVCORE_CACHE=<folder>`` chooses its parent folder. By default it lives in
     ``_build/navcore-cache`` of a source checkout, else in ``~/.cache/navcore``. The folder
     is named by a hash of navcore's sources, so a change to any of them starts afresh.
+
+    Returns
+    -------
+    pathlib.Path or None
+        The folder (it need not exist yet), or ``None`` when ``NAVCORE_CACHE`` is ``off``,
+        ``0``, ``no`` or ``false``.
+
+    Examples
+    --------
+    >>> import os
+    >>> from unittest import mock
+    >>> with mock.patch.dict(os.environ, {"NAVCORE_CACHE": "off"}):
+    ...     print(cache_dir())
+    None
+    >>> with mock.patch.dict(os.environ, {"NAVCORE_CACHE": "/tmp/ledger-cache"}):
+    ...     print(cache_dir().parent)
+    /tmp/ledger-cache
     """
     setting = os.environ.get("NAVCORE_CACHE", "")
     if setting.lower() in ("off", "0", "no", "false"):
@@ -275,7 +434,34 @@ def evaluate_claim(claim_id: str) -> Evaluation:
     ``claim_id`` may be a former id of the claim (one of its ``aliases``); the evaluation
     is the claim's under its current id. The on-disk cache (:func:`cache_dir`) is keyed by
     a hash of navcore's sources, so a stored evaluation is exactly what a fresh evaluation
-    would give.
+    would give. A first evaluation runs the claim's model (and its band): from a moment for
+    arithmetic to minutes for a Monte Carlo claim.
+
+    Parameters
+    ----------
+    claim_id : str
+        The claim's id, or one of its former ids.
+
+    Returns
+    -------
+    Evaluation
+        The claim's evaluation (:func:`~navcore.ledger.core.evaluate`); the same object on
+        every later call in the process.
+
+    Raises
+    ------
+    ValueError
+        If no claim has that id or alias.
+
+    Examples
+    --------
+    Evaluating a real claim runs its model; an id that is not in the ledger is refused
+    before anything runs:
+
+    >>> evaluate_claim("KZL-no-such-claim")
+    Traceback (most recent call last):
+    ...
+    ValueError: claim_id 'KZL-no-such-claim' is not in the ledger
     """
     return _evaluate_claim(claim(claim_id).id)
 
@@ -294,12 +480,77 @@ evaluate_claim.cache_clear = _evaluate_claim.cache_clear  # type: ignore[attr-de
 
 
 def evaluations(paper: str | None = None, prefix: str | None = None) -> list[Evaluation]:
-    """Evaluate every claim selected by ``paper`` and ``prefix``."""
+    """Evaluate every claim selected by ``paper`` and ``prefix``.
+
+    Each claim goes through :func:`evaluate_claim` (memoised in the process and on disk), so
+    the first call for a paper runs all its models: seconds to minutes.
+
+    Parameters
+    ----------
+    paper : str or None, optional
+        Paper key, one of :data:`~navcore.ledger.core.PAPERS`; ``None`` for every paper.
+    prefix : str or None, optional
+        Keep only the claims whose id starts with it.
+
+    Returns
+    -------
+    list of Evaluation
+        One per selected claim, in the order of :func:`claims`.
+
+    Raises
+    ------
+    ValueError
+        If ``paper`` is not a paper key.
+
+    Examples
+    --------
+    A selection without claims evaluates nothing:
+
+    >>> evaluations(paper="KZL", prefix="KZL-no-such-claim")
+    []
+    """
     return [evaluate_claim(c.id) for c in claims(paper, prefix)]
 
 
 def counts(paper: str | None = None) -> dict[str, dict[str, int]]:
-    """Derived-verdict counts per paper: ``{paper: {status: n, ..., "total": n}}``."""
+    """Derived-verdict counts per paper: ``{paper: {status: n, ..., "total": n}}``.
+
+    Every claim of the paper (of every paper, by default) is evaluated through
+    :func:`evaluations`.
+
+    Parameters
+    ----------
+    paper : str or None, optional
+        Paper key, one of :data:`~navcore.ledger.core.PAPERS`; ``None`` (or ``""``) for
+        every paper.
+
+    Returns
+    -------
+    dict of str to dict of str to int
+        For each paper, the number of claims with each derived verdict of
+        :data:`~navcore.ledger.core.STATUSES` (zero included), any other status met (an
+        ``error`` of a claim whose evaluation failed) and ``total``.
+
+    Raises
+    ------
+    ValueError
+        If ``paper`` is not a paper key.
+
+    Examples
+    --------
+    With the evaluations replaced by the one of a synthetic claim (the real ones take
+    minutes):
+
+    >>> from unittest import mock
+    >>> from navcore.ledger import EXACT, Claim, evaluate
+    >>> c = Claim(id="KZL-doc-states", paper="KZL", locator="Eq. (1)", quantity="states",
+    ...           published=15.0, unit="", compute=lambda: 15.0, tolerance=EXACT,
+    ...           expected_status="reproduced", note="a synthetic claim")
+    >>> with mock.patch("navcore.ledger.registry.evaluations", return_value=[evaluate(c)]):
+    ...     row = counts("KZL")["KZL"]
+    >>> row["reproduced"], row["discrepant"], row["total"]
+    (1, 0, 1)
+    """
     papers = [paper] if paper else list(PAPERS)
     out: dict[str, dict[str, int]] = {}
     for p in papers:

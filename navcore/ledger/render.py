@@ -58,7 +58,28 @@ def _status_class(status: str) -> str:
 
 
 def format_value(value: Any, digits: int = 5) -> str:
-    """Format a published or reproduced value for a table."""
+    """Format a published or reproduced value for a table.
+
+    Parameters
+    ----------
+    value : float, bool or None
+        The value (a number in the claim's unit, a truth value, or ``None`` when nothing was
+        computed).
+    digits : int, optional
+        Significant digits of a non-integral number.
+
+    Returns
+    -------
+    str
+        ``"—"`` for ``None``; ``"true"``/``"false"`` for a truth value; ``"∞"``/``"−∞"``;
+        an integral value below a million without decimals; otherwise ``digits``
+        significant digits.
+
+    Examples
+    --------
+    >>> format_value(17.6712345), format_value(3.0), format_value(True), format_value(None)
+    ('17.671', '3', 'true', '—')
+    """
     if value is None:
         return "—"
     if isinstance(value, bool):
@@ -78,7 +99,33 @@ def _published(e: Evaluation) -> str:
 
 
 def rows(evals: Iterable[Evaluation]) -> list[dict[str, str]]:
-    """Table rows (strings) for a sequence of evaluations."""
+    """Table rows (strings) for a sequence of evaluations.
+
+    Parameters
+    ----------
+    evals : iterable of Evaluation
+        The evaluations (from :func:`~navcore.ledger.registry.evaluations`).
+
+    Returns
+    -------
+    list of dict of str to str
+        One row per evaluation, keys ``id``, ``locator``, ``quantity``, ``published`` (with
+        its relation), ``reproduced``, ``band``, ``unit``, ``kind``, ``tolerance``,
+        ``policy``, ``status`` (derived), ``expected_status``, ``check`` (``"ok"`` or
+        ``"FAIL"``), ``note``, ``tolerance_reason``, ``erratum`` and ``discussed_in``.
+
+    Examples
+    --------
+    >>> from navcore.ledger import Claim, evaluate, printed
+    >>> value, tol = printed("17.67")
+    >>> c = Claim(id="SP-doc-omega", paper="SP", locator="Fig. 2.1", quantity="natural frequency",
+    ...           published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
+    ...           expected_status="reproduced", note="a synthetic claim")
+    >>> ev = evaluate(c)
+    >>> row = rows([ev])[0]
+    >>> row["published"], row["reproduced"], row["tolerance"], row["status"], row["check"]
+    ('17.67', '17.671', '±0.005', 'reproduced', 'ok')
+    """
     out = []
     for e in evals:
         c = e.claim
@@ -109,7 +156,35 @@ def rows(evals: Iterable[Evaluation]) -> list[dict[str, str]]:
 
 
 def text_table(evals: Sequence[Evaluation], *, width: int = 38) -> str:
-    """A fixed-width text table with a counts footer (for ``python -m navcore ledger``)."""
+    """A fixed-width text table with a counts footer (for ``python -m navcore ledger``).
+
+    Parameters
+    ----------
+    evals : sequence of Evaluation
+        The evaluations to show, in order.
+    width : int, optional
+        Longest cell, in characters; a longer one is cut and ends in ``…``.
+
+    Returns
+    -------
+    str
+        Columns id, locator, published, reproduced, unit, tolerance, status and check, then
+        a blank line and :func:`~navcore.ledger.summary.summary_text`.
+
+    Examples
+    --------
+    >>> from navcore.ledger import Claim, evaluate, printed
+    >>> value, tol = printed("17.67")
+    >>> c = Claim(id="SP-doc-omega", paper="SP", locator="Fig. 2.1", quantity="natural frequency",
+    ...           published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
+    ...           expected_status="reproduced", note="a synthetic claim")
+    >>> ev = evaluate(c)
+    >>> for line in text_table([ev]).splitlines()[:3]:
+    ...     print(line.rstrip())
+    id            locator   published  reproduced  unit   tolerance  status      check
+    ------------  --------  ---------  ----------  -----  ---------  ----------  -----
+    SP-doc-omega  Fig. 2.1  17.67      17.671      rad/s  ±0.005     reproduced  ok
+    """
     cols = ["id", "locator", "published", "reproduced", "unit", "tolerance", "status", "check"]
     data = rows(evals)
 
@@ -129,7 +204,32 @@ def text_table(evals: Sequence[Evaluation], *, width: int = 38) -> str:
 
 
 def json_dump(evals: Sequence[Evaluation]) -> str:
-    """The ledger as a JSON array of claim objects (LEDGER.md fields), stable and sorted."""
+    """The ledger as a JSON array of claim objects (LEDGER.md fields), stable and sorted.
+
+    Parameters
+    ----------
+    evals : sequence of Evaluation
+        The evaluations, in the order they are written.
+
+    Returns
+    -------
+    str
+        A JSON array (indented by two spaces, Unicode kept) of
+        :meth:`~navcore.ledger.core.Evaluation.as_json` records.
+
+    Examples
+    --------
+    >>> import json
+    >>> from navcore.ledger import Claim, evaluate, printed
+    >>> value, tol = printed("17.67")
+    >>> c = Claim(id="SP-doc-omega", paper="SP", locator="Fig. 2.1", quantity="natural frequency",
+    ...           published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
+    ...           expected_status="reproduced", note="a synthetic claim")
+    >>> ev = evaluate(c)
+    >>> record = json.loads(json_dump([ev]))[0]
+    >>> record["id"], record["published"], record["reproduced"], record["status"]
+    ('SP-doc-omega', 17.67, 17.671, 'reproduced')
+    """
     return json.dumps([e.as_json() for e in evals], indent=2, ensure_ascii=False, sort_keys=False)
 
 
@@ -176,7 +276,7 @@ _NUMBER = re.compile(r"^[−+-]?(?:\d[\d,]*\.?\d*|\.\d+)(?:[eE][−+-]?\d+)?(?:\
 
 
 def latex_table(head: Sequence[str], body: Sequence[Sequence[str]]) -> str:
-    """The book's one printed table: a ``longtable`` that fits the text width.
+    r"""The book's one printed table: a ``longtable`` that fits the text width.
 
     Column widths follow their content (the longest word of the heading, the longest cell);
     numbers are right-aligned and never broken across lines; text cells wrap ragged-right
@@ -194,6 +294,14 @@ def latex_table(head: Sequence[str], body: Sequence[Sequence[str]]) -> str:
     -------
     str
         A MyST ``{raw} latex`` block holding the table, ready to be emitted as Markdown.
+
+    Examples
+    --------
+    >>> block = latex_table(["Paper", "Claims"], [["SP", "155"], ["KZL", "48"]])
+    >>> print("\n".join(block.splitlines()[-6:-3]))
+    \hline \endfoot
+    SP & \mbox{155} \\
+    KZL & \mbox{48} \\
     """
     ncols = len(head)
     cells = [[str(c) for c in row] + [""] * (ncols - len(row)) for row in body]
@@ -256,6 +364,22 @@ def math_spans(text: str) -> list[tuple[bool, str]]:
 
     A dollar sign followed by a space (``50,000 $ INS``) or escaped (``\\$``) is not math,
     so prices and lone dollar signs stay text.
+
+    Parameters
+    ----------
+    text : str
+        A note, quantity or erratum text.
+
+    Returns
+    -------
+    list of tuple of (bool, str)
+        The pieces in order, ``True`` for the inside of a ``$...$`` span (without the dollar
+        signs), ``False`` for text.
+
+    Examples
+    --------
+    >>> math_spans("gain $K_1$ costs 50 $ more")
+    [(False, 'gain '), (True, 'K_1'), (False, ' costs 50 $ more')]
     """
     out: list[tuple[bool, str]] = []
     pos = 0
@@ -270,7 +394,24 @@ def math_spans(text: str) -> list[tuple[bool, str]]:
 
 
 def html_text(text: str) -> str:
-    """Escaped HTML with ``$...$`` as MathJax inline math, marked up as Sphinx does."""
+    r"""Escaped HTML with ``$...$`` as MathJax inline math, marked up as Sphinx does.
+
+    Parameters
+    ----------
+    text : str
+        A note, quantity or erratum text (:func:`math_spans` says what is math).
+
+    Returns
+    -------
+    str
+        The text HTML-escaped, each math piece escaped inside ``\(...\)`` in a
+        ``<span class="math notranslate nohighlight">``.
+
+    Examples
+    --------
+    >>> print(html_text("gain $K_1 < 2$ & more"))
+    gain <span class="math notranslate nohighlight">\(K_1 &lt; 2\)</span> &amp; more
+    """
     return "".join(
         f'<span class="math notranslate nohighlight">\\({html.escape(piece)}\\)</span>'
         if is_math
@@ -280,7 +421,24 @@ def html_text(text: str) -> str:
 
 
 def tex_text(text: str) -> str:
-    """Escaped LaTeX with ``$...$`` passed through as math."""
+    r"""Escaped LaTeX with ``$...$`` passed through as math.
+
+    Parameters
+    ----------
+    text : str
+        A note, quantity or erratum text (:func:`math_spans` says what is math).
+
+    Returns
+    -------
+    str
+        The text with LaTeX's special characters escaped outside the math, and each math
+        piece as written between dollar signs.
+
+    Examples
+    --------
+    >>> print(tex_text("50% of $K_1$"))
+    50\% of $K_1$
+    """
     return "".join(f"${piece}$" if is_math else _tex_escape(piece) for is_math, piece in math_spans(text))
 
 
@@ -306,6 +464,24 @@ def claim_group(locator: str) -> str:
     ``"Table 2.6, column 2"`` -> ``"Table 2.6"``; ``"Sec. 3.6, discussion of Fig. 5"`` ->
     ``"Fig. 5"``; ``"Sec. III, after Eq. (9)"`` -> ``"Eq. (9)"``; a locator naming none of
     them is its own group.
+
+    Parameters
+    ----------
+    locator : str
+        A claim's locator, in the paper's words.
+
+    Returns
+    -------
+    str
+        The group's label: the first table, figure, theorem, remark, proposition, equation,
+        appendix or section named, else the locator without surrounding spaces.
+
+    Examples
+    --------
+    >>> claim_group("Table 2.6, column 2"), claim_group("Sec. 3.6, discussion of Fig. 5")
+    ('Table 2.6', 'Fig. 5')
+    >>> claim_group("abstract")
+    'abstract'
     """
     for pattern in _GROUP_PATTERNS:
         m = re.search(pattern, locator)
@@ -451,6 +627,30 @@ def group_claims(evals: Sequence[Evaluation]) -> list[_Group]:
     A run of two or more consecutive claims with one locator (``"Table 2.6, column 2"``)
     is a group of its own, headed by that locator; other claims are grouped by
     :func:`claim_group` of their locators (``"Table 2.6"``).
+
+    Parameters
+    ----------
+    evals : sequence of Evaluation
+        The evaluations, in the order they are shown.
+
+    Returns
+    -------
+    list of group
+        The groups in order; each has ``label`` (the grouping key), ``heading`` (the full
+        locator when all its claims share it, else the label), ``evals`` (its evaluations),
+        ``details`` (per claim: note, tolerance, band and inputs as text) and ``shared``
+        (the details every claim of a group of two or more shares).
+
+    Examples
+    --------
+    >>> from navcore.ledger import Claim, evaluate, printed
+    >>> value, tol = printed("17.67")
+    >>> c = Claim(id="SP-doc-omega", paper="SP", locator="Fig. 2.1", quantity="natural frequency",
+    ...           published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
+    ...           expected_status="reproduced", note="a synthetic claim")
+    >>> ev = evaluate(c)
+    >>> [(g.heading, len(g.evals)) for g in group_claims([ev, ev])]
+    [('Fig. 2.1', 2)]
     """
     locators = [e.claim.locator for e in evals]
     keys = []
@@ -520,6 +720,18 @@ class LedgerTable:
         chapter page, ``""`` for a top-level page).
     link_pages : bool
         Link each claim id to its row on the page that discusses it (for the ledger page).
+
+    Examples
+    --------
+    >>> from navcore.ledger import Claim, evaluate, printed
+    >>> value, tol = printed("17.67")
+    >>> c = Claim(id="SP-doc-omega", paper="SP", locator="Fig. 2.1", quantity="natural frequency",
+    ...           published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
+    ...           expected_status="reproduced", note="a synthetic claim")
+    >>> ev = evaluate(c)
+    >>> html = LedgerTable([ev])._repr_html_()
+    >>> 'id="sp-doc-omega"' in html, "17.671&nbsp;rad/s" in html
+    (True, True)
     """
 
     def __init__(
@@ -683,7 +895,21 @@ class LedgerTable:
 
 
 class CountsTable:
-    """Counts of claims per paper and status (HTML and Markdown)."""
+    """Counts of claims per paper and status (HTML and Markdown).
+
+    Parameters
+    ----------
+    paper : str or None, optional
+        Paper key; ``None`` for every paper, with a row of totals. Every claim counted is
+        evaluated (:func:`~navcore.ledger.registry.counts`).
+
+    Attributes
+    ----------
+    counts : dict
+        :func:`~navcore.ledger.registry.counts` of ``paper``.
+    failing : dict of str to int
+        Per paper, the number of claims failing their check.
+    """
 
     def __init__(self, paper: str | None = None) -> None:
         self.counts = counts(paper)
@@ -739,7 +965,26 @@ def _breakable_heading(text: str) -> str:
 
 
 class ErrataList:
-    """The errata as a list of entries (HTML with anchors; Markdown for the PDF)."""
+    """The errata as a list of entries (HTML with anchors; Markdown for the PDF).
+
+    Parameters
+    ----------
+    items : sequence of Erratum or None, optional
+        The errata to list; ``None`` for every registered erratum.
+    root : str, optional
+        Link prefix from the showing page to the book's root.
+    titles : dict of str to str or None, optional
+        Page docname to its title, for the text of the links to the discussing pages.
+
+    Examples
+    --------
+    >>> from navcore.ledger import Erratum
+    >>> e = Erratum(id="SP-E9-doc", paper="SP", locator="Eq. (2.4.2)", printed="$a + b$",
+    ...             finding="$a - b$", evidence="the derivation in the book", kind="typography",
+    ...             no_claim_reason="a sign with no printed number to check")
+    >>> ErrataList([e])
+    SP-E9-doc: SP, Eq. (2.4.2)
+    """
 
     def __init__(
         self, items: Sequence[Erratum] | None = None, *, root: str = "", titles: dict[str, str] | None = None
@@ -937,6 +1182,25 @@ class InteractiveLedger:
     :meth:`~navcore.ledger.core.Evaluation.as_json`, so the download is the command line's
     JSON). Columns for the optional record fields ``kind`` and ``band`` appear when any claim
     has them. Below 640 px each row becomes a card. PDF: a compact table without notes.
+
+    Parameters
+    ----------
+    evals : sequence of Evaluation
+        The claims to show, in order.
+    root : str, optional
+        Link prefix from the showing page to the book's root.
+
+    Examples
+    --------
+    >>> from navcore.ledger import Claim, evaluate, printed
+    >>> value, tol = printed("17.67")
+    >>> c = Claim(id="SP-doc-omega", paper="SP", locator="Fig. 2.1", quantity="natural frequency",
+    ...           published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
+    ...           expected_status="reproduced", note="a synthetic claim")
+    >>> ev = evaluate(c)
+    >>> table = InteractiveLedger([ev])
+    >>> [r["status"] for r in table.records], "data-ledger-app" in table._repr_html_()
+    (['reproduced'], True)
     """
 
     def __init__(self, evals: Sequence[Evaluation], *, root: str = "") -> None:

@@ -41,6 +41,17 @@ def count_table(evals: Sequence[Evaluation]) -> list[dict[str, Any]]:
         :data:`~navcore.ledger.core.PAPERS` and :data:`~navcore.ledger.core.KINDS`: a count
         per verdict of :data:`~navcore.ledger.core.STATUSES`, ``error`` (claims whose
         evaluation failed) and ``total``; the last row, paper and kind ``"all"``, sums them.
+
+    Examples
+    --------
+    >>> from navcore.ledger import Claim, evaluate, printed
+    >>> value, tol = printed("17.67")
+    >>> c = Claim(id="SP-doc-omega", paper="SP", locator="Fig. 2.1", quantity="natural frequency",
+    ...           published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
+    ...           expected_status="reproduced", note="a synthetic claim")
+    >>> ev = evaluate(c)
+    >>> [(r["paper"], r["kind"], r["reproduced"], r["total"]) for r in count_table([ev])]
+    [('SP', 'reproduction', 1, 1), ('all', 'all', 1, 1)]
     """
     rows: list[dict[str, Any]] = []
     papers = [p for p in PAPERS if any(e.claim.paper == p for e in evals)]
@@ -83,6 +94,24 @@ def input_readers(evals: Sequence[Evaluation], provenance: str) -> list[tuple[In
     ------
     ValueError
         If an input read is no longer registered.
+
+    Examples
+    --------
+    >>> from navcore.ledger import Claim, InputSet, evaluate, printed
+    >>> IN = InputSet("SP", "doc_summary")
+    >>> IN.assumed("loss_db", 2.0, low=1.0, high=3.0, unit="dB", quantity="implementation loss",
+    ...            reason="typical receivers")
+    >>> IN.fitted("gain_db", 14.0, fitted_to=["SP-doc-margin"], unit="dB", quantity="antenna gain",
+    ...           reason="solved from the printed margin")
+    >>> IN.convention("scale", 1.0, alternative=0.5, quantity="loss scale",
+    ...               reason="the loss counted once or split in two")
+    >>> value, tol = printed("12.0")
+    >>> c = Claim(id="SP-doc-margin", paper="SP", locator="Table 1", quantity="margin",
+    ...           published=value, unit="dB", compute=lambda: IN.gain_db - IN.scale * IN.loss_db,
+    ...           tolerance=tol, expected_status="consistent", note="a synthetic claim")
+    >>> ev = evaluate(c)
+    >>> [(inp.name, ids) for inp, ids in input_readers([ev], "assumed")]
+    [('SP.doc_summary.loss_db', ['SP-doc-margin'])]
     """
     readers: dict[str, list[str]] = {}
     for e in evals:
@@ -105,6 +134,31 @@ def summary_text(evals: Sequence[Evaluation]) -> str:
     str
         The summary of LEDGER.md for a terminal: the :func:`count_table`, the number of
         claims failing their check, then the fitted parameters and the assumed inputs read.
+
+    Examples
+    --------
+    >>> from navcore.ledger import Claim, InputSet, evaluate, printed
+    >>> IN = InputSet("SP", "doc_summary")
+    >>> IN.assumed("loss_db", 2.0, low=1.0, high=3.0, unit="dB", quantity="implementation loss",
+    ...            reason="typical receivers")
+    >>> IN.fitted("gain_db", 14.0, fitted_to=["SP-doc-margin"], unit="dB", quantity="antenna gain",
+    ...           reason="solved from the printed margin")
+    >>> IN.convention("scale", 1.0, alternative=0.5, quantity="loss scale",
+    ...               reason="the loss counted once or split in two")
+    >>> value, tol = printed("12.0")
+    >>> c = Claim(id="SP-doc-margin", paper="SP", locator="Table 1", quantity="margin",
+    ...           published=value, unit="dB", compute=lambda: IN.gain_db - IN.scale * IN.loss_db,
+    ...           tolerance=tol, expected_status="consistent", note="a synthetic claim")
+    >>> ev = evaluate(c)
+    >>> for line in summary_text([ev]).splitlines()[3:]:
+    ...     print(line.rstrip())
+    1 claims, 0 failing their check
+    <BLANKLINE>
+    fitted parameters (the claims they were fitted to are not evidence):
+      SP.doc_summary.gain_db = 14.0: fitted to SP-doc-margin; read by 1 claims
+    <BLANKLINE>
+    assumed inputs (nominal, range) and the claims each moves:
+      SP.doc_summary.loss_db = 2.0 [1.0, 3.0] dB: 1 claims
     """
     lines = []
     head = ["paper", "kind", *STATUSES, "total"]
@@ -170,6 +224,20 @@ def kind_counts_frame(evals: Sequence[Evaluation]) -> Any:
     pandas.DataFrame
         The rows of :func:`count_table` (without ``error``), columns ``Paper``, ``Kind``,
         one per verdict and ``Total``.
+
+    Examples
+    --------
+    >>> from navcore.ledger import Claim, evaluate, printed
+    >>> value, tol = printed("17.67")
+    >>> c = Claim(id="SP-doc-omega", paper="SP", locator="Fig. 2.1", quantity="natural frequency",
+    ...           published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
+    ...           expected_status="reproduced", note="a synthetic claim")
+    >>> ev = evaluate(c)
+    >>> frame = kind_counts_frame([ev])
+    >>> print(frame[["Paper", "Kind", "reproduced", "consistent", "Total"]].to_string(index=False))
+    Paper         Kind  reproduced  consistent  Total
+       SP reproduction           1           0      1
+      all          all           1           0      1
     """
     import pandas as pd
 
@@ -188,6 +256,13 @@ def prose_words_frame() -> Any:
         One row per word of :data:`~navcore.ledger.core.PROSE_WORDS`, columns ``Word in the
         paper`` and ``Band the ledger uses`` (LEDGER.md, "Tolerance: fixed before the value
         is computed").
+
+    Examples
+    --------
+    >>> print(prose_words_frame().head(2).to_string(index=False))
+    Word in the paper Band the ledger uses
+                about         within ±10 %
+        approximately         within ±10 %
     """
     import pandas as pd
 
@@ -221,6 +296,26 @@ def assumed_inputs_frame(evals: Sequence[Evaluation]) -> Any:
     pandas.DataFrame
         One row per assumed input, columns ``Paper``, ``Input``, ``Nominal``, ``Range``,
         ``Unit``, ``Reason`` and ``Claims`` (the number of claims that read it).
+
+    Examples
+    --------
+    >>> from navcore.ledger import Claim, InputSet, evaluate, printed
+    >>> IN = InputSet("SP", "doc_summary")
+    >>> IN.assumed("loss_db", 2.0, low=1.0, high=3.0, unit="dB", quantity="implementation loss",
+    ...            reason="typical receivers")
+    >>> IN.fitted("gain_db", 14.0, fitted_to=["SP-doc-margin"], unit="dB", quantity="antenna gain",
+    ...           reason="solved from the printed margin")
+    >>> IN.convention("scale", 1.0, alternative=0.5, quantity="loss scale",
+    ...               reason="the loss counted once or split in two")
+    >>> value, tol = printed("12.0")
+    >>> c = Claim(id="SP-doc-margin", paper="SP", locator="Table 1", quantity="margin",
+    ...           published=value, unit="dB", compute=lambda: IN.gain_db - IN.scale * IN.loss_db,
+    ...           tolerance=tol, expected_status="consistent", note="a synthetic claim")
+    >>> ev = evaluate(c)
+    >>> frame = assumed_inputs_frame([ev])
+    >>> print(frame[["Input", "Nominal", "Range", "Unit", "Claims"]].to_string(index=False))
+                  Input Nominal  Range Unit  Claims
+    implementation loss       2 1 to 3   dB       1
     """
     import pandas as pd
 
@@ -253,6 +348,26 @@ def fitted_inputs_frame(evals: Sequence[Evaluation]) -> Any:
     pandas.DataFrame
         One row per fitted input read, columns ``Paper``, ``Parameter``, ``Value``, ``Unit``,
         ``Fitted to``, ``Reason`` and ``Claims reading it``.
+
+    Examples
+    --------
+    >>> from navcore.ledger import Claim, InputSet, evaluate, printed
+    >>> IN = InputSet("SP", "doc_summary")
+    >>> IN.assumed("loss_db", 2.0, low=1.0, high=3.0, unit="dB", quantity="implementation loss",
+    ...            reason="typical receivers")
+    >>> IN.fitted("gain_db", 14.0, fitted_to=["SP-doc-margin"], unit="dB", quantity="antenna gain",
+    ...           reason="solved from the printed margin")
+    >>> IN.convention("scale", 1.0, alternative=0.5, quantity="loss scale",
+    ...               reason="the loss counted once or split in two")
+    >>> value, tol = printed("12.0")
+    >>> c = Claim(id="SP-doc-margin", paper="SP", locator="Table 1", quantity="margin",
+    ...           published=value, unit="dB", compute=lambda: IN.gain_db - IN.scale * IN.loss_db,
+    ...           tolerance=tol, expected_status="consistent", note="a synthetic claim")
+    >>> ev = evaluate(c)
+    >>> frame = fitted_inputs_frame([ev])
+    >>> print(frame[["Parameter", "Value", "Fitted to", "Claims reading it"]].to_string(index=False))
+       Parameter Value     Fitted to  Claims reading it
+    antenna gain    14 SP-doc-margin                  1
     """
     import pandas as pd
 
@@ -286,6 +401,26 @@ def convention_inputs_frame(evals: Sequence[Evaluation]) -> Any:
     pandas.DataFrame
         One row per convention input read, columns ``Paper``, ``Convention``, ``Reading
         used``, ``Other reading``, ``Unit``, ``Reason`` and ``Claims``.
+
+    Examples
+    --------
+    >>> from navcore.ledger import Claim, InputSet, evaluate, printed
+    >>> IN = InputSet("SP", "doc_summary")
+    >>> IN.assumed("loss_db", 2.0, low=1.0, high=3.0, unit="dB", quantity="implementation loss",
+    ...            reason="typical receivers")
+    >>> IN.fitted("gain_db", 14.0, fitted_to=["SP-doc-margin"], unit="dB", quantity="antenna gain",
+    ...           reason="solved from the printed margin")
+    >>> IN.convention("scale", 1.0, alternative=0.5, quantity="loss scale",
+    ...               reason="the loss counted once or split in two")
+    >>> value, tol = printed("12.0")
+    >>> c = Claim(id="SP-doc-margin", paper="SP", locator="Table 1", quantity="margin",
+    ...           published=value, unit="dB", compute=lambda: IN.gain_db - IN.scale * IN.loss_db,
+    ...           tolerance=tol, expected_status="consistent", note="a synthetic claim")
+    >>> ev = evaluate(c)
+    >>> frame = convention_inputs_frame([ev])
+    >>> print(frame[["Convention", "Reading used", "Other reading", "Claims"]].to_string(index=False))
+    Convention Reading used Other reading  Claims
+    loss scale            1           0.5       1
     """
     import pandas as pd
 
@@ -324,6 +459,25 @@ def sensitivity_frame(evals: Sequence[Evaluation]) -> Any:
     pandas.DataFrame
         Columns ``Assumed input / claim``, ``Low end``, ``Nominal``, ``High end``,
         ``Printed`` and ``Verdict``.
+
+    Examples
+    --------
+    >>> from navcore.ledger import Claim, InputSet, evaluate, printed
+    >>> IN = InputSet("SP", "doc_summary")
+    >>> IN.assumed("loss_db", 2.0, low=1.0, high=3.0, unit="dB", quantity="implementation loss",
+    ...            reason="typical receivers")
+    >>> IN.fitted("gain_db", 14.0, fitted_to=["SP-doc-margin"], unit="dB", quantity="antenna gain",
+    ...           reason="solved from the printed margin")
+    >>> IN.convention("scale", 1.0, alternative=0.5, quantity="loss scale",
+    ...               reason="the loss counted once or split in two")
+    >>> value, tol = printed("12.0")
+    >>> c = Claim(id="SP-doc-margin", paper="SP", locator="Table 1", quantity="margin",
+    ...           published=value, unit="dB", compute=lambda: IN.gain_db - IN.scale * IN.loss_db,
+    ...           tolerance=tol, expected_status="consistent", note="a synthetic claim")
+    >>> ev = evaluate(c)
+    >>> print(sensitivity_frame([ev]).to_string(index=False))
+                 Assumed input / claim Low end Nominal High end Printed    Verdict
+    implementation loss: SP-doc-margin      13      12       11   12 dB consistent
     """
     import pandas as pd
 
