@@ -39,6 +39,7 @@ __all__ = [
     "exponent_from_gaussian_exponent",
     "exponent_from_gaussian_exponent_large_n",
     "gallager_log_tail_lower",
+    "gallager_log_tails_lower",
     "gaussian_chernoff_exponent",
     "gaussian_roc",
     "quasi_optimal_amplitude",
@@ -179,7 +180,49 @@ def chernoff_log_tails(cgf: CumulantGenerating, t: ArrayLike) -> tuple[FloatArra
 
 
 def gallager_log_tails_lower(cgf: CumulantGenerating, t: ArrayLike) -> tuple[FloatArray, FloatArray]:
-    """Vectorised :func:`gallager_log_tail_lower`: (ln bound, r1) for each threshold."""
+    """Lower bounds on ``ln P(S >= t)`` for many thresholds at once (ATC-10 Eq. 3.5.14 as corrected).
+
+    The vectorised form of :func:`gallager_log_tail_lower`: for each threshold the tilt ``r1``
+    solves ``mu'(r1) - sqrt(2 mu''(r1)) = t`` and the bound is
+    ``-ln 2 + mu(r1) - r1 t - 2 r1 sqrt(2 mu''(r1))`` (erratum E3-1: the printed exponent mixes
+    the Chernoff optimum with ``r1``, omits the logarithm and adds the last term). Where no
+    tilt reaches ``t`` the bound is ``-inf`` and the tilt ``inf``.
+
+    Parameters
+    ----------
+    cgf : CumulantGenerating
+        Object with ``cgf(s)``, ``cgf_d1(s)`` and ``cgf_d2(s)`` of the noise sum S.
+    t : array_like
+        Thresholds (units of S); finite. A scalar is treated as one threshold.
+
+    Returns
+    -------
+    log_p : ndarray
+        Natural log of the lower bound on ``P(S >= t)`` for each threshold (1-D).
+    r1 : ndarray
+        The tilt for each threshold (inverse units of S).
+
+    Raises
+    ------
+    TypeError
+        If ``cgf`` does not provide the three cumulant methods, or ``t`` is not numeric.
+    ValueError
+        If ``t`` holds NaN or infinity.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (3.5.14).
+
+    Examples
+    --------
+    >>> from navcore.detection.multiple_access import MultipleAccessNoise, UniformDensity
+    >>> noise = MultipleAccessNoise(100, 0.01, UniformDensity(0.3))
+    >>> lower, _ = gallager_log_tails_lower(noise, [0.5])
+    >>> upper, _ = chernoff_log_tails(noise, [0.5])
+    >>> bool(lower[0] <= upper[0])
+    True
+    """
     t = np.atleast_1d(np.asarray(t, dtype=float))
 
     def lhs(r: FloatArray) -> FloatArray:
