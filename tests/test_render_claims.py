@@ -254,6 +254,7 @@ def test_math_in_notes_and_errata():
     erratum = Erratum(
         id="SP-E-test",
         paper="SP",
+        kind="typography",
         locator="Eq. (1)",
         printed=r"$e^{-\omega_0 t^2}$",
         finding=r"$e^{-\omega_0 t/2}$",
