@@ -1658,7 +1658,8 @@ for _i, (_k, _erp, _rf, _dia, _bw) in enumerate(TABLE_1_1):
                 " Sec. 2.7 itself says 20 degrees."
                 if _k == 1
                 else " Verdict changed from consistent: computed before by $70 \\lambda/D$ through the "
-                "assumed dish model, with a $\\pm 1$ deg tolerance; now from the printed columns and the printed "
+                "assumed dish model, with a $\\pm 1$ deg tolerance; now from the printed columns and the "
+                "printed "
                 "digits."
             ),
             discussed_in=PAGE_T11,
