@@ -762,7 +762,7 @@ CLAIMS: list[Claim] = [
         "ATC10-eqB.11-monte-carlo",
         "Eqs. (B.1)-(B.11), (2.5.4), (2.4.2)",
         "the simulated first-stage false-alarm rate is at least $F^{Kt+1}$ and the detection rate at least "
-        "P_DL",
+        "$P_{DL}$",
         _false_alarm_above_bound,
         "Seeded simulation of matched-filter samples, lists and the K-list rule at reduced sizes "
         f"({mc.N_A} filter-1 samples, windows of $\\pm {mc.HALF_WINDOW}$, {mc.TRIALS} trials; cases (K, t, "
@@ -809,7 +809,7 @@ CLAIMS: list[Claim] = [
         id="ATC10-eqB.6-correlated-samples",
         paper="ATC10",
         locator="Eqs. (B.6), (C.14); Sec. 2.3",
-        quantity="probability that a 24-sample window at p_f = 0.2 holds no declaration, over the "
+        quantity="probability that a 24-sample window at $p_f = 0.2$ holds no declaration, over the "
         "independent-sample value $(1 - p_f)^{24}$ used by (B.6) and (C.14)",
         published=1.0,
         unit="",

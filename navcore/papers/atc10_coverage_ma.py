@@ -568,7 +568,7 @@ CLAIMS = [
         "Sec. 3.7",
         "two-valued $n_{ij}$ has the smallest peak",
         smallest_peak,
-        "Peaks sqrt(b), sqrt(3b), sqrt(6b), unbounded.",
+        "Peaks $\\sqrt{b}$, $\\sqrt{3b}$, $\\sqrt{6b}$, unbounded.",
         R_,
     ),
     _s(
@@ -618,7 +618,7 @@ CLAIMS = [
         compute=tail_ratio,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="'very poor approximation': the actual 4-sigma tail is several times the Gaussian one.",
+        note="'very poor approximation': the actual $4\\sigma$ tail is several times the Gaussian one.",
         discussed_in=G_,
     ),
     _s(

@@ -617,7 +617,8 @@ ERRATA = [
         finding="The bounds (A.17), (B.11), the figures and the tables use the rule of (A.11)/(B.1) and of "
         "Sec. 2.4: decide H1 if more than tK lists are non-empty. (A.11) does not follow from (A.10); the "
         "two are the same family with t replaced by 1 - t.",
-        evidence="Exact binomial probabilities: at the K = 10, P_DL = 0.999 design point the literal (A.9) "
+        evidence="Exact binomial probabilities: at the $K = 10$, $P_{DL} = 0.999$ design point the literal "
+        "(A.9) "
         "rule with t = 0 detects with probability $q^K$ = 9.6e-4, far below the bound 0.999 that holds "
         "(with equality) for the (A.11) rule.",
         claims=("ATC10-eqA.9-rule-at-design",),
@@ -726,7 +727,7 @@ ERRATA = [
         "the "
         "book "
         "uses 99 % of it.",
-        evidence="F(p_d) = 1 to double precision with the paper's sample counts, so $N_{FL} \\to 0.9 N_T$ "
+        evidence="$F(p_d) = 1$ to double precision with the paper's sample counts, so $N_{FL} \\to 0.9 N_T$ "
         "from "
         "below.",
         no_claim_reason="the level is a supremum approached from below: the gap 0.9 N_T - N_FL is of order "
@@ -753,7 +754,7 @@ ERRATA = [
         paper="ATC10",
         kind="units",
         locator="Sec. 2.6 and App. D (before (D.17))",
-        printed="Sec. 2.6: 'The average power of s_i(t) during transmission is $P_0 = E/\\tau$'; App. D: "
+        printed="Sec. 2.6: 'The average power of $s_i(t)$ during transmission is $P_0 = E/\\tau$'; App. D: "
         "'$E = P_o \\tau$, where $P_o$ is peak signature power'",
         finding="The two names agree only for a constant-envelope signature; for any other the peak power "
         "exceeds $E/\\tau$. Read $P_0$ as Sec. 2.6 defines it, the average power during the pulse, "
@@ -803,7 +804,8 @@ ERRATA = [
         locator="Eqs. (C.2)-(C.5)",
         printed="$|T_1(1) - T_2(1)| \\le v \\alpha / c$ seconds (and likewise for satellite 2)",
         finding="$T_1(1) - T_2(1)$ is the change in satellite 1's reception time between two successive "
-        "pulses: one repetition period alpha plus the change in range. Only the range change is bounded by "
+        "pulses: one repetition period $\\alpha$ plus the change in range. Only the range change is bounded "
+        "by "
         "$v \\alpha / c$. The periods cancel in the difference of differences of (C.2), so (C.5) is right "
         "when "
         "the triangle inequality is applied to the range-change terms alone. The bound also ignores the "
@@ -888,7 +890,7 @@ ERRATA = [
         locator="Eq. (A.16)",
         printed="$P(\\rho = 1 | H_1) \\approx p_d^4$, 'the approximation holds closely assuming reasonably "
         "large "
-        "enough values for p_d'",
+        "enough values for $p_d$'",
         finding="The $K = 1000$ designs do not have a large $p_d$: $p_d = 0.215$ for $P_{DL} = 0.88$, $p_d "
         "= 0.250$ for "
         "$P_{DL} = 0.98$, $p_d = 0.288$ for $P_{DL} = 0.999$, so $p_d^4 \\le 0.0069$, while near the jamming "
@@ -991,7 +993,7 @@ def _table21_claim(row: int, k: int, p_dl: float, text: str, relation: str) -> C
         "$n_v = 23.86$ samples; ERP = $x_{dB} + 10 \\log_{10}(P_0 \\tau B) = x_{dB}$ + 50 dBW."
     )
     if relation == ">":
-        note += " The N_ADL ceiling (J -> inf) is 0.0021 N_T < 0.01 N_T, so no power suffices."
+        note += " The $N_{ADL}$ ceiling ($J \\to \\infty$) is $0.0021 N_T < 0.01 N_T$, so no power suffices."
     elif expected == "discrepant":
         note += (
             " Misses the printed whole dB (erratum ATC10-E-jam-table2.1-values). Verdict changed from "
@@ -1029,7 +1031,7 @@ def _step_claim(k_from: int, k_to: int, p_dl: float, expected: str) -> Claim:
         k_from_ = table21_design(row_from)[0] if row_from else 1
         return required_erp_dbw("ambiguous", p_, k_to_) - required_erp_dbw("ambiguous", p_, k_from_)
 
-    note = "N_ADL = 0.01 N_T thresholds at t = 0, both ends at the same Table 2.1 design P_DL."
+    note = "$N_{ADL} = 0.01 N_T$ thresholds at $t = 0$, both ends at the same Table 2.1 design $P_{DL}$."
     if expected == "discrepant":
         note += (
             " Verdict changed from consistent: the tolerance was $\\pm 2.5$ dB ('a quarter decade'); the "

@@ -725,8 +725,8 @@ ERRATA = [
         "\\theta - 2 \\rho_1 \\sqrt{2 \\mu''(\\rho_1)}]$ "
         "with $\\mu'(\\rho_1) - \\sqrt{2 \\mu''(\\rho_1)} = \\theta$. The corrected bound is valid but "
         "$10^2$-$10^9$ "
-        "times below the actual p_f at N = 1e5, tau/alpha = 2e-5, so Sec. 3.8's argument "
-        "'ROC_g p_f below the lower bound of the actual p_f' cannot be made with it.",
+        "times below the actual $p_f$ at N = 1e5, $\\tau/\\alpha$ = 2e-5, so Sec. 3.8's argument "
+        "'$\\mathrm{ROC}_g$ $p_f$ below the lower bound of the actual $p_f$' cannot be made with it.",
         evidence="Tilted-Chebyshev derivation; the printed version (sign of $\\phi_1$) lies above the "
         "Chernoff upper bound; the corrected one lies below the exact compound-binomial and "
         "stratified Monte Carlo tails at every tested point (checked by the library's tests).",

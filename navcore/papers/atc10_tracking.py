@@ -742,7 +742,7 @@ for _ex in EXAMPLES:
                 )
                 + (
                     " The one-parameter fit misses this printed digit: no single ratio reproduces every "
-                    "printed digit (the two beta values want ratios the other columns do not allow). "
+                    "printed digit (the two $\\beta$ values want ratios the other columns do not allow). "
                     "Verdict changed from consistent: the old tolerance (0.5 %) was the fit's own "
                     "largest residual; printed digits now."
                     if _miss
@@ -1102,7 +1102,7 @@ CLAIMS += [
         expected_status="discrepant",
         note="'Approximately' read with the prose table ($\\pm$10 %) on the number of terms $n + 1$, in the "
         "six "
-        "cases of Table 4.3 (printed beta). The recursion converges about twice as fast "
+        "cases of Table 4.3 (printed $\\beta$). The recursion converges about twice as fast "
         "(10/2/0/25/5/1 steps against 22/4.7/1.5/55/12/2.6): the estimate treats $\\gamma_n$ as the "
         "geometric series $s_n$, whose ratio the recursion does not have. Verdict changed from "
         "consistent: 'about' was read as 'within a factor 3', which no table word allows.",
@@ -1157,12 +1157,15 @@ ERRATA += [
         paper="ATC10",
         kind="inconsistent-numbers",
         locator="Table 4.2 (from Table 4.1)",
-        printed="beta = .0543/.00355, tr = 7.84/3.99 (all), 9.39/14.9 (1,2,3), S = 1.30/1.16",
-        finding="A synchronous orbit (42 164 km) over a spherical Earth (6371 km) gives beta = .0658/.00425, "
-        "tr = 7.19/3.68 and 8.64/13.6, S = 1.33/1.18; the printed values need an orbit radius of 9.235 "
+        printed="$\\beta$ = .0543/.00355, $\\operatorname{tr}$ = 7.84/3.99 (all), 9.39/14.9 (1,2,3), "
+        "$S$ = 1.30/1.16",
+        finding="A synchronous orbit (42 164 km) over a spherical Earth (6371 km) gives $\\beta$ = "
+        ".0658/.00425, $\\operatorname{tr}$ = 7.19/3.68 and 8.64/13.6, $S$ = 1.33/1.18; the printed values "
+        "need an orbit radius of 9.235 "
         "Earth radii instead of 6.618. Example I satellite 1 is then outside the 45 deg cone (47.2 deg).",
-        evidence="Geometry built twice (navcore on a sphere; pymap3d azimuth/elevation with QR/SVD "
-        "invariants); a one-parameter fit of r/R_E reproduces all ten numbers to 0.43 %. WGS-84, aircraft "
+        evidence="Geometry built twice (navcore on a sphere; an independent geodesy library's "
+        "azimuth/elevation with QR/SVD invariants); a one-parameter fit of $r/R_E$ reproduces all ten "
+        "numbers to 0.43 %. WGS-84, aircraft "
         "altitude and coordinate rounding move the invariants by < 1 %.",
         claims=(*_e2_claims, "ATC10-sec4.6-cone-exI"),
         discussed_in=PAGE_GEOMETRY,
