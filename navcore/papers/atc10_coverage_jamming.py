@@ -536,9 +536,10 @@ CLAIMS: list[Claim] = [
         "ATC10-sec2.1-threshold-behaviour",
         "Secs. 2.1, 2.7",
         "the $K = 1$ bounds show a strong threshold behaviour: each falls very rapidly below a certain "
-        "J/($P_0 B \\tau$)",
+        "$J/(P_0 B \\tau)$",
         lambda: _threshold_behaviour(True),
-        "'Very rapidly' read before computing as: from 90 % of the J $\\to$ inf ceiling down to 1e-6 of it "
+        "'Very rapidly' read before computing as: from 90 % of the $J \\to \\infty$ ceiling down to 1e-6 of "
+        "it "
         "within 10 dB (a tenth of the range the figures need), both bounds at $t = 0$, $P_{DL}$ 0.9 and "
         "0.999. "
         "The widths are about 1.1-1.3 dB.",
@@ -599,7 +600,7 @@ CLAIMS: list[Claim] = [
     _statement(
         "ATC10-sec2.6-monotone-in-J",
         "Secs. 2.3, 2.6 and 2.8",
-        "$N_{FL}$ and $N_{ADL}$ never decrease as J/($P_0 B \\tau$) grows, so any interference left out can "
+        "$N_{FL}$ and $N_{ADL}$ never decrease as $J/(P_0 B \\tau)$ grows, so any interference left out can "
         "only "
         "raise them",
         _monotone_in_jammer,
@@ -673,7 +674,7 @@ CLAIMS: list[Claim] = [
     _statement(
         "ATC10-sec2.8-adl-falls-with-t",
         "Sec. 2.8",
-        "at fixed J/($P_0 B \\tau$), a lower t (so a lower $p_d$) lowers $p_f$ and $N_{ADL}$",
+        "at fixed $J/(P_0 B \\tau)$, a lower $t$ (so a lower $p_d$) lowers $p_f$ and $N_{ADL}$",
         _adl_and_pf_fall_as_t_falls,
         "At the $t = 0$ threshold x of each finite Table 2.1 design, $p_f$ and ln $N_{ADL}$ over t in {0, "
         "0.05, "
@@ -709,7 +710,8 @@ CLAIMS: list[Claim] = [
         id="ATC10-eqA.7-printed",
         paper="ATC10",
         locator="Eq. (A.7)",
-        quantity="cases ($\\lambda_1$, K0) in which (A.7) as printed decides otherwise than the test (A.4) "
+        quantity="cases ($\\lambda_1$, $K_0$) in which (A.7) as printed decides otherwise than the test "
+        "(A.4) "
         "it "
         "rewrites",
         published=0.0,
@@ -733,7 +735,7 @@ CLAIMS: list[Claim] = [
         "Eqs. (A.11)-(A.17)",
         "the Chernoff bound (A.17) never exceeds the exact detection probability of the rule of (A.11)",
         _chernoff_below_exact,
-        "K in {2, 5, 10, 100, 1000}, t in {0, 0.05, 0.1, 0.3, 0.6}, q = $p_d^4$ in {0.002, ..., 0.9}: bound "
+        "K in {2, 5, 10, 100, 1000}, t in {0, 0.05, 0.1, 0.3, 0.6}, $q = p_d^4$ in {0.002, ..., 0.9}: bound "
         "$\\le$ exact binomial P(more than Kt lists non-empty).",
         PAGE,
     ),

@@ -917,7 +917,7 @@ ERRATA = [
         kind="inconsistent-numbers",
         locator="Table 2.1 (and Table 1.1, K = 1000)",
         printed="56 dBW for $K = 100$, $P_{DL} = 0.88$; 77 dBW for $K = 1000$, $P_{DL} = 0.999$",
-        finding="With the printed parameters the $t = 0 N_{ADL}$ bound (2.8.4) reaches 0.01 $N_T$ at 55.3 "
+        finding="With the printed parameters the $t = 0$ $N_{ADL}$ bound (2.8.4) reaches $0.01 N_T$ at 55.3 "
         "dBW and "
         "75.7 dBW: the printed whole-dB entries are 0.7 and 1.3 dB higher, beyond their half-dB "
         "rounding. The "
@@ -988,7 +988,7 @@ def _table21_claim(row: int, k: int, p_dl: float, text: str, relation: str) -> C
         return required_erp_dbw("ambiguous", p_, k_)
 
     note = (
-        "$t = 0$, $p_f$ from (D.17) = (2.7.1), $N_{ADL}$ of (2.8.4) with 2B $\\alpha$ = 2e7, 4B $\\beta$ = "
+        "$t = 0$, $p_f$ from (D.17) = (2.7.1), $N_{ADL}$ of (2.8.4) with $2B\\alpha$ = 2e7, $4B\\beta$ = "
         "9.6e5 and "
         "$n_v = 23.86$ samples; ERP = $x_{dB} + 10 \\log_{10}(P_0 \\tau B) = x_{dB}$ + 50 dBW."
     )
@@ -1106,7 +1106,8 @@ CLAIMS: list[Claim] = [
         tolerance=EXACT,
         expected_status="reproduced",
         kind="statement",
-        note="'Prohibit' read at the caption's $P_D = 0.88$: the $K = 1000 N_{ADL}$ ceiling (J $\\to$ inf) "
+        note="'Prohibit' read at the caption's $P_D = 0.88$: the $K = 1000$ $N_{ADL}$ ceiling "
+        "($J \\to \\infty$) "
         "lies "
         "below 0.01 $N_T$, so the threshold search returns infinity, above the printed >130 dBW. At "
         "$P_{DL}$ = "
@@ -1135,7 +1136,7 @@ CLAIMS: list[Claim] = [
         id="ATC10-sec2.7-pulse-energy",
         paper="ATC10",
         locator="Sec. 2.7",
-        quantity="pulse energy for $P_0 = 30$ dBW and $\\tau = 10$ us",
+        quantity="pulse energy for $P_0 = 30$ dBW and $\\tau = 10$ µs",
         published=10.0,
         unit="mJ",
         compute=lambda: units.watts_from_dbw(IN.pulse_power_dbw) * IN.pulse_duration_s * 1e3,
@@ -1167,9 +1168,8 @@ CLAIMS: list[Claim] = [
         id="ATC10-eq2.4.2-nu-max",
         paper="ATC10",
         locator="Eqs. (2.4.2), (A.17)-(A.18)",
-        quantity="the $\\nu$-maximised exponent of (2.4.2) equals the binary divergence D(t || $p_d^4$) for "
-        "t < "
-        "$p_d^4$ and 0 otherwise",
+        quantity="the $\\nu$-maximised exponent of (2.4.2) equals the binary divergence $D(t \\| p_d^4)$ for "
+        "$t < p_d^4$ and 0 otherwise",
         published=True,
         unit="statement",
         compute=_exponent_matches_numeric,
@@ -1250,7 +1250,7 @@ CLAIMS: list[Claim] = [
         id="ATC10-eqC.1-printed",
         paper="ATC10",
         locator="Eq. (C.1)",
-        quantity="ln of (C.1) as printed over F($p_f$) of (B.6), the factor (2.5.12) uses for $K = 1$ "
+        quantity="ln of (C.1) as printed over $F(p_f)$ of (B.6), the factor (2.5.12) uses for $K = 1$ "
         "(0 if the two are the same, as they should be)",
         published=0.0,
         unit="",
@@ -1366,7 +1366,8 @@ CLAIMS: list[Claim] = [
         tolerance=EXACT,
         expected_status="reproduced",
         kind="statement",
-        note="Both bounds are within 0.1 % of their J $\\to$ inf ceilings at -12 dB for $P_{DL}$ in {0.88, "
+        note="Both bounds are within 0.1 % of their $J \\to \\infty$ ceilings at -12 dB for $P_{DL}$ in "
+        "{0.88, "
         "0.9, "
         "0.99, 0.999}; the threshold falls 2-4 dB further down.",
         discussed_in=PAGE_K1,

@@ -733,7 +733,8 @@ for _ex in EXAMPLES:
                 ],
                 tolerance=_tol,
                 expected_status="inconsistent" if _miss else "consistent",
-                note="Same geometry with $r_{orbit}/R_E$ fitted to the ten Table 4.2 numbers (9.235); a fit "
+                note="Same geometry with $r_{\\mathrm{orbit}}/R_E$ fitted to the ten Table 4.2 numbers "
+                "(9.235); a fit "
                 "claim, not evidence"
                 + (
                     "; col. 5 with the printed, frame-dependent $1'(F_3'F_3)^{-1} 1$ in east-positive ECEF."
