@@ -408,7 +408,7 @@ ERRATA = [
         finding="An n-frame rotation multiplies $q_b^n$ from the left: $q^{n,+} = q^n \\otimes q^{n,-}$. The "
         "printed order rotates about body axes; at the Table 1 heading of 90 deg a 2.29 deg "
         "error leaves a 1.58 deg residual.",
-        evidence="The filter's attitude correction applied in both orders, checked against an independent "
+        evidence="The filter's attitude correction applied in both orders and compared with an independent "
         "rotation library (checked by the library's tests).",
         claims=("KZL-qcorr",),
         discussed_in=PAGE2,

@@ -622,7 +622,8 @@ CLAIMS = [
         compute=_pointing_negligible,
         tolerance=EXACT,
         expected_status="consistent",
-        note="$\\delta r_{tgt} = \\delta r + \\delta \\alpha$ x r with the full end covariance of position "
+        note="$\\delta r_{tgt} = \\delta r + \\delta\\alpha \\times r$ with the full end covariance of "
+        "position "
         "and "
         "attitude; agreement within 1 % for both grades, for target bearings over half a turn (the "
         "assumed input; the paper gives only the 8 km). The helicopter track, speed and its 30 min "
