@@ -131,14 +131,14 @@ def test_errata_numbers_match_the_model() -> None:
         assert f"{paper.adl_erp_dbw_half_samples(p_dl, 100):.1f}" in indep
     assert math.isinf(paper.adl_erp_dbw_half_samples(0.999, 1000)) and "no finite threshold" in indep
     g = paper.geometry()
-    assert f"{g.max_speed_m_s * g.repetition_s / 299792458.0 * 1e6:.3f} us" in text[paper.E_C2]
+    assert f"{g.max_speed_m_s * g.repetition_s / 299792458.0 * 1e6:.3f} µs" in text[paper.E_C2]
     assert f"at most {paper.max_pdl_factor_shift_db():.2f} dB" in text[paper.E_258]
     assert math.isinf(paper.adl_erp_dbw_without_pdl_factor(0.98, 1000))
     a16 = text[paper.E_A16]
     for p_dl in (0.88, 0.98, 0.999):
-        assert f"p_d = {paper.design_p_d(p_dl, 1000):.3f} for P_DL = {p_dl}" in a16
-    assert f"p_d^4 <= {paper.design_p_d(0.999, 1000) ** 4:.4f}" in a16
-    assert f"p_f = {math.exp(paper.threshold_log_pf(0.999, 1000)):.2f}" in a16
+        assert f"$p_d = {paper.design_p_d(p_dl, 1000):.3f}$ for $P_{{DL}} = {p_dl}$" in a16
+    assert f"$p_d^4 \\le {paper.design_p_d(0.999, 1000) ** 4:.4f}$" in a16
+    assert f"$p_f = {math.exp(paper.threshold_log_pf(0.999, 1000)):.2f}$" in a16
     f = -math.expm1(float(jm.log_false_list_factor(paper.threshold_log_pf(0.999, 1000), g)))
     assert f"differs from 1 by {f:.0e}" in a16
     t21 = text[paper.E_T21]

@@ -487,10 +487,11 @@ ERRATA = [
         locator="Sec. 2.8 ('each curve exhibits a strong thresholding property')",
         printed="In observing each set of curves in Figures 2.3 through 2.16 notice that each curve exhibits "
         "a strong thresholding property",
-        finding="True of the N_FL curves and of N_ADL at K = 10, but the N_ADL bounds at K = 100 and "
-        "K = 1000 rise from 1e-6 of their ceiling to 90 % of it over 6-10 dB and 29 dB (t = 0, Table 2.1 "
-        "designs), against 1-2 dB at K = 1: near their ceilings they are flat, not a threshold.",
-        evidence="The N_ADL bound typed from (2.8.4) with plain floats and bisection, independent of "
+        finding="True of the $N_{FL}$ curves and of $N_{ADL}$ at $K = 10$, but the $N_{ADL}$ bounds at "
+        "$K = 100$ and "
+        "$K = 1000$ rise from 1e-6 of their ceiling to 90 % of it over 6-10 dB and 29 dB ($t = 0$, Table 2.1 "
+        "designs), against 1-2 dB at $K = 1$: near their ceilings they are flat, not a threshold.",
+        evidence="The $N_{ADL}$ bound typed from (2.8.4) with plain floats and bisection, independent of "
         "navcore's log-domain evaluation, gives the same widths.",
         claims=("ATC10-sec2.8-threshold-every-curve",),
         discussed_in=PAGE_K,
@@ -520,25 +521,27 @@ CLAIMS: list[Claim] = [
         id="ATC10-sec1.1-level-10pct-airborne",
         paper="ATC10",
         locator="Sec. 1.1 and Sec. 2.1",
-        quantity="10 % of the airborne aircraft (N = 0.1 N_T) is the level (0.01) N_T of N_AD",
+        quantity="10 % of the airborne aircraft ($N = 0.1 N_T$) is the level (0.01) $N_T$ of $N_{AD}$",
         published=printed("0.01")[0],
         unit="N_T",
         kind="cross-check",
         compute=lambda: float(IN.sec11_airborne_share) * float(IN_J.airborne_fraction),
         tolerance=printed("0.01")[1],
         expected_status="consistent",
-        note="Arithmetic on printed values: 10 % (Sec. 1.1) of N = 0.1 N_T (Sec. 2.7) against the level "
-        "(0.01) N_T of Secs. 2.1 and 2.7, which the thresholds use.",
+        note="Arithmetic on printed values: 10 % (Sec. 1.1) of $N = 0.1 N_T$ (Sec. 2.7) against the level "
+        "(0.01) $N_T$ of Secs. 2.1 and 2.7, which the thresholds use.",
         discussed_in=PAGE_T11,
     ),
     _statement(
         "ATC10-sec2.1-threshold-behaviour",
         "Secs. 2.1, 2.7",
-        "the K = 1 bounds show a strong threshold behaviour: each falls very rapidly below a certain "
-        "J/(P0 B tau)",
+        "the $K = 1$ bounds show a strong threshold behaviour: each falls very rapidly below a certain "
+        "$J/(P_0 B \\tau)$",
         lambda: _threshold_behaviour(True),
-        "'Very rapidly' read before computing as: from 90 % of the J -> inf ceiling down to 1e-6 of it "
-        "within 10 dB (a tenth of the range the figures need), both bounds at t = 0, P_DL 0.9 and 0.999. "
+        "'Very rapidly' read before computing as: from 90 % of the $J \\to \\infty$ ceiling down to 1e-6 of "
+        "it "
+        "within 10 dB (a tenth of the range the figures need), both bounds at $t = 0$, $P_{DL}$ 0.9 and "
+        "0.999. "
         "The widths are about 1.1-1.3 dB.",
         PAGE_K1,
     ),
@@ -562,9 +565,11 @@ CLAIMS: list[Claim] = [
         erratum=E_THRESHOLD,
         oracle=max_width_k_gt_1_plain_db,
         oracle_tolerance=Tolerance(reason="0.01 dB grid against 60 bisections", abs=0.05),
-        note="t = 0, every finite Table 2.1 design. The N_FL curves fall within 1.5-2 dB, but the N_ADL "
-        "curves take 5 dB (K = 10), 6-10 dB (K = 100) and 29 dB (K = 1000, P_DL = 0.999): their final "
-        "approach to the ceiling is slow, which is also why the K = 1000 entry of Table 2.1 is "
+        note="$t = 0$, every finite Table 2.1 design. The $N_{FL}$ curves fall within 1.5-2 dB, but the "
+        "$N_{ADL}$ "
+        "curves take 5 dB ($K = 10$), 6-10 dB ($K = 100$) and 29 dB ($K = 1000$, $P_{DL} = 0.999$): their "
+        "final "
+        "approach to the ceiling is slow, which is also why the $K = 1000$ entry of Table 2.1 is "
         "ill-conditioned.",
         discussed_in=PAGE_K,
     ),
@@ -574,36 +579,41 @@ CLAIMS: list[Claim] = [
         "a matched filter detector (phase known) always performs better than a matched filter-envelope "
         "detector",
         _coherent_beats_envelope,
-        "At equal p_f and energy: coherent p_d = Q(Q^-1(p_f) - d) against the envelope (Rician) p_d = "
-        "Q_1(d, sqrt(-2 ln p_f)) (noncentral chi-square, 2 degrees of freedom), d from 0.5 to 10 and p_f "
+        "At equal $p_f$ and energy: coherent $p_d = Q(Q^{-1}(p_f) - d)$ against the envelope (Rician) "
+        "$p_d = Q_1(d, \\sqrt{-2 \\ln p_f})$ (noncentral chi-square, 2 degrees of freedom), $d$ from 0.5 to "
+        "10 "
+        "and $p_f$ "
         "from 1e-9 to 0.3.",
         PAGE,
     ),
     _statement(
         "ATC10-sec2.3-segment-holds-signature",
         "Sec. 2.3",
-        "every segment of length alpha + beta-bar holds a present aircraft's signature at all four filters "
+        "every segment of length $\\alpha + \\bar\\beta$ holds a present aircraft's signature at all four "
+        "filters "
         "at least once, possibly twice",
         _segment_holds_signature,
-        "20000 seeded random phases, satellite delays in [0, beta] and segment origins, alpha = 1 s, "
-        "beta = 24 ms: every segment holds a complete quadruplet and some hold two.",
+        "20000 seeded random phases, satellite delays in [0, $\\beta$] and segment origins, $\\alpha = 1$ s, "
+        "$\\beta = 24$ ms: every segment holds a complete quadruplet and some hold two.",
         PAGE,
     ),
     _statement(
         "ATC10-sec2.6-monotone-in-J",
         "Secs. 2.3, 2.6 and 2.8",
-        "N_FL and N_ADL never decrease as J/(P0 B tau) grows, so any interference left out can only "
+        "$N_{FL}$ and $N_{ADL}$ never decrease as $J/(P_0 B \\tau)$ grows, so any interference left out can "
+        "only "
         "raise them",
         _monotone_in_jammer,
-        "Both log bounds on a 0.25 dB grid from -40 to +100 dB at K = 1 (P_DL 0.9, 0.999) and every finite "
-        "Table 2.1 design, t = 0 and 0.1. More interference raises the noise at the filter output, which "
+        "Both log bounds on a 0.25 dB grid from -40 to +100 dB at $K = 1$ ($P_{DL}$ 0.9, 0.999) and every "
+        "finite "
+        "Table 2.1 design, $t = 0$ and 0.1. More interference raises the noise at the filter output, which "
         "acts as a larger J.",
         PAGE_K,
     ),
     _statement(
         "ATC10-eq2.5.10-random-pick",
         "Eq. (2.5.10)",
-        "a random pick from a position set holding a wrong position is wrong with probability >= 0.5",
+        "a random pick from a position set holding a wrong position is wrong with probability $\\ge 0.5$",
         _random_pick_at_least_half,
         "The set holds at least one wrong position and at most one correct one; the smallest share of "
         "wrong positions over set sizes up to 50 is exactly 1/2 (one wrong, one correct).",
@@ -612,7 +622,7 @@ CLAIMS: list[Claim] = [
     _statement(
         "ATC10-eq2.5.5-composition",
         "Eqs. (2.5.1)-(2.5.5), (2.7.3), (B.11)",
-        "N_FL = (N_T - N) exp[(Kt + 1) ln F(p_f)] with p_f of (2.7.1)",
+        "$N_{FL} = (N_T - N) \\exp[(Kt + 1) \\ln F(p_f)]$ with $p_f$ of (2.7.1)",
         lambda: _composition(0),
         "navcore's log-domain bound against the printed formulas typed with plain floats (erf, powers) at "
         "K = 1, 10, 100 and t = 0-0.1, x from -16 to 0 dB, to 1e-6 relative; at t = 0 the exponent is 1, "
@@ -624,7 +634,8 @@ CLAIMS: list[Claim] = [
         "Eqs. (2.5.12), (2.7.3), (2.8.4), (C.17)",
         "$N_{ADL} = 0.5 N P_{DL} G(p_f)^{K-1} F(p_f)$, with $P_{DL} = p_d^4$ at K = 1",
         lambda: _composition(1),
-        "As for N_FL: the printed K = 1 and K > 1 lines (P_DL from (2.4.2) with its nu maximiser) typed "
+        "As for $N_{FL}$: the printed $K = 1$ and $K > 1$ lines ($P_{DL}$ from (2.4.2) with its $\\nu$ "
+        "maximiser) typed "
         "with plain floats, against navcore's log-domain bound, to 1e-6 relative where nothing underflows.",
         PAGE,
     ),
@@ -646,25 +657,27 @@ CLAIMS: list[Claim] = [
             policy="exact",
         ),
         expected_status="reproduced",
-        note="x where N_ADL = 0.01 N_T and where N_FL = 99 % of 0.9 N_T, against x where each bound is "
-        "half its ceiling, P_DL 0.9 and 0.999, 0.01 dB grid.",
+        note="x where $N_{ADL} = 0.01 N_T$ and where $N_{FL} = 99$ % of 0.9 $N_T$, against x where each "
+        "bound is "
+        "half its ceiling, $P_{DL}$ 0.9 and 0.999, 0.01 dB grid.",
         discussed_in=PAGE_K1,
     ),
     _statement(
         "ATC10-sec2.8-pd-rises-with-t",
         "Sec. 2.8",
-        "a required P_DL is met by a family of (t, p_d) pairs, and as t decreases p_d must decrease",
+        "a required $P_{DL}$ is met by a family of (t, $p_d$) pairs, and as t decreases $p_d$ must decrease",
         _pd_rises_with_t,
-        "Design p_d solving (2.4.2) = P_DL for t in {0, 0.05, 0.1, 0.2, 0.3} at every finite Table 2.1 "
+        "Design $p_d$ solving (2.4.2) = $P_{DL}$ for t in {0, 0.05, 0.1, 0.2, 0.3} at every finite Table 2.1 "
         "design: strictly increasing in t.",
         PAGE_K,
     ),
     _statement(
         "ATC10-sec2.8-adl-falls-with-t",
         "Sec. 2.8",
-        "at fixed J/(P0 B tau), a lower t (so a lower p_d) lowers p_f and N_ADL",
+        "at fixed $J/(P_0 B \\tau)$, a lower $t$ (so a lower $p_d$) lowers $p_f$ and $N_{ADL}$",
         _adl_and_pf_fall_as_t_falls,
-        "At the t = 0 threshold x of each finite Table 2.1 design, p_f and ln N_ADL over t in {0, 0.05, "
+        "At the $t = 0$ threshold x of each finite Table 2.1 design, $p_f$ and ln $N_{ADL}$ over t in {0, "
+        "0.05, "
         "0.1, 0.2, 0.3}: both strictly increasing in t.",
         PAGE_K,
     ),
@@ -673,25 +686,33 @@ CLAIMS: list[Claim] = [
         "Sec. 2.8",
         "as t decreases the first-stage (aircraft) false alarm probability increases",
         _first_stage_fa_rises_as_t_falls,
-        "The P_F bound F(p_f)^(Kt+1) of (B.11) at fixed p_f (each finite Table 2.1 threshold), over the "
+        "The $P_F$ bound $F(p_f)^{Kt+1}$ of (B.11) at fixed $p_f$ (each finite Table 2.1 threshold), over "
+        "the "
         "t grid: larger for smaller t, since F < 1.",
         PAGE_K,
     ),
     _statement(
         "ATC10-eqA.6-majority-test",
         "Eqs. (A.3)-(A.9), App. A",
-        "Lambda_1 = a^K0 b^(K-K0); the coefficient of (A.7) is positive, so the Neyman-Pearson test on the "
+        "$\\Lambda_1 = a^{K_0} b^{K-K_0}$; the coefficient of (A.7) is positive, so the Neyman-Pearson test "
+        "on "
+        "the "
         "list indicators is a threshold on the number of empty lists",
         _majority_test,
-        "All 2^10 indicator vectors (K = 10 from Table 2.1) for four (P(rho=1|H0), P(rho=1|H1)) pairs: the "
-        "ratio depends on K0 only, equals a^K0 b^(K-K0) and increases strictly with K0 (a > 1 > b).",
+        "All $2^{10}$ indicator vectors ($K = 10$ from Table 2.1) for four ($P(\\rho=1|H_0)$, "
+        "$P(\\rho=1|H_1)$) "
+        "pairs: the "
+        "ratio depends on $K_0$ only, equals $a^{K_0} b^{K-K_0}$ and increases strictly with $K_0$ "
+        "($a > 1 > b$).",
         PAGE,
     ),
     Claim(
         id="ATC10-eqA.7-printed",
         paper="ATC10",
         locator="Eq. (A.7)",
-        quantity="cases (lambda_1, K0) in which (A.7) as printed decides otherwise than the test (A.4) it "
+        quantity="cases ($\\lambda_1$, $K_0$) in which (A.7) as printed decides otherwise than the test "
+        "(A.4) "
+        "it "
         "rewrites",
         published=0.0,
         unit="cases",
@@ -701,9 +722,12 @@ CLAIMS: list[Claim] = [
         erratum="ATC10-E-jam-A7-ratio",
         oracle=lambda: printed_a7_disagreements(True),
         oracle_tolerance=EXACT,
-        note="K = 10, P(rho=1|H0) = 0.2, P(rho=1|H1) = 0.6, lambda_1 in {0.5, 1, 3}, K0 = 0-10. A rewriting "
-        "should never disagree; the printed right side K ln(lambda_1 b) should read K ln(lambda_1 / b), "
-        "b = P(rho=1|H0)/P(rho=1|H1). Oracle: exact rational arithmetic.",
+        note="$K = 10$, $P(\\rho=1|H_0) = 0.2$, $P(\\rho=1|H_1) = 0.6$, $\\lambda_1$ in {0.5, 1, 3}, $K_0$ "
+        "= 0-10. "
+        "A rewriting "
+        "should never disagree; the printed right side $K \\ln(\\lambda_1 b)$ should read "
+        "$K \\ln(\\lambda_1 / b)$, "
+        "$b = P(\\rho=1|H_0)/P(\\rho=1|H_1)$. Oracle: exact rational arithmetic.",
         discussed_in=PAGE,
     ),
     _statement(
@@ -711,8 +735,8 @@ CLAIMS: list[Claim] = [
         "Eqs. (A.11)-(A.17)",
         "the Chernoff bound (A.17) never exceeds the exact detection probability of the rule of (A.11)",
         _chernoff_below_exact,
-        "K in {2, 5, 10, 100, 1000}, t in {0, 0.05, 0.1, 0.3, 0.6}, q = p_d^4 in {0.002, ..., 0.9}: bound "
-        "<= exact binomial P(more than Kt lists non-empty).",
+        "K in {2, 5, 10, 100, 1000}, t in {0, 0.05, 0.1, 0.3, 0.6}, $q = p_d^4$ in {0.002, ..., 0.9}: bound "
+        "$\\le$ exact binomial P(more than Kt lists non-empty).",
         PAGE,
     ),
     _statement(
@@ -720,16 +744,19 @@ CLAIMS: list[Claim] = [
         "Eq. (A.16)",
         "when $P(\\rho = 1 | H_1) \\approx p_d^4$ is not exact the lower bound stays true",
         _exponent_rises_with_q,
-        "P(rho=1|H1) >= p_d^4 and the exponent max_nu[nu(1-t) - ln((1-q)e^nu + q)] does not decrease in "
+        "$P(\\rho=1|H_1) \\ge p_d^4$ and the exponent $\\max_\\nu[\\nu(1-t) - \\ln((1-q)e^\\nu + q)]$ does "
+        "not "
+        "decrease in "
         "q (checked on a 400-point grid for five t), so the smaller q can only lower the bound.",
         PAGE,
     ),
     _statement(
         "ATC10-appA-any-pd-reachable",
         "App. A, after (A.18)",
-        "for given P_D and K, (A.17) can be made to hold by taking t small and p_d large",
+        "for given $P_D$ and K, (A.17) can be made to hold by taking t small and $p_d$ large",
         _any_pd_reachable,
-        "At t = 0 the design p_d = [1 - (1 - P_D)^(1/K)]^(1/4) < 1 makes the bound equal P_D, for P_D in "
+        "At $t = 0$ the design $p_d = [1 - (1 - P_D)^{1/K}]^{1/4} < 1$ makes the bound equal $P_D$, for "
+        "$P_D$ in "
         "{0.88, 0.98, 0.999} and K in {2, 10, 100, 1000}.",
         PAGE,
     ),
@@ -737,11 +764,12 @@ CLAIMS: list[Claim] = [
         "ATC10-eqB.11-monte-carlo",
         "Eqs. (B.1)-(B.11), (2.5.4), (2.4.2)",
         "the simulated first-stage false-alarm rate is at least $F^{Kt+1}$ and the detection rate at least "
-        "P_DL",
+        "$P_{DL}$",
         _false_alarm_above_bound,
         "Seeded simulation of matched-filter samples, lists and the K-list rule at reduced sizes "
-        f"({mc.N_A} filter-1 samples, windows of +-{mc.HALF_WINDOW}, {mc.TRIALS} trials; cases (K, t, "
-        "P_DL) = (1, 0, 0.9), (3, 0, 0.9), (3, 1/3, 0.9)), x from -14 to -7 dB: every rate at or above its "
+        f"({mc.N_A} filter-1 samples, windows of $\\pm {mc.HALF_WINDOW}$, {mc.TRIALS} trials; cases (K, t, "
+        "$P_{DL}$) = (1, 0, 0.9), (3, 0, 0.9), (3, 1/3, 0.9)), x from -14 to -7 dB: every rate at or above "
+        "its "
         "bound within 3 binomial standard errors.",
         PAGE_MC,
         tolerance=monte_carlo(abs=0.0, runs=mc.TRIALS, why="the statement allows 3 binomial standard errors"),
@@ -751,7 +779,7 @@ CLAIMS: list[Claim] = [
         "Eqs. (C.10)-(C.17), (2.5.11)",
         "the simulated probability of a noise-only track over K segments is at least $F G^{K-1}$",
         _false_tracks_above_bound,
-        f"Seeded false-track simulation (exact existence search, {mc.TRACK_TRIALS} trials, K = 1-3, p_f "
+        f"Seeded false-track simulation (exact existence search, {mc.TRACK_TRIALS} trials, $K$ = 1-3, $p_f$ "
         "0.02-0.3, reduced windows): every rate at or above the bound within 3 binomial standard errors.",
         PAGE_MC,
         tolerance=monte_carlo(
@@ -772,8 +800,10 @@ CLAIMS: list[Claim] = [
         erratum="ATC10-E-jam-floor-Kt",
         oracle=lambda: float(math.floor(10 * B9_T) + 1),
         oracle_tolerance=EXACT,
-        note="The printed exponent Kt + 1 = 3.5 is not a count; enumeration of the 2^10 list patterns gives "
-        "floor(Kt) + 1 = 3. The real exponent gives a valid but looser bound; the book keeps it, as the "
+        note="The printed exponent $Kt + 1 = 3.5$ is not a count; enumeration of the $2^{10}$ list patterns "
+        "gives "
+        "$\\lfloor Kt \\rfloor + 1 = 3$. The real exponent gives a valid but looser bound; the book keeps "
+        "it, as the "
         "paper does.",
         discussed_in=PAGE,
     ),
@@ -781,7 +811,7 @@ CLAIMS: list[Claim] = [
         id="ATC10-eqB.6-correlated-samples",
         paper="ATC10",
         locator="Eqs. (B.6), (C.14); Sec. 2.3",
-        quantity="probability that a 24-sample window at p_f = 0.2 holds no declaration, over the "
+        quantity="probability that a 24-sample window at $p_f = 0.2$ holds no declaration, over the "
         "independent-sample value $(1 - p_f)^{24}$ used by (B.6) and (C.14)",
         published=1.0,
         unit="",
@@ -795,7 +825,8 @@ CLAIMS: list[Claim] = [
         expected_status="inconsistent",
         note="Neighbouring samples correlated, farther ones not (assumed 0.3-0.5; Genz integration of "
         "the 24-dimensional "
-        "Gaussian orthant). At the K >= 10 thresholds (p_f 0.11-0.27) correlated samples leave a window "
+        "Gaussian orthant). At the $K \\ge 10$ thresholds ($p_f$ 0.11-0.27) correlated samples leave a "
+        "window "
         "empty several times more often than the product assumes (Slepian's inequality), so F and G, and "
         "the bounds built on them, are approximations (erratum ATC10-E-jam-sample-independence). The "
         "seeded Monte Carlo on the Monte Carlo page shows the same at correlation 1/2.",
@@ -805,7 +836,7 @@ CLAIMS: list[Claim] = [
         id="ATC10-eqC.2-printed",
         paper="ATC10",
         locator="Eqs. (C.2)-(C.5)",
-        quantity="|T_1(1) - T_2(1)| in units of the printed bound v alpha / c",
+        quantity="$|T_1(1) - T_2(1)|$ in units of the printed bound $v \\alpha / c$",
         published=1.0,
         unit="",
         relation="<=",
@@ -815,26 +846,29 @@ CLAIMS: list[Claim] = [
         erratum="ATC10-E-jam-C2-track-window",
         oracle=_oracle_track_time_ratio,
         oracle_tolerance=Tolerance(reason="the range change adds at most one unit to c / v", abs=1.0),
-        note="An aircraft at v = 600 mph flying toward a synchronous satellite: successive receptions are "
-        "alpha plus the range change apart, about c/v = 1.1e6 times the printed bound. Only the range "
-        "change is bounded by v alpha / c; the alphas cancel in (C.2)'s difference of differences.",
+        note="An aircraft at $v = 600$ mph flying toward a synchronous satellite: successive receptions are "
+        "$\\alpha$ plus the range change apart, about $c/v$ = 1.1e6 times the printed bound. Only the range "
+        "change is bounded by $v \\alpha / c$; the $\\alpha$'s cancel in (C.2)'s difference of differences.",
         discussed_in=PAGE,
     ),
     _statement(
         "ATC10-eqC.5-track-window",
         "Eqs. (C.5)-(C.6), Definition C.1",
-        "between successive pulses a time difference moves by at most 2 v alpha / c, and Definition C.1's "
-        "(2/3) v alpha / c is more stringent",
+        "between successive pulses a time difference moves by at most $2 v \\alpha / c$, and Definition "
+        "C.1's "
+        "$(2/3) v \\alpha / c$ is more stringent",
         _track_window_holds,
-        "20000 seeded straight flights of at most v alpha with random directions and static satellites at "
-        "42000 km: the change of T(1) - T(2) never exceeds 2 v alpha / c (the transmission periods cancel).",
+        "20000 seeded straight flights of at most $v \\alpha$ with random directions and static satellites "
+        "at "
+        "42000 km: the change of $T(1) - T(2)$ never exceeds $2 v \\alpha / c$ (the transmission periods "
+        "cancel).",
         PAGE,
     ),
     _statement(
         "ATC10-eqD-derivation",
         "Eqs. (D.7)-(D.16)",
-        "the Gaussian densities (D.7)-(D.8) give the threshold, p_f (D.9), p_d (D.13) and, with (D.15), "
-        "p_f (D.16)",
+        "the Gaussian densities (D.7)-(D.8) give the threshold, $p_f$ (D.9), $p_d$ (D.13) and, with (D.15), "
+        "$p_f$ (D.16)",
         _appendix_d_algebra,
         "sympy solves the log-likelihood-ratio threshold exactly; (D.9), (D.13) and (D.16) are compared "
         "with the Gaussian tails at 20 random (E, J/B, lambda) points to 1e-12.",
@@ -845,10 +879,11 @@ CLAIMS: list[Claim] = [
         "Eqs. (D.17), (2.7.1)",
         "$p_f = \\frac{1}{2} - \\frac{1}{2} \\operatorname{erf}(\\sqrt{P_0 B \\tau / (2 J)} - \\phi)$, with "
         "$p_f \\to 0$ as $J \\to 0$ and $p_f \\to p_d$ as "
-        "J -> infinity",
+        "$J \\to \\infty$",
         _d17_matches_direct,
-        "navcore's p_f against the threshold set from p_d and the noise-only Gaussian tail (scipy), with "
-        "E = 10 mJ and B = 10 MHz, at four p_d and five J, to 1e-9 relative; and the two limits.",
+        "navcore's $p_f$ against the threshold set from $p_d$ and the noise-only Gaussian tail of a standard "
+        "library, with "
+        "E = 10 mJ and B = 10 MHz, at four $p_d$ and five J, to 1e-9 relative; and the two limits.",
         PAGE,
     ),
 ]

@@ -806,13 +806,14 @@ ERRATA = [
         paper="ATC10",
         kind="overstatement",
         locator="Sec. 4.5.4 ('the second term in (4.5.35) always significantly dominates the first term')",
-        printed="the second term always significantly dominates, so tracking reduces Var to about psi Var0",
+        printed="the second term always significantly dominates, so tracking reduces Var to about "
+        "$\\psi\\, \\mathrm{Var}_0$",
         finding="after tracking, $\\gamma S = (\\psi/\\beta) S$ is smaller than "
         "$\\operatorname{tr}\\{(F'F)^{-1}\\}$ in Example I at "
         "$\\sigma_0$ = 5 ns (2.38 against 7.84), so $\\mathrm{Var}[\\|\\xi_{pN}\\|] / (\\psi "
         "\\mathrm{Var}[\\|\\xi_{p0}\\|])$ is 3.2, not about 1; "
         "the dominance holds at n = 0 ($S/\\beta$ = 23.9 against 7.84), not 'always'",
-        evidence="Table 4.2 and 4.3 values with psi from the real root of the cubic (independent of the "
+        evidence="Table 4.2 and 4.3 values with $\\psi$ from the real root of the cubic (independent of the "
         "closed form)",
         claims=("ATC10-sec4.5.4-second-term-dominates", "ATC10-sec4.5.4-psi-approx-exI-s5"),
         discussed_in=PAGE_TRACKER,
@@ -843,44 +844,45 @@ CLAIMS = [
     _s(
         "ATC10-sec4.1-rank-condition",
         "Sec. 4.1",
-        "k finite iff rank(HF) = 3; K >= 4 necessary",
+        "$k$ finite iff $\\operatorname{rank}(HF) = 3$; $K \\ge 4$ necessary",
         rank_condition,
-        "Differencing H on the Table 4.1 geometry: rank(HF) = 3 with all satellites, 2 with satellites 1-3.",
+        "Differencing $H$ on the Table 4.1 geometry: $\\operatorname{rank}(HF) = 3$ with all satellites, 2 "
+        "with satellites 1-3.",
         PAGE_GEOMETRY,
     ),
     _s(
         "ATC10-sec4.1-tracking-reduces",
         "Sec. 4.1",
-        "tracking tau_n reduces the position error variance",
+        "tracking $\\tau_n$ reduces the position error variance",
         tracking_reduces,
-        "sd_N < sd_0 in all six Table 4.3 cases, from the printed Table 4.2.",
+        "$sd_N < sd_0$ in all six Table 4.3 cases, from the printed Table 4.2.",
         PAGE_EXAMPLES,
     ),
     Claim(
         id="ATC10-sec4.3-std-n-sigma0",
         paper="ATC10",
         locator="Sec. 4.3, after (4.3.1)",
-        quantity="std(tau_n - tau_0) / (n sigma0) at n = 10",
+        quantity="$\\mathrm{std}(\\tau_n - \\tau_0) / (n \\sigma_0)$ at $n = 10$",
         published=1.0,
         unit="",
         compute=lambda: std_ratio_at(10),
         tolerance=prose("approximately"),
         expected_status="reproduced",
-        note="sqrt(n + n^2)/n from (4.3.1c); 1.049 at n = 10 s, tending to 1.",
+        note="$\\sqrt{n + n^2}/n$ from (4.3.1c); 1.049 at $n$ = 10 s, tending to 1.",
         discussed_in=PAGE_TRACKER,
     ),
     Claim(
         id="ATC10-sec4.3-fractional-error",
         paper="ATC10",
         locator="Sec. 4.3, after (4.3.1)",
-        quantity="rms fractional error of tau_n over sigma0/tau_bar (n = 1000)",
+        quantity="rms fractional error of $\\tau_n$ over $\\sigma_0/\\bar\\tau$ ($n = 1000$)",
         published=1.0,
         unit="",
         compute=fractional_error_ratio,
         tolerance=prose("about"),
         expected_status="reproduced",
-        note="std(tau_n - tau_0 - n tau_bar)/(n tau_bar) = (sigma0/tau_bar) sqrt(1 + 1/n): 5.0e-8 for "
-        "sigma0 = 50 ns, tau_bar = 1 s.",
+        note="$\\mathrm{std}(\\tau_n - \\tau_0 - n \\bar\\tau)/(n \\bar\\tau) = (\\sigma_0/\\bar\\tau) "
+        "\\sqrt{1 + 1/n}$: 5.0e-8 for $\\sigma_0$ = 50 ns, $\\bar\\tau$ = 1 s.",
         discussed_in=PAGE_TRACKER,
     ),
     _s(
@@ -896,15 +898,16 @@ CLAIMS = [
         "Sec. 4.5.1",
         "$\\sigma^2_{\\xi_{\\tau 0}}$ finite iff the dilution is finite",
         finite_iff,
-        "beta > 0 and rank(HF) = 3 with all satellites; beta = 0 and rank 2 with three.",
+        "$\\beta > 0$ and $\\operatorname{rank}(HF) = 3$ with all satellites; $\\beta = 0$ and rank 2 with "
+        "three.",
         PAGE_GEOMETRY,
     ),
     _s(
         "ATC10-eq4.5.1-least-squares",
         "Eqs. (4.5.1)-(4.5.7), (4.5.36)",
-        "block inverse, gamma0 = 1/beta, the least-squares estimates and covariances",
+        "block inverse, $\\gamma_0 = 1/\\beta$, the least-squares estimates and covariances",
         least_squares_forms,
-        "Checked against numpy's inverse and lstsq on the Example I geometry.",
+        "Checked against a general matrix inverse and least-squares solver on the Example I geometry.",
         PAGE_TRACKER,
     ),
     _s(
@@ -912,14 +915,14 @@ CLAIMS = [
         "Sec. 4.5.2, (4.5.9); Eqs. (4.3.1a-c)",
         "the sequence of (4.5.9) has the statistics (4.3.1)",
         state_model_matches,
-        "Exact covariance propagation of (4.5.9) for n <= 30 equals sigma0^2 [min(m, n) + m n].",
+        "Exact covariance propagation of (4.5.9) for $n \\le 30$ equals $\\sigma_0^2 [\\min(m, n) + m n]$.",
         PAGE_TRACKER,
     ),
     Claim(
         id="ATC10-sec4.5.2-tau-sum-printed",
         paper="ATC10",
         locator="Sec. 4.5.2, after (4.5.9)",
-        quantity="Var of the printed tau_n = sum w_i + alpha_0 over (4.3.1c), n = 10",
+        quantity="Var of the printed $\\tau_n = \\sum w_i + \\alpha_0$ over (4.3.1c), $n = 10$",
         published=1.0,
         unit="",
         compute=printed_tau_sum_variance_ratio,
@@ -928,17 +931,18 @@ CLAIMS = [
         erratum="ATC10-E4.9-typos",
         oracle=printed_tau_sum_oracle,
         oracle_tolerance=Tolerance(reason="Monte Carlo of 2e5 draws", rel=0.02, policy="monte-carlo"),
-        note="(4.5.9) gives tau_n = n alpha_0 + sum w_i; the printed sum has variance (n + 1) sigma0^2: "
-        "0.10 of (4.3.1c) at n = 10.",
+        note="(4.5.9) gives $\\tau_n = n \\alpha_0 + \\sum w_i$; the printed sum has variance "
+        "$(n + 1) \\sigma_0^2$: 0.10 of (4.3.1c) at $n = 10$.",
         discussed_in=PAGE_TRACKER,
     ),
     _s(
         "ATC10-sec4.5.2-kalman-poor",
         "Sec. 4.5.2",
-        "a Kalman filter on (4.5.9) tracks tau_n poorly when rho < 1",
+        "a Kalman filter on (4.5.9) tracks $\\tau_n$ poorly when $\\rho < 1$",
         kalman_poor,
-        "300 runs, 600 epochs of a clock with sigma1 = sigma2 = 5 ns and rho < 1 (assumed), Example II "
-        "beta: rms error over the last 100 epochs of the KF exceeds the constrained tracker's.",
+        "300 runs, 600 epochs of a clock with $\\sigma_1 = \\sigma_2$ = 5 ns and $\\rho < 1$ (assumed), "
+        "Example II $\\beta$: rms error over the last 100 epochs of the KF exceeds the constrained "
+        "tracker's.",
         PAGE_TRACKER,
         status="consistent",
     ),
@@ -947,7 +951,8 @@ CLAIMS = [
         "Sec. 4.5.2, before (4.5.26)",
         "the cubic has only one real root",
         one_real_root,
-        "Discriminant -(4q^3 + 27q^2) < 0 and numpy roots: one real root in (0, 1), six cases.",
+        "Discriminant $-(4q^3 + 27q^2) < 0$ and a polynomial root finder: one real root in (0, 1), six "
+        "cases.",
         PAGE_TRACKER,
     ),
     _s(
@@ -955,17 +960,17 @@ CLAIMS = [
         "Sec. 4.5.2, after (4.5.26)",
         "the constant gamma from n = 1 gives worse early estimates",
         constant_gain_worse,
-        "Exact clock-error variances for both gain sequences (state xi, A): the fixed gain is worse at n = 1 "
-        "in all six cases (x1.6 to x1.8 at sigma0 = 5 ns) and on average over n = 1-5; at sigma0 = 500 ns "
-        "the two differ by less than 1 % (0.2 % better for the fixed gain in Example II; the greedy gamma_n "
-        "is not optimal beyond one step). The optimal one equals "
-        "sigma^2 gamma_n.",
+        "Exact clock-error variances for both gain sequences (state $\\xi$, $A$): the fixed gain is worse at "
+        "$n = 1$ in all six cases ($\\times$1.6 to $\\times$1.8 at $\\sigma_0$ = 5 ns) and on average over "
+        "$n$ = 1-5; at $\\sigma_0$ = 500 ns the two differ by less than 1 % (0.2 % better for the fixed gain "
+        "in Example II; the greedy $\\gamma_n$ is not optimal beyond one step). The optimal one equals "
+        "$\\sigma^2 \\gamma_n$.",
         PAGE_TRACKER,
     ),
     _s(
         "ATC10-sec4.5.2-beta-rotation",
         "Sec. 4.5.2, (4.5.25)",
-        "beta, tr and S unchanged by a rotation",
+        "$\\beta$, $\\operatorname{tr}$ and $S$ unchanged by a rotation",
         beta_rotation_invariant,
         "A random rotation of both examples' unit vectors.",
         PAGE_GEOMETRY,
@@ -973,9 +978,9 @@ CLAIMS = [
     _s(
         "ATC10-appH-rank-r-prior-mean",
         "Appendix H after (H.11); Sec. 4.5.3",
-        "with three satellites the estimate of tau_n is its prior mean",
+        "with three satellites the estimate of $\\tau_n$ is its prior mean",
         three_satellites_prior_mean,
-        "I - G(G'G)^-1 G' = 0 for the square F3 of both examples: M = 0.",
+        "$I - G(G'G)^{-1} G' = 0$ for the square $F_3$ of both examples: $M = 0$.",
         PAGE_TRACKER,
     ),
     Claim(
@@ -994,9 +999,9 @@ CLAIMS = [
     _s(
         "ATC10-sec4.5.4-psi-factor",
         "Sec. 4.5.4",
-        "psi is the factor by which tracking reduces gamma",
+        "$\\psi$ is the factor by which tracking reduces $\\gamma$",
         psi_is_reduction_factor,
-        "gamma_N beta from 3000 steps of the recursion equals psi(alpha) to 1e-6.",
+        "$\\gamma_N \\beta$ from 3000 steps of the recursion equals $\\psi(\\alpha)$ to 1e-6.",
         PAGE_TRACKER,
     ),
     _s(
@@ -1004,7 +1009,8 @@ CLAIMS = [
         "Sec. 4.5.4",
         "the second term of (4.5.35) always significantly dominates the first",
         second_term_dominates,
-        "At the tracking limit gamma S = (psi/beta) S: Example I at 5 ns gives 2.38 against tr = 7.84.",
+        "At the tracking limit $\\gamma S = (\\psi/\\beta) S$: Example I at 5 ns gives 2.38 against "
+        "$\\operatorname{tr} = 7.84$.",
         PAGE_TRACKER,
         status="discrepant",
         erratum="ATC10-E4.11-second-term",
@@ -1015,7 +1021,8 @@ CLAIMS = [
         id="ATC10-sec4.5.4-psi-approx-exI-s5",
         paper="ATC10",
         locator="Sec. 4.5.4",
-        quantity="Var[||xi_pN||] / (psi Var[||xi_p0||]), Example I, sigma0 = 5 ns",
+        quantity="$\\mathrm{Var}[\\|\\xi_{pN}\\|] / (\\psi\\, \\mathrm{Var}[\\|\\xi_{p0}\\|])$, Example I, "
+        "$\\sigma_0$ = 5 ns",
         published=1.0,
         unit="",
         compute=lambda: psi_approx_ratio("I", "sigma0_low_ns"),
@@ -1024,20 +1031,21 @@ CLAIMS = [
         erratum="ATC10-E4.11-second-term",
         oracle=lambda: psi_approx_ratio_oracle("I", 5.0),
         oracle_tolerance=Tolerance(reason="two root finders", rel=1e-6, policy="exact"),
-        note="3.24: sqrt(psi) x 282 ft = 89 ft against the 160 ft of Table 4.3.",
+        note="3.24: $\\sqrt{\\psi} \\times$ 282 ft = 89 ft against the 160 ft of Table 4.3.",
         discussed_in=PAGE_TRACKER,
     ),
     Claim(
         id="ATC10-sec4.5.4-psi-approx-exII-s50",
         paper="ATC10",
         locator="Sec. 4.5.4",
-        quantity="Var[||xi_pN||] / (psi Var[||xi_p0||]), Example II, sigma0 = 50 ns",
+        quantity="$\\mathrm{Var}[\\|\\xi_{pN}\\|] / (\\psi\\, \\mathrm{Var}[\\|\\xi_{p0}\\|])$, Example II, "
+        "$\\sigma_0$ = 50 ns",
         published=1.0,
         unit="",
         compute=lambda: psi_approx_ratio("II", "sigma0_mid_ns"),
         tolerance=prose("approximately"),
         expected_status="reproduced",
-        note="1.05: the approximation holds where S/beta dominates.",
+        note="1.05: the approximation holds where $S/\\beta$ dominates.",
         discussed_in=PAGE_TRACKER,
     ),
     _s(
@@ -1065,7 +1073,7 @@ CLAIMS = [
     _s(
         "ATC10-sec4.6-s-increases-invariant",
         "Sec. 4.5.4, Sec. 4.6",
-        "the invariant 1'(F3 F3')^-1 1 exceeds 1'F(F'F)^-2F'1 (all satellites)",
+        "the invariant $1'(F_3 F_3')^{-1} 1$ exceeds $1'F(F'F)^{-2}F'1$ (all satellites)",
         s_increases_invariant,
         "Physical geometry: 1.40 > 1.33 (I), 1.19 > 1.18 (II): an increase, though slight (E4-1).",
         PAGE_GEOMETRY,
@@ -1073,9 +1081,9 @@ CLAIMS = [
     _s(
         "ATC10-sec4.6-second-term-dominates-p0",
         "Sec. 4.6",
-        "beta small: S/beta dominates Var[||xi_p0||]",
+        "$\\beta$ small: $S/\\beta$ dominates $\\mathrm{Var}[\\|\\xi_{p0}\\|]$",
         second_term_dominates_p0,
-        "Share of S/beta in k^2: 0.75 (I), 0.988 (II), printed Table 4.2.",
+        "Share of $S/\\beta$ in $k^2$: 0.75 (I), 0.988 (II), printed Table 4.2.",
         PAGE_GEOMETRY,
     ),
     _s(
@@ -1111,9 +1119,9 @@ CLAIMS = [
     _s(
         "ATC10-sec4.6-marginal-gains",
         "Sec. 4.6",
-        "marginal gains from tracking once sigma0 exceeds sigma",
+        "marginal gains from tracking once $\\sigma_0$ exceeds $\\sigma$",
         marginal_beyond_sigma,
-        "At sigma0 = 10 sigma the mean-square ratio sd_N^2/sd_0^2 is 0.94 (I) and 0.64 (II), "
+        "At $\\sigma_0 = 10 \\sigma$ the mean-square ratio $sd_N^2/sd_0^2$ is 0.94 (I) and 0.64 (II), "
         "above the assumed 'significant' fraction.",
         PAGE_EXAMPLES,
         status="consistent",
@@ -1121,19 +1129,19 @@ CLAIMS = [
     _s(
         "ATC10-sec4.7-gains-only-below-sigma",
         "Sec. 4.7",
-        "gains significant only when sigma0 <= sigma",
+        "gains significant only when $\\sigma_0 \\le \\sigma$",
         gains_only_below_sigma,
-        "Every significant reduction (ratio below the assumed fraction) is at sigma0 <= 50 ns.",
+        "Every significant reduction (ratio below the assumed fraction) is at $\\sigma_0 \\le$ 50 ns.",
         PAGE_EXAMPLES,
         status="consistent",
     ),
     _s(
         "ATC10-sec4.7-three-sat-sigma",
         "Sec. 4.7",
-        "several tens of seconds on three satellites only at sigma0 = 0.1 sigma",
+        "several tens of seconds on three satellites only at $\\sigma_0 = 0.1 \\sigma$",
         three_sat_only_at_tenth,
-        "With the fitted threshold of rule 4: under 20 s at sigma0 = sigma, 30-59 s at 0.1 sigma "
-        "(printed S3).",
+        "With the fitted threshold of rule 4: under 20 s at $\\sigma_0 = \\sigma$, 30-59 s at $0.1 \\sigma$ "
+        "(printed $S_3$).",
         PAGE_EXAMPLES,
         status="consistent",
     ),
@@ -1151,16 +1159,16 @@ CLAIMS = [
         "a 1/f crossover at n = 100 would make the gains larger",
         crossover_100_helps,
         "LMMSE extrapolation error 30 s after 60 epochs (Example I, 5 ns): smaller with "
-        "sigma2 = sigma1/10 than with sigma2 = sigma1.",
+        "$\\sigma_2 = \\sigma_1/10$ than with $\\sigma_2 = \\sigma_1$.",
         PAGE_EXAMPLES,
         status="consistent",
     ),
     _s(
         "ATC10-sec4.7-markov-order",
         "Sec. 4.7",
-        "{tau_n} is not Markov of finite order when 1/2 < rho < 1",
+        "$\\{\\tau_n\\}$ is not Markov of finite order when $1/2 < \\rho < 1$",
         not_markov,
-        "Partial autocorrelations of the rho-increments nonzero at lags 1..20.",
+        "Partial autocorrelations of the $\\rho$-increments nonzero at lags 1..20.",
         PAGE_TRACKER,
         status="consistent",
     ),
@@ -1168,13 +1176,13 @@ CLAIMS = [
         id="ATC10-fig4.1-large-alpha",
         paper="ATC10",
         locator="Sec. 4.5.4 (Fig. 4.1), alpha >= 1",
-        quantity="largest relative error of psi ~ 1 - (4/27)/alpha for alpha >= 1",
+        quantity="largest relative error of $\\psi \\approx 1 - (4/27)/\\alpha$ for $\\alpha \\ge 1$",
         published=0.0,
         unit="",
         compute=approx_large_alpha_error,
         tolerance=Tolerance(reason="'approximately' (+-10 %) of psi", abs=0.10, policy="prose"),
         expected_status="reproduced",
-        note="4.7 % at alpha = 1, falling as 1/alpha^2.",
+        note="4.7 % at $\\alpha = 1$, falling as $1/\\alpha^2$.",
         discussed_in=PAGE_TRACKER,
     ),
     Claim(
@@ -1188,14 +1196,14 @@ CLAIMS = [
         compute=approx_small_alpha_error,
         tolerance=Tolerance(reason="'approximately' (+-10 %) of psi", abs=0.10, policy="prose"),
         expected_status="reproduced",
-        note="5.3 % at alpha = 0.3.",
+        note="5.3 % at $\\alpha = 0.3$.",
         discussed_in=PAGE_TRACKER,
     ),
     Claim(
         id="ATC10-eq4.5.31-printed",
         paper="ATC10",
         locator="Eq. (4.5.31)",
-        quantity="sd_N of Example I, sigma0 = 5 ns, with the printed (4.5.31)",
+        quantity="$sd_N$ of Example I, $\\sigma_0$ = 5 ns, with the printed (4.5.31)",
         published=160.0,
         unit="ft",
         compute=lambda: printed_4531_sdn("I", "sigma0_low_ns"),
@@ -1204,14 +1212,16 @@ CLAIMS = [
         erratum="ATC10-E4.4-recursion-formulas",
         oracle=lambda: printed_4531_oracle("I", 5.0),
         oracle_tolerance=Tolerance(reason="iteration against the cubic's root", rel=1e-4, policy="exact"),
-        note="sigma0^2 where sigma^2 belongs makes alpha = (8/27) beta: sd_N = 206 ft, not the printed 160.",
+        note="$\\sigma_0^2$ where $\\sigma^2$ belongs makes $\\alpha = (8/27) \\beta$: $sd_N$ = 206 ft, not "
+        "the "
+        "printed 160.",
         discussed_in=PAGE_TRACKER,
     ),
     Claim(
         id="ATC10-eq4.5.35-printed",
         paper="ATC10",
         locator="Eq. (4.5.35)",
-        quantity="sd_N of Example I, sigma0 = 5 ns, with the printed (4.5.35)",
+        quantity="$sd_N$ of Example I, $\\sigma_0$ = 5 ns, with the printed (4.5.35)",
         published=160.0,
         unit="ft",
         compute=lambda: printed_4535_sdn("I", "sigma0_low_ns"),
@@ -1220,14 +1230,14 @@ CLAIMS = [
         erratum="ATC10-E4.4-recursion-formulas",
         oracle=lambda: printed_4535_oracle("I", 5.0),
         oracle_tolerance=Tolerance(reason="closed form against the cubic's root", rel=1e-4, policy="exact"),
-        note="gamma_n^2 and F'(F'F)^-2 F read as its trace give 292 ft, not 160 ft.",
+        note="$\\gamma_n^2$ and $F'(F'F)^{-2} F$ read as its trace give 292 ft, not 160 ft.",
         discussed_in=PAGE_TRACKER,
     ),
     Claim(
         id="ATC10-tab4.3-exI-sd0-norm-variance",
         paper="ATC10",
         locator="Table 4.3 col. (iii)",
-        quantity="sqrt(Var ||xi_p0||) read literally, Example I",
+        quantity="$\\sqrt{\\mathrm{Var}\\, \\|\\xi_{p0}\\|}$ read literally, Example I",
         published=282.0,
         unit="ft",
         compute=lambda: norm_sd_ft("I"),
@@ -1238,9 +1248,9 @@ CLAIMS = [
         oracle_tolerance=Tolerance(
             reason="two Monte Carlo estimates of 4e5 and 6e5 draws", rel=0.01, policy="monte-carlo"
         ),
-        note="The variance of the norm is far below E||xi||^2 (physical geometry: about 130 ft against "
+        note="The variance of the norm is far below $E\\|\\xi\\|^2$ (physical geometry: about 130 ft against "
         "261 ft); "
-        "the column is sqrt(E||xi||^2).",
+        "the column is $\\sqrt{E\\|\\xi\\|^2}$.",
         discussed_in=PAGE_EXAMPLES,
     ),
     _s(
@@ -1258,7 +1268,7 @@ CLAIMS = [
         "Eqs. (4.5.27)-(4.5.30)",
         "the 3-satellite extrapolation (invariant S3) predicts the tracker's MSE",
         extrapolation_matches_mc,
-        "Monte Carlo at m = 1 after the drop, sigma0 = 50 ns, both examples, within 6 %.",
+        "Monte Carlo at $m = 1$ after the drop, $\\sigma_0$ = 50 ns, both examples, within 6 %.",
         PAGE_TRACKER,
         status="consistent",
     ),
@@ -1267,8 +1277,8 @@ CLAIMS = [
         "Appendix G, after (G.1)",
         "first Newton iterate's error $O((k/f_0) \\lambda^2)$",
         newton_error_order,
-        "Log-slope of the error in lambda is 2 and the error is below (k/f0) lambda^2 "
-        "(lambda 1e-4 and 1e-5, i.e. the printed 1e-9 scaled up to be resolvable).",
+        "Log-slope of the error in $\\lambda$ is 2 and the error is below $(k/f_0) \\lambda^2$ "
+        "($\\lambda$ = 1e-4 and 1e-5, i.e. the printed 1e-9 scaled up to be resolvable).",
         PAGE_TRACKER,
     ),
     _s(
@@ -1295,7 +1305,7 @@ CLAIMS = [
         "the printed V0 is a positive constant",
         v0_printed_positive,
         "The printed integrand has lost its square; as printed the integral to 1e6 is about "
-        "-X^(rho - 1/2), so V0 would be negative and unbounded.",
+        "$-X^{\\rho - 1/2}$, so $V_0$ would be negative and unbounded.",
         PAGE_TRACKER,
         status="discrepant",
         erratum="ATC10-E4.7-fbm-normalisation",
@@ -1307,20 +1317,20 @@ CLAIMS = [
         "Appendix G, x3",
         "rho = 1/2 gives the integral of v",
         half_is_wiener,
-        "V0(1/2) = 1 from both forms: Var x3 = beta^2 t.",
+        "$V_0(1/2) = 1$ from both forms: $\\mathrm{Var}\\, x_3 = \\beta^2 t$.",
         PAGE_TRACKER,
     ),
     Claim(
         id="ATC10-appG-spectrum",
         paper="ATC10",
         locator="Appendix G, x3",
-        quantity="variance exponent implied by S(f) ~ |f|^(-2rho-1), over 2 rho",
+        quantity="variance exponent implied by $S(f) \\sim |f|^{-2\\rho-1}$, over $2 \\rho$",
         published=1.0,
         unit="",
         compute=spectrum_exponent,
         tolerance=Tolerance(reason="quadrature", abs=1e-3, policy="exact"),
         expected_status="consistent",
-        note="Var x(t) from the spectrum scales as t^(2 rho).",
+        note="$\\mathrm{Var}\\, x(t)$ from the spectrum scales as $t^{2 \\rho}$.",
         discussed_in=PAGE_TRACKER,
     ),
     Claim(
@@ -1333,7 +1343,7 @@ CLAIMS = [
         compute=offset_like_flicker,
         tolerance=Tolerance(reason="'quite similar': within 1 %", abs=0.01, policy="prose"),
         expected_status="reproduced",
-        note="0.9999: a frequency offset and rho ~ 1 flicker are hard to tell apart.",
+        note="0.9999: a frequency offset and $\\rho \\approx 1$ flicker are hard to tell apart.",
         discussed_in=PAGE_TRACKER,
     ),
     _s(
@@ -1341,7 +1351,7 @@ CLAIMS = [
         "Appendix H, (H.14)-(H.17), (H.20)-(H.21), (H.23)-(H.24)",
         "(H.16) = (H.21) = the estimator's error covariance",
         h16_equals_h21,
-        "Seeded random F, G, P_x, P_n (p = 2, q = 3, r = 7).",
+        "Seeded random $F$, $G$, $P_x$, $P_n$ ($p = 2$, $q = 3$, $r = 7$).",
         PAGE_TRACKER,
     ),
     _s(
@@ -1373,7 +1383,7 @@ CLAIMS = [
         "Appendix H, corollary (H.26)",
         "the printed scalar gain $\\sigma^2/(\\ldots)$ is the LMMSE gain",
         scalar_gain_printed_matches,
-        "The printed numerator sigma^2 differs from H of (H.20); sigma_x^2 is right.",
+        "The printed numerator $\\sigma^2$ differs from $H$ of (H.20); $\\sigma_x^2$ is right.",
         PAGE_TRACKER,
         status="discrepant",
         erratum="ATC10-E4.10-scalar-gain",
@@ -1391,9 +1401,9 @@ CLAIMS = [
     _s(
         "ATC10-appH-orthogonal-best",
         "Appendix H, last remark",
-        "with F'F and G'G fixed, F'G = 0 is best",
+        "with $F'F$ and $G'G$ fixed, $F'G = 0$ is best",
         orthogonal_best,
-        "Scalar x: P_xi_x with G orthogonal to F is below that with a tilted G of equal G'G.",
+        "Scalar $x$: $P_{\\xi_x}$ with $G$ orthogonal to $F$ is below that with a tilted $G$ of equal $G'G$.",
         PAGE_TRACKER,
     ),
 ]

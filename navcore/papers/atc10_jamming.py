@@ -617,7 +617,8 @@ ERRATA = [
         finding="The bounds (A.17), (B.11), the figures and the tables use the rule of (A.11)/(B.1) and of "
         "Sec. 2.4: decide H1 if more than tK lists are non-empty. (A.11) does not follow from (A.10); the "
         "two are the same family with t replaced by 1 - t.",
-        evidence="Exact binomial probabilities: at the K = 10, P_DL = 0.999 design point the literal (A.9) "
+        evidence="Exact binomial probabilities: at the $K = 10$, $P_{DL} = 0.999$ design point the literal "
+        "(A.9) "
         "rule with t = 0 detects with probability $q^K$ = 9.6e-4, far below the bound 0.999 that holds "
         "(with equality) for the (A.11) rule.",
         claims=("ATC10-eqA.9-rule-at-design",),
@@ -630,9 +631,10 @@ ERRATA = [
         locator="Table 1.1 and Sec. 1.1",
         printed="ERP 33/43/53/77 dBW for K = 1/10/100/1000 'with a processor designed to achieve a detection "
         "probability of at least 0.88'",
-        finding="Only the K = 1 entry uses P_DL = 0.88. The K = 10 and K = 1000 entries are Table 2.1's "
-        "P_DL = 0.999 values (43, 77); with 0.88 they would be 46 dBW and no finite power. The K = 100 "
-        "entry 53 matches neither Table 2.1 row (51, 56); P_DL = 0.98 happens to give 53.0.",
+        finding="Only the $K = 1$ entry uses $P_{DL}$ = 0.88. The $K = 10$ and $K = 1000$ entries are Table "
+        "2.1's "
+        "$P_{DL} = 0.999$ values (43, 77); with 0.88 they would be 46 dBW and no finite power. The $K = 100$ "
+        "entry 53 matches neither Table 2.1 row (51, 56); $P_{DL} = 0.98$ happens to give 53.0.",
         evidence="The t = 0 thresholds of the log-domain model, checked by an independent plain-probability "
         "grid search.",
         claims=("ATC10-tab1.1-K100-erp", "ATC10-tab1.1-caption-pdl"),
@@ -677,7 +679,8 @@ ERRATA = [
         locator="Eq. (A.15)",
         printed="$P_D \\ge 1 \\exp -K(\\ldots)$",
         finding="A minus sign is lost: $P_D \\ge 1 - \\exp(-K(\\ldots))$, as in (A.17) and (2.4.2).",
-        evidence="Read literally the right side at the K = 10, P_DL = 0.999 design point is 0.001, which is "
+        evidence="Read literally the right side at the $K = 10$, $P_{DL} = 0.999$ design point is 0.001, "
+        "which is "
         "the probability that all ten lists are empty (exact binomial), not a lower bound on detection.",
         claims=("ATC10-eqA.15-printed",),
         discussed_in=PAGE,
@@ -708,8 +711,9 @@ ERRATA = [
         "valid but looser bound. Likewise $(8B/3)\\, v \\alpha/c$ = 23.86 is not an integer number of "
         "samples; "
         "the book follows the paper and uses both as real numbers.",
-        evidence="Rounding n_v down to 23 moves the K = 1000, P_DL = 0.999 threshold from 75.7 to 81.7 dBW; "
-        "the K <= 100 rows move by less than 0.4 dB.",
+        evidence="Rounding $n_v$ down to 23 moves the $K = 1000$, $P_{DL} = 0.999$ threshold from 75.7 to "
+        "81.7 dBW; "
+        "the $K \\le 100$ rows move by less than 0.4 dB.",
         claims=("ATC10-eqB.9-lists-needed",),
         discussed_in=PAGE_K,
     ),
@@ -723,7 +727,7 @@ ERRATA = [
         "the "
         "book "
         "uses 99 % of it.",
-        evidence="F(p_d) = 1 to double precision with the paper's sample counts, so $N_{FL} \\to 0.9 N_T$ "
+        evidence="$F(p_d) = 1$ to double precision with the paper's sample counts, so $N_{FL} \\to 0.9 N_T$ "
         "from "
         "below.",
         no_claim_reason="the level is a supremum approached from below: the gap 0.9 N_T - N_FL is of order "
@@ -750,14 +754,16 @@ ERRATA = [
         paper="ATC10",
         kind="units",
         locator="Sec. 2.6 and App. D (before (D.17))",
-        printed="Sec. 2.6: 'The average power of s_i(t) during transmission is $P_0 = E/\\tau$'; App. D: "
+        printed="Sec. 2.6: 'The average power of $s_i(t)$ during transmission is $P_0 = E/\\tau$'; App. D: "
         "'$E = P_o \\tau$, where $P_o$ is peak signature power'",
         finding="The two names agree only for a constant-envelope signature; for any other the peak power "
-        "exceeds E/tau. Read P0 as Sec. 2.6 defines it, the average power during the pulse, E/tau. No "
-        "number changes: every result depends on P0 and tau only through E = P0 tau (10 mJ).",
-        evidence="E is the integral of s_i(t)^2 over the pulse, so E = (average power) x tau by definition, "
-        "while (peak power) x tau >= E with equality only for a constant envelope. (D.17) and every bound "
-        "contain P0 only in the product P0 B tau = E B.",
+        "exceeds $E/\\tau$. Read $P_0$ as Sec. 2.6 defines it, the average power during the pulse, "
+        "$E/\\tau$. "
+        "No number changes: every result depends on $P_0$ and $\\tau$ only through $E = P_0 \\tau$ (10 mJ).",
+        evidence="$E$ is the integral of $s_i(t)^2$ over the pulse, so $E$ = (average power) $\\times "
+        "\\tau$ by "
+        "definition, while (peak power) $\\times \\tau \\ge E$ with equality only for a constant envelope. "
+        "(D.17) and every bound contain $P_0$ only in the product $P_0 B \\tau = E B$.",
         claims=("ATC10-sec2.7-pulse-energy",),
         discussed_in=PAGE,
     ),
@@ -766,22 +772,28 @@ ERRATA = [
         paper="ATC10",
         kind="unstated-assumption",
         locator="Eqs. (B.6), (C.14) and Sec. 2.3",
-        printed="Prob(Phi_1 | H_0) = (1 - (1 - p_f)^(2B alpha)) (1 - (1 - p_f)^(4B beta))^3, with the "
+        printed="$\\mathrm{Prob}(\\Phi_1 | H_0) = (1 - (1 - p_f)^{2B \\alpha}) (1 - (1 - p_f)^{4B "
+        "\\beta})^3$, "
+        "with the "
         "filter output 'sampled at twice the Nyquist rate'",
         finding="The product treats the 2B samples per second of one filter as independent. At twice the "
         "Nyquist rate neighbouring samples of the matched-filter noise are correlated, and the segment edges "
         "are ignored, so the '=' of (B.6) and the window factor of (C.14) are approximations. F, G and the "
-        "bounds N_FL and N_ADL built from them are therefore approximate lower bounds, not guaranteed ones, "
+        "bounds $N_{FL}$ and $N_{ADL}$ built from them are therefore approximate lower bounds, not "
+        "guaranteed ones, "
         "and so is the paper's upper bound on the required jammer power.",
         evidence="Positively correlated Gaussian samples cross a threshold somewhere in a window less often "
         "than independent ones (Slepian's inequality), so the independent-sample factor overstates the "
         "window probability. A seeded Monte Carlo of 24-sample windows with correlation 1/2 between "
         "neighbours (a rectangular-chip code sampled twice per chip) shows the window left empty markedly "
-        "more often than (1 - p_f)^n at the K >= 10 threshold values of p_f. The list-level Monte Carlo of "
+        "more often than $(1 - p_f)^n$ at the $K \\ge 10$ threshold values of $p_f$. The list-level Monte "
+        "Carlo "
+        "of "
         "the same page draws independent samples by construction and so cannot test this assumption. As a "
         "sensitivity, counting half as many independent samples (B instead of 2B per second) moves the "
-        "K = 100 thresholds from 55.3 to 74.8 dBW (P_DL = 0.88) and from 51.2 to 58.1 dBW (0.999); K = 1000, "
-        "P_DL = 0.999 then has no finite threshold (the library's tests check these values).",
+        "$K = 100$ thresholds from 55.3 to 74.8 dBW ($P_{DL} = 0.88$) and from 51.2 to 58.1 dBW (0.999); $K "
+        "= 1000$, "
+        "$P_{DL} = 0.999$ then has no finite threshold (the library's tests check these values).",
         claims=("ATC10-eqB.6-correlated-samples",),
         discussed_in=PAGE,
     ),
@@ -792,13 +804,16 @@ ERRATA = [
         locator="Eqs. (C.2)-(C.5)",
         printed="$|T_1(1) - T_2(1)| \\le v \\alpha / c$ seconds (and likewise for satellite 2)",
         finding="$T_1(1) - T_2(1)$ is the change in satellite 1's reception time between two successive "
-        "pulses: one repetition period alpha plus the change in range. Only the range change is bounded by "
+        "pulses: one repetition period $\\alpha$ plus the change in range. Only the range change is bounded "
+        "by "
         "$v \\alpha / c$. The periods cancel in the difference of differences of (C.2), so (C.5) is right "
         "when "
         "the triangle inequality is applied to the range-change terms alone. The bound also ignores the "
         "satellites' own motion: only the aircraft moves the ranges.",
-        evidence="With alpha = 1 s and v = 600 mph, v alpha / c = 0.895 us, while the printed left "
-        "side is about alpha itself; (T_1(1) - T_2(1)) - (T_1(2) - T_2(2)) contains no alpha. Sec. 4 places "
+        evidence="With $\\alpha = 1$ s and $v = 600$ mph, $v \\alpha / c$ = 0.895 µs, while the printed left "
+        "side is about $\\alpha$ itself; $(T_1(1) - T_2(1)) - (T_1(2) - T_2(2))$ contains no $\\alpha$. "
+        "Sec. 4 "
+        "places "
         "the satellites in synchronous orbits, whose slow drift makes the omission of satellite motion "
         "small, but the appendix does not say so.",
         claims=("ATC10-eqC.2-printed",),
@@ -812,7 +827,8 @@ ERRATA = [
         printed="'From (B.8) and the statistical independence of rho(i,j), we obtain immediately' (B.10)",
         finding="(B.10) follows from the event inclusion (B.9) and independence; read 'From (B.9)'. (B.8) "
         "is the K = 1 bound, which enters only in the next step, (B.11).",
-        evidence="(B.10) bounds P_F by the probability of the intersection of Kt + 1 events rho(i,j) = 1 "
+        evidence="(B.10) bounds $P_F$ by the probability of the intersection of $Kt + 1$ events $\\rho(i,j) "
+        "= 1$ "
         "named in (B.9), which factorises by independence; the text then applies (B.5) and (B.6), the "
         "ingredients of (B.8), to reach (B.11).",
         no_claim_reason="a wrong cross-reference in the prose; (B.10) itself holds (claim "
@@ -828,9 +844,10 @@ ERRATA = [
         finding="The K = 1 bound is $P_D \\ge p_d^4$, as printed in (2.4.1) and (A.10a). The appendix "
         "derives "
         "the non-strict bound, and $p_d^4$ is approached as $p_f \\to 0$.",
-        evidence="(2.4.1) and (A.10a) print >=. At K = 1 the list is non-empty with probability p_d^4 from "
+        evidence="(2.4.1) and (A.10a) print $\\ge$. At $K = 1$ the list is non-empty with probability "
+        "$p_d^4$ from "
         "the true arrival alone, plus what noise declarations add, which vanishes as the jammer power goes "
-        "to zero; the closed-form bound at K = 1 equals p_d^4 exactly.",
+        "to zero; the closed-form bound at $K = 1$ equals $p_d^4$ exactly.",
         claims=("ATC10-eq2.4.1",),
         discussed_in=PAGE,
     ),
@@ -839,19 +856,27 @@ ERRATA = [
         paper="ATC10",
         kind="unstated-assumption",
         locator="Eq. (2.5.8)",
-        printed="Prob(Gamma_D, gamma_D, psi_D, theta_D = 1) = Prob(Gamma_D | gamma_D, psi_D, theta_D) "
-        "Prob(gamma_D) Prob(psi_D | theta_D) Prob(theta_D)",
-        finding="The factorisation takes the false-track indicator gamma_D to be independent of the "
-        "detection and presence indicators (psi_D, theta_D), which the text does not state. It is not "
-        "exact: a false track puts an entry on every one of the K lists, so gamma_D = 1 forces the first "
-        "stage to decide 'present' (psi_D = 1) for any t < 1. The dependence is positive, so the product "
-        "still bounds the joint probability from below, and the factor P_DL in (2.5.12) is conservative.",
-        evidence="By the definitions of Sec. 2.5.2 and the rule of Sec. 2.4, Prob(gamma_D = 1, psi_D = 1 | "
-        "theta_D = 1) = Prob(gamma_D = 1 | theta_D = 1) >= Prob(gamma_D = 1 | theta_D = 1) Prob(psi_D = 1 | "
-        "theta_D = 1). The Appendix C bound on gamma_D uses noise-only declarations, so it holds given "
-        "theta_D = 1 as well (up to the one signal sample per filter). Dropping the factor P_DL lowers the "
-        "finite t = 0 thresholds of Table 2.1 and of K = 1 by at most 0.16 dB, and leaves the K = 1000, "
-        "P_DL = 0.98 entry without a finite power (the library's tests check these values).",
+        printed="$\\mathrm{Prob}(\\Gamma_D, \\gamma_D, \\psi_D, \\theta_D = 1) = \\mathrm{Prob}(\\Gamma_D | "
+        "\\gamma_D, \\psi_D, \\theta_D)\\, \\mathrm{Prob}(\\gamma_D)\\, \\mathrm{Prob}(\\psi_D | "
+        "\\theta_D)\\, "
+        "\\mathrm{Prob}(\\theta_D)$",
+        finding="The factorisation takes the false-track indicator $\\gamma_D$ to be independent of the "
+        "detection and presence indicators ($\\psi_D$, $\\theta_D$), which the text does not state. It is "
+        "not "
+        "exact: a false track puts an entry on every one of the K lists, so $\\gamma_D = 1$ forces the first "
+        "stage to decide 'present' ($\\psi_D = 1$) for any t < 1. The dependence is positive, so the product "
+        "still bounds the joint probability from below, and the factor $P_{DL}$ in (2.5.12) is conservative.",
+        evidence="By the definitions of Sec. 2.5.2 and the rule of Sec. 2.4, Prob($\\gamma_D = 1$, $\\psi_D "
+        "= 1$ | "
+        "$\\theta_D = 1$) = Prob($\\gamma_D = 1$ | $\\theta_D = 1$) $\\ge$ Prob($\\gamma_D = 1$ | "
+        "$\\theta_D = 1$) Prob($\\psi_D = 1$ | "
+        "$\\theta_D = 1$). The Appendix C bound on $\\gamma_D$ uses noise-only declarations, so it holds "
+        "given "
+        "$\\theta_D = 1$ as well (up to the one signal sample per filter). Dropping the factor $P_{DL}$ "
+        "lowers the "
+        "finite $t = 0$ thresholds of Table 2.1 and of $K = 1$ by at most 0.16 dB, and leaves the $K = "
+        "1000$, "
+        "$P_{DL} = 0.98$ entry without a finite power (the library's tests check these values).",
         no_claim_reason="the unstated independence makes (2.5.8) a lower bound rather than an equality, "
         "and the bound is what the paper uses; near the thresholds noise fills the lists "
         "so P(psi_D = 1 | theta_D = 1) is 1 to double precision and the two sides agree, "
@@ -865,17 +890,20 @@ ERRATA = [
         locator="Eq. (A.16)",
         printed="$P(\\rho = 1 | H_1) \\approx p_d^4$, 'the approximation holds closely assuming reasonably "
         "large "
-        "enough values for p_d'",
-        finding="The K = 1000 designs do not have a large p_d: p_d = 0.215 for P_DL = 0.88, p_d = 0.250 for "
-        "P_DL = 0.98, p_d = 0.288 for P_DL = 0.999, so p_d^4 <= 0.0069, while near the jamming "
+        "enough values for $p_d$'",
+        finding="The $K = 1000$ designs do not have a large $p_d$: $p_d = 0.215$ for $P_{DL} = 0.88$, $p_d "
+        "= 0.250$ for "
+        "$P_{DL} = 0.98$, $p_d = 0.288$ for $P_{DL} = 0.999$, so $p_d^4 \\le 0.0069$, while near the jamming "
         "threshold noise "
         "alone fills a list almost surely. The approximation fails there, but, as the text says, the bound "
         "(A.17) stays valid: it is only loose.",
         evidence="$P(\\rho = 1 | H_1) \\ge p_d^4$ because the true arrival alone fills the list, and the "
         "Chernoff "
-        "exponent D(t || q) increases with q for q > t (dD/dq = (q - t) / (q (1 - q))), so replacing "
-        "P(rho = 1 | H_1) by the smaller p_d^4 can only lower the bound. At the K = 1000, P_DL = 0.999 "
-        "threshold p_f = 0.27, and the noise-only list factor F(p_f) of (B.6) differs from 1 by 4e-304 "
+        "exponent $D(t \\| q)$ increases with $q$ for $q > t$ ($dD/dq = (q - t) / (q (1 - q))$), so "
+        "replacing "
+        "$P(\\rho = 1 | H_1)$ by the smaller $p_d^4$ can only lower the bound. At the $K = 1000$, "
+        "$P_{DL} = 0.999$ threshold $p_f = 0.27$, and the noise-only list factor $F(p_f)$ of (B.6) differs "
+        "from 1 by 4e-304 "
         "(the library's tests check these values).",
         claims=("ATC10-eqA.16-bound-stays-valid",),
         no_claim_reason="the paper qualifies the approximation ('reasonably large p_d') and says the "
@@ -888,17 +916,18 @@ ERRATA = [
         paper="ATC10",
         kind="inconsistent-numbers",
         locator="Table 2.1 (and Table 1.1, K = 1000)",
-        printed="56 dBW for K = 100, P_DL = 0.88; 77 dBW for K = 1000, P_DL = 0.999",
-        finding="With the printed parameters the t = 0 N_ADL bound (2.8.4) reaches 0.01 N_T at 55.3 dBW and "
+        printed="56 dBW for $K = 100$, $P_{DL} = 0.88$; 77 dBW for $K = 1000$, $P_{DL} = 0.999$",
+        finding="With the printed parameters the $t = 0$ $N_{ADL}$ bound (2.8.4) reaches $0.01 N_T$ at 55.3 "
+        "dBW and "
         "75.7 dBW: the printed whole-dB entries are 0.7 and 1.3 dB higher, beyond their half-dB "
         "rounding. The "
         "other finite rows agree to the printed half dB (45.8, 43.1, 51.2 against 46, 43, 51). The "
         "paper read "
-        "its values off Figs. 2.8 and 2.16, which are lost; at K = 1000 the curve meets the level at a "
+        "its values off Figs. 2.8 and 2.16, which are lost; at $K = 1000$ the curve meets the level at a "
         "shallow "
-        "angle (about 0.1 in ln N_ADL per dB), so a small misreading of the level moves the crossing by "
+        "angle (about 0.1 in ln $N_{ADL}$ per dB), so a small misreading of the level moves the crossing by "
         "a dB. "
-        "Rounding n_v = 23.86 down to 23 samples (ATC10-E-jam-floor-Kt) gives 81.7 dBW, so that does not "
+        "Rounding $n_v = 23.86$ down to 23 samples (ATC10-E-jam-floor-Kt) gives 81.7 dBW, so that does not "
         "explain 77 either.",
         evidence="An independent plain-probability grid search refined by bisection (no logarithms, the "
         "paper's numbers typed afresh) gives the same crossings to 0.01 dB.",
@@ -912,15 +941,17 @@ ERRATA = [
         locator="Sec. 2.8",
         printed="'it takes about 10 db more power to disable a K = 10 system than a K = 1 system and about "
         "10 db more power to disable a K = 100 system'",
-        finding="At a fixed design P_DL the t = 0 steps are 12.3 dB (K = 1 to 10) and 9.5 dB (K = 10 to 100) "
-        "for P_DL = 0.88, and 11.4 and 8.0 dB for P_DL = 0.999: 'about 10 dB' (within 10 %) holds only "
+        finding="At a fixed design $P_{DL}$ the $t = 0$ steps are 12.3 dB ($K = 1$ to 10) and 9.5 dB ($K = "
+        "10$ to 100) "
+        "for $P_{DL} = 0.88$, and 11.4 and 8.0 dB for $P_{DL} = 0.999$: 'about 10 dB' (within 10 %) holds "
+        "only "
         "for the "
-        "K = 10 to 100 step at 0.88. The paper's own Table 2.1 steps by 10 dB (46 to 56) and 8 dB (43 "
+        "$K = 10$ to 100 step at 0.88. The paper's own Table 2.1 steps by 10 dB (46 to 56) and 8 dB (43 "
         "to 51); "
-        "its 'about 10' matches Table 1.1 (33, 43, 53), whose K = 100 entry is itself in question "
+        "its 'about 10' matches Table 1.1 (33, 43, 53), whose $K = 100$ entry is itself in question "
         "(ATC10-E-jam-table1.1-pdl).",
         evidence="Both ends of every step by the independent plain-probability grid search; and the paper's "
-        "own Table 2.1, whose P_DL = 0.999 column steps by 8 dB from K = 10 to 100.",
+        "own Table 2.1, whose $P_{DL} = 0.999$ column steps by 8 dB from $K = 10$ to 100.",
         claims=(
             "ATC10-sec2.8-10dB-K1to10-pdl0.999",
             "ATC10-sec2.8-10dB-K1to10-pdl0.88",
@@ -957,22 +988,24 @@ def _table21_claim(row: int, k: int, p_dl: float, text: str, relation: str) -> C
         return required_erp_dbw("ambiguous", p_, k_)
 
     note = (
-        "t = 0, p_f from (D.17) = (2.7.1), N_ADL of (2.8.4) with 2B alpha = 2e7, 4B beta = 9.6e5 and "
-        "n_v = 23.86 samples; ERP = x_dB + 10 log10(P0 tau B) = x_dB + 50 dBW."
+        "$t = 0$, $p_f$ from (D.17) = (2.7.1), $N_{ADL}$ of (2.8.4) with $2B\\alpha$ = 2e7, $4B\\beta$ = "
+        "9.6e5 and "
+        "$n_v = 23.86$ samples; ERP = $x_{dB} + 10 \\log_{10}(P_0 \\tau B) = x_{dB}$ + 50 dBW."
     )
     if relation == ">":
-        note += " The N_ADL ceiling (J -> inf) is 0.0021 N_T < 0.01 N_T, so no power suffices."
+        note += " The $N_{ADL}$ ceiling ($J \\to \\infty$) is $0.0021 N_T < 0.01 N_T$, so no power suffices."
     elif expected == "discrepant":
         note += (
             " Misses the printed whole dB (erratum ATC10-E-jam-table2.1-values). Verdict changed from "
-            "consistent: the tolerance was widened to +-1 dB (+-2 dB at K = 1000) where the computed value "
+            "consistent: the tolerance was widened to $\\pm 1$ dB ($\\pm 2$ dB at $K = 1000$) where the "
+            "computed value "
             "missed the printed half dB; it is now the printed digits."
         )
     return Claim(
         id=f"ATC10-tab2.1-K{k}-pdl{p_dl}",
         paper="ATC10",
         locator="Table 2.1",
-        quantity=f"jammer ERP per satellite for N_ADL = 0.01 N_T, K = {k}, P_DL = {p_dl}",
+        quantity=f"jammer ERP per satellite for $N_{{ADL}} = 0.01 N_T$, $K = {k}$, $P_{{DL}} = {p_dl}$",
         published=value,
         unit="dBW",
         compute=compute,
@@ -998,11 +1031,12 @@ def _step_claim(k_from: int, k_to: int, p_dl: float, expected: str) -> Claim:
         k_from_ = table21_design(row_from)[0] if row_from else 1
         return required_erp_dbw("ambiguous", p_, k_to_) - required_erp_dbw("ambiguous", p_, k_from_)
 
-    note = "N_ADL = 0.01 N_T thresholds at t = 0, both ends at the same Table 2.1 design P_DL."
+    note = "$N_{ADL} = 0.01 N_T$ thresholds at $t = 0$, both ends at the same Table 2.1 design $P_{DL}$."
     if expected == "discrepant":
         note += (
-            " Verdict changed from consistent: the tolerance was +-2.5 dB ('a quarter decade'); the prose "
-            "table's 'about' is +-10 %, i.e. +-1 dB (erratum ATC10-E-jam-10dB-steps)."
+            " Verdict changed from consistent: the tolerance was $\\pm 2.5$ dB ('a quarter decade'); the "
+            "prose "
+            "table's 'about' is $\\pm 10$ %, i.e. $\\pm 1$ dB (erratum ATC10-E-jam-10dB-steps)."
         )
     else:
         note += " Verdict changed from consistent: with published inputs only, agreement is a reproduction."
@@ -1010,7 +1044,7 @@ def _step_claim(k_from: int, k_to: int, p_dl: float, expected: str) -> Claim:
         id=f"ATC10-sec2.8-10dB-K{k_from}to{k_to}-pdl{p_dl}",
         paper="ATC10",
         locator="Sec. 2.8",
-        quantity=f"extra jammer ERP to disable K = {k_to} rather than K = {k_from} (P_DL = {p_dl})",
+        quantity=f"extra jammer ERP to disable $K = {k_to}$ rather than $K = {k_from}$ ($P_{{DL}} = {p_dl}$)",
         published=10.0,
         unit="dB",
         compute=compute,
@@ -1051,9 +1085,10 @@ CLAIMS: list[Claim] = [
         tolerance=EXACT,
         expected_status="reproduced",
         kind="statement",
-        note="Threshold search for N_ADL = 0.01 N_T at t = 0, for the caption's P_D = 0.88 and for "
-        "Table 2.1's P_DL = 0.999 (the design point most Table 1.1 entries use): both sequences increase "
-        "strictly, and the K < 100 values are finite. 'Modest' is read as: a finite requirement for K = 1 "
+        note="Threshold search for $N_{ADL} = 0.01 N_T$ at $t = 0$, for the caption's $P_D = 0.88$ and for "
+        "Table 2.1's $P_{DL} = 0.999$ (the design point most Table 1.1 entries use): both sequences increase "
+        "strictly, and the $K < 100$ values are finite. 'Modest' is read as: a finite requirement for $K = "
+        "1$ "
         "and 10, of the size Table 1.1 equips with at most 20 dBW (100 W) of rf power and a 4 ft dish; the "
         "dollar cost is not testable.",
         discussed_in=PAGE_T11,
@@ -1062,17 +1097,21 @@ CLAIMS: list[Claim] = [
         id="ATC10-sec1.1-K1000-prohibitive",
         paper="ATC10",
         locator="Sec. 1.1 and Table 2.1",
-        quantity="as K approaches 1000 the barrage jammer becomes prohibitive: for the caption's P_D >= 0.88 "
-        "design no finite ERP disables a K = 1000 system (beyond Table 2.1's '>130 dBW')",
+        quantity="as K approaches 1000 the barrage jammer becomes prohibitive: for the caption's $P_D \\ge "
+        "0.88$ "
+        "design no finite ERP disables a $K = 1000$ system (beyond Table 2.1's '>130 dBW')",
         published=True,
         unit="statement",
         compute=_k1000_beyond_practical,
         tolerance=EXACT,
         expected_status="reproduced",
         kind="statement",
-        note="'Prohibit' read at the caption's P_D = 0.88: the K = 1000 N_ADL ceiling (J -> inf) lies "
-        "below 0.01 N_T, so the threshold search returns infinity, above the printed >130 dBW. At P_DL = "
-        "0.999, the design Table 1.1's K = 1000 row actually uses, the ERP is finite (claim "
+        note="'Prohibit' read at the caption's $P_D = 0.88$: the $K = 1000$ $N_{ADL}$ ceiling "
+        "($J \\to \\infty$) "
+        "lies "
+        "below 0.01 $N_T$, so the threshold search returns infinity, above the printed >130 dBW. At "
+        "$P_{DL}$ = "
+        "0.999, the design Table 1.1's $K = 1000$ row actually uses, the ERP is finite (claim "
         "ATC10-tab1.1-K1000-erp); there 'prohibit' can only mean cost and complexity (Table 1.1: 40 dBW rf, "
         "an 18 ft dish), which the book cannot test.",
         discussed_in=PAGE_T11,
@@ -1097,17 +1136,17 @@ CLAIMS: list[Claim] = [
         id="ATC10-sec2.7-pulse-energy",
         paper="ATC10",
         locator="Sec. 2.7",
-        quantity="pulse energy for P0 = 30 dBW and tau = 10 us",
+        quantity="pulse energy for $P_0 = 30$ dBW and $\\tau = 10$ µs",
         published=10.0,
         unit="mJ",
         compute=lambda: units.watts_from_dbw(IN.pulse_power_dbw) * IN.pulse_duration_s * 1e3,
         tolerance=printed("10", why="'10 mJoules'")[1],
         expected_status="consistent",
         kind="cross-check",
-        note="Arithmetic on printed values only: E = P0 tau from the printed 30 dBW and 10 us. Every "
+        note="Arithmetic on printed values only: $E = P_0 \\tau$ from the printed 30 dBW and 10 µs. Every "
         "ERP reads "
-        "the one published pulse input, the printed 10 mJ (IN.pulse_energy_j); P0 and tau are the paper's "
-        "'e.g.' and enter only this check. P0 is the average power during the pulse (erratum "
+        "the one published pulse input, the printed 10 mJ of pulse energy; $P_0$ and $\\tau$ are the paper's "
+        "'e.g.' and enter only this check. $P_0$ is the average power during the pulse (erratum "
         "ATC10-E-jam-P0-average-peak). Verdict changed from reproduced: a cross-check of printed numbers.",
         discussed_in=PAGE_K1,
     ),
@@ -1122,22 +1161,22 @@ CLAIMS: list[Claim] = [
         tolerance=EXACT,
         expected_status="reproduced",
         kind="statement",
-        note="The closed-form Chernoff bound at K = 1, t = 0 against p_d^4 on a grid of p_d.",
+        note="The closed-form Chernoff bound at $K = 1$, $t = 0$ against $p_d^4$ on a grid of $p_d$.",
         discussed_in=PAGE,
     ),
     Claim(
         id="ATC10-eq2.4.2-nu-max",
         paper="ATC10",
         locator="Eqs. (2.4.2), (A.17)-(A.18)",
-        quantity="the nu-maximised exponent of (2.4.2) equals the binary divergence D(t || p_d^4) for t < "
-        "p_d^4 and 0 otherwise",
+        quantity="the $\\nu$-maximised exponent of (2.4.2) equals the binary divergence $D(t \\| p_d^4)$ for "
+        "$t < p_d^4$ and 0 otherwise",
         published=True,
         unit="statement",
         compute=_exponent_matches_numeric,
         tolerance=EXACT,
         expected_status="reproduced",
         kind="statement",
-        note="Closed form against bounded numerical maximisation over nu >= 0 at five (t, q) pairs, to "
+        note="Closed form against bounded numerical maximisation over $\\nu \\ge 0$ at five (t, q) pairs, to "
         "1e-10.",
         discussed_in=PAGE,
     ),
@@ -1152,7 +1191,8 @@ CLAIMS: list[Claim] = [
         tolerance=EXACT,
         expected_status="reproduced",
         kind="statement",
-        note="p_d = 0.7 (p_d^4 = 0.24), t = 0.2: the bound increases with K and exceeds 1 - 1e-12 at K = "
+        note="$p_d = 0.7$ ($p_d^4 = 0.24$), $t = 0.2$: the bound increases with K and exceeds 1 - 1e-12 at "
+        "K = "
         "1e4.",
         discussed_in=PAGE,
     ),
@@ -1160,8 +1200,8 @@ CLAIMS: list[Claim] = [
         id="ATC10-eqA.9-rule-at-design",
         paper="ATC10",
         locator="Eqs. (A.9)-(A.10)",
-        quantity="first-stage detection probability at the K = 10, P_DL = 0.999 design point (t = 0) "
-        "under the rule as printed in (A.9), which the bound (A.17) claims is at least P_DL",
+        quantity="first-stage detection probability at the $K = 10$, $P_{DL} = 0.999$ design point ($t = 0$) "
+        "under the rule as printed in (A.9), which the bound (A.17) claims is at least $P_{DL}$",
         published=0.999,
         unit="",
         relation=">=",
@@ -1180,7 +1220,8 @@ CLAIMS: list[Claim] = [
             rel=1e-10,
             policy="exact",
         ),
-        note="Under (A.9) with t = 0 every list must be non-empty: probability q^K. The bound holds for the "
+        note="Under (A.9) with $t = 0$ every list must be non-empty: probability $q^K$. The bound holds for "
+        "the "
         "rule of (A.11), which is what the paper uses.",
         discussed_in=PAGE,
     ),
@@ -1188,7 +1229,8 @@ CLAIMS: list[Claim] = [
         id="ATC10-eqA.15-printed",
         paper="ATC10",
         locator="Eq. (A.15)",
-        quantity="right side of (A.15) as printed ('1 exp -K(...)') at the K = 10, P_DL = 0.999 design point",
+        quantity="right side of (A.15) as printed ($1 \\exp -K(\\ldots)$) at the $K = 10$, $P_{DL} = 0.999$ "
+        "design point",
         published=0.999,
         unit="",
         compute=printed_a15_value,
@@ -1208,7 +1250,7 @@ CLAIMS: list[Claim] = [
         id="ATC10-eqC.1-printed",
         paper="ATC10",
         locator="Eq. (C.1)",
-        quantity="ln of (C.1) as printed over F(p_f) of (B.6), the factor (2.5.12) uses for K = 1 "
+        quantity="ln of (C.1) as printed over $F(p_f)$ of (B.6), the factor (2.5.12) uses for $K = 1$ "
         "(0 if the two are the same, as they should be)",
         published=0.0,
         unit="",
@@ -1225,8 +1267,10 @@ CLAIMS: list[Claim] = [
         oracle_tolerance=Tolerance(
             reason="mpmath at 40 digits against double precision", abs=1e-6, policy="exact"
         ),
-        note="Evaluated at the K = 1, P_DL = 0.88 threshold, p_f ~ 1e-6: (1 - p_f)^(2e7) ~ e^-20 where "
-        "1 - (1 - p_f)^(2e7) ~ 1. Oracle: mpmath at 40 digits. Was a truth value ('equal within 1e-3'); now "
+        note="Evaluated at the $K = 1$, $P_{DL} = 0.88$ threshold, $p_f \\approx 10^{-6}$: "
+        "$(1 - p_f)^{2 \\times 10^7} \\approx e^{-20}$ where $1 - (1 - p_f)^{2 \\times 10^7} \\approx 1$. "
+        "Oracle: "
+        "40-digit arbitrary-precision arithmetic. Was a truth value ('equal within 1e-3'); now "
         "the logarithm of the ratio is shown.",
         discussed_in=PAGE,
     ),
@@ -1252,7 +1296,9 @@ CLAIMS: list[Claim] = [
             "(dc/dp_f = 2.9); 4 standard errors are 4.3e-3, and the simulated threshold quantile adds about "
             "as much in quadrature: 6e-3",
         ),
-        note="navcore's p_f (App. D, D.17) inverted for c at x = 0 dB, p_d = 0.5 gives 1/sqrt(2). (2.7.1) "
+        note="navcore's $p_f$ (App. D, D.17) inverted for $c$ at $x$ = 0 dB, $p_d = 0.5$ gives "
+        "$1/\\sqrt{2}$. "
+        "(2.7.1) "
         "and (2.8.4) print the correct argument.",
         discussed_in=PAGE_K,
     ),
@@ -1261,23 +1307,24 @@ CLAIMS: list[Claim] = [
         id="ATC10-sec2.7-nominal-33dBW",
         paper="ATC10",
         locator="Sec. 2.7",
-        quantity="nominal jammer ERP for K = 1 (N_ADL = 0.01 N_T, P_DL between 0.9 and 0.999)",
+        quantity="nominal jammer ERP for $K = 1$ ($N_{ADL} = 0.01 N_T$, $P_{DL}$ between 0.9 and 0.999)",
         published=float(NOMINAL_ERP_TEXT),
         unit="dBW",
         compute=lambda: required_erp_dbw("ambiguous", IN.nominal_p_dl, 1),
         tolerance=printed(NOMINAL_ERP_TEXT)[1],
         expected_status="consistent",
         kind="reproduction",
-        note="The design P_DL behind the nominal is assumed anywhere in the printed 0.9-0.999 (band "
-        "31.7-33.5 dBW); the caption's 0.88 would give 33.6 dBW. The N_FL threshold (99 % of 0.9 N_T) is "
-        "34.0 dBW at P_DL = 0.9.",
+        note="The design $P_{DL}$ behind the nominal is assumed anywhere in the printed 0.9-0.999 (band "
+        "31.7-33.5 dBW); the caption's 0.88 would give 33.6 dBW. The $N_{FL}$ threshold (99 % of 0.9 $N_T$) "
+        "is "
+        "34.0 dBW at $P_{DL}$ = 0.9.",
         discussed_in=PAGE_K1,
     ),
     Claim(
         id="ATC10-sec2.7-lt2dB-ADL",
         paper="ATC10",
         locator="Sec. 2.7",
-        quantity="difference in required jammer ERP between P_DL = 0.9 and 0.999 (K = 1, N_ADL)",
+        quantity="difference in required jammer ERP between $P_{DL} = 0.9$ and 0.999 ($K = 1$, $N_{ADL}$)",
         published=2.0,
         unit="dB",
         relation="<",
@@ -1288,14 +1335,14 @@ CLAIMS: list[Claim] = [
         tolerance=printed("2", why="'less than 2 db'")[1],
         expected_status="reproduced",
         kind="reproduction",
-        note="Thresholds at N_ADL = 0.01 N_T; higher P_DL needs less jamming.",
+        note="Thresholds at $N_{ADL} = 0.01 N_T$; higher $P_{DL}$ needs less jamming.",
         discussed_in=PAGE_K1,
     ),
     Claim(
         id="ATC10-sec2.7-lt2dB-FL",
         paper="ATC10",
         locator="Sec. 2.7",
-        quantity="difference in required jammer ERP between P_DL = 0.9 and 0.999 (K = 1, N_FL)",
+        quantity="difference in required jammer ERP between $P_{DL} = 0.9$ and 0.999 ($K = 1$, $N_{FL}$)",
         published=2.0,
         unit="dB",
         relation="<",
@@ -1305,7 +1352,7 @@ CLAIMS: list[Claim] = [
         tolerance=printed("2", why="'less than 2 db'")[1],
         expected_status="reproduced",
         kind="reproduction",
-        note="Thresholds at 99 % of the N_FL supremum 0.9 N_T.",
+        note="Thresholds at 99 % of the $N_{FL}$ supremum 0.9 $N_T$.",
         discussed_in=PAGE_K1,
     ),
     Claim(
@@ -1319,7 +1366,9 @@ CLAIMS: list[Claim] = [
         tolerance=EXACT,
         expected_status="reproduced",
         kind="statement",
-        note="Both bounds are within 0.1 % of their J -> inf ceilings at -12 dB for P_DL in {0.88, 0.9, "
+        note="Both bounds are within 0.1 % of their $J \\to \\infty$ ceilings at -12 dB for $P_{DL}$ in "
+        "{0.88, "
+        "0.9, "
         "0.99, 0.999}; the threshold falls 2-4 dB further down.",
         discussed_in=PAGE_K1,
     ),
@@ -1354,7 +1403,9 @@ CLAIMS: list[Claim] = [
         tolerance=printed("20")[1],
         expected_status="reproduced",
         kind="reproduction",
-        note="G = 33 - 14.77 = 18.2 dB; beamwidth sqrt(27000/G) degrees (70 lambda/D for a 2 ft dish at 1.6 "
+        note="$G$ = 33 - 14.77 = 18.2 dB; beamwidth $\\sqrt{27000/G}$ degrees ($70 \\lambda/D$ for a 2 ft "
+        "dish at "
+        "1.6 "
         "GHz gives 21.4).",
         discussed_in=PAGE_T11,
     ),
@@ -1375,22 +1426,24 @@ CLAIMS: list[Claim] = [
         tolerance=EXACT,
         expected_status="reproduced",
         kind="statement",
-        note="t in {0, 0.05, 0.1, 0.2, 0.3}, both bounds, every finite Table 2.1 design point; p_d re-solved "
-        "for each t so that P_DL stays fixed.",
+        note="t in {0, 0.05, 0.1, 0.2, 0.3}, both bounds, every finite Table 2.1 design point; $p_d$ "
+        "re-solved "
+        "for each t so that $P_{DL}$ stays fixed.",
         discussed_in=PAGE_K,
     ),
     Claim(
         id="ATC10-sec2.8-FL-less-t-sensitive",
         paper="ATC10",
         locator="Sec. 2.8",
-        quantity="the N_FL curves are less sensitive to t than the N_ADL curves",
+        quantity="the $N_{FL}$ curves are less sensitive to t than the $N_{ADL}$ curves",
         published=True,
         unit="statement",
         compute=_fl_less_sensitive_to_t,
         tolerance=EXACT,
         expected_status="reproduced",
         kind="statement",
-        note="Spread of the required ERP between t = 0 and t = 0.3 at (K, P_DL) = (10, 0.88), (100, 0.88), "
+        note="Spread of the required ERP between $t = 0$ and $t = 0.3$ at (K, $P_{DL}$) = (10, 0.88), (100, "
+        "0.88), "
         "(1000, 0.999).",
         discussed_in=PAGE_K,
     ),
@@ -1398,22 +1451,24 @@ CLAIMS: list[Claim] = [
         id="ATC10-sec2.8-FL-first",
         paper="ATC10",
         locator="Sec. 2.8",
-        quantity="N_FL degrades at less jammer power than N_ADL",
+        quantity="$N_{FL}$ degrades at less jammer power than $N_{ADL}$",
         published=True,
         unit="statement",
         compute=_fl_degrades_first,
         tolerance=EXACT,
         expected_status="reproduced",
         kind="statement",
-        note="At every finite Table 2.1 design point (t = 0) the N_FL threshold (99 % of 0.9 N_T) lies below "
-        "the N_ADL threshold (0.01 N_T).",
+        note="At every finite Table 2.1 design point ($t = 0$) the $N_{FL}$ threshold (99 % of 0.9 $N_T$) "
+        "lies below "
+        "the $N_{ADL}$ threshold (0.01 $N_T$).",
         discussed_in=PAGE_K,
     ),
     Claim(
         id="ATC10-sec2.8-K1000-critical",
         paper="ATC10",
         locator="Sec. 2.8",
-        quantity="for K = 1000 the required power depends critically on P_DL: unbounded at 0.98, finite "
+        quantity="for $K = 1000$ the required power depends critically on $P_{DL}$: unbounded at 0.98, "
+        "finite "
         "at 0.999",
         published=True,
         unit="statement",
@@ -1421,23 +1476,24 @@ CLAIMS: list[Claim] = [
         tolerance=EXACT,
         expected_status="reproduced",
         kind="statement",
-        note="The N_ADL ceiling at K = 1000 reaches 0.01 N_T only for P_DL above about 0.9954.",
+        note="The $N_{ADL}$ ceiling at $K = 1000$ reaches 0.01 $N_T$ only for $P_{DL}$ above about 0.9954.",
         discussed_in=PAGE_K,
     ),
     Claim(
         id="ATC10-fig2.3-2.16-curve-sets",
         paper="ATC10",
         locator="Figs. 2.3-2.16",
-        quantity="the (p_d, t) combinations of the curves in Figs. 2.3-2.16",
+        quantity="the ($p_d$, t) combinations of the curves in Figs. 2.3-2.16",
         published=True,
         unit="statement",
         compute=None,
         tolerance=EXACT,
         expected_status="not-reproducible",
         kind="statement",
-        note="The figures survive only as captions, so the (p_d, t) pairs of Figs. 2.3-2.16 are missing "
+        note="The figures survive only as captions, so the ($p_d$, t) pairs of Figs. 2.3-2.16 are missing "
         "where "
-        "the captions say 'for various (p_d, t) combinations'; only the t = 0 curves are pinned down by the "
+        "the captions say 'for various ($p_d$, t) combinations'; only the $t = 0$ curves are pinned down by "
+        "the "
         "text. The book draws t in {0, 0.05, 0.1, 0.2, 0.3}.",
         discussed_in=PAGE_K,
     ),
@@ -1453,8 +1509,8 @@ CLAIMS: list[Claim] = [
         tolerance=printed(str(TABLE_1_1[0][1]))[1],
         expected_status="consistent",
         kind="reproduction",
-        note="Table 1.1 summarises the results (Sec. 2.1); its K = 1 entry is Sec. 2.7's nominal 33 dBW, "
-        "taken for any design P_DL from 0.9 to 0.999 (assumed range; band 31.7-33.5 dBW). The caption's "
+        note="Table 1.1 summarises the results (Sec. 2.1); its $K = 1$ entry is Sec. 2.7's nominal 33 dBW, "
+        "taken for any design $P_{DL}$ from 0.9 to 0.999 (assumed range; band 31.7-33.5 dBW). The caption's "
         "0.88 would give 33.6 dBW, 0.1 dB beyond the printed half dB (claim ATC10-tab1.1-caption-pdl).",
         discussed_in=PAGE_T11,
     ),
@@ -1462,14 +1518,14 @@ CLAIMS: list[Claim] = [
         id="ATC10-tab1.1-K10-erp",
         paper="ATC10",
         locator="Table 1.1",
-        quantity="jammer ERP for K = 10 (the Table 2.1 P_DL = 0.999 design point)",
+        quantity="jammer ERP for $K = 10$ (the Table 2.1 $P_{DL} = 0.999$ design point)",
         published=float(TABLE_1_1[1][1]),
         unit="dBW",
         compute=lambda: _table11_erp(1),
         tolerance=printed(str(TABLE_1_1[1][1]))[1],
         expected_status="reproduced",
         kind="reproduction",
-        note="Equals Table 2.1's P_DL = 0.999 row; the caption's 0.88 would give 45.8 dBW (erratum "
+        note="Equals Table 2.1's $P_{DL} = 0.999$ row; the caption's 0.88 would give 45.8 dBW (erratum "
         "ATC10-E-jam-table1.1-pdl).",
         discussed_in=PAGE_T11,
     ),
@@ -1477,7 +1533,7 @@ CLAIMS: list[Claim] = [
         id="ATC10-tab1.1-K100-erp",
         paper="ATC10",
         locator="Table 1.1",
-        quantity="jammer ERP for K = 100 (the caption's P_D = 0.88)",
+        quantity="jammer ERP for $K = 100$ (the caption's $P_D = 0.88$)",
         published=float(TABLE_1_1[2][1]),
         unit="dBW",
         compute=lambda: _table11_erp(2),
@@ -1487,8 +1543,10 @@ CLAIMS: list[Claim] = [
         erratum=E_TAB11,
         oracle=lambda: direct_adl_erp_dbw(0.88, 100),
         oracle_tolerance=_ORACLE_DB,
-        note="Read at the caption's P_D = 0.88: the printed 53 matches no Table 2.1 row (51 at 0.999, 56 at "
-        "0.88), so nothing in the text supports another design. 55.3 dBW at 0.88, 51.2 at 0.999; P_DL = 0.98 "
+        note="Read at the caption's $P_D = 0.88$: the printed 53 matches no Table 2.1 row (51 at 0.999, 56 "
+        "at "
+        "0.88), so nothing in the text supports another design. 55.3 dBW at 0.88, 51.2 at 0.999; $P_{DL} = "
+        "0.98$ "
         "would give 53.0.",
         discussed_in=PAGE_T11,
     ),
@@ -1496,7 +1554,7 @@ CLAIMS: list[Claim] = [
         id="ATC10-tab1.1-K1000-erp",
         paper="ATC10",
         locator="Table 1.1",
-        quantity="jammer ERP for K = 1000 (the Table 2.1 P_DL = 0.999 design point)",
+        quantity="jammer ERP for $K = 1000$ (the Table 2.1 $P_{DL} = 0.999$ design point)",
         published=float(TABLE_1_1[3][1]),
         unit="dBW",
         compute=lambda: _table11_erp(3),
@@ -1506,8 +1564,10 @@ CLAIMS: list[Claim] = [
         erratum=E_T21,
         oracle=lambda: direct_adl_erp_dbw(0.999, 1000),
         oracle_tolerance=_ORACLE_DB,
-        note="Same entry as Table 2.1 (75.7 dBW against the printed 77); the caption's P_DL = 0.88 gives no "
-        "finite power. Verdict changed from consistent: the tolerance was +-2 dB for the shallow crossing; "
+        note="Same entry as Table 2.1 (75.7 dBW against the printed 77); the caption's $P_{DL} = 0.88$ "
+        "gives no "
+        "finite power. Verdict changed from consistent: the tolerance was $\\pm 2$ dB for the shallow "
+        "crossing; "
         "it is now the printed digits.",
         discussed_in=PAGE_T11,
     ),
@@ -1516,7 +1576,7 @@ CLAIMS: list[Claim] = [
         paper="ATC10",
         locator="Table 1.1 caption and Sec. 1.1",
         quantity="number of the four Table 1.1 ERPs that are the requirement for a processor designed for "
-        "P_D = 0.88, as the caption says (all four)",
+        "$P_D = 0.88$, as the caption says (all four)",
         published=4.0,
         unit="entries",
         compute=lambda: table11_caption_matches(False),
@@ -1526,8 +1586,8 @@ CLAIMS: list[Claim] = [
         erratum=E_TAB11,
         oracle=lambda: table11_caption_matches(True),
         oracle_tolerance=EXACT,
-        note="Each printed ERP against the P_DL = 0.88 threshold within its printed half dB (33.6, 45.8, "
-        "55.3, none): none matches, K = 1 by 0.09 dB beyond the rounding (it was 'within 1 dB' before this "
+        note="Each printed ERP against the $P_{DL} = 0.88$ threshold within its printed half dB (33.6, 45.8, "
+        "55.3, none): none matches, $K = 1$ by 0.09 dB beyond the rounding (it was 'within 1 dB' before this "
         "audit, and the claim a truth value).",
         discussed_in=PAGE_T11,
     ),
@@ -1546,7 +1606,8 @@ for _i, (_k, _erp, _rf, _dia, _bw) in enumerate(TABLE_1_1):
             tolerance=printed(str(_rf))[1],
             expected_status="consistent",
             kind="reproduction",
-            note="G = eta (pi D / lambda)^2 with the assumed L-band frequency (1-2 GHz, nominal 1.6) and "
+            note="$G = \\eta (\\pi D / \\lambda)^2$ with the assumed L-band frequency (1-2 GHz, nominal "
+            "1.6) and "
             "efficiency (0.5-0.7, nominal 0.6): the paper gives no antenna model.",
             discussed_in=PAGE_T11,
         )
@@ -1563,12 +1624,13 @@ for _i, (_k, _erp, _rf, _dia, _bw) in enumerate(TABLE_1_1):
             tolerance=printed(str(_dia))[1],
             expected_status="consistent",
             kind="reproduction",
-            note="D = (lambda/pi) sqrt(G/eta) with the assumed frequency (1-2 GHz) and efficiency (0.5-0.7).",
+            note="$D = (\\lambda/\\pi) \\sqrt{G/\\eta}$ with the assumed frequency (1-2 GHz) and efficiency "
+            "(0.5-0.7).",
             discussed_in=PAGE_T11,
         )
     )
     _bw_note = (
-        "sqrt(27000/G) degrees with G = printed ERP - printed rf power, the rule Sec. 2.7's 20 degrees "
+        "$\\sqrt{27000/G}$ degrees with $G$ = printed ERP - printed rf power, the rule Sec. 2.7's 20 degrees "
         "follows; "
         "no antenna model is needed."
     )
@@ -1598,8 +1660,10 @@ for _i, (_k, _erp, _rf, _dia, _bw) in enumerate(TABLE_1_1):
             + (
                 " Sec. 2.7 itself says 20 degrees."
                 if _k == 1
-                else " Verdict changed from consistent: computed before by 70 lambda/D through the assumed "
-                "dish model, with a +-1 deg tolerance; now from the printed columns and the printed digits."
+                else " Verdict changed from consistent: computed before by $70 \\lambda/D$ through the "
+                "assumed dish model, with a $\\pm 1$ deg tolerance; now from the printed columns and the "
+                "printed "
+                "digits."
             ),
             discussed_in=PAGE_T11,
         )

@@ -706,7 +706,8 @@ ERRATA = [
         "and the corrected lower bound stays several e-folds lower still. The bounds are tight "
         "only in the exponent, when the exponent itself grows (large deviations), so comparing "
         "exponents as Sec. 3.8 does is legitimate but 'we lose nothing' overstates it.",
-        evidence="Exact compound-binomial p_f for the two-point density at N = 1e4..1e7 with the power held "
+        evidence="Exact compound-binomial $p_f$ for the two-point density at N = 1e4..1e7 with the power "
+        "held "
         "at 4/75, against both bounds; closed-form Gaussian limits.",
         claims=("ATC10-sec3.5-asymptotically-tight",),
         discussed_in=PAGE_ROC,
@@ -724,8 +725,8 @@ ERRATA = [
         "\\theta - 2 \\rho_1 \\sqrt{2 \\mu''(\\rho_1)}]$ "
         "with $\\mu'(\\rho_1) - \\sqrt{2 \\mu''(\\rho_1)} = \\theta$. The corrected bound is valid but "
         "$10^2$-$10^9$ "
-        "times below the actual p_f at N = 1e5, tau/alpha = 2e-5, so Sec. 3.8's argument "
-        "'ROC_g p_f below the lower bound of the actual p_f' cannot be made with it.",
+        "times below the actual $p_f$ at N = 1e5, $\\tau/\\alpha$ = 2e-5, so Sec. 3.8's argument "
+        "'$\\mathrm{ROC}_g$ $p_f$ below the lower bound of the actual $p_f$' cannot be made with it.",
         evidence="Tilted-Chebyshev derivation; the printed version (sign of $\\phi_1$) lies above the "
         "Chernoff upper bound; the corrected one lies below the exact compound-binomial and "
         "stratified Monte Carlo tails at every tested point (checked by the library's tests).",
@@ -897,7 +898,8 @@ CLAIMS = [
         id="ATC10-sec3.4-power",
         paper="ATC10",
         locator="Eq. (3.4.13), Sec. 3.6",
-        quantity="average multiple-access noise power equals 2(N-1)(tau/alpha) b for every symmetric C",
+        quantity="average multiple-access noise power equals $2(N-1)(\\tau/\\alpha)\\, b$ for every "
+        "symmetric $C$",
         published=True,
         unit="statement",
         compute=lambda: all(
@@ -915,7 +917,7 @@ CLAIMS = [
         id="ATC10-thm3.1-gaussian-limit",
         paper="ATC10",
         locator="Theorem 3.1",
-        quantity="the noise distribution approaches N(0, N q b) as N grows with tau/alpha fixed",
+        quantity="the noise distribution approaches $N(0, N q b)$ as $N$ grows with $\\tau/\\alpha$ fixed",
         published=True,
         unit="statement",
         compute=lambda: bool(
@@ -923,7 +925,7 @@ CLAIMS = [
         ),
         tolerance=STATEMENT,
         expected_status="reproduced",
-        note="Exact Gaussian-mixture tail at 2 sigma against Q(2) for N q = 4, 40, 400: the error "
+        note="Exact Gaussian-mixture tail at $2 \\sigma$ against $Q(2)$ for $N q$ = 4, 40, 400: the error "
         "falls monotonically and is below 1e-3 at N q = 400.",
         discussed_in=PAGE_NOISE,
     ),
@@ -931,7 +933,7 @@ CLAIMS = [
         id="ATC10-appE-gaussian-order",
         paper="ATC10",
         locator="Appendix E, after Eq. (E.15)",
-        quantity="order in N of the first (Gaussian) term of G(n) at n of order sigma",
+        quantity="order in $N$ of the first (Gaussian) term of $G(n)$ at $n$ of order $\\sigma$",
         published=-0.5,
         unit="power of N",
         compute=gaussian_term_order,
@@ -942,14 +944,14 @@ CLAIMS = [
             "to the half unit of its one printed decimal",
         )[1],
         expected_status="reproduced",
-        note="Slope of the Gaussian term at n = sigma.",
+        note="Slope of the Gaussian term at $n = \\sigma$.",
         discussed_in=PAGE_NOISE,
     ),
     Claim(
         id="ATC10-appE-lambda3-order",
         paper="ATC10",
         locator="Appendix E, after Eq. (E.15)",
-        quantity="order in N of the second (lambda_3) term of G(n)",
+        quantity="order in $N$ of the second ($\\lambda_3$) term of $G(n)$",
         published=-1.5,
         unit="power of N",
         compute=lambda3_term_order,
@@ -960,8 +962,10 @@ CLAIMS = [
             "to the half unit of its one printed decimal",
         )[1],
         expected_status="discrepant",
-        note="For a C with lambda_3 != 0 the term is O(1/N). It is absent (lambda_3 = 0) for the uniform "
-        "signature sets the paper studies, and the lambda_4 term O(N^{-3/2}) then leads.",
+        note="For a $C$ with $\\lambda_3 \\ne 0$ the term is $O(1/N)$. It is absent ($\\lambda_3 = 0$) for "
+        "the "
+        "uniform "
+        "signature sets the paper studies, and the $\\lambda_4$ term $O(N^{-3/2})$ then leads.",
         erratum="ATC10-E3-5",
         oracle=lambda3_term_order_oracle,
         oracle_tolerance=Tolerance(
@@ -973,14 +977,15 @@ CLAIMS = [
         id="ATC10-sec3.5-bound-monotone",
         paper="ATC10",
         locator="Sec. 3.5.1, discussion of (3.5.13)",
-        quantity="the upper bound to p_f increases with N and with tau/alpha",
+        quantity="the upper bound to $p_f$ increases with N and with $\\tau/\\alpha$",
         published=True,
         unit="statement",
         compute=bound_monotone_in_n_and_duty,
         tolerance=STATEMENT,
         expected_status="reproduced",
-        note="Uniform C, 1/sqrt(3b) = 5, theta = 0.5; N = 5e4, 1e5, 2e5 and tau/alpha = 1e-5, 2e-5, 4e-5 "
-        "(M_C >= 1 for symmetric C, so each term grows).",
+        note="Uniform C, $1/\\sqrt{3b}$ = 5, $\\theta = 0.5$; N = 5e4, 1e5, 2e5 and $\\tau/\\alpha$ = 1e-5, "
+        "2e-5, 4e-5 "
+        "($M_C \\ge 1$ for symmetric C, so each term grows).",
         discussed_in=PAGE_ROC,
     ),
     Claim(
@@ -995,7 +1000,7 @@ CLAIMS = [
         expected_status="consistent",
         note="Fig. 3.2 is lost: C1, C3, C4 are the book's choices (uniform, triangular, Gaussian), so "
         "only the position of C2 (the two-point optimum) is the paper's. Checked on the Chernoff "
-        "exponents of p_f and 1 - p_d at 19 thresholds and at the contours 1/sqrt(3b), whose labels "
+        "exponents of $p_f$ and $1 - p_d$ at 19 thresholds and at the contours $1/\\sqrt{3b}$, whose labels "
         "are lost (assumed 3 and 8 at the ends, 4, 5, 6 between).",
         discussed_in=PAGE_ROC,
     ),
@@ -1003,14 +1008,14 @@ CLAIMS = [
         id="ATC10-sec3.6-deteriorates",
         paper="ATC10",
         locator="Sec. 3.6, last paragraph",
-        quantity="each ROC bound deteriorates as 1/sqrt(3b) decreases",
+        quantity="each ROC bound deteriorates as $1/\\sqrt{3b}$ decreases",
         published=True,
         unit="statement",
         compute=deteriorates_with_power,
         tolerance=STATEMENT,
         expected_status="consistent",
-        note="Chernoff exponents of p_f, four densities (C1, C3, C4 the book's), at the assumed contours "
-        "1/sqrt(3b) = 3..8. Verdict changed from reproduced: the contour labels and three of the four "
+        note="Chernoff exponents of $p_f$, four densities (C1, C3, C4 the book's), at the assumed contours "
+        "$1/\\sqrt{3b}$ = 3..8. Verdict changed from reproduced: the contour labels and three of the four "
         "densities are lost with Figs. 3.2-3.6.",
         discussed_in=PAGE_ROC,
     ),
@@ -1028,7 +1033,7 @@ CLAIMS = [
         tolerance=STATEMENT,
         expected_status="reproduced",
         note="Against the three other symmetric densities of equal second moment, at the test powers "
-        "1/sqrt(3b) = 3, 4, 5, 6, 8 and every threshold; the theorem is about the Chernoff bound, not "
+        "$1/\\sqrt{3b}$ = 3, 4, 5, 6, 8 and every threshold; the theorem is about the Chernoff bound, not "
         "the actual ROC.",
         discussed_in=PAGE_ROC,
     ),
@@ -1042,20 +1047,20 @@ CLAIMS = [
         compute=closed_form_matches_numerical,
         tolerance=STATEMENT,
         expected_status="reproduced",
-        note="Read with (1 - 2tau/alpha) (E3-9); equals the numerical Chernoff optimum to 1e-6.",
+        note="Read with $(1 - 2\\tau/\\alpha)$ (E3-9); equals the numerical Chernoff optimum to 1e-6.",
         discussed_in=PAGE_ROC,
     ),
     Claim(
         id="ATC10-eq3.7.26-approx",
         paper="ATC10",
         locator="Eqs. (3.7.26)-(3.7.27)",
-        quantity="(3.7.26) approximates (3.7.24) at N = 1e5, tau/alpha = 2e-5",
+        quantity="(3.7.26) approximates (3.7.24) at N = 1e5, $\\tau/\\alpha$ = 2e-5",
         published=True,
         unit="statement",
         compute=lambda: approximation_accurate_at_typical_values() <= IN.good_approximation_rel,
         tolerance=STATEMENT,
         expected_status="consistent",
-        note="Largest relative error over thresholds 0.1..0.9 and 1/sqrt(3b) = 3..8, against the assumed "
+        note="Largest relative error over thresholds 0.1..0.9 and $1/\\sqrt{3b}$ = 3..8, against the assumed "
         "reading of 'can be approximated' (1e-5 to 1 %); (3.7.27) read with the square root restored "
         "(E3-9). Verdict changed from reproduced: the accuracy 'can be approximated' asks for is an "
         "assumption (it was a tolerance of 1e-4 with no policy).",
@@ -1065,8 +1070,9 @@ CLAIMS = [
         id="ATC10-sec3.8-gauss-always-optimistic",
         paper="ATC10",
         locator="Sec. 3.8, comparison of Figs. 3.3-3.6 with Fig. 3.8",
-        quantity="the p_f of ROC_g is always lower than the actual p_f (N = 1e5, tau/alpha = 2e-5, C1..C4): "
-        "smallest ratio actual best p_f / ROC_g p_f",
+        quantity="the $p_f$ of $\\mathrm{ROC}_g$ is always lower than the actual $p_f$ (N = 1e5, "
+        "$\\tau/\\alpha$ = 2e-5, C1..C4): "
+        "smallest ratio actual best $p_f / \\mathrm{ROC}_g\\, p_f$",
         published=1.0,
         relation=">",
         unit="ratio",
@@ -1074,9 +1080,11 @@ CLAIMS = [
         compute=gaussian_smallest_pf_ratio,
         tolerance=EXACT,
         expected_status="consistent",
-        note="'Always lower' is the smallest ratio > 1, over the four densities, the contours and p_d = 0.9, "
-        "0.99. Actual ROCs from exact sums (C2, C4) and stratified Monte Carlo (C1, C3) at p_d >= 0.9 "
-        "and 0.99 at the contours: ROC_g is more optimistic at high SNR but not at 1/sqrt(3b) = 3, where "
+        note="'Always lower' is the smallest ratio > 1, over the four densities, the contours and "
+        "$p_d = 0.9$, "
+        "0.99. Actual ROCs from exact sums (C2, C4) and stratified Monte Carlo (C1, C3) at $p_d \\ge 0.9$ "
+        "and 0.99 at the contours: $\\mathrm{ROC}_g$ is more optimistic at high SNR but not at "
+        "$1/\\sqrt{3b}$ = 3, where "
         "the continuous densities beat it (confirmed by the exact Gaussian-C mixture, "
         "gaussian_beaten_at_low_snr_oracle). The contour labels are lost: if the figures' lowest contour "
         "was 4 or more, the statement holds for them. The paper's evidence (the lower bound) is invalid "
@@ -1088,20 +1096,22 @@ CLAIMS = [
         id="ATC10-sec3.8-exp-below-exp-g",
         paper="ATC10",
         locator="Sec. 3.8, Figs. 3.9-3.10",
-        quantity="Exp increases monotonically with N and approaches Exp_g from below",
+        quantity="Exp increases monotonically with N and approaches $\\mathrm{Exp}_g$ from below",
         published=True,
         unit="statement",
         compute=exp_monotone_in_n_below_exp_g,
         tolerance=STATEMENT,
         expected_status="reproduced",
-        note="Eq. (3.8.16) on N = 1e2..1e9 (400 points), tau/alpha = 1e-6, 1e-5, 1e-4, seven Exp_g values.",
+        note="Eq. (3.8.16) on N = 1e2..1e9 (400 points), $\\tau/\\alpha$ = 1e-6, 1e-5, 1e-4, seven "
+        "$\\mathrm{Exp}_g$ values.",
         discussed_in=PAGE_GAUSS,
     ),
     Claim(
         id="ATC10-fig3.9-shortfall",
         paper="ATC10",
         locator="Sec. 3.8, Fig. 3.9",
-        quantity="at N = 1e5, tau/alpha = 1e-5, Exp is below Exp_g = 4 by a non-negligible amount",
+        quantity="at N = 1e5, $\\tau/\\alpha$ = 1e-5, Exp is below $\\mathrm{Exp}_g = 4$ by a "
+        "non-negligible amount",
         published=True,
         unit="statement",
         compute=lambda: exp_fig39_shortfall() > IN.non_negligible_fraction,
@@ -1115,7 +1125,7 @@ CLAIMS = [
         id="ATC10-fig3.9-exp-below",
         paper="ATC10",
         locator="Sec. 3.8, Fig. 3.9",
-        quantity="Exp at N = 1e5, tau/alpha = 1e-5 is less than Exp_g = 4",
+        quantity="Exp at N = 1e5, $\\tau/\\alpha$ = 1e-5 is less than $\\mathrm{Exp}_g = 4$",
         published=float(IN.nominal("exp_g_fig39")),
         relation="<",
         unit="",
@@ -1126,47 +1136,49 @@ CLAIMS = [
         tolerance=EXACT,
         expected_status="reproduced",
         note="The numbers behind ATC10-fig3.9-shortfall: Eq. (3.8.16) gives Exp = 3.30 (the published value "
-        "is the printed Exp_g = 4, the relation the text's 'less than').",
+        "is the printed $\\mathrm{Exp}_g = 4$, the relation the text's 'less than').",
         discussed_in=PAGE_GAUSS,
     ),
     Claim(
         id="ATC10-fig3.10-rate",
         paper="ATC10",
         locator="Sec. 3.8, Fig. 3.10",
-        quantity="the approach of Exp to Exp_g is more rapid for lower Exp_g",
+        quantity="the approach of Exp to $\\mathrm{Exp}_g$ is more rapid for lower $\\mathrm{Exp}_g$",
         published=True,
         unit="statement",
         compute=exp_rate_faster_for_low_exp_g,
         tolerance=STATEMENT,
         expected_status="reproduced",
-        note="Exp/Exp_g decreases with Exp_g at N = 1e4, 1e5, 2e5, 1e6, 1e7 (tau/alpha = 1e-5).",
+        note="$\\mathrm{Exp}/\\mathrm{Exp}_g$ decreases with $\\mathrm{Exp}_g$ at N = 1e4, 1e5, 2e5, 1e6, "
+        "1e7 "
+        "($\\tau/\\alpha$ = 1e-5).",
         discussed_in=PAGE_GAUSS,
     ),
     Claim(
         id="ATC10-fig3.10-linear",
         paper="ATC10",
         locator="Sec. 3.8, Fig. 3.10",
-        quantity="Exp is practically linear in Exp_g (R^2 of a line fit on [0, 20], N = 1e5)",
+        quantity="Exp is practically linear in $\\mathrm{Exp}_g$ ($R^2$ of a line fit on [0, 20], N = 1e5)",
         published=True,
         unit="statement",
         compute=lambda: exp_linearity_r2() >= IN.practically_linear_r2,
         tolerance=STATEMENT,
         expected_status="consistent",
-        note="R^2 of a least-squares line against the assumed reading of 'practically linear' (R^2 of "
-        "0.95-0.999); the curve is visibly concave for N <= 2e5 and straighter for N >= 1e6.",
+        note="$R^2$ of a least-squares line against the assumed reading of 'practically linear' ($R^2$ of "
+        "0.95-0.999); the curve is visibly concave for N $\\le$ 2e5 and straighter for N $\\ge$ 1e6.",
         discussed_in=PAGE_GAUSS,
     ),
     Claim(
         id="ATC10-sec3.8-example-p",
         paper="ATC10",
         locator="Sec. 3.8, worked example",
-        quantity="average multiple-access noise power p = (N-1)/(B alpha) under Ref. [1]'s assumption",
+        quantity="average multiple-access noise power $p = (N-1)/(B \\alpha)$ under Ref. [1]'s assumption",
         published=_p_example,
         unit="(unit-energy signal)",
         compute=worked_example_power,
         tolerance=_p_tol,
         expected_status="discrepant",
-        note="N = 2e5, B = 1e7 Hz, alpha = 1 s give p = 0.02 = 1/50.",
+        note="N = 2e5, B = 1e7 Hz, $\\alpha = 1$ s give $p$ = 0.02 = 1/50.",
         erratum="ATC10-E3-2",
         oracle=worked_example_power_oracle,
         oracle_tolerance=Tolerance(
@@ -1184,14 +1196,15 @@ CLAIMS = [
         compute=worked_example_exp_g,
         tolerance=_expg_tol,
         expected_status="reproduced",
-        note="With p = 1/50 (E3-2) and the example's a^2/p; Eq. (3.8.8)'s a^2/(2p) would give 6.25 (E3-3).",
+        note="With $p$ = 1/50 (E3-2) and the example's $a^2/p$; Eq. (3.8.8)'s $a^2/(2p)$ would give 6.25 "
+        "(E3-3).",
         discussed_in=PAGE_GAUSS,
     ),
     Claim(
         id="ATC10-sec3.8-example-exp",
         paper="ATC10",
         locator="Sec. 3.8, worked example (Fig. 3.10)",
-        quantity="Exp at N = 2e5, tau/alpha = 1e-5, Exp_g = 12.5",
+        quantity="Exp at N = 2e5, $\\tau/\\alpha$ = 1e-5, $\\mathrm{Exp}_g = 12.5$",
         published=_exp,
         unit="",
         compute=worked_example_exp,
@@ -1210,7 +1223,7 @@ CLAIMS = [
         id="ATC10-sec3.8-example-ratio",
         paper="ATC10",
         locator="Sec. 3.8, worked example",
-        quantity="ratio Exp_g/Exp in the worked example",
+        quantity="ratio $\\mathrm{Exp}_g/\\mathrm{Exp}$ in the worked example",
         published=_ratio,
         unit="",
         compute=worked_example_ratio,
@@ -1228,27 +1241,30 @@ CLAIMS = [
         id="ATC10-sec3.8-example-optimistic",
         paper="ATC10",
         locator="Sec. 3.8, worked example",
-        quantity="the Gaussian assumption of Ref. [1] is optimistic (Exp_g > Exp)",
+        quantity="the Gaussian assumption of Ref. [1] is optimistic ($\\mathrm{Exp}_g > \\mathrm{Exp}$)",
         published=True,
         unit="statement",
         compute=lambda: worked_example_ratio() > 1.0,
         tolerance=STATEMENT,
         expected_status="reproduced",
-        note="Exp_g/Exp = 1.29 > 1 for the exponent of the bound; 'much more optimistic' is a judgement.",
+        note="$\\mathrm{Exp}_g/\\mathrm{Exp}$ = 1.29 > 1 for the exponent of the bound; 'much more "
+        "optimistic' is "
+        "a judgement.",
         discussed_in=PAGE_GAUSS,
     ),
     Claim(
         id="ATC10-sec3.9-W-limit",
         paper="ATC10",
         locator="Eq. (3.9.3)",
-        quantity="Zakai bandwidth times chip duration for tau_c/tau << 1",
+        quantity="Zakai bandwidth times chip duration for $\\tau_c/\\tau \\ll 1$",
         published=_w_pub,
         unit="",
         compute=w_chip_limit_ideal,
         tolerance=_w_tol,
         expected_status="consistent",
-        note="Idealised Fig. 3.11 autocorrelation: peak 1, sidelobes +-tau_c/tau alternating over L (+1, "
-        "assumed) lags, evaluated at tau_c/tau = 1e-4; both extents give 3/4 in the limit. Verdict "
+        note="Idealised Fig. 3.11 autocorrelation: peak 1, sidelobes $\\pm \\tau_c/\\tau$ alternating over "
+        "L (+1, "
+        "assumed) lags, evaluated at $\\tau_c/\\tau$ = 1e-4; both extents give 3/4 in the limit. Verdict "
         "changed from reproduced: Fig. 3.11 is lost, the sidelobe model is the book's reconstruction.",
         discussed_in=PAGE_ZAKAI,
     ),
@@ -1262,24 +1278,26 @@ CLAIMS = [
         compute=paper_bracket_reproduced,
         tolerance=STATEMENT,
         expected_status="consistent",
-        note="Fig. 3.11 is lost; the sidelobe model (alternating +-1/L over L+1 lags) is the book's "
-        "reconstruction and gives the printed bracket exactly. Sidelobes confined to |t| < tau (the other "
-        "end of the assumed extent) give 1 + 2 tau_c/tau instead.",
+        note="Fig. 3.11 is lost; the sidelobe model (alternating $\\pm 1/L$ over $L+1$ lags) is the book's "
+        "reconstruction and gives the printed bracket exactly. Sidelobes confined to $|t| < \\tau$ (the "
+        "other "
+        "end of the assumed extent) give $1 + 2 \\tau_c/\\tau$ instead.",
         discussed_in=PAGE_ZAKAI,
     ),
     Claim(
         id="ATC10-sec3.9-W-real-code",
         paper="ATC10",
         locator="Eq. (3.9.3)",
-        quantity="W tau_c of a long PSK sequence with good autocorrelation (m-sequence, 127-1023 chips)",
+        quantity="$W \\tau_c$ of a long PSK sequence with good autocorrelation (m-sequence, 127-1023 chips)",
         published=_w_pub,
         unit="",
         compute=w_chip_msequence,
         tolerance=prose("approximately", why="'W ~ (3/4)/tau_c', the symbol read as the word"),
         expected_status="inconsistent",
-        note="The m-sequence's aperiodic sidelobes carry as much energy as the main lobe: W tau_c = 0.563 "
-        "for 1023 chips (confirmed by brute-force integration of the chip waveform, "
-        "w_chip_msequence_oracle), and no m-sequence of 127-1023 chips comes within 10 % of 3/4; the code "
+        note="The m-sequence's aperiodic sidelobes carry as much energy as the main lobe: "
+        "$W \\tau_c = 0.563$ "
+        "for 1023 chips (confirmed by brute-force integration of the chip waveform), "
+        "and no m-sequence of 127-1023 chips comes within 10 % of 3/4; the code "
         "would need an aperiodic sidelobe energy about a third of the m-sequence's (E3-7). Verdict "
         "changed from discrepant: the code is the book's choice of a 'good' sequence.",
         erratum="ATC10-E3-7",
@@ -1289,16 +1307,18 @@ CLAIMS = [
         id="ATC10-sec3.9-power",
         paper="ATC10",
         locator="Sec. 3.9, E(n^2) = N / (3 alpha / tau_c); Sec. 3.1.3 C",
-        quantity="multiple-access noise power in units of N tau_c/alpha for PSK signatures",
+        quantity="multiple-access noise power in units of $N \\tau_c/\\alpha$ for PSK signatures",
         published=POWER_COEFF_PRINTED,
         unit="N tau_c / alpha",
         compute=psk_power_coefficient,
         tolerance=_PSK_POWER_TOL,
         expected_status="consistent",
-        note="Seeded physical simulation: random +-1 interferer codes of L chips (assumed 16-64), uniform "
-        "delays and carrier phases, against a target code with low sidelobes; E(n^2) = (N-1) q b with "
-        "q = 2 L tau_c/alpha. The target's first sidelobe R_1 shifts b by the factor 1 + R_1/2 (up to "
-        "1/(2L)); the tolerance is now the sampling error only (before, the R_1 factor was added to it).",
+        note="Seeded physical simulation: random $\\pm 1$ interferer codes of L chips (assumed 16-64), "
+        "uniform "
+        "delays and carrier phases, against a target code with low sidelobes; $E(n^2) = (N-1) q b$ with "
+        "$q = 2 L \\tau_c/\\alpha$. The target's first sidelobe $R_1$ shifts $b$ by the factor $1 + R_1/2$ "
+        "(up to "
+        "1/(2L)); the tolerance is now the sampling error only (before, the $R_1$ factor was added to it).",
         discussed_in=PAGE_ZAKAI,
     ),
     Claim(
@@ -1312,9 +1332,10 @@ CLAIMS = [
         compute=psk_gaussian_optimistic,
         tolerance=STATEMENT,
         expected_status="consistent",
-        note="Book's signature set: random PSK codes of L chips (assumed 16-64; 1/sqrt(3b) about 8 at "
-        "L = 32) at N = 1e5, tau/alpha = 2e-5; "
-        "best p_f at p_d >= 0.9 from the stratified Monte Carlo (3.5e-5) against ROC_g (1.1e-8).",
+        note="Book's signature set: random PSK codes of L chips (assumed 16-64; $1/\\sqrt{3b}$ about 8 at "
+        "L = 32) at N = 1e5, $\\tau/\\alpha$ = 2e-5; "
+        "best $p_f$ at $p_d \\ge 0.9$ from the stratified Monte Carlo (3.5e-5) against $\\mathrm{ROC}_g$ "
+        "(1.1e-8).",
         discussed_in=PAGE_GAUSS,
     ),
     Claim(
@@ -1327,9 +1348,11 @@ CLAIMS = [
         compute=bounds_tight_at_large_n,
         tolerance=STATEMENT,
         expected_status="discrepant",
-        note="Read at fixed noise power 4/75 (the 1/sqrt(3b) = 5 contour) and theta = 0.5, N = 1e7, "
-        "with 'approach' meaning |ln bound - ln p_f| < 0.1: the Chernoff bound is 1.9 e-folds above "
-        "the exact p_f and the corrected lower bound 8 below. Tight only in the exponent (large deviations).",
+        note="Read at fixed noise power 4/75 (the $1/\\sqrt{3b}$ = 5 contour) and $\\theta = 0.5$, N = 1e7, "
+        "with 'approach' meaning $|\\ln \\mathrm{bound} - \\ln p_f| < 0.1$: the Chernoff bound is 1.9 "
+        "e-folds above "
+        "the exact $p_f$ and the corrected lower bound 8 below. Tight only in the exponent (large "
+        "deviations).",
         erratum="ATC10-E3-11",
         oracle=bounds_tight_gaussian_limit_oracle,
         oracle_tolerance=STATEMENT,

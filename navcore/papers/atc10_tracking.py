@@ -65,6 +65,14 @@ COLUMN_NAMES = {
     "s_all": "1'F(F'F)^-2F'1, all satellites",
     "s_123": "1'F(F'F)^-2F'1, satellites 1,2,3",
 }
+#: the same names with inline math, for the claims' quantities
+_COLUMN_MATH = {
+    "beta": r"$\beta$",
+    "trace_all": r"$\operatorname{tr}\{(F'F)^{-1}\}$, all satellites",
+    "trace_123": r"$\operatorname{tr}\{(F'F)^{-1}\}$, satellites 1,2,3",
+    "s_all": "$1'F(F'F)^{-2}F'1$, all satellites",
+    "s_123": "$1'F(F'F)^{-2}F'1$, satellites 1,2,3",
+}
 #: Table 4.2 as printed (the text; each cell is declared once as a published input below).
 TABLE_4_2: dict[str, dict[str, str]] = {
     "I": {"beta": ".0543", "trace_all": "7.84", "trace_123": "9.39", "s_all": "1.30", "s_123": "5.76"},
@@ -687,7 +695,7 @@ for _ex in EXAMPLES:
                 id=_cid + "-physical",
                 paper="ATC10",
                 locator="Table 4.2",
-                quantity=f"Example {_ex}: {COLUMN_NAMES[_col]}, physical geometry",
+                quantity=f"Example {_ex}: {_COLUMN_MATH[_col]}, physical geometry",
                 published=_pub,
                 unit="",
                 kind="reproduction",
@@ -695,12 +703,12 @@ for _ex in EXAMPLES:
                 tolerance=_tol,
                 expected_status="discrepant",
                 note=(
-                    "Spherical Earth R = 6371 km, synchronous orbit r = 42 164 km (ratio 6.618), aircraft "
-                    "on the surface, F = unit vectors. "
+                    "Spherical Earth $R = 6371$ km, synchronous orbit $r = 42\\,164$ km (ratio 6.618), "
+                    "aircraft on the surface, $F$ = unit vectors. "
                     + (
-                        "Correct rotation-invariant three-satellite term 1'(F3F3')^-1 1."
+                        "Correct rotation-invariant three-satellite term $1'(F_3F_3')^{-1} 1$."
                         if _is_s3
-                        else "beta = K - 1'F(F'F)^-1F'1 (the 'K minus' reading)."
+                        else "$\\beta = K - 1'F(F'F)^{-1}F'1$ (the 'K minus' reading)."
                     )
                 ),
                 erratum=_E1 if _is_s3 else _E2,
@@ -716,7 +724,7 @@ for _ex in EXAMPLES:
                 id=_cid + "-fitted",
                 paper="ATC10",
                 locator="Table 4.2",
-                quantity=f"Example {_ex}: {COLUMN_NAMES[_col]}, fitted radius ratio",
+                quantity=f"Example {_ex}: {_COLUMN_MATH[_col]}, fitted radius ratio",
                 published=_pub,
                 unit="",
                 kind="fit",
@@ -725,16 +733,17 @@ for _ex in EXAMPLES:
                 ],
                 tolerance=_tol,
                 expected_status="inconsistent" if _miss else "consistent",
-                note="Same geometry with r_orbit/R_E fitted to the ten Table 4.2 numbers (9.235); a fit "
+                note="Same geometry with $r_{\\mathrm{orbit}}/R_E$ fitted to the ten Table 4.2 numbers "
+                "(9.235); a fit "
                 "claim, not evidence"
                 + (
-                    "; col. 5 with the printed, frame-dependent 1'(F3'F3)^-1 1 in east-positive ECEF."
+                    "; col. 5 with the printed, frame-dependent $1'(F_3'F_3)^{-1} 1$ in east-positive ECEF."
                     if _is_s3
                     else "."
                 )
                 + (
                     " The one-parameter fit misses this printed digit: no single ratio reproduces every "
-                    "printed digit (the two beta values want ratios the other columns do not allow). "
+                    "printed digit (the two $\\beta$ values want ratios the other columns do not allow). "
                     "Verdict changed from consistent: the old tolerance (0.5 %) was the fit's own "
                     "largest residual; printed digits now."
                     if _miss
@@ -787,7 +796,8 @@ CLAIMS += [
         compute=lambda: best_triplet("I", physical_radius_ratio(), "trace") == (0, 1, 2),
         tolerance=EXACT,
         expected_status="reproduced",
-        note="Smallest tr{(F3'F3)^-1} among all 35 triplets (also largest |det F3| and largest "
+        note="Smallest $\\operatorname{tr}\\{(F_3'F_3)^{-1}\\}$ among all 35 triplets (also largest "
+        "$|\\det F_3|$ and largest "
         "smallest pairwise angle).",
         discussed_in=PAGE_GEOMETRY,
     ),
@@ -801,7 +811,8 @@ CLAIMS += [
         compute=lambda: best_triplet("II", physical_radius_ratio(), "trace") == (0, 1, 2),
         tolerance=EXACT,
         expected_status="discrepant",
-        note="Satellites 2, 3, 6 have tr{(F3'F3)^-1} = 8.5 against 13.6 for 1, 2, 3.",
+        note="Satellites 2, 3, 6 have $\\operatorname{tr}\\{(F_3'F_3)^{-1}\\} = 8.5$ against 13.6 for 1, 2, "
+        "3.",
         erratum=_E6,
         oracle=lambda: _oracle_invariants("II", physical_radius_ratio())["triplet_angle"] == (0, 1, 2),
         oracle_tolerance=EXACT,
@@ -811,7 +822,7 @@ CLAIMS += [
         id="ATC10-sec4.5.4-beta-three-satellites",
         paper="ATC10",
         locator="Sec. 4.5.4",
-        quantity="beta_0 = 0 with three satellites (the clock cannot be estimated)",
+        quantity="$\\beta_0 = 0$ with three satellites (the clock cannot be estimated)",
         published=True,
         unit="statement",
         compute=lambda: all(
@@ -820,7 +831,8 @@ CLAIMS += [
         ),
         tolerance=EXACT,
         expected_status="reproduced",
-        note="True with beta = K - 1'P1 (P = I for K = 3); the printed 'K^-1 1'1' would give 1, not 0.",
+        note="True with $\\beta = K - 1'P1$ ($P = I$ for $K = 3$); the printed $K^{-1} 1'1$ would give 1, "
+        "not 0.",
         discussed_in=PAGE_GEOMETRY,
     ),
     Claim(
@@ -847,8 +859,8 @@ CLAIMS += [
 ]
 
 _TAB3_NAMES = {
-    "alpha": "alpha (Eq. 4.5.32)",
-    "psi": "psi(alpha)",
+    "alpha": "$\\alpha$ (Eq. 4.5.32)",
+    "psi": "$\\psi(\\alpha)$",
     "sd0": "rms error of the least-squares estimate",
     "sdN": "limiting rms error while tracking with all satellites",
     "sdN1": "rms error of the first three-satellite estimate (printed formula)",
@@ -879,7 +891,7 @@ def _table_4_3_tolerance(text: str, column: str) -> Tolerance:
 #: corner of the rounding box: Example I, sigma0 = 50 ns, col. (v) reaches 450 only there.
 _TAB43_INCONSISTENT: dict[tuple[str, float, str], str] = {}
 _TAB43_NOTES: dict[tuple[str, float, str], str] = {
-    ("I", 50.0, "sdN1"): " Within the printed digits only when several Table 4.2 entries and the psi "
+    ("I", 50.0, "sdN1"): " Within the printed digits only when several Table 4.2 entries and the $\\psi$ "
     "reading sit at the edges of their rounding together (the band's corners reach 449.7 against "
     "450 +- 0.5; one input at a time reaches 449.4).",
 }
@@ -895,7 +907,7 @@ for (_ex, _s0), _row in TABLE_4_3.items():
                 id=f"ATC10-tab4.3-ex{_ex}-s{int(_s0)}-{_col}",
                 paper="ATC10",
                 locator="Table 4.3",
-                quantity=f"Example {_ex}, sigma0 = {int(_s0)} ns: {_TAB3_NAMES[_col]}",
+                quantity=f"Example {_ex}, $\\sigma_0$ = {int(_s0)} ns: {_TAB3_NAMES[_col]}",
                 published=_pub,
                 unit="" if _ci < 2 else "ft",
                 kind="reproduction",
@@ -903,15 +915,15 @@ for (_ex, _s0), _row in TABLE_4_3.items():
                 tolerance=_table_4_3_tolerance(_text, _col),
                 expected_status="inconsistent" if _bad else "consistent",
                 note="From Table 4.2 (printed, plus the assumed unrounded offsets within half its last "
-                "digit: the band) with sigma = 50 ns, c = 1 ft/ns"
+                "digit: the band) with $\\sigma$ = 50 ns, $c$ = 1 ft/ns"
                 + (
-                    ", exact alpha and psi (real cube roots)"
+                    ", exact $\\alpha$ and $\\psi$ (real cube roots)"
                     if _ci < 3
-                    else ", and psi as the paper read it off Fig. 4.1 (col. ii as printed, "
+                    else ", and $\\psi$ as the paper read it off Fig. 4.1 (col. ii as printed, "
                     "with its rounding in the band)"
                 )
                 + (
-                    "; gamma_{N+1} = [psi + (27/8) alpha 2/psi]/beta with the printed S3 = "
+                    "; $\\gamma_{N+1} = [\\psi + (27/8) \\alpha (2/\\psi)]/\\beta$ with the printed $S_3$ = "
                     + TABLE_4_2[_ex]["s_123"]
                     if _col == "sdN1"
                     else ""
@@ -932,7 +944,7 @@ for (_ex, _s0), _row in TABLE_4_3.items():
             id=_cid,
             paper="ATC10",
             locator="Table 4.3",
-            quantity=f"Example {_ex}, sigma0 = {int(_s0)} ns: rms error of the first three-satellite "
+            quantity=f"Example {_ex}, $\\sigma_0$ = {int(_s0)} ns: rms error of the first three-satellite "
             "estimate, rotation-invariant clock term",
             published=float(_row[4]),
             unit="ft",
@@ -940,8 +952,9 @@ for (_ex, _s0), _row in TABLE_4_3.items():
             compute=lambda ex=_ex, sin=_sin: corrected_first_three_satellite_sd(ex, getattr(IN, sin)),
             tolerance=_table_4_3_tolerance(_row[4], "sdN1"),
             expected_status="inconsistent",
-            note="Fitted-ratio geometry with S3 = 1'(F3F3')^-1 1; steady-state Eq. 4.5.27 at m = 1. The "
-            "printed value needs the frame-dependent S3 of the printed Eq. 4.5.30 (erratum E4-1, "
+            note="Fitted-ratio geometry with $S_3 = 1'(F_3F_3')^{-1} 1$; steady-state Eq. 4.5.27 at $m = "
+            "1$. The "
+            "printed value needs the frame-dependent $S_3$ of the printed Eq. 4.5.30 (erratum E4-1, "
             "confirmed by the Monte Carlo of the full tracker on the page); the invariant term would have "
             "to be 4-12 times larger "
             "(printed 5.76/14.3 against 1.36/1.17). Verdict changed from discrepant: the geometry "
@@ -956,7 +969,8 @@ CLAIMS += [
         id="ATC10-sec4.6-rule1-exII",
         paper="ATC10",
         locator="Sec. 4.6, rule (1)",
-        quantity="Example II (small beta): tracking significantly reduces the error when sigma0 <~ sigma",
+        quantity="Example II (small $\\beta$): tracking significantly reduces the error when "
+        "$\\sigma_0 \\lesssim \\sigma$",
         published=True,
         unit="statement",
         compute=lambda: (
@@ -966,7 +980,8 @@ CLAIMS += [
         tolerance=EXACT,
         expected_status="consistent",
         note="'Significant' read as: tracking leaves at most half of the mean-square position error "
-        "(assumed, 0.3-0.6); sd_N^2 / sd_0^2 = 0.19 at sigma0 = sigma, 0.05 at sigma0 = 0.1 sigma. "
+        "(assumed, 0.3-0.6); $sd_N^2 / sd_0^2 = 0.19$ at $\\sigma_0 = \\sigma$, 0.05 at $\\sigma_0 = 0.1 "
+        "\\sigma$. "
         "Verdict changed from reproduced: the reading of 'significantly' is an assumption.",
         discussed_in=PAGE_EXAMPLES,
     ),
@@ -974,7 +989,7 @@ CLAIMS += [
         id="ATC10-sec4.6-rule2-exI",
         paper="ATC10",
         locator="Sec. 4.6, rule (2)",
-        quantity="Example I: the reduction is significant only when sigma0 <~ 0.1 sigma",
+        quantity="Example I: the reduction is significant only when $\\sigma_0 \\lesssim 0.1 \\sigma$",
         published=True,
         unit="statement",
         compute=lambda: (
@@ -984,7 +999,7 @@ CLAIMS += [
         ),
         tolerance=EXACT,
         expected_status="consistent",
-        note="Same reading: sd_N^2/sd_0^2 = 0.32 at sigma0 = 5 ns, 0.55 at 50 ns; true for thresholds "
+        note="Same reading: $sd_N^2/sd_0^2 = 0.32$ at $\\sigma_0$ = 5 ns, 0.55 at 50 ns; true for thresholds "
         "0.32-0.55, false at the ends of the assumed 0.3-0.6. Verdict changed from reproduced: the "
         "reading of 'significantly' is an assumption.",
         discussed_in=PAGE_EXAMPLES,
@@ -993,7 +1008,7 @@ CLAIMS += [
         id="ATC10-sec4.6-rule3-jump-from-clock-term",
         paper="ATC10",
         locator="Sec. 4.6, rule (3)",
-        quantity="the jump from sd_N to sd_{N+1} is due largely to the increase of 1'F(F'F)^-2F'1",
+        quantity="the jump from $sd_N$ to $sd_{N+1}$ is due largely to the increase of $1'F(F'F)^{-2}F'1$",
         published=True,
         unit="statement",
         compute=lambda: all(
@@ -1002,10 +1017,11 @@ CLAIMS += [
         ),
         tolerance=EXACT,
         expected_status="inconsistent",
-        note="'Largely' read as: more than half (assumed, 0.4-0.7) of the mean-square jump at sigma0 = "
-        "5 ns. With the invariant S3 the clock term hardly grows (1.30 -> 1.36, 1.16 -> 1.17); the jump "
-        "comes from tr and the lost measurement update, so no reading of 'largely' above a few per cent "
-        "holds. With the printed S3 (E4-1) the statement would hold. Verdict changed from discrepant: "
+        note="'Largely' read as: more than half (assumed, 0.4-0.7) of the mean-square jump at $\\sigma_0$ = "
+        "5 ns. With the invariant $S_3$ the clock term hardly grows (1.30 to 1.36, 1.16 to 1.17); the jump "
+        "comes from $\\operatorname{tr}$ and the lost measurement update, so no reading of 'largely' above "
+        "a few per cent "
+        "holds. With the printed $S_3$ (E4-1) the statement would hold. Verdict changed from discrepant: "
         "the geometry reads the fitted radius ratio and the reading of 'largely' is assumed.",
         erratum=_E1,
         discussed_in=PAGE_EXAMPLES,
@@ -1019,16 +1035,17 @@ for _ex, _pub_s in (("I", 30.0), ("II", 60.0)):
             id=f"ATC10-sec4.6-rule4-outage-ex{_ex}",
             paper="ATC10",
             locator="Sec. 4.6, rule (4)",
-            quantity=f"Example {_ex}, sigma0 = 0.1 sigma: time the three-satellite error stays acceptable",
+            quantity=f"Example {_ex}, $\\sigma_0 = 0.1 \\sigma$: time the three-satellite error stays "
+            "acceptable",
             published=_pub_s,
             unit="s",
             kind="fit",
             compute=lambda ex=_ex: acceptable_outage_s(ex, IN.sigma0_low_ns, _printed_inputs(ex)),
             tolerance=prose("about", why="'from about 30 to 60 seconds'"),
             expected_status="consistent",
-            note="The paper gives no threshold. The factor 1.8 x the all-satellite least-squares rms "
-            "(508 ft, 1637 ft) was fitted to these two numbers (printed Table 4.2 with the printed S3, "
-            "steady state before the drop, tau_bar = 1 s): a fit claim, not evidence.",
+            note="The paper gives no threshold. The factor 1.8 $\\times$ the all-satellite least-squares rms "
+            "(508 ft, 1637 ft) was fitted to these two numbers (printed Table 4.2 with the printed $S_3$, "
+            "steady state before the drop, $\\bar\\tau$ = 1 s): a fit claim, not evidence.",
             discussed_in=PAGE_EXAMPLES,
         )
     )
@@ -1039,16 +1056,18 @@ for _ex, _pub_s in (("I", 30.0), ("II", 60.0)):
             id=_cid,
             paper="ATC10",
             locator="Sec. 4.6, rule (4)",
-            quantity=f"Example {_ex}, sigma0 = 0.1 sigma: acceptable three-satellite time, invariant S3",
+            quantity=f"Example {_ex}, $\\sigma_0 = 0.1 \\sigma$: acceptable three-satellite time, invariant "
+            "$S_3$",
             published=_pub_s,
             unit="s",
             kind="reproduction",
             compute=lambda ex=_ex: acceptable_outage_s(ex, IN.sigma0_low_ns, _corrected_inputs(ex)),
             tolerance=prose("about", why="'from about 30 to 60 seconds'"),
             expected_status="inconsistent",
-            note="Same fitted threshold, fitted geometry with S3 = 1'(F3F3')^-1 1: the coasting time is 2-5 "
-            "times the printed one (confirmed by a 4000-run Monte Carlo of the tracker, "
-            "acceptable_outage_mc_s); the printed times need the frame-dependent S3 of E4-1. Verdict "
+            note="Same fitted threshold, fitted geometry with $S_3 = 1'(F_3F_3')^{-1} 1$: the coasting time "
+            "is "
+            "2-5 times the printed one (confirmed by a 4000-run Monte Carlo of the tracker); the printed "
+            "times need the frame-dependent $S_3$ of E4-1. Verdict "
             "changed from discrepant: it reads two fitted inputs (radius ratio, threshold factor).",
             erratum=_E1,
             discussed_in=PAGE_EXAMPLES,
@@ -1060,32 +1079,33 @@ CLAIMS += [
         id="ATC10-eq4.5.38-coefficient",
         paper="ATC10",
         locator="Eq. (4.5.38)",
-        quantity="coefficient (3/2) 2^(1/3) of the small-alpha approximation of psi",
+        quantity="coefficient $(3/2)\\, 2^{1/3}$ of the small-$\\alpha$ approximation of $\\psi$",
         published=1.89,
         unit="",
         kind="reproduction",
         compute=lambda: 1.5 * float(np.cbrt(2.0)),
         tolerance=printed("1.89")[1],
         expected_status="reproduced",
-        note="1.5 x 2^(1/3) = 1.88988.",
+        note="$1.5 \\times 2^{1/3} = 1.88988$.",
         discussed_in=PAGE_TRACKER,
     ),
     Claim(
         id="ATC10-sec4.5.4-convergence-rule",
         paper="ATC10",
         locator="Sec. 4.5.4",
-        quantity="gamma_n comes within 10 % of its limit in approximately 2.3/psi - 1 steps: the ratio "
-        "estimate / recursion of the number of terms n + 1 farthest from 1 in the six cases",
+        quantity="$\\gamma_n$ comes within 10 % of its limit in approximately $2.3/\\psi - 1$ steps: the "
+        "ratio estimate / recursion of the number of terms $n + 1$ farthest from 1 in the six cases",
         published=1.0,
         unit="ratio",
         kind="statement",
         compute=convergence_rule_worst_ratio,
         tolerance=prose("approximately", why="'approximately 2.3/psi - 1' on the number of terms n + 1"),
         expected_status="discrepant",
-        note="'Approximately' read with the prose table (+-10 %) on the number of terms n + 1, in the six "
-        "cases of Table 4.3 (printed beta). The recursion converges about twice as fast "
-        "(10/2/0/25/5/1 steps against 22/4.7/1.5/55/12/2.6): the estimate treats gamma_n as the "
-        "geometric series s_n, whose ratio the recursion does not have. Verdict changed from "
+        note="'Approximately' read with the prose table ($\\pm$10 %) on the number of terms $n + 1$, in the "
+        "six "
+        "cases of Table 4.3 (printed $\\beta$). The recursion converges about twice as fast "
+        "(10/2/0/25/5/1 steps against 22/4.7/1.5/55/12/2.6): the estimate treats $\\gamma_n$ as the "
+        "geometric series $s_n$, whose ratio the recursion does not have. Verdict changed from "
         "consistent: 'about' was read as 'within a factor 3', which no table word allows.",
         erratum=_E5,
         oracle=_oracle_convergence_rule_worst_ratio,
@@ -1098,13 +1118,14 @@ CLAIMS += [
         id="ATC10-sec4.5.4-steps-formula-sign",
         paper="ATC10",
         locator="Sec. 4.5.4",
-        quantity="the printed n = 1/Log(1 - psi) - 1 gives the number of steps",
+        quantity="the printed $n = 1/\\mathrm{Log}(1 - \\psi) - 1$ gives the number of steps",
         published=True,
         unit="statement",
         compute=_printed_steps_formula_positive,
         tolerance=EXACT,
         expected_status="discrepant",
-        note="1/log10(1 - psi) is negative for 0 < psi < 1: a sign is lost (-1/log10(1 - psi) - 1).",
+        note="$1/\\log_{10}(1 - \\psi)$ is negative for $0 < \\psi < 1$: a sign is lost "
+        "($-1/\\log_{10}(1 - \\psi) - 1$).",
         erratum=_E5,
         oracle=_brute_force_steps_positive,
         oracle_tolerance=EXACT,
@@ -1137,12 +1158,15 @@ ERRATA += [
         paper="ATC10",
         kind="inconsistent-numbers",
         locator="Table 4.2 (from Table 4.1)",
-        printed="beta = .0543/.00355, tr = 7.84/3.99 (all), 9.39/14.9 (1,2,3), S = 1.30/1.16",
-        finding="A synchronous orbit (42 164 km) over a spherical Earth (6371 km) gives beta = .0658/.00425, "
-        "tr = 7.19/3.68 and 8.64/13.6, S = 1.33/1.18; the printed values need an orbit radius of 9.235 "
+        printed="$\\beta$ = .0543/.00355, $\\operatorname{tr}$ = 7.84/3.99 (all), 9.39/14.9 (1,2,3), "
+        "$S$ = 1.30/1.16",
+        finding="A synchronous orbit (42 164 km) over a spherical Earth (6371 km) gives $\\beta$ = "
+        ".0658/.00425, $\\operatorname{tr}$ = 7.19/3.68 and 8.64/13.6, $S$ = 1.33/1.18; the printed values "
+        "need an orbit radius of 9.235 "
         "Earth radii instead of 6.618. Example I satellite 1 is then outside the 45 deg cone (47.2 deg).",
-        evidence="Geometry built twice (navcore on a sphere; pymap3d azimuth/elevation with QR/SVD "
-        "invariants); a one-parameter fit of r/R_E reproduces all ten numbers to 0.43 %. WGS-84, aircraft "
+        evidence="Geometry built twice (navcore on a sphere; an independent geodesy library's "
+        "azimuth/elevation with QR/SVD invariants); a one-parameter fit of $r/R_E$ reproduces all ten "
+        "numbers to 0.43 %. WGS-84, aircraft "
         "altitude and coordinate rounding move the invariants by < 1 %.",
         claims=(*_e2_claims, "ATC10-sec4.6-cone-exI"),
         discussed_in=PAGE_GEOMETRY,

@@ -137,8 +137,8 @@ _C17 = printed("20", why="the paper prints an integer bound")
 _ABOUT = prose("about", why="'about 1 km and 15 m/s after 3 minutes', read per horizontal axis")
 
 _NOTE_INIT = (
-    "Exact 1-sigma of the linearised model (no sampling error): covariance analysis with the SP "
-    "Sec. 2.6 engine (psi-angle model, Earth and transport rate), 1 s steps, the Table 1 IMU and "
+    "Exact $1\\sigma$ of the linearised model (no sampling error): covariance analysis with the SP "
+    "Sec. 2.6 engine ($\\psi$-angle model, Earth and transport rate), 1 s steps, the Table 1 IMU and "
     "flight. Initialisation: levelling correlated with the accelerometer bias, GPS heading with "
     "the assumed crab angle (0.5 deg, range 0.1-1), gyro bias calibrated at rest over the assumed "
     "averaging time (300 s, range 150-600); the band spans both ranges."
@@ -174,12 +174,13 @@ CLAIMS = [
         compute=lambda: float(standalone_sigma("misalignment", initialise=False)[2]),
         tolerance=_C17[1],
         expected_status="inconsistent",
-        note="Exact 1-sigma of the linearised model (SP Sec. 2.6 engine) with no initialisation: "
+        note="Exact $1\\sigma$ of the linearised model (SP Sec. 2.6 engine) with no initialisation: "
         "nominal attitude, only the assumed crab angle (0.1-1 deg) unknown, the full Table 1 gyro "
         "bias (360 deg/h) as a random constant: about 18 deg across the band. Exceeding 20 deg "
-        "would need an initial heading uncertainty of about 9 deg (1-sigma) instead of the assumed "
-        "0.1-1 deg, or a gyro bias above 400 deg/h (KZL-E7; the closed form sqrt((b t)^2 + N^2 t + "
-        "sigma0^2) agrees to 0.1 %). The Monte Carlo RMS is KZL-sec3.6-heading-without-init. Verdict changed "
+        "would need an initial heading uncertainty of about 9 deg ($1\\sigma$) instead of the assumed "
+        "0.1-1 deg, or a gyro bias above 400 deg/h (KZL-E7; the closed form "
+        "$\\sqrt{(b t)^2 + N^2 t + \\sigma_0^2}$ agrees to 0.1 %). The Monte Carlo RMS is "
+        "KZL-sec3.6-heading-without-init. Verdict changed "
         "from "
         "discrepant: the claim reads an assumed input whose range is not every admissible value.",
         erratum="KZL-E7-uncalibrated-heading",
@@ -215,8 +216,8 @@ CLAIMS = [
         compute=lambda: float(standalone_sigma("velocity")[0]),
         tolerance=_ABOUT,
         expected_status="consistent",
-        note=_NOTE_INIT + " Angle random walk (g N sqrt(t^3/3)) and the calibration residual of the "
-        "gyro bias (g b t^2/2, b = N / sqrt(T_init)) add in quadrature. The Monte Carlo RMS is "
+        note=_NOTE_INIT + " Angle random walk ($g N \\sqrt{t^3/3}$) and the calibration residual of the "
+        "gyro bias ($g b t^2/2$, $b = N / \\sqrt{T_{init}}$) add in quadrature. The Monte Carlo RMS is "
         "KZL-fig5-ins-velocity. The tolerance was the printed digit plus the spread over an assumed "
         "averaging time; it is now the prose 'about' and the averaging time is an assumed input "
         "whose band decides.",

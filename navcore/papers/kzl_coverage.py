@@ -301,7 +301,8 @@ CLAIMS = [
         compute=baseline_angle_arcsec,
         tolerance=_order,
         expected_status="consistent",
-        note="dh = R sin(theta) d(alpha) with R sin(theta) = h tan(theta) (flat earth): about 0.7 arcsec "
+        note="$dh = R \\sin\\theta\\, d\\alpha$ with $R \\sin\\theta = h \\tan\\theta$ (flat earth): about "
+        "0.7 arcsec "
         "at 30 deg, 0.4-1.1 arcsec over 20-45 deg.",
         discussed_in=PAGE1,
     ),
@@ -363,14 +364,14 @@ CLAIMS = [
         compute=correlation_after_10s,
         tolerance=EXACT,
         expected_status="consistent",
-        note="exp(-10/tau): 0.007 for tau = 2 s, 5e-5 to 0.14 for tau = 1-5 s.",
+        note="$\\exp(-10/\\tau)$: 0.007 for $\\tau = 2$ s, 5e-5 to 0.14 for $\\tau$ = 1-5 s.",
         discussed_in=PAGE1,
     ),
     Claim(
         id="KZL-eq6-first-order",
         paper="KZL",
         locator="Eq. (6)",
-        quantity="$A \\approx I + FT$: 180 s stand-alone north-position sigma with the first-order "
+        quantity="$A \\approx I + FT$: 180 s stand-alone north-position $\\sigma$ with the first-order "
         "transition over that with $e^{FT}$, at the Table 1 GPS interval",
         published=1.0,
         unit="",
@@ -395,7 +396,8 @@ CLAIMS = [
             reason="a numerical identity: RK4 at 1 ms steps, 1e-6 deg", abs=1e-6, policy="exact"
         ),
         expected_status="reproduced",
-        note="Constant body rate (0.1, -0.2, 0.3) rad/s from the Table 1 attitude, omega_in neglected as "
+        note="Constant body rate (0.1, -0.2, 0.3) rad/s from the Table 1 attitude, $\\omega_{in}$ neglected "
+        "as "
         "the paper does.",
         discussed_in=PAGE1,
     ),
@@ -413,8 +415,8 @@ CLAIMS = [
             reason="central differences at 1e-6 rad: 1e-6 relative to g", abs=1e-6, policy="exact"
         ),
         expected_status="reproduced",
-        note="Error = computed - true, R_hat = e^{[d x]} R; Table 1 attitude, specific force (0.5, -0.3, "
-        "-g) m/s^2 in NED.",
+        note="Error = computed - true, $\\hat R = e^{[d \\times]} R$; Table 1 attitude, specific force "
+        "(0.5, -0.3, $-g$) m/s$^2$ in NED.",
         discussed_in=PAGE2,
     ),
     Claim(
@@ -466,8 +468,8 @@ CLAIMS = [
         erratum="KZL-E5-dd-typos",
         oracle=_eq17_oracle,
         oracle_tolerance=EXACT,
-        note="Table 1 sky, first two satellites, 2 m baselines along body x and y. With l_02 twice the "
-        "rows coincide (rank 1); with l_01 and l_02 the rank is 2 (KZL-eq17-rank).",
+        note="Table 1 sky, first two satellites, 2 m baselines along body x and y. With $l_{02}$ twice the "
+        "rows coincide (rank 1); with $l_{01}$ and $l_{02}$ the rank is 2 (KZL-eq17-rank).",
         discussed_in=PAGE2,
     ),
     Claim(

@@ -392,7 +392,8 @@ ERRATA = [
         "form drops $\\delta\\psi$, $\\delta b_\\omega$ and the clock",
         finding="The first DD row uses $l_{01}$; Eq. (14) has 6 rows for two satellites, matching "
         "$2 + 4 (\\nu - 1)$; O is the zero and I the identity matrix.",
-        evidence="Row counts from the builders in navcore.gnss.carrier_phase; with $l_{02}$ in both rows "
+        evidence="Row counts from the library's carrier-phase measurement builders; with $l_{02}$ in both "
+        "rows "
         "the DD attitude block of one satellite pair has rank 1 instead of 2.",
         claims=("KZL-eq17-printed-rank",),
         discussed_in=PAGE2,
@@ -407,8 +408,8 @@ ERRATA = [
         finding="An n-frame rotation multiplies $q_b^n$ from the left: $q^{n,+} = q^n \\otimes q^{n,-}$. The "
         "printed order rotates about body axes; at the Table 1 heading of 90 deg a 2.29 deg "
         "error leaves a 1.58 deg residual.",
-        evidence="navcore.estimation.ekf_ins_gnss.correct_attitude both ways, checked with scipy's "
-        "Rotation (checked by the library's tests).",
+        evidence="The filter's attitude correction applied in both orders and compared with an independent "
+        "rotation library (checked by the library's tests).",
         claims=("KZL-qcorr",),
         discussed_in=PAGE2,
     ),
@@ -442,7 +443,8 @@ CLAIMS = [
         compute=table1_heading_deg,
         tolerance=printed("90")[1],
         expected_status="consistent",
-        note="atan2(v_E, v_N) with v_ENU = [110, 0, 0] m/s, the Table 1 heading: Eq. (4) on two printed "
+        note="$\\operatorname{atan2}(v_E, v_N)$ with $v_{ENU}$ = [110, 0, 0] m/s, the Table 1 heading: Eq. "
+        "(4) on two printed "
         "values of Table 1, a check of the table's consistency. Verdict changed from reproduced: "
         "arithmetic on printed values is a cross-check.",
         discussed_in=PAGE1,
@@ -496,7 +498,8 @@ CLAIMS = [
         compute=lambda: neglected_rates_deg_per_h() < 0.1 * kzl_imu().gyro_bias / DEG_PER_H,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="'Negligible' read as below a tenth: |omega_in| = 20.7 deg/h against 360 deg/h (factor 17). "
+        note="'Negligible' read as below a tenth: $|\\omega_{in}|$ = 20.7 deg/h against 360 deg/h (factor "
+        "17). "
         "The neglected Coriolis term (about 1900 micro-g) is NOT small against the 2400 micro-g "
         "accelerometer bias; inside the GPS-aided filter it is absorbed by the accelerometer-bias "
         "states. Verdict changed from consistent: the computation reads published inputs only.",
@@ -525,7 +528,7 @@ CLAIMS = [
         compute=_row_counts_eq13,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="Counted from the stacked matrix built by navcore.gnss.carrier_phase.",
+        note="Counted from the stacked measurement matrix built by the carrier-phase model.",
         discussed_in=PAGE2,
     ),
     Claim(
@@ -555,7 +558,7 @@ CLAIMS = [
         expected_status="reproduced",
         note="LTI observability rank in straight and level flight at the Table 1 attitude: code and "
         "delta range alone never reach 17 (heading and z-gyro bias are unobservable); with Euler "
-        "attitude or DD phases the rank is 17 for nu >= 4.",
+        "attitude or DD phases the rank is 17 for $\\nu \\ge 4$.",
         discussed_in=PAGE2,
     ),
     Claim(

@@ -214,8 +214,8 @@ CLAIMS = [
         note="RMS over the runs with the uncompensated Table 1 gyro bias (360 deg/h, random constant); "
         "the only assumed input read is the crab angle (0.1-1 deg), and across it the RMS stays near "
         "19 deg, below 19.5. To exceed 20 deg the unpublished initial heading uncertainty would have "
-        "to be about 6 deg (1-sigma) instead of 0.1-1 deg, or the gyro bias above about 400 deg/h "
-        "(KZL-E7; closed form sqrt((b t)^2 + N^2 t + sigma0^2) = 18 deg). Verdict changed from "
+        "to be about 6 deg ($1\\sigma$) instead of 0.1-1 deg, or the gyro bias above about 400 deg/h "
+        "(KZL-E7; closed form $\\sqrt{(b t)^2 + N^2 t + \\sigma_0^2}$ = 18 deg). Verdict changed from "
         "discrepant: the claim reads an assumed input whose range is not every admissible value.",
         erratum="KZL-E7-uncalibrated-heading",
         discussed_in=PAGE3,
@@ -232,7 +232,7 @@ CLAIMS = [
         compute=_heading_largest_standalone,
         tolerance=EXACT,
         expected_status="consistent",
-        note="Holds in the ensemble 1-sigma (0.99 deg heading vs 0.86 deg tilt at 180 s) only because the "
+        note="Holds in the ensemble $1\\sigma$ (0.99 deg heading vs 0.86 deg tilt at 180 s) only because the "
         "assumed initial heading uncertainty (0.5 deg crab) exceeds the levelling tilt error; the gyro "
         "errors grow alike on all axes. The 30-run RMS cannot resolve the difference, and without "
         "initialisation all three angles reach about 19-21 deg. " + _MC_NOTE,
@@ -250,8 +250,8 @@ CLAIMS = [
         compute=lambda: standalone_per_axis("pos_err") / 1000.0,
         tolerance=_ABOUT,
         expected_status="consistent",
-        note="Per-horizontal-axis RMS over runs of the initialised INS; the horizontal norm is sqrt(2) "
-        "larger (about 1.4 km). Driven by the angle random walk (g N sqrt(t^5/20) = 0.83 km) and the "
+        note="Per-horizontal-axis RMS over runs of the initialised INS; the horizontal norm is $\\sqrt{2}$ "
+        "larger (about 1.4 km). Driven by the angle random walk ($g N \\sqrt{t^5/20}$ = 0.83 km) and the "
         "calibration residual of the gyro bias. " + _MC_NOTE + " Verdict changed from reproduced: "
         "the averaging time is an assumed input (150-600 s).",
         discussed_in=PAGE3,
@@ -344,14 +344,15 @@ CLAIMS = [
         aliases=("KZL-c21",),
         paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 4",
-        quantity="DD phases: comparable with >= 4 satellites, robust and accurate with 2 or 3",
+        quantity="DD phases: comparable with $\\ge 4$ satellites, robust and accurate with 2 or 3",
         published=True,
         unit="statement",
         kind="statement",
         compute=_dd_robust_with_2_3,
         tolerance=EXACT,
         expected_status="consistent",
-        note="Heading RMS with DD within 1.5x of the attitude-aided filter with >= 4 satellites, lower with "
+        note="Heading RMS with DD within 1.5$\\times$ of the attitude-aided filter with $\\ge 4$ "
+        "satellites, lower with "
         "2-3, and every attitude RMS below 0.5 deg after 10 s. Depends on the assumed noises (3 mm "
         "phase, 0.17 deg Euler). " + _MC_NOTE + " Verdict changed from reproduced: the Monte Carlo "
         "reads assumed inputs.",
@@ -405,7 +406,7 @@ CLAIMS = [
         compute=pointing_accuracy_deg,
         tolerance=prose("about", why="'about 0.5 deg pointing accuracy'"),
         expected_status="consistent",
-        note="Largest TC + DD attitude RMS or filter 1-sigma on any axis after 10 s, with 2-8 "
+        note="Largest TC + DD attitude RMS or filter $1\\sigma$ on any axis after 10 s, with 2-8 "
         "satellites. Was a statement (everything below 0.5 deg); now the number itself. " + _MC_NOTE,
         discussed_in=PAGE3,
     ),

@@ -219,7 +219,8 @@ CLAIMS = [
         compute=table_2_7_monotone,
         tolerance=EXACT,
         expected_status="consistent",
-        note="Checked per satellite on the printed table (TC10 >= LC1.0 >= TC1.0 >= TC0.5 >= TC0.2), the "
+        note="Checked per satellite on the printed table (TC10 $\\ge$ LC1.0 $\\ge$ TC1.0 $\\ge$ TC0.5 "
+        "$\\ge$ TC0.2), the "
         "ordering the text attributes to better calibration. Verdict changed from reproduced: a check on "
         "printed numbers is a cross-check.",
     ),
@@ -269,7 +270,7 @@ CLAIMS = [
         id="SP-sec2.6.2-outside-1sigma",
         paper="SP",
         locator="Sec. 2.6.2",
-        quantity="probability that the signal lies outside the 1-sigma search bounds",
+        quantity="probability that the signal lies outside the $1\\sigma$ search bounds",
         published=_p32[0],
         unit="%",
         compute=lambda: 100.0 * probability_outside_sigma_box(IN.search_dimensions, 1.0),

@@ -586,7 +586,8 @@ CLAIMS = [
         compute=lambda: power_ratio_from_db(20.0),
         tolerance=EXACT,
         expected_status="consistent",
-        note="10^(20/10) = 100: the definition of the decibel applied to the printed 20 dB. Verdict changed "
+        note="$10^{20/10} = 100$: the definition of the decibel applied to the printed 20 dB. Verdict "
+        "changed "
         "from reproduced: arithmetic on printed numbers is a cross-check.",
     ),
     Claim(

@@ -465,7 +465,7 @@ def _range_rate_within_cell() -> bool:
 
 _CAL = (
     "Jammer flyby modelled on the page: free-space jammer power, elevation-dependent antenna "
-    "gain, effective C/N0 against the Sec. 2.5 thresholds (code 18/21 dB-Hz, carrier 19/22 dB-Hz "
+    "gain, effective $C/N_0$ against the Sec. 2.5 thresholds (code 18/21 dB-Hz, carrier 19/22 dB-Hz "
     "or the 90-deg jitter limit of the loop bandwidth); the jammer ERP is calibrated to the "
     "loosely coupled 20-min blackout (a fit); antenna pattern (+3 dBic zenith, -5 dBic horizon "
     "with a band of -10 to -2 dBic, -10 dBic towards the jammer), P(Y) code at -163 dBW, Q = 2, "
@@ -613,7 +613,7 @@ CLAIMS = [
         compute=_range_rate_within_cell,
         tolerance=EXACT,
         expected_status="consistent",
-        note="1-sigma range-rate uncertainty along each line of sight (velocity, clock drift and "
+        note="$1\\sigma$ range-rate uncertainty along each line of sight (velocity, clock drift and "
         "range-rate bias of the true covariance) at the sample before each code reacquisition, all "
         "systems and satellites." + _FIT + " " + _CAL,
         discussed_in=PAGE,

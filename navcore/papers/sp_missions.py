@@ -269,9 +269,10 @@ _GRADE_NOTE = (
     "the assumed latitude (45 deg, band 30-60 deg), gyrocompass alignment (tilt cancels the "
     "accelerometer bias, heading the east gyro drift), horizontal channels, every Table 2.5 "
     "source (biases, scale factors, misalignments as random constants; random walks as white "
-    "noise with PSD = (table value)^2, deg/h/sqrt(Hz) read as (1/60) deg/sqrt(h)). The paper "
-    "does not define the metric: the 1-h CEP is fitted to the 10 nmi/h label (input "
-    "SP.grades.grade_metric)."
+    "noise with PSD = (table value)$^2$, deg/h/$\\sqrt{\\mathrm{Hz}}$ read as (1/60) "
+    "deg/$\\sqrt{\\mathrm{h}}$). "
+    "The paper does not define the metric: the 1-h CEP is fitted to the 10 nmi/h label (the assumed "
+    "grade metric)."
 )
 
 ERRATA = [
@@ -483,7 +484,7 @@ CLAIMS = [
         compute=_lc_rises_tc_delayed,
         tolerance=EXACT,
         expected_status="consistent",
-        note="Loosely coupled horizontal velocity 1-sigma 60 s after the first code loss exceeds "
+        note="Loosely coupled horizontal velocity $1\\sigma$ 60 s after the first code loss exceeds "
         "1.5 times its value just before, and the tightly coupled one is still below it. " + _MISSION_NOTE,
         discussed_in="sp/21-missions",
     ),
@@ -621,7 +622,9 @@ CLAIMS = [
         compute=_pointing_negligible,
         tolerance=EXACT,
         expected_status="consistent",
-        note="delta r_tgt = delta r + delta alpha x r with the full end covariance of position and "
+        note="$\\delta r_{tgt} = \\delta r + \\delta\\alpha \\times r$ with the full end covariance of "
+        "position "
+        "and "
         "attitude; agreement within 1 % for both grades, for target bearings over half a turn (the "
         "assumed input; the paper gives only the 8 km). The helicopter track, speed and its 30 min "
         "of GPS-aided flight are fixed scenario design.",

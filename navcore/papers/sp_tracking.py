@@ -147,7 +147,7 @@ ERRATA = [
         "and 90 deg follow from 360 deg per 0.3048 m (one cycle per foot). With the L1 carrier "
         "(0.1903 m) the peak is 144.2 deg and a 90 deg limit needs 22.37 rad/s, so every aided "
         "natural frequency of Table 2.6 would be 1.243 times larger.",
-        evidence="Closed-form peak $0.404453\\, R/\\omega_0^2$ and an independent scipy.signal.lsim "
+        evidence="Closed-form peak $0.404453\\, R/\\omega_0^2$ and an independent linear-system "
         "simulation of "
         "$s^3/D(s)$ driven by $R t^2/2$; the wavelength solving peak = 90 deg at 17.67 rad/s is 0.3049 m.",
         claims=("SP-fig2.1-peak-code300", "SP-fig2.1-peak-L1", "SP-fig2.1-peak", "SP-fig2.1-omega0"),
@@ -163,9 +163,10 @@ ERRATA = [
         "$-\\omega_0/2 \\pm j \\sqrt{3}\\, \\omega_0/2$); sin/cos arguments are $(\\sqrt{3}/2)\\, \\omega_0 "
         "t$. With $t^2$ "
         "the expression is not dimensionally consistent and is not the loop's response.",
-        evidence="sympy inverse Laplace transform of $R/((s+\\omega_0)(s^2+\\omega_0 s+\\omega_0^2))$ equals "
+        evidence="A symbolic inverse Laplace transform of $R/((s+\\omega_0)(s^2+\\omega_0 s+\\omega_0^2))$ "
+        "equals "
         "the corrected "
-        "form (difference 0), and a scipy.signal.lsim simulation agrees to 1e-6 relative.",
+        "form (difference 0), and a linear-system simulation agrees to 1e-6 relative.",
         claims=("SP-eq2.u1-closed-form",),
         discussed_in=PAGE,
     ),
@@ -179,7 +180,7 @@ ERRATA = [
         finding="At 17.67 rad/s the step's peak error is about 4 times the jerk's (144 vs 36 deg at L1; "
         "90 vs 23 deg with the paper's conversion): far more than 'slightly'.",
         evidence="Closed-form step and jerk-pulse responses of the same loop (ratio independent of the "
-        "conversion), checked against scipy.signal.lsim in the tests.",
+        "conversion), checked against a linear-system simulation in the tests.",
         claims=("SP-sec2.5-step-vs-jerk",),
         discussed_in=PAGE,
     ),
@@ -214,7 +215,7 @@ CLAIMS = [
         compute=lambda: natural_frequency_for_peak_error(step_deg_s2(IN.foot_per_cycle_m), IN.peak_limit_deg),
         tolerance=_omega[1],
         expected_status="consistent",
-        note="$\\omega_0 = \\sqrt{f_{\\max} R / 90\\,\\mathrm{deg}}$ with R = 6 g in deg/s^2 at the fitted "
+        note="$\\omega_0 = \\sqrt{f_{\\max} R / 90\\,\\mathrm{deg}}$ with $R$ = 6 g in deg/s² at the fitted "
         "360 deg per foot (fitted to "
         "this claim and SP-fig2.1-peak; not evidence). With the L1 carrier the same requirement gives "
         "22.37 rad/s. Verdict changed from reproduced: the conversion is a fit.",
@@ -260,8 +261,9 @@ CLAIMS = [
         compute=closed_form_matches_simulation,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="Compared with a scipy.signal.lsim simulation of E/Theta = s^3/(s^3+2w0 s^2+2w0^2 s+w0^3) "
-        "driven by t^2/2 (Butterworth poles, a3 = b3 = 2); the printed t^2 is an OCR error "
+        note="Compared with a linear-system simulation of "
+        "$E/\\Theta = s^3/(s^3 + 2\\omega_0 s^2 + 2\\omega_0^2 s + \\omega_0^3)$ driven by $t^2/2$ "
+        "(Butterworth poles, $a_3 = b_3 = 2$); the printed $t^2$ is an OCR error "
         "(erratum SP-E-exponent-t2).",
     ),
     Claim(
@@ -276,7 +278,7 @@ CLAIMS = [
         expected_status="reproduced",
         note="Peaks found on a fine time grid (not from the peak factor) for the four aided steps of "
         "Table 2.6 against the 6 g, 18 rad/s unaided loop: equal to 1e-9 relative, because the error is "
-        "R/w0^2 times a function of w0 t.",
+        "$R/\\omega_0^2$ times a function of $\\omega_0 t$.",
     ),
     Claim(
         id="SP-sec2.5-jerk-6g",

@@ -1066,7 +1066,7 @@ CLAIMS = [
         compute=lambda: 100 * IN.sigma_t_large / IN.speed_mps,
         tolerance=APPROX,
         expected_status="consistent",
-        note="Perturbation = the large sigma_T of Sec. IV.D (2 m/s); nominal speed assumed 200 m/s "
+        note="Perturbation = the large $\\sigma_T$ of Sec. IV.D (2 m/s); nominal speed assumed 200 m/s "
         "(100-300).",
         discussed_in=DOCS["III"],
     ),
@@ -1082,7 +1082,8 @@ CLAIMS = [
         compute=lambda: 100 * IN.sigma_t_large / IN.sigma_n,
         tolerance=_c6_tol,
         expected_status="consistent",
-        note="sigma_T = 2 m/s over sigma_N = 0.02 m/s, both printed in Sec. IV.D. Verdict changed from "
+        note="$\\sigma_T = 2$ m/s over $\\sigma_N = 0.02$ m/s, both printed in Sec. IV.D. Verdict changed "
+        "from "
         "reproduced: arithmetic on printed values is a cross-check.",
         discussed_in=DOCS["III"],
     ),
@@ -1103,13 +1104,13 @@ CLAIMS = [
         id="WF-eq9-bound",
         paper="WF",
         locator="Eq. (9)",
-        quantity="|df/dp| <= (f0/c) 2|v|/R for every geometry",
+        quantity="$|\\partial f/\\partial p| \\le (f_0/c)\\, 2|v|/R$ for every geometry",
         published=True,
         unit="statement",
         compute=_eq9_bound_holds,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="2000 seeded random geometries. The exact norm is (f0/c)|v_perp|/R, so the bound is "
+        note="2000 seeded random geometries. The exact norm is $(f_0/c)|v_\\perp|/R$, so the bound is "
         "loose by at least a factor 2.",
         discussed_in=DOCS["III"],
     ),
@@ -1143,11 +1144,11 @@ CLAIMS = [
         relation=">=",
         note="'At least 100 times more effective', read with the exact gradients of Eqs. (8)-(9) over the "
         "Sec. III scenario (assumed speed, altitude and emitter distance: the paper gives none). The "
-        "exact ratio is R/|v_perp| >= R/|v|, "
-        "so it holds on any track with R >= 100 s * |v|. The paper's own argument, R/(2|v|) "
+        "exact ratio is $R/|v_\\perp| \\ge R/|v|$, "
+        "so it holds on any track with $R \\ge$ 100 s $\\cdot |v|$. The paper's own argument, $R/(2|v|)$ "
         "(WF-eq9-velocity-position-ratio), "
         "falls short of 100 on this geometry. Through Eq. (6) the location-error leverage depends on the "
-        "error: a constant vertical velocity error is mostly absorbed by the f0 estimate (page).",
+        "error: a constant vertical velocity error is mostly absorbed by the $f_0$ estimate (page).",
         discussed_in=DOCS["III"],
     ),
     # Section IV.A-C
@@ -1170,8 +1171,8 @@ CLAIMS = [
         oracle_tolerance=Tolerance(
             rel=0.02, reason="the oracle leaves out the accelerometer noise (below 1 % here)", policy="exact"
         ),
-        note="Seeded simulation of the printed recursion (200 paths, 5000 steps, sigma_a = 1e-3 m/s^2, a "
-        "0.5 m/s^2 manoeuvre): its error is about 80 times $\\sqrt{P_{DL}(k/k)}$, because the printed "
+        note="Seeded simulation of the printed recursion (200 paths, 5000 steps, $\\sigma_a$ = 1e-3 m/s², a "
+        "0.5 m/s² manoeuvre): its error is about 80 times $\\sqrt{P_{DL}(k/k)}$, because the printed "
         "innovation "
         "subtracts a velocity from an acceleration (the estimate follows the acceleration). Oracle: the "
         "same recursion as a linear filter, noise-free, by scipy. Was the truth value 'attains Eq. (14)'; "
@@ -1198,7 +1199,7 @@ CLAIMS = [
             why="about 6 sampling standard deviations (sqrt(2/n) of the largest entry) of a sample "
             "cross-covariance",
         ),
-        note="A seeded random 9x9 joint covariance; with P_NG in block (2,3) the matrix is not symmetric "
+        note="A seeded random 9x9 joint covariance; with $P_{NG}$ in block (2,3) the matrix is not symmetric "
         "and not the covariance of the stacked errors. Oracle: the Monte Carlo L-G cross-covariance. Was "
         "a truth value; now the difference itself.",
         discussed_in=DOCS["IV"],
@@ -1244,7 +1245,7 @@ CLAIMS = [
         tolerance=EXACT,
         expected_status="reproduced",
         note="200 seeded random joint covariances (3 estimators, 3 states, correlation uniform in "
-        "[0, 1]) with random z_i in Eq. (22); exact covariance from Eq. (20).",
+        "[0, 1]) with random $z_i$ in Eq. (22); exact covariance from Eq. (20).",
         discussed_in=DOCS["IV"],
     ),
     Claim(
@@ -1275,7 +1276,8 @@ CLAIMS = [
         compute=_remark1_any_sigma,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="sum 1/k_i = 1 for any positive sigma_j, so the remark's range restriction is not needed.",
+        note="$\\sum 1/k_i = 1$ for any positive $\\sigma_j$, so the remark's range restriction is not "
+        "needed.",
         discussed_in=DOCS["IV"],
     ),
     Claim(
@@ -1360,9 +1362,12 @@ CLAIMS = [
         tolerance=_sg_tol,
         expected_status="consistent",
         note="The paper gives no value (and no reference) for the GPS Doppler velocity accuracy it compares "
-        "with: assumed 0.1 m/s per line of sight (0.05-0.2), times f_L1/c. Conversely sigma_G = 1 Hz is "
-        "sigma_G c / f_L1 = 0.19 m/s per line of sight (computed on the page), an order of magnitude above "
-        "sigma_N, which is an integrated INS/GPS accuracy ([3]) and not the quantity meant. Verdict changed "
+        "with: assumed 0.1 m/s per line of sight (0.05-0.2), times $f_{L1}/c$. Conversely $\\sigma_G = 1$ "
+        "Hz is "
+        "$\\sigma_G c / f_{L1} = 0.19$ m/s per line of sight (computed on the page), an order of magnitude "
+        "above "
+        "$\\sigma_N$, which is an integrated INS/GPS accuracy ([3]) and not the quantity meant. Verdict "
+        "changed "
         "from not-reproducible: the book computes it under a stated assumption.",
         discussed_in=DOCS["IVD"],
     ),
@@ -1378,8 +1383,9 @@ CLAIMS = [
         compute=lambda: IN.sigma_l_per_sigma_a * IN.sigma_a_low,
         tolerance=_sL_lo_tol,
         expected_status="consistent",
-        note="Both ends of the printed sigma_L range follow from sigma_L = 200 sigma_a and the printed "
-        "sigma_a range. Verdict changed from reproduced: arithmetic on printed values is a cross-check.",
+        note="Both ends of the printed $\\sigma_L$ range follow from $\\sigma_L = 200 \\sigma_a$ and the "
+        "printed "
+        "$\\sigma_a$ range. Verdict changed from reproduced: arithmetic on printed values is a cross-check.",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
@@ -1394,8 +1400,9 @@ CLAIMS = [
         compute=lambda: IN.sigma_l_per_sigma_a * IN.sigma_a_high,
         tolerance=_sL_hi_tol,
         expected_status="consistent",
-        note="Both ends of the printed sigma_L range follow from sigma_L = 200 sigma_a and the printed "
-        "sigma_a range. Verdict changed from reproduced: arithmetic on printed values is a cross-check.",
+        note="Both ends of the printed $\\sigma_L$ range follow from $\\sigma_L = 200 \\sigma_a$ and the "
+        "printed "
+        "$\\sigma_a$ range. Verdict changed from reproduced: arithmetic on printed values is a cross-check.",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
@@ -1480,7 +1487,7 @@ CLAIMS = [
         compute=lambda: IN.sigma_l_per_sigma_a * sigma_a_example(),
         tolerance=_c17_tol,
         expected_status="consistent",
-        note="sigma_L = 200 sigma_a = 0.196 m/s, from printed values (and g). Verdict changed from "
+        note="$\\sigma_L = 200 \\sigma_a = 0.196$ m/s, from printed values (and g). Verdict changed from "
         "reproduced: arithmetic on printed values is a cross-check.",
         discussed_in=DOCS["IVD"],
     ),
@@ -1495,7 +1502,7 @@ CLAIMS = [
         tolerance=EXACT,
         expected_status="reproduced",
         note="Figure-only (no curve values printed); least-squares slope within 0.5 dB/decade over "
-        "10 um/s^2 to 10 mm/s^2, as $\\sigma_{DL} \\approx 2\\,\\mathrm{s} \\cdot \\sigma_a$ predicts. "
+        "10 µm/s² to 10 mm/s², as $\\sigma_{DL} \\approx 2\\,\\mathrm{s} \\cdot \\sigma_a$ predicts. "
         "Verdict changed from consistent: "
         "the computation reads published inputs only.",
         discussed_in=DOCS["IVD"],
@@ -1513,8 +1520,8 @@ CLAIMS = [
         compute=fig1_order_margin,
         tolerance=FIG1_READING,
         expected_status="reproduced",
-        note="Figure-only; over the stated axis range 10 um/s^2 to 10 mm/s^2. The page also shows that "
-        "every curve is at or below 0 dB and that the sigma_T = 2 m/s curve rises monotonically. Was a "
+        note="Figure-only; over the stated axis range 10 µm/s² to 10 mm/s². The page also shows that "
+        "every curve is at or below 0 dB and that the $\\sigma_T = 2$ m/s curve rises monotonically. Was a "
         "statement (the ordering, 0 dB and the rise together); now the ordering's margin, shown as a "
         "number. Verdict changed from consistent: the computation reads published inputs only.",
         discussed_in=DOCS["IVD"],
@@ -1545,9 +1552,9 @@ CLAIMS = [
         compute=_gps_noticeable_only_when,
         tolerance=EXACT,
         expected_status="consistent",
-        note="Holds only if the axis extends beyond the stated 10 mm/s^2: inside the range no benefit "
-        "exceeds 1 dB; on 10 um/s^2 to the assumed 'very poor' end (1 m/s^2, range 0.1-1) the largest one "
-        "is at sigma_T = 2 m/s, 3 satellites, above 10 mm/s^2.",
+        note="Holds only if the axis extends beyond the stated 10 mm/s²: inside the range no benefit "
+        "exceeds 1 dB; on 10 µm/s² to the assumed 'very poor' end (1 m/s², range 0.1-1) the largest one "
+        "is at $\\sigma_T = 2$ m/s, 3 satellites, above 10 mm/s².",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
@@ -1564,7 +1571,7 @@ CLAIMS = [
         compute=three_vs_one_at_zero_db,
         tolerance=FIG2_READING,
         expected_status="reproduced",
-        note="Over the stated sigma_a range. 'Virtually identical' (the 3-satellite curve is not drawn): "
+        note="Over the stated $\\sigma_a$ range. 'Virtually identical' (the 3-satellite curve is not drawn): "
         "closer than Fig. 2 can be read. Was a statement with 'virtually identical' read as 0.05 dB; "
         "now the difference itself against the figure's reading resolution.",
         discussed_in=DOCS["IVD"],
@@ -1586,9 +1593,10 @@ CLAIMS = [
         "bound is not monotone in the estimators: the GPS estimate is the accelerometer prior updated "
         "once, and an estimator worse than the current bound pulls the bound towards itself; while the "
         "accelerometer is the best local estimator (the whole stated range) the rise is at most the "
-        "prior/posterior gap 10 log10(P_DL(k/k-1)/P_DL(k/k)) of the accelerometer filter (on the page), "
+        "prior/posterior gap $10 \\log_{10}(P_{DL}(k/k-1)/P_{DL}(k/k))$ of the accelerometer filter (on the "
+        "page), "
         "far below what Fig. 2 can show. Beyond the stated range the ordering fails by about 1 dB (one "
-        "satellite at sigma_T = 0). Was a statement with that gap, computed, as its tolerance; the "
+        "satellite at $\\sigma_T = 0$). Was a statement with that gap, computed, as its tolerance; the "
         "tolerance is now the figure's reading resolution, and the verdict changed from consistent.",
         discussed_in=DOCS["IVD"],
     ),

@@ -154,7 +154,8 @@ CLAIMS = [
             why="about 6 sampling standard deviations (sqrt(2/n)) of a sample covariance",
         ),
         expected_status="reproduced",
-        note="Seeded random tau, P_N and Q_T, independent w_T and navigation error; the formula holds for "
+        note="Seeded random $\\tau$, $P_N$ and $Q_T$, independent $w_T$ and navigation error; the formula "
+        "holds for "
         "any such matrices (linearity of the covariance).",
         discussed_in=PAGE_IV,
     ),
@@ -164,7 +165,7 @@ CLAIMS = [
         locator="Sec. IV.B.1, after Eq. (11)",
         quantity="with a large $Q_T$, $P_{DN}$ is large regardless of $P_N$: $\\sigma_{DN} / \\sigma_T$ at "
         "$\\sigma_T$ = 2 m/s "
-        "varies by less than 1 % between sigma_N = 0, 0.02 and 0.2 m/s",
+        "varies by less than 1 % between $\\sigma_N$ = 0, 0.02 and 0.2 m/s",
         published=True,
         unit="statement",
         compute=_large_qt_regardless,
@@ -187,8 +188,9 @@ CLAIMS = [
         compute=_eq14_three_factors,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="Steady state of Eq. (14) at 100 ug, T_s = 0.02 s, sigma_L = 200 sigma_a: about 0.0020 m/s; "
-        "doubling Q_a or R_L raises it by about 19 % (the fourth root of 2), doubling T_s by about 41 % "
+        note="Steady state of Eq. (14) at 100 µg, $T_s$ = 0.02 s, $\\sigma_L = 200 \\sigma_a$: about 0.0020 "
+        "m/s; doubling $Q_a$ or $R_L$ raises it by about 19 % (the fourth root of 2), doubling $T_s$ by "
+        "about 41 % "
         "(steady state close to $\\sqrt{\\sigma_a T_s \\sigma_L}$).",
         discussed_in=PAGE_IV,
     ),
@@ -225,7 +227,7 @@ CLAIMS = [
             policy="exact",
         ),
         expected_status="reproduced",
-        note="H_G of Eq. (25) (three and one satellite) with $f_{L1}/c$, $R_G = \\sigma_G^2 I$, 20 seeded "
+        note="$H_G$ of Eq. (25) (three and one satellite) with $f_{L1}/c$, $R_G = \\sigma_G^2 I$, 20 seeded "
         "priors "
         "each (the matrix inversion lemma).",
         discussed_in=PAGE_IV,
@@ -259,7 +261,7 @@ CLAIMS = [
         compute=sensitive_devices_ratio,
         tolerance=EXACT,
         expected_status="consistent",
-        note="100 ug = 981 um/s^2, about 98 times 10 um/s^2 (about 1 ug): the paper's own parameter list "
+        note="100 µg = 981 µm/s², about 98 times 10 µm/s² (about 1 µg): the paper's own parameter list "
         "already holds devices two orders of magnitude finer, so 'an order of magnitude' is consistent. "
         "Reference [4]'s device list itself is not checked.",
         discussed_in=PAGE,
@@ -276,8 +278,8 @@ CLAIMS = [
         compute=_negligible,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="sigma_D about 0.0020 m/s against sigma_N = 0.02 m/s: the aperture adds less velocity "
-        "error than the navigation system has without any flexure ('negligible' read as below sigma_N).",
+        note="$\\sigma_D$ about 0.0020 m/s against $\\sigma_N = 0.02$ m/s: the aperture adds less velocity "
+        "error than the navigation system has without any flexure ('negligible' read as below $\\sigma_N$).",
         discussed_in=PAGE,
     ),
 ]
