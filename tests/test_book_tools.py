@@ -300,3 +300,27 @@ def test_printed_chunks_are_merged_exactly():
     outs = nb.cells[0].outputs
     assert [o["name"] for o in outs] == ["stdout", "stderr"]
     assert outs[0]["text"] == "".join(chunks)
+
+
+@pytest.mark.parametrize(("builder", "kept_inputs"), [("latex", 1), ("html", 2)])
+def test_print_drops_the_source_of_cells_the_web_folds_away(builder, kept_inputs):
+    """Oracle: a hand-built doctree with one hide-input cell and one plain cell; in print only
+    the plain cell keeps its source, and both keep their outputs; HTML is untouched."""
+    from types import SimpleNamespace
+
+    from docutils import nodes
+    from docutils.frontend import get_default_settings
+    from docutils.parsers.rst import Parser
+    from docutils.utils import new_document
+
+    doc = new_document("page", get_default_settings(Parser))
+    for tags in (["tag_hide-input"], []):
+        cell = nodes.container(classes=["cell", *tags])
+        cell += nodes.container("", nodes.literal_block("", "bookkeeping()"), classes=["cell_input"])
+        cell += nodes.container("", nodes.paragraph("", "result"), classes=["cell_output"])
+        doc += cell
+    app = SimpleNamespace(builder=SimpleNamespace(format=builder))
+    book_presentation._print_hidden_inputs(app, doc, "page")
+    inputs = [c for c in doc.findall(nodes.container) if "cell_input" in c["classes"]]
+    outputs = [c for c in doc.findall(nodes.container) if "cell_output" in c["classes"]]
+    assert len(inputs) == kept_inputs and len(outputs) == 2

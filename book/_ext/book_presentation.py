@@ -252,6 +252,21 @@ def _latex_figure_numbers(app: Sphinx, doctree: nodes.document, docname: str) ->
             figure.parent.insert(figure.parent.index(figure), raw)
 
 
+def _print_hidden_inputs(app: Sphinx, doctree: nodes.document, docname: str) -> None:
+    """In print, a cell whose source the web page folds away (``hide-input``) shows its result only.
+
+    The HTML keeps such a source behind a "Show code cell source" toggle; paper has no toggle,
+    so the LaTeX builder drops it instead of printing the bookkeeping in full.
+    """
+    if app.builder.format != "latex":
+        return
+    for cell in list(doctree.findall(nodes.container)):
+        if "cell" in cell["classes"] and "tag_hide-input" in cell["classes"]:
+            for child in list(cell.children):
+                if isinstance(child, nodes.container) and "cell_input" in child["classes"]:
+                    cell.remove(child)
+
+
 def setup(app: Sphinx) -> dict[str, Any]:
     app.connect("doctree-read", _hide_helpers)
     app.connect("doctree-read", _erratum_anchors)
@@ -262,4 +277,5 @@ def setup(app: Sphinx) -> dict[str, Any]:
     # after the toctree collector (priority 500) has assigned Sphinx's own numbers
     app.connect("env-get-updated", _renumber, priority=900)
     app.connect("doctree-resolved", _latex_figure_numbers)
+    app.connect("doctree-resolved", _print_hidden_inputs)
     return {"version": "1.0", "parallel_read_safe": True, "parallel_write_safe": True}
