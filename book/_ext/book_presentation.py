@@ -268,6 +268,9 @@ def _print_hidden_inputs(app: Sphinx, doctree: nodes.document, docname: str) -> 
 
 
 def setup(app: Sphinx) -> dict[str, Any]:
+    # MathJax on every page: the ledger and errata pages hold math only in generated HTML
+    # (claim notes and errata written with $...$), which Sphinx does not count as equations
+    app.set_html_assets_policy("always")
     app.connect("doctree-read", _hide_helpers)
     app.connect("doctree-read", _erratum_anchors)
     app.connect("doctree-read", _captions)
