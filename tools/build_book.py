@@ -35,6 +35,7 @@ import fnmatch
 import hashlib
 import json
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -465,6 +466,11 @@ def report_times(times: dict[str, float], out: Path) -> None:
     out.write_text(json.dumps({"pages": times, "chapters": chapters}, indent=1, sort_keys=True) + "\n")
 
 
+def builder_dir(builder: str) -> str:
+    """The folder of ``_build`` that jupyter-book writes ``builder``'s output to."""
+    return {"pdflatex": "latex"}.get(builder, builder)
+
+
 def build(
     builder: str = "html",
     only: str | None = None,
@@ -487,6 +493,11 @@ def build(
         toc = Path(tmp.name)
         out = out or ROOT / "_build" / f"subset-{only}"
     out = out or ROOT
+    # every build starts from empty output and doctree folders (the execution cache is kept):
+    # Sphinx stamps asset links with checksums of files a previous build left and merges the
+    # previous search index, so a rebuild would differ from a clean build of the same commit
+    for stale in (out / "_build" / builder_dir(builder), out / "_build" / ".doctrees"):
+        shutil.rmtree(stale, ignore_errors=True)
     if cache:
         import yaml
 
