@@ -228,11 +228,12 @@ def test_latex_gate_counts_only_wide_overfull_boxes(tmp_path):
     assert len(problems) == 1 and "842.0 pt" in problems[0]
 
 
-def test_same_gate_ignores_only_pdf_dates(tmp_path):
+def test_same_gate_ignores_only_pdf_dates_and_the_rebuild_record(tmp_path):
     for run, date in (("a", b"20260101"), ("b", b"20270202")):
         (tmp_path / run).mkdir()
         (tmp_path / run / "book.pdf").write_bytes(b"%PDF /CreationDate (D:" + date + b") body")
         (tmp_path / run / "x.html").write_text("same")
+        (tmp_path / run / ".buildinfo").write_text(f"config: {run}")  # Sphinx's, not the book's
     assert check_book.same_trees(tmp_path / "a", tmp_path / "b") == []
     (tmp_path / "b" / "x.html").write_text("other")
     assert check_book.same_trees(tmp_path / "a", tmp_path / "b") == ["differs: x.html"]
