@@ -269,7 +269,8 @@ def test_cli_exit_status_nonzero_on_failure(monkeypatch, capsys):
 
 
 def test_evaluation_cache_round_trip(tmp_path, monkeypatch):
-    """A stored evaluation reads back identical to the fresh one, including infinities.
+    """A stored evaluation reads back identical to the fresh one, including infinities and the
+    recorded input values (a page renders them, so a cached read must not change their form).
 
     Oracle: the fresh evaluation of the same claim with the cache off.
     """
@@ -285,6 +286,8 @@ def test_evaluation_cache_round_trip(tmp_path, monkeypatch):
         second = registry.evaluate_claim("SP-tab2.3-total")
         for ev in (first, second):
             assert (ev.reproduced, ev.passes, ev.detail) == (fresh.reproduced, fresh.passes, fresh.detail)
+            assert ev.inputs == fresh.inputs
+        assert any(isinstance(i["value"], list) for i in fresh.inputs)  # the case that differed
         for value in (float("inf"), -float("inf"), 1.5, None, True):
             assert registry._from_json(registry._to_json(value)) == value
     finally:

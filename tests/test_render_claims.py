@@ -342,20 +342,3 @@ def test_no_old_id_left_in_the_repository():
         cwd=ROOT,
     )
     assert proc.returncode == 0, proc.stdout
-
-
-def test_input_values_render_the_same_from_memory_and_from_the_disk_cache():
-    """Oracle: the same evaluation with an input value as a tuple (read afresh) and as a list
-    (read back from the JSON cache) gives byte-identical HTML (found by the reproducibility gate)."""
-    import dataclasses
-
-    e = evaluate(make())
-    fresh = dataclasses.replace(
-        e, inputs=({"name": "x", "value": (("a", 3), ("b", 1)), "provenance": "published"},)
-    )
-    cached = dataclasses.replace(
-        e, inputs=({"name": "x", "value": [["a", 3], ["b", 1]], "provenance": "published"},)
-    )
-    html = [LedgerTable([v], root="../")._repr_html_() for v in (fresh, cached)]
-    assert html[0] == html[1]
-    assert "((&#x27;a&#x27;, 3), (&#x27;b&#x27;, 1))" in html[0]

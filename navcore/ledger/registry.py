@@ -375,13 +375,15 @@ def _to_json(value: Any) -> Any:
     return {"float": repr(v)} if not math.isfinite(v) else v
 
 
-def _from_json(value: Any) -> Any:
+def _from_json(value: Any, sequence: type = tuple) -> Any:
+    """Undo :func:`_to_json`; JSON arrays become ``sequence`` (tuples, as the evaluation fields
+    hold them; the recorded input values are plain JSON with lists, see ``core.jsonable``)."""
     if isinstance(value, dict):
         if set(value) == {"float"}:
             return float(value["float"])
-        return {k: _from_json(v) for k, v in value.items()}
+        return {k: _from_json(v, sequence) for k, v in value.items()}
     if isinstance(value, list):
-        return tuple(_from_json(v) for v in value)
+        return sequence(_from_json(v, sequence) for v in value)
     return value
 
 
@@ -407,10 +409,10 @@ def _cached(claim_id: str) -> Evaluation | None:
         c = claim(claim_id)
         from navcore.ledger.core import resolve_tolerance
 
-        fields = {k: _from_json(data[k]) for k in _RECORD_FIELDS}
+        fields = {k: _from_json(data[k]) for k in _RECORD_FIELDS if k != "inputs"}
+        inputs = tuple(_from_json(data["inputs"], sequence=list))
     except (OSError, ValueError, KeyError):
         return None
-    inputs = tuple(dict(i) for i in fields.pop("inputs"))
     return Evaluation(c, **fields, inputs=inputs, tolerance=resolve_tolerance(c))
 
 

@@ -547,19 +547,11 @@ def _input_label(name: str) -> str:
         return name.rsplit(".", 1)[-1].replace("_", " ")
 
 
-def _as_tuples(value: Any) -> Any:
-    """Sequences as tuples, nested too: an input read afresh is a tuple, one read back from the
-    on-disk evaluation cache (JSON) a list, and the page must not depend on which it was."""
-    if isinstance(value, list | tuple):
-        return tuple(_as_tuples(v) for v in value)
-    return value
-
-
 def _inputs_text(e: Evaluation) -> str:
     """The inputs the computation read: name, value, where it comes from."""
     parts = []
     for i in e.inputs:
-        value = _as_tuples(i.get("value"))
+        value = i.get("value")
         shown = format_value(value) if isinstance(value, int | float) else str(value)
         if len(shown) > 40:
             shown = shown[:39] + "…"
