@@ -11,6 +11,10 @@ files that exercise it (:data:`PACKAGES`; mutmut then narrows them per function,
 each mutant only the tests that called the mutated function in its first, clean run). Each
 run starts afresh (mutmut caches verdicts by mutated source, so a survivor would stay one
 after a new test); ``--keep`` reuses the cache when only the code changed.
+``--mutants PATTERN ...`` (one package) re-runs only the named mutants in the existing scratch
+project, after refreshing its tests (mutmut finds the new tests and records what they reach):
+the quick check that a new test kills the survivors it was written for, e.g.
+``nox -s mutation -- gnss --mutants 'navcore.gnss.antijam.x_code_tracking*'``.
 
 ``mutmut run`` gets ``--budget-min`` minutes of wall-clock time per package (default 30; the
 machine has 2 cores); a run cut short reports what it checked, and the unchecked mutants
@@ -158,15 +162,17 @@ def scratch_project(package: str, keep: bool = False) -> Path:
     return work
 
 
-def run_package(package: str, budget_min: float, max_children: int, keep: bool = False) -> dict:
-    """Run mutmut on one package within the budget; return its counts."""
-    work = scratch_project(package, keep)
+def run_package(
+    package: str, budget_min: float, max_children: int, keep: bool = False, mutants: list[str] | None = None
+) -> dict:
+    """Run mutmut on one package within the budget (only ``mutants``, if given); return its counts."""
+    work = scratch_project(package, keep or bool(mutants))
     env = {**os.environ, "HYPOTHESIS_PROFILE": "ci", "NAVCORE_CACHE": "off", "NAVCORE_NO_DISK_CACHE": "1"}
     start = time.monotonic()
     cut = False
     with (work / "mutmut-run.log").open("w") as log:
         proc = subprocess.Popen(
-            [sys.executable, "-m", "mutmut", "run", "--max-children", str(max_children)],
+            [sys.executable, "-m", "mutmut", "run", "--max-children", str(max_children), *(mutants or [])],
             cwd=work,
             env=env,
             stdout=log,
@@ -245,8 +251,13 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument(
         "--keep", action="store_true", help="reuse mutmut's cached verdicts (if the tests did not change)"
     )
+    parser.add_argument(
+        "--mutants", nargs="+", metavar="PATTERN", help="re-run only these mutants (globs), one package"
+    )
     args = parser.parse_args(argv)
     packages = args.packages or list(PACKAGES)
+    if args.mutants and len(packages) != 1:
+        parser.error("--mutants needs exactly one package")
     rows = []
     for package in packages:
         if args.report_only:
@@ -254,7 +265,7 @@ def main(argv: list[str] | None = None) -> int:
             r.update(package=package, minutes=0.0, cut=False)
         else:
             print(f"mutation testing navcore.{package} ({args.budget_min:g} min budget)", flush=True)
-            r = run_package(package, args.budget_min, args.max_children, args.keep)
+            r = run_package(package, args.budget_min, args.max_children, args.keep, args.mutants)
         rows.append(r)
     text = table(rows)
     print(text)
