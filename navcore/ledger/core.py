@@ -702,9 +702,11 @@ class Evaluation:
     def note(self) -> str:
         """The claim's note, followed by what the other reading of each convention gives."""
         text = self.claim.note.rstrip()
+        if text and self.alternatives and not text.endswith((".", "!", "?", ")")):
+            text += "."
         for name, alt, value in self.alternatives:
-            text += f" Other reading of {name} ({_plain(alt)}): {_plain(value)}."
-        return text
+            text += f" Other reading of the {_input_words(name)} ({_plain(alt)}): {_plain(value)}."
+        return text.strip()
 
     def as_json(self) -> dict[str, Any]:
         """The fields of LEDGER.md, and no others."""
@@ -728,6 +730,17 @@ class Evaluation:
             "expected_status": c.expected_status,
             "note": self.note(),
         }
+
+
+def _input_words(name: str) -> str:
+    """An input's quantity in words (its registry name if it has none)."""
+    from navcore.ledger.inputs import get_input
+
+    try:
+        quantity = get_input(name).quantity
+    except (KeyError, ValueError):
+        quantity = ""
+    return quantity or name.rsplit(".", 1)[-1].replace("_", " ")
 
 
 def _plain(value: Any) -> str:

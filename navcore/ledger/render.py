@@ -349,7 +349,13 @@ def latex_table(head: Sequence[str], body: Sequence[Sequence[str]]) -> str:
 def _plain_with_unit(value: str, unit: str) -> str:
     if value in ("", "—") or unit in ("", "statement"):
         return value
+    if value == "1" and unit in _COUNT_UNITS:  # "1 state", not "1 states"
+        unit = unit[:-1]
     return f"{value} {unit}"
+
+
+#: Plural count units that read in the singular after exactly one.
+_COUNT_UNITS = ("states", "channels", "satellites", "entries", "cases", "intervals", "lists")
 
 
 # ---------------------------------------------------------------------------------------
