@@ -506,30 +506,30 @@ def _cep_claim(arch: str, power: float) -> Claim:
             "bias, evaluated exactly (the covariance of its linear error model, no sampling); trajectory, "
             "antenna gain, signal, noise, geometry and code-loop assumptions are the book's, with ranges. "
             "The DI error is set by the unestimated range bias and the short outage near the jammer. The "
-            "fix noise follows navcore.gnss.antijam.code_tracking_sigma_chips.",
+            "fix noise is the library's early-minus-late code-tracking noise at the effective C/N0.",
         )
     if power == 100.0:
         return Claim(
             **common,
             expected_status="consistent",
-            note="Same reduced model and assumptions as the DI claims. The nominal model gives about 265 m, "
+            note="Same reduced model and assumptions as the DI claims. The nominal model gives about 253 m, "
             "twice the printed value; the band reaches 120 m only through the jammer-direction antenna gain "
             "(about -6 dB instead of -3 dB) or a stronger signal, and at those values the model's TC CEP at "
             "10 W collapses to the range-bias floor (2.6 m, against the printed 71 m): no single assumed "
             "input fits both TC values (see SP-sec3.3-cep-tc-10W). Verdict changed from not-reproducible: "
-            "the book computes the value under declared assumptions, so it shows it. The fix noise follows "
-            "code_tracking_sigma_chips.",
+            "the book computes the value under declared assumptions, so it shows it. The fix noise is the "
+            "library's early-minus-late code-tracking noise.",
         )
     note = (
         "Same reduced model and assumptions as the DI claims. The TC error after loss of lock is "
         "free-inertial growth over the outage near the jammer; in the model it grows roughly with the "
         "cube of the outage time (10 deg/h gyro), so the model's TC CEP is too small at 10 W (and, at "
         "nominal assumptions, too large at 100 W). No assumed input within its range reaches 71 m (the "
-        "largest, 51 m, comes at 200 m/s or 0 dB jammer gain); reaching it would take a longer outage "
+        "largest, about 47 m, comes at 200 m/s or 0 dB jammer gain); reaching it would take a longer outage "
         "at 10 W, i.e. an unpublished trajectory, manoeuvre or reacquisition behaviour, or a TC lock limit "
         "several dB below the printed 54 dB. Verdict changed from not-reproducible: the book computes "
-        "the value under declared assumptions, so it shows it. The fix noise follows "
-        "code_tracking_sigma_chips."
+        "the value under declared assumptions, so it shows it. The fix noise is the library's "
+        "early-minus-late code-tracking noise."
     )
     return Claim(**common, expected_status="inconsistent", note=note)
 
@@ -650,13 +650,13 @@ CLAIMS = [
         tolerance=_aj_tolerance,
         expected_status="inconsistent",
         note="The jammer-power ratio DI/TC at equal CEP on the reduced model's exact CEP curves (quarter-"
-        "decade power grid, 1 W to 10 kW), minimised over CEPs from 6 to 120 m: about 7.5 dB, and at most "
-        "8.4 dB across the assumed ranges. Raising the DI lock limit above the printed 65 dB (up to 80 dB) "
+        "decade power grid, 1 W to 10 kW), minimised over CEPs from 6 to 120 m: about 7.8 dB, and at most "
+        "8.6 dB across the assumed ranges. Raising the DI lock limit above the printed 65 dB (up to 80 dB) "
         "does not lift it above 9 dB either: the reduced model's CEP curves differ in shape from the "
         "paper's (the paper's own stated thresholds are 11 dB apart, erratum SP-E-di-improvement-15dB). "
         "Reaching 15 dB would need the unpublished 6-DOF details (trajectory of Fig. 3.4, reacquisition, "
         "the deeply integrated filter). Verdict changed from not-reproducible: the book computes the "
-        "value under declared assumptions. Depends on code_tracking_sigma_chips through the fix noise.",
+        "value under declared assumptions. Depends on the code-tracking noise model through the fix noise.",
         discussed_in=PAGE,
     ),
     Claim(

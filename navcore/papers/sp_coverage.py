@@ -76,8 +76,8 @@ def _state_claim(table: str, row: int) -> Claim:
         compute=lambda t=table, r=row: layout_block_size(t, r),
         tolerance=EXACT,
         expected_status="reproduced",
-        note="Block size of the library's state layout used by the SP mission and flyby runs "
-        "(navcore.gnss.architectures), looked up by the printed row label.",
+        note="Block size of the library's state layout used by the SP mission and flyby runs (the "
+        "integration architectures), looked up by the printed row label.",
         discussed_in=PAGE_ARCH,
     )
 

@@ -186,8 +186,8 @@ ERRATA = [
         "\\delta\\theta$). "
         "The 'unit step' is also 1 g on every axis at once (magnitude $\\sqrt{3}$ g). The sign does not "
         "matter unless scale factor and misalignment are correlated ($c_{\\text{sf-mis}} \\neq 0$).",
-        evidence="Finite-difference Jacobian of diag(sf) a + numpy.cross(dtheta, a) against the "
-        "analytic -[a x] block of navcore.",
+        evidence="A finite-difference Jacobian of $\\mathrm{diag}(sf)\\, a + \\delta\\theta \\times a$ "
+        "(cross product computed numerically) against the library's analytic $-[a\\times]$ block.",
         claims=("SP-sec2.5-H-sign",),
         discussed_in=PAGE,
     ),

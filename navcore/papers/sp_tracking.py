@@ -255,7 +255,7 @@ CLAIMS = [
         id="SP-eq2.u1-closed-form",
         paper="SP",
         locator="Sec. 2.5, equation above Fig. 2.1",
-        quantity="the closed form (exponent read as -w0 t/2) is the third-order loop's step error",
+        quantity="the closed form (exponent read as $-\\omega_0 t/2$) is the third-order loop's step error",
         published=True,
         unit="statement",
         compute=closed_form_matches_simulation,
@@ -263,8 +263,8 @@ CLAIMS = [
         expected_status="reproduced",
         note="Compared with a linear-system simulation of "
         "$E/\\Theta = s^3/(s^3 + 2\\omega_0 s^2 + 2\\omega_0^2 s + \\omega_0^3)$ driven by $t^2/2$ "
-        "(Butterworth poles, $a_3 = b_3 = 2$); the printed $t^2$ is an OCR error "
-        "(erratum SP-E-exponent-t2).",
+        "(Butterworth poles, $a_3 = b_3 = 2$); the $t^2$ of the source text is a misprint or a "
+        "misreading of $t/2$ (erratum SP-E-exponent-t2).",
     ),
     Claim(
         id="SP-eq2.1-keeps-peak",
