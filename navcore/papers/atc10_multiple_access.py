@@ -753,7 +753,8 @@ ERRATA = [
         kind="units",
         locator="Sec. 3.8, worked example against Eq. (3.8.8)",
         printed="$\\mathrm{Exp}_g = a^2/p$",
-        finding="Eq. (3.8.8) defines $\\mathrm{Exp}_g = a^2/(2p)$, which gives 6.25, not 12.5. The example's "
+        finding="Here $a$ is the threshold $\\theta = 1/2$. Eq. (3.8.8) defines "
+        "$\\mathrm{Exp}_g = a^2/(2p)$, which gives 6.25, not 12.5. The example's "
         "$a^2/p$ corresponds to $p$ being the one-sided white-noise density $N_0$, with output variance "
         "$N_0/2$.",
         evidence="Eq. (3.8.7) is re-derived with sympy on the page; 0.25/(2 * 0.02) = 6.25.",
