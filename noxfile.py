@@ -51,9 +51,14 @@ def _install(session: nox.Session) -> None:
 
 @nox.session
 def tests(session: nox.Session) -> None:
-    """Run pytest: unit tests against oracles, one test per ledger claim, figures, strict build."""
+    """Run pytest: unit tests against oracles, one test per ledger claim, figures, strict build.
+
+    The whole suite runs on every core (pytest-xdist, ``-n auto``: two workers on CI's two
+    cores); ``nox -s tests -- ARGS`` passes ARGS to pytest instead (one process unless ARGS
+    ask for workers).
+    """
     _install(session)
-    session.run("python", "-m", "pytest", *(session.posargs or ["-q"]))
+    session.run("python", "-m", "pytest", *(session.posargs or ["-q", "-n", "auto"]))
 
 
 @nox.session
