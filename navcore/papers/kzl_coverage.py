@@ -16,6 +16,7 @@ from navcore.inertial.error_model17 import ERROR_LAYOUT_17, error_dynamics_17
 from navcore.ledger import EXACT, Claim, InputSet, Tolerance, printed, prose
 from navcore.papers.kzl_models import IN as MODELS
 from navcore.papers.kzl_models import (
+    PAGE0,
     PAGE1,
     PAGE2,
     discretisation_comparison,
@@ -272,7 +273,7 @@ CLAIMS = [
         expected_status="consistent",
         note="Circular orbit at the TerraSAR-X altitude, ground speed about 7.0 km/s; a 15 km receiver "
         "footprint gives about 2 s, 5-30 km gives 0.7-4.3 s.",
-        discussed_in=PAGE1,
+        discussed_in=PAGE0,
     ),
     Claim(
         id="KZL-sec1-positioning-less-strict",
@@ -288,7 +289,7 @@ CLAIMS = [
         expected_status="consistent",
         note="At the Table 1 height (3 km) and a 30 deg look angle the slant range is 3.5 km and 0.5 deg "
         "moves the footprint by about 30 m, against 5-15 m of L1 code positioning.",
-        discussed_in=PAGE1,
+        discussed_in=PAGE0,
     ),
     Claim(
         id="KZL-sec1-baseline-tilt-accuracy",
@@ -304,7 +305,7 @@ CLAIMS = [
         note="$dh = R \\sin\\theta\\, d\\alpha$ with $R \\sin\\theta = h \\tan\\theta$ (flat earth): about "
         "0.7 arcsec "
         "at 30 deg, 0.4-1.1 arcsec over 20-45 deg.",
-        discussed_in=PAGE1,
+        discussed_in=PAGE0,
     ),
     Claim(
         id="KZL-sec1-baseline-length-accuracy",
@@ -319,7 +320,7 @@ CLAIMS = [
         expected_status="consistent",
         note="dh = R sin(theta) tan(theta) dB / B: about 1.2 mm for B = 200 m at 30 deg; 0.2-4.4 mm over "
         "the band. The 'cm' of the text fits longer baselines or airborne geometries.",
-        discussed_in=PAGE1,
+        discussed_in=PAGE0,
     ),
     Claim(
         id="KZL-sec2.1-ins-data-rate",
@@ -334,7 +335,7 @@ CLAIMS = [
         tolerance=_rate100_tol,
         expected_status="consistent",
         note="Both 100 Hz (also the 'e.g., 100 Hz' of Sec. 3.5).",
-        discussed_in=PAGE1,
+        discussed_in=PAGE0,
     ),
     Claim(
         id="KZL-sec2.1-gnss-output-rate",
@@ -349,7 +350,7 @@ CLAIMS = [
         tolerance=_rate1_tol,
         expected_status="consistent",
         note="Both 1 Hz.",
-        discussed_in=PAGE1,
+        discussed_in=PAGE0,
     ),
     Claim(
         id="KZL-sec2.2-cascaded-nearly-uncorrelated",
@@ -365,7 +366,7 @@ CLAIMS = [
         tolerance=EXACT,
         expected_status="consistent",
         note="$\\exp(-10/\\tau)$: 0.007 for $\\tau = 2$ s, 5e-5 to 0.14 for $\\tau$ = 1-5 s.",
-        discussed_in=PAGE1,
+        discussed_in=PAGE0,
     ),
     Claim(
         id="KZL-eq6-first-order",

@@ -70,6 +70,7 @@ IN.assumed(
 #: Earth's gravitational constant (WGS-84), m^3/s^2.
 _MU_EARTH = 3.986004418e14
 
+PAGE0 = "kzl/00-requirements"
 PAGE1 = "kzl/01-mechanization"
 PAGE2 = "kzl/02-error-model"
 
@@ -332,7 +333,7 @@ ERRATA = [
         "axes) the printed pair returns roll = 180 deg for a level aircraft. It is right for $a = -f$; "
         "for the specific force: $\\theta = \\arctan(f_x / \\sqrt{f_y^2 + f_z^2})$, $\\phi = "
         "\\mathrm{atan2}(-f_y, -f_z)$.",
-        evidence="navcore.inertial.alignment.levelling_as_printed on f = [0, 0, -g]; round trip on "
+        evidence="The pair as printed, applied to f = [0, 0, -g]; a round trip of the corrected pair on "
         "random attitudes built with scipy's Rotation (checked by the library's tests).",
         claims=("KZL-eq2-3-levelling",),
         discussed_in=PAGE1,
@@ -377,7 +378,8 @@ ERRATA = [
         "$J_b^{-1}(\\phi, \\theta)\\, R_n^b$, not $J_b^{-1}$ alone. At the Table 1 attitude (heading 90 deg) "
         "they "
         "differ by swapping north/east tilt into roll/pitch.",
-        evidence="Central finite differences of euler_from_dcm(expm([dpsi x]) R).",
+        evidence="Central finite differences of the Euler angles of $\\exp([\\Delta\\psi\\times])\\,R$ with "
+        "respect to $\\Delta\\psi$.",
         claims=("KZL-eq13-R", "KZL-sec3.5-small-rotation-euler-angles"),
         discussed_in=PAGE2,
     ),
@@ -635,7 +637,7 @@ CLAIMS = [
         "the assumed aircraft speed; the paper gives neither. 76x means about 100 m/s; Table 1's "
         "110 m/s would give 69x. Verdict changed from not-reproducible: the book computes it under "
         "stated assumptions.",
-        discussed_in="kzl/index",
+        discussed_in=PAGE0,
     ),
     Claim(
         id="KZL-sec2.1-ins-drift-per-hour",
@@ -653,7 +655,7 @@ CLAIMS = [
         "84-min Schuler period) position drift of an unaided INS with gyro bias eps: R eps, with the "
         "assumed eps = 0.01 deg/h (0.005-0.02) giving 1.1 km/h, the classic 1 nmi/h class. Verdict "
         "changed from not-reproducible: the book computes it under stated assumptions.",
-        discussed_in="kzl/index",
+        discussed_in=PAGE0,
     ),
     Claim(
         id="KZL-sec2.1-four-measurements",
