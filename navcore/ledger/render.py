@@ -553,6 +553,17 @@ def _input_label(name: str) -> str:
         return name.rsplit(".", 1)[-1].replace("_", " ")
 
 
+def _input_unit(name: str) -> str:
+    """The unit an input's value is in (empty if it has none or is not registered)."""
+    try:
+        from navcore.ledger.inputs import get_input
+
+        unit = get_input(name).unit
+    except (ValueError, KeyError, ImportError):
+        return ""
+    return "" if unit in ("", "1", "-", "statement") else unit
+
+
 def _inputs_text(e: Evaluation) -> str:
     """The inputs the computation read: name, value, where it comes from."""
     parts = []
@@ -561,6 +572,8 @@ def _inputs_text(e: Evaluation) -> str:
         shown = format_value(value) if isinstance(value, int | float) else str(value)
         if len(shown) > 40:
             shown = shown[:39] + "…"
+        elif isinstance(value, int | float) and not isinstance(value, bool) and _input_unit(i["name"]):
+            shown = _plain_with_unit(shown, _input_unit(i["name"]))
         where = i.get("provenance", "")
         if i.get("locator"):
             where += f", {i['locator']}"
