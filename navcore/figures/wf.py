@@ -60,7 +60,8 @@ def improvement_without_gps() -> Figure:
     paper="WF",
     reproduces="Fig. 2",
     caption="As Fig. 1 with the aperture-acquired GPS Doppler update: lines 1 satellite, circles 3 "
-    "satellites (H_G of Eq. (25) with the exact f_L1/c, sigma_G = 1 Hz), dashed: Fig. 1 (no GPS). "
+    "satellites (H_G of Eq. (25) with the exact f_L1/c, sigma_G = 1 Hz; for sigma_T = 0 the "
+    "3-satellite curve coincides with the 1-satellite line and is not drawn), dashed: Fig. 1 (no GPS). "
     "Right panel: the axis extended to 1 m/s^2, where GPS starts to matter.",
 )
 def improvement_with_gps() -> Figure:
