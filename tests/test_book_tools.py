@@ -325,3 +325,29 @@ def test_print_drops_the_source_of_cells_the_web_folds_away(builder, kept_inputs
     inputs = [c for c in doc.findall(nodes.container) if "cell_input" in c["classes"]]
     outputs = [c for c in doc.findall(nodes.container) if "cell_output" in c["classes"]]
     assert len(inputs) == kept_inputs and len(outputs) == 2
+
+
+@pytest.mark.parametrize("builder", ["latex", "html"])
+def test_print_titles_proof_boxes(builder):
+    """Oracle: a hand-built doctree in the form sphinx-proof's proof directive returns (an
+    untitled admonition of classes proof/proof whose text starts "Proof. "); in print the box
+    gets the title "Proof" and the text loses the prefix; HTML keeps sphinx-proof's form."""
+    from types import SimpleNamespace
+
+    from docutils import nodes
+    from docutils.frontend import get_default_settings
+    from docutils.parsers.rst import Parser
+    from docutils.utils import new_document
+
+    doc = new_document("page", get_default_settings(Parser))
+    box = nodes.admonition(classes=["proof", "proof"])
+    box += nodes.paragraph("", "Proof. For any vector y, the inequality holds.")
+    doc += box
+    app = SimpleNamespace(builder=SimpleNamespace(format=builder))
+    book_presentation._print_proof_titles(app, doc, "page")
+    titles = [t.astext() for t in doc.findall(nodes.title)]
+    text = next(iter(doc.findall(nodes.paragraph))).astext()
+    if builder == "latex":
+        assert titles == ["Proof"] and text == "For any vector y, the inequality holds."
+    else:
+        assert titles == [] and text.startswith("Proof. ")

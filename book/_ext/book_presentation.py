@@ -267,6 +267,25 @@ def _print_hidden_inputs(app: Sphinx, doctree: nodes.document, docname: str) -> 
                     cell.remove(child)
 
 
+def _print_proof_titles(app: Sphinx, doctree: nodes.document, docname: str) -> None:
+    """In print, a proof box is titled "Proof" like the theorem box above it.
+
+    sphinx-proof's proof is an admonition without a title whose text starts "Proof. "; the
+    LaTeX builder prints it as a box with an empty title bar. The word moves into the title.
+    """
+    if app.builder.format != "latex":
+        return
+    for box in list(doctree.findall(nodes.admonition)):
+        if "proof" not in box["classes"] or any(isinstance(c, nodes.title) for c in box.children):
+            continue
+        kind = next((c for c in box["classes"] if c != "proof"), "proof").title()
+        first = next(iter(box.findall(nodes.Text)), None)
+        prefix = f"{kind}. "
+        if first is not None and str(first).startswith(prefix):
+            first.parent.replace(first, nodes.Text(str(first)[len(prefix) :]))
+        box.insert(0, nodes.title("", kind))
+
+
 def setup(app: Sphinx) -> dict[str, Any]:
     # MathJax on every page: the ledger and errata pages hold math only in generated HTML
     # (claim notes and errata written with $...$), which Sphinx does not count as equations
@@ -281,4 +300,5 @@ def setup(app: Sphinx) -> dict[str, Any]:
     app.connect("env-get-updated", _renumber, priority=900)
     app.connect("doctree-resolved", _latex_figure_numbers)
     app.connect("doctree-resolved", _print_hidden_inputs)
+    app.connect("doctree-resolved", _print_proof_titles)
     return {"version": "1.0", "parallel_read_safe": True, "parallel_write_safe": True}
