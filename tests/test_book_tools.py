@@ -351,3 +351,24 @@ def test_print_titles_proof_boxes(builder):
         assert titles == ["Proof"] and text == "For any vector y, the inequality holds."
     else:
         assert titles == [] and text.startswith("Proof. ")
+
+
+def test_api_links_with_words_read_in_text_font():
+    """Oracle: a hand-built doctree of two API cross-references as Sphinx resolves them (a
+    reference holding a literal of class xref): the phrase loses the code font, the bare name
+    keeps it, and both stay links."""
+    from docutils import nodes
+    from docutils.frontend import get_default_settings
+    from docutils.parsers.rst import Parser
+    from docutils.utils import new_document
+
+    doc = new_document("page", get_default_settings(Parser))
+    para = nodes.paragraph()
+    for text in ("the federated fusion", "federated_fuse"):
+        literal = nodes.literal("", text, classes=["xref", "py", "py-func"])
+        para += nodes.reference("", "", literal, refuri="#x")
+    doc += para
+    book_presentation._words_links_in_text_font(None, doc, "page")
+    refs = list(doc.findall(nodes.reference))
+    assert [type(r.children[0]).__name__ for r in refs] == ["inline", "literal"]
+    assert [r.astext() for r in refs] == ["the federated fusion", "federated_fuse"]

@@ -286,6 +286,20 @@ def _print_proof_titles(app: Sphinx, doctree: nodes.document, docname: str) -> N
         box.insert(0, nodes.title("", kind))
 
 
+def _words_links_in_text_font(app: Sphinx, doctree: nodes.document, docname: str) -> None:
+    """A link to the API reference whose text is words reads in the body font.
+
+    Sphinx sets the text of a ``{py:func}`` / ``{py:class}`` cross-reference as code, which is
+    right for a name (``federated_fuse``) but makes a phrase in running prose ("the federated
+    fusion") look like code, on the web and in print. A link text with a space is a phrase:
+    it keeps its link and loses the code font.
+    """
+    for literal in list(doctree.findall(nodes.literal)):
+        if "xref" in literal["classes"] and " " in literal.astext().strip():
+            words = nodes.inline("", literal.astext(), classes=["api-link"])
+            literal.replace_self(words)
+
+
 def setup(app: Sphinx) -> dict[str, Any]:
     # MathJax on every page: the ledger and errata pages hold math only in generated HTML
     # (claim notes and errata written with $...$), which Sphinx does not count as equations
@@ -301,4 +315,5 @@ def setup(app: Sphinx) -> dict[str, Any]:
     app.connect("doctree-resolved", _latex_figure_numbers)
     app.connect("doctree-resolved", _print_hidden_inputs)
     app.connect("doctree-resolved", _print_proof_titles)
+    app.connect("doctree-resolved", _words_links_in_text_font)
     return {"version": "1.0", "parallel_read_safe": True, "parallel_write_safe": True}
