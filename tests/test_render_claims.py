@@ -171,6 +171,45 @@ def test_note_not_shared_stays_with_its_claim():
     assert "note for these 1 claims" not in html
 
 
+SCENARIO = (
+    "Covariance analysis of the sequential-outage mission (Sec. 2.6.1): loosely and tightly "
+    "coupled navigators on the assumed trajectory, with the paper's initial errors. "
+)
+
+
+def test_common_opening_of_notes_said_once():
+    """Oracle: notes built by hand as a scenario sentence plus a sentence of each claim's own;
+    the header holds the scenario once, each row keeps only its own sentence ("…" where the
+    scenario covers some of the group), and no sentence is cut (the 'Sec. 2.6.1' full stop
+    is not taken for a sentence end)."""
+    own = ["84 min is one Schuler period.", "The 10 nmi/h error is random walk.", "Different note."]
+    evals = [
+        evaluate(make(id="SP-test-1", note=SCENARIO + own[0])),
+        evaluate(make(id="SP-test-2", note=SCENARIO + own[1])),
+    ]
+    html = LedgerTable(evals)._repr_html_()
+    header = re.search(r'<tr class="ledger-group">(.*?)</tr>', html).group(1)
+    assert html.count("sequential-outage mission") == 1 and "sequential-outage mission" in header
+    assert "note for these 2 claims" in header
+    rows = _rows(html)
+    assert own[0] in rows["sp-test-1"] and own[1] in rows["sp-test-2"]
+    assert "…" not in html
+    # a third claim with its own note: the scenario is shared by two of three, who continue with "…"
+    evals.append(evaluate(make(id="SP-test-3", note=own[2])))
+    html = LedgerTable(evals)._repr_html_()
+    header = re.search(r'<tr class="ledger-group">(.*?)</tr>', html).group(1)
+    assert "note shared by 2 of these 3 claims" in header and html.count("sequential-outage") == 1
+    rows = _rows(html)
+    assert f"… {own[0]}" in rows["sp-test-1"] and own[2] in rows["sp-test-3"] and "…" not in rows["sp-test-3"]
+    tex = LedgerTable(evals).latex()
+    assert tex.count("sequential-outage") == 1 and "note shared by 2 of these 3 claims" in tex
+    # a short common opening is not worth a header note
+    short = [evaluate(make(id=f"SP-test-{i}", note=f"Same start. Own {i}.")) for i in (1, 2)]
+    html = LedgerTable(short)._repr_html_()
+    header = re.search(r'<tr class="ledger-group">(.*?)</tr>', html).group(1)
+    assert "Same start" not in header and html.count("Same start.") == 2
+
+
 def test_statements_read_in_words():
     rows = _rows(LedgerTable(table_evals())._repr_html_())
     assert "stated" in rows["sp-test-s1"] and ">holds<" in rows["sp-test-s1"]

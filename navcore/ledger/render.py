@@ -623,10 +623,76 @@ class _Group:
             for k in _DETAIL_FIELDS
             if len(evals) > 1 and self.details[0][k] and all(d[k] == self.details[0][k] for d in self.details)
         }
+        # notes that open with the same sentences (a scenario described once per claim): the
+        # common opening is said once in the header, each claim keeps the rest of its note
+        # (or several of them do: the largest set of two or more whose notes start alike; their
+        # notes then continue with "…")
+        self._partial: set[str] = set()
+        self.shared_by = len(evals) if self.shared else 0
+        if len(evals) > 1 and "note" not in self.shared:
+            starts: dict[str, list[int]] = {}
+            for i, d in enumerate(self.details):
+                if d["note"]:
+                    starts.setdefault(d["note"][:_MIN_SHARED_OPENING], []).append(i)
+            members = max(starts.values(), key=len, default=[])
+            opening = _common_opening([self.details[i]["note"] for i in members]) if len(members) > 1 else ""
+            if opening:
+                self.shared["note"] = opening
+                self._partial.add("note")
+                self.shared_by = len(members)
+                for i in members:
+                    rest = self.details[i]["note"][len(opening) :].strip()
+                    self.details[i]["note"] = rest if len(members) == len(evals) else "… " + rest
 
     def own(self, index: int) -> dict[str, str]:
         """The details of claim ``index`` that the group does not share."""
-        return {k: v for k, v in self.details[index].items() if v and k not in self.shared}
+        return {
+            k: v for k, v in self.details[index].items() if v and (k not in self.shared or k in self._partial)
+        }
+
+
+def _shared_label(shared_by: int, n: int) -> str:
+    """Summary of a group's shared note: all of its claims, or some."""
+    if shared_by == n:
+        return f"note for these {n} claims"
+    return f"note shared by {shared_by} of these {n} claims"
+
+
+#: Words whose full stop does not end a sentence.
+_ABBREVIATIONS = {"e.g", "i.e", "eq", "eqs", "fig", "figs", "sec", "secs", "cf", "vs", "no", "ref", "approx"}
+
+#: A common opening of the notes of a group is said once only if it is at least this long.
+_MIN_SHARED_OPENING = 120
+
+
+def _common_opening(notes: list[str]) -> str:
+    """The longest run of whole sentences that every note opens with ("" if short or none).
+
+    A sentence ends at ". " outside inline math; the opening must leave every note some text of
+    its own (notes that are all equal are shared whole instead).
+    """
+    if not notes or any(not n for n in notes):
+        return ""
+    first = notes[0]
+    length = len(first)
+    for n in notes[1:]:
+        i = 0
+        while i < min(length, len(n)) and first[i] == n[i]:
+            i += 1
+        length = i
+    cut = 0
+    in_math = False
+    for i, ch in enumerate(first[:length]):
+        if ch == "$" and (i == 0 or first[i - 1] != "\\"):
+            in_math = not in_math
+        elif ch == "." and not in_math and i + 1 < length and first[i + 1] == " ":
+            word = first[:i].rsplit(" ", 1)[-1].lstrip("(").lower()
+            if word not in _ABBREVIATIONS:
+                cut = i + 1
+    opening = first[:cut]
+    if len(opening) < _MIN_SHARED_OPENING or any(len(n.strip()) <= cut for n in notes):
+        return ""
+    return opening.strip()
 
 
 def _locator_detail(locator: str, heading: str) -> str:
@@ -808,7 +874,7 @@ class LedgerTable:
             header = f'<span class="ledger-group-label">{html_text(g.heading)}</span>'
             if shared:
                 header += (
-                    f'<details class="ledger-shared"><summary>note for these {n} claims</summary>'
+                    f'<details class="ledger-shared"><summary>{_shared_label(g.shared_by, n)}</summary>'
                     f"{shared}</details>"
                 )
             out.append(f'<tr class="ledger-group"><th colspan="5" scope="rowgroup">{header}</th></tr>')
@@ -878,7 +944,8 @@ class LedgerTable:
         for g in self.groups():
             header = r"\textbf{" + tex_text(g.heading) + "}"
             if self.show_notes and g.shared:
-                header += r"\newline{}{\scriptsize " + _details_tex(g.shared) + "}"
+                some = "" if g.shared_by == len(g.evals) else _shared_label(g.shared_by, len(g.evals)) + ": "
+                header += r"\newline{}{\scriptsize " + some + _details_tex(g.shared) + "}"
             out.append(rf"\rowcolor[HTML]{{F1F3F5}}{full}{{{header}}} \\*")
             for index, e in enumerate(g.evals):
                 c = e.claim
