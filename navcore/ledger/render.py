@@ -769,6 +769,8 @@ def _details_tex(details: dict[str, str]) -> str:
         if details.get(k):
             label = _DETAIL_LABELS[k]
             text = tex_text(details[k])
+            if not text.rstrip().endswith((".", "!", "?", ")", ":")):  # the parts run on in one line
+                text = text.rstrip() + "."
             parts.append(rf"\textit{{{label}:}} {text}" if label else text)
     return " ".join(parts)
 
