@@ -354,4 +354,4 @@ def test_divergence_and_optimal_tilt() -> None:
     assert float(jm.list_rule_optimal_nu(0.5, 0.3)) == 0.0
     assert float(jm.list_rule_exponent(0.5, 0.3)) == 0.0
     assert float(jm.log1mexp(0.0)) == -math.inf
-    assert float(jm.log1mexp(800.0)) == 0.0
+    assert -1e-300 < float(jm.log1mexp(800.0)) <= 0.0  # -e^-800 is below the smallest normal double
