@@ -86,10 +86,12 @@ def test_bound_below_exact_for_positive_t() -> None:
 
 
 def test_design_point_inversion() -> None:
-    """Oracle: the catalog-independent closed form at t = 0 and the forward bound for t > 0."""
-    assert jm.filter_detection_probability_for_bound(0.88, 10) == pytest.approx(
-        (1 - 0.12**0.1) ** 0.25, rel=1e-13
-    )
+    """Oracle: the forward definitions: at t = 0, P(at least one of K lists non-empty) with
+    scipy.stats.binom and q = p_d^4; for t > 0 the forward bound (itself checked against mpmath)."""
+    for k, p_dl in ((1, 0.88), (10, 0.88), (250, 0.999)):
+        p_d = jm.filter_detection_probability_for_bound(p_dl, k)
+        assert stats.binom.sf(0, k, p_d**4) == pytest.approx(p_dl, rel=1e-12)
+        assert jm.list_probability_for_detection_bound(p_dl, k) == pytest.approx(p_d**4, rel=1e-13)
     for k, t in ((10, 0.1), (100, 0.05), (1000, 0.2)):
         p_d = jm.filter_detection_probability_for_bound(0.999, k, t)
         assert float(jm.detection_lower_bound(p_d, k, t)) == pytest.approx(0.999, rel=1e-10)
