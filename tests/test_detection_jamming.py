@@ -357,3 +357,14 @@ def test_divergence_and_optimal_tilt() -> None:
     assert float(jm.list_rule_exponent(0.5, 0.3)) == 0.0
     assert float(jm.log1mexp(0.0)) == -math.inf
     assert -1e-300 < float(jm.log1mexp(800.0)) <= 0.0  # -e^-800 is below the smallest normal double
+
+
+@pytest.mark.parametrize("log_p", [-19.99, -20.01, -29.99, -30.01, -31.0, -45.0, -700.5, -800.0])
+@pytest.mark.parametrize("n", [1.0, 3.7, 2e7])
+def test_log_one_minus_power_to_the_last_bits(log_p: float, n: float) -> None:
+    """Oracle: mpmath at 60 digits, to 1e-15 relative (a few units in the last place), on both
+    sides of the switches between series and direct forms (ln p = -20, ln u = -30) and below
+    the exp(-700) underflow guard; n = 1 gives ln(1 - (1 - p)) = ln p exactly."""
+    with mpmath.workdps(60):
+        expected = float(_mp_log_one_minus_power(mpmath.exp(mpmath.mpf(log_p)), n))
+    assert float(jm.log_one_minus_power(log_p, n)) == pytest.approx(expected, rel=1e-15, abs=0)
