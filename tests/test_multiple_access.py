@@ -97,6 +97,12 @@ def test_tabulated_and_logmgf_densities_agree_with_closed_form():
         assert float(lg.d2_ratio(s)) == pytest.approx(float(ratio2), rel=1e-5)
     assert tab.second_moment == pytest.approx(B, rel=1e-12)
     assert tab.moment(4) == pytest.approx(9 * B**2 / 5, rel=1e-12)  # h^4 / 5
+    # an off-centre support: the ramp density 2 (x - 0.2) / 0.64 on [0.2, 1.0]
+    ramp = tabulated_density(lambda x: 2 * (x - 0.2) / 0.64, 0.2, 1.0, n=30)
+    for r in (1, 2, 3):
+        expected = integrate.quad(lambda x, r=r: x**r * 2 * (x - 0.2) / 0.64, 0.2, 1.0)[0]
+        assert ramp.moment(r) == pytest.approx(expected, rel=1e-12)
+    assert min(ramp.values) > 0.2 and max(ramp.values) < 1.0
 
 
 @pytest.mark.parametrize("which", ["two-point", "Gaussian"])
@@ -224,6 +230,7 @@ def test_sampler_law_matches_enumeration():
     x, p = _enumerated_law(ATOMS, ATOM_W, 3, 0.3)
     n = 200_000
     draws = sample_noise(noise, n, np.random.default_rng(21))
+    assert draws.shape == (n,)
     assert set(np.unique(draws)) <= set(x)
     freq = np.array([(draws == xi).mean() for xi in x])
     assert np.all(np.abs(freq - p) <= 5 * np.sqrt(p * (1 - p) / n) + 1e-12)
