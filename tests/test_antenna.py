@@ -79,7 +79,7 @@ def test_rule_constants_and_wavelength_scaling() -> None:
         assert float(antenna.dish_gain(d, f_hz, 0.55)) == pytest.approx(
             0.55 * (np.pi * d / lam) ** 2, rel=1e-14
         )
-    for theta in (2.5, 17.0):
+    for theta in (2.5, 17.0, 190.0):  # 190 deg: a gain below 1 is still a valid input
         assert float(antenna.beamwidth_from_gain_deg(27000.0 / theta**2)) == pytest.approx(theta, rel=1e-14)
     erp_w, gain = 10**4.37, 10**1.82
     assert float(antenna.rf_power_dbw(43.7, 18.2)) == pytest.approx(10 * np.log10(erp_w / gain), abs=1e-12)

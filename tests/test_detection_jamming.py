@@ -368,3 +368,38 @@ def test_log_one_minus_power_to_the_last_bits(log_p: float, n: float) -> None:
     with mpmath.workdps(60):
         expected = float(_mp_log_one_minus_power(mpmath.exp(mpmath.mpf(log_p)), n))
     assert float(jm.log_one_minus_power(log_p, n)) == pytest.approx(expected, rel=1e-15, abs=0)
+
+
+def test_edge_inputs_of_the_log_helpers() -> None:
+    """Oracles: exact values and the validation contract. ln(1 - (1-p)^n) = 0 (to 1e-300) when
+    (1-p)^n underflows (n = 1e305, 1e308); ln p = -20 exactly sits on the series switch (mpmath);
+    p = 1 (ln p = 0) and a negative argument of ln(1 - e^-a) are rejected; the literal (A.9)
+    rule at its default t = 0 is q^K."""
+    for log_p, n in ((math.log(0.5), 1e305), (-1e-10, 1e308)):  # ln u up to 712: e^u would overflow
+        assert -1e-300 < float(jm.log_one_minus_power(log_p, n)) <= 0.0
+    with mpmath.workdps(60):
+        expected = float(_mp_log_one_minus_power(mpmath.exp(mpmath.mpf(-20)), 3.7))
+    assert float(jm.log_one_minus_power(-20.0, 3.7)) == pytest.approx(expected, rel=1e-15)
+    with pytest.raises(ValueError, match="log_p"):
+        jm.log_one_minus_power(0.0, 5.0)
+    with pytest.raises(ValueError):
+        jm.log1mexp(-0.5)
+    assert float(jm.empty_list_rule_detection_probability(0.6, 3)) == pytest.approx(0.6**3, rel=1e-14)
+
+
+def test_geometry_validation_and_tiny_sample_counts() -> None:
+    """Oracles: the validation contract (N/N_T strictly below 1), and 50-digit mpmath ceilings for
+    a geometry with only a few samples per window, where F(p_d) and G(p_d) differ from 1 and so
+    the J -> inf ceilings depend on every factor of (2.5.5) and (2.5.12)."""
+    fields = dict(
+        bandwidth_hz=2.0, repetition_s=1.0, differential_delay_s=0.1, max_speed_m_s=3e7, pulse_energy_j=1.0
+    )
+    with pytest.raises(ValueError, match="airborne_fraction"):
+        jm.SurveillanceGeometry(**fields, airborne_fraction=1.0)
+    tiny = jm.SurveillanceGeometry(**fields, airborne_fraction=0.4)
+    assert tiny.samples_per_period == 4.0 and tiny.samples_per_delay_window == pytest.approx(0.8, rel=1e-15)
+    for p_d, k, t in ((0.5, 1, 0.0), (0.6, 3, 0.0), (0.7, 6, 0.1)):
+        nfl, nadl = _mp_bounds(mpmath.log(mpmath.mpf(p_d)), p_d, k, t, tiny)
+        assert -10 < nfl < -0.6  # F well below 1: the exponent K t + 1 matters
+        assert jm.log_false_location_ceiling(p_d, k, t, tiny) == pytest.approx(nfl, rel=1e-12)
+        assert jm.log_ambiguous_detection_ceiling(p_d, k, t, tiny) == pytest.approx(nadl, rel=1e-12)
