@@ -59,14 +59,20 @@ def test_real_codes_zakai_bandwidth():
 
 @pytest.mark.parametrize("degree", range(3, 11))
 def test_m_sequences_are_maximal_length(degree):
-    """Oracle: the defining property of a maximal-length sequence: period 2^n - 1, one more -1
-    than +1 chips, and a two-valued periodic autocorrelation (L at lag 0, -1 at every other lag),
-    checked by an explicit circular correlation."""
+    """Oracles: the defining property of a maximal-length sequence (period 2^n - 1, one more -1
+    than +1 chips, a two-valued periodic autocorrelation: L at lag 0, -1 at every other lag, by an
+    explicit circular correlation), and scipy.signal.max_len_seq for the same primitive
+    polynomial and initial fill, chip for chip."""
     m = m_sequence(degree)
     L = 2**degree - 1
     assert m.shape == (L,) and set(np.unique(m)) == {-1.0, 1.0} and m.sum() == -1
     periodic = np.array([m @ np.roll(m, k) for k in range(L)])
     assert periodic[0] == L and np.all(periodic[1:] == -1)
+    # the same register in scipy: primitive polynomial x^n + x^a (+ ...) + 1, all-ones fill,
+    # read from the last stage; scipy lists the feedback taps as n - a
+    poly = {3: (2,), 4: (3,), 5: (3,), 6: (5,), 7: (6,), 8: (6, 5, 4), 9: (5,), 10: (7,)}[degree]
+    bits, _ = signal.max_len_seq(degree, state=np.ones(degree), taps=[degree - a for a in poly])
+    np.testing.assert_array_equal(m, 1.0 - 2.0 * bits)
 
 
 @pytest.mark.parametrize("length", [2, 3, 4, 5, 7, 11, 13])
@@ -74,7 +80,7 @@ def test_barker_codes_have_unit_sidelobes(length):
     """Oracle: the defining property of a Barker code, |sum_i c_i c_{i+k}| <= 1 for every k != 0,
     by explicit sums, and a peak equal to the length."""
     c = barker_code(length)
-    assert c.shape == (length,) and set(np.unique(c)) <= {-1.0, 1.0}
+    assert c.shape == (length,) and c.dtype == np.float64 and set(np.unique(c)) <= {-1.0, 1.0}
     side = [abs(sum(c[i] * c[i + k] for i in range(length - k))) for k in range(1, length)]
     assert max(side) <= 1.0 and c @ c == length
     np.testing.assert_allclose(
@@ -155,3 +161,12 @@ def test_piecewise_linear_integrals_match_quadrature():
     np.testing.assert_allclose(
         alternating_sidelobe_autocorrelation(5, 3, -2.0), [-0.4, 0.4, -0.4, 1.0, -0.4, 0.4, -0.4]
     )
+
+
+def test_autocorrelation_of_short_and_scaled_codes():
+    """Oracle: explicit sums: one chip has R = [1]; a scaled code has the same normalised
+    autocorrelation; a code of zero energy is rejected."""
+    np.testing.assert_array_equal(aperiodic_autocorrelation([1.0]), [1.0])
+    np.testing.assert_allclose(aperiodic_autocorrelation([0.5, 0.5]), [0.5, 1.0, 0.5], rtol=1e-15)
+    with pytest.raises(ValueError):
+        aperiodic_autocorrelation([0.0, 0.0])
