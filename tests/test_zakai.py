@@ -126,12 +126,14 @@ def test_cross_term_power_matches_waveform_integration():
     brute = sum(np.sum((np.correlate(wave(ci), wave(cj), mode="full") * dt) ** 2) * dt for cj in cjs) / (
         2 * alpha
     )
-    assert cross_term_noise_power(ci, cjs, chip, alpha) == pytest.approx(brute, rel=1e-3)
+    assert cross_term_noise_power(ci, cjs, chip, alpha) == pytest.approx(brute, rel=1e-3, abs=0)
     wi, wj = 3.0e5, np.array([2.0e5, 4.5e5, 8.0e5])
     assert zakai_noise_power_bound(wi, wj, alpha) == pytest.approx(
-        sum(1 / (4 * alpha * np.sqrt(wi * w)) for w in wj), rel=1e-14
+        sum(1 / (4 * alpha * np.sqrt(wi * w)) for w in wj), rel=1e-14, abs=0
     )
-    assert equal_autocorrelation_noise_power(7, alpha, wi) == pytest.approx(6 / (4 * alpha * wi), rel=1e-14)
+    assert equal_autocorrelation_noise_power(7, alpha, wi) == pytest.approx(
+        6 / (4 * alpha * wi), rel=1e-14, abs=0
+    )
 
 
 def test_piecewise_linear_integrals_match_quadrature():
