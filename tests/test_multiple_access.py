@@ -445,3 +445,89 @@ def test_psk_amplitude_law_matches_chip_overlap_simulation():
         se = np.sqrt(np.var(got**r) / n + np.var(ref**r) / n)
         assert abs(np.mean(got**r) - np.mean(ref**r)) < 4 * se
     assert np.abs(got).max() <= 1.0 + 1e-12
+
+
+def test_point_mass_density_construction():
+    """Oracle: the validation contract and the definition of a point-mass law: weights are
+    normalised (1:3 -> 1/4, 3/4), a zero weight is allowed and its atom never drawn, one atom is
+    a valid (degenerate) law, integer atoms give real samples; mismatched lengths, negative,
+    infinite or NaN weights, infinite atoms and an all-zero weight vector are rejected."""
+    d = PointMassDensity((1, 3), (1, 3))
+    assert d.moment(1) == pytest.approx(0.25 * 1 + 0.75 * 3, rel=1e-15)
+    draws = d.sample(np.random.default_rng(0), 40_000)
+    assert draws.dtype == np.float64 and abs((draws == 3.0).mean() - 0.75) < 5 * np.sqrt(0.75 * 0.25 / 40_000)
+    z = PointMassDensity((-1.0, 0.0, 2.0), (0.5, 0.0, 0.5))
+    assert z.moment(2) == pytest.approx(2.5, rel=1e-15) and not np.any(
+        z.sample(np.random.default_rng(1), 1000) == 0.0
+    )
+    one = PointMassDensity((0.3,), (1.0,))
+    assert float(one.log_mgf(2.0)) == pytest.approx(0.6, rel=1e-15)
+    for values, weights in (
+        ((0.1, 0.2), (1.0, 1.0, 1.0)),
+        ((0.1, 0.2), (-0.5, 1.5)),
+        ((0.1, 0.2), (np.inf, 1.0)),
+        ((0.1, 0.2), (np.nan, 1.0)),
+        ((np.inf, 0.2), (0.5, 0.5)),
+        ((0.1, 0.2), (0.0, 0.0)),
+        ((), ()),
+    ):
+        with pytest.raises(ValueError):
+            PointMassDensity(values, weights)
+
+
+def test_documented_defaults_and_returned_fields():
+    """Oracle: the documented defaults (six cumulants; Edgeworth with two correction terms and N
+    interferers; 200 quadrature nodes named 'tabulated') and the fields of the returned tail
+    estimate (the thresholds, as reals, for integer input)."""
+    noise = MultipleAccessNoise(60, 0.1, PointMassDensity(ATOMS, ATOM_W))
+    assert noise.cumulants().shape == (6,)
+    xs = np.array([-0.3, 0.1, 0.4])
+    density, tail = _edgeworth_oracle(60, 0.2, True, 2, xs)
+    np.testing.assert_allclose(edgeworth_density(noise, xs), density, rtol=1e-8, atol=1e-12)
+    np.testing.assert_allclose(edgeworth_tail(noise, xs), tail, rtol=1e-8, atol=1e-12)
+    tab = tabulated_density(lambda x: np.full_like(x, 0.5), -1.0, 1.0)
+    assert len(tab.values) == 200 and tab.name == "tabulated"
+    assert tabulated_density(lambda x: np.full_like(x, 0.5), -1.0, 1.0, n=4, name="flat").name == "flat"
+    est = stratified_tail(_small_noise(), [0, 1], 100, np.random.default_rng(0))
+    assert est.t.dtype == np.float64 and est.t.tolist() == [0.0, 1.0]
+    # integer thresholds are thresholds like any other (enumerated two-point law)
+    x, p = _enumerated_law((-0.25, 0.25), (0.5, 0.5), 4, 0.5)
+    np.testing.assert_allclose(
+        two_point_exact_tail(0.25, 4, 0.5, [-1, 0, 1]), [p[x >= t].sum() for t in (-1, 0, 1)]
+    )
+
+
+def test_integer_tilts_and_negative_characteristic_base():
+    """Oracles: closed forms of the Gaussian law at an integer tilt too large to square in 64-bit
+    integers (ln M(s) = b s^2 / 2, phi(v) = exp(-b v^2 / 2) = 0); and, for q = 0.9 and a uniform
+    C, E e^{jvn} as the binomial mixture sum_k P(K = k) phi_C(v)^k (phi_C by quadrature), where
+    1 - q + q phi_C(v) < 0 so the power must be taken in complex arithmetic."""
+    g = GaussianDensity(1e-20)
+    s = 4_000_000_000
+    assert float(g.log_mgf(s)) == pytest.approx(0.5 * 1e-20 * 1.6e19, rel=1e-15)
+    assert float(GaussianDensity(0.04).char_fn(s)) == 0.0
+    u = UniformDensity(B)
+    h = u.half_width
+    v = 4.49 / h  # sinc(4.49) ~ -0.217, its most negative value
+    phi_c = integrate.quad(lambda x: np.cos(v * x) / (2 * h), -h, h)[0]
+    noise = MultipleAccessNoise(4, 0.45, u)
+    expected = sum(stats.binom.pmf(k, 3, 0.9) * phi_c**k for k in range(4))
+    assert 1 - 0.9 + 0.9 * phi_c < 0
+    assert complex(noise.char_fn(v)) == pytest.approx(expected, rel=1e-12, abs=1e-15)
+
+
+def test_stratified_standard_error_is_calibrated():
+    """Oracle: the spread of the estimator itself: over 300 seeded repetitions the standard
+    deviation of the stratified estimate of P(n >= t) matches the reported standard error (the
+    mean of its square, within 20 %), for the enumerated asymmetric case."""
+    noise = _small_noise()
+    t = np.array([0.25, 0.75])
+    ests, ses = [], []
+    for seed in range(300):
+        ss = stratified_sums(noise, 50, np.random.default_rng(1000 + seed))
+        e, se = ss.tail(t)
+        ests.append(e)
+        ses.append(se)
+    spread = np.std(ests, axis=0, ddof=1)
+    reported = np.sqrt(np.mean(np.square(ses), axis=0))
+    np.testing.assert_allclose(reported, spread, rtol=0.2)

@@ -259,10 +259,13 @@ def test_bounds_match_first_principles_on_enumerated_law(side):
         assert ga.log_p == pytest.approx(expected, rel=1e-9) and ga.parameter == pytest.approx(r1, rel=1e-9)
         exact = p[sx >= ti].sum()
         assert np.exp(lb[i]) <= exact <= np.exp(ub[i])
-    # a threshold at or below the mean: the Chernoff bound is 1, reached at r = 0
+    # a threshold at or below the mean: the Chernoff bound is 1, reached at r = 0 (exactly at
+    # the mean too, where mu'(0) = t)
     mean = p @ sx
     assert chernoff_log_tail(cgf, mean - 0.1).log_p == 0.0
     assert chernoff_log_tail(cgf, mean - 0.1).parameter == 0.0
+    at_mean = chernoff_log_tail(cgf, float(cgf.cgf_d1(0.0)))
+    assert at_mean.parameter == 0.0 and at_mean.log_p == 0.0
 
 
 def test_negated_cgf_on_asymmetric_law():
