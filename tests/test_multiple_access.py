@@ -531,3 +531,10 @@ def test_stratified_standard_error_is_calibrated():
     spread = np.std(ests, axis=0, ddof=1)
     reported = np.sqrt(np.mean(np.square(ses), axis=0))
     np.testing.assert_allclose(reported, spread, rtol=0.2)
+
+
+def test_gaussian_moments_are_exact():
+    """Oracle: Isserlis' theorem, E X^{2m} = (2m - 1)!! b^m, for b = 1/2, where every value is a
+    dyadic rational and so must come out exactly."""
+    g = GaussianDensity(0.5)
+    assert [g.moment(r) for r in (1, 2, 3, 4, 6, 8)] == [0.0, 0.5, 0.0, 0.75, 1.875, 6.5625]
