@@ -66,10 +66,11 @@ def test_dish_beamwidth_rule_between_uniform_and_tapered_apertures() -> None:
 
 
 def test_rule_constants_and_wavelength_scaling() -> None:
-    """Oracle: the two textbook rules as published (Kraus, Antennas: half-power beamwidth
-    70 lambda/D degrees for a tapered dish; G = 27000 / theta^2 for a pencil beam, theta in
-    degrees), evaluated at non-round inputs; lambda = c / f with c = 299 792 458 m/s typed here;
-    the rf power as the watt ratio ERP / G converted back to dB."""
+    """Oracle: the two rules of thumb with the constants the module documents (half-power
+    beamwidth 70 lambda/D degrees for a tapered dish; G = 27000 / theta^2 for a pencil beam, theta
+    in degrees), evaluated at non-round inputs: they pin the conventions, which no physics fixes
+    exactly (the diffraction tests above bracket the first); lambda = c / f with c = 299 792 458
+    m/s typed here; the rf power as the watt ratio ERP / G converted back to dB."""
     for d, f_hz in ((0.37, 2.3e9), (4.1, 9.4e8)):
         lam = 299_792_458.0 / f_hz
         assert float(antenna.dish_beamwidth_deg(d, f_hz)) == pytest.approx(70.0 * lam / d, rel=1e-14)
