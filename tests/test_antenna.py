@@ -65,13 +65,25 @@ def test_dish_beamwidth_rule_between_uniform_and_tapered_apertures() -> None:
     assert factor == pytest.approx(hi, rel=0.05)
 
 
-def test_beamwidth_rules_agree_roughly() -> None:
-    """Oracle: the two textbook beamwidth rules agree within 10 % for eta = 0.6."""
-    d = 2 * units.FT
-    g = float(antenna.dish_gain(d, 1.6e9, 0.6))
-    assert float(antenna.beamwidth_from_gain_deg(g)) == pytest.approx(
-        float(antenna.dish_beamwidth_deg(d, 1.6e9)), rel=0.1
-    )
+def test_rule_constants_and_wavelength_scaling() -> None:
+    """Oracle: the two rules of thumb with the constants the module documents (half-power
+    beamwidth 70 lambda/D degrees for a tapered dish; G = 27000 / theta^2 for a pencil beam, theta
+    in degrees), evaluated at non-round inputs: they pin the conventions, which no physics fixes
+    exactly (the diffraction tests above bracket the first); lambda = c / f with c = 299 792 458
+    m/s typed here; the rf power as the watt ratio ERP / G converted back to dB."""
+    for d, f_hz in ((0.37, 2.3e9), (4.1, 9.4e8)):
+        lam = 299_792_458.0 / f_hz
+        assert float(antenna.dish_beamwidth_deg(d, f_hz)) == pytest.approx(70.0 * lam / d, rel=1e-14)
+        assert float(antenna.dish_beamwidth_deg(d, f_hz, factor_deg=58.9)) == pytest.approx(
+            58.9 * lam / d, rel=1e-14
+        )
+        assert float(antenna.dish_gain(d, f_hz, 0.55)) == pytest.approx(
+            0.55 * (np.pi * d / lam) ** 2, rel=1e-14
+        )
+    for theta in (2.5, 17.0, 190.0):  # 190 deg: a gain below 1 is still a valid input
+        assert float(antenna.beamwidth_from_gain_deg(27000.0 / theta**2)) == pytest.approx(theta, rel=1e-14)
+    erp_w, gain = 10**4.37, 10**1.82
+    assert float(antenna.rf_power_dbw(43.7, 18.2)) == pytest.approx(10 * np.log10(erp_w / gain), abs=1e-12)
 
 
 def test_rf_power_and_validation() -> None:

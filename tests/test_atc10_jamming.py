@@ -5,21 +5,21 @@ from __future__ import annotations
 import itertools
 import math
 
+import mpmath
 import numpy as np
 import pytest
+from scipy import optimize, stats
 
 from navcore.detection import jamming as jm
 from navcore.papers import atc10_jamming as paper
 
 
-@pytest.mark.parametrize(
-    ("k", "p_dl", "p_d"),
-    [(1, 0.88, 0.968547), (10, 0.88, 0.661136), (100, 0.999, 0.508283), (1000, 0.98, 0.249970)],
-)
-def test_design_points(k: int, p_dl: float, p_d: float) -> None:
-    """Oracle: hand inversion p_d = [1 - (1 - P_DL)^(1/K)]^(1/4) to six digits."""
-    assert paper.design_p_d(p_dl, k) == pytest.approx((1 - (1 - p_dl) ** (1 / k)) ** 0.25, rel=1e-12)
-    assert paper.design_p_d(p_dl, k) == pytest.approx(p_d, abs=1e-6)
+@pytest.mark.parametrize(("k", "p_dl"), [(1, 0.88), (10, 0.88), (100, 0.999), (1000, 0.98)])
+def test_design_points(k: int, p_dl: float) -> None:
+    """Oracle: the forward definition, P(at least one of K lists non-empty) = P_DL, with
+    scipy.stats.binom and a list non-empty with probability p_d^4 (four filters)."""
+    p_d = paper.design_p_d(p_dl, k)
+    assert stats.binom.sf(0, k, p_d**4) == pytest.approx(p_dl, rel=1e-12)
 
 
 def test_printed_281_argument_misses_table_21() -> None:
@@ -35,8 +35,6 @@ def test_printed_281_argument_misses_table_21() -> None:
             x_eff = 2 * 10 ** (x_db / 10)
             return float(jm.log_ambiguous_detection_bound(x_eff, p_d, k, 0.0, g)) - math.log(0.01)
 
-        from scipy import optimize
-
         x_printed = optimize.brentq(f, -40, 60)
         erp_printed = x_printed + 50.0
         assert abs(erp_printed - float(text)) > 2.5
@@ -45,15 +43,36 @@ def test_printed_281_argument_misses_table_21() -> None:
         )
 
 
-def test_ceilings() -> None:
-    """Oracle: closed forms at J -> inf: 0.05 P_DL N_T for K <= 100 and the K = 1000 values."""
+def _mp_log_ceiling(p_dl: float, k: int) -> mpmath.mpf:
+    """ln N_ADL/N_T at J -> inf (p_f = p_d), t = 0, at 50 digits: ln(N/(2 N_T) P_DL) +
+    (K - 1) ln G(p_d) + ln F(p_d), with p_d = [1 - (1 - P_DL)^(1/K)]^(1/4) and the paper's counts."""
     g = paper.geometry()
-    for k, p_dl in ((1, 0.88), (10, 0.999), (100, 0.999)):
-        c = math.exp(jm.log_ambiguous_detection_ceiling(paper.design_p_d(p_dl, k), k, 0.0, g))
-        assert c == pytest.approx(0.05 * p_dl, rel=3e-3)
-    c = math.exp(jm.log_ambiguous_detection_ceiling(paper.design_p_d(0.98, 1000), 1000, 0.0, g))
-    assert c == pytest.approx(0.002128, rel=1e-3)
-    assert 0.9954 < paper.k1000_critical_p_dl() < 0.9955
+    with mpmath.workdps(50):
+        p_dl = mpmath.mpf(p_dl)
+        p_d = (1 - (1 - p_dl) ** (mpmath.mpf(1) / k)) ** mpmath.mpf(0.25)
+
+        def one_minus_power(n: float) -> mpmath.mpf:
+            return mpmath.log(-mpmath.expm1(n * mpmath.log1p(-p_d)))
+
+        log_f = one_minus_power(g.samples_per_period) + 3 * one_minus_power(g.samples_per_delay_window)
+        log_g = one_minus_power(g.samples_per_period) + 3 * one_minus_power(g.samples_per_track_window)
+        return mpmath.log(mpmath.mpf(g.airborne_fraction) / 2 * p_dl) + (k - 1) * log_g + log_f
+
+
+def test_ceilings() -> None:
+    """Oracle: the ceilings at J -> inf from 50-digit mpmath (_mp_log_ceiling): about
+    0.05 P_DL N_T for K <= 100; at K = 1000 the P_DL where the ceiling reaches 0.01 N_T by a
+    root search (brentq) on the mpmath ceiling."""
+    g = paper.geometry()
+    for k, p_dl in ((1, 0.88), (10, 0.999), (100, 0.999), (1000, 0.98)):
+        c = jm.log_ambiguous_detection_ceiling(paper.design_p_d(p_dl, k), k, 0.0, g)
+        assert c == pytest.approx(float(_mp_log_ceiling(p_dl, k)), rel=1e-10)
+        if k <= 100:
+            assert math.exp(c) == pytest.approx(0.05 * p_dl, rel=3e-3)
+    critical = optimize.brentq(
+        lambda p: float(_mp_log_ceiling(p, 1000)) - math.log(0.01), 0.98, 0.9999, xtol=1e-14, rtol=1e-14
+    )
+    assert paper.k1000_critical_p_dl() == pytest.approx(float(critical), rel=1e-9)
 
 
 def test_table11_k100_would_need_pdl_098() -> None:
@@ -117,8 +136,20 @@ def test_threshold_helpers_for_the_errata() -> None:
     x = 10 ** ((paper.adl_erp_dbw_half_samples(0.88, 100) - 50.0) / 10)
     n = math.exp(float(jm.log_ambiguous_detection_bound(x, paper.design_p_d(0.88, 100), 100, 0.0, half)))
     assert n == pytest.approx(0.01, rel=1e-8)
-    # the p_f at the K = 1000, P_DL = 0.999 threshold, against the catalog's independent 0.27067
-    assert math.exp(paper.threshold_log_pf(0.999, 1000)) == pytest.approx(0.27067, abs=5e-5)
+    # the p_f at the K = 1000, P_DL = 0.999 threshold: the root in p_f of 1/2 (N/N_T) P_DL G^999 F
+    # = 0.01, in plain floating point (log1p), found by brentq without the dB search
+    k, p_dl = 1000, 0.999
+
+    def log_adl(p_f: float) -> float:
+        def lom(n: float) -> float:
+            return math.log(-math.expm1(n * math.log1p(-p_f)))
+
+        log_f = lom(full.samples_per_period) + 3 * lom(full.samples_per_delay_window)
+        log_g = lom(full.samples_per_period) + 3 * lom(full.samples_per_track_window)
+        return math.log(full.airborne_fraction / 2 * p_dl) + (k - 1) * log_g + log_f - math.log(0.01)
+
+    p_f = optimize.brentq(log_adl, 0.01, paper.design_p_d(p_dl, k), xtol=1e-15)
+    assert math.exp(paper.threshold_log_pf(p_dl, k)) == pytest.approx(p_f, rel=1e-8)
 
 
 def test_errata_numbers_match_the_model() -> None:

@@ -72,9 +72,29 @@ def test_bounds_bracket_actual_roc_at_section_36_values():
 
 
 def test_worked_example_values():
-    """Oracle: catalogued recomputation Exp(2e5, 1e-5, 12.5) = 9.7021 and p = 0.0199999."""
-    assert abs(m.worked_example_exp() - 9.7021) < 1e-3
-    assert abs(m.worked_example_power() - 0.0199999) < 1e-12
+    """Oracles: exact rational arithmetic of p = (N - 1)/(B alpha) from the printed N = 2e5 and
+    B alpha = 1e7; Exp of (3.8.16) as the large-N quasi-optimal exponent with theta eliminated,
+    solved here numerically (brentq on N q a sinh(x) = theta with a^2 N q = p, then
+    rho theta - N ln(1 - q + q cosh x)); and the exact (N - 1)-interferer optimum within 1e-3."""
+    from fractions import Fraction
+
+    from scipy import optimize
+
+    assert m.worked_example_power() == float(Fraction(199_999, 10**7))
+    n, r = 200_000, 1e-5
+    q = 2 * r
+    exp_g = 0.25 / m.worked_example_power()  # a = theta = 0.5, Exp_g = a^2 / p as the example writes it
+    p = 1e-3  # any power: Exp depends on theta and p only through Exp_g = theta^2 / (2 p)
+    theta = np.sqrt(2 * p * exp_g)
+    a = np.sqrt(p / (n * q))
+    x = optimize.brentq(lambda z: n * q * a * np.sinh(z) - theta, 0.0, 60.0, xtol=1e-15, rtol=1e-15)
+    large_n = x / a * theta - n * np.log1p(q * (np.cosh(x) - 1.0))
+    assert m.worked_example_exp() == pytest.approx(large_n, rel=1e-10)
+    a1 = np.sqrt(p / ((n - 1) * q))  # the exact optimum: N - 1 interferers of the same total power
+    dmu = lambda rho: (n - 1) * q * a1 * np.sinh(rho * a1) / (1 - q + q * np.cosh(rho * a1)) - theta
+    rho = optimize.brentq(dmu, 0.0, 1e4, xtol=1e-14, rtol=1e-15)
+    exact = rho * theta - (n - 1) * np.log1p(q * (np.cosh(rho * a1) - 1.0))
+    assert m.worked_example_exp() == pytest.approx(exact, rel=1e-3)
 
 
 def test_msequence_bandwidth_against_brute_force():

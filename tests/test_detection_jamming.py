@@ -86,10 +86,12 @@ def test_bound_below_exact_for_positive_t() -> None:
 
 
 def test_design_point_inversion() -> None:
-    """Oracle: the catalog-independent closed form at t = 0 and the forward bound for t > 0."""
-    assert jm.filter_detection_probability_for_bound(0.88, 10) == pytest.approx(
-        (1 - 0.12**0.1) ** 0.25, rel=1e-13
-    )
+    """Oracle: the forward definitions: at t = 0, P(at least one of K lists non-empty) with
+    scipy.stats.binom and q = p_d^4; for t > 0 the forward bound (itself checked against mpmath)."""
+    for k, p_dl in ((1, 0.88), (10, 0.88), (250, 0.999)):
+        p_d = jm.filter_detection_probability_for_bound(p_dl, k)
+        assert stats.binom.sf(0, k, p_d**4) == pytest.approx(p_dl, rel=1e-12)
+        assert jm.list_probability_for_detection_bound(p_dl, k) == pytest.approx(p_d**4, rel=1e-13)
     for k, t in ((10, 0.1), (100, 0.05), (1000, 0.2)):
         p_d = jm.filter_detection_probability_for_bound(0.999, k, t)
         assert float(jm.detection_lower_bound(p_d, k, t)) == pytest.approx(0.999, rel=1e-10)
@@ -229,3 +231,175 @@ def test_erp_conversion() -> None:
         jm.jammer_erp_dbw(0.0)  # type: ignore[call-arg]
     with pytest.raises(TypeError):
         jm.SurveillanceGeometry()  # type: ignore[call-arg]
+
+
+# A geometry unlike the paper's (every count different), for the closed-form checks below.
+OTHER = jm.SurveillanceGeometry(
+    bandwidth_hz=2.5e6,
+    repetition_s=0.8,
+    differential_delay_s=0.004,
+    max_speed_m_s=250.0,
+    airborne_fraction=0.3,
+    pulse_energy_j=4e-3,
+)
+
+
+def test_sample_counts_of_another_geometry() -> None:
+    """Oracle: hand arithmetic, 2 B alpha = 4e6, 4 B beta = 4e4, (8/3) B v alpha / c, and
+    10 log10(4e-3 J x 2.5e6 Hz) = 40 dBW."""
+    assert OTHER.samples_per_period == pytest.approx(4e6, rel=1e-15)
+    assert OTHER.samples_per_delay_window == pytest.approx(4e4, rel=1e-15)
+    assert OTHER.samples_per_track_window == pytest.approx(
+        8 / 3 * 2.5e6 * 250.0 * 0.8 / 299_792_458.0, rel=1e-15
+    )
+    assert OTHER.energy_bandwidth_dbw == pytest.approx(40.0, abs=1e-12)
+
+
+def _mp_bounds(log_pf: mpmath.mpf, p_d: float, k: int, t: float, g: jm.SurveillanceGeometry) -> tuple:
+    """ln N_FL/N_T and ln N_ADL/N_T at 60 digits from ln p_f, written from (2.5.5), (2.5.12),
+    (B.6), (C.14) and P_DL = 1 - exp(-K D(t || p_d^4))."""
+    with mpmath.workdps(60):
+        pf = mpmath.exp(log_pf)
+        f = _mp_log_one_minus_power(pf, g.samples_per_period) + 3 * _mp_log_one_minus_power(
+            pf, g.samples_per_delay_window
+        )
+        gg = _mp_log_one_minus_power(pf, g.samples_per_period) + 3 * _mp_log_one_minus_power(
+            pf, g.samples_per_track_window
+        )
+        q, tt = mpmath.mpf(p_d) ** 4, mpmath.mpf(t)
+        div = (
+            -mpmath.log(1 - q)
+            if t == 0
+            else tt * mpmath.log(tt / q) + (1 - tt) * mpmath.log((1 - tt) / (1 - q))
+        )
+        pdl = -mpmath.expm1(-k * div)
+        nfl = mpmath.log(1 - mpmath.mpf(g.airborne_fraction)) + (k * tt + 1) * f
+        nadl = mpmath.log(mpmath.mpf(g.airborne_fraction) / 2 * pdl) + (k - 1) * gg + f
+        return float(nfl), float(nadl)
+
+
+@pytest.mark.parametrize(("k", "t"), [(1, 0.0), (7, 0.0), (20, 0.15), (300, 0.05)])
+def test_bounds_and_ceilings_of_another_geometry_match_mpmath(k: int, t: float) -> None:
+    """Oracle: _mp_bounds at 60 digits; the ceilings (J -> inf) at p_f = p_d exactly."""
+    p_d = 0.8
+    q = p_d**4
+    if t >= q:
+        pytest.skip("vacuous")
+    for x_db in (-12.0, 0.0, 9.0):
+        with mpmath.workdps(60):
+            log_pf = _mp_log_pf(x_db, p_d)
+        nfl, nadl = _mp_bounds(log_pf, p_d, k, t, OTHER)
+        x = 10 ** (x_db / 10)
+        assert float(jm.log_false_location_bound(x, p_d, k, t, OTHER)) == pytest.approx(nfl, rel=1e-10)
+        assert float(jm.log_ambiguous_detection_bound(x, p_d, k, t, OTHER)) == pytest.approx(nadl, rel=1e-10)
+    nfl, nadl = _mp_bounds(mpmath.log(mpmath.mpf(p_d)), p_d, k, t, OTHER)
+    assert jm.log_false_location_ceiling(p_d, k, t, OTHER) == pytest.approx(nfl, rel=1e-12, abs=1e-14)
+    assert jm.log_ambiguous_detection_ceiling(p_d, k, t, OTHER) == pytest.approx(nadl, rel=1e-12)
+    with mpmath.workdps(40):
+        tt, qq = mpmath.mpf(t), mpmath.mpf(q)
+        div = (
+            -mpmath.log(1 - qq)
+            if t == 0
+            else tt * mpmath.log(tt / qq) + (1 - tt) * mpmath.log((1 - tt) / (1 - qq))
+        )
+        log_pdl = float(mpmath.log(-mpmath.expm1(-k * div)))
+    assert float(jm.log_detection_lower_bound(p_d, k, t)) == pytest.approx(log_pdl, rel=1e-12, abs=1e-15)
+    assert float(jm.detection_lower_bound(p_d, k, t)) == pytest.approx(math.exp(log_pdl), rel=1e-12)
+
+
+def test_threshold_search_bracket_and_false_quantity() -> None:
+    """Oracle: forward re-evaluation of the bound at the returned root; the bracket's ends: a
+    level the bound passes below the lower end raises, one it reaches only above the upper end
+    gives inf, one inside the bracket is found (the defaults are -60 and +160 dB)."""
+    p_d, k, t = 0.8, 7, 0.0
+
+    def level_at(x_db: float, quantity: str = "ambiguous") -> float:
+        fn = jm.log_false_location_bound if quantity == "false" else jm.log_ambiguous_detection_bound
+        return math.exp(float(fn(10 ** (x_db / 10), p_d, k, t, OTHER)))
+
+    for quantity, points in (("false", (-25.0, -17.0)), ("ambiguous", (-6.0, 3.5))):
+        for x_db in points:
+            got = jm.jammer_ratio_threshold_db(quantity, level_at(x_db, quantity), p_d, k, t, OTHER)
+            assert got == pytest.approx(x_db, abs=1e-7)
+    with pytest.raises(ValueError, match="lower_db"):
+        jm.jammer_ratio_threshold_db("ambiguous", level_at(-3.0), p_d, k, t, OTHER, lower_db=-2.0)
+    assert jm.jammer_ratio_threshold_db("ambiguous", level_at(-3.0), p_d, k, t, OTHER, lower_db=-4.0) == (
+        pytest.approx(-3.0, abs=1e-7)
+    )
+    assert (
+        jm.jammer_ratio_threshold_db("ambiguous", level_at(-3.0), p_d, k, t, OTHER, upper_db=-4.0) == math.inf
+    )
+    # the default upper end, 160 dB: with K = 7 the bound still creeps up there (p_f -> p_d like
+    # 1/sqrt(x)), so a level reached at 159.5 dB is found and one reached at 160.5 dB is not
+    assert jm.jammer_ratio_threshold_db("ambiguous", level_at(159.5), p_d, k, t, OTHER) == pytest.approx(
+        159.5, abs=0.05
+    )
+    assert jm.jammer_ratio_threshold_db("ambiguous", level_at(160.5), p_d, k, t, OTHER) == math.inf
+    # a level at or above the ceiling is never reached
+    ceiling = math.exp(jm.log_ambiguous_detection_ceiling(p_d, k, t, OTHER))
+    assert jm.jammer_ratio_threshold_db("ambiguous", ceiling, p_d, k, t, OTHER) == math.inf
+
+
+def test_divergence_and_optimal_tilt() -> None:
+    """Oracles: scipy.stats.entropy of the two Bernoulli laws; the tilt nu* from the stationarity
+    of nu (1 - t) - ln((1 - q) e^nu + q) solved by brentq; inf at t = 0, 0 for t >= q."""
+    for t, q in ((0.0, 0.3), (0.1, 0.3), (0.6, 0.2), (0.999, 0.4), (0.35, 0.35)):
+        assert float(jm.binary_divergence(t, q)) == pytest.approx(
+            stats.entropy([t, 1 - t], [q, 1 - q]), abs=1e-15
+        )
+    for t, q in ((0.1, 0.3), (0.02, 0.9), (0.4, 0.45)):
+        nu = optimize.brentq(
+            lambda v, t=t, q=q: (1 - t) - (1 - q) * math.exp(v) / ((1 - q) * math.exp(v) + q), 0, 50
+        )
+        assert float(jm.list_rule_optimal_nu(t, q)) == pytest.approx(nu, rel=1e-9)
+    assert float(jm.list_rule_optimal_nu(0.0, 0.3)) == math.inf
+    assert float(jm.list_rule_optimal_nu(0.5, 0.3)) == 0.0
+    assert float(jm.list_rule_exponent(0.5, 0.3)) == 0.0
+    assert float(jm.log1mexp(0.0)) == -math.inf
+    assert -1e-300 < float(jm.log1mexp(800.0)) <= 0.0  # -e^-800 is below the smallest normal double
+
+
+@pytest.mark.parametrize("log_p", [-19.99, -20.01, -29.99, -30.01, -31.0, -45.0, -700.5, -800.0])
+@pytest.mark.parametrize("n", [1.0, 3.7, 2e7])
+def test_log_one_minus_power_to_the_last_bits(log_p: float, n: float) -> None:
+    """Oracle: mpmath at 60 digits, to 1e-15 relative (a few units in the last place), on both
+    sides of the switches between series and direct forms (ln p = -20, ln u = -30) and below
+    the exp(-700) underflow guard; n = 1 gives ln(1 - (1 - p)) = ln p exactly."""
+    with mpmath.workdps(60):
+        expected = float(_mp_log_one_minus_power(mpmath.exp(mpmath.mpf(log_p)), n))
+    assert float(jm.log_one_minus_power(log_p, n)) == pytest.approx(expected, rel=1e-15, abs=0)
+
+
+def test_edge_inputs_of_the_log_helpers() -> None:
+    """Oracles: exact values and the validation contract. ln(1 - (1-p)^n) = 0 (to 1e-300) when
+    (1-p)^n underflows (n = 1e305, 1e308); ln p = -20 exactly sits on the series switch (mpmath);
+    p = 1 (ln p = 0) and a negative argument of ln(1 - e^-a) are rejected; the literal (A.9)
+    rule at its default t = 0 is q^K."""
+    for log_p, n in ((math.log(0.5), 1e305), (-1e-10, 1e308)):  # ln u up to 712: e^u would overflow
+        assert -1e-300 < float(jm.log_one_minus_power(log_p, n)) <= 0.0
+    with mpmath.workdps(60):
+        expected = float(_mp_log_one_minus_power(mpmath.exp(mpmath.mpf(-20)), 3.7))
+    assert float(jm.log_one_minus_power(-20.0, 3.7)) == pytest.approx(expected, rel=1e-15)
+    with pytest.raises(ValueError, match="log_p"):
+        jm.log_one_minus_power(0.0, 5.0)
+    with pytest.raises(ValueError):
+        jm.log1mexp(-0.5)
+    assert float(jm.empty_list_rule_detection_probability(0.6, 3)) == pytest.approx(0.6**3, rel=1e-14)
+
+
+def test_geometry_validation_and_tiny_sample_counts() -> None:
+    """Oracles: the validation contract (N/N_T strictly below 1), and 50-digit mpmath ceilings for
+    a geometry with only a few samples per window, where F(p_d) and G(p_d) differ from 1 and so
+    the J -> inf ceilings depend on every factor of (2.5.5) and (2.5.12)."""
+    fields = dict(
+        bandwidth_hz=2.0, repetition_s=1.0, differential_delay_s=0.1, max_speed_m_s=3e7, pulse_energy_j=1.0
+    )
+    with pytest.raises(ValueError, match="airborne_fraction"):
+        jm.SurveillanceGeometry(**fields, airborne_fraction=1.0)
+    tiny = jm.SurveillanceGeometry(**fields, airborne_fraction=0.4)
+    assert tiny.samples_per_period == 4.0 and tiny.samples_per_delay_window == pytest.approx(0.8, rel=1e-15)
+    for p_d, k, t in ((0.5, 1, 0.0), (0.6, 3, 0.0), (0.7, 6, 0.1)):
+        nfl, nadl = _mp_bounds(mpmath.log(mpmath.mpf(p_d)), p_d, k, t, tiny)
+        assert -10 < nfl < -0.6  # F well below 1: the exponent K t + 1 matters
+        assert jm.log_false_location_ceiling(p_d, k, t, tiny) == pytest.approx(nfl, rel=1e-12)
+        assert jm.log_ambiguous_detection_ceiling(p_d, k, t, tiny) == pytest.approx(nadl, rel=1e-12)

@@ -2,22 +2,26 @@
 
 from __future__ import annotations
 
+import itertools
+
 import numpy as np
 import pytest
-import sympy as sp
-from scipy import integrate, stats
+from scipy import integrate, special, stats
 
 from navcore.detection.multiple_access import (
     GaussianDensity,
     LogMGFDensity,
     MultipleAccessNoise,
+    PointMassDensity,
     TriangularDensity,
     UniformDensity,
     cumulants_from_raw_moments,
+    edgeworth_density,
     edgeworth_tail,
     gaussian_mixture_exact_tail,
     psk_amplitude_samples,
     sample_noise,
+    stratified_sums,
     stratified_tail,
     tabulated_density,
     two_point_density,
@@ -71,50 +75,34 @@ def test_log_mgf_and_derivatives_match_quadrature(dens):
 
 
 def test_tabulated_and_logmgf_densities_agree_with_closed_form():
-    """Oracle: the closed-form uniform density (Gauss-Legendre is exact for this smooth integrand)."""
-    u = UniformDensity(B)
-    h = u.half_width
+    """Oracle: the uniform law's MGF sinh(hs)/(hs) and its derivatives by mpmath (40 digits);
+    Gauss-Legendre with 60 nodes integrates e^{sx} on [-h, h] to round-off at these s."""
+    import mpmath
+
+    h = np.sqrt(3 * B)
     tab = tabulated_density(lambda x: np.full_like(x, 1 / (2 * h)), -h, h, n=60)
-    lg = LogMGFDensity(u.log_mgf)
-    s = np.array([0.5, 4.0, 12.0])
-    np.testing.assert_allclose(tab.log_mgf(s), u.log_mgf(s), rtol=1e-10)
-    np.testing.assert_allclose(lg.dlog_mgf(s), u.dlog_mgf(s), rtol=1e-6)
-    np.testing.assert_allclose(lg.d2_ratio(s), u.d2_ratio(s), rtol=1e-5)
+    lg = LogMGFDensity(lambda z: np.log(np.sinh(h * z) / (h * z)))
+    for s in (0.5, 4.0, 12.0):
+        with mpmath.workdps(40):
 
+            def f(z):
+                return mpmath.log(mpmath.sinh(h * z) / (h * z))
 
-def test_power_formula_is_second_moment_of_bernoulli_gated_sum():
-    """Oracle: sympy expansion of E(sum_j B_j X_j)^2 for independent Bernoulli(q) gates (Eq. 3.4.10)."""
-    q, m1, m2, k = sp.symbols("q m1 m2 k", positive=True)
-    var_one = q * m2 - (q * m1) ** 2
-    second = sp.expand(k * var_one + (k * q * m1) ** 2)
-    printed = sp.expand(k * q * m2 + (q * k * m1) ** 2 - q**2 * k * m1**2)
-    assert sp.simplify(second - printed) == 0
-
-
-def test_cumulants_against_monte_carlo_and_sympy():
-    """Oracles: sympy series of ln(1-q+q cosh) and a seeded Monte Carlo (2e6 samples)."""
-    s, q, a = sp.symbols("s q a", positive=True)
-    series = sp.series(sp.log(1 - q + q * sp.cosh(a * s)), s, 0, 7).removeO()
-    k4 = sp.simplify(series.coeff(s, 4) * sp.factorial(4))
-    assert sp.simplify(k4 - (q * a**4 - 3 * q**2 * a**4)) == 0
-    noise = MultipleAccessNoise(100_000, 2e-5, UniformDensity(B))
-    kap = noise.cumulants(4)
-    x = sample_noise(noise, 2_000_000, np.random.default_rng(11))
-    assert x.var() == pytest.approx(kap[1], rel=0.01)
-    k4_mc = np.mean(x**4) - 3 * np.mean(x**2) ** 2
-    assert k4_mc == pytest.approx(kap[3], rel=0.06)
-    np.testing.assert_allclose(cumulants_from_raw_moments([1.0, 2.0, 5.0]), [1.0, 1.0, 1.0])  # Poisson(1)
-
-
-def test_char_fn_matches_empirical_characteristic_function():
-    """Oracle: empirical E exp(jvn) of a seeded Monte Carlo (Eq. 3.4.6)."""
-    noise = MultipleAccessNoise(100_000, 2e-5, two_point_density(B))
-    x = sample_noise(noise, 400_000, np.random.default_rng(3))
-    v = np.array([1.0, 4.0, 9.0])
-    emp = np.exp(1j * v[:, None] * x).mean(axis=1)
-    np.testing.assert_allclose(noise.char_fn(v), emp, atol=4e-3)
-    assert noise.mean == 0.0
-    assert noise.power == pytest.approx(99_999 * 4e-5 * B)
+            d1 = mpmath.diff(f, mpmath.mpf(s))
+            ratio2 = mpmath.diff(f, mpmath.mpf(s), 2) + d1**2
+        assert float(tab.log_mgf(s)) == pytest.approx(float(f(mpmath.mpf(s))), rel=1e-10)
+        assert float(tab.dlog_mgf(s)) == pytest.approx(float(d1), rel=1e-10)
+        assert float(tab.d2_ratio(s)) == pytest.approx(float(ratio2), rel=1e-10)
+        assert float(lg.dlog_mgf(s)) == pytest.approx(float(d1), rel=1e-6)
+        assert float(lg.d2_ratio(s)) == pytest.approx(float(ratio2), rel=1e-5)
+    assert tab.second_moment == pytest.approx(B, rel=1e-12)
+    assert tab.moment(4) == pytest.approx(9 * B**2 / 5, rel=1e-12)  # h^4 / 5
+    # an off-centre support: the ramp density 2 (x - 0.2) / 0.64 on [0.2, 1.0]
+    ramp = tabulated_density(lambda x: 2 * (x - 0.2) / 0.64, 0.2, 1.0, n=30)
+    for r in (1, 2, 3):
+        expected = integrate.quad(lambda x, r=r: x**r * 2 * (x - 0.2) / 0.64, 0.2, 1.0)[0]
+        assert ramp.moment(r) == pytest.approx(expected, rel=1e-12)
+    assert min(ramp.values) > 0.2 and max(ramp.values) < 1.0
 
 
 @pytest.mark.parametrize("which", ["two-point", "Gaussian"])
@@ -165,3 +153,388 @@ def test_bad_inputs_raise():
         UniformDensity(-1.0)
     with pytest.raises(ValueError, match="n_aircraft"):
         MultipleAccessNoise(1, 1e-5, GaussianDensity(1.0))
+
+
+# --- brute-force oracles on a small, asymmetric case -------------------------------------------
+# Atoms are dyadic rationals, so every sum of them is exact in floating point and a threshold
+# can sit exactly on a support point (which tests whether a tail includes its end point).
+ATOMS = (-0.5, 0.25, 0.75)
+ATOM_W = (0.25, 0.5, 0.25)
+N_SMALL, TA_SMALL = 4, 0.15  # three interferers, overlap probability q = 0.3
+
+
+def _enumerated_law(values, weights, n_interferers, q):
+    """Exact law of the noise by enumerating every interferer state (absent, or one atom):
+    returns the support (sorted) and its probabilities. Uses only the definition of the model
+    (independent gates of probability q, independent amplitudes), not the module's algebra."""
+    states = [(0.0, 1.0 - q)] + [(v, q * w / sum(weights)) for v, w in zip(values, weights, strict=True)]
+    law: dict[float, float] = {}
+    for combo in itertools.product(states, repeat=n_interferers):
+        x = sum(c[0] for c in combo)
+        law[x] = law.get(x, 0.0) + float(np.prod([c[1] for c in combo]))
+    support = np.array(sorted(law))
+    return support, np.array([law[x] for x in support])
+
+
+def _small_noise():
+    return MultipleAccessNoise(N_SMALL, TA_SMALL, PointMassDensity(ATOMS, ATOM_W))
+
+
+def test_cgf_and_tilted_moments_match_enumeration():
+    """Oracle: brute-force enumeration of all 4^3 interferer states of an asymmetric point-mass
+    density: ln E e^{sn}, the tilted mean and variance, E e^{jvn}, E n and E n^2."""
+    noise = _small_noise()
+    x, p = _enumerated_law(ATOMS, ATOM_W, 3, 0.3)
+    for s in (-3.0, -0.4, 0.0, 0.9, 5.0):
+        lw = np.log(p) + s * x
+        tilt = np.exp(lw - special.logsumexp(lw))
+        mean_t = tilt @ x
+        assert float(noise.cgf(s)) == pytest.approx(special.logsumexp(lw), rel=1e-12, abs=1e-14)
+        assert float(noise.cgf_d1(s)) == pytest.approx(mean_t, rel=1e-12, abs=1e-14)
+        assert float(noise.cgf_d2(s)) == pytest.approx(tilt @ (x - mean_t) ** 2, rel=1e-12)
+    v = np.array([0.5, 3.0, 11.0])
+    np.testing.assert_allclose(noise.char_fn(v), np.exp(1j * v[:, None] * x) @ p, rtol=1e-12, atol=1e-14)
+    assert noise.mean == pytest.approx(p @ x, rel=1e-12)
+    assert noise.power == pytest.approx(p @ x**2, rel=1e-12)
+    # Theorem 3.1's limit variance uses N (not N - 1) interferers: N q E(C^2), hand arithmetic
+    assert noise.gaussian_limit_variance == pytest.approx(4 * 0.3 * (0.25 * 0.25 + 0.5 / 16 + 0.25 * 0.5625))
+    assert noise.q == 0.3 and noise.n_interferers == 3
+
+
+def test_cumulants_match_derivatives_of_the_enumerated_cgf():
+    """Oracle: mpmath's high-precision derivatives at 0 (orders 1..6) of ln E e^{sn}, with
+    E e^{sn} summed over the enumerated law; also N(0,1) and Poisson(1) raw moments."""
+    import mpmath
+
+    x, p = _enumerated_law(ATOMS, ATOM_W, 3, 0.3)
+    with mpmath.workdps(50):
+        xs, ps = [mpmath.mpf(v) for v in x], [mpmath.mpf(v) for v in p]
+
+        def cgf(z):
+            return mpmath.log(mpmath.fsum(pi * mpmath.exp(xi * z) for xi, pi in zip(xs, ps, strict=True)))
+
+        expected = [float(mpmath.diff(cgf, 0, r)) for r in range(1, 7)]
+    np.testing.assert_allclose(_small_noise().cumulants(6), expected, rtol=1e-10, atol=1e-15)
+    np.testing.assert_allclose(
+        cumulants_from_raw_moments([0.0, 1.0, 0.0, 3.0, 0.0, 15.0]), [0, 1, 0, 0, 0, 0], atol=1e-12
+    )
+    np.testing.assert_allclose(
+        cumulants_from_raw_moments([1.0, 2.0, 5.0, 15.0, 52.0]), [1.0] * 5
+    )  # Bell numbers
+
+
+def test_sampler_law_matches_enumeration():
+    """Oracle: the enumerated law; seeded Monte Carlo frequencies of every support point (and of
+    the density's own atoms) within 5 binomial standard errors."""
+    noise = _small_noise()
+    x, p = _enumerated_law(ATOMS, ATOM_W, 3, 0.3)
+    n = 200_000
+    draws = sample_noise(noise, n, np.random.default_rng(21))
+    assert draws.shape == (n,)
+    assert set(np.unique(draws)) <= set(x)
+    freq = np.array([(draws == xi).mean() for xi in x])
+    assert np.all(np.abs(freq - p) <= 5 * np.sqrt(p * (1 - p) / n) + 1e-12)
+    atoms = noise.density.sample(np.random.default_rng(22), n)
+    fa = np.array([(atoms == a).mean() for a in ATOMS])
+    w = np.array(ATOM_W)
+    assert np.all(np.abs(fa - w) <= 5 * np.sqrt(w * (1 - w) / n))
+
+
+def test_stratified_tails_match_enumeration_at_support_points():
+    """Oracle: the enumerated law. P(n >= t) and P(n <= -t) include their end points: thresholds
+    sit on support points (exact dyadic sums), and the two tails differ (asymmetric C)."""
+    noise = _small_noise()
+    x, p = _enumerated_law(ATOMS, ATOM_W, 3, 0.3)
+    t = np.array([0.0, 0.25, 0.5, 0.75, 1.0, 1.25])
+    est = stratified_tail(noise, t, 20_000, np.random.default_rng(4))
+    up = np.array([p[x >= ti].sum() for ti in t])
+    lo = np.array([p[x <= -ti].sum() for ti in t])
+    assert np.all(np.abs(est.upper - up) <= 4 * est.upper_se + 1e-12)
+    assert np.all(np.abs(est.lower - lo) <= 4 * est.lower_se + 1e-12)
+    assert np.all(est.upper_se > 0) and np.all(est.upper_se < 0.01)
+    ss = stratified_sums(noise, 20_000, np.random.default_rng(4))
+    scaled, se = ss.tail(t, scale=2.0)  # P(2 n >= t)
+    up2 = np.array([p[2 * x >= ti].sum() for ti in t])
+    assert np.all(np.abs(scaled - up2) <= 4 * se + 1e-12)
+    assert np.all(ss.weights >= 0) and ss.weights.sum() == pytest.approx(1.0, abs=1e-15)
+
+
+def test_exact_tail_formulas_match_enumeration_and_simulation():
+    """Oracles: enumeration for the two-point density (thresholds on support points, where the end
+    point must be included) and a seeded Monte Carlo of Bernoulli-gated Gaussian amplitudes for
+    the Gaussian mixture (written here from the model's definition, 10^6 samples)."""
+    a, n_int, q = 0.25, 5, 0.4
+    two = two_point_density(a**2)  # Eq. (3.7.1): masses 1/2 at +-sqrt(b)
+    assert two.values == (-a, a) and two.weights == (0.5, 0.5)
+    x, p = _enumerated_law((-a, a), (0.5, 0.5), n_int, q)
+    t = np.array([-0.5, 0.0, 0.25, 0.5, 0.75, 1.25])
+    np.testing.assert_allclose(
+        two_point_exact_tail(a, n_int, q, t), [p[x >= ti].sum() for ti in t], rtol=1e-12, atol=1e-15
+    )
+    rng = np.random.default_rng(8)
+    m, b = 1_000_000, 0.04
+    k = rng.binomial(n_int, q, m)
+    sims = rng.normal(0.0, 1.0, m) * np.sqrt(k * b)
+    t = np.array([-0.3, 0.0, 0.2, 0.5, 0.9])
+    emp = np.array([(sims >= ti).mean() for ti in t])
+    got = gaussian_mixture_exact_tail(b, n_int, q, t)
+    assert np.all(np.abs(got - emp) <= 5 * np.sqrt(emp * (1 - emp) / m) + 1e-12)
+
+
+@pytest.mark.parametrize(
+    "dens", [UniformDensity(B), TriangularDensity(B), GaussianDensity(B)], ids=lambda d: d.name
+)
+def test_continuous_densities_moments_char_fn_and_samplers(dens):
+    """Oracles: scipy quadrature of x^r C(x) and cos(v x) C(x); a Kolmogorov-Smirnov test of the
+    seeded sampler against scipy.stats' uniform, triangular and normal laws."""
+    if dens.name == "uniform":
+        h = np.sqrt(3 * B)
+        law = stats.uniform(loc=-h, scale=2 * h)
+    elif dens.name == "triangular":
+        h = np.sqrt(6 * B)
+        law = stats.triang(c=0.5, loc=-h, scale=2 * h)
+    else:
+        h = 12 * np.sqrt(B)
+        law = stats.norm(scale=np.sqrt(B))
+    for r in range(1, 7):
+        # odd moments vanish by symmetry; even ones by quadrature
+        expected = 0.0 if r % 2 else integrate.quad(lambda x, r=r: x**r * law.pdf(x), -h, h, points=[0.0])[0]
+        assert dens.moment(r) == pytest.approx(expected, rel=1e-9, abs=1e-15)
+    v = np.array([0.0, 2.0, 9.0, 30.0])
+    cf = [
+        integrate.quad(lambda x, vi=vi: np.cos(vi * x) * law.pdf(x), -h, h, points=[0.0], limit=200)[0]
+        for vi in v
+    ]
+    np.testing.assert_allclose(dens.char_fn(v), cf, rtol=1e-9, atol=1e-12)
+    draws = dens.sample(np.random.default_rng(2), 20_000)
+    assert stats.kstest(draws, law.cdf).pvalue > 1e-3
+
+
+def test_uniform_density_near_zero_tilt_matches_mpmath():
+    """Oracle: mpmath at 40 digits of ln(sinh x / x) and its first two derivatives (the
+    moments of the tilted uniform density), on both sides of the small-argument series."""
+    import mpmath
+
+    u = UniformDensity(B)
+    a = u.half_width
+    # the series branch (|a s| < 1e-3) is exact to ~1e-16 relative; just above it the direct
+    # forms cancel (ln(sinh x / x) to ~3e-15 absolute, (coth x - 1/x) / x to ~1e-10 relative),
+    # so the tolerances there are wider; values are ~1e-7, so every tolerance is explicit
+    for s, rel, abs_ in (
+        (4e-4 / a, 1e-13, 0.0),
+        (-9.9e-4 / a, 1e-13, 0.0),
+        (1.01e-3 / a, 1e-8, 1e-14),
+        (0.5 / a, 1e-12, 0.0),
+        (30.0 / a, 1e-12, 0.0),
+    ):
+        with mpmath.workdps(40):
+            ms = mpmath.mpf(s)
+
+            def f(z):
+                return mpmath.log(mpmath.sinh(a * z) / (a * z))
+
+            d1 = mpmath.diff(f, ms)
+            d2 = mpmath.diff(f, ms, 2)
+            expected = (float(f(ms)), float(d1), float(d2 + d1**2))
+        assert float(u.log_mgf(s)) == pytest.approx(expected[0], rel=rel, abs=abs_)
+        assert float(u.dlog_mgf(s)) == pytest.approx(expected[1], rel=rel, abs=abs_)
+        assert float(u.d2_ratio(s)) == pytest.approx(expected[2], rel=rel, abs=abs_)
+
+
+def test_log_mgf_density_moments():
+    """Oracle: N(m, b) has ln E e^{sX} = m s + b s^2 / 2, so E X = m and E X^2 = b + m^2."""
+    m, b = 0.3, 0.02
+    d = LogMGFDensity(lambda s: m * s + 0.5 * b * s**2)
+    assert d.moment(1) == pytest.approx(m, rel=1e-8)
+    assert d.moment(2) == pytest.approx(b + m**2, rel=1e-6)
+    assert d.second_moment == pytest.approx(b + m**2, rel=1e-6)
+    with pytest.raises(ValueError):
+        d.moment(3)
+
+
+def _edgeworth_oracle(n_aircraft, q, use_n, terms, xs):
+    """Density and tail of the Edgeworth expansion (E.15) from first principles, at ``xs``:
+    per-interferer cumulants by mpmath differentiation (50 digits) of ln(1 - q + q E e^{sC})
+    (the asymmetric atoms above); the correction polynomial as the Taylor coefficients of
+    exp(sum_{r=3..6} n kappa_r w^r / r!) in w = jv (kept: w^3, then w^4, then w^6, grouped by
+    order in 1/sqrt(n) as App. E does); the density by numerical Fourier inversion and the tail
+    by the Gil-Pelaez inversion formula, both with 160-node Gauss-Legendre quadrature."""
+    import mpmath
+
+    with mpmath.workdps(50):
+        mq = mpmath.mpf(q)
+
+        def one(z):
+            return mpmath.log(
+                1
+                - mq
+                + mq
+                * mpmath.fsum(
+                    mpmath.mpf(w) * mpmath.exp(mpmath.mpf(v) * z) for v, w in zip(ATOMS, ATOM_W, strict=True)
+                )
+            )
+
+        kap = [mpmath.diff(one, 0, r) for r in range(1, 7)]
+        nn = n_aircraft if use_n else n_aircraft - 1
+        taylor = mpmath.taylor(
+            lambda w: mpmath.exp(
+                mpmath.fsum(nn * kap[r - 1] * w**r / mpmath.factorial(r) for r in range(3, 7))
+            ),
+            0,
+            6,
+        )
+        coef = {k: float(taylor[k]) for k in (3, 4, 6)}
+        var = float(nn * kap[1])
+    keep = (3, 4, 6)[:terms]
+    node, weight = np.polynomial.legendre.leggauss(160)
+    top = 12.0 / np.sqrt(var)
+    v = 0.5 * top * (node + 1.0)
+    w = 0.5 * top * weight
+    phi = np.exp(-0.5 * var * v**2) * (1.0 + sum(coef[k] * (1j * v) ** k for k in keep))
+    rot = phi[None, :] * np.exp(-1j * np.outer(xs, v))
+    density = (rot.real @ w) / np.pi
+    tail = 0.5 + (rot.imag / v) @ w / np.pi
+    return density, tail
+
+
+@pytest.mark.parametrize("use_n", [True, False])
+@pytest.mark.parametrize("terms", [0, 1, 2, 3])
+def test_edgeworth_density_and_tail_match_fourier_inversion(terms, use_n):
+    """Oracle: Fourier inversion of the truncated expansion with sympy-derived coefficients (see
+    _edgeworth_oracle), for an asymmetric C so that the odd (lambda_3) terms count."""
+    noise = MultipleAccessNoise(60, 0.1, PointMassDensity(ATOMS, ATOM_W))
+    sig = np.sqrt(
+        (60 if use_n else 59) * 0.2 * (0.25 * 0.25 + 0.5 / 16 + 0.25 * 0.5625)
+        - (60 if use_n else 59) * (0.2 * 0.125) ** 2
+    )
+    xs = sig * np.array([-2.5, -0.7, 0.0, 0.4, 1.8])
+    density, tail = _edgeworth_oracle(60, 0.2, use_n, terms, xs)
+    got_d = edgeworth_density(noise, xs, terms=terms, use_n=use_n)
+    got_t = edgeworth_tail(noise, xs, terms=terms, use_n=use_n)
+    np.testing.assert_allclose(got_d, density, rtol=1e-8, atol=1e-12)
+    np.testing.assert_allclose(got_t, tail, rtol=1e-8, atol=1e-12)
+
+
+def _psk_overlap_simulation(code_i, n_events, rng):
+    """Independent physics of Eq. (3.3.7): the correlation of chip waveforms computed by summing
+    the exact overlap length of every pair of rectangular chips, for a fresh random +-1 code
+    delayed by d ~ U(-L, L) chips and a uniform carrier phase; unit energy per signature."""
+    ci = np.asarray(code_i, float)
+    L = ci.size
+    d = rng.uniform(-L, L, n_events)
+    cj = rng.choice([-1.0, 1.0], (n_events, L))
+    m = np.arange(L)
+    # overlap of chip m of i, [m, m+1), with chip n of j delayed by d, [n+d, n+d+1)
+    lo = np.maximum(m[None, :, None], m[None, None, :] + d[:, None, None])
+    hi = np.minimum(m[None, :, None] + 1.0, m[None, None, :] + d[:, None, None] + 1.0)
+    overlap = np.clip(hi - lo, 0.0, None)
+    x = np.einsum("m,emn,en->e", ci, overlap, cj) / L
+    return np.cos(rng.uniform(0.0, 2 * np.pi, n_events)) * x
+
+
+def test_psk_amplitude_law_matches_chip_overlap_simulation():
+    """Oracle: a seeded simulation written from the waveforms (exact chip-pair overlaps, see
+    _psk_overlap_simulation): the two samples' laws agree (two-sample Kolmogorov-Smirnov), and
+    so do E x^2 and E x^4 within 4 standard errors. Chunking must not change the law either."""
+    code = np.array([1.0, 1.0, 1.0, -1.0, -1.0, 1.0, -1.0])  # Barker 7
+    n = 40_000
+    got = psk_amplitude_samples(code, n, np.random.default_rng(12), chunk=7_000)
+    ref = _psk_overlap_simulation(code, n, np.random.default_rng(13))
+    assert stats.ks_2samp(got, ref).pvalue > 1e-3
+    for r in (2, 4):
+        se = np.sqrt(np.var(got**r) / n + np.var(ref**r) / n)
+        assert abs(np.mean(got**r) - np.mean(ref**r)) < 4 * se
+    assert np.abs(got).max() <= 1.0 + 1e-12
+
+
+def test_point_mass_density_construction():
+    """Oracle: the validation contract and the definition of a point-mass law: weights are
+    normalised (1:3 -> 1/4, 3/4), a zero weight is allowed and its atom never drawn, one atom is
+    a valid (degenerate) law, integer atoms give real samples; mismatched lengths, negative,
+    infinite or NaN weights, infinite atoms and an all-zero weight vector are rejected."""
+    d = PointMassDensity((1, 3), (1, 3))
+    assert d.moment(1) == pytest.approx(0.25 * 1 + 0.75 * 3, rel=1e-15)
+    draws = d.sample(np.random.default_rng(0), 40_000)
+    assert draws.dtype == np.float64 and abs((draws == 3.0).mean() - 0.75) < 5 * np.sqrt(0.75 * 0.25 / 40_000)
+    z = PointMassDensity((-1.0, 0.0, 2.0), (0.5, 0.0, 0.5))
+    assert z.moment(2) == pytest.approx(2.5, rel=1e-15) and not np.any(
+        z.sample(np.random.default_rng(1), 1000) == 0.0
+    )
+    one = PointMassDensity((0.3,), (1.0,))
+    assert float(one.log_mgf(2.0)) == pytest.approx(0.6, rel=1e-15)
+    for values, weights in (
+        ((0.1, 0.2), (1.0, 1.0, 1.0)),
+        ((0.1, 0.2), (-0.5, 1.5)),
+        ((0.1, 0.2), (np.inf, 1.0)),
+        ((0.1, 0.2), (np.nan, 1.0)),
+        ((np.inf, 0.2), (0.5, 0.5)),
+        ((0.1, 0.2), (0.0, 0.0)),
+        ((), ()),
+    ):
+        with pytest.raises(ValueError):
+            PointMassDensity(values, weights)
+
+
+def test_documented_defaults_and_returned_fields():
+    """Oracle: the documented defaults (six cumulants; Edgeworth with two correction terms and N
+    interferers; 200 quadrature nodes named 'tabulated') and the fields of the returned tail
+    estimate (the thresholds, as reals, for integer input)."""
+    noise = MultipleAccessNoise(60, 0.1, PointMassDensity(ATOMS, ATOM_W))
+    assert noise.cumulants().shape == (6,)
+    xs = np.array([-0.3, 0.1, 0.4])
+    density, tail = _edgeworth_oracle(60, 0.2, True, 2, xs)
+    np.testing.assert_allclose(edgeworth_density(noise, xs), density, rtol=1e-8, atol=1e-12)
+    np.testing.assert_allclose(edgeworth_tail(noise, xs), tail, rtol=1e-8, atol=1e-12)
+    tab = tabulated_density(lambda x: np.full_like(x, 0.5), -1.0, 1.0)
+    assert len(tab.values) == 200 and tab.name == "tabulated"
+    assert tabulated_density(lambda x: np.full_like(x, 0.5), -1.0, 1.0, n=4, name="flat").name == "flat"
+    est = stratified_tail(_small_noise(), [0, 1], 100, np.random.default_rng(0))
+    assert est.t.dtype == np.float64 and est.t.tolist() == [0.0, 1.0]
+    # integer thresholds are thresholds like any other (enumerated two-point law)
+    x, p = _enumerated_law((-0.25, 0.25), (0.5, 0.5), 4, 0.5)
+    np.testing.assert_allclose(
+        two_point_exact_tail(0.25, 4, 0.5, [-1, 0, 1]), [p[x >= t].sum() for t in (-1, 0, 1)]
+    )
+
+
+def test_integer_tilts_and_negative_characteristic_base():
+    """Oracles: closed forms of the Gaussian law at an integer tilt too large to square in 64-bit
+    integers (ln M(s) = b s^2 / 2, phi(v) = exp(-b v^2 / 2) = 0); and, for q = 0.9 and a uniform
+    C, E e^{jvn} as the binomial mixture sum_k P(K = k) phi_C(v)^k (phi_C by quadrature), where
+    1 - q + q phi_C(v) < 0 so the power must be taken in complex arithmetic."""
+    g = GaussianDensity(1e-20)
+    s = 4_000_000_000
+    assert float(g.log_mgf(s)) == pytest.approx(0.5 * 1e-20 * 1.6e19, rel=1e-15)
+    assert float(GaussianDensity(0.04).char_fn(s)) == 0.0
+    u = UniformDensity(B)
+    h = u.half_width
+    v = 4.49 / h  # sinc(4.49) ~ -0.217, its most negative value
+    phi_c = integrate.quad(lambda x: np.cos(v * x) / (2 * h), -h, h)[0]
+    noise = MultipleAccessNoise(4, 0.45, u)
+    expected = sum(stats.binom.pmf(k, 3, 0.9) * phi_c**k for k in range(4))
+    assert 1 - 0.9 + 0.9 * phi_c < 0
+    assert complex(noise.char_fn(v)) == pytest.approx(expected, rel=1e-12, abs=1e-15)
+
+
+def test_stratified_standard_error_is_calibrated():
+    """Oracle: the spread of the estimator itself: over 300 seeded repetitions the standard
+    deviation of the stratified estimate of P(n >= t) matches the reported standard error (the
+    mean of its square, within 20 %), for the enumerated asymmetric case."""
+    noise = _small_noise()
+    t = np.array([0.25, 0.75])
+    ests, ses = [], []
+    for seed in range(300):
+        ss = stratified_sums(noise, 50, np.random.default_rng(1000 + seed))
+        e, se = ss.tail(t)
+        ests.append(e)
+        ses.append(se)
+    spread = np.std(ests, axis=0, ddof=1)
+    reported = np.sqrt(np.mean(np.square(ses), axis=0))
+    np.testing.assert_allclose(reported, spread, rtol=0.2)
+
+
+def test_gaussian_moments_are_exact():
+    """Oracle: Isserlis' theorem, E X^{2m} = (2m - 1)!! b^m, for b = 1/2, where every value is a
+    dyadic rational and so must come out exactly."""
+    g = GaussianDensity(0.5)
+    assert [g.moment(r) for r in (1, 2, 3, 4, 6, 8)] == [0.0, 0.5, 0.0, 0.75, 1.875, 6.5625]

@@ -5,7 +5,7 @@ from __future__ import annotations
 import mpmath
 import numpy as np
 import pytest
-from scipy import stats
+from scipy import special, stats
 
 from navcore.detection import neyman_pearson as np_
 
@@ -40,8 +40,6 @@ def test_tiny_false_alarm_is_not_zero() -> None:
 
 def test_direct_gaussian_threshold_and_paper_erf_form() -> None:
     """Oracle: the threshold fixed by p_d (scipy.stats.norm.sf) and App. D's erf form (D.17)."""
-    from scipy import special
-
     p_d, x = 0.9, 10 ** (-1.5)
     d = float(np_.detection_index_from_jammer_ratio(x))
     eta = float(np_.threshold_from_detection_probability(p_d, d))
@@ -52,11 +50,25 @@ def test_direct_gaussian_threshold_and_paper_erf_form() -> None:
     assert float(np_.false_alarm_probability(p_d, d)) == pytest.approx(d17, rel=1e-9)
 
 
-def test_detection_probability_inverts_threshold() -> None:
-    """Oracle: the definition p_d = Q(eta - d) at the threshold returned for p_d."""
-    for p_d in (0.1, 0.5, 0.97):
-        eta = np_.threshold_from_detection_probability(p_d, 2.0)
-        assert float(np_.detection_probability(eta, 2.0)) == pytest.approx(p_d, rel=1e-12)
+def test_detection_probability_and_threshold_against_scipy() -> None:
+    """Oracle: scipy.stats.norm (sf, logsf, isf) and scipy.special.erfinv, for signals on either
+    side of the threshold and deep in the tail."""
+    for th, d in ((0.0, 0.0), (1.0, 3.0), (2.5, -0.7), (40.0, 1.5), (-3.0, 2.0)):
+        assert float(np_.log_detection_probability(th, d)) == pytest.approx(
+            stats.norm.logsf(th - d), rel=1e-13
+        )
+        assert float(np_.detection_probability(th, d)) == pytest.approx(
+            stats.norm.sf(th - d), rel=1e-12, abs=1e-320
+        )
+    for p_d in (0.1, 0.5, 0.97, 0.999999):
+        for d in (0.0, 2.0, 7.5):
+            assert float(np_.threshold_from_detection_probability(p_d, d)) == pytest.approx(
+                d + stats.norm.isf(p_d), rel=1e-13, abs=1e-13
+            )
+        assert float(np_.erf_parameter_from_detection_probability(p_d)) == pytest.approx(
+            special.erfinv(2 * p_d - 1), rel=1e-12, abs=1e-15
+        )
+    assert float(np_.detection_index_from_jammer_ratio(0.04)) == pytest.approx(5.0, rel=1e-15)
 
 
 def test_limits() -> None:
