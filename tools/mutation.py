@@ -86,6 +86,7 @@ PACKAGES: dict[str, tuple[list[str], list[str]]] = {
             "test_error_model17.py",
             "test_covariance_analysis.py",
             "test_sp_architectures.py",
+            "test_constellation_geometry.py",
         ],
     ),
     "detection": (
