@@ -8,7 +8,7 @@ from scipy.optimize import brentq
 
 from navcore.estimation.covariance_analysis import lock_table
 from navcore.gnss import jammer_geometry as jg
-from navcore.gnss.antijam import effective_cn0_dbhz, js_for_effective_cn0
+from navcore.gnss.antijam import js_for_effective_cn0
 from navcore.units import GPS_L1_WAVELENGTH_M, GPS_P_CHIP_RATE_HZ
 
 N0 = -204.0
@@ -26,14 +26,31 @@ def _loop_hysteresis(c: np.ndarray, lo: float, hi: float) -> np.ndarray:
     return out
 
 
-def test_effective_cn0_matches_js_form():
-    """Oracle: the J/S form of navcore.gnss.antijam, 1/(C/N0) + (J/S)/(Q Rc), evaluated with
-    C/N0 = C - N0 and J/S = J - C (an independent formulation of the same law)."""
+@pytest.mark.parametrize("q", [2.0, 1.3])
+def test_effective_cn0_in_watts(q):
+    """Oracle: the law in linear units, C / (N0 + J / (Q Rc)) with C, J in W and N0 in W/Hz
+    (Kaplan Sec. 6.3), on a (7, 3) broadcast of jammer and carrier powers."""
     C = np.array([-163.0, -160.0, -158.0])
     J = np.linspace(-150.0, -90.0, 7)[:, None]
-    ours = jg.effective_cn0_with_jammer_dbhz(C, J, N0, RC, 2.0)
-    ref = effective_cn0_dbhz(C - N0, J - C, RC, 2.0)
-    np.testing.assert_allclose(ours, ref, atol=1e-9)
+    ours = jg.effective_cn0_with_jammer_dbhz(C, J, N0, RC, q)
+    c_w, j_w, n0_w = 10 ** (C / 10), 10 ** (J / 10), 10 ** (N0 / 10)
+    np.testing.assert_allclose(ours, 10 * np.log10(c_w / (n0_w + j_w / (q * RC))), atol=1e-9)
+    assert ours.shape == (7, 3)
+
+
+def test_received_power_and_threshold_range_friis():
+    """Oracle: Friis in watts, P_r = ERP G_r (lambda / 4 pi d)^2, and the distance at which it
+    equals a given power solved from it by hand, with a -10 dBi receive gain."""
+    erp_dbw, g_db = 40.0, -10.0
+    d = np.array([500.0, 12_000.0, 3e5])
+    p_w = 10 ** (erp_dbw / 10) * 10 ** (g_db / 10) * (LAM / (4 * np.pi * d)) ** 2
+    np.testing.assert_allclose(
+        jg.received_jammer_power_dbw(erp_dbw, d, LAM, g_db), 10 * np.log10(p_w), atol=1e-10
+    )
+    np.testing.assert_allclose(jg.free_space_loss_db(d, LAM), -10 * np.log10((LAM / (4 * np.pi * d)) ** 2))
+    target_w = 1e-11
+    d_star = LAM / (4 * np.pi) * np.sqrt(10 ** ((erp_dbw + g_db) / 10) / target_w)
+    assert jg.threshold_range_m(erp_dbw, -110.0, LAM, g_db) == pytest.approx(d_star, rel=1e-12)
 
 
 def test_threshold_jammer_power_matches_antijam_js():
