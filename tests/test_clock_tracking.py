@@ -7,6 +7,7 @@ import pytest
 import sympy as sp
 
 from navcore.location.clock_tracking import (
+    GainHistory,
     alpha_parameter,
     convergence_steps,
     convergence_steps_geometric,
@@ -97,15 +98,71 @@ def test_recursion_vs_brute_force_covariance():
 
 
 def test_convergence_estimate_vs_geometric():
-    """Oracle: brute-force count of the geometric series terms vs log formula."""
+    """Oracles: brute-force count of the geometric series terms vs the log formula; and the
+    definition of convergence_steps (the first n from which every later gain lies within rel
+    of the last one) evaluated by a backward scan of the recursion's gains."""
     for p in (0.05, 0.2, 0.5):
         n, s, t = 0, 1.0, 1.0
         while s < 0.9 / p:
             n, t = n + 1, t * (1 - p)
             s += t
         assert abs(convergence_steps_geometric(p, 0.1) - n) <= 1.0
-    h = gain_recursion(0.0543, 50.0, 5.0, 3000)
-    assert convergence_steps(h, 0.1) == 10
+    for beta, sigma0, rel in ((0.0543, 5.0, 0.1), (0.2, 20.0, 0.01), (0.5, 0.5, 0.05)):
+        h = gain_recursion(beta, 50.0, sigma0, 3000)
+        g_inf, first = h.gamma[-1], h.gamma.size
+        while first > 0 and abs(h.gamma[first - 1] - g_inf) <= rel * g_inf:
+            first -= 1
+        assert convergence_steps(h, rel) == first
+    flat = GainHistory(np.full(4, 0.3), np.ones(4), np.zeros(4))
+    assert convergence_steps(flat, 0.1) == 0
+    step = GainHistory(np.array([1.0, 0.52, 0.48, 0.5]), np.ones(4), np.zeros(4))
+    assert convergence_steps(step, 0.05) == 1
+    assert convergence_steps(step, 0.03) == 3  # |0.48 - 0.5| > 0.015
+
+
+def test_small_and_large_alpha_approximations_are_the_series_of_the_cubic():
+    """Oracle: the real root of x^3 + q x - q = 0 (q = 27 alpha / 4) by numpy.roots. For small
+    q the root is t - t^2/3 + O(t^4) with t = q^(1/3), so Eq. 4.5.38's small-alpha form errs by
+    about t^4/81 (relative q/81); for large q it is 1 - 1/q + O(1/q^2), so the large-alpha form
+    errs by about 3/q^2. Any other coefficient leaves an error orders of magnitude larger."""
+    for a in (1e-9, 1e-7, 1e-5):
+        q = 27 * a / 4
+        assert psi_small_alpha(a) == pytest.approx(psi_cubic_root(a), rel=q / 20)
+    for a in (1e3, 1e4):
+        q = 27 * a / 4
+        assert psi_large_alpha(a) == pytest.approx(psi_cubic_root(a), abs=6 / q**2)
+    np.testing.assert_allclose(
+        psi_small_alpha(np.array([1e-9, 1e-7])), [psi_cubic_root(1e-9), psi_cubic_root(1e-7)]
+    )
+
+
+def test_tracker_position_error_norm_variance():
+    """Oracle: independent Gaussian sampling (seed 2, 10^6 draws) of the position error with
+    covariance sigma^2 [(F'F)^-1 + gamma_n g g'], g = (F'F)^-1 F' 1 (the clock error enters
+    the position through g and is uncorrelated with the projected noise), for Var|xi_p| at the
+    first epoch, in steady state and after the drop to three satellites (sigma^2 (F3)^-1
+    (F3)^-T + v_m h h', h = F3^-1 1). 20 000 tracker runs: standard error about 1 %."""
+    rng = np.random.default_rng(0)
+    U = rng.normal(size=(6, 3)) + np.array([0.0, 0.0, 3.0])
+    U /= np.linalg.norm(U, axis=1, keepdims=True)
+    sigma, sigma0, N = 50.0, 10.0, 30
+    mc = simulate_tracker(U, U[:3], sigma, sigma0, N, 4, 20_000, seed=7, tau_bar=3.0)
+    ones = np.ones(6)
+    g = np.linalg.solve(U.T @ U, U.T @ ones)
+    beta = float(ones @ ones - ones @ U @ g)
+    h = gain_recursion(beta, sigma, sigma0, N)
+    F3inv = np.linalg.inv(U[:3])
+    hv = F3inv @ np.ones(3)
+    v3 = three_satellite_clock_variance(h.gamma[-1], h.cross[-1], sigma, sigma0, np.arange(1, 5))
+    draws = np.random.default_rng(2).standard_normal((1_000_000, 3))
+    cases = [(0, sigma**2 * (np.linalg.inv(U.T @ U) + h.gamma[0] * np.outer(g, g)))]
+    cases.append((N, sigma**2 * (np.linalg.inv(U.T @ U) + h.gamma[N] * np.outer(g, g))))
+    cases.append((N + 2, sigma**2 * F3inv @ F3inv.T + v3[1] * np.outer(hv, hv)))
+    for n, P in cases:
+        norms = np.linalg.norm(draws @ np.linalg.cholesky(P).T, axis=1)
+        assert mc.position_norm_variance[n] == pytest.approx(np.var(norms), rel=0.05), n
+        assert mc.position_mse[n] == pytest.approx(np.trace(P), rel=0.05), n
+    assert mc.n_runs == 20_000 and mc.clock_mse.shape == (N + 5,)
 
 
 def test_tracker_monte_carlo_matches_recursion():
@@ -131,8 +188,20 @@ def test_tracker_monte_carlo_matches_recursion():
     np.testing.assert_allclose(mc.position_mse[N + 1 :], sigma**2 * tr3 + v3 * S3, rtol=0.05)
 
 
-def test_alpha_and_bad_input():
-    assert alpha_parameter(5.0, 50.0, 0.0543) == pytest.approx(1.609e-4, rel=1e-3)
+def test_alpha_is_the_cubic_coefficient_of_the_steady_state():
+    """Oracle: sympy's steady-state cubic (test_cubic_derivation_sympy) in x = gamma beta:
+    x^3 + (2 sigma0^2 beta / sigma^2)(x - 1) = 0, solved with numpy.roots; psi of the model's
+    alpha is its real root in (0, 1), and alpha scales as sigma0^2 beta / sigma^2."""
+    for sigma0, sigma, beta in ((5.0, 50.0, 0.0543), (30.0, 20.0, 0.4), (1.0, 3.0, 2.5)):
+        k = 2 * sigma0**2 * beta / sigma**2
+        r = np.roots([1.0, 0.0, k, -k])
+        root = float(r[np.abs(r.imag) < 1e-9].real[0])
+        assert psi(alpha_parameter(sigma0, sigma, beta)) == pytest.approx(root, rel=1e-10)
+        assert steady_state_gain(beta, sigma, sigma0) == pytest.approx(root / beta, rel=1e-10)
+    assert alpha_parameter(10.0, 50.0, 0.0543) == pytest.approx(4 * alpha_parameter(5.0, 50.0, 0.0543))
+
+
+def test_bad_input():
     with pytest.raises(ValueError, match="alpha"):
         psi(-1.0)
     with pytest.raises(ValueError, match="beta"):
