@@ -21,6 +21,7 @@ from navcore.location.clock_tracking import (
     steady_state_gain,
     three_satellite_clock_variance,
     three_satellite_clock_variance_steady,
+    tracking_position_errors,
 )
 
 
@@ -206,3 +207,39 @@ def test_bad_input():
         psi(-1.0)
     with pytest.raises(ValueError, match="beta"):
         gain_recursion(0.0, 50.0, 5.0, 3)
+
+
+def test_table_row_errors_against_the_tracker_monte_carlo():
+    """Oracle: the seeded Monte Carlo of the whole tracker (simulated clocks and arrival-time
+    noise, 20 000 runs, standard error about 1 %): the least-squares error at epoch 0, the
+    steady-state tracking error (epoch 80, the gain changing by < 1e-6 per step) and the first
+    three-satellite error (epoch 81), each times c = 2 length units per time unit; the
+    geometry terms (traces, S, beta) are computed here from F with numpy. The alpha and psi
+    of the row are the cubic's coefficient and root (numpy.roots), and passing that psi
+    explicitly changes nothing."""
+    rng = np.random.default_rng(4)
+    U = rng.normal(size=(5, 3)) + np.array([0.0, 0.0, 2.5])
+    U /= np.linalg.norm(U, axis=1, keepdims=True)
+    F3 = U[[0, 2, 4]]
+    sigma, sigma0, N = 40.0, 6.0, 80
+    ones = np.ones(5)
+    g = np.linalg.solve(U.T @ U, U.T @ ones)
+    beta = float(ones @ ones - ones @ U @ g)
+    tr, S = float(np.trace(np.linalg.inv(U.T @ U))), float(g @ g)
+    tr3 = float(np.trace(np.linalg.inv(F3.T @ F3)))
+    S3 = float(np.ones(3) @ np.linalg.solve(F3 @ F3.T, np.ones(3)))
+    h = gain_recursion(beta, sigma, sigma0, N)
+    assert abs(h.gamma[-1] / h.gamma[-2] - 1) < 1e-6  # converged well within the 1 % statistics
+    row = tracking_position_errors(tr, S, tr3, S3, beta, sigma0, sigma, c=2.0)
+    mc = simulate_tracker(U, F3, sigma, sigma0, N, 1, 20_000, seed=5, tau_bar=2.0)
+    assert row.sd_least_squares**2 == pytest.approx(4 * mc.position_mse[0], rel=0.04)
+    assert row.sd_tracking_limit**2 == pytest.approx(4 * mc.position_mse[N], rel=0.04)
+    assert row.sd_first_three_satellite**2 == pytest.approx(4 * mc.position_mse[N + 1], rel=0.04)
+    k = 2 * sigma0**2 * beta / sigma**2
+    r = np.roots([1.0, 0.0, k, -k])
+    root = float(r[np.abs(r.imag) < 1e-9].real[0])
+    assert row.psi == pytest.approx(root, rel=1e-10)
+    assert 27 * row.alpha / 4 == pytest.approx(k, rel=1e-12)
+    assert tracking_position_errors(
+        tr, S, tr3, S3, beta, sigma0, sigma, c=2.0, psi_value=root
+    ) == pytest.approx(row, rel=1e-9)

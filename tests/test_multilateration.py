@@ -36,9 +36,17 @@ def _geometry(ratio: float = R_RATIO):
     return sats, ac
 
 
-def test_synchronous_radius_kepler():
-    """Oracle: the textbook GEO radius 42 164 km."""
-    assert synchronous_orbit_radius() == pytest.approx(42_164.17e3, rel=1e-6)
+def test_synchronous_radius_force_balance():
+    """Oracle: at the synchronous radius gravity GM/r^2 supplies the centripetal acceleration
+    (2 pi / T)^2 r of a body turning once per period T; with the WGS-84 GM and the sidereal
+    day (86 164.0905 s) that is the textbook 42 164 km, and for another GM and period the
+    same balance holds."""
+    gm, day = 3.986004418e14, 86_164.0905
+    r = synchronous_orbit_radius()
+    assert gm / r**2 == pytest.approx((2 * math.pi / day) ** 2 * r, rel=1e-9)
+    assert r == pytest.approx(42_164.17e3, rel=1e-6)
+    r2 = synchronous_orbit_radius(gm=4.9e12, period_s=3600.0)
+    assert 4.9e12 / r2**2 == pytest.approx((2 * math.pi / 3600.0) ** 2 * r2, rel=1e-12)
 
 
 def test_positions_match_pymap3d_sphere():
@@ -58,7 +66,6 @@ def test_zenith_angles_match_pymap3d_elevation():
     for s, z in zip(sats, zen, strict=True):
         _, el, _ = pymap3d.ecef2aer(*s, 45.0, 120.0, 0.0, ell=sphere)
         assert z == pytest.approx(90.0 - float(el), abs=1e-9)
-    assert zen[0] == pytest.approx(47.18, abs=0.01)
 
 
 def test_invariants_match_pymap3d_enu_frame():
@@ -112,7 +119,6 @@ def test_beta_brute_force_projection():
     one = np.ones(F.shape[0])
     ref = F.shape[0] - one @ F @ np.linalg.inv(F.T @ F) @ F.T @ one
     assert beta_parameter(F) == pytest.approx(ref, rel=1e-9)
-    assert beta_parameter(F) == pytest.approx(0.0543, rel=0.005)
 
 
 def test_triplet_brute_force():
