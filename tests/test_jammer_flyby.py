@@ -16,16 +16,6 @@ RC = GPS_P_CHIP_RATE_HZ
 LAM = GPS_L1_WAVELENGTH_M
 
 
-def _loop_hysteresis(c: np.ndarray, lo: float, hi: float) -> np.ndarray:
-    """Brute-force state machine, one sample at a time."""
-    out = np.empty(c.shape, dtype=bool)
-    state = np.ones(c.shape[1], dtype=bool)
-    for k in range(c.shape[0]):
-        state = np.where(c[k] < lo, False, np.where(c[k] >= hi, True, state))
-        out[k] = state
-    return out
-
-
 @pytest.mark.parametrize("q", [2.0, 1.3])
 def test_effective_cn0_in_watts(q):
     """Oracle: the law in linear units, C / (N0 + J / (Q Rc)) with C, J in W and N0 in W/Hz
@@ -178,11 +168,52 @@ def test_costas_and_pll_thresholds_follow_their_discriminators():
         jg.pll_jitter_threshold_dbhz(5.83, loop="fll")
 
 
-def test_hysteresis_matches_state_machine():
-    """Oracle: a sample-by-sample state machine on seeded random C/N0 histories."""
+def _loop_hysteresis(c, lo, hi, initially_locked=True):
+    """Brute-force state machine, one sample and one channel at a time."""
+    lo, hi = np.broadcast_to(lo, c.shape[1:]), np.broadcast_to(hi, c.shape[1:])
+    out = np.empty(c.shape, dtype=bool)
+    for j in range(c.shape[1]):
+        state = initially_locked
+        for k in range(c.shape[0]):
+            if c[k, j] < lo[j]:
+                state = False
+            elif c[k, j] >= hi[j]:
+                state = True
+            out[k, j] = state
+    return out
+
+
+@pytest.mark.parametrize("initially_locked", [True, False])
+def test_hysteresis_matches_state_machine(initially_locked):
+    """Oracle: a sample-by-sample state machine on seeded random C/N0 histories that start
+    between the thresholds, with common and with per-channel thresholds."""
     rng = np.random.default_rng(5)
     c = 19.5 + np.cumsum(rng.normal(0, 1.0, (400, 6)), axis=0) * 0.3
-    np.testing.assert_array_equal(jg.hysteresis_lock(c, 18.0, 21.0), _loop_hysteresis(c, 18.0, 21.0))
+    got = jg.hysteresis_lock(c, 18.0, 21.0, initially_locked=initially_locked)
+    np.testing.assert_array_equal(got, _loop_hysteresis(c, 18.0, 21.0, initially_locked))
+    lo, hi = np.array([17.0, 18.0, 18.5, 19.0, 19.4, 19.0]), np.array([20.0, 21.0, 19.6, 22.0, 19.6, 19.0])
+    got = jg.hysteresis_lock(c, lo, hi, initially_locked=initially_locked)
+    np.testing.assert_array_equal(got, _loop_hysteresis(c, lo, hi, initially_locked))
+
+
+def test_carrier_loss_threshold_passes_its_loop_parameters():
+    """Oracle: brentq on k sigma_phi(C/N0) = phi_max with the jitter formula (Kaplan Sec. 5.6.2)
+    at k = 2.5, T = 10 ms and a 60-deg limit, for an array of bandwidths, against the floor."""
+
+    def root(bn, limit_deg=60.0, k=2.5, t=0.01):
+        f = lambda c: k * np.degrees(np.sqrt(bn / c * (1 + 1 / (2 * t * c)))) - limit_deg
+        return 10 * np.log10(brentq(f, 1e-3, 1e6, xtol=1e-12))
+
+    bns = np.array([2.0, 10.0, 18.0])
+    got = jg.carrier_loss_threshold_dbhz(bns, 16.0, 60.0, 2.5, 0.01, loop="pll")
+    expected = np.maximum(16.0, [root(b) for b in bns])
+    np.testing.assert_allclose(got, expected, atol=1e-9)
+    assert expected[0] == 16.0 and expected[2] > 16.0
+    np.testing.assert_allclose(
+        jg.pll_jitter_threshold_dbhz(bns, k_sigma=2.5, coherent_s=0.01, loop="pll"),
+        [root(b, 90.0) for b in bns],
+        atol=1e-9,
+    )
 
 
 def test_constant_js_limit_is_the_all_satellites_outage():
@@ -206,6 +237,8 @@ def test_outage_intervals_edges():
     t = np.arange(6.0)
     assert jg.outage_intervals(t, [True, False, False, True, False, False]) == [(1.0, 3.0), (4.0, 5.0)]
     assert jg.outage_intervals(t, np.ones(6, bool)) == []
+    assert jg.outage_intervals(t, [False, True, True, False, True, True]) == [(0.0, 1.0), (3.0, 4.0)]
+    assert jg.outage_intervals(t, np.zeros(6, bool)) == [(0.0, 5.0)]
 
 
 @pytest.mark.parametrize(
