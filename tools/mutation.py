@@ -87,6 +87,7 @@ PACKAGES: dict[str, tuple[list[str], list[str]]] = {
             "test_covariance_analysis.py",
             "test_sp_architectures.py",
             "test_constellation_geometry.py",
+            "test_carrier_phase_geometry.py",
         ],
     ),
     "detection": (
