@@ -81,7 +81,7 @@ def test_positions_broadcast_over_times() -> None:
 
 def test_velocities_match_the_analytic_orbit_velocity() -> None:
     """Oracle: the analytic ECEF velocity of a circular orbit, R3(-w t) v_i - w x r_e (about
-    3.9 km/s inertial); the central difference of the model is accurate to ~1e-6 m/s, so a
+    3.9 km/s inertial); the central difference of the model is accurate to ~3e-6 m/s, so a
     step three times longer (error ~3e-5 m/s) or a one-sided difference would fail."""
     c = cs.nominal_gps_constellation()
     for t in (0.0, 1234.5, np.array([10.0, 20_000.0])):
