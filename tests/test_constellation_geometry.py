@@ -147,3 +147,90 @@ def test_pseudorange_rate_is_the_time_derivative_of_the_pseudorange() -> None:
     np.testing.assert_allclose(one, fd[1] - drift, atol=1e-4)
     with pytest.raises(ValueError, match="r_sat"):
         pseudorange_rate(r_user, v_user, r_user, v_sats[0])
+
+
+def test_velocity_step_and_stored_angles_for_other_arguments() -> None:
+    """Oracle: the analytic orbit velocity with the central-difference step given explicitly
+    (0.25 s), and a phase offset large enough (100 deg between planes) that the hand-built
+    argument of latitude exceeds 2 pi and must be wrapped into [0, 2 pi)."""
+    c = cs.nominal_gps_constellation()
+    v = c.velocities_ecef(777.0, dt=0.25)
+    _, ref = _orbit(math.radians(60.0), math.radians(90.0 * 3 + 15.0), 777.0)
+    np.testing.assert_allclose(v[7], ref, rtol=0, atol=1e-5)
+    c = cs.nominal_gps_constellation(n_planes=3, per_plane=4, phase_offset_deg=100.0)
+    arg = np.radians(90.0 * np.tile(np.arange(4), 3) + 100.0 * np.repeat(np.arange(3), 4))
+    assert arg.max() > 2 * np.pi
+    np.testing.assert_allclose(c.arg_lat0, np.mod(arg, 2 * np.pi), atol=1e-12)
+
+
+def test_geometry_of_stacked_epochs_and_single_satellites() -> None:
+    """Oracle: per-epoch Euclidean distances for satellites stacked over epochs (T, N, 3) and
+    for one satellite given as a (3,) vector, in line_of_sight and pseudorange."""
+    c = cs.nominal_gps_constellation()
+    r_user = np.array(pymap3d.geodetic2ecef(40.0, 10.0, 0.0))
+    sats = c.positions_ecef(np.array([0.0, 600.0]))  # (2, 24, 3)
+    u, rho = cs.line_of_sight(r_user, sats)
+    assert rho.shape == (2, 24) and u.shape == (2, 24, 3)
+    np.testing.assert_allclose(rho[1, 5], math.dist(sats[1, 5], r_user), rtol=1e-14)
+    np.testing.assert_allclose(u[1, 5] * rho[1, 5], sats[1, 5] - r_user, atol=1e-6)
+    u1, rho1 = cs.line_of_sight(r_user, sats[0, 3])
+    assert float(rho1) == pytest.approx(math.dist(sats[0, 3], r_user), rel=1e-14)
+    np.testing.assert_allclose(np.ravel(u1) * float(rho1), sats[0, 3] - r_user, atol=1e-6)
+    pr = pseudorange(r_user, sats)
+    np.testing.assert_allclose(pr[1, 5], math.dist(sats[1, 5], r_user), rtol=1e-14)
+    assert pseudorange(r_user, sats[0, 3])[0] == pytest.approx(math.dist(sats[0, 3], r_user), rel=1e-14)
+
+
+def test_pseudorange_rate_geometry_edge_cases() -> None:
+    """Oracle: finite differences of the range as above when every satellite shares the user's
+    x coordinate (a zero column of the offsets is not a zero range), and a satellite at the
+    user's position among others is rejected (no line of sight)."""
+    r_user, v_user = np.array([1.0e6, 2.0e6, 3.0e6]), np.array([10.0, -20.0, 5.0])
+    sats = np.array([[1.0e6, 2.2e7, 1.0e7], [1.0e6, -1.5e7, 2.0e7], [1.0e6, 5.0e6, -2.1e7]])
+    v_sats = np.array([[100.0, 2000.0, -300.0], [-50.0, 100.0, 2500.0], [0.0, -900.0, 40.0]])
+    h = 1e-3
+
+    def rho(t: float) -> np.ndarray:
+        return np.linalg.norm(sats + v_sats * t - r_user - v_user * t, axis=1)
+
+    np.testing.assert_allclose(
+        pseudorange_rate(r_user, v_user, sats, v_sats), (rho(h) - rho(-h)) / (2 * h), atol=1e-4
+    )
+    with pytest.raises(ValueError, match="r_sat"):
+        pseudorange_rate(r_user, v_user, np.vstack([sats, r_user]), np.vstack([v_sats, v_user]))
+
+
+@pytest.mark.parametrize(
+    ("lat", "lon", "sign", "elevation"),
+    [
+        (0.5118732440808911, 0.8831370694455005, 1.0, 90.0),
+        (-0.5645056439685436, -0.4600413061645461, -1.0, -90.0),
+    ],
+)
+def test_zenith_and_nadir_elevations_are_exact(lat, lon, sign, elevation) -> None:
+    """Oracle: geometry: a satellite straight up (down) the local vertical is at +90 (-90) deg
+    elevation. These positions (found by a seeded search) make the rounded sine of the
+    elevation 1 + 2e-16 in magnitude, so it must be clipped."""
+    r = np.array(pymap3d.geodetic2ecef(math.degrees(lat), math.degrees(lon), 0.0))
+    up = np.array([math.cos(lat) * math.cos(lon), math.cos(lat) * math.sin(lon), math.sin(lat)])
+    sat = r + sign * 3.0e6 * up
+    el, _ = cs.elevation_azimuth(r, sat[None], lat, lon)
+    assert math.degrees(float(el[0])) == pytest.approx(elevation, abs=1e-6)
+
+
+def test_visibility_mask_default_and_boundary() -> None:
+    """Oracle: pymap3d elevations; the default mask is 5 deg (a time and place is searched at
+    which one satellite lies between 5 and 6 deg), and a satellite exactly at the mask counts."""
+    c = cs.nominal_gps_constellation()
+    lat, lon = 0.3, 2.0
+    for t in np.arange(0.0, 43_200.0, 60.0):
+        s = c.positions_ecef(t)
+        _, el, _ = pymap3d.ecef2aer(s[:, 0], s[:, 1], s[:, 2], math.degrees(lat), math.degrees(lon), 0.0)
+        if np.any((el >= 5.0) & (el < 6.0)):
+            break
+    else:
+        pytest.fail("no satellite between 5 and 6 deg")
+    np.testing.assert_array_equal(cs.visible(c, t, lat, lon, 0.0), el >= 5.0)
+    # a satellite on the x axis seen from (0, 0, 0): exactly overhead (90 deg = the mask)
+    overhead = cs.Constellation(np.zeros(1), np.zeros(1), 0.0, 2.6e7, np.array([1]))
+    assert cs.visible(overhead, 0.0, 0.0, 0.0, 0.0, mask_deg=90.0).tolist() == [True]
