@@ -78,3 +78,18 @@ def test_doppler_conversions() -> None:
 def test_bad_input_raises(call, match) -> None:
     with pytest.raises(ValueError, match=match):
         call()
+
+
+def test_defaults_and_return_types() -> None:
+    """Oracles: scipy.stats.norm for the default box (one dimension, +-1 sigma: 2 Phi(-1));
+    hand products for the conversions; scalars give floats, arrays give arrays."""
+    assert acq.probability_outside_sigma_box() == pytest.approx(2 * norm.sf(1.0), rel=1e-12)
+    assert acq.probability_outside_sigma_box(3) == pytest.approx(1 - (1 - 2 * norm.sf(1.0)) ** 3, rel=1e-12)
+    assert isinstance(acq.range_rate_from_doppler(50.0, 0.2), float)
+    np.testing.assert_allclose(acq.range_rate_from_doppler(np.array([50.0, -25.0]), 0.2), [10.0, -5.0])
+    assert isinstance(acq.search_time_from_cells(82), float)
+    np.testing.assert_allclose(
+        acq.search_time_from_cells(np.array([2, 3]), np.array([4, 1]), 0.5), [4.0, 1.5]
+    )
+    with pytest.raises(ValueError, match="n_doppler"):
+        acq.search_time_from_cells(3, 0.5)

@@ -341,3 +341,37 @@ def test_sp_exact_impact_covariance_matches_monte_carlo() -> None:
                 res = aj.simulate_impact_errors(model, sig, runs=4000, seed=11)
                 mc = aj.cep_from_horizontal_errors(res.impact_errors_m)
                 assert spj.model_cep(arch, p) == pytest.approx(mc, rel=0.04), (p, arch)
+
+
+def test_defaults_return_types_and_boundaries() -> None:
+    """Contracts and oracles by hand: the documented defaults (half-chip spacing; Q = 2; a
+    1-s average of 20-ms coherent sums) give the same values as passing them; scalars give
+    floats and arrays arrays; the discriminator is R(tau - d/2) - R(tau + d/2) by hand at
+    tau = 0.1; a threshold equal to the unjammed C/N0 is rejected by name."""
+    assert isinstance(aj.ideal_correlation(0.25), float) and aj.ideal_correlation(0.25) == 0.75
+    np.testing.assert_allclose(aj.ideal_correlation(np.array([-0.5, 2.0])), [0.5, 0.0])
+    assert isinstance(aj.early_minus_late(0.1), float)
+    assert aj.early_minus_late(0.1) == pytest.approx((1 - 0.15) - (1 - 0.35), abs=1e-15)
+    assert aj.early_minus_late(0.1, 1.0) == pytest.approx((1 - 0.4) - (1 - 0.6), abs=1e-15)
+    np.testing.assert_allclose(aj.early_minus_late(np.array([0.1, -0.1])), [0.2, -0.2], atol=1e-15)
+    assert isinstance(aj.code_tracking_sigma_chips(45.0), float)
+    assert aj.code_tracking_sigma_chips(45.0) == aj.code_tracking_sigma_chips(45.0, 0.5, 1.0, 0.02)
+    np.testing.assert_allclose(
+        aj.code_tracking_sigma_chips(np.array([40.0, 45.0])),
+        [aj.code_tracking_sigma_chips(40.0), aj.code_tracking_sigma_chips(45.0)],
+        rtol=1e-15,
+    )
+    assert aj.js_for_effective_cn0(45.0, 30.0, 1e6) == aj.js_for_effective_cn0(45.0, 30.0, 1e6, 2.0)
+    assert aj.effective_cn0_dbhz(45.0, 30.0, 1e6) == aj.effective_cn0_dbhz(45.0, 30.0, 1e6, 2.0)
+    with pytest.raises(ValueError, match="threshold_dbhz"):
+        aj.js_for_effective_cn0(45.0, 45.0, 1e6)
+
+
+def test_spectral_separation_of_a_very_wide_jammer() -> None:
+    """Oracle: kappa by the trapezoid rule on a 2-million-point grid over +-100 chip rates
+    (the sinc^2 spectrum has 200 lobes there): a wide flat jammer is despread to about its
+    in-band fraction, Q = 1/(Rc kappa) ~ 200."""
+    rc, b = 1.023e6, 200 * 1.023e6
+    f = np.linspace(-b / 2, b / 2, 2_000_001)
+    kappa = np.trapezoid(np.sinc(f / rc) ** 2 / rc, f) / b
+    assert aj.spectral_separation_q(b, rc) == pytest.approx(1 / (rc * kappa), rel=1e-6)

@@ -1,4 +1,4 @@
-"""Double-difference carrier phase against ranges computed in 40-digit arithmetic (mpmath)."""
+"""Double-difference carrier phase and its noise covariance against independent oracles (mpmath, by hand)."""
 
 from __future__ import annotations
 
@@ -6,7 +6,7 @@ import mpmath
 import numpy as np
 import pytest
 
-from navcore.gnss.carrier_phase import double_difference_phase
+from navcore.gnss.carrier_phase import dd_covariance, double_difference_phase
 from navcore.units import GPS_L1_WAVELENGTH_M
 
 
@@ -46,3 +46,19 @@ def test_double_difference_phase_against_extended_precision_ranges(lam: float) -
     )
     with pytest.raises(ValueError, match="coincide"):
         double_difference_phase(sats[0], user, user, user)
+
+
+@pytest.mark.parametrize(("nu", "k"), [(2, 1), (4, 2), (5, 3)])
+def test_dd_covariance_from_shared_undifferenced_phases(nu: int, k: int) -> None:
+    """Oracle: the covariance of two double differences, by hand from KZL Eq. 15. DD(s, a) =
+    phi(s, a) - phi(s, 0) - phi(0, a) + phi(0, 0) (satellite 0 and antenna 0 the masters) with
+    independent phases of variance sigma^2, so Cov(DD(s, a), DD(s', a')) counts the shared
+    terms: sigma^2 [(s = s' and a = a') + (s = s') + (a = a') + 1]."""
+    sigma = 0.3
+    rows = [(s, a) for s in range(1, nu) for a in range(1, k + 1)]
+    expected = np.array(
+        [[sigma**2 * ((s == t and a == b) + (s == t) + (a == b) + 1) for t, b in rows] for s, a in rows]
+    )
+    np.testing.assert_allclose(dd_covariance(nu, sigma, n_baselines=k), expected, rtol=1e-14)
+    if k == 2:
+        np.testing.assert_allclose(dd_covariance(nu, sigma), expected, rtol=1e-14)

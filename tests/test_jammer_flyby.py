@@ -285,3 +285,53 @@ def test_elevation_gain_linear_and_clipped():
     np.testing.assert_allclose(got, expected, rtol=0, atol=1e-12)
     assert jg.elevation_gain_dbi(np.radians(60.0), 3.0, -5.0) == pytest.approx(-5.0 + 8.0 * 2 / 3, abs=1e-12)
     assert isinstance(jg.elevation_gain_dbi(0.3, 3.0, -5.0), float)
+
+
+def test_geometry_helpers_contracts():
+    """Oracles by hand: slant range for one position given as a (3,) vector and for a batch,
+    with an emitter off every axis (Euclidean distance, math.dist); free-space loss and
+    received power default to a 0-dBi receive antenna; scalars give floats."""
+    import math
+
+    e = np.array([1200.0, -800.0, 300.0])
+    p = np.array([[100.0, 2500.0, -6000.0], [-4000.0, 0.0, -2000.0]])
+    r = jg.slant_range_m(p[0], e)
+    assert isinstance(r, float) and r == pytest.approx(math.dist(p[0], e), rel=1e-15)
+    np.testing.assert_allclose(jg.slant_range_m(p, e), [math.dist(x, e) for x in p], rtol=1e-15)
+    assert isinstance(jg.free_space_loss_db(1e4, LAM), float)
+    assert jg.received_jammer_power_dbw(30.0, 1e4, LAM) == pytest.approx(
+        30.0 + 10 * np.log10((LAM / (4 * np.pi * 1e4)) ** 2), abs=1e-12
+    )
+    assert jg.threshold_range_m(30.0, -100.0, LAM) == pytest.approx(
+        LAM / (4 * np.pi) * 10 ** (130.0 / 20), rel=1e-12
+    )
+
+
+def test_threshold_power_near_and_at_the_unjammed_cn0():
+    """Oracle: the law in watts solved by hand, J* = Q Rc (C/gamma - N0), at a threshold only
+    0.5 dB below the unjammed C/N0 (valid), and a threshold equal to it (no jammer power can
+    do it: rejected by name)."""
+    c_dbw, gamma = -160.0, 43.5  # C/N0 = 44 dB-Hz
+    jstar_w = 2.0 * RC * (10 ** (c_dbw / 10) / 10 ** (gamma / 10) - 10 ** (N0 / 10))
+    assert jg.jammer_power_at_threshold_dbw(c_dbw, gamma, N0, RC) == pytest.approx(
+        10 * np.log10(jstar_w), abs=1e-9
+    )
+    with pytest.raises(ValueError, match="threshold_dbhz"):
+        jg.jammer_power_at_threshold_dbw(c_dbw, 44.0, N0, RC)
+
+
+def test_lock_thresholds_accept_equal_and_reject_infinite():
+    """Contract: reacquisition equal to loss is a valid (no-hysteresis) receiver; an infinite
+    threshold is rejected, naming the field."""
+    th = jg.LockThresholds(18.0, 19.0, 18.0, 19.0)
+    assert th.code_reacquisition == th.code_loss
+    with pytest.raises(ValueError, match="code_reacquisition"):
+        jg.LockThresholds(18.0, 19.0, float("inf"), 22.0)
+    with pytest.raises(ValueError, match="carrier_reacquisition"):
+        jg.LockThresholds(18.0, 19.0, 21.0, float("inf"))
+
+
+def test_outage_intervals_accept_zero_one_flags():
+    """Oracle: the same stretches as for booleans when availability is given as 0/1 integers."""
+    t = np.arange(6.0)
+    assert jg.outage_intervals(t, [1, 0, 0, 1, 0, 0]) == [(1.0, 3.0), (4.0, 5.0)]

@@ -133,3 +133,41 @@ def test_inverse_functions_reach_the_requested_peak() -> None:
 def test_bad_input_raises(call, match) -> None:
     with pytest.raises(ValueError, match=match):
         call()
+
+
+def test_scalar_inputs_give_floats_and_arrays_give_arrays() -> None:
+    """Contract (documented 'float or ndarray'): scalar time in, Python float out; array in,
+    array out of the same shape, equal elementwise to the scalar calls (sympy's inverse
+    Laplace transform above is the oracle of the values)."""
+    t = np.array([0.3, 1.7])
+    for f in (
+        lambda x: trk.third_order_loop_step_error(x, 2.0, 3.0),
+        lambda x: trk.third_order_loop_jerk_error(x, 2.0, 3.0),
+        lambda x: trk.jerk_pulse_error(x, 2.0, 1.0, 3.0),
+        lambda x: trk.distance_to_phase_deg(x, 0.2),
+        lambda x: trk.aided_natural_frequency(x, 6.0, 18.0),
+    ):
+        assert isinstance(f(0.3), float)
+        arr = f(t)
+        assert isinstance(arr, np.ndarray) and arr.shape == (2,)
+        np.testing.assert_allclose(arr, [f(0.3), f(1.7)], rtol=1e-15)
+    assert trk.distance_to_phase_deg(0.05, 0.2) == pytest.approx(90.0, rel=1e-15)  # a quarter wavelength
+
+
+def test_default_coefficients_and_the_stability_boundary() -> None:
+    """Oracle: quadrature of |H|^2 for the default (Butterworth, a3 = b3 = 2) loop, 5 w0/6;
+    at a3 b3 = 1 the loop is marginally stable (Routh-Hurwitz) and is rejected; a negative time
+    is rejected by the jerk response too."""
+
+    def h2(w: float, w0: float = 1.7) -> float:
+        s = 1j * w
+        return (
+            abs((2 * w0 * s**2 + 2 * w0**2 * s + w0**3) / (s**3 + 2 * w0 * s**2 + 2 * w0**2 * s + w0**3)) ** 2
+        )
+
+    val, _ = integrate.quad(h2, 0, np.inf, limit=400)
+    assert trk.third_order_noise_bandwidth_hz(1.7) == pytest.approx(val / (2 * math.pi), rel=1e-7)
+    with pytest.raises(ValueError, match="a3"):
+        trk.third_order_noise_bandwidth_hz(1.0, 0.5, 2.0)
+    with pytest.raises(ValueError, match="t_s"):
+        trk.third_order_loop_jerk_error(np.array([1.0, -0.1]), 1.0, 1.0)
