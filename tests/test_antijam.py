@@ -353,6 +353,7 @@ def test_defaults_return_types_and_boundaries() -> None:
     assert isinstance(aj.early_minus_late(0.1), float)
     assert aj.early_minus_late(0.1) == pytest.approx((1 - 0.15) - (1 - 0.35), abs=1e-15)
     assert aj.early_minus_late(0.1, 1.0) == pytest.approx((1 - 0.4) - (1 - 0.6), abs=1e-15)
+    assert aj.early_minus_late(0.5) == pytest.approx(0.75 - 0.25, abs=1e-15)  # R(0.25) - R(0.75)
     np.testing.assert_allclose(aj.early_minus_late(np.array([0.1, -0.1])), [0.2, -0.2], atol=1e-15)
     assert isinstance(aj.code_tracking_sigma_chips(45.0), float)
     assert aj.code_tracking_sigma_chips(45.0) == aj.code_tracking_sigma_chips(45.0, 0.5, 1.0, 0.02)
