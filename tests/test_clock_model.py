@@ -116,3 +116,16 @@ def test_bad_input_raises():
         mandelbrot_van_ness_constant(1.0)
     with pytest.raises(ValueError, match="sigma1"):
         clock_covariance(3, -1.0, 1.0)
+
+
+def test_sample_paths_pure_frequency_offset_and_default_exponent():
+    """Oracle: Eq. 4.3.1 with no random walk (sigma1 = 0, rho_h = 1): x_n = n A, so every path
+    is a straight line through the origin (x_n / n the same for all n) with Var A = sigma2^2;
+    the rank-one covariance must still be sampled. The default exponent is rho_h = 1."""
+    x = sample_clock_paths(8, 20_000, 0.0, 1.5, 1.0, seed=4)
+    slopes = x / np.arange(1, 9)
+    np.testing.assert_allclose(slopes, slopes[:, :1] * np.ones((1, 8)), rtol=0, atol=1e-4)
+    assert np.var(slopes[:, 0]) == pytest.approx(1.5**2, rel=0.04)
+    np.testing.assert_array_equal(
+        sample_clock_paths(5, 4, 0.7, 0.4, seed=9), sample_clock_paths(5, 4, 0.7, 0.4, 1.0, seed=9)
+    )

@@ -243,3 +243,10 @@ def test_weighted_gauss_newton_with_one_outlier():
     assert np.linalg.norm(res.normal_equation) < 1e-3
     plain = emitter_gauss_newton(m, pos, vel, start)
     assert np.linalg.norm(plain.estimate[:3] - EMITTER) > 1.0
+
+
+def test_doppler_close_to_the_emitter():
+    """Oracle: first-order Doppler by hand half a metre from the emitter (any positive range is
+    valid): closing at v along the line of sight gives f0 (1 + v/c)."""
+    f = doppler_frequency(F0, [0.5, 0.0, 0.0], [[0.0, 0.0, 0.0]], [[30.0, 0.0, 0.0]])
+    assert f[0] == pytest.approx(F0 * (1 + 30.0 / C), rel=1e-15)

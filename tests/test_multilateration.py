@@ -174,3 +174,41 @@ def test_triplet_every_criterion_brute_force(criterion, cone):
         assert tri == best
         assert value == pytest.approx(abs(score(best)), rel=1e-9)
         np.testing.assert_allclose(zenith_angles_deg(sats, ac), zenith, atol=1e-9)
+
+
+def test_zenith_and_nadir_satellites_and_the_cone_boundary():
+    """Oracles: geometry: a satellite straight up the local vertical is at zenith angle 0, one
+    straight down at 180 deg; at this place (found by a seeded search) the rounded cosine is
+    1 + 2e-16 in magnitude, so it must be clipped. A satellite exactly on the cone (its own
+    zenith angle used as the half-angle) is inside ("within the cone" includes the edge)."""
+    lat, lon = 21.91386997143269, -82.87678304500669
+    ac = position_on_sphere(lat, lon, EARTH_MEAN_RADIUS_M)
+    up = ac / np.linalg.norm(ac)
+    z = zenith_angles_deg(np.array([ac + 3e7 * up, ac - 3e6 * up]), ac)
+    np.testing.assert_allclose(z, [0.0, 180.0], atol=1e-6)
+    sats, ac = _geometry()
+    zen = zenith_angles_deg(sats, ac)
+    k = int(np.argsort(zen)[3])  # the fourth-closest to the vertical
+    tri, _ = most_widely_spaced_triplet(sats, ac, float(zen[k]))
+    assert k in tri
+
+
+def test_coplanar_triplet_has_infinite_trace_and_parameters_dilution():
+    """Oracles: three lines of sight in one vertical plane (zero east component) make F
+    singular, so the only triplet's trace score is infinite (no position fix); the
+    constellation's dilution is sqrt(tr + S/beta) from its own traces (Eq. 4.5.6/4.5.7)."""
+    ac = np.array([0.0, 0.0, EARTH_MEAN_RADIUS_M])
+    th = np.radians([-30.0, 0.0, 30.0])
+    sats = ac + 2e7 * np.column_stack([np.sin(th), np.zeros(3), np.cos(th)])
+    tri, score = most_widely_spaced_triplet(sats, ac, 90.0)
+    assert tri == (0, 1, 2) and score == math.inf
+    sats7, ac7 = _geometry()
+    p = constellation_parameters(line_of_sight_matrix(sats7, ac7))
+    assert p.dilution == pytest.approx(math.sqrt(p.trace + p.clock_term / p.beta), rel=1e-12)
+
+
+@pytest.mark.parametrize("shape", [(4, 2), (2, 3)])
+def test_geometry_matrix_shape_is_checked(shape):
+    """Contract: F must be K x 3 with K >= 3 (the shape message, not a later rank failure)."""
+    with pytest.raises(ValueError, match="K x 3"):
+        position_trace(np.ones(shape))
