@@ -129,3 +129,4 @@ def test_sample_paths_pure_frequency_offset_and_default_exponent():
     np.testing.assert_array_equal(
         sample_clock_paths(5, 4, 0.7, 0.4, seed=9), sample_clock_paths(5, 4, 0.7, 0.4, 1.0, seed=9)
     )
+    assert sample_clock_paths(5, 1, 0.7, 0.4, seed=9).shape == (1, 5)  # a single path is valid

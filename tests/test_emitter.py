@@ -250,3 +250,11 @@ def test_doppler_close_to_the_emitter():
     valid): closing at v along the line of sight gives f0 (1 + v/c)."""
     f = doppler_frequency(F0, [0.5, 0.0, 0.0], [[0.0, 0.0, 0.0]], [[30.0, 0.0, 0.0]])
     assert f[0] == pytest.approx(F0 * (1 + 30.0 / C), rel=1e-15)
+
+
+def test_track_and_emitter_shapes_are_checked():
+    """Contract: apertures are (M, 3) (or one (3,) position) and the emitter a (3,) vector."""
+    with pytest.raises(ValueError, match="position must have shape"):
+        doppler_frequency(F0, EMITTER, np.zeros((4, 2)), np.ones((4, 3)))
+    with pytest.raises(ValueError, match="emitter"):
+        doppler_frequency(F0, EMITTER[None, :], np.zeros((4, 3)), np.ones((4, 3)))

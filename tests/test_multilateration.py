@@ -189,8 +189,10 @@ def test_zenith_and_nadir_satellites_and_the_cone_boundary():
     sats, ac = _geometry()
     zen = zenith_angles_deg(sats, ac)
     k = int(np.argsort(zen)[3])  # the fourth-closest to the vertical
-    tri, _ = most_widely_spaced_triplet(sats, ac, float(zen[k]))
+    tri, _ = most_widely_spaced_triplet(sats, ac, float(zen[k]) - 1e-9)  # the 1e-9 deg allowance
     assert k in tri
+    # the same zenith angle whether the aircraft is given as (3,) or (1, 3)
+    np.testing.assert_array_equal(zenith_angles_deg(sats, ac[None, :]), zen)
 
 
 def test_coplanar_triplet_has_infinite_trace_and_parameters_dilution():
@@ -212,3 +214,11 @@ def test_geometry_matrix_shape_is_checked(shape):
     """Contract: F must be K x 3 with K >= 3 (the shape message, not a later rank failure)."""
     with pytest.raises(ValueError, match="K x 3"):
         position_trace(np.ones(shape))
+
+
+def test_identical_satellites_have_zero_separation():
+    """Oracle: geometry: three satellites at one position (this one, found by a seeded search,
+    makes the rounded cosine between the identical lines of sight 1 + 2e-16) are 0 deg apart."""
+    _, ac = _geometry()
+    s = np.array([19719117.84480214, 37060229.151187, 2404281.31555262])
+    assert most_widely_spaced_triplet(np.array([s, s, s]), ac, 90.0, "angle") == ((0, 1, 2), 0.0)
