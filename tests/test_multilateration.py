@@ -220,5 +220,5 @@ def test_identical_satellites_have_zero_separation():
     """Oracle: geometry: three satellites at one position (this one, found by a seeded search,
     makes the rounded cosine between the identical lines of sight 1 + 2e-16) are 0 deg apart."""
     _, ac = _geometry()
-    s = np.array([19719117.84480214, 37060229.151187, 2404281.31555262])
+    s = np.array([19719117.844802145, 37060229.151186995, 2404281.315552615])
     assert most_widely_spaced_triplet(np.array([s, s, s]), ac, 90.0, "angle") == ((0, 1, 2), 0.0)
