@@ -222,3 +222,34 @@ def test_identical_satellites_have_zero_separation():
     _, ac = _geometry()
     s = np.array([19719117.844802145, 37060229.151186995, 2404281.315552615])
     assert most_widely_spaced_triplet(np.array([s, s, s]), ac, 90.0, "angle") == ((0, 1, 2), 0.0)
+
+
+@pytest.mark.parametrize("criterion", ["trace", "det"])
+def test_tied_triplets_resolve_to_the_first(criterion):
+    """Oracle: an exhaustive search over itertools.combinations with min() (which keeps the
+    first of equal scores) on a geometry mirror-symmetric in x and y (found by a seeded
+    search): satellites 2 and 3 are mirror images, so the triplets (0, 1, 2) and (0, 1, 3)
+    tie exactly; the first in index order is returned."""
+    import itertools
+
+    ac = np.array([EARTH_MEAN_RADIUS_M / math.sqrt(2)] * 2 + [0.0])
+    sats = np.array(
+        [
+            [9738881.837548502, 33942647.98374179, 6467029.962018469],
+            [33942647.98374179, 9738881.837548502, 6467029.962018469],
+            [20145565.6325811, 8374868.191943854, -16480751.708556527],
+            [8374868.191943854, 20145565.6325811, -16480751.708556527],
+            [18187373.955980718, 18187373.955980718, 1090140.8782154752],
+        ]
+    )
+    U = line_of_sight_matrix(sats, ac)
+
+    def score(t):
+        F = U[list(t)]
+        return np.trace(np.linalg.inv(F.T @ F)) if criterion == "trace" else -abs(np.linalg.det(F))
+
+    combos = list(itertools.combinations(range(5), 3))
+    best = min(combos, key=score)
+    ties = [t for t in combos if score(t) == score(best)]
+    assert len(ties) >= 2
+    assert most_widely_spaced_triplet(sats, ac, 90.0, criterion)[0] == best == ties[0]
