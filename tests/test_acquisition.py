@@ -11,26 +11,33 @@ from scipy.stats import norm
 from navcore.gnss import acquisition as acq
 
 
-def test_search_time_by_brute_force_enumeration() -> None:
-    """Oracle: enumerate the cell centres of the +-1 sigma region one by one (SP Sec. 2.5 Delta T)."""
+@pytest.mark.parametrize("k", [1.0, 2.5])
+def test_search_time_by_brute_force_enumeration(k: float) -> None:
+    """Oracle: enumerate the cell centres of the +-k sigma region one by one (SP Sec. 2.5 Delta T)."""
+
+    def cells(half: float, width: float) -> int:
+        n, x = 0, -half
+        while True:
+            n += 1
+            x += width
+            if x >= half - 1e-9:
+                return n
+
     for sr, sv in [(75.0, 0.1), (1230.0, 4.0), (630.0, 9.0), (15.0, 0.0), (1000.0, 12.0)]:
-        n_r = 0
-        x = -sr
-        while True:
-            n_r += 1
-            x += 30.0
-            if x >= sr - 1e-9:
-                break
-        n_v = 0
-        v = -sv
-        while True:
-            n_v += 1
-            v += 10.0
-            if v >= sv - 1e-9:
-                break
-        assert acq.search_time(sr, sv, dwell_s=0.020, range_cell_m=30.0, rate_cell_mps=10.0) == pytest.approx(
-            0.020 * n_r * n_v
-        )
+        expected = 0.020 * cells(k * sr, 30.0) * cells(k * sv, 10.0)
+        got = acq.search_time(sr, sv, dwell_s=0.020, range_cell_m=30.0, rate_cell_mps=10.0, n_sigma=k)
+        assert got == pytest.approx(expected)
+        assert acq.search_cells(sr, 30.0, k) == cells(k * sr, 30.0)
+    t = acq.search_time(
+        np.array([75.0, 1230.0]), 4.0, dwell_s=0.05, range_cell_m=30.0, rate_cell_mps=10.0, n_sigma=k
+    )
+    np.testing.assert_allclose(
+        t,
+        [
+            0.05 * cells(k * 75.0, 30.0) * cells(k * 4.0, 10.0),
+            0.05 * cells(k * 1230.0, 30.0) * cells(k * 4.0, 10.0),
+        ],
+    )
 
 
 def test_vectorised_cells() -> None:
@@ -71,3 +78,18 @@ def test_doppler_conversions() -> None:
 def test_bad_input_raises(call, match) -> None:
     with pytest.raises(ValueError, match=match):
         call()
+
+
+def test_defaults_and_return_types() -> None:
+    """Oracles: scipy.stats.norm for the default box (one dimension, +-1 sigma: 2 Phi(-1));
+    hand products for the conversions; scalars give floats, arrays give arrays."""
+    assert acq.probability_outside_sigma_box() == pytest.approx(2 * norm.sf(1.0), rel=1e-12)
+    assert acq.probability_outside_sigma_box(3) == pytest.approx(1 - (1 - 2 * norm.sf(1.0)) ** 3, rel=1e-12)
+    assert isinstance(acq.range_rate_from_doppler(50.0, 0.2), float)
+    np.testing.assert_allclose(acq.range_rate_from_doppler(np.array([50.0, -25.0]), 0.2), [10.0, -5.0])
+    assert isinstance(acq.search_time_from_cells(82), float)
+    np.testing.assert_allclose(
+        acq.search_time_from_cells(np.array([2, 3]), np.array([4, 1]), 0.5), [4.0, 1.5]
+    )
+    with pytest.raises(ValueError, match="n_doppler"):
+        acq.search_time_from_cells(3, 0.5)

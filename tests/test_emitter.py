@@ -199,3 +199,62 @@ def test_bad_input_raises():
         doppler_frequency(-1.0, EMITTER, [0.0, 0, 0], [1.0, 0, 0])
     with pytest.raises(ValueError, match="position"):
         doppler_frequency(F0, EMITTER, EMITTER, [1.0, 0, 0])
+
+
+def test_weighted_error_and_covariance_against_lstsq():
+    """Oracle: weighted least squares by numpy.linalg.lstsq on the whitened system
+    (W^(1/2) H) x = W^(1/2) e, column by column for the map G; the covariance of the error is
+    G Sigma G' for a non-diagonal Sigma and a weight that is not Sigma^-1 (a full matrix, a
+    vector meaning a diagonal, and the default identity)."""
+    rng = np.random.default_rng(8)
+    M, n = 25, 4
+    H = rng.normal(size=(M, n))
+    A = rng.normal(size=(M, M))
+    Sigma = A @ A.T / M + np.eye(M)
+    B = rng.normal(size=(M, M))
+    weights = {"full": B @ B.T / M + 0.5 * np.eye(M), "vector": rng.uniform(0.2, 3.0, M), "identity": None}
+    e = rng.normal(size=(M, 3))
+    for W in weights.values():
+        Wm = np.eye(M) if W is None else (np.diag(W) if np.ndim(W) == 1 else W)
+        Wh = np.linalg.cholesky(Wm).T  # Wh' Wh = W
+        G = np.linalg.lstsq(Wh @ H, Wh, rcond=None)[0]
+        np.testing.assert_allclose(linearized_location_error(H, e, W), G @ e, rtol=1e-9, atol=1e-12)
+        np.testing.assert_allclose(
+            linearized_location_error(H, e[:, 0], W), G @ e[:, 0], rtol=1e-9, atol=1e-12
+        )
+        cov = location_error_covariance(H, Sigma, W)
+        np.testing.assert_allclose(cov, G @ Sigma @ G.T, rtol=1e-9, atol=1e-14)
+        np.testing.assert_array_equal(cov, cov.T)
+
+
+def test_weighted_gauss_newton_with_one_outlier():
+    """Oracle: noise-free WF Eq. (1) data with one sample corrupted by 50 Hz: with zero weight
+    on it (a vector of weights) the fit recovers the emitter exactly; unweighted it does not,
+    and the reported normal equation H'W r vanishes at the weighted solution."""
+    pos, vel = _arc()
+    m = doppler_frequency(F0, EMITTER, pos, vel)
+    m[17] += 50.0
+    w = np.ones(len(m))
+    w[17] = 1e-12
+    start = [EMITTER[0] + 1500, EMITTER[1] - 1000, 0.0, F0 + 20.0]
+    res = emitter_gauss_newton(m, pos, vel, start, w)
+    assert res.converged and 1 < res.iterations < 20
+    np.testing.assert_allclose(res.estimate[:3], EMITTER, atol=1e-2)
+    assert np.linalg.norm(res.normal_equation) < 1e-3
+    plain = emitter_gauss_newton(m, pos, vel, start)
+    assert np.linalg.norm(plain.estimate[:3] - EMITTER) > 1.0
+
+
+def test_doppler_close_to_the_emitter():
+    """Oracle: first-order Doppler by hand half a metre from the emitter (any positive range is
+    valid): closing at v along the line of sight gives f0 (1 + v/c)."""
+    f = doppler_frequency(F0, [0.5, 0.0, 0.0], [[0.0, 0.0, 0.0]], [[30.0, 0.0, 0.0]])
+    assert f[0] == pytest.approx(F0 * (1 + 30.0 / C), rel=1e-15)
+
+
+def test_track_and_emitter_shapes_are_checked():
+    """Contract: apertures are (M, 3) (or one (3,) position) and the emitter a (3,) vector."""
+    with pytest.raises(ValueError, match="position must have shape"):
+        doppler_frequency(F0, EMITTER, np.zeros((4, 2)), np.ones((4, 3)))
+    with pytest.raises(ValueError, match="emitter"):
+        doppler_frequency(F0, EMITTER[None, :], np.zeros((4, 3)), np.ones((4, 3)))

@@ -8,7 +8,7 @@ from scipy.optimize import brentq
 
 from navcore.estimation.covariance_analysis import lock_table
 from navcore.gnss import jammer_geometry as jg
-from navcore.gnss.antijam import effective_cn0_dbhz, js_for_effective_cn0
+from navcore.gnss.antijam import js_for_effective_cn0
 from navcore.units import GPS_L1_WAVELENGTH_M, GPS_P_CHIP_RATE_HZ
 
 N0 = -204.0
@@ -16,24 +16,31 @@ RC = GPS_P_CHIP_RATE_HZ
 LAM = GPS_L1_WAVELENGTH_M
 
 
-def _loop_hysteresis(c: np.ndarray, lo: float, hi: float) -> np.ndarray:
-    """Brute-force state machine, one sample at a time."""
-    out = np.empty(c.shape, dtype=bool)
-    state = np.ones(c.shape[1], dtype=bool)
-    for k in range(c.shape[0]):
-        state = np.where(c[k] < lo, False, np.where(c[k] >= hi, True, state))
-        out[k] = state
-    return out
-
-
-def test_effective_cn0_matches_js_form():
-    """Oracle: the J/S form of navcore.gnss.antijam, 1/(C/N0) + (J/S)/(Q Rc), evaluated with
-    C/N0 = C - N0 and J/S = J - C (an independent formulation of the same law)."""
+@pytest.mark.parametrize("q", [2.0, 1.3])
+def test_effective_cn0_in_watts(q):
+    """Oracle: the law in linear units, C / (N0 + J / (Q Rc)) with C, J in W and N0 in W/Hz
+    (Kaplan Sec. 6.3), on a (7, 3) broadcast of jammer and carrier powers."""
     C = np.array([-163.0, -160.0, -158.0])
     J = np.linspace(-150.0, -90.0, 7)[:, None]
-    ours = jg.effective_cn0_with_jammer_dbhz(C, J, N0, RC, 2.0)
-    ref = effective_cn0_dbhz(C - N0, J - C, RC, 2.0)
-    np.testing.assert_allclose(ours, ref, atol=1e-9)
+    ours = jg.effective_cn0_with_jammer_dbhz(C, J, N0, RC, q)
+    c_w, j_w, n0_w = 10 ** (C / 10), 10 ** (J / 10), 10 ** (N0 / 10)
+    np.testing.assert_allclose(ours, 10 * np.log10(c_w / (n0_w + j_w / (q * RC))), atol=1e-9)
+    assert ours.shape == (7, 3)
+
+
+def test_received_power_and_threshold_range_friis():
+    """Oracle: Friis in watts, P_r = ERP G_r (lambda / 4 pi d)^2, and the distance at which it
+    equals a given power solved from it by hand, with a -10 dBi receive gain."""
+    erp_dbw, g_db = 40.0, -10.0
+    d = np.array([500.0, 12_000.0, 3e5])
+    p_w = 10 ** (erp_dbw / 10) * 10 ** (g_db / 10) * (LAM / (4 * np.pi * d)) ** 2
+    np.testing.assert_allclose(
+        jg.received_jammer_power_dbw(erp_dbw, d, LAM, g_db), 10 * np.log10(p_w), atol=1e-10
+    )
+    np.testing.assert_allclose(jg.free_space_loss_db(d, LAM), -10 * np.log10((LAM / (4 * np.pi * d)) ** 2))
+    target_w = 1e-11
+    d_star = LAM / (4 * np.pi) * np.sqrt(10 ** ((erp_dbw + g_db) / 10) / target_w)
+    assert jg.threshold_range_m(erp_dbw, -110.0, LAM, g_db) == pytest.approx(d_star, rel=1e-12)
 
 
 def test_threshold_jammer_power_matches_antijam_js():
@@ -161,11 +168,52 @@ def test_costas_and_pll_thresholds_follow_their_discriminators():
         jg.pll_jitter_threshold_dbhz(5.83, loop="fll")
 
 
-def test_hysteresis_matches_state_machine():
-    """Oracle: a sample-by-sample state machine on seeded random C/N0 histories."""
+def _loop_hysteresis(c, lo, hi, initially_locked=True):
+    """Brute-force state machine, one sample and one channel at a time."""
+    lo, hi = np.broadcast_to(lo, c.shape[1:]), np.broadcast_to(hi, c.shape[1:])
+    out = np.empty(c.shape, dtype=bool)
+    for j in range(c.shape[1]):
+        state = initially_locked
+        for k in range(c.shape[0]):
+            if c[k, j] < lo[j]:
+                state = False
+            elif c[k, j] >= hi[j]:
+                state = True
+            out[k, j] = state
+    return out
+
+
+@pytest.mark.parametrize("initially_locked", [True, False])
+def test_hysteresis_matches_state_machine(initially_locked):
+    """Oracle: a sample-by-sample state machine on seeded random C/N0 histories that start
+    between the thresholds, with common and with per-channel thresholds."""
     rng = np.random.default_rng(5)
     c = 19.5 + np.cumsum(rng.normal(0, 1.0, (400, 6)), axis=0) * 0.3
-    np.testing.assert_array_equal(jg.hysteresis_lock(c, 18.0, 21.0), _loop_hysteresis(c, 18.0, 21.0))
+    got = jg.hysteresis_lock(c, 18.0, 21.0, initially_locked=initially_locked)
+    np.testing.assert_array_equal(got, _loop_hysteresis(c, 18.0, 21.0, initially_locked))
+    lo, hi = np.array([17.0, 18.0, 18.5, 19.0, 19.4, 19.0]), np.array([20.0, 21.0, 19.6, 22.0, 19.6, 19.0])
+    got = jg.hysteresis_lock(c, lo, hi, initially_locked=initially_locked)
+    np.testing.assert_array_equal(got, _loop_hysteresis(c, lo, hi, initially_locked))
+
+
+def test_carrier_loss_threshold_passes_its_loop_parameters():
+    """Oracle: brentq on k sigma_phi(C/N0) = phi_max with the jitter formula (Kaplan Sec. 5.6.2)
+    at k = 2.5, T = 10 ms and a 60-deg limit, for an array of bandwidths, against the floor."""
+
+    def root(bn, limit_deg=60.0, k=2.5, t=0.01):
+        f = lambda c: k * np.degrees(np.sqrt(bn / c * (1 + 1 / (2 * t * c)))) - limit_deg
+        return 10 * np.log10(brentq(f, 1e-3, 1e6, xtol=1e-12))
+
+    bns = np.array([2.0, 10.0, 18.0])
+    got = jg.carrier_loss_threshold_dbhz(bns, 16.0, 60.0, 2.5, 0.01, loop="pll")
+    expected = np.maximum(16.0, [root(b) for b in bns])
+    np.testing.assert_allclose(got, expected, atol=1e-9)
+    assert expected[0] == 16.0 and expected[2] > 16.0
+    np.testing.assert_allclose(
+        jg.pll_jitter_threshold_dbhz(bns, k_sigma=2.5, coherent_s=0.01, loop="pll"),
+        [root(b, 90.0) for b in bns],
+        atol=1e-9,
+    )
 
 
 def test_constant_js_limit_is_the_all_satellites_outage():
@@ -189,6 +237,8 @@ def test_outage_intervals_edges():
     t = np.arange(6.0)
     assert jg.outage_intervals(t, [True, False, False, True, False, False]) == [(1.0, 3.0), (4.0, 5.0)]
     assert jg.outage_intervals(t, np.ones(6, bool)) == []
+    assert jg.outage_intervals(t, [False, True, True, False, True, True]) == [(0.0, 1.0), (3.0, 4.0)]
+    assert jg.outage_intervals(t, np.zeros(6, bool)) == [(0.0, 5.0)]
 
 
 @pytest.mark.parametrize(
@@ -235,3 +285,55 @@ def test_elevation_gain_linear_and_clipped():
     np.testing.assert_allclose(got, expected, rtol=0, atol=1e-12)
     assert jg.elevation_gain_dbi(np.radians(60.0), 3.0, -5.0) == pytest.approx(-5.0 + 8.0 * 2 / 3, abs=1e-12)
     assert isinstance(jg.elevation_gain_dbi(0.3, 3.0, -5.0), float)
+
+
+def test_geometry_helpers_contracts():
+    """Oracles by hand: slant range for one position given as a (3,) vector and for a batch,
+    with an emitter off every axis (Euclidean distance, math.dist); free-space loss and
+    received power default to a 0-dBi receive antenna; scalars give floats."""
+    import math
+
+    e = np.array([1200.0, -800.0, 300.0])
+    p = np.array([[100.0, 2500.0, -6000.0], [-4000.0, 0.0, -2000.0]])
+    r = jg.slant_range_m(p[0], e)
+    assert isinstance(r, float) and r == pytest.approx(math.dist(p[0], e), rel=1e-15)
+    np.testing.assert_allclose(jg.slant_range_m(p, e), [math.dist(x, e) for x in p], rtol=1e-15)
+    assert isinstance(jg.free_space_loss_db(1e4, LAM), float)
+    with pytest.raises(ValueError, match="emitter_ned_m shape"):
+        jg.slant_range_m(p, e[:2])
+    assert jg.received_jammer_power_dbw(30.0, 1e4, LAM) == pytest.approx(
+        30.0 + 10 * np.log10((LAM / (4 * np.pi * 1e4)) ** 2), abs=1e-12
+    )
+    assert jg.threshold_range_m(30.0, -100.0, LAM) == pytest.approx(
+        LAM / (4 * np.pi) * 10 ** (130.0 / 20), rel=1e-12
+    )
+
+
+def test_threshold_power_near_and_at_the_unjammed_cn0():
+    """Oracle: the law in watts solved by hand, J* = Q Rc (C/gamma - N0), at a threshold only
+    0.5 dB below the unjammed C/N0 (valid), and a threshold equal to it (no jammer power can
+    do it: rejected by name)."""
+    c_dbw, gamma = -160.0, 43.5  # C/N0 = 44 dB-Hz
+    jstar_w = 2.0 * RC * (10 ** (c_dbw / 10) / 10 ** (gamma / 10) - 10 ** (N0 / 10))
+    assert jg.jammer_power_at_threshold_dbw(c_dbw, gamma, N0, RC) == pytest.approx(
+        10 * np.log10(jstar_w), abs=1e-9
+    )
+    with pytest.raises(ValueError, match="threshold_dbhz"):
+        jg.jammer_power_at_threshold_dbw(c_dbw, 44.0, N0, RC)
+
+
+def test_lock_thresholds_accept_equal_and_reject_infinite():
+    """Contract: reacquisition equal to loss is a valid (no-hysteresis) receiver; an infinite
+    threshold is rejected, naming the field."""
+    th = jg.LockThresholds(18.0, 19.0, 18.0, 19.0)
+    assert th.code_reacquisition == th.code_loss
+    with pytest.raises(ValueError, match="code_reacquisition"):
+        jg.LockThresholds(18.0, 19.0, float("inf"), 22.0)
+    with pytest.raises(ValueError, match="carrier_reacquisition"):
+        jg.LockThresholds(18.0, 19.0, 21.0, float("inf"))
+
+
+def test_outage_intervals_accept_zero_one_flags():
+    """Oracle: the same stretches as for booleans when availability is given as 0/1 integers."""
+    t = np.arange(6.0)
+    assert jg.outage_intervals(t, [1, 0, 0, 1, 0, 0]) == [(1.0, 3.0), (4.0, 5.0)]

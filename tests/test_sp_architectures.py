@@ -23,3 +23,33 @@ def test_printed_totals():
 
 def test_a_mismatch_is_detected():
     assert not _printed_rows_match_layout(IN.table_2_2, tightly_coupled_layout().table())
+
+
+def test_block_units_are_dimensionally_consistent():
+    """Oracle: dimensional analysis with sympy symbols for metre, second and radian: each rate
+    state has the unit of its integral per second (velocity of position, acceleration of
+    velocity, clock drift of clock bias, gyro drift of the misalignment angle), biases have the
+    unit of what they bias, scale factors are dimensionless and the altimeter bias is a length."""
+    import sympy as sp
+
+    m, s, rad = sp.symbols("m s rad", positive=True)
+
+    def dim(unit: str):
+        return (
+            sp.Integer(1)
+            if unit in ("-", "")
+            else sp.sympify(unit.replace("^", "**"), {"m": m, "s": s, "rad": rad})
+        )
+
+    units = {}
+    for layout in (receiver_pva_layout(), loosely_coupled_layout(), tightly_coupled_layout()):
+        for b in layout.blocks:
+            assert units.setdefault(b.name, b.unit) == b.unit  # one unit per name across layouts
+    u = {k: dim(v) for k, v in units.items()}
+    assert sp.simplify(u["velocity"] / u["position"] - 1 / s) == 0
+    assert sp.simplify(u["acceleration"] / u["velocity"] - 1 / s) == 0
+    assert sp.simplify(u["clock drift"] / u["clock bias"] - 1 / s) == 0
+    assert sp.simplify(u["gyro drift"] / u["misalignment"] - 1 / s) == 0
+    assert u["position"] == m and u["misalignment"] == rad
+    assert u["accel bias"] == u["acceleration"] and u["altimeter bias"] == m and u["clock bias"] == m
+    assert u["gyro scale factor"] == 1 and u["accel scale factor"] == 1

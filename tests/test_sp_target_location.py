@@ -51,3 +51,11 @@ def test_rss_and_pointing() -> None:
 def test_bad_input_raises(call, match) -> None:
     with pytest.raises(ValueError, match=match):
         call()
+
+
+def test_pointing_error_arrays_and_integer_inputs() -> None:
+    """Oracle: arc length r theta by hand, elementwise; integer inputs give floats."""
+    out = tl.pointing_error_m(np.array([1, 2]), np.array([8000, 500]))
+    assert out.dtype == np.float64
+    np.testing.assert_allclose(out, [8000.0, 1000.0])
+    assert isinstance(tl.pointing_error_m(1e-3, 8000.0), float)

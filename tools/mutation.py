@@ -86,6 +86,8 @@ PACKAGES: dict[str, tuple[list[str], list[str]]] = {
             "test_error_model17.py",
             "test_covariance_analysis.py",
             "test_sp_architectures.py",
+            "test_constellation_geometry.py",
+            "test_carrier_phase_geometry.py",
         ],
     ),
     "detection": (

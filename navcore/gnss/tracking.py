@@ -464,9 +464,11 @@ def third_order_noise_bandwidth_hz(omega0: float, a3: float = 2.0, b3: float = 2
     r"""One-sided noise bandwidth (Hz) of a third-order loop with coefficients ``a3``, ``b3``.
 
     The loop's closed-loop denominator is
-    :math:`D(s) = s^3 + a_3\omega_0 s^2 + b_3\omega_0^2 s + \omega_0^3`: ``a3`` multiplies
-    the :math:`s^2` term and ``b3`` the :math:`s` term (Kaplan's convention; the Butterworth
-    loop of this module has ``a3 = b3 = 2``). Its noise bandwidth is
+    :math:`D(s) = s^3 + b_3\omega_0 s^2 + a_3\omega_0^2 s + \omega_0^3`: ``b3`` multiplies
+    the :math:`\omega_0 s^2` term and ``a3`` the :math:`\omega_0^2 s` term (Kaplan's
+    convention, Fig. 5.24: the loop filter's gains are :math:`a_3\omega_0^2` and
+    :math:`b_3\omega_0`; the Butterworth loop of this module has ``a3 = b3 = 2``). Its noise
+    bandwidth is
 
     :math:`B_n = \omega_0 (a_3 b_3^2 + a_3^2 - b_3) / (4 (a_3 b_3 - 1))`,
 
@@ -477,9 +479,9 @@ def third_order_noise_bandwidth_hz(omega0: float, a3: float = 2.0, b3: float = 2
     omega0 : float
         Loop natural frequency (rad/s), ``> 0``.
     a3 : float, default 2.0
-        Coefficient of :math:`\omega_0 s^2` in :math:`D(s)`, ``> 0``.
-    b3 : float, default 2.0
         Coefficient of :math:`\omega_0^2 s` in :math:`D(s)`, ``> 0``.
+    b3 : float, default 2.0
+        Coefficient of :math:`\omega_0 s^2` in :math:`D(s)`, ``> 0``.
 
     Returns
     -------
