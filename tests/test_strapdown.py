@@ -97,6 +97,13 @@ def test_levelling_round_trip_specific_force():
         assert float(p) == pytest.approx(pitch, abs=1e-12)
         r2, p2 = levelling_as_printed(-f)
         assert float(r2) == pytest.approx(roll, abs=1e-12) and float(p2) == pytest.approx(pitch, abs=1e-12)
+        r3, p3 = levelling(-f, convention="gravity-reaction")
+        assert float(r3) == pytest.approx(roll, abs=1e-12) and float(p3) == pytest.approx(pitch, abs=1e-12)
+    # batched: a (2, 3) stack of specific forces gives two attitudes
+    angles = np.array([[0.3, -0.4], [-1.0, 0.7]])  # (roll, pitch) per row
+    f = np.stack([fr.dcm_from_euler(r, p, 0.5).T @ [0, 0, -G0] for r, p in angles])
+    r, p = levelling(f)
+    np.testing.assert_allclose(np.column_stack([r, p]), angles, atol=1e-12)
 
 
 def test_printed_levelling_fails_for_specific_force():
@@ -110,6 +117,9 @@ def test_heading_from_velocity():
     """Oracle: east flight has heading 90 deg, north-west 315 deg (-45)."""
     assert float(heading_from_velocity([0, 110, 0])) == pytest.approx(np.pi / 2)
     assert float(heading_from_velocity([1, -1, 0])) == pytest.approx(-np.pi / 4)
+    np.testing.assert_allclose(
+        heading_from_velocity([[-3.0, 0.0, 2.0], [0.0, -5.0, 0.0]]), [np.pi, -np.pi / 2]
+    )
     with pytest.raises(ValueError, match="v_ned"):
         heading_from_velocity([0, 0, 1])
 
