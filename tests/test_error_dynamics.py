@@ -511,3 +511,30 @@ def test_skew_stack_is_the_cross_product():
         np.einsum("...ij,...j->...i", skew_stack(a), b), np.cross(a, b), rtol=0, atol=1e-15
     )
     np.testing.assert_allclose(skew_stack(a[0, 0]) @ b[0, 0], np.cross(a[0, 0], b[0, 0]), rtol=0, atol=1e-15)
+
+
+@pytest.mark.parametrize("lat_deg", [55.0, -30.0])
+def test_moving_horizontal_eigenvalues_closed_form(lat_deg):
+    """Oracle: the closed-form frequencies of the horizontal psi-angle error equations of a
+    vehicle flying east at v (vertical frozen). In complex form z = dr_N + j dr_E,
+    u = dv_N + j dv_E they read z' = u - j a z, u' = -ws^2 z - j b u, with a the down
+    component of the transport rate (turning of the position error) and b that of
+    2 w_ie + w_en (Coriolis); so s = j [-(a + b) +- sqrt((a - b)^2 + 4 ws^2)] / 2 and the
+    conjugates, ws^2 = g / (R + h). The rates come from pymap3d (`_frame_rate_from_pymap3d`
+    on the Schuler sphere, the ECEF spin axis in NED), not from navcore; their finite
+    differences limit the agreement to about 1e-8 relative (a sign error in either rate moves
+    the frequencies by about 4 %)."""
+    lat, h, v = lat_deg * DEG, 8000.0, 240.0
+    w_en = _frame_rate_from_pymap3d(lat, 0.2, h, [0.0, v, 0.0], ell=pymap3d.Ellipsoid(WGS84_A, WGS84_A))
+    w_ie = np.array(pymap3d.ecef2nedv(0.0, 0.0, OMEGA_EARTH, lat, 0.2, deg=False))
+    a, b = w_en[2], 2 * w_ie[2] + w_en[2]
+    ws2 = G0 / (WGS84_A + h)
+    root = np.sqrt((a - b) ** 2 + 4 * ws2)
+    lam = np.array([(-(a + b) + root) / 2, (-(a + b) - root) / 2])
+    F = error_dynamics(
+        CORE, f_ned=(0, 0, -G0), C_bn=np.eye(3), v_ned=(0.0, v, 0.0), lat=lat, h=h, vertical_channel=False
+    )
+    idx = [0, 1, 3, 4]
+    ev = np.linalg.eigvals(F[np.ix_(idx, idx)])
+    np.testing.assert_allclose(np.sort(ev.imag), np.sort(np.r_[lam, -lam]), rtol=0, atol=1e-7 * np.sqrt(ws2))
+    np.testing.assert_allclose(ev.real, 0.0, atol=1e-7 * np.sqrt(ws2))
