@@ -528,11 +528,19 @@ def test_moving_horizontal_eigenvalues_closed_form(lat_deg):
     w_en = _frame_rate_from_pymap3d(lat, 0.2, h, [0.0, v, 0.0], ell=pymap3d.Ellipsoid(WGS84_A, WGS84_A))
     w_ie = np.array(pymap3d.ecef2nedv(0.0, 0.0, OMEGA_EARTH, lat, 0.2, deg=False))
     a, b = w_en[2], 2 * w_ie[2] + w_en[2]
-    ws2 = G0 / (WGS84_A + h)
+    g = 9.78  # a local gravity other than the default
+    ws2 = g / (WGS84_A + h)
     root = np.sqrt((a - b) ** 2 + 4 * ws2)
     lam = np.array([(-(a + b) + root) / 2, (-(a + b) - root) / 2])
     F = error_dynamics(
-        CORE, f_ned=(0, 0, -G0), C_bn=np.eye(3), v_ned=(0.0, v, 0.0), lat=lat, h=h, vertical_channel=False
+        CORE,
+        f_ned=(0, 0, -G0),
+        C_bn=np.eye(3),
+        v_ned=(0.0, v, 0.0),
+        lat=lat,
+        h=h,
+        g=g,
+        vertical_channel=False,
     )
     idx = [0, 1, 3, 4]
     ev = np.linalg.eigvals(F[np.ix_(idx, idx)])
