@@ -35,6 +35,8 @@ def test_schuler_period_closed_form():
     """Oracle: 2 pi sqrt(R/g) with R = 6378137 m, g = 9.80665 m/s^2 (84.4 min)."""
     assert schuler_period() == pytest.approx(2 * np.pi * np.sqrt(WGS84_A / G0), rel=1e-12)
     assert schuler_period() / 60 == pytest.approx(84.45, abs=0.01)
+    # the Moon (R = 1737.4 km, g = 1.62 m/s^2): the period of a surface-grazing circular orbit
+    assert schuler_period(1.62, 1_737_400.0) / 60 == pytest.approx(108.4, abs=0.1)
 
 
 def test_schuler_oscillation_period_and_amplitude_from_eigen_and_expm():
@@ -546,3 +548,31 @@ def test_moving_horizontal_eigenvalues_closed_form(lat_deg):
     ev = np.linalg.eigvals(F[np.ix_(idx, idx)])
     np.testing.assert_allclose(np.sort(ev.imag), np.sort(np.r_[lam, -lam]), rtol=0, atol=1e-7 * np.sqrt(ws2))
     np.testing.assert_allclose(ev.real, 0.0, atol=1e-7 * np.sqrt(ws2))
+
+
+def test_alignment_without_sensor_states_and_at_the_default_attitude():
+    """Oracles: TRIAD (`_triad_T`) at the default level, north-pointing attitude; and, for a
+    layout with no sensor states, the definitions: the gyrocompassed attitude carries no
+    error, the levelled one only the external heading and the tilt noise, and the position
+    and velocity blocks of P0 are kept."""
+    lay, lat = _ALIGN_LAYOUT, 40 * DEG
+    a = lay.slice("misalignment")
+    s = np.arange(a.stop, lay.size)
+    P = gyrocompass_alignment(np.eye(lay.size), lay, lat=lat)
+    np.testing.assert_allclose(P[a][:, s], _triad_T(np.eye(3), lat, lay), rtol=1e-6, atol=1e-12)
+    P0 = np.diag(np.arange(1.0, 10.0))
+    P = gyrocompass_alignment(P0, CORE, lat=lat)
+    np.testing.assert_array_equal(P, np.diag([1.0, 2, 3, 4, 5, 6, 0, 0, 0]))
+    P = levelling_alignment(P0, CORE, heading_sigma=0.1, lat=lat, tilt_noise_sigma=0.01)
+    np.testing.assert_allclose(P, np.diag([1.0, 2, 3, 4, 5, 6, 1e-4, 1e-4, 1e-2]), rtol=1e-15, atol=0)
+
+
+def test_gauss_markov_noise_needs_motion_and_its_block():
+    """Oracle: the definition of a distance-correlated process (SP Table 2.4): at rest
+    (the default speed) its time constant is infinite and it is not driven; a source whose
+    block is not in the layout adds nothing."""
+    src = ErrorSources(imu=ImuSpec("n", accel_random_walk=0.01), gravity=GaussMarkov(1e-4, 1e4))
+    lay = ins_error_layout("position", "velocity", "misalignment", "gravity")
+    assert np.all(np.diag(process_noise_psd(lay, src))[lay.slice("gravity")] == 0.0)
+    Q = process_noise_psd(CORE, src, speed_mps=100.0)
+    np.testing.assert_array_equal(np.diag(Q), [0.0] * 3 + [1e-4] * 3 + [0.0] * 3)

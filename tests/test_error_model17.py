@@ -256,6 +256,11 @@ def test_noise_psd_closed_form_growth():
     np.testing.assert_allclose(d[L.slice("gyro bias")], qbg * t, rtol=1e-12)
     assert d[L.index("clock bias")] == pytest.approx(qcb * t + qcd * t**3 / 3, rel=1e-10)
     assert d[L.index("clock drift")] == pytest.approx(qcd * t, rel=1e-12)
+    # without the optional walks the biases are random constants and the clock is noiseless
+    d0 = np.diag(noise_psd_17(0.1, 0.01))
+    np.testing.assert_array_equal(d0[L.slice("velocity")], 0.1**2)
+    np.testing.assert_array_equal(d0[L.slice("misalignment")], 0.01**2)
+    assert np.all(d0[L.slice("accel bias").start :] == 0.0)
     with pytest.raises(ValueError, match="gyro_noise"):
         noise_psd_17(0.1, -1.0)
 
@@ -293,5 +298,11 @@ def test_observability_rank_of_hand_systems():
     assert observability_rank(F, [[0.0, 1.0]]) == 1
     assert observability_rank(F, [[0.0, 0.0]]) == 0
     assert observability_rank(np.zeros((2, 2)), [[1.0, 1.0]]) == 1
-    # units do not matter: rows are normalised (1e6 m against 1 m/s scales)
-    assert observability_rank(F, [[1e6, 0.0], [0.0, 1e-6]]) == 2
+    # units do not matter: rows are normalised (a 1e6 against a 1e-6 scale)
+    assert observability_rank(np.zeros((2, 2)), [[1e6, 0.0], [0.0, 1e-6]]) == 2
+    # two unit rows at angle t have singular values sqrt(1 +- cos t): their ratio tan(t/2)
+    # = 0.07 counts as a second dimension for rtol 0.05, not for rtol 0.1
+    t = 2 * np.arctan(0.07)
+    H = [[1.0, 0.0], [np.cos(t), np.sin(t)]]
+    assert observability_rank(np.zeros((2, 2)), H, rtol=0.05) == 2
+    assert observability_rank(np.zeros((2, 2)), H, rtol=0.1) == 1
