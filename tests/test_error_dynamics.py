@@ -317,6 +317,8 @@ def test_earth_and_transport_rates_against_pymap3d(lat_deg):
     np.testing.assert_allclose(sd.earth_rate_ned(lats), batch, rtol=0, atol=1e-18)
     w_wgs = _frame_rate_from_pymap3d(lat, 0.4, h, v)
     np.testing.assert_allclose(sd.transport_rate_ned(v, lat, h), w_wgs, rtol=1e-7, atol=2e-12)
+    w_en0 = _frame_rate_from_pymap3d(lat, 0.4, 0.0, v, ell=sphere)  # the default height is 0
+    np.testing.assert_allclose(ed.transport_rate_ned(v, lat), w_en0, rtol=1e-7, atol=2e-12)
     vs = np.stack([v, -0.5 * v])
     np.testing.assert_allclose(
         ed.transport_rate_ned(vs, np.array([lat, lat]), np.array([h, h])),
@@ -510,6 +512,9 @@ def test_skew_stack_is_the_cross_product():
     rng = np.random.default_rng(5)
     a, b = rng.normal(size=(2, 2, 4, 3))
     np.testing.assert_allclose(
+        np.einsum("nij,nj->ni", skew_stack(a[0]), b[0]), np.cross(a[0], b[0]), rtol=0, atol=1e-15
+    )  # a (4, 3) batch
+    np.testing.assert_allclose(
         np.einsum("...ij,...j->...i", skew_stack(a), b), np.cross(a, b), rtol=0, atol=1e-15
     )
     np.testing.assert_allclose(skew_stack(a[0, 0]) @ b[0, 0], np.cross(a[0, 0], b[0, 0]), rtol=0, atol=1e-15)
@@ -574,5 +579,27 @@ def test_gauss_markov_noise_needs_motion_and_its_block():
     src = ErrorSources(imu=ImuSpec("n", accel_random_walk=0.01), gravity=GaussMarkov(1e-4, 1e4))
     lay = ins_error_layout("position", "velocity", "misalignment", "gravity")
     assert np.all(np.diag(process_noise_psd(lay, src))[lay.slice("gravity")] == 0.0)
+    src = ErrorSources(
+        imu=ImuSpec("n", accel_random_walk=0.01),
+        gravity=GaussMarkov(1e-4, 1e4),
+        altimeter=GaussMarkov(5.0, 1e4),
+    )
     Q = process_noise_psd(CORE, src, speed_mps=100.0)
     np.testing.assert_array_equal(np.diag(Q), [0.0] * 3 + [1e-4] * 3 + [0.0] * 3)
+
+
+def test_layout_sizes_units_and_name():
+    """Oracle: the block table of the module documentation (sizes and units), the documented
+    default of four receiver channels, and the layout's name as given."""
+    lay = ins_error_layout(
+        "position", "gyro drift", "altimeter bias", "clock drift", "pseudorange bias", name="L"
+    )
+    assert lay.name == "L" and ins_error_layout("position").name == ""
+    assert [(b.name, b.size, b.unit) for b in lay.blocks] == [
+        ("position", 3, "m"),
+        ("gyro drift", 3, "rad/s"),
+        ("altimeter bias", 1, "m"),
+        ("clock drift", 1, "m/s"),
+        ("pseudorange bias", 4, "m"),
+    ]
+    assert ins_error_layout("range-rate bias", channels=7).size == 7

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
 
-from navcore.inertial.trajectories import Segment, euler_to_dcm_stack, fly
+from navcore.inertial.trajectories import Segment, euler_to_dcm_stack, fly, straight_and_level
 from navcore.units import G0, WGS84_A
 
 
@@ -147,3 +147,35 @@ def test_fly_rejects_impossible_flights():
         fly([Segment(10.0)], speed0=50.1, path_angle0=-np.pi / 2, h0=0.0)
     with pytest.raises(ValueError, match="segments"):
         fly([])
+
+
+def test_straight_and_level_closed_form_and_defaults():
+    """Oracle: constant velocity V [cos psi, sin psi, 0] at constant height: position V t
+    along the heading; on the module's sphere the latitude advances by the north arc
+    (V t cos psi) / (a + h) and the longitude follows the rhumb line,
+    lon0 + tan(psi) [ln tan(pi/4 + L/2) - ln tan(pi/4 + L0/2)]. The documented defaults
+    (speed, heading, position 0, dt = 1 s) make a vehicle at rest at (0, 0, 0)."""
+    V, psi, dt, lat0, lon0, h0 = 80.0, 2.2, 0.5, -0.4, 2.0, 1500.0
+    tr = straight_and_level(20.0, speed=V, heading=psi, dt=dt, lat0=lat0, lon0=lon0, h0=h0)
+    np.testing.assert_allclose(tr.t, np.arange(41) * dt, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(
+        tr.vel_ned, np.tile([V * np.cos(psi), V * np.sin(psi), 0.0], (41, 1)), atol=1e-12
+    )
+    np.testing.assert_allclose(
+        tr.pos_ned[:, :2], np.outer(tr.t, [V * np.cos(psi), V * np.sin(psi)]), atol=1e-9
+    )
+    np.testing.assert_allclose(tr.h, h0, rtol=0, atol=1e-9)
+    np.testing.assert_allclose(tr.lat, lat0 + V * tr.t * np.cos(psi) / (WGS84_A + h0), rtol=0, atol=1e-13)
+    lat = lat0 + V * tr.t * np.cos(psi) / (WGS84_A + h0)
+    rhumb = lon0 + np.tan(psi) * (np.log(np.tan(np.pi / 4 + lat / 2)) - np.log(np.tan(np.pi / 4 + lat0 / 2)))
+    # the generator divides the east distance by the current cos(lat), which is not the
+    # rhumb-line integral: 7e-9 rad (4 cm) over this 1.6 km leg
+    np.testing.assert_allclose(tr.lon, rhumb, rtol=0, atol=1e-8)
+    np.testing.assert_allclose(tr.f_ned, np.tile([0.0, 0.0, -G0], (41, 1)), atol=1e-12)
+    rest = straight_and_level(5.0)
+    assert rest.dt == 1.0 and len(rest) == 6
+    for a in (rest.lat, rest.lon, rest.h, rest.pos_ned, rest.vel_ned, rest.omega_nb_b):
+        np.testing.assert_array_equal(a, 0.0)
+    np.testing.assert_allclose(rest.C_bn, np.tile(np.eye(3), (6, 1, 1)), atol=0)
+    rest2 = fly([Segment(5.0)])
+    np.testing.assert_array_equal(np.c_[rest2.lat, rest2.lon, rest2.h, rest2.speed], 0.0)
