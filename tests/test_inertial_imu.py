@@ -118,3 +118,10 @@ def test_scaled_and_noise_only_specs():
     assert n.source == "src" and n.name == "base (noise only)"
     with pytest.raises(ValueError, match="factor"):
         spec.scaled(-1.0)
+
+
+def test_bad_input_rejects_negative_sigmas():
+    """Every 1-sigma and root PSD of a spec must be >= 0 (the name and source are text)."""
+    for field in ("gyro_bias", "accel_misalignment", "accel_random_walk"):
+        with pytest.raises(ValueError, match=field):
+            ImuSpec("x", **{field: -1e-6})

@@ -26,12 +26,28 @@ def _analytic_specific_force(V, chi, gam, chi_dot, gam_dot):
 
 @pytest.mark.parametrize(
     ("chi_dot", "gam0", "gam_dot"),
-    [(0.03, 0.2, 0.0), (-0.03, -0.25, 0.0), (0.05, 0.0, 0.0), (0.03, 0.1, 0.004), (-0.02, 0.1, -0.01)],
-    ids=["climbing-turn", "diving-turn-left", "level-turn", "pull-up-in-turn", "push-over-in-turn"],
+    [
+        (0.03, 0.2, 0.0),
+        (-0.03, -0.25, 0.0),
+        (0.05, 0.0, 0.0),
+        (0.03, 0.1, 0.004),
+        (-0.02, 0.1, -0.01),
+        (0.02, 0.0, -0.0505),
+    ],
+    ids=[
+        "climbing-turn",
+        "diving-turn-left",
+        "level-turn",
+        "pull-up-in-turn",
+        "push-over-in-turn",
+        "negative-g",
+    ],
 )
 def test_coordinated_turn_has_no_side_force(chi_dot, gam0, gam_dot):
     """Oracle: body-y of the analytic specific force is zero. The old bank angle
-    tan(phi) = V chi_dot cos(gamma) / g left 0.100 m/s^2 at 200 m/s, 0.03 rad/s, 0.2 rad."""
+    tan(phi) = V chi_dot cos(gamma) / g left 0.100 m/s^2 at 200 m/s, 0.03 rad/s, 0.2 rad.
+    The last case pushes over hard enough for a slightly negative lift (-0.3 m/s^2 at the
+    start, g cos(gamma) + V gamma_dot < 0): the bank then leans the other way."""
     V, dt = 200.0, 0.1
     tr = fly(
         [Segment(60.0, turn_rate=chi_dot, path_angle_rate=gam_dot)],
@@ -135,6 +151,8 @@ def test_euler_to_dcm_stack_against_scipy():
     roll, pitch, yaw = rng.uniform(-1.5, 1.5, size=(3, 5))
     ref = Rotation.from_euler("ZYX", np.column_stack([yaw, pitch, roll])).as_matrix()
     np.testing.assert_allclose(euler_to_dcm_stack(roll, pitch, yaw), ref, rtol=0, atol=1e-15)
+    # scalar angles give one matrix
+    np.testing.assert_allclose(euler_to_dcm_stack(roll[0], pitch[0], yaw[0]), ref[0], rtol=0, atol=1e-15)
 
 
 def test_fly_rejects_impossible_flights():
@@ -144,7 +162,7 @@ def test_fly_rejects_impossible_flights():
         fly([Segment(10.5, speed_rate=-10.0)], speed0=100.0, dt=0.5)
     fly([Segment(10.0)], speed0=50.0, path_angle0=-np.pi / 2, h0=0.0)  # ends at -500 m
     with pytest.raises(ValueError, match="below"):
-        fly([Segment(10.0)], speed0=50.1, path_angle0=-np.pi / 2, h0=0.0)
+        fly([Segment(10.0)], speed0=50.05, path_angle0=-np.pi / 2, h0=0.0)  # ends at -500.5 m
     with pytest.raises(ValueError, match="segments"):
         fly([])
 
