@@ -317,8 +317,11 @@ def test_earth_and_transport_rates_against_pymap3d(lat_deg):
     np.testing.assert_allclose(sd.earth_rate_ned(lats), batch, rtol=0, atol=1e-18)
     w_wgs = _frame_rate_from_pymap3d(lat, 0.4, h, v)
     np.testing.assert_allclose(sd.transport_rate_ned(v, lat, h), w_wgs, rtol=1e-7, atol=2e-12)
-    w_en0 = _frame_rate_from_pymap3d(lat, 0.4, 0.0, v, ell=sphere)  # the default height is 0
-    np.testing.assert_allclose(ed.transport_rate_ned(v, lat), w_en0, rtol=1e-7, atol=2e-12)
+    # at the default height 0, moving north on the sphere of radius a turns the local axes
+    # at v / a about west: (0, -v/a, 0) (closed form, tight enough to see a 1 m height)
+    np.testing.assert_allclose(
+        ed.transport_rate_ned([100.0, 0.0, 0.0], lat), [0.0, -100.0 / WGS84_A, 0.0], rtol=1e-14
+    )
     vs = np.stack([v, -0.5 * v])
     np.testing.assert_allclose(
         ed.transport_rate_ned(vs, np.array([lat, lat]), np.array([h, h])),
