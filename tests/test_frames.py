@@ -201,3 +201,24 @@ def test_ecef_to_geodetic_down_to_the_documented_limit():
         fr.ecef_to_geodetic(np.stack([surface, [0.0, 5e4, 0.0]]))
     with pytest.raises(ValueError, match="r_e"):
         fr.ecef_to_geodetic(np.array([6.4e6, 1.0]))
+
+
+@pytest.mark.parametrize("angle", [0.9, 0.3, 1e-3])
+def test_quat_from_rotvec_below_one_radian_against_scipy(angle):
+    """Oracle: scipy Rotation.from_rotvec for rotation angles under 1 rad (the exact
+    sin(a/2)/a branch; the series branch is for a < 1e-8 only), about an oblique axis."""
+    axis = np.array([0.48, -0.6, 0.64])
+    rv = angle * axis
+    expected = np.roll(Rotation.from_rotvec(rv).as_quat(), 1)
+    np.testing.assert_allclose(fr.quat_from_rotvec(rv), expected, rtol=0, atol=1e-15)
+
+
+def test_quat_from_rotvec_series_branch_to_the_last_digits():
+    """Oracle: scipy Rotation.from_rotvec at 9e-9 rad (the small-angle series branch of
+    navcore): the vector part sin(a/2)/a r equals r/2 to the rounding of doubles (a^2/48 is
+    below it), compared at 1e-15 relative."""
+    rv = 9e-9 * np.array([0.48, -0.6, 0.64])
+    expected = np.roll(Rotation.from_rotvec(rv).as_quat(), 1)
+    q = fr.quat_from_rotvec(rv)
+    np.testing.assert_allclose(q[1:], expected[1:], rtol=1e-15, atol=0)
+    assert q[0] == expected[0] == 1.0
