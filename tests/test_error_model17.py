@@ -119,7 +119,20 @@ def test_transition_series_terminates():
     np.testing.assert_allclose(transition_exact(F, 1.0), scipy.linalg.expm(F), atol=1e-12)
     Phi_vl, _ = van_loan(F, noise_psd_17(1e-2, 1e-3), 1.0)
     np.testing.assert_allclose(transition_exact(F, 1.0), Phi_vl, atol=1e-12)
-    assert np.abs(transition_first_order(F, 1.0) - scipy.linalg.expm(F)).max() > 1.0  # g T^2 / 2
+    # KZL Eq. 6 keeps only the first-order coupling: a tilt moves the velocity error by
+    # |f| T per rad (exactly, as e^{FT} does) but the position error not at all, where the
+    # exact transition has |f| T^2 / 2 (hand closed forms, level attitude, f = -g down)
+    F_lev = error_dynamics_17(np.eye(3), [0.0, 0.0, -G0])
+    T = 2.0
+    first, exact = transition_first_order(F_lev, T), scipy.linalg.expm(F_lev * T)
+    psi_n = L.index("misalignment", 0)
+    vel_e, pos_e = L.index("velocity", 1), L.index("position", 1)
+    assert first[vel_e, psi_n] == pytest.approx(G0 * T, rel=1e-15)
+    assert exact[vel_e, psi_n] == pytest.approx(G0 * T, rel=1e-12)
+    assert first[pos_e, psi_n] == 0.0
+    assert exact[pos_e, psi_n] == pytest.approx(G0 * T**2 / 2, rel=1e-12)
+    np.testing.assert_array_equal(np.diag(first), 1.0)
+    np.testing.assert_array_equal(first[L.slice("position"), L.slice("velocity")], T * np.eye(3))
 
 
 def test_code_doppler_rows_match_finite_differences():
@@ -212,3 +225,84 @@ def test_heading_unobservable_without_attitude_aiding():
         assert np.abs(H @ np.linalg.matrix_power(F, k) @ e).max() == 0.0
     assert observability_rank(F, H) < 17
     assert observability_rank(F, tc_dd_observation_matrix(u, C, BASELINES_B)) == 17
+
+
+def _van_loan_scipy(F, Q, t):
+    """Transition and noise covariance over t by Van Loan's block exponential (scipy expm)."""
+    n = F.shape[0]
+    M = np.zeros((2 * n, 2 * n))
+    M[:n, :n], M[:n, n:], M[n:, n:] = -F, Q, F.T
+    E = scipy.linalg.expm(M * t)
+    Phi = E[n:, n:].T
+    return Phi, Phi @ E[:n, n:]
+
+
+def test_noise_psd_closed_form_growth():
+    """Oracle: closed forms of integrated white noise (scipy Van Loan, free fall so that the
+    tilt does not feed the velocity, non-level attitude): white accelerometer noise q_a and an
+    accelerometer-bias random walk q_ba give velocity variance q_a t + q_ba t^3/3 and position
+    variance q_a t^3/3 + q_ba t^5/20; the gyro pair gives psi variance q_g t + q_bg t^3/3;
+    the clock bias has q_cb t + q_cd t^3/3 and the drift q_cd t (every root PSD distinct)."""
+    qa, qg, qba, qbg, qcd, qcb = 0.02, 0.003, 4e-4, 5e-6, 0.07, 0.6
+    Q = noise_psd_17(np.sqrt(qa), np.sqrt(qg), np.sqrt(qba), np.sqrt(qbg), np.sqrt(qcd), np.sqrt(qcb))
+    F = error_dynamics_17(C_TRUE, [0.0, 0.0, 0.0])
+    t = 30.0
+    _, Qd = _van_loan_scipy(F, Q, t)
+    d = np.diag(Qd)
+    np.testing.assert_allclose(d[L.slice("velocity")], qa * t + qba * t**3 / 3, rtol=1e-10)
+    np.testing.assert_allclose(d[L.slice("position")], qa * t**3 / 3 + qba * t**5 / 20, rtol=1e-10)
+    np.testing.assert_allclose(d[L.slice("misalignment")], qg * t + qbg * t**3 / 3, rtol=1e-10)
+    np.testing.assert_allclose(d[L.slice("accel bias")], qba * t, rtol=1e-12)
+    np.testing.assert_allclose(d[L.slice("gyro bias")], qbg * t, rtol=1e-12)
+    assert d[L.index("clock bias")] == pytest.approx(qcb * t + qcd * t**3 / 3, rel=1e-10)
+    assert d[L.index("clock drift")] == pytest.approx(qcd * t, rel=1e-12)
+    # without the optional walks the biases are random constants and the clock is noiseless
+    d0 = np.diag(noise_psd_17(0.1, 0.01))
+    np.testing.assert_array_equal(d0[L.slice("velocity")], 0.1**2)
+    np.testing.assert_array_equal(d0[L.slice("misalignment")], 0.01**2)
+    assert np.all(d0[L.slice("accel bias").start :] == 0.0)
+    with pytest.raises(ValueError, match="gyro_noise"):
+        noise_psd_17(0.1, -1.0)
+
+
+def test_batched_dynamics_match_finite_differences():
+    """Oracle: the central differences of the nonlinear velocity-error rate (as in
+    test_velocity_rows_match_finite_differences) for each of two attitudes and forces
+    given as a batch."""
+    Cs = np.stack([C_TRUE, fr.dcm_from_euler(-0.4, 0.2, -2.5)])
+    fb = np.stack([F_B, np.array([1.0, 0.5, -8.0])])
+    F = error_dynamics_17(Cs, np.einsum("nij,nj->ni", Cs, fb))
+    assert F.shape == (2, 17, 17)
+    for k in range(2):
+
+        def dvdot(dpsi, dba, k=k):
+            return scipy.linalg.expm(fr.skew(dpsi)) @ Cs[k] @ (fb[k] - dba) - Cs[k] @ fb[k]
+
+        J_psi = np.column_stack(
+            [(dvdot(EPS * e, 0 * e) - dvdot(-EPS * e, 0 * e)) / (2 * EPS) for e in np.eye(3)]
+        )
+        J_ba = np.column_stack(
+            [(dvdot(0 * e, EPS * e) - dvdot(0 * e, -EPS * e)) / (2 * EPS) for e in np.eye(3)]
+        )
+        np.testing.assert_allclose(F[k][L.slice("velocity"), L.slice("misalignment")], J_psi, atol=1e-7)
+        np.testing.assert_allclose(F[k][L.slice("velocity"), L.slice("accel bias")], J_ba, atol=1e-7)
+        np.testing.assert_allclose(F[k][L.slice("misalignment"), L.slice("gyro bias")], -Cs[k], atol=0)
+
+
+def test_observability_rank_of_hand_systems():
+    """Oracle: hand analysis. A double integrator is observable from position (rank 2) but
+    not from velocity (rank 1); a zero measurement observes nothing (rank 0); two decoupled
+    integrators seen through their sum have rank 1."""
+    F = [[0.0, 1.0], [0.0, 0.0]]
+    assert observability_rank(F, [[1.0, 0.0]]) == 2
+    assert observability_rank(F, [[0.0, 1.0]]) == 1
+    assert observability_rank(F, [[0.0, 0.0]]) == 0
+    assert observability_rank(np.zeros((2, 2)), [[1.0, 1.0]]) == 1
+    # units do not matter: rows are normalised (a 1e6 against a 1e-6 scale)
+    assert observability_rank(np.zeros((2, 2)), [[1e6, 0.0], [0.0, 1e-6]]) == 2
+    # two unit rows at angle t have singular values sqrt(1 +- cos t): their ratio tan(t/2)
+    # = 0.07 counts as a second dimension for rtol 0.05, not for rtol 0.1
+    t = 2 * np.arctan(0.07)
+    H = [[1.0, 0.0], [np.cos(t), np.sin(t)]]
+    assert observability_rank(np.zeros((2, 2)), H, rtol=0.05) == 2
+    assert observability_rank(np.zeros((2, 2)), H, rtol=0.1) == 1

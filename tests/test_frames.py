@@ -179,3 +179,46 @@ def test_poles_and_radian_defaults_against_pymap3d():
     np.testing.assert_allclose(fr.ned_to_ecef(n, lat0, lon0, h0), r, atol=1e-6)
     C = fr.dcm_ecef_to_ned(lat0, lon0)
     np.testing.assert_allclose(C @ (r - fr.geodetic_to_ecef(lat0, lon0, h0)), n, atol=1e-6)
+
+
+def test_ecef_to_geodetic_down_to_the_documented_limit():
+    """Oracles: closed forms on the equatorial plane (latitude 0, longitude atan2(y, x),
+    height |r| - a) and on the polar axis (latitude +-90 deg, height |z| - b), at exactly
+    100 km from the centre and just beyond it; the documentation rejects points closer than
+    100 km (also one inside a batch) and arrays that do not end in an axis of 3."""
+    from navcore.units import WGS84_A, WGS84_B
+
+    for rho in (1e5, 1e5 + 0.5):
+        r = np.array([0.6 * rho, 0.8 * rho, 0.0])
+        lat, lon, h = fr.ecef_to_geodetic(r)
+        assert (float(lat), float(lon)) == pytest.approx((0.0, np.arctan2(0.8, 0.6)), abs=1e-12)
+        assert float(h) == pytest.approx(rho - WGS84_A, abs=1e-6)
+        lat, _, h = fr.ecef_to_geodetic(np.array([0.0, 0.0, -rho]))
+        assert float(lat) == pytest.approx(-np.pi / 2, abs=1e-12)
+        assert float(h) == pytest.approx(rho - WGS84_B, abs=1e-6)
+    surface = fr.geodetic_to_ecef(0.3, 0.2, 0.0)
+    with pytest.raises(ValueError, match="100 km"):
+        fr.ecef_to_geodetic(np.stack([surface, [0.0, 5e4, 0.0]]))
+    with pytest.raises(ValueError, match="r_e"):
+        fr.ecef_to_geodetic(np.array([6.4e6, 1.0]))
+
+
+@pytest.mark.parametrize("angle", [0.9, 0.3, 1e-3])
+def test_quat_from_rotvec_below_one_radian_against_scipy(angle):
+    """Oracle: scipy Rotation.from_rotvec for rotation angles under 1 rad (the exact
+    sin(a/2)/a branch; the series branch is for a < 1e-8 only), about an oblique axis."""
+    axis = np.array([0.48, -0.6, 0.64])
+    rv = angle * axis
+    expected = np.roll(Rotation.from_rotvec(rv).as_quat(), 1)
+    np.testing.assert_allclose(fr.quat_from_rotvec(rv), expected, rtol=0, atol=1e-15)
+
+
+def test_quat_from_rotvec_series_branch_to_the_last_digits():
+    """Oracle: scipy Rotation.from_rotvec at 9e-9 rad (the small-angle series branch of
+    navcore): the vector part sin(a/2)/a r equals r/2 to the rounding of doubles (a^2/48 is
+    below it), compared at 1e-15 relative."""
+    rv = 9e-9 * np.array([0.48, -0.6, 0.64])
+    expected = np.roll(Rotation.from_rotvec(rv).as_quat(), 1)
+    q = fr.quat_from_rotvec(rv)
+    np.testing.assert_allclose(q[1:], expected[1:], rtol=1e-15, atol=0)
+    assert q[0] == expected[0] == 1.0

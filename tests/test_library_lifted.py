@@ -1,8 +1,8 @@
 """Library functions lifted out of the paper modules (issue 19, item 3).
 
-Each is checked against an independent recomputation from its equation, and against the
-paper module's own helper where one exists (read-only), so that the paper module can call
-the library instead.
+Each is checked against an independent oracle (a different algorithm or a closed form), and
+against the paper module's own helper where one exists, so that the paper module can call the
+library instead.
 """
 
 from __future__ import annotations
@@ -12,28 +12,28 @@ import math
 import numpy as np
 import pytest
 
-from navcore.estimation.federated import federated_improvement_db, minkowski_trace_bound
-from navcore.location.clock_tracking import alpha_parameter, psi, tracking_position_errors
+from navcore.estimation.federated import federated_improvement_db
+from navcore.location.clock_tracking import (
+    gain_recursion,
+    position_mse,
+    three_satellite_clock_variance,
+    tracking_position_errors,
+)
 from navcore.papers import atc10_tracking, wf
 from navcore.units import FT, C
-
-
-def _table_4_3_oracle(inputs: dict[str, float], sigma0: float, sigma: float, c: float) -> tuple[float, ...]:
-    """ATC-10 Eqs. 4.5.27, 4.5.32-4.5.35 written out."""
-    a = 8.0 / 27.0 * sigma0**2 * inputs["beta"] / sigma**2
-    r = math.sqrt(1.0 + a)
-    p = 1.5 * a ** (1 / 3) * (np.cbrt(1.0 + r) + np.cbrt(1.0 - r))
-    b = inputs["beta"]
-    sd0 = c * sigma * math.sqrt(inputs["trace_all"] + inputs["s_all"] / b)
-    sdn = c * sigma * math.sqrt(inputs["trace_all"] + p / b * inputs["s_all"])
-    sdn1 = c * sigma * math.sqrt(inputs["trace_123"] + (p + 27 / 4 * a / p) / b * inputs["s_123"])
-    return a, p, sd0, sdn, sdn1
 
 
 @pytest.mark.parametrize("example", ["I", "II"])
 @pytest.mark.parametrize("sigma0", [1.0, 5.0, 20.0])
 def test_tracking_position_errors_matches_paper_row_and_oracle(example, sigma0):
+    """Oracle: the tracker's gain recursion run to convergence (a different algorithm from the
+    closed forms: it iterates the filter and is checked against a brute-force covariance and a
+    Monte Carlo of the tracker in test_clock_tracking.py): the least-squares error uses the
+    first gain 1/beta, the tracking limit the converged gain, and the first three-satellite
+    estimate the exact clock variance one epoch after the drop. The paper module's table row
+    must be the library's (it delegates)."""
     inputs = atc10_tracking.printed_table_4_2(example)
+    sigma, c = atc10_tracking.IN.sigma_ns, atc10_tracking.IN.c_ft_per_ns
     row = tracking_position_errors(
         inputs["trace_all"],
         inputs["s_all"],
@@ -41,14 +41,21 @@ def test_tracking_position_errors_matches_paper_row_and_oracle(example, sigma0):
         inputs["s_123"],
         inputs["beta"],
         sigma0,
-        atc10_tracking.IN.sigma_ns,
-        c=atc10_tracking.IN.c_ft_per_ns,
+        sigma,
+        c=c,
     )
     assert tuple(row) == pytest.approx(atc10_tracking.table_4_3_row(inputs, sigma0), rel=1e-12)
-    oracle = _table_4_3_oracle(inputs, sigma0, atc10_tracking.IN.sigma_ns, atc10_tracking.IN.c_ft_per_ns)
-    assert tuple(row) == pytest.approx(oracle, rel=1e-10)
-    assert row.alpha == alpha_parameter(sigma0, atc10_tracking.IN.sigma_ns, inputs["beta"])
-    assert row.psi == pytest.approx(float(psi(row.alpha)))
+    h = gain_recursion(inputs["beta"], sigma, sigma0, 20_000)
+    assert h.gamma[0] == pytest.approx(1.0 / inputs["beta"], rel=1e-12)
+    sd0 = c * math.sqrt(position_mse(sigma, inputs["trace_all"], inputs["s_all"], h.gamma[0]))
+    sdn = c * math.sqrt(position_mse(sigma, inputs["trace_all"], inputs["s_all"], h.gamma[-1]))
+    v3 = float(three_satellite_clock_variance(h.gamma[-1], h.cross[-1], sigma, sigma0, 1))
+    sdn1 = c * math.sqrt(sigma**2 * inputs["trace_123"] + v3 * inputs["s_123"])
+    assert (row.sd_least_squares, row.sd_tracking_limit, row.sd_first_three_satellite) == pytest.approx(
+        (sd0, sdn, sdn1), rel=1e-10
+    )
+    assert row.alpha == pytest.approx(8 / 27 * sigma0**2 * inputs["beta"] / sigma**2, rel=1e-14)
+    assert row.psi == pytest.approx(h.gamma[-1] * inputs["beta"], rel=1e-10)
 
 
 def test_tracking_position_errors_convention_is_a_parameter():
@@ -67,12 +74,23 @@ def test_tracking_position_errors_convention_is_a_parameter():
 
 @pytest.mark.parametrize(("sigma_a", "sigma_t", "n_sat"), [(3e-4, 0.0, 0), (3e-4, 0.01, 3), (1e-3, 0.02, 1)])
 def test_federated_improvement_db_matches_wf(sigma_a, sigma_t, n_sat):
+    """The WF module's improvement is the library's (it delegates)."""
     covs = wf.local_covariances(sigma_a, sigma_t, n_sat)
     reference = math.hypot(wf.IN.sigma_n, sigma_t)
-    lib = federated_improvement_db(covs, reference)
-    assert lib == pytest.approx(wf.improvement_db(sigma_a, sigma_t, n_sat), abs=1e-12)
-    oracle = 20 * math.log10(math.sqrt(minkowski_trace_bound(covs) / 3) / reference)  # WF Eq. (23)
-    assert lib == pytest.approx(oracle, abs=1e-12)
+    assert federated_improvement_db(covs, reference) == pytest.approx(
+        wf.improvement_db(sigma_a, sigma_t, n_sat), abs=1e-12
+    )
+
+
+@pytest.mark.parametrize("sigmas", [(1.0, 2.0), (0.3, 1.5, 4.0)])
+def test_federated_improvement_db_isotropic_closed_form(sigmas):
+    """Oracle: for isotropic local covariances sigma_i^2 I the per-axis bound of WF Eq. (23)
+    is sum_i s_i / sum_i s_i^2 with s_i = 1/sigma_i, so the improvement over a reference
+    sigma_r is 20 log10(bound / sigma_r) (closed form; cf. test_wf_assessment.py)."""
+    s = 1.0 / np.array(sigmas)
+    covs = [sg**2 * np.eye(3) for sg in sigmas]
+    expect = 20 * math.log10(s.sum() / (s**2).sum() / 2.5)
+    assert federated_improvement_db(covs, 2.5) == pytest.approx(expect, abs=1e-12)
 
 
 def test_federated_improvement_db_rejects_bad_reference():
