@@ -241,3 +241,27 @@ def test_state_layout():
         StateLayout.of(("a", 0))
     with pytest.raises(ValueError, match="name must be one of"):
         lay.slice("attitude")
+
+
+def test_state_layout_concatenation_and_union():
+    """Oracle: block tables and names written out by hand. ``+`` keeps every block of both
+    (and so rejects a shared name); ``union`` appends only the other's new blocks."""
+    a = StateLayout.of(("position", 3), ("velocity", 3), name="nav")
+    b = StateLayout.of(("velocity", 3), ("clock", 2), ("gravity", 1), name="aid")
+    c = StateLayout.of(("clock", 2), ("gravity", 1), name="extra")
+    s = a + c
+    assert s.table() == [("position", 3), ("velocity", 3), ("clock", 2), ("gravity", 1)]
+    assert s.name == "nav+extra"
+    assert s.size == 9 and s.index("gravity") == 8
+    assert (c + a).table() == [("clock", 2), ("gravity", 1), ("position", 3), ("velocity", 3)]
+    with pytest.raises(ValueError, match="unique names"):
+        a + b
+    u = a.union(b)
+    assert u.table() == [("position", 3), ("velocity", 3), ("clock", 2), ("gravity", 1)]
+    assert u.name == "nav|aid"
+    assert u.slice("clock") == slice(6, 8)
+    v = b.union(a)
+    assert v.table() == [("velocity", 3), ("clock", 2), ("gravity", 1), ("position", 3)]
+    assert v.name == "aid|nav"
+    assert a.union(a).table() == a.table()
+    assert a.union(StateLayout.of(name="")).name == "nav|"
