@@ -60,6 +60,7 @@ PACKAGES: dict[str, tuple[list[str], list[str]]] = {
             "test_covariance_analysis.py",
             "test_covariance_analysis_results.py",
             "test_ekf_ins_gnss.py",
+            "test_ekf_ins_gnss_physics.py",
             "test_error_model17.py",
             "test_error_dynamics.py",
         ],
