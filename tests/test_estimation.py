@@ -60,7 +60,7 @@ def test_kalman_filter_matches_filterpy():
 
 
 def test_information_update_equals_covariance_update():
-    """Oracle: the covariance-form Joseph update on the same prior and measurement."""
+    """Oracle: filterpy.kalman.KalmanFilter.update on the same prior and measurement."""
     rng = np.random.default_rng(8)
     n, m = 3, 2
     P = _random_spd(rng, n)
@@ -69,11 +69,15 @@ def test_information_update_equals_covariance_update():
     R = _random_spd(rng, m)
     z = rng.normal(size=m)
     y, Y = information_from_covariance(x, P)
+    np.testing.assert_allclose(Y @ P, np.eye(n), atol=1e-12)
+    np.testing.assert_allclose(P @ y, x, rtol=1e-12, atol=1e-14)
     y2, Y2 = information_update(y, Y, z, H, R)
     x2, P2 = covariance_from_information(y2, Y2)
-    ref = kf_update(x, P, z, H, R)
-    np.testing.assert_allclose(P2, ref.P, rtol=1e-10)
-    np.testing.assert_allclose(x2, ref.x, rtol=1e-10, atol=1e-12)
+    kf = KalmanFilter(dim_x=n, dim_z=m)
+    kf.x, kf.P, kf.H, kf.R = x.copy(), P.copy(), H, R
+    kf.update(z)
+    np.testing.assert_allclose(P2, kf.P, rtol=1e-10)
+    np.testing.assert_allclose(x2, kf.x, rtol=1e-10, atol=1e-12)
 
 
 def test_information_update_from_zero_prior():
@@ -94,13 +98,39 @@ def test_information_update_from_zero_prior():
     st.floats(0.1, 3.0),
     st.floats(1e-3, 10.0),
 )
-def test_scalar_riccati_steady_state_matches_iteration(phi, q, h, r):
-    """Oracle: iterate the Riccati recursion 5000 times from P0 = 1 (contracting for these ranges)."""
+def test_scalar_riccati_steady_state_matches_scipy_dare(phi, q, h, r):
+    """Oracle: scipy.linalg.solve_discrete_are for the prior P- (the filtering DARE with
+    A = phi, B = h), then P+ = P- r / (h^2 P- + r) and K = P- h / (h^2 P- + r) (Kalman 1960)."""
+    from scipy.linalg import solve_discrete_are
+
     ss = scalar_riccati_steady_state(phi, q, h, r)
-    it = scalar_riccati_iterate(phi, q, h, r, p0=1.0, steps=5000)
-    assert ss.prior == pytest.approx(it.prior, rel=1e-8)
-    assert ss.posterior == pytest.approx(it.posterior, rel=1e-8)
-    assert ss.gain == pytest.approx(it.gain, rel=1e-8)
+    prior = float(
+        solve_discrete_are(np.array([[phi]]), np.array([[h]]), np.array([[q]]), np.array([[r]]))[0, 0]
+    )
+    assert ss.prior == pytest.approx(prior, rel=1e-7)
+    assert ss.posterior == pytest.approx(prior * r / (h * h * prior + r), rel=1e-7)
+    assert ss.gain == pytest.approx(prior * h / (h * h * prior + r), rel=1e-7)
+
+
+def test_scalar_riccati_iterate_matches_filterpy():
+    """Oracle: filterpy's one-state KalmanFilter, update then predict, ``steps`` times from P0."""
+    phi, q, h, r, p0 = 0.93, 0.4, 1.7, 2.5, 30.0
+    kf = KalmanFilter(dim_x=1, dim_z=1)
+    kf.F, kf.Q, kf.H, kf.R, kf.P = (
+        np.array([[phi]]),
+        np.array([[q]]),
+        np.array([[h]]),
+        np.array([[r]]),
+        np.array([[p0]]),
+    )
+    for steps in range(1, 6):
+        kf.update(np.array([[0.0]]))
+        post, gain = float(kf.P[0, 0]), float(kf.K[0, 0])
+        kf.predict()
+        it = scalar_riccati_iterate(phi, q, h, r, p0=p0, steps=steps)
+        assert it.prior == pytest.approx(float(kf.P[0, 0]), rel=1e-12)
+        assert it.posterior == pytest.approx(post, rel=1e-12)
+        assert it.gain == pytest.approx(gain, rel=1e-12)
 
 
 def test_scalar_riccati_random_walk_closed_form():
@@ -213,6 +243,16 @@ def test_propagate_covariance_outage_is_prediction():
     none = propagate_covariance(P0, t, Phi, Q)
     np.testing.assert_array_equal(outage.posterior, none.posterior)
     assert outage.n_updates.sum() == 0
+    # closed form of the double integrator from P0 = I with white acceleration of PSD q:
+    # [[1 + t^2 + q t^3 / 3, t + q t^2 / 2], [t + q t^2 / 2, 1 + q t]]
+    for k, tk in enumerate(t):
+        want = [[1 + tk**2 + 0.1 * tk**3 / 3, tk + 0.1 * tk**2 / 2], [tk + 0.1 * tk**2 / 2, 1 + 0.1 * tk]]
+        np.testing.assert_allclose(none.posterior[k], want, rtol=1e-12)
+        np.testing.assert_allclose(none.prior[k], want, rtol=1e-12)
+        assert none.sigma(1)[k] == pytest.approx(np.sqrt(want[1][1]), rel=1e-12)
+        assert none.sigma(0, posterior=False)[k] == pytest.approx(np.sqrt(want[0][0]), rel=1e-12)
+        assert none.rss([0, 1])[k] == pytest.approx(np.sqrt(want[0][0] + want[1][1]), rel=1e-12)
+        assert none.rss([0], posterior=False)[k] == pytest.approx(np.sqrt(want[0][0]), rel=1e-12)
     np.testing.assert_allclose(none.sigma(0)[0], 1.0)
     np.testing.assert_allclose(none.rss([0, 1])[0], np.sqrt(2.0))
 
