@@ -18,6 +18,7 @@ from navcore.estimation.covariance_analysis import (
     CovarianceAnalysis,
     best_geometry_channels,
     concatenate_analyses,
+    satellite_geometry,
 )
 from navcore.estimation.layout import StateLayout
 from navcore.gnss.constellation import Constellation, nominal_gps_constellation
@@ -206,3 +207,21 @@ def test_best_geometry_channels_mask_and_degenerate_geometry():
     assert set(best_geometry_channels(tr, base, n=4, mask_deg=ok_mask).tolist()) == set(
         np.argsort(elev.min(axis=0))[::-1][:4].tolist()
     )
+
+
+def test_satellite_geometry_matches_pymap3d():
+    """Oracle: pymap3d.ecef2aer (azimuth, elevation) from the geodetic vehicle position to
+    each satellite; the NED unit vector is (cos el cos az, cos el sin az, -sin el)."""
+    const = nominal_gps_constellation(raan0_deg=23.0)
+    tr = straight_and_level(
+        600.0, speed=240.0, heading=75 * DEG, dt=120.0, lat0=-37 * DEG, lon0=145 * DEG, h0=11000.0
+    )
+    ch = [3, 7, 11, 19]
+    geo = satellite_geometry(tr, const, ch)
+    np.testing.assert_array_equal(geo.prn, const.prn[ch])
+    sat = const.positions_ecef(tr.t)
+    for k in range(len(tr)):
+        az, el, _ = pymap3d.ecef2aer(*sat[k, ch].T, tr.lat[k], tr.lon[k], tr.h[k], deg=False)
+        u = np.stack([np.cos(el) * np.cos(az), np.cos(el) * np.sin(az), -np.sin(el)], -1)
+        np.testing.assert_allclose(geo.u_ned[k], u, atol=1e-9)
+        np.testing.assert_allclose(geo.elevation[k], el, atol=1e-9)
