@@ -311,3 +311,40 @@ def test_double_difference_phases_add_heading_information(aided):
     assert want[-1] < 0.2 * want[0]  # the DDs do inform the heading
     np.testing.assert_allclose(r.att_sigma[:, 2], want, rtol=3e-3)
     np.testing.assert_allclose(r.rms("att_err")[:, 2], want, rtol=4.5 / np.sqrt(4000))
+
+
+def test_levelling_with_noisy_sensors():
+    """Oracle: the averaging of white sensor noise over the initialisation time T: the tilt
+    variance is (b^2 + N_a^2 / T) / g^2; the gyro-bias estimate errs by N_g / sqrt(T), so the
+    heading variance grows as crab^2 + (sigma_v / V)^2 + (N_g^2 / T) t^2 + N_g^2 t (the last
+    term the angle random walk); filter 1-sigma and the RMS of 3000 runs."""
+    imu = ImuSpec("test", accel_bias=0.01, accel_random_walk=0.05, gyro_bias=1e-4, gyro_random_walk=1e-3)
+    T0, hs, sv, V = 60.0, 5e-4, 0.02, 100.0
+    sc = _scenario(
+        imu,
+        velocity=[80.0, 60.0, 0.0],
+        attitude=[0.0, 0.0, np.arctan2(60.0, 80.0)],
+        init_time=T0,
+        pos0_sigma=1.0,
+        vel0_sigma=sv,
+        heading_sigma=hs,
+        duration=3.0,
+    )
+    r = run_monte_carlo(sc, "ins", RUNS, 17)
+    tilt = np.sqrt(0.01**2 + 0.05**2 / T0) / G
+    heading = np.sqrt(hs**2 + (sv / V) ** 2 + (1e-3**2 / T0) * r.t**2 + 1e-3**2 * r.t)
+    np.testing.assert_allclose(r.att_sigma[0, :2], tilt, rtol=1e-4)
+    np.testing.assert_allclose(r.att_sigma[:, 2], heading, rtol=1e-3)
+    np.testing.assert_allclose(r.rms("att_err")[0, :2], tilt, rtol=SE)
+    np.testing.assert_allclose(r.rms("att_err")[:, 2], heading, rtol=SE)
+
+
+def test_modes_share_the_random_numbers(aided):
+    """Oracle: the documented common random numbers: every mode draws the same truth, so the
+    errors before the first GPS epoch are identical across modes."""
+    _, res = aided
+    for name in ("pos_err", "vel_err", "att_err"):
+        ref = getattr(res["tc"], name)[:, 0]
+        assert np.std(ref) > 0
+        for mode in ("tc_att", "tc_dd"):
+            np.testing.assert_array_equal(getattr(res[mode], name)[:, 0], ref)
