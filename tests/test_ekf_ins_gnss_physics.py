@@ -61,10 +61,11 @@ def _rms(x, axis=0):
 def unaligned():
     """Stand-alone INS from the nominal attitude: accelerometer bias and scale factor, a small
     true heading offset about a heading of 180 deg (so that angle errors must be wrapped); no
-    gyro errors, no noise, exact initial position and velocity."""
+    gyro errors, no noise, exact initial position and velocity. The filter models a random walk
+    of the accelerometer biases (the true biases are constant)."""
     imu = ImuSpec("test", accel_bias=0.02, accel_scale_factor=2e-3)
     att = np.array([0.1, -0.05, np.pi - 4e-4])  # true headings on both sides of +-180 deg
-    sc = _scenario(imu, velocity=[80.0, 60.0, 0.0], attitude=att, heading_sigma=1e-3)
+    sc = _scenario(imu, velocity=[80.0, 60.0, 0.0], attitude=att, heading_sigma=1e-3, accel_bias_walk=1e-3)
     return sc, att, run_monte_carlo(sc, "ins", RUNS, 5, initialise=False)
 
 
@@ -98,13 +99,16 @@ def test_unaligned_ins_errors_are_constant_acceleration_kinematics(unaligned):
 
 def test_unaligned_ins_filter_sigma_matches_truth(unaligned):
     """Oracle: the filter spreads the scale-factor variance evenly over the axes, so its total
-    velocity variance equals the trace of the true covariance, (3 sigma_b^2 + sigma_s^2 g^2) t^2,
-    and position follows as t^4 / 4; its heading 1-sigma is the offset's, roll and pitch are 0."""
+    velocity variance from the turn-on errors equals the trace of the true covariance,
+    (3 sigma_b^2 + sigma_s^2 g^2) t^2, and position follows as t^4 / 4; the modelled bias random
+    walk (PSD q, a triple integrator) adds q t^3 / 3 to each velocity and q t^5 / 20 to each
+    position variance. Its heading 1-sigma is the offset's, roll and pitch are 0."""
     _sc, _att, r = unaligned
     t = r.t
     tr_v = (3 * 0.02**2 + (2e-3 * G) ** 2) * t**2
-    np.testing.assert_allclose(np.sum(r.vel_sigma**2, axis=1), tr_v, rtol=1e-6)
-    np.testing.assert_allclose(np.sum(r.pos_sigma**2, axis=1), tr_v * t**2 / 4, rtol=1e-6)
+    q = 1e-3**2
+    np.testing.assert_allclose(np.sum(r.vel_sigma**2, axis=1), tr_v + q * t**3, rtol=1e-6)
+    np.testing.assert_allclose(np.sum(r.pos_sigma**2, axis=1), tr_v * t**2 / 4 + 3 * q * t**5 / 20, rtol=1e-6)
     np.testing.assert_allclose(r.vel_sigma[:, 0], r.vel_sigma[:, 1], rtol=1e-6)
     np.testing.assert_allclose(r.att_sigma[:, :2], 0.0, atol=1e-12)
     np.testing.assert_allclose(r.att_sigma[:, 2], 1e-3, rtol=1e-6)
@@ -317,7 +321,8 @@ def test_levelling_with_noisy_sensors():
     """Oracle: the averaging of white sensor noise over the initialisation time T: the tilt
     variance is (b^2 + N_a^2 / T) / g^2; the gyro-bias estimate errs by N_g / sqrt(T), so the
     heading variance grows as crab^2 + (sigma_v / V)^2 + (N_g^2 / T) t^2 + N_g^2 t (the last
-    term the angle random walk); filter 1-sigma and the RMS of 3000 runs."""
+    term the angle random walk); filter 1-sigma and the RMS of 3000 runs. The filter's modelled
+    gyro-bias random walk adds q t^3 / 3."""
     imu = ImuSpec("test", accel_bias=0.01, accel_random_walk=0.05, gyro_bias=1e-4, gyro_random_walk=1e-3)
     T0, hs, sv, V = 60.0, 5e-4, 0.02, 100.0
     sc = _scenario(
@@ -329,12 +334,14 @@ def test_levelling_with_noisy_sensors():
         vel0_sigma=sv,
         heading_sigma=hs,
         duration=3.0,
+        gyro_bias_walk=1e-4,
     )
     r = run_monte_carlo(sc, "ins", RUNS, 17)
     tilt = np.sqrt(0.01**2 + 0.05**2 / T0) / G
     heading = np.sqrt(hs**2 + (sv / V) ** 2 + (1e-3**2 / T0) * r.t**2 + 1e-3**2 * r.t)
     np.testing.assert_allclose(r.att_sigma[0, :2], tilt, rtol=1e-4)
-    np.testing.assert_allclose(r.att_sigma[:, 2], heading, rtol=1e-3)
+    # the filter also models a gyro-bias random walk (PSD q): + q t^3 / 3 (the truth has none)
+    np.testing.assert_allclose(r.att_sigma[:, 2], np.sqrt(heading**2 + 1e-4**2 * r.t**3 / 3), rtol=1e-3)
     np.testing.assert_allclose(r.rms("att_err")[0, :2], tilt, rtol=SE)
     np.testing.assert_allclose(r.rms("att_err")[:, 2], heading, rtol=SE)
 
