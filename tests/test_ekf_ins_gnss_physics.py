@@ -29,15 +29,15 @@ RUNS = 3000
 SE = 4.5 / np.sqrt(2 * RUNS)  # 4.5 standard errors of a sample RMS, relative
 
 
-def _scenario(imu, *, velocity, attitude, duration=4.0, init_time=None, **kw):
+def _scenario(imu, *, velocity, attitude, duration=4.0, init_time=None, gps_rate=1.0, **kw):
     sats = np.array([[2e7, 1e6, -1.5e7], [-1.8e7, 3e6, -1e7], [2e6, 2e7, -1.2e7], [-1e6, -2e7, -1.4e7]])
-    K = round(duration)
+    K = round(duration * gps_rate)
     args = dict(
         velocity_ned=np.asarray(velocity, dtype=float),
         attitude=np.asarray(attitude, dtype=float),
         duration=duration,
         imu_rate=10.0,
-        gps_rate=1.0,
+        gps_rate=gps_rate,
         imu=imu,
         sat_pos_ned=np.tile(sats, (K + 1, 1, 1)),
         sat_vel_ned=np.zeros((K + 1, 4, 3)),
@@ -183,25 +183,27 @@ LAMBDA = 299_792_458.0 / 1_575.42e6  # GPS L1 wavelength, m
 
 @pytest.fixture(scope="module")
 def aided():
-    """Perfect IMU, no initialisation: the errors come from the initial position, velocity,
-    clock and heading uncertainty and from the GPS noises. The visibility drops to none, three
-    and two satellites (no update; no attitude rows below four; a single DD satellite pair)."""
+    """Perfect IMU, no initialisation, GPS at 2 Hz: the errors come from the initial position,
+    velocity, clock and heading uncertainty, the clock's random walks and the GPS noises. The
+    visibility drops to none, three and two satellites (no update; no attitude rows below
+    four; a single DD satellite pair)."""
     sc = _scenario(
         ImuSpec("perfect"),
         velocity=[80.0, 60.0, 0.0],
         attitude=[0.05, 0.02, 0.6],
-        duration=5.0,
+        duration=2.5,
+        gps_rate=2.0,
         sat_pos_ned=np.tile(SATS, (6, 1, 1)),
         sat_vel_ned=np.tile(SAT_VEL, (6, 1, 1)),
         n_visible=VISIBLE,
-        gnss=GnssNoise(3.0, 0.1, PHASE_M, 2e-3),
+        gnss=GnssNoise(1.0, 0.1, PHASE_M, 2e-3),
         pos0_sigma=5.0,
         vel0_sigma=0.3,
         heading_sigma=0.01,
         clock_bias_sigma=30.0,
         clock_drift_sigma=1.3,
-        clock_phase_walk=0.1,
-        clock_drift_walk=0.2,
+        clock_phase_walk=3.0,
+        clock_drift_walk=1.0,
         baselines_b=BASELINES,
     )
     return sc, {m: run_monte_carlo(sc, m, 2000, 21, initialise=False) for m in ("tc", "tc_att", "tc_dd")}
@@ -213,7 +215,7 @@ def _linear_kf_position_velocity(sc):
     (-u, 0, 1, 0), range-rate rows (0, -u, 0, 1) with u the unit vector to the satellite
     (d range / d position = -u). Posterior by the information form. Returns the 1-sigma of
     position and velocity at each epoch."""
-    T, sp, sv = 1.0, sc.pos0_sigma, sc.vel0_sigma
+    T, sp, sv = 1.0 / sc.gps_rate, sc.pos0_sigma, sc.vel0_sigma
     qb, qd = sc.clock_phase_walk**2, sc.clock_drift_walk**2
     P = np.diag([sp**2] * 3 + [sv**2] * 3 + [sc.clock_bias_sigma**2, sc.clock_drift_sigma**2])
     Phi = np.eye(8)
@@ -231,7 +233,7 @@ def _linear_kf_position_velocity(sc):
             H = np.zeros((2 * nu, 8))
             H[:nu, :3], H[:nu, 6] = -u, 1.0
             H[nu:, 3:6], H[nu:, 7] = -u, 1.0
-            Rinv = np.diag([1 / 3.0**2] * nu + [1 / 0.1**2] * nu)
+            Rinv = np.diag([1 / sc.gnss.pseudorange**2] * nu + [1 / sc.gnss.delta_range**2] * nu)
             P = np.linalg.inv(np.linalg.inv(P) + H.T @ Rinv @ H)
         out.append(np.sqrt(np.diag(P)[:6]))
     return np.array(out)
@@ -283,7 +285,7 @@ def _dd_heading_information(sc, k):
     from navcore.gnss.carrier_phase import double_difference_phase
 
     nu = VISIBLE[k]
-    x = sc.velocity_ned * k
+    x = sc.velocity_ned * k / sc.gps_rate
     C = Rotation.from_euler("ZYX", sc.attitude[::-1]).as_matrix()
 
     def dd(angle):
@@ -382,3 +384,19 @@ def test_unaligned_gyro_bias_tilts_and_accelerates():
     np.testing.assert_allclose(r.rms("vel_err")[1:, :2], vel[1:, :2], rtol=SE)
     np.testing.assert_allclose(r.rms("pos_err")[1:, :2], pos[1:, :2], rtol=SE)
     assert np.abs(r.vel_err[..., 2]).max() < 1e-2 * np.abs(r.vel_err[..., :2]).max()  # g (1 - cos tilt)
+
+
+def test_accelerometer_white_noise_is_a_velocity_random_walk():
+    """Oracle: white accelerometer noise of root PSD N_a integrates to a velocity random walk,
+    variance N_a^2 t per axis (exact for the sampled noise too), and to a position variance
+    N_a^2 t^3 / 3 (the filter's continuous model); filter 1-sigma and the RMS of 3000 runs."""
+    na = 0.03
+    sc = _scenario(
+        ImuSpec("test", accel_random_walk=na), velocity=[80.0, 60.0, 0.0], attitude=[0.0, 0.0, 0.6]
+    )
+    r = run_monte_carlo(sc, "ins", RUNS, 13, initialise=False)
+    t = r.t[:, None] * np.ones(3)
+    np.testing.assert_allclose(r.vel_sigma, na * np.sqrt(t), rtol=1e-9)
+    np.testing.assert_allclose(r.pos_sigma, na * np.sqrt(t**3 / 3), rtol=1e-9)
+    np.testing.assert_allclose(r.rms("vel_err")[1:], na * np.sqrt(t[1:]), rtol=SE)
+    np.testing.assert_allclose(r.att_err, 0.0, atol=1e-12)
