@@ -59,6 +59,29 @@ def test_kalman_filter_matches_filterpy():
         assert np.array_equal(P, P.T)
 
 
+def test_kalman_fast_path_matches_filterpy():
+    """Oracle: filterpy.kalman.KalmanFilter; the unchecked path (validate=False, float
+    arrays) gives the same predict and update as the checked one."""
+    rng = np.random.default_rng(17)
+    n, m = 3, 2
+    F = np.eye(n) + 0.2 * rng.normal(size=(n, n))
+    Q = _random_spd(rng, n, 0.05)
+    H = rng.normal(size=(m, n))
+    R = _random_spd(rng, m, 0.3)
+    x, P = rng.normal(size=n), _random_spd(rng, n)
+    kf = KalmanFilter(dim_x=n, dim_z=m)
+    kf.x, kf.P, kf.F, kf.Q, kf.H, kf.R = x.copy(), P.copy(), F, Q, H, R
+    for _ in range(3):
+        z = rng.normal(size=m)
+        x, P = kf_predict(x, P, F, Q, validate=False)
+        res = kf_update(x, P, z, H, R, validate=False)
+        x, P = res.x, res.P
+        kf.predict()
+        kf.update(z)
+        np.testing.assert_allclose(x, kf.x, rtol=1e-10, atol=1e-12)
+        np.testing.assert_allclose(P, kf.P, rtol=1e-10, atol=1e-12)
+
+
 def test_information_update_equals_covariance_update():
     """Oracle: filterpy.kalman.KalmanFilter.update on the same prior and measurement."""
     rng = np.random.default_rng(8)
@@ -255,6 +278,39 @@ def test_propagate_covariance_outage_is_prediction():
         assert none.rss([0], posterior=False)[k] == pytest.approx(np.sqrt(want[0][0]), rel=1e-12)
     np.testing.assert_allclose(none.sigma(0)[0], 1.0)
     np.testing.assert_allclose(none.rss([0, 1])[0], np.sqrt(2.0))
+
+
+def test_propagate_covariance_time_varying_model_and_several_measurements():
+    """Oracle: a hand-run scalar filter. Phi and Q given as functions of (k, t), the schedule
+    of t; an outage listed first must not stop the measurements after it; every processed
+    scalar is counted; a single time is a valid grid (no prediction)."""
+    t = np.array([0.0, 0.5, 2.0, 2.5])
+    Phi = lambda k, tk: [[1.0 + 0.1 * k + 0.01 * tk]]
+    Q = lambda k, tk: [[0.2 * k + tk]]
+
+    def sched(k, tk):
+        if tk < 1.0:
+            return [Measurement.scalar([1.0], np.inf), Measurement.scalar([2.0], 3.0)]
+        return [Measurement.scalar([1.0], 1.0 + tk), Measurement.scalar([1.0], 4.0)]
+
+    hist = propagate_covariance(np.eye(1) * 5.0, t, Phi, Q, sched)
+    p, posts, priors = 5.0, [], []
+    for k, tk in enumerate(t):
+        if k:
+            phi = 1.0 + 0.1 * k + 0.01 * tk
+            p = phi * p * phi + 0.2 * k + tk
+        priors.append(p)
+        for h, r in [(2.0, 3.0)] if tk < 1.0 else [(1.0, 1.0 + tk), (1.0, 4.0)]:
+            p = p * r / (h * h * p + r)
+        posts.append(p)
+    np.testing.assert_allclose(hist.prior[:, 0, 0], priors, rtol=1e-12)
+    np.testing.assert_allclose(hist.posterior[:, 0, 0], posts, rtol=1e-12)
+    np.testing.assert_array_equal(hist.n_updates, [1, 1, 2, 2])
+    np.testing.assert_array_equal(hist.t, t)
+    one = propagate_covariance(np.eye(1) * 5.0, [3.0], Phi, Q, sched)
+    assert one.posterior[0, 0, 0] == pytest.approx(1 / (1 / 5.0 + 1 / 4.0 + 1 / 4.0), rel=1e-12)
+    m = Measurement.scalar([1, 2], 3)
+    assert m.H.shape == (1, 2) and m.H.dtype == float and m.R.tolist() == [[3.0]]
 
 
 def test_kf_rejects_bad_shapes_and_noise():
