@@ -190,11 +190,46 @@ def test_cep_against_monte_carlo():
         circular_error_probable(P, 1.5)
 
 
+def _circle_probability(P, r):
+    """P(|x| < r) for x ~ N(0, P): rotate to the principal axes (numpy eigh), then
+    integrate the x-marginal times the conditional probability of |y| < sqrt(r^2 - x^2)
+    with scipy.integrate.quad."""
+    from scipy.integrate import quad
+    from scipy.stats import norm
+
+    a, b = np.linalg.eigvalsh(P)
+    f = lambda x: norm.pdf(x, scale=np.sqrt(a)) * (2 * norm.cdf(np.sqrt(r * r - x * x) / np.sqrt(b)) - 1)
+    return quad(f, -r, r, epsabs=1e-14, epsrel=1e-13, limit=200)[0]
+
+
+@pytest.mark.parametrize("scale", [1e-6, 1.0, 1e4])
+@pytest.mark.parametrize("p", [0.5, 0.95])
+def test_cep_against_quadrature(scale, p):
+    """Oracle: the probability inside the circle by scipy quadrature (_circle_probability),
+    solved for the radius with scipy's brentq, for an elongated, rotated covariance at three
+    scales; and the circular closed form sigma sqrt(-2 ln(1 - p))."""
+    from scipy.optimize import brentq
+
+    c, s_ = np.cos(0.7), np.sin(0.7)
+    Rm = np.array([[c, -s_], [s_, c]])
+    P = scale * Rm @ np.diag([9.0, 0.25]) @ Rm.T
+    want = brentq(
+        lambda r: _circle_probability(P, r) - p,
+        1e-9 * np.sqrt(scale),
+        20 * np.sqrt(scale),
+        xtol=1e-15 * np.sqrt(scale),
+    )
+    assert circular_error_probable(P, p) == pytest.approx(want, rel=1e-9)
+    assert circular_error_probable(scale * np.eye(2), p) == pytest.approx(
+        np.sqrt(-2 * scale * np.log(1 - p)), rel=1e-10
+    )
+
+
 def test_lock_table_and_tightly_coupled_rows():
     """Oracle: the event list read by hand; H rows equal -u and the clock/bias unit entries."""
     t = np.arange(0.0, 10.0)
-    code, carrier = lock_table(
-        t, 2, [(3.0, 0, "carrier", False), (5.0, 0, "code", False), (8.0, 0, "code", True)]
+    code, carrier = lock_table(  # events in any order: applied in time order
+        t, 2, [(8.0, 0, "code", True), (3.0, 0, "carrier", False), (5.0, 0, "code", False)]
     )
     assert carrier[:, 0].tolist() == [True] * 3 + [False] * 7
     assert code[:, 0].tolist() == [True] * 5 + [False] * 3 + [True] * 2

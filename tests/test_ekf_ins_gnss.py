@@ -18,6 +18,7 @@ from navcore.estimation.ekf_ins_gnss import (
     _dd_phase_batch,
     correct_attitude,
     discrete_noise_nilpotent,
+    euler_batch,
     euler_jacobian_batch,
     run_monte_carlo,
     sequential_scalar_updates,
@@ -72,6 +73,8 @@ def test_gauss_legendre_noise_equals_van_loan():
     GQG = noise_psd_17(1e-2, 1e-3, 1e-5, 1e-6, 0.2, 0.1)
     _, Qd = van_loan(F, GQG, 1.0)
     np.testing.assert_allclose(discrete_noise_nilpotent(F, GQG, 1.0), Qd, rtol=1e-10, atol=1e-16)
+    _, Qd = van_loan(F, GQG, 0.7)
+    np.testing.assert_allclose(discrete_noise_nilpotent(F, GQG, 0.7), Qd, rtol=1e-10, atol=1e-16)
 
 
 def test_left_correction_removes_n_frame_error():
@@ -91,18 +94,30 @@ def test_left_correction_removes_n_frame_error():
     assert err(q_right) > 0.5 * np.linalg.norm(dpsi)  # heading 90 deg: body and n axes differ
     with pytest.raises(ValueError, match="side"):
         correct_attitude(q_hat[None], dpsi[None], "middle")
+    # one quaternion without a batch axis, the default (left) side
+    np.testing.assert_allclose(correct_attitude(q_hat, dpsi), q_left, atol=1e-15)
 
 
 def test_batched_jacobians_match_builders():
-    """Oracle: carrier_phase.euler_attitude_rows and double_difference_phase (single-case builders)."""
-    C = fr.dcm_from_euler(0.1, -0.2, 1.2)
-    roll, pitch, _ = fr.euler_from_dcm(C)
-    np.testing.assert_allclose(euler_jacobian_batch(C[None])[0], euler_attitude_rows(C, roll, pitch)[:, 6:9])
-    pos = np.array([[10.0, 20.0, -3000.0]])
-    ant = np.array([[[2.0, 0.1, 0.0], [0.0, 2.0, 0.3]]])
+    """Oracle: carrier_phase.euler_attitude_rows and double_difference_phase (single-case
+    builders), scipy's Rotation for the Euler angles; batches of two axes and of two runs."""
+    eul = np.array([[[0.1, -0.2, 1.2], [-0.4, 0.3, -2.9]], [[1.0, 0.05, 0.2], [0.0, -1.2, 3.0]]])
+    C = np.array([[fr.dcm_from_euler(*e) for e in row] for row in eul])  # (2, 2, 3, 3)
+    J = euler_jacobian_batch(C)
+    E = euler_batch(C)
+    for i in range(2):
+        for j in range(2):
+            roll, pitch, _ = fr.euler_from_dcm(C[i, j])
+            np.testing.assert_allclose(J[i, j], euler_attitude_rows(C[i, j], roll, pitch)[:, 6:9])
+            want = Rotation.from_matrix(C[i, j]).as_euler("ZYX")[::-1]
+            np.testing.assert_allclose(E[i, j], want, atol=1e-12)
+    pos = np.array([[10.0, 20.0, -3000.0], [-500.0, 80.0, -2500.0]])
+    ant = np.array([[[2.0, 0.1, 0.0], [0.0, 2.0, 0.3]], [[1.0, -1.0, 0.2], [-0.5, 1.5, 0.0]]])
     sm, sn = np.array([1e7, 2e6, -2e7]), np.array([-5e6, 1.5e7, -1.8e7])
-    expect = [double_difference_phase(sm, sn, pos[0], pos[0] + a) for a in ant[0]]
-    np.testing.assert_allclose(_dd_phase_batch(pos, ant, sn, sm)[0], expect, atol=1e-9)
+    got = _dd_phase_batch(pos, ant, sn, sm)
+    for i in range(2):
+        expect = [double_difference_phase(sm, sn, pos[i], pos[i] + a) for a in ant[i]]
+        np.testing.assert_allclose(got[i], expect, atol=1e-9)
 
 
 def test_bad_mode_rejected():
