@@ -15,7 +15,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from navcore.estimation import (
+    CovarianceHistory,
     Measurement,
+    StateBlock,
     StateLayout,
     covariance_from_information,
     first_order_transition,
@@ -56,6 +58,9 @@ def test_kalman_filter_matches_filterpy():
         kf.update(z)
         np.testing.assert_allclose(x, kf.x, rtol=1e-9, atol=1e-12)
         np.testing.assert_allclose(P, kf.P, rtol=1e-9, atol=1e-12)
+        np.testing.assert_allclose(res.K, kf.K, rtol=1e-9, atol=1e-12)
+        np.testing.assert_allclose(res.innovation, kf.y, rtol=1e-9, atol=1e-12)
+        np.testing.assert_allclose(res.S, kf.S, rtol=1e-9, atol=1e-12)
         assert np.array_equal(P, P.T)
 
 
@@ -80,6 +85,9 @@ def test_kalman_fast_path_matches_filterpy():
         kf.update(z)
         np.testing.assert_allclose(x, kf.x, rtol=1e-10, atol=1e-12)
         np.testing.assert_allclose(P, kf.P, rtol=1e-10, atol=1e-12)
+        np.testing.assert_allclose(res.K, kf.K, rtol=1e-10, atol=1e-12)
+        np.testing.assert_allclose(res.innovation, kf.y, rtol=1e-10, atol=1e-12)
+        np.testing.assert_allclose(res.S, kf.S, rtol=1e-10, atol=1e-12)
 
 
 def test_information_update_equals_covariance_update():
@@ -313,6 +321,20 @@ def test_propagate_covariance_time_varying_model_and_several_measurements():
     assert m.H.shape == (1, 2) and m.H.dtype == float and m.R.tolist() == [[3.0]]
 
 
+def test_covariance_history_sigma_and_rss_by_hand():
+    """Oracle: square roots written out by hand, for variances below 1 and a round-off
+    negative variance (clipped to 0), posterior and prior."""
+    post = np.array([[[0.25, 0.1], [0.1, 0.0625]], [[-1e-18, 0.0], [0.0, 0.09]]])
+    prior = np.array([[[4.0, 0.0], [0.0, 0.01]], [[0.36, 0.0], [0.0, 0.64]]])
+    h = CovarianceHistory(np.array([0.0, 1.0]), prior, post, np.array([1, 1]))
+    np.testing.assert_array_equal(h.sigma(0), [0.5, 0.0])
+    np.testing.assert_array_equal(h.sigma([0, 1]), [[0.5, 0.25], [0.0, 0.3]])
+    np.testing.assert_array_equal(h.sigma(1, posterior=False), [0.1, 0.8])
+    np.testing.assert_allclose(h.rss([0, 1]), [np.sqrt(0.3125), 0.3], rtol=1e-15)
+    np.testing.assert_allclose(h.rss([0, 1], posterior=False), [np.sqrt(4.01), 1.0], rtol=1e-15)
+    np.testing.assert_array_equal(h.rss([0]), [0.5, 0.0])
+
+
 def test_kf_rejects_bad_shapes_and_noise():
     with pytest.raises(ValueError, match="H must have shape"):
         kf_update(np.zeros(2), np.eye(2), [1.0], np.ones((1, 3)), [[1.0]])
@@ -337,6 +359,25 @@ def test_state_layout():
         StateLayout.of(("a", 0))
     with pytest.raises(ValueError, match="name must be one of"):
         lay.slice("attitude")
+    assert StateLayout.of(StateBlock("a", 2), ("b", 1), name="m").table() == [("a", 2), ("b", 1)]
+    assert StateLayout.of(StateBlock("a", 2), name="m").name == "m"
+
+
+def test_state_layout_error_suggests_the_name():
+    """Oracle: the messages read by hand: a misspelt block name gets the closest known one, a
+    synonym of an INS block (whatever its case and spacing) gets the block's name, an unknown
+    name gets no suggestion."""
+    lay = StateLayout.of(("position", 3), ("velocity", 3), ("misalignment", 3), ("gyro drift", 3))
+    with pytest.raises(ValueError, match=r"got 'velocty'; did you mean 'velocity'\?$"):
+        lay.slice("velocty")
+    with pytest.raises(ValueError, match=r"got ' Gyro Bias '; did you mean 'gyro drift'\?$"):
+        lay.index(" Gyro Bias ")
+    with pytest.raises(ValueError, match=r"got 'tilt'; did you mean 'misalignment'\?$"):
+        lay.block("tilt")
+    with pytest.raises(ValueError, match=r"got 'clock offset'$"):  # a synonym of a block not here
+        lay.slice("clock offset")
+    with pytest.raises(ValueError, match=r"got 'zzz'$"):
+        lay.slice("zzz")
 
 
 def test_state_layout_concatenation_and_union():
