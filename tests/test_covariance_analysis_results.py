@@ -105,6 +105,8 @@ def test_concatenate_analyses_joins_by_hand():
     with pytest.raises(ValueError, match="consecutive"):
         concatenate_analyses([a, _part([2.0 - 1e-6, 3.0], 0.0, {}, 0.0)])
     assert concatenate_analyses([a, _part([2.0 + 1e-12, 3.0], 0.0, {}, 0.0)]).t.size == 4
+    edge = _part([-1.0, 0.0], 0.0, {}, 0.0)
+    assert concatenate_analyses([edge, _part([1e-9, 1.0], 0.0, {}, 0.0)]).t.size == 3  # 1e-9 s: touching
     with pytest.raises(ValueError, match="empty"):
         concatenate_analyses([])
 
@@ -200,10 +202,14 @@ def test_best_geometry_channels_mask_and_degenerate_geometry():
         / DEG
     )
     lowest = np.sort(elev.min(axis=0))[::-1]  # each satellite's lowest elevation, best first
-    ok_mask = float(lowest[3]) - 0.5  # four satellites stay above it
+    ok_mask = float(lowest[3]) - 0.02  # four satellites stay above it
+    assert lowest[3] > 10.0
     assert best_geometry_channels(tr, base, n=4, mask_deg=ok_mask).size == 4
     with pytest.raises(ValueError, match="stay above"):
-        best_geometry_channels(tr, base, n=4, mask_deg=float(lowest[3]) + 0.5)
+        best_geometry_channels(tr, base, n=4, mask_deg=float(lowest[3]) + 0.02)
+    # the defaults: four satellites above 10 deg
+    want, _, _ = _brute_force_pdop_choice(tr, base, 4, 10.0, np.linspace(0, 10, 12).astype(int))
+    np.testing.assert_array_equal(best_geometry_channels(tr, base), want)
     assert set(best_geometry_channels(tr, base, n=4, mask_deg=ok_mask).tolist()) == set(
         np.argsort(elev.min(axis=0))[::-1][:4].tolist()
     )

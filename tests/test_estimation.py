@@ -164,6 +164,20 @@ def test_scalar_riccati_iterate_matches_filterpy():
         assert it.gain == pytest.approx(gain, rel=1e-12)
 
 
+def test_scalar_riccati_noiseless_unstable_and_unit_q():
+    """Oracle: for q = 0 and |phi| > 1 the stabilising root P- = (phi^2 - 1) r / h^2 (from
+    P- = phi^2 P- r / (h^2 P- + r)); for q = 0 and |phi| <= 1, P- = 0; q = 1 against scipy's
+    DARE solver."""
+    from scipy.linalg import solve_discrete_are
+
+    ss = scalar_riccati_steady_state(-1.5, 0.0, 2.0, 3.0)
+    assert ss.prior == pytest.approx((1.5**2 - 1) * 3.0 / 4.0, rel=1e-14)
+    assert scalar_riccati_steady_state(0.8, 0.0, 2.0, 3.0).prior == 0.0
+    for phi in (1.2, 0.7):
+        want = solve_discrete_are(np.array([[phi]]), np.array([[0.5]]), np.array([[1.0]]), np.array([[2.0]]))
+        assert scalar_riccati_steady_state(phi, 1.0, 0.5, 2.0).prior == pytest.approx(want[0, 0], rel=1e-10)
+
+
 def test_scalar_riccati_random_walk_closed_form():
     """Oracle: for phi = 1, h = 1, P- = (q + sqrt(q^2 + 4 q r)) / 2."""
     q, r = 0.3, 2.0
@@ -314,6 +328,20 @@ def test_propagate_covariance_time_varying_model_and_several_measurements():
     np.testing.assert_allclose(hist.prior[:, 0, 0], priors, rtol=1e-12)
     np.testing.assert_allclose(hist.posterior[:, 0, 0], posts, rtol=1e-12)
     np.testing.assert_array_equal(hist.n_updates, [1, 1, 2, 2])
+    assert hist.n_updates.dtype == np.int64
+    ints = propagate_covariance(np.eye(1), [0, 1, 2], [[1.0]], [[0.5]])
+    assert ints.t.dtype == float
+    np.testing.assert_allclose(ints.posterior[:, 0, 0], [1.0, 1.5, 2.0], rtol=1e-15)
+    with pytest.raises(ValueError, match="must have H of shape"):
+        propagate_covariance(
+            np.eye(2),
+            [0.0, 1.0],
+            np.eye(2),
+            np.eye(2),
+            lambda k, tk: [Measurement(np.ones((1, 3)), np.eye(1))],
+        )
+    with pytest.raises(ValueError, match="t must be"):
+        propagate_covariance(np.eye(1), [[0.0, 1.0]], np.eye(1), np.eye(1))
     np.testing.assert_array_equal(hist.t, t)
     one = propagate_covariance(np.eye(1) * 5.0, [3.0], Phi, Q, sched)
     assert one.posterior[0, 0, 0] == pytest.approx(1 / (1 / 5.0 + 1 / 4.0 + 1 / 4.0), rel=1e-12)
@@ -361,6 +389,7 @@ def test_state_layout():
         lay.slice("attitude")
     assert StateLayout.of(StateBlock("a", 2), ("b", 1), name="m").table() == [("a", 2), ("b", 1)]
     assert StateLayout.of(StateBlock("a", 2), name="m").name == "m"
+    assert StateLayout.of(("a", 1)).name == ""
 
 
 def test_state_layout_error_suggests_the_name():
@@ -378,6 +407,8 @@ def test_state_layout_error_suggests_the_name():
         lay.slice("clock offset")
     with pytest.raises(ValueError, match=r"got 'zzz'$"):
         lay.slice("zzz")
+    with pytest.raises(ValueError, match=r"got 3$"):  # not a name at all
+        lay.slice(3)
 
 
 def test_state_layout_concatenation_and_union():
