@@ -125,8 +125,15 @@ def test_fusion_equals_stacked_gls_and_outage():
     np.testing.assert_allclose(P2, P3, rtol=1e-12)
     x4, _ = federated_fusion(xs, [Ps[0], np.diag([np.inf] * 3), Ps[2]])
     np.testing.assert_allclose(x4, x3, rtol=1e-12)
+    x5, P5 = federated_fusion([xs[1], xs[0], xs[2]], [np.inf, Ps[0], Ps[2]])  # a scalar inf outage, first
+    np.testing.assert_allclose(x5, x3, rtol=1e-12)
+    np.testing.assert_allclose(P5, P3, rtol=1e-12)
     with pytest.raises(ValueError, match="covariances"):
         federated_fusion(xs[:1], [None])
+    with pytest.raises(ValueError, match="like the others"):
+        federated_fusion(xs[:2], [Ps[0], np.eye(2)])
+    with pytest.raises(TypeError, match="sequence of matrices"):
+        federated_fusion(xs, "abc")
 
 
 def test_fused_covariance_monte_carlo():
