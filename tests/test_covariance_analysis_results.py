@@ -16,7 +16,9 @@ import pytest
 
 from navcore.estimation.covariance_analysis import (
     CovarianceAnalysis,
+    baro_schedule,
     best_geometry_channels,
+    combine_schedules,
     concatenate_analyses,
     satellite_geometry,
 )
@@ -231,3 +233,22 @@ def test_satellite_geometry_matches_pymap3d():
         u = np.stack([np.cos(el) * np.cos(az), np.cos(el) * np.sin(az), -np.sin(el)], -1)
         np.testing.assert_allclose(geo.u_ned[k], u, atol=1e-9)
         np.testing.assert_allclose(geo.elevation[k], el, atol=1e-9)
+
+
+def test_baro_and_combined_schedules_by_hand():
+    """Oracle: the documented measurement dz = -dr_D - b_alt + noise written out as a row
+    (height is minus the down coordinate), taken every third step; a combination skips None
+    and returns every schedule's measurements in order."""
+    lay = StateLayout.of(("position", 3), ("velocity", 3), ("altimeter bias", 1))
+    sched = baro_schedule(lay, noise_m=2.5, every=3)
+    assert [len(sched(k)) for k in range(7)] == [1, 0, 0, 1, 0, 0, 1]
+    m = sched(3)[0]
+    np.testing.assert_array_equal(m.H, [[0, 0, -1, 0, 0, 0, -1]])
+    np.testing.assert_array_equal(m.R, [[6.25]])
+    no_bias = baro_schedule(StateLayout.of(("position", 3)), noise_m=1.0)(0)[0]
+    np.testing.assert_array_equal(no_bias.H, [[0, 0, -1]])
+    both = combine_schedules(None, sched, None, baro_schedule(lay, noise_m=1.0))
+    got = both(3)
+    assert [float(g.R[0, 0]) for g in got] == [6.25, 1.0]
+    assert [float(g.R[0, 0]) for g in both(1)] == [1.0]
+    assert combine_schedules(None)(0) == []
