@@ -192,14 +192,16 @@ def test_cep_against_monte_carlo():
 
 def _circle_probability(P, r):
     """P(|x| < r) for x ~ N(0, P): rotate to the principal axes (numpy eigh), then
-    integrate the x-marginal times the conditional probability of |y| < sqrt(r^2 - x^2)
-    with scipy.integrate.quad."""
+    integrate the marginal of the major-axis coordinate times the conditional probability
+    of |y| < sqrt(r^2 - x^2) with scipy.integrate.quad."""
     from scipy.integrate import quad
     from scipy.stats import norm
 
-    a, b = np.linalg.eigvalsh(P)
+    b, a = np.linalg.eigvalsh(P)  # x along the major axis
     f = lambda x: norm.pdf(x, scale=np.sqrt(a)) * (2 * norm.cdf(np.sqrt(r * r - x * x) / np.sqrt(b)) - 1)
-    return quad(f, -r, r, epsabs=1e-14, epsrel=1e-13, limit=200)[0]
+    d = 50 * b / r  # |y| < sqrt(r^2 - x^2) turns from certain to impossible within ~b/r of |x| = r
+    points = [-r + d, r - d] if d < r else None
+    return quad(f, -r, r, points=points, epsabs=1e-14, epsrel=1e-13, limit=500)[0]
 
 
 @pytest.mark.parametrize("scale", [1e-6, 1.0, 1e4])
@@ -223,6 +225,24 @@ def test_cep_against_quadrature(scale, p):
     assert circular_error_probable(scale * np.eye(2), p) == pytest.approx(
         np.sqrt(-2 * scale * np.log(1 - p)), rel=1e-10
     )
+
+
+@pytest.mark.parametrize("ratio", [1e-4, 1e-6, 1e-10, 0.0])
+def test_cep_of_elongated_ellipses(ratio):
+    """Oracle: scipy quadrature (_circle_probability) for error ellipses up to 10^5 : 1 in
+    sigma, and for a degenerate (1-D) covariance the median of |x| for x ~ N(0, 4):
+    2 * 0.6744897501960817 (scipy.stats.norm.ppf(0.75))."""
+    from scipy.optimize import brentq
+    from scipy.stats import norm
+
+    P = np.diag([4.0, 4.0 * ratio])
+    got = circular_error_probable(P)
+    if ratio == 0.0:
+        assert got == pytest.approx(2 * norm.ppf(0.75), rel=1e-9)
+    else:
+        want = brentq(lambda r: _circle_probability(P, r) - 0.5, 1e-6, 20.0, xtol=1e-15)
+        assert got == pytest.approx(want, rel=1e-9)
+    assert circular_error_probable(np.zeros((2, 2))) == 0.0
 
 
 def test_lock_table_and_tightly_coupled_rows():
