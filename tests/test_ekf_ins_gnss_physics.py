@@ -57,8 +57,7 @@ def _rms(x, axis=0):
     return np.sqrt(np.mean(np.square(x), axis=axis))
 
 
-@pytest.fixture(scope="module")
-def unaligned():
+def _unaligned():
     """Stand-alone INS from the nominal attitude: accelerometer bias and scale factor, a small
     true heading offset about a heading of 180 deg (so that angle errors must be wrapped); no
     gyro errors, no noise, exact initial position and velocity. The filter models a random walk
@@ -69,7 +68,7 @@ def unaligned():
     return sc, att, run_monte_carlo(sc, "ins", RUNS, 5, initialise=False)
 
 
-def test_unaligned_ins_errors_are_constant_acceleration_kinematics(unaligned):
+def _check_unaligned_ins_errors_are_constant_acceleration_kinematics(unaligned):
     """Oracle: kinematics (v = a t, p = a t^2 / 2 per run, exactly) and the covariance of
     a = C (b + s * f_b) with f_b = C' (0, 0, -g) from scipy's Rotation."""
     _sc, att, r = unaligned
@@ -97,7 +96,7 @@ def test_unaligned_ins_errors_are_constant_acceleration_kinematics(unaligned):
     assert abs(np.mean(r.att_err[:, 0, 2])) < 4.5 * 1e-3 / np.sqrt(RUNS)
 
 
-def test_unaligned_ins_filter_sigma_matches_truth(unaligned):
+def _check_unaligned_ins_filter_sigma_matches_truth(unaligned):
     """Oracle: the filter spreads the scale-factor variance evenly over the axes, so its total
     velocity variance from the turn-on errors equals the trace of the true covariance,
     (3 sigma_b^2 + sigma_s^2 g^2) t^2, and position follows as t^4 / 4; the modelled bias random
@@ -119,8 +118,7 @@ def test_unaligned_ins_filter_sigma_matches_truth(unaligned):
     )
 
 
-@pytest.fixture(scope="module")
-def levelled():
+def _levelled():
     """Stand-alone INS after levelling and gyro calibration with noise-free sensors: a level
     flight on the track angle, accelerometer and gyro biases, noisy initial position,
     velocity and a true heading offset."""
@@ -139,7 +137,7 @@ def levelled():
     return sc, run_monte_carlo(sc, "ins", RUNS, 11)
 
 
-def test_levelling_cancels_the_accelerometer_bias(levelled):
+def _check_levelling_cancels_the_accelerometer_bias(levelled):
     """Oracle: levelling (the tilt b/g cancels the bias; calibrated gyros hold the attitude),
     so velocity and attitude errors keep their initial values and position grows linearly;
     the initial errors have the scenario's spreads, the tilts b/g, the heading the crab
@@ -158,7 +156,7 @@ def test_levelling_cancels_the_accelerometer_bias(levelled):
     assert abs(rho) < 4.5 / np.sqrt(RUNS)
 
 
-def test_levelled_filter_sigma_matches_truth(levelled):
+def _check_levelled_filter_sigma_matches_truth(levelled):
     """Oracle: the same levelling physics for the filter's own 1-sigma: velocity stays
     sigma_v (the tilt/bias correlation cancels the bias), position grows as
     sqrt(sigma_p^2 + sigma_v^2 t^2), tilt b/g, heading sqrt(crab^2 + (sigma_v / V)^2)."""
@@ -181,8 +179,7 @@ PHASE_M = 0.005  # undifferenced carrier-phase noise, m
 LAMBDA = 299_792_458.0 / 1_575.42e6  # GPS L1 wavelength, m
 
 
-@pytest.fixture(scope="module")
-def aided():
+def _aided():
     """Perfect IMU, no initialisation, GPS at 2 Hz: the errors come from the initial position,
     velocity, clock and heading uncertainty, the clock's random walks and the GPS noises. The
     visibility drops to none, three and two satellites (no update; no attitude rows below
@@ -239,7 +236,7 @@ def _linear_kf_position_velocity(sc):
     return np.array(out)
 
 
-def test_tightly_coupled_position_velocity_match_linear_filter(aided):
+def _check_tightly_coupled_position_velocity_match_linear_filter(aided):
     """Oracle: the independent 8-state linear filter (information form) for the filter's
     1-sigma, and the sample RMS of 2000 runs for the true errors, at every epoch; with a
     perfect IMU and no tilt, the attitude rows (where used) see the heading only."""
@@ -258,7 +255,7 @@ def test_tightly_coupled_position_velocity_match_linear_filter(aided):
     np.testing.assert_allclose(tc.att_err[:, :, 2], tc.att_err[:, :1, 2] * np.ones(6), atol=1e-12)
 
 
-def test_attitude_rows_add_heading_information(aided):
+def _check_attitude_rows_add_heading_information(aided):
     """Oracle: scalar information accumulation for the heading, 1/s^2 = 1/crab^2 + n/sigma_att^2
     after n epochs with at least four satellites (the Euler heading responds one-to-one to a
     rotation about the down axis; roll and pitch have no prior uncertainty and stay exact);
@@ -307,7 +304,7 @@ def _dd_heading_information(sc, k):
     return float(h @ np.linalg.solve(R_dd, h))
 
 
-def test_double_difference_phases_add_heading_information(aided):
+def _check_double_difference_phases_add_heading_information(aided):
     """Oracle: heading information summed over the epochs with at least two satellites
     (finite-difference DD rows, hand-built DD covariance); the sample RMS over 2000 runs."""
     sc, res = aided
@@ -350,7 +347,7 @@ def test_levelling_with_noisy_sensors():
     np.testing.assert_allclose(r.rms("att_err")[:, 2], heading, rtol=SE)
 
 
-def test_modes_share_the_random_numbers(aided):
+def _check_modes_share_the_random_numbers(aided):
     """Oracle: the documented common random numbers: every mode draws the same truth, so the
     errors before the first GPS epoch are identical across modes."""
     _, res = aided
@@ -441,3 +438,35 @@ def test_all_errors_on_filter_is_consistent():
         for name, sig in (("pos_err", r.pos_sigma), ("vel_err", r.vel_sigma), ("att_err", r.att_sigma)):
             ratio = r.rms(name)[1:] / sig[1:]
             assert np.all(np.abs(ratio - 1) < tol), (mode, name, ratio)
+
+
+# mutmut maps each model function to the tests that call it; a module-scoped fixture would be
+# attributed to the first test only, so each scenario runs inside one test that makes all checks.
+
+
+def test_unaligned_scenario():
+    """Oracles: constant-acceleration kinematics per run, the bias/scale-factor covariance
+    through a scipy attitude, and the filter's total variance against its trace and the
+    triple-integrator bias walk (the two checks above)."""
+    data = _unaligned()
+    _check_unaligned_ins_errors_are_constant_acceleration_kinematics(data)
+    _check_unaligned_ins_filter_sigma_matches_truth(data)
+
+
+def test_levelled_scenario():
+    """Oracles: levelling physics (the tilt b/g cancels the bias) for truth and filter 1-sigma,
+    the track-angle error sigma_v / V (the two checks above)."""
+    data = _levelled()
+    _check_levelling_cancels_the_accelerometer_bias(data)
+    _check_levelled_filter_sigma_matches_truth(data)
+
+
+def test_aided_scenario():
+    """Oracles: an independent 8-state linear filter for position and velocity, scalar heading
+    information from the attitude rows and from finite-difference DD rows, sample RMS over 2000
+    runs, and the common random numbers of the modes (the four checks above)."""
+    data = _aided()
+    _check_tightly_coupled_position_velocity_match_linear_filter(data)
+    _check_attitude_rows_add_heading_information(data)
+    _check_double_difference_phases_add_heading_information(data)
+    _check_modes_share_the_random_numbers(data)
