@@ -200,7 +200,7 @@ def _aided():
         clock_bias_sigma=30.0,
         clock_drift_sigma=1.3,
         clock_phase_walk=3.0,
-        clock_drift_walk=1.0,
+        clock_drift_walk=1.2,
         baselines_b=BASELINES,
     )
     return sc, {m: run_monte_carlo(sc, m, 2000, 21, initialise=False) for m in ("tc", "tc_att", "tc_dd")}
