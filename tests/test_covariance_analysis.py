@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import scipy.linalg
+from filterpy.kalman import KalmanFilter
 
 from navcore.estimation.covariance_analysis import (
     baro_schedule,
@@ -120,14 +121,16 @@ def test_static_suboptimal_covariance_matches_monte_carlo():
         truth.index("accel bias", 0),
     ]
     assert got[check] == pytest.approx(want[check], rel=4 * np.sqrt(2 / 4000))
-    # the filter believes less error than there is in the unmodelled-gravity case? at least
-    # the truth and filter covariances differ and are both finite
-    assert np.all(np.isfinite(res.filter_var))
 
 
-def test_optimal_filter_truth_equals_filter():
-    """Oracle: when truth and filter layouts coincide the two recursions are the same
-    Riccati equation, so the covariances agree to round-off."""
+def test_optimal_filter_matches_filterpy():
+    """Oracle: filterpy's KalmanFilter on the same linear model, discretised exactly
+    (scipy.linalg.expm of F dt, and Van Loan's block exponential for Q), with a barometric
+    height measurement (-1 on the down position and on the altimeter bias, 3 m noise) every
+    step; when truth and filter layouts coincide, both of the engine's recursions must agree
+    with it (the truth's to the filter's to round-off)."""
+    from navcore.inertial.error_dynamics import earth_rate_ned, transport_rate_ned
+
     lay = ins_error_layout("position", "velocity", "misalignment", "gyro drift", "altimeter bias")
     src = ErrorSources(
         imu=ImuSpec("t", gyro_bias=0.01 * DEG_PER_H, gyro_random_walk=0.01 * DEG_PER_H),
@@ -136,9 +139,45 @@ def test_optimal_filter_truth_equals_filter():
     P0 = initial_covariance(
         lay, src, position_sigma=(10,) * 3, velocity_sigma=(0.1,) * 3, attitude_sigma=(1e-3,) * 3
     )
-    tr = straight_and_level(300.0, speed=100.0, lat0=30 * DEG)
+    tr = straight_and_level(300.0, lat0=30 * DEG)  # at rest: one linearisation
     res = run_covariance_analysis(tr, lay, lay, src, P0, baro_schedule(lay, noise_m=3.0))
     assert res.true_var == pytest.approx(res.filter_var, rel=1e-9, abs=1e-20)
+
+    n = lay.size
+    w_in = earth_rate_ned(tr.lat[0]) + transport_rate_ned(tr.vel_ned[0], tr.lat[0], tr.h[0])
+    F = error_dynamics(
+        lay,
+        f_ned=tr.f_ned[0],
+        C_bn=tr.C_bn[0],
+        omega_ib_b=tr.omega_nb_b[0] + tr.C_bn[0].T @ w_in,
+        v_ned=tr.vel_ned[0],
+        lat=float(tr.lat[0]),
+        h=float(tr.h[0]),
+        sources=src,
+    )
+    S = process_noise_psd(lay, src, speed_mps=0.0)
+    M = scipy.linalg.expm(np.block([[-F, S], [np.zeros((n, n)), F.T]]) * tr.dt)  # Van Loan (1978)
+    Phi = M[n:, n:].T
+    kf = KalmanFilter(dim_x=n, dim_z=1)
+    kf.F, kf.Q, kf.P = Phi, Phi @ M[:n, n:], P0.copy()
+    kf.H = np.zeros((1, n))
+    kf.H[0, lay.index("position", 2)] = kf.H[0, lay.index("altimeter bias")] = -1.0
+    kf.R = np.array([[9.0]])
+    want = []
+    for k in range(len(tr)):
+        if k:
+            kf.predict()
+        kf.update(np.zeros(1))
+        want.append(np.diag(kf.P))
+    np.testing.assert_allclose(res.filter_var, want, rtol=1e-6)
+    np.testing.assert_allclose(res.true_var, want, rtol=1e-6)
+    np.testing.assert_array_equal(res.n_updates, np.ones(len(tr)))
+    np.testing.assert_allclose(
+        res.horizontal_position, np.sqrt(np.array(want)[:, 0] + np.array(want)[:, 1]), rtol=1e-6
+    )
+    np.testing.assert_allclose(
+        res.horizontal_velocity, np.sqrt(np.array(want)[:, 3] + np.array(want)[:, 4]), rtol=1e-6
+    )
 
 
 def test_cep_against_monte_carlo():
@@ -151,11 +190,66 @@ def test_cep_against_monte_carlo():
         circular_error_probable(P, 1.5)
 
 
+def _circle_probability(P, r):
+    """P(|x| < r) for x ~ N(0, P): rotate to the principal axes (numpy eigh), then
+    integrate the marginal of the major-axis coordinate times the conditional probability
+    of |y| < sqrt(r^2 - x^2) with scipy.integrate.quad."""
+    from scipy.integrate import quad
+    from scipy.stats import norm
+
+    b, a = np.linalg.eigvalsh(P)  # x along the major axis
+    f = lambda x: norm.pdf(x, scale=np.sqrt(a)) * (2 * norm.cdf(np.sqrt(r * r - x * x) / np.sqrt(b)) - 1)
+    d = 50 * b / r  # |y| < sqrt(r^2 - x^2) turns from certain to impossible within ~b/r of |x| = r
+    points = [-r + d, r - d] if d < r else None
+    return quad(f, -r, r, points=points, epsabs=1e-14, epsrel=1e-13, limit=500)[0]
+
+
+@pytest.mark.parametrize("scale", [1e-6, 1.0, 1e4])
+@pytest.mark.parametrize("p", [0.5, 0.95])
+def test_cep_against_quadrature(scale, p):
+    """Oracle: the probability inside the circle by scipy quadrature (_circle_probability),
+    solved for the radius with scipy's brentq, for an elongated, rotated covariance at three
+    scales; and the circular closed form sigma sqrt(-2 ln(1 - p))."""
+    from scipy.optimize import brentq
+
+    c, s_ = np.cos(0.7), np.sin(0.7)
+    Rm = np.array([[c, -s_], [s_, c]])
+    P = scale * Rm @ np.diag([9.0, 0.25]) @ Rm.T
+    want = brentq(
+        lambda r: _circle_probability(P, r) - p,
+        1e-9 * np.sqrt(scale),
+        20 * np.sqrt(scale),
+        xtol=1e-15 * np.sqrt(scale),
+    )
+    assert circular_error_probable(P, p) == pytest.approx(want, rel=1e-9)
+    assert circular_error_probable(scale * np.eye(2), p) == pytest.approx(
+        np.sqrt(-2 * scale * np.log(1 - p)), rel=1e-10
+    )
+
+
+@pytest.mark.parametrize("ratio", [1e-4, 1e-6, 1e-10, 0.0])
+def test_cep_of_elongated_ellipses(ratio):
+    """Oracle: scipy quadrature (_circle_probability) for error ellipses up to 10^5 : 1 in
+    sigma, and for a degenerate (1-D) covariance the median of |x| for x ~ N(0, 4):
+    2 * 0.6744897501960817 (scipy.stats.norm.ppf(0.75))."""
+    from scipy.optimize import brentq
+    from scipy.stats import norm
+
+    P = np.diag([4.0, 4.0 * ratio])
+    got = circular_error_probable(P)
+    if ratio == 0.0:
+        assert got == pytest.approx(2 * norm.ppf(0.75), rel=1e-9)
+    else:
+        want = brentq(lambda r: _circle_probability(P, r) - 0.5, 1e-6, 20.0, xtol=1e-15)
+        assert got == pytest.approx(want, rel=1e-9)
+    assert circular_error_probable(np.zeros((2, 2))) == 0.0
+
+
 def test_lock_table_and_tightly_coupled_rows():
     """Oracle: the event list read by hand; H rows equal -u and the clock/bias unit entries."""
     t = np.arange(0.0, 10.0)
-    code, carrier = lock_table(
-        t, 2, [(3.0, 0, "carrier", False), (5.0, 0, "code", False), (8.0, 0, "code", True)]
+    code, carrier = lock_table(  # events in any order: applied in time order
+        t, 2, [(8.0, 0, "code", True), (3.0, 0, "carrier", False), (5.0, 0, "code", False)]
     )
     assert carrier[:, 0].tolist() == [True] * 3 + [False] * 7
     assert code[:, 0].tolist() == [True] * 5 + [False] * 3 + [True] * 2

@@ -15,7 +15,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from navcore.estimation import (
+    CovarianceHistory,
     Measurement,
+    StateBlock,
     StateLayout,
     covariance_from_information,
     first_order_transition,
@@ -56,11 +58,40 @@ def test_kalman_filter_matches_filterpy():
         kf.update(z)
         np.testing.assert_allclose(x, kf.x, rtol=1e-9, atol=1e-12)
         np.testing.assert_allclose(P, kf.P, rtol=1e-9, atol=1e-12)
+        np.testing.assert_allclose(res.K, kf.K, rtol=1e-9, atol=1e-12)
+        np.testing.assert_allclose(res.innovation, kf.y, rtol=1e-9, atol=1e-12)
+        np.testing.assert_allclose(res.S, kf.S, rtol=1e-9, atol=1e-12)
         assert np.array_equal(P, P.T)
 
 
+def test_kalman_fast_path_matches_filterpy():
+    """Oracle: filterpy.kalman.KalmanFilter; the unchecked path (validate=False, float
+    arrays) gives the same predict and update as the checked one."""
+    rng = np.random.default_rng(17)
+    n, m = 3, 2
+    F = np.eye(n) + 0.2 * rng.normal(size=(n, n))
+    Q = _random_spd(rng, n, 0.05)
+    H = rng.normal(size=(m, n))
+    R = _random_spd(rng, m, 0.3)
+    x, P = rng.normal(size=n), _random_spd(rng, n)
+    kf = KalmanFilter(dim_x=n, dim_z=m)
+    kf.x, kf.P, kf.F, kf.Q, kf.H, kf.R = x.copy(), P.copy(), F, Q, H, R
+    for _ in range(3):
+        z = rng.normal(size=m)
+        x, P = kf_predict(x, P, F, Q, validate=False)
+        res = kf_update(x, P, z, H, R, validate=False)
+        x, P = res.x, res.P
+        kf.predict()
+        kf.update(z)
+        np.testing.assert_allclose(x, kf.x, rtol=1e-10, atol=1e-12)
+        np.testing.assert_allclose(P, kf.P, rtol=1e-10, atol=1e-12)
+        np.testing.assert_allclose(res.K, kf.K, rtol=1e-10, atol=1e-12)
+        np.testing.assert_allclose(res.innovation, kf.y, rtol=1e-10, atol=1e-12)
+        np.testing.assert_allclose(res.S, kf.S, rtol=1e-10, atol=1e-12)
+
+
 def test_information_update_equals_covariance_update():
-    """Oracle: the covariance-form Joseph update on the same prior and measurement."""
+    """Oracle: filterpy.kalman.KalmanFilter.update on the same prior and measurement."""
     rng = np.random.default_rng(8)
     n, m = 3, 2
     P = _random_spd(rng, n)
@@ -69,11 +100,15 @@ def test_information_update_equals_covariance_update():
     R = _random_spd(rng, m)
     z = rng.normal(size=m)
     y, Y = information_from_covariance(x, P)
+    np.testing.assert_allclose(Y @ P, np.eye(n), atol=1e-12)
+    np.testing.assert_allclose(P @ y, x, rtol=1e-12, atol=1e-14)
     y2, Y2 = information_update(y, Y, z, H, R)
     x2, P2 = covariance_from_information(y2, Y2)
-    ref = kf_update(x, P, z, H, R)
-    np.testing.assert_allclose(P2, ref.P, rtol=1e-10)
-    np.testing.assert_allclose(x2, ref.x, rtol=1e-10, atol=1e-12)
+    kf = KalmanFilter(dim_x=n, dim_z=m)
+    kf.x, kf.P, kf.H, kf.R = x.copy(), P.copy(), H, R
+    kf.update(z)
+    np.testing.assert_allclose(P2, kf.P, rtol=1e-10)
+    np.testing.assert_allclose(x2, kf.x, rtol=1e-10, atol=1e-12)
 
 
 def test_information_update_from_zero_prior():
@@ -94,13 +129,53 @@ def test_information_update_from_zero_prior():
     st.floats(0.1, 3.0),
     st.floats(1e-3, 10.0),
 )
-def test_scalar_riccati_steady_state_matches_iteration(phi, q, h, r):
-    """Oracle: iterate the Riccati recursion 5000 times from P0 = 1 (contracting for these ranges)."""
+def test_scalar_riccati_steady_state_matches_scipy_dare(phi, q, h, r):
+    """Oracle: scipy.linalg.solve_discrete_are for the prior P- (the filtering DARE with
+    A = phi, B = h), then P+ = P- r / (h^2 P- + r) and K = P- h / (h^2 P- + r) (Kalman 1960)."""
+    from scipy.linalg import solve_discrete_are
+
     ss = scalar_riccati_steady_state(phi, q, h, r)
-    it = scalar_riccati_iterate(phi, q, h, r, p0=1.0, steps=5000)
-    assert ss.prior == pytest.approx(it.prior, rel=1e-8)
-    assert ss.posterior == pytest.approx(it.posterior, rel=1e-8)
-    assert ss.gain == pytest.approx(it.gain, rel=1e-8)
+    prior = float(
+        solve_discrete_are(np.array([[phi]]), np.array([[h]]), np.array([[q]]), np.array([[r]]))[0, 0]
+    )
+    assert ss.prior == pytest.approx(prior, rel=1e-7)
+    assert ss.posterior == pytest.approx(prior * r / (h * h * prior + r), rel=1e-7)
+    assert ss.gain == pytest.approx(prior * h / (h * h * prior + r), rel=1e-7)
+
+
+def test_scalar_riccati_iterate_matches_filterpy():
+    """Oracle: filterpy's one-state KalmanFilter, update then predict, ``steps`` times from P0."""
+    phi, q, h, r, p0 = 0.93, 0.4, 1.7, 2.5, 30.0
+    kf = KalmanFilter(dim_x=1, dim_z=1)
+    kf.F, kf.Q, kf.H, kf.R, kf.P = (
+        np.array([[phi]]),
+        np.array([[q]]),
+        np.array([[h]]),
+        np.array([[r]]),
+        np.array([[p0]]),
+    )
+    for steps in range(1, 6):
+        kf.update(np.array([[0.0]]))
+        post, gain = float(kf.P[0, 0]), float(kf.K[0, 0])
+        kf.predict()
+        it = scalar_riccati_iterate(phi, q, h, r, p0=p0, steps=steps)
+        assert it.prior == pytest.approx(float(kf.P[0, 0]), rel=1e-12)
+        assert it.posterior == pytest.approx(post, rel=1e-12)
+        assert it.gain == pytest.approx(gain, rel=1e-12)
+
+
+def test_scalar_riccati_noiseless_unstable_and_unit_q():
+    """Oracle: for q = 0 and |phi| > 1 the stabilising root P- = (phi^2 - 1) r / h^2 (from
+    P- = phi^2 P- r / (h^2 P- + r)); for q = 0 and |phi| <= 1, P- = 0; q = 1 against scipy's
+    DARE solver."""
+    from scipy.linalg import solve_discrete_are
+
+    ss = scalar_riccati_steady_state(-1.5, 0.0, 2.0, 3.0)
+    assert ss.prior == pytest.approx((1.5**2 - 1) * 3.0 / 4.0, rel=1e-14)
+    assert scalar_riccati_steady_state(0.8, 0.0, 2.0, 3.0).prior == 0.0
+    for phi in (1.2, 0.7):
+        want = solve_discrete_are(np.array([[phi]]), np.array([[0.5]]), np.array([[1.0]]), np.array([[2.0]]))
+        assert scalar_riccati_steady_state(phi, 1.0, 0.5, 2.0).prior == pytest.approx(want[0, 0], rel=1e-10)
 
 
 def test_scalar_riccati_random_walk_closed_form():
@@ -213,8 +288,79 @@ def test_propagate_covariance_outage_is_prediction():
     none = propagate_covariance(P0, t, Phi, Q)
     np.testing.assert_array_equal(outage.posterior, none.posterior)
     assert outage.n_updates.sum() == 0
+    # closed form of the double integrator from P0 = I with white acceleration of PSD q:
+    # [[1 + t^2 + q t^3 / 3, t + q t^2 / 2], [t + q t^2 / 2, 1 + q t]]
+    for k, tk in enumerate(t):
+        want = [[1 + tk**2 + 0.1 * tk**3 / 3, tk + 0.1 * tk**2 / 2], [tk + 0.1 * tk**2 / 2, 1 + 0.1 * tk]]
+        np.testing.assert_allclose(none.posterior[k], want, rtol=1e-12)
+        np.testing.assert_allclose(none.prior[k], want, rtol=1e-12)
+        assert none.sigma(1)[k] == pytest.approx(np.sqrt(want[1][1]), rel=1e-12)
+        assert none.sigma(0, posterior=False)[k] == pytest.approx(np.sqrt(want[0][0]), rel=1e-12)
+        assert none.rss([0, 1])[k] == pytest.approx(np.sqrt(want[0][0] + want[1][1]), rel=1e-12)
+        assert none.rss([0], posterior=False)[k] == pytest.approx(np.sqrt(want[0][0]), rel=1e-12)
     np.testing.assert_allclose(none.sigma(0)[0], 1.0)
     np.testing.assert_allclose(none.rss([0, 1])[0], np.sqrt(2.0))
+
+
+def test_propagate_covariance_time_varying_model_and_several_measurements():
+    """Oracle: a hand-run scalar filter. Phi and Q given as functions of (k, t), the schedule
+    of t; an outage listed first must not stop the measurements after it; every processed
+    scalar is counted; a single time is a valid grid (no prediction)."""
+    t = np.array([0.0, 0.5, 2.0, 2.5])
+    Phi = lambda k, tk: [[1.0 + 0.1 * k + 0.01 * tk]]
+    Q = lambda k, tk: [[0.2 * k + tk]]
+
+    def sched(k, tk):
+        if tk < 1.0:
+            return [Measurement.scalar([1.0], np.inf), Measurement.scalar([2.0], 3.0)]
+        return [Measurement.scalar([1.0], 1.0 + tk), Measurement.scalar([1.0], 4.0)]
+
+    hist = propagate_covariance(np.eye(1) * 5.0, t, Phi, Q, sched)
+    p, posts, priors = 5.0, [], []
+    for k, tk in enumerate(t):
+        if k:
+            phi = 1.0 + 0.1 * k + 0.01 * tk
+            p = phi * p * phi + 0.2 * k + tk
+        priors.append(p)
+        for h, r in [(2.0, 3.0)] if tk < 1.0 else [(1.0, 1.0 + tk), (1.0, 4.0)]:
+            p = p * r / (h * h * p + r)
+        posts.append(p)
+    np.testing.assert_allclose(hist.prior[:, 0, 0], priors, rtol=1e-12)
+    np.testing.assert_allclose(hist.posterior[:, 0, 0], posts, rtol=1e-12)
+    np.testing.assert_array_equal(hist.n_updates, [1, 1, 2, 2])
+    assert hist.n_updates.dtype == np.int64
+    ints = propagate_covariance(np.eye(1), [0, 1, 2], [[1.0]], [[0.5]])
+    assert ints.t.dtype == float
+    np.testing.assert_allclose(ints.posterior[:, 0, 0], [1.0, 1.5, 2.0], rtol=1e-15)
+    with pytest.raises(ValueError, match="must have H of shape"):
+        propagate_covariance(
+            np.eye(2),
+            [0.0, 1.0],
+            np.eye(2),
+            np.eye(2),
+            lambda k, tk: [Measurement(np.ones((1, 3)), np.eye(1))],
+        )
+    with pytest.raises(ValueError, match="t must be"):
+        propagate_covariance(np.eye(1), [[0.0, 1.0]], np.eye(1), np.eye(1))
+    np.testing.assert_array_equal(hist.t, t)
+    one = propagate_covariance(np.eye(1) * 5.0, [3.0], Phi, Q, sched)
+    assert one.posterior[0, 0, 0] == pytest.approx(1 / (1 / 5.0 + 1 / 4.0 + 1 / 4.0), rel=1e-12)
+    m = Measurement.scalar([1, 2], 3)
+    assert m.H.shape == (1, 2) and m.H.dtype == float and m.R.tolist() == [[3.0]]
+
+
+def test_covariance_history_sigma_and_rss_by_hand():
+    """Oracle: square roots written out by hand, for variances below 1 and a round-off
+    negative variance (clipped to 0), posterior and prior."""
+    post = np.array([[[0.25, 0.1], [0.1, 0.0625]], [[-1e-18, 0.0], [0.0, 0.09]]])
+    prior = np.array([[[4.0, 0.0], [0.0, 0.01]], [[0.36, 0.0], [0.0, 0.64]]])
+    h = CovarianceHistory(np.array([0.0, 1.0]), prior, post, np.array([1, 1]))
+    np.testing.assert_array_equal(h.sigma(0), [0.5, 0.0])
+    np.testing.assert_array_equal(h.sigma([0, 1]), [[0.5, 0.25], [0.0, 0.3]])
+    np.testing.assert_array_equal(h.sigma(1, posterior=False), [0.1, 0.8])
+    np.testing.assert_allclose(h.rss([0, 1]), [np.sqrt(0.3125), 0.3], rtol=1e-15)
+    np.testing.assert_allclose(h.rss([0, 1], posterior=False), [np.sqrt(4.01), 1.0], rtol=1e-15)
+    np.testing.assert_array_equal(h.rss([0]), [0.5, 0.0])
 
 
 def test_kf_rejects_bad_shapes_and_noise():
@@ -241,3 +387,49 @@ def test_state_layout():
         StateLayout.of(("a", 0))
     with pytest.raises(ValueError, match="name must be one of"):
         lay.slice("attitude")
+    assert StateLayout.of(StateBlock("a", 2), ("b", 1), name="m").table() == [("a", 2), ("b", 1)]
+    assert StateLayout.of(StateBlock("a", 2), name="m").name == "m"
+    assert StateLayout.of(("a", 1)).name == ""
+
+
+def test_state_layout_error_suggests_the_name():
+    """Oracle: the messages read by hand: a misspelt block name gets the closest known one, a
+    synonym of an INS block (whatever its case and spacing) gets the block's name, an unknown
+    name gets no suggestion."""
+    lay = StateLayout.of(("position", 3), ("velocity", 3), ("misalignment", 3), ("gyro drift", 3))
+    with pytest.raises(ValueError, match=r"got 'velocty'; did you mean 'velocity'\?$"):
+        lay.slice("velocty")
+    with pytest.raises(ValueError, match=r"got ' Gyro Bias '; did you mean 'gyro drift'\?$"):
+        lay.index(" Gyro Bias ")
+    with pytest.raises(ValueError, match=r"got 'tilt'; did you mean 'misalignment'\?$"):
+        lay.block("tilt")
+    with pytest.raises(ValueError, match=r"got 'clock offset'$"):  # a synonym of a block not here
+        lay.slice("clock offset")
+    with pytest.raises(ValueError, match=r"got 'zzz'$"):
+        lay.slice("zzz")
+    with pytest.raises(ValueError, match=r"got 3$"):  # not a name at all
+        lay.slice(3)
+
+
+def test_state_layout_concatenation_and_union():
+    """Oracle: block tables and names written out by hand. ``+`` keeps every block of both
+    (and so rejects a shared name); ``union`` appends only the other's new blocks."""
+    a = StateLayout.of(("position", 3), ("velocity", 3), name="nav")
+    b = StateLayout.of(("velocity", 3), ("clock", 2), ("gravity", 1), name="aid")
+    c = StateLayout.of(("clock", 2), ("gravity", 1), name="extra")
+    s = a + c
+    assert s.table() == [("position", 3), ("velocity", 3), ("clock", 2), ("gravity", 1)]
+    assert s.name == "nav+extra"
+    assert s.size == 9 and s.index("gravity") == 8
+    assert (c + a).table() == [("clock", 2), ("gravity", 1), ("position", 3), ("velocity", 3)]
+    with pytest.raises(ValueError, match="unique names"):
+        a + b
+    u = a.union(b)
+    assert u.table() == [("position", 3), ("velocity", 3), ("clock", 2), ("gravity", 1)]
+    assert u.name == "nav|aid"
+    assert u.slice("clock") == slice(6, 8)
+    v = b.union(a)
+    assert v.table() == [("velocity", 3), ("clock", 2), ("gravity", 1), ("position", 3)]
+    assert v.name == "aid|nav"
+    assert a.union(a).table() == a.table()
+    assert a.union(StateLayout.of(name="")).name == "nav|"

@@ -88,14 +88,22 @@ def test_steady_state_closed_form_and_matrix():
     np.testing.assert_allclose(prior, post + Q_a * Ts**2, rtol=1e-9)
 
 
-def test_gps_covariance_information_equals_joseph():
-    """Oracle: the Joseph-form covariance of the WF Eq. (16) update equals WF Eq. (17)."""
+def test_gps_update_matches_filterpy():
+    """Oracle: filterpy's KalmanFilter.update for the WF Eq. (16) update (state and covariance);
+    the information form of WF Eq. (17) must give the same covariance."""
     rng = np.random.default_rng(4)
     P = _spd(rng, 3, 1e-4)
-    H = 5.255 * np.array([[1.0, 0.0, 0.0]])
-    R = np.eye(1)
-    upd = gps_doppler_update(np.zeros(3), P, [0.3], H, R)
-    np.testing.assert_allclose(gps_doppler_covariance(P, H, R), upd.P, rtol=1e-9, atol=1e-18)
+    x0 = rng.normal(size=3)
+    H = 5.255 * np.array([[1.0, 0.2, 0.0], [0.0, -0.5, 1.0]])
+    R = np.array([[1.0, 0.3], [0.3, 2.0]])
+    y = np.array([0.3, -1.1])
+    kf = KalmanFilter(dim_x=3, dim_z=2)
+    kf.x, kf.P, kf.H, kf.R = x0.copy(), P.copy(), H, R
+    kf.update(y)
+    upd = gps_doppler_update(x0, P, y, H, R)
+    np.testing.assert_allclose(upd.x, kf.x, rtol=1e-9, atol=1e-15)
+    np.testing.assert_allclose(upd.P, kf.P, rtol=1e-9, atol=1e-18)
+    np.testing.assert_allclose(gps_doppler_covariance(P, H, R), kf.P, rtol=1e-9, atol=1e-18)
 
 
 def test_fusion_equals_stacked_gls_and_outage():
@@ -117,8 +125,15 @@ def test_fusion_equals_stacked_gls_and_outage():
     np.testing.assert_allclose(P2, P3, rtol=1e-12)
     x4, _ = federated_fusion(xs, [Ps[0], np.diag([np.inf] * 3), Ps[2]])
     np.testing.assert_allclose(x4, x3, rtol=1e-12)
+    x5, P5 = federated_fusion([xs[1], xs[0], xs[2]], [np.inf, Ps[0], Ps[2]])  # a scalar inf outage, first
+    np.testing.assert_allclose(x5, x3, rtol=1e-12)
+    np.testing.assert_allclose(P5, P3, rtol=1e-12)
     with pytest.raises(ValueError, match="covariances"):
         federated_fusion(xs[:1], [None])
+    with pytest.raises(ValueError, match="like the others"):
+        federated_fusion(xs[:2], [Ps[0], np.eye(2)])
+    with pytest.raises(TypeError, match="sequence of matrices"):
+        federated_fusion(xs, "abc")
 
 
 def test_fused_covariance_monte_carlo():

@@ -1132,8 +1132,11 @@ def circular_error_probable(P2: ArrayLike, p: float = 0.5) -> float:
     r"""Radius containing probability ``p`` of a zero-mean 2-D Gaussian with covariance ``P2``.
 
     With eigenvalues :math:`a, b` the probability inside radius :math:`r` is
-    :math:`\frac{1}{2\pi\sqrt{ab}}\int_0^{2\pi}\frac{1-e^{-r^2c(\theta)/2}}{c(\theta)}d\theta`,
-    :math:`c = \cos^2\theta/a + \sin^2\theta/b`; the radius is found by bisection.
+    :math:`\frac{1}{2\pi}\int_0^{2\pi}\left(1-e^{-r^2/(2\rho^2(\phi))}\right)d\phi`,
+    :math:`\rho^2 = a\cos^2\phi + b\sin^2\phi` (write the error as
+    :math:`(\sqrt a\,s\cos\phi, \sqrt b\,s\sin\phi)` with a Rayleigh :math:`s` and a uniform
+    :math:`\phi`); the integrand is smooth for any ellipse, a degenerate one included, so the
+    rectangle rule over :math:`\phi` converges fast; the radius is found by bisection.
 
     Parameters
     ----------
@@ -1170,14 +1173,17 @@ def circular_error_probable(P2: ArrayLike, p: float = 0.5) -> float:
         raise ValueError(f"P2 must be 2x2, got {P2.shape}")
     if not 0.0 < p < 1.0:
         raise ValueError(f"p must be in (0, 1), got {p}")
-    a, b = np.clip(np.linalg.eigvalsh(0.5 * (P2 + P2.T)), 1e-300, None)
-    th = np.linspace(0.0, 2 * np.pi, 2049)[:-1]
-    c = np.cos(th) ** 2 / a + np.sin(th) ** 2 / b
+    a, b = np.clip(np.linalg.eigvalsh(0.5 * (P2 + P2.T)), 0.0, None)
+    if b == 0.0:
+        return 0.0  # no error at all
+    phi = np.linspace(0.0, 2 * np.pi, 2049)[:-1]
+    rho2 = a * np.cos(phi) ** 2 + b * np.sin(phi) ** 2  # > 0 except along a degenerate axis
 
     def prob(r: float) -> float:
-        return float(np.mean(-np.expm1(-(r**2) * c / 2) / c) / np.sqrt(a * b))
+        arg = np.divide(r * r, 2.0 * rho2, out=np.full_like(rho2, np.inf), where=rho2 > 0.0)
+        return float(np.mean(-np.expm1(-arg)))
 
-    hi = 10.0 * np.sqrt(max(a, b))
+    hi = 10.0 * np.sqrt(b)
     return float(brentq(lambda r: prob(r) - p, 0.0, hi, xtol=1e-12 * hi))
 
 
