@@ -6,6 +6,7 @@ import math
 
 import numpy as np
 import pytest
+from _oracles import van_loan_expm
 
 from navcore.gnss import antijam as aj
 from navcore.units import G0, GPS_L1_WAVELENGTH_M, GPS_P_CHIP_RATE_HZ, MILLI_G
@@ -170,15 +171,10 @@ def _continuous_model(m: aj.NavigatorErrorModel) -> tuple[np.ndarray, np.ndarray
 def _filterpy_sigma(m: aj.NavigatorErrorModel, fix_sigma: np.ndarray, dt: float) -> float:
     """Oracle: filterpy's KalmanFilter on the continuous model discretised exactly (Van Loan)."""
     from filterpy.kalman import KalmanFilter
-    from scipy.linalg import expm
 
     F, Qc = _continuous_model(m)
-    M = np.zeros((12, 12))
-    M[:6, :6], M[:6, 6:], M[6:, 6:] = -F, Qc, F.T
-    E = expm(M * dt)
     kf = KalmanFilter(dim_x=6, dim_z=1)
-    kf.F = E[6:, 6:].T
-    kf.Q = kf.F @ E[:6, 6:]
+    kf.F, kf.Q = van_loan_expm(F, Qc, dt)
     kf.H = np.array([[1.0, 0, 0, 0, 0, 0]])
     kf.P = np.diag([m.init_pos, m.init_vel, m.init_tilt, m.accel_bias, m.gyro_bias, m.nonorthogonality]) ** 2
     for s in fix_sigma:

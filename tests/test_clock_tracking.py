@@ -139,20 +139,30 @@ def test_small_and_large_alpha_approximations_are_the_series_of_the_cubic():
     )
 
 
+def _lines_of_sight(seed, n, lift):
+    """n random unit lines of sight, biased towards the zenith by ``lift`` (seeded)."""
+    U = np.random.default_rng(seed).normal(size=(n, 3)) + np.array([0.0, 0.0, lift])
+    return U / np.linalg.norm(U, axis=1, keepdims=True)
+
+
+def _clock_split(U):
+    """Oracle side of the clock/position split, by numpy least squares: g = (F'F)^-1 F' 1 and
+    beta = 1'1 - 1'F g, the part of the clock column that the geometry cannot absorb."""
+    ones = np.ones(len(U))
+    g = np.linalg.solve(U.T @ U, U.T @ ones)
+    return g, float(ones @ ones - ones @ U @ g)
+
+
 def test_tracker_position_error_norm_variance():
     """Oracle: independent Gaussian sampling (seed 2, 10^6 draws) of the position error with
     covariance sigma^2 [(F'F)^-1 + gamma_n g g'], g = (F'F)^-1 F' 1 (the clock error enters
     the position through g and is uncorrelated with the projected noise), for Var|xi_p| at the
     first epoch, in steady state and after the drop to three satellites (sigma^2 (F3)^-1
     (F3)^-T + v_m h h', h = F3^-1 1). 20 000 tracker runs: standard error about 1 %."""
-    rng = np.random.default_rng(0)
-    U = rng.normal(size=(6, 3)) + np.array([0.0, 0.0, 3.0])
-    U /= np.linalg.norm(U, axis=1, keepdims=True)
+    U = _lines_of_sight(0, 6, 3.0)
     sigma, sigma0, N = 50.0, 10.0, 30
     mc = simulate_tracker(U, U[:3], sigma, sigma0, N, 4, 20_000, seed=7, tau_bar=3.0)
-    ones = np.ones(6)
-    g = np.linalg.solve(U.T @ U, U.T @ ones)
-    beta = float(ones @ ones - ones @ U @ g)
+    g, beta = _clock_split(U)
     h = gain_recursion(beta, sigma, sigma0, N)
     F3inv = np.linalg.inv(U[:3])
     hv = F3inv @ np.ones(3)
@@ -170,16 +180,13 @@ def test_tracker_position_error_norm_variance():
 
 def test_tracker_monte_carlo_matches_recursion():
     """Oracle: seeded Monte Carlo (20 000 runs) of the full tracker against the recursion."""
-    rng = np.random.default_rng(0)
-    U = rng.normal(size=(6, 3)) + np.array([0.0, 0.0, 3.0])
-    U /= np.linalg.norm(U, axis=1, keepdims=True)
+    U = _lines_of_sight(0, 6, 3.0)
     sigma, sigma0, N = 50.0, 10.0, 40
     mc = simulate_tracker(U, U[:3], sigma, sigma0, N, 10, 20_000, seed=11, tau_bar=1.0e9)
-    ones = np.ones(6)
-    beta = float(ones @ ones - ones @ U @ np.linalg.solve(U.T @ U, U.T @ ones))
+    g, beta = _clock_split(U)
     h = gain_recursion(beta, sigma, sigma0, N)
     tr = np.trace(np.linalg.inv(U.T @ U))
-    S = float(np.sum(np.linalg.solve(U.T @ U, U.T @ ones) ** 2))
+    S = float(g @ g)
     np.testing.assert_allclose(mc.clock_mse[: N + 1], sigma**2 * h.gamma, rtol=0.05)
     np.testing.assert_allclose(mc.position_mse[: N + 1], position_mse(sigma, tr, S, h.gamma), rtol=0.05)
     m = np.arange(1, 11)
@@ -219,14 +226,10 @@ def test_table_row_errors_against_the_tracker_monte_carlo():
     geometry terms (traces, S, beta) are computed here from F with numpy. The alpha and psi
     of the row are the cubic's coefficient and root (numpy.roots), and passing that psi
     explicitly changes nothing."""
-    rng = np.random.default_rng(4)
-    U = rng.normal(size=(5, 3)) + np.array([0.0, 0.0, 2.5])
-    U /= np.linalg.norm(U, axis=1, keepdims=True)
+    U = _lines_of_sight(4, 5, 2.5)
     F3 = U[[0, 2, 4]]
     sigma, sigma0, N = 40.0, 6.0, 80
-    ones = np.ones(5)
-    g = np.linalg.solve(U.T @ U, U.T @ ones)
-    beta = float(ones @ ones - ones @ U @ g)
+    g, beta = _clock_split(U)
     tr, S = float(np.trace(np.linalg.inv(U.T @ U))), float(g @ g)
     tr3 = float(np.trace(np.linalg.inv(F3.T @ F3)))
     S3 = float(np.ones(3) @ np.linalg.solve(F3 @ F3.T, np.ones(3)))
@@ -253,14 +256,10 @@ def test_tracker_monte_carlo_with_small_noises_is_unbiased_and_reproducible():
     so that any bias of the simulated noises or of the clock's frequency offset (of order one
     time unit) would dominate the mean square errors; 20 000 runs, 5 %. The same seed gives
     the same result."""
-    rng = np.random.default_rng(3)
-    U = rng.normal(size=(5, 3)) + np.array([0.0, 0.0, 2.5])
-    U /= np.linalg.norm(U, axis=1, keepdims=True)
+    U = _lines_of_sight(3, 5, 2.5)
     sigma, sigma0, N = 0.4, 0.3, 12
     mc = simulate_tracker(U, U[:3], sigma, sigma0, N, 3, 20_000, seed=2, tau_bar=1.0)
-    ones = np.ones(5)
-    g = np.linalg.solve(U.T @ U, U.T @ ones)
-    beta = float(ones @ ones - ones @ U @ g)
+    g, beta = _clock_split(U)
     h = gain_recursion(beta, sigma, sigma0, N)
     np.testing.assert_allclose(mc.clock_mse[: N + 1], sigma**2 * h.gamma, rtol=0.05)
     tr, S = float(np.trace(np.linalg.inv(U.T @ U))), float(g @ g)

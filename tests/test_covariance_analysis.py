@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import scipy.linalg
+from _oracles import van_loan_expm
 from filterpy.kalman import KalmanFilter
 
 from navcore.estimation.covariance_analysis import (
@@ -156,10 +157,9 @@ def test_optimal_filter_matches_filterpy():
         sources=src,
     )
     S = process_noise_psd(lay, src, speed_mps=0.0)
-    M = scipy.linalg.expm(np.block([[-F, S], [np.zeros((n, n)), F.T]]) * tr.dt)  # Van Loan (1978)
-    Phi = M[n:, n:].T
+    Phi, Qd = van_loan_expm(F, S, tr.dt)
     kf = KalmanFilter(dim_x=n, dim_z=1)
-    kf.F, kf.Q, kf.P = Phi, Phi @ M[:n, n:], P0.copy()
+    kf.F, kf.Q, kf.P = Phi, Qd, P0.copy()
     kf.H = np.zeros((1, n))
     kf.H[0, lay.index("position", 2)] = kf.H[0, lay.index("altimeter bias")] = -1.0
     kf.R = np.array([[9.0]])

@@ -6,6 +6,7 @@ import numpy as np
 import pymap3d
 import pytest
 import scipy.linalg
+from _oracles import van_loan_expm
 
 from navcore.estimation.covariance_analysis import run_covariance_analysis
 from navcore.frames import dcm_from_euler as fr_dcm
@@ -373,16 +374,6 @@ def test_psi_turns_at_the_navigation_frame_rate_when_moving():
     np.testing.assert_allclose(ev.real, 0.0, atol=1e-15)
 
 
-def _van_loan_scipy(F, Q, t):
-    """Transition and noise covariance over t by Van Loan's block exponential (scipy expm)."""
-    n = F.shape[0]
-    M = np.zeros((2 * n, 2 * n))
-    M[:n, :n], M[:n, n:], M[n:, n:] = -F, Q, F.T
-    E = scipy.linalg.expm(M * t)
-    Phi = E[n:, n:].T
-    return Phi, Phi @ E[:n, n:]
-
-
 _AIDING = ins_error_layout(
     "position",
     "velocity",
@@ -432,7 +423,7 @@ def test_aiding_states_follow_closed_forms():
     F = error_dynamics(lay, f_ned=f, C_bn=np.eye(3), v_ned=(0.0, speed, 0.0), lat=0.0, sources=src)
     Q = process_noise_psd(lay, src, speed_mps=speed)
     t = 60.0
-    Phi, Qd = _van_loan_scipy(F, Q, t)
+    Phi, Qd = van_loan_expm(F, Q, t)
     alt, grav = lay.index("altimeter bias"), lay.slice("gravity")
     beta_a, beta_g = speed / 9_000.0, speed / 40_000.0
     assert Phi[alt, alt] == pytest.approx(np.exp(-beta_a * t), rel=1e-10)

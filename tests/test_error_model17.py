@@ -11,6 +11,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import scipy.linalg
+from _oracles import van_loan_expm
 
 from navcore import frames as fr
 from navcore.estimation import van_loan
@@ -227,16 +228,6 @@ def test_heading_unobservable_without_attitude_aiding():
     assert observability_rank(F, tc_dd_observation_matrix(u, C, BASELINES_B)) == 17
 
 
-def _van_loan_scipy(F, Q, t):
-    """Transition and noise covariance over t by Van Loan's block exponential (scipy expm)."""
-    n = F.shape[0]
-    M = np.zeros((2 * n, 2 * n))
-    M[:n, :n], M[:n, n:], M[n:, n:] = -F, Q, F.T
-    E = scipy.linalg.expm(M * t)
-    Phi = E[n:, n:].T
-    return Phi, Phi @ E[:n, n:]
-
-
 def test_noise_psd_closed_form_growth():
     """Oracle: closed forms of integrated white noise (scipy Van Loan, free fall so that the
     tilt does not feed the velocity, non-level attitude): white accelerometer noise q_a and an
@@ -247,7 +238,7 @@ def test_noise_psd_closed_form_growth():
     Q = noise_psd_17(np.sqrt(qa), np.sqrt(qg), np.sqrt(qba), np.sqrt(qbg), np.sqrt(qcd), np.sqrt(qcb))
     F = error_dynamics_17(C_TRUE, [0.0, 0.0, 0.0])
     t = 30.0
-    _, Qd = _van_loan_scipy(F, Q, t)
+    _, Qd = van_loan_expm(F, Q, t)
     d = np.diag(Qd)
     np.testing.assert_allclose(d[L.slice("velocity")], qa * t + qba * t**3 / 3, rtol=1e-10)
     np.testing.assert_allclose(d[L.slice("position")], qa * t**3 / 3 + qba * t**5 / 20, rtol=1e-10)

@@ -37,6 +37,26 @@ def _random_spd(rng, n, scale=1.0):
     return scale * (A @ A.T + n * np.eye(n))
 
 
+def _step_beside_filterpy(rng, x, P, F, Q, H, R, *, steps, rtol, validate):
+    """Run kf_predict/kf_update and filterpy's KalmanFilter side by side on the same random
+    measurements; state, covariance, gain, innovation and its covariance agree at every step
+    (and the checked path keeps P exactly symmetric)."""
+    m, n = H.shape
+    kf = KalmanFilter(dim_x=n, dim_z=m)
+    kf.x, kf.P, kf.F, kf.Q, kf.H, kf.R = x.copy(), P.copy(), F, Q, H, R
+    for _ in range(steps):
+        z = rng.normal(size=m)
+        x, P = kf_predict(x, P, F, Q, validate=validate)
+        res = kf_update(x, P, z, H, R, validate=validate)
+        x, P = res.x, res.P
+        kf.predict()
+        kf.update(z)
+        for ours, theirs in ((x, kf.x), (P, kf.P), (res.K, kf.K), (res.innovation, kf.y), (res.S, kf.S)):
+            np.testing.assert_allclose(ours, theirs, rtol=rtol, atol=1e-12)
+        if validate:
+            assert np.array_equal(P, P.T)
+
+
 def test_kalman_filter_matches_filterpy():
     """Oracle: filterpy.kalman.KalmanFilter (predict/update) over 50 steps of a 4-state model."""
     rng = np.random.default_rng(7)
@@ -47,21 +67,7 @@ def test_kalman_filter_matches_filterpy():
     R = _random_spd(rng, m, 0.1)
     x = np.zeros(n)
     P = _random_spd(rng, n)
-    kf = KalmanFilter(dim_x=n, dim_z=m)
-    kf.x, kf.P, kf.F, kf.Q, kf.H, kf.R = x.copy(), P.copy(), F, Q, H, R
-    for _ in range(50):
-        z = rng.normal(size=m)
-        x, P = kf_predict(x, P, F, Q)
-        res = kf_update(x, P, z, H, R)
-        x, P = res.x, res.P
-        kf.predict()
-        kf.update(z)
-        np.testing.assert_allclose(x, kf.x, rtol=1e-9, atol=1e-12)
-        np.testing.assert_allclose(P, kf.P, rtol=1e-9, atol=1e-12)
-        np.testing.assert_allclose(res.K, kf.K, rtol=1e-9, atol=1e-12)
-        np.testing.assert_allclose(res.innovation, kf.y, rtol=1e-9, atol=1e-12)
-        np.testing.assert_allclose(res.S, kf.S, rtol=1e-9, atol=1e-12)
-        assert np.array_equal(P, P.T)
+    _step_beside_filterpy(rng, x, P, F, Q, H, R, steps=50, rtol=1e-9, validate=True)
 
 
 def test_kalman_fast_path_matches_filterpy():
@@ -74,20 +80,7 @@ def test_kalman_fast_path_matches_filterpy():
     H = rng.normal(size=(m, n))
     R = _random_spd(rng, m, 0.3)
     x, P = rng.normal(size=n), _random_spd(rng, n)
-    kf = KalmanFilter(dim_x=n, dim_z=m)
-    kf.x, kf.P, kf.F, kf.Q, kf.H, kf.R = x.copy(), P.copy(), F, Q, H, R
-    for _ in range(3):
-        z = rng.normal(size=m)
-        x, P = kf_predict(x, P, F, Q, validate=False)
-        res = kf_update(x, P, z, H, R, validate=False)
-        x, P = res.x, res.P
-        kf.predict()
-        kf.update(z)
-        np.testing.assert_allclose(x, kf.x, rtol=1e-10, atol=1e-12)
-        np.testing.assert_allclose(P, kf.P, rtol=1e-10, atol=1e-12)
-        np.testing.assert_allclose(res.K, kf.K, rtol=1e-10, atol=1e-12)
-        np.testing.assert_allclose(res.innovation, kf.y, rtol=1e-10, atol=1e-12)
-        np.testing.assert_allclose(res.S, kf.S, rtol=1e-10, atol=1e-12)
+    _step_beside_filterpy(rng, x, P, F, Q, H, R, steps=3, rtol=1e-10, validate=False)
 
 
 def test_information_update_equals_covariance_update():
