@@ -43,7 +43,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
-from navcore.ledger.inputs import declaring, overriding, recording
+from navcore.ledger.inputs import _label_and_unit, declaring, overriding, recording
 
 __all__ = [
     "ERRATUM_KINDS",
@@ -705,7 +705,7 @@ class Evaluation:
         if text and self.alternatives and not text.endswith((".", "!", "?", ")")):
             text += "."
         for name, alt, value in self.alternatives:
-            text += f" Other reading of the {_input_words(name)} ({_plain(alt)}): {_plain(value)}."
+            text += f" Other reading of the {_label_and_unit(name)[0]} ({_plain(alt)}): {_plain(value)}."
         return text.strip()
 
     def as_json(self) -> dict[str, Any]:
@@ -730,17 +730,6 @@ class Evaluation:
             "expected_status": c.expected_status,
             "note": self.note(),
         }
-
-
-def _input_words(name: str) -> str:
-    """An input's quantity in words (its registry name if it has none)."""
-    from navcore.ledger.inputs import get_input
-
-    try:
-        quantity = get_input(name).quantity
-    except (KeyError, ValueError):
-        quantity = ""
-    return quantity or name.rsplit(".", 1)[-1].replace("_", " ")
 
 
 def _plain(value: Any) -> str:

@@ -489,6 +489,18 @@ def get_input(name: str) -> Input:
         raise ValueError(f"name {name!r} is not a registered input") from None
 
 
+def _label_and_unit(name: str) -> tuple[str, str]:
+    """How a claim's text names an input: its quantity in words (else the last part of its
+    name, spaced) and its unit ("" for none or a pure number); unregistered names too."""
+    fallback = name.rsplit(".", 1)[-1].replace("_", " ")
+    try:
+        inp = get_input(name)
+    except (KeyError, ValueError):
+        return fallback, ""
+    unit = "" if inp.unit in ("", "1", "-", "statement") else inp.unit
+    return inp.quantity or fallback, unit
+
+
 @contextlib.contextmanager
 def recording() -> Iterator[dict[str, Input]]:
     """Record every input read inside the block into the yielded dict (name -> Input).

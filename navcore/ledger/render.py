@@ -17,6 +17,7 @@ from collections.abc import Iterable, Sequence
 from typing import Any
 
 from navcore.ledger.core import STATUSES, Erratum, Evaluation
+from navcore.ledger.inputs import _label_and_unit
 from navcore.ledger.registry import counts, errata, evaluations
 
 __all__ = [
@@ -543,41 +544,21 @@ def _tolerance_text(e: Evaluation) -> str:
     return f"{size}: {reason}" if reason else size
 
 
-def _input_label(name: str) -> str:
-    try:
-        from navcore.ledger.inputs import get_input
-
-        inp = get_input(name)
-        return inp.quantity or name.rsplit(".", 1)[-1].replace("_", " ")
-    except (ValueError, KeyError, ImportError):
-        return name.rsplit(".", 1)[-1].replace("_", " ")
-
-
-def _input_unit(name: str) -> str:
-    """The unit an input's value is in (empty if it has none or is not registered)."""
-    try:
-        from navcore.ledger.inputs import get_input
-
-        unit = get_input(name).unit
-    except (ValueError, KeyError, ImportError):
-        return ""
-    return "" if unit in ("", "1", "-", "statement") else unit
-
-
 def _inputs_text(e: Evaluation) -> str:
     """The inputs the computation read: name, value, where it comes from."""
     parts = []
     for i in e.inputs:
         value = i.get("value")
+        label, unit = _label_and_unit(i["name"])
         shown = format_value(value) if isinstance(value, int | float) else str(value)
         if len(shown) > 40:
             shown = shown[:39] + "…"
-        elif isinstance(value, int | float) and not isinstance(value, bool) and _input_unit(i["name"]):
-            shown = _plain_with_unit(shown, _input_unit(i["name"]))
+        elif isinstance(value, int | float) and not isinstance(value, bool):
+            shown = _plain_with_unit(shown, unit)
         where = i.get("provenance", "")
         if i.get("locator"):
             where += f", {i['locator']}"
-        parts.append(f"{_input_label(i['name'])} = {shown} ({where})")
+        parts.append(f"{label} = {shown} ({where})")
     return "; ".join(parts)
 
 
