@@ -385,6 +385,46 @@ def test_state_layout():
     assert StateLayout.of(("a", 1)).name == ""
 
 
+def test_state_layout_bad_input_names_the_argument():
+    """Oracle: the constraints as the docstrings state them, probed on both sides of each
+    bound: a component index lies in [0, block size); a block has a non-empty string name
+    and an integer size >= 1 (not a bool, not a float); an INS block name is a string among
+    the known ones, and the message names the caller's argument."""
+    from navcore.estimation.layout import InsBlock, ins_block_name
+
+    lay = StateLayout.of(("position", 3), ("clock", 2))
+    assert lay.index("clock", 0) == 3 and lay.index("clock", 1) == 4
+    for bad in (2, -1):
+        with pytest.raises(ValueError, match=r"component must be in \[0, 2\), got " + str(bad)):
+            lay.index("clock", bad)
+    assert StateBlock("a", 1).size == 1
+    with pytest.raises(ValueError, match=r"StateBlock\.name must be a non-empty string"):
+        StateBlock("", 1)
+    for name in (3, None):
+        with pytest.raises(TypeError, match=r"^name must be of type str"):
+            StateBlock(name, 1)
+    for size in (0, -2):
+        with pytest.raises(ValueError, match=r"StateBlock\.size must be an integer >= 1"):
+            StateBlock("a", size)
+    for size in (True, 1.0, "2"):
+        with pytest.raises(TypeError, match=r"^size must be an integer"):
+            StateBlock("a", size)
+    assert ins_block_name("gyro drift") is InsBlock.GYRO_DRIFT
+    assert ins_block_name(InsBlock.GYRO_DRIFT) is InsBlock.GYRO_DRIFT
+    with pytest.raises(TypeError, match=r"^name must be a string \(a block name\), got 3$"):
+        ins_block_name(3)
+    with pytest.raises(ValueError, match=r"^name must be among \['position'.*got 'gyro bias'; did you mean"):
+        ins_block_name("gyro bias")
+    with pytest.raises(ValueError, match=r"^blocks must be among"):
+        ins_block_name("tilt angle", argument="blocks")
+    with pytest.raises(TypeError, match=r"^blocks must be a string"):
+        ins_block_name(1.5, argument="blocks")
+    from navcore.inertial.error_dynamics import ins_error_layout
+
+    with pytest.raises(TypeError, match=r"^names must be a string"):  # the caller's own argument
+        ins_error_layout("position", 3)
+
+
 def test_state_layout_error_suggests_the_name():
     """Oracle: the messages read by hand: a misspelt block name gets the closest known one, a
     synonym of an INS block (whatever its case and spacing) gets the block's name, an unknown
