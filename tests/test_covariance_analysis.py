@@ -255,6 +255,11 @@ def test_lock_table_and_tightly_coupled_rows():
     assert carrier[:, 0].tolist() == [True] * 3 + [False] * 7
     assert code[:, 0].tolist() == [True] * 5 + [False] * 3 + [True] * 2
     assert code[:, 1].all()
+    # simultaneous events apply in the order listed: the last one sets the state
+    for last in (True, False):
+        same_time = [(4.0, 1, "carrier", not last), (4.0, 1, "carrier", last)]
+        _, c = lock_table(t, 2, same_time, start_locked=False)
+        assert c[:, 1].tolist() == [False] * 4 + [last] * 6
     lay = ins_error_layout(
         "position", "velocity", "misalignment", "clock bias", "clock drift", "pseudorange bias", channels=2
     )

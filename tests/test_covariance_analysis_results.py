@@ -167,6 +167,24 @@ def test_best_geometry_channels_is_brute_force_minimum(lat, lon, heading, raan0,
     assert got.dtype == np.int64
 
 
+def test_best_geometry_channels_averages_over_the_documented_samples():
+    """Oracle: the brute-force PDOP search at the 12 samples the docstring names (0, 2, ...,
+    22 of 23). In this 44-min flight at 55 deg N the best four satellites depend on which
+    samples are averaged: 11 or 13 samples, or 12 that stop one short of the end, choose
+    other satellites (checked here), so the test tells the documented choice apart."""
+    const = nominal_gps_constellation(raan0_deg=13.0)
+    tr = straight_and_level(
+        2640.0, speed=220.0, heading=60 * DEG, dt=120.0, lat0=55 * DEG, lon0=20 * DEG, h0=9000.0
+    )
+    assert len(tr) == 23
+    want, vals, _ = _brute_force_pdop_choice(tr, const, 4, 10.0, range(0, 23, 2))
+    assert vals[1] - vals[0] > 1e-3 * vals[0]  # not a tie
+    for count, last in ((11, 22), (13, 22), (12, 21)):
+        other = np.linspace(0, last, count).astype(int)
+        assert not np.array_equal(_brute_force_pdop_choice(tr, const, 4, 10.0, other)[0], want)
+    np.testing.assert_array_equal(best_geometry_channels(tr, const), want)
+
+
 def test_best_geometry_channels_mask_and_degenerate_geometry():
     """Oracle: counting by hand. Raising the mask removes satellites until fewer than n stay
     visible (ValueError); a constellation whose satellites 0 and 1 are the same orbit makes

@@ -710,7 +710,9 @@ def lock_table(
     n_channels : int
         Number of receiver channels.
     events : sequence of ``(time, channel, "code" | "carrier", locked)``
-        From ``time`` (s) on, the channel's code or carrier is (un)locked.
+        From ``time`` (s) on, the channel's code or carrier is (un)locked. Events apply in
+        time order, whatever their order in the list; events at the same time apply in the
+        order listed, so the last of them sets the state.
     start_locked : bool, default True
         Lock state of every channel before its first event.
 
@@ -1193,7 +1195,8 @@ def best_geometry_channels(
     """The ``n`` satellites with the smallest mean PDOP above ``mask_deg`` for the whole trajectory.
 
     Brute force over the combinations of the satellites that stay visible; the PDOP is
-    averaged over 12 epochs spread along the trajectory.
+    averaged over 12 samples spread evenly from the trajectory's first sample to its last
+    (indices ``linspace(0, N - 1, 12)`` rounded down).
 
     Parameters
     ----------
