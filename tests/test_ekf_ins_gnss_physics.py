@@ -325,7 +325,7 @@ def test_levelling_with_noisy_sensors():
     term the angle random walk); filter 1-sigma and the RMS of 3000 runs. The filter's modelled
     gyro-bias random walk adds q t^3 / 3."""
     imu = ImuSpec("test", accel_bias=0.01, accel_random_walk=0.05, gyro_bias=1e-4, gyro_random_walk=1e-3)
-    T0, hs, sv, V = 60.0, 5e-4, 0.02, 100.0
+    T0, hs, sv, V = 2.0, 5e-4, 0.02, 100.0  # a short averaging: its gyro-bias error dominates
     sc = _scenario(
         imu,
         velocity=[80.0, 60.0, 0.0],
@@ -345,6 +345,9 @@ def test_levelling_with_noisy_sensors():
     np.testing.assert_allclose(r.att_sigma[:, 2], np.sqrt(heading**2 + 1e-4**2 * r.t**3 / 3), rtol=1e-3)
     np.testing.assert_allclose(r.rms("att_err")[0, :2], tilt, rtol=SE)
     np.testing.assert_allclose(r.rms("att_err")[:, 2], heading, rtol=SE)
+    # every error source is zero-mean and independent from run to run, so the heading error
+    # averages out over the runs: within 4.5 standard errors of 0 at every epoch
+    assert np.all(np.abs(np.mean(r.att_err[:, :, 2], axis=0)) < 4.5 * heading / np.sqrt(RUNS))
 
 
 def _check_modes_share_the_random_numbers(aided):
@@ -381,6 +384,29 @@ def test_unaligned_gyro_bias_tilts_and_accelerates():
     np.testing.assert_allclose(r.rms("vel_err")[1:, :2], vel[1:, :2], rtol=SE)
     np.testing.assert_allclose(r.rms("pos_err")[1:, :2], pos[1:, :2], rtol=SE)
     assert np.abs(r.vel_err[..., 2]).max() < 1e-2 * np.abs(r.vel_err[..., :2]).max()  # g (1 - cos tilt)
+
+
+def test_accelerometer_scale_factor_multiplies_the_specific_force():
+    """Oracle: a scale-factor error s scales the sensed specific force, f_sensed = (1 + s) f,
+    with s ~ N(0, sigma_s^2) per axis and run. Level and at rest but for the speed, the only
+    specific force is -g along the down axis, so the down velocity error after t is -g s t in
+    each run: its normalised values must be a sample of N(0, 1) (Kolmogorov-Smirnov, scipy),
+    and its mean 0 within 4.5 standard errors. A large sigma_s = 0.15 makes the law of s tell
+    (1 + s) f from f / (1 + s), whose mean is sigma_s^2 off and whose law is skewed."""
+    from scipy import stats
+
+    sigma_s = 0.15
+    sc = _scenario(
+        ImuSpec("test", accel_scale_factor=sigma_s),
+        velocity=[50.0, 0.0, 0.0],
+        attitude=[0.0, 0.0, 0.0],
+        duration=1.0,
+    )
+    r = run_monte_carlo(sc, "ins", RUNS, 23, initialise=False)
+    z = r.vel_err[:, 1, 2] / (-G * 1.0 * sigma_s)  # s / sigma_s in each run
+    np.testing.assert_allclose(r.vel_err[:, 1, :2], 0.0, atol=1e-9)
+    assert abs(np.mean(z)) < 4.5 / np.sqrt(RUNS)
+    assert stats.kstest(z, "norm").pvalue > 1e-4
 
 
 def test_accelerometer_white_noise_is_a_velocity_random_walk():
