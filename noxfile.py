@@ -189,12 +189,19 @@ def ledger(session: nox.Session) -> None:
     """Print the ledger and write _build/ledger.json; fails if any claim fails its check.
 
     Every claim is computed afresh (the on-disk evaluation cache is off), so two runs of this
-    session are an honest determinism check.
+    session are an honest determinism check. ``nox -s ledger -- --twice`` is that check in
+    one session (CI's gate): two fresh processes evaluate the ledger side by side, one per
+    core, and their JSON exports must be byte-identical (tools/ledger_twice.py).
     """
     _install(session)
     env = {"NAVCORE_CACHE": "off", "NAVCORE_NO_DISK_CACHE": "1"}
     out = ROOT / "_build" / "ledger.json"
-    session.run("python", "-m", "navcore", "ledger", "--json-out", str(out), *session.posargs, env=env)
+    args = list(session.posargs)
+    if "--twice" in args:
+        args.remove("--twice")
+        session.run("python", "tools/ledger_twice.py", str(out), *args, env=env)
+    else:
+        session.run("python", "-m", "navcore", "ledger", "--json-out", str(out), *args, env=env)
     session.log(f"ledger JSON: {out}")
 
 
