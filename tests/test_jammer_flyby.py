@@ -299,8 +299,12 @@ def test_geometry_helpers_contracts():
     assert isinstance(r, float) and r == pytest.approx(math.dist(p[0], e), rel=1e-15)
     np.testing.assert_allclose(jg.slant_range_m(p, e), [math.dist(x, e) for x in p], rtol=1e-15)
     assert isinstance(jg.free_space_loss_db(1e4, LAM), float)
-    with pytest.raises(ValueError, match="emitter_ned_m shape"):
+    # each argument's shape is checked on its own, the other one being right
+    with pytest.raises(ValueError, match=r"^emitter_ned_m must have shape \(3,\), got \(2,\)$"):
         jg.slant_range_m(p, e[:2])
+    for bad in (p[:, :2], 5.0):
+        with pytest.raises(ValueError, match=r"^position_ned_m must have shape \(\.\.\., 3\)"):
+            jg.slant_range_m(bad, e)
     assert jg.received_jammer_power_dbw(30.0, 1e4, LAM) == pytest.approx(
         30.0 + 10 * np.log10((LAM / (4 * np.pi * 1e4)) ** 2), abs=1e-12
     )

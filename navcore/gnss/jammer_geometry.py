@@ -169,8 +169,10 @@ def slant_range_m(position_ned_m: ArrayLike, emitter_ned_m: ArrayLike) -> Array 
     """
     p = as_finite_array("position_ned_m", position_ned_m)
     e = as_finite_array("emitter_ned_m", emitter_ned_m)
-    if p.shape[-1] != 3 or e.shape != (3,):
-        raise ValueError("position_ned_m must have shape (..., 3) and emitter_ned_m shape (3,)")
+    if p.shape[-1:] != (3,):
+        raise ValueError(f"position_ned_m must have shape (..., 3), got {p.shape}")
+    if e.shape != (3,):
+        raise ValueError(f"emitter_ned_m must have shape (3,), got {e.shape}")
     return _out(np.linalg.norm(p - e, axis=-1))
 
 
