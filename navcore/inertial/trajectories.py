@@ -241,7 +241,11 @@ def fly(
     w = np.stack([Om[:, 2, 1] - Om[:, 1, 2], Om[:, 0, 2] - Om[:, 2, 0], Om[:, 1, 0] - Om[:, 0, 1]], -1) / 2
     h = h0 - pos[:, 2]
     lat = lat0 + pos[:, 0] / (WGS84_A + h)
-    lon = lon0 + pos[:, 1] / ((WGS84_A + h) * np.cos(lat))
+    # the longitude rate v_E / ((a + h) cos lat), integrated along the path (trapezoid rule,
+    # as the position): dividing the east distance by the current cos(lat) would hold only
+    # for a flight along a parallel
+    lon_rate = v[:, 1] / ((WGS84_A + h) * np.cos(lat))
+    lon = lon0 + np.concatenate([[0.0], np.cumsum(0.5 * (lon_rate[1:] + lon_rate[:-1]) * dt)])
     if np.any(h < -500.0):
         raise ValueError("segments must not fly the vehicle below -500 m")
     return Trajectory(t, lat, lon, h, pos, v, f, C, w)
