@@ -322,8 +322,9 @@ def test_levelling_with_noisy_sensors():
     """Oracle: the averaging of white sensor noise over the initialisation time T: the tilt
     variance is (b^2 + N_a^2 / T) / g^2; the gyro-bias estimate errs by N_g / sqrt(T), so the
     heading variance grows as crab^2 + (sigma_v / V)^2 + (N_g^2 / T) t^2 + N_g^2 t (the last
-    term the angle random walk); filter 1-sigma and the RMS of 3000 runs. The filter's modelled
-    gyro-bias random walk adds q t^3 / 3."""
+    term the angle random walk); the vertical velocity variance as sigma_v^2 + (N_a^2 / T) t^2
+    + N_a^2 t; filter 1-sigma and the RMS of 3000 runs. The filter's modelled gyro-bias random
+    walk adds q t^3 / 3."""
     imu = ImuSpec("test", accel_bias=0.01, accel_random_walk=0.05, gyro_bias=1e-4, gyro_random_walk=1e-3)
     T0, hs, sv, V = 2.0, 5e-4, 0.02, 100.0  # a short averaging: its gyro-bias error dominates
     sc = _scenario(
@@ -345,6 +346,11 @@ def test_levelling_with_noisy_sensors():
     np.testing.assert_allclose(r.att_sigma[:, 2], np.sqrt(heading**2 + 1e-4**2 * r.t**3 / 3), rtol=1e-3)
     np.testing.assert_allclose(r.rms("att_err")[0, :2], tilt, rtol=SE)
     np.testing.assert_allclose(r.rms("att_err")[:, 2], heading, rtol=SE)
+    # vertical: the bias calibration errs by N_a / sqrt(T) (a velocity error growing as t)
+    # and the white noise integrates to a random walk N_a^2 t, on top of the initial sigma_v
+    vz = np.sqrt(sv**2 + (0.05**2 / T0) * r.t**2 + 0.05**2 * r.t)
+    np.testing.assert_allclose(r.vel_sigma[:, 2], vz, rtol=1e-5)
+    np.testing.assert_allclose(r.rms("vel_err")[:, 2], vz, rtol=SE)
     # every error source is zero-mean and independent from run to run, so the heading error
     # averages out over the runs: within 4.5 standard errors of 0 at every epoch
     assert np.all(np.abs(np.mean(r.att_err[:, :, 2], axis=0)) < 4.5 * heading / np.sqrt(RUNS))

@@ -367,6 +367,44 @@ def test_kf_rejects_bad_shapes_and_noise():
         propagate_covariance(np.eye(1), [0.0, 0.0], np.eye(1), np.eye(1))
 
 
+@pytest.mark.parametrize(
+    ("call", "message"),
+    [
+        (
+            lambda x, I: kf_predict(x[:, None], I, I, I),
+            r"x must be a 1-dimensional array, got shape \(2, 1\)",
+        ),
+        (lambda x, I: kf_predict(x, np.eye(3), I, I), r"P must have shape \(2, 2\), got \(3, 3\)"),
+        (lambda x, I: kf_predict(x, I, np.eye(3), I), r"Phi must have shape \(2, 2\), got \(3, 3\)"),
+        (lambda x, I: kf_predict(x, I, I, np.eye(3)), r"Q must have shape \(2, 2\), got \(3, 3\)"),
+        (lambda x, I: kf_update(x[:, None], I, [1.0], [[1.0, 0.0]], [[1.0]]), r"x must be a 1-dimensional"),
+        (lambda x, I: kf_update(x, np.eye(3), [1.0], [[1.0, 0.0]], [[1.0]]), r"P must have shape \(2, 2\)"),
+        (lambda x, I: kf_update(x, I, [1.0], [[1.0, 0.0]], I), r"R must have shape \(1, 1\), got \(2, 2\)"),
+        (
+            lambda x, I: information_update(x[:, None], I, [1.0], [[1.0, 0.0]], [[1.0]]),
+            r"y must be a 1-dimensional",
+        ),
+        (
+            lambda x, I: information_update(x, np.eye(3), [1.0], [[1.0, 0.0]], [[1.0]]),
+            r"Y must have shape \(2, 2\)",
+        ),
+        (
+            lambda x, I: information_update(x, I, [1.0], [[1.0, 0.0, 0.0]], [[1.0]]),
+            r"H must have shape \(1, 2\)",
+        ),
+        (lambda x, I: information_update(x, I, [1.0], [[1.0, 0.0]], I), r"R must have shape \(1, 1\)"),
+        (lambda x, I: information_from_covariance(x, np.diag([1.0, 0.0])), r"P must be positive definite"),
+        (lambda x, I: covariance_from_information(x, np.diag([1.0, 0.0])), r"Y must be positive definite"),
+    ],
+)
+def test_kalman_forms_name_the_argument_of_the_wrong_shape(call, message):
+    """Oracle: the shapes the docstrings state (x: (n,), P, Phi, Q, Y: (n, n), H: (m, n),
+    R: (m, m)) and the definiteness an inverse needs, each broken alone with the default
+    checks on: the message names the argument as the caller spelled it, and its shape."""
+    with pytest.raises(ValueError, match="^" + message):
+        call(np.zeros(2), np.eye(2))
+
+
 def test_state_layout():
     lay = StateLayout.of(("position", 3), ("velocity", 3), ("clock", 2))
     assert lay.size == 8

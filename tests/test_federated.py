@@ -134,6 +134,9 @@ def test_fusion_equals_stacked_gls_and_outage():
         federated_fusion(xs[:2], [Ps[0], np.eye(2)])
     with pytest.raises(TypeError, match="sequence of matrices"):
         federated_fusion(xs, "abc")
+    # a singular covariance has no information form: the message names the list entry
+    with pytest.raises(ValueError, match=r"^covariances\[1\] must be positive definite"):
+        federated_fusion(xs, [Ps[0], np.diag([1.0, 1.0, 0.0]), Ps[2]])
 
 
 def test_fused_covariance_monte_carlo():

@@ -453,8 +453,11 @@ def _sigma(value: float | None) -> float:
     return 0.0 if value is None else float(value)
 
 
-def _initial_covariance(sc: Scenario, C0: Array, initialise: bool) -> Array:
-    """P0 of the error state, with the tilt/accel-bias correlation that levelling creates."""
+def _initial_covariance(sc: Scenario, C0: Array, init_time: float | None) -> Array:
+    """P0 of the error state, with the tilt/accel-bias correlation that levelling creates.
+
+    ``init_time`` is the levelling and gyro-calibration time, s, or ``None`` for a run that
+    starts from the nominal attitude without initialisation."""
     P = np.zeros((17, 17))
     P[_P, _P] = sc.pos0_sigma**2 * np.eye(3)
     P[_V, _V] = sc.vel0_sigma**2 * np.eye(3)
@@ -462,8 +465,8 @@ def _initial_covariance(sc: Scenario, C0: Array, initialise: bool) -> Array:
     P[_CD, _CD] = sc.clock_drift_sigma**2
     imu = sc.imu
     speed = float(np.hypot(sc.velocity_ned[0], sc.velocity_ned[1]))
-    if initialise:
-        T = _needed(sc.init_time, "sc.init_time", "an initialising run")
+    if init_time is not None:
+        T = init_time
         # levelling makes the computed specific force exactly vertical: beta = R dba (n-frame)
         # and the tilt satisfy dpsi_n = beta_e / g, dpsi_e = -beta_n / g.
         s_h2 = imu.accel_bias**2 + imu.accel_random_walk**2 / T
@@ -593,7 +596,8 @@ def run_monte_carlo(
     q_hat = np.stack([quat_from_dcm(C) for C in C_hat0])
     nav = NavState(pos_hat, v_meas0.copy(), q_hat)
     clock_hat = np.zeros((N, 2))
-    P = np.tile(_initial_covariance(sc, dcm_from_euler(roll0, pitch0, yaw0), initialise), (N, 1, 1))
+    P0 = _initial_covariance(sc, dcm_from_euler(roll0, pitch0, yaw0), Tinit if initialise else None)
+    P = np.tile(P0, (N, 1, 1))
     GQGt = _gqgt(sc)
     g = sc.gnss
     k2pi = 2 * np.pi / GPS_L1_WAVELENGTH_M
