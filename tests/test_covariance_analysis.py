@@ -244,6 +244,17 @@ def test_cep_of_elongated_ellipses(ratio):
         want = brentq(lambda r: _circle_probability(P, r) - 0.5, 1e-6, 20.0, xtol=1e-15)
         assert got == pytest.approx(want, rel=1e-9)
     assert circular_error_probable(np.zeros((2, 2))) == 0.0
+    # dimensional analysis: scaling the covariance by k scales the CEP by sqrt(k), to the last
+    # digits, from a micrometre-sized error (k = 1e-14) to a kilometre-sized one (k = 1e6);
+    # p outside (0, 1) is rejected, naming it
+    P = np.array([[1.0, 0.3], [0.3, 0.5]])
+    for k in (1e-20, 1e-14, 1e6):
+        assert circular_error_probable(k * P) == pytest.approx(
+            np.sqrt(k) * circular_error_probable(P), rel=1e-12
+        )
+    for p in (0.0, 1.0):
+        with pytest.raises(ValueError, match=r"^p must be in \(0, 1\)"):
+            circular_error_probable(P, p=p)
 
 
 def test_lock_table_and_tightly_coupled_rows():

@@ -393,13 +393,22 @@ def test_kf_rejects_bad_shapes_and_noise():
             r"H must have shape \(1, 2\)",
         ),
         (lambda x, I: information_update(x, I, [1.0], [[1.0, 0.0]], I), r"R must have shape \(1, 1\)"),
+        (
+            lambda x, I: information_update(x, I, [[1.0]], [[1.0, 0.0]], [[1.0]]),
+            r"z must be a vector, got shape \(1, 1\)",
+        ),
+        (
+            lambda x, I: kf_update(x, I, [[1.0]], [[1.0, 0.0]], [[1.0]]),
+            r"z must be a vector, got shape \(1, 1\)",
+        ),
+        (lambda x, I: van_loan(I, np.eye(3), 1.0), r"GQGt must be 2x2, got shape \(3, 3\)"),
         (lambda x, I: information_from_covariance(x, np.diag([1.0, 0.0])), r"P must be positive definite"),
         (lambda x, I: covariance_from_information(x, np.diag([1.0, 0.0])), r"Y must be positive definite"),
     ],
 )
 def test_kalman_forms_name_the_argument_of_the_wrong_shape(call, message):
-    """Oracle: the shapes the docstrings state (x: (n,), P, Phi, Q, Y: (n, n), H: (m, n),
-    R: (m, m)) and the definiteness an inverse needs, each broken alone with the default
+    """Oracle: the shapes the docstrings state (x: (n,), P, Phi, Q, Y, GQGt: (n, n), H: (m, n),
+    R: (m, m), z: (m,)) and the definiteness an inverse needs, each broken alone with the default
     checks on: the message names the argument as the caller spelled it, and its shape."""
     with pytest.raises(ValueError, match="^" + message):
         call(np.zeros(2), np.eye(2))

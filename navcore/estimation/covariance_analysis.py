@@ -1173,8 +1173,6 @@ def circular_error_probable(P2: ArrayLike, p: float = 0.5) -> float:
     P2 = np.asarray(P2, dtype=float)
     if P2.shape != (2, 2):
         raise ValueError(f"P2 must be 2x2, got {P2.shape}")
-    if not 0.0 < p < 1.0:
-        raise ValueError(f"p must be in (0, 1), got {p}")
     a, b = np.clip(np.linalg.eigvalsh(0.5 * (P2 + P2.T)), 0.0, None)
     if b == 0.0:
         return 0.0  # no error at all

@@ -139,9 +139,9 @@ def kf_predict(
            [1. , 1.1]])
     """
     if not validate:  # float ndarrays checked by the caller; np.dot is the cheapest product
-        xa, Pa, F, Qa = cast(Array, x), cast(Array, P), cast(Array, Phi), cast(Array, Q)
+        F = np.asarray(Phi)  # Phi is an ndarray already: no copy
         # P- is symmetric up to round-off here; kf_update symmetrizes what it returns
-        return np.dot(F, xa), np.dot(np.dot(F, Pa), F.T) + Qa
+        return np.dot(F, x), np.dot(np.dot(F, P), F.T) + Q
     x = as_finite_array("x", x, ndim=1)
     n = x.size
     P = _matrix("P", P, (n, n))
@@ -222,27 +222,26 @@ def kf_update(
     (array([1., 0.]), array([0.5, 0. ]))
     """
     if not validate:  # float ndarrays checked by the caller
-        xa, Pa, za = cast(Array, x), cast(Array, P), cast(Array, z)
-        Ha, Ra = cast(Array, H), cast(Array, R)
-        PHt = np.dot(Pa, Ha.T)
-        S = np.dot(Ha, PHt) + Ra
+        Ha = np.asarray(H)  # H is an ndarray already: no copy
+        PHt = np.dot(P, Ha.T)
+        S = np.dot(Ha, PHt) + R
         # K' = S^-1 (P H')' by Cholesky (LAPACK posv: S symmetric positive definite)
         _, Kt, info = lapack.dposv(S, PHt.T)
         if info != 0:
             raise ValueError("the innovation covariance H P H' + R is not positive definite")
         K: Array = Kt.T
-        innovation = za - np.dot(Ha, xa)
+        innovation = np.subtract(z, np.dot(Ha, x))
         I_KH = -np.dot(K, Ha)
         I_KH.flat[:: I_KH.shape[0] + 1] += 1.0  # I - K H
-        P_post = np.dot(np.dot(I_KH, Pa), I_KH.T) + np.dot(np.dot(K, Ra), K.T)
+        P_post = np.dot(np.dot(I_KH, P), I_KH.T) + np.dot(np.dot(K, R), K.T)
         P_post += P_post.T  # Joseph form, made exactly symmetric
         P_post *= 0.5
-        return KalmanUpdate(xa + np.dot(K, innovation), P_post, K, innovation, S)
+        return KalmanUpdate(np.add(x, np.dot(K, innovation)), P_post, K, innovation, S)
     x = as_finite_array("x", x, ndim=1)
     n = x.size
     P = _matrix("P", P, (n, n))
     require_symmetric_psd("P", P)
-    z = np.atleast_1d(as_finite_array("z", z))
+    z = np.atleast_1d(z)  # finite: checked at the public boundary
     if z.ndim != 1:
         raise ValueError(f"z must be a vector, got shape {z.shape}")
     m = z.size
@@ -383,7 +382,9 @@ def information_update(
     n = y.size
     Y = _matrix("Y", Y, (n, n))
     require_symmetric_psd("Y", Y)
-    z = np.atleast_1d(as_finite_array("z", z))
+    z = np.atleast_1d(z)  # finite: checked at the public boundary
+    if z.ndim != 1:
+        raise ValueError(f"z must be a vector, got shape {z.shape}")
     m = z.size
     H = _matrix("H", H, (m, n))
     R = _matrix("R", R, (m, m))
