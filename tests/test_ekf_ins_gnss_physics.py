@@ -17,6 +17,8 @@ Oracles (none uses the filter's matrices):
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
@@ -193,7 +195,7 @@ def _aided():
         sat_pos_ned=np.tile(SATS, (6, 1, 1)),
         sat_vel_ned=np.tile(SAT_VEL, (6, 1, 1)),
         n_visible=VISIBLE,
-        gnss=GnssNoise(1.0, 0.1, PHASE_M, 2e-3),
+        gnss=GnssNoise(1.5, 0.1, PHASE_M, 2e-3),
         pos0_sigma=5.0,
         vel0_sigma=0.3,
         heading_sigma=0.01,
@@ -390,6 +392,40 @@ def test_unaligned_gyro_bias_tilts_and_accelerates():
     np.testing.assert_allclose(r.rms("vel_err")[1:, :2], vel[1:, :2], rtol=SE)
     np.testing.assert_allclose(r.rms("pos_err")[1:, :2], pos[1:, :2], rtol=SE)
     assert np.abs(r.vel_err[..., 2]).max() < 1e-2 * np.abs(r.vel_err[..., :2]).max()  # g (1 - cos tilt)
+
+
+@pytest.mark.parametrize(
+    ("mode", "gnss", "kw", "message"),
+    [
+        (
+            "ins",
+            (None, None, None, None),
+            {"init_time": None},
+            "sc.init_time must be given for an initialising run",
+        ),
+        ("tc", (None, 0.1, None, None), {}, "sc.gnss.pseudorange must be given for mode 'tc'"),
+        ("tc", (1.5, None, None, None), {}, "sc.gnss.delta_range must be given for mode 'tc'"),
+        ("tc_att", (1.5, 0.1, None, None), {}, "sc.gnss.attitude must be given for mode 'tc_att'"),
+        (
+            "tc_dd",
+            (1.5, 0.1, None, None),
+            {"baselines_b": None},
+            "sc.baselines_b must be given for mode 'tc_dd'",
+        ),
+        ("tc_dd", (1.5, 0.1, None, None), {}, "sc.gnss.phase must be given for mode 'tc_dd'"),
+    ],
+)
+def test_a_missing_scenario_input_is_named(mode, gnss, kw, message):
+    """Oracle: the documented needs of each mode (initialising needs an initialisation time;
+    code and range-rate updates their noises; attitude rows theirs; double differences the
+    antenna baselines and the phase noise): the error names the missing field, as the caller
+    reaches it from the scenario, and the mode that needs it."""
+    args = {"init_time": 10.0, "baselines_b": np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])} | kw
+    sc = _scenario(
+        ImuSpec("test"), velocity=[50.0, 0.0, 0.0], attitude=[0.0, 0.0, 0.0], gnss=GnssNoise(*gnss), **args
+    )
+    with pytest.raises(ValueError, match="^" + re.escape(message) + ", got None$"):
+        run_monte_carlo(sc, mode, 2, 0, initialise=mode == "ins")
 
 
 def test_accelerometer_scale_factor_multiplies_the_specific_force():
