@@ -175,7 +175,7 @@ SATS = np.array([[2e7, 1e6, -1.5e7], [-1.8e7, 3e6, -1e7], [2e6, 2e7, -1.2e7], [-
 SAT_VEL = np.array(
     [[300.0, -2500.0, 800.0], [-1200.0, 900.0, 2000.0], [2800.0, 100.0, -400.0], [0.0, 1500.0, 2500.0]]
 )
-VISIBLE = np.array([4, 4, 0, 3, 4, 2])
+VISIBLE = np.array([4, 4, 0, 1, 4, 2])  # satellites in view at each epoch: a gap, and one alone
 BASELINES = np.array([[1.5, 0.4, 0.0], [-0.3, 1.2, 0.1]])
 PHASE_M = 0.005  # undifferenced carrier-phase noise, m
 LAMBDA = 299_792_458.0 / 1_575.42e6  # GPS L1 wavelength, m
