@@ -367,6 +367,18 @@ def test_kf_rejects_bad_shapes_and_noise():
         propagate_covariance(np.eye(1), [0.0, 0.0], np.eye(1), np.eye(1))
 
 
+def test_symmetrize_a_stack_matrix_by_matrix():
+    """Oracle: (A + A^T) / 2 of each matrix of a (2, 3, 3, 3) stack, one at a time with numpy's
+    transpose; integer input gives floats."""
+    from navcore.estimation.kalman import symmetrize
+
+    A = np.random.default_rng(5).standard_normal((2, 3, 3, 3))
+    want = np.array([[0.5 * (a + a.T) for a in row] for row in A])
+    np.testing.assert_array_equal(symmetrize(A), want)
+    np.testing.assert_array_equal(symmetrize([[1, 2], [0, 1]]), [[1.0, 1.0], [1.0, 1.0]])
+    assert symmetrize([[1, 2], [0, 1]]).dtype == np.float64
+
+
 @pytest.mark.parametrize(
     ("call", "message"),
     [
