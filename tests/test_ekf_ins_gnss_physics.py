@@ -176,7 +176,7 @@ SAT_VEL = np.array(
     [[300.0, -2500.0, 800.0], [-1200.0, 900.0, 2000.0], [2800.0, 100.0, -400.0], [0.0, 1500.0, 2500.0]]
 )
 VISIBLE = np.array([4, 4, 0, 1, 4, 2])  # satellites in view at each epoch: a gap, and one alone
-BASELINES = np.array([[1.5, 0.4, 0.0], [-0.3, 1.2, 0.1]])
+BASELINES = np.array([[1.5, 0.4, 0.0], [-0.3, 1.2, 0.1], [0.2, -0.9, 0.4]])  # three, not the usual two
 PHASE_M = 0.005  # undifferenced carrier-phase noise, m
 LAMBDA = 299_792_458.0 / 1_575.42e6  # GPS L1 wavelength, m
 
@@ -251,6 +251,7 @@ def _check_tightly_coupled_position_velocity_match_linear_filter(aided):
         np.testing.assert_allclose(r.rms("pos_err"), want[:, :3], rtol=se, err_msg=mode)
         np.testing.assert_allclose(r.rms("vel_err"), want[:, 3:], rtol=se, err_msg=mode)
     np.testing.assert_array_equal(res["tc"].n_visible, VISIBLE)
+    np.testing.assert_array_equal(res["tc"].t, np.arange(VISIBLE.size) / sc.gps_rate)
     # without attitude information the heading error stays the crab angle
     tc = res["tc"]
     np.testing.assert_allclose(tc.att_sigma[:, 2], 0.01, rtol=1e-6)

@@ -357,9 +357,10 @@ class Scenario:
         Clock random walks, root PSD (m/sqrt(s), m/s/sqrt(s)).
     accel_bias_walk, gyro_bias_walk : float
         Filter tuning of the bias random walks (the truth biases are constant).
-    baselines_b : (2, 3) array or None
-        Antenna baselines A0->A1, A0->A2 in body axes (m); ``None`` without a multi-antenna
-        system (the double-difference mode needs them).
+    baselines_b : (nb, 3) array or None
+        Antenna baselines A0->A1, ..., A0->A_nb in body axes (m), ``nb >= 1`` (KZL's system
+        has two); ``None`` without a multi-antenna system (the double-difference mode needs
+        them).
     """
 
     velocity_ned: Array
@@ -601,6 +602,9 @@ def run_monte_carlo(
     GQGt = _gqgt(sc)
     g = sc.gnss
     k2pi = 2 * np.pi / GPS_L1_WAVELENGTH_M
+    # phase noise of every antenna is drawn in every mode (common random numbers); without
+    # baselines, three antennas' worth, as for KZL's two baselines
+    n_antennas = 1 + (2 if sc.baselines_b is None else np.shape(sc.baselines_b)[0])
 
     out_pos = np.zeros((N, K + 1, 3))
     out_vel = np.zeros((N, K + 1, 3))
@@ -644,7 +648,7 @@ def run_monte_carlo(
         nsat_all = sc.sat_pos_ned.shape[1]
         e_pr = _sigma(g.pseudorange) * rng.standard_normal((N, nsat_all))
         e_prr = _sigma(g.delta_range) * rng.standard_normal((N, nsat_all))
-        e_ph = _sigma(g.phase) * rng.standard_normal((N, nsat_all, 3))
+        e_ph = _sigma(g.phase) * rng.standard_normal((N, nsat_all, n_antennas))
         e_att = _sigma(g.attitude) * rng.standard_normal((N, 3))
 
         # covariance prediction over the GPS interval
