@@ -151,6 +151,19 @@ TABLE_2_5_ROWS: tuple[tuple[str, str, tuple[str, str, str, str]], ...] = (
 )
 
 
+#: How a claim's text names each Table 2.5 row (the unit is said apart, from the input's unit).
+TABLE_2_5_QUANTITIES: dict[str, str] = {
+    "accel_bias_micro_g": "accelerometer bias",
+    "accel_scale_factor_ppm": "accelerometer scale factor",
+    "accel_misalignment_arcsec": "accelerometer misalignment",
+    "accel_random_walk_micro_g_per_sqrt_hz": "accelerometer white noise (velocity random walk)",
+    "gyro_bias_deg_per_h": "gyro bias",
+    "gyro_scale_factor_ppm": "gyro scale factor",
+    "gyro_misalignment_arcsec": "gyro misalignment",
+    "gyro_random_walk_deg_per_h_per_sqrt_hz": "gyro white noise (angle random walk)",
+}
+
+
 def grade_key(label: float) -> str:
     """Input-name suffix of a Table 2.5 column: ``10``, ``1``, ``0p5``, ``0p2``."""
     return f"{label:g}".replace(".", "p")
@@ -163,7 +176,7 @@ for _row, _unit, _texts in TABLE_2_5_ROWS:
             float(_text),
             locator=f"{_T25}, {_label:g} nmi/h column",
             unit=_unit,
-            quantity=_row.replace("_", " "),
+            quantity=TABLE_2_5_QUANTITIES[_row],
         )
 
 
