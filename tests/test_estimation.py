@@ -57,16 +57,21 @@ def _step_beside_filterpy(rng, x, P, F, Q, H, R, *, steps, rtol, validate):
             assert np.array_equal(P, P.T)
 
 
+def _random_linear_model(rng, n, m, *, spread, q, r):
+    """F = I + spread * N(0, 1), random SPD Q and R of scales q and r, H ~ N(0, 1) (m x n),
+    drawn from ``rng`` in that order."""
+    F = np.eye(n) + spread * rng.normal(size=(n, n))
+    Q = _random_spd(rng, n, q)
+    H = rng.normal(size=(m, n))
+    return F, Q, H, _random_spd(rng, m, r)
+
+
 def test_kalman_filter_matches_filterpy():
     """Oracle: filterpy.kalman.KalmanFilter (predict/update) over 50 steps of a 4-state model."""
     rng = np.random.default_rng(7)
-    n, m = 4, 2
-    F = np.eye(n) + 0.1 * rng.normal(size=(n, n))
-    Q = _random_spd(rng, n, 0.01)
-    H = rng.normal(size=(m, n))
-    R = _random_spd(rng, m, 0.1)
-    x = np.zeros(n)
-    P = _random_spd(rng, n)
+    F, Q, H, R = _random_linear_model(rng, 4, 2, spread=0.1, q=0.01, r=0.1)
+    x = np.zeros(4)
+    P = _random_spd(rng, 4)
     _step_beside_filterpy(rng, x, P, F, Q, H, R, steps=50, rtol=1e-9, validate=True)
 
 
@@ -74,12 +79,8 @@ def test_kalman_fast_path_matches_filterpy():
     """Oracle: filterpy.kalman.KalmanFilter; the unchecked path (validate=False, float
     arrays) gives the same predict and update as the checked one."""
     rng = np.random.default_rng(17)
-    n, m = 3, 2
-    F = np.eye(n) + 0.2 * rng.normal(size=(n, n))
-    Q = _random_spd(rng, n, 0.05)
-    H = rng.normal(size=(m, n))
-    R = _random_spd(rng, m, 0.3)
-    x, P = rng.normal(size=n), _random_spd(rng, n)
+    F, Q, H, R = _random_linear_model(rng, 3, 2, spread=0.2, q=0.05, r=0.3)
+    x, P = rng.normal(size=3), _random_spd(rng, 3)
     _step_beside_filterpy(rng, x, P, F, Q, H, R, steps=3, rtol=1e-10, validate=False)
 
 

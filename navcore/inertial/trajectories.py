@@ -161,6 +161,12 @@ def euler_to_dcm_stack(roll: Array, pitch: Array, yaw: Array) -> Array:
     )
 
 
+def _cumulative_trapezoid(rate: Array, dt: float) -> Array:
+    """Running integral of samples ``rate`` (along the first axis) by the trapezoid rule, from 0."""
+    steps = 0.5 * (rate[1:] + rate[:-1]) * dt
+    return np.concatenate([np.zeros((1, *rate.shape[1:])), np.cumsum(steps, axis=0)])
+
+
 def fly(
     segments: Sequence[Segment],
     *,
@@ -226,7 +232,7 @@ def fly(
     if np.any(V < 0):
         raise ValueError("segments must not make the speed negative")
     v = V[:, None] * np.stack([np.cos(gam) * np.cos(chi), np.cos(gam) * np.sin(chi), -np.sin(gam)], -1)
-    pos = np.concatenate([np.zeros((1, 3)), np.cumsum(0.5 * (v[1:] + v[:-1]) * dt, axis=0)])
+    pos = _cumulative_trapezoid(v, dt)
     acc = np.gradient(v, dt, axis=0)
     f = acc - np.array([0.0, 0.0, g])
     chi_dot = np.concatenate([rates[:, 1], rates[-1:, 1]])
@@ -245,7 +251,7 @@ def fly(
     # as the position): dividing the east distance by the current cos(lat) would hold only
     # for a flight along a parallel
     lon_rate = v[:, 1] / ((WGS84_A + h) * np.cos(lat))
-    lon = lon0 + np.concatenate([[0.0], np.cumsum(0.5 * (lon_rate[1:] + lon_rate[:-1]) * dt)])
+    lon = lon0 + _cumulative_trapezoid(lon_rate, dt)
     if np.any(h < -500.0):
         raise ValueError("segments must not fly the vehicle below -500 m")
     return Trajectory(t, lat, lon, h, pos, v, f, C, w)
