@@ -414,15 +414,15 @@ def stale_reason(record: dict[str, Any] | None, root: Path) -> str | None:
         return "no record of what it imports"
     paths = _module_files(root)
     changed = [
-        m
+        f"imports {m}"
         for m, digest in record.get("modules", {}).items()
         if m not in paths or _file_hash(paths[m]) != digest
     ]
     files = record.get("files", {})
-    changed += [f for f, digest in files.items() if _file_hash(_package_dir(root) / f) != digest]
+    changed += [f"reads {f}" for f, digest in files.items() if _file_hash(_package_dir(root) / f) != digest]
     if changed:
         shown = ", ".join(changed[:3]) + (f" and {len(changed) - 3} more" if len(changed) > 3 else "")
-        return f"imports {shown}, changed"
+        return f"{shown}, changed"
     if record.get("module_list") != _listing_hash(root):
         return "navcore's list of modules changed"
     return None
@@ -720,19 +720,21 @@ def _execute_group(
 
 def _group_pages(
     pages: list[Path], book: Path = ROOT / "book"
-) -> tuple[list[tuple[str | None, list[str]]], list[str]]:
-    """Split pages into one group per chapter folder and the front and back matter."""
+) -> tuple[list[tuple[str, list[str]]], list[tuple[str, list[str]]]]:
+    """Split pages into the paper chapters' groups and the groups that read every paper's claims.
+
+    One group per chapter folder (named by the folder, upper case). The chapters named for a
+    paper come first, heaviest ledger first (:data:`PAPERS`); the others (the chapter across the
+    papers) and the front and back matter (group ``""``) read every paper's claims, so they
+    run after those, from the evaluation cache that the paper chapters filled.
+    """
     chapters: dict[str, list[str]] = {}
-    other: list[str] = []
     for page in pages:
         rel = page.relative_to(book)
-        if len(rel.parts) > 1:
-            chapters.setdefault(rel.parts[0], []).append(str(page))
-        else:
-            other.append(str(page))
-    # the biggest chapters first, so that two workers finish at about the same time
-    groups = sorted(chapters.items(), key=lambda item: -len(item[1]))
-    return [(name.upper(), paths) for name, paths in groups], other
+        chapters.setdefault(rel.parts[0].upper() if len(rel.parts) > 1 else "", []).append(str(page))
+    papers = [(name, chapters.pop(name)) for name in PAPERS if name in chapters]
+    later = sorted(chapters.items(), key=lambda item: -len(item[1]))
+    return papers, later
 
 
 def _record_dir(cache, hashkey: str) -> Path:
@@ -799,14 +801,13 @@ def prefill(
     print(f"prefill: executing {len(todo)} of {len(notebooks)} notebooks:", flush=True)
     for page, reason in todo:
         print(f"prefill:   {page.relative_to(book).as_posix()} ({reason})", flush=True)
-    groups, other = _group_pages([p for p, _ in todo], book)
-    present = {name for name, _ in groups}
-    if other and (book / "ledger.md").exists():
-        # the front and back matter read every paper's claims: evaluate them one paper per
-        # worker first (from the evaluation cache where it is up to date)
-        missing = [p for p in PAPERS if p not in present and (book / p.lower()).is_dir()]
-        groups += [(paper, []) for paper in missing]
-    jobs = max(1, min(jobs, len(groups) or 1))
+    groups, later = _group_pages([p for p, _ in todo], book)
+    if later:
+        # the pages that read every paper's claims run after every paper's claims are
+        # evaluated, one paper per worker (from the evaluation cache where it is up to date)
+        present = {name for name, _ in groups}
+        groups += [(p, []) for p in PAPERS if p not in present and (book / p.lower()).is_dir()]
+    jobs = max(1, min(jobs, max(len(groups), len(later))))
     start = time.perf_counter()
 
     def store(results: list[dict[str, Any]]) -> None:
@@ -834,7 +835,7 @@ def prefill(
                 tmp.replace(deps)
             print(f"prefill: {seconds:7.1f} s  {rel}", flush=True)
 
-    def run_all(pool: ProcessPoolExecutor, batch: list[tuple[str | None, list[str]]]) -> None:
+    def run_all(pool: ProcessPoolExecutor, batch: list[tuple[str, list[str]]]) -> None:
         pending: set[Future] = {
             pool.submit(_execute_group, name if name in PAPERS else None, paths, timeout, book)
             for name, paths in batch
@@ -861,10 +862,8 @@ def prefill(
     )
     try:
         run_all(pool, groups)
-        # the front and back matter (intro, about, ledger, errata) read every paper's claims:
-        # they run last, from the evaluation cache that the chapters filled
-        if other:
-            run_all(pool, [(None, other)])
+        if later:
+            run_all(pool, later)
     except KeyboardInterrupt:
         print("prefill: interrupted", flush=True)
         raise
