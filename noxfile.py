@@ -1,8 +1,9 @@
 """nox sessions: tests, book (HTML), pdf, figures, lint, ledger, bench, mutation.
 
 Every session installs the full stack from ``requirements/lock.txt`` (a committed
-``uv pip compile`` lock), then navcore itself without dependencies, so that a build next year
-computes the same numbers. uv is the virtual-environment backend, with virtualenv as the
+``uv pip compile --generate-hashes`` lock), with every distribution's hash required, then
+navcore itself without dependencies, so that a build next year computes the same numbers
+from the same bytes. uv is the virtual-environment backend, with virtualenv as the
 fallback.
 
     python3 -m pip install "nox[uv]" && nox -s tests     # the test command
@@ -45,8 +46,13 @@ HTML = ROOT / "_build" / "html"
 
 
 def _install(session: nox.Session) -> None:
-    session.install("-r", str(LOCK))
-    session.install("--no-deps", "-e", ".")
+    """The locked stack, every distribution checked against its hash; then navcore itself.
+
+    An editable install cannot be hash-checked, so navcore goes in separately, without
+    dependencies and built with the locked (hash-checked) build backend already installed.
+    """
+    session.install("--require-hashes", "-r", str(LOCK))
+    session.install("--no-deps", "--no-build-isolation", "-e", ".")
 
 
 @nox.session
