@@ -222,7 +222,12 @@ def test_ctrl_c_during_the_latex_run(tmp_path: Path) -> None:
     book, config = make_book(tmp_path, {"b": {"1-quick.md": "1 + 1"}}, slow_latex=True)
     cmd = build_command(book, config, tmp_path / "out", builder="pdflatex")
     build = Build(cmd, build_env(tmp_path), tmp_path)
-    build.wait_for(r"This is XeTeX")
+    build.wait_for(r"latex: typesetting")
+    deadline = time.monotonic() + 60  # and XeLaTeX is running (latexmk is quiet)
+    while time.monotonic() < deadline and not any(
+        "xelatex" in _cmdline(p) for p in _descendants(build.proc.pid)
+    ):
+        time.sleep(0.1)
     time.sleep(0.5)  # inside the TeX run, not at its first line
     _stop_and_check(build, "int-group")
     assert _check_cache(tmp_path, book) == 1

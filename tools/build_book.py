@@ -633,7 +633,8 @@ def _execute_group(
     from nbclient.exceptions import CellExecutionError
 
     root = navcore_root()
-    ipc_dir = tempfile.mkdtemp(prefix="navcore-kernel-")
+    # a short folder: a socket's path may not exceed about 100 characters
+    ipc_dir = tempfile.mkdtemp(prefix="nbk-", dir="/tmp" if os.path.isdir("/tmp") else None)
     km = KernelManager(kernel_name="python3", transport="ipc", ip=os.path.join(ipc_dir, "k"))
     km.start_kernel(cwd=str(book), preexec_fn=_die_with_parent)
     kc = None
@@ -918,6 +919,47 @@ def _sphinx_preexec() -> None:
     _set_parent_death_signal(signal.SIGTERM)
 
 
+def _run_quietly(cmd: list[str], cwd: Path, env: dict[str, str] | None = None) -> int:
+    """Run a step of the build (Sphinx, the LaTeX run) in this process group and wait for it.
+
+    Its stdout is relayed less jupyter-book's banners; it dies with this process (Linux); the
+    wait is a loop of short waits, so that an interrupt is acted on at once.
+    """
+    proc = subprocess.Popen(
+        cmd, cwd=cwd, env=env, preexec_fn=_sphinx_preexec, stdout=subprocess.PIPE, text=True, errors="replace"
+    )
+    relay = threading.Thread(target=_relay_quietly, args=(proc.stdout,), daemon=True)
+    relay.start()
+    while True:
+        try:
+            code = proc.wait(timeout=0.25)
+            break
+        except subprocess.TimeoutExpired:
+            continue
+    relay.join(5)
+    return code
+
+
+def latex_to_pdf(out: Path) -> int:
+    """Typeset ``<out>/_build/latex`` into ``book.pdf`` (Sphinx's Makefile: latexmk, XeLaTeX), quietly.
+
+    latexmk runs silent (XeLaTeX in batch mode); on failure the errors of the LaTeX log are
+    printed, each with the two lines after it.
+    """
+    latex = out / "_build" / "latex"
+    print(f"latex: typesetting {latex / 'book.tex'}", flush=True)
+    env = dict(os.environ, LATEXMKOPTS=os.environ.get("LATEXMKOPTS", "-silent"))
+    code = _run_quietly([os.environ.get("MAKE", "make"), "all-pdf"], latex, env)
+    if code != 0:
+        for log in sorted(latex.glob("*.log")):
+            lines = log.read_text(errors="replace").splitlines()
+            for n, line in enumerate(lines):
+                if line.startswith("! "):
+                    print(f"{log.name}:", *lines[n : n + 3], sep="\n    ", flush=True)
+    print(f"latex: {'done' if code == 0 else f'FAILED (exit {code})'}", flush=True)
+    return code
+
+
 def build(
     builder: str = "html",
     only: str | None = None,
@@ -926,7 +968,9 @@ def build(
     jobs: int | None = None,
     book: Path = ROOT / "book",
     config_file: Path = ROOT / "_config.yml",
+    execute_only: bool = False,
 ) -> int:
+    """Execute what the cache lacks (``cache``), then run Sphinx; ``pdflatex``: then typeset the PDF."""
     config = cached_config(config_file) if cache else config_file
     toc = book / "_toc.yml"
     tmp = None
@@ -941,11 +985,6 @@ def build(
         out = out or ROOT / "_build" / f"subset-{only}"
     out = out or ROOT
     try:
-        # every build starts from empty output and doctree folders (the execution cache is kept):
-        # Sphinx stamps asset links with checksums of files a previous build left and merges the
-        # previous search index, so a rebuild would differ from a clean build of the same commit
-        for stale in (out / "_build" / builder_dir(builder), out / "_build" / ".doctrees"):
-            shutil.rmtree(stale, ignore_errors=True)
         if cache:
             import yaml
 
@@ -953,28 +992,29 @@ def build(
             times = prefill(cache_path, toc_pages(toc, book), jobs or os.cpu_count() or 1, book=book)
             if times:
                 report_times(times, out / "_build" / "page-times.json")
+        if execute_only:
+            return 0
+        # every build starts from empty output and doctree folders (the execution cache is kept):
+        # Sphinx stamps asset links with checksums of files a previous build left and merges the
+        # previous search index, so a rebuild would differ from a clean build of the same commit
+        for stale in (out / "_build" / builder_dir(builder), out / "_build" / ".doctrees"):
+            shutil.rmtree(stale, ignore_errors=True)
+        sphinx_builder = "latex" if builder == "pdflatex" else builder  # the PDF: latex_to_pdf
         cmd = [
             str(Path(sys.executable).with_name("jupyter-book")), "build", str(book),
             "--config", str(config), "--toc", str(toc), "--path-output", str(out),
-            "--builder", builder, "--all", "-W", "-n", "--keep-going", "-q",
+            "--builder", sphinx_builder, "--all", "-W", "-n", "--keep-going", "-q",
         ]  # fmt: skip
-        print(f"sphinx: {builder} build of {toc.relative_to(book.parent)} into {out / '_build'}", flush=True)
-        # Sphinx stays in this process group, so that Ctrl-C reaches it and its LaTeX run too
-        proc = subprocess.Popen(
-            cmd, cwd=ROOT, preexec_fn=_sphinx_preexec, stdout=subprocess.PIPE, text=True, errors="replace"
+        print(
+            f"sphinx: {sphinx_builder} build of {toc.relative_to(book.parent)} into {out / '_build'}",
+            flush=True,
         )
-        relay = threading.Thread(target=_relay_quietly, args=(proc.stdout,), daemon=True)
-        relay.start()
-        while True:  # short waits: the interrupt handler runs between them
-            try:
-                code = proc.wait(timeout=0.25)
-                break
-            except subprocess.TimeoutExpired:
-                continue
-        relay.join(5)
+        code = _run_quietly(cmd, ROOT)
         print(
             f"sphinx: {'done' if code == 0 else f'FAILED (exit {code}): see the messages above'}", flush=True
         )
+        if code == 0 and builder == "pdflatex":
+            code = latex_to_pdf(out)
         return code
     finally:
         if tmp is not None:
@@ -994,6 +1034,14 @@ def main() -> int:
     parser.add_argument(
         "--jobs", type=int, default=None, help="with --cache: chapters executed at once (default: the cores)"
     )
+    parser.add_argument(
+        "--execute-only", action="store_true", help="with --cache: execute what the cache lacks, no Sphinx"
+    )
+    parser.add_argument(
+        "--latex-to-pdf",
+        action="store_true",
+        help="only typeset the LaTeX sources of an earlier --builder latex build into book.pdf",
+    )
     # the tests' toy books
     parser.add_argument("--book", type=Path, default=ROOT / "book", help=argparse.SUPPRESS)
     parser.add_argument("--config", type=Path, default=ROOT / "_config.yml", help=argparse.SUPPRESS)
@@ -1002,8 +1050,12 @@ def main() -> int:
     if os.environ.get("NAVCORE_STOP_WITH_PARENT"):  # nox sets it: a killed nox stops the build
         _set_parent_death_signal()
     try:
+        if args.latex_to_pdf:
+            return latex_to_pdf(args.out or ROOT)
         book, config = args.book.resolve(), args.config.resolve()
-        return build(args.builder, args.only, args.out, args.cache, args.jobs, book, config)
+        return build(
+            args.builder, args.only, args.out, args.cache, args.jobs, book, config, args.execute_only
+        )
     except BaseException as exc:
         # stop everything this build started, whatever stopped it; a second Ctrl-C cannot cut it short
         signal.signal(signal.SIGINT, signal.SIG_IGN)
