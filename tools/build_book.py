@@ -734,7 +734,7 @@ def _group_pages(
         rel = page.relative_to(book)
         chapters.setdefault(rel.parts[0].upper() if len(rel.parts) > 1 else "", []).append(str(page))
     papers = [(name, chapters.pop(name)) for name in PAPERS if name in chapters]
-    later = sorted(chapters.items(), key=lambda item: -len(item[1]))
+    later = sorted(chapters.items(), key=lambda item: (-len(item[1]), item[0] == ""))
     return papers, later
 
 
