@@ -36,6 +36,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -87,7 +88,7 @@ def clean_full_build(jobs: int | None, workdir: Path, source: Path | None = None
     times_file = out / "_build" / "page-times.json"
     times = json.loads(times_file.read_text()) if times_file.exists() else {"chapters": {}, "pages": {}}
     times_file.unlink(missing_ok=True)
-    executed = [line.split()[1] for line in log_lines if line.startswith("prefill:   ")]
+    executed = [m.group(1) for line in log_lines if (m := re.match(r"prefill:   (\S+) \(", line))]
     return {
         "total": total,
         "execution": (sphinx_start or start) - start,
