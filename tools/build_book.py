@@ -750,12 +750,17 @@ def _drop_record(cache, record) -> None:
     NbCacheRecord.remove_records([record.pk], cache.db)
 
 
-def _why_execute(cache, page: Path, by_uri: dict[str, Any], root: Path) -> str | None:
-    """Why ``page`` must execute (``None`` when its cached execution is valid); drops a stale record."""
+def _why_execute(cache, page: Path, by_uri: dict[str, Any], root: Path) -> tuple[str | None, Any]:
+    """Why ``page`` must execute (``None`` when its cached execution is valid), and its stale record.
+
+    A stale record stays in the cache while the page executes again (an interrupted build
+    leaves it, so the next build still says why the page executes); a record that is not
+    whole (no notebook or no list of dependencies, a store that was killed) is dropped at once.
+    """
     try:
         record = cache.match_cache_notebook(_read_notebook(page))
     except KeyError:
-        return "its text changed" if str(page) in by_uri else "not in the cache"
+        return ("its text changed" if str(page) in by_uri else "not in the cache"), None
     folder = _record_dir(cache, record.hashkey)
     deps = None
     if (folder / "base.ipynb").exists():
@@ -763,11 +768,12 @@ def _why_execute(cache, page: Path, by_uri: dict[str, Any], root: Path) -> str |
             deps = json.loads((folder / "navcore-deps.json").read_text())
         except (OSError, ValueError):
             deps = None
-    reason = stale_reason(deps, root)
-    if reason is not None:
+    if deps is None:
         with _INTERRUPTS.critical():
             _drop_record(cache, record)
-    return reason
+        return "no record of what it imports", None
+    reason = stale_reason(deps, root)
+    return reason, (record if reason is not None else None)
 
 
 def prefill(
@@ -791,10 +797,13 @@ def prefill(
     by_uri = {r.uri: r for r in cache.list_cache_records()}
     notebooks = [p for p in pages if _is_notebook(p)]
     todo: list[tuple[Path, str]] = []
+    stale: dict[str, Any] = {}  # page -> its out-of-date record, replaced when the page is stored
     for page in notebooks:
-        reason = _why_execute(cache, page, by_uri, root)
+        reason, record = _why_execute(cache, page, by_uri, root)
         if reason is not None:
             todo.append((page, reason))
+        if record is not None:
+            stale[str(page)] = record
     times: dict[str, float] = {}
     if not todo:
         print(f"prefill: all {len(notebooks)} notebooks are in the cache and up to date", flush=True)
@@ -824,6 +833,7 @@ def prefill(
                 print(f"prefill: {rel} FAILED ({first}); Sphinx will re-run it", flush=True)
                 continue
             times[rel] = seconds
+            stale.pop(path_str, None)  # storing the page replaces its out-of-date record
             with _INTERRUPTS.critical():  # no interrupt between the record, its notebook, its dependencies
                 record = cache.cache_notebook_bundle(
                     CacheBundleIn(result["nb"], path_str, data={"execution_seconds": seconds}),
@@ -869,6 +879,9 @@ def prefill(
         print("prefill: interrupted", flush=True)
         raise
     pool.shutdown(wait=True)
+    with _INTERRUPTS.critical():  # a page that failed: Sphinx must not find its old outputs
+        for record in stale.values():
+            _drop_record(cache, record)
     print(
         f"prefill: {len(todo)} pages in {time.perf_counter() - start:.1f} s with {jobs} workers", flush=True
     )
