@@ -226,7 +226,7 @@ def counts_table(paper: str | None = None) -> CountsTable:
     return CountsTable(paper)
 
 
-def errata_list(paper: str | None = None, *, root: str | None = None) -> ErrataList:
+def errata_list(paper: str | None = None, *, root: str | None = None, caveat: bool = True) -> ErrataList:
     """The registered errata (of one paper, or all), linked to the pages that discuss them.
 
     Parameters
@@ -236,6 +236,9 @@ def errata_list(paper: str | None = None, *, root: str | None = None) -> ErrataL
     root : str or None, optional
         Link prefix to the book's root (``None`` finds it, :func:`book_root_prefix`); the
         pages under it give the link texts (their titles).
+    caveat : bool, optional
+        Say the text-only caveat once, under the text-only heading (``False`` where the page
+        says it already).
 
     Returns
     -------
@@ -253,6 +256,7 @@ def errata_list(paper: str | None = None, *, root: str | None = None) -> ErrataL
         root=root,
         titles=_page_titles(Path.cwd() / root),
         evals=ledger.evaluations(paper=paper),
+        caveat=caveat,
     )
 
 

@@ -1073,8 +1073,9 @@ class ErrataList:
 
     The entries are grouped by basis, computed findings first; each says its basis and
     kind, what the paper prints, what the book finds, the evidence, and the claims that are
-    its evidence (with their verdicts when ``evals`` is given). The text-only caveat is not
-    repeated per entry: the page says it once (:class:`FindingsTable`).
+    its evidence (with their verdicts when ``evals`` is given). The text-only caveat
+    (:data:`~navcore.ledger.core.TEXT_ONLY_CAVEAT`) is said once, under the heading of the
+    text-only findings, never per entry.
 
     Parameters
     ----------
@@ -1086,6 +1087,9 @@ class ErrataList:
         Page docname to its title, for the text of the links to the discussing pages.
     evals : sequence of Evaluation or None, optional
         Evaluations of the claims, to show each claim's derived verdict.
+    caveat : bool, optional
+        Say the text-only caveat under the text-only heading (``False`` where the page has
+        said it already, as the errata page does above its lists).
 
     Examples
     --------
@@ -1107,8 +1111,10 @@ class ErrataList:
         root: str = "",
         titles: dict[str, str] | None = None,
         evals: Sequence[Evaluation] | None = None,
+        caveat: bool = True,
     ) -> None:
         items = list(errata() if items is None else items)
+        self.caveat = caveat
         order = {b: i for i, b in enumerate(ERRATUM_BASES)}
         self.items = sorted(items, key=lambda e: order.get(e.basis, len(order)))  # stable within a basis
         self.root = root
@@ -1130,6 +1136,8 @@ class ErrataList:
         out = []
         for basis, items in self._groups():
             out.append(f'<p class="errata-group"><b>{_BASIS_HEADINGS[basis]}</b> ({len(items)})</p>')
+            if basis == "text-only" and self.caveat:
+                out.append(f'<p class="ledger-caveat">{html.escape(TEXT_ONLY_CAVEAT)}</p>')
             for e in items:
                 link = html.escape(f"{self.root}{e.discussed_in}.html#{e.id.lower()}")
                 title = html.escape(self.titles.get(e.discussed_in, "the chapter"))
@@ -1162,6 +1170,8 @@ class ErrataList:
             out.append(
                 r"\par\medskip\noindent\textit{" + _BASIS_HEADINGS[basis] + f" ({len(items)})" + "}\\par"
             )
+            if basis == "text-only" and self.caveat:
+                out.append(r"\noindent{}" + _tex_escape(TEXT_ONLY_CAVEAT) + r"\par")
             for e in items:
                 claims_tex = (
                     "; ".join(
@@ -1273,7 +1283,7 @@ class FindingsTable:
             out.append(f'<p class="ledger-caveat">{html.escape(self._caveat())}</p>')
         if self.list_findings:
             out.append(
-                '<div class="ledger-table-wrap"><table class="ledger-claims ledger-findings-list"><thead><tr>'
+                '<div class="ledger-table-wrap"><table class="ledger-findings-list"><thead><tr>'
                 '<th scope="col">Finding</th><th scope="col">Basis</th><th scope="col">Kind</th>'
                 '<th scope="col">Its evidence: claims and verdicts</th></tr></thead><tbody>'
             )
