@@ -300,7 +300,7 @@ def findings_table(
     >>> with mock.patch("navcore.ledger.errata", return_value=(e,)):
     ...     with mock.patch("navcore.ledger.evaluations", return_value=[]):
     ...         print(repr(findings_table("SP", root="")).splitlines()[1])
-    SP computed  1  0  0  0  0  0  0  1
+    SP  computed  1  0  0  0  0  0  0  1
     """
     root = book_root_prefix() if root is None else root
     return FindingsTable(

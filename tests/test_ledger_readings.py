@@ -119,6 +119,18 @@ def test_readings_weigh_statements_too():
     assert ev.status == "consistent" and labels(ev, SIGN) == ["the other reading"]
 
 
+def test_a_statement_reading_that_agrees_over_part_of_its_band_says_so():
+    c = make(
+        published=True,
+        unit="statement",
+        compute=lambda: (IN.sign < 0) & (IN.offset > 0.5),  # reads both inputs
+        expected_status="consistent",
+    )
+    ev = evaluate(c)  # false throughout under the sign used; under the other, true for offsets above 0.5
+    assert ev.status == "consistent"
+    assert "does not hold at the nominal inputs, but holds over part of the assumed ranges" in ev.note()
+
+
 def test_cross_check_fit_and_fitted_use_any_reading():
     assert evaluate(make(compute=lambda: 16.13 * IN.per_cycle, kind="cross-check")).status == "consistent"
     assert evaluate(make(compute=lambda: 20.0 * IN.per_cycle, kind="cross-check")).status == "discrepant"

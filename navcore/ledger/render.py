@@ -1243,7 +1243,7 @@ class FindingsTable:
     ...             finding="$a - b$", evidence="the derivation in the book", kind="typography",
     ...             basis="text-only", no_claim_reason="a sign with no printed number to check")
     >>> print(repr(FindingsTable([e])).splitlines()[1])
-    SP text-only  1  0  0  0  0  0  0  1
+    SP  text-only  1  0  0  0  0  0  0  1
     >>> "transcription" in FindingsTable([e])._repr_html_()
     True
     """
