@@ -585,9 +585,8 @@ CLAIMS = [
         compute=lambda: power_ratio_from_db(20.0),
         tolerance=EXACT,
         expected_status="consistent",
-        note="$10^{20/10} = 100$: the definition of the decibel applied to the printed 20 dB. Verdict "
-        "changed "
-        "from reproduced: arithmetic on printed numbers is a cross-check.",
+        note="$10^{20/10} = 100$: the definition of the decibel applied to the printed 20 dB: arithmetic on "
+        "printed numbers, a cross-check.",
     ),
     Claim(
         id="SP-sec3.3-aj-rule-distance",

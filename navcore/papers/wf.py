@@ -1366,9 +1366,7 @@ CLAIMS = [
         "Hz is "
         "$\\sigma_G c / f_{L1} = 0.19$ m/s per line of sight (computed on the page), an order of magnitude "
         "above "
-        "$\\sigma_N$, which is an integrated INS/GPS accuracy ([3]) and not the quantity meant. Verdict "
-        "changed "
-        "from not-reproducible: the book computes it under a stated assumption.",
+        "$\\sigma_N$, which is an integrated INS/GPS accuracy ([3]) and not the quantity meant.",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
