@@ -54,11 +54,12 @@ def tests(session: nox.Session) -> None:
     """Run pytest: unit tests against oracles, one test per ledger claim, figures, strict build.
 
     The whole suite runs on every core (pytest-xdist, ``-n auto``: two workers on CI's two
-    cores); ``nox -s tests -- ARGS`` passes ARGS to pytest instead (one process unless ARGS
-    ask for workers).
+    cores; ``--dist loadgroup`` keeps the claims of one paper module, which share their model
+    runs, on one worker); ``nox -s tests -- ARGS`` passes ARGS to pytest instead (one process
+    unless ARGS ask for workers).
     """
     _install(session)
-    session.run("python", "-m", "pytest", *(session.posargs or ["-q", "-n", "auto"]))
+    session.run("python", "-m", "pytest", *(session.posargs or ["-q", "-n", "auto", "--dist", "loadgroup"]))
 
 
 @nox.session

@@ -263,7 +263,9 @@ def test_cli_exit_status_nonzero_on_failure(monkeypatch, capsys):
     from navcore import ledger
 
     failing = make(compute=lambda: 99.0)
-    monkeypatch.setattr(ledger, "evaluations", lambda paper=None, prefix=None: [evaluate(failing)])
+    monkeypatch.setattr(
+        ledger, "evaluations", lambda paper=None, prefix=None, n_jobs=None: [evaluate(failing)]
+    )
     assert cli.main(["ledger"]) == 1
     assert "FAIL WF-test" in capsys.readouterr().err
 
