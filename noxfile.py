@@ -191,8 +191,9 @@ def ledger(session: nox.Session) -> None:
 
     Every claim is computed afresh (the on-disk evaluation cache is off), so two runs of this
     session are an honest determinism check. ``nox -s ledger -- --twice`` is that check in
-    one session (CI's gate): two fresh processes evaluate the ledger side by side, one per
-    core, and their JSON exports must be byte-identical (tools/ledger_twice.py).
+    one session (CI's gate): two fresh processes evaluate the ledger side by side, one in
+    itself and one on two workers, and their JSON exports must be byte-identical
+    (tools/ledger_twice.py).
     """
     _install(session)
     env = {"NAVCORE_CACHE": "off", "NAVCORE_NO_DISK_CACHE": "1"}
