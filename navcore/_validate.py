@@ -145,20 +145,20 @@ def check_symmetric_psd(
     and words the error as before.
     """
     scale = max(float(np.abs(arr).max()), _TINY)
-    if float(np.abs(arr - arr.T).max()) > rtol * scale * 10:
+    diff = arr - arr.T
+    if float(np.abs(diff, out=diff).max()) > rtol * scale * 10:
         raise ValueError(f"{name} must be symmetric")
-    sym = arr + arr.T
-    sym *= 0.5
-    n = sym.shape[0]
-    top = float(sym.flat[:: n + 1].max())
+    n = arr.shape[0]
+    top = float(arr.diagonal().max())  # the symmetric part has the same diagonal
     if top > 0:
-        shifted = sym.copy()
+        shifted = arr + arr.T
+        shifted *= 0.5  # the symmetric part, as below
         if not definite:
             shifted.flat[:: n + 1] += rtol * top
         lower, info = _potrf(shifted)
-        if info == 0 and (not definite or float(lower.flat[:: n + 1].min()) ** 2 > _SQRT_EPS * top):
+        if info == 0 and (not definite or float(lower.diagonal().min()) ** 2 > _SQRT_EPS * top):
             return  # positive (semi-)definite within the margin of the eigenvalue test
-    eig = np.linalg.eigvalsh(sym)
+    eig = np.linalg.eigvalsh(0.5 * (arr + arr.T))
     floor = -rtol * max(float(eig[-1]), 0.0) if eig.size else 0.0
     if definite and (eig.size and eig[0] <= 0):
         raise ValueError(f"{name} must be positive definite (smallest eigenvalue {eig[0]:.3g})")
