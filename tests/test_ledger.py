@@ -252,7 +252,7 @@ def test_cli_ledger_json_and_exit_status(monkeypatch, capsys):
         evaluate(make()),
         evaluate(make(id="WF-b", published=True, unit="statement", compute=lambda: True)),
     ]
-    monkeypatch.setattr(ledger, "evaluations", lambda paper=None, prefix=None: evals)
+    monkeypatch.setattr(ledger, "evaluations", lambda paper=None, prefix=None, n_jobs=None: evals)
     assert cli.main(["ledger", "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
     assert [d["id"] for d in data] == ["WF-test", "WF-b"]
