@@ -213,7 +213,13 @@ def test_json_has_exactly_the_documented_fields():
     }
     assert all(set(o) == fields for o in out)
     assert out[0]["published"] == 10.0 and out[0]["reproduced"] == 10.2
-    assert out[0]["tolerance"] == {"abs": 0.5, "rel": None, "reason": "test", "policy": "printed-digits"}
+    assert out[0]["tolerance"] == {
+        "abs": 0.5,
+        "rel": None,
+        "reason": "test",
+        "policy": "printed-digits",
+        "loose_abs": None,
+    }
     assert out[0]["kind"] == "reproduction" and out[1]["kind"] == "statement"
     assert out[0]["band"] is None and out[0]["inputs"] == []
     assert out[1]["published"] is True
