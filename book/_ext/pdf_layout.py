@@ -19,6 +19,11 @@ Links. A link inside a reference list is printed as its address (a DOI becomes
 ``https://doi.org/...``) instead of as a footnote mark glued to the DOI, which read as one
 more digit of it.
 
+The introduction. Sphinx takes the root page's heading for the document's title and prints
+the page's text after the table of contents without it, so the PDF's first page of text had
+no title and its running footer still said "Contents". Here that text gets its heading back,
+as an unnumbered chapter that enters the table of contents and the running headers.
+
 Errata. An erratum is an admonition with the class ``warning``; the web shows it with the
 theme's orange warning colours, but Sphinx's LaTeX writer prints every titled admonition as
 a note. Here a titled admonition with the class ``warning`` is printed as a warning box,
@@ -93,6 +98,32 @@ class CitationsInPlace(SphinxPostTransform):
             parent.extend(new_children)
 
 
+def _latex_escape(text: str) -> str:
+    specials = {"&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_", "{": r"\{", "}": r"\}"}
+    return "".join(specials.get(c, c) for c in text)
+
+
+class IntroductionHeading(SphinxPostTransform):
+    """The root page's text starts with its own heading, as an unnumbered chapter."""
+
+    default_priority = 800
+    formats = ("latex",)
+
+    def run(self, **kwargs: Any) -> None:
+        root = self.config.root_doc
+        title = self.env.titles.get(root)
+        first = next(iter(self.document.findall(nodes.section)), None)
+        if title is None or first is None or not first.children:
+            return
+        if not isinstance(first[0], nodes.title) or first[0].astext() != title.astext():
+            return  # not the assembled book (whose first section is the root page's)
+        text = _latex_escape(title.astext())
+        heading = (
+            rf"\chapter*{{{text}}}\addcontentsline{{toc}}{{chapter}}{{{text}}}\markboth{{{text}}}{{{text}}}"
+        )
+        first.insert(1, nodes.raw("", heading + "\n", format="latex"))
+
+
 def _visit_admonition(self: Any, node: nodes.Element) -> None:
     kind = "warning" if "warning" in node.get("classes", []) else "note"
     self.body.append("\n" + r"\begin{sphinxadmonition}{" + kind + "}")
@@ -111,4 +142,5 @@ def setup(app: Sphinx) -> dict[str, Any]:
     app.add_node(nodes.admonition, override=True, latex=(_visit_admonition, _depart_admonition))
     app.add_post_transform(CitationUrlsInline)
     app.add_post_transform(CitationsInPlace)
+    app.add_post_transform(IntroductionHeading)
     return {"parallel_read_safe": True, "parallel_write_safe": True}
