@@ -214,7 +214,7 @@ def number_formatter(
 
 
 _EXPONENT = re.compile(r"(?<![\w.])([-−]?)(\d+(?:\.\d+)?)[eE]([-+−]?)(\d+)\b")
-_NEGATIVE_ZERO = re.compile(r"(?<![\w.\d])[-−](0(?:\.0+)?)(?![\d.×])")
+_NEGATIVE_ZERO = re.compile(r"(?<![\w.\d])[-−](0(?:\.0+)?)(?!\d|\.\d|×)")
 
 
 def _exponent(m: re.Match[str]) -> str:

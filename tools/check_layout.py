@@ -16,6 +16,9 @@ indexes) is loaded at each width, after MathJax has typeset it, and two things a
 ``table``
     a table in a cell's output (``div.cell_output``) that is wider than the text column.
 
+The book sets a display equation that is a little too wide smaller, down to 70 % of its size
+(``book/_static/navcore-math.js``); the gate reports how many it set smaller, and how small.
+
 At 1400 px nothing may overflow. At 420 px (a phone) an equation that cannot be broken into
 lines of that width, or a table whose columns cannot be narrowed further, may scroll inside
 its own box: each such item is listed, with the reason, in ``tools/layout_allowlist.json``
@@ -62,11 +65,16 @@ MEASURE = r"""
   await new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)));
   const root = document.querySelector('article.bd-article') || document.body;
   const over = el => el.scrollWidth > el.clientWidth + 1;
-  const out = {math: [], table: []};
+  const out = {math: [], table: [], smaller: []};
   let i = 0;
   for (const block of root.querySelectorAll('div.math')) {
     i += 1;
     const inner = block.querySelector('mjx-container[display="true"]');
+    const size = inner ? inner.dataset.navcoreSize : undefined;
+    if (size !== undefined && inner.style.fontSize !== size) {
+      const base = parseFloat(size) || 100;
+      out.smaller.push({name: block.id || ('math-' + i), scale: parseFloat(inner.style.fontSize) / base});
+    }
     if (over(block) || (inner && over(inner))) {
       const el = inner && over(inner) ? inner : block;
       out.math.push({name: block.id || ('math-' + i), scroll: el.scrollWidth, client: el.clientWidth,
@@ -212,15 +220,17 @@ def pages(root: Path) -> list[Path]:
 
 async def _measure_all(root: Path, widths: tuple[int, ...]) -> dict[int, dict[str, list[tuple[str, dict]]]]:
     browser = Browser(find_browser())
-    found: dict[int, dict[str, list[tuple[str, dict]]]] = {w: {"math": [], "table": []} for w in widths}
+    found: dict[int, dict[str, list[tuple[str, dict]]]] = {
+        w: {"math": [], "table": [], "smaller": []} for w in widths
+    }
     try:
         await browser.connect()
         for page in pages(root):
             rel = page.relative_to(root).as_posix()
             for width in widths:
                 got = await browser.measure(page.resolve().as_uri(), width)
-                for kind in ("math", "table"):
-                    for item in got[kind]:
+                for kind in ("math", "table", "smaller"):
+                    for item in got.get(kind, []):
                         found[width][kind].append((f"{rel}#{item['name']}", item))
     finally:
         browser.close()
@@ -237,6 +247,17 @@ def check(root: Path, widths: tuple[int, ...] = WIDTHS, list_all: bool = False) 
     found = measure(root, widths)
     problems = []
     for width in widths:
+        smaller = found[width].get("smaller", [])
+        if smaller:
+            least = min(item["scale"] for _, item in smaller)
+            print(
+                f"check_layout: {width} px: {len(smaller)} display equation(s) set smaller to fit "
+                f"(smallest at {100 * least:.0f} %)",
+                file=sys.stderr,
+            )
+            if list_all:
+                for name, item in smaller:
+                    print(f"{width} px: smaller {name} at {100 * item['scale']:.0f} %")
         for kind in ("math", "table"):
             allowed = allow.get(str(width), {}).get(kind, {})
             names = set()

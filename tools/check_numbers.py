@@ -12,12 +12,12 @@ not code cells, math, the API reference or highlighted sources) is searched for:
     a number in a program's exponent notation (``1.00e-04``, ``5.8286e-14``), which a
     browser may also break after its minus sign ("1.00e-" / "04");
 ``long decimal``
-    seven or more decimals (``1.6344416666666666``; not a DOI's ``10.1115/1.3662552``);
+    eight or more decimals (``1.6344416666666666``; not a DOI's ``10.1115/1.3662552``);
 ``negative zero``
     ``-0``, ``-0.0``, ``-0.000`` (a value that rounds to zero has no sign);
 ``padded``
-    a non-zero integer padded with four or more zero decimals (``60.000000``; a zero in a
-    column of fixed decimals, ``0.0000``, is not one);
+    an integer padded with four or more zero decimals (``60.000000``); not a 0 or a 1 in a
+    column of fixed decimals (``0.0000``, a probability of ``1.0000``);
 ``mapping``
     a printed dictionary of numbers (``{180.0: 18.02}``).
 
@@ -36,9 +36,9 @@ from pathlib import Path
 
 PATTERNS = {
     "exponent": re.compile(r"(?<![\w.])[-−]?\d+(?:\.\d+)?[eE][-+−]?\d+\b"),
-    "long decimal": re.compile(r"(?<![\w./])[-−]?\d+\.\d{7,}"),
-    "negative zero": re.compile(r"(?<![\w.\d])[-−]0(?:\.0+)?(?![\d.×])"),
-    "padded": re.compile(r"(?<![\w.])[1-9]\d*\.0{4,}(?!\d)"),
+    "long decimal": re.compile(r"(?<![\w./])[-−]?\d+\.\d{8,}"),
+    "negative zero": re.compile(r"(?<![\w.\d])[-−]0(?:\.0+)?(?!\d|\.\d|×)"),
+    "padded": re.compile(r"(?<![\w.])(?:[2-9]|[1-9]\d+)\.0{4,}(?!\d)"),
     "mapping": re.compile(r"\{\s*(?:'[^']*'|\"[^\"]*\"|[-−]?[\d.]+)\s*:\s*[-−(]?\d"),
 }
 # pages that are not the book's text for a reader of numbers
