@@ -23,11 +23,10 @@ non-rotating Earth) gives the reconstructed KZL Eq. 10:
 .. math::
 
     \begin{aligned}
-    \Delta\dot x &= \Delta v, &
+    \Delta\dot x &= \Delta v,\qquad \Delta\dot b = w_b,\\
     \Delta\dot v &= F_{23}\Delta\psi - \hat R_b^n \Delta b_a - \hat R_b^n w_a,\\
-    \Delta\dot\psi &= -\hat R_b^n \Delta b_\omega - \hat R_b^n w_\omega, &
-    \Delta\dot b &= w_b,\\
-    c\Delta\dot t_r &= c\Delta t_{r,d} + w_c, & c\Delta\dot t_{r,d} &= w_d,
+    \Delta\dot\psi &= -\hat R_b^n \Delta b_\omega - \hat R_b^n w_\omega,\\
+    c\Delta\dot t_r &= c\Delta t_{r,d} + w_c,\qquad c\Delta\dot t_{r,d} = w_d,
     \end{aligned}
 
 with :math:`F_{23} = -[\hat a^n\times]`. KZL Eq. 11 prints exactly this matrix,
