@@ -43,7 +43,10 @@ def _item(name: str) -> tuple[str, dict]:
 def test_layout_gate_fails_on_an_overflow_not_in_the_allowlist(layout, monkeypatch):
     module, allow = layout
     allow.write_text(json.dumps({"420": {"math": {"a.html#eq-1": "a 17-column matrix"}}}))
-    found = {1400: {"math": [], "table": []}, 420: {"math": [_item("a.html#eq-1"), _item("b.html#eq-2")], "table": []}}
+    found = {
+        1400: {"math": [], "table": []},
+        420: {"math": [_item("a.html#eq-1"), _item("b.html#eq-2")], "table": []},
+    }
     monkeypatch.setattr(module, "measure", lambda root, widths: found)
     problems = module.check(Path("."), (1400, 420))
     assert len(problems) == 1 and "b.html#eq-2" in problems[0]
@@ -128,3 +131,30 @@ def test_runs_of_citations_become_reference_lists_in_place():
     assert isinstance(listing, thebibliography)
     assert [c["ids"] for c in listing.children] == [["c1"], ["c2"]]
     assert not list(doc.findall(nodes.citation))  # nothing left for Sphinx to move to the end
+
+
+def test_a_reference_to_a_class_field_links_to_the_class():
+    from types import SimpleNamespace
+
+    ext = _load(ROOT / "book" / "_ext" / "api_reference.py", "api_reference")
+    entry = SimpleNamespace(
+        objtype="class", docname="reference/estimation", node_id="navcore.estimation.kalman.KalmanUpdate"
+    )
+    env = SimpleNamespace(get_domain=lambda name: SimpleNamespace(objects={entry.node_id: entry}))
+    made = []
+    ext.make_refnode = lambda builder, fromdoc, todoc, target, child, title: (
+        made.append((todoc, target)) or child
+    )
+    node = {
+        "refdomain": "py",
+        "reftype": "attr",
+        "reftarget": "innovation",
+        "refdoc": "x",
+        "py:module": "navcore.estimation.kalman",
+        "py:class": "KalmanUpdate",
+    }
+    app = SimpleNamespace(builder=None)
+    assert ext._field_reference(app, env, node, nodes.literal()) is not None
+    assert made == [("reference/estimation", "navcore.estimation.kalman.KalmanUpdate")]
+    node["reftarget"] = "not_a_field"
+    assert ext._field_reference(app, env, node, nodes.literal()) is None
