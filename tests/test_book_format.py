@@ -89,7 +89,7 @@ def test_tidy_numbers_keeps_the_digits_and_drops_signed_zeros():
 def test_book_table_tidies_every_cell_and_prints_a_float_index_exactly():
     frame = pd.DataFrame({"p_f": [1e-4, -1e-9]}, index=pd.Index([60.0, 150.0], name="t (s)"))
     table = book.table(frame.style.format("{:.2e}"))
-    head, body = table.cells()
+    _head, body = table.cells()
     assert [row[0] for row in body[1:]] == ["60", "150"]
     assert body[1][1] == "1.00×10⁻⁴" and body[2][1] == "-1.00×10⁻⁹"
     html = table._repr_html_()
@@ -105,7 +105,8 @@ def test_number_gate_finds_each_pattern_and_leaves_code_and_math_alone():
     gate = _tool("check_numbers")
     page = """<html><body><article class="bd-article">
     <p>The gain is 1.00e-04 and the error 1.6344416666666666 m; at rest -0.000.</p>
-    <div class="cell_output"><pre>{180.0: 18.02}</pre><table><tr><th>t</th><td>60.000000</td></tr></table></div>
+    <div class="cell_output"><pre>{180.0: 18.02}</pre>
+    <table><tr><th>t</th><td>60.000000</td></tr></table></div>
     <div class="cell_input"><pre>x = 1e-9; y = {1.0: 2}</pre></div>
     <span class="math">10^{-4} -0</span>
     <p>doi:10.1115/1.3662552, 0.0000 and 1.00×10⁻⁴.</p>

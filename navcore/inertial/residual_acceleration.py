@@ -33,7 +33,8 @@ deviations the range is cut there instead), so that
     \begin{aligned}
     P\{|\delta a|\le r\} = \int_{-\pi/2}^{\pi/2}\!\int_{-\pi/2}^{\pi/2}
         &\frac{r\cos s}{\sqrt{\lambda_1}}\,\varphi\Big(\frac{r\sin s}{\sqrt{\lambda_1}}\Big)\\
-        &\times\frac{r\cos s\cos t}{\sqrt{\lambda_2}}\,\varphi\Big(\frac{r\cos s\sin t}{\sqrt{\lambda_2}}\Big)\\
+        &\times\frac{r\cos s\cos t}{\sqrt{\lambda_2}}\,
+        \varphi\Big(\frac{r\cos s\sin t}{\sqrt{\lambda_2}}\Big)\\
         &\times\operatorname{erf}\Big(\frac{r\cos s\cos t}{\sqrt{2\lambda_3}}\Big)\,dt\,ds,
     \end{aligned}
 
