@@ -35,6 +35,7 @@ from navcore.detection.zakai import aperiodic_autocorrelation, m_sequence, piece
 from navcore.ledger import EXACT, Claim, Erratum, printed
 from navcore.ledger.inputs import InputSet
 from navcore.papers import atc10_multiple_access as ma
+from navcore.papers.atc10_quotes import quoted
 
 MA = ma.IN
 IN = InputSet("ATC10", "coverage_ma")
@@ -771,3 +772,6 @@ CLAIMS = [
         G_,
     ),
 ]
+
+#: Every claim quotes the paper (issue 27, item 5).
+CLAIMS = quoted(CLAIMS)

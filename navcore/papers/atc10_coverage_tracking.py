@@ -34,6 +34,7 @@ from navcore.location.multilateration import (
     position_trace,
 )
 from navcore.papers import atc10_tracking as trk
+from navcore.papers.atc10_quotes import quoted
 
 TR = trk.IN
 PAGE_GEOMETRY = trk.PAGE_GEOMETRY
@@ -1447,3 +1448,6 @@ CLAIMS = [
         PAGE_TRACKER,
     ),
 ]
+
+#: Every claim quotes the paper (issue 27, item 5).
+CLAIMS = quoted(CLAIMS)

@@ -31,6 +31,7 @@ from navcore.detection.neyman_pearson import (
 from navcore.ledger import EXACT, Claim, Erratum, Tolerance, figure_reading, printed
 from navcore.ledger.core import monte_carlo, prose
 from navcore.ledger.inputs import InputSet, input_cache
+from navcore.papers.atc10_quotes import quoted
 
 PAGE = "atc10/10-jamming-model"
 PAGE_K1 = "atc10/11-single-pulse"
@@ -1204,9 +1205,9 @@ CLAIMS: list[Claim] = [
         published=0.5,
         unit="",
         compute=erf_argument_coefficient,
-        tolerance=Tolerance(
-            reason="an exact coefficient, the printed 1/2: " + _ROUNDING, abs=1e-9, policy="exact"
-        ),
+        tolerance=printed(
+            "0.5", why="the printed fraction 1/2, compared to half a unit of its first decimal"
+        )[1],
         expected_status="discrepant",
         kind="reproduction",
         erratum=E_ERF,
@@ -1577,3 +1578,6 @@ for _i, (_k, _erp, _rf, _dia, _bw) in enumerate(TABLE_1_1):
                 discussed_in=PAGE_T11,
             )
         )
+
+#: Every claim quotes the paper (issue 27, item 5).
+CLAIMS = quoted(CLAIMS)

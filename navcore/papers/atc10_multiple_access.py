@@ -50,6 +50,7 @@ from navcore.detection.zakai import (
 )
 from navcore.ledger import EXACT, Claim, Erratum, Tolerance, monte_carlo, printed, prose
 from navcore.ledger.inputs import InputSet, input_cache
+from navcore.papers.atc10_quotes import quoted
 
 PAGE_NOISE = "atc10/20-multiple-access-noise"
 PAGE_ROC = "atc10/21-roc-bounds"
@@ -1341,3 +1342,6 @@ CLAIMS = [
         discussed_in=PAGE_ROC,
     ),
 ]
+
+#: Every claim quotes the paper (issue 27, item 5).
+CLAIMS = quoted(CLAIMS)

@@ -55,6 +55,7 @@ from navcore.location.multilateration import (
     synchronous_orbit_radius,
     zenith_angles_deg,
 )
+from navcore.papers.atc10_quotes import quoted
 
 PAGE_GEOMETRY = "atc10/30-tracking-geometry"
 PAGE_TRACKER = "atc10/31-clock-tracking"
@@ -1184,9 +1185,11 @@ def _table_4_3_tolerance(text: str, column: str) -> Tolerance:
     """
     if column == "psi":
         half = printed(text)[1].absolute
-        if half >= 0.0025:
-            return printed(text, why="read from Fig. 4.1; the printed digits are coarser than the figure")[1]
-        return figure_reading(0.0025, figure="Fig. 4.1", axis="psi on a 0-1 axis, 0.0025 per reading")
+        return figure_reading(
+            max(half, 0.0025),
+            figure="Fig. 4.1",
+            axis="psi on a 0-1 axis read to 0.0025, or the printed half digit where that is coarser",
+        )
     if column in ("sd0", "sdN", "sdN1") and len(text) > 3 and text.endswith("0"):
         return printed(
             f"{text[:3]}e{len(text) - 3}",
@@ -1215,7 +1218,7 @@ for (_ex, _s0), _row in TABLE_4_3.items():
             Claim(
                 id=f"ATC10-tab4.3-ex{_ex}-s{int(_s0)}-{_col}",
                 paper="ATC10",
-                locator="Table 4.3",
+                locator="Table 4.3 col. (ii) (Fig. 4.1)" if _col == "psi" else "Table 4.3",
                 quantity=f"Example {_ex}, $\\sigma_0$ = {int(_s0)} ns: {_TAB3_NAMES[_col]}",
                 published=_pub,
                 unit="" if _ci < 2 else "ft",
@@ -1618,3 +1621,6 @@ ERRATA += [
         claims=("ATC10-appH-scalar-gain-printed",),
     ),
 ]
+
+#: Every claim quotes the paper (issue 27, item 5).
+CLAIMS = quoted(CLAIMS)
