@@ -53,7 +53,7 @@ IN.convention(
     reason="'a strong threshold behavior' (Sec. 2.1) and 'a strong thresholding property' (Sec. 2.8) name "
     "no level: the fall of a bound is measured from a fraction of its J -> infinity ceiling down to 1e-6 of "
     "it, and the text does not say from which",
-    quantity="where the fall of a bound that makes a threshold starts, as a fraction of its ceiling",
+    quantity="start of a bound's fall, as a fraction of its ceiling",
 )
 IN.convention(
     "threshold_width_db",

@@ -154,14 +154,14 @@ IN.convention(
     0.0,
     unit="decades",
     readings={
-        "the crossing of the stated level, as computed": 0.0,
-        "the level read 0.05 decade high on the figure's logarithmic axis": 0.05,
-        "the level read 0.05 decade low on the figure's logarithmic axis": -0.05,
+        "the stated level, 0.01 N_T": 0.0,
+        "0.05 decade above it, as misread on a logarithmic axis": 0.05,
+        "0.05 decade below it, as misread on a logarithmic axis": -0.05,
     },
     reason="Tables 1.1 and 2.1 and the nominal 33 dBW were read off the (lost) curves of Figs. 2.1-2.16 "
     "where they cross 0.01 N_T (Secs. 2.7-2.8); a hand reading places a level on a logarithmic axis to "
     "about 0.05 decade (12 %), which moves a shallow crossing by a dB or more",
-    quantity="error of the N_ADL level at which a figure was read, in decades",
+    quantity="N_ADL level of the figure readings",
 )
 IN.convention(
     "step_p_dl",

@@ -107,7 +107,7 @@ IN.convention(
 IN.convention(
     "noise_density_reading",
     0.5,
-    quantity="what the worked example's p = (N - 1)/(B alpha) stands for: output variance = p times this",
+    quantity="meaning of the worked example's p (output variance per unit of p)",
     readings={
         "the one-sided density N0 of an in-band white noise, whose matched-filter output variance is "
         "N0/2, so Exp_g = a^2/p": 0.5,

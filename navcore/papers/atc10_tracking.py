@@ -254,7 +254,7 @@ IN.convention(
     "gm_m3_s2",
     3.986004418e14,
     unit="m^3/s^2",
-    quantity="Earth's gravitational constant GM, which fixes the radius of a synchronous orbit",
+    quantity="Earth's gravitational constant GM",
     readings={
         "the WGS-84 value, 3.986004418e14 m^3/s^2": 3.986004418e14,
         "the WGS-72 value of the paper's time, 3.986008e14 m^3/s^2": 3.986008e14,
@@ -317,7 +317,7 @@ IN.convention(
 IN.convention(
     "rule4_threshold_reference",
     "sd0",
-    quantity="what the acceptable three-satellite error of rule (4) is a multiple of",
+    quantity="form of the acceptable three-satellite error of rule (4)",
     readings={
         "a multiple of the all-satellite least-squares rms error sd_0": "sd0",
         "a multiple of the tracking limit sd_N": "sdN",
