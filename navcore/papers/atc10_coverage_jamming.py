@@ -726,7 +726,7 @@ CLAIMS: list[Claim] = [
         note="$K = 10$, $P(\\rho=1|H_0) = 0.2$, $P(\\rho=1|H_1) = 0.6$, $\\lambda_1$ in {0.5, 1, 3}, $K_0$ "
         "= 0-10: the printed right side $K \\ln(\\lambda_1 b)$ decides otherwise in 20 of the 33 cases; "
         "$K \\ln(\\lambda_1 / b)$, $b = P(\\rho=1|H_0)/P(\\rho=1|H_1)$, in none. $\\lambda_1$ is free, so "
-        "no printed number depends on it. Oracle: exact rational arithmetic.",
+        "no printed number depends on it. Checked independently with exact rational arithmetic.",
         discussed_in=PAGE,
     ),
     _statement(

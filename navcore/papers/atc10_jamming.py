@@ -1193,8 +1193,8 @@ CLAIMS: list[Claim] = [
         oracle_tolerance=EXACT,
         note="Evaluated at the $K = 1$, $P_{DL} = 0.88$ threshold, $p_f \\approx 10^{-6}$: "
         "$(1 - p_f)^{2 \\times 10^7} \\approx e^{-20}$ where $1 - (1 - p_f)^{2 \\times 10^7} \\approx 1$, so "
-        "the printed form is $e^{-19.6}$ times $F$ (1e-6 in the logarithm allows for rounding only). Oracle: "
-        "40-digit arbitrary-precision arithmetic.",
+        "the printed form is $e^{-19.6}$ times $F$ (1e-6 in the logarithm allows for rounding only). Checked "
+        "independently with 40-digit arbitrary-precision arithmetic.",
         discussed_in=PAGE,
     ),
     Claim(

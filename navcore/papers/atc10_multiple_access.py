@@ -780,7 +780,7 @@ ERRATA = [
         "'$\\mathrm{ROC}_g$ $p_f$ below the lower bound of the actual $p_f$' cannot be made with it.",
         evidence="Tilted-Chebyshev derivation; the printed version (sign of $\\phi_1$) lies above the "
         "Chernoff upper bound; the corrected one lies below the exact compound-binomial and "
-        "stratified Monte Carlo tails at every tested point (checked by the library's tests).",
+        "stratified Monte Carlo tails at every tested point.",
         claims=(
             "ATC10-sec3.5-lower-bound-printed",
             "ATC10-sec3.8-gauss-always-optimistic",
@@ -1014,8 +1014,8 @@ CLAIMS = [
         tolerance=STATEMENT,
         expected_status="consistent",
         note="Chernoff exponents of $p_f$, four densities (C1, C3, C4 the book's), at the assumed contours "
-        "$1/\\sqrt{3b}$ = 3..8. Verdict changed from reproduced: the contour labels and three of the four "
-        "densities are lost with Figs. 3.2-3.6.",
+        "$1/\\sqrt{3b}$ = 3..8. The contour labels and three of the four densities are lost with "
+        "Figs. 3.2-3.6.",
         discussed_in=PAGE_ROC,
     ),
     Claim(
@@ -1061,8 +1061,7 @@ CLAIMS = [
         expected_status="consistent",
         note="Largest relative error over thresholds 0.1..0.9 and $1/\\sqrt{3b}$ = 3..8, against the assumed "
         "reading of 'can be approximated' (1e-5 to 1 %); (3.7.27) read with the square root restored "
-        "(E3-9). Verdict changed from reproduced: the accuracy 'can be approximated' asks for is an "
-        "assumption (it was a tolerance of 1e-4 with no policy).",
+        "(E3-9). The accuracy 'can be approximated' asks for is an assumption.",
         discussed_in=PAGE_ROC,
     ),
     Claim(
@@ -1302,7 +1301,7 @@ CLAIMS = [
         "delays and carrier phases, against a target code with low sidelobes; $E(n^2) = (N-1) q b$ with "
         "$q = 2 L \\tau_c/\\alpha$. The target's first sidelobe $R_1$ shifts $b$ by the factor $1 + R_1/2$ "
         "(up to "
-        "1/(2L)); the tolerance is now the sampling error only (before, the $R_1$ factor was added to it).",
+        "1/(2L)); the tolerance is the sampling error only.",
         discussed_in=PAGE_ZAKAI,
     ),
     Claim(

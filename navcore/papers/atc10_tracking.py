@@ -1242,10 +1242,7 @@ for (_ex, _s0), _row in TABLE_4_3.items():
                 )
                 + "."
                 + _TAB43_INCONSISTENT.get((_ex, _s0, _col), _TAB43_NOTES.get((_ex, _s0, _col), ""))
-                + " Verdict changed from "
-                + ("consistent" if _col == "psi" else "reproduced")
-                + ": the unrounded Table 4.2 the paper computed from is an assumption (before, a "
-                "rounding allowance was computed from the model into the tolerance).",
+                + " The unrounded Table 4.2 the paper computed from is an assumption.",
                 discussed_in=PAGE_EXAMPLES,
             )
         )
@@ -1297,7 +1294,7 @@ CLAIMS += [
         note="'Significant' read as: tracking leaves at most half of the mean-square position error "
         "(assumed, 0.3-0.6); $sd_N^2 / sd_0^2 = 0.19$ at $\\sigma_0 = \\sigma$, 0.05 at $\\sigma_0 = 0.1 "
         "\\sigma$. "
-        "Verdict changed from reproduced: the reading of 'significantly' is an assumption.",
+        "The reading of 'significantly' is an assumption.",
         discussed_in=PAGE_EXAMPLES,
     ),
     Claim(
@@ -1315,8 +1312,8 @@ CLAIMS += [
         tolerance=EXACT,
         expected_status="consistent",
         note="Same reading: $sd_N^2/sd_0^2 = 0.32$ at $\\sigma_0$ = 5 ns, 0.55 at 50 ns; true for thresholds "
-        "0.32-0.55, false at the ends of the assumed 0.3-0.6. Verdict changed from reproduced: the "
-        "reading of 'significantly' is an assumption.",
+        "0.32-0.55, false at the ends of the assumed 0.3-0.6. The reading of 'significantly' is an "
+        "assumption.",
         discussed_in=PAGE_EXAMPLES,
     ),
     Claim(
