@@ -101,6 +101,8 @@ SIGMA0_INPUTS = {5.0: "sigma0_low_ns", 50.0: "sigma0_mid_ns", 500.0: "sigma0_hig
 # Inputs, each declared once with its provenance
 # ---------------------------------------------------------------------------------------
 IN = InputSet("ATC10", "tracking")
+#: Rule (4)'s 'about 30 to 60 seconds' as printed (Example I, Example II).
+RULE4_SECONDS_TEXT = (30.0, 60.0)
 
 _TABLE_4_1: dict[str, tuple[tuple[float, float], ...]] = {
     "I": (
@@ -326,6 +328,20 @@ IN.convention(
     },
     reason="rule (4) says the tracking error 'will be acceptable' for about 30 to 60 seconds and names "
     "no threshold; these are the forms a threshold common to both examples can take",
+)
+IN.published(
+    "rule4_seconds_exI",
+    RULE4_SECONDS_TEXT[0],
+    unit="s",
+    locator="Sec. 4.6, rule (4) ('varies from about 30 to 60 seconds')",
+    quantity="acceptable three-satellite time, lower end (Example I)",
+)
+IN.published(
+    "rule4_seconds_exII",
+    RULE4_SECONDS_TEXT[1],
+    unit="s",
+    locator="Sec. 4.6, rule (4) ('varies from about 30 to 60 seconds')",
+    quantity="acceptable three-satellite time, upper end (Example II)",
 )
 IN.assumed(
     "significant_ms_fraction",
@@ -761,8 +777,13 @@ def _oracle_jump_share_tr_and_s(example: str, sigma0: float) -> float:
     return (var_n1 - var_n - d_gain) / (var_n1 - var_n)
 
 
-#: 'About 30 to 60 seconds' (rule 4): the prose table's 'about' around each printed end.
-RULE4_SECONDS = (30.0, 60.0)
+#: 'About 30 to 60 seconds' (rule 4), as printed (labels; computations read :func:`rule4_seconds`).
+RULE4_SECONDS = RULE4_SECONDS_TEXT
+
+
+def rule4_seconds() -> tuple[float, float]:
+    """Rule (4)'s printed 30 s (Example I) and 60 s (Example II), read from :data:`IN`."""
+    return (IN.rule4_seconds_exI, IN.rule4_seconds_exII)
 
 
 def rule4_threshold_interval(
@@ -794,7 +815,7 @@ def rule4_common_threshold_exists(inputs_of: dict[str, dict[str, float]], refere
     """Rule (4): one acceptability threshold gives about 30 s in Example I and about 60 s in II."""
     (a_lo, a_hi), (b_lo, b_hi) = (
         rule4_threshold_interval(ex, inputs_of[ex], secs, reference)
-        for ex, secs in zip(EXAMPLES, RULE4_SECONDS, strict=True)
+        for ex, secs in zip(EXAMPLES, rule4_seconds(), strict=True)
     )
     return max(a_lo, b_lo) < min(a_hi, b_hi)
 
