@@ -1308,8 +1308,7 @@ CLAIMS: list[Claim] = [
         expected_status="not-reproducible",
         kind="reproduction",
         note="2 ft from Table 1.1; the dish gain needs a frequency and an efficiency the paper does not give "
-        "(assumed: L band 1-2 GHz, efficiency 0.5-0.7; 31.8 W at 1.6 GHz, 0.6). The printed 30 W lies inside "
-        "the band.",
+        "(assumed: L band 1-2 GHz, efficiency 0.5-0.7; 31.8 W at 1.6 GHz, 0.6).",
         discussed_in=PAGE_T11,
     ),
     Claim(
