@@ -88,10 +88,23 @@ IN.assumed(
     quantity="correlation of neighbouring matched-filter noise samples",
 )
 
-#: The p_f and window length of the correlated-sample check: the K >= 10 N_ADL thresholds lie at
-#: p_f = 0.11-0.27 and the track window of (C.14) holds 23.86 samples.
-WINDOW_PF = 0.2
-WINDOW_N = 24
+#: The Table 2.1 row whose threshold p_f the correlated-sample check uses (K = 100, P_DL = 0.999:
+#: p_f = 0.197; the K >= 10 thresholds lie at 0.11-0.27); the window is the track window of (C.14),
+#: 23.86 samples, rounded.
+WINDOW_ROW = 4
+
+
+def window_pf() -> float:
+    """p_f at the N_ADL threshold of Table 2.1's row :data:`WINDOW_ROW` (t = 0)."""
+    k, p_dl = aj.table21_design(WINDOW_ROW)
+    return math.exp(aj.threshold_log_pf(p_dl, k))
+
+
+def window_n() -> int:
+    """Samples in the track window of (C.14), n_v = (8B/3) v alpha / c, rounded to a whole window."""
+    return round(aj.geometry().samples_per_track_window)
+
+
 #: K and t at which the list count of (B.9) is checked (K from Table 2.1; Kt = 2.5 not an integer).
 B9_T = 0.25
 
@@ -404,14 +417,14 @@ def min_nonempty_lists(k: int, t: float) -> int:
 
 def _window_empty_ratio(rho: float) -> float:
     """P(no declaration in an n-sample window) for neighbours correlated rho, over (1 - p_f)^n."""
-    n = WINDOW_N
+    n, pf = window_n(), window_pf()
     cov = np.eye(n) + rho * (np.eye(n, k=1) + np.eye(n, k=-1))
-    u = -special.ndtri(WINDOW_PF)
+    u = -special.ndtri(pf)
     dist = stats.multivariate_normal(
         mean=np.zeros(n), cov=cov, maxpts=2_000_000, abseps=1e-7, releps=1e-5, seed=19720626
     )
     p_empty = dist.cdf(np.full(n, u))
-    return float(p_empty / (1 - WINDOW_PF) ** n)
+    return float(p_empty / (1 - pf) ** n)
 
 
 def window_empty_ratio() -> float:
@@ -805,7 +818,8 @@ CLAIMS: list[Claim] = [
         paper="ATC10",
         locator="Eqs. (B.6), (C.14); Sec. 2.3",
         quantity="(B.6)'s product gives the probability that a window of samples taken at twice the Nyquist "
-        "rate holds no declaration (24 samples, $p_f = 0.2$)",
+        "rate holds no declaration (the 24-sample track window at the $K = 100$, $P_{DL} = 0.999$ "
+        "threshold, $p_f = 0.20$)",
         published=True,
         unit="statement",
         kind="statement",
