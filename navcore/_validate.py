@@ -695,6 +695,7 @@ RESULT_RECORDS = frozenset(
     {
         "CovarianceAnalysis",
         "CovarianceHistory",
+        "DilutionOfPrecision",
         "ConstellationParameters",
         "GainHistory",
         "GaussNewtonResult",

@@ -43,13 +43,13 @@ from navcore.location.multilateration import (
     beta_parameter,
     clock_direction_term,
     frame_dependent_clock_term,
-    geometric_dilution,
     line_of_sight_matrix,
     most_widely_spaced_triplet,
+    position_dilution,
     position_on_sphere,
     position_trace,
     synchronous_orbit_radius,
-    zenith_angles_deg,
+    zenith_angles,
 )
 
 PAGE_GEOMETRY = "atc10/30-tracking-geometry"
@@ -304,15 +304,16 @@ def _positions(
     pts = table_4_1(example)
     lat0, lon0 = aircraft_lat_lon()
     sign = IN.longitude_sign * (-1.0 if west_positive else 1.0)
-    sats = position_on_sphere(pts[:, 0], sign * pts[:, 1], radius_ratio)
-    ac = position_on_sphere(lat0, sign * lon0, 1.0)
+    sats = position_on_sphere(pts[:, 0], sign * pts[:, 1], radius_ratio, deg=True)
+    ac = position_on_sphere(lat0, sign * lon0, 1.0, deg=True)
     return sats, ac
 
 
 @input_cache
 def example_line_of_sight(example: str, radius_ratio: float, west_positive: bool = False) -> np.ndarray:
     """Unit vectors satellite -> aircraft (ECEF rows) for Table 4.1 example ``example``."""
-    return line_of_sight_matrix(*_positions(example, radius_ratio, west_positive))
+    sats, ac = _positions(example, radius_ratio, west_positive)
+    return -line_of_sight_matrix(ac, sats)  # navcore's lines of sight point aircraft -> satellite
 
 
 @input_cache
@@ -332,7 +333,7 @@ def table_4_2_from_geometry(
         "s_all": clock_direction_term(U),
         "s_123": clock_direction_term(U[:3]),
         "s_123_printed": frame_dependent_clock_term(U[:3]),
-        "dilution": geometric_dilution(U),
+        "dilution": position_dilution(U),
     }
 
 
@@ -404,7 +405,8 @@ def _oracle_invariants(example: str, radius_ratio: float) -> dict[str, Any]:
 
 
 def max_zenith_angle_deg(example: str, radius_ratio: float) -> float:
-    return float(zenith_angles_deg(*_positions(example, radius_ratio)).max())
+    sats, ac = _positions(example, radius_ratio)
+    return float(zenith_angles(ac, sats, deg=True).max())
 
 
 def within_cone(example: str, radius_ratio: float) -> bool:
@@ -415,7 +417,7 @@ def within_cone(example: str, radius_ratio: float) -> bool:
 def best_triplet(example: str, radius_ratio: float, criterion: str = "trace") -> tuple[int, int, int]:
     """Most widely spaced triplet among all satellites of the example (0-based)."""
     sats, ac = _positions(example, radius_ratio)
-    return most_widely_spaced_triplet(sats, ac, cone_half_angle_deg=90.0, criterion=criterion)[0]
+    return most_widely_spaced_triplet(ac, sats, cone_half_angle=90.0, criterion=criterion, deg=True)[0]
 
 
 # --------------------------------------------------------------------------- Table 4.3
