@@ -31,8 +31,7 @@ Names
     Phi, Q, H, R`` in the Kalman filter; ``a3, b3`` the third-order loop coefficients of
     :math:`\omega_0 s^2` and :math:`\omega_0^2 s`, see
     :func:`navcore.gnss.tracking.third_order_noise_bandwidth_hz`). Error-state blocks have
-    fixed names, enumerated by :class:`navcore.estimation.layout.InsBlock` ("gyro drift" is
-    the gyro bias); an unknown name raises and suggests the closest one.
+    fixed names, enumerated by :class:`navcore.estimation.layout.InsBlock`; an unknown name raises and suggests the closest one.
 Options that remove part of a model
     are explicit keywords, never defaults that change a result silently; where one exists it
     is documented where it acts (``vertical_channel=False`` in

@@ -582,7 +582,10 @@ def checked(
             if kwargs.get("validate", True) is False:  # the caller checked at its boundary
                 return f(*args, **kwargs)
             n = len(args)
-            deg = bool(kwargs.get("deg", deg_default)) if has_deg else None
+            deg: bool | None = None
+            if has_deg:  # a deg that is not a bool fails its own type check below
+                deg_value = kwargs.get("deg", deg_default)
+                deg = bool(deg_value) if isinstance(deg_value, bool | np.bool_) else False
             for pos, name, kind, allows_none, inf_ok, interval in specs:
                 if pos is not None and pos < n:
                     value = args[pos]

@@ -182,11 +182,15 @@ def _vectors(name: str, v: ArrayLike, size: int = 3) -> Array:
 
 def _mv(C: Array, v: Array) -> Array:
     """``C @ v`` over broadcast stacks: (..., 3, 3) times (..., 3)."""
+    if C.ndim == 2:  # one matrix for all vectors: one matrix product (rows of v times C^T)
+        return v @ C.T
     return np.matmul(C, v[..., None])[..., 0]
 
 
 def _mtv(C: Array, v: Array) -> Array:
     """``C.T @ v`` over broadcast stacks."""
+    if C.ndim == 2:
+        return v @ C
     return np.matmul(np.swapaxes(C, -1, -2), v[..., None])[..., 0]
 
 
@@ -657,7 +661,7 @@ def quat_from_dcm(C: ArrayLike) -> Array:
     four_sq = np.stack([1.0 + tr, 1.0 + 2 * c00 - tr, 1.0 + 2 * c11 - tr, 1.0 + 2 * c22 - tr], -1)
     k = np.argmax(four_sq, axis=-1)[..., None]
     # 4 q_k * q for each choice of k; the chosen q_k = sqrt(four_sq_k) / 2 >= 1/2
-    s = np.sqrt(np.maximum(np.take_along_axis(four_sq, k, -1), 1.0))  # = 2 q_k
+    qk = 0.5 * np.sqrt(np.maximum(np.take_along_axis(four_sq, k, -1), 1.0))
     cand = np.stack(
         [
             np.stack([1.0 + tr, c21 - c12, c02 - c20, c10 - c01], -1),
@@ -667,7 +671,8 @@ def quat_from_dcm(C: ArrayLike) -> Array:
         ],
         -2,
     )
-    q = np.take_along_axis(cand, k[..., None], -2)[..., 0, :] / (2.0 * s)
+    q = np.take_along_axis(cand, k[..., None], -2)[..., 0, :] / (4.0 * qk)
+    np.put_along_axis(q, k, qk, -1)  # the chosen component itself, sqrt(4 q_k^2) / 2
     return _canonical(q / np.linalg.norm(q, axis=-1, keepdims=True))
 
 

@@ -29,7 +29,7 @@ position every 10 s when at least four codes are tracked and the expected horizo
 error is small enough, barometric altitude, and Doppler ground speed in body axes.
 
 Discretisation: :math:`\Phi = \sum_{j\le 4} (F\Delta t)^j/j!` (exact for the
-nilpotent chains gyro drift -> attitude -> velocity -> position) and
+nilpotent chains gyro bias -> attitude -> velocity -> position) and
 :math:`Q = \int_0^{\Delta t}\Phi(s)\,GQG^T\Phi(s)^T ds` by Gauss-Legendre quadrature,
 relinearised whenever the flight condition changes (1-s and 10-s steps are far below the
 84-min Schuler period).
@@ -54,6 +54,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from navcore._validate import (
     COUNT,
+    COVARIANCE,
+    COVARIANCE_STACK,
     NONNEGATIVE,
     OPEN_PROBABILITY,
     POSITIVE,
@@ -123,8 +125,8 @@ def embedding(filter_layout: StateLayout, truth_layout: StateLayout) -> NDArray[
     Examples
     --------
     >>> from navcore.inertial.error_dynamics import ins_error_layout
-    >>> truth = ins_error_layout("position", "velocity", "misalignment", "gyro drift")
-    >>> embedding(ins_error_layout("position", "gyro drift"), truth)
+    >>> truth = ins_error_layout("position", "velocity", "misalignment", "gyro bias")
+    >>> embedding(ins_error_layout("position", "gyro bias"), truth)
     array([ 0,  1,  2,  9, 10, 11])
     """
     if not filter_layout.issubset(truth_layout):
@@ -1272,5 +1274,9 @@ check_public(
         "range_rate_noise": NONNEGATIVE,
         "pseudorange_bias_sigma": NONNEGATIVE,
         "max_ehe_m": POSITIVE,
+        "P2": COVARIANCE,
+        "S": COVARIANCE_STACK,
+        "P0_filter": COVARIANCE_STACK,
+        "P0_apriori": COVARIANCE_STACK,
     },
 )

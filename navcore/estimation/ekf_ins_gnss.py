@@ -32,7 +32,16 @@ from typing import Any, Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import COUNT, NONNEGATIVE, POSITIVE, check_public, require_integer, require_positive
+from navcore._validate import (
+    COUNT,
+    NONNEGATIVE,
+    POSITIVE,
+    ROTATION_STACK,
+    UNIT_QUATERNION_STACK,
+    check_public,
+    require_integer,
+    require_positive,
+)
 from navcore.estimation.kalman import symmetrize
 from navcore.frames import dcm_from_euler, quat_from_dcm, quat_from_rotvec
 from navcore.gnss.carrier_phase import dd_covariance
@@ -768,5 +777,7 @@ check_public(
         "clock_phase_walk": NONNEGATIVE,
         "init_time": NONNEGATIVE,
         "attitude_min_sats": COUNT,
+        "q": UNIT_QUATERNION_STACK,
+        "C": ROTATION_STACK,
     },
 )

@@ -229,6 +229,13 @@ def _check_f(F: np.ndarray) -> np.ndarray:
     F = np.atleast_2d(as_finite_array("F", F))
     if F.ndim != 2 or F.shape[1] != 3 or F.shape[0] < 3:
         raise ValueError(f"F must be K x 3 with K >= 3, got shape {F.shape}")
+    norm = np.linalg.norm(F, axis=1)
+    if np.max(np.abs(norm - 1.0)) > 1e-6:
+        raise ValueError(
+            "F must have unit line-of-sight rows (norm 1 to within 1e-6), got a row norm of "
+            f"{float(norm[np.argmax(np.abs(norm - 1.0))]):.6g}; satellite positions are not lines "
+            "of sight (line_of_sight_matrix(aircraft, satellites) makes them)"
+        )
     if np.linalg.matrix_rank(F) < 3:
         raise ValueError("F must have rank 3 (satellites not coplanar with the aircraft)")
     return F
