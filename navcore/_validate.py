@@ -339,7 +339,9 @@ class UnitQuaternion:
 
     def check(self, name: str, value: Any, deg: bool | None = None) -> None:
         arr = np.asarray(value, dtype=float)
-        _stack_shape(name, arr, (4,), self.stack, "a quaternion [w, x, y, z]" + (" or a stack" if self.stack else ""))
+        _stack_shape(
+            name, arr, (4,), self.stack, "a quaternion [w, x, y, z]" + (" or a stack" if self.stack else "")
+        )
         if arr.size == 0:
             return
         norm = np.sqrt(np.einsum("...i,...i->...", arr, arr)).ravel()
@@ -365,7 +367,9 @@ class RotationMatrix:
 
     def check(self, name: str, value: Any, deg: bool | None = None) -> None:
         arr = np.asarray(value, dtype=float)
-        _stack_shape(name, arr, (3, 3), self.stack, "a rotation matrix" + (" or a stack" if self.stack else ""))
+        _stack_shape(
+            name, arr, (3, 3), self.stack, "a rotation matrix" + (" or a stack" if self.stack else "")
+        )
         if arr.size == 0:
             return
         err = np.matmul(arr, np.swapaxes(arr, -1, -2)) - np.eye(3)
@@ -403,7 +407,9 @@ class Covariance:
         arr = np.asarray(value, dtype=float)
         if arr.ndim < 2 or arr.shape[-1] != arr.shape[-2] or (not self.stack and arr.ndim != 2):
             want = "(..., n, n)" if self.stack else "(n, n)"
-            raise ValueError(f"{name} must be a square covariance matrix of shape {want}, got shape {arr.shape}")
+            raise ValueError(
+                f"{name} must be a square covariance matrix of shape {want}, got shape {arr.shape}"
+            )
         if arr.size == 0:
             return
         if self.allow_inf_diagonal:
@@ -415,7 +421,9 @@ class Covariance:
                 lines = inf[..., :, None] | inf[..., None, :]
                 off = lines & ~np.eye(arr.shape[-1], dtype=bool)
                 if np.any(arr[off] != 0.0):
-                    raise ValueError(f"{name} must be zero off the diagonal in a row or column of infinite variance")
+                    raise ValueError(
+                        f"{name} must be zero off the diagonal in a row or column of infinite variance"
+                    )
                 arr = np.where(lines, 0.0, arr)
             elif np.any(np.isinf(arr)):
                 raise ValueError(f"{name} must have infinite entries only on its diagonal")
@@ -440,7 +448,9 @@ def _require_psd(name: str, arr: NDArray[np.float64], rtol: float, definite: boo
     smallest = eig[..., 0]
     floor = -rtol * np.maximum(eig[..., -1], 0.0)
     if definite and np.any(smallest <= 0):
-        raise ValueError(f"{name} must be positive definite (smallest eigenvalue {float(np.min(smallest)):.3g})")
+        raise ValueError(
+            f"{name} must be positive definite (smallest eigenvalue {float(np.min(smallest)):.3g})"
+        )
     if np.any(smallest < floor):
         raise ValueError(
             f"{name} must be positive semi-definite (smallest eigenvalue {float(np.min(smallest)):.3g})"
@@ -546,8 +556,9 @@ def checked(
     constraint of another kind: an :class:`Angle` (bounded by its unit: radians, or degrees
     when the call passes ``deg=True``), a :class:`UnitQuaternion`, a :class:`RotationMatrix`
     or a :class:`Covariance` (these check their shapes too); ``None`` removes a module-wide
-    entry for one function. Other shape constraints stay in the function body. Every failure raises a ``TypeError`` or
-    ``ValueError`` that names the parameter as the caller spelled it.
+    entry for one function. Other shape constraints stay in the function body. Every
+    failure raises a ``TypeError`` or ``ValueError`` that names the parameter as the caller
+    spelled it.
 
     A call with ``validate=False`` (for functions that have that keyword) skips the checks.
     """
@@ -575,7 +586,11 @@ def checked(
         names = tuple(sig.parameters)
         deg_param = sig.parameters.get("deg")
         has_deg = deg_param is not None
-        deg_default = bool(deg_param.default) if has_deg and deg_param.default is not deg_param.empty else False
+        deg_default = (
+            bool(deg_param.default)
+            if deg_param is not None and deg_param.default is not inspect.Parameter.empty
+            else False
+        )
 
         @functools.wraps(f)
         def wrapper(*args: Any, **kwargs: Any) -> _R:

@@ -403,7 +403,11 @@ def euler_from_dcm(C_bn: ArrayLike, *, deg: bool = False) -> tuple[Any, Any, Any
     pitch = np.arcsin(np.clip(-C[..., 2, 0], -1.0, 1.0))
     roll = np.arctan2(C[..., 2, 1], C[..., 2, 2])
     yaw = np.arctan2(C[..., 1, 0], C[..., 0, 0])
-    return _float_or_array(_out(deg, roll)), _float_or_array(_out(deg, pitch)), _float_or_array(_out(deg, yaw))
+    return (
+        _float_or_array(_out(deg, roll)),
+        _float_or_array(_out(deg, pitch)),
+        _float_or_array(_out(deg, yaw)),
+    )
 
 
 def quat_multiply(q: ArrayLike, p: ArrayLike) -> Array:
@@ -749,7 +753,11 @@ def euler_from_quat(q: ArrayLike, *, deg: bool = False) -> tuple[Any, Any, Any]:
     pitch = np.arcsin(np.clip(-C[..., 2, 0], -1.0, 1.0))
     roll = np.arctan2(C[..., 2, 1], C[..., 2, 2])
     yaw = np.arctan2(C[..., 1, 0], C[..., 0, 0])
-    return _float_or_array(_out(deg, roll)), _float_or_array(_out(deg, pitch)), _float_or_array(_out(deg, yaw))
+    return (
+        _float_or_array(_out(deg, roll)),
+        _float_or_array(_out(deg, pitch)),
+        _float_or_array(_out(deg, yaw)),
+    )
 
 
 def quat_rotate(q: ArrayLike, v: ArrayLike) -> Array:
@@ -1456,7 +1464,9 @@ def _aer_of_enu(enu: Array, deg: bool) -> tuple[Array, Array, Array]:
 
 def _enu_of_aer(az: Array, el: Array, srange: Array) -> Array:
     horizontal = srange * np.cos(el)
-    return np.stack(np.broadcast_arrays(horizontal * np.sin(az), horizontal * np.cos(az), srange * np.sin(el)), -1)
+    return np.stack(
+        np.broadcast_arrays(horizontal * np.sin(az), horizontal * np.cos(az), srange * np.sin(el)), -1
+    )
 
 
 def enu_to_aer(r_enu: ArrayLike, *, deg: bool = False) -> tuple[Array, Array, Array]:

@@ -31,7 +31,6 @@ import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
-
 from test_api_inputs import PUBLIC, _parameters
 
 # --------------------------------------------------------------------------------------------
@@ -43,7 +42,12 @@ def _issue_30_cases() -> list[tuple[str, Callable[[], Any], str]]:
     from navcore.estimation.covariance import Measurement, propagate_covariance
     from navcore.estimation.covariance_analysis import circular_error_probable
     from navcore.frames import dcm_from_quat, quat_rotate
-    from navcore.inertial.error_dynamics import ErrorSources, error_dynamics, initial_covariance, ins_error_layout
+    from navcore.inertial.error_dynamics import (
+        ErrorSources,
+        error_dynamics,
+        initial_covariance,
+        ins_error_layout,
+    )
     from navcore.inertial.imu import ImuSpec
     from navcore.inertial.trajectories import straight_and_level
     from navcore.location.multilateration import position_dilution
@@ -58,11 +62,19 @@ def _issue_30_cases() -> list[tuple[str, Callable[[], Any], str]]:
         (
             "3 measurement variance -0.5",
             lambda: propagate_covariance(
-                np.eye(1), [0.0, 1.0], np.eye(1), np.eye(1), lambda k: [Measurement(np.eye(1), -0.5 * np.eye(1))]
+                np.eye(1),
+                [0.0, 1.0],
+                np.eye(1),
+                np.eye(1),
+                lambda k: [Measurement(np.eye(1), -0.5 * np.eye(1))],
             ),
             "R",
         ),
-        ("4 Q = -0.5 I", lambda: propagate_covariance(np.eye(2), [0.0, 1.0], np.eye(2), -0.5 * np.eye(2)), "Q"),
+        (
+            "4 Q = -0.5 I",
+            lambda: propagate_covariance(np.eye(2), [0.0, 1.0], np.eye(2), -0.5 * np.eye(2)),
+            "Q",
+        ),
         ("5 positions for lines of sight", lambda: position_dilution(sats), "F"),
         (
             "6 latitude 48 as radians",
@@ -158,6 +170,23 @@ def _trajectory() -> Any:
     return straight_and_level(4.0, speed=50.0, dt=1.0, lat0=0.7)
 
 
+def _emitter_call() -> dict[str, Any]:
+    """The emitter-location example of its docstring, with a weight matrix."""
+    from navcore.location.emitter import doppler_frequency
+
+    s = np.linspace(0.0, 1.0, 11)
+    p = np.column_stack([2000.0 * s, 500.0 * np.sin(np.pi * s), -1000.0 - 300.0 * s])
+    v = np.gradient(p, axis=0) * 10.0
+    m = doppler_frequency(1e9, [1000.0, 3000.0, 0.0], p, v)
+    return {
+        "measurements": m,
+        "position": p,
+        "velocity": v,
+        "initial": [900.0, 2800.0, -100.0, 1e9 + 5.0],
+        "W": np.eye(11),
+    }
+
+
 Q1 = np.array([math.cos(0.3), 0.0, 0.0, math.sin(0.3)])
 C1 = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
 SPD2 = np.array([[2.0, 0.5], [0.5, 1.0]])
@@ -177,7 +206,10 @@ REGISTRY: dict[str, tuple[Callable[[], dict[str, Any]], dict[str, str]]] = {
     "frames.dcm_from_euler": (lambda: {"roll": 0.1, "pitch": 0.2, "yaw": 0.3}, {"pitch": VERTICAL}),
     "frames.quat_from_euler": (lambda: {"roll": 0.1, "pitch": [0.2, 0.1], "yaw": 0.3}, {"pitch": VERTICAL}),
     "frames.radii_of_curvature": (lambda: {"lat": 0.5}, {"lat": LATITUDE}),
-    "frames.geodetic_to_ecef": (lambda: {"lat": [0.5, 0.6], "lon": 0.1, "h": 0.0}, {"lat": LATITUDE, "lon": LONGITUDE}),
+    "frames.geodetic_to_ecef": (
+        lambda: {"lat": [0.5, 0.6], "lon": 0.1, "h": 0.0},
+        {"lat": LATITUDE, "lon": LONGITUDE},
+    ),
     "frames.dcm_ecef_to_ned": (lambda: {"lat": 0.5, "lon": 0.1}, {"lat": LATITUDE, "lon": LONGITUDE}),
     "frames.dcm_ecef_to_enu": (lambda: {"lat": 0.5, "lon": 0.1}, {"lat": LATITUDE, "lon": LONGITUDE}),
     "frames.ecef_to_ned": (
@@ -239,7 +271,9 @@ REGISTRY: dict[str, tuple[Callable[[], dict[str, Any]], dict[str, str]]] = {
     ),
     "gnss.constellation.visible": (
         lambda: {
-            "constellation": importlib.import_module("navcore.gnss.constellation").nominal_gps_constellation(),
+            "constellation": importlib.import_module(
+                "navcore.gnss.constellation"
+            ).nominal_gps_constellation(),
             "t": 0.0,
             "lat": 0.7,
             "lon": 0.1,
@@ -261,7 +295,10 @@ REGISTRY: dict[str, tuple[Callable[[], dict[str, Any]], dict[str, str]]] = {
     ),
     # inertial
     "inertial.error_dynamics.earth_rate_ned": (lambda: {"lat": 0.5}, {"lat": LATITUDE}),
-    "inertial.error_dynamics.transport_rate_ned": (lambda: {"v_ned": [10.0, 5.0, 0.0], "lat": 0.5}, {"lat": LATITUDE}),
+    "inertial.error_dynamics.transport_rate_ned": (
+        lambda: {"v_ned": [10.0, 5.0, 0.0], "lat": 0.5},
+        {"lat": LATITUDE},
+    ),
     "inertial.strapdown.earth_rate_ned": (lambda: {"lat": 0.5}, {"lat": LATITUDE}),
     "inertial.strapdown.transport_rate_ned": (
         lambda: {"vel": [10.0, 5.0, 0.0], "lat": 0.5, "h": 0.0},
@@ -279,7 +316,10 @@ REGISTRY: dict[str, tuple[Callable[[], dict[str, Any]], dict[str, str]]] = {
         lambda: {"P0": _p0(), "layout": _layout(), "heading_sigma": 0.01, "lat": 0.5, "C_bn": C1},
         {"P0": COVARIANCE, "lat": LATITUDE, "C_bn": ROTATION},
     ),
-    "inertial.error_model17.error_dynamics_17": (lambda: {"C_bn": C1, "f_n": [0.0, 0.0, -9.8]}, {"C_bn": ROTATION}),
+    "inertial.error_model17.error_dynamics_17": (
+        lambda: {"C_bn": C1, "f_n": [0.0, 0.0, -9.8]},
+        {"C_bn": ROTATION},
+    ),
     "inertial.trajectories.fly": (
         lambda: {
             "segments": [importlib.import_module("navcore.inertial.trajectories").Segment(2.0)],
@@ -297,12 +337,23 @@ REGISTRY: dict[str, tuple[Callable[[], dict[str, Any]], dict[str, str]]] = {
         lambda: {"sensitivity": np.ones((3, 6)), "error_covariance": 1e-8 * np.eye(6)},
         {"error_covariance": COVARIANCE},
     ),
-    "inertial.residual_acceleration.sphere_probability": (lambda: {"cov": SPD3, "radius": 2.0}, {"cov": COVARIANCE}),
+    "inertial.residual_acceleration.sphere_probability": (
+        lambda: {"cov": SPD3, "radius": 2.0},
+        {"cov": COVARIANCE},
+    ),
     "inertial.residual_acceleration.sphere_radius": (lambda: {"cov": SPD3}, {"cov": COVARIANCE}),
-    "inertial.residual_acceleration.sphere_radius_monte_carlo": (lambda: {"cov": SPD3, "n": 100}, {"cov": COVARIANCE}),
+    "inertial.residual_acceleration.sphere_radius_monte_carlo": (
+        lambda: {"cov": SPD3, "n": 100},
+        {"cov": COVARIANCE},
+    ),
     # GNSS attitude rows
     "gnss.carrier_phase.dd_observation_rows": (
-        lambda: {"los_m": [0.0, 0.0, -1.0], "los_n": [1.0, 0.0, 0.0], "C_bn": C1, "baselines_b": [[1.0, 0.0, 0.0]]},
+        lambda: {
+            "los_m": [0.0, 0.0, -1.0],
+            "los_n": [1.0, 0.0, 0.0],
+            "C_bn": C1,
+            "baselines_b": [[1.0, 0.0, 0.0]],
+        },
         {"C_bn": ROTATION},
     ),
     "gnss.carrier_phase.euler_attitude_rows": (
@@ -353,8 +404,14 @@ REGISTRY: dict[str, tuple[Callable[[], dict[str, Any]], dict[str, str]]] = {
         lambda: {"x": [0.0, 1.0], "P": SPD2, "z": [1.0, 2.0], "H": np.eye(2), "R": SPD2},
         {"P": COVARIANCE, "R": COVARIANCE},
     ),
-    "estimation.kalman.information_from_covariance": (lambda: {"x": [0.0, 1.0], "P": SPD2}, {"P": COVARIANCE}),
-    "estimation.kalman.covariance_from_information": (lambda: {"y": [0.0, 1.0], "Y": SPD2}, {"Y": COVARIANCE}),
+    "estimation.kalman.information_from_covariance": (
+        lambda: {"x": [0.0, 1.0], "P": SPD2},
+        {"P": COVARIANCE},
+    ),
+    "estimation.kalman.covariance_from_information": (
+        lambda: {"y": [0.0, 1.0], "Y": SPD2},
+        {"Y": COVARIANCE},
+    ),
     "estimation.kalman.information_update": (
         lambda: {"y": [0.0, 1.0], "Y": SPD2, "z": [1.0, 2.0], "H": np.eye(2), "R": SPD2},
         {"Y": COVARIANCE, "R": COVARIANCE},
@@ -402,7 +459,10 @@ REGISTRY: dict[str, tuple[Callable[[], dict[str, Any]], dict[str, str]]] = {
         lambda: {"covariances": [[[1.0]], [[1.0]]], "joint": [[1.0, 0.5], [0.5, 1.0]]},
         {"covariances": COVARIANCE, "joint": COVARIANCE},
     ),
-    "estimation.federated.feasible_weights": (lambda: {"covariances": [SPD2, 4.0 * SPD2]}, {"covariances": COVARIANCE}),
+    "estimation.federated.feasible_weights": (
+        lambda: {"covariances": [SPD2, 4.0 * SPD2]},
+        {"covariances": COVARIANCE},
+    ),
     "estimation.federated.federated_covariance_bound": (
         lambda: {"covariances": [SPD2, SPD2]},
         {"covariances": COVARIANCE},
@@ -415,15 +475,28 @@ REGISTRY: dict[str, tuple[Callable[[], dict[str, Any]], dict[str, str]]] = {
         lambda: {"covariances": [0.01 * SPD3, 0.01 * SPD3], "reference_sigma": 0.1},
         {"covariances": COVARIANCE},
     ),
-    "estimation.federated.minkowski_trace_bound": (lambda: {"covariances": [SPD2, SPD2]}, {"covariances": COVARIANCE}),
-    "estimation.federated.optimal_weights": (lambda: {"covariances": [SPD2, 4.0 * SPD2]}, {"covariances": COVARIANCE}),
+    "estimation.federated.minkowski_trace_bound": (
+        lambda: {"covariances": [SPD2, SPD2]},
+        {"covariances": COVARIANCE},
+    ),
+    "estimation.federated.optimal_weights": (
+        lambda: {"covariances": [SPD2, 4.0 * SPD2]},
+        {"covariances": COVARIANCE},
+    ),
     "estimation.ekf_ins_gnss.correct_attitude": (
         lambda: {"q": np.stack([Q1, Q1]), "dpsi": np.zeros((2, 3))},
         {"q": QUATERNION},
     ),
     "estimation.ekf_ins_gnss.euler_batch": (lambda: {"C": np.stack([C1, np.eye(3)])}, {"C": ROTATION}),
-    "estimation.ekf_ins_gnss.euler_jacobian_batch": (lambda: {"C": np.stack([C1, np.eye(3)])}, {"C": ROTATION}),
+    "estimation.ekf_ins_gnss.euler_jacobian_batch": (
+        lambda: {"C": np.stack([C1, np.eye(3)])},
+        {"C": ROTATION},
+    ),
     # location
+    "location.emitter.emitter_gauss_newton": (
+        lambda: _emitter_call(),
+        {"W": COVARIANCE},
+    ),
     "location.emitter.linearized_location_error": (
         lambda: {"H": [[1.0, 0.0], [0.0, 2.0], [1.0, 1.0]], "error": [0.1, 0.2, 0.2], "W": SPD3},
         {"W": COVARIANCE},
@@ -446,7 +519,8 @@ EXEMPT: dict[str, str] = {
     "frames.quat_normalize": "its job is to make a quaternion unit",
     "inertial.strapdown.quat_multiply_batch": "quaternion algebra in the mechanization's hot loop",
     "inertial.strapdown.dcm_from_quat_batch": (
-        "hot-loop helper of the mechanization, documented as unchecked (frames.dcm_from_quat is the checked one)"
+        "hot-loop helper of the mechanization, documented as unchecked "
+        "(frames.dcm_from_quat is the checked one)"
     ),
     "estimation.kalman.symmetrize": "the symmetric part of any square matrix (or stack)",
     "estimation.ekf_ins_gnss.sequential_scalar_updates": (
@@ -455,10 +529,11 @@ EXEMPT: dict[str, str] = {
     "estimation.ekf_ins_gnss.discrete_noise_nilpotent": (
         "inner-loop helper of run_monte_carlo, called every step with the model's own noise"
     ),
-    "location.emitter.emitter_gauss_newton": "W is checked as a definite weight matrix; registered below by its own test",
 }
 
-_COV_NAMES = re.compile(r"^(P|P0|P2|Q|R|Y|W|S|GQGt|cov|covariances|joint|error_covariance|P_(?!xn)\w+|Q_\w+|R_\w+)$")
+_COV_NAMES = re.compile(
+    r"^(P|P0|P2|Q|R|Y|W|S|GQGt|cov|covariances|joint|error_covariance|P_(?!xn)\w+|Q_\w+|R_\w+)$"
+)
 _ROT_NAMES = {"C", "C_bn"}
 _LAT_NAMES = {"lat", "lat0"}
 _QUAT_MODULES = ("frames", "inertial.strapdown", "estimation.ekf_ins_gnss")
@@ -561,7 +636,13 @@ def _takes_deg(func: Any) -> bool:
 
 
 @pytest.mark.parametrize(("short", "param", "klass"), _CASES, ids=[f"{f}-{p}" for f, p, _ in _CASES])
-@settings(derandomize=True, database=None, max_examples=8, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(
+    derandomize=True,
+    database=None,
+    max_examples=8,
+    deadline=None,
+    suppress_health_check=[HealthCheck.too_slow],
+)
 @given(data=st.data())
 def test_class_of_bad_value_raises_naming_the_argument(short, param, klass, data):
     """A valid call succeeds; the same call with ``param`` replaced by a bad value of its class
@@ -675,11 +756,23 @@ def test_every_bare_angle_argument_comes_with_deg():
         ("frames.geodetic_to_ecef", {"lat": 0.7, "lon": -1.2, "h": 100.0}, ("lat", "lon")),
         ("frames.dcm_from_euler", {"roll": 0.1, "pitch": -0.2, "yaw": 2.5}, ("roll", "pitch", "yaw")),
         ("gnss.constellation.elevation_azimuth", None, ("lat", "lon")),
-        ("location.multilateration.position_on_sphere", {"lat": 0.4, "lon": 2.0, "radius": 3.0}, ("lat", "lon")),
+        (
+            "location.multilateration.position_on_sphere",
+            {"lat": 0.4, "lon": 2.0, "radius": 3.0},
+            ("lat", "lon"),
+        ),
         ("inertial.error_dynamics.earth_rate_ned", {"lat": 0.9}, ("lat",)),
-        ("inertial.strapdown.transport_rate_ned", {"vel": [50.0, 20.0, 0.0], "lat": 0.9, "h": 10.0}, ("lat",)),
+        (
+            "inertial.strapdown.transport_rate_ned",
+            {"vel": [50.0, 20.0, 0.0], "lat": 0.9, "h": 10.0},
+            ("lat",),
+        ),
         ("gravity.normal_gravity", {"lat": 0.9, "h": 100.0}, ("lat",)),
-        ("inertial.trajectories.straight_and_level", {"duration": 3.0, "speed": 10.0, "heading": 1.0, "lat0": 0.5, "lon0": 0.2}, ("heading", "lat0", "lon0")),
+        (
+            "inertial.trajectories.straight_and_level",
+            {"duration": 3.0, "speed": 10.0, "heading": 1.0, "lat0": 0.5, "lon0": 0.2},
+            ("heading", "lat0", "lon0"),
+        ),
     ],
 )
 def test_deg_true_is_the_same_call_in_degrees(short, kwargs, angles):
@@ -689,7 +782,12 @@ def test_deg_true_is_the_same_call_in_degrees(short, kwargs, angles):
     if kwargs is None:
         from navcore.frames import geodetic_to_ecef
 
-        kwargs = {"r_user": geodetic_to_ecef(0.6, 0.2, 0.0), "r_sat": [[2.0e7, 1.0e7, 1.5e7]], "lat": 0.6, "lon": 0.2}
+        kwargs = {
+            "r_user": geodetic_to_ecef(0.6, 0.2, 0.0),
+            "r_sat": [[2.0e7, 1.0e7, 1.5e7]],
+            "lat": 0.6,
+            "lon": 0.2,
+        }
     rad = func(**kwargs)
     deg = func(**{**kwargs, **{a: np.degrees(kwargs[a]) for a in angles}, "deg": True})
     if short == "gnss.constellation.elevation_azimuth":

@@ -82,7 +82,9 @@ def test_constellation_dop_with_mask_and_weights_against_own_least_squares(lat_d
             assert float(getattr(d, name)) == pytest.approx(value, rel=1e-9), (mask, name)
         assert int(d.n_used) == int(keep.sum())
     d = dilution_of_precision(r, sats, mask=np.radians(10.0), weights=w)  # radians by default
-    assert float(d.pdop) == pytest.approx(_own_dop(u[np.asarray(el) >= 10.0], w[np.asarray(el) >= 10.0])["pdop"])
+    assert float(d.pdop) == pytest.approx(
+        _own_dop(u[np.asarray(el) >= 10.0], w[np.asarray(el) >= 10.0])["pdop"]
+    )
 
 
 def test_stacks_of_epochs_and_receivers():
@@ -94,12 +96,16 @@ def test_stacks_of_epochs_and_receivers():
     d = dilution_of_precision(r, sats_t, mask=5.0, deg=True)
     assert d.pdop.shape == (6,)
     for i in range(6):
-        assert float(d.pdop[i]) == pytest.approx(float(dilution_of_precision(r, sats_t[i], mask=5.0, deg=True).pdop))
+        assert float(d.pdop[i]) == pytest.approx(
+            float(dilution_of_precision(r, sats_t[i], mask=5.0, deg=True).pdop)
+        )
     receivers = geodetic_to_ecef(np.array([0.0, 30.0, 60.0]), np.array([0.0, 40.0, 80.0]), 0.0, deg=True)
     d = dilution_of_precision(receivers, sats_t[0], mask=5.0, deg=True)
     assert d.gdop.shape == (3,)
     for i in range(3):
-        assert float(d.gdop[i]) == pytest.approx(float(dilution_of_precision(receivers[i], sats_t[0], mask=5.0, deg=True).gdop))
+        assert float(d.gdop[i]) == pytest.approx(
+            float(dilution_of_precision(receivers[i], sats_t[0], mask=5.0, deg=True).gdop)
+        )
 
 
 def test_too_few_satellites_give_infinite_dop_not_nan():

@@ -475,7 +475,9 @@ def test_state_layout_bad_input_names_the_argument():
     assert ins_block_name(InsBlock.GYRO_BIAS) is InsBlock.GYRO_BIAS
     with pytest.raises(TypeError, match=r"^name must be a string \(a block name\), got 3$"):
         ins_block_name(3)
-    with pytest.raises(ValueError, match=r"^name must be among \['position'.*got 'gyro drift'; did you mean 'gyro bias'"):
+    with pytest.raises(
+        ValueError, match=r"^name must be among \['position'.*got 'gyro drift'; did you mean 'gyro bias'"
+    ):
         ins_block_name("gyro drift")  # the papers' name is not an API name
     with pytest.raises(ValueError, match=r"^blocks must be among"):
         ins_block_name("tilt angle", argument="blocks")

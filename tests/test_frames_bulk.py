@@ -67,8 +67,12 @@ def test_local_frames_with_array_origins_against_pymap3d(name):
     kw = {"deg": True, "ellipsoid": ell}
     enu = fr.ecef_to_enu(r, lat0, lon0, h0, **kw)
     ned = fr.ecef_to_ned(r, lat0, lon0, h0, **kw)
-    np.testing.assert_allclose(enu, np.stack(pymap3d.ecef2enu(x, y, z, lat0, lon0, h0, ell=pm), -1), atol=1e-6)
-    np.testing.assert_allclose(ned, np.stack(pymap3d.ecef2ned(x, y, z, lat0, lon0, h0, ell=pm), -1), atol=1e-6)
+    np.testing.assert_allclose(
+        enu, np.stack(pymap3d.ecef2enu(x, y, z, lat0, lon0, h0, ell=pm), -1), atol=1e-6
+    )
+    np.testing.assert_allclose(
+        ned, np.stack(pymap3d.ecef2ned(x, y, z, lat0, lon0, h0, ell=pm), -1), atol=1e-6
+    )
     np.testing.assert_allclose(fr.geodetic_to_enu(lat, lon, h, lat0, lon0, h0, **kw), enu, atol=1e-6)
     np.testing.assert_allclose(
         fr.geodetic_to_ned(lat, lon, h, lat0, lon0, h0, **kw),
@@ -77,7 +81,8 @@ def test_local_frames_with_array_origins_against_pymap3d(name):
     )
     e, n, u = enu[:, 0], enu[:, 1], enu[:, 2]
     np.testing.assert_allclose(
-        fr.enu_to_ecef(enu, lat0, lon0, h0, **kw), np.stack(pymap3d.enu2ecef(e, n, u, lat0, lon0, h0, ell=pm), -1),
+        fr.enu_to_ecef(enu, lat0, lon0, h0, **kw),
+        np.stack(pymap3d.enu2ecef(e, n, u, lat0, lon0, h0, ell=pm), -1),
         atol=1e-6,
     )
     np.testing.assert_allclose(fr.ned_to_ecef(ned, lat0, lon0, h0, **kw), r, atol=1e-6)
@@ -153,8 +158,10 @@ def test_radians_default_and_broadcasting_grid_against_pymap3d():
     np.testing.assert_allclose(one.reshape(-1, 3), ref, atol=1e-6)
     C = fr.dcm_ecef_to_ned(lat0, lon0)
     assert C.shape == (5, 3, 3)
-    np.testing.assert_allclose(fr.dcm_ecef_to_enu(lat0, lon0), C[:, [1, 0, 2]] * np.array([1, 1, -1])[:, None])
-    R_N, R_E = fr.radii_of_curvature(np.degrees(lat0), deg=True, ellipsoid=fr.GRS80)
+    np.testing.assert_allclose(
+        fr.dcm_ecef_to_enu(lat0, lon0), C[:, [1, 0, 2]] * np.array([1, 1, -1])[:, None]
+    )
+    R_N, _ = fr.radii_of_curvature(np.degrees(lat0), deg=True, ellipsoid=fr.GRS80)
     np.testing.assert_allclose(R_N, fr.radii_of_curvature(lat0, ellipsoid=fr.GRS80)[0])
 
 
@@ -186,7 +193,9 @@ def test_attitude_conversions_on_stacks_against_scipy(shape):
     np.testing.assert_allclose(fr.rotvec_from_quat(quats), R.as_rotvec().reshape(*shape, 3), atol=1e-10)
     np.testing.assert_allclose(fr.quat_from_rotvec(R.as_rotvec().reshape(*shape, 3)), quats, atol=1e-12)
     v = np.random.default_rng(7).normal(size=(*shape, 3))
-    np.testing.assert_allclose(fr.quat_rotate(quats, v), R.apply(v.reshape(-1, 3)).reshape(*shape, 3), atol=1e-12)
+    np.testing.assert_allclose(
+        fr.quat_rotate(quats, v), R.apply(v.reshape(-1, 3)).reshape(*shape, 3), atol=1e-12
+    )
     Q2 = _random_rotations(shape, seed=99)
     q2 = np.roll(Q2.as_quat(), 1, axis=-1).reshape(*shape, 4)
     prod = fr.quat_multiply(quats, q2)
@@ -203,6 +212,6 @@ def test_single_values_keep_their_shapes():
     C = fr.dcm_from_euler(0.1, 0.2, 0.3)
     assert C.shape == (3, 3)
     assert fr.quat_from_dcm(C).shape == (4,)
-    roll, pitch, yaw = fr.euler_from_dcm(C)
+    roll, _, yaw = fr.euler_from_dcm(C)
     assert isinstance(roll, float) and isinstance(yaw, float)
     assert fr.geodetic_to_ecef(0.1, 0.2, 0.0).shape == (3,)

@@ -81,7 +81,9 @@ def test_thresholds_against_scipy_chi2_and_normal():
             assert 2 * t == pytest.approx(stats.chi2.isf(p_fa, 2 * n), rel=1e-10)
             assert float(false_alarm_probability_for_threshold(t, n)) == pytest.approx(p_fa, rel=1e-9)
     assert float(detection_threshold(1e-9, coherent=True)) == pytest.approx(stats.norm.isf(1e-9), rel=1e-12)
-    assert float(false_alarm_probability_for_threshold(3.0, coherent=True)) == pytest.approx(stats.norm.sf(3.0))
+    assert float(false_alarm_probability_for_threshold(3.0, coherent=True)) == pytest.approx(
+        stats.norm.sf(3.0)
+    )
 
 
 def test_single_pulse_closed_forms():
@@ -101,7 +103,9 @@ def test_single_pulse_closed_forms():
         assert float(required_snr(p_d, 1e-6, swerling=1)) == pytest.approx(exact, rel=1e-8)
 
 
-@pytest.mark.parametrize(("swerling", "coherent"), [(0, True), (0, False), (1, False), (2, False), (3, False), (4, False)])
+@pytest.mark.parametrize(
+    ("swerling", "coherent"), [(0, True), (0, False), (1, False), (2, False), (3, False), (4, False)]
+)
 def test_monte_carlo(swerling, coherent):
     """Oracle: seeded Monte Carlo (20 000 trials of 4 pulses) of complex Gaussian noise of unit
     power plus the target: steady amplitude sqrt(snr); cross-section exponential (I, II) or
@@ -146,7 +150,9 @@ def test_required_snr_against_albersheim():
         for p_d in np.linspace(0.4, 0.9, 6):
             exact = 10 * math.log10(float(required_snr(p_d, p_fa)))
             assert exact == pytest.approx(_albersheim_db(p_d, p_fa, 1), abs=0.2), (p_d, p_fa)
-    assert 10 * math.log10(float(required_snr(0.9, 1e-6))) == pytest.approx(13.2, abs=0.05)  # the textbook value
+    assert 10 * math.log10(float(required_snr(0.9, 1e-6))) == pytest.approx(
+        13.2, abs=0.05
+    )  # the textbook value
 
 
 def _shnidman_db(p_d: float, p_fa: float, n: int, swerling: int) -> float:

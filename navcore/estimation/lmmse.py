@@ -23,7 +23,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from navcore._validate import COVARIANCE, NONNEGATIVE, POSITIVE, as_finite_array, check_public, require_positive
+from navcore._validate import (
+    COVARIANCE,
+    NONNEGATIVE,
+    POSITIVE,
+    as_finite_array,
+    check_public,
+    require_positive,
+)
 from navcore.estimation.kalman import symmetrize
 from navcore.trace import implements
 

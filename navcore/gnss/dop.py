@@ -36,6 +36,7 @@ References
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -80,7 +81,7 @@ class DilutionOfPrecision:
     covariance: Array
 
 
-def _scalar(x: Array) -> Array:
+def _scalar(x: NDArray[Any]) -> Any:
     return x[()] if x.ndim == 0 else x
 
 
@@ -114,7 +115,9 @@ def _weights(weights: ArrayLike | None, shape: tuple[int, ...]) -> Array:
     try:
         return np.broadcast_to(w, shape).copy()
     except ValueError:
-        raise ValueError(f"weights must broadcast to one weight per satellite {shape}, got shape {w.shape}") from None
+        raise ValueError(
+            f"weights must broadcast to one weight per satellite {shape}, got shape {w.shape}"
+        ) from None
 
 
 def dop_from_lines_of_sight(u_ned: ArrayLike, *, weights: ArrayLike | None = None) -> DilutionOfPrecision:

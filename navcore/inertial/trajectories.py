@@ -236,7 +236,9 @@ def fly(
     require_positive("dt", dt)
     require_nonnegative("speed0", speed0)
     if deg:
-        lat0, lon0, heading0, path_angle0 = (float(np.radians(a)) for a in (lat0, lon0, heading0, path_angle0))
+        lat0, lon0, heading0, path_angle0 = (
+            float(np.radians(a)) for a in (lat0, lon0, heading0, path_angle0)
+        )
     if not segments:
         raise ValueError("segments must not be empty")
     n_steps = [round(s.duration / dt) for s in segments]
@@ -329,7 +331,9 @@ def straight_and_level(
     >>> len(tr), round(float(tr.pos_ned[-1, 0]), 6)
     (11, 500.0)
     """
-    return fly([Segment(duration)], dt=dt, lat0=lat0, lon0=lon0, h0=h0, speed0=speed, heading0=heading, deg=deg)
+    return fly(
+        [Segment(duration)], dt=dt, lat0=lat0, lon0=lon0, h0=h0, speed0=speed, heading0=heading, deg=deg
+    )
 
 
 # Every public function checks its arguments against their annotations (finite numbers,
