@@ -53,7 +53,17 @@ PARTS = {
     "reference": "Reference",
 }
 
-REFERENCE_PAGES = ("units", "frames", "gravity", "estimation", "inertial", "gnss", "detection", "location", "ledger")
+REFERENCE_PAGES = (
+    "units",
+    "frames",
+    "gravity",
+    "estimation",
+    "inertial",
+    "gnss",
+    "detection",
+    "location",
+    "ledger",
+)
 HOWTO_PAGES = ("dop", "outage", "kalman", "frames", "detection", "emitter")
 
 
