@@ -275,6 +275,7 @@ COUNT0 = Range(0, MAX_LOOP_COUNT)
 #: rotation matrix, may be (round-off of a normalised value is about 1e-15; a value typed to
 #: seven digits is within 1e-6).
 UNIT_TOLERANCE = 1e-6
+_EYE3 = np.eye(3)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -372,14 +373,18 @@ class RotationMatrix:
         )
         if arr.size == 0:
             return
-        err = np.matmul(arr, np.swapaxes(arr, -1, -2)) - np.eye(3)
-        worst = float(np.max(np.abs(err)))
+        worst = float(np.abs(np.matmul(arr, np.swapaxes(arr, -1, -2)) - _EYE3).max())
         if worst > UNIT_TOLERANCE:
             raise ValueError(
                 f"{name} must be a rotation matrix (C C^T = I to within {UNIT_TOLERANCE:g}), "
                 f"got C C^T - I up to {worst:.3g}"
             )
-        if np.any(np.linalg.det(arr) < 0.0):
+        if arr.ndim == 2:  # one matrix: the triple product in plain floats is the cheapest
+            (a, b, c), (d, e, f), (g, h, i) = arr.tolist()
+            det: Any = a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g)
+        else:
+            det = np.linalg.det(arr)
+        if np.any(det < 0.0):
             raise ValueError(f"{name} must be a proper rotation matrix (det +1), got a reflection (det -1)")
 
 
@@ -412,49 +417,43 @@ class Covariance:
             )
         if arr.size == 0:
             return
-        if self.allow_inf_diagonal:
-            diag = np.diagonal(arr, axis1=-2, axis2=-1)
+        diag = np.diagonal(arr, axis1=-2, axis2=-1)
+        if self.allow_inf_diagonal and not np.isfinite(arr).all():  # (NaN was rejected before)
             inf = np.isinf(diag)
-            if np.any(inf):
-                if np.any(diag[inf] < 0):
-                    raise ValueError(f"{name} must not have a variance of -inf")
-                lines = inf[..., :, None] | inf[..., None, :]
-                off = lines & ~np.eye(arr.shape[-1], dtype=bool)
-                if np.any(arr[off] != 0.0):
-                    raise ValueError(
-                        f"{name} must be zero off the diagonal in a row or column of infinite variance"
-                    )
-                arr = np.where(lines, 0.0, arr)
-            elif np.any(np.isinf(arr)):
+            if np.any(diag[inf] < 0):
+                raise ValueError(f"{name} must not have a variance of -inf")
+            lines = inf[..., :, None] | inf[..., None, :]
+            off = lines & ~np.eye(arr.shape[-1], dtype=bool)
+            if np.any(arr[off] != 0.0):
+                raise ValueError(
+                    f"{name} must be zero off the diagonal in a row or column of infinite variance"
+                )
+            arr = np.where(lines, 0.0, arr)
+            if not np.isfinite(arr).all():
                 raise ValueError(f"{name} must have infinite entries only on its diagonal")
-        _require_psd(name, arr, self.rtol, self.definite)
+            diag = np.diagonal(arr, axis1=-2, axis2=-1)
+        _require_psd(name, arr, diag, self.rtol, self.definite)
 
 
-def _require_psd(name: str, arr: NDArray[np.float64], rtol: float, definite: bool) -> None:
-    n = arr.shape[-1]
-    off_diag = arr.copy()
-    off_diag.reshape(-1, n * n)[:, :: n + 1] = 0.0
-    diag = np.diagonal(arr, axis1=-2, axis2=-1)
-    if not np.any(off_diag):  # diagonal: the variances decide
-        low = float(np.min(diag))
+def _require_psd(
+    name: str, arr: NDArray[np.float64], diag: NDArray[np.float64], rtol: float, definite: bool
+) -> None:
+    kind = "positive definite" if definite else "positive semi-definite"
+    if np.count_nonzero(arr) == np.count_nonzero(diag):  # diagonal: the variances decide
+        low = diag.min()
         if low < 0 or (definite and low <= 0):
-            kind = "positive definite" if definite else "positive semi-definite"
             raise ValueError(f"{name} must be {kind} (a diagonal entry is {low:.3g})")
         return
-    scale = max(float(np.max(np.abs(arr))), np.finfo(float).tiny)
-    if np.max(np.abs(arr - np.swapaxes(arr, -1, -2))) > rtol * scale * 10:
+    scale = max(float(np.abs(arr).max()), np.finfo(float).tiny)
+    arr_t = np.swapaxes(arr, -1, -2)
+    if np.abs(arr - arr_t).max() > rtol * scale * 10:
         raise ValueError(f"{name} must be symmetric")
-    eig = np.linalg.eigvalsh(0.5 * (arr + np.swapaxes(arr, -1, -2)))
+    eig = np.linalg.eigvalsh(0.5 * (arr + arr_t))
     smallest = eig[..., 0]
-    floor = -rtol * np.maximum(eig[..., -1], 0.0)
     if definite and np.any(smallest <= 0):
-        raise ValueError(
-            f"{name} must be positive definite (smallest eigenvalue {float(np.min(smallest)):.3g})"
-        )
-    if np.any(smallest < floor):
-        raise ValueError(
-            f"{name} must be positive semi-definite (smallest eigenvalue {float(np.min(smallest)):.3g})"
-        )
+        raise ValueError(f"{name} must be {kind} (smallest eigenvalue {float(np.min(smallest)):.3g})")
+    if np.any(smallest < -rtol * np.maximum(eig[..., -1], 0.0)):
+        raise ValueError(f"{name} must be {kind} (smallest eigenvalue {float(np.min(smallest)):.3g})")
 
 
 UNIT_QUATERNION = UnitQuaternion(stack=False)

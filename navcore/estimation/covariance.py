@@ -51,12 +51,22 @@ class Measurement:
     R: Array
 
     def __post_init__(self) -> None:
-        H = np.atleast_2d(np.asarray(self.H, dtype=float))
-        R = np.atleast_2d(np.asarray(self.R, dtype=float))
-        if H.ndim != 2 or R.shape != (H.shape[0], H.shape[0]):
+        shape_h, shape_r = np.shape(self.H), np.shape(self.R)
+        m = 1 if len(shape_h) == 1 else shape_h[0]  # a single row may be given as a vector
+        if len(shape_h) > 2 or shape_r != (m, m):
             raise ValueError(
-                f"Measurement.R must be (m, m) for H of shape (m, n), got H {H.shape} and R {R.shape}"
+                f"Measurement.R must be (m, m) for H of shape (m, n), got H {shape_h} and R {shape_r}"
             )
+
+    @classmethod
+    def _unchecked(cls, H: Array, R: Array) -> Measurement:
+        """A measurement built by the library's own schedules, which run every step and whose
+        ``R`` is a covariance by construction (from noise levels checked where the schedule
+        was made): no check here. Not for users: the constructor checks ``R``."""
+        m = object.__new__(cls)
+        object.__setattr__(m, "H", H)
+        object.__setattr__(m, "R", R)
+        return m
 
     @classmethod
     def scalar(cls, h: ArrayLike, r: float) -> Measurement:

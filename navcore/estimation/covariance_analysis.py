@@ -860,7 +860,7 @@ def tightly_coupled_schedule(
         if i_g is not None:
             H[rows, i_g] = g_load[k]  # type: ignore[index]  # i_g is None when g_load is
         R = np.diag(np.r_[np.full(cc.size, pseudorange_noise**2), np.full(cr.size, range_rate_noise**2)])
-        return [Measurement(H, R)]
+        return [Measurement._unchecked(H, R)]
 
     return sched
 
@@ -962,7 +962,7 @@ def loosely_coupled_schedule(
             for j, c in enumerate(chans):
                 H[:, layout.index("pseudorange bias", int(c))] = -A[:, j]
         R = pseudorange_noise**2 * GtG_inv[:3, :3]
-        return [Measurement(H, 0.5 * (R + R.T))]
+        return [Measurement._unchecked(H, 0.5 * (R + R.T))]
 
     return sched
 
@@ -1011,7 +1011,7 @@ def baro_schedule(layout: StateLayout, *, noise_m: float, every: int = 1) -> Sch
     R = np.array([[noise_m**2]])
 
     def sched(k: int) -> list[Measurement]:
-        return [] if k % every else [Measurement(H, R)]
+        return [] if k % every else [Measurement._unchecked(H, R)]
 
     return sched
 
@@ -1095,7 +1095,7 @@ def doppler_schedule(
             H[:, layout.slice("doppler scale factor")] = -np.diag(vb)
         if "doppler misalignment" in names:
             H[:, layout.slice("doppler misalignment")] = -skew_stack(vb)
-        return [Measurement(H, R)]
+        return [Measurement._unchecked(H, R)]
 
     return sched
 
