@@ -24,8 +24,15 @@ from typing import Any
 
 from navcore import figures as _figures
 from navcore import ledger
-from navcore.ledger.core import STATUSES
-from navcore.ledger.render import CountsTable, ErrataList, InteractiveLedger, LedgerTable, latex_table
+from navcore.ledger.core import ERRATUM_BASES, ERRATUM_KINDS, STATUSES
+from navcore.ledger.render import (
+    CountsTable,
+    ErrataList,
+    FindingsTable,
+    InteractiveLedger,
+    LedgerTable,
+    latex_table,
+)
 
 __all__ = [
     "Markdown",
@@ -35,6 +42,7 @@ __all__ = [
     "claims_table",
     "counts_table",
     "errata_list",
+    "findings_table",
     "ledger_table",
     "setup",
     "show_figure",
@@ -218,7 +226,7 @@ def counts_table(paper: str | None = None) -> CountsTable:
     return CountsTable(paper)
 
 
-def errata_list(paper: str | None = None, *, root: str | None = None) -> ErrataList:
+def errata_list(paper: str | None = None, *, root: str | None = None, caveat: bool = True) -> ErrataList:
     """The registered errata (of one paper, or all), linked to the pages that discuss them.
 
     Parameters
@@ -228,6 +236,9 @@ def errata_list(paper: str | None = None, *, root: str | None = None) -> ErrataL
     root : str or None, optional
         Link prefix to the book's root (``None`` finds it, :func:`book_root_prefix`); the
         pages under it give the link texts (their titles).
+    caveat : bool, optional
+        Say the text-only caveat once, under the text-only heading (``False`` where the page
+        says it already).
 
     Returns
     -------
@@ -240,7 +251,61 @@ def errata_list(paper: str | None = None, *, root: str | None = None) -> ErrataL
         If ``paper`` is not a paper key.
     """
     root = book_root_prefix() if root is None else root
-    return ErrataList(ledger.errata(paper), root=root, titles=_page_titles(Path.cwd() / root))
+    return ErrataList(
+        ledger.errata(paper),
+        root=root,
+        titles=_page_titles(Path.cwd() / root),
+        evals=ledger.evaluations(paper=paper),
+        caveat=caveat,
+    )
+
+
+def findings_table(
+    paper: str | None = None, *, root: str | None = None, list_findings: bool = False
+) -> FindingsTable:
+    """The findings (errata) counted by paper, basis and kind, each with its claims as evidence.
+
+    Every claim of the paper (of every paper, by default) is evaluated, to show the verdicts
+    of the claims that are each finding's evidence.
+
+    Parameters
+    ----------
+    paper : str or None, optional
+        Paper key; ``None`` for every paper's findings (with rows of totals).
+    root : str or None, optional
+        Link prefix to the book's root; ``None`` finds it (:func:`book_root_prefix`).
+    list_findings : bool, optional
+        Also list every finding with its basis, kind and evidence.
+
+    Returns
+    -------
+    FindingsTable
+        The table (:class:`~navcore.ledger.render.FindingsTable`); the text-only caveat
+        follows the counts once.
+
+    Raises
+    ------
+    ValueError
+        If ``paper`` is not a paper key.
+
+    Examples
+    --------
+    With the errata and evaluations replaced by synthetic ones (the real ones take minutes):
+
+    >>> from unittest import mock
+    >>> from navcore.ledger import Erratum
+    >>> e = Erratum(id="SP-E9-doc", paper="SP", locator="Eq. (2.4.2)", printed="a + b",
+    ...             finding="a - b", evidence="the derivation", kind="typography", basis="computed",
+    ...             no_claim_reason="a synthetic erratum")
+    >>> with mock.patch("navcore.ledger.errata", return_value=(e,)):
+    ...     with mock.patch("navcore.ledger.evaluations", return_value=[]):
+    ...         print(repr(findings_table("SP", root="")).splitlines()[1])
+    SP  computed  1  0  0  0  0  0  0  1
+    """
+    root = book_root_prefix() if root is None else root
+    return FindingsTable(
+        ledger.errata(paper), ledger.evaluations(paper=paper), root=root, list_findings=list_findings
+    )
 
 
 def ledger_table(paper: str | None = None, *, root: str | None = None) -> InteractiveLedger:
@@ -444,8 +509,22 @@ class Markdown:
         return self.markdown
 
 
+def _findings_phrase(items: Any) -> str:
+    """``"9 findings: 4 computed (2 inconsistent numbers, ...), 5 text-only (...)"``."""
+    parts = []
+    for b in ERRATUM_BASES:
+        sel = [e for e in items if e.basis == b]
+        if sel:
+            kinds = ", ".join(
+                f"{n} {k.replace('-', ' ')}" for k in ERRATUM_KINDS if (n := sum(e.kind == k for e in sel))
+            )
+            parts.append(f"{len(sel)} {b} ({kinds})")
+    n = len(items)
+    return f"{n} finding{'' if n == 1 else 's'}" + (": " + ", ".join(parts) if parts else "")
+
+
 def chapter_summary(paper: str) -> Markdown:
-    """A box with the chapter's ledger counts by status, for the top of a chapter.
+    """A box for the top of a chapter: its findings by basis and kind, then its claims by verdict.
 
     Every claim of the paper is evaluated.
 
@@ -457,8 +536,9 @@ def chapter_summary(paper: str) -> Markdown:
     Returns
     -------
     Markdown
-        The counts in a sentence (Markdown) and as coloured chips (HTML), with the number
-        of claims failing their check, if any.
+        The findings (errata) counted by basis and kind, then the claims' counts by derived
+        verdict, in a sentence (Markdown) and as coloured chips (HTML), with the number of
+        claims failing their check, if any.
 
     Raises
     ------
@@ -467,28 +547,32 @@ def chapter_summary(paper: str) -> Markdown:
 
     Examples
     --------
-    With the evaluations replaced by the one of a synthetic claim (the real ones take
-    minutes):
+    With the evaluations and errata replaced by synthetic ones (the real ones take minutes):
 
     >>> from unittest import mock
-    >>> from navcore.ledger import Claim, evaluate, printed
+    >>> from navcore.ledger import Claim, Erratum, evaluate, printed
     >>> value, tol = printed("17.67")
     >>> c = Claim(id="SP-doc-omega", paper="SP", locator="Fig. 2.1", quantity="natural frequency",
     ...           published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
     ...           expected_status="reproduced", note="a synthetic claim")
+    >>> e = Erratum(id="SP-E9-doc", paper="SP", locator="Eq. (2.4.2)", printed="a + b",
+    ...             finding="a - b", evidence="the derivation", kind="typography", basis="text-only",
+    ...             claims=("SP-doc-omega",))
     >>> ev = evaluate(c)
     >>> row = {"reproduced": 1, "consistent": 0, "inconsistent": 0, "discrepant": 0,
     ...        "not-reproducible": 0, "total": 1}
     >>> with mock.patch("navcore.ledger.counts", return_value={"SP": row}):
     ...     with mock.patch("navcore.ledger.evaluations", return_value=[ev]):
-    ...         chapter_summary("SP")
-    **Ledger for SP:** 1 claims — 1 reproduced; every check passes.
+    ...         with mock.patch("navcore.ledger.errata", return_value=(e,)):
+    ...             chapter_summary("SP")
+    **Ledger for SP:** 1 finding: 1 text-only (1 typography). 1 claims — 1 reproduced; every check passes.
     """
     c = ledger.counts(paper)[paper]
     failing = sum(not e.passes for e in ledger.evaluations(paper))
+    found = ledger.errata(paper)
     parts = [f"{c[s]} {s}" for s in STATUSES if c[s]]
     md = (
-        f"**Ledger for {paper}:** {c['total']} claims — "
+        f"**Ledger for {paper}:** {_findings_phrase(found)}. {c['total']} claims — "
         + ", ".join(parts)
         + (f"; **{failing} failing their check**" if failing else "; every check passes")
         + "."
@@ -498,7 +582,8 @@ def chapter_summary(paper: str) -> Markdown:
         for s in STATUSES
     )
     html_text = (
-        f'<div class="ledger-summary"><b>Ledger for {paper}:</b> {c["total"]} claims &nbsp; {chips}'
+        f'<div class="ledger-summary"><b>Ledger for {paper}:</b> {html.escape(_findings_phrase(found))}.'
+        f"<br>{c['total']} claims &nbsp; {chips}"
         + (f"<b class='ledger-failing'>{failing} failing</b>" if failing else "every check passes")
         + "</div>"
     )

@@ -119,6 +119,18 @@ def test_readings_weigh_statements_too():
     assert ev.status == "consistent" and labels(ev, SIGN) == ["the other reading"]
 
 
+def test_a_statement_reading_that_agrees_over_part_of_its_band_says_so():
+    c = make(
+        published=True,
+        unit="statement",
+        compute=lambda: (IN.sign < 0) & (IN.offset > 0.5),  # reads both inputs
+        expected_status="consistent",
+    )
+    ev = evaluate(c)  # false throughout under the sign used; under the other, true for offsets above 0.5
+    assert ev.status == "consistent"
+    assert "does not hold at the nominal inputs, but holds over part of the assumed ranges" in ev.note()
+
+
 def test_cross_check_fit_and_fitted_use_any_reading():
     assert evaluate(make(compute=lambda: 16.13 * IN.per_cycle, kind="cross-check")).status == "consistent"
     assert evaluate(make(compute=lambda: 20.0 * IN.per_cycle, kind="cross-check")).status == "discrepant"
@@ -411,3 +423,85 @@ def test_published_means_printed_registry_check(monkeypatch):
         "3.3 km booked in m",
     )
     validate_registry([converted], [])
+
+
+# --- findings counted once, and shown ---------------------------------------------------------
+
+
+def _finding_fixture():
+    claim_a = make(id="KZL-test-find-a", compute=lambda: 10.0)
+    claim_b = make(
+        id="KZL-test-find-b",
+        compute=lambda: 20.0 * IN.per_cycle,
+        erratum="KZL-E-find-computed",
+        expected_status="discrepant",
+        oracle=lambda: 20.0,
+        oracle_tolerance=TOL,
+    )
+    text_only = erratum(id="KZL-E-find-text", claims=("KZL-test-find-a",), kind="units")
+    computed = erratum(
+        id="KZL-E-find-computed", basis="computed", kind="inconsistent-numbers", claims=("KZL-test-find-b",)
+    )
+    return [evaluate(claim_a), evaluate(claim_b)], [text_only, computed]
+
+
+def test_the_terminal_summary_leads_with_findings_then_claims_by_verdict():
+    from navcore.ledger.summary import summary_text
+
+    evals, found = _finding_fixture()
+    text = summary_text(evals, errata=found)
+    lines = text.splitlines()
+    assert lines[0].startswith("findings (errata): 2")
+    assert text.index("findings (errata)") < text.index("claims by paper, kind and verdict")
+    assert text.count("misprint") == 1  # the caveat once, not per finding
+    assert "  KZL-E-find-computed (inconsistent-numbers; Eq. (1)): KZL-test-find-b discrepant" in lines
+    assert "  KZL-E-find-text (units; Eq. (1)): KZL-test-find-a reproduced" in lines
+    assert text.index("computed findings") < text.index("text-only findings")
+
+
+def test_findings_table_and_errata_list_group_by_basis_and_say_the_caveat_once():
+    from navcore.ledger.render import ErrataList, FindingsTable
+
+    evals, found = _finding_fixture()
+    table = FindingsTable(found, evals, list_findings=True)
+    page = table._repr_html_()
+    assert page.count("misprint") == 1
+    assert [(r["paper"], r["basis"], r["total"]) for r in table.rows] == [
+        ("KZL", "computed", 1),
+        ("KZL", "text-only", 1),
+        ("all", "all", 2),
+    ]
+    assert "KZL-test-find-b" in page and "ledger-status-discrepant" in page
+    listing = ErrataList(found, evals=evals)
+    html = listing._repr_html_()
+    assert html.count("misprint") == 1  # once, under the text-only heading, not per erratum
+    assert "misprint" not in ErrataList(found, caveat=False)._repr_html_()  # the page said it
+    assert (
+        html.index("Computed findings") < html.index("KZL-E-find-computed") < html.index("Text-only findings")
+    )
+    assert "<b>Basis:</b> text-only" in html and "ledger-status-reproduced" in html
+    assert "Basis:} computed" in listing.latex()
+
+
+def test_printed_column_quotes_the_paper_and_says_stated_for_a_statement():
+    from navcore.ledger.render import InteractiveLedger, LedgerTable
+
+    quoted = evaluate(make(id="KZL-test-quoted", tolerance=prose("about"), printed="about 10 m"))
+    stated = evaluate(make(id="KZL-test-stated", published=True, unit="statement", compute=lambda: True))
+    html = LedgerTable([quoted, stated])._repr_html_()
+    assert 'data-label="Printed">about&nbsp;10&nbsp;m</td>' in html
+    assert 'data-label="Printed">stated</td>' in html
+    assert '<button type="button" title="sort">Printed</button>' in InteractiveLedger([quoted])._repr_html_()
+
+
+def test_json_carries_the_new_fields_and_is_deterministic():
+    import json
+
+    from navcore.ledger.render import json_dump
+
+    evals = [evaluate(make(compute=lambda: 16.13 * IN.per_cycle + IN.offset, expected_status="consistent"))]
+    first, second = json_dump(evals), json_dump([evaluate(evals[0].claim)])
+    assert first == second
+    record = json.loads(first)[0]
+    assert [r["agrees"] for r in record["readings"]] == [False, True, False]
+    assert record["readings"][1]["band"] is not None and record["band"] is not None

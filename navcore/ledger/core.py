@@ -50,7 +50,8 @@ reads assumed inputs, and weighs them:
   admissible assumed range) or ``inconsistent`` (plausible assumed ranges).
 
 A reading other than the one used is run across the assumed ranges only when the verdict
-needs it (the reading used does not already agree with a band that decides).
+needs it (the reading used does not already agree with a band that decides), over the assumed
+inputs that the run under the readings used read (a claim's inputs are those of that run).
 
 A band too wide to decide
 -------------------------
@@ -1169,11 +1170,20 @@ class Evaluation:
             shown = f" ({shown}{' ' + in_unit if in_unit and shown else ''})" if shown else ""
             changed.append(f"the {quantity} read as {label}{shown}")
         value = reading["value"]
+        band = reading.get("band")
         text = "With " + " and ".join(changed) + ": "
-        text += ("holds" if value else "does not hold") if _is_truth(value) else _plain(value) + unit
-        if reading.get("band") is not None and not _is_truth(value):
-            lo, hi = reading["band"]
-            text += f" (over the assumed ranges {_plain(lo)} to {_plain(hi)}{unit})"
+        if not _is_truth(value):
+            text += _plain(value) + unit
+            if band is not None:
+                text += f" (over the assumed ranges {_plain(band[0])} to {_plain(band[1])}{unit})"
+        elif band is None or bool(band[0]) == bool(band[1]):
+            text += ("holds" if value else "does not hold") + (" across the assumed ranges" if band else "")
+        else:
+            text += (
+                "holds at the nominal inputs, not across all the assumed ranges"
+                if value
+                else "does not hold at the nominal inputs, but holds over part of the assumed ranges"
+            )
         if reading["agrees"]:
             text += ", which agrees with the printed value"
         return text + "."

@@ -16,7 +16,7 @@ import re
 from collections.abc import Iterable, Sequence
 from typing import Any
 
-from navcore.ledger.core import STATUSES, Erratum, Evaluation
+from navcore.ledger.core import ERRATUM_BASES, STATUSES, TEXT_ONLY_CAVEAT, Erratum, Evaluation, claim_quote
 from navcore.ledger.inputs import _label_and_unit
 from navcore.ledger.registry import counts, errata, evaluations
 
@@ -24,6 +24,7 @@ __all__ = [
     "STATUS_COLOURS",
     "CountsTable",
     "ErrataList",
+    "FindingsTable",
     "InteractiveLedger",
     "LedgerTable",
     "claim_group",
@@ -511,7 +512,12 @@ def _statement_word(value: Any, *, printed: bool) -> str:
 
 
 def _printed_text(e: Evaluation) -> str:
+    """What the paper printed: its words as the claim quotes them; else the number as printed
+    with its relation and unit, or "stated" for a statement the book checks."""
     c = e.claim
+    quote, source = claim_quote(c, e.tolerance)
+    if source == "claim":
+        return quote
     if _is_truth(c.published):
         return _statement_word(c.published, printed=True)
     rel = "" if c.relation == "=" else c.relation.replace(">=", "≥").replace("<=", "≤") + " "
@@ -569,6 +575,18 @@ def _band_text(e: Evaluation) -> str:
     return f"{format_value(lo)} to {format_value(hi)}" + (
         f" {e.claim.unit}" if e.claim.unit not in ("", "statement") else ""
     )
+
+
+def _agreeing_reading_text(e: Evaluation) -> str:
+    """Where only readings other than the one used agree: "agrees under: <labels>"."""
+    nominal = next((r for r in e.readings if r["nominal"]), None)
+    if nominal is None or nominal["agrees"]:
+        return ""
+    labels = []
+    for r in e.readings:
+        if r["agrees"]:
+            labels.append("; ".join(r["reading"].values()))
+    return "agrees under: " + " / ".join(labels) if labels else ""
 
 
 _DETAIL_FIELDS = ("note", "tolerance", "band", "inputs")
@@ -834,6 +852,9 @@ class LedgerTable:
                 f' <a class="ledger-erratum" href="{html.escape(self.root)}errata.html#{anchor}">'
                 f"{html.escape(e.claim.erratum)}</a>"
             )
+        reading = _agreeing_reading_text(e)
+        if reading:
+            out += f' <span class="ledger-reading">{html.escape(reading)}</span>'
         return out
 
     def _claim_id_html(self, e: Evaluation) -> str:
@@ -946,6 +967,8 @@ class LedgerTable:
                     verdict += r" \textbf{(check fails)}"
                 if c.erratum:
                     verdict += r"\newline{}{\scriptsize " + _tex_breakable(c.erratum) + "}"
+                if _agreeing_reading_text(e):
+                    verdict += r"\newline{}{\scriptsize " + _tex_escape(_agreeing_reading_text(e)) + "}"
                 verdict += r"\newline{}{\scriptsize\itshape " + _tex_escape(str(c.kind)) + "}"
                 cells = [
                     what,
@@ -1015,6 +1038,11 @@ class CountsTable:
 
 
 _SOFT_HYPHENS = {
+    "typography": "typo&shy;graphy",
+    "convention": "con&shy;vention",
+    "derivation": "deri&shy;vation",
+    "assumption": "as&shy;sumption",
+    "overstatement": "over&shy;statement",
     "reproduced": "repro&shy;duced",
     "consistent": "consis&shy;tent",
     "inconsistent": "incon&shy;sistent",
@@ -1033,8 +1061,26 @@ def _breakable_heading(text: str) -> str:
     return "<br>".join(words)
 
 
+_BASIS_HEADINGS = {"computed": "Computed findings", "text-only": "Text-only findings"}
+
+
+def _claim_link_html(root: str, cid: str, status: str | None) -> str:
+    """A claim id linked to its row on the ledger page, with its verdict as a badge if known."""
+    href = html.escape(f"{root}ledger.html#{cid.lower()}")
+    out = f'<a href="{href}"><code>{html.escape(cid)}</code></a>'
+    if status:
+        out += f' <span class="ledger-badge {_status_class(status)}">{html.escape(status)}</span>'
+    return out
+
+
 class ErrataList:
     """The errata as a list of entries (HTML with anchors; Markdown for the PDF).
+
+    The entries are grouped by basis, computed findings first; each says its basis and
+    kind, what the paper prints, what the book finds, the evidence, and the claims that are
+    its evidence (with their verdicts when ``evals`` is given). The text-only caveat
+    (:data:`~navcore.ledger.core.TEXT_ONLY_CAVEAT`) is said once, under the heading of the
+    text-only findings, never per entry.
 
     Parameters
     ----------
@@ -1044,6 +1090,11 @@ class ErrataList:
         Link prefix from the showing page to the book's root.
     titles : dict of str to str or None, optional
         Page docname to its title, for the text of the links to the discussing pages.
+    evals : sequence of Evaluation or None, optional
+        Evaluations of the claims, to show each claim's derived verdict.
+    caveat : bool, optional
+        Say the text-only caveat under the text-only heading (``False`` where the page has
+        said it already, as the errata page does above its lists).
 
     Examples
     --------
@@ -1053,39 +1104,60 @@ class ErrataList:
     ...             basis="text-only",
     ...             no_claim_reason="a sign with no printed number to check")
     >>> ErrataList([e])
-    SP-E9-doc: SP, Eq. (2.4.2)
+    SP-E9-doc: SP, Eq. (2.4.2) (text-only, typography)
+    >>> "Text-only findings" in ErrataList([e])._repr_html_()
+    True
     """
 
     def __init__(
-        self, items: Sequence[Erratum] | None = None, *, root: str = "", titles: dict[str, str] | None = None
+        self,
+        items: Sequence[Erratum] | None = None,
+        *,
+        root: str = "",
+        titles: dict[str, str] | None = None,
+        evals: Sequence[Evaluation] | None = None,
+        caveat: bool = True,
     ) -> None:
-        self.items = list(errata() if items is None else items)
+        items = list(errata() if items is None else items)
+        self.caveat = caveat
+        order = {b: i for i, b in enumerate(ERRATUM_BASES)}
+        self.items = sorted(items, key=lambda e: order.get(e.basis, len(order)))  # stable within a basis
         self.root = root
         # page -> its title, for link texts (a reader should not see file paths)
         self.titles = titles or {}
+        self.status = {ev.claim.id: ev.status for ev in evals or ()}
+
+    def _groups(self) -> list[tuple[str, list[Erratum]]]:
+        return [
+            (b, [e for e in self.items if e.basis == b])
+            for b in ERRATUM_BASES
+            if any(e.basis == b for e in self.items)
+        ]
+
+    def _claim_html(self, cid: str) -> str:
+        return _claim_link_html(self.root, cid, self.status.get(cid))
 
     def _repr_html_(self) -> str:
         out = []
-        for e in self.items:
-            link = html.escape(f"{self.root}{e.discussed_in}.html#{e.id.lower()}")
-            title = html.escape(self.titles.get(e.discussed_in, "the chapter"))
-            where = f' Discussed in <a href="{link}">{title}</a>.' if e.discussed_in else ""
-            claims_html = (
-                ", ".join(
-                    f'<a href="{html.escape(self.root)}ledger.html#{html.escape(c.lower())}"><code>'
-                    f"{html.escape(c)}</code></a>"
-                    for c in e.claims
+        for basis, items in self._groups():
+            out.append(f'<p class="errata-group"><b>{_BASIS_HEADINGS[basis]}</b> ({len(items)})</p>')
+            if basis == "text-only" and self.caveat:
+                out.append(f'<p class="ledger-caveat">{html.escape(TEXT_ONLY_CAVEAT)}</p>')
+            for e in items:
+                link = html.escape(f"{self.root}{e.discussed_in}.html#{e.id.lower()}")
+                title = html.escape(self.titles.get(e.discussed_in, "the chapter"))
+                where = f' Discussed in <a href="{link}">{title}</a>.' if e.discussed_in else ""
+                claims_html = ", ".join(self._claim_html(c) for c in e.claims) or "none"
+                out.append(
+                    f'<div class="erratum erratum-{html.escape(e.basis)}" id="{html.escape(e.id.lower())}">'
+                    f"<h4>{html.escape(e.id)} — {html.escape(e.paper)}, {html.escape(e.locator)}</h4>"
+                    f'<p class="erratum-basis"><b>Basis:</b> {html.escape(e.basis)} · '
+                    f"<b>Kind:</b> {html.escape(e.kind)}</p>"
+                    f"<p><b>Printed:</b> {html_text(e.printed)}</p>"
+                    f"<p><b>The book finds:</b> {html_text(e.finding)}</p>"
+                    f"<p><b>Evidence:</b> {html_text(e.evidence)}</p>"
+                    f"<p><b>Claims (its evidence in the ledger):</b> {claims_html}.{where}</p></div>"
                 )
-                or "none"
-            )
-            out.append(
-                f'<div class="erratum" id="{html.escape(e.id.lower())}">'
-                f"<h4>{html.escape(e.id)} — {html.escape(e.paper)}, {html.escape(e.locator)}</h4>"
-                f"<p><b>Printed:</b> {html_text(e.printed)}</p>"
-                f"<p><b>The book finds:</b> {html_text(e.finding)}</p>"
-                f"<p><b>Evidence:</b> {html_text(e.evidence)}</p>"
-                f"<p><b>Claims affected:</b> {claims_html}.{where}</p></div>"
-            )
         return "".join(out) or "<p>No errata registered.</p>"
 
     def _repr_markdown_(self) -> str:
@@ -1097,30 +1169,167 @@ class ErrataList:
         return "```{raw} latex\n" + self.latex() + "\n```"
 
     def latex(self) -> str:
-        """Each erratum as a bold heading line and an itemised list of its four fields."""
+        """Each erratum as a bold heading line and an itemised list of its fields, by basis."""
         out = [r"\begingroup\sloppy"]
-        for e in self.items:
-            claims_tex = "; ".join(r"\texttt{" + _tex_breakable(c) + "}" for c in e.claims) or "none"
-            out += [
-                r"\par\medskip\noindent\textbf{"
-                + _tex_breakable(e.id)
-                + "} ("
-                + _tex_escape(e.paper)
-                + ", "
-                + tex_text(e.locator)
-                + r")\nopagebreak",
-                r"\begin{itemize}",
-                r"\item \textit{Printed:} " + tex_text(e.printed),
-                r"\item \textit{The book finds:} " + tex_text(e.finding),
-                r"\item \textit{Evidence:} " + tex_text(e.evidence),
-                r"\item \textit{Claims affected:} " + claims_tex,
-                r"\end{itemize}",
-            ]
+        for basis, items in self._groups():
+            out.append(
+                r"\par\medskip\noindent\textit{" + _BASIS_HEADINGS[basis] + f" ({len(items)})" + "}\\par"
+            )
+            if basis == "text-only" and self.caveat:
+                out.append(r"\noindent{}" + _tex_escape(TEXT_ONLY_CAVEAT) + r"\par")
+            for e in items:
+                claims_tex = (
+                    "; ".join(
+                        r"\texttt{"
+                        + _tex_breakable(c)
+                        + "}"
+                        + (f" ({_tex_escape(self.status[c])})" if c in self.status else "")
+                        for c in e.claims
+                    )
+                    or "none"
+                )
+                out += [
+                    r"\par\medskip\noindent\textbf{"
+                    + _tex_breakable(e.id)
+                    + "} ("
+                    + _tex_escape(e.paper)
+                    + ", "
+                    + tex_text(e.locator)
+                    + r")\nopagebreak",
+                    r"\begin{itemize}",
+                    r"\item \textit{Basis:} "
+                    + _tex_escape(e.basis)
+                    + r"; \textit{kind:} "
+                    + _tex_escape(e.kind),
+                    r"\item \textit{Printed:} " + tex_text(e.printed),
+                    r"\item \textit{The book finds:} " + tex_text(e.finding),
+                    r"\item \textit{Evidence:} " + tex_text(e.evidence),
+                    r"\item \textit{Claims (its evidence in the ledger):} " + claims_tex,
+                    r"\end{itemize}",
+                ]
         out.append(r"\endgroup")
         return "\n".join(out)
 
     def __repr__(self) -> str:
-        return "\n".join(f"{e.id}: {e.paper}, {e.locator}" for e in self.items) or "No errata registered."
+        return (
+            "\n".join(f"{e.id}: {e.paper}, {e.locator} ({e.basis}, {e.kind})" for e in self.items)
+            or "No errata registered."
+        )
+
+
+class FindingsTable:
+    """The findings (errata) counted by paper, basis and kind, and optionally listed with
+    the claims that are their evidence (HTML and PDF).
+
+    The text-only caveat (:data:`~navcore.ledger.core.TEXT_ONLY_CAVEAT`) follows the counts
+    once, when a text-only finding is counted.
+
+    Parameters
+    ----------
+    items : sequence of Erratum
+        The findings.
+    evals : sequence of Evaluation, optional
+        The evaluations whose claims are shown as evidence (with their verdicts).
+    root : str, optional
+        Link prefix from the showing page to the book's root.
+    list_findings : bool, optional
+        Also list every finding (id linked to its entry on the errata page, basis, kind and
+        its evidence).
+
+    Examples
+    --------
+    >>> from navcore.ledger import Erratum
+    >>> e = Erratum(id="SP-E9-doc", paper="SP", locator="Eq. (2.4.2)", printed="$a + b$",
+    ...             finding="$a - b$", evidence="the derivation in the book", kind="typography",
+    ...             basis="text-only", no_claim_reason="a sign with no printed number to check")
+    >>> print(repr(FindingsTable([e])).splitlines()[1])
+    SP  text-only  1  0  0  0  0  0  0  1
+    >>> "transcription" in FindingsTable([e])._repr_html_()
+    True
+    """
+
+    def __init__(
+        self,
+        items: Sequence[Erratum],
+        evals: Sequence[Evaluation] = (),
+        *,
+        root: str = "",
+        list_findings: bool = False,
+    ) -> None:
+        from navcore.ledger.summary import finding_evidence, findings_count_table
+
+        self.items = list(items)
+        self.root = root
+        self.list_findings = list_findings
+        self.rows = findings_count_table(self.items)
+        self.evidence = finding_evidence(self.items, list(evals))
+
+    def _table(self) -> tuple[list[str], list[list[str]]]:
+        from navcore.ledger.core import ERRATUM_KINDS
+
+        head = ["Paper", "Basis", *(k.replace("-", " ") for k in ERRATUM_KINDS), "Findings"]
+        body = [
+            [r["paper"], r["basis"], *(str(r[k]) for k in ERRATUM_KINDS), str(r["total"])] for r in self.rows
+        ]
+        return head, body
+
+    def _caveat(self) -> str:
+        return TEXT_ONLY_CAVEAT if any(e.basis == "text-only" for e in self.items) else ""
+
+    def _repr_html_(self) -> str:
+        head, body = self._table()
+        out = ['<div class="ledger-counts-wrap"><table class="ledger-counts ledger-findings"><thead><tr>']
+        out += [f"<th>{_breakable_heading(h)}</th>" for h in head]
+        out.append("</tr></thead><tbody>")
+        for r in body:
+            out.append("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in r) + "</tr>")
+        out.append("</tbody></table></div>")
+        if self._caveat():
+            out.append(f'<p class="ledger-caveat">{html.escape(self._caveat())}</p>')
+        if self.list_findings:
+            out.append(
+                '<div class="ledger-table-wrap"><table class="ledger-findings-list"><thead><tr>'
+                '<th scope="col">Finding</th><th scope="col">Basis</th><th scope="col">Kind</th>'
+                '<th scope="col">Its evidence: claims and verdicts</th></tr></thead><tbody>'
+            )
+            for e, evs in self.evidence:
+                anchor = html.escape(f"{self.root}errata.html#{e.id.lower()}")
+                claims = (
+                    ", ".join(_claim_link_html(self.root, ev.claim.id, ev.status) for ev in evs)
+                    or "no claim checks it"
+                )
+                out.append(
+                    f'<tr><td><a href="{anchor}"><code>{html.escape(e.id)}</code></a><br>'
+                    f'<span class="ledger-locator">{html.escape(e.paper)}, {html_text(e.locator)}</span></td>'
+                    f"<td>{html.escape(e.basis)}</td><td>{html.escape(e.kind)}</td><td>{claims}</td></tr>"
+                )
+            out.append("</tbody></table></div>")
+        return "".join(out)
+
+    def _repr_markdown_(self) -> str:
+        head, body = self._table()
+        out = latex_table(head, body)
+        if self._caveat():
+            out += "\n\n" + self._caveat()
+        if self.list_findings:
+            rows = [
+                [
+                    e.id.replace("-", "-\u200b"),
+                    e.basis,
+                    e.kind,
+                    ", ".join(f"{ev.claim.id} ({ev.status})" for ev in evs).replace("-", "-\u200b")
+                    or "no claim checks it",
+                ]
+                for e, evs in self.evidence
+            ]
+            out += "\n\n" + latex_table(
+                ["Finding", "Basis", "Kind", "Its evidence: claims and verdicts"], rows
+            )
+        return out
+
+    def __repr__(self) -> str:
+        head, body = self._table()
+        return "\n".join("  ".join(row) for row in [head, *body])
 
 
 _LEDGER_JS = r"""
@@ -1282,7 +1491,7 @@ class InteractiveLedger:
         cols = [("id", "Claim"), ("paper", "Paper")]
         if any(r.get("kind") for r in self.records):
             cols.append(("kind", "Kind"))
-        cols += [("locator", "Locator"), ("quantity", "Quantity"), ("published", "Published")]
+        cols += [("locator", "Locator"), ("quantity", "Quantity"), ("published", "Printed")]
         cols.append(("reproduced", "Reproduced"))
         if any(r.get("band") for r in self.records):
             cols.append(("band", "Band"))
@@ -1326,6 +1535,8 @@ class InteractiveLedger:
             if r["erratum"]:
                 anchor = html.escape(r["erratum"].lower())
                 status += f'<br><a href="{self.root}errata.html#{anchor}">{html.escape(r["erratum"])}</a>'
+            if _agreeing_reading_text(e):
+                status += f'<br><span class="ledger-reading">{html.escape(_agreeing_reading_text(e))}</span>'
             claim = f"<code>{html.escape(r['id'])}</code>"
             if r["discussed_in"]:
                 target = html.escape(f"{self.root}{r['discussed_in']}.html#{r['id'].lower()}")

@@ -1,22 +1,36 @@
 """Counts and input summaries of a set of evaluations (terminal, book pages).
 
-The ledger's summary (LEDGER.md): claims counted by paper, verdict and kind; the fitted
-parameters with the claims each was fitted to and the claims that read it; the assumed
-inputs with the claims each moves.
+The ledger's summary (LEDGER.md) leads with the findings: the errata counted by basis
+(``computed``, ``text-only``) and kind, each with the claims that are its evidence; then the
+claims counted by paper, verdict and kind; the fitted parameters with the claims each was
+fitted to and the claims that read it; the assumed inputs with the claims each moves.
 """
 
 from __future__ import annotations
 
+import textwrap
 from collections.abc import Sequence
 from typing import Any
 
-from navcore.ledger.core import KINDS, PAPERS, STATUSES, Evaluation
+from navcore.ledger.core import (
+    ERRATUM_BASES,
+    ERRATUM_KINDS,
+    KINDS,
+    PAPERS,
+    STATUSES,
+    TEXT_ONLY_CAVEAT,
+    Erratum,
+    Evaluation,
+)
 from navcore.ledger.inputs import Input, get_input
 
 __all__ = [
     "assumed_inputs_frame",
     "convention_inputs_frame",
     "count_table",
+    "finding_evidence",
+    "findings_count_table",
+    "findings_text",
     "fitted_inputs_frame",
     "input_readers",
     "kind_counts_frame",
@@ -74,6 +88,160 @@ def count_table(evals: Sequence[Evaluation]) -> list[dict[str, Any]]:
     return rows
 
 
+def finding_evidence(
+    errata: Sequence[Erratum], evals: Sequence[Evaluation]
+) -> list[tuple[Erratum, list[Evaluation]]]:
+    """Each finding (erratum) with the claims among ``evals`` that are its evidence.
+
+    A claim is evidence for an erratum it names (``erratum=``) or that names it (the
+    erratum's ``claims`` hold its id or a former id).
+
+    Parameters
+    ----------
+    errata : sequence of Erratum
+        The findings, in the order they are shown.
+    evals : sequence of Evaluation
+        The evaluations to look in (their order is kept).
+
+    Returns
+    -------
+    list of tuple of (Erratum, list of Evaluation)
+        One pair per erratum; the list is empty for an erratum no claim checks.
+
+    Examples
+    --------
+    >>> from navcore.ledger import EXACT, Claim, Erratum, evaluate
+    >>> e = Erratum(id="SP-E7-doc", paper="SP", locator="Eq. (1)", printed="a + b", finding="a - b",
+    ...             evidence="the derivation", kind="typography", basis="text-only",
+    ...             claims=("SP-doc-sum",))
+    >>> c = Claim(id="SP-doc-sum", paper="SP", locator="Eq. (1)", quantity="a sum", published=3.0,
+    ...           unit="", compute=lambda: 3.0, tolerance=EXACT, expected_status="reproduced",
+    ...           note="a synthetic claim")
+    >>> [(f.id, [ev.status for ev in evs]) for f, evs in finding_evidence([e], [evaluate(c)])]
+    [('SP-E7-doc', ['reproduced'])]
+    """
+    out = []
+    for e in errata:
+        named = set(e.claims)
+        evidence = [
+            ev
+            for ev in evals
+            if ev.claim.erratum == e.id or named.intersection((ev.claim.id, *ev.claim.aliases))
+        ]
+        out.append((e, evidence))
+    return out
+
+
+def findings_count_table(errata: Sequence[Erratum]) -> list[dict[str, Any]]:
+    """Findings counted by paper, basis and kind: rows ``{paper, basis, <kind>: n, ..., total}``.
+
+    Parameters
+    ----------
+    errata : sequence of Erratum
+        The findings to count.
+
+    Returns
+    -------
+    list of dict
+        One row per (paper, basis) with findings, in the order of
+        :data:`~navcore.ledger.core.PAPERS` and :data:`~navcore.ledger.core.ERRATUM_BASES`,
+        a count per kind of :data:`~navcore.ledger.core.ERRATUM_KINDS` and ``total``; then,
+        for more than one paper, one row per basis over all papers (paper ``"all"``); the
+        last row, paper and basis ``"all"``, sums them.
+
+    Examples
+    --------
+    >>> from navcore.ledger import Erratum
+    >>> e = Erratum(id="SP-E7-doc", paper="SP", locator="Eq. (1)", printed="a + b", finding="a - b",
+    ...             evidence="the derivation", kind="typography", basis="text-only")
+    >>> [(r["paper"], r["basis"], r["typography"], r["total"]) for r in findings_count_table([e])]
+    [('SP', 'text-only', 1, 1), ('all', 'all', 1, 1)]
+    """
+
+    def row(paper: str, basis: str, sel: list[Erratum]) -> dict[str, Any]:
+        r: dict[str, Any] = {"paper": paper, "basis": basis}
+        for k in ERRATUM_KINDS:
+            r[k] = sum(e.kind == k for e in sel)
+        r["total"] = len(sel)
+        return r
+
+    rows = []
+    papers = [p for p in PAPERS if any(e.paper == p for e in errata)]
+    for p in papers:
+        for b in ERRATUM_BASES:
+            sel = [e for e in errata if e.paper == p and e.basis == b]
+            if sel:
+                rows.append(row(p, b, sel))
+    if len(papers) > 1:
+        for b in ERRATUM_BASES:
+            rows.append(row("all", b, [e for e in errata if e.basis == b]))
+    rows.append(row("all", "all", list(errata)))
+    return rows
+
+
+#: Short column heads of the erratum kinds for the terminal.
+_KIND_SHORT = {
+    "typography": "typo",
+    "units": "units",
+    "convention": "conv",
+    "derivation": "deriv",
+    "unstated-assumption": "unstated",
+    "inconsistent-numbers": "numbers",
+    "overstatement": "overstate",
+}
+
+
+def findings_text(evals: Sequence[Evaluation], errata: Sequence[Erratum]) -> str:
+    """The findings for a terminal: counts by paper, basis and kind, then each with its evidence.
+
+    Parameters
+    ----------
+    evals : sequence of Evaluation
+        The evaluations whose claims are shown as evidence.
+    errata : sequence of Erratum
+        The findings.
+
+    Returns
+    -------
+    str
+        The :func:`findings_count_table`, the text-only caveat (once, when a text-only
+        finding is listed), then the findings by basis, each as ``id (kind; locator):``
+        followed by its claims and their verdicts.
+
+    Examples
+    --------
+    >>> from navcore.ledger import EXACT, Claim, Erratum, evaluate
+    >>> e = Erratum(id="SP-E7-doc", paper="SP", locator="Eq. (1)", printed="a + b", finding="a - b",
+    ...             evidence="the derivation", kind="typography", basis="text-only",
+    ...             claims=("SP-doc-sum",))
+    >>> c = Claim(id="SP-doc-sum", paper="SP", locator="Eq. (1)", quantity="a sum", published=3.0,
+    ...           unit="", compute=lambda: 3.0, tolerance=EXACT, expected_status="reproduced",
+    ...           note="a synthetic claim")
+    >>> print(findings_text([evaluate(c)], [e]).splitlines()[-1])
+      SP-E7-doc (typography; Eq. (1)): SP-doc-sum reproduced
+    """
+    lines = [f"findings (errata): {len(errata)}, by paper, basis and kind"]
+    head = ["paper", "basis", *(_KIND_SHORT[k] for k in ERRATUM_KINDS), "total"]
+    widths = [6, 9, *(max(len(_KIND_SHORT[k]), 3) for k in ERRATUM_KINDS), 5]
+    lines.append("  ".join(h.ljust(w) for h, w in zip(head, widths, strict=True)).rstrip())
+    for r in findings_count_table(errata):
+        cells = [r["paper"], r["basis"], *(str(r[k]) for k in ERRATUM_KINDS), str(r["total"])]
+        lines.append("  ".join(c.ljust(w) for c, w in zip(cells, widths, strict=True)).rstrip())
+    if any(e.basis == "text-only" for e in errata):
+        lines += textwrap.wrap(TEXT_ONLY_CAVEAT, 100)
+    evidence = finding_evidence(errata, evals)
+    for b in ERRATUM_BASES:
+        sel = [(e, evs) for e, evs in evidence if e.basis == b]
+        if not sel:
+            continue
+        lines.append("")
+        lines.append(f"{b} findings and the claims that are their evidence:")
+        for e, evs in sel:
+            claims = ", ".join(f"{ev.claim.id} {ev.status}" for ev in evs) or "no claim checks it"
+            lines.append(f"  {e.id} ({e.kind}; {e.locator}): {claims}")
+    return "\n".join(lines)
+
+
 def input_readers(evals: Sequence[Evaluation], provenance: str) -> list[tuple[Input, list[str]]]:
     """The inputs of ``provenance`` read by ``evals``, each with the ids of the claims that read it.
 
@@ -121,19 +289,23 @@ def input_readers(evals: Sequence[Evaluation], provenance: str) -> list[tuple[In
     return [(get_input(name), ids) for name, ids in sorted(readers.items())]
 
 
-def summary_text(evals: Sequence[Evaluation]) -> str:
-    """Counts by paper, kind and verdict; fitted parameters; assumed inputs (plain text).
+def summary_text(evals: Sequence[Evaluation], errata: Sequence[Erratum] | None = None) -> str:
+    """Findings first, then counts by paper, kind and verdict; fitted parameters; assumed inputs.
 
     Parameters
     ----------
     evals : sequence of Evaluation
         The evaluations to summarise (from :func:`~navcore.ledger.registry.evaluations`).
+    errata : sequence of Erratum or None, optional
+        The findings to lead with; ``None`` for the registered errata of the papers of
+        ``evals``.
 
     Returns
     -------
     str
-        The summary of LEDGER.md for a terminal: the :func:`count_table`, the number of
-        claims failing their check, then the fitted parameters and the assumed inputs read.
+        The summary of LEDGER.md for a terminal: the findings (:func:`findings_text`), then
+        the claims by verdict (:func:`count_table`), the number of claims failing their
+        check, the fitted parameters and the assumed inputs read.
 
     Examples
     --------
@@ -150,8 +322,12 @@ def summary_text(evals: Sequence[Evaluation]) -> str:
     ...           published=value, unit="dB", compute=lambda: IN.gain_db - IN.scale * IN.loss_db,
     ...           tolerance=tol, expected_status="consistent", note="a synthetic claim")
     >>> ev = evaluate(c)
-    >>> for line in summary_text([ev]).splitlines()[3:]:
+    >>> for line in summary_text([ev], errata=[]).splitlines()[4:]:
     ...     print(line.rstrip())
+    claims by paper, kind and verdict:
+    paper   kind           reproduced  consistent  inconsistent  discrepant  not-reproducible  total
+    SP      reproduction   0           1           0             0           0                 1
+    all     all            0           1           0             0           0                 1
     1 claims, 0 failing their check
     <BLANKLINE>
     fitted parameters (the claims they were fitted to are not evidence):
@@ -160,7 +336,11 @@ def summary_text(evals: Sequence[Evaluation]) -> str:
     assumed inputs (nominal, range) and the claims each moves:
       SP.doc_summary.loss_db = 2.0 [1.0, 3.0] dB: 1 claims
     """
-    lines = []
+    if errata is None:
+        from navcore.ledger.registry import errata as registered
+
+        errata = [e for p in PAPERS if any(ev.claim.paper == p for ev in evals) for e in registered(p)]
+    lines = [findings_text(evals, errata), "", "claims by paper, kind and verdict:"]
     head = ["paper", "kind", *STATUSES, "total"]
     widths = [6, 13, *(max(len(s), 3) for s in STATUSES), 5]
     lines.append("  ".join(h.ljust(w) for h, w in zip(head, widths, strict=True)))
@@ -389,7 +569,7 @@ def fitted_inputs_frame(evals: Sequence[Evaluation]) -> Any:
 
 
 def convention_inputs_frame(evals: Sequence[Evaluation]) -> Any:
-    """Every convention: the reading used, the other reading and the reason.
+    """Every convention: the reading used, the other admissible readings, and the claims they move.
 
     Parameters
     ----------
@@ -400,7 +580,9 @@ def convention_inputs_frame(evals: Sequence[Evaluation]) -> Any:
     -------
     pandas.DataFrame
         One row per convention input read, columns ``Paper``, ``Convention``, ``Reading
-        used``, ``Other reading``, ``Unit``, ``Reason`` and ``Claims``.
+        used`` (its label and value), ``Other readings`` (each label and value), ``Unit``,
+        ``Reason``, ``Claims`` (the number that read it) and ``Agree only under another
+        reading`` (the ids of the claims whose printed value only another reading accepts).
 
     Examples
     --------
@@ -418,27 +600,43 @@ def convention_inputs_frame(evals: Sequence[Evaluation]) -> Any:
     ...           tolerance=tol, expected_status="consistent", note="a synthetic claim")
     >>> ev = evaluate(c)
     >>> frame = convention_inputs_frame([ev])
-    >>> print(frame[["Convention", "Reading used", "Other reading", "Claims"]].to_string(index=False))
-    Convention Reading used Other reading  Claims
-    loss scale            1           0.5       1
+    >>> print(frame[["Convention", "Reading used", "Other readings", "Claims"]].to_string(index=False))
+    Convention             Reading used                Other readings  Claims
+    loss scale the reading used (1) the other reading (0.5)       1
     """
     import pandas as pd
 
-    rows = [
-        {
-            "Paper": inp.paper,
-            "Convention": _label(inp),
-            "Reading used": _fmt(inp.value),
-            "Other reading": _fmt(inp.alternative),
-            "Unit": inp.unit,
-            "Reason": inp.reason,
-            "Claims": len(readers),
-        }
-        for inp, readers in _inputs_of(evals, "convention")
+    rows = []
+    for inp, readers in _inputs_of(evals, "convention"):
+        only_other = [
+            e.claim.id
+            for e in readers
+            if any(r["agrees"] for r in e.readings)
+            and not any(r["agrees"] for r in e.readings if r["reading"].get(inp.name) == inp.nominal_label)
+        ]
+        rows.append(
+            {
+                "Paper": inp.paper,
+                "Convention": _label(inp),
+                "Reading used": f"{inp.nominal_label} ({_fmt(inp.value)})",
+                "Other readings": "; ".join(f"{label} ({_fmt(v)})" for label, v in inp.other_readings),
+                "Unit": inp.unit,
+                "Reason": inp.reason,
+                "Claims": len(readers),
+                "Agree only under another reading": _breakable(", ".join(only_other)),
+            }
+        )
+    columns = [
+        "Paper",
+        "Convention",
+        "Reading used",
+        "Other readings",
+        "Unit",
+        "Reason",
+        "Claims",
+        "Agree only under another reading",
     ]
-    return pd.DataFrame(
-        rows, columns=["Paper", "Convention", "Reading used", "Other reading", "Unit", "Reason", "Claims"]
-    )
+    return pd.DataFrame(rows, columns=columns)
 
 
 def sensitivity_frame(evals: Sequence[Evaluation]) -> Any:

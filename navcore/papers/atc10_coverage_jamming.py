@@ -728,7 +728,7 @@ CLAIMS: list[Claim] = [
         "A rewriting "
         "should never disagree; the printed right side $K \\ln(\\lambda_1 b)$ should read "
         "$K \\ln(\\lambda_1 / b)$, "
-        "$b = P(\\rho=1|H_0)/P(\\rho=1|H_1)$. Oracle: exact rational arithmetic.",
+        "$b = P(\\rho=1|H_0)/P(\\rho=1|H_1)$. Checked independently with exact rational arithmetic.",
         discussed_in=PAGE,
     ),
     _statement(

@@ -805,7 +805,7 @@ ERRATA = [
         "sensitivity, counting half as many independent samples (B instead of 2B per second) moves the "
         "$K = 100$ thresholds from 55.3 to 74.8 dBW ($P_{DL} = 0.88$) and from 51.2 to 58.1 dBW (0.999); $K "
         "= 1000$, "
-        "$P_{DL} = 0.999$ then has no finite threshold (the library's tests check these values).",
+        "$P_{DL} = 0.999$ then has no finite threshold.",
         claims=("ATC10-eqB.6-correlated-samples",),
         discussed_in=PAGE,
     ),
@@ -892,7 +892,7 @@ ERRATA = [
         "lowers the "
         "finite $t = 0$ thresholds of Table 2.1 and of $K = 1$ by at most 0.16 dB, and leaves the $K = "
         "1000$, "
-        "$P_{DL} = 0.98$ entry without a finite power (the library's tests check these values).",
+        "$P_{DL} = 0.98$ entry without a finite power.",
         no_claim_reason="the unstated independence makes (2.5.8) a lower bound rather than an equality, "
         "and the bound is what the paper uses; near the thresholds noise fills the lists "
         "so P(psi_D = 1 | theta_D = 1) is 1 to double precision and the two sides agree, "
@@ -920,8 +920,7 @@ ERRATA = [
         "replacing "
         "$P(\\rho = 1 | H_1)$ by the smaller $p_d^4$ can only lower the bound. At the $K = 1000$, "
         "$P_{DL} = 0.999$ threshold $p_f = 0.27$, and the noise-only list factor $F(p_f)$ of (B.6) differs "
-        "from 1 by 4e-304 "
-        "(the library's tests check these values).",
+        "from 1 by 4e-304.",
         claims=("ATC10-eqA.16-bound-stays-valid",),
         no_claim_reason="the paper qualifies the approximation ('reasonably large p_d') and says the "
         "bound stays valid without it, which claim ATC10-eqA.16-bound-stays-valid "
@@ -1015,10 +1014,8 @@ def _table21_claim(row: int, k: int, p_dl: float, text: str, relation: str) -> C
         note += " The $N_{ADL}$ ceiling ($J \\to \\infty$) is $0.0021 N_T < 0.01 N_T$, so no power suffices."
     elif expected == "discrepant":
         note += (
-            " Misses the printed whole dB (erratum ATC10-E-jam-table2.1-values). Verdict changed from "
-            "consistent: the tolerance was widened to $\\pm 1$ dB ($\\pm 2$ dB at $K = 1000$) where the "
-            "computed value "
-            "missed the printed half dB; it is now the printed digits."
+            " Misses the printed whole dB (erratum ATC10-E-jam-table2.1-values); the tolerance is the "
+            "printed digits."
         )
     return Claim(
         id=f"ATC10-tab2.1-K{k}-pdl{p_dl}",
@@ -1053,12 +1050,10 @@ def _step_claim(k_from: int, k_to: int, p_dl: float, expected: str) -> Claim:
     note = "$N_{ADL} = 0.01 N_T$ thresholds at $t = 0$, both ends at the same Table 2.1 design $P_{DL}$."
     if expected == "discrepant":
         note += (
-            " Verdict changed from consistent: the tolerance was $\\pm 2.5$ dB ('a quarter decade'); the "
-            "prose "
-            "table's 'about' is $\\pm 10$ %, i.e. $\\pm 1$ dB (erratum ATC10-E-jam-10dB-steps)."
+            " The prose table's 'about' is $\\pm 10$ %, i.e. $\\pm 1$ dB (erratum ATC10-E-jam-10dB-steps)."
         )
     else:
-        note += " Verdict changed from consistent: with published inputs only, agreement is a reproduction."
+        note += " The computation reads published inputs only."
     return Claim(
         id=f"ATC10-sec2.8-10dB-K{k_from}to{k_to}-pdl{p_dl}",
         paper="ATC10",
@@ -1147,8 +1142,7 @@ CLAIMS: list[Claim] = [
         expected_status="consistent",
         kind="cross-check",
         note="Arithmetic on two printed values only (50 ns rms, one update per second): fractional stability "
-        "= time error / update interval. Verdict changed from reproduced: arithmetic on printed numbers is a "
-        "cross-check of the paper's bookkeeping, not a reproduction.",
+        "= time error / update interval: a cross-check of the paper's bookkeeping, not a reproduction.",
         discussed_in=PAGE_T11,
     ),
     Claim(
@@ -1166,7 +1160,7 @@ CLAIMS: list[Claim] = [
         "ERP reads "
         "the one published pulse input, the printed 10 mJ of pulse energy; $P_0$ and $\\tau$ are the paper's "
         "'e.g.' and enter only this check. $P_0$ is the average power during the pulse (erratum "
-        "ATC10-E-jam-P0-average-peak). Verdict changed from reproduced: a cross-check of printed numbers.",
+        "ATC10-E-jam-P0-average-peak). A cross-check of printed numbers.",
         discussed_in=PAGE_K1,
     ),
     Claim(
@@ -1288,9 +1282,8 @@ CLAIMS: list[Claim] = [
         ),
         note="Evaluated at the $K = 1$, $P_{DL} = 0.88$ threshold, $p_f \\approx 10^{-6}$: "
         "$(1 - p_f)^{2 \\times 10^7} \\approx e^{-20}$ where $1 - (1 - p_f)^{2 \\times 10^7} \\approx 1$. "
-        "Oracle: "
-        "40-digit arbitrary-precision arithmetic. Was a truth value ('equal within 1e-3'); now "
-        "the logarithm of the ratio is shown.",
+        "Checked independently with 40-digit arbitrary-precision arithmetic; the logarithm of the "
+        "ratio is shown.",
         discussed_in=PAGE,
     ),
     Claim(
@@ -1585,9 +1578,7 @@ CLAIMS: list[Claim] = [
         oracle_tolerance=_ORACLE_DB,
         note="Same entry as Table 2.1 (75.7 dBW against the printed 77); the caption's $P_{DL} = 0.88$ "
         "gives no "
-        "finite power. Verdict changed from consistent: the tolerance was $\\pm 2$ dB for the shallow "
-        "crossing; "
-        "it is now the printed digits.",
+        "finite power. The tolerance is the printed digits.",
         discussed_in=PAGE_T11,
     ),
     Claim(
@@ -1606,8 +1597,7 @@ CLAIMS: list[Claim] = [
         oracle=lambda: table11_caption_matches(True),
         oracle_tolerance=EXACT,
         note="Each printed ERP against the $P_{DL} = 0.88$ threshold within its printed half dB (33.6, 45.8, "
-        "55.3, none): none matches, $K = 1$ by 0.09 dB beyond the rounding (it was 'within 1 dB' before this "
-        "audit, and the claim a truth value).",
+        "55.3, none): none matches, $K = 1$ by 0.09 dB beyond the rounding.",
         discussed_in=PAGE_T11,
     ),
 ]
@@ -1679,10 +1669,7 @@ for _i, (_k, _erp, _rf, _dia, _bw) in enumerate(TABLE_1_1):
             + (
                 " Sec. 2.7 itself says 20 degrees."
                 if _k == 1
-                else " Verdict changed from consistent: computed before by $70 \\lambda/D$ through the "
-                "assumed dish model, with a $\\pm 1$ deg tolerance; now from the printed columns and the "
-                "printed "
-                "digits."
+                else " Computed from the printed columns, with the printed digits."
             ),
             discussed_in=PAGE_T11,
         )

@@ -436,7 +436,8 @@ CLAIMS = [
         oracle=_eq11_oracle,
         oracle_tolerance=Tolerance(reason="two ways of the same entries: 1e-12", abs=1e-12, policy="exact"),
         note="At the Table 1 specific force (0, 0, -g) the printed matrix is minus skew(a): difference "
-        "2 |a| / |a| = 2. Oracle: the printed matrix times unit vectors against numpy's cross product.",
+        "2 |a| / |a| = 2. Checked independently: the printed matrix times unit vectors against numpy's "
+        "cross product.",
         discussed_in=PAGE2,
     ),
     Claim(

@@ -183,7 +183,7 @@ CLAIMS = [
         tolerance=_d36[1],
         expected_status="consistent",
         note="36 deg per 30 m is the section's 360 deg per 300 m convention (close to a C/A chip, 293 m): "
-        "arithmetic on printed numbers. Verdict changed from reproduced: a cross-check.",
+        "arithmetic on printed numbers, a cross-check.",
     ),
     Claim(
         id="SP-sec2.5-doppler-cell-hz",
@@ -222,8 +222,7 @@ CLAIMS = [
         expected_status="consistent",
         note="Checked per satellite on the printed table (TC10 $\\ge$ LC1.0 $\\ge$ TC1.0 $\\ge$ TC0.5 "
         "$\\ge$ TC0.2), the "
-        "ordering the text attributes to better calibration. Verdict changed from reproduced: a check on "
-        "printed numbers is a cross-check.",
+        "ordering the text attributes to better calibration: a check on printed numbers, a cross-check.",
     ),
     Claim(
         id="SP-sec2.6.2-search-better",
@@ -237,7 +236,7 @@ CLAIMS = [
         tolerance=_t02[1],
         expected_status="consistent",
         note="Delta T = 20 ms x intervals x one Doppler cell: 0.10 to 0.18 s for the four better systems; "
-        "arithmetic on printed numbers. Verdict changed from reproduced: a cross-check.",
+        "arithmetic on printed numbers, a cross-check.",
     ),
     Claim(
         id="SP-sec2.6.2-search-10-min",
@@ -250,8 +249,7 @@ CLAIMS = [
         compute=lambda: float(np.min(search_times_s(TC10))),
         tolerance=_t08[1],
         expected_status="consistent",
-        note="42 intervals x 20 ms = 0.84 s, arithmetic on printed numbers. Verdict changed from "
-        "reproduced: a cross-check.",
+        note="42 intervals x 20 ms = 0.84 s, arithmetic on printed numbers, a cross-check.",
     ),
     Claim(
         id="SP-sec2.6.2-search-10-max",
@@ -264,8 +262,7 @@ CLAIMS = [
         compute=lambda: float(np.max(search_times_s(TC10))),
         tolerance=_t16[1],
         expected_status="consistent",
-        note="82 intervals x 20 ms = 1.64 s, arithmetic on printed numbers. Verdict changed from "
-        "reproduced: a cross-check.",
+        note="82 intervals x 20 ms = 1.64 s, arithmetic on printed numbers, a cross-check.",
     ),
     Claim(
         id="SP-sec2.6.2-outside-1sigma",

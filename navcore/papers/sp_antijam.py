@@ -517,9 +517,8 @@ def _cep_claim(arch: str, power: float) -> Claim:
             "twice the printed value; the band reaches 120 m only through the jammer-direction antenna gain "
             "(about -6 dB instead of -3 dB) or a stronger signal, and at those values the model's TC CEP at "
             "10 W collapses to the range-bias floor (2.6 m, against the printed 71 m): no single assumed "
-            "input fits both TC values (see SP-sec3.3-cep-tc-10W). Verdict changed from not-reproducible: "
-            "the book computes the value under declared assumptions, so it shows it. The fix noise is the "
-            "library's early-minus-late code-tracking noise.",
+            "input fits both TC values (see SP-sec3.3-cep-tc-10W). The fix noise is the library's "
+            "early-minus-late code-tracking noise.",
         )
     note = (
         "Same reduced model and assumptions as the DI claims. The TC error after loss of lock is "
@@ -528,9 +527,8 @@ def _cep_claim(arch: str, power: float) -> Claim:
         "nominal assumptions, too large at 100 W). No assumed input within its range reaches 71 m (the "
         "largest, about 47 m, comes at 200 m/s or 0 dB jammer gain); reaching it would take a longer outage "
         "at 10 W, i.e. an unpublished trajectory, manoeuvre or reacquisition behaviour, or a TC lock limit "
-        "several dB below the printed 54 dB. Verdict changed from not-reproducible: the book computes "
-        "the value under declared assumptions, so it shows it. The fix noise is the library's "
-        "early-minus-late code-tracking noise."
+        "several dB below the printed 54 dB. The fix noise is the library's early-minus-late "
+        "code-tracking noise."
     )
     return Claim(**common, expected_status="not-reproducible", note=note)
 
@@ -587,9 +585,8 @@ CLAIMS = [
         compute=lambda: power_ratio_from_db(20.0),
         tolerance=EXACT,
         expected_status="consistent",
-        note="$10^{20/10} = 100$: the definition of the decibel applied to the printed 20 dB. Verdict "
-        "changed "
-        "from reproduced: arithmetic on printed numbers is a cross-check.",
+        note="$10^{20/10} = 100$: the definition of the decibel applied to the printed 20 dB: arithmetic on "
+        "printed numbers, a cross-check.",
     ),
     Claim(
         id="SP-sec3.3-aj-rule-distance",
@@ -656,8 +653,7 @@ CLAIMS = [
         "does not lift it above 9 dB either: the reduced model's CEP curves differ in shape from the "
         "paper's (the paper's own stated thresholds are 11 dB apart, erratum SP-E-di-improvement-15dB). "
         "Reaching 15 dB would need the unpublished 6-DOF details (trajectory of Fig. 3.4, reacquisition, "
-        "the deeply integrated filter). Verdict changed from not-reproducible: the book computes the "
-        "value under declared assumptions. Depends on the code-tracking noise model through the fix noise.",
+        "the deeply integrated filter). Depends on the code-tracking noise model through the fix noise.",
         discussed_in=PAGE,
     ),
     Claim(

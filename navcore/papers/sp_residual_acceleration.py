@@ -243,7 +243,7 @@ def _col3_claim(g: str) -> Claim:
         tolerance=tol,
         expected_status="consistent",
         note=f"Column 2 ({TAB26_COL2_PPM[g]} ppm of a unit step, printed) times the printed 6 g: arithmetic "
-        "on printed numbers. Verdict changed from reproduced: a cross-check.",
+        "on printed numbers, a cross-check.",
     )
 
 
@@ -303,7 +303,7 @@ CLAIMS = [
         tolerance=_w18[1],
         expected_status="consistent",
         note="Fig. 2.1's 17.67 rad/s with the fitted conversion (one cycle per foot), printed as 18; the "
-        "table's other rows use 18. Verdict changed from reproduced: it reads the fitted conversion.",
+        "table's other rows use 18. It reads the fitted conversion.",
     ),
     Claim(
         id="SP-eq2.u7-worked-example",
@@ -317,8 +317,8 @@ CLAIMS = [
         compute=lambda: col4_rad_s("10"),
         tolerance=_w077[1],
         expected_status="consistent",
-        note="0.7707 rad/s: the worked example's own arithmetic on printed numbers (0.011 g, 6 g, 18 rad/s). "
-        "Verdict changed from reproduced: a cross-check.",
+        note="0.7707 rad/s: the worked example's own arithmetic on printed numbers (0.011 g, 6 g, 18 rad/s), "
+        "a cross-check.",
     ),
     Claim(
         id="SP-sec2.5-right-factor",
@@ -333,8 +333,7 @@ CLAIMS = [
         expected_status="consistent",
         note="$\\langle \\delta a\\, \\delta a^T \\rangle = H P H^T$ with the middle factor a 6x6 block "
         "matrix written in 2x2 shorthand; a "
-        "check of the two printed matrices against each other. Verdict changed from reproduced: a "
-        "cross-check.",
+        "check of the two printed matrices against each other, a cross-check.",
     ),
     Claim(
         id="SP-sec2.5-H-sign",

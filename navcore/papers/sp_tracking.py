@@ -205,7 +205,7 @@ CLAIMS = [
         "conversion fitted "
         "to this printed pair (90 deg at 17.67 rad/s): 360 deg per 0.3048 m. Not evidence. The stated "
         "300-m code length and the L1 carrier do not reproduce it (see the two discrepant claims and "
-        "erratum SP-E-phase-conversion). Verdict changed from reproduced: the conversion is a fit.",
+        "erratum SP-E-phase-conversion).",
     ),
     Claim(
         id="SP-fig2.1-omega0",
@@ -221,7 +221,7 @@ CLAIMS = [
         note="$\\omega_0 = \\sqrt{f_{\\max} R / 90\\,\\mathrm{deg}}$ with $R$ = 6 g in deg/s² at the fitted "
         "360 deg per foot (fitted to "
         "this claim and SP-fig2.1-peak; not evidence). With the L1 carrier the same requirement gives "
-        "22.37 rad/s. Verdict changed from reproduced: the conversion is a fit.",
+        "22.37 rad/s. The conversion is a fit.",
     ),
     Claim(
         id="SP-fig2.1-peak-code300",
@@ -295,7 +295,7 @@ CLAIMS = [
         tolerance=_g6[1],
         expected_status="consistent",
         note="The step the paper substitutes for the jerk has the jerk's final acceleration: 10 g/s x 0.6 s, "
-        "arithmetic on printed numbers. Verdict changed from reproduced: a cross-check.",
+        "arithmetic on printed numbers, a cross-check.",
     ),
     Claim(
         id="SP-sec2.5-step-vs-jerk",

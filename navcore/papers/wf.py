@@ -857,7 +857,7 @@ ERRATA = [
         "Eq. (12), not the acceleration $y_a$.",
         evidence="Dimensional analysis (acceleration minus velocity) and a seeded simulation of the "
         "printed recursion, whose error departs from the Eq. (14) covariance; the corrected filter "
-        "matches filterpy's Kalman filter (checked by the library's tests).",
+        "matches filterpy's Kalman filter.",
         claims=("WF-eq13-innovation",),
         discussed_in=DOCS["IV"],
     ),
@@ -1039,8 +1039,7 @@ CLAIMS = [
         relation="<=",
         note="The INS/GPS position accuracy of reference [3] (Graham & Johnston 1986, Table 1) is not "
         "quoted: assumed 10 m (5-30 m). At the nominal 5 ft it gives 15 %; 'at most 10 %' needs an "
-        "accuracy of 15 m or worse (or a smaller deflection). Verdict changed from not-reproducible: "
-        "the book computes it under stated assumptions.",
+        "accuracy of 15 m or worse (or a smaller deflection).",
         discussed_in=DOCS["III"],
     ),
     Claim(
@@ -1057,7 +1056,7 @@ CLAIMS = [
         expected_status="not-reproducible",
         note="2 pi f A of the assumed first wing mode: 3 Hz (3-9, 'several Hertz') with 0.1 m tip amplitude "
         "(5-30 cm) gives 1.9 m/s, below 'several'; the band reaches 3-9 m/s at higher frequency or "
-        "amplitude. Was a statement with 'several' read as 1-9; now the prose table's 3-9.",
+        "amplitude. 'Several' is read with the prose table's 3-9.",
         discussed_in=DOCS["III"],
     ),
     Claim(
@@ -1087,9 +1086,8 @@ CLAIMS = [
         compute=lambda: 100 * IN.sigma_t_large / IN.sigma_n,
         tolerance=_c6_tol,
         expected_status="consistent",
-        note="$\\sigma_T = 2$ m/s over $\\sigma_N = 0.02$ m/s, both printed in Sec. IV.D. Verdict changed "
-        "from "
-        "reproduced: arithmetic on printed values is a cross-check.",
+        note="$\\sigma_T = 2$ m/s over $\\sigma_N = 0.02$ m/s, both printed in Sec. IV.D: arithmetic on "
+        "printed values, a cross-check.",
         discussed_in=DOCS["III"],
     ),
     Claim(
@@ -1179,9 +1177,8 @@ CLAIMS = [
         note="Seeded simulation of the printed recursion (200 paths, 5000 steps, $\\sigma_a$ = 1e-3 m/s², a "
         "0.5 m/s² manoeuvre): its error is about 80 times $\\sqrt{P_{DL}(k/k)}$, because the printed "
         "innovation "
-        "subtracts a velocity from an acceleration (the estimate follows the acceleration). Oracle: the "
-        "same recursion as a linear filter, noise-free, by scipy. Was the truth value 'attains Eq. (14)'; "
-        "now the ratio itself.",
+        "subtracts a velocity from an acceleration (the estimate follows the acceleration). Checked "
+        "independently against the same recursion as a linear filter, noise-free, by scipy.",
         discussed_in=DOCS["IV"],
     ),
     Claim(
@@ -1205,8 +1202,8 @@ CLAIMS = [
             "cross-covariance",
         ),
         note="A seeded random 9x9 joint covariance; with $P_{NG}$ in block (2,3) the matrix is not symmetric "
-        "and not the covariance of the stacked errors. Oracle: the Monte Carlo L-G cross-covariance. Was "
-        "a truth value; now the difference itself.",
+        "and not the covariance of the stacked errors. Checked independently against the Monte Carlo L-G "
+        "cross-covariance.",
         discussed_in=DOCS["IV"],
     ),
     Claim(
@@ -1329,8 +1326,7 @@ CLAIMS = [
             rel=0.02, runs=100_000, why="about 4 sampling standard deviations of a trace from 100 000 draws"
         ),
         note="Seeded non-commuting covariances, completely correlated errors: the ratio stays above 1 "
-        "(about 1.25). Oracle: a Monte Carlo of the fused error. Was the truth value 'exact within 1 %'; "
-        "now the ratio itself.",
+        "(about 1.25). Checked independently against a Monte Carlo of the fused error.",
         discussed_in=DOCS["IV"],
     ),
     # Section IV.D
@@ -1348,9 +1344,8 @@ CLAIMS = [
         oracle=lambda: 154 * 10.23e6 / 299_792_458.0,
         oracle_tolerance=printed("5.2550")[1],
         note="1575.42 MHz / 299 792 458 m/s = 5.2550 m$^{-1}$, which rounds to 5.26; the printed 5.25 is "
-        "truncated (0.1 % low; no effect on the figures). Oracle: L1 = 154 x 10.23 MHz over c. "
-        "Verdict changed from consistent: the tolerance had an allowance for the truncation, which the "
-        "printed-digits policy does not grant.",
+        "truncated (0.1 % low; no effect on the figures). Checked independently: L1 = 154 x 10.23 MHz "
+        "over c. The printed-digits tolerance grants no allowance for the truncation.",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
@@ -1371,9 +1366,7 @@ CLAIMS = [
         "Hz is "
         "$\\sigma_G c / f_{L1} = 0.19$ m/s per line of sight (computed on the page), an order of magnitude "
         "above "
-        "$\\sigma_N$, which is an integrated INS/GPS accuracy ([3]) and not the quantity meant. Verdict "
-        "changed "
-        "from not-reproducible: the book computes it under a stated assumption.",
+        "$\\sigma_N$, which is an integrated INS/GPS accuracy ([3]) and not the quantity meant.",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
@@ -1390,7 +1383,7 @@ CLAIMS = [
         expected_status="consistent",
         note="Both ends of the printed $\\sigma_L$ range follow from $\\sigma_L = 200 \\sigma_a$ and the "
         "printed "
-        "$\\sigma_a$ range. Verdict changed from reproduced: arithmetic on printed values is a cross-check.",
+        "$\\sigma_a$ range: arithmetic on printed values, a cross-check.",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
@@ -1407,7 +1400,7 @@ CLAIMS = [
         expected_status="consistent",
         note="Both ends of the printed $\\sigma_L$ range follow from $\\sigma_L = 200 \\sigma_a$ and the "
         "printed "
-        "$\\sigma_a$ range. Verdict changed from reproduced: arithmetic on printed values is a cross-check.",
+        "$\\sigma_a$ range: arithmetic on printed values, a cross-check.",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
@@ -1427,9 +1420,8 @@ CLAIMS = [
         oracle=_eq24_oracle,
         oracle_tolerance=Tolerance(abs=1e-12, reason="round-off", policy="exact"),
         note="A consistent reading gives the same $\\sigma_{DN}$ in any velocity unit (ratio 1); the literal "
-        "reading gives 0.1. Oracle: the derivation ($P_N P_N^T$ in (m/s)$^4$ against $\\sigma_N^2$ in "
-        "(m/s)$^2$, "
-        "so $\\sigma_{DN}$ scales as the square root of the unit). Was a truth value; now the ratio itself.",
+        "reading gives 0.1. Checked independently by the derivation ($P_N P_N^T$ in (m/s)$^4$ against "
+        "$\\sigma_N^2$ in (m/s)$^2$, so $\\sigma_{DN}$ scales as the square root of the unit).",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
@@ -1492,8 +1484,8 @@ CLAIMS = [
         compute=lambda: IN.sigma_l_per_sigma_a * sigma_a_example(),
         tolerance=_c17_tol,
         expected_status="consistent",
-        note="$\\sigma_L = 200 \\sigma_a = 0.196$ m/s, from printed values (and g). Verdict changed from "
-        "reproduced: arithmetic on printed values is a cross-check.",
+        note="$\\sigma_L = 200 \\sigma_a = 0.196$ m/s, from printed values (and g): arithmetic on printed "
+        "values, a cross-check.",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
@@ -1508,8 +1500,7 @@ CLAIMS = [
         expected_status="reproduced",
         note="Figure-only (no curve values printed); least-squares slope within 0.5 dB/decade over "
         "10 µm/s² to 10 mm/s², as $\\sigma_{DL} \\approx 2\\,\\mathrm{s} \\cdot \\sigma_a$ predicts. "
-        "Verdict changed from consistent: "
-        "the computation reads published inputs only.",
+        "The computation reads published inputs only.",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
@@ -1526,9 +1517,8 @@ CLAIMS = [
         tolerance=FIG1_READING,
         expected_status="reproduced",
         note="Figure-only; over the stated axis range 10 µm/s² to 10 mm/s². The page also shows that "
-        "every curve is at or below 0 dB and that the $\\sigma_T = 2$ m/s curve rises monotonically. Was a "
-        "statement (the ordering, 0 dB and the rise together); now the ordering's margin, shown as a "
-        "number. Verdict changed from consistent: the computation reads published inputs only.",
+        "every curve is at or below 0 dB and that the $\\sigma_T = 2$ m/s curve rises monotonically. The "
+        "claim is the ordering's margin, shown as a number; the computation reads published inputs only.",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
@@ -1577,8 +1567,7 @@ CLAIMS = [
         tolerance=FIG2_READING,
         expected_status="reproduced",
         note="Over the stated $\\sigma_a$ range. 'Virtually identical' (the 3-satellite curve is not drawn): "
-        "closer than Fig. 2 can be read. Was a statement with 'virtually identical' read as 0.05 dB; "
-        "now the difference itself against the figure's reading resolution.",
+        "closer than Fig. 2 can be read: the difference itself, against the figure's reading resolution.",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
@@ -1601,8 +1590,7 @@ CLAIMS = [
         "prior/posterior gap $10 \\log_{10}(P_{DL}(k/k-1)/P_{DL}(k/k))$ of the accelerometer filter (on the "
         "page), "
         "far below what Fig. 2 can show. Beyond the stated range the ordering fails by about 1 dB (one "
-        "satellite at $\\sigma_T = 0$). Was a statement with that gap, computed, as its tolerance; the "
-        "tolerance is now the figure's reading resolution, and the verdict changed from consistent.",
+        "satellite at $\\sigma_T = 0$). The tolerance is the figure's reading resolution.",
         discussed_in=DOCS["IVD"],
     ),
 ]
