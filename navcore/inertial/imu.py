@@ -40,14 +40,14 @@ __all__ = [
 #: with the unit mistake a larger value usually is. A specification beyond it raises.
 IMU_SPEC_LIMITS: dict[str, tuple[float, str]] = {
     "gyro_bias": (0.1, "rad/s (about 20 600 deg/h; a value in deg/h? multiply by navcore.units.DEG_PER_H)"),
-    "gyro_scale_factor": (0.1, "(10 %; a value in ppm? multiply by navcore.units.PPM)"),
+    "gyro_scale_factor": (0.5, "(50 %; a value in ppm? multiply by navcore.units.PPM)"),
     "gyro_misalignment": (0.1, "rad (5.7 deg; a value in arcsec? multiply by navcore.units.ARCSEC)"),
     "gyro_random_walk": (
         0.01,
         "rad/sqrt(s) (34 deg/sqrt(h); a value in deg/sqrt(h)? multiply by navcore.units.DEG_PER_SQRT_H)",
     ),
     "accel_bias": (1.0, "m/s^2 (about 100 mg; a value in micro-g? multiply by navcore.units.MICRO_G)"),
-    "accel_scale_factor": (0.1, "(10 %; a value in ppm? multiply by navcore.units.PPM)"),
+    "accel_scale_factor": (0.5, "(50 %; a value in ppm? multiply by navcore.units.PPM)"),
     "accel_misalignment": (0.1, "rad (5.7 deg; a value in arcsec? multiply by navcore.units.ARCSEC)"),
     "accel_random_walk": (
         0.1,
