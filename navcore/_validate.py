@@ -13,20 +13,35 @@ import functools
 import inspect
 import math
 from collections.abc import Callable
-from typing import Any, TypeVar
+from typing import Any, Protocol, TypeVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 __all__ = [
+    "AZIMUTH",
     "COUNT",
     "COUNT0",
+    "COVARIANCE",
+    "COVARIANCE_STACK",
+    "ELEVATION",
+    "LATITUDE",
+    "LONGITUDE",
     "MAX_LOOP_COUNT",
     "NONNEGATIVE",
     "OPEN_PROBABILITY",
     "POSITIVE",
     "PROBABILITY",
+    "ROTATION",
+    "ROTATION_STACK",
+    "UNIT_QUATERNION",
+    "UNIT_QUATERNION_STACK",
+    "Angle",
+    "Constraint",
+    "Covariance",
     "Range",
+    "RotationMatrix",
+    "UnitQuaternion",
     "as_finite_array",
     "check_argument",
     "check_public",
@@ -247,6 +262,14 @@ def _classes(annotation: object, namespace: dict[str, Any]) -> tuple[type, ...] 
     return tuple(classes) or None
 
 
+class Constraint(Protocol):
+    """What :func:`checked` asks of a constraint: ``check(name, value, deg)`` raises
+    ``ValueError`` naming ``name`` (``deg`` is the call's ``deg`` keyword, ``None`` if the
+    function has none)."""
+
+    def check(self, name: str, value: Any, deg: bool | None = None) -> None: ...
+
+
 @dataclasses.dataclass(frozen=True)
 class Range:
     """An interval a numeric argument must lie in (every element of an array).
@@ -269,7 +292,7 @@ class Range:
         hi = ")" if self.high_open else "]"
         return f"in {lo}{self.low:g}, {self.high:g}{hi}"
 
-    def check(self, name: str, value: Any) -> None:
+    def check(self, name: str, value: Any, deg: bool | None = None) -> None:
         arr = np.asarray(value)
         if arr.dtype.kind not in "biuf" or arr.size == 0:
             return
@@ -289,6 +312,199 @@ PROBABILITY = Range(0.0, 1.0)
 OPEN_PROBABILITY = Range(0.0, 1.0, low_open=True, high_open=True)
 COUNT = Range(1, MAX_LOOP_COUNT)  # a number of steps, samples, runs, lists: bounded
 COUNT0 = Range(0, MAX_LOOP_COUNT)
+
+
+#: How far from 1 the norm of a unit quaternion, and from the identity ``C C^T`` of a
+#: rotation matrix, may be (round-off of a normalised value is about 1e-15; a value typed to
+#: seven digits is within 1e-6).
+UNIT_TOLERANCE = 1e-6
+_EYE3 = np.eye(3)
+
+
+@dataclasses.dataclass(frozen=True)
+class Angle:
+    """An angle bounded in magnitude: ``|value| <= limit_deg`` degrees.
+
+    The value is in radians, or in degrees when the call passes ``deg=True`` (``deg`` is
+    given to :meth:`check` by :func:`checked`; ``None`` means the function has no ``deg``
+    keyword). A latitude of 45 given where radians are expected fails here, with a hint.
+    """
+
+    limit_deg: float
+    what: str
+
+    def describe(self, deg: bool = False) -> str:
+        limit = self.limit_deg if deg else math.radians(self.limit_deg)
+        return f"{self.what} in [{-limit:.6g}, {limit:.6g}] {'deg' if deg else 'rad'}"
+
+    def check(self, name: str, value: Any, deg: bool | None = None) -> None:
+        arr = np.asarray(value)
+        if arr.dtype.kind not in "biuf" or arr.size == 0:
+            return
+        in_deg = bool(deg)
+        limit = self.limit_deg if in_deg else math.radians(self.limit_deg)
+        worst = float(np.max(np.abs(arr)))
+        if worst > limit:
+            if in_deg:
+                hint = ""
+            elif deg is None:
+                hint = " (degrees? multiply by navcore.units.DEG)"
+            else:
+                hint = " (degrees? pass deg=True)"
+            shown = value if arr.size == 1 else f"an array with |value| up to {worst:g}"
+            raise ValueError(f"{name} must be {self.describe(in_deg)}{hint}, got {shown!r}")
+
+
+LATITUDE = Angle(90.0, "a latitude")
+LONGITUDE = Angle(360.0, "a longitude")
+ELEVATION = Angle(90.0, "an elevation")
+AZIMUTH = Angle(360.0, "an azimuth")
+
+
+def _stack_shape(name: str, arr: NDArray[Any], tail: tuple[int, ...], stack: bool, what: str) -> None:
+    k = len(tail)
+    if arr.ndim < k or arr.shape[arr.ndim - k :] != tail or (not stack and arr.ndim != k):
+        want = f"(..., {', '.join(map(str, tail))})" if stack else str(tail)
+        raise ValueError(f"{name} must be {what} of shape {want}, got shape {arr.shape}")
+
+
+@dataclasses.dataclass(frozen=True)
+class UnitQuaternion:
+    """A unit quaternion ``[w, x, y, z]`` (or a stack ``(..., 4)`` with ``stack``).
+
+    Its norm must be 1 to within :data:`UNIT_TOLERANCE`: a rotation by a non-unit
+    quaternion scales the vector by the squared norm.
+    """
+
+    stack: bool = True
+
+    def describe(self) -> str:
+        return "a unit quaternion [w, x, y, z]" + (" or a stack (..., 4) of them" if self.stack else "")
+
+    def check(self, name: str, value: Any, deg: bool | None = None) -> None:
+        arr = np.asarray(value, dtype=float)
+        _stack_shape(
+            name, arr, (4,), self.stack, "a quaternion [w, x, y, z]" + (" or a stack" if self.stack else "")
+        )
+        if arr.size == 0:
+            return
+        norm = np.sqrt(np.einsum("...i,...i->...", arr, arr)).ravel()
+        i = int(np.argmax(np.abs(norm - 1.0)))
+        if abs(norm[i] - 1.0) > UNIT_TOLERANCE:
+            raise ValueError(
+                f"{name} must be a unit quaternion (norm 1 to within {UNIT_TOLERANCE:g}), got a norm of "
+                f"{norm[i]:.6g}; normalise it first (navcore.frames.quat_normalize)"
+            )
+
+
+@dataclasses.dataclass(frozen=True)
+class RotationMatrix:
+    """A proper rotation matrix (3, 3) (or a stack ``(..., 3, 3)`` with ``stack``).
+
+    ``C C^T = I`` to within :data:`UNIT_TOLERANCE` and ``det C = +1``.
+    """
+
+    stack: bool = True
+
+    def describe(self) -> str:
+        return "a rotation matrix (3, 3)" + (" or a stack (..., 3, 3) of them" if self.stack else "")
+
+    def check(self, name: str, value: Any, deg: bool | None = None) -> None:
+        arr = np.asarray(value, dtype=float)
+        _stack_shape(
+            name, arr, (3, 3), self.stack, "a rotation matrix" + (" or a stack" if self.stack else "")
+        )
+        if arr.size == 0:
+            return
+        worst = float(np.abs(np.matmul(arr, np.swapaxes(arr, -1, -2)) - _EYE3).max())
+        if worst > UNIT_TOLERANCE:
+            raise ValueError(
+                f"{name} must be a rotation matrix (C C^T = I to within {UNIT_TOLERANCE:g}), "
+                f"got C C^T - I up to {worst:.3g}"
+            )
+        if arr.ndim == 2:  # one matrix: the triple product in plain floats is the cheapest
+            (a, b, c), (d, e, f), (g, h, i) = arr.tolist()
+            det: Any = a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g)
+        else:
+            det = np.linalg.det(arr)
+        if np.any(det < 0.0):
+            raise ValueError(f"{name} must be a proper rotation matrix (det +1), got a reflection (det -1)")
+
+
+@dataclasses.dataclass(frozen=True)
+class Covariance:
+    """A covariance: a symmetric positive semi-definite square matrix.
+
+    ``stack`` accepts ``(..., n, n)``; ``definite`` requires positive definite;
+    ``allow_inf_diagonal`` accepts ``+inf`` on the diagonal (an infinite variance, i.e. no
+    information) with zeros off the diagonal of that row and column. Symmetry is tested
+    relative to the matrix scale and the eigenvalues allow a round-off margin of ``rtol``
+    times the largest one. A diagonal matrix is checked by its diagonal alone.
+    """
+
+    stack: bool = False
+    definite: bool = False
+    allow_inf_diagonal: bool = False
+    rtol: float = 1e-9
+
+    def describe(self) -> str:
+        kind = "positive definite" if self.definite else "positive semi-definite"
+        return f"a symmetric {kind} matrix" + (" or a stack of them" if self.stack else "")
+
+    def check(self, name: str, value: Any, deg: bool | None = None) -> None:
+        arr = np.asarray(value, dtype=float)
+        if arr.ndim < 2 or arr.shape[-1] != arr.shape[-2] or (not self.stack and arr.ndim != 2):
+            want = "(..., n, n)" if self.stack else "(n, n)"
+            raise ValueError(
+                f"{name} must be a square covariance matrix of shape {want}, got shape {arr.shape}"
+            )
+        if arr.size == 0:
+            return
+        diag = np.diagonal(arr, axis1=-2, axis2=-1)
+        if self.allow_inf_diagonal and not np.isfinite(arr).all():  # (NaN was rejected before)
+            inf = np.isinf(diag)
+            if np.any(diag[inf] < 0):
+                raise ValueError(f"{name} must not have a variance of -inf")
+            lines = inf[..., :, None] | inf[..., None, :]
+            off = lines & ~np.eye(arr.shape[-1], dtype=bool)
+            if np.any(arr[off] != 0.0):
+                raise ValueError(
+                    f"{name} must be zero off the diagonal in a row or column of infinite variance"
+                )
+            arr = np.where(lines, 0.0, arr)
+            if not np.isfinite(arr).all():
+                raise ValueError(f"{name} must have infinite entries only on its diagonal")
+            diag = np.diagonal(arr, axis1=-2, axis2=-1)
+        _require_psd(name, arr, diag, self.rtol, self.definite)
+
+
+def _require_psd(
+    name: str, arr: NDArray[np.float64], diag: NDArray[np.float64], rtol: float, definite: bool
+) -> None:
+    kind = "positive definite" if definite else "positive semi-definite"
+    if np.count_nonzero(arr) == np.count_nonzero(diag):  # diagonal: the variances decide
+        low = diag.min()
+        if low < 0 or (definite and low <= 0):
+            raise ValueError(f"{name} must be {kind} (a diagonal entry is {low:.3g})")
+        return
+    scale = max(float(np.abs(arr).max()), np.finfo(float).tiny)
+    arr_t = np.swapaxes(arr, -1, -2)
+    if np.abs(arr - arr_t).max() > rtol * scale * 10:
+        raise ValueError(f"{name} must be symmetric")
+    eig = np.linalg.eigvalsh(0.5 * (arr + arr_t))
+    smallest = eig[..., 0]
+    if definite and np.any(smallest <= 0):
+        raise ValueError(f"{name} must be {kind} (smallest eigenvalue {float(np.min(smallest)):.3g})")
+    if np.any(smallest < -rtol * np.maximum(eig[..., -1], 0.0)):
+        raise ValueError(f"{name} must be {kind} (smallest eigenvalue {float(np.min(smallest)):.3g})")
+
+
+UNIT_QUATERNION = UnitQuaternion(stack=False)
+UNIT_QUATERNION_STACK = UnitQuaternion(stack=True)
+ROTATION = RotationMatrix(stack=False)
+ROTATION_STACK = RotationMatrix(stack=True)
+COVARIANCE = Covariance()
+COVARIANCE_STACK = Covariance(stack=True)
 
 
 def _container(annotation: object, namespace: dict[str, Any]) -> list[Any] | None:
@@ -368,7 +584,7 @@ def checked(
     *,
     allow_inf: tuple[str, ...] = (),
     skip: tuple[str, ...] = (),
-    ranges: dict[str, Range] | None = None,
+    ranges: dict[str, Constraint | None] | None = None,
 ) -> Any:
     """Decorator: check every numeric argument of ``func`` against its annotation.
 
@@ -378,36 +594,55 @@ def checked(
     ``allow_inf`` lists parameters for which infinity is a meaningful value; ``skip`` lists
     parameters left to the function's own checks; ``ranges`` maps a parameter name to the
     :class:`Range` its value must lie in (a name the function does not have is ignored, so a
-    module can state its conventions once: ``p_d`` is a probability, ``k`` a count). Shape
-    constraints stay in the function body. Every failure raises a ``TypeError`` or
-    ``ValueError`` that names the parameter as the caller spelled it.
+    module can state its conventions once: ``p_d`` is a probability, ``k`` a count), or to a
+    constraint of another kind: an :class:`Angle` (bounded by its unit: radians, or degrees
+    when the call passes ``deg=True``), a :class:`UnitQuaternion`, a :class:`RotationMatrix`
+    or a :class:`Covariance` (these check their shapes too); ``None`` removes a module-wide
+    entry for one function. Other shape constraints stay in the function body. Every
+    failure raises a ``TypeError`` or ``ValueError`` that names the parameter as the caller
+    spelled it.
 
     A call with ``validate=False`` (for functions that have that keyword) skips the checks.
     """
 
     def wrap(f: Callable[..., _R]) -> Callable[..., _R]:
         sig = inspect.signature(f)
-        specs: list[tuple[int | None, str, Any, bool, bool, Range | None]] = []
+        specs: list[tuple[int | None, str, Any, bool, bool, Constraint | None]] = []
         for i, p in enumerate(sig.parameters.values()):
             if p.name in skip or p.kind in (p.VAR_POSITIONAL, p.VAR_KEYWORD):
                 continue
+            constraint = (ranges or {}).get(p.name)
             kind: Any
             kind, allows_none = _kind(p.annotation)
             if kind is None:
                 kind = _classes(p.annotation, f.__globals__)  # a tuple of classes, or None
             if kind is None:
                 kind = _container(p.annotation, f.__globals__)  # ("literal"|"sequence", ...)
+                if kind is None and constraint is not None:
+                    kind = _ARRAY  # e.g. a tuple of floats with a range
+                    allows_none = "None" in str(p.annotation)
                 if kind is None:
                     continue
             pos = i if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD) else None
-            specs.append((pos, p.name, kind, allows_none, p.name in allow_inf, (ranges or {}).get(p.name)))
+            specs.append((pos, p.name, kind, allows_none, p.name in allow_inf, constraint))
         names = tuple(sig.parameters)
+        deg_param = sig.parameters.get("deg")
+        has_deg = deg_param is not None
+        deg_default = (
+            bool(deg_param.default)
+            if deg_param is not None and deg_param.default is not inspect.Parameter.empty
+            else False
+        )
 
         @functools.wraps(f)
         def wrapper(*args: Any, **kwargs: Any) -> _R:
             if kwargs.get("validate", True) is False:  # the caller checked at its boundary
                 return f(*args, **kwargs)
             n = len(args)
+            deg: bool | None = None
+            if has_deg:  # a deg that is not a bool fails its own type check below
+                deg_value = kwargs.get("deg", deg_default)
+                deg = bool(deg_value) if isinstance(deg_value, bool | np.bool_) else False
             for pos, name, kind, allows_none, inf_ok, interval in specs:
                 if pos is not None and pos < n:
                     value = args[pos]
@@ -427,7 +662,7 @@ def checked(
                     continue
                 check_argument(name, value, kind, allow_inf=inf_ok)
                 if interval is not None:
-                    interval.check(name, value)
+                    interval.check(name, value, deg)
             try:
                 return f(*args, **kwargs)
             except _SHAPE_ERRORS as exc:
@@ -543,6 +778,7 @@ RESULT_RECORDS = frozenset(
     {
         "CovarianceAnalysis",
         "CovarianceHistory",
+        "DilutionOfPrecision",
         "ConstellationParameters",
         "GainHistory",
         "GaussNewtonResult",
@@ -561,7 +797,7 @@ RESULT_RECORDS = frozenset(
 
 
 def check_public(
-    namespace: dict[str, Any], ranges: dict[str, Range] | None = None, **options: dict[str, Any]
+    namespace: dict[str, Any], ranges: dict[str, Any] | None = None, **options: dict[str, Any]
 ) -> None:
     """Wrap every public function of a module (its ``__all__``) with :func:`checked`.
 
@@ -585,7 +821,7 @@ def check_public(
                 setattr(obj, "__init__", checked(init, **_merged(ranges, options.get(name, {}))))  # noqa: B010
 
 
-def _merged(ranges: dict[str, Range] | None, own: dict[str, Any]) -> dict[str, Any]:
+def _merged(ranges: dict[str, Any] | None, own: dict[str, Any]) -> dict[str, Any]:
     out = dict(own)
     out["ranges"] = {**(ranges or {}), **own.get("ranges", {})}
     return out

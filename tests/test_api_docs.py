@@ -30,7 +30,17 @@ import pytest
 from numpydoc.docscrape import ClassDoc, FunctionDoc
 
 ROOT = Path(__file__).resolve().parents[1]
-SUBPACKAGES = ("units", "frames", "estimation", "inertial", "gnss", "detection", "location", "ledger")
+SUBPACKAGES = (
+    "units",
+    "frames",
+    "gravity",
+    "estimation",
+    "inertial",
+    "gnss",
+    "detection",
+    "location",
+    "ledger",
+)
 TODO = ROOT / "tests" / "api_docs_todo.txt"
 EXAMPLES_TODO = ROOT / "tests" / "api_examples_todo.txt"
 FIELDS_TODO = ROOT / "tests" / "api_fields_todo.txt"

@@ -35,7 +35,7 @@ from hypothesis import strategies as st
 
 from navcore import _validate
 
-SUBPACKAGES = ("units", "frames", "estimation", "inertial", "gnss", "detection", "location")
+SUBPACKAGES = ("units", "frames", "gravity", "estimation", "inertial", "gnss", "detection", "location")
 
 #: Result records: containers a function returns, not inputs a user builds; not checked.
 RESULT_RECORDS = _validate.RESULT_RECORDS | {"KalmanUpdate", "ScalarSteadyState"}
@@ -43,6 +43,8 @@ RESULT_RECORDS = _validate.RESULT_RECORDS | {"KalmanUpdate", "ScalarSteadyState"
 #: Functions whose documented value includes infinity (an unreachable threshold, a log of 0).
 MAY_RETURN_INF: set[str] = {
     "log1mexp",  # log(1 - exp(-a)) is -inf at a = 0 (the probability of an impossible event)
+    "dop_from_lines_of_sight",  # fewer than four usable satellites: no solution, infinite DOP
+    "dilution_of_precision",  # the same, for satellites given by their positions
 }
 
 

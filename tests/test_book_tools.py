@@ -210,13 +210,46 @@ def test_prose_gate_identifier_patterns(text, identifiers):
 
 
 def test_prose_gate_skips_the_reference_and_generated_pages(tmp_path):
+    """The API pages are skipped; the how-to guides of the Reference part are prose."""
     body = "<p>bare navcore.units here</p>"
-    pages = ("reference/units.html", "genindex.html", "_modules/x.html", "search.html", "wf/a.html")
+    pages = (
+        "reference/units.html",
+        "genindex.html",
+        "_modules/x.html",
+        "search.html",
+        "wf/a.html",
+        "reference/howto/dop.html",
+    )
     for rel in pages:
         _page(tmp_path / rel, body)
     problems = check_book.check_prose(tmp_path)
-    assert problems == ["wf/a.html: identifier 'navcore.units' in prose: ...bare navcore.units here..."]
+    assert problems == [
+        f"{rel}: identifier 'navcore.units' in prose: ...bare navcore.units here..."
+        for rel in ("reference/howto/dop.html", "wf/a.html")
+    ]
     assert check_book.check_html(tmp_path) == problems
+
+
+def test_reference_subset_has_every_page_of_the_reference_part():
+    """``build_book.py --only reference`` builds the pages the book's Reference part lists."""
+    import yaml
+
+    build_book = _load(ROOT / "tools" / "build_book.py", "build_book")
+    toc = yaml.safe_load((ROOT / "book" / "_toc.yml").read_text())
+    part = next(p for p in toc["parts"] if p["caption"] == "Reference")
+
+    def files(node):
+        if isinstance(node, dict):
+            found = [node["file"]] if "file" in node else []
+            for key in ("chapters", "sections"):
+                for child in node.get(key, []):
+                    found += files(child)
+            return found
+        return []
+
+    subset = yaml.safe_load(build_book.subset_toc("reference"))
+    in_subset = [subset["root"], *files({"chapters": subset["parts"][0]["chapters"]})]
+    assert sorted(in_subset) == sorted(files(part))
 
 
 def test_latex_gate_counts_only_wide_overfull_boxes(tmp_path):

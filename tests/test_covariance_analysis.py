@@ -79,10 +79,10 @@ def test_static_suboptimal_covariance_matches_monte_carlo():
     bias the filter ignores. Agreement within 4 sampling sigmas (sigma of a variance
     estimate is sqrt(2/M) ~ 2.2 %)."""
     truth = ins_error_layout(
-        "position", "velocity", "misalignment", "gyro drift", "accel bias", "gravity", "altimeter bias"
+        "position", "velocity", "misalignment", "gyro bias", "accel bias", "gravity", "altimeter bias"
     )
     filt = ins_error_layout(
-        "position", "velocity", "misalignment", "gyro drift", "accel bias", "altimeter bias"
+        "position", "velocity", "misalignment", "gyro bias", "accel bias", "altimeter bias"
     )
     spec = ImuSpec(
         "t",
@@ -133,7 +133,7 @@ def test_optimal_filter_matches_filterpy():
     with it (the truth's to the filter's to round-off)."""
     from navcore.inertial.error_dynamics import earth_rate_ned, transport_rate_ned
 
-    lay = ins_error_layout("position", "velocity", "misalignment", "gyro drift", "altimeter bias")
+    lay = ins_error_layout("position", "velocity", "misalignment", "gyro bias", "altimeter bias")
     src = ErrorSources(
         imu=ImuSpec("t", gyro_bias=0.01 * DEG_PER_H, gyro_random_walk=0.01 * DEG_PER_H),
         altimeter=GaussMarkov(50.0, 1e5),
@@ -337,7 +337,7 @@ def test_embedding_requires_subset():
 def test_taylor_transition_close_to_exponential():
     """Oracle: scipy.linalg.expm; the fourth-order Taylor transition at 1 s differs by
     less than 1e-6 of the largest entry for a moving, turning aircraft."""
-    lay = ins_error_layout("position", "velocity", "misalignment", "gyro drift", "accel scale factor")
+    lay = ins_error_layout("position", "velocity", "misalignment", "gyro bias", "accel scale factor")
     F = error_dynamics(
         lay,
         f_ned=(1.0, 2.0, -9.9),

@@ -62,7 +62,7 @@ def test_accel_bias_and_gyro_drift_closed_forms():
     """Oracles: b/ws^2 (1 - cos ws t) for an accelerometer bias and R eps (t - sin(ws t)/ws)
     for a level gyro drift (Schuler-only closed forms; Earth rate removed at the equator
     for the bias case, 1.5 % allowed for the Earth-rate coupling of the gyro case)."""
-    lay = ins_error_layout("position", "velocity", "misalignment", "gyro drift", "accel bias")
+    lay = ins_error_layout("position", "velocity", "misalignment", "gyro bias", "accel bias")
     F = error_dynamics(lay, f_ned=(0, 0, -G0), C_bn=np.eye(3), lat=0.0, vertical_channel=False)
     ws = schuler_frequency()
     t = 3600.0
@@ -71,7 +71,7 @@ def test_accel_bias_and_gyro_drift_closed_forms():
     x = scipy.linalg.expm(F * t) @ x0
     assert abs(x[0]) == pytest.approx(100 * MICRO_G / ws**2 * (1 - np.cos(ws * t)), rel=1e-3)
     x0[:] = 0.0
-    x0[lay.index("gyro drift", 0)] = 0.01 * DEG_PER_H
+    x0[lay.index("gyro bias", 0)] = 0.01 * DEG_PER_H
     x = scipy.linalg.expm(F * t) @ x0
     assert abs(x[1]) == pytest.approx(WGS84_A * 0.01 * DEG_PER_H * (t - np.sin(ws * t) / ws), rel=0.015)
 
@@ -131,7 +131,7 @@ _SENSOR_CASES = {
     "accel bias": np.array([1e-3, -2e-3, 3e-3]),
     "accel scale factor": np.array([1e-4, -3e-4, 5e-4]),
     "accel misalignment": np.array([2e-4, -1e-4, 3e-4]),
-    "gyro drift": np.array([1e-5, -2e-5, 3e-5]),
+    "gyro bias": np.array([1e-5, -2e-5, 3e-5]),
     "gyro scale factor": np.array([1e-4, -3e-4, 5e-4]),
     "gyro misalignment": np.array([2e-4, -1e-4, 3e-4]),
 }
@@ -188,7 +188,7 @@ _ALIGN_LAYOUT = ins_error_layout(
     "position",
     "velocity",
     "misalignment",
-    "gyro drift",
+    "gyro bias",
     "accel bias",
     "accel scale factor",
     "accel misalignment",
@@ -444,7 +444,7 @@ def test_initial_covariance_places_each_sigma_in_its_block():
         "position",
         "velocity",
         "misalignment",
-        "gyro drift",
+        "gyro bias",
         "gyro scale factor",
         "gyro misalignment",
         "accel bias",
@@ -462,16 +462,16 @@ def test_initial_covariance_places_each_sigma_in_its_block():
         "doppler misalignment",
         channels=2,
     )
-    imu = ImuSpec(
+    imu = ImuSpec(  # distinct values, within the plausible range of each source (x 1/100)
         "x",
-        gyro_bias=1.0,
-        gyro_scale_factor=2.0,
-        gyro_misalignment=3.0,
-        accel_bias=4.0,
-        accel_scale_factor=5.0,
-        accel_misalignment=6.0,
-        gyro_random_walk=99.0,
-        accel_random_walk=98.0,
+        gyro_bias=0.01,
+        gyro_scale_factor=0.02,
+        gyro_misalignment=0.03,
+        accel_bias=0.04,
+        accel_scale_factor=0.05,
+        accel_misalignment=0.06,
+        gyro_random_walk=0.0099,
+        accel_random_walk=0.098,
     )
     src = ErrorSources(
         imu=imu,
@@ -491,7 +491,7 @@ def test_initial_covariance_places_each_sigma_in_its_block():
         velocity_sigma=(0.4, 0.5, 0.6),
         attitude_sigma=(0.7, 0.8, 0.9),
     )
-    expect = [0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, *[v for v in range(1, 7) for _ in range(3)]]
+    expect = [0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, *[v / 100 for v in range(1, 7) for _ in range(3)]]
     expect += [7.0] * 3 + [8.0, 9.0, 10.0, 11.0, 12.0, 12.0, 13.0, 13.0, 14.0, 15.0, 16.0, 17.0, 18.0, 19.0]
     expect += [20.0] * 3
     np.testing.assert_array_equal(P, np.diag(np.array(expect) ** 2))
@@ -586,12 +586,12 @@ def test_layout_sizes_units_and_name():
     """Oracle: the block table of the module documentation (sizes and units), the documented
     default of four receiver channels, and the layout's name as given."""
     lay = ins_error_layout(
-        "position", "gyro drift", "altimeter bias", "clock drift", "pseudorange bias", name="L"
+        "position", "gyro bias", "altimeter bias", "clock drift", "pseudorange bias", name="L"
     )
     assert lay.name == "L" and ins_error_layout("position").name == ""
     assert [(b.name, b.size, b.unit) for b in lay.blocks] == [
         ("position", 3, "m"),
-        ("gyro drift", 3, "rad/s"),
+        ("gyro bias", 3, "rad/s"),
         ("altimeter bias", 1, "m"),
         ("clock drift", 1, "m/s"),
         ("pseudorange bias", 4, "m"),

@@ -115,9 +115,9 @@ def test_radii_of_curvature_equator_and_pole():
 
 
 def test_bad_inputs_raise():
-    with pytest.raises(ValueError, match="v must be a 3-vector"):
+    with pytest.raises(ValueError, match=r"v must have shape \(\.\.\., 3\)"):
         fr.skew([1.0, 2.0])
-    with pytest.raises(ValueError, match="lat must lie"):
+    with pytest.raises(ValueError, match="lat must be a latitude"):
         fr.geodetic_to_ecef(100.0, 0.0, 0.0, deg=True)
     with pytest.raises(ValueError, match="q must be non-zero"):
         fr.quat_normalize([0.0, 0, 0, 0])

@@ -94,15 +94,15 @@ def test_scaled_and_noise_only_specs():
     """Oracle: the definitions: scaling multiplies every error by the factor (each field a
     distinct value, so a field lost or swapped shows); the noise-only instrument keeps the
     two random walks and nothing else."""
-    values = dict(
-        gyro_bias=1.0,
-        gyro_scale_factor=2.0,
-        gyro_misalignment=3.0,
-        gyro_random_walk=4.0,
-        accel_bias=5.0,
-        accel_scale_factor=6.0,
-        accel_misalignment=7.0,
-        accel_random_walk=8.0,
+    values = dict(  # distinct, and within each source's plausible range (IMU_SPEC_LIMITS)
+        gyro_bias=0.001,
+        gyro_scale_factor=0.002,
+        gyro_misalignment=0.003,
+        gyro_random_walk=0.0004,
+        accel_bias=0.005,
+        accel_scale_factor=0.006,
+        accel_misalignment=0.007,
+        accel_random_walk=0.008,
     )
     spec = ImuSpec("base", source="src", **values)
     half = spec.scaled(0.5)
@@ -111,7 +111,7 @@ def test_scaled_and_noise_only_specs():
     assert half.name == "base x 0.5" and half.source == "src"
     assert spec.scaled(3.0, name="tripled").name == "tripled"
     n = noise_only(spec)
-    assert (n.gyro_random_walk, n.accel_random_walk) == (4.0, 8.0)
+    assert (n.gyro_random_walk, n.accel_random_walk) == (0.0004, 0.008)
     for k in values:
         if "random_walk" not in k:
             assert getattr(n, k) == 0.0, k
@@ -125,3 +125,19 @@ def test_bad_input_rejects_negative_sigmas():
     for field in ("gyro_bias", "accel_misalignment", "accel_random_walk"):
         with pytest.raises(ValueError, match=field):
             ImuSpec("x", **{field: -1e-6})
+
+
+def test_implausible_values_are_unit_mistakes():
+    """Issue 30, case 10: 1 rad/s of gyro bias is 206 000 deg/h, a value typed in deg/h; each
+    source has a limit beyond any sensor (IMU_SPEC_LIMITS) and the message names the field and
+    the unit it was probably given in. A value just below the limit is accepted."""
+    from navcore.inertial.imu import IMU_SPEC_LIMITS
+    from navcore.units import DEG_PER_H
+
+    with pytest.raises(ValueError, match=r"ImuSpec\.gyro_bias must be <= 0\.1 rad/s .*DEG_PER_H"):
+        ImuSpec("x", gyro_bias=1.0)
+    for field, (limit, _) in IMU_SPEC_LIMITS.items():
+        ImuSpec("ok", **{field: limit})
+        with pytest.raises(ValueError, match=rf"ImuSpec\.{field} must be <="):
+            ImuSpec("bad", **{field: 1.01 * limit})
+    assert ImuSpec("consumer", gyro_bias=1000 * DEG_PER_H).gyro_bias < IMU_SPEC_LIMITS["gyro_bias"][0]

@@ -14,14 +14,14 @@ from navcore.location.multilateration import (
     clock_direction_term,
     constellation_parameters,
     frame_dependent_clock_term,
-    geometric_dilution,
-    geometric_dilution_covariance,
     line_of_sight_matrix,
     most_widely_spaced_triplet,
+    position_dilution,
+    position_dilution_covariance,
     position_on_sphere,
     position_trace,
     synchronous_orbit_radius,
-    zenith_angles_deg,
+    zenith_angles,
 )
 
 SATS_I = np.array(
@@ -31,8 +31,8 @@ R_RATIO = 42_164.17 / 6371.0
 
 
 def _geometry(ratio: float = R_RATIO):
-    sats = position_on_sphere(SATS_I[:, 0], SATS_I[:, 1], ratio * EARTH_MEAN_RADIUS_M)
-    ac = position_on_sphere(45.0, 120.0, EARTH_MEAN_RADIUS_M)
+    sats = position_on_sphere(SATS_I[:, 0], SATS_I[:, 1], ratio * EARTH_MEAN_RADIUS_M, deg=True)
+    ac = position_on_sphere(45.0, 120.0, EARTH_MEAN_RADIUS_M, deg=True)
     return sats, ac
 
 
@@ -62,7 +62,7 @@ def test_zenith_angles_match_pymap3d_elevation():
     """Oracle: pymap3d ecef2aer elevation; zenith = 90 deg - elevation."""
     sphere = pymap3d.Ellipsoid(EARTH_MEAN_RADIUS_M, EARTH_MEAN_RADIUS_M)
     sats, ac = _geometry()
-    zen = zenith_angles_deg(sats, ac)
+    zen = zenith_angles(ac, sats, deg=True)
     for s, z in zip(sats, zen, strict=True):
         _, el, _ = pymap3d.ecef2aer(*s, 45.0, 120.0, 0.0, ell=sphere)
         assert z == pytest.approx(90.0 - float(el), abs=1e-9)
@@ -76,12 +76,12 @@ def test_invariants_match_pymap3d_enu_frame():
     """
     sphere = pymap3d.Ellipsoid(EARTH_MEAN_RADIUS_M, EARTH_MEAN_RADIUS_M)
     sats, ac = _geometry()
-    U = line_of_sight_matrix(sats, ac)
+    U = line_of_sight_matrix(ac, sats)
     rows = []
     for s in sats:
         az, el, _ = pymap3d.ecef2aer(*s, 45.0, 120.0, 0.0, ell=sphere)
         az, el = math.radians(float(az)), math.radians(float(el))
-        rows.append([-math.cos(el) * math.sin(az), -math.cos(el) * math.cos(az), -math.sin(el)])
+        rows.append([math.cos(el) * math.sin(az), math.cos(el) * math.cos(az), math.sin(el)])
     V = np.array(rows)
     for f in (beta_parameter, position_trace, clock_direction_term):
         assert f(U) == pytest.approx(f(V), rel=1e-9)
@@ -92,7 +92,7 @@ def test_invariants_match_pymap3d_enu_frame():
 def test_k3_clock_term_equals_ffprime_inverse():
     """Oracle: closed form 1'(FF')^-1 1 for a square F."""
     sats, ac = _geometry()
-    F = line_of_sight_matrix(sats, ac)[:3]
+    F = line_of_sight_matrix(ac, sats)[:3]
     assert clock_direction_term(F) == pytest.approx(float(np.ones(3) @ np.linalg.solve(F @ F.T, np.ones(3))))
     assert beta_parameter(F) == pytest.approx(0.0, abs=1e-12)
 
@@ -100,22 +100,22 @@ def test_k3_clock_term_equals_ffprime_inverse():
 def test_dilution_any_differencing_matrix():
     """Oracle: Eq. 4.1.1 with random zero-row-sum H equals tr + S/beta (Eq. 4.5.6/4.5.7)."""
     sats, ac = _geometry()
-    F = line_of_sight_matrix(sats, ac)
+    F = line_of_sight_matrix(ac, sats)
     rng = np.random.default_rng(3)
     K = F.shape[0]
     p = constellation_parameters(F)
     for _ in range(3):
         H = rng.normal(size=(K - 1, K))
         H -= H.mean(axis=1, keepdims=True)
-        P = geometric_dilution_covariance(F, H)
+        P = position_dilution_covariance(F, H)
         assert np.trace(P) == pytest.approx(p.trace + p.clock_term / p.beta, rel=1e-9)
-    assert geometric_dilution(F) ** 2 == pytest.approx(np.trace(geometric_dilution_covariance(F)), rel=1e-9)
+    assert position_dilution(F) ** 2 == pytest.approx(np.trace(position_dilution_covariance(F)), rel=1e-9)
 
 
 def test_beta_brute_force_projection():
     """Oracle: beta = K - 1'F(F'F)^-1F'1 with explicit inverse."""
     sats, ac = _geometry(9.2351)
-    F = line_of_sight_matrix(sats, ac)
+    F = line_of_sight_matrix(ac, sats)
     one = np.ones(F.shape[0])
     ref = F.shape[0] - one @ F @ np.linalg.inv(F.T @ F) @ F.T @ one
     assert beta_parameter(F) == pytest.approx(ref, rel=1e-9)
@@ -124,21 +124,22 @@ def test_beta_brute_force_projection():
 def test_triplet_brute_force():
     """Oracle: exhaustive loop over all triplets by smallest trace."""
     sats, ac = _geometry()
-    U = line_of_sight_matrix(sats, ac)
+    U = line_of_sight_matrix(ac, sats)
     best = min(
         ((i, j, k) for i in range(7) for j in range(i + 1, 7) for k in range(j + 1, 7)),
         key=lambda t: np.trace(np.linalg.inv(U[list(t)].T @ U[list(t)])),
     )
-    assert most_widely_spaced_triplet(sats, ac, 90.0)[0] == best == (0, 1, 2)
+    assert most_widely_spaced_triplet(ac, sats, 90.0, deg=True)[0] == best == (0, 1, 2)
     # inside the 45 deg cone satellite 1 (index 0) is excluded
-    assert 0 not in most_widely_spaced_triplet(sats, ac, 45.0)[0]
+    assert 0 not in most_widely_spaced_triplet(ac, sats, np.radians(45.0))[0]
 
 
 def test_bad_input_raises():
     with pytest.raises(ValueError, match="F must"):
         beta_parameter(np.ones((2, 3)))
     with pytest.raises(ValueError, match="criterion"):
-        most_widely_spaced_triplet(*_geometry(), 90.0, criterion="bogus")
+        sats, ac = _geometry()
+        most_widely_spaced_triplet(ac, sats, 90.0, criterion="bogus", deg=True)
 
 
 @pytest.mark.parametrize("criterion", ["trace", "det", "angle"])
@@ -153,8 +154,8 @@ def test_triplet_every_criterion_brute_force(criterion, cone):
     rng = np.random.default_rng(13)
     for _ in range(3):
         lat_lon = np.column_stack([rng.uniform(-10, 80, 9), rng.uniform(60, 180, 9)])
-        sats = position_on_sphere(lat_lon[:, 0], lat_lon[:, 1], R_RATIO * EARTH_MEAN_RADIUS_M)
-        ac = position_on_sphere(45.0, 120.0, EARTH_MEAN_RADIUS_M)
+        sats = position_on_sphere(lat_lon[:, 0], lat_lon[:, 1], R_RATIO * EARTH_MEAN_RADIUS_M, deg=True)
+        ac = position_on_sphere(45.0, 120.0, EARTH_MEAN_RADIUS_M, deg=True)
         d = ac - sats
         U = d / np.linalg.norm(d, axis=1)[:, None]
         up = ac / np.linalg.norm(ac)
@@ -170,10 +171,13 @@ def test_triplet_every_criterion_brute_force(criterion, cone):
             return -min(np.degrees(np.arccos(F[i] @ F[j])) for i, j in ((0, 1), (0, 2), (1, 2)))
 
         best = min(itertools.combinations(inside, 3), key=score)
-        tri, value = most_widely_spaced_triplet(sats, ac, cone, criterion)
+        tri, value = most_widely_spaced_triplet(ac, sats, cone, criterion, deg=True)
         assert tri == best
         assert value == pytest.approx(abs(score(best)), rel=1e-9)
-        np.testing.assert_allclose(zenith_angles_deg(sats, ac), zenith, atol=1e-9)
+        np.testing.assert_allclose(zenith_angles(ac, sats, deg=True), zenith, atol=1e-9)
+        if criterion == "angle":  # radians by default
+            _, rad = most_widely_spaced_triplet(ac, sats, np.radians(cone), criterion)
+            assert rad == pytest.approx(np.radians(value), rel=1e-12)
 
 
 def test_zenith_and_nadir_satellites_and_the_cone_boundary():
@@ -182,17 +186,17 @@ def test_zenith_and_nadir_satellites_and_the_cone_boundary():
     1 + 2e-16 in magnitude, so it must be clipped. A satellite exactly on the cone (its own
     zenith angle used as the half-angle) is inside ("within the cone" includes the edge)."""
     lat, lon = 21.91386997143269, -82.87678304500669
-    ac = position_on_sphere(lat, lon, EARTH_MEAN_RADIUS_M)
+    ac = position_on_sphere(lat, lon, EARTH_MEAN_RADIUS_M, deg=True)
     up = ac / np.linalg.norm(ac)
-    z = zenith_angles_deg(np.array([ac + 3e7 * up, ac - 3e6 * up]), ac)
+    z = zenith_angles(ac, np.array([ac + 3e7 * up, ac - 3e6 * up]), deg=True)
     np.testing.assert_allclose(z, [0.0, 180.0], atol=1e-6)
     sats, ac = _geometry()
-    zen = zenith_angles_deg(sats, ac)
+    zen = zenith_angles(ac, sats, deg=True)
     k = int(np.argsort(zen)[3])  # the fourth-closest to the vertical
-    tri, _ = most_widely_spaced_triplet(sats, ac, float(zen[k]) - 1e-9)  # the 1e-9 deg allowance
+    tri, _ = most_widely_spaced_triplet(ac, sats, float(zen[k]) - 1e-9, deg=True)  # the 1e-9 deg allowance
     assert k in tri
     # the same zenith angle whether the aircraft is given as (3,) or (1, 3)
-    np.testing.assert_array_equal(zenith_angles_deg(sats, ac[None, :]), zen)
+    np.testing.assert_array_equal(zenith_angles(ac[None, :], sats, deg=True), zen)
 
 
 def test_coplanar_triplet_has_infinite_trace_and_parameters_dilution():
@@ -202,10 +206,10 @@ def test_coplanar_triplet_has_infinite_trace_and_parameters_dilution():
     ac = np.array([0.0, 0.0, EARTH_MEAN_RADIUS_M])
     th = np.radians([-30.0, 0.0, 30.0])
     sats = ac + 2e7 * np.column_stack([np.sin(th), np.zeros(3), np.cos(th)])
-    tri, score = most_widely_spaced_triplet(sats, ac, 90.0)
+    tri, score = most_widely_spaced_triplet(ac, sats, 90.0, deg=True)
     assert tri == (0, 1, 2) and score == math.inf
     sats7, ac7 = _geometry()
-    p = constellation_parameters(line_of_sight_matrix(sats7, ac7))
+    p = constellation_parameters(line_of_sight_matrix(ac7, sats7))
     assert p.dilution == pytest.approx(math.sqrt(p.trace + p.clock_term / p.beta), rel=1e-12)
 
 
@@ -221,7 +225,7 @@ def test_identical_satellites_have_zero_separation():
     makes the rounded cosine between the identical lines of sight 1 + 2e-16) are 0 deg apart."""
     _, ac = _geometry()
     s = np.array([19719117.844802145, 37060229.151186995, 2404281.315552615])
-    assert most_widely_spaced_triplet(np.array([s, s, s]), ac, 90.0, "angle") == ((0, 1, 2), 0.0)
+    assert most_widely_spaced_triplet(ac, np.array([s, s, s]), 90.0, "angle", deg=True) == ((0, 1, 2), 0.0)
 
 
 @pytest.mark.parametrize("criterion", ["trace", "det"])
@@ -242,7 +246,7 @@ def test_tied_triplets_resolve_to_the_first(criterion):
             [18187373.955980718, 18187373.955980718, 1090140.8782154752],
         ]
     )
-    U = line_of_sight_matrix(sats, ac)
+    U = line_of_sight_matrix(ac, sats)
 
     def score(t):
         F = U[list(t)]
@@ -252,4 +256,32 @@ def test_tied_triplets_resolve_to_the_first(criterion):
     best = min(combos, key=score)
     ties = [t for t in combos if score(t) == score(best)]
     assert len(ties) >= 2
-    assert most_widely_spaced_triplet(sats, ac, 90.0, criterion)[0] == best == ties[0]
+    assert most_widely_spaced_triplet(ac, sats, 90.0, criterion, deg=True)[0] == best == ties[0]
+
+
+def test_position_dilution_is_the_pdop_of_the_lines_of_sight():
+    """Oracle: an own weighted least-squares covariance of [u, 1] (position and the unknown
+    emission time) for ATC-10's Example I geometry: ATC-10's dilution k is that solution's
+    PDOP, and navcore.gnss.dop gives the same PDOP from the same lines of sight (sign either
+    way: the lines of sight of navcore point from the aircraft to the satellites)."""
+    from navcore.gnss.dop import dop_from_lines_of_sight
+
+    sats, ac = _geometry()
+    U = line_of_sight_matrix(ac, sats)
+    G = np.hstack([U, np.ones((U.shape[0], 1))])
+    own = math.sqrt(np.trace(np.linalg.inv(G.T @ G)[:3, :3]))
+    assert position_dilution(U) == pytest.approx(own, rel=1e-10)
+    assert position_dilution(-U) == pytest.approx(own, rel=1e-10)
+    assert float(dop_from_lines_of_sight(U).pdop) == pytest.approx(own, rel=1e-10)
+
+
+def test_line_of_sight_points_from_the_aircraft_to_the_satellite():
+    """Convention: receiver first; unit vectors from it to each satellite (like
+    navcore.gnss.constellation.line_of_sight)."""
+    from navcore.gnss.constellation import line_of_sight
+
+    sats, ac = _geometry()
+    u, _ = line_of_sight(ac, sats)
+    np.testing.assert_allclose(line_of_sight_matrix(ac, sats), u, atol=1e-15)
+    d = sats - ac
+    np.testing.assert_allclose(line_of_sight_matrix(ac, sats), d / np.linalg.norm(d, axis=1)[:, None])

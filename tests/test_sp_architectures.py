@@ -49,7 +49,7 @@ def test_block_units_are_dimensionally_consistent():
     assert sp.simplify(u["velocity"] / u["position"] - 1 / s) == 0
     assert sp.simplify(u["acceleration"] / u["velocity"] - 1 / s) == 0
     assert sp.simplify(u["clock drift"] / u["clock bias"] - 1 / s) == 0
-    assert sp.simplify(u["gyro drift"] / u["misalignment"] - 1 / s) == 0
+    assert sp.simplify(u["gyro bias"] / u["misalignment"] - 1 / s) == 0
     assert u["position"] == m and u["misalignment"] == rad
     assert u["accel bias"] == u["acceleration"] and u["altimeter bias"] == m and u["clock bias"] == m
     assert u["gyro scale factor"] == 1 and u["accel scale factor"] == 1

@@ -71,15 +71,28 @@ PARTS = {
     "reference": "Reference",
 }
 
-REFERENCE_PAGES = ("units", "frames", "estimation", "inertial", "gnss", "detection", "location", "ledger")
+REFERENCE_PAGES = (
+    "units",
+    "frames",
+    "gravity",
+    "estimation",
+    "inertial",
+    "gnss",
+    "detection",
+    "location",
+    "ledger",
+)
+HOWTO_PAGES = ("dop", "outage", "kalman", "frames", "detection", "emitter")
 
 
 def subset_toc(paper: str) -> str:
-    if paper == "reference":  # the API reference alone: no notebook executes
-        pages = "".join(f"          - file: reference/{name}\n" for name in REFERENCE_PAGES)
+    if paper == "reference":  # the how-to guides (executed) and the API reference
+        howto = "".join(f"          - file: reference/howto/{name}\n" for name in HOWTO_PAGES)
+        pages = "".join(f"      - file: reference/{name}\n" for name in REFERENCE_PAGES)
         return (
             "format: jb-book\nroot: reference/index\nparts:\n"
-            "  - caption: Reference\n    chapters:\n" + pages.replace("          - file", "      - file")
+            "  - caption: Reference\n    chapters:\n"
+            "      - file: reference/howto/index\n        sections:\n" + howto + pages
         )
     return (
         "format: jb-book\nroot: intro\nparts:\n"

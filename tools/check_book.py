@@ -60,9 +60,10 @@ PROSE_TAGS = {"p", "li", "dd", "td", "figcaption"}
 SKIP_TAGS = {"pre", "kbd", "samp", "tt", "var", "a", "script", "style", "svg", "math", "th", "button"}
 SKIP_CLASSES = {"math", "cell_output", "output", "output_area", "highlight", "headerlink", "sig"}
 VOID_TAGS = {"area", "base", "br", "col", "embed", "hr", "img", "input", "link", "meta", "source", "wbr"}
-# pages that are not prose: the API reference, generated indexes, highlighted sources, search
+# pages that are not prose: the API reference (its how-to guides are), generated indexes,
+# highlighted sources, search
 NOT_PROSE = re.compile(
-    r"^(?:reference/|_modules/|_sources/|_static/|_images/|genindex|py-modindex|search\.html)"
+    r"^(?:reference/(?!howto/)|_modules/|_sources/|_static/|_images/|genindex|py-modindex|search\.html)"
 )
 
 

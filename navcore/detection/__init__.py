@@ -2,8 +2,12 @@
 
 Modules
 -------
+pulse_detection
+    threshold from Pfa, Pd from SNR for N pulses, coherent and noncoherent, Swerling 0-IV,
+    and the required SNR; the SNR convention of navcore (E/N0 per pulse) is stated there.
 neyman_pearson
-    detection of a known signal in white Gaussian noise, in the log domain.
+    detection of a known signal in white Gaussian noise, in the log domain (ATC-10's
+    detection index d, which is sqrt(2 E/N0) in navcore's convention).
 jamming
     lower bounds on false and ambiguous aircraft locations under barrage jamming.
 antenna

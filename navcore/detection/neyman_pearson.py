@@ -15,6 +15,12 @@ probability ``p_d`` fixes the threshold, and then
 where ``Q`` is the Gaussian upper tail. The paper writes this as
 ``1/2 - 1/2 erf(sqrt(P0 B tau / (2 J)) - phi)`` with ``phi = erfinv(2 p_d - 1)``.
 
+In navcore's SNR convention (signal energy over the one-sided noise density per pulse,
+``snr = E/N0``, stated once in :mod:`navcore.detection.pulse_detection`) the coherent
+detection index is ``d = sqrt(2 snr)``: the results here are those of
+:func:`navcore.detection.pulse_detection.pulse_detection_probability` with ``coherent=True``
+at ``snr = d**2 / 2 = E B / (2 J)``, i.e. ATC-10 takes the noise density ``N0 = 2 J / B``.
+
 Everything is evaluated in the log domain with ``scipy.special.log_ndtr``, so tail
 probabilities such as 1e-45 (or 1e-300) are computed to full relative precision instead of
 cancelling to zero as ``0.5 - 0.5 * erf(z)`` does.

@@ -15,7 +15,9 @@ analysis that the SP paper uses to compare architectures, and that the WF and AT
 chapters use for their local filters and trackers.
 
 A step with no measurement is a pure prediction; a measurement with infinite variance is
-skipped (an outage).
+skipped (an outage). Schedules, and a time-varying ``Phi`` or ``Q``, are functions of the step
+index ``k`` alone, as in :func:`navcore.estimation.covariance_analysis.run_covariance_analysis`
+(the time is ``t[k]``).
 """
 
 from __future__ import annotations
@@ -26,7 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import check_public, require_square, require_symmetric_psd
+from navcore._validate import COVARIANCE, Covariance, check_public, require_square
 from navcore.estimation.kalman import symmetrize_unchecked
 
 __all__ = ["CovarianceHistory", "Measurement", "propagate_covariance"]
@@ -50,9 +52,29 @@ class Measurement:
     H: Array
     R: Array
 
+    def __post_init__(self) -> None:
+        shape_h, shape_r = np.shape(self.H), np.shape(self.R)
+        m = 1 if len(shape_h) == 1 else shape_h[0]  # a single row may be given as a vector
+        if len(shape_h) > 2 or shape_r != (m, m):
+            raise ValueError(
+                f"Measurement.R must be (m, m) for H of shape (m, n), got H {shape_h} and R {shape_r}"
+            )
+
+    @classmethod
+    def _unchecked(cls, H: Array, R: Array) -> Measurement:
+        """A measurement built by the library's own schedules, which run every step and whose
+        ``R`` is a covariance by construction (from noise levels checked where the schedule
+        was made): no check here. Not for users: the constructor checks ``R``."""
+        m = object.__new__(cls)
+        object.__setattr__(m, "H", H)
+        object.__setattr__(m, "R", R)
+        return m
+
     @classmethod
     def scalar(cls, h: ArrayLike, r: float) -> Measurement:
-        """A scalar measurement with row ``h`` and variance ``r``."""
+        """A scalar measurement with row ``h`` and variance ``r`` (``>= 0``, ``inf`` for an outage)."""
+        if not r >= 0:
+            raise ValueError(f"r must be a variance >= 0, got {r!r}")
         return cls(np.atleast_2d(np.asarray(h, dtype=float)), np.array([[float(r)]]))
 
 
@@ -90,11 +112,11 @@ class CovarianceHistory:
         return np.sqrt(np.clip(diag.sum(axis=1), 0.0, None))
 
 
-MatrixOrFunc = ArrayLike | Callable[[int, float], ArrayLike]
+MatrixOrFunc = ArrayLike | Callable[[int], ArrayLike]
 
 
-def _at(value: MatrixOrFunc, k: int, t: float) -> Array:
-    return np.asarray(value(k, t) if callable(value) else value, dtype=float)
+def _at(value: MatrixOrFunc, k: int) -> Array:
+    return np.asarray(value(k) if callable(value) else value, dtype=float)
 
 
 def _model_matrix(name: str, value: ArrayLike, n: int, k: int | None = None) -> Array:
@@ -113,7 +135,7 @@ def propagate_covariance(
     t: ArrayLike,
     Phi: MatrixOrFunc,
     Q: MatrixOrFunc,
-    schedule: Callable[[int, float], Sequence[Measurement]] | None = None,
+    schedule: Callable[[int], Sequence[Measurement]] | None = None,
 ) -> CovarianceHistory:
     """Propagate a covariance over the grid ``t`` with scheduled measurement updates.
 
@@ -123,12 +145,15 @@ def propagate_covariance(
         Initial covariance at ``t[0]`` (before any update at ``t[0]``).
     t : (N+1,) array
         Strictly increasing times.
-    Phi, Q : (n, n) array or callable ``(k, t_k) -> array``
-        Transition and process-noise covariance from ``t[k-1]`` to ``t[k]`` (called for
-        ``k = 1..N``).
-    schedule : callable ``(k, t_k) -> sequence of Measurement``, optional
+    Phi, Q : (n, n) array or callable ``k -> array``
+        Transition and process-noise covariance (symmetric positive semi-definite) from
+        ``t[k-1]`` to ``t[k]`` (called for ``k = 1..N``; a callable ``Q`` is checked at
+        ``k = 1``).
+    schedule : callable ``k -> sequence of Measurement``, optional
         Measurements available at ``t[k]`` (``k = 0..N``), processed sequentially. A
-        measurement whose ``R`` has an infinite diagonal entry is skipped (outage).
+        measurement whose ``R`` has an infinite diagonal entry is skipped (outage). The
+        signature is that of the schedules of
+        :func:`navcore.estimation.covariance_analysis.run_covariance_analysis`.
 
     Returns
     -------
@@ -138,8 +163,8 @@ def propagate_covariance(
     Raises
     ------
     ValueError
-        If ``P0`` is not square, ``t`` not strictly increasing, or a matrix has the wrong
-        shape.
+        If ``P0`` or ``Q`` is not a covariance (square, symmetric positive semi-definite),
+        ``t`` not strictly increasing, or a matrix has the wrong shape.
 
     Notes
     -----
@@ -152,13 +177,14 @@ def propagate_covariance(
 
     >>> import numpy as np
     >>> meas = [Measurement(np.eye(1), np.eye(1))]
-    >>> hist = propagate_covariance(np.eye(1), np.arange(50.0), np.eye(1), np.eye(1),
-    ...                             lambda k, t: meas)
+    >>> hist = propagate_covariance(np.eye(1), np.arange(50.0), np.eye(1), np.eye(1), lambda k: meas)
     >>> round(float(hist.posterior[-1, 0, 0]), 4), round(float(hist.prior[-1, 0, 0]), 4)
     (0.618, 1.618)
     """
     P = require_square("P0", P0)
-    require_symmetric_psd("P0", P)
+    COVARIANCE.check("P0", P)
+    if not callable(Q):
+        COVARIANCE.check("Q", Q)
     t = np.asarray(t, dtype=float)
     if t.ndim != 1 or t.size < 1 or np.any(np.diff(t) <= 0):
         raise ValueError("t must be a 1-D array of strictly increasing times")
@@ -173,12 +199,14 @@ def propagate_covariance(
     fixed_Q = None if callable(Q) else _model_matrix("Q", Q, n)
     for k in range(N):
         if k > 0:
-            F = fixed_F if fixed_F is not None else _model_matrix("Phi", _at(Phi, k, t[k]), n, k)
-            Qk = fixed_Q if fixed_Q is not None else _model_matrix("Q", _at(Q, k, t[k]), n, k)
+            F = fixed_F if fixed_F is not None else _model_matrix("Phi", _at(Phi, k), n, k)
+            Qk = fixed_Q if fixed_Q is not None else _model_matrix("Q", _at(Q, k), n, k)
+            if k == 1 and fixed_Q is None:
+                COVARIANCE.check("Q(1)", Qk)  # a callable Q: its first matrix
             P = symmetrize_unchecked(F @ P @ F.T + Qk)  # P- = Phi P Phi' + Q
         prior[k] = P
         if schedule is not None:
-            for meas in schedule(k, float(t[k])):
+            for meas in schedule(k):
                 H = np.atleast_2d(meas.H)
                 R = np.atleast_2d(meas.R)
                 if H.shape[1] != n or R.shape != (H.shape[0], H.shape[0]):
@@ -199,4 +227,7 @@ def propagate_covariance(
 
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
-check_public(globals(), Measurement={"allow_inf": ("R",)})
+check_public(
+    globals(),
+    Measurement={"allow_inf": ("R",), "ranges": {"R": Covariance(allow_inf_diagonal=True)}},
+)

@@ -29,7 +29,7 @@ position every 10 s when at least four codes are tracked and the expected horizo
 error is small enough, barometric altitude, and Doppler ground speed in body axes.
 
 Discretisation: :math:`\Phi = \sum_{j\le 4} (F\Delta t)^j/j!` (exact for the
-nilpotent chains gyro drift -> attitude -> velocity -> position) and
+nilpotent chains gyro bias -> attitude -> velocity -> position) and
 :math:`Q = \int_0^{\Delta t}\Phi(s)\,GQG^T\Phi(s)^T ds` by Gauss-Legendre quadrature,
 relinearised whenever the flight condition changes (1-s and 10-s steps are far below the
 84-min Schuler period).
@@ -54,6 +54,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from navcore._validate import (
     COUNT,
+    COVARIANCE,
+    COVARIANCE_STACK,
     NONNEGATIVE,
     OPEN_PROBABILITY,
     POSITIVE,
@@ -123,8 +125,8 @@ def embedding(filter_layout: StateLayout, truth_layout: StateLayout) -> NDArray[
     Examples
     --------
     >>> from navcore.inertial.error_dynamics import ins_error_layout
-    >>> truth = ins_error_layout("position", "velocity", "misalignment", "gyro drift")
-    >>> embedding(ins_error_layout("position", "gyro drift"), truth)
+    >>> truth = ins_error_layout("position", "velocity", "misalignment", "gyro bias")
+    >>> embedding(ins_error_layout("position", "gyro bias"), truth)
     array([ 0,  1,  2,  9, 10, 11])
     """
     if not filter_layout.issubset(truth_layout):
@@ -858,7 +860,7 @@ def tightly_coupled_schedule(
         if i_g is not None:
             H[rows, i_g] = g_load[k]  # type: ignore[index]  # i_g is None when g_load is
         R = np.diag(np.r_[np.full(cc.size, pseudorange_noise**2), np.full(cr.size, range_rate_noise**2)])
-        return [Measurement(H, R)]
+        return [Measurement._unchecked(H, R)]
 
     return sched
 
@@ -960,7 +962,7 @@ def loosely_coupled_schedule(
             for j, c in enumerate(chans):
                 H[:, layout.index("pseudorange bias", int(c))] = -A[:, j]
         R = pseudorange_noise**2 * GtG_inv[:3, :3]
-        return [Measurement(H, 0.5 * (R + R.T))]
+        return [Measurement._unchecked(H, 0.5 * (R + R.T))]
 
     return sched
 
@@ -1009,7 +1011,7 @@ def baro_schedule(layout: StateLayout, *, noise_m: float, every: int = 1) -> Sch
     R = np.array([[noise_m**2]])
 
     def sched(k: int) -> list[Measurement]:
-        return [] if k % every else [Measurement(H, R)]
+        return [] if k % every else [Measurement._unchecked(H, R)]
 
     return sched
 
@@ -1093,7 +1095,7 @@ def doppler_schedule(
             H[:, layout.slice("doppler scale factor")] = -np.diag(vb)
         if "doppler misalignment" in names:
             H[:, layout.slice("doppler misalignment")] = -skew_stack(vb)
-        return [Measurement(H, R)]
+        return [Measurement._unchecked(H, R)]
 
     return sched
 
@@ -1272,5 +1274,9 @@ check_public(
         "range_rate_noise": NONNEGATIVE,
         "pseudorange_bias_sigma": NONNEGATIVE,
         "max_ehe_m": POSITIVE,
+        "P2": COVARIANCE,
+        "S": COVARIANCE_STACK,
+        "P0_filter": COVARIANCE_STACK,
+        "P0_apriori": COVARIANCE_STACK,
     },
 )

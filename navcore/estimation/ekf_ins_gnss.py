@@ -36,6 +36,8 @@ from navcore._validate import (
     COUNT,
     NONNEGATIVE,
     POSITIVE,
+    ROTATION_STACK,
+    UNIT_QUATERNION_STACK,
     check_public,
     require_integer,
     require_positive,
@@ -223,7 +225,8 @@ def discrete_noise_nilpotent(F: Array, GQGt: Array, dt: float) -> Array:
     F : (..., n, n) array
         Continuous-time error dynamics with ``F^4 = 0``, 1/s.
     GQGt : (n, n) array
-        White-noise PSD mapped to the states (state unit squared per second).
+        White-noise PSD mapped to the states (state unit squared per second; not checked:
+        an inner-loop helper of :func:`run_monte_carlo`).
     dt : float
         Interval, s (``> 0``).
 
@@ -265,7 +268,8 @@ def sequential_scalar_updates(x: Array, P: Array, y: Array, H: Array, r: Array) 
     x : (N, n) array
         Error-state estimates (units of the state layout).
     P : (N, n, n) array
-        Covariances.
+        Covariances (not checked: an inner-loop helper of :func:`run_monte_carlo`, which
+        checks its scenario at entry).
     y : (N, m) array
         Measurements ``y = H x + v`` with uncorrelated noise of variances ``r``.
     H : (N, m, n) array
@@ -863,6 +867,8 @@ check_public(
         "clock_phase_walk": NONNEGATIVE,
         "init_time": NONNEGATIVE,
         "attitude_min_sats": COUNT,
+        "q": UNIT_QUATERNION_STACK,
+        "C": ROTATION_STACK,
         "batches": COUNT,
     },
 )

@@ -38,6 +38,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.linalg import solve_discrete_are
 
 from navcore._validate import (
+    COVARIANCE,
     NONNEGATIVE,
     POSITIVE,
     as_finite_array,
@@ -616,6 +617,7 @@ def feasible_weights(
     array([3. , 1.5])
     """
     n = _state_size(covariances)
+    _informations(covariances, n)  # checks each covariance (shape, symmetric positive definite)
     active = [
         P is not None and not (np.ndim(P) == 0) and not np.all(np.isinf(np.diag(np.asarray(P))))
         for P in covariances
@@ -813,4 +815,18 @@ def federated_improvement_db(
 
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
-check_public(globals(), {"Ts": POSITIVE, "sigma_L": POSITIVE, "sigma_a": NONNEGATIVE})
+check_public(
+    globals(),
+    {
+        "Ts": POSITIVE,
+        "sigma_L": POSITIVE,
+        "sigma_a": NONNEGATIVE,
+        "P": COVARIANCE,
+        "P_prior": COVARIANCE,
+        "R_G": COVARIANCE,
+        "R_L": COVARIANCE,
+        "Q_a": COVARIANCE,
+        "P_N": COVARIANCE,
+        "Q_T": COVARIANCE,
+    },
+)

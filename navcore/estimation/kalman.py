@@ -299,14 +299,22 @@ def kf_update(
     ``P+ = (I-KH) P- (I-KH)^T + K R K^T`` (Joseph form, Bucy and Joseph 1968, reference 3 of
     the module): it stays symmetric and positive semi-definite under round-off, unlike ``(I-KH) P-``.
 
+    An epoch without measurements (``z`` of length 0, an epoch without satellites) is a
+    no-op: ``H`` must then have no rows and ``R`` no elements, and the update returns ``x``
+    and ``P`` unchanged, an ``(n, 0)`` gain, an empty innovation and a ``(0, 0)`` ``S``.
+
     Examples
     --------
     >>> import numpy as np
     >>> up = kf_update([0.0, 0.0], np.eye(2), [2.0], [[1.0, 0.0]], [[1.0]])
     >>> up.x, up.K.ravel()
     (array([1., 0.]), array([0.5, 0. ]))
+    >>> kf_update([1.0, 2.0], np.eye(2), [], np.zeros((0, 2)), np.zeros((0, 0))).x  # no measurement
+    array([1., 2.])
     """
     if not validate:  # float ndarrays checked by the caller
+        if np.size(z) == 0:
+            return _no_update(x, P)
         Ha = np.asarray(H)  # H is an ndarray already: no copy
         PHt = np.dot(P, Ha.T)
         S = np.dot(Ha, PHt) + R
@@ -329,6 +337,12 @@ def kf_update(
     if z.ndim != 1:
         raise ValueError(f"z must be a vector, got shape {z.shape}")
     m = z.size
+    if m == 0:
+        if np.size(H) or np.size(R):
+            raise ValueError(
+                f"H and R must be empty when z is (no measurement), got H {np.shape(H)} and R {np.shape(R)}"
+            )
+        return _no_update(x, P)
     H = _matrix("H", H, (m, n))
     R = _covariance("R", R, m, definite=True)
     innovation = z - H @ x
@@ -337,6 +351,14 @@ def kf_update(
     I_KH = np.eye(n) - K @ H
     P_post = symmetrize_unchecked(I_KH @ P @ I_KH.T + K @ R @ K.T)  # Joseph form
     return KalmanUpdate(x + K @ innovation, P_post, K, innovation, S)
+
+
+def _no_update(x: ArrayLike, P: ArrayLike) -> KalmanUpdate:
+    """The update of an epoch without measurements: the prior, unchanged (copies)."""
+    xa = np.array(x, dtype=float)
+    Pa = np.array(P, dtype=float)
+    n = xa.size
+    return KalmanUpdate(xa, Pa, np.zeros((n, 0)), np.zeros(0), np.zeros((0, 0)))
 
 
 def information_from_covariance(x: ArrayLike, P: ArrayLike) -> tuple[Array, Array]:
@@ -452,7 +474,8 @@ def information_update(
     Notes
     -----
     The information filter of Maybeck (1979), Ch. 5 (reference 2 of the module); it gives
-    the same posterior as :func:`kf_update` whenever the prior is proper.
+    the same posterior as :func:`kf_update` whenever the prior is proper. An empty ``z`` (with
+    empty ``H`` and ``R``) returns the prior unchanged, as :func:`kf_update` does.
 
     Examples
     --------
@@ -469,6 +492,12 @@ def information_update(
     if z.ndim != 1:
         raise ValueError(f"z must be a vector, got shape {z.shape}")
     m = z.size
+    if m == 0:  # no measurement: the prior, unchanged (as kf_update)
+        if np.size(H) or np.size(R):
+            raise ValueError(
+                f"H and R must be empty when z is (no measurement), got H {np.shape(H)} and R {np.shape(R)}"
+            )
+        return y.copy(), Y.copy()
     H = _matrix("H", H, (m, n))
     R = _matrix("R", R, (m, m))
     require_symmetric_psd("R", R, definite=True)

@@ -25,17 +25,19 @@ __all__ = ["INS_BLOCK_SYNONYMS", "InsBlock", "StateBlock", "StateLayout", "ins_b
 class InsBlock(StrEnum):
     """The names of the INS/GNSS error-state blocks that navcore's error models know.
 
-    A member is a ``str``, so ``InsBlock.GYRO_DRIFT == "gyro drift"`` and either spelling
+    A member is a ``str``, so ``InsBlock.GYRO_BIAS == "gyro bias"`` and either spelling
     may be passed wherever a block name is expected (for instance to
     :func:`navcore.inertial.error_dynamics.ins_error_layout`). The sizes and units are in
-    the table of :mod:`navcore.inertial.error_dynamics`. Note the papers' vocabulary: a gyro
-    *drift* is the random-constant gyro bias (rad/s); the accelerometer's is ``accel bias``.
+    the table of :mod:`navcore.inertial.error_dynamics`. The names are the field's: the
+    papers' "gyro drift" is the random-constant gyro bias (rad/s), named ``gyro bias`` here
+    (the papers' names are aliases on the book's notation page, not in the API: a paper name
+    raises and suggests navcore's).
     """
 
     POSITION = "position"
     VELOCITY = "velocity"
     MISALIGNMENT = "misalignment"
-    GYRO_DRIFT = "gyro drift"
+    GYRO_BIAS = "gyro bias"
     GYRO_SCALE_FACTOR = "gyro scale factor"
     GYRO_MISALIGNMENT = "gyro misalignment"
     ACCEL_BIAS = "accel bias"
@@ -53,11 +55,12 @@ class InsBlock(StrEnum):
     DOPPLER_MISALIGNMENT = "doppler misalignment"
 
 
-#: Common other names of the INS blocks, mapped to navcore's name; used in error messages
-#: ("did you mean ...?"), never substituted silently.
+#: Common other names of the INS blocks (and the papers' names), mapped to navcore's name;
+#: used in error messages ("did you mean ...?"), never substituted silently.
 INS_BLOCK_SYNONYMS: dict[str, InsBlock] = {
-    "gyro bias": InsBlock.GYRO_DRIFT,
-    "gyro biases": InsBlock.GYRO_DRIFT,
+    "gyro drift": InsBlock.GYRO_BIAS,
+    "gyro drifts": InsBlock.GYRO_BIAS,
+    "gyro biases": InsBlock.GYRO_BIAS,
     "accelerometer bias": InsBlock.ACCEL_BIAS,
     "accel drift": InsBlock.ACCEL_BIAS,
     "attitude": InsBlock.MISALIGNMENT,
@@ -85,7 +88,7 @@ def ins_block_name(name: str, *, argument: str = "name") -> InsBlock:
     Parameters
     ----------
     name : str
-        A block name (``"gyro drift"``) or an :class:`InsBlock` member.
+        A block name (``"gyro bias"``) or an :class:`InsBlock` member.
     argument : str, default "name"
         How the caller's parameter is spelled, for the error message.
 
@@ -100,17 +103,18 @@ def ins_block_name(name: str, *, argument: str = "name") -> InsBlock:
         If ``name`` is not a string.
     ValueError
         If ``name`` is not a block name; the message suggests the closest one, and the
-        navcore name of common synonyms (``"gyro bias"`` is ``"gyro drift"``).
+        navcore name of common synonyms and of the papers' names (``"gyro drift"`` is
+        ``"gyro bias"``).
 
     Examples
     --------
-    >>> ins_block_name("gyro drift")
-    <InsBlock.GYRO_DRIFT: 'gyro drift'>
+    >>> ins_block_name("gyro bias")
+    <InsBlock.GYRO_BIAS: 'gyro bias'>
     >>> try:
-    ...     ins_block_name("gyro bias")
+    ...     ins_block_name("gyro drift")
     ... except ValueError as exc:
     ...     print(str(exc).split("; ")[1])
-    did you mean 'gyro drift'?
+    did you mean 'gyro bias'?
     """
     if not isinstance(name, str):
         raise TypeError(f"{argument} must be a string (a block name), got {name!r}")

@@ -23,7 +23,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from navcore._validate import NONNEGATIVE, POSITIVE, as_finite_array, check_public, require_positive
+from navcore._validate import (
+    COVARIANCE,
+    NONNEGATIVE,
+    POSITIVE,
+    as_finite_array,
+    check_public,
+    require_positive,
+)
 from navcore.estimation.kalman import symmetrize
 from navcore.trace import implements
 
@@ -262,4 +269,4 @@ def scalar_nuisance_gain(f: np.ndarray, G: np.ndarray, sigma: float, sigma_x: fl
 
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
-check_public(globals(), {"sigma": POSITIVE, "sigma_x": NONNEGATIVE})
+check_public(globals(), {"sigma": POSITIVE, "sigma_x": NONNEGATIVE, "P_x": COVARIANCE, "P_n": COVARIANCE})

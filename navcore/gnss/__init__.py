@@ -3,7 +3,9 @@
 Modules
 -------
 constellation
-    a nominal 24-satellite GPS constellation, line of sight, elevation/azimuth, DOP.
+    a nominal 24-satellite GPS constellation, line of sight, elevation/azimuth, visibility.
+dop
+    dilution of precision (GDOP, PDOP, HDOP, VDOP, TDOP) with weights and an elevation mask.
 measurements
     pseudorange and pseudorange-rate models and their Jacobians.
 carrier_phase

@@ -12,7 +12,7 @@ Component blocks
 ``CLOCK``         user clock bias and drift (1 each)
 ``ALTIMETER``     barometric altimeter bias (1)
 ``INS_CORE``      position, velocity and misalignment error (3 each)
-``IMU_ERRORS``    gyro drift, gyro scale factor, accelerometer bias and scale factor (3 each)
+``IMU_ERRORS``    gyro bias, gyro scale factor, accelerometer bias and scale factor (3 each)
 
 References
 ----------
@@ -52,7 +52,7 @@ INS_CORE = StateLayout.of(
     name="INS core",
 )
 IMU_ERRORS = StateLayout.of(
-    StateBlock("gyro drift", 3, "rad/s"),
+    StateBlock("gyro bias", 3, "rad/s"),
     StateBlock("gyro scale factor", 3, "-"),
     StateBlock("accel bias", 3, "m/s^2"),
     StateBlock("accel scale factor", 3, "-"),

@@ -41,6 +41,8 @@ from navcore._validate import (
     COUNT,
     COUNT0,
     POSITIVE,
+    ROTATION,
+    Angle,
     as_finite_array,
     check_public,
     require_integer,
@@ -242,15 +244,17 @@ def dd_covariance(nu: int, sigma_phase: float, n_baselines: int = 2) -> Array:
 
 
 @implements("KZL 13")
-def euler_rate_matrix_body(roll: float, pitch: float) -> Array:
+def euler_rate_matrix_body(roll: float, pitch: float, *, deg: bool = False) -> Array:
     """Body-rate to Euler-rate matrix :math:`J_b^{-1}` of the 3-2-1 sequence (the "R" of KZL Eq. 13).
 
     Parameters
     ----------
     roll : float
-        Roll, rad.
+        Roll, rad (deg with ``deg=True``).
     pitch : float
-        Pitch, rad (not +-90 deg).
+        Pitch, rad (deg), in (-90, 90) deg.
+    deg : bool, default False
+        The angles are in degrees.
 
     Returns
     -------
@@ -268,13 +272,15 @@ def euler_rate_matrix_body(roll: float, pitch: float) -> Array:
     >>> np.round(euler_rate_matrix_body(0.1, 0.2), 4).tolist()
     [[1.0, 0.0202, 0.2017], [0.0, 0.995, -0.0998], [0.0, 0.1019, 1.0152]]
     """
+    if deg:
+        roll, pitch = float(np.radians(roll)), float(np.radians(pitch))
     sr, cr = np.sin(roll), np.cos(roll)
     tp, cp = np.tan(pitch), np.cos(pitch)
     return np.array([[1.0, sr * tp, cr * tp], [0.0, cr, -sr], [0.0, sr / cp, cr / cp]])
 
 
 @implements("KZL 12")
-def euler_attitude_rows(C_bn: ArrayLike, roll: float, pitch: float) -> Array:
+def euler_attitude_rows(C_bn: ArrayLike, roll: float, pitch: float, *, deg: bool = False) -> Array:
     r"""Rows (3 x 17) of the Euler-angle attitude observation (KZL Eq. 12/13, corrected block).
 
     The block is :math:`\partial(\phi,\theta,\psi)/\partial\Delta\psi = J_b^{-1}\hat R_n^b`.
@@ -282,11 +288,13 @@ def euler_attitude_rows(C_bn: ArrayLike, roll: float, pitch: float) -> Array:
     Parameters
     ----------
     C_bn : (3, 3) array
-        Computed body-to-NED attitude.
+        Computed body-to-NED attitude (a rotation matrix).
     roll : float
-        Roll, rad.
+        Roll, rad (deg with ``deg=True``).
     pitch : float
-        Pitch, rad.
+        Pitch, rad (deg), in (-90, 90) deg.
+    deg : bool, default False
+        The angles are in degrees.
 
     Returns
     -------
@@ -296,7 +304,7 @@ def euler_attitude_rows(C_bn: ArrayLike, roll: float, pitch: float) -> Array:
     Raises
     ------
     ValueError
-        If ``C_bn`` is not a finite matrix.
+        If ``C_bn`` is not a rotation matrix or an angle is out of range for its unit.
 
     References
     ----------
@@ -312,12 +320,14 @@ def euler_attitude_rows(C_bn: ArrayLike, roll: float, pitch: float) -> Array:
     """
     C = as_finite_array("C_bn", C_bn, ndim=2)
     H = np.zeros((3, 17))
-    H[:, _A] = euler_rate_matrix_body(roll, pitch) @ C.T
+    H[:, _A] = euler_rate_matrix_body(roll, pitch, deg=deg) @ C.T
     return H
 
 
 @implements("KZL 13")
-def tc_attitude_observation_matrix(los_ned: ArrayLike, C_bn: ArrayLike, roll: float, pitch: float) -> Array:
+def tc_attitude_observation_matrix(
+    los_ned: ArrayLike, C_bn: ArrayLike, roll: float, pitch: float, *, deg: bool = False
+) -> Array:
     """Observation matrix of KZL Eq. 13 stacked over satellites: ``(2 nu + 3, 17)``.
 
     Parameters
@@ -325,11 +335,13 @@ def tc_attitude_observation_matrix(los_ned: ArrayLike, C_bn: ArrayLike, roll: fl
     los_ned : (nu, 3) array
         Unit LOS vectors receiver -> satellite in NED.
     C_bn : (3, 3) array
-        Computed body-to-NED attitude.
+        Computed body-to-NED attitude (a rotation matrix).
     roll : float
-        Roll, rad.
+        Roll, rad (deg with ``deg=True``).
     pitch : float
-        Pitch, rad.
+        Pitch, rad (deg), in (-90, 90) deg.
+    deg : bool, default False
+        The angles are in degrees.
 
     Returns
     -------
@@ -352,7 +364,7 @@ def tc_attitude_observation_matrix(los_ned: ArrayLike, C_bn: ArrayLike, roll: fl
     >>> tc_attitude_observation_matrix(np.tile([0.0, 0.0, -1.0], (4, 1)), np.eye(3), 0.0, 0.0).shape
     (11, 17)
     """
-    return np.vstack([code_doppler_rows(los_ned), euler_attitude_rows(C_bn, roll, pitch)])
+    return np.vstack([code_doppler_rows(los_ned), euler_attitude_rows(C_bn, roll, pitch, deg=deg)])
 
 
 @implements("KZL 17")
@@ -470,4 +482,14 @@ def dd_observation_rows_count(nu: int, n_baselines: int = 2) -> int:
 
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
-check_public(globals(), {"wavelength": POSITIVE, "sigma_phase": POSITIVE, "n_baselines": COUNT, "nu": COUNT0})
+check_public(
+    globals(),
+    {
+        "wavelength": POSITIVE,
+        "sigma_phase": POSITIVE,
+        "n_baselines": COUNT,
+        "nu": COUNT0,
+        "C_bn": ROTATION,
+        "pitch": Angle(90.0, "a pitch angle"),
+    },
+)

@@ -24,6 +24,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from navcore._validate import (
+    LATITUDE,
+    LONGITUDE,
     POSITIVE,
     Range,
     as_finite_array,
@@ -178,7 +180,7 @@ def line_of_sight(r_user: ArrayLike, r_sat: ArrayLike) -> tuple[NDArray[np.float
 
 
 def elevation_azimuth(
-    r_user: ArrayLike, r_sat: ArrayLike, lat: float, lon: float
+    r_user: ArrayLike, r_sat: ArrayLike, lat: float, lon: float, *, deg: bool = False
 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Elevation and azimuth of satellites seen from ``r_user`` at (lat, lon).
 
@@ -189,16 +191,18 @@ def elevation_azimuth(
     r_sat : (N, 3) array
         Satellite ECEF positions, m.
     lat : float
-        User geodetic latitude, rad.
+        User geodetic latitude, rad (deg with ``deg=True``).
     lon : float
-        User longitude, rad.
+        User longitude, rad (deg with ``deg=True``).
+    deg : bool, default False
+        Angles in degrees, in and out.
 
     Returns
     -------
     el : (N,) ndarray
-        Elevation, rad.
+        Elevation, rad (deg with ``deg=True``).
     az : (N,) ndarray
-        Azimuth from north, rad in [0, 2 pi).
+        Azimuth from north, in [0, 2 pi) rad (deg with ``deg=True``).
 
     Raises
     ------
@@ -215,14 +219,21 @@ def elevation_azimuth(
     ([90.0, 45.0], [0.0, 90.0])
     """
     u, _ = line_of_sight(r_user, r_sat)
-    ned = u @ dcm_ecef_to_ned(lat, lon).T
+    ned = u @ dcm_ecef_to_ned(lat, lon, deg=deg).T
     el = np.arcsin(np.clip(-ned[..., 2], -1.0, 1.0))
     az = np.arctan2(ned[..., 1], ned[..., 0]) % (2 * np.pi)
-    return el, az
+    return (np.degrees(el), np.degrees(az)) if deg else (el, az)
 
 
 def visible(
-    constellation: Constellation, t: float, lat: float, lon: float, h: float, mask_deg: float = 5.0
+    constellation: Constellation,
+    t: float,
+    lat: float,
+    lon: float,
+    h: float,
+    mask_deg: float = 5.0,
+    *,
+    deg: bool = False,
 ) -> NDArray[np.bool_]:
     """Mask of satellites above ``mask_deg`` elevation at time ``t`` from (lat, lon, h).
 
@@ -233,13 +244,15 @@ def visible(
     t : float
         Time, s.
     lat : float
-        Latitude, rad.
+        Latitude, rad (deg with ``deg=True``).
     lon : float
-        Longitude, rad.
+        Longitude, rad (deg with ``deg=True``).
     h : float
         Height, m.
     mask_deg : float, default 5.0
-        Elevation mask, deg (in [-90, 90]).
+        Elevation mask, deg (in [-90, 90]; degrees whatever ``deg``, as its name says).
+    deg : bool, default False
+        ``lat`` and ``lon`` in degrees.
 
     Returns
     -------
@@ -257,9 +270,9 @@ def visible(
     True
     """
     require_in_range("mask_deg", mask_deg, -90.0, 90.0)
-    r_user = geodetic_to_ecef(lat, lon, h)
-    el, _ = elevation_azimuth(r_user, constellation.positions_ecef(t), lat, lon)
-    return el >= mask_deg * DEG
+    r_user = geodetic_to_ecef(lat, lon, h, deg=deg)
+    el, _ = elevation_azimuth(r_user, constellation.positions_ecef(t), lat, lon, deg=deg)
+    return el >= (mask_deg if deg else mask_deg * DEG)
 
 
 # Every public function checks its arguments against their annotations (finite numbers,
@@ -271,6 +284,7 @@ check_public(
         "per_plane": Range(1, 1000),
         "radius": POSITIVE,
         "mask_deg": Range(-90.0, 90.0),
-        "lat": Range(-1.5707963267948966, 1.5707963267948966),
+        "lat": LATITUDE,
+        "lon": LONGITUDE,
     },
 )

@@ -8,7 +8,7 @@ block                     size  meaning
 ``position``              3     NED position error (m)
 ``velocity``              3     velocity error in the computed frame (m/s)
 ``misalignment``          3     psi angle: computed-frame attitude error (rad)
-``gyro drift``            3     gyro bias, random constant (rad/s)
+``gyro bias``             3     gyro bias (the papers' gyro drift), random constant (rad/s)
 ``gyro scale factor``     3     (-)
 ``gyro misalignment``     3     small-angle input-axis misalignment of the gyro triad (rad)
 ``accel bias``            3     (m/s^2)
@@ -67,8 +67,11 @@ from numpy.typing import ArrayLike, NDArray
 
 from navcore._validate import (
     COUNT0,
+    COVARIANCE,
+    LATITUDE,
     NONNEGATIVE,
     POSITIVE,
+    ROTATION,
     check_public,
     require_nonnegative,
     require_positive,
@@ -256,7 +259,7 @@ _UNITS = {
     "position": "m",
     "velocity": "m/s",
     "misalignment": "rad",
-    "gyro drift": "rad/s",
+    "gyro bias": "rad/s",
     "gyro scale factor": "-",
     "gyro misalignment": "rad",
     "accel bias": "m/s^2",
@@ -343,13 +346,15 @@ def skew_stack(v: ArrayLike) -> Array:
     return np.stack([np.stack([z, -w, y], -1), np.stack([w, z, -x], -1), np.stack([-y, x, z], -1)], -2)
 
 
-def earth_rate_ned(lat: ArrayLike) -> Array:
+def earth_rate_ned(lat: ArrayLike, *, deg: bool = False) -> Array:
     """Earth rate in NED at latitude ``lat``: ``Omega [cos L, 0, -sin L]``.
 
     Parameters
     ----------
     lat : float or (N,) array
-        Geodetic latitude, rad.
+        Geodetic latitude, rad (deg with ``deg=True``), in [-90, 90] deg.
+    deg : bool, default False
+        The latitude is in degrees.
 
     Returns
     -------
@@ -368,13 +373,15 @@ def earth_rate_ned(lat: ArrayLike) -> Array:
     >>> [f"{x:.4e}" for x in w]
     ['3.6461e-05', '0.0000e+00', '-6.3152e-05']
     """
+    if deg:
+        lat = np.radians(lat)
     if np.ndim(lat) == 0:
         return OMEGA_EARTH * np.array([np.cos(lat), 0.0, -np.sin(lat)])
     lat = np.asarray(lat, dtype=float)
     return OMEGA_EARTH * np.stack([np.cos(lat), np.zeros_like(lat), -np.sin(lat)], -1)
 
 
-def transport_rate_ned(v_ned: ArrayLike, lat: ArrayLike, h: ArrayLike = 0.0) -> Array:
+def transport_rate_ned(v_ned: ArrayLike, lat: ArrayLike, h: ArrayLike = 0.0, *, deg: bool = False) -> Array:
     """Transport rate ``[v_E, -v_N, -v_E tan L] / (R + h)``, spherical Earth.
 
     Parameters
@@ -382,9 +389,11 @@ def transport_rate_ned(v_ned: ArrayLike, lat: ArrayLike, h: ArrayLike = 0.0) -> 
     v_ned : (..., 3) array
         Ground velocity in NED, m/s.
     lat : float or array
-        Latitude, rad.
+        Latitude, rad (deg with ``deg=True``), in [-90, 90] deg.
     h : float or array, default 0.0
         Height, m.
+    deg : bool, default False
+        The latitude is in degrees.
 
     Returns
     -------
@@ -402,7 +411,7 @@ def transport_rate_ned(v_ned: ArrayLike, lat: ArrayLike, h: ArrayLike = 0.0) -> 
     '1.5679e-05'
     """
     v = np.asarray(v_ned, dtype=float)
-    lat = np.asarray(lat, dtype=float)
+    lat = np.radians(np.asarray(lat, dtype=float)) if deg else np.asarray(lat, dtype=float)
     r = SCHULER_RADIUS_M + np.asarray(h, dtype=float)
     return np.stack([v[..., 1], -v[..., 0], -v[..., 1] * np.tan(lat)], -1) / r[..., None]
 
@@ -420,6 +429,7 @@ def error_dynamics(
     sources: ErrorSources | None = None,
     g: float = G0,
     vertical_channel: bool = True,
+    deg: bool = False,
 ) -> Array:
     """Continuous error-dynamics matrix ``F`` for one flight condition.
 
@@ -431,21 +441,25 @@ def error_dynamics(
     f_ned : (3,) array
         Specific force in NED (m/s^2); ``(0, 0, -g)`` at rest.
     C_bn : (3, 3) array
-        Body-to-NED direction cosine matrix.
+        Body-to-NED direction cosine matrix (a rotation matrix).
     omega_ib_b : (3,) array
         Body angular rate with respect to inertial space, body axes (rad/s).
     v_ned : (3,) array
         Ground velocity (m/s) for the transport rate, Coriolis and Gauss-Markov rates.
     lat, h : float
-        Latitude (rad) and height (m).
+        Latitude, rad (deg with ``deg=True``), in [-90, 90] deg; height, m.
     sources : ErrorSources, optional
         Supplies the Gauss-Markov distance constants (ignored if absent).
     g : float
-        Gravity magnitude (m/s^2).
+        Gravity magnitude (m/s^2); the default is the constant standard gravity G0 (what the
+        papers assume), :func:`navcore.gravity.normal_gravity` gives the WGS-84 value at
+        ``lat``, ``h``.
     vertical_channel : bool
         ``False`` freezes the vertical position and velocity errors (rows and columns
         zeroed): the horizontal-only model of an unaided INS whose vertical channel is
         slaved to an external height reference that carries no horizontal information.
+    deg : bool, default False
+        The latitude is in degrees.
 
     Returns
     -------
@@ -455,8 +469,9 @@ def error_dynamics(
     Raises
     ------
     ValueError
-        If ``layout`` lacks the position, velocity or misalignment block, or an input is not
-        finite.
+        If ``layout`` lacks the position, velocity or misalignment block, ``C_bn`` is not a
+        rotation matrix, the latitude is out of range for its unit (45 given as radians), or
+        an input is not finite.
 
     References
     ----------
@@ -483,6 +498,8 @@ def error_dynamics(
     C = np.asarray(C_bn, dtype=float)
     w_ib = np.asarray(omega_ib_b, dtype=float)
     v = np.asarray(v_ned, dtype=float)
+    if deg:
+        lat = float(np.radians(lat))
     f_b = C.T @ f
     w_ie = earth_rate_ned(lat)
     w_en = transport_rate_ned(v, lat, h)
@@ -499,7 +516,7 @@ def error_dynamics(
         "accel bias": (vv, C),
         "accel scale factor": (vv, C @ np.diag(f_b)),
         "accel misalignment": (vv, C @ skew_stack(f_b)),
-        "gyro drift": (a, -C),
+        "gyro bias": (a, -C),
         "gyro scale factor": (a, -C @ np.diag(w_ib)),
         "gyro misalignment": (a, -C @ skew_stack(w_ib)),
     }
@@ -599,16 +616,21 @@ def initial_covariance(
     sources : ErrorSources
         Supplies the 1-sigma of every sensor and aiding state (SI, see :class:`ErrorSources`).
     position_sigma : (3,) tuple of float, default zeros
-        Initial NED position 1-sigma, m.
+        Initial NED position 1-sigma, m (``>= 0``).
     velocity_sigma : (3,) tuple of float, default zeros
-        Initial NED velocity 1-sigma, m/s.
+        Initial NED velocity 1-sigma, m/s (``>= 0``).
     attitude_sigma : (3,) tuple of float, default zeros
-        Initial attitude 1-sigma (north, east, down), rad.
+        Initial attitude 1-sigma (north, east, down), rad (``>= 0``).
 
     Returns
     -------
     (n, n) ndarray
         Diagonal covariance (state units squared).
+
+    Raises
+    ------
+    ValueError
+        If a 1-sigma is negative or not finite.
 
     Examples
     --------
@@ -626,7 +648,7 @@ def initial_covariance(
         "position": position_sigma,
         "velocity": velocity_sigma,
         "misalignment": attitude_sigma,
-        "gyro drift": imu.gyro_bias,
+        "gyro bias": imu.gyro_bias,
         "gyro scale factor": imu.gyro_scale_factor,
         "gyro misalignment": imu.gyro_misalignment,
         "accel bias": imu.accel_bias,
@@ -688,6 +710,7 @@ def gyrocompass_alignment(
     lat: float,
     C_bn: ArrayLike | None = None,
     g: float = G0,
+    deg: bool = False,
 ) -> Array:
     r"""Replace the attitude errors by the steady state of a stationary gyrocompass alignment.
 
@@ -703,7 +726,7 @@ def gyrocompass_alignment(
 
     (Earth-rate :math:`\Omega`, latitude :math:`L`). The returned covariance has
     :math:`\psi = T x_s` with the sensor covariance of ``P0`` and the correlations that make
-    the tilt cancel the accelerometer bias and the heading cancel the east gyro drift.
+    the tilt cancel the accelerometer bias and the heading cancel the east gyro bias.
 
     Parameters
     ----------
@@ -712,11 +735,14 @@ def gyrocompass_alignment(
     layout : StateLayout
         Error-state layout (needs ``"misalignment"``).
     lat : float
-        Latitude, rad (not at a pole).
+        Latitude, rad (deg with ``deg=True``), in [-90, 90] deg, not at a pole.
     C_bn : (3, 3) array, optional
-        Body-to-NED attitude (default identity).
+        Body-to-NED attitude, a rotation matrix (default identity).
     g : float, default G0
-        Gravity magnitude, m/s^2.
+        Gravity magnitude, m/s^2 (G0 is the papers' constant; see
+        :func:`navcore.gravity.normal_gravity`).
+    deg : bool, default False
+        The latitude is in degrees.
 
     Returns
     -------
@@ -733,12 +759,14 @@ def gyrocompass_alignment(
     >>> import numpy as np
     >>> from navcore.inertial.imu import ImuSpec
     >>> from navcore.units import DEG_PER_H
-    >>> lay = ins_error_layout("position", "velocity", "misalignment", "gyro drift")
+    >>> lay = ins_error_layout("position", "velocity", "misalignment", "gyro bias")
     >>> src = ErrorSources(imu=ImuSpec("example", gyro_bias=0.01 * DEG_PER_H))
     >>> P = gyrocompass_alignment(initial_covariance(lay, src), lay, lat=np.deg2rad(45.0))
     >>> round(float(np.sqrt(P[8, 8])) * 1e3, 3)  # heading error, mrad
     0.94
     """
+    if deg:
+        lat = float(np.radians(lat))
     ai, idx, ef, ew = _sensor_error_rates(layout, lat=lat, C_bn=C_bn, g=g)
     T = np.zeros((3, idx.size))
     T[0] = ef[1] / g
@@ -759,6 +787,7 @@ def levelling_alignment(
     C_bn: ArrayLike | None = None,
     g: float = G0,
     tilt_noise_sigma: float = 0.0,
+    deg: bool = False,
 ) -> Array:
     r"""Attitude errors after levelling at rest and a heading from an external source.
 
@@ -779,13 +808,15 @@ def levelling_alignment(
     heading_sigma : float
         1-sigma of the external heading, rad (``>= 0``).
     lat : float
-        Latitude, rad.
+        Latitude, rad (deg with ``deg=True``), in [-90, 90] deg.
     C_bn : (3, 3) array, optional
-        Body-to-NED attitude (default identity).
+        Body-to-NED attitude, a rotation matrix (default identity).
     g : float, default G0
         Gravity magnitude, m/s^2.
     tilt_noise_sigma : float, default 0.0
         Independent tilt 1-sigma per horizontal axis, rad (``>= 0``).
+    deg : bool, default False
+        The latitude is in degrees.
 
     Returns
     -------
@@ -813,6 +844,8 @@ def levelling_alignment(
     """
     require_nonnegative("heading_sigma", heading_sigma)
     require_nonnegative("tilt_noise_sigma", tilt_noise_sigma)
+    if deg:
+        lat = float(np.radians(lat))
     ai, idx, ef, _ = _sensor_error_rates(layout, lat=lat, C_bn=C_bn, g=g)
     T = np.zeros((3, idx.size))
     T[0] = ef[1] / g
@@ -842,5 +875,11 @@ check_public(
         "pseudorange_bias_sigma": NONNEGATIVE,
         "range_rate_bias_sigma": NONNEGATIVE,
         "tilt_noise_sigma": NONNEGATIVE,
+        "position_sigma": NONNEGATIVE,
+        "velocity_sigma": NONNEGATIVE,
+        "attitude_sigma": NONNEGATIVE,
+        "lat": LATITUDE,
+        "C_bn": ROTATION,
+        "P0": COVARIANCE,
     },
 )

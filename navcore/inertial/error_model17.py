@@ -49,6 +49,7 @@ from numpy.typing import ArrayLike, NDArray
 from navcore._validate import (
     NONNEGATIVE,
     POSITIVE,
+    ROTATION_STACK,
     as_finite_array,
     check_public,
     require_nonnegative,
@@ -392,5 +393,6 @@ check_public(
         "clock_bias_walk": NONNEGATIVE,
         "clock_drift_walk": NONNEGATIVE,
         "rtol": POSITIVE,
+        "C_bn": ROTATION_STACK,
     },
 )

@@ -3,7 +3,10 @@
 An :class:`ImuSpec` holds the 1-sigma values of the error sources a covariance analysis or a
 simulation needs. Values are stored in SI (rad/s, m/s^2, dimensionless scale factor, rad,
 root PSDs in rad/sqrt(s) and m/s/sqrt(s)); build specs from the papers' units with the
-factors of :mod:`navcore.units`, e.g. ``gyro_bias=0.01 * DEG_PER_H``.
+factors of :mod:`navcore.units`, e.g. ``gyro_bias=0.01 * DEG_PER_H``. A value beyond what
+any inertial sensor has (:data:`IMU_SPEC_LIMITS`: a gyro bias above 0.1 rad/s, about
+20 000 deg/h) is a unit mistake and raises, naming the field and the unit it was probably
+given in.
 """
 
 from __future__ import annotations
@@ -23,6 +26,7 @@ from navcore.units import (
 )
 
 __all__ = [
+    "IMU_SPEC_LIMITS",
     "ImuSpec",
     "angle_random_walk_deg_per_sqrt_h",
     "gyro_bias_calibrated_at_rest",
@@ -30,6 +34,27 @@ __all__ = [
     "noise_only",
     "velocity_random_walk_m_per_s_per_sqrt_h",
 ]
+
+
+#: Largest plausible 1-sigma of each error source (SI), beyond the worst consumer MEMS parts,
+#: with the unit mistake a larger value usually is. A specification beyond it raises.
+IMU_SPEC_LIMITS: dict[str, tuple[float, str]] = {
+    "gyro_bias": (0.1, "rad/s (about 20 600 deg/h; a value in deg/h? multiply by navcore.units.DEG_PER_H)"),
+    "gyro_scale_factor": (0.5, "(50 %; a value in ppm? multiply by navcore.units.PPM)"),
+    "gyro_misalignment": (0.1, "rad (5.7 deg; a value in arcsec? multiply by navcore.units.ARCSEC)"),
+    "gyro_random_walk": (
+        0.01,
+        "rad/sqrt(s) (34 deg/sqrt(h); a value in deg/sqrt(h)? multiply by navcore.units.DEG_PER_SQRT_H)",
+    ),
+    "accel_bias": (1.0, "m/s^2 (about 100 mg; a value in micro-g? multiply by navcore.units.MICRO_G)"),
+    "accel_scale_factor": (0.5, "(50 %; a value in ppm? multiply by navcore.units.PPM)"),
+    "accel_misalignment": (0.1, "rad (5.7 deg; a value in arcsec? multiply by navcore.units.ARCSEC)"),
+    "accel_random_walk": (
+        0.1,
+        "m/s/sqrt(s) (about 10 mg/sqrt(Hz); a value in micro-g/sqrt(Hz)? multiply by "
+        "navcore.units.MICRO_G_PER_SQRT_HZ)",
+    ),
+}
 
 
 @dataclass(frozen=True)
@@ -78,7 +103,11 @@ class ImuSpec:
         for f in fields(self):
             if f.name in ("name", "source", "extra"):
                 continue
-            require_nonnegative(f"ImuSpec.{f.name}", getattr(self, f.name))
+            value = getattr(self, f.name)
+            require_nonnegative(f"ImuSpec.{f.name}", value)
+            limit, unit = IMU_SPEC_LIMITS[f.name]
+            if value > limit:
+                raise ValueError(f"ImuSpec.{f.name} must be <= {limit:g} {unit}, got {value!r}")
 
     def scaled(self, factor: float, name: str | None = None) -> ImuSpec:
         """A spec with every error multiplied by ``factor`` (``factor >= 0``)."""

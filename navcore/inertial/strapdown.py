@@ -49,7 +49,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import POSITIVE, as_finite_array, check_public, require_positive, unchecked
+from navcore._validate import LATITUDE, POSITIVE, as_finite_array, check_public, require_positive, unchecked
 from navcore.frames import quat_from_rotvec, radii_of_curvature
 from navcore.trace import implements
 from navcore.units import G0, OMEGA_EARTH
@@ -79,9 +79,11 @@ class MechanizationTerms:
     coriolis : bool
         Include :math:`-(2\\omega_{ie}^n + \\omega_{en}^n)\\times v^n` in the velocity update.
     gravity : float
-        Local gravity magnitude (m/s^2), along +down.
+        Local gravity magnitude (m/s^2), along +down (default the constant G0 the papers
+        assume; :func:`navcore.gravity.normal_gravity` gives the WGS-84 value).
     lat0, h0 : float
-        Latitude (rad) and height (m) of the NED origin (used only by the switched terms).
+        Latitude (rad, in [-pi/2, pi/2]) and height (m) of the NED origin (used only by the
+        switched terms).
     """
 
     earth_rate: bool = False
@@ -90,6 +92,11 @@ class MechanizationTerms:
     gravity: float = G0
     lat0: float = 0.0
     h0: float = 0.0
+
+    def __post_init__(self) -> None:
+        # an input record, checked where it is built (45.0 is a latitude in degrees)
+        LATITUDE.check("MechanizationTerms.lat0", self.lat0)
+        require_positive("MechanizationTerms.gravity", self.gravity)
 
 
 @dataclass(frozen=True)
@@ -181,13 +188,15 @@ def dcm_from_quat_batch(q: Array) -> Array:
     )
 
 
-def earth_rate_ned(lat: ArrayLike) -> Array:
+def earth_rate_ned(lat: ArrayLike, *, deg: bool = False) -> Array:
     r"""Earth rotation rate resolved in NED, :math:`\Omega[\cos L, 0, -\sin L]`.
 
     Parameters
     ----------
     lat : float or array
-        Latitude, rad.
+        Latitude, rad (deg with ``deg=True``), in [-90, 90] deg.
+    deg : bool, default False
+        The latitude is in degrees.
 
     Returns
     -------
@@ -204,11 +213,11 @@ def earth_rate_ned(lat: ArrayLike) -> Array:
     >>> [f"{x:.4e}" for x in earth_rate_ned(0.5)]
     ['6.3994e-05', '0.0000e+00', '-3.4960e-05']
     """
-    lat = np.asarray(lat, dtype=float)
+    lat = np.radians(np.asarray(lat, dtype=float)) if deg else np.asarray(lat, dtype=float)
     return OMEGA_EARTH * np.stack([np.cos(lat), np.zeros_like(lat), -np.sin(lat)], axis=-1)
 
 
-def transport_rate_ned(vel: ArrayLike, lat: ArrayLike, h: ArrayLike) -> Array:
+def transport_rate_ned(vel: ArrayLike, lat: ArrayLike, h: ArrayLike, *, deg: bool = False) -> Array:
     r"""Transport rate :math:`\omega_{en}^n` of NED velocity ``vel`` (Groves Eq. 5.44).
 
     Parameters
@@ -216,9 +225,11 @@ def transport_rate_ned(vel: ArrayLike, lat: ArrayLike, h: ArrayLike) -> Array:
     vel : (..., 3) array
         NED velocity, m/s.
     lat : float or array
-        Geodetic latitude, rad.
+        Geodetic latitude, rad (deg with ``deg=True``), in [-90, 90] deg.
     h : float or array
         Height, m.
+    deg : bool, default False
+        The latitude is in degrees.
 
     Returns
     -------
@@ -237,7 +248,7 @@ def transport_rate_ned(vel: ArrayLike, lat: ArrayLike, h: ArrayLike) -> Array:
     '-1.5784e-05'
     """
     vel = np.asarray(vel, dtype=float)
-    lat = np.asarray(lat, dtype=float)
+    lat = np.radians(np.asarray(lat, dtype=float)) if deg else np.asarray(lat, dtype=float)
     h = np.asarray(h, dtype=float)
     R_N, R_E = radii_of_curvature(lat)
     vn, ve = vel[..., 0], vel[..., 1]
@@ -406,4 +417,4 @@ _quat_from_rotvec = unchecked(quat_from_rotvec)
 
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
-check_public(globals(), {"dt": POSITIVE, "gravity": POSITIVE})
+check_public(globals(), {"dt": POSITIVE, "gravity": POSITIVE, "lat": LATITUDE})

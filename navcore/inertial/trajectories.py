@@ -44,7 +44,16 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from navcore._validate import NONNEGATIVE, POSITIVE, check_public, require_nonnegative, require_positive
+from navcore._validate import (
+    LATITUDE,
+    LONGITUDE,
+    NONNEGATIVE,
+    POSITIVE,
+    Angle,
+    check_public,
+    require_nonnegative,
+    require_positive,
+)
 from navcore.units import G0, WGS84_A
 
 __all__ = ["Segment", "Trajectory", "euler_to_dcm_stack", "fly", "straight_and_level"]
@@ -126,17 +135,19 @@ class Trajectory:
         return self.t.size
 
 
-def euler_to_dcm_stack(roll: Array, pitch: Array, yaw: Array) -> Array:
+def euler_to_dcm_stack(roll: Array, pitch: Array, yaw: Array, *, deg: bool = False) -> Array:
     """``C_bn = Rz(yaw) Ry(pitch) Rx(roll)`` for arrays of angles.
 
     Parameters
     ----------
     roll : (N,) array
-        Roll angles, rad.
+        Roll angles, rad (deg with ``deg=True``).
     pitch : (N,) array
-        Pitch angles, rad.
+        Pitch angles, rad (deg); any value (a trajectory that loops passes +-90 deg).
     yaw : (N,) array
-        Yaw (heading) angles, rad.
+        Yaw (heading) angles, rad (deg).
+    deg : bool, default False
+        The angles are in degrees.
 
     Returns
     -------
@@ -150,6 +161,8 @@ def euler_to_dcm_stack(roll: Array, pitch: Array, yaw: Array) -> Array:
     >>> (np.round(C[0], 6) + 0.0).tolist()
     [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]
     """
+    if deg:
+        roll, pitch, yaw = np.radians(roll), np.radians(pitch), np.radians(yaw)
     cr, sr = np.cos(roll), np.sin(roll)
     cp, sp = np.cos(pitch), np.sin(pitch)
     cy, sy = np.cos(yaw), np.sin(yaw)
@@ -180,6 +193,7 @@ def fly(
     heading0: float = 0.0,
     path_angle0: float = 0.0,
     g: float = G0,
+    deg: bool = False,
 ) -> Trajectory:
     """Integrate a sequence of segments into a sampled trajectory.
 
@@ -190,11 +204,17 @@ def fly(
     dt : float
         Sample interval (s).
     lat0, lon0 : float
-        Start latitude and longitude (rad).
+        Start latitude and longitude, rad (deg with ``deg=True``); the latitude in
+        [-90, 90] deg.
     h0, speed0, heading0, path_angle0 : float
-        Start height (m), speed (m/s), heading and flight-path angle (rad).
+        Start height (m), speed (m/s), heading and flight-path angle (rad, deg with
+        ``deg=True``; the flight-path angle in [-90, 90] deg).
     g : float
-        Gravity magnitude (m/s^2) in the specific force.
+        Gravity magnitude (m/s^2) in the specific force (default the constant G0 the papers
+        assume; :func:`navcore.gravity.normal_gravity` gives the WGS-84 value).
+    deg : bool, default False
+        The start angles (``lat0``, ``lon0``, ``heading0``, ``path_angle0``) are in degrees;
+        the segments' rates stay in rad/s and the trajectory is returned in radians.
 
     Returns
     -------
@@ -206,7 +226,8 @@ def fly(
     Raises
     ------
     ValueError
-        If ``dt`` or ``g`` is not positive, or an argument is not finite.
+        If ``dt`` or ``g`` is not positive, an angle is out of range for its unit (a
+        latitude of 45 given as radians), or an argument is not finite.
 
     Examples
     --------
@@ -216,6 +237,10 @@ def fly(
     """
     require_positive("dt", dt)
     require_nonnegative("speed0", speed0)
+    if deg:
+        lat0, lon0, heading0, path_angle0 = (
+            float(np.radians(a)) for a in (lat0, lon0, heading0, path_angle0)
+        )
     if not segments:
         raise ValueError("segments must not be empty")
     n_steps = [round(s.duration / dt) for s in segments]
@@ -268,6 +293,7 @@ def straight_and_level(
     lat0: float = 0.0,
     lon0: float = 0.0,
     h0: float = 0.0,
+    deg: bool = False,
 ) -> Trajectory:
     """Constant speed, heading and height (``speed = 0`` gives a stationary vehicle).
 
@@ -278,15 +304,17 @@ def straight_and_level(
     speed : float, default 0.0
         Ground speed, m/s.
     heading : float, default 0.0
-        Heading, rad from north.
+        Heading from north, rad (deg with ``deg=True``).
     dt : float, default 1.0
         Sample interval, s (``> 0``).
     lat0 : float, default 0.0
-        Start latitude, rad.
+        Start latitude, rad (deg with ``deg=True``), in [-90, 90] deg.
     lon0 : float, default 0.0
-        Start longitude, rad.
+        Start longitude, rad (deg with ``deg=True``).
     h0 : float, default 0.0
         Height, m.
+    deg : bool, default False
+        The angles are in degrees (the trajectory is returned in radians).
 
     Returns
     -------
@@ -296,7 +324,8 @@ def straight_and_level(
     Raises
     ------
     ValueError
-        If ``dt`` is not positive or ``duration`` is negative.
+        If ``dt`` is not positive, ``duration`` is negative, or an angle is out of range for
+        its unit (``lat0=48.0`` without ``deg=True``).
 
     Examples
     --------
@@ -304,9 +333,21 @@ def straight_and_level(
     >>> len(tr), round(float(tr.pos_ned[-1, 0]), 6)
     (11, 500.0)
     """
-    return fly([Segment(duration)], dt=dt, lat0=lat0, lon0=lon0, h0=h0, speed0=speed, heading0=heading)
+    return fly(
+        [Segment(duration)], dt=dt, lat0=lat0, lon0=lon0, h0=h0, speed0=speed, heading0=heading, deg=deg
+    )
 
 
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
-check_public(globals(), {"dt": POSITIVE, "duration": NONNEGATIVE, "g": POSITIVE})
+check_public(
+    globals(),
+    {
+        "dt": POSITIVE,
+        "duration": NONNEGATIVE,
+        "g": POSITIVE,
+        "lat0": LATITUDE,
+        "lon0": LONGITUDE,
+        "path_angle0": Angle(90.0, "a flight-path angle"),
+    },
+)

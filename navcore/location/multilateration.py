@@ -6,6 +6,9 @@ linearisation) in the aircraft position p and the unknown emission time tau,
     T = k + tau * 1 + F (p - p*) + eps,    F = U / c,
 
 where the rows of U are unit vectors from the satellites to the aircraft (ATC-10 Eq. 4.2.3).
+navcore's lines of sight point the other way, from the aircraft (the receiver) to each
+satellite (:func:`line_of_sight_matrix`, as everywhere in navcore), so F = -U/c; every
+quantity below is quadratic in F and does not see the sign.
 All the quality measures of the constellation are functions of the projector
 ``P = F (F'F)^-1 F'`` onto the column space of F:
 
@@ -14,7 +17,11 @@ All the quality measures of the constellation are functions of the projector
 * ``tr{(F'F)^-1}`` (the position-only dilution);
 * the clock-direction term ``S = 1'F(F'F)^-2 F'1``; for K = 3 it equals the rotation
   invariant ``1'(FF')^-1 1``;
-* the geometric dilution ``k^2 = tr{(F'F)^-1} + S / beta`` (Eqs. 4.1.1-4.1.2, 4.6.2).
+* the dilution ``k^2 = tr{(F'F)^-1} + S / beta`` (Eqs. 4.1.1-4.1.2, 4.6.2), which ATC-10
+  calls the geometric dilution: it is the position dilution of precision (PDOP) of the
+  time-of-arrival solution, with the emission time in the role of a receiver clock
+  (:func:`position_dilution`; :func:`navcore.gnss.dop.dop_from_lines_of_sight` gives the
+  same PDOP with HDOP, VDOP, TDOP and GDOP).
 
 The geometry depends only on the ratio of the orbit radius to the Earth radius for a
 spherical Earth; functions take radii in metres (any common unit works).
@@ -29,8 +36,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from navcore._validate import (
+    LATITUDE,
+    LONGITUDE,
     POSITIVE,
-    Range,
+    Angle,
     as_finite_array,
     check_public,
     require_in_range,
@@ -47,14 +56,14 @@ __all__ = [
     "clock_direction_term",
     "constellation_parameters",
     "frame_dependent_clock_term",
-    "geometric_dilution",
-    "geometric_dilution_covariance",
     "line_of_sight_matrix",
     "most_widely_spaced_triplet",
+    "position_dilution",
+    "position_dilution_covariance",
     "position_on_sphere",
     "position_trace",
     "synchronous_orbit_radius",
-    "zenith_angles_deg",
+    "zenith_angles",
 ]
 
 #: IUGG mean Earth radius (spherical Earth model), m.
@@ -95,7 +104,9 @@ def synchronous_orbit_radius(gm: float = GM_EARTH_M3_S2, period_s: float = SIDER
     return float(np.cbrt(gm * period_s**2 / (4.0 * math.pi**2)))
 
 
-def position_on_sphere(lat_deg: np.ndarray | float, lon_deg: np.ndarray | float, radius: float) -> np.ndarray:
+def position_on_sphere(
+    lat: np.ndarray | float, lon: np.ndarray | float, radius: float, *, deg: bool = False
+) -> np.ndarray:
     """Earth-centred Cartesian position at geocentric latitude/longitude on a sphere.
 
     Longitudes are east-positive. A synchronous satellite whose sub-satellite point is
@@ -103,12 +114,14 @@ def position_on_sphere(lat_deg: np.ndarray | float, lon_deg: np.ndarray | float,
 
     Parameters
     ----------
-    lat_deg : float or ndarray
-        Geocentric latitude, deg.
-    lon_deg : float or ndarray
-        Longitude, deg east.
+    lat : float or ndarray
+        Geocentric latitude, rad (deg with ``deg=True``).
+    lon : float or ndarray
+        Longitude east, rad (deg with ``deg=True``).
     radius : float
         Sphere radius, m (``> 0``).
+    deg : bool, default False
+        The angles are in degrees.
 
     Returns
     -------
@@ -122,33 +135,36 @@ def position_on_sphere(lat_deg: np.ndarray | float, lon_deg: np.ndarray | float,
 
     Examples
     --------
-    >>> (position_on_sphere(0.0, 90.0, 2.0).round(12) + 0.0).tolist()
+    >>> (position_on_sphere(0.0, 90.0, 2.0, deg=True).round(12) + 0.0).tolist()
     [0.0, 2.0, 0.0]
     """
     require_positive("radius", radius)
     # the public-API check has made sure both angles are finite numbers
-    lat, lon = np.radians(lat_deg), np.radians(lon_deg)
+    if deg:
+        lat, lon = np.radians(lat), np.radians(lon)
     return radius * np.stack([np.cos(lat) * np.cos(lon), np.cos(lat) * np.sin(lon), np.sin(lat)], axis=-1)
 
 
 @implements("ATC10 4.2.2")
-def line_of_sight_matrix(satellites: np.ndarray, aircraft: np.ndarray) -> np.ndarray:
-    """Unit vectors from each satellite to the aircraft, one per row (K x 3).
+def line_of_sight_matrix(aircraft: np.ndarray, satellites: np.ndarray) -> np.ndarray:
+    """Unit lines of sight from the aircraft to each satellite, one per row (K x 3).
 
-    With c = 1 this is the matrix F of ATC-10 Eq. 4.2.2c (its sign is irrelevant to every
-    invariant: they are quadratic in F).
+    navcore's convention (receiver first, vectors from the receiver to the satellites, as
+    :func:`navcore.gnss.constellation.line_of_sight`). With c = 1, minus this matrix is the
+    matrix F of ATC-10 Eq. 4.2.2c (rows from the satellites to the aircraft); the sign is
+    irrelevant to every invariant of this module, which are quadratic in F.
 
     Parameters
     ----------
-    satellites : (K, 3) array
-        Satellite positions, m (Earth-centred).
     aircraft : (3,) array
-        Aircraft position, m (same frame).
+        Aircraft position, m (Earth-centred).
+    satellites : (K, 3) array
+        Satellite positions, m (same frame).
 
     Returns
     -------
     (K, 3) ndarray
-        Unit vectors (dimensionless).
+        Unit vectors aircraft -> satellite (dimensionless).
 
     Raises
     ------
@@ -162,32 +178,34 @@ def line_of_sight_matrix(satellites: np.ndarray, aircraft: np.ndarray) -> np.nda
 
     Examples
     --------
-    >>> line_of_sight_matrix([[0.0, 0.0, 10.0], [3.0, 4.0, 0.0]], [0.0, 0.0, 0.0]).tolist()
-    [[0.0, 0.0, -1.0], [-0.6, -0.8, 0.0]]
+    >>> line_of_sight_matrix([0.0, 0.0, 0.0], [[0.0, 0.0, 10.0], [3.0, 4.0, 0.0]]).tolist()
+    [[0.0, 0.0, 1.0], [0.6, 0.8, 0.0]]
     """
     sats = np.atleast_2d(as_finite_array("satellites", satellites))
     ac = np.reshape(aircraft, 3)  # finite: checked at the public boundary
-    d = ac[None, :] - sats
+    d = sats - ac[None, :]
     n = np.linalg.norm(d, axis=1)
     if np.any(n == 0):
         raise ValueError("satellites must not coincide with the aircraft")
     return d / n[:, None]
 
 
-def zenith_angles_deg(satellites: np.ndarray, aircraft: np.ndarray) -> np.ndarray:
+def zenith_angles(aircraft: np.ndarray, satellites: np.ndarray, *, deg: bool = False) -> np.ndarray:
     """Zenith angle of each satellite seen from the aircraft (spherical local vertical).
 
     Parameters
     ----------
-    satellites : (K, 3) array
-        Satellite positions, m (Earth-centred).
     aircraft : (3,) array
-        Aircraft position, m (same frame).
+        Aircraft position, m (Earth-centred).
+    satellites : (K, 3) array
+        Satellite positions, m (same frame).
+    deg : bool, default False
+        Return degrees.
 
     Returns
     -------
     (K,) ndarray
-        Zenith angles, deg.
+        Zenith angles, rad (deg with ``deg=True``).
 
     Raises
     ------
@@ -197,19 +215,27 @@ def zenith_angles_deg(satellites: np.ndarray, aircraft: np.ndarray) -> np.ndarra
     Examples
     --------
     >>> sats = [[0.0, 0.0, 2.0e7], [2.0e7, 0.0, 6.4e6]]
-    >>> zenith_angles_deg(sats, [0.0, 0.0, 6.4e6]).round(3).tolist()
+    >>> zenith_angles([0.0, 0.0, 6.4e6], sats, deg=True).round(3).tolist()
     [0.0, 90.0]
     """
     ac = np.reshape(aircraft, 3)  # finite: checked at the public boundary
     up = ac / np.linalg.norm(ac)
-    toward_sat = -line_of_sight_matrix(satellites, ac)
-    return np.degrees(np.arccos(np.clip(toward_sat @ up, -1.0, 1.0)))
+    toward_sat = line_of_sight_matrix(ac, satellites)
+    angle = np.arccos(np.clip(toward_sat @ up, -1.0, 1.0))
+    return np.degrees(angle) if deg else angle
 
 
 def _check_f(F: np.ndarray) -> np.ndarray:
     F = np.atleast_2d(as_finite_array("F", F))
     if F.ndim != 2 or F.shape[1] != 3 or F.shape[0] < 3:
         raise ValueError(f"F must be K x 3 with K >= 3, got shape {F.shape}")
+    norm = np.linalg.norm(F, axis=1)
+    if np.max(np.abs(norm - 1.0)) > 1e-6:
+        raise ValueError(
+            "F must have unit line-of-sight rows (norm 1 to within 1e-6), got a row norm of "
+            f"{float(norm[np.argmax(np.abs(norm - 1.0))]):.6g}; satellite positions are not lines "
+            "of sight (line_of_sight_matrix(aircraft, satellites) makes them)"
+        )
     if np.linalg.matrix_rank(F) < 3:
         raise ValueError("F must have rank 3 (satellites not coplanar with the aircraft)")
     return F
@@ -371,7 +397,7 @@ def frame_dependent_clock_term(F: np.ndarray) -> float:
 
 
 @implements("ATC10 4.1.1")
-def geometric_dilution_covariance(F: np.ndarray, H: np.ndarray | None = None) -> np.ndarray:
+def position_dilution_covariance(F: np.ndarray, H: np.ndarray | None = None) -> np.ndarray:
     """Position error covariance per unit sigma^2, ``[F'H'(HH')^-1 H F]^-1`` (Eq. 4.1.1).
 
     ``H`` is any (K-1) x K matrix of full row rank whose rows sum to zero (it removes the
@@ -388,7 +414,7 @@ def geometric_dilution_covariance(F: np.ndarray, H: np.ndarray | None = None) ->
     -------
     (3, 3) ndarray
         Position error covariance per unit time-of-arrival variance; its trace is ``k^2`` of
-        :func:`geometric_dilution`.
+        :func:`position_dilution` (PDOP squared).
 
     Raises
     ------
@@ -404,8 +430,8 @@ def geometric_dilution_covariance(F: np.ndarray, H: np.ndarray | None = None) ->
     --------
     >>> import numpy as np
     >>> F = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [0.6, 0.8, 0.0]])
-    >>> C = geometric_dilution_covariance(F)
-    >>> round(float(np.trace(C)), 4), round(geometric_dilution(F) ** 2, 4)
+    >>> C = position_dilution_covariance(F)
+    >>> round(float(np.trace(C)), 4), round(position_dilution(F) ** 2, 4)
     (33.5, 33.5)
     """
     F = _check_f(F)
@@ -423,8 +449,12 @@ def geometric_dilution_covariance(F: np.ndarray, H: np.ndarray | None = None) ->
 
 
 @implements("ATC10 4.1.2", "ATC10 4.6.2")
-def geometric_dilution(F: np.ndarray) -> float:
-    """``k = sqrt(tr{(F'F)^-1} + S / beta)`` (Eqs. 4.1.2 and 4.6.2); inf when beta = 0.
+def position_dilution(F: np.ndarray) -> float:
+    """PDOP ``k = sqrt(tr{(F'F)^-1} + S / beta)`` (Eqs. 4.1.2 and 4.6.2); inf when beta = 0.
+
+    ATC-10 calls ``k`` the geometric dilution; it is the position dilution of precision of
+    the time-of-arrival solution, whose unknown emission time acts as a receiver clock: the
+    PDOP of :func:`navcore.gnss.dop.dop_from_lines_of_sight` for the same lines of sight.
 
     Parameters
     ----------
@@ -434,8 +464,8 @@ def geometric_dilution(F: np.ndarray) -> float:
     Returns
     -------
     float
-        Geometric dilution ``k`` (position error per unit time-of-arrival noise; ``inf`` for
-        three satellites).
+        Position dilution ``k`` (PDOP: position error per unit time-of-arrival noise;
+        ``inf`` for three satellites).
 
     Raises
     ------
@@ -451,7 +481,7 @@ def geometric_dilution(F: np.ndarray) -> float:
     --------
     >>> import numpy as np
     >>> F = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [0.6, 0.8, 0.0]])
-    >>> round(geometric_dilution(F), 4), geometric_dilution(F[:3])
+    >>> round(position_dilution(F), 4), position_dilution(F[:3])
     (5.7879, inf)
     """
     b = beta_parameter(F)
@@ -473,7 +503,7 @@ class ConstellationParameters:
     clock_term : float
         ``S = 1'F(F'F)^-2 F'1``.
     dilution : float
-        Geometric dilution ``k`` (Eqs. 4.1.2, 4.6.2).
+        Position dilution ``k`` (PDOP; ATC-10's geometric dilution, Eqs. 4.1.2, 4.6.2).
     """
 
     beta: float
@@ -483,7 +513,7 @@ class ConstellationParameters:
 
 
 def constellation_parameters(F: np.ndarray) -> ConstellationParameters:
-    """Compute beta, tr{(F'F)^-1}, S and the geometric dilution k of ``F``.
+    """Compute beta, tr{(F'F)^-1}, S and the position dilution k (PDOP) of ``F``.
 
     Parameters
     ----------
@@ -518,39 +548,45 @@ def constellation_parameters(F: np.ndarray) -> ConstellationParameters:
         beta=beta_parameter(F),
         trace=position_trace(F),
         clock_term=clock_direction_term(F),
-        dilution=geometric_dilution(F),
+        dilution=position_dilution(F),
     )
 
 
 def most_widely_spaced_triplet(
-    satellites: np.ndarray,
     aircraft: np.ndarray,
-    cone_half_angle_deg: float,
+    satellites: np.ndarray,
+    cone_half_angle: float,
     criterion: str = "trace",
+    *,
+    deg: bool = False,
 ) -> tuple[tuple[int, int, int], float]:
     """Best three satellites inside the cone about the local vertical (0-based indices).
 
     ``criterion``: ``"trace"`` minimises tr{(F3'F3)^-1}; ``"det"`` maximises ``|det F3|``;
     ``"angle"`` maximises the smallest pairwise angle between the lines of sight. Returns the
-    triplet and its score (trace, ``|det|`` or angle in degrees).
+    triplet and its score (trace, ``|det|`` or angle).
 
     Parameters
     ----------
-    satellites : (K, 3) array
-        Satellite positions, m (Earth-centred).
     aircraft : (3,) array
-        Aircraft position, m (same frame).
-    cone_half_angle_deg : float
-        Half-angle of the visibility cone about the local vertical, deg (in [0, 90]).
+        Aircraft position, m (Earth-centred).
+    satellites : (K, 3) array
+        Satellite positions, m (same frame).
+    cone_half_angle : float
+        Half-angle of the visibility cone about the local vertical, rad (deg with
+        ``deg=True``), in (0, 90] deg.
     criterion : {"trace", "det", "angle"}, default "trace"
         What "widely spaced" means (see above).
+    deg : bool, default False
+        The cone angle, and the score of the ``"angle"`` criterion, in degrees.
 
     Returns
     -------
     triplet : tuple of int
         Indices of the three satellites.
     score : float
-        Its score: the trace (dimensionless), ``|det F3|`` or the smallest angle (deg).
+        Its score: the trace (dimensionless), ``|det F3|`` or the smallest angle (rad, deg
+        with ``deg=True``).
 
     Raises
     ------
@@ -566,15 +602,16 @@ def most_widely_spaced_triplet(
     Examples
     --------
     >>> sats = [[0.0, 0.0, 2.0e7], [1.0e7, 0.0, 2.0e7], [0.0, 1.0e7, 2.0e7], [-1.0e7, 0.0, 2.0e7]]
-    >>> tri, score = most_widely_spaced_triplet(sats, [0.0, 0.0, 6.4e6], 60.0)
+    >>> tri, score = most_widely_spaced_triplet([0.0, 0.0, 6.4e6], sats, 60.0, deg=True)
     >>> tri, round(score, 3)
     ((1, 2, 3), 6.47)
     """
-    require_in_range("cone_half_angle_deg", cone_half_angle_deg, 0.0, 90.0)
+    cone_half_angle_deg = cone_half_angle if deg else math.degrees(cone_half_angle)
+    require_in_range("cone_half_angle", cone_half_angle_deg, 0.0, 90.0)
     if criterion not in ("trace", "det", "angle"):
         raise ValueError(f"criterion must be 'trace', 'det' or 'angle', got {criterion!r}")
-    U = line_of_sight_matrix(satellites, aircraft)
-    inside = np.flatnonzero(zenith_angles_deg(satellites, aircraft) <= cone_half_angle_deg + 1e-9)
+    U = line_of_sight_matrix(aircraft, satellites)
+    inside = np.flatnonzero(zenith_angles(aircraft, satellites, deg=True) <= cone_half_angle_deg + 1e-9)
     best: tuple[tuple[int, int, int], float] | None = None
     for tri in itertools.combinations(inside.tolist(), 3):
         F3 = U[list(tri)]
@@ -593,6 +630,8 @@ def most_widely_spaced_triplet(
             best = (tuple(tri), score)  # type: ignore[assignment]
     if best is None:
         raise ValueError("fewer than three satellites lie inside the cone")
+    if criterion == "angle" and not deg:
+        return best[0], math.radians(best[1])
     return best
 
 
@@ -605,6 +644,8 @@ check_public(
         "gm": POSITIVE,
         "period_s": POSITIVE,
         "trace": POSITIVE,
-        "cone_half_angle_deg": Range(0.0, 90.0, low_open=True),
+        "cone_half_angle": Angle(90.0, "a cone half-angle"),
+        "lat": LATITUDE,
+        "lon": LONGITUDE,
     },
 )

@@ -30,7 +30,7 @@ from navcore.location.clock_tracking import (
 from navcore.location.multilateration import (
     beta_parameter,
     clock_direction_term,
-    geometric_dilution_covariance,
+    position_dilution_covariance,
     position_trace,
 )
 from navcore.papers import atc10_tracking as trk
@@ -124,7 +124,7 @@ def equivalent_forms() -> bool:
         t457 = sigma**2 * (position_trace(F) + clock_direction_term(F) / beta)
         if not (np.allclose(p411, p456, rtol=1e-8) and abs(np.trace(p411) - t457) < 1e-8 * t457):
             return False
-        if not np.allclose(geometric_dilution_covariance(F, A), p456 / sigma**2, rtol=1e-8):
+        if not np.allclose(position_dilution_covariance(F, A), p456 / sigma**2, rtol=1e-8):
             return False
     return True
 
@@ -408,7 +408,7 @@ def k_identity() -> bool:
     for ex in ("I", "II"):
         F = _physical_geometry(ex)
         k2 = position_trace(F) + clock_direction_term(F) / beta_parameter(F)
-        if abs(np.trace(geometric_dilution_covariance(F)) - k2) > 1e-9 * k2:
+        if abs(np.trace(position_dilution_covariance(F)) - k2) > 1e-9 * k2:
             return False
     return True
 
@@ -543,7 +543,7 @@ def printed_4535_oracle(example: str, sigma0: float) -> float:
 def norm_sd_ft(example: str, n_samples: int = 400_000, seed: int = 48) -> float:
     """sqrt(Var ||xi_p0||) of the least-squares error (physical geometry), by Monte Carlo."""
     F = _physical_geometry(example)
-    P = TR.sigma_ns**2 * TR.c_ft_per_ns**2 * geometric_dilution_covariance(F)
+    P = TR.sigma_ns**2 * TR.c_ft_per_ns**2 * position_dilution_covariance(F)
     rng = np.random.default_rng(seed)
     x = rng.multivariate_normal(np.zeros(3), P, n_samples)
     return float(np.std(np.linalg.norm(x, axis=1)))
@@ -552,7 +552,7 @@ def norm_sd_ft(example: str, n_samples: int = 400_000, seed: int = 48) -> float:
 def norm_sd_oracle(example: str) -> float:
     """Same from the eigenvalues: E||x|| by 3-D quadrature in spherical coordinates."""
     F = trk.physical_line_of_sight(example)
-    lam = np.linalg.eigvalsh(2500.0 * geometric_dilution_covariance(F))
+    lam = np.linalg.eigvalsh(2500.0 * position_dilution_covariance(F))
 
     def mean_norm() -> float:
         # E||x|| = int over directions of E|r| along u: for a Gaussian, E||x|| = E sqrt(sum lam_i z_i^2)

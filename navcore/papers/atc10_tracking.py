@@ -47,13 +47,13 @@ from navcore.location.multilateration import (
     beta_parameter,
     clock_direction_term,
     frame_dependent_clock_term,
-    geometric_dilution,
     line_of_sight_matrix,
     most_widely_spaced_triplet,
+    position_dilution,
     position_on_sphere,
     position_trace,
     synchronous_orbit_radius,
-    zenith_angles_deg,
+    zenith_angles,
 )
 from navcore.papers.atc10_quotes import quoted
 
@@ -409,8 +409,8 @@ def _positions(
     pts = table_4_1(example)
     lat0, lon0 = aircraft_lat_lon()
     sign = IN.longitude_sign * (-1.0 if west_positive else 1.0)
-    sats = position_on_sphere(pts[:, 0], sign * pts[:, 1], radius_ratio)
-    ac = position_on_sphere(lat0, sign * lon0, aircraft_ratio)
+    sats = position_on_sphere(pts[:, 0], sign * pts[:, 1], radius_ratio, deg=True)
+    ac = position_on_sphere(lat0, sign * lon0, aircraft_ratio, deg=True)
     return sats, ac
 
 
@@ -423,7 +423,8 @@ def example_line_of_sight(
     ``radius_ratio`` is the satellites' distance from the Earth's centre and ``aircraft_ratio``
     the aircraft's, both over the Earth radius.
     """
-    return line_of_sight_matrix(*_positions(example, radius_ratio, west_positive, aircraft_ratio))
+    sats, ac = _positions(example, radius_ratio, west_positive, aircraft_ratio)
+    return -line_of_sight_matrix(ac, sats)  # navcore's lines of sight point aircraft -> satellite
 
 
 def physical_line_of_sight(example: str) -> np.ndarray:
@@ -449,7 +450,7 @@ def table_4_2_from_geometry(
         "s_all": clock_direction_term(U),
         "s_123": clock_direction_term(U[:3]),
         "s_123_printed": frame_dependent_clock_term(U[:3]),
-        "dilution": geometric_dilution(U),
+        "dilution": position_dilution(U),
     }
 
 
@@ -536,7 +537,8 @@ def _physical_oracle_invariants(example: str) -> dict[str, Any]:
 
 
 def max_zenith_angle_deg(example: str, radius_ratio: float, aircraft_ratio: float = 1.0) -> float:
-    return float(zenith_angles_deg(*_positions(example, radius_ratio, aircraft_ratio=aircraft_ratio)).max())
+    sats, ac = _positions(example, radius_ratio, aircraft_ratio=aircraft_ratio)
+    return float(zenith_angles(ac, sats, deg=True).max())
 
 
 def within_cone(example: str, radius_ratio: float, aircraft_ratio: float = 1.0) -> bool:
@@ -549,7 +551,7 @@ def best_triplet(
 ) -> tuple[int, int, int]:
     """Most widely spaced triplet among all satellites of the example (0-based)."""
     sats, ac = _positions(example, radius_ratio, aircraft_ratio=aircraft_ratio)
-    return most_widely_spaced_triplet(sats, ac, cone_half_angle_deg=90.0, criterion=criterion)[0]
+    return most_widely_spaced_triplet(ac, sats, cone_half_angle=90.0, criterion=criterion, deg=True)[0]
 
 
 # --------------------------------------------------------------------------- Table 4.3
@@ -988,8 +990,8 @@ def table_4_1_rounding_allowance(geometry: str, example: str, column: str, step_
     ratio = 9.235 if geometry == "fitted" else synchronous_orbit_radius() / 6_371_000.0
 
     def value(pts: np.ndarray) -> float:
-        sats = position_on_sphere(pts[:, 0], pts[:, 1], ratio)
-        U = line_of_sight_matrix(sats, position_on_sphere(45.0, 120.0, 1.0))
+        sats = position_on_sphere(pts[:, 0], pts[:, 1], ratio, deg=True)
+        U = -line_of_sight_matrix(position_on_sphere(45.0, 120.0, 1.0, deg=True), sats)
         if column == "s_123":
             return float(
                 frame_dependent_clock_term(U[:3]) if geometry == "fitted" else clock_direction_term(U[:3])

@@ -63,7 +63,7 @@ def standalone_layout():
         "position",
         "velocity",
         "misalignment",
-        "gyro drift",
+        "gyro bias",
         "gyro scale factor",
         "accel bias",
         "accel scale factor",

@@ -55,6 +55,7 @@ IN.published("table_2_3", _TABLE_2_3, locator="Table 2.3", quantity="tightly cou
 def _printed_rows_match_layout(rows: tuple[tuple[str, int], ...], layout_rows: list[tuple[str, int]]) -> bool:
     """The layout has the printed rows, in order, with the printed sizes."""
     norm = {
+        "gyro drift": "gyro bias",  # the paper's name for the gyro bias block
         "user clock bias": "clock bias",
         "user clock drift": "clock drift",
         "accel. bias": "accel bias",

@@ -31,6 +31,7 @@ PAGE_DI = "sp/06-deep-integration"
 
 # --- Tables 2.1-2.3: one claim per printed cell ------------------------------------------
 _NORM = {
+    "gyro drift": "gyro bias",  # the paper's name for the gyro bias block
     "user clock bias": "clock bias",
     "user clock drift": "clock drift",
     "accel. bias": "accel bias",

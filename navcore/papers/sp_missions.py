@@ -70,7 +70,7 @@ def unaided_layout():
         "position",
         "velocity",
         "misalignment",
-        "gyro drift",
+        "gyro bias",
         "gyro scale factor",
         "gyro misalignment",
         "accel bias",
