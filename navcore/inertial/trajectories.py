@@ -32,9 +32,9 @@ or height model of gravity. Nothing adds that term back: the error dynamics
 (:mod:`navcore.inertial.error_dynamics`) use this ``f_ned`` in their tilt coupling
 :math:`-\psi\times f^n`, and the Coriolis term they do carry,
 :math:`-(2\omega_{ie} + \omega_{en})\times\delta v` in the velocity-error row
-(:math:`F_{vv}`), acts on the velocity *error*, not on the vehicle's velocity. ``C_bn`` rotates body to NED and ``omega_nb_b`` (rad/s) is the body rate
-relative to NED, resolved in the body frame (from the sampled ``C_bn`` by central
-differences).
+(:math:`F_{vv}`), acts on the velocity *error*, not on the vehicle's velocity. ``C_bn``
+rotates body to NED and ``omega_nb_b`` (rad/s) is the body rate relative to NED, resolved in
+the body frame (from the sampled ``C_bn`` by central differences).
 
 That is the level of detail the SP Section 2.6 missions need: straight-and-level legs,
 climbs, dives, turns and terrain-following height changes.
