@@ -649,8 +649,15 @@ def target_location_sigma(
     ``range_m`` away (default the paper's 8 km) at ``bearing_deg`` from north (default the
     assumed 45 deg, the north-east diagonal), level, using the full end covariance of position
     and attitude error.
+
+    The engine's attitude error is the psi angle, :math:`\\hat C = (I - [\\psi\\times])C`; the
+    paper's formula reads :math:`\\delta\\alpha` with the opposite sign (:math:`\\hat C r^b = r +
+    \\delta\\alpha\\times r`), so the covariance is converted (:math:`\\delta\\alpha = -\\psi`) before
+    it enters :func:`~navcore.location.target_location.target_location_covariance`: the located
+    target is in error by :math:`\\delta r - \\psi\\times r`.
     """
-    from navcore.inertial.error_dynamics import skew_stack
+    from navcore.inertial.error_dynamics import psi_to_attitude_error
+    from navcore.location.target_location import target_location_covariance
 
     if range_m is None:
         range_m = spa.IN.target_range_m  # Sec. 2.6.4 '(8 km)', declared with the acquisition claims
@@ -659,8 +666,9 @@ def target_location_sigma(
     b = np.radians(bearing_deg)
     P = next(iter(result.snapshots.values()))
     lay = result.truth_layout
-    idx = np.r_[np.arange(lay.size)[lay.slice("position")], np.arange(lay.size)[lay.slice("misalignment")]]
+    T = psi_to_attitude_error(lay)
+    P = T @ P @ T  # psi -> dalpha = -psi
+    p, a = lay.slice("position"), lay.slice("misalignment")
     r = range_m * np.array([np.cos(b), np.sin(b), 0.0])
-    M = np.hstack([np.eye(3), -skew_stack(r)])  # dr + da x r = dr - r x da
-    Pt = M @ P[np.ix_(idx, idx)] @ M.T
+    Pt = target_location_covariance(P[p, p], P[a, a], r, P[p, a])
     return float(np.sqrt(Pt[0, 0] + Pt[1, 1]))
