@@ -350,7 +350,7 @@ def run_covariance_analysis(
             j = k - 1
             cond = conds[j]
             if key is None or since >= relinearize_every or np.any(np.abs(cond - key) > tol):
-                F = error_dynamics(
+                F = _error_dynamics(
                     truth_layout,
                     f_ned=trajectory.f_ned[j],
                     C_bn=trajectory.C_bn[j],
@@ -362,10 +362,10 @@ def run_covariance_analysis(
                     vertical_channel=vertical_channel,
                 )
                 S = np.stack(
-                    [process_noise_psd(truth_layout, s_, speed_mps=float(speed[j])) for s_ in src_list]
+                    [_process_noise_psd(truth_layout, s_, speed_mps=float(speed[j])) for s_ in src_list]
                 )
-                Phi_t = taylor_transition(F, dt)
-                Q_t = discrete_noise(F, S, dt)
+                Phi_t = _taylor(F, dt)
+                Q_t = _discrete_noise(F, S, dt)
                 Phi_f = Phi_t[ix_f]
                 Q_f = Q_t[:, idx][:, :, idx]
                 if filter_added_psd is not None:
@@ -477,6 +477,10 @@ def run_covariance_analysis(
 
 
 _GAUSS3 = np.polynomial.legendre.leggauss(3)
+# the error model without its argument checks: the engine checks its inputs once, at its
+# boundary, not in every step of its loop
+_error_dynamics = getattr(error_dynamics, "__wrapped__", error_dynamics)
+_process_noise_psd = getattr(process_noise_psd, "__wrapped__", process_noise_psd)
 
 
 def _static_states(Phi: Array, Q: Array) -> NDArray[np.bool_]:
@@ -551,12 +555,15 @@ def discrete_noise(F: ArrayLike, S: ArrayLike, dt: float) -> Array:
     >>> np.allclose(Q, 2.0 * np.array([[0.5**3 / 3, 0.5**2 / 2], [0.5**2 / 2, 0.5]]))
     True
     """
-    F = np.asarray(F, dtype=float)
-    S = np.asarray(S, dtype=float)
+    return _discrete_noise(np.asarray(F, dtype=float), np.asarray(S, dtype=float), dt)
+
+
+def _discrete_noise(F: Array, S: Array, dt: float) -> Array:
+    """:func:`discrete_noise` without the argument checks (the engine's inner loop)."""
     x, w = _GAUSS3
     Q = np.zeros(S.shape)
     for xi, wi in zip(x, w, strict=True):
-        P = taylor_transition(F, 0.5 * dt * (xi + 1.0))
+        P = _taylor(F, 0.5 * dt * (xi + 1.0))
         Q = Q + (0.5 * dt * wi) * (P @ S @ P.T)
     return 0.5 * (Q + np.swapaxes(Q, -1, -2))
 
@@ -588,7 +595,12 @@ def taylor_transition(F: ArrayLike, dt: float, order: int = 4) -> Array:
     >>> taylor_transition([[0.0, 1.0], [0.0, 0.0]], 2.0).tolist()
     [[1.0, 2.0], [0.0, 1.0]]
     """
-    A = np.asarray(F, dtype=float) * dt
+    return _taylor(np.asarray(F, dtype=float), dt, order)
+
+
+def _taylor(F: Array, dt: float, order: int = 4) -> Array:
+    """:func:`taylor_transition` without the argument checks (the engine's inner loop)."""
+    A = F * dt
     eye = np.eye(A.shape[0])
     Phi = eye
     for j in range(order, 0, -1):

@@ -43,7 +43,10 @@ IN = InputSet("ATC10", "coverage_tracking")
 IN.convention(
     "eq4521_reading",
     "zero",
-    alternative="squared",
+    readings={
+        "the variance of the deterministic gain, zero": "zero",
+        "the product squared, (sigma gamma_{n-1})^2": "squared",
+    },
     quantity="reading of the printed $\\sigma^2_{\\gamma_{n-1}}$ in (4.5.21)",
     reason="the printed symbol is the variance of the gain, which is not random (zero); the other "
     "reading squares the product, $(\\sigma\\gamma_{n-1})^2$. Neither is the $\\sigma^2\\gamma_{n-1}$ "
@@ -1341,6 +1344,7 @@ CLAIMS = [
         "$\\sigma$ = 50 ns) against $\\psi(\\alpha)/\\beta$ with $\\psi$ the root of the cubic (4.5.26): "
         "equal to 1e-9. The text cites (4.5.30) for $\\gamma_n$ where (4.5.25) is meant.",
         PAGE_TRACKER,
+        printed="$\\gamma_n \\rightarrow \\gamma = \\frac{1}{\\beta} \\psi(\\alpha)$ (4.5.37)",
     ),
     _s(
         "ATC10-eq4.5.23-increment-covariance",
@@ -1350,9 +1354,11 @@ CLAIMS = [
         "$\\Delta_n = \\tau_n - \\tau_{n-1} - \\bar\\tau$ with the covariance (4.3.1b) of the clock "
         "model (4.5.9) propagated exactly, $n \\le 30$.",
         PAGE_TRACKER,
+        printed="$E[\\Delta_n \\Delta_{n-i}] = 2\\sigma_0^2$, $i=0$; $\\sigma_0^2$, $1 \\leq i \\leq n-1$ (4.5.23)",
     ),
     Claim(
         id="ATC10-eq4.5.10-printed",
+        printed="$\\hat{\\tau}_1 = \\gamma_1^{-1} (I - F_1 (F_1' F_1)^{-1} F_1') [\\hat{T}_1 - k_1 - (\\hat{\\tau}_0 + \\bar{\\tau}) 1] + \\hat{\\tau}_0 + \\bar{\\tau}$ (4.5.10)",
         paper="ATC10",
         locator="Eq. (4.5.10)",
         quantity="the clock estimate (4.5.10) as printed ($\\gamma_1^{-1}$) has the error variance "
