@@ -837,7 +837,8 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec3.8-no-uniform-set-beats-roc-g",
-        printed="no uniform signature set suffering this average multiple access noise power will yield an ROC more preferable than",
+        printed="no uniform signature set suffering this average multiple access noise power will "
+        "yield an ROC more preferable than",
         paper="ATC10",
         locator="Sec. 3.8",
         quantity="no uniform signature set with this multiple-access power yields an ROC more "
@@ -857,7 +858,8 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec3.8-pd-line",
-        printed="$p_d = \\frac{1}{2} + \\frac{1}{2} \\operatorname{erf} \\left(\\theta \\sqrt{\\frac{1}{2p}} \\right)$",
+        printed="$p_d = \\frac{1}{2} + \\frac{1}{2} \\operatorname{erf} \\left(\\theta "
+        "\\sqrt{\\frac{1}{2p}} \\right)$",
         paper="ATC10",
         locator="Sec. 3.8",
         quantity="the $p_d$ line of the bound after 'no uniform signature set' is the $p_d$ of "

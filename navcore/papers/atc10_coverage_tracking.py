@@ -1354,11 +1354,13 @@ CLAIMS = [
         "$\\Delta_n = \\tau_n - \\tau_{n-1} - \\bar\\tau$ with the covariance (4.3.1b) of the clock "
         "model (4.5.9) propagated exactly, $n \\le 30$.",
         PAGE_TRACKER,
-        printed="$E[\\Delta_n \\Delta_{n-i}] = 2\\sigma_0^2$, $i=0$; $\\sigma_0^2$, $1 \\leq i \\leq n-1$ (4.5.23)",
+        printed="$E[\\Delta_n \\Delta_{n-i}] = 2\\sigma_0^2$, $i=0$; $\\sigma_0^2$, $1 \\leq i \\leq "
+        "n-1$ (4.5.23)",
     ),
     Claim(
         id="ATC10-eq4.5.10-printed",
-        printed="$\\hat{\\tau}_1 = \\gamma_1^{-1} (I - F_1 (F_1' F_1)^{-1} F_1') [\\hat{T}_1 - k_1 - (\\hat{\\tau}_0 + \\bar{\\tau}) 1] + \\hat{\\tau}_0 + \\bar{\\tau}$ (4.5.10)",
+        printed="$\\hat{\\tau}_1 = \\gamma_1^{-1} (I - F_1 (F_1' F_1)^{-1} F_1') [\\hat{T}_1 - k_1 - "
+        "(\\hat{\\tau}_0 + \\bar{\\tau}) 1] + \\hat{\\tau}_0 + \\bar{\\tau}$ (4.5.10)",
         paper="ATC10",
         locator="Eq. (4.5.10)",
         quantity="the clock estimate (4.5.10) as printed ($\\gamma_1^{-1}$) has the error variance "

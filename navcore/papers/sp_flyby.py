@@ -509,13 +509,13 @@ def _returns(code: np.ndarray, start_s: float) -> list[tuple[int, int]]:
     return out
 
 
-@input_cache
-def _analysis_end() -> int:
-    """Last sample of the covariance runs: one minute after the last reacquisition of any
-    satellite by any system (or the end of the flight)."""
+def _analysis_end(systems: list[sc.System]) -> int:
+    """Last sample of a covariance run of ``systems``: one minute after the last reacquisition
+    of any satellite by any of them (or the end of the flight)."""
     tr = flyby_trajectory()
     last = 0
-    for s, lk in _lock_tables().items():
+    for s in systems:
+        lk = _lock_tables()[s]
         start, _ = _outage(s, lk.code)
         for _, k in _returns(lk.code, start if not math.isnan(start) else 0.0):
             last = max(last, k)
@@ -527,18 +527,18 @@ def flyby_runs() -> dict[sc.System, CovarianceAnalysis]:
     """Covariance analysis of the five systems through the flyby (systems sharing a lock
     table run as one batch), with the full covariance before every code reacquisition."""
     tr_full = flyby_trajectory()
-    n = _analysis_end() + 1
-    tr = Trajectory(*(getattr(tr_full, f)[:n] for f in Trajectory.__dataclass_fields__))
     ch = channels()
     groups: dict[bytes, list[sc.System]] = {}
     tables: dict[bytes, FlybyLocks] = {}
     for s, lk in _lock_tables().items():
-        key = lk.code[:n].tobytes() + lk.carrier[:n].tobytes() + s.architecture.encode()
+        key = lk.code.tobytes() + lk.carrier.tobytes() + s.architecture.encode()
         groups.setdefault(key, []).append(s)
         tables[key] = lk
     out: dict[sc.System, CovarianceAnalysis] = {}
     for key, group in groups.items():
         lk = tables[key]
+        n = _analysis_end(group) + 1
+        tr = Trajectory(*(getattr(tr_full, f)[:n] for f in Trajectory.__dataclass_fields__))
         code, carrier = lk.code[:n], lk.carrier[:n]
         back = np.flatnonzero((code[1:] & ~code[:-1]).any(axis=1)) + 1
         snaps = (*(int(k) - 1 for k in back), -1)
@@ -817,7 +817,9 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.2-blackout-reduction",
-        printed="Even for the best IMU, the blackout time is reduced by only about 2 min from the 20-min blackout experienced by the loosely coupled receiver with full (unaided) bandwidth.",
+        printed="Even for the best IMU, the blackout time is reduced by only about 2 min from the "
+        "20-min blackout experienced by the loosely coupled receiver with full (unaided) "
+        "bandwidth.",
         paper="SP",
         locator="Sec. 2.6.2 (Fig. 2.6)",
         quantity="blackout shortening by the best tightly coupled IMU relative to the loosely coupled one",
@@ -835,7 +837,9 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.2-tc-shorter",
-        printed="The blackout period as a function of IMU architecture and IMU quality is shown in Figure 2.6. ... Even for the best IMU, the blackout time is reduced by only about 2 min",
+        printed="The blackout period as a function of IMU architecture and IMU quality is shown in "
+        "Figure 2.6. ... Even for the best IMU, the blackout time is reduced by only about 2 "
+        "min",
         paper="SP",
         locator="Sec. 2.6.2 (Fig. 2.6)",
         quantity="every tightly coupled system has a shorter blackout than the loosely coupled one",
@@ -850,7 +854,8 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.2-blackout-bandwidth",
-        printed="The period of outage will also be a function of the bandwidth of the carrier tracking loops for each of the receivers.",
+        printed="The period of outage will also be a function of the bandwidth of the carrier tracking "
+        "loops for each of the receivers.",
         paper="SP",
         locator="Sec. 2.6.2",
         quantity="the period of outage is a function of the bandwidth of the carrier tracking loops",
@@ -871,7 +876,8 @@ CLAIMS = [
     ),
     Claim(
         id="SP-fig2.6-blackout-grade",
-        printed="The blackout period as a function of IMU architecture and IMU quality is shown in Figure 2.6.",
+        printed="The blackout period as a function of IMU architecture and IMU quality is shown in "
+        "Figure 2.6.",
         paper="SP",
         locator="Sec. 2.6.2 (Fig. 2.6)",
         quantity="the tightly coupled blackout varies with IMU quality",
@@ -888,7 +894,8 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.2-calibration-not-resistance",
-        printed="For this particular scenario, the performance difference is due to better calibration of the inertial instruments rather than jamming resistance.",
+        printed="For this particular scenario, the performance difference is due to better calibration "
+        "of the inertial instruments rather than jamming resistance.",
         paper="SP",
         locator="Sec. 2.6.2",
         quantity="the blackout difference is due to better calibration of the inertial instruments rather "
@@ -908,7 +915,8 @@ CLAIMS = [
     ),
     Claim(
         id="SP-fig2.7-tc10",
-        printed="The ratio of error level between the 10-nmi/h and the 1-nmi/h tightly coupled systems (3300:260)",
+        printed="The ratio of error level between the 10-nmi/h and the 1-nmi/h tightly coupled systems "
+        "(3300:260)",
         paper="SP",
         locator="Sec. 2.6.2 (Fig. 2.7)",
         quantity="tightly coupled 10 nmi/h horizontal position error just before reacquisition",
@@ -924,7 +932,8 @@ CLAIMS = [
     ),
     Claim(
         id="SP-fig2.7-tc1",
-        printed="The ratio of error level between the 10-nmi/h and the 1-nmi/h tightly coupled systems (3300:260)",
+        printed="The ratio of error level between the 10-nmi/h and the 1-nmi/h tightly coupled systems "
+        "(3300:260)",
         paper="SP",
         locator="Sec. 2.6.2 (Fig. 2.7)",
         quantity="tightly coupled 1 nmi/h horizontal position error just before reacquisition",
@@ -939,7 +948,8 @@ CLAIMS = [
     ),
     Claim(
         id="SP-fig2.7-tc1-below-lc1",
-        printed="The tightly coupled 1-nm/h system benefits somewhat more by the GPS in-flight calibration than the loosely coupled system.",
+        printed="The tightly coupled 1-nm/h system benefits somewhat more by the GPS in-flight "
+        "calibration than the loosely coupled system.",
         paper="SP",
         locator="Sec. 2.6.2 (Fig. 2.7)",
         quantity="just before reacquisition the tightly coupled 1 nmi/h error is below the loosely "
@@ -960,7 +970,8 @@ CLAIMS = [
     ),
     Claim(
         id="SP-fig2.7-monotone-grade",
-        printed="Thus, the better IMUs perform better yet when they are calibrated continuously by in-flight GPS measurements.",
+        printed="Thus, the better IMUs perform better yet when they are calibrated continuously by "
+        "in-flight GPS measurements.",
         paper="SP",
         locator="Sec. 2.6.2 (Fig. 2.7)",
         quantity="tightly coupled errors just before reacquisition fall with IMU quality "
@@ -975,7 +986,8 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.2-range-rate-cell",
-        printed="In no case did the error growth in velocity cause the range rate uncertainty to any satellite to be greater than 10 m/s (one Doppler shift interval).",
+        printed="In no case did the error growth in velocity cause the range rate uncertainty to any "
+        "satellite to be greater than 10 m/s (one Doppler shift interval).",
         paper="SP",
         locator="Sec. 2.6.2 (Table 2.7 text)",
         quantity="at reacquisition no satellite's range-rate uncertainty exceeds 10 m/s (one Doppler cell)",

@@ -767,7 +767,9 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.3-initial-errors",
-        printed="The initial errors in position, velocity, and misalignment in fact have very little effect on the performance of the system as long as it operates for a significant time.",
+        printed="The initial errors in position, velocity, and misalignment in fact have very little "
+        "effect on the performance of the system as long as it operates for a significant "
+        "time.",
         paper="SP",
         locator="Sec. 2.3",
         quantity="the initial errors in position, velocity and misalignment have very little effect on "
@@ -786,7 +788,8 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.4-misalignment-not-critical",
-        printed="Its values are not critical for the analysis because improvements in alignment due to in-flight maneuvers soon dominate the navigation results.",
+        printed="Its values are not critical for the analysis because improvements in alignment due to "
+        "in-flight maneuvers soon dominate the navigation results.",
         paper="SP",
         locator="Sec. 2.4 (after Table 2.5)",
         quantity="the initial misalignment's values are not critical, because in-flight alignment soon "
@@ -819,7 +822,9 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.4-momentary-carrier-loss",
-        printed="The resulting flight profile has high levels of acceleration and jerk, which caused occasional momentary loss of carrier lock. No effect on mission performance can be seen.",
+        printed="The resulting flight profile has high levels of acceleration and jerk, which caused "
+        "occasional momentary loss of carrier lock. No effect on mission performance can be "
+        "seen.",
         paper="SP",
         locator="Sec. 2.6.4",
         quantity="occasional momentary loss of carrier lock has no visible effect on mission performance",
@@ -837,7 +842,8 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.8-coupling-short-term",
-        printed="For short time intervals after GPS loss, coupling architectures can make a difference in performance (because they affect calibration and alignment quality).",
+        printed="For short time intervals after GPS loss, coupling architectures can make a difference "
+        "in performance (because they affect calibration and alignment quality).",
         paper="SP",
         locator="Sec. 2.8, assertion 4",
         quantity="for short intervals after GPS loss coupling architectures make a difference (they "
