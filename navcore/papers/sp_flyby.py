@@ -941,9 +941,11 @@ CLAIMS = [
         unit="m",
         compute=lambda: errors_before_reacquisition()["TC 1 nmi/h"],
         tolerance=printed("260")[1],
-        expected_status="inconsistent",
+        expected_status="consistent",
         note="As SP-fig2.7-tc10, for the 1 nmi/h system, whose error after the outage is set mostly by "
-        "the calibration before it." + _FIT + " " + _MODEL,
+        "the calibration before it: about 200 m at the nominal inputs, and the printed 260 m within the "
+        "assumed box (a longer blackout or a poorer calibration, e.g. noisier pseudoranges or a faster "
+        "aircraft, raises it)." + _FIT + " " + _MODEL,
         discussed_in=PAGE,
     ),
     Claim(

@@ -337,15 +337,19 @@ def _final(covariance: np.ndarray | None) -> np.ndarray:
     return covariance
 
 
-def truth_layout(*, doppler: bool = False, channels: int | None = None) -> StateLayout:
+def truth_layout(*, doppler: bool = False, channels: int | None = None, clock: bool = True) -> StateLayout:
     """Truth states: the 24 tightly coupled states plus everything Table 2.4/2.5 lists that
     the filters do not carry (instrument misalignments, gravity anomaly, clock
-    g-sensitivity, per-channel pseudorange and range-rate biases, Doppler errors)."""
+    g-sensitivity, per-channel pseudorange and range-rate biases, Doppler errors).
+
+    ``clock=False`` leaves out the user clock (bias, drift, g-sensitivity): in the loosely
+    coupled analysis no measurement sees it (the receiver's position solution removes it) and
+    no navigation error depends on it, so its states are not carried."""
     extra = [
         "gyro misalignment",
         "accel misalignment",
         "gravity",
-        "clock g-sensitivity",
+        *(("clock g-sensitivity",) if clock else ()),
         "pseudorange bias",
         "range-rate bias",
     ]
@@ -353,14 +357,14 @@ def truth_layout(*, doppler: bool = False, channels: int | None = None) -> State
         extra += ["doppler bias", "doppler scale factor", "doppler misalignment"]
     if channels is None:
         channels = IN.channels
-    return StateLayout(
-        tightly_coupled_layout().blocks + ins_error_layout(*extra, channels=channels).blocks, "truth"
-    )
+    core = tuple(b for b in tightly_coupled_layout().blocks if clock or not b.name.startswith("clock"))
+    return StateLayout(core + ins_error_layout(*extra, channels=channels).blocks, "truth")
 
 
-def error_sources(spec: ImuSpec, doppler: bool = True) -> ErrorSources:
+def error_sources(spec: ImuSpec, doppler: bool = True, clock: bool = True) -> ErrorSources:
     """Table 2.4 (INS-independent) and Table 2.8 errors around one Table 2.5 instrument
-    (``doppler=False``: without the Doppler sensor, whose Table 2.8 errors are then not read)."""
+    (``doppler=False``: without the Doppler sensor, whose Table 2.8 errors are then not read;
+    ``clock=False``: without the user clock, whose Table 2.4 errors and noise are then not read)."""
     t = tab.table_2_4()
     grav, baro = gravity_markov(), barometer_markov()
     dop = table_2_8() if doppler else DopplerErrorModel(0.0, 0.0, 0.0, 0.0, 0.0)
@@ -374,7 +378,9 @@ def error_sources(spec: ImuSpec, doppler: bool = True) -> ErrorSources:
             g_sensitivity_sigma=t["clock g-sensitive drift"].si,
             bias_psd=IN.clock_bias_psd_m2_s,
             drift_psd=IN.clock_drift_psd_m2_s3,
-        ),
+        )
+        if clock
+        else None,
         pseudorange_bias_sigma=t["pseudorange bias"].si,
         range_rate_bias_sigma=t["range-rate bias"].si,
         doppler_bias=(dop.bias_horizontal, dop.bias_horizontal, dop.bias_vertical),
@@ -474,20 +480,22 @@ def _run_list(
     """:func:`_run` for a list of members (a system may appear several times, each with its
     own ``transforms`` of the a-priori covariance), in the order given."""
     out: dict[int, CovarianceAnalysis] = {}
-    truth = truth_layout(doppler=doppler, channels=len(channels))
     con = nominal_gps_constellation() if constellation is None else constellation
     geo = satellite_geometry(tr, con, [int(c) for c in channels])
     every = max(1, round(IN.baro_interval_s / tr.dt))
-    baro = baro_schedule(truth, noise_m=tab.IN.barometer_noise_m, every=every)
-    dop = doppler_schedule(truth, tr, noise_mps=IN.doppler_noise_mps) if doppler else None
     if transforms is None:
         transforms = (None,) * len(systems)
     for arch in ("loose", "tight"):
         members = [i for i, s in enumerate(systems) if s.architecture == arch]
         if not members:
             continue
+        # the loosely coupled analysis carries no user clock: no measurement of it sees one
+        tight = arch == "tight"
+        truth = truth_layout(doppler=doppler, channels=len(channels), clock=tight)
+        baro = baro_schedule(truth, noise_m=tab.IN.barometer_noise_m, every=every)
+        dop = doppler_schedule(truth, tr, noise_mps=IN.doppler_noise_mps) if doppler else None
         group = [systems[i] for i in members]
-        sources = [error_sources(sp_imu_grade(s.grade), doppler) for s in group]
+        sources = [error_sources(sp_imu_grade(s.grade), doppler, clock=tight) for s in group]
         filt = loosely_coupled_layout() if arch == "loose" else tightly_coupled_layout()
         if doppler:
             filt = StateLayout(
@@ -705,10 +713,23 @@ def _group(architecture: str) -> tuple[System, ...]:
     return tuple(s for s in SYSTEMS if s.architecture == architecture)
 
 
+def _channel_key(channels: np.ndarray) -> tuple[int, ...]:
+    return tuple(int(c) for c in channels)
+
+
 @input_cache
 def _sequential_common(architecture: str) -> tuple[Trajectory, np.ndarray, dict, dict]:
+    # the runs are keyed on the satellites chosen, so an elevation mask that chooses the same
+    # satellites reuses them
+    return _sequential_common_on(architecture, _channel_key(_channels(end_free_s())))
+
+
+@input_cache
+def _sequential_common_on(
+    architecture: str, channel_key: tuple[int, ...]
+) -> tuple[Trajectory, np.ndarray, dict, dict]:
     tr = sequential_outage_trajectory(end_free_s())
-    channels = _channels(end_free_s())
+    channels = np.array(channel_key)
     ev = sequential_outage_events(len(channels))
     group = _group(architecture)
     a = _phase(group, tr, channels, 0.0, last_code_loss_s(), 1, ev, None)
@@ -792,7 +813,14 @@ def initial_error_runs(scale: float) -> dict[str, CovarianceAnalysis]:
 
 @input_cache
 def _sequential_group(architecture: str, free_inertial: bool) -> dict[System, CovarianceAnalysis]:
-    tr, channels, a, b = _sequential_common(architecture)
+    return _sequential_group_on(architecture, free_inertial, _channel_key(_channels(end_free_s())))
+
+
+@input_cache
+def _sequential_group_on(
+    architecture: str, free_inertial: bool, channel_key: tuple[int, ...]
+) -> dict[System, CovarianceAnalysis]:
+    tr, channels, a, b = _sequential_common_on(architecture, channel_key)
     ev = sequential_outage_events(len(channels), outage_s=None if free_inertial else -1.0)
     end = end_free_s() if free_inertial else END_S
     c = _phase(_group(architecture), tr, channels, reacquisition_s(), end, 1, ev, b)
@@ -877,6 +905,15 @@ def head_on_approach(
         free_inertial_s = IN.headon_free_loose_s if architecture == "loose" else IN.headon_free_tight_s
     tr = head_on_trajectory()
     channels = best_geometry_channels(tr, nominal_gps_constellation(), IN.channels, IN.mask_deg)
+    return _head_on_on(architecture, free_inertial_s, _channel_key(channels))
+
+
+@input_cache
+def _head_on_on(
+    architecture: str, free_inertial_s: float, channel_key: tuple[int, ...]
+) -> dict[System, CovarianceAnalysis]:
+    tr = head_on_trajectory()
+    channels = np.array(channel_key)
     t_loss = tr.t[-1] - free_inertial_s
     ev = [(t_loss, c, k, False) for c in range(len(channels)) for k in ("code", "carrier")]
     code, carrier = lock_table(tr.t, len(channels), ev)
@@ -925,9 +962,25 @@ def helicopter(doppler: bool) -> dict[float, CovarianceAnalysis]:
     duration = (calibration_min + IN.helicopter_jammed_min) * MINUTE
     tr = helicopter_trajectory(duration)
     channels = best_geometry_channels(tr, nominal_gps_constellation(), a.channels, a.mask_deg)
+    return _helicopter_on(doppler, 0.0, _channel_key(channels))
+
+
+@input_cache
+def _helicopter_on(
+    doppler: bool, loss_s: float, channel_key: tuple[int, ...]
+) -> dict[float, CovarianceAnalysis]:
+    """The helicopter on the satellites ``channel_key``; ``loss_s > 0`` drops every carrier for
+    that long at the start of each terrain pull-up while GPS is tracked."""
+    calibration_min = IN.helicopter_calibration_min
+    duration = (calibration_min + IN.helicopter_jammed_min) * MINUTE
+    tr = helicopter_trajectory(duration)
+    channels = np.array(channel_key)
     t_loss = calibration_min * MINUTE
     ev = [(t_loss, c, k, False) for c in range(len(channels)) for k in ("code", "carrier")]
     code, carrier = lock_table(tr.t, len(channels), ev)
+    if loss_s > 0.0:
+        pull_ups = (tr.t % 60.0 < loss_s) & (tr.t > 0.0)  # each 60-s undulation starts with a pull-up
+        carrier = carrier & ~pull_ups[:, None]
     res = _run((System("tight", 10.0), System("tight", 1.0)), tr, code, carrier, channels, doppler=doppler)
     return {s.grade: r for s, r in res.items()}
 
@@ -942,13 +995,7 @@ def helicopter_momentary_carrier_loss(loss_s: float) -> dict[float, CovarianceAn
     duration = (calibration_min + IN.helicopter_jammed_min) * MINUTE
     tr = helicopter_trajectory(duration)
     channels = best_geometry_channels(tr, nominal_gps_constellation(), a.channels, a.mask_deg)
-    t_loss = calibration_min * MINUTE
-    ev = [(t_loss, c, k, False) for c in range(len(channels)) for k in ("code", "carrier")]
-    code, carrier = lock_table(tr.t, len(channels), ev)
-    pull_ups = (tr.t % 60.0 < loss_s) & (tr.t > 0.0)  # each 60-s undulation starts with a pull-up
-    carrier = carrier & ~pull_ups[:, None]
-    res = _run((System("tight", 10.0), System("tight", 1.0)), tr, code, carrier, channels)
-    return {s.grade: r for s, r in res.items()}
+    return _helicopter_on(False, loss_s, _channel_key(channels))
 
 
 def target_location_sigma(
