@@ -16,6 +16,7 @@ from navcore.gnss.architectures import (
     tightly_coupled_layout,
 )
 from navcore.ledger import EXACT, Claim, printed, prose
+from navcore.ledger.core import Status
 from navcore.papers import sp_acquisition as spa
 from navcore.papers import sp_antijam as saj
 from navcore.papers import sp_architectures as sar
@@ -134,7 +135,7 @@ def _t27_claim(system: str, col: int) -> Claim:
 
 
 #: Derived verdicts of the Table 2.7 cells that are not inconsistent (regression pins).
-_T27_EXPECTED: dict[str, str] = {
+_T27_EXPECTED: dict[str, Status] = {
     "SP-tab2.7-lc1-sv11": "consistent",
     "SP-tab2.7-lc1-sv12": "consistent",
     "SP-tab2.7-lc1-sv17": "consistent",

@@ -793,7 +793,7 @@ def initial_error_runs(scale: float) -> dict[str, CovarianceAnalysis]:
         for pv, mis, clock in INITIAL_ERROR_MEMBERS.values()
     )
     systems = (system,) * len(names)
-    parts = []
+    parts: list[list[CovarianceAnalysis]] = []
     for t0, t1 in ((0.0, last_code_loss_s()), (last_code_loss_s(), reacquisition_s())):
         trp = _slice(tr, t0, t1)
         code, carrier = lock_table(trp.t, len(channels), ev)
