@@ -597,3 +597,46 @@ def test_layout_sizes_units_and_name():
         ("pseudorange bias", 4, "m"),
     ]
     assert ins_error_layout("range-rate bias", channels=7).size == 7
+
+
+def test_psi_sign_convention_against_a_strapdown_step_and_its_conversion():
+    """Oracle: one short strapdown step (navcore.inertial.strapdown) started from the computed
+    attitude C~_bn = exp(-[psi x]) C_bn (scipy rotation) with perfect sensors, against the true
+    attitude: the velocity-error rate is F[v, psi] psi = -psi x f (the module's convention,
+    C~ = (I - [psi x]) C). The opposite sign (C~ = (I + [psi x]) C, that of error_model17 and
+    target_location) gives the negative rate; psi_to_attitude_error converts one into the other."""
+    from scipy.spatial.transform import Rotation
+
+    from navcore import frames as fr
+    from navcore.inertial.error_dynamics import psi_to_attitude_error
+    from navcore.inertial.strapdown import NavState, strapdown_step
+
+    lay = ins_error_layout("position", "velocity", "misalignment")
+    C = fr.dcm_from_euler(*_ATT)
+    F = error_dynamics(lay, f_ned=C @ _F_B, C_bn=C, omega_ib_b=_W_B, lat=0.7)
+    psi = np.array([2e-4, -3e-4, 5e-4])
+    C_hat = Rotation.from_rotvec(-psi).as_matrix() @ C
+    dt = 1e-5
+    good = strapdown_step(
+        NavState(np.zeros((1, 3)), np.zeros((1, 3)), fr.quat_from_dcm(C)[None]), _W_B[None], _F_B[None], dt
+    )
+    bad = strapdown_step(
+        NavState(np.zeros((1, 3)), np.zeros((1, 3)), fr.quat_from_dcm(C_hat)[None]),
+        _W_B[None],
+        _F_B[None],
+        dt,
+    )
+    dv_rate = (bad.vel[0] - good.vel[0]) / dt
+    # agreement to second order in psi (5e-4 rad): 1e-3 of the largest component
+    np.testing.assert_allclose(
+        F[lay.slice("velocity"), lay.slice("misalignment")] @ psi,
+        dv_rate,
+        rtol=0,
+        atol=1e-3 * np.abs(dv_rate).max(),
+    )
+    T = psi_to_attitude_error(lay)
+    alpha = (T @ np.r_[np.zeros(6), psi])[lay.slice("misalignment")]
+    np.testing.assert_allclose(Rotation.from_rotvec(alpha).as_matrix() @ C, C_hat, atol=1e-12)
+    np.testing.assert_array_equal(T @ T, np.eye(lay.size))
+    with pytest.raises(ValueError, match="misalignment"):
+        psi_to_attitude_error(ins_error_layout("position", "velocity"))

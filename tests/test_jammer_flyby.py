@@ -262,29 +262,131 @@ def test_bad_input_names_parameter(call, name):
         call()
 
 
-def test_flyby_calibration_and_isotropic_limit():
-    """Scenario: the calibrated ERP gives the 20-min loosely coupled blackout (C/N0 crossings
-    on the 1-s grid), and with an isotropic antenna (zero spread of C/N0 between satellites)
-    the tightly and loosely coupled blackouts coincide."""
+def test_flyby_calibration_and_flat_antenna_limit():
+    """Scenario: the fitted jammer gives the 20-min loosely coupled blackout (lock tables on the
+    1-s grid), and with a flat antenna (no gain drop towards the horizon: every satellite at the
+    same C/N0) the four codes the loosely coupled receiver needs and the one the tightly coupled
+    filter needs go and come back together: the two blackouts coincide."""
+    from navcore.ledger.inputs import overriding, recording
     from navcore.papers import sp_flyby as fb
     from navcore.papers import sp_missions_scenarios as sc
 
-    s, e = fb._blackout(sc.SYSTEMS[0], fb.calibrated_erp_dbw())
-    assert (e - s) / 60.0 == pytest.approx(20.0, abs=1.0 / 60.0)
-    rows = fb.pattern_sensitivity((fb.ASSUMED_FLYBY.antenna_zenith_dbic, -5.0))
-    assert rows[0]["shortening (min)"] == pytest.approx(0.0, abs=1e-9)
-    assert rows[1]["shortening (min)"] > 0.0
+    lc, tc = sc.SYSTEMS[0], sc.SYSTEMS[2]
+    with recording():
+        s, e = fb._outage(lc, fb.locks(lc, fb.calibrated_jammer_db()).code)
+        assert (e - s) / 60.0 == pytest.approx(20.0, abs=1.0 / 60.0)
+        with overriding({"SP.flyby.antenna_gain_drop_db": 0.0}):
+            x = fb.calibrated_jammer_db()
+            b_lc = fb._outage(lc, fb.locks(lc, x).code)
+            b_tc = fb._outage(tc, fb.locks(tc, x).code)
+    assert b_lc == b_tc
+
+
+def test_flyby_table_2_7_counts_by_hand():
+    """Oracle: the cell count of every reacquired satellite recomputed by hand from the run's
+    covariance snapshot before that satellite's first pseudorange, ceil(2 sigma / 30 m) with
+    sigma^2 = u^T P_position u (Sec. 2.5, the range uncertainty along the line of sight), and
+    the range-rate sigma from the velocity block."""
+    from navcore.ledger.inputs import recording
+    from navcore.papers import sp_flyby as fb
+
+    with recording():
+        runs = {s.label: r for s, r in fb.flyby_runs().items()}
+        search = fb.reacquisition_search()
+        u_all = fb.flyby_geometry().u_ned
+    for label, v in search.items():
+        r = runs[label]
+        p, vel = r.truth_layout.slice("position"), r.truth_layout.slice("velocity")
+        assert len(v["prn"]) == 7
+        for c, k, cells, srr in zip(
+            v["channel"], v["step"], v["range_cells"], v["sigma_range_rate_mps"], strict=True
+        ):
+            P = r.snapshots[k - 1]
+            u = u_all[k, c]
+            sigma = np.sqrt(u @ P[p, p] @ u)
+            assert cells == max(1, int(np.ceil(2 * sigma / 30.0)))
+            assert srr == pytest.approx(np.sqrt(u @ P[vel, vel] @ u), rel=1e-12)
+
+
+def test_dynamic_error_bound_against_a_fine_simulation():
+    """Oracle: scipy.signal.lsim of the third-order loop's error transfer function
+    s^3 / (s^3 + 2 w s^2 + 2 w^2 s + w^3) (the loop of SP Sec. 2.5) driven by the phase
+    (double integral) of a piecewise-constant acceleration history, on a 1-ms grid: the bound
+    is never below the simulated error at any time of its interval and equals the peak after
+    an isolated step."""
+    from scipy import signal
+
+    from navcore.gnss.tracking import third_order_loop_dynamic_error_bound
+
+    w, dt = 1.3, 1.0
+    a = np.zeros(40)
+    a[5:12] = 2.0  # a 2 m/s^2 acceleration on for 7 s
+    a[20:] = -1.0
+    bound = third_order_loop_dynamic_error_bound(a, dt, w)
+    fine = np.arange(0.0, 40.0, 1e-3)
+    acc = a[np.minimum((fine // dt).astype(int), a.size - 1)]
+    # the loop error for a phase input theta'' = acc: E(s) = s^3/D(s) * Acc(s)/s^2 = s/D(s) Acc(s)
+    _, err, _ = signal.lsim(signal.lti([1.0, 0.0], [1.0, 2 * w, 2 * w**2, w**3]), acc, fine)
+    per_sample = np.array([np.abs(err[(fine >= k * dt) & (fine < (k + 1) * dt)]).max() for k in range(40)])
+    assert np.all(bound >= per_sample - 1e-6)
+    # after the first step alone (samples 5-11) the bound is the simulated error
+    np.testing.assert_allclose(bound[5:12], per_sample[5:12], rtol=2e-3)
+
+
+def test_jitters_and_jammed_cn0_against_their_formulas():
+    """Oracles: Kaplan & Hegarty's thermal jitter formulas written out (PLL: Bn/(C/N0)
+    (1 + 1/(2 T C/N0)) rad^2; noncoherent early-minus-late DLL: Bn d/(2 C/N0)
+    (1 + 2/(T C/N0 (2 - d))) chips^2) and the effective C/N0 law in watts,
+    C / (N0 + J/(Q Rc)), with J/(Q Rc N0) the jammer-to-noise ratio."""
+    c = 10 ** (np.array([15.0, 25.0, 40.0]) / 10)
+    np.testing.assert_allclose(
+        jg.pll_thermal_jitter_deg([15.0, 25.0, 40.0], 0.3, 0.02),
+        np.degrees(np.sqrt(0.3 / c * (1 + 1 / (2 * 0.02 * c)))),
+        rtol=1e-12,
+    )
+    np.testing.assert_allclose(
+        jg.dll_thermal_jitter_chips([15.0, 25.0, 40.0], 1.5, 0.8, 0.02),
+        np.sqrt(1.5 * 0.8 / (2 * c) * (1 + 2 / (0.02 * c * 1.2))),
+        rtol=1e-12,
+    )
+    j_w, n0_w, c_w = 10 ** (-120 / 10), 10 ** (N0 / 10), 10 ** (-160 / 10)
+    jn_db = 10 * np.log10(j_w / (2.0 * RC * n0_w))
+    assert jg.jammed_cn0_dbhz(10 * np.log10(c_w / n0_w), jn_db) == pytest.approx(
+        10 * np.log10(c_w / (n0_w + j_w / (2.0 * RC))), abs=1e-10
+    )
+    with pytest.raises(ValueError, match="spacing_chips"):
+        jg.dll_thermal_jitter_chips(30.0, 1.0, 2.0)
+
+
+def test_hysteresis_from_conditions_is_the_threshold_state_machine():
+    """Oracle: the threshold form hysteresis_lock (itself checked against a state machine) is the
+    condition form with lose = C/N0 below the loss threshold and regain = C/N0 at or above the
+    reacquisition threshold."""
+    rng = np.random.default_rng(8)
+    c = 19.5 + np.cumsum(rng.normal(0, 1.0, (300, 5)), axis=0) * 0.3
+    for init in (True, False):
+        np.testing.assert_array_equal(
+            jg.hysteresis_from_conditions(c < 18.0, c >= 21.0, initially_locked=init),
+            jg.hysteresis_lock(c, 18.0, 21.0, initially_locked=init),
+        )
+    with pytest.raises(ValueError, match="lose and regain"):
+        jg.hysteresis_from_conditions(np.zeros((3, 2), bool), np.zeros((3, 3), bool))
 
 
 def test_elevation_gain_linear_and_clipped():
     """Oracle: the stated pattern by hand: linear in elevation from the horizon gain (0 deg)
-    to the zenith gain (90 deg), held outside [0, 90] deg, elementwise on arrays."""
+    to the zenith gain (90 deg), held outside [0, 90] deg, elementwise on arrays; with an
+    exponent p the drop follows the zenith angle's p-th power."""
     e_deg = np.array([-30.0, 0.0, 30.0, 45.0, 90.0, 120.0])
     got = jg.elevation_gain_dbi(np.radians(e_deg), 3.0, -5.0)
     expected = -5.0 + 8.0 * np.clip(e_deg, 0.0, 90.0) / 90.0
     np.testing.assert_allclose(got, expected, rtol=0, atol=1e-12)
     assert jg.elevation_gain_dbi(np.radians(60.0), 3.0, -5.0) == pytest.approx(-5.0 + 8.0 * 2 / 3, abs=1e-12)
     assert isinstance(jg.elevation_gain_dbi(0.3, 3.0, -5.0), float)
+    z = (90.0 - np.clip(e_deg, 0.0, 90.0)) / 90.0
+    np.testing.assert_allclose(
+        jg.elevation_gain_dbi(np.radians(e_deg), 3.0, -5.0, 2.5), 3.0 - 8.0 * z**2.5, atol=1e-12
+    )
 
 
 def test_geometry_helpers_contracts():

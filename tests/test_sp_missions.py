@@ -76,3 +76,27 @@ def test_grade_label_erratum_monte_carlo():
     from navcore.papers import sp_missions as spm
 
     assert spm.grade_cep_monte_carlo_nmi(1.0, runs=5000) == pytest.approx(spm.grade_cep_nmi()[1.0], rel=0.04)
+
+
+def test_scale_initial_errors_scales_the_blocks_and_their_correlations():
+    """Oracle: the covariance of a scaled random vector, D P D with D diagonal (2 on the
+    position and velocity states, 0.5 on the psi angle), built by hand on a random positive
+    definite matrix; the clock offset replaced by its new sigma with no correlation."""
+    import numpy as np
+
+    from navcore.papers import sp_missions_scenarios as sc
+
+    lay = sc.truth_layout(channels=4)
+    rng = np.random.default_rng(4)
+    A = rng.standard_normal((lay.size, lay.size))
+    P = A @ A.T
+    d = np.ones(lay.size)
+    for block, f in (("position", 2.0), ("velocity", 2.0), ("misalignment", 0.5)):
+        d[lay.slice(block)] = f
+    got = sc.scale_initial_errors(2.0, 0.5, clock_offset_m=1499.0)(P, lay)
+    want = np.diag(d) @ P @ np.diag(d)
+    i = lay.index("clock bias")
+    want[i, :] = want[:, i] = 0.0
+    want[i, i] = 1499.0**2
+    np.testing.assert_allclose(got, want, rtol=1e-14)
+    np.testing.assert_array_equal(sc.scale_initial_errors()(P, lay), P)

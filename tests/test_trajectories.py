@@ -208,3 +208,29 @@ def test_straight_and_level_closed_form_and_defaults():
     np.testing.assert_allclose(rest.C_bn, np.tile(np.eye(3), (6, 1, 1)), atol=0)
     rest2 = fly([Segment(5.0)])
     np.testing.assert_array_equal(np.c_[rest2.lat, rest2.lon, rest2.h, rest2.speed], 0.0)
+
+
+def test_latitude_is_integrated_along_a_path_that_climbs_after_a_leg_north():
+    """Oracle: the path integral L = L0 + int v_N / (a + h) dt of the analytic flight, by
+    scipy's adaptive ODE solver (rtol 1e-12) on the segments' own kinematics: 1000 s north
+    at 250 m/s and 1000 m, a 20-s pull-up to a 10 deg climb, then 230 s of climb (about
+    10 km higher). The generator's trapezoid rule on 1-s samples is within 5e-9 rad (it
+    converges as dt^2); dividing the whole north distance by the current a + h instead put
+    the aircraft 460 m south of where it is (7.2e-5 rad)."""
+    from scipy.integrate import solve_ivp
+
+    V, h0, lat0, r = 250.0, 1000.0, 0.7, np.radians(0.5)
+    segs = [Segment(1000.0), Segment(20.0, path_angle_rate=r), Segment(230.0)]
+    tr = fly(segs, speed0=V, heading0=0.0, lat0=lat0, h0=h0, dt=1.0)
+
+    def gamma(t):
+        return r * np.clip(t - 1000.0, 0.0, 20.0)
+
+    def rhs(t, y):
+        g = gamma(t)
+        return [V * np.cos(g) / (WGS84_A + y[1]), V * np.sin(g)]
+
+    sol = solve_ivp(rhs, (0.0, tr.t[-1]), [lat0, h0], t_eval=tr.t, rtol=1e-12, atol=1e-14, max_step=1.0)
+    assert tr.h[-1] - h0 > 9000.0
+    np.testing.assert_allclose(tr.h, sol.y[1], rtol=0, atol=0.01)
+    np.testing.assert_allclose(tr.lat, sol.y[0], rtol=0, atol=1e-8)  # 6 cm

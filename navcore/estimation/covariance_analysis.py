@@ -240,8 +240,9 @@ def run_covariance_analysis(
         ``True`` where ``schedule`` may return measurements. Where it is known to be
         ``False`` for ``stride - 1`` consecutive steps and the flight condition does not
         change, the engine takes one composite step ``Phi^L`` (cached per linearisation)
-        and interpolates the variances of the skipped samples linearly. Default: every
-        step is a single step.
+        and computes the variances of the skipped samples exactly, ``diag(Phi^i P Phi^iT +
+        Q_i)`` for ``i < L`` (the saw-tooth growth between fixes, not an interpolation).
+        Default: every step is a single step.
     stride : int
         Length of a composite step.
     filter_added_psd : (n_f,) array, optional
@@ -342,7 +343,8 @@ def run_covariance_analysis(
         [trajectory.f_ned, trajectory.vel_ned, trajectory.C_bn.reshape(N, 9), omega_ib_b], axis=1
     )
     free = None if measurement_steps is None else ~np.asarray(measurement_steps, dtype=bool)
-    exact = np.ones(N, dtype=bool)
+    prop_t: Any = None
+    prop_f: Any = None
     stride_cache: Any = None
     k = 0
     while k < N:
@@ -350,7 +352,7 @@ def run_covariance_analysis(
             j = k - 1
             cond = conds[j]
             if key is None or since >= relinearize_every or np.any(np.abs(cond - key) > tol):
-                F = error_dynamics(
+                F = _error_dynamics(
                     truth_layout,
                     f_ned=trajectory.f_ned[j],
                     C_bn=trajectory.C_bn[j],
@@ -362,14 +364,15 @@ def run_covariance_analysis(
                     vertical_channel=vertical_channel,
                 )
                 S = np.stack(
-                    [process_noise_psd(truth_layout, s_, speed_mps=float(speed[j])) for s_ in src_list]
+                    [_process_noise_psd(truth_layout, s_, speed_mps=float(speed[j])) for s_ in src_list]
                 )
-                Phi_t = taylor_transition(F, dt)
-                Q_t = discrete_noise(F, S, dt)
+                Phi_t = _taylor(F, dt)
+                Q_t = _discrete_noise(F, S, dt)
                 Phi_f = Phi_t[ix_f]
                 Q_f = Q_t[:, idx][:, :, idx]
                 if filter_added_psd is not None:
                     Q_f = Q_f + np.diag(np.asarray(filter_added_psd, dtype=float)) * dt
+                prop_t, prop_f = _Propagator(Phi_t, Q_t), _Propagator(Phi_f, Q_f)
                 key, since, stride_cache = cond, 0, None
             L = stride
             if (
@@ -381,24 +384,38 @@ def run_covariance_analysis(
                 and not any(j < w < j + L for w in want)
                 and np.all(np.abs(conds[j : j + L] - key) <= tol)
             ):
-                # L measurement-free steps under one linearisation: one composite step
+                # L measurement-free steps under one linearisation: one composite step, and
+                # the variances of the L - 1 samples it skips propagated exactly from its start
                 if stride_cache is None:
                     PhiL, QL, QLf = np.eye(n_t), np.zeros_like(Q_t), np.zeros_like(Q_f)
+                    pw, qt, qf = [], [], []
                     for _ in range(L):
                         PhiL = Phi_t @ PhiL
                         QL = Phi_t @ QL @ Phi_t.T + Q_t
                         QLf = Phi_f @ QLf @ Phi_f.T + Q_f
-                    stride_cache = (PhiL, QL, PhiL[ix_f], QLf)
-                PhiL, QL, PhiLf, QLf = stride_cache
-                Pt = PhiL @ Pt @ PhiL.T + QL
-                Pf = PhiLf @ Pf @ PhiLf.T + QLf
-                exact[j + 1 : j + L] = False
+                        pw.append(PhiL)
+                        qt.append(np.diagonal(QL, axis1=-2, axis2=-1))
+                        qf.append(np.diagonal(QLf, axis1=-2, axis2=-1))
+                    powers = np.stack(pw[:-1])
+                    stride_cache = (
+                        _Propagator(PhiL, QL),
+                        _Propagator(PhiL[ix_f], QLf),
+                        powers,
+                        powers[:, idx][:, :, idx],
+                        np.stack(qt[:-1]),
+                        np.stack(qf[:-1]),
+                    )
+                comp_t, comp_f, pw_t, pw_f, qd_t, qd_f = stride_cache
+                tv[:, j + 1 : j + L] = comp_t.diagonals(Pt, pw_t, qd_t)
+                fv[:, j + 1 : j + L] = comp_f.diagonals(Pf, pw_f, qd_f)
+                Pt = comp_t(Pt)
+                Pf = comp_f(Pf)
                 k = j + L
                 since += L
             else:
                 since += 1
-                Pt = Phi_t @ Pt @ Phi_t.T + Q_t
-                Pf = Phi_f @ Pf @ Phi_f.T + Q_f
+                Pt = prop_t(Pt)
+                Pf = prop_f(Pf)
         if schedule is not None:
             meas = list(schedule(k))
             if meas:
@@ -437,13 +454,6 @@ def run_covariance_analysis(
             for b in range(B):
                 snaps[b][k] = Pt[b].copy()
         k += 1
-    if not exact.all():
-        # samples skipped by composite steps: interpolate the variances linearly in time
-        t_all = trajectory.t
-        for arr in (tv, fv):
-            for b in range(B):
-                for c in range(arr.shape[2]):
-                    arr[b, ~exact, c] = np.interp(t_all[~exact], t_all[exact], arr[b, exact, c])
     p = truth_layout.slice("position").start
     v = truth_layout.slice("velocity").start
     out = []
@@ -469,6 +479,47 @@ def run_covariance_analysis(
 
 
 _GAUSS3 = np.polynomial.legendre.leggauss(3)
+# the error model without its argument checks: the engine checks its inputs once, at its
+# boundary, not in every step of its loop
+_error_dynamics = getattr(error_dynamics, "__wrapped__", error_dynamics)
+_process_noise_psd = getattr(process_noise_psd, "__wrapped__", process_noise_psd)
+
+
+def _static_states(Phi: Array, Q: Array) -> NDArray[np.bool_]:
+    """States whose transition row is the unit row and whose noise row is zero (random
+    constants of the layout): their variances and mutual covariances do not propagate."""
+    n = Phi.shape[0]
+    unit = np.all(Phi == np.eye(n), axis=1)
+    quiet = ~np.any(Q.reshape(-1, n, n) != 0.0, axis=(0, 2))
+    return unit & quiet
+
+
+class _Propagator:
+    """``P <- Phi P Phi^T + Q`` for a stack of covariances, and the diagonals of the
+    intermediate samples of a composite step (only the rows of the dynamic states are
+    transformed there: a static state, with a unit transition row and no noise, keeps its
+    variance exactly)."""
+
+    def __init__(self, Phi: Array, Q: Array) -> None:
+        self.n = Phi.shape[0]
+        self.Phi, self.Q = Phi, Q
+        self.D = np.flatnonzero(~_static_states(Phi, Q))
+
+    def __call__(self, P: Array) -> Array:
+        return self.Phi @ P @ self.Phi.T + self.Q
+
+    def diagonals(self, P: Array, powers: Array, noise_diag: Array) -> Array:
+        """``diag(Phi^i P Phi^iT) + diag(Q_i)`` for the stacked ``powers`` ``(L, n, n)`` of the
+        transition and the diagonals ``(L, B, n)`` of their noise: ``(B, L, n)``."""
+        B, n = P.shape[0], self.n
+        L, D = powers.shape[0], self.D
+        out = np.broadcast_to(np.diagonal(P, axis1=1, axis2=2)[:, None, :], (B, L, n)).copy()
+        if D.size:
+            rows = powers[:, D, :].reshape(L * D.size, n)  # the dynamic rows of every power
+            Y = (P.reshape(B * n, n) @ rows.T).reshape(B, n, L * D.size)
+            var = np.einsum("bnk,kn->bk", Y, rows).reshape(B, L, D.size)
+            out[:, :, D] = var + np.swapaxes(np.broadcast_to(noise_diag, (L, B, n)), 0, 1)[:, :, D]
+        return out
 
 
 def discrete_noise(F: ArrayLike, S: ArrayLike, dt: float) -> Array:
@@ -506,12 +557,15 @@ def discrete_noise(F: ArrayLike, S: ArrayLike, dt: float) -> Array:
     >>> np.allclose(Q, 2.0 * np.array([[0.5**3 / 3, 0.5**2 / 2], [0.5**2 / 2, 0.5]]))
     True
     """
-    F = np.asarray(F, dtype=float)
-    S = np.asarray(S, dtype=float)
+    return _discrete_noise(np.asarray(F, dtype=float), np.asarray(S, dtype=float), dt)
+
+
+def _discrete_noise(F: Array, S: Array, dt: float) -> Array:
+    """:func:`discrete_noise` without the argument checks (the engine's inner loop)."""
     x, w = _GAUSS3
     Q = np.zeros(S.shape)
     for xi, wi in zip(x, w, strict=True):
-        P = taylor_transition(F, 0.5 * dt * (xi + 1.0))
+        P = _taylor(F, 0.5 * dt * (xi + 1.0))
         Q = Q + (0.5 * dt * wi) * (P @ S @ P.T)
     return 0.5 * (Q + np.swapaxes(Q, -1, -2))
 
@@ -543,7 +597,12 @@ def taylor_transition(F: ArrayLike, dt: float, order: int = 4) -> Array:
     >>> taylor_transition([[0.0, 1.0], [0.0, 0.0]], 2.0).tolist()
     [[1.0, 2.0], [0.0, 1.0]]
     """
-    A = np.asarray(F, dtype=float) * dt
+    return _taylor(np.asarray(F, dtype=float), dt, order)
+
+
+def _taylor(F: Array, dt: float, order: int = 4) -> Array:
+    """:func:`taylor_transition` without the argument checks (the engine's inner loop)."""
+    A = F * dt
     eye = np.eye(A.shape[0])
     Phi = eye
     for j in range(order, 0, -1):

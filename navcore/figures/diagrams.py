@@ -97,7 +97,7 @@ def sp_integration_architectures() -> Figure:
         receiver_pva_layout,
         tightly_coupled_layout,
     )
-    from navcore.papers.sp_missions_scenarios import ASSUMED
+    from navcore.papers.sp_missions_scenarios import IN as SCENARIO
 
     loose = inspect.signature(loosely_coupled_schedule).parameters
     tight = inspect.signature(tightly_coupled_schedule).parameters
@@ -105,8 +105,8 @@ def sp_integration_architectures() -> Figure:
         receiver_states=receiver_pva_layout().size,
         loose_states=loosely_coupled_layout().size,
         tight_states=tightly_coupled_layout().size,
-        loose_update_s=loose["interval_steps"].default * ASSUMED.step_s,
+        loose_update_s=loose["interval_steps"].default * SCENARIO.step_s,
         ehe_limit_m=loose["max_ehe_m"].default,
-        tight_rate_hz=1.0 / (tight["every"].default * ASSUMED.step_s),
+        tight_rate_hz=1.0 / (tight["every"].default * SCENARIO.step_s),
         min_satellites=PVA.block("position").size + CLOCK.block("clock bias").size,
     )

@@ -6,24 +6,22 @@ import matplotlib.pyplot as plt
 from matplotlib.figure import Figure
 
 from navcore.figures import register, value_bars
-from navcore.gnss.constellation import nominal_gps_constellation
 from navcore.papers import sp_flyby as fb
 from navcore.papers import sp_missions_scenarios as sc
 from navcore.units import MINUTE
 
 _ASSUMED = (
-    "Assumed (the paper does not publish them): a ground jammer 10 km abeam a straight eastbound "
-    "leg flown at 7 km and 200 m/s after two calibration turns, closest approach at 40 min; "
-    "free-space propagation; receiver antenna +3 dBic at zenith falling linearly to -5 dBic at "
-    "the horizon, -10 dBic towards the jammer; P(Y) code at -163 dBW, N0 = -204 dBW/Hz, "
-    "spectral separation Q = 2; the satellites of the nominal 24-satellite constellation above "
-    "10 deg. The jammer's radiated power is calibrated so that the loosely coupled blackout "
-    "lasts the paper's 20 min. Thresholds are the paper's (Sec. 2.5)."
+    "Assumed (the paper does not publish them, see the flyby page for the values and their ranges): "
+    "a ground jammer abeam a straight eastbound leg flown after two calibration turns, closest "
+    "approach at the flight's midpoint; free-space propagation; an upward-looking antenna whose gain "
+    "falls from the zenith to the horizon; seven satellites of a 30-satellite constellation. The "
+    "jammer's strength is fitted so that the loosely coupled blackout lasts the paper's 20 min. "
+    "Thresholds, bandwidths and the search rule are the paper's (Sec. 2.5)."
 )
 
 
 def _blackout_span(ax, system: sc.System, color: str, label: str) -> None:
-    s, e = fb._blackout(system, fb.calibrated_erp_dbw())
+    s, e = fb._blackout_s(system)
     ax.axvspan(s / MINUTE, e / MINUTE, color=color, alpha=0.12, label=label)
 
 
@@ -38,8 +36,8 @@ def _blackout_span(ax, system: sc.System, color: str, label: str) -> None:
 )
 def sp_flyby_cn0() -> Figure:
     tr = fb.flyby_trajectory()
-    cn0 = fb.effective_cn0(fb.calibrated_erp_dbw())
-    prn = nominal_gps_constellation().prn[fb.channels()]
+    cn0 = fb.effective_cn0(fb.calibrated_jammer_db())
+    prn = fb.constellation().prn[fb.channels()]
     fig, ax = plt.subplots()
     t = tr.t / MINUTE
     for c in range(cn0.shape[1]):
@@ -53,8 +51,9 @@ def sp_flyby_cn0() -> Figure:
     ax.axhline(fb.IN.carrier_reacquisition_dbhz, color="k", lw=0.8, ls=":")
     _blackout_span(ax, sc.SYSTEMS[0], "tab:red", "LC blackout")
     _blackout_span(ax, sc.SYSTEMS[1], "tab:blue", "TC blackout")
-    ax.set_xlim(25, t[-1])
-    ax.set_ylim(-5, 40)
+    t_ca = fb.IN.closest_approach_min
+    ax.set_xlim(t_ca - 20, t_ca + 25)
+    ax.set_ylim(-5, 50)
     ax.set_xlabel("time (min)")
     ax.set_ylabel("effective C/N0 (dB-Hz)")
     ax.legend(loc="lower left", fontsize=7, ncol=3)
@@ -66,9 +65,9 @@ def sp_flyby_cn0() -> Figure:
     paper="SP",
     reproduces="Fig. 2.6",
     caption="Fig. 2.6 redrawn: GPS blackout in the jammer flyby by architecture and IMU quality, "
-    "from the C/N0 threshold crossings plus the Sec. 2.5 search time at reacquisition. The black "
-    "marks are the text's values: 20 min for the loosely coupled receiver (used to calibrate the "
-    "jammer power) and 'about 2 min' less for the best tightly coupled system. " + _ASSUMED,
+    "from the Sec. 2.5 loss and reacquisition rules plus the search time at reacquisition. The "
+    "black marks are the text's values: 20 min for the loosely coupled receiver (to which the "
+    "jammer's strength is fitted) and 'about 2 min' less for the best tightly coupled system. " + _ASSUMED,
 )
 def sp_fig2_6() -> Figure:
     b = fb.blackouts_min()
@@ -79,7 +78,7 @@ def sp_fig2_6() -> Figure:
         b,
         fmt="{:.2f}",
         colours={labels[0]: "tab:red"},
-        legend={"tab:red": "this book, jammer calibrated to it", "tab:blue": "this book"},
+        legend={"tab:red": "this book, jammer fitted to it", "tab:blue": "this book"},
         printed={labels[0]: fb.LC_BLACKOUT_MIN, labels[-1]: fb.LC_BLACKOUT_MIN - fb.BLACKOUT_REDUCTION_MIN},
         printed_label="text: 20 min; about 2 min less",
     )
@@ -93,24 +92,23 @@ def sp_fig2_6() -> Figure:
     paper="SP",
     reproduces="Fig. 2.7",
     caption="Fig. 2.7 redrawn: true horizontal position error (rss 1-sigma) of the five systems "
-    "through the jammer flyby; dots mark the value just before each system's reacquisition, stars "
-    "the text's 3300 m (TC 10 nmi/h) and 260 m (TC 1 nmi/h). 22-state loosely and 24-state "
-    "tightly coupled filters against the truth model of the missions page (46 states with six "
-    "channels), driven by the "
-    "flyby's lock table. " + _ASSUMED,
+    "through the jammer flyby; dots mark the value just before the reacquisition that ends each "
+    "system's blackout, stars the text's 3300 m (TC 10 nmi/h) and 260 m (TC 1 nmi/h). 22-state "
+    "loosely and 24-state tightly coupled filters against the truth model of the missions page "
+    "(48 states with seven channels), driven by the flyby's lock tables. " + _ASSUMED,
 )
 def sp_fig2_7() -> Figure:
     runs = fb.flyby_runs()
     before = fb.errors_before_reacquisition()
-    erp = fb.calibrated_erp_dbw()
     fig, ax = plt.subplots()
     for s, r in runs.items():
         (line,) = ax.semilogy(r.t / MINUTE, r.horizontal_position, lw=1.0, label=s.label)
-        _, end = fb._blackout(s, erp)
-        ax.plot((end - 1.0) / MINUTE, before[s.label], "o", color=line.get_color(), ms=5)
+        _, end = fb._blackout_s(s)
+        ax.plot(end / MINUTE, before[s.label], "o", color=line.get_color(), ms=5)
         if s.grade in fb.FIG27_M and s.architecture == "tight":
-            ax.plot((end - 1.0) / MINUTE, fb.FIG27_M[s.grade], "*", color=line.get_color(), ms=12, mec="k")
-    ax.set_xlim(25, r.t[-1] / MINUTE)
+            ax.plot(end / MINUTE, fb.FIG27_M[s.grade], "*", color=line.get_color(), ms=12, mec="k")
+    t_ca = fb.IN.closest_approach_min
+    ax.set_xlim(t_ca - 20, r.t[-1] / MINUTE)
     ax.set_xlabel("time (min)")
     ax.set_ylabel("horizontal position error, rss 1-sigma (m)")
     ax.legend(loc="upper left", fontsize=8)

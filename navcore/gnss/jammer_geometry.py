@@ -84,13 +84,17 @@ __all__ = [
     "LOOP_PHASE_LIMIT_DEG",
     "LockThresholds",
     "carrier_loss_threshold_dbhz",
+    "dll_thermal_jitter_chips",
     "effective_cn0_with_jammer_dbhz",
     "elevation_gain_dbi",
     "free_space_loss_db",
+    "hysteresis_from_conditions",
     "hysteresis_lock",
+    "jammed_cn0_dbhz",
     "jammer_power_at_threshold_dbw",
     "outage_intervals",
     "pll_jitter_threshold_dbhz",
+    "pll_thermal_jitter_deg",
     "received_jammer_power_dbw",
     "slant_range_m",
     "straight_track_crossing_times",
@@ -450,10 +454,16 @@ def straight_track_crossing_times(
     return _out(t_closest_s - half), _out(t_closest_s + half)
 
 
-def elevation_gain_dbi(elevation_rad: ArrayLike, zenith_dbi: float, horizon_dbi: float) -> Array | float:
-    """Antenna gain linear in elevation from ``horizon_dbi`` (0 deg) to ``zenith_dbi`` (90 deg).
+def elevation_gain_dbi(
+    elevation_rad: ArrayLike, zenith_dbi: float, horizon_dbi: float, exponent: float = 1.0
+) -> Array | float:
+    r"""Antenna gain of a fixed upward-looking antenna against elevation.
 
-    A simple stand-in for a fixed upward-looking patch; elevations are clipped to [0, 90] deg.
+    :math:`G(e) = G_z - (G_z - G_h)\,ig((90^\circ - e)/90^\circig)^p`: the zenith gain
+    ``zenith_dbi`` at 90 deg, the horizon gain ``horizon_dbi`` at 0 deg, and a roll-off whose
+    shape is set by ``exponent`` ``p`` (``p = 1``: linear in elevation; ``p > 1``: the gain
+    holds up at mid elevations and falls near the horizon, as a patch's does). Elevations
+    are clipped to [0, 90] deg.
 
     Parameters
     ----------
@@ -463,6 +473,8 @@ def elevation_gain_dbi(elevation_rad: ArrayLike, zenith_dbi: float, horizon_dbi:
         Gain at 90 deg, dBi.
     horizon_dbi : float
         Gain at 0 deg, dBi.
+    exponent : float, default 1.0
+        Shape of the roll-off (``> 0``).
 
     Returns
     -------
@@ -472,16 +484,56 @@ def elevation_gain_dbi(elevation_rad: ArrayLike, zenith_dbi: float, horizon_dbi:
     Raises
     ------
     ValueError
-        If an elevation is not finite.
+        If an elevation is not finite or ``exponent`` is not positive.
 
     Examples
     --------
     >>> import numpy as np
     >>> round(float(elevation_gain_dbi(np.pi / 4, 3.0, -5.0)), 6)
     -1.0
+    >>> round(float(elevation_gain_dbi(np.pi / 4, 3.0, -5.0, exponent=2.0)), 6)
+    1.0
     """
+    require_positive("exponent", exponent)
     e = np.clip(as_finite_array("elevation_rad", elevation_rad), 0.0, np.pi / 2)
-    return _out(horizon_dbi + (zenith_dbi - horizon_dbi) * e / (np.pi / 2))
+    return _out(zenith_dbi - (zenith_dbi - horizon_dbi) * (1.0 - e / (np.pi / 2)) ** exponent)
+
+
+@implements("SP Sec. 2.6.2")
+def jammed_cn0_dbhz(cn0_dbhz: ArrayLike, jammer_to_noise_db: ArrayLike) -> Array | float:
+    r"""Effective C/N0 under a jammer given as its density relative to the thermal noise.
+
+    With :math:`x = J/(Q R_c N_0)` the jammer's noise density at the correlator output over
+    the thermal density, :math:`(C/N_0)_{eff} = (C/N_0)/(1 + x)`, i.e. in dB
+    ``cn0_dbhz - 10 log10(1 + 10^(jammer_to_noise_db / 10))`` (the form of
+    :func:`effective_cn0_with_jammer_dbhz` with the signal, jammer power, chip rate and
+    spectral separation folded into one ratio). Arrays broadcast.
+
+    Parameters
+    ----------
+    cn0_dbhz : array_like
+        Unjammed C/N0, dB-Hz.
+    jammer_to_noise_db : array_like
+        Jammer density over thermal density, dB.
+
+    Returns
+    -------
+    float or ndarray
+        Effective C/N0, dB-Hz.
+
+    Raises
+    ------
+    ValueError
+        If an argument is not finite.
+
+    Examples
+    --------
+    >>> round(float(jammed_cn0_dbhz(44.0, 0.0)), 4)  # jammer density equal to the thermal
+    40.9897
+    """
+    c = as_finite_array("cn0_dbhz", cn0_dbhz)
+    x = as_finite_array("jammer_to_noise_db", jammer_to_noise_db)
+    return _out(c - np.logaddexp(0.0, x * _LN10_10) / _LN10_10)
 
 
 #: Allowed 1-sigma-times-k phase error (deg) of each carrier-loop type (Kaplan Sec. 5.6.2).
@@ -610,6 +662,136 @@ def carrier_loss_threshold_dbhz(
         pll_jitter_threshold_dbhz(noise_bandwidth_hz, max_phase_error_deg, k_sigma, coherent_s, loop=loop)
     )
     return _out(np.maximum(as_finite_array("floor_dbhz", floor_dbhz), jit))
+
+
+def pll_thermal_jitter_deg(
+    cn0_dbhz: ArrayLike, noise_bandwidth_hz: ArrayLike, coherent_s: float = 0.02
+) -> Array | float:
+    r"""Carrier-loop thermal phase jitter, deg (1 sigma).
+
+    :math:`\sigma_\phi^2 = \frac{B_n}{C/N_0}\big(1 + \frac{1}{2T\,C/N_0}\big)` rad^2 (Kaplan &
+    Hegarty, Sec. 5.6.2), the quantity :func:`pll_jitter_threshold_dbhz` holds at its limit.
+    Arrays broadcast.
+
+    Parameters
+    ----------
+    cn0_dbhz : array_like
+        C/N0, dB-Hz.
+    noise_bandwidth_hz : array_like
+        Loop noise bandwidth :math:`B_n`, Hz (``> 0``).
+    coherent_s : float, default 0.02
+        Coherent integration time :math:`T`, s (``> 0``).
+
+    Returns
+    -------
+    float or ndarray
+        Jitter, deg.
+
+    Raises
+    ------
+    ValueError
+        If a bandwidth or ``coherent_s`` is not positive or an argument is not finite.
+
+    Examples
+    --------
+    >>> x = float(pll_jitter_threshold_dbhz(5.83, 90.0, 3.0, 0.02))
+    >>> round(3.0 * float(pll_thermal_jitter_deg(x, 5.83, 0.02)), 9)
+    90.0
+    """
+    require_positive("coherent_s", coherent_s)
+    bn = require_positive("noise_bandwidth_hz", as_finite_array("noise_bandwidth_hz", noise_bandwidth_hz))
+    c = 10.0 ** (as_finite_array("cn0_dbhz", cn0_dbhz) / 10.0)
+    return _out(np.degrees(np.sqrt(bn / c * (1.0 + 1.0 / (2.0 * coherent_s * c)))))
+
+
+def dll_thermal_jitter_chips(
+    cn0_dbhz: ArrayLike, noise_bandwidth_hz: ArrayLike, spacing_chips: float = 1.0, coherent_s: float = 0.02
+) -> Array | float:
+    r"""Code-loop (noncoherent early-minus-late power DLL) thermal jitter, chips (1 sigma).
+
+    :math:`\sigma^2 = \frac{B_n d}{2\,C/N_0}\Big(1 + \frac{2}{T\,C/N_0\,(2 - d)}\Big)` chips^2
+    for an early-late spacing :math:`d` chips (Kaplan & Hegarty, Sec. 5.6.1). Arrays broadcast.
+
+    Parameters
+    ----------
+    cn0_dbhz : array_like
+        C/N0, dB-Hz.
+    noise_bandwidth_hz : array_like
+        Code-loop noise bandwidth, Hz (``> 0``).
+    spacing_chips : float, default 1.0
+        Early-late correlator spacing :math:`d`, chips (``0 < d < 2``).
+    coherent_s : float, default 0.02
+        Predetection integration time, s (``> 0``).
+
+    Returns
+    -------
+    float or ndarray
+        Jitter, chips.
+
+    Raises
+    ------
+    ValueError
+        If a bandwidth or ``coherent_s`` is not positive, ``spacing_chips`` is outside (0, 2),
+        or an argument is not finite.
+
+    Examples
+    --------
+    >>> round(float(dll_thermal_jitter_chips(40.0, 0.5)), 6)  # 0.5 Hz, 1 chip, 20 ms
+    0.005025
+    """
+    require_positive("coherent_s", coherent_s)
+    if not 0.0 < spacing_chips < 2.0:
+        raise ValueError(f"spacing_chips must be in (0, 2), got {spacing_chips!r}")
+    bn = require_positive("noise_bandwidth_hz", as_finite_array("noise_bandwidth_hz", noise_bandwidth_hz))
+    c = 10.0 ** (as_finite_array("cn0_dbhz", cn0_dbhz) / 10.0)
+    d = spacing_chips
+    return _out(np.sqrt(bn * d / (2.0 * c) * (1.0 + 2.0 / (coherent_s * c * (2.0 - d)))))
+
+
+def hysteresis_from_conditions(
+    lose: ArrayLike, regain: ArrayLike, *, initially_locked: bool = True
+) -> NDArray[np.bool_]:
+    """Lock state over time from per-sample loss and reacquisition conditions (vectorised).
+
+    A channel is unlocked from the first sample where ``lose`` holds and locked again from
+    the first later sample where ``regain`` holds (and ``lose`` does not); in between it
+    keeps its state. :func:`hysteresis_lock` is the case of two C/N0 thresholds.
+
+    Parameters
+    ----------
+    lose, regain : (N, n) bool arrays
+        Conditions per sample and channel.
+    initially_locked : bool, default True
+        Lock state before the first sample that decides it.
+
+    Returns
+    -------
+    (N, n) bool ndarray
+        Lock state per sample and channel.
+
+    Raises
+    ------
+    ValueError
+        If the conditions are not 2-D arrays of one shape.
+
+    Examples
+    --------
+    >>> lose = [[False], [True], [False], [False]]
+    >>> regain = [[True], [False], [False], [True]]
+    >>> hysteresis_from_conditions(lose, regain)[:, 0].tolist()
+    [True, False, False, True]
+    """
+    lo = np.asarray(lose, dtype=bool)
+    hi = np.asarray(regain, dtype=bool)
+    if lo.ndim != 2 or lo.shape != hi.shape:
+        raise ValueError(f"lose and regain must be 2-D arrays of one shape, got {lo.shape} and {hi.shape}")
+    set_ = hi & ~lo
+    event = set_ | lo
+    n = lo.shape[0]
+    idx = np.where(event, np.arange(n)[:, None], -1)
+    last = np.maximum.accumulate(idx, axis=0)  # index of the last decisive sample
+    state = np.take_along_axis(set_, np.clip(last, 0, None), axis=0)
+    return np.where(last >= 0, state, initially_locked)
 
 
 @dataclass(frozen=True)
@@ -753,5 +935,6 @@ check_public(
         "q": POSITIVE,
         "k_sigma": POSITIVE,
         "max_phase_error_deg": Range(0.0, 180.0, low_open=True),
+        "exponent": POSITIVE,
     },
 )

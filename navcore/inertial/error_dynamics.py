@@ -39,6 +39,23 @@ Dynamics (psi-angle form, Benson 1975):
     \delta\omega^b_{ib} &= b_g + \mathrm{diag}(\omega^b_{ib})\,s_g + [\omega^b_{ib}\times]\,\mu_g + w_g
     \end{aligned}
 
+Sign convention of the attitude error: every error is *computed minus true*, and the psi
+angle is the small rotation that carries the true NED frame into the computed one, so the
+computed body-to-NED attitude is
+
+.. math::
+
+    \hat C^n_b = (I - [\psi\times])\,C^n_b,
+
+and a vector measured in body axes is resolved with the error :math:`\hat C^n_b x^b - C^n_b x^b
+= -\psi\times(C^n_b x^b)`; that is where :math:`-\psi\times f^n` above comes from (and
+the :math:`-C^b_n[v^n\times]\,\psi` term of the Doppler rows of
+:func:`navcore.estimation.covariance_analysis.doppler_schedule`).
+:mod:`navcore.inertial.error_model17` and :mod:`navcore.location.target_location` use the
+opposite sign, :math:`\hat C = (I + [\delta\alpha\times])\,C`, so
+:math:`\delta\alpha = -\psi`; :func:`psi_to_attitude_error` converts a state or covariance
+explicitly where the two meet.
+
 The horizontal channels oscillate at the Schuler frequency :math:`\sqrt{g/R}` (84.4-min
 period) and the psi angle rotates with Earth and transport rate; the vertical channel is
 unstable (:math:`+2g/R`) and must be aided (barometer). A first-order Gauss-Markov
@@ -93,6 +110,7 @@ __all__ = [
     "ins_error_layout",
     "levelling_alignment",
     "process_noise_psd",
+    "psi_to_attitude_error",
     "schuler_frequency",
     "schuler_period",
     "skew_stack",
@@ -317,6 +335,44 @@ def ins_error_layout(*names: str, channels: int = 4, name: str = "") -> StateLay
         )
         blocks.append(StateBlock(n, size, _UNITS[n]))
     return StateLayout(tuple(blocks), name)
+
+
+def psi_to_attitude_error(layout: StateLayout) -> Array:
+    r"""Transform from this module's psi angle to the attitude error of the opposite sign.
+
+    This module: :math:`\hat C^n_b = (I - [\psi\times])\,C^n_b`. The attitude error
+    :math:`\delta\alpha` of :mod:`navcore.inertial.error_model17` (its :math:`\Delta\psi`) and of
+    :func:`navcore.location.target_location.target_location_error`:
+    :math:`\hat C^n_b = (I + [\delta\alpha\times])\,C^n_b`. Hence :math:`\delta\alpha = -\psi`:
+    the returned diagonal matrix :math:`T` negates the ``misalignment`` block and keeps every
+    other state, so a state converts as :math:`T x` and a covariance as :math:`T P T^T`.
+
+    Parameters
+    ----------
+    layout : StateLayout
+        A layout of this module containing the ``misalignment`` block.
+
+    Returns
+    -------
+    (n, n) ndarray
+        Diagonal of ones with -1 on the misalignment states (its own inverse).
+
+    Raises
+    ------
+    ValueError
+        If ``layout`` has no ``misalignment`` block.
+
+    Examples
+    --------
+    >>> lay = ins_error_layout("position", "misalignment")
+    >>> psi_to_attitude_error(lay).diagonal().tolist()
+    [1.0, 1.0, 1.0, -1.0, -1.0, -1.0]
+    """
+    if "misalignment" not in layout.names:
+        raise ValueError("layout must contain block 'misalignment'")
+    d = np.ones(layout.size)
+    d[layout.slice("misalignment")] = -1.0
+    return np.diag(d)
 
 
 def skew_stack(v: ArrayLike) -> Array:

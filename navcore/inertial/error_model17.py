@@ -15,7 +15,12 @@ block               size  meaning
 ==================  ====  =====================================================
 
 Attitude-error convention: :math:`\hat R_b^n = (I + [\Delta\psi\times]) R_b^n` with the
-standard cross-product matrix :math:`[a\times]b = a\times b` (:func:`navcore.frames.skew`).
+standard cross-product matrix :math:`[a\times]b = a\times b` (:func:`navcore.frames.skew`):
+error = estimated - true, and :math:`\Delta\psi` rotates the true frame into the estimated one
+*with the plus sign*. This is the opposite sign of the psi angle of
+:mod:`navcore.inertial.error_dynamics` (:math:`\hat C^n_b = (I - [\psi\times]) C^n_b`), so
+:math:`\Delta\psi = -\psi`; convert with
+:func:`navcore.inertial.error_dynamics.psi_to_attitude_error` wherever the two meet.
 The sensor outputs are corrected by the estimated biases, so a bias *error* enters the
 computed specific force and rate with a minus sign. Linearising KZL Eqs. 7-9 (flat,
 non-rotating Earth) gives the reconstructed KZL Eq. 10:

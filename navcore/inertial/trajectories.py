@@ -4,15 +4,17 @@ A trajectory is sampled on a uniform time grid and gives what the error dynamics
 position (geodetic and local NED), ground velocity, specific force, body attitude and body
 angular rate. It is generated from a list of :class:`Segment` objects, each holding the
 rates of airspeed, heading and flight-path angle constant for its duration (point-mass
-kinematics, coordinated turns, body x-axis along the velocity, no wind, spherical Earth for
-the latitude/longitude increments):
+kinematics, coordinated turns, body x-axis along the velocity, no wind, spherical Earth of
+radius :math:`a` for the latitude/longitude rates, integrated along the path):
 
 .. math::
 
     \begin{gathered}
     v^n = V\,[\cos\gamma\cos\chi,\ \cos\gamma\sin\chi,\ -\sin\gamma],\qquad
     f^n = \dot v^n - g^n,\\
-    \tan\phi = \frac{V\dot\chi\cos\gamma}{g\cos\gamma + V\dot\gamma}.
+    \tan\phi = \frac{V\dot\chi\cos\gamma}{g\cos\gamma + V\dot\gamma},\\
+    L(t) = L_0 + \int_0^t \frac{v_N}{a + h}\,dt,\qquad
+    \lambda(t) = \lambda_0 + \int_0^t \frac{v_E}{(a + h)\cos L}\,dt.
     \end{gathered}
 
 The bank angle :math:`\phi` (yaw :math:`\chi`, pitch :math:`\gamma`, roll :math:`\phi`) makes
@@ -26,11 +28,15 @@ Frames and simplifications: ``vel_ned`` is the ground velocity in the local NED 
 ``pos_ned`` its time integral (north/east distance travelled and height loss, m);
 ``f_ned`` is the specific force (m/s^2) in NED of a flat, non-rotating Earth with constant
 gravity ``g`` along +down: it omits the Coriolis and transport terms
-:math:`(2\omega_{ie} + \omega_{en})\times v` (about 2 mg at 200 m/s), which the covariance
-engine (:mod:`navcore.inertial.error_dynamics`) adds itself, and has no latitude or height
-model of gravity. ``C_bn`` rotates body to NED and ``omega_nb_b`` (rad/s) is the body rate
-relative to NED, resolved in the body frame (from the sampled ``C_bn`` by central
-differences).
+:math:`(2\omega_{ie} + \omega_{en})\times v` of the true specific force (about 2 mg at
+200 m/s, 0.2 % of the 1 g that couples a tilt into the velocity error) and has no latitude
+or height model of gravity. Nothing adds that term back: the error dynamics
+(:mod:`navcore.inertial.error_dynamics`) use this ``f_ned`` in their tilt coupling
+:math:`-\psi\times f^n`, and the Coriolis term they do carry,
+:math:`-(2\omega_{ie} + \omega_{en})\times\delta v` in the velocity-error row
+(:math:`F_{vv}`), acts on the velocity *error*, not on the vehicle's velocity. ``C_bn``
+rotates body to NED and ``omega_nb_b`` (rad/s) is the body rate relative to NED, resolved in
+the body frame (from the sampled ``C_bn`` by central differences).
 
 That is the level of detail the SP Section 2.6 missions need: straight-and-level legs,
 climbs, dives, turns and terrain-following height changes.
@@ -273,10 +279,11 @@ def fly(
     Om = np.einsum("nji,njk->nik", C, dC)
     w = np.stack([Om[:, 2, 1] - Om[:, 1, 2], Om[:, 0, 2] - Om[:, 2, 0], Om[:, 1, 0] - Om[:, 0, 1]], -1) / 2
     h = h0 - pos[:, 2]
-    lat = lat0 + pos[:, 0] / (WGS84_A + h)
-    # the longitude rate v_E / ((a + h) cos lat), integrated along the path (trapezoid rule,
-    # as the position): dividing the east distance by the current cos(lat) would hold only
-    # for a flight along a parallel
+    # the latitude rate v_N / (a + h) and the longitude rate v_E / ((a + h) cos lat),
+    # integrated along the path (trapezoid rule, as the position): dividing the north distance
+    # by the current a + h would rescale the whole distance already flown after a climb, and
+    # dividing the east distance by the current cos(lat) would hold only along a parallel
+    lat = lat0 + _cumulative_trapezoid(v[:, 0] / (WGS84_A + h), dt)
     lon_rate = v[:, 1] / ((WGS84_A + h) * np.cos(lat))
     lon = lon0 + _cumulative_trapezoid(lon_rate, dt)
     if np.any(h < -500.0):

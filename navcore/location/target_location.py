@@ -7,10 +7,19 @@ coordinates are then in error by (SP Sec. 2.6.4)
 .. math::
 
     \begin{gathered}
-    \delta r_{tgt} = \delta r_v + \delta\alpha\times r,\\
+    \delta r_{tgt} = \delta r_v + \delta\alpha\times r = \delta r_v - [r\times]\,\delta\alpha,\\
     \langle\delta r_{tgt}\delta r_{tgt}^T\rangle = P_r + [r\times] P_\alpha [r\times]^T
-    \quad(\text{uncorrelated } \delta r_v, \delta\alpha).
+    - P_{r\alpha}[r\times]^T - [r\times] P_{r\alpha}^T .
     \end{gathered}
+
+Sign convention: errors are *computed minus true*, and :math:`\delta\alpha` is the small
+rotation that carries the true frame into the computed one, :math:`\hat C = (I +
+[\delta\alpha\times])\,C`: a lever arm measured in the vehicle frame is resolved as
+:math:`\hat C r^b = r + \delta\alpha\times r`, which is the paper's formula. The psi angle of
+:mod:`navcore.inertial.error_dynamics` has the opposite sign (:math:`\hat C = (I -
+[\psi\times])\,C`, so :math:`\delta\alpha = -\psi`): convert a covariance of that model with
+:func:`navcore.inertial.error_dynamics.psi_to_attitude_error` before passing it here, or the
+position-attitude cross-covariance :math:`P_{r\alpha}` enters with the wrong sign.
 
 References
 ----------
@@ -83,10 +92,16 @@ def target_location_error(dr_vehicle_m: ArrayLike, dalpha_rad: ArrayLike, r_targ
     )
 
 
-def target_location_covariance(P_position: ArrayLike, P_attitude: ArrayLike, r_target_m: ArrayLike) -> Array:
-    """Covariance of the target error for uncorrelated position and attitude errors.
+def target_location_covariance(
+    P_position: ArrayLike,
+    P_attitude: ArrayLike,
+    r_target_m: ArrayLike,
+    P_position_attitude: ArrayLike | None = None,
+) -> Array:
+    """Covariance of the target error :func:`target_location_error`.
 
-    ``P_r + [r x] P_a [r x]^T``, the covariance of :func:`target_location_error`.
+    ``M P M^T`` with ``M = [I, -[r x]]`` and ``P`` the joint covariance of the position and
+    attitude errors: ``P_r + [r x] P_a [r x]^T - P_ra [r x]^T - [r x] P_ra^T``.
 
     Parameters
     ----------
@@ -96,6 +111,9 @@ def target_location_covariance(P_position: ArrayLike, P_attitude: ArrayLike, r_t
         Attitude error covariance, rad^2.
     r_target_m : (3,) array
         Lever arm from vehicle to target, m (same frame).
+    P_position_attitude : (3, 3) array, optional
+        Cross-covariance ``E[dr dalpha^T]``, m rad, with ``dalpha`` in the convention of the
+        module (``C_hat = (I + [dalpha x]) C``); default zero (uncorrelated errors).
 
     Returns
     -------
@@ -105,8 +123,9 @@ def target_location_covariance(P_position: ArrayLike, P_attitude: ArrayLike, r_t
     Raises
     ------
     ValueError
-        If a covariance is not 3x3 symmetric positive semi-definite or ``r_target_m`` not a
-        finite 3-vector.
+        If a covariance is not 3x3 symmetric positive semi-definite, the joint covariance is
+        not positive semi-definite, ``P_position_attitude`` is not a finite 3x3 matrix or
+        ``r_target_m`` not a finite 3-vector.
 
     References
     ----------
@@ -125,7 +144,17 @@ def target_location_covariance(P_position: ArrayLike, P_attitude: ArrayLike, r_t
         if P.shape != (3, 3):
             raise ValueError(f"{name} must be 3x3, got shape {P.shape}")
     S = skew(_vec3("r_target_m", r_target_m))
-    C = Pr + S @ Pa @ S.T
+    if P_position_attitude is None:
+        C = Pr + S @ Pa @ S.T
+    else:
+        Pra = as_finite_array("P_position_attitude", P_position_attitude)
+        if Pra.shape != (3, 3):
+            raise ValueError(f"P_position_attitude must be 3x3, got shape {Pra.shape}")
+        require_symmetric_psd(
+            "the joint covariance of position and attitude", np.block([[Pr, Pra], [Pra.T, Pa]])
+        )
+        M = np.hstack([np.eye(3), -S])
+        C = M @ np.block([[Pr, Pra], [Pra.T, Pa]]) @ M.T
     return 0.5 * (C + C.T)
 
 

@@ -212,6 +212,53 @@ def c2_smallest_lower_bound() -> bool:
     return True
 
 
+def c2_smallest_lower_bound_everywhere() -> bool:
+    """Sec. 3.6: C2's lower bound to p_f (the corrected Gallager bound, E3-1) is the smallest of
+    the four densities' at every figure contour (assumed labels) and on the 19-point threshold
+    grid of the upper-bound ordering (ATC10-sec3.6-order); a threshold where a bound does not
+    exist (no tilt) counts against the statement."""
+    thetas = np.linspace(0.05, 0.95, 19)
+    for x in ma.contours():
+        for th in thetas:
+            vals = {
+                n: gallager_log_tail_lower(ma.noise_sec36(n, x), float(th)).log_p for n in ma.DENSITY_NAMES
+            }
+            if any(math.isnan(v) for v in vals.values()) or vals["C2 two-point"] > min(vals.values()) + 1e-12:
+                return False
+    return True
+
+
+def _pd_printed(theta: np.ndarray, p: float) -> np.ndarray:
+    """The p_d line printed after 'no uniform signature set ... more preferable than'."""
+    return 0.5 + 0.5 * special.erf(theta * np.sqrt(1.0 / (2.0 * p)))
+
+
+def _sec38_powers() -> list[float]:
+    """Multiple-access noise powers 2 (N - 1) (tau/alpha) b of the check contours (Sec. 3.6 N and
+    tau/alpha, published)."""
+    return [2.0 * (MA.n_sec36 - 1) * MA.tau_over_alpha_sec36 * ma.b_of_contour(x) for x in ma.CHECK_CONTOURS]
+
+
+def pd_line_is_roc_g() -> bool:
+    """The printed p_d line equals the p_d of ROC_g, Eq. (3.8.4) (library: 1 - Q((1 - theta)/sqrt(p))),
+    at every check power and every threshold theta != 1/2 of a 0.05-0.95 grid."""
+    th = np.r_[np.linspace(0.05, 0.45, 9), np.linspace(0.55, 0.95, 9)]
+    for p in _sec38_powers():
+        _, lmiss = gaussian_roc(th, p)
+        if np.any(np.abs(_pd_printed(th, p) - (1.0 - np.exp(lmiss))) > 1e-9):
+            return False
+    return True
+
+
+def pd_line_oracle() -> bool:
+    """Oracle: scipy.stats.norm for ROC_g's p_d, Phi((1 - theta)/sqrt(p)), against the printed line."""
+    th = np.r_[np.linspace(0.05, 0.45, 9), np.linspace(0.55, 0.95, 9)]
+    return all(
+        bool(np.all(np.abs(_pd_printed(th, p) - stats.norm.cdf((1.0 - th) / np.sqrt(p))) <= 1e-9))
+        for p in _sec38_powers()
+    )
+
+
 def equal_share() -> bool:
     """(3.7.12)/(3.7.14): q (N-1) a^2 = p with a^2 = p alpha/((N-1) 2 tau) (exact arithmetic)."""
     from fractions import Fraction
@@ -466,7 +513,23 @@ def exp_equals_closed_form() -> bool:
     return True
 
 
-ERRATA: list[Erratum] = []
+ERRATA: list[Erratum] = [
+    Erratum(
+        id="ATC10-E3-12-pd-line",
+        paper="ATC10",
+        kind="typography",
+        basis="text-only",
+        locator="Sec. 3.8 ('no uniform signature set ... more preferable than')",
+        printed="$p_d = \\frac12 + \\frac12 \\operatorname{erf}(\\theta\\sqrt{1/2p})$",
+        finding="$p_d = \\frac12 + \\frac12 \\operatorname{erf}((1 - \\theta)\\sqrt{1/2p})$, as the same "
+        "ROC is printed a page later in (3.8.4): the detection threshold is $1 - \\theta$ below the unit "
+        "peak. As printed, $p_d = 1 - p_f$ at every threshold, the chance line of no receiver.",
+        evidence="The printed line against (3.8.4) at the check powers, computed with the library's "
+        "Gaussian ROC and with scipy's normal distribution: they agree only at $\\theta = 1/2$.",
+        claims=("ATC10-sec3.8-pd-line",),
+        discussed_in=ma.PAGE_GAUSS,
+    ),
+]
 
 _ST = EXACT
 
@@ -770,6 +833,65 @@ CLAIMS = [
         exp_equals_closed_form,
         "N 1e5-1e6, $\\mathrm{Exp}_g$ 1-12.5, $\\tau/\\alpha$ = 1e-5.",
         G_,
+    ),
+    Claim(
+        id="ATC10-sec3.6-c2-smallest-lower-bound",
+        printed="it has the smallest upper bound to p_f (and also the smallest lower bound)",
+        paper="ATC10",
+        locator="Sec. 3.6",
+        quantity="C2 has the smallest upper bound to $p_f$ '(and also the smallest lower bound)'",
+        published=True,
+        unit="statement",
+        compute=c2_smallest_lower_bound_everywhere,
+        tolerance=EXACT,
+        expected_status="inconsistent",
+        note="The lower bounds to $p_f$ (corrected Gallager bound, E3-1) of C1-C4 (C1, C3, C4 the book's "
+        "densities, Fig. 3.2 being lost) compared at each threshold of a 19-point grid and at each "
+        "figure contour (their labels are lost: assumed). The paper compares at a fixed $p_d$ on the "
+        "figures; the bounds are compared here at a fixed threshold, as the upper-bound order "
+        "(ATC10-sec3.6-order) is.",
+        discussed_in=ma.PAGE_ROC,
+    ),
+    Claim(
+        id="ATC10-sec3.8-no-uniform-set-beats-roc-g",
+        printed="no uniform signature set suffering this average multiple access noise power will "
+        "yield an ROC more preferable than",
+        paper="ATC10",
+        locator="Sec. 3.8",
+        quantity="no uniform signature set with this multiple-access power yields an ROC more "
+        "preferable than $\\mathrm{ROC}_g$ (every actual $p_f$ above the Gaussian one at equal $p_d$)",
+        published=True,
+        unit="statement",
+        compute=lambda: ma.gaussian_smallest_pf_ratio() > 1.0,
+        tolerance=EXACT,
+        expected_status="consistent",
+        note="The sentence follows from Theorem 3.2, which orders the Chernoff upper bounds; checked on "
+        "the actual ROCs of the four densities (exact sums and stratified Monte Carlo, as "
+        "ATC10-sec3.8-gauss-always-optimistic) at $p_d$ = 0.9 and 0.99 and the figure contours: "
+        "$\\mathrm{ROC}_g$ is the better ROC except at the lowest contour, 3, where the continuous "
+        "densities beat it; the contour labels are lost (assumed). The bound's $p_d$ line is misprinted "
+        "(ATC10-sec3.8-pd-line).",
+        discussed_in=ma.PAGE_GAUSS,
+    ),
+    Claim(
+        id="ATC10-sec3.8-pd-line",
+        printed="$p_d = \\frac{1}{2} + \\frac{1}{2} \\operatorname{erf} \\left(\\theta "
+        "\\sqrt{\\frac{1}{2p}} \\right)$",
+        paper="ATC10",
+        locator="Sec. 3.8",
+        quantity="the $p_d$ line of the bound after 'no uniform signature set' is the $p_d$ of "
+        "$\\mathrm{ROC}_g$, Eq. (3.8.4)",
+        published=True,
+        unit="statement",
+        compute=pd_line_is_roc_g,
+        tolerance=EXACT,
+        expected_status="discrepant",
+        erratum="ATC10-E3-12-pd-line",
+        oracle=pd_line_oracle,
+        oracle_tolerance=EXACT,
+        note="At the check powers (Sec. 3.6 N and $\\tau/\\alpha$) and thresholds 0.05-0.95 without "
+        "1/2: the printed line has $\\theta$ where (3.8.4) has $1 - \\theta$.",
+        discussed_in=ma.PAGE_GAUSS,
     ),
 ]
 

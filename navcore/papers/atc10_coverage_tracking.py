@@ -15,7 +15,7 @@ import math
 import numpy as np
 from scipy import integrate, optimize, special
 
-from navcore.ledger import EXACT, Claim, Erratum, printed
+from navcore.ledger import EXACT, Claim, Erratum, Tolerance, printed
 from navcore.ledger.core import PROSE_WORDS
 from navcore.ledger.inputs import InputSet
 from navcore.location.clock_tracking import (
@@ -48,6 +48,18 @@ IN.convention(
     quantity="smallest correlation of two growth laws over a tracking horizon that counts as 'quite similar'",
     readings={"a correlation above 0.99": 0.99, "a correlation above 0.999": 0.999},
     reason="'quite similar' (App. G) carries no number: the book's reading, fixed before computing",
+)
+IN.convention(
+    "eq4521_reading",
+    "zero",
+    readings={
+        "the variance of the deterministic gain, zero": "zero",
+        "the product squared, (sigma gamma_{n-1})^2": "squared",
+    },
+    quantity="reading of the printed $\\sigma^2_{\\gamma_{n-1}}$ in (4.5.21)",
+    reason="the printed symbol is the variance of the gain, which is not random (zero); the other "
+    "reading squares the product, $(\\sigma\\gamma_{n-1})^2$. Neither is the $\\sigma^2\\gamma_{n-1}$ "
+    "the derivation's last line needs ((4.5.18))",
 )
 IN.assumed(
     "rho_hurst",
@@ -522,6 +534,109 @@ def printed_4531_oracle(example: str, sigma0: float) -> float:
     b, tr, s = float(t["beta"]), float(t["trace_all"]), float(t["s_all"])
     p = psi_cubic_root((8.0 / 27.0) * sigma0**2 * b / sigma0**2)
     return 50.0 * math.sqrt(tr + p / b * s)
+
+
+# ------------------------------------------------------------- (4.5.10), (4.5.21)-(4.5.23), (4.5.37)
+def gain_limit_matches_psi() -> bool:
+    """(4.5.37): the gain recursion (4.5.20)-(4.5.25) tends to psi(alpha)/beta, both examples and
+    the three sigma0 of Table 4.3 (2000 steps, 1e-9 relative)."""
+    for ex in ("I", "II"):
+        b = _ex(ex)["beta"]
+        for s0 in trk.sigma0_values():
+            g = gain_recursion(b, TR.sigma_ns, s0, 2000).gamma[-1]
+            if abs(g * b / float(psi(alpha_parameter(s0, TR.sigma_ns, b))) - 1.0) > 1e-9:
+                return False
+    return True
+
+
+def increment_covariance_matches() -> bool:
+    """(4.5.23): E[Delta_n Delta_{n-i}] = 2 sigma0^2 (i = 0), sigma0^2 (1 <= i <= n - 1), with
+    Delta_n = tau_n - tau_{n-1} - tau_bar, from the covariance (4.3.1b) of the state model
+    (4.5.9) propagated exactly (as :func:`state_model_matches`)."""
+    s0 = TR.sigma0_low_ns
+    n_max = 30
+    T = np.array([[2.0, 1.0], [-1.0, 0.0]])
+    B = np.array([1.0, -1.0])
+    coef = np.zeros((n_max + 1, n_max + 1))
+    state = np.zeros((2, n_max + 1))
+    state[1, 0] = 1.0
+    for n in range(1, n_max + 1):
+        e = np.zeros(n_max + 1)
+        e[n] = 1.0
+        state = T @ state + np.outer(B, e)
+        coef[n] = state[0]
+    d = np.diff(coef, axis=0)  # Delta_1 .. Delta_n as linear maps of (alpha_0, w_1..w_n)
+    cov = s0**2 * d @ d.T
+    want = s0**2 * (np.ones_like(cov) + np.eye(len(cov)))
+    return bool(np.allclose(cov, want, rtol=1e-12, atol=1e-9))
+
+
+def _first_step(example: str, sigma0: float, inverse_gain: bool) -> tuple[float, float, float, float]:
+    """One tracking step from the least-squares start: (beta, gamma_1, error variance of the
+    estimator (4.5.10) with the gain gamma_1, or with the printed gamma_1^{-1}, prior s_1)."""
+    b = _ex(example)["beta"]
+    sigma = TR.sigma_ns
+    s1 = 2.0 * sigma0**2 + sigma**2 / b  # Var(xi_0 - Delta_1): (4.5.21) at n = 1
+    g1 = s1 / (sigma**2 + b * s1)
+    c = 1.0 / g1 if inverse_gain else g1
+    # xi_1 = c 1'(I - P) eps_1 + (1 - c beta)(xi_0 - Delta_1): Var = c^2 sigma^2 beta + (1 - c beta)^2 s_1
+    return b, g1, c**2 * sigma**2 * b + (1.0 - c * b) ** 2 * s1, s1
+
+
+def printed_4510_variance_ratio(example: str = "I") -> float:
+    """Error variance of the printed (4.5.10) estimator (gamma_1^{-1}, the sum 1' restored so it
+    is a scalar) over the sigma^2 gamma_1 that (4.5.18) assigns to it, Example I, sigma0 = 5 ns."""
+    _, g1, var, _ = _first_step(example, TR.sigma0_low_ns, inverse_gain=True)
+    return var / (TR.sigma_ns**2 * g1)
+
+
+def printed_4510_oracle(example: str = "I", runs: int = 400_000, seed: int = 21) -> float:
+    """Seeded Monte Carlo of the first tracking step with the printed gain: least-squares clock
+    error xi_0 (variance sigma^2 / beta), clock increment Delta_1 (variance 2 sigma0^2), and
+    the projected noise 1'(I - P) eps_1 (variance sigma^2 beta), independent."""
+    b = float(trk.TABLE_4_2[example]["beta"])
+    sigma, s0 = 50.0, 5.0
+    rng = np.random.default_rng(seed)
+    xi0 = rng.normal(0.0, sigma / math.sqrt(b), runs)
+    d1 = rng.normal(0.0, math.sqrt(2.0) * s0, runs)
+    proj = rng.normal(0.0, sigma * math.sqrt(b), runs)
+    s1 = 2.0 * s0**2 + sigma**2 / b
+    g1 = s1 / (sigma**2 + b * s1)
+    xi1 = proj / g1 + (1.0 - b / g1) * (xi0 - d1)
+    return float(np.var(xi1) / (sigma**2 * g1))
+
+
+def printed_4521_sdn(example: str, sigma0_attr: str) -> float:
+    """sd_N with the printed (4.5.21), its sigma^2_{gamma_{n-1}} read as the convention says
+    ('zero': the variance of the deterministic gain; 'squared': (sigma gamma_{n-1})^2) where the
+    recursion needs sigma^2 gamma_{n-1}: the recursion iterated to its limit."""
+    t = _ex(example)
+    s0, sigma, b = getattr(TR, sigma0_attr), TR.sigma_ns, t["beta"]
+    g, d = 1.0 / b, 0.0
+    for _ in range(5000):
+        term = 0.0 if IN.eq4521_reading == "zero" else (sigma * g) ** 2
+        s = 2 * s0**2 + term + 2 * d
+        g = s / (sigma**2 + b * s)
+        d = (1 - g * b) * (s0**2 + d)
+    return TR.c_ft_per_ns * sigma * math.sqrt(t["trace_all"] + g * t["s_all"])
+
+
+def printed_4521_oracle(example: str, sigma0: float) -> float:
+    """The printed recursion's fixed point solved by brentq on s = 2 sigma0^2 + 2 d(s) with the
+    term read as zero: d = a (sigma0^2 + d), a = 1 - gamma beta, gamma = s / (sigma^2 + beta s)."""
+    t = trk.TABLE_4_2[example]
+    b, tr, S = float(t["beta"]), float(t["trace_all"]), float(t["s_all"])
+    sigma = 50.0
+
+    def fixed(s: float) -> float:
+        g = s / (sigma**2 + b * s)
+        a = 1.0 - g * b
+        d = a * sigma0**2 / (1.0 - a)
+        return s - (2 * sigma0**2 + 2 * d)
+
+    s = optimize.brentq(fixed, 1e-9, 1e9)
+    g = s / (sigma**2 + b * s)
+    return sigma * math.sqrt(tr + g * S)
 
 
 def printed_4535_sdn(example: str, sigma0_attr: str) -> float:
@@ -1249,6 +1364,71 @@ CLAIMS = [
         note="$\\sigma_0^2$ where $\\sigma^2$ belongs in the gain's denominator makes $\\alpha = (8/27) "
         "\\beta$: $sd_N$ = 206 ft, against the printed 160 that the corrected (4.5.20) gives. Table 4.3 "
         "is the test point: (4.5.31) prints no number.",
+        discussed_in=PAGE_TRACKER,
+    ),
+    _s(
+        "ATC10-eq4.5.37-gain-limit",
+        "Eq. (4.5.37)",
+        "the gains tend to $\\gamma = \\psi(\\alpha)/\\beta$",
+        gain_limit_matches_psi,
+        "The gain recursion (4.5.20)-(4.5.25), corrected as in ATC10-E4.4-recursion-formulas, run 2000 "
+        "steps for both examples and the three $\\sigma_0$ of Table 4.3 (printed Table 4.2 $\\beta$, "
+        "$\\sigma$ = 50 ns) against $\\psi(\\alpha)/\\beta$ with $\\psi$ the root of the cubic (4.5.26): "
+        "equal to 1e-9. The text cites (4.5.30) for $\\gamma_n$ where (4.5.25) is meant.",
+        PAGE_TRACKER,
+        printed="$\\gamma_n \\rightarrow \\gamma = \\frac{1}{\\beta} \\psi(\\alpha)$ (4.5.37)",
+    ),
+    _s(
+        "ATC10-eq4.5.23-increment-covariance",
+        "Eq. (4.5.23)",
+        "$E[\\Delta_n \\Delta_{n-i}] = 2\\sigma_0^2$ for $i = 0$ and $\\sigma_0^2$ for $1 \\le i \\le n-1$",
+        increment_covariance_matches,
+        "$\\Delta_n = \\tau_n - \\tau_{n-1} - \\bar\\tau$ with the covariance (4.3.1b) of the clock "
+        "model (4.5.9) propagated exactly, $n \\le 30$.",
+        PAGE_TRACKER,
+        printed="$E[\\Delta_n \\Delta_{n-i}] = 2\\sigma_0^2$, $i=0$; $\\sigma_0^2$, $1 \\leq i \\leq "
+        "n-1$ (4.5.23)",
+    ),
+    Claim(
+        id="ATC10-eq4.5.10-printed",
+        printed="$\\hat{\\tau}_1 = \\gamma_1^{-1} (I - F_1 (F_1' F_1)^{-1} F_1') [\\hat{T}_1 - k_1 - "
+        "(\\hat{\\tau}_0 + \\bar{\\tau}) 1] + \\hat{\\tau}_0 + \\bar{\\tau}$ (4.5.10)",
+        paper="ATC10",
+        locator="Eq. (4.5.10)",
+        quantity="the clock estimate (4.5.10) as printed ($\\gamma_1^{-1}$) has the error variance "
+        "$\\sigma^2\\gamma_1$ of (4.5.18)",
+        published=True,
+        unit="statement",
+        compute=lambda: abs(printed_4510_variance_ratio() - 1.0) < 1e-9,
+        tolerance=STATEMENT,
+        expected_status="discrepant",
+        erratum="ATC10-E4.4-recursion-formulas",
+        oracle=lambda: abs(printed_4510_oracle() - 1.0) < 5 * math.sqrt(2.0 / 400_000),
+        oracle_tolerance=STATEMENT,
+        note="Printed: $\\gamma_1^{-1}(I - F_1(F_1'F_1)^{-1}F_1')[\\ldots]$, a vector; read with the sum "
+        "$1'$ restored so that it estimates the scalar clock, its first-step error variance is "
+        "$\\gamma_1^{-2}\\sigma^2\\beta + (1 - \\beta/\\gamma_1)^2 s_1$, twice the "
+        "$\\sigma^2\\gamma_1$ of (4.5.18) for Example I at $\\sigma_0$ = 5 ns; with $\\gamma_1 1'$ it is "
+        "exactly that (the optimal gain). Oracle: a seeded 400 000-run Monte Carlo of the first step.",
+        discussed_in=PAGE_TRACKER,
+    ),
+    Claim(
+        id="ATC10-eq4.5.21-printed",
+        paper="ATC10",
+        locator="Eq. (4.5.21)",
+        quantity="$sd_N$ of Example I, $\\sigma_0$ = 5 ns, with the printed (4.5.21)",
+        published=160.0,
+        unit="ft",
+        compute=lambda: printed_4521_sdn("I", "sigma0_low_ns"),
+        tolerance=printed("160")[1],
+        expected_status="discrepant",
+        erratum="ATC10-E4.4-recursion-formulas",
+        oracle=lambda: printed_4521_oracle("I", 5.0),
+        oracle_tolerance=Tolerance(reason="iteration against brentq's fixed point", rel=1e-6, policy="exact"),
+        note="The printed $\\sigma^2_{\\gamma_{n-1}}$ where the recursion needs $\\sigma^2\\gamma_{n-1}$: "
+        "read as the variance of the (deterministic) gain it drops the term and gives 147 ft, read as "
+        "$(\\sigma\\gamma_{n-1})^2$ 276 ft; the corrected recursion gives the printed 160 ft "
+        "(ATC10-tab4.3 claims).",
         discussed_in=PAGE_TRACKER,
     ),
     Claim(

@@ -1547,7 +1547,12 @@ ERRATA += [
         evidence="The corrected recursion reproduces Table 4.3 and its fixed point is the root of the "
         "printed cubic (4.5.26); a seeded Monte Carlo of the tracker matches its variances (tests).",
         discussed_in=PAGE_TRACKER,
-        claims=("ATC10-eq4.5.31-printed", "ATC10-eq4.5.35-printed"),
+        claims=(
+            "ATC10-eq4.5.31-printed",
+            "ATC10-eq4.5.35-printed",
+            "ATC10-eq4.5.10-printed",
+            "ATC10-eq4.5.21-printed",
+        ),
     ),
     Erratum(
         id=_E5,

@@ -3,8 +3,11 @@
 The paper publishes the error budgets (Tables 2.4, 2.5, 2.8), the filter state vectors
 (Tables 2.2, 2.3), the measurement rules (Sec. 2.1-2.2) and the event times of the
 sequential outage, but not the trajectories, the satellite geometry, the receiver noise, the
-clock model or the jammer. Every such input is collected in :class:`Assumptions` with the
-value used here; the book prints it next to each figure.
+clock model or the jammer. Every such number a claim reads is an input of :data:`IN`, with
+the locator where the paper prints it or, where it does not, a nominal value, a plausible
+range and the reason for both; the ledger evaluates each claim across those ranges. The
+shapes of the flight profiles (when each turn or climb happens) are the scenario's design,
+written out in the trajectory functions and on the missions page.
 
 Nothing here is a model: the models are :mod:`navcore.inertial.error_dynamics` and
 :mod:`navcore.estimation.covariance_analysis`. This module only wires the paper's inputs
@@ -13,6 +16,7 @@ into them.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, fields
 
 import numpy as np
@@ -32,7 +36,7 @@ from navcore.estimation.covariance_analysis import (
 )
 from navcore.estimation.layout import StateLayout
 from navcore.gnss.architectures import loosely_coupled_layout, tightly_coupled_layout
-from navcore.gnss.constellation import nominal_gps_constellation
+from navcore.gnss.constellation import Constellation, nominal_gps_constellation
 from navcore.inertial.error_dynamics import (
     ClockModel,
     ErrorSources,
@@ -57,16 +61,18 @@ from navcore.papers.sp_tables import (
 from navcore.units import DEG, G0, MINUTE
 
 __all__ = [
-    "ASSUMED",
     "IN",
     "SYSTEMS",
-    "Assumptions",
+    "EngineInputs",
     "System",
+    "engine_inputs",
     "error_sources",
     "head_on_approach",
     "head_on_trajectory",
     "helicopter",
+    "helicopter_momentary_carrier_loss",
     "helicopter_trajectory",
+    "initial_error_runs",
     "sequential_outage",
     "sequential_outage_events",
     "sequential_outage_trajectory",
@@ -163,35 +169,143 @@ IN.assumed(
 )
 
 
-@dataclass(frozen=True)
-class Assumptions:
-    """Scenario design the paper does not publish, fixed in this book (printed on the page).
-
-    They define the scenarios rather than enter the ledger as inputs: the assumed inputs that
-    move the claims are declared in :data:`IN` with their ranges.
-    """
-
-    latitude_deg: float = 35.0
-    longitude_deg: float = -117.0
-    cruise_altitude_m: float = 7000.0
-    cruise_speed_mps: float = 200.0
-    pseudorange_noise_m: float = 1.0
-    range_rate_noise_mps: float = 0.05
-    clock_bias_psd_m2_s: float = 0.0036
-    clock_drift_psd_m2_s3: float = 7.1e-5
-    channels: int = 4
-    mask_deg: float = 10.0
-    step_s: float = 1.0
-    helicopter_speed_mps: float = 40.0
-    helicopter_calibration_min: float = 30.0
-    baro_interval_s: float = 10.0
-
-    def table(self) -> list[tuple[str, float]]:
-        """``[(field, value), ...]`` for printing."""
-        return [(f.name, getattr(self, f.name)) for f in fields(self)]
-
-
-ASSUMED = Assumptions()
+# --- the scenario the paper does not publish: every constant a claim reads is an input ------
+IN.published(
+    "step_s",
+    1.0,
+    locator="Sec. 2.2 ('measurements of pseudo-range and pseudo-range rate ... at a 1-Hz rate')",
+    unit="s",
+    quantity="covariance time step (the tightly coupled measurement interval)",
+)
+IN.published(
+    "channels",
+    4,
+    locator="Sec. 2.0 ('there will be four satellites in track')",
+    unit="satellites",
+    quantity="satellites tracked (sequential outage, head-on approach, helicopter)",
+)
+IN.assumed(
+    "latitude_deg",
+    35.0,
+    low=30.0,
+    high=45.0,
+    unit="deg",
+    quantity="latitude of the missions",
+    reason="the paper gives no location; the US flight-test ranges where such systems are flown "
+    "(Eglin 30.5, Edwards and China Lake 35, Patuxent River 38, Wright-Patterson 40 deg N) span "
+    "30-45 deg",
+)
+IN.assumed(
+    "longitude_deg",
+    -117.0,
+    low=-120.0,
+    high=-75.0,
+    grid=3,
+    unit="deg",
+    quantity="longitude of the missions (the constellation choice)",
+    reason="with the nominal 24-satellite constellation at its fixed epoch, the longitude chooses which "
+    "satellites are up and where (the paper's constellation and date are not given); the same US "
+    "test ranges span 120-75 deg W; a grid because the geometry's effect is not monotone",
+)
+IN.assumed(
+    "cruise_altitude_m",
+    7000.0,
+    low=3000.0,
+    high=12000.0,
+    unit="m",
+    quantity="cruise altitude (sequential outage and jammer flyby)",
+    reason="not published; 3-12 km spans transport and fighter cruise altitudes (the head-on mission "
+    "climbs to the 12 km of its '40,000 ft')",
+)
+IN.assumed(
+    "cruise_speed_mps",
+    200.0,
+    low=150.0,
+    high=250.0,
+    unit="m/s",
+    quantity="cruise ground speed (sequential outage and jammer flyby)",
+    reason="not published; 150-250 m/s spans transport and fighter cruise speeds",
+)
+IN.assumed(
+    "pseudorange_noise_m",
+    1.0,
+    low=0.5,
+    high=3.0,
+    unit="m",
+    quantity="white pseudorange noise per 1-s measurement",
+    reason="Table 2.4 gives it only as 'from receiver tracking loop simulation'; 0.5-3 m spans P(Y) "
+    "code receivers of the period at nominal signal levels",
+)
+IN.assumed(
+    "range_rate_noise_mps",
+    0.05,
+    low=0.02,
+    high=0.1,
+    unit="m/s",
+    quantity="white range-rate noise per 1-s measurement",
+    reason="Table 2.4 gives it only as 'from receiver tracking loop simulation'; carrier-derived "
+    "range rate over 1 s is good to a few cm/s (0.02-0.1 m/s)",
+)
+IN.assumed(
+    "clock_bias_psd_m2_s",
+    0.0036,
+    low=0.0036,
+    high=0.009,
+    unit="m²/s",
+    quantity="receiver clock phase (bias) noise PSD",
+    reason="Table 2.4 gives the clock's initial errors, not its noise. S_f = h0 c^2 / 2 of an "
+    "oven-controlled crystal (h0 = 8e-20, nominal) up to a temperature-compensated one (h0 = 2e-19): "
+    "Brown & Hwang, Table 9.2",
+)
+IN.assumed(
+    "clock_drift_psd_m2_s3",
+    7.1e-5,
+    low=7.1e-5,
+    high=0.0355,
+    unit="m²/s³",
+    quantity="receiver clock frequency (drift) noise PSD",
+    reason="S_g = 2 pi^2 h_-2 c^2 of an oven-controlled crystal (h_-2 = 4e-23, nominal) up to a "
+    "temperature-compensated one (h_-2 = 2e-20): Brown & Hwang, Table 9.2",
+)
+IN.assumed(
+    "mask_deg",
+    10.0,
+    low=5.0,
+    high=15.0,
+    unit="deg",
+    quantity="elevation mask of the satellite selection",
+    reason="not published; receivers of the period used 5-15 deg",
+)
+IN.assumed(
+    "baro_interval_s",
+    10.0,
+    low=1.0,
+    high=10.0,
+    unit="s",
+    quantity="interval between barometric altitude updates",
+    reason="Table 2.4 gives the barometer's errors (3 m noise), not its rate; from the tightly coupled "
+    "filter's 1 s to the loosely coupled 10 s",
+)
+IN.assumed(
+    "helicopter_speed_mps",
+    40.0,
+    low=20.0,
+    high=60.0,
+    unit="m/s",
+    quantity="helicopter ground speed (terrain following)",
+    reason="not published; nap-of-the-earth scout flight at 40-120 kn",
+)
+IN.assumed(
+    "helicopter_calibration_min",
+    30.0,
+    low=15.0,
+    high=60.0,
+    unit="min",
+    quantity="helicopter's GPS-aided flight before the jamming",
+    reason="Sec. 2.6.4 keeps GPS 'until on-board estimates of IMU calibration and alignment had reached "
+    "steady state', without a time; 15-60 min spans the settling of the filter's calibration states "
+    "on the book's trajectory",
+)
 
 
 @dataclass(frozen=True)
@@ -223,28 +337,34 @@ def _final(covariance: np.ndarray | None) -> np.ndarray:
     return covariance
 
 
-def truth_layout(*, doppler: bool = False, channels: int = ASSUMED.channels) -> StateLayout:
+def truth_layout(*, doppler: bool = False, channels: int | None = None, clock: bool = True) -> StateLayout:
     """Truth states: the 24 tightly coupled states plus everything Table 2.4/2.5 lists that
     the filters do not carry (instrument misalignments, gravity anomaly, clock
-    g-sensitivity, per-channel pseudorange and range-rate biases, Doppler errors)."""
+    g-sensitivity, per-channel pseudorange and range-rate biases, Doppler errors).
+
+    ``clock=False`` leaves out the user clock (bias, drift, g-sensitivity): in the loosely
+    coupled analysis no measurement sees it (the receiver's position solution removes it) and
+    no navigation error depends on it, so its states are not carried."""
     extra = [
         "gyro misalignment",
         "accel misalignment",
         "gravity",
-        "clock g-sensitivity",
+        *(("clock g-sensitivity",) if clock else ()),
         "pseudorange bias",
         "range-rate bias",
     ]
     if doppler:
         extra += ["doppler bias", "doppler scale factor", "doppler misalignment"]
-    return StateLayout(
-        tightly_coupled_layout().blocks + ins_error_layout(*extra, channels=channels).blocks, "truth"
-    )
+    if channels is None:
+        channels = IN.channels
+    core = tuple(b for b in tightly_coupled_layout().blocks if clock or not b.name.startswith("clock"))
+    return StateLayout(core + ins_error_layout(*extra, channels=channels).blocks, "truth")
 
 
-def error_sources(spec: ImuSpec, doppler: bool = True) -> ErrorSources:
+def error_sources(spec: ImuSpec, doppler: bool = True, clock: bool = True) -> ErrorSources:
     """Table 2.4 (INS-independent) and Table 2.8 errors around one Table 2.5 instrument
-    (``doppler=False``: without the Doppler sensor, whose Table 2.8 errors are then not read)."""
+    (``doppler=False``: without the Doppler sensor, whose Table 2.8 errors are then not read;
+    ``clock=False``: without the user clock, whose Table 2.4 errors and noise are then not read)."""
     t = tab.table_2_4()
     grav, baro = gravity_markov(), barometer_markov()
     dop = table_2_8() if doppler else DopplerErrorModel(0.0, 0.0, 0.0, 0.0, 0.0)
@@ -256,9 +376,11 @@ def error_sources(spec: ImuSpec, doppler: bool = True) -> ErrorSources:
             bias_sigma=t["clock initial offset"].si,
             drift_sigma=t["clock initial drift"].si,
             g_sensitivity_sigma=t["clock g-sensitive drift"].si,
-            bias_psd=ASSUMED.clock_bias_psd_m2_s,
-            drift_psd=ASSUMED.clock_drift_psd_m2_s3,
-        ),
+            bias_psd=IN.clock_bias_psd_m2_s,
+            drift_psd=IN.clock_drift_psd_m2_s3,
+        )
+        if clock
+        else None,
         pseudorange_bias_sigma=t["pseudorange bias"].si,
         range_rate_bias_sigma=t["range-rate bias"].si,
         doppler_bias=(dop.bias_horizontal, dop.bias_horizontal, dop.bias_vertical),
@@ -301,6 +423,10 @@ def _slice(tr: Trajectory, t0: float, t1: float, step: int = 1) -> Trajectory:
     return Trajectory(*(getattr(tr, f.name)[sl] for f in fields(tr)))
 
 
+#: A change of a member's a-priori covariance (truth layout) before a run: ``f(P0, layout)``.
+AprioriTransform = Callable[[np.ndarray, StateLayout], np.ndarray]
+
+
 def _run(
     systems: tuple[System, ...],
     tr: Trajectory,
@@ -313,22 +439,63 @@ def _run(
     resume: dict[System, CovarianceAnalysis] | None = None,
     initial_position: bool = True,
     lc_pseudorange_noise_m: float | None = None,
+    constellation: Constellation | None = None,
 ) -> dict[System, CovarianceAnalysis]:
     """Run several systems on one trajectory and lock table (one batched pass per
     architecture), from the mission start or resuming from ``resume``'s final covariances.
     ``initial_position=False`` starts without horizontal position error;
-    ``lc_pseudorange_noise_m`` replaces the loosely coupled receiver's pseudorange noise."""
-    out: dict[System, CovarianceAnalysis] = {}
-    truth = truth_layout(doppler=doppler, channels=len(channels))
-    geo = satellite_geometry(tr, nominal_gps_constellation(), [int(c) for c in channels])
-    every = max(1, round(ASSUMED.baro_interval_s / tr.dt))
-    baro = baro_schedule(truth, noise_m=tab.IN.barometer_noise_m, every=every)
-    dop = doppler_schedule(truth, tr, noise_mps=IN.doppler_noise_mps) if doppler else None
+    ``lc_pseudorange_noise_m`` replaces the loosely coupled receiver's pseudorange noise;
+    ``constellation`` the nominal 24-satellite one."""
+    runs = _run_list(
+        systems,
+        tr,
+        code,
+        carrier,
+        channels,
+        doppler=doppler,
+        snapshots=snapshots,
+        resume=None if resume is None else [resume[s] for s in systems],
+        initial_position=initial_position,
+        lc_pseudorange_noise_m=lc_pseudorange_noise_m,
+        constellation=constellation,
+    )
+    return dict(zip(systems, runs, strict=True))
+
+
+def _run_list(
+    systems: tuple[System, ...],
+    tr: Trajectory,
+    code: np.ndarray,
+    carrier: np.ndarray,
+    channels: np.ndarray,
+    *,
+    doppler: bool = False,
+    snapshots: tuple[int, ...] = (-1,),
+    resume: list[CovarianceAnalysis] | None = None,
+    initial_position: bool = True,
+    lc_pseudorange_noise_m: float | None = None,
+    constellation: Constellation | None = None,
+    transforms: tuple[AprioriTransform | None, ...] | None = None,
+) -> list[CovarianceAnalysis]:
+    """:func:`_run` for a list of members (a system may appear several times, each with its
+    own ``transforms`` of the a-priori covariance), in the order given."""
+    out: dict[int, CovarianceAnalysis] = {}
+    con = nominal_gps_constellation() if constellation is None else constellation
+    geo = satellite_geometry(tr, con, [int(c) for c in channels])
+    every = max(1, round(IN.baro_interval_s / tr.dt))
+    if transforms is None:
+        transforms = (None,) * len(systems)
     for arch in ("loose", "tight"):
-        group = [s for s in systems if s.architecture == arch]
-        if not group:
+        members = [i for i, s in enumerate(systems) if s.architecture == arch]
+        if not members:
             continue
-        sources = [error_sources(sp_imu_grade(s.grade), doppler) for s in group]
+        # the loosely coupled analysis carries no user clock: no measurement of it sees one
+        tight = arch == "tight"
+        truth = truth_layout(doppler=doppler, channels=len(channels), clock=tight)
+        baro = baro_schedule(truth, noise_m=tab.IN.barometer_noise_m, every=every)
+        dop = doppler_schedule(truth, tr, noise_mps=IN.doppler_noise_mps) if doppler else None
+        group = [systems[i] for i in members]
+        sources = [error_sources(sp_imu_grade(s.grade), doppler, clock=tight) for s in group]
         filt = loosely_coupled_layout() if arch == "loose" else tightly_coupled_layout()
         if doppler:
             filt = StateLayout(
@@ -340,7 +507,7 @@ def _run(
                 geo,
                 code,
                 pseudorange_noise=(
-                    ASSUMED.pseudorange_noise_m if lc_pseudorange_noise_m is None else lc_pseudorange_noise_m
+                    IN.pseudorange_noise_m if lc_pseudorange_noise_m is None else lc_pseudorange_noise_m
                 ),
                 pseudorange_bias_sigma=sources[0].pseudorange_bias_sigma,
             )
@@ -350,11 +517,18 @@ def _run(
                 geo,
                 code,
                 carrier,
-                pseudorange_noise=ASSUMED.pseudorange_noise_m,
-                range_rate_noise=ASSUMED.range_rate_noise_mps,
+                pseudorange_noise=IN.pseudorange_noise_m,
+                range_rate_noise=IN.range_rate_noise_mps,
                 g_load=np.linalg.norm(tr.f_ned, axis=1) / G0,
             )
-        apriori = np.stack([_initial_covariance(truth, src, tr) for src in sources])
+        apriori = np.stack(
+            [
+                _initial_covariance(truth, src, tr)
+                if f is None
+                else f(_initial_covariance(truth, src, tr), truth)
+                for src, f in zip(sources, (transforms[i] for i in members), strict=True)
+            ]
+        )
         if resume is None:
             P0, Pf0 = apriori.copy(), None
             if not initial_position:
@@ -363,8 +537,8 @@ def _run(
                     P0[:, j, :] = 0.0
                     P0[:, :, j] = 0.0
         else:
-            P0 = np.stack([_final(resume[s].final_true) for s in group])
-            Pf0 = np.stack([_final(resume[s].final_filter) for s in group])
+            P0 = np.stack([_final(resume[i].final_true) for i in members])
+            Pf0 = np.stack([_final(resume[i].final_filter) for i in members])
         steps = np.zeros(len(tr), dtype=bool)
         steps[::every] = True  # barometer
         if arch == "loose":
@@ -387,8 +561,60 @@ def _run(
             filter_added_psd=_gravity_tuning(filt, sources[0], float(np.mean(tr.speed))),
         )
         assert isinstance(res, list)  # a stack of initial covariances gives one run each
-        out.update(zip(group, res, strict=True))
-    return out
+        out.update(zip(members, res, strict=True))
+    return [out[i] for i in range(len(systems))]
+
+
+@dataclass(frozen=True)
+class EngineInputs:
+    """What the covariance engine is given for one tightly coupled system on the first
+    seconds of the sequential outage (for writing one step of it out on the missions page)."""
+
+    trajectory: Trajectory
+    truth: StateLayout
+    filter: StateLayout
+    sources: ErrorSources
+    P0: np.ndarray
+    schedule: Callable
+    filter_added_psd: np.ndarray
+
+
+def engine_inputs(system: System, seconds: float) -> EngineInputs:
+    """The tightly coupled ``system`` on the first ``seconds`` of the sequential-outage mission,
+    every code and carrier tracked: its trajectory, truth and filter layouts, error sources,
+    a-priori covariance, measurement schedule (pseudoranges and range rates at 1 Hz, the
+    barometer) and the filter's tuning, exactly as :func:`sequential_outage` passes them to
+    :func:`~navcore.estimation.covariance_analysis.run_covariance_analysis`."""
+    if system.architecture != "tight":
+        raise ValueError("system must be tightly coupled")
+    tr_all = sequential_outage_trajectory(end_free_s())
+    tr = _slice(tr_all, 0.0, seconds)
+    channels = _channels(end_free_s())
+    truth = truth_layout(channels=len(channels))
+    geo = satellite_geometry(tr, nominal_gps_constellation(), [int(c) for c in channels])
+    lock = np.ones((len(tr), len(channels)), dtype=bool)
+    every = max(1, round(IN.baro_interval_s / tr.dt))
+    src = error_sources(sp_imu_grade(system.grade), False)
+    filt = tightly_coupled_layout()
+    gps = tightly_coupled_schedule(
+        truth,
+        geo,
+        lock,
+        lock,
+        pseudorange_noise=IN.pseudorange_noise_m,
+        range_rate_noise=IN.range_rate_noise_mps,
+        g_load=np.linalg.norm(tr.f_ned, axis=1) / G0,
+    )
+    baro = baro_schedule(truth, noise_m=tab.IN.barometer_noise_m, every=every)
+    return EngineInputs(
+        tr,
+        truth,
+        filt,
+        src,
+        _initial_covariance(truth, src, tr),
+        combine_schedules(gps, baro),
+        _gravity_tuning(filt, src, float(np.mean(tr.speed))),
+    )
 
 
 # ------------------------------------------------------------------ sequential outage
@@ -435,7 +661,7 @@ def sequential_outage_events(
 def sequential_outage_trajectory(duration_s: float) -> Trajectory:
     """Cruise at constant height and speed with a 90-degree coordinated turn every 10 min
     (alternating left and right), which makes heading and the gyro errors observable."""
-    a = ASSUMED
+    a = IN
     rate = IN.turn_rate_deg_s
     turn_s = 90.0 / rate
     segs: list[Segment] = [Segment(240.0)]
@@ -487,10 +713,23 @@ def _group(architecture: str) -> tuple[System, ...]:
     return tuple(s for s in SYSTEMS if s.architecture == architecture)
 
 
+def _channel_key(channels: np.ndarray) -> tuple[int, ...]:
+    return tuple(int(c) for c in channels)
+
+
 @input_cache
 def _sequential_common(architecture: str) -> tuple[Trajectory, np.ndarray, dict, dict]:
+    # the runs are keyed on the satellites chosen, so an elevation mask that chooses the same
+    # satellites reuses them
+    return _sequential_common_on(architecture, _channel_key(_channels(end_free_s())))
+
+
+@input_cache
+def _sequential_common_on(
+    architecture: str, channel_key: tuple[int, ...]
+) -> tuple[Trajectory, np.ndarray, dict, dict]:
     tr = sequential_outage_trajectory(end_free_s())
-    channels = _channels(end_free_s())
+    channels = np.array(channel_key)
     ev = sequential_outage_events(len(channels))
     group = _group(architecture)
     a = _phase(group, tr, channels, 0.0, last_code_loss_s(), 1, ev, None)
@@ -498,9 +737,90 @@ def _sequential_common(architecture: str) -> tuple[Trajectory, np.ndarray, dict,
     return tr, channels, a, b
 
 
+def scale_initial_errors(
+    position_velocity: float = 1.0, misalignment: float = 1.0, clock_offset_m: float | None = None
+) -> AprioriTransform:
+    """An a-priori transform: the Table 2.4 initial position and velocity errors scaled by
+    ``position_velocity`` and the gyrocompass misalignment by ``misalignment`` (the rows and
+    columns of each block, so their correlations with the instrument errors scale too), and the
+    initial clock offset set to ``clock_offset_m`` (1 sigma) if given."""
+
+    def f(P: np.ndarray, lay: StateLayout) -> np.ndarray:
+        d = np.ones(lay.size)
+        for block in ("position", "velocity"):
+            d[lay.slice(block)] = position_velocity
+        d[lay.slice("misalignment")] = misalignment
+        out = P * np.outer(d, d)
+        if clock_offset_m is not None:
+            i = lay.index("clock bias")
+            out[i, :] = out[:, i] = 0.0
+            out[i, i] = clock_offset_m**2
+        return out
+
+    return f
+
+
+#: Members of :func:`initial_error_runs`: name -> (position/velocity factor, misalignment factor,
+#: clock-offset reading), the factors given as powers of the check's scale.
+INITIAL_ERROR_MEMBERS: dict[str, tuple[int, int, str | None]] = {
+    "nominal": (0, 0, None),
+    "initial errors up": (1, 1, None),
+    "initial errors down": (-1, -1, None),
+    "misalignment up": (0, 1, None),
+    "misalignment down": (0, -1, None),
+    "clock offset in ns": (0, 0, "ns"),
+}
+
+
+@input_cache
+def initial_error_runs(scale: float) -> dict[str, CovarianceAnalysis]:
+    """The tightly coupled 1 nmi/h system through the sequential outage to reacquisition
+    (2760 s), once per :data:`INITIAL_ERROR_MEMBERS` entry in one batched run: the Table 2.4
+    initial position, velocity and misalignment errors multiplied and divided by ``scale``, the
+    misalignment alone, and the clock offset of Table 2.4 read as 5000 ns (1499 m) instead of
+    5000 m (Sec. 2.3, Sec. 2.4, Table 2.4)."""
+    from navcore.units import C
+
+    tr = sequential_outage_trajectory(end_free_s())
+    channels = _channels(end_free_s())
+    ev = sequential_outage_events(len(channels))
+    system = System("tight", 1.0)
+    names = list(INITIAL_ERROR_MEMBERS)
+    transforms = tuple(
+        scale_initial_errors(
+            scale**pv, scale**mis, None if clock is None else tab.IN.clock_initial_offset_m * 1e-9 * C
+        )
+        for pv, mis, clock in INITIAL_ERROR_MEMBERS.values()
+    )
+    systems = (system,) * len(names)
+    parts: list[list[CovarianceAnalysis]] = []
+    for t0, t1 in ((0.0, last_code_loss_s()), (last_code_loss_s(), reacquisition_s())):
+        trp = _slice(tr, t0, t1)
+        code, carrier = lock_table(trp.t, len(channels), ev)
+        parts.append(
+            _run_list(
+                systems,
+                trp,
+                code,
+                carrier,
+                channels,
+                resume=parts[-1] if parts else None,
+                transforms=transforms,
+            )
+        )
+    return {n: concatenate_analyses([a, b]) for n, a, b in zip(names, *parts, strict=True)}
+
+
 @input_cache
 def _sequential_group(architecture: str, free_inertial: bool) -> dict[System, CovarianceAnalysis]:
-    tr, channels, a, b = _sequential_common(architecture)
+    return _sequential_group_on(architecture, free_inertial, _channel_key(_channels(end_free_s())))
+
+
+@input_cache
+def _sequential_group_on(
+    architecture: str, free_inertial: bool, channel_key: tuple[int, ...]
+) -> dict[System, CovarianceAnalysis]:
+    tr, channels, a, b = _sequential_common_on(architecture, channel_key)
     ev = sequential_outage_events(len(channels), outage_s=None if free_inertial else -1.0)
     end = end_free_s() if free_inertial else END_S
     c = _phase(_group(architecture), tr, channels, reacquisition_s(), end, 1, ev, b)
@@ -528,8 +848,8 @@ def _channels(duration: float) -> np.ndarray:
     return best_geometry_channels(
         sequential_outage_trajectory(duration),
         nominal_gps_constellation(),
-        ASSUMED.channels,
-        ASSUMED.mask_deg,
+        IN.channels,
+        IN.mask_deg,
     )
 
 
@@ -551,7 +871,7 @@ def unaided_after_ground_alignment(initial_position: bool = True) -> dict[System
 def head_on_trajectory() -> Trajectory:
     """Take-off climb to 40,000 ft, a missile-evasion turn, dive to 200 ft, low-level
     ingress, pop-up climb to about 3,000 ft and release (times in :data:`HEAD_ON_TIMES`)."""
-    a = ASSUMED
+    a = IN
     segs = [
         Segment(20.0, path_angle_rate=0.5 * DEG),  # rotate to a 10 deg climb
         Segment(60.0, speed_rate=2.0),  # accelerate in the climb
@@ -584,7 +904,16 @@ def head_on_approach(
     if free_inertial_s is None:
         free_inertial_s = IN.headon_free_loose_s if architecture == "loose" else IN.headon_free_tight_s
     tr = head_on_trajectory()
-    channels = best_geometry_channels(tr, nominal_gps_constellation(), ASSUMED.channels, ASSUMED.mask_deg)
+    channels = best_geometry_channels(tr, nominal_gps_constellation(), IN.channels, IN.mask_deg)
+    return _head_on_on(architecture, free_inertial_s, _channel_key(channels))
+
+
+@input_cache
+def _head_on_on(
+    architecture: str, free_inertial_s: float, channel_key: tuple[int, ...]
+) -> dict[System, CovarianceAnalysis]:
+    tr = head_on_trajectory()
+    channels = np.array(channel_key)
     t_loss = tr.t[-1] - free_inertial_s
     ev = [(t_loss, c, k, False) for c in range(len(channels)) for k in ("code", "carrier")]
     code, carrier = lock_table(tr.t, len(channels), ev)
@@ -598,7 +927,7 @@ def head_on_approach(
 def helicopter_trajectory(duration_s: float) -> Trajectory:
     """Terrain following at constant ground speed: the flight-path angle swings +-4 deg
     with a 60-s period (height changes of about +-25 m), plus a 90-degree turn every 5 min."""
-    a = ASSUMED
+    a = IN
     segs: list[Segment] = []
     t = 0.0
     sign = 1.0
@@ -628,16 +957,45 @@ def helicopter_trajectory(duration_s: float) -> Trajectory:
 def helicopter(doppler: bool) -> dict[float, CovarianceAnalysis]:
     """Tightly coupled helicopter: GPS until calibration reaches steady state
     (``helicopter_calibration_min``), then 19 min jammed; Doppler throughout if ``doppler``."""
-    a = ASSUMED
+    a = IN
     calibration_min = a.helicopter_calibration_min
     duration = (calibration_min + IN.helicopter_jammed_min) * MINUTE
     tr = helicopter_trajectory(duration)
     channels = best_geometry_channels(tr, nominal_gps_constellation(), a.channels, a.mask_deg)
+    return _helicopter_on(doppler, 0.0, _channel_key(channels))
+
+
+@input_cache
+def _helicopter_on(
+    doppler: bool, loss_s: float, channel_key: tuple[int, ...]
+) -> dict[float, CovarianceAnalysis]:
+    """The helicopter on the satellites ``channel_key``; ``loss_s > 0`` drops every carrier for
+    that long at the start of each terrain pull-up while GPS is tracked."""
+    calibration_min = IN.helicopter_calibration_min
+    duration = (calibration_min + IN.helicopter_jammed_min) * MINUTE
+    tr = helicopter_trajectory(duration)
+    channels = np.array(channel_key)
     t_loss = calibration_min * MINUTE
     ev = [(t_loss, c, k, False) for c in range(len(channels)) for k in ("code", "carrier")]
     code, carrier = lock_table(tr.t, len(channels), ev)
+    if loss_s > 0.0:
+        pull_ups = (tr.t % 60.0 < loss_s) & (tr.t > 0.0)  # each 60-s undulation starts with a pull-up
+        carrier = carrier & ~pull_ups[:, None]
     res = _run((System("tight", 10.0), System("tight", 1.0)), tr, code, carrier, channels, doppler=doppler)
     return {s.grade: r for s, r in res.items()}
+
+
+@input_cache
+def helicopter_momentary_carrier_loss(loss_s: float) -> dict[float, CovarianceAnalysis]:
+    """The helicopter without Doppler (Sec. 2.6.4) with every carrier dropped for ``loss_s`` at
+    the start of each terrain pull-up while GPS is tracked (once a minute): the "occasional
+    momentary loss of carrier lock" imposed, to compare with :func:`helicopter`."""
+    a = IN
+    calibration_min = a.helicopter_calibration_min
+    duration = (calibration_min + IN.helicopter_jammed_min) * MINUTE
+    tr = helicopter_trajectory(duration)
+    channels = best_geometry_channels(tr, nominal_gps_constellation(), a.channels, a.mask_deg)
+    return _helicopter_on(False, loss_s, _channel_key(channels))
 
 
 def target_location_sigma(
@@ -649,8 +1007,15 @@ def target_location_sigma(
     ``range_m`` away (default the paper's 8 km) at ``bearing_deg`` from north (default the
     assumed 45 deg, the north-east diagonal), level, using the full end covariance of position
     and attitude error.
+
+    The engine's attitude error is the psi angle, :math:`\\hat C = (I - [\\psi\\times])C`; the
+    paper's formula reads :math:`\\delta\\alpha` with the opposite sign (:math:`\\hat C r^b = r +
+    \\delta\\alpha\\times r`), so the covariance is converted (:math:`\\delta\\alpha = -\\psi`) before
+    it enters :func:`~navcore.location.target_location.target_location_covariance`: the located
+    target is in error by :math:`\\delta r - \\psi\\times r`.
     """
-    from navcore.inertial.error_dynamics import skew_stack
+    from navcore.inertial.error_dynamics import psi_to_attitude_error
+    from navcore.location.target_location import target_location_covariance
 
     if range_m is None:
         range_m = spa.IN.target_range_m  # Sec. 2.6.4 '(8 km)', declared with the acquisition claims
@@ -659,8 +1024,9 @@ def target_location_sigma(
     b = np.radians(bearing_deg)
     P = next(iter(result.snapshots.values()))
     lay = result.truth_layout
-    idx = np.r_[np.arange(lay.size)[lay.slice("position")], np.arange(lay.size)[lay.slice("misalignment")]]
+    T = psi_to_attitude_error(lay)
+    P = T @ P @ T  # psi -> dalpha = -psi
+    p, a = lay.slice("position"), lay.slice("misalignment")
     r = range_m * np.array([np.cos(b), np.sin(b), 0.0])
-    M = np.hstack([np.eye(3), -skew_stack(r)])  # dr + da x r = dr - r x da
-    Pt = M @ P[np.ix_(idx, idx)] @ M.T
+    Pt = target_location_covariance(P[p, p], P[a, a], r, P[p, a])
     return float(np.sqrt(Pt[0, 0] + Pt[1, 1]))
