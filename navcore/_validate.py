@@ -71,6 +71,24 @@ def as_finite_array(name: str, value: ArrayLike, *, ndim: int | None = None) -> 
     return arr
 
 
+#: Largest decibel value whose power ratio 10**(x/10) is a finite float (float max ~ 1.8e308).
+MAX_DECIBELS = 3000.0
+
+
+def power_ratio_from_db(name: str, value: ArrayLike) -> NDArray[np.float64]:
+    """Return the power ratio ``10**(value/10)`` of a finite decibel array.
+
+    A value above :data:`MAX_DECIBELS` (whose ratio overflows to infinity and would travel on
+    as a zero noise term or an infinite ratio) is rejected by name.
+    """
+    arr = as_finite_array(name, value)
+    if np.any(arr > MAX_DECIBELS):
+        raise ValueError(
+            f"{name} must be at most {MAX_DECIBELS:g} dB (its power ratio overflows), got {value!r}"
+        )
+    return np.power(10.0, arr / 10.0)
+
+
 def require_finite(name: str, value: ArrayLike) -> NDArray[np.float64]:
     """Check that ``value`` is finite everywhere and return it as an array."""
     return as_finite_array(name, value)

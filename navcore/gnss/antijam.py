@@ -55,6 +55,7 @@ from navcore._validate import (
     Range,
     as_finite_array,
     check_public,
+    power_ratio_from_db,
     require_integer,
     require_positive,
 )
@@ -396,7 +397,7 @@ def code_tracking_sigma_chips(
     require_positive("spacing_chips", spacing_chips)
     require_positive("integration_s", integration_s)
     require_positive("coherent_s", coherent_s)
-    cn0 = 10.0 ** (as_finite_array("cn0_dbhz", cn0_dbhz) / 10.0)
+    cn0 = power_ratio_from_db("cn0_dbhz", cn0_dbhz)
     var = (
         spacing_chips / (4.0 * cn0 * integration_s) * (1.0 + 2.0 / ((2.0 - spacing_chips) * cn0 * coherent_s))
     )

@@ -75,6 +75,7 @@ from navcore._validate import (
     Range,
     as_finite_array,
     check_public,
+    power_ratio_from_db,
     require_nonnegative,
     require_positive,
 )
@@ -700,7 +701,7 @@ def pll_thermal_jitter_deg(
     """
     require_positive("coherent_s", coherent_s)
     bn = require_positive("noise_bandwidth_hz", as_finite_array("noise_bandwidth_hz", noise_bandwidth_hz))
-    c = 10.0 ** (as_finite_array("cn0_dbhz", cn0_dbhz) / 10.0)
+    c = power_ratio_from_db("cn0_dbhz", cn0_dbhz)
     return _out(np.degrees(np.sqrt(bn / c * (1.0 + 1.0 / (2.0 * coherent_s * c)))))
 
 
@@ -743,7 +744,7 @@ def dll_thermal_jitter_chips(
     if not 0.0 < spacing_chips < 2.0:
         raise ValueError(f"spacing_chips must be in (0, 2), got {spacing_chips!r}")
     bn = require_positive("noise_bandwidth_hz", as_finite_array("noise_bandwidth_hz", noise_bandwidth_hz))
-    c = 10.0 ** (as_finite_array("cn0_dbhz", cn0_dbhz) / 10.0)
+    c = power_ratio_from_db("cn0_dbhz", cn0_dbhz)
     d = spacing_chips
     return _out(np.sqrt(bn * d / (2.0 * c) * (1.0 + 2.0 / (coherent_s * c * (2.0 - d)))))
 
