@@ -1,8 +1,9 @@
 """nox sessions: tests, book (HTML), pdf, figures, lint, ledger, bench, mutation.
 
 Every session installs the full stack from ``requirements/lock.txt`` (a committed
-``uv pip compile`` lock), then navcore itself without dependencies, so that a build next year
-computes the same numbers. uv is the virtual-environment backend, with virtualenv as the
+``uv pip compile --generate-hashes`` lock), with every distribution's hash required, then
+navcore itself without dependencies, so that a build next year computes the same numbers
+from the same bytes. uv is the virtual-environment backend, with virtualenv as the
 fallback.
 
     python3 -m pip install "nox[uv]" && nox -s tests     # the test command
@@ -11,10 +12,13 @@ fallback.
 
 from __future__ import annotations
 
+import hashlib
 import os
 import shutil
 import subprocess
 import sys
+import tempfile
+import time
 from pathlib import Path
 
 import nox
@@ -28,6 +32,7 @@ TEX_PACKAGES = [
     "texlive-xetex",
     "latexmk",
     "fonts-freefont-otf",
+    "make",  # Sphinx's LaTeX Makefile runs latexmk
 ]
 
 nox.options.default_venv_backend = "uv|virtualenv"
@@ -45,8 +50,13 @@ HTML = ROOT / "_build" / "html"
 
 
 def _install(session: nox.Session) -> None:
-    session.install("-r", str(LOCK))
-    session.install("--no-deps", "-e", ".")
+    """The locked stack, every distribution checked against its hash; then navcore itself.
+
+    An editable install cannot be hash-checked, so navcore goes in separately, without
+    dependencies and built with the locked (hash-checked) build backend already installed.
+    """
+    session.install("--require-hashes", "-r", str(LOCK))
+    session.install("--no-deps", "--no-build-isolation", "-e", ".")
 
 
 @nox.session
@@ -54,26 +64,48 @@ def tests(session: nox.Session) -> None:
     """Run pytest: unit tests against oracles, one test per ledger claim, figures, strict build.
 
     The whole suite runs on every core (pytest-xdist, ``-n auto``: two workers on CI's two
-    cores); ``nox -s tests -- ARGS`` passes ARGS to pytest instead (one process unless ARGS
-    ask for workers).
+    cores; ``--dist loadgroup`` keeps the claims of one paper module, which share their model
+    runs, on one worker); ``nox -s tests -- ARGS`` passes ARGS to pytest instead (one process
+    unless ARGS ask for workers).
     """
     _install(session)
-    session.run("python", "-m", "pytest", *(session.posargs or ["-q", "-n", "auto"]))
+    session.run("python", "-m", "pytest", *(session.posargs or ["-q", "-n", "auto", "--dist", "loadgroup"]))
+
+
+# a build stopped by Ctrl-C stops its workers, kernels, Sphinx and LaTeX itself (within seconds):
+# nox waits for that instead of killing it after half a second
+STOPPABLE = {"interrupt_timeout": 20.0, "terminate_timeout": 10.0}
+
+
+def _requested(session: nox.Session) -> list[str]:
+    """The sessions named on the command line (``nox -s book pdf``: both); [] if unknown."""
+    try:
+        return list(session._runner.global_config.sessions or [])
+    except AttributeError:  # pragma: no cover - another nox
+        return []
 
 
 @nox.session
 def book(session: nox.Session) -> None:
     """Build the HTML book strictly (-W -n, failing cells fail) into _build/html; check its links.
 
-    Notebooks execute through a cache keyed by navcore's sources (see tools/build_book.py),
-    so on a clean checkout everything executes and the PDF build reuses the results.
+    Notebooks execute through a cache in which each page is keyed on the navcore modules and
+    data files it imports (see tools/build_book.py): on a clean checkout everything executes,
+    after a change only the pages that depend on it, and the PDF build reuses the results.
+    With ``nox -s book pdf`` the HTML is built once, by the pdf session, after the PDF (so that
+    it links it).
     """
     _install(session)
+    if "pdf" in _requested(session):
+        session.log("the pdf session builds the HTML book after the PDF, so that it links the PDF")
+        return
     _build_html(session)
 
 
 def _build_html(session: nox.Session) -> None:
-    session.run("python", "tools/build_book.py", "--builder", "html", "--cache", *session.posargs)
+    session.run(
+        "python", "tools/build_book.py", "--builder", "html", "--cache", *session.posargs, **STOPPABLE
+    )  # fmt: skip
     # release gates: every internal link and anchor resolves; no code cell shows a build
     # helper; every downloadable notebook carries its outputs
     session.run("python", "tools/check_links.py", str(HTML))
@@ -81,50 +113,104 @@ def _build_html(session: nox.Session) -> None:
     session.log(f"HTML book: {HTML / 'index.html'}")
 
 
-def _ensure_tex(session: nox.Session) -> None:
-    missing = [tool for tool in ("xelatex", "latexmk") if shutil.which(tool) is None]
-    fonts = (
-        subprocess.run(["fc-list", "FreeSerif"], capture_output=True, text=True).stdout
-        if shutil.which("fc-list")
-        else ""
-    )
-    if not missing and fonts.strip():
-        return
+def _tex_missing() -> bool:
+    if any(shutil.which(tool) is None for tool in ("xelatex", "latexmk", "make")):
+        return True
+    if shutil.which("fc-list") is None:
+        return True
+    return not subprocess.run(["fc-list", "FreeSerif"], capture_output=True, text=True).stdout.strip()
+
+
+def _start_tex(session: nox.Session) -> subprocess.Popen | None:
+    """Start installing TeX in the background (root, Debian), or fail early with the command.
+
+    The install (about two minutes on a bare machine, mostly download and unpacking) runs while
+    the Python environment installs and the notebooks execute; the LaTeX run waits for it.
+    """
+    if not _tex_missing():
+        return None
     command = ["apt-get", "install", "-y", "--no-install-recommends", *TEX_PACKAGES]
-    if hasattr(os, "geteuid") and os.geteuid() == 0 and shutil.which("apt-get"):
-        session.log("installing the TeX packages for the PDF book with apt-get")
-        env = {"DEBIAN_FRONTEND": "noninteractive"}
-        session.run("apt-get", "update", "-qq", external=True, env=env)
-        session.run(*command, "-qq", external=True, env=env)
-    else:
+    if not (hasattr(os, "geteuid") and os.geteuid() == 0 and shutil.which("apt-get")):
         session.error(
-            "The PDF book needs XeLaTeX, latexmk and the FreeFont fonts. Install them with:\n"
+            "The PDF book needs XeLaTeX, latexmk, make and the FreeFont fonts. Install them with:\n"
             f"    sudo {' '.join(command)}"
         )
+    session.log("installing the TeX packages for the PDF book with apt-get, in the background")
+    log = ROOT / "_build" / "tex-install.log"
+    log.parent.mkdir(parents=True, exist_ok=True)
+    lock = ["-o", "DPkg::Lock::Timeout=600"]
+    script = f"apt-get update -qq && {' '.join([*command[:2], *lock, *command[2:]])} -qq"
+    with open(log, "w") as out:
+        return subprocess.Popen(
+            ["sh", "-c", script], stdout=out, stderr=subprocess.STDOUT,
+            env={**os.environ, "DEBIAN_FRONTEND": "noninteractive"},
+        )  # fmt: skip
+
+
+def _wait_tex(session: nox.Session, proc: subprocess.Popen | None) -> None:
+    if proc is None:
+        return
+    start = time.monotonic()
+    code = proc.wait()
+    log = ROOT / "_build" / "tex-install.log"
+    if code != 0 or _tex_missing():
+        session.error(f"installing TeX failed (exit {code}):\n{log.read_text()[-3000:]}")
+    session.log(f"TeX is installed (waited {time.monotonic() - start:.0f} s for it)")
 
 
 @nox.session
 def pdf(session: nox.Session) -> None:
     """Build the PDF book with XeLaTeX into _build/latex/book.pdf (installs TeX if root).
 
-    If an HTML book already exists (``nox -s book pdf`` builds it first), it is rebuilt from
-    the execution cache so that every page links the PDF, whatever the order of the sessions.
+    TeX installs in the background while the notebooks execute and Sphinx writes the LaTeX
+    sources. If an HTML book already exists, or ``nox -s book pdf`` asked for one, the HTML is
+    then built from the execution cache so that every page links the PDF.
     """
-    _ensure_tex(session)
-    _install(session)
-    pdf_path = ROOT / "_build" / "latex" / "book.pdf"
-    pdf_path.unlink(missing_ok=True)
-    session.run("python", "tools/build_book.py", "--builder", "pdflatex", "--cache", *session.posargs)
+    tex = _start_tex(session)
+    try:
+        _install(session)
+        pdf_path = ROOT / "_build" / "latex" / "book.pdf"
+        pdf_path.unlink(missing_ok=True)
+        session.run(
+            "python", "tools/build_book.py", "--builder", "latex", "--cache", *session.posargs, **STOPPABLE
+        )  # fmt: skip
+        _wait_tex(session, tex)
+        session.run("python", "tools/build_book.py", "--latex-to-pdf", **STOPPABLE)
+    finally:
+        if tex is not None and tex.poll() is None:  # stopped early: let apt finish what it unpacks
+            tex.wait()
     if not pdf_path.exists():
         session.error(f"the LaTeX build did not produce {pdf_path}")
     # release gate: nothing runs off the page; no code listing shows a build helper
     session.run("python", "tools/check_book.py", "latex", str(pdf_path.parent))
     session.log(f"PDF book: {pdf_path}")
-    if (HTML / "book.pdf").exists():  # the HTML already links a PDF: give it the new one
+    if "book" in _requested(session):
+        _build_html(session)
+    elif (HTML / "book.pdf").exists():  # the HTML already links a PDF: give it the new one
         shutil.copy2(pdf_path, HTML / "book.pdf")
     elif (HTML / "index.html").exists():
         session.log("an HTML book exists without the PDF: rebuilding it to link the PDF")
         _build_html(session)
+
+
+REPRO = ROOT / "_build" / "reproducible"
+
+
+def _checkout_fingerprint() -> str:
+    """A hash of everything a book build reads from the checkout (library, pages, settings, tools)."""
+    h = hashlib.sha256()
+    files = [ROOT / "_config.yml", LOCK, *sorted((ROOT / "tools").glob("*.py"))]
+    for folder in ("navcore", "book"):
+        files += sorted(p for p in (ROOT / folder).rglob("*") if p.is_file() and "__pycache__" not in p.parts)
+    for f in files:
+        if "_toc_subset_" not in f.name:
+            h.update(f.relative_to(ROOT).as_posix().encode() + b"\0" + f.read_bytes())
+    return h.hexdigest()
+
+
+def _executed_here(marker: Path) -> bool:
+    """Whether ``--execute-only`` completed on this very checkout (else the clean build executes)."""
+    return marker.exists() and marker.read_text() == _checkout_fingerprint()
 
 
 @nox.session
@@ -137,35 +223,59 @@ def reproducible(session: nox.Session) -> None:
     ``nox -s reproducible -- --against _build/html`` makes one clean build and compares it
     with an existing one (CI passes the book it has just built from a clean checkout, so
     the notebooks execute twice in all, not three times). If that book links the PDF, the
-    clean build is given the same PDF to link.
+    clean build is given the same PDF to link. ``-- --execute-only`` does the clean build's
+    execution alone, with fresh execution and ledger caches in ``_build/reproducible``
+    (CI runs it beside the other book build); a later ``--against`` run renders from it.
     """
     _install(session)
-    import tempfile
+    args = list(session.posargs)
+    out, cache, ledger_cache = REPRO / "out", REPRO / "cache", REPRO / "navcore-cache"
+    # fresh execution and ledger caches, and a fresh temporary folder (the KZL Monte Carlo
+    # keeps its runs there): nothing computed by another build is read
+    scratch = Path(tempfile.mkdtemp(prefix="navcore-repro-"))
+    env = {"NAVCORE_BOOK_CACHE": str(cache), "NAVCORE_CACHE": str(ledger_cache), "TMPDIR": str(scratch)}
+    build = ["python", "tools/build_book.py", "--builder", "html", "--cache", "--out", str(out)]
+    executed = REPRO / "executed"  # the execution-only run completed
+    try:
+        _reproducible(session, args, build, env, executed, out)
+    finally:
+        shutil.rmtree(scratch, ignore_errors=True)
 
+
+def _reproducible(
+    session: nox.Session, args: list[str], build: list[str], env: dict[str, str], executed: Path, out: Path
+) -> None:
+    if args == ["--execute-only"]:
+        shutil.rmtree(REPRO, ignore_errors=True)
+        session.run(*build, "--execute-only", env=env, **STOPPABLE)
+        executed.write_text(_checkout_fingerprint())
+        return
     against = None
-    if session.posargs:
-        if len(session.posargs) != 2 or session.posargs[0] != "--against":
-            session.error("usage: nox -s reproducible [-- --against BUILT_HTML_DIR]")
-        against = Path(session.posargs[1]).resolve()
+    if args:
+        if len(args) != 2 or args[0] != "--against":
+            session.error("usage: nox -s reproducible [-- --against BUILT_HTML_DIR | -- --execute-only]")
+        against = Path(args[1]).resolve()
         if not (against / "index.html").exists():
             session.error(f"--against {against}: no built HTML book there")
-    with tempfile.TemporaryDirectory(prefix="navcore-repro-") as tmp:
-        out, cache, first = Path(tmp) / "out", Path(tmp) / "cache", Path(tmp) / "first"
-        ledger_cache = Path(tmp) / "navcore-cache"  # the claims are evaluated afresh too
-        for run in ("first", "second") if against is None else ("second",):
-            for folder in (out, cache, ledger_cache):
-                shutil.rmtree(folder, ignore_errors=True)
-            if against is not None and (against / "book.pdf").exists():
-                (out / "_build" / "latex").mkdir(parents=True)
-                shutil.copy2(against / "book.pdf", out / "_build" / "latex" / "book.pdf")
-            session.run(
-                "python", "tools/build_book.py", "--builder", "html", "--cache", "--out", str(out),
-                env={"NAVCORE_BOOK_CACHE": str(cache), "NAVCORE_CACHE": str(ledger_cache)},
-            )  # fmt: skip
-            if run == "first":
-                shutil.move(str(out / "_build" / "html"), first)
-        reference = first if against is None else against
-        session.run("python", "tools/check_book.py", "same", str(reference), str(out / "_build" / "html"))
+    first = REPRO.with_name("reproducible-first")
+    for run in ("first", "second") if against is None else ("second",):
+        reuse = run == "second" and against is not None and _executed_here(executed)
+        if reuse:
+            session.log("rendering the clean execution that --execute-only made of this checkout")
+        else:  # fresh execution and ledger caches, and an empty temporary folder
+            shutil.rmtree(REPRO, ignore_errors=True)
+            shutil.rmtree(env["TMPDIR"], ignore_errors=True)
+            Path(env["TMPDIR"]).mkdir()
+        shutil.rmtree(out, ignore_errors=True)
+        if against is not None and (against / "book.pdf").exists():
+            (out / "_build" / "latex").mkdir(parents=True)
+            shutil.copy2(against / "book.pdf", out / "_build" / "latex" / "book.pdf")
+        session.run(*build, env=env, **STOPPABLE)
+        if run == "first":
+            shutil.rmtree(first, ignore_errors=True)
+            shutil.move(str(out / "_build" / "html"), first)
+    reference = first if against is None else against
+    session.run("python", "tools/check_book.py", "same", str(reference), str(out / "_build" / "html"))
 
 
 @nox.session
@@ -190,8 +300,9 @@ def ledger(session: nox.Session) -> None:
 
     Every claim is computed afresh (the on-disk evaluation cache is off), so two runs of this
     session are an honest determinism check. ``nox -s ledger -- --twice`` is that check in
-    one session (CI's gate): two fresh processes evaluate the ledger side by side, one per
-    core, and their JSON exports must be byte-identical (tools/ledger_twice.py).
+    one session (CI's gate): two fresh processes evaluate the ledger side by side, one in
+    itself and one on two workers, and their JSON exports must be byte-identical
+    (tools/ledger_twice.py).
     """
     _install(session)
     env = {"NAVCORE_CACHE": "off", "NAVCORE_NO_DISK_CACHE": "1"}

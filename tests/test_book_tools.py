@@ -372,3 +372,44 @@ def test_api_links_with_words_read_in_text_font():
     refs = list(doc.findall(nodes.reference))
     assert [type(r.children[0]).__name__ for r in refs] == ["inline", "literal"]
     assert [r.astext() for r in refs] == ["the federated fusion", "federated_fuse"]
+
+
+build_tool = _load(ROOT / "tools" / "build_book.py", "build_book_tools")
+
+
+def test_the_build_log_keeps_warnings_and_drops_jupyter_books_banners(capsys):
+    """Oracle: jupyter-book's banners as it prints them, and a warning the strict build fails on."""
+    import io
+
+    printed = (
+        "\x1b[92m===============================================================================\x1b[0m\n"
+        "\n"
+        "Running Jupyter-Book v1.0.4.post1\n"
+        "Source Folder: /repo/book\n"
+        "Config Path: /repo/_build/jupyter_cache/_config_cached.yml\n"
+        "Output Path: /repo/_build/html\n"
+        "/repo/book/wf/01-location-error.md:12: WARNING: undefined label: 'sec-missing'\n"
+        "Finished generating HTML for book.\n"
+        "Your book's HTML pages are here:\n"
+        "    _build/html/\n"
+        "You can look at your book by opening this file in a browser:\n"
+        "    _build/html/index.html\n"
+        "Or paste this line directly into your browser bar:\n"
+        "    file:///repo/_build/html/index.html            \n"
+        "Building your book, returns a non-zero exit code (1). Look above for the cause.\n"
+    )
+    build_tool._relay_quietly(io.StringIO(printed))
+    assert capsys.readouterr().out == (
+        "/repo/book/wf/01-location-error.md:12: WARNING: undefined label: 'sec-missing'\n"
+    )
+
+
+def test_pages_that_read_every_papers_claims_run_after_the_paper_chapters(tmp_path):
+    """Oracle: the grouping written out by hand (paper chapters heaviest ledger first, then the rest)."""
+    pages = [tmp_path / p for p in ("intro.md", "wf/01-a.md", "across/01-b.md", "kzl/01-c.md", "wf/02-d.md")]
+    papers, later = build_tool._group_pages(pages, tmp_path)
+    assert papers == [
+        ("KZL", [str(tmp_path / "kzl/01-c.md")]),
+        ("WF", [str(tmp_path / "wf/01-a.md"), str(tmp_path / "wf/02-d.md")]),
+    ]
+    assert later == [("ACROSS", [str(tmp_path / "across/01-b.md")]), ("", [str(tmp_path / "intro.md")])]

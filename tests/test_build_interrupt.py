@@ -1,82 +1,61 @@
-"""Stopping a book build stops every process it started and leaves the execution cache valid.
+"""Stopping a book build stops every process it started, at every phase, and the next build works.
 
-A two-chapter toy book is executed by the build's own pre-execution step (one worker per
-chapter, each with its own kernel). Chapter ``b`` is quick and is stored in the cache;
-chapter ``a`` sleeps in its kernel. The build is then stopped the three ways it can be:
-Ctrl-C (SIGINT to the whole process group), SIGTERM to the build process alone, and the death
-of the process that started it (nox killed: SIGKILL to the parent). Within a few seconds no
-process of the build may be left (workers and kernels included), and the cache must hold
-exactly the finished chapter, readable and matching its page.
+A toy book (tests/_toybook.py) is built by the real build tool. Each test drives the build to
+one phase by what it prints, not by a fixed sleep: the chapter's ledger warm-up in its kernel,
+a page executing in a worker's kernel, Sphinx reading, Sphinx writing, and the LaTeX run of the
+PDF. It then stops the build one of the ways a user or a tool can: Ctrl-C (SIGINT to the whole
+process group), SIGINT or SIGTERM to the build process alone, SIGTERM to the group, or the death
+of the process that started it (nox killed). Within 10 s no process of the build may be left
+(workers, kernels, Sphinx, LaTeX), every entry of the execution cache must be whole and match its
+page, and a next build (nothing lingering this time) must succeed.
 """
 
 from __future__ import annotations
 
-import importlib.util
+import json
 import os
+import re
+import shutil
 import signal
 import subprocess
 import sys
+import threading
 import time
 from pathlib import Path
 
 import pytest
+from _toybook import ROOT, build_command, build_env, make_book
 
-ROOT = Path(__file__).resolve().parents[1]
+pytestmark = [
+    pytest.mark.slow,
+    pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads /proc"),
+]
 
-pytestmark = pytest.mark.slow
-
-HEADER = """---
-kernelspec:
-  display_name: Python 3
-  language: python
-  name: python3
----
-
-# {title}
-
-```{{code-cell}} ipython3
-{code}
-```
-"""
-
-SLOW = """import os, pathlib, time
-pathlib.Path({mark!r}).write_text(str(os.getpid()))
-time.sleep(600)"""
-
-RUNNER = """
-import sys
-from pathlib import Path
-sys.path.insert(0, {tools!r})
-import build_book as mod
-if {stop_with_parent}:
-    mod._set_parent_death_signal()
-book = Path({book!r})
-pages = sorted(book.rglob("*.md"))
-try:
-    mod.prefill(Path({cache!r}), pages, jobs=2, book=book)
-except KeyboardInterrupt:
-    sys.exit(130)
-"""
+SLOW_PAGE = """import os, pathlib, time
+pathlib.Path("slow-kernel.pid").write_text(str(os.getpid()))
+print("slow page")
+time.sleep(600 if os.environ.get("TOY_LINGER") == "page" else 0)"""
 
 
-def _children() -> dict[int, list[int]]:
-    tree: dict[int, list[int]] = {}
+def _table() -> dict[int, tuple[int, str]]:
+    table = {}
     for entry in Path("/proc").iterdir():
-        if not entry.name.isdigit():
-            continue
-        try:
-            stat = (entry / "stat").read_text()
-        except OSError:
-            continue
-        ppid = int(stat.rsplit(")", 1)[1].split()[1])
-        tree.setdefault(ppid, []).append(int(entry.name))
-    return tree
+        if entry.name.isdigit():
+            try:
+                fields = (entry / "stat").read_text().rsplit(")", 1)[1].split()
+            except OSError:
+                continue
+            table[int(entry.name)] = (int(fields[1]), fields[0])
+    return table
 
 
 def _descendants(pid: int) -> set[int]:
-    tree, found, todo = _children(), set(), [pid]
+    children: dict[int, list[int]] = {}
+    for child, (parent, _) in _table().items():
+        children.setdefault(parent, []).append(child)
+    found, todo = set(), [pid]
     while todo:
-        for child in tree.get(todo.pop(), []):
+        for child in children.get(todo.pop(), []):
             if child not in found:
                 found.add(child)
                 todo.append(child)
@@ -85,79 +64,173 @@ def _descendants(pid: int) -> set[int]:
 
 def _alive(pid: int) -> bool:
     try:
-        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+        return Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0] != "Z"
     except OSError:
         return False
-    return state != "Z"
 
 
-def _wait(predicate, timeout: float) -> bool:
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        if predicate():
-            return True
-        time.sleep(0.2)
-    return predicate()
+def _cmdline(pid: int) -> str:
+    try:
+        return Path(f"/proc/{pid}/cmdline").read_text().replace("\0", " ")[:200]
+    except OSError:
+        return "?"
 
 
-@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads /proc")
-@pytest.mark.parametrize("how", ["sigint-group", "sigterm-build", "parent-killed"])
-def test_interrupt_stops_every_process_and_keeps_the_cache_valid(how: str, tmp_path: Path) -> None:
+class Build:
+    """A build started in its own session, its output read line by line."""
+
+    def __init__(self, cmd: list[str], env: dict[str, str], cwd: Path, via_parent: bool = False) -> None:
+        if via_parent:  # a stand-in for nox: a shell that runs the build, and is then killed
+            cmd = ["/bin/sh", "-c", '"$@"; sleep 600', "sh", *cmd]
+            env = dict(env, NAVCORE_STOP_WITH_PARENT="1")
+        self.proc = subprocess.Popen(
+            cmd, cwd=cwd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+            start_new_session=True,
+        )  # fmt: skip
+        self.lines: list[str] = []
+        self._cond = threading.Condition()
+        self._reader = threading.Thread(target=self._read, daemon=True)
+        self._reader.start()
+
+    def _read(self) -> None:
+        assert self.proc.stdout is not None
+        for line in self.proc.stdout:
+            with self._cond:
+                self.lines.append(line)
+                self._cond.notify_all()
+
+    def wait_for(self, pattern: str, timeout: float = 300) -> None:
+        regex = re.compile(pattern)
+        with self._cond:
+            ok = self._cond.wait_for(lambda: any(regex.search(line) for line in self.lines), timeout)
+        assert ok, f"never printed {pattern!r}:\n{''.join(self.lines[-40:])}"
+
+    def log(self) -> str:
+        return "".join(self.lines)
+
+    def close(self) -> None:
+        self._reader.join(10)
+        assert self.proc.stdout is not None
+        self.proc.stdout.close()
+
+
+def _stop_and_check(build: Build, how: str, extra: set[int] = frozenset()) -> None:  # type: ignore[assignment]
+    started = _descendants(build.proc.pid) | set(extra)
+    if how == "int-group":
+        os.killpg(build.proc.pid, signal.SIGINT)
+    elif how == "term-group":
+        os.killpg(build.proc.pid, signal.SIGTERM)
+    elif how == "int-top":
+        build.proc.send_signal(signal.SIGINT)
+    elif how == "term-top":
+        build.proc.send_signal(signal.SIGTERM)
+    elif how == "parent-killed":
+        build.proc.send_signal(signal.SIGKILL)
+    else:  # pragma: no cover
+        raise ValueError(how)
+    t0 = time.monotonic()
+    try:
+        while time.monotonic() - t0 < 10 and any(_alive(p) for p in started | {build.proc.pid}):
+            time.sleep(0.1)
+            build.proc.poll()
+        left = [(p, _cmdline(p)) for p in started if _alive(p)]
+        assert not left, f"still running {time.monotonic() - t0:.1f} s after {how}: {left}\n{build.log()}"
+        if how != "parent-killed":
+            assert build.proc.wait(1) != 0
+    finally:
+        for pid in started | {build.proc.pid}:
+            if _alive(pid):
+                os.kill(pid, signal.SIGKILL)
+        build.proc.wait()
+        build.close()
+
+
+def _check_cache(tmp: Path, book: Path) -> int:
+    """Every entry of the execution cache is whole (notebook and dependency record) and matches a page."""
+    sys.path.insert(0, str(ROOT / "tools"))
+    try:
+        import build_book
+    finally:
+        sys.path.pop(0)
     from jupyter_cache import get_cache
 
-    book = tmp_path / "book"
-    mark = tmp_path / "slow-kernel.pid"
-    (book / "a").mkdir(parents=True)
-    (book / "b").mkdir()
-    (book / "a" / "1-slow.md").write_text(HEADER.format(title="Slow", code=SLOW.format(mark=str(mark))))
-    (book / "b" / "1-quick.md").write_text(HEADER.format(title="Quick", code="1 + 1"))
-    cache = tmp_path / "cache"
-    runner = RUNNER.format(
-        tools=str(ROOT / "tools"),
-        book=str(book),
-        cache=str(cache),
-        stop_with_parent=how == "parent-killed",
-    )
-    if how == "parent-killed":
-        # a stand-in for nox: a shell that runs the build and is then killed
-        cmd = ["/bin/sh", "-c", f'"{sys.executable}" -c "$0"; sleep 600', runner]
-    else:
-        cmd = [sys.executable, "-c", runner]
-    proc = subprocess.Popen(cmd, cwd=tmp_path, start_new_session=True)
-    try:
-        assert _wait(mark.exists, 120), "the slow page never started"
-        kernel = int(mark.read_text())
-        # the quick chapter is stored before the slow one is interrupted
-        assert _wait(lambda: len(get_cache(str(cache)).list_cache_records()) == 1, 60)
-        started = _descendants(proc.pid) | {kernel}
-        assert len(started) >= 3, started  # at least two workers and the slow kernel
-        if how == "sigint-group":
-            os.killpg(proc.pid, signal.SIGINT)
-        elif how == "sigterm-build":
-            proc.send_signal(signal.SIGTERM)
-        else:
-            proc.send_signal(signal.SIGKILL)
-        t0 = time.monotonic()
-        assert _wait(lambda: not any(_alive(p) for p in started), 10), [
-            (p, Path(f"/proc/{p}/cmdline").read_text()) for p in started if _alive(p)
-        ]
-        assert time.monotonic() - t0 < 10
-        if how != "parent-killed":
-            assert proc.wait(10) != 0
-    finally:
-        if proc.poll() is None:
-            os.killpg(proc.pid, signal.SIGKILL)
-            proc.wait()
+    folders = [p for p in (tmp / "jupyter_cache").iterdir() if p.is_dir()]
+    assert len(folders) == 1
+    cache = get_cache(str(folders[0]))
+    pages = {str(p): build_book._read_notebook(p) for p in book.rglob("[0-9]*.md")}
+    records = cache.list_cache_records()
+    for record in records:
+        folder = Path(cache._get_notebook_path_cache(record.hashkey)).parent
+        assert (folder / "base.ipynb").exists()
+        assert set(json.loads((folder / "navcore-deps.json").read_text())) == {
+            "modules",
+            "files",
+            "module_list",
+        }
+        assert cache.match_cache_notebook(pages[record.uri]).pk == record.pk
+    return len(records)
 
-    # the cache holds the finished chapter, whole and matching its page, and nothing else
-    spec = importlib.util.spec_from_file_location("build_book_t", ROOT / "tools" / "build_book.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    store = get_cache(str(cache))
-    records = store.list_cache_records()
-    assert len(records) == 1
-    bundle = store.get_cache_bundle(records[0].pk)
-    assert bundle.nb.cells[0].outputs[0]["data"]["text/plain"] == "2"
-    store.match_cache_notebook(mod._read_notebook(book / "b" / "1-quick.md"))
-    with pytest.raises(KeyError):
-        store.match_cache_notebook(mod._read_notebook(book / "a" / "1-slow.md"))
+
+def _next_build_succeeds(cmd: list[str], tmp: Path, builder_dir: str = "html") -> str:
+    proc = subprocess.run(cmd, cwd=tmp, env=build_env(tmp), capture_output=True, text=True, timeout=600)
+    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    assert any((tmp / "out" / "_build" / builder_dir).iterdir())
+    return proc.stdout
+
+
+@pytest.mark.parametrize("how", ["term-top", "int-top", "parent-killed"])
+def test_stop_while_a_page_executes(how: str, tmp_path: Path) -> None:
+    book, config = make_book(tmp_path, {"b": {"1-quick.md": "1 + 1", "2-slow.md": SLOW_PAGE}})
+    cmd = build_command(book, config, tmp_path / "out")
+    build = Build(cmd, build_env(tmp_path, TOY_LINGER="page"), tmp_path, via_parent=how == "parent-killed")
+    build.wait_for(r"prefill:\s+[\d.]+ s\s+b/1-quick.md")  # the quick page is stored
+    marker = book / "b" / "slow-kernel.pid"
+    deadline = time.monotonic() + 120
+    while not marker.exists() and time.monotonic() < deadline:
+        time.sleep(0.1)
+    kernel = int(marker.read_text())  # the slow page is running in its kernel
+    _stop_and_check(build, how, {kernel})
+    assert _check_cache(tmp_path, book) == 1  # the quick page, whole; the slow one not at all
+    out = _next_build_succeeds(cmd, tmp_path)
+    assert "b/2-slow.md (not in the cache)" in out and "1-quick.md" not in out
+
+
+def test_ctrl_c_during_the_ledger_warm_up(tmp_path: Path) -> None:
+    """A chapter named for a paper evaluates that paper's claims first, in its kernel."""
+    book, config = make_book(tmp_path, {"wf": {"1-quick.md": "1 + 1"}})
+    cmd = build_command(book, config, tmp_path / "out")
+    build = Build(cmd, build_env(tmp_path, NAVCORE_CACHE="off"), tmp_path)
+    build.wait_for(r"prefill: WF: evaluating the chapter's claims")
+    _stop_and_check(build, "int-group")
+    assert _check_cache(tmp_path, book) == 0
+    assert "wf/1-quick.md (not in the cache)" in _next_build_succeeds(cmd, tmp_path)
+
+
+@pytest.mark.parametrize(("phase", "how"), [("reading", "int-group"), ("writing", "term-top")])
+def test_stop_while_sphinx_runs(phase: str, how: str, tmp_path: Path) -> None:
+    book, config = make_book(tmp_path, {"b": {"1-quick.md": "1 + 1"}})
+    cmd = build_command(book, config, tmp_path / "out")
+    build = Build(cmd, build_env(tmp_path, TOY_LINGER=phase), tmp_path)
+    build.wait_for(f"toy: sphinx {phase}")
+    _stop_and_check(build, how)
+    assert _check_cache(tmp_path, book) == 1
+    assert "all 1 notebooks are in the cache" in _next_build_succeeds(cmd, tmp_path)
+
+
+@pytest.mark.skipif(shutil.which("xelatex") is None, reason="no XeLaTeX")
+def test_ctrl_c_during_the_latex_run(tmp_path: Path) -> None:
+    book, config = make_book(tmp_path, {"b": {"1-quick.md": "1 + 1"}}, slow_latex=True)
+    cmd = build_command(book, config, tmp_path / "out", builder="pdflatex")
+    build = Build(cmd, build_env(tmp_path), tmp_path)
+    build.wait_for(r"latex: typesetting")
+    deadline = time.monotonic() + 60  # and XeLaTeX is running (latexmk is quiet)
+    while time.monotonic() < deadline and not any(
+        "xelatex" in _cmdline(p) for p in _descendants(build.proc.pid)
+    ):
+        time.sleep(0.1)
+    time.sleep(0.5)  # inside the TeX run, not at its first line
+    _stop_and_check(build, "int-group")
+    assert _check_cache(tmp_path, book) == 1
+    make_book(tmp_path, {"b": {"1-quick.md": "1 + 1"}})  # a quick preamble this time
+    _next_build_succeeds(cmd, tmp_path, "latex")
+    assert (tmp_path / "out" / "_build" / "latex" / "book.pdf").exists()

@@ -258,7 +258,7 @@ def test_cli_ledger_json_and_exit_status(monkeypatch, capsys):
         evaluate(make()),
         evaluate(make(id="WF-b", published=True, unit="statement", compute=lambda: True)),
     ]
-    monkeypatch.setattr(ledger, "evaluations", lambda paper=None, prefix=None: evals)
+    monkeypatch.setattr(ledger, "evaluations", lambda paper=None, prefix=None, n_jobs=None: evals)
     assert cli.main(["ledger", "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
     assert [d["id"] for d in data] == ["WF-test", "WF-b"]
@@ -276,7 +276,9 @@ def test_cli_exit_status_nonzero_on_failure(monkeypatch, capsys):
     from navcore import ledger
 
     failing = make(compute=lambda: 99.0)
-    monkeypatch.setattr(ledger, "evaluations", lambda paper=None, prefix=None: [evaluate(failing)])
+    monkeypatch.setattr(
+        ledger, "evaluations", lambda paper=None, prefix=None, n_jobs=None: [evaluate(failing)]
+    )
     assert cli.main(["ledger"]) == 1
     assert "FAIL WF-test" in capsys.readouterr().err
 

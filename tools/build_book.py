@@ -7,42 +7,60 @@ Usage::
     python tools/build_book.py --only wf       # intro + the WF chapter + ledger/errata pages,
                                                # into _build/subset-wf (fast check of one chapter)
 
-``--cache`` executes through a jupyter-cache whose folder is keyed by a hash of navcore's
-sources, the lock file, the execution settings of ``_config.yml`` and this tool: on a clean
-checkout every notebook is executed (as with ``force``), and a second build with the same
-code (the PDF after the HTML, or a rebuild after editing one chapter) re-executes only the
-notebooks whose text changed. Any change to navcore changes the key, so results are never stale.
+``--cache`` executes through a jupyter-cache whose folder is keyed by the lock file, the
+execution settings of ``_config.yml`` and this tool. Each executed page is stored with what
+it depends on: the navcore modules it imported (directly, through the modules they import,
+and through the modules that navcore itself imported by name, such as the ledger's paper
+modules), the data files those modules read, and the list of navcore's module files, each
+with a hash of its contents. A page is re-executed when its text changed or when one of those
+contents changed, and the build prints which pages execute and why ("imports
+navcore.gnss.tracking, changed"); every other page comes from the cache.
 
-With ``--cache`` the notebooks that the cache lacks are executed *before* Sphinx runs,
-``--jobs`` at a time (default: the number of cores), each in its own kernel exactly as
-MyST-NB would execute it (same reader, same working directory, same executor), and stored in
-the cache; Sphinx then finds every notebook there. The ledger's on-disk evaluation cache is
-filled first, one paper per worker, so that the pages' claims tables, the ledger page and the
-errata page read the same evaluations instead of recomputing them. A notebook that fails
-is not stored, so Sphinx executes it again and the strict build fails with its traceback.
-The execution time of every page and chapter is printed and written to
-``<out>/_build/page-times.json``.
+With ``--cache`` the notebooks to execute run *before* Sphinx, ``--jobs`` chapters at a time
+(default: the number of cores), each chapter in one kernel exactly as MyST-NB would execute
+it (same reader, same working directory, same executor), and are stored in the cache; Sphinx
+then finds every notebook there. A chapter's kernel first evaluates the chapter's ledger
+claims (filling the on-disk evaluation cache that the ledger and errata pages read); when a
+page of the front or back matter executes, every paper's claims are evaluated that way first,
+one paper per worker. A notebook that fails is not stored, so Sphinx executes it again and the
+strict build fails with its traceback. The execution time of every page and chapter is
+printed and written to ``<out>/_build/page-times.json``.
 
 The build is strict: forced execution, a failing cell fails it (``nb_execution_raise_on_error``),
 and ``-W -n --keep-going`` turns warnings, broken references and missing citations into errors.
-Paths are absolute because ``jupyter-book build .`` breaks singlehtml and walks ``.nox/``.
+Sphinx runs quietly (``-q``): the log holds the pages executed and why, the warnings the strict
+build fails on, and the result. Paths are absolute because ``jupyter-book build .`` breaks
+singlehtml and walks ``.nox/``.
+
+SIGINT (Ctrl-C, to the process group or to this process alone) or SIGTERM stops the build at
+any phase, and every process it started (workers, kernels, Sphinx, LaTeX) within seconds; the
+execution cache stays valid.
 """
 
 from __future__ import annotations
 
 import argparse
+import ast
+import contextlib
 import fnmatch
 import hashlib
 import json
+import multiprocessing
 import os
+import re
 import shutil
 import signal
 import subprocess
 import sys
 import tempfile
+import threading
 import time
-from concurrent.futures import ProcessPoolExecutor, as_completed
+from collections.abc import Iterator
+from concurrent.futures import Future, ProcessPoolExecutor
+from functools import cache
 from pathlib import Path
+from queue import Empty
+from typing import Any
 
 ROOT = Path(__file__).resolve().parents[1]
 PARTS = {
@@ -79,11 +97,11 @@ _RENDER_ONLY = {"title", "author", "copyright", "logo", "latex", "html", "bibtex
 _RENDER_ONLY_SPHINX = ("latex_", "html_", "bibtex_", "numfig", "math_", "suppress_warnings")
 
 
-def _execution_config() -> str:
-    """The part of _config.yml that can change what a notebook's execution produces."""
+def _execution_config(config_file: Path | None = None) -> str:
+    """The part of the configuration that can change what a notebook's execution produces."""
     import yaml
 
-    config = yaml.safe_load((ROOT / "_config.yml").read_text())
+    config = yaml.safe_load((config_file or ROOT / "_config.yml").read_text())
     config = {k: v for k, v in config.items() if k not in _RENDER_ONLY}
     sphinx = dict(config.get("sphinx") or {})
     sphinx["config"] = {
@@ -94,47 +112,47 @@ def _execution_config() -> str:
     return json.dumps(config, sort_keys=True, default=str)
 
 
-def source_key() -> str:
-    """Hash of everything besides a notebook's own text that can change its outputs.
+def source_key(config_file: Path | None = None) -> str:
+    """Hash of what, besides a page's own text and the navcore files it uses, can change its outputs.
 
-    navcore's sources, the lock, the execution-relevant part of ``_config.yml`` and this
+    The lock, the Python version, the execution-relevant part of the configuration and this
     file (which executes the notebooks); not the Sphinx extensions or the rendering settings.
+    navcore's files are not in it: each page is keyed on the ones it uses
+    (:func:`page_dependencies`).
     """
-    h = hashlib.sha256()
-    files = [*sorted((ROOT / "navcore").rglob("*.py")), ROOT / "requirements" / "lock.txt"]
-    files.append(Path(__file__).resolve())
-    for f in files:
+    h = hashlib.sha256(f"python {sys.version_info[:2]}".encode())
+    for f in (ROOT / "requirements" / "lock.txt", Path(__file__).resolve()):
         if f.exists():
-            h.update(str(f.relative_to(ROOT)).encode())
+            h.update(f.name.encode())
             h.update(f.read_bytes())
-    h.update(_execution_config().encode())
+    h.update(_execution_config(config_file).encode())
     return h.hexdigest()[:16]
 
 
-def cached_config() -> Path:
-    """A copy of _config.yml that executes through a source-keyed jupyter-cache."""
+def cached_config(config_file: Path | None = None) -> Path:
+    """A copy of the configuration that executes through a jupyter-cache keyed by :func:`source_key`."""
     import yaml
 
-    config = yaml.safe_load((ROOT / "_config.yml").read_text())
+    config_file = config_file or ROOT / "_config.yml"
+    config = yaml.safe_load(config_file.read_text())
     config["execute"]["execute_notebooks"] = "cache"
     # NAVCORE_BOOK_CACHE chooses another parent folder (the benchmark's clean build does)
     parent = Path(os.environ.get("NAVCORE_BOOK_CACHE") or ROOT / "_build" / "jupyter_cache")
-    config["execute"]["cache"] = str(parent / source_key())
+    config["execute"]["cache"] = str(parent / source_key(config_file))
     # local extension folders are relative to the config file, which moves to _build/
-    local = config.get("sphinx", {}).get("local_extensions") or {}
+    local = (config.get("sphinx") or {}).get("local_extensions") or {}
     for name, folder in local.items():
-        local[name] = str(ROOT / folder)
+        local[name] = str(config_file.parent / folder)
     path = parent / "_config_cached.yml"
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(yaml.safe_dump(config, sort_keys=False))
     return path
 
 
-def toc_pages(toc: Path) -> list[Path]:
+def toc_pages(toc: Path, book: Path = ROOT / "book") -> list[Path]:
     """The book pages a toc names, globs resolved, in toc order."""
     import yaml
 
-    book = ROOT / "book"
     found: list[Path] = []
 
     def walk(node: object) -> None:
@@ -176,15 +194,283 @@ def _read_notebook(path: Path):
     return read_myst_markdown_notebook(path.read_text(), path=str(path))
 
 
-# --- stopping a build -------------------------------------------------------------------------
-# Ctrl-C (SIGINT to the process group) or SIGTERM stops every process a build started within
-# seconds: the parent terminates its workers and the Sphinx subprocess; each worker kills its
-# kernel and exits (a pool worker would otherwise treat KeyboardInterrupt as one task's result
-# and go on with the next task); a worker whose parent dies gets SIGTERM from the kernel
-# (Linux parent-death signal). The parent stores executed notebooks with both signals blocked,
-# so an interrupt never leaves a half-written cache entry.
+# --- what a page depends on ---------------------------------------------------------------------
+# A chapter's pages share one kernel, so a page can use what an earlier page (or the ledger
+# warm-up) loaded without loading it again. What a page depends on is therefore computed from
+# what it *imports* (every import statement runs again in each page, even for a module that is
+# already loaded) and from a graph of which navcore module imports which: the import statements
+# of each module's source (at module level and inside functions, executed or not, in this
+# process or another) and the imports that navcore made by name while the kernel ran (the
+# ledger's paper modules, the figure modules). The page depends on every module reachable from
+# its imports, their packages, the data files those modules name, and the list of navcore's
+# module files (a new paper module changes what the registry loads). A module that changes
+# process-wide state a later page may rely on without importing it (``navcore.book``: figure
+# style, table formatters, numpy's print options) stays a dependency of every later page of
+# the kernel once a page imported it.
 
-_KERNEL_PIDS: set[int] = set()
+PACKAGE = "navcore"
+STICKY = ("navcore.book",)
+
+# Installed in each kernel before anything else runs: it records which navcore modules each
+# import statement (or importlib.import_module call) brings in, and who imported them (a navcore
+# module: an edge of the graph; anyone else, the page's own code included: a root of the page),
+# and which navcore data files a navcore module opens.
+_RECORDER = r"""
+def _navcore_build_recorder():
+    import builtins, importlib, importlib.util, json, os, sys, types
+
+    rec = types.ModuleType("_navcore_build_deps")
+    rec.edges, rec.roots = {}, set()
+    package_dir = os.path.dirname(importlib.util.find_spec("navcore").origin) + os.sep
+    original_import, original_import_module = builtins.__import__, importlib.import_module
+
+    def ours(name):
+        return name == "navcore" or name.startswith("navcore.")
+
+    def note(importer, target):
+        if ours(importer):
+            rec.edges.setdefault(importer, set()).add(target)
+        else:
+            rec.roots.add(target)
+
+    def hooked_import(name, globals=None, locals=None, fromlist=(), level=0):
+        module = original_import(name, globals, locals, fromlist, level)
+        g = globals or {}
+        try:
+            full = importlib.util.resolve_name("." * level + name, g.get("__package__")) if level else name
+        except (ImportError, ValueError):
+            return module
+        if ours(full):
+            importer = g.get("__name__") or ""
+            note(importer, full)
+            for item in fromlist or ():
+                if full + "." + str(item) in sys.modules:
+                    note(importer, full + "." + str(item))
+        return module
+
+    def import_module(name, package=None):
+        module = original_import_module(name, package)
+        if ours(module.__name__):
+            note(sys._getframe(1).f_globals.get("__name__") or "", module.__name__)
+        return module
+
+    def audit(event, args):
+        if event != "open" or not args or not isinstance(args[0], str):
+            return
+        path = args[0]
+        if not path.startswith(package_dir) or path.endswith((".py", ".pyc")):
+            return
+        frame, importer = sys._getframe(1), ""
+        while frame is not None and not ours(importer):
+            importer = frame.f_globals.get("__name__") or ""
+            frame = frame.f_back
+        note(importer, "file:" + path[len(package_dir):])
+
+    def start_page():
+        rec.roots = set()
+
+    def take():
+        return json.dumps({"roots": sorted(rec.roots), "edges": {k: sorted(v) for k, v in rec.edges.items()}})
+
+    rec.start_page, rec.take = start_page, take
+    sys.modules[rec.__name__] = rec
+    builtins.__import__ = hooked_import
+    importlib.import_module = import_module
+    sys.addaudithook(audit)
+
+
+_navcore_build_recorder()
+del _navcore_build_recorder
+"""
+_TAKE = "import _navcore_build_deps as _d\nprint(_d.take())\ndel _d"
+
+
+@cache
+def navcore_root() -> Path:
+    """The folder holding the navcore package that this process (and its kernels) import.
+
+    The checkout's, unless ``PYTHONPATH`` puts another copy first (the tests build against one).
+    """
+    import importlib.util
+
+    spec = importlib.util.find_spec(PACKAGE)
+    if spec is None or spec.origin is None:
+        return ROOT
+    return Path(spec.origin).resolve().parents[1]
+
+
+def _package_dir(root: Path) -> Path:
+    return root / PACKAGE
+
+
+@cache
+def _module_files(root: Path) -> dict[str, Path]:
+    """navcore's modules by dotted name (a package by its ``__init__.py``)."""
+    files = {}
+    for path in sorted(_package_dir(root).rglob("*.py")):
+        parts = list(path.relative_to(root).with_suffix("").parts)
+        if parts[-1] == "__init__":
+            parts.pop()
+        files[".".join(parts)] = path
+    return files
+
+
+@cache
+def _data_files(root: Path) -> tuple[str, ...]:
+    """navcore's data files (not Python), relative to the package folder."""
+    return tuple(
+        sorted(
+            p.relative_to(_package_dir(root)).as_posix()
+            for p in _package_dir(root).rglob("*")
+            if p.is_file() and p.suffix not in (".py", ".pyc") and "__pycache__" not in p.parts
+        )
+    )
+
+
+@cache
+def static_import_graph(root: Path) -> dict[str, frozenset[str]]:
+    """For each navcore module, the navcore modules and data files its source refers to.
+
+    Every ``import`` and ``from ... import`` statement counts, inside functions too; a data file
+    (``file:papers/paper_items.json``) counts when the module's source names it.
+    """
+    modules = _module_files(root)
+    data = _data_files(root)
+    graph: dict[str, frozenset[str]] = {}
+    for name, path in modules.items():
+        source = path.read_text()
+        package = name if path.name == "__init__.py" else name.rpartition(".")[0]
+        found: set[str] = set()
+        for node in ast.walk(ast.parse(source)):
+            if isinstance(node, ast.Import):
+                found.update(alias.name for alias in node.names)
+            elif isinstance(node, ast.ImportFrom):
+                base = node.module or ""
+                if node.level:
+                    parts = package.split(".")[: len(package.split(".")) - node.level + 1]
+                    base = ".".join([*parts, *([node.module] if node.module else [])])
+                found.add(base)
+                found.update(f"{base}.{alias.name}" for alias in node.names)
+        refs = {m for m in found if m in modules}
+        refs.update(f"file:{f}" for f in data if Path(f).name in source)
+        graph[name] = frozenset(refs)
+    return graph
+
+
+def _with_packages(names: set[str]) -> set[str]:
+    out = set(names)
+    for name in names:
+        while not name.startswith("file:") and "." in name:
+            name = name.rpartition(".")[0]
+            out.add(name)
+    return out
+
+
+def page_dependencies(
+    roots: set[str], edges: dict[str, list[str]], root: Path
+) -> tuple[list[str], list[str]]:
+    """The navcore modules and data files reachable from a page's imports (sorted).
+
+    ``edges`` are the imports that navcore modules made while the kernel ran; the static graph
+    (:func:`static_import_graph`) adds every import statement of every module's source.
+    """
+    graph = static_import_graph(root)
+    seen: set[str] = set()
+    todo = list(_with_packages(set(roots)))
+    while todo:
+        name = todo.pop()
+        if name in seen:
+            continue
+        seen.add(name)
+        todo.extend(_with_packages(set(graph.get(name, ())) | set(edges.get(name, ()))))
+    modules = _module_files(root)
+    return sorted(n for n in seen if n in modules), sorted(n[5:] for n in seen if n.startswith("file:"))
+
+
+def _file_hash(path: Path) -> str | None:
+    try:
+        return hashlib.sha256(path.read_bytes()).hexdigest()[:20]
+    except OSError:
+        return None
+
+
+def _listing_hash(root: Path) -> str:
+    return hashlib.sha256("\n".join(sorted(_module_files(root))).encode()).hexdigest()[:20]
+
+
+def dependency_record(modules: list[str], files: list[str], root: Path) -> dict[str, Any]:
+    """What is stored beside a cached page: each dependency with the hash of its contents."""
+    paths = _module_files(root)
+    return {
+        "modules": {m: _file_hash(paths[m]) for m in modules},
+        "files": {f: _file_hash(_package_dir(root) / f) for f in files},
+        "module_list": _listing_hash(root),
+    }
+
+
+def stale_reason(record: dict[str, Any] | None, root: Path) -> str | None:
+    """Why a cached page is out of date (``None`` if it is not): the dependencies that changed."""
+    if record is None:
+        return "no record of what it imports"
+    paths = _module_files(root)
+    changed = [
+        f"imports {m}"
+        for m, digest in record.get("modules", {}).items()
+        if m not in paths or _file_hash(paths[m]) != digest
+    ]
+    files = record.get("files", {})
+    changed += [f"reads {f}" for f, digest in files.items() if _file_hash(_package_dir(root) / f) != digest]
+    if changed:
+        shown = ", ".join(changed[:3]) + (f" and {len(changed) - 3} more" if len(changed) > 3 else "")
+        return f"{shown}, changed"
+    if record.get("module_list") != _listing_hash(root):
+        return "navcore's list of modules changed"
+    return None
+
+
+# --- stopping a build -------------------------------------------------------------------------
+# SIGINT (Ctrl-C: to the whole process group, or to this process alone) and SIGTERM stop the
+# build and every process it started within seconds, at any phase. Only this process acts on
+# them: its main thread never blocks for more than a fraction of a second (it waits with
+# timeouts), so the Python handler runs promptly whichever thread the kernel delivered the signal
+# to. The handler raises KeyboardInterrupt, except inside a critical section (storing a page in
+# the cache), where it waits for the section to end; the stop itself is a critical section, so
+# a second Ctrl-C cannot cut it short. The stop sends SIGTERM to every descendant (the pool's
+# workers, their kernels, Sphinx and the LaTeX run), then SIGKILL to any left after two seconds.
+# Behind it, each worker ignores SIGINT and dies at once on SIGTERM or when this process dies
+# (Linux parent-death signal); each kernel dies with its worker, and Sphinx with this process.
+
+
+class _Interrupts:
+    """SIGINT/SIGTERM handler that raises KeyboardInterrupt, deferred inside critical sections."""
+
+    def __init__(self) -> None:
+        self.depth = 0
+        self.pending: int | None = None
+
+    def handler(self, signum: int, frame: object) -> None:
+        if self.depth:
+            self.pending = signum
+            return
+        raise KeyboardInterrupt(f"signal {signum}")
+
+    @contextlib.contextmanager
+    def critical(self) -> Iterator[None]:
+        self.depth += 1
+        try:
+            yield
+        finally:
+            self.depth -= 1
+            if not self.depth and self.pending is not None:
+                signum, self.pending = self.pending, None
+                raise KeyboardInterrupt(f"signal {signum}")
+
+    def install(self) -> None:
+        signal.signal(signal.SIGINT, self.handler)
+        signal.signal(signal.SIGTERM, self.handler)
+
+
+_INTERRUPTS = _Interrupts()
 
 
 def _set_parent_death_signal(signum: int = signal.SIGTERM) -> None:
@@ -200,51 +486,106 @@ def _set_parent_death_signal(signum: int = signal.SIGTERM) -> None:
         pass
 
 
-def _worker_stop(signum: int, frame: object) -> None:
-    for pid in list(_KERNEL_PIDS):
+def _die_with_parent() -> None:
+    """``preexec_fn`` of a kernel: SIGKILL when the worker that started it dies."""
+    _set_parent_death_signal(signal.SIGKILL)
+
+
+_RESULTS: Any = None  # in a worker: the queue that takes each page's result as soon as it is ready
+
+
+def _worker_init(parent: int, results: Any = None) -> None:
+    """Pool initializer: the parent stops the workers, so ignore Ctrl-C; die with the parent."""
+    global _RESULTS
+    _RESULTS = results
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    _set_parent_death_signal(signal.SIGKILL)
+    if os.getppid() != parent:  # the parent died before the death signal was armed
+        os._exit(1)
+
+
+def _process_table() -> dict[int, tuple[int, str]]:
+    """pid -> (parent pid, state) of every process (Linux /proc; empty elsewhere)."""
+    table = {}
+    for entry in Path("/proc").iterdir() if Path("/proc/self/stat").exists() else ():
+        if not entry.name.isdigit():
+            continue
         try:
-            os.kill(pid, signal.SIGKILL)
-        except ProcessLookupError:
+            fields = (entry / "stat").read_text().rsplit(")", 1)[1].split()
+        except (OSError, IndexError):
+            continue
+        table[int(entry.name)] = (int(fields[1]), fields[0])
+    return table
+
+
+def descendants(pid: int) -> set[int]:
+    """Every live process below ``pid`` (Linux; an empty set elsewhere)."""
+    children: dict[int, list[int]] = {}
+    for child, (parent, state) in _process_table().items():
+        if state != "Z":
+            children.setdefault(parent, []).append(child)
+    found, todo = set(), [pid]
+    while todo:
+        for child in children.get(todo.pop(), []):
+            if child not in found:
+                found.add(child)
+                todo.append(child)
+    return found
+
+
+def _alive(pid: int) -> bool:
+    try:
+        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+    except (OSError, IndexError):
+        try:
+            os.kill(pid, 0)
+        except OSError:
+            return False
+        return not Path("/proc").exists()
+    return state != "Z"
+
+
+def _reap() -> None:
+    with contextlib.suppress(ChildProcessError):
+        while os.waitpid(-1, os.WNOHANG)[0]:
             pass
-    os._exit(128 + signum)
 
 
-def _worker_init() -> None:
-    """Pool initializer: die with the parent, and on SIGINT/SIGTERM kill the kernel and exit."""
-    _set_parent_death_signal()
-    signal.signal(signal.SIGINT, _worker_stop)
-    signal.signal(signal.SIGTERM, _worker_stop)
-    if os.getppid() == 1:  # the parent died before the death signal was armed
-        _worker_stop(signal.SIGTERM, None)
+def stop_started(known: frozenset[int] = frozenset(), grace: float = 2.0) -> int:
+    """SIGTERM every process this one started (and ``known``), then SIGKILL what is left; how many."""
+    pids = descendants(os.getpid()) | set(known)
+    count = len(pids)
+    for signum in (signal.SIGTERM, signal.SIGKILL):
+        for pid in pids:
+            with contextlib.suppress(OSError):
+                os.kill(pid, signum)
+        deadline = time.monotonic() + grace
+        while time.monotonic() < deadline:
+            _reap()
+            pids = {p for p in pids if _alive(p)}
+            if not pids:
+                break
+            time.sleep(0.05)
+        if not pids:
+            break
+    return count
 
 
-def _raise_interrupt(signum: int, frame: object) -> None:
-    raise KeyboardInterrupt(f"signal {signum}")
-
-
-def _stop_pool(pool: ProcessPoolExecutor, grace: float = 5.0) -> None:
-    """Terminate the pool's workers (each kills its kernel), then kill any that linger."""
-    procs = list((getattr(pool, "_processes", None) or {}).values())
-    for proc in procs:
-        if proc.is_alive():
-            proc.terminate()
-    deadline = time.monotonic() + grace
-    for proc in procs:
-        proc.join(max(0.0, deadline - time.monotonic()))
-        if proc.is_alive():
-            proc.kill()
-            proc.join(1.0)
-    pool.shutdown(wait=False, cancel_futures=True)
-
+# --- executing the pages ------------------------------------------------------------------------
 
 _RESET = """\
 %reset -f
 import os as _os
 import matplotlib.pyplot as _plt
+import _navcore_build_deps as _d
 _plt.close("all")
 _os.chdir({cwd!r})
-del _os, _plt
+_d.start_page()
+del _os, _plt, _d
 """
+
+PAPERS = ("KZL", "SP", "ATC10", "WF")  # the chapters whose kernels evaluate claims first
 
 
 def _merge_streams(nb) -> None:
@@ -257,7 +598,8 @@ def _merge_streams(nb) -> None:
     for cell in nb.cells:
         if cell.cell_type != "code":
             continue
-        merged, first = [], {}
+        merged: list = []
+        first: dict = {}
         for out in cell.get("outputs", []):
             if out.get("output_type") == "stream":
                 if out["name"] in first:
@@ -269,30 +611,47 @@ def _merge_streams(nb) -> None:
 
 
 def _execute_group(
-    paper: str | None, paths: list[str], timeout: int
-) -> list[tuple[str, float, object, str | None]]:
+    paper: str | None, paths: list[str], timeout: int, book: Path = ROOT / "book"
+) -> list[dict[str, Any]]:
     """Execute a chapter's pages one after another in ONE kernel (in a worker process).
 
-    The kernel first evaluates the chapter's ledger claims (filling the on-disk evaluation
-    cache that the ledger and errata pages read); then, before each page, the user namespace
-    is reset (``%reset -f``), open figures are closed and the working directory is set to the
-    page's folder, so a page sees none of the previous page's variables. What carries over
-    is what Python keeps per process: imported modules and navcore's pure-function caches
-    (``functools.cache``), which is what makes a chapter's pages cheaper together than apart.
+    The kernel first installs the import recorder (:data:`_RECORDER`) and evaluates the
+    chapter's ledger claims (filling the on-disk evaluation cache that the ledger and errata
+    pages read); then, before each page, the user namespace is reset (``%reset -f``), open
+    figures are closed and the working directory is set to the page's folder, so a page sees
+    none of the previous page's variables. What carries over is what Python keeps per process:
+    imported modules and navcore's pure-function caches (``functools.cache``), which is what
+    makes a chapter's pages cheaper together than apart. After each page the recorder says what
+    it imported, and the page's dependencies (:func:`page_dependencies`) are stored with it.
     ``tools/bench.py`` executes every page alone in a fresh kernel, as a reader would.
+
+    The kernel talks to this worker over local sockets (the ``ipc`` transport) and dies with it.
     """
     import nbformat
     from jupyter_client.manager import KernelManager
     from nbclient import NotebookClient
     from nbclient.exceptions import CellExecutionError
 
-    km = KernelManager(kernel_name="python3")
-    km.start_kernel(cwd=str(ROOT / "book"))
-    kernel_pid = getattr(km.provisioner, "pid", None)
-    if kernel_pid:
-        _KERNEL_PIDS.add(kernel_pid)
+    root = navcore_root()
+    # a short folder: a socket's path may not exceed about 100 characters
+    ipc_dir = tempfile.mkdtemp(prefix="nbk-", dir="/tmp" if os.path.isdir("/tmp") else None)
+    km = KernelManager(kernel_name="python3", transport="ipc", ip=os.path.join(ipc_dir, "k"))
+    km.start_kernel(cwd=str(book), preexec_fn=_die_with_parent)
     kc = None
-    results = []
+    results: list[dict[str, Any]] = []
+
+    def emit(result: dict[str, Any]) -> None:  # to the parent at once (in a pool worker), or returned
+        if _RESULTS is not None:
+            _RESULTS.put(result)
+        else:
+            results.append(result)
+
+    python3 = {"name": "python3", "display_name": "Python 3", "language": "python"}
+
+    def notebook(source: str, kernelspec: dict | None = None):
+        nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(source)])
+        nb.metadata["kernelspec"] = kernelspec or python3
+        return nb
 
     def run(nb, cwd: str):
         nonlocal kc
@@ -307,32 +666,35 @@ def _execute_group(
         )
         client.execute()
         kc = client.kc
+        return nb
+
+    def recorded() -> dict[str, Any]:
+        outputs = run(notebook(_TAKE), str(book)).cells[0].outputs
+        text = "".join(o.get("text", "") for o in outputs if o.get("output_type") == "stream")
+        return json.loads(text.strip().splitlines()[-1])
 
     try:
+        run(notebook(_RECORDER), str(book))
         if paper is not None:
+            print(f"prefill: {paper}: evaluating the chapter's claims", flush=True)
             start = time.perf_counter()
-            warm = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(
-                f"from navcore import ledger\n_ = ledger.evaluations({paper!r})\ndel _, ledger"
-            )])  # fmt: skip
-            warm.metadata["kernelspec"] = {
-                "name": "python3",
-                "display_name": "Python 3",
-                "language": "python",
-            }
-            run(warm, str(ROOT / "book"))
-            results.append((f"(ledger {paper})", time.perf_counter() - start, None, None))
+            warm = f"from navcore import ledger\n_ = ledger.evaluations({paper!r})\ndel _, ledger"
+            run(notebook(warm), str(book))
+            emit({"path": f"(ledger {paper})", "seconds": time.perf_counter() - start})
+        sticky: set[str] = set()
         for path_str in paths:
             path = Path(path_str)
             nb = _read_notebook(path)
             start = time.perf_counter()
-            err = None
+            err, deps = None, None
             try:
-                reset = nbformat.v4.new_notebook(
-                    cells=[nbformat.v4.new_code_cell(_RESET.format(cwd=str(path.parent)))]
-                )
-                reset.metadata["kernelspec"] = nb.metadata.get("kernelspec", {})
+                reset = notebook(_RESET.format(cwd=str(path.parent)), nb.metadata.get("kernelspec"))
                 run(reset, str(path.parent))
                 run(nb, str(path.parent))
+                seen = recorded()
+                roots = set(seen["roots"]) | sticky
+                sticky |= {m for m in roots if m in STICKY}
+                deps = dependency_record(*page_dependencies(roots, seen["edges"], root), root)
             except CellExecutionError as exc:
                 err = f"CellExecutionError: {exc}"[:2000]
             except Exception as exc:  # a dead kernel, a timeout: report, let Sphinx re-run it
@@ -346,105 +708,180 @@ def _execute_group(
                     for out in cell.get("outputs", []):
                         if "execution_count" in out:
                             out["execution_count"] = count
-            results.append((path_str, time.perf_counter() - start, nb, err))
+            emit(
+                {"path": path_str, "seconds": time.perf_counter() - start, "nb": nb, "err": err, "deps": deps}
+            )
     finally:
         if kc is not None:
             kc.stop_channels()
         km.shutdown_kernel(now=True)
-        _KERNEL_PIDS.discard(kernel_pid)
+        shutil.rmtree(ipc_dir, ignore_errors=True)
     return results
 
 
 def _group_pages(
     pages: list[Path], book: Path = ROOT / "book"
-) -> tuple[list[tuple[str | None, list[str]]], list[str]]:
-    """Split pages into one group per chapter folder and the front and back matter."""
+) -> tuple[list[tuple[str, list[str]]], list[tuple[str, list[str]]]]:
+    """Split pages into the paper chapters' groups and the groups that read every paper's claims.
+
+    One group per chapter folder (named by the folder, upper case). The chapters named for a
+    paper come first, heaviest ledger first (:data:`PAPERS`); the others (the chapter across the
+    papers) and the front and back matter (group ``""``) read every paper's claims, so they
+    run after those, from the evaluation cache that the paper chapters filled.
+    """
     chapters: dict[str, list[str]] = {}
-    other: list[str] = []
     for page in pages:
         rel = page.relative_to(book)
-        if len(rel.parts) > 1:
-            chapters.setdefault(rel.parts[0], []).append(str(page))
-        else:
-            other.append(str(page))
-    # the biggest chapters first, so that two workers finish at about the same time
-    groups = sorted(chapters.items(), key=lambda item: -len(item[1]))
-    return [(name.upper(), paths) for name, paths in groups], other
+        chapters.setdefault(rel.parts[0].upper() if len(rel.parts) > 1 else "", []).append(str(page))
+    papers = [(name, chapters.pop(name)) for name in PAPERS if name in chapters]
+    later = sorted(chapters.items(), key=lambda item: (-len(item[1]), item[0] == ""))
+    return papers, later
+
+
+def _record_dir(cache, hashkey: str) -> Path:
+    return Path(cache._get_notebook_path_cache(hashkey)).parent
+
+
+def _drop_record(cache, record) -> None:
+    """Remove a cache record and its files (its notebook may be missing: a killed store)."""
+    from jupyter_cache.cache.db import NbCacheRecord
+
+    shutil.rmtree(_record_dir(cache, record.hashkey), ignore_errors=True)
+    NbCacheRecord.remove_records([record.pk], cache.db)
+
+
+def _why_execute(cache, page: Path, by_uri: dict[str, Any], root: Path) -> tuple[str | None, Any]:
+    """Why ``page`` must execute (``None`` when its cached execution is valid), and its stale record.
+
+    A stale record stays in the cache while the page executes again (an interrupted build
+    leaves it, so the next build still says why the page executes); a record that is not
+    whole (no notebook or no list of dependencies, a store that was killed) is dropped at once.
+    """
+    try:
+        record = cache.match_cache_notebook(_read_notebook(page))
+    except KeyError:
+        return ("its text changed" if str(page) in by_uri else "not in the cache"), None
+    folder = _record_dir(cache, record.hashkey)
+    deps = None
+    if (folder / "base.ipynb").exists():
+        try:
+            deps = json.loads((folder / "navcore-deps.json").read_text())
+        except (OSError, ValueError):
+            deps = None
+    if deps is None:
+        with _INTERRUPTS.critical():
+            _drop_record(cache, record)
+        return "no record of what it imports", None
+    reason = stale_reason(deps, root)
+    return reason, (record if reason is not None else None)
 
 
 def prefill(
-    cache_path: Path, pages: list[Path], jobs: int, timeout: int = 900, book: Path = ROOT / "book"
+    cache_path: Path,
+    pages: list[Path],
+    jobs: int,
+    timeout: int = 900,
+    book: Path = ROOT / "book",
 ) -> dict[str, float]:
-    """Execute the pages missing from the jupyter-cache, ``jobs`` chapters at a time, and store them.
+    """Execute the pages the jupyter-cache lacks or holds out of date, ``jobs`` chapters at a time.
 
-    An interrupt (SIGINT, or SIGTERM, which raises KeyboardInterrupt here) stops the workers
-    and their kernels and re-raises; what was stored before it stays valid.
+    An interrupt (KeyboardInterrupt, which SIGINT and SIGTERM raise in the build) propagates at
+    once, and the caller stops the workers and their kernels; what was stored before it stays
+    valid, and a record is never half-written (stores are critical sections).
     """
     from jupyter_cache import get_cache
     from jupyter_cache.base import CacheBundleIn
 
+    root = navcore_root()
     cache = get_cache(str(cache_path))
-    todo = []
-    for page in pages:
-        if not _is_notebook(page):
-            continue
-        try:
-            cache.match_cache_notebook(_read_notebook(page))
-        except KeyError:
-            todo.append(page)
+    by_uri = {r.uri: r for r in cache.list_cache_records()}
+    notebooks = [p for p in pages if _is_notebook(p)]
+    todo: list[tuple[Path, str]] = []
+    stale: dict[str, Any] = {}  # page -> its out-of-date record, replaced when the page is stored
+    for page in notebooks:
+        reason, record = _why_execute(cache, page, by_uri, root)
+        if reason is not None:
+            todo.append((page, reason))
+        if record is not None:
+            stale[str(page)] = record
     times: dict[str, float] = {}
     if not todo:
-        print(f"prefill: all {len(pages)} pages are in the cache", flush=True)
+        print(f"prefill: all {len(notebooks)} notebooks are in the cache and up to date", flush=True)
         return times
-    groups, other = _group_pages(todo, book)
-    papers = {"WF", "SP", "ATC10", "KZL"}
-    jobs = max(1, min(jobs, len(groups) or 1))
+    print(f"prefill: executing {len(todo)} of {len(notebooks)} notebooks:", flush=True)
+    for page, reason in todo:
+        print(f"prefill:   {page.relative_to(book).as_posix()} ({reason})", flush=True)
+    groups, later = _group_pages([p for p, _ in todo], book)
+    if later:
+        # the pages that read every paper's claims run after every paper's claims are
+        # evaluated, one paper per worker (from the evaluation cache where it is up to date)
+        present = {name for name, _ in groups}
+        groups += [(p, []) for p in PAPERS if p not in present and (book / p.lower()).is_dir()]
+    jobs = max(1, min(jobs, max(len(groups), len(later))))
     start = time.perf_counter()
 
-    def store(results) -> None:
-        for path_str, seconds, nb, err in results:
-            if nb is None:
+    def store(results: list[dict[str, Any]]) -> None:
+        for result in results:
+            path_str, seconds = result["path"], result["seconds"]
+            if "nb" not in result:
                 times[path_str] = seconds
                 print(f"prefill: {seconds:7.1f} s  {path_str}", flush=True)
                 continue
             rel = Path(path_str).relative_to(book).as_posix()
-            if err is not None:
-                print(f"prefill: {rel} FAILED ({err.splitlines()[0]}); Sphinx will re-run it", flush=True)
+            if result["err"] is not None:
+                first = result["err"].splitlines()[0]
+                print(f"prefill: {rel} FAILED ({first}); Sphinx will re-run it", flush=True)
                 continue
             times[rel] = seconds
-            # no interrupt between the cache's database record and its notebook file
-            blocked = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
-            try:
-                cache.cache_notebook_bundle(
-                    CacheBundleIn(nb, path_str, data={"execution_seconds": seconds}),
+            stale.pop(path_str, None)  # storing the page replaces its out-of-date record
+            with _INTERRUPTS.critical():  # no interrupt between the record, its notebook, its dependencies
+                record = cache.cache_notebook_bundle(
+                    CacheBundleIn(result["nb"], path_str, data={"execution_seconds": seconds}),
                     check_validity=False,
                     overwrite=True,
                 )
-            finally:
-                signal.pthread_sigmask(signal.SIG_SETMASK, blocked)
+                deps = _record_dir(cache, record.hashkey) / "navcore-deps.json"
+                tmp = deps.with_suffix(".tmp")
+                tmp.write_text(json.dumps(result["deps"], sort_keys=True))
+                tmp.replace(deps)
             print(f"prefill: {seconds:7.1f} s  {rel}", flush=True)
 
-    previous = signal.signal(signal.SIGTERM, _raise_interrupt)
-    pool = ProcessPoolExecutor(max_workers=jobs, initializer=_worker_init)
+    def run_all(pool: ProcessPoolExecutor, batch: list[tuple[str, list[str]]]) -> None:
+        pending: set[Future] = {
+            pool.submit(_execute_group, name if name in PAPERS else None, paths, timeout, book)
+            for name, paths in batch
+        }
+        # one result per page, and one per chapter for its claims
+        expected = sum(len(paths) + (name in PAPERS) for name, paths in batch)
+        while expected:  # short waits: the interrupt handler runs between them
+            try:
+                store([queue.get(timeout=0.25)])  # each page as soon as its worker has it
+                expected -= 1
+                continue
+            except Empty:
+                pass
+            for fut in [fut for fut in pending if fut.done()]:
+                fut.result()  # a worker's error, if any, is raised here
+                pending.discard(fut)
+
+    queue = multiprocessing.get_context("fork").Queue()
+    pool = ProcessPoolExecutor(
+        max_workers=jobs,
+        mp_context=multiprocessing.get_context("fork"),
+        initializer=_worker_init,
+        initargs=(os.getpid(), queue),
+    )
     try:
-        futures = [
-            pool.submit(_execute_group, name if name in papers else None, paths, timeout)
-            for name, paths in groups
-        ]
-        for fut in as_completed(futures):
-            store(fut.result())
-        # the front and back matter (intro, about, ledger, errata) read every paper's claims:
-        # they run last, from the evaluation cache that the chapters filled
-        if other:
-            store(pool.submit(_execute_group, None, other, timeout).result())
-    except BaseException:
-        print("prefill: interrupted; stopping the workers and their kernels", flush=True)
-        _stop_pool(pool)
+        run_all(pool, groups)
+        if later:
+            run_all(pool, later)
+    except KeyboardInterrupt:
+        print("prefill: interrupted", flush=True)
         raise
-    else:
-        pool.shutdown(wait=True)
-    finally:
-        signal.signal(signal.SIGTERM, previous)
+    pool.shutdown(wait=True)
+    with _INTERRUPTS.critical():  # a page that failed: Sphinx must not find its old outputs
+        for record in stale.values():
+            _drop_record(cache, record)
     print(
         f"prefill: {len(todo)} pages in {time.perf_counter() - start:.1f} s with {jobs} workers", flush=True
     )
@@ -471,60 +908,128 @@ def builder_dir(builder: str) -> str:
     return {"pdflatex": "latex"}.get(builder, builder)
 
 
+# jupyter-book's banners on stdout, which tell a reader of the log nothing to act on (Sphinx's
+# warnings and errors go to stderr, untouched; what the LaTeX run prints stays too)
+_BANNER = re.compile(
+    r"^\s*(?:=+|Running Jupyter-Book.*|Source Folder:.*|Config Path:.*|Output Path:.*|"
+    r"Finished generating .*|Your book's .* here:|You can look at your book by .*|Or paste this line .*|"
+    r"\S*file://\S*|\S*_build/\S*/|\S*_build/\S*index\.html|"
+    r"Building your book, returns a non-zero exit code.*)?\s*$"
+)
+_ANSI = re.compile(r"\x1b\[[0-9;]*m")
+
+
+def _relay_quietly(stream) -> None:
+    """Print what Sphinx's process writes to stdout, less jupyter-book's banners."""
+    for line in stream:
+        if not _BANNER.match(_ANSI.sub("", line)):
+            sys.stdout.write(line)
+            sys.stdout.flush()
+
+
+def _sphinx_preexec() -> None:
+    """``preexec_fn`` of the Sphinx run: SIGTERM when this process dies (Linux)."""
+    _set_parent_death_signal(signal.SIGTERM)
+
+
+def _run_quietly(cmd: list[str], cwd: Path, env: dict[str, str] | None = None) -> int:
+    """Run a step of the build (Sphinx, the LaTeX run) in this process group and wait for it.
+
+    Its stdout is relayed less jupyter-book's banners; it dies with this process (Linux); the
+    wait is a loop of short waits, so that an interrupt is acted on at once.
+    """
+    proc = subprocess.Popen(
+        cmd, cwd=cwd, env=env, preexec_fn=_sphinx_preexec, stdout=subprocess.PIPE, text=True, errors="replace"
+    )
+    relay = threading.Thread(target=_relay_quietly, args=(proc.stdout,), daemon=True)
+    relay.start()
+    while True:
+        try:
+            code = proc.wait(timeout=0.25)
+            break
+        except subprocess.TimeoutExpired:
+            continue
+    relay.join(5)
+    return code
+
+
+def latex_to_pdf(out: Path) -> int:
+    """Typeset ``<out>/_build/latex`` into ``book.pdf`` (Sphinx's Makefile: latexmk, XeLaTeX), quietly.
+
+    latexmk runs silent (XeLaTeX in batch mode); on failure the errors of the LaTeX log are
+    printed, each with the two lines after it.
+    """
+    latex = out / "_build" / "latex"
+    print(f"latex: typesetting {latex / 'book.tex'}", flush=True)
+    env = dict(os.environ, LATEXMKOPTS=os.environ.get("LATEXMKOPTS", "-silent"))
+    code = _run_quietly([os.environ.get("MAKE", "make"), "all-pdf"], latex, env)
+    if code != 0:
+        for log in sorted(latex.glob("*.log")):
+            lines = log.read_text(errors="replace").splitlines()
+            for n, line in enumerate(lines):
+                if line.startswith("! "):
+                    print(f"{log.name}:", *lines[n : n + 3], sep="\n    ", flush=True)
+    print(f"latex: {'done' if code == 0 else f'FAILED (exit {code})'}", flush=True)
+    return code
+
+
 def build(
     builder: str = "html",
     only: str | None = None,
     out: Path | None = None,
     cache: bool = False,
     jobs: int | None = None,
+    book: Path = ROOT / "book",
+    config_file: Path = ROOT / "_config.yml",
+    execute_only: bool = False,
 ) -> int:
-    config = cached_config() if cache else ROOT / "_config.yml"
-    toc = ROOT / "book" / "_toc.yml"
+    """Execute what the cache lacks (``cache``), then run Sphinx; ``pdflatex``: then typeset the PDF."""
+    config = cached_config(config_file) if cache else config_file
+    toc = book / "_toc.yml"
     tmp = None
     if only:
         if only not in PARTS:
             raise SystemExit(f"--only must be one of {list(PARTS)}, got {only!r}")
         # the subset toc must sit in book/ so that relative file names resolve
-        tmp = tempfile.NamedTemporaryFile(
-            "w", suffix=".yml", prefix="_toc_subset_", dir=ROOT / "book", delete=False
-        )
+        tmp = tempfile.NamedTemporaryFile("w", suffix=".yml", prefix="_toc_subset_", dir=book, delete=False)
         tmp.write(subset_toc(only))
         tmp.close()
         toc = Path(tmp.name)
         out = out or ROOT / "_build" / f"subset-{only}"
     out = out or ROOT
-    # every build starts from empty output and doctree folders (the execution cache is kept):
-    # Sphinx stamps asset links with checksums of files a previous build left and merges the
-    # previous search index, so a rebuild would differ from a clean build of the same commit
-    for stale in (out / "_build" / builder_dir(builder), out / "_build" / ".doctrees"):
-        shutil.rmtree(stale, ignore_errors=True)
-    if cache:
-        import yaml
-
-        cache_path = Path(yaml.safe_load(config.read_text())["execute"]["cache"])
-        times = prefill(cache_path, toc_pages(toc), jobs or os.cpu_count() or 1)
-        if times:
-            report_times(times, out / "_build" / "page-times.json")
-    cmd = [
-        str(Path(sys.executable).with_name("jupyter-book")), "build", str(ROOT / "book"),
-        "--config", str(config), "--toc", str(toc), "--path-output", str(out),
-        "--builder", builder, "--all", "-W", "-n", "--keep-going",
-    ]  # fmt: skip
-    print("+", " ".join(cmd), flush=True)
-    previous = signal.signal(signal.SIGTERM, _raise_interrupt)
-    proc = subprocess.Popen(cmd, cwd=ROOT)
     try:
-        return proc.wait()
-    except BaseException:  # SIGINT or SIGTERM: stop Sphinx (and its kernels) too
-        proc.terminate()
-        try:
-            proc.wait(5)
-        except subprocess.TimeoutExpired:
-            proc.kill()
-            proc.wait()
-        raise
+        if cache:
+            import yaml
+
+            cache_path = Path(yaml.safe_load(config.read_text())["execute"]["cache"])
+            times = prefill(cache_path, toc_pages(toc, book), jobs or os.cpu_count() or 1, book=book)
+            if times:
+                report_times(times, out / "_build" / "page-times.json")
+        if execute_only:
+            return 0
+        # every build starts from empty output and doctree folders (the execution cache is kept):
+        # Sphinx stamps asset links with checksums of files a previous build left and merges the
+        # previous search index, so a rebuild would differ from a clean build of the same commit
+        for stale in (out / "_build" / builder_dir(builder), out / "_build" / ".doctrees"):
+            shutil.rmtree(stale, ignore_errors=True)
+        sphinx_builder = "latex" if builder == "pdflatex" else builder  # the PDF: latex_to_pdf
+        cmd = [
+            str(Path(sys.executable).with_name("jupyter-book")), "build", str(book),
+            "--config", str(config), "--toc", str(toc), "--path-output", str(out),
+            "--builder", sphinx_builder, "--all", "-W", "-n", "--keep-going", "-q",
+        ]  # fmt: skip
+        print(
+            f"sphinx: {sphinx_builder} build of {toc.relative_to(book.parent)} into {out / '_build'}",
+            flush=True,
+        )
+        code = _run_quietly(cmd, ROOT)
+        print(
+            f"sphinx: {'done' if code == 0 else f'FAILED (exit {code}): see the messages above'}", flush=True
+        )
+        if code == 0 and builder == "pdflatex":
+            code = latex_to_pdf(out)
+        return code
     finally:
-        signal.signal(signal.SIGTERM, previous)
         if tmp is not None:
             Path(tmp.name).unlink(missing_ok=True)
 
@@ -538,18 +1043,42 @@ def main() -> int:
         help="build one paper's chapter (wf, sp, atc10, kzl) or the API reference (reference)",
     )
     parser.add_argument("--out", type=Path, default=None, help="output folder (default: the repository)")
-    parser.add_argument("--cache", action="store_true", help="execute through a source-keyed jupyter-cache")
+    parser.add_argument("--cache", action="store_true", help="execute through a jupyter-cache (see above)")
     parser.add_argument(
-        "--jobs", type=int, default=None, help="with --cache: pages executed at once (default: the cores)"
+        "--jobs", type=int, default=None, help="with --cache: chapters executed at once (default: the cores)"
     )
+    parser.add_argument(
+        "--execute-only", action="store_true", help="with --cache: execute what the cache lacks, no Sphinx"
+    )
+    parser.add_argument(
+        "--latex-to-pdf",
+        action="store_true",
+        help="only typeset the LaTeX sources of an earlier --builder latex build into book.pdf",
+    )
+    # the tests' toy books
+    parser.add_argument("--book", type=Path, default=ROOT / "book", help=argparse.SUPPRESS)
+    parser.add_argument("--config", type=Path, default=ROOT / "_config.yml", help=argparse.SUPPRESS)
     args = parser.parse_args()
+    _INTERRUPTS.install()
     if os.environ.get("NAVCORE_STOP_WITH_PARENT"):  # nox sets it: a killed nox stops the build
         _set_parent_death_signal()
     try:
-        return build(args.builder, args.only, args.out, args.cache, args.jobs)
-    except KeyboardInterrupt:
-        print("build_book: interrupted", file=sys.stderr, flush=True)
-        return 130
+        if args.latex_to_pdf:
+            return latex_to_pdf(args.out or ROOT)
+        book, config = args.book.resolve(), args.config.resolve()
+        return build(
+            args.builder, args.only, args.out, args.cache, args.jobs, book, config, args.execute_only
+        )
+    except BaseException as exc:
+        # stop everything this build started, whatever stopped it; a second Ctrl-C cannot cut it short
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+        signal.signal(signal.SIGTERM, signal.SIG_IGN)
+        stopped = stop_started()
+        if not isinstance(exc, KeyboardInterrupt):
+            raise
+        print(f"build_book: interrupted; stopped {stopped} processes it started", file=sys.stderr, flush=True)
+        sys.stdout.flush()
+        os._exit(130)  # not sys.exit: nothing may wait on a worker that is gone
 
 
 if __name__ == "__main__":

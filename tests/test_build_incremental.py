@@ -1,0 +1,154 @@
+"""A change to one navcore module re-executes only the book pages that depend on it, and says why.
+
+The build keys each cached page on the navcore modules and data files it depends on
+(tools/build_book.py): what the page imports, what those modules import (every import
+statement of their source, and what navcore imported by name while the kernel ran), the data
+files they name or open, and the list of navcore's modules. The oracles are written out by hand:
+the import statements of a small package, and which toy pages import which module.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import os
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from _toybook import ROOT, make_book
+
+spec = importlib.util.spec_from_file_location("build_book_incremental", ROOT / "tools" / "build_book.py")
+build_book = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(build_book)
+
+
+def _package(root: Path, files: dict[str, str]) -> Path:
+    for name, text in files.items():
+        path = root / "navcore" / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+    return root
+
+
+def test_static_import_graph_follows_every_import_statement(tmp_path: Path) -> None:
+    """Oracle: the imports of a hand-written package, inside functions and relative ones included."""
+    root = _package(
+        tmp_path,
+        {
+            "__init__.py": "",
+            "a.py": "import numpy\nfrom navcore import b\n",
+            "b.py": "def f():\n    from navcore.sub import c\n    return c\n",
+            "sub/__init__.py": "",
+            "sub/c.py": "from . import d\nfrom ..e import g\nTABLE = 'table.json'\n",
+            "sub/d.py": "",
+            "e.py": "g = 1\n",
+            "lonely.py": "",
+            "sub/table.json": "{}",
+        },
+    )
+    graph = build_book.static_import_graph(root)
+    assert graph["navcore.a"] == {"navcore", "navcore.b"}
+    assert graph["navcore.b"] == {"navcore.sub", "navcore.sub.c"}
+    assert graph["navcore.sub.c"] == {"navcore.sub", "navcore.sub.d", "navcore.e", "file:sub/table.json"}
+    modules, files = build_book.page_dependencies({"navcore.a"}, {}, root)
+    assert modules == [
+        "navcore",
+        "navcore.a",
+        "navcore.b",
+        "navcore.e",
+        "navcore.sub",
+        "navcore.sub.c",
+        "navcore.sub.d",
+    ]
+    assert files == ["sub/table.json"]
+    # what navcore imported by name while the kernel ran (the ledger's paper modules) counts too
+    assert (
+        "navcore.lonely"
+        in build_book.page_dependencies({"navcore.e"}, {"navcore.e": ["navcore.lonely"]}, root)[0]
+    )
+
+
+def test_stale_reason_names_what_changed(tmp_path: Path) -> None:
+    root = _package(tmp_path, {"__init__.py": "", "a.py": "x = 1\n", "data.json": "{}"})
+    record = build_book.dependency_record(["navcore", "navcore.a"], ["data.json"], root)
+    assert build_book.stale_reason(record, root) is None
+    assert build_book.stale_reason(None, root) == "no record of what it imports"
+    (root / "navcore" / "a.py").write_text("x = 1  # a comment\n")
+    assert build_book.stale_reason(record, root) == "imports navcore.a, changed"
+    (root / "navcore" / "a.py").write_text("x = 1\n")
+    (root / "navcore" / "data.json").write_text("{} ")
+    assert build_book.stale_reason(record, root) == "reads data.json, changed"
+    (root / "navcore" / "data.json").write_text("{}")
+    build_book._module_files.cache_clear()
+    (root / "navcore" / "b.py").write_text("")
+    assert build_book.stale_reason(record, root) == "navcore's list of modules changed"
+
+
+PAGES = {
+    "1-units.md": "from navcore import units\nprint(units.FT)",
+    "2-frames.md": "from navcore import frames\nprint(frames.__name__)",
+    # runs after 2-frames in the same kernel (frames is loaded) but imports only units
+    "3-units-again.md": "import navcore.units as u\nprint(u.NMI)",
+    "4-items.md": (
+        "from pathlib import Path\nfrom navcore import trace\n"
+        "print(len((Path(trace.__file__).parent / 'papers' / 'paper_items.json').read_text()) > 0)"
+    ),
+    # fails once its module carries a marker: its old outputs must not survive in the cache
+    "5-diagrams.md": "from navcore import diagrams\nassert 'MARKER' not in open(diagrams.__file__).read()",
+}
+
+RUNNER = """
+import sys
+from pathlib import Path
+sys.path.insert(0, {tools!r})
+import build_book
+book = Path({book!r})
+build_book.prefill(Path({cache!r}), build_book.toc_pages(book / "_toc.yml", book), 1, book=book)
+"""
+
+
+def _executed(copy: Path, book: Path, cache: Path, failing: str | None = None) -> dict[str, str]:
+    """Run the build's execution step against the copy of navcore; the pages executed, with why."""
+    env = dict(os.environ, PYTHONPATH=str(copy), NAVCORE_CACHE="off")
+    code = RUNNER.format(tools=str(ROOT / "tools"), book=str(book), cache=str(cache))
+    proc = subprocess.run(
+        [sys.executable, "-c", code], cwd=book, env=env, capture_output=True, text=True, timeout=600
+    )
+    assert proc.returncode == 0, proc.stdout[-2000:] + proc.stderr[-2000:]
+    assert re.findall(r"prefill: b/(\S+) FAILED", proc.stdout) == ([failing] if failing else []), proc.stdout
+    return dict(re.findall(r"prefill:   b/(\S+) \((.*)\)", proc.stdout))
+
+
+@pytest.mark.slow
+def test_one_module_change_re_executes_exactly_the_pages_that_import_it(tmp_path: Path) -> None:
+    copy = tmp_path / "src"
+    shutil.copytree(ROOT / "navcore", copy / "navcore", ignore=shutil.ignore_patterns("__pycache__"))
+    book, _ = make_book(tmp_path, {"b": PAGES})
+    cache = tmp_path / "cache"
+    assert _executed(copy, book, cache) == dict.fromkeys(PAGES, "not in the cache")
+    assert _executed(copy, book, cache) == {}
+    with open(copy / "navcore" / "frames.py", "a") as f:
+        f.write("# a comment\n")
+    with open(copy / "navcore" / "papers" / "paper_items.json", "a") as f:
+        f.write("\n")
+    assert _executed(copy, book, cache) == {
+        "2-frames.md": "imports navcore.frames, changed",
+        "4-items.md": "reads papers/paper_items.json, changed",
+    }
+    with open(copy / "navcore" / "units.py", "a") as f:
+        f.write("# a comment\n")
+    assert _executed(copy, book, cache) == dict.fromkeys(
+        ["1-units.md", "2-frames.md", "3-units-again.md"], "imports navcore.units, changed"
+    )
+    with open(copy / "navcore" / "diagrams.py", "a") as f:
+        f.write("# MARKER\n")
+    assert _executed(copy, book, cache, failing="5-diagrams.md") == {
+        "5-diagrams.md": "imports navcore.diagrams, changed"
+    }
+    from jupyter_cache import get_cache
+
+    with pytest.raises(KeyError):  # Sphinx executes it again and the strict build fails
+        get_cache(str(cache)).match_cache_notebook(build_book._read_notebook(book / "b" / "5-diagrams.md"))
