@@ -37,6 +37,7 @@ from navcore.inertial.error_dynamics import (
 from navcore.inertial.imu import gyro_bias_calibrated_at_rest
 from navcore.inertial.trajectories import straight_and_level
 from navcore.ledger import Claim, input_cache, printed, prose
+from navcore.papers.kzl_quotes import quoted
 from navcore.papers.kzl_scenario import IN, POS0_SIGMA_M, VEL0_SIGMA_MPS, kzl_imu
 from navcore.papers.kzl_simulation import PAGE3
 from navcore.units import DEG, G0
@@ -221,3 +222,5 @@ CLAIMS = [
         discussed_in=PAGE3,
     ),
 ]
+
+CLAIMS = quoted(CLAIMS)

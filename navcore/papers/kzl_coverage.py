@@ -24,6 +24,7 @@ from navcore.papers.kzl_models import (
     table1_attitude,
     table1_los,
 )
+from navcore.papers.kzl_quotes import quoted
 from navcore.papers.kzl_scenario import IN as SCEN
 from navcore.papers.kzl_simulation import PAGE3
 from navcore.units import ARCSEC, DEG, G0, GPS_L1_WAVELENGTH_M, WGS84_A
@@ -520,3 +521,5 @@ CLAIMS = [
         discussed_in=PAGE3,
     ),
 ]
+
+CLAIMS = quoted(CLAIMS)

@@ -30,6 +30,7 @@ from navcore.inertial.error_model17 import (
 )
 from navcore.inertial.strapdown import earth_rate_ned, transport_rate_ned
 from navcore.ledger import EXACT, Claim, Erratum, InputSet, Tolerance, input_cache, printed, prose
+from navcore.papers.kzl_quotes import quoted
 from navcore.papers.kzl_scenario import IN as SCEN
 from navcore.papers.kzl_scenario import kzl_imu, table1_baselines_b, table1_scenario, table1_sky
 from navcore.units import DEG, DEG_PER_H, G0, WGS84_A
@@ -699,3 +700,5 @@ CLAIMS = [
         discussed_in=PAGE2,
     ),
 ]
+
+CLAIMS = quoted(CLAIMS)

@@ -11,6 +11,7 @@ import numpy as np
 
 from navcore.ledger import EXACT, Claim, Erratum, printed, prose
 from navcore.ledger import monte_carlo as mc_tolerance
+from navcore.papers.kzl_quotes import quoted
 from navcore.papers.kzl_scenario import IN, N_RUNS, VISIBILITY_SCHEDULE, kzl_imu, monte_carlo
 from navcore.units import DEG
 
@@ -411,3 +412,5 @@ CLAIMS = [
         discussed_in=PAGE3,
     ),
 ]
+
+CLAIMS = quoted(CLAIMS)

@@ -22,6 +22,7 @@ from navcore.gnss.tracking import distance_to_phase_deg
 from navcore.ledger import EXACT, Claim, Erratum, InputSet, printed
 from navcore.location.target_location import target_location_rss
 from navcore.papers import sp_tracking as spt
+from navcore.papers.sp_quotes import quoted
 from navcore.papers.sp_tables import TABLE_2_5_PRINTED
 from navcore.units import DEG, DEG_PER_H, GPS_L1_WAVELENGTH_M, OMEGA_EARTH
 
@@ -295,3 +296,5 @@ CLAIMS = [
         discussed_in=PAGE_TGT,
     ),
 ]
+
+CLAIMS = quoted(CLAIMS)

@@ -41,6 +41,7 @@ from navcore.ledger import (
     prose,
 )
 from navcore.papers import sp_tracking as spt
+from navcore.papers.sp_quotes import quoted
 from navcore.units import (
     DEG_PER_H,
     DEG_PER_SQRT_H,
@@ -705,3 +706,5 @@ CLAIMS = [
         discussed_in=PAGE,
     ),
 ]
+
+CLAIMS = quoted(CLAIMS)

@@ -22,6 +22,7 @@ from navcore.papers import sp_architectures as sar
 from navcore.papers import sp_flyby as sfb
 from navcore.papers import sp_missions_scenarios as sc
 from navcore.papers import sp_tables as tab
+from navcore.papers.sp_quotes import quoted
 from navcore.units import MINUTE
 
 PAGE_ARCH = "sp/01-architectures"
@@ -394,3 +395,5 @@ CLAIMS = [
         discussed_in=PAGE_ARCH,
     ),
 ]
+
+CLAIMS = quoted(CLAIMS)

@@ -22,6 +22,7 @@ from navcore.inertial.residual_acceleration import (
 )
 from navcore.ledger import EXACT, Claim, Erratum, InputSet, Tolerance, printed
 from navcore.papers import sp_tracking as spt
+from navcore.papers.sp_quotes import quoted
 from navcore.units import ARCSEC, GPS_L1_WAVELENGTH_M, PPM
 
 PAGE = "sp/03-residual-acceleration"
@@ -352,3 +353,5 @@ CLAIMS = [
         "errors, as in the radii computed here.",
     ),
 ]
+
+CLAIMS = quoted(CLAIMS)

@@ -21,6 +21,7 @@ from navcore.gnss.tracking import (
     third_order_peak_step_error,
 )
 from navcore.ledger import EXACT, Claim, Erratum, InputSet, Tolerance, input_cache, printed
+from navcore.papers.sp_quotes import quoted
 from navcore.units import FT, G0, GPS_L1_WAVELENGTH_M, GPS_P_CHIP_RATE_HZ
 
 IN = InputSet("SP", "tracking")
@@ -344,3 +345,5 @@ CLAIMS = [
         "next to the value.",
     ),
 ]
+
+CLAIMS = quoted(CLAIMS)
