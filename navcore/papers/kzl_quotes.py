@@ -60,13 +60,13 @@ QUOTES: dict[str, str] = {
         "antenna (A0) and antenna number i, known in the b-frame."
     ),
     "KZL-eq2-3-levelling": (
-        "$$\\theta = \\arctan\\left(-a_{ib,x}^b / \\sqrt{(a_{ib,y}^b)^2 + "
-        "(a_{ib,z}^b)^2}\\right)$$ (2) $$\\varphi = \\arctan_2 \\left(a_{ib,y}^b / a_{ib,z}^b "
-        "\\right) \\tag{3}$$"
+        "$$\\varphi = \\arctan_2 \\left(a_{ib,y}^b / a_{ib,z}^b \\right) \\tag{3}$$"
+        " [...] Angles (φ, θ, ψ) [°] $\\mathbf{\\psi} = \\begin{bmatrix} 0 & 0 & 90 \\end{bmatrix}^T$"
     ),
     "KZL-eq4-heading": (
         "$$\\psi = \\arctan_2(v_E / v_N) \\tag{4}$$ [...] A straight and level flight with a "
         "nominally constant velocity of 110 m/s in east has been modelled."
+        " [...] Angles (φ, θ, ψ) [°] $\\mathbf{\\psi} = \\begin{bmatrix} 0 & 0 & 90 \\end{bmatrix}^T$"
     ),
     "KZL-eq5-series": (
         "$$= \\mathcal{L}^{-1} \\left\\{ [sI - F]^{-1} \\right\\}_{t=T} = I + F \\cdot T + "
