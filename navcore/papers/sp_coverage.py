@@ -319,7 +319,7 @@ CLAIMS = [
         id="SP-fig3.8-narrowband-15dB",
         paper="SP",
         locator="Sec. 3.3, Fig. 3.8",
-        quantity="smallest A/J improvement for narrowband CEPs from 4 to 80 m",
+        quantity="smallest A/J improvement for narrowband CEPs from 4 to 80 m, read off Fig. 3.8",
         published=15.0,
         unit="dB",
         relation=">=",
@@ -328,7 +328,9 @@ CLAIMS = [
         expected_status="inconsistent",
         note="As SP-fig3.8-aj-15dB for the narrowband jammer: jammer-power ratio DI/TC at equal CEP "
         "on the reduced model's exact curves, minimised over 4-80 m; below 15 dB across the assumed "
-        "ranges, for the same reasons (the reduced model's CEP curves, erratum SP-E-di-improvement-15dB).",
+        "ranges, for the same reasons (the reduced model's CEP curves, held near the 11 dB between the "
+        "stated lock limits, differ in shape from the paper's 6-DOF ones). No narrowband CEPs are "
+        "printed to check the model against.",
         discussed_in=PAGE_DI,
     ),
     Claim(
