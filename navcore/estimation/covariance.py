@@ -5,8 +5,10 @@ they arrive and with what geometry. Propagating
 
 .. math::
 
-    P^-_{k+1} = \Phi_k P^+_k \Phi_k^T + Q_k,\qquad
-    P^+_k = (I - K_k H_k) P^-_k (I - K_k H_k)^T + K_k R_k K_k^T
+    \begin{aligned}
+    P^-_{k+1} &= \Phi_k P^+_k \Phi_k^T + Q_k,\\
+    P^+_k &= (I - K_k H_k) P^-_k (I - K_k H_k)^T + K_k R_k K_k^T
+    \end{aligned}
 
 over a time grid with the measurements a schedule says are available is the covariance
 analysis that the SP paper uses to compare architectures, and that the WF and ATC10

@@ -4,17 +4,21 @@ Model
 -----
 .. math::
 
-    x_{k+1} = \Phi_k x_k + w_k,\quad w_k \sim N(0, Q_k);\qquad
-    z_k = H_k x_k + v_k,\quad v_k \sim N(0, R_k).
+    \begin{aligned}
+    x_{k+1} &= \Phi_k x_k + w_k, & w_k &\sim N(0, Q_k);\\
+    z_k &= H_k x_k + v_k, & v_k &\sim N(0, R_k).
+    \end{aligned}
 
 Prediction: :math:`x^- = \Phi x,\ P^- = \Phi P \Phi^T + Q`.
 Update (Joseph form, valid for any gain and numerically symmetric):
 
 .. math::
 
-    S = H P^- H^T + R,\quad K = P^- H^T S^{-1},\quad
-    x^+ = x^- + K (z - H x^-),\quad
-    P^+ = (I - K H) P^- (I - K H)^T + K R K^T.
+    \begin{aligned}
+    S &= H P^- H^T + R, \qquad K = P^- H^T S^{-1},\\
+    x^+ &= x^- + K (z - H x^-),\\
+    P^+ &= (I - K H) P^- (I - K H)^T + K R K^T.
+    \end{aligned}
 
 Information form: :math:`Y = P^{-1},\ y = P^{-1} x`, and the update adds
 :math:`H^T R^{-1} H` and :math:`H^T R^{-1} z`.

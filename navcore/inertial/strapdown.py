@@ -4,10 +4,12 @@ Model (KZL Eqs. 7-9, with the neglected terms made switchable):
 
 .. math::
 
-    \dot x^n = v^n,\qquad
-    \dot v^n = R_b^n f_{ib}^b + g^n - (2\omega_{ie}^n + \omega_{en}^n)\times v^n,\qquad
-    \dot q_b^n = \tfrac12 q_b^n \otimes [0, \omega_{ib}^b]
+    \begin{aligned}
+    \dot x^n &= v^n,\\
+    \dot v^n &= R_b^n f_{ib}^b + g^n - (2\omega_{ie}^n + \omega_{en}^n)\times v^n,\\
+    \dot q_b^n &= \tfrac12 q_b^n \otimes [0, \omega_{ib}^b]
                - \tfrac12 [0, \omega_{in}^n] \otimes q_b^n,
+    \end{aligned}
 
 with :math:`\omega_{in}^n = \omega_{ie}^n + \omega_{en}^n`, Hamilton quaternions (scalar
 first, :mod:`navcore.frames`), :math:`f_{ib}^b` the *specific force* (so a level IMU at rest
