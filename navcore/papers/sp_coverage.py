@@ -201,14 +201,18 @@ def gps_aided_gain_not_dramatic() -> bool:
 
 
 def narrowband_min_aj_db() -> float:
-    return saj.min_aj_improvement_db("narrowband", 4.0, 80.0)
+    return saj.min_aj_improvement_db(
+        "narrowband", saj.IN.aj_narrowband_cep_low_m, saj.IN.aj_narrowband_cep_high_m
+    )
 
 
 def aj_falls_beyond_100m() -> bool:
-    """Wideband A/J improvement at the largest CEP the two curves share is below that at 100 m."""
+    """Wideband A/J improvement at the largest CEP the two curves share is below that at the printed
+    100 m."""
+    beyond = saj.IN.aj_falls_beyond_m
     big = float(min(np.max(saj.model_ceps(a, "wideband", saj.FINE_POWERS_W)) for a in ("TC", "DI")))
-    imp = saj.aj_improvement_db("wideband", np.array([100.0, 0.95 * big]))
-    return bool(big > 100.0 and imp[1] < imp[0])
+    imp = saj.aj_improvement_db("wideband", np.array([beyond, 0.95 * big]))
+    return bool(big > beyond and imp[1] < imp[0])
 
 
 CLAIMS = [
