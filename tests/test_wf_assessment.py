@@ -55,7 +55,7 @@ def test_three_satellite_bound_is_weighted_mean_of_sigmas(sigma_a, sigma_t):
     q, r = (sigma_a * wf.IN.ts) ** 2, (200 * sigma_a) ** 2
     post = (-q + np.sqrt(q * q + 4 * q * r)) / 2
     prior = post + q
-    f_over_c = 1575.42e6 / 299_792_458.0
+    f_over_c = 5.25  # the printed f_o^L1/c of Sec. IV.D, the gain of H_G in Eq. (25)
     var_dg = 1 / (1 / prior + f_over_c**2 / wf.IN.sigma_g**2)
     s = 1 / np.sqrt([wf.IN.sigma_n**2 + sigma_t**2, post, var_dg])
     assert wf.sigma_d_bound(sigma_a, sigma_t, 3) == pytest.approx(s.sum() / (s**2).sum(), rel=1e-9)
@@ -70,8 +70,10 @@ def test_prior_gap_closed_form():
 
 
 def test_gps_doppler_velocity_sigma():
-    """Oracle: arithmetic sigma_G c / f_L1 with the L1 carrier 1575.42 MHz."""
-    assert wf.gps_doppler_velocity_sigma() == pytest.approx(1.0 * 299_792_458.0 / 1575.42e6, rel=1e-12)
+    """Oracle: arithmetic sigma_G / (f_L1/c) with the printed f_L1/c = 5.25 1/m (Sec. IV.D), and the
+    physical ratio 1575.42 MHz / c within the 0.1 % that the printed digits leave."""
+    assert wf.gps_doppler_velocity_sigma() == pytest.approx(1.0 / 5.25, rel=1e-12)
+    assert wf.gps_doppler_velocity_sigma() == pytest.approx(299_792_458.0 / 1575.42e6, rel=1e-3)
 
 
 def test_location_leverage_position_bias_is_a_translation():

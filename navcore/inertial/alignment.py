@@ -84,16 +84,23 @@ def levelling(
 
 
 @implements("KZL 2", "KZL 3")
-def levelling_as_printed(a_b: ArrayLike) -> tuple[Array, Array]:
+def levelling_as_printed(a_b: ArrayLike, roll_form: str = "atan2") -> tuple[Array, Array]:
     """KZL Eqs. 2-3 exactly as printed.
 
-    ``theta = arctan(-a_x/sqrt(a_y^2+a_z^2))``, ``phi = atan2(a_y, a_z)``. Correct only if
-    ``a_b`` is minus the specific force.
+    ``theta = arctan(-a_x/sqrt(a_y^2+a_z^2))``, ``phi = arctan_2(a_y / a_z)``. The printed roll
+    names the two-argument arctangent but gives it one argument, the ratio ``a_y / a_z``:
+    ``roll_form`` picks the reading. Correct only if ``a_b`` is minus the specific force (the
+    one-argument reading also returns the roll of a level specific force, for ``|roll| < 90``
+    deg, while the pitch has the wrong sign under every reading).
 
     Parameters
     ----------
     a_b : (..., 3) array
         Averaged accelerometer output in body axes, m/s^2.
+    roll_form : {"atan2", "arctan"}, optional
+        ``"atan2"``: ``atan2(a_y, a_z)``, the two-argument function the name ``arctan_2``
+        calls for (default); ``"arctan"``: ``arctan(a_y / a_z)``, the one-argument arctangent of
+        the printed ratio.
 
     Returns
     -------
@@ -105,7 +112,8 @@ def levelling_as_printed(a_b: ArrayLike) -> tuple[Array, Array]:
     Raises
     ------
     ValueError
-        If a y-z component is zero (pitch of +-90 deg).
+        If a y-z component is zero (pitch of +-90 deg), ``a_z`` is zero with ``roll_form="arctan"``,
+        or ``roll_form`` is not one of the two readings.
 
     References
     ----------
@@ -116,12 +124,23 @@ def levelling_as_printed(a_b: ArrayLike) -> tuple[Array, Array]:
     >>> roll, pitch = levelling_as_printed([0.5, 0.0, 9.81])
     >>> round(float(roll), 4), round(float(pitch), 4)
     (0.0, -0.0509)
+    >>> [round(float(np.degrees(levelling_as_printed([0.0, 0.0, -9.81], form)[0])), 1)
+    ...  for form in ("atan2", "arctan")]
+    [180.0, -0.0]
     """
+    if roll_form not in ("atan2", "arctan"):
+        raise ValueError(f"roll_form must be 'atan2' or 'arctan', got {roll_form!r}")
     a = as_finite_array("a_b", a_b)
     ax, ay, az = a[..., 0], a[..., 1], a[..., 2]
     if np.any(np.hypot(ay, az) == 0.0):
         raise ValueError("a_b must have a nonzero y-z component (pitch of +-90 deg is undefined here)")
-    return np.arctan2(ay, az), np.arctan(-ax / np.hypot(ay, az))
+    if roll_form == "arctan":
+        if np.any(az == 0.0):
+            raise ValueError("a_b must have a nonzero z component for the one-argument arctan(a_y / a_z)")
+        roll = np.arctan(ay / az)
+    else:
+        roll = np.arctan2(ay, az)
+    return roll, np.arctan(-ax / np.hypot(ay, az))
 
 
 @implements("KZL 4")

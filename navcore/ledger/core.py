@@ -335,17 +335,19 @@ EXACT = Tolerance(reason="exact: an integer count or a logical statement", abs=0
 
 #: The one table of prose words and their bands (shown on the ledger page). A claim about a
 #: word of this table compares with ``rel`` (relative) or ``abs_log10`` (in decades, for
-#: claims published as a base-10 logarithm of a ratio).
+#: claims published as a base-10 logarithm of a ratio); a word that names a count ("several",
+#: "a few") has its ``centre`` and half-width ``abs``, which a statement reads as its range.
 PROSE_WORDS: dict[str, dict[str, Any]] = {
     "about": {"rel": 0.10, "meaning": "within ±10 %"},
     "approximately": {"rel": 0.10, "meaning": "within ±10 %"},
     "nearly": {"rel": 0.10, "meaning": "within ±10 %"},
     "close to": {"rel": 0.10, "meaning": "within ±10 %"},
+    "around": {"rel": 0.10, "meaning": "within ±10 % (read as 'about')"},
     "roughly": {"rel": 0.20, "meaning": "within ±20 %"},
     "on the order of": {"rel": 0.50, "meaning": "within ±50 %"},
     "of the order of": {"rel": 0.50, "meaning": "within ±50 %"},
-    "several": {"abs": 3.0, "meaning": "3 to 9 (published as 6 ± 3)"},
-    "a few": {"abs": 1.5, "meaning": "2 to 5 (published as 3.5 ± 1.5)"},
+    "several": {"abs": 3.0, "centre": 6.0, "meaning": "3 to 9 (published as 6 ± 3)"},
+    "a few": {"abs": 1.5, "centre": 3.5, "meaning": "2 to 5 (published as 3.5 ± 1.5)"},
     "an order of magnitude": {
         "abs_log10": 0.5,
         "meaning": "a factor 3.16 either way of 10 (log10 ratio 1 ± 0.5)",

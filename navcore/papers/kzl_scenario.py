@@ -20,11 +20,12 @@ That assignment is a ``convention`` input (:data:`IN` ``gyro_bias_arw``); the ot
 claim gives under it.
 
 Assumptions the paper does not state are ``assumed`` inputs with a plausible range: the
-initialisation averaging time, the crab angle, the GPS measurement noises. The satellite
-visibility schedule (:data:`VISIBILITY_SCHEDULE`, the paper's is only in its figures) is the
-structure of the scenario the claims refer to ("the 3-satellite segment"), kept as a
-constant; the initial GPS errors, clock model and bias random-walk tuning are the filter's
-(:class:`~navcore.estimation.ekf_ins_gnss.Scenario`) and are stated there.
+initialisation averaging time, the crab angle, the GPS measurement noises and the errors of
+the initial GPS fix (one scale, ``gnss_noise_scale``, over the nominal values of
+:data:`GNSS_NOMINAL`). The satellite visibility schedule (:data:`VISIBILITY_SCHEDULE`, the
+paper's is only in its figures) is the structure of the scenario the claims refer to ("the
+3-satellite segment"), kept as a constant; the clock model and bias random-walk tuning are the
+filter's (:class:`~navcore.estimation.ekf_ins_gnss.Scenario`) and are stated there.
 """
 
 from __future__ import annotations
@@ -54,6 +55,7 @@ __all__ = [
     "SEED",
     "VISIBILITY_SCHEDULE",
     "gnss_noise",
+    "initial_fix_sigmas",
     "kzl_imu",
     "monte_carlo",
     "satellite_priority",
@@ -152,15 +154,24 @@ IN.assumed(
     high=2.0,
     reason="the paper gives no GPS noise; the book's nominal 1-sigma noises (GNSS_NOMINAL: 3 m code, "
     "5 cm/s delta range, 3 mm undifferenced phase, 0.17 deg per Euler angle from the 2-m multi-antenna "
-    "system) are scaled together over 0.5-2 (1.5-6 m, 2.5-10 cm/s, 1.5-6 mm, 0.09-0.34 deg): a "
-    "receiver noisier in code is noisier in phase, and one scale keeps the Monte Carlo band affordable",
+    "system, and the initial GPS fix of 3 m and 5 cm/s per axis) are scaled together over 0.5-2 (1.5-6 m, "
+    "2.5-10 cm/s, 1.5-6 mm, 0.09-0.34 deg): a receiver noisier in code is noisier in phase and gives a "
+    "worse first fix, and one scale keeps the Monte Carlo band affordable",
     unit="",
-    quantity="scale of the GPS measurement noises",
+    quantity="scale of the GPS measurement noises and of the initial fix",
 )
 
 #: Nominal GPS noises (1-sigma) that ``gnss_noise_scale`` multiplies: code pseudorange (m), delta
-#: range (m/s), undifferenced carrier phase (m), multi-antenna attitude per Euler angle (rad).
-GNSS_NOMINAL = {"pseudorange": 3.0, "delta_range": 0.05, "phase": 0.003, "attitude": 0.003}
+#: range (m/s), undifferenced carrier phase (m), multi-antenna attitude per Euler angle (rad), and
+#: the errors of the initial GPS fix per axis, position (m) and velocity (m/s).
+GNSS_NOMINAL = {
+    "pseudorange": 3.0,
+    "delta_range": 0.05,
+    "phase": 0.003,
+    "attitude": 0.003,
+    "pos0": 3.0,
+    "vel0": 0.05,
+}
 
 #: Visibility schedule (start time s, satellites tracked): 8 -> 4 -> 3 -> 2 -> 5. The paper's
 #: is only in Figs. 4-5 (Table 1: "2-8, as depicted"); the claims name its segments.
@@ -168,12 +179,6 @@ VISIBILITY_SCHEDULE = ((0.0, 8), (60.0, 4), (90.0, 3), (120.0, 2), (150.0, 5))
 
 N_RUNS = 30
 SEED = 20061029
-
-#: The initial GPS fix, 3 m and 5 cm/s per axis: the filter's own assumption, not an input
-#: (negligible against the 180-s errors of km and m/s; as inputs they would double the
-#: Monte Carlo bands).
-POS0_SIGMA_M = 3.0
-VEL0_SIGMA_MPS = 0.05
 
 
 def table1() -> dict:
@@ -211,6 +216,14 @@ def kzl_imu(swapped: bool = False) -> ImuSpec:
         gyro_random_walk_deg_per_h_per_sqrt_hz=arw,
         source="KZL Table 1 (OCR-scrambled; gyro values moved up one line)",
     )
+
+
+def initial_fix_sigmas() -> tuple[float, float]:
+    """Errors of the initial GPS fix per axis, position (m) and velocity (m/s): the nominal 3 m and
+    5 cm/s of :data:`GNSS_NOMINAL` times the assumed ``gnss_noise_scale`` (the fix is a GPS
+    solution, as noisy as the receiver)."""
+    k = IN.gnss_noise_scale
+    return k * GNSS_NOMINAL["pos0"], k * GNSS_NOMINAL["vel0"]
 
 
 def gnss_noise(mode: str = "all") -> GnssNoise:
@@ -292,6 +305,7 @@ def table1_scenario(
     """
     ve, vn = IN.velocity_east_mps, IN.velocity_north_mps  # level flight (Sec. 3.6): no vertical velocity
     sat_pos, sat_vel = table1_sky()
+    pos0_sigma, vel0_sigma = initial_fix_sigmas()
     K = sat_pos.shape[0] - 1
     t = np.arange(K + 1) / IN.gps_rate_hz
     n_vis = np.zeros(K + 1, dtype=np.int64)
@@ -310,8 +324,8 @@ def table1_scenario(
         gnss=gnss_noise(mode),
         init_time=IN.init_time_s if initialise else None,
         heading_sigma=IN.crab_angle_deg * DEG,
-        pos0_sigma=POS0_SIGMA_M,
-        vel0_sigma=VEL0_SIGMA_MPS,
+        pos0_sigma=pos0_sigma,
+        vel0_sigma=vel0_sigma,
         baselines_b=table1_baselines_b() if mode in ("tc_dd", "all") else None,
     )
 

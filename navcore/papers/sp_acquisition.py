@@ -19,9 +19,10 @@ from navcore.gnss.acquisition import (
     search_time_from_cells,
 )
 from navcore.gnss.tracking import distance_to_phase_deg
-from navcore.ledger import EXACT, Claim, Erratum, InputSet, printed
+from navcore.ledger import EXACT, Claim, Erratum, InputSet, printed, prose
 from navcore.location.target_location import target_location_rss
 from navcore.papers import sp_tracking as spt
+from navcore.papers.sp_quotes import quoted
 from navcore.papers.sp_tables import TABLE_2_5_PRINTED
 from navcore.units import DEG, DEG_PER_H, GPS_L1_WAVELENGTH_M, OMEGA_EARTH
 
@@ -140,32 +141,10 @@ def pointing_negligible() -> bool:
     return bool(ok)
 
 
-ERRATA = [
-    Erratum(
-        id="SP-E-search-doppler-factor",
-        paper="SP",
-        kind="inconsistent-numbers",
-        basis="text-only",
-        locator="Sec. 2.5, Delta T formula; Sec. 2.6.2",
-        printed="$\\Delta T = 0.020\\, [2 \\sigma_{\\text{rng}}/30] \\times [2 "
-        "\\sigma_{\\text{rng-rate}}/10]$; 'one Doppler shift interval' "
-        "for range-rate uncertainties up to 10 m/s",
-        finding="Taken literally, $\\sigma_{\\text{rng-rate}}$ up to 10 m/s gives a Doppler factor up to 2, "
-        "not 1; the "
-        "brackets must be cell counts (ceilings, at least 1) and Sec. 2.6.2 counts a single 10-m/s "
-        "interval. The 50-Hz cell is 9.5 m/s at L1, printed as 10 m/s. The '20 ms/chip' of Sec. 2.6.2 "
-        "calls the 30-m interval a chip: it matches a P(Y) chip (29.3 m), while the 36 deg per 30 m "
-        "phase convention is 360 deg per 300 m.",
-        evidence="Search times recomputed from Table 2.7 with one Doppler cell reproduce the printed "
-        "0.2 s and 0.8-1.6 s; 50 Hz x 0.1903 m = 9.51 m/s.",
-        claims=("SP-sec2.6.2-search-better", "SP-sec2.5-doppler-cell-mps"),
-        discussed_in=PAGE_ACQ,
-    ),
-]
+ERRATA: list[Erratum] = []
 
 _t02 = printed("0.2")
-_t08 = printed("0.8", why="'about 0.8 to 1.6 s'")
-_t16 = printed("1.6", why="'about 0.8 to 1.6 s'")
+_ABOUT_SEARCH = prose("about", why="'holds the search time to about 0.8 to 1.6 s'")
 _p32 = printed("32")
 _d36 = printed("36")
 _hz50 = printed("50")
@@ -205,7 +184,7 @@ CLAIMS = [
         published=10.0,
         unit="m/s",
         compute=lambda: float(range_rate_from_doppler(IN.doppler_cell_hz, GPS_L1_WAVELENGTH_M)),
-        tolerance=printed("10", why="'10 m/s' read as one significant figure")[1],
+        tolerance=printed("10", why="'50 Hz corresponding to 10 m/s'")[1],
         expected_status="reproduced",
         note="50 Hz x 0.1903 m = 9.51 m/s, printed as 10 m/s.",
     ),
@@ -236,18 +215,20 @@ CLAIMS = [
         tolerance=_t02[1],
         expected_status="consistent",
         note="Delta T = 20 ms x intervals x one Doppler cell: 0.10 to 0.18 s for the four better systems; "
-        "arithmetic on printed numbers, a cross-check.",
+        "arithmetic on printed numbers, a cross-check. One Doppler cell: the Sec. 2.5 formula's "
+        "$[2 \\sigma_{\\text{rng-rate}}/10]$ is one 10-m/s interval when 'not greater than 10 m/s' bounds "
+        "the whole uncertainty span; the 30-m interval called a 'chip' is a P(Y) chip (29.3 m).",
     ),
     Claim(
         id="SP-sec2.6.2-search-10-min",
         paper="SP",
         locator="Sec. 2.6.2",
         quantity="shortest search time of the 10 nmi/h system",
-        published=_t08[0],
+        published=0.8,
         unit="s",
         kind="cross-check",
         compute=lambda: float(np.min(search_times_s(TC10))),
-        tolerance=_t08[1],
+        tolerance=_ABOUT_SEARCH,
         expected_status="consistent",
         note="42 intervals x 20 ms = 0.84 s, arithmetic on printed numbers, a cross-check.",
     ),
@@ -256,11 +237,11 @@ CLAIMS = [
         paper="SP",
         locator="Sec. 2.6.2",
         quantity="longest search time of the 10 nmi/h system",
-        published=_t16[0],
+        published=1.6,
         unit="s",
         kind="cross-check",
         compute=lambda: float(np.max(search_times_s(TC10))),
-        tolerance=_t16[1],
+        tolerance=_ABOUT_SEARCH,
         expected_status="consistent",
         note="82 intervals x 20 ms = 1.64 s, arithmetic on printed numbers, a cross-check.",
     ),
@@ -295,3 +276,5 @@ CLAIMS = [
         discussed_in=PAGE_TGT,
     ),
 ]
+
+CLAIMS = quoted(CLAIMS)

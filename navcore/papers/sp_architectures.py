@@ -12,6 +12,7 @@ from navcore.gnss.architectures import (
     tightly_coupled_layout,
 )
 from navcore.ledger import EXACT, Claim, InputSet
+from navcore.papers.sp_quotes import quoted
 
 #: Table rows as printed (state element, components).
 _TABLE_2_1 = (
@@ -130,3 +131,5 @@ CLAIMS = [
         "blocks, with equal block sizes.",
     ),
 ]
+
+CLAIMS = quoted(CLAIMS)
