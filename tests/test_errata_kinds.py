@@ -24,15 +24,15 @@ def test_every_kind_is_documented_on_the_erratum():
 
 def test_unknown_kind_raises_naming_kind():
     with pytest.raises(ValueError, match=r"Erratum\.kind must be one of"):
-        Erratum("WF-E9", "WF", "Eq. (1)", "p", "f", "e", kind="misprint")
+        Erratum("WF-E9", "WF", "Eq. (1)", "p", "f", "e", kind="misprint", basis="computed")
 
 
 def test_known_kind_is_accepted():
-    e = Erratum("WF-E9", "WF", "Eq. (1)", "p", "f", "e", kind="typography")
+    e = Erratum("WF-E9", "WF", "Eq. (1)", "p", "f", "e", kind="typography", basis="computed")
     assert e.kind == "typography"
 
 
 def test_missing_kind_raises():
     """Every erratum says what kind of slip it is: leaving the kind out is an error."""
     with pytest.raises(ValueError, match=r"Erratum\.kind must be one of"):
-        Erratum("WF-E9", "WF", "Eq. (1)", "p", "f", "e")
+        Erratum("WF-E9", "WF", "Eq. (1)", "p", "f", "e", basis="computed")

@@ -118,8 +118,9 @@ def test_not_reproducible_has_no_compute():
     c = make(expected_status="not-reproducible", compute=None)
     assert evaluate(c).passes and evaluate(c).reproduced is None
     assert evaluate(c).status == "not-reproducible"
-    with pytest.raises(ValueError, match="never not-reproducible"):
-        make(expected_status="not-reproducible")
+    # a computed claim may expect not-reproducible (a band too wide to decide), but a claim
+    # that reads no assumed input derives its verdict from the value, so the pin fails
+    assert not evaluate(make(expected_status="not-reproducible")).passes
     # nothing computed is not-reproducible, whatever was expected
     assert evaluate(make(compute=None)).status == "not-reproducible"
     assert not evaluate(make(compute=None)).passes
@@ -172,7 +173,9 @@ def test_registry_validation():
     )
     with pytest.raises(ValueError, match="unknown erratum"):
         validate_registry([c], [])
-    e = Erratum("WF-E9", "WF", "Eq. (1)", "p", "f", "e", claims=("WF-nope",), kind="typography")
+    e = Erratum(
+        "WF-E9", "WF", "Eq. (1)", "p", "f", "e", claims=("WF-nope",), kind="typography", basis="text-only"
+    )
     with pytest.raises(ValueError, match="unknown claim"):
         validate_registry([c], [e])
     with pytest.raises(ValueError, match="duplicate claim"):
@@ -196,10 +199,13 @@ def test_json_has_exactly_the_documented_fields():
         "published",
         "relation",
         "unit",
+        "printed",
+        "errata",
         "kind",
         "inputs",
         "reproduced",
         "band",
+        "readings",
         "tolerance",
         "status",
         "expected_status",
@@ -211,6 +217,7 @@ def test_json_has_exactly_the_documented_fields():
     assert out[0]["kind"] == "reproduction" and out[1]["kind"] == "statement"
     assert out[0]["band"] is None and out[0]["inputs"] == []
     assert out[1]["published"] is True
+    assert out[0]["readings"] == [] and out[0]["errata"] == []
 
 
 def test_table_renders_html_and_markdown():

@@ -294,6 +294,7 @@ def test_math_in_notes_and_errata():
         id="SP-E-test",
         paper="SP",
         kind="typography",
+        basis="text-only",
         locator="Eq. (1)",
         printed=r"$e^{-\omega_0 t^2}$",
         finding=r"$e^{-\omega_0 t/2}$",

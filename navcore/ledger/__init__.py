@@ -28,6 +28,8 @@ and from anywhere::
 """
 
 from navcore.ledger.core import (
+    BAND_FACTOR,
+    ERRATUM_BASES,
     EXACT,
     KINDS,
     PAPERS,
@@ -35,15 +37,19 @@ from navcore.ledger.core import (
     PROSE_WORDS,
     RELATIONS,
     STATUSES,
+    TEXT_ONLY_CAVEAT,
     Claim,
     Erratum,
     Evaluation,
     Tolerance,
+    claim_errata,
+    claim_quote,
     evaluate,
     figure_reading,
     monte_carlo,
     printed,
     prose,
+    quote_policies,
 )
 from navcore.ledger.inputs import Input, InputSet, input_cache
 from navcore.ledger.registry import (
@@ -60,6 +66,8 @@ from navcore.ledger.registry import (
 )
 
 __all__ = [
+    "BAND_FACTOR",
+    "ERRATUM_BASES",
     "EXACT",
     "KINDS",
     "PAPERS",
@@ -67,6 +75,7 @@ __all__ = [
     "PROSE_WORDS",
     "RELATIONS",
     "STATUSES",
+    "TEXT_ONLY_CAVEAT",
     "Claim",
     "Erratum",
     "Evaluation",
@@ -75,6 +84,8 @@ __all__ = [
     "Tolerance",
     "cache_dir",
     "claim",
+    "claim_errata",
+    "claim_quote",
     "claims",
     "counts",
     "errata",
@@ -88,5 +99,6 @@ __all__ = [
     "paper_modules",
     "printed",
     "prose",
+    "quote_policies",
     "validate_registry",
 ]

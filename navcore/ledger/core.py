@@ -11,21 +11,80 @@ computation, the tolerance and the provenance of every input the computation rea
 Verdicts, as derived (LEDGER.md)
 --------------------------------
 ``not-reproducible``
-    nothing is computed (``compute is None``); the note names the missing input.
+    nothing is computed (``compute is None``); the note names the missing input. Or the
+    band over the assumed inputs is too wide to decide (below): the value and the band are
+    shown, and the assumptions are too loose to tell agreement from disagreement.
 ``reproduced``
     kind ``reproduction`` or ``statement``, every input read is ``published`` or
-    ``convention``, and the value satisfies the published relation within the tolerance.
+    ``convention``, and the value under the reading used of every convention satisfies the
+    published relation within the tolerance.
 ``consistent``
     agreement that rests on more than published inputs: some value in the band of the
-    ``assumed`` inputs agrees, or the computation reads a ``fitted`` input, or the kind is
-    ``cross-check`` (arithmetic on printed numbers) or ``fit``.
+    ``assumed`` inputs agrees (and the band decides), or the computation reads a ``fitted``
+    input, or the kind is ``cross-check`` (arithmetic on printed numbers) or ``fit``; or the
+    reading used of a convention disagrees where another admissible reading agrees.
 ``inconsistent``
-    the model under declared assumptions disagrees across the whole band (or a fit that
-    does not agree).
+    the model under declared assumptions disagrees across the whole band, under every
+    admissible reading (or a fit that does not agree).
 ``discrepant``
-    disagreement with published inputs only, or for every admissible input (every assumed
-    input read declares its range ``admissible``); the claim names an erratum and an
-    independent oracle with which the book's value must agree.
+    disagreement under every admissible reading of every convention read, with published
+    inputs only, or for every admissible input (every assumed input read declares its range
+    ``admissible``); the claim names an erratum and an independent oracle with which the
+    book's value must agree.
+
+Readings
+--------
+A ``convention`` input lists every admissible reading of a text that leaves one open, each
+labelled in words, the one used included (:meth:`~navcore.ledger.inputs.InputSet.convention`).
+The ledger runs a claim under every combination of the readings of the conventions it read
+(up to :data:`MAX_READING_COMBINATIONS`; beyond it, each convention's readings one at a time,
+the others at the reading used), across the assumed inputs' ranges too where the claim also
+reads assumed inputs, and weighs them:
+
+* the reading used agrees: the verdict is that reading's (``reproduced`` with published
+  inputs), and what the other readings give is shown;
+* the reading used disagrees and another admissible reading agrees: ``consistent``, and the
+  claim names the reading(s) that agree (the paper is not accused of what one of its own
+  readings supports);
+* every admissible reading disagrees: ``discrepant`` (published inputs only, or an
+  admissible assumed range) or ``inconsistent`` (plausible assumed ranges).
+
+A reading other than the one used is run across the assumed ranges only when the verdict
+needs it (the reading used does not already agree with a band that decides).
+
+A band too wide to decide
+-------------------------
+Stated before any value is computed: a band decides nothing when its ends are more than a
+factor :data:`BAND_FACTOR` (3) apart and the tolerance does not accept all of it (part of
+the band agrees with the printed value, part does not). Such a claim is ``not-reproducible``
+with its band shown, not ``consistent``. The factor is the span of the loosest word of the
+prose table that still names one number, "of the order of" (±50 %, so 0.5 to 1.5 times the
+number: a factor 3); a band wider than that says less than the paper's loosest wording. The
+ends are compared by :func:`band_spread`: as a ratio of magnitudes for a band of one sign; a
+band that reaches zero or changes sign has no finite ratio (it cannot even tell the sign), so
+it is too wide unless the tolerance accepts all of it; a band in decibels (a unit starting
+with ``dB``) is compared as the power ratio of its ends, 10 log10(3) = 4.77 dB. A printed
+bound (``<``, ``>``) is treated alike: a band that straddles it and spans more than a factor 3
+is too wide; a band wholly on the bound's side agrees everywhere and decides.
+
+Findings and their basis
+------------------------
+An :class:`Erratum` is a finding; its ``basis`` (:data:`ERRATUM_BASES`) is ``computed``
+(a number the paper prints is wrong: a recomputation under its stated inputs, or its own
+other printed numbers, contradict it) or ``text-only`` (the text of a formula or a word is at
+fault, and the paper's printed numbers follow the correct form, or none depends on it). The
+book works from transcriptions, so a text-only finding cannot tell a misprint from a
+transcription slip (:data:`TEXT_ONLY_CAVEAT`). A claim's ``errata`` are the errata it is
+evidence for: the one it names and those that name it.
+
+What the paper printed
+----------------------
+A claim's ``printed`` is the paper's words or formula as quoted; by default the text given
+to its tolerance (``printed("17.67")`` quotes ``17.67``, ``prose("about")`` quotes the word).
+The tolerance policy follows the quote by rule (:func:`quote_policies`), and a number the
+paper does not print is not ``published``: a threshold or an encoding of "this equation
+holds" is the book's, so such a claim is a ``statement`` whose threshold is a declared
+convention (:func:`quote_has_number`).
 
 Tolerance policies
 ------------------
@@ -37,32 +96,44 @@ count, :func:`monte_carlo`) and ``exact`` (:data:`EXACT`).
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
-from navcore.ledger.inputs import _label_and_unit, declaring, overriding, recording
+from navcore.ledger.inputs import Input, _label_and_unit, declaring, get_input, overriding, recording
 
 __all__ = [
+    "BAND_FACTOR",
+    "ERRATUM_BASES",
     "ERRATUM_KINDS",
     "EXACT",
     "KINDS",
+    "MAX_READING_COMBINATIONS",
     "PAPERS",
     "POLICIES",
     "PROSE_WORDS",
     "RELATIONS",
     "STATUSES",
+    "TEXT_ONLY_CAVEAT",
     "Claim",
     "Erratum",
     "Evaluation",
     "Tolerance",
+    "band_spread",
+    "band_too_wide",
+    "claim_errata",
+    "claim_quote",
     "evaluate",
     "figure_reading",
     "monte_carlo",
     "printed",
     "prose",
+    "quote_has_number",
+    "quote_numbers",
+    "quote_policies",
 ]
 
 PAPERS: dict[str, str] = {
@@ -102,6 +173,21 @@ ERRATUM_KINDS: dict[str, str] = {
     "that the paper's own model and numbers do not support",
 }
 
+#: The basis of an erratum's evidence (LEDGER.md, "The basis of an erratum").
+ERRATUM_BASES: dict[str, str] = {
+    "computed": "a number the paper prints is wrong: a recomputation under its stated inputs, or its "
+    "own other printed numbers, contradict it",
+    "text-only": "the text of a formula or a word is at fault, and the paper's printed numbers follow "
+    "the correct form (or none depends on it)",
+}
+
+#: Said once wherever text-only findings are listed or counted (not repeated per erratum).
+TEXT_ONLY_CAVEAT = (
+    "The book works from transcriptions of the papers, so a text-only finding (the text of a "
+    "formula or a word, on which the printed numbers do not depend) cannot tell a misprint in "
+    "the paper from a slip in its transcription."
+)
+
 _ID_RE = re.compile(r"^(WF|SP|ATC10|KZL)-[A-Za-z0-9][A-Za-z0-9._+-]*$")
 
 
@@ -126,6 +212,9 @@ class Tolerance:
         for none.
     policy : str
         One of :data:`POLICIES`; the ledger refuses a tolerance without one.
+    quote : str
+        The printed text the tolerance was fixed from (``"17.67"`` for :func:`printed`,
+        ``"about"`` for :func:`prose`); a claim quotes it by default (not compared).
 
     Raises
     ------
@@ -144,6 +233,7 @@ class Tolerance:
     abs: float | None = None
     rel: float | None = None
     policy: str = ""
+    quote: str = field(default="", compare=False)
 
     def __post_init__(self) -> None:
         if not self.reason or not self.reason.strip():
@@ -208,6 +298,8 @@ PROSE_WORDS: dict[str, dict[str, Any]] = {
         "meaning": "a factor 3.16 either way of 10 (log10 ratio 1 ± 0.5)",
     },
     "orders of magnitude": {"abs_log10": 0.5, "meaning": "±0.5 decade on the log10 ratio"},
+    "~": {"rel": 0.10, "meaning": "within ±10 % (read as 'approximately')"},
+    "≈": {"rel": 0.10, "meaning": "within ±10 % (read as 'approximately')"},
 }
 
 
@@ -265,7 +357,9 @@ def printed(text: str, *, extra_abs: float = 0.0, why: str = "") -> tuple[float,
         reason += f", plus {extra_abs:g}" + (f" ({why})" if why else "")
     elif why:
         reason += f"; {why}"
-    return value, Tolerance(reason=reason, abs=round(half + extra_abs, 15), policy="printed-digits")
+    return value, Tolerance(
+        reason=reason, abs=round(half + extra_abs, 15), policy="printed-digits", quote=text.strip()
+    )
 
 
 def prose(word: str, *, why: str = "") -> Tolerance:
@@ -302,10 +396,10 @@ def prose(word: str, *, why: str = "") -> Tolerance:
     band = PROSE_WORDS[key]
     reason = f"'{key}' in prose: {band['meaning']}" + (f"; {why}" if why else "")
     if "rel" in band:
-        return Tolerance(reason=reason, rel=band["rel"], policy="prose")
+        return Tolerance(reason=reason, rel=band["rel"], policy="prose", quote=key)
     if "abs" in band:
-        return Tolerance(reason=reason, abs=band["abs"], policy="prose")
-    return Tolerance(reason=reason, abs=band["abs_log10"], policy="prose")
+        return Tolerance(reason=reason, abs=band["abs"], policy="prose", quote=key)
+    return Tolerance(reason=reason, abs=band["abs_log10"], policy="prose", quote=key)
 
 
 def figure_reading(resolution: float, *, figure: str, axis: str) -> Tolerance:
@@ -438,20 +532,36 @@ class Erratum:
         ``overstatement``
             a statement in words (always, slightly, tight, larger than) that the paper's own
             model and numbers do not support.
+    basis : str
+        What the evidence rests on, one of :data:`ERRATUM_BASES`; required:
+
+        ``computed``
+            a number the paper prints is wrong: a recomputation under its stated inputs, or
+            its own other printed numbers, contradict it.
+        ``text-only``
+            the text of a formula or a word is at fault, and the paper's printed numbers
+            follow the correct form (or none depends on it). The book works from
+            transcriptions, so such a finding cannot tell a misprint from a transcription
+            slip; the pages that list findings say so once (:data:`TEXT_ONLY_CAVEAT`).
 
     Raises
     ------
     ValueError
-        If ``paper`` is unknown, a text field is empty, or ``kind`` is not one of
-        :data:`ERRATUM_KINDS`.
+        If ``paper`` is unknown, a text field is empty, ``kind`` is not one of
+        :data:`ERRATUM_KINDS` or ``basis`` not one of :data:`ERRATUM_BASES`.
+
+    Notes
+    -----
+    Constructing an erratum indexes it by id for :func:`claim_errata` (the last one
+    constructed under an id wins), so a claim's JSON can name the errata it is evidence for.
 
     Examples
     --------
     >>> e = Erratum(id="SP-E9-doc", paper="SP", locator="Eq. (2.4.2)", printed="a + b",
     ...             finding="a - b", evidence="the derivation in the book", kind="typography",
-    ...             no_claim_reason="a sign with no printed number to check")
-    >>> e.kind, e.claims
-    ('typography', ())
+    ...             basis="text-only", no_claim_reason="a sign with no printed number to check")
+    >>> e.kind, e.basis, e.claims
+    ('typography', 'text-only', ())
     """
 
     id: str
@@ -464,6 +574,7 @@ class Erratum:
     discussed_in: str = ""
     no_claim_reason: str = ""
     kind: str = ""
+    basis: str = ""
 
     def __post_init__(self) -> None:
         if self.paper not in PAPERS:
@@ -472,9 +583,57 @@ class Erratum:
             raise ValueError(
                 f"Erratum.kind must be one of {list(ERRATUM_KINDS)}, got {self.kind!r} (erratum {self.id!r})"
             )
+        if self.basis not in ERRATUM_BASES:
+            raise ValueError(
+                f"Erratum.basis must be one of {list(ERRATUM_BASES)}, got {self.basis!r} "
+                f"(erratum {self.id!r})"
+            )
         for name in ("id", "locator", "printed", "finding", "evidence"):
             if not str(getattr(self, name)).strip():
                 raise ValueError(f"Erratum.{name} must not be empty (erratum {self.id!r})")
+        _ERRATA_BY_ID[self.id] = self
+
+
+#: Every erratum constructed, by id (the last one under an id wins): :func:`claim_errata`.
+_ERRATA_BY_ID: dict[str, Erratum] = {}
+
+
+def claim_errata(claim: Claim, errata: Sequence[Erratum] | None = None) -> list[dict[str, str]]:
+    """The errata ``claim`` is evidence for, each ``{"id", "basis"}``, sorted by id.
+
+    An erratum counts when the claim names it (``claim.erratum``) or it names the claim (its
+    ``claims`` hold the claim's id or one of its former ids), so a text-only erratum can
+    rest on a reproduced claim.
+
+    Parameters
+    ----------
+    claim : Claim
+        The claim.
+    errata : sequence of Erratum or None, optional
+        The errata to look in; ``None`` for every erratum constructed in the process (those
+        of the paper modules imported).
+
+    Returns
+    -------
+    list of dict of str to str
+        ``[{"id": ..., "basis": "computed" | "text-only"}, ...]``; an erratum id the claim
+        names that is not among ``errata`` is left out.
+
+    Examples
+    --------
+    >>> e = Erratum(id="SP-E8-doc", paper="SP", locator="Eq. (2.4.2)", printed="a + b",
+    ...             finding="a - b", evidence="the derivation", kind="typography",
+    ...             basis="text-only", claims=("SP-doc-sum",))
+    >>> c = Claim(id="SP-doc-sum", paper="SP", locator="Eq. (2.4.2)", quantity="a sum",
+    ...           published=3.0, unit="", compute=lambda: 3.0, tolerance=EXACT,
+    ...           expected_status="reproduced", note="a synthetic claim")
+    >>> claim_errata(c, [e])
+    [{'id': 'SP-E8-doc', 'basis': 'text-only'}]
+    """
+    pool = list(_ERRATA_BY_ID.values()) if errata is None else list(errata)
+    names = {claim.id, *claim.aliases}
+    out = {e.id: e.basis for e in pool if e.id == claim.erratum or names.intersection(e.claims)}
+    return [{"id": k, "basis": out[k]} for k in sorted(out)]
 
 
 @dataclass(frozen=True)
@@ -523,15 +682,21 @@ class Claim:
         Book docname where the claim is derived (for cross-links).
     aliases : tuple of str
         Former ids that still refer to this claim.
+    printed : str
+        The paper's words or formula as quoted (``"approximately 1.4"``, ``"P_D >= 1 exp
+        -K(...)"``); empty to quote the text given to the tolerance (``printed("17.67")``
+        quotes ``17.67``; :func:`claim_quote`). The tolerance policy must follow it
+        (:func:`quote_policies`) and a number claim's quote must contain its published
+        number (:func:`quote_has_number`).
 
     Raises
     ------
     ValueError
         If the id does not start with its paper key and a dash, a value is not one of its
         table (:data:`PAPERS`, :data:`STATUSES`, :data:`RELATIONS`, :data:`KINDS`), the
-        note is empty, a truth value is a ``reproduction`` or uses a bound, a computed
-        claim expects ``not-reproducible``, or a discrepant claim lacks its erratum, oracle
-        or oracle tolerance.
+        note is empty, a truth value is a ``reproduction`` or uses a bound, ``printed`` is
+        not a string, or a discrepant claim lacks its erratum, oracle or oracle tolerance.
+        (A computed claim may expect ``not-reproducible``: a band too wide to decide.)
 
     Examples
     --------
@@ -565,6 +730,7 @@ class Claim:
     oracle_tolerance: Tolerance | None = None
     discussed_in: str = ""
     aliases: tuple[str, ...] = ()
+    printed: str = ""
     _meta: dict[str, Any] = field(default_factory=dict, compare=False, repr=False)
 
     def __post_init__(self) -> None:
@@ -596,10 +762,8 @@ class Claim:
             )
         if not self.note.strip():
             raise ValueError(f"Claim.note must state the interpretation (claim {self.id})")
-        if self.expected_status == "not-reproducible" and self.compute is not None:
-            raise ValueError(
-                f"a claim that computes a value is never not-reproducible: show the value (claim {self.id})"
-            )
+        if not isinstance(self.printed, str):
+            raise ValueError(f"Claim.printed must be the quoted text, got {self.printed!r} (claim {self.id})")
         if self.expected_status == "discrepant":
             if not self.erratum:
                 raise ValueError(f"a discrepant claim must name its erratum (claim {self.id})")
@@ -619,6 +783,277 @@ class Claim:
     def status(self) -> str:
         """The expected verdict (the derived one is on the :class:`Evaluation`)."""
         return self.expected_status
+
+
+# ---------------------------------------------------------------------------------------
+# what the paper printed: the quote, its numbers, and the policy it calls for
+
+#: Words and signs of approximation in a quote: the tolerance is the prose table's band.
+_PROSE_MARKERS = re.compile(
+    "|".join(
+        [re.escape(w) for w in PROSE_WORDS if not w[0].isalpha()]
+        + [r"\b" + re.escape(w).replace(r"\ ", r"\s+") + r"\b" for w in PROSE_WORDS if w[0].isalpha()]
+        + [r"\bapprox\b\.?"]
+    ),
+    re.IGNORECASE,
+)
+#: Words by which a paper says it read a value from its figures.
+_FIGURE_MARKERS = re.compile(
+    r"\bread\s+(?:from|off)\b|\bfrom\s+(?:the\s+)?(?:figs?\b\.?|figures?|curves?|graphs?|plots?)",
+    re.IGNORECASE,
+)
+_FIGURE_LOCATOR = re.compile(r"\bFigs?\.\s*\d")
+
+
+def claim_quote(claim: Claim, tol: Tolerance | None = None) -> tuple[str, str]:
+    """The paper's text a claim quotes, and where the quote comes from.
+
+    Parameters
+    ----------
+    claim : Claim
+        The claim.
+    tol : Tolerance or None, optional
+        Its resolved tolerance; ``None`` resolves it (where no input can be read).
+
+    Returns
+    -------
+    quote : str
+        The claim's ``printed`` if given, else the text its tolerance was fixed from; ``""``
+        when neither is known.
+    source : str
+        ``"claim"`` (the claim quotes the paper), ``"digits"`` (the number given to
+        :func:`printed`), ``"word"`` (the word given to :func:`prose`, without its number)
+        or ``"none"``.
+
+    Examples
+    --------
+    >>> value, tol = printed("17.67")
+    >>> c = Claim(id="SP-doc-omega", paper="SP", locator="Fig. 2.1", quantity="natural frequency",
+    ...           published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
+    ...           expected_status="reproduced", note="a synthetic claim")
+    >>> claim_quote(c)
+    ('17.67', 'digits')
+    >>> import dataclasses
+    >>> claim_quote(dataclasses.replace(c, printed="omega_0 = 17.67 rad/s"))
+    ('omega_0 = 17.67 rad/s', 'claim')
+    """
+    if claim.printed.strip():
+        return claim.printed.strip(), "claim"
+    if tol is None:
+        try:
+            tol = resolve_tolerance(claim)
+        except Exception:
+            return "", "none"
+    quote = tol.quote.strip()
+    if not quote:
+        return "", "none"
+    return quote, ("digits" if tol.policy == "printed-digits" else "word")
+
+
+_SCI = re.compile(r"([+-]?\d+(?:\.\d+)?)\s*(?:×|\*|·|x)\s*10\s*(?:\^|\*\*)\s*\{?\s*([+-]?\d+)\s*\}?")
+_POW10 = re.compile(r"(?<![\d.])10\s*(?:\^|\*\*)\s*\{?\s*([+-]?\d+)\s*\}?")
+_PLAIN = re.compile(r"(?<![\w.])[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?(\s*%)?")
+_FRACTION = re.compile(r"(?<![\w.])(\d+(?:\.\d+)?)\s*/\s*(\d+(?:\.\d+)?)(?![\w.])")
+
+
+def quote_numbers(quote: str) -> list[float]:
+    """Every number a quote prints, in the forms papers print them.
+
+    Reads plain and signed numbers (a Unicode minus too), thousands separators (``3,300``),
+    ``1.5e-3``, ``1.5 × 10^-3`` and ``10^5``, simple fractions (``1/2`` gives 0.5 besides 1
+    and 2) and percentages (``50 %`` gives 0.5 besides 50).
+
+    Parameters
+    ----------
+    quote : str
+        The quoted text.
+
+    Returns
+    -------
+    list of float
+        The numbers found (with the extra readings above), in no particular order.
+
+    Examples
+    --------
+    >>> sorted(quote_numbers("about 3,300 m, i.e. 1.5 × 10^-3 of it, −4 dB, 50 %"))
+    [-4.0, 0.0015, 0.5, 50.0, 3300.0]
+    """
+    text = quote.replace("−", "-").replace("\u2009", " ")
+    text = re.sub(r"(?<=\d),(?=\d{3}(?!\d))", "", text)
+    out: list[float] = []
+    for m in _SCI.finditer(text):
+        out.append(float(m.group(1)) * 10.0 ** int(m.group(2)))
+    text = _SCI.sub(" ", text)  # a mantissa or an exponent alone is not a printed number
+    for m in _POW10.finditer(text):
+        out.append(10.0 ** int(m.group(1)))
+    text = _POW10.sub(" ", text)
+    for m in _FRACTION.finditer(text):
+        if float(m.group(2)) != 0:
+            out.append(float(m.group(1)) / float(m.group(2)))
+    for m in _PLAIN.finditer(text):
+        number = m.group(0)[: len(m.group(0)) - len(m.group(1) or "")]
+        try:
+            value = float(number)
+        except ValueError:
+            continue
+        out.append(value)
+        if m.group(1):
+            out.append(value / 100.0)
+    return out
+
+
+def quote_has_number(quote: str, published: float) -> bool:
+    """Whether ``quote`` prints ``published`` (to a relative 1e-9): what "published" means.
+
+    Parameters
+    ----------
+    quote : str
+        The quoted text (:func:`claim_quote`).
+    published : float
+        The claim's published value.
+
+    Returns
+    -------
+    bool
+        Whether one of :func:`quote_numbers` equals ``published`` to a relative 1e-9 (an
+        absolute 1e-9 below 1).
+
+    Examples
+    --------
+    >>> quote_has_number("approximately 1.4", 1.4), quote_has_number("nearly uncorrelated", 0.3679)
+    (True, False)
+    """
+    target = float(published)
+    scale = 1e-9 * max(1.0, abs(target))
+    return any(abs(n - target) <= scale for n in quote_numbers(quote))
+
+
+def quote_policies(quote: str, *, published: float | bool, locator: str = "") -> tuple[str, ...]:
+    """The tolerance policies the printed words admit (LEDGER.md, "Tolerance").
+
+    The rule: a truth value is ``exact``; a quote with a word or sign of approximation
+    ("approximately", "about", "of the order of", "~", "≈", "roughly", "nearly", any word of
+    :data:`PROSE_WORDS`) is ``prose``; a value the paper says it read from its figures ("read
+    from", "from the figures") is ``figure-reading``; otherwise the number is taken as printed:
+    ``printed-digits``, or ``monte-carlo`` (a paper that states a run count), ``exact`` for an
+    integer, ``figure-reading`` for a value at a figure's locator.
+
+    Parameters
+    ----------
+    quote : str
+        The claim's quoted text (:func:`claim_quote`).
+    published : float or bool
+        The claim's published value.
+    locator : str, optional
+        The claim's locator (a figure admits ``figure-reading``).
+
+    Returns
+    -------
+    tuple of str
+        The admissible policies of :data:`POLICIES`.
+
+    Examples
+    --------
+    >>> quote_policies("Exp ≈ 9", published=9.0), quote_policies("17.67", published=17.67)
+    (('prose',), ('printed-digits', 'monte-carlo'))
+    >>> quote_policies("43 dBW, as read from the figures", published=43.0)
+    ('figure-reading',)
+    """
+    if isinstance(published, bool):
+        return ("exact",)
+    markers = (("prose", _PROSE_MARKERS), ("figure-reading", _FIGURE_MARKERS))
+    found = tuple(policy for policy, marker in markers if marker.search(quote))
+    if found:
+        return found
+    out = ["printed-digits", "monte-carlo"]
+    if math.isfinite(float(published)) and float(published).is_integer():
+        out.append("exact")
+    if _FIGURE_LOCATOR.search(locator):
+        out.append("figure-reading")
+    return tuple(out)
+
+
+# ---------------------------------------------------------------------------------------
+# a band too wide to decide
+
+#: A band whose ends are more than this factor apart decides nothing where the tolerance does
+#: not accept all of it (module docstring, "A band too wide to decide").
+BAND_FACTOR = 3.0
+
+
+def band_spread(low: float, high: float, unit: str = "") -> float:
+    """How far apart a band's ends are, as a factor (module docstring, "A band too wide").
+
+    Parameters
+    ----------
+    low, high : float
+        The band's ends (in either order).
+    unit : str, optional
+        The claim's unit; one starting with ``dB`` compares the ends as a power ratio.
+
+    Returns
+    -------
+    float
+        ``max(|low|, |high|) / min(|low|, |high|)`` for a band of one sign; ``10 **
+        ((high - low) / 10)`` in decibels; ``inf`` for a band that reaches zero or changes
+        sign (1 for the single point 0).
+
+    Examples
+    --------
+    >>> band_spread(2.0, 8.0), band_spread(-8.0, -2.0), band_spread(-1.0, 1.0)
+    (4.0, 4.0, inf)
+    >>> round(band_spread(12.0, 19.5, "dB"), 2)
+    5.62
+    """
+    lo, hi = sorted((float(low), float(high)))
+    if unit.strip().lower().startswith("db"):
+        return 10.0 ** ((hi - lo) / 10.0)
+    if lo > 0 or hi < 0:
+        return max(abs(lo), abs(hi)) / min(abs(lo), abs(hi))
+    return 1.0 if lo == hi == 0 else math.inf
+
+
+def band_too_wide(claim: Claim, tol: Tolerance, low: Any, high: Any) -> bool:
+    """Whether a claim's band is too wide to decide (module docstring, "A band too wide").
+
+    True when the tolerance does not accept the whole band and its ends are more than
+    :data:`BAND_FACTOR` apart (:func:`band_spread`); never for a truth value.
+
+    Parameters
+    ----------
+    claim : Claim
+        The claim (its published value, relation and unit).
+    tol : Tolerance
+        Its resolved tolerance.
+    low, high : float
+        The band's ends.
+
+    Returns
+    -------
+    bool
+        Whether the band decides nothing.
+
+    Examples
+    --------
+    >>> value, tol = printed("120")
+    >>> c = Claim(id="SP-doc-cep", paper="SP", locator="Sec. 3.3", quantity="CEP",
+    ...           published=value, unit="m", compute=lambda: 100.0, tolerance=tol,
+    ...           expected_status="consistent", note="a synthetic claim")
+    >>> band_too_wide(c, tol, 2.0, 567.0), band_too_wide(c, tol, 100.0, 150.0)
+    (True, False)
+    """
+    if claim.is_statement or _is_truth(low) or _is_truth(high):
+        return False
+    pub = float(claim.published)
+    allowed = tol.allowed(pub)
+    lo, hi = sorted((float(low), float(high)))
+    if _satisfies(lo, claim.relation, pub, allowed) and _satisfies(hi, claim.relation, pub, allowed):
+        return False  # the tolerance accepts all of it: agreement everywhere decides
+    return band_spread(lo, hi, claim.unit) > BAND_FACTOR
+
+
+def _is_truth(value: Any) -> bool:
+    return isinstance(value, bool) or type(value).__name__ == "bool_"
 
 
 @dataclass(frozen=True)
@@ -657,8 +1092,16 @@ class Evaluation:
     sensitivity : tuple
         Per assumed input, ``(name, ((point, value), ...))``: the claim's value at each band
         point of that input, the others nominal.
-    alternatives : tuple of tuple
-        Per convention input read, ``(name, other reading, value under it)``.
+    readings : tuple of dict
+        One per combination of the readings of the conventions read (empty when none is
+        read), the reading used first: ``reading`` (input name -> label of its reading),
+        ``nominal`` (the reading used), ``value`` (at the nominal assumed inputs), ``band``
+        (``[low, high]`` over the assumed ranges when the verdict needed it, else ``None``),
+        ``agrees`` (whether the printed value is accepted by the value, or by the band when
+        one was run) and ``band_too_wide``.
+    band_too_wide : bool
+        Whether the verdict is ``not-reproducible`` because every band that agrees is too
+        wide to decide (:func:`band_too_wide`; each reading's own flag is in ``readings``).
 
     Examples
     --------
@@ -667,8 +1110,8 @@ class Evaluation:
     ...           published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
     ...           expected_status="reproduced", note="a synthetic claim")
     >>> ev = evaluate(c)
-    >>> ev.status, ev.passes, round(ev.deviation, 6)
-    ('reproduced', True, 0.001)
+    >>> ev.status, ev.passes, round(ev.deviation, 6), ev.printed
+    ('reproduced', True, 0.001, '17.67')
     """
 
     claim: Claim
@@ -681,7 +1124,8 @@ class Evaluation:
     inputs: tuple[dict[str, Any], ...] = ()
     band: tuple[Any, Any] | None = None
     sensitivity: tuple[tuple[str, tuple[tuple[Any, Any], ...]], ...] = ()
-    alternatives: tuple[tuple[str, Any, Any], ...] = ()
+    readings: tuple[dict[str, Any], ...] = ()
+    band_too_wide: bool = False
 
     def __post_init__(self) -> None:
         # comparisons on numpy scalars give numpy booleans: store a plain bool
@@ -699,20 +1143,93 @@ class Evaluation:
         """The claim's kind (:data:`KINDS`)."""
         return str(self.claim.kind)
 
-    def note(self) -> str:
-        """The claim's note, followed by what the other reading of each convention gives."""
-        text = self.claim.note.rstrip()
-        if text and self.alternatives and not text.endswith((".", "!", "?", ")")):
-            text += "."
-        for name, alt, value in self.alternatives:
-            text += f" Other reading of the {_label_and_unit(name)[0]} ({_plain(alt)}): {_plain(value)}."
-        return text.strip()
+    @property
+    def printed(self) -> str:
+        """The paper's text the claim quotes (:func:`claim_quote`); ``""`` when unknown."""
+        return claim_quote(self.claim, self.tolerance)[0]
 
-    def as_json(self) -> dict[str, Any]:
-        """The fields of LEDGER.md, and no others."""
+    @property
+    def agreeing_readings(self) -> tuple[dict[str, Any], ...]:
+        """The readings (of :attr:`readings`) under which the printed value is accepted."""
+        return tuple(r for r in self.readings if r["agrees"])
+
+    def _reading_text(self, reading: dict[str, Any]) -> str:
+        """One reading other than the one used, in words: what differs and what it gives."""
+        unit = "" if self.claim.unit in ("", "statement") else f" {self.claim.unit}"
+        changed = []
+        for name, label in reading["reading"].items():
+            quantity, in_unit = _label_and_unit(name)
+            try:
+                inp = get_input(name)
+            except ValueError:
+                inp = None
+            if inp is not None and label == inp.nominal_label:
+                continue
+            shown = next((_plain(v) for lab, v in (inp.readings if inp else ()) if lab == label), "")
+            shown = f" ({shown}{' ' + in_unit if in_unit and shown else ''})" if shown else ""
+            changed.append(f"the {quantity} read as {label}{shown}")
+        value = reading["value"]
+        text = "With " + " and ".join(changed) + ": "
+        text += ("holds" if value else "does not hold") if _is_truth(value) else _plain(value) + unit
+        if reading.get("band") is not None and not _is_truth(value):
+            lo, hi = reading["band"]
+            text += f" (over the assumed ranges {_plain(lo)} to {_plain(hi)}{unit})"
+        if reading["agrees"]:
+            text += ", which agrees with the printed value"
+        return text + "."
+
+    def note(self) -> str:
+        """The claim's note, then what the other readings give and why the verdict is what it is.
+
+        Generated sentences follow the note: one per reading other than the one used (what
+        it gives, and whether it agrees); where the reading used disagrees and another
+        agrees, that the claim is therefore not discrepant; where the band is too wide, that
+        the assumptions are too loose to decide.
+        """
+        text = self.claim.note.rstrip()
+        extra = [self._reading_text(r) for r in self.readings if not r["nominal"]]
+        nominal = next((r for r in self.readings if r["nominal"]), None)
+        if (
+            self.status == "consistent"
+            and nominal is not None
+            and not nominal["agrees"]
+            and any(r["agrees"] for r in self.readings)
+        ):
+            extra.append(
+                "The reading used disagrees and another admissible reading agrees: an open reading "
+                "of the text, not a discrepancy."
+            )
+        if self.band_too_wide and self.band is not None:
+            lo, hi = self.band
+            unit = "" if self.claim.unit in ("", "statement") else f" {self.claim.unit}"
+            if nominal is None or nominal["agrees"]:
+                extra.append(
+                    f"Over the assumed inputs' ranges the value spans {_plain(lo)} to {_plain(hi)}{unit}, "
+                    f"ends more than a factor {BAND_FACTOR:g} apart, and the printed value agrees with "
+                    "only part of it: the assumptions are too loose to decide."
+                )
+            else:
+                extra.append(
+                    "The reading that agrees does so over only part of a band whose ends are more than "
+                    f"a factor {BAND_FACTOR:g} apart: the assumptions are too loose to decide."
+                )
+        if text and extra and not text.endswith((".", "!", "?", ")")):
+            text += "."
+        return " ".join([text, *extra]).strip()
+
+    def as_json(self, errata: Sequence[Erratum] | None = None) -> dict[str, Any]:
+        """The fields of LEDGER.md, and no others.
+
+        Parameters
+        ----------
+        errata : sequence of Erratum or None, optional
+            Where to look for the errata the claim is evidence for (:func:`claim_errata`);
+            ``None`` for every erratum constructed in the process.
+        """
         c = self.claim
         pub = c.published if isinstance(c.published, bool) else float(c.published)
         tol = self.tolerance if self.tolerance is not None else c.tolerance
+        quote = claim_quote(c, tol if isinstance(tol, Tolerance) else None)[0]
         return {
             "id": c.id,
             "paper": c.paper,
@@ -721,10 +1238,23 @@ class Evaluation:
             "published": pub,
             "relation": c.relation,
             "unit": c.unit,
+            "printed": quote or None,
+            "errata": claim_errata(c, errata),
             "kind": c.kind,
             "inputs": [dict(i) for i in self.inputs],
             "reproduced": _json_value(self.reproduced),
             "band": None if self.band is None else [_json_value(b) for b in self.band],
+            "readings": [
+                {
+                    "reading": dict(r["reading"]),
+                    "nominal": bool(r["nominal"]),
+                    "value": _json_value(r["value"]),
+                    "band": None if r.get("band") is None else [_json_value(b) for b in r["band"]],
+                    "agrees": bool(r["agrees"]),
+                    "band_too_wide": bool(r.get("band_too_wide", False)),
+                }
+                for r in self.readings
+            ],
             "tolerance": tol.as_dict() if isinstance(tol, Tolerance) else None,
             "status": self.status,
             "expected_status": c.expected_status,
@@ -833,22 +1363,29 @@ def _run(claim: Claim, overrides: dict[str, Any] | None = None) -> tuple[Any, di
 #: beyond it, each input one at a time plus four diagonal corners.
 MAX_CORNER_INPUTS = 6
 
+#: Up to this many combinations of the readings of the conventions a claim reads are run (all
+#: of them); beyond it, each convention's readings one at a time, the others at the reading used.
+MAX_READING_COMBINATIONS = 16
+
 
 def _band_runs(
-    claim: Claim, assumed: list[Any]
+    claim: Claim, assumed: list[Any], base: dict[str, Any] | None = None
 ) -> tuple[list[Any], list[tuple[str, tuple[tuple[Any, Any], ...]]]]:
     """Values across the assumed inputs' ranges: one at a time, and every corner of the box for up
-    to :data:`MAX_CORNER_INPUTS` inputs (extremes of a monotone response lie at corners)."""
+    to :data:`MAX_CORNER_INPUTS` inputs (extremes of a monotone response lie at corners).
+
+    ``base`` holds the overrides of a reading other than the one used (every run keeps them).
+    """
+    base = base or {}
     values: list[Any] = []
     sensitivity = []
     for inp in assumed:
         row = []
         for point in inp.band_points:
-            v, _ = _run(claim, {inp.name: point})
+            v, _ = _run(claim, {**base, inp.name: point})
             values.append(v)
             row.append((point, v))
         sensitivity.append((inp.name, tuple(row)))
-    import itertools
 
     if 2 <= len(assumed) <= MAX_CORNER_INPUTS:
         corners: Any = itertools.product(*[(inp.low, inp.high) for inp in assumed])
@@ -859,39 +1396,128 @@ def _band_runs(
     else:
         corners = []
     for corner in corners:
-        v, _ = _run(claim, {inp.name: p for inp, p in zip(assumed, corner, strict=True)})
+        v, _ = _run(claim, {**base, **{inp.name: p for inp, p in zip(assumed, corner, strict=True)}})
         values.append(v)
     return values, sensitivity
 
 
-def derive_status(
-    claim: Claim, tol: Tolerance, value: Any, values: list[Any], provenances: set[str], admissible: bool
-) -> str:
-    """The verdict of LEDGER.md from the nominal value, the band's values and the provenances read.
+def reading_combinations(conventions: Sequence[Input]) -> list[tuple[tuple[Input, str, Any], ...]]:
+    """The combinations of readings a claim is run under, the readings used first.
 
-    ``values`` are the computed values across the assumed inputs' ranges (empty when none is
-    assumed); ``admissible`` says every assumed input read spans all admissible values.
+    Parameters
+    ----------
+    conventions : sequence of Input
+        The convention inputs the claim read.
+
+    Returns
+    -------
+    list of tuple of (Input, str, Any)
+        Each combination as ``(input, label, value)`` per convention; the first is every
+        reading used. Every combination when there are at most
+        :data:`MAX_READING_COMBINATIONS`; else each convention's other readings one at a
+        time, the others at the reading used.
+
+    Examples
+    --------
+    >>> from navcore.ledger.inputs import Input
+    >>> a = Input(name="WF.doc.a", paper="WF", value=1.0, provenance="convention",
+    ...           alternative=2.0, reason="two readings")
+    >>> [[label for _, label, _ in combo] for combo in reading_combinations([a])]
+    [['the reading used'], ['the other reading']]
     """
+    per = [
+        [(inp, inp.nominal_label, inp.value), *((inp, lab, v) for lab, v in inp.other_readings)]
+        for inp in conventions
+    ]
+    if math.prod(len(p) for p in per) <= MAX_READING_COMBINATIONS:
+        return [tuple(combo) for combo in itertools.product(*per)]
+    nominal = tuple(p[0] for p in per)
+    return [nominal, *((*nominal[:i], r, *nominal[i + 1 :]) for i, p in enumerate(per) for r in p[1:])]
+
+
+@dataclass(frozen=True)
+class _Outcome:
+    """How one reading's value (and band) compares with the printed value."""
+
+    agrees_at_value: bool
+    agrees: bool
+    too_wide: bool
+
+
+def _outcome(claim: Claim, tol: Tolerance, value: Any, values: Sequence[Any]) -> _Outcome:
     if claim.is_statement:
-        agree_nominal = value == claim.published
-        agree_any = agree_nominal or any(v == claim.published for v in values)
-    else:
-        pub = float(claim.published)
-        allowed = tol.allowed(pub)
-        agree_nominal = _satisfies(value, claim.relation, pub, allowed)
-        lo, hi = (min([value, *values]), max([value, *values]))
-        agree_any = agree_nominal or _band_satisfies(lo, hi, claim.relation, pub, allowed)
-    assumed = "assumed" in provenances
-    fitted = "fitted" in provenances
+        at_value = value == claim.published
+        return _Outcome(at_value, at_value or any(v == claim.published for v in values), False)
+    pub = float(claim.published)
+    allowed = tol.allowed(pub)
+    at_value = _satisfies(value, claim.relation, pub, allowed)
+    lo, hi = min([value, *values]), max([value, *values])
+    agrees = at_value or _band_satisfies(lo, hi, claim.relation, pub, allowed)
+    return _Outcome(at_value, agrees, bool(values) and band_too_wide(claim, tol, lo, hi))
+
+
+def derive_status(
+    claim: Claim,
+    tol: Tolerance,
+    value: Any,
+    values: list[Any],
+    provenances: set[str],
+    admissible: bool,
+    readings: Sequence[tuple[Any, Sequence[Any]]] = (),
+) -> str:
+    """The verdict of LEDGER.md from every reading's value and band and the provenances read.
+
+    Parameters
+    ----------
+    claim : Claim
+        The claim.
+    tol : Tolerance
+        Its resolved tolerance.
+    value : float or bool
+        The value under the readings used, at the nominal inputs.
+    values : list
+        The values across the assumed inputs' ranges under the readings used (empty when
+        none is assumed).
+    provenances : set of str
+        The provenances of the inputs read.
+    admissible : bool
+        Every assumed input read spans all admissible values.
+    readings : sequence of (value, values), optional
+        The same for each other combination of readings (``values`` empty where no band
+        was run).
+
+    Returns
+    -------
+    str
+        One of :data:`STATUSES` (module docstring, "Verdicts" and "Readings").
+
+    Examples
+    --------
+    The reading used disagrees (10.5 against 10 +- 0.05), the other reading agrees:
+
+    >>> value, tol = printed("10.0")
+    >>> c = Claim(id="SP-doc-r", paper="SP", locator="Eq. (1)", quantity="q", published=value,
+    ...           unit="m", compute=lambda: 10.5, tolerance=tol, expected_status="consistent",
+    ...           note="a synthetic claim")
+    >>> derive_status(c, tol, 10.5, [], {"convention"}, False, [(10.0, [])])
+    'consistent'
+    >>> derive_status(c, tol, 10.5, [], {"convention"}, False, [(11.0, [])])
+    'discrepant'
+    """
+    outcomes = [_outcome(claim, tol, value, values)] + [_outcome(claim, tol, v, vs) for v, vs in readings]
     if claim.kind == "cross-check":
-        return "consistent" if agree_nominal else "discrepant"
-    if claim.kind == "fit" or fitted:
-        return "consistent" if agree_any else "inconsistent"
-    if assumed:
-        if agree_any:
+        return "consistent" if any(o.agrees_at_value for o in outcomes) else "discrepant"
+    if claim.kind == "fit" or "fitted" in provenances:
+        return "consistent" if any(o.agrees for o in outcomes) else "inconsistent"
+    if "assumed" in provenances:
+        if any(o.agrees and not o.too_wide for o in outcomes):
             return "consistent"
+        if any(o.agrees for o in outcomes):
+            return "not-reproducible"  # a band too wide to decide
         return "discrepant" if admissible else "inconsistent"
-    return "reproduced" if agree_nominal else "discrepant"
+    if outcomes[0].agrees_at_value:
+        return "reproduced"
+    return "consistent" if any(o.agrees_at_value for o in outcomes[1:]) else "discrepant"
 
 
 def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
@@ -899,9 +1525,10 @@ def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
 
     The tolerance is resolved first, where no input can be read; then ``compute`` runs at the
     nominal inputs with every read recorded; then across each assumed input's range (the
-    band, unless ``bands`` is false) and with each convention's other reading. The verdict
-    follows the rules of LEDGER.md (module docstring); a discrepant claim's value must also
-    agree with its independent oracle.
+    band, unless ``bands`` is false) and under every other admissible reading of each
+    convention read (across the assumed ranges too, where the verdict needs it). The
+    verdict follows the rules of LEDGER.md (module docstring); a discrepant claim's value
+    must also agree with its independent oracle.
 
     Parameters
     ----------
@@ -915,10 +1542,10 @@ def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
     Returns
     -------
     Evaluation
-        The value, inputs, band, derived verdict and whether it is the expected one. A
-        failure of the tolerance, the computation, the band or the oracle does not raise: it
-        is an evaluation with status ``"error"`` (or a failing check) whose ``detail`` says
-        what raised.
+        The value, inputs, band, readings, derived verdict and whether it is the expected
+        one. A failure of the tolerance, the computation, the band or the oracle does not
+        raise: it is an evaluation with status ``"error"`` (or a failing check) whose
+        ``detail`` says what raised.
 
     Examples
     --------
@@ -934,6 +1561,19 @@ def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
     (12.0, (11.0, 13.0), 'consistent', True)
     >>> evaluate(c, bands=False).status  # 12 is outside 12.5 +- 0.05 at the nominal
     'inconsistent'
+
+    A convention with two readings, of which only the other one agrees:
+
+    >>> IN.convention("per_cycle_ft", 1.0, quantity="range per carrier cycle",
+    ...               readings={"one foot per cycle": 1.0, "the L1 wavelength": 0.62},
+    ...               reason="the text says both")
+    >>> value, tol = printed("6.2")
+    >>> c = Claim(id="SP-doc-peak", paper="SP", locator="Fig. 2.1", quantity="peak error",
+    ...           published=value, unit="ft", compute=lambda: 10.0 * IN.per_cycle_ft,
+    ...           tolerance=tol, expected_status="consistent", note="a synthetic claim")
+    >>> ev = evaluate(c)
+    >>> ev.status, [r["reading"]["SP.doc_evaluate.per_cycle_ft"] for r in ev.agreeing_readings]
+    ('consistent', ['the L1 wavelength'])
     """
     try:
         tol = resolve_tolerance(claim)
@@ -960,8 +1600,6 @@ def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
             claim, None, False, f"compute raised {type(exc).__name__}: {exc}", status="error", tolerance=tol
         )
 
-    from navcore.ledger.inputs import Input
-
     read: list[Input] = [reads[k] for k in sorted(reads)]
     inputs = tuple(
         {
@@ -973,13 +1611,23 @@ def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
         for i in read
     )
     assumed = [i for i in read if i.provenance == "assumed"]
+    conventions = [i for i in read if i.provenance == "convention"]
+    provenances: set[str] = {str(i.provenance) for i in read}
+    admissible = bool(assumed) and all(i.admissible for i in assumed)
+    run_bands = bool(assumed) and bands
     try:
-        values, sensitivity = _band_runs(claim, assumed) if (assumed and bands) else ([], [])
-        alternatives = tuple(
-            (i.name, i.alternative, _run(claim, {i.name: i.alternative})[0])
-            for i in read
-            if i.provenance == "convention"
-        )
+        values, sensitivity = _band_runs(claim, assumed) if run_bands else ([], [])
+        first = _outcome(claim, tol, value, values)
+        # the other readings: their values always (they are shown); their bands only where the
+        # readings used do not already agree with a band that decides
+        combos = reading_combinations(conventions)[1:] if conventions else []
+        others = []
+        for combo in combos:
+            overrides = {inp.name: v for inp, _, v in combo}
+            others.append([combo, overrides, _run(claim, overrides)[0], []])
+        if run_bands and others and not (first.agrees and not first.too_wide):
+            for other in others:
+                other[3] = _band_runs(claim, assumed, base=other[1])[0]
     except Exception as exc:
         return Evaluation(
             claim,
@@ -991,9 +1639,26 @@ def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
             inputs=inputs,
         )
     band = (min([value, *values]), max([value, *values])) if assumed else None
-    provenances: set[str] = {str(i.provenance) for i in read}
-    admissible = bool(assumed) and all(i.admissible for i in assumed)
-    status = derive_status(claim, tol, value, values, provenances, admissible)
+    status = derive_status(
+        claim, tol, value, values, provenances, admissible, [(v, vs) for _, _, v, vs in others]
+    )
+    readings: list[dict[str, Any]] = []
+    if conventions:
+        nominal_combo = tuple((inp, inp.nominal_label, inp.value) for inp in conventions)
+        for combo, v, vs, nominal in [(nominal_combo, value, values, True)] + [
+            (c, v, vs, False) for c, _, v, vs in others
+        ]:
+            o = first if nominal else _outcome(claim, tol, v, vs)
+            readings.append(
+                {
+                    "reading": {inp.name: label for inp, label, _ in combo},
+                    "nominal": nominal,
+                    "value": v,
+                    "band": (min([v, *vs]), max([v, *vs])) if vs else None,
+                    "agrees": o.agrees,
+                    "band_too_wide": o.too_wide,
+                }
+            )
 
     common: dict[str, Any] = dict(
         status=status,
@@ -1001,7 +1666,8 @@ def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
         inputs=inputs,
         band=band,
         sensitivity=tuple(sensitivity),
-        alternatives=alternatives,
+        readings=tuple(readings),
+        band_too_wide=status == "not-reproducible",  # computed: only a band too wide gives it
     )
     if status != claim.expected_status:
         return Evaluation(

@@ -6,8 +6,11 @@ module defines. Each input is declared once with where it comes from:
 ``published``
     printed in the paper; ``locator`` says where (``"Table 2.1"``).
 ``convention``
-    a reading the text leaves open (a unit, a sign, which of two printed formulas);
-    ``alternative`` is the other reading, and the ledger shows what it would give.
+    a reading the text leaves open (a unit, a sign, which of two printed formulas, a value
+    read from a figure against one computed, a modelling constant with a standard
+    alternative); ``readings`` labels every admissible reading in words, the one used
+    included (a single ``alternative`` is shorthand for two readings), and the ledger weighs
+    them all (:mod:`navcore.ledger.core`, "Readings").
 ``assumed``
     not in the paper; a nominal value, a plausible ``low``-``high`` range and the reason for
     both. The ledger evaluates the claim across the range and reports the band.
@@ -47,11 +50,13 @@ import contextvars
 import functools
 import math
 import sys
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Literal, TypeVar
 
 __all__ = [
+    "NOMINAL_LABEL",
+    "OTHER_LABEL",
     "PROVENANCES",
     "Input",
     "InputReadError",
@@ -66,6 +71,10 @@ __all__ = [
 
 Provenance = Literal["published", "convention", "assumed", "fitted"]
 PROVENANCES: tuple[str, ...] = ("published", "convention", "assumed", "fitted")
+
+#: Labels of the two readings of a convention declared with a single ``alternative``.
+NOMINAL_LABEL = "the reading used"
+OTHER_LABEL = "the other reading"
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -104,7 +113,12 @@ class Input:
         ``True`` when ``low``-``high`` is every admissible value (a physical limit), so a
         disagreement across the whole band is a discrepancy, not an inconsistency.
     alternative : Any
-        The other reading of a ``convention`` input.
+        The other reading of a ``convention`` input declared with two readings; for more,
+        the first reading that is not the one used (kept for callers that show one).
+    readings : tuple of (str, Any)
+        Every admissible reading of a ``convention`` input, each ``(label in words,
+        value)``, the one used (``value``) included, in the declared order. Declared with
+        ``alternative`` only, the labels are :data:`NOMINAL_LABEL` and :data:`OTHER_LABEL`.
     fitted_to : tuple of str
         Claim ids a ``fitted`` input was solved from.
     module : str
@@ -115,10 +129,15 @@ class Input:
     ValueError
         If ``provenance`` is unknown, or the fields its provenance needs are missing: a
         ``locator`` (published), a ``reason`` (the others), a range ``low <= value <= high``
-        (assumed), an ``alternative`` (convention) or ``fitted_to`` (fitted).
+        (assumed), readings (convention: at least two, labelled, distinct, one of them
+        ``value``) or ``fitted_to`` (fitted).
 
     Examples
     --------
+    >>> conv = Input(name="WF.doc.c_ft_per_ns", paper="WF", value=1.0, provenance="convention",
+    ...              alternative=0.98357, reason="the table's ft are ns at c = 1 ft/ns")
+    >>> conv.readings
+    (('the reading used', 1.0), ('the other reading', 0.98357))
     >>> inp = Input(name="WF.doc.noise_m", paper="WF", value=2.0, provenance="assumed",
     ...             unit="m", low=1.0, high=4.0, grid=4, reason="typical survey accuracy")
     >>> inp.band_points, inp.source()
@@ -140,6 +159,7 @@ class Input:
     alternative: Any = None
     fitted_to: tuple[str, ...] = field(default_factory=tuple)
     module: str = field(default="", compare=False)
+    readings: tuple[tuple[str, Any], ...] = ()
 
     def __post_init__(self) -> None:
         if self.provenance not in PROVENANCES:
@@ -155,10 +175,54 @@ class Input:
                 raise ValueError(
                     f"assumed input {self.name}: nominal {self.value!r} must lie in [{self.low}, {self.high}]"
                 )
-        if self.provenance == "convention" and self.alternative is None:
-            raise ValueError(f"convention input {self.name} needs the alternative reading")
+        if self.provenance == "convention":
+            self._check_readings()
+        elif self.readings or self.alternative is not None:
+            raise ValueError(f"{self.provenance} input {self.name}: only a convention has readings")
         if self.provenance == "fitted" and not self.fitted_to:
             raise ValueError(f"fitted input {self.name} must name the claims it was fitted to")
+
+    def _check_readings(self) -> None:
+        """Normalise a convention's readings (``alternative`` -> two labelled readings) and
+        check them: at least two, labels in words and distinct, values distinct, the value
+        used among them."""
+        readings = tuple(self.readings)
+        if not readings:
+            if self.alternative is None:
+                raise ValueError(f"convention input {self.name} needs its readings (or its alternative)")
+            readings = ((NOMINAL_LABEL, self.value), (OTHER_LABEL, self.alternative))
+        if len(readings) < 2:
+            raise ValueError(f"convention input {self.name} needs at least two readings, got {len(readings)}")
+        labels = [label for label, _ in readings]
+        if any(not isinstance(label, str) or not label.strip() for label in labels):
+            raise ValueError(
+                f"convention input {self.name}: each reading needs a label in words, got {labels}"
+            )
+        if len(set(labels)) != len(labels):
+            raise ValueError(f"convention input {self.name}: reading labels must be distinct, got {labels}")
+        values = [v for _, v in readings]
+        for i, a in enumerate(values):
+            if any(_same(a, b) for b in values[:i]):
+                raise ValueError(f"convention input {self.name}: two readings have the value {a!r}")
+        used = [label for label, v in readings if _same(v, self.value)]
+        if len(used) != 1:
+            raise ValueError(
+                f"convention input {self.name}: the value used ({self.value!r}) must be one of its "
+                f"readings {labels}"
+            )
+        object.__setattr__(self, "readings", readings)
+        if self.alternative is None:
+            object.__setattr__(self, "alternative", next(v for _, v in readings if not _same(v, self.value)))
+
+    @property
+    def nominal_label(self) -> str:
+        """The label of the reading used (conventions only; ``""`` otherwise)."""
+        return next((label for label, v in self.readings if _same(v, self.value)), "")
+
+    @property
+    def other_readings(self) -> tuple[tuple[str, Any], ...]:
+        """The admissible readings other than the one used, ``(label, value)`` (conventions only)."""
+        return tuple((label, v) for label, v in self.readings if not _same(v, self.value))
 
     @property
     def band_points(self) -> tuple[Any, ...]:
@@ -294,28 +358,67 @@ class InputSet:
         self._add(attr, value=value, provenance="published", locator=locator, unit=unit, quantity=quantity)
 
     def convention(
-        self, attr: str, value: Any, *, alternative: Any, reason: str, unit: str = "", quantity: str = ""
+        self,
+        attr: str,
+        value: Any,
+        *,
+        reason: str,
+        readings: Mapping[str, Any] | None = None,
+        alternative: Any = None,
+        unit: str = "",
+        quantity: str = "",
     ) -> None:
-        """Declare a reading the text leaves open, with the other reading.
+        """Declare a reading the text leaves open, with every admissible reading.
+
+        The ledger evaluates each claim that reads it under every reading and weighs them
+        (:mod:`navcore.ledger.core`, "Readings"): a claim is discrepant only if every
+        admissible reading disagrees.
 
         Parameters
         ----------
         attr : str
             Attribute name.
         value : Any
-            The reading used.
-        alternative : Any
-            The other reading; the ledger shows what it would give.
+            The reading used (the nominal one); one of ``readings``.
         reason : str
             Why the text leaves it open and why this reading is used.
+        readings : mapping of str to Any, optional
+            Every admissible reading, labelled in words (the one used included), e.g.
+            ``{"1 ft per ns, as the table's units imply": 1.0, "the physical speed of
+            light": 0.98357}``. Give either ``readings`` or ``alternative``.
+        alternative : Any, optional
+            The other reading, for a convention with exactly two (labelled "the reading
+            used" and "the other reading").
         unit, quantity : str, optional
             Unit of ``value`` and what it is, in words.
+
+        Raises
+        ------
+        ValueError
+            If both or neither of ``readings`` and ``alternative`` are given, fewer than two
+            readings, a label is empty or repeated, two readings have one value, or
+            ``value`` is not among the readings.
+
+        Examples
+        --------
+        >>> IN = InputSet("WF", "doc_convention")
+        >>> IN.convention("c_ft_per_ns", 1.0, quantity="speed of light in ft/ns",
+        ...               readings={"1 ft per ns, as the table's units imply": 1.0,
+        ...                         "the physical speed of light": 0.98357},
+        ...               reason="the table prints ns times a factor as ft")
+        >>> [label for label, _ in IN.input("c_ft_per_ns").other_readings]
+        ['the physical speed of light']
         """
+        if (readings is None) == (alternative is None):
+            raise ValueError(
+                f"convention {attr!r}: give one of readings= and alternative=, not both or neither"
+            )
         self._add(
             attr,
             value=value,
             provenance="convention",
             alternative=alternative,
+            readings=tuple(readings.items()) if readings is not None else (),
             reason=reason,
             unit=unit,
             quantity=quantity,

@@ -119,7 +119,11 @@ def validate_registry(all_claims: list[Claim], all_errata: list[Erratum]) -> Non
     ------
     ValueError
         On a duplicate id or alias, a claim naming an unknown erratum, an erratum naming an
-        unknown claim, or a fitted input fitted to an unknown claim.
+        unknown claim, a fitted input fitted to an unknown claim, or a claim whose published
+        number its printed quote does not contain (published means printed: a number the
+        paper does not print is the book's, so the claim must be a statement with its
+        threshold a declared convention; reasoned exceptions such as unit conversions are in
+        :data:`navcore.ledger.allowlists.PUBLISHED_NOT_IN_QUOTE`).
 
     Examples
     --------
@@ -155,6 +159,7 @@ def validate_registry(all_claims: list[Claim], all_errata: list[Erratum]) -> Non
         for cid in e.claims:
             if cid not in seen:
                 raise ValueError(f"erratum {e.id!r} names unknown claim {cid!r}")
+    _check_published_is_printed(all_claims)
     from navcore.ledger.inputs import all_inputs
 
     papers_loaded = {c.paper for c in all_claims}
@@ -167,6 +172,24 @@ def validate_registry(all_claims: list[Claim], all_errata: list[Erratum]) -> Non
             unknown = [cid for cid in inp.fitted_to if cid not in seen]
             if unknown:
                 raise ValueError(f"fitted input {inp.name} names unknown claims {unknown}")
+
+
+def _check_published_is_printed(all_claims: list[Claim]) -> None:
+    """Refuse a number claim whose quote (the claim's own, or the digits given to ``printed``)
+    does not print its published value, unless it is a reasoned exception."""
+    from navcore.ledger.allowlists import PUBLISHED_NOT_IN_QUOTE
+    from navcore.ledger.core import claim_quote, quote_has_number
+
+    for c in all_claims:
+        if c.is_statement or c.id in PUBLISHED_NOT_IN_QUOTE:
+            continue
+        quote, source = claim_quote(c)
+        if source in ("claim", "digits") and not quote_has_number(quote, float(c.published)):
+            raise ValueError(
+                f"claim {c.id!r}: its published value {c.published!r} is not printed in its quote "
+                f"{quote!r}; a number the paper does not print is the book's, so the claim is a "
+                "statement whose threshold is a declared convention"
+            )
 
 
 def claims(paper: str | None = None, prefix: str | None = None) -> tuple[Claim, ...]:
@@ -396,7 +419,8 @@ _RECORD_FIELDS = (
     "inputs",
     "band",
     "sensitivity",
-    "alternatives",
+    "readings",
+    "band_too_wide",
 )
 
 

@@ -1050,6 +1050,7 @@ class ErrataList:
     >>> from navcore.ledger import Erratum
     >>> e = Erratum(id="SP-E9-doc", paper="SP", locator="Eq. (2.4.2)", printed="$a + b$",
     ...             finding="$a - b$", evidence="the derivation in the book", kind="typography",
+    ...             basis="text-only",
     ...             no_claim_reason="a sign with no printed number to check")
     >>> ErrataList([e])
     SP-E9-doc: SP, Eq. (2.4.2)

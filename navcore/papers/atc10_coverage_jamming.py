@@ -484,6 +484,7 @@ ERRATA = [
         id=E_THRESHOLD,
         paper="ATC10",
         kind="overstatement",
+        basis="text-only",
         locator="Sec. 2.8 ('each curve exhibits a strong thresholding property')",
         printed="In observing each set of curves in Figures 2.3 through 2.16 notice that each curve exhibits "
         "a strong thresholding property",

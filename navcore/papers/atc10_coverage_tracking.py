@@ -789,6 +789,7 @@ ERRATA = [
         id="ATC10-E4.9-typos",
         paper="ATC10",
         kind="typography",
+        basis="text-only",
         locator="Sec. 4.5.2, after (4.5.9); (4.3.0); (4.5.3)-(4.5.4); Sec. 4.5.3; (4.5.37)",
         printed="$\\tau_n = \\sum_{i \\le n} w_i + \\alpha_0$ (and smaller slips: $(1/\\tau^2)\\, mn$, a "
         "stray 1 in (4.5.3), "
@@ -805,6 +806,7 @@ ERRATA = [
         id="ATC10-E4.11-second-term",
         paper="ATC10",
         kind="overstatement",
+        basis="text-only",
         locator="Sec. 4.5.4 ('the second term in (4.5.35) always significantly dominates the first term')",
         printed="the second term always significantly dominates, so tracking reduces Var to about "
         "$\\psi\\, \\mathrm{Var}_0$",

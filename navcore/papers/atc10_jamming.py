@@ -596,6 +596,7 @@ ERRATA = [
         id=E_ERF,
         paper="ATC10",
         kind="typography",
+        basis="text-only",
         locator="Eqs. (2.8.1), (2.8.3)",
         printed="$p_f = \\frac{1}{2} - \\frac{1}{2} \\operatorname{erf}\\left(\\frac{1}{2} \\sqrt{P_0 B "
         "\\tau / J} - \\phi\\right)$",
@@ -612,6 +613,7 @@ ERRATA = [
         id=E_RULE,
         paper="ATC10",
         kind="derivation",
+        basis="text-only",
         locator="Eqs. (A.9)-(A.10) against (A.11), (B.1)",
         printed="Decide $H_1$ if $K_0 \\le tK$ ($K_0$ the number of empty lists)",
         finding="The bounds (A.17), (B.11), the figures and the tables use the rule of (A.11)/(B.1) and of "
@@ -628,6 +630,7 @@ ERRATA = [
         id=E_TAB11,
         paper="ATC10",
         kind="inconsistent-numbers",
+        basis="computed",
         locator="Table 1.1 and Sec. 1.1",
         printed="ERP 33/43/53/77 dBW for K = 1/10/100/1000 'with a processor designed to achieve a detection "
         "probability of at least 0.88'",
@@ -644,6 +647,7 @@ ERRATA = [
         id=E_BEAM,
         paper="ATC10",
         kind="inconsistent-numbers",
+        basis="computed",
         locator="Table 1.1, K = 1 beamwidth",
         printed="15 degrees",
         finding="About 20-21 degrees, as Sec. 2.7 itself says ('an antenna with a 20 degree beamwidth').",
@@ -658,6 +662,7 @@ ERRATA = [
         id=E_C1,
         paper="ATC10",
         kind="typography",
+        basis="text-only",
         locator="Eqs. (C.1), (C.11) and cross-references of App. C",
         printed="(C.1): $[1 - p_f]^{2B\\alpha} [1 - (1 - p_f)^{4B\\beta}]^3$; (C.11) conditions on "
         "$\\gamma_D(i, K) = 1$",
@@ -676,6 +681,7 @@ ERRATA = [
         id=E_A15,
         paper="ATC10",
         kind="typography",
+        basis="text-only",
         locator="Eq. (A.15)",
         printed="$P_D \\ge 1 \\exp -K(\\ldots)$",
         finding="A minus sign is lost: $P_D \\ge 1 - \\exp(-K(\\ldots))$, as in (A.17) and (2.4.2).",
@@ -689,6 +695,7 @@ ERRATA = [
         id=E_A7,
         paper="ATC10",
         kind="typography",
+        basis="text-only",
         locator="Eqs. (A.7)-(A.8); text after (A.13), (A.18)",
         printed="$K \\ln(\\lambda_1 P(\\rho=1|H_0)/P(\\rho=1|H_1))$; the label (A.8) is empty; 'J' for "
         "$\\nu$",
@@ -704,6 +711,7 @@ ERRATA = [
         id=E_KT,
         paper="ATC10",
         kind="derivation",
+        basis="text-only",
         locator="Eqs. (2.5.4), (2.8.3), (B.9)-(B.11); (C.14)",
         printed="exponent $Kt + 1$; sample count $(8B/3)\\, v \\alpha / c$",
         finding="When Kt is not an integer the count of lists is $\\lfloor Kt \\rfloor + 1$; the real "
@@ -721,6 +729,7 @@ ERRATA = [
         id=E_SUP,
         paper="ATC10",
         kind="derivation",
+        basis="text-only",
         locator="Sec. 2.7, level N_F = 0.9 N_T",
         printed="$N_F$ of $0.9 N_T$ taken as the failure indicator",
         finding="$0.9 N_T = N_T - N$ is the supremum of $N_{FL}$, approached as $J$ grows but never reached; "
@@ -739,6 +748,7 @@ ERRATA = [
         id=E_MINOR,
         paper="ATC10",
         kind="typography",
+        basis="text-only",
         locator="Sec. 2.8 and Figs. 2.13-2.14",
         printed="'Table 2.8.1'; heading 'K >> 1'; Fig. 2.13 (ADL) before Fig. 2.14 (FL); 'expanded in "
         "Section 2.6'",
@@ -753,6 +763,7 @@ ERRATA = [
         id=E_P0,
         paper="ATC10",
         kind="units",
+        basis="text-only",
         locator="Sec. 2.6 and App. D (before (D.17))",
         printed="Sec. 2.6: 'The average power of $s_i(t)$ during transmission is $P_0 = E/\\tau$'; App. D: "
         "'$E = P_o \\tau$, where $P_o$ is peak signature power'",
@@ -771,6 +782,7 @@ ERRATA = [
         id=E_INDEP,
         paper="ATC10",
         kind="unstated-assumption",
+        basis="text-only",
         locator="Eqs. (B.6), (C.14) and Sec. 2.3",
         printed="$\\mathrm{Prob}(\\Phi_1 | H_0) = (1 - (1 - p_f)^{2B \\alpha}) (1 - (1 - p_f)^{4B "
         "\\beta})^3$, "
@@ -801,6 +813,7 @@ ERRATA = [
         id=E_C2,
         paper="ATC10",
         kind="derivation",
+        basis="text-only",
         locator="Eqs. (C.2)-(C.5)",
         printed="$|T_1(1) - T_2(1)| \\le v \\alpha / c$ seconds (and likewise for satellite 2)",
         finding="$T_1(1) - T_2(1)$ is the change in satellite 1's reception time between two successive "
@@ -823,6 +836,7 @@ ERRATA = [
         id=E_B10,
         paper="ATC10",
         kind="typography",
+        basis="text-only",
         locator="Eq. (B.10)",
         printed="'From (B.8) and the statistical independence of rho(i,j), we obtain immediately' (B.10)",
         finding="(B.10) follows from the event inclusion (B.9) and independence; read 'From (B.9)'. (B.8) "
@@ -839,6 +853,7 @@ ERRATA = [
         id=E_A_END,
         paper="ATC10",
         kind="typography",
+        basis="text-only",
         locator="App. A, last line (after (A.18))",
         printed="$P_D > p_d^4$",
         finding="The K = 1 bound is $P_D \\ge p_d^4$, as printed in (2.4.1) and (A.10a). The appendix "
@@ -855,6 +870,7 @@ ERRATA = [
         id=E_258,
         paper="ATC10",
         kind="unstated-assumption",
+        basis="text-only",
         locator="Eq. (2.5.8)",
         printed="$\\mathrm{Prob}(\\Gamma_D, \\gamma_D, \\psi_D, \\theta_D = 1) = \\mathrm{Prob}(\\Gamma_D | "
         "\\gamma_D, \\psi_D, \\theta_D)\\, \\mathrm{Prob}(\\gamma_D)\\, \\mathrm{Prob}(\\psi_D | "
@@ -887,6 +903,7 @@ ERRATA = [
         id=E_A16,
         paper="ATC10",
         kind="unstated-assumption",
+        basis="text-only",
         locator="Eq. (A.16)",
         printed="$P(\\rho = 1 | H_1) \\approx p_d^4$, 'the approximation holds closely assuming reasonably "
         "large "
@@ -915,6 +932,7 @@ ERRATA = [
         id=E_T21,
         paper="ATC10",
         kind="inconsistent-numbers",
+        basis="computed",
         locator="Table 2.1 (and Table 1.1, K = 1000)",
         printed="56 dBW for $K = 100$, $P_{DL} = 0.88$; 77 dBW for $K = 1000$, $P_{DL} = 0.999$",
         finding="With the printed parameters the $t = 0$ $N_{ADL}$ bound (2.8.4) reaches $0.01 N_T$ at 55.3 "
@@ -938,6 +956,7 @@ ERRATA = [
         id=E_10DB,
         paper="ATC10",
         kind="overstatement",
+        basis="computed",
         locator="Sec. 2.8",
         printed="'it takes about 10 db more power to disable a K = 10 system than a K = 1 system and about "
         "10 db more power to disable a K = 100 system'",
@@ -1381,7 +1400,7 @@ CLAIMS: list[Claim] = [
         unit="W",
         compute=lambda: units.watts_from_dbw(IN.nominal_erp_dbw - _dish_gain_db(IN.tab11_r1_diameter_ft)),
         tolerance=printed(NOMINAL_RF_TEXT, why="'30 watts'")[1],
-        expected_status="consistent",
+        expected_status="not-reproducible",
         kind="reproduction",
         note="2 ft from Table 1.1; the dish gain needs a frequency and an efficiency the paper does not give "
         "(assumed: L band 1-2 GHz, efficiency 0.5-0.7; 31.8 W at 1.6 GHz, 0.6). The printed 30 W lies inside "
@@ -1604,7 +1623,7 @@ for _i, (_k, _erp, _rf, _dia, _bw) in enumerate(TABLE_1_1):
             unit="dBW",
             compute=lambda i=_i: table11_rf_dbw(i),
             tolerance=printed(str(_rf))[1],
-            expected_status="consistent",
+            expected_status="not-reproducible",
             kind="reproduction",
             note="$G = \\eta (\\pi D / \\lambda)^2$ with the assumed L-band frequency (1-2 GHz, nominal "
             "1.6) and "

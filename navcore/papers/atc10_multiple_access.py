@@ -697,6 +697,7 @@ ERRATA = [
         id="ATC10-E3-11",
         paper="ATC10",
         kind="overstatement",
+        basis="text-only",
         locator="Secs. 3.1.3 A and 3.5.2 (and the opening of the Exp analysis in Sec. 3.8)",
         printed="the upper and lower bounds are asymptotically tight: they approach the actual ROC "
         "as N increases",
@@ -716,6 +717,7 @@ ERRATA = [
         id="ATC10-E3-1",
         paper="ATC10",
         kind="derivation",
+        basis="text-only",
         locator="Eq. (3.5.14)",
         printed="$p_f \\ge \\frac{1}{2} \\exp[-\\rho\\theta + (\\sum ((1-q) + q \\int e^{\\rho x} C)) - "
         "\\phi_1]$, "
@@ -740,6 +742,7 @@ ERRATA = [
         id="ATC10-E3-2",
         paper="ATC10",
         kind="typography",
+        basis="computed",
         locator="Sec. 3.8, worked example",
         printed="p = 50",
         finding="$p = (N-1)/(B \\alpha)$ = (2e5 - 1)/(1e7 × 1 s) = 0.02 = 1/50.",
@@ -751,6 +754,7 @@ ERRATA = [
         id="ATC10-E3-3",
         paper="ATC10",
         kind="units",
+        basis="text-only",
         locator="Sec. 3.8, worked example against Eq. (3.8.8)",
         printed="$\\mathrm{Exp}_g = a^2/p$",
         finding="Here $a$ is the threshold $\\theta = 1/2$. Eq. (3.8.8) defines "
@@ -765,6 +769,7 @@ ERRATA = [
         id="ATC10-E3-4",
         paper="ATC10",
         kind="derivation",
+        basis="text-only",
         locator="Eqs. (3.8.5)-(3.8.7)",
         printed="$E e^{\\mu n} = \\exp(\\mu^2/2)$; $p_f \\le \\exp(-\\mu\\theta - \\mu^2/2)$",
         finding="$E e^{\\mu n} = \\exp(\\mu^2 p/2)$ and $p_f \\le \\exp(-\\mu\\theta + \\mu^2 p/2)$; the "
@@ -778,6 +783,7 @@ ERRATA = [
         id="ATC10-E3-5",
         paper="ATC10",
         kind="unstated-assumption",
+        basis="text-only",
         locator="Appendix E, after Eq. (E.15)",
         printed="The second term is $O(N^{-3/2})$",
         finding="The $\\lambda_3$ term is $O(N^{-1})$ when $\\lambda_3 \\neq 0$; it vanishes only because a "
@@ -793,6 +799,7 @@ ERRATA = [
         id="ATC10-E3-6",
         paper="ATC10",
         kind="derivation",
+        basis="text-only",
         locator="Theorem 3.3 and Eq. (F.8)",
         printed="$E(n^2) \\le \\sum_j 1/(4 \\alpha \\sqrt{W_j}\\, W_j)$; (F.8) with exponents $-1$ and "
         "$-1/2$ and '$E(n)^2$'",
@@ -807,6 +814,7 @@ ERRATA = [
         id="ATC10-E3-7",
         paper="ATC10",
         kind="unstated-assumption",
+        basis="text-only",
         locator="Sec. 3.9, W = [(4/3) tau_c (1 + 2 tau_c/tau + 2 (tau_c/tau)^2)]^{-1}",
         printed="$W \\approx (3/4)/\\tau_c$ for PSK sequences with good autocorrelation",
         finding="The formula is exact for an idealised autocorrelation with alternating $\\pm\\tau_c/\\tau$ "
@@ -823,6 +831,7 @@ ERRATA = [
         id="ATC10-E3-8",
         paper="ATC10",
         kind="derivation",
+        basis="text-only",
         locator="Theorem 3.2, proof after Eq. (3.7.16)",
         printed="(3.7.15) is strictly convex in $\\{\\sqrt{\\beta_j}\\}$, hence a unique minimum under "
         "(3.7.16)",
@@ -840,6 +849,7 @@ ERRATA = [
         id="ATC10-E3-9",
         paper="ATC10",
         kind="typography",
+        basis="text-only",
         locator="Sec. 3.3-3.9, App. E (typographical)",
         printed="$R_{ij}$ for $R_{ii}$; $(1-2\\tau)/\\alpha$; '$\\rho\\alpha$' in (3.7.20); missing square "
         "root in (3.7.27); "
@@ -859,6 +869,7 @@ ERRATA = [
         id="ATC10-E3-10",
         paper="ATC10",
         kind="inconsistent-numbers",
+        basis="computed",
         locator="Sec. 3.8, worked example",
         printed="$\\mathrm{Exp} \\approx 9$ and $\\mathrm{Exp}_g/\\mathrm{Exp} \\approx 1.4$ for N = 2e5, "
         "$\\tau/\\alpha$ = 1e-5, $\\mathrm{Exp}_g$ = 12.5",

@@ -1138,6 +1138,7 @@ ERRATA += [
         id=_E1,
         paper="ATC10",
         kind="derivation",
+        basis="computed",
         locator="Eq. (4.5.30); Table 4.2 col. 5; Table 4.3 col. (v); Figs. 4.2-4.3; Sec. 4.6 rules (3)-(4)",
         printed="$E|\\xi_p|^2 = \\sigma^2 \\operatorname{tr}\\{(F'F)^{-1}\\} + \\sigma_\\tau^2\\, "
         "1'(F'F)^{-1} 1$ for three satellites "
@@ -1157,6 +1158,7 @@ ERRATA += [
         id=_E2,
         paper="ATC10",
         kind="inconsistent-numbers",
+        basis="computed",
         locator="Table 4.2 (from Table 4.1)",
         printed="$\\beta$ = .0543/.00355, $\\operatorname{tr}$ = 7.84/3.99 (all), 9.39/14.9 (1,2,3), "
         "$S$ = 1.30/1.16",
@@ -1175,6 +1177,7 @@ ERRATA += [
         id=_E3,
         paper="ATC10",
         kind="typography",
+        basis="text-only",
         locator="Eqs. (4.5.11), (4.5.20), Sec. 4.5.4 (beta)",
         printed="$\\beta = K^{-1} 1'F(F'F)^{-1}F'1$",
         finding="$\\beta = K - 1'F(F'F)^{-1}F'1 = 1'(I - P)1$ (the minus sign read as an inverse).",
@@ -1188,6 +1191,7 @@ ERRATA += [
         id="ATC10-E4.4-recursion-formulas",
         paper="ATC10",
         kind="typography",
+        basis="text-only",
         locator="Eqs. (4.5.10), (4.5.21), (4.5.31), (4.5.35); Sec. 4.5.2 steady state",
         printed="$\\gamma_1^{-1}(I - \\ldots)$; $\\sigma^2_{\\gamma_{n-1}}$; $(\\gamma \\beta^{-1})(\\Delta "
         "- \\xi)$; "
@@ -1205,6 +1209,7 @@ ERRATA += [
         id=_E5,
         paper="ATC10",
         kind="typography",
+        basis="text-only",
         locator="Sec. 4.5.4 (steps to converge)",
         printed="$n = 1/\\mathrm{Log}(1 - \\psi) - 1 = 2.3/\\psi - 1$",
         finding="$n = -1/\\log_{10}(1 - \\psi) - 1$; the recursion itself converges about twice as fast as "
@@ -1219,6 +1224,7 @@ ERRATA += [
         id=_E6,
         paper="ATC10",
         kind="overstatement",
+        basis="text-only",
         locator="Sec. 4.6 (choice of satellites 1, 2, 3)",
         printed="satellites 1, 2 and 3 are the most widely spaced triplet",
         finding="For Example II, satellites 2, 3, 6 (and 1, 4, 7) are better by trace, determinant and "
@@ -1231,6 +1237,7 @@ ERRATA += [
         id="ATC10-E4.7-fbm-normalisation",
         paper="ATC10",
         kind="typography",
+        basis="text-only",
         locator="App. G, Eq. (G.5) and R_x3",
         printed="integrand $[s^\\rho - 1/2 - (s+1)^\\rho - 1/2]$; $R_{x3} = \\beta^2 \\sigma^2 / 2\\, "
         "(\\ldots)$; Newton step $G/G$",
@@ -1246,6 +1253,7 @@ ERRATA += [
         id="ATC10-E4.8-var-of-norm",
         paper="ATC10",
         kind="units",
+        basis="text-only",
         locator="Eqs. (4.1.2), (4.5.7), (4.5.35); Table 4.3",
         printed="$\\mathrm{Var}[|\\xi_p|]$",
         finding="The quantity is the mean-square norm $E|\\xi_p|^2 = \\operatorname{tr} P$, not the variance "
@@ -1259,6 +1267,7 @@ ERRATA += [
         id="ATC10-E4.10-scalar-gain",
         paper="ATC10",
         kind="typography",
+        basis="text-only",
         locator="App. H, corollary (Eq. H.26)",
         printed="$\\gamma = \\sigma^2 / (\\sigma^2 + \\sigma_x^2 [F'F - F'G(G'G)^{-1}G'F])$",
         finding="$\\gamma = \\sigma_x^2 / (\\sigma^2 + \\sigma_x^2 [F'F - F'G(G'G)^{-1}G'F])$.",

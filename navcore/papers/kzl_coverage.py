@@ -270,7 +270,7 @@ CLAIMS = [
         unit="s",
         compute=footprint_overlap_s,
         tolerance=_few,
-        expected_status="consistent",
+        expected_status="not-reproducible",
         note="Circular orbit at the TerraSAR-X altitude, ground speed about 7.0 km/s; a 15 km receiver "
         "footprint gives about 2 s, 5-30 km gives 0.7-4.3 s.",
         discussed_in=PAGE0,
@@ -317,7 +317,7 @@ CLAIMS = [
         unit="mm",
         compute=baseline_length_mm,
         tolerance=_order_mm,
-        expected_status="consistent",
+        expected_status="not-reproducible",
         note="dh = R sin(theta) tan(theta) dB / B: about 1.2 mm for B = 200 m at 30 deg; 0.2-4.4 mm over "
         "the band. The 'cm' of the text fits longer baselines or airborne geometries.",
         discussed_in=PAGE0,

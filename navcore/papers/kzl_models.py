@@ -327,6 +327,7 @@ ERRATA = [
         id="KZL-E1-levelling-sign",
         paper="KZL",
         kind="convention",
+        basis="text-only",
         locator="Eqs. (2)-(3)",
         printed="$\\theta = \\arctan(-a_x / \\sqrt{a_y^2 + a_z^2})$, $\\phi = \\mathrm{arctan2}(a_y / a_z)$",
         finding="With a = the specific force of Eq. (8) (a level IMU measures [0, 0, -g] in NED body "
@@ -342,6 +343,7 @@ ERRATA = [
         id="KZL-E2-time-invariant",
         paper="KZL",
         kind="unstated-assumption",
+        basis="text-only",
         locator="Eq. (5), preceding text",
         printed="in case of a time-variant system the state transition is described as $A(k) = e^{FT}$",
         finding="The chain $A = e^{FT} = \\mathcal{L}^{-1}\\{(sI - F)^{-1}\\}$ holds for a time-invariant "
@@ -355,6 +357,7 @@ ERRATA = [
         id="KZL-E3-skew-notation",
         paper="KZL",
         kind="convention",
+        basis="text-only",
         locator="Eq. (11)",
         printed="$F_{23} = [a \\times] = [[0, a_d, -a_e], [-a_d, 0, a_n], [a_e, -a_n, 0]]$",
         finding="The explicit matrix is minus the usual cross-product matrix: $[a "
@@ -371,6 +374,7 @@ ERRATA = [
         id="KZL-E4-euler-rows",
         paper="KZL",
         kind="derivation",
+        basis="text-only",
         locator="Eq. (13), block R",
         printed="R is a frame rotation matrix for the transformation from body-axes angular rates to "
         "the Euler angle angular rates",
@@ -387,6 +391,7 @@ ERRATA = [
         id="KZL-E5-dd-typos",
         paper="KZL",
         kind="typography",
+        basis="text-only",
         locator="Eqs. (1), (10), (14), (17)",
         printed="Eq. (17): both DD rows use $l_{02}$ and rows 2 and 4 have an extra $0^T$ block; Eq. (14) "
         "lists "
@@ -404,6 +409,7 @@ ERRATA = [
         id="KZL-E6-quaternion-order",
         paper="KZL",
         kind="convention",
+        basis="text-only",
         locator="Sec. 3.5, attitude correction",
         printed="$q_b^{n,+} = q_b^{n,-} \\otimes q^n$ with the n-frame rotation quaternion $q^n$ of $\\phi = "
         "-\\delta\\psi$",
@@ -650,7 +656,7 @@ CLAIMS = [
         kind="reproduction",
         compute=nav_grade_drift_km_per_h,
         tolerance=prose("about"),
-        expected_status="consistent",
+        expected_status="not-reproducible",
         note="No sensor specification is given for the navigation-grade INS. Long-term (beyond the "
         "84-min Schuler period) position drift of an unaided INS with gyro bias eps: R eps, with the "
         "assumed eps = 0.01 deg/h (0.005-0.02) giving 1.1 km/h, the classic 1 nmi/h class. Verdict "

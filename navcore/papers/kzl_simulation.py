@@ -150,6 +150,7 @@ ERRATA = [
         id="KZL-E7-uncalibrated-heading",
         paper="KZL",
         kind="overstatement",
+        basis="computed",
         locator="Sec. 3.6, discussion of Fig. 4",
         printed="Without initialization and calibration the error would be larger than 20 deg",
         finding="With the Table 1 gyro bias (360 deg/h) the heading error after 180 s is about 18-19 deg "
@@ -165,6 +166,7 @@ ERRATA = [
         id="KZL-E8-tc-heading",
         paper="KZL",
         kind="unstated-assumption",
+        basis="text-only",
         locator="Sec. 3.6, discussion of Fig. 4",
         printed="the attitude estimation results using a tightly coupled GPS/INS integration are better "
         "than using a similar INS alone",

@@ -145,6 +145,7 @@ ERRATA = [
         id="SP-E-search-doppler-factor",
         paper="SP",
         kind="inconsistent-numbers",
+        basis="text-only",
         locator="Sec. 2.5, Delta T formula; Sec. 2.6.2",
         printed="$\\Delta T = 0.020\\, [2 \\sigma_{\\text{rng}}/30] \\times [2 "
         "\\sigma_{\\text{rng-rate}}/10]$; 'one Doppler shift interval' "

@@ -280,6 +280,7 @@ ERRATA = [
         id="SP-E-grade-labels",
         paper="SP",
         kind="inconsistent-numbers",
+        basis="computed",
         locator="Table 2.5 and Sec. 2.4",
         printed="the four instrument sets were scaled to give exactly 10, 1, 0.5 and 0.2 nmi/h",
         finding="Under the definition fitted to the 10 nmi/h label (1-h CEP, stationary, "
@@ -654,7 +655,7 @@ CLAIMS = [
         unit="%",
         compute=doppler_excess_pct,
         tolerance=printed("50")[1],
-        expected_status="consistent",
+        expected_status="not-reproducible",
         note="Target-location errors of the two grades 19 min after GPS loss, with Doppler aiding "
         "(Table 2.8 errors), across the assumed Doppler white noise (0.03-0.3 m/s: about 160 % to "
         "40 %) and target bearing (with Doppler the position error is small, so the attitude term "

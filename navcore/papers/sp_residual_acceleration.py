@@ -177,6 +177,7 @@ ERRATA = [
         id="SP-E-misalignment-sign",
         paper="SP",
         kind="convention",
+        basis="text-only",
         locator="Sec. 2.5, 3x6 sensitivity matrix",
         printed="misalignment block [[0,-1,1],[1,0,-1],[-1,1,0]] after the skew matrix $[\\delta\\theta "
         "\\times]\\, a$",
@@ -195,6 +196,7 @@ ERRATA = [
         id="SP-E-tab2.6-columns",
         paper="SP",
         kind="units",
+        basis="text-only",
         locator="Table 2.6 and the text after it",
         printed="'the quantities in the third column are the required bandwidth'; column heading "
         "'Required Carrier Tracking Loop Bandwidth' with 18 rad/s unaided",
@@ -212,6 +214,7 @@ ERRATA = [
         id="SP-E-tab2.6-col2-vs-tab2.5",
         paper="SP",
         kind="inconsistent-numbers",
+        basis="computed",
         locator="Table 2.6 column 2",
         printed="1880, 431, 311, 225 ppm (90 % residual error after in-flight calibration)",
         finding="Not derivable from Table 2.5: its a-priori accelerometer scale factor and "

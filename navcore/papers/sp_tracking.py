@@ -140,6 +140,7 @@ ERRATA = [
         id="SP-E-phase-conversion",
         paper="SP",
         kind="units",
+        basis="computed",
         locator="Sec. 2.5, Fig. 2.1",
         printed="distance converted to phase 'using the code length of 300 m'; "
         "17.67 rad/s gives a 90 deg peak",
@@ -157,6 +158,7 @@ ERRATA = [
         id="SP-E-exponent-t2",
         paper="SP",
         kind="typography",
+        basis="text-only",
         locator="Sec. 2.5, equation above Fig. 2.1",
         printed="$e^{-\\omega_0 t^2}$ in the second term",
         finding="The exponent is $-\\omega_0 t/2$ (the real part of the complex pole pair "
@@ -174,6 +176,7 @@ ERRATA = [
         id="SP-E-slightly-stringent",
         paper="SP",
         kind="overstatement",
+        basis="text-only",
         locator="Sec. 2.5",
         printed="the 6-g step requirement is 'a slightly more stringent requirement' "
         "than a 10-g/s jerk lasting 0.6 s",
