@@ -974,7 +974,9 @@ class _Indexer:
                 scope_q = qual
             for lit in literals:
                 self._candidate(lit, scope_q, where, symbols=syms)
-            top = syms[0] if syms else None
+            # a lambda made at import time (a claim's compute) uses what its body and defaults
+            # read, not everything the statement that holds it builds (a whole CLAIMS list)
+            top = syms[0] if (syms and where == "class") else None
             for lam in lambdas:
                 self._lambda(lam, scope_q, top)
             # nested statement lists (if/for/with/try at module level) are import-time too
@@ -1217,6 +1219,11 @@ class Task:
     args: tuple[Any, ...]
     timeout: float
     on_done: Callable[[Any, str | None], None]
+    capture: bool = True  # the child's output goes to its log file (else to the parent's)
+
+
+def _exit_on_signal(signum: int, frame: Any) -> None:
+    raise SystemExit(128 + signum)
 
 
 class Scheduler:
@@ -1246,12 +1253,13 @@ class Scheduler:
             code = 0
             try:
                 signal.signal(signal.SIGINT, signal.SIG_DFL)
-                signal.signal(signal.SIGTERM, signal.SIG_DFL)
+                signal.signal(signal.SIGTERM, _exit_on_signal)  # a child that forks cleans up its own
                 if self.nice:
                     os.nice(self.nice)
-                fd = os.open(logf, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o644)
-                os.dup2(fd, 1)
-                os.dup2(fd, 2)
+                if task.capture:
+                    fd = os.open(logf, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o644)
+                    os.dup2(fd, 1)
+                    os.dup2(fd, 2)
                 try:
                     res: tuple[str, Any] = ("ok", task.fn(*task.args))
                 except BaseException:
@@ -1303,6 +1311,16 @@ class Scheduler:
                         self._finish(p, timed_out=True)
                 time.sleep(0.02)
         except BaseException:
+            for p in list(self.running):
+                with contextlib.suppress(ProcessLookupError):
+                    os.kill(p, signal.SIGTERM)
+            deadline = time.monotonic() + 5.0
+            while self.running and time.monotonic() < deadline:
+                for p in list(self.running):
+                    with contextlib.suppress(ChildProcessError):
+                        if os.waitpid(p, os.WNOHANG)[0]:
+                            del self.running[p]
+                time.sleep(0.05)
             for p in list(self.running):
                 with contextlib.suppress(ProcessLookupError):
                     os.kill(p, signal.SIGKILL)
@@ -1662,7 +1680,12 @@ def _source_key(target: Target) -> str:
 
 
 def _run_in_child(
-    fn: Callable[..., Any], args: tuple[Any, ...], workdir: Path, nice: int, timeout: float = 7200.0
+    fn: Callable[..., Any],
+    args: tuple[Any, ...],
+    workdir: Path,
+    nice: int,
+    timeout: float = 7200.0,
+    capture: bool = True,
 ) -> Any:
     box: dict[str, Any] = {}
 
@@ -1670,7 +1693,7 @@ def _run_in_child(
         box["result"], box["error"] = result, error
 
     sched = Scheduler(1, workdir, nice=nice)
-    sched.submit(Task("child", fn, args, timeout, cb))
+    sched.submit(Task("child", fn, args, timeout, cb, capture))
     sched.run()
     if box.get("error"):
         raise RuntimeError(f"input gate: a child failed:\n{box['error']}")
@@ -1694,6 +1717,7 @@ class Gate:
         audit: bool = False,
         workdir: Path | None = None,
         use_cache: bool = True,
+        max_seconds: float | None = None,
         log: Callable[[str], None] = print,
     ) -> None:
         self.target = target
@@ -1707,6 +1731,8 @@ class Gate:
         self.audit = audit
         self.workdir = workdir or (ROOT / "_build" / "input_gate")
         self.use_cache = use_cache
+        self.max_seconds = max_seconds
+        self.slow: list[str] = []
         self.log = log
         self.children = 0
         self.child_seconds = 0.0
@@ -1751,6 +1777,8 @@ class Gate:
                 (self.target, missing, self.jobs, self.workdir, self.nice, self.log),
                 self.workdir,
                 0,
+                timeout=6 * 3600.0,
+                capture=False,
             )
             traces.update(new)
             self.trace_seconds = time.monotonic() - t0
@@ -1760,6 +1788,9 @@ class Gate:
                 os.replace(tmp, self.cache_file)
         else:
             self.trace_seconds = 0.0
+        if self.max_seconds is not None:
+            self.slow = [c for c in self.selected if traces[c].get("seconds", 0.0) > self.max_seconds]
+            self.selected = [c for c in self.selected if c not in self.slow]
         self.traces = {c: traces[c] for c in self.selected}
 
     def _preload(self) -> None:
@@ -2149,6 +2180,8 @@ class Gate:
                 "sample": self.sample,
                 "seed": self.seed,
                 "audit": self.audit,
+                "max_seconds": self.max_seconds,
+                "left_out_as_slow": self.slow,
             },
             "settings": {
                 "delta": DELTA,
@@ -2220,6 +2253,11 @@ def render_markdown(report: dict[str, Any]) -> str:
         f"{sel['modules'] or 'all'}, sample {sel['sample'] or 'none'} (seed {sel['seed']})"
         f"{', audit' if sel['audit'] else ''}.\n"
     )
+    if sel.get("left_out_as_slow"):
+        out.append(
+            f"Left out as slower than {sel['max_seconds']:g} s: {len(sel['left_out_as_slow'])} claims "
+            f"({', '.join(sel['left_out_as_slow'])}).\n"
+        )
     st = report["settings"]
     out.append(
         f"A number is flagged when a change of it by {100 * scale:g} % (linearised from a probe of "
@@ -2331,6 +2369,12 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--nice", type=int, default=5, help="niceness of the children (default 5)")
     parser.add_argument("--audit", action="store_true", help="also perturb excluded and allowlisted numbers")
+    parser.add_argument(
+        "--max-seconds",
+        type=float,
+        default=None,
+        help="leave out claims whose nominal evaluation takes longer (a quick sample)",
+    )
     parser.add_argument("--no-cache", action="store_true", help="trace again even if a trace is stored")
     parser.add_argument("--out", type=Path, default=ROOT / "_build", help="folder of input_gate.json/.md")
     parser.add_argument(
@@ -2340,6 +2384,9 @@ def main(argv: list[str] | None = None) -> int:
         help="the trace cache and the children's files",
     )
     args = parser.parse_args(argv)
+    # stop cleanly (every child with it) on Ctrl-C or SIGTERM, also when started in the background
+    signal.signal(signal.SIGINT, signal.default_int_handler)
+    signal.signal(signal.SIGTERM, _exit_on_signal)
     for var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
         os.environ.setdefault(var, "1")
     os.environ["NAVCORE_CACHE"] = "off"
@@ -2357,6 +2404,7 @@ def main(argv: list[str] | None = None) -> int:
         audit=args.audit,
         workdir=args.workdir,
         use_cache=not args.no_cache,
+        max_seconds=args.max_seconds,
         log=lambda s: print(s, flush=True),
     )
     report = gate.run()
