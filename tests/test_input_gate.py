@@ -78,6 +78,10 @@ PACKAGE = {
             return model.drag(IN.gain)
 
 
+        def _horizon():  # the number the statement compares (exposed to the gate)
+            return model.horizon_m(IN.height_m)
+
+
         def _c(cid, value_text, compute):
             value, tol = printed(value_text)
             return Claim(id=cid, paper="WF", locator="Table 1", quantity="q", published=value, unit="",
@@ -92,7 +96,7 @@ PACKAGE = {
             _c("WF-gate-drag-b", "2.82", lambda: 2 * cached_drag()),
             _c("WF-gate-declared", "103", lambda: IN.height_m + IN.gain),
             Claim(id="WF-gate-statement", paper="WF", locator="Table 1", quantity="s", published=True,
-                  unit="statement", compute=lambda: model.horizon_m(IN.height_m) > 35000.0,
+                  unit="statement", compute=lambda: _horizon() > 35000.0,
                   tolerance=EXACT, expected_status="reproduced", note="synthetic"),
         ]
     """,
@@ -123,7 +127,7 @@ def report(tmp_path_factory: pytest.TempPathFactory) -> dict:
             root=pkg,
             claim_modules=lambda: ["gatepkg.claims"],
             repo=tmp,
-            exposure_prefix="gatepkg.",
+            exposure_prefix="gatepkg.claims",  # the "paper module"
             allowlist=tmp / "allow.toml",
         )
         run = gate.Gate(target, jobs=2, nice=0, audit=True, workdir=tmp / "work", log=lambda s: None)
@@ -153,7 +157,11 @@ def test_finds_a_module_constant_read_through_from_import(report: dict) -> None:
     assert e["binding"] == "EARTH_R"
     # horizon ~ sqrt(R): a 10 % change moves it 5 % of 35696 m, thousands of half-metres
     assert e["effects"]["WF-gate-horizon"]["tolerances_per_scale"] > 1000
-    # the statement's truth (horizon > 35000 m) flips when R changes by 10 %
+    # the statement's number moves with R (elasticity 1/2), and its truth (horizon > 35000 m)
+    # flips when R changes by 10 %
+    statement = e["effects"]["WF-gate-statement"]
+    assert statement["statement_numbers_rel"] == pytest.approx(0.5 * gate.DELTA, rel=0.01)
+    assert not statement["flipped"] and statement["flipped_at_scale"]
     assert "WF-gate-statement" in e["flips"]
 
 

@@ -104,9 +104,9 @@ FLAG_TOLERANCES = 0.1
 #: are still found.
 GROUP_TOLERANCES = FLAG_TOLERANCES * DELTA / SCALE / 10
 #: A statement's numbers "move" when the probe changes them by more than this relative amount
-#: (a group), and are reported when a single literal's probe moves them by more than
-#: STATEMENT_REPORT_REL (an elasticity of 0.1); such a literal is also tried at +-SCALE.
-STATEMENT_GROUP_REL = 1e-5
+#: (an elasticity of 0.1; a group is then split), and a single literal that moves them by more
+#: than STATEMENT_REPORT_REL is reported and also tried at +-SCALE (does the statement flip?).
+STATEMENT_GROUP_REL = 1e-4
 STATEMENT_REPORT_REL = 1e-4
 #: A numeric claim with an exact (zero) tolerance moves when it changes by more than this
 #: relative amount (rounding of the arithmetic is not a move).
@@ -2016,8 +2016,31 @@ class Gate:
                         moved.append(cid)
                     record(cand, cid, eff, value, at_scale)
                 self._progress(t0)
-                if not at_scale and sign == +1 and moved:
+                if at_scale:
+                    return
+                effects = self.findings[cand.id].effects
+                if sign == +1 and moved and not any(self._flags(c, effects[c]) for c in moved):
+                    # moved, but not past the flag: the other side may move more (a response
+                    # at a turning point); a literal already flagged needs no second run
                     submit_single(cand, moved, -1)
+                    return
+                # statements whose numbers the probe moves: do they flip at +-SCALE? (a literal
+                # of a paper module is tried at +-SCALE by the scale track already)
+                if not cand.module.startswith(self.target.exposure_prefix or "\0"):
+                    stmts = [
+                        c
+                        for c in claims
+                        if claim_meta[c]["statement"]
+                        and c in effects
+                        and not (effects[c]["flipped"] or effects[c]["error"])
+                        and effects[c]["statement_numbers_rel"] > STATEMENT_REPORT_REL
+                        and not effects[c].get("scale_tried")
+                    ]
+                    for c in stmts:
+                        effects[c]["scale_tried"] = True
+                    if stmts:
+                        submit_single(cand, stmts, +1, at_scale=True)
+                        submit_single(cand, stmts, -1, at_scale=True)
 
             sched.submit(
                 Task(
@@ -2035,7 +2058,10 @@ class Gate:
         for module in sorted(by_module, key=lambda m: -len(claims_for(by_module[m]))):
             cands = sorted(by_module[module], key=lambda c: c.position)
             submit_group(cands, claims_for(cands), 0)
-            submit_scale_group(cands, claims_for(cands, statements=True), 0)
+            if module.startswith(self.target.exposure_prefix or "\0"):
+                # a statement's threshold lives in its paper module and moves none of its numbers:
+                # the paper modules' literals are tried at +-SCALE on the statements
+                submit_scale_group(cands, claims_for(cands, statements=True), 0)
         self.log(f"perturbing {len(self.tested)} literals in {len(by_module)} modules")
         sched.run()
         self.perturb_seconds = time.monotonic() - t0
