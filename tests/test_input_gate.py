@@ -269,3 +269,10 @@ def test_perturbed_values() -> None:
     assert gate.perturbed_value(8, +1) == 9  # an integer moves by a whole step at least
     assert gate.perturbed_value(0.0, -1) == -gate.ZERO_STEP
     assert gate.perturbed_value(0, +1) == 1
+
+
+def test_merging_runs_keeps_every_flagged_number(report: dict) -> None:
+    merged = gate.merge_reports([report, report])
+    assert merged["counts"]["flagged"] == report["counts"]["flagged"]
+    assert merged["counts"]["claims"] == 2 * report["counts"]["claims"]
+    assert "## WF" in gate.render_markdown(merged)

@@ -2267,6 +2267,82 @@ def suggest_class(c: Candidate, target: Target) -> str:
     return "rule of thumb / modelling constant"
 
 
+def merge_reports(reports: list[dict[str, Any]]) -> dict[str, Any]:
+    """One report from several runs on disjoint claim selections (a run per paper).
+
+    A number found by several runs keeps every run's effects; its status is the strongest
+    (flagged over breaks over declared over below-threshold).
+    """
+    rank = ["flagged", "allowlisted", "excused-by-rule", "breaks", "declared", "below-threshold", "no-effect"]
+    numbers: dict[str, dict[str, Any]] = {}
+    for rep in reports:
+        for e in rep["numbers"]:
+            prev = numbers.get(e["id"])
+            if prev is None:
+                numbers[e["id"]] = {**e, "effects": dict(e["effects"])}
+                continue
+            prev["effects"].update(e["effects"])
+            prev["flagged_claims"] = sorted(set(prev["flagged_claims"]) | set(e["flagged_claims"]))
+            prev["flips"] = sorted(set(prev["flips"]) | set(e["flips"]))
+            prev["papers"] = sorted(set(prev["papers"]) | set(e["papers"]))
+            prev["worst_tolerances"] = max(_num(prev["worst_tolerances"]), _num(e["worst_tolerances"]))
+            if rank.index(e["status"]) < rank.index(prev["status"]):
+                prev["status"] = e["status"]
+    entries = sorted(numbers.values(), key=lambda e: (e["status"] != "flagged", e["file"], e["line"]))
+    counts: dict[str, Any] = {
+        k: 0 for k in ("claims", "literals_run_by_claims", "perturbed", "perturbed_evaluations")
+    }
+    counts["claims_failing_nominally"] = []
+    counts["claims_order_dependent"] = {}
+    counts["excluded_by_rule"] = defaultdict(int)
+    counts["allowlisted"] = 0
+    counts["seconds"] = {"total": 0.0, "trace": 0.0, "perturb": 0.0}
+    for rep in reports:
+        n = rep["counts"]
+        for k in ("claims", "perturbed", "perturbed_evaluations", "allowlisted", "literals_run_by_claims"):
+            counts[k] += n[k]
+        counts["claims_failing_nominally"] += n["claims_failing_nominally"]
+        counts["claims_order_dependent"].update(n["claims_order_dependent"])
+        for k, v in n["excluded_by_rule"].items():
+            counts["excluded_by_rule"][k] += v
+        for k in counts["seconds"]:
+            counts["seconds"][k] += n["seconds"][k]
+    counts["excluded_by_rule"] = dict(sorted(counts["excluded_by_rule"].items()))
+    counts["literals"] = reports[0]["counts"]["literals"] if reports else 0
+    flagged = [e for e in entries if e["status"] == "flagged"]
+    counts["flagged"] = len(flagged)
+    statuses = sorted({e["status"] for e in entries})
+    counts["by_status"] = {s: sum(1 for e in entries if e["status"] == s) for s in statuses}
+    per_paper: dict[str, dict[str, int]] = defaultdict(lambda: {"numbers": 0, "claims": 0})
+    hit: dict[str, set[str]] = defaultdict(set)
+    for e in flagged:
+        for p in e["papers"]:
+            per_paper[p]["numbers"] += 1
+        for cid in e["flagged_claims"]:
+            hit[e["effects"][cid]["paper"]].add(cid)
+    for p, claims in hit.items():
+        per_paper[p]["claims"] = len(claims)
+    counts["per_paper"] = dict(sorted(per_paper.items()))
+    first = reports[0] if reports else {"settings": {}, "rules": RULES, "excluded_modules": {}}
+    selection = {
+        "papers": sorted({p for r in reports for p in r["selection"]["papers"]}),
+        "claims": [],
+        "modules": [],
+        "sample": None,
+        "seed": 0,
+        "audit": any(r["selection"]["audit"] for r in reports),
+        "merged_runs": len(reports),
+    }
+    return {
+        "selection": selection,
+        "settings": first["settings"],
+        "counts": counts,
+        "rules": first["rules"],
+        "excluded_modules": first["excluded_modules"],
+        "numbers": entries,
+    }
+
+
 def render_markdown(report: dict[str, Any]) -> str:
     """The report as Markdown: the summary, then every flagged number by paper and module."""
     out: list[str] = []
@@ -2409,7 +2485,21 @@ def main(argv: list[str] | None = None) -> int:
         default=ROOT / "_build" / "input_gate",
         help="the trace cache and the children's files",
     )
+    parser.add_argument(
+        "--merge",
+        nargs="+",
+        type=Path,
+        default=None,
+        help="combine the input_gate.json of several runs (one per paper) into --out; runs nothing",
+    )
     args = parser.parse_args(argv)
+    if args.merge:
+        report = merge_reports([json.loads(p.read_text()) for p in args.merge])
+        args.out.mkdir(parents=True, exist_ok=True)
+        (args.out / "input_gate.json").write_text(json.dumps(report, indent=1) + "\n")
+        (args.out / "input_gate.md").write_text(render_markdown(report))
+        print(f"input gate: {report['counts']['flagged']} flagged numbers in {len(args.merge)} runs")
+        return 1 if report["counts"]["flagged"] else 0
     # stop cleanly (every child with it) on Ctrl-C or SIGTERM, also when started in the background
     signal.signal(signal.SIGINT, signal.default_int_handler)
     signal.signal(signal.SIGTERM, _exit_on_signal)
