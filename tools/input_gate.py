@@ -2055,15 +2055,24 @@ class Gate:
         by_module: dict[str, list[Candidate]] = defaultdict(list)
         for c in self.tested:
             by_module[c.module].append(c)
-        for module in sorted(by_module, key=lambda m: -len(claims_for(by_module[m]))):
+        modules = sorted(by_module, key=lambda m: -len(claims_for(by_module[m])))
+        for module in modules:
             cands = sorted(by_module[module], key=lambda c: c.position)
             submit_group(cands, claims_for(cands), 0)
-            if module.startswith(self.target.exposure_prefix or "\0"):
-                # a statement's threshold lives in its paper module and moves none of its numbers:
-                # the paper modules' literals are tried at +-SCALE on the statements
-                submit_scale_group(cands, claims_for(cands, statements=True), 0)
         self.log(f"perturbing {len(self.tested)} literals in {len(by_module)} modules")
         sched.run()
+        # then the statements at +-SCALE: a statement's threshold lives in its paper module and
+        # moves none of its numbers, so the paper modules' literals are tried at +-SCALE on the
+        # statements (leaving out the literals whose probe already raised: a lookup key)
+        broke = {cid for cid, f in self.findings.items() if any(e["error"] for e in f.effects.values())}
+        for module in modules:
+            if not module.startswith(self.target.exposure_prefix or "\0"):
+                continue
+            cands = sorted((c for c in by_module[module] if c.id not in broke), key=lambda c: c.position)
+            submit_scale_group(cands, claims_for(cands, statements=True), 0)
+        if sched.queue:
+            self.log(f"trying the paper modules' literals at +-{100 * SCALE:g} % on the statements")
+            sched.run()
         self.perturb_seconds = time.monotonic() - t0
         for f in self.findings.values():
             f.status = self._status(f)
