@@ -147,9 +147,13 @@ RULES: dict[str, str] = {
     "at module level, as a dataclass field, as any other default or as a keyword value it stays a "
     "candidate",
     "formula-coefficient": "a small integer factor (2 to 12) or a simple fraction (1/2, 1/4, 3/4, 3/2, "
-    "5/2) as a direct operand of * or /, or a small integer (int-typed) of + or -: the structure "
-    "of an equation (2 pi f, sigma^2 / 2, 4 pi, n - 1); as a default, module constant, keyword or "
-    "plain argument it stays a candidate",
+    "5/2) as a direct operand of * or /, a small integer (int-typed) of + or -, or either side of a "
+    "ratio of two integers (8.0 / 27.0): the structure of an equation (2 pi f, sigma^2 / 2, 4 pi, "
+    "n - 1, a closed form's exact fraction); as a default, module constant, keyword or plain "
+    "argument it stays a candidate",
+    "exact-symbolic": "an argument of an exact or symbolic constructor (Fraction, sympy's Rational, "
+    "series, coeff, diff, factorial, binomial): an exact number, or the order of an expansion or a "
+    "derivative",
     "decibel": "10 or 20 in a decibel conversion (10 log10, 20 log10, 10 ** (x / 10)): exact by the "
     "definition of the decibel",
     "unit-conversion": "a power of ten (1e-12 to 1e12), 60, 3600, 86400, 180 or 360 as a direct operand "
@@ -398,6 +402,8 @@ _DRAW_CALLS = {
 }
 _SEED_CALLS = {"default_rng", "RandomState", "SeedSequence", "seed", "Generator", "PCG64"}
 _STRUCTURE_ATTRS = {"shape", "size", "ndim"}
+#: Exact and symbolic constructors: their arguments are exact numbers or orders.
+_EXACT_CALLS = {"Rational", "Fraction", "Integer", "series", "coeff", "diff", "factorial", "binomial", "comb"}
 _CONVERSIONS = {60.0, 3600.0, 86400.0, 180.0, 360.0}
 _FRACTIONS = {0.5, 0.25, 0.75, 1.5, 2.5}
 
@@ -548,6 +554,19 @@ def classify_rule(node: ast.AST, parents: dict[ast.AST, ast.AST], where: str, bi
     # 0 / 1 identities: in a function body anywhere; elsewhere only as an operand
     if fv in (0.0, 1.0, -1.0) and (where == "body" or operand):
         return "identity"
+    if isinstance(parent, ast.Call):
+        name = _ref(parent.func)
+        if name and name[-1] in _EXACT_CALLS and node in parent.args:
+            return "exact-symbolic"
+    if (
+        isinstance(parent, ast.BinOp)
+        and isinstance(parent.op, ast.Div)
+        and all(
+            (v := _literal_value(side)) is not None and float(v).is_integer()
+            for side in (parent.left, parent.right)
+        )
+    ):
+        return "formula-coefficient"  # a ratio of two integers: an exact fraction (8 / 27)
     if operand and isinstance(parent, ast.BinOp):
         op = parent.op
         if isinstance(op, ast.Mult | ast.Div | ast.FloorDiv | ast.Mod):
@@ -2352,6 +2371,38 @@ def merge_reports(reports: list[dict[str, Any]]) -> dict[str, Any]:
     }
 
 
+def reapply_rules(report: dict[str, Any], index: Index) -> None:
+    """Apply the current rules and allowlist to a stored report (runs made before a rule or an
+    entry was added): a flagged number they now excuse becomes ``excused-by-rule`` or
+    ``allowlisted``, as ``--audit`` would report it."""
+    by_id = {c.id: c for c in index.candidates}
+    for e in report["numbers"]:
+        c = by_id.get(e["id"])
+        if c is None or e["status"] != "flagged":
+            continue
+        if c.allow is not None:
+            e["status"], e["allowlist_reason"] = "allowlisted", c.allow["reason"]
+        elif c.rule:
+            e["status"], e["rule"] = "excused-by-rule", c.rule
+    flagged = [e for e in report["numbers"] if e["status"] == "flagged"]
+    n = report["counts"]
+    n["flagged"] = len(flagged)
+    n["by_status"] = {
+        s: sum(1 for e in report["numbers"] if e["status"] == s)
+        for s in sorted({e["status"] for e in report["numbers"]})
+    }
+    per_paper: dict[str, dict[str, int]] = defaultdict(lambda: {"numbers": 0, "claims": 0})
+    hit: dict[str, set[str]] = defaultdict(set)
+    for e in flagged:
+        for p in e["papers"]:
+            per_paper[p]["numbers"] += 1
+        for cid in e["flagged_claims"]:
+            hit[e["effects"][cid]["paper"]].add(cid)
+    for p, claims in hit.items():
+        per_paper[p]["claims"] = len(claims)
+    n["per_paper"] = dict(sorted(per_paper.items()))
+
+
 def render_markdown(report: dict[str, Any]) -> str:
     """The report as Markdown: the summary, then every flagged number by paper and module."""
     out: list[str] = []
@@ -2504,6 +2555,7 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     if args.merge:
         report = merge_reports([json.loads(p.read_text()) for p in args.merge])
+        reapply_rules(report, index_package(navcore_target()))
         args.out.mkdir(parents=True, exist_ok=True)
         (args.out / "input_gate.json").write_text(json.dumps(report, indent=1) + "\n")
         (args.out / "input_gate.md").write_text(render_markdown(report))
