@@ -32,6 +32,8 @@ PACKAGE = {
         FOOT = 0.3048
         #: feeds a declared input's value: declared, not flagged
         GAIN = 3.0
+        #: planted: moves its claim by a tenth of its tolerance only when changed tenfold
+        INIT_SIGMA = 3.0
         #: no claim reads it
         UNUSED = 42.5
     """,
@@ -65,7 +67,7 @@ PACKAGE = {
     "claims.py": """
         from navcore.ledger import EXACT, Claim, InputSet, input_cache, printed
         from gatepkg import model
-        from gatepkg.consts import GAIN
+        from gatepkg.consts import GAIN, INIT_SIGMA
 
         IN = InputSet("WF", "gate_test")
         IN.published("height_m", 100.0, locator="Table 1", unit="m")
@@ -95,6 +97,7 @@ PACKAGE = {
             _c("WF-gate-drag-a", "1.41", lambda: cached_drag()),
             _c("WF-gate-drag-b", "2.82", lambda: 2 * cached_drag()),
             _c("WF-gate-declared", "103", lambda: IN.height_m + IN.gain),
+            _c("WF-gate-rss", "100", lambda: (IN.height_m**2 + INIT_SIGMA**2) ** 0.5),
             Claim(id="WF-gate-statement", paper="WF", locator="Table 1", quantity="s", published=True,
                   unit="statement", compute=lambda: _horizon() > 35000.0,
                   tolerance=EXACT, expected_status="reproduced", note="synthetic"),
@@ -138,8 +141,12 @@ def report(tmp_path_factory: pytest.TempPathFactory) -> dict:
     return result
 
 
-def _entry(report: dict, file: str, text: str) -> dict:
-    hits = [e for e in report["numbers"] if e["file"] == file and e["text"] == text]
+def _entry(report: dict, file: str, text: str, binding: str | None = None) -> dict:
+    hits = [
+        e
+        for e in report["numbers"]
+        if e["file"] == file and e["text"] == text and (binding is None or e["binding"] == binding)
+    ]
     assert len(hits) == 1, (file, text, [(e["file"], e["text"]) for e in report["numbers"]])
     return hits[0]
 
@@ -182,8 +189,20 @@ def test_input_cache_is_cold_in_every_evaluation(report: dict) -> None:
     )
 
 
+def test_finds_a_number_that_matters_only_tenfold(report: dict) -> None:
+    """sqrt(100^2 + 3^2) against a printed 100 (+-0.5): 3 m matters only when it is 30 m."""
+    e = _entry(report, "gatepkg/consts.py", "3.0", binding="INIT_SIGMA")
+    rss = e["effects"]["WF-gate-rss"]
+    assert e["status"] == "flagged"
+    # oracle: d/dsigma sqrt(h^2 + sigma^2) = sigma / 100.045; 10 % of 3 m moves it 0.0090 m
+    assert rss["tolerances_per_scale"] == pytest.approx(0.3 * 3.0 / 100.045 / 0.5, rel=0.05)
+    assert rss["tolerances_per_scale"] < gate.FLAG_TOLERANCES
+    # x10: sqrt(100^2 + 30^2) - 100.045 = 4.36 m; /10 moves it -0.0445 m; the worst counts
+    assert rss["tolerances_at_factor"] == pytest.approx((104.4031 - 100.0450) / 0.5, rel=1e-3)
+
+
 def test_does_not_flag_declared_inputs(report: dict) -> None:
-    gain = _entry(report, "gatepkg/consts.py", "3.0")  # GAIN feeds IN.gain
+    gain = _entry(report, "gatepkg/consts.py", "3.0", binding="GAIN")  # GAIN feeds IN.gain
     assert gain["status"] == "declared"
     assert gain["flagged_claims"] == []
     height = _entry(report, "gatepkg/claims.py", "100.0")  # the declaration's own literal
@@ -209,6 +228,7 @@ def test_numbers_no_claim_runs_are_not_perturbed(report: dict) -> None:
         ("gatepkg/model.py", "0.47"),
         ("gatepkg/consts.py", "6371000.0"),
         ("gatepkg/model.py", "200.0"),
+        ("gatepkg/consts.py", "3.0"),
         ("gatepkg/claims.py", "35000.0"),  # the statement's threshold is the book's number
     }
 

@@ -40,14 +40,18 @@ How it works
    imported the third-party libraries but not the package: every cache starts cold (the
    ledger's ``input_cache`` memos, ``functools.cache``, the on-disk caches are off), and
    import-time uses (``from m import X``, dataclass defaults, instances built at import)
-   see the perturbed value. Only the claims the group is relevant to are evaluated. A group
-   that moves a claim by more than a hundredth of its tolerance (a statement: flips, or its
-   numbers move by more than 1e-5 relative) is split in two, recursively, down to single
-   literals, which are evaluated at +1e-3 and -1e-3.
-5. **Verdict**: a literal is flagged when it moves a numeric claim by more than a tenth of
-   its tolerance (``resolve_tolerance(claim).allowed(published)``) or flips a statement,
-   while none of the inputs the claim recorded changed (a literal that feeds a declared
-   input's value is declared).
+   see the perturbed value. Only the claims the group is relevant to are evaluated, quickest
+   first, stopping at the first that moves. A group whose probe moves a claim by more than a
+   tenth of what could reach the flag at a factor 10 (a statement: its numbers move by more
+   than 1e-4 relative) is split in two, recursively, down to single literals, which are
+   evaluated at +1e-3 (and -1e-3 where that did not flag), then at x10 and /10 where the probe
+   says that could matter. The paper modules' literals are also tried at +-10 % on the
+   statements (a statement's own threshold moves none of its numbers).
+5. **Verdict**: a literal is flagged when a 10 % change of it (linearised from the probe), or
+   a factor 10 either way (evaluated, where the probe says it could matter), moves a numeric
+   claim by more than a tenth of its tolerance (``resolve_tolerance(claim).allowed(published)``),
+   or when the probe, a 10 % change or a factor 10 flips a statement, while none of the inputs
+   the claim recorded changed (a literal that feeds a declared input's value is declared).
 
 Two cores by default (``--jobs``); every child runs under ``nice``. The trace is kept in
 ``_build/input_gate/`` keyed by a hash of the package's sources, so a run per paper reuses it.
@@ -95,14 +99,18 @@ ZERO_STEP = 1e-3
 #: pencil-beam rule's 27000 against 32400 or 41253); a probe of 0.1 % keeps the response
 #: linear, so a literal's effect is the probe's, scaled by SCALE / (the probe's relative size).
 SCALE = 0.1
+#: An order of magnitude: the other readings of a value the paper does not give can lie that far
+#: (an initial GPS fix of 3 m or 30 m, a receiver clock's noise two decades apart). A literal
+#: whose probe says a factor FACTOR could matter is also evaluated at x FACTOR and / FACTOR.
+FACTOR = 10.0
 #: A literal is flagged when a SCALE change of it moves a claim by more than this many
-#: tolerances (linearised from the probe), or when the probe or a SCALE change flips a
-#: statement.
+#: tolerances (linearised from the probe), when x FACTOR or / FACTOR does, or when the probe,
+#: a SCALE change or a FACTOR change flips a statement.
 FLAG_TOLERANCES = 0.1
 #: A group of literals is split when its probe moves a claim by more than this many
-#: tolerances: a tenth of the flag threshold, so that literals that partly cancel in a group
-#: are still found.
-GROUP_TOLERANCES = FLAG_TOLERANCES * DELTA / SCALE / 10
+#: tolerances: a tenth of what, linearised to a FACTOR change, would reach the flag (so that
+#: literals that partly cancel in a group are still found).
+GROUP_TOLERANCES = FLAG_TOLERANCES * DELTA / (FACTOR - 1) / 10
 #: A statement's numbers "move" when the probe changes them by more than this relative amount
 #: (an elasticity of 0.1; a group is then split), and a single literal that moves them by more
 #: than STATEMENT_REPORT_REL is reported and also tried at +-SCALE (does the statement flip?).
@@ -1674,6 +1682,14 @@ def perturbed_value(value: int | float, sign: int, magnitude: float = 1.0, rel: 
     return value * (1 + sign * magnitude * rel)
 
 
+def _times(value: int | float, factor: float) -> int | float:
+    """``value`` times ``factor`` (an integer stays an integer and moves by one at least)."""
+    if isinstance(value, int):
+        moved = round(value * factor)
+        return moved if moved != value else value + (1 if factor > 1 else -1)
+    return value * factor
+
+
 def probe_size(value: int | float, moved: int | float) -> float:
     """The relative size of a perturbation; for a zero, which has no scale, SCALE itself (its
     probe's effect is judged as it is, not scaled)."""
@@ -1971,7 +1987,7 @@ class Gate:
                 return
             if len(cands) == 1:
                 for sign in (+1, -1):
-                    submit_single(cands[0], claims, sign, at_scale=True)
+                    submit_single(cands[0], claims, sign, "scale")
                 return
             pattern = [(c, rng.choice((-1, 1)), rng.uniform(0.5, 1.0)) for c in cands]
             join: dict[str, Any] = {"pending": 2, "moved": set()}
@@ -2009,7 +2025,7 @@ class Gate:
                     )
                 )
 
-        def record(cand: Candidate, cid: str, eff: Effect, value: int | float, at_scale: bool) -> None:
+        def record(cand: Candidate, cid: str, eff: Effect, value: int | float, mode: str) -> None:
             finding = self.findings[cand.id]
             rec = finding.effects.setdefault(
                 cid,
@@ -2021,12 +2037,24 @@ class Gate:
                     "statement_numbers_rel": 0.0,
                     "error": None,
                     "error_at_scale": None,
+                    "tolerances_at_factor": 0.0,  # x FACTOR or / FACTOR (where tried)
+                    "flipped_at_factor": False,
+                    "error_at_factor": None,
+                    "inputs_changed_at_factor": [],
                     "inputs_changed": [],
                     "perturbed_to": [],
                 },
             )
             rec["perturbed_to"].append(value)
-            if at_scale:
+            if mode == "factor":
+                rec["flipped_at_factor"] = rec["flipped_at_factor"] or eff.flipped
+                rec["error_at_factor"] = rec["error_at_factor"] or eff.error
+                rec["tolerances_at_factor"] = max(rec["tolerances_at_factor"], eff.tolerances)
+                rec["inputs_changed_at_factor"] = sorted(
+                    set(rec["inputs_changed_at_factor"]) | set(eff.inputs_changed)
+                )
+                return
+            if mode == "scale":
                 rec["flipped_at_scale"] = rec["flipped_at_scale"] or eff.flipped
                 rec["error_at_scale"] = rec["error_at_scale"] or eff.error
                 if eff.flipped:
@@ -2043,8 +2071,13 @@ class Gate:
             scaled = eff.tolerances * SCALE / size if size else eff.tolerances
             rec["tolerances_per_scale"] = max(rec["tolerances_per_scale"], scaled)
 
-        def submit_single(cand: Candidate, claims: list[str], sign: int, at_scale: bool = False) -> None:
-            value = perturbed_value(cand.value, sign, rel=SCALE if at_scale else DELTA)
+        def submit_single(cand: Candidate, claims: list[str], sign: int, mode: str = "probe") -> None:
+            """One literal alone: ``probe`` (+-DELTA), ``scale`` (+-SCALE, statements) or ``factor``
+            (x or / FACTOR)."""
+            if mode == "factor":
+                value = _times(cand.value, FACTOR if sign > 0 else 1 / FACTOR)
+            else:
+                value = perturbed_value(cand.value, sign, rel=SCALE if mode == "scale" else DELTA)
 
             def cb(result: Any, error: str | None) -> None:
                 self.children += 1
@@ -2057,9 +2090,9 @@ class Gate:
                         eff = compare(claim_meta[cid], nominal[cid], result[cid])
                     if eff.moved(GROUP_TOLERANCES, STATEMENT_GROUP_REL) and eff.error is None:
                         moved.append(cid)
-                    record(cand, cid, eff, value, at_scale)
+                    record(cand, cid, eff, value, mode)
                 self._progress(t0)
-                if at_scale:
+                if mode != "probe":
                     return
                 effects = self.findings[cand.id].effects
                 if sign == +1 and moved and not any(self._flags(c, effects[c]) for c in moved):
@@ -2067,23 +2100,7 @@ class Gate:
                     # at a turning point); a literal already flagged needs no second run
                     submit_single(cand, moved, -1)
                     return
-                # statements whose numbers the probe moves: do they flip at +-SCALE? (a literal
-                # of a paper module is tried at +-SCALE by the scale track already)
-                if not cand.module.startswith(self.target.exposure_prefix or "\0"):
-                    stmts = [
-                        c
-                        for c in claims
-                        if claim_meta[c]["statement"]
-                        and c in effects
-                        and not (effects[c]["flipped"] or effects[c]["error"])
-                        and effects[c]["statement_numbers_rel"] > STATEMENT_REPORT_REL
-                        and not effects[c].get("scale_tried")
-                    ]
-                    for c in stmts:
-                        effects[c]["scale_tried"] = True
-                    if stmts:
-                        submit_single(cand, stmts, +1, at_scale=True)
-                        submit_single(cand, stmts, -1, at_scale=True)
+                after_probe(cand, claims)
 
             sched.submit(
                 Task(
@@ -2094,6 +2111,48 @@ class Gate:
                     cb,
                 )
             )
+
+        def after_probe(cand: Candidate, claims: list[str]) -> None:
+            effects = self.findings[cand.id].effects
+            # statements whose numbers the probe moves: do they flip at +-SCALE? (a literal of a
+            # paper module is tried at +-SCALE by the scale track already)
+            if not cand.module.startswith(self.target.exposure_prefix or "\0"):
+                stmts = [
+                    c
+                    for c in claims
+                    if claim_meta[c]["statement"]
+                    and c in effects
+                    and not (effects[c]["flipped"] or effects[c]["error"])
+                    and effects[c]["statement_numbers_rel"] > STATEMENT_REPORT_REL
+                    and not effects[c].get("scale_tried")
+                ]
+                for c in stmts:
+                    effects[c]["scale_tried"] = True
+                if stmts:
+                    submit_single(cand, stmts, +1, "scale")
+                    submit_single(cand, stmts, -1, "scale")
+            # a factor FACTOR either way, where the probe says it could reach the flag (and
+            # nothing is flagged yet): the claims whose linearised effect reaches a tenth of it,
+            # and the statements whose numbers move
+            if cand.value == 0 or any(self._flags(c, e) for c, e in effects.items()):
+                return
+            size = max(probe_size(cand.value, v) for v in effects[next(iter(effects))]["perturbed_to"])
+            wide = [
+                c
+                for c in claims
+                if c in effects
+                and not effects[c]["error"]
+                and (
+                    effects[c]["tolerances"] * (FACTOR - 1) / max(size, 1e-300) > FLAG_TOLERANCES / 10
+                    or (
+                        claim_meta[c]["statement"]
+                        and effects[c]["statement_numbers_rel"] > STATEMENT_REPORT_REL
+                    )
+                )
+            ]
+            if wide:
+                submit_single(cand, wide, +1, "factor")
+                submit_single(cand, wide, -1, "factor")
 
         by_module: dict[str, list[Candidate]] = defaultdict(list)
         for c in self.tested:
@@ -2148,7 +2207,13 @@ class Gate:
     @staticmethod
     def _moves(e: dict[str, Any]) -> bool:
         """The literal moves this claim: beyond the threshold, or flips it."""
-        return bool(e["flipped"] or e["flipped_at_scale"] or e["tolerances_per_scale"] > FLAG_TOLERANCES)
+        return bool(
+            e["flipped"]
+            or e["flipped_at_scale"]
+            or e["tolerances_per_scale"] > FLAG_TOLERANCES
+            or e.get("flipped_at_factor")
+            or e.get("tolerances_at_factor", 0.0) > FLAG_TOLERANCES
+        )
 
     @staticmethod
     def _flags(cid: str, e: dict[str, Any]) -> bool:
@@ -2157,7 +2222,12 @@ class Gate:
             return False
         probe = not e["inputs_changed"] and (e["flipped"] or e["tolerances_per_scale"] > FLAG_TOLERANCES)
         scale = e["flipped_at_scale"] and not e.get("inputs_changed_at_scale")
-        return bool(probe or scale)
+        factor = (
+            not e.get("error_at_factor")
+            and not e.get("inputs_changed_at_factor")
+            and (e.get("flipped_at_factor") or e.get("tolerances_at_factor", 0.0) > FLAG_TOLERANCES)
+        )
+        return bool(probe or scale or factor)
 
     # -- the run ---------------------------------------------------------------------------
     def run(self) -> dict[str, Any]:
@@ -2265,6 +2335,7 @@ class Gate:
                 "delta": DELTA,
                 "zero_step": ZERO_STEP,
                 "scale": SCALE,
+                "factor": FACTOR,
                 "flag_tolerances": FLAG_TOLERANCES,
                 "group_tolerances": GROUP_TOLERANCES,
                 "statement_group_rel": STATEMENT_GROUP_REL,
@@ -2445,12 +2516,13 @@ def render_markdown(report: dict[str, Any]) -> str:
             f"({', '.join(sel['left_out_as_slow'])}).\n"
         )
     st = report["settings"]
+    fac = st.get("factor", 10)
     out.append(
         f"A number is flagged when a change of it by {100 * scale:g} % (linearised from a probe of "
-        f"±{100 * st['delta']:g} %) moves a claim by more than {st['flag_tolerances']:g} of its tolerance, "
-        f"or when the probe or a ±{100 * scale:g} % change flips a statement, while none of the inputs the "
-        "claim records changes. Effects are given in tolerances per "
-        f"{100 * scale:g} % change of the number.\n"
+        f"±{100 * st['delta']:g} %), or by a factor {fac:g} either way, moves a claim by more than "
+        f"{st['flag_tolerances']:g} of its tolerance, or when the probe, a ±{100 * scale:g} % change or a "
+        f"factor {fac:g} flips a statement, while none of the inputs the claim records changes. Effects are "
+        f"in tolerances per {100 * scale:g} % change of the number, else at ×/÷{fac:g}.\n"
     )
     out.append("## Summary\n")
     out.append(f"- claims: {n['claims']} ({len(n['claims_failing_nominally'])} fail at their nominal inputs)")
@@ -2489,14 +2561,24 @@ def render_markdown(report: dict[str, Any]) -> str:
             for e in sorted(by_paper[paper][file], key=lambda e: e["line"]):
                 mine = [cid for cid in e["flagged_claims"] if e["effects"][cid]["paper"] == paper]
                 shown = []
-                for cid in sorted(mine, key=lambda c: -_num(e["effects"][c]["tolerances_per_scale"]))[:8]:
+
+                def weight(c: str, e: dict[str, Any] = e) -> float:
+                    x = e["effects"][c]
+                    return _num(x["tolerances_per_scale"]) + 1e-3 * _num(x.get("tolerances_at_factor", 0.0))
+
+                for cid in sorted(mine, key=lambda c: -weight(c))[:8]:
                     eff = e["effects"][cid]
+                    factor = report["settings"].get("factor", 10)
                     if eff["flipped"]:
                         how = "flips"
                     elif eff["flipped_at_scale"]:
                         how = f"flips at ±{100 * scale:g} %"
-                    else:
+                    elif _num(eff["tolerances_per_scale"]) > report["settings"]["flag_tolerances"]:
                         how = f"{_num(eff['tolerances_per_scale']):.3g}"
+                    elif eff.get("flipped_at_factor"):
+                        how = f"flips at ×/÷{factor:g}"
+                    else:
+                        how = f"{_num(eff.get('tolerances_at_factor', 0.0)):.3g} at ×/÷{factor:g}"
                     shown.append(f"`{cid}` {how}")
                 more = f" and {len(mine) - 8} more" if len(mine) > 8 else ""
                 src = e["source"].replace("|", "\\|")
