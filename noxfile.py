@@ -1,4 +1,4 @@
-"""nox sessions: tests, book (HTML), pdf, figures, lint, ledger, bench, mutation.
+"""nox sessions: tests, book (HTML), pdf, figures, lint, ledger, bench, mutation, inputs.
 
 Every session installs the full stack from ``requirements/lock.txt`` (a committed
 ``uv pip compile --generate-hashes`` lock), with every distribution's hash required, then
@@ -327,6 +327,22 @@ def bench(session: nox.Session) -> None:
     """
     _install(session)
     session.run("python", "tools/bench.py", *session.posargs)
+
+
+@nox.session
+def inputs(session: nox.Session) -> None:
+    """The input gate: every number that moves a claim must be a declared input (tools/input_gate.py).
+
+    Traces which lines each claim runs, perturbs every numeric literal, module constant and
+    default they run, and flags those that move a claim (by more than a tenth of its tolerance
+    for a 10 % change, or flip a statement) while none of its recorded inputs changes. Writes
+    ``_build/input_gate.json`` and ``_build/input_gate.md``; fails on a flagged number the
+    allowlist (``tools/input_gate_allowlist.toml``) does not excuse. ``-- --paper WF``,
+    ``--claim PREFIX``, ``--module NAME``, ``--sample N --seed S`` select; the whole ledger takes
+    hours on two cores. A developer's session: ``.ci/run`` does not run it.
+    """
+    _install(session)
+    session.run("python", "tools/input_gate.py", *session.posargs)
 
 
 @nox.session
