@@ -38,9 +38,9 @@ def _load(path: Path, name: str):
     return module
 
 
-check_book = _load(ROOT / "tools" / "check_book.py", "check_book_edges")
-check_links = _load(ROOT / "tools" / "check_links.py", "check_links_edges")
-paper_equations = _load(ROOT / "book" / "_ext" / "paper_equations.py", "paper_equations_edges")
+check_book = _load(ROOT / "tools" / "check_book.py", "tools.check_book")
+check_links = _load(ROOT / "tools" / "check_links.py", "tools.check_links")
+paper_equations = _load(ROOT / "book" / "_ext" / "paper_equations.py", "book._ext.paper_equations")
 
 
 # --- the notebook gate ------------------------------------------------------------------------
