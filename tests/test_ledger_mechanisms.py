@@ -376,4 +376,4 @@ def test_inputs_are_recorded_once_with_their_provenance_and_source():
 
 def test_input_records_are_the_declarations():
     inp = IN.input("x0")
-    assert isinstance(inp, Input) and inp.band_points == (0.0, 1.0) and inp.module == __name__
+    assert isinstance(inp, Input) and inp.band_points == (0.0, 1.0) and inp.provenance == "assumed"
