@@ -77,7 +77,8 @@ class Package:
         extensions are loaded by the tests from their files under their dotted names
         (``tools.check_book``), the names mutmut's trampolines recognise.
     copy : tuple of str
-        Further folders the tests read (the book's pages), copied as they are.
+        Further folders the tests read (the book's pages), copied as they are; ``tools`` always is,
+        unmutated unless it is among ``sources``.
     not_mutated : list of str or None
         Lines not mutated (regular expressions); ``None`` for :data:`NOT_MUTATED`.
     """
@@ -238,7 +239,7 @@ def scratch_project(package: str, keep: bool = False) -> Path:
         # mutmut keys its cached verdicts on the mutated source, not on the tests: a survivor
         # stays a survivor after a new test unless the cache goes
         shutil.rmtree(work / "mutants")
-    for folder in dict.fromkeys(("navcore", "tests", *spec.sources, *spec.copy)):
+    for folder in dict.fromkeys(("navcore", "tests", "tools", *spec.sources, *spec.copy)):
         if (work / folder).exists():
             shutil.rmtree(work / folder)
         shutil.copytree(ROOT / folder, work / folder, ignore=shutil.ignore_patterns("__pycache__", "_build"))
@@ -248,6 +249,8 @@ def scratch_project(package: str, keep: bool = False) -> Path:
     if spec.deselect:
         selection += ["-k", f"not ({spec.deselect})"]
     not_mutated = NOT_MUTATED if spec.not_mutated is None else spec.not_mutated
+    # the tools are read by some tests of every package (unmutated, unless they are the package)
+    also_copy = [f for f in dict.fromkeys(("tools", *spec.copy)) if f not in spec.sources]
     lines = ["[tool.pytest.ini_options]"]
     lines += [f"{k} = {json.dumps(v)}" for k, v in pytest_options.items()]
     lines += [
@@ -255,7 +258,7 @@ def scratch_project(package: str, keep: bool = False) -> Path:
         "",
         "[tool.mutmut]",
         f"source_paths = {json.dumps(list(spec.sources))}",
-        f"also_copy = {json.dumps(list(spec.copy))}",
+        f"also_copy = {json.dumps(also_copy)}",
         f"only_mutate = {json.dumps(spec.mutate)}",
         f"pytest_add_cli_args_test_selection = {json.dumps(selection)}",
         'pytest_add_cli_args = ["-x", "-q"]',
