@@ -64,11 +64,12 @@ def tests(session: nox.Session) -> None:
     """Run pytest: unit tests against oracles, one test per ledger claim, figures, strict build.
 
     The whole suite runs on every core (pytest-xdist, ``-n auto``: two workers on CI's two
-    cores); ``nox -s tests -- ARGS`` passes ARGS to pytest instead (one process unless ARGS
-    ask for workers).
+    cores; ``--dist loadgroup`` keeps the claims of one paper module, which share their model
+    runs, on one worker); ``nox -s tests -- ARGS`` passes ARGS to pytest instead (one process
+    unless ARGS ask for workers).
     """
     _install(session)
-    session.run("python", "-m", "pytest", *(session.posargs or ["-q", "-n", "auto"]))
+    session.run("python", "-m", "pytest", *(session.posargs or ["-q", "-n", "auto", "--dist", "loadgroup"]))
 
 
 # a build stopped by Ctrl-C stops its workers, kernels, Sphinx and LaTeX itself (within seconds):
@@ -299,8 +300,9 @@ def ledger(session: nox.Session) -> None:
 
     Every claim is computed afresh (the on-disk evaluation cache is off), so two runs of this
     session are an honest determinism check. ``nox -s ledger -- --twice`` is that check in
-    one session (CI's gate): two fresh processes evaluate the ledger side by side, one per
-    core, and their JSON exports must be byte-identical (tools/ledger_twice.py).
+    one session (CI's gate): two fresh processes evaluate the ledger side by side, one in
+    itself and one on two workers, and their JSON exports must be byte-identical
+    (tools/ledger_twice.py).
     """
     _install(session)
     env = {"NAVCORE_CACHE": "off", "NAVCORE_NO_DISK_CACHE": "1"}

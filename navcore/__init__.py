@@ -57,8 +57,18 @@ Errors
     and the constraint. Every public function of the models checks its arguments at entry
     (``navcore._validate.checked``, from the annotations and a per-module table of
     ranges); loops sized by an argument are bounded (``n_steps``, ``runs``... at most
-    ``navcore._validate.MAX_LOOP_COUNT``). Inner loops skip the checks where a function
-    offers ``validate=False`` (:func:`navcore.estimation.kalman.kf_predict`).
+    ``navcore._validate.MAX_LOOP_COUNT``). Each argument is checked once: the wrapper checks
+    types and finiteness, the body what the wrapper cannot see (shapes, symmetry,
+    definiteness). Inner loops check their inputs once at their boundary and then call the
+    kernels unchecked: with ``validate=False`` where a function offers it
+    (:func:`navcore.estimation.kalman.kf_predict`), else through
+    ``navcore._validate.unchecked`` (the Monte Carlo of
+    :mod:`navcore.estimation.ekf_ins_gnss`, the strapdown).
+Parallel work
+    Independent tasks (the ledger's claims, batches of Monte Carlo runs) go through one
+    executor interface, :func:`navcore.parallel.run_tasks` (joblib: ``n_jobs=-1`` for every
+    core, joblib's dask backend for a cluster); each task has its own seed, so serial,
+    parallel and dask runs give the same numbers.
 
 Subpackages
 -----------

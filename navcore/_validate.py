@@ -30,6 +30,7 @@ __all__ = [
     "as_finite_array",
     "check_argument",
     "check_public",
+    "check_symmetric_psd",
     "checked",
     "require_finite",
     "require_in_range",
@@ -39,6 +40,7 @@ __all__ = [
     "require_probability",
     "require_square",
     "require_symmetric_psd",
+    "unchecked",
 ]
 
 _R = TypeVar("_R")
@@ -127,16 +129,57 @@ def require_symmetric_psd(
     margin of ``rtol`` times the largest eigenvalue.
     """
     arr = require_square(name, value)
-    scale = max(float(np.max(np.abs(arr))), np.finfo(float).tiny)
-    if np.max(np.abs(arr - arr.T)) > rtol * scale * 10:
+    check_symmetric_psd(name, arr, rtol=rtol, definite=definite)
+    return arr
+
+
+def check_symmetric_psd(
+    name: str, arr: NDArray[np.float64], *, rtol: float = 1e-9, definite: bool = False
+) -> None:
+    """:func:`require_symmetric_psd` for a float square matrix already checked finite.
+
+    The common case costs one Cholesky factorisation: a matrix whose factorisation succeeds
+    after a shift of ``rtol`` times its largest diagonal element (no larger than its largest
+    eigenvalue) passes the eigenvalue test too (for ``definite``: unshifted, every pivot
+    well above round-off); any other matrix goes to that test (``eigvalsh``), which decides
+    and words the error as before.
+    """
+    scale = max(float(np.abs(arr).max()), _TINY)
+    diff = arr - arr.T
+    if float(np.abs(diff, out=diff).max()) > rtol * scale * 10:
         raise ValueError(f"{name} must be symmetric")
+    n = arr.shape[0]
+    top = float(arr.diagonal().max())  # the symmetric part has the same diagonal
+    if top > 0:
+        shifted = arr + arr.T
+        shifted *= 0.5  # the symmetric part, as below
+        if not definite:
+            shifted.flat[:: n + 1] += rtol * top
+        lower, info = _potrf(shifted)
+        if info == 0 and (not definite or float(lower.diagonal().min()) ** 2 > _SQRT_EPS * top):
+            return  # positive (semi-)definite within the margin of the eigenvalue test
     eig = np.linalg.eigvalsh(0.5 * (arr + arr.T))
     floor = -rtol * max(float(eig[-1]), 0.0) if eig.size else 0.0
     if definite and (eig.size and eig[0] <= 0):
         raise ValueError(f"{name} must be positive definite (smallest eigenvalue {eig[0]:.3g})")
     if eig.size and eig[0] < floor:
         raise ValueError(f"{name} must be positive semi-definite (smallest eigenvalue {eig[0]:.3g})")
-    return arr
+
+
+_TINY = float(np.finfo(float).tiny)
+_SQRT_EPS = float(np.sqrt(np.finfo(float).eps))
+_DPOTRF: Any = None
+
+
+def _potrf(a: NDArray[np.float64]) -> tuple[NDArray[np.float64], int]:
+    """LAPACK's Cholesky factorisation of ``a`` (overwritten): (lower factor, info > 0 on failure)."""
+    global _DPOTRF
+    if _DPOTRF is None:
+        from scipy.linalg import lapack
+
+        _DPOTRF = lapack.dpotrf
+    lower, info = _DPOTRF(a, lower=1, clean=0, overwrite_a=1)
+    return lower, int(info)
 
 
 # --------------------------------------------------------------------------------------------
@@ -407,6 +450,29 @@ def checked(
         return wrapper
 
     return wrap(func) if func is not None else wrap
+
+
+def unchecked(func: Callable[..., _R]) -> Callable[..., _R]:
+    """The function that a :func:`checked` wrapper wraps (``func`` itself if it is not wrapped).
+
+    For a loop that checked its arguments once at its boundary and calls a public kernel at
+    every step: the same function, without the argument checks (and without the wrapper's
+    translation of numpy's shape errors).
+
+    Examples
+    --------
+    >>> def half(x: float) -> float:
+    ...     return x / 2
+    >>> checked(half)(float("nan"))
+    Traceback (most recent call last):
+    ...
+    ValueError: x must be finite (no NaN or infinity), got nan
+    >>> unchecked(checked(half))(1.0), unchecked(half) is half
+    (0.5, True)
+    """
+    if getattr(func, "__navcore_checked__", False):
+        return func.__wrapped__  # type: ignore[attr-defined]
+    return func
 
 
 #: Errors numpy raises deep inside a computation when an input has the wrong shape; the

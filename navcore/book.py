@@ -24,6 +24,7 @@ from typing import Any
 
 from navcore import figures as _figures
 from navcore import ledger
+from navcore.formatting import format_number, number_formatter, tidy_numbers
 from navcore.ledger.core import ERRATUM_BASES, ERRATUM_KINDS, STATUSES
 from navcore.ledger.render import (
     CountsTable,
@@ -43,7 +44,10 @@ __all__ = [
     "counts_table",
     "errata_list",
     "findings_table",
+    "format_number",
     "ledger_table",
+    "number_formatter",
+    "quantity_table",
     "setup",
     "show_figure",
     "table",
@@ -368,6 +372,11 @@ class Table:
     use (its plain-text fallback prints ``<pandas.io.formats.style.Styler at 0x...>``), so
     the chapters wrap their tables with :func:`table`.
 
+    Every cell is shown as the Styler formats it, with program-style numbers tidied
+    (:func:`~navcore.formatting.tidy_numbers`: ``9.40e-02`` reads ``9.40×10⁻²``, ``-0.00``
+    reads ``0.00``), and an index or header of floats shows each value exactly (``60``, not
+    ``60.000000``).
+
     Parameters
     ----------
     data : pandas.DataFrame or pandas.io.formats.style.Styler
@@ -387,9 +396,13 @@ class Table:
 
     def __init__(self, data: Any) -> None:
         self.styler = data if hasattr(data, "to_html") and hasattr(data, "data") else data.style
+        # an index or header of floats prints every value as it is (60, not 60.000000)
+        for axis, labels in (("index", self.styler.data.index), ("columns", self.styler.data.columns)):
+            if getattr(labels, "dtype", None) is not None and labels.dtype.kind == "f":
+                self.styler.format_index(number_formatter("exact"), axis=axis)
 
     def _repr_html_(self) -> str:
-        return _styler_html(self.styler)
+        return _tidy_html(_styler_html(self.styler))
 
     def _repr_markdown_(self) -> str:
         """The printed table (a LaTeX longtable that fits the page; see ``latex_table``)."""
@@ -405,8 +418,16 @@ class Table:
         sep = "\x1f"
         lines = [ln.split(sep) for ln in self.styler.to_string(delimiter=sep).splitlines() if ln.strip()]
         width = max(len(ln) for ln in lines)
-        lines = [[c.strip() for c in ln] + [""] * (width - len(ln)) for ln in lines]
+        lines = [[tidy_numbers(c.strip()) for c in ln] + [""] * (width - len(ln)) for ln in lines]
         return lines[0], lines[1:]
+
+
+def _tidy_html(table_html: str) -> str:
+    """The table's cell texts with numbers tidied (:func:`~navcore.formatting.tidy_numbers`);
+    the style block before the table is left alone."""
+    head, sep, body = table_html.rpartition("</style>")
+    body = re.sub(r">([^<>]+)<", lambda m: ">" + tidy_numbers(m.group(1)) + "<", body)
+    return head + sep + body
 
 
 def _styler_html(styler: Any) -> str:
@@ -669,7 +690,7 @@ def _readable_value(value: Any) -> str:
     if isinstance(value, bool) or value is None:
         return {True: "yes", False: "no", None: "—"}[value]
     if isinstance(value, int | float):
-        return f"{value:g}"
+        return format_number(value, "exact")
     if isinstance(value, tuple | list):
         return ", ".join(_readable_value(v) for v in value)
     return str(value)
@@ -683,8 +704,9 @@ def assumptions_table(rows: Any, head: tuple[str, str] = ("assumption", "value")
     rows : iterable of (str, Any)
         Name and value pairs (``dict.items()`` of a scenario, say). A lower-case name with a
         unit suffix reads as words and a unit (``cruise_altitude_m`` -> "cruise altitude
-        (m)"); other text is kept. Numbers are shown with ``%g``, truth values as yes/no,
-        sequences comma-separated.
+        (m)"); other text is kept. Numbers are shown exactly as they are given
+        (:func:`~navcore.formatting.format_number`, ``"exact"``: ``1×10⁹``, not ``1e+09``),
+        truth values as yes/no, sequences comma-separated.
     head : tuple of (str, str), optional
         The two column headings.
 
@@ -704,6 +726,44 @@ def assumptions_table(rows: Any, head: tuple[str, str] = ("assumption", "value")
 
     data = pd.DataFrame([(_readable_name(str(k)), _readable_value(v)) for k, v in rows], columns=list(head))
     return Table(data.style.hide(axis="index"))
+
+
+def quantity_table(rows: Any, head: tuple[str, str] = ("quantity", "value"), *, digits: int = 3) -> Table:
+    """A few named computed values as a two-column table, each with ``digits`` significant digits.
+
+    What a page would otherwise show as a printed dictionary (``{'error (deg)': 2.2914...}``).
+
+    Parameters
+    ----------
+    rows : mapping or iterable of (str, Any)
+        Names (with their units) and values; numbers are formatted with
+        :func:`~navcore.formatting.format_number`, other values shown as they are.
+    head : tuple of (str, str), optional
+        The two column headings.
+    digits : int, optional
+        Significant digits of each number.
+
+    Returns
+    -------
+    Table
+        The table without its index, for both builders.
+
+    Examples
+    --------
+    >>> print(repr(quantity_table({"attitude error (deg)": 2.2914, "residual (deg)": -0.0})))
+    quantity  value
+    attitude error (deg)  2.29
+    residual (deg)  0
+    """
+    import pandas as pd
+
+    items = rows.items() if hasattr(rows, "items") else rows
+    data = pd.DataFrame(
+        [(str(k), format_number(v, digits=digits) if not isinstance(v, str) else v) for k, v in items],
+        columns=list(head),
+    )
+    styler = data.style.hide(axis="index").set_properties(subset=[head[0]], **{"text-align": "left"})
+    return Table(styler)
 
 
 class _HtmlLatexTable:

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import os
+import shutil
+import tempfile
 
 import matplotlib
 import numpy as np
@@ -17,9 +19,24 @@ settings.register_profile("ci", derandomize=True, deadline=None, print_blob=True
 settings.register_profile("dev")
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci" if os.environ.get("CI") else "dev"))
 
-# Every test computes for itself: the ledger's on-disk evaluation cache is off.
-os.environ["NAVCORE_CACHE"] = "off"
-os.environ["NAVCORE_NO_DISK_CACHE"] = "1"  # the KZL Monte Carlo's own disk cache, likewise
+# Every test session computes for itself: the ledger's on-disk evaluation cache starts empty
+# in a folder of its own, which the session's processes (pytest-xdist workers, the kernels of
+# the exercise pages and the strict-build tests) share, so that a claim is evaluated once per
+# session, not once per process. NAVCORE_TEST_CACHE=off turns the cache off altogether.
+if os.environ.get("NAVCORE_TEST_CACHE", "") == "off":
+    os.environ["NAVCORE_CACHE"] = "off"
+elif "NAVCORE_TEST_CACHE" not in os.environ:  # the controller: the workers inherit the folder
+    os.environ["NAVCORE_TEST_CACHE"] = tempfile.mkdtemp(prefix="navcore-test-ledger-")
+    os.environ["NAVCORE_CACHE"] = os.environ["NAVCORE_TEST_CACHE"]
+    _SESSION_CACHE_OWNER = True
+os.environ["NAVCORE_NO_DISK_CACHE"] = "1"  # the KZL Monte Carlo's own disk cache is off
+
+
+def pytest_unconfigure(config):
+    """The process that made the session's ledger cache removes it."""
+    if globals().get("_SESSION_CACHE_OWNER") and not hasattr(config, "workerinput"):
+        shutil.rmtree(os.environ.get("NAVCORE_TEST_CACHE", ""), ignore_errors=True)
+
 
 matplotlib.use("Agg")
 

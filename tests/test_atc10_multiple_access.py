@@ -98,7 +98,7 @@ def test_worked_example_values():
 
 
 def test_msequence_bandwidth_against_brute_force():
-    """Oracle: brute-force integration of the chip waveform (E3-7), formerly the claim's oracle."""
+    """Oracle: brute-force integration of the chip waveform, formerly the claim's oracle."""
     assert abs(m.w_chip_msequence() / m.w_chip_msequence_oracle(m.IN.nominal("msequence_degree")) - 1) < 1e-9
 
 

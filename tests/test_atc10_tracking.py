@@ -134,3 +134,82 @@ def test_monte_carlo_norm_variance_is_not_mean_square():
     """Oracle: Monte Carlo; 'Var[|xi|]' of the paper is E|xi|^2 (erratum E4-8)."""
     mc = paper.tracker_monte_carlo("I", 5.0)
     assert mc.position_norm_variance[0] < 0.5 * mc.position_mse[0]
+
+
+@pytest.mark.parametrize("geometry", ["physical", "fitted"])
+def test_table_4_1_rounding_allowances_are_the_models(geometry):
+    """Oracle: the model's own sensitivity (table_4_1_rounding_allowance, a forward difference of
+    each printed coordinate); the typed allowances of the Table 4.2 claims cover it, rounded up to two
+    figures and no more."""
+    for ex in paper.EXAMPLES:
+        for col in paper.COLUMNS:
+            typed = paper._TAB41_ALLOWANCE[(geometry, ex, col)]
+            computed = paper.table_4_1_rounding_allowance(geometry, ex, col)
+            assert computed <= typed <= 1.12 * computed, (geometry, ex, col, computed, typed)
+
+
+def test_three_satellite_term_misses_the_print_for_every_orbit_radius():
+    """Oracle: pymap3d and numpy (_independent_table_4_2's construction): the rotation-invariant
+    1'(F3 F3')^-1 1 stays within 1.32-1.46 (I) and 1.15-1.22 (II) for every orbit radius from 5 to 14
+    Earth radii, far from the printed 5.76 and 14.3; so two of the ten Table 4.2 numbers are wrong
+    whatever the orbit, and only the printed (frame-dependent) formula reaches them."""
+    import numpy as np
+    import pymap3d
+
+    r_e = 6_371_000.0
+    sphere = pymap3d.Ellipsoid(r_e, r_e, name="sphere")
+    lat0, lon0 = paper.aircraft_lat_lon()
+    ac = np.array(pymap3d.geodetic2ecef(lat0, lon0, 0.0, ell=sphere))
+    bounds = {"I": (1.32, 1.46), "II": (1.15, 1.22)}
+    for ex in paper.EXAMPLES:
+        for ratio in np.linspace(5.0, 14.0, 19):
+            u3 = []
+            for lat, lon in paper.table_4_1(ex)[:3]:
+                sat = np.array(pymap3d.geodetic2ecef(lat, lon, (ratio - 1.0) * r_e, ell=sphere))
+                u3.append((ac - sat) / np.linalg.norm(ac - sat))
+            U3 = np.array(u3)
+            invariant = float(np.ones(3) @ np.linalg.solve(U3 @ U3.T, np.ones(3)))
+            lo, hi = bounds[ex]
+            assert lo <= invariant <= hi
+            assert invariant < 0.3 * paper.printed_table_4_2(ex)["s_123"]
+
+
+def test_wgs84_ellipsoid_moves_table_4_2_by_less_than_a_tenth_of_a_percent():
+    """Oracle: pymap3d's WGS-84 ellipsoid (Table 4.1 and the aircraft read as geodetic latitudes,
+    the satellites on the synchronous radius over their sub-satellite points) against the sphere of
+    the ledger's claims: the Earth model is not what separates Table 4.2 from the synchronous orbit."""
+    import numpy as np
+    import pymap3d
+
+    from navcore.location.multilateration import beta_parameter, clock_direction_term, position_trace
+
+    r = paper.synchronous_radius_m()
+    ac = np.array(pymap3d.geodetic2ecef(45.0, 120.0, 0.0, ell=pymap3d.Ellipsoid.from_name("wgs84")))
+    for ex in paper.EXAMPLES:
+        lat, lon = np.radians(paper.table_4_1(ex).T)
+        sats = r * np.stack([np.cos(lat) * np.cos(lon), np.cos(lat) * np.sin(lon), np.sin(lat)], axis=1)
+        U = (ac - sats) / np.linalg.norm(ac - sats, axis=1)[:, None]
+        sphere = paper.physical_table_4_2(ex)
+        for got, col in (
+            (beta_parameter(U), "beta"),
+            (position_trace(U), "trace_all"),
+            (clock_direction_term(U), "s_all"),
+        ):
+            assert got == pytest.approx(sphere[col], rel=1e-3)
+
+
+def test_rule4_common_threshold_exists_only_with_the_printed_term():
+    """Oracle: a dense scan of thresholds with (4.5.27) typed by hand (_oracle_rule4_common_threshold)
+    agrees with the interval computation for every reading; with the printed S3 of Table 4.2 (the
+    paper's own numbers) a common threshold exists, 1.71 to 1.97 times sd0."""
+    printed_inputs = {ex: paper.printed_table_4_2(ex) for ex in paper.EXAMPLES}
+    invariant_inputs = {ex: paper.invariant_s3_inputs(ex) for ex in paper.EXAMPLES}
+    for ref in ("sd0", "sdN", "sdN1", "ft"):
+        assert not paper.rule4_common_threshold_exists(invariant_inputs, ref)
+        assert paper._oracle_rule4_common_threshold(ref) is False
+    assert paper.rule4_common_threshold_exists(printed_inputs, "sd0")
+    (lo_i, hi_i), (lo_ii, hi_ii) = (
+        paper.rule4_threshold_interval(ex, printed_inputs[ex], s, "sd0")
+        for ex, s in zip(paper.EXAMPLES, paper.RULE4_SECONDS, strict=True)
+    )
+    assert 1.6 < max(lo_i, lo_ii) < min(hi_i, hi_ii) < 2.0

@@ -18,7 +18,18 @@ from navcore import ledger
 CLAIM_IDS = [c.id for c in ledger.claims()]
 
 
-@pytest.mark.parametrize("claim_id", CLAIM_IDS)
+def _module_group(claim_id: str) -> str:
+    """The paper module that defines the claim: its claims share their model runs (one
+    flyby, one Monte Carlo, one mission), so they run on one pytest-xdist worker
+    (``--dist loadgroup``), which computes each shared run once."""
+    from navcore.ledger import registry
+
+    return registry._CLAIM_MODULE[claim_id]
+
+
+@pytest.mark.parametrize(
+    "claim_id", [pytest.param(i, marks=pytest.mark.xdist_group(_module_group(i))) for i in CLAIM_IDS]
+)
 def test_claim(claim_id: str) -> None:
     result = ledger.evaluate_claim(claim_id)
     if result.claim.compute is None:

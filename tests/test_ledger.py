@@ -213,7 +213,13 @@ def test_json_has_exactly_the_documented_fields():
     }
     assert all(set(o) == fields for o in out)
     assert out[0]["published"] == 10.0 and out[0]["reproduced"] == 10.2
-    assert out[0]["tolerance"] == {"abs": 0.5, "rel": None, "reason": "test", "policy": "printed-digits"}
+    assert out[0]["tolerance"] == {
+        "abs": 0.5,
+        "rel": None,
+        "reason": "test",
+        "policy": "printed-digits",
+        "loose_abs": None,
+    }
     assert out[0]["kind"] == "reproduction" and out[1]["kind"] == "statement"
     assert out[0]["band"] is None and out[0]["inputs"] == []
     assert out[1]["published"] is True
@@ -252,7 +258,7 @@ def test_cli_ledger_json_and_exit_status(monkeypatch, capsys):
         evaluate(make()),
         evaluate(make(id="WF-b", published=True, unit="statement", compute=lambda: True)),
     ]
-    monkeypatch.setattr(ledger, "evaluations", lambda paper=None, prefix=None: evals)
+    monkeypatch.setattr(ledger, "evaluations", lambda paper=None, prefix=None, n_jobs=None: evals)
     assert cli.main(["ledger", "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
     assert [d["id"] for d in data] == ["WF-test", "WF-b"]
@@ -270,7 +276,9 @@ def test_cli_exit_status_nonzero_on_failure(monkeypatch, capsys):
     from navcore import ledger
 
     failing = make(compute=lambda: 99.0)
-    monkeypatch.setattr(ledger, "evaluations", lambda paper=None, prefix=None: [evaluate(failing)])
+    monkeypatch.setattr(
+        ledger, "evaluations", lambda paper=None, prefix=None, n_jobs=None: [evaluate(failing)]
+    )
     assert cli.main(["ledger"]) == 1
     assert "FAIL WF-test" in capsys.readouterr().err
 

@@ -1,9 +1,11 @@
 """Evaluate the ledger in two fresh processes at once and compare their JSON exports byte for byte.
 
 Usage: ``python tools/ledger_twice.py OUT.json [LEDGER ARGS ...]`` (``nox -s ledger -- --twice``
-runs it with the evaluation caches off). The first process prints the ledger and writes
-``OUT.json``; the second writes ``OUT.second.json``. The two run side by side, one per core,
-so the determinism gate of ``.ci/run`` costs one evaluation's wall-clock time, not two.
+runs it with the evaluation caches off). The first process evaluates every claim itself
+(``--jobs 1``), prints the ledger and writes ``OUT.json``; the second evaluates them in worker
+processes (``--jobs 2``, one task per paper module) and writes ``OUT.second.json``. The two run
+side by side, so the determinism gate of ``.ci/run`` costs about one evaluation's CPU time on
+two cores, and it also shows that the parallel ledger is the serial one, byte for byte.
 Exit status: a process's own (1 if a claim fails its check), else 1 if the exports differ.
 """
 
@@ -22,17 +24,20 @@ def main(argv: list[str]) -> int:
     second = first.with_name(first.stem + ".second.json")
     first.parent.mkdir(parents=True, exist_ok=True)
 
-    def command(out: Path) -> list[str]:
-        return [sys.executable, "-m", "navcore", "ledger", "--json-out", str(out), *extra]
+    def command(out: Path, jobs: str) -> list[str]:
+        return [sys.executable, "-m", "navcore", "ledger", "--jobs", jobs, "--json-out", str(out), *extra]
 
-    runs = [subprocess.Popen(command(first)), subprocess.Popen(command(second), stdout=subprocess.DEVNULL)]
+    runs = [
+        subprocess.Popen(command(first, "1")),
+        subprocess.Popen(command(second, "2"), stdout=subprocess.DEVNULL),
+    ]
     codes = [run.wait() for run in runs]
     if any(codes):
         return next(code for code in codes if code)
     if first.read_bytes() != second.read_bytes():
         print(f"two evaluations of the ledger differ: {first} and {second}", file=sys.stderr)
         return 1
-    print(f"two evaluations of the ledger, in separate processes, wrote identical JSON ({first})")
+    print(f"the ledger evaluated in one process and on two workers wrote identical JSON ({first})")
     return 0
 
 

@@ -156,13 +156,18 @@ def dish_beamwidth_deg(diameter_m: ArrayLike, frequency_hz: float, factor_deg: f
     return factor_deg * _wavelength(frequency_hz) / d
 
 
-def beamwidth_from_gain_deg(gain: ArrayLike) -> FloatArray:
-    """Pencil-beam rule ``theta = sqrt(27000 / G)`` degrees (``G ~ 27000 / theta**2``).
+def beamwidth_from_gain_deg(gain: ArrayLike, constant_deg2: float = 27000.0) -> FloatArray:
+    """Pencil-beam rule ``theta = sqrt(C / G)`` degrees (``G ~ C / theta**2``).
 
     Parameters
     ----------
     gain : array_like
         Linear antenna gain (``> 0``).
+    constant_deg2 : float, default 27000.0
+        The rule's constant ``C`` in square degrees (``> 0``): 41 253 (the square degrees of a
+        sphere) for an ideal beam that radiates all its power inside its half-power cone;
+        practical dishes, with their sidelobes and tapered illumination, lie between about 26 000
+        and 33 000.
 
     Returns
     -------
@@ -172,7 +177,7 @@ def beamwidth_from_gain_deg(gain: ArrayLike) -> FloatArray:
     Raises
     ------
     ValueError
-        If a gain is not positive.
+        If a gain or the constant is not positive.
 
     References
     ----------
@@ -183,11 +188,14 @@ def beamwidth_from_gain_deg(gain: ArrayLike) -> FloatArray:
     --------
     >>> round(float(beamwidth_from_gain_deg(100.0)), 3)
     16.432
+    >>> round(float(beamwidth_from_gain_deg(100.0, constant_deg2=41253.0)), 3)
+    20.311
     """
     g = as_finite_array("gain", gain)
     if np.any(g <= 0):
         raise ValueError("gain must be > 0")
-    return np.sqrt(27000.0 / g)
+    require_positive("constant_deg2", constant_deg2)
+    return np.sqrt(constant_deg2 / g)
 
 
 @implements("ATC10 Table 1.1")
@@ -234,5 +242,6 @@ check_public(
         "frequency_hz": POSITIVE,
         "gain": POSITIVE,
         "factor_deg": POSITIVE,
+        "constant_deg2": POSITIVE,
     },
 )

@@ -5,8 +5,10 @@ they arrive and with what geometry. Propagating
 
 .. math::
 
-    P^-_{k+1} = \Phi_k P^+_k \Phi_k^T + Q_k,\qquad
-    P^+_k = (I - K_k H_k) P^-_k (I - K_k H_k)^T + K_k R_k K_k^T
+    \begin{aligned}
+    P^-_{k+1} &= \Phi_k P^+_k \Phi_k^T + Q_k,\\
+    P^+_k &= (I - K_k H_k) P^-_k (I - K_k H_k)^T + K_k R_k K_k^T
+    \end{aligned}
 
 over a time grid with the measurements a schedule says are available is the covariance
 analysis that the SP paper uses to compare architectures, and that the WF and ATC10
@@ -25,7 +27,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from navcore._validate import check_public, require_square, require_symmetric_psd
-from navcore.estimation.kalman import symmetrize
+from navcore.estimation.kalman import symmetrize_unchecked
 
 __all__ = ["CovarianceHistory", "Measurement", "propagate_covariance"]
 
@@ -95,6 +97,17 @@ def _at(value: MatrixOrFunc, k: int, t: float) -> Array:
     return np.asarray(value(k, t) if callable(value) else value, dtype=float)
 
 
+def _model_matrix(name: str, value: ArrayLike, n: int, k: int | None = None) -> Array:
+    """A transition or noise matrix as a finite float (n, n) array (``k``: the step that gave it)."""
+    arr = np.asarray(value, dtype=float)
+    where = "" if k is None else f" at step {k}"
+    if arr.shape != (n, n):
+        raise ValueError(f"{name}{where} must have shape ({n}, {n}), got {arr.shape}")
+    if not np.isfinite(arr).all():
+        raise ValueError(f"{name}{where} must be finite (no NaN or infinity)")
+    return arr
+
+
 def propagate_covariance(
     P0: ArrayLike,
     t: ArrayLike,
@@ -155,11 +168,14 @@ def propagate_covariance(
     post = np.empty((N, n, n))
     counts = np.zeros(N, dtype=np.int64)
     eye = np.eye(n)
+    # a constant transition or noise is checked once here; a callable's matrices at each step
+    fixed_F = None if callable(Phi) else _model_matrix("Phi", Phi, n)
+    fixed_Q = None if callable(Q) else _model_matrix("Q", Q, n)
     for k in range(N):
         if k > 0:
-            F = _at(Phi, k, t[k])
-            Qk = _at(Q, k, t[k])
-            P = symmetrize(F @ P @ F.T + Qk)  # P- = Phi P Phi' + Q
+            F = fixed_F if fixed_F is not None else _model_matrix("Phi", _at(Phi, k, t[k]), n, k)
+            Qk = fixed_Q if fixed_Q is not None else _model_matrix("Q", _at(Q, k, t[k]), n, k)
+            P = symmetrize_unchecked(F @ P @ F.T + Qk)  # P- = Phi P Phi' + Q
         prior[k] = P
         if schedule is not None:
             for meas in schedule(k, float(t[k])):
@@ -175,7 +191,7 @@ def propagate_covariance(
                 S = H @ P @ H.T + R
                 K = np.linalg.solve(S, H @ P).T  # K = P H' S^-1
                 I_KH = eye - K @ H
-                P = symmetrize(I_KH @ P @ I_KH.T + K @ R @ K.T)  # Joseph form
+                P = symmetrize_unchecked(I_KH @ P @ I_KH.T + K @ R @ K.T)  # Joseph form
                 counts[k] += 1
         post[k] = P
     return CovarianceHistory(t, prior, post, counts)

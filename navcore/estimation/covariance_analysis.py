@@ -8,9 +8,9 @@ truth states, the true estimation error :math:`e = x_t - E\hat x_f` obeys
 .. math::
 
     \begin{aligned}
-    P_t^- &= \Phi_t P_t \Phi_t^T + Q_t, &
-    P_f^- &= \Phi_f P_f \Phi_f^T + Q_f,\\
-    K &= P_f^- H_f^T (H_f P_f^- H_f^T + R_f)^{-1}, &
+    P_t^- &= \Phi_t P_t \Phi_t^T + Q_t,\qquad
+    P_f^- = \Phi_f P_f \Phi_f^T + Q_f,\\
+    K &= P_f^- H_f^T (H_f P_f^- H_f^T + R_f)^{-1},\\
     P_f^+ &= (I-KH_f)P_f^-(I-KH_f)^T + K R_f K^T,\\
     P_t^+ &= (I - EKH_t) P_t^- (I - EKH_t)^T + EK R_t K^T E^T,
     \end{aligned}

@@ -32,8 +32,16 @@ from typing import Any, Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import COUNT, NONNEGATIVE, POSITIVE, check_public, require_integer, require_positive
-from navcore.estimation.kalman import symmetrize
+from navcore._validate import (
+    COUNT,
+    NONNEGATIVE,
+    POSITIVE,
+    check_public,
+    require_integer,
+    require_positive,
+    unchecked,
+)
+from navcore.estimation.kalman import symmetrize_unchecked
 from navcore.frames import dcm_from_euler, quat_from_dcm, quat_from_rotvec
 from navcore.gnss.carrier_phase import dd_covariance
 from navcore.inertial.alignment import heading_from_velocity, levelling
@@ -114,8 +122,9 @@ def correct_attitude(q: ArrayLike, dpsi: ArrayLike, side: Literal["left", "right
     if side not in ("left", "right"):
         raise ValueError(f"side must be 'left' or 'right', got {side!r}")
     q = np.asarray(q, dtype=float)
-    dq = quat_from_rotvec(-np.asarray(dpsi, dtype=float))
-    out = quat_multiply_batch(dq, q) if side == "left" else quat_multiply_batch(q, dq)
+    dq = unchecked(quat_from_rotvec)(-np.asarray(dpsi, dtype=float))
+    qmul = unchecked(quat_multiply_batch)
+    out = qmul(dq, q) if side == "left" else qmul(q, dq)
     return out / np.linalg.norm(out, axis=-1, keepdims=True)
 
 
@@ -170,7 +179,7 @@ def euler_jacobian_batch(C: Array) -> Array:
            [0., 1., 0.],
            [0., 0., 1.]])
     """
-    e = euler_batch(C)
+    e = unchecked(euler_batch)(C)
     sr, cr, tp, cp = np.sin(e[..., 0]), np.cos(e[..., 0]), np.tan(e[..., 1]), np.cos(e[..., 1])
     one, zero = np.ones_like(sr), np.zeros_like(sr)
     Jb = np.stack(
@@ -243,9 +252,9 @@ def discrete_noise_nilpotent(F: Array, GQGt: Array, dt: float) -> Array:
     nodes, weights = np.polynomial.legendre.leggauss(4)
     Qd = np.zeros_like(np.asarray(F, dtype=float))
     for s, w in zip(0.5 * dt * (nodes + 1.0), 0.5 * dt * weights, strict=True):
-        Phi = transition_exact(F, s) if s > 0 else np.broadcast_to(np.eye(F.shape[-1]), F.shape)
+        Phi = unchecked(transition_exact)(F, s) if s > 0 else np.broadcast_to(np.eye(F.shape[-1]), F.shape)
         Qd = Qd + w * Phi @ GQGt @ np.swapaxes(Phi, -1, -2)
-    return symmetrize(Qd)
+    return symmetrize_unchecked(Qd)
 
 
 def sequential_scalar_updates(x: Array, P: Array, y: Array, H: Array, r: Array) -> tuple[Array, Array]:
@@ -294,7 +303,7 @@ def sequential_scalar_updates(x: Array, P: Array, y: Array, H: Array, r: Array) 
         x = x + K * (y[:, j] - np.einsum("ni,ni->n", h, x))[:, None]
         # P+ = P - K (P h)^T: the optimal-gain form, O(n^2) per scalar; symmetrised below
         P = P - K[:, :, None] * Ph[:, None, :]
-    return x, symmetrize(P)
+    return x, symmetrize_unchecked(P)
 
 
 # --- scenario ---------------------------------------------------------------------------------
@@ -494,11 +503,19 @@ def run_monte_carlo(
     *,
     initialise: bool = True,
     attitude_min_sats: int = 4,
+    batches: int = 1,
+    n_jobs: int | None = None,
 ) -> MonteCarloResult:
     """Seeded Monte Carlo of one filter configuration over ``n_runs`` runs, batched.
 
     The same ``seed`` gives the same truth (IMU errors, noises, GPS noises) for every
-    ``mode``, so configurations are compared on common random numbers.
+    ``mode``, so configurations are compared on common random numbers. The runs advance
+    together (vectorised over a leading run axis); ``batches > 1`` splits them into that many
+    independent tasks, each with its own seed (``numpy.random.SeedSequence(seed).spawn``,
+    :func:`navcore.parallel.task_seeds`), which ``n_jobs`` workers run
+    (:func:`navcore.parallel.run_tasks`: every core with ``-1``, a dask cluster under joblib's
+    dask backend). The numbers depend on ``batches`` only: serial, parallel and dask runs of the
+    same batches agree bit for bit.
 
     Parameters
     ----------
@@ -515,6 +532,14 @@ def run_monte_carlo(
     attitude_min_sats : int, default 4
         Fewest visible satellites for the ``"tc_att"`` mode to use the carrier-phase
         attitude rows.
+    batches : int, default 1
+        Independent tasks the runs are split into (at most ``n_runs``). ``1`` draws every run
+        from ``numpy.random.default_rng(seed)``; ``k > 1`` draws batch ``i`` (runs
+        ``i * n_runs // k`` up to the next batch's first) from the ``i``-th child seed, so its
+        numbers differ from ``batches=1`` but not with ``n_jobs`` or the backend.
+    n_jobs : int or None, default None
+        Workers for the batches (joblib's convention: ``-1`` every core); ``None`` runs them
+        in this process.
 
     Returns
     -------
@@ -525,8 +550,9 @@ def run_monte_carlo(
     Raises
     ------
     ValueError
-        If ``mode`` is unknown, ``n_runs`` is not a positive integer, or the scenario lacks
-        an input the mode needs (initialisation time, GNSS noise, antenna baselines).
+        If ``mode`` is unknown, ``n_runs`` is not a positive integer, ``batches`` is not in
+        ``1..n_runs``, or the scenario lacks an input the mode needs (initialisation time,
+        GNSS noise, antenna baselines).
 
     References
     ----------
@@ -551,10 +577,66 @@ def run_monte_carlo(
     >>> tc = run_monte_carlo(sc, "tc", 50, seed=1, initialise=False)
     >>> [round(float(r.horizontal_rms("pos_err")[-1]), 2) for r in (ins, tc)]
     [4.42, 1.48]
+
+    Split into two batches, the runs are the same numbers in this process and on two workers:
+
+    >>> a = run_monte_carlo(sc, "tc", 50, seed=1, initialise=False, batches=2)
+    >>> b = run_monte_carlo(sc, "tc", 50, seed=1, initialise=False, batches=2, n_jobs=2)
+    >>> all(np.array_equal(getattr(a, f), getattr(b, f)) for f in ("pos_err", "att_sigma"))
+    True
     """
     if mode not in MODES:
         raise ValueError(f"mode must be one of {MODES}, got {mode!r}")
     require_integer("n_runs", n_runs, minimum=1)
+    require_integer("batches", batches, minimum=1)
+    if batches > n_runs:
+        raise ValueError(f"batches must be at most n_runs ({n_runs}), got {batches}")
+    if initialise:
+        _needed(sc.init_time, "sc.init_time", "an initialising run")
+    if batches == 1:
+        parts = [_monte_carlo_batch(sc, mode, n_runs, seed, initialise, attitude_min_sats)]
+    else:
+        from navcore.parallel import run_tasks, task_seeds
+
+        edges = [i * n_runs // batches for i in range(batches + 1)]
+        tasks = [
+            (sc, mode, edges[i + 1] - edges[i], child, initialise, attitude_min_sats)
+            for i, child in enumerate(task_seeds(seed, batches))
+        ]
+        parts = run_tasks(_monte_carlo_batch, tasks, n_jobs=n_jobs)
+    return _join_batches(parts)
+
+
+def _join_batches(parts: list[tuple[MonteCarloResult, Array, Array, Array]]) -> MonteCarloResult:
+    """One result from batches: runs concatenated, the run-averaged variances weighted by runs."""
+    first = parts[0][0]
+    if len(parts) == 1:
+        var = parts[0][1:]
+    else:
+        n = [p[0].pos_err.shape[0] for p in parts]
+        var = tuple(sum(k * p[1 + i] for k, p in zip(n, parts, strict=True)) / sum(n) for i in range(3))
+    return MonteCarloResult(
+        t=first.t,
+        pos_err=np.concatenate([p[0].pos_err for p in parts]),
+        vel_err=np.concatenate([p[0].vel_err for p in parts]),
+        att_err=np.concatenate([p[0].att_err for p in parts]),
+        pos_sigma=np.sqrt(var[0]),
+        vel_sigma=np.sqrt(var[1]),
+        att_sigma=np.sqrt(var[2]),
+        n_visible=first.n_visible,
+    )
+
+
+def _monte_carlo_batch(
+    sc: Scenario,
+    mode: str,
+    n_runs: int,
+    seed: int | np.random.SeedSequence,
+    initialise: bool,
+    attitude_min_sats: int,
+) -> tuple[MonteCarloResult, Array, Array, Array]:
+    """``n_runs`` runs from ``default_rng(seed)`` (one task of :func:`run_monte_carlo`): the result
+    without its 1-sigma columns, and the run-averaged variances of position, velocity and attitude."""
     N = n_runs
     rng = np.random.default_rng(seed)
     imu = sc.imu
@@ -609,21 +691,32 @@ def run_monte_carlo(
     out_pos = np.zeros((N, K + 1, 3))
     out_vel = np.zeros((N, K + 1, 3))
     out_att = np.zeros((N, K + 1, 3))
-    sig_pos = np.zeros((K + 1, 3))
-    sig_vel = np.zeros((K + 1, 3))
-    sig_att = np.zeros((K + 1, 3))
+    var_pos = np.zeros((K + 1, 3))
+    var_vel = np.zeros((K + 1, 3))
+    var_att = np.zeros((K + 1, 3))
     eul_true = euler_batch(C_true)
 
+    # the scenario and the arguments are checked: the loop calls the kernels without re-checking
+    _k_strapdown_interval = unchecked(strapdown_interval)
+    _k_dcm_from_quat_batch = unchecked(dcm_from_quat_batch)
+    _k_error_dynamics_17 = unchecked(error_dynamics_17)
+    _k_transition_exact = unchecked(transition_exact)
+    _k_discrete_noise_nilpotent = unchecked(discrete_noise_nilpotent)
+    _k_sequential_scalar_updates = unchecked(sequential_scalar_updates)
+    _k_euler_batch = unchecked(euler_batch)
+    _k_euler_jacobian_batch = unchecked(euler_jacobian_batch)
+    _k_correct_attitude = unchecked(correct_attitude)
+
     def record(k: int, t: float) -> None:
-        C_hat = dcm_from_quat_batch(nav.quat)
+        C_hat = _k_dcm_from_quat_batch(nav.quat)
         out_pos[:, k] = nav.pos - v_true * t
         out_vel[:, k] = nav.vel - v_true
-        out_att[:, k] = _wrap(euler_batch(C_hat) - eul_true)
-        J = euler_jacobian_batch(C_hat)
-        sig_pos[k] = np.sqrt(np.mean(np.diagonal(P[:, _P, _P], axis1=1, axis2=2), axis=0))
-        sig_vel[k] = np.sqrt(np.mean(np.diagonal(P[:, _V, _V], axis1=1, axis2=2), axis=0))
+        out_att[:, k] = _wrap(_k_euler_batch(C_hat) - eul_true)
+        J = _k_euler_jacobian_batch(C_hat)
+        var_pos[k] = np.mean(np.diagonal(P[:, _P, _P], axis1=1, axis2=2), axis=0)
+        var_vel[k] = np.mean(np.diagonal(P[:, _V, _V], axis1=1, axis2=2), axis=0)
         Pe = J @ P[:, _A, _A] @ np.swapaxes(J, -1, -2)
-        sig_att[k] = np.sqrt(np.mean(np.diagonal(Pe, axis1=1, axis2=2), axis=0))
+        var_att[k] = np.mean(np.diagonal(Pe, axis1=1, axis2=2), axis=0)
 
     record(0, 0.0)
     for k in range(1, K + 1):
@@ -633,7 +726,7 @@ def run_monte_carlo(
         # 100 Hz strapdown on bias-corrected data (Eqs. 7-9), vectorised over the interval
         w_hat = (b_g - bg_hat)[:, None, :] + n_g
         f_hat = (f_sensor_const - ba_hat)[:, None, :] + n_a
-        nav, f_n = strapdown_interval(nav, w_hat, f_hat, dt)
+        nav, f_n = _k_strapdown_interval(nav, w_hat, f_hat, dt)
         clock = clock + np.stack([clock[:, 1] * T, np.zeros(N)], -1)
         clock = clock + np.stack(
             [
@@ -652,10 +745,10 @@ def run_monte_carlo(
         e_att = _sigma(g.attitude) * rng.standard_normal((N, 3))
 
         # covariance prediction over the GPS interval
-        C_hat = dcm_from_quat_batch(nav.quat)
-        F = error_dynamics_17(C_hat, f_n.mean(axis=1))
-        Phi = transition_exact(F, T)
-        P = symmetrize(Phi @ P @ np.swapaxes(Phi, -1, -2) + discrete_noise_nilpotent(F, GQGt, T))
+        C_hat = _k_dcm_from_quat_batch(nav.quat)
+        F = _k_error_dynamics_17(C_hat, f_n.mean(axis=1))
+        Phi = _k_transition_exact(F, T)
+        P = symmetrize_unchecked(Phi @ P @ np.swapaxes(Phi, -1, -2) + _k_discrete_noise_nilpotent(F, GQGt, T))
 
         nu = int(sc.n_visible[k])
         if mode != "ins" and nu >= 1:
@@ -687,14 +780,14 @@ def run_monte_carlo(
                 nu,
             )
             dx = np.zeros((N, 17))
-            dx, P = sequential_scalar_updates(dx, P, y, H, r)
+            dx, P = _k_sequential_scalar_updates(dx, P, y, H, r)
             if mode == "tc_att" and nu >= attitude_min_sats:
-                eul_hat = euler_batch(C_hat)
+                eul_hat = _k_euler_batch(C_hat)
                 y_att = _wrap(eul_hat - (eul_true + e_att))
                 H_att = np.zeros((N, 3, 17))
-                H_att[:, :, _A] = euler_jacobian_batch(C_hat)
+                H_att[:, :, _A] = _k_euler_jacobian_batch(C_hat)
                 # the attitude rows see the already-updated error state through H dx
-                dx, P = sequential_scalar_updates(
+                dx, P = _k_sequential_scalar_updates(
                     dx,
                     P,
                     y_att,
@@ -725,26 +818,28 @@ def run_monte_carlo(
                 Linv = np.linalg.inv(Lc)
                 y_w = np.einsum("ij,nj->ni", Linv, y_dd)
                 H_w = np.einsum("ij,njk->nik", Linv, H_dd)
-                dx, P = sequential_scalar_updates(dx, P, y_w, H_w, np.ones(y_w.shape[1]))
+                dx, P = _k_sequential_scalar_updates(dx, P, y_w, H_w, np.ones(y_w.shape[1]))
             # feedback correction and reset (KZL Sec. 3.5)
             nav = NavState(
-                nav.pos - dx[:, _P], nav.vel - dx[:, _V], correct_attitude(nav.quat, dx[:, _A], "left")
+                nav.pos - dx[:, _P], nav.vel - dx[:, _V], _k_correct_attitude(nav.quat, dx[:, _A], "left")
             )
             ba_hat = ba_hat - dx[:, _BA]
             bg_hat = bg_hat - dx[:, _BG]
             clock_hat = clock_hat - dx[:, _CB : _CD + 1]
         record(k, t)
 
-    return MonteCarloResult(
+    empty = np.zeros((0, 3))
+    result = MonteCarloResult(
         t=np.arange(K + 1, dtype=float) * T,
         pos_err=out_pos,
         vel_err=out_vel,
         att_err=out_att,
-        pos_sigma=sig_pos,
-        vel_sigma=sig_vel,
-        att_sigma=sig_att,
+        pos_sigma=empty,
+        vel_sigma=empty,
+        att_sigma=empty,
         n_visible=np.asarray(sc.n_visible),
     )
+    return result, var_pos, var_vel, var_att
 
 
 # Every public function checks its arguments against their annotations (finite numbers,
@@ -768,5 +863,6 @@ check_public(
         "clock_phase_walk": NONNEGATIVE,
         "init_time": NONNEGATIVE,
         "attitude_min_sats": COUNT,
+        "batches": COUNT,
     },
 )

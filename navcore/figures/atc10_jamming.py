@@ -90,14 +90,44 @@ def ambiguous_detections_single_pulse() -> Figure:
     return _k1_figure("ambiguous")
 
 
+#: The J/(P0 B tau) axis of Figs. 2.3-2.16 (dB), as the paper draws most of them.
+X_AXIS_DB = (-20.0, 80.0)
+
+
+def varying_range(x: np.ndarray, curves: list[np.ndarray], pad_db: float = 2.0) -> tuple[float, float]:
+    """The part of the axis where some curve is above the plot's floor and still changing.
+
+    Each curve rises from below ``LOG10_FLOOR`` to a plateau; the range runs from where the
+    first curve comes into view to where the last one flattens (within 0.02 decades of its
+    plateau), padded by ``pad_db`` and rounded out to 5 dB, within ``X_AXIS_DB``.
+    """
+    lo, hi = X_AXIS_DB[1], X_AXIS_DB[0]
+    for y in curves:
+        moving = (y > LOG10_FLOOR + 0.05) & (y < np.max(y) - 0.02)
+        if np.any(moving):
+            lo, hi = min(lo, float(x[moving].min())), max(hi, float(x[moving].max()))
+    if lo > hi:
+        return X_AXIS_DB
+    lo = max(X_AXIS_DB[0], 5.0 * math.floor((lo - pad_db) / 5.0))
+    hi = min(X_AXIS_DB[1], 5.0 * math.ceil((hi + pad_db) / 5.0))
+    return lo, hi
+
+
 def _make_k_figure(quantity: str, k: int, p_dl: float):
     def draw() -> Figure:
         fig, ax = plt.subplots()
-        x = np.linspace(-20.0, 80.0, 501)
-        for t in T_VALUES:
+        bounds = {t: lambda x, t=t: log10_bound(quantity, x, p_dl, k, t) for t in T_VALUES}
+        x = np.linspace(*X_AXIS_DB, 501)
+        x_lo, x_hi = varying_range(x, [bound(x) for bound in bounds.values()])
+        # a figure whose curves all change within half the paper's axis is drawn on that part
+        # only (Figs. 2.4 and 2.5 would otherwise squeeze everything into the first 20 dB)
+        if x_hi - x_lo > 0.5 * (X_AXIS_DB[1] - X_AXIS_DB[0]):
+            x_lo, x_hi = X_AXIS_DB
+        x = np.linspace(x_lo, x_hi, 501)
+        for t, bound in bounds.items():
             p_d = paper.design_p_d(p_dl, k, t)
-            ax.plot(x, log10_bound(quantity, x, p_dl, k, t), label=rf"$t$ = {t:g}, $p_d$ = {p_d:.3f}")
-        _axes_common(ax, quantity, -20.0, 80.0)
+            ax.plot(x, bound(x), label=rf"$t$ = {t:g}, $p_d$ = {p_d:.3f}")
+        _axes_common(ax, quantity, x_lo, x_hi)
         ax.set_title(rf"$K$ = {k}, $P_{{DL}}$ = {p_dl}", fontsize=10)
         return fig
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import matplotlib.pyplot as plt
 import numpy as np
+from matplotlib import ticker
 from matplotlib.figure import Figure
 
 from navcore.figures import register
@@ -23,6 +24,15 @@ def _shade_satellites(ax, t_end: float = 180.0) -> None:
     for (s, n), e in zip(VISIBILITY_SCHEDULE, starts[1:], strict=True):
         if n < 4:
             ax.axvspan(s, e, color="tab:orange", alpha=0.12 if n == 3 else 0.22, lw=0)
+
+
+def _plain_log_ticks(ax) -> None:
+    """Log axis labelled at 1, 2 and 5 per decade in plain decimals (0.05, 0.1, 0.2, ...), no
+    minor labels: matplotlib's default crowds a short log axis with 2×10⁻¹, 3×10⁻¹, ..."""
+    ax.yaxis.set_major_locator(ticker.LogLocator(base=10.0, subs=(1.0, 2.0, 5.0)))
+    ax.yaxis.set_major_formatter(ticker.FuncFormatter(lambda v, _pos: f"{v:g}"))
+    ax.yaxis.set_minor_locator(ticker.LogLocator(base=10.0, subs=[float(k) for k in range(2, 10)]))
+    ax.yaxis.set_minor_formatter(ticker.NullFormatter())
 
 
 def _sat_strip(ax) -> None:
@@ -54,6 +64,7 @@ def attitude_errors() -> Figure:
             ax.semilogy(r.t[1:], r.att_sigma[1:, i] / DEG, color=color, lw=0.7, alpha=0.7)
     for i, ax in enumerate(axes[:3]):
         ax.set_ylabel(f"{names[i]} error (deg)")
+        _plain_log_ticks(ax)
         _shade_satellites(ax)
         ax.axhline(0.5, color="green", lw=0.8, ls="-.")
     # above the top panel: inside it, the legend covered the stand-alone curve and the requirement line
@@ -89,6 +100,7 @@ def navigation_errors() -> Figure:
     axes[1].set_ylabel("horizontal velocity (m/s)")
     axes[2].set_ylabel("attitude, RSS of 3 angles (deg)")
     for ax in axes[:3]:
+        _plain_log_ticks(ax)
         _shade_satellites(ax)
     axes[0].legend(fontsize=8, ncol=3, loc="lower center", bbox_to_anchor=(0.5, 1.02), frameon=False)
     _sat_strip(axes[3])

@@ -4,7 +4,10 @@ Ideal correlation and early-minus-late discriminator (spacing :math:`d` chips):
 
 .. math::
 
-    R_c(\tau) = \max(0, 1 - |\tau|),\qquad D(\tau) = R_c(\tau - d/2) - R_c(\tau + d/2).
+    \begin{gathered}
+    R_c(\tau) = \max(0, 1 - |\tau|),\\
+    D(\tau) = R_c(\tau - d/2) - R_c(\tau + d/2).
+    \end{gathered}
 
 Effective carrier-to-noise density under a jammer of power ratio :math:`J/S`, for a code
 of chip rate :math:`R_c` and spectral-separation factor :math:`Q`
@@ -342,9 +345,11 @@ def code_tracking_sigma_chips(
 
     .. math::
 
-        \sigma^2 = \frac{B_n d}{2\,C/N_0}\Big[1 + \frac{2}{(2-d)\,(C/N_0)\,T_c}\Big]
-        = \frac{d}{4\,(C/N_0)\,T}\Big[1 + \frac{2}{(2-d)\,(C/N_0)\,T_c}\Big]
+        \begin{aligned}
+        \sigma^2 &= \frac{B_n d}{2\,C/N_0}\Big[1 + \frac{2}{(2-d)\,(C/N_0)\,T_c}\Big]\\
+        &= \frac{d}{4\,(C/N_0)\,T}\Big[1 + \frac{2}{(2-d)\,(C/N_0)\,T_c}\Big]
         \ \text{chips}^2
+        \end{aligned}
 
     (Kaplan Eq. 5.81, infinite front-end bandwidth, with :math:`B_n = 1/(2T)`, the noise
     bandwidth of an average over the measurement interval :math:`T`).

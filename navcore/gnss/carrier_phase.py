@@ -6,9 +6,11 @@ Double difference between satellites n and master satellite m and antennas A0, A
 
 .. math::
 
-    \nabla\Delta\varphi^{(n,m)}_{A0,Ai} = \frac{2\pi}{\lambda}
-    \big[(\rho^{(n)}_{Ai} - \rho^{(n)}_{A0}) - (\rho^{(m)}_{Ai} - \rho^{(m)}_{A0})\big]
-    \approx \frac{2\pi}{\lambda} (l^{(m)} - l^{(n)})^T R_b^n\, l^b_{0i}
+    \begin{aligned}
+    \nabla\Delta\varphi^{(n,m)}_{A0,Ai} &= \frac{2\pi}{\lambda}
+    \big[(\rho^{(n)}_{Ai} - \rho^{(n)}_{A0}) - (\rho^{(m)}_{Ai} - \rho^{(m)}_{A0})\big]\\
+    &\approx \frac{2\pi}{\lambda} (l^{(m)} - l^{(n)})^T R_b^n\, l^b_{0i}
+    \end{aligned}
 
 (plane-wave approximation; :func:`double_difference_phase` evaluates the exact ranges).
 Receiver clocks and common-mode atmosphere cancel; with resolved ambiguities and no

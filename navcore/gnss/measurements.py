@@ -21,10 +21,12 @@ differences of these functions in ``tests/test_error_model17.py``):
 
 .. math::
 
+    \begin{gathered}
     \frac{\partial \rho_i}{\partial r} = -u_i^T,\quad \frac{\partial \rho_i}{\partial b} = 1;\qquad
     \frac{\partial \dot\rho_i}{\partial v} = -u_i^T,\quad
-    \frac{\partial \dot\rho_i}{\partial r} = -\frac{(v_i - v)^T (I - u_i u_i^T)}{\lVert r_i - r\rVert},\quad
-    \frac{\partial \dot\rho_i}{\partial \dot b} = 1.
+    \frac{\partial \dot\rho_i}{\partial \dot b} = 1;\\
+    \frac{\partial \dot\rho_i}{\partial r} = -\frac{(v_i - v)^T (I - u_i u_i^T)}{\lVert r_i - r\rVert}.
+    \end{gathered}
 
 References
 ----------

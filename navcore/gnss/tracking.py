@@ -5,9 +5,11 @@ A third-order phase-lock loop with Butterworth closed-loop poles (loop-filter co
 
 .. math::
 
+    \begin{gathered}
     H(s) = \frac{2\omega_0 s^2 + 2\omega_0^2 s + \omega_0^3}{D(s)},\qquad
-    \frac{E(s)}{\Theta(s)} = \frac{s^3}{D(s)},\qquad
+    \frac{E(s)}{\Theta(s)} = \frac{s^3}{D(s)},\\
     D(s) = s^3 + 2\omega_0 s^2 + 2\omega_0^2 s + \omega_0^3 = (s+\omega_0)(s^2+\omega_0 s+\omega_0^2).
+    \end{gathered}
 
 For an acceleration step of size :math:`R` (input :math:`\theta = R t^2/2`) the tracking
 error is :math:`E(s) = R/D(s)`, whose inverse transform is (SP Sec. 2.5, the equation above

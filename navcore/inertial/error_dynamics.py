@@ -32,11 +32,11 @@ Dynamics (psi-angle form, Benson 1975):
 
     \begin{aligned}
     \delta\dot r &= \delta v - \omega_{en}\times\delta r\\
-    \delta\dot v &= -(2\omega_{ie}+\omega_{en})\times\delta v - \psi\times f^n
-        + \tfrac{g}{R}\,\mathrm{diag}(-1,-1,2)\,\delta r + C^n_b\,\delta f^b + \delta g\\
+    \delta\dot v &= -(2\omega_{ie}+\omega_{en})\times\delta v - \psi\times f^n\\
+        &\quad + \tfrac{g}{R}\,\mathrm{diag}(-1,-1,2)\,\delta r + C^n_b\,\delta f^b + \delta g\\
     \dot\psi &= -(\omega_{ie}+\omega_{en})\times\psi - C^n_b\,\delta\omega^b_{ib}\\
-    \delta f^b &= b_a + \mathrm{diag}(f^b)\,s_a + [f^b\times]\,\mu_a + w_a,\qquad
-    \delta\omega^b_{ib} = b_g + \mathrm{diag}(\omega^b_{ib})\,s_g + [\omega^b_{ib}\times]\,\mu_g + w_g
+    \delta f^b &= b_a + \mathrm{diag}(f^b)\,s_a + [f^b\times]\,\mu_a + w_a,\\
+    \delta\omega^b_{ib} &= b_g + \mathrm{diag}(\omega^b_{ib})\,s_g + [\omega^b_{ib}\times]\,\mu_g + w_g
     \end{aligned}
 
 The horizontal channels oscillate at the Schuler frequency :math:`\sqrt{g/R}` (84.4-min

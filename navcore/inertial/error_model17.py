@@ -22,11 +22,12 @@ non-rotating Earth) gives the reconstructed KZL Eq. 10:
 
 .. math::
 
-    \Delta\dot x = \Delta v,\quad
-    \Delta\dot v = F_{23}\Delta\psi - \hat R_b^n \Delta b_a - \hat R_b^n w_a,\quad
-    \Delta\dot\psi = -\hat R_b^n \Delta b_\omega - \hat R_b^n w_\omega,\quad
-    \Delta\dot b = w_b,\quad c\Delta\dot t_r = c\Delta\dot t_{r,d},\quad
-    c\Delta\ddot t_r = w_d,
+    \begin{aligned}
+    \Delta\dot x &= \Delta v,\qquad \Delta\dot b = w_b,\\
+    \Delta\dot v &= F_{23}\Delta\psi - \hat R_b^n \Delta b_a - \hat R_b^n w_a,\\
+    \Delta\dot\psi &= -\hat R_b^n \Delta b_\omega - \hat R_b^n w_\omega,\\
+    c\Delta\dot t_r &= c\Delta t_{r,d} + w_c,\qquad c\Delta\dot t_{r,d} = w_d,
+    \end{aligned}
 
 with :math:`F_{23} = -[\hat a^n\times]`. KZL Eq. 11 prints exactly this matrix,
 ``[[0, a_d, -a_e], [-a_d, 0, a_n], [a_e, -a_n, 0]]``, and calls it :math:`[\hat a^n\times]`:

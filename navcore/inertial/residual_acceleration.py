@@ -6,9 +6,11 @@ acceleration :math:`a`: the scale-factor errors :math:`sf_i` and the misalignmen
 
 .. math::
 
+    \begin{gathered}
     \delta a = \operatorname{diag}(sf)\,a + \delta\theta\times a
-             = H(a)\begin{bmatrix} sf \\ \delta\theta \end{bmatrix},\qquad
+             = H(a)\begin{bmatrix} sf \\ \delta\theta \end{bmatrix},\\
     H(a) = \big[\operatorname{diag}(a)\;\big|\; -[a\times]\big],
+    \end{gathered}
 
 with covariance :math:`\langle\delta a\,\delta a^T\rangle = H P H^T` for the 6x6 covariance
 :math:`P` of scale factor and misalignment. The paper prints :math:`H` for
@@ -28,10 +30,13 @@ deviations the range is cut there instead), so that
 
 .. math::
 
+    \begin{aligned}
     P\{|\delta a|\le r\} = \int_{-\pi/2}^{\pi/2}\!\int_{-\pi/2}^{\pi/2}
-        \frac{r\cos s}{\sqrt{\lambda_1}}\,\varphi\Big(\frac{r\sin s}{\sqrt{\lambda_1}}\Big)
-        \frac{r\cos s\cos t}{\sqrt{\lambda_2}}\,\varphi\Big(\frac{r\cos s\sin t}{\sqrt{\lambda_2}}\Big)
-        \operatorname{erf}\Big(\frac{r\cos s\cos t}{\sqrt{2\lambda_3}}\Big)\,dt\,ds,
+        &\frac{r\cos s}{\sqrt{\lambda_1}}\,\varphi\Big(\frac{r\sin s}{\sqrt{\lambda_1}}\Big)\\
+        &\times\frac{r\cos s\cos t}{\sqrt{\lambda_2}}\,
+        \varphi\Big(\frac{r\cos s\sin t}{\sqrt{\lambda_2}}\Big)\\
+        &\times\operatorname{erf}\Big(\frac{r\cos s\cos t}{\sqrt{2\lambda_3}}\Big)\,dt\,ds,
+    \end{aligned}
 
 a smooth integrand that Gauss-Legendre quadrature integrates to about 1e-10 for eigenvalue
 ratios up to 1e4 (checked against the chi-square distribution and by Monte Carlo in the

@@ -4,10 +4,12 @@ Model (KZL Eqs. 7-9, with the neglected terms made switchable):
 
 .. math::
 
-    \dot x^n = v^n,\qquad
-    \dot v^n = R_b^n f_{ib}^b + g^n - (2\omega_{ie}^n + \omega_{en}^n)\times v^n,\qquad
-    \dot q_b^n = \tfrac12 q_b^n \otimes [0, \omega_{ib}^b]
+    \begin{aligned}
+    \dot x^n &= v^n,\\
+    \dot v^n &= R_b^n f_{ib}^b + g^n - (2\omega_{ie}^n + \omega_{en}^n)\times v^n,\\
+    \dot q_b^n &= \tfrac12 q_b^n \otimes [0, \omega_{ib}^b]
                - \tfrac12 [0, \omega_{in}^n] \otimes q_b^n,
+    \end{aligned}
 
 with :math:`\omega_{in}^n = \omega_{ie}^n + \omega_{en}^n`, Hamilton quaternions (scalar
 first, :mod:`navcore.frames`), :math:`f_{ib}^b` the *specific force* (so a level IMU at rest
@@ -47,7 +49,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import POSITIVE, as_finite_array, check_public, require_positive
+from navcore._validate import POSITIVE, as_finite_array, check_public, require_positive, unchecked
 from navcore.frames import quat_from_rotvec, radii_of_curvature
 from navcore.trace import implements
 from navcore.units import G0, OMEGA_EARTH
@@ -376,26 +378,31 @@ def strapdown_interval(
     w = np.asarray(omega_ib_b, dtype=float)
     f = np.asarray(f_ib_b, dtype=float)
     N, S = w.shape[:2]
-    dq = quat_from_rotvec(w * dt)  # (N, S, 4)
+    dq = _quat_from_rotvec(w * dt)  # (N, S, 4)
     # inclusive prefix product P_i = dq_0 ⊗ ... ⊗ dq_i (Hillis-Steele scan)
     pref = dq.copy()
     d = 1
     while d < S:
-        pref[:, d:] = quat_multiply_batch(pref[:, :-d], pref[:, d:])
+        pref[:, d:] = _quat_multiply(pref[:, :-d], pref[:, d:])
         d *= 2
     q0 = state.quat[:, None, :]
-    start = np.concatenate([np.broadcast_to(q0, (N, 1, 4)), quat_multiply_batch(q0, pref[:, :-1])], axis=1)
-    q_mid = quat_multiply_batch(start, quat_from_rotvec(0.5 * w * dt))
-    f_n = np.einsum("nsij,nsj->nsi", dcm_from_quat_batch(q_mid), f)
+    start = np.concatenate([np.broadcast_to(q0, (N, 1, 4)), _quat_multiply(q0, pref[:, :-1])], axis=1)
+    q_mid = _quat_multiply(start, _quat_from_rotvec(0.5 * w * dt))
+    f_n = np.einsum("nsij,nsj->nsi", _dcm_from_quat(q_mid), f)
     acc = f_n.copy()
     acc[..., 2] += gravity
     v_all = state.vel[:, None, :] + np.cumsum(acc, axis=1) * dt  # v_1 .. v_S
     v_prev = np.concatenate([state.vel[:, None, :], v_all[:, :-1]], axis=1)
     x_end = state.pos + 0.5 * dt * np.sum(v_prev + v_all, axis=1)
-    q_end = quat_multiply_batch(state.quat, pref[:, -1])
+    q_end = _quat_multiply(state.quat, pref[:, -1])
     q_end = q_end / np.linalg.norm(q_end, axis=-1, keepdims=True)
     return NavState(x_end, v_all[:, -1], q_end), f_n
 
+
+# the kernels strapdown_interval calls at every step, without re-checking its checked arguments
+_quat_multiply = quat_multiply_batch
+_dcm_from_quat = dcm_from_quat_batch
+_quat_from_rotvec = unchecked(quat_from_rotvec)
 
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.

@@ -9,9 +9,11 @@ the latitude/longitude increments):
 
 .. math::
 
+    \begin{gathered}
     v^n = V\,[\cos\gamma\cos\chi,\ \cos\gamma\sin\chi,\ -\sin\gamma],\qquad
-    f^n = \dot v^n - g^n,\qquad
+    f^n = \dot v^n - g^n,\\
     \tan\phi = \frac{V\dot\chi\cos\gamma}{g\cos\gamma + V\dot\gamma}.
+    \end{gathered}
 
 The bank angle :math:`\phi` (yaw :math:`\chi`, pitch :math:`\gamma`, roll :math:`\phi`) makes
 the turn coordinated: the body-y specific force

@@ -14,4 +14,10 @@ from __future__ import annotations
 
 __all__ = ["PUBLISHED_NOT_IN_QUOTE"]
 
-PUBLISHED_NOT_IN_QUOTE: dict[str, str] = {}
+PUBLISHED_NOT_IN_QUOTE: dict[str, str] = {
+    "ATC10-sec3.8-example-n-effective": "printed as '2(10^5)', i.e. 2 x 10^5, which the quote reader "
+    "does not parse",
+    "ATC10-eq2.8.1-erf-coefficient": "printed as the LaTeX fraction \\frac{1}{2} inside (2.8.1)'s erf",
+    "ATC10-sec3.9-power": "printed as the spectral height N/(3 alpha / tau_c), i.e. 1/3 in units of "
+    "N tau_c / alpha",
+}

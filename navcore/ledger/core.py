@@ -22,7 +22,8 @@ Verdicts, as derived (LEDGER.md)
     agreement that rests on more than published inputs: some value in the band of the
     ``assumed`` inputs agrees (and the band decides), or the computation reads a ``fitted``
     input, or the kind is ``cross-check`` (arithmetic on printed numbers) or ``fit``; or the
-    reading used of a convention disagrees where another admissible reading agrees.
+    reading used of a convention disagrees where another admissible reading agrees; or a whole
+    number agrees only if its trailing zeros are not significant ("Trailing zeros").
 ``inconsistent``
     the model under declared assumptions disagrees across the whole band, under every
     admissible reading (or a fit that does not agree).
@@ -67,6 +68,24 @@ it is too wide unless the tolerance accepts all of it; a band in decibels (a uni
 with ``dB``) is compared as the power ratio of its ends, 10 log10(3) = 4.77 dB. A printed
 bound (``<``, ``>``) is treated alike: a band that straddles it and spans more than a factor 3
 is too wide; a band wholly on the bound's side agrees everywhere and decides.
+
+Trailing zeros
+--------------
+The trailing zeros of a whole number printed without a decimal point or an exponent ("2750",
+"20", "3300") do not say whether they are significant, so the precision is a reading of the
+text, and :func:`printed` gives its tolerance both: strict, half a unit in the last digit
+(``abs``), and loose, half a unit in the last non-zero digit (``loose_abs``: ±5 for "2750",
+±50 for "3300"). The verdict weighs them like the readings of a convention:
+
+* agreement under the strict one: the verdict as derived with it (the loose one is not run);
+* agreement only under the loose one: ``consistent`` (:func:`precision_status`), and the
+  claim's ``readings`` name the reading that agrees, "trailing zeros not significant"
+  (:data:`PRECISION_READING`);
+* agreement under neither: the verdict as derived with the loose tolerance (the claim is not
+  accused of a digit its printed number may not carry), both readings shown.
+
+A number printed with a decimal point ("20.0", "20.") or an exponent ("150e1") states its
+significant digits.
 
 Findings and their basis
 ------------------------
@@ -115,6 +134,9 @@ __all__ = [
     "MAX_READING_COMBINATIONS",
     "PAPERS",
     "POLICIES",
+    "PRECISION_LOOSE",
+    "PRECISION_READING",
+    "PRECISION_STRICT",
     "PROSE_WORDS",
     "RELATIONS",
     "STATUSES",
@@ -130,6 +152,7 @@ __all__ = [
     "evaluate",
     "figure_reading",
     "monte_carlo",
+    "precision_status",
     "printed",
     "prose",
     "quote_has_number",
@@ -216,12 +239,17 @@ class Tolerance:
     quote : str
         The printed text the tolerance was fixed from (``"17.67"`` for :func:`printed`,
         ``"about"`` for :func:`prose`); a claim quotes it by default (not compared).
+    loose_abs : float or None
+        The absolute tolerance under the other reading of a whole number printed with
+        trailing zeros and no decimal point (``"2750"``): half a unit in its last non-zero
+        digit (module docstring, "Trailing zeros"); ``None`` when the printed digits leave no
+        such reading. Set by :func:`printed`; at least ``abs``.
 
     Raises
     ------
     ValueError
-        If ``reason`` is empty, ``policy`` is not one of :data:`POLICIES`, or ``abs`` or
-        ``rel`` is negative or not finite.
+        If ``reason`` is empty, ``policy`` is not one of :data:`POLICIES`, ``abs``, ``rel``
+        or ``loose_abs`` is negative or not finite, or ``loose_abs`` is below ``abs``.
 
     Examples
     --------
@@ -235,16 +263,28 @@ class Tolerance:
     rel: float | None = None
     policy: str = ""
     quote: str = field(default="", compare=False)
+    loose_abs: float | None = None
 
     def __post_init__(self) -> None:
         if not self.reason or not self.reason.strip():
             raise ValueError("Tolerance.reason must say why the tolerance has its size")
         if self.policy and self.policy not in POLICIES:
             raise ValueError(f"Tolerance.policy must be one of {POLICIES}, got {self.policy!r}")
-        for name in ("abs", "rel"):
+        for name in ("abs", "rel", "loose_abs"):
             value = getattr(self, name)
             if value is not None and not (value >= 0 and math.isfinite(value)):
                 raise ValueError(f"Tolerance.{name} must be finite and >= 0, got {value!r}")
+        if self.loose_abs is not None and self.loose_abs < (self.abs or 0.0):
+            raise ValueError(f"Tolerance.loose_abs must be >= abs, got {self.loose_abs!r} < {self.abs!r}")
+
+    def loose(self) -> Tolerance | None:
+        """The tolerance under the reading that a whole number's trailing zeros are not
+        significant (``abs`` = :attr:`loose_abs`); ``None`` when there is no such reading."""
+        if self.loose_abs is None:
+            return None
+        return Tolerance(
+            reason=self.reason, abs=self.loose_abs, rel=self.rel, policy=self.policy, quote=self.quote
+        )
 
     @property
     def absolute(self) -> float:
@@ -266,17 +306,29 @@ class Tolerance:
         return max(a, r)
 
     def as_dict(self) -> dict[str, Any]:
-        """The tolerance as the ledger's JSON writes it: ``abs``, ``rel``, ``reason``, ``policy``."""
-        return {"abs": self.abs, "rel": self.rel, "reason": self.reason, "policy": self.policy}
+        """The tolerance as the ledger's JSON writes it: ``abs``, ``rel``, ``reason``, ``policy``,
+        and ``loose_abs`` (``null`` unless a whole number's trailing zeros leave a second reading)."""
+        return {
+            "abs": self.abs,
+            "rel": self.rel,
+            "reason": self.reason,
+            "policy": self.policy,
+            "loose_abs": self.loose_abs,
+        }
 
     def describe(self) -> str:
-        """The size in short: ``"±0.005"``, ``"±10 %"``, both joined by "or", or ``"exact"``."""
+        """The size in short: ``"±0.005"``, ``"±10 %"``, both joined by "or", or ``"exact"``; a
+        whole number's trailing zeros add the loose reading (``"±0.5 (±5 if trailing zeros are
+        not significant)"``)."""
         parts = []
         if self.abs is not None and (self.abs or self.rel is None):
             parts.append(f"±{self.abs:.4g}")
         if self.rel is not None:
             parts.append(f"±{100 * self.rel:.3g} %")
-        return " or ".join(parts) if parts and parts != ["±0"] else "exact"
+        text = " or ".join(parts) if parts and parts != ["±0"] else "exact"
+        if self.loose_abs is not None:
+            text += f" (±{self.loose_abs:.4g} if trailing zeros are not significant)"
+        return text
 
 
 EXACT = Tolerance(reason="exact: an integer count or a logical statement", abs=0.0, policy="exact")
@@ -312,6 +364,12 @@ def printed(text: str, *, extra_abs: float = 0.0, why: str = "") -> tuple[float,
     the paper's own rounding of intermediate values can explain (the text must show that
     rounding); ``why`` says so. Policy ``printed-digits``.
 
+    The trailing zeros of a whole number printed without a decimal point or an exponent
+    (``"2750"``, ``"20"``, ``"3300"``) are ambiguous: the tolerance carries both readings,
+    ``abs`` half a unit in the last digit (every digit significant) and ``loose_abs`` half a
+    unit in the last non-zero digit (the trailing zeros not significant), and the verdict
+    weighs them (module docstring, "Trailing zeros").
+
     Parameters
     ----------
     text : str
@@ -330,7 +388,8 @@ def printed(text: str, *, extra_abs: float = 0.0, why: str = "") -> tuple[float,
         The printed number.
     tolerance : Tolerance
         Policy ``printed-digits`` with ``abs`` half a unit in the last printed digit plus
-        ``extra_abs``.
+        ``extra_abs``; for a whole number with trailing zeros also ``loose_abs``, half a unit in
+        its last non-zero digit plus ``extra_abs``.
 
     Raises
     ------
@@ -344,6 +403,11 @@ def printed(text: str, *, extra_abs: float = 0.0, why: str = "") -> tuple[float,
     (17.67, 0.005, 'printed-digits')
     >>> printed("1.2e-3")[1].abs
     5e-05
+    >>> tol = printed("2750")[1]
+    >>> tol.abs, tol.loose_abs, tol.describe()
+    (0.5, 5.0, '±0.5 (±5 if trailing zeros are not significant)')
+    >>> printed("2751")[1].loose_abs is None, printed("20.0")[1].loose_abs is None
+    (True, True)
     """
     s = text.strip().replace("−", "-")
     m = re.fullmatch(r"([+-]?)(\d*)(?:\.(\d*))?(?:[eE]([+-]?\d+))?", s)
@@ -358,9 +422,26 @@ def printed(text: str, *, extra_abs: float = 0.0, why: str = "") -> tuple[float,
         reason += f", plus {extra_abs:g}" + (f" ({why})" if why else "")
     elif why:
         reason += f"; {why}"
+    loose_abs = None
+    zeros = _trailing_zeros(m.group(2)) if m.group(3) is None and m.group(4) is None else 0
+    if zeros:
+        loose_abs = round(0.5 * 10.0**zeros + extra_abs, 15)
+        zeros_are = "zeros are" if zeros > 1 else "zero is"
+        reason += f", or in its last non-zero digit if its trailing {zeros_are} not significant"
     return value, Tolerance(
-        reason=reason, abs=round(half + extra_abs, 15), policy="printed-digits", quote=text.strip()
+        reason=reason,
+        abs=round(half + extra_abs, 15),
+        policy="printed-digits",
+        quote=text.strip(),
+        loose_abs=loose_abs,
     )
+
+
+def _trailing_zeros(digits: str) -> int:
+    """How many trailing zeros a whole number's digits end with after a non-zero digit (0 for
+    ``"2751"`` and for ``"0"``)."""
+    stripped = digits.rstrip("0")
+    return len(digits) - len(stripped) if stripped.strip("0") else 0
 
 
 def prose(word: str, *, why: str = "") -> Tolerance:
@@ -1159,6 +1240,10 @@ class Evaluation:
         unit = "" if self.claim.unit in ("", "statement") else f" {self.claim.unit}"
         changed = []
         for name, label in reading["reading"].items():
+            if name == PRECISION_READING:
+                if label != PRECISION_STRICT:
+                    changed.append(f"the printed number's {label}")
+                continue
             quantity, in_unit = _label_and_unit(name)
             try:
                 inp = get_input(name)
@@ -1466,6 +1551,40 @@ def _outcome(claim: Claim, tol: Tolerance, value: Any, values: Sequence[Any]) ->
     return _Outcome(at_value, agrees, bool(values) and band_too_wide(claim, tol, lo, hi))
 
 
+#: The verdicts that agree with the printed value.
+_AGREEMENT = ("reproduced", "consistent")
+
+#: The key and the labels of the two readings of a whole number's trailing zeros in a claim's
+#: ``readings`` (module docstring, "Trailing zeros").
+PRECISION_READING = "printed precision"
+PRECISION_STRICT = "every printed digit significant"
+PRECISION_LOOSE = "trailing zeros not significant"
+
+
+def precision_status(loose_status: str) -> str:
+    """The verdict of a claim whose printed value disagrees when every printed digit is
+    significant, from its verdict when a whole number's trailing zeros are not
+    (module docstring, "Trailing zeros").
+
+    Parameters
+    ----------
+    loose_status : str
+        The verdict derived with the loose tolerance (:meth:`Tolerance.loose`).
+
+    Returns
+    -------
+    str
+        ``consistent`` when the loose reading agrees (``reproduced`` or ``consistent``): an
+        open reading of the printed precision, not a reproduction; else ``loose_status``.
+
+    Examples
+    --------
+    >>> precision_status("reproduced"), precision_status("discrepant")
+    ('consistent', 'discrepant')
+    """
+    return "consistent" if loose_status in _AGREEMENT else loose_status
+
+
 def derive_status(
     claim: Claim,
     tol: Tolerance,
@@ -1649,26 +1768,35 @@ def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
             inputs=inputs,
         )
     band = (min([value, *values]), max([value, *values])) if assumed else None
-    status = derive_status(
-        claim, tol, value, values, provenances, admissible, [(v, vs) for _, _, v, vs in others]
-    )
+    other_runs = [(v, vs) for _, _, v, vs in others]
+    status = derive_status(claim, tol, value, values, provenances, admissible, other_runs)
+    # a whole number's trailing zeros: the loose precision is weighed where the strict one does not agree
+    loose = tol.loose() if status not in _AGREEMENT else None
+    if loose is not None:
+        status = precision_status(
+            derive_status(claim, loose, value, values, provenances, admissible, other_runs)
+        )
     readings: list[dict[str, Any]] = []
-    if conventions:
+    if conventions or loose is not None:
         nominal_combo = tuple((inp, inp.nominal_label, inp.value) for inp in conventions)
-        for combo, v, vs, nominal in [(nominal_combo, value, values, True)] + [
-            (c, v, vs, False) for c, _, v, vs in others
-        ]:
-            o = first if nominal else _outcome(claim, tol, v, vs)
-            readings.append(
-                {
-                    "reading": {inp.name: label for inp, label, _ in combo},
-                    "nominal": nominal,
-                    "value": v,
-                    "band": (min([v, *vs]), max([v, *vs])) if vs else None,
-                    "agrees": o.agrees,
-                    "band_too_wide": o.too_wide,
-                }
-            )
+        runs = [(nominal_combo, value, values, True)] + [(c, v, vs, False) for c, _, v, vs in others]
+        precisions = [(None, tol)] if loose is None else [(PRECISION_STRICT, tol), (PRECISION_LOOSE, loose)]
+        for precision, t in precisions:
+            for combo, v, vs, nominal in runs:
+                o = first if nominal and t is tol else _outcome(claim, t, v, vs)
+                reading = {inp.name: label for inp, label, _ in combo}
+                if precision is not None:
+                    reading[PRECISION_READING] = precision
+                readings.append(
+                    {
+                        "reading": reading,
+                        "nominal": nominal and t is tol,
+                        "value": v,
+                        "band": (min([v, *vs]), max([v, *vs])) if vs else None,
+                        "agrees": o.agrees,
+                        "band_too_wide": o.too_wide,
+                    }
+                )
 
     common: dict[str, Any] = dict(
         status=status,

@@ -48,6 +48,7 @@ from __future__ import annotations
 import contextlib
 import contextvars
 import functools
+import inspect
 import math
 import sys
 from collections.abc import Callable, Iterator, Mapping, Sequence
@@ -735,9 +736,11 @@ def input_cache(fn: F) -> F:
     """Memoise ``fn`` keyed on its arguments and on the values of the inputs it read.
 
     The first call records the inputs ``fn`` reads; a later call with the same arguments
-    returns the stored result only if those inputs still have the same values (overrides
-    included), and replays the reads into the caller's recording. Use it instead of
-    ``functools.cache`` for anything that reads inputs.
+    (after binding them to ``fn``'s signature with its defaults, so ``f(1)``, ``f(x=1)`` and
+    ``f(1, flag=True)`` with ``flag=True`` its default are one call) returns the stored
+    result only if those inputs still have the same values (overrides included), and
+    replays the reads into the caller's recording. Use it instead of ``functools.cache`` for
+    anything that reads inputs.
 
     Parameters
     ----------
@@ -776,10 +779,16 @@ def input_cache(fn: F) -> F:
     (0.2, 2)
     """
     store: dict[Any, list[tuple[tuple[tuple[Input, Any], ...], Any]]] = {}
+    signature = inspect.signature(fn)
 
     @functools.wraps(fn)
     def wrapper(*args: Any, **kwargs: Any) -> Any:
-        key = (tuple(_hashable(a) for a in args), tuple(sorted((k, _hashable(v)) for k, v in kwargs.items())))
+        try:  # one key per call, however it spells its arguments: f("ins") is f("ins", True)
+            bound = signature.bind(*args, **kwargs)
+        except TypeError:
+            return fn(*args, **kwargs)  # let the function report the bad call
+        bound.apply_defaults()
+        key = tuple((k, _hashable(v)) for k, v in bound.arguments.items())
         outer = _RECORDER.get()
         _guard(getattr(fn, "__qualname__", "a cached computation"), outer is not None)
         for reads, result in store.get(key, ()):

@@ -7,12 +7,14 @@ every such module, so adding a section never means editing a shared list.
 
 from __future__ import annotations
 
+import ast
 import hashlib
 import importlib
 import json
 import math
 import os
 import pkgutil
+import time
 from functools import cache
 from pathlib import Path
 from typing import Any
@@ -22,12 +24,15 @@ from navcore.ledger.core import PAPERS, STATUSES, Claim, Erratum, Evaluation, ev
 __all__ = [
     "cache_dir",
     "claim",
+    "claim_dependencies",
     "claims",
     "counts",
     "errata",
     "erratum",
     "evaluate_claim",
+    "evaluate_in_parallel",
     "evaluations",
+    "ledger_tasks",
     "paper_modules",
     "validate_registry",
 ]
@@ -68,6 +73,10 @@ def _module_paper(name: str) -> str:
     return name.rsplit(".", 1)[-1].split("_", 1)[0].upper()
 
 
+#: The paper module that defines each loaded claim (claim id -> module name).
+_CLAIM_MODULE: dict[str, str] = {}
+
+
 @cache
 def _load(paper: str | None = None) -> tuple[tuple[Claim, ...], tuple[Erratum, ...]]:
     """Import the paper modules (only those of ``paper`` if given) and collect their lists.
@@ -81,6 +90,8 @@ def _load(paper: str | None = None) -> tuple[tuple[Claim, ...], tuple[Erratum, .
         if paper is not None and _module_paper(name) != paper:
             continue
         module = importlib.import_module(name)
+        for c in getattr(module, "CLAIMS", ()):
+            _CLAIM_MODULE[c.id] = name
         all_claims.extend(getattr(module, "CLAIMS", ()))
         all_errata.extend(getattr(module, "ERRATA", ()))
     if paper is not None:
@@ -328,22 +339,108 @@ def erratum(erratum_id: str) -> Erratum:
     raise ValueError(f"erratum_id {erratum_id!r} is not in the ledger")
 
 
-@cache
-def _source_key() -> str:
-    """Hash of navcore's sources and the numerical libraries' versions.
+_NAVCORE = Path(__file__).resolve().parents[1]
 
-    Every claim is a deterministic (seeded) function of these, so an evaluation stored under
-    this key can be reused until any of them changes.
+
+def _imported_navcore_modules(path: Path) -> set[str]:
+    """Names of the navcore modules a source file imports anywhere (top level or in a function)."""
+    names: set[str] = set()
+    for node in ast.walk(ast.parse(path.read_bytes())):
+        if isinstance(node, ast.Import):
+            names.update(a.name for a in node.names if a.name.startswith("navcore"))
+        elif isinstance(node, ast.ImportFrom) and node.module and node.module.startswith("navcore"):
+            names.add(node.module)
+            names.update(f"{node.module}.{a.name}" for a in node.names)  # a submodule imported by name
+    return names
+
+
+def _module_file(name: str) -> Path | None:
+    parts = name.split(".")[1:]
+    for candidate in (_NAVCORE.joinpath(*parts).with_suffix(".py"), _NAVCORE.joinpath(*parts, "__init__.py")):
+        if candidate.is_file():
+            return candidate
+    return None
+
+
+@cache
+def _module_dependencies(module: str) -> tuple[Path, ...]:
+    """The files a claim of ``module`` can execute or read: the navcore modules it imports,
+    directly or through other navcore modules, at any level (with each package's
+    ``__init__``), the ledger's own modules (which evaluate, but compute no model value, so
+    their own imports are not followed), and navcore's data files.
+
+    A claim's computation reaches navcore's code through these static imports; the modules
+    loaded by a computed name (the traceability registry's walk over every module) serve the
+    book's indexes, never a claim.
     """
+    seen: set[Path] = set(_NAVCORE.joinpath("ledger").glob("*.py"))  # the evaluation itself
+    todo = [module]
+    while todo:
+        name = todo.pop()
+        for prefix in [".".join(name.split(".")[:i]) for i in range(1, name.count(".") + 2)]:
+            path = _module_file(prefix)
+            if path is None or path in seen:
+                continue
+            seen.add(path)
+            todo.extend(_imported_navcore_modules(path))
+    seen.update(p for p in _NAVCORE.rglob("*") if p.is_file() and p.suffix in (".json", ".csv", ".txt"))
+    return tuple(sorted(seen))
+
+
+@cache
+def _file_digest(path: Path) -> str:
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+@cache
+def _libraries_key() -> str:
     import numpy
     import scipy
 
-    root = Path(__file__).resolve().parents[1]
-    h = hashlib.sha256(f"numpy {numpy.__version__} scipy {scipy.__version__}".encode())
-    for f in sorted(root.rglob("*.py")):
-        h.update(str(f.relative_to(root)).encode())
-        h.update(f.read_bytes())
-    return h.hexdigest()[:20]
+    return f"numpy {numpy.__version__} scipy {scipy.__version__}"
+
+
+def claim_dependencies(claim_id: str) -> tuple[str, ...]:
+    """The navcore files (and data files) whose contents key a claim's stored evaluation.
+
+    They are the files of the modules the claim's paper module imports, directly or through
+    other navcore modules (imports inside functions included), the ledger's modules and
+    navcore's data files; an evaluation can execute or read nothing else of navcore. The
+    on-disk cache stores this list with each evaluation, so a change to one model module
+    re-evaluates only the claims whose modules import it.
+
+    Parameters
+    ----------
+    claim_id : str
+        The claim's id, or one of its former ids.
+
+    Returns
+    -------
+    tuple of str
+        Paths relative to the ``navcore`` package, sorted.
+
+    Raises
+    ------
+    ValueError
+        If no claim has that id or alias.
+
+    Examples
+    --------
+    >>> deps = claim_dependencies(claims("KZL")[0].id)
+    >>> "ledger/core.py" in deps, "estimation/ekf_ins_gnss.py" in deps, "detection/roc.py" in deps
+    (True, True, False)
+    """
+    c = claim(claim_id)
+    return tuple(p.relative_to(_NAVCORE).as_posix() for p in _module_dependencies(_CLAIM_MODULE[c.id]))
+
+
+def _claim_key(claim_id: str) -> str:
+    """Hash of the contents of the claim's dependencies and of the numerical libraries' versions."""
+    h = hashlib.sha256(_libraries_key().encode())
+    for path in _module_dependencies(_CLAIM_MODULE[claim_id]):
+        h.update(path.relative_to(_NAVCORE).as_posix().encode())
+        h.update(_file_digest(path).encode())
+    return h.hexdigest()[:24]
 
 
 def cache_dir() -> Path | None:
@@ -351,8 +448,10 @@ def cache_dir() -> Path | None:
 
     ``NAVCORE_CACHE=off`` disables it (the test suite and the determinism check do);
     ``NAVCORE_CACHE=<folder>`` chooses its parent folder. By default it lives in
-    ``_build/navcore-cache`` of a source checkout, else in ``~/.cache/navcore``. The folder
-    is named by a hash of navcore's sources, so a change to any of them starts afresh.
+    ``_build/navcore-cache`` of a source checkout, else in ``~/.cache/navcore``. Each claim's
+    stored evaluation is keyed by the contents of the files it depends on
+    (:func:`claim_dependencies`) and the numerical libraries' versions, so a change to one
+    model module re-evaluates only the claims that import it.
 
     Returns
     -------
@@ -382,7 +481,7 @@ def cache_dir() -> Path | None:
             parent = checkout / "_build" / "navcore-cache"
         else:
             parent = Path.home() / ".cache" / "navcore"
-    return parent / _source_key()
+    return parent / "claims"
 
 
 def _to_json(value: Any) -> Any:
@@ -430,6 +529,8 @@ def _cached(claim_id: str) -> Evaluation | None:
         return None
     try:
         data = json.loads((folder / f"{claim_id}.json").read_text())
+        if data.get("key") != _claim_key(claim_id):
+            return None  # a file it depends on changed since it was stored
         c = claim(claim_id)
         from navcore.ledger.core import resolve_tolerance
 
@@ -445,6 +546,8 @@ def _store(ev: Evaluation) -> None:
     if folder is None:
         return
     data = {k: _to_json(getattr(ev, k)) for k in _RECORD_FIELDS}
+    data["key"] = _claim_key(ev.claim.id)
+    data["dependencies"] = list(claim_dependencies(ev.claim.id))
     try:
         folder.mkdir(parents=True, exist_ok=True)
         tmp = folder / f".{ev.claim.id}.{os.getpid()}.tmp"
@@ -454,14 +557,19 @@ def _store(ev: Evaluation) -> None:
         pass  # a read-only location only costs speed
 
 
+#: Evaluations made (or read from disk) in this process, by claim id.
+_MEMO: dict[str, Evaluation] = {}
+
+
 def evaluate_claim(claim_id: str) -> Evaluation:
     """Evaluate one claim (memoised in the process and, unless disabled, on disk).
 
     ``claim_id`` may be a former id of the claim (one of its ``aliases``); the evaluation
     is the claim's under its current id. The on-disk cache (:func:`cache_dir`) is keyed by
-    a hash of navcore's sources, so a stored evaluation is exactly what a fresh evaluation
-    would give. A first evaluation runs the claim's model (and its band): from a moment for
-    arithmetic to minutes for a Monte Carlo claim.
+    the contents of the files the claim depends on (:func:`claim_dependencies`), so a stored
+    evaluation is exactly what a fresh evaluation would give. A first evaluation runs the
+    claim's model (and its band): from a moment for arithmetic to seconds for a Monte Carlo
+    claim.
 
     Parameters
     ----------
@@ -489,27 +597,140 @@ def evaluate_claim(claim_id: str) -> Evaluation:
     ...
     ValueError: claim_id 'KZL-no-such-claim' is not in the ledger
     """
-    return _evaluate_claim(claim(claim_id).id)
+    cid = claim(claim_id).id
+    if cid not in _MEMO:
+        hit = _cached(cid)
+        if hit is None:
+            hit = evaluate(claim(cid))
+            _store(hit)
+        _MEMO[cid] = hit
+    return _MEMO[cid]
 
 
-@cache
-def _evaluate_claim(claim_id: str) -> Evaluation:
-    hit = _cached(claim_id)
-    if hit is not None:
-        return hit
-    ev = evaluate(claim(claim_id))
-    _store(ev)
-    return ev
+evaluate_claim.cache_clear = _MEMO.clear  # type: ignore[attr-defined]
 
 
-evaluate_claim.cache_clear = _evaluate_claim.cache_clear  # type: ignore[attr-defined]
+def _group_records(claim_ids: tuple[str, ...]) -> list[tuple[str, dict[str, Any], float]]:
+    """Evaluate claims one after another in this process (a worker's task): their fields and seconds.
+
+    The claims of one task share this process's memoised model runs (``input_cache``).
+    """
+    out = []
+    for cid in claim_ids:
+        start = time.perf_counter()
+        ev = evaluate_claim(cid)
+        out.append((cid, {k: getattr(ev, k) for k in _RECORD_FIELDS}, time.perf_counter() - start))
+    return out
 
 
-def evaluations(paper: str | None = None, prefix: str | None = None) -> list[Evaluation]:
+#: Seconds each paper module's claims took to evaluate, on the reference machine (2 cores):
+#: only the order in which the parallel ledger hands out its tasks (longest first) uses them.
+#: ``python -m navcore ledger --jobs 1 --times`` prints the current ones.
+_MODULE_SECONDS = {
+    "navcore.papers.kzl_simulation": 40.0,
+    "navcore.papers.sp_missions": 18.0,
+    "navcore.papers.atc10_coverage_jamming": 9.5,
+    "navcore.papers.sp_antijam": 5.7,
+    "navcore.papers.atc10_coverage_tracking": 5.0,
+    "navcore.papers.atc10_multiple_access": 4.9,
+    "navcore.papers.sp_coverage": 4.2,
+    "navcore.papers.atc10_jamming": 1.4,
+    "navcore.papers.wf": 1.0,
+    "navcore.papers.atc10_coverage_ma": 1.0,
+    "navcore.papers.sp_tracking": 0.5,
+}
+
+
+def ledger_tasks(claim_ids: list[str]) -> list[tuple[str, ...]]:
+    """Split claims into the parallel ledger's tasks: one per paper module, longest first.
+
+    The claims of a paper module read the same model runs (one flyby, one Monte Carlo, one
+    mission), so they run in one process, which computes each shared run once.
+
+    Parameters
+    ----------
+    claim_ids : list of str
+        Current claim ids.
+
+    Returns
+    -------
+    list of tuple of str
+        The claim ids of each task, in registry order within a task; tasks ordered by the
+        modules' usual evaluation time, longest first.
+
+    Examples
+    --------
+    >>> ids = [c.id for c in claims("KZL")]
+    >>> tasks = ledger_tasks(ids)
+    >>> sorted(i for t in tasks for i in t) == sorted(ids)
+    True
+    """
+    groups: dict[str, list[str]] = {}
+    for cid in claim_ids:
+        groups.setdefault(_CLAIM_MODULE[claim(cid).id], []).append(cid)
+    order = sorted(groups, key=lambda m: -_MODULE_SECONDS.get(m, 0.1))
+    return [tuple(groups[m]) for m in order]
+
+
+def evaluate_in_parallel(claim_ids: list[str], n_jobs: int | None = -1) -> dict[str, float]:
+    """Evaluate claims across worker processes and keep the evaluations in this process.
+
+    The claims that are neither memoised nor on disk go to :func:`navcore.parallel.run_tasks`
+    in the tasks of :func:`ledger_tasks`; each evaluation is the one a serial run gives, bit
+    for bit (the workers run the same :func:`~navcore.ledger.core.evaluate`, and the fields
+    come back pickled). Later calls of :func:`evaluate_claim` return them.
+
+    Parameters
+    ----------
+    claim_ids : list of str
+        Claim ids (current or former).
+    n_jobs : int or None, optional
+        Workers, as :func:`navcore.parallel.run_tasks` takes them (default every core).
+
+    Returns
+    -------
+    dict of str to float
+        Seconds each evaluated claim took in its worker (claims already known: absent).
+
+    Examples
+    --------
+    >>> evaluate_in_parallel([], n_jobs=2)
+    {}
+    """
+    from navcore.parallel import run_tasks
+
+    todo = []
+    for cid in dict.fromkeys(claim(i).id for i in claim_ids):
+        if cid in _MEMO:
+            continue
+        hit = _cached(cid)
+        if hit is not None:
+            _MEMO[cid] = hit
+        else:
+            todo.append(cid)
+    seconds: dict[str, float] = {}
+    if not todo:
+        return seconds
+    from navcore.ledger.core import resolve_tolerance
+
+    for records in run_tasks(_group_records, [(t,) for t in ledger_tasks(todo)], n_jobs=n_jobs):
+        for cid, fields, elapsed in records:
+            c = claim(cid)
+            fields = {k: v for k, v in fields.items() if k != "inputs"} | {"inputs": fields["inputs"]}
+            _MEMO[cid] = Evaluation(c, **fields, tolerance=resolve_tolerance(c))  # the worker stored it
+            seconds[cid] = elapsed
+    return seconds
+
+
+def evaluations(
+    paper: str | None = None, prefix: str | None = None, *, n_jobs: int | None = None
+) -> list[Evaluation]:
     """Evaluate every claim selected by ``paper`` and ``prefix``.
 
     Each claim goes through :func:`evaluate_claim` (memoised in the process and on disk), so
-    the first call for a paper runs all its models: seconds to minutes.
+    the first call for a paper runs all its models: seconds to minutes. With ``n_jobs`` the
+    claims not yet known are evaluated in worker processes first
+    (:func:`evaluate_in_parallel`); the evaluations are the same, bit for bit.
 
     Parameters
     ----------
@@ -517,6 +738,9 @@ def evaluations(paper: str | None = None, prefix: str | None = None) -> list[Eva
         Paper key, one of :data:`~navcore.ledger.core.PAPERS`; ``None`` for every paper.
     prefix : str or None, optional
         Keep only the claims whose id starts with it.
+    n_jobs : int or None, optional
+        ``None`` (default): evaluate in this process; ``-1`` on every core, ``k`` on ``k``
+        workers (:func:`navcore.parallel.run_tasks`).
 
     Returns
     -------
@@ -535,7 +759,10 @@ def evaluations(paper: str | None = None, prefix: str | None = None) -> list[Eva
     >>> evaluations(paper="KZL", prefix="KZL-no-such-claim")
     []
     """
-    return [evaluate_claim(c.id) for c in claims(paper, prefix)]
+    selected = claims(paper, prefix)
+    if n_jobs not in (None, 0, 1):
+        evaluate_in_parallel([c.id for c in selected], n_jobs)
+    return [evaluate_claim(c.id) for c in selected]
 
 
 def counts(paper: str | None = None) -> dict[str, dict[str, int]]:

@@ -6,9 +6,11 @@ coordinates are then in error by (SP Sec. 2.6.4)
 
 .. math::
 
-    \delta r_{tgt} = \delta r_v + \delta\alpha\times r,\qquad
+    \begin{gathered}
+    \delta r_{tgt} = \delta r_v + \delta\alpha\times r,\\
     \langle\delta r_{tgt}\delta r_{tgt}^T\rangle = P_r + [r\times] P_\alpha [r\times]^T
     \quad(\text{uncorrelated } \delta r_v, \delta\alpha).
+    \end{gathered}
 
 References
 ----------

@@ -602,7 +602,7 @@ CLAIMS = [
         unit="m",
         compute=lambda: noise_only_error_m(10.0, 19.0),
         tolerance=printed("2750")[1],
-        expected_status="inconsistent",
+        expected_status="consistent",
         note="Same hypothesis as SP-sec2.6.1-84min-10nmi-noise-only (random walks only, free "
         "inertial at the assumed grade latitude, band 30-60 deg); the full mission run of the page "
         "(with residual calibration errors) is larger. The book's value is about 1.7 m (0.06 %) "

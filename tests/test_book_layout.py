@@ -1,0 +1,160 @@
+"""The layout gate's bookkeeping and the book's Sphinx extensions for the API reference and the PDF.
+
+The Chromium measurement itself runs in ``nox -s book``; here it is replaced by fixed
+measurements, so that what the gate does with them (the allowlist, which only shrinks) is
+checked on any machine. The extensions are run on small doctrees built here.
+"""
+
+from __future__ import annotations
+
+import enum
+import importlib.util
+import json
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+
+import pytest
+from docutils import nodes
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def _load(path: Path, name: str):
+    spec = importlib.util.spec_from_file_location(name, path)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[name] = module
+    spec.loader.exec_module(module)
+    return module
+
+
+@pytest.fixture
+def layout(monkeypatch, tmp_path):
+    module = _load(ROOT / "tools" / "check_layout.py", "check_layout")
+    allow = tmp_path / "allow.json"
+    monkeypatch.setattr(module, "ALLOWLIST", allow)
+    return module, allow
+
+
+def _item(name: str) -> tuple[str, dict]:
+    return name, {"name": name, "scroll": 500, "client": 388, "text": "x"}
+
+
+def test_layout_gate_fails_on_an_overflow_not_in_the_allowlist(layout, monkeypatch):
+    module, allow = layout
+    allow.write_text(json.dumps({"420": {"math": {"a.html#eq-1": "a 17-column matrix"}}}))
+    found = {
+        1400: {"math": [], "table": []},
+        420: {"math": [_item("a.html#eq-1"), _item("b.html#eq-2")], "table": []},
+    }
+    monkeypatch.setattr(module, "measure", lambda root, widths: found)
+    problems = module.check(Path("."), (1400, 420))
+    assert len(problems) == 1 and "b.html#eq-2" in problems[0]
+
+
+def test_layout_gate_fails_on_an_allowlist_entry_that_no_longer_overflows(layout, monkeypatch):
+    module, allow = layout
+    allow.write_text(json.dumps({"420": {"table": {"c.html#T_1": "nine columns of numbers"}}}))
+    found = {420: {"math": [], "table": []}}
+    monkeypatch.setattr(module, "measure", lambda root, widths: found)
+    problems = module.check(Path("."), (420,))
+    assert problems == ["420 px: table c.html#T_1 is in the allowlist but no longer overflows: remove it"]
+
+
+def test_layout_gate_skips_pages_that_only_redirect(layout, tmp_path):
+    module, _ = layout
+    (tmp_path / "index.html").write_text('<meta http-equiv="Refresh" content="0; url=intro.html" />')
+    (tmp_path / "intro.html").write_text("<p>text</p>")
+    (tmp_path / "_static").mkdir()
+    (tmp_path / "_static" / "x.html").write_text("<p>asset</p>")
+    assert [p.name for p in module.pages(tmp_path)] == ["intro.html"]
+
+
+def test_the_committed_allowlist_gives_a_reason_for_every_entry():
+    allow = json.loads((ROOT / "tools" / "layout_allowlist.json").read_text(encoding="utf-8"))
+    for width, kinds in allow.items():
+        if width.startswith("_"):
+            continue
+        for kind, entries in kinds.items():
+            assert kind in ("math", "table")
+            for name, reason in entries.items():
+                assert "#" in name and len(reason.split()) >= 4, (width, kind, name)
+
+
+# --- API reference: a class's fields documented once ---------------------------------------
+
+
+def test_class_data_attributes_are_skipped_but_methods_and_enum_members_stay():
+    ext = _load(ROOT / "book" / "_ext" / "api_reference.py", "api_reference")
+
+    @dataclass(frozen=True)
+    class Result:
+        t: float
+        n: int = 3
+
+        def rms(self) -> float:
+            return self.t
+
+    class Kind(enum.Enum):
+        A = "a"
+
+    skip = ext._skip_class_data
+    assert skip(None, "class", "n", Result.n, False, {}) is True
+    assert skip(None, "class", "rms", Result.rms, False, {}) is None
+    assert skip(None, "class", "A", Kind.A, False, {}) is None
+    assert skip(None, "module", "CONSTANT", 3, False, {}) is None  # module data stays
+
+
+# --- PDF: citations where they stand ----------------------------------------------------------
+
+
+def test_runs_of_citations_become_reference_lists_in_place():
+    ext = _load(ROOT / "book" / "_ext" / "pdf_layout.py", "pdf_layout")
+    from sphinx.builders.latex.nodes import thebibliography
+
+    doc = nodes.document(None, None)
+    section = nodes.section()
+    section += nodes.paragraph(text="before")
+    for label in ("1", "2"):
+        citation = nodes.citation(ids=[f"c{label}"], docname="reference/x")
+        citation += nodes.label(text=label)
+        citation += nodes.paragraph(text=f"reference {label}")
+        section += citation
+    section += nodes.paragraph(text="after")
+    doc += section
+    transform = ext.CitationsInPlace.__new__(ext.CitationsInPlace)
+    transform.document = doc
+    transform.run()
+    kinds = [type(child).__name__ for child in section.children]
+    assert kinds == ["paragraph", "thebibliography", "paragraph"]
+    listing = section[1]
+    assert isinstance(listing, thebibliography)
+    assert [c["ids"] for c in listing.children] == [["c1"], ["c2"]]
+    assert not list(doc.findall(nodes.citation))  # nothing left for Sphinx to move to the end
+
+
+def test_a_reference_to_a_class_field_links_to_the_class():
+    from types import SimpleNamespace
+
+    ext = _load(ROOT / "book" / "_ext" / "api_reference.py", "api_reference")
+    entry = SimpleNamespace(
+        objtype="class", docname="reference/estimation", node_id="navcore.estimation.kalman.KalmanUpdate"
+    )
+    env = SimpleNamespace(get_domain=lambda name: SimpleNamespace(objects={entry.node_id: entry}))
+    made = []
+    ext.make_refnode = lambda builder, fromdoc, todoc, target, child, title: (
+        made.append((todoc, target)) or child
+    )
+    node = {
+        "refdomain": "py",
+        "reftype": "attr",
+        "reftarget": "innovation",
+        "refdoc": "x",
+        "py:module": "navcore.estimation.kalman",
+        "py:class": "KalmanUpdate",
+    }
+    app = SimpleNamespace(builder=None)
+    assert ext._field_reference(app, env, node, nodes.literal()) is not None
+    assert made == [("reference/estimation", "navcore.estimation.kalman.KalmanUpdate")]
+    node["reftarget"] = "not_a_field"
+    assert ext._field_reference(app, env, node, nodes.literal()) is None
