@@ -19,8 +19,8 @@ def _load(path: Path, name: str):
     return module
 
 
-paper_equations = _load(ROOT / "book" / "_ext" / "paper_equations.py", "paper_equations")
-check_links = _load(ROOT / "tools" / "check_links.py", "check_links")
+paper_equations = _load(ROOT / "book" / "_ext" / "paper_equations.py", "book._ext.paper_equations")
+check_links = _load(ROOT / "tools" / "check_links.py", "tools.check_links")
 
 
 @pytest.mark.parametrize(
@@ -103,8 +103,8 @@ def test_pandas_table_has_a_markdown_twin_for_the_pdf():
     assert "<table" in book.table(df)._repr_html_()
 
 
-book_presentation = _load(ROOT / "book" / "_ext" / "book_presentation.py", "book_presentation")
-check_book = _load(ROOT / "tools" / "check_book.py", "check_book")
+book_presentation = _load(ROOT / "book" / "_ext" / "book_presentation.py", "book._ext.book_presentation")
+check_book = _load(ROOT / "tools" / "check_book.py", "tools.check_book")
 
 
 def test_build_helpers_are_stripped_from_displayed_cells():
@@ -325,7 +325,7 @@ def test_printed_chunks_are_merged_exactly():
     """Oracle: the text as printed, whatever the chunking of the kernel's stream messages."""
     import nbformat
 
-    build_book = _load(ROOT / "tools" / "build_book.py", "build_book_merge")
+    build_book = _load(ROOT / "tools" / "build_book.py", "tools.build_book")
     chunks = ["Example beta:", " [0.07 0.06]\n", " K  gain\n", "\n", "   1   18\n"]
     nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell("print()")])
     nb.cells[0].outputs = [nbformat.v4.new_output("stream", name="stdout", text=c) for c in chunks]
@@ -407,7 +407,7 @@ def test_api_links_with_words_read_in_text_font():
     assert [r.astext() for r in refs] == ["the federated fusion", "federated_fuse"]
 
 
-build_tool = _load(ROOT / "tools" / "build_book.py", "build_book_tools")
+build_tool = _load(ROOT / "tools" / "build_book.py", "tools.build_book")
 
 
 def test_the_build_log_keeps_warnings_and_drops_jupyter_books_banners(capsys):

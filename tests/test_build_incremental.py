@@ -20,7 +20,7 @@ from pathlib import Path
 import pytest
 from _toybook import ROOT, make_book
 
-spec = importlib.util.spec_from_file_location("build_book_incremental", ROOT / "tools" / "build_book.py")
+spec = importlib.util.spec_from_file_location("tools.build_book", ROOT / "tools" / "build_book.py")
 build_book = importlib.util.module_from_spec(spec)
 spec.loader.exec_module(build_book)
 

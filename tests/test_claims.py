@@ -9,6 +9,8 @@ with its note as the reason.
 
 from __future__ import annotations
 
+import dataclasses
+
 import pytest
 
 from navcore import ledger
@@ -35,8 +37,19 @@ def test_claim(claim_id: str) -> None:
     assert result.passes, (
         f"{claim_id} ({result.claim.locator}, {result.claim.quantity}): {result.detail}; "
         f"published {result.claim.relation} {result.claim.published} {result.claim.unit}, "
-        f"reproduced {result.reproduced!r}, tolerance {result.claim.tolerance.describe()}"
+        f"reproduced {result.reproduced!r}, tolerance {_tolerance_text(result)}"
     )
+
+
+def _tolerance_text(result: ledger.Evaluation) -> str:
+    """The tolerance in short, as the ledger resolved it (a callable tolerance included).
+
+    ``result.tolerance`` is what the ledger resolved before computing; when resolving failed
+    (status ``error``) it is ``None`` and the claim's own tolerance is described if it is a
+    :class:`~navcore.ledger.Tolerance`, else said to be unresolved.
+    """
+    tol = result.tolerance if result.tolerance is not None else result.claim.tolerance
+    return tol.describe() if isinstance(tol, ledger.Tolerance) else "not resolved (see the detail)"
 
 
 def test_registry_is_consistent() -> None:
@@ -61,3 +74,20 @@ def test_paper_modules_hold_claims_and_errata_of_the_right_type() -> None:
         module = importlib.import_module(name)
         assert all(isinstance(c, Claim) for c in getattr(module, "CLAIMS", [])), name
         assert all(isinstance(e, Erratum) for e in getattr(module, "ERRATA", [])), name
+
+
+def test_failure_message_describes_a_callable_tolerance() -> None:
+    """Issue 31, item 6: a claim whose tolerance is a callable (resolved by the ledger before
+    computing) must get a failure message, not an AttributeError that hides its verdict.
+    Oracle: the tolerance written out by hand (half a unit of "12.5" is ±0.05)."""
+    value, tol = ledger.printed("12.5")
+    claim = ledger.Claim(
+        id="SP-test-callable-tolerance", paper="SP", locator="Eq. (1)", quantity="q",
+        published=value, unit="m", compute=lambda: 13.0, tolerance=lambda: tol,
+        expected_status="reproduced", note="a synthetic claim whose tolerance is a callable",
+    )  # fmt: skip
+    result = ledger.evaluate(claim)
+    assert not result.passes and result.status == "discrepant"
+    assert _tolerance_text(result) == "±0.05"
+    broken = ledger.evaluate(dataclasses.replace(claim, tolerance=lambda: 1.0))
+    assert broken.status == "error" and _tolerance_text(broken) == "not resolved (see the detail)"

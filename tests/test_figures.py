@@ -1,4 +1,5 @@
-"""Every registered figure renders, has labelled axes, and is written deterministically."""
+"""Every registered figure renders, has labelled axes, plots the right data, and is written
+deterministically. The data checks (and their oracles) are in ``_figure_oracles.py``."""
 
 from __future__ import annotations
 
@@ -6,6 +7,7 @@ import hashlib
 
 import matplotlib.pyplot as plt
 import pytest
+from _figure_oracles import CHECKS, scaled
 
 from navcore import figures
 
@@ -27,6 +29,12 @@ def test_figure_renders_with_labels(fig_id, tmp_path):
                 assert labelled, f"{fig_id}: an axis without labels"
         paths = figures.write(fig, tmp_path / fig_id)
         assert all(p.stat().st_size > 0 for p in paths)
+        # the data it plots, against the model and an oracle; the same check must fail on the
+        # data scaled by 1/57 (a check that cannot fail checks nothing)
+        data = figures.plotted(fig)
+        CHECKS[fig_id](data)
+        with pytest.raises(AssertionError):
+            CHECKS[fig_id](scaled(data, 1 / 57))
     finally:
         plt.close(fig)
 

@@ -12,7 +12,7 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 EXT = ROOT / "book" / "_ext"
 
-spec = importlib.util.spec_from_file_location("glossary_links", EXT / "glossary_links.py")
+spec = importlib.util.spec_from_file_location("book._ext.glossary_links", EXT / "glossary_links.py")
 glossary_links = importlib.util.module_from_spec(spec)
 sys.modules["glossary_links"] = glossary_links
 spec.loader.exec_module(glossary_links)

@@ -1,11 +1,19 @@
-"""Mutation testing of the model packages with mutmut, one package at a time.
+"""Mutation testing with mutmut, one package at a time: the models, the ledger, the tools.
 
 Usage: ``python tools/mutation.py [PACKAGE ...] [--budget-min M] [--max-children N] [--out PATH]``
 (``nox -s mutation -- gnss`` runs it in the locked environment). PACKAGE is one of
 :data:`PACKAGES` (default: all of them).
 
+The packages (:data:`PACKAGES`): the model packages (estimation, inertial, gnss, detection,
+location, frames), the ledger engine (``ledger``), ``units`` (``navcore/units.py`` and the
+validation layer ``navcore/_validate.py``), ``figures``, the paper modules' functions
+(``papers``: the claims are their tests), ``tools`` (``tools/*.py``) and the book's Sphinx
+extensions (``book_ext``). Each is run with the tests that exercise it, never the whole
+suite.
+
 For each package a scratch project is laid out in ``_build/mutation/<package>/``: a copy of
-``navcore/`` and ``tests/`` and a ``pyproject.toml`` holding the repository's pytest options
+``navcore/`` and ``tests/`` (and of ``tools/``, ``book/_ext`` or the book's pages where the
+package needs them) and a ``pyproject.toml`` holding the repository's pytest options
 and a ``[tool.mutmut]`` section that mutates only that package and selects only the test
 files that exercise it (:data:`PACKAGES`; mutmut then narrows them per function, running for
 each mutant only the tests that called the mutated function in its first, clean run). Each
@@ -42,16 +50,66 @@ import subprocess
 import sys
 import time
 import tomllib
+from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 ROOT = Path(__file__).resolve().parents[1]
 WORK = ROOT / "_build" / "mutation"
 
-#: Package -> (files to mutate, test files that exercise it). Paper-level tests (the ledger,
-#: the book, the long Monte Carlos of navcore.papers) are left out: they take minutes and
-#: test the packages only through the papers' scenarios.
-PACKAGES: dict[str, tuple[list[str], list[str]]] = {
-    "estimation": (
+
+@dataclass(frozen=True)
+class Package:
+    """What one mutation run mutates and which tests it runs.
+
+    Attributes
+    ----------
+    mutate : list of str
+        Globs of the files to mutate (mutmut's ``only_mutate``), relative to the repository.
+    tests : list of str
+        The test files that exercise them (under ``tests/``).
+    deselect : str
+        Tests of those files left out, as a pytest ``-k`` expression of what to leave out
+        (``"a or b"`` runs ``-k "not (a or b)"``): tests that evaluate the whole ledger or
+        build a book and check nothing of the package that a faster test does not.
+    sources : tuple of str
+        Folders copied into the scratch project as mutmut's ``source_paths``. Tools and book
+        extensions are loaded by the tests from their files under their dotted names
+        (``tools.check_book``), the names mutmut's trampolines recognise.
+    copy : tuple of str
+        Further folders the tests read (the book's pages), copied as they are; ``tools`` always is,
+        unmutated unless it is among ``sources``.
+    not_mutated : list of str or None
+        Lines not mutated (regular expressions); ``None`` for :data:`NOT_MUTATED`.
+    """
+
+    mutate: list[str]
+    tests: list[str]
+    deselect: str = ""
+    sources: tuple[str, ...] = ("navcore",)
+    copy: tuple[str, ...] = ()
+    not_mutated: list[str] | None = None
+
+
+#: Lines not mutated (regular expressions): input validation, whose mutants only change an
+#: error message's text or drop a check that ``tests/*::test_bad_input*`` exercise by name,
+#: and which another issue is reworking across the library. Model code is all mutated; the
+#: ``units`` run mutates the validation layer itself, every line.
+NOT_MUTATED = [
+    r"^\s*raise (ValueError|TypeError)\(",
+    r"^\s*require_\w+\(",
+    r"^\s*f?\"[^\"]*\"\)?,?$",
+    r"^\s*\w+ = (as_finite_array|require_\w+|_\w+)\(\"\w+\", \w+\)$",
+]
+
+#: Package -> what it mutates and the tests that exercise it. Paper-level tests (the whole
+#: ledger, the book builds, the long Monte Carlos) are left out of the model packages: they
+#: take minutes and test the packages only through the papers' scenarios. For ``papers`` the
+#: claims are the tests (each compares a paper module's function with the printed number):
+#: mutmut runs, for each mutant, only the claims whose computation reached the mutated
+#: function, so no mutant evaluates the whole ledger (the first, clean run does, once).
+PACKAGES: dict[str, Package] = {
+    "estimation": Package(
         ["navcore/estimation/*"],
         [
             "test_estimation.py",
@@ -65,7 +123,7 @@ PACKAGES: dict[str, tuple[list[str], list[str]]] = {
             "test_error_dynamics.py",
         ],
     ),
-    "inertial": (
+    "inertial": Package(
         ["navcore/inertial/*"],
         [
             "test_strapdown.py",
@@ -78,7 +136,7 @@ PACKAGES: dict[str, tuple[list[str], list[str]]] = {
             "test_ekf_ins_gnss.py",
         ],
     ),
-    "gnss": (
+    "gnss": Package(
         ["navcore/gnss/*"],
         [
             "test_acquisition.py",
@@ -92,7 +150,7 @@ PACKAGES: dict[str, tuple[list[str], list[str]]] = {
             "test_carrier_phase_geometry.py",
         ],
     ),
-    "detection": (
+    "detection": Package(
         ["navcore/detection/*"],
         [
             "test_antenna.py",
@@ -103,7 +161,7 @@ PACKAGES: dict[str, tuple[list[str], list[str]]] = {
             "test_zakai.py",
         ],
     ),
-    "location": (
+    "location": Package(
         ["navcore/location/*"],
         [
             "test_clock_model.py",
@@ -113,18 +171,59 @@ PACKAGES: dict[str, tuple[list[str], list[str]]] = {
             "test_sp_target_location.py",
         ],
     ),
-    "frames": (["navcore/frames.py"], ["test_frames.py", "test_strapdown.py", "test_error_model17.py"]),
+    "frames": Package(
+        ["navcore/frames.py"], ["test_frames.py", "test_strapdown.py", "test_error_model17.py"]
+    ),
+    # the ledger engine on synthetic claims (one test evaluates a single registry claim: the
+    # evaluation cache's round trip)
+    "ledger": Package(
+        ["navcore/ledger/*"],
+        [
+            "test_ledger.py",
+            "test_ledger_inputs.py",
+            "test_ledger_readings.py",
+            "test_ledger_mechanisms.py",
+            "test_ledger_printed.py",
+            "test_render_claims.py",
+            "test_errata_kinds.py",
+        ],
+        deselect="each_published_input_moves or every_tolerance_has_a_policy or no_old_id_left",
+    ),
+    "units": Package(
+        ["navcore/units.py", "navcore/_validate.py"], ["test_units.py", "test_api_inputs.py"], not_mutated=[]
+    ),
+    "figures": Package(["navcore/figures/*"], ["test_figures.py", "test_figure_data.py"]),
+    "papers": Package(
+        ["navcore/papers/*"],
+        [
+            "test_atc10_jamming.py",
+            "test_atc10_jamming_mc.py",
+            "test_atc10_multiple_access.py",
+            "test_atc10_tracking.py",
+            "test_kzl_covariance.py",
+            "test_sp_architectures.py",
+            "test_sp_missions.py",
+            "test_sp_target_location.py",
+            "test_jammer_flyby.py",
+            "test_wf_assessment.py",
+            "test_glued_values.py",
+            "test_claims.py",
+        ],
+        copy=("book",),
+    ),
+    "tools": Package(
+        ["tools/*"],
+        ["test_book_tools.py", "test_book_tools_edges.py", "test_mutation_tool.py"],
+        sources=("navcore", "tools"),
+        deselect="errata_and_ledger_links or interactive_ledger_filters",
+    ),
+    "book_ext": Package(
+        ["book/_ext/*"],
+        ["test_book_tools.py", "test_book_tools_edges.py", "test_glossary_links.py"],
+        sources=("navcore", "book/_ext"),
+        deselect="errata_and_ledger_links or interactive_ledger_filters",
+    ),
 }
-
-#: Lines not mutated (regular expressions): input validation, whose mutants only change an
-#: error message's text or drop a check that ``tests/*::test_bad_input*`` exercise by name,
-#: and which another issue is reworking across the library. Model code is all mutated.
-NOT_MUTATED = [
-    r"^\s*raise (ValueError|TypeError)\(",
-    r"^\s*require_\w+\(",
-    r"^\s*f?\"[^\"]*\"\)?,?$",
-    r"^\s*\w+ = (as_finite_array|require_\w+|_\w+)\(\"\w+\", \w+\)$",
-]
 
 #: mutmut's exit-code classes (mutmut.stats.status_by_exit_code), grouped for the score.
 KILLED = {"killed", "timeout", "segfault", "caught by type check"}
@@ -133,30 +232,37 @@ SURVIVED = {"survived", "no tests"}
 
 def scratch_project(package: str, keep: bool = False) -> Path:
     """Lay out (or refresh) ``_build/mutation/<package>`` for one package."""
-    only, tests = PACKAGES[package]
+    spec = PACKAGES[package]
     work = WORK / package
     work.mkdir(parents=True, exist_ok=True)
     if not keep and (work / "mutants").exists():
         # mutmut keys its cached verdicts on the mutated source, not on the tests: a survivor
         # stays a survivor after a new test unless the cache goes
         shutil.rmtree(work / "mutants")
-    for folder in ("navcore", "tests"):
+    for folder in dict.fromkeys(("navcore", "tests", "tools", *spec.sources, *spec.copy)):
         if (work / folder).exists():
             shutil.rmtree(work / folder)
-        shutil.copytree(ROOT / folder, work / folder, ignore=shutil.ignore_patterns("__pycache__"))
+        shutil.copytree(ROOT / folder, work / folder, ignore=shutil.ignore_patterns("__pycache__", "_build"))
     pytest_options = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["pytest"]["ini_options"]
     pytest_options = {k: v for k, v in pytest_options.items() if k not in ("testpaths", "addopts")}
+    selection = ["tests/" + t for t in spec.tests]
+    if spec.deselect:
+        selection += ["-k", f"not ({spec.deselect})"]
+    not_mutated = NOT_MUTATED if spec.not_mutated is None else spec.not_mutated
+    # the tools are read by some tests of every package (unmutated, unless they are the package)
+    also_copy = [f for f in dict.fromkeys(("tools", *spec.copy)) if f not in spec.sources]
     lines = ["[tool.pytest.ini_options]"]
     lines += [f"{k} = {json.dumps(v)}" for k, v in pytest_options.items()]
     lines += [
         'addopts = "-p no:cacheprovider"',
         "",
         "[tool.mutmut]",
-        'source_paths = ["navcore"]',
-        f"only_mutate = {json.dumps(only)}",
-        f"pytest_add_cli_args_test_selection = {json.dumps(['tests/' + t for t in tests])}",
+        f"source_paths = {json.dumps(list(spec.sources))}",
+        f"also_copy = {json.dumps(also_copy)}",
+        f"only_mutate = {json.dumps(spec.mutate)}",
+        f"pytest_add_cli_args_test_selection = {json.dumps(selection)}",
         'pytest_add_cli_args = ["-x", "-q"]',
-        f"do_not_mutate_patterns = {json.dumps(NOT_MUTATED)}",
+        f"do_not_mutate_patterns = {json.dumps(not_mutated)}",
         "use_git_change_detection = false",
         "timeout_multiplier = 5.0",
         "timeout_constant = 10.0",
@@ -199,7 +305,7 @@ def count_results(work: Path) -> dict:
     """Counts by class from the ``.meta`` files mutmut leaves beside each mutated module."""
     from mutmut.stats import status_by_exit_code
 
-    counts = {"killed": 0, "survived": 0, "not checked": 0, "other": 0, "total": 0}
+    counts: dict[str, Any] = {"killed": 0, "survived": 0, "not checked": 0, "other": 0, "total": 0}
     survivors: list[str] = []
     for meta in sorted((work / "mutants").rglob("*.py.meta")):
         data = json.loads(meta.read_text())

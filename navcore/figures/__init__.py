@@ -21,7 +21,7 @@ from __future__ import annotations
 import importlib
 import pkgutil
 from collections.abc import Callable, Iterable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import cache
 from pathlib import Path
 from typing import Any
@@ -29,6 +29,7 @@ from typing import Any
 # No backend is forced here: a notebook kernel keeps its inline backend (so glued figures
 # render as images), and a headless script gets matplotlib's default, Agg.
 import matplotlib.pyplot as plt
+import numpy as np
 from matplotlib.figure import Figure
 
 from navcore.ledger.core import PAPERS
@@ -36,10 +37,14 @@ from navcore.ledger.core import PAPERS
 __all__ = [
     "STYLE",
     "FigureSpec",
+    "PlottedAxes",
+    "Series",
     "apply_style",
+    "plotted",
     "register",
     "registry",
     "render",
+    "render_data",
     "spec",
     "value_bars",
     "write",
@@ -411,6 +416,197 @@ def tidy_legends(fig: Figure) -> None:
         else:
             legend.set_loc("upper center")
             legend.set_bbox_to_anchor((0.5, -0.14), transform=ax.transAxes)
+
+
+# ---------------------------------------------------------------------------------------
+# the data a figure plots
+
+
+@dataclass(frozen=True)
+class Series:
+    """One data series drawn on an axes, in the axes' data coordinates.
+
+    Attributes
+    ----------
+    kind : str
+        ``"line"`` (a line or markers, :meth:`~matplotlib.axes.Axes.plot`, ``axhline``),
+        ``"points"`` (a scatter), ``"segments"`` (``vlines``, error bars, stems: the
+        segments' end points in order, ``x[2 i]`` to ``x[2 i + 1]``), ``"bars"`` (bar
+        centres and heights, a histogram's too), ``"patch"`` (a span or polygon: its
+        vertices) or ``"image"`` (``y`` holds the image, ``x`` its extent).
+    label : str
+        The artist's label (matplotlib's ``_child<n>`` for an unlabelled one).
+    x, y : numpy.ndarray
+        Its coordinates as floats.
+    """
+
+    kind: str
+    label: str
+    x: np.ndarray
+    y: np.ndarray
+
+
+@dataclass(frozen=True)
+class PlottedAxes:
+    """What one axes of a figure shows: its labels, scales, data series and texts.
+
+    Attributes
+    ----------
+    title, xlabel, ylabel : str
+        The axes' title and axis labels.
+    xscale, yscale : str
+        ``"linear"``, ``"log"``, ...
+    series : tuple of Series
+        Every data series, lines first (in drawing order), then collections, bars, patches
+        and images.
+    texts : tuple of str
+        The texts drawn on the axes (annotations, value labels, a diagram's boxes).
+    """
+
+    title: str
+    xlabel: str
+    ylabel: str
+    xscale: str
+    yscale: str
+    series: tuple[Series, ...] = field(default_factory=tuple)
+    texts: tuple[str, ...] = field(default_factory=tuple)
+
+    def of_kind(self, kind: str) -> list[Series]:
+        """The series of one kind (``"line"``, ``"bars"``, ...), in drawing order."""
+        return [s for s in self.series if s.kind == kind]
+
+    def get(self, label: str, kind: str | None = None) -> Series:
+        """The one series with this label (and kind, if given).
+
+        Raises
+        ------
+        KeyError
+            If no series, or more than one, has the label; the message lists the labels.
+        """
+        found = [s for s in self.series if s.label == label and (kind is None or s.kind == kind)]
+        if len(found) != 1:
+            raise KeyError(
+                f"{len(found)} series labelled {label!r}; labels: {sorted({s.label for s in self.series})}"
+            )
+        return found[0]
+
+
+def _floats(values: Any) -> np.ndarray:
+    return np.asarray(np.ma.filled(np.ma.asarray(values, dtype=float), np.nan), dtype=float)
+
+
+def _axes_data(ax: Any) -> PlottedAxes:
+    from matplotlib.collections import LineCollection, PathCollection
+    from matplotlib.container import BarContainer
+    from matplotlib.image import AxesImage
+    from matplotlib.patches import Polygon, Rectangle
+
+    series: list[Series] = []
+    for line in ax.get_lines():
+        x, y = line.get_data(orig=True)
+        series.append(Series("line", str(line.get_label()), _floats(np.ravel(x)), _floats(np.ravel(y))))
+    for coll in ax.collections:
+        if isinstance(coll, LineCollection):
+            ends = [np.asarray(seg, dtype=float)[[0, -1]] for seg in coll.get_segments() if len(seg)]
+            pts = np.concatenate(ends) if ends else np.empty((0, 2))
+            series.append(Series("segments", str(coll.get_label()), pts[:, 0], pts[:, 1]))
+        elif isinstance(coll, PathCollection):
+            offsets = _floats(coll.get_offsets()).reshape(-1, 2)
+            series.append(Series("points", str(coll.get_label()), offsets[:, 0], offsets[:, 1]))
+    in_containers: set[int] = set()
+    for container in ax.containers:
+        if isinstance(container, BarContainer):
+            bars = list(container.patches)
+            in_containers.update(id(b) for b in bars)
+            x = _floats([b.get_x() + b.get_width() / 2 for b in bars])
+            h = _floats([b.get_height() for b in bars])
+            series.append(Series("bars", str(container.get_label()), x, h))
+    for patch in ax.patches:
+        if id(patch) in in_containers:
+            continue
+        if isinstance(patch, Rectangle):
+            x0, y0 = patch.get_x(), patch.get_y()
+            x1, y1 = x0 + patch.get_width(), y0 + patch.get_height()
+            xy = _floats([[x0, y0], [x1, y0], [x1, y1], [x0, y1]])
+        elif isinstance(patch, Polygon):
+            xy = _floats(patch.get_xy())
+        else:
+            continue
+        series.append(Series("patch", str(patch.get_label()), xy[:, 0], xy[:, 1]))
+    for image in ax.get_images():
+        if isinstance(image, AxesImage):
+            series.append(
+                Series(
+                    "image", str(image.get_label()), _floats(image.get_extent()), _floats(image.get_array())
+                )
+            )
+    return PlottedAxes(
+        title=ax.get_title(),
+        xlabel=ax.get_xlabel(),
+        ylabel=ax.get_ylabel(),
+        xscale=ax.get_xscale(),
+        yscale=ax.get_yscale(),
+        series=tuple(series),
+        texts=tuple(t.get_text() for t in ax.texts),
+    )
+
+
+def plotted(fig: Figure) -> tuple[PlottedAxes, ...]:
+    """The data a figure plots, axes by axes: what a test compares with the model.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+        A rendered figure.
+
+    Returns
+    -------
+    tuple of PlottedAxes
+        One per axes of ``fig`` that is not a colour bar or a secondary axis, in the figure's
+        order (``fig.axes``): its labels, scales, every data series (:class:`Series`) and its
+        texts.
+
+    Examples
+    --------
+    >>> fig, ax = plt.subplots()
+    >>> _ = ax.plot([1.0, 2.0], [3.0, 4.0], label="model")
+    >>> _ = ax.bar([0.0, 1.0], [5.0, 6.0], label="counts")
+    >>> (axes,) = plotted(fig)
+    >>> axes.get("model").y.tolist(), axes.get("counts").y.tolist()
+    ([3.0, 4.0], [5.0, 6.0])
+    >>> plt.close(fig)
+    """
+    out = []
+    for ax in fig.axes:
+        if ax.get_label() == "<colorbar>" or type(ax).__name__ == "SecondaryAxis":
+            continue
+        out.append(_axes_data(ax))
+    return tuple(out)
+
+
+def render_data(fig_id: str) -> tuple[PlottedAxes, ...]:
+    """Render a registered figure and return the data it plots (:func:`plotted`); closes it.
+
+    Parameters
+    ----------
+    fig_id : str
+        The figure's id (``"SP-fig2.1"``).
+
+    Returns
+    -------
+    tuple of PlottedAxes
+        The figure's axes and their data series.
+
+    Raises
+    ------
+    ValueError
+        If no figure has that id.
+    """
+    fig = render(fig_id)
+    try:
+        return plotted(fig)
+    finally:
+        plt.close(fig)
 
 
 def write(fig: Figure, stem: Path) -> list[Path]:

@@ -1,0 +1,379 @@
+"""The ledger's mechanisms on synthetic claims and inputs, independent of the registry (issue 31).
+
+Each test builds its own inputs and claims here and never imports a paper module, so a
+mechanism that breaks fails here, not only through one registry claim among hundreds.
+
+Oracle in every test: the rule of LEDGER.md (and of :mod:`navcore.ledger.core`'s and
+:mod:`navcore.ledger.inputs`' docstrings) written out by hand for claims whose values are
+simple closed forms of their inputs, so which runs are made, which band results and which
+verdict follows can be counted by hand.
+
+* the band's corners: six assumed inputs where only one off-diagonal corner agrees (every
+  corner is run up to six inputs); seven inputs fall back to the documented four corners;
+* the verdict rule with an admissible and a plausible-range input read together;
+* the input cache: a cached function reading two inputs of which one is overridden (the
+  overridden value is used, and both reads are recorded, on a miss and on a hit); a cached
+  read under two override values (two results, each replayed from the cache afterwards);
+* the expected-status check: each of the five derived verdicts passes when it is the expected
+  one and fails, saying so, for every other;
+* the readings: the cap on combinations at its boundary, the band too wide under a reading
+  other than the one used, the note's sentence for a statement's other reading.
+"""
+
+from __future__ import annotations
+
+import itertools
+
+import pytest
+
+from navcore.ledger import Claim, InputSet, Tolerance, evaluate, input_cache, printed
+from navcore.ledger.core import MAX_CORNER_INPUTS, MAX_READING_COMBINATIONS, STATUSES
+from navcore.ledger.inputs import Input, overriding, recording
+
+TOL = Tolerance(reason="test", abs=0.5, policy="printed-digits")
+
+IN = InputSet("ATC10", "synthetic_mechanisms")
+for _i in range(7):
+    IN.assumed(f"x{_i}", 0.5, low=0.0, high=1.0, reason="test range of the corner tests")
+IN.assumed("plausible", 0.0, low=-1.0, high=1.0, reason="a plausible range, not every admissible value")
+IN.assumed("wall", 0.0, low=-1.0, high=1.0, reason="every admissible value", admissible=True)
+IN.assumed("wall2", 0.0, low=-2.0, high=2.0, reason="every admissible value", admissible=True)
+IN.published("a", 2.0, locator="Eq. (1)")
+IN.published("b", 3.0, locator="Eq. (2)")
+IN.convention("sign", 1.0, alternative=-1.0, quantity="sign of the term", reason="the sign is not printed")
+for _i in range(5):
+    IN.convention(f"c{_i}", 0.0, alternative=1.0, reason="a convention of the cap tests")
+IN.convention("scale", 1.0, alternative=10.0, quantity="scale of the band", reason="two readings")
+
+NAME = "ATC10.synthetic_mechanisms."
+
+
+def make(**kw) -> Claim:
+    base = dict(
+        id="ATC10-test-mechanisms",
+        paper="ATC10",
+        locator="Eq. (1)",
+        quantity="q",
+        published=10.0,
+        unit="m",
+        compute=lambda: 5.0 * IN.a,
+        tolerance=TOL,
+        expected_status="reproduced",
+        note="a synthetic claim",
+    )
+    base.update(kw)
+    return Claim(**base)
+
+
+# --- the band's corners ---------------------------------------------------------------------------
+
+#: The one corner of the six-input box at which the claim below agrees: high, low, high, low, ...
+PATTERN = (1.0, 0.0, 1.0, 0.0, 1.0, 0.0)
+
+
+def _corner_indicator(xs: list[float]) -> float:
+    """1 at the corner PATTERN, 0 at every other corner, (1/2)^6 at the nominal (all 0.5)."""
+    out = 1.0
+    for x, p in zip(xs, PATTERN, strict=True):
+        out *= x if p == 1.0 else 1.0 - x
+    return out
+
+
+def test_six_assumed_inputs_only_an_off_diagonal_corner_agrees():
+    """90 + 10 * indicator: the nominal gives 90.16, one input at a time at most 90.31, the two
+    diagonal corners (all low, all high) and their mirrors 90, and only the corner
+    (high, low, high, low, high, low) gives 100, the printed value. Every one of the 2^6 corners
+    is run (six inputs is the limit, MAX_CORNER_INPUTS), so the band reaches 100: consistent.
+    A band made of the one-at-a-time runs and the diagonal corners only would be [90, 90.31]:
+    inconsistent."""
+    assert MAX_CORNER_INPUTS == 6
+    runs = []
+
+    def compute():
+        xs = [getattr(IN, f"x{i}") for i in range(6)]
+        runs.append(tuple(xs))
+        return 90.0 + 10.0 * _corner_indicator(xs)
+
+    value, tol = printed("100.0")
+    ev = evaluate(make(published=value, tolerance=tol, compute=compute, expected_status="consistent"))
+    assert ev.status == "consistent" and ev.passes
+    assert ev.reproduced == pytest.approx(90.0 + 10.0 / 64)
+    assert ev.band == pytest.approx((90.0, 100.0))
+    # the runs: the nominal, each input at its two ends, and the 64 corners
+    assert len(runs) == 1 + 6 * 2 + 2**6
+    assert set(itertools.product((0.0, 1.0), repeat=6)) <= set(runs)
+    # the sensitivity (one input at a time) alone never reaches the printed value
+    one_at_a_time = [v for _, row in ev.sensitivity for _, v in row]
+    assert max(one_at_a_time) == pytest.approx(90.0 + 10.0 / 32)
+
+
+def test_seven_assumed_inputs_fall_back_to_four_corners():
+    """Beyond six inputs: each input at its ends and four corners, all low, all high, the first
+    half low and the rest high, and its mirror (core._band_runs). Oracle: the run list by hand."""
+    runs = []
+
+    def compute():
+        xs = tuple(getattr(IN, f"x{i}") for i in range(7))
+        runs.append(xs)
+        return 10.0 + sum(xs) - 3.5
+
+    evaluate(make(compute=compute, expected_status="consistent"))
+    lows, highs = (0.0,) * 7, (1.0,) * 7
+    corners = [lows, highs, lows[:3] + highs[3:], highs[:3] + lows[3:]]
+    assert runs[-4:] == corners
+    assert len(runs) == 1 + 7 * 2 + 4
+
+
+def test_a_single_assumed_input_runs_no_corner():
+    runs = []
+
+    def compute():
+        runs.append(IN.x0)
+        return 10.0 + IN.x0
+
+    ev = evaluate(make(compute=compute, expected_status="consistent"))
+    assert runs == [0.5, 0.0, 1.0] and ev.band == (10.0, 11.0)
+
+
+# --- the verdict with an admissible and a plausible-range input ---------------------------------
+
+
+@pytest.mark.parametrize(
+    ("inputs", "status"),
+    [
+        (("wall",), "discrepant"),  # every input spans all admissible values
+        (("wall", "wall2"), "discrepant"),
+        (("wall", "plausible"), "inconsistent"),  # one range is only plausible: no accusation
+        (("plausible", "wall"), "inconsistent"),
+        (("plausible",), "inconsistent"),
+    ],
+)
+def test_disagreement_over_mixed_admissible_and_plausible_ranges(inputs, status):
+    """LEDGER.md: a disagreement across the whole band is a discrepancy only when *every* assumed
+    input read declares its range admissible; one plausible range makes it inconsistent.
+    Oracle: 20 + the inputs' sum spans [18, 22] or narrower, never within 10 +- 0.5."""
+    extra = {}
+    if status == "discrepant":
+        extra = dict(erratum="ATC10-E-none", oracle=lambda: 20.0, oracle_tolerance=TOL)
+    claim = make(compute=lambda: 20.0 + sum(getattr(IN, n) for n in inputs), expected_status=status, **extra)
+    ev = evaluate(claim)
+    assert ev.status == status and ev.passes
+    assert {i["name"] for i in ev.inputs} == {NAME + n for n in inputs}
+
+
+def test_a_mixed_claim_that_agrees_over_its_band_is_consistent():
+    ev = evaluate(make(compute=lambda: 8.5 + IN.wall + IN.plausible, expected_status="consistent"))
+    assert ev.status == "consistent" and ev.band == (6.5, 10.5)
+
+
+# --- the input cache --------------------------------------------------------------------------------
+
+
+def test_cached_function_reading_two_inputs_one_overridden():
+    """A cached function reads a and b; under an override of a alone it recomputes with the new a
+    and the declared b, and both reads are recorded in the caller's recording, on the miss and
+    on the hit (the overridden read is recorded like any other). Oracle: a * 10 + b by hand."""
+    calls = []
+
+    @input_cache
+    def combined(k):
+        calls.append(k)
+        return IN.a * k + IN.b
+
+    with recording() as reads:
+        assert combined(10.0) == 23.0
+    assert sorted(reads) == [NAME + "a", NAME + "b"] and len(calls) == 1
+    for attempt in range(2):  # a miss, then a hit
+        with overriding({NAME + "a": 5.0}), recording() as reads:
+            assert combined(10.0) == 53.0
+        assert sorted(reads) == [NAME + "a", NAME + "b"], attempt
+        assert reads[NAME + "a"].value == 2.0  # the record is the declaration, not the override
+    assert len(calls) == 2
+    with recording() as reads:
+        assert combined(10.0) == 23.0  # the declared value again, from the cache
+    assert sorted(reads) == [NAME + "a", NAME + "b"] and len(calls) == 2
+
+
+def test_cached_read_under_two_override_values():
+    """Two override values of one input give two results, each kept: the cache is keyed on the
+    value each read returned. Oracle: 3 * a by hand; the call count says when it recomputes."""
+    calls = []
+
+    @input_cache
+    def tripled():
+        calls.append(IN.a)
+        return 3.0 * IN.a
+
+    results = {}
+    for a in (7.0, 11.0, 7.0, 11.0):
+        with overriding({NAME + "a": a}):
+            results.setdefault(a, []).append(tripled())
+    assert results == {7.0: [21.0, 21.0], 11.0: [33.0, 33.0]}
+    assert calls == [7.0, 11.0]
+    assert tripled() == 6.0 and calls == [7.0, 11.0, 2.0]
+
+
+def test_claim_reading_through_a_cached_function_follows_its_band_and_lists_its_inputs():
+    """Through the ledger: a claim whose value comes from a cached function is evaluated across
+    the assumed range (each band point a different override) and lists the inputs the cached
+    function read, also when the nominal run is a cache hit. Oracle: 9 + x0 and 10 * a / 2."""
+
+    @input_cache
+    def cached_value():
+        return 9.0 + IN.x0 + 10.0 * IN.a / 2.0 - 10.0
+
+    cached_value()  # fill the cache outside any recording
+    ev = evaluate(make(compute=cached_value, expected_status="consistent"))
+    assert ev.reproduced == 9.5 and ev.band == (9.0, 10.0)
+    assert [i["name"] for i in ev.inputs] == [NAME + "a", NAME + "x0"]
+
+
+def test_overrides_nest_and_unknown_names_are_refused():
+    with overriding({NAME + "a": 4.0}):
+        with overriding({NAME + "b": 5.0}):
+            assert (IN.a, IN.b) == (4.0, 5.0)
+        with overriding({NAME + "a": 6.0}):
+            assert IN.a == 6.0
+        assert (IN.a, IN.b) == (4.0, 3.0)
+    with pytest.raises(ValueError, match="not a registered input"):
+        with overriding({NAME + "nope": 1.0}):
+            pass
+
+
+# --- the expected-status check ---------------------------------------------------------------------
+
+
+def _claims_deriving_each_status() -> dict[str, dict]:
+    """Claim fields that derive each verdict (by the rules of LEDGER.md, by hand)."""
+    return {
+        "reproduced": dict(compute=lambda: 5.0 * IN.a),  # 10, published inputs only
+        "consistent": dict(compute=lambda: 9.0 + IN.x0 * 2.0),  # band [9, 11] holds 10
+        "inconsistent": dict(compute=lambda: 20.0 + IN.plausible),  # band [19, 21]
+        "discrepant": dict(
+            compute=lambda: 6.0 * IN.a,  # 12, published inputs only
+            erratum="ATC10-E-none",
+            oracle=lambda: 12.0,
+            oracle_tolerance=TOL,
+        ),
+        "not-reproducible": dict(compute=None),
+    }
+
+
+@pytest.mark.parametrize("derived", STATUSES)
+@pytest.mark.parametrize("expected", STATUSES)
+def test_expected_status_check(derived, expected):
+    """A claim passes its check exactly when its derived verdict is the expected one (and, for
+    a discrepancy, its oracle agrees); otherwise the detail names both verdicts."""
+    fields = dict(_claims_deriving_each_status()[derived])
+    if expected == "discrepant":
+        fields.setdefault("erratum", "ATC10-E-none")
+        fields.setdefault("oracle", lambda: 0.0)
+        fields.setdefault("oracle_tolerance", TOL)
+    ev = evaluate(make(expected_status=expected, **fields))
+    assert ev.status == derived
+    if derived == "not-reproducible":  # nothing computed: the check is whether it was expected
+        assert ev.passes == (expected == derived)
+        return
+    assert ev.passes == (expected == derived)
+    if expected != derived:
+        assert ev.detail == f"derived verdict {derived!r} differs from the expected {expected!r}"
+
+
+def test_a_discrepancy_passes_only_when_its_oracle_agrees():
+    fields = _claims_deriving_each_status()["discrepant"]
+    assert evaluate(make(expected_status="discrepant", **fields)).passes
+    wrong = evaluate(make(expected_status="discrepant", **{**fields, "oracle": lambda: 13.0}))
+    assert wrong.status == "discrepant" and not wrong.passes
+    assert wrong.detail == "disagrees with its independent oracle (13.0)" and wrong.oracle_value == 13.0
+    # the oracle tolerance is relative to the oracle's value: 12 against 12.4 +- 0.5 agrees
+    assert evaluate(make(expected_status="discrepant", **{**fields, "oracle": lambda: 12.4})).passes
+
+    def failing():
+        raise RuntimeError("no oracle")
+
+    broken = evaluate(make(expected_status="discrepant", **{**fields, "oracle": failing}))
+    assert not broken.passes and broken.detail == "oracle raised RuntimeError: no oracle"
+
+
+# --- readings: the cap and the other readings' bands ----------------------------------------------
+
+
+def test_reading_combinations_at_the_cap_are_all_run_and_one_more_convention_is_not():
+    """Four two-reading conventions make 16 combinations, the cap: all are run; a fifth makes 32,
+    beyond it: the readings used plus each convention's other reading alone (1 + 5 runs)."""
+    assert MAX_READING_COMBINATIONS == 16
+    seen = []
+
+    def compute_with(n):
+        def compute():
+            xs = tuple(getattr(IN, f"c{i}") for i in range(n))
+            seen.append(xs)
+            return 10.0 + 0.01 * sum(xs)
+
+        return compute
+
+    ev = evaluate(make(compute=compute_with(4)))
+    assert len(ev.readings) == 16 and len(set(seen)) == 16
+    seen.clear()
+    ev = evaluate(make(compute=compute_with(5)))
+    assert len(ev.readings) == 6
+    assert sorted(seen) == sorted([(0.0,) * 5] + [tuple(float(i == j) for i in range(5)) for j in range(5)])
+
+
+def test_an_other_reading_whose_band_is_too_wide_does_not_make_the_claim_consistent():
+    """The reading used (scale 1) gives [1, 3] around 2: no agreement with 20; the other reading
+    (scale 10) gives [10, 30]: it holds 20 but its ends are a factor 3 apart... exactly 3, which
+    is not more than the factor: it decides, consistent. With a wider range [5, 35] (a factor 7)
+    it does not: not-reproducible. Oracle: the band-too-wide rule by hand."""
+    value, tol = printed("20.0")
+    ev = evaluate(
+        make(
+            published=value,
+            tolerance=tol,
+            compute=lambda: IN.scale * (2.0 + IN.plausible),
+            expected_status="consistent",
+        )
+    )
+    assert ev.status == "consistent" and not ev.readings[0]["agrees"]
+    other = ev.readings[1]
+    assert other["band"] == (10.0, 30.0) and other["agrees"] and not other["band_too_wide"]
+    wide = evaluate(
+        make(
+            published=value,
+            tolerance=tol,
+            compute=lambda: IN.scale * (2.0 + 1.5 * IN.plausible),
+            expected_status="not-reproducible",
+        )
+    )
+    assert wide.status == "not-reproducible" and wide.passes and wide.band_too_wide
+    assert wide.readings[1]["band"] == (5.0, 35.0) and wide.readings[1]["band_too_wide"]
+    assert "The reading that agrees does so over only part of a band" in wide.note()
+
+
+def test_a_statements_other_reading_is_said_in_words():
+    ev = evaluate(
+        make(
+            published=True,
+            unit="statement",
+            tolerance=Tolerance(reason="exact", abs=0.0, policy="exact"),
+            compute=lambda: IN.sign > 0,
+            expected_status="reproduced",
+        )
+    )
+    assert ev.status == "reproduced"
+    assert ev.note().endswith("With the sign of the term read as the other reading (-1): does not hold.")
+
+
+def test_inputs_are_recorded_once_with_their_provenance_and_source():
+    ev = evaluate(make(compute=lambda: IN.a + IN.a + IN.b + IN.x0 * 0.0 + 5.0, expected_status="consistent"))
+    assert [(i["name"], i["provenance"]) for i in ev.inputs] == [
+        (NAME + "a", "published"),
+        (NAME + "b", "published"),
+        (NAME + "x0", "assumed"),
+    ]
+    assert ev.inputs[0]["locator"] == "Eq. (1)" and ev.inputs[2]["reason"].startswith("test range")
+
+
+def test_input_records_are_the_declarations():
+    inp = IN.input("x0")
+    assert isinstance(inp, Input) and inp.band_points == (0.0, 1.0) and inp.provenance == "assumed"
