@@ -277,12 +277,65 @@ def _tex_breakable(text: str) -> str:
 _NUMBER = re.compile(r"^[−+-]?(?:\d[\d,]*\.?\d*|\.\d+)(?:[eE][−+-]?\d+)?(?:\s*%)?$")
 
 
+#: Width of the PDF's text, pt (A4, one-inch margins), and an upper estimate of a character's
+#: width in the tables' footnotesize FreeSerif, pt (capitals and bold are wider).
+_LINE_PT = 451.0
+_CHAR_PT = {"lower": 4.0, "upper": 5.0}
+_BOLD = 1.1
+_PAD_PT = 8.0  # 2 \tabcolsep
+_LONG_WORD = 14  # a longer word of a text cell may break (every 7 characters, or after - . / _)
+
+
+def _word_pt(word: str, bold: bool = False) -> float:
+    """Upper estimate of the printed width of an unbreakable ``word``, pt."""
+    pt = sum(_CHAR_PT["upper"] if ch.isupper() or ch in "%&@MW" else _CHAR_PT["lower"] for ch in word)
+    return pt * (_BOLD if bold else 1.0)
+
+
+def _text_pieces(text: str) -> list[tuple[bool, str]]:
+    """A text cell as math and text pieces, long text words cut where they may break."""
+    out: list[tuple[bool, str]] = []
+    for is_math, piece in math_spans(text):
+        if is_math:
+            out.append((True, piece))
+            continue
+        words = re.split(r"(\s+|\u200b)", piece)
+        cut = []
+        for w in words:
+            if len(w) > _LONG_WORD:
+                parts = re.split(r"(?<=[-./_])", w)
+                w = "\u200b".join(
+                    "\u200b".join(q[i : i + 7] for i in range(0, len(q), 7)) if len(q) > _LONG_WORD else q
+                    for q in parts
+                )
+            cut.append(w)
+        out.append((False, "".join(cut)))
+    return out
+
+
+def _min_pt(text: str, numeric: bool, bold: bool = False) -> float:
+    """The widest piece of ``text`` that cannot break, pt (a math span counts whole)."""
+    if numeric:
+        return _word_pt(text, bold)
+    widest = 0.0
+    for is_math, piece in _text_pieces(text):
+        if is_math:
+            widest = max(widest, 0.8 * _word_pt(re.sub(r"\\[a-zA-Z]+|[{}_^]", "x", piece)))
+        else:
+            widest = max([widest] + [_word_pt(w, bold) for w in re.split(r"\s+|\u200b", piece)])
+    return widest
+
+
 def latex_table(head: Sequence[str], body: Sequence[Sequence[str]]) -> str:
     r"""The book's one printed table: a ``longtable`` that fits the text width.
 
-    Column widths follow their content (the longest word of the heading, the longest cell);
-    numbers are right-aligned and never broken across lines; text cells wrap ragged-right
-    without hyphenation. Used for every pandas table and count table in the PDF.
+    Every column is at least as wide as its widest word (heading or cell) that cannot break;
+    what the page has beyond that goes to the columns in proportion to how much longer their
+    text is. A table whose widest words do not fit is set one size smaller. Numbers are
+    right-aligned and never broken across lines; text cells wrap ragged-right without
+    hyphenation, a word longer than 14 characters breaks every 7 characters or after ``-``,
+    ``.``, ``/`` or ``_``, and ``$...$`` is set as math. Used for every pandas table and count
+    table in the PDF.
 
     Parameters
     ----------
@@ -315,10 +368,26 @@ def latex_table(head: Sequence[str], body: Sequence[Sequence[str]]) -> str:
 
     def need(j: int) -> float:
         words = [1.25 * len(w) + 1 for w in str(head[j]).split()] or [1.0]  # bold headings
-        longest = max([len(row[j]) if numeric[j] else min(len(row[j]), 28) for row in cells] or [1])
-        return max(max(words), longest, 3)
+        lengths = [len(row[j]) for row in cells] or [1]
+        if numeric[j]:
+            longest = float(max(lengths))
+        else:  # long text gets more room, but less than in proportion (it wraps)
+            longest = min(max(lengths), 12.0 + (sum(lengths) / len(lengths)) ** 0.75)
+        return max(max(words), longest, 3) * _CHAR_PT["lower"]
 
-    widths = [need(j) for j in range(ncols)]
+    least = [
+        max([_min_pt(str(head[j]), False, bold=True)] + [_min_pt(row[j], numeric[j]) for row in cells])
+        for j in range(ncols)
+    ]
+    size, scale = r"\footnotesize", 1.0
+    if sum(least) + _PAD_PT * ncols > _LINE_PT:  # the widest words do not fit: one size smaller
+        size, scale = r"\scriptsize", 6.0 / 8.0
+    least = [w * scale for w in least]
+    wanted = [max(need(j) * scale, least[j]) for j in range(ncols)]
+    room = _LINE_PT - _PAD_PT * ncols - sum(least)
+    spare = sum(wanted) - sum(least)
+    share = min(1.0, max(room, 0.0) / spare) if spare > 0 else 0.0
+    widths = [least[j] + share * (wanted[j] - least[j]) + _PAD_PT for j in range(ncols)]
     total = sum(widths)
     natural = sum(max([1.25 * len(str(head[j]))] + [len(row[j]) for row in cells]) for j in range(ncols))
     cols = "".join(
@@ -330,14 +399,20 @@ def latex_table(head: Sequence[str], body: Sequence[Sequence[str]]) -> str:
         cols = "".join("r" if numeric[j] else "l" for j in range(ncols))
 
     def cell(text: str, j: int) -> str:
-        text = _tex_escape(text).replace("\u200b", r"\allowbreak{}")  # zero-width space: may break
+        if numeric[j]:
+            text = _tex_escape(text)
+            return rf"\mbox{{{text}}}" if text else text
+        text = "".join(
+            f"${piece}$" if is_math else _tex_escape(piece).replace("\u200b", r"\allowbreak{}")
+            for is_math, piece in _text_pieces(text)
+        )
         if text.startswith("["):  # after the previous row's \\ a "[" would read as its option
             text = "{}" + text
-        return rf"\mbox{{{text}}}" if numeric[j] and text else text
+        return text
 
     header = " & ".join(rf"\textbf{{{_tex_escape(str(h))}}}" for h in head)
     out = [
-        r"\begingroup\footnotesize\setlength{\tabcolsep}{4pt}\hyphenpenalty=10000\exhyphenpenalty=10000",
+        rf"\begingroup{size}\setlength{{\tabcolsep}}{{4pt}}\hyphenpenalty=10000\exhyphenpenalty=10000",
         rf"\begin{{longtable}}{{{cols}}}",
         rf"\hline {header} \\ \hline \endfirsthead",
         rf"\hline {header} \\ \hline \endhead",
