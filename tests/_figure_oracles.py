@@ -706,7 +706,7 @@ def _sp_flyby_cn0(data: Data) -> None:
     from navcore.units import MINUTE
 
     (ax,) = data
-    cn0 = fb.effective_cn0(fb.calibrated_erp_dbw())
+    cn0 = fb.effective_cn0(fb.calibrated_jammer_db())
     drawn = [s for s in lines(ax) if s.label.startswith("PRN")]
     assert len(drawn) == cn0.shape[1]
     for c, s in enumerate(drawn):
@@ -735,7 +735,8 @@ def _sp_fig26(data: Data) -> None:
 def _sp_fig27(data: Data) -> None:
     """Each system's horizontal error recomputed from the flyby's covariance runs; the dots are
     the errors before reacquisition. Oracle: the stars are the text's 3300 m (TC 10 nmi/h) and
-    260 m (TC 1 nmi/h); each dot lies on its curve (the curve's value at that time)."""
+    260 m (TC 1 nmi/h); each dot is a sample of its curve, drawn within one sample step of that
+    sample's time."""
     from navcore.papers import sp_flyby as fb
     from navcore.units import MINUTE
 
@@ -751,8 +752,10 @@ def _sp_fig27(data: Data) -> None:
     for d in dots:
         if d.y[0] in (3300.0, 260.0):
             continue
-        curve = min(curves, key=lambda c: abs(np.interp(d.x[0], c.x, c.y) - d.y[0]))
-        near(np.interp(d.x[0], curve.x, curve.y), d.y[0], rtol=1e-6)
+        curve = min(curves, key=lambda c: float(np.min(np.abs(c.y - d.y[0]))))
+        k = int(np.argmin(np.abs(curve.y - d.y[0])))
+        near(curve.y[k], d.y[0], rtol=1e-9)
+        assert abs(curve.x[k] - d.x[0]) <= float(np.max(np.diff(curve.x))), "dot away from its sample"
         assert any(abs(d.y[0] - v) < 1e-9 * v for v in before.values())
     near(sorted(d.y[0] for d in dots if d.y[0] in (3300.0, 260.0)), [260.0, 3300.0])
     assert len(dots) == len(runs) + 2

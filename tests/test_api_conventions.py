@@ -566,9 +566,26 @@ def test_every_marked_parameter_is_registered_or_exempt():
         covered = set(REGISTRY.get(short, (None, {}))[1])
         if short == "estimation.covariance_analysis.circular_error_probable":
             marked.discard("p")  # the probability, not a quaternion
+        if short == "location.target_location.target_location_covariance":
+            # a cross-covariance: any finite 3x3 (not symmetric); the joint matrix it forms with
+            # P_position and P_attitude is what must be PSD, tested below
+            marked.discard("P_position_attitude")
         if marked - covered:
             missing.append(f"{short}: {sorted(marked - covered)}")
     assert not missing, f"register these in REGISTRY (or EXEMPT with a reason): {missing}"
+
+
+def test_target_location_cross_covariance_must_make_a_psd_joint_covariance():
+    """Oracle: a cross-covariance larger than the geometric mean of its variances makes the
+    joint 6x6 matrix indefinite (|rho| > 1), which no pair of random vectors has."""
+    from navcore.location.target_location import target_location_covariance
+
+    with pytest.raises(ValueError, match="joint covariance"):
+        target_location_covariance(np.eye(3), 1e-6 * np.eye(3), [8000.0, 0.0, 0.0], 2e-3 * np.eye(3))
+    with pytest.raises(ValueError, match="P_position_attitude"):
+        target_location_covariance(np.eye(3), 1e-6 * np.eye(3), [8000.0, 0.0, 0.0], np.eye(2))
+    ok = target_location_covariance(np.eye(3), 1e-6 * np.eye(3), [8000.0, 0.0, 0.0], 5e-4 * np.eye(3))
+    assert np.all(np.linalg.eigvalsh(ok) >= 0)
 
 
 def _function(short: str) -> Any:

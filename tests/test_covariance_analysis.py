@@ -392,10 +392,10 @@ def test_composite_steps_give_the_single_step_histories_between_fixes():
     to 60 % low a few seconds after a fix), for the true and the filter covariance alike;
     the static states (random constants) keep their variance exactly."""
     truth = ins_error_layout(
-        "position", "velocity", "misalignment", "gyro drift", "accel bias", "gravity", "altimeter bias"
+        "position", "velocity", "misalignment", "gyro bias", "accel bias", "gravity", "altimeter bias"
     )
     filt = ins_error_layout(
-        "position", "velocity", "misalignment", "gyro drift", "accel bias", "altimeter bias"
+        "position", "velocity", "misalignment", "gyro bias", "accel bias", "altimeter bias"
     )
     spec = ImuSpec(
         "t", gyro_bias=0.05 * DEG_PER_H, accel_bias=100 * MICRO_G, gyro_random_walk=0.1 * DEG_PER_H

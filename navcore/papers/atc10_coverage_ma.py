@@ -835,7 +835,7 @@ CLAIMS = [
         G_,
     ),
     Claim(
-        id="ATC10-sec3.6-c2-smallest-lower-bound",
+        id="ATC10-sec3.6-C2-smallest-lower-bound",
         printed="it has the smallest upper bound to p_f (and also the smallest lower bound)",
         paper="ATC10",
         locator="Sec. 3.6",

@@ -112,8 +112,22 @@ QUOTES: dict[str, str] = {
         "\\sigma_{\\varepsilon_{\\tau_n}}^2 &= \\sigma_\\gamma^2 + \\sigma_0^2 "
         "\\left[\\frac{2-\\gamma\\beta}{\\gamma\\beta} (n-N) + (n-N)^2 \\right] \\tag{4.5.27}"
     ),
+    "ATC10-eq4.5.10-printed": (
+        "$$\\hat{\\tau}_1 = \\gamma_1^{-1} (I - F_1 (F_1' F_1)^{-1} F_1') [\\hat{T}_1 - k_1 - "
+        "(\\hat{\\tau}_0 + \\bar{\\tau}) 1] + \\hat{\\tau}_0 + \\bar{\\tau} \\quad (4.5.10)$$"
+    ),
+    "ATC10-eq4.5.21-printed": (
+        "&= 2\\sigma_0^2 + \\sigma_{\\gamma_{n-1}}^2 - 2E[\\Delta_n \\xi_{\\tau_{n-1}}] \\tag{4.5.21}"
+    ),
+    "ATC10-eq4.5.23-increment-covariance": (
+        "$$E[\\Delta_n \\Delta_{n-i}] = \\begin{cases} 2\\sigma_0^2, & i=0 \\\\ \\sigma_0^2, & 1 \\leq i "
+        "\\leq n-1 \\end{cases} \\quad (4.5.23)$$"
+    ),
     "ATC10-eq4.5.31-printed": (
         "\\gamma_n &= \\frac{\\sigma_{\\tau_n}^2}{\\sigma_o^2 + \\sigma_{\\tau_n}^2 \\beta_n}"
+    ),
+    "ATC10-eq4.5.37-gain-limit": (
+        "$$\\gamma_n \\rightarrow \\gamma = \\frac{1}{\\beta} \\psi(\\alpha) \\quad (4.5.37)$$"
     ),
     "ATC10-eq4.5.35-printed": (
         "\\sigma^2 [\\text{tr}\\{(F_n' F_n)^{-1}\\} + \\gamma_n^2 F_n' (F_n' F_n)^{-2} F_n] \\quad (4.5.35)"
