@@ -67,7 +67,9 @@ band that reaches zero or changes sign has no finite ratio (it cannot even tell 
 it is too wide unless the tolerance accepts all of it; a band in decibels (a unit starting
 with ``dB``) is compared as the power ratio of its ends, 10 log10(3) = 4.77 dB. A printed
 bound (``<``, ``>``) is treated alike: a band that straddles it and spans more than a factor 3
-is too wide; a band wholly on the bound's side agrees everywhere and decides.
+is too wide; a band wholly on the bound's side agrees everywhere and decides. A statement's
+band is its truth values across the assumed ranges: one that holds somewhere and fails
+elsewhere in the ranges accepts both outcomes, so it too decides nothing.
 
 Trailing zeros
 --------------
@@ -1101,7 +1103,8 @@ def band_too_wide(claim: Claim, tol: Tolerance, low: Any, high: Any) -> bool:
     """Whether a claim's band is too wide to decide (module docstring, "A band too wide").
 
     True when the tolerance does not accept the whole band and its ends are more than
-    :data:`BAND_FACTOR` apart (:func:`band_spread`); never for a truth value.
+    :data:`BAND_FACTOR` apart (:func:`band_spread`); for a statement, when its band holds
+    both truth values (the assumptions accept either outcome).
 
     Parameters
     ----------
@@ -1125,9 +1128,14 @@ def band_too_wide(claim: Claim, tol: Tolerance, low: Any, high: Any) -> bool:
     ...           expected_status="consistent", note="a synthetic claim")
     >>> band_too_wide(c, tol, 2.0, 567.0), band_too_wide(c, tol, 100.0, 150.0)
     (True, False)
+    >>> s = Claim(id="SP-doc-better", paper="SP", locator="Sec. 3.3", quantity="TC beats LC",
+    ...           published=True, unit="statement", compute=lambda: True, tolerance=EXACT,
+    ...           expected_status="consistent", note="a synthetic claim")
+    >>> band_too_wide(s, EXACT, False, True), band_too_wide(s, EXACT, True, True)
+    (True, False)
     """
     if claim.is_statement or _is_truth(low) or _is_truth(high):
-        return False
+        return bool(low) != bool(high)
     pub = float(claim.published)
     allowed = tol.allowed(pub)
     lo, hi = sorted((float(low), float(high)))
@@ -1544,7 +1552,8 @@ class _Outcome:
 def _outcome(claim: Claim, tol: Tolerance, value: Any, values: Sequence[Any]) -> _Outcome:
     if claim.is_statement:
         at_value = value == claim.published
-        return _Outcome(at_value, at_value or any(v == claim.published for v in values), False)
+        outcomes = {bool(v) for v in (value, *values)}
+        return _Outcome(at_value, claim.published in outcomes, bool(values) and len(outcomes) == 2)
     pub = float(claim.published)
     allowed = tol.allowed(pub)
     at_value = _satisfies(value, claim.relation, pub, allowed)

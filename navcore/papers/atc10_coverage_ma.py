@@ -864,7 +864,7 @@ CLAIMS = [
         unit="statement",
         compute=lambda: ma.gaussian_smallest_pf_ratio() > 1.0,
         tolerance=EXACT,
-        expected_status="consistent",
+        expected_status="not-reproducible",
         note="The sentence follows from Theorem 3.2, which orders the Chernoff upper bounds; checked on "
         "the actual ROCs of the four densities (exact sums and stratified Monte Carlo, as "
         "ATC10-sec3.8-gauss-always-optimistic) at $p_d$ = 0.9 and 0.99 and the figure contours: "

@@ -721,7 +721,7 @@ CLAIMS = [
         unit="statement",
         compute=di_better_at_10_and_100w,
         tolerance=EXACT,
-        expected_status="consistent",
+        expected_status="not-reproducible",
         note="Reduced navigator model with the book's trajectory and link assumptions (exact CEPs).",
         discussed_in=PAGE,
     ),

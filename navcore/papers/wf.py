@@ -1229,7 +1229,7 @@ CLAIMS = [
         kind="statement",
         compute=flexible_mode_is_several,
         tolerance=EXACT,
-        expected_status="consistent",
+        expected_status="not-reproducible",
         note="2 pi f A of the assumed first wing mode: 3 Hz (3-9, 'several Hertz') with 0.1 m tip amplitude "
         "(5-30 cm) gives 1.9 m/s, below 'several'. The paper says the mode 'can result in' several m/s, a "
         "possibility: across the assumed frequency and amplitude the velocity amplitude spans 0.94-17 "
