@@ -112,6 +112,7 @@ def test_build_helpers_are_stripped_from_displayed_cells():
     source = (
         "import numpy as np\n"
         "from myst_nb import glue\n"
+        "from navcore.book import glue\n"
         "from navcore import book\n"
         "%matplotlib inline\n"
         "book.setup()\n"

@@ -32,7 +32,8 @@ from html.parser import HTMLParser
 from pathlib import Path
 
 HELPERS = re.compile(
-    r"(?m)^\s*(?:glue\s*\(|(?:book\.)?show_figure\s*\(|book\.setup\s*\(|%matplotlib|from myst_nb import glue)"
+    r"(?m)^\s*(?:glue\s*\(|(?:book\.)?show_figure\s*\(|book\.setup\s*\(|%matplotlib"
+    r"|from (?:myst_nb|navcore\.book) import glue)"
 )
 CELL_PRE = re.compile(
     r'class="cell_input[^"]*"[^>]*>\s*<div class="highlight-[^"]*"><div class="highlight"><pre>(.*?)</pre>',
