@@ -435,6 +435,29 @@ def kzl_dd_rows(n: str) -> int:
     return int(dd_observation_rows_count(int(n)))
 
 
+@register("kzl03-dd-sigma-mm", "kzl/03-simulation", "standard deviation of a double-differenced phase (mm)")
+def kzl_dd_phase_sigma_mm() -> float:
+    """Standard deviation of one double-differenced carrier phase of the KZL scenario, in mm."""
+    from navcore.gnss.carrier_phase import dd_covariance
+    from navcore.papers.kzl_scenario import gnss_noise
+
+    return float(1e3 * math.sqrt(dd_covariance(2, gnss_noise().phase)[0, 0]))
+
+
+@register(
+    "kzl03-gyro-residual-deg-h",
+    "kzl/03-simulation",
+    "gyro bias left after averaging the angle random walk over the initialisation (deg/h)",
+)
+def kzl_gyro_residual_deg_h() -> float:
+    """Standard deviation of a gyro bias estimated by averaging the Table 1 angle random walk
+    over the initialisation time of the KZL scenario, in deg/h."""
+    from navcore.papers.kzl_scenario import IN, kzl_imu
+    from navcore.units import DEG_PER_H
+
+    return float(kzl_imu().gyro_random_walk / math.sqrt(IN.init_time_s) / DEG_PER_H)
+
+
 # --- model values: ATC-10 Section 2 (jamming) and 3 (multiple-access noise) -------------------
 
 
@@ -498,6 +521,34 @@ def atc10_qk_k10_0999() -> float:
     from navcore.papers import atc10_jamming as pj
 
     return float(pj.design_p_d(0.999, 10) ** (4 * 10))
+
+
+@register("atc10-10-n-v", "atc10/10-jamming-model", "samples n_v in a tracking window (C.14)")
+@register("atc10-12-n-v", "atc10/12-tracking-lists", "samples n_v in a tracking window (C.14)")
+@register("atc10-14-n-v", "atc10/14-monte-carlo", "samples n_v in a tracking window (C.14)")
+def atc10_track_window_samples() -> float:
+    """Samples (8 B / 3) v alpha / c in a tracking window of ATC-10's scenario (App. C, C.14)."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.geometry().samples_per_track_window)
+
+
+@register(
+    "atc10-11-samples-period", "atc10/11-single-pulse", "samples 2 B alpha in a repetition period (B.6)"
+)
+def atc10_period_samples() -> float:
+    """Samples 2 B alpha in one repetition period of ATC-10's scenario (App. B, B.6)."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.geometry().samples_per_period)
+
+
+@register("atc10-11-samples-window", "atc10/11-single-pulse", "samples 4 B beta in a delay window (B.6)")
+def atc10_delay_window_samples() -> float:
+    """Samples 4 B beta in a differential-delay window of ATC-10's scenario (App. B, B.6)."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.geometry().samples_per_delay_window)
 
 
 @register(

@@ -189,6 +189,33 @@ def _msequence_1023() -> np.ndarray:
     return 1.0 - 2.0 * seq.astype(float)
 
 
+# ATC-10's scenario as printed, typed in: B = 10 MHz, alpha = 1 s, beta = 24 ms (Sec. 2.7),
+# v = 600 mph (Sec. 2.8).
+_ATC10_B, _ATC10_ALPHA, _ATC10_BETA, _ATC10_V_MPH = 10_000_000, 1, Fraction(24, 1000), 600
+
+
+def _atc10_n_v() -> float:
+    """(8 B / 3) v alpha / c (C.14) in miles and hours: v in miles per second over c in miles per
+    second (scipy.constants' c and mile)."""
+    return 8 / 3 * _ATC10_B * (_ATC10_V_MPH / 3600) * _ATC10_ALPHA / (sc.c / sc.mile)
+
+
+def _kzl_dd_sigma_mm() -> float:
+    """A double difference (a_i - b_i) - (a_m - b_m) sums four independent phase errors of the
+    same sigma: 2 sigma (closed form), sigma the scenario's phase noise."""
+    from navcore.papers.kzl_scenario import GNSS_NOMINAL, IN
+
+    return 2 * IN.gnss_noise_scale * GNSS_NOMINAL["phase"] * 1e3
+
+
+def _kzl_gyro_residual_deg_h() -> float:
+    """White rate noise of density N (deg/h/sqrt(Hz)) averaged over T seconds leaves N / sqrt(T)
+    (deg/h): the Table 1 reading of N (the convention input) and the initialisation time."""
+    from navcore.papers.kzl_scenario import IN
+
+    return IN.gyro_bias_arw[1] / math.sqrt(IN.init_time_s)
+
+
 _BARKER13 = np.array([1, 1, 1, 1, 1, -1, -1, 1, 1, -1, 1, -1, 1], float)
 
 ORACLES = [
@@ -261,6 +288,13 @@ ORACLES = [
         rtol=1e-12,
         why="scipy binomial mean, rescaled to N aircraft",
     ),
+    Oracle("atc10-10-n-v", _atc10_n_v, rtol=1e-12, why="the paper's B, v, alpha typed in"),
+    Oracle("atc10-12-n-v", _atc10_n_v, rtol=1e-12, why="the paper's B, v, alpha typed in"),
+    Oracle("atc10-14-n-v", _atc10_n_v, rtol=1e-12, why="the paper's B, v, alpha typed in"),
+    Oracle("atc10-11-samples-period", lambda: float(2 * _ATC10_B * _ATC10_ALPHA), rtol=1e-15, why="exact"),
+    Oracle("atc10-11-samples-window", lambda: float(4 * _ATC10_B * _ATC10_BETA), rtol=1e-15, why="exact"),
+    Oracle("kzl03-dd-sigma-mm", _kzl_dd_sigma_mm, rtol=1e-12, why="closed form 2 sigma"),
+    Oracle("kzl03-gyro-residual-deg-h", _kzl_gyro_residual_deg_h, rtol=1e-12, why="N / sqrt(T), deg/h units"),
     # the fine-grid integral of the piecewise-linear R^2 is good to ~1e-5 at 200 samples a chip
     Oracle(
         "atc10-23-w-msequence-1023", lambda: _brute_zakai(_msequence_1023()), rtol=2e-4, why="brute force"
