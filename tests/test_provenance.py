@@ -202,3 +202,48 @@ def test_the_about_table_and_the_title_page_show_every_field() -> None:
     latex = ext.title_page_latex(p)
     assert "a" * 40 in latex and "b" * 64 in latex and r"1.0\_rc\#1" in latex
     assert latex.count(r"\\") == len(p.rows()) + 1  # one line per field, under its heading
+
+
+def test_a_page_with_the_interactive_ledger_carries_the_provenance_its_downloads_take() -> None:
+    from types import SimpleNamespace
+
+    ext = _load("build_provenance")
+    app = SimpleNamespace(builder=SimpleNamespace(format="html"))
+    ledger_page = {"body": '<div data-ledger-app="1">...</div>', "metatags": "<meta>"}
+    other_page = {"body": "<p>prose</p>", "metatags": "<meta>"}
+    ext._ledger_page(app, "ledger", "page.html", ledger_page, None)
+    ext._ledger_page(app, "about", "page.html", other_page, None)
+    assert other_page["metatags"] == "<meta>"
+    head = ledger_page["metatags"]
+    assert head.startswith('<meta><script type="application/json" id="navcore-provenance">')
+    data = head[head.index(">", len("<meta><script")) + 1 : head.index("</script>")]
+    assert json.loads(data) == build_provenance().as_dict()
+
+
+def test_a_toy_book_build_names_its_build(tmp_path: Path) -> None:
+    """The real build tool on a toy book: the About table and every downloaded notebook name the build."""
+    from _toybook import build_command, build_env, make_book
+
+    book, config = make_book(tmp_path, {"b": {"1-quick.md": "1 + 1"}})
+    ext = ROOT / "book" / "_ext"
+    config.write_text(
+        config.read_text().replace(
+            "    toy_phases: book/_ext\n",
+            f"    toy_phases: book/_ext\n    book_downloads: {ext}\n    build_provenance: {ext}\n",
+        )
+    )
+    (book / "intro.md").write_text("# Toy\n\n```{build-provenance}\n```\n")
+    out = tmp_path / "out"
+    proc = subprocess.run(
+        build_command(book, config, out), cwd=tmp_path, env=build_env(tmp_path),
+        capture_output=True, text=True, timeout=600,
+    )  # fmt: skip
+    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    html = out / "_build" / "html"
+    expected = build_provenance()
+    notebook = json.loads((html / "_sources" / "b" / "1-quick.ipynb").read_text())
+    assert notebook["metadata"]["navcore_provenance"] == expected.as_dict()
+    about = (html / "intro.html").read_text()
+    assert expected.commit in about and expected.lock_sha256 in about
+    gate = subprocess.run([sys.executable, str(ROOT / "tools" / "check_book.py"), "html", str(html)])
+    assert gate.returncode == 0

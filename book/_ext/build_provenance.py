@@ -39,7 +39,7 @@ def provenance() -> BuildProvenance:
 
 
 def provenance_table(rows: list[tuple[str, str]]) -> nodes.table:
-    """A two-column table (what, value) with the values as literals."""
+    """A two-column table (what, value): hashes and versions as literals, words as text."""
     table = nodes.table(classes=["navcore-provenance"])
     group = nodes.tgroup(cols=2)
     table += group
@@ -56,7 +56,8 @@ def provenance_table(rows: list[tuple[str, str]]) -> nodes.table:
     for what, value in rows:
         row = nodes.row()
         row += nodes.entry("", nodes.paragraph(text=what))
-        row += nodes.entry("", nodes.paragraph("", "", nodes.literal(text=value)))
+        shown = nodes.Text(value) if " " in value else nodes.literal(text=value)
+        row += nodes.entry("", nodes.paragraph("", "", shown))
         body += row
     return table
 
@@ -79,7 +80,7 @@ def title_page_latex(p: BuildProvenance) -> str:
     r"""The provenance block under the title page's date (``\authoraddress``), in small type."""
     lines = [rf"{_latex_escape(what)} & \texttt{{{_latex_escape(value)}}}\\" for what, value in p.rows()]
     return (
-        "\\authoraddress{\\footnotesize\\begin{tabular}{@{}r@{\\enspace}l@{}}\n"
+        "\\authoraddress{\\scriptsize\\begin{tabular}{@{}r@{\\enspace}l@{}}\n"
         "\\multicolumn{2}{r}{\\itshape Built from}\\\\\n" + "\n".join(lines) + "\n\\end{tabular}}\n"
     )
 
