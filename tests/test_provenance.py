@@ -247,3 +247,17 @@ def test_a_toy_book_build_names_its_build(tmp_path: Path) -> None:
     assert expected.commit in about and expected.lock_sha256 in about
     gate = subprocess.run([sys.executable, str(ROOT / "tools" / "check_book.py"), "html", str(html)])
     assert gate.returncode == 0
+
+
+@pytest.mark.skipif(shutil.which("node") is None, reason="node is not installed")
+def test_the_ledger_pages_csv_download_has_the_command_lines_build_columns() -> None:
+    """Oracle: the page's script (run by node) against BuildProvenance.flat, key for key, in order."""
+    from navcore.ledger.render import _LEDGER_JS
+
+    start, end = _LEDGER_JS.index("  function buildColumns"), _LEDGER_JS.index("  function download")
+    p = build_provenance()
+    script = (
+        _LEDGER_JS[start:end] + f"\nconsole.log(JSON.stringify(buildColumns({json.dumps(p.as_dict())})));"
+    )
+    out = subprocess.run(["node", "-e", script], capture_output=True, text=True, check=True).stdout
+    assert list(json.loads(out).items()) == list(p.flat().items())
