@@ -211,7 +211,6 @@ def test_json_has_exactly_the_documented_fields():
         "readings",
         "tolerance",
         "status",
-        "expected_status",
         "note",
     }
     assert all(set(o) == fields for o in out)

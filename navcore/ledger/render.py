@@ -118,8 +118,8 @@ def rows(evals: Iterable[Evaluation]) -> list[dict[str, str]]:
     list of dict of str to str
         One row per evaluation, keys ``id``, ``locator``, ``quantity``, ``published`` (with
         its relation), ``reproduced``, ``band``, ``unit``, ``kind``, ``tolerance``,
-        ``policy``, ``status`` (derived), ``expected_status``, ``check`` (``"ok"`` or
-        ``"FAIL"``), ``note``, ``tolerance_reason``, ``erratum`` and ``discussed_in``.
+        ``policy``, ``status`` (derived), ``check`` (``"ok"`` or ``"FAIL"``: whether
+        the claim passes its own check), ``note``, ``tolerance_reason``, ``erratum`` and ``discussed_in``.
 
     Examples
     --------
@@ -151,7 +151,6 @@ def rows(evals: Iterable[Evaluation]) -> list[dict[str, str]]:
                 "tolerance": tol.describe() if hasattr(tol, "describe") else "",
                 "policy": getattr(tol, "policy", ""),
                 "status": e.status,
-                "expected_status": c.expected_status,
                 "check": "ok" if e.passes else "FAIL",
                 "note": e.note(),
                 "tolerance_reason": getattr(tol, "reason", ""),
