@@ -149,12 +149,38 @@ def test_html_gate_finds_helpers_and_notebooks_without_outputs(tmp_path):
         '<div class="highlight"><pre><span class="n">glue</span><span class="p">(</span>"k", 1)</pre>'
     )
     _page(tmp_path / "wf" / "a.html", cell)
-    nb = {"cells": [{"cell_type": "code", "execution_count": None, "outputs": [], "source": "1"}]}
+    nb = {
+        "cells": [{"cell_type": "code", "execution_count": None, "outputs": [], "source": "1"}],
+        "metadata": {"navcore_provenance": {"commit": "0" * 40, "lock_sha256": "f" * 64}},
+    }
     (tmp_path / "_sources" / "wf").mkdir(parents=True)
     (tmp_path / "_sources" / "wf" / "a.ipynb").write_text(__import__("json").dumps(nb))
     problems = check_book.check_html(tmp_path)
     assert len(problems) == 2
     assert "shows 'glue('" in problems[0] and "not executed" in problems[1]
+
+
+def test_html_gate_finds_developer_wording_in_text_data_and_notebook_outputs(tmp_path):
+    clean = "<p>The claim is consistent: the reading of c agrees.</p>"
+    _page(tmp_path / "wf" / "ok.html", clean)
+    _page(tmp_path / "wf" / "a.html", "<p>Verdict changed from reproduced: a cross-check.</p>")
+    _page(tmp_path / "ledger.html", '<script>var data = [{"expected_status": "consistent"}];</script>')
+    _page(tmp_path / "reference" / "api.html", "<p>Oracle: scipy, in a docstring of the API.</p>")
+    nb = {
+        "cells": [
+            {
+                "cell_type": "code",
+                "execution_count": 1,
+                "source": "x",
+                "outputs": [{"output_type": "stream", "name": "stdout", "text": "caught by the oracle"}],
+            }
+        ]
+    }
+    (tmp_path / "_sources" / "wf").mkdir(parents=True)
+    (tmp_path / "_sources" / "wf" / "a.ipynb").write_text(__import__("json").dumps(nb))
+    problems = check_book.check_wording(tmp_path)
+    assert [p.split(":")[0] for p in problems] == ["ledger.html", "wf/a.html", "_sources/wf/a.ipynb"]
+    assert "'Verdict changed'" in problems[1] and "'expected_status'" in problems[0]
 
 
 PROSE_PAGE = """
@@ -447,3 +473,21 @@ def test_pages_that_read_every_papers_claims_run_after_the_paper_chapters(tmp_pa
         ("WF", [str(tmp_path / "wf/01-a.md"), str(tmp_path / "wf/02-d.md")]),
     ]
     assert later == [("ACROSS", [str(tmp_path / "across/01-b.md")]), ("", [str(tmp_path / "intro.md")])]
+
+
+def test_registry_texts_carry_no_developer_wording():
+    """What the exports and claim rows show (quantities, notes, quotes, errata, input reasons)
+    carries no change history, regression pin or test bookkeeping: that lives in git and tests."""
+    from navcore import ledger
+    from navcore.ledger.inputs import all_inputs
+
+    texts = []
+    for c in ledger.claims():
+        texts += [(c.id, t) for t in (c.quantity, c.note, c.printed or "", c.locator)]
+    for e in ledger.errata():
+        texts += [(e.id, t) for t in (e.printed, e.finding, e.evidence, e.no_claim_reason or "")]
+    inputs = all_inputs()
+    assert len(inputs) > 100  # every paper module's declarations, loaded by ledger.claims()
+    texts += [(i.name, t) for i in inputs for t in (i.reason or "", i.quantity or "")]
+    found = [f"{who}: {m.group(0)!r}" for who, t in texts if (m := check_book.DEVELOPER_WORDING.search(t))]
+    assert not found, found

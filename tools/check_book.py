@@ -8,11 +8,16 @@ Usage::
 
 ``html``: no rendered code cell shows a build helper (``glue(...)``, ``show_figure``,
 ``book.setup()``, ``%matplotlib``); every downloadable notebook under ``_sources`` is
-executed (each code cell has an execution count) and carries outputs; and no library
+executed (each code cell has an execution count), carries outputs and names the build that
+made it (``navcore_provenance`` in its metadata, with the commit and the lock's hash); and no library
 identifier stands in running prose (see ``prose_identifiers``): a dotted ``navcore.`` path,
 a snake_case name or a call such as ``name()`` in the text of a paragraph, list item,
 definition, table cell, caption or admonition, outside code, links, math, cell outputs and
 claim tables, on every page but the API reference and the generated ones.
+It also finds developer wording in anything a reader sees or downloads (see
+``DEVELOPER_WORDING``): a claim's change history ("Verdict changed from ..."), the regression pin
+``expected_status``, or test and oracle bookkeeping, in the text and the embedded data of
+every page but the API reference and in the downloadable notebooks' outputs.
 ``latex``: the LaTeX log reports no overfull box wider than ``--max-overfull`` points, and
 no code listing shows a build helper.
 ``same``: every file of the two trees is byte-identical, except that PDFs are compared
@@ -35,6 +40,7 @@ HELPERS = re.compile(
     r"(?m)^\s*(?:glue\s*\(|(?:book\.)?show_figure\s*\(|book\.setup\s*\(|%matplotlib"
     r"|from (?:myst_nb|navcore\.book) import glue)"
 )
+PROVENANCE_KEY = "navcore_provenance"  # book/_ext/book_downloads.py writes it
 CELL_PRE = re.compile(
     r'class="cell_input[^"]*"[^>]*>\s*<div class="highlight-[^"]*"><div class="highlight"><pre>(.*?)</pre>',
     re.S,
@@ -145,6 +151,38 @@ def check_prose(root: Path) -> list[str]:
     return problems
 
 
+# change history, regression pins and test bookkeeping: for developers (git, tests), not readers
+DEVELOPER_WORDING = re.compile(
+    r"[Vv]erdict changed|\bwas (?:discrepant|inconsistent|consistent|reproduced|not-reproducible)\b"
+    r"|expected_status|\bOracle:|caught by the oracle|checked by the library's tests|\bpytest\b"
+)
+_SCRIPT_OR_STYLE = re.compile(r"<(style)\b.*?</\1>", re.S)
+
+
+def check_wording(root: Path) -> list[str]:
+    """Developer wording in what a reader sees: page text, embedded ledger data, notebook outputs."""
+    problems = []
+    for page in sorted(root.rglob("*.html")):
+        rel = page.relative_to(root).as_posix()
+        if NOT_PROSE.match(rel):
+            continue
+        text = _text(_SCRIPT_OR_STYLE.sub(" ", page.read_text(encoding="utf-8", errors="replace")))
+        for m in DEVELOPER_WORDING.finditer(text):
+            context = re.sub(r"\s+", " ", text[max(0, m.start() - 50) : m.end() + 50])
+            problems.append(f"{rel}: developer wording {m.group(0)!r}: ...{context}...")
+    for nb_path in sorted((root / "_sources").rglob("*.ipynb")):
+        nb = json.loads(nb_path.read_text(encoding="utf-8"))
+        outputs = json.dumps(
+            [o for c in nb.get("cells", []) for o in c.get("outputs", [])], ensure_ascii=False
+        )
+        for m in DEVELOPER_WORDING.finditer(outputs):
+            context = outputs[max(0, m.start() - 50) : m.end() + 50]
+            problems.append(
+                f"{nb_path.relative_to(root)}: developer wording {m.group(0)!r} in an output: ...{context}..."
+            )
+    return problems
+
+
 def check_html(root: Path) -> list[str]:
     problems = []
     for page in sorted(root.rglob("*.html")):
@@ -156,6 +194,10 @@ def check_html(root: Path) -> list[str]:
                 problems.append(f"{page.relative_to(root)}: a code cell shows {m.group(0).strip()!r}")
     for nb_path in sorted((root / "_sources").rglob("*.ipynb")):
         nb = json.loads(nb_path.read_text(encoding="utf-8"))
+        provenance = nb.get("metadata", {}).get(PROVENANCE_KEY)
+        if not isinstance(provenance, dict) or not {"commit", "lock_sha256"} <= set(provenance):
+            name = nb_path.relative_to(root)
+            problems.append(f"{name}: download does not name the build ({PROVENANCE_KEY})")
         code = [c for c in nb.get("cells", []) if c.get("cell_type") == "code"]
         if not code:
             continue
@@ -166,7 +208,7 @@ def check_html(root: Path) -> list[str]:
                 f"({unrun} of {len(code)} code cells without execution count, "
                 f"{sum(bool(c.get('outputs')) for c in code)} with outputs)"
             )
-    return problems + check_prose(root)
+    return problems + check_prose(root) + check_wording(root)
 
 
 def check_latex(root: Path, max_overfull: float = 3.0) -> list[str]:

@@ -1362,7 +1362,6 @@ class Evaluation:
             ],
             "tolerance": tol.as_dict() if isinstance(tol, Tolerance) else None,
             "status": self.status,
-            "expected_status": c.expected_status,
             "note": self.note(),
         }
 

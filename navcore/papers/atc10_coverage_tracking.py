@@ -1404,7 +1404,7 @@ CLAIMS = [
         "$1'$ restored so that it estimates the scalar clock, its first-step error variance is "
         "$\\gamma_1^{-2}\\sigma^2\\beta + (1 - \\beta/\\gamma_1)^2 s_1$, twice the "
         "$\\sigma^2\\gamma_1$ of (4.5.18) for Example I at $\\sigma_0$ = 5 ns; with $\\gamma_1 1'$ it is "
-        "exactly that (the optimal gain). Oracle: a seeded 400 000-run Monte Carlo of the first step.",
+        "exactly that (the optimal gain); a seeded 400 000-run Monte Carlo of the first step agrees.",
         discussed_in=PAGE_TRACKER,
     ),
     Claim(

@@ -389,8 +389,7 @@ ERRATA = [
         "the claims are inconsistent (not discrepant): a definition that differs between columns "
         "would remove the disagreement.",
         evidence="Covariance propagation of the full Table 2.5 error model, checked by a seeded "
-        "20000-run Monte Carlo of the same model with exact (Van Loan) discretisation "
-        "(checked by the library's tests).",
+        "20000-run Monte Carlo of the same model with exact (Van Loan) discretisation.",
         claims=("SP-tab2.5-grade-1", "SP-tab2.5-grade-0.5", "SP-tab2.5-grade-0.2"),
         discussed_in="sp/20-inertial-errors",
     ),
@@ -428,9 +427,8 @@ def _grade_claim(label: float, text: str) -> Claim:
         erratum="SP-E-grade-labels",
         note=_GRADE_NOTE + " About one third of the label across the latitude band: the column's "
         "entries would have to be about 3x larger (or its grade defined differently from the 10 "
-        "nmi/h column's). Verdict changed from discrepant: the definition is fitted to the 10 "
-        "nmi/h label and the latitude is assumed, so the disagreement does not rest on published "
-        "inputs only (SP-E-grade-labels).",
+        "nmi/h column's). The definition is fitted to the 10 nmi/h label and the latitude is "
+        "assumed, so the disagreement does not rest on published inputs only (SP-E-grade-labels).",
         discussed_in="sp/20-inertial-errors",
     )
 
@@ -460,9 +458,6 @@ _MISSION_NOTE = (
     "the rest of the scenario "
     "(track, satellites, receiver noise, clock, tuning) is fixed as listed on the page."
 )
-_WAS_BAND = (
-    "Verdict changed from consistent: the former +-25 % mission band was not fixed by the printed text."
-)
 
 CLAIMS = [
     _grade_claim(10.0, "10"),
@@ -486,7 +481,7 @@ CLAIMS = [
         "The book's value stays near 850-890 m across the turn-rate band (and for latitudes "
         "20-55 deg or pseudorange noise 0.5-3 m); 1131 m would need about 30 % more residual gyro "
         "drift after the in-flight calibration, i.e. a less observable (less manoeuvring or "
-        "shorter) calibration phase than the book's. " + _WAS_BAND,
+        "shorter) calibration phase than the book's.",
         discussed_in="sp/21-missions",
     ),
     Claim(
@@ -635,7 +630,7 @@ CLAIMS = [
         kind="cross-check",
         note="Arithmetic on the printed values (12.7): the paper's bookkeeping, not its model. The "
         "book's own sequential-outage run gives the ratio of SP-sec2.6.1-20min-ratio, close to 10 "
-        "rather than above it. Verdict changed from reproduced: a cross-check is at best consistent.",
+        "rather than above it. A cross-check is at best consistent.",
         discussed_in="sp/21-missions",
     ),
     Claim(
@@ -650,8 +645,8 @@ CLAIMS = [
         expected_status="consistent",
         kind="cross-check",
         note="159 s (loosely coupled, Fig. 2.8) = 2.65 min, which the caption's one decimal rounds "
-        "(half up) to 2.7; 153 s (tightly coupled) = 2.55 min. Verdict changed from reproduced: "
-        "arithmetic on printed values is a cross-check.",
+        "(half up) to 2.7; 153 s (tightly coupled) = 2.55 min. Arithmetic on printed values is a "
+        "cross-check.",
         discussed_in="sp/21-missions",
     ),
     Claim(
@@ -687,8 +682,7 @@ CLAIMS = [
         tolerance=EXACT,
         expected_status="consistent",
         kind="cross-check",
-        note="Arithmetic on the printed values (14.3). Verdict changed from reproduced: a "
-        "cross-check is at best consistent.",
+        note="Arithmetic on the printed values (14.3); a cross-check is at best consistent.",
         discussed_in="sp/21-missions",
     ),
     Claim(
@@ -706,8 +700,8 @@ CLAIMS = [
         "(with residual calibration errors) is larger. The book's value is about 1.7 m (0.06 %) "
         "above the printed 2750 across the whole latitude band, outside the half-metre of the "
         "printed digits; it agrees if the trailing zero is not significant (2750 rounded to tens), "
-        "or with a latitude outside 30-60 deg. Verdict changed from consistent: the tolerance is now "
-        "the printed digits (was +-3 %, not fixed by the text).",
+        "or with a latitude outside 30-60 deg. The tolerance is the printed digits: the text fixes "
+        "no wider one.",
         discussed_in="sp/21-missions",
     ),
     Claim(
@@ -761,8 +755,7 @@ CLAIMS = [
         "nominal value (0.1 m/s, 45 deg) is about twice the printed 50 %, but the band contains "
         "50 %: the ratio rests on unpublished inputs. The "
         "GPS-aided span before jamming (fixed at 30 min) moves it less (about 90-100 % for 15-60 "
-        "min). Verdict changed from not-reproducible: "
-        "the book computes it under declared assumptions.",
+        "min).",
         discussed_in="sp/21-missions",
     ),
     Claim(
