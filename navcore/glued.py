@@ -441,7 +441,9 @@ def kzl_dd_phase_sigma_mm() -> float:
     from navcore.gnss.carrier_phase import dd_covariance
     from navcore.papers.kzl_scenario import gnss_noise
 
-    return float(1e3 * math.sqrt(dd_covariance(2, gnss_noise().phase)[0, 0]))
+    phase = gnss_noise().phase
+    assert phase is not None  # the default mode uses every GPS noise
+    return float(1e3 * math.sqrt(dd_covariance(2, phase)[0, 0]))
 
 
 @register(
