@@ -51,7 +51,7 @@ IN.convention(
         "from a tenth of its ceiling down to 1e-6 of it": 0.1,
     },
     reason="'a strong threshold behavior' (Sec. 2.1) and 'a strong thresholding property' (Sec. 2.8) name "
-    "no level: the fall of a bound is measured from a fraction of its J -> infinity ceiling down to 1e-6 of "
+    "no level: the fall of a bound is measured from a fraction of its J -> infinity ceiling down to $10^{-6}$ of "
     "it, and the text does not say from which",
     quantity="start of a bound's fall, as a fraction of its ceiling",
 )
@@ -82,7 +82,7 @@ IN.assumed(
     high=0.5,
     reason="Sec. 2.3 samples the matched-filter output at twice the Nyquist rate, so neighbouring noise "
     "samples 1/(2B) apart are correlated; for a spectrum inside |f| < B/2 the correlation "
-    "int S(f) cos(pi f / B) df is positive. With correlation between neighbours only (a code of "
+    "$\\int S(f) \\cos(\\pi f / B)\\, df$ is positive. With correlation between neighbours only (a code of "
     "rectangular chips sampled twice per chip) it is 0.5, the largest such a process allows; 0.3 stands "
     "for chips shaped to put more power at the band edges",
     quantity="correlation of neighbouring matched-filter noise samples",
@@ -590,7 +590,7 @@ CLAIMS: list[Claim] = [
         tolerance=EXACT,
         expected_status="consistent",
         note="$t = 0$, every finite Table 2.1 design. Measured from a tenth of the ceiling, every curve "
-        "falls to 1e-6 of it within 7.6 dB; measured from 90 % of it, the $N_{FL}$ curves take 1.5-2 dB but "
+        "falls to $10^{-6}$ of it within 7.6 dB; measured from 90 % of it, the $N_{FL}$ curves take 1.5-2 dB but "
         "the $N_{ADL}$ curves 5 dB ($K = 10$), 6-10 dB ($K = 100$) and 29 dB ($K = 1000$, $P_{DL}$ = 0.999): "
         "their final approach to the ceiling is slow, which is also why the $K = 1000$ entry of Table 2.1 "
         "is ill-conditioned. 'Strong thresholding' names no level, so the paper is not accused.",
@@ -827,7 +827,7 @@ CLAIMS: list[Claim] = [
         tolerance=EXACT,
         expected_status="inconsistent",
         note="Neighbouring samples correlated, farther ones not (assumed 0.3-0.5; Genz integration of the "
-        "24-dimensional Gaussian orthant, 1e-3 allowing for its error): correlated samples leave a window "
+        "24-dimensional Gaussian orthant, $10^{-3}$ allowing for its error): correlated samples leave a window "
         "empty 2.3-4.2 times more often than the product assumes (Slepian's inequality), so F and G, and "
         "the bounds built on them, are approximations. A caveat, not a finding: the size needs the "
         "signature's spectrum, which the paper does not give, and read with B a one-sided baseband "
@@ -851,7 +851,7 @@ CLAIMS: list[Claim] = [
         oracle=lambda: _oracle_track_time_ratio() - 1.0 <= 1.0,
         oracle_tolerance=EXACT,
         note="An aircraft at $v = 600$ mph flying toward a synchronous satellite: successive receptions are "
-        "$\\alpha$ plus the range change apart, about $c/v$ = 1.1e6 times the printed bound. Only the range "
+        "$\\alpha$ plus the range change apart, about $c/v = 1.1 \\times 10^{6}$ times the printed bound. Only the range "
         "change is bounded by $v \\alpha / c$; the $\\alpha$'s cancel in (C.2)'s difference of differences, "
         "and (C.5)-(C.6) and $n_v$ follow the correct form.",
         discussed_in=PAGE,

@@ -689,7 +689,7 @@ CLAIMS = [
         paper="ATC10",
         locator="Sec. 3.8",
         quantity="the Gaussian approximation to the multiple-access noise is very poor in the tail "
-        "($P(n > 4 \\sigma)$ against the Gaussian tail, two-point $C$, N = 1e5, $\\tau/\\alpha$ = 2e-5)",
+        "($P(n > 4 \\sigma)$ against the Gaussian tail, two-point $C$, $N = 10^{5}$, $\\tau/\\alpha = 2 \\times 10^{-5}$)",
         published=True,
         unit="statement",
         compute=lambda: tail_ratio() > float(IN.very_poor_factor),
@@ -718,7 +718,7 @@ CLAIMS = [
         tolerance=printed("2e5")[1],
         expected_status="consistent",
         kind="cross-check",
-        note="1e5 x 5/2.5 = 1e5 x 4/2 = 2e5.",
+        note="$10^{5} \\times 5/2.5 = 10^{5} \\times 4/2 = 2 \\times 10^{5}$.",
         discussed_in=G_,
     ),
     _s(

@@ -66,8 +66,8 @@ IN.assumed(
     0.9,
     low=0.75,
     high=0.95,
-    quantity="exponent rho of the 1/f clock component (App. G), for the statements about rho < 1",
-    reason="App. G and Sec. 4.3 give only 1/2 < rho < 1, 'slightly less than one'; 0.75-0.95 spans "
+    quantity="exponent $\\rho$ of the 1/f clock component (App. G), for the statements about $\\rho < 1$",
+    reason="App. G and Sec. 4.3 give only 1/2 < $\\rho < 1$, 'slightly less than one'; 0.75-0.95 spans "
     "the flicker-like range where the Kalman-filter and Markov statements are made",
 )
 
@@ -1027,7 +1027,7 @@ CLAIMS = [
         tolerance=EXACT,
         expected_status="reproduced",
         note="$\\mathrm{std}(\\tau_n - \\tau_0 - n \\bar\\tau)/(n \\bar\\tau) = (\\sigma_0/\\bar\\tau) "
-        "\\sqrt{1 + 1/n}$: 5.0e-8 for $\\sigma_0$ = 50 ns, $\\bar\\tau$ = 1 s.",
+        "\\sqrt{1 + 1/n}$: $5.0 \\times 10^{-8}$ for $\\sigma_0 = 50$ ns, $\\bar\\tau = 1$ s.",
         discussed_in=PAGE_TRACKER,
     ),
     _s(
@@ -1079,7 +1079,7 @@ CLAIMS = [
         oracle_tolerance=EXACT,
         note="(4.5.9) gives $\\tau_n = n \\alpha_0 + \\sum w_i$; the printed sum has variance "
         "$(n + 1) \\sigma_0^2$, 0.10 of (4.3.1c)'s $(n + n^2) \\sigma_0^2$ at $n = 10$ (a Monte Carlo of "
-        "2e5 draws agrees). No printed number depends on the slip.",
+        "$2 \\times 10^{5}$ draws agrees). No printed number depends on the slip.",
         discussed_in=PAGE_TRACKER,
     ),
     _s(
@@ -1140,7 +1140,7 @@ CLAIMS = [
         compute=quadratic_growth_exponent,
         tolerance=printed("2", why="the exponent of (n - N)^2")[1],
         expected_status="reproduced",
-        note="Log-slope of (4.5.27) between m = 1e6 and 2e6 (Example I, 5 ns).",
+        note="Log-slope of (4.5.27) between $m = 10^{6}$ and $2 \\times 10^{6}$ (Example I, 5 ns).",
         discussed_in=PAGE_TRACKER,
     ),
     _s(
@@ -1544,7 +1544,7 @@ CLAIMS = [
         expected_status="consistent",
         note="$\\mathrm{Var}\\, x(t) = \\int S(f) |1 - e^{j 2 \\pi f t}|^2 df$ by quadrature at t = 1 and "
         "2 s: "
-        "the exponent over $2\\rho$ is 1 to 1e-11 for $\\rho$ across its assumed range (1e-6 allows for the "
+        "the exponent over $2\\rho$ is 1 to $10^{-11}$ for $\\rho$ across its assumed range ($10^{-6}$ allows for the "
         "quadrature).",
         discussed_in=PAGE_TRACKER,
     ),

@@ -66,7 +66,7 @@ IN_SIM.convention(
         "the attitude error as a whole (the root sum square of the three angles)": "whole",
     },
     reason="Sec. 3.6 says the attitude results of tight coupling are better, not which angles; in the "
-    "straight and level flight of Table 1 the heading is unobservable from code and delta range",
+    "straight and level flight of Table 1 the heading is unobservable from code and $\\delta$ range",
 )
 
 
@@ -358,7 +358,7 @@ CLAIMS = [
         tolerance=EXACT,
         expected_status="consistent",
         note="Read per angle the heading cannot be better: in the straight and level flight of Table 1 "
-        "the heading error is unobservable from code and delta range (8 satellites, published inputs "
+        "the heading error is unobservable from code and $\\delta$ range (8 satellites, published inputs "
         "only), so no filter removes any of it (the Monte Carlo heading RMS of TC and of the INS agree "
         "on common random numbers). The paper says 'attitude', and read as the attitude error as a "
         "whole (the root sum square of the three angles) tight coupling removes a large share of it, "
