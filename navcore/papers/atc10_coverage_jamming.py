@@ -573,7 +573,7 @@ CLAIMS: list[Claim] = [
         "$J/(P_0 B \\tau)$",
         lambda: _threshold_behaviour(True),
         "Both bounds at $t = 0$, $P_{DL}$ 0.9 and 0.999: the fall from 90 % of the $J \\to \\infty$ "
-        "ceiling down to 1e-6 of it takes 1.1-1.3 dB, well within the 10 dB (or 5 dB) read as 'very "
+        "ceiling down to $10^{-6}$ of it takes 1.1-1.3 dB, well within the 10 dB (or 5 dB) read as 'very "
         "rapidly'; the readings from half or a tenth of the ceiling are shown.",
         PAGE_K1,
     ),
@@ -603,10 +603,10 @@ CLAIMS: list[Claim] = [
         "detector",
         _coherent_beats_envelope,
         "At equal $p_f$ and energy: coherent $p_d = Q(Q^{-1}(p_f) - d)$ against the envelope (Rician) "
-        "$p_d = Q_1(d, \\sqrt{-2 \\ln p_f})$ (noncentral chi-square, 2 degrees of freedom), $d$ from 0.5 to "
+        "$p_d = Q_1(d, \\sqrt{-2 \\ln p_f})$ (noncentral $\\chi$-square, 2 degrees of freedom), $d$ from 0.5 to "
         "10 "
         "and $p_f$ "
-        "from 1e-9 to 0.3.",
+        "from $10^{-9}$ to 0.3.",
         PAGE,
     ),
     _statement(
@@ -648,7 +648,7 @@ CLAIMS: list[Claim] = [
         "$N_{FL} = (N_T - N) \\exp[(Kt + 1) \\ln F(p_f)]$ with $p_f$ of (2.7.1)",
         lambda: _composition(0),
         "navcore's log-domain bound against the printed formulas typed with plain floats (erf, powers) at "
-        "K = 1, 10, 100 and t = 0-0.1, x from -16 to 0 dB, to 1e-6 relative; at t = 0 the exponent is 1, "
+        "K = 1, 10, 100 and t = 0-0.1, x from -16 to 0 dB, to $10^{-6}$ relative; at t = 0 the exponent is 1, "
         "so (B.11) gives (B.8).",
         PAGE,
     ),
@@ -659,7 +659,7 @@ CLAIMS: list[Claim] = [
         lambda: _composition(1),
         "As for $N_{FL}$: the printed $K = 1$ and $K > 1$ lines ($P_{DL}$ from (2.4.2) with its $\\nu$ "
         "maximiser) typed "
-        "with plain floats, against navcore's log-domain bound, to 1e-6 relative where nothing underflows.",
+        "with plain floats, against navcore's log-domain bound, to $10^{-6}$ relative where nothing underflows.",
         PAGE,
     ),
     Claim(
@@ -876,7 +876,7 @@ CLAIMS: list[Claim] = [
         "$p_f$ (D.16)",
         _appendix_d_algebra,
         "sympy solves the log-likelihood-ratio threshold exactly; (D.9), (D.13) and (D.16) are compared "
-        "with the Gaussian tails at 20 random (E, J/B, lambda) points to 1e-12.",
+        "with the Gaussian tails at 20 random (E, J/B, $\\lambda$) points to $10^{-12}$.",
         PAGE,
     ),
     _statement(
@@ -888,7 +888,7 @@ CLAIMS: list[Claim] = [
         _d17_matches_direct,
         "navcore's $p_f$ against the threshold set from $p_d$ and the noise-only Gaussian tail of a standard "
         "library, with "
-        "E = 10 mJ and B = 10 MHz, at four $p_d$ and five J, to 1e-9 relative; and the two limits.",
+        "E = 10 mJ and B = 10 MHz, at four $p_d$ and five J, to $10^{-9}$ relative; and the two limits.",
         PAGE,
     ),
 ]

@@ -636,7 +636,7 @@ def _k1000_beyond_practical() -> bool:
 
 #: Reading resolution of the lost Figs. 2.1-2.16 on their dB axis: Tables 1.1 and 2.1 print whole dB.
 FIGURE_DB_RESOLUTION = 1.0
-_FIGURE_DB_AXIS = "J/(P0 B tau) in dB; the whole-dB entries are read to 1 dB (the figures are lost)"
+_FIGURE_DB_AXIS = "$J/(P_0 B \\tau)$ in dB; the whole-dB entries are read to 1 dB (the figures are lost)"
 
 
 def _table11_erp_misses(direct: bool) -> list[float]:

@@ -1211,7 +1211,7 @@ def _table_4_3_tolerance(text: str, column: str) -> Tolerance:
         return figure_reading(
             max(half, 0.0025),
             figure="Fig. 4.1",
-            axis="psi on a 0-1 axis read to 0.0025, or the printed half digit where that is coarser",
+            axis="$\\psi$ on a 0-1 axis read to 0.0025, or the printed half digit where that is coarser",
         )
     if column in ("sd0", "sdN", "sdN1") and len(text) > 3 and text.endswith("0"):
         return printed(

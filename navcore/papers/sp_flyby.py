@@ -787,9 +787,9 @@ def _calibration_rather_than_resistance() -> bool:
 _MODEL = (
     "Jammer flyby of the page: seven satellites of a 30-satellite constellation (the longitude "
     "chooses the geometry), free-space jammer noise density fitted so that the loosely coupled "
-    "receiver (four codes) blacks out for the paper's 20 min, antenna pattern (zenith C/N0, gain "
+    "receiver (four codes) blacks out for the paper's 20 min, antenna pattern (zenith $C/N_0$, gain "
     "drop to the horizon, roll-off shape), Sec. 2.5 loss and reacquisition rules: carrier lost "
-    "below 19 dB-Hz or beyond 90 deg of phase error (3-sigma jitter of its bandwidth plus the "
+    "below 19 dB-Hz or beyond 90 deg of phase error (3-$\\sigma$ jitter of its bandwidth plus the "
     "dynamic error the IMU leaves), code below 18 dB-Hz or beyond half a chip, back at 21/22 dB-Hz "
     "after the search of the range and range-rate uncertainty."
 )

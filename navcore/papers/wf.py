@@ -1112,12 +1112,12 @@ APPROX = prose("approximately", why="'approximately 1 % relative to the nominal 
 FIG1_READING = figure_reading(
     0.5,
     figure="Fig. 1",
-    axis="improvement 20 log10(sigma_D / sigma_DN) in dB; curves closer than half a dB are not told apart",
+    axis="improvement $20 \\log_{10}(\\sigma_D / \\sigma_{DN})$ in dB; curves closer than half a dB are not told apart",
 )
 FIG2_READING = figure_reading(
     0.5,
     figure="Fig. 2",
-    axis="improvement 20 log10(sigma_D / sigma_DN) in dB; curves closer than half a dB are not told "
+    axis="improvement $20 \\log_{10}(\\sigma_D / \\sigma_{DN})$ in dB; curves closer than half a dB are not told "
     "apart (the 3-satellite markers lie on the 1-satellite lines)",
 )
 
