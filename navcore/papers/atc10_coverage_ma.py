@@ -599,7 +599,8 @@ CLAIMS = [
         "Eqs. (3.4.1)-(3.4.6), (E.3)",
         "characteristic function (3.4.6) gives the cumulants",
         cumulants_match,
-        "$4 \\times 10^{5}$ samples, uniform C at $1/\\sqrt{3b} = 3$: $\\kappa_2$ within 1 %, $\\kappa_4$ within 10 %.",
+        "$4 \\times 10^{5}$ samples, uniform C at $1/\\sqrt{3b} = 3$: $\\kappa_2$ within 1 %, $\\kappa_4$ "
+        "within 10 %.",
         N_,
         status="reproduced",
     ),
@@ -689,7 +690,8 @@ CLAIMS = [
         paper="ATC10",
         locator="Sec. 3.8",
         quantity="the Gaussian approximation to the multiple-access noise is very poor in the tail "
-        "($P(n > 4 \\sigma)$ against the Gaussian tail, two-point $C$, $N = 10^{5}$, $\\tau/\\alpha = 2 \\times 10^{-5}$)",
+        "($P(n > 4 \\sigma)$ against the Gaussian tail, two-point $C$, $N = 10^{5}$, "
+        "$\\tau/\\alpha = 2 \\times 10^{-5}$)",
         published=True,
         unit="statement",
         compute=lambda: tail_ratio() > float(IN.very_poor_factor),
@@ -771,7 +773,8 @@ CLAIMS = [
         "Appendix E, (E.1)",
         "N - 1 may be replaced by N",
         appe_n_minus_one,
-        "The relative difference is exactly $1/N$: $10^{-3}$, $10^{-5}$ and $10^{-7}$ at $N = 10^{3}$, $10^{5}$ (Sec. 3.6) and $10^{7}$; "
+        "The relative difference is exactly $1/N$: $10^{-3}$, $10^{-5}$ and $10^{-7}$ at $N = 10^{3}$, "
+        "$10^{5}$ (Sec. 3.6) and $10^{7}$; "
         "Appendix E is about the limit in N.",
         N_,
     ),

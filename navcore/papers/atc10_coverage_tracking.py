@@ -1138,7 +1138,7 @@ CLAIMS = [
         published=2.0,
         unit="",
         compute=quadratic_growth_exponent,
-        tolerance=printed("2", why="the exponent of (n - N)^2")[1],
+        tolerance=printed("2", why="the exponent of $(n - N)^2$")[1],
         expected_status="reproduced",
         note="Log-slope of (4.5.27) between $m = 10^{6}$ and $2 \\times 10^{6}$ (Example I, 5 ns).",
         discussed_in=PAGE_TRACKER,
@@ -1544,7 +1544,8 @@ CLAIMS = [
         expected_status="consistent",
         note="$\\mathrm{Var}\\, x(t) = \\int S(f) |1 - e^{j 2 \\pi f t}|^2 df$ by quadrature at t = 1 and "
         "2 s: "
-        "the exponent over $2\\rho$ is 1 to $10^{-11}$ for $\\rho$ across its assumed range ($10^{-6}$ allows for the "
+        "the exponent over $2\\rho$ is 1 to $10^{-11}$ for $\\rho$ across its assumed range ($10^{-6}$ "
+        "allows for the "
         "quadrature).",
         discussed_in=PAGE_TRACKER,
     ),

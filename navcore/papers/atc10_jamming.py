@@ -65,7 +65,11 @@ IN = InputSet("ATC10", "jamming")
 IN.published("bandwidth_hz", 10e6, unit="Hz", locator="Sec. 2.7", quantity="signal bandwidth B")
 IN.published("repetition_s", 1.0, unit="s", locator="Sec. 2.7", quantity="pulse repetition period $\\alpha$")
 IN.published(
-    "differential_delay_s", 24e-3, unit="s", locator="Sec. 2.7", quantity="differential satellite delay $\\beta$"
+    "differential_delay_s",
+    24e-3,
+    unit="s",
+    locator="Sec. 2.7",
+    quantity="differential satellite delay $\\beta$",
 )
 IN.published("max_speed_mph", 600.0, unit="mph", locator="Sec. 2.8", quantity="maximum aircraft speed v")
 IN.published("airborne_fraction", 0.1, locator="Sec. 2.7", quantity="$N / N_T$, the airborne fraction")
@@ -80,19 +84,30 @@ IN.published(
     "pulse_power_dbw", 30.0, unit="dBW", locator="Sec. 2.7 ('e.g. P0 = 30 dbw')", quantity="pulse power $P_0$"
 )
 IN.published(
-    "pulse_duration_s", 10e-6, unit="s", locator="Sec. 2.7 ('tau = 10 usec')", quantity="pulse duration $\\tau$"
+    "pulse_duration_s",
+    10e-6,
+    unit="s",
+    locator="Sec. 2.7 ('tau = 10 usec')",
+    quantity="pulse duration $\\tau$",
 )
 IN.published(
-    "adl_level", 0.01, locator="Sec. 2.7", quantity="failure level of $N_{ADL}$, as a fraction of $N_T$ ($0.01 N_T$)"
+    "adl_level",
+    0.01,
+    locator="Sec. 2.7",
+    quantity="failure level of $N_{ADL}$, as a fraction of $N_T$ ($0.01 N_T$)",
 )
 IN.published(
-    "fl_level", 0.9, locator="Sec. 2.7", quantity="failure level of $N_{FL}$, as a fraction of $N_T$ ($0.9 N_T$)"
+    "fl_level",
+    0.9,
+    locator="Sec. 2.7",
+    quantity="failure level of $N_{FL}$, as a fraction of $N_T$ ($0.9 N_T$)",
 )
 IN.convention(
     "fl_fraction_of_level",
     0.99,
     alternative=0.999,
-    reason="$0.9 N_T$ is the supremum $1 - N/N_T$ of $N_{FL}$, approached as J grows but never reached (the gap "
+    reason="$0.9 N_T$ is the supremum $1 - N/N_T$ of $N_{FL}$, approached as J grows but never reached "
+    "(the gap "
     "is below $10^{-10^{5}}$ at any J the figures show); the book takes the level as 99 % of it",
     quantity="fraction of the printed $N_{FL}$ level used as the failure level",
 )
@@ -240,10 +255,11 @@ IN.fitted(
     unit="deg^2",
     fitted_to=("ATC10-sec2.7-20deg",),
     reason="the paper gives no rule relating beamwidth to gain; the constant C of the pencil-beam rule "
-    "$G = C/\\theta^2$ solved from Sec. 2.7's 20 degrees for 33 dBW from 30 W ($C = 400 \\times 66.5$). Textbook "
+    "$G = C/\\theta^2$ solved from Sec. 2.7's 20 degrees for 33 dBW from 30 W ($C = 400 \\times 66.5$). "
+    "Textbook "
     "constants range from about 26 000 to 33 000 for practical dishes (41 253 for an ideal beam), and "
     "only 26 400-28 000 fits Sec. 2.7 and Table 1.1's K = 10-1000 rows together: a fit, not a reading",
-    quantity="constant of the pencil-beam rule, beamwidth^2 x gain",
+    quantity="constant of the pencil-beam rule, beamwidth² × gain",
 )
 IN.published("toa_rms_error_s", 50e-9, unit="s", locator="Sec. 1.3", quantity="rms time-of-arrival error")
 IN.published("update_interval_s", 1.0, unit="s", locator="Sec. 1.3", quantity="position update interval")
@@ -734,7 +750,8 @@ ERRATA = [
         "two are the same family with t replaced by 1 - t.",
         evidence="Exact binomial probabilities: at the $K = 10$, $P_{DL} = 0.999$ design point the literal "
         "(A.9) "
-        "rule with t = 0 detects with probability $q^K = 9.6 \\times 10^{-4}$, far below the bound 0.999 that holds "
+        "rule with t = 0 detects with probability $q^K = 9.6 \\times 10^{-4}$, far below the bound 0.999 "
+        "that holds "
         "(with equality) for the (A.11) rule.",
         claims=("ATC10-eqA.9-rule-at-design",),
         discussed_in=PAGE,
@@ -1124,7 +1141,8 @@ CLAIMS: list[Claim] = [
         tolerance=EXACT,
         expected_status="reproduced",
         kind="statement",
-        note="$p_d = 0.7$ ($p_d^4 = 0.24$), $t = 0.2$: the bound increases with K and exceeds $1 - 10^{-12}$ at "
+        note="$p_d = 0.7$ ($p_d^4 = 0.24$), $t = 0.2$: the bound increases with K and exceeds "
+        "$1 - 10^{-12}$ at "
         "K = "
         "$10^{4}$.",
         discussed_in=PAGE,
@@ -1152,7 +1170,8 @@ CLAIMS: list[Claim] = [
         erratum=E_RULE,
         oracle=lambda: ((1 - (1 - 0.999) ** (1 / 10)) ** 0.25) ** 40 >= 0.999,
         oracle_tolerance=EXACT,
-        note="Under (A.9) with $t = 0$ every list must be non-empty: probability $q^K = 9.5 \\times 10^{-4}$ at the "
+        note="Under (A.9) with $t = 0$ every list must be non-empty: probability "
+        "$q^K = 9.5 \\times 10^{-4}$ at the "
         "design point, far below 0.999. The bound holds for the rule of (A.11), which is what the paper "
         "uses everywhere else. The design point is Table 2.1's, a test point: (A.9) prints no number.",
         discussed_in=PAGE,
@@ -1193,7 +1212,8 @@ CLAIMS: list[Claim] = [
         oracle_tolerance=EXACT,
         note="Evaluated at the $K = 1$, $P_{DL} = 0.88$ threshold, $p_f \\approx 10^{-6}$: "
         "$(1 - p_f)^{2 \\times 10^7} \\approx e^{-20}$ where $1 - (1 - p_f)^{2 \\times 10^7} \\approx 1$, so "
-        "the printed form is $e^{-19.6}$ times $F$ ($10^{-6}$ in the logarithm allows for rounding only). Checked "
+        "the printed form is $e^{-19.6}$ times $F$ ($10^{-6}$ in the logarithm allows for rounding only). "
+        "Checked "
         "independently with 40-digit arbitrary-precision arithmetic.",
         discussed_in=PAGE,
     ),
@@ -1215,8 +1235,10 @@ CLAIMS: list[Claim] = [
         oracle_tolerance=monte_carlo(
             abs=6e-3,
             runs=ERF_MC_SAMPLES,
-            why="$p_f = Q(1) = 0.159$ has a standard error of $3.7 \\times 10^{-4}$ over $10^{6}$ samples, i.e. $1.1 \\times 10^{-3}$ on c "
-            "($dc/dp_f = 2.9$); 4 standard errors are $4.3 \\times 10^{-3}$, and the simulated threshold quantile adds about "
+            why="$p_f = Q(1) = 0.159$ has a standard error of $3.7 \\times 10^{-4}$ over $10^{6}$ samples, "
+            "i.e. $1.1 \\times 10^{-3}$ on c "
+            "($dc/dp_f = 2.9$); 4 standard errors are $4.3 \\times 10^{-3}$, and the simulated threshold "
+            "quantile adds about "
             "as much in quadrature: $6 \\times 10^{-3}$",
         ),
         note="navcore's $p_f$ (App. D, D.17) inverted for $c$ at $x$ = 0 dB, $p_d = 0.5$ gives "
@@ -1547,7 +1569,8 @@ for _i, (_k, _erp, _rf, _dia, _bw) in enumerate(TABLE_1_1):
                 erratum=E_BEAM,
                 oracle=_oracle_k1_beamwidth_scaled_deg,
                 oracle_tolerance=Tolerance(
-                    reason="$70 \\lambda/D$ and the pencil-beam rule scale alike (beamwidth as $1/\\sqrt{G}$): "
+                    reason="$70 \\lambda/D$ and the pencil-beam rule scale alike (beamwidth as "
+                    "$1/\\sqrt{G}$): "
                     "floating point",
                     rel=1e-9,
                     policy="exact",

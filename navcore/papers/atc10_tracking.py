@@ -152,7 +152,11 @@ IN.published(
     quantity="clock parameter $\\sigma_0 = 0.1 \\sigma$",
 )
 IN.published(
-    "sigma0_mid_ns", 50.0, locator="Sec. 4.6, Table 4.3", unit="ns", quantity="clock parameter $\\sigma_0 = \\sigma$"
+    "sigma0_mid_ns",
+    50.0,
+    locator="Sec. 4.6, Table 4.3",
+    unit="ns",
+    quantity="clock parameter $\\sigma_0 = \\sigma$",
 )
 IN.published(
     "sigma0_high_ns",
@@ -187,7 +191,7 @@ for _ex in EXAMPLES:
             f"tab42_ex{_ex}_{_col}",
             float(TABLE_4_2[_ex][_col]),
             locator="Table 4.2",
-            quantity=f"Example {_ex}: {COLUMN_NAMES[_col]}",
+            quantity=f"Example {_ex}: {_COLUMN_MATH[_col]}",
         )
 for _ex in EXAMPLES:
     for _col in COLUMNS:
@@ -197,7 +201,7 @@ for _ex in EXAMPLES:
             0.0,
             low=-_half,
             high=_half,
-            quantity=f"Example {_ex}: {COLUMN_NAMES[_col]}, the paper's unrounded value minus the printed "
+            quantity=f"Example {_ex}: {_COLUMN_MATH[_col]}, the paper's unrounded value minus the printed "
             + TABLE_4_2[_ex][_col],
             reason="Table 4.3 was computed from Table 4.2 before its rounding to the printed digits; the "
             "unrounded value lies within half a unit of the last printed digit (the range)",
@@ -227,7 +231,8 @@ IN.convention(
     alternative=0.299792458 / 0.3048,
     unit="ft/ns",
     quantity="speed of light used to turn ns into ft",
-    reason="Table 4.3 prints $\\sigma\\,[\\mathrm{ns}] \\cdot \\sqrt{\\dots}$ as ft, i.e. c = 1 ft/ns; the true c is 0.98357 ft/ns",
+    reason="Table 4.3 prints $\\sigma\\,[\\mathrm{ns}] \\cdot \\sqrt{\\dots}$ as ft, i.e. c = 1 ft/ns; the "
+    "true c is 0.98357 ft/ns",
 )
 IN.convention(
     "longitude_sign",
@@ -291,7 +296,8 @@ IN.fitted(
     9.235,
     fitted_to=tuple(f"ATC10-tab4.2-ex{ex}-{col}-fitted" for ex in EXAMPLES for col in COLUMNS),
     quantity="effective satellite orbit radius over Earth radius",
-    reason="the one shape parameter $r_{\\mathrm{orbit}}/R_E$ (aircraft on the surface) that best reproduces the ten "
+    reason="the one shape parameter $r_{\\mathrm{orbit}}/R_E$ (aircraft on the surface) that best "
+    "reproduces the ten "
     "printed Table 4.2 numbers (least squares on log ratios, col. 5 with the printed formula; "
     "solve_radius_ratio): about 59 000 km, a 39-hour orbit, not the synchronous orbit of Sec. 4.1 (6.6 "
     "Earth radii); shown, never a reading of the text",

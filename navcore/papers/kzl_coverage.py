@@ -406,7 +406,8 @@ CLAIMS = [
         compute=_length_mm_cm_level,
         tolerance=EXACT,
         expected_status="consistent",
-        note="$dh = R \\sin\\theta \\tan\\theta \\, dB / B$: about 1.2 mm for B = 200 m at 30 deg; 0.2-4.4 mm over "
+        note="$dh = R \\sin\\theta \\tan\\theta \\, dB / B$: about 1.2 mm for B = 200 m at 30 deg; 0.2-4.4 "
+        "mm over "
         "the band. The paper names units, not a value: 'mm/cm accuracy' read as within half a decade (or "
         "a decade) of 1 mm to 1 cm. The 'cm' of the text fits longer baselines or airborne geometries.",
         discussed_in=PAGE0,
@@ -454,7 +455,8 @@ CLAIMS = [
         compute=_uncorrelated_after_10s,
         tolerance=EXACT,
         expected_status="consistent",
-        note="$\\exp(-10/\\tau)$: 0.007 for $\\tau = 2$ s, $5 \\times 10^{-5}$ to 0.14 for $\\tau = 1$-5 s. The paper "
+        note="$\\exp(-10/\\tau)$: 0.007 for $\\tau = 2$ s, $5 \\times 10^{-5}$ to 0.14 for $\\tau = 1$-5 "
+        "s. The paper "
         "prints no correlation: 'nearly uncorrelated' is the book's reading, below 1/e (or 0.1).",
         discussed_in=PAGE0,
     ),
@@ -479,7 +481,8 @@ CLAIMS = [
         id="KZL-eq9-quaternion",
         paper="KZL",
         locator="Eq. (9)",
-        quantity="the quaternion rate q' = q (x) [0, w]/2 integrates to the rotation of the body rate",
+        quantity="the quaternion rate $\\dot q = q \\otimes [0, \\omega]/2$ integrates to the rotation of "
+        "the body rate",
         published=True,
         unit="statement",
         kind="statement",
@@ -510,7 +513,8 @@ CLAIMS = [
         id="KZL-eq11-bracket",
         paper="KZL",
         locator="Eq. (11)",
-        quantity="the explicit matrix of Eq. (11) is the cross-product matrix its bracket [a x] names",
+        quantity="the explicit matrix of Eq. (11) is the cross-product matrix its bracket $[a \\times]$ "
+        "names",
         published=True,
         unit="statement",
         kind="statement",

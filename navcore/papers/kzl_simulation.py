@@ -221,7 +221,7 @@ _C16 = printed("3", why="the paper prints an integer bound")
 _C17_MC = mc_tolerance(
     rel=round(3.0 / np.sqrt(2 * N_RUNS), 3),
     runs=N_RUNS,
-    why="three standard errors (1/sqrt(2 N) = 12.9 % each) of the book's 30-run RMS; the paper's "
+    why="three standard errors ($1/\\sqrt{2 N}$ = 12.9 % each) of the book's 30-run RMS; the paper's "
     "simulation is a single run",
 )
 _ABOUT = prose("about", why="'about 1 km and 15 m/s after 3 minutes', read per horizontal axis")

@@ -653,7 +653,8 @@ CLAIMS = [
         ),
         tolerance=_js54[1],
         expected_status="consistent",
-        note="$J/S = 10 \\log_{10}(Q R_c (1/\\gamma - 1/(C/N_0)))$ with the Sec. 2.5 tracking threshold $\\gamma = 19$ "
+        note="$J/S = 10 \\log_{10}(Q R_c (1/\\gamma - 1/(C/N_0)))$ with the Sec. 2.5 tracking threshold "
+        "$\\gamma = 19$ "
         "dB(-Hz), the P(Y) code (convention), the 20-MHz jammer's Q and an assumed unjammed $C/N_0$ "
         "(signal -163 dBW, noise -204 dBW/Hz nominal).",
         discussed_in=PAGE,

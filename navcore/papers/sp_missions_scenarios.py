@@ -254,7 +254,8 @@ IN.assumed(
     unit="m²/s",
     quantity="receiver clock phase (bias) noise PSD",
     reason="Table 2.4 gives the clock's initial errors, not its noise. $S_f = h_0 c^2 / 2$ of an "
-    "oven-controlled crystal ($h_0 = 8 \\times 10^{-20}$, nominal) up to a temperature-compensated one ($h_0 = 2 \\times 10^{-19}$): "
+    "oven-controlled crystal ($h_0 = 8 \\times 10^{-20}$, nominal) up to a temperature-compensated one "
+    "($h_0 = 2 \\times 10^{-19}$): "
     "Brown & Hwang, Table 9.2",
 )
 IN.assumed(
@@ -264,7 +265,8 @@ IN.assumed(
     high=0.0355,
     unit="m²/s³",
     quantity="receiver clock frequency (drift) noise PSD",
-    reason="$S_g = 2 \\pi^2 h_{-2} c^2$ of an oven-controlled crystal ($h_{-2} = 4 \\times 10^{-23}$, nominal) up to a "
+    reason="$S_g = 2 \\pi^2 h_{-2} c^2$ of an oven-controlled crystal ($h_{-2} = 4 \\times 10^{-23}$, "
+    "nominal) up to a "
     "temperature-compensated one ($h_{-2} = 2 \\times 10^{-20}$): Brown & Hwang, Table 9.2",
 )
 IN.assumed(

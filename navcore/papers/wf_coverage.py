@@ -239,7 +239,8 @@ CLAIMS = [
         expected_status="reproduced",
         note="$H_G$ of Eq. (25) (three and one satellite) with the printed "
         "$f_{L1}/c$, $R_G = \\sigma_G^2 I$, "
-        "20 seeded priors each (the matrix inversion lemma); agreement to $10^{-9}$ relative, floating point.",
+        "20 seeded priors each (the matrix inversion lemma); agreement to $10^{-9}$ relative, floating "
+        "point.",
         discussed_in=PAGE_IV,
     ),
     Claim(
