@@ -3,7 +3,9 @@
 ``python -m navcore ledger [--paper KEY] [--json] [--csv] [--jobs N] [--claim ID]``
     print the verification ledger, evaluated on every core (``--jobs 1``: in this process;
     the same result bit for bit); ``--claim ID`` evaluates one claim and says how long it
-    took; exit status 1 if any claim fails its own check.
+    took; exit status 1 if any claim fails its own check. The JSON export is an object
+    ``{"provenance": ..., "claims": [...]}``; every CSV row carries the same ``build_*``
+    columns (commit, clean or dirty tree, commit date, lock hash, versions).
 ``python -m navcore figures [--out DIR] [--only ID ...]``
     write every registered figure to ``DIR`` (default ``figures/``) as SVG and PNG.
 """
@@ -11,8 +13,6 @@
 from __future__ import annotations
 
 import argparse
-import csv
-import io
 import sys
 from pathlib import Path
 
@@ -21,7 +21,8 @@ def _cmd_ledger(args: argparse.Namespace) -> int:
     import time
 
     from navcore import ledger
-    from navcore.ledger.render import json_dump, rows, text_table
+    from navcore.ledger.render import csv_export, json_export, text_table
+    from navcore.provenance import build_provenance
 
     start = time.perf_counter()
     if args.claim:
@@ -29,20 +30,14 @@ def _cmd_ledger(args: argparse.Namespace) -> int:
     else:
         evals = ledger.evaluations(paper=args.paper, n_jobs=args.jobs)
     elapsed = time.perf_counter() - start
+    provenance = build_provenance()  # the exports name the commit, lock and versions
     if args.json_out:
-        from pathlib import Path
-
         Path(args.json_out).parent.mkdir(parents=True, exist_ok=True)
-        Path(args.json_out).write_text(json_dump(evals) + "\n")
+        Path(args.json_out).write_text(json_export(evals, provenance) + "\n")
     if args.json:
-        print(json_dump(evals))
+        print(json_export(evals, provenance))
     elif args.csv:
-        buf = io.StringIO()
-        data = rows(evals)
-        writer = csv.DictWriter(buf, fieldnames=list(data[0]) if data else ["id"])
-        writer.writeheader()
-        writer.writerows(data)
-        sys.stdout.write(buf.getvalue())
+        sys.stdout.write(csv_export(evals, provenance))
     else:
         print(text_table(evals))
     failing = [e for e in evals if not e.passes]
@@ -69,9 +64,11 @@ def main(argv: list[str] | None = None) -> int:
     p_ledger = sub.add_parser("ledger", help="print the verification ledger")
     p_ledger.add_argument("--paper", choices=["WF", "SP", "ATC10", "KZL"], default=None)
     fmt = p_ledger.add_mutually_exclusive_group()
-    fmt.add_argument("--json", action="store_true", help="JSON array of claim objects")
-    fmt.add_argument("--csv", action="store_true", help="CSV rows")
-    p_ledger.add_argument("--json-out", default=None, help="also write the JSON array to this file")
+    fmt.add_argument(
+        "--json", action="store_true", help="JSON: the build's provenance and the array of claim objects"
+    )
+    fmt.add_argument("--csv", action="store_true", help="CSV rows, each with the build's provenance columns")
+    p_ledger.add_argument("--json-out", default=None, help="also write the JSON export to this file")
     p_ledger.add_argument(
         "--claim",
         default=None,

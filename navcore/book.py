@@ -45,6 +45,7 @@ __all__ = [
     "errata_list",
     "findings_table",
     "format_number",
+    "glue",
     "ledger_table",
     "number_formatter",
     "quantity_table",
@@ -609,6 +610,43 @@ def chapter_summary(paper: str) -> Markdown:
         + "</div>"
     )
     return Markdown(md, html_text)
+
+
+def glue(name: str, variable: Any, display: bool = True) -> None:
+    """Glue a value under ``name`` for ``{glue:}`` roles, as myst-nb's ``glue`` does, checked first.
+
+    A number a page prints is either a claim's value or registered in :mod:`navcore.glued` with
+    the function that computes it. For a registered name, the value is compared with what that
+    function computes and refused if it differs, so the strict build fails rather than print a
+    number no test reads.
+
+    Parameters
+    ----------
+    name : str
+        The glue name the page's ``{glue:text}`` roles use.
+    variable : Any
+        The value to glue.
+    display : bool, default True
+        Also show the value in the cell's output (myst-nb's default).
+
+    Returns
+    -------
+    None
+        The value is glued; nothing is returned.
+
+    Raises
+    ------
+    ValueError
+        If ``name`` is registered in :mod:`navcore.glued` and ``variable`` is not what its
+        function computes.
+    """
+    from myst_nb import glue as _myst_glue
+
+    from navcore import glued
+
+    glued.check(name, variable)
+    _myst_glue(name, variable, display=display)
+    return None
 
 
 def show_figure(fig_id: str, *, display: bool = False) -> Any:

@@ -112,6 +112,7 @@ def test_build_helpers_are_stripped_from_displayed_cells():
     source = (
         "import numpy as np\n"
         "from myst_nb import glue\n"
+        "from navcore.book import glue\n"
         "from navcore import book\n"
         "%matplotlib inline\n"
         "book.setup()\n"
@@ -148,7 +149,10 @@ def test_html_gate_finds_helpers_and_notebooks_without_outputs(tmp_path):
         '<div class="highlight"><pre><span class="n">glue</span><span class="p">(</span>"k", 1)</pre>'
     )
     _page(tmp_path / "wf" / "a.html", cell)
-    nb = {"cells": [{"cell_type": "code", "execution_count": None, "outputs": [], "source": "1"}]}
+    nb = {
+        "cells": [{"cell_type": "code", "execution_count": None, "outputs": [], "source": "1"}],
+        "metadata": {"navcore_provenance": {"commit": "0" * 40, "lock_sha256": "f" * 64}},
+    }
     (tmp_path / "_sources" / "wf").mkdir(parents=True)
     (tmp_path / "_sources" / "wf" / "a.ipynb").write_text(__import__("json").dumps(nb))
     problems = check_book.check_html(tmp_path)

@@ -46,10 +46,14 @@ paper_equations = _load(ROOT / "book" / "_ext" / "paper_equations.py", "book._ex
 # --- the notebook gate ------------------------------------------------------------------------
 
 
-def _notebook(tmp_path: Path, name: str, cells: list[dict]) -> None:
+BUILD = {"commit": "0" * 40, "tree": "clean", "lock_sha256": "f" * 64}
+
+
+def _notebook(tmp_path: Path, name: str, cells: list[dict], metadata: dict | None = None) -> None:
     folder = tmp_path / "_sources" / "wf"
     folder.mkdir(parents=True, exist_ok=True)
-    (folder / name).write_text(json.dumps({"cells": cells}))
+    meta = {"navcore_provenance": BUILD} if metadata is None else metadata
+    (folder / name).write_text(json.dumps({"cells": cells, "metadata": meta}))
 
 
 def _code(count: int | None, outputs: list | None = None) -> dict:
@@ -79,6 +83,18 @@ def test_notebook_gate_passes_an_executed_notebook_and_one_without_code(tmp_path
     _notebook(tmp_path, "good.ipynb", [_code(1, PRINTED), _code(2)])
     _notebook(tmp_path, "prose.ipynb", [{"cell_type": "markdown", "source": "text"}])
     assert check_book.check_html(tmp_path) == []
+
+
+def test_notebook_gate_wants_the_build_named_in_every_download(tmp_path):
+    _notebook(tmp_path, "anonymous.ipynb", [_code(1, PRINTED)], metadata={})
+    _notebook(
+        tmp_path, "partial.ipynb", [_code(1, PRINTED)], metadata={"navcore_provenance": {"commit": "0"}}
+    )
+    _notebook(tmp_path, "prose.ipynb", [{"cell_type": "markdown", "source": "text"}], metadata={})
+    assert check_book.check_html(tmp_path) == [
+        f"_sources/wf/{name}.ipynb: download does not name the build (navcore_provenance)"
+        for name in ("anonymous", "partial", "prose")
+    ]
 
 
 # --- the build comparison ---------------------------------------------------------------------

@@ -5,6 +5,8 @@ Oracle: the verdict rules of LEDGER.md written out by hand for each case.
 
 from __future__ import annotations
 
+import csv
+import io
 import json
 import subprocess
 import sys
@@ -13,6 +15,7 @@ import pytest
 
 from navcore.ledger import Claim, Erratum, Tolerance, evaluate, printed, validate_registry
 from navcore.ledger.render import LedgerTable, json_dump
+from navcore.provenance import build_provenance
 
 TOL = Tolerance(reason="test", abs=0.5, policy="printed-digits")
 
@@ -260,9 +263,12 @@ def test_cli_ledger_json_and_exit_status(monkeypatch, capsys):
     monkeypatch.setattr(ledger, "evaluations", lambda paper=None, prefix=None, n_jobs=None: evals)
     assert cli.main(["ledger", "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
-    assert [d["id"] for d in data] == ["WF-test", "WF-b"]
+    assert [d["id"] for d in data["claims"]] == ["WF-test", "WF-b"]
+    assert data["provenance"] == build_provenance().as_dict()  # what computed them
     assert cli.main(["ledger", "--csv"]) == 0
-    assert "WF-test" in capsys.readouterr().out
+    table = list(csv.DictReader(io.StringIO(capsys.readouterr().out)))
+    assert [r["id"] for r in table] == ["WF-test", "WF-b"]
+    assert all(r.items() >= build_provenance().flat().items() for r in table)
     proc = subprocess.run(
         [sys.executable, "-m", "navcore", "ledger", "--help"], capture_output=True, text=True
     )

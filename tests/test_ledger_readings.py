@@ -124,11 +124,22 @@ def test_a_statement_reading_that_agrees_over_part_of_its_band_says_so():
         published=True,
         unit="statement",
         compute=lambda: (IN.sign < 0) & (IN.offset > 0.5),  # reads both inputs
+        expected_status="not-reproducible",
+    )
+    # false throughout under the sign used; under the other, true for offsets above 0.5 and false
+    # below: a band that holds both truth values decides nothing (LEDGER.md, a band too wide)
+    ev = evaluate(c)
+    assert ev.status == "not-reproducible"
+    assert "does not hold at the nominal inputs, but holds over part of the assumed ranges" in ev.note()
+    assert "holds for some of the assumed inputs and fails for others" in ev.note()
+    # true throughout under the other sign: that reading decides, and agrees
+    c = make(
+        published=True,
+        unit="statement",
+        compute=lambda: (IN.sign < 0) | (IN.offset > 0.5),
         expected_status="consistent",
     )
-    ev = evaluate(c)  # false throughout under the sign used; under the other, true for offsets above 0.5
-    assert ev.status == "consistent"
-    assert "does not hold at the nominal inputs, but holds over part of the assumed ranges" in ev.note()
+    assert evaluate(c).status == "consistent"
 
 
 def test_cross_check_fit_and_fitted_use_any_reading():
@@ -298,7 +309,9 @@ def test_band_too_wide_rule_on_signed_and_decibel_bands():
     db = make(published=value, tolerance=tol, unit="dB")
     assert band_too_wide(db, tol, 12.4, 19.9)  # 7.5 dB: a power ratio of 5.6
     assert not band_too_wide(db, tol, 13.0, 17.0)  # 4 dB: 2.5
-    assert not band_too_wide(make(published=True, unit="statement"), tol, False, True)
+    # a statement's band is its truth values: both in it decide nothing, one alone decides
+    assert band_too_wide(make(published=True, unit="statement"), tol, False, True)
+    assert not band_too_wide(make(published=True, unit="statement"), tol, True, True)
 
 
 def test_derive_status_weighs_wide_and_narrow_readings():

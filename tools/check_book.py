@@ -8,7 +8,8 @@ Usage::
 
 ``html``: no rendered code cell shows a build helper (``glue(...)``, ``show_figure``,
 ``book.setup()``, ``%matplotlib``); every downloadable notebook under ``_sources`` is
-executed (each code cell has an execution count) and carries outputs; and no library
+executed (each code cell has an execution count), carries outputs and names the build that
+made it (``navcore_provenance`` in its metadata, with the commit and the lock's hash); and no library
 identifier stands in running prose (see ``prose_identifiers``): a dotted ``navcore.`` path,
 a snake_case name or a call such as ``name()`` in the text of a paragraph, list item,
 definition, table cell, caption or admonition, outside code, links, math, cell outputs and
@@ -36,8 +37,10 @@ from html.parser import HTMLParser
 from pathlib import Path
 
 HELPERS = re.compile(
-    r"(?m)^\s*(?:glue\s*\(|(?:book\.)?show_figure\s*\(|book\.setup\s*\(|%matplotlib|from myst_nb import glue)"
+    r"(?m)^\s*(?:glue\s*\(|(?:book\.)?show_figure\s*\(|book\.setup\s*\(|%matplotlib"
+    r"|from (?:myst_nb|navcore\.book) import glue)"
 )
+PROVENANCE_KEY = "navcore_provenance"  # book/_ext/book_downloads.py writes it
 CELL_PRE = re.compile(
     r'class="cell_input[^"]*"[^>]*>\s*<div class="highlight-[^"]*"><div class="highlight"><pre>(.*?)</pre>',
     re.S,
@@ -191,6 +194,10 @@ def check_html(root: Path) -> list[str]:
                 problems.append(f"{page.relative_to(root)}: a code cell shows {m.group(0).strip()!r}")
     for nb_path in sorted((root / "_sources").rglob("*.ipynb")):
         nb = json.loads(nb_path.read_text(encoding="utf-8"))
+        provenance = nb.get("metadata", {}).get(PROVENANCE_KEY)
+        if not isinstance(provenance, dict) or not {"commit", "lock_sha256"} <= set(provenance):
+            name = nb_path.relative_to(root)
+            problems.append(f"{name}: download does not name the build ({PROVENANCE_KEY})")
         code = [c for c in nb.get("cells", []) if c.get("cell_type") == "code"]
         if not code:
             continue

@@ -6,7 +6,11 @@ page's sources, so the theme's download menu offers it with its outputs (it runs
 after ``pip install navcore``). MyST-NB writes ``<build>/jupyter_execute/<page>.ipynb``
 *without* outputs when they come from its execution cache, so the outputs are merged in
 from that cache. Cell ids, random in a notebook read from Markdown, are replaced by
-``cell-<n>`` so that two builds give the same bytes.
+``cell-<n>`` so that two builds give the same bytes. Each notebook's metadata carries the
+build's provenance under ``navcore_provenance`` (commit and whether the tree was clean, the
+commit's date, the lock file's hash, Python's and the core packages' versions; see
+:func:`navcore.provenance.build_provenance`), taken when the book is built, not when the page
+executed, and from the commit, not the clock.
 
 If the PDF book has been built (``<build>/latex/book.pdf``, by ``nox -s pdf``), it is
 copied into the HTML output and every page's download menu links it.
@@ -16,12 +20,16 @@ from __future__ import annotations
 
 import re
 import shutil
+from functools import cache
 from pathlib import Path
 from typing import Any
 
 from sphinx.application import Sphinx
 
+from navcore.provenance import build_provenance
+
 PDF_NAME = "book.pdf"
+METADATA_KEY = "navcore_provenance"
 _ADDRESS = re.compile(r" at 0x[0-9a-fA-F]+>")
 
 
@@ -33,8 +41,13 @@ def _pdf_source(app: Sphinx) -> Path:
     return _build_dir(app) / "latex" / PDF_NAME
 
 
+@cache
+def _provenance() -> dict[str, Any]:
+    return build_provenance().as_dict()
+
+
 def executed_notebook(path: Path, cache_path: str | None = None) -> Any:
-    """The executed notebook: outputs merged from the execution cache if absent, stable ids."""
+    """The executed notebook: outputs merged from the execution cache if absent, stable ids, provenance."""
     import nbformat
 
     nb = nbformat.read(path, as_version=4)
@@ -52,6 +65,7 @@ def executed_notebook(path: Path, cache_path: str | None = None) -> Any:
             plain = out.get("data", {}).get("text/plain")
             if isinstance(plain, str):
                 out["data"]["text/plain"] = _ADDRESS.sub(">", plain)
+    nb.metadata[METADATA_KEY] = _provenance()
     return nb
 
 

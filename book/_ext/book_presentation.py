@@ -43,7 +43,7 @@ HELPER_RE = re.compile(
     r"|glue\s*\("
     r"|book\.setup\s*\(\s*\)"
     r"|%matplotlib\b"
-    r"|from\s+myst_nb\s+import\s+glue\s*$"
+    r"|from\s+(?:myst_nb|navcore\.book)\s+import\s+glue\s*$"
     r")"
 )
 

@@ -1324,7 +1324,13 @@ class Evaluation:
         if self.band_too_wide and self.band is not None:
             lo, hi = self.band
             unit = "" if self.claim.unit in ("", "statement") else f" {self.claim.unit}"
-            if nominal is None or nominal["agrees"]:
+            if self.claim.is_statement:
+                extra.append(
+                    ("It" if nominal is None or nominal["agrees"] else "The reading that agrees")
+                    + " holds for some of the assumed inputs and fails for others: the assumptions "
+                    "are too loose to decide."
+                )
+            elif nominal is None or nominal["agrees"]:
                 extra.append(
                     f"Over the assumed inputs' ranges the value spans {_plain(lo)} to {_plain(hi)}{unit}, "
                     f"ends more than a factor {BAND_FACTOR:g} apart, and the printed value agrees with "

@@ -9,7 +9,9 @@ the PDF builder. Notes, quantities and erratum texts may hold inline math as ``$
 
 from __future__ import annotations
 
+import csv
 import html
+import io
 import json
 import math
 import re
@@ -19,6 +21,7 @@ from typing import Any
 from navcore.ledger.core import ERRATUM_BASES, STATUSES, TEXT_ONLY_CAVEAT, Erratum, Evaluation, claim_quote
 from navcore.ledger.inputs import _label_and_unit
 from navcore.ledger.registry import counts, errata, evaluations
+from navcore.provenance import BuildProvenance, build_provenance
 
 __all__ = [
     "STATUS_COLOURS",
@@ -28,10 +31,12 @@ __all__ = [
     "InteractiveLedger",
     "LedgerTable",
     "claim_group",
+    "csv_export",
     "format_value",
     "group_claims",
     "html_text",
     "json_dump",
+    "json_export",
     "latex_table",
     "math_spans",
     "rows",
@@ -232,6 +237,87 @@ def json_dump(evals: Sequence[Evaluation]) -> str:
     ('SP-doc-omega', 17.67, 17.671, 'reproduced')
     """
     return json.dumps([e.as_json() for e in evals], indent=2, ensure_ascii=False, sort_keys=False)
+
+
+def json_export(evals: Sequence[Evaluation], provenance: BuildProvenance | None = None) -> str:
+    """The ledger export: the build's provenance and the array of claim objects.
+
+    Parameters
+    ----------
+    evals : sequence of Evaluation
+        The evaluations, in the order they are written.
+    provenance : BuildProvenance, optional
+        What computed them (default: :func:`~navcore.provenance.build_provenance` of this
+        checkout). It depends on the commit, never on the clock, so two evaluations of one
+        commit export the same bytes.
+
+    Returns
+    -------
+    str
+        A JSON object ``{"provenance": {...}, "claims": [...]}``, indented by two spaces, whose
+        ``claims`` are the records of :func:`json_dump`.
+
+    Examples
+    --------
+    >>> import json
+    >>> from navcore.ledger import Claim, evaluate, printed
+    >>> value, tol = printed("17.67")
+    >>> c = Claim(id="SP-doc-omega", paper="SP", locator="Fig. 2.1", quantity="natural frequency",
+    ...           published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
+    ...           expected_status="reproduced", note="a synthetic claim")
+    >>> data = json.loads(json_export([evaluate(c)]))
+    >>> sorted(data), data["claims"][0]["id"], "lock_sha256" in data["provenance"]
+    (['claims', 'provenance'], 'SP-doc-omega', True)
+    """
+    if provenance is None:
+        provenance = build_provenance()
+    data = {"provenance": provenance.as_dict(), "claims": [e.as_json() for e in evals]}
+    return json.dumps(data, indent=2, ensure_ascii=False, sort_keys=False)
+
+
+def csv_export(evals: Sequence[Evaluation], provenance: BuildProvenance | None = None) -> str:
+    """The ledger as CSV: the rows of :func:`rows`, each with the build's provenance.
+
+    Every row carries the same ``build_*`` columns (commit, state of the tree, commit date,
+    lock hash, Python and core package versions; :meth:`BuildProvenance.flat
+    <navcore.provenance.BuildProvenance.flat>`), so that the file stays one plain table that
+    any CSV reader takes, and a row copied elsewhere still says what computed it.
+
+    Parameters
+    ----------
+    evals : sequence of Evaluation
+        The evaluations, in the order they are written.
+    provenance : BuildProvenance, optional
+        What computed them (default: this checkout's).
+
+    Returns
+    -------
+    str
+        The CSV text, a header row first (the csv module's dialect: lines end in CR LF).
+
+    Examples
+    --------
+    >>> import csv, io
+    >>> from navcore.ledger import Claim, evaluate, printed
+    >>> from navcore.provenance import BuildProvenance
+    >>> value, tol = printed("17.67")
+    >>> c = Claim(id="SP-doc-omega", paper="SP", locator="Fig. 2.1", quantity="natural frequency",
+    ...           published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
+    ...           expected_status="reproduced", note="a synthetic claim")
+    >>> build = BuildProvenance("0" * 40, "clean", "2026-01-01T00:00:00+00:00", "f" * 64, "3.11.7", ())
+    >>> row = next(csv.DictReader(io.StringIO(csv_export([evaluate(c)], build))))
+    >>> row["id"], row["status"], row["build_tree"], row["build_commit_date"]
+    ('SP-doc-omega', 'reproduced', 'clean', '2026-01-01T00:00:00+00:00')
+    """
+    if provenance is None:
+        provenance = build_provenance()
+    build = provenance.flat()
+    data = [{**row, **build} for row in rows(evals)]
+    buf = io.StringIO()
+    writer = csv.DictWriter(buf, fieldnames=list(data[0]) if data else ["id", *build])
+    writer.writeheader()
+    writer.writerows(data)
+    return buf.getvalue()
 
 
 def _md_escape(s: str) -> str:
@@ -1427,6 +1513,22 @@ _LEDGER_JS = r"""
     });
     return out;
   }
+  // what built the page (commit, lock hash, versions), which the book puts beside the ledger
+  function provenance() {
+    var el = document.getElementById("navcore-provenance");
+    return el ? JSON.parse(el.textContent) : null;
+  }
+  function buildColumns(prov) {  // as BuildProvenance.flat(): build_commit, ..., build_numpy
+    var out = {};
+    if (!prov) return out;
+    Object.keys(prov).forEach(function (k) {
+      if (k !== "packages") out["build_" + k] = prov[k];
+    });
+    Object.keys(prov.packages || {}).forEach(function (name) {
+      out["build_" + name.replace(/-/g, "_")] = prov.packages[name];
+    });
+    return out;
+  }
   function download(name, type, text) {
     var a = document.createElement("a");
     a.href = URL.createObjectURL(new Blob([text], {type: type}));
@@ -1494,10 +1596,13 @@ _LEDGER_JS = r"""
       app.querySelectorAll("button[data-download]").forEach(function (b) {
         b.addEventListener("click", function () {
           var recs = visible().map(function (tr) { return data[+tr.dataset.index]; });
+          var prov = provenance();
           if (b.dataset.download === "json") {
-            download("ledger.json", "application/json", JSON.stringify(recs, null, 2) + "\n");
+            var doc = {provenance: prov, claims: recs};
+            download("ledger.json", "application/json", JSON.stringify(doc, null, 2) + "\n");
           } else {
-            var flat = recs.map(flatten), keys = [];
+            var build = buildColumns(prov);
+            var flat = recs.map(function (r) { return Object.assign(flatten(r), build); }), keys = [];
             flat.forEach(function (r) {
               Object.keys(r).forEach(function (k) { if (keys.indexOf(k) < 0) keys.push(k); });
             });
@@ -1533,8 +1638,10 @@ class InteractiveLedger:
     by any column, filters by paper, verdict and (when the claims carry it) kind, searches the
     text, and downloads the rows shown as CSV or JSON (the records of
     :meth:`~navcore.ledger.core.Evaluation.as_json`, so the download is the command line's
-    JSON). Columns for the optional record fields ``kind`` and ``band`` appear when any claim
-    has them. Below 640 px each row becomes a card. PDF: a compact table without notes.
+    JSON; see :func:`json_export` and :func:`csv_export`), with the build's provenance where
+    the book put it on the page (a JSON script element ``navcore-provenance``). Columns for
+    the optional record fields ``kind`` and ``band`` appear when any claim has them. Below
+    640 px each row becomes a card. PDF: a compact table without notes.
 
     Parameters
     ----------

@@ -1,0 +1,610 @@
+"""Numbers the book's pages print that are not ledger claims, each with the function computing it.
+
+A page prints a number by gluing it (``glue("kzl00-schuler-min", value)``, with
+:func:`navcore.book.glue`) and quoting it in its prose with a ``{glue:text}`` role. Every such
+number is either a claim's value (the page's glue call reads a claim of the ledger, whose own
+tests recompute it) or registered here, once, under its glue name, with the page that shows it
+and the function that computes it. Two checks then hold a registered number:
+
+- when a page glues a registered name, :func:`navcore.book.glue` calls :func:`check`, which
+  recomputes the registered function and refuses a value that differs (the book's strict build
+  fails), so the page prints what the function computes;
+- ``tests/test_glue_values.py`` recomputes every registered function against an independent
+  oracle (a closed form, scipy, a seeded Monte Carlo, or the paper's printed inputs in other
+  arithmetic), and ``tests/test_glue_pages.py`` scans the pages and fails on a glued name that
+  is neither a claim's value nor registered (nor in its shrinking to-do list).
+
+A glue name may hold fields (``"atc10-erp-K{k}-{p_dl}"``) for a family a page glues in a loop;
+the function then receives the fields as strings. The functions import their paper modules
+when called (a page imports only its own paper's models) and read inputs through them.
+
+Examples
+--------
+>>> entry, fields = lookup("kzl00-schuler-min")
+>>> entry.quantity, entry.page, fields
+('period of the Schuler oscillation (min)', 'kzl/00-requirements', {})
+>>> round(value("kzl00-schuler-min"), 2)
+84.45
+>>> lookup("atc10-erp-K100-0.88")[1]
+{'k': '100', 'p_dl': '0.88'}
+>>> lookup("no-such-name") is None
+True
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+__all__ = ["GluedValue", "check", "entries", "lookup", "register", "value"]
+
+
+@dataclass(frozen=True)
+class GluedValue:
+    """A number a page prints, registered with the page that shows it and the function computing it.
+
+    Attributes
+    ----------
+    pattern : str
+        The glue name, with ``{field}`` placeholders for a family of names.
+    page : str
+        The page that glues it, relative to ``book/`` and without suffix
+        (``"kzl/00-requirements"``).
+    quantity : str
+        What the number is, in words (with its unit).
+    compute : callable
+        Returns the number; called with the pattern's fields as keyword strings.
+    """
+
+    pattern: str
+    page: str
+    quantity: str
+    compute: Callable[..., Any]
+
+    @property
+    def regex(self) -> re.Pattern[str]:
+        """The pattern as a regular expression (a field matches one or more characters)."""
+        parts = re.split(r"\{(\w+)\}", self.pattern)
+        out = "".join(re.escape(p) if i % 2 == 0 else f"(?P<{p}>.+?)" for i, p in enumerate(parts))
+        return re.compile(out + r"\Z")
+
+
+_REGISTRY: dict[str, GluedValue] = {}
+
+
+def register(pattern: str, page: str, quantity: str) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
+    """Register the function that computes the number a page glues under ``pattern``.
+
+    Parameters
+    ----------
+    pattern : str
+        The glue name (``"kzl00-schuler-min"``), or a family of names with ``{field}``
+        placeholders.
+    page : str
+        The page that glues it, relative to ``book/``, without suffix.
+    quantity : str
+        What the number is, in words, with its unit.
+
+    Returns
+    -------
+    callable
+        A decorator that records the function and returns it unchanged.
+
+    Raises
+    ------
+    ValueError
+        If ``pattern`` is registered already, or ``page`` or ``quantity`` is empty.
+    """
+    if pattern in _REGISTRY:
+        raise ValueError(f"glue name {pattern!r} is registered twice")
+    if not page.strip():
+        raise ValueError(f"glue name {pattern!r} needs the page that shows it")
+    if not quantity.strip():
+        raise ValueError(f"glue name {pattern!r} needs the quantity it prints, in words")
+
+    def deco(fn: Callable[..., Any]) -> Callable[..., Any]:
+        _REGISTRY[pattern] = GluedValue(pattern, page, quantity, fn)
+        return fn
+
+    return deco
+
+
+def entries() -> dict[str, GluedValue]:
+    """Every registered glue name (pattern) and its registration, sorted by pattern.
+
+    Returns
+    -------
+    dict of str to GluedValue
+        The registrations by pattern.
+    """
+    return dict(sorted(_REGISTRY.items()))
+
+
+def lookup(name: str) -> tuple[GluedValue, dict[str, str]] | None:
+    """The registration a glue name falls under, and its fields.
+
+    Parameters
+    ----------
+    name : str
+        A glue name as a page glues it (``"atc10-erp-K100-0.88"``).
+
+    Returns
+    -------
+    tuple of (GluedValue, dict of str to str) or None
+        The registration and the pattern's fields; ``None`` if the name is not registered.
+    """
+    if name in _REGISTRY:
+        return _REGISTRY[name], {}
+    for entry in _REGISTRY.values():
+        if "{" in entry.pattern:
+            m = entry.regex.match(name)
+            if m:
+                return entry, m.groupdict()
+    return None
+
+
+def value(name: str) -> Any:
+    """Compute the number registered under the glue name ``name``.
+
+    Parameters
+    ----------
+    name : str
+        A glue name as a page glues it.
+
+    Returns
+    -------
+    Any
+        What the registered function computes.
+
+    Raises
+    ------
+    ValueError
+        If ``name`` is not registered.
+    """
+    found = lookup(name)
+    if found is None:
+        raise ValueError(f"glue name {name!r} is not registered in navcore.glued")
+    entry, fields = found
+    return entry.compute(**fields)
+
+
+def _close(a: Any, b: Any, rtol: float) -> bool:
+    if isinstance(a, str) or isinstance(b, str):
+        return str(a) == str(b)
+    x, y = float(a), float(b)
+    if math.isnan(x) or math.isnan(y):
+        return False
+    return x == y or abs(x - y) <= rtol * max(abs(x), abs(y))
+
+
+def _show(x: Any) -> str:
+    return f"{x:.6g}" if isinstance(x, float) else repr(x)
+
+
+def check(name: str, glued: Any, *, rtol: float = 1e-9) -> None:
+    """Refuse a glued value that is not what its registered function computes.
+
+    Names that are not registered pass here: they are claims' values, or in the to-do list of
+    ``tests/test_glue_pages.py``, which fails on any other.
+
+    Parameters
+    ----------
+    name : str
+        The glue name the page uses.
+    glued : Any
+        The value the page glues.
+    rtol : float, default 1e-9
+        Relative tolerance: the page and the function compute the same arithmetic, so only
+        rounding may separate them.
+
+    Raises
+    ------
+    ValueError
+        If ``name`` is registered and ``glued`` differs from the registered function's value
+        by more than ``rtol`` (relative).
+
+    Examples
+    --------
+    >>> check("kzl00-schuler-min", value("kzl00-schuler-min"))
+    >>> check("kzl00-schuler-min", 1.3 * value("kzl00-schuler-min"))  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    ValueError: glued value 'kzl00-schuler-min' is 109.789, but its registered function computes 84.453 ...
+    """
+    found = lookup(name)
+    if found is None:
+        return
+    entry, fields = found
+    expected = entry.compute(**fields)
+    if not _close(glued, expected, rtol):
+        raise ValueError(
+            f"glued value {name!r} is {_show(glued)}, but its registered function computes "
+            f"{_show(expected)} ({entry.quantity})"
+        )
+
+
+# ---------------------------------------------------------------------------------------------
+# The registrations, by kind. Each function imports what it reads.
+
+# --- constants and unit conversions ----------------------------------------------------------
+
+
+@register("kzl00-schuler-min", "kzl/00-requirements", "period of the Schuler oscillation (min)")
+def schuler_period_min() -> float:
+    """Schuler period 2 pi sqrt(a / g0) of navcore's Earth radius and standard gravity, in minutes."""
+    from navcore.units import G0, WGS84_A
+
+    return float(2 * math.pi * math.sqrt(WGS84_A / G0) / 60)
+
+
+@register("atc10-32-c-ft-per-ns", "atc10/32-tracking-examples", "speed of light in feet per nanosecond")
+def light_ft_per_ns() -> float:
+    """Distance light travels in a nanosecond, in feet (ATC-10 Sec. 4 reads 1 ns as 1 ft)."""
+    from navcore import units
+
+    return float(units.C * 1e-9 / units.FT)
+
+
+@register(
+    "atc10-32-c-shrink-pct",
+    "atc10/32-tracking-examples",
+    "how much shorter a light-nanosecond is than a foot (%)",
+)
+def light_ns_short_of_foot_pct() -> float:
+    """How much shorter a light-nanosecond is than a foot, in percent."""
+    return 100 * (1 - light_ft_per_ns())
+
+
+@register("atc10-13-30W-dbw", "atc10/13-tables", "30 W in dBW")
+def thirty_watts_dbw() -> float:
+    """30 W in dBW (ATC-10 Table 1.1's transmitter power)."""
+    from navcore import units
+
+    return float(units.dbw_from_watts(30.0))
+
+
+@register("atc10-10-convention-db", "atc10/10-jamming-model", "a factor 2 in power, in dB")
+@register(
+    "atc10-12-erf-shift-db",
+    "atc10/12-tracking-lists",
+    "a factor 2 in power, in dB (the erf argument's convention)",
+)
+def factor_two_db() -> float:
+    """A factor 2 in power, in dB."""
+    return float(10 * math.log10(2))
+
+
+@register(
+    "wf04-trace-reading-shift-db",
+    "wf/04-assessment",
+    "a factor 3 in power (the trace against one axis), in dB",
+)
+def factor_three_db() -> float:
+    """A factor 3 in power, in dB (the trace of an isotropic 3-D covariance against one axis)."""
+    return float(10 * math.log10(3))
+
+
+@register("wf89-fl1c", "wf/89-summary", "f_L1 / c with the defined c (cycles per metre)")
+def f_l1_over_defined_c() -> float:
+    """The GPS L1 carrier frequency over the defined speed of light (Wu & Fowler Sec. IV.D), 1/m."""
+    from navcore.papers import wf
+
+    return float(wf.f_l1_over_c())
+
+
+@register("wf89-fl1c-3e8", "wf/89-summary", "f_L1 / c with c read as 3e8 m/s (cycles per metre)")
+def f_l1_over_rounded_c() -> float:
+    """The GPS L1 carrier frequency over the engineering speed of light 3e8 m/s, 1/m."""
+    from navcore.units import GPS_L1_HZ
+
+    return float(GPS_L1_HZ / 3e8)
+
+
+@register(
+    "atc10-31-small-alpha-coefficient",
+    "atc10/31-clock-tracking",
+    "the small-alpha coefficient (3/2) 2^(1/3) of psi",
+)
+def psi_small_alpha_coefficient() -> float:
+    """Coefficient of alpha^(1/3) in the small-alpha form of psi (ATC-10 Eq. (4.5.38))."""
+    return float(1.5 * 2.0 ** (1.0 / 3.0))
+
+
+@register("atc10-30-orbit-radius-km", "atc10/30-tracking-geometry", "radius of the synchronous orbit (km)")
+def synchronous_orbit_radius_km() -> float:
+    """Radius of the geosynchronous orbit, in km."""
+    from navcore.location.multilateration import synchronous_orbit_radius
+
+    return float(synchronous_orbit_radius() / 1e3)
+
+
+@register(
+    "atc10-13-wavelength-m",
+    "atc10/13-tables",
+    "wavelength at the assumed jammer-dish frequency of Table 1.1 (m)",
+)
+def atc10_table11_wavelength_m() -> float:
+    """Wavelength at the assumed frequency of Table 1.1's jammer dishes, in metres."""
+    from navcore import units
+    from navcore.papers import atc10_jamming as pj
+
+    return float(units.C / pj.IN.dish_frequency_hz)
+
+
+@register(
+    "kzl01-levelling-tilt-deg",
+    "kzl/01-mechanization",
+    "levelling tilt from the Table 1 accelerometer bias (deg)",
+)
+@register(
+    "kzl03-levelling-tilt-deg",
+    "kzl/03-simulation",
+    "levelling tilt from the Table 1 accelerometer bias (deg)",
+)
+def kzl_levelling_tilt_deg() -> float:
+    """Tilt (small angle) that levelling leaves from KZL's Table 1 accelerometer bias, in degrees."""
+    from navcore.papers.kzl_scenario import kzl_imu
+    from navcore.units import G0
+
+    return float(math.degrees(kzl_imu().accel_bias / G0))
+
+
+@register(
+    "kzl01-horizontal-earth-rate-deg-h",
+    "kzl/01-mechanization",
+    "horizontal Earth rate at 51 deg latitude (deg/h)",
+)
+def horizontal_earth_rate_deg_h() -> float:
+    """Horizontal component of the Earth rate at 51 deg latitude, in deg/h."""
+    import numpy as np
+
+    from navcore.inertial.strapdown import earth_rate_ned
+    from navcore.units import DEG, DEG_PER_H
+
+    return float(np.linalg.norm(earth_rate_ned(51 * DEG)[:2]) / DEG_PER_H)
+
+
+@register("wf05-sigma-f-velocity", "wf/05-end-to-end", "1 Hz frequency noise as a radial velocity (m/s)")
+def wf_frequency_noise_velocity() -> float:
+    """Wu & Fowler's frequency-measurement noise as a radial velocity at the 10 GHz carrier (m/s)."""
+    from navcore import units
+    from navcore.papers import wf
+
+    return float(wf.SIGMA_F / (wf.F0 / units.C))
+
+
+# --- sampling errors of Monte Carlo runs -----------------------------------------------------
+
+
+@register(
+    "kzl03-rms-rel-error-pct", "kzl/03-simulation", "relative standard error of an RMS over the KZL runs (%)"
+)
+def kzl_rms_relative_error_pct() -> float:
+    """Relative standard error 1/sqrt(2 N) of an RMS over the N Monte Carlo runs, in percent."""
+    from navcore.papers.kzl_scenario import N_RUNS
+
+    return float(100 / math.sqrt(2 * N_RUNS))
+
+
+@register(
+    "sp06-cep-sd-pct",
+    "sp/06-deep-integration",
+    "relative standard error of a CEP from the SP runs per point (%)",
+)
+def sp_cep_sd_pct() -> float:
+    """Relative standard error of a CEP taken from the runs per point of SP Sec. 3, in percent."""
+    from navcore.papers import sp_antijam as spj
+
+    return float(100 * spj.cep_relative_sd(spj.IN.runs))
+
+
+@register("sp03-chi2", "sp/03-residual-acceleration", "radius holding 90 % of a 3-D standard normal (sigmas)")
+def chi3_radius_90() -> float:
+    """Radius, in standard deviations, that holds 90 % of an isotropic 3-D normal."""
+    from scipy.stats import chi2
+
+    return float(math.sqrt(chi2.ppf(0.9, 3)))
+
+
+# --- counts ----------------------------------------------------------------------------------
+
+
+@register("kzl01-n-states", "kzl/01-mechanization", "states of the KZL error model")
+@register("kzl02-n-states", "kzl/02-error-model", "states of the KZL error model")
+@register("kzl03-n-states", "kzl/03-simulation", "states of the KZL error model")
+@register("across01-kzl-states", "across/01-filters-and-geometry", "states of the KZL error model")
+def kzl_error_states() -> int:
+    """Number of states of navcore's KZL error model (KZL Eq. (1))."""
+    from navcore.inertial.error_model17 import ERROR_LAYOUT_17
+
+    return int(ERROR_LAYOUT_17.size)
+
+
+@register(
+    "kzl02-dd-rows-{n}-satellites",
+    "kzl/02-error-model",
+    "rows of the KZL observation matrix for n satellites",
+)
+def kzl_dd_rows(n: str) -> int:
+    """Rows of KZL's stacked observation matrix (Eq. (17)) for ``n`` satellites in view."""
+    from navcore.gnss.carrier_phase import dd_observation_rows_count
+
+    return int(dd_observation_rows_count(int(n)))
+
+
+@register("kzl03-dd-sigma-mm", "kzl/03-simulation", "standard deviation of a double-differenced phase (mm)")
+def kzl_dd_phase_sigma_mm() -> float:
+    """Standard deviation of one double-differenced carrier phase of the KZL scenario, in mm."""
+    from navcore.gnss.carrier_phase import dd_covariance
+    from navcore.papers.kzl_scenario import gnss_noise
+
+    phase = gnss_noise().phase
+    assert phase is not None  # the default mode uses every GPS noise
+    return float(1e3 * math.sqrt(dd_covariance(2, phase)[0, 0]))
+
+
+@register(
+    "kzl03-gyro-residual-deg-h",
+    "kzl/03-simulation",
+    "gyro bias left after averaging the angle random walk over the initialisation (deg/h)",
+)
+def kzl_gyro_residual_deg_h() -> float:
+    """Standard deviation of a gyro bias estimated by averaging the Table 1 angle random walk
+    over the initialisation time of the KZL scenario, in deg/h."""
+    from navcore.papers.kzl_scenario import IN, kzl_imu
+    from navcore.units import DEG_PER_H
+
+    return float(kzl_imu().gyro_random_walk / math.sqrt(IN.init_time_s) / DEG_PER_H)
+
+
+# --- model values: ATC-10 Section 2 (jamming) and 3 (multiple-access noise) -------------------
+
+
+@register(
+    "atc10-erp-K{k}-{p_dl}", "atc10/10-jamming-model", "jammer ERP at which N_ADL reaches 0.01 N_T (dBW)"
+)
+def atc10_adl_erp_dbw(k: str, p_dl: str) -> float:
+    """Jammer ERP (dBW) at which the ambiguous-detection count reaches its level, for K lists."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.required_erp_dbw("ambiguous", float(p_dl), int(k)))
+
+
+@register(
+    "atc10-12-erp-K100-0.88",
+    "atc10/12-tracking-lists",
+    "jammer ERP at which N_ADL reaches 0.01 N_T, K = 100, P_DL = 0.88 (dBW)",
+)
+def atc10_erp_k100_088() -> float:
+    """Jammer ERP (dBW) for K = 100, P_DL = 0.88."""
+    return atc10_adl_erp_dbw("100", "0.88")
+
+
+@register(
+    "atc10-13-erp-K100-0.98",
+    "atc10/13-tables",
+    "jammer ERP at which N_ADL reaches 0.01 N_T, K = 100, P_DL = 0.98 (dBW)",
+)
+def atc10_erp_k100_098() -> float:
+    """Jammer ERP (dBW) for K = 100, P_DL = 0.98."""
+    return atc10_adl_erp_dbw("100", "0.98")
+
+
+@register(
+    "atc10-12-fig2.4-erp",
+    "atc10/12-tracking-lists",
+    "jammer ERP at which N_ADL reaches 0.01 N_T, K = 10, P_DL = 0.88 (dBW)",
+)
+def atc10_fig24_erp_dbw() -> float:
+    """Jammer ERP (dBW) of Fig. 2.4's case, K = 10, P_DL = 0.88."""
+    return atc10_adl_erp_dbw("10", "0.88")
+
+
+@register("atc10-pd-k1000-{p_dl}", "atc10/10-jamming-model", "per-filter detection probability for K = 1000")
+def atc10_pd_k1000(p_dl: str) -> float:
+    """Per-filter p_d that gives P_DL = ``p_dl`` with K = 1000 lists (ATC-10 Eq. (2.4.2))."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.design_p_d(float(p_dl), 1000))
+
+
+@register("atc10-pd4-k1000-0.999", "atc10/10-jamming-model", "p_d^4 for K = 1000, P_DL = 0.999")
+def atc10_pd4_k1000_0999() -> float:
+    """Fourth power of the per-filter p_d for K = 1000, P_DL = 0.999: one list's detection probability."""
+    return atc10_pd_k1000("0.999") ** 4
+
+
+@register("atc10-10-qK-k10-0.999", "atc10/10-jamming-model", "p_d^(4K) for K = 10, P_DL = 0.999")
+def atc10_qk_k10_0999() -> float:
+    """All ten lists detected, p_d^(4K) for K = 10 at P_DL = 0.999."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.design_p_d(0.999, 10) ** (4 * 10))
+
+
+@register("atc10-10-n-v", "atc10/10-jamming-model", "samples n_v in a tracking window (C.14)")
+@register("atc10-12-n-v", "atc10/12-tracking-lists", "samples n_v in a tracking window (C.14)")
+@register("atc10-14-n-v", "atc10/14-monte-carlo", "samples n_v in a tracking window (C.14)")
+def atc10_track_window_samples() -> float:
+    """Samples (8 B / 3) v alpha / c in a tracking window of ATC-10's scenario (App. C, C.14)."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.geometry().samples_per_track_window)
+
+
+@register(
+    "atc10-11-samples-period", "atc10/11-single-pulse", "samples 2 B alpha in a repetition period (B.6)"
+)
+def atc10_period_samples() -> float:
+    """Samples 2 B alpha in one repetition period of ATC-10's scenario (App. B, B.6)."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.geometry().samples_per_period)
+
+
+@register("atc10-11-samples-window", "atc10/11-single-pulse", "samples 4 B beta in a delay window (B.6)")
+def atc10_delay_window_samples() -> float:
+    """Samples 4 B beta in a differential-delay window of ATC-10's scenario (App. B, B.6)."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.geometry().samples_per_delay_window)
+
+
+@register(
+    "atc10-20-mean-overlap", "atc10/20-multiple-access-noise", "mean number of overlapping pulses (N - 1) q"
+)
+@register("atc10-21-nq", "atc10/21-roc-bounds", "mean number of overlapping pulses (N - 1) q")
+def atc10_mean_overlap() -> float:
+    """Mean number of other aircraft's pulses overlapping a window, (N - 1) q, q = 2 tau/alpha (Sec. 3.6)."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float((pm.IN.n_sec36 - 1) * 2 * pm.IN.tau_over_alpha_sec36)
+
+
+@register("atc10-20-p-none", "atc10/20-multiple-access-noise", "probability that no other pulse overlaps")
+def atc10_p_none() -> float:
+    """Probability (1 - q)^(N - 1) that no other aircraft's pulse overlaps a window (Sec. 3.6)."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    q = 2 * pm.IN.tau_over_alpha_sec36
+    return float((1 - q) ** (pm.IN.n_sec36 - 1))
+
+
+@register(
+    "atc10-20-inverse-nq", "atc10/20-multiple-access-noise", "1 / (N q), the order of the excess kurtosis"
+)
+def atc10_inverse_nq() -> float:
+    """1 / (N q), the order of the excess kurtosis of the multiple-access noise (Sec. 3.6)."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(1 / (pm.IN.n_sec36 * 2 * pm.IN.tau_over_alpha_sec36))
+
+
+# --- model values: ATC-10 Section 3.9 (Zakai bandwidth) ---------------------------------------
+
+
+@register(
+    "atc10-23-w-msequence-1023",
+    "atc10/23-zakai-bandwidth",
+    "Zakai bandwidth of a 1023-chip m-sequence (per chip rate)",
+)
+def zakai_msequence_1023() -> float:
+    """Zakai bandwidth of a 1023-chip m-sequence with unit chips."""
+    from navcore.detection import zakai
+
+    return float(zakai.psk_zakai_bandwidth(zakai.m_sequence(10), 1.0))
+
+
+@register(
+    "atc10-23-barker13-of-ideal",
+    "atc10/23-zakai-bandwidth",
+    "Zakai bandwidth of Barker 13 over the ideal 0.75",
+)
+def zakai_barker13_of_ideal() -> float:
+    """Zakai bandwidth of the Barker-13 code with unit chips, over the ideal code's 0.75."""
+    from navcore.detection import zakai
+
+    return float(zakai.psk_zakai_bandwidth(zakai.barker_code(13), 1.0) / 0.75)

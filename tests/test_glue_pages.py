@@ -1,0 +1,235 @@
+"""Every number a page glues is a claim's value or registered in navcore.glued (issue 31, item 2).
+
+The pages print computed numbers by gluing them (``glue(name, value)``) and quoting them with
+``{glue:text}`` roles. A page runs only in the book build, whose gates check form, not values;
+so this test reads the pages' code cells (Python's ``ast``, no execution) and holds each glue
+call to one of:
+
+- **a claim's value**: the glued expression reads a ledger claim, by its id (a string literal
+  that is a claim id) or through a claim's evaluation or record (the attributes ``reproduced``,
+  ``published`` or ``band``); the claim tests recompute it against its tolerance (a count of
+  verdicts, ``status``, is not a claim's value);
+- **registered**: the glue name (or, for an f-string name, its pattern) is registered in
+  :mod:`navcore.glued` for that page, with the function computing it, which
+  ``tests/test_glue_values.py`` checks against an independent oracle and which
+  :func:`navcore.book.glue` compares with what the page glues;
+- **a figure**: the glued object is a figure (``fig``), not a number;
+- **not yet registered**: listed in ``tests/glue_todo.txt``. That list may only shrink: a
+  listed name that is now registered, a claim's value or no longer glued fails the test.
+
+Anything else fails: a new glued number must come with its registration and oracle, or read a
+claim.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+from functools import cache
+from pathlib import Path
+
+import pytest
+
+from navcore import glued
+
+ROOT = Path(__file__).resolve().parents[1]
+BOOK = ROOT / "book"
+TODO = ROOT / "tests" / "glue_todo.txt"
+
+_CELL = re.compile(r"^```\{code-cell\}[^\n]*\n(.*?)^```", re.S | re.M)
+_CLAIM_ATTRIBUTES = {"reproduced", "published", "band"}
+
+
+@cache
+def _claim_ids() -> frozenset[str]:
+    from navcore.ledger import claims
+
+    return frozenset(c.id for c in claims())
+
+
+def _name_pattern(node: ast.expr) -> str | None:
+    """A glue name as a page writes it: the literal, or an f-string's pattern with ``{field}``."""
+    if isinstance(node, ast.Constant) and isinstance(node.value, str):
+        return node.value
+    if isinstance(node, ast.JoinedStr):
+        out = []
+        for part in node.values:
+            if isinstance(part, ast.Constant):
+                out.append(str(part.value))
+            elif isinstance(part, ast.FormattedValue):
+                out.append("{" + ast.unparse(part.value) + "}")
+        return "".join(out)
+    return None
+
+
+def _cell_source(src: str) -> str:
+    """A code cell's Python: MyST cell options (``:tags:``, a ``---`` block) and magics dropped."""
+    lines = src.splitlines()
+    if lines and lines[0].strip() == "---":
+        end = next(i for i in range(1, len(lines)) if lines[i].strip() == "---")
+        lines = lines[end + 1 :]
+    return "\n".join(line for line in lines if not line.startswith((":", "%")))
+
+
+@cache
+def glue_calls() -> tuple[tuple[str, str, str, ast.expr | None], ...]:
+    """Every glue call of the book's pages: (page, name pattern, how glue was reached, value)."""
+    out = []
+    for path in sorted(BOOK.rglob("*.md")):
+        if "_build" in path.parts:
+            continue
+        page = path.relative_to(BOOK).with_suffix("").as_posix()
+        for m in _CELL.finditer(path.read_text(encoding="utf-8")):
+            tree = ast.parse(_cell_source(m.group(1)), filename=str(path))
+            for node in ast.walk(tree):
+                if not isinstance(node, ast.Call):
+                    continue
+                func = node.func
+                called = func.id if isinstance(func, ast.Name) else getattr(func, "attr", None)
+                if called != "glue" or not node.args:
+                    continue
+                name = _name_pattern(node.args[0])
+                assert name is not None, (
+                    f"{page}: a glue name must be a string or an f-string: {ast.unparse(node)}"
+                )
+                value = node.args[1] if len(node.args) > 1 else None
+                out.append((page, name, ast.unparse(func), value))
+    return tuple(out)
+
+
+def _reads_claim(value: ast.expr | None) -> bool:
+    if value is None:
+        return False
+    ids = _claim_ids()
+    for node in ast.walk(value):
+        if isinstance(node, ast.Constant) and isinstance(node.value, str) and node.value in ids:
+            return True
+        if isinstance(node, ast.Attribute) and node.attr in _CLAIM_ATTRIBUTES:
+            return True
+    return False
+
+
+def _is_figure(value: ast.expr | None) -> bool:
+    return isinstance(value, ast.Name) and value.id == "fig"
+
+
+def _fields_blank(pattern: str) -> str:
+    return re.sub(r"\{[^{}]*\}", "{}", pattern)
+
+
+def _registration(page: str, name: str) -> glued.GluedValue | None:
+    """The registration of a glue name (or f-string pattern) as a page writes it, if any."""
+    if "{" in name:
+        return next(
+            (e for e in glued.entries().values() if _fields_blank(e.pattern) == _fields_blank(name)),
+            None,
+        )
+    found = glued.lookup(name)
+    return found[0] if found else None
+
+
+def _todo() -> set[tuple[str, str]]:
+    rows = set()
+    for line in TODO.read_text(encoding="utf-8").splitlines():
+        if line.strip() and not line.startswith("#"):
+            page, name = line.split(maxsplit=1)
+            rows.add((page, name.strip()))
+    return rows
+
+
+def _kind(page: str, name: str, value: ast.expr | None) -> str:
+    if _registration(page, name) is not None:
+        return "registered"
+    if _reads_claim(value):
+        return "claim"
+    if _is_figure(value):
+        return "figure"
+    return "unchecked"
+
+
+def test_the_scan_finds_the_glue_calls():
+    """The scan is not empty and sees the three kinds (a scan that finds nothing passes anything)."""
+    calls = glue_calls()
+    assert len(calls) > 300
+    kinds = {_kind(p, n, v) for p, n, _, v in calls}
+    assert {"registered", "claim", "figure", "unchecked"} <= kinds
+
+
+def test_every_glued_number_is_a_claim_or_registered():
+    """A glued number that is neither a claim's value nor registered, and not in the to-do list, fails."""
+    todo = _todo()
+    bad = sorted(
+        f"{page}: {name} = {ast.unparse(value) if value is not None else '?'}"
+        for page, name, _, value in glue_calls()
+        if _kind(page, name, value) == "unchecked" and (page, name) not in todo
+    )
+    assert not bad, (
+        "glued numbers that are neither a claim's value nor registered in navcore.glued (register "
+        "each with its function and an oracle in tests/test_glue_values.py):\n" + "\n".join(bad)
+    )
+
+
+def test_the_todo_list_only_shrinks():
+    """A name in tests/glue_todo.txt must still be glued on its page and still be unchecked."""
+    kinds: dict[tuple[str, str], set[str]] = {}
+    for page, name, _, value in glue_calls():
+        kinds.setdefault((page, name), set()).add(_kind(page, name, value))
+    stale = sorted(
+        f"{p} {n}: {sorted(kinds.get((p, n), {'not glued'}))}"
+        for p, n in _todo()
+        if kinds.get((p, n)) != {"unchecked"}
+    )
+    assert not stale, "delete these lines from tests/glue_todo.txt:\n" + "\n".join(stale)
+
+
+def test_every_registration_is_glued_on_its_page():
+    """Each registered name is glued on the page its registration names (no stale entries)."""
+    shown = {(page, _registration(page, name)) for page, name, _, _ in glue_calls()}
+    missing = [
+        f"{e.pattern} (registered for {e.page})" for e in glued.entries().values() if (e.page, e) not in shown
+    ]
+    assert not missing, "registered glue names no page glues: " + ", ".join(missing)
+
+
+def test_registered_names_are_not_claims():
+    """A registered name does not read a claim too: one home for each glued number."""
+    both = [f"{p}: {n}" for p, n, _, v in glue_calls() if _registration(p, n) is not None and _reads_claim(v)]
+    assert not both, both
+
+
+def test_pages_glue_through_navcore_book():
+    """Pages glue with navcore.book.glue, which refuses a registered value its function does not compute."""
+    direct = sorted(
+        {
+            str(path.relative_to(BOOK))
+            for path in BOOK.rglob("*.md")
+            if "_build" not in path.parts and "from myst_nb import glue" in path.read_text(encoding="utf-8")
+        }
+    )
+    assert not direct, "pages importing myst_nb's glue instead of navcore.book.glue: " + ", ".join(direct)
+
+
+@pytest.mark.parametrize(
+    "source, kind",
+    [
+        ('glue("x-1", float(ev["KZL-fig5-ins-position"].reproduced))', "claim"),
+        ('glue("x-2", value("SP-fig2.1-omega0"))', "claim"),
+        ('glue("x-3", float(ledger.evaluate_claim(cid).reproduced))', "claim"),
+        ('glue("x-4", float(2 * np.pi))', "unchecked"),
+        ('glue("x-6", sum(ledger.evaluate_claim(i).status == "reproduced" for i in ids))', "unchecked"),
+        ('glue("x-5", fig, display=False)', "figure"),
+        ('glue("kzl00-schuler-min", 84.45)', "registered"),
+        ('glue(f"atc10-erp-K{k}-{p_dl}", 1.0)', "registered"),
+        ('glue(f"atc10-erp-half-K{k}-{p_dl}", 1.0)', "unchecked"),
+    ],
+)
+def test_classification(source, kind):
+    """The rules on hand-written calls: a claim read by id or evaluation, a figure, a registered
+    name or pattern (and a pattern that merely shares a prefix is not registered), and plain
+    arithmetic, which is unchecked."""
+    call = ast.parse(source).body[0].value
+    assert isinstance(call, ast.Call)
+    name = _name_pattern(call.args[0])
+    assert name is not None
+    page = "atc10/10-jamming-model" if "atc10" in name else "kzl/00-requirements"
+    assert _kind(page, name, call.args[1]) == kind
