@@ -33,6 +33,7 @@ from navcore.ledger.render import (
     InteractiveLedger,
     LedgerTable,
     latex_table,
+    math_spans,
 )
 
 __all__ = [
@@ -424,10 +425,23 @@ class Table:
 
 
 def _tidy_html(table_html: str) -> str:
-    """The table's cell texts with numbers tidied (:func:`~navcore.formatting.tidy_numbers`);
-    the style block before the table is left alone."""
+    r"""The table's cell texts with numbers tidied (:func:`~navcore.formatting.tidy_numbers`)
+    and ``$...$`` set as MathJax inline math, as in the claim rows; the style block before
+    the table is left alone.
+
+    Examples
+    --------
+    >>> _tidy_html("<td>at $N_T$, 9.40e-02</td>")
+    '<td>at <span class="math notranslate nohighlight">\\(N_T\\)</span>, 9.40×10⁻²</td>'
+    """
     head, sep, body = table_html.rpartition("</style>")
-    body = re.sub(r">([^<>]+)<", lambda m: ">" + tidy_numbers(m.group(1)) + "<", body)
+
+    def cell(text: str) -> str:
+        math = '<span class="math notranslate nohighlight">\\({}\\)</span>'
+        pieces = math_spans(text)
+        return "".join(math.format(piece) if is_math else tidy_numbers(piece) for is_math, piece in pieces)
+
+    body = re.sub(r">([^<>]+)<", lambda m: ">" + cell(m.group(1)) + "<", body)
     return head + sep + body
 
 

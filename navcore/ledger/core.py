@@ -421,9 +421,9 @@ def printed(text: str, *, extra_abs: float = 0.0, why: str = "") -> tuple[float,
     exponent = int(m.group(4) or 0)
     value = float(s)
     half = 0.5 * 10.0 ** (exponent - decimals)
-    reason = f"half a unit in the last printed digit of {text}"
+    reason = f"half a unit in the last printed digit of {_number_math(text.strip())}"
     if extra_abs:
-        reason += f", plus {extra_abs:g}" + (f" ({why})" if why else "")
+        reason += f", plus {_number_math(f'{extra_abs:g}')}" + (f" ({why})" if why else "")
     elif why:
         reason += f"; {why}"
     loose_abs = None
@@ -439,6 +439,23 @@ def printed(text: str, *, extra_abs: float = 0.0, why: str = "") -> tuple[float,
         quote=text.strip(),
         loose_abs=loose_abs,
     )
+
+
+def _number_math(text: str) -> str:
+    r"""A number as a reader sees it: one in e-notation as inline math, any other unchanged.
+
+    Examples
+    --------
+    >>> _number_math("1.61e-4"), _number_math("184e1"), _number_math("1e-12"), _number_math("0.011")
+    ('$1.61 \\times 10^{-4}$', '$184 \\times 10^{1}$', '$10^{-12}$', '0.011')
+    """
+    m = re.fullmatch(r"([+-]?)(\d*(?:\.\d*)?)[eE]([+-]?\d+)", text.replace("−", "-"))
+    if not m:
+        return text
+    sign, mantissa, exponent = m.group(1), m.group(2), int(m.group(3))
+    if mantissa == "1":
+        return f"${sign}10^{{{exponent}}}$"
+    return f"${sign}{mantissa} \\times 10^{{{exponent}}}$"
 
 
 def _trailing_zeros(digits: str) -> int:

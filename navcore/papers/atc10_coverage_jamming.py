@@ -51,7 +51,8 @@ IN.convention(
         "from a tenth of its ceiling down to 1e-6 of it": 0.1,
     },
     reason="'a strong threshold behavior' (Sec. 2.1) and 'a strong thresholding property' (Sec. 2.8) name "
-    "no level: the fall of a bound is measured from a fraction of its J -> infinity ceiling down to 1e-6 of "
+    "no level: the fall of a bound is measured from a fraction of its J -> infinity ceiling down to "
+    "$10^{-6}$ of "
     "it, and the text does not say from which",
     quantity="start of a bound's fall, as a fraction of its ceiling",
 )
@@ -82,7 +83,7 @@ IN.assumed(
     high=0.5,
     reason="Sec. 2.3 samples the matched-filter output at twice the Nyquist rate, so neighbouring noise "
     "samples 1/(2B) apart are correlated; for a spectrum inside |f| < B/2 the correlation "
-    "int S(f) cos(pi f / B) df is positive. With correlation between neighbours only (a code of "
+    "$\\int S(f) \\cos(\\pi f / B)\\, df$ is positive. With correlation between neighbours only (a code of "
     "rectangular chips sampled twice per chip) it is 0.5, the largest such a process allows; 0.3 stands "
     "for chips shaped to put more power at the band edges",
     quantity="correlation of neighbouring matched-filter noise samples",
@@ -573,7 +574,7 @@ CLAIMS: list[Claim] = [
         "$J/(P_0 B \\tau)$",
         lambda: _threshold_behaviour(True),
         "Both bounds at $t = 0$, $P_{DL}$ 0.9 and 0.999: the fall from 90 % of the $J \\to \\infty$ "
-        "ceiling down to 1e-6 of it takes 1.1-1.3 dB, well within the 10 dB (or 5 dB) read as 'very "
+        "ceiling down to $10^{-6}$ of it takes 1.1-1.3 dB, well within the 10 dB (or 5 dB) read as 'very "
         "rapidly'; the readings from half or a tenth of the ceiling are shown.",
         PAGE_K1,
     ),
@@ -590,7 +591,8 @@ CLAIMS: list[Claim] = [
         tolerance=EXACT,
         expected_status="consistent",
         note="$t = 0$, every finite Table 2.1 design. Measured from a tenth of the ceiling, every curve "
-        "falls to 1e-6 of it within 7.6 dB; measured from 90 % of it, the $N_{FL}$ curves take 1.5-2 dB but "
+        "falls to $10^{-6}$ of it within 7.6 dB; measured from 90 % of it, the $N_{FL}$ curves take 1.5-2 "
+        "dB but "
         "the $N_{ADL}$ curves 5 dB ($K = 10$), 6-10 dB ($K = 100$) and 29 dB ($K = 1000$, $P_{DL}$ = 0.999): "
         "their final approach to the ceiling is slow, which is also why the $K = 1000$ entry of Table 2.1 "
         "is ill-conditioned. 'Strong thresholding' names no level, so the paper is not accused.",
@@ -603,10 +605,11 @@ CLAIMS: list[Claim] = [
         "detector",
         _coherent_beats_envelope,
         "At equal $p_f$ and energy: coherent $p_d = Q(Q^{-1}(p_f) - d)$ against the envelope (Rician) "
-        "$p_d = Q_1(d, \\sqrt{-2 \\ln p_f})$ (noncentral chi-square, 2 degrees of freedom), $d$ from 0.5 to "
+        "$p_d = Q_1(d, \\sqrt{-2 \\ln p_f})$ (noncentral $\\chi$-square, 2 degrees of freedom), $d$ from "
+        "0.5 to "
         "10 "
         "and $p_f$ "
-        "from 1e-9 to 0.3.",
+        "from $10^{-9}$ to 0.3.",
         PAGE,
     ),
     _statement(
@@ -648,7 +651,8 @@ CLAIMS: list[Claim] = [
         "$N_{FL} = (N_T - N) \\exp[(Kt + 1) \\ln F(p_f)]$ with $p_f$ of (2.7.1)",
         lambda: _composition(0),
         "navcore's log-domain bound against the printed formulas typed with plain floats (erf, powers) at "
-        "K = 1, 10, 100 and t = 0-0.1, x from -16 to 0 dB, to 1e-6 relative; at t = 0 the exponent is 1, "
+        "K = 1, 10, 100 and t = 0-0.1, x from -16 to 0 dB, to $10^{-6}$ relative; at t = 0 the exponent is "
+        "1, "
         "so (B.11) gives (B.8).",
         PAGE,
     ),
@@ -659,7 +663,8 @@ CLAIMS: list[Claim] = [
         lambda: _composition(1),
         "As for $N_{FL}$: the printed $K = 1$ and $K > 1$ lines ($P_{DL}$ from (2.4.2) with its $\\nu$ "
         "maximiser) typed "
-        "with plain floats, against navcore's log-domain bound, to 1e-6 relative where nothing underflows.",
+        "with plain floats, against navcore's log-domain bound, to $10^{-6}$ relative where nothing "
+        "underflows.",
         PAGE,
     ),
     Claim(
@@ -827,7 +832,8 @@ CLAIMS: list[Claim] = [
         tolerance=EXACT,
         expected_status="inconsistent",
         note="Neighbouring samples correlated, farther ones not (assumed 0.3-0.5; Genz integration of the "
-        "24-dimensional Gaussian orthant, 1e-3 allowing for its error): correlated samples leave a window "
+        "24-dimensional Gaussian orthant, $10^{-3}$ allowing for its error): correlated samples leave a "
+        "window "
         "empty 2.3-4.2 times more often than the product assumes (Slepian's inequality), so F and G, and "
         "the bounds built on them, are approximations. A caveat, not a finding: the size needs the "
         "signature's spectrum, which the paper does not give, and read with B a one-sided baseband "
@@ -851,7 +857,8 @@ CLAIMS: list[Claim] = [
         oracle=lambda: _oracle_track_time_ratio() - 1.0 <= 1.0,
         oracle_tolerance=EXACT,
         note="An aircraft at $v = 600$ mph flying toward a synchronous satellite: successive receptions are "
-        "$\\alpha$ plus the range change apart, about $c/v$ = 1.1e6 times the printed bound. Only the range "
+        "$\\alpha$ plus the range change apart, about $c/v = 1.1 \\times 10^{6}$ times the printed bound. "
+        "Only the range "
         "change is bounded by $v \\alpha / c$; the $\\alpha$'s cancel in (C.2)'s difference of differences, "
         "and (C.5)-(C.6) and $n_v$ follow the correct form.",
         discussed_in=PAGE,
@@ -876,7 +883,7 @@ CLAIMS: list[Claim] = [
         "$p_f$ (D.16)",
         _appendix_d_algebra,
         "sympy solves the log-likelihood-ratio threshold exactly; (D.9), (D.13) and (D.16) are compared "
-        "with the Gaussian tails at 20 random (E, J/B, lambda) points to 1e-12.",
+        "with the Gaussian tails at 20 random (E, J/B, $\\lambda$) points to $10^{-12}$.",
         PAGE,
     ),
     _statement(
@@ -888,7 +895,7 @@ CLAIMS: list[Claim] = [
         _d17_matches_direct,
         "navcore's $p_f$ against the threshold set from $p_d$ and the noise-only Gaussian tail of a standard "
         "library, with "
-        "E = 10 mJ and B = 10 MHz, at four $p_d$ and five J, to 1e-9 relative; and the two limits.",
+        "E = 10 mJ and B = 10 MHz, at four $p_d$ and five J, to $10^{-9}$ relative; and the two limits.",
         PAGE,
     ),
 ]

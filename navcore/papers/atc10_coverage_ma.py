@@ -559,7 +559,7 @@ CLAIMS = [
         "Sec. 3.1.2 C",
         "coherent detection beats envelope detection",
         coherent_beats_envelope,
-        "Gaussian noise, SNR 4, $p_f$ = 1e-6: $Q(Q^{-1}(p_f) - d)$ against the Rician tail.",
+        "Gaussian noise, SNR 4, $p_f = 10^{-6}$: $Q(Q^{-1}(p_f) - d)$ against the Rician tail.",
         N_,
     ),
     _s(
@@ -599,7 +599,8 @@ CLAIMS = [
         "Eqs. (3.4.1)-(3.4.6), (E.3)",
         "characteristic function (3.4.6) gives the cumulants",
         cumulants_match,
-        "4e5 samples, uniform C at $1/\\sqrt{3b}$ = 3: $\\kappa_2$ within 1 %, $\\kappa_4$ within 10 %.",
+        "$4 \\times 10^{5}$ samples, uniform C at $1/\\sqrt{3b} = 3$: $\\kappa_2$ within 1 %, $\\kappa_4$ "
+        "within 10 %.",
         N_,
         status="reproduced",
     ),
@@ -661,7 +662,7 @@ CLAIMS = [
         "Theorem 3.2 proof, (3.7.15)",
         "the convexity the proof invokes holds unconditionally",
         convex_unconditional,
-        "Concave beyond $\\rho \\sqrt{\\beta}$ of about 13 at q = 4e-5.",
+        "Concave beyond $\\rho \\sqrt{\\beta}$ of about 13 at $q = 4 \\times 10^{-5}$.",
         R_,
         status="discrepant",
         erratum="ATC10-E3-8",
@@ -681,7 +682,7 @@ CLAIMS = [
         "Eqs. (3.7.5)-(3.7.13)",
         "$\\int e^{\\rho x} C \\ge \\cosh(\\rho \\sqrt{b})$",
         cosh_inequality,
-        "Four densities of second moment b, rho up to 30.",
+        "Four densities of second moment b, $\\rho$ up to 30.",
         R_,
     ),
     Claim(
@@ -689,7 +690,8 @@ CLAIMS = [
         paper="ATC10",
         locator="Sec. 3.8",
         quantity="the Gaussian approximation to the multiple-access noise is very poor in the tail "
-        "($P(n > 4 \\sigma)$ against the Gaussian tail, two-point $C$, N = 1e5, $\\tau/\\alpha$ = 2e-5)",
+        "($P(n > 4 \\sigma)$ against the Gaussian tail, two-point $C$, $N = 10^{5}$, "
+        "$\\tau/\\alpha = 2 \\times 10^{-5}$)",
         published=True,
         unit="statement",
         compute=lambda: tail_ratio() > float(IN.very_poor_factor),
@@ -703,7 +705,7 @@ CLAIMS = [
         "Sec. 3.8, (3.8.13)-(3.8.15)",
         "Exp tends to $\\mathrm{Exp}_g$ as N grows",
         exp_limit,
-        "Within 0.1 % at N = 1e8; the shortfall times $N \\tau/\\alpha$ tends to "
+        "Within 0.1 % at $N = 10^{8}$; the shortfall times $N \\tau/\\alpha$ tends to "
         "$\\mathrm{Exp}_g^2 (1 - 6 \\tau/\\alpha)/12$.",
         G_,
     ),
@@ -718,7 +720,7 @@ CLAIMS = [
         tolerance=printed("2e5")[1],
         expected_status="consistent",
         kind="cross-check",
-        note="1e5 x 5/2.5 = 1e5 x 4/2 = 2e5.",
+        note="$10^{5} \\times 5/2.5 = 10^{5} \\times 4/2 = 2 \\times 10^{5}$.",
         discussed_in=G_,
     ),
     _s(
@@ -726,7 +728,7 @@ CLAIMS = [
         "Sec. 3.9, last line",
         "peak SIR = $3 \\alpha (1/\\tau_c)/N$",
         peak_sir_identity,
-        "Reciprocal of (3.9.2) with $W = 3/(4 \\tau_c)$: 300 (24.8 dB) at N = 1e5, $\\alpha = 1$ s, "
+        "Reciprocal of (3.9.2) with $W = 3/(4 \\tau_c)$: 300 (24.8 dB) at $N = 10^{5}$, $\\alpha = 1$ s, "
         "$\\tau_c$ = 0.1 µs.",
         Z_,
     ),
@@ -735,7 +737,7 @@ CLAIMS = [
         "Eqs. (F.2)-(F.6)",
         "$\\int x^2 C_{ij} = (1/4\\tau) \\int R_{ii} R_{jj}$",
         appf_identity,
-        "Random 31-chip codes: $\\int X_{ij}^2 = \\int R_{ii} R_{jj}$ to 1e-12.",
+        "Random 31-chip codes: $\\int X_{ij}^2 = \\int R_{ii} R_{jj}$ to $10^{-12}$.",
         Z_,
     ),
     _s(
@@ -771,7 +773,8 @@ CLAIMS = [
         "Appendix E, (E.1)",
         "N - 1 may be replaced by N",
         appe_n_minus_one,
-        "The relative difference is exactly 1/N: 1e-3, 1e-5 and 1e-7 at N = 1e3, 1e5 (Sec. 3.6) and 1e7; "
+        "The relative difference is exactly $1/N$: $10^{-3}$, $10^{-5}$ and $10^{-7}$ at $N = 10^{3}$, "
+        "$10^{5}$ (Sec. 3.6) and $10^{7}$; "
         "Appendix E is about the limit in N.",
         N_,
     ),
@@ -831,7 +834,7 @@ CLAIMS = [
         "Eqs. (3.8.10)-(3.8.11), (3.8.16)",
         "Exp equals the closed form (3.7.24)",
         exp_equals_closed_form,
-        "N 1e5-1e6, $\\mathrm{Exp}_g$ 1-12.5, $\\tau/\\alpha$ = 1e-5.",
+        "$N = 10^{5}$ to $10^{6}$, $\\mathrm{Exp}_g$ 1-12.5, $\\tau/\\alpha = 10^{-5}$.",
         G_,
     ),
     Claim(

@@ -66,8 +66,8 @@ IN.assumed(
     0.9,
     low=0.75,
     high=0.95,
-    quantity="exponent rho of the 1/f clock component (App. G), for the statements about rho < 1",
-    reason="App. G and Sec. 4.3 give only 1/2 < rho < 1, 'slightly less than one'; 0.75-0.95 spans "
+    quantity="exponent $\\rho$ of the 1/f clock component (App. G), for the statements about $\\rho < 1$",
+    reason="App. G and Sec. 4.3 give only 1/2 < $\\rho < 1$, 'slightly less than one'; 0.75-0.95 spans "
     "the flicker-like range where the Kalman-filter and Markov statements are made",
 )
 
@@ -1027,7 +1027,7 @@ CLAIMS = [
         tolerance=EXACT,
         expected_status="reproduced",
         note="$\\mathrm{std}(\\tau_n - \\tau_0 - n \\bar\\tau)/(n \\bar\\tau) = (\\sigma_0/\\bar\\tau) "
-        "\\sqrt{1 + 1/n}$: 5.0e-8 for $\\sigma_0$ = 50 ns, $\\bar\\tau$ = 1 s.",
+        "\\sqrt{1 + 1/n}$: $5.0 \\times 10^{-8}$ for $\\sigma_0 = 50$ ns, $\\bar\\tau = 1$ s.",
         discussed_in=PAGE_TRACKER,
     ),
     _s(
@@ -1035,7 +1035,7 @@ CLAIMS = [
         "Sec. 4.5.1",
         "(4.1.1) = (4.5.6) and (4.1.2) = (4.5.7)",
         equivalent_forms,
-        "A random differencing H on both examples' physical geometry: covariances agree to 1e-8.",
+        "A random differencing H on both examples' physical geometry: covariances agree to $10^{-8}$.",
         PAGE_GEOMETRY,
     ),
     _s(
@@ -1079,7 +1079,7 @@ CLAIMS = [
         oracle_tolerance=EXACT,
         note="(4.5.9) gives $\\tau_n = n \\alpha_0 + \\sum w_i$; the printed sum has variance "
         "$(n + 1) \\sigma_0^2$, 0.10 of (4.3.1c)'s $(n + n^2) \\sigma_0^2$ at $n = 10$ (a Monte Carlo of "
-        "2e5 draws agrees). No printed number depends on the slip.",
+        "$2 \\times 10^{5}$ draws agrees). No printed number depends on the slip.",
         discussed_in=PAGE_TRACKER,
     ),
     _s(
@@ -1105,7 +1105,7 @@ CLAIMS = [
     _s(
         "ATC10-sec4.5.2-constant-gain-worse",
         "Sec. 4.5.2, after (4.5.26)",
-        "the constant gamma from n = 1 gives worse early estimates",
+        "the constant $\\gamma$ from n = 1 gives worse early estimates",
         constant_gain_worse,
         "Exact clock-error variances for both gain sequences (state $\\xi$, $A$): the fixed gain is worse at "
         "$n = 1$ in all six cases ($\\times$1.6 to $\\times$1.8 at $\\sigma_0$ = 5 ns) and on average over "
@@ -1138,9 +1138,9 @@ CLAIMS = [
         published=2.0,
         unit="",
         compute=quadratic_growth_exponent,
-        tolerance=printed("2", why="the exponent of (n - N)^2")[1],
+        tolerance=printed("2", why="the exponent of $(n - N)^2$")[1],
         expected_status="reproduced",
-        note="Log-slope of (4.5.27) between m = 1e6 and 2e6 (Example I, 5 ns).",
+        note="Log-slope of (4.5.27) between $m = 10^{6}$ and $2 \\times 10^{6}$ (Example I, 5 ns).",
         discussed_in=PAGE_TRACKER,
     ),
     _s(
@@ -1148,7 +1148,7 @@ CLAIMS = [
         "Sec. 4.5.4",
         "$\\psi$ is the factor by which tracking reduces $\\gamma$",
         psi_is_reduction_factor,
-        "$\\gamma_N \\beta$ from 3000 steps of the recursion equals $\\psi(\\alpha)$ to 1e-6.",
+        "$\\gamma_N \\beta$ from 3000 steps of the recursion equals $\\psi(\\alpha)$ to $10^{-6}$.",
         PAGE_TRACKER,
     ),
     _s(
@@ -1374,7 +1374,7 @@ CLAIMS = [
         "The gain recursion (4.5.20)-(4.5.25), corrected as in ATC10-E4.4-recursion-formulas, run 2000 "
         "steps for both examples and the three $\\sigma_0$ of Table 4.3 (printed Table 4.2 $\\beta$, "
         "$\\sigma$ = 50 ns) against $\\psi(\\alpha)/\\beta$ with $\\psi$ the root of the cubic (4.5.26): "
-        "equal to 1e-9. The text cites (4.5.30) for $\\gamma_n$ where (4.5.25) is meant.",
+        "equal to $10^{-9}$. The text cites (4.5.30) for $\\gamma_n$ where (4.5.25) is meant.",
         PAGE_TRACKER,
     ),
     _s(
@@ -1490,7 +1490,7 @@ CLAIMS = [
         "first Newton iterate's error $O((k/f_0) \\lambda^2)$",
         newton_error_order,
         "Log-slope of the error in $\\lambda$ is 2 and the error is below $(k/f_0) \\lambda^2$ "
-        "($\\lambda$ = 1e-4 and 1e-5, i.e. the printed 1e-9 scaled up to be resolvable).",
+        "($\\lambda = 10^{-4}$ and $10^{-5}$, i.e. the printed $10^{-9}$ scaled up to be resolvable).",
         PAGE_TRACKER,
     ),
     _s(
@@ -1498,25 +1498,25 @@ CLAIMS = [
         "Appendix G",
         "$(nN + k)^{2\\rho} - (nN)^{2\\rho} \\approx 2 \\rho (nN)^{2\\rho-1} k$",
         counter_linearisation,
-        "Relative error below 1e-3 at k/nN = 1e-4.",
+        "Relative error below $10^{-3}$ at $k/nN = 10^{-4}$.",
         PAGE_TRACKER,
         status="consistent",
     ),
     _s(
         "ATC10-appG-V0-closed-form",
         "Appendix G, Var x3",
-        "V0 (squared integrand) = 1/(Gamma(2rho+1) sin(pi rho))",
+        "$V_0$ (squared integrand) $= 1/(\\Gamma(2\\rho+1) \\sin(\\pi \\rho))$",
         v0_matches,
-        "Quadrature at rho = 0.55, 0.75, 0.9 (assumed) and 0.95.",
+        "Quadrature at $\\rho = 0.55$, 0.75, 0.9 (assumed) and 0.95.",
         PAGE_TRACKER,
         status="consistent",
     ),
     _s(
         "ATC10-appG-V0-printed",
-        "Appendix G, Var x3 (V0 as printed)",
-        "the printed V0 is a positive constant",
+        "Appendix G, Var x3 ($V_0$ as printed)",
+        "the printed $V_0$ is a positive constant",
         v0_printed_positive,
-        "The printed integrand has lost its square; as printed the integral to 1e6 is about "
+        "The printed integrand has lost its square; as printed the integral to $10^{6}$ is about "
         "$-X^{\\rho - 1/2}$, so $V_0$ would be negative and unbounded.",
         PAGE_TRACKER,
         status="discrepant",
@@ -1527,7 +1527,7 @@ CLAIMS = [
     _s(
         "ATC10-appG-half-is-wiener",
         "Appendix G, x3",
-        "rho = 1/2 gives the integral of v",
+        "$\\rho = 1/2$ gives the integral of v",
         half_is_wiener,
         "$V_0(1/2) = 1$ from both forms: $\\mathrm{Var}\\, x_3 = \\beta^2 t$.",
         PAGE_TRACKER,
@@ -1544,7 +1544,8 @@ CLAIMS = [
         expected_status="consistent",
         note="$\\mathrm{Var}\\, x(t) = \\int S(f) |1 - e^{j 2 \\pi f t}|^2 df$ by quadrature at t = 1 and "
         "2 s: "
-        "the exponent over $2\\rho$ is 1 to 1e-11 for $\\rho$ across its assumed range (1e-6 allows for the "
+        "the exponent over $2\\rho$ is 1 to $10^{-11}$ for $\\rho$ across its assumed range ($10^{-6}$ "
+        "allows for the "
         "quadrature).",
         discussed_in=PAGE_TRACKER,
     ),
@@ -1585,7 +1586,7 @@ CLAIMS = [
         "Appendix H, Proposition, (H.12)-(H.13)",
         "$M_0'(M_0 P M_0')^{-1} M_0 = P^{-1} (I - GK)$",
         proposition_holds,
-        "M0 from the SVD of G.",
+        "$M_0$ from the SVD of G.",
         PAGE_TRACKER,
     ),
     _s(

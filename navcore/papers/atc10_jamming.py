@@ -63,38 +63,53 @@ NOMINAL_RF_TEXT = "30"
 
 IN = InputSet("ATC10", "jamming")
 IN.published("bandwidth_hz", 10e6, unit="Hz", locator="Sec. 2.7", quantity="signal bandwidth B")
-IN.published("repetition_s", 1.0, unit="s", locator="Sec. 2.7", quantity="pulse repetition period alpha")
+IN.published("repetition_s", 1.0, unit="s", locator="Sec. 2.7", quantity="pulse repetition period $\\alpha$")
 IN.published(
-    "differential_delay_s", 24e-3, unit="s", locator="Sec. 2.7", quantity="differential satellite delay beta"
+    "differential_delay_s",
+    24e-3,
+    unit="s",
+    locator="Sec. 2.7",
+    quantity="differential satellite delay $\\beta$",
 )
 IN.published("max_speed_mph", 600.0, unit="mph", locator="Sec. 2.8", quantity="maximum aircraft speed v")
-IN.published("airborne_fraction", 0.1, locator="Sec. 2.7", quantity="N / N_T, the airborne fraction")
+IN.published("airborne_fraction", 0.1, locator="Sec. 2.7", quantity="$N / N_T$, the airborne fraction")
 IN.published(
     "pulse_energy_j",
     10e-3,
     unit="J",
     locator="Sec. 2.7 and the captions of Tables 1.1 and 2.1",
-    quantity="signal pulse energy E = P0 tau",
+    quantity="signal pulse energy E = $P_0 \\tau$",
 )
 IN.published(
-    "pulse_power_dbw", 30.0, unit="dBW", locator="Sec. 2.7 ('e.g. P0 = 30 dbw')", quantity="pulse power P0"
+    "pulse_power_dbw", 30.0, unit="dBW", locator="Sec. 2.7 ('e.g. P0 = 30 dbw')", quantity="pulse power $P_0$"
 )
 IN.published(
-    "pulse_duration_s", 10e-6, unit="s", locator="Sec. 2.7 ('tau = 10 usec')", quantity="pulse duration tau"
+    "pulse_duration_s",
+    10e-6,
+    unit="s",
+    locator="Sec. 2.7 ('tau = 10 usec')",
+    quantity="pulse duration $\\tau$",
 )
 IN.published(
-    "adl_level", 0.01, locator="Sec. 2.7", quantity="failure level of N_ADL, as a fraction of N_T (0.01 N_T)"
+    "adl_level",
+    0.01,
+    locator="Sec. 2.7",
+    quantity="failure level of $N_{ADL}$, as a fraction of $N_T$ ($0.01 N_T$)",
 )
 IN.published(
-    "fl_level", 0.9, locator="Sec. 2.7", quantity="failure level of N_FL, as a fraction of N_T (0.9 N_T)"
+    "fl_level",
+    0.9,
+    locator="Sec. 2.7",
+    quantity="failure level of $N_{FL}$, as a fraction of $N_T$ ($0.9 N_T$)",
 )
 IN.convention(
     "fl_fraction_of_level",
     0.99,
     alternative=0.999,
-    reason="0.9 N_T is the supremum 1 - N/N_T of N_FL, approached as J grows but never reached (the gap "
-    "is below 10^-(10^5) at any J the figures show); the book takes the level as 99 % of it",
-    quantity="fraction of the printed N_FL level used as the failure level",
+    reason="$0.9 N_T$ is the supremum $1 - N/N_T$ of $N_{FL}$, approached as J grows but never reached "
+    "(the gap "
+    "is below $10^{-10^{5}}$ at any J the figures show); the book takes the level as 99 % of it",
+    quantity="fraction of the printed $N_{FL}$ level used as the failure level",
 )
 IN.convention(
     "plateau_fraction",
@@ -115,7 +130,7 @@ TABLE_2_1_K_ROWS = {10: (1, 2), 100: (3, 4), 1000: (5, 6)}
 for _k, (_a, _b) in TABLE_2_1_K_ROWS.items():
     IN.published(f"tab21_k{_k}", _k, locator=f"Table 2.1, rows {_a}-{_b}", quantity="transmission length K")
 for _r, (_k, _p, _text, _rel) in enumerate(TABLE_2_1, start=1):
-    IN.published(f"tab21_r{_r}_p_dl", _p, locator=f"Table 2.1, row {_r}", quantity="design P_DL")
+    IN.published(f"tab21_r{_r}_p_dl", _p, locator=f"Table 2.1, row {_r}", quantity="design $P_{DL}$")
 for _r, (_k, _erp, _rf, _dia, _bw) in enumerate(TABLE_1_1, start=1):
     IN.published(f"tab11_r{_r}_k", _k, locator=f"Table 1.1, row {_r}", quantity="transmission length K")
     IN.published(
@@ -145,9 +160,9 @@ IN.convention(
         "the caption's P_DL = 0.88": 0.88,
         "P_DL = 0.98, Table 2.1's other K = 1000 design (at least 0.88, as the caption asks)": 0.98,
     },
-    reason="the caption asks for 'at least 0.88', which a design for any higher P_DL also meets; the "
+    reason="the caption asks for 'at least 0.88', which a design for any higher $P_{DL}$ also meets; the "
     "three design values the paper uses in Sec. 2.8 and Table 2.1",
-    quantity="design P_DL of Table 1.1's K = 10, 100 and 1000 rows",
+    quantity="design $P_{DL}$ of Table 1.1's K = 10, 100 and 1000 rows",
 )
 IN.convention(
     "figure_level_decades",
@@ -159,9 +174,9 @@ IN.convention(
         "0.05 decade below it, as misread on a logarithmic axis": -0.05,
     },
     reason="Tables 1.1 and 2.1 and the nominal 33 dBW were read off the (lost) curves of Figs. 2.1-2.16 "
-    "where they cross 0.01 N_T (Secs. 2.7-2.8); a hand reading places a level on a logarithmic axis to "
+    "where they cross $0.01 N_T$ (Secs. 2.7-2.8); a hand reading places a level on a logarithmic axis to "
     "about 0.05 decade (12 %), which moves a shallow crossing by a dB or more",
-    quantity="N_ADL level of the figure readings",
+    quantity="$N_{ADL}$ level of the figure readings",
 )
 IN.convention(
     "step_p_dl",
@@ -172,7 +187,7 @@ IN.convention(
     },
     reason="Sec. 2.8's 'about 10 db more power' summarises Table 2.1, whose rows have two design values, "
     "and names neither",
-    quantity="design P_DL of the steps of Sec. 2.8",
+    quantity="design $P_{DL}$ of the steps of Sec. 2.8",
 )
 IN.convention(
     "step_k1_reference",
@@ -182,23 +197,23 @@ IN.convention(
         "the K = 1 threshold computed at the same P_DL": "computed",
     },
     reason="Sec. 2.8 compares a K = 10 system with 'a K = 1 system'; Sec. 2.7 takes 33 dBW as the "
-    "nominal K = 1 level for any P_DL from 0.9 to 0.999",
+    "nominal K = 1 level for any $P_{DL}$ from 0.9 to 0.999",
     quantity="K = 1 level the step from K = 1 to K = 10 starts from",
 )
 IN.published(
-    "sec27_p_dl_low", 0.9, locator="Sec. 2.7 ('for a P_DL of 0.9 and 0.999')", quantity="design P_DL"
+    "sec27_p_dl_low", 0.9, locator="Sec. 2.7 ('for a P_DL of 0.9 and 0.999')", quantity="design $P_{DL}$"
 )
 IN.published(
-    "sec27_p_dl_high", 0.999, locator="Sec. 2.7 ('for a P_DL of 0.9 and 0.999')", quantity="design P_DL"
+    "sec27_p_dl_high", 0.999, locator="Sec. 2.7 ('for a P_DL of 0.9 and 0.999')", quantity="design $P_{DL}$"
 )
 IN.assumed(
     "nominal_p_dl",
     0.9,
     low=0.9,
     high=0.999,
-    reason="Sec. 2.7 takes 33 dBW as the nominal level for K = 1 because the requirements for P_DL = 0.9 "
-    "and 0.999 differ by less than 2 dB; the design it stands for is any P_DL in that printed range",
-    quantity="design P_DL behind the nominal 33 dBW (K = 1)",
+    reason="Sec. 2.7 takes 33 dBW as the nominal level for K = 1 because the requirements for $P_{DL} = 0.9$ "
+    "and 0.999 differ by less than 2 dB; the design it stands for is any $P_{DL}$ in that printed range",
+    quantity="design $P_{DL}$ behind the nominal 33 dBW (K = 1)",
 )
 IN.published(
     "nominal_erp_dbw",
@@ -240,10 +255,11 @@ IN.fitted(
     unit="deg^2",
     fitted_to=("ATC10-sec2.7-20deg",),
     reason="the paper gives no rule relating beamwidth to gain; the constant C of the pencil-beam rule "
-    "G = C/theta^2 solved from Sec. 2.7's 20 degrees for 33 dBW from 30 W (C = 400 x 66.5). Textbook "
+    "$G = C/\\theta^2$ solved from Sec. 2.7's 20 degrees for 33 dBW from 30 W ($C = 400 \\times 66.5$). "
+    "Textbook "
     "constants range from about 26 000 to 33 000 for practical dishes (41 253 for an ideal beam), and "
     "only 26 400-28 000 fits Sec. 2.7 and Table 1.1's K = 10-1000 rows together: a fit, not a reading",
-    quantity="constant of the pencil-beam rule, beamwidth^2 x gain",
+    quantity="constant of the pencil-beam rule, beamwidth² × gain",
 )
 IN.published("toa_rms_error_s", 50e-9, unit="s", locator="Sec. 1.3", quantity="rms time-of-arrival error")
 IN.published("update_interval_s", 1.0, unit="s", locator="Sec. 1.3", quantity="position update interval")
@@ -636,7 +652,7 @@ def _k1000_beyond_practical() -> bool:
 
 #: Reading resolution of the lost Figs. 2.1-2.16 on their dB axis: Tables 1.1 and 2.1 print whole dB.
 FIGURE_DB_RESOLUTION = 1.0
-_FIGURE_DB_AXIS = "J/(P0 B tau) in dB; the whole-dB entries are read to 1 dB (the figures are lost)"
+_FIGURE_DB_AXIS = "$J/(P_0 B \\tau)$ in dB; the whole-dB entries are read to 1 dB (the figures are lost)"
 
 
 def _table11_erp_misses(direct: bool) -> list[float]:
@@ -734,7 +750,8 @@ ERRATA = [
         "two are the same family with t replaced by 1 - t.",
         evidence="Exact binomial probabilities: at the $K = 10$, $P_{DL} = 0.999$ design point the literal "
         "(A.9) "
-        "rule with t = 0 detects with probability $q^K$ = 9.6e-4, far below the bound 0.999 that holds "
+        "rule with t = 0 detects with probability $q^K = 9.6 \\times 10^{-4}$, far below the bound 0.999 "
+        "that holds "
         "(with equality) for the (A.11) rule.",
         claims=("ATC10-eqA.9-rule-at-design",),
         discussed_in=PAGE,
@@ -908,8 +925,8 @@ def _table21_claim(row: int, k: int, p_dl: float, text: str, relation: str) -> C
         return required_erp_dbw("ambiguous", p_, k_, figure_read=True)
 
     note = (
-        "$t = 0$, $p_f$ from (D.17) = (2.7.1), $N_{ADL}$ of (2.8.4) with $2B\\alpha$ = 2e7, $4B\\beta$ = "
-        "9.6e5 and "
+        "$t = 0$, $p_f$ from (D.17) = (2.7.1), $N_{ADL}$ of (2.8.4) with $2B\\alpha = 2 \\times 10^{7}$, "
+        "$4B\\beta = 9.6 \\times 10^{5}$ and "
         "$n_v = 23.86$ samples; ERP = $x_{dB} + 10 \\log_{10}(P_0 \\tau B) = x_{dB}$ + 50 dBW. Sec. 2.8 "
         "reads "
         "the table off the $t = 0$ curves of the lost Figs. 2.3-2.16: the tolerance is a 1 dB reading of "
@@ -1056,7 +1073,7 @@ CLAIMS: list[Claim] = [
         published=5.0,
         unit="parts in 10^8",
         compute=lambda: IN.toa_rms_error_s / IN.update_interval_s * 1e8,
-        tolerance=printed("5", why="'5 parts in 10^8'")[1],
+        tolerance=printed("5", why="'5 parts in $10^{8}$'")[1],
         expected_status="consistent",
         kind="cross-check",
         note="Arithmetic on two printed values only (50 ns rms, one update per second): fractional stability "
@@ -1110,7 +1127,7 @@ CLAIMS: list[Claim] = [
         expected_status="reproduced",
         kind="statement",
         note="Closed form against bounded numerical maximisation over $\\nu \\ge 0$ at five (t, q) pairs, to "
-        "1e-10.",
+        "$10^{-10}$.",
         discussed_in=PAGE,
     ),
     Claim(
@@ -1124,9 +1141,10 @@ CLAIMS: list[Claim] = [
         tolerance=EXACT,
         expected_status="reproduced",
         kind="statement",
-        note="$p_d = 0.7$ ($p_d^4 = 0.24$), $t = 0.2$: the bound increases with K and exceeds 1 - 1e-12 at "
+        note="$p_d = 0.7$ ($p_d^4 = 0.24$), $t = 0.2$: the bound increases with K and exceeds "
+        "$1 - 10^{-12}$ at "
         "K = "
-        "1e4.",
+        "$10^{4}$.",
         discussed_in=PAGE,
     ),
     Claim(
@@ -1152,7 +1170,8 @@ CLAIMS: list[Claim] = [
         erratum=E_RULE,
         oracle=lambda: ((1 - (1 - 0.999) ** (1 / 10)) ** 0.25) ** 40 >= 0.999,
         oracle_tolerance=EXACT,
-        note="Under (A.9) with $t = 0$ every list must be non-empty: probability $q^K$ = 9.5e-4 at the "
+        note="Under (A.9) with $t = 0$ every list must be non-empty: probability "
+        "$q^K = 9.5 \\times 10^{-4}$ at the "
         "design point, far below 0.999. The bound holds for the rule of (A.11), which is what the paper "
         "uses everywhere else. The design point is Table 2.1's, a test point: (A.9) prints no number.",
         discussed_in=PAGE,
@@ -1193,7 +1212,8 @@ CLAIMS: list[Claim] = [
         oracle_tolerance=EXACT,
         note="Evaluated at the $K = 1$, $P_{DL} = 0.88$ threshold, $p_f \\approx 10^{-6}$: "
         "$(1 - p_f)^{2 \\times 10^7} \\approx e^{-20}$ where $1 - (1 - p_f)^{2 \\times 10^7} \\approx 1$, so "
-        "the printed form is $e^{-19.6}$ times $F$ (1e-6 in the logarithm allows for rounding only). Checked "
+        "the printed form is $e^{-19.6}$ times $F$ ($10^{-6}$ in the logarithm allows for rounding only). "
+        "Checked "
         "independently with 40-digit arbitrary-precision arithmetic.",
         discussed_in=PAGE,
     ),
@@ -1215,9 +1235,11 @@ CLAIMS: list[Claim] = [
         oracle_tolerance=monte_carlo(
             abs=6e-3,
             runs=ERF_MC_SAMPLES,
-            why="p_f = Q(1) = 0.159 has a standard error of 3.7e-4 over 1e6 samples, i.e. 1.1e-3 on c "
-            "(dc/dp_f = 2.9); 4 standard errors are 4.3e-3, and the simulated threshold quantile adds about "
-            "as much in quadrature: 6e-3",
+            why="$p_f = Q(1) = 0.159$ has a standard error of $3.7 \\times 10^{-4}$ over $10^{6}$ samples, "
+            "i.e. $1.1 \\times 10^{-3}$ on c "
+            "($dc/dp_f = 2.9$); 4 standard errors are $4.3 \\times 10^{-3}$, and the simulated threshold "
+            "quantile adds about "
+            "as much in quadrature: $6 \\times 10^{-3}$",
         ),
         note="navcore's $p_f$ (App. D, D.17) inverted for $c$ at $x$ = 0 dB, $p_d = 0.5$ gives "
         "$1/\\sqrt{2}$. "
@@ -1376,7 +1398,7 @@ CLAIMS: list[Claim] = [
         kind="statement",
         note="At every finite Table 2.1 design point ($t = 0$) the $N_{FL}$ threshold (99 % of 0.9 $N_T$) "
         "lies below "
-        "the $N_{ADL}$ threshold (0.01 $N_T$).",
+        "the $N_{ADL}$ threshold ($0.01 N_T$).",
         discussed_in=PAGE_K,
     ),
     Claim(
@@ -1547,7 +1569,8 @@ for _i, (_k, _erp, _rf, _dia, _bw) in enumerate(TABLE_1_1):
                 erratum=E_BEAM,
                 oracle=_oracle_k1_beamwidth_scaled_deg,
                 oracle_tolerance=Tolerance(
-                    reason="70 lambda/D and the pencil-beam rule scale alike (beamwidth as 1/sqrt(G)): "
+                    reason="$70 \\lambda/D$ and the pencil-beam rule scale alike (beamwidth as "
+                    "$1/\\sqrt{G}$): "
                     "floating point",
                     rel=1e-9,
                     policy="exact",

@@ -63,7 +63,10 @@ PAGE_ZAKAI = "atc10/23-zakai-bandwidth"
 IN = InputSet("ATC10", "multiple_access")
 IN.published("n_sec36", 100_000, locator="Sec. 3.6 (i)", quantity="number of aircraft N of Figs. 3.3-3.8")
 IN.published(
-    "tau_over_alpha_sec36", 2e-5, locator="Sec. 3.6 (ii)", quantity="duty ratio tau/alpha of Figs. 3.3-3.8"
+    "tau_over_alpha_sec36",
+    2e-5,
+    locator="Sec. 3.6 (ii)",
+    quantity="duty ratio $\\tau/\\alpha$ of Figs. 3.3-3.8",
 )
 IN.published(
     "n_fig39",
@@ -77,7 +80,12 @@ IN.published(
     locator="Sec. 3.8 ('when N = 10^5, tau/alpha = 10^-5, typical system parameter values')",
     quantity="duty ratio of the Fig. 3.9 remark",
 )
-IN.published("exp_g_fig39", 4.0, locator="Sec. 3.8, Fig. 3.9", quantity="Gaussian exponent Exp_g of Fig. 3.9")
+IN.published(
+    "exp_g_fig39",
+    4.0,
+    locator="Sec. 3.8, Fig. 3.9",
+    quantity="Gaussian exponent $\\mathrm{Exp}_g$ of Fig. 3.9",
+)
 IN.published(
     "tau_over_alpha_fig310",
     1e-5,
@@ -99,9 +107,11 @@ IN.convention(
     1.0,
     alternative=2.5,
     unit="s",
-    quantity="signature repetition period alpha in p = (N - 1)/(B alpha)",
-    reason="the text gives 5 pulses in alpha = 2.5 s or 4 in 2 s and counts N effectively as 2e5, i.e. "
-    "one pulse pair per second per aircraft; alpha = 1 s is the reading that gives the printed Exp_g = 12.5, "
+    quantity="signature repetition period $\\alpha$ in p = (N - 1)/(B $\\alpha$)",
+    reason="the text gives 5 pulses in $\\alpha = 2.5$ s or 4 in 2 s and counts N effectively as "
+    "$2 \\times 10^{5}$, i.e. "
+    "one pulse pair per second per aircraft; $\\alpha = 1$ s is the reading that gives the printed "
+    "$\\mathrm{Exp}_g = 12.5$, "
     "the printed 2.5 s the other",
 )
 IN.convention(
@@ -113,15 +123,17 @@ IN.convention(
         "N0/2, so Exp_g = a^2/p": 0.5,
         "the output variance of (3.8.4)-(3.8.8), so Exp_g = a^2/(2p) as (3.8.8) prints": 1.0,
     },
-    reason="Sec. 3.8 calls p the 'average multiple access noise power' and writes Exp_g = a^2/p in the "
-    "example, while (3.8.8) writes a^2/(2p) for the output variance p; the example's p = (N-1)/(B alpha) "
+    reason="Sec. 3.8 calls p the 'average multiple access noise power' and writes "
+    "$\\mathrm{Exp}_g = a^2/p$ in the "
+    "example, while (3.8.8) writes $a^2/(2p)$ for the output variance p; the example's "
+    "$p = (N-1)/(B \\alpha)$ "
     "is the in-band power divided by the bandwidth, the one-sided density of Ref. [1]'s equivalent white "
     "noise, and the printed 12.5 follows that reading",
 )
 IN.convention(
     "approach_efolds",
     0.1,
-    quantity="largest |ln bound - ln p_f| at which a bound has 'approached' the actual p_f",
+    quantity="largest $|\\ln \\mathrm{bound} - \\ln p_f|$ at which a bound has 'approached' the actual $p_f$",
     readings={"within 0.1 e-fold (10 %)": 0.1, "within 0.5 e-fold (a factor 1.65)": 0.5},
     reason="'approach the actual ROC as N increases' (Secs. 3.1.3 A, 3.5.2) carries no number: the book's "
     "reading, fixed before computing",
@@ -131,9 +143,11 @@ IN.assumed(
     3.0,
     low=2.5,
     high=4.0,
-    quantity="lowest contour label 1/sqrt(3b) of Figs. 3.3-3.6 and 3.8",
-    reason="the contour labels are lost with the figures; at N = 1e5, tau/alpha = 2e-5 a useful ROC "
-    "(p_d >= 0.9 at some p_f < 1) needs 1/sqrt(3b) of about 2.5 or more, and a plot spanning p_d 0.5-1 "
+    quantity="lowest contour label $1/\\sqrt{3b}$ of Figs. 3.3-3.6 and 3.8",
+    reason="the contour labels are lost with the figures; at $N = 10^{5}$, "
+    "$\\tau/\\alpha = 2 \\times 10^{-5}$ a useful ROC "
+    "($p_d >= 0.9$ at some $p_f < 1$) needs $1/\\sqrt{3b}$ of about 2.5 or more, and a plot spanning $p_d$ "
+    "0.5-1 "
     "would start below 4",
 )
 IN.assumed(
@@ -141,9 +155,9 @@ IN.assumed(
     8.0,
     low=6.0,
     high=10.0,
-    quantity="highest contour label 1/sqrt(3b) of Figs. 3.3-3.6 and 3.8",
-    reason="the contour labels are lost with the figures; beyond 1/sqrt(3b) of about 8 every p_f of "
-    "interest is below 1e-9, the bottom of a 1970s ROC plot; 6-10 plausible",
+    quantity="highest contour label $1/\\sqrt{3b}$ of Figs. 3.3-3.6 and 3.8",
+    reason="the contour labels are lost with the figures; beyond $1/\\sqrt{3b}$ of about 8 every $p_f$ of "
+    "interest is below $10^{-9}$, the bottom of a 1970s ROC plot; 6-10 plausible",
 )
 IN.assumed(
     "psk_chips",
@@ -151,7 +165,8 @@ IN.assumed(
     low=16,
     high=64,
     quantity="chips per PSK signature in the book's physical simulation",
-    reason="Sec. 3.9 gives no code length (tau of the order of 10 us, chip length open); 16-64 chips span "
+    reason="Sec. 3.9 gives no code length ($\\tau$ of the order of 10 us, chip length open); 16-64 chips "
+    "span "
     "the short codes for which a 'good' aperiodic autocorrelation is found by search",
 )
 IN.assumed(
@@ -159,9 +174,10 @@ IN.assumed(
     1,
     low=0,
     high=1,
-    quantity="sidelobe lags of the idealised Fig. 3.11 autocorrelation beyond L = tau/tau_c",
-    reason="Fig. 3.11 is lost; the alternating +-tau_c/tau sidelobes extend over L (confined to |t| < tau) "
-    "or L + 1 lags (the triangle of the last chip reaching tau + tau_c)",
+    quantity="sidelobe lags of the idealised Fig. 3.11 autocorrelation beyond L = $\\tau/\\tau_c$",
+    reason="Fig. 3.11 is lost; the alternating $\\pm\\tau_c/\\tau$ sidelobes extend over L (confined to "
+    "$|t| < \\tau$) "
+    "or L + 1 lags (the triangle of the last chip reaching $\\tau + \\tau_c$)",
 )
 IN.assumed(
     "msequence_degree",
@@ -178,14 +194,14 @@ IN.assumed(
     low=1e-5,
     high=1e-2,
     quantity="relative error below which (3.7.26) 'can be approximated' for (3.7.24)",
-    reason="'can be approximated' is not quantified; 1e-5 to 1 % relative error of an exponent",
+    reason="'can be approximated' is not quantified; $10^{-5}$ to 1 % relative error of an exponent",
 )
 IN.assumed(
     "non_negligible_fraction",
     0.1,
     low=0.05,
     high=0.2,
-    quantity="relative shortfall of Exp below Exp_g that is 'non-negligible'",
+    quantity="relative shortfall of Exp below $\\mathrm{Exp}_g$ that is 'non-negligible'",
     reason="'non-negligible' is not quantified; 5-20 % of an exponent",
 )
 IN.assumed(
@@ -193,8 +209,8 @@ IN.assumed(
     0.99,
     low=0.95,
     high=0.999,
-    quantity="R^2 of a line fit above which a curve is 'practically linear'",
-    reason="'practically linear' is not quantified; R^2 of 0.95-0.999",
+    quantity="$R^2$ of a line fit above which a curve is 'practically linear'",
+    reason="'practically linear' is not quantified; $R^2$ of 0.95-0.999",
 )
 
 
@@ -756,7 +772,8 @@ ERRATA = [
         "and the corrected lower bound stays several e-folds lower still. The bounds are tight "
         "only in the exponent, when the exponent itself grows (large deviations), so comparing "
         "exponents as Sec. 3.8 does is legitimate but 'we lose nothing' overstates it.",
-        evidence="Exact compound-binomial $p_f$ for the two-point density at N = 1e4..1e7 with the power "
+        evidence="Exact compound-binomial $p_f$ for the two-point density at $N = 10^{4}$ to $10^{7}$ with "
+        "the power "
         "held "
         "at 4/75, against both bounds; closed-form Gaussian limits.",
         claims=("ATC10-sec3.5-asymptotically-tight",),
@@ -776,8 +793,9 @@ ERRATA = [
         "\\theta - 2 \\rho_1 \\sqrt{2 \\mu''(\\rho_1)}]$ "
         "with $\\mu'(\\rho_1) - \\sqrt{2 \\mu''(\\rho_1)} = \\theta$. The corrected bound is valid but "
         "$10^2$-$10^9$ "
-        "times below the actual $p_f$ at N = 1e5, $\\tau/\\alpha$ = 2e-5, so Sec. 3.8's argument "
-        "'$\\mathrm{ROC}_g$ $p_f$ below the lower bound of the actual $p_f$' cannot be made with it.",
+        "times below the actual $p_f$ at $N = 10^{5}$, $\\tau/\\alpha = 2 \\times 10^{-5}$, so Sec. 3.8's "
+        "argument '$\\mathrm{ROC}_g$ $p_f$ below the lower bound of the actual $p_f$' cannot be "
+        "made with it.",
         evidence="Tilted-Chebyshev derivation; the printed version (sign of $\\phi_1$) lies above the "
         "Chernoff upper bound; the corrected one lies below the exact compound-binomial and "
         "stratified Monte Carlo tails at every tested point.",
@@ -794,7 +812,8 @@ ERRATA = [
         basis="text-only",
         locator="Sec. 3.8, worked example",
         printed="p = 50",
-        finding="$p = (N-1)/(B \\alpha)$ = (2e5 - 1)/(1e7 × 1 s) = 0.02 = 1/50.",
+        finding="$p = (N-1)/(B \\alpha) = (2 \\times 10^{5} - 1)/(10^{7} \\times 1\\,\\mathrm{s})$ "
+        "$= 0.02 = 1/50$.",
         evidence="Direct arithmetic; the printed $\\mathrm{Exp}_g = 12.5 = 0.25/p$ follows p = 1/50, so no "
         "printed number depends on the slip.",
         claims=("ATC10-sec3.8-example-p",),
@@ -841,7 +860,8 @@ ERRATA = [
         "The "
         "argument works with convexity of $\\ln(1 - q + q \\cosh(\\rho \\sqrt{\\beta}))$ in $\\beta$, which "
         "holds "
-        "only for $\\rho \\sqrt{\\beta}$ below about 13 at q = 4e-5; the Sec. 3.6 operating points are well "
+        "only for $\\rho \\sqrt{\\beta}$ below about 13 at $q = 4 \\times 10^{-5}$; the Sec. 3.6 operating "
+        "points are well "
         "inside.",
         evidence="Second derivative evaluated numerically on the page.",
         discussed_in=PAGE_ROC,
@@ -859,12 +879,13 @@ ERRATA = [
         "$e^{+jnv}$",
         finding="$R_{ii}$; $1 - 2\\tau/\\alpha$; $p\\alpha$; $\\theta/\\sqrt{2 N \\tau p/\\alpha}$; "
         "$\\mathrm{Exp}_g/(N \\tau/\\alpha)$; "
-        "$\\tau/\\alpha$ = 1e-5 and N = 2e5; $e^{-jnv}$.",
+        "$\\tau/\\alpha = 10^{-5}$ and $N = 2 \\times 10^{5}$; $e^{-jnv}$.",
         evidence="Each corrected form is the one whose numbers the book reproduces (closed forms "
         "against numerical optima).",
         discussed_in=PAGE_ROC,
-        no_claim_reason="typographical slips (R_ij for R_ii, a missing square root or dx, a "
-        "cross-reference, the sign of the exponent in (E.7), 'tau/alpha = 10^5'): the book reads every "
+        no_claim_reason="typographical slips ($R_{ij}$ for $R_{ii}$, a missing square root or dx, a "
+        "cross-reference, the sign of the exponent in (E.7), '$\\tau/\\alpha = 10^{5}$'): the book reads "
+        "every "
         "formula in its evident corrected form and no printed number depends on the slips",
     ),
 ]
@@ -877,7 +898,7 @@ _expg, _expg_tol = printed(EXP_G_EXAMPLE_PRINTED)
 _exp, _exp_tol = printed(EXP_EXAMPLE_PRINTED)
 _ratio, _ratio_tol = printed(RATIO_EXAMPLE_PRINTED)
 _w_pub = printed(W_TIMES_CHIP_PRINTED)[0]
-_w_tol = prose("≈", why="'W ≈ (3/4)/tau_c', a limit for tau_c/tau -> 0")
+_w_tol = prose("≈", why="'$W \\approx (3/4)/\\tau_c$', a limit for $\\tau_c/\\tau \\to 0$")
 
 STATEMENT = EXACT
 #: Sampling error of the PSK power: the amplitudes are sums of many +-1 chip products, no more
@@ -887,7 +908,7 @@ _PSK_SAMPLES = 200_000
 _PSK_POWER_TOL = monte_carlo(
     abs=4.0 * POWER_COEFF_PRINTED * (2.0 / _PSK_SAMPLES) ** 0.5,
     runs=_PSK_SAMPLES,
-    why="4 standard errors of a mean square, sqrt(2/n) relative for amplitudes no more kurtotic than "
+    why="4 standard errors of a mean square, $\\sqrt{2/n}$ relative for amplitudes no more kurtotic than "
     "a Gaussian, at the published 1/3",
 )
 
@@ -922,7 +943,7 @@ CLAIMS = [
         tolerance=STATEMENT,
         expected_status="reproduced",
         note="Exact Gaussian-mixture tail at $2 \\sigma$ against $Q(2)$ for $N q$ = 4, 40, 400: the error "
-        "falls monotonically (to 8e-4 at N q = 400).",
+        "falls monotonically (to $8 \\times 10^{-4}$ at $N q = 400$).",
         discussed_in=PAGE_NOISE,
     ),
     Claim(
@@ -941,7 +962,8 @@ CLAIMS = [
             "of its first decimal",
         )[1],
         expected_status="reproduced",
-        note="Slope of the Gaussian term at $n = \\sigma$, N = 1e6 and 1e8, for the amplitude density of the "
+        note="Slope of the Gaussian term at $n = \\sigma$, $N = 10^{6}$ and $10^{8}$, for the amplitude "
+        "density of the "
         "paper's model ($n_{ij}$ = cos(carrier phase) $\\times$ a skewed envelope).",
         discussed_in=PAGE_NOISE,
     ),
@@ -982,8 +1004,9 @@ CLAIMS = [
         compute=bound_monotone_in_n_and_duty,
         tolerance=STATEMENT,
         expected_status="reproduced",
-        note="Uniform C, $1/\\sqrt{3b}$ = 5, $\\theta = 0.5$; N = 5e4, 1e5, 2e5 and $\\tau/\\alpha$ = 1e-5, "
-        "2e-5, 4e-5 "
+        note="Uniform C, $1/\\sqrt{3b} = 5$, $\\theta = 0.5$; $N = 5 \\times 10^{4}$, $10^{5}$, "
+        "$2 \\times 10^{5}$ and $\\tau/\\alpha = 10^{-5}$, "
+        "$2 \\times 10^{-5}$, $4 \\times 10^{-5}$ "
         "($M_C \\ge 1$ for symmetric C, so each term grows).",
         discussed_in=PAGE_ROC,
     ),
@@ -1040,27 +1063,27 @@ CLAIMS = [
         id="ATC10-eq3.7.23-closed-form",
         paper="ATC10",
         locator="Eqs. (3.7.23)-(3.7.25)",
-        quantity="closed-form optimal rho and Expf for the two-point density",
+        quantity="closed-form optimal $\\rho$ and Expf for the two-point density",
         published=True,
         unit="statement",
         compute=closed_form_matches_numerical,
         tolerance=STATEMENT,
         expected_status="reproduced",
-        note="Read with $(1 - 2\\tau/\\alpha)$ (E3-9); equals the numerical Chernoff optimum to 1e-6.",
+        note="Read with $(1 - 2\\tau/\\alpha)$ (E3-9); equals the numerical Chernoff optimum to $10^{-6}$.",
         discussed_in=PAGE_ROC,
     ),
     Claim(
         id="ATC10-eq3.7.26-approx",
         paper="ATC10",
         locator="Eqs. (3.7.26)-(3.7.27)",
-        quantity="(3.7.26) approximates (3.7.24) at N = 1e5, $\\tau/\\alpha$ = 2e-5",
+        quantity="(3.7.26) approximates (3.7.24) at $N = 10^{5}$, $\\tau/\\alpha = 2 \\times 10^{-5}$",
         published=True,
         unit="statement",
         compute=lambda: approximation_accurate_at_typical_values() <= IN.good_approximation_rel,
         tolerance=STATEMENT,
         expected_status="consistent",
         note="Largest relative error over thresholds 0.1..0.9 and $1/\\sqrt{3b}$ = 3..8, against the assumed "
-        "reading of 'can be approximated' (1e-5 to 1 %); (3.7.27) read with the square root restored "
+        "reading of 'can be approximated' ($10^{-5}$ to 1 %); (3.7.27) read with the square root restored "
         "(E3-9). The accuracy 'can be approximated' asks for is an assumption.",
         discussed_in=PAGE_ROC,
     ),
@@ -1068,8 +1091,9 @@ CLAIMS = [
         id="ATC10-sec3.8-gauss-always-optimistic",
         paper="ATC10",
         locator="Sec. 3.8, comparison of Figs. 3.3-3.6 with Fig. 3.8",
-        quantity="the $p_f$ of $\\mathrm{ROC}_g$ is always lower than the actual $p_f$ (N = 1e5, "
-        "$\\tau/\\alpha$ = 2e-5, C1..C4, $p_d$ = 0.9 and 0.99, at the figures' contours)",
+        quantity="the $p_f$ of $\\mathrm{ROC}_g$ is always lower than the actual $p_f$ ($N = 10^{5}$, "
+        "$\\tau/\\alpha = 2 \\times 10^{-5}$, $C_1$ to $C_4$, $p_d = 0.9$ and 0.99, at the figures' "
+        "contours)",
         published=True,
         unit="statement",
         kind="statement",
@@ -1095,7 +1119,8 @@ CLAIMS = [
         compute=exp_monotone_in_n_below_exp_g,
         tolerance=STATEMENT,
         expected_status="reproduced",
-        note="Eq. (3.8.16) on N = 1e2..1e9 (400 points), $\\tau/\\alpha$ = 1e-6, 1e-5, 1e-4, seven "
+        note="Eq. (3.8.16) on $N = 10^{2}$ to $10^{9}$ (400 points), $\\tau/\\alpha = 10^{-6}$, $10^{-5}$, "
+        "$10^{-4}$, seven "
         "$\\mathrm{Exp}_g$ values.",
         discussed_in=PAGE_GAUSS,
     ),
@@ -1103,7 +1128,7 @@ CLAIMS = [
         id="ATC10-fig3.9-shortfall",
         paper="ATC10",
         locator="Sec. 3.8, Fig. 3.9",
-        quantity="at N = 1e5, $\\tau/\\alpha$ = 1e-5, Exp is below $\\mathrm{Exp}_g = 4$ by a "
+        quantity="at $N = 10^{5}$, $\\tau/\\alpha = 10^{-5}$, Exp is below $\\mathrm{Exp}_g = 4$ by a "
         "non-negligible amount",
         published=True,
         unit="statement",
@@ -1118,7 +1143,7 @@ CLAIMS = [
         id="ATC10-fig3.9-exp-below",
         paper="ATC10",
         locator="Sec. 3.8, Fig. 3.9",
-        quantity="Exp at N = 1e5, $\\tau/\\alpha$ = 1e-5 is less than $\\mathrm{Exp}_g = 4$",
+        quantity="Exp at $N = 10^{5}$, $\\tau/\\alpha = 10^{-5}$ is less than $\\mathrm{Exp}_g = 4$",
         published=float(IN.nominal("exp_g_fig39")),
         relation="<",
         unit="",
@@ -1142,23 +1167,26 @@ CLAIMS = [
         compute=exp_rate_faster_for_low_exp_g,
         tolerance=STATEMENT,
         expected_status="reproduced",
-        note="$\\mathrm{Exp}/\\mathrm{Exp}_g$ decreases with $\\mathrm{Exp}_g$ at N = 1e4, 1e5, 2e5, 1e6, "
-        "1e7 "
-        "($\\tau/\\alpha$ = 1e-5).",
+        note="$\\mathrm{Exp}/\\mathrm{Exp}_g$ decreases with $\\mathrm{Exp}_g$ at $N = 10^{4}$, $10^{5}$, "
+        "$2 \\times 10^{5}$, $10^{6}$, "
+        "$10^{7}$ "
+        "($\\tau/\\alpha = 10^{-5}$).",
         discussed_in=PAGE_GAUSS,
     ),
     Claim(
         id="ATC10-fig3.10-linear",
         paper="ATC10",
         locator="Sec. 3.8, Fig. 3.10",
-        quantity="Exp is practically linear in $\\mathrm{Exp}_g$ ($R^2$ of a line fit on [0, 20], N = 1e5)",
+        quantity="Exp is practically linear in $\\mathrm{Exp}_g$ ($R^2$ of a line fit on [0, 20], "
+        "$N = 10^{5}$)",
         published=True,
         unit="statement",
         compute=lambda: exp_linearity_r2() >= IN.practically_linear_r2,
         tolerance=STATEMENT,
         expected_status="not-reproducible",
         note="$R^2$ of a least-squares line against the assumed reading of 'practically linear' ($R^2$ of "
-        "0.95-0.999); the curve is visibly concave for N $\\le$ 2e5 and straighter for N $\\ge$ 1e6.",
+        "0.95-0.999); the curve is visibly concave for $N \\le 2 \\times 10^{5}$ and straighter for "
+        "$N \\ge 10^{6}$.",
         discussed_in=PAGE_GAUSS,
     ),
     Claim(
@@ -1171,7 +1199,7 @@ CLAIMS = [
         compute=worked_example_power,
         tolerance=_p_tol,
         expected_status="discrepant",
-        note="N = 2e5, B = 1e7 Hz, $\\alpha = 1$ s give $p$ = 0.02 = 1/50.",
+        note="$N = 2 \\times 10^{5}$, $B = 10^{7}$ Hz, $\\alpha = 1$ s give $p = 0.02 = 1/50$.",
         erratum="ATC10-E3-2",
         oracle=worked_example_power_oracle,
         oracle_tolerance=Tolerance(
@@ -1198,13 +1226,13 @@ CLAIMS = [
         id="ATC10-sec3.8-example-exp",
         paper="ATC10",
         locator="Sec. 3.8, worked example (Fig. 3.10)",
-        quantity="Exp at N = 2e5, $\\tau/\\alpha$ = 1e-5, $\\mathrm{Exp}_g = 12.5$",
+        quantity="Exp at $N = 2 \\times 10^{5}$, $\\tau/\\alpha = 10^{-5}$, $\\mathrm{Exp}_g = 12.5$",
         published=_exp,
         unit="",
         compute=worked_example_exp,
         tolerance=prose("≈", why="'Exp ≈ 9', read off Fig. 3.10"),
         expected_status="reproduced",
-        note="Eq. (3.8.16) gives 9.70, within the prose band of '≈' (8.1-9.9); N = 1e5 would give 8.62.",
+        note="Eq. (3.8.16) gives 9.70, within the prose band of '≈' (8.1-9.9); $N = 10^{5}$ would give 8.62.",
         discussed_in=PAGE_GAUSS,
     ),
     Claim(
@@ -1248,7 +1276,8 @@ CLAIMS = [
         expected_status="consistent",
         note="Idealised Fig. 3.11 autocorrelation: peak 1, sidelobes $\\pm \\tau_c/\\tau$ alternating over "
         "L (+1, "
-        "assumed) lags, evaluated at $\\tau_c/\\tau$ = 1e-4; both extents give 3/4 in the limit. Fig. 3.11 "
+        "assumed) lags, evaluated at $\\tau_c/\\tau = 10^{-4}$; both extents give 3/4 in the limit. Fig. "
+        "3.11 "
         "is lost: the sidelobe model is the book's reconstruction.",
         discussed_in=PAGE_ZAKAI,
     ),
@@ -1276,7 +1305,7 @@ CLAIMS = [
         published=_w_pub,
         unit="",
         compute=w_chip_msequence,
-        tolerance=prose("≈", why="'W ≈ (3/4)/tau_c'"),
+        tolerance=prose("≈", why="'$W \\approx (3/4)/\\tau_c$'"),
         expected_status="inconsistent",
         note="The m-sequence's aperiodic sidelobes carry as much energy as the main lobe: "
         "$W \\tau_c = 0.563$ for 1023 chips (confirmed by brute-force integration of the chip waveform), "
@@ -1316,9 +1345,10 @@ CLAIMS = [
         tolerance=STATEMENT,
         expected_status="consistent",
         note="Book's signature set: random PSK codes of L chips (assumed 16-64; $1/\\sqrt{3b}$ about 8 at "
-        "L = 32) at N = 1e5, $\\tau/\\alpha$ = 2e-5; "
-        "best $p_f$ at $p_d \\ge 0.9$ from the stratified Monte Carlo (3.5e-5) against $\\mathrm{ROC}_g$ "
-        "(1.1e-8).",
+        "$L = 32$) at $N = 10^{5}$, $\\tau/\\alpha = 2 \\times 10^{-5}$; "
+        "best $p_f$ at $p_d \\ge 0.9$ from the stratified Monte Carlo ($3.5 \\times 10^{-5}$) against "
+        "$\\mathrm{ROC}_g$ "
+        "($1.1 \\times 10^{-8}$).",
         discussed_in=PAGE_GAUSS,
     ),
     Claim(
@@ -1331,7 +1361,8 @@ CLAIMS = [
         compute=bounds_tight_at_large_n,
         tolerance=STATEMENT,
         expected_status="discrepant",
-        note="Read at fixed noise power 4/75 (the $1/\\sqrt{3b}$ = 5 contour) and $\\theta = 0.5$, N = 1e7: "
+        note="Read at fixed noise power 4/75 (the $1/\\sqrt{3b}$ = 5 contour) and $\\theta = 0.5$, "
+        "$N = 10^{7}$: "
         "the Chernoff bound is 1.9 e-folds above the exact $p_f$ and the corrected lower bound 8 below; as "
         "N grows the Chernoff gap tends to 1.84 e-folds ($\\exp(-\\theta^2/2p)$ against "
         "$Q(\\theta/\\sqrt p)$), not to 0. Tight only in the exponent (large deviations).",

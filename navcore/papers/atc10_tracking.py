@@ -143,30 +143,34 @@ for _ex, _pts in _TABLE_4_1.items():
         )
 IN.published("aircraft_lat_deg", 45.0, locator="Sec. 4.6", unit="deg", quantity="aircraft latitude")
 IN.published("aircraft_lon_deg", 120.0, locator="Sec. 4.6", unit="deg", quantity="aircraft longitude")
-IN.published("sigma_ns", 50.0, locator="Sec. 4.6", unit="ns", quantity="rms time-of-arrival error sigma")
+IN.published("sigma_ns", 50.0, locator="Sec. 4.6", unit="ns", quantity="rms time-of-arrival error $\\sigma$")
 IN.published(
     "sigma0_low_ns",
     5.0,
     locator="Sec. 4.6, Table 4.3",
     unit="ns",
-    quantity="clock parameter sigma0 = 0.1 sigma",
+    quantity="clock parameter $\\sigma_0 = 0.1 \\sigma$",
 )
 IN.published(
-    "sigma0_mid_ns", 50.0, locator="Sec. 4.6, Table 4.3", unit="ns", quantity="clock parameter sigma0 = sigma"
+    "sigma0_mid_ns",
+    50.0,
+    locator="Sec. 4.6, Table 4.3",
+    unit="ns",
+    quantity="clock parameter $\\sigma_0 = \\sigma$",
 )
 IN.published(
     "sigma0_high_ns",
     500.0,
     locator="Sec. 4.6, Table 4.3",
     unit="ns",
-    quantity="clock parameter sigma0 = 10 sigma",
+    quantity="clock parameter $\\sigma_0 = 10 \\sigma$",
 )
 IN.published(
     "tau_bar_s",
     1.0,
     locator="Sec. 4 opening (tau_{i+1} - tau_i = 1 s); Sec. 1.3 (one update per second)",
     unit="s",
-    quantity="nominal pulse period tau_bar",
+    quantity="nominal pulse period $\\bar{\\tau}$",
 )
 IN.published(
     "cone_half_angle_deg",
@@ -179,7 +183,7 @@ IN.published(
     "convergence_fraction",
     0.1,
     locator="Sec. 4.5.4 ('to within (0.1) gamma of gamma')",
-    quantity="convergence criterion of gamma_n",
+    quantity="convergence criterion of $\\gamma_n$",
 )
 for _ex in EXAMPLES:
     for _col in COLUMNS:
@@ -187,7 +191,7 @@ for _ex in EXAMPLES:
             f"tab42_ex{_ex}_{_col}",
             float(TABLE_4_2[_ex][_col]),
             locator="Table 4.2",
-            quantity=f"Example {_ex}: {COLUMN_NAMES[_col]}",
+            quantity=f"Example {_ex}: {_COLUMN_MATH[_col]}",
         )
 for _ex in EXAMPLES:
     for _col in COLUMNS:
@@ -197,7 +201,7 @@ for _ex in EXAMPLES:
             0.0,
             low=-_half,
             high=_half,
-            quantity=f"Example {_ex}: {COLUMN_NAMES[_col]}, the paper's unrounded value minus the printed "
+            quantity=f"Example {_ex}: {_COLUMN_MATH[_col]}, the paper's unrounded value minus the printed "
             + TABLE_4_2[_ex][_col],
             reason="Table 4.3 was computed from Table 4.2 before its rounding to the printed digits; the "
             "unrounded value lies within half a unit of the last printed digit (the range)",
@@ -208,7 +212,7 @@ for (_ex, _s0), _row in TABLE_4_3.items():
         _key,
         float(_row[1]),
         locator="Table 4.3 col. (ii), 'psi(alpha) (Fig. 4.1)'",
-        quantity=f"Example {_ex}, sigma0 = {int(_s0)} ns: psi as the paper read it off Fig. 4.1",
+        quantity=f"Example {_ex}, $\\sigma_0 = {int(_s0)}$ ns: $\\psi$ as the paper read it off Fig. 4.1",
     )
     _half = printed(_row[1])[1].absolute
     IN.assumed(
@@ -216,9 +220,9 @@ for (_ex, _s0), _row in TABLE_4_3.items():
         0.0,
         low=-_half,
         high=_half,
-        quantity=f"Example {_ex}, sigma0 = {int(_s0)} ns: the paper's psi reading minus the printed "
+        quantity=f"Example {_ex}, $\\sigma_0 = {int(_s0)}$ ns: the paper's $\\psi$ reading minus the printed "
         + _row[1],
-        reason="cols. (iv)-(v) of Table 4.3 use the psi read off Fig. 4.1 before its rounding to the "
+        reason="cols. (iv)-(v) of Table 4.3 use the $\\psi$ read off Fig. 4.1 before its rounding to the "
         "printed digits; it lies within half a unit of the last printed digit (the range)",
     )
 IN.convention(
@@ -227,7 +231,8 @@ IN.convention(
     alternative=0.299792458 / 0.3048,
     unit="ft/ns",
     quantity="speed of light used to turn ns into ft",
-    reason="Table 4.3 prints sigma[ns] * sqrt(...) as ft, i.e. c = 1 ft/ns; the true c is 0.98357 ft/ns",
+    reason="Table 4.3 prints $\\sigma\\,[\\mathrm{ns}] \\cdot \\sqrt{\\dots}$ as ft, i.e. c = 1 ft/ns; the "
+    "true c is 0.98357 ft/ns",
 )
 IN.convention(
     "longitude_sign",
@@ -291,7 +296,8 @@ IN.fitted(
     9.235,
     fitted_to=tuple(f"ATC10-tab4.2-ex{ex}-{col}-fitted" for ex in EXAMPLES for col in COLUMNS),
     quantity="effective satellite orbit radius over Earth radius",
-    reason="the one shape parameter r_orbit/R_E (aircraft on the surface) that best reproduces the ten "
+    reason="the one shape parameter $r_{\\mathrm{orbit}}/R_E$ (aircraft on the surface) that best "
+    "reproduces the ten "
     "printed Table 4.2 numbers (least squares on log ratios, col. 5 with the printed formula; "
     "solve_radius_ratio): about 59 000 km, a 39-hour orbit, not the synchronous orbit of Sec. 4.1 (6.6 "
     "Earth radii); shown, never a reading of the text",
@@ -1211,7 +1217,7 @@ def _table_4_3_tolerance(text: str, column: str) -> Tolerance:
         return figure_reading(
             max(half, 0.0025),
             figure="Fig. 4.1",
-            axis="psi on a 0-1 axis read to 0.0025, or the printed half digit where that is coarser",
+            axis="$\\psi$ on a 0-1 axis read to 0.0025, or the printed half digit where that is coarser",
         )
     if column in ("sd0", "sdN", "sdN1") and len(text) > 3 and text.endswith("0"):
         return printed(
@@ -1242,7 +1248,7 @@ for (_ex, _s0), _row in TABLE_4_3.items():
                 id=f"ATC10-tab4.3-ex{_ex}-s{int(_s0)}-{_col}",
                 paper="ATC10",
                 locator="Table 4.3 col. (ii) (Fig. 4.1)" if _col == "psi" else "Table 4.3",
-                quantity=f"Example {_ex}, $\\sigma_0$ = {int(_s0)} ns: {_TAB3_NAMES[_col]}",
+                quantity=f"Example {_ex}, $\\sigma_0 = {int(_s0)}$ ns: {_TAB3_NAMES[_col]}",
                 published=_pub,
                 unit="" if _ci < 2 else "ft",
                 kind="reproduction",
@@ -1276,7 +1282,7 @@ for (_ex, _s0), _row in TABLE_4_3.items():
             id=_cid,
             paper="ATC10",
             locator="Table 4.3",
-            quantity=f"Example {_ex}, $\\sigma_0$ = {int(_s0)} ns: rms error of the first three-satellite "
+            quantity=f"Example {_ex}, $\\sigma_0 = {int(_s0)}$ ns: rms error of the first three-satellite "
             "estimate, rotation-invariant clock term",
             published=float(_row[4]),
             unit="ft",
@@ -1612,7 +1618,7 @@ ERRATA += [
         finding="integrand $((1+s)^{\\rho-1/2} - s^{\\rho-1/2})^2$; $R_{x3} = \\beta^2 V_0 / 2\\, "
         "(\\ldots)$; Newton step $G/G'$.",
         evidence="With the corrected integrand the quadrature equals $1/(\\Gamma(2\\rho+1) \\sin \\pi\\rho)$ "
-        "to 1e-8 "
+        "to $10^{-8}$ "
         "(test).",
         discussed_in=PAGE_TRACKER,
         claims=("ATC10-appG-V0-printed",),
@@ -1640,7 +1646,7 @@ ERRATA += [
         locator="App. H, corollary (Eq. H.26)",
         printed="$\\gamma = \\sigma^2 / (\\sigma^2 + \\sigma_x^2 [F'F - F'G(G'G)^{-1}G'F])$",
         finding="$\\gamma = \\sigma_x^2 / (\\sigma^2 + \\sigma_x^2 [F'F - F'G(G'G)^{-1}G'F])$.",
-        evidence="Equals the general gain H of Eq. (H.20) to 1e-12 and gives the error variance "
+        evidence="Equals the general gain H of Eq. (H.20) to $10^{-12}$ and gives the error variance "
         "$\\sigma^2 \\gamma$ of (H.21); the printed numerator does not (test).",
         discussed_in=PAGE_TRACKER,
         claims=("ATC10-appH-scalar-gain-printed",),

@@ -406,7 +406,8 @@ CLAIMS = [
         compute=_length_mm_cm_level,
         tolerance=EXACT,
         expected_status="consistent",
-        note="dh = R sin(theta) tan(theta) dB / B: about 1.2 mm for B = 200 m at 30 deg; 0.2-4.4 mm over "
+        note="$dh = R \\sin\\theta \\tan\\theta \\, dB / B$: about 1.2 mm for B = 200 m at 30 deg; 0.2-4.4 "
+        "mm over "
         "the band. The paper names units, not a value: 'mm/cm accuracy' read as within half a decade (or "
         "a decade) of 1 mm to 1 cm. The 'cm' of the text fits longer baselines or airborne geometries.",
         discussed_in=PAGE0,
@@ -454,7 +455,8 @@ CLAIMS = [
         compute=_uncorrelated_after_10s,
         tolerance=EXACT,
         expected_status="consistent",
-        note="$\\exp(-10/\\tau)$: 0.007 for $\\tau = 2$ s, 5e-5 to 0.14 for $\\tau$ = 1-5 s. The paper "
+        note="$\\exp(-10/\\tau)$: 0.007 for $\\tau = 2$ s, $5 \\times 10^{-5}$ to 0.14 for $\\tau = 1$-5 "
+        "s. The paper "
         "prints no correlation: 'nearly uncorrelated' is the book's reading, below 1/e (or 0.1).",
         discussed_in=PAGE0,
     ),
@@ -479,7 +481,8 @@ CLAIMS = [
         id="KZL-eq9-quaternion",
         paper="KZL",
         locator="Eq. (9)",
-        quantity="the quaternion rate q' = q (x) [0, w]/2 integrates to the rotation of the body rate",
+        quantity="the quaternion rate $\\dot q = q \\otimes [0, \\omega]/2$ integrates to the rotation of "
+        "the body rate",
         published=True,
         unit="statement",
         kind="statement",
@@ -487,7 +490,7 @@ CLAIMS = [
         tolerance=EXACT,
         expected_status="reproduced",
         note="Constant body rate (0.1, -0.2, 0.3) rad/s from the Table 1 attitude, $\\omega_{in}$ neglected "
-        "as the paper does: RK4 at 1 ms steps ends within 1e-6 deg of scipy's closed form after 1 s.",
+        "as the paper does: RK4 at 1 ms steps ends within $10^{-6}$ deg of scipy's closed form after 1 s.",
         discussed_in=PAGE1,
     ),
     Claim(
@@ -503,14 +506,15 @@ CLAIMS = [
         tolerance=EXACT,
         expected_status="reproduced",
         note="Error = computed - true, $\\hat R = e^{[d \\times]} R$; Table 1 attitude, specific force "
-        "(0.5, -0.3, $-g$) m/s$^2$ in NED; central differences at 1e-6 rad agree to 1e-6 of g.",
+        "(0.5, -0.3, $-g$) m/s$^2$ in NED; central differences at $10^{-6}$ rad agree to $10^{-6}$ of g.",
         discussed_in=PAGE2,
     ),
     Claim(
         id="KZL-eq11-bracket",
         paper="KZL",
         locator="Eq. (11)",
-        quantity="the explicit matrix of Eq. (11) is the cross-product matrix its bracket [a x] names",
+        quantity="the explicit matrix of Eq. (11) is the cross-product matrix its bracket $[a \\times]$ "
+        "names",
         published=True,
         unit="statement",
         kind="statement",
@@ -538,7 +542,7 @@ CLAIMS = [
         tolerance=EXACT,
         expected_status="reproduced",
         note="Between-satellite then between-antenna, or the reverse, over 1000 random range sets: equal to "
-        "1e-6 relative (floating point on 2e7 m ranges).",
+        "$10^{-6}$ relative (floating point on $2 \\times 10^{7}$ m ranges).",
         discussed_in=PAGE2,
     ),
     Claim(
@@ -604,8 +608,8 @@ CLAIMS = [
         compute=_baseline_tradeoff,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="Candidates 2 B / lambda + 1 (about 22 for the Table 1 2 m baselines); attitude error "
-        "0.01 lambda / B (about 1 mrad at 2 m).",
+        note="Candidates $2 B / \\lambda + 1$ (about 22 for the Table 1 2 m baselines); attitude error "
+        "$0.01 \\lambda / B$ (about 1 mrad at 2 m).",
         discussed_in=PAGE3,
     ),
 ]

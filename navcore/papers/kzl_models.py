@@ -107,7 +107,7 @@ IN.convention(
         "atan2(a_y, a_z), the two-argument function the name arctan_2 calls for": "atan2",
         "arctan(a_y / a_z), the one-argument arctangent of the printed ratio": "arctan",
     },
-    reason="Eq. (3) prints 'arctan_2(a_y / a_z)': the name of the two-argument arctangent with one "
+    reason="Eq. (3) prints '$\\arctan_2(a_y / a_z)$': the name of the two-argument arctangent with one "
     "argument, the ratio; read as the ratio's arctangent it returns the roll of a level specific "
     "force (for |roll| < 90 deg), read as atan2 it returns 180 deg",
 )
@@ -565,8 +565,10 @@ CLAIMS = [
         compute=printed_levelling_level_roll_deg,
         tolerance=printed("0", why="Table 1 prints roll 0")[1],
         expected_status="consistent",
-        note="A level IMU measures f = [0, 0, -g]. Eq. (3) prints 'arctan_2(a_y / a_z)', the two-argument "
-        "name with one argument: read as atan2(a_y, a_z) it returns roll = 180 deg; read as the "
+        note="A level IMU measures f = [0, 0, -g]. Eq. (3) prints '$\\arctan_2(a_y / a_z)$', the "
+        "two-argument "
+        "name with one argument: read as $\\operatorname{atan2}(a_y, a_z)$ it returns roll = 180 deg; read "
+        "as the "
         "arctangent of the printed ratio it returns 0, the Table 1 roll (for any |roll| < 90 deg).",
         discussed_in=PAGE1,
     ),
@@ -639,7 +641,8 @@ CLAIMS = [
         compute=series_terminates,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="$F$ is nilpotent ($F^4 = 0$): the series ends at $(FT)^3/6$ and equals scipy's expm to 1e-12.",
+        note="$F$ is nilpotent ($F^4 = 0$): the series ends at $(FT)^3/6$ and equals scipy's expm to "
+        "$10^{-12}$.",
         discussed_in=PAGE1,
     ),
     Claim(
@@ -665,8 +668,9 @@ CLAIMS = [
         compute=_row_counts_eq17,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="Code and delta range per satellite plus two DDs (baselines A0-A1, A0-A2) per non-master "
-        "satellite. Eq. (14) as printed has 7 rows for nu = 2 (a duplicated row); the formula gives 6.",
+        note="Code and $\\delta$ range per satellite plus two DDs (baselines $A_0$-$A_1$, $A_0$-$A_2$) per "
+        "non-master "
+        "satellite. Eq. (14) as printed has 7 rows for $\\nu = 2$ (a duplicated row); the formula gives 6.",
         discussed_in=PAGE2,
     ),
     Claim(
@@ -681,7 +685,7 @@ CLAIMS = [
         tolerance=EXACT,
         expected_status="reproduced",
         note="LTI observability rank in straight and level flight at the Table 1 attitude: code and "
-        "delta range alone never reach 17 (heading and z-gyro bias are unobservable); with Euler "
+        "$\\delta$ range alone never reach 17 (heading and z-gyro bias are unobservable); with Euler "
         "attitude or DD phases the rank is 17 for $\\nu \\ge 4$.",
         discussed_in=PAGE2,
     ),

@@ -123,7 +123,7 @@ IN.convention(
     alternative=(180.0, 360.0),
     reason="Table 1's gyro block is OCR-scrambled: 360 and 180 stand on the lines of 'bias stability' "
     "and 'Accelerometer'; moving the gyro numbers up one line gives bias 360 deg/h, ARW 180 "
-    "deg/h/sqrt(Hz); the other reading swaps them",
+    "deg/h/√Hz; the other reading swaps them",
     unit="(deg/h, deg/h/sqrt(Hz))",
     quantity="gyro bias stability and angle random walk",
 )
@@ -145,15 +145,15 @@ IN.assumed(
     reason="Eq. (4) takes the heading from the GPS velocity, blind to the crab angle; 0.1-1 deg is the "
     "crab of a 110 m/s aircraft in 0.2-2 m/s crosswind (the paper gives no wind)",
     unit="deg",
-    quantity="1-sigma crab angle (heading minus GPS track)",
+    quantity="1-$\\sigma$ crab angle (heading minus GPS track)",
 )
 IN.assumed(
     "gnss_noise_scale",
     1.0,
     low=0.5,
     high=2.0,
-    reason="the paper gives no GPS noise; the book's nominal 1-sigma noises (GNSS_NOMINAL: 3 m code, "
-    "5 cm/s delta range, 3 mm undifferenced phase, 0.17 deg per Euler angle from the 2-m multi-antenna "
+    reason="the paper gives no GPS noise; the book's nominal 1-$\\sigma$ noises (3 m code, "
+    "5 cm/s $\\delta$ range, 3 mm undifferenced phase, 0.17 deg per Euler angle from the 2-m multi-antenna "
     "system, and the initial GPS fix of 3 m and 5 cm/s per axis) are scaled together over 0.5-2 (1.5-6 m, "
     "2.5-10 cm/s, 1.5-6 mm, 0.09-0.34 deg): a receiver noisier in code is noisier in phase and gives a "
     "worse first fix, and one scale keeps the Monte Carlo band affordable",

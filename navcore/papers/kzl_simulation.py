@@ -66,7 +66,7 @@ IN_SIM.convention(
         "the attitude error as a whole (the root sum square of the three angles)": "whole",
     },
     reason="Sec. 3.6 says the attitude results of tight coupling are better, not which angles; in the "
-    "straight and level flight of Table 1 the heading is unobservable from code and delta range",
+    "straight and level flight of Table 1 the heading is unobservable from code and $\\delta$ range",
 )
 
 
@@ -221,7 +221,7 @@ _C16 = printed("3", why="the paper prints an integer bound")
 _C17_MC = mc_tolerance(
     rel=round(3.0 / np.sqrt(2 * N_RUNS), 3),
     runs=N_RUNS,
-    why="three standard errors (1/sqrt(2 N) = 12.9 % each) of the book's 30-run RMS; the paper's "
+    why="three standard errors ($1/\\sqrt{2 N}$ = 12.9 % each) of the book's 30-run RMS; the paper's "
     "simulation is a single run",
 )
 _ABOUT = prose("about", why="'about 1 km and 15 m/s after 3 minutes', read per horizontal axis")
@@ -358,7 +358,7 @@ CLAIMS = [
         tolerance=EXACT,
         expected_status="consistent",
         note="Read per angle the heading cannot be better: in the straight and level flight of Table 1 "
-        "the heading error is unobservable from code and delta range (8 satellites, published inputs "
+        "the heading error is unobservable from code and $\\delta$ range (8 satellites, published inputs "
         "only), so no filter removes any of it (the Monte Carlo heading RMS of TC and of the INS agree "
         "on common random numbers). The paper says 'attitude', and read as the attitude error as a "
         "whole (the root sum square of the three angles) tight coupling removes a large share of it, "

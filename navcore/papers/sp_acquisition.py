@@ -58,8 +58,8 @@ IN.convention(
     1,
     alternative=2,
     reason="Sec. 2.6.2 searches one Doppler cell, so the bounds are in code phase only; the other reading "
-    "is a 1-sigma box in code phase and Doppler",
-    quantity="dimensions of the 1-sigma search bounds",
+    "is a 1-$\\sigma$ box in code phase and Doppler",
+    quantity="dimensions of the 1-$\\sigma$ search bounds",
 )
 for _label, _name in TABLE_2_7_ROWS.items():
     IN.published(
@@ -98,7 +98,8 @@ IN.assumed(
     high=60.0,
     unit="deg",
     quantity="latitude of the gyrocompass alignment",
-    reason="the paper gives no attitude error; the steady-state gyrocompass heading error eps/(Omega cos L) "
+    reason="the paper gives no attitude error; the steady-state gyrocompass heading error eps/($\\Omega$ "
+    "cos L) "
     "is assumed, at a mid latitude of 30 to 60 deg",
 )
 GRADE_INDEX = {"10": 0, "1": 1}  # columns of Table 2.5 (sp_tables) for the two helicopter IMUs
@@ -214,7 +215,8 @@ CLAIMS = [
         compute=better_max_s,
         tolerance=_t02[1],
         expected_status="consistent",
-        note="Delta T = 20 ms x intervals x one Doppler cell: 0.10 to 0.18 s for the four better systems; "
+        note="$\\Delta$ T = 20 ms x intervals x one Doppler cell: 0.10 to 0.18 s for the four better "
+        "systems; "
         "arithmetic on printed numbers, a cross-check. One Doppler cell: the Sec. 2.5 formula's "
         "$[2 \\sigma_{\\text{rng-rate}}/10]$ is one 10-m/s interval when 'not greater than 10 m/s' bounds "
         "the whole uncertainty span; the 30-m interval called a 'chip' is a P(Y) chip (29.3 m).",

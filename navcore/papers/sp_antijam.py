@@ -251,7 +251,7 @@ IN.assumed(
     low=0.5,
     high=5.0,
     unit="s",
-    quantity="code-loop measurement interval (B_n = 1/(2T))",
+    quantity="code-loop measurement interval ($B_n = 1/(2T)$)",
     reason="1-s fixes; the tightly coupled receiver filter of Sec. 3.0 has 0.1 Hz (T = 5 s), "
     "a 1-Hz loop 0.5 s",
 )
@@ -614,7 +614,7 @@ def _cep_claim(arch: str, power: float) -> Claim:
             "bias, evaluated exactly (the covariance of its linear error model, no sampling); trajectory, "
             "antenna gain, signal, noise, geometry and code-loop assumptions are the book's, with ranges. "
             "The DI error is set by the unestimated range bias and the short outage near the jammer. The "
-            "fix noise is the library's early-minus-late code-tracking noise at the effective C/N0.",
+            "fix noise is the library's early-minus-late code-tracking noise at the effective $C/N_0$.",
         )
     if power == 100.0:
         return Claim(
@@ -653,8 +653,9 @@ CLAIMS = [
         ),
         tolerance=_js54[1],
         expected_status="consistent",
-        note="J/S = 10 log10(Q Rc (1/gamma - 1/(C/N0))) with the Sec. 2.5 tracking threshold gamma = 19 "
-        "dB(-Hz), the P(Y) code (convention), the 20-MHz jammer's Q and an assumed unjammed C/N0 "
+        note="$J/S = 10 \\log_{10}(Q R_c (1/\\gamma - 1/(C/N_0)))$ with the Sec. 2.5 tracking threshold "
+        "$\\gamma = 19$ "
+        "dB(-Hz), the P(Y) code (convention), the 20-MHz jammer's Q and an assumed unjammed $C/N_0$ "
         "(signal -163 dBW, noise -204 dBW/Hz nominal).",
         discussed_in=PAGE,
     ),

@@ -106,7 +106,7 @@ _T27_NOTE = (
     "The book's flyby (its assumptions on the flyby page) tracks seven satellites, as the paper's "
     "receiver did, but not the paper's seven: each printed column is matched to the book satellite "
     "of the same rank of range uncertainty in the 10 nmi/h row (the convention's other reading ranks "
-    "each row on its own). The count is that satellite's own: the 30-m cells over +-1 sigma of the "
+    "each row on its own). The count is that satellite's own: the 30-m cells over $\\pm 1\\sigma$ of the "
     "range uncertainty along its line of sight at its own code reacquisition, from the position "
     "covariance (the receiver clock added in the other reading), after the updates of the "
     "satellites already back. The band spans the assumed antenna, jammer offset, flight, location "

@@ -172,10 +172,10 @@ IN.assumed(
     low=1.0,
     high=3.0,
     unit="",
-    quantity="multiple of the 1-sigma jitter that must stay within the loss limits",
+    quantity="multiple of the 1-$\\sigma$ jitter that must stay within the loss limits",
     reason="the paper declares lock lost when the phase error 'exceeded 90 deg' (the code's 'greater "
-    "then 1/2 chip'); for a random error the rule of thumb is that 3 sigma stay within the limit "
-    "(Kaplan & Hegarty, Sec. 5.6); holding only 1 sigma to it is the loosest reading",
+    "then 1/2 chip'); for a random error the rule of thumb is that $3\\sigma$ stay within the limit "
+    "(Kaplan & Hegarty, Sec. 5.6); holding only $1\\sigma$ to it is the loosest reading",
 )
 IN.convention(
     "table27_clock",
@@ -223,7 +223,7 @@ IN.assumed(
     low=40.0,
     high=47.0,
     unit="dB-Hz",
-    quantity="unjammed C/N0 of a satellite at the zenith",
+    quantity="unjammed $C/N_0$ of a satellite at the zenith",
     reason="P(Y) code on L1 at the specified minimum of -163 dBW (IS-GPS-200) to 3 dB above it, "
     "an antenna gain of 0-5 dBic at the zenith, and thermal noise of -204 dBW/Hz with a 1-4 dB "
     "receiver noise figure: 40-47 dB-Hz",
@@ -235,7 +235,7 @@ IN.assumed(
     high=13.0,
     unit="dB",
     quantity="antenna gain at the zenith minus gain at the horizon",
-    reason="not published; it sets the spread of C/N0 between high and low satellites and so how much "
+    reason="not published; it sets the spread of $C/N_0$ between high and low satellites and so how much "
     "longer a receiver that needs four codes is blacked out than one that uses any code. L1 aircraft "
     "patch antennas fall 5-13 dB from zenith to horizon",
 )
@@ -787,9 +787,9 @@ def _calibration_rather_than_resistance() -> bool:
 _MODEL = (
     "Jammer flyby of the page: seven satellites of a 30-satellite constellation (the longitude "
     "chooses the geometry), free-space jammer noise density fitted so that the loosely coupled "
-    "receiver (four codes) blacks out for the paper's 20 min, antenna pattern (zenith C/N0, gain "
+    "receiver (four codes) blacks out for the paper's 20 min, antenna pattern (zenith $C/N_0$, gain "
     "drop to the horizon, roll-off shape), Sec. 2.5 loss and reacquisition rules: carrier lost "
-    "below 19 dB-Hz or beyond 90 deg of phase error (3-sigma jitter of its bandwidth plus the "
+    "below 19 dB-Hz or beyond 90 deg of phase error (3-$\\sigma$ jitter of its bandwidth plus the "
     "dynamic error the IMU leaves), code below 18 dB-Hz or beyond half a chip, back at 21/22 dB-Hz "
     "after the search of the range and range-rate uncertainty."
 )
@@ -829,7 +829,7 @@ CLAIMS = [
         tolerance=prose("about", why="'reduced by only about 2 min'"),
         expected_status="inconsistent",
         note="The tightly coupled blackout is shorter because the filter uses any tracked code while the "
-        "loosely coupled receiver needs four; by how much is set by the spread of C/N0 between the "
+        "loosely coupled receiver needs four; by how much is set by the spread of $C/N_0$ between the "
         "strongest satellite and the fourth strongest, i.e. by the unpublished antenna pattern and "
         "geometry. The carrier-loop bandwidth does not enter (SP-sec2.6.2-blackout-bandwidth) and the "
         "search at reacquisition adds seconds." + _FIT + " " + _MODEL,
@@ -866,8 +866,8 @@ CLAIMS = [
         expected_status="inconsistent",
         note="The tightly coupled 1 nmi/h blackout with its Table 2.6 loop (0.37 rad/s, aided) against the "
         "same receiver with the table's unaided 18 rad/s loop, which sees all the dynamics: true if the "
-        "blackout moves by one sample (1 s) or more. The wider loop loses its carrier at a higher C/N0 "
-        "(its 3-sigma jitter reaches 90 deg near 20 dB-Hz), but the tightly coupled filter navigates on "
+        "blackout moves by one sample (1 s) or more. The wider loop loses its carrier at a higher $C/N_0$ "
+        "(its 3-$\\sigma$ jitter reaches 90 deg near 20 dB-Hz), but the tightly coupled filter navigates on "
         "pseudoranges, which last until the code's 18 dB-Hz (the code loop is then aided by the INS at "
         "0.5 Hz, and its jitter stays far below half a chip). On the straight leg past the jammer no "
         "dynamics load either loop. The paper's statement would need a code loss tied to the carrier "

@@ -363,14 +363,15 @@ ERRATA = [
         basis="text-only",
         locator="Table 2.4 (GPS user clock, initial offset)",
         printed="Initial offset 5000 ms",
-        finding="5000 ms of clock offset is 1.5e9 m of range: not an initial uncertainty a filter is "
+        finding="5000 ms of clock offset is $1.5 \\times 10^{9}$ m of range: not an initial uncertainty a "
+        "filter is "
         "started with, and a receiver sets its clock from its first pseudoranges anyway. The unit is "
         "probably m (or ns, 1499 m); the book reads 5000 m. No printed result depends on the reading: "
         "with the offset read as 5000 ns the missions' errors are the same to nine digits (the "
         "first measurements remove it).",
         evidence="The tightly coupled sequential outage run with the two readings of the offset "
         "(SP-tab2.4-clock-offset); the literal 5 s cannot start a covariance in double precision "
-        "(its variance is 2e18 m^2 against 1-m pseudoranges).",
+        "(its variance is $2 \\times 10^{18}$ m² against 1-m pseudoranges).",
         claims=("SP-tab2.4-clock-offset",),
         discussed_in="sp/21-missions",
     ),

@@ -253,8 +253,9 @@ IN.assumed(
     high=0.009,
     unit="m²/s",
     quantity="receiver clock phase (bias) noise PSD",
-    reason="Table 2.4 gives the clock's initial errors, not its noise. S_f = h0 c^2 / 2 of an "
-    "oven-controlled crystal (h0 = 8e-20, nominal) up to a temperature-compensated one (h0 = 2e-19): "
+    reason="Table 2.4 gives the clock's initial errors, not its noise. $S_f = h_0 c^2 / 2$ of an "
+    "oven-controlled crystal ($h_0 = 8 \\times 10^{-20}$, nominal) up to a temperature-compensated one "
+    "($h_0 = 2 \\times 10^{-19}$): "
     "Brown & Hwang, Table 9.2",
 )
 IN.assumed(
@@ -264,8 +265,9 @@ IN.assumed(
     high=0.0355,
     unit="m²/s³",
     quantity="receiver clock frequency (drift) noise PSD",
-    reason="S_g = 2 pi^2 h_-2 c^2 of an oven-controlled crystal (h_-2 = 4e-23, nominal) up to a "
-    "temperature-compensated one (h_-2 = 2e-20): Brown & Hwang, Table 9.2",
+    reason="$S_g = 2 \\pi^2 h_{-2} c^2$ of an oven-controlled crystal ($h_{-2} = 4 \\times 10^{-23}$, "
+    "nominal) up to a "
+    "temperature-compensated one ($h_{-2} = 2 \\times 10^{-20}$): Brown & Hwang, Table 9.2",
 )
 IN.assumed(
     "mask_deg",

@@ -169,7 +169,7 @@ def _tie_tolerance(text: str) -> tuple[float, Tolerance]:
     return printed(
         text,
         extra_abs=1e-12,
-        why="floating-point slack: 225 ppm x 6 g = 0.00135 g is an exact tie that rounds half up to 0.0014",
+        why="floating-point slack: 225 ppm × 6 g = 0.00135 g is an exact tie that rounds half up to 0.0014",
     )
 
 
@@ -329,7 +329,8 @@ CLAIMS = [
         id="SP-sec2.5-H-sign",
         paper="SP",
         locator="Sec. 2.5, 3x6 sensitivity matrix",
-        quantity="the printed 3x6 matrix is the sensitivity of diag(sf) a + [dtheta x] a for a = (1,1,1)",
+        quantity="the printed 3x6 matrix is the sensitivity of "
+        "$\\operatorname{diag}(s_f)\\, a + [\\delta\\theta \\times]\\, a$ for $a = (1,1,1)$",
         published=True,
         unit="statement",
         compute=printed_h_matches_skew_model,
@@ -338,7 +339,8 @@ CLAIMS = [
         erratum="SP-E-misalignment-sign",
         oracle=printed_h_matches_cross_product_jacobian,
         oracle_tolerance=EXACT,
-        note="The misalignment block has the opposite sign (a x dtheta); immaterial for uncorrelated "
+        note="The misalignment block has the opposite sign ($a \\times \\delta\\theta$); immaterial for "
+        "uncorrelated "
         "errors, as in the radii computed here.",
     ),
 ]

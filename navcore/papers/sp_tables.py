@@ -83,9 +83,9 @@ _TABLE_2_4_ROWS: tuple[tuple[str, str, str, str, int], ...] = (
     ("clock g-sensitive drift", "clock_g_sensitivity_ppm_per_g", "1e-3", "ppm/g", 1),
     ("pseudorange bias", "pseudorange_bias_m", "3.0", "m", 4),
     ("range-rate bias", "range_rate_bias_mps", "0.003", "m/s", 4),
-    ("gravity (Markov) sigma", "gravity_sigma_micro_g", "35", "micro-g", 3),
+    ("gravity (Markov) $\\sigma$", "gravity_sigma_micro_g", "35", "micro-g", 3),
     ("gravity (Markov) distance", "gravity_distance_km", "37", "km", 3),
-    ("barometer (Markov) sigma", "barometer_sigma_m", "150", "m", 1),
+    ("barometer (Markov) $\\sigma$", "barometer_sigma_m", "150", "m", 1),
     ("barometer (Markov) distance", "barometer_distance_km", "460", "km", 1),
     ("barometer noise", "barometer_noise_m", "3", "m", 1),
 )

@@ -133,7 +133,7 @@ _peak90 = printed("90", why="the paper prints the peak as a round 90 deg")
 _omega = printed("17.67")
 _g6 = printed("6", why="the '6-g acceleration step'")
 _LSIM_TOL = Tolerance(
-    reason="time-domain simulation on a 25-us grid: 1e-5 relative", rel=1e-5, policy="exact"
+    reason="time-domain simulation on a 25-us grid: $10^{-5}$ relative", rel=1e-5, policy="exact"
 )
 
 ERRATA = [
@@ -169,7 +169,7 @@ ERRATA = [
         evidence="A symbolic inverse Laplace transform of $R/((s+\\omega_0)(s^2+\\omega_0 s+\\omega_0^2))$ "
         "equals "
         "the corrected "
-        "form (difference 0), and a linear-system simulation agrees to 1e-6 relative.",
+        "form (difference 0), and a linear-system simulation agrees to $10^{-6}$ relative.",
         claims=("SP-eq2.u1-closed-form",),
         discussed_in=PAGE,
     ),
@@ -259,14 +259,14 @@ CLAIMS = [
         id="SP-eq2.1-keeps-peak",
         paper="SP",
         locator="Eq. (2.1)",
-        quantity="scaling w0 by the square root of the step ratio keeps the peak error unchanged",
+        quantity="scaling $w_0$ by the square root of the step ratio keeps the peak error unchanged",
         published=True,
         unit="statement",
         compute=eq21_keeps_peak,
         tolerance=EXACT,
         expected_status="reproduced",
         note="Peaks found on a fine time grid (not from the peak factor) for the four aided steps of "
-        "Table 2.6 against the 6 g, 18 rad/s unaided loop: equal to 1e-9 relative, because the error is "
+        "Table 2.6 against the 6 g, 18 rad/s unaided loop: equal to $10^{-9}$ relative, because the error is "
         "$R/\\omega_0^2$ times a function of $\\omega_0 t$.",
     ),
     Claim(
@@ -323,7 +323,7 @@ CLAIMS = [
         tolerance=printed("5.83")[1],
         expected_status="not-reproducible",
         note="No design rule for it is given. For the Butterworth loop of Fig. 2.1 the noise bandwidth "
-        "is (5/6) w0 = 14.7 Hz at 17.67 rad/s; 5.83 Hz would need w0 = 7.0 rad/s. Missing: the loosely "
+        "is (5/6) $w_0 = 14.7$ Hz at 17.67 rad/s; 5.83 Hz would need $w_0 = 7.0$ rad/s. Missing: the loosely "
         "coupled loop's coefficients and the requirement behind 5.83 Hz, which Sec. 2.5 should give "
         "next to the value.",
     ),

@@ -180,7 +180,7 @@ IN.assumed(
     low=5.0,
     high=30.0,
     unit="m",
-    quantity="best INS/GPS position accuracy (1-sigma)",
+    quantity="best INS/GPS position accuracy (1-$\\sigma$)",
     reason="Sec. III compares with 'the best position accuracy provided by an INS/GPS system [3]' "
     "without quoting it; integrated INS/GPS of the 1980s ([3], 1986) gave 5-30 m",
 )
@@ -191,7 +191,7 @@ IN.assumed(
     high=0.2,
     unit="m/s",
     quantity="GPS velocity accuracy per line of sight from Doppler",
-    reason="Sec. IV.D calls sigma_G = 1 Hz 'consistent with the GPS velocity accuracy from Doppler shift "
+    reason="Sec. IV.D calls $\\sigma_G = 1$ Hz 'consistent with the GPS velocity accuracy from Doppler shift "
     "measurement' without a value or reference; receivers of the time specify 0.05-0.2 m/s",
 )
 IN.assumed(
@@ -202,7 +202,7 @@ IN.assumed(
     unit="m/s^2",
     quantity="upper end of a 'very poor' accelerometer",
     reason="Sec. IV.D: GPS benefits 'become noticeable only when ... the local accelerometer accuracy is "
-    "very poor'; beyond the stated 10 mm/s^2, up to 0.1-1 m/s^2",
+    "very poor'; beyond the stated 10 mm/s², up to 0.1-1 m/s²",
 )
 IN.published(
     "f_l1_over_c_printed",
@@ -215,13 +215,14 @@ IN.convention(
     "c_of_fl1_mps",
     C,
     unit="m/s",
-    quantity="speed of light in the printed f_L1/c",
+    quantity="speed of light in the printed $f_{L1}/c$",
     readings={
         "the defined speed of light, 299 792 458 m/s": C,
         "the engineering value 3 x 10^8 m/s": 3.0e8,
         "the four-digit value 2.998 x 10^8 m/s": 2.998e8,
     },
-    reason="Sec. IV.D prints f_o^L1/c = 5.25 m^-1 without its c; 1575.42 MHz over the defined c is 5.2550, "
+    reason="Sec. IV.D prints $f_o^{L1}/c = 5.25$ m⁻¹ without its c; 1575.42 MHz over the defined c is "
+    "5.2550, "
     "a hair (0.00004) beyond half a unit in the last printed digit, while the engineering values of c "
     "give 5.2514 and 5.2549",
 )
@@ -273,9 +274,10 @@ IN.convention(
 IN.convention(
     "negligible_fraction",
     1.0,
-    quantity="share of the on-board accuracy sigma_N below which an error is negligible",
+    quantity="share of the on-board accuracy $\\sigma_N$ below which an error is negligible",
     readings={"below sigma_N": 1.0, "below a tenth of sigma_N": 0.1},
-    reason="Sec. V's 'negligible level' carries no number; the on-board accuracy sigma_N is the error the "
+    reason="Sec. V's 'negligible level' carries no number; the on-board accuracy $\\sigma_N$ is the error "
+    "the "
     "aircraft has without any flexure",
 )
 IN.convention(
@@ -293,7 +295,7 @@ IN.assumed(
     high=2.0,
     unit="m/s^2",
     quantity="amplitude of the aperture manoeuvre of the Eq. (13) simulation",
-    reason="the paper gives no manoeuvre; 0.1-2 m/s^2 is a gentle to firm wing-tip acceleration",
+    reason="the paper gives no manoeuvre; 0.1-2 m/s² is a gentle to firm wing-tip acceleration",
 )
 IN.assumed(
     "eq13_accel_frequency_hz",
@@ -1100,24 +1102,26 @@ _sL_hi, _sL_hi_tol = printed("2")
 _c17, _c17_tol = printed("0.2")
 _c14, _c14_tol = printed("-60")
 _c15, _c15_tol = printed("0.002")
-_c15f, _c15f_tol = printed("1e3", why="'a factor of 10^3', one significant digit")
+_c15f, _c15f_tol = printed("1e3", why="'a factor of $10^{3}$', one significant digit")
 _c8, _c8_tol = printed("100")
-_c6, _c6_tol = printed("1e4", why="'10^4 %', one significant digit")
+_c6, _c6_tol = printed("1e4", why="'$10^{4}$ %', one significant digit")
 _c3, _c3_tol = printed("10")
 _c2, _c2_tol = printed("0.01")
-_sg, _sg_tol = printed("1", why="'sigma_G = 1 Hz (consistent with the GPS velocity accuracy ...)'")
+_sg, _sg_tol = printed("1", why="'$\\sigma_G = 1$ Hz (consistent with the GPS velocity accuracy ...)'")
 
 ORDER = prose("on the order of", why="'R/2|v| is on the order of 100'")
 APPROX = prose("approximately", why="'approximately 1 % relative to the nominal velocity'")
 FIG1_READING = figure_reading(
     0.5,
     figure="Fig. 1",
-    axis="improvement 20 log10(sigma_D / sigma_DN) in dB; curves closer than half a dB are not told apart",
+    axis="improvement $20 \\log_{10}(\\sigma_D / \\sigma_{DN})$ in dB; curves closer than half a dB are "
+    "not told apart",
 )
 FIG2_READING = figure_reading(
     0.5,
     figure="Fig. 2",
-    axis="improvement 20 log10(sigma_D / sigma_DN) in dB; curves closer than half a dB are not told "
+    axis="improvement $20 \\log_{10}(\\sigma_D / \\sigma_{DN})$ in dB; curves closer than half a dB are "
+    "not told "
     "apart (the 3-satellite markers lie on the 1-satellite lines)",
 )
 
@@ -1134,7 +1138,8 @@ CLAIMS = [
         tolerance=EXACT,
         expected_status="reproduced",
         note="Book geometry (2 deg/s turn at 8 km, 200 m/s, 120 s, 200 samples, emitter about 35 km away, "
-        "f0 = 10 GHz, 1 Hz noise, 0.05 m/s velocity errors); |H'W r| relative to |H||m| < 1e-12.",
+        "$f_0 = 10$ GHz, 1 Hz noise, 0.05 m/s velocity errors); $|H' W r|$ relative to "
+        "$|H|\\,|m| < 10^{-12}$.",
         discussed_in=DOCS["II"],
     ),
     Claim(
@@ -1230,7 +1235,8 @@ CLAIMS = [
         compute=flexible_mode_is_several,
         tolerance=EXACT,
         expected_status="not-reproducible",
-        note="2 pi f A of the assumed first wing mode: 3 Hz (3-9, 'several Hertz') with 0.1 m tip amplitude "
+        note="2 $\\pi$ f A of the assumed first wing mode: 3 Hz (3-9, 'several Hertz') with 0.1 m tip "
+        "amplitude "
         "(5-30 cm) gives 1.9 m/s, below 'several'. The paper says the mode 'can result in' several m/s, a "
         "possibility: across the assumed frequency and amplitude the velocity amplitude spans 0.94-17 "
         "m/s and lies in 3-9 m/s over part of that range, not at the nominal mode. The paper prints no "
@@ -1272,13 +1278,13 @@ CLAIMS = [
         id="WF-eq8-norm",
         paper="WF",
         locator="Eq. (8)",
-        quantity="|df/dv| = f0/c for every geometry",
+        quantity="$|df/dv| = f_0/c$ for every geometry",
         published=True,
         unit="statement",
         compute=_eq8_identity,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="2000 seeded random geometries; relative deviation < 1e-12.",
+        note="2000 seeded random geometries; relative deviation < $10^{-12}$.",
         discussed_in=DOCS["III"],
     ),
     Claim(
@@ -1350,7 +1356,7 @@ CLAIMS = [
         oracle_tolerance=EXACT,
         note="$y_a$ is the accelerometer output of Eq. (12), an acceleration; $\\hat x_{DL}$ a velocity: the "
         "printed innovation subtracts a velocity from an acceleration. Checked independently by a seeded "
-        "simulation of the printed recursion (200 paths, 5000 steps, $\\sigma_a$ = 1e-3 m/s², the assumed "
+        "simulation of the printed recursion (200 paths, 5000 steps, $\\sigma_a = 10^{-3}$ m/s², the assumed "
         "0.5 m/s² manoeuvre at 0.2 Hz): its error ends about 80 times $\\sqrt{P_{DL}(k/k)}$, far outside "
         "the covariance of Eq. (14). No printed number uses Eq. (13) (Figs. 1-2 follow Eq. (14)).",
         discussed_in=DOCS["IV"],
@@ -1510,7 +1516,8 @@ CLAIMS = [
         expected_status="consistent",
         note="1575.42 MHz (154 x 10.23 MHz) over c. With the defined c (299 792 458 m/s) the ratio is "
         "5.2550, which rounds to 5.26, 0.00004 beyond half a unit in the last printed digit; with the "
-        "engineering c of 3 x 10^8 m/s (5.2514) or 2.998 x 10^8 m/s (5.2549) it rounds to the printed 5.25. "
+        "engineering c of $3 \\times 10^{8}$ m/s (5.2514) or $2.998 \\times 10^{8}$ m/s (5.2549) it rounds "
+        "to the printed 5.25. "
         "The figures use the printed 5.25.",
         discussed_in=DOCS["IVD"],
     ),
@@ -1607,7 +1614,8 @@ CLAIMS = [
         relation=">=",
         note="'At least a 60dB reduction', which the paper reads off Fig. 1. Per-axis $\\sigma_D "
         "= \\sqrt{\\text{Eq. (23) middle term} / 3}$; "
-        "1 µg = 9.80665e-6 m/s²; steady state; $P_{DL}(k/k)$. Under the full-trace reading it is 55.4 dB.",
+        "1 µg = $9.80665 \\times 10^{-6}$ m/s²; steady state; $P_{DL}(k/k)$. Under the full-trace reading "
+        "it is 55.4 dB.",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
@@ -1639,7 +1647,7 @@ CLAIMS = [
         tolerance=_c15_tol,
         expected_status="reproduced",
         relation="<=",
-        note="'At least 2e-3 = 0.002 m/s': the per-axis bound is 1.963e-3 m/s.",
+        note="'At least $2 \\times 10^{-3} = 0.002$ m/s': the per-axis bound is $1.963 \\times 10^{-3}$ m/s.",
         discussed_in=DOCS["IVD"],
     ),
     Claim(

@@ -156,7 +156,7 @@ def _negligible() -> bool:
     return m["sigma_D"] < IN.negligible_fraction * m["sigma_N"]
 
 
-_rate, _rate_tol = printed("50", why="'a 50 Hz measurement update rate' (axis label) against T_s = 0.02 s")
+_rate, _rate_tol = printed("50", why="'a 50 Hz measurement update rate' (axis label) against $T_s = 0.02$ s")
 
 CLAIMS = [
     Claim(
@@ -221,7 +221,7 @@ CLAIMS = [
         tolerance=EXACT,
         expected_status="reproduced",
         note="Three isotropic local errors with the Sec. IV.D-like sigmas (0.02, 0.002, 0.0019 m/s), "
-        "pairwise correlation rho = 1, 0.9, 0.7, 0.5, 0.3, 0; exact covariance of the fused error "
+        "pairwise correlation $\\rho = 1$, 0.9, 0.7, 0.5, 0.3, 0; exact covariance of the fused error "
         "(Eq. (20)) against the middle term of Eq. (23).",
         discussed_in=PAGE_IV,
     ),
@@ -239,7 +239,8 @@ CLAIMS = [
         expected_status="reproduced",
         note="$H_G$ of Eq. (25) (three and one satellite) with the printed "
         "$f_{L1}/c$, $R_G = \\sigma_G^2 I$, "
-        "20 seeded priors each (the matrix inversion lemma); agreement to 1e-9 relative, floating point.",
+        "20 seeded priors each (the matrix inversion lemma); agreement to $10^{-9}$ relative, floating "
+        "point.",
         discussed_in=PAGE_IV,
     ),
     Claim(

@@ -1,0 +1,109 @@
+"""No formula left as plain text in what a reader sees of the registry (issue 32, item 7).
+
+Claim quantities, notes and tolerance reasons, errata findings and evidence, and input
+quantities and reasons render in the claim rows, the ledger, the errata page and the
+Assumptions page, where ``$...$`` is set as math (:func:`navcore.ledger.render.html_text`,
+:func:`~navcore.ledger.render.tex_text`). Outside those spans, e-notation (``1e-6``), flat
+subscripts (``P_DL``, ``sigma0``), spelled-out Greek letters (``rho =``), powers (``^2``),
+``sqrt(`` and ASCII operator notation (``[a x]``, ``(x)``) read as program text: they belong
+inside ``$...$`` (``$10^{-6}$``, ``$P_{DL}$``, ``$\\sigma_0$``). Quotes of the paper
+(``printed``) are the paper's words and are not scanned.
+
+Oracle: the detector is checked on hand-written strings with and without plain math; the
+registry's texts are then scanned with it.
+"""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from navcore.ledger.render import math_spans
+
+_GREEK = (
+    "alpha|beta|gamma|delta|epsilon|zeta|eta|theta|kappa|lambda|mu|nu|xi|pi|rho|sigma|tau|phi|chi|"
+    "psi|omega|Gamma|Delta|Theta|Lambda|Sigma|Phi|Psi|Omega|dtheta|dphi"
+)
+
+#: Plain-text math, by kind: what each pattern finds outside ``$...$``.
+PATTERNS = {
+    "e-notation": re.compile(r"(?<![\w.])\d+(?:\.\d+)?[eE][+-]?\d+\b"),
+    "flat subscript": re.compile(r"\b[A-Za-z]+_[A-Za-z0-9]+\b"),
+    "Greek name": re.compile(rf"\b(?:{_GREEK})(?:\d+|_\w+)?\b"),
+    "power": re.compile(r"\w\)?\^[-+(\w]|\*\*"),
+    "sqrt(": re.compile(r"\bsqrt\("),
+    "cross-product bracket": re.compile(r"\[\s*\w+\s+x\s*\]"),
+    "(x) product": re.compile(r"\(x\)"),
+    "symbol with a flat 0": re.compile(r"\b[A-Za-z]0\b"),
+}
+
+#: (who, text found) pairs that are legitimately plain, each with its reason. Keep it short.
+ALLOWED: dict[tuple[str, str], str] = {}
+
+
+def plain_math(text: str) -> list[tuple[str, str]]:
+    """The (kind, text) of each plain-text math pattern outside the ``$...$`` spans of ``text``."""
+    found = []
+    for is_math, piece in math_spans(text):
+        if not is_math:
+            found += [(kind, m.group(0)) for kind, pat in PATTERNS.items() for m in pat.finditer(piece)]
+    return found
+
+
+@pytest.mark.parametrize(
+    ("text", "kinds"),
+    [
+        ("agrees to 1e-6 relative", ["e-notation"]),
+        ("agrees to $10^{-6}$ relative", []),
+        ("the design P_DL of Table 2.1", ["flat subscript"]),
+        ("the design $P_{DL}$ of Table 2.1", []),
+        ("clock parameter sigma0 = 50 ns", ["Greek name"]),
+        ("at rho = 0.25", ["Greek name"]),
+        ("at $\\rho = 0.25$, with a price of 50 $ more", []),
+        ("beyond 10 mm/s^2", ["power"]),
+        ("a label 1/sqrt(3b)", ["sqrt("]),
+        ("diag(sf) a + [dtheta x] a", ["Greek name", "cross-product bracket"]),
+        ("q' = q (x) [0, w]/2", ["(x) product"]),
+        ("the zenith C/N0", ["symbol with a flat 0"]),
+        ("the 1-$\\sigma$ noise, 3 dB, 0.5 s, Eq. (3.8.16), 1,2,3 satellites", []),
+    ],
+)
+def test_detector_finds_plain_math_and_passes_set_math(text, kinds):
+    assert sorted({k for k, _ in plain_math(text)}) == sorted(kinds)
+
+
+def _registry_texts() -> list[tuple[str, str, str]]:
+    from navcore import ledger
+    from navcore.ledger.inputs import all_inputs
+
+    texts = []
+    for c in ledger.claims():
+        texts += [(c.id, "quantity", c.quantity), (c.id, "note", c.note)]
+        for name, tol in (("tolerance", c.tolerance), ("oracle tolerance", c.oracle_tolerance)):
+            if tol is not None and not callable(tol):  # a callable tolerance is made at evaluation
+                texts.append((c.id, name, tol.reason))
+    for e in ledger.errata():
+        texts += [(e.id, f, getattr(e, f)) for f in ("finding", "evidence", "no_claim_reason")]
+    inputs = all_inputs()
+    assert len(inputs) > 100  # every paper module's declarations, loaded by ledger.claims()
+    texts += [(i.name, f, getattr(i, f) or "") for i in inputs for f in ("quantity", "reason")]
+    return texts
+
+
+def test_registry_texts_set_every_formula_as_math():
+    texts = _registry_texts()
+    assert len(texts) > 2000
+    found = [
+        f"{who} ({field}): {kind} {hit!r}"
+        for who, field, text in texts
+        for kind, hit in plain_math(text)
+        if (who, hit) not in ALLOWED
+    ]
+    assert not found, "\n".join(found)
+
+
+def test_allowlist_entries_still_occur():
+    """An allowlist entry whose text is gone is removed, so the list stays short and true."""
+    present = {(who, hit) for who, _, text in _registry_texts() for _, hit in plain_math(text)}
+    assert set(ALLOWED) <= present
