@@ -302,7 +302,8 @@ def ledger(session: nox.Session) -> None:
     session are an honest determinism check. ``nox -s ledger -- --twice`` is that check in
     one session (CI's gate): two fresh processes evaluate the ledger side by side, one in
     itself and one on two workers, and their JSON exports must be byte-identical
-    (tools/ledger_twice.py).
+    (tools/ledger_twice.py); the first stores its evaluations in the cache (without reading
+    it), so that the book built next does not evaluate the ledger again.
     """
     _install(session)
     env = {"NAVCORE_CACHE": "off", "NAVCORE_NO_DISK_CACHE": "1"}
@@ -310,7 +311,8 @@ def ledger(session: nox.Session) -> None:
     args = list(session.posargs)
     if "--twice" in args:
         args.remove("--twice")
-        session.run("python", "tools/ledger_twice.py", str(out), *args, env=env)
+        # both runs evaluate afresh; the first also stores its evaluations for the book
+        session.run("python", "tools/ledger_twice.py", str(out), *args, env={"NAVCORE_NO_DISK_CACHE": "1"})
     else:
         session.run("python", "-m", "navcore", "ledger", "--json-out", str(out), *args, env=env)
     session.log(f"ledger JSON: {out}")

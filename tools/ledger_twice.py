@@ -1,9 +1,11 @@
 """Evaluate the ledger in two fresh processes at once and compare their JSON exports byte for byte.
 
-Usage: ``python tools/ledger_twice.py OUT.json [LEDGER ARGS ...]`` (``nox -s ledger -- --twice``
-runs it with the evaluation caches off). The first process evaluates every claim itself
-(``--jobs 1``), prints the ledger and writes ``OUT.json``; the second evaluates them in worker
-processes (``--jobs 2``, one task per paper module) and writes ``OUT.second.json``. The two run
+Usage: ``python tools/ledger_twice.py OUT.json [LEDGER ARGS ...]`` (``nox -s ledger -- --twice``).
+Both processes evaluate every claim afresh. The first evaluates them itself (``--jobs 1``),
+prints the ledger and writes ``OUT.json``, and stores each evaluation in the on-disk cache
+without reading it (``NAVCORE_CACHE_REFRESH=1``), so that a book built next reuses them; the
+second evaluates them in worker processes (``--jobs 2``, one task per paper module) with the
+cache off and writes ``OUT.second.json``. The two run
 side by side, so the determinism gate of ``.ci/run`` costs about one evaluation's CPU time on
 two cores, and it also shows that the parallel ledger is the serial one, byte for byte.
 Exit status: a process's own (1 if a claim fails its check), else 1 if the exports differ.
@@ -11,6 +13,7 @@ Exit status: a process's own (1 if a claim fails its check), else 1 if the expor
 
 from __future__ import annotations
 
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -27,9 +30,12 @@ def main(argv: list[str]) -> int:
     def command(out: Path, jobs: str) -> list[str]:
         return [sys.executable, "-m", "navcore", "ledger", "--jobs", jobs, "--json-out", str(out), *extra]
 
+    base = {k: v for k, v in os.environ.items() if k not in ("NAVCORE_CACHE", "NAVCORE_CACHE_REFRESH")}
     runs = [
-        subprocess.Popen(command(first, "1")),
-        subprocess.Popen(command(second, "2"), stdout=subprocess.DEVNULL),
+        subprocess.Popen(command(first, "1"), env={**base, "NAVCORE_CACHE_REFRESH": "1"}),
+        subprocess.Popen(
+            command(second, "2"), env={**base, "NAVCORE_CACHE": "off"}, stdout=subprocess.DEVNULL
+        ),
     ]
     codes = [run.wait() for run in runs]
     if any(codes):

@@ -447,6 +447,8 @@ def cache_dir() -> Path | None:
     """Folder of the on-disk evaluation cache, or ``None`` when caching is off.
 
     ``NAVCORE_CACHE=off`` disables it (the test suite and the determinism check do);
+    ``NAVCORE_CACHE_REFRESH=1`` evaluates every claim afresh and stores it, never reading a
+    stored evaluation (the determinism check's first run does, so that the book reuses it);
     ``NAVCORE_CACHE=<folder>`` chooses its parent folder. By default it lives in
     ``_build/navcore-cache`` of a source checkout, else in ``~/.cache/navcore``. Each claim's
     stored evaluation is keyed by the contents of the files it depends on
@@ -525,7 +527,7 @@ _RECORD_FIELDS = (
 
 def _cached(claim_id: str) -> Evaluation | None:
     folder = cache_dir()
-    if folder is None:
+    if folder is None or os.environ.get("NAVCORE_CACHE_REFRESH", "").lower() in ("1", "yes", "true"):
         return None
     try:
         data = json.loads((folder / f"{claim_id}.json").read_text())
