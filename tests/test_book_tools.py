@@ -491,3 +491,19 @@ def test_registry_texts_carry_no_developer_wording():
     texts += [(i.name, t) for i in inputs for t in (i.reason or "", i.quantity or "")]
     found = [f"{who}: {m.group(0)!r}" for who, t in texts if (m := check_book.DEVELOPER_WORDING.search(t))]
     assert not found, found
+
+
+def test_no_control_characters_in_sources():
+    """A control character in a docstring or page (a ``\\b`` of ``\\big`` read by Python as a
+    backspace in a non-raw string) passes the HTML build and stops the PDF's LaTeX run."""
+    import re
+
+    bad = re.compile(r"[\x00-\x08\x0b\x0c\x0e-\x1f\x7f]")
+    found = []
+    for folder, pattern in (("navcore", "*.py"), ("book", "*.md"), ("book", "*.rst"), ("tools", "*.py")):
+        for path in sorted((ROOT / folder).rglob(pattern)):
+            text = path.read_text(encoding="utf-8", errors="replace")
+            for m in bad.finditer(text):
+                line = text.count("\n", 0, m.start()) + 1
+                found.append(f"{path.relative_to(ROOT)}:{line}: {m.group(0)!r}")
+    assert not found, found

@@ -460,7 +460,7 @@ def elevation_gain_dbi(
 ) -> Array | float:
     r"""Antenna gain of a fixed upward-looking antenna against elevation.
 
-    :math:`G(e) = G_z - (G_z - G_h)\,ig((90^\circ - e)/90^\circig)^p`: the zenith gain
+    :math:`G(e) = G_z - (G_z - G_h)\,\big((90^\circ - e)/90^\circ\big)^p`: the zenith gain
     ``zenith_dbi`` at 90 deg, the horizon gain ``horizon_dbi`` at 0 deg, and a roll-off whose
     shape is set by ``exponent`` ``p`` (``p = 1``: linear in elevation; ``p > 1``: the gain
     holds up at mid elevations and falls near the horizon, as a patch's does). Elevations
