@@ -684,6 +684,38 @@ def _printed_text(e: Evaluation) -> str:
     return _plain_with_unit(rel + format_value(c.published), c.unit)
 
 
+_DISPLAY = re.compile(r"\$\$(.*?)\$\$", re.S)
+_EQ_NUMBER = re.compile(r"\\(?:quad|qquad)\s*\(?[\w.]+\)?\s*$|\\tag\{[^}]*\}")
+
+
+def _printed_tex(text: str) -> str:
+    r"""The Printed cell of a PDF claim table: the paper's words as text, short formulas as
+    math, and a long formula (or LaTeX transcribed without math delimiters) as small source
+    text that may break anywhere, so that a narrow column never runs over.
+
+    Examples
+    --------
+    >>> print(_printed_tex("about $10^{-6}$ of it"))
+    about $10^{-6}$ of it
+    >>> long = "$$\\frac{2\\pi}{\\lambda}\\left(l_{t}^{(m),n} - l_{t}^{(n),n}\\right)^T x \\quad (17)$$"
+    >>> "\\ttfamily" in _printed_tex(long)
+    True
+    """
+    text = _DISPLAY.sub(lambda m: "$" + _EQ_NUMBER.sub("", m.group(1)).strip() + "$", text)
+    pieces = math_spans(text)
+    if any("\\" in piece for is_math, piece in pieces if not is_math):  # LaTeX without delimiters
+        return r"{\scriptsize\ttfamily " + _tex_breakable(text) + "}"
+    out = []
+    for is_math, piece in pieces:
+        if not is_math:
+            out.append(_tex_breakable(piece))
+        elif len(piece) <= 24:
+            out.append(f"${piece}$")
+        else:
+            out.append(r"{\scriptsize\ttfamily " + _tex_breakable(piece) + "}")
+    return "".join(out)
+
+
 def _reproduced_text(e: Evaluation) -> str:
     if _is_truth(e.reproduced):
         return _statement_word(bool(e.reproduced), printed=False)
@@ -1132,7 +1164,7 @@ class LedgerTable:
                 verdict += r"\newline{}{\scriptsize\itshape " + _tex_escape(str(c.kind)) + "}"
                 cells = [
                     what,
-                    _tex_escape(_printed_text(e)),
+                    _printed_tex(_printed_text(e)),
                     _tex_escape(_reproduced_text(e)),
                     verdict,
                 ]
