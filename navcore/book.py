@@ -433,15 +433,23 @@ def _tidy_html(table_html: str) -> str:
     --------
     >>> _tidy_html("<td>at $N_T$, 9.40e-02</td>")
     '<td>at <span class="math notranslate nohighlight">\\(N_T\\)</span>, 9.40×10⁻²</td>'
+    >>> _tidy_html("<td>1/2 < $\\rho < 1$</td>")
+    '<td>1/2 &lt; <span class="math notranslate nohighlight">\\(\\rho &lt; 1\\)</span></td>'
     """
     head, sep, body = table_html.rpartition("</style>")
 
     def cell(text: str) -> str:
         math = '<span class="math notranslate nohighlight">\\({}\\)</span>'
-        pieces = math_spans(text)
-        return "".join(math.format(piece) if is_math else tidy_numbers(piece) for is_math, piece in pieces)
 
-    body = re.sub(r">([^<>]+)<", lambda m: ">" + cell(m.group(1)) + "<", body)
+        def bare(piece: str) -> str:  # a "<" or ">" of the text itself, not markup
+            return piece.replace("<", "&lt;").replace(">", "&gt;")
+
+        pieces = math_spans(text)
+        return "".join(math.format(bare(p)) if is_math else bare(tidy_numbers(p)) for is_math, p in pieces)
+
+    # text is whatever is not a tag: a "<" in a cell's text ("$\\rho < 1$") is text, not a tag
+    parts = re.split(r"(<[A-Za-z/!][^<>]*>)", body)
+    body = "".join(part if i % 2 else cell(part) for i, part in enumerate(parts))
     return head + sep + body
 
 
