@@ -1123,7 +1123,7 @@ class LedgerTable:
         its claims; a claim's own note follows its quantity in small type.
         """
         widths = (0.49, 0.16, 0.16, 0.19)
-        align = (r"\raggedright", r"\raggedleft", r"\raggedleft", r"\raggedright")
+        align = (r"\raggedright", r"\raggedright", r"\raggedleft", r"\raggedright")
         cols = "".join(
             rf">{{{a}\arraybackslash}}p{{\dimexpr {w}\linewidth-2\tabcolsep\relax}}"
             for a, w in zip(align, widths, strict=True)
