@@ -57,7 +57,8 @@ def ledger_html(*, with_band: bool = False) -> str:
 
 def test_column_shares_add_up_to_at_most_the_text_column():
     shares = column_shares(CSS.read_text(encoding="utf-8"))
-    assert sum(shares.values()) <= 100.0 + 1e-9, f"the ledger's columns take {sum(shares.values())} %: {shares}"
+    total = sum(shares.values())
+    assert total <= 100.0 + 1e-9, f"the ledger's columns take {total} % of the text column: {shares}"
 
 
 def test_every_column_has_a_share():

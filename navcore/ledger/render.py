@@ -1679,7 +1679,9 @@ _LEDGER_JS = r"""
           sortBy(key, sortKey === key ? -sortDir : 1);
         });
       });
-      if (sortSelect) sortSelect.addEventListener("change", function () { sortBy(sortSelect.value || null, 1); });
+      if (sortSelect) {
+        sortSelect.addEventListener("change", function () { sortBy(sortSelect.value || null, 1); });
+      }
       if (sortButton) sortButton.addEventListener("click", function () { sortBy(sortKey, -sortDir); });
       search.addEventListener("input", update);
       selects.forEach(function (s) { s.addEventListener("change", update); });
