@@ -130,5 +130,7 @@ def _inventory_texts() -> list[tuple[str, str, str]]:
 def test_coverage_inventory_sets_every_formula_as_math():
     texts = _inventory_texts()
     assert len(texts) > 3000  # four fields of every printed item of the four papers
-    found = [f"{who} ({field}): {kind} {hit!r}" for who, field, text in texts for kind, hit in plain_math(text)]
+    found = [
+        f"{who} ({field}): {kind} {hit!r}" for who, field, text in texts for kind, hit in plain_math(text)
+    ]
     assert not found, "\n".join(found)
