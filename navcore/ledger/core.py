@@ -1390,10 +1390,22 @@ class Evaluation:
 
 
 def _plain(value: Any) -> str:
+    r"""A value in a note's text: six significant digits, a very large or small number as
+    inline math (never a program's ``1.023e+06`` or a string of zeros such as ``0.00094007``).
+
+    Examples
+    --------
+    >>> _plain(1023000.0), _plain(0.00094007), _plain(0.0226556), _plain(2.5), _plain(True)
+    ('$1.023 \\times 10^{6}$', '$9.4007 \\times 10^{-4}$', '0.0226556', '2.5', 'true')
+    """
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, float):
-        return f"{value:.6g}"
+        text = f"{value:.6g}"
+        if value != 0 and abs(value) < 1e-3 and "e" not in text:
+            mantissa, exponent = f"{value:.5e}".split("e")
+            text = mantissa.rstrip("0").rstrip(".") + "e" + exponent
+        return _number_math(text)
     return str(value)
 
 

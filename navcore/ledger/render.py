@@ -18,6 +18,7 @@ import re
 from collections.abc import Iterable, Sequence
 from typing import Any
 
+from navcore.formatting import format_number
 from navcore.ledger.core import ERRATUM_BASES, STATUSES, TEXT_ONLY_CAVEAT, Erratum, Evaluation, claim_quote
 from navcore.ledger.inputs import _label_and_unit
 from navcore.ledger.registry import counts, errata, evaluations
@@ -80,12 +81,16 @@ def format_value(value: Any, digits: int = 5) -> str:
     str
         ``"—"`` for ``None``; ``"true"``/``"false"`` for a truth value; ``"∞"``/``"−∞"``;
         an integral value below a million without decimals; otherwise ``digits``
-        significant digits.
+        significant digits (trailing zeros dropped), fixed between 0.001 and a million and
+        otherwise in the book's one number format (:func:`navcore.formatting.format_number`:
+        ``9.4007×10⁻⁴``, never ``9.4007e-04`` or ``0.00094007``).
 
     Examples
     --------
     >>> format_value(17.6712345), format_value(3.0), format_value(True), format_value(None)
     ('17.671', '3', 'true', '—')
+    >>> format_value(0.00094007), format_value(3.98601e14), format_value(123456.7), format_value(-1e-9)
+    ('9.4007×10⁻⁴', '3.986×10¹⁴', '123457', '-1×10⁻⁹')
     """
     if value is None:
         return "—"
@@ -96,7 +101,13 @@ def format_value(value: Any, digits: int = 5) -> str:
         return "∞" if v > 0 else "−∞"
     if v == int(v) and abs(v) < 1e6:
         return str(int(v))
-    return f"{v:.{digits}g}"
+    if 1e-3 <= abs(v) < 1e6:
+        text = f"{v:.{digits}g}"
+        return text if "e" not in text else format_number(v, digits=digits)
+    mantissa, _, exponent = format_number(v, digits=digits).partition("×")
+    if "." in mantissa:  # as the fixed form: significant digits without trailing zeros
+        mantissa = mantissa.rstrip("0").rstrip(".")
+    return mantissa + ("×" + exponent if exponent else "")
 
 
 def _published(e: Evaluation) -> str:
