@@ -17,7 +17,9 @@ claim tables, on every page but the API reference and the generated ones.
 It also finds developer wording in anything a reader sees or downloads (see
 ``DEVELOPER_WORDING``): a claim's change history ("Verdict changed from ..."), the regression pin
 ``expected_status``, or test and oracle bookkeeping, in the text and the embedded data of
-every page but the API reference and in the downloadable notebooks' outputs.
+every page but the API reference and in the downloadable notebooks' outputs. And it finds
+numbers as a program prints them (``1.00e-04``, ``1.6344416666666666``, ``-0.000``,
+``60.000000``, a printed dictionary; see ``tools/check_numbers.py``) in the text a reader sees.
 ``latex``: the LaTeX log reports no overfull box wider than ``--max-overfull`` points, and
 no code listing shows a build helper.
 ``same``: every file of the two trees is byte-identical, except that PDFs are compared
@@ -208,7 +210,23 @@ def check_html(root: Path) -> list[str]:
                 f"({unrun} of {len(code)} code cells without execution count, "
                 f"{sum(bool(c.get('outputs')) for c in code)} with outputs)"
             )
-    return problems + check_prose(root) + check_wording(root)
+    return problems + check_prose(root) + check_wording(root) + check_number_format(root)
+
+
+def check_number_format(root: Path) -> list[str]:
+    """Numbers as a program prints them in what a reader sees (``tools/check_numbers.py``):
+    ``1.00e-04``, ``1.6344416666666666``, ``-0.000``, ``60.000000``, ``{180.0: 18.0}``."""
+    import importlib.util
+
+    path = Path(__file__).with_name("check_numbers.py")
+    spec = importlib.util.spec_from_file_location("check_numbers", path)
+    assert spec is not None and spec.loader is not None
+    numbers = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(numbers)
+    return [
+        f"{page}: number printed as a program prints it ({name}) {match!r}: ...{context}..."
+        for page, name, match, context in numbers.check(root)
+    ]
 
 
 def check_latex(root: Path, max_overfull: float = 3.0) -> list[str]:
