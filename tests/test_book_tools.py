@@ -197,7 +197,7 @@ def test_html_gate_finds_numbers_as_a_program_prints_them(tmp_path):
     problems = check_book.check_number_format(tmp_path)
     assert [p.split(":")[0] for p in problems] == ["wf/exp.html", "wf/long.html", "wf/zero.html"]
     assert "'1.00e-04'" in problems[0] and "(exponent)" in problems[0]
-    assert any("number printed as a program prints it" in p for p in check_book.check_html(tmp_path))
+    assert check_book.main(["numbers", str(tmp_path)]) == 1
 
 
 PROSE_PAGE = """
