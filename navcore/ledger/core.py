@@ -324,12 +324,12 @@ class Tolerance:
         not significant)"``)."""
         parts = []
         if self.abs is not None and (self.abs or self.rel is None):
-            parts.append(f"±{self.abs:.4g}")
+            parts.append("±" + _number_math(f"{self.abs:.4g}"))
         if self.rel is not None:
             parts.append(f"±{100 * self.rel:.3g} %")
         text = " or ".join(parts) if parts and parts != ["±0"] else "exact"
         if self.loose_abs is not None:
-            text += f" (±{self.loose_abs:.4g} if trailing zeros are not significant)"
+            text += f" (±{_number_math(f'{self.loose_abs:.4g}')} if trailing zeros are not significant)"
         return text
 
 
