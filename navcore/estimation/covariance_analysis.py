@@ -359,7 +359,7 @@ def run_covariance_analysis(
             vertical_channel=vertical_channel,
         )
         q = np.stack([_process_noise_diag_stack(truth_layout, s_, speed[js]) for s_ in src_list], axis=1)
-        Phi = _taylor(F, dt)
+        Phi = _taylor_stack(F, dt)
         Q = _discrete_noise_diag(F, q, dt)  # (M, B, n_t, n_t)
         Qf = Q[:, :, idx][:, :, :, idx]
         if added is not None:
@@ -636,10 +636,36 @@ def _discrete_noise_diag(F: Array, q: Array, dt: float) -> Array:
     """
     x, w = _GAUSS3
     Q = np.zeros((*q.shape, q.shape[-1]))
+    driven = np.flatnonzero(np.any(q != 0.0, axis=(0, 1)))  # only these columns of S are not 0
+    qd = q[:, :, None, driven]
     for xi, wi in zip(x, w, strict=True):
-        P = _taylor(F, 0.5 * dt * (xi + 1.0))[:, None]  # (M, 1, n, n)
-        Q = Q + (0.5 * dt * wi) * ((P * q[:, :, None, :]) @ np.swapaxes(P, -1, -2))
+        P = _taylor_stack(F, 0.5 * dt * (xi + 1.0))[:, None, :, driven]  # (M, 1, n, d)
+        Q = Q + (0.5 * dt * wi) * ((P * qd) @ np.swapaxes(P, -1, -2))
     return 0.5 * (Q + np.swapaxes(Q, -1, -2))
+
+
+def _taylor_stack(F: Array, dt: float, order: int = 4) -> Array:
+    """:func:`_taylor` of a stack ``(M, n, n)``, transforming only the rows of ``F`` that are
+    not zero in any member (a zero row of ``F``, a random constant's, is a unit row of ``Phi``).
+
+    With ``F = [[a, b], [0, 0]]`` (dynamic rows first) the Horner step
+    ``Phi <- I + F dt Phi / j`` keeps ``Phi = [[x, y], [0, I]]`` and updates
+    ``[x, y] <- [I, 0] + (a dt [x, y] + [0, b dt]) / j``.
+    """
+    n = F.shape[-1]
+    dyn = np.flatnonzero(np.any(F != 0.0, axis=(0, 2)))
+    eye = np.eye(n)
+    A = F[:, dyn, :] * dt  # (M, d, n)
+    A_dd = A[:, :, dyn]
+    A_ds = A.copy()
+    A_ds[:, :, dyn] = 0.0  # the columns of the static states
+    rows = eye[dyn]
+    X = rows
+    for j in range(order, 0, -1):
+        X = rows + (A_dd @ X + A_ds) / j
+    Phi = np.broadcast_to(eye, F.shape).copy()
+    Phi[:, dyn, :] = X
+    return Phi
 
 
 def taylor_transition(F: ArrayLike, dt: float, order: int = 4) -> Array:

@@ -673,9 +673,8 @@ def _error_dynamics_stack(
     if "clock bias" in names and "clock drift" in names:
         F[:, sl("clock bias"), sl("clock drift")] = 1.0
     if "clock bias" in names and "clock g-sensitivity" in names:
-        F[:, sl("clock bias"), sl("clock g-sensitivity")] = (
-            np.sqrt(np.einsum("mi,mi->m", f, f)) / G0
-        )[:, None, None]
+        f_abs = np.sqrt(np.einsum("mi,mi->m", f, f))
+        F[:, sl("clock bias"), sl("clock g-sensitivity")] = (f_abs / G0)[:, None, None]
     if not vertical_channel:
         for i in (p.start + 2, vv.start + 2):
             F[:, i, :] = 0.0
