@@ -993,30 +993,40 @@ def tightly_coupled_schedule(
     use_code = code & (geometry.elevation >= mask_rad)
     use_carr = carrier & (geometry.elevation >= mask_rad)
     ch = np.arange(n_ch)
+    # the rows that do not depend on the geometry, and R, per pattern of tracked channels
+    patterns: dict[bytes, tuple[Array, Array, NDArray[np.intp], NDArray[np.intp]]] = {}
+
+    def pattern(k: int) -> tuple[Array, Array, NDArray[np.intp], NDArray[np.intp]]:
+        key = use_code[k].tobytes() + use_carr[k].tobytes()
+        if key not in patterns:
+            cc, cr = ch[use_code[k]], ch[use_carr[k]]
+            H0 = np.zeros((cc.size + cr.size, n))
+            rows = np.arange(cc.size)
+            if i_b is not None:
+                H0[rows, i_b] = 1.0
+            if i_pb is not None:
+                H0[rows, i_pb + cc] = 1.0
+            rows = cc.size + np.arange(cr.size)
+            if i_d is not None:
+                H0[rows, i_d] = 1.0
+            if i_rb is not None:
+                H0[rows, i_rb + cr] = 1.0
+            R = np.diag(np.r_[np.full(cc.size, pseudorange_noise**2), np.full(cr.size, range_rate_noise**2)])
+            patterns[key] = (H0, R, cc, cr)
+        return patterns[key]
 
     def sched(k: int) -> list[Measurement]:
         if k % every:
             return []
-        cc, cr = ch[use_code[k]], ch[use_carr[k]]
+        H0, R, cc, cr = pattern(k)
         if cc.size + cr.size == 0:
             return []
-        H = np.zeros((cc.size + cr.size, n))
+        H = H0.copy()
         u = geometry.u_ned[k]
-        rows = np.arange(cc.size)
-        H[rows, p0 : p0 + 3] = -u[cc]
-        if i_b is not None:
-            H[rows, i_b] = 1.0
-        if i_pb is not None:
-            H[rows, i_pb + cc] = 1.0
-        rows = cc.size + np.arange(cr.size)
-        H[rows, v0 : v0 + 3] = -u[cr]
-        if i_d is not None:
-            H[rows, i_d] = 1.0
-        if i_rb is not None:
-            H[rows, i_rb + cr] = 1.0
+        H[: cc.size, p0 : p0 + 3] = -u[cc]
+        H[cc.size :, v0 : v0 + 3] = -u[cr]
         if i_g is not None:
-            H[rows, i_g] = g_load[k]  # type: ignore[index]  # i_g is None when g_load is
-        R = np.diag(np.r_[np.full(cc.size, pseudorange_noise**2), np.full(cr.size, range_rate_noise**2)])
+            H[cc.size :, i_g] = g_load[k]  # type: ignore[index]  # i_g is None when g_load is
         return [Measurement._unchecked(H, R)]
 
     return sched
