@@ -37,6 +37,7 @@ Examples
 
 from __future__ import annotations
 
+import os
 import re
 import shutil
 import subprocess
@@ -59,6 +60,7 @@ from navcore.ledger.core import (
 from navcore.provenance import BuildProvenance, build_provenance, project_root
 
 __all__ = [
+    "FiguresTable",
     "FindingsBlock",
     "Report",
     "Section",
@@ -70,6 +72,7 @@ __all__ = [
     "coverage_frame",
     "figure_claims",
     "figures_frame",
+    "figures_table",
     "findings_phrase",
     "fitted_frame",
     "overview_text",
@@ -477,7 +480,7 @@ def figures_frame(paper: str, evals: Sequence[Evaluation], book_dir: Path | None
                 "Figure": s.id,
                 "Redraws": "— (the book's own)" if s.reproduces == "new" else s.reproduces,
                 "Claims that check it": ", ".join(f"{e.claim.id} ({e.status})" for e in checks)
-                or "none (it shows a model; no printed value is read from it)",
+                or "no claim names it",
                 "Shown in": titles.get(page, ""),
                 "page": page,
                 "anchor": anchor,
@@ -485,6 +488,71 @@ def figures_frame(paper: str, evals: Sequence[Evaluation], book_dir: Path | None
         )
     columns = ["Figure", "Redraws", "Claims that check it", "Shown in", "page", "anchor"]
     return pd.DataFrame(rows, columns=columns)
+
+
+class FiguresTable:
+    """The figures table for the book: each figure's page linked in HTML, named in print.
+
+    Parameters
+    ----------
+    frame : pandas.DataFrame
+        :func:`figures_frame`'s rows (with its ``page`` and ``anchor`` columns).
+    root : str
+        Link prefix from the showing page to the book's root.
+    """
+
+    def __init__(self, frame: Any, root: str) -> None:
+        import html
+
+        self.plain = frame.drop(columns=["page", "anchor"])
+        linked = self.plain.copy()
+        shown = []
+        for page, anchor, title in zip(frame["page"], frame["anchor"], frame["Shown in"], strict=True):
+            if not page:
+                shown.append(html.escape(title))
+                continue
+            href = f"{root}{page}.html" + (f"#{anchor}" if anchor else "")
+            shown.append(f'<a href="{html.escape(href)}">{html.escape(title)}</a>')
+        linked["Shown in"] = shown
+        self.linked = linked
+
+    def _repr_html_(self) -> str:
+        from navcore.book import text_table
+
+        return text_table(self.linked)._repr_html_()
+
+    def _repr_markdown_(self) -> str:
+        from navcore.book import text_table
+
+        return text_table(self.plain)._repr_markdown_()
+
+    def __repr__(self) -> str:
+        return self.plain.to_string(index=False)
+
+
+def figures_table(paper: str, evals: Sequence[Evaluation], root: str | None = None) -> FiguresTable:
+    """:func:`figures_frame` for a book page: each figure linked to where its page shows it.
+
+    Parameters
+    ----------
+    paper : str
+        Paper key.
+    evals : sequence of Evaluation
+        The paper's evaluations.
+    root : str, optional
+        Link prefix to the book's root (default: found from the working directory,
+        :func:`navcore.book.book_root_prefix`).
+
+    Returns
+    -------
+    FiguresTable
+        HTML with links, and the printed table for the PDF.
+    """
+    from navcore.book import book_root_prefix
+
+    root = book_root_prefix() if root is None else root
+    here = Path.cwd() / root
+    return FiguresTable(figures_frame(paper, evals, here if (here / "_toc.yml").exists() else None), root)
 
 
 def _fig_key(reproduces: str) -> tuple[int, ...]:
@@ -846,7 +914,7 @@ def write_pdf(report: Report, out: Path | str, *, max_overfull: float = 3.0) -> 
     with tempfile.TemporaryDirectory(prefix="navcore-report-") as tmp:
         tex = Path(tmp) / "report.tex"
         tex.write_text(to_latex(report), encoding="utf-8")
-        for _ in range(2):  # longtable settles its column widths on the second run
+        for _ in range(3):  # a longtable may settle its column widths on a later run
             proc = subprocess.run(
                 [xelatex, "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape", tex.name],
                 cwd=tmp, capture_output=True, text=True, check=False, timeout=300,
@@ -854,6 +922,8 @@ def write_pdf(report: Report, out: Path | str, *, max_overfull: float = 3.0) -> 
             log = (Path(tmp) / "report.log").read_text(encoding="utf-8", errors="replace")
             if proc.returncode != 0:
                 raise RuntimeError(f"xelatex failed on the {report.paper} report:\n{log[-3000:]}")
+            if "Rerun LaTeX" not in log and "Label(s) may have changed" not in log:
+                break
         wide = [(float(w), where) for w, where in _OVERFULL.findall(log) if float(w) > max_overfull]
         if wide:
             listed = "; ".join(f"{w} pt{where}" for w, where in wide)
@@ -881,15 +951,18 @@ def write_reports(
     list of pathlib.Path
         The files written.
     """
+    from concurrent.futures import ThreadPoolExecutor
+
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
     provenance = build_provenance()
+    reports = [build_report(check_paper(paper), provenance=provenance) for paper in papers]
     written = []
-    for paper in papers:
-        report = build_report(check_paper(paper), provenance=provenance)
-        md = out_dir / f"{paper}.md"
+    for report in reports:
+        md = out_dir / f"{report.paper}.md"
         md.write_text(to_markdown(report), encoding="utf-8")
         written.append(md)
-        if pdf:
-            written.append(write_pdf(report, out_dir / f"{paper}.pdf"))
+    if pdf:  # XeLaTeX runs as a subprocess: one per core at a time
+        with ThreadPoolExecutor(max_workers=max(1, min(len(reports), os.cpu_count() or 1))) as pool:
+            written += list(pool.map(lambda r: write_pdf(r, out_dir / f"{r.paper}.pdf"), reports))
     return written
