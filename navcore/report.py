@@ -816,6 +816,8 @@ _PREAMBLE = r"""\documentclass[10pt]{article}
 \usepackage{amsmath,amssymb}
 \usepackage{array,longtable}
 \usepackage[hidelinks]{hyperref}
+\usepackage{enumitem}
+\setlist{itemsep=1pt,topsep=2pt,parsep=0pt}
 \setlength{\parindent}{0pt}
 \setlength{\parskip}{0.5\baselineskip}
 \renewcommand{\arraystretch}{1.15}

@@ -147,7 +147,7 @@ def test_latex_is_produced(wf_report):
     assert "\\begin{longtable}" in tex
 
 
-@pytest.mark.skipif(shutil.which("xelatex") is None, reason="xelatex is not installed: the PDF is not typeset")
+@pytest.mark.skipif(shutil.which("xelatex") is None, reason="xelatex is not installed: no PDF to typeset")
 def test_pdf_compiles_strictly(wf_report, tmp_path):
     out = write_pdf(wf_report, tmp_path / "WF.pdf")
     assert out.read_bytes().startswith(b"%PDF")
