@@ -827,7 +827,7 @@ _PREAMBLE = r"""\documentclass[10pt]{article}
 
 
 def to_latex(report: Report) -> str:
-    """The report as a stand-alone XeLaTeX document; its title page carries the provenance.
+    r"""The report as a stand-alone XeLaTeX document; its title page carries the provenance.
 
     Tables are the book's printed tables (:func:`navcore.ledger.render.latex_table`, which
     fit the text width); the findings are the errata page's printed list
@@ -838,7 +838,7 @@ def to_latex(report: Report) -> str:
     >>> r = Report("WF", "Verification report: WF", "a paper", build_provenance(),
     ...            (Section("overview", "Summary", ("50 % of $K_1$.",)),))
     >>> tex = to_latex(r)
-    >>> "50 \\% of $K_1$." in tex, tex.rstrip().endswith("\\end{document}")
+    >>> r"50 \% of $K_1$." in tex, tex.rstrip().endswith(r"\end{document}")
     (True, True)
     """
     from navcore.ledger.render import ErrataList, _tex_breakable, _tex_escape, tex_text
