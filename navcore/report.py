@@ -88,6 +88,14 @@ __all__ = [
 #: The verdicts a report explains claim by claim (a discrepancy is explained by its finding).
 UNRESOLVED = ("inconsistent", "not-reproducible")
 
+#: How the book names each paper in its headings.
+SHORT_TITLES = {
+    "WF": "Wu and Fowler",
+    "SP": "Schmidt and Phillips",
+    "ATC10": "Lincoln Laboratory ATC-10",
+    "KZL": "Knedlik, Zhou and Loffeld",
+}
+
 #: The paper's full reference, for the title page.
 TITLES = {
     "WF": "N. E. Wu and M. L. Fowler, Application of MEMS for Improved Emitter Location Accuracy",
@@ -682,7 +690,7 @@ def build_report(
 
     return Report(
         paper=paper,
-        title=f"Verification report: {paper}",
+        title=f"Verification report: {SHORT_TITLES[paper]}",
         reference=TITLES[paper],
         provenance=provenance,
         sections=tuple(sections),
@@ -715,7 +723,10 @@ def to_markdown(report: Report) -> str:
     """
     out = [f"# {report.title}", "", f"*{report.reference}*", "", "## Build", ""]
     out += ["| Built with | Value |", "| --- | --- |"]
-    out += [f"| {_md_cell(w)} | `{_md_cell(v)}` |" for w, v in report.provenance.rows()]
+    out += [  # hashes and versions as code, words as text
+        f"| {_md_cell(w)} | {_md_cell(v) if ' ' in v else f'`{_md_cell(v)}`'} |"
+        for w, v in report.provenance.rows()
+    ]
     for s in report.sections:
         out += ["", f"## {s.title}", ""]
         for b in s.blocks:
