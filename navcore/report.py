@@ -680,7 +680,8 @@ def build_report(
     g_blocks: list[Block] = [
         "The paper's figures are not reproduced here as images; each figure the book redraws is "
         "listed with the paper figure it redraws, the claims that check it, and the page of the "
-        "book that shows it."
+        "book that shows it. Each reproduced figure is also a file named by its id, as SVG and "
+        "PNG, in the repository's figures folder."
     ]
     if len(figs):
         g_blocks.append(_frame_table(figs.drop(columns=["page", "anchor"])))
@@ -711,8 +712,11 @@ def _md_cell(text: str) -> str:
     return str(text).replace("|", "\\|").replace("\n", " ")
 
 
-def to_markdown(report: Report) -> str:
+def to_markdown(report: Report, figures_href: str | None = None) -> str:
     """The report as Markdown (``$...$`` math, pipe tables), for a reader or a converter.
+
+    ``figures_href``, the folder of the reproduced figures relative to where the Markdown is
+    written, links each figure id to its PNG (no links when ``None``).
 
     Examples
     --------
@@ -735,7 +739,11 @@ def to_markdown(report: Report) -> str:
             elif isinstance(b, Table):
                 out.append("| " + " | ".join(_md_cell(h) for h in b.head) + " |")
                 out.append("| " + " | ".join("---" for _ in b.head) + " |")
-                out += ["| " + " | ".join(_md_cell(c) for c in row) + " |" for row in b.rows]
+                for row in b.rows:
+                    cells = [_md_cell(c) for c in row]
+                    if s.key == "figures" and figures_href is not None:  # the reproduced figure
+                        cells[0] = f"[{cells[0]}]({figures_href}/{cells[0]}.png)"
+                    out.append("| " + " | ".join(cells) + " |")
                 out.append("")
             else:
                 for e in b.errata:
@@ -973,7 +981,8 @@ def write_reports(
     written = []
     for report in reports:
         md = out_dir / f"{report.paper}.md"
-        md.write_text(to_markdown(report), encoding="utf-8")
+        href = Path(os.path.relpath(project_root() / "figures", out_dir.resolve())).as_posix()
+        md.write_text(to_markdown(report, href), encoding="utf-8")
         written.append(md)
     if pdf:  # XeLaTeX runs as a subprocess: one per core at a time
         with ThreadPoolExecutor(max_workers=max(1, min(len(reports), os.cpu_count() or 1))) as pool:
