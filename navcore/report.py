@@ -327,7 +327,21 @@ def unresolved_frame(evals: Sequence[Evaluation]) -> Any:
 
 
 def _ids(ids: Sequence[str]) -> str:
-    return ", ".join(ids)
+    """Claim ids, those that differ only after their last dash written once with their endings.
+
+    Examples
+    --------
+    >>> _ids(["SP-t2-a", "SP-t2-b", "SP-x"])
+    'SP-t2-(a, b), SP-x'
+    """
+    groups: dict[str, list[str]] = {}
+    for cid in ids:
+        stem, _, end = cid.rpartition("-")
+        groups.setdefault(stem, []).append(end)
+    return ", ".join(
+        f"{stem}-{ends[0]}" if len(ends) == 1 else f"{stem}-({', '.join(ends)})"
+        for stem, ends in groups.items()
+    )
 
 
 def assumed_frame(evals: Sequence[Evaluation]) -> Any:
