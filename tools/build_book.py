@@ -101,7 +101,8 @@ def subset_toc(paper: str) -> str:
         reports = "".join(f"          - file: reports/{key}\n" for key in ("wf", "sp", "atc10", "kzl"))
         return (
             "format: jb-book\nroot: intro\nparts:\n"
-            "  - caption: Introduction\n    chapters:\n      - file: about\n"
+            "  - caption: Introduction\n    chapters:\n      - file: about\n      - file: notation\n"
+            "      - file: glossary\n"
             "  - caption: Verification\n    chapters:\n      - file: ledger\n      - file: assumptions\n"
             "      - file: coverage\n      - file: errata\n"
             "      - file: reports/index\n        sections:\n" + reports + "      - file: bibliography\n"
