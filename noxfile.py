@@ -1,4 +1,4 @@
-"""nox sessions: tests, book (HTML), pdf, figures, lint, ledger, bench, mutation, inputs, layout.
+"""nox sessions: tests, book (HTML), pdf, reports, figures, lint, ledger, bench, mutation, inputs, layout.
 
 Every session installs the full stack from ``requirements/lock.txt`` (a committed
 ``uv pip compile --generate-hashes`` lock), with every distribution's hash required, then
@@ -191,6 +191,30 @@ def pdf(session: nox.Session) -> None:
     elif (HTML / "index.html").exists():
         session.log("an HTML book exists without the PDF: rebuilding it to link the PDF")
         _build_html(session)
+
+
+@nox.session
+def reports(session: nox.Session) -> None:
+    """Write each paper's verification report to _build/reports/<PAPER>.pdf and <PAPER>.md.
+
+    The reports are built from the ledger, read through its on-disk cache
+    (``_build/navcore-cache``, which the ledger and book sessions fill), and typeset with
+    XeLaTeX strictly: a LaTeX error or an overfull box fails the session. Installs TeX as the
+    pdf session does when it is missing (root, Debian).
+    """
+    tex = _start_tex(session)
+    try:
+        _install(session)
+    finally:
+        _wait_tex(session, tex)
+    out = ROOT / "_build" / "reports"
+    session.run(
+        "python", "-c",
+        "import sys; from navcore.report import write_reports; "
+        "[print(p) for p in write_reports(sys.argv[1], sys.argv[2:] or ('WF', 'SP', 'ATC10', 'KZL'))]",
+        str(out), *session.posargs,
+    )  # fmt: skip
+    session.log(f"verification reports: {out}")
 
 
 REPRO = ROOT / "_build" / "reproducible"
