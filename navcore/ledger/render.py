@@ -82,7 +82,7 @@ def format_value(value: Any, digits: int = 5) -> str:
         ``"—"`` for ``None``; ``"true"``/``"false"`` for a truth value; ``"∞"``/``"−∞"``;
         an integral value below a million without decimals; otherwise ``digits``
         significant digits (trailing zeros dropped), fixed between 0.001 and a million and
-        otherwise in the book's one number format (:func:`navcore.formatting.format_number`:
+        otherwise in the book's one number format (``navcore.formatting.format_number``:
         ``9.4007×10⁻⁴``, never ``9.4007e-04`` or ``0.00094007``).
 
     Examples
