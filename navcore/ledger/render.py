@@ -453,6 +453,11 @@ def latex_table(head: Sequence[str], body: Sequence[Sequence[str]]) -> str:
     \hline \endfoot
     SP & \mbox{155} \\
     KZL & \mbox{48} \\
+
+    A heading's formula is set as math too:
+
+    >>> print(latex_table(["$\\sigma_0$ (ns)"], [["5"]]).splitlines()[3])
+    \hline \textbf{$\sigma_0$ (ns)} \\ \hline \endfirsthead
     """
     ncols = len(head)
     cells = [[str(c) for c in row] + [""] * (ncols - len(row)) for row in body]
@@ -494,19 +499,22 @@ def latex_table(head: Sequence[str], body: Sequence[Sequence[str]]) -> str:
     if natural <= 60:  # a narrow table keeps its natural width
         cols = "".join("r" if numeric[j] else "l" for j in range(ncols))
 
+    def text_cell(text: str) -> str:  # words escaped, $...$ set as math
+        return "".join(
+            f"${piece}$" if is_math else _tex_escape(piece).replace("\u200b", r"\allowbreak{}")
+            for is_math, piece in _text_pieces(text)
+        )
+
     def cell(text: str, j: int) -> str:
         if numeric[j]:
             text = _tex_escape(text)
             return rf"\mbox{{{text}}}" if text else text
-        text = "".join(
-            f"${piece}$" if is_math else _tex_escape(piece).replace("\u200b", r"\allowbreak{}")
-            for is_math, piece in _text_pieces(text)
-        )
+        text = text_cell(text)
         if text.startswith("["):  # after the previous row's \\ a "[" would read as its option
             text = "{}" + text
         return text
 
-    header = " & ".join(rf"\textbf{{{_tex_escape(str(h))}}}" for h in head)
+    header = " & ".join(rf"\textbf{{{text_cell(str(h))}}}" for h in head)
     out = [
         rf"\begingroup{size}\setlength{{\tabcolsep}}{{4pt}}\hyphenpenalty=10000\exhyphenpenalty=10000",
         rf"\begin{{longtable}}{{{cols}}}",
