@@ -530,7 +530,7 @@ def _plateau_below_minus_12db() -> bool:
 
 
 #: Values of t at which the book evaluates the t-dependence of Sec. 2.8 (the paper's sets are lost).
-T_GRID = (0.0, 0.05, 0.1, 0.2, 0.3)
+T_GRID = tuple(sorted((0.0, 0.05, 0.1, 0.2, 0.3)))  # ascending: the checks compare neighbours
 
 
 def _t_zero_needs_most_power() -> bool:
