@@ -719,7 +719,9 @@ def recursion_matches_mc() -> bool:
     for ex in ("I", "II"):
         s0 = TR.sigma0_low_ns
         mc = trk.tracker_monte_carlo(ex, s0)
-        inp = trk.table_4_2_from_geometry(ex, trk.fitted_radius_ratio())
+        inp = trk.table_4_2_from_geometry(
+            ex, trk.fitted_radius_ratio(), aircraft_ratio=trk.physical_aircraft_ratio()
+        )
         h = gain_recursion(inp["beta"], TR.sigma_ns, s0, trk.MC_N_LAST)
         pred = TR.sigma_ns**2 * (inp["trace_all"] + h.gamma * inp["s_all"])
         for n in (0, 1, 5, 10, trk.MC_N_LAST):

@@ -467,7 +467,7 @@ def physical_table_4_2(example: str) -> dict[str, float]:
 
 def _printed_table_4_2_as_computed(example: str, radius_ratio: float) -> dict[str, float]:
     """Table 4.2 columns the way the paper computed them (col. 5 with the printed formula)."""
-    t = dict(table_4_2_from_geometry(example, radius_ratio))
+    t = dict(table_4_2_from_geometry(example, radius_ratio, aircraft_ratio=physical_aircraft_ratio()))
     t["s_123"] = t.pop("s_123_printed")
     return t
 
@@ -629,7 +629,7 @@ def table_4_3_cell(example: str, sigma0_nominal: float, column: int) -> float:
 
 def corrected_first_three_satellite_sd(example: str, sigma0: float) -> float:
     """Col. (v) with the invariant S3 (erratum E4-1), geometry at the fitted ratio, steady state."""
-    inputs = table_4_2_from_geometry(example, fitted_radius_ratio())
+    inputs = table_4_2_from_geometry(example, fitted_radius_ratio(), aircraft_ratio=physical_aircraft_ratio())
     return table_4_3_row(inputs, sigma0)[4]
 
 
@@ -701,7 +701,7 @@ OUTAGE_MC_EPOCHS = {"I": 110, "II": 320}
 
 def acceptable_outage_mc_s(example: str, sigma0: float) -> float:
     """Same duration from the Monte Carlo of the full tracker (fitted geometry, invariant S3)."""
-    inputs = table_4_2_from_geometry(example, fitted_radius_ratio())
+    inputs = table_4_2_from_geometry(example, fitted_radius_ratio(), aircraft_ratio=physical_aircraft_ratio())
     threshold = IN.outage_threshold_factor * table_4_3_row(inputs, sigma0)[2]
     mc = tracker_monte_carlo(example, sigma0, m_after=OUTAGE_MC_EPOCHS[example], n_runs=4000)
     rms = IN.c_ft_per_ns * np.sqrt(mc.position_mse[MC_N_LAST + 1 :])
@@ -710,7 +710,7 @@ def acceptable_outage_mc_s(example: str, sigma0: float) -> float:
 
 
 def _corrected_inputs(example: str) -> dict[str, float]:
-    return table_4_2_from_geometry(example, fitted_radius_ratio())
+    return table_4_2_from_geometry(example, fitted_radius_ratio(), aircraft_ratio=physical_aircraft_ratio())
 
 
 def invariant_s3_inputs(example: str) -> dict[str, float]:
