@@ -71,12 +71,17 @@ IN.assumed(
     reason="App. G and Sec. 4.3 give only 1/2 < $\\rho < 1$, 'slightly less than one'; 0.75-0.95 spans "
     "the flicker-like range where the Kalman-filter and Markov statements are made",
 )
-IN.published(
+IN.convention(
     "sec47_crossover_n",
     100,
-    locator="Sec. 4.7 ('the value of n, where these two components are comparable, is much larger, say, "
-    "n=100')",
     quantity="epoch at which the 1/f term equals the random walk in the Sec. 4.7 alternative",
+    readings={
+        "n = 100, the example the text gives ('much larger, say, n=100')": 100,
+        "n = 10, a crossover ten times later than n = 1": 10,
+        "n = 1000": 1000,
+    },
+    reason="Sec. 4.7 says only that the crossover 'could be ... much larger, say, n=100': the printed value "
+    "is an example of 'much larger', and the book reads the statement at it and a decade either side",
 )
 IN.published(
     "fig41_small_alpha_max",
