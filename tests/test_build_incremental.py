@@ -82,6 +82,19 @@ def test_stale_reason_names_what_changed(tmp_path: Path) -> None:
     (root / "navcore" / "data.json").write_text("{} ")
     assert build_book.stale_reason(record, root) == "reads data.json, changed"
     (root / "navcore" / "data.json").write_text("{}")
+    # what a page read beyond the package, named from the package folder: a book page, and a
+    # folder it listed (its names, not their contents)
+    (root / "book").mkdir()
+    (root / "book" / "p.md").write_text("# P\n")
+    pages = build_book.dependency_record(["navcore"], ["../book/", "../book/p.md"], root)
+    assert build_book.stale_reason(pages, root) is None
+    (root / "book" / "p.md").write_text("# P, retitled\n")
+    assert build_book.stale_reason(pages, root) == "reads book/p.md, changed"
+    (root / "book" / "p.md").write_text("# P\n")
+    (root / "book" / "q.md").write_text("# Q\n")
+    assert build_book.stale_reason(pages, root) == "reads book/, changed"
+    (root / "book" / "q.md").unlink()
+    assert build_book.stale_reason(pages, root) is None
     build_book._module_files.cache_clear()
     (root / "navcore" / "b.py").write_text("")
     assert build_book.stale_reason(record, root) == "navcore's list of modules changed"
@@ -98,6 +111,11 @@ PAGES = {
     ),
     # fails once its module carries a marker: its old outputs must not survive in the cache
     "5-diagrams.md": "from navcore import diagrams\nassert 'MARKER' not in open(diagrams.__file__).read()",
+    # reads the book's pages beside the package (as the traceability index does) and lists them
+    "6-pages.md": (
+        "from pathlib import Path\nimport navcore\nbook = Path(navcore.__file__).parents[1] / 'book'\n"
+        "print(sorted(p.name for p in book.glob('*.md')), (book / 'p.md').read_text())"
+    ),
 }
 
 RUNNER = """
@@ -126,6 +144,8 @@ def _executed(copy: Path, book: Path, cache: Path, failing: str | None = None) -
 def test_one_module_change_re_executes_exactly_the_pages_that_import_it(tmp_path: Path) -> None:
     copy = tmp_path / "src"
     shutil.copytree(ROOT / "navcore", copy / "navcore", ignore=shutil.ignore_patterns("__pycache__"))
+    (copy / "book").mkdir()
+    (copy / "book" / "p.md").write_text("# P\n")
     book, _ = make_book(tmp_path, {"b": PAGES})
     cache = tmp_path / "cache"
     assert _executed(copy, book, cache) == dict.fromkeys(PAGES, "not in the cache")
@@ -143,6 +163,11 @@ def test_one_module_change_re_executes_exactly_the_pages_that_import_it(tmp_path
     assert _executed(copy, book, cache) == dict.fromkeys(
         ["1-units.md", "2-frames.md", "3-units-again.md"], "imports navcore.units, changed"
     )
+    # a page's text changed: the page that read it executes again, no other
+    (copy / "book" / "p.md").write_text("# P, retitled\n")
+    assert _executed(copy, book, cache) == {"6-pages.md": "reads book/p.md, changed"}
+    (copy / "book" / "q.md").write_text("# Q\n")
+    assert _executed(copy, book, cache) == {"6-pages.md": "reads book/, changed"}
     with open(copy / "navcore" / "diagrams.py", "a") as f:
         f.write("# MARKER\n")
     assert _executed(copy, book, cache, failing="5-diagrams.md") == {

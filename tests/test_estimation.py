@@ -530,3 +530,20 @@ def test_state_layout_concatenation_and_union():
     assert v.name == "aid|nav"
     assert a.union(a).table() == a.table()
     assert a.union(StateLayout.of(name="")).name == "nav|"
+
+
+def test_a_checked_step_checks_again_a_covariance_changed_after_it_was_returned():
+    """The checked steps remember the covariances they return (valid by construction) by their
+    numbers, so a loop does not re-check them; one changed in place is new numbers, checked
+    again. Oracle: the definition of symmetry and of a finite matrix."""
+    n = 3
+    x, P = kf_predict(np.zeros(n), np.eye(n), np.eye(n), 0.1 * np.eye(n))
+    up = kf_update(x, P, [0.5], [[1.0, 0.0, 0.0]], [[1.0]])  # P as returned: passes
+    assert np.array_equal(up.P, up.P.T)
+    P[0, 1] += 1.0  # no longer symmetric
+    with pytest.raises(ValueError, match="P must be symmetric"):
+        kf_update(x, P, [0.5], [[1.0, 0.0, 0.0]], [[1.0]])
+    P_post = up.P
+    P_post[2, 2] = np.nan
+    with pytest.raises(ValueError, match="P must be finite"):
+        kf_predict(up.x, P_post, np.eye(n), 0.1 * np.eye(n))

@@ -11,7 +11,9 @@ Usage::
 execution settings of ``_config.yml`` and this tool. Each executed page is stored with what
 it depends on: the navcore modules it imported (directly, through the modules they import,
 and through the modules that navcore itself imported by name, such as the ledger's paper
-modules), the data files those modules read, and the list of navcore's module files, each
+modules), the data files those modules read, the files beyond the package the page read while
+it ran (book pages, tests, the papers' texts: the traceability index and the ledger's page
+titles read them) and the folders it listed, and the list of navcore's module files, each
 with a hash of its contents. A page is re-executed when its text changed or when one of those
 contents changed, and the build prints which pages execute and why ("imports
 navcore.gnss.tracking, changed"); every other page comes from the cache.
@@ -227,7 +229,8 @@ STICKY = ("navcore.book",)
 # Installed in each kernel before anything else runs: it records which navcore modules each
 # import statement (or importlib.import_module call) brings in, and who imported them (a navcore
 # module: an edge of the graph; anyone else, the page's own code included: a root of the page),
-# and which navcore data files a navcore module opens.
+# which navcore data files a navcore module opens, and which book pages, tests and papers' texts
+# the page itself read or listed while it ran.
 _RECORDER = r"""
 def _navcore_build_recorder():
     import builtins, importlib, importlib.util, json, os, sys, types
@@ -267,10 +270,27 @@ def _navcore_build_recorder():
             note(sys._getframe(1).f_globals.get("__name__") or "", module.__name__)
         return module
 
+    repo = os.path.dirname(package_dir.rstrip(os.sep)) + os.sep
+    outside = (  # what the book reads beyond the package: its pages, the tests, the papers' texts
+        os.path.join(repo, "book") + os.sep,
+        os.path.join(repo, "tests") + os.sep,
+        os.path.join(os.path.dirname(repo.rstrip(os.sep)), "shared", "papers") + os.sep,
+    )
+    rec.page_files = set()
+
     def audit(event, args):
-        if event != "open" or not args or not isinstance(args[0], str):
+        if event not in ("open", "os.scandir", "os.listdir") or not args or not isinstance(args[0], str):
             return
-        path = args[0]
+        path = os.path.abspath(args[0])
+        if event != "open":  # a listing (a glob over the pages): the page depends on its names
+            if (path + os.sep).startswith(outside):
+                rec.page_files.add(os.path.relpath(path, package_dir) + "/")
+            return
+        if path.startswith(outside):
+            # the page that ran when a file beyond the package was read depends on it (a navcore
+            # module reading all the pages must not make every page of its kernel depend on them)
+            rec.page_files.add(os.path.relpath(path, package_dir))
+            return
         if not path.startswith(package_dir) or path.endswith((".py", ".pyc")):
             return
         frame, importer = sys._getframe(1), ""
@@ -280,10 +300,16 @@ def _navcore_build_recorder():
         note(importer, "file:" + path[len(package_dir):])
 
     def start_page():
-        rec.roots = set()
+        rec.roots, rec.page_files = set(), set()
 
     def take():
-        return json.dumps({"roots": sorted(rec.roots), "edges": {k: sorted(v) for k, v in rec.edges.items()}})
+        return json.dumps(
+            {
+                "roots": sorted(rec.roots),
+                "edges": {k: sorted(v) for k, v in rec.edges.items()},
+                "files": sorted(rec.page_files),
+            }
+        )
 
     rec.start_page, rec.take = start_page, take
     sys.modules[rec.__name__] = rec
@@ -407,6 +433,19 @@ def _file_hash(path: Path) -> str | None:
         return None
 
 
+def _dependency_hash(root: Path, name: str) -> str | None:
+    """Hash of a data dependency, named relative to the package folder: a file's contents, or
+    for a name ending in ``/`` (a folder the page listed) the sorted names in it."""
+    path = _package_dir(root) / name
+    if not name.endswith("/"):
+        return _file_hash(path)
+    try:
+        listing = "\n".join(sorted(p.name for p in path.iterdir()))
+    except OSError:
+        return None
+    return hashlib.sha256(listing.encode()).hexdigest()[:20]
+
+
 def _listing_hash(root: Path) -> str:
     return hashlib.sha256("\n".join(sorted(_module_files(root))).encode()).hexdigest()[:20]
 
@@ -416,7 +455,7 @@ def dependency_record(modules: list[str], files: list[str], root: Path) -> dict[
     paths = _module_files(root)
     return {
         "modules": {m: _file_hash(paths[m]) for m in modules},
-        "files": {f: _file_hash(_package_dir(root) / f) for f in files},
+        "files": {f: _dependency_hash(root, f) for f in files},
         "module_list": _listing_hash(root),
     }
 
@@ -432,7 +471,9 @@ def stale_reason(record: dict[str, Any] | None, root: Path) -> str | None:
         if m not in paths or _file_hash(paths[m]) != digest
     ]
     files = record.get("files", {})
-    changed += [f"reads {f}" for f, digest in files.items() if _file_hash(_package_dir(root) / f) != digest]
+    changed += [
+        f"reads {f.removeprefix('../')}" for f, digest in files.items() if _dependency_hash(root, f) != digest
+    ]
     if changed:
         shown = ", ".join(changed[:3]) + (f" and {len(changed) - 3} more" if len(changed) > 3 else "")
         return f"{shown}, changed"
@@ -707,7 +748,8 @@ def _execute_group(
                 seen = recorded()
                 roots = set(seen["roots"]) | sticky
                 sticky |= {m for m in roots if m in STICKY}
-                deps = dependency_record(*page_dependencies(roots, seen["edges"], root), root)
+                modules, files = page_dependencies(roots, seen["edges"], root)
+                deps = dependency_record(modules, sorted({*files, *seen.get("files", ())}), root)
             except CellExecutionError as exc:
                 err = f"CellExecutionError: {exc}"[:2000]
             except Exception as exc:  # a dead kernel, a timeout: report, let Sphinx re-run it

@@ -36,7 +36,7 @@ References
 
 from __future__ import annotations
 
-from typing import NamedTuple, cast
+from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -140,14 +140,24 @@ def _covariance(name: str, value: ArrayLike, n: int, *, definite: bool = False) 
     if not (n and (arr == arr.T).all() and _cholesky_passes(arr, definite)):
         check_argument(name, arr, "array")  # finite, with the wrapper's message
         check_symmetric_psd(name, arr, definite=definite)
-    if len(_PASSED) >= 64:
-        _PASSED.clear()
-    _PASSED[key] = None
+    _passed(arr, definite)
     return arr
 
 
-#: Contents of covariances that passed :func:`_covariance` (the check is a function of the
-#: numbers alone, so the same bytes pass again); bounded.
+def _passed(arr: Array, definite: bool = False) -> Array:
+    """Remember that a covariance with these very numbers is valid (bounded memory)."""
+    if len(_PASSED) >= 64:
+        _PASSED.clear()
+    _PASSED[(definite, arr.shape[0], arr.tobytes())] = None
+    return arr
+
+
+#: Contents of covariances known to be valid (the check is a function of the numbers alone,
+#: so the same bytes pass again): those that passed :func:`_covariance`, and the exactly
+#: symmetric covariances the checked steps return, which are positive semi-definite by
+#: construction (``Phi P Phi' + Q`` and the Joseph form are sums of congruences of positive
+#: semi-definite matrices), so that a checked loop checks its covariance once, not at every
+#: step (a caller who changes one number of it makes it new bytes, checked again); bounded.
 _PASSED: dict[tuple[bool, int, bytes], None] = {}
 
 
@@ -234,7 +244,10 @@ def kf_predict(
     P = _covariance("P", P, n)
     Phi = _matrix("Phi", Phi, (n, n))
     Q = _covariance("Q", Q, n)
-    return Phi @ x, symmetrize_unchecked(Phi @ P @ Phi.T + Q)  # P- = Phi P Phi' + Q
+    P_pred = np.dot(np.dot(Phi, P), Phi.T) + Q  # P- = Phi P Phi' + Q
+    P_pred += P_pred.T  # made exactly symmetric, in place
+    P_pred *= 0.5
+    return np.dot(Phi, x), _passed(P_pred)
 
 
 class KalmanUpdate(NamedTuple):
@@ -315,21 +328,7 @@ def kf_update(
     if not validate:  # float ndarrays checked by the caller
         if np.size(z) == 0:
             return _no_update(x, P)
-        Ha = np.asarray(H)  # H is an ndarray already: no copy
-        PHt = np.dot(P, Ha.T)
-        S = np.dot(Ha, PHt) + R
-        # K' = S^-1 (P H')' by Cholesky (LAPACK posv: S symmetric positive definite)
-        _, Kt, info = lapack.dposv(S, PHt.T)
-        if info != 0:
-            raise ValueError("the innovation covariance H P H' + R is not positive definite")
-        K: Array = Kt.T
-        innovation = np.subtract(z, np.dot(Ha, x))
-        I_KH = -np.dot(K, Ha)
-        I_KH.flat[:: I_KH.shape[0] + 1] += 1.0  # I - K H
-        P_post = np.dot(np.dot(I_KH, P), I_KH.T) + np.dot(np.dot(K, R), K.T)
-        P_post += P_post.T  # Joseph form, made exactly symmetric
-        P_post *= 0.5
-        return KalmanUpdate(np.add(x, np.dot(K, innovation)), P_post, K, innovation, S)
+        return _joseph_update(x, P, z, np.asarray(H), R)  # H is an ndarray already: no copy
     x = _vector("x", x)
     n = x.size
     P = _covariance("P", P, n)
@@ -345,12 +344,27 @@ def kf_update(
         return _no_update(x, P)
     H = _matrix("H", H, (m, n))
     R = _covariance("R", R, m, definite=True)
-    innovation = z - H @ x
-    S = symmetrize_unchecked(H @ P @ H.T + R)
-    K = cast(Array, np.linalg.solve(S, H @ P.T).T)  # K = P H' S^-1 (S symmetric)
-    I_KH = np.eye(n) - K @ H
-    P_post = symmetrize_unchecked(I_KH @ P @ I_KH.T + K @ R @ K.T)  # Joseph form
-    return KalmanUpdate(x + K @ innovation, P_post, K, innovation, S)
+    update = _joseph_update(x, P, z, H, R)
+    _passed(update.P)
+    return update
+
+
+def _joseph_update(x: ArrayLike, P: ArrayLike, z: ArrayLike, H: Array, R: ArrayLike) -> KalmanUpdate:
+    """The arithmetic of :func:`kf_update` on checked float arrays (both of its paths)."""
+    PHt = np.dot(P, H.T)
+    S = np.dot(H, PHt) + R
+    # K' = S^-1 (P H')' by Cholesky (LAPACK posv: S symmetric positive definite)
+    _, Kt, info = lapack.dposv(S, PHt.T)
+    if info != 0:
+        raise ValueError("the innovation covariance H P H' + R is not positive definite")
+    K: Array = Kt.T
+    innovation = np.subtract(z, np.dot(H, x))
+    I_KH = -np.dot(K, H)
+    I_KH.flat[:: I_KH.shape[0] + 1] += 1.0  # I - K H
+    P_post = np.dot(np.dot(I_KH, P), I_KH.T) + np.dot(np.dot(K, R), K.T)
+    P_post += P_post.T  # Joseph form, made exactly symmetric
+    P_post *= 0.5
+    return KalmanUpdate(np.add(x, np.dot(K, innovation)), P_post, K, innovation, S)
 
 
 def _no_update(x: ArrayLike, P: ArrayLike) -> KalmanUpdate:

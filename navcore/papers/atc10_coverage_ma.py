@@ -39,13 +39,38 @@ from navcore.papers.atc10_quotes import quoted
 
 MA = ma.IN
 IN = InputSet("ATC10", "coverage_ma")
-IN.published("pulses_a", 5, locator="Sec. 3.8, worked example ('5 equal length pulses with alpha = 2.5 s')")
 IN.published(
-    "alpha_a_s", 2.5, locator="Sec. 3.8, worked example ('5 equal length pulses with alpha = 2.5 s')"
+    "pulses_a",
+    5,
+    locator="Sec. 3.8, worked example ('5 equal length pulses with alpha = 2.5 s')",
+    quantity="pulses of the first signature of the worked example",
 )
-IN.published("pulses_b", 4, locator="Sec. 3.8, worked example ('4 equal length pulses with alpha = 2 s')")
-IN.published("alpha_b_s", 2.0, locator="Sec. 3.8, worked example ('4 equal length pulses with alpha = 2 s')")
-IN.published("n_ref1", 100_000, locator="Sec. 3.8, worked example ('systems ... in which N = 10^5')")
+IN.published(
+    "alpha_a_s",
+    2.5,
+    locator="Sec. 3.8, worked example ('5 equal length pulses with alpha = 2.5 s')",
+    unit="s",
+    quantity="$\\alpha$ of the first signature of the worked example",
+)
+IN.published(
+    "pulses_b",
+    4,
+    locator="Sec. 3.8, worked example ('4 equal length pulses with alpha = 2 s')",
+    quantity="pulses of the second signature of the worked example",
+)
+IN.published(
+    "alpha_b_s",
+    2.0,
+    locator="Sec. 3.8, worked example ('4 equal length pulses with alpha = 2 s')",
+    unit="s",
+    quantity="$\\alpha$ of the second signature of the worked example",
+)
+IN.published(
+    "n_ref1",
+    100_000,
+    locator="Sec. 3.8, worked example ('systems ... in which N = 10^5')",
+    quantity="number of users $N$ of the worked example's reference systems",
+)
 
 IN.convention(
     "very_poor_factor",
@@ -332,7 +357,7 @@ def exp_limit() -> bool:
 
 def n_effective() -> float:
     """Effective pulse rate per aircraft x N: (5/2.5 + 4/2)/2 x 1e5."""
-    return MA.n_sec36 * 0 + IN.n_ref1 * 0.5 * (IN.pulses_a / IN.alpha_a_s + IN.pulses_b / IN.alpha_b_s)
+    return IN.n_ref1 * 0.5 * (IN.pulses_a / IN.alpha_a_s + IN.pulses_b / IN.alpha_b_s)
 
 
 def peak_sir_identity() -> bool:

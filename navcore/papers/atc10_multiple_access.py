@@ -99,9 +99,18 @@ IN.published(
     quantity="effective number of aircraft of Ref. [1]",
 )
 IN.published(
-    "bandwidth_example_hz", 1e7, locator="Sec. 3.8, worked example ('B was assumed to be 10^7 Hz')", unit="Hz"
+    "bandwidth_example_hz",
+    1e7,
+    locator="Sec. 3.8, worked example ('B was assumed to be 10^7 Hz')",
+    unit="Hz",
+    quantity="bandwidth $B$ of the worked example",
 )
-IN.published("theta_example", 0.5, locator="Sec. 3.8, worked example ('we let theta = 0.5')")
+IN.published(
+    "theta_example",
+    0.5,
+    locator="Sec. 3.8, worked example ('we let theta = 0.5')",
+    quantity="$\\theta$ of the worked example",
+)
 IN.convention(
     "alpha_example_s",
     1.0,

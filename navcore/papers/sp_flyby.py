@@ -90,12 +90,40 @@ IN = InputSet("SP", "flyby")
 
 # --- published (Sec. 2.5 and 2.6.2) ------------------------------------------------------
 _S25 = "Sec. 2.5"
-IN.published("carrier_loss_dbhz", 19.0, locator=_S25 + " ('dropped below 19 dB')", unit="dB-Hz")
-IN.published("code_loss_dbhz", 18.0, locator=_S25 + " ('code phase ... below 18 dB')", unit="dB-Hz")
-IN.published("code_reacquisition_dbhz", 21.0, locator=_S25 + " ('at least 21 dB for the code')", unit="dB-Hz")
-IN.published("carrier_reacquisition_dbhz", 22.0, locator=_S25 + " ('22 dB for the carrier')", unit="dB-Hz")
 IN.published(
-    "max_phase_error_deg", 90.0, locator=_S25 + " ('carrier phase error exceeded 90 deg')", unit="deg"
+    "carrier_loss_dbhz",
+    19.0,
+    locator=_S25 + " ('dropped below 19 dB')",
+    unit="dB-Hz",
+    quantity="signal-to-noise ratio below which the carrier is lost (read as $C/N_0$)",
+)
+IN.published(
+    "code_loss_dbhz",
+    18.0,
+    locator=_S25 + " ('code phase ... below 18 dB')",
+    unit="dB-Hz",
+    quantity="signal-to-noise ratio below which the code is lost (read as $C/N_0$)",
+)
+IN.published(
+    "code_reacquisition_dbhz",
+    21.0,
+    locator=_S25 + " ('at least 21 dB for the code')",
+    unit="dB-Hz",
+    quantity="signal-to-noise ratio at which the code is reacquired (read as $C/N_0$)",
+)
+IN.published(
+    "carrier_reacquisition_dbhz",
+    22.0,
+    locator=_S25 + " ('22 dB for the carrier')",
+    unit="dB-Hz",
+    quantity="signal-to-noise ratio at which the carrier is reacquired (read as $C/N_0$)",
+)
+IN.published(
+    "max_phase_error_deg",
+    90.0,
+    locator=_S25 + " ('carrier phase error exceeded 90 deg')",
+    unit="deg",
+    quantity="carrier phase error beyond which the carrier is lost",
 )
 IN.published(
     "code_loss_chips",
@@ -109,18 +137,21 @@ IN.published(
     5.83,
     locator="Sec. 2.5 ('third-order loop with bandwidth of 5.83 Hz')",
     unit="Hz",
+    quantity="noise bandwidth of the loosely coupled receiver's carrier loop",
 )
 IN.published(
     "code_loop_carrier_aided_hz",
     1.5,
     locator="Sec. 2.5 ('During carrier loop aiding, the code loop bandwidth is 1.5 Hz')",
     unit="Hz",
+    quantity="code loop bandwidth while the carrier loop aids it",
 )
 IN.published(
     "code_loop_inertial_aided_hz",
     0.5,
     locator="Sec. 2.5 ('During inertial aiding, the bandwidth is 0.5 Hz')",
     unit="Hz",
+    quantity="code loop bandwidth while the INS aids it",
 )
 IN.published(
     "coherent_s",
@@ -130,7 +161,11 @@ IN.published(
     quantity="predetection time",
 )
 IN.published(
-    "range_rate_cell_mps", 10.0, locator="Sec. 2.6.2 ('10 m/s (one Doppler shift interval)')", unit="m/s"
+    "range_rate_cell_mps",
+    10.0,
+    locator="Sec. 2.6.2 ('10 m/s (one Doppler shift interval)')",
+    unit="m/s",
+    quantity="range-rate (Doppler) search cell",
 )
 IN.published(
     "satellites",

@@ -58,6 +58,7 @@ IN.fitted(
     "grade_metric",
     "CEP",
     fitted_to=("SP-tab2.5-grade-10",),
+    quantity="what a grade's nmi/h measures (the 1-h CEP or the 1-h rss of the unaided position error)",
     reason="the paper does not define the 'nmi/h' of a grade. Of the definitions tried (1-h CEP "
     "or rss, stationary and gyrocompass-aligned), the 1-h CEP is the one that reproduces the "
     "10 nmi/h label, so the definition is fitted to that label (the rss reading: 'rss')",
