@@ -1,4 +1,4 @@
-"""nox sessions: tests, book (HTML), pdf, figures, lint, ledger, bench, mutation, inputs.
+"""nox sessions: tests, book (HTML), pdf, reports, figures, lint, ledger, bench, mutation, inputs, layout.
 
 Every session installs the full stack from ``requirements/lock.txt`` (a committed
 ``uv pip compile --generate-hashes`` lock), with every distribution's hash required, then
@@ -193,6 +193,30 @@ def pdf(session: nox.Session) -> None:
         _build_html(session)
 
 
+@nox.session
+def reports(session: nox.Session) -> None:
+    """Write each paper's verification report to _build/reports/<PAPER>.pdf and <PAPER>.md.
+
+    The reports are built from the ledger, read through its on-disk cache
+    (``_build/navcore-cache``, which the ledger and book sessions fill), and typeset with
+    XeLaTeX strictly: a LaTeX error or an overfull box fails the session. Installs TeX as the
+    pdf session does when it is missing (root, Debian).
+    """
+    tex = _start_tex(session)
+    try:
+        _install(session)
+    finally:
+        _wait_tex(session, tex)
+    out = ROOT / "_build" / "reports"
+    session.run(
+        "python", "-c",
+        "import sys; from navcore.report import write_reports; "
+        "[print(p) for p in write_reports(sys.argv[1], sys.argv[2:] or ('WF', 'SP', 'ATC10', 'KZL'))]",
+        str(out), *session.posargs,
+    )  # fmt: skip
+    session.log(f"verification reports: {out}")
+
+
 REPRO = ROOT / "_build" / "reproducible"
 
 
@@ -345,6 +369,24 @@ def inputs(session: nox.Session) -> None:
     """
     _install(session)
     session.run("python", "tools/input_gate.py", *session.posargs)
+
+
+@nox.session
+def layout(session: nox.Session) -> None:
+    """The layout gate on a built HTML book, measured in headless Chromium (tools/check_layout.py).
+
+    Loads every page at 1400 px and 420 px once MathJax has typeset it and fails on a display
+    equation cut by its box or an output table wider than the text column, unless the item is
+    in ``tools/layout_allowlist.json`` with its reason; an entry that no longer
+    overflows fails too, so the list only shrinks. Builds the HTML book first (from the
+    execution cache) unless ``_build/html`` exists; ``-- --list`` prints every overflow,
+    ``-- --width 420`` measures one width. Needs Chromium (installed with apt-get when run as
+    root) and about five minutes: a developer's session, ``.ci/run`` does not run it.
+    """
+    _install(session)
+    if not (HTML / "index.html").exists():
+        _build_html(session)
+    session.run("python", "tools/check_layout.py", str(HTML), *session.posargs)
 
 
 @nox.session

@@ -1,4 +1,4 @@
-"""Command line: ``python -m navcore ledger|figures``.
+"""Command line: ``python -m navcore ledger|report|figures``.
 
 ``python -m navcore ledger [--paper KEY] [--json] [--csv] [--jobs N] [--claim ID]``
     print the verification ledger, evaluated on every core (``--jobs 1``: in this process;
@@ -6,6 +6,10 @@
     took; exit status 1 if any claim fails its own check. The JSON export is an object
     ``{"provenance": ..., "claims": [...]}``; every CSV row carries the same ``build_*``
     columns (commit, clean or dirty tree, commit date, lock hash, versions).
+``python -m navcore report PAPER [--pdf [OUT]] [--jobs N]``
+    print the findings section of the paper's verification report (plain text, 100
+    columns); with ``--pdf`` also typeset the stand-alone report with XeLaTeX (to OUT,
+    default ``_build/reports/<PAPER>.pdf``). Without ``--pdf`` nothing is written.
 ``python -m navcore figures [--out DIR] [--only ID ...]``
     write every registered figure to ``DIR`` (default ``figures/``) as SVG and PNG.
 """
@@ -48,6 +52,28 @@ def _cmd_ledger(args: argparse.Namespace) -> int:
     return 1 if failing else 0
 
 
+def _cmd_report(args: argparse.Namespace) -> int:
+    from navcore import ledger
+    from navcore.report import build_report, to_text, write_pdf
+
+    evals = ledger.evaluations(paper=args.paper, n_jobs=args.jobs)
+    report = build_report(args.paper, evals)
+    sys.stdout.write(to_text(report.section("findings")))
+    if args.pdf is not None:
+        out = Path(args.pdf or Path("_build") / "reports" / f"{args.paper}.pdf")
+        try:
+            write_pdf(report, out)
+        except (FileNotFoundError, RuntimeError) as exc:
+            print(f"report {args.paper}: {exc}", file=sys.stderr)
+            return 1
+        print(f"wrote {out}", file=sys.stderr)
+    return 0
+
+
+def _paper_key(text: str) -> str:
+    return text.upper()
+
+
 def _cmd_figures(args: argparse.Namespace) -> int:
     from navcore import figures
 
@@ -84,6 +110,27 @@ def main(argv: list[str] | None = None) -> int:
         "the result is the same bit for bit",
     )
     p_ledger.set_defaults(func=_cmd_ledger)
+    p_report = sub.add_parser(
+        "report",
+        help="print the findings of a paper's verification report; --pdf also writes the PDF",
+        description="Print the findings section of PAPER's verification report (plain text, "
+        "100 columns). The stand-alone PDF is written only when asked, with --pdf (it needs "
+        "xelatex on the PATH): nothing is written by default.",
+    )
+    p_report.add_argument(
+        "paper", metavar="PAPER", type=_paper_key, choices=["WF", "SP", "ATC10", "KZL"],
+        help="the paper: WF, SP, ATC10 or KZL",
+    )  # fmt: skip
+    p_report.add_argument(
+        "--pdf", nargs="?", const="", default=None, metavar="OUT",
+        help="also typeset the stand-alone report with XeLaTeX, strictly, to OUT "
+        "(default: _build/reports/PAPER.pdf)",
+    )  # fmt: skip
+    p_report.add_argument(
+        "--jobs", type=int, default=None, metavar="N",
+        help="worker processes for claims not yet in the ledger's cache (default: this process)",
+    )  # fmt: skip
+    p_report.set_defaults(func=_cmd_report)
     p_fig = sub.add_parser("figures", help="write every registered figure as SVG and PNG")
     p_fig.add_argument("--out", default="figures", help="output folder (default: figures)")
     p_fig.add_argument("--only", nargs="*", help="figure ids to write")

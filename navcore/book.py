@@ -25,7 +25,7 @@ from typing import Any
 from navcore import figures as _figures
 from navcore import ledger
 from navcore.formatting import format_number, number_formatter, tidy_numbers
-from navcore.ledger.core import ERRATUM_BASES, ERRATUM_KINDS, STATUSES
+from navcore.ledger.core import STATUSES
 from navcore.ledger.render import (
     CountsTable,
     ErrataList,
@@ -554,17 +554,11 @@ class Markdown:
 
 
 def _findings_phrase(items: Any) -> str:
-    """``"9 findings: 4 computed (2 inconsistent numbers, ...), 5 text-only (...)"``."""
-    parts = []
-    for b in ERRATUM_BASES:
-        sel = [e for e in items if e.basis == b]
-        if sel:
-            kinds = ", ".join(
-                f"{n} {k.replace('-', ' ')}" for k in ERRATUM_KINDS if (n := sum(e.kind == k for e in sel))
-            )
-            parts.append(f"{len(sel)} {b} ({kinds})")
-    n = len(items)
-    return f"{n} finding{'' if n == 1 else 's'}" + (": " + ", ".join(parts) if parts else "")
+    """``"9 findings: 4 computed (2 inconsistent numbers, ...), 5 text-only (...)"``: the
+    verification report's phrase (one home, :func:`navcore.report.findings_phrase`)."""
+    from navcore.report import findings_phrase
+
+    return findings_phrase(items)
 
 
 def chapter_summary(paper: str) -> Markdown:

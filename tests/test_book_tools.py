@@ -183,6 +183,23 @@ def test_html_gate_finds_developer_wording_in_text_data_and_notebook_outputs(tmp
     assert "'Verdict changed'" in problems[1] and "'expected_status'" in problems[0]
 
 
+def test_html_gate_finds_numbers_as_a_program_prints_them(tmp_path):
+    """Oracle: hand-written pages, one number of each kind the gate must find, and their forms
+    as the book prints them, which it must pass."""
+    article = '<article class="bd-article">{}</article>'
+    _page(tmp_path / "wf" / "ok.html", article.format("<p>1.00×10⁻⁴ m, 1.63 s, 0 and 60 deg</p>"))
+    _page(tmp_path / "wf" / "exp.html", article.format("<p>a step of 1.00e-04 m</p>"))
+    long_decimal = "<table><tr><td>1.6344416666666666</td></tr></table>"
+    _page(tmp_path / "wf" / "long.html", article.format(long_decimal))
+    _page(tmp_path / "wf" / "zero.html", article.format("<p>an error of -0.000 m</p>"))
+    _page(tmp_path / "wf" / "code.html", article.format('<div class="cell_input"><pre>x = 1e-4</pre></div>'))
+    _page(tmp_path / "reference" / "api.html", article.format("<p>tol=1e-12</p>"))
+    problems = check_book.check_number_format(tmp_path)
+    assert [p.split(":")[0] for p in problems] == ["wf/exp.html", "wf/long.html", "wf/zero.html"]
+    assert "'1.00e-04'" in problems[0] and "(exponent)" in problems[0]
+    assert check_book.main(["numbers", str(tmp_path)]) == 1
+
+
 PROSE_PAGE = """
 <nav><p>sidebar: navcore.location.fdoa is navigation, not prose</p></nav>
 <article class="bd-article"><section>

@@ -428,3 +428,62 @@ def test_composite_steps_give_the_single_step_histories_between_fixes():
     # the saw-tooth: 9 s after a fix the position error is well above its value at the fix
     k = 109
     assert slow[0].horizontal_position[k] > 1.2 * slow[0].horizontal_position[100]
+
+
+def _all_blocks_layout():
+    return ins_error_layout(
+        "position", "velocity", "clock bias", "clock drift", "misalignment", "gyro bias",
+        "gyro scale factor", "gyro misalignment", "accel bias", "accel scale factor",
+        "accel misalignment", "altimeter bias", "gravity", "clock g-sensitivity",
+        "pseudorange bias", channels=3,
+    )  # fmt: skip
+
+
+def _all_sources(scale=1.0):
+    from navcore.inertial.error_dynamics import ClockModel
+
+    return ErrorSources(
+        imu=ImuSpec("x", accel_random_walk=1e-3 * scale, gyro_random_walk=1e-6 * scale),
+        gravity=GaussMarkov(sigma=3e-4 * scale, distance_constant_m=2.0e4),
+        altimeter=GaussMarkov(sigma=10.0 * scale, distance_constant_m=5.0e4),
+        clock=ClockModel(bias_sigma=1.0, drift_sigma=0.1, bias_psd=0.2 * scale, drift_psd=0.01),
+    )
+
+
+@pytest.mark.parametrize("vertical_channel", [True, False])
+def test_batched_kernels_equal_the_checked_functions_per_condition(vertical_channel):
+    """Oracle: the public, per-condition error_dynamics, process_noise_psd, taylor_transition and
+    discrete_noise; the engine's batched, unchecked kernels give the same matrices for each of a
+    stack of random flight conditions (every block of the model present)."""
+    from scipy.spatial.transform import Rotation
+
+    from navcore.estimation.covariance_analysis import _discrete_noise_diag, _taylor_stack
+    from navcore.inertial.error_dynamics import _error_dynamics_stack, _process_noise_diag_stack
+
+    rng = np.random.default_rng(7)
+    lay = _all_blocks_layout()
+    srcs = [_all_sources(), _all_sources(2.0)]
+    M = 5
+    f = rng.normal(0.0, 3.0, (M, 3)) + np.array([0.0, 0.0, -9.8])
+    C = Rotation.random(M, random_state=3).as_matrix()
+    w = rng.normal(0.0, 0.05, (M, 3))
+    v = rng.normal(0.0, 150.0, (M, 3))
+    lat, h, speed = rng.uniform(-1.2, 1.2, M), rng.uniform(0.0, 9e3, M), rng.uniform(0.0, 300.0, M)
+    F = _error_dynamics_stack(
+        lay, f_ned=f, C_bn=C, omega_ib_b=w, v_ned=v, lat=lat, h=h, sources=srcs[0],
+        vertical_channel=vertical_channel,
+    )  # fmt: skip
+    q = np.stack([_process_noise_diag_stack(lay, s, speed) for s in srcs], axis=1)
+    dt = 1.0
+    Phi, Q = _taylor_stack(F, dt), _discrete_noise_diag(F, q, dt)
+    for m in range(M):
+        F1 = error_dynamics(
+            lay, f_ned=f[m], C_bn=C[m], omega_ib_b=w[m], v_ned=v[m], lat=float(lat[m]), h=float(h[m]),
+            sources=srcs[0], vertical_channel=vertical_channel,
+        )  # fmt: skip
+        np.testing.assert_allclose(F[m], F1, rtol=1e-14, atol=1e-18)
+        S1 = np.stack([process_noise_psd(lay, s, speed_mps=float(speed[m])) for s in srcs])
+        np.testing.assert_array_equal(np.stack([np.diag(x) for x in q[m]]), S1)
+        np.testing.assert_allclose(Phi[m], taylor_transition(F1, dt), rtol=1e-13, atol=1e-16)
+        Q1 = discrete_noise(F1, S1, dt)
+        np.testing.assert_allclose(Q[m], Q1, rtol=1e-12, atol=1e-14 * np.abs(Q1).max())

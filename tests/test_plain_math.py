@@ -107,3 +107,30 @@ def test_allowlist_entries_still_occur():
     """An allowlist entry whose text is gone is removed, so the list stays short and true."""
     present = {(who, hit) for who, _, text in _registry_texts() for _, hit in plain_math(text)}
     assert set(ALLOWED) <= present
+
+
+def _inventory_texts() -> list[tuple[str, str, str]]:
+    """The Coverage page's inventory of printed items (``paper_items.json``, key ``printed``):
+    each item's description, reason, locator and section, which the page shows in its tables.
+    Claim ids a reason names are identifiers, not formulas, and are left out of the scan."""
+    from navcore import coverage, ledger
+
+    ids = sorted((c.id for c in ledger.claims()), key=len, reverse=True)
+    texts = []
+    for item in coverage.items():
+        for field in ("printed", "reason", "locator", "section"):
+            text = getattr(item, field) or ""
+            for cid in ids:
+                if cid in text:
+                    text = text.replace(cid, "")
+            texts.append((item.id, field, text))
+    return texts
+
+
+def test_coverage_inventory_sets_every_formula_as_math():
+    texts = _inventory_texts()
+    assert len(texts) > 3000  # four fields of every printed item of the four papers
+    found = [
+        f"{who} ({field}): {kind} {hit!r}" for who, field, text in texts for kind, hit in plain_math(text)
+    ]
+    assert not found, "\n".join(found)

@@ -71,6 +71,7 @@ PARTS = {
     "atc10": "ATC-10",
     "kzl": "Knedlik, Zhou & Loffeld",
     "reference": "Reference",
+    "reports": "Verification reports",
 }
 
 REFERENCE_PAGES = (
@@ -95,6 +96,16 @@ def subset_toc(paper: str) -> str:
             "format: jb-book\nroot: reference/index\nparts:\n"
             "  - caption: Reference\n    chapters:\n"
             "      - file: reference/howto/index\n        sections:\n" + howto + pages
+        )
+    if paper == "reports":  # the four reports and the Verification pages they link to
+        reports = "".join(f"          - file: reports/{key}\n" for key in ("wf", "sp", "atc10", "kzl"))
+        return (
+            "format: jb-book\nroot: intro\nparts:\n"
+            "  - caption: Introduction\n    chapters:\n      - file: about\n      - file: notation\n"
+            "      - file: glossary\n"
+            "  - caption: Verification\n    chapters:\n      - file: ledger\n      - file: assumptions\n"
+            "      - file: coverage\n      - file: errata\n"
+            "      - file: reports/index\n        sections:\n" + reports + "      - file: bibliography\n"
         )
     return (
         "format: jb-book\nroot: intro\nparts:\n"
@@ -1095,7 +1106,8 @@ def main() -> int:
     parser.add_argument(
         "--only",
         default=None,
-        help="build one paper's chapter (wf, sp, atc10, kzl) or the API reference (reference)",
+        help="build one paper's chapter (wf, sp, atc10, kzl), the API reference (reference) "
+        "or the verification reports (reports)",
     )
     parser.add_argument("--out", type=Path, default=None, help="output folder (default: the repository)")
     parser.add_argument("--cache", action="store_true", help="execute through a jupyter-cache (see above)")

@@ -3,6 +3,7 @@
 Usage::
 
     python tools/check_book.py html _build/html        # helpers in code cells; notebook outputs
+    python tools/check_book.py numbers _build/html     # numbers as a program prints them
     python tools/check_book.py latex _build/latex      # overfull boxes; helpers in code listings
     python tools/check_book.py same BUILD_A BUILD_B    # byte-identical trees (PDF: up to its dates)
 
@@ -18,6 +19,9 @@ It also finds developer wording in anything a reader sees or downloads (see
 ``DEVELOPER_WORDING``): a claim's change history ("Verdict changed from ..."), the regression pin
 ``expected_status``, or test and oracle bookkeeping, in the text and the embedded data of
 every page but the API reference and in the downloadable notebooks' outputs.
+``numbers``: no number as a program prints it (``1.00e-04``, ``1.6344416666666666``,
+``-0.000``, ``60.000000``, a printed dictionary; see ``tools/check_numbers.py``) in the text a
+reader sees. Not yet part of ``html``: it joins it once a whole-book build counts no hit.
 ``latex``: the LaTeX log reports no overfull box wider than ``--max-overfull`` points, and
 no code listing shows a build helper.
 ``same``: every file of the two trees is byte-identical, except that PDFs are compared
@@ -211,6 +215,22 @@ def check_html(root: Path) -> list[str]:
     return problems + check_prose(root) + check_wording(root)
 
 
+def check_number_format(root: Path) -> list[str]:
+    """Numbers as a program prints them in what a reader sees (``tools/check_numbers.py``):
+    ``1.00e-04``, ``1.6344416666666666``, ``-0.000``, ``60.000000``, ``{180.0: 18.0}``."""
+    import importlib.util
+
+    path = Path(__file__).with_name("check_numbers.py")
+    spec = importlib.util.spec_from_file_location("check_numbers", path)
+    assert spec is not None and spec.loader is not None
+    numbers = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(numbers)
+    return [
+        f"{page}: number printed as a program prints it ({name}) {match!r}: ...{context}..."
+        for page, name, match, context in numbers.check(root)
+    ]
+
+
 def check_latex(root: Path, max_overfull: float = 3.0) -> list[str]:
     problems = []
     logs = sorted(root.glob("*.log"))
@@ -253,12 +273,14 @@ def same_trees(a: Path, b: Path) -> list[str]:
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("gate", choices=["html", "latex", "same"])
+    parser.add_argument("gate", choices=["html", "numbers", "latex", "same"])
     parser.add_argument("paths", nargs="+", type=Path)
     parser.add_argument("--max-overfull", type=float, default=3.0, help="points (latex gate)")
     args = parser.parse_args(argv)
     if args.gate == "html":
         problems = check_html(args.paths[0])
+    elif args.gate == "numbers":
+        problems = check_number_format(args.paths[0])
     elif args.gate == "latex":
         problems = check_latex(args.paths[0], args.max_overfull)
     else:

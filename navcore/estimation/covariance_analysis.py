@@ -70,9 +70,9 @@ from navcore.estimation.layout import StateLayout
 from navcore.gnss.constellation import Constellation
 from navcore.inertial.error_dynamics import (
     ErrorSources,
+    _error_dynamics_stack,
+    _process_noise_diag_stack,
     earth_rate_ned,
-    error_dynamics,
-    process_noise_psd,
     transport_rate_ned,
 )
 from navcore.inertial.trajectories import Trajectory
@@ -324,12 +324,6 @@ def run_covariance_analysis(
     counts = np.zeros(N, dtype=np.int64)
     snaps: list[dict[int, Array]] = [{} for _ in range(B)]
     want = {k % N for k in snapshots}
-    key = None
-    since = 0
-    Phi_t: Any = None  # the transitions of the current linearisation (set at k = 0)
-    Q_t: Any = None
-    Phi_f: Any = None
-    Q_f: Any = None
     speed = trajectory.speed
     omega_in = earth_rate_ned(trajectory.lat) + transport_rate_ned(
         trajectory.vel_ned, trajectory.lat, trajectory.h
@@ -338,95 +332,105 @@ def run_covariance_analysis(
     # relinearise when the flight condition moves by more than: 1e-4 m/s^2 of specific force,
     # 1e-2 m/s of velocity, 1e-5 in a direction cosine, 1e-8 rad/s of body rate
     tol = np.concatenate([np.full(3, 1e-4), np.full(3, 1e-2), np.full(9, 1e-5), np.full(3, 1e-8)])
-    ix_f = np.ix_(idx, idx)
     conds = np.concatenate(
         [trajectory.f_ned, trajectory.vel_ned, trajectory.C_bn.reshape(N, 9), omega_ib_b], axis=1
     )
     free = None if measurement_steps is None else ~np.asarray(measurement_steps, dtype=bool)
-    prop_t: Any = None
-    prop_f: Any = None
+    # The control flow (where to relinearise, where a composite step fits) depends on the
+    # flight condition alone: decide it first, then compute the transitions and noises of
+    # every linearisation point in batches, and run the sequential loop on covariances only.
+    plan, lin = _plan_steps(conds, tol, relinearize_every, free, stride, want)
+    lin_arr = np.asarray(lin, dtype=np.intp)
+    added = None if filter_added_psd is None else np.diag(np.asarray(filter_added_psd, dtype=float)) * dt
+    ix_f = np.ix_(idx, idx)
+
+    def transitions(lo: int) -> tuple[Array, Array, Array, Array]:
+        """Transitions and discrete noises (truth, filter) of linearisation points ``lo:lo+chunk``."""
+        js = lin_arr[lo : lo + _LIN_CHUNK]
+        F = _error_dynamics_stack(
+            truth_layout,
+            f_ned=trajectory.f_ned[js],
+            C_bn=trajectory.C_bn[js],
+            omega_ib_b=omega_ib_b[js],
+            v_ned=trajectory.vel_ned[js],
+            lat=np.asarray(trajectory.lat, dtype=float)[js],
+            h=np.broadcast_to(np.asarray(trajectory.h, dtype=float), (N,))[js],
+            sources=src_list[0],
+            vertical_channel=vertical_channel,
+        )
+        q = np.stack([_process_noise_diag_stack(truth_layout, s_, speed[js]) for s_ in src_list], axis=1)
+        Phi = _taylor_stack(F, dt)
+        Q = _discrete_noise_diag(F, q, dt)  # (M, B, n_t, n_t)
+        Qf = Q[:, :, idx][:, :, :, idx]
+        if added is not None:
+            Qf = Qf + added
+        return Phi, Q, Phi[:, idx][:, :, idx], Qf
+
+    L = stride
+    lo, hi = 0, 0
+    PhiT_all: Any = None
+    QT_all: Any = None
+    PhiF_all: Any = None
+    QF_all: Any = None
+    Phi_t: Any = None  # the transitions of the current linearisation (set at k = 1)
+    Q_t: Any = None
+    Phi_f: Any = None
+    Q_f: Any = None
     stride_cache: Any = None
-    k = 0
-    while k < N:
-        if k > 0:
-            j = k - 1
-            cond = conds[j]
-            if key is None or since >= relinearize_every or np.any(np.abs(cond - key) > tol):
-                F = _error_dynamics(
-                    truth_layout,
-                    f_ned=trajectory.f_ned[j],
-                    C_bn=trajectory.C_bn[j],
-                    omega_ib_b=omega_ib_b[j],
-                    v_ned=trajectory.vel_ned[j],
-                    lat=float(trajectory.lat[j]),
-                    h=float(trajectory.h[j]),
-                    sources=src_list[0],
-                    vertical_channel=vertical_channel,
+    for k, li, kind in plan:
+        if li >= 0:
+            if li >= hi:
+                lo, hi = li, li + _LIN_CHUNK
+                PhiT_all, QT_all, PhiF_all, QF_all = transitions(lo)
+            Phi_t, Q_t, Phi_f, Q_f = PhiT_all[li - lo], QT_all[li - lo], PhiF_all[li - lo], QF_all[li - lo]
+            stride_cache = None
+        if kind == 1:
+            Pt = Phi_t @ Pt @ Phi_t.T + Q_t
+            Pf = Phi_f @ Pf @ Phi_f.T + Q_f
+        elif kind == 2:
+            # L measurement-free steps under one linearisation: one composite step, and
+            # the variances of the L - 1 samples it skips propagated exactly from its start
+            j = k - L
+            if stride_cache is None:
+                PhiL, QL, QLf = np.eye(n_t), np.zeros_like(Q_t), np.zeros_like(Q_f)
+                pw, qt, qf = [], [], []
+                for _ in range(L):
+                    PhiL = Phi_t @ PhiL
+                    QL = Phi_t @ QL @ Phi_t.T + Q_t
+                    QLf = Phi_f @ QLf @ Phi_f.T + Q_f
+                    pw.append(PhiL)
+                    qt.append(np.diagonal(QL, axis1=-2, axis2=-1))
+                    qf.append(np.diagonal(QLf, axis1=-2, axis2=-1))
+                powers = np.stack(pw[:-1])
+                stride_cache = (
+                    _Propagator(PhiL, QL),
+                    _Propagator(PhiL[ix_f], QLf),
+                    powers,
+                    powers[:, idx][:, :, idx],
+                    np.stack(qt[:-1]),
+                    np.stack(qf[:-1]),
                 )
-                S = np.stack(
-                    [_process_noise_psd(truth_layout, s_, speed_mps=float(speed[j])) for s_ in src_list]
-                )
-                Phi_t = _taylor(F, dt)
-                Q_t = _discrete_noise(F, S, dt)
-                Phi_f = Phi_t[ix_f]
-                Q_f = Q_t[:, idx][:, :, idx]
-                if filter_added_psd is not None:
-                    Q_f = Q_f + np.diag(np.asarray(filter_added_psd, dtype=float)) * dt
-                prop_t, prop_f = _Propagator(Phi_t, Q_t), _Propagator(Phi_f, Q_f)
-                key, since, stride_cache = cond, 0, None
-            L = stride
-            if (
-                free is not None
-                and L > 1
-                and j + L < N
-                and since + L <= relinearize_every
-                and free[j + 1 : j + L].all()
-                and not any(j < w < j + L for w in want)
-                and np.all(np.abs(conds[j : j + L] - key) <= tol)
-            ):
-                # L measurement-free steps under one linearisation: one composite step, and
-                # the variances of the L - 1 samples it skips propagated exactly from its start
-                if stride_cache is None:
-                    PhiL, QL, QLf = np.eye(n_t), np.zeros_like(Q_t), np.zeros_like(Q_f)
-                    pw, qt, qf = [], [], []
-                    for _ in range(L):
-                        PhiL = Phi_t @ PhiL
-                        QL = Phi_t @ QL @ Phi_t.T + Q_t
-                        QLf = Phi_f @ QLf @ Phi_f.T + Q_f
-                        pw.append(PhiL)
-                        qt.append(np.diagonal(QL, axis1=-2, axis2=-1))
-                        qf.append(np.diagonal(QLf, axis1=-2, axis2=-1))
-                    powers = np.stack(pw[:-1])
-                    stride_cache = (
-                        _Propagator(PhiL, QL),
-                        _Propagator(PhiL[ix_f], QLf),
-                        powers,
-                        powers[:, idx][:, :, idx],
-                        np.stack(qt[:-1]),
-                        np.stack(qf[:-1]),
-                    )
-                comp_t, comp_f, pw_t, pw_f, qd_t, qd_f = stride_cache
-                tv[:, j + 1 : j + L] = comp_t.diagonals(Pt, pw_t, qd_t)
-                fv[:, j + 1 : j + L] = comp_f.diagonals(Pf, pw_f, qd_f)
-                Pt = comp_t(Pt)
-                Pf = comp_f(Pf)
-                k = j + L
-                since += L
-            else:
-                since += 1
-                Pt = prop_t(Pt)
-                Pf = prop_f(Pf)
+            comp_t, comp_f, pw_t, pw_f, qd_t, qd_f = stride_cache
+            tv[:, j + 1 : k] = comp_t.diagonals(Pt, pw_t, qd_t)
+            fv[:, j + 1 : k] = comp_f.diagonals(Pf, pw_f, qd_f)
+            Pt = comp_t(Pt)
+            Pf = comp_f(Pf)
         if schedule is not None:
-            meas = list(schedule(k))
+            meas = schedule(k)
             if meas:
-                Ht = np.vstack([np.atleast_2d(m.H) for m in meas])
-                blocks = [np.atleast_2d(m.R) for m in meas]
-                m_tot = Ht.shape[0]
-                Rt = np.zeros((m_tot, m_tot))
-                r0 = 0
-                for Rb in blocks:
-                    Rt[r0 : r0 + Rb.shape[0], r0 : r0 + Rb.shape[0]] = Rb
-                    r0 += Rb.shape[0]
+                if len(meas) == 1:
+                    Ht = np.atleast_2d(meas[0].H)
+                    Rt = np.atleast_2d(meas[0].R)
+                    m_tot = Ht.shape[0]
+                else:
+                    Ht = np.vstack([np.atleast_2d(m.H) for m in meas])
+                    blocks = [np.atleast_2d(m.R) for m in meas]
+                    m_tot = Ht.shape[0]
+                    Rt = np.zeros((m_tot, m_tot))
+                    r0 = 0
+                    for Rb in blocks:
+                        Rt[r0 : r0 + Rb.shape[0], r0 : r0 + Rb.shape[0]] = Rb
+                        r0 += Rb.shape[0]
                 Hf = Ht[:, idx]
                 Rf = np.broadcast_to(Rt, (B, m_tot, m_tot))
                 if inflate_filter_noise and unmodelled.size:
@@ -453,7 +457,6 @@ def run_covariance_analysis(
         if k in want:
             for b in range(B):
                 snaps[b][k] = Pt[b].copy()
-        k += 1
     p = truth_layout.slice("position").start
     v = truth_layout.slice("velocity").start
     out = []
@@ -479,10 +482,65 @@ def run_covariance_analysis(
 
 
 _GAUSS3 = np.polynomial.legendre.leggauss(3)
-# the error model without its argument checks: the engine checks its inputs once, at its
-# boundary, not in every step of its loop
-_error_dynamics = getattr(error_dynamics, "__wrapped__", error_dynamics)
-_process_noise_psd = getattr(process_noise_psd, "__wrapped__", process_noise_psd)
+# linearisation points whose transitions are computed in one batch (bounds the memory of the
+# (chunk, B, n, n) noise stack)
+_LIN_CHUNK = 128
+
+
+def _plan_steps(
+    conds: Array,
+    tol: Array,
+    relinearize_every: int,
+    free: NDArray[np.bool_] | None,
+    stride: int,
+    want: set[int],
+) -> tuple[list[tuple[int, int, int]], list[int]]:
+    """The control flow of :func:`run_covariance_analysis`, decided from the flight condition.
+
+    Returns the steps ``(k, li, kind)`` the engine visits (``kind`` 0: the first sample, 1: a
+    single step from ``k - 1``, 2: a composite step of ``stride`` samples ending at ``k``;
+    ``li >= 0``: relinearise first, at the ``li``-th linearisation point) and the sample
+    index ``j`` of each linearisation point. A step relinearises at the first sample, after
+    ``relinearize_every`` steps, or when the condition ``conds[j]`` moves from the one of the
+    last linearisation by more than ``tol``; a composite step needs ``stride - 1``
+    measurement-free samples, no snapshot inside, and the condition within ``tol`` throughout.
+    """
+    N = conds.shape[0]
+    L = stride
+    plan: list[tuple[int, int, int]] = [(0, -1, 0)]
+    lin: list[int] = []
+    key_j, since = -1, 0
+    moved: Any = None  # moved[i]: the condition at key_j + i is out of tolerance
+    kept: Any = None  # kept[i]: the condition at key_j + i is within tolerance
+    wants = sorted(want)
+    k = 1
+    while k < N:
+        j = k - 1
+        li = -1
+        if key_j < 0 or since >= relinearize_every or moved[since]:
+            lin.append(j)
+            li = len(lin) - 1
+            key_j, since = j, 0
+            dev = np.abs(conds[j : j + relinearize_every + 1] - conds[j])
+            moved = np.any(dev > tol, axis=1).tolist()
+            kept = np.all(dev <= tol, axis=1)
+        if (
+            free is not None
+            and L > 1
+            and j + L < N
+            and since + L <= relinearize_every
+            and free[j + 1 : j + L].all()
+            and not any(j < w < j + L for w in wants)
+            and kept[since : since + L].all()
+        ):
+            since += L
+            k = j + L
+            plan.append((k, li, 2))
+        else:
+            since += 1
+            plan.append((k, li, 1))
+        k += 1
+    return plan, lin
 
 
 def _static_states(Phi: Array, Q: Array) -> NDArray[np.bool_]:
@@ -570,6 +628,46 @@ def _discrete_noise(F: Array, S: Array, dt: float) -> Array:
     return 0.5 * (Q + np.swapaxes(Q, -1, -2))
 
 
+def _discrete_noise_diag(F: Array, q: Array, dt: float) -> Array:
+    """:func:`discrete_noise` of ``M`` systems ``F`` ``(M, n, n)``, each driven by ``B``
+    diagonal PSDs ``diag(q[m, b])`` (``q``: ``(M, B, n)``), unchecked: ``(M, B, n, n)``.
+
+    The same quadrature as :func:`discrete_noise` (``P S = P * q`` for a diagonal ``S``, exactly).
+    """
+    x, w = _GAUSS3
+    Q = np.zeros((*q.shape, q.shape[-1]))
+    driven = np.flatnonzero(np.any(q != 0.0, axis=(0, 1)))  # only these columns of S are not 0
+    qd = q[:, :, None, driven]
+    for xi, wi in zip(x, w, strict=True):
+        P = _taylor_stack(F, 0.5 * dt * (xi + 1.0))[:, None, :, driven]  # (M, 1, n, d)
+        Q = Q + (0.5 * dt * wi) * ((P * qd) @ np.swapaxes(P, -1, -2))
+    return 0.5 * (Q + np.swapaxes(Q, -1, -2))
+
+
+def _taylor_stack(F: Array, dt: float, order: int = 4) -> Array:
+    """:func:`_taylor` of a stack ``(M, n, n)``, transforming only the rows of ``F`` that are
+    not zero in any member (a zero row of ``F``, a random constant's, is a unit row of ``Phi``).
+
+    With ``F = [[a, b], [0, 0]]`` (dynamic rows first) the Horner step
+    ``Phi <- I + F dt Phi / j`` keeps ``Phi = [[x, y], [0, I]]`` and updates
+    ``[x, y] <- [I, 0] + (a dt [x, y] + [0, b dt]) / j``.
+    """
+    n = F.shape[-1]
+    dyn = np.flatnonzero(np.any(F != 0.0, axis=(0, 2)))
+    eye = np.eye(n)
+    A = F[:, dyn, :] * dt  # (M, d, n)
+    A_dd = A[:, :, dyn]
+    A_ds = A.copy()
+    A_ds[:, :, dyn] = 0.0  # the columns of the static states
+    rows = eye[dyn]
+    X = rows
+    for j in range(order, 0, -1):
+        X = rows + (A_dd @ X + A_ds) / j
+    Phi = np.broadcast_to(eye, F.shape).copy()
+    Phi[:, dyn, :] = X
+    return Phi
+
+
 def taylor_transition(F: ArrayLike, dt: float, order: int = 4) -> Array:
     r"""Transition ``sum_{j <= order} (F dt)^j / j!`` (Horner form).
 
@@ -601,9 +699,9 @@ def taylor_transition(F: ArrayLike, dt: float, order: int = 4) -> Array:
 
 
 def _taylor(F: Array, dt: float, order: int = 4) -> Array:
-    """:func:`taylor_transition` without the argument checks (the engine's inner loop)."""
+    """:func:`taylor_transition` without the argument checks (also of a stack ``(..., n, n)``)."""
     A = F * dt
-    eye = np.eye(A.shape[0])
+    eye = np.eye(A.shape[-1])
     Phi = eye
     for j in range(order, 0, -1):
         Phi = eye + (A @ Phi) / j
@@ -895,30 +993,40 @@ def tightly_coupled_schedule(
     use_code = code & (geometry.elevation >= mask_rad)
     use_carr = carrier & (geometry.elevation >= mask_rad)
     ch = np.arange(n_ch)
+    # the rows that do not depend on the geometry, and R, per pattern of tracked channels
+    patterns: dict[bytes, tuple[Array, Array, NDArray[np.intp], NDArray[np.intp]]] = {}
+
+    def pattern(k: int) -> tuple[Array, Array, NDArray[np.intp], NDArray[np.intp]]:
+        key = use_code[k].tobytes() + use_carr[k].tobytes()
+        if key not in patterns:
+            cc, cr = ch[use_code[k]], ch[use_carr[k]]
+            H0 = np.zeros((cc.size + cr.size, n))
+            rows = np.arange(cc.size)
+            if i_b is not None:
+                H0[rows, i_b] = 1.0
+            if i_pb is not None:
+                H0[rows, i_pb + cc] = 1.0
+            rows = cc.size + np.arange(cr.size)
+            if i_d is not None:
+                H0[rows, i_d] = 1.0
+            if i_rb is not None:
+                H0[rows, i_rb + cr] = 1.0
+            R = np.diag(np.r_[np.full(cc.size, pseudorange_noise**2), np.full(cr.size, range_rate_noise**2)])
+            patterns[key] = (H0, R, cc, cr)
+        return patterns[key]
 
     def sched(k: int) -> list[Measurement]:
         if k % every:
             return []
-        cc, cr = ch[use_code[k]], ch[use_carr[k]]
+        H0, R, cc, cr = pattern(k)
         if cc.size + cr.size == 0:
             return []
-        H = np.zeros((cc.size + cr.size, n))
+        H = H0.copy()
         u = geometry.u_ned[k]
-        rows = np.arange(cc.size)
-        H[rows, p0 : p0 + 3] = -u[cc]
-        if i_b is not None:
-            H[rows, i_b] = 1.0
-        if i_pb is not None:
-            H[rows, i_pb + cc] = 1.0
-        rows = cc.size + np.arange(cr.size)
-        H[rows, v0 : v0 + 3] = -u[cr]
-        if i_d is not None:
-            H[rows, i_d] = 1.0
-        if i_rb is not None:
-            H[rows, i_rb + cr] = 1.0
+        H[: cc.size, p0 : p0 + 3] = -u[cc]
+        H[cc.size :, v0 : v0 + 3] = -u[cr]
         if i_g is not None:
-            H[rows, i_g] = g_load[k]  # type: ignore[index]  # i_g is None when g_load is
-        R = np.diag(np.r_[np.full(cc.size, pseudorange_noise**2), np.full(cr.size, range_rate_noise**2)])
+            H[cc.size :, i_g] = g_load[k]  # type: ignore[index]  # i_g is None when g_load is
         return [Measurement._unchecked(H, R)]
 
     return sched

@@ -599,6 +599,110 @@ def error_dynamics(
     return F
 
 
+def _skew_unchecked(v: Array) -> Array:
+    """:func:`skew_stack` of a ``(M, 3)`` stack without the argument checks: ``(M, 3, 3)``."""
+    out = np.zeros((v.shape[0], 3, 3))
+    x, y, w = v[:, 0], v[:, 1], v[:, 2]
+    out[:, 0, 1], out[:, 0, 2] = -w, y
+    out[:, 1, 0], out[:, 1, 2] = w, -x
+    out[:, 2, 0], out[:, 2, 1] = -y, x
+    return out
+
+
+def _error_dynamics_stack(
+    layout: StateLayout,
+    *,
+    f_ned: Array,
+    C_bn: Array,
+    omega_ib_b: Array,
+    v_ned: Array,
+    lat: Array,
+    h: Array,
+    sources: ErrorSources | None,
+    g: float = G0,
+    vertical_channel: bool = True,
+) -> Array:
+    """:func:`error_dynamics` for ``M`` flight conditions at once, without the argument checks.
+
+    The covariance engine's kernel: its inputs are a trajectory's samples, checked where the
+    trajectory was built. ``f_ned``, ``omega_ib_b``, ``v_ned`` are ``(M, 3)``, ``C_bn`` is
+    ``(M, 3, 3)``, ``lat`` (rad) and ``h`` are ``(M,)``; returns ``(M, n, n)``, element for
+    element the matrices :func:`error_dynamics` gives for each condition (the same
+    arithmetic, batched).
+    """
+    M, n = f_ned.shape[0], layout.size
+    F = np.zeros((M, n, n))
+    names = set(layout.names)
+    for req in ("position", "velocity", "misalignment"):
+        if req not in names:
+            raise ValueError(f"layout must contain block {req!r}")
+    C, f, w_ib, v = C_bn, f_ned, omega_ib_b, v_ned
+    f_b = np.einsum("mji,mj->mi", C, f)  # C^T f
+    w_ie = OMEGA_EARTH * np.stack([np.cos(lat), np.zeros_like(lat), -np.sin(lat)], -1)
+    R = SCHULER_RADIUS_M + h
+    w_en = np.stack([v[:, 1], -v[:, 0], -v[:, 1] * np.tan(lat)], -1) / R[:, None]
+    sl = layout.slice
+    p, vv, a = sl("position"), sl("velocity"), sl("misalignment")
+    F[:, p, vv] = np.eye(3)
+    F[:, p, p] = -_skew_unchecked(w_en)
+    F[:, vv, vv] = -_skew_unchecked(2 * w_ie + w_en)
+    F[:, vv, a] = _skew_unchecked(f)
+    F[:, vv, p] = (g / R)[:, None, None] * np.diag([-1.0, -1.0, 2.0])
+    F[:, a, a] = -_skew_unchecked(w_ie + w_en)
+    makers = {
+        "accel bias": (vv, lambda: C),
+        "accel scale factor": (vv, lambda: C * f_b[:, None, :]),
+        "accel misalignment": (vv, lambda: C @ _skew_unchecked(f_b)),
+        "gyro bias": (a, lambda: -C),
+        "gyro scale factor": (a, lambda: -C * w_ib[:, None, :]),
+        "gyro misalignment": (a, lambda: -C @ _skew_unchecked(w_ib)),
+    }
+    for block, (rows, make) in makers.items():
+        if block in names:
+            F[:, rows, sl(block)] = make()
+    speed = np.sqrt(np.einsum("mi,mi->m", v, v))
+    eye3 = np.eye(3)
+    if "gravity" in names:
+        F[:, vv, sl("gravity")] = eye3
+        if sources is not None and sources.gravity is not None:
+            beta = speed / sources.gravity.distance_constant_m
+            F[:, sl("gravity"), sl("gravity")] = -beta[:, None, None] * eye3
+    if "altimeter bias" in names and sources is not None and sources.altimeter is not None:
+        beta = speed / sources.altimeter.distance_constant_m
+        F[:, sl("altimeter bias"), sl("altimeter bias")] = -beta[:, None, None]
+    if "clock bias" in names and "clock drift" in names:
+        F[:, sl("clock bias"), sl("clock drift")] = 1.0
+    if "clock bias" in names and "clock g-sensitivity" in names:
+        f_abs = np.sqrt(np.einsum("mi,mi->m", f, f))
+        F[:, sl("clock bias"), sl("clock g-sensitivity")] = (f_abs / G0)[:, None, None]
+    if not vertical_channel:
+        for i in (p.start + 2, vv.start + 2):
+            F[:, i, :] = 0.0
+            F[:, :, i] = 0.0
+    return F
+
+
+def _process_noise_diag_stack(layout: StateLayout, sources: ErrorSources, speed_mps: Array) -> Array:
+    """Diagonals of :func:`process_noise_psd` at ``M`` ground speeds, unchecked: ``(M, n)``."""
+    q = np.zeros((speed_mps.size, layout.size))
+    names = layout.names
+    imu = sources.imu
+    q[:, layout.slice("velocity")] = imu.accel_random_walk**2
+    q[:, layout.slice("misalignment")] = imu.gyro_random_walk**2
+    if "gravity" in names and sources.gravity is not None:
+        beta = speed_mps / sources.gravity.distance_constant_m
+        q[:, layout.slice("gravity")] = (2 * sources.gravity.sigma**2 * beta)[:, None]
+    if "altimeter bias" in names and sources.altimeter is not None:
+        beta = speed_mps / sources.altimeter.distance_constant_m
+        q[:, layout.slice("altimeter bias")] = (2 * sources.altimeter.sigma**2 * beta)[:, None]
+    if sources.clock is not None:
+        if "clock bias" in names:
+            q[:, layout.slice("clock bias")] = sources.clock.bias_psd
+        if "clock drift" in names:
+            q[:, layout.slice("clock drift")] = sources.clock.drift_psd
+    return q
+
+
 def process_noise_psd(layout: StateLayout, sources: ErrorSources, *, speed_mps: float = 0.0) -> Array:
     """Diagonal state-space noise PSD ``G Q G^T`` for :func:`error_dynamics`.
 

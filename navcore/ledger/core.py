@@ -324,12 +324,12 @@ class Tolerance:
         not significant)"``)."""
         parts = []
         if self.abs is not None and (self.abs or self.rel is None):
-            parts.append(f"±{self.abs:.4g}")
+            parts.append("±" + _number_math(f"{self.abs:.4g}"))
         if self.rel is not None:
             parts.append(f"±{100 * self.rel:.3g} %")
         text = " or ".join(parts) if parts and parts != ["±0"] else "exact"
         if self.loose_abs is not None:
-            text += f" (±{self.loose_abs:.4g} if trailing zeros are not significant)"
+            text += f" (±{_number_math(f'{self.loose_abs:.4g}')} if trailing zeros are not significant)"
         return text
 
 
@@ -1390,10 +1390,22 @@ class Evaluation:
 
 
 def _plain(value: Any) -> str:
+    r"""A value in a note's text: six significant digits, a very large or small number as
+    inline math (never a program's ``1.023e+06`` or a string of zeros such as ``0.00094007``).
+
+    Examples
+    --------
+    >>> _plain(1023000.0), _plain(0.00094007), _plain(0.0226556), _plain(2.5), _plain(True)
+    ('$1.023 \\times 10^{6}$', '$9.4007 \\times 10^{-4}$', '0.0226556', '2.5', 'true')
+    """
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, float):
-        return f"{value:.6g}"
+        text = f"{value:.6g}"
+        if value != 0 and abs(value) < 1e-3 and "e" not in text:
+            mantissa, exponent = f"{value:.5e}".split("e")
+            text = mantissa.rstrip("0").rstrip(".") + "e" + exponent
+        return _number_math(text)
     return str(value)
 
 

@@ -18,6 +18,7 @@ import re
 from collections.abc import Iterable, Sequence
 from typing import Any
 
+from navcore.formatting import format_number
 from navcore.ledger.core import ERRATUM_BASES, STATUSES, TEXT_ONLY_CAVEAT, Erratum, Evaluation, claim_quote
 from navcore.ledger.inputs import _label_and_unit
 from navcore.ledger.registry import counts, errata, evaluations
@@ -80,12 +81,16 @@ def format_value(value: Any, digits: int = 5) -> str:
     str
         ``"—"`` for ``None``; ``"true"``/``"false"`` for a truth value; ``"∞"``/``"−∞"``;
         an integral value below a million without decimals; otherwise ``digits``
-        significant digits.
+        significant digits (trailing zeros dropped), fixed between 0.001 and a million and
+        otherwise in the book's one number format (``navcore.formatting.format_number``:
+        ``9.4007×10⁻⁴``, never ``9.4007e-04`` or ``0.00094007``).
 
     Examples
     --------
     >>> format_value(17.6712345), format_value(3.0), format_value(True), format_value(None)
     ('17.671', '3', 'true', '—')
+    >>> format_value(0.00094007), format_value(3.98601e14), format_value(123456.7), format_value(-1e-9)
+    ('9.4007×10⁻⁴', '3.986×10¹⁴', '123457', '-1×10⁻⁹')
     """
     if value is None:
         return "—"
@@ -96,7 +101,13 @@ def format_value(value: Any, digits: int = 5) -> str:
         return "∞" if v > 0 else "−∞"
     if v == int(v) and abs(v) < 1e6:
         return str(int(v))
-    return f"{v:.{digits}g}"
+    if 1e-3 <= abs(v) < 1e6:
+        text = f"{v:.{digits}g}"
+        return text if "e" not in text else format_number(v, digits=digits)
+    mantissa, _, exponent = format_number(v, digits=digits).partition("×")
+    if "." in mantissa:  # as the fixed form: significant digits without trailing zeros
+        mantissa = mantissa.rstrip("0").rstrip(".")
+    return mantissa + ("×" + exponent if exponent else "")
 
 
 def _published(e: Evaluation) -> str:
@@ -442,6 +453,11 @@ def latex_table(head: Sequence[str], body: Sequence[Sequence[str]]) -> str:
     \hline \endfoot
     SP & \mbox{155} \\
     KZL & \mbox{48} \\
+
+    A heading's formula is set as math too:
+
+    >>> print(latex_table(["$\\sigma_0$ (ns)"], [["5"]]).splitlines()[3])
+    \hline \textbf{$\sigma_0$ (ns)} \\ \hline \endfirsthead
     """
     ncols = len(head)
     cells = [[str(c) for c in row] + [""] * (ncols - len(row)) for row in body]
@@ -483,19 +499,22 @@ def latex_table(head: Sequence[str], body: Sequence[Sequence[str]]) -> str:
     if natural <= 60:  # a narrow table keeps its natural width
         cols = "".join("r" if numeric[j] else "l" for j in range(ncols))
 
+    def text_cell(text: str) -> str:  # words escaped, $...$ set as math
+        return "".join(
+            f"${piece}$" if is_math else _tex_escape(piece).replace("\u200b", r"\allowbreak{}")
+            for is_math, piece in _text_pieces(text)
+        )
+
     def cell(text: str, j: int) -> str:
         if numeric[j]:
             text = _tex_escape(text)
             return rf"\mbox{{{text}}}" if text else text
-        text = "".join(
-            f"${piece}$" if is_math else _tex_escape(piece).replace("\u200b", r"\allowbreak{}")
-            for is_math, piece in _text_pieces(text)
-        )
+        text = text_cell(text)
         if text.startswith("["):  # after the previous row's \\ a "[" would read as its option
             text = "{}" + text
         return text
 
-    header = " & ".join(rf"\textbf{{{_tex_escape(str(h))}}}" for h in head)
+    header = " & ".join(rf"\textbf{{{text_cell(str(h))}}}" for h in head)
     out = [
         rf"\begingroup{size}\setlength{{\tabcolsep}}{{4pt}}\hyphenpenalty=10000\exhyphenpenalty=10000",
         rf"\begin{{longtable}}{{{cols}}}",
@@ -716,6 +735,49 @@ def _printed_tex(text: str) -> str:
     return "".join(out)
 
 
+def _printed_html(text: str, *, fold: int = 0) -> str:
+    r"""The Printed cell of an HTML claim table: the paper's words as text and its formulas as
+    MathJax math (a display formula inline, without its equation number), a formula too wide
+    for a narrow column scrolling inside its own box, and LaTeX transcribed without math
+    delimiters as small source text that may break anywhere. A short value stays on one line.
+
+    Parameters
+    ----------
+    text : str
+        What the paper printed (:func:`_printed_text`).
+    fold : int, optional
+        A quote longer than this many characters is folded behind a "quote" disclosure
+        (0: never), so that a narrow column is not a long thin paragraph.
+
+    Examples
+    --------
+    >>> print(_printed_html("about 10 m"))
+    about&nbsp;10&nbsp;m
+    >>> print(_printed_html("$$x = 1 \\quad (3)$$"))
+    <span class="math notranslate nohighlight">\(x = 1\)</span>
+    >>> "<details" in _printed_html("a long sentence the paper printed, word for word", fold=20)
+    True
+    """
+    if len(text) <= 16 and "$" not in text and "\\" not in text:
+        return _nowrap(text)
+    text = _DISPLAY.sub(lambda m: "$" + _EQ_NUMBER.sub("", m.group(1)).strip() + "$", text)
+    pieces = math_spans(text)
+    if any("\\" in piece for is_math, piece in pieces if not is_math):  # LaTeX without delimiters
+        body = f'<code class="ledger-latex">{html.escape(text)}</code>'
+    else:
+        out = []
+        for is_math, piece in pieces:
+            if not is_math:
+                out.append(html.escape(piece))
+                continue
+            span = f'<span class="math notranslate nohighlight">\\({html.escape(piece)}\\)</span>'
+            out.append(span if len(piece) <= 24 else f'<span class="ledger-math-wide">{span}</span>')
+        body = "".join(out)
+    if fold and len(text) > fold:
+        return f'<details class="ledger-quote"><summary>quote</summary>{body}</details>'
+    return body
+
+
 def _reproduced_text(e: Evaluation) -> str:
     if _is_truth(e.reproduced):
         return _statement_word(bool(e.reproduced), printed=False)
@@ -723,9 +785,11 @@ def _reproduced_text(e: Evaluation) -> str:
 
 
 def _nowrap(text: str) -> str:
-    """A short value kept on one line (number and unit together); long text may wrap."""
+    """A short value kept on one line (number and unit together); words ("does not hold")
+    and long text may wrap at their spaces."""
     escaped = html.escape(text)
-    return escaped.replace(" ", "&nbsp;") if len(text) <= 16 else escaped
+    short_number = len(text) <= 16 and any(ch.isdigit() for ch in text)
+    return escaped.replace(" ", "&nbsp;") if short_number else escaped
 
 
 def _tolerance_text(e: Evaluation) -> str:
@@ -1091,7 +1155,7 @@ class LedgerTable:
                 kind = html.escape(_KIND_LABELS.get(str(c.kind), str(c.kind)))
                 cells = (
                     ("ledger-what", "", what),
-                    ("ledger-value", "Printed", _nowrap(_printed_text(e))),
+                    ("ledger-value", "Printed", _printed_html(_printed_text(e))),
                     ("ledger-value", "Reproduced", _nowrap(_reproduced_text(e))),
                     ("ledger-verdict", "Verdict", self._verdict_html(e)),
                     ("ledger-kind", "Kind", f'<span class="ledger-kind-label">{kind}</span>'),
@@ -1604,25 +1668,40 @@ _LEDGER_JS = r"""
         if (v && typeof v === "object") v = JSON.stringify(v);
         return v;
       }
+      var sortSelect = app.querySelector("select[data-sort]");
+      var sortButton = app.querySelector("button[data-sort-dir]");
+      // sort by a column (the headings on a wide screen, the sort menu on the cards);
+      // no key restores the ledger's order
+      function sortBy(key, dir) {
+        sortKey = key;
+        sortDir = dir;
+        app.querySelectorAll("th[data-key]").forEach(function (o) {
+          if (key && o.dataset.key === key) o.setAttribute("aria-sort", dir > 0 ? "ascending" : "descending");
+          else o.removeAttribute("aria-sort");
+        });
+        if (sortSelect) sortSelect.value = key || "";
+        if (sortButton) sortButton.textContent = dir > 0 ? "ascending" : "descending";
+        rows.sort(function (a, b) {
+          if (!key) return +a.dataset.index - +b.dataset.index;
+          var x = value(a, key), y = value(b, key);
+          var rx = rank(x), ry = rank(y);
+          if (rx !== ry) return rx - ry;  // numbers, then text and true/false, then blanks
+          if (rx === 0) return dir * (x - y);
+          if (rx === 2) return 0;
+          return dir * String(x).localeCompare(String(y), undefined, {numeric: true});
+        });
+        rows.forEach(function (tr) { tbody.appendChild(tr); });
+      }
       app.querySelectorAll("th[data-key]").forEach(function (th) {
-        var button = th.querySelector("button");
-        button.addEventListener("click", function () {
+        th.querySelector("button").addEventListener("click", function () {
           var key = th.dataset.key;
-          sortDir = sortKey === key ? -sortDir : 1;
-          sortKey = key;
-          app.querySelectorAll("th[data-key]").forEach(function (o) { o.removeAttribute("aria-sort"); });
-          th.setAttribute("aria-sort", sortDir > 0 ? "ascending" : "descending");
-          rows.sort(function (a, b) {
-            var x = value(a, key), y = value(b, key);
-            var rx = rank(x), ry = rank(y);
-            if (rx !== ry) return rx - ry;  // numbers, then text and true/false, then blanks
-            if (rx === 0) return sortDir * (x - y);
-            if (rx === 2) return 0;
-            return sortDir * String(x).localeCompare(String(y), undefined, {numeric: true});
-          });
-          rows.forEach(function (tr) { tbody.appendChild(tr); });
+          sortBy(key, sortKey === key ? -sortDir : 1);
         });
       });
+      if (sortSelect) {
+        sortSelect.addEventListener("change", function () { sortBy(sortSelect.value || null, 1); });
+      }
+      if (sortButton) sortButton.addEventListener("click", function () { sortBy(sortKey, -sortDir); });
       search.addEventListener("input", update);
       selects.forEach(function (s) { s.addEventListener("change", update); });
       app.querySelectorAll("button[data-download]").forEach(function (b) {
@@ -1672,8 +1751,10 @@ class InteractiveLedger:
     :meth:`~navcore.ledger.core.Evaluation.as_json`, so the download is the command line's
     JSON; see :func:`json_export` and :func:`csv_export`), with the build's provenance where
     the book put it on the page (a JSON script element ``navcore-provenance``). Columns for
-    the optional record fields ``kind`` and ``band`` appear when any claim has them. Below
-    640 px each row becomes a card. PDF: a compact table without notes.
+    the optional record fields ``kind`` and ``band`` appear when any claim has them. The
+    columns share the text column's width (the stylesheet's shares add up to 100 %); below
+    900 px each row becomes a card without its empty fields, sorted by a menu instead of the
+    column headings. PDF: a compact table without notes.
 
     Parameters
     ----------
@@ -1731,6 +1812,12 @@ class InteractiveLedger:
         if any(r.get("kind") for r in self.records):
             kinds = sorted({r["kind"] for r in self.records if r.get("kind")})
             controls.append(self._select("kind", "Kind", kinds))
+        sort_options = "".join(f'<option value="{k}">{html.escape(h)}</option>' for k, h in cols)
+        controls.append(
+            '<span class="ledger-sort"><label>Sort by <select data-sort>'
+            f'<option value="">the ledger\'s order</option>{sort_options}</select></label>'
+            '<button type="button" data-sort-dir title="reverse the order">ascending</button></span>'
+        )
         controls += [
             '<span class="ledger-count" aria-live="polite"></span>',
             '<span class="ledger-downloads">Download the rows shown: '
@@ -1764,12 +1851,16 @@ class InteractiveLedger:
                 "kind": html.escape(str(rec.get("kind") or "")),
                 "locator": html.escape(r["locator"]),
                 "quantity": f"{html_text(r['quantity'])}<details><summary>note</summary>{note}</details>",
-                "published": _nowrap(_printed_text(e)),
+                "published": _printed_html(_printed_text(e), fold=40),
                 "reproduced": _nowrap(_reproduced_text(e)),
                 "band": html.escape(_band(rec, r["unit"])),
                 "status": status,
             }
-            tds = "".join(f'<td data-label="{html.escape(h)}">{cells[k]}</td>' for k, h in cols)
+            tds = "".join(
+                f'<td class="ledger-col-{k}{"" if cells[k] else " ledger-empty"}" '
+                f'data-label="{html.escape(h)}">{cells[k]}</td>'
+                for k, h in cols
+            )
             body.append(
                 f'<tr id="{html.escape(r["id"].lower())}" data-index="{index}" '
                 f'class="{_status_class(r["status"])}">{tds}</tr>'
