@@ -9,7 +9,8 @@ simple closed forms of their inputs, so which runs are made, which band results 
 verdict follows can be counted by hand.
 
 * the band's corners: six assumed inputs where only one off-diagonal corner agrees (every
-  corner is run up to six inputs); seven inputs fall back to the documented four corners;
+  corner is run up to six inputs); seven inputs fall back to the documented four corners and
+  the two steepest ones;
 * the verdict rule with an admissible and a plausible-range input read together;
 * the input cache: a cached function reading two inputs of which one is overridden (the
   overridden value is used, and both reads are recorded, on a miss and on a hit); a cached
@@ -107,20 +108,49 @@ def test_six_assumed_inputs_only_an_off_diagonal_corner_agrees():
     assert max(one_at_a_time) == pytest.approx(90.0 + 10.0 / 32)
 
 
-def test_seven_assumed_inputs_fall_back_to_four_corners():
-    """Beyond six inputs: each input at its ends and four corners, all low, all high, the first
-    half low and the rest high, and its mirror (core._band_runs). Oracle: the run list by hand."""
+def test_seven_assumed_inputs_fall_back_to_four_corners_and_the_steepest_two():
+    """Beyond six inputs: each input at its ends, four corners (all low, all high, the first half
+    low and the rest high, and its mirror) and the two corners where each input sits at the end
+    that raised (lowered) the value one at a time (core._band_runs). Oracle: the run list and the
+    band by hand for 10 + x0 - x1 + x2 - x3 + x4 - x5 + x6, whose extremes (14 at high, low, high,
+    ..., 7 at its mirror) no diagonal corner reaches (those give 10 or 11)."""
+    runs = []
+    signs = (1, -1, 1, -1, 1, -1, 1)
+
+    def compute():
+        xs = tuple(getattr(IN, f"x{i}") for i in range(7))
+        runs.append(xs)
+        return 10.0 + sum(s * x for s, x in zip(signs, xs, strict=True))
+
+    ev = evaluate(make(compute=compute, expected_status="consistent"))
+    assert ev.status == "consistent"
+    lows, highs = (0.0,) * 7, (1.0,) * 7
+    up = tuple(1.0 if s > 0 else 0.0 for s in signs)
+    down = tuple(1.0 - x for x in up)
+    corners = [lows, highs, lows[:3] + highs[3:], highs[:3] + lows[3:], up, down]
+    assert runs[-6:] == corners
+    assert len(runs) == 1 + 7 * 2 + 6
+    assert ev.band == pytest.approx((7.0, 14.0))
+
+
+def test_the_steepest_corners_are_skipped_for_a_statement():
+    """A statement's values are not numbers that order: beyond six inputs only the four corners."""
     runs = []
 
     def compute():
         xs = tuple(getattr(IN, f"x{i}") for i in range(7))
         runs.append(xs)
-        return 10.0 + sum(xs) - 3.5
+        return sum(xs) >= 0.0
 
-    evaluate(make(compute=compute, expected_status="consistent"))
-    lows, highs = (0.0,) * 7, (1.0,) * 7
-    corners = [lows, highs, lows[:3] + highs[3:], highs[:3] + lows[3:]]
-    assert runs[-4:] == corners
+    evaluate(
+        make(
+            published=True,
+            unit="statement",
+            tolerance=Tolerance(reason="exact", abs=0.0, policy="exact"),
+            compute=compute,
+            expected_status="consistent",
+        )
+    )
     assert len(runs) == 1 + 7 * 2 + 4
 
 

@@ -1499,7 +1499,9 @@ def _run(claim: Claim, overrides: dict[str, Any] | None = None) -> tuple[Any, di
 
 
 #: Up to this many assumed inputs, the band includes every corner of their box (2**6 = 64 runs);
-#: beyond it, each input one at a time plus four diagonal corners.
+#: beyond it, each input one at a time plus four diagonal corners and, for a numeric value, the
+#: two corners where every input sits at the end that raised (lowered) the value one at a time
+#: (the extremes of a monotone response, which the diagonals can miss).
 MAX_CORNER_INPUTS = 6
 
 #: Up to this many combinations of the readings of the conventions a claim reads are run (all
@@ -1532,12 +1534,36 @@ def _band_runs(
         lows, highs = [inp.low for inp in assumed], [inp.high for inp in assumed]
         half = len(assumed) // 2
         corners = [lows, highs, lows[:half] + highs[half:], highs[:half] + lows[half:]]
+        corners += _steepest_corners(assumed, sensitivity)
     else:
         corners = []
     for corner in corners:
         v, _ = _run(claim, {**base, **{inp.name: p for inp, p in zip(assumed, corner, strict=True)}})
         values.append(v)
     return values, sensitivity
+
+
+def _steepest_corners(
+    assumed: list[Any], sensitivity: list[tuple[str, tuple[tuple[Any, Any], ...]]]
+) -> list[list[Any]]:
+    """The corners at which a monotone numeric response is largest and smallest.
+
+    Each input goes to the end of its range where the one-at-a-time run gave the larger value
+    (and, for the other corner, the smaller); none when a value is not a finite real number.
+    """
+    up, down = [], []
+    for inp, (_, row) in zip(assumed, sensitivity, strict=True):
+        if len(row) < 2 or isinstance(row[0][1], bool) or isinstance(row[-1][1], bool):
+            return []
+        try:  # the first and last band points are the ends of the range
+            v_low, v_high = float(row[0][1]), float(row[-1][1])
+        except (TypeError, ValueError):
+            return []
+        if not (math.isfinite(v_low) and math.isfinite(v_high)):
+            return []
+        up.append(inp.high if v_high >= v_low else inp.low)
+        down.append(inp.low if v_high >= v_low else inp.high)
+    return [up, down]
 
 
 def reading_combinations(conventions: Sequence[Input]) -> list[tuple[tuple[Input, str, Any], ...]]:
