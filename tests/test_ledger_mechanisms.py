@@ -27,8 +27,9 @@ import itertools
 
 import pytest
 
-from navcore.ledger import Claim, InputSet, Tolerance, evaluate, input_cache, printed
-from navcore.ledger.core import MAX_CORNER_INPUTS, MAX_READING_COMBINATIONS, STATUSES
+from navcore._validate import ModelDomainError
+from navcore.ledger import Claim, InputSet, Tolerance, evaluate, input_cache, printed, render
+from navcore.ledger.core import MAX_CORNER_INPUTS, MAX_READING_COMBINATIONS, STATUSES, left_out_of_band
 from navcore.ledger.inputs import Input, overriding, recording
 
 TOL = Tolerance(reason="test", abs=0.5, policy="printed-digits")
@@ -407,3 +408,34 @@ def test_inputs_are_recorded_once_with_their_provenance_and_source():
 def test_input_records_are_the_declarations():
     inp = IN.input("x0")
     assert isinstance(inp, Input) and inp.band_points == (0.0, 1.0) and inp.provenance == "assumed"
+
+
+def test_a_band_run_outside_the_models_domain_is_left_out_and_said():
+    """A run the model does not cover (ModelDomainError) gives no band value and does not fail
+    the claim; the detail names the case and the count, and the ledger page's band text shows
+    it (core._band_runs, render._band_text). Oracle: the band of 10 + x0 by hand over the runs
+    left, the one corner x0 = x1 = 1 raising."""
+
+    def compute():
+        x0, x1 = IN.x0, IN.x1
+        if x0 == 1.0 and x1 == 1.0:
+            raise ModelDomainError("no fixed channels for this flight")
+        return 10.0 + x0
+
+    ev = evaluate(make(compute=compute, expected_status="consistent"))
+    assert ev.status == "consistent" and ev.passes
+    assert ev.band == pytest.approx((10.0, 11.0))  # x0 = 1 still reached at x1 = 0
+    assert left_out_of_band(ev.detail) == "no fixed channels for this flight (1 run)"
+    assert "left out, outside the model's domain" in render._band_text(ev)
+
+
+def test_a_plain_value_error_in_a_band_run_still_fails_the_claim():
+    """Only ModelDomainError is left out: any other ValueError of a band run is an error."""
+
+    def compute():
+        if IN.x0 == 1.0:
+            raise ValueError("a bug")
+        return 10.0
+
+    ev = evaluate(make(compute=compute, expected_status="consistent"))
+    assert ev.status == "error" and not ev.passes

@@ -146,6 +146,8 @@ __all__ = [
     "ERRATUM_KINDS",
     "EXACT",
     "KINDS",
+    "LEFT_OUT_OF_BAND",
+    "MAX_CORNER_INPUTS",
     "MAX_READING_COMBINATIONS",
     "PAPERS",
     "POLICIES",
@@ -166,6 +168,7 @@ __all__ = [
     "claim_quote",
     "evaluate",
     "figure_reading",
+    "left_out_of_band",
     "monte_carlo",
     "precision_status",
     "printed",
@@ -1511,6 +1514,34 @@ def _run(claim: Claim, overrides: dict[str, Any] | None = None) -> tuple[Any, di
     return value, reads
 
 
+#: What a claim's detail says, before the cases, when band runs were outside the model's domain
+#: (module docstring, "Band runs"); :func:`left_out_of_band` reads it back.
+LEFT_OUT_OF_BAND = "; left out of the band, outside the model's domain: "
+
+
+def left_out_of_band(detail: str) -> str:
+    """The band runs an evaluation left out as outside the model's domain, in words ("" if none).
+
+    Parameters
+    ----------
+    detail : str
+        An evaluation's ``detail``.
+
+    Returns
+    -------
+    str
+        The cases left out and how many runs each, as the detail says them.
+
+    Examples
+    --------
+    >>> left_out_of_band("derived verdict consistent" + LEFT_OUT_OF_BAND + "no fix (1 run)")
+    'no fix (1 run)'
+    >>> left_out_of_band("derived verdict consistent")
+    ''
+    """
+    return detail.partition(LEFT_OUT_OF_BAND)[2]
+
+
 #: Up to this many assumed inputs, the band includes every corner of their box (2**6 = 64 runs);
 #: beyond it, each input one at a time plus four diagonal corners and, for a numeric value, the
 #: two corners where every input sits at the end that raised (lowered) the value one at a time
@@ -1901,7 +1932,7 @@ def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
     if excluded:
         counts = {m: excluded.count(m) for m in dict.fromkeys(excluded)}
         left_out = "; ".join(f"{m} ({n} run{'s' if n > 1 else ''})" for m, n in counts.items())
-        suffix = f"; left out of the band, outside the model's domain: {left_out}"
+        suffix = f"{LEFT_OUT_OF_BAND}{left_out}"
     else:
         suffix = ""
     common: dict[str, Any] = dict(
