@@ -1767,7 +1767,11 @@ def derive_status(
     if claim.kind == "cross-check":
         return "consistent" if any(o.agrees_at_value for o in outcomes) else "discrepant"
     if claim.kind == "fit" or "fitted" in provenances:
-        return "consistent" if any(o.agrees for o in outcomes) else "inconsistent"
+        if any(o.agrees and not o.too_wide for o in outcomes):
+            return "consistent"
+        if any(o.agrees for o in outcomes):
+            return "not-reproducible"  # a band over the assumed inputs too wide to decide
+        return "inconsistent"
     if "assumed" in provenances:
         if any(o.agrees and not o.too_wide for o in outcomes):
             return "consistent"
