@@ -527,10 +527,11 @@ def crossover_100_helps() -> bool:
     rho = IN.rho_hurst
     beta, sigma, s0 = _ex("I")["beta"], TR.sigma_ns, TR.sigma0_low_ns
     # the two components of (4.3.1c), sigma1^2 n and sigma2^2 n^2, are equal at n = sigma1^2 / sigma2^2
+    epochs, horizon = 60, 30  # both clocks tracked over the same epochs and extrapolated as far
     late = _extrapolation_error(
-        lambda n: _fbm_cov(n, s0, s0 / math.sqrt(IN.sec47_crossover_n), rho), beta, sigma, 60, 30
+        lambda n: _fbm_cov(n, s0, s0 / math.sqrt(IN.sec47_crossover_n), rho), beta, sigma, epochs, horizon
     )
-    early = _extrapolation_error(lambda n: _fbm_cov(n, s0, s0, rho), beta, sigma, 60, 30)
+    early = _extrapolation_error(lambda n: _fbm_cov(n, s0, s0, rho), beta, sigma, epochs, horizon)
     return late < early
 
 
