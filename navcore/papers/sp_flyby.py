@@ -41,7 +41,7 @@ import numpy as np
 
 from navcore.estimation.covariance_analysis import CovarianceAnalysis, SatelliteGeometry, satellite_geometry
 from navcore.gnss.acquisition import search_cells, search_time
-from navcore.gnss.constellation import Constellation, nominal_gps_constellation
+from navcore.gnss.constellation import Constellation
 from navcore.gnss.jammer_geometry import (
     dll_thermal_jitter_chips,
     elevation_gain_dbi,
@@ -296,6 +296,18 @@ IN.assumed(
     "a ground jammer defending a route or site lies within a few to a few tens of km of it",
 )
 IN.assumed(
+    "heading_deg",
+    90.0,
+    low=0.0,
+    high=270.0,
+    grid=4,
+    unit="deg",
+    quantity="heading of the flyby (of its first and last legs: the two calibration turns cancel)",
+    reason="Sec. 2.6.2 gives no route; the book flies east. The heading sets the track over the Earth "
+    "and against the constellation, and so which satellites the jammer's field takes first: north, "
+    "east, south and west (a grid because the geometry's effect is not monotone)",
+)
+IN.assumed(
     "closest_approach_min",
     40.0,
     low=30.0,
@@ -316,7 +328,8 @@ _JN_REFERENCE_M = 100_000.0
 
 @input_cache
 def flyby_trajectory() -> Trajectory:
-    """Cruise at the missions' altitude and speed, heading east: two 90-degree calibration turns
+    """Cruise at the missions' altitude and speed, at the assumed heading (east): two 90-degree
+    calibration turns
     (right at 4 min, back left at 14 min, as the sequential-outage cruise turns every 10 min),
     then a straight leg; the flight lasts twice the closest-approach time, so the jammer is at
     its midpoint (Sec. 2.6.2)."""
@@ -338,13 +351,14 @@ def flyby_trajectory() -> Trajectory:
         lon0=m.longitude_deg * DEG,
         h0=m.cruise_altitude_m,
         speed0=m.cruise_speed_mps,
-        heading0=90.0 * DEG,
+        heading0=IN.heading_deg * DEG,
     )
 
 
 def constellation() -> Constellation:
-    """Six orbital planes of :data:`IN` ``slots_per_plane`` satellites (Walker-like pattern)."""
-    return nominal_gps_constellation(per_plane=IN.slots_per_plane)
+    """Six orbital planes of :data:`IN` ``slots_per_plane`` satellites (Walker-like pattern, the
+    missions' plane-to-plane phasing)."""
+    return sc.gps_constellation(IN.slots_per_plane)
 
 
 def _window(tr: Trajectory) -> np.ndarray:
