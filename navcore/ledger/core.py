@@ -1424,12 +1424,14 @@ def _plain(value: Any) -> str:
     --------
     >>> _plain(1023000.0), _plain(0.00094007), _plain(0.0226556), _plain(2.5), _plain(True)
     ('$1.023 \\times 10^{6}$', '$9.4007 \\times 10^{-4}$', '0.0226556', '2.5', 'true')
+    >>> _plain(0.00353918)
+    '$3.53918 \\times 10^{-3}$'
     """
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, float):
         text = f"{value:.6g}"
-        if value != 0 and abs(value) < 1e-3 and "e" not in text:
+        if value != 0 and abs(value) < 1e-2 and "e" not in text:  # else eight decimals or more
             mantissa, exponent = f"{value:.5e}".split("e")
             text = mantissa.rstrip("0").rstrip(".") + "e" + exponent
         return _number_math(text)
