@@ -836,7 +836,7 @@ def _band_text(e: Evaluation) -> str:
     if e.band is None or e.claim.is_statement:
         return ""
     lo, hi = e.band
-    left_out = left_out_of_band(e.detail)
+    left_out = left_out_of_band(e)
     return (
         f"{format_value(lo)} to {format_value(hi)}"
         + (f" {e.claim.unit}" if e.claim.unit not in ("", "statement") else "")
@@ -1753,6 +1753,13 @@ def _band(record: dict[str, Any], unit: str) -> str:
     )
 
 
+def _left_out_brief(e: Evaluation) -> str:
+    """A band cell's note of the runs left out: "1 run left out, outside the model's domain"
+    (the claim's note says which case)."""
+    n = sum(c["runs"] for c in e.left_out)
+    return f"{n} run{'' if n == 1 else 's'} left out, outside the model's domain"
+
+
 class InteractiveLedger:
     """The whole ledger as one table that sorts, filters, searches and downloads, offline.
 
@@ -1864,7 +1871,12 @@ class InteractiveLedger:
                 "quantity": f"{html_text(r['quantity'])}<details><summary>note</summary>{note}</details>",
                 "published": _printed_html(_printed_text(e), fold=40),
                 "reproduced": _nowrap(_reproduced_text(e)),
-                "band": html.escape(_band(rec, r["unit"])),
+                "band": html.escape(_band(rec, r["unit"]))
+                + (
+                    f'<br><span class="ledger-reading">{html.escape(_left_out_brief(e))}</span>'
+                    if e.left_out and rec.get("band")
+                    else ""
+                ),
                 "status": status,
             }
             tds = "".join(
