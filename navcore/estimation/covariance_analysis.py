@@ -1385,10 +1385,11 @@ def best_geometry_channels(
     Raises
     ------
     ValueError
-        If ``n`` is not positive, or no combination gives a usable geometry.
+        If ``n`` is not positive.
     ModelDomainError
-        If fewer than ``n`` satellites stay above the mask for the whole trajectory (a
-        ``ValueError``: the fixed channels this selection models do not exist for that flight).
+        If fewer than ``n`` satellites stay above the mask for the whole trajectory, or no
+        combination of them gives a usable geometry (a ``ValueError``: the fixed channels this
+        selection models do not exist for that flight).
 
     Examples
     --------
@@ -1424,7 +1425,10 @@ def best_geometry_channels(
         if val < best_val:
             best, best_val = combo, val
     if best is None:
-        raise ValueError("no satellite combination gives a usable geometry")
+        raise ModelDomainError(
+            "no satellite combination gives a usable geometry",
+            case=f"no {n} satellites that stay above the mask give a usable geometry throughout the flight",
+        )
     return np.asarray(best, dtype=np.int64)
 
 
