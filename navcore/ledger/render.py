@@ -1752,14 +1752,27 @@ _LEDGER_JS = r"""
 """
 
 
-def _band(record: dict[str, Any], unit: str) -> str:
+def _band_html(record: dict[str, Any], unit: str) -> str:
+    """The interactive table's band cell: each end kept whole with its unit; a statement's band
+    in words (whether it holds across the assumed ranges).
+
+    Examples
+    --------
+    >>> _band_html({"band": [0.5, 2.0]}, "m")
+    '0.5 –&nbsp;2&nbsp;m'
+    >>> _band_html({"band": [False, True]}, "statement")
+    'holds for some assumed inputs, not all'
+    """
     band = record.get("band")
     if not band:
         return ""
     low, high = band
-    return f"{format_value(low)} – {format_value(high)}" + (
-        f" {unit}" if unit not in ("", "statement") else ""
-    )
+    if isinstance(low, bool) or isinstance(high, bool):
+        if low == high:
+            return "holds across the assumed ranges" if low else "fails across the assumed ranges"
+        return "holds for some assumed inputs, not all"
+    ends = format_value(low), format_value(high) + (f" {unit}" if unit not in ("", "statement") else "")
+    return f"{_nowrap(ends[0])} –&nbsp;{_nowrap(ends[1])}"
 
 
 def _left_out_brief(e: Evaluation) -> str:
@@ -1880,7 +1893,7 @@ class InteractiveLedger:
                 "quantity": f"{html_text(r['quantity'])}<details><summary>note</summary>{note}</details>",
                 "published": _printed_html(_printed_text(e), fold=40),
                 "reproduced": _nowrap(_reproduced_text(e)),
-                "band": html.escape(_band(rec, r["unit"]))
+                "band": _band_html(rec, r["unit"])
                 + (
                     f'<br><span class="ledger-reading">{html.escape(_left_out_brief(e))}</span>'
                     if e.left_out and rec.get("band")
