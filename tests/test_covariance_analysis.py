@@ -510,8 +510,49 @@ def test_transition_series_order_is_converged_on_a_turning_flight(monkeypatch):
     turn = 4.0 * DEG
     segs = [Segment(60.0), Segment(90.0, turn_rate=turn), Segment(60.0), Segment(90.0, turn_rate=-turn)]
     tr = fly(segs * 2, dt=1.0, lat0=35 * DEG, speed0=200.0, h0=7000.0)
+    ca._TRANSITIONS.clear()  # the engine's store of transitions: each run computes its own
     base = run_covariance_analysis(tr, lay, lay, src, P0)
     series = ca._taylor_stack
     monkeypatch.setattr(ca, "_taylor_stack", lambda F, dt, order=4: series(F, dt, order=12))
+    ca._TRANSITIONS.clear()
     fine = run_covariance_analysis(tr, lay, lay, src, P0)
+    ca._TRANSITIONS.clear()
     np.testing.assert_allclose(fine.true_var, base.true_var, rtol=1e-7, atol=0.0)
+
+
+def test_shared_transitions_give_the_uncached_run_and_a_changed_input_misses():
+    """Oracle: the same analysis with the engine's store of transitions emptied first (every
+    transition and noise computed afresh). A second run served from the store is bit for bit
+    the uncached one; a run whose error sources differ in one number (and one whose trajectory
+    differs) computes its own matrices and equals its own uncached run, not the first one."""
+    import navcore.estimation.covariance_analysis as ca
+
+    truth = ins_error_layout("position", "velocity", "misalignment", "gyro bias", "gravity")
+    filt = ins_error_layout("position", "velocity", "misalignment", "gyro bias")
+    spec = ImuSpec("t", gyro_bias=0.05 * DEG_PER_H, gyro_random_walk=0.1 * DEG_PER_H)
+    src = ErrorSources(imu=spec, gravity=GaussMarkov(35 * MICRO_G, 37e3))
+    src2 = ErrorSources(imu=spec, gravity=GaussMarkov(35.01 * MICRO_G, 37e3))
+    P0 = initial_covariance(truth, src, position_sigma=(30, 30, 10), velocity_sigma=(0.3,) * 3)
+    tr = straight_and_level(200.0, speed=200.0, dt=1.0, lat0=45 * DEG)
+    tr2 = straight_and_level(200.0, speed=201.0, dt=1.0, lat0=45 * DEG)
+    sched = baro_schedule(truth, noise_m=3.0, every=10)
+
+    def run(trajectory, sources, *, cold):
+        if cold:
+            ca._TRANSITIONS.clear()
+        return run_covariance_analysis(trajectory, truth, filt, sources, P0, sched)
+
+    def same(a, b):
+        return all(
+            np.array_equal(getattr(a, f), getattr(b, f)) for f in ("true_var", "filter_var", "final_true")
+        )
+
+    cold = run(tr, src, cold=True)
+    assert len(ca._TRANSITIONS) > 0
+    assert same(run(tr, src, cold=False), cold)
+    for trajectory, sources in ((tr, src2), (tr2, src)):
+        warm = run(trajectory, sources, cold=False)
+        assert same(warm, run(trajectory, sources, cold=True))
+        assert not same(warm, cold)
+    assert ca._digest(35 * MICRO_G) != ca._digest(np.nextafter(35 * MICRO_G, 1.0))
+    assert ca._digest(object()) is None  # a value it cannot spell exactly is never cached
