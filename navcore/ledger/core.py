@@ -1230,7 +1230,7 @@ class Evaluation:
     left_out : tuple of dict
         The band runs left out as outside the model's domain (module docstring, "Band runs"),
         one per case in the order met: ``case`` (the reader's words of the
-        :class:`~navcore._validate.ModelDomainError`) and ``runs`` (how many runs met it).
+        ``ModelDomainError``) and ``runs`` (how many runs met it).
 
     Examples
     --------
