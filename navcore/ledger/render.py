@@ -25,6 +25,7 @@ from navcore.ledger.core import (
     TEXT_ONLY_CAVEAT,
     Erratum,
     Evaluation,
+    _n_runs,
     claim_quote,
     left_out_of_band,
 )
@@ -1778,8 +1779,7 @@ def _band_html(record: dict[str, Any], unit: str) -> str:
 def _left_out_brief(e: Evaluation) -> str:
     """A band cell's note of the runs left out: "1 run left out" (the claim's note says which
     case, and that it lies outside the model's domain)."""
-    n = sum(c["runs"] for c in e.left_out)
-    return f"{n} run{'' if n == 1 else 's'} left out"
+    return f"{_n_runs(sum(c['runs'] for c in e.left_out))} left out"
 
 
 class InteractiveLedger:
