@@ -65,7 +65,10 @@ miss). A run whose inputs are each in range but together describe a case the mod
 cover (it raises ``ModelDomainError``, for example no four satellites stay above the mask
 along the whole flight for fixed channels) gives no value: it is left out of the band, and
 the evaluation's ``left_out`` records which case was left out and in how many runs; the note
-says it.
+says it. Each batch of runs (the one-at-a-time runs, then the corners) is announced before it
+is made (``band_ahead`` in :mod:`navcore.ledger.inputs`), so that a model whose runs batch well
+can compute the whole batch in one call when the first run asks, and serve the others from its
+:func:`~navcore.ledger.inputs.input_cache`; what a run returns does not depend on it.
 
 A band too wide to decide
 -------------------------
@@ -139,7 +142,15 @@ from dataclasses import dataclass, field
 from typing import Any, Literal
 
 from navcore._validate import ModelDomainError
-from navcore.ledger.inputs import Input, _label_and_unit, declaring, get_input, overriding, recording
+from navcore.ledger.inputs import (
+    Input,
+    _label_and_unit,
+    band_ahead,
+    declaring,
+    get_input,
+    overriding,
+    recording,
+)
 
 __all__ = [
     "BAND_FACTOR",
@@ -1596,14 +1607,16 @@ def _band_runs(
                 excluded.append(exc.case)
             return False, None
 
-    for inp in assumed:
-        row = []
-        for point in inp.band_points:
-            ok, v = run({**base, inp.name: point})
-            if ok:
-                values.append(v)
-                row.append((point, v))
-        sensitivity.append((inp.name, tuple(row)))
+    # each batch of runs is announced first, so that a model can run it in one call (band_ahead)
+    with band_ahead([{**base, inp.name: point} for inp in assumed for point in inp.band_points]):
+        for inp in assumed:
+            row = []
+            for point in inp.band_points:
+                ok, v = run({**base, inp.name: point})
+                if ok:
+                    values.append(v)
+                    row.append((point, v))
+            sensitivity.append((inp.name, tuple(row)))
 
     if 2 <= len(assumed) <= MAX_CORNER_INPUTS:
         corners: Any = itertools.product(*[(inp.low, inp.high) for inp in assumed])
@@ -1614,10 +1627,14 @@ def _band_runs(
         corners += _steepest_corners(assumed, sensitivity)
     else:
         corners = []
-    for corner in corners:
-        ok, v = run({**base, **{inp.name: p for inp, p in zip(assumed, corner, strict=True)}})
-        if ok:
-            values.append(v)
+    corner_runs = [
+        {**base, **{inp.name: p for inp, p in zip(assumed, corner, strict=True)}} for corner in corners
+    ]
+    with band_ahead(corner_runs):
+        for overrides in corner_runs:
+            ok, v = run(overrides)
+            if ok:
+                values.append(v)
     return values, sensitivity
 
 
