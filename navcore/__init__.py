@@ -114,7 +114,10 @@ Errors
     unchecked: with ``validate=False`` where a function offers it
     (:func:`navcore.estimation.kalman.kf_predict`), else through
     ``navcore._validate.unchecked`` (the Monte Carlo of
-    :mod:`navcore.estimation.ekf_ins_gnss`, the strapdown).
+    :mod:`navcore.estimation.ekf_ins_gnss`, the strapdown). Inputs each in range whose
+    combination the model does not cover (no four satellites stay above the mask along the
+    whole flight, for fixed channels) raise :class:`navcore.ModelDomainError`, a
+    ``ValueError`` a caller can tell apart.
 Parallel work
     Independent tasks (the ledger's claims, batches of Monte Carlo runs) go through one
     executor interface, :func:`navcore.parallel.run_tasks` (joblib: ``n_jobs=-1`` for every
@@ -135,5 +138,7 @@ figures
 
 from __future__ import annotations
 
-__all__ = ["__version__"]
+from navcore._validate import ModelDomainError
+
+__all__ = ["ModelDomainError", "__version__"]
 __version__ = "0.1.0"
