@@ -119,10 +119,12 @@ class ModelDomainError(ValueError):
     --------
     >>> issubclass(ModelDomainError, ValueError)
     True
-    >>> err = ModelDomainError("only 3 satellites stay above mask_deg=15.0",
-    ...                        case="only 3 satellites stay above the 15 deg elevation mask")
-    >>> str(err), err.case
-    ('only 3 satellites stay above mask_deg=15.0', 'only 3 satellites stay above the 15 deg elevation mask')
+    >>> err = ModelDomainError("3 satellites above mask_deg=15.0",
+    ...                        case="3 satellites above the mask")
+    >>> str(err)
+    '3 satellites above mask_deg=15.0'
+    >>> err.case
+    '3 satellites above the mask'
     """
 
     def __init__(self, message: str, *, case: str | None = None) -> None:
