@@ -608,3 +608,376 @@ def zakai_barker13_of_ideal() -> float:
     from navcore.detection import zakai
 
     return float(zakai.psk_zakai_bandwidth(zakai.barker_code(13), 1.0) / 0.75)
+
+
+# --- model values: Wu & Fowler ---------------------------------------------------------------
+
+
+@register("wf01-mean-range-km", "wf/01-location-error", "mean aperture-to-emitter range of Sec. III (km)")
+def wf_mean_range_km() -> float:
+    """Mean aperture-to-emitter range over Wu & Fowler's Sec. III scenario track, in km."""
+    from navcore.papers import wf
+
+    return float(wf.mean_range() / 1e3)
+
+
+#: Seeded Gauss-Newton fits of the Sec. II Monte Carlo on the WF location-error page (a run
+#: count of the page's own check, not an input: the paper runs no Monte Carlo).
+WF01_LS_TRIALS = 400
+
+
+@register(
+    "wf01-sd-sampling-error-pct",
+    "wf/01-location-error",
+    "relative standard error of a standard deviation from the Sec. II Monte Carlo fits (%)",
+)
+def wf_sd_sampling_error_pct() -> float:
+    """Relative standard error 1/sqrt(2 n) of a standard deviation from n seeded fits, in percent."""
+    return float(100 / math.sqrt(2 * WF01_LS_TRIALS))
+
+
+@register(
+    "wf02-largest-bound-ratio",
+    "wf/02-velocity-sensitivity",
+    "largest ||df/dp|| over the Eq. (9) bound, random geometries",
+)
+@register("wf89-bound-ratio", "wf/89-summary", "largest ||df/dp|| over the Eq. (9) bound, random geometries")
+def wf_largest_bound_ratio() -> float:
+    """Largest ratio of ||df/dp|| to its bound, WF Eq. (9), over the seeded geometries."""
+    from navcore.papers import wf
+
+    return float(wf.position_bound_ratios().max())
+
+
+def _wf_dl_steady_state_example() -> Any:
+    """Steady state of WF Eq. (14) for the worked example's 100 ug accelerometer (Sec. IV.D)."""
+    from navcore.estimation.federated import accelerometer_steady_state_isotropic
+    from navcore.papers import wf
+
+    sa = wf.sigma_a_example()
+    return accelerometer_steady_state_isotropic(sa, wf.IN.ts, wf.IN.sigma_l_per_sigma_a * sa)
+
+
+@register("wf03-dl-gain", "wf/03-local-estimators", "steady-state gain of the Eq. (14) filter at 100 ug")
+def wf_dl_gain() -> float:
+    """Steady-state Kalman gain of WF Eq. (14) for the 100 ug accelerometer, sigma_L = 200 sigma_a."""
+    return float(_wf_dl_steady_state_example().gain)
+
+
+@register(
+    "wf03-dl-time-constant",
+    "wf/03-local-estimators",
+    "time constant T_s / K of the Eq. (14) filter at 100 ug (s)",
+)
+def wf_dl_time_constant() -> float:
+    """Time constant T_s / K of WF Eq. (14)'s steady-state filter for the 100 ug accelerometer, s."""
+    from navcore.papers import wf
+
+    return float(wf.IN.ts / _wf_dl_steady_state_example().gain)
+
+
+def _wf03_joint() -> tuple[list[Any], Any]:
+    """The page's worked joint covariance: local covariances (nav, DL, GPS with three satellites)
+    and the joint covariance of their errors (WF Eq. (20)), sigma_T = 2 m/s."""
+    import numpy as np
+
+    from navcore.papers import wf
+
+    sa = wf.sigma_a_example()
+    P_dn, P_dl, P_dg = wf.local_covariances(sa, wf.IN.sigma_t_large, n_sat=3)
+    ss = _wf_dl_steady_state_example()
+    I3 = np.eye(3)
+    H = wf.f_l1_over_c_printed() * I3
+    K_l = ss.gain * I3
+    K_g = P_dg @ H.T / wf.IN.sigma_g**2
+    maps = [
+        np.hstack([0 * I3, I3, 0 * I3, 0 * I3]),
+        np.hstack([I3 - K_l, 0 * I3, K_l, 0 * I3]),
+        np.hstack([I3 - K_g @ H, 0 * I3, 0 * I3, K_g]),
+    ]
+    S = np.zeros((12, 12))
+    blocks = [ss.prior * I3, P_dn, (wf.IN.sigma_l_per_sigma_a * sa) ** 2 * I3, wf.IN.sigma_g**2 * I3]
+    for j, block in enumerate(blocks):
+        S[3 * j : 3 * j + 3, 3 * j : 3 * j + 3] = block
+    A = np.vstack(maps)
+    return [P_dn, P_dl, P_dg], A @ S @ A.T
+
+
+@register(
+    "wf03-corr-dl-dg",
+    "wf/03-local-estimators",
+    "correlation of the accelerometer and GPS velocity errors per axis",
+)
+def wf_corr_dl_dg() -> float:
+    """Correlation between the accelerometer-filter and GPS-Doppler velocity errors on one axis
+    (both start from the same prior, WF Eqs. (14) and (16))."""
+    _, joint = _wf03_joint()
+    return float(joint[3, 6] / math.sqrt(joint[3, 3] * joint[6, 6]))
+
+
+@register(
+    "wf03-naive-optimism",
+    "wf/03-local-estimators",
+    "exact fused sigma (Eq. (20)) over the naive Eq. (19) sigma",
+)
+def wf_naive_optimism() -> float:
+    """How much larger the exact fused error (WF Eq. (20)) is than Eq. (19) claims, per axis."""
+    import numpy as np
+
+    from navcore.estimation.federated import federated_fusion, fused_error_covariance
+
+    Ps, joint = _wf03_joint()
+    exact = fused_error_covariance(Ps, joint)
+    _, naive = federated_fusion([np.zeros(3)] * 3, Ps)
+    return float(math.sqrt(exact[0, 0] / naive[0, 0]))
+
+
+@register(
+    "wf03-generic-tightness-rho1",
+    "wf/03-local-estimators",
+    "Eq. (23) bound over the true trace, generic covariances, rho = 1",
+)
+@register(
+    "wf89-rem2-generic", "wf/89-summary", "Eq. (23) bound over the true trace, generic covariances, rho = 1"
+)
+def wf_generic_tightness_rho1() -> float:
+    """Minkowski bound of WF Eq. (23) over the true fused trace, seeded generic covariances, rho = 1."""
+    from navcore.papers import wf
+
+    return float(wf.bound_tightness(1.0, "generic"))
+
+
+@register(
+    "wf03-isotropic-tightness-rho0",
+    "wf/03-local-estimators",
+    "Eq. (23) bound over the true trace, isotropic covariances, rho = 0",
+)
+def wf_isotropic_tightness_rho0() -> float:
+    """Minkowski bound of WF Eq. (23) over the true fused trace, isotropic covariances, uncorrelated."""
+    from navcore.papers import wf
+
+    return float(wf.bound_tightness(0.0, "isotropic"))
+
+
+#: The page's example of Eq. (11) with a large Q_T: a navigation sigma of 0.2 m/s per axis beside a
+#: 2 m/s flexure (tau = I), against no navigation error.
+WF03_LARGE_QT = (0.2, 2.0)
+
+
+@register(
+    "wf03-large-qt-change-pct",
+    "wf/03-local-estimators",
+    "change of sigma_DN when a 0.2 m/s navigation error joins a 2 m/s flexure (%)",
+)
+def wf_large_qt_change_pct() -> float:
+    """Relative change of the per-axis sigma of WF Eq. (11) when the navigation error is added to a
+    large flexure term, in percent."""
+    import numpy as np
+
+    from navcore.estimation.federated import navigation_mapped_covariance
+
+    sn, st = WF03_LARGE_QT
+    sd = [
+        math.sqrt(navigation_mapped_covariance(np.eye(3), s**2 * np.eye(3), st**2 * np.eye(3))[0, 0])
+        for s in (0.0, sn)
+    ]
+    return float(100 * (sd[1] / sd[0] - 1))
+
+
+@register(
+    "wf04-trace-reading-100ug-db",
+    "wf/04-assessment",
+    "Fig. 1 improvement at 100 ug, sigma_T = 2 m/s, read as a trace against one axis (dB)",
+)
+def wf_trace_reading_100ug_db() -> float:
+    """The 100 ug improvement of Fig. 1 (sigma_T = 2 m/s) plus the factor 3 of a trace read per axis, dB."""
+    from navcore.papers import wf
+
+    return float(wf.improvement_db(wf.sigma_a_example(), wf.IN.sigma_t_large) + 10 * math.log10(3))
+
+
+@register(
+    "wf04-prior-instead-shift-db",
+    "wf/04-assessment",
+    "largest change of a Fig. 1-2 curve if P_DL were the prior P_DL(k/k-1) (dB)",
+)
+def wf_prior_instead_shift_db() -> float:
+    """Largest change (dB) of a curve of WF Figs. 1-2 if the accelerometer's prior replaced its posterior."""
+    import numpy as np
+
+    from navcore.estimation.federated import accelerometer_steady_state_isotropic, minkowski_trace_bound
+    from navcore.papers import wf
+
+    shift = 0.0
+    for sa in wf.sigma_a_grid():
+        prior = accelerometer_steady_state_isotropic(sa, wf.IN.ts, wf.IN.sigma_l_per_sigma_a * sa).prior
+        for st in wf.sigma_t_values():
+            for ns in wf.SATELLITE_CASES:
+                Ps = wf.local_covariances(sa, st, ns)
+                alt = [Ps[0], prior * np.eye(3), *Ps[2:]]
+                shift = max(
+                    shift, abs(10 * math.log10(minkowski_trace_bound(alt) / minkowski_trace_bound(Ps)))
+                )
+    return float(shift)
+
+
+@register(
+    "wf04-sigma-dl-max",
+    "wf/04-assessment",
+    "steady-state sigma of the Eq. (14) filter at the 10 mm/s^2 end (m/s)",
+)
+def wf_sigma_dl_max() -> float:
+    """Steady-state per-axis sigma of WF Eq. (14) at the medium-resolution end of Sec. IV.D, m/s."""
+    from navcore.estimation.federated import accelerometer_steady_state_isotropic
+    from navcore.papers import wf
+
+    sa = wf.IN.sigma_a_high
+    return float(
+        math.sqrt(
+            accelerometer_steady_state_isotropic(sa, wf.IN.ts, wf.IN.sigma_l_per_sigma_a * sa).posterior
+        )
+    )
+
+
+@register("wf04-gps-velocity-sigma", "wf/04-assessment", "velocity sigma equivalent to sigma_G = 1 Hz (m/s)")
+def wf_gps_velocity_sigma() -> float:
+    """Line-of-sight velocity sigma equivalent to WF's 1 Hz GPS Doppler noise, m/s."""
+    from navcore.papers import wf
+
+    return float(wf.gps_doppler_velocity_sigma())
+
+
+@register(
+    "wf04-gps-velocity-over-sigma-n",
+    "wf/04-assessment",
+    "GPS-equivalent velocity sigma over the navigation sigma_N",
+)
+def wf_gps_velocity_over_sigma_n() -> float:
+    """The GPS-equivalent velocity sigma over WF's navigation velocity accuracy sigma_N."""
+    from navcore.papers import wf
+
+    return float(wf.gps_doppler_velocity_sigma() / wf.IN.sigma_n)
+
+
+@register(
+    "wf04-sigma-d-over-sigma-n",
+    "wf/04-assessment",
+    "fused bound at 100 ug, sigma_T = 2 m/s, over sigma_N",
+)
+def wf_sigma_d_over_sigma_n() -> float:
+    """Per-axis fused bound of WF Eq. (23) at 100 ug and sigma_T = 2 m/s over sigma_N."""
+    from navcore.papers import wf
+
+    return float(wf.sigma_d_bound(wf.sigma_a_example(), wf.IN.sigma_t_large) / wf.IN.sigma_n)
+
+
+@register(
+    "wf04-gps-gain-max-db", "wf/04-assessment", "largest GPS gain of Fig. 2 over Fig. 1, stated range (dB)"
+)
+@register("wf89-gps-gain", "wf/89-summary", "largest GPS gain of Fig. 2 over Fig. 1, stated range (dB)")
+def wf_gps_gain_max_db() -> float:
+    """Largest improvement (dB) the GPS estimate adds to the Fig. 1 bound: any sigma_T, one or three
+    satellites, the stated sigma_a range."""
+    import numpy as np
+
+    from navcore.papers import wf
+
+    c = wf.improvement_curves()
+    return float(max(np.max(c[(st, 0)] - c[(st, ns)]) for st in wf.sigma_t_values() for ns in wf.GPS_CASES))
+
+
+@register(
+    "wf04-three-vs-one-db",
+    "wf/04-assessment",
+    "largest difference of three satellites and one, sigma_T = 0 (dB)",
+)
+def wf_three_vs_one_db() -> float:
+    """Largest |three-satellite - one-satellite| difference of Fig. 2 at sigma_T = 0, stated range, dB."""
+    import numpy as np
+
+    from navcore.papers import wf
+
+    c = wf.improvement_curves()
+    st = wf.IN.sigma_t_small
+    return float(np.max(np.abs(c[(st, 3)] - c[(st, 1)])))
+
+
+#: The page's example of a severe accelerometer beyond the stated range, m/s^2.
+WF04_WIDE_SIGMA_A = 0.3
+
+
+@register(
+    "wf04-gps-gain-wide-db",
+    "wf/04-assessment",
+    "GPS gain with three satellites at 0.3 m/s^2 and sigma_T = 2 m/s (dB)",
+)
+def wf_gps_gain_wide_db() -> float:
+    """Improvement (dB) three satellites add at sigma_a = 0.3 m/s^2, sigma_T = 2 m/s."""
+    from navcore.papers import wf
+
+    st = wf.IN.sigma_t_large
+    return float(wf.improvement_db(WF04_WIDE_SIGMA_A, st, 0) - wf.improvement_db(WF04_WIDE_SIGMA_A, st, 3))
+
+
+@register(
+    "wf89-leverage-z",
+    "wf/89-summary",
+    "emitter error from a constant 1 m/s vertical velocity error over that from 1 m (s)",
+)
+def wf_leverage_z() -> float:
+    """Emitter-location error (WF Eq. (6)) from a constant 1 m/s aperture-velocity error along z
+    over that from a constant 1 m position error along z, s."""
+    from navcore.papers import wf
+
+    lev = wf.location_error_leverage()
+    return float(lev["bias_v"][2] / lev["bias_p"][2])
+
+
+@register(
+    "wf89-leverage-white",
+    "wf/89-summary",
+    "emitter error from independent 1 m/s velocity errors over that from 1 m errors (s)",
+)
+def wf_leverage_white() -> float:
+    """RMS emitter-location error (WF Eq. (6)) from independent 1 m/s velocity errors per axis and
+    sample over that from independent 1 m position errors, s."""
+    from navcore.papers import wf
+
+    lev = wf.location_error_leverage()
+    return float(lev["white_v"] / lev["white_p"])
+
+
+@register(
+    "wf89-eq13-ratio",
+    "wf/89-summary",
+    "final RMS error of Eq. (13) as printed over sqrt(P_DL(k/k))",
+)
+def wf_eq13_ratio() -> float:
+    """Final RMS error of WF Eq. (13) run as printed (seeded) over the Eq. (14) sigma."""
+    from navcore.papers import wf
+
+    return float(wf.eq13_printed_error_ratio())
+
+
+@register(
+    "wf89-eq20-block",
+    "wf/89-summary",
+    "largest entry of Eq. (20)'s printed block (2, 3) minus P_LG, over the largest of the joint",
+)
+def wf_eq20_block() -> float:
+    """How far WF Eq. (20)'s printed block (2, 3), P_NG, is from the L-G cross-covariance (seeded joint)."""
+    from navcore.papers import wf
+
+    return float(wf.eq20_printed_block_error())
+
+
+@register(
+    "wf89-eq24-ratio",
+    "wf/89-summary",
+    "sigma_DN of Eq. (24) read literally, computed in cm/s over computed in m/s",
+)
+def wf_eq24_ratio() -> float:
+    """WF Eq. (24) read literally: sigma_DN computed in cm/s (converted) over sigma_DN computed in m/s."""
+    from navcore.papers import wf
+
+    return float(wf.eq24_literal_unit_ratio())
