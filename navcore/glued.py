@@ -981,3 +981,121 @@ def wf_eq24_ratio() -> float:
     from navcore.papers import wf
 
     return float(wf.eq24_literal_unit_ratio())
+
+
+# --- model values: Wu & Fowler's worked example (a seeded simulation of 20 flights) -----------
+
+
+@register(
+    "wf05-sigma-dl", "wf/05-end-to-end", "steady-state sigma of the accelerometer filter at 100 ug (m/s)"
+)
+def wf05_sigma_dl() -> float:
+    """Steady-state per-axis sigma of the worked example's accelerometer filter (WF Eq. (14)), m/s."""
+    from navcore.papers import wf_example as ex
+
+    return float(ex.run()["sigma_dl"])
+
+
+@register(
+    "wf05-vib-rms", "wf/05-end-to-end", "RMS vertical velocity of the simulated wing-tip vibration (m/s)"
+)
+def wf05_vib_rms() -> float:
+    """RMS of the vertical aperture velocity the worked example's vibration adds, over its flights, m/s."""
+    from navcore.papers import wf_example as ex
+
+    return float(ex.run()["vib_rms"])
+
+
+@register(
+    "wf05-uz",
+    "wf/05-end-to-end",
+    "RMS vertical component of the unit line of sight over the Sec. II turn",
+)
+def wf05_uz_rms() -> float:
+    """RMS over the Sec. II turn's samples of the vertical component of the unit line of sight."""
+    import numpy as np
+
+    from navcore.papers import wf
+
+    _, pos, _ = wf.orbit()
+    u_z = np.abs(pos[:, 2] - wf.EMITTER[2]) / np.linalg.norm(pos - wf.EMITTER, axis=1)
+    return float(np.sqrt(np.mean(u_z**2)))
+
+
+@register(
+    "wf05-freq-err",
+    "wf/05-end-to-end",
+    "RMS frequency error from the vibration along the line of sight (Hz)",
+)
+def wf05_freq_err() -> float:
+    """Frequency error (Hz RMS) the unseen vertical vibration causes: f0/c times its RMS velocity times
+    the RMS vertical line-of-sight component."""
+    from navcore import units
+    from navcore.papers import wf
+
+    return float(wf.F0 / units.C * wf05_vib_rms() * wf05_uz_rms())
+
+
+@register(
+    "wf05-freq-err-over-noise",
+    "wf/05-end-to-end",
+    "the vibration's frequency error over the frequency measurement noise",
+)
+def wf05_freq_err_over_noise() -> float:
+    """The vibration's RMS frequency error over the 1 Hz frequency-measurement noise."""
+    from navcore.papers import wf
+
+    return float(wf05_freq_err() / wf.SIGMA_F)
+
+
+#: The page's Euler illustration: 60 s of a sinusoid sampled at T_s.
+WF05_EULER_SECONDS = 60.0
+
+
+@register(
+    "wf05-euler-point-rms",
+    "wf/05-end-to-end",
+    "RMS error of Euler-integrating point samples of the vibration's acceleration (m/s)",
+)
+def wf05_euler_point_rms() -> float:
+    """Standard deviation of the velocity error when point samples of a sinusoidal acceleration (the
+    vibration's frequency and RMS velocity) are Euler-integrated at T_s for 60 s, m/s."""
+    import numpy as np
+
+    from navcore.papers import wf_example as ex
+
+    ts, f_vib = ex.IN.ts, ex.IN.vib_hz
+    t = np.arange(round(WF05_EULER_SECONDS / ts) + 1) * ts
+    amp = math.sqrt(2) * wf05_vib_rms()
+    v_true = amp * np.sin(2 * np.pi * f_vib * t)
+    a_point = amp * 2 * np.pi * f_vib * np.cos(2 * np.pi * f_vib * t)
+    v_euler = np.concatenate([[0.0], np.cumsum(a_point[:-1] * ts)])
+    return float(np.std(v_euler - v_true))
+
+
+def _wf05_velocity_rms(case: str) -> float:
+    import numpy as np
+
+    from navcore.papers import wf_example as ex
+
+    return float(np.sqrt(np.mean(ex.run()["vel_err"][case] ** 2)))
+
+
+@register(
+    "wf05-fed-vel-mm",
+    "wf/05-end-to-end",
+    "RMS per axis of the federated aperture-velocity error over the flights (mm/s)",
+)
+def wf05_fed_vel_mm() -> float:
+    """RMS per axis of the worked example's federated aperture-velocity error, mm/s."""
+    return 1e3 * _wf05_velocity_rms("federated")
+
+
+@register(
+    "wf05-vel-gain-db",
+    "wf/05-end-to-end",
+    "navigation-only over federated velocity RMS (dB)",
+)
+def wf05_vel_gain_db() -> float:
+    """20 log10 of the navigation-only over the federated velocity RMS of the worked example, dB."""
+    return float(20 * math.log10(_wf05_velocity_rms("navigation") / _wf05_velocity_rms("federated")))

@@ -586,6 +586,114 @@ def _wf_eq20_block() -> float:
     return num / max(abs(x) for row in J for x in row)
 
 
+def _wf05_vibration_moments() -> tuple[float, float]:
+    """Mean square of the worked example's vertical vibration velocity and the sampling standard
+    deviation of its 20-flight estimate. Each flight sums 8 tones of displacement amplitude
+    A / sqrt(8), frequencies uniform within +-0.5 Hz of f_v and uniform phases; over T seconds
+    a flight's mean square is sum_k d_k + sum_{j<k} X_jk with d_k = (A^2/8)(2 pi f_k)^2 / 2 (exact
+    moments of the uniform frequency) and cross terms X_jk of zero mean whose variance is
+    (A^2/8 (2 pi)^2 E f^2)^2 E[sinc^2(pi df T)] / 2, E[sinc^2] = 1/T for the triangular density
+    of a frequency difference (1 at 0)."""
+    IN = _wf_in()
+    A, f0, T = IN.vib_amplitude_m, IN.vib_hz, IN.aperture_duration_s
+    tones, flights = 8, 20  # the example's tones and flights (its settings)
+    ef2 = f0**2 + 1 / 12
+    ef4 = ((f0 + 0.5) ** 5 - (f0 - 0.5) ** 5) / 5
+    scale = A**2 / tones * (2 * math.pi) ** 2
+    var_d = (scale / 2) ** 2 * (ef4 - ef2**2)
+    var_x = (scale * ef2) ** 2 / (2 * T)
+    ms = tones * scale * ef2 / 2
+    var_ms = (tones * var_d + tones * (tones - 1) / 2 * var_x) / flights
+    return ms, math.sqrt(var_ms)
+
+
+def _wf05_vib_rms() -> tuple[float, float]:
+    """Expected RMS vibration velocity and the sampling standard deviation of the 20-flight RMS."""
+    ms, sd = _wf05_vibration_moments()
+    return math.sqrt(ms), sd / (2 * math.sqrt(ms))
+
+
+def _wf_uz_rms() -> float:
+    """RMS of the vertical line-of-sight component h / R over the continuous Sec. II turn (scipy
+    quad): 8 km altitude, 200 m/s, the emitter at (20, 35, 0) km (the test geometry, typed in)."""
+    IN = _wf_in()
+    w = math.radians(IN.turn_rate_deg_s)
+    r = 200.0 / w
+
+    def uz2(t: float) -> float:
+        dx, dy = 20_000.0 - r * math.sin(w * t), 35_000.0 - r * (1 - math.cos(w * t))
+        return 8000.0**2 / (dx * dx + dy * dy + 8000.0**2)
+
+    T = IN.aperture_duration_s
+    return math.sqrt(integrate.quad(uz2, 0.0, T, epsabs=0.0, epsrel=1e-12)[0] / T)
+
+
+def _wf05_euler_rms() -> float:
+    """Euler sums of point samples of A w cos(k theta), theta = w T_s, in closed form: the sum of
+    cos(k theta) for k < n is (sin(n theta - theta/2) + sin(theta/2)) / (2 sin(theta/2)), so the
+    error against A sin(n theta) oscillates with amplitude A |g exp(-i theta/2) - 1|,
+    g = (theta/2) / sin(theta/2); its standard deviation over whole cycles is that over sqrt(2).
+    A = sqrt(2) times the registered vibration RMS (checked by its own oracle)."""
+    IN = _wf_in()
+    theta = 2 * math.pi * IN.vib_hz * IN.ts
+    g = (theta / 2) / math.sin(theta / 2)
+    amp = abs(g * complex(math.cos(theta / 2), -math.sin(theta / 2)) - 1)
+    return amp * glued.value("wf05-vib-rms")
+
+
+def _wf05_velocity_moments() -> dict[str, float]:
+    """Expected mean squares per axis of the navigation-only and federated velocity errors of the
+    worked example, and the sampling standard deviation of the federated one.
+
+    Navigation: white sigma_N per axis, plus the vibration on the vertical axis. Federated:
+    a_N e_N + a_L e_L with the Eq. (19) weights a_i = p_D / s_i of the designer's covariances
+    (s_N = sigma_N^2, vertically sigma_N^2 + the vibration's mean square; s_L = P(k/k)); e_L is
+    the stationary accelerometer-filter error, variance P(k/k), correlated as (1 - K)^(30 k)
+    between the measurement times 30 steps apart (so a flight gives few independent samples).
+    The variance of the mean square of a Gaussian sequence is 2 sum_ij c(i - j)^2 / n^2 per axis
+    and flight; 3 axes and 20 flights are independent."""
+    IN = _wf_in()
+    _, post, K = _wf_filter(_wf_sigma_a_example())
+    vib_ms, _ = _wf05_vibration_moments()
+    sn2 = IN.sigma_n**2
+    fed = []
+    for s_n, e_n in ((sn2, sn2), (sn2, sn2), (sn2 + vib_ms, sn2 + vib_ms)):
+        p_d = 1 / (1 / s_n + 1 / post)
+        a_n, a_l = p_d / s_n, p_d / post
+        fed.append((a_n**2 * e_n, a_l**2 * post))
+    n = round(IN.aperture_duration_s / IN.ts) // 30 + 1  # measurement times, one every 30 steps
+    lags = np.arange(n)
+    r = (1 - K) ** (30 * lags)
+    counts = np.where(lags == 0, n, 2 * (n - lags))  # ordered pairs (i, j) at each lag
+    var_series = []
+    for white, corr in fed:
+        c = corr * r
+        c[0] += white
+        var_series.append(2 * float(np.sum(counts * c**2)) / n**2)
+    flights = 20
+    var_ms = sum(var_series) / (9 * flights)
+    return {
+        "nav": (3 * sn2 + vib_ms) / 3,
+        "fed": sum(w + c for w, c in fed) / 3,
+        "fed_sd": math.sqrt(var_ms),
+    }
+
+
+def _wf05_fed_vel_mm() -> tuple[float, float]:
+    m = _wf05_velocity_moments()
+    return 1e3 * math.sqrt(m["fed"]), 1e3 * m["fed_sd"] / (2 * math.sqrt(m["fed"]))
+
+
+def _wf05_vel_gain_db() -> tuple[float, float]:
+    """20 log10 sqrt(nav / fed) and its sampling standard deviation (the federated mean square's,
+    to first order; the navigation one is set by the vibration's, added in quadrature)."""
+    m = _wf05_velocity_moments()
+    _, vib_sd = _wf05_vibration_moments()
+    rel_fed = m["fed_sd"] / m["fed"]
+    rel_nav = vib_sd / 3 / m["nav"]
+    return 10 * math.log10(m["nav"] / m["fed"]), 10 / math.log(10) * math.hypot(rel_fed, rel_nav)
+
+
 ORACLES += [
     # the samples' mean over M = 2001 equally spaced times differs from the time average by
     # ((f_0 + f_M)/2 - mean) / (M - 1): under 1/2000 relative while the range varies by less than its mean
@@ -663,6 +771,45 @@ ORACLES += [
     Oracle("wf89-eq20-block", _wf_eq20_block, rtol=1e-12, why="the seeded joint entry by entry"),
     Oracle("wf89-eq24-ratio", lambda: 100**-0.5, rtol=1e-15, why="P_N = sigma_N I scales as the unit"),
     # a seeded run of 200 paths: five sampling standard deviations of its RMS
+    Oracle(
+        "wf05-sigma-dl", lambda: math.sqrt(_wf_filter(_wf_sigma_a_example())[1]), rtol=_WF_RTOL, why=_WF_DARE
+    ),
+    # the samples' mean over M = 200 times differs from the time average by at most 1/199 of the
+    # spread of u_z^2 (under its mean here); the square root halves it
+    Oracle("wf05-uz", _wf_uz_rms, rtol=1 / 2 / 199, why="scipy quad over the continuous turn"),
+    # the seeded flights' statistics: the expected value, within five sampling standard deviations
+    Oracle(
+        "wf05-vib-rms",
+        lambda: _wf05_vib_rms()[0],
+        band=lambda: 5 * _wf05_vib_rms()[1],
+        why="the vibration's exact moments",
+    ),
+    Oracle(
+        "wf05-freq-err",
+        lambda: 10e9 / sc.c * _wf05_vib_rms()[0] * _wf_uz_rms(),
+        band=lambda: 10e9 / sc.c * 5 * _wf05_vib_rms()[1] * _wf_uz_rms(),
+        why="f0/c times the vibration's exact RMS and the quad u_z",
+    ),
+    Oracle(
+        "wf05-freq-err-over-noise",
+        lambda: 10e9 / sc.c * _wf05_vib_rms()[0] * _wf_uz_rms() / 1.0,
+        band=lambda: 10e9 / sc.c * 5 * _wf05_vib_rms()[1] * _wf_uz_rms() / 1.0,
+        why="the same over the 1 Hz noise",
+    ),
+    # 60 s of 3 Hz at 50 Hz is 180 whole cycles and one more sample: 1/3000 from whole cycles
+    Oracle("wf05-euler-point-rms", _wf05_euler_rms, rtol=1e-3, why="closed-form Euler sum"),
+    Oracle(
+        "wf05-fed-vel-mm",
+        lambda: _wf05_fed_vel_mm()[0],
+        band=lambda: 5 * _wf05_fed_vel_mm()[1],
+        why="expected federated error, correlated-sample band",
+    ),
+    Oracle(
+        "wf05-vel-gain-db",
+        lambda: _wf05_vel_gain_db()[0],
+        band=lambda: 5 * _wf05_vel_gain_db()[1],
+        why="expected mean squares",
+    ),
     Oracle(
         "wf89-eq13-ratio",
         lambda: _wf_eq13_ratio()[0],
