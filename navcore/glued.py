@@ -1099,3 +1099,103 @@ def wf05_fed_vel_mm() -> float:
 def wf05_vel_gain_db() -> float:
     """20 log10 of the navigation-only over the federated velocity RMS of the worked example, dB."""
     return float(20 * math.log10(_wf05_velocity_rms("navigation") / _wf05_velocity_rms("federated")))
+
+
+# --- model values: ATC-10 Section 2, the jamming model's thresholds ---------------------------
+
+
+@register(
+    "atc10-pf-k1000-0.999",
+    "atc10/10-jamming-model",
+    "per-filter false-alarm probability at the N_ADL threshold, K = 1000, P_DL = 0.999",
+)
+def atc10_pf_k1000_0999() -> float:
+    """p_f at the t = 0 N_ADL = 0.01 N_T threshold for K = 1000, P_DL = 0.999 (ATC-10 Sec. 2.5)."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(math.exp(pj.threshold_log_pf(0.999, 1000)))
+
+
+@register(
+    "atc10-10-pf-K1-0.88",
+    "atc10/10-jamming-model",
+    "per-filter false-alarm probability at the N_ADL threshold, K = 1, P_DL = 0.88",
+)
+def atc10_pf_k1_088() -> float:
+    """p_f at the t = 0 N_ADL = 0.01 N_T threshold for K = 1, P_DL = 0.88 (ATC-10 Sec. 2.5)."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(math.exp(pj.threshold_log_pf(0.88, 1)))
+
+
+@register(
+    "atc10-10-printed-c1-ln-K1-0.88",
+    "atc10/10-jamming-model",
+    "2 B alpha ln(1 - p_f) at the K = 1, P_DL = 0.88 threshold (the printed (C.1)'s exponent)",
+)
+def atc10_printed_c1_ln_k1_088() -> float:
+    """The exponent 2 B alpha ln(1 - p_f) of (C.1) at the K = 1, P_DL = 0.88 threshold."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.geometry().samples_per_period * math.log1p(-atc10_pf_k1_088()))
+
+
+@register(
+    "atc10-erp-half-K{k}-{p_dl}",
+    "atc10/10-jamming-model",
+    "jammer ERP at which N_ADL reaches 0.01 N_T with half as many independent samples (dBW)",
+)
+def atc10_erp_half_samples(k: str, p_dl: str) -> float:
+    """Jammer ERP (dBW) of the t = 0 N_ADL threshold when every window holds half the samples."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.adl_erp_dbw_half_samples(float(p_dl), int(k)))
+
+
+#: The design points of the page's half-samples sensitivity: K = 1 over its P_DL grid, K = 10 at
+#: Table 2.1's two P_DL.
+ATC10_HALF_SHIFT_POINTS = ((1, (0.88, 0.9, 0.99, 0.999)), (10, (0.88, 0.999)))
+
+
+@register(
+    "atc10-half-shift-small-k",
+    "atc10/10-jamming-model",
+    "largest rise of the N_ADL threshold with half the samples, K = 1 and 10 (dB)",
+)
+def atc10_half_shift_small_k() -> float:
+    """Largest rise (dB) of the t = 0 N_ADL threshold when the sample counts are halved, K = 1 and 10."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(
+        max(
+            pj.adl_erp_dbw_half_samples(p, k) - pj.required_erp_dbw("ambiguous", p, k)
+            for k, ps in ATC10_HALF_SHIFT_POINTS
+            for p in ps
+        )
+    )
+
+
+@register(
+    "atc10-pdl-factor-shift",
+    "atc10/10-jamming-model",
+    "largest drop of the N_ADL threshold without the P_DL factor of (2.5.12) (dB)",
+)
+def atc10_pdl_factor_shift() -> float:
+    """Largest drop (dB) of the N_ADL threshold when the P_DL factor of (2.5.12) is dropped."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.max_pdl_factor_shift_db())
+
+
+@register(
+    "atc10-v-alpha-over-c-us",
+    "atc10/10-jamming-model",
+    "v alpha / c, the delay an aircraft's motion adds over a repetition period (us)",
+)
+def atc10_v_alpha_over_c_us() -> float:
+    """v alpha / c of ATC-10's scenario (the largest speed over a repetition period), in microseconds."""
+    from navcore import units
+    from navcore.papers import atc10_jamming as pj
+
+    g = pj.geometry()
+    return float(g.max_speed_m_s * g.repetition_s / units.C * 1e6)

@@ -694,6 +694,68 @@ def _wf05_vel_gain_db() -> tuple[float, float]:
     return 10 * math.log10(m["nav"] / m["fed"]), 10 / math.log(10) * math.hypot(rel_fed, rel_nav)
 
 
+# --- ATC-10 Section 2: the thresholds in plain probabilities ----------------------------------
+
+
+def _atc10_direct_x_db(p_dl: float, k: int, *, scale: float = 1.0, pdl_factor: bool = True) -> float:
+    """10 log10 J/(P0 B tau) at which N_ADL = 0.01 N_T, t = 0, in plain probabilities: the paper's
+    numbers typed in (2 B alpha = 2e7, 4 B beta = 9.6e5, n_v of (C.14) from v = 600 mph and c in
+    miles per second, N = 0.1 N_T), each sample count times ``scale``; p_d from q = p_d^4,
+    q = 1 - (1 - P_DL)^(1/K); p_f = Q(1/sqrt(x) - Q^-1(1 - p_d)) (scipy.stats.norm); the window
+    probabilities 1 - (1 - p_f)^n as -expm1(n log1p(-p_f)); a 0.5 dB grid from -40 dB and
+    bisection to the crossing. Without ``pdl_factor`` the bound 1/2 N G^(K-1) F is used alone."""
+    q = 1.0 - (1.0 - p_dl) ** (1.0 / k)
+    z = stats.norm.ppf(q**0.25)
+    n_a, n_b = 2e7 * scale, 9.6e5 * scale
+    n_v = 8.0 / 3.0 * 1e7 * scale * (600.0 / 3600.0) / (sc.c / sc.mile)
+
+    def hit(pf: float, n: float) -> float:
+        return -math.expm1(n * math.log1p(-pf))
+
+    def n_adl(x_db: float) -> float:
+        pf = float(stats.norm.sf(1.0 / math.sqrt(10 ** (x_db / 10)) - z))
+        f = hit(pf, n_a) * hit(pf, n_b) ** 3
+        g = hit(pf, n_a) * hit(pf, n_v) ** 3
+        lists = p_dl if pdl_factor else 1.0
+        return 0.5 * 0.1 * lists * g ** (k - 1) * f - 0.01
+
+    grid = np.arange(-40.0, 130.0, 0.5)
+    idx = next(i for i, x in enumerate(grid) if n_adl(x) > 0)
+    lo, hi = grid[idx - 1], grid[idx]
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if n_adl(mid) < 0 else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
+def _atc10_direct_pf(p_dl: float, k: int) -> float:
+    """p_f at the plain-probability crossing."""
+    x_db = _atc10_direct_x_db(p_dl, k)
+    q = 1.0 - (1.0 - p_dl) ** (1.0 / k)
+    return float(stats.norm.sf(1.0 / math.sqrt(10 ** (x_db / 10)) - stats.norm.ppf(q**0.25)))
+
+
+def _atc10_half_shift() -> float:
+    return max(
+        _atc10_direct_x_db(p, k, scale=0.5) - _atc10_direct_x_db(p, k)
+        for k, ps in ((1, (0.88, 0.9, 0.99, 0.999)), (10, (0.88, 0.999)))
+        for p in ps
+    )
+
+
+def _atc10_pdl_factor_shift() -> float:
+    """Over K = 1 at P_DL 0.88, 0.9, 0.99, 0.999 and Table 2.1's finite entries (K, P_DL) = (10, 0.88),
+    (10, 0.999), (100, 0.88), (100, 0.999), (1000, 0.999), typed in."""
+    points = [(1, p) for p in (0.88, 0.9, 0.99, 0.999)] + [
+        (10, 0.88),
+        (10, 0.999),
+        (100, 0.88),
+        (100, 0.999),
+        (1000, 0.999),
+    ]
+    return max(_atc10_direct_x_db(p, k) - _atc10_direct_x_db(p, k, pdl_factor=False) for k, p in points)
+
+
 ORACLES += [
     # the samples' mean over M = 2001 equally spaced times differs from the time average by
     # ((f_0 + f_M)/2 - mean) / (M - 1): under 1/2000 relative while the range varies by less than its mean
@@ -809,6 +871,38 @@ ORACLES += [
         lambda: _wf05_vel_gain_db()[0],
         band=lambda: 5 * _wf05_vel_gain_db()[1],
         why="expected mean squares",
+    ),
+    # bisection to 1e-16 dB: p_f moves by less than 100 relative per dB here, so 1e-6 holds
+    Oracle(
+        "atc10-pf-k1000-0.999", lambda: _atc10_direct_pf(0.999, 1000), rtol=1e-6, why="direct probabilities"
+    ),
+    Oracle("atc10-10-pf-K1-0.88", lambda: _atc10_direct_pf(0.88, 1), rtol=1e-6, why="direct probabilities"),
+    Oracle(
+        "atc10-10-printed-c1-ln-K1-0.88",
+        lambda: 2e7 * math.log1p(-_atc10_direct_pf(0.88, 1)),
+        rtol=1e-6,
+        why="direct probabilities",
+    ),
+    # the dB crossings: bisection far below 1e-6 dB, as for the other ERP oracles (+50 dBW: P0 tau B = 1e5 W)
+    Oracle(
+        "atc10-erp-half-K100-0.88",
+        lambda: _atc10_direct_x_db(0.88, 100, scale=0.5) + 50.0,
+        atol=1e-6,
+        why="direct probabilities, half the samples",
+    ),
+    Oracle(
+        "atc10-erp-half-K100-0.999",
+        lambda: _atc10_direct_x_db(0.999, 100, scale=0.5) + 50.0,
+        atol=1e-6,
+        why="direct probabilities, half the samples",
+    ),
+    Oracle("atc10-half-shift-small-k", _atc10_half_shift, atol=2e-6, why="direct probabilities"),
+    Oracle("atc10-pdl-factor-shift", _atc10_pdl_factor_shift, atol=2e-6, why="direct probabilities"),
+    Oracle(
+        "atc10-v-alpha-over-c-us",
+        lambda: 600 * sc.mile / 3600 * 1.0 / sc.c * 1e6,
+        rtol=1e-12,
+        why="600 mph, alpha = 1 s, scipy.constants",
     ),
     Oracle(
         "wf89-eq13-ratio",
