@@ -1199,3 +1199,309 @@ def atc10_v_alpha_over_c_us() -> float:
 
     g = pj.geometry()
     return float(g.max_speed_m_s * g.repetition_s / units.C * 1e6)
+
+
+@register(
+    "atc10-11-adl-erp-0.9",
+    "atc10/11-single-pulse",
+    "jammer ERP at which N_ADL reaches 0.01 N_T, K = 1, P_DL = 0.9 (dBW)",
+)
+def atc10_11_adl_erp_09() -> float:
+    """Jammer ERP (dBW) of the t = 0 N_ADL threshold for K = 1, P_DL = 0.9 (Fig. 2.1)."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.required_erp_dbw("ambiguous", 0.9, 1))
+
+
+def _atc10_k1_gap(quantity: str) -> float:
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.required_erp_dbw(quantity, 0.9, 1) - pj.required_erp_dbw(quantity, 0.999, 1))
+
+
+@register(
+    "atc10-11-gap-adl",
+    "atc10/11-single-pulse",
+    "N_ADL threshold at P_DL = 0.9 minus that at 0.999, K = 1 (dB)",
+)
+def atc10_11_gap_adl() -> float:
+    """How much more ERP the N_ADL threshold needs at P_DL = 0.9 than at 0.999, K = 1, dB."""
+    return _atc10_k1_gap("ambiguous")
+
+
+@register(
+    "atc10-11-fl-level-spread",
+    "atc10/11-single-pulse",
+    "N_FL threshold at 99.9 % of its supremum minus that at 50 %, K = 1, P_DL = 0.88 (dB)",
+)
+def atc10_11_fl_level_spread() -> float:
+    """Width (dB) of the N_FL rise: the threshold at 99.9 % of the supremum 0.9 N_T minus that at
+    50 %, K = 1, P_DL = 0.88 (t = 0)."""
+    from navcore.detection import jamming as jm
+    from navcore.papers import atc10_jamming as pj
+
+    g = pj.geometry()
+    p_d = pj.design_p_d(0.88, 1)
+    sup = 1.0 - g.airborne_fraction
+    x50, x999 = (jm.jammer_ratio_threshold_db("false", f * sup, p_d, 1, 0.0, g) for f in (0.5, 0.999))
+    return float(x999 - x50)
+
+
+# --- ATC-10 Sec. 2.8, the tracking lists (Table 2.1) ------------------------------------------
+
+
+def _atc10_x_db(p_dl: float, k: int, geometry: Any = None) -> float:
+    """10 log10 J/(P0 B tau) of the t = 0 N_ADL = 0.01 N_T threshold."""
+    from navcore.detection import jamming as jm
+    from navcore.papers import atc10_jamming as pj
+
+    g = pj.geometry() if geometry is None else geometry
+    return float(
+        jm.jammer_ratio_threshold_db("ambiguous", pj.IN.adl_level, pj.design_p_d(p_dl, k), k, 0.0, g)
+    )
+
+
+@register(
+    "atc10-12-fig2.4-x",
+    "atc10/12-tracking-lists",
+    "J/(P0 B tau) of the N_ADL threshold, K = 10, P_DL = 0.88 (dB)",
+)
+def atc10_12_fig24_x() -> float:
+    """10 log10 J/(P0 B tau) at which N_ADL reaches 0.01 N_T, K = 10, P_DL = 0.88 (Fig. 2.4)."""
+    return _atc10_x_db(0.88, 10)
+
+
+@register(
+    "atc10-12-fig2.16-x",
+    "atc10/12-tracking-lists",
+    "J/(P0 B tau) of the N_ADL threshold, K = 1000, P_DL = 0.999 (dB)",
+)
+def atc10_12_fig216_x() -> float:
+    """10 log10 J/(P0 B tau) at which N_ADL reaches 0.01 N_T, K = 1000, P_DL = 0.999 (Fig. 2.16)."""
+    return _atc10_x_db(0.999, 1000)
+
+
+@register(
+    "atc10-12-ceiling-K1000-{p_dl}",
+    "atc10/12-tracking-lists",
+    "supremum of N_ADL / N_T as the jammer grows, K = 1000",
+)
+def atc10_12_ceiling_k1000(p_dl: str) -> float:
+    """Supremum of the N_ADL bound (2.5.12) over jammer power (p_f -> p_d), K = 1000, t = 0."""
+    from navcore.detection import jamming as jm
+    from navcore.papers import atc10_jamming as pj
+
+    return float(
+        math.exp(
+            jm.log_ambiguous_detection_ceiling(pj.design_p_d(float(p_dl), 1000), 1000, 0.0, pj.geometry())
+        )
+    )
+
+
+def _atc10_threshold_pf(quantity: str, p_dl: float, k: int) -> float:
+    """p_f at the t = 0 threshold of ``quantity`` for the design point (P_DL, K)."""
+    from navcore.detection import jamming as jm
+    from navcore.detection import neyman_pearson as npd
+    from navcore.papers import atc10_jamming as pj
+
+    g = pj.geometry()
+    x_db = pj.required_erp_dbw(quantity, p_dl, k) - float(
+        jm.jammer_erp_dbw(0.0, g.pulse_energy_j, g.bandwidth_hz)
+    )
+    return float(
+        npd.false_alarm_probability(
+            pj.design_p_d(p_dl, k), npd.detection_index_from_jammer_ratio(10 ** (x_db / 10))
+        )
+    )
+
+
+def _atc10_fl_erps() -> list[float]:
+    from navcore.papers import atc10_jamming as pj
+
+    return [float(pj.required_erp_dbw("false", p, k)) for k, p, _, _ in pj.TABLE_2_1]
+
+
+@register(
+    "atc10-12-fl-erp-lo", "atc10/12-tracking-lists", "lowest N_FL threshold over Table 2.1's rows (dBW)"
+)
+def atc10_12_fl_erp_lo() -> float:
+    """Lowest t = 0 N_FL threshold (jammer ERP, dBW) over Table 2.1's design points."""
+    return min(_atc10_fl_erps())
+
+
+@register(
+    "atc10-12-fl-erp-hi", "atc10/12-tracking-lists", "highest N_FL threshold over Table 2.1's rows (dBW)"
+)
+def atc10_12_fl_erp_hi() -> float:
+    """Highest t = 0 N_FL threshold (jammer ERP, dBW) over Table 2.1's design points."""
+    return max(_atc10_fl_erps())
+
+
+@register(
+    "atc10-12-fl-pf", "atc10/12-tracking-lists", "median p_f at the N_FL thresholds of Table 2.1's rows"
+)
+def atc10_12_fl_pf() -> float:
+    """Median per-filter p_f at the t = 0 N_FL thresholds of Table 2.1's design points."""
+    import numpy as np
+
+    from navcore.papers import atc10_jamming as pj
+
+    return float(np.median([_atc10_threshold_pf("false", p, k) for k, p, _, _ in pj.TABLE_2_1]))
+
+
+def _atc10_adl_pfs() -> list[float]:
+    from navcore.papers import atc10_jamming as pj
+
+    return [_atc10_threshold_pf("ambiguous", p, k) for k, p, _, rel in pj.TABLE_2_1 if rel == "="]
+
+
+@register(
+    "atc10-12-adl-pf-lo", "atc10/12-tracking-lists", "lowest p_f at the finite N_ADL thresholds of Table 2.1"
+)
+def atc10_12_adl_pf_lo() -> float:
+    """Lowest per-filter p_f at the finite t = 0 N_ADL thresholds of Table 2.1."""
+    return min(_atc10_adl_pfs())
+
+
+@register(
+    "atc10-12-adl-pf-hi", "atc10/12-tracking-lists", "highest p_f at the finite N_ADL thresholds of Table 2.1"
+)
+def atc10_12_adl_pf_hi() -> float:
+    """Highest per-filter p_f at the finite t = 0 N_ADL thresholds of Table 2.1."""
+    return max(_atc10_adl_pfs())
+
+
+@register(
+    "atc10-12-k1000-critical",
+    "atc10/12-tracking-lists",
+    "smallest P_DL at which the K = 1000 N_ADL ceiling reaches 0.01 N_T",
+)
+def atc10_12_k1000_critical() -> float:
+    """Smallest P_DL whose K = 1000 N_ADL ceiling reaches 0.01 N_T (t = 0)."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.k1000_critical_p_dl())
+
+
+@register(
+    "atc10-12-erp-K1000-0.999",
+    "atc10/12-tracking-lists",
+    "jammer ERP at which N_ADL reaches 0.01 N_T, K = 1000, P_DL = 0.999 (dBW)",
+)
+def atc10_12_erp_k1000_0999() -> float:
+    """Jammer ERP (dBW) of the t = 0 N_ADL threshold for K = 1000, P_DL = 0.999 (Table 2.1)."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.required_erp_dbw("ambiguous", 0.999, 1000))
+
+
+def _atc10_printed_k1000_0999() -> float:
+    from navcore.papers import atc10_jamming as pj
+
+    return float(next(text for k, p, text, _ in pj.TABLE_2_1 if (k, p) == (1000, 0.999)))
+
+
+@register(
+    "atc10-12-K1000-below-printed",
+    "atc10/12-tracking-lists",
+    "how far the K = 1000, P_DL = 0.999 threshold lies below Table 2.1's 77 dBW (dB)",
+)
+def atc10_12_k1000_below_printed() -> float:
+    """Table 2.1's printed K = 1000, P_DL = 0.999 entry minus the computed threshold, dB."""
+    return _atc10_printed_k1000_0999() - atc10_12_erp_k1000_0999()
+
+
+def _atc10_ln_adl_k1000_0999(erp_dbw: float) -> float:
+    from navcore.detection import jamming as jm
+    from navcore.papers import atc10_jamming as pj
+
+    g = pj.geometry()
+    erp0 = float(jm.jammer_erp_dbw(0.0, g.pulse_energy_j, g.bandwidth_hz))
+    return float(
+        jm.log_ambiguous_detection_bound(
+            10 ** ((erp_dbw - erp0) / 10), pj.design_p_d(0.999, 1000), 1000, 0.0, g
+        )
+    )
+
+
+@register(
+    "atc10-12-K1000-slope",
+    "atc10/12-tracking-lists",
+    "slope of ln N_ADL at the K = 1000, P_DL = 0.999 crossing (per dB)",
+)
+def atc10_12_k1000_slope() -> float:
+    """d ln N_ADL / d ERP at the K = 1000, P_DL = 0.999 crossing, by a +-0.01 dB difference, per dB."""
+    erp = atc10_12_erp_k1000_0999()
+    return (_atc10_ln_adl_k1000_0999(erp + 0.01) - _atc10_ln_adl_k1000_0999(erp - 0.01)) / 0.02
+
+
+@register(
+    "atc10-12-K1000-misread-pct",
+    "atc10/12-tracking-lists",
+    "N_ADL at the printed 77 dBW over the 0.01 N_T level, minus 1 (%)",
+)
+def atc10_12_k1000_misread_pct() -> float:
+    """How far above the 0.01 N_T level N_ADL is at Table 2.1's printed 77 dBW (K = 1000, 0.999), %."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(
+        100 * (math.exp(_atc10_ln_adl_k1000_0999(_atc10_printed_k1000_0999())) / pj.IN.adl_level - 1)
+    )
+
+
+def _atc10_nv23_shifts() -> dict[tuple[int, float], float]:
+    """Shift (dB) of each finite Table 2.1 threshold when the (C.14) window holds 23 samples (the
+    mean 23.86 rounded down: the speed scaled, the other counts unchanged)."""
+    import dataclasses
+
+    from navcore.papers import atc10_jamming as pj
+
+    g = pj.geometry()
+    geom_23 = dataclasses.replace(g, max_speed_m_s=g.max_speed_m_s * 23 / g.samples_per_track_window)
+    return {
+        (k, p): _atc10_x_db(p, k, geom_23) - _atc10_x_db(p, k) for k, p, _, rel in pj.TABLE_2_1 if rel == "="
+    }
+
+
+@register(
+    "atc10-12-nv23-K1000-0.999",
+    "atc10/12-tracking-lists",
+    "the K = 1000, P_DL = 0.999 threshold with n_v = 23 (dBW)",
+)
+def atc10_12_nv23_k1000_0999() -> float:
+    """Jammer ERP (dBW) of the K = 1000, P_DL = 0.999 threshold with 23 samples in the (C.14) window."""
+    return atc10_12_erp_k1000_0999() + _atc10_nv23_shifts()[(1000, 0.999)]
+
+
+@register(
+    "atc10-12-nv23-small-k",
+    "atc10/12-tracking-lists",
+    "largest shift of a K <= 100 Table 2.1 threshold with n_v = 23 (dB)",
+)
+def atc10_12_nv23_small_k() -> float:
+    """Largest |shift| (dB) of the finite K <= 100 Table 2.1 thresholds with n_v = 23 in (C.14)."""
+    return max(abs(v) for (k, _), v in _atc10_nv23_shifts().items() if k <= 100)
+
+
+@register(
+    "atc10-12-erf-coef-model",
+    "atc10/12-tracking-lists",
+    "coefficient of sqrt(P0 B tau / J) in the erf argument of p_f (the detector model)",
+)
+def atc10_12_erf_coef_model() -> float:
+    """The coefficient c of p_f = 1/2 - 1/2 erf(c sqrt(P0 B tau / J) - phi) in navcore's detector model."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.erf_argument_coefficient())
+
+
+@register(
+    "atc10-12-erf-coef-mc",
+    "atc10/12-tracking-lists",
+    "the erf argument's coefficient from a seeded Monte Carlo of the matched filter",
+)
+def atc10_12_erf_coef_mc() -> float:
+    """The erf argument's coefficient recovered from a seeded Monte Carlo of matched-filter samples."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.monte_carlo_erf_coefficient())

@@ -11,6 +11,7 @@ fails on a registered name without a case here.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -697,35 +698,115 @@ def _wf05_vel_gain_db() -> tuple[float, float]:
 # --- ATC-10 Section 2: the thresholds in plain probabilities ----------------------------------
 
 
-def _atc10_direct_x_db(p_dl: float, k: int, *, scale: float = 1.0, pdl_factor: bool = True) -> float:
-    """10 log10 J/(P0 B tau) at which N_ADL = 0.01 N_T, t = 0, in plain probabilities: the paper's
-    numbers typed in (2 B alpha = 2e7, 4 B beta = 9.6e5, n_v of (C.14) from v = 600 mph and c in
-    miles per second, N = 0.1 N_T), each sample count times ``scale``; p_d from q = p_d^4,
-    q = 1 - (1 - P_DL)^(1/K); p_f = Q(1/sqrt(x) - Q^-1(1 - p_d)) (scipy.stats.norm); the window
-    probabilities 1 - (1 - p_f)^n as -expm1(n log1p(-p_f)); a 0.5 dB grid from -40 dB and
-    bisection to the crossing. Without ``pdl_factor`` the bound 1/2 N G^(K-1) F is used alone."""
-    q = 1.0 - (1.0 - p_dl) ** (1.0 / k)
-    z = stats.norm.ppf(q**0.25)
-    n_a, n_b = 2e7 * scale, 9.6e5 * scale
-    n_v = 8.0 / 3.0 * 1e7 * scale * (600.0 / 3600.0) / (sc.c / sc.mile)
+def _atc10_counts(scale: float = 1.0, n_v: float | None = None) -> tuple[float, float, float]:
+    """The paper's sample counts typed in: 2 B alpha = 2e7, 4 B beta = 9.6e5 and n_v of (C.14)
+    from v = 600 mph and c in miles per second (scipy.constants), each times ``scale``."""
+    nv = 8.0 / 3.0 * 1e7 * scale * (600.0 / 3600.0) / (sc.c / sc.mile) if n_v is None else n_v
+    return 2e7 * scale, 9.6e5 * scale, nv
 
-    def hit(pf: float, n: float) -> float:
-        return -math.expm1(n * math.log1p(-pf))
 
-    def n_adl(x_db: float) -> float:
-        pf = float(stats.norm.sf(1.0 / math.sqrt(10 ** (x_db / 10)) - z))
-        f = hit(pf, n_a) * hit(pf, n_b) ** 3
-        g = hit(pf, n_a) * hit(pf, n_v) ** 3
-        lists = p_dl if pdl_factor else 1.0
-        return 0.5 * 0.1 * lists * g ** (k - 1) * f - 0.01
+def _atc10_pd(p_dl: float, k: int) -> float:
+    """p_d of Eq. (2.4.2) at t = 0: q = p_d^4, q = 1 - (1 - P_DL)^(1/K)."""
+    return (1.0 - (1.0 - p_dl) ** (1.0 / k)) ** 0.25
 
+
+def _atc10_pf(x_db: float, p_d: float) -> float:
+    """p_f = Q(1/sqrt(x) - Q^-1(1 - p_d)) (scipy.stats.norm), x = J/(P0 B tau)."""
+    return float(stats.norm.sf(1.0 / math.sqrt(10 ** (x_db / 10)) - stats.norm.ppf(p_d)))
+
+
+def _hit(pf: float, n: float) -> float:
+    """1 - (1 - p_f)^n, as -expm1(n log1p(-p_f))."""
+    return -math.expm1(n * math.log1p(-pf))
+
+
+def _atc10_adl(
+    pf: float, p_dl: float, k: int, counts: tuple[float, float, float], pdl_factor: bool = True
+) -> float:
+    """N_ADL / N_T = 1/2 (N / N_T) P_DL G^(K-1) F, t = 0, N = 0.1 N_T, in plain probabilities."""
+    n_a, n_b, n_v = counts
+    f = _hit(pf, n_a) * _hit(pf, n_b) ** 3
+    g = _hit(pf, n_a) * _hit(pf, n_v) ** 3
+    return 0.5 * 0.1 * (p_dl if pdl_factor else 1.0) * g ** (k - 1) * f
+
+
+def _atc10_fl(pf: float) -> float:
+    """N_FL / N_T = (1 - N / N_T) F, t = 0."""
+    n_a, n_b, _ = _atc10_counts()
+    return 0.9 * _hit(pf, n_a) * _hit(pf, n_b) ** 3
+
+
+def _crossing_db(count: Callable[[float], float], level: float) -> float:
+    """The first dB value where ``count`` reaches ``level``: a 0.5 dB grid from -40 dB and bisection."""
     grid = np.arange(-40.0, 130.0, 0.5)
-    idx = next(i for i, x in enumerate(grid) if n_adl(x) > 0)
+    idx = next(i for i, x in enumerate(grid) if count(x) > level)
     lo, hi = grid[idx - 1], grid[idx]
     for _ in range(60):
         mid = 0.5 * (lo + hi)
-        lo, hi = (mid, hi) if n_adl(mid) < 0 else (lo, mid)
+        lo, hi = (mid, hi) if count(mid) < level else (lo, mid)
     return 0.5 * (lo + hi)
+
+
+@functools.cache
+def _atc10_direct_x_db(
+    p_dl: float, k: int, *, scale: float = 1.0, pdl_factor: bool = True, n_v: float | None = None
+) -> float:
+    """10 log10 J/(P0 B tau) at which N_ADL = 0.01 N_T, t = 0, in plain probabilities (above);
+    without ``pdl_factor`` the bound 1/2 N G^(K-1) F alone."""
+    p_d, counts = _atc10_pd(p_dl, k), _atc10_counts(scale, n_v)
+    return _crossing_db(lambda x: _atc10_adl(_atc10_pf(x, p_d), p_dl, k, counts, pdl_factor), 0.01)
+
+
+@functools.cache
+def _atc10_fl_x_db(p_dl: float, k: int, fraction: float = 0.99) -> float:
+    """10 log10 J/(P0 B tau) at which N_FL reaches ``fraction`` of its supremum 0.9 N_T, t = 0."""
+    p_d = _atc10_pd(p_dl, k)
+    return _crossing_db(lambda x: _atc10_fl(_atc10_pf(x, p_d)), fraction * 0.9)
+
+
+# Table 2.1's design points (K, P_DL) and its printed K = 1000, P_DL = 0.999 entry, typed in
+_TABLE_21 = ((10, 0.88), (10, 0.999), (100, 0.88), (100, 0.999), (1000, 0.98), (1000, 0.999))
+_TABLE_21_FINITE = tuple(r for r in _TABLE_21 if r != (1000, 0.98))
+_TABLE_21_K1000_PRINTED = 77.0
+
+
+def _atc10_ceiling(p_dl: float, k: int = 1000) -> float:
+    """The N_ADL bound as the jammer grows without limit: plain probabilities at 300 dB, where p_f
+    is p_d to double precision."""
+    return _atc10_adl(_atc10_pf(300.0, _atc10_pd(p_dl, k)), p_dl, k, _atc10_counts())
+
+
+def _atc10_critical_p_dl() -> float:
+    """Bisection (100 halvings of [0.98, 0.9999]) of the K = 1000 ceiling against 0.01 N_T."""
+    lo, hi = 0.98, 0.9999
+    for _ in range(100):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if _atc10_ceiling(mid) < 0.01 else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
+def _atc10_ln_adl_k1000(erp_dbw: float) -> float:
+    return math.log(
+        _atc10_adl(_atc10_pf(erp_dbw - 50.0, _atc10_pd(0.999, 1000)), 0.999, 1000, _atc10_counts())
+    )
+
+
+def _atc10_k1000_slope() -> float:
+    erp = _atc10_direct_x_db(0.999, 1000) + 50.0
+    return (_atc10_ln_adl_k1000(erp + 0.01) - _atc10_ln_adl_k1000(erp - 0.01)) / 0.02
+
+
+def _atc10_erf_mc_band() -> float:
+    """Sampling standard deviation of the Monte Carlo coefficient (10^6 samples, x = 1, p_d = 1/2):
+    p_f = Q(1) from a binomial count, sqrt(p_f (1 - p_f) / n), and from the sample median used as
+    the threshold, phi(1) sqrt(1/4 / n) / phi(0); c = erfinv(1 - 2 p_f) moves by
+    sqrt(pi) exp(c^2) per unit p_f."""
+    n = 1_000_000
+    pf = float(stats.norm.sf(1.0))
+    sd_pf = math.hypot(
+        math.sqrt(pf * (1 - pf) / n), stats.norm.pdf(1.0) * math.sqrt(0.25 / n) / stats.norm.pdf(0.0)
+    )
+    return math.sqrt(math.pi) * math.exp(0.5) * sd_pf
 
 
 def _atc10_direct_pf(p_dl: float, k: int) -> float:
@@ -903,6 +984,111 @@ ORACLES += [
         lambda: 600 * sc.mile / 3600 * 1.0 / sc.c * 1e6,
         rtol=1e-12,
         why="600 mph, alpha = 1 s, scipy.constants",
+    ),
+    Oracle(
+        "atc10-11-adl-erp-0.9",
+        lambda: _atc10_direct_x_db(0.9, 1) + 50.0,
+        atol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-11-gap-adl",
+        lambda: _atc10_direct_x_db(0.9, 1) - _atc10_direct_x_db(0.999, 1),
+        atol=2e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-11-fl-level-spread",
+        lambda: _atc10_fl_x_db(0.88, 1, 0.999) - _atc10_fl_x_db(0.88, 1, 0.5),
+        atol=2e-6,
+        why="direct probabilities",
+    ),
+    Oracle("atc10-12-fig2.4-x", lambda: _atc10_direct_x_db(0.88, 10), atol=1e-6, why="direct probabilities"),
+    Oracle(
+        "atc10-12-fig2.16-x", lambda: _atc10_direct_x_db(0.999, 1000), atol=1e-6, why="direct probabilities"
+    ),
+    # p_f is p_d to 1e-15 at 300 dB; G^999 amplifies a p_f error by under 1e3
+    Oracle(
+        "atc10-12-ceiling-K1000-0.88", lambda: _atc10_ceiling(0.88), rtol=1e-8, why="direct probabilities"
+    ),
+    Oracle(
+        "atc10-12-ceiling-K1000-0.98", lambda: _atc10_ceiling(0.98), rtol=1e-8, why="direct probabilities"
+    ),
+    Oracle(
+        "atc10-12-ceiling-K1000-0.999", lambda: _atc10_ceiling(0.999), rtol=1e-8, why="direct probabilities"
+    ),
+    Oracle(
+        "atc10-12-fl-erp-lo",
+        lambda: min(_atc10_fl_x_db(p, k) for k, p in _TABLE_21) + 50.0,
+        atol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-12-fl-erp-hi",
+        lambda: max(_atc10_fl_x_db(p, k) for k, p in _TABLE_21) + 50.0,
+        atol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-12-fl-pf",
+        lambda: float(np.median([_atc10_pf(_atc10_fl_x_db(p, k), _atc10_pd(p, k)) for k, p in _TABLE_21])),
+        rtol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-12-adl-pf-lo",
+        lambda: min(_atc10_pf(_atc10_direct_x_db(p, k), _atc10_pd(p, k)) for k, p in _TABLE_21_FINITE),
+        rtol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-12-adl-pf-hi",
+        lambda: max(_atc10_pf(_atc10_direct_x_db(p, k), _atc10_pd(p, k)) for k, p in _TABLE_21_FINITE),
+        rtol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle("atc10-12-k1000-critical", _atc10_critical_p_dl, rtol=1e-9, why="bisection of the direct ceiling"),
+    Oracle(
+        "atc10-12-erp-K1000-0.999",
+        lambda: _atc10_direct_x_db(0.999, 1000) + 50.0,
+        atol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-12-K1000-below-printed",
+        lambda: _TABLE_21_K1000_PRINTED - (_atc10_direct_x_db(0.999, 1000) + 50.0),
+        atol=1e-6,
+        why="direct probabilities, the printed 77 dBW",
+    ),
+    Oracle("atc10-12-K1000-slope", _atc10_k1000_slope, rtol=1e-6, why="direct probabilities"),
+    Oracle(
+        "atc10-12-K1000-misread-pct",
+        lambda: 100 * (math.exp(_atc10_ln_adl_k1000(_TABLE_21_K1000_PRINTED)) / 0.01 - 1),
+        rtol=1e-6,
+        why="direct probabilities at the printed 77 dBW",
+    ),
+    Oracle(
+        "atc10-12-nv23-K1000-0.999",
+        lambda: _atc10_direct_x_db(0.999, 1000, n_v=23.0) + 50.0,
+        atol=1e-6,
+        why="direct probabilities, n_v = 23",
+    ),
+    Oracle(
+        "atc10-12-nv23-small-k",
+        lambda: max(
+            abs(_atc10_direct_x_db(p, k, n_v=23.0) - _atc10_direct_x_db(p, k))
+            for k, p in _TABLE_21_FINITE
+            if k <= 100
+        ),
+        atol=2e-6,
+        why="direct probabilities, n_v = 23",
+    ),
+    Oracle("atc10-12-erf-coef-model", lambda: 1 / math.sqrt(2), rtol=1e-9, why="(D.17): 1/sqrt(2)"),
+    Oracle(
+        "atc10-12-erf-coef-mc",
+        lambda: 1 / math.sqrt(2),
+        band=lambda: 5 * _atc10_erf_mc_band(),
+        why="(D.17) within five sampling standard deviations",
     ),
     Oracle(
         "wf89-eq13-ratio",
