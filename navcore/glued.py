@@ -1505,3 +1505,163 @@ def atc10_12_erf_coef_mc() -> float:
     from navcore.papers import atc10_jamming as pj
 
     return float(pj.monte_carlo_erf_coefficient())
+
+
+# --- ATC-10 Sec. 1.1, Table 1.1 (transmission lengths) ----------------------------------------
+
+
+@register(
+    "atc10-erp-by-K-{k}-{p_dl}",
+    "atc10/13-tables",
+    "jammer ERP at which N_ADL reaches 0.01 N_T for Table 1.1's K (dBW; inf: never)",
+)
+def atc10_erp_by_k(k: str, p_dl: str) -> float:
+    """Jammer ERP (dBW) of the t = 0 N_ADL threshold for Table 1.1's K (``inf`` where none is reached)."""
+    from navcore.papers import atc10_jamming as pj
+
+    erps = pj.erp_by_transmission_length(float(p_dl))
+    return float(erps[pj.TABLE_1_1_KS.index(int(k))])
+
+
+@register(
+    "atc10-ceiling-K1000-0.88",
+    "atc10/13-tables",
+    "supremum of N_ADL / N_T as the jammer grows, K = 1000, P_DL = 0.88",
+)
+def atc10_13_ceiling_k1000_088() -> float:
+    """Supremum of the N_ADL bound over jammer power, K = 1000, P_DL = 0.88, t = 0."""
+    return atc10_12_ceiling_k1000("0.88")
+
+
+@register(
+    "atc10-step-K100-K1000-0.999",
+    "atc10/13-tables",
+    "N_ADL threshold of K = 1000 minus that of K = 100, P_DL = 0.999 (dB)",
+)
+def atc10_step_k100_k1000_0999() -> float:
+    """How much more ERP the t = 0 N_ADL threshold needs at K = 1000 than at K = 100, P_DL = 0.999, dB."""
+    from navcore.papers import atc10_jamming as pj
+
+    erps = pj.erp_by_transmission_length(0.999)
+    ks = pj.TABLE_1_1_KS
+    return float(erps[ks.index(1000)] - erps[ks.index(100)])
+
+
+def _atc10_table11_misfits() -> tuple[list[float], list[float]]:
+    """|printed - model| of Table 1.1's rf column (dB) and beamwidth column (deg), by row."""
+    from navcore.papers import atc10_jamming as pj
+
+    rf = [abs(r - pj.table11_rf_dbw(i)) for i, (_, _, r, _, _) in enumerate(pj.TABLE_1_1)]
+    bw = [abs(b - pj.table11_beamwidth_deg(i)) for i, (*_, b) in enumerate(pj.TABLE_1_1)]
+    return rf, bw
+
+
+@register(
+    "atc10-13-rf-fit-K10",
+    "atc10/13-tables",
+    "misfit of the dish model to Table 1.1's K = 10 rf power (dB)",
+)
+def atc10_13_rf_fit_k10() -> float:
+    """|printed - model| rf power of Table 1.1's K = 10 row with the assumed dish, dB."""
+    from navcore.papers import atc10_jamming as pj
+
+    return _atc10_table11_misfits()[0][pj.TABLE_1_1_KS.index(10)]
+
+
+@register(
+    "atc10-13-rf-fit-others",
+    "atc10/13-tables",
+    "largest misfit of the dish model to Table 1.1's other rf powers (dB)",
+)
+def atc10_13_rf_fit_others() -> float:
+    """Largest |printed - model| rf power of Table 1.1's rows other than K = 10, dB."""
+    from navcore.papers import atc10_jamming as pj
+
+    i10 = pj.TABLE_1_1_KS.index(10)
+    return max(m for i, m in enumerate(_atc10_table11_misfits()[0]) if i != i10)
+
+
+@register(
+    "atc10-13-bw-K1-dish",
+    "atc10/13-tables",
+    "beamwidth 70 lambda / D of the dish for Table 1.1's K = 1 gain (deg)",
+)
+def atc10_13_bw_k1_dish() -> float:
+    """Beamwidth (deg) 70 lambda / D of the assumed dish with the K = 1 row's gain (ERP - rf)."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.table11_beamwidth_deg(0))
+
+
+@register(
+    "atc10-13-bw-K1-scaled",
+    "atc10/13-tables",
+    "Sec. 2.7's 20 deg scaled to Table 1.1's K = 1 gain (deg)",
+)
+def atc10_13_bw_k1_scaled() -> float:
+    """Sec. 2.7's printed 20 deg beamwidth scaled by sqrt of the gain ratio to the K = 1 row, deg."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.table11_k1_beamwidth_scaled_deg())
+
+
+@register(
+    "atc10-13-bw-fit-others",
+    "atc10/13-tables",
+    "largest misfit of 70 lambda / D to Table 1.1's K = 10-1000 beamwidths (deg)",
+)
+def atc10_13_bw_fit_others() -> float:
+    """Largest |printed - 70 lambda / D| beamwidth of Table 1.1's rows K = 10, 100, 1000, deg."""
+    return max(_atc10_table11_misfits()[1][1:])
+
+
+def _atc10_sec27_gain() -> float:
+    """Sec. 2.7's antenna gain, the nominal ERP over the rf power, as a ratio."""
+    from navcore import units
+    from navcore.papers import atc10_jamming as pj
+
+    return float(units.power_ratio_from_db(pj.IN.nominal_erp_dbw - units.dbw_from_watts(pj.IN.nominal_rf_w)))
+
+
+@register(
+    "atc10-13-30W-gain-db",
+    "atc10/13-tables",
+    "antenna gain that takes 30 W to 33 dBW (dB)",
+)
+def atc10_13_30w_gain_db() -> float:
+    """Gain (dB) of Sec. 2.7's antenna: 33 dBW of ERP from 30 W of rf power."""
+    return float(10 * math.log10(_atc10_sec27_gain()))
+
+
+def _atc10_2ft_gain_db() -> float:
+    from navcore import units
+    from navcore.detection import antenna
+    from navcore.papers import atc10_jamming as pj
+
+    return float(
+        10
+        * math.log10(float(antenna.dish_gain(2 * units.FT, pj.IN.dish_frequency_hz, pj.IN.dish_efficiency)))
+    )
+
+
+@register(
+    "atc10-13-2ft-gain-db",
+    "atc10/13-tables",
+    "gain of a 2 ft dish at the assumed frequency and efficiency (dB)",
+)
+def atc10_13_2ft_gain_db() -> float:
+    """Gain (dB) of a 2 ft dish at the assumed frequency and efficiency of Table 1.1's dishes."""
+    return _atc10_2ft_gain_db()
+
+
+@register(
+    "atc10-13-2ft-rf-w",
+    "atc10/13-tables",
+    "rf power a 2 ft dish needs for 33 dBW (W)",
+)
+def atc10_13_2ft_rf_w() -> float:
+    """rf power (W) that gives Sec. 2.7's 33 dBW through a 2 ft dish."""
+    from navcore import units
+    from navcore.papers import atc10_jamming as pj
+
+    return float(units.power_ratio_from_db(pj.IN.nominal_erp_dbw - _atc10_2ft_gain_db()))

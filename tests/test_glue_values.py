@@ -737,9 +737,12 @@ def _atc10_fl(pf: float) -> float:
 
 
 def _crossing_db(count: Callable[[float], float], level: float) -> float:
-    """The first dB value where ``count`` reaches ``level``: a 0.5 dB grid from -40 dB and bisection."""
+    """The first dB value where ``count`` reaches ``level``: a 0.5 dB grid from -40 dB to 130 dB and
+    bisection (``inf`` if the grid never reaches it)."""
     grid = np.arange(-40.0, 130.0, 0.5)
-    idx = next(i for i, x in enumerate(grid) if count(x) > level)
+    idx = next((i for i, x in enumerate(grid) if count(x) > level), None)
+    if idx is None:
+        return math.inf  # no jammer reaches the level (the count's supremum lies below it)
     lo, hi = grid[idx - 1], grid[idx]
     for _ in range(60):
         mid = 0.5 * (lo + hi)
@@ -835,6 +838,36 @@ def _atc10_pdl_factor_shift() -> float:
         (1000, 0.999),
     ]
     return max(_atc10_direct_x_db(p, k) - _atc10_direct_x_db(p, k, pdl_factor=False) for k, p in points)
+
+
+# Table 1.1 as printed, typed in: (K, ERP dBW, rf dBW, diameter ft, beamwidth deg)
+_TABLE_11 = ((1, 33, 15, 2, 15), (10, 43, 20, 4, 12), (100, 53, 23, 8, 5), (1000, 77, 40, 18, 2))
+
+
+def _dish_gain(diameter_ft: float) -> float:
+    """eta (pi D / lambda)^2 of a parabolic dish (the assumed frequency and efficiency; feet and c
+    from scipy.constants)."""
+    from navcore.papers import atc10_jamming as pj
+
+    lam = sc.c / pj.IN.dish_frequency_hz
+    return pj.IN.dish_efficiency * (math.pi * diameter_ft * sc.foot / lam) ** 2
+
+
+def _dish_beamwidth_for_gain(gain_db: float) -> float:
+    """70 lambda / D for the dish of that gain: D / lambda = sqrt(G / eta) / pi, so 70 pi sqrt(eta / G)."""
+    from navcore.papers import atc10_jamming as pj
+
+    return 70 * math.pi * math.sqrt(pj.IN.dish_efficiency / 10 ** (gain_db / 10))
+
+
+def _table11_rf_misfit(row: int) -> float:
+    _, erp, rf, dia, _ = _TABLE_11[row]
+    return abs(rf - (erp - 10 * math.log10(_dish_gain(dia))))
+
+
+def _table11_bw_misfit(row: int) -> float:
+    _, erp, rf, _, bw = _TABLE_11[row]
+    return abs(bw - _dish_beamwidth_for_gain(erp - rf))
 
 
 ORACLES += [
@@ -1089,6 +1122,96 @@ ORACLES += [
         lambda: 1 / math.sqrt(2),
         band=lambda: 5 * _atc10_erf_mc_band(),
         why="(D.17) within five sampling standard deviations",
+    ),
+    Oracle(
+        "atc10-erp-by-K-1-0.88",
+        lambda: _atc10_direct_x_db(0.88, 1) + 50.0,
+        atol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-erp-by-K-10-0.88",
+        lambda: _atc10_direct_x_db(0.88, 10) + 50.0,
+        atol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-erp-by-K-100-0.88",
+        lambda: _atc10_direct_x_db(0.88, 100) + 50.0,
+        atol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-erp-by-K-1000-0.88", lambda: _atc10_direct_x_db(0.88, 1000) + 50.0, why="direct: no crossing"
+    ),
+    Oracle(
+        "atc10-erp-by-K-1-0.999",
+        lambda: _atc10_direct_x_db(0.999, 1) + 50.0,
+        atol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-erp-by-K-10-0.999",
+        lambda: _atc10_direct_x_db(0.999, 10) + 50.0,
+        atol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-erp-by-K-100-0.999",
+        lambda: _atc10_direct_x_db(0.999, 100) + 50.0,
+        atol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-erp-by-K-1000-0.999",
+        lambda: _atc10_direct_x_db(0.999, 1000) + 50.0,
+        atol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle("atc10-ceiling-K1000-0.88", lambda: _atc10_ceiling(0.88), rtol=1e-8, why="direct probabilities"),
+    Oracle(
+        "atc10-step-K100-K1000-0.999",
+        lambda: _atc10_direct_x_db(0.999, 1000) - _atc10_direct_x_db(0.999, 100),
+        atol=2e-6,
+        why="direct probabilities",
+    ),
+    Oracle("atc10-13-rf-fit-K10", lambda: _table11_rf_misfit(1), rtol=1e-9, why="eta (pi D / lambda)^2"),
+    Oracle(
+        "atc10-13-rf-fit-others",
+        lambda: max(_table11_rf_misfit(i) for i in (0, 2, 3)),
+        rtol=1e-9,
+        why="eta (pi D / lambda)^2",
+    ),
+    Oracle(
+        "atc10-13-bw-K1-dish", lambda: _dish_beamwidth_for_gain(33 - 15), rtol=1e-9, why="70 pi sqrt(eta / G)"
+    ),
+    # theta^2 G is the same for both antennas: 20 deg x sqrt(G_2.7 / G_K1), G_2.7 = 10^3.3 / 30, G_K1 = 10^1.8
+    Oracle(
+        "atc10-13-bw-K1-scaled",
+        lambda: 20 * math.sqrt(10**1.5 / 30),
+        rtol=1e-12,
+        why="the printed 20 deg, 30 W, 33 dBW and the row's 33 and 15 dBW",
+    ),
+    Oracle(
+        "atc10-13-bw-fit-others",
+        lambda: max(_table11_bw_misfit(i) for i in (1, 2, 3)),
+        rtol=1e-9,
+        why="70 pi sqrt(eta / G)",
+    ),
+    Oracle(
+        "atc10-13-30W-gain-db",
+        lambda: 33 - 10 * math.log(30) / math.log(10),
+        rtol=1e-12,
+        why="33 dBW - 10 log10 30",
+    ),
+    Oracle(
+        "atc10-13-2ft-gain-db",
+        lambda: 10 * math.log10(_dish_gain(2)),
+        rtol=1e-12,
+        why="eta (pi D / lambda)^2",
+    ),
+    Oracle(
+        "atc10-13-2ft-rf-w", lambda: 10**3.3 / _dish_gain(2), rtol=1e-11, why="10^3.3 W over the dish gain"
     ),
     Oracle(
         "wf89-eq13-ratio",
