@@ -1121,6 +1121,11 @@ def atc10_pf_k1000_0999() -> float:
     "atc10/10-jamming-model",
     "per-filter false-alarm probability at the N_ADL threshold, K = 1, P_DL = 0.88",
 )
+@register(
+    "atc10-pf-threshold-K1-0.88",
+    "atc10/14-monte-carlo",
+    "per-filter false-alarm probability at the N_ADL threshold, K = 1, P_DL = 0.88",
+)
 def atc10_pf_k1_088() -> float:
     """p_f at the t = 0 N_ADL = 0.01 N_T threshold for K = 1, P_DL = 0.88 (ATC-10 Sec. 2.5)."""
     from navcore.papers import atc10_jamming as pj
@@ -1665,3 +1670,64 @@ def atc10_13_2ft_rf_w() -> float:
     from navcore.papers import atc10_jamming as pj
 
     return float(units.power_ratio_from_db(pj.IN.nominal_erp_dbw - _atc10_2ft_gain_db()))
+
+
+# --- ATC-10 Appendix B-C checked by simulation: a window of correlated samples -----------------
+
+
+def _atc10_window_rates() -> Any:
+    from navcore.papers import atc10_jamming_mc as mc
+
+    return mc.simulate_window_declarations()
+
+
+def _atc10_window_ratio(index: int) -> float:
+    w = _atc10_window_rates()
+    return float(w.empty_correlated[index] / w.empty_formula[index])
+
+
+@register(
+    "atc10-mc-window-ratio-hi",
+    "atc10/14-monte-carlo",
+    "simulated empty-window probability, correlated samples, over (1 - p_f)^n at the largest p_f",
+)
+def atc10_mc_window_ratio_hi() -> float:
+    """Simulated empty-window probability of correlated samples over (1 - p_f)^n, largest p_f."""
+    import numpy as np
+
+    return _atc10_window_ratio(int(np.argmax(_atc10_window_rates().p_f)))
+
+
+@register(
+    "atc10-mc-window-ratio-lo",
+    "atc10/14-monte-carlo",
+    "simulated empty-window probability, correlated samples, over (1 - p_f)^n at the smallest p_f",
+)
+def atc10_mc_window_ratio_lo() -> float:
+    """Simulated empty-window probability of correlated samples over (1 - p_f)^n, smallest p_f."""
+    return _atc10_window_ratio(0)
+
+
+@register(
+    "atc10-mc-window-dln-k1000",
+    "atc10/14-monte-carlo",
+    "change of ln N_ADL at K = 1000 with (C.14)'s track-window factors at the simulated correlated value",
+)
+def atc10_mc_window_dln_k1000() -> float:
+    """3 (K - 1) [ln(1 - e_c) - ln(1 - e_f)] at K = 1000 and the largest simulated p_f: how ln N_ADL
+    moves if the track-window factors of (C.14) used the simulated correlated empty probability e_c."""
+    import numpy as np
+
+    w = _atc10_window_rates()
+    i = int(np.argmax(w.p_f))
+    return float(3 * 999 * (math.log1p(-w.empty_correlated[i]) - math.log1p(-w.empty_formula[i])))
+
+
+@register(
+    "atc10-mc-window-factor-k1000",
+    "atc10/14-monte-carlo",
+    "factor on N_ADL at K = 1000 from the simulated correlated window",
+)
+def atc10_mc_window_factor_k1000() -> float:
+    """exp of :func:`atc10_mc_window_dln_k1000`: the factor on N_ADL at K = 1000."""
+    return float(math.exp(atc10_mc_window_dln_k1000()))

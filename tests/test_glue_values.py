@@ -870,6 +870,34 @@ def _table11_bw_misfit(row: int) -> float:
     return abs(bw - _dish_beamwidth_for_gain(erp - rf))
 
 
+def _ma1_window_empty(pf: float, n: int = 24, half_width: float = 9.0, step: float = 2e-3) -> float:
+    """Exact probability that n samples y_k = (z_k + z_(k+1)) / sqrt(2), z i.i.d. N(0, 1), all stay
+    below Q^-1(p_f): the chain z_1, z_2, ... carried on a grid (trapezoid cumulative sums,
+    numpy interpolation), f_(k+1)(z') = phi(z') int f_k(z) [z <= sqrt(2) u - z'] dz."""
+    u = float(stats.norm.isf(pf))
+    z = np.arange(-half_width, half_width + step / 2, step)
+    phi = np.exp(-0.5 * z * z) / math.sqrt(2 * math.pi)
+    f = phi.copy()
+    for _ in range(n):
+        cum = np.concatenate([[0.0], np.cumsum(0.5 * (f[1:] + f[:-1]) * step)])
+        f = phi * np.interp(math.sqrt(2) * u - z, z, cum, left=0.0, right=cum[-1])
+    return float(np.sum(0.5 * (f[1:] + f[:-1]) * step))
+
+
+def _atc10_window(pf: float) -> tuple[float, float, float]:
+    """(exact correlated empty probability, (1 - p_f)^24, sampling standard deviation of the
+    400 000-trial estimate) for the page's 24-sample window."""
+    exact = _ma1_window_empty(pf)
+    return exact, (1 - pf) ** 24, math.sqrt(exact * (1 - exact) / 400_000)
+
+
+def _atc10_window_dln(pf: float = 0.27) -> tuple[float, float]:
+    """3 (K - 1)[ln(1 - e_c) - ln(1 - e_f)] at K = 1000 with the exact e_c, and its sampling
+    standard deviation 3 (K - 1) sd / (1 - e_c)."""
+    exact, formula, sd = _atc10_window(pf)
+    return 3 * 999 * (math.log1p(-exact) - math.log1p(-formula)), 3 * 999 * sd / (1 - exact)
+
+
 ORACLES += [
     # the samples' mean over M = 2001 equally spaced times differs from the time average by
     # ((f_0 + f_M)/2 - mean) / (M - 1): under 1/2000 relative while the range varies by less than its mean
@@ -1212,6 +1240,35 @@ ORACLES += [
     ),
     Oracle(
         "atc10-13-2ft-rf-w", lambda: 10**3.3 / _dish_gain(2), rtol=1e-11, why="10^3.3 W over the dish gain"
+    ),
+    Oracle(
+        "atc10-pf-threshold-K1-0.88", lambda: _atc10_direct_pf(0.88, 1), rtol=1e-6, why="direct probabilities"
+    ),
+    # the simulated window (400 000 seeded trials, p_f from 0.01 to 0.27) against the exact chain
+    # probability, within five sampling standard deviations (the grid quadrature is good to 1e-6)
+    Oracle(
+        "atc10-mc-window-ratio-hi",
+        lambda: _atc10_window(0.27)[0] / _atc10_window(0.27)[1],
+        band=lambda: 5 * _atc10_window(0.27)[2] / _atc10_window(0.27)[1],
+        why="exact MA(1) window by quadrature",
+    ),
+    Oracle(
+        "atc10-mc-window-ratio-lo",
+        lambda: _atc10_window(0.01)[0] / _atc10_window(0.01)[1],
+        band=lambda: 5 * _atc10_window(0.01)[2] / _atc10_window(0.01)[1],
+        why="exact MA(1) window by quadrature",
+    ),
+    Oracle(
+        "atc10-mc-window-dln-k1000",
+        lambda: _atc10_window_dln()[0],
+        band=lambda: 5 * _atc10_window_dln()[1],
+        why="exact MA(1) window by quadrature",
+    ),
+    Oracle(
+        "atc10-mc-window-factor-k1000",
+        lambda: math.exp(_atc10_window_dln()[0]),
+        band=lambda: math.exp(_atc10_window_dln()[0]) * math.expm1(5 * _atc10_window_dln()[1]),
+        why="exact MA(1) window by quadrature",
     ),
     Oracle(
         "wf89-eq13-ratio",
