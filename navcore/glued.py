@@ -1731,3 +1731,90 @@ def atc10_mc_window_dln_k1000() -> float:
 def atc10_mc_window_factor_k1000() -> float:
     """exp of :func:`atc10_mc_window_dln_k1000`: the factor on N_ADL at K = 1000."""
     return float(math.exp(atc10_mc_window_dln_k1000()))
+
+
+# --- ATC-10 Sec. 3.9 and App. F: the Zakai bandwidth of PSK codes -----------------------------
+
+#: The page's Appendix F example: a 31-chip random wanted code and four random interferers (seed 1).
+ATC10_F5_CHIPS, ATC10_F5_INTERFERERS, ATC10_F5_SEED = 31, 4, 1
+#: The page's random 1023-chip codes: 20 of them, seed 3.
+ATC10_RANDOM_CODES, ATC10_RANDOM_SEED = 20, 3
+
+
+def _atc10_f5_codes() -> tuple[Any, list[Any]]:
+    import numpy as np
+
+    rng = np.random.default_rng(ATC10_F5_SEED)
+    ci = rng.choice([-1.0, 1.0], ATC10_F5_CHIPS)
+    return ci, [rng.choice([-1.0, 1.0], ATC10_F5_CHIPS) for _ in range(ATC10_F5_INTERFERERS)]
+
+
+@register(
+    "atc10-23-f5-power",
+    "atc10/23-zakai-bandwidth",
+    "cross-term noise power of (F.6) for the page's random 31-chip codes (alpha = chip = 1)",
+)
+def atc10_23_f5_power() -> float:
+    """E(n^2) of ATC-10 Eq. (F.6), (1 / 2 alpha) sum_j int R_ii R_jj, for the page's seeded codes."""
+    from navcore.detection import zakai
+
+    ci, cjs = _atc10_f5_codes()
+    return float(zakai.cross_term_noise_power(ci, cjs, 1.0, 1.0))
+
+
+@register(
+    "atc10-23-f5-bound",
+    "atc10/23-zakai-bandwidth",
+    "the Zakai-bandwidth bound on that noise power (alpha = chip = 1)",
+)
+def atc10_23_f5_bound() -> float:
+    """sum_j 1 / (4 alpha sqrt(W_i W_j)), the bound of App. F through the codes' Zakai bandwidths."""
+    from navcore.detection import zakai
+
+    ci, cjs = _atc10_f5_codes()
+    return float(
+        zakai.zakai_noise_power_bound(
+            zakai.psk_zakai_bandwidth(ci, 1.0), [zakai.psk_zakai_bandwidth(c, 1.0) for c in cjs], 1.0
+        )
+    )
+
+
+@register(
+    "atc10-23-w-random-1023",
+    "atc10/23-zakai-bandwidth",
+    "mean Zakai bandwidth of 20 random 1023-chip codes (per chip rate)",
+)
+def atc10_23_w_random_1023() -> float:
+    """Mean Zakai bandwidth (unit chips) of the page's 20 seeded random 1023-chip codes."""
+    import numpy as np
+
+    from navcore.detection import zakai
+
+    rng = np.random.default_rng(ATC10_RANDOM_SEED)
+    return float(
+        np.mean(
+            [zakai.psk_zakai_bandwidth(rng.choice([-1.0, 1.0], 1023), 1.0) for _ in range(ATC10_RANDOM_CODES)]
+        )
+    )
+
+
+@register(
+    "atc10-23-w-ideal",
+    "atc10/23-zakai-bandwidth",
+    "W tau_c of the idealised alternating-sidelobe autocorrelation, L = 10 000",
+)
+def atc10_23_w_ideal() -> float:
+    """Zakai bandwidth times the chip of the idealised Fig. 3.11 autocorrelation, L = 10 000 chips."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(pm.w_chip_limit_ideal())
+
+
+@register(
+    "atc10-23-thm-ratio",
+    "atc10/23-zakai-bandwidth",
+    "1 / (4 W tau_c) of the idealised autocorrelation",
+)
+def atc10_23_thm_ratio() -> float:
+    """1 / (4 W tau_c) for the idealised Fig. 3.11 autocorrelation, L = 10 000 chips."""
+    return float(1 / (4 * atc10_23_w_ideal()))

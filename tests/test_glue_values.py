@@ -898,6 +898,61 @@ def _atc10_window_dln(pf: float = 0.27) -> tuple[float, float]:
     return 3 * 999 * (math.log1p(-exact) - math.log1p(-formula)), 3 * 999 * sd / (1 - exact)
 
 
+def _brute_cross_energy(ci: np.ndarray, cj: np.ndarray, oversample: int = 200) -> float:
+    """int X_ij(t)^2 dt of the rectangular-chip waveforms' cross-correlation (unit chips, each code
+    scaled to a unit-peak autocorrelation), by fine-grid correlation (scipy.signal) and Riemann sums:
+    the left side of Parseval's identity that (F.6) rests on."""
+    dt = 1.0 / oversample
+    si = np.repeat(np.asarray(ci, float), oversample) / math.sqrt(ci.size)
+    sj = np.repeat(np.asarray(cj, float), oversample) / math.sqrt(cj.size)
+    x = signal.correlate(si, sj, mode="full", method="fft") * dt
+    return float(np.sum(x**2) * dt)
+
+
+def _atc10_f5_codes() -> tuple[np.ndarray, list[np.ndarray]]:
+    """The page's seeded codes: 31 chips, the wanted one and four interferers (seed 1), typed in."""
+    rng = np.random.default_rng(1)
+    ci = rng.choice([-1.0, 1.0], 31)
+    return ci, [rng.choice([-1.0, 1.0], 31) for _ in range(4)]
+
+
+def _atc10_f5_power() -> float:
+    ci, cjs = _atc10_f5_codes()
+    return sum(_brute_cross_energy(ci, cj) for cj in cjs) / 2.0
+
+
+def _atc10_f5_bound() -> float:
+    ci, cjs = _atc10_f5_codes()
+    wi = _brute_zakai(ci)
+    return sum(1.0 / (4.0 * math.sqrt(wi * _brute_zakai(cj))) for cj in cjs)
+
+
+def _atc10_w_random_1023() -> float:
+    rng = np.random.default_rng(3)
+    return float(np.mean([_brute_zakai(rng.choice([-1.0, 1.0], 1023)) for _ in range(20)]))
+
+
+def _atc10_w_ideal(n: int = 10_000) -> float:
+    """Closed form: R is 1 at 0, +-1/L alternating over L + e lags each side (e the assumed extra
+    lags) and back to 0 one lag later (a chip waveform's autocorrelation is continuous); piecewise
+    linear, int R^2 = 2 [(1 + 1/L + 1/L^2) + (L + e - 1) / L^2 + 1 / L^2] / 3."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    e = int(pm.IN.fig311_extra_lags)
+    energy = (
+        2
+        * (
+            Fraction(1)
+            + Fraction(1, n)
+            + Fraction(1, n * n)
+            + Fraction(n + e - 1, n * n)
+            + Fraction(1, n * n)
+        )
+        / 3
+    )
+    return float(1 / (2 * energy))
+
+
 ORACLES += [
     # the samples' mean over M = 2001 equally spaced times differs from the time average by
     # ((f_0 + f_M)/2 - mean) / (M - 1): under 1/2000 relative while the range varies by less than its mean
@@ -1270,6 +1325,15 @@ ORACLES += [
         band=lambda: math.exp(_atc10_window_dln()[0]) * math.expm1(5 * _atc10_window_dln()[1]),
         why="exact MA(1) window by quadrature",
     ),
+    # fine-grid integrals of piecewise-linear functions: the trapezoid error dt^2/12 int (R^2)''
+    # is ~1e-5 relative at 200 samples a chip
+    Oracle(
+        "atc10-23-f5-power", _atc10_f5_power, rtol=2e-4, why="brute-force int X_ij^2, Parseval's other side"
+    ),
+    Oracle("atc10-23-f5-bound", _atc10_f5_bound, rtol=2e-4, why="brute-force Zakai bandwidths"),
+    Oracle("atc10-23-w-random-1023", _atc10_w_random_1023, rtol=2e-4, why="brute-force Zakai bandwidths"),
+    Oracle("atc10-23-w-ideal", _atc10_w_ideal, rtol=1e-12, why="closed form of the piecewise-linear R"),
+    Oracle("atc10-23-thm-ratio", lambda: 1 / (4 * _atc10_w_ideal()), rtol=1e-12, why="closed form"),
     Oracle(
         "wf89-eq13-ratio",
         lambda: _wf_eq13_ratio()[0],
