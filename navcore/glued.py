@@ -1799,22 +1799,96 @@ def atc10_23_w_random_1023() -> float:
 
 
 @register(
-    "atc10-23-w-ideal",
-    "atc10/23-zakai-bandwidth",
-    "W tau_c of the idealised alternating-sidelobe autocorrelation, L = 10 000",
-)
-def atc10_23_w_ideal() -> float:
-    """Zakai bandwidth times the chip of the idealised Fig. 3.11 autocorrelation, L = 10 000 chips."""
-    from navcore.papers import atc10_multiple_access as pm
-
-    return float(pm.w_chip_limit_ideal())
-
-
-@register(
     "atc10-23-thm-ratio",
     "atc10/23-zakai-bandwidth",
     "1 / (4 W tau_c) of the idealised autocorrelation",
 )
 def atc10_23_thm_ratio() -> float:
     """1 / (4 W tau_c) for the idealised Fig. 3.11 autocorrelation, L = 10 000 chips."""
-    return float(1 / (4 * atc10_23_w_ideal()))
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(1 / (4 * pm.w_chip_limit_ideal()))
+
+
+# --- ATC-10 Sec. 3.8: Reference [1]'s worked example ------------------------------------------
+
+
+@register(
+    "atc10-22-inverse-p",
+    "atc10/22-gaussian-comparison",
+    "1 / p of the worked example, p = (N - 1) / (B alpha)",
+)
+def atc10_22_inverse_p() -> float:
+    """1 / p for Reference [1]'s worked example, p = (N - 1) / (B alpha) (end of ATC-10 Sec. 3.8)."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(1 / pm.worked_example_power())
+
+
+@register(
+    "atc10-22-exp-g-half",
+    "atc10/22-gaussian-comparison",
+    "theta^2 / (2 p) of the worked example, as (3.8.8) defines Exp_g",
+)
+def atc10_22_exp_g_half() -> float:
+    """theta^2 / (2 p) with the worked example's theta and p: Exp_g as (3.8.8) defines it."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(pm.IN.theta_example**2 / (2 * pm.worked_example_power()))
+
+
+#: The worked example's other aircraft count of the page: N = 1e5 instead of 2e5.
+ATC10_EXAMPLE_N_LOW = 1e5
+
+
+def _atc10_exp_1e5() -> float:
+    from navcore.detection.roc_bounds import exponent_from_gaussian_exponent
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(
+        exponent_from_gaussian_exponent(
+            ATC10_EXAMPLE_N_LOW, pm.IN.tau_over_alpha_fig310, pm.worked_example_exp_g()
+        )
+    )
+
+
+@register(
+    "atc10-22-exp-1e5", "atc10/22-gaussian-comparison", "Exp of (3.8.16) at N = 1e5 for the worked example"
+)
+def atc10_22_exp_1e5() -> float:
+    """The exponent Exp of ATC-10 Eq. (3.8.16) at N = 1e5 with the worked example's Exp_g and tau/alpha."""
+    return _atc10_exp_1e5()
+
+
+@register(
+    "atc10-22-ratio-1e5", "atc10/22-gaussian-comparison", "Exp_g / Exp at N = 1e5 for the worked example"
+)
+def atc10_22_ratio_1e5() -> float:
+    """Exp_g over the (3.8.16) exponent at N = 1e5: how optimistic the Gaussian assumption is there."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(pm.worked_example_exp_g() / _atc10_exp_1e5())
+
+
+@register(
+    "atc10-22-optimistic-pct",
+    "atc10/22-gaussian-comparison",
+    "how much the Gaussian exponent overstates Exp at N = 2e5 (%)",
+)
+def atc10_22_optimistic_pct() -> float:
+    """100 (Exp_g / Exp - 1) for the worked example at N = 2e5, percent."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(100 * (pm.worked_example_ratio() - 1))
+
+
+@register(
+    "atc10-22-pf-factor",
+    "atc10/22-gaussian-comparison",
+    "exp(Exp_g - Exp): the factor by which the Gaussian assumption understates p_f",
+)
+def atc10_22_pf_factor() -> float:
+    """exp(Exp_g - Exp) at N = 2e5: the factor on p_f that the Gaussian assumption misses."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(math.exp(pm.worked_example_exp_g() - pm.worked_example_exp()))

@@ -953,6 +953,44 @@ def _atc10_w_ideal(n: int = 10_000) -> float:
     return float(1 / (2 * energy))
 
 
+# Reference [1]'s worked example as the paper prints it (end of Sec. 3.8), typed in:
+# N = 2e5 a second, B = 10 MHz, alpha = 1 s, theta = 1/2, tau/alpha = 1e-5 (Fig. 3.10).
+_EX_N, _EX_B, _EX_ALPHA, _EX_THETA, _EX_R = 200_000, 10_000_000, 1, Fraction(1, 2), 1e-5
+
+
+def _ex_power() -> Fraction:
+    return Fraction(_EX_N - 1, _EX_B * _EX_ALPHA)
+
+
+def _ex_exp_g() -> float:
+    """Exp_g under the ledger's reading of p (the convention noise_density_reading)."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(_EX_THETA**2 / (2 * Fraction(pm.IN.noise_density_reading) * _ex_power()))
+
+
+def _chernoff_exponent(n: float, exp_g: float, r: float = _EX_R) -> float:
+    """Chernoff exponent of the multiple-access noise, maximised numerically (scipy
+    minimize_scalar): sup_rho [rho theta - (n - 1) ln(1 - q + q cosh(rho a))], q = 2 tau/alpha,
+    a^2 = p / ((n - 1) q) (the noise power p shared by the overlaps), with theta fixed by
+    Exp_g = theta^2 / (2 p n / (n - 1)) at any p (Eqs. (3.7.21)-(3.7.24))."""
+    q = 2 * r
+    p = 2e-3
+    theta = math.sqrt(2 * p * n / (n - 1) * exp_g)
+    a = math.sqrt(p / ((n - 1) * q))
+
+    def minus(rho: float) -> float:
+        return -(rho * theta - (n - 1) * math.log1p(q * (math.cosh(rho * a) - 1)))
+
+    hi = 1.0
+    while minus(2 * hi) < minus(hi):
+        hi *= 2
+    res = optimize.minimize_scalar(
+        minus, bounds=(0.0, 2 * hi), method="bounded", options={"xatol": 1e-12 * hi}
+    )
+    return -float(res.fun)
+
+
 ORACLES += [
     # the samples' mean over M = 2001 equally spaced times differs from the time average by
     # ((f_0 + f_M)/2 - mean) / (M - 1): under 1/2000 relative while the range varies by less than its mean
@@ -1332,8 +1370,40 @@ ORACLES += [
     ),
     Oracle("atc10-23-f5-bound", _atc10_f5_bound, rtol=2e-4, why="brute-force Zakai bandwidths"),
     Oracle("atc10-23-w-random-1023", _atc10_w_random_1023, rtol=2e-4, why="brute-force Zakai bandwidths"),
-    Oracle("atc10-23-w-ideal", _atc10_w_ideal, rtol=1e-12, why="closed form of the piecewise-linear R"),
     Oracle("atc10-23-thm-ratio", lambda: 1 / (4 * _atc10_w_ideal()), rtol=1e-12, why="closed form"),
+    Oracle(
+        "atc10-22-inverse-p", lambda: float(1 / _ex_power()), rtol=1e-15, why="exact fraction, printed values"
+    ),
+    Oracle(
+        "atc10-22-exp-g-half",
+        lambda: float(_EX_THETA**2 / (2 * _ex_power())),
+        rtol=1e-15,
+        why="exact fraction, printed values",
+    ),
+    # (3.8.16) is the large-N form of the exact exponent (N for N - 1, terms of order q dropped):
+    # O(1/N + q) = 3e-5 relative here; allowed 1e-4 on the exponent and its ratio, and what that
+    # becomes on 100 (ratio - 1) (ratio 1.29: 5e-4) and on exp(Exp_g - Exp) (Exp 8.6: 1e-3)
+    Oracle(
+        "atc10-22-exp-1e5", lambda: _chernoff_exponent(1e5, _ex_exp_g()), rtol=1e-4, why="numerical Chernoff"
+    ),
+    Oracle(
+        "atc10-22-ratio-1e5",
+        lambda: _ex_exp_g() / _chernoff_exponent(1e5, _ex_exp_g()),
+        rtol=1e-4,
+        why="numerical Chernoff",
+    ),
+    Oracle(
+        "atc10-22-optimistic-pct",
+        lambda: 100 * (_ex_exp_g() / _chernoff_exponent(_EX_N, _ex_exp_g()) - 1),
+        rtol=5e-4,
+        why="numerical Chernoff",
+    ),
+    Oracle(
+        "atc10-22-pf-factor",
+        lambda: math.exp(_ex_exp_g() - _chernoff_exponent(_EX_N, _ex_exp_g())),
+        rtol=1e-3,
+        why="numerical Chernoff",
+    ),
     Oracle(
         "wf89-eq13-ratio",
         lambda: _wf_eq13_ratio()[0],
