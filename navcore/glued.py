@@ -1892,3 +1892,63 @@ def atc10_22_pf_factor() -> float:
     from navcore.papers import atc10_multiple_access as pm
 
     return float(math.exp(pm.worked_example_exp_g() - pm.worked_example_exp()))
+
+
+@register(
+    "atc10-20-psk-1-6L",
+    "atc10/20-multiple-access-noise",
+    "1 / (6 L) for the L-chip PSK signatures of the physical simulation",
+)
+def atc10_20_psk_1_6l() -> float:
+    """1 / (6 L): the mean square of a random-code PSK interferer's correlation given overlap, L chips."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(1 / (6 * pm.IN.psk_chips))
+
+
+@register(
+    "atc10-20-envelope-m3",
+    "atc10/20-multiple-access-noise",
+    "third moment of the envelope of the paper's amplitude model (the book's skewed envelope)",
+)
+def atc10_20_envelope_m3() -> float:
+    """E[X^3] of the positive, skewed envelope X of the book's reading of the paper's amplitude model."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    values, probs = pm._ENVELOPE
+    return float(sum(p * v**3 for v, p in zip(values, probs, strict=True)))
+
+
+@register(
+    "atc10-20-model-m3",
+    "atc10/20-multiple-access-noise",
+    "|third moment| of the paper's amplitude model (zero but for round-off)",
+)
+def atc10_20_model_m3() -> float:
+    """|E[n_ij^3]| of the paper's amplitude model, cos(phase) x envelope: zero to round-off (plus 1e-300,
+    so that a log-scale format prints it)."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return abs(pm.paper_model_third_moment()) + 1e-300
+
+
+#: The stated ranges of the two approximations of Eq. (4.5.38): alpha <= 0.3 and alpha >= 1.
+ATC10_PSI_EDGES = (0.3, 1.0)
+
+
+@register(
+    "atc10-31-approx-edge-error-pct",
+    "atc10/31-clock-tracking",
+    "largest relative error of Eq. (4.5.38)'s approximations of psi at the edges of their ranges (%)",
+)
+def atc10_31_approx_edge_error_pct() -> float:
+    """Largest relative error (%) of the small- and large-alpha forms of psi (Eq. (4.5.38)) at alpha
+    = 0.3 and alpha = 1, the edges of their stated ranges."""
+    from navcore.location import clock_tracking as ct
+
+    small, large = ATC10_PSI_EDGES
+    errors = [
+        abs(ct.psi_small_alpha(small) / ct.psi(small) - 1),
+        abs(ct.psi_large_alpha(large) / ct.psi(large) - 1),
+    ]
+    return float(100 * max(errors))

@@ -991,6 +991,35 @@ def _chernoff_exponent(n: float, exp_g: float, r: float = _EX_R) -> float:
     return -float(res.fun)
 
 
+def _psi_cubic(alpha: float) -> float:
+    """psi as the real root of psi^3 + q psi - q = 0, q = 27 alpha / 4 (numpy.roots; ATC-10 Sec. 4.5)."""
+    q = 27.0 * alpha / 4.0
+    roots = np.roots([1.0, 0.0, q, -q])
+    return float(next(r.real for r in roots if abs(r.imag) < 1e-9 * abs(r)))
+
+
+def _psi_edge_error_pct() -> float:
+    """Eq. (4.5.38)'s two forms as printed, 1.5 2^(1/3) [alpha^(1/3) - (alpha/2)^(2/3)] at alpha = 0.3
+    and 1 - 4 / (27 alpha) at alpha = 1, against the cubic's root."""
+    small = 1.5 * 2 ** (1 / 3) * (0.3 ** (1 / 3) - (0.3 / 2) ** (2 / 3))
+    large = 1 - 4 / 27
+    return 100 * max(abs(small / _psi_cubic(0.3) - 1), abs(large / _psi_cubic(1.0) - 1))
+
+
+def _psk_one_over_6l() -> float:
+    """Mean square of a random-code interferer's normalised correlation given overlap, in the
+    continuum of delays: at a delay of d code lengths (uniform over (-1, 1)) a whole-chip lag sums
+    L (1 - |d|) random chip products (variance (1 - |d|) / L), a uniform fractional chip offset f
+    mixes two uncorrelated lags as (1 - f)^2 + f^2, and a uniform carrier phase gives E[cos^2] =
+    1/2 (each mean by scipy quad)."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    mix = integrate.quad(lambda f: (1 - f) ** 2 + f**2, 0.0, 1.0)[0]
+    overlap = integrate.quad(lambda d: 1 - abs(d), -1.0, 1.0, points=[0.0])[0] / 2
+    phase = integrate.quad(lambda ph: math.cos(ph) ** 2, 0.0, 2 * math.pi)[0] / (2 * math.pi)
+    return phase * mix * overlap / pm.IN.psk_chips
+
+
 ORACLES += [
     # the samples' mean over M = 2001 equally spaced times differs from the time average by
     # ((f_0 + f_M)/2 - mean) / (M - 1): under 1/2000 relative while the range varies by less than its mean
@@ -1404,6 +1433,19 @@ ORACLES += [
         rtol=1e-3,
         why="numerical Chernoff",
     ),
+    Oracle(
+        "atc10-31-approx-edge-error-pct", _psi_edge_error_pct, rtol=1e-9, why="the cubic's root, numpy.roots"
+    ),
+    Oracle("atc10-20-psk-1-6L", _psk_one_over_6l, rtol=1e-12, why="random-code correlation, scipy quad"),
+    Oracle(
+        "atc10-20-envelope-m3",
+        lambda: float(Fraction(4, 5) * Fraction(1, 2) ** 3 + Fraction(1, 5) * 2**3),
+        rtol=1e-15,
+        why="exact fractions of the envelope's two points (0.5 w.p. 0.8, 2 w.p. 0.2)",
+    ),
+    # E[cos^3] over a uniform phase grid is 0 exactly: the float sum leaves round-off of at most
+    # (terms) x eps x sum |p v^3|, far below 1e-13 for a few hundred terms
+    Oracle("atc10-20-model-m3", lambda: 0.0, atol=1e-13, why="zero by symmetry"),
     Oracle(
         "wf89-eq13-ratio",
         lambda: _wf_eq13_ratio()[0],
