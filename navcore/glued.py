@@ -1952,3 +1952,81 @@ def atc10_31_approx_edge_error_pct() -> float:
         abs(ct.psi_large_alpha(large) / ct.psi(large) - 1),
     ]
     return float(100 * max(errors))
+
+
+# --- ATC-10 exercises -------------------------------------------------------------------------
+
+
+def _atc10_90_steps() -> list[float]:
+    """Rises (dB) of the t = 0 N_ADL threshold from K = 1 to 10 and from 10 to 100, P_DL = 0.9."""
+    from navcore.papers import atc10_jamming as pj
+
+    erp = [pj.required_erp_dbw("ambiguous", 0.9, k) for k in (1, 10, 100)]
+    return [float(erp[1] - erp[0]), float(erp[2] - erp[1])]
+
+
+@register(
+    "atc10-90-step-per-decade-lo",
+    "atc10/90-exercises",
+    "smaller rise of the N_ADL threshold per decade of K, P_DL = 0.9 (dB)",
+)
+def atc10_90_step_lo() -> float:
+    """The smaller of the K = 1 -> 10 and 10 -> 100 rises of the t = 0 N_ADL threshold, P_DL = 0.9, dB."""
+    return min(_atc10_90_steps())
+
+
+@register(
+    "atc10-90-step-per-decade-hi",
+    "atc10/90-exercises",
+    "larger rise of the N_ADL threshold per decade of K, P_DL = 0.9 (dB)",
+)
+def atc10_90_step_hi() -> float:
+    """The larger of the K = 1 -> 10 and 10 -> 100 rises of the t = 0 N_ADL threshold, P_DL = 0.9, dB."""
+    return max(_atc10_90_steps())
+
+
+@register(
+    "atc10-90-ceiling-k1000",
+    "atc10/90-exercises",
+    "supremum of N_ADL / N_T as the jammer grows, K = 1000, P_DL = 0.9",
+)
+def atc10_90_ceiling_k1000() -> float:
+    """Supremum of the N_ADL bound over jammer power, K = 1000, P_DL = 0.9, t = 0."""
+    return atc10_12_ceiling_k1000("0.9")
+
+
+@register(
+    "atc10-90-beamwidth-k1",
+    "atc10/90-exercises",
+    "Sec. 2.7's 20 deg scaled by the pencil-beam rule to Table 1.1's K = 1 gain (deg)",
+)
+def atc10_90_beamwidth_k1() -> float:
+    """20 deg x sqrt(G_2.7 / G_K1): Sec. 2.7's antenna scaled to Table 1.1's K = 1 gain, deg."""
+    return atc10_13_bw_k1_scaled()
+
+
+def _atc10_90_exp(n: float) -> float:
+    """Eq. (3.8.16) written out, at N aircraft, tau/alpha = 1e-5 and the worked example's Exp_g."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    exp_g, r = pm.worked_example_exp_g(), pm.IN.tau_over_alpha_fig310
+    u = exp_g / (n * r)
+    return math.sqrt(4 * n * r * exp_g) * math.log(math.sqrt(u) + math.sqrt(1 + u)) - n * math.log(
+        (1 - 2 * r) + 2 * r * math.sqrt(1 + u)
+    )
+
+
+@register(
+    "atc10-90-exp-{n}", "atc10/90-exercises", "Exp of (3.8.16) for the worked example at N = 1e5 or 2e5"
+)
+def atc10_90_exp(n: str) -> float:
+    """Exp of ATC-10 Eq. (3.8.16) for the worked example, N = ``n`` (``"1e5"`` or ``"2e5"``)."""
+    return _atc10_90_exp(float(n))
+
+
+@register("atc10-90-ratio-{n}", "atc10/90-exercises", "Exp_g / Exp for the worked example at N = 1e5 or 2e5")
+def atc10_90_ratio(n: str) -> float:
+    """Exp_g over the (3.8.16) exponent for the worked example, N = ``n``."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(pm.worked_example_exp_g() / _atc10_90_exp(float(n)))

@@ -1447,6 +1447,53 @@ ORACLES += [
     # (terms) x eps x sum |p v^3|, far below 1e-13 for a few hundred terms
     Oracle("atc10-20-model-m3", lambda: 0.0, atol=1e-13, why="zero by symmetry"),
     Oracle(
+        "atc10-90-step-per-decade-lo",
+        lambda: min(
+            _atc10_direct_x_db(0.9, 10) - _atc10_direct_x_db(0.9, 1),
+            _atc10_direct_x_db(0.9, 100) - _atc10_direct_x_db(0.9, 10),
+        ),
+        atol=2e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-90-step-per-decade-hi",
+        lambda: max(
+            _atc10_direct_x_db(0.9, 10) - _atc10_direct_x_db(0.9, 1),
+            _atc10_direct_x_db(0.9, 100) - _atc10_direct_x_db(0.9, 10),
+        ),
+        atol=2e-6,
+        why="direct probabilities",
+    ),
+    Oracle("atc10-90-ceiling-k1000", lambda: _atc10_ceiling(0.9), rtol=1e-8, why="direct probabilities"),
+    Oracle(
+        "atc10-90-beamwidth-k1",
+        lambda: 20 * math.sqrt(10**1.5 / 30),
+        rtol=1e-12,
+        why="the printed 20 deg, 30 W, 33 dBW and the row's 33 and 15 dBW",
+    ),
+    # (3.8.16) against the exact exponent: its large-N remainder O(1/N + q), as for page 22
+    Oracle(
+        "atc10-90-exp-2e5",
+        lambda: _chernoff_exponent(_EX_N, _ex_exp_g()),
+        rtol=1e-4,
+        why="numerical Chernoff",
+    ),
+    Oracle(
+        "atc10-90-exp-1e5", lambda: _chernoff_exponent(1e5, _ex_exp_g()), rtol=1e-4, why="numerical Chernoff"
+    ),
+    Oracle(
+        "atc10-90-ratio-2e5",
+        lambda: _ex_exp_g() / _chernoff_exponent(_EX_N, _ex_exp_g()),
+        rtol=1e-4,
+        why="numerical Chernoff",
+    ),
+    Oracle(
+        "atc10-90-ratio-1e5",
+        lambda: _ex_exp_g() / _chernoff_exponent(1e5, _ex_exp_g()),
+        rtol=1e-4,
+        why="numerical Chernoff",
+    ),
+    Oracle(
         "wf89-eq13-ratio",
         lambda: _wf_eq13_ratio()[0],
         band=lambda: 5 * _wf_eq13_ratio()[1],
