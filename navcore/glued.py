@@ -2030,3 +2030,135 @@ def atc10_90_ratio(n: str) -> float:
     from navcore.papers import atc10_multiple_access as pm
 
     return float(pm.worked_example_exp_g() / _atc10_90_exp(float(n)))
+
+
+# --- ATC-10 Sec. 4: the tracking geometry of Table 4.1's examples -----------------------------
+
+
+def _atc10_geometry_row(example: str, radius: str) -> dict[str, float]:
+    """Table 4.2's columns of ``example`` at the synchronous orbit (``"phys"``) or the fitted ratio."""
+    from navcore.papers import atc10_tracking as paper
+
+    r = paper.physical_radius_ratio() if radius == "phys" else paper.fitted_radius_ratio()
+    return paper.table_4_2_from_geometry(example, r)
+
+
+@register(
+    "atc10-30-r-phys",
+    "atc10/30-tracking-geometry",
+    "synchronous-orbit radius over the Earth radius",
+)
+def atc10_30_r_phys() -> float:
+    """Synchronous-orbit radius over the declared Earth radius (ATC-10 Sec. 4.1)."""
+    from navcore.papers import atc10_tracking as paper
+
+    return float(paper.physical_radius_ratio())
+
+
+@register(
+    "atc10-30-zenith-I-{radius}",
+    "atc10/30-tracking-geometry",
+    "largest zenith angle of Example I's satellites at the aircraft (deg; phys or fit radius)",
+)
+def atc10_30_zenith_i(radius: str) -> float:
+    """Largest zenith angle (deg) of Table 4.1 Example I's satellites seen from the aircraft, at the
+    synchronous (``"phys"``) or fitted (``"fit"``) orbit radius."""
+    from navcore.papers import atc10_tracking as paper
+
+    r = paper.physical_radius_ratio() if radius == "phys" else paper.fitted_radius_ratio()
+    return float(paper.max_zenith_angle_deg("I", r))
+
+
+@register(
+    "atc10-30-beta-phys-{ex}",
+    "atc10/30-tracking-geometry",
+    "beta of Eq. (4.5.2) for a Table 4.1 example at the synchronous orbit",
+)
+def atc10_30_beta_phys(ex: str) -> float:
+    """beta = K - 1'F(F'F)^-1 F'1 (Eq. (4.5.2)) of example ``ex`` at the synchronous orbit."""
+    return float(_atc10_geometry_row(ex, "phys")["beta"])
+
+
+@register(
+    "atc10-30-beta-over-K-{ex}",
+    "atc10/30-tracking-geometry",
+    "beta over the number of satellites K, synchronous orbit",
+)
+def atc10_30_beta_over_k(ex: str) -> float:
+    """beta / K of example ``ex`` at the synchronous orbit."""
+    from navcore.papers import atc10_tracking as paper
+
+    return atc10_30_beta_phys(ex) / paper.table_4_1(ex).shape[0]
+
+
+@register(
+    "atc10-30-trace-phys-{ex}",
+    "atc10/30-tracking-geometry",
+    "position trace tr (F'F)^-1 with all satellites, synchronous orbit",
+)
+def atc10_30_trace_phys(ex: str) -> float:
+    """tr (F'F)^-1 of example ``ex`` with all its satellites at the synchronous orbit."""
+    return float(_atc10_geometry_row(ex, "phys")["trace_all"])
+
+
+@register(
+    "atc10-30-trace-123-II",
+    "atc10/30-tracking-geometry",
+    "position trace of Example II's satellites 1-3, synchronous orbit",
+)
+def atc10_30_trace_123_ii() -> float:
+    """tr (F'F)^-1 of Example II's first three satellites at the synchronous orbit."""
+    return float(_atc10_geometry_row("II", "phys")["trace_123"])
+
+
+@register(
+    "atc10-30-s123-invariant-{ex}",
+    "atc10/30-tracking-geometry",
+    "the invariant 1'(F3 F3')^-1 1 of satellites 1-3 at the fitted radius",
+)
+@register(
+    "atc10-32-s123-invariant-{ex}",
+    "atc10/32-tracking-examples",
+    "the invariant 1'(F3 F3')^-1 1 of satellites 1-3 at the fitted radius",
+)
+def atc10_s123_invariant(ex: str) -> float:
+    """1'(F3 F3')^-1 1 of example ``ex``'s satellites 1-3 at the fitted radius (erratum E4-1's form)."""
+    return float(_atc10_geometry_row(ex, "fit")["s_123"])
+
+
+def _atc10_geometry_misses() -> dict[tuple[str, str], float]:
+    """Relative misses of the synchronous-orbit beta and traces against Table 4.2 as printed."""
+    from navcore.papers import atc10_tracking as paper
+
+    return {
+        (ex, c): _atc10_geometry_row(ex, "phys")[c] / float(paper.TABLE_4_2[ex][c]) - 1
+        for ex in ("I", "II")
+        for c in ("beta", "trace_all", "trace_123")
+    }
+
+
+@register("atc10-30-miss-lo", "atc10/30-tracking-geometry", "smallest |miss| of the physical geometry (%)")
+def atc10_30_miss_lo() -> float:
+    """Smallest |relative miss| (%) of the synchronous-orbit beta and traces against Table 4.2."""
+    return float(100 * min(abs(v) for v in _atc10_geometry_misses().values()))
+
+
+@register("atc10-30-miss-hi", "atc10/30-tracking-geometry", "largest |miss| of the physical geometry (%)")
+def atc10_30_miss_hi() -> float:
+    """Largest |relative miss| (%) of the synchronous-orbit beta and traces against Table 4.2."""
+    return float(100 * max(abs(v) for v in _atc10_geometry_misses().values()))
+
+
+@register("atc10-30-beta-excess", "atc10/30-tracking-geometry", "largest excess of the physical beta (%)")
+def atc10_30_beta_excess() -> float:
+    """Largest relative excess (%) of the synchronous-orbit beta over Table 4.2's."""
+    m = _atc10_geometry_misses()
+    return float(100 * max(m[(ex, "beta")] for ex in ("I", "II")))
+
+
+@register("atc10-30-trace-deficit", "atc10/30-tracking-geometry", "mean deficit of the physical traces (%)")
+def atc10_30_trace_deficit() -> float:
+    """Mean relative deficit (%) of the synchronous-orbit traces against Table 4.2's."""
+    m = _atc10_geometry_misses()
+    vals = [v for (_, c), v in m.items() if c != "beta"]
+    return float(-100 * sum(vals) / len(vals))

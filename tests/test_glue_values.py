@@ -1020,6 +1020,81 @@ def _psk_one_over_6l() -> float:
     return phase * mix * overlap / pm.IN.psk_chips
 
 
+# --- ATC-10 Sec. 4: the geometry of Table 4.1 by hand -----------------------------------------
+# Table 4.2 as printed, typed in (its beta and trace columns)
+_TABLE_42 = {
+    "I": {"beta": 0.0543, "trace_all": 7.84, "trace_123": 9.39},
+    "II": {"beta": 0.00355, "trace_all": 3.99, "trace_123": 14.9},
+}
+
+
+def _atc10_radius(which: str) -> float:
+    """The synchronous orbit (brentq of GM/r^2 = w^2 r with the declared GM and period) over the
+    declared Earth radius, or the declared fitted ratio."""
+    from navcore.papers import atc10_tracking as paper
+
+    if which == "fit":
+        return float(paper.IN.radius_ratio)
+    w = 2 * math.pi / paper.IN.orbit_period_s
+    gm = paper.IN.gm_m3_s2
+    r = optimize.brentq(lambda x: gm / x**2 - w**2 * x, 1e7, 1e8, xtol=1e-6, rtol=1e-15)
+    return r / paper.IN.earth_radius_m
+
+
+def _unit_sphere(lat_deg: float, lon_deg: float) -> np.ndarray:
+    la, lo = math.radians(lat_deg), math.radians(lon_deg)
+    return np.array([math.cos(la) * math.cos(lo), math.cos(la) * math.sin(lo), math.sin(la)])
+
+
+def _atc10_los(example: str, which: str) -> np.ndarray:
+    """Unit vectors satellite -> aircraft of a Table 4.1 example (the declared sub-satellite points
+    and aircraft position), the aircraft on the unit sphere; a mirror of the longitudes changes
+    none of the invariants below."""
+    from navcore.papers import atc10_tracking as paper
+
+    r = _atc10_radius(which)
+    ac = _unit_sphere(*paper.aircraft_lat_lon())
+    rows = [ac - r * _unit_sphere(lat, lon) for lat, lon in paper.table_4_1(example)]
+    return np.array([v / np.linalg.norm(v) for v in rows])
+
+
+def _atc10_invariants(example: str, which: str) -> dict[str, float]:
+    """beta = K - |projection of 1 on F's columns|^2, tr (F'F)^-1 = sum 1/s_i^2 and, for three rows,
+    1'(F F')^-1 1 = sum (u_i . 1)^2 / s_i^2, all from numpy's SVD of F."""
+    F = _atc10_los(example, which)
+    ones = np.ones(F.shape[0])
+    u, sv, _ = np.linalg.svd(F, full_matrices=False)
+    u3, sv3, _ = np.linalg.svd(F[:3])
+    return {
+        "beta": float(ones @ ones - np.sum((u.T @ ones) ** 2)),
+        "trace_all": float(np.sum(1 / sv**2)),
+        "trace_123": float(np.sum(1 / sv3**2)),
+        "s_123": float(np.sum((u3.T @ np.ones(3)) ** 2 / sv3**2)),
+    }
+
+
+def _atc10_zenith_max(which: str) -> float:
+    """Largest zenith angle of Example I's satellites: for central angle g between the aircraft (on
+    the unit sphere) and a satellite at radius r, z = atan2(r sin g, r cos g - 1)."""
+    from navcore.papers import atc10_tracking as paper
+
+    r = _atc10_radius(which)
+    ac = _unit_sphere(*paper.aircraft_lat_lon())
+    out = []
+    for lat, lon in paper.table_4_1("I"):
+        g = math.acos(float(np.clip(ac @ _unit_sphere(lat, lon), -1, 1)))
+        out.append(math.degrees(math.atan2(r * math.sin(g), r * math.cos(g) - 1)))
+    return max(out)
+
+
+def _atc10_misses() -> dict[tuple[str, str], float]:
+    return {
+        (ex, c): _atc10_invariants(ex, "phys")[c] / _TABLE_42[ex][c] - 1
+        for ex in ("I", "II")
+        for c in ("beta", "trace_all", "trace_123")
+    }
+
+
 ORACLES += [
     # the samples' mean over M = 2001 equally spaced times differs from the time average by
     # ((f_0 + f_M)/2 - mean) / (M - 1): under 1/2000 relative while the range varies by less than its mean
@@ -1492,6 +1567,67 @@ ORACLES += [
         lambda: _ex_exp_g() / _chernoff_exponent(1e5, _ex_exp_g()),
         rtol=1e-4,
         why="numerical Chernoff",
+    ),
+    # the geometry by hand: double-precision SVDs of well-conditioned 3-column matrices (1e-12)
+    # after a brentq radius to 1e-15; beta of Example II is a small difference (0.0036 of K = 8:
+    # 1e-12 x 8 / 0.0036 ~ 3e-9 relative), so 1e-8 throughout
+    Oracle("atc10-30-r-phys", lambda: _atc10_radius("phys"), rtol=1e-9, why="brentq orbit radius"),
+    Oracle("atc10-30-zenith-I-phys", lambda: _atc10_zenith_max("phys"), rtol=1e-9, why="spherical triangle"),
+    Oracle("atc10-30-zenith-I-fit", lambda: _atc10_zenith_max("fit"), rtol=1e-9, why="spherical triangle"),
+    Oracle("atc10-30-beta-phys-I", lambda: _atc10_invariants("I", "phys")["beta"], rtol=1e-8, why="SVD"),
+    Oracle("atc10-30-beta-phys-II", lambda: _atc10_invariants("II", "phys")["beta"], rtol=1e-8, why="SVD"),
+    Oracle(
+        "atc10-30-beta-over-K-I",
+        lambda: _atc10_invariants("I", "phys")["beta"] / 7,
+        rtol=1e-8,
+        why="SVD, K = 7",
+    ),
+    Oracle(
+        "atc10-30-beta-over-K-II",
+        lambda: _atc10_invariants("II", "phys")["beta"] / 8,
+        rtol=1e-8,
+        why="SVD, K = 8",
+    ),
+    Oracle(
+        "atc10-30-trace-phys-I", lambda: _atc10_invariants("I", "phys")["trace_all"], rtol=1e-8, why="SVD"
+    ),
+    Oracle(
+        "atc10-30-trace-phys-II", lambda: _atc10_invariants("II", "phys")["trace_all"], rtol=1e-8, why="SVD"
+    ),
+    Oracle(
+        "atc10-30-trace-123-II", lambda: _atc10_invariants("II", "phys")["trace_123"], rtol=1e-8, why="SVD"
+    ),
+    Oracle("atc10-30-s123-invariant-I", lambda: _atc10_invariants("I", "fit")["s_123"], rtol=1e-8, why="SVD"),
+    Oracle(
+        "atc10-30-s123-invariant-II", lambda: _atc10_invariants("II", "fit")["s_123"], rtol=1e-8, why="SVD"
+    ),
+    Oracle("atc10-32-s123-invariant-I", lambda: _atc10_invariants("I", "fit")["s_123"], rtol=1e-8, why="SVD"),
+    Oracle(
+        "atc10-32-s123-invariant-II", lambda: _atc10_invariants("II", "fit")["s_123"], rtol=1e-8, why="SVD"
+    ),
+    Oracle(
+        "atc10-30-miss-lo",
+        lambda: 100 * min(abs(v) for v in _atc10_misses().values()),
+        rtol=1e-6,
+        why="SVD against Table 4.2 as printed",
+    ),
+    Oracle(
+        "atc10-30-miss-hi",
+        lambda: 100 * max(abs(v) for v in _atc10_misses().values()),
+        rtol=1e-6,
+        why="SVD against Table 4.2 as printed",
+    ),
+    Oracle(
+        "atc10-30-beta-excess",
+        lambda: 100 * max(_atc10_misses()[(ex, "beta")] for ex in ("I", "II")),
+        rtol=1e-6,
+        why="SVD against Table 4.2 as printed",
+    ),
+    Oracle(
+        "atc10-30-trace-deficit",
+        lambda: -100 * float(np.mean([v for (_, c), v in _atc10_misses().items() if c != "beta"])),
+        rtol=1e-6,
+        why="SVD against Table 4.2 as printed",
     ),
     Oracle(
         "wf89-eq13-ratio",
