@@ -2102,6 +2102,11 @@ def atc10_30_trace_phys(ex: str) -> float:
 
 
 @register(
+    "atc10-90-123-trace",
+    "atc10/90-exercises",
+    "position trace of Example II's satellites 1-3, synchronous orbit",
+)
+@register(
     "atc10-30-trace-123-II",
     "atc10/30-tracking-geometry",
     "position trace of Example II's satellites 1-3, synchronous orbit",
@@ -2162,3 +2167,39 @@ def atc10_30_trace_deficit() -> float:
     m = _atc10_geometry_misses()
     vals = [v for (_, c), v in m.items() if c != "beta"]
     return float(-100 * sum(vals) / len(vals))
+
+
+def _atc10_best_triplet_ii() -> tuple[int, ...]:
+    """The triplet of Example II's satellites with the smallest position trace, synchronous orbit."""
+    from navcore.papers import atc10_tracking as paper
+
+    return tuple(paper.best_triplet("II", paper.physical_radius_ratio(), "trace"))
+
+
+@register(
+    "atc10-30-trace-best-II",
+    "atc10/30-tracking-geometry",
+    "smallest position trace of a triplet of Example II's satellites, synchronous orbit",
+)
+@register(
+    "atc10-90-best-trace",
+    "atc10/90-exercises",
+    "smallest position trace of a triplet of Example II's satellites, synchronous orbit",
+)
+def atc10_trace_best_ii() -> float:
+    """tr (F3'F3)^-1 of the best triplet of Example II's satellites at the synchronous orbit."""
+    from navcore.location import multilateration as ml
+    from navcore.papers import atc10_tracking as paper
+
+    los = paper.example_line_of_sight("II", paper.physical_radius_ratio())
+    return float(ml.position_trace(los[list(_atc10_best_triplet_ii())]))
+
+
+@register(
+    "atc10-90-best-triplet",
+    "atc10/90-exercises",
+    "the triplet of Example II's satellites with the smallest position trace (labels)",
+)
+def atc10_90_best_triplet() -> str:
+    """The best triplet of Example II's satellites as the page prints it (1-based, comma-separated)."""
+    return ", ".join(str(i + 1) for i in _atc10_best_triplet_ii())
