@@ -2203,3 +2203,77 @@ def atc10_trace_best_ii() -> float:
 def atc10_90_best_triplet() -> str:
     """The best triplet of Example II's satellites as the page prints it (1-based, comma-separated)."""
     return ", ".join(str(i + 1) for i in _atc10_best_triplet_ii())
+
+
+# --- ATC-10 Sec. 4.6: Table 4.3's worked rows ---------------------------------------------------
+
+
+def _atc10_exact_row_ii_5() -> tuple[float, ...]:
+    """Table 4.3's row of Example II at sigma0 = 5 ns from the printed Table 4.2, exact psi."""
+    from navcore.papers import atc10_tracking as paper
+
+    return tuple(paper.table_4_3_row(paper.printed_table_4_2("II"), 5.0))
+
+
+@register(
+    "atc10-32-psi-exact-II-5",
+    "atc10/32-tracking-examples",
+    "exact psi of Example II at sigma0 = 5 ns (printed Table 4.2)",
+)
+def atc10_32_psi_exact_ii_5() -> float:
+    """The steady-state gain factor psi (Eq. (4.5.34)) of Example II at sigma0 = 5 ns."""
+    return float(_atc10_exact_row_ii_5()[1])
+
+
+@register(
+    "atc10-32-sdN-exact-II-5",
+    "atc10/32-tracking-examples",
+    "tracking-limit rms error sd_N of Example II at sigma0 = 5 ns with the exact psi (ft)",
+)
+def atc10_32_sdn_exact_ii_5() -> float:
+    """sd_N = c sigma sqrt(tr + (psi / beta) S) of Example II at sigma0 = 5 ns, exact psi, ft."""
+    return float(_atc10_exact_row_ii_5()[3])
+
+
+@register(
+    "atc10-32-psi-needed-II-5",
+    "atc10/32-tracking-examples",
+    "the psi that Table 4.3's printed sd_N of Example II at 5 ns needs",
+)
+def atc10_32_psi_needed_ii_5() -> float:
+    """The psi for which (4.5.35) with the printed Table 4.2 gives Table 4.3's printed sd_N (II, 5 ns)."""
+    from scipy import optimize
+
+    from navcore.papers import atc10_tracking as paper
+
+    printed = paper.printed_table_4_2("II")
+    target = float(paper.TABLE_4_3[("II", 5.0)][3])
+    return float(
+        optimize.brentq(lambda p: paper.table_4_3_row(printed, 5.0, psi_value=p)[3] - target, 0.01, 0.1)
+    )
+
+
+def _atc10_fit_row_i_5() -> tuple[float, ...]:
+    from navcore.papers import atc10_tracking as paper
+
+    return tuple(paper.table_4_3_row(paper.table_4_2_from_geometry("I", paper.fitted_radius_ratio()), 5.0))
+
+
+@register(
+    "atc10-32-sdN-I-5",
+    "atc10/32-tracking-examples",
+    "tracking-limit rms error sd_N of Example I at sigma0 = 5 ns, fitted geometry (ft)",
+)
+def atc10_32_sdn_i_5() -> float:
+    """sd_N of Example I at sigma0 = 5 ns from the fitted-radius geometry, ft."""
+    return float(_atc10_fit_row_i_5()[3])
+
+
+@register(
+    "atc10-32-sdN1-I-5",
+    "atc10/32-tracking-examples",
+    "first three-satellite rms error of Example I at sigma0 = 5 ns, fitted geometry (ft)",
+)
+def atc10_32_sdn1_i_5() -> float:
+    """sd_(N+1), the first three-satellite estimate's rms error, Example I, 5 ns, fitted geometry, ft."""
+    return float(_atc10_fit_row_i_5()[4])

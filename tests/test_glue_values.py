@@ -1110,6 +1110,36 @@ def _atc10_best_triplet() -> tuple[tuple[int, ...], float]:
     return best, traces[best]
 
 
+def _table_43_row(t: dict[str, float], sigma0: float) -> dict[str, float]:
+    """Table 4.3 by hand (Eqs. (4.5.27), (4.5.32)-(4.5.35) as the book reads them): alpha =
+    (8/27) sigma0^2 beta / sigma^2, psi the cubic's root, sd_N = sigma sqrt(tr + (psi/beta) S) and
+    sd_(N+1) = sigma sqrt(tr3 + gamma S3), gamma = (psi + (27/8) alpha (2/psi)) / beta; sigma = 50 ns
+    and 1 ft a nanosecond, as the paper prints them."""
+    sigma = 50.0
+    alpha = 8 / 27 * sigma0**2 * t["beta"] / sigma**2
+    psi = _psi_cubic(alpha)
+    gamma = (psi + 27 / 8 * alpha * 2 / psi) / t["beta"]
+    return {
+        "psi": psi,
+        "sdN": sigma * math.sqrt(t["trace_all"] + psi / t["beta"] * t["s_all"]),
+        "sdN1": sigma * math.sqrt(t["trace_123"] + gamma * t["s_123"]),
+    }
+
+
+# Table 4.2's Example II as printed, and Table 4.3's printed sd_N of Example II at 5 ns, typed in
+_TABLE_42_II = {"beta": 0.00355, "trace_all": 3.99, "trace_123": 14.9, "s_all": 1.16, "s_123": 14.3}
+_TABLE_43_SDN_II_5 = 205.0
+
+
+def _atc10_fit_inputs_i() -> dict[str, float]:
+    """Example I's Table 4.2 columns from the geometry by hand at the fitted radius (SVD)."""
+    F = _atc10_los("I", "fit")
+    u, sv, _ = np.linalg.svd(F, full_matrices=False)
+    out = _atc10_invariants("I", "fit")
+    out["s_all"] = float(np.sum((u.T @ np.ones(F.shape[0])) ** 2 / sv**2))
+    return out
+
+
 ORACLES += [
     # the samples' mean over M = 2001 equally spaced times differs from the time average by
     # ((f_0 + f_M)/2 - mean) / (M - 1): under 1/2000 relative while the range varies by less than its mean
@@ -1661,6 +1691,42 @@ ORACLES += [
         "atc10-90-best-triplet",
         lambda: ", ".join(str(i + 1) for i in _atc10_best_triplet()[0]),
         why="brute force over triplets, SVD (the same labels)",
+    ),
+    Oracle(
+        "atc10-32-psi-exact-II-5",
+        lambda: _table_43_row(_TABLE_42_II, 5.0)["psi"],
+        rtol=1e-9,
+        why="Table 4.3 by hand",
+    ),
+    Oracle(
+        "atc10-32-sdN-exact-II-5",
+        lambda: _table_43_row(_TABLE_42_II, 5.0)["sdN"],
+        rtol=1e-9,
+        why="Table 4.3 by hand",
+    ),
+    # (4.5.35) solved for psi in closed form: psi = beta ((sd_N / sigma)^2 - tr) / S (the page's
+    # brentq stops within 2e-12 of psi ~ 0.04)
+    Oracle(
+        "atc10-32-psi-needed-II-5",
+        lambda: (
+            _TABLE_42_II["beta"]
+            * ((_TABLE_43_SDN_II_5 / 50.0) ** 2 - _TABLE_42_II["trace_all"])
+            / _TABLE_42_II["s_all"]
+        ),
+        rtol=1e-9,
+        why="(4.5.35) inverted",
+    ),
+    Oracle(
+        "atc10-32-sdN-I-5",
+        lambda: _table_43_row(_atc10_fit_inputs_i(), 5.0)["sdN"],
+        rtol=1e-8,
+        why="SVD geometry, by hand",
+    ),
+    Oracle(
+        "atc10-32-sdN1-I-5",
+        lambda: _table_43_row(_atc10_fit_inputs_i(), 5.0)["sdN1"],
+        rtol=1e-8,
+        why="SVD geometry, by hand",
     ),
     Oracle(
         "wf89-eq13-ratio",
