@@ -2277,3 +2277,39 @@ def atc10_32_sdn_i_5() -> float:
 def atc10_32_sdn1_i_5() -> float:
     """sd_(N+1), the first three-satellite estimate's rms error, Example I, 5 ns, fitted geometry, ft."""
     return float(_atc10_fit_row_i_5()[4])
+
+
+def _atc10_phys_lowering() -> list[float]:
+    """1 - (Table 4.3's sd_0 or sd_N from the synchronous-orbit geometry) / (the same from the printed
+    Table 4.2), over both examples and the three sigma0."""
+    from navcore.papers import atc10_tracking as paper
+
+    r_phys = paper.physical_radius_ratio()
+    return [
+        1
+        - paper.table_4_3_row(paper.table_4_2_from_geometry(ex, r_phys), s0)[col]
+        / paper.table_4_3_row(paper.printed_table_4_2(ex), s0)[col]
+        for ex in ("I", "II")
+        for s0 in paper.sigma0_values()
+        for col in (2, 3)
+    ]
+
+
+@register(
+    "atc10-32-phys-lowering-lo",
+    "atc10/32-tracking-examples",
+    "smallest lowering of Table 4.3's sd_0 and sd_N by the synchronous-orbit geometry (%)",
+)
+def atc10_32_phys_lowering_lo() -> float:
+    """Smallest relative lowering (%) of sd_0 and sd_N when the synchronous geometry replaces Table 4.2."""
+    return float(100 * min(_atc10_phys_lowering()))
+
+
+@register(
+    "atc10-32-phys-lowering-hi",
+    "atc10/32-tracking-examples",
+    "largest lowering of Table 4.3's sd_0 and sd_N by the synchronous-orbit geometry (%)",
+)
+def atc10_32_phys_lowering_hi() -> float:
+    """Largest relative lowering (%) of sd_0 and sd_N when the synchronous geometry replaces Table 4.2."""
+    return float(100 * max(_atc10_phys_lowering()))

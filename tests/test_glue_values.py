@@ -1114,13 +1114,14 @@ def _table_43_row(t: dict[str, float], sigma0: float) -> dict[str, float]:
     """Table 4.3 by hand (Eqs. (4.5.27), (4.5.32)-(4.5.35) as the book reads them): alpha =
     (8/27) sigma0^2 beta / sigma^2, psi the cubic's root, sd_N = sigma sqrt(tr + (psi/beta) S) and
     sd_(N+1) = sigma sqrt(tr3 + gamma S3), gamma = (psi + (27/8) alpha (2/psi)) / beta; sigma = 50 ns
-    and 1 ft a nanosecond, as the paper prints them."""
+    and 1 ft a nanosecond, as the paper prints them; sd_0 = sigma sqrt(tr + S / beta) without tracking."""
     sigma = 50.0
     alpha = 8 / 27 * sigma0**2 * t["beta"] / sigma**2
     psi = _psi_cubic(alpha)
     gamma = (psi + 27 / 8 * alpha * 2 / psi) / t["beta"]
     return {
         "psi": psi,
+        "sd0": sigma * math.sqrt(t["trace_all"] + t["s_all"] / t["beta"]),
         "sdN": sigma * math.sqrt(t["trace_all"] + psi / t["beta"] * t["s_all"]),
         "sdN1": sigma * math.sqrt(t["trace_123"] + gamma * t["s_123"]),
     }
@@ -1131,13 +1132,26 @@ _TABLE_42_II = {"beta": 0.00355, "trace_all": 3.99, "trace_123": 14.9, "s_all": 
 _TABLE_43_SDN_II_5 = 205.0
 
 
-def _atc10_fit_inputs_i() -> dict[str, float]:
-    """Example I's Table 4.2 columns from the geometry by hand at the fitted radius (SVD)."""
-    F = _atc10_los("I", "fit")
+_TABLE_42_I = {"beta": 0.0543, "trace_all": 7.84, "trace_123": 9.39, "s_all": 1.30, "s_123": 5.76}
+
+
+def _atc10_geometry_inputs(example: str, which: str) -> dict[str, float]:
+    """Table 4.2's columns of ``example`` from the geometry by hand (SVD) at ``which`` radius."""
+    F = _atc10_los(example, which)
     u, sv, _ = np.linalg.svd(F, full_matrices=False)
-    out = _atc10_invariants("I", "fit")
+    out = _atc10_invariants(example, which)
     out["s_all"] = float(np.sum((u.T @ np.ones(F.shape[0])) ** 2 / sv**2))
     return out
+
+
+def _atc10_phys_lowering() -> list[float]:
+    printed = {"I": _TABLE_42_I, "II": _TABLE_42_II}
+    return [
+        1 - _table_43_row(_atc10_geometry_inputs(ex, "phys"), s0)[c] / _table_43_row(printed[ex], s0)[c]
+        for ex in ("I", "II")
+        for s0 in (5.0, 50.0, 500.0)
+        for c in ("sd0", "sdN")
+    ]
 
 
 ORACLES += [
@@ -1718,15 +1732,27 @@ ORACLES += [
     ),
     Oracle(
         "atc10-32-sdN-I-5",
-        lambda: _table_43_row(_atc10_fit_inputs_i(), 5.0)["sdN"],
+        lambda: _table_43_row(_atc10_geometry_inputs("I", "fit"), 5.0)["sdN"],
         rtol=1e-8,
         why="SVD geometry, by hand",
     ),
     Oracle(
         "atc10-32-sdN1-I-5",
-        lambda: _table_43_row(_atc10_fit_inputs_i(), 5.0)["sdN1"],
+        lambda: _table_43_row(_atc10_geometry_inputs("I", "fit"), 5.0)["sdN1"],
         rtol=1e-8,
         why="SVD geometry, by hand",
+    ),
+    Oracle(
+        "atc10-32-phys-lowering-lo",
+        lambda: 100 * min(_atc10_phys_lowering()),
+        rtol=1e-7,
+        why="SVD geometry and Table 4.3 by hand, the published sigma0 5, 50, 500 ns",
+    ),
+    Oracle(
+        "atc10-32-phys-lowering-hi",
+        lambda: 100 * max(_atc10_phys_lowering()),
+        rtol=1e-7,
+        why="SVD geometry and Table 4.3 by hand, the published sigma0 5, 50, 500 ns",
     ),
     Oracle(
         "wf89-eq13-ratio",
