@@ -2313,3 +2313,22 @@ def atc10_32_phys_lowering_lo() -> float:
 def atc10_32_phys_lowering_hi() -> float:
     """Largest relative lowering (%) of sd_0 and sd_N when the synchronous geometry replaces Table 4.2."""
     return float(100 * max(_atc10_phys_lowering()))
+
+
+@register(
+    "atc10-30-s123-printed-residual-pct",
+    "atc10/30-tracking-geometry",
+    "largest miss of the printed Eq. (4.5.30) form 1'(F3'F3)^-1 1 against Table 4.2's S3 (%)",
+)
+def atc10_30_s123_printed_residual_pct() -> float:
+    """Largest relative miss (%) of 1'(F3'F3)^-1 1 in ECEF at the fitted radius (the printed (4.5.30))
+    against Table 4.2's printed S3, over both examples."""
+    from navcore.papers import atc10_tracking as paper
+
+    return float(
+        100
+        * max(
+            abs(_atc10_geometry_row(ex, "fit")["s_123_printed"] / float(paper.TABLE_4_2[ex]["s_123"]) - 1)
+            for ex in ("I", "II")
+        )
+    )

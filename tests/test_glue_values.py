@@ -1154,6 +1154,16 @@ def _atc10_phys_lowering() -> list[float]:
     ]
 
 
+def _atc10_s123_printed_residual_pct() -> float:
+    """1'(F3'F3)^-1 1 in the Earth-fixed frame (the printed (4.5.30)): sum (v_i . 1)^2 / s_i^2 with
+    F3 = U S V' by numpy's SVD, against Table 4.2's printed S3 (5.76 and 14.3)."""
+    out = []
+    for ex, printed in (("I", 5.76), ("II", 14.3)):
+        _, sv, vt = np.linalg.svd(_atc10_los(ex, "fit")[:3])
+        out.append(abs(float(np.sum((vt @ np.ones(3)) ** 2 / sv**2)) / printed - 1))
+    return 100 * max(out)
+
+
 ORACLES += [
     # the samples' mean over M = 2001 equally spaced times differs from the time average by
     # ((f_0 + f_M)/2 - mean) / (M - 1): under 1/2000 relative while the range varies by less than its mean
@@ -1753,6 +1763,9 @@ ORACLES += [
         lambda: 100 * max(_atc10_phys_lowering()),
         rtol=1e-7,
         why="SVD geometry and Table 4.3 by hand, the published sigma0 5, 50, 500 ns",
+    ),
+    Oracle(
+        "atc10-30-s123-printed-residual-pct", _atc10_s123_printed_residual_pct, rtol=1e-6, why="SVD in ECEF"
     ),
     Oracle(
         "wf89-eq13-ratio",
