@@ -2332,3 +2332,16 @@ def atc10_30_s123_printed_residual_pct() -> float:
             for ex in ("I", "II")
         )
     )
+
+
+@register(
+    "atc10-32-col5-corrected-{ex}-{s0}",
+    "atc10/32-tracking-examples",
+    "Table 4.3 col. (v) from the printed Table 4.2 with the invariant S3 of the stated system (ft)",
+)
+def atc10_32_col5_corrected(ex: str, s0: str) -> float:
+    """sd_(N+1) of Table 4.3 col. (v) for example ``ex`` at sigma0 = ``s0`` ns, with the invariant
+    1'(F3 F3')^-1 1 of the synchronous geometry in place of the printed S3 (erratum E4-1), ft."""
+    from navcore.papers import atc10_tracking as paper
+
+    return float(paper.first_three_satellite_sd_invariant(ex, float(s0)))

@@ -1047,14 +1047,15 @@ def _unit_sphere(lat_deg: float, lon_deg: float) -> np.ndarray:
     return np.array([math.cos(la) * math.cos(lo), math.cos(la) * math.sin(lo), math.sin(la)])
 
 
-def _atc10_los(example: str, which: str) -> np.ndarray:
+def _atc10_los(example: str, which: str, aircraft_height: bool = False) -> np.ndarray:
     """Unit vectors satellite -> aircraft of a Table 4.1 example (the declared sub-satellite points
-    and aircraft position), the aircraft on the unit sphere; a mirror of the longitudes changes
-    none of the invariants below."""
+    and aircraft position), the aircraft on the unit sphere or, with ``aircraft_height``, at the
+    declared height; a mirror of the longitudes changes none of the invariants below."""
     from navcore.papers import atc10_tracking as paper
 
     r = _atc10_radius(which)
-    ac = _unit_sphere(*paper.aircraft_lat_lon())
+    h = 1 + paper.IN.aircraft_height_m / paper.IN.earth_radius_m if aircraft_height else 1.0
+    ac = h * _unit_sphere(*paper.aircraft_lat_lon())
     rows = [ac - r * _unit_sphere(lat, lon) for lat, lon in paper.table_4_1(example)]
     return np.array([v / np.linalg.norm(v) for v in rows])
 
@@ -1162,6 +1163,15 @@ def _atc10_s123_printed_residual_pct() -> float:
         _, sv, vt = np.linalg.svd(_atc10_los(ex, "fit")[:3])
         out.append(abs(float(np.sum((vt @ np.ones(3)) ** 2 / sv**2)) / printed - 1))
     return 100 * max(out)
+
+
+def _atc10_col5_corrected(example: str, sigma0: float) -> float:
+    """Table 4.3 col. (v) by hand from the printed Table 4.2 with S3 = 1'(F3 F3')^-1 1 of the stated
+    system (synchronous orbit, the aircraft at its declared height): sum (u_i . 1)^2 / s_i^2 (SVD)."""
+    u3, sv3, _ = np.linalg.svd(_atc10_los(example, "phys", aircraft_height=True)[:3])
+    t = dict({"I": _TABLE_42_I, "II": _TABLE_42_II}[example])
+    t["s_123"] = float(np.sum((u3.T @ np.ones(3)) ** 2 / sv3**2))
+    return _table_43_row(t, sigma0)["sdN1"]
 
 
 ORACLES += [
@@ -1766,6 +1776,42 @@ ORACLES += [
     ),
     Oracle(
         "atc10-30-s123-printed-residual-pct", _atc10_s123_printed_residual_pct, rtol=1e-6, why="SVD in ECEF"
+    ),
+    Oracle(
+        "atc10-32-col5-corrected-I-5",
+        lambda: _atc10_col5_corrected("I", 5.0),
+        rtol=1e-8,
+        why="Table 4.3 by hand, SVD invariant",
+    ),
+    Oracle(
+        "atc10-32-col5-corrected-I-50",
+        lambda: _atc10_col5_corrected("I", 50.0),
+        rtol=1e-8,
+        why="Table 4.3 by hand, SVD invariant",
+    ),
+    Oracle(
+        "atc10-32-col5-corrected-I-500",
+        lambda: _atc10_col5_corrected("I", 500.0),
+        rtol=1e-8,
+        why="Table 4.3 by hand, SVD invariant",
+    ),
+    Oracle(
+        "atc10-32-col5-corrected-II-5",
+        lambda: _atc10_col5_corrected("II", 5.0),
+        rtol=1e-8,
+        why="Table 4.3 by hand, SVD invariant",
+    ),
+    Oracle(
+        "atc10-32-col5-corrected-II-50",
+        lambda: _atc10_col5_corrected("II", 50.0),
+        rtol=1e-8,
+        why="Table 4.3 by hand, SVD invariant",
+    ),
+    Oracle(
+        "atc10-32-col5-corrected-II-500",
+        lambda: _atc10_col5_corrected("II", 500.0),
+        rtol=1e-8,
+        why="Table 4.3 by hand, SVD invariant",
     ),
     Oracle(
         "wf89-eq13-ratio",
