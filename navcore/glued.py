@@ -2345,3 +2345,56 @@ def atc10_32_col5_corrected(ex: str, s0: str) -> float:
     from navcore.papers import atc10_tracking as paper
 
     return float(paper.first_three_satellite_sd_invariant(ex, float(s0)))
+
+
+# --- ATC-10 Sec. 3.5: the Chernoff bound and its convexity argument ---------------------------
+
+
+@register(
+    "atc10-21-convexity-limit",
+    "atc10/21-roc-bounds",
+    "largest x = rho sqrt(beta) up to which ln(1 - q + q cosh x) is convex in beta",
+)
+def atc10_21_convexity_limit() -> float:
+    """Root of h''(x) = h'(x) / x for h(x) = ln(1 - q + q cosh x), q = 2 tau/alpha of Sec. 3.6: below
+    it the log-moment term is convex in the power share beta (the step the paper argues in sqrt(beta))."""
+    import numpy as np
+    from scipy import optimize
+
+    from navcore.papers import atc10_multiple_access as pm
+
+    q = 2 * pm.IN.tau_over_alpha_sec36
+
+    def margin(x: float) -> float:
+        d = 1 - q + q * np.cosh(x)
+        h1 = q * np.sinh(x) / d
+        h2 = q * np.cosh(x) / d - h1**2
+        return float(h2 - h1 / x)
+
+    return float(optimize.brentq(margin, 1.0, 30.0))
+
+
+#: The page's two-point example: the noise power of contour 5, the threshold, the largest N and
+#: tau/alpha.
+ATC10_TWO_POINT_POWER, ATC10_TWO_POINT_THETA = 4 / 75, 0.5
+ATC10_TWO_POINT_N, ATC10_TWO_POINT_TAU_OVER_ALPHA = 10_000_000, 2e-5
+
+
+@register(
+    "atc10-21-upper-efolds",
+    "atc10/21-roc-bounds",
+    "Chernoff bound minus the exact ln p_f, two-point noise at N = 1e7 (e-folds)",
+)
+def atc10_21_upper_efolds() -> float:
+    """ln (Chernoff bound (3.5.13)) - ln (exact tail) for two-point multiple-access noise, N = 1e7."""
+    import numpy as np
+
+    from navcore.detection.multiple_access import MultipleAccessNoise, two_point_density, two_point_exact_tail
+    from navcore.detection.roc_bounds import chernoff_log_tails
+
+    n, theta = ATC10_TWO_POINT_N, ATC10_TWO_POINT_THETA
+    q = 2 * ATC10_TWO_POINT_TAU_OVER_ALPHA
+    bb = ATC10_TWO_POINT_POWER / ((n - 1) * q)
+    nz = MultipleAccessNoise(n, ATC10_TWO_POINT_TAU_OVER_ALPHA, two_point_density(bb))
+    exact = float(np.log(two_point_exact_tail(np.sqrt(bb), n - 1, q, [theta])[0]))
+    return float(chernoff_log_tails(nz, [theta])[0][0] - exact)

@@ -1174,6 +1174,41 @@ def _atc10_col5_corrected(example: str, sigma0: float) -> float:
     return _table_43_row(t, sigma0)["sdN1"]
 
 
+def _convexity_limit() -> float:
+    """sympy differentiates h(x) = ln(1 - q + q cosh x) twice; scipy brentq finds where
+    h'' - h'/x changes sign (q = 2 tau/alpha of Sec. 3.6)."""
+    import sympy
+
+    from navcore.papers import atc10_multiple_access as pm
+
+    x = sympy.symbols("x", positive=True)
+    q = sympy.Float(2 * pm.IN.tau_over_alpha_sec36)
+    h = sympy.log(1 - q + q * sympy.cosh(x))
+    margin = sympy.lambdify(x, sympy.diff(h, x, 2) - sympy.diff(h, x) / x, "math")
+    return optimize.brentq(lambda v: float(margin(v)), 1.0, 30.0, xtol=1e-14, rtol=1e-14)
+
+
+def _two_point_upper_efolds() -> float:
+    """The page's two-point noise (power 4/75, theta = 1/2, N = 1e7, q = 4e-5): the Chernoff bound
+    sup over rho of rho theta - (N - 1) ln(1 - q + q cosh(rho a)) (scipy minimize_scalar) against
+    the exact tail sum_K Bin(N - 1, q)(K) P(a (2J - K) >= theta), J ~ Bin(K, 1/2) (scipy.stats)."""
+    power, theta, n, q = 4 / 75, 0.5, 10_000_000, 4e-5
+    a = math.sqrt(power / ((n - 1) * q))
+
+    def minus(rho: float) -> float:
+        return -(rho * theta - (n - 1) * math.log1p(q * (math.cosh(rho * a) - 1)))
+
+    res = optimize.minimize_scalar(
+        minus, bounds=(0.0, 50.0 / a), method="bounded", options={"xatol": 1e-10 / a}
+    )
+    ln_upper = float(res.fun)
+    ks = np.arange(0, 4001)
+    pk = stats.binom.pmf(ks, n - 1, q)
+    j_min = np.ceil((theta / a + ks) / 2 - 1e-12)  # a (2J - K) >= theta
+    tail = float(np.sum(pk * stats.binom.sf(j_min - 1, ks, 0.5)))
+    return ln_upper - math.log(tail)
+
+
 ORACLES += [
     # the samples' mean over M = 2001 equally spaced times differs from the time average by
     # ((f_0 + f_M)/2 - mean) / (M - 1): under 1/2000 relative while the range varies by less than its mean
@@ -1812,6 +1847,15 @@ ORACLES += [
         lambda: _atc10_col5_corrected("II", 500.0),
         rtol=1e-8,
         why="Table 4.3 by hand, SVD invariant",
+    ),
+    Oracle("atc10-21-convexity-limit", _convexity_limit, rtol=1e-9, why="sympy's derivatives, brentq"),
+    # the bounded maximisation is flat at its optimum (error ~ xtol^2); the binomial sums to K = 4000
+    # (mean 400) leave nothing: 1e-6 on a difference of logs of order 1
+    Oracle(
+        "atc10-21-upper-efolds",
+        _two_point_upper_efolds,
+        rtol=1e-6,
+        why="numerical Chernoff, scipy binomial sums",
     ),
     Oracle(
         "wf89-eq13-ratio",
