@@ -2398,3 +2398,25 @@ def atc10_21_upper_efolds() -> float:
     nz = MultipleAccessNoise(n, ATC10_TWO_POINT_TAU_OVER_ALPHA, two_point_density(bb))
     exact = float(np.log(two_point_exact_tail(np.sqrt(bb), n - 1, q, [theta])[0]))
     return float(chernoff_log_tails(nz, [theta])[0][0] - exact)
+
+
+@register(
+    "atc10-30-fit-worst-pct",
+    "atc10/30-tracking-geometry",
+    "largest miss of Table 4.2 computed the paper's way at the fitted radius against the printed table (%)",
+)
+def atc10_30_fit_worst_pct() -> float:
+    """Largest relative miss (%) over both examples and the five columns of Table 4.2 computed as the
+    paper did (the printed (4.5.30) for col. 5, the aircraft at its height) at the fitted radius."""
+    from navcore.papers import atc10_tracking as paper
+    from navcore.papers.atc10_tracking import _printed_table_4_2_as_computed as as_computed
+
+    r_fit = paper.fitted_radius_ratio()
+    return float(
+        100
+        * max(
+            abs(as_computed(ex, r_fit)[c] / float(paper.TABLE_4_2[ex][c]) - 1)
+            for ex in ("I", "II")
+            for c in paper.COLUMNS
+        )
+    )
