@@ -331,13 +331,18 @@ def ledger(session: nox.Session) -> None:
 
     Every claim is computed afresh (the on-disk evaluation cache is off), so two runs of this
     session are an honest determinism check. ``nox -s ledger -- --twice`` is that check in
-    one session (CI's gate): two fresh processes evaluate the ledger side by side, one in
-    itself and one on two workers, and their JSON exports must be byte-identical
-    (tools/ledger_twice.py); the first stores its evaluations in the cache (without reading
-    it), so that the book built next, and the tests (``.ci/run`` runs this gate first), do not
-    evaluate the ledger again. Claims are evaluated under the test suite's numerical rules
-    (``NAVCORE_LEDGER_STRICT=1``: floating-point errors raise, warnings are errors), so that
-    the tests may read what the gate stored.
+    one session: two fresh processes evaluate the ledger side by side, one in itself and one
+    on two workers, and their JSON exports must be byte-identical (tools/ledger_twice.py); the
+    first stores its evaluations in the cache (without reading it). ``nox -s ledger --
+    --store`` (CI's gate) makes one fresh evaluation on every core and stores it the same
+    way, so that the book built next, and the tests (``.ci/run`` runs this gate first), do
+    not evaluate the ledger again; CI's determinism check of the ledger is then the second
+    clean book build, whose chapters evaluate their claims afresh in one process each and
+    whose HTML, which embeds every claim's full record on the ledger page, must be
+    byte-identical to the book built from this gate's parallel evaluation. Claims are
+    evaluated under the test suite's numerical rules (``NAVCORE_LEDGER_STRICT=1``:
+    floating-point errors raise, warnings are errors), so that the tests may read what the
+    gate stored.
     """
     _install(session)
     env = {
@@ -353,6 +358,11 @@ def ledger(session: nox.Session) -> None:
         # both runs evaluate afresh; the first also stores its evaluations for the book and the tests
         twice_env = {"NAVCORE_NO_DISK_CACHE": "1", "NAVCORE_LEDGER_STRICT": "1", **ONE_BLAS_THREAD}
         session.run("python", "tools/ledger_twice.py", str(out), *args, env=twice_env)
+    elif "--store" in args:
+        args.remove("--store")
+        # afresh on every core, never reading the cache, storing every evaluation in it
+        store_env = {**env, "NAVCORE_CACHE": "", "NAVCORE_CACHE_REFRESH": "1"}
+        session.run("python", "-m", "navcore", "ledger", "--jobs", "-1", "--json-out", str(out), *args, env=store_env)
     else:
         session.run("python", "-m", "navcore", "ledger", "--json-out", str(out), *args, env=env)
     session.log(f"ledger JSON: {out}")
