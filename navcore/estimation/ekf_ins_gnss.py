@@ -75,6 +75,8 @@ Mode = Literal["ins", "tc", "tc_att", "tc_dd"]
 #: Filter configurations: stand-alone INS, tightly coupled (code + delta range), plus Euler
 #: attitude from a multi-antenna receiver (Eq. 12), plus double-difference phases (Eq. 17).
 MODES = ("ins", "tc", "tc_att", "tc_dd")
+#: Satellites a double difference needs: the master and one other (KZL Eq. (14), two satellites).
+DD_MIN_SATELLITES = 2
 
 L = ERROR_LAYOUT_17
 _P, _V, _A = L.slice("position"), L.slice("velocity"), L.slice("misalignment")
@@ -798,7 +800,7 @@ def _monte_carlo_batch(
                     H_att,
                     np.full(3, _needed(g.attitude, "sc.gnss.attitude", f"mode {mode!r}") ** 2),
                 )
-            if mode == "tc_dd" and nu >= 2:
+            if mode == "tc_dd" and nu >= DD_MIN_SATELLITES:
                 base_b = _needed(sc.baselines_b, "sc.baselines_b", f"mode {mode!r}")
                 nb = base_b.shape[0]
                 ant_hat = np.einsum("nij,bj->nbi", C_hat, base_b)  # (N, nb, 3) NED
