@@ -20,10 +20,9 @@ That assignment is a ``convention`` input (:data:`IN` ``gyro_bias_arw``); the ot
 claim gives under it.
 
 Assumptions the paper does not state are ``assumed`` inputs with a plausible range: the
-initialisation averaging time, the crab angle, the GPS measurement noises (one scale,
-``gnss_noise_scale``, over the code and delta-range noises of :data:`GNSS_NOMINAL`, which are
-also the errors of the initial GPS fix; the carrier-phase and multi-antenna attitude noises each
-with its own range), the filter's gyro-bias random walk and the length of the short segments of the
+initialisation averaging time, the crab angle, the GPS measurement noises (code, delta range,
+carrier phase, multi-antenna attitude, each with its own range; the initial GPS fix is as noisy
+as the code and delta range), the filter's gyro-bias random walk and the length of the short segments of the
 satellite visibility schedule (:func:`visibility_schedule`: the paper's is only in its figures;
 the satellite counts of its segments, :data:`SCHEDULE_COUNTS`, are the structure the claims refer
 to, "the 3-satellite segment"). The sky is the nominal GPS constellation of a declared
@@ -53,7 +52,6 @@ from navcore.ledger import InputSet, input_cache
 from navcore.units import DEG
 
 __all__ = [
-    "GNSS_NOMINAL",
     "IN",
     "N_RUNS",
     "SCHEDULE_COUNTS",
@@ -155,18 +153,27 @@ IN.assumed(
     quantity="1-$\\sigma$ crab angle (heading minus GPS track)",
 )
 IN.assumed(
-    "gnss_noise_scale",
-    1.0,
-    low=0.5,
-    high=2.0,
-    reason="the paper gives no GPS noise; the book's nominal 1-$\\sigma$ code and delta-range noises "
-    "(3 m and 5 cm/s, :data:`GNSS_NOMINAL`: an L1 receiver without multipath, Table 1 corrects the "
-    "tropospheric and ionospheric delays and calibrates multipath out), which are also the errors of "
-    "the initial GPS fix per axis (one epoch's solution), are scaled together over 0.5-2 (1.5-6 m, "
-    "2.5-10 cm/s): a receiver noisier in code is noisier in Doppler and gives a worse first fix, and "
-    "one scale keeps the Monte Carlo band affordable",
-    unit="",
-    quantity="scale of the GPS code and delta-range noises and of the initial fix",
+    "code_noise_m",
+    3.0,
+    low=1.5,
+    high=6.0,
+    reason="the paper gives no GPS noise; 3 m is the 1-$\\sigma$ C/A-code pseudorange noise of an L1 "
+    "receiver without multipath (Table 1 corrects the tropospheric and ionospheric delays and "
+    "calibrates multipath out), 1.5-6 m a good to a poor low-cost receiver; the initial GPS fix has "
+    "the same error per axis (one epoch's code solution)",
+    unit="m",
+    quantity="1-$\\sigma$ code pseudorange noise (and error of the initial GPS position per axis)",
+)
+IN.assumed(
+    "delta_range_noise_mps",
+    0.05,
+    low=0.025,
+    high=0.1,
+    reason="the paper gives no GPS noise; 5 cm/s is the 1-$\\sigma$ delta-range (Doppler) noise of an "
+    "L1 receiver at 1 Hz, 2.5-10 cm/s a good to a poor low-cost receiver; the initial GPS velocity "
+    "has the same error per axis",
+    unit="m/s",
+    quantity="1-$\\sigma$ delta-range noise (and error of the initial GPS velocity per axis)",
 )
 IN.assumed(
     "phase_noise_m",
@@ -248,10 +255,6 @@ IN.assumed(
     quantity="length of each of the 4-, 3-, 2- and 5-satellite segments of the visibility schedule",
 )
 
-#: Nominal 1-sigma GPS code pseudorange (m) and delta-range (m/s) noises, which
-#: ``gnss_noise_scale`` multiplies; the initial GPS fix has the same errors per axis.
-GNSS_NOMINAL = {"pseudorange": 3.0, "delta_range": 0.05}
-
 #: Satellites in view, segment by segment, in the book's visibility schedule: 8, then 4, 3, 2 and
 #: 5 in segments of ``short_segment_s`` each that end the flight. The counts are the segments the
 #: claims name (Sec. 3.6: 'four or more', 'two or three'; Table 1: 2-8); the paper's schedule is
@@ -326,21 +329,18 @@ def kzl_imu(swapped: bool = False) -> ImuSpec:
 
 
 def initial_fix_sigmas() -> tuple[float, float]:
-    """Errors of the initial GPS fix per axis, position (m) and velocity (m/s): the code and
-    delta-range noises of :data:`GNSS_NOMINAL` times the assumed ``gnss_noise_scale`` (the fix is
-    one epoch's GPS solution, as noisy as the receiver)."""
-    k = IN.gnss_noise_scale
-    return k * GNSS_NOMINAL["pseudorange"], k * GNSS_NOMINAL["delta_range"]
+    """Errors of the initial GPS fix per axis, position (m) and velocity (m/s): the assumed code and
+    delta-range noises (the fix is one epoch's GPS solution, as noisy as the receiver)."""
+    return IN.code_noise_m, IN.delta_range_noise_mps
 
 
 def gnss_noise(mode: str = "all") -> GnssNoise:
     """The assumed GPS noises that ``mode`` uses; a noise the mode never uses is ``None``."""
     if mode == "ins":
         return GnssNoise(pseudorange=None, delta_range=None, phase=None, attitude=None)
-    k = IN.gnss_noise_scale
     return GnssNoise(
-        pseudorange=k * GNSS_NOMINAL["pseudorange"],
-        delta_range=k * GNSS_NOMINAL["delta_range"],
+        pseudorange=IN.code_noise_m,
+        delta_range=IN.delta_range_noise_mps,
         phase=IN.phase_noise_m if mode in ("tc_dd", "all") else None,
         attitude=IN.attitude_noise_rad if mode in ("tc_att", "all") else None,
     )
