@@ -39,6 +39,7 @@ __all__ = [
     "Angle",
     "Constraint",
     "Covariance",
+    "ModelDomainError",
     "Range",
     "RotationMatrix",
     "UnitQuaternion",
@@ -92,6 +93,23 @@ def power_ratio_from_db(name: str, value: ArrayLike) -> NDArray[np.float64]:
 def require_finite(name: str, value: ArrayLike) -> NDArray[np.float64]:
     """Check that ``value`` is finite everywhere and return it as an array."""
     return as_finite_array(name, value)
+
+
+class ModelDomainError(ValueError):
+    """Valid inputs that together describe a case the model does not cover.
+
+    Each input is in its own range, but their combination asks the model for something its
+    construction excludes: for example a flight along which fewer satellites stay above the
+    elevation mask than the receiver model tracks on fixed channels. A ``ValueError``, so a
+    caller who catches bad input catches it too; the ledger tells it apart when it runs a claim
+    across its assumed inputs' ranges (a corner of that box the model does not cover is left
+    out of the band and said, not taken as a failure of the claim).
+
+    Examples
+    --------
+    >>> issubclass(ModelDomainError, ValueError)
+    True
+    """
 
 
 def require_positive(name: str, value: ArrayLike, *, allow_inf: bool = False) -> Any:

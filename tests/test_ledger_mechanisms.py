@@ -9,7 +9,8 @@ simple closed forms of their inputs, so which runs are made, which band results 
 verdict follows can be counted by hand.
 
 * the band's corners: six assumed inputs where only one off-diagonal corner agrees (every
-  corner is run up to six inputs); seven inputs fall back to the documented four corners;
+  corner is run up to six inputs); seven inputs fall back to the documented four corners and
+  the two steepest ones;
 * the verdict rule with an admissible and a plausible-range input read together;
 * the input cache: a cached function reading two inputs of which one is overridden (the
   overridden value is used, and both reads are recorded, on a miss and on a hit); a cached
@@ -26,8 +27,9 @@ import itertools
 
 import pytest
 
-from navcore.ledger import Claim, InputSet, Tolerance, evaluate, input_cache, printed
-from navcore.ledger.core import MAX_CORNER_INPUTS, MAX_READING_COMBINATIONS, STATUSES
+from navcore._validate import ModelDomainError
+from navcore.ledger import Claim, InputSet, Tolerance, evaluate, input_cache, printed, render
+from navcore.ledger.core import MAX_CORNER_INPUTS, MAX_READING_COMBINATIONS, STATUSES, left_out_of_band
 from navcore.ledger.inputs import Input, overriding, recording
 
 TOL = Tolerance(reason="test", abs=0.5, policy="printed-digits")
@@ -107,20 +109,49 @@ def test_six_assumed_inputs_only_an_off_diagonal_corner_agrees():
     assert max(one_at_a_time) == pytest.approx(90.0 + 10.0 / 32)
 
 
-def test_seven_assumed_inputs_fall_back_to_four_corners():
-    """Beyond six inputs: each input at its ends and four corners, all low, all high, the first
-    half low and the rest high, and its mirror (core._band_runs). Oracle: the run list by hand."""
+def test_seven_assumed_inputs_fall_back_to_four_corners_and_the_steepest_two():
+    """Beyond six inputs: each input at its ends, four corners (all low, all high, the first half
+    low and the rest high, and its mirror) and the two corners where each input sits at the end
+    that raised (lowered) the value one at a time (core._band_runs). Oracle: the run list and the
+    band by hand for 10 + x0 - x1 + x2 - x3 + x4 - x5 + x6, whose extremes (14 at high, low, high,
+    ..., 7 at its mirror) no diagonal corner reaches (those give 10 or 11)."""
+    runs = []
+    signs = (1, -1, 1, -1, 1, -1, 1)
+
+    def compute():
+        xs = tuple(getattr(IN, f"x{i}") for i in range(7))
+        runs.append(xs)
+        return 10.0 + sum(s * x for s, x in zip(signs, xs, strict=True))
+
+    ev = evaluate(make(compute=compute, expected_status="consistent"))
+    assert ev.status == "consistent"
+    lows, highs = (0.0,) * 7, (1.0,) * 7
+    up = tuple(1.0 if s > 0 else 0.0 for s in signs)
+    down = tuple(1.0 - x for x in up)
+    corners = [lows, highs, lows[:3] + highs[3:], highs[:3] + lows[3:], up, down]
+    assert runs[-6:] == corners
+    assert len(runs) == 1 + 7 * 2 + 6
+    assert ev.band == pytest.approx((7.0, 14.0))
+
+
+def test_the_steepest_corners_are_skipped_for_a_statement():
+    """A statement's values are not numbers that order: beyond six inputs only the four corners."""
     runs = []
 
     def compute():
         xs = tuple(getattr(IN, f"x{i}") for i in range(7))
         runs.append(xs)
-        return 10.0 + sum(xs) - 3.5
+        return sum(xs) >= 0.0
 
-    evaluate(make(compute=compute, expected_status="consistent"))
-    lows, highs = (0.0,) * 7, (1.0,) * 7
-    corners = [lows, highs, lows[:3] + highs[3:], highs[:3] + lows[3:]]
-    assert runs[-4:] == corners
+    evaluate(
+        make(
+            published=True,
+            unit="statement",
+            tolerance=Tolerance(reason="exact", abs=0.0, policy="exact"),
+            compute=compute,
+            expected_status="consistent",
+        )
+    )
     assert len(runs) == 1 + 7 * 2 + 4
 
 
@@ -377,3 +408,34 @@ def test_inputs_are_recorded_once_with_their_provenance_and_source():
 def test_input_records_are_the_declarations():
     inp = IN.input("x0")
     assert isinstance(inp, Input) and inp.band_points == (0.0, 1.0) and inp.provenance == "assumed"
+
+
+def test_a_band_run_outside_the_models_domain_is_left_out_and_said():
+    """A run the model does not cover (ModelDomainError) gives no band value and does not fail
+    the claim; the detail names the case and the count, and the ledger page's band text shows
+    it (core._band_runs, render._band_text). Oracle: the band of 10 + x0 by hand over the runs
+    left, the one corner x0 = x1 = 1 raising."""
+
+    def compute():
+        x0, x1 = IN.x0, IN.x1
+        if x0 == 1.0 and x1 == 1.0:
+            raise ModelDomainError("no fixed channels for this flight")
+        return 10.0 + x0
+
+    ev = evaluate(make(compute=compute, expected_status="consistent"))
+    assert ev.status == "consistent" and ev.passes
+    assert ev.band == pytest.approx((10.0, 11.0))  # x0 = 1 still reached at x1 = 0
+    assert left_out_of_band(ev.detail) == "no fixed channels for this flight (1 run)"
+    assert "left out, outside the model's domain" in render._band_text(ev)
+
+
+def test_a_plain_value_error_in_a_band_run_still_fails_the_claim():
+    """Only ModelDomainError is left out: any other ValueError of a band run is an error."""
+
+    def compute():
+        if IN.x0 == 1.0:
+            raise ValueError("a bug")
+        return 10.0
+
+    ev = evaluate(make(compute=compute, expected_status="consistent"))
+    assert ev.status == "error" and not ev.passes

@@ -55,6 +55,7 @@ IN.convention("sign", 1.0, alternative=-1.0, quantity="sign of the term", reason
 IN.assumed("offset", 0.0, low=-1.0, high=1.0, reason="test range", unit="m")
 IN.assumed("scale", 1.0, low=0.5, high=1.5, reason="test range")
 IN.assumed("wall", 0.0, low=-1.0, high=1.0, reason="every admissible value", admissible=True)
+IN.fitted("fit_gain", 1.0, fitted_to=["KZL-test-elsewhere"], reason="solved from another printed value")
 
 PER_CYCLE = "KZL.synthetic_readings.per_cycle"
 SIGN = "KZL.synthetic_readings.sign"
@@ -146,6 +147,20 @@ def test_cross_check_fit_and_fitted_use_any_reading():
     assert evaluate(make(compute=lambda: 16.13 * IN.per_cycle, kind="cross-check")).status == "consistent"
     assert evaluate(make(compute=lambda: 20.0 * IN.per_cycle, kind="cross-check")).status == "discrepant"
     assert evaluate(make(compute=lambda: 16.13 * IN.per_cycle, kind="fit")).status == "consistent"
+
+
+def test_a_fitted_input_read_with_assumed_ones_still_needs_a_band_that_decides():
+    """A fit makes agreement at best consistent; its band over assumed inputs is still subject to
+    the too-wide rule (LEDGER.md): 10 * scale spans 5-15 (a factor 3: decides), 10 * scale**3
+    spans 1.25-33.75 (a factor 27, part agreeing: decides nothing). Oracle: the spans by hand."""
+    decides = make(compute=lambda: 10.0 * IN.fit_gain * IN.scale, expected_status="consistent")
+    assert evaluate(decides).status == "consistent"
+    wide = make(compute=lambda: 10.0 * IN.fit_gain * IN.scale**3, expected_status="not-reproducible")
+    ev = evaluate(wide)
+    assert ev.band == pytest.approx((1.25, 33.75))
+    assert ev.status == "not-reproducible" and ev.passes
+    beyond = make(compute=lambda: 30.0 * IN.fit_gain * IN.scale, expected_status="inconsistent")
+    assert evaluate(beyond).status == "inconsistent"  # 15-45 misses 10 +- 0.5
 
 
 def test_every_combination_of_two_conventions_is_run_nominal_first():

@@ -59,6 +59,7 @@ from navcore._validate import (
     NONNEGATIVE,
     OPEN_PROBABILITY,
     POSITIVE,
+    ModelDomainError,
     Range,
     check_public,
     require_nonnegative,
@@ -1384,8 +1385,10 @@ def best_geometry_channels(
     Raises
     ------
     ValueError
-        If ``n`` is not positive, fewer than ``n`` satellites stay above the mask, or no
-        combination gives a usable geometry.
+        If ``n`` is not positive, or no combination gives a usable geometry.
+    ModelDomainError
+        If fewer than ``n`` satellites stay above the mask for the whole trajectory (a
+        ``ValueError``: the fixed channels this selection models do not exist for that flight).
 
     Examples
     --------
@@ -1401,7 +1404,7 @@ def best_geometry_channels(
     geo = satellite_geometry(trajectory, constellation, range(constellation.prn.size))
     always = np.flatnonzero(np.all(geo.elevation >= mask_deg * np.pi / 180, axis=0))
     if always.size < n:
-        raise ValueError(
+        raise ModelDomainError(
             f"only {always.size} satellites stay above mask_deg={mask_deg} for the whole trajectory"
         )
     ks = np.linspace(0, len(trajectory) - 1, 12).astype(int)

@@ -54,6 +54,18 @@ A reading other than the one used is run across the assumed ranges only when the
 needs it (the reading used does not already agree with a band that decides), over the assumed
 inputs that the run under the readings used read (a claim's inputs are those of that run).
 
+Band runs
+---------
+The band runs each assumed input one at a time over its band points and then the corners of
+the box: every corner for up to :data:`MAX_CORNER_INPUTS` inputs; beyond that, the two
+diagonal corners (all low, all high), their mirror, and, for a numeric value, the two corners
+where each input sits at the end of its range that raised (lowered) the value in its
+one-at-a-time run (the extremes of a response monotone in each input, which the diagonals can
+miss). A run whose inputs are each in range but together describe a case the model does not
+cover (it raises ``ModelDomainError``, for example no four satellites stay above the mask
+along the whole flight for fixed channels) gives no value: it is left out of the band, and
+the claim's detail says which case was left out and why.
+
 A band too wide to decide
 -------------------------
 Stated before any value is computed: a band decides nothing when its ends are more than a
@@ -125,6 +137,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
+from navcore._validate import ModelDomainError
 from navcore.ledger.inputs import Input, _label_and_unit, declaring, get_input, overriding, recording
 
 __all__ = [
@@ -133,6 +146,8 @@ __all__ = [
     "ERRATUM_KINDS",
     "EXACT",
     "KINDS",
+    "LEFT_OUT_OF_BAND",
+    "MAX_CORNER_INPUTS",
     "MAX_READING_COMBINATIONS",
     "PAPERS",
     "POLICIES",
@@ -153,6 +168,7 @@ __all__ = [
     "claim_quote",
     "evaluate",
     "figure_reading",
+    "left_out_of_band",
     "monte_carlo",
     "precision_status",
     "printed",
@@ -1498,8 +1514,38 @@ def _run(claim: Claim, overrides: dict[str, Any] | None = None) -> tuple[Any, di
     return value, reads
 
 
+#: What a claim's detail says, before the cases, when band runs were outside the model's domain
+#: (module docstring, "Band runs"); :func:`left_out_of_band` reads it back.
+LEFT_OUT_OF_BAND = "; left out of the band, outside the model's domain: "
+
+
+def left_out_of_band(detail: str) -> str:
+    """The band runs an evaluation left out as outside the model's domain, in words ("" if none).
+
+    Parameters
+    ----------
+    detail : str
+        An evaluation's ``detail``.
+
+    Returns
+    -------
+    str
+        The cases left out and how many runs each, as the detail says them.
+
+    Examples
+    --------
+    >>> left_out_of_band("derived verdict consistent" + LEFT_OUT_OF_BAND + "no fix (1 run)")
+    'no fix (1 run)'
+    >>> left_out_of_band("derived verdict consistent")
+    ''
+    """
+    return detail.partition(LEFT_OUT_OF_BAND)[2]
+
+
 #: Up to this many assumed inputs, the band includes every corner of their box (2**6 = 64 runs);
-#: beyond it, each input one at a time plus four diagonal corners.
+#: beyond it, each input one at a time plus four diagonal corners and, for a numeric value, the
+#: two corners where every input sits at the end that raised (lowered) the value one at a time
+#: (the extremes of a monotone response, which the diagonals can miss).
 MAX_CORNER_INPUTS = 6
 
 #: Up to this many combinations of the readings of the conventions a claim reads are run (all
@@ -1508,22 +1554,34 @@ MAX_READING_COMBINATIONS = 16
 
 
 def _band_runs(
-    claim: Claim, assumed: list[Any], base: dict[str, Any] | None = None
+    claim: Claim, assumed: list[Any], base: dict[str, Any] | None = None, excluded: list[str] | None = None
 ) -> tuple[list[Any], list[tuple[str, tuple[tuple[Any, Any], ...]]]]:
     """Values across the assumed inputs' ranges: one at a time, and every corner of the box for up
     to :data:`MAX_CORNER_INPUTS` inputs (extremes of a monotone response lie at corners).
 
     ``base`` holds the overrides of a reading other than the one used (every run keeps them).
+    A run the model does not cover (it raises :class:`~navcore._validate.ModelDomainError`)
+    gives no value: its message is appended to ``excluded`` (module docstring, "Band runs").
     """
     base = base or {}
     values: list[Any] = []
     sensitivity = []
+
+    def run(overrides: dict[str, Any]) -> tuple[bool, Any]:
+        try:
+            return True, _run(claim, overrides)[0]
+        except ModelDomainError as exc:
+            if excluded is not None:
+                excluded.append(str(exc))
+            return False, None
+
     for inp in assumed:
         row = []
         for point in inp.band_points:
-            v, _ = _run(claim, {**base, inp.name: point})
-            values.append(v)
-            row.append((point, v))
+            ok, v = run({**base, inp.name: point})
+            if ok:
+                values.append(v)
+                row.append((point, v))
         sensitivity.append((inp.name, tuple(row)))
 
     if 2 <= len(assumed) <= MAX_CORNER_INPUTS:
@@ -1532,12 +1590,39 @@ def _band_runs(
         lows, highs = [inp.low for inp in assumed], [inp.high for inp in assumed]
         half = len(assumed) // 2
         corners = [lows, highs, lows[:half] + highs[half:], highs[:half] + lows[half:]]
+        corners += _steepest_corners(assumed, sensitivity)
     else:
         corners = []
     for corner in corners:
-        v, _ = _run(claim, {**base, **{inp.name: p for inp, p in zip(assumed, corner, strict=True)}})
-        values.append(v)
+        ok, v = run({**base, **{inp.name: p for inp, p in zip(assumed, corner, strict=True)}})
+        if ok:
+            values.append(v)
     return values, sensitivity
+
+
+def _steepest_corners(
+    assumed: list[Any], sensitivity: list[tuple[str, tuple[tuple[Any, Any], ...]]]
+) -> list[list[Any]]:
+    """The corners at which a monotone numeric response is largest and smallest.
+
+    Each input goes to the end of its range where the one-at-a-time run gave the larger value
+    (and, for the other corner, the smaller); none when a value is not a finite real number.
+    """
+    up, down = [], []
+    for inp, (_, row) in zip(assumed, sensitivity, strict=True):
+        if len(row) < 2 or isinstance(row[0][1], bool) or isinstance(row[-1][1], bool):
+            return []
+        if row[0][0] != inp.low or row[-1][0] != inp.high:
+            return []  # an end of the range lies outside the model's domain: no direction to take
+        try:  # the first and last band points are the ends of the range
+            v_low, v_high = float(row[0][1]), float(row[-1][1])
+        except (TypeError, ValueError):
+            return []
+        if not (math.isfinite(v_low) and math.isfinite(v_high)):
+            return []
+        up.append(inp.high if v_high >= v_low else inp.low)
+        down.append(inp.low if v_high >= v_low else inp.high)
+    return [up, down]
 
 
 def reading_combinations(conventions: Sequence[Input]) -> list[tuple[tuple[Input, str, Any], ...]]:
@@ -1682,7 +1767,11 @@ def derive_status(
     if claim.kind == "cross-check":
         return "consistent" if any(o.agrees_at_value for o in outcomes) else "discrepant"
     if claim.kind == "fit" or "fitted" in provenances:
-        return "consistent" if any(o.agrees for o in outcomes) else "inconsistent"
+        if any(o.agrees and not o.too_wide for o in outcomes):
+            return "consistent"
+        if any(o.agrees for o in outcomes):
+            return "not-reproducible"  # a band over the assumed inputs too wide to decide
+        return "inconsistent"
     if "assumed" in provenances:
         if any(o.agrees and not o.too_wide for o in outcomes):
             return "consistent"
@@ -1790,7 +1879,8 @@ def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
     admissible = bool(assumed) and all(i.admissible for i in assumed)
     run_bands = bool(assumed) and bands
     try:
-        values, sensitivity = _band_runs(claim, assumed) if run_bands else ([], [])
+        excluded: list[str] = []
+        values, sensitivity = _band_runs(claim, assumed, excluded=excluded) if run_bands else ([], [])
         first = _outcome(claim, tol, value, values)
         # the other readings: their values always (they are shown); their bands only where the
         # readings used do not already agree with a band that decides
@@ -1801,7 +1891,7 @@ def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
             others.append([combo, overrides, _run(claim, overrides)[0], []])
         if run_bands and others and not (first.agrees and not first.too_wide):
             for other in others:
-                other[3] = _band_runs(claim, assumed, base=other[1])[0]
+                other[3] = _band_runs(claim, assumed, base=other[1], excluded=excluded)[0]
     except Exception as exc:
         return Evaluation(
             claim,
@@ -1843,6 +1933,12 @@ def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
                     }
                 )
 
+    if excluded:
+        counts = {m: excluded.count(m) for m in dict.fromkeys(excluded)}
+        left_out = "; ".join(f"{m} ({n} run{'s' if n > 1 else ''})" for m, n in counts.items())
+        suffix = f"{LEFT_OUT_OF_BAND}{left_out}"
+    else:
+        suffix = ""
     common: dict[str, Any] = dict(
         status=status,
         tolerance=tol,
@@ -1857,11 +1953,11 @@ def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
             claim,
             value,
             False,
-            f"derived verdict {status!r} differs from the expected {claim.expected_status!r}",
+            f"derived verdict {status!r} differs from the expected {claim.expected_status!r}" + suffix,
             **common,
         )
     if status != "discrepant":
-        return Evaluation(claim, value, True, f"derived verdict {status}", **common)
+        return Evaluation(claim, value, True, f"derived verdict {status}" + suffix, **common)
     # discrepant: an erratum, and the book's value must agree with its independent oracle
     if not claim.erratum or claim.oracle is None or claim.oracle_tolerance is None:
         return Evaluation(

@@ -19,7 +19,15 @@ from collections.abc import Iterable, Sequence
 from typing import Any
 
 from navcore.formatting import format_number
-from navcore.ledger.core import ERRATUM_BASES, STATUSES, TEXT_ONLY_CAVEAT, Erratum, Evaluation, claim_quote
+from navcore.ledger.core import (
+    ERRATUM_BASES,
+    STATUSES,
+    TEXT_ONLY_CAVEAT,
+    Erratum,
+    Evaluation,
+    claim_quote,
+    left_out_of_band,
+)
 from navcore.ledger.inputs import _label_and_unit
 from navcore.ledger.registry import counts, errata, evaluations
 from navcore.provenance import BuildProvenance, build_provenance
@@ -828,8 +836,11 @@ def _band_text(e: Evaluation) -> str:
     if e.band is None or e.claim.is_statement:
         return ""
     lo, hi = e.band
-    return f"{format_value(lo)} to {format_value(hi)}" + (
-        f" {e.claim.unit}" if e.claim.unit not in ("", "statement") else ""
+    left_out = left_out_of_band(e.detail)
+    return (
+        f"{format_value(lo)} to {format_value(hi)}"
+        + (f" {e.claim.unit}" if e.claim.unit not in ("", "statement") else "")
+        + (f" (left out, outside the model's domain: {left_out})" if left_out else "")
     )
 
 

@@ -609,7 +609,7 @@ def _cep_claim(arch: str, power: float) -> Claim:
     if arch == "DI":
         return Claim(
             **common,
-            expected_status="not-reproducible" if power == 100.0 else "consistent",
+            expected_status="not-reproducible",
             note="Reduced two-channel navigator with the paper's MEMS IMU, initial errors and 2-m range "
             "bias, evaluated exactly (the covariance of its linear error model, no sampling); trajectory, "
             "antenna gain, signal, noise, geometry and code-loop assumptions are the book's, with ranges. "

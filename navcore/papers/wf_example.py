@@ -25,13 +25,11 @@ from navcore.ledger import input_cache
 from navcore.location.emitter import doppler_frequency, emitter_gauss_newton
 from navcore.papers.wf import (
     ALTITUDE,
-    DURATION,
     EMITTER,
     F0,
     IN,
     SIGMA_F,
     SPEED,
-    TURN_RATE_DEG,
     sigma_a_example,
 )
 
@@ -59,7 +57,7 @@ def _vibration(t: np.ndarray, rng: np.random.Generator) -> tuple[np.ndarray, np.
 
 
 def _rigid(t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    w = np.deg2rad(TURN_RATE_DEG)
+    w = np.deg2rad(IN.turn_rate_deg_s)
     radius = SPEED / w
     pos = np.column_stack([radius * np.sin(w * t), radius * (1 - np.cos(w * t)), np.full(t.size, ALTITUDE)])
     vel = np.column_stack([SPEED * np.cos(w * t), SPEED * np.sin(w * t), np.zeros(t.size)])
@@ -85,7 +83,7 @@ def run(trials: int = 20, sigma_a: float | None = None) -> dict:
     sigma_a = sigma_a_example() if sigma_a is None else sigma_a
     TS, SIGMA_N = IN.ts, IN.sigma_n
     rng = np.random.default_rng(SEED)
-    n_steps = round(DURATION / TS)
+    n_steps = round(IN.aperture_duration_s / TS)
     t_all = np.arange(n_steps + 1) * TS
     idx = np.arange(0, n_steps + 1, DECIM)
     t = t_all[idx]
