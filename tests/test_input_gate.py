@@ -281,9 +281,15 @@ def test_every_rule_and_allowlist_entry_has_a_reason() -> None:
     entries = gate.load_allowlist(gate.ALLOWLIST)
     assert entries and all(e["reason"].strip() for e in entries)
     index = gate.index_package(gate.navcore_target())
-    matched = {(c.file, c.binding) for c in index.candidates if c.allow is not None}
-    for e in entries:  # every entry still names a number of the package
-        assert (e["file"], e["name"]) in matched, e
+    allowed = [c for c in index.candidates if c.allow is not None]
+    for e in entries:  # every entry still names a number of the package (by name, or by text and scope)
+        assert any(
+            c.file == e["file"]
+            and e.get("name", c.binding) == c.binding
+            and e.get("text", c.text) == c.text
+            and e.get("scope", c.scope) == c.scope
+            for c in allowed
+        ), e
 
 
 def test_perturbed_values() -> None:

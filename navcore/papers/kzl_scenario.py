@@ -169,11 +169,11 @@ IN.assumed(
     0.05,
     low=0.025,
     high=0.1,
-    reason="the paper gives no GPS noise; 5 cm/s is the 1-$\\sigma$ delta-range (Doppler) noise of an "
+    reason="the paper gives no GPS noise; 5 cm/s is the 1-$\\sigma$ $\\delta$ range (Doppler) noise of an "
     "L1 receiver at 1 Hz, 2.5-10 cm/s a good to a poor low-cost receiver; the initial GPS velocity "
     "has the same error per axis",
     unit="m/s",
-    quantity="1-$\\sigma$ delta-range noise (and error of the initial GPS velocity per axis)",
+    quantity="1-$\\sigma$ $\\delta$ range noise (and error of the initial GPS velocity per axis)",
 )
 IN.assumed(
     "phase_noise_m",
@@ -202,7 +202,7 @@ IN.assumed(
     low=1e-7,
     high=1e-5,
     reason="the paper gives no filter tuning; the filter models the gyro biases as a random walk "
-    "(the truth biases are constant), and its root PSD is a tuning choice: 1e-6 rad/s/$\\sqrt{s}$ "
+    "(the truth biases are constant), and its root PSD is a tuning choice: $10^{-6}$ rad/s/$\\sqrt{s}$ "
     "nominal, a decade either way a tighter or a looser filter",
     unit="rad/s/sqrt(s)",
     quantity="gyro-bias random walk of the filter (tuning)",
