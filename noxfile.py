@@ -327,16 +327,20 @@ def ledger(session: nox.Session) -> None:
     one session (CI's gate): two fresh processes evaluate the ledger side by side, one in
     itself and one on two workers, and their JSON exports must be byte-identical
     (tools/ledger_twice.py); the first stores its evaluations in the cache (without reading
-    it), so that the book built next does not evaluate the ledger again.
+    it), so that the book built next, and the tests (``.ci/run`` runs this gate first), do not
+    evaluate the ledger again. Claims are evaluated under the test suite's numerical rules
+    (``NAVCORE_LEDGER_STRICT=1``: floating-point errors raise, warnings are errors), so that
+    the tests may read what the gate stored.
     """
     _install(session)
-    env = {"NAVCORE_CACHE": "off", "NAVCORE_NO_DISK_CACHE": "1"}
+    env = {"NAVCORE_CACHE": "off", "NAVCORE_NO_DISK_CACHE": "1", "NAVCORE_LEDGER_STRICT": "1"}
     out = ROOT / "_build" / "ledger.json"
     args = list(session.posargs)
     if "--twice" in args:
         args.remove("--twice")
-        # both runs evaluate afresh; the first also stores its evaluations for the book
-        session.run("python", "tools/ledger_twice.py", str(out), *args, env={"NAVCORE_NO_DISK_CACHE": "1"})
+        # both runs evaluate afresh; the first also stores its evaluations for the book and the tests
+        twice_env = {"NAVCORE_NO_DISK_CACHE": "1", "NAVCORE_LEDGER_STRICT": "1"}
+        session.run("python", "tools/ledger_twice.py", str(out), *args, env=twice_env)
     else:
         session.run("python", "-m", "navcore", "ledger", "--json-out", str(out), *args, env=env)
     session.log(f"ledger JSON: {out}")

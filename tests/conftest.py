@@ -5,6 +5,7 @@ from __future__ import annotations
 import os
 import shutil
 import tempfile
+from pathlib import Path
 
 import matplotlib
 import numpy as np
@@ -23,12 +24,22 @@ settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci" if os.environ.ge
 # in a folder of its own, which the session's processes (pytest-xdist workers, the kernels of
 # the exercise pages and the strict-build tests) share, so that a claim is evaluated once per
 # session, not once per process. NAVCORE_TEST_CACHE=off turns the cache off altogether.
+# NAVCORE_TEST_CACHE_FROM=<folder> starts the session's folder as a copy of the evaluations
+# stored in <folder> (CI: the ledger gate's, made from the same checkout and lock just before);
+# the session's own evaluations never go back there. Claims are evaluated under the tests'
+# numerical rules (NAVCORE_LEDGER_STRICT: floating-point errors raise, warnings are errors),
+# and only evaluations stored under those rules are read, whoever stored them.
+os.environ["NAVCORE_LEDGER_STRICT"] = "1"
 if os.environ.get("NAVCORE_TEST_CACHE", "") == "off":
     os.environ["NAVCORE_CACHE"] = "off"
 elif "NAVCORE_TEST_CACHE" not in os.environ:  # the controller: the workers inherit the folder
     os.environ["NAVCORE_TEST_CACHE"] = tempfile.mkdtemp(prefix="navcore-test-ledger-")
     os.environ["NAVCORE_CACHE"] = os.environ["NAVCORE_TEST_CACHE"]
     _SESSION_CACHE_OWNER = True
+    if os.environ.get("NAVCORE_TEST_CACHE_FROM"):
+        stored = Path(os.environ["NAVCORE_TEST_CACHE_FROM"], "claims")
+        if stored.is_dir():
+            shutil.copytree(stored, Path(os.environ["NAVCORE_TEST_CACHE"], "claims"))
 os.environ["NAVCORE_NO_DISK_CACHE"] = "1"  # the KZL Monte Carlo's own disk cache is off
 
 

@@ -312,3 +312,59 @@ def test_evaluation_cache_round_trip(tmp_path, monkeypatch):
             assert registry._from_json(registry._to_json(value)) == value
     finally:
         registry.evaluate_claim.cache_clear()
+
+
+def test_strict_evaluation_raises_on_floating_point_errors_and_warnings(monkeypatch):
+    """NAVCORE_LEDGER_STRICT=1 evaluates under the test suite's rules, whatever the caller's.
+
+    Oracle: numpy's documented errstate behaviour (1/0 warns under 'warn', raises under
+    'raise') and Python's warnings filters, outside and inside the strict context.
+    """
+    import warnings
+
+    import numpy as np
+
+    from navcore.ledger import registry
+
+    with warnings.catch_warnings(), np.errstate(all="ignore"):
+        warnings.simplefilter("ignore")
+        monkeypatch.delenv("NAVCORE_LEDGER_STRICT", raising=False)
+        with registry._strictly():
+            assert np.float64(1.0) / 0.0 == np.inf
+            warnings.warn("lenient", RuntimeWarning, stacklevel=1)  # ignored
+        monkeypatch.setenv("NAVCORE_LEDGER_STRICT", "1")
+        with registry._strictly():
+            with pytest.raises(FloatingPointError):
+                np.float64(1.0) / 0.0
+            with pytest.raises(RuntimeWarning):
+                warnings.warn("strict", RuntimeWarning, stacklevel=1)
+            assert np.float64(1e-300) * 1e-300 == 0.0  # underflow stays quiet, as in the tests
+
+
+def test_a_strict_process_reads_only_evaluations_stored_under_the_strict_rules(tmp_path, monkeypatch):
+    """A lenient evaluation on disk (the book's, say) may hide a warning: a strict process (the
+    tests, CI's ledger gate) evaluates the claim again; a strict one is read by every process.
+
+    Oracle: the stored files' ``strict`` field and whether a read found them.
+    """
+    from navcore.ledger import registry
+
+    cid = "WF-eq20-PNG"
+    monkeypatch.setenv("NAVCORE_CACHE", str(tmp_path))
+    monkeypatch.delenv("NAVCORE_LEDGER_STRICT", raising=False)
+    registry.evaluate_claim.cache_clear()
+    try:
+        registry.evaluate_claim(cid)
+        stored = registry.cache_dir() / f"{cid}.json"
+        assert json.loads(stored.read_text())["strict"] is False
+        assert registry._cached(cid) is not None
+        monkeypatch.setenv("NAVCORE_LEDGER_STRICT", "1")
+        assert registry._cached(cid) is None
+        registry.evaluate_claim.cache_clear()
+        registry.evaluate_claim(cid)  # evaluated again, strictly, and stored
+        assert json.loads(stored.read_text())["strict"] is True
+        assert registry._cached(cid) is not None
+        monkeypatch.delenv("NAVCORE_LEDGER_STRICT")
+        assert registry._cached(cid) is not None
+    finally:
+        registry.evaluate_claim.cache_clear()

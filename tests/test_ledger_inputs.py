@@ -12,6 +12,7 @@ Two groups of tests:
 from __future__ import annotations
 
 import dataclasses
+import functools
 import importlib.util
 import re
 import sys
@@ -20,7 +21,7 @@ from pathlib import Path
 import pytest
 
 from navcore import ledger
-from navcore.ledger import Claim, InputSet, Tolerance, evaluate, input_cache, printed, prose
+from navcore.ledger import Claim, Evaluation, InputSet, Tolerance, evaluate, input_cache, printed, prose
 from navcore.ledger.inputs import InputReadError, all_inputs, overriding, recording
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -218,8 +219,8 @@ def _perturbations(value):
     if isinstance(value, int):
         return [value + 1, 2 * value + 1, 10 * value + 10]
     if isinstance(value, float):
-        if not value:
-            return [0.1, 1.0, -1.0]
+        if not value:  # a zero has no scale of its own: small steps, then one large on any unit's scale
+            return [0.1, 1.0, -1.0, 1000.0]
         return [value * f for f in (1.1, 2.0, 0.5, 10.0, 0.1, -1.0)]
     return []
 
@@ -233,47 +234,120 @@ def _moved(a, b) -> bool:
     return abs(x - y) > 1e-12 * max(1.0, abs(x), abs(y))
 
 
-@pytest.mark.parametrize("paper", list(ledger.PAPERS))
-def test_each_published_input_moves_the_claims_that_read_it(paper):
-    """Change each published scalar input of the paper in turn (x1.1, +1 or negated).
+@functools.cache
+def _nominal(paper: str) -> dict[str, Evaluation]:
+    """Every claim of the paper evaluated at its nominal inputs (no band), in this process.
 
-    At least one claim that read it must move (its value or its verdict), and across the
-    paper some perturbation must make the ledger fail. A claim's input list is recorded
-    from what its computation read, so a reader that never moves points at a read that
-    does not matter, and a claim missing from the readers would not be re-run.
+    The base against which a perturbation is compared is the same kind of evaluation as the
+    perturbed one, so that a claim moves only because its input changed (a status that
+    differs only because the base had its band would count as moved, and a test built on it
+    could not fail for that claim). It is also cheap: no band corner is run.
     """
-    base = {e.claim.id: e for e in ledger.evaluations(paper)}
+    return {c.id: evaluate(c, bands=False) for c in ledger.claims(paper)}
+
+
+def _readers(paper: str) -> tuple[dict[str, list[str]], list]:
+    """Each published input of the paper that some claim reads, and its readers, cheapest first.
+
+    A claim's input list is recorded from what its nominal computation read. The readers of
+    an input are sorted by how many inputs they read (a closed form before a flyby or a Monte
+    Carlo), so that an input's first mover is usually found without re-running a mission.
+    """
+    base = _nominal(paper)
     readers: dict[str, list[str]] = {}
     for e in base.values():
         for i in e.inputs:
             readers.setdefault(i["name"], []).append(e.claim.id)
-    # the cheapest readers first (fewest inputs read: a closed form before a flyby or a Monte
-    # Carlo), so that an input's first mover is usually found without re-running a mission
     for ids in readers.values():
         ids.sort(key=lambda cid: (len(base[cid].inputs), cid))
     published = [i for i in all_inputs(paper) if i.provenance == "published" and i.name in readers]
+    return readers, [i for i in published if _perturbations(i.value)]
+
+
+#: Published inputs that no change moves at the nominal inputs, found when the base of the test
+#: below became the nominal evaluation (the banded base had let them pass), each with what was
+#: found. They stay listed only while they stay silent: one that moves fails the test.
+_KNOWN_SILENT = {
+    "SP.tables.doppler_scale_factor_vertical_pct": (
+        "read (through Table 2.8's Doppler error model) only by the helicopter target-location "
+        "claims SP-sec2.6.4-doppler-50pct and -doppler-improves, whose nominal values are "
+        "bit-identical for every change of it, x1000 included: open for the SP models (issue 29)"
+    ),
+}
+
+#: Chunks of each paper's published inputs, each a test of its own, so that pytest-xdist can
+#: spread a paper with many inputs over the workers (each chunk evaluates the paper's nominal
+#: claims once, a few seconds, and then its inputs' perturbations).
+_INPUT_CHUNKS = {"WF": 1, "SP": 4, "ATC10": 3, "KZL": 1}
+
+
+@pytest.mark.parametrize(
+    ("paper", "chunk"),
+    [(p, k) for p in ledger.PAPERS for k in range(_INPUT_CHUNKS[p])],
+    ids=lambda v: str(v),
+)
+def test_each_published_input_moves_the_claims_that_read_it(paper, chunk):
+    """Change each published scalar input of the paper in turn (x1.1, +1 or negated).
+
+    At least one claim that read it must move (its nominal value or its nominal verdict,
+    against the nominal evaluation without the change). A claim's input list is recorded
+    from what its computation read, so a reader that never moves points at a read that does
+    not matter, and a claim missing from the readers would not be re-run. The inputs are
+    split into chunks (every ``_INPUT_CHUNKS[paper]``-th input from the ``chunk``-th on).
+    """
+    readers, published = _readers(paper)
     if not published:
         pytest.skip(f"{paper} reads no published input yet")
-    silent, ledger_fails = [], False
-    for inp in published:
-        changes = _perturbations(inp.value)
-        if not changes:
-            continue
+    base = _nominal(paper)
+    silent = []
+    for inp in published[chunk :: _INPUT_CHUNKS[paper]]:
         moved = False
-        for new in changes:
+        for new in _perturbations(inp.value):
             for cid in readers[inp.name]:
                 with overriding({inp.name: new}):
                     ev = evaluate(ledger.claim(cid), bands=False)
                 if _moved(ev, base[cid]):
                     moved = True
-                    ledger_fails = ledger_fails or not ev.passes
                     break
             if moved:
                 break
-        if not moved:
+        if moved and inp.name in _KNOWN_SILENT:
+            pytest.fail(f"{inp.name} now moves a reader: remove it from _KNOWN_SILENT")
+        if not moved and inp.name not in _KNOWN_SILENT:
             silent.append(f"{inp.name} (read by {readers[inp.name]})")
     assert not silent, "perturbing these published inputs moves none of their readers: " + "; ".join(silent)
-    assert ledger_fails, f"no perturbation of a {paper} published input makes the ledger fail"
+
+
+@pytest.mark.parametrize("paper", list(ledger.PAPERS))
+def test_a_perturbed_published_input_makes_the_ledger_fail(paper):
+    """Some change of one published input of the paper makes a passing claim fail its check.
+
+    The search stops at the first claim that passes at its nominal inputs and fails with one
+    published input changed (the perturbations of the test above). It tries the claims
+    without a band first, across every input: their nominal evaluation is the ledger's own.
+    Only then the claims with a band, where the failure must be confirmed by the ledger's full
+    evaluation (with the band) under the same change.
+    """
+    readers, published = _readers(paper)
+    if not published:
+        pytest.skip(f"{paper} reads no published input yet")
+    base = _nominal(paper)
+
+    def banded(cid: str) -> bool:
+        return any(i["provenance"] == "assumed" for i in base[cid].inputs)
+
+    for with_band in (False, True):
+        for inp in published:
+            for new in _perturbations(inp.value):
+                for cid in readers[inp.name]:
+                    if banded(cid) != with_band or not base[cid].passes:
+                        continue
+                    with overriding({inp.name: new}):
+                        if evaluate(ledger.claim(cid), bands=False).passes:
+                            continue
+                        if not with_band or not evaluate(ledger.claim(cid)).passes:
+                            return
+    pytest.fail(f"no perturbation of a {paper} published input makes the ledger fail")
 
 
 def _wrong(claim: Claim, tol: Tolerance, expected: str):

@@ -447,6 +447,17 @@ def test_psk_amplitude_law_matches_chip_overlap_simulation():
     assert np.abs(got).max() <= 1.0 + 1e-12
 
 
+def test_psk_amplitude_samples_do_not_depend_on_chunk():
+    """Oracle: the same generator state gives the same samples whatever the batch size (the batch
+    bounds memory only); a different seed gives different samples."""
+    code = np.array([1.0, 1.0, 1.0, -1.0, -1.0, 1.0, -1.0])  # Barker 7
+    ref = psk_amplitude_samples(code, 10_001, np.random.default_rng(4), chunk=10_001)
+    for chunk in (1, 999, 4_000):
+        got = psk_amplitude_samples(code, 10_001, np.random.default_rng(4), chunk=chunk)
+        assert np.array_equal(got, ref)
+    assert not np.array_equal(psk_amplitude_samples(code, 10_001, np.random.default_rng(5)), ref)
+
+
 def test_point_mass_density_construction():
     """Oracle: the validation contract and the definition of a point-mass law: weights are
     normalised (1:3 -> 1/4, 3/4), a zero weight is allowed and its atom never drawn, one atom is

@@ -924,7 +924,7 @@ def psk_amplitude_samples(
     rng : numpy.random.Generator
         Seeded generator (``numpy.random.default_rng(seed)``).
     chunk : int, default 20000
-        Samples drawn per batch (memory bound).
+        Samples computed per batch (memory bound); the samples do not depend on it.
 
     Returns
     -------
@@ -954,9 +954,13 @@ def psk_amplitude_samples(
     require_integer("n_events", n_events, minimum=1)
     out = np.empty(n_events)
     m = np.arange(L)
+    # delays (in chips) and carrier phases first, then the codes chunk by chunk: the samples do
+    # not depend on ``chunk`` (each draw takes the generator's stream in order), only memory does
+    delays = rng.uniform(-L, L, n_events)
+    phases = rng.uniform(0, 2 * np.pi, n_events)
     for start in range(0, n_events, chunk):
         e = min(chunk, n_events - start)
-        d = rng.uniform(-L, L, e)  # delay in chips
+        d = delays[start : start + e]
         k = np.floor(d).astype(int)
         f = d - k
         cj = rng.choice(np.array([-1.0, 1.0]), size=(e, L))
@@ -968,7 +972,7 @@ def psk_amplitude_samples(
             return (np.take_along_axis(cj_pad, idx, axis=1) @ ci) / L
 
         x = (1.0 - f) * corr(k) + f * corr(k + 1)
-        out[start : start + e] = np.cos(rng.uniform(0, 2 * np.pi, e)) * x
+        out[start : start + e] = np.cos(phases[start : start + e]) * x
     return out
 
 

@@ -8,6 +8,7 @@ every such module, so adding a section never means editing a shared list.
 from __future__ import annotations
 
 import ast
+import contextlib
 import hashlib
 import importlib
 import json
@@ -15,6 +16,8 @@ import math
 import os
 import pkgutil
 import time
+import warnings
+from collections.abc import Iterator
 from functools import cache
 from pathlib import Path
 from typing import Any
@@ -525,6 +528,31 @@ _RECORD_FIELDS = (
 )
 
 
+def _strict_evaluation() -> bool:
+    """Whether claims are evaluated under the test suite's numerical rules (``NAVCORE_LEDGER_STRICT=1``).
+
+    Then every evaluation runs with numpy's floating-point errors raising (invalid, divide,
+    overflow; underflow ignored) and every warning an error, as each test runs: a computation
+    that divides by zero or warns evaluates to an ``error``; every other value is the same.
+    The test suite and CI's ledger gate set it. A stored evaluation records whether it was
+    made so, and a strict process reads only strict ones (a lenient process reads both).
+    """
+    return os.environ.get("NAVCORE_LEDGER_STRICT", "").lower() in ("1", "yes", "true")
+
+
+@contextlib.contextmanager
+def _strictly() -> Iterator[None]:
+    """Floating-point errors raise and warnings are errors inside, if :func:`_strict_evaluation`."""
+    if not _strict_evaluation():
+        yield
+        return
+    import numpy as np
+
+    with warnings.catch_warnings(), np.errstate(all="raise", under="ignore"):
+        warnings.simplefilter("error")
+        yield
+
+
 def _cached(claim_id: str) -> Evaluation | None:
     folder = cache_dir()
     if folder is None or os.environ.get("NAVCORE_CACHE_REFRESH", "").lower() in ("1", "yes", "true"):
@@ -533,6 +561,8 @@ def _cached(claim_id: str) -> Evaluation | None:
         data = json.loads((folder / f"{claim_id}.json").read_text())
         if data.get("key") != _claim_key(claim_id):
             return None  # a file it depends on changed since it was stored
+        if _strict_evaluation() and data.get("strict") is not True:
+            return None  # made without the strict rules: it may hide a warning
         c = claim(claim_id)
         from navcore.ledger.core import resolve_tolerance
 
@@ -549,6 +579,7 @@ def _store(ev: Evaluation) -> None:
         return
     data = {k: _to_json(getattr(ev, k)) for k in _RECORD_FIELDS}
     data["key"] = _claim_key(ev.claim.id)
+    data["strict"] = _strict_evaluation()
     data["dependencies"] = list(claim_dependencies(ev.claim.id))
     try:
         folder.mkdir(parents=True, exist_ok=True)
@@ -571,7 +602,9 @@ def evaluate_claim(claim_id: str) -> Evaluation:
     the contents of the files the claim depends on (:func:`claim_dependencies`), so a stored
     evaluation is exactly what a fresh evaluation would give. A first evaluation runs the
     claim's model (and its band): from a moment for arithmetic to seconds for a Monte Carlo
-    claim.
+    claim. With ``NAVCORE_LEDGER_STRICT=1`` (the test suite, CI's ledger gate) it runs with
+    numpy's floating-point errors raising and warnings as errors, and reads only stored
+    evaluations made that way.
 
     Parameters
     ----------
@@ -603,7 +636,8 @@ def evaluate_claim(claim_id: str) -> Evaluation:
     if cid not in _MEMO:
         hit = _cached(cid)
         if hit is None:
-            hit = evaluate(claim(cid))
+            with _strictly():
+                hit = evaluate(claim(cid))
             _store(hit)
         _MEMO[cid] = hit
     return _MEMO[cid]

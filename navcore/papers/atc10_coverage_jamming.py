@@ -226,21 +226,34 @@ def _random_pick_at_least_half() -> bool:
 
 
 def _plain_bounds(x_db: float, p_d: float, k: int, t: float) -> tuple[float, float]:
-    """N_FL/N_T and N_ADL/N_T typed from (2.5.5), (2.5.12), (2.7.1) with plain floats."""
+    """N_FL/N_T and N_ADL/N_T typed from (2.5.5), (2.5.12), (2.7.1) with plain floats.
+
+    Each factor is typed in the form that keeps its digits where it is small: ``0.5 erfc`` for
+    the tail of (2.7.1) (``0.5 - 0.5 erf`` cancels), ``1 - (1 - p_f)^n`` as
+    ``-expm1(n log1p(-p_f))`` (``1 - p_f`` rounds to 1 for ``p_f`` below 1e-16), and at t = 0
+    the nu -> infinity limit of (2.4.2), ``1 - (1 - q)^K``, in the same form.
+    """
     g = aj.geometry()
     phi = special.erfinv(2 * p_d - 1)
     x = 10 ** (x_db / 10)
-    pf = 0.5 - 0.5 * special.erf(math.sqrt(0.5 / x) - phi)
+    pf = 0.5 * special.erfc(math.sqrt(0.5 / x) - phi)
     na, nb, nv = g.samples_per_period, g.samples_per_delay_window, g.samples_per_track_window
-    f = (1 - (1 - pf) ** na) * (1 - (1 - pf) ** nb) ** 3
-    gg = (1 - (1 - pf) ** na) * (1 - (1 - pf) ** nv) ** 3
+
+    def some(n: float) -> float:  # 1 - (1 - p_f)^n
+        return -math.expm1(n * math.log1p(-pf))
+
+    f = some(na) * some(nb) ** 3
+    gg = some(na) * some(nv) ** 3
     n_share = g.airborne_fraction
-    if k == 1:
+    if k == 1 and t == 0:  # the printed K = 1 line; with t > 0 a single list follows (2.4.2)
         pdl = p_d**4
     else:
         q = p_d**4
-        nu = math.log((1 - t) * q / (t * (1 - q))) if t > 0 else 60.0
-        pdl = 1 - math.exp(-k * (nu * (1 - t) - math.log((1 - q) * math.exp(nu) + q)))
+        if t > 0:
+            nu = math.log((1 - t) * q / (t * (1 - q)))
+            pdl = -math.expm1(-k * (nu * (1 - t) - math.log((1 - q) * math.exp(nu) + q)))
+        else:
+            pdl = -math.expm1(k * math.log1p(-q))
     n_fl = (1 - n_share) * f ** (k * t + 1)
     n_adl = 0.5 * n_share * pdl * gg ** (k - 1) * f
     return n_fl, n_adl
@@ -326,6 +339,10 @@ def _majority_test() -> bool:
     ok = True
     k = int(IN_J.tab21_k10)
     for p0, p1 in A_CASES:
+        if not 0 < p0 < p1 < 1:
+            raise ValueError(
+                f"A_CASES: the test needs 0 < P(rho = 1 | H0) < P(rho = 1 | H1) < 1, got ({p0}, {p1})"
+            )
         a, b = (1 - p0) / (1 - p1), p0 / p1
         ok &= a > 1 > b
         for r in itertools.product((0, 1), repeat=k):
@@ -437,7 +454,7 @@ def b9_real_exponent_bound_holds(n_f: int = 99) -> bool:
     K = 10 (Table 2.1), t = 0.25, over a grid of list probabilities F in (0, 1)."""
     k = int(IN_J.tab21_k10)
     need = min_nonempty_lists(k, B9_T)
-    f = np.linspace(0.01, 0.99, n_f)
+    f = np.linspace(0.0, 1.0, n_f + 2)[1:-1]  # n_f points strictly inside (0, 1)
     exact = stats.binom.sf(need - 1, k, f)
     return bool(need == math.floor(k * B9_T) + 1 and np.all(f ** (k * B9_T + 1) <= exact + 1e-15))
 
@@ -651,9 +668,9 @@ CLAIMS: list[Claim] = [
         "$N_{FL} = (N_T - N) \\exp[(Kt + 1) \\ln F(p_f)]$ with $p_f$ of (2.7.1)",
         lambda: _composition(0),
         "navcore's log-domain bound against the printed formulas typed with plain floats (erf, powers) at "
-        "K = 1, 10, 100 and t = 0-0.1, x from -16 to 0 dB, to $10^{-6}$ relative; at t = 0 the exponent is "
-        "1, "
-        "so (B.11) gives (B.8).",
+        "K = 1, 10, 100 and t = 0-0.1, x from -16 to 0 dB, to $10^{-6}$ relative (each factor "
+        "typed in the form that keeps its digits where it is small); at t = 0 the exponent is 1, so (B.11) "
+        "gives (B.8).",
         PAGE,
     ),
     _statement(

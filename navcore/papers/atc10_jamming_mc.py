@@ -43,11 +43,12 @@ from navcore.ledger.inputs import input_cache
 N_A = 200
 HALF_WINDOW = 5
 TRIALS = 1000
-K_MAX = 3
 SEED = 19720622
 X_DB = np.arange(-14.0, -6.5, 1.0)
 #: (K, t, P_DL) cases simulated.
 CASES = ((1, 0.0, 0.9), (3, 0.0, 0.9), (3, 1.0 / 3.0, 0.9))
+#: Lists simulated per trial: the largest K of the cases.
+K_MAX = max(k for k, _, _ in CASES)
 
 
 @dataclass(frozen=True)

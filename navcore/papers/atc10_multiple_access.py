@@ -10,6 +10,7 @@ choosing (C1 uniform, C3 triangular, C4 Gaussian), all of second moment b.
 from __future__ import annotations
 
 import itertools
+import math
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -178,6 +179,26 @@ IN.assumed(
     "span "
     "the short codes for which a 'good' aperiodic autocorrelation is found by search",
 )
+#: Samples of the book's physical PSK simulation (its Monte Carlo tolerance is set by this count).
+_PSK_SAMPLES = 200_000
+IN.assumed(
+    "psk_samples",
+    _PSK_SAMPLES,
+    low=100_000,
+    high=400_000,
+    quantity="samples of the book's physical PSK simulation of the cross-term amplitude",
+    reason="the paper runs no simulation: the book's sample count sets its estimate of the PSK amplitude "
+    "law, which moves with it by its sampling error; half to twice the nominal count, whose "
+    "sampling error (4 standard errors) is the tolerance of the Sec. 3.9 power",
+)
+IN.convention(
+    "comparison_pd",
+    0.9,
+    quantity="lower detection probability at which the actual and Gaussian $p_f$ are compared (with 0.99)",
+    readings={"p_d = 0.9 and 0.99": 0.9, "p_d = 0.8 and 0.99": 0.8, "p_d = 0.5 and 0.99": 0.5},
+    reason="'always lower' (Sec. 3.8) is read off Figs. 3.3-3.8, whose detection levels are lost with "
+    "them: the book compares at 0.99 and one lower $p_d$, and the text does not say which",
+)
 IN.assumed(
     "fig311_extra_lags",
     1,
@@ -265,7 +286,8 @@ def noise_sec36(name: str, x: float) -> MultipleAccessNoise:
 # ---------------------------------------------------------------------------------------
 # Shared computations (cached: the book pages and several claims reuse them)
 # ---------------------------------------------------------------------------------------
-THETA_GRID = np.linspace(0.02, 0.98, 193)
+THETA_EDGE = 0.02
+THETA_GRID = np.linspace(THETA_EDGE, 1.0 - THETA_EDGE, 193)
 #: Samples per stratum (number K of overlapping interferers) of the stratified Monte Carlo.
 MC_PER_STRATUM = 20_000
 
@@ -334,7 +356,7 @@ def gaussian_comparison_table() -> dict[tuple[str, float, float], tuple[float, f
     """(density, x, pd_min) -> (actual best p_f, ROC_g p_f)."""
     out = {}
     for x in contours():
-        for pd_min in (0.9, 0.99):
+        for pd_min in (float(IN.comparison_pd), 0.99):
             g = gaussian_best_pf(x, pd_min)
             for name in DENSITY_NAMES:
                 r = exact_roc(name, x)
@@ -496,7 +518,8 @@ def exp_monotone_in_n_below_exp_g() -> bool:
     ok = True
     for r in (1e-6, 1e-5, 1e-4):
         e = exponent_from_gaussian_exponent(n, r, g)
-        ok &= bool(np.all(np.diff(e, axis=0) > 0) and np.all(e <= g + 1e-9) and np.all(e[-1] > 0.99 * g[0]))
+        # increases, stays below Exp_g; that the gap closes is (3.8.15), ATC10-sec3.8-exp-limit
+        ok &= bool(np.all(np.diff(e, axis=0) > 0) and np.all(e <= g + 1e-9))
     return ok
 
 
@@ -531,7 +554,8 @@ def exp_fig39_shortfall() -> float:
 #: Carrier phases at which the paper's n_ij = cos(2 pi f0 (t_i - t_j)) X is sampled: t_i is uniform
 #: over alpha with f0 alpha an integer (Sec. 3.4), so the phase is uniform; 12 equally spaced
 #: phases give its moments up to order 11 exactly.
-_PHASES = 2.0 * np.pi * np.arange(12) / 12.0
+_N_PHASES = 12
+_PHASES = 2.0 * np.pi * np.arange(_N_PHASES) / _N_PHASES
 #: A positive, skewed envelope X (the overlap integral of (3.3.7) is not symmetric by itself).
 _ENVELOPE = ((0.5, 2.0), (0.8, 0.2))
 
@@ -587,12 +611,13 @@ def gaussian_term_order() -> float:
 def clt_tail_convergence() -> tuple[float, ...]:
     """|P(n >= 2 sigma) - Q(2)| for Gaussian C at N q = 4, 40, 400 (Theorem 3.1)."""
     out = []
+    k_sigma = 2.0
     for n in (100_000, 1_000_000, 10_000_000):
         b = 1e-3
         noise = MultipleAccessNoise(n, IN.tau_over_alpha_sec36, GaussianDensity(b))
         sig = np.sqrt(noise.power)
-        exact = float(gaussian_mixture_exact_tail(b, n - 1, noise.q, np.array([2 * sig]))[0])
-        out.append(abs(exact - special.ndtr(-2.0)))
+        exact = float(gaussian_mixture_exact_tail(b, n - 1, noise.q, np.array([k_sigma * sig]))[0])
+        out.append(abs(exact - special.ndtr(-k_sigma)))
     return tuple(out)
 
 
@@ -658,7 +683,7 @@ def psk_target_code() -> np.ndarray:
 def psk_physical_samples() -> np.ndarray:
     """n_ij given overlap: random PSK interferers (fresh random codes, delays, carrier phases), seeded."""
     rng = np.random.default_rng(2024)
-    return psk_amplitude_samples(psk_target_code(), 200_000, rng)
+    return psk_amplitude_samples(psk_target_code(), int(IN.psk_samples), rng)
 
 
 def psk_power_coefficient() -> float:
@@ -913,7 +938,6 @@ STATEMENT = EXACT
 #: Sampling error of the PSK power: the amplitudes are sums of many +-1 chip products, no more
 #: kurtotic than a Gaussian, so Var(x^2) <= 2 b^2 and the relative standard error of the mean
 #: square of 200 000 samples is at most sqrt(2 / 200 000) = 0.32 %.
-_PSK_SAMPLES = 200_000
 _PSK_POWER_TOL = monte_carlo(
     abs=4.0 * POWER_COEFF_PRINTED * (2.0 / _PSK_SAMPLES) ** 0.5,
     runs=_PSK_SAMPLES,
@@ -931,8 +955,11 @@ CLAIMS = [
         published=True,
         unit="statement",
         compute=lambda: all(
-            abs(noise_sec36(n, x).power - 2 * (IN.n_sec36 - 1) * IN.tau_over_alpha_sec36 * b_of_contour(x))
-            < 1e-15
+            math.isclose(
+                noise_sec36(n, x).power,
+                2 * (IN.n_sec36 - 1) * IN.tau_over_alpha_sec36 * b_of_contour(x),
+                rel_tol=1e-12,
+            )
             for n in DENSITY_NAMES
             for x in CHECK_CONTOURS
         ),

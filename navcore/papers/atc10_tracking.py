@@ -467,7 +467,7 @@ def physical_table_4_2(example: str) -> dict[str, float]:
 
 def _printed_table_4_2_as_computed(example: str, radius_ratio: float) -> dict[str, float]:
     """Table 4.2 columns the way the paper computed them (col. 5 with the printed formula)."""
-    t = dict(table_4_2_from_geometry(example, radius_ratio))
+    t = dict(table_4_2_from_geometry(example, radius_ratio, aircraft_ratio=physical_aircraft_ratio()))
     t["s_123"] = t.pop("s_123_printed")
     return t
 
@@ -552,6 +552,15 @@ def within_cone(example: str, radius_ratio: float, aircraft_ratio: float = 1.0) 
     return max_zenith_angle_deg(example, radius_ratio, aircraft_ratio) <= IN.cone_half_angle_deg
 
 
+#: The paper's satellites 1, 2, 3 as 0-based indices of a constellation's rows (labels, not quantities).
+TRIPLET_123 = (0, 1, 2)
+
+
+def eq4538_coefficient() -> float:
+    """(3/2) 2^(1/3), the coefficient of the small-alpha approximation (4.5.38)."""
+    return 1.5 * float(np.cbrt(2.0))
+
+
 def best_triplet(
     example: str, radius_ratio: float, criterion: str = "trace", aircraft_ratio: float = 1.0
 ) -> tuple[int, int, int]:
@@ -620,7 +629,7 @@ def table_4_3_cell(example: str, sigma0_nominal: float, column: int) -> float:
 
 def corrected_first_three_satellite_sd(example: str, sigma0: float) -> float:
     """Col. (v) with the invariant S3 (erratum E4-1), geometry at the fitted ratio, steady state."""
-    inputs = table_4_2_from_geometry(example, fitted_radius_ratio())
+    inputs = table_4_2_from_geometry(example, fitted_radius_ratio(), aircraft_ratio=physical_aircraft_ratio())
     return table_4_3_row(inputs, sigma0)[4]
 
 
@@ -692,7 +701,7 @@ OUTAGE_MC_EPOCHS = {"I": 110, "II": 320}
 
 def acceptable_outage_mc_s(example: str, sigma0: float) -> float:
     """Same duration from the Monte Carlo of the full tracker (fitted geometry, invariant S3)."""
-    inputs = table_4_2_from_geometry(example, fitted_radius_ratio())
+    inputs = table_4_2_from_geometry(example, fitted_radius_ratio(), aircraft_ratio=physical_aircraft_ratio())
     threshold = IN.outage_threshold_factor * table_4_3_row(inputs, sigma0)[2]
     mc = tracker_monte_carlo(example, sigma0, m_after=OUTAGE_MC_EPOCHS[example], n_runs=4000)
     rms = IN.c_ft_per_ns * np.sqrt(mc.position_mse[MC_N_LAST + 1 :])
@@ -701,7 +710,7 @@ def acceptable_outage_mc_s(example: str, sigma0: float) -> float:
 
 
 def _corrected_inputs(example: str) -> dict[str, float]:
-    return table_4_2_from_geometry(example, fitted_radius_ratio())
+    return table_4_2_from_geometry(example, fitted_radius_ratio(), aircraft_ratio=physical_aircraft_ratio())
 
 
 def invariant_s3_inputs(example: str) -> dict[str, float]:
@@ -1132,7 +1141,7 @@ CLAIMS += [
         unit="statement",
         compute=lambda: (
             best_triplet("I", physical_radius_ratio(), IN.spacing_criterion, physical_aircraft_ratio())
-            == (0, 1, 2)
+            == TRIPLET_123
         ),
         tolerance=EXACT,
         expected_status="reproduced",
@@ -1150,14 +1159,14 @@ CLAIMS += [
         unit="statement",
         compute=lambda: (
             best_triplet("II", physical_radius_ratio(), IN.spacing_criterion, physical_aircraft_ratio())
-            == (0, 1, 2)
+            == TRIPLET_123
         ),
         tolerance=EXACT,
         expected_status="discrepant",
         note="Satellites 2, 3, 6 have $\\operatorname{tr}\\{(F_3'F_3)^{-1}\\} = 8.5$ against 13.6 for 1, 2, "
         "3; every measure of spacing prefers another triplet, and so does the fitted radius ratio.",
         erratum=_E6,
-        oracle=lambda: _physical_oracle_invariants("II")["triplet_angle"] == (0, 1, 2),
+        oracle=lambda: _physical_oracle_invariants("II")["triplet_angle"] == TRIPLET_123,
         oracle_tolerance=EXACT,
         discussed_in=PAGE_GEOMETRY,
     ),
@@ -1431,7 +1440,7 @@ CLAIMS += [
         published=1.89,
         unit="",
         kind="reproduction",
-        compute=lambda: 1.5 * float(np.cbrt(2.0)),
+        compute=eq4538_coefficient,
         tolerance=printed("1.89")[1],
         expected_status="reproduced",
         note="$1.5 \\times 2^{1/3} = 1.88988$.",

@@ -456,9 +456,8 @@ def _ratio_claim(label: float) -> Claim:
 _MISSION_NOTE = (
     "Covariance analysis of the sequential-outage mission (Sec. 2.6.1): 22-state loosely and "
     "24-state tightly coupled filters (Tables 2.2-2.3) against a 42-state truth model (Tables "
-    "2.4-2.5), events at 360/1020/2760 s; the band is over the assumed calibration-turn rate; "
-    "the rest of the scenario "
-    "(track, satellites, receiver noise, clock, tuning) is fixed as listed on the page."
+    "2.4-2.5), events at 360/1020/2760 s; the band runs over every assumed input of the scenario "
+    "the claim lists (location, flight, elevation mask, receiver noise, clock, barometer)."
 )
 
 CLAIMS = [
@@ -496,7 +495,7 @@ CLAIMS = [
         compute=lambda: _seq("TC 10 nmi/h", True),
         tolerance=prose("close to"),
         expected_status="consistent",
-        note=_MISSION_NOTE + " Tolerance from 'close to 18000 m' (was +-25 %).",
+        note=_MISSION_NOTE + " Tolerance from 'close to 18000 m'.",
         discussed_in="sp/21-missions",
     ),
     Claim(
@@ -525,7 +524,7 @@ CLAIMS = [
         compute=lambda: _seq("TC 10 nmi/h", False) / _seq("TC 1 nmi/h", False),
         tolerance=prose("about"),
         expected_status="consistent",
-        note=_MISSION_NOTE + " Tolerance from 'about 10 times better' (was +-3).",
+        note=_MISSION_NOTE + " Tolerance from 'about 10 times better'.",
         discussed_in="sp/21-missions",
     ),
     Claim(
