@@ -16,6 +16,7 @@ from navcore import frames as fr
 from navcore.estimation import kf_update, van_loan
 from navcore.estimation.ekf_ins_gnss import (
     _dd_phase_batch,
+    _transition_and_noise,
     correct_attitude,
     discrete_noise_nilpotent,
     euler_batch,
@@ -24,7 +25,7 @@ from navcore.estimation.ekf_ins_gnss import (
     sequential_scalar_updates,
 )
 from navcore.gnss.carrier_phase import dd_covariance, double_difference_phase, euler_attitude_rows
-from navcore.inertial.error_model17 import error_dynamics_17, noise_psd_17
+from navcore.inertial.error_model17 import error_dynamics_17, noise_psd_17, transition_exact
 from navcore.papers.kzl_scenario import table1_scenario
 from navcore.units import DEG, G0
 
@@ -75,6 +76,27 @@ def test_gauss_legendre_noise_equals_van_loan():
     np.testing.assert_allclose(discrete_noise_nilpotent(F, GQG, 1.0), Qd, rtol=1e-10, atol=1e-16)
     _, Qd = van_loan(F, GQG, 0.7)
     np.testing.assert_allclose(discrete_noise_nilpotent(F, GQG, 0.7), Qd, rtol=1e-10, atol=1e-16)
+
+
+def test_fused_transition_and_noise_equal_van_loan():
+    """Oracle: van_loan (one matrix exponential) for the transition and the discrete noise that the
+    Monte Carlo's loop forms together from the powers of a batch of F."""
+    F = np.stack(
+        [
+            error_dynamics_17(
+                fr.dcm_from_euler(0.02, -0.01, yaw), fr.dcm_from_euler(0.02, -0.01, yaw) @ [0.1, 0, -G0]
+            )
+            for yaw in (0.3, np.pi / 2)
+        ]
+    )
+    GQG = noise_psd_17(1e-2, 1e-3, 1e-5, 1e-6, 0.2, 0.1)
+    for dt in (1.0, 0.7):
+        Phi, Qd = _transition_and_noise(F, np.diag(GQG), dt)
+        for i in range(2):
+            Phi_ref, Qd_ref = van_loan(F[i], GQG, dt)
+            np.testing.assert_allclose(Phi[i], Phi_ref, rtol=1e-12, atol=1e-14)
+            np.testing.assert_allclose(Qd[i], Qd_ref, rtol=1e-10, atol=1e-16)
+        np.testing.assert_allclose(Phi, transition_exact(F, dt), rtol=1e-14, atol=1e-15)
 
 
 def test_left_correction_removes_n_frame_error():

@@ -25,8 +25,9 @@ References
 
 from __future__ import annotations
 
+import hashlib
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from typing import Any, Literal
 
 import numpy as np
@@ -66,6 +67,7 @@ __all__ = [
     "discrete_noise_nilpotent",
     "euler_batch",
     "euler_jacobian_batch",
+    "monte_carlo_key",
     "run_monte_carlo",
     "sequential_scalar_updates",
 ]
@@ -260,6 +262,26 @@ def discrete_noise_nilpotent(F: Array, GQGt: Array, dt: float) -> Array:
         Phi = unchecked(transition_exact)(F, s) if s > 0 else np.broadcast_to(np.eye(F.shape[-1]), F.shape)
         Qd = Qd + w * Phi @ GQGt @ np.swapaxes(Phi, -1, -2)
     return symmetrize_unchecked(Qd)
+
+
+def _transition_and_noise(F: Array, q: Array, dt: float) -> tuple[Array, Array]:
+    """:func:`~navcore.inertial.error_model17.transition_exact` and :func:`discrete_noise_nilpotent`
+    of one batch of ``F`` over ``dt``, for a diagonal ``GQG^T = diag(q)``, with the powers of ``F``
+    formed once for the transition and the four quadrature nodes (the same sums in another order:
+    equal to round-off). The inner-loop kernel of :func:`run_monte_carlo`: nothing is checked."""
+    F2 = F @ F
+    F3 = F2 @ F
+    eye = np.eye(F.shape[-1])
+
+    def phi(s: float) -> Array:
+        return eye + F * s + F2 * (s * s / 2.0) + F3 * (s * s * s / 6.0)
+
+    nodes, weights = np.polynomial.legendre.leggauss(4)
+    Qd = np.zeros_like(F)
+    for s, w in zip(0.5 * dt * (nodes + 1.0), 0.5 * dt * weights, strict=True):
+        P_s = phi(s)
+        Qd = Qd + w * (P_s * q) @ np.swapaxes(P_s, -1, -2)
+    return phi(dt), symmetrize_unchecked(Qd)
 
 
 def sequential_scalar_updates(x: Array, P: Array, y: Array, H: Array, r: Array) -> tuple[Array, Array]:
@@ -613,6 +635,92 @@ def run_monte_carlo(
     return _join_batches(parts)
 
 
+def _digest(h: Any, name: str, value: Any) -> None:
+    """Feed one named argument to ``h`` exactly: arrays by dtype, shape and bytes, other values by
+    their ``repr`` (a float's ``repr`` round-trips, a frozen dataclass's lists its fields)."""
+    h.update(name.encode() + b"=")
+    if isinstance(value, np.ndarray):
+        a = np.ascontiguousarray(value)
+        h.update(f"{a.dtype.str}{a.shape}".encode())
+        h.update(a.tobytes())
+    else:
+        h.update(repr(value).encode())
+    h.update(b";")
+
+
+def monte_carlo_key(
+    sc: Scenario,
+    mode: Mode,
+    n_runs: int,
+    seed: int,
+    *,
+    initialise: bool = True,
+    attitude_min_sats: int = 4,
+    batches: int = 1,
+) -> str:
+    """Digest of everything the numbers of :func:`run_monte_carlo` depend on, for memoising runs.
+
+    Two calls with the same key return the same errors and 1-sigma (``n_jobs`` does not change
+    them; the result's ``n_visible`` echoes the scenario's schedule). The
+    key holds every argument and every field of the scenario exactly, except what the call
+    provably never reads: the stand-alone INS (``"ins"``) uses no GPS measurement, so of the
+    satellites it keeps only how many there are (that sets how many GPS noises are drawn, and so
+    which draws the IMU noise takes next) and of the antennas only their count (the phase noises
+    drawn), and none of the visibility schedule or the GPS noises; a run without initialisation
+    does not read ``init_time``; only ``"tc_att"`` reads ``attitude_min_sats``. So the runs of a
+    band's corners that differ only in what the mode never reads share one key.
+
+    Parameters
+    ----------
+    sc, mode, n_runs, seed, initialise, attitude_min_sats, batches
+        As for :func:`run_monte_carlo`.
+
+    Returns
+    -------
+    str
+        A hexadecimal SHA-256 digest.
+
+    Raises
+    ------
+    ValueError
+        If ``mode`` is unknown.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from dataclasses import replace
+    >>> from navcore.inertial.imu import ImuSpec
+    >>> sats = np.array([[2e7, 0.0, -1e7], [-2e7, 0.0, -1e7], [0.0, 2e7, -1e7], [0.0, -2e7, -1e7]])
+    >>> sc = Scenario(velocity_ned=np.array([100.0, 0.0, 0.0]), attitude=np.zeros(3),
+    ...     duration=5.0, imu_rate=100.0, gps_rate=1.0, imu=ImuSpec("example", accel_bias=1e-2),
+    ...     sat_pos_ned=np.tile(sats, (6, 1, 1)), sat_vel_ned=np.zeros((6, 4, 3)),
+    ...     n_visible=np.full(6, 4), gnss=GnssNoise(3.0, 0.1, None, None), init_time=None,
+    ...     pos0_sigma=3.0, vel0_sigma=0.1, baselines_b=None)
+    >>> three = replace(sc, n_visible=np.full(6, 3))
+    >>> key = lambda s, mode: monte_carlo_key(s, mode, 50, 1, initialise=False)
+    >>> key(sc, "ins") == key(three, "ins"), key(sc, "tc") == key(three, "tc")
+    (True, False)
+    """
+    if mode not in MODES:
+        raise ValueError(f"mode must be one of {MODES}, got {mode!r}")
+    h = hashlib.sha256()
+    _digest(h, "call", (mode, int(n_runs), int(seed), bool(initialise), int(batches)))
+    if mode == "tc_att":
+        _digest(h, "attitude_min_sats", int(attitude_min_sats))
+    for f in fields(sc):
+        value = getattr(sc, f.name)
+        if f.name == "init_time" and not initialise:
+            continue
+        if mode == "ins" and f.name in ("sat_pos_ned", "sat_vel_ned"):
+            value = np.shape(value)[1]
+        elif mode == "ins" and f.name == "baselines_b":
+            value = None if value is None else np.shape(value)[0]
+        elif mode == "ins" and f.name in ("n_visible", "gnss"):
+            continue
+        _digest(h, f.name, value)
+    return h.hexdigest()
+
+
 def _join_batches(parts: list[tuple[MonteCarloResult, Array, Array, Array]]) -> MonteCarloResult:
     """One result from batches: runs concatenated, the run-averaged variances weighted by runs."""
     first = parts[0][0]
@@ -688,6 +796,7 @@ def _monte_carlo_batch(
     P0 = _initial_covariance(sc, dcm_from_euler(roll0, pitch0, yaw0), Tinit if initialise else None)
     P = np.tile(P0, (N, 1, 1))
     GQGt = _gqgt(sc)
+    q_diag = np.diag(GQGt).copy()  # GQG^T is diagonal (isotropic noises, _gqgt)
     g = sc.gnss
     k2pi = 2 * np.pi / GPS_L1_WAVELENGTH_M
     # phase noise of every antenna is drawn in every mode (common random numbers); without
@@ -706,8 +815,6 @@ def _monte_carlo_batch(
     _k_strapdown_interval = unchecked(strapdown_interval)
     _k_dcm_from_quat_batch = unchecked(dcm_from_quat_batch)
     _k_error_dynamics_17 = unchecked(error_dynamics_17)
-    _k_transition_exact = unchecked(transition_exact)
-    _k_discrete_noise_nilpotent = unchecked(discrete_noise_nilpotent)
     _k_sequential_scalar_updates = unchecked(sequential_scalar_updates)
     _k_euler_batch = unchecked(euler_batch)
     _k_euler_jacobian_batch = unchecked(euler_jacobian_batch)
@@ -753,8 +860,8 @@ def _monte_carlo_batch(
         # covariance prediction over the GPS interval
         C_hat = _k_dcm_from_quat_batch(nav.quat)
         F = _k_error_dynamics_17(C_hat, f_n.mean(axis=1))
-        Phi = _k_transition_exact(F, T)
-        P = symmetrize_unchecked(Phi @ P @ np.swapaxes(Phi, -1, -2) + _k_discrete_noise_nilpotent(F, GQGt, T))
+        Phi, Qd = _transition_and_noise(F, q_diag, T)
+        P = symmetrize_unchecked(Phi @ P @ np.swapaxes(Phi, -1, -2) + Qd)
 
         nu = int(sc.n_visible[k])
         if mode != "ins" and nu >= 1:

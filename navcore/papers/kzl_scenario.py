@@ -38,13 +38,21 @@ import inspect
 import os
 import sys
 import tempfile
-from dataclasses import fields
+from collections import OrderedDict
+from dataclasses import fields, replace
 from pathlib import Path
 from typing import cast
 
 import numpy as np
 
-from navcore.estimation.ekf_ins_gnss import GnssNoise, Mode, MonteCarloResult, Scenario, run_monte_carlo
+from navcore.estimation.ekf_ins_gnss import (
+    GnssNoise,
+    Mode,
+    MonteCarloResult,
+    Scenario,
+    monte_carlo_key,
+    run_monte_carlo,
+)
 from navcore.frames import dcm_ecef_to_ned, ecef_to_ned, geodetic_to_ecef
 from navcore.gnss.constellation import elevation_azimuth, nominal_gps_constellation
 from navcore.inertial.imu import ImuSpec, imu_spec_from_published
@@ -444,8 +452,9 @@ def table1_scenario(
     )
 
 
-def _source_key(sc: Scenario, *parts: object) -> str:
-    """Hash of the sources of every module the Monte Carlo depends on, of the scenario and of ``parts``."""
+def _source_key(run_key: str) -> str:
+    """Hash of the sources of every module the Monte Carlo depends on and of the run's arguments
+    (:func:`~navcore.estimation.ekf_ins_gnss.monte_carlo_key`): the key of a run stored on disk."""
     import navcore.estimation.ekf_ins_gnss as m1
     import navcore.frames as m2
     import navcore.gnss.carrier_phase as m3
@@ -458,14 +467,24 @@ def _source_key(sc: Scenario, *parts: object) -> str:
     h = hashlib.sha256()
     for mod in (m1, m2, m3, m4, m5, m6, m7, m8, sys.modules[__name__]):
         h.update(inspect.getsource(mod).encode())
-    for f in fields(sc):
-        value = getattr(sc, f.name)
-        h.update(f.name.encode())
-        h.update(
-            np.ascontiguousarray(value).tobytes() if isinstance(value, np.ndarray) else repr(value).encode()
-        )
-    h.update(repr((parts, SEED, np.__version__)).encode())
+    h.update(repr((run_key, np.__version__)).encode())
     return h.hexdigest()[:24]
+
+
+#: Monte Carlo runs made in this process, by :func:`~navcore.estimation.ekf_ins_gnss.monte_carlo_key`
+#: (most recently used last; at most :data:`_RUNS_KEPT`). A band's corners that differ only in
+#: inputs a configuration never reads, and the claims that read the same configuration at the same
+#: inputs, share one run; :func:`monte_carlo`'s input cache keeps fewer variants per configuration
+#: than a band has corners.
+_RUNS: OrderedDict[str, MonteCarloResult] = OrderedDict()
+_RUNS_KEPT = 1024
+
+
+def _read_only(result: MonteCarloResult) -> MonteCarloResult:
+    """``result`` with its arrays made read-only (it is shared by every caller with its key)."""
+    for f in fields(result):
+        getattr(result, f.name).flags.writeable = False
+    return result
 
 
 @input_cache
@@ -473,7 +492,10 @@ def monte_carlo(mode: str, initialise: bool = True, imu_name: str = "table1") ->
     """Cached seeded Monte Carlo (:func:`n_runs` runs) of one configuration of the Table 1 scenario.
 
     Keyed on the values of the inputs it reads (so the ledger's bands re-run it across the
-    assumed ranges). Results are also kept on disk (in the system temporary directory, under a
+    assumed ranges), and below that on the run's complete arguments
+    (:func:`~navcore.estimation.ekf_ins_gnss.monte_carlo_key`): every claim and every band corner
+    that asks for the same run in this process shares one computation. The arrays of the result
+    are read-only. Results are also kept on disk (in the system temporary directory, under a
     key hashed from the sources of every module involved and from the scenario), so that the
     chapter's notebooks, the ledger page and the tests share one computation per code version
     and input values. Set ``NAVCORE_NO_DISK_CACHE=1`` to recompute.
@@ -484,19 +506,33 @@ def monte_carlo(mode: str, initialise: bool = True, imu_name: str = "table1") ->
     runs = n_runs()
     # Eq. (12)'s attitude rows need the multi-antenna attitude, which Sec. 3.6 says needs 4 satellites
     extra = {"attitude_min_sats": int(IN.attitude_min_sats)} if mode in ("tc_att", "all") else {}
-    path = (
-        Path(tempfile.gettempdir())
-        / "navcore-kzl-mc"
-        / f"{mode}-{initialise}-{imu_name}-{_source_key(sc, mode, initialise, runs, extra)}.npz"
-    )
+    key = monte_carlo_key(sc, cast(Mode, mode), runs, SEED, initialise=initialise, **extra)
+    result = _RUNS.get(key)
+    if result is None:
+        result = _stored_or_run(key, sc, mode, runs, initialise, extra)
+        _RUNS[key] = result
+        if len(_RUNS) > _RUNS_KEPT:
+            _RUNS.popitem(last=False)
+    else:
+        _RUNS.move_to_end(key)
+    if not np.array_equal(result.n_visible, sc.n_visible):  # "ins" shares runs across schedules
+        result = replace(result, n_visible=np.asarray(sc.n_visible))
+    return result
+
+
+def _stored_or_run(
+    key: str, sc: Scenario, mode: str, runs: int, initialise: bool, extra: dict[str, int]
+) -> MonteCarloResult:
+    """The run of ``key`` from the disk cache, or computed (and stored) if it is not there."""
+    path = Path(tempfile.gettempdir()) / "navcore-kzl-mc" / f"{mode}-{initialise}-{_source_key(key)}.npz"
     use_disk = not os.environ.get("NAVCORE_NO_DISK_CACHE")
     if use_disk and path.exists():
         with np.load(path) as data:
-            return MonteCarloResult(**{f.name: data[f.name] for f in fields(MonteCarloResult)})
+            return _read_only(MonteCarloResult(**{f.name: data[f.name] for f in fields(MonteCarloResult)}))
     result = run_monte_carlo(sc, cast(Mode, mode), runs, SEED, initialise=initialise, **extra)
     if use_disk:
         path.parent.mkdir(parents=True, exist_ok=True)
         tmp = path.with_suffix(f".{os.getpid()}.npz")
         np.savez(tmp, **{f.name: getattr(result, f.name) for f in fields(MonteCarloResult)})
         os.replace(tmp, path)
-    return result
+    return _read_only(result)
