@@ -264,6 +264,10 @@ def discrete_noise_nilpotent(F: Array, GQGt: Array, dt: float) -> Array:
     return symmetrize_unchecked(Qd)
 
 
+#: Four-node Gauss-Legendre rule on [-1, 1] (exact for the degree-6 integrand of the discrete noise).
+_GL4_NODES, _GL4_WEIGHTS = np.polynomial.legendre.leggauss(4)
+
+
 def _transition_and_noise(F: Array, q: Array, dt: float) -> tuple[Array, Array]:
     """:func:`~navcore.inertial.error_model17.transition_exact` and :func:`discrete_noise_nilpotent`
     of one batch of ``F`` over ``dt``, for a diagonal ``GQG^T = diag(q)``, with the powers of ``F``
@@ -276,9 +280,8 @@ def _transition_and_noise(F: Array, q: Array, dt: float) -> tuple[Array, Array]:
     def phi(s: float) -> Array:
         return eye + F * s + F2 * (s * s / 2.0) + F3 * (s * s * s / 6.0)
 
-    nodes, weights = np.polynomial.legendre.leggauss(4)
     Qd = np.zeros_like(F)
-    for s, w in zip(0.5 * dt * (nodes + 1.0), 0.5 * dt * weights, strict=True):
+    for s, w in zip(0.5 * dt * (_GL4_NODES + 1.0), 0.5 * dt * _GL4_WEIGHTS, strict=True):
         P_s = phi(s)
         Qd = Qd + w * (P_s * q) @ np.swapaxes(P_s, -1, -2)
     return phi(dt), symmetrize_unchecked(Qd)
