@@ -105,11 +105,28 @@ class ModelDomainError(ValueError):
     across its assumed inputs' ranges (a corner of that box the model does not cover is left
     out of the band and said, not taken as a failure of the claim).
 
+    Parameters
+    ----------
+    message : str
+        What is out of the model's domain, for the caller: parameters as the caller spelled
+        them (``mask_deg=15.0``).
+    case : str, optional
+        The same case in a reader's words, without parameter names (the ledger shows it when a
+        band leaves the run out); defaults to ``message``.
+
     Examples
     --------
     >>> issubclass(ModelDomainError, ValueError)
     True
+    >>> err = ModelDomainError("only 3 satellites stay above mask_deg=15.0",
+    ...                        case="only 3 satellites stay above the 15 deg elevation mask")
+    >>> str(err), err.case
+    ('only 3 satellites stay above mask_deg=15.0', 'only 3 satellites stay above the 15 deg elevation mask')
     """
+
+    def __init__(self, message: str, *, case: str | None = None) -> None:
+        super().__init__(message)
+        self.case = message if case is None else case
 
 
 def require_positive(name: str, value: ArrayLike, *, allow_inf: bool = False) -> Any:

@@ -512,6 +512,7 @@ def text_table(frame: Any) -> Table:
     KZL  48
     """
     styler = frame.style.hide(axis="index").set_properties(**{"text-align": "left"})
+    styler = styler.set_table_attributes('class="navcore-text-table"')  # its cells may break long words
     return Table(styler.set_table_styles([{"selector": "th", "props": "text-align: left;"}]))
 
 

@@ -13,6 +13,10 @@ call to one of:
   :mod:`navcore.glued` for that page, with the function computing it, which
   ``tests/test_glue_values.py`` checks against an independent oracle and which
   :func:`navcore.book.glue` compares with what the page glues;
+- **a declared input**: the glued expression is one of the ledger's declared inputs read
+  through its paper module's ``IN`` (``float(sp.IN.cruise_altitude_m / 1000.0)``: the input
+  itself, at most converted by a number or negated); its value, provenance and reason are in
+  the ledger, and an oracle would only read the same declaration twice;
 - **a figure**: the glued object is a figure (``fig``), not a number;
 - **not yet registered**: listed in ``tests/glue_todo.txt``. That list may only shrink: a
   listed name that is now registered, a claim's value or no longer glued fails the test.
@@ -109,6 +113,51 @@ def _reads_claim(value: ast.expr | None) -> bool:
     return False
 
 
+@cache
+def _input_names() -> frozenset[str]:
+    """The short names of the ledger's declared inputs (``cruise_altitude_m``)."""
+    from navcore.ledger import claims
+    from navcore.ledger.inputs import all_inputs
+
+    claims()  # imports every paper module, which declares its inputs
+    return frozenset(i.name.rsplit(".", 1)[-1] for i in all_inputs())
+
+
+def _reads_input(value: ast.expr | None) -> bool:
+    """Whether the glued expression is a declared input read through ``IN``, as it is or
+    converted: ``float()``/``int()`` around it, a minus sign, or a product or quotient with a
+    number (a unit conversion). Anything computed from it is not the input."""
+    node = value
+    while node is not None:
+        if (
+            isinstance(node, ast.Call)
+            and isinstance(node.func, ast.Name)
+            and node.func.id in ("float", "int")
+        ):
+            node = node.args[0] if len(node.args) == 1 and not node.keywords else None
+        elif isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+            node = node.operand
+        elif isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mult | ast.Div):
+            numbers = [
+                isinstance(side, ast.Constant) and isinstance(side.value, int | float)
+                for side in (node.left, node.right)
+            ]
+            if numbers == [False, True]:
+                node = node.left
+            elif numbers == [True, False] and isinstance(node.op, ast.Mult):
+                node = node.right
+            else:
+                return False
+        else:
+            break
+    if not isinstance(node, ast.Attribute) or node.attr not in _input_names():
+        return False
+    owner = node.value
+    return (isinstance(owner, ast.Attribute) and owner.attr == "IN") or (
+        isinstance(owner, ast.Name) and owner.id == "IN"
+    )
+
+
 def _is_figure(value: ast.expr | None) -> bool:
     return isinstance(value, ast.Name) and value.id == "fig"
 
@@ -142,6 +191,8 @@ def _kind(page: str, name: str, value: ast.expr | None) -> str:
         return "registered"
     if _reads_claim(value):
         return "claim"
+    if _reads_input(value):
+        return "input"
     if _is_figure(value):
         return "figure"
     return "unchecked"
@@ -152,7 +203,7 @@ def test_the_scan_finds_the_glue_calls():
     calls = glue_calls()
     assert len(calls) > 300
     kinds = {_kind(p, n, v) for p, n, _, v in calls}
-    assert {"registered", "claim", "figure", "unchecked"} <= kinds
+    assert {"registered", "claim", "input", "figure", "unchecked"} <= kinds
 
 
 def test_every_glued_number_is_a_claim_or_registered():
@@ -218,6 +269,12 @@ def test_pages_glue_through_navcore_book():
         ('glue("x-4", float(2 * np.pi))', "unchecked"),
         ('glue("x-6", sum(ledger.evaluate_claim(i).status == "reproduced" for i in ids))', "unchecked"),
         ('glue("x-5", fig, display=False)', "figure"),
+        ('glue("x-7", float(spj.IN.cruise_alt_m / 1000.0))', "input"),
+        ('glue("x-8", -spj.IN.jammer_gain_db)', "input"),
+        ('glue("x-9", float(1 / (6 * pm.IN.psk_chips)))', "unchecked"),  # computed from an input
+        ('glue("x-10", float(spj.IN.cruise_alt_m / h))', "unchecked"),  # divided by a variable
+        ('glue("x-11", float(spj.IN.not_an_input))', "unchecked"),  # no such declaration
+        ('glue("x-12", float(obj.cruise_alt_m))', "unchecked"),  # not read through IN
         ('glue("kzl00-schuler-min", 84.45)', "registered"),
         ('glue(f"atc10-erp-K{k}-{p_dl}", 1.0)', "registered"),
         ('glue(f"atc10-erp-half-K{k}-{p_dl}", 1.0)', "unchecked"),
@@ -225,8 +282,9 @@ def test_pages_glue_through_navcore_book():
 )
 def test_classification(source, kind):
     """The rules on hand-written calls: a claim read by id or evaluation, a figure, a registered
-    name or pattern (and a pattern that merely shares a prefix is not registered), and plain
-    arithmetic, which is unchecked."""
+    name or pattern (and a pattern that merely shares a prefix is not registered), a declared
+    input read through IN (converted by a number at most), and plain arithmetic, which is
+    unchecked."""
     call = ast.parse(source).body[0].value
     assert isinstance(call, ast.Call)
     name = _name_pattern(call.args[0])

@@ -412,21 +412,50 @@ def test_input_records_are_the_declarations():
 
 def test_a_band_run_outside_the_models_domain_is_left_out_and_said():
     """A run the model does not cover (ModelDomainError) gives no band value and does not fail
-    the claim; the detail names the case and the count, and the ledger page's band text shows
-    it (core._band_runs, render._band_text). Oracle: the band of 10 + x0 by hand over the runs
-    left, the one corner x0 = x1 = 1 raising."""
+    the claim; the evaluation's ``left_out`` names the case in the reader's words and the
+    count, and the note, the ledger page's band text, the interactive table and the stored
+    evaluation carry it (core._band_runs, render._band_text, registry's cache fields). Oracle:
+    the band of 10 + x0 by hand over the runs left, the one corner x0 = x1 = 1 raising."""
 
     def compute():
         x0, x1 = IN.x0, IN.x1
         if x0 == 1.0 and x1 == 1.0:
-            raise ModelDomainError("no fixed channels for this flight")
+            raise ModelDomainError(
+                "x0=1.0 with x1=1.0: no fixed channels", case="no fixed channels for this flight"
+            )
         return 10.0 + x0
 
     ev = evaluate(make(compute=compute, expected_status="consistent"))
     assert ev.status == "consistent" and ev.passes
     assert ev.band == pytest.approx((10.0, 11.0))  # x0 = 1 still reached at x1 = 0
-    assert left_out_of_band(ev.detail) == "no fixed channels for this flight (1 run)"
-    assert "left out, outside the model's domain" in render._band_text(ev)
+    assert ev.left_out == ({"case": "no fixed channels for this flight", "runs": 1},)
+    assert left_out_of_band(ev) == "no fixed channels for this flight (1 run)"
+    assert "x0=1.0" not in ev.detail + ev.note() + render._band_text(ev)  # the caller's words stay out
+    assert "left out, outside the model's domain: no fixed channels for this flight" in render._band_text(ev)
+    assert ev.note().endswith(
+        "The band leaves out, as outside the model's domain, 1 run where no fixed channels for this flight."
+    )
+    page = render.InteractiveLedger([ev])._repr_html_()
+    assert "1 run left out, outside the model&#x27;s domain" in page
+    # the stored record round-trips the field (the cache and the parallel workers use these fields)
+    from navcore.ledger import registry
+
+    stored = {k: registry._from_json(registry._to_json(getattr(ev, k))) for k in registry._RECORD_FIELDS}
+    assert stored["left_out"] == ({"case": "no fixed channels for this flight", "runs": 1},)
+
+
+def test_a_band_run_outside_the_model_with_no_reader_words_says_its_message():
+    """A ModelDomainError without ``case`` is left out under its message (its default case)."""
+
+    def compute():
+        if IN.x0 == 1.0:
+            raise ModelDomainError("outside")
+        return 10.0 + IN.x1
+
+    ev = evaluate(make(compute=compute, expected_status="consistent"))
+    assert (
+        ev.left_out == ({"case": "outside", "runs": ev.left_out[0]["runs"]},) and ev.left_out[0]["runs"] >= 2
+    )
 
 
 def test_a_plain_value_error_in_a_band_run_still_fails_the_claim():

@@ -21,7 +21,7 @@ It also finds developer wording in anything a reader sees or downloads (see
 every page but the API reference and in the downloadable notebooks' outputs.
 ``numbers``: no number as a program prints it (``1.00e-04``, ``1.6344416666666666``,
 ``-0.000``, ``60.000000``, a printed dictionary; see ``tools/check_numbers.py``) in the text a
-reader sees. Not yet part of ``html``: it joins it once a whole-book build counts no hit.
+reader sees. Part of ``html`` too.
 ``latex``: the LaTeX log reports no overfull box wider than ``--max-overfull`` points, and
 no code listing shows a build helper.
 ``same``: every file of the two trees is byte-identical, except that PDFs are compared
@@ -212,7 +212,7 @@ def check_html(root: Path) -> list[str]:
                 f"({unrun} of {len(code)} code cells without execution count, "
                 f"{sum(bool(c.get('outputs')) for c in code)} with outputs)"
             )
-    return problems + check_prose(root) + check_wording(root)
+    return problems + check_prose(root) + check_wording(root) + check_number_format(root)
 
 
 def check_number_format(root: Path) -> list[str]:

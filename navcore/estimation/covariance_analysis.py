@@ -1405,7 +1405,11 @@ def best_geometry_channels(
     always = np.flatnonzero(np.all(geo.elevation >= mask_deg * np.pi / 180, axis=0))
     if always.size < n:
         raise ModelDomainError(
-            f"only {always.size} satellites stay above mask_deg={mask_deg} for the whole trajectory"
+            f"only {always.size} satellites stay above mask_deg={mask_deg} for the whole trajectory",
+            case=(
+                f"only {always.size} satellites stay above the {mask_deg:g} deg elevation mask "
+                "for the whole flight"
+            ),
         )
     ks = np.linspace(0, len(trajectory) - 1, 12).astype(int)
     best, best_val = None, np.inf

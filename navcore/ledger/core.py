@@ -64,7 +64,8 @@ one-at-a-time run (the extremes of a response monotone in each input, which the 
 miss). A run whose inputs are each in range but together describe a case the model does not
 cover (it raises ``ModelDomainError``, for example no four satellites stay above the mask
 along the whole flight for fixed channels) gives no value: it is left out of the band, and
-the claim's detail says which case was left out and why.
+the evaluation's ``left_out`` records which case was left out and in how many runs; the note
+says it.
 
 A band too wide to decide
 -------------------------
@@ -146,7 +147,6 @@ __all__ = [
     "ERRATUM_KINDS",
     "EXACT",
     "KINDS",
-    "LEFT_OUT_OF_BAND",
     "MAX_CORNER_INPUTS",
     "MAX_READING_COMBINATIONS",
     "PAPERS",
@@ -1227,6 +1227,10 @@ class Evaluation:
     band_too_wide : bool
         Whether the verdict is ``not-reproducible`` because every band that agrees is too
         wide to decide (:func:`band_too_wide`; each reading's own flag is in ``readings``).
+    left_out : tuple of dict
+        The band runs left out as outside the model's domain (module docstring, "Band runs"),
+        one per case in the order met: ``case`` (the reader's words of the
+        :class:`~navcore._validate.ModelDomainError`) and ``runs`` (how many runs met it).
 
     Examples
     --------
@@ -1251,6 +1255,7 @@ class Evaluation:
     sensitivity: tuple[tuple[str, tuple[tuple[Any, Any], ...]], ...] = ()
     readings: tuple[dict[str, Any], ...] = ()
     band_too_wide: bool = False
+    left_out: tuple[dict[str, Any], ...] = ()
 
     def __post_init__(self) -> None:
         # comparisons on numpy scalars give numpy booleans: store a plain bool
@@ -1357,6 +1362,12 @@ class Evaluation:
                     "The reading that agrees does so over only part of a band whose ends are more than "
                     f"a factor {BAND_FACTOR:g} apart: the assumptions are too loose to decide."
                 )
+        if self.left_out:
+            extra.append(
+                "The band leaves out, as outside the model's domain, "
+                + "; ".join(f"{_n_runs(c['runs'])} where {c['case']}" for c in self.left_out)
+                + "."
+            )
         if text and extra and not text.endswith((".", "!", "?", ")")):
             text += "."
         return " ".join([text, *extra]).strip()
@@ -1413,12 +1424,14 @@ def _plain(value: Any) -> str:
     --------
     >>> _plain(1023000.0), _plain(0.00094007), _plain(0.0226556), _plain(2.5), _plain(True)
     ('$1.023 \\times 10^{6}$', '$9.4007 \\times 10^{-4}$', '0.0226556', '2.5', 'true')
+    >>> _plain(0.00353918)
+    '$3.53918 \\times 10^{-3}$'
     """
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, float):
         text = f"{value:.6g}"
-        if value != 0 and abs(value) < 1e-3 and "e" not in text:
+        if value != 0 and abs(value) < 1e-2 and "e" not in text:  # else eight decimals or more
             mantissa, exponent = f"{value:.5e}".split("e")
             text = mantissa.rstrip("0").rstrip(".") + "e" + exponent
         return _number_math(text)
@@ -1514,32 +1527,45 @@ def _run(claim: Claim, overrides: dict[str, Any] | None = None) -> tuple[Any, di
     return value, reads
 
 
-#: What a claim's detail says, before the cases, when band runs were outside the model's domain
-#: (module docstring, "Band runs"); :func:`left_out_of_band` reads it back.
-LEFT_OUT_OF_BAND = "; left out of the band, outside the model's domain: "
+def _n_runs(n: int) -> str:
+    """``"1 run"``, ``"3 runs"``: a count of band runs in words.
+
+    Examples
+    --------
+    >>> _n_runs(1), _n_runs(3)
+    ('1 run', '3 runs')
+    """
+    return f"{n} run{'' if n == 1 else 's'}"
 
 
-def left_out_of_band(detail: str) -> str:
+def left_out_of_band(ev: Evaluation) -> str:
     """The band runs an evaluation left out as outside the model's domain, in words ("" if none).
 
     Parameters
     ----------
-    detail : str
-        An evaluation's ``detail``.
+    ev : Evaluation
+        An evaluation (its ``left_out`` field).
 
     Returns
     -------
     str
-        The cases left out and how many runs each, as the detail says them.
+        Each case left out and how many runs met it, ``"; "``-separated.
 
     Examples
     --------
-    >>> left_out_of_band("derived verdict consistent" + LEFT_OUT_OF_BAND + "no fix (1 run)")
-    'no fix (1 run)'
-    >>> left_out_of_band("derived verdict consistent")
+    >>> from navcore.ledger import Claim, evaluate, printed
+    >>> value, tol = printed("17.67")
+    >>> c = Claim(id="SP-doc-omega", paper="SP", locator="Fig. 2.1", quantity="natural frequency",
+    ...           published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
+    ...           expected_status="reproduced", note="a synthetic claim")
+    >>> ev = evaluate(c)
+    >>> left_out_of_band(ev)
     ''
+    >>> import dataclasses
+    >>> left_out_of_band(dataclasses.replace(ev, left_out=({"case": "no fix", "runs": 2},)))
+    'no fix (2 runs)'
     """
-    return detail.partition(LEFT_OUT_OF_BAND)[2]
+    return "; ".join(f"{c['case']} ({_n_runs(c['runs'])})" for c in ev.left_out)
 
 
 #: Up to this many assumed inputs, the band includes every corner of their box (2**6 = 64 runs);
@@ -1561,7 +1587,8 @@ def _band_runs(
 
     ``base`` holds the overrides of a reading other than the one used (every run keeps them).
     A run the model does not cover (it raises :class:`~navcore._validate.ModelDomainError`)
-    gives no value: its message is appended to ``excluded`` (module docstring, "Band runs").
+    gives no value: its case in a reader's words is appended to ``excluded`` (module docstring,
+    "Band runs").
     """
     base = base or {}
     values: list[Any] = []
@@ -1572,7 +1599,7 @@ def _band_runs(
             return True, _run(claim, overrides)[0]
         except ModelDomainError as exc:
             if excluded is not None:
-                excluded.append(str(exc))
+                excluded.append(exc.case)
             return False, None
 
     for inp in assumed:
@@ -1933,12 +1960,7 @@ def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
                     }
                 )
 
-    if excluded:
-        counts = {m: excluded.count(m) for m in dict.fromkeys(excluded)}
-        left_out = "; ".join(f"{m} ({n} run{'s' if n > 1 else ''})" for m, n in counts.items())
-        suffix = f"{LEFT_OUT_OF_BAND}{left_out}"
-    else:
-        suffix = ""
+    left_out = tuple({"case": m, "runs": excluded.count(m)} for m in dict.fromkeys(excluded))
     common: dict[str, Any] = dict(
         status=status,
         tolerance=tol,
@@ -1947,17 +1969,18 @@ def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
         sensitivity=tuple(sensitivity),
         readings=tuple(readings),
         band_too_wide=status == "not-reproducible",  # computed: only a band too wide gives it
+        left_out=left_out,
     )
     if status != claim.expected_status:
         return Evaluation(
             claim,
             value,
             False,
-            f"derived verdict {status!r} differs from the expected {claim.expected_status!r}" + suffix,
+            f"derived verdict {status!r} differs from the expected {claim.expected_status!r}",
             **common,
         )
     if status != "discrepant":
-        return Evaluation(claim, value, True, f"derived verdict {status}" + suffix, **common)
+        return Evaluation(claim, value, True, f"derived verdict {status}", **common)
     # discrepant: an erratum, and the book's value must agree with its independent oracle
     if not claim.erratum or claim.oracle is None or claim.oracle_tolerance is None:
         return Evaluation(

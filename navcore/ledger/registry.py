@@ -525,6 +525,7 @@ _RECORD_FIELDS = (
     "sensitivity",
     "readings",
     "band_too_wide",
+    "left_out",
 )
 
 

@@ -588,13 +588,18 @@ def math_spans(text: str) -> list[tuple[bool, str]]:
     return out
 
 
-def html_text(text: str) -> str:
+def html_text(text: str, *, wide: int = 0) -> str:
     r"""Escaped HTML with ``$...$`` as MathJax inline math, marked up as Sphinx does.
 
     Parameters
     ----------
     text : str
         A note, quantity or erratum text (:func:`math_spans` says what is math).
+    wide : int, optional
+        A math piece longer than this many characters is wrapped in a
+        ``<span class="ledger-math-wide">``, which the book's style sheet lets scroll inside
+        its own box in a table cell (0: never), so that one long formula does not widen its
+        column past the page.
 
     Returns
     -------
@@ -606,13 +611,17 @@ def html_text(text: str) -> str:
     --------
     >>> print(html_text("gain $K_1 < 2$ & more"))
     gain <span class="math notranslate nohighlight">\(K_1 &lt; 2\)</span> &amp; more
+    >>> print(html_text("$x = a + b$", wide=5))
+    <span class="ledger-math-wide"><span class="math notranslate nohighlight">\(x = a + b\)</span></span>
     """
-    return "".join(
-        f'<span class="math notranslate nohighlight">\\({html.escape(piece)}\\)</span>'
-        if is_math
-        else html.escape(piece)
-        for is_math, piece in math_spans(text)
-    )
+    out = []
+    for is_math, piece in math_spans(text):
+        if not is_math:
+            out.append(html.escape(piece))
+            continue
+        span = f'<span class="math notranslate nohighlight">\\({html.escape(piece)}\\)</span>'
+        out.append(f'<span class="ledger-math-wide">{span}</span>' if wide and len(piece) > wide else span)
+    return "".join(out)
 
 
 def tex_text(text: str) -> str:
@@ -836,7 +845,7 @@ def _band_text(e: Evaluation) -> str:
     if e.band is None or e.claim.is_statement:
         return ""
     lo, hi = e.band
-    left_out = left_out_of_band(e.detail)
+    left_out = left_out_of_band(e)
     return (
         f"{format_value(lo)} to {format_value(hi)}"
         + (f" {e.claim.unit}" if e.claim.unit not in ("", "statement") else "")
@@ -1022,7 +1031,7 @@ def _details_html(details: dict[str, str]) -> str:
     for k in _DETAIL_FIELDS:
         if details.get(k):
             label = _DETAIL_LABELS[k]
-            text = html_text(details[k])
+            text = html_text(details[k], wide=24)
             parts.append(f"<p><i>{label}:</i> {text}</p>" if label else f"<p>{text}</p>")
     return "".join(parts)
 
@@ -1151,7 +1160,7 @@ class LedgerTable:
             out.append(f'<tr class="ledger-group"><th colspan="5" scope="rowgroup">{header}</th></tr>')
             for index, e in enumerate(g.evals):
                 c = e.claim
-                what = html_text(c.quantity)
+                what = html_text(c.quantity, wide=24)
                 where = _locator_detail(c.locator, g.heading)
                 if where:
                     what += f' <span class="ledger-locator">({html.escape(where)})</span>'
@@ -1743,14 +1752,34 @@ _LEDGER_JS = r"""
 """
 
 
-def _band(record: dict[str, Any], unit: str) -> str:
+def _band_html(record: dict[str, Any], unit: str) -> str:
+    """The interactive table's band cell: each end kept whole with its unit; a statement's band
+    in words (whether it holds across the assumed ranges).
+
+    Examples
+    --------
+    >>> _band_html({"band": [0.5, 2.0]}, "m")
+    '0.5 –&nbsp;2&nbsp;m'
+    >>> _band_html({"band": [False, True]}, "statement")
+    'holds for some assumed inputs, not all'
+    """
     band = record.get("band")
     if not band:
         return ""
     low, high = band
-    return f"{format_value(low)} – {format_value(high)}" + (
-        f" {unit}" if unit not in ("", "statement") else ""
-    )
+    if isinstance(low, bool) or isinstance(high, bool):
+        if low == high:
+            return "holds across the assumed ranges" if low else "fails across the assumed ranges"
+        return "holds for some assumed inputs, not all"
+    ends = format_value(low), format_value(high) + (f" {unit}" if unit not in ("", "statement") else "")
+    return f"{_nowrap(ends[0])} –&nbsp;{_nowrap(ends[1])}"
+
+
+def _left_out_brief(e: Evaluation) -> str:
+    """A band cell's note of the runs left out: "1 run left out, outside the model's domain"
+    (the claim's note says which case)."""
+    n = sum(c["runs"] for c in e.left_out)
+    return f"{n} run{'' if n == 1 else 's'} left out, outside the model's domain"
 
 
 class InteractiveLedger:
@@ -1864,7 +1893,12 @@ class InteractiveLedger:
                 "quantity": f"{html_text(r['quantity'])}<details><summary>note</summary>{note}</details>",
                 "published": _printed_html(_printed_text(e), fold=40),
                 "reproduced": _nowrap(_reproduced_text(e)),
-                "band": html.escape(_band(rec, r["unit"])),
+                "band": _band_html(rec, r["unit"])
+                + (
+                    f'<br><span class="ledger-reading">{html.escape(_left_out_brief(e))}</span>'
+                    if e.left_out and rec.get("band")
+                    else ""
+                ),
                 "status": status,
             }
             tds = "".join(

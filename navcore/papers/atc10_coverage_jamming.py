@@ -46,9 +46,9 @@ IN.convention(
     "threshold_upper_fraction",
     0.9,
     readings={
-        "from 90 % of its ceiling down to 1e-6 of it": 0.9,
-        "from half its ceiling down to 1e-6 of it": 0.5,
-        "from a tenth of its ceiling down to 1e-6 of it": 0.1,
+        "from 90 % of its ceiling down to a millionth of it": 0.9,
+        "from half its ceiling down to a millionth of it": 0.5,
+        "from a tenth of its ceiling down to a millionth of it": 0.1,
     },
     reason="'a strong threshold behavior' (Sec. 2.1) and 'a strong thresholding property' (Sec. 2.8) name "
     "no level: the fall of a bound is measured from a fraction of its J -> infinity ceiling down to "

@@ -263,8 +263,8 @@ IN.convention(
     unit="m^3/s^2",
     quantity="Earth's gravitational constant GM",
     readings={
-        "the WGS-84 value, 3.986004418e14 m^3/s^2": 3.986004418e14,
-        "the WGS-72 value of the paper's time, 3.986008e14 m^3/s^2": 3.986008e14,
+        "the WGS-84 value": 3.986004418e14,
+        "the WGS-72 value of the paper's time": 3.986008e14,
     },
     reason="a synchronous orbit's radius follows from GM and the period (Kepler's third law); the "
     "paper gives neither, so the two geodetic standards of GM are both admissible",

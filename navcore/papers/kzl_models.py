@@ -93,8 +93,8 @@ IN.convention(
     unit="m^3/s^2",
     quantity="Earth's gravitational constant GM",
     readings={
-        "the WGS-84 value, 3.986004418e14 m^3/s^2": 3.986004418e14,
-        "the WGS-72 value, 3.986008e14 m^3/s^2": 3.986008e14,
+        "the WGS-84 value": 3.986004418e14,
+        "the WGS-72 value": 3.986008e14,
     },
     reason="the circular-orbit speed of TerraSAR-X follows from GM (the paper gives neither); the two "
     "geodetic standards of GM are both admissible",
