@@ -339,6 +339,18 @@ def test_sp_exact_impact_covariance_matches_monte_carlo() -> None:
                 assert spj.model_cep(arch, p) == pytest.approx(mc, rel=0.04), (p, arch)
 
 
+def test_sp_min_aj_improvement_is_the_minimum_of_the_curves() -> None:
+    """Oracle: brute force, the A/J improvement sampled at 20001 CEPs across Fig. 3.8's ranges; the
+    minimum taken at the curves' knots is never above any sample and within 1e-3 dB of the least."""
+    from navcore.papers import sp_antijam as spj
+
+    for kind, lo, hi in (("wideband", 6.0, 120.0), ("narrowband", 4.0, 80.0)):
+        sampled = spj.aj_improvement_db(kind, np.geomspace(lo, hi, 20001))
+        exact = spj.min_aj_improvement_db(kind, lo, hi)
+        assert exact <= float(np.min(sampled)) + 1e-12
+        assert exact == pytest.approx(float(np.min(sampled)), abs=1e-3)
+
+
 def test_defaults_return_types_and_boundaries() -> None:
     """Contracts and oracles by hand: the documented defaults (half-chip spacing; Q = 2; a
     1-s average of 20-ms coherent sums) give the same values as passing them; scalars give

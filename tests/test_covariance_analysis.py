@@ -487,3 +487,72 @@ def test_batched_kernels_equal_the_checked_functions_per_condition(vertical_chan
         np.testing.assert_allclose(Phi[m], taylor_transition(F1, dt), rtol=1e-13, atol=1e-16)
         Q1 = discrete_noise(F1, S1, dt)
         np.testing.assert_allclose(Q[m], Q1, rtol=1e-12, atol=1e-14 * np.abs(Q1).max())
+
+
+def test_transition_series_order_is_converged_on_a_turning_flight(monkeypatch):
+    """Oracle: the same run with the transition series taken to order 12 instead of 4 (the
+    truncation error of order 4 is below 1e-9 of the exponential at the 1-s step of a 4 deg/s
+    break turn, the fastest rotation of the SP scenarios, and at the 10-s steps of a vehicle at
+    rest): the series' order is a resolution, not an input, and moves no variance by more than
+    1e-7 relative over ten minutes of turning flight with sensor scale factors."""
+    import navcore.estimation.covariance_analysis as ca
+    from navcore.inertial.trajectories import Segment, fly
+
+    lay = ins_error_layout("position", "velocity", "misalignment", "gyro bias", "gyro scale factor")
+    src = ErrorSources(
+        imu=ImuSpec(
+            "t", gyro_bias=0.01 * DEG_PER_H, gyro_scale_factor=1e-4, gyro_random_walk=0.003 * DEG_PER_H
+        )
+    )
+    P0 = initial_covariance(
+        lay, src, position_sigma=(10,) * 3, velocity_sigma=(0.1,) * 3, attitude_sigma=(1e-3,) * 3
+    )
+    turn = 4.0 * DEG
+    segs = [Segment(60.0), Segment(90.0, turn_rate=turn), Segment(60.0), Segment(90.0, turn_rate=-turn)]
+    tr = fly(segs * 2, dt=1.0, lat0=35 * DEG, speed0=200.0, h0=7000.0)
+    ca._TRANSITIONS.clear()  # the engine's store of transitions: each run computes its own
+    base = run_covariance_analysis(tr, lay, lay, src, P0)
+    series = ca._taylor_stack
+    monkeypatch.setattr(ca, "_taylor_stack", lambda F, dt, order=4: series(F, dt, order=12))
+    ca._TRANSITIONS.clear()
+    fine = run_covariance_analysis(tr, lay, lay, src, P0)
+    ca._TRANSITIONS.clear()
+    np.testing.assert_allclose(fine.true_var, base.true_var, rtol=1e-7, atol=0.0)
+
+
+def test_shared_transitions_give_the_uncached_run_and_a_changed_input_misses():
+    """Oracle: the same analysis with the engine's store of transitions emptied first (every
+    transition and noise computed afresh). A second run served from the store is bit for bit
+    the uncached one; a run whose error sources differ in one number (and one whose trajectory
+    differs) computes its own matrices and equals its own uncached run, not the first one."""
+    import navcore.estimation.covariance_analysis as ca
+
+    truth = ins_error_layout("position", "velocity", "misalignment", "gyro bias", "gravity")
+    filt = ins_error_layout("position", "velocity", "misalignment", "gyro bias")
+    spec = ImuSpec("t", gyro_bias=0.05 * DEG_PER_H, gyro_random_walk=0.1 * DEG_PER_H)
+    src = ErrorSources(imu=spec, gravity=GaussMarkov(35 * MICRO_G, 37e3))
+    src2 = ErrorSources(imu=spec, gravity=GaussMarkov(35.01 * MICRO_G, 37e3))
+    P0 = initial_covariance(truth, src, position_sigma=(30, 30, 10), velocity_sigma=(0.3,) * 3)
+    tr = straight_and_level(200.0, speed=200.0, dt=1.0, lat0=45 * DEG)
+    tr2 = straight_and_level(200.0, speed=201.0, dt=1.0, lat0=45 * DEG)
+    sched = baro_schedule(truth, noise_m=3.0, every=10)
+
+    def run(trajectory, sources, *, cold):
+        if cold:
+            ca._TRANSITIONS.clear()
+        return run_covariance_analysis(trajectory, truth, filt, sources, P0, sched)
+
+    def same(a, b):
+        return all(
+            np.array_equal(getattr(a, f), getattr(b, f)) for f in ("true_var", "filter_var", "final_true")
+        )
+
+    cold = run(tr, src, cold=True)
+    assert len(ca._TRANSITIONS) > 0
+    assert same(run(tr, src, cold=False), cold)
+    for trajectory, sources in ((tr, src2), (tr2, src)):
+        warm = run(trajectory, sources, cold=False)
+        assert same(warm, run(trajectory, sources, cold=True))
+        assert not same(warm, cold)
+    assert ca._digest(35 * MICRO_G) != ca._digest(np.nextafter(35 * MICRO_G, 1.0))
+    assert ca._digest(object()) is None  # a value it cannot spell exactly is never cached

@@ -78,6 +78,25 @@ def test_grade_label_erratum_monte_carlo():
     assert spm.grade_cep_monte_carlo_nmi(1.0, runs=5000) == pytest.approx(spm.grade_cep_nmi()[1.0], rel=0.04)
 
 
+def test_stationary_runs_are_converged_in_their_step():
+    """Oracle: a ten times finer step (1 s instead of at most 10 s) gives the same 1-h grade CEPs
+    and the same noise-only error, to 1e-8 relative: the step is a resolution, not an input (the
+    discretisation of the constant dynamics at rest is exact to the series' rounding), and every
+    run ends at its nominal time whatever the step."""
+    from navcore.papers import sp_missions as spm
+
+    coarse, fine = spm.grade_cep_nmi(), spm.grade_cep_nmi(max_step_s=1.0)
+    for g, v in coarse.items():
+        assert fine[g] == pytest.approx(v, rel=1e-8)
+    assert spm.noise_only_error_m(10.0, 19.0, max_step_s=1.0) == pytest.approx(
+        spm.noise_only_error_m(10.0, 19.0), rel=1e-8
+    )
+    # a step that does not divide the run is shortened, never the run lengthened
+    assert spm.noise_only_error_m(10.0, 19.0, max_step_s=7.0) == pytest.approx(
+        spm.noise_only_error_m(10.0, 19.0), rel=1e-8
+    )
+
+
 def test_scale_initial_errors_scales_the_blocks_and_their_correlations():
     """Oracle: the covariance of a scaled random vector, D P D with D diagonal (2 on the
     position and velocity states, 0.5 on the psi angle), built by hand on a random positive

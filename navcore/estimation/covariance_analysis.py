@@ -44,7 +44,10 @@ References
 
 from __future__ import annotations
 
+import dataclasses
+import hashlib
 import itertools
+from collections import OrderedDict
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -344,28 +347,43 @@ def run_covariance_analysis(
     lin_arr = np.asarray(lin, dtype=np.intp)
     added = None if filter_added_psd is None else np.diag(np.asarray(filter_added_psd, dtype=float)) * dt
     ix_f = np.ix_(idx, idx)
+    # the filter's rows of the truth: a slice when contiguous (the usual layouts), else indices
+    contiguous = idx.size > 0 and bool(np.array_equal(idx, np.arange(idx[0], idx[0] + idx.size)))
+    rows_f: Any = slice(int(idx[0]), int(idx[0]) + idx.size) if contiguous else idx
+    block_f: Any = (rows_f, rows_f) if contiguous else ix_f
 
     def transitions(lo: int) -> tuple[Array, Array, Array, Array]:
-        """Transitions and discrete noises (truth, filter) of linearisation points ``lo:lo+chunk``."""
+        """Transitions and discrete noises (truth, filter) of linearisation points ``lo:lo+chunk``,
+        shared with every other run whose linearisation points read the same values."""
         js = lin_arr[lo : lo + _LIN_CHUNK]
+        args = {
+            "f_ned": trajectory.f_ned[js],
+            "C_bn": trajectory.C_bn[js],
+            "omega_ib_b": omega_ib_b[js],
+            "v_ned": trajectory.vel_ned[js],
+            "lat": np.asarray(trajectory.lat, dtype=float)[js],
+            "h": np.broadcast_to(np.asarray(trajectory.h, dtype=float), (N,))[js],
+        }
+        speed_js = speed[js]
+        # every value the computation below reads, so two runs share a result only when it
+        # would be the same
+        key = _digest((args, speed_js, truth_layout, src_list, vertical_channel, dt, idx, added))
+        if key is not None and key in _TRANSITIONS:
+            _TRANSITIONS.move_to_end(key)
+            return _TRANSITIONS[key]
         F = _error_dynamics_stack(
-            truth_layout,
-            f_ned=trajectory.f_ned[js],
-            C_bn=trajectory.C_bn[js],
-            omega_ib_b=omega_ib_b[js],
-            v_ned=trajectory.vel_ned[js],
-            lat=np.asarray(trajectory.lat, dtype=float)[js],
-            h=np.broadcast_to(np.asarray(trajectory.h, dtype=float), (N,))[js],
-            sources=src_list[0],
-            vertical_channel=vertical_channel,
+            truth_layout, **args, sources=src_list[0], vertical_channel=vertical_channel
         )
-        q = np.stack([_process_noise_diag_stack(truth_layout, s_, speed[js]) for s_ in src_list], axis=1)
+        q = np.stack([_process_noise_diag_stack(truth_layout, s_, speed_js) for s_ in src_list], axis=1)
         Phi = _taylor_stack(F, dt)
         Q = _discrete_noise_diag(F, q, dt)  # (M, B, n_t, n_t)
         Qf = Q[:, :, idx][:, :, :, idx]
         if added is not None:
             Qf = Qf + added
-        return Phi, Q, Phi[:, idx][:, :, idx], Qf
+        out = (Phi, Q, Phi[:, idx][:, :, idx], Qf)
+        if key is not None:
+            _remember_transitions(key, out)
+        return out
 
     L = stride
     lo, hi = 0, 0
@@ -383,7 +401,8 @@ def run_covariance_analysis(
             if li >= hi:
                 lo, hi = li, li + _LIN_CHUNK
                 PhiT_all, QT_all, PhiF_all, QF_all = transitions(lo)
-            Phi_t, Q_t, Phi_f, Q_f = PhiT_all[li - lo], QT_all[li - lo], PhiF_all[li - lo], QF_all[li - lo]
+            i = li - lo
+            Phi_t, Q_t, Phi_f, Q_f = PhiT_all[i], QT_all[i], PhiF_all[i], QF_all[i]
             stride_cache = None
         if kind == 1:
             Pt = Phi_t @ Pt @ Phi_t.T + Q_t
@@ -433,26 +452,30 @@ def run_covariance_analysis(
                         Rt[r0 : r0 + Rb.shape[0], r0 : r0 + Rb.shape[0]] = Rb
                         r0 += Rb.shape[0]
                 Hf = Ht[:, idx]
-                Rf = np.broadcast_to(Rt, (B, m_tot, m_tot))
                 if inflate_filter_noise and unmodelled.size:
                     Hu = Ht[:, unmodelled]
                     Rf = Rt + Hu @ P0_uu @ Hu.T
+                else:
+                    Rf = Rt  # broadcast over the members in the sum below
                 HP = Hf @ Pf  # (B, m, n_f)
                 Sf = HP @ Hf.T + Rf
-                K = np.swapaxes(np.linalg.solve(Sf, HP), 1, 2)  # (B, n_f, m)
+                K = np.linalg.solve(Sf, HP).transpose(0, 2, 1)  # (B, n_f, m)
                 # optimal gain for the filter's own model: P+ = P - K S K^T (rank-m downdate)
                 Pf = Pf - K @ HP
                 # any gain for the truth: P+ = P - EK H P - P H' EK' + EK (H P H' + R) EK'
                 # (the Joseph form expanded, O(n^2 m) instead of O(n^3))
-                EK = np.zeros((B, n_t, m_tot))
-                EK[:, idx] = K
+                # (E K is K on the filter's rows of the truth and zero elsewhere: only those
+                # rows and columns change, in the same order of operations)
                 HPt = Ht @ Pt  # (B, m, n_t)
-                EKHP = EK @ HPt
+                KHP = K @ HPt  # (B, n_f, n_t)
                 St = HPt @ Ht.T + Rt
-                Pt = Pt - EKHP - np.swapaxes(EKHP, 1, 2) + EK @ St @ np.swapaxes(EK, 1, 2)
+                Pt = Pt.copy()
+                Pt[:, rows_f, :] -= KHP
+                Pt[:, :, rows_f] -= KHP.transpose(0, 2, 1)
+                Pt[(slice(None), *block_f)] += K @ St @ K.transpose(0, 2, 1)
                 counts[k] = m_tot
-        Pt = 0.5 * (Pt + np.swapaxes(Pt, 1, 2))
-        Pf = 0.5 * (Pf + np.swapaxes(Pf, 1, 2))
+        Pt = 0.5 * (Pt + Pt.transpose(0, 2, 1))
+        Pf = 0.5 * (Pf + Pf.transpose(0, 2, 1))
         tv[:, k] = np.diagonal(Pt, axis1=1, axis2=2)
         fv[:, k] = np.diagonal(Pf, axis1=1, axis2=2)
         if k in want:
@@ -480,6 +503,67 @@ def run_covariance_analysis(
             )
         )
     return out if batch else out[0]
+
+
+#: Transitions and discrete noises of linearisation points already computed, keyed on a digest
+#: of every value they are computed from (:func:`_digest`); bounded in bytes, least recently
+#: used first out. The band of a ledger claim runs a mission many times with inputs that leave
+#: the flight, and so these matrices, unchanged (noise levels, the satellites tracked).
+_TRANSITIONS: OrderedDict[bytes, tuple[Array, Array, Array, Array]] = OrderedDict()
+_TRANSITIONS_MAX_BYTES = 192 * 2**20
+
+
+def _remember_transitions(key: bytes, value: tuple[Array, Array, Array, Array]) -> None:
+    for a in value:
+        a.flags.writeable = False  # shared between runs: no run may change them in place
+    _TRANSITIONS[key] = value
+    total = sum(a.nbytes for v in _TRANSITIONS.values() for a in v)
+    while total > _TRANSITIONS_MAX_BYTES and len(_TRANSITIONS) > 1:
+        _, old = _TRANSITIONS.popitem(last=False)
+        total -= sum(a.nbytes for a in old)
+
+
+def _digest(obj: Any) -> bytes | None:
+    """A digest of ``obj``'s exact value (arrays by dtype, shape and bytes, floats by their bits,
+    dataclasses field by field), or ``None`` for a value it cannot spell exactly (no caching)."""
+    h = hashlib.blake2b(digest_size=20)
+
+    def feed(o: Any) -> None:
+        if o is None or isinstance(o, bool | int | str):
+            h.update(f"{type(o).__name__}:{o!r};".encode())
+        elif isinstance(o, float):
+            h.update(f"f:{o.hex()};".encode())
+        elif isinstance(o, np.ndarray | np.generic):
+            a = np.ascontiguousarray(o)
+            if a.dtype.hasobject:
+                raise TypeError
+            h.update(f"a:{a.dtype.str}:{a.shape};".encode())
+            h.update(a.tobytes())
+        elif isinstance(o, tuple | list):
+            h.update(f"{type(o).__name__}:{len(o)}(".encode())
+            for x in o:
+                feed(x)
+            h.update(b")")
+        elif isinstance(o, dict):
+            h.update(f"d:{len(o)}(".encode())
+            for k, v in o.items():
+                feed(k)
+                feed(v)
+            h.update(b")")
+        elif dataclasses.is_dataclass(o) and not isinstance(o, type):
+            h.update(f"{type(o).__module__}.{type(o).__qualname__}(".encode())
+            for f in dataclasses.fields(o):
+                h.update(f.name.encode())
+                feed(getattr(o, f.name))
+            h.update(b")")
+        else:
+            raise TypeError
+
+    try:
+        feed(obj)
+    except TypeError:
+        return None
+    return h.digest()
 
 
 _GAUSS3 = np.polynomial.legendre.leggauss(3)
@@ -574,10 +658,13 @@ class _Propagator:
         L, D = powers.shape[0], self.D
         out = np.broadcast_to(np.diagonal(P, axis1=1, axis2=2)[:, None, :], (B, L, n)).copy()
         if D.size:
-            rows = powers[:, D, :].reshape(L * D.size, n)  # the dynamic rows of every power
-            Y = (P.reshape(B * n, n) @ rows.T).reshape(B, n, L * D.size)
-            var = np.einsum("bnk,kn->bk", Y, rows).reshape(B, L, D.size)
-            out[:, :, D] = var + np.swapaxes(np.broadcast_to(noise_diag, (L, B, n)), 0, 1)[:, :, D]
+            rows = powers[:, D, :]  # the dynamic rows of every power, (L, d, n)
+            # one small product per power and member ((d, n) by (n, n)), not one large one: a
+            # large product goes multi-threaded in BLAS, which on a loaded machine waits for
+            # cores far longer than it computes
+            Y = rows[:, None] @ P[None]  # (L, B, d, n)
+            var = np.einsum("lbkn,lkn->blk", Y, rows)
+            out[:, :, D] = var + noise_diag.transpose(1, 0, 2)[:, :, D]
         return out
 
 
@@ -1385,10 +1472,11 @@ def best_geometry_channels(
     Raises
     ------
     ValueError
-        If ``n`` is not positive, or no combination gives a usable geometry.
+        If ``n`` is not positive.
     ModelDomainError
-        If fewer than ``n`` satellites stay above the mask for the whole trajectory (a
-        ``ValueError``: the fixed channels this selection models do not exist for that flight).
+        If fewer than ``n`` satellites stay above the mask for the whole trajectory, or no
+        combination of them gives a usable geometry (a ``ValueError``: the fixed channels this
+        selection models do not exist for that flight).
 
     Examples
     --------
@@ -1424,7 +1512,10 @@ def best_geometry_channels(
         if val < best_val:
             best, best_val = combo, val
     if best is None:
-        raise ValueError("no satellite combination gives a usable geometry")
+        raise ModelDomainError(
+            "no satellite combination gives a usable geometry",
+            case=f"no {n} satellites that stay above the mask give a usable geometry throughout the flight",
+        )
     return np.asarray(best, dtype=np.int64)
 
 

@@ -837,7 +837,10 @@ def _sensor_error_rates(layout: StateLayout, *, lat: float, C_bn: ArrayLike | No
     ``C_bn delta omega`` produced by each sensor state (rows of :func:`error_dynamics`).
     """
     C_bn = np.eye(3) if C_bn is None else C_bn
-    F = error_dynamics(layout, f_ned=(0.0, 0.0, -g), C_bn=C_bn, lat=lat, g=g)
+    # at rest the gyros sense the Earth's rotation (their scale-factor and misalignment errors
+    # act on it) and the accelerometers the reaction to gravity
+    w_ib = np.asarray(C_bn, dtype=float).T @ earth_rate_ned(lat)
+    F = error_dynamics(layout, f_ned=(0.0, 0.0, -g), C_bn=C_bn, omega_ib_b=w_ib, lat=lat, g=g)
     vv, a = layout.slice("velocity"), layout.slice("misalignment")
     sensor = [b.name for b in layout.blocks if b.name.startswith(("gyro", "accel"))]
     idx: NDArray[np.intp] = np.asarray(

@@ -51,7 +51,7 @@ from navcore.ledger.core import (
     prose,
     quote_policies,
 )
-from navcore.ledger.inputs import Input, InputSet, input_cache
+from navcore.ledger.inputs import Input, InputSet, band_ahead, for_each_band_run, input_cache
 from navcore.ledger.registry import (
     cache_dir,
     claim,
@@ -82,6 +82,7 @@ __all__ = [
     "Input",
     "InputSet",
     "Tolerance",
+    "band_ahead",
     "cache_dir",
     "claim",
     "claim_errata",
@@ -94,6 +95,7 @@ __all__ = [
     "evaluate_claim",
     "evaluations",
     "figure_reading",
+    "for_each_band_run",
     "input_cache",
     "monte_carlo",
     "paper_modules",

@@ -65,7 +65,10 @@ miss). A run whose inputs are each in range but together describe a case the mod
 cover (it raises ``ModelDomainError``, for example no four satellites stay above the mask
 along the whole flight for fixed channels) gives no value: it is left out of the band, and
 the evaluation's ``left_out`` records which case was left out and in how many runs; the note
-says it.
+says it. Each batch of runs (the one-at-a-time runs, then the corners) is announced before it
+is made (``band_ahead`` in :mod:`navcore.ledger.inputs`), so that a model whose runs batch well
+can compute the whole batch in one call when the first run asks, and serve the others from its
+:func:`~navcore.ledger.inputs.input_cache`; what a run returns does not depend on it.
 
 A band too wide to decide
 -------------------------
@@ -139,7 +142,15 @@ from dataclasses import dataclass, field
 from typing import Any, Literal
 
 from navcore._validate import ModelDomainError
-from navcore.ledger.inputs import Input, _label_and_unit, declaring, get_input, overriding, recording
+from navcore.ledger.inputs import (
+    Input,
+    _label_and_unit,
+    band_ahead,
+    declaring,
+    get_input,
+    overriding,
+    recording,
+)
 
 __all__ = [
     "BAND_FACTOR",
@@ -1230,7 +1241,7 @@ class Evaluation:
     left_out : tuple of dict
         The band runs left out as outside the model's domain (module docstring, "Band runs"),
         one per case in the order met: ``case`` (the reader's words of the
-        :class:`~navcore._validate.ModelDomainError`) and ``runs`` (how many runs met it).
+        ``ModelDomainError``) and ``runs`` (how many runs met it).
 
     Examples
     --------
@@ -1553,16 +1564,10 @@ def left_out_of_band(ev: Evaluation) -> str:
 
     Examples
     --------
-    >>> from navcore.ledger import Claim, evaluate, printed
-    >>> value, tol = printed("17.67")
-    >>> c = Claim(id="SP-doc-omega", paper="SP", locator="Fig. 2.1", quantity="natural frequency",
-    ...           published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
-    ...           expected_status="reproduced", note="a synthetic claim")
-    >>> ev = evaluate(c)
-    >>> left_out_of_band(ev)
+    >>> from types import SimpleNamespace
+    >>> left_out_of_band(SimpleNamespace(left_out=()))
     ''
-    >>> import dataclasses
-    >>> left_out_of_band(dataclasses.replace(ev, left_out=({"case": "no fix", "runs": 2},)))
+    >>> left_out_of_band(SimpleNamespace(left_out=({"case": "no fix", "runs": 2},)))
     'no fix (2 runs)'
     """
     return "; ".join(f"{c['case']} ({_n_runs(c['runs'])})" for c in ev.left_out)
@@ -1602,14 +1607,16 @@ def _band_runs(
                 excluded.append(exc.case)
             return False, None
 
-    for inp in assumed:
-        row = []
-        for point in inp.band_points:
-            ok, v = run({**base, inp.name: point})
-            if ok:
-                values.append(v)
-                row.append((point, v))
-        sensitivity.append((inp.name, tuple(row)))
+    # each batch of runs is announced first, so that a model can run it in one call (band_ahead)
+    with band_ahead([{**base, inp.name: point} for inp in assumed for point in inp.band_points]):
+        for inp in assumed:
+            row = []
+            for point in inp.band_points:
+                ok, v = run({**base, inp.name: point})
+                if ok:
+                    values.append(v)
+                    row.append((point, v))
+            sensitivity.append((inp.name, tuple(row)))
 
     if 2 <= len(assumed) <= MAX_CORNER_INPUTS:
         corners: Any = itertools.product(*[(inp.low, inp.high) for inp in assumed])
@@ -1620,10 +1627,14 @@ def _band_runs(
         corners += _steepest_corners(assumed, sensitivity)
     else:
         corners = []
-    for corner in corners:
-        ok, v = run({**base, **{inp.name: p for inp, p in zip(assumed, corner, strict=True)}})
-        if ok:
-            values.append(v)
+    corner_runs = [
+        {**base, **{inp.name: p for inp, p in zip(assumed, corner, strict=True)}} for corner in corners
+    ]
+    with band_ahead(corner_runs):
+        for overrides in corner_runs:
+            ok, v = run(overrides)
+            if ok:
+                values.append(v)
     return values, sensitivity
 
 

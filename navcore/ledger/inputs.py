@@ -51,7 +51,7 @@ import functools
 import inspect
 import math
 import sys
-from collections.abc import Callable, Iterator, Mapping, Sequence
+from collections.abc import Callable, Hashable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Literal, TypeVar
 
@@ -78,6 +78,9 @@ NOMINAL_LABEL = "the reading used"
 OTHER_LABEL = "the other reading"
 
 F = TypeVar("F", bound=Callable[..., Any])
+T = TypeVar("T")
+#: the inputs a computation read, each with the value it read
+Reads = tuple[tuple["Input", Any], ...]
 
 
 class InputReadError(RuntimeError):
@@ -257,6 +260,12 @@ _OVERRIDES: contextvars.ContextVar[dict[str, Any]] = contextvars.ContextVar(
     default=_NO_OVERRIDES,
 )
 _DECLARING: contextvars.ContextVar[bool] = contextvars.ContextVar("navcore_input_declaring", default=False)
+# the band runs the ledger is about to make: the overrides outside the band, each run's
+# overrides, and the keys of the models that already took this batch (for_each_band_run)
+_BandAhead = tuple[dict[str, Any], tuple[dict[str, Any], ...], set[Any]]
+_BAND_AHEAD: contextvars.ContextVar[_BandAhead] = contextvars.ContextVar(
+    "navcore_band_ahead", default=(_NO_OVERRIDES, (), set())
+)
 
 
 def _importing_paper_module() -> str | None:
@@ -724,6 +733,10 @@ def _current(inp: Input) -> Any:
     return overrides[inp.name] if inp.name in overrides else inp.value
 
 
+def _same_reads(a: Reads, b: Reads) -> bool:
+    return len(a) == len(b) and all(i is j and _same(x, y) for (i, x), (j, y) in zip(a, b, strict=True))
+
+
 def _hashable(obj: Any) -> Any:
     try:
         hash(obj)
@@ -750,8 +763,10 @@ def input_cache(fn: F) -> F:
     Returns
     -------
     callable
-        A wrapper with the signature of ``fn`` and a ``cache_clear()`` method. Up to 64
-        results (for differing input values) are kept per argument key.
+        A wrapper with the signature of ``fn``, a ``cache_clear()`` method and a
+        ``prime(entries, *args, **kwargs)`` method that stores results a batched band
+        computed (:func:`for_each_band_run`). Up to 256 results (for differing input values)
+        are kept per argument key.
 
     Raises
     ------
@@ -805,12 +820,125 @@ def input_cache(fn: F) -> F:
                 _read(inp)
         variants = store.setdefault(key, [])
         variants.append((reads, result))
-        if len(variants) > 64:  # bounded: perturbation runs create variants
-            del variants[:-64]
+        if len(variants) > 256:  # bounded: perturbation runs and batched bands create variants
+            del variants[:-256]
         return result
 
+    def prime(
+        entries: Sequence[tuple[tuple[tuple[Input, Any], ...], Any]], *args: Any, **kwargs: Any
+    ) -> None:
+        """Store results computed elsewhere (a batched band) for the call ``fn(*args, **kwargs)``.
+
+        ``entries`` holds ``(reads, result)`` pairs, the reads as :func:`for_each_band_run`
+        returns them; they must be every input ``fn`` reads for that call (a later call
+        returns a stored result when those inputs have those values). An entry already stored
+        is kept.
+        """
+        bound = signature.bind(*args, **kwargs)
+        bound.apply_defaults()
+        key = tuple((k, _hashable(v)) for k, v in bound.arguments.items())
+        variants = store.setdefault(key, [])
+        for reads, result in entries:
+            if not any(
+                len(r) == len(reads)
+                and all(a is b and _same(x, y) for (a, x), (b, y) in zip(r, reads, strict=True))
+                for r, _ in variants
+            ):
+                variants.append((tuple(reads), result))
+        if len(variants) > 256:
+            del variants[:-256]
+
     wrapper.cache_clear = store.clear  # type: ignore[attr-defined]
+    wrapper.prime = prime  # type: ignore[attr-defined]
     return wrapper  # type: ignore[return-value]
+
+
+@contextlib.contextmanager
+def band_ahead(runs: Sequence[dict[str, Any]]) -> Iterator[None]:
+    """Announce, inside the block, the band runs about to be made (each run's overrides).
+
+    The ledger wraps each batch of a band's runs (the one-at-a-time runs, then the corners) in
+    this block, so that a model can compute them all in one batched call when the first of
+    them asks for its result (:func:`for_each_band_run`), instead of one call per run. What a
+    run returns does not depend on whether it was batched.
+
+    Parameters
+    ----------
+    runs : sequence of dict of str to Any
+        Each run's overrides (full input name to value), as :func:`overriding` takes them;
+        they apply on top of the overrides active where the block opens.
+
+    Yields
+    ------
+    None
+        Control of the block.
+    """
+    for values in runs:
+        for name in values:
+            get_input(name)
+    token = _BAND_AHEAD.set((_OVERRIDES.get(), tuple(dict(v) for v in runs), set()))
+    try:
+        yield
+    finally:
+        _BAND_AHEAD.reset(token)
+
+
+def for_each_band_run(key: Hashable, fn: Callable[[], T]) -> list[tuple[Reads, T]]:
+    """Call ``fn`` under each announced band run's overrides (:func:`band_ahead`), once per model.
+
+    For a model that batches a band: ``fn`` reads the inputs and builds one run's
+    parameters without running the model; the model then runs every parameter set in one call
+    and stores each result with :meth:`input_cache`'s ``prime`` under the reads returned here.
+    Outside an announced band, and for a ``key`` that already took the announced batch, it
+    returns ``[]``. A run whose parameters raise
+    :class:`~navcore._validate.ModelDomainError` is left out (its own unbatched call will
+    raise it again, and the ledger leaves that run out of the band).
+
+    Parameters
+    ----------
+    key : hashable
+        Names the model run (its function and arguments), so that the first run of a batch
+        that asks computes the batch, and the runs after it find their results stored.
+    fn : callable
+        Takes no argument; returns one run's parameters.
+
+    Returns
+    -------
+    list of (reads, value)
+        For each run that ``fn`` accepted: the inputs ``fn`` read with their values in that
+        run, and what ``fn`` returned. The caller's recording receives none of these reads.
+
+    Examples
+    --------
+    >>> IN = InputSet("WF", "doc_inputs")
+    >>> IN.published("carrier_hz", 1.0e9, unit="Hz", locator="Sec. IV", quantity="carrier frequency")
+    >>> for_each_band_run("wavelength", lambda: IN.carrier_hz)
+    []
+    >>> runs = [{"WF.doc_inputs.carrier_hz": 1.5e9}, {"WF.doc_inputs.carrier_hz": 2.0e9}]
+    >>> with band_ahead(runs):
+    ...     first = [value for _, value in for_each_band_run("wavelength", lambda: IN.carrier_hz)]
+    ...     again = for_each_band_run("wavelength", lambda: IN.carrier_hz)
+    >>> first, again
+    ([1500000000.0, 2000000000.0], [])
+    """
+    from navcore._validate import ModelDomainError
+
+    outer, runs, taken = _BAND_AHEAD.get()
+    if key in taken:
+        return []
+    taken.add(key)
+    out: list[tuple[Reads, T]] = []
+    for values in runs:
+        token = _OVERRIDES.set({**outer, **values})
+        try:
+            with recording() as reads:
+                value = fn()
+            out.append((tuple((inp, _current(inp)) for inp in reads.values()), value))
+        except ModelDomainError:
+            continue
+        finally:
+            _OVERRIDES.reset(token)
+    return out
 
 
 def is_number(value: Any) -> bool:

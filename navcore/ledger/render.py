@@ -25,6 +25,7 @@ from navcore.ledger.core import (
     TEXT_ONLY_CAVEAT,
     Erratum,
     Evaluation,
+    _n_runs,
     claim_quote,
     left_out_of_band,
 )
@@ -1754,14 +1755,14 @@ _LEDGER_JS = r"""
 
 def _band_html(record: dict[str, Any], unit: str) -> str:
     """The interactive table's band cell: each end kept whole with its unit; a statement's band
-    in words (whether it holds across the assumed ranges).
+    in words (whether it holds across the assumed ranges: throughout, for some inputs, or not).
 
     Examples
     --------
     >>> _band_html({"band": [0.5, 2.0]}, "m")
     '0.5 –&nbsp;2&nbsp;m'
     >>> _band_html({"band": [False, True]}, "statement")
-    'holds for some assumed inputs, not all'
+    'holds for some inputs'
     """
     band = record.get("band")
     if not band:
@@ -1769,17 +1770,16 @@ def _band_html(record: dict[str, Any], unit: str) -> str:
     low, high = band
     if isinstance(low, bool) or isinstance(high, bool):
         if low == high:
-            return "holds across the assumed ranges" if low else "fails across the assumed ranges"
-        return "holds for some assumed inputs, not all"
+            return "holds throughout" if low else "fails throughout"
+        return "holds for some inputs"
     ends = format_value(low), format_value(high) + (f" {unit}" if unit not in ("", "statement") else "")
     return f"{_nowrap(ends[0])} –&nbsp;{_nowrap(ends[1])}"
 
 
 def _left_out_brief(e: Evaluation) -> str:
-    """A band cell's note of the runs left out: "1 run left out, outside the model's domain"
-    (the claim's note says which case)."""
-    n = sum(c["runs"] for c in e.left_out)
-    return f"{n} run{'' if n == 1 else 's'} left out, outside the model's domain"
+    """A band cell's note of the runs left out: "1 run left out" (the claim's note says which
+    case, and that it lies outside the model's domain)."""
+    return f"{_n_runs(sum(c['runs'] for c in e.left_out))} left out"
 
 
 class InteractiveLedger:

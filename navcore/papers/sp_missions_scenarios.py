@@ -298,6 +298,16 @@ IN.assumed(
     reason="not published; nap-of-the-earth scout flight at 40-120 kn",
 )
 IN.assumed(
+    "helicopter_undulation_period_s",
+    60.0,
+    low=30.0,
+    high=120.0,
+    unit="s",
+    quantity="period of the helicopter's terrain-following undulation (flight-path angle +-4 deg)",
+    reason="Sec. 2.6.4 says only that the scout flies nap-of-the-earth; at 20-60 m/s, hills 1-5 km "
+    "apart give a swing every 30-120 s",
+)
+IN.assumed(
     "helicopter_calibration_min",
     30.0,
     low=15.0,
@@ -308,6 +318,37 @@ IN.assumed(
     "steady state', without a time; 15-60 min spans the settling of the filter's calibration states "
     "on the book's trajectory",
 )
+IN.assumed(
+    "gps_slots_per_plane",
+    4,
+    low=4,
+    high=5,
+    unit="satellites",
+    quantity="satellites per orbital plane of the missions' GPS constellation (six planes)",
+    reason="the paper names no constellation; 24 satellites, four in each of the six planes, is the "
+    "baseline of the GPS performance standard and the constellation of the 1990s; five per plane "
+    "(30 satellites) is the size it has had since the 2000s",
+)
+IN.assumed(
+    "walker_phase_deg",
+    15.0,
+    low=0.0,
+    high=30.0,
+    grid=3,
+    unit="deg",
+    quantity="offset of the satellites' argument of latitude from one orbital plane to the next",
+    reason="the paper names no constellation and no date; the book flies an evenly phased (Walker-like) "
+    "pattern, a stand-in for the almanac (the real slots are unevenly phased). A 24/6/F Walker pattern "
+    "offsets the planes by F x 15 deg: F = 0, 1, 2 give 0, 15 and 30 deg; with the longitude it sets "
+    "which satellites are up and where; a grid because the geometry's effect is not monotone",
+)
+
+
+def gps_constellation(slots_per_plane: int | None = None) -> Constellation:
+    """The GPS constellation of the scenarios: six planes of :data:`IN` ``gps_slots_per_plane``
+    satellites (or ``slots_per_plane``), offset by ``walker_phase_deg`` from plane to plane."""
+    per_plane = IN.gps_slots_per_plane if slots_per_plane is None else slots_per_plane
+    return nominal_gps_constellation(per_plane=per_plane, phase_offset_deg=IN.walker_phase_deg)
 
 
 @dataclass(frozen=True)
@@ -482,7 +523,7 @@ def _run_list(
     """:func:`_run` for a list of members (a system may appear several times, each with its
     own ``transforms`` of the a-priori covariance), in the order given."""
     out: dict[int, CovarianceAnalysis] = {}
-    con = nominal_gps_constellation() if constellation is None else constellation
+    con = gps_constellation() if constellation is None else constellation
     geo = satellite_geometry(tr, con, [int(c) for c in channels])
     every = max(1, round(IN.baro_interval_s / tr.dt))
     if transforms is None:
@@ -593,7 +634,7 @@ def engine_inputs(system: System, seconds: float) -> EngineInputs:
     tr = _slice(tr_all, 0.0, seconds)
     channels = _channels(end_free_s())
     truth = truth_layout(channels=len(channels))
-    geo = satellite_geometry(tr, nominal_gps_constellation(), [int(c) for c in channels])
+    geo = satellite_geometry(tr, gps_constellation(), [int(c) for c in channels])
     lock = np.ones((len(tr), len(channels)), dtype=bool)
     every = max(1, round(IN.baro_interval_s / tr.dt))
     src = error_sources(sp_imu_grade(system.grade), False)
@@ -849,7 +890,7 @@ def sequential_outage(
 def _channels(duration: float) -> np.ndarray:
     return best_geometry_channels(
         sequential_outage_trajectory(duration),
-        nominal_gps_constellation(),
+        gps_constellation(),
         IN.channels,
         IN.mask_deg,
     )
@@ -906,7 +947,7 @@ def head_on_approach(
     if free_inertial_s is None:
         free_inertial_s = IN.headon_free_loose_s if architecture == "loose" else IN.headon_free_tight_s
     tr = head_on_trajectory()
-    channels = best_geometry_channels(tr, nominal_gps_constellation(), IN.channels, IN.mask_deg)
+    channels = best_geometry_channels(tr, gps_constellation(), IN.channels, IN.mask_deg)
     return _head_on_on(architecture, free_inertial_s, _channel_key(channels))
 
 
@@ -928,16 +969,19 @@ def _head_on_on(
 
 def helicopter_trajectory(duration_s: float) -> Trajectory:
     """Terrain following at constant ground speed: the flight-path angle swings +-4 deg
-    with a 60-s period (height changes of about +-25 m), plus a 90-degree turn every 5 min."""
+    with the assumed undulation period (60 s: height changes of about +-25 m), plus a 90-degree
+    turn every fifth undulation (5 min)."""
     a = IN
     segs: list[Segment] = []
     t = 0.0
     sign = 1.0
     k = 0
+    swing = (1.0, -1.0, -1.0, 1.0)  # the flight-path angle's rate over the quarters of one undulation
+    quarter_s = a.helicopter_undulation_period_s / len(swing)
     while t < duration_s:
-        for rate in (1.0, -1.0, -1.0, 1.0):  # one 60-s terrain undulation
-            segs.append(Segment(15.0, path_angle_rate=rate * 4.0 / 15.0 * DEG))
-        t += 60.0
+        for rate in swing:
+            segs.append(Segment(quarter_s, path_angle_rate=rate * 4.0 / quarter_s * DEG))
+        t += a.helicopter_undulation_period_s
         k += 1
         if k % 5 == 0:
             segs.append(Segment(30.0, turn_rate=sign * 3.0 * DEG))
@@ -963,7 +1007,7 @@ def helicopter(doppler: bool) -> dict[float, CovarianceAnalysis]:
     calibration_min = a.helicopter_calibration_min
     duration = (calibration_min + IN.helicopter_jammed_min) * MINUTE
     tr = helicopter_trajectory(duration)
-    channels = best_geometry_channels(tr, nominal_gps_constellation(), a.channels, a.mask_deg)
+    channels = best_geometry_channels(tr, gps_constellation(), a.channels, a.mask_deg)
     return _helicopter_on(doppler, 0.0, _channel_key(channels))
 
 
@@ -996,7 +1040,7 @@ def helicopter_momentary_carrier_loss(loss_s: float) -> dict[float, CovarianceAn
     calibration_min = a.helicopter_calibration_min
     duration = (calibration_min + IN.helicopter_jammed_min) * MINUTE
     tr = helicopter_trajectory(duration)
-    channels = best_geometry_channels(tr, nominal_gps_constellation(), a.channels, a.mask_deg)
+    channels = best_geometry_channels(tr, gps_constellation(), a.channels, a.mask_deg)
     return _helicopter_on(False, loss_s, _channel_key(channels))
 
 
