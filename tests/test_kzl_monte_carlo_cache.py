@@ -11,8 +11,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from navcore.estimation.ekf_ins_gnss import monte_carlo_key, run_monte_carlo
-from navcore.ledger.inputs import overriding, recording
+from navcore.estimation.ekf_ins_gnss import monte_carlo_key, run_monte_carlo, run_monte_carlo_batch
+from navcore.ledger.inputs import band_ahead, overriding, recording
 from navcore.papers import kzl_scenario as S
 
 FIELDS = ("pos_err", "vel_err", "att_err", "pos_sigma", "vel_sigma", "att_sigma")
@@ -94,3 +94,69 @@ def test_key_holds_every_argument():
     assert monte_carlo_key(sc, "tc_dd", 30, 1) != base
     with pytest.raises(ValueError, match="mode"):
         monte_carlo_key(sc, "loose", 30, 1)
+
+
+# --- a band's runs in one batched call ------------------------------------------------------------
+
+BAND = (
+    {"KZL.scenario.code_noise_m": 6.0},
+    {"KZL.scenario.short_segment_s": 20.0},  # another schedule: other satellite counts per epoch
+    {"KZL.scenario.phase_noise_m": 0.0015, "KZL.scenario.init_time_s": 150.0},
+    {"KZL.scenario.attitude_noise_rad": 0.006, "KZL.scenario.crab_angle_deg": 1.0},
+)
+FEW = {"KZL.scenario.n_runs": 6}  # a small ensemble keeps the test short
+
+
+def _close(a, b) -> bool:
+    return all(np.allclose(getattr(a, f), getattr(b, f), rtol=1e-10, atol=0.0) for f in FIELDS)
+
+
+@pytest.mark.parametrize("mode", ["tc_att", "tc_dd"])
+def test_batched_scenarios_equal_one_call_each(mode):
+    # oracle: the unbatched Monte Carlo, one run_monte_carlo call per scenario
+    scs = []
+    for ov in ({}, *BAND):
+        with overriding(ov), recording():
+            scs.append(S.table1_scenario(mode))
+    batched = run_monte_carlo_batch(scs, mode, 6, S.SEED)
+    for sc, got in zip(scs, batched, strict=True):
+        assert _close(got, run_monte_carlo(sc, mode, 6, S.SEED))
+        assert np.array_equal(got.n_visible, sc.n_visible)
+    assert not _close(batched[0], batched[1])  # the scenarios do differ
+
+
+def test_batch_rejects_scenarios_that_cannot_share_arrays():
+    with recording():
+        sc = S.table1_scenario("tc")
+    with overriding({"KZL.scenario.constellation": (6, 4, 55.0, 0.0)}), recording():
+        other_sky = S.table1_scenario("tc")
+    with pytest.raises(ValueError, match="scenarios must share"):
+        run_monte_carlo_batch([sc, other_sky], "tc", 2, S.SEED)
+    with pytest.raises(ValueError, match="at least one"):
+        run_monte_carlo_batch([], "tc", 2, S.SEED)
+
+
+def test_announced_band_is_one_batched_call_and_gives_the_unbatched_runs(_fresh, monkeypatch):
+    # oracle: run_monte_carlo on the scenario each run's inputs give (one call per run)
+    calls = _fresh
+    batches = []
+    real = S.run_monte_carlo_batch
+
+    def counted(scenarios, *args, **kwargs):
+        batches.append(len(scenarios))
+        return real(scenarios, *args, **kwargs)
+
+    monkeypatch.setattr(S, "run_monte_carlo_batch", counted)
+    runs = [{**FEW, **ov} for ov in BAND]
+    with overriding(FEW), band_ahead(runs):
+        got = []
+        for ov in runs:
+            with overriding(ov), recording() as reads:
+                got.append(S.monte_carlo("tc_dd"))
+            assert "KZL.scenario.code_noise_m" in reads  # the caller still records what a run reads
+    assert batches == [len(runs)] and calls == []  # one batched call, no run of its own
+    for ov, result in zip(runs, got, strict=True):
+        with overriding(ov), recording():
+            sc = S.table1_scenario("tc_dd")
+        assert _close(result, run_monte_carlo(sc, "tc_dd", 6, S.SEED))
+        assert not result.pos_err.flags.writeable

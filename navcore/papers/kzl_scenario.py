@@ -50,13 +50,15 @@ from navcore.estimation.ekf_ins_gnss import (
     Mode,
     MonteCarloResult,
     Scenario,
+    batch_group_key,
     monte_carlo_key,
     run_monte_carlo,
+    run_monte_carlo_batch,
 )
 from navcore.frames import dcm_ecef_to_ned, ecef_to_ned, geodetic_to_ecef
 from navcore.gnss.constellation import elevation_azimuth, nominal_gps_constellation
 from navcore.inertial.imu import ImuSpec, imu_spec_from_published
-from navcore.ledger import InputSet, input_cache
+from navcore.ledger import InputSet, for_each_band_run, input_cache
 from navcore.units import DEG
 
 __all__ = [
@@ -487,52 +489,158 @@ def _read_only(result: MonteCarloResult) -> MonteCarloResult:
     return result
 
 
+def _run_arguments(mode: str, initialise: bool, imu_name: str) -> tuple[Scenario, int, dict[str, int]]:
+    """The scenario, the ensemble size and the extra arguments of one configuration's run, from the
+    inputs (every input :func:`monte_carlo` reads is read here)."""
+    sc = table1_scenario(mode, initialise, imu_name == "swapped")
+    # Eq. (12)'s attitude rows need the multi-antenna attitude, which Sec. 3.6 says needs 4 satellites
+    extra = {"attitude_min_sats": int(IN.attitude_min_sats)} if mode in ("tc_att", "all") else {}
+    return sc, n_runs(), extra
+
+
+def _run_key(mode: str, initialise: bool, args: tuple[Scenario, int, dict[str, int]]) -> str:
+    sc, runs, extra = args
+    return monte_carlo_key(sc, cast(Mode, mode), runs, SEED, initialise=initialise, **extra)
+
+
+def _remember(key: str, result: MonteCarloResult) -> None:
+    _RUNS[key] = result
+    if len(_RUNS) > _RUNS_KEPT:
+        _RUNS.popitem(last=False)
+
+
+def _echo(result: MonteCarloResult, sc: Scenario) -> MonteCarloResult:
+    """``result`` echoing ``sc``'s schedule (the stand-alone INS shares runs across schedules)."""
+    if not np.array_equal(result.n_visible, sc.n_visible):
+        result = replace(result, n_visible=np.asarray(sc.n_visible))
+    return result
+
+
 @input_cache
+def _monte_carlo(mode: str, initialise: bool, imu_name: str) -> MonteCarloResult:
+    args = _run_arguments(mode, initialise, imu_name)
+    key = _run_key(mode, initialise, args)
+    result = _RUNS.get(key)
+    if result is None:
+        sc, runs, extra = args
+        result = _stored_or_run(key, sc, mode, runs, initialise, extra)
+        _remember(key, result)
+    else:
+        _RUNS.move_to_end(key)
+    return _echo(result, args[0])
+
+
+#: Most rows (band runs x Monte Carlo runs) of one batched call: a band's runs are split into
+#: calls of at most this many rows (the arrays of one call stay small enough to be fast; a row's
+#: numbers do not depend on the split).
+_BATCH_ROWS = 480
+
+
+def _run_band(mode: str, initialise: bool, ahead: list[tuple[Scenario, int, dict[str, int]]]) -> None:
+    """Make the runs of an announced band batch that no memo or disk holds, in batched calls: one
+    per group of scenarios that can share arrays (the same ensemble size, attitude threshold and
+    :func:`~navcore.estimation.ekf_ins_gnss.batch_group_key`), split at :data:`_BATCH_ROWS`."""
+    groups: dict[tuple[int, int, str], dict[str, Scenario]] = {}
+    for args in ahead:
+        key = _run_key(mode, initialise, args)
+        if key in _RUNS:
+            _RUNS.move_to_end(key)
+            continue
+        sc, runs, extra = args
+        stored = _stored(key, mode, initialise)
+        if stored is not None:
+            _remember(key, stored)
+            continue
+        group = (runs, extra.get("attitude_min_sats", 4), batch_group_key(sc))
+        groups.setdefault(group, {}).setdefault(key, sc)
+    for (runs, min_sats, _), members in groups.items():
+        keys = list(members)
+        size = max(1, _BATCH_ROWS // runs)
+        for start in range(0, len(keys), size):
+            chunk = keys[start : start + size]
+            results = run_monte_carlo_batch(
+                [members[k] for k in chunk],
+                cast(Mode, mode),
+                runs,
+                SEED,
+                initialise=initialise,
+                attitude_min_sats=min_sats,
+            )
+            for k, result in zip(chunk, results, strict=True):
+                _remember(k, _store(k, mode, initialise, result))
+
+
 def monte_carlo(mode: str, initialise: bool = True, imu_name: str = "table1") -> MonteCarloResult:
     """Cached seeded Monte Carlo (:func:`n_runs` runs) of one configuration of the Table 1 scenario.
 
     Keyed on the values of the inputs it reads (so the ledger's bands re-run it across the
     assumed ranges), and below that on the run's complete arguments
     (:func:`~navcore.estimation.ekf_ins_gnss.monte_carlo_key`): every claim and every band corner
-    that asks for the same run in this process shares one computation. The arrays of the result
-    are read-only. Results are also kept on disk (in the system temporary directory, under a
+    that asks for the same run in this process shares one computation. Inside a band the ledger
+    announces (:func:`~navcore.ledger.for_each_band_run`), the first call makes every run of the
+    batch at once (:func:`~navcore.estimation.ekf_ins_gnss.run_monte_carlo_batch`, which gives each
+    run the numbers it gets alone) and stores them for the band's later calls. The arrays of the
+    result are read-only. Results are also kept on disk (in the system temporary directory, under a
     key hashed from the sources of every module involved and from the scenario), so that the
     chapter's notebooks, the ledger page and the tests share one computation per code version
     and input values. Set ``NAVCORE_NO_DISK_CACHE=1`` to recompute.
     """
     if imu_name not in ("table1", "swapped"):
         raise ValueError(f"imu_name must be 'table1' or 'swapped', got {imu_name!r}")
-    sc = table1_scenario(mode, initialise, imu_name == "swapped")
-    runs = n_runs()
-    # Eq. (12)'s attitude rows need the multi-antenna attitude, which Sec. 3.6 says needs 4 satellites
-    extra = {"attitude_min_sats": int(IN.attitude_min_sats)} if mode in ("tc_att", "all") else {}
-    key = monte_carlo_key(sc, cast(Mode, mode), runs, SEED, initialise=initialise, **extra)
-    result = _RUNS.get(key)
-    if result is None:
-        result = _stored_or_run(key, sc, mode, runs, initialise, extra)
-        _RUNS[key] = result
-        if len(_RUNS) > _RUNS_KEPT:
-            _RUNS.popitem(last=False)
-    else:
-        _RUNS.move_to_end(key)
-    if not np.array_equal(result.n_visible, sc.n_visible):  # "ins" shares runs across schedules
-        result = replace(result, n_visible=np.asarray(sc.n_visible))
-    return result
+    ahead = for_each_band_run(
+        ("KZL Monte Carlo", mode, initialise, imu_name), lambda: _run_arguments(mode, initialise, imu_name)
+    )
+    if ahead:
+        _run_band(mode, initialise, [args for _, args in ahead])
+        _monte_carlo.prime(
+            [(reads, _echo(_RUNS[_run_key(mode, initialise, args)], args[0])) for reads, args in ahead],
+            mode,
+            initialise,
+            imu_name,
+        )
+    return _monte_carlo(mode, initialise, imu_name)
+
+
+monte_carlo.cache_clear = _monte_carlo.cache_clear  # type: ignore[attr-defined]
+
+
+def _disk_path(key: str, mode: str, initialise: bool) -> Path | None:
+    """Where the run of ``key`` is kept on disk, or ``None`` with the disk cache off."""
+    if os.environ.get("NAVCORE_NO_DISK_CACHE"):
+        return None
+    return Path(tempfile.gettempdir()) / "navcore-kzl-mc" / f"{mode}-{initialise}-{_source_key(key)}.npz"
+
+
+def _stored(key: str, mode: str, initialise: bool) -> MonteCarloResult | None:
+    """The run of ``key`` from the disk cache, or ``None``."""
+    path = _disk_path(key, mode, initialise)
+    if path is None or not path.exists():
+        return None
+    with np.load(path) as data:
+        return _read_only(MonteCarloResult(**{f.name: data[f.name] for f in fields(MonteCarloResult)}))
+
+
+def _store(key: str, mode: str, initialise: bool, result: MonteCarloResult) -> MonteCarloResult:
+    """``result`` kept on disk (with the disk cache on) and made read-only."""
+    path = _disk_path(key, mode, initialise)
+    if path is not None:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        tmp = path.with_suffix(f".{os.getpid()}.npz")
+        np.savez(tmp, **{f.name: getattr(result, f.name) for f in fields(MonteCarloResult)})
+        os.replace(tmp, path)
+    return _read_only(result)
 
 
 def _stored_or_run(
     key: str, sc: Scenario, mode: str, runs: int, initialise: bool, extra: dict[str, int]
 ) -> MonteCarloResult:
     """The run of ``key`` from the disk cache, or computed (and stored) if it is not there."""
-    path = Path(tempfile.gettempdir()) / "navcore-kzl-mc" / f"{mode}-{initialise}-{_source_key(key)}.npz"
-    use_disk = not os.environ.get("NAVCORE_NO_DISK_CACHE")
-    if use_disk and path.exists():
-        with np.load(path) as data:
-            return _read_only(MonteCarloResult(**{f.name: data[f.name] for f in fields(MonteCarloResult)}))
-    result = run_monte_carlo(sc, cast(Mode, mode), runs, SEED, initialise=initialise, **extra)
-    if use_disk:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        tmp = path.with_suffix(f".{os.getpid()}.npz")
-        np.savez(tmp, **{f.name: getattr(result, f.name) for f in fields(MonteCarloResult)})
-        os.replace(tmp, path)
-    return _read_only(result)
+    stored = _stored(key, mode, initialise)
+    if stored is not None:
+        return stored
+    return _store(
+        key,
+        mode,
+        initialise,
+        run_monte_carlo(sc, cast(Mode, mode), runs, SEED, initialise=initialise, **extra),
+    )
