@@ -2,7 +2,8 @@
 
 Oracles: navcore.estimation.kf_update (one batch Joseph update) for the sequential scalar
 updates; van_loan for the Gauss-Legendre discrete noise; scipy's Rotation for the attitude
-correction; carrier_phase's single-case builders for the batched Jacobians. The Monte Carlo
+correction; carrier_phase's single-case builders for the batched Jacobians; S calls of
+strapdown_step for the Monte Carlo's chained strapdown. The Monte Carlo
 itself is tested against physics in test_ekf_ins_gnss_physics.py.
 """
 
@@ -16,6 +17,7 @@ from navcore import frames as fr
 from navcore.estimation import kf_update, van_loan
 from navcore.estimation.ekf_ins_gnss import (
     _dd_phase_batch,
+    _strapdown_rows,
     _transition_and_noise,
     correct_attitude,
     discrete_noise_nilpotent,
@@ -26,6 +28,7 @@ from navcore.estimation.ekf_ins_gnss import (
 )
 from navcore.gnss.carrier_phase import dd_covariance, double_difference_phase, euler_attitude_rows
 from navcore.inertial.error_model17 import error_dynamics_17, noise_psd_17, transition_exact
+from navcore.inertial.strapdown import NavState, strapdown_step
 from navcore.papers.kzl_scenario import table1_scenario
 from navcore.units import DEG, G0
 
@@ -145,3 +148,28 @@ def test_batched_jacobians_match_builders():
 def test_bad_mode_rejected():
     with pytest.raises(ValueError, match="mode"):
         run_monte_carlo(table1_scenario(), "loose", 2, 0)
+
+
+def test_chained_strapdown_equals_one_step_at_a_time():
+    # oracle: S calls of strapdown_step (the mechanization of KZL Eqs. 7-9, one IMU interval each)
+    rng = np.random.default_rng(7)
+    n, steps, dt = 5, 100, 0.01
+    w = 1e-2 * rng.normal(size=(n, steps, 3)) + 2e-3
+    f = np.array([0.3, -0.2, -G0]) + 0.05 * rng.normal(size=(n, steps, 3))
+    q0 = fr.quat_from_rotvec(0.3 * rng.normal(size=(n, 3)))
+    pos0, vel0 = rng.normal(size=(n, 3)), 100.0 * rng.normal(size=(n, 3))
+    pos, vel, quat, f_n_mean = _strapdown_rows(pos0, vel0, q0, w, f, dt)
+    state, f_n = NavState(pos0, vel0, q0), []
+    for s in range(steps):
+        q_mid = np.array([_mid(state.quat[i], w[i, s] * dt) for i in range(n)])
+        f_n.append(np.einsum("nij,nj->ni", np.array([fr.dcm_from_quat(q) for q in q_mid]), f[:, s]))
+        state = strapdown_step(state, w[:, s], f[:, s], dt)
+    assert np.allclose(pos, state.pos, rtol=1e-12, atol=1e-9)
+    assert np.allclose(vel, state.vel, rtol=1e-12, atol=1e-11)
+    assert np.allclose(quat, state.quat, rtol=0.0, atol=1e-13)
+    assert np.allclose(f_n_mean, np.mean(f_n, axis=0), rtol=0.0, atol=1e-12)
+
+
+def _mid(q: np.ndarray, rotvec: np.ndarray) -> np.ndarray:
+    """The mid-interval attitude of strapdown_step: q times half the body increment."""
+    return fr.quat_multiply(q, fr.quat_from_rotvec(0.5 * rotvec))

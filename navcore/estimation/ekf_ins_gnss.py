@@ -52,10 +52,8 @@ from navcore.inertial.alignment import heading_from_velocity, levelling
 from navcore.inertial.error_model17 import ERROR_LAYOUT_17, error_dynamics_17, transition_exact
 from navcore.inertial.imu import ImuSpec
 from navcore.inertial.strapdown import (
-    NavState,
     dcm_from_quat_batch,
     quat_multiply_batch,
-    strapdown_interval,
 )
 from navcore.units import G0, GPS_L1_WAVELENGTH_M
 
@@ -289,6 +287,81 @@ def _transition_and_noise(F: Array, q: Array, dt: float) -> tuple[Array, Array]:
         P_s = phi(s)
         Qd = Qd + w * (P_s * q) @ np.swapaxes(P_s, -1, -2)
     return phi(dt), symmetrize_unchecked(Qd)
+
+
+_k_quat_from_rotvec = unchecked(quat_from_rotvec)
+
+
+def _strapdown_rows(
+    pos: Array, vel: Array, quat: Array, w: Array, f: Array, dt: float, gravity: float = G0
+) -> tuple[Array, Array, Array, Array]:
+    """The simplified mechanization of :func:`~navcore.inertial.strapdown.strapdown_interval` over
+    ``S`` IMU intervals, chaining the attitude one interval at a time (the order of ``S`` calls of
+    :func:`~navcore.inertial.strapdown.strapdown_step`) on arrays with the runs innermost.
+
+    The inner-loop kernel of :func:`run_monte_carlo` (nothing is checked): for the thousands of
+    rows of a batched band, ``S`` sequential Hamilton products on contiguous rows cost less than
+    the ``log2 S`` products of the whole ``(N, S, 4)`` array of the parallel prefix product, and
+    the result is the same to round-off (the products are associated in another order).
+
+    Parameters
+    ----------
+    pos, vel : (N, 3) arrays
+        Position (m) and velocity (m/s), NED.
+    quat : (N, 4) array
+        Attitude ``q_bn``, scalar first.
+    w, f : (N, S, 3) arrays
+        Angular rate (rad/s) and specific force (m/s^2) of each interval.
+    dt : float
+        IMU interval, s.
+    gravity : float
+        Local gravity along +down (m/s^2).
+
+    Returns
+    -------
+    pos, vel, quat : arrays
+        The state after the ``S`` intervals.
+    f_n_mean : (N, 3) ndarray
+        The specific force resolved in NED, averaged over the intervals (for the error model).
+    """
+    dq = _k_quat_from_rotvec(w * dt)  # (N, S, 4)
+    hq = _k_quat_from_rotvec(0.5 * w * dt)
+    S = w.shape[1]
+    dw, dx, dy, dz = (np.ascontiguousarray(dq[..., i].T) for i in range(4))  # (S, N) each
+    # the attitude at the start of each interval: q_{s+1} = q_s ⊗ dq_s (strapdown_step's order)
+    qs = np.empty((4, S + 1, w.shape[0]))
+    a, b, c, d = (quat[:, i].copy() for i in range(4))
+    for s in range(S):
+        qs[0, s], qs[1, s], qs[2, s], qs[3, s] = a, b, c, d
+        e, x, y, z = dw[s], dx[s], dy[s], dz[s]
+        a, b, c, d = (
+            a * e - b * x - c * y - d * z,
+            a * x + b * e + c * z - d * y,
+            a * y - b * z + c * e + d * x,
+            a * z + b * y - c * x + d * e,
+        )
+    qs[0, S], qs[1, S], qs[2, S], qs[3, S] = a, b, c, d
+    # mid-interval attitude (start ⊗ half increment) resolves the specific force
+    a, b, c, d = qs[0, :S], qs[1, :S], qs[2, :S], qs[3, :S]
+    e, x, y, z = (hq[..., i].T for i in range(4))
+    mw = a * e - b * x - c * y - d * z
+    mx = a * x + b * e + c * z - d * y
+    my = a * y - b * z + c * e + d * x
+    mz = a * z + b * y - c * x + d * e
+    fx, fy, fz = (f[..., i].T for i in range(3))
+    ww, xx, yy, zz = mw * mw, mx * mx, my * my, mz * mz
+    fn = (ww + xx - yy - zz) * fx + 2 * (mx * my - mw * mz) * fy + 2 * (mx * mz + mw * my) * fz
+    fe = 2 * (mx * my + mw * mz) * fx + (ww - xx + yy - zz) * fy + 2 * (my * mz - mw * mx) * fz
+    fd = 2 * (mx * mz - mw * my) * fx + 2 * (my * mz + mw * mx) * fy + (ww - xx - yy + zz) * fz
+    f_n = np.stack([fn, fe, fd])  # (3, S, N)
+    acc = f_n.copy()
+    acc[2] += gravity
+    v_all = vel.T[:, None, :] + np.cumsum(acc, axis=1) * dt  # v_1 .. v_S, (3, S, N)
+    v_prev = np.concatenate([vel.T[:, None, :], v_all[:, :-1]], axis=1)
+    pos_end = pos + 0.5 * dt * np.sum(v_prev + v_all, axis=1).T
+    q_end = qs[:, S].T
+    q_end = q_end / np.linalg.norm(q_end, axis=-1, keepdims=True)
+    return pos_end, np.ascontiguousarray(v_all[:, -1].T), q_end, f_n.mean(axis=1).T
 
 
 def sequential_scalar_updates(x: Array, P: Array, y: Array, H: Array, r: Array) -> tuple[Array, Array]:
@@ -981,7 +1054,6 @@ def _monte_carlo_batch(
     eul_true = euler_batch(C_true)
 
     # the scenarios and the arguments are checked: the loop calls the kernels without re-checking
-    _k_strapdown_interval = unchecked(strapdown_interval)
     _k_dcm_from_quat_batch = unchecked(dcm_from_quat_batch)
     _k_error_dynamics_17 = unchecked(error_dynamics_17)
     _k_sequential_scalar_updates = unchecked(sequential_scalar_updates)
@@ -1103,8 +1175,7 @@ def _monte_carlo_batch(
         # 100 Hz strapdown on bias-corrected data (Eqs. 7-9), vectorised over the interval
         w_hat = (b_g - bg_hat)[:, None, :] + n_g
         f_hat = (f_sensor_const - ba_hat)[:, None, :] + n_a
-        nav, f_n = _k_strapdown_interval(NavState(pos, vel, quat), w_hat, f_hat, dt)
-        pos, vel, quat = nav.pos, nav.vel, nav.quat
+        pos, vel, quat, f_n_mean = _strapdown_rows(pos, vel, quat, w_hat, f_hat, dt)
         clock = clock + np.stack([clock[:, 1] * T, np.zeros(M)], -1)
         clock = clock + np.stack(
             [clock_phase_walk * np.sqrt(T) * draw(), clock_drift_walk * np.sqrt(T) * draw()], -1
@@ -1118,7 +1189,7 @@ def _monte_carlo_batch(
 
         # covariance prediction over the GPS interval
         C_hat = _k_dcm_from_quat_batch(quat)
-        F = _k_error_dynamics_17(C_hat, f_n.mean(axis=1))
+        F = _k_error_dynamics_17(C_hat, f_n_mean)
         Phi, Qd = _transition_and_noise(F, q_diag, T)
         P = symmetrize_unchecked(Phi @ P @ np.swapaxes(Phi, -1, -2) + Qd)
 
