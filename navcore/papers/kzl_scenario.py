@@ -592,7 +592,7 @@ def monte_carlo(mode: str, initialise: bool = True, imu_name: str = "table1") ->
     )
     if ahead:
         _run_band(mode, initialise, [args for _, args in ahead])
-        _monte_carlo.prime(
+        _monte_carlo.prime(  # type: ignore[attr-defined]
             [(reads, _echo(_RUNS[_run_key(mode, initialise, args)], args[0])) for reads, args in ahead],
             mode,
             initialise,
