@@ -980,26 +980,29 @@ def _monte_carlo_batch(
         """One value per scenario, repeated over its ``N`` rows: ``(M,)``."""
         return np.repeat(np.array([float(get(s)) for s in scs]), N)
 
-    def draw(*shape: int) -> Array:
-        """Standard normals of shape ``(N, *shape)``, the same for every scenario: ``(M, *shape)``."""
-        z = rng.standard_normal((N, *shape))
-        return z if B == 1 else np.broadcast_to(z, (B, N, *shape)).reshape(M, *shape)
+    def shared(z: Array) -> Array:
+        """Draws ``z`` of shape ``(N, ...)``, the same for every scenario: ``(M, ...)``."""
+        return z if B == 1 else np.broadcast_to(z, (B, *z.shape)).reshape(M, *z.shape[1:])
 
     imus = [s.imu for s in scs]
     gyro_rw = np.repeat(np.array([i.gyro_random_walk for i in imus]), N)
     accel_rw = np.repeat(np.array([i.accel_random_walk for i in imus]), N)
 
     # --- truth (constant attitude and velocity; flat non-rotating Earth, as in Eqs. 7-9) ---
-    yaw_true = yaw0 + per_row(lambda s: s.heading_sigma) * draw()
+    yaw_true = yaw0 + per_row(lambda s: s.heading_sigma) * shared(rng.standard_normal(N))
     C_true = np.stack([dcm_from_euler(roll0, pitch0, y) for y in yaw_true])
     f_true_b = np.einsum("nji,j->ni", C_true, np.array([0.0, 0.0, -G0]))
-    b_g = per_row(lambda s: s.imu.gyro_bias)[:, None] * draw(3)
-    b_a = per_row(lambda s: s.imu.accel_bias)[:, None] * draw(3)
-    draw(3)  # gyro scale factors: drawn for the record, the true rate is zero
-    s_a = per_row(lambda s: s.imu.accel_scale_factor)[:, None] * draw(3)
+    b_g = per_row(lambda s: s.imu.gyro_bias)[:, None] * shared(rng.standard_normal((N, 3)))
+    b_a = per_row(lambda s: s.imu.accel_bias)[:, None] * shared(rng.standard_normal((N, 3)))
+    shared(rng.standard_normal((N, 3)))  # gyro scale factors: drawn for the record, the true rate is zero
+    s_a = per_row(lambda s: s.imu.accel_scale_factor)[:, None] * shared(rng.standard_normal((N, 3)))
     f_sensor_const = f_true_b * (1.0 + s_a) + b_a  # accelerometer output without noise
     clock = np.stack(
-        [per_row(lambda s: s.clock_bias_sigma) * draw(), per_row(lambda s: s.clock_drift_sigma) * draw()], -1
+        [
+            per_row(lambda s: s.clock_bias_sigma) * shared(rng.standard_normal(N)),
+            per_row(lambda s: s.clock_drift_sigma) * shared(rng.standard_normal(N)),
+        ],
+        -1,
     )
 
     # --- initialisation (KZL Sec. 3.1) ---
@@ -1007,10 +1010,10 @@ def _monte_carlo_batch(
         Tinit = per_row(lambda s: _needed(s.init_time, "sc.init_time", "an initialising run"))
     else:
         Tinit = np.full(M, math.inf)
-    pos_hat = per_row(lambda s: s.pos0_sigma)[:, None] * draw(3)
-    v_meas0 = v_true + per_row(lambda s: s.vel0_sigma)[:, None] * draw(3)
-    f_avg = f_sensor_const + (accel_rw / np.sqrt(Tinit))[:, None] * draw(3)
-    w_avg = b_g + (gyro_rw / np.sqrt(Tinit))[:, None] * draw(3)
+    pos_hat = per_row(lambda s: s.pos0_sigma)[:, None] * shared(rng.standard_normal((N, 3)))
+    v_meas0 = v_true + per_row(lambda s: s.vel0_sigma)[:, None] * shared(rng.standard_normal((N, 3)))
+    f_avg = f_sensor_const + (accel_rw / np.sqrt(Tinit))[:, None] * shared(rng.standard_normal((N, 3)))
+    w_avg = b_g + (gyro_rw / np.sqrt(Tinit))[:, None] * shared(rng.standard_normal((N, 3)))
     if initialise:
         roll_h, pitch_h = levelling(f_avg)
         yaw_h = heading_from_velocity(v_meas0)
@@ -1170,22 +1173,26 @@ def _monte_carlo_batch(
     nsat_all = sc.sat_pos_ned.shape[1]
     for k in range(1, K + 1):
         # IMU noise for this second, drawn in the same order for every mode
-        n_a = (accel_rw / np.sqrt(dt))[:, None, None] * draw(steps, 3)
-        n_g = (gyro_rw / np.sqrt(dt))[:, None, None] * draw(steps, 3)
+        n_a = (accel_rw / np.sqrt(dt))[:, None, None] * shared(rng.standard_normal((N, steps, 3)))
+        n_g = (gyro_rw / np.sqrt(dt))[:, None, None] * shared(rng.standard_normal((N, steps, 3)))
         # 100 Hz strapdown on bias-corrected data (Eqs. 7-9), vectorised over the interval
         w_hat = (b_g - bg_hat)[:, None, :] + n_g
         f_hat = (f_sensor_const - ba_hat)[:, None, :] + n_a
         pos, vel, quat, f_n_mean = _strapdown_rows(pos, vel, quat, w_hat, f_hat, dt)
         clock = clock + np.stack([clock[:, 1] * T, np.zeros(M)], -1)
         clock = clock + np.stack(
-            [clock_phase_walk * np.sqrt(T) * draw(), clock_drift_walk * np.sqrt(T) * draw()], -1
+            [
+                clock_phase_walk * np.sqrt(T) * shared(rng.standard_normal(N)),
+                clock_drift_walk * np.sqrt(T) * shared(rng.standard_normal(N)),
+            ],
+            -1,
         )
         clock_hat = clock_hat + np.stack([clock_hat[:, 1] * T, np.zeros(M)], -1)
         # GPS noise draws (always drawn, used or not)
-        e_pr = sig["pseudorange"][:, None] * draw(nsat_all)
-        e_prr = sig["delta_range"][:, None] * draw(nsat_all)
-        e_ph = sig["phase"][:, None, None] * draw(nsat_all, n_antennas)
-        e_att = sig["attitude"][:, None] * draw(3)
+        e_pr = sig["pseudorange"][:, None] * shared(rng.standard_normal((N, nsat_all)))
+        e_prr = sig["delta_range"][:, None] * shared(rng.standard_normal((N, nsat_all)))
+        e_ph = sig["phase"][:, None, None] * shared(rng.standard_normal((N, nsat_all, n_antennas)))
+        e_att = sig["attitude"][:, None] * shared(rng.standard_normal((N, 3)))
 
         # covariance prediction over the GPS interval
         C_hat = _k_dcm_from_quat_batch(quat)
