@@ -65,11 +65,12 @@ def tests(session: nox.Session) -> None:
 
     The whole suite runs on every core (pytest-xdist, ``-n auto``: two workers on CI's two
     cores; ``--dist loadgroup`` keeps the claims of one paper module, which share their model
-    runs, on one worker); ``nox -s tests -- ARGS`` passes ARGS to pytest instead (one process
-    unless ARGS ask for workers).
+    runs, on one worker) and prints its 25 slowest tests, so that CI's log says where its time
+    goes; ``nox -s tests -- ARGS`` passes ARGS to pytest instead (one process unless ARGS ask
+    for workers).
     """
     _install(session)
-    args = session.posargs or ["-q", "-n", "auto", "--dist", "loadgroup"]
+    args = session.posargs or ["-q", "-n", "auto", "--dist", "loadgroup", "--durations=25"]
     session.run("python", "-m", "pytest", *args, env=ONE_BLAS_THREAD)
 
 

@@ -13,7 +13,7 @@ re-derives from
 Conventions (every module follows them unless its docstring says otherwise)
 ---------------------------------------------------------------------------
 Units
-    SI inside the library: metres, seconds, radians, m/s^2, rad/s, watts, hertz. Every
+    SI inside the library: metres, seconds, radians, :math:`\mathrm{m/s^2}`, rad/s, watts, hertz. Every
     number a model function takes or returns is SI unless its name or docstring says
     otherwise, and then it says the unit: in the name (``sigma_a_ug``, ``bandwidth_hz``,
     ``cn0_dbhz``, ``mask_deg``) or in the parameter's docstring line.
@@ -21,8 +21,10 @@ Units
     the boundary, with the factors and functions of :mod:`navcore.units` (``x * units.FT``
     to go in, ``x / units.FT`` to come out; ``units.power_ratio_from_db``); a model never
     converts silently. Sensor noise follows one convention: angle random walk and velocity
-    random walk are root PSDs in SI, rad/sqrt(s) and (m/s)/sqrt(s) (``ImuSpec``); a datasheet
-    ARW in deg/sqrt(h) or deg/h/sqrt(Hz) goes through ``units.DEG_PER_SQRT_H`` or
+    random walk are root PSDs in SI, :math:`\mathrm{rad}/\sqrt{\mathrm{s}}` and
+    :math:`(\mathrm{m/s})/\sqrt{\mathrm{s}}` (``ImuSpec``); a datasheet ARW in
+    :math:`\mathrm{deg}/\sqrt{\mathrm{h}}` or :math:`\mathrm{deg/h}/\sqrt{\mathrm{Hz}}` goes
+    through ``units.DEG_PER_SQRT_H`` or
     ``units.DEG_PER_H_PER_SQRT_HZ`` (and
     :func:`navcore.inertial.imu.angle_random_walk_deg_per_sqrt_h` converts the one to the
     other). A value beyond what any sensor has (``ImuSpec(gyro_bias=1.0)``, 206 000 deg/h)
@@ -53,9 +55,10 @@ Attitude
     ``v_n = q ⊗ v_b ⊗ q*``; Euler angles are roll, pitch, yaw in the 3-2-1 (z-y-x) sequence,
     pitch in [-90, 90] deg. A quaternion that rotates must be a unit quaternion and a
     direction-cosine matrix a proper rotation (``C C^T = I``, ``det C = +1``), both to within
-    1e-6; the quaternion algebra (product, conjugate, normalisation) takes any quaternion.
+    :math:`10^{-6}`; the quaternion algebra (product, conjugate, normalisation) takes any quaternion.
 Attitude error
-    The attitude-error convention is C_hat = (I - [psi x]) C.
+    The attitude-error convention is :math:`\hat C = (I - [\psi\times])\,C`, with the error
+    defined as computed minus true (:mod:`navcore.inertial.error_dynamics`).
 Lines of sight
     The receiver (user, aircraft, observer) is the first argument and the satellites or
     targets the second; a line of sight is the unit vector from the receiver to the
@@ -114,7 +117,10 @@ Errors
     unchecked: with ``validate=False`` where a function offers it
     (:func:`navcore.estimation.kalman.kf_predict`), else through
     ``navcore._validate.unchecked`` (the Monte Carlo of
-    :mod:`navcore.estimation.ekf_ins_gnss`, the strapdown).
+    :mod:`navcore.estimation.ekf_ins_gnss`, the strapdown). Inputs each in range whose
+    combination the model does not cover (no four satellites stay above the mask along the
+    whole flight, for fixed channels) raise :class:`navcore.ModelDomainError`, a
+    ``ValueError`` a caller can tell apart.
 Parallel work
     Independent tasks (the ledger's claims, batches of Monte Carlo runs) go through one
     executor interface, :func:`navcore.parallel.run_tasks` (joblib: ``n_jobs=-1`` for every
@@ -135,5 +141,7 @@ figures
 
 from __future__ import annotations
 
-__all__ = ["__version__"]
+from navcore._validate import ModelDomainError
+
+__all__ = ["ModelDomainError", "__version__"]
 __version__ = "0.1.0"

@@ -608,3 +608,1815 @@ def zakai_barker13_of_ideal() -> float:
     from navcore.detection import zakai
 
     return float(zakai.psk_zakai_bandwidth(zakai.barker_code(13), 1.0) / 0.75)
+
+
+# --- model values: Wu & Fowler ---------------------------------------------------------------
+
+
+@register("wf01-mean-range-km", "wf/01-location-error", "mean aperture-to-emitter range of Sec. III (km)")
+def wf_mean_range_km() -> float:
+    """Mean aperture-to-emitter range over Wu & Fowler's Sec. III scenario track, in km."""
+    from navcore.papers import wf
+
+    return float(wf.mean_range() / 1e3)
+
+
+#: Seeded Gauss-Newton fits of the Sec. II Monte Carlo on the WF location-error page (a run
+#: count of the page's own check, not an input: the paper runs no Monte Carlo).
+WF01_LS_TRIALS = 400
+
+
+@register(
+    "wf01-sd-sampling-error-pct",
+    "wf/01-location-error",
+    "relative standard error of a standard deviation from the Sec. II Monte Carlo fits (%)",
+)
+def wf_sd_sampling_error_pct() -> float:
+    """Relative standard error 1/sqrt(2 n) of a standard deviation from n seeded fits, in percent."""
+    return float(100 / math.sqrt(2 * WF01_LS_TRIALS))
+
+
+@register(
+    "wf02-largest-bound-ratio",
+    "wf/02-velocity-sensitivity",
+    "largest ||df/dp|| over the Eq. (9) bound, random geometries",
+)
+@register("wf89-bound-ratio", "wf/89-summary", "largest ||df/dp|| over the Eq. (9) bound, random geometries")
+def wf_largest_bound_ratio() -> float:
+    """Largest ratio of ||df/dp|| to its bound, WF Eq. (9), over the seeded geometries."""
+    from navcore.papers import wf
+
+    return float(wf.position_bound_ratios().max())
+
+
+def _wf_dl_steady_state_example() -> Any:
+    """Steady state of WF Eq. (14) for the worked example's 100 ug accelerometer (Sec. IV.D)."""
+    from navcore.estimation.federated import accelerometer_steady_state_isotropic
+    from navcore.papers import wf
+
+    sa = wf.sigma_a_example()
+    return accelerometer_steady_state_isotropic(sa, wf.IN.ts, wf.IN.sigma_l_per_sigma_a * sa)
+
+
+@register("wf03-dl-gain", "wf/03-local-estimators", "steady-state gain of the Eq. (14) filter at 100 ug")
+def wf_dl_gain() -> float:
+    """Steady-state Kalman gain of WF Eq. (14) for the 100 ug accelerometer, sigma_L = 200 sigma_a."""
+    return float(_wf_dl_steady_state_example().gain)
+
+
+@register(
+    "wf03-dl-time-constant",
+    "wf/03-local-estimators",
+    "time constant T_s / K of the Eq. (14) filter at 100 ug (s)",
+)
+def wf_dl_time_constant() -> float:
+    """Time constant T_s / K of WF Eq. (14)'s steady-state filter for the 100 ug accelerometer, s."""
+    from navcore.papers import wf
+
+    return float(wf.IN.ts / _wf_dl_steady_state_example().gain)
+
+
+def _wf03_joint() -> tuple[list[Any], Any]:
+    """The page's worked joint covariance: local covariances (nav, DL, GPS with three satellites)
+    and the joint covariance of their errors (WF Eq. (20)), sigma_T = 2 m/s."""
+    import numpy as np
+
+    from navcore.papers import wf
+
+    sa = wf.sigma_a_example()
+    P_dn, P_dl, P_dg = wf.local_covariances(sa, wf.IN.sigma_t_large, n_sat=3)
+    ss = _wf_dl_steady_state_example()
+    I3 = np.eye(3)
+    H = wf.f_l1_over_c_printed() * I3
+    K_l = ss.gain * I3
+    K_g = P_dg @ H.T / wf.IN.sigma_g**2
+    maps = [
+        np.hstack([0 * I3, I3, 0 * I3, 0 * I3]),
+        np.hstack([I3 - K_l, 0 * I3, K_l, 0 * I3]),
+        np.hstack([I3 - K_g @ H, 0 * I3, 0 * I3, K_g]),
+    ]
+    S = np.zeros((12, 12))
+    blocks = [ss.prior * I3, P_dn, (wf.IN.sigma_l_per_sigma_a * sa) ** 2 * I3, wf.IN.sigma_g**2 * I3]
+    for j, block in enumerate(blocks):
+        S[3 * j : 3 * j + 3, 3 * j : 3 * j + 3] = block
+    A = np.vstack(maps)
+    return [P_dn, P_dl, P_dg], A @ S @ A.T
+
+
+@register(
+    "wf03-corr-dl-dg",
+    "wf/03-local-estimators",
+    "correlation of the accelerometer and GPS velocity errors per axis",
+)
+def wf_corr_dl_dg() -> float:
+    """Correlation between the accelerometer-filter and GPS-Doppler velocity errors on one axis
+    (both start from the same prior, WF Eqs. (14) and (16))."""
+    _, joint = _wf03_joint()
+    return float(joint[3, 6] / math.sqrt(joint[3, 3] * joint[6, 6]))
+
+
+@register(
+    "wf03-naive-optimism",
+    "wf/03-local-estimators",
+    "exact fused sigma (Eq. (20)) over the naive Eq. (19) sigma",
+)
+def wf_naive_optimism() -> float:
+    """How much larger the exact fused error (WF Eq. (20)) is than Eq. (19) claims, per axis."""
+    import numpy as np
+
+    from navcore.estimation.federated import federated_fusion, fused_error_covariance
+
+    Ps, joint = _wf03_joint()
+    exact = fused_error_covariance(Ps, joint)
+    _, naive = federated_fusion([np.zeros(3)] * 3, Ps)
+    return float(math.sqrt(exact[0, 0] / naive[0, 0]))
+
+
+@register(
+    "wf03-generic-tightness-rho1",
+    "wf/03-local-estimators",
+    "Eq. (23) bound over the true trace, generic covariances, rho = 1",
+)
+@register(
+    "wf89-rem2-generic", "wf/89-summary", "Eq. (23) bound over the true trace, generic covariances, rho = 1"
+)
+def wf_generic_tightness_rho1() -> float:
+    """Minkowski bound of WF Eq. (23) over the true fused trace, seeded generic covariances, rho = 1."""
+    from navcore.papers import wf
+
+    return float(wf.bound_tightness(1.0, "generic"))
+
+
+@register(
+    "wf03-isotropic-tightness-rho0",
+    "wf/03-local-estimators",
+    "Eq. (23) bound over the true trace, isotropic covariances, rho = 0",
+)
+def wf_isotropic_tightness_rho0() -> float:
+    """Minkowski bound of WF Eq. (23) over the true fused trace, isotropic covariances, uncorrelated."""
+    from navcore.papers import wf
+
+    return float(wf.bound_tightness(0.0, "isotropic"))
+
+
+#: The page's example of Eq. (11) with a large Q_T: a navigation sigma of 0.2 m/s per axis beside a
+#: 2 m/s flexure (tau = I), against no navigation error.
+WF03_LARGE_QT = (0.2, 2.0)
+
+
+@register(
+    "wf03-large-qt-change-pct",
+    "wf/03-local-estimators",
+    "change of sigma_DN when a 0.2 m/s navigation error joins a 2 m/s flexure (%)",
+)
+def wf_large_qt_change_pct() -> float:
+    """Relative change of the per-axis sigma of WF Eq. (11) when the navigation error is added to a
+    large flexure term, in percent."""
+    import numpy as np
+
+    from navcore.estimation.federated import navigation_mapped_covariance
+
+    sn, st = WF03_LARGE_QT
+    sd = [
+        math.sqrt(navigation_mapped_covariance(np.eye(3), s**2 * np.eye(3), st**2 * np.eye(3))[0, 0])
+        for s in (0.0, sn)
+    ]
+    return float(100 * (sd[1] / sd[0] - 1))
+
+
+@register(
+    "wf04-trace-reading-100ug-db",
+    "wf/04-assessment",
+    "Fig. 1 improvement at 100 ug, sigma_T = 2 m/s, read as a trace against one axis (dB)",
+)
+def wf_trace_reading_100ug_db() -> float:
+    """The 100 ug improvement of Fig. 1 (sigma_T = 2 m/s) plus the factor 3 of a trace read per axis, dB."""
+    from navcore.papers import wf
+
+    return float(wf.improvement_db(wf.sigma_a_example(), wf.IN.sigma_t_large) + 10 * math.log10(3))
+
+
+@register(
+    "wf04-prior-instead-shift-db",
+    "wf/04-assessment",
+    "largest change of a Fig. 1-2 curve if P_DL were the prior P_DL(k/k-1) (dB)",
+)
+def wf_prior_instead_shift_db() -> float:
+    """Largest change (dB) of a curve of WF Figs. 1-2 if the accelerometer's prior replaced its posterior."""
+    import numpy as np
+
+    from navcore.estimation.federated import accelerometer_steady_state_isotropic, minkowski_trace_bound
+    from navcore.papers import wf
+
+    shift = 0.0
+    for sa in wf.sigma_a_grid():
+        prior = accelerometer_steady_state_isotropic(sa, wf.IN.ts, wf.IN.sigma_l_per_sigma_a * sa).prior
+        for st in wf.sigma_t_values():
+            for ns in wf.SATELLITE_CASES:
+                Ps = wf.local_covariances(sa, st, ns)
+                alt = [Ps[0], prior * np.eye(3), *Ps[2:]]
+                shift = max(
+                    shift, abs(10 * math.log10(minkowski_trace_bound(alt) / minkowski_trace_bound(Ps)))
+                )
+    return float(shift)
+
+
+@register(
+    "wf04-sigma-dl-max",
+    "wf/04-assessment",
+    "steady-state sigma of the Eq. (14) filter at the 10 mm/s^2 end (m/s)",
+)
+def wf_sigma_dl_max() -> float:
+    """Steady-state per-axis sigma of WF Eq. (14) at the medium-resolution end of Sec. IV.D, m/s."""
+    from navcore.estimation.federated import accelerometer_steady_state_isotropic
+    from navcore.papers import wf
+
+    sa = wf.IN.sigma_a_high
+    return float(
+        math.sqrt(
+            accelerometer_steady_state_isotropic(sa, wf.IN.ts, wf.IN.sigma_l_per_sigma_a * sa).posterior
+        )
+    )
+
+
+@register("wf04-gps-velocity-sigma", "wf/04-assessment", "velocity sigma equivalent to sigma_G = 1 Hz (m/s)")
+def wf_gps_velocity_sigma() -> float:
+    """Line-of-sight velocity sigma equivalent to WF's 1 Hz GPS Doppler noise, m/s."""
+    from navcore.papers import wf
+
+    return float(wf.gps_doppler_velocity_sigma())
+
+
+@register(
+    "wf04-gps-velocity-over-sigma-n",
+    "wf/04-assessment",
+    "GPS-equivalent velocity sigma over the navigation sigma_N",
+)
+def wf_gps_velocity_over_sigma_n() -> float:
+    """The GPS-equivalent velocity sigma over WF's navigation velocity accuracy sigma_N."""
+    from navcore.papers import wf
+
+    return float(wf.gps_doppler_velocity_sigma() / wf.IN.sigma_n)
+
+
+@register(
+    "wf04-sigma-d-over-sigma-n",
+    "wf/04-assessment",
+    "fused bound at 100 ug, sigma_T = 2 m/s, over sigma_N",
+)
+def wf_sigma_d_over_sigma_n() -> float:
+    """Per-axis fused bound of WF Eq. (23) at 100 ug and sigma_T = 2 m/s over sigma_N."""
+    from navcore.papers import wf
+
+    return float(wf.sigma_d_bound(wf.sigma_a_example(), wf.IN.sigma_t_large) / wf.IN.sigma_n)
+
+
+@register(
+    "wf04-gps-gain-max-db", "wf/04-assessment", "largest GPS gain of Fig. 2 over Fig. 1, stated range (dB)"
+)
+@register("wf89-gps-gain", "wf/89-summary", "largest GPS gain of Fig. 2 over Fig. 1, stated range (dB)")
+def wf_gps_gain_max_db() -> float:
+    """Largest improvement (dB) the GPS estimate adds to the Fig. 1 bound: any sigma_T, one or three
+    satellites, the stated sigma_a range."""
+    import numpy as np
+
+    from navcore.papers import wf
+
+    c = wf.improvement_curves()
+    return float(max(np.max(c[(st, 0)] - c[(st, ns)]) for st in wf.sigma_t_values() for ns in wf.GPS_CASES))
+
+
+@register(
+    "wf04-three-vs-one-db",
+    "wf/04-assessment",
+    "largest difference of three satellites and one, sigma_T = 0 (dB)",
+)
+def wf_three_vs_one_db() -> float:
+    """Largest |three-satellite - one-satellite| difference of Fig. 2 at sigma_T = 0, stated range, dB."""
+    import numpy as np
+
+    from navcore.papers import wf
+
+    c = wf.improvement_curves()
+    st = wf.IN.sigma_t_small
+    return float(np.max(np.abs(c[(st, 3)] - c[(st, 1)])))
+
+
+#: The page's example of a severe accelerometer beyond the stated range, m/s^2.
+WF04_WIDE_SIGMA_A = 0.3
+
+
+@register(
+    "wf04-gps-gain-wide-db",
+    "wf/04-assessment",
+    "GPS gain with three satellites at 0.3 m/s^2 and sigma_T = 2 m/s (dB)",
+)
+def wf_gps_gain_wide_db() -> float:
+    """Improvement (dB) three satellites add at sigma_a = 0.3 m/s^2, sigma_T = 2 m/s."""
+    from navcore.papers import wf
+
+    st = wf.IN.sigma_t_large
+    return float(wf.improvement_db(WF04_WIDE_SIGMA_A, st, 0) - wf.improvement_db(WF04_WIDE_SIGMA_A, st, 3))
+
+
+@register(
+    "wf89-leverage-z",
+    "wf/89-summary",
+    "emitter error from a constant 1 m/s vertical velocity error over that from 1 m (s)",
+)
+def wf_leverage_z() -> float:
+    """Emitter-location error (WF Eq. (6)) from a constant 1 m/s aperture-velocity error along z
+    over that from a constant 1 m position error along z, s."""
+    from navcore.papers import wf
+
+    lev = wf.location_error_leverage()
+    return float(lev["bias_v"][2] / lev["bias_p"][2])
+
+
+@register(
+    "wf89-leverage-white",
+    "wf/89-summary",
+    "emitter error from independent 1 m/s velocity errors over that from 1 m errors (s)",
+)
+def wf_leverage_white() -> float:
+    """RMS emitter-location error (WF Eq. (6)) from independent 1 m/s velocity errors per axis and
+    sample over that from independent 1 m position errors, s."""
+    from navcore.papers import wf
+
+    lev = wf.location_error_leverage()
+    return float(lev["white_v"] / lev["white_p"])
+
+
+@register(
+    "wf89-eq13-ratio",
+    "wf/89-summary",
+    "final RMS error of Eq. (13) as printed over sqrt(P_DL(k/k))",
+)
+def wf_eq13_ratio() -> float:
+    """Final RMS error of WF Eq. (13) run as printed (seeded) over the Eq. (14) sigma."""
+    from navcore.papers import wf
+
+    return float(wf.eq13_printed_error_ratio())
+
+
+@register(
+    "wf89-eq20-block",
+    "wf/89-summary",
+    "largest entry of Eq. (20)'s printed block (2, 3) minus P_LG, over the largest of the joint",
+)
+def wf_eq20_block() -> float:
+    """How far WF Eq. (20)'s printed block (2, 3), P_NG, is from the L-G cross-covariance (seeded joint)."""
+    from navcore.papers import wf
+
+    return float(wf.eq20_printed_block_error())
+
+
+@register(
+    "wf89-eq24-ratio",
+    "wf/89-summary",
+    "sigma_DN of Eq. (24) read literally, computed in cm/s over computed in m/s",
+)
+def wf_eq24_ratio() -> float:
+    """WF Eq. (24) read literally: sigma_DN computed in cm/s (converted) over sigma_DN computed in m/s."""
+    from navcore.papers import wf
+
+    return float(wf.eq24_literal_unit_ratio())
+
+
+# --- model values: Wu & Fowler's worked example (a seeded simulation of 20 flights) -----------
+
+
+@register(
+    "wf05-sigma-dl", "wf/05-end-to-end", "steady-state sigma of the accelerometer filter at 100 ug (m/s)"
+)
+def wf05_sigma_dl() -> float:
+    """Steady-state per-axis sigma of the worked example's accelerometer filter (WF Eq. (14)), m/s."""
+    from navcore.papers import wf_example as ex
+
+    return float(ex.run()["sigma_dl"])
+
+
+@register(
+    "wf05-vib-rms", "wf/05-end-to-end", "RMS vertical velocity of the simulated wing-tip vibration (m/s)"
+)
+def wf05_vib_rms() -> float:
+    """RMS of the vertical aperture velocity the worked example's vibration adds, over its flights, m/s."""
+    from navcore.papers import wf_example as ex
+
+    return float(ex.run()["vib_rms"])
+
+
+@register(
+    "wf05-uz",
+    "wf/05-end-to-end",
+    "RMS vertical component of the unit line of sight over the Sec. II turn",
+)
+def wf05_uz_rms() -> float:
+    """RMS over the Sec. II turn's samples of the vertical component of the unit line of sight."""
+    import numpy as np
+
+    from navcore.papers import wf
+
+    _, pos, _ = wf.orbit()
+    u_z = np.abs(pos[:, 2] - wf.EMITTER[2]) / np.linalg.norm(pos - wf.EMITTER, axis=1)
+    return float(np.sqrt(np.mean(u_z**2)))
+
+
+@register(
+    "wf05-freq-err",
+    "wf/05-end-to-end",
+    "RMS frequency error from the vibration along the line of sight (Hz)",
+)
+def wf05_freq_err() -> float:
+    """Frequency error (Hz RMS) the unseen vertical vibration causes: f0/c times its RMS velocity times
+    the RMS vertical line-of-sight component."""
+    from navcore import units
+    from navcore.papers import wf
+
+    return float(wf.F0 / units.C * wf05_vib_rms() * wf05_uz_rms())
+
+
+@register(
+    "wf05-freq-err-over-noise",
+    "wf/05-end-to-end",
+    "the vibration's frequency error over the frequency measurement noise",
+)
+def wf05_freq_err_over_noise() -> float:
+    """The vibration's RMS frequency error over the 1 Hz frequency-measurement noise."""
+    from navcore.papers import wf
+
+    return float(wf05_freq_err() / wf.SIGMA_F)
+
+
+#: The page's Euler illustration: 60 s of a sinusoid sampled at T_s.
+WF05_EULER_SECONDS = 60.0
+
+
+@register(
+    "wf05-euler-point-rms",
+    "wf/05-end-to-end",
+    "RMS error of Euler-integrating point samples of the vibration's acceleration (m/s)",
+)
+def wf05_euler_point_rms() -> float:
+    """Standard deviation of the velocity error when point samples of a sinusoidal acceleration (the
+    vibration's frequency and RMS velocity) are Euler-integrated at T_s for 60 s, m/s."""
+    import numpy as np
+
+    from navcore.papers import wf_example as ex
+
+    ts, f_vib = ex.IN.ts, ex.IN.vib_hz
+    t = np.arange(round(WF05_EULER_SECONDS / ts) + 1) * ts
+    amp = math.sqrt(2) * wf05_vib_rms()
+    v_true = amp * np.sin(2 * np.pi * f_vib * t)
+    a_point = amp * 2 * np.pi * f_vib * np.cos(2 * np.pi * f_vib * t)
+    v_euler = np.concatenate([[0.0], np.cumsum(a_point[:-1] * ts)])
+    return float(np.std(v_euler - v_true))
+
+
+def _wf05_velocity_rms(case: str) -> float:
+    import numpy as np
+
+    from navcore.papers import wf_example as ex
+
+    return float(np.sqrt(np.mean(ex.run()["vel_err"][case] ** 2)))
+
+
+@register(
+    "wf05-fed-vel-mm",
+    "wf/05-end-to-end",
+    "RMS per axis of the federated aperture-velocity error over the flights (mm/s)",
+)
+def wf05_fed_vel_mm() -> float:
+    """RMS per axis of the worked example's federated aperture-velocity error, mm/s."""
+    return 1e3 * _wf05_velocity_rms("federated")
+
+
+@register(
+    "wf05-vel-gain-db",
+    "wf/05-end-to-end",
+    "navigation-only over federated velocity RMS (dB)",
+)
+def wf05_vel_gain_db() -> float:
+    """20 log10 of the navigation-only over the federated velocity RMS of the worked example, dB."""
+    return float(20 * math.log10(_wf05_velocity_rms("navigation") / _wf05_velocity_rms("federated")))
+
+
+# --- model values: ATC-10 Section 2, the jamming model's thresholds ---------------------------
+
+
+@register(
+    "atc10-pf-k1000-0.999",
+    "atc10/10-jamming-model",
+    "per-filter false-alarm probability at the N_ADL threshold, K = 1000, P_DL = 0.999",
+)
+def atc10_pf_k1000_0999() -> float:
+    """p_f at the t = 0 N_ADL = 0.01 N_T threshold for K = 1000, P_DL = 0.999 (ATC-10 Sec. 2.5)."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(math.exp(pj.threshold_log_pf(0.999, 1000)))
+
+
+@register(
+    "atc10-10-pf-K1-0.88",
+    "atc10/10-jamming-model",
+    "per-filter false-alarm probability at the N_ADL threshold, K = 1, P_DL = 0.88",
+)
+@register(
+    "atc10-pf-threshold-K1-0.88",
+    "atc10/14-monte-carlo",
+    "per-filter false-alarm probability at the N_ADL threshold, K = 1, P_DL = 0.88",
+)
+def atc10_pf_k1_088() -> float:
+    """p_f at the t = 0 N_ADL = 0.01 N_T threshold for K = 1, P_DL = 0.88 (ATC-10 Sec. 2.5)."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(math.exp(pj.threshold_log_pf(0.88, 1)))
+
+
+@register(
+    "atc10-10-printed-c1-ln-K1-0.88",
+    "atc10/10-jamming-model",
+    "2 B alpha ln(1 - p_f) at the K = 1, P_DL = 0.88 threshold (the printed (C.1)'s exponent)",
+)
+def atc10_printed_c1_ln_k1_088() -> float:
+    """The exponent 2 B alpha ln(1 - p_f) of (C.1) at the K = 1, P_DL = 0.88 threshold."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.geometry().samples_per_period * math.log1p(-atc10_pf_k1_088()))
+
+
+@register(
+    "atc10-erp-half-K{k}-{p_dl}",
+    "atc10/10-jamming-model",
+    "jammer ERP at which N_ADL reaches 0.01 N_T with half as many independent samples (dBW)",
+)
+def atc10_erp_half_samples(k: str, p_dl: str) -> float:
+    """Jammer ERP (dBW) of the t = 0 N_ADL threshold when every window holds half the samples."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.adl_erp_dbw_half_samples(float(p_dl), int(k)))
+
+
+#: The design points of the page's half-samples sensitivity: K = 1 over its P_DL grid, K = 10 at
+#: Table 2.1's two P_DL.
+ATC10_HALF_SHIFT_POINTS = ((1, (0.88, 0.9, 0.99, 0.999)), (10, (0.88, 0.999)))
+
+
+@register(
+    "atc10-half-shift-small-k",
+    "atc10/10-jamming-model",
+    "largest rise of the N_ADL threshold with half the samples, K = 1 and 10 (dB)",
+)
+def atc10_half_shift_small_k() -> float:
+    """Largest rise (dB) of the t = 0 N_ADL threshold when the sample counts are halved, K = 1 and 10."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(
+        max(
+            pj.adl_erp_dbw_half_samples(p, k) - pj.required_erp_dbw("ambiguous", p, k)
+            for k, ps in ATC10_HALF_SHIFT_POINTS
+            for p in ps
+        )
+    )
+
+
+@register(
+    "atc10-pdl-factor-shift",
+    "atc10/10-jamming-model",
+    "largest drop of the N_ADL threshold without the P_DL factor of (2.5.12) (dB)",
+)
+def atc10_pdl_factor_shift() -> float:
+    """Largest drop (dB) of the N_ADL threshold when the P_DL factor of (2.5.12) is dropped."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.max_pdl_factor_shift_db())
+
+
+@register(
+    "atc10-v-alpha-over-c-us",
+    "atc10/10-jamming-model",
+    "v alpha / c, the delay an aircraft's motion adds over a repetition period (us)",
+)
+def atc10_v_alpha_over_c_us() -> float:
+    """v alpha / c of ATC-10's scenario (the largest speed over a repetition period), in microseconds."""
+    from navcore import units
+    from navcore.papers import atc10_jamming as pj
+
+    g = pj.geometry()
+    return float(g.max_speed_m_s * g.repetition_s / units.C * 1e6)
+
+
+@register(
+    "atc10-11-adl-erp-0.9",
+    "atc10/11-single-pulse",
+    "jammer ERP at which N_ADL reaches 0.01 N_T, K = 1, P_DL = 0.9 (dBW)",
+)
+def atc10_11_adl_erp_09() -> float:
+    """Jammer ERP (dBW) of the t = 0 N_ADL threshold for K = 1, P_DL = 0.9 (Fig. 2.1)."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.required_erp_dbw("ambiguous", 0.9, 1))
+
+
+def _atc10_k1_gap(quantity: str) -> float:
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.required_erp_dbw(quantity, 0.9, 1) - pj.required_erp_dbw(quantity, 0.999, 1))
+
+
+@register(
+    "atc10-11-gap-adl",
+    "atc10/11-single-pulse",
+    "N_ADL threshold at P_DL = 0.9 minus that at 0.999, K = 1 (dB)",
+)
+def atc10_11_gap_adl() -> float:
+    """How much more ERP the N_ADL threshold needs at P_DL = 0.9 than at 0.999, K = 1, dB."""
+    return _atc10_k1_gap("ambiguous")
+
+
+@register(
+    "atc10-11-fl-level-spread",
+    "atc10/11-single-pulse",
+    "N_FL threshold at 99.9 % of its supremum minus that at 50 %, K = 1, P_DL = 0.88 (dB)",
+)
+def atc10_11_fl_level_spread() -> float:
+    """Width (dB) of the N_FL rise: the threshold at 99.9 % of the supremum 0.9 N_T minus that at
+    50 %, K = 1, P_DL = 0.88 (t = 0)."""
+    from navcore.detection import jamming as jm
+    from navcore.papers import atc10_jamming as pj
+
+    g = pj.geometry()
+    p_d = pj.design_p_d(0.88, 1)
+    sup = 1.0 - g.airborne_fraction
+    x50, x999 = (jm.jammer_ratio_threshold_db("false", f * sup, p_d, 1, 0.0, g) for f in (0.5, 0.999))
+    return float(x999 - x50)
+
+
+# --- ATC-10 Sec. 2.8, the tracking lists (Table 2.1) ------------------------------------------
+
+
+def _atc10_x_db(p_dl: float, k: int, geometry: Any = None) -> float:
+    """10 log10 J/(P0 B tau) of the t = 0 N_ADL = 0.01 N_T threshold."""
+    from navcore.detection import jamming as jm
+    from navcore.papers import atc10_jamming as pj
+
+    g = pj.geometry() if geometry is None else geometry
+    return float(
+        jm.jammer_ratio_threshold_db("ambiguous", pj.IN.adl_level, pj.design_p_d(p_dl, k), k, 0.0, g)
+    )
+
+
+@register(
+    "atc10-12-fig2.4-x",
+    "atc10/12-tracking-lists",
+    "J/(P0 B tau) of the N_ADL threshold, K = 10, P_DL = 0.88 (dB)",
+)
+def atc10_12_fig24_x() -> float:
+    """10 log10 J/(P0 B tau) at which N_ADL reaches 0.01 N_T, K = 10, P_DL = 0.88 (Fig. 2.4)."""
+    return _atc10_x_db(0.88, 10)
+
+
+@register(
+    "atc10-12-fig2.16-x",
+    "atc10/12-tracking-lists",
+    "J/(P0 B tau) of the N_ADL threshold, K = 1000, P_DL = 0.999 (dB)",
+)
+def atc10_12_fig216_x() -> float:
+    """10 log10 J/(P0 B tau) at which N_ADL reaches 0.01 N_T, K = 1000, P_DL = 0.999 (Fig. 2.16)."""
+    return _atc10_x_db(0.999, 1000)
+
+
+@register(
+    "atc10-12-ceiling-K1000-{p_dl}",
+    "atc10/12-tracking-lists",
+    "supremum of N_ADL / N_T as the jammer grows, K = 1000",
+)
+def atc10_12_ceiling_k1000(p_dl: str) -> float:
+    """Supremum of the N_ADL bound (2.5.12) over jammer power (p_f -> p_d), K = 1000, t = 0."""
+    from navcore.detection import jamming as jm
+    from navcore.papers import atc10_jamming as pj
+
+    return float(
+        math.exp(
+            jm.log_ambiguous_detection_ceiling(pj.design_p_d(float(p_dl), 1000), 1000, 0.0, pj.geometry())
+        )
+    )
+
+
+def _atc10_threshold_pf(quantity: str, p_dl: float, k: int) -> float:
+    """p_f at the t = 0 threshold of ``quantity`` for the design point (P_DL, K)."""
+    from navcore.detection import jamming as jm
+    from navcore.detection import neyman_pearson as npd
+    from navcore.papers import atc10_jamming as pj
+
+    g = pj.geometry()
+    x_db = pj.required_erp_dbw(quantity, p_dl, k) - float(
+        jm.jammer_erp_dbw(0.0, g.pulse_energy_j, g.bandwidth_hz)
+    )
+    return float(
+        npd.false_alarm_probability(
+            pj.design_p_d(p_dl, k), npd.detection_index_from_jammer_ratio(10 ** (x_db / 10))
+        )
+    )
+
+
+def _atc10_fl_erps() -> list[float]:
+    from navcore.papers import atc10_jamming as pj
+
+    return [float(pj.required_erp_dbw("false", p, k)) for k, p, _, _ in pj.TABLE_2_1]
+
+
+@register(
+    "atc10-12-fl-erp-lo", "atc10/12-tracking-lists", "lowest N_FL threshold over Table 2.1's rows (dBW)"
+)
+def atc10_12_fl_erp_lo() -> float:
+    """Lowest t = 0 N_FL threshold (jammer ERP, dBW) over Table 2.1's design points."""
+    return min(_atc10_fl_erps())
+
+
+@register(
+    "atc10-12-fl-erp-hi", "atc10/12-tracking-lists", "highest N_FL threshold over Table 2.1's rows (dBW)"
+)
+def atc10_12_fl_erp_hi() -> float:
+    """Highest t = 0 N_FL threshold (jammer ERP, dBW) over Table 2.1's design points."""
+    return max(_atc10_fl_erps())
+
+
+@register(
+    "atc10-12-fl-pf", "atc10/12-tracking-lists", "median p_f at the N_FL thresholds of Table 2.1's rows"
+)
+def atc10_12_fl_pf() -> float:
+    """Median per-filter p_f at the t = 0 N_FL thresholds of Table 2.1's design points."""
+    import numpy as np
+
+    from navcore.papers import atc10_jamming as pj
+
+    return float(np.median([_atc10_threshold_pf("false", p, k) for k, p, _, _ in pj.TABLE_2_1]))
+
+
+def _atc10_adl_pfs() -> list[float]:
+    from navcore.papers import atc10_jamming as pj
+
+    return [_atc10_threshold_pf("ambiguous", p, k) for k, p, _, rel in pj.TABLE_2_1 if rel == "="]
+
+
+@register(
+    "atc10-12-adl-pf-lo", "atc10/12-tracking-lists", "lowest p_f at the finite N_ADL thresholds of Table 2.1"
+)
+def atc10_12_adl_pf_lo() -> float:
+    """Lowest per-filter p_f at the finite t = 0 N_ADL thresholds of Table 2.1."""
+    return min(_atc10_adl_pfs())
+
+
+@register(
+    "atc10-12-adl-pf-hi", "atc10/12-tracking-lists", "highest p_f at the finite N_ADL thresholds of Table 2.1"
+)
+def atc10_12_adl_pf_hi() -> float:
+    """Highest per-filter p_f at the finite t = 0 N_ADL thresholds of Table 2.1."""
+    return max(_atc10_adl_pfs())
+
+
+@register(
+    "atc10-12-k1000-critical",
+    "atc10/12-tracking-lists",
+    "smallest P_DL at which the K = 1000 N_ADL ceiling reaches 0.01 N_T",
+)
+def atc10_12_k1000_critical() -> float:
+    """Smallest P_DL whose K = 1000 N_ADL ceiling reaches 0.01 N_T (t = 0)."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.k1000_critical_p_dl())
+
+
+@register(
+    "atc10-12-erp-K1000-0.999",
+    "atc10/12-tracking-lists",
+    "jammer ERP at which N_ADL reaches 0.01 N_T, K = 1000, P_DL = 0.999 (dBW)",
+)
+def atc10_12_erp_k1000_0999() -> float:
+    """Jammer ERP (dBW) of the t = 0 N_ADL threshold for K = 1000, P_DL = 0.999 (Table 2.1)."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.required_erp_dbw("ambiguous", 0.999, 1000))
+
+
+def _atc10_printed_k1000_0999() -> float:
+    from navcore.papers import atc10_jamming as pj
+
+    return float(next(text for k, p, text, _ in pj.TABLE_2_1 if (k, p) == (1000, 0.999)))
+
+
+@register(
+    "atc10-12-K1000-below-printed",
+    "atc10/12-tracking-lists",
+    "how far the K = 1000, P_DL = 0.999 threshold lies below Table 2.1's 77 dBW (dB)",
+)
+def atc10_12_k1000_below_printed() -> float:
+    """Table 2.1's printed K = 1000, P_DL = 0.999 entry minus the computed threshold, dB."""
+    return _atc10_printed_k1000_0999() - atc10_12_erp_k1000_0999()
+
+
+def _atc10_ln_adl_k1000_0999(erp_dbw: float) -> float:
+    from navcore.detection import jamming as jm
+    from navcore.papers import atc10_jamming as pj
+
+    g = pj.geometry()
+    erp0 = float(jm.jammer_erp_dbw(0.0, g.pulse_energy_j, g.bandwidth_hz))
+    return float(
+        jm.log_ambiguous_detection_bound(
+            10 ** ((erp_dbw - erp0) / 10), pj.design_p_d(0.999, 1000), 1000, 0.0, g
+        )
+    )
+
+
+@register(
+    "atc10-12-K1000-slope",
+    "atc10/12-tracking-lists",
+    "slope of ln N_ADL at the K = 1000, P_DL = 0.999 crossing (per dB)",
+)
+def atc10_12_k1000_slope() -> float:
+    """d ln N_ADL / d ERP at the K = 1000, P_DL = 0.999 crossing, by a +-0.01 dB difference, per dB."""
+    erp = atc10_12_erp_k1000_0999()
+    return (_atc10_ln_adl_k1000_0999(erp + 0.01) - _atc10_ln_adl_k1000_0999(erp - 0.01)) / 0.02
+
+
+@register(
+    "atc10-12-K1000-misread-pct",
+    "atc10/12-tracking-lists",
+    "N_ADL at the printed 77 dBW over the 0.01 N_T level, minus 1 (%)",
+)
+def atc10_12_k1000_misread_pct() -> float:
+    """How far above the 0.01 N_T level N_ADL is at Table 2.1's printed 77 dBW (K = 1000, 0.999), %."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(
+        100 * (math.exp(_atc10_ln_adl_k1000_0999(_atc10_printed_k1000_0999())) / pj.IN.adl_level - 1)
+    )
+
+
+def _atc10_nv23_shifts() -> dict[tuple[int, float], float]:
+    """Shift (dB) of each finite Table 2.1 threshold when the (C.14) window holds 23 samples (the
+    mean 23.86 rounded down: the speed scaled, the other counts unchanged)."""
+    import dataclasses
+
+    from navcore.papers import atc10_jamming as pj
+
+    g = pj.geometry()
+    geom_23 = dataclasses.replace(g, max_speed_m_s=g.max_speed_m_s * 23 / g.samples_per_track_window)
+    return {
+        (k, p): _atc10_x_db(p, k, geom_23) - _atc10_x_db(p, k) for k, p, _, rel in pj.TABLE_2_1 if rel == "="
+    }
+
+
+@register(
+    "atc10-12-nv23-K1000-0.999",
+    "atc10/12-tracking-lists",
+    "the K = 1000, P_DL = 0.999 threshold with n_v = 23 (dBW)",
+)
+def atc10_12_nv23_k1000_0999() -> float:
+    """Jammer ERP (dBW) of the K = 1000, P_DL = 0.999 threshold with 23 samples in the (C.14) window."""
+    return atc10_12_erp_k1000_0999() + _atc10_nv23_shifts()[(1000, 0.999)]
+
+
+@register(
+    "atc10-12-nv23-small-k",
+    "atc10/12-tracking-lists",
+    "largest shift of a K <= 100 Table 2.1 threshold with n_v = 23 (dB)",
+)
+def atc10_12_nv23_small_k() -> float:
+    """Largest |shift| (dB) of the finite K <= 100 Table 2.1 thresholds with n_v = 23 in (C.14)."""
+    return max(abs(v) for (k, _), v in _atc10_nv23_shifts().items() if k <= 100)
+
+
+@register(
+    "atc10-12-erf-coef-model",
+    "atc10/12-tracking-lists",
+    "coefficient of sqrt(P0 B tau / J) in the erf argument of p_f (the detector model)",
+)
+def atc10_12_erf_coef_model() -> float:
+    """The coefficient c of p_f = 1/2 - 1/2 erf(c sqrt(P0 B tau / J) - phi) in navcore's detector model."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.erf_argument_coefficient())
+
+
+@register(
+    "atc10-12-erf-coef-mc",
+    "atc10/12-tracking-lists",
+    "the erf argument's coefficient from a seeded Monte Carlo of the matched filter",
+)
+def atc10_12_erf_coef_mc() -> float:
+    """The erf argument's coefficient recovered from a seeded Monte Carlo of matched-filter samples."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.monte_carlo_erf_coefficient())
+
+
+# --- ATC-10 Sec. 1.1, Table 1.1 (transmission lengths) ----------------------------------------
+
+
+@register(
+    "atc10-erp-by-K-{k}-{p_dl}",
+    "atc10/13-tables",
+    "jammer ERP at which N_ADL reaches 0.01 N_T for Table 1.1's K (dBW; inf: never)",
+)
+def atc10_erp_by_k(k: str, p_dl: str) -> float:
+    """Jammer ERP (dBW) of the t = 0 N_ADL threshold for Table 1.1's K (``inf`` where none is reached)."""
+    from navcore.papers import atc10_jamming as pj
+
+    erps = pj.erp_by_transmission_length(float(p_dl))
+    return float(erps[pj.TABLE_1_1_KS.index(int(k))])
+
+
+@register(
+    "atc10-ceiling-K1000-0.88",
+    "atc10/13-tables",
+    "supremum of N_ADL / N_T as the jammer grows, K = 1000, P_DL = 0.88",
+)
+def atc10_13_ceiling_k1000_088() -> float:
+    """Supremum of the N_ADL bound over jammer power, K = 1000, P_DL = 0.88, t = 0."""
+    return atc10_12_ceiling_k1000("0.88")
+
+
+@register(
+    "atc10-step-K100-K1000-0.999",
+    "atc10/13-tables",
+    "N_ADL threshold of K = 1000 minus that of K = 100, P_DL = 0.999 (dB)",
+)
+def atc10_step_k100_k1000_0999() -> float:
+    """How much more ERP the t = 0 N_ADL threshold needs at K = 1000 than at K = 100, P_DL = 0.999, dB."""
+    from navcore.papers import atc10_jamming as pj
+
+    erps = pj.erp_by_transmission_length(0.999)
+    ks = pj.TABLE_1_1_KS
+    return float(erps[ks.index(1000)] - erps[ks.index(100)])
+
+
+def _atc10_table11_misfits() -> tuple[list[float], list[float]]:
+    """|printed - model| of Table 1.1's rf column (dB) and beamwidth column (deg), by row."""
+    from navcore.papers import atc10_jamming as pj
+
+    rf = [abs(r - pj.table11_rf_dbw(i)) for i, (_, _, r, _, _) in enumerate(pj.TABLE_1_1)]
+    bw = [abs(b - pj.table11_beamwidth_deg(i)) for i, (*_, b) in enumerate(pj.TABLE_1_1)]
+    return rf, bw
+
+
+@register(
+    "atc10-13-rf-fit-K10",
+    "atc10/13-tables",
+    "misfit of the dish model to Table 1.1's K = 10 rf power (dB)",
+)
+def atc10_13_rf_fit_k10() -> float:
+    """|printed - model| rf power of Table 1.1's K = 10 row with the assumed dish, dB."""
+    from navcore.papers import atc10_jamming as pj
+
+    return _atc10_table11_misfits()[0][pj.TABLE_1_1_KS.index(10)]
+
+
+@register(
+    "atc10-13-rf-fit-others",
+    "atc10/13-tables",
+    "largest misfit of the dish model to Table 1.1's other rf powers (dB)",
+)
+def atc10_13_rf_fit_others() -> float:
+    """Largest |printed - model| rf power of Table 1.1's rows other than K = 10, dB."""
+    from navcore.papers import atc10_jamming as pj
+
+    i10 = pj.TABLE_1_1_KS.index(10)
+    return max(m for i, m in enumerate(_atc10_table11_misfits()[0]) if i != i10)
+
+
+@register(
+    "atc10-13-bw-K1-dish",
+    "atc10/13-tables",
+    "beamwidth 70 lambda / D of the dish for Table 1.1's K = 1 gain (deg)",
+)
+def atc10_13_bw_k1_dish() -> float:
+    """Beamwidth (deg) 70 lambda / D of the assumed dish with the K = 1 row's gain (ERP - rf)."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.table11_beamwidth_deg(0))
+
+
+@register(
+    "atc10-13-bw-K1-scaled",
+    "atc10/13-tables",
+    "Sec. 2.7's 20 deg scaled to Table 1.1's K = 1 gain (deg)",
+)
+def atc10_13_bw_k1_scaled() -> float:
+    """Sec. 2.7's printed 20 deg beamwidth scaled by sqrt of the gain ratio to the K = 1 row, deg."""
+    from navcore.papers import atc10_jamming as pj
+
+    return float(pj.table11_k1_beamwidth_scaled_deg())
+
+
+@register(
+    "atc10-13-bw-fit-others",
+    "atc10/13-tables",
+    "largest misfit of 70 lambda / D to Table 1.1's K = 10-1000 beamwidths (deg)",
+)
+def atc10_13_bw_fit_others() -> float:
+    """Largest |printed - 70 lambda / D| beamwidth of Table 1.1's rows K = 10, 100, 1000, deg."""
+    return max(_atc10_table11_misfits()[1][1:])
+
+
+def _atc10_sec27_gain() -> float:
+    """Sec. 2.7's antenna gain, the nominal ERP over the rf power, as a ratio."""
+    from navcore import units
+    from navcore.papers import atc10_jamming as pj
+
+    return float(units.power_ratio_from_db(pj.IN.nominal_erp_dbw - units.dbw_from_watts(pj.IN.nominal_rf_w)))
+
+
+@register(
+    "atc10-13-30W-gain-db",
+    "atc10/13-tables",
+    "antenna gain that takes 30 W to 33 dBW (dB)",
+)
+def atc10_13_30w_gain_db() -> float:
+    """Gain (dB) of Sec. 2.7's antenna: 33 dBW of ERP from 30 W of rf power."""
+    return float(10 * math.log10(_atc10_sec27_gain()))
+
+
+def _atc10_2ft_gain_db() -> float:
+    from navcore import units
+    from navcore.detection import antenna
+    from navcore.papers import atc10_jamming as pj
+
+    return float(
+        10
+        * math.log10(float(antenna.dish_gain(2 * units.FT, pj.IN.dish_frequency_hz, pj.IN.dish_efficiency)))
+    )
+
+
+@register(
+    "atc10-13-2ft-gain-db",
+    "atc10/13-tables",
+    "gain of a 2 ft dish at the assumed frequency and efficiency (dB)",
+)
+def atc10_13_2ft_gain_db() -> float:
+    """Gain (dB) of a 2 ft dish at the assumed frequency and efficiency of Table 1.1's dishes."""
+    return _atc10_2ft_gain_db()
+
+
+@register(
+    "atc10-13-2ft-rf-w",
+    "atc10/13-tables",
+    "rf power a 2 ft dish needs for 33 dBW (W)",
+)
+def atc10_13_2ft_rf_w() -> float:
+    """rf power (W) that gives Sec. 2.7's 33 dBW through a 2 ft dish."""
+    from navcore import units
+    from navcore.papers import atc10_jamming as pj
+
+    return float(units.power_ratio_from_db(pj.IN.nominal_erp_dbw - _atc10_2ft_gain_db()))
+
+
+# --- ATC-10 Appendix B-C checked by simulation: a window of correlated samples -----------------
+
+
+def _atc10_window_rates() -> Any:
+    from navcore.papers import atc10_jamming_mc as mc
+
+    return mc.simulate_window_declarations()
+
+
+def _atc10_window_ratio(index: int) -> float:
+    w = _atc10_window_rates()
+    return float(w.empty_correlated[index] / w.empty_formula[index])
+
+
+@register(
+    "atc10-mc-window-ratio-hi",
+    "atc10/14-monte-carlo",
+    "simulated empty-window probability, correlated samples, over (1 - p_f)^n at the largest p_f",
+)
+def atc10_mc_window_ratio_hi() -> float:
+    """Simulated empty-window probability of correlated samples over (1 - p_f)^n, largest p_f."""
+    import numpy as np
+
+    return _atc10_window_ratio(int(np.argmax(_atc10_window_rates().p_f)))
+
+
+@register(
+    "atc10-mc-window-ratio-lo",
+    "atc10/14-monte-carlo",
+    "simulated empty-window probability, correlated samples, over (1 - p_f)^n at the smallest p_f",
+)
+def atc10_mc_window_ratio_lo() -> float:
+    """Simulated empty-window probability of correlated samples over (1 - p_f)^n, smallest p_f."""
+    return _atc10_window_ratio(0)
+
+
+@register(
+    "atc10-mc-window-dln-k1000",
+    "atc10/14-monte-carlo",
+    "change of ln N_ADL at K = 1000 with (C.14)'s track-window factors at the simulated correlated value",
+)
+def atc10_mc_window_dln_k1000() -> float:
+    """3 (K - 1) [ln(1 - e_c) - ln(1 - e_f)] at K = 1000 and the largest simulated p_f: how ln N_ADL
+    moves if the track-window factors of (C.14) used the simulated correlated empty probability e_c."""
+    import numpy as np
+
+    w = _atc10_window_rates()
+    i = int(np.argmax(w.p_f))
+    return float(3 * 999 * (math.log1p(-w.empty_correlated[i]) - math.log1p(-w.empty_formula[i])))
+
+
+@register(
+    "atc10-mc-window-factor-k1000",
+    "atc10/14-monte-carlo",
+    "factor on N_ADL at K = 1000 from the simulated correlated window",
+)
+def atc10_mc_window_factor_k1000() -> float:
+    """exp of :func:`atc10_mc_window_dln_k1000`: the factor on N_ADL at K = 1000."""
+    return float(math.exp(atc10_mc_window_dln_k1000()))
+
+
+# --- ATC-10 Sec. 3.9 and App. F: the Zakai bandwidth of PSK codes -----------------------------
+
+#: The page's Appendix F example: a 31-chip random wanted code and four random interferers (seed 1).
+ATC10_F5_CHIPS, ATC10_F5_INTERFERERS, ATC10_F5_SEED = 31, 4, 1
+#: The page's random 1023-chip codes: 20 of them, seed 3.
+ATC10_RANDOM_CODES, ATC10_RANDOM_SEED = 20, 3
+
+
+def _atc10_f5_codes() -> tuple[Any, list[Any]]:
+    import numpy as np
+
+    rng = np.random.default_rng(ATC10_F5_SEED)
+    ci = rng.choice([-1.0, 1.0], ATC10_F5_CHIPS)
+    return ci, [rng.choice([-1.0, 1.0], ATC10_F5_CHIPS) for _ in range(ATC10_F5_INTERFERERS)]
+
+
+@register(
+    "atc10-23-f5-power",
+    "atc10/23-zakai-bandwidth",
+    "cross-term noise power of (F.6) for the page's random 31-chip codes (alpha = chip = 1)",
+)
+def atc10_23_f5_power() -> float:
+    """E(n^2) of ATC-10 Eq. (F.6), (1 / 2 alpha) sum_j int R_ii R_jj, for the page's seeded codes."""
+    from navcore.detection import zakai
+
+    ci, cjs = _atc10_f5_codes()
+    return float(zakai.cross_term_noise_power(ci, cjs, 1.0, 1.0))
+
+
+@register(
+    "atc10-23-f5-bound",
+    "atc10/23-zakai-bandwidth",
+    "the Zakai-bandwidth bound on that noise power (alpha = chip = 1)",
+)
+def atc10_23_f5_bound() -> float:
+    """sum_j 1 / (4 alpha sqrt(W_i W_j)), the bound of App. F through the codes' Zakai bandwidths."""
+    from navcore.detection import zakai
+
+    ci, cjs = _atc10_f5_codes()
+    return float(
+        zakai.zakai_noise_power_bound(
+            zakai.psk_zakai_bandwidth(ci, 1.0), [zakai.psk_zakai_bandwidth(c, 1.0) for c in cjs], 1.0
+        )
+    )
+
+
+@register(
+    "atc10-23-w-random-1023",
+    "atc10/23-zakai-bandwidth",
+    "mean Zakai bandwidth of 20 random 1023-chip codes (per chip rate)",
+)
+def atc10_23_w_random_1023() -> float:
+    """Mean Zakai bandwidth (unit chips) of the page's 20 seeded random 1023-chip codes."""
+    import numpy as np
+
+    from navcore.detection import zakai
+
+    rng = np.random.default_rng(ATC10_RANDOM_SEED)
+    return float(
+        np.mean(
+            [zakai.psk_zakai_bandwidth(rng.choice([-1.0, 1.0], 1023), 1.0) for _ in range(ATC10_RANDOM_CODES)]
+        )
+    )
+
+
+@register(
+    "atc10-23-thm-ratio",
+    "atc10/23-zakai-bandwidth",
+    "1 / (4 W tau_c) of the idealised autocorrelation",
+)
+def atc10_23_thm_ratio() -> float:
+    """1 / (4 W tau_c) for the idealised Fig. 3.11 autocorrelation, L = 10 000 chips."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(1 / (4 * pm.w_chip_limit_ideal()))
+
+
+# --- ATC-10 Sec. 3.8: Reference [1]'s worked example ------------------------------------------
+
+
+@register(
+    "atc10-22-inverse-p",
+    "atc10/22-gaussian-comparison",
+    "1 / p of the worked example, p = (N - 1) / (B alpha)",
+)
+def atc10_22_inverse_p() -> float:
+    """1 / p for Reference [1]'s worked example, p = (N - 1) / (B alpha) (end of ATC-10 Sec. 3.8)."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(1 / pm.worked_example_power())
+
+
+@register(
+    "atc10-22-exp-g-half",
+    "atc10/22-gaussian-comparison",
+    "theta^2 / (2 p) of the worked example, as (3.8.8) defines Exp_g",
+)
+def atc10_22_exp_g_half() -> float:
+    """theta^2 / (2 p) with the worked example's theta and p: Exp_g as (3.8.8) defines it."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(pm.IN.theta_example**2 / (2 * pm.worked_example_power()))
+
+
+#: The worked example's other aircraft count of the page: N = 1e5 instead of 2e5.
+ATC10_EXAMPLE_N_LOW = 1e5
+
+
+def _atc10_exp_1e5() -> float:
+    from navcore.detection.roc_bounds import exponent_from_gaussian_exponent
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(
+        exponent_from_gaussian_exponent(
+            ATC10_EXAMPLE_N_LOW, pm.IN.tau_over_alpha_fig310, pm.worked_example_exp_g()
+        )
+    )
+
+
+@register(
+    "atc10-22-exp-1e5", "atc10/22-gaussian-comparison", "Exp of (3.8.16) at N = 1e5 for the worked example"
+)
+def atc10_22_exp_1e5() -> float:
+    """The exponent Exp of ATC-10 Eq. (3.8.16) at N = 1e5 with the worked example's Exp_g and tau/alpha."""
+    return _atc10_exp_1e5()
+
+
+@register(
+    "atc10-22-ratio-1e5", "atc10/22-gaussian-comparison", "Exp_g / Exp at N = 1e5 for the worked example"
+)
+def atc10_22_ratio_1e5() -> float:
+    """Exp_g over the (3.8.16) exponent at N = 1e5: how optimistic the Gaussian assumption is there."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(pm.worked_example_exp_g() / _atc10_exp_1e5())
+
+
+@register(
+    "atc10-22-optimistic-pct",
+    "atc10/22-gaussian-comparison",
+    "how much the Gaussian exponent overstates Exp at N = 2e5 (%)",
+)
+def atc10_22_optimistic_pct() -> float:
+    """100 (Exp_g / Exp - 1) for the worked example at N = 2e5, percent."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(100 * (pm.worked_example_ratio() - 1))
+
+
+@register(
+    "atc10-22-pf-factor",
+    "atc10/22-gaussian-comparison",
+    "exp(Exp_g - Exp): the factor by which the Gaussian assumption understates p_f",
+)
+def atc10_22_pf_factor() -> float:
+    """exp(Exp_g - Exp) at N = 2e5: the factor on p_f that the Gaussian assumption misses."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(math.exp(pm.worked_example_exp_g() - pm.worked_example_exp()))
+
+
+@register(
+    "atc10-20-psk-1-6L",
+    "atc10/20-multiple-access-noise",
+    "1 / (6 L) for the L-chip PSK signatures of the physical simulation",
+)
+def atc10_20_psk_1_6l() -> float:
+    """1 / (6 L): the mean square of a random-code PSK interferer's correlation given overlap, L chips."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(1 / (6 * pm.IN.psk_chips))
+
+
+@register(
+    "atc10-20-envelope-m3",
+    "atc10/20-multiple-access-noise",
+    "third moment of the envelope of the paper's amplitude model (the book's skewed envelope)",
+)
+def atc10_20_envelope_m3() -> float:
+    """E[X^3] of the positive, skewed envelope X of the book's reading of the paper's amplitude model."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    values, probs = pm._ENVELOPE
+    return float(sum(p * v**3 for v, p in zip(values, probs, strict=True)))
+
+
+@register(
+    "atc10-20-model-m3",
+    "atc10/20-multiple-access-noise",
+    "|third moment| of the paper's amplitude model (zero but for round-off)",
+)
+def atc10_20_model_m3() -> float:
+    """|E[n_ij^3]| of the paper's amplitude model, cos(phase) x envelope: zero to round-off (plus 1e-300,
+    so that a log-scale format prints it)."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return abs(pm.paper_model_third_moment()) + 1e-300
+
+
+#: The stated ranges of the two approximations of Eq. (4.5.38): alpha <= 0.3 and alpha >= 1.
+ATC10_PSI_EDGES = (0.3, 1.0)
+
+
+@register(
+    "atc10-31-approx-edge-error-pct",
+    "atc10/31-clock-tracking",
+    "largest relative error of Eq. (4.5.38)'s approximations of psi at the edges of their ranges (%)",
+)
+def atc10_31_approx_edge_error_pct() -> float:
+    """Largest relative error (%) of the small- and large-alpha forms of psi (Eq. (4.5.38)) at alpha
+    = 0.3 and alpha = 1, the edges of their stated ranges."""
+    from navcore.location import clock_tracking as ct
+
+    small, large = ATC10_PSI_EDGES
+    errors = [
+        abs(ct.psi_small_alpha(small) / ct.psi(small) - 1),
+        abs(ct.psi_large_alpha(large) / ct.psi(large) - 1),
+    ]
+    return float(100 * max(errors))
+
+
+# --- ATC-10 exercises -------------------------------------------------------------------------
+
+
+def _atc10_90_steps() -> list[float]:
+    """Rises (dB) of the t = 0 N_ADL threshold from K = 1 to 10 and from 10 to 100, P_DL = 0.9."""
+    from navcore.papers import atc10_jamming as pj
+
+    erp = [pj.required_erp_dbw("ambiguous", 0.9, k) for k in (1, 10, 100)]
+    return [float(erp[1] - erp[0]), float(erp[2] - erp[1])]
+
+
+@register(
+    "atc10-90-step-per-decade-lo",
+    "atc10/90-exercises",
+    "smaller rise of the N_ADL threshold per decade of K, P_DL = 0.9 (dB)",
+)
+def atc10_90_step_lo() -> float:
+    """The smaller of the K = 1 -> 10 and 10 -> 100 rises of the t = 0 N_ADL threshold, P_DL = 0.9, dB."""
+    return min(_atc10_90_steps())
+
+
+@register(
+    "atc10-90-step-per-decade-hi",
+    "atc10/90-exercises",
+    "larger rise of the N_ADL threshold per decade of K, P_DL = 0.9 (dB)",
+)
+def atc10_90_step_hi() -> float:
+    """The larger of the K = 1 -> 10 and 10 -> 100 rises of the t = 0 N_ADL threshold, P_DL = 0.9, dB."""
+    return max(_atc10_90_steps())
+
+
+@register(
+    "atc10-90-ceiling-k1000",
+    "atc10/90-exercises",
+    "supremum of N_ADL / N_T as the jammer grows, K = 1000, P_DL = 0.9",
+)
+def atc10_90_ceiling_k1000() -> float:
+    """Supremum of the N_ADL bound over jammer power, K = 1000, P_DL = 0.9, t = 0."""
+    return atc10_12_ceiling_k1000("0.9")
+
+
+@register(
+    "atc10-90-beamwidth-k1",
+    "atc10/90-exercises",
+    "Sec. 2.7's 20 deg scaled by the pencil-beam rule to Table 1.1's K = 1 gain (deg)",
+)
+def atc10_90_beamwidth_k1() -> float:
+    """20 deg x sqrt(G_2.7 / G_K1): Sec. 2.7's antenna scaled to Table 1.1's K = 1 gain, deg."""
+    return atc10_13_bw_k1_scaled()
+
+
+def _atc10_90_exp(n: float) -> float:
+    """Eq. (3.8.16) written out, at N aircraft, tau/alpha = 1e-5 and the worked example's Exp_g."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    exp_g, r = pm.worked_example_exp_g(), pm.IN.tau_over_alpha_fig310
+    u = exp_g / (n * r)
+    return math.sqrt(4 * n * r * exp_g) * math.log(math.sqrt(u) + math.sqrt(1 + u)) - n * math.log(
+        (1 - 2 * r) + 2 * r * math.sqrt(1 + u)
+    )
+
+
+@register(
+    "atc10-90-exp-{n}", "atc10/90-exercises", "Exp of (3.8.16) for the worked example at N = 1e5 or 2e5"
+)
+def atc10_90_exp(n: str) -> float:
+    """Exp of ATC-10 Eq. (3.8.16) for the worked example, N = ``n`` (``"1e5"`` or ``"2e5"``)."""
+    return _atc10_90_exp(float(n))
+
+
+@register("atc10-90-ratio-{n}", "atc10/90-exercises", "Exp_g / Exp for the worked example at N = 1e5 or 2e5")
+def atc10_90_ratio(n: str) -> float:
+    """Exp_g over the (3.8.16) exponent for the worked example, N = ``n``."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(pm.worked_example_exp_g() / _atc10_90_exp(float(n)))
+
+
+# --- ATC-10 Sec. 4: the tracking geometry of Table 4.1's examples -----------------------------
+
+
+def _atc10_geometry_row(example: str, radius: str) -> dict[str, float]:
+    """Table 4.2's columns of ``example`` at the synchronous orbit (``"phys"``) or the fitted ratio."""
+    from navcore.papers import atc10_tracking as paper
+
+    r = paper.physical_radius_ratio() if radius == "phys" else paper.fitted_radius_ratio()
+    return paper.table_4_2_from_geometry(example, r)
+
+
+@register(
+    "atc10-30-r-phys",
+    "atc10/30-tracking-geometry",
+    "synchronous-orbit radius over the Earth radius",
+)
+def atc10_30_r_phys() -> float:
+    """Synchronous-orbit radius over the declared Earth radius (ATC-10 Sec. 4.1)."""
+    from navcore.papers import atc10_tracking as paper
+
+    return float(paper.physical_radius_ratio())
+
+
+@register(
+    "atc10-30-zenith-I-{radius}",
+    "atc10/30-tracking-geometry",
+    "largest zenith angle of Example I's satellites at the aircraft (deg; phys or fit radius)",
+)
+def atc10_30_zenith_i(radius: str) -> float:
+    """Largest zenith angle (deg) of Table 4.1 Example I's satellites seen from the aircraft, at the
+    synchronous (``"phys"``) or fitted (``"fit"``) orbit radius."""
+    from navcore.papers import atc10_tracking as paper
+
+    r = paper.physical_radius_ratio() if radius == "phys" else paper.fitted_radius_ratio()
+    return float(paper.max_zenith_angle_deg("I", r))
+
+
+@register(
+    "atc10-30-beta-phys-{ex}",
+    "atc10/30-tracking-geometry",
+    "beta of Eq. (4.5.2) for a Table 4.1 example at the synchronous orbit",
+)
+def atc10_30_beta_phys(ex: str) -> float:
+    """beta = K - 1'F(F'F)^-1 F'1 (Eq. (4.5.2)) of example ``ex`` at the synchronous orbit."""
+    return float(_atc10_geometry_row(ex, "phys")["beta"])
+
+
+@register(
+    "atc10-30-beta-over-K-{ex}",
+    "atc10/30-tracking-geometry",
+    "beta over the number of satellites K, synchronous orbit",
+)
+def atc10_30_beta_over_k(ex: str) -> float:
+    """beta / K of example ``ex`` at the synchronous orbit."""
+    from navcore.papers import atc10_tracking as paper
+
+    return atc10_30_beta_phys(ex) / paper.table_4_1(ex).shape[0]
+
+
+@register(
+    "atc10-30-trace-phys-{ex}",
+    "atc10/30-tracking-geometry",
+    "position trace tr (F'F)^-1 with all satellites, synchronous orbit",
+)
+def atc10_30_trace_phys(ex: str) -> float:
+    """tr (F'F)^-1 of example ``ex`` with all its satellites at the synchronous orbit."""
+    return float(_atc10_geometry_row(ex, "phys")["trace_all"])
+
+
+@register(
+    "atc10-90-123-trace",
+    "atc10/90-exercises",
+    "position trace of Example II's satellites 1-3, synchronous orbit",
+)
+@register(
+    "atc10-30-trace-123-II",
+    "atc10/30-tracking-geometry",
+    "position trace of Example II's satellites 1-3, synchronous orbit",
+)
+def atc10_30_trace_123_ii() -> float:
+    """tr (F'F)^-1 of Example II's first three satellites at the synchronous orbit."""
+    return float(_atc10_geometry_row("II", "phys")["trace_123"])
+
+
+@register(
+    "atc10-30-s123-invariant-{ex}",
+    "atc10/30-tracking-geometry",
+    "the invariant 1'(F3 F3')^-1 1 of satellites 1-3 at the fitted radius",
+)
+@register(
+    "atc10-32-s123-invariant-{ex}",
+    "atc10/32-tracking-examples",
+    "the invariant 1'(F3 F3')^-1 1 of satellites 1-3 at the fitted radius",
+)
+def atc10_s123_invariant(ex: str) -> float:
+    """1'(F3 F3')^-1 1 of example ``ex``'s satellites 1-3 at the fitted radius (erratum E4-1's form)."""
+    return float(_atc10_geometry_row(ex, "fit")["s_123"])
+
+
+def _atc10_geometry_misses() -> dict[tuple[str, str], float]:
+    """Relative misses of the synchronous-orbit beta and traces against Table 4.2 as printed."""
+    from navcore.papers import atc10_tracking as paper
+
+    return {
+        (ex, c): _atc10_geometry_row(ex, "phys")[c] / float(paper.TABLE_4_2[ex][c]) - 1
+        for ex in ("I", "II")
+        for c in ("beta", "trace_all", "trace_123")
+    }
+
+
+@register("atc10-30-miss-lo", "atc10/30-tracking-geometry", "smallest |miss| of the physical geometry (%)")
+def atc10_30_miss_lo() -> float:
+    """Smallest |relative miss| (%) of the synchronous-orbit beta and traces against Table 4.2."""
+    return float(100 * min(abs(v) for v in _atc10_geometry_misses().values()))
+
+
+@register("atc10-30-miss-hi", "atc10/30-tracking-geometry", "largest |miss| of the physical geometry (%)")
+def atc10_30_miss_hi() -> float:
+    """Largest |relative miss| (%) of the synchronous-orbit beta and traces against Table 4.2."""
+    return float(100 * max(abs(v) for v in _atc10_geometry_misses().values()))
+
+
+@register("atc10-30-beta-excess", "atc10/30-tracking-geometry", "largest excess of the physical beta (%)")
+def atc10_30_beta_excess() -> float:
+    """Largest relative excess (%) of the synchronous-orbit beta over Table 4.2's."""
+    m = _atc10_geometry_misses()
+    return float(100 * max(m[(ex, "beta")] for ex in ("I", "II")))
+
+
+@register("atc10-30-trace-deficit", "atc10/30-tracking-geometry", "mean deficit of the physical traces (%)")
+def atc10_30_trace_deficit() -> float:
+    """Mean relative deficit (%) of the synchronous-orbit traces against Table 4.2's."""
+    m = _atc10_geometry_misses()
+    vals = [v for (_, c), v in m.items() if c != "beta"]
+    return float(-100 * sum(vals) / len(vals))
+
+
+def _atc10_best_triplet_ii() -> tuple[int, ...]:
+    """The triplet of Example II's satellites with the smallest position trace, synchronous orbit."""
+    from navcore.papers import atc10_tracking as paper
+
+    return tuple(paper.best_triplet("II", paper.physical_radius_ratio(), "trace"))
+
+
+@register(
+    "atc10-30-trace-best-II",
+    "atc10/30-tracking-geometry",
+    "smallest position trace of a triplet of Example II's satellites, synchronous orbit",
+)
+@register(
+    "atc10-90-best-trace",
+    "atc10/90-exercises",
+    "smallest position trace of a triplet of Example II's satellites, synchronous orbit",
+)
+def atc10_trace_best_ii() -> float:
+    """tr (F3'F3)^-1 of the best triplet of Example II's satellites at the synchronous orbit."""
+    from navcore.location import multilateration as ml
+    from navcore.papers import atc10_tracking as paper
+
+    los = paper.example_line_of_sight("II", paper.physical_radius_ratio())
+    return float(ml.position_trace(los[list(_atc10_best_triplet_ii())]))
+
+
+@register(
+    "atc10-90-best-triplet",
+    "atc10/90-exercises",
+    "the triplet of Example II's satellites with the smallest position trace (labels)",
+)
+def atc10_90_best_triplet() -> str:
+    """The best triplet of Example II's satellites as the page prints it (1-based, comma-separated)."""
+    return ", ".join(str(i + 1) for i in _atc10_best_triplet_ii())
+
+
+# --- ATC-10 Sec. 4.6: Table 4.3's worked rows ---------------------------------------------------
+
+
+def _atc10_exact_row_ii_5() -> tuple[float, ...]:
+    """Table 4.3's row of Example II at sigma0 = 5 ns from the printed Table 4.2, exact psi."""
+    from navcore.papers import atc10_tracking as paper
+
+    return tuple(paper.table_4_3_row(paper.printed_table_4_2("II"), 5.0))
+
+
+@register(
+    "atc10-32-psi-exact-II-5",
+    "atc10/32-tracking-examples",
+    "exact psi of Example II at sigma0 = 5 ns (printed Table 4.2)",
+)
+def atc10_32_psi_exact_ii_5() -> float:
+    """The steady-state gain factor psi (Eq. (4.5.34)) of Example II at sigma0 = 5 ns."""
+    return float(_atc10_exact_row_ii_5()[1])
+
+
+@register(
+    "atc10-32-sdN-exact-II-5",
+    "atc10/32-tracking-examples",
+    "tracking-limit rms error sd_N of Example II at sigma0 = 5 ns with the exact psi (ft)",
+)
+def atc10_32_sdn_exact_ii_5() -> float:
+    """sd_N = c sigma sqrt(tr + (psi / beta) S) of Example II at sigma0 = 5 ns, exact psi, ft."""
+    return float(_atc10_exact_row_ii_5()[3])
+
+
+@register(
+    "atc10-32-psi-needed-II-5",
+    "atc10/32-tracking-examples",
+    "the psi that Table 4.3's printed sd_N of Example II at 5 ns needs",
+)
+def atc10_32_psi_needed_ii_5() -> float:
+    """The psi for which (4.5.35) with the printed Table 4.2 gives Table 4.3's printed sd_N (II, 5 ns)."""
+    from scipy import optimize
+
+    from navcore.papers import atc10_tracking as paper
+
+    printed = paper.printed_table_4_2("II")
+    target = float(paper.TABLE_4_3[("II", 5.0)][3])
+    return float(
+        optimize.brentq(lambda p: paper.table_4_3_row(printed, 5.0, psi_value=p)[3] - target, 0.01, 0.1)
+    )
+
+
+def _atc10_fit_row_i_5() -> tuple[float, ...]:
+    from navcore.papers import atc10_tracking as paper
+
+    return tuple(paper.table_4_3_row(paper.table_4_2_from_geometry("I", paper.fitted_radius_ratio()), 5.0))
+
+
+@register(
+    "atc10-32-sdN-I-5",
+    "atc10/32-tracking-examples",
+    "tracking-limit rms error sd_N of Example I at sigma0 = 5 ns, fitted geometry (ft)",
+)
+def atc10_32_sdn_i_5() -> float:
+    """sd_N of Example I at sigma0 = 5 ns from the fitted-radius geometry, ft."""
+    return float(_atc10_fit_row_i_5()[3])
+
+
+@register(
+    "atc10-32-sdN1-I-5",
+    "atc10/32-tracking-examples",
+    "first three-satellite rms error of Example I at sigma0 = 5 ns, fitted geometry (ft)",
+)
+def atc10_32_sdn1_i_5() -> float:
+    """sd_(N+1), the first three-satellite estimate's rms error, Example I, 5 ns, fitted geometry, ft."""
+    return float(_atc10_fit_row_i_5()[4])
+
+
+def _atc10_phys_lowering() -> list[float]:
+    """1 - (Table 4.3's sd_0 or sd_N from the synchronous-orbit geometry) / (the same from the printed
+    Table 4.2), over both examples and the three sigma0."""
+    from navcore.papers import atc10_tracking as paper
+
+    r_phys = paper.physical_radius_ratio()
+    return [
+        1
+        - paper.table_4_3_row(paper.table_4_2_from_geometry(ex, r_phys), s0)[col]
+        / paper.table_4_3_row(paper.printed_table_4_2(ex), s0)[col]
+        for ex in ("I", "II")
+        for s0 in paper.sigma0_values()
+        for col in (2, 3)
+    ]
+
+
+@register(
+    "atc10-32-phys-lowering-lo",
+    "atc10/32-tracking-examples",
+    "smallest lowering of Table 4.3's sd_0 and sd_N by the synchronous-orbit geometry (%)",
+)
+def atc10_32_phys_lowering_lo() -> float:
+    """Smallest relative lowering (%) of sd_0 and sd_N when the synchronous geometry replaces Table 4.2."""
+    return float(100 * min(_atc10_phys_lowering()))
+
+
+@register(
+    "atc10-32-phys-lowering-hi",
+    "atc10/32-tracking-examples",
+    "largest lowering of Table 4.3's sd_0 and sd_N by the synchronous-orbit geometry (%)",
+)
+def atc10_32_phys_lowering_hi() -> float:
+    """Largest relative lowering (%) of sd_0 and sd_N when the synchronous geometry replaces Table 4.2."""
+    return float(100 * max(_atc10_phys_lowering()))
+
+
+@register(
+    "atc10-30-s123-printed-residual-pct",
+    "atc10/30-tracking-geometry",
+    "largest miss of the printed Eq. (4.5.30) form 1'(F3'F3)^-1 1 against Table 4.2's S3 (%)",
+)
+def atc10_30_s123_printed_residual_pct() -> float:
+    """Largest relative miss (%) of 1'(F3'F3)^-1 1 in ECEF at the fitted radius (the printed (4.5.30))
+    against Table 4.2's printed S3, over both examples."""
+    from navcore.papers import atc10_tracking as paper
+
+    return float(
+        100
+        * max(
+            abs(_atc10_geometry_row(ex, "fit")["s_123_printed"] / float(paper.TABLE_4_2[ex]["s_123"]) - 1)
+            for ex in ("I", "II")
+        )
+    )
+
+
+@register(
+    "atc10-32-col5-corrected-{ex}-{s0}",
+    "atc10/32-tracking-examples",
+    "Table 4.3 col. (v) from the printed Table 4.2 with the invariant S3 of the stated system (ft)",
+)
+def atc10_32_col5_corrected(ex: str, s0: str) -> float:
+    """sd_(N+1) of Table 4.3 col. (v) for example ``ex`` at sigma0 = ``s0`` ns, with the invariant
+    1'(F3 F3')^-1 1 of the synchronous geometry in place of the printed S3 (erratum E4-1), ft."""
+    from navcore.papers import atc10_tracking as paper
+
+    return float(paper.first_three_satellite_sd_invariant(ex, float(s0)))
+
+
+# --- ATC-10 Sec. 3.5: the Chernoff bound and its convexity argument ---------------------------
+
+
+@register(
+    "atc10-21-convexity-limit",
+    "atc10/21-roc-bounds",
+    "largest x = rho sqrt(beta) up to which ln(1 - q + q cosh x) is convex in beta",
+)
+def atc10_21_convexity_limit() -> float:
+    """Root of h''(x) = h'(x) / x for h(x) = ln(1 - q + q cosh x), q = 2 tau/alpha of Sec. 3.6: below
+    it the log-moment term is convex in the power share beta (the step the paper argues in sqrt(beta))."""
+    import numpy as np
+    from scipy import optimize
+
+    from navcore.papers import atc10_multiple_access as pm
+
+    q = 2 * pm.IN.tau_over_alpha_sec36
+
+    def margin(x: float) -> float:
+        d = 1 - q + q * np.cosh(x)
+        h1 = q * np.sinh(x) / d
+        h2 = q * np.cosh(x) / d - h1**2
+        return float(h2 - h1 / x)
+
+    return float(optimize.brentq(margin, 1.0, 30.0))
+
+
+#: The page's two-point example: the noise power of contour 5, the threshold, the largest N and
+#: tau/alpha.
+ATC10_TWO_POINT_POWER, ATC10_TWO_POINT_THETA = 4 / 75, 0.5
+ATC10_TWO_POINT_N, ATC10_TWO_POINT_TAU_OVER_ALPHA = 10_000_000, 2e-5
+
+
+@register(
+    "atc10-21-upper-efolds",
+    "atc10/21-roc-bounds",
+    "Chernoff bound minus the exact ln p_f, two-point noise at N = 1e7 (e-folds)",
+)
+def atc10_21_upper_efolds() -> float:
+    """ln (Chernoff bound (3.5.13)) - ln (exact tail) for two-point multiple-access noise, N = 1e7."""
+    import numpy as np
+
+    from navcore.detection.multiple_access import MultipleAccessNoise, two_point_density, two_point_exact_tail
+    from navcore.detection.roc_bounds import chernoff_log_tails
+
+    n, theta = ATC10_TWO_POINT_N, ATC10_TWO_POINT_THETA
+    q = 2 * ATC10_TWO_POINT_TAU_OVER_ALPHA
+    bb = ATC10_TWO_POINT_POWER / ((n - 1) * q)
+    nz = MultipleAccessNoise(n, ATC10_TWO_POINT_TAU_OVER_ALPHA, two_point_density(bb))
+    exact = float(np.log(two_point_exact_tail(np.sqrt(bb), n - 1, q, [theta])[0]))
+    return float(chernoff_log_tails(nz, [theta])[0][0] - exact)
+
+
+@register(
+    "atc10-30-fit-worst-pct",
+    "atc10/30-tracking-geometry",
+    "largest miss of Table 4.2 computed the paper's way at the fitted radius against the printed table (%)",
+)
+def atc10_30_fit_worst_pct() -> float:
+    """Largest relative miss (%) over both examples and the five columns of Table 4.2 computed as the
+    paper did (the printed (4.5.30) for col. 5, the aircraft at its height) at the fitted radius."""
+    from navcore.papers import atc10_tracking as paper
+    from navcore.papers.atc10_tracking import _printed_table_4_2_as_computed as as_computed
+
+    r_fit = paper.fitted_radius_ratio()
+    return float(
+        100
+        * max(
+            abs(as_computed(ex, r_fit)[c] / float(paper.TABLE_4_2[ex][c]) - 1)
+            for ex in ("I", "II")
+            for c in paper.COLUMNS
+        )
+    )

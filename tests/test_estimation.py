@@ -547,3 +547,35 @@ def test_a_checked_step_checks_again_a_covariance_changed_after_it_was_returned(
     P_post[2, 2] = np.nan
     with pytest.raises(ValueError, match="P must be finite"):
         kf_predict(up.x, P_post, np.eye(n), 0.1 * np.eye(n))
+
+
+def test_the_filter_steps_check_each_argument_in_their_body_as_the_wrapper_words_it():
+    """kf_predict and kf_update check their own arguments (no generic wrapper around them).
+    Oracle: the wrapper's wording (navcore._validate.checked): the parameter as the caller
+    spelled it and the constraint, for a NaN, a wrong type and a flag that is not a bool; and a
+    transition or measurement matrix remembered as finite is checked again once changed."""
+    n = 3
+    x, P, F, Q = np.zeros(n), np.eye(n), np.eye(n), 0.1 * np.eye(n)
+    H, R = np.array([[1.0, 0.0, 0.0]]), np.eye(1)
+    with pytest.raises(ValueError, match="x must be finite"):
+        kf_predict(np.array([0.0, np.nan, 0.0]), P, F, Q)
+    with pytest.raises(ValueError, match="x must be finite"):
+        kf_predict([0.0, np.inf, 0.0], P, F, Q)  # a list: the wrapper's path
+    with pytest.raises(TypeError, match="x must be a number or an array of numbers"):
+        kf_predict("abc", P, F, Q)
+    with pytest.raises(ValueError, match="z must be finite"):
+        kf_update(x, P, np.array([np.nan]), H, R)
+    with pytest.raises(TypeError, match="validate must be of type bool"):
+        kf_predict(x, P, F, Q, validate=0)
+    with pytest.raises(TypeError, match="validate must be of type bool"):
+        kf_update(x, P, [0.5], H, R, validate="no")
+    kf_predict(x, P, F, Q)  # F passes, and is remembered
+    F[1, 2] = np.inf
+    with pytest.raises(ValueError, match="Phi must be finite"):
+        kf_predict(x, P, F, Q)
+    kf_update(x, P, [0.5], H, R)  # H passes, and is remembered
+    H[0, 1] = np.nan
+    with pytest.raises(ValueError, match="H must be finite"):
+        kf_update(x, P, [0.5], H, R)
+    with pytest.raises(ValueError, match=r"Phi must have shape \(3, 3\)"):
+        kf_predict(x, P, np.eye(2), Q)

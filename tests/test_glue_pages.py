@@ -277,7 +277,7 @@ def test_pages_glue_through_navcore_book():
         ('glue("x-12", float(obj.cruise_alt_m))', "unchecked"),  # not read through IN
         ('glue("kzl00-schuler-min", 84.45)', "registered"),
         ('glue(f"atc10-erp-K{k}-{p_dl}", 1.0)', "registered"),
-        ('glue(f"atc10-erp-half-K{k}-{p_dl}", 1.0)', "unchecked"),
+        ('glue(f"atc10-erp-quarter-K{k}-{p_dl}", 1.0)', "unchecked"),
     ],
 )
 def test_classification(source, kind):

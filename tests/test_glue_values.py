@@ -11,10 +11,12 @@ fails on a registered name without a case here.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import Any
 
 import numpy as np
 import pytest
@@ -37,10 +39,11 @@ class Oracle:
     """An oracle for one glued name: the expected value and the tolerance the oracle allows."""
 
     name: str
-    expected: Callable[[], float]
+    expected: Callable[[], Any]
     rtol: float = 0.0
     atol: float = 0.0
     why: str = ""
+    band: Callable[[], float] | None = None  # an absolute tolerance the oracle computes (a sampling band)
 
 
 def _schuler_period_min() -> float:
@@ -305,6 +308,1591 @@ ORACLES = [
 ]
 
 
+# --- Wu & Fowler ------------------------------------------------------------------------------
+# The Sec. IV.D oracles are per-axis scalar arithmetic: every covariance of Figs. 1-2 is diagonal,
+# so Eq. (23)'s Minkowski term is written out axis by axis, and the accelerometer filter's
+# steady state comes from scipy's discrete algebraic Riccati solver (not navcore's closed form).
+# scipy's solver is good to about eps times the conditioning sqrt(r/q) ~ 1e4 here (1e-12); the
+# tolerances below allow 1e-7 relative, and 1e-6 dB on a decibel value (1e-7 relative is 4e-7 dB).
+_WF_RTOL, _WF_DB_ATOL = 1e-7, 1e-6
+_WF_DARE = "closed-form diagonal arithmetic, scipy's Riccati solver"
+
+
+def _wf_in():
+    from navcore.papers import wf
+
+    return wf.IN
+
+
+def _wf_filter(sigma_a: float) -> tuple[float, float, float]:
+    """Prior, posterior and gain of the accelerometer filter of WF Eq. (14) in steady state,
+    x_k = x_k-1 + T_s a (process noise (sigma_a T_s)^2), y_L = x + n (sigma_L = 200 sigma_a):
+    scipy.linalg.solve_discrete_are."""
+    from scipy import linalg
+
+    IN = _wf_in()
+    q, r = (sigma_a * IN.ts) ** 2, (IN.sigma_l_per_sigma_a * sigma_a) ** 2
+    one = np.ones((1, 1))
+    prior = float(linalg.solve_discrete_are(one, one, q * one, r * one)[0, 0])
+    return prior, prior * r / (prior + r), prior / (prior + r)
+
+
+def _wf_sigma_a_example() -> float:
+    return _wf_in().sigma_a_example_micro_g * 1e-6 * _G0
+
+
+def _wf_gps_variance(prior: float, axes: int) -> list[float]:
+    """Per-axis variance of the GPS estimate of Eq. (16)-(17): information form on the prior,
+    f_L1/c = 5.25 1/m (the printed gain) on ``axes`` of the three axes, sigma_G = 1 Hz."""
+    IN = _wf_in()
+    h2 = IN.f_l1_over_c_printed**2 / IN.sigma_g**2
+    return [1.0 / (1.0 / prior + h2) if a < axes else prior for a in range(3)]
+
+
+def _wf_locals(sigma_a: float, sigma_t: float, n_sat: int, *, dl_prior: bool = False) -> list[list[float]]:
+    """Per-axis variances of P_DN, P_DL (its posterior, or its prior) and P_DG of Sec. IV.D."""
+    IN = _wf_in()
+    prior, post, _ = _wf_filter(sigma_a)
+    out = [[IN.sigma_n**2 + sigma_t**2] * 3, [prior if dl_prior else post] * 3]
+    if n_sat:
+        out.append(_wf_gps_variance(prior, n_sat))
+    return out
+
+
+def _minkowski_diag(variances: list[list[float]]) -> float:
+    """Middle term of WF Eq. (23), (sum_i sqrt(tr(P_D P_i^-1 P_D)))^2, for diagonal covariances."""
+    p_d = [1.0 / sum(1.0 / v[a] for v in variances) for a in range(3)]
+    return sum(math.sqrt(sum(p_d[a] ** 2 / v[a] for a in range(3))) for v in variances) ** 2
+
+
+def _wf_sigma_d(sigma_a: float, sigma_t: float, n_sat: int = 0) -> float:
+    return math.sqrt(_minkowski_diag(_wf_locals(sigma_a, sigma_t, n_sat)) / 3)
+
+
+def _wf_improvement_db(sigma_a: float, sigma_t: float, n_sat: int = 0) -> float:
+    """20 log10(sigma_D / sigma_DN), sigma_DN = sqrt(sigma_N^2 + sigma_T^2)."""
+    sigma_dn = math.sqrt(_wf_in().sigma_n ** 2 + sigma_t**2)
+    return 20 * math.log10(_wf_sigma_d(sigma_a, sigma_t, n_sat) / sigma_dn)
+
+
+def _wf_grid() -> list[float]:
+    """The 31 log-spaced resolutions of Figs. 1-2 over the stated range, as a geometric sequence."""
+    IN = _wf_in()
+    lo, hi = IN.sigma_a_low, IN.sigma_a_high
+    return [lo * (hi / lo) ** (k / 30) for k in range(31)]
+
+
+def _wf_sigma_ts() -> tuple[float, float, float]:
+    IN = _wf_in()
+    return (IN.sigma_t_small, IN.sigma_t_medium, IN.sigma_t_large)
+
+
+def _wf_gps_gain_max_db() -> float:
+    return max(
+        _wf_improvement_db(sa, st, 0) - _wf_improvement_db(sa, st, ns)
+        for st in _wf_sigma_ts()
+        for ns in (1, 3)
+        for sa in _wf_grid()
+    )
+
+
+def _wf_three_vs_one_db() -> float:
+    st = _wf_in().sigma_t_small
+    return max(abs(_wf_improvement_db(sa, st, 3) - _wf_improvement_db(sa, st, 1)) for sa in _wf_grid())
+
+
+def _wf_prior_instead_shift_db() -> float:
+    return max(
+        abs(
+            10
+            * math.log10(
+                _minkowski_diag(_wf_locals(sa, st, ns, dl_prior=True))
+                / _minkowski_diag(_wf_locals(sa, st, ns))
+            )
+        )
+        for sa in _wf_grid()
+        for st in _wf_sigma_ts()
+        for ns in (0, 1, 3)
+    )
+
+
+def _wf03_scalars() -> dict[str, float]:
+    """The page's worked joint covariance on one axis, in scalars: the accelerometer error
+    (1 - K) e + K n_L and the GPS error (1 - k_G h) e + k_G n_G share the prior error e."""
+    IN = _wf_in()
+    sa = _wf_sigma_a_example()
+    prior, post, K = _wf_filter(sa)
+    h, sg2, sl2 = IN.f_l1_over_c_printed, IN.sigma_g**2, (IN.sigma_l_per_sigma_a * sa) ** 2
+    k_g = prior * h / (h * h * prior + sg2)
+    return {
+        "N": IN.sigma_n**2 + IN.sigma_t_large**2,
+        "L": (1 - K) ** 2 * prior + K**2 * sl2,
+        "G": (1 - k_g * h) ** 2 * prior + k_g**2 * sg2,
+        "LG": (1 - K) * (1 - k_g * h) * prior,
+        "wL": post,
+        "wG": 1.0 / (1.0 / prior + h * h / sg2),
+    }
+
+
+def _wf03_corr() -> float:
+    s = _wf03_scalars()
+    return s["LG"] / math.sqrt(s["L"] * s["G"])
+
+
+def _wf03_naive_optimism() -> float:
+    """Exact variance of the fused error sum_i a_i e_i, a_i = p_D / s_i (the Eq. (19) weights),
+    over p_D, the variance Eq. (19) claims."""
+    s = _wf03_scalars()
+    w = {"N": s["N"], "L": s["wL"], "G": s["wG"]}
+    p_d = 1.0 / sum(1.0 / x for x in w.values())
+    a = {k: p_d / x for k, x in w.items()}
+    exact = a["N"] ** 2 * s["N"] + a["L"] ** 2 * s["L"] + a["G"] ** 2 * s["G"] + 2 * a["L"] * a["G"] * s["LG"]
+    return math.sqrt(exact / p_d)
+
+
+def _wf_tightness_generic_rho1() -> float:
+    """At rho = 1 every local error is L_i w of one common w: the fused error is (sum_i P_D P_i^-1 L_i) w.
+    The seeded generic covariances typed in (A A^T + 0.1 I, A standard normal 3x3, seed 9)."""
+    rng = np.random.default_rng(9)
+    Ls = []
+    for _ in range(3):
+        A = rng.normal(size=(3, 3))
+        Ls.append(np.linalg.cholesky(A @ A.T + 0.1 * np.eye(3)))
+    Ps = [L @ L.T for L in Ls]
+    P_d = np.linalg.inv(sum(np.linalg.inv(P) for P in Ps))
+    M = sum(P_d @ np.linalg.solve(P, L) for P, L in zip(Ps, Ls, strict=True))
+    true_trace = float(np.trace(M @ M.T))
+    mink = sum(math.sqrt(float(np.trace(P_d @ np.linalg.solve(P, P_d)))) for P in Ps) ** 2
+    return mink / true_trace
+
+
+def _wf_tightness_isotropic_rho0() -> float:
+    """Independent isotropic errors of sigmas s_i: tr Cov = 3 p_D, p_D = 1 / sum s_i^-2, and the
+    Minkowski term 3 p_D^2 (sum 1/s_i)^2; the ratio p_D (sum 1/s_i)^2 (the sigmas 0.02, 0.002, 0.0019 m/s)."""
+    s = (Fraction(2, 100), Fraction(2, 1000), Fraction(19, 10000))
+    p_d = 1 / sum(1 / x**2 for x in s)
+    return float(p_d * sum(1 / x for x in s) ** 2)
+
+
+def _wf_mean_range_km() -> float:
+    """Time average of the range over the continuous Sec. III turn (scipy quad): the track
+    (r sin wt, r (1 - cos wt), h), r = v / w, and the emitter at distance d and bearing b."""
+    IN = _wf_in()
+    w = math.radians(IN.turn_rate_deg_s)
+    r = IN.speed_mps / w
+    b = math.radians(IN.emitter_bearing_deg)
+    ex, ey = IN.emitter_distance_m * math.cos(b), IN.emitter_distance_m * math.sin(b)
+
+    def rng_at(t: float) -> float:
+        return math.sqrt(
+            (ex - r * math.sin(w * t)) ** 2 + (ey - r * (1 - math.cos(w * t))) ** 2 + IN.altitude_m**2
+        )
+
+    T = IN.aperture_duration_s
+    return integrate.quad(rng_at, 0.0, T, epsabs=0.0, epsrel=1e-12)[0] / T / 1e3
+
+
+def _wf_bound_ratio_max() -> float:
+    """Central differences of the Doppler term v.(e - p)/|e - p| in p (step 1e-5 R; truncation
+    1e-10) over the printed bound 2 |v| / R of Eq. (9) (f0/c cancels), on the seeded geometries
+    (p ~ N(0, 5 km), e = p + N(0, 30 km), v ~ N(0, 200 m/s), seed 11, 2000 draws, typed in)."""
+    rng = np.random.default_rng(11)
+    p = rng.normal(0, 5000, (2000, 3))
+    e = p + rng.normal(0, 30000, (2000, 3))
+    v = rng.normal(0, 200, (2000, 3))
+    R = np.linalg.norm(e - p, axis=1)
+
+    def term(pp: np.ndarray) -> np.ndarray:
+        d = e - pp
+        return np.sum(v * d, axis=1) / np.linalg.norm(d, axis=1)
+
+    g = np.empty((2000, 3))
+    for k in range(3):
+        step = np.zeros((2000, 3))
+        step[:, k] = 1e-5 * R
+        g[:, k] = (term(p + step) - term(p - step)) / (2e-5 * R)
+    return float(np.max(np.linalg.norm(g, axis=1) / (2 * np.linalg.norm(v, axis=1) / R)))
+
+
+def _wf_leverage() -> dict[str, float]:
+    """WF Eq. (6) by hand on the Sec. II turn: the Doppler model f0 (1 + v.u / c) written out
+    (scipy.constants' c), its Jacobian in (emitter, f0) by central differences (step 1e-4 R)
+    except the f0 column, exact; the errors by numpy's least squares."""
+    from navcore.papers import wf
+
+    f0, emitter = wf.F0, wf.EMITTER
+    _, pos, vel = wf.orbit()
+
+    def doppler(e: np.ndarray, p: np.ndarray, v: np.ndarray) -> np.ndarray:  # f - f0
+        d = e - p
+        return f0 / sc.c * np.sum(v * d, axis=1) / np.linalg.norm(d, axis=1)
+
+    R = np.linalg.norm(emitter - pos, axis=1)
+    H = np.empty((len(pos), 4))
+    for k in range(3):
+        step = np.zeros(3)
+        step[k] = 1.0
+        h = 1e-4 * R[:, None]
+        H[:, k] = (doppler(emitter + h * step, pos, vel) - doppler(emitter - h * step, pos, vel)) / (
+            2 * h[:, 0]
+        )
+    H[:, 3] = 1.0 + doppler(emitter, pos, vel) / f0
+    dz = np.array([0.0, 0.0, 1.0])
+    f_true = doppler(emitter, pos, vel)
+    err_v = np.linalg.lstsq(H, f_true - doppler(emitter, pos, vel + dz), rcond=None)[0][:3]
+    err_p = np.linalg.lstsq(H, f_true - doppler(emitter, pos + dz, vel), rcond=None)[0][:3]
+    G = np.linalg.pinv(H)  # (H^T H)^-1 H^T
+    # per-sample variances of independent unit errors: |df/dv|^2 = (f0/c)^2, |df/dp|^2 = |df/de|^2
+    white_v = math.sqrt(float(np.sum(G[:3] ** 2)) * (f0 / sc.c) ** 2)
+    white_p = math.sqrt(float(np.sum((G[:3] ** 2) @ np.sum(H[:, :3] ** 2, axis=1))))
+    return {
+        "z": float(np.linalg.norm(err_v) / np.linalg.norm(err_p)),
+        "white": white_v / white_p,
+    }
+
+
+def _wf_eq13_ratio() -> tuple[float, float]:
+    """Exact moments of WF Eq. (13) run as printed: x_k = (1 - K) x_k-1 + ((1 - K) T + K)(a_k + n_k),
+    v_k = v_k-1 + a_k T, x_0 ~ N(0, P(k/k)), v_0 = 0 (Python loops, the seeded run's settings and
+    scipy's Riccati gain). Returns the expected RMS error over sqrt(P(k/k)) and the sampling
+    standard deviation of a 200-path RMS, from Var((mu + s z)^2) = 2 s^4 + 4 mu^2 s^2."""
+    IN = _wf_in()
+    sa, steps, paths = 1e-3, 5000, 200  # the seeded run's settings (WF Eq. (13) test case)
+    _, post, K = _wf_filter(sa)
+    ts = IN.ts
+    c = (1 - K) * ts + K
+    mean_x, var_x, v = 0.0, post, 0.0
+    for k in range(steps):
+        a = IN.eq13_accel_amplitude_mps2 * math.sin(2 * math.pi * IN.eq13_accel_frequency_hz * ts * k)
+        v += a * ts
+        mean_x = (1 - K) * mean_x + c * a
+        var_x = (1 - K) ** 2 * var_x + c * c * sa * sa
+    mu = mean_x - v
+    ms = mu * mu + var_x
+    sd_ms = math.sqrt((2 * var_x**2 + 4 * mu * mu * var_x) / paths)
+    return math.sqrt(ms / post), 0.5 * sd_ms / ms * math.sqrt(ms / post)
+
+
+def _wf_eq20_block() -> float:
+    """The seeded joint of the Eq. (20) check typed in (A 9x9 standard normal, seed 17,
+    J = A A^T + 0.5 I), the printed block (2, 3) read as P_NG, entry by entry in Python floats."""
+    rows = np.random.default_rng(17).normal(size=(9, 9)).tolist()
+    J = [
+        [
+            sum(x * y for x, y in zip(rows[i], rows[j], strict=True)) + (0.5 if i == j else 0.0)
+            for j in range(9)
+        ]
+        for i in range(9)
+    ]
+    num = max(abs(J[i - 3][j] - J[i][j]) for i in range(3, 6) for j in range(6, 9))
+    return num / max(abs(x) for row in J for x in row)
+
+
+def _wf05_vibration_moments() -> tuple[float, float]:
+    """Mean square of the worked example's vertical vibration velocity and the sampling standard
+    deviation of its 20-flight estimate. Each flight sums 8 tones of displacement amplitude
+    A / sqrt(8), frequencies uniform within +-0.5 Hz of f_v and uniform phases; over T seconds
+    a flight's mean square is sum_k d_k + sum_{j<k} X_jk with d_k = (A^2/8)(2 pi f_k)^2 / 2 (exact
+    moments of the uniform frequency) and cross terms X_jk of zero mean whose variance is
+    (A^2/8 (2 pi)^2 E f^2)^2 E[sinc^2(pi df T)] / 2, E[sinc^2] = 1/T for the triangular density
+    of a frequency difference (1 at 0)."""
+    IN = _wf_in()
+    A, f0, T = IN.vib_amplitude_m, IN.vib_hz, IN.aperture_duration_s
+    tones, flights = 8, 20  # the example's tones and flights (its settings)
+    ef2 = f0**2 + 1 / 12
+    ef4 = ((f0 + 0.5) ** 5 - (f0 - 0.5) ** 5) / 5
+    scale = A**2 / tones * (2 * math.pi) ** 2
+    var_d = (scale / 2) ** 2 * (ef4 - ef2**2)
+    var_x = (scale * ef2) ** 2 / (2 * T)
+    ms = tones * scale * ef2 / 2
+    var_ms = (tones * var_d + tones * (tones - 1) / 2 * var_x) / flights
+    return ms, math.sqrt(var_ms)
+
+
+def _wf05_vib_rms() -> tuple[float, float]:
+    """Expected RMS vibration velocity and the sampling standard deviation of the 20-flight RMS."""
+    ms, sd = _wf05_vibration_moments()
+    return math.sqrt(ms), sd / (2 * math.sqrt(ms))
+
+
+def _wf_uz_rms() -> float:
+    """RMS of the vertical line-of-sight component h / R over the continuous Sec. II turn (scipy
+    quad): 8 km altitude, 200 m/s, the emitter at (20, 35, 0) km (the test geometry, typed in)."""
+    IN = _wf_in()
+    w = math.radians(IN.turn_rate_deg_s)
+    r = 200.0 / w
+
+    def uz2(t: float) -> float:
+        dx, dy = 20_000.0 - r * math.sin(w * t), 35_000.0 - r * (1 - math.cos(w * t))
+        return 8000.0**2 / (dx * dx + dy * dy + 8000.0**2)
+
+    T = IN.aperture_duration_s
+    return math.sqrt(integrate.quad(uz2, 0.0, T, epsabs=0.0, epsrel=1e-12)[0] / T)
+
+
+def _wf05_euler_rms() -> float:
+    """Euler sums of point samples of A w cos(k theta), theta = w T_s, in closed form: the sum of
+    cos(k theta) for k < n is (sin(n theta - theta/2) + sin(theta/2)) / (2 sin(theta/2)), so the
+    error against A sin(n theta) oscillates with amplitude A |g exp(-i theta/2) - 1|,
+    g = (theta/2) / sin(theta/2); its standard deviation over whole cycles is that over sqrt(2).
+    A = sqrt(2) times the registered vibration RMS (checked by its own oracle)."""
+    IN = _wf_in()
+    theta = 2 * math.pi * IN.vib_hz * IN.ts
+    g = (theta / 2) / math.sin(theta / 2)
+    amp = abs(g * complex(math.cos(theta / 2), -math.sin(theta / 2)) - 1)
+    return amp * glued.value("wf05-vib-rms")
+
+
+def _wf05_velocity_moments() -> dict[str, float]:
+    """Expected mean squares per axis of the navigation-only and federated velocity errors of the
+    worked example, and the sampling standard deviation of the federated one.
+
+    Navigation: white sigma_N per axis, plus the vibration on the vertical axis. Federated:
+    a_N e_N + a_L e_L with the Eq. (19) weights a_i = p_D / s_i of the designer's covariances
+    (s_N = sigma_N^2, vertically sigma_N^2 + the vibration's mean square; s_L = P(k/k)); e_L is
+    the stationary accelerometer-filter error, variance P(k/k), correlated as (1 - K)^(30 k)
+    between the measurement times 30 steps apart (so a flight gives few independent samples).
+    The variance of the mean square of a Gaussian sequence is 2 sum_ij c(i - j)^2 / n^2 per axis
+    and flight; 3 axes and 20 flights are independent."""
+    IN = _wf_in()
+    _, post, K = _wf_filter(_wf_sigma_a_example())
+    vib_ms, _ = _wf05_vibration_moments()
+    sn2 = IN.sigma_n**2
+    fed = []
+    for s_n, e_n in ((sn2, sn2), (sn2, sn2), (sn2 + vib_ms, sn2 + vib_ms)):
+        p_d = 1 / (1 / s_n + 1 / post)
+        a_n, a_l = p_d / s_n, p_d / post
+        fed.append((a_n**2 * e_n, a_l**2 * post))
+    n = round(IN.aperture_duration_s / IN.ts) // 30 + 1  # measurement times, one every 30 steps
+    lags = np.arange(n)
+    r = (1 - K) ** (30 * lags)
+    counts = np.where(lags == 0, n, 2 * (n - lags))  # ordered pairs (i, j) at each lag
+    var_series = []
+    for white, corr in fed:
+        c = corr * r
+        c[0] += white
+        var_series.append(2 * float(np.sum(counts * c**2)) / n**2)
+    flights = 20
+    var_ms = sum(var_series) / (9 * flights)
+    return {
+        "nav": (3 * sn2 + vib_ms) / 3,
+        "fed": sum(w + c for w, c in fed) / 3,
+        "fed_sd": math.sqrt(var_ms),
+    }
+
+
+def _wf05_fed_vel_mm() -> tuple[float, float]:
+    m = _wf05_velocity_moments()
+    return 1e3 * math.sqrt(m["fed"]), 1e3 * m["fed_sd"] / (2 * math.sqrt(m["fed"]))
+
+
+def _wf05_vel_gain_db() -> tuple[float, float]:
+    """20 log10 sqrt(nav / fed) and its sampling standard deviation (the federated mean square's,
+    to first order; the navigation one is set by the vibration's, added in quadrature)."""
+    m = _wf05_velocity_moments()
+    _, vib_sd = _wf05_vibration_moments()
+    rel_fed = m["fed_sd"] / m["fed"]
+    rel_nav = vib_sd / 3 / m["nav"]
+    return 10 * math.log10(m["nav"] / m["fed"]), 10 / math.log(10) * math.hypot(rel_fed, rel_nav)
+
+
+# --- ATC-10 Section 2: the thresholds in plain probabilities ----------------------------------
+
+
+def _atc10_counts(scale: float = 1.0, n_v: float | None = None) -> tuple[float, float, float]:
+    """The paper's sample counts typed in: 2 B alpha = 2e7, 4 B beta = 9.6e5 and n_v of (C.14)
+    from v = 600 mph and c in miles per second (scipy.constants), each times ``scale``."""
+    nv = 8.0 / 3.0 * 1e7 * scale * (600.0 / 3600.0) / (sc.c / sc.mile) if n_v is None else n_v
+    return 2e7 * scale, 9.6e5 * scale, nv
+
+
+def _atc10_pd(p_dl: float, k: int) -> float:
+    """p_d of Eq. (2.4.2) at t = 0: q = p_d^4, q = 1 - (1 - P_DL)^(1/K)."""
+    return (1.0 - (1.0 - p_dl) ** (1.0 / k)) ** 0.25
+
+
+def _atc10_pf(x_db: float, p_d: float) -> float:
+    """p_f = Q(1/sqrt(x) - Q^-1(1 - p_d)) (scipy.stats.norm), x = J/(P0 B tau)."""
+    return float(stats.norm.sf(1.0 / math.sqrt(10 ** (x_db / 10)) - stats.norm.ppf(p_d)))
+
+
+def _hit(pf: float, n: float) -> float:
+    """1 - (1 - p_f)^n, as -expm1(n log1p(-p_f))."""
+    return -math.expm1(n * math.log1p(-pf))
+
+
+def _atc10_adl(
+    pf: float, p_dl: float, k: int, counts: tuple[float, float, float], pdl_factor: bool = True
+) -> float:
+    """N_ADL / N_T = 1/2 (N / N_T) P_DL G^(K-1) F, t = 0, N = 0.1 N_T, in plain probabilities."""
+    n_a, n_b, n_v = counts
+    f = _hit(pf, n_a) * _hit(pf, n_b) ** 3
+    g = _hit(pf, n_a) * _hit(pf, n_v) ** 3
+    return 0.5 * 0.1 * (p_dl if pdl_factor else 1.0) * g ** (k - 1) * f
+
+
+def _atc10_fl(pf: float) -> float:
+    """N_FL / N_T = (1 - N / N_T) F, t = 0."""
+    n_a, n_b, _ = _atc10_counts()
+    return 0.9 * _hit(pf, n_a) * _hit(pf, n_b) ** 3
+
+
+def _crossing_db(count: Callable[[float], float], level: float) -> float:
+    """The first dB value where ``count`` reaches ``level``: a 0.5 dB grid from -40 dB to 130 dB and
+    bisection (``inf`` if the grid never reaches it)."""
+    grid = np.arange(-40.0, 130.0, 0.5)
+    idx = next((i for i, x in enumerate(grid) if count(x) > level), None)
+    if idx is None:
+        return math.inf  # no jammer reaches the level (the count's supremum lies below it)
+    lo, hi = grid[idx - 1], grid[idx]
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if count(mid) < level else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
+@functools.cache
+def _atc10_direct_x_db(
+    p_dl: float, k: int, *, scale: float = 1.0, pdl_factor: bool = True, n_v: float | None = None
+) -> float:
+    """10 log10 J/(P0 B tau) at which N_ADL = 0.01 N_T, t = 0, in plain probabilities (above);
+    without ``pdl_factor`` the bound 1/2 N G^(K-1) F alone."""
+    p_d, counts = _atc10_pd(p_dl, k), _atc10_counts(scale, n_v)
+    return _crossing_db(lambda x: _atc10_adl(_atc10_pf(x, p_d), p_dl, k, counts, pdl_factor), 0.01)
+
+
+@functools.cache
+def _atc10_fl_x_db(p_dl: float, k: int, fraction: float = 0.99) -> float:
+    """10 log10 J/(P0 B tau) at which N_FL reaches ``fraction`` of its supremum 0.9 N_T, t = 0."""
+    p_d = _atc10_pd(p_dl, k)
+    return _crossing_db(lambda x: _atc10_fl(_atc10_pf(x, p_d)), fraction * 0.9)
+
+
+# Table 2.1's design points (K, P_DL) and its printed K = 1000, P_DL = 0.999 entry, typed in
+_TABLE_21 = ((10, 0.88), (10, 0.999), (100, 0.88), (100, 0.999), (1000, 0.98), (1000, 0.999))
+_TABLE_21_FINITE = tuple(r for r in _TABLE_21 if r != (1000, 0.98))
+_TABLE_21_K1000_PRINTED = 77.0
+
+
+def _atc10_ceiling(p_dl: float, k: int = 1000) -> float:
+    """The N_ADL bound as the jammer grows without limit: plain probabilities at 300 dB, where p_f
+    is p_d to double precision."""
+    return _atc10_adl(_atc10_pf(300.0, _atc10_pd(p_dl, k)), p_dl, k, _atc10_counts())
+
+
+def _atc10_critical_p_dl() -> float:
+    """Bisection (100 halvings of [0.98, 0.9999]) of the K = 1000 ceiling against 0.01 N_T."""
+    lo, hi = 0.98, 0.9999
+    for _ in range(100):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if _atc10_ceiling(mid) < 0.01 else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
+def _atc10_ln_adl_k1000(erp_dbw: float) -> float:
+    return math.log(
+        _atc10_adl(_atc10_pf(erp_dbw - 50.0, _atc10_pd(0.999, 1000)), 0.999, 1000, _atc10_counts())
+    )
+
+
+def _atc10_k1000_slope() -> float:
+    erp = _atc10_direct_x_db(0.999, 1000) + 50.0
+    return (_atc10_ln_adl_k1000(erp + 0.01) - _atc10_ln_adl_k1000(erp - 0.01)) / 0.02
+
+
+def _atc10_erf_mc_band() -> float:
+    """Sampling standard deviation of the Monte Carlo coefficient (10^6 samples, x = 1, p_d = 1/2):
+    p_f = Q(1) from a binomial count, sqrt(p_f (1 - p_f) / n), and from the sample median used as
+    the threshold, phi(1) sqrt(1/4 / n) / phi(0); c = erfinv(1 - 2 p_f) moves by
+    sqrt(pi) exp(c^2) per unit p_f."""
+    n = 1_000_000
+    pf = float(stats.norm.sf(1.0))
+    sd_pf = math.hypot(
+        math.sqrt(pf * (1 - pf) / n), stats.norm.pdf(1.0) * math.sqrt(0.25 / n) / stats.norm.pdf(0.0)
+    )
+    return math.sqrt(math.pi) * math.exp(0.5) * sd_pf
+
+
+def _atc10_direct_pf(p_dl: float, k: int) -> float:
+    """p_f at the plain-probability crossing."""
+    x_db = _atc10_direct_x_db(p_dl, k)
+    q = 1.0 - (1.0 - p_dl) ** (1.0 / k)
+    return float(stats.norm.sf(1.0 / math.sqrt(10 ** (x_db / 10)) - stats.norm.ppf(q**0.25)))
+
+
+def _atc10_half_shift() -> float:
+    return max(
+        _atc10_direct_x_db(p, k, scale=0.5) - _atc10_direct_x_db(p, k)
+        for k, ps in ((1, (0.88, 0.9, 0.99, 0.999)), (10, (0.88, 0.999)))
+        for p in ps
+    )
+
+
+def _atc10_pdl_factor_shift() -> float:
+    """Over K = 1 at P_DL 0.88, 0.9, 0.99, 0.999 and Table 2.1's finite entries (K, P_DL) = (10, 0.88),
+    (10, 0.999), (100, 0.88), (100, 0.999), (1000, 0.999), typed in."""
+    points = [(1, p) for p in (0.88, 0.9, 0.99, 0.999)] + [
+        (10, 0.88),
+        (10, 0.999),
+        (100, 0.88),
+        (100, 0.999),
+        (1000, 0.999),
+    ]
+    return max(_atc10_direct_x_db(p, k) - _atc10_direct_x_db(p, k, pdl_factor=False) for k, p in points)
+
+
+# Table 1.1 as printed, typed in: (K, ERP dBW, rf dBW, diameter ft, beamwidth deg)
+_TABLE_11 = ((1, 33, 15, 2, 15), (10, 43, 20, 4, 12), (100, 53, 23, 8, 5), (1000, 77, 40, 18, 2))
+
+
+def _dish_gain(diameter_ft: float) -> float:
+    """eta (pi D / lambda)^2 of a parabolic dish (the assumed frequency and efficiency; feet and c
+    from scipy.constants)."""
+    from navcore.papers import atc10_jamming as pj
+
+    lam = sc.c / pj.IN.dish_frequency_hz
+    return pj.IN.dish_efficiency * (math.pi * diameter_ft * sc.foot / lam) ** 2
+
+
+def _dish_beamwidth_for_gain(gain_db: float) -> float:
+    """70 lambda / D for the dish of that gain: D / lambda = sqrt(G / eta) / pi, so 70 pi sqrt(eta / G)."""
+    from navcore.papers import atc10_jamming as pj
+
+    return 70 * math.pi * math.sqrt(pj.IN.dish_efficiency / 10 ** (gain_db / 10))
+
+
+def _table11_rf_misfit(row: int) -> float:
+    _, erp, rf, dia, _ = _TABLE_11[row]
+    return abs(rf - (erp - 10 * math.log10(_dish_gain(dia))))
+
+
+def _table11_bw_misfit(row: int) -> float:
+    _, erp, rf, _, bw = _TABLE_11[row]
+    return abs(bw - _dish_beamwidth_for_gain(erp - rf))
+
+
+def _ma1_window_empty(pf: float, n: int = 24, half_width: float = 9.0, step: float = 2e-3) -> float:
+    """Exact probability that n samples y_k = (z_k + z_(k+1)) / sqrt(2), z i.i.d. N(0, 1), all stay
+    below Q^-1(p_f): the chain z_1, z_2, ... carried on a grid (trapezoid cumulative sums,
+    numpy interpolation), f_(k+1)(z') = phi(z') int f_k(z) [z <= sqrt(2) u - z'] dz."""
+    u = float(stats.norm.isf(pf))
+    z = np.arange(-half_width, half_width + step / 2, step)
+    phi = np.exp(-0.5 * z * z) / math.sqrt(2 * math.pi)
+    f = phi.copy()
+    for _ in range(n):
+        cum = np.concatenate([[0.0], np.cumsum(0.5 * (f[1:] + f[:-1]) * step)])
+        f = phi * np.interp(math.sqrt(2) * u - z, z, cum, left=0.0, right=cum[-1])
+    return float(np.sum(0.5 * (f[1:] + f[:-1]) * step))
+
+
+def _atc10_window(pf: float) -> tuple[float, float, float]:
+    """(exact correlated empty probability, (1 - p_f)^24, sampling standard deviation of the
+    400 000-trial estimate) for the page's 24-sample window."""
+    exact = _ma1_window_empty(pf)
+    return exact, (1 - pf) ** 24, math.sqrt(exact * (1 - exact) / 400_000)
+
+
+def _atc10_window_dln(pf: float = 0.27) -> tuple[float, float]:
+    """3 (K - 1)[ln(1 - e_c) - ln(1 - e_f)] at K = 1000 with the exact e_c, and its sampling
+    standard deviation 3 (K - 1) sd / (1 - e_c)."""
+    exact, formula, sd = _atc10_window(pf)
+    return 3 * 999 * (math.log1p(-exact) - math.log1p(-formula)), 3 * 999 * sd / (1 - exact)
+
+
+def _brute_cross_energy(ci: np.ndarray, cj: np.ndarray, oversample: int = 200) -> float:
+    """int X_ij(t)^2 dt of the rectangular-chip waveforms' cross-correlation (unit chips, each code
+    scaled to a unit-peak autocorrelation), by fine-grid correlation (scipy.signal) and Riemann sums:
+    the left side of Parseval's identity that (F.6) rests on."""
+    dt = 1.0 / oversample
+    si = np.repeat(np.asarray(ci, float), oversample) / math.sqrt(ci.size)
+    sj = np.repeat(np.asarray(cj, float), oversample) / math.sqrt(cj.size)
+    x = signal.correlate(si, sj, mode="full", method="fft") * dt
+    return float(np.sum(x**2) * dt)
+
+
+def _atc10_f5_codes() -> tuple[np.ndarray, list[np.ndarray]]:
+    """The page's seeded codes: 31 chips, the wanted one and four interferers (seed 1), typed in."""
+    rng = np.random.default_rng(1)
+    ci = rng.choice([-1.0, 1.0], 31)
+    return ci, [rng.choice([-1.0, 1.0], 31) for _ in range(4)]
+
+
+def _atc10_f5_power() -> float:
+    ci, cjs = _atc10_f5_codes()
+    return sum(_brute_cross_energy(ci, cj) for cj in cjs) / 2.0
+
+
+def _atc10_f5_bound() -> float:
+    ci, cjs = _atc10_f5_codes()
+    wi = _brute_zakai(ci)
+    return sum(1.0 / (4.0 * math.sqrt(wi * _brute_zakai(cj))) for cj in cjs)
+
+
+def _atc10_w_random_1023() -> float:
+    rng = np.random.default_rng(3)
+    return float(np.mean([_brute_zakai(rng.choice([-1.0, 1.0], 1023)) for _ in range(20)]))
+
+
+def _atc10_w_ideal(n: int = 10_000) -> float:
+    """Closed form: R is 1 at 0, +-1/L alternating over L + e lags each side (e the assumed extra
+    lags) and back to 0 one lag later (a chip waveform's autocorrelation is continuous); piecewise
+    linear, int R^2 = 2 [(1 + 1/L + 1/L^2) + (L + e - 1) / L^2 + 1 / L^2] / 3."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    e = int(pm.IN.fig311_extra_lags)
+    energy = (
+        2
+        * (
+            Fraction(1)
+            + Fraction(1, n)
+            + Fraction(1, n * n)
+            + Fraction(n + e - 1, n * n)
+            + Fraction(1, n * n)
+        )
+        / 3
+    )
+    return float(1 / (2 * energy))
+
+
+# Reference [1]'s worked example as the paper prints it (end of Sec. 3.8), typed in:
+# N = 2e5 a second, B = 10 MHz, alpha = 1 s, theta = 1/2, tau/alpha = 1e-5 (Fig. 3.10).
+_EX_N, _EX_B, _EX_ALPHA, _EX_THETA, _EX_R = 200_000, 10_000_000, 1, Fraction(1, 2), 1e-5
+
+
+def _ex_power() -> Fraction:
+    return Fraction(_EX_N - 1, _EX_B * _EX_ALPHA)
+
+
+def _ex_exp_g() -> float:
+    """Exp_g under the ledger's reading of p (the convention noise_density_reading)."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(_EX_THETA**2 / (2 * Fraction(pm.IN.noise_density_reading) * _ex_power()))
+
+
+def _chernoff_exponent(n: float, exp_g: float, r: float = _EX_R) -> float:
+    """Chernoff exponent of the multiple-access noise, maximised numerically (scipy
+    minimize_scalar): sup_rho [rho theta - (n - 1) ln(1 - q + q cosh(rho a))], q = 2 tau/alpha,
+    a^2 = p / ((n - 1) q) (the noise power p shared by the overlaps), with theta fixed by
+    Exp_g = theta^2 / (2 p n / (n - 1)) at any p (Eqs. (3.7.21)-(3.7.24))."""
+    q = 2 * r
+    p = 2e-3
+    theta = math.sqrt(2 * p * n / (n - 1) * exp_g)
+    a = math.sqrt(p / ((n - 1) * q))
+
+    def minus(rho: float) -> float:
+        return -(rho * theta - (n - 1) * math.log1p(q * (math.cosh(rho * a) - 1)))
+
+    hi = 1.0
+    while minus(2 * hi) < minus(hi):
+        hi *= 2
+    res = optimize.minimize_scalar(
+        minus, bounds=(0.0, 2 * hi), method="bounded", options={"xatol": 1e-12 * hi}
+    )
+    return -float(res.fun)
+
+
+def _psi_cubic(alpha: float) -> float:
+    """psi as the real root of psi^3 + q psi - q = 0, q = 27 alpha / 4 (numpy.roots; ATC-10 Sec. 4.5)."""
+    q = 27.0 * alpha / 4.0
+    roots = np.roots([1.0, 0.0, q, -q])
+    return float(next(r.real for r in roots if abs(r.imag) < 1e-9 * abs(r)))
+
+
+def _psi_edge_error_pct() -> float:
+    """Eq. (4.5.38)'s two forms as printed, 1.5 2^(1/3) [alpha^(1/3) - (alpha/2)^(2/3)] at alpha = 0.3
+    and 1 - 4 / (27 alpha) at alpha = 1, against the cubic's root."""
+    small = 1.5 * 2 ** (1 / 3) * (0.3 ** (1 / 3) - (0.3 / 2) ** (2 / 3))
+    large = 1 - 4 / 27
+    return 100 * max(abs(small / _psi_cubic(0.3) - 1), abs(large / _psi_cubic(1.0) - 1))
+
+
+def _psk_one_over_6l() -> float:
+    """Mean square of a random-code interferer's normalised correlation given overlap, in the
+    continuum of delays: at a delay of d code lengths (uniform over (-1, 1)) a whole-chip lag sums
+    L (1 - |d|) random chip products (variance (1 - |d|) / L), a uniform fractional chip offset f
+    mixes two uncorrelated lags as (1 - f)^2 + f^2, and a uniform carrier phase gives E[cos^2] =
+    1/2 (each mean by scipy quad)."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    mix = integrate.quad(lambda f: (1 - f) ** 2 + f**2, 0.0, 1.0)[0]
+    overlap = integrate.quad(lambda d: 1 - abs(d), -1.0, 1.0, points=[0.0])[0] / 2
+    phase = integrate.quad(lambda ph: math.cos(ph) ** 2, 0.0, 2 * math.pi)[0] / (2 * math.pi)
+    return phase * mix * overlap / pm.IN.psk_chips
+
+
+# --- ATC-10 Sec. 4: the geometry of Table 4.1 by hand -----------------------------------------
+# Table 4.2 as printed, typed in (its beta and trace columns)
+_TABLE_42 = {
+    "I": {"beta": 0.0543, "trace_all": 7.84, "trace_123": 9.39},
+    "II": {"beta": 0.00355, "trace_all": 3.99, "trace_123": 14.9},
+}
+
+
+def _atc10_radius(which: str) -> float:
+    """The synchronous orbit (brentq of GM/r^2 = w^2 r with the declared GM and period) over the
+    declared Earth radius, or the declared fitted ratio."""
+    from navcore.papers import atc10_tracking as paper
+
+    if which == "fit":
+        return float(paper.IN.radius_ratio)
+    w = 2 * math.pi / paper.IN.orbit_period_s
+    gm = paper.IN.gm_m3_s2
+    r = optimize.brentq(lambda x: gm / x**2 - w**2 * x, 1e7, 1e8, xtol=1e-6, rtol=1e-15)
+    return r / paper.IN.earth_radius_m
+
+
+def _unit_sphere(lat_deg: float, lon_deg: float) -> np.ndarray:
+    la, lo = math.radians(lat_deg), math.radians(lon_deg)
+    return np.array([math.cos(la) * math.cos(lo), math.cos(la) * math.sin(lo), math.sin(la)])
+
+
+def _atc10_los(example: str, which: str, aircraft_height: bool = False) -> np.ndarray:
+    """Unit vectors satellite -> aircraft of a Table 4.1 example (the declared sub-satellite points
+    and aircraft position), the aircraft on the unit sphere or, with ``aircraft_height``, at the
+    declared height; a mirror of the longitudes changes none of the invariants below."""
+    from navcore.papers import atc10_tracking as paper
+
+    r = _atc10_radius(which)
+    h = 1 + paper.IN.aircraft_height_m / paper.IN.earth_radius_m if aircraft_height else 1.0
+    ac = h * _unit_sphere(*paper.aircraft_lat_lon())
+    rows = [ac - r * _unit_sphere(lat, lon) for lat, lon in paper.table_4_1(example)]
+    return np.array([v / np.linalg.norm(v) for v in rows])
+
+
+def _atc10_invariants(example: str, which: str) -> dict[str, float]:
+    """beta = K - |projection of 1 on F's columns|^2, tr (F'F)^-1 = sum 1/s_i^2 and, for three rows,
+    1'(F F')^-1 1 = sum (u_i . 1)^2 / s_i^2, all from numpy's SVD of F."""
+    F = _atc10_los(example, which)
+    ones = np.ones(F.shape[0])
+    u, sv, _ = np.linalg.svd(F, full_matrices=False)
+    u3, sv3, _ = np.linalg.svd(F[:3])
+    return {
+        "beta": float(ones @ ones - np.sum((u.T @ ones) ** 2)),
+        "trace_all": float(np.sum(1 / sv**2)),
+        "trace_123": float(np.sum(1 / sv3**2)),
+        "s_123": float(np.sum((u3.T @ np.ones(3)) ** 2 / sv3**2)),
+    }
+
+
+def _atc10_zenith_max(which: str) -> float:
+    """Largest zenith angle of Example I's satellites: for central angle g between the aircraft (on
+    the unit sphere) and a satellite at radius r, z = atan2(r sin g, r cos g - 1)."""
+    from navcore.papers import atc10_tracking as paper
+
+    r = _atc10_radius(which)
+    ac = _unit_sphere(*paper.aircraft_lat_lon())
+    out = []
+    for lat, lon in paper.table_4_1("I"):
+        g = math.acos(float(np.clip(ac @ _unit_sphere(lat, lon), -1, 1)))
+        out.append(math.degrees(math.atan2(r * math.sin(g), r * math.cos(g) - 1)))
+    return max(out)
+
+
+def _atc10_misses() -> dict[tuple[str, str], float]:
+    return {
+        (ex, c): _atc10_invariants(ex, "phys")[c] / _TABLE_42[ex][c] - 1
+        for ex in ("I", "II")
+        for c in ("beta", "trace_all", "trace_123")
+    }
+
+
+def _atc10_best_triplet() -> tuple[tuple[int, ...], float]:
+    """Brute force over every triplet of Example II's satellites (synchronous orbit): the smallest
+    position trace by SVD of the geometry by hand, and its triplet."""
+    import itertools
+
+    F = _atc10_los("II", "phys")
+    traces = {
+        t: float(np.sum(1 / np.linalg.svd(F[list(t)], compute_uv=False) ** 2))
+        for t in itertools.combinations(range(F.shape[0]), 3)
+    }
+    best = min(traces, key=traces.__getitem__)
+    return best, traces[best]
+
+
+def _table_43_row(t: dict[str, float], sigma0: float) -> dict[str, float]:
+    """Table 4.3 by hand (Eqs. (4.5.27), (4.5.32)-(4.5.35) as the book reads them): alpha =
+    (8/27) sigma0^2 beta / sigma^2, psi the cubic's root, sd_N = sigma sqrt(tr + (psi/beta) S) and
+    sd_(N+1) = sigma sqrt(tr3 + gamma S3), gamma = (psi + (27/8) alpha (2/psi)) / beta; sigma = 50 ns
+    and 1 ft a nanosecond, as the paper prints them; sd_0 = sigma sqrt(tr + S / beta) without tracking."""
+    sigma = 50.0
+    alpha = 8 / 27 * sigma0**2 * t["beta"] / sigma**2
+    psi = _psi_cubic(alpha)
+    gamma = (psi + 27 / 8 * alpha * 2 / psi) / t["beta"]
+    return {
+        "psi": psi,
+        "sd0": sigma * math.sqrt(t["trace_all"] + t["s_all"] / t["beta"]),
+        "sdN": sigma * math.sqrt(t["trace_all"] + psi / t["beta"] * t["s_all"]),
+        "sdN1": sigma * math.sqrt(t["trace_123"] + gamma * t["s_123"]),
+    }
+
+
+# Table 4.2's Example II as printed, and Table 4.3's printed sd_N of Example II at 5 ns, typed in
+_TABLE_42_II = {"beta": 0.00355, "trace_all": 3.99, "trace_123": 14.9, "s_all": 1.16, "s_123": 14.3}
+_TABLE_43_SDN_II_5 = 205.0
+
+
+_TABLE_42_I = {"beta": 0.0543, "trace_all": 7.84, "trace_123": 9.39, "s_all": 1.30, "s_123": 5.76}
+
+
+def _atc10_geometry_inputs(example: str, which: str) -> dict[str, float]:
+    """Table 4.2's columns of ``example`` from the geometry by hand (SVD) at ``which`` radius."""
+    F = _atc10_los(example, which)
+    u, sv, _ = np.linalg.svd(F, full_matrices=False)
+    out = _atc10_invariants(example, which)
+    out["s_all"] = float(np.sum((u.T @ np.ones(F.shape[0])) ** 2 / sv**2))
+    return out
+
+
+def _atc10_phys_lowering() -> list[float]:
+    printed = {"I": _TABLE_42_I, "II": _TABLE_42_II}
+    return [
+        1 - _table_43_row(_atc10_geometry_inputs(ex, "phys"), s0)[c] / _table_43_row(printed[ex], s0)[c]
+        for ex in ("I", "II")
+        for s0 in (5.0, 50.0, 500.0)
+        for c in ("sd0", "sdN")
+    ]
+
+
+def _atc10_s123_printed_residual_pct() -> float:
+    """1'(F3'F3)^-1 1 in the Earth-fixed frame (the printed (4.5.30)): sum (v_i . 1)^2 / s_i^2 with
+    F3 = U S V' by numpy's SVD, against Table 4.2's printed S3 (5.76 and 14.3)."""
+    out = []
+    for ex, printed in (("I", 5.76), ("II", 14.3)):
+        _, sv, vt = np.linalg.svd(_atc10_los(ex, "fit")[:3])
+        out.append(abs(float(np.sum((vt @ np.ones(3)) ** 2 / sv**2)) / printed - 1))
+    return 100 * max(out)
+
+
+def _atc10_col5_corrected(example: str, sigma0: float) -> float:
+    """Table 4.3 col. (v) by hand from the printed Table 4.2 with S3 = 1'(F3 F3')^-1 1 of the stated
+    system (synchronous orbit, the aircraft at its declared height): sum (u_i . 1)^2 / s_i^2 (SVD)."""
+    u3, sv3, _ = np.linalg.svd(_atc10_los(example, "phys", aircraft_height=True)[:3])
+    t = dict({"I": _TABLE_42_I, "II": _TABLE_42_II}[example])
+    t["s_123"] = float(np.sum((u3.T @ np.ones(3)) ** 2 / sv3**2))
+    return _table_43_row(t, sigma0)["sdN1"]
+
+
+def _convexity_limit() -> float:
+    """sympy differentiates h(x) = ln(1 - q + q cosh x) twice; scipy brentq finds where
+    h'' - h'/x changes sign (q = 2 tau/alpha of Sec. 3.6)."""
+    import sympy
+
+    from navcore.papers import atc10_multiple_access as pm
+
+    x = sympy.symbols("x", positive=True)
+    q = sympy.Float(2 * pm.IN.tau_over_alpha_sec36)
+    h = sympy.log(1 - q + q * sympy.cosh(x))
+    margin = sympy.lambdify(x, sympy.diff(h, x, 2) - sympy.diff(h, x) / x, "math")
+    return optimize.brentq(lambda v: float(margin(v)), 1.0, 30.0, xtol=1e-14, rtol=1e-14)
+
+
+def _two_point_upper_efolds() -> float:
+    """The page's two-point noise (power 4/75, theta = 1/2, N = 1e7, q = 4e-5): the Chernoff bound
+    sup over rho of rho theta - (N - 1) ln(1 - q + q cosh(rho a)) (scipy minimize_scalar) against
+    the exact tail sum_K Bin(N - 1, q)(K) P(a (2J - K) >= theta), J ~ Bin(K, 1/2) (scipy.stats)."""
+    power, theta, n, q = 4 / 75, 0.5, 10_000_000, 4e-5
+    a = math.sqrt(power / ((n - 1) * q))
+
+    def minus(rho: float) -> float:
+        return -(rho * theta - (n - 1) * math.log1p(q * (math.cosh(rho * a) - 1)))
+
+    res = optimize.minimize_scalar(
+        minus, bounds=(0.0, 50.0 / a), method="bounded", options={"xatol": 1e-10 / a}
+    )
+    ln_upper = float(res.fun)
+    ks = np.arange(0, 4001)
+    pk = stats.binom.pmf(ks, n - 1, q)
+    j_min = np.ceil((theta / a + ks) / 2 - 1e-12)  # a (2J - K) >= theta
+    tail = float(np.sum(pk * stats.binom.sf(j_min - 1, ks, 0.5)))
+    return ln_upper - math.log(tail)
+
+
+def _atc10_fit_worst_pct() -> float:
+    """Table 4.2 the paper's way by hand at the fitted radius, the aircraft at its declared height:
+    beta, the traces and S from numpy's SVD, col. 5 as the printed (4.5.30) 1'(F3'F3)^-1 1 in the
+    Earth-fixed frame; the largest miss against the printed table (typed in)."""
+    worst = 0.0
+    for ex, printed in (("I", _TABLE_42_I), ("II", _TABLE_42_II)):
+        F = _atc10_los(ex, "fit", aircraft_height=True)
+        ones = np.ones(F.shape[0])
+        u, sv, _ = np.linalg.svd(F, full_matrices=False)
+        _, sv3, vt3 = np.linalg.svd(F[:3])
+        mine = {
+            "beta": float(ones @ ones - np.sum((u.T @ ones) ** 2)),
+            "trace_all": float(np.sum(1 / sv**2)),
+            "trace_123": float(np.sum(1 / sv3**2)),
+            "s_all": float(np.sum((u.T @ ones) ** 2 / sv**2)),
+            "s_123": float(np.sum((vt3 @ np.ones(3)) ** 2 / sv3**2)),
+        }
+        worst = max(worst, *(abs(mine[c] / printed[c] - 1) for c in printed))
+    return 100 * worst
+
+
+ORACLES += [
+    # the samples' mean over M = 2001 equally spaced times differs from the time average by
+    # ((f_0 + f_M)/2 - mean) / (M - 1): under 1/2000 relative while the range varies by less than its mean
+    Oracle("wf01-mean-range-km", _wf_mean_range_km, rtol=1 / 2000, why="scipy quad over the continuous turn"),
+    Oracle(
+        "wf01-sd-sampling-error-pct",
+        lambda: _chi_cv_pct(glued.WF01_LS_TRIALS),
+        rtol=1 / (4 * glued.WF01_LS_TRIALS),
+        why="chi(n), exact",
+    ),
+    Oracle(
+        "wf02-largest-bound-ratio",
+        _wf_bound_ratio_max,
+        rtol=1e-7,
+        why="central differences, Eq. (9) as printed",
+    ),
+    Oracle("wf89-bound-ratio", _wf_bound_ratio_max, rtol=1e-7, why="central differences, Eq. (9) as printed"),
+    Oracle("wf03-dl-gain", lambda: _wf_filter(_wf_sigma_a_example())[2], rtol=_WF_RTOL, why=_WF_DARE),
+    Oracle(
+        "wf03-dl-time-constant",
+        lambda: _wf_in().ts / _wf_filter(_wf_sigma_a_example())[2],
+        rtol=_WF_RTOL,
+        why=_WF_DARE,
+    ),
+    Oracle("wf03-corr-dl-dg", _wf03_corr, rtol=_WF_RTOL, why=_WF_DARE),
+    Oracle("wf03-naive-optimism", _wf03_naive_optimism, rtol=_WF_RTOL, why=_WF_DARE),
+    Oracle("wf03-generic-tightness-rho1", _wf_tightness_generic_rho1, rtol=1e-9, why="rho = 1 closed form"),
+    Oracle("wf89-rem2-generic", _wf_tightness_generic_rho1, rtol=1e-9, why="rho = 1 closed form"),
+    Oracle("wf03-isotropic-tightness-rho0", _wf_tightness_isotropic_rho0, rtol=1e-12, why="exact fractions"),
+    Oracle(
+        "wf03-large-qt-change-pct",
+        lambda: 100 * (math.hypot(1.0, 0.2 / 2.0) - 1),
+        rtol=1e-10,
+        why="closed form sqrt(1 + (sigma_N / sigma_T)^2) - 1",
+    ),
+    Oracle(
+        "wf04-trace-reading-100ug-db",
+        lambda: _wf_improvement_db(_wf_sigma_a_example(), 2.0) + 10 * math.log(3) / math.log(10),
+        atol=_WF_DB_ATOL,
+        why=_WF_DARE,
+    ),
+    Oracle("wf04-prior-instead-shift-db", _wf_prior_instead_shift_db, atol=_WF_DB_ATOL, why=_WF_DARE),
+    Oracle(
+        "wf04-sigma-dl-max",
+        lambda: math.sqrt(_wf_filter(_wf_in().sigma_a_high)[1]),
+        rtol=_WF_RTOL,
+        why=_WF_DARE,
+    ),
+    # the paper's sigma_G = 1 Hz, f_L1/c = 5.25 1/m and sigma_N = 0.02 m/s (Sec. IV.D), typed in
+    Oracle("wf04-gps-velocity-sigma", lambda: float(1 / Fraction("5.25")), rtol=1e-15, why="printed values"),
+    Oracle(
+        "wf04-gps-velocity-over-sigma-n",
+        lambda: float(1 / Fraction("5.25") / Fraction("0.02")),
+        rtol=1e-15,
+        why="printed values",
+    ),
+    Oracle(
+        "wf04-sigma-d-over-sigma-n",
+        lambda: _wf_sigma_d(_wf_sigma_a_example(), 2.0) / 0.02,
+        rtol=_WF_RTOL,
+        why=_WF_DARE,
+    ),
+    Oracle("wf04-gps-gain-max-db", _wf_gps_gain_max_db, atol=_WF_DB_ATOL, why=_WF_DARE),
+    Oracle("wf89-gps-gain", _wf_gps_gain_max_db, atol=_WF_DB_ATOL, why=_WF_DARE),
+    Oracle("wf04-three-vs-one-db", _wf_three_vs_one_db, atol=_WF_DB_ATOL, why=_WF_DARE),
+    Oracle(
+        "wf04-gps-gain-wide-db",
+        lambda: _wf_improvement_db(0.3, 2.0, 0) - _wf_improvement_db(0.3, 2.0, 3),
+        atol=_WF_DB_ATOL,
+        why=_WF_DARE,
+    ),
+    # central differences to ~1e-8, amplified by the 4-parameter fit's conditioning (below 1e4)
+    Oracle("wf89-leverage-z", lambda: _wf_leverage()["z"], rtol=1e-4, why="Eq. (6) by hand"),
+    Oracle("wf89-leverage-white", lambda: _wf_leverage()["white"], rtol=1e-4, why="Eq. (6) by hand"),
+    Oracle("wf89-eq20-block", _wf_eq20_block, rtol=1e-12, why="the seeded joint entry by entry"),
+    Oracle("wf89-eq24-ratio", lambda: 100**-0.5, rtol=1e-15, why="P_N = sigma_N I scales as the unit"),
+    # a seeded run of 200 paths: five sampling standard deviations of its RMS
+    Oracle(
+        "wf05-sigma-dl", lambda: math.sqrt(_wf_filter(_wf_sigma_a_example())[1]), rtol=_WF_RTOL, why=_WF_DARE
+    ),
+    # the samples' mean over M = 200 times differs from the time average by at most 1/199 of the
+    # spread of u_z^2 (under its mean here); the square root halves it
+    Oracle("wf05-uz", _wf_uz_rms, rtol=1 / 2 / 199, why="scipy quad over the continuous turn"),
+    # the seeded flights' statistics: the expected value, within five sampling standard deviations
+    Oracle(
+        "wf05-vib-rms",
+        lambda: _wf05_vib_rms()[0],
+        band=lambda: 5 * _wf05_vib_rms()[1],
+        why="the vibration's exact moments",
+    ),
+    Oracle(
+        "wf05-freq-err",
+        lambda: 10e9 / sc.c * _wf05_vib_rms()[0] * _wf_uz_rms(),
+        band=lambda: 10e9 / sc.c * 5 * _wf05_vib_rms()[1] * _wf_uz_rms(),
+        why="f0/c times the vibration's exact RMS and the quad u_z",
+    ),
+    Oracle(
+        "wf05-freq-err-over-noise",
+        lambda: 10e9 / sc.c * _wf05_vib_rms()[0] * _wf_uz_rms() / 1.0,
+        band=lambda: 10e9 / sc.c * 5 * _wf05_vib_rms()[1] * _wf_uz_rms() / 1.0,
+        why="the same over the 1 Hz noise",
+    ),
+    # 60 s of 3 Hz at 50 Hz is 180 whole cycles and one more sample: 1/3000 from whole cycles
+    Oracle("wf05-euler-point-rms", _wf05_euler_rms, rtol=1e-3, why="closed-form Euler sum"),
+    Oracle(
+        "wf05-fed-vel-mm",
+        lambda: _wf05_fed_vel_mm()[0],
+        band=lambda: 5 * _wf05_fed_vel_mm()[1],
+        why="expected federated error, correlated-sample band",
+    ),
+    Oracle(
+        "wf05-vel-gain-db",
+        lambda: _wf05_vel_gain_db()[0],
+        band=lambda: 5 * _wf05_vel_gain_db()[1],
+        why="expected mean squares",
+    ),
+    # bisection to 1e-16 dB: p_f moves by less than 100 relative per dB here, so 1e-6 holds
+    Oracle(
+        "atc10-pf-k1000-0.999", lambda: _atc10_direct_pf(0.999, 1000), rtol=1e-6, why="direct probabilities"
+    ),
+    Oracle("atc10-10-pf-K1-0.88", lambda: _atc10_direct_pf(0.88, 1), rtol=1e-6, why="direct probabilities"),
+    Oracle(
+        "atc10-10-printed-c1-ln-K1-0.88",
+        lambda: 2e7 * math.log1p(-_atc10_direct_pf(0.88, 1)),
+        rtol=1e-6,
+        why="direct probabilities",
+    ),
+    # the dB crossings: bisection far below 1e-6 dB, as for the other ERP oracles (+50 dBW: P0 tau B = 1e5 W)
+    Oracle(
+        "atc10-erp-half-K100-0.88",
+        lambda: _atc10_direct_x_db(0.88, 100, scale=0.5) + 50.0,
+        atol=1e-6,
+        why="direct probabilities, half the samples",
+    ),
+    Oracle(
+        "atc10-erp-half-K100-0.999",
+        lambda: _atc10_direct_x_db(0.999, 100, scale=0.5) + 50.0,
+        atol=1e-6,
+        why="direct probabilities, half the samples",
+    ),
+    Oracle("atc10-half-shift-small-k", _atc10_half_shift, atol=2e-6, why="direct probabilities"),
+    Oracle("atc10-pdl-factor-shift", _atc10_pdl_factor_shift, atol=2e-6, why="direct probabilities"),
+    Oracle(
+        "atc10-v-alpha-over-c-us",
+        lambda: 600 * sc.mile / 3600 * 1.0 / sc.c * 1e6,
+        rtol=1e-12,
+        why="600 mph, alpha = 1 s, scipy.constants",
+    ),
+    Oracle(
+        "atc10-11-adl-erp-0.9",
+        lambda: _atc10_direct_x_db(0.9, 1) + 50.0,
+        atol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-11-gap-adl",
+        lambda: _atc10_direct_x_db(0.9, 1) - _atc10_direct_x_db(0.999, 1),
+        atol=2e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-11-fl-level-spread",
+        lambda: _atc10_fl_x_db(0.88, 1, 0.999) - _atc10_fl_x_db(0.88, 1, 0.5),
+        atol=2e-6,
+        why="direct probabilities",
+    ),
+    Oracle("atc10-12-fig2.4-x", lambda: _atc10_direct_x_db(0.88, 10), atol=1e-6, why="direct probabilities"),
+    Oracle(
+        "atc10-12-fig2.16-x", lambda: _atc10_direct_x_db(0.999, 1000), atol=1e-6, why="direct probabilities"
+    ),
+    # p_f is p_d to 1e-15 at 300 dB; G^999 amplifies a p_f error by under 1e3
+    Oracle(
+        "atc10-12-ceiling-K1000-0.88", lambda: _atc10_ceiling(0.88), rtol=1e-8, why="direct probabilities"
+    ),
+    Oracle(
+        "atc10-12-ceiling-K1000-0.98", lambda: _atc10_ceiling(0.98), rtol=1e-8, why="direct probabilities"
+    ),
+    Oracle(
+        "atc10-12-ceiling-K1000-0.999", lambda: _atc10_ceiling(0.999), rtol=1e-8, why="direct probabilities"
+    ),
+    Oracle(
+        "atc10-12-fl-erp-lo",
+        lambda: min(_atc10_fl_x_db(p, k) for k, p in _TABLE_21) + 50.0,
+        atol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-12-fl-erp-hi",
+        lambda: max(_atc10_fl_x_db(p, k) for k, p in _TABLE_21) + 50.0,
+        atol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-12-fl-pf",
+        lambda: float(np.median([_atc10_pf(_atc10_fl_x_db(p, k), _atc10_pd(p, k)) for k, p in _TABLE_21])),
+        rtol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-12-adl-pf-lo",
+        lambda: min(_atc10_pf(_atc10_direct_x_db(p, k), _atc10_pd(p, k)) for k, p in _TABLE_21_FINITE),
+        rtol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-12-adl-pf-hi",
+        lambda: max(_atc10_pf(_atc10_direct_x_db(p, k), _atc10_pd(p, k)) for k, p in _TABLE_21_FINITE),
+        rtol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle("atc10-12-k1000-critical", _atc10_critical_p_dl, rtol=1e-9, why="bisection of the direct ceiling"),
+    Oracle(
+        "atc10-12-erp-K1000-0.999",
+        lambda: _atc10_direct_x_db(0.999, 1000) + 50.0,
+        atol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-12-K1000-below-printed",
+        lambda: _TABLE_21_K1000_PRINTED - (_atc10_direct_x_db(0.999, 1000) + 50.0),
+        atol=1e-6,
+        why="direct probabilities, the printed 77 dBW",
+    ),
+    Oracle("atc10-12-K1000-slope", _atc10_k1000_slope, rtol=1e-6, why="direct probabilities"),
+    Oracle(
+        "atc10-12-K1000-misread-pct",
+        lambda: 100 * (math.exp(_atc10_ln_adl_k1000(_TABLE_21_K1000_PRINTED)) / 0.01 - 1),
+        rtol=1e-6,
+        why="direct probabilities at the printed 77 dBW",
+    ),
+    Oracle(
+        "atc10-12-nv23-K1000-0.999",
+        lambda: _atc10_direct_x_db(0.999, 1000, n_v=23.0) + 50.0,
+        atol=1e-6,
+        why="direct probabilities, n_v = 23",
+    ),
+    Oracle(
+        "atc10-12-nv23-small-k",
+        lambda: max(
+            abs(_atc10_direct_x_db(p, k, n_v=23.0) - _atc10_direct_x_db(p, k))
+            for k, p in _TABLE_21_FINITE
+            if k <= 100
+        ),
+        atol=2e-6,
+        why="direct probabilities, n_v = 23",
+    ),
+    Oracle("atc10-12-erf-coef-model", lambda: 1 / math.sqrt(2), rtol=1e-9, why="(D.17): 1/sqrt(2)"),
+    Oracle(
+        "atc10-12-erf-coef-mc",
+        lambda: 1 / math.sqrt(2),
+        band=lambda: 5 * _atc10_erf_mc_band(),
+        why="(D.17) within five sampling standard deviations",
+    ),
+    Oracle(
+        "atc10-erp-by-K-1-0.88",
+        lambda: _atc10_direct_x_db(0.88, 1) + 50.0,
+        atol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-erp-by-K-10-0.88",
+        lambda: _atc10_direct_x_db(0.88, 10) + 50.0,
+        atol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-erp-by-K-100-0.88",
+        lambda: _atc10_direct_x_db(0.88, 100) + 50.0,
+        atol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-erp-by-K-1000-0.88", lambda: _atc10_direct_x_db(0.88, 1000) + 50.0, why="direct: no crossing"
+    ),
+    Oracle(
+        "atc10-erp-by-K-1-0.999",
+        lambda: _atc10_direct_x_db(0.999, 1) + 50.0,
+        atol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-erp-by-K-10-0.999",
+        lambda: _atc10_direct_x_db(0.999, 10) + 50.0,
+        atol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-erp-by-K-100-0.999",
+        lambda: _atc10_direct_x_db(0.999, 100) + 50.0,
+        atol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-erp-by-K-1000-0.999",
+        lambda: _atc10_direct_x_db(0.999, 1000) + 50.0,
+        atol=1e-6,
+        why="direct probabilities",
+    ),
+    Oracle("atc10-ceiling-K1000-0.88", lambda: _atc10_ceiling(0.88), rtol=1e-8, why="direct probabilities"),
+    Oracle(
+        "atc10-step-K100-K1000-0.999",
+        lambda: _atc10_direct_x_db(0.999, 1000) - _atc10_direct_x_db(0.999, 100),
+        atol=2e-6,
+        why="direct probabilities",
+    ),
+    Oracle("atc10-13-rf-fit-K10", lambda: _table11_rf_misfit(1), rtol=1e-9, why="eta (pi D / lambda)^2"),
+    Oracle(
+        "atc10-13-rf-fit-others",
+        lambda: max(_table11_rf_misfit(i) for i in (0, 2, 3)),
+        rtol=1e-9,
+        why="eta (pi D / lambda)^2",
+    ),
+    Oracle(
+        "atc10-13-bw-K1-dish", lambda: _dish_beamwidth_for_gain(33 - 15), rtol=1e-9, why="70 pi sqrt(eta / G)"
+    ),
+    # theta^2 G is the same for both antennas: 20 deg x sqrt(G_2.7 / G_K1), G_2.7 = 10^3.3 / 30, G_K1 = 10^1.8
+    Oracle(
+        "atc10-13-bw-K1-scaled",
+        lambda: 20 * math.sqrt(10**1.5 / 30),
+        rtol=1e-12,
+        why="the printed 20 deg, 30 W, 33 dBW and the row's 33 and 15 dBW",
+    ),
+    Oracle(
+        "atc10-13-bw-fit-others",
+        lambda: max(_table11_bw_misfit(i) for i in (1, 2, 3)),
+        rtol=1e-9,
+        why="70 pi sqrt(eta / G)",
+    ),
+    Oracle(
+        "atc10-13-30W-gain-db",
+        lambda: 33 - 10 * math.log(30) / math.log(10),
+        rtol=1e-12,
+        why="33 dBW - 10 log10 30",
+    ),
+    Oracle(
+        "atc10-13-2ft-gain-db",
+        lambda: 10 * math.log10(_dish_gain(2)),
+        rtol=1e-12,
+        why="eta (pi D / lambda)^2",
+    ),
+    Oracle(
+        "atc10-13-2ft-rf-w", lambda: 10**3.3 / _dish_gain(2), rtol=1e-11, why="10^3.3 W over the dish gain"
+    ),
+    Oracle(
+        "atc10-pf-threshold-K1-0.88", lambda: _atc10_direct_pf(0.88, 1), rtol=1e-6, why="direct probabilities"
+    ),
+    # the simulated window (400 000 seeded trials, p_f from 0.01 to 0.27) against the exact chain
+    # probability, within five sampling standard deviations (the grid quadrature is good to 1e-6)
+    Oracle(
+        "atc10-mc-window-ratio-hi",
+        lambda: _atc10_window(0.27)[0] / _atc10_window(0.27)[1],
+        band=lambda: 5 * _atc10_window(0.27)[2] / _atc10_window(0.27)[1],
+        why="exact MA(1) window by quadrature",
+    ),
+    Oracle(
+        "atc10-mc-window-ratio-lo",
+        lambda: _atc10_window(0.01)[0] / _atc10_window(0.01)[1],
+        band=lambda: 5 * _atc10_window(0.01)[2] / _atc10_window(0.01)[1],
+        why="exact MA(1) window by quadrature",
+    ),
+    Oracle(
+        "atc10-mc-window-dln-k1000",
+        lambda: _atc10_window_dln()[0],
+        band=lambda: 5 * _atc10_window_dln()[1],
+        why="exact MA(1) window by quadrature",
+    ),
+    Oracle(
+        "atc10-mc-window-factor-k1000",
+        lambda: math.exp(_atc10_window_dln()[0]),
+        band=lambda: math.exp(_atc10_window_dln()[0]) * math.expm1(5 * _atc10_window_dln()[1]),
+        why="exact MA(1) window by quadrature",
+    ),
+    # fine-grid integrals of piecewise-linear functions: the trapezoid error dt^2/12 int (R^2)''
+    # is ~1e-5 relative at 200 samples a chip
+    Oracle(
+        "atc10-23-f5-power", _atc10_f5_power, rtol=2e-4, why="brute-force int X_ij^2, Parseval's other side"
+    ),
+    Oracle("atc10-23-f5-bound", _atc10_f5_bound, rtol=2e-4, why="brute-force Zakai bandwidths"),
+    Oracle("atc10-23-w-random-1023", _atc10_w_random_1023, rtol=2e-4, why="brute-force Zakai bandwidths"),
+    Oracle("atc10-23-thm-ratio", lambda: 1 / (4 * _atc10_w_ideal()), rtol=1e-12, why="closed form"),
+    Oracle(
+        "atc10-22-inverse-p", lambda: float(1 / _ex_power()), rtol=1e-15, why="exact fraction, printed values"
+    ),
+    Oracle(
+        "atc10-22-exp-g-half",
+        lambda: float(_EX_THETA**2 / (2 * _ex_power())),
+        rtol=1e-15,
+        why="exact fraction, printed values",
+    ),
+    # (3.8.16) is the large-N form of the exact exponent (N for N - 1, terms of order q dropped):
+    # O(1/N + q) = 3e-5 relative here; allowed 1e-4 on the exponent and its ratio, and what that
+    # becomes on 100 (ratio - 1) (ratio 1.29: 5e-4) and on exp(Exp_g - Exp) (Exp 8.6: 1e-3)
+    Oracle(
+        "atc10-22-exp-1e5", lambda: _chernoff_exponent(1e5, _ex_exp_g()), rtol=1e-4, why="numerical Chernoff"
+    ),
+    Oracle(
+        "atc10-22-ratio-1e5",
+        lambda: _ex_exp_g() / _chernoff_exponent(1e5, _ex_exp_g()),
+        rtol=1e-4,
+        why="numerical Chernoff",
+    ),
+    Oracle(
+        "atc10-22-optimistic-pct",
+        lambda: 100 * (_ex_exp_g() / _chernoff_exponent(_EX_N, _ex_exp_g()) - 1),
+        rtol=5e-4,
+        why="numerical Chernoff",
+    ),
+    Oracle(
+        "atc10-22-pf-factor",
+        lambda: math.exp(_ex_exp_g() - _chernoff_exponent(_EX_N, _ex_exp_g())),
+        rtol=1e-3,
+        why="numerical Chernoff",
+    ),
+    Oracle(
+        "atc10-31-approx-edge-error-pct", _psi_edge_error_pct, rtol=1e-9, why="the cubic's root, numpy.roots"
+    ),
+    Oracle("atc10-20-psk-1-6L", _psk_one_over_6l, rtol=1e-12, why="random-code correlation, scipy quad"),
+    Oracle(
+        "atc10-20-envelope-m3",
+        lambda: float(Fraction(4, 5) * Fraction(1, 2) ** 3 + Fraction(1, 5) * 2**3),
+        rtol=1e-15,
+        why="exact fractions of the envelope's two points (0.5 w.p. 0.8, 2 w.p. 0.2)",
+    ),
+    # E[cos^3] over a uniform phase grid is 0 exactly: the float sum leaves round-off of at most
+    # (terms) x eps x sum |p v^3|, far below 1e-13 for a few hundred terms
+    Oracle("atc10-20-model-m3", lambda: 0.0, atol=1e-13, why="zero by symmetry"),
+    Oracle(
+        "atc10-90-step-per-decade-lo",
+        lambda: min(
+            _atc10_direct_x_db(0.9, 10) - _atc10_direct_x_db(0.9, 1),
+            _atc10_direct_x_db(0.9, 100) - _atc10_direct_x_db(0.9, 10),
+        ),
+        atol=2e-6,
+        why="direct probabilities",
+    ),
+    Oracle(
+        "atc10-90-step-per-decade-hi",
+        lambda: max(
+            _atc10_direct_x_db(0.9, 10) - _atc10_direct_x_db(0.9, 1),
+            _atc10_direct_x_db(0.9, 100) - _atc10_direct_x_db(0.9, 10),
+        ),
+        atol=2e-6,
+        why="direct probabilities",
+    ),
+    Oracle("atc10-90-ceiling-k1000", lambda: _atc10_ceiling(0.9), rtol=1e-8, why="direct probabilities"),
+    Oracle(
+        "atc10-90-beamwidth-k1",
+        lambda: 20 * math.sqrt(10**1.5 / 30),
+        rtol=1e-12,
+        why="the printed 20 deg, 30 W, 33 dBW and the row's 33 and 15 dBW",
+    ),
+    # (3.8.16) against the exact exponent: its large-N remainder O(1/N + q), as for page 22
+    Oracle(
+        "atc10-90-exp-2e5",
+        lambda: _chernoff_exponent(_EX_N, _ex_exp_g()),
+        rtol=1e-4,
+        why="numerical Chernoff",
+    ),
+    Oracle(
+        "atc10-90-exp-1e5", lambda: _chernoff_exponent(1e5, _ex_exp_g()), rtol=1e-4, why="numerical Chernoff"
+    ),
+    Oracle(
+        "atc10-90-ratio-2e5",
+        lambda: _ex_exp_g() / _chernoff_exponent(_EX_N, _ex_exp_g()),
+        rtol=1e-4,
+        why="numerical Chernoff",
+    ),
+    Oracle(
+        "atc10-90-ratio-1e5",
+        lambda: _ex_exp_g() / _chernoff_exponent(1e5, _ex_exp_g()),
+        rtol=1e-4,
+        why="numerical Chernoff",
+    ),
+    # the geometry by hand: double-precision SVDs of well-conditioned 3-column matrices (1e-12)
+    # after a brentq radius to 1e-15; beta of Example II is a small difference (0.0036 of K = 8:
+    # 1e-12 x 8 / 0.0036 ~ 3e-9 relative), so 1e-8 throughout
+    Oracle("atc10-30-r-phys", lambda: _atc10_radius("phys"), rtol=1e-9, why="brentq orbit radius"),
+    Oracle("atc10-30-zenith-I-phys", lambda: _atc10_zenith_max("phys"), rtol=1e-9, why="spherical triangle"),
+    Oracle("atc10-30-zenith-I-fit", lambda: _atc10_zenith_max("fit"), rtol=1e-9, why="spherical triangle"),
+    Oracle("atc10-30-beta-phys-I", lambda: _atc10_invariants("I", "phys")["beta"], rtol=1e-8, why="SVD"),
+    Oracle("atc10-30-beta-phys-II", lambda: _atc10_invariants("II", "phys")["beta"], rtol=1e-8, why="SVD"),
+    Oracle(
+        "atc10-30-beta-over-K-I",
+        lambda: _atc10_invariants("I", "phys")["beta"] / 7,
+        rtol=1e-8,
+        why="SVD, K = 7",
+    ),
+    Oracle(
+        "atc10-30-beta-over-K-II",
+        lambda: _atc10_invariants("II", "phys")["beta"] / 8,
+        rtol=1e-8,
+        why="SVD, K = 8",
+    ),
+    Oracle(
+        "atc10-30-trace-phys-I", lambda: _atc10_invariants("I", "phys")["trace_all"], rtol=1e-8, why="SVD"
+    ),
+    Oracle(
+        "atc10-30-trace-phys-II", lambda: _atc10_invariants("II", "phys")["trace_all"], rtol=1e-8, why="SVD"
+    ),
+    Oracle(
+        "atc10-30-trace-123-II", lambda: _atc10_invariants("II", "phys")["trace_123"], rtol=1e-8, why="SVD"
+    ),
+    Oracle("atc10-30-s123-invariant-I", lambda: _atc10_invariants("I", "fit")["s_123"], rtol=1e-8, why="SVD"),
+    Oracle(
+        "atc10-30-s123-invariant-II", lambda: _atc10_invariants("II", "fit")["s_123"], rtol=1e-8, why="SVD"
+    ),
+    Oracle("atc10-32-s123-invariant-I", lambda: _atc10_invariants("I", "fit")["s_123"], rtol=1e-8, why="SVD"),
+    Oracle(
+        "atc10-32-s123-invariant-II", lambda: _atc10_invariants("II", "fit")["s_123"], rtol=1e-8, why="SVD"
+    ),
+    Oracle(
+        "atc10-30-miss-lo",
+        lambda: 100 * min(abs(v) for v in _atc10_misses().values()),
+        rtol=1e-6,
+        why="SVD against Table 4.2 as printed",
+    ),
+    Oracle(
+        "atc10-30-miss-hi",
+        lambda: 100 * max(abs(v) for v in _atc10_misses().values()),
+        rtol=1e-6,
+        why="SVD against Table 4.2 as printed",
+    ),
+    Oracle(
+        "atc10-30-beta-excess",
+        lambda: 100 * max(_atc10_misses()[(ex, "beta")] for ex in ("I", "II")),
+        rtol=1e-6,
+        why="SVD against Table 4.2 as printed",
+    ),
+    Oracle(
+        "atc10-30-trace-deficit",
+        lambda: -100 * float(np.mean([v for (_, c), v in _atc10_misses().items() if c != "beta"])),
+        rtol=1e-6,
+        why="SVD against Table 4.2 as printed",
+    ),
+    Oracle(
+        "atc10-30-trace-best-II",
+        lambda: _atc10_best_triplet()[1],
+        rtol=1e-8,
+        why="brute force over triplets, SVD",
+    ),
+    Oracle(
+        "atc10-90-best-trace",
+        lambda: _atc10_best_triplet()[1],
+        rtol=1e-8,
+        why="brute force over triplets, SVD",
+    ),
+    Oracle("atc10-90-123-trace", lambda: _atc10_invariants("II", "phys")["trace_123"], rtol=1e-8, why="SVD"),
+    Oracle(
+        "atc10-90-best-triplet",
+        lambda: ", ".join(str(i + 1) for i in _atc10_best_triplet()[0]),
+        why="brute force over triplets, SVD (the same labels)",
+    ),
+    Oracle(
+        "atc10-32-psi-exact-II-5",
+        lambda: _table_43_row(_TABLE_42_II, 5.0)["psi"],
+        rtol=1e-9,
+        why="Table 4.3 by hand",
+    ),
+    Oracle(
+        "atc10-32-sdN-exact-II-5",
+        lambda: _table_43_row(_TABLE_42_II, 5.0)["sdN"],
+        rtol=1e-9,
+        why="Table 4.3 by hand",
+    ),
+    # (4.5.35) solved for psi in closed form: psi = beta ((sd_N / sigma)^2 - tr) / S (the page's
+    # brentq stops within 2e-12 of psi ~ 0.04)
+    Oracle(
+        "atc10-32-psi-needed-II-5",
+        lambda: (
+            _TABLE_42_II["beta"]
+            * ((_TABLE_43_SDN_II_5 / 50.0) ** 2 - _TABLE_42_II["trace_all"])
+            / _TABLE_42_II["s_all"]
+        ),
+        rtol=1e-9,
+        why="(4.5.35) inverted",
+    ),
+    Oracle(
+        "atc10-32-sdN-I-5",
+        lambda: _table_43_row(_atc10_geometry_inputs("I", "fit"), 5.0)["sdN"],
+        rtol=1e-8,
+        why="SVD geometry, by hand",
+    ),
+    Oracle(
+        "atc10-32-sdN1-I-5",
+        lambda: _table_43_row(_atc10_geometry_inputs("I", "fit"), 5.0)["sdN1"],
+        rtol=1e-8,
+        why="SVD geometry, by hand",
+    ),
+    Oracle(
+        "atc10-32-phys-lowering-lo",
+        lambda: 100 * min(_atc10_phys_lowering()),
+        rtol=1e-7,
+        why="SVD geometry and Table 4.3 by hand, the published sigma0 5, 50, 500 ns",
+    ),
+    Oracle(
+        "atc10-32-phys-lowering-hi",
+        lambda: 100 * max(_atc10_phys_lowering()),
+        rtol=1e-7,
+        why="SVD geometry and Table 4.3 by hand, the published sigma0 5, 50, 500 ns",
+    ),
+    Oracle(
+        "atc10-30-s123-printed-residual-pct", _atc10_s123_printed_residual_pct, rtol=1e-6, why="SVD in ECEF"
+    ),
+    Oracle(
+        "atc10-32-col5-corrected-I-5",
+        lambda: _atc10_col5_corrected("I", 5.0),
+        rtol=1e-8,
+        why="Table 4.3 by hand, SVD invariant",
+    ),
+    Oracle(
+        "atc10-32-col5-corrected-I-50",
+        lambda: _atc10_col5_corrected("I", 50.0),
+        rtol=1e-8,
+        why="Table 4.3 by hand, SVD invariant",
+    ),
+    Oracle(
+        "atc10-32-col5-corrected-I-500",
+        lambda: _atc10_col5_corrected("I", 500.0),
+        rtol=1e-8,
+        why="Table 4.3 by hand, SVD invariant",
+    ),
+    Oracle(
+        "atc10-32-col5-corrected-II-5",
+        lambda: _atc10_col5_corrected("II", 5.0),
+        rtol=1e-8,
+        why="Table 4.3 by hand, SVD invariant",
+    ),
+    Oracle(
+        "atc10-32-col5-corrected-II-50",
+        lambda: _atc10_col5_corrected("II", 50.0),
+        rtol=1e-8,
+        why="Table 4.3 by hand, SVD invariant",
+    ),
+    Oracle(
+        "atc10-32-col5-corrected-II-500",
+        lambda: _atc10_col5_corrected("II", 500.0),
+        rtol=1e-8,
+        why="Table 4.3 by hand, SVD invariant",
+    ),
+    Oracle("atc10-21-convexity-limit", _convexity_limit, rtol=1e-9, why="sympy's derivatives, brentq"),
+    # the bounded maximisation is flat at its optimum (error ~ xtol^2); the binomial sums to K = 4000
+    # (mean 400) leave nothing: 1e-6 on a difference of logs of order 1
+    Oracle(
+        "atc10-21-upper-efolds",
+        _two_point_upper_efolds,
+        rtol=1e-6,
+        why="numerical Chernoff, scipy binomial sums",
+    ),
+    Oracle(
+        "atc10-30-fit-worst-pct",
+        _atc10_fit_worst_pct,
+        rtol=1e-6,
+        why="SVD geometry by hand, Table 4.2 typed in",
+    ),
+    Oracle(
+        "wf89-eq13-ratio",
+        lambda: _wf_eq13_ratio()[0],
+        band=lambda: 5 * _wf_eq13_ratio()[1],
+        why="exact moments of the printed recursion",
+    ),
+]
+
+
 def _atc10_dish_hz() -> float:
     from navcore.papers import atc10_jamming as pj
 
@@ -343,7 +1931,13 @@ def test_glued_value_against_its_oracle(oracle: Oracle):
     """The registered function's value against the oracle named in the case."""
     got = glued.value(oracle.name)
     want = oracle.expected()
-    assert got == pytest.approx(want, rel=oracle.rtol, abs=oracle.atol), (
+    if isinstance(want, str):  # a label the page prints (a triplet of satellites): the same text
+        assert got == want, (
+            f"{oracle.name}: registered function gives {got!r}, the oracle ({oracle.why}) {want!r}"
+        )
+        return
+    atol = oracle.band() if oracle.band is not None else oracle.atol
+    assert got == pytest.approx(want, rel=oracle.rtol, abs=atol), (
         f"{oracle.name}: registered function gives {got!r}, the oracle ({oracle.why}) {want!r}"
     )
 

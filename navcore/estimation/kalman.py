@@ -36,6 +36,7 @@ References
 
 from __future__ import annotations
 
+import math
 from typing import NamedTuple
 
 import numpy as np
@@ -49,6 +50,7 @@ from navcore._validate import (
     check_argument,
     check_public,
     check_symmetric_psd,
+    checks_own_arguments,
     require_symmetric_psd,
 )
 
@@ -114,14 +116,36 @@ def symmetrize_unchecked(P: Array) -> Array:
     return 0.5 * (P + np.swapaxes(P, -1, -2))
 
 
-# The public functions' wrapper (navcore._validate.checked) has checked that every array
-# argument is numeric and finite; the bodies check what it cannot see (shapes, symmetry,
-# definiteness) once, without converting or scanning an argument a second time.
+# The filter steps check their own arguments, once each (the generic wrapper,
+# navcore._validate.checked, would cost a large part of the step): the vectors are numeric and
+# finite, the covariances and the model matrices have their shapes, are finite, symmetric and
+# definite as each must be; the matrices that passed are remembered by their numbers.
 def _vector(name: str, value: ArrayLike) -> Array:
     arr = np.asarray(value, dtype=float)
     if arr.ndim != 1:
         raise ValueError(f"{name} must be a 1-dimensional array, got shape {arr.shape}")
     return arr
+
+
+def _finite(name: str, value: ArrayLike) -> Array:
+    """``value`` as a float array, finite everywhere: the checks :func:`checked` makes, worded
+    as it words them, at the cost of one scan for a float array (the filter steps' vectors)."""
+    if type(value) is not np.ndarray or value.dtype.kind != "f":
+        check_argument(name, value, "array")  # a type, a ragged list, a NaN: named as the wrapper does
+        return np.asarray(value, dtype=float)
+    # a short vector is scanned fastest as Python floats (a third of np.isfinite(...).all())
+    if not (
+        all(map(math.isfinite, value.tolist()))
+        if value.ndim == 1 and value.size <= 64
+        else np.isfinite(value).all()
+    ):
+        raise ValueError(f"{name} must be finite (no NaN or infinity)")
+    return value
+
+
+def _flag(name: str, value: object) -> None:
+    if not isinstance(value, bool | np.bool_):
+        raise TypeError(f"{name} must be of type bool, got {value!r}")
 
 
 def _covariance(name: str, value: ArrayLike, n: int, *, definite: bool = False) -> Array:
@@ -146,10 +170,15 @@ def _covariance(name: str, value: ArrayLike, n: int, *, definite: bool = False) 
 
 def _passed(arr: Array, definite: bool = False) -> Array:
     """Remember that a covariance with these very numbers is valid (bounded memory)."""
-    if len(_PASSED) >= 64:
-        _PASSED.clear()
-    _PASSED[(definite, arr.shape[0], arr.tobytes())] = None
+    _remember((definite, arr.shape[0], arr.tobytes()))
     return arr
+
+
+def _remember(key: tuple[bool, int, bytes]) -> None:
+    """Add ``key`` to :data:`_PASSED`, which starts again empty when it holds 256 entries."""
+    if len(_PASSED) >= 256:
+        _PASSED.clear()
+    _PASSED[key] = None
 
 
 #: Contents of covariances known to be valid (the check is a function of the numbers alone,
@@ -157,7 +186,10 @@ def _passed(arr: Array, definite: bool = False) -> Array:
 #: symmetric covariances the checked steps return, which are positive semi-definite by
 #: construction (``Phi P Phi' + Q`` and the Joseph form are sums of congruences of positive
 #: semi-definite matrices), so that a checked loop checks its covariance once, not at every
-#: step (a caller who changes one number of it makes it new bytes, checked again); bounded.
+#: step (a caller who changes one number of it makes it new bytes, checked again); and the
+#: finite transition and measurement matrices (:func:`_model_matrix`). Bounded: emptied at 256
+#: entries (a checked loop adds two covariances a step, so the model's ``Q``, ``R``, ``Phi``
+#: and ``H`` are checked again every 128 steps).
 _PASSED: dict[tuple[bool, int, bytes], None] = {}
 
 
@@ -180,6 +212,21 @@ def _matrix(name: str, value: ArrayLike, shape: tuple[int, int]) -> Array:
     return arr
 
 
+def _model_matrix(name: str, value: ArrayLike, shape: tuple[int, int]) -> Array:
+    """A transition or measurement matrix as a float array of ``shape``, finite everywhere.
+
+    A filter uses the same ``Phi`` and ``H`` step after step, so the matrices that passed are
+    remembered by their numbers (as the covariances are, :data:`_PASSED`) and not scanned again.
+    """
+    arr = _matrix(name, value, shape)
+    key = (False, -arr.shape[0], arr.tobytes())  # a negative size: never a covariance's key
+    if key not in _PASSED:
+        check_argument(name, arr, "array")  # finite, with the wrapper's message
+        _remember(key)
+    return arr
+
+
+@checks_own_arguments
 def kf_predict(
     x: ArrayLike, P: ArrayLike, Phi: ArrayLike, Q: ArrayLike, *, validate: bool = True
 ) -> tuple[Array, Array]:
@@ -216,14 +263,16 @@ def kf_predict(
     Notes
     -----
     The time update of Kalman (1960), reference 1 of the module. Each argument is checked
-    once: the state and the transition by the public wrapper (finite numbers), the
-    covariances by the body (shape, exact symmetry and one Cholesky factorisation, which
-    also rejects a NaN or an infinity; a matrix that fails them goes through the full
-    tests, eigenvalues included, for the error). For 9 states and 3 measurements the checks
-    still cost about as much as the arithmetic: the checked predict + update takes about
-    twice the CPU time of filterpy's (``nox -s bench`` prints the ratios), so a filter loop
-    checks its model once and then calls ``kf_predict(..., validate=False)`` and
-    ``kf_update(..., validate=False)``, which costs less than filterpy's step.
+    once, in the body: the state (finite numbers), the covariances
+    (shape, exact symmetry and one Cholesky factorisation, which also rejects a NaN or an
+    infinity; a matrix that fails them goes through the full tests, eigenvalues included,
+    for the error), the transition by the body (shape, finite). A covariance or transition
+    with the very numbers of one that passed recently (the model's ``Q`` and ``Phi`` step
+    after step, the covariance the previous checked step returned) is not scanned again.
+    For 9 states and 3 measurements the checks still cost a good part of the arithmetic
+    (``nox -s bench`` prints the checked and unchecked steps against filterpy's), so a
+    filter loop can check its model once and then call ``kf_predict(..., validate=False)``
+    and ``kf_update(..., validate=False)``, which costs less than filterpy's step.
 
     Examples
     --------
@@ -235,14 +284,15 @@ def kf_predict(
     array([[2.1, 1. ],
            [1. , 1.1]])
     """
-    if not validate:  # float ndarrays checked by the caller; np.dot is the cheapest product
+    if validate is False:  # float ndarrays checked by the caller; np.dot is the cheapest product
         F = np.asarray(Phi)  # Phi is an ndarray already: no copy
         # P- is symmetric up to round-off here; kf_update symmetrizes what it returns
         return np.dot(F, x), np.dot(np.dot(F, P), F.T) + Q
-    x = _vector("x", x)
+    _flag("validate", validate)
+    x = _vector("x", _finite("x", x))
     n = x.size
     P = _covariance("P", P, n)
-    Phi = _matrix("Phi", Phi, (n, n))
+    Phi = _model_matrix("Phi", Phi, (n, n))
     Q = _covariance("Q", Q, n)
     P_pred = np.dot(np.dot(Phi, P), Phi.T) + Q  # P- = Phi P Phi' + Q
     P_pred += P_pred.T  # made exactly symmetric, in place
@@ -274,6 +324,7 @@ class KalmanUpdate(NamedTuple):
     S: Array
 
 
+@checks_own_arguments
 def kf_update(
     x: ArrayLike, P: ArrayLike, z: ArrayLike, H: ArrayLike, R: ArrayLike, *, validate: bool = True
 ) -> KalmanUpdate:
@@ -325,14 +376,15 @@ def kf_update(
     >>> kf_update([1.0, 2.0], np.eye(2), [], np.zeros((0, 2)), np.zeros((0, 0))).x  # no measurement
     array([1., 2.])
     """
-    if not validate:  # float ndarrays checked by the caller
+    if validate is False:  # float ndarrays checked by the caller
         if np.size(z) == 0:
             return _no_update(x, P)
         return _joseph_update(x, P, z, np.asarray(H), R)  # H is an ndarray already: no copy
-    x = _vector("x", x)
+    _flag("validate", validate)
+    x = _vector("x", _finite("x", x))
     n = x.size
     P = _covariance("P", P, n)
-    z = np.atleast_1d(z)  # finite: checked at the public boundary
+    z = np.atleast_1d(_finite("z", z))
     if z.ndim != 1:
         raise ValueError(f"z must be a vector, got shape {z.shape}")
     m = z.size
@@ -342,7 +394,7 @@ def kf_update(
                 f"H and R must be empty when z is (no measurement), got H {np.shape(H)} and R {np.shape(R)}"
             )
         return _no_update(x, P)
-    H = _matrix("H", H, (m, n))
+    H = _model_matrix("H", H, (m, n))
     R = _covariance("R", R, m, definite=True)
     update = _joseph_update(x, P, z, H, R)
     _passed(update.P)
@@ -521,5 +573,5 @@ def information_update(
 
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
-# The covariances (P, Q, R) are checked by the bodies once, finiteness included.
-check_public(globals(), kf_predict={"skip": ("P", "Q")}, kf_update={"skip": ("P", "R")})
+# kf_predict and kf_update check every argument in their bodies, once (checks_own_arguments).
+check_public(globals())

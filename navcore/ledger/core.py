@@ -1241,7 +1241,7 @@ class Evaluation:
     left_out : tuple of dict
         The band runs left out as outside the model's domain (module docstring, "Band runs"),
         one per case in the order met: ``case`` (the reader's words of the
-        ``ModelDomainError``) and ``runs`` (how many runs met it).
+        :class:`~navcore.ModelDomainError`) and ``runs`` (how many runs met it).
 
     Examples
     --------
@@ -1591,7 +1591,7 @@ def _band_runs(
     to :data:`MAX_CORNER_INPUTS` inputs (extremes of a monotone response lie at corners).
 
     ``base`` holds the overrides of a reading other than the one used (every run keeps them).
-    A run the model does not cover (it raises :class:`~navcore._validate.ModelDomainError`)
+    A run the model does not cover (it raises :class:`~navcore.ModelDomainError`)
     gives no value: its case in a reader's words is appended to ``excluded`` (module docstring,
     "Band runs").
     """

@@ -63,7 +63,9 @@ __all__ = [
     "InputReadError",
     "InputSet",
     "all_inputs",
+    "band_ahead",
     "declaring",
+    "for_each_band_run",
     "get_input",
     "input_cache",
     "overriding",
@@ -872,6 +874,14 @@ def band_ahead(runs: Sequence[dict[str, Any]]) -> Iterator[None]:
     ------
     None
         Control of the block.
+
+    Examples
+    --------
+    >>> IN = InputSet("WF", "doc_inputs")
+    >>> IN.published("carrier_hz", 1.0e9, unit="Hz", locator="Sec. IV", quantity="carrier frequency")
+    >>> with band_ahead([{"WF.doc_inputs.carrier_hz": 1.5e9}]):
+    ...     [value for _, value in for_each_band_run("carrier", lambda: IN.carrier_hz)]
+    [1500000000.0]
     """
     for values in runs:
         for name in values:
@@ -891,7 +901,7 @@ def for_each_band_run(key: Hashable, fn: Callable[[], T]) -> list[tuple[Reads, T
     and stores each result with :meth:`input_cache`'s ``prime`` under the reads returned here.
     Outside an announced band, and for a ``key`` that already took the announced batch, it
     returns ``[]``. A run whose parameters raise
-    :class:`~navcore._validate.ModelDomainError` is left out (its own unbatched call will
+    :class:`~navcore.ModelDomainError` is left out (its own unbatched call will
     raise it again, and the ledger leaves that run out of the band).
 
     Parameters

@@ -74,9 +74,9 @@ IN = InputSet("SP", "antijam")
 # --- published inputs (Sec. 3.0 - 3.3) --------------------------------------------------
 _MEMS = "Sec. 3.0 (MEMS IMU)"
 IN.published("accel_bias_mg", 1.0, locator=_MEMS, unit="mg", quantity="accelerometer bias stability")
-IN.published("accel_vrw_cm_s_rt_h", 1.0, locator=_MEMS, unit="cm/s/sqrt(h)", quantity="velocity random walk")
+IN.published("accel_vrw_cm_s_rt_h", 1.0, locator=_MEMS, unit="cm/s/√h", quantity="velocity random walk")
 IN.published("gyro_bias_deg_h", 10.0, locator=_MEMS, unit="deg/h", quantity="gyro bias stability")
-IN.published("gyro_arw_deg_rt_h", 0.03, locator=_MEMS, unit="deg/sqrt(h)", quantity="angle random walk")
+IN.published("gyro_arw_deg_rt_h", 0.03, locator=_MEMS, unit="deg/√h", quantity="angle random walk")
 IN.published(
     "markov_tau_min", 5.0, locator=_MEMS, unit="min", quantity="Markov time constant of the stabilities"
 )

@@ -143,11 +143,11 @@ TABLE_2_5_ROWS: tuple[tuple[str, str, tuple[str, str, str, str]], ...] = (
     ("accel_bias_micro_g", "micro-g", ("223", "37", "19", "4.2")),
     ("accel_scale_factor_ppm", "ppm", ("223", "179", "90", "21")),
     ("accel_misalignment_arcsec", "arcsec", ("22", "3", "1.5", "0.4")),
-    ("accel_random_walk_micro_g_per_sqrt_hz", "micro-g/sqrt(Hz)", ("56", "15", "7.5", "4.2")),
+    ("accel_random_walk_micro_g_per_sqrt_hz", "micro-g/√Hz", ("56", "15", "7.5", "4.2")),
     ("gyro_bias_deg_per_h", "deg/h", ("0.11", "0.0045", "0.0022", "0.00084")),
     ("gyro_scale_factor_ppm", "ppm", ("112", "7.5", "3.5", "1.67")),
     ("gyro_misalignment_arcsec", "arcsec", ("22", "2.2", "1.1", "0.4")),
-    ("gyro_random_walk_deg_per_h_per_sqrt_hz", "deg/h/sqrt(Hz)", ("4.7", "0.13", "0.066", "0.03")),
+    ("gyro_random_walk_deg_per_h_per_sqrt_hz", "deg/h/√Hz", ("4.7", "0.13", "0.066", "0.03")),
 )
 
 
