@@ -476,8 +476,8 @@ def _source_key(run_key: str) -> str:
 #: Monte Carlo runs made in this process, by :func:`~navcore.estimation.ekf_ins_gnss.monte_carlo_key`
 #: (most recently used last; at most :data:`_RUNS_KEPT`). A band's corners that differ only in
 #: inputs a configuration never reads, and the claims that read the same configuration at the same
-#: inputs, share one run; :func:`monte_carlo`'s input cache keeps fewer variants per configuration
-#: than a band has corners.
+#: inputs, share one run (the input cache above it is keyed on every input a configuration reads,
+#: so it cannot tell that a mode ignores one of them); a batched band stores its runs here too.
 _RUNS: OrderedDict[str, MonteCarloResult] = OrderedDict()
 _RUNS_KEPT = 1024
 
