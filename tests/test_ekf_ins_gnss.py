@@ -2,7 +2,8 @@
 
 Oracles: navcore.estimation.kf_update (one batch Joseph update) for the sequential scalar
 updates; van_loan for the Gauss-Legendre discrete noise; scipy's Rotation for the attitude
-correction; carrier_phase's single-case builders for the batched Jacobians. The Monte Carlo
+correction; carrier_phase's single-case builders for the batched Jacobians; S calls of
+strapdown_step for the Monte Carlo's chained strapdown. The Monte Carlo
 itself is tested against physics in test_ekf_ins_gnss_physics.py.
 """
 
@@ -16,6 +17,8 @@ from navcore import frames as fr
 from navcore.estimation import kf_update, van_loan
 from navcore.estimation.ekf_ins_gnss import (
     _dd_phase_batch,
+    _strapdown_rows,
+    _transition_and_noise,
     correct_attitude,
     discrete_noise_nilpotent,
     euler_batch,
@@ -24,7 +27,8 @@ from navcore.estimation.ekf_ins_gnss import (
     sequential_scalar_updates,
 )
 from navcore.gnss.carrier_phase import dd_covariance, double_difference_phase, euler_attitude_rows
-from navcore.inertial.error_model17 import error_dynamics_17, noise_psd_17
+from navcore.inertial.error_model17 import error_dynamics_17, noise_psd_17, transition_exact
+from navcore.inertial.strapdown import NavState, strapdown_step
 from navcore.papers.kzl_scenario import table1_scenario
 from navcore.units import DEG, G0
 
@@ -77,6 +81,27 @@ def test_gauss_legendre_noise_equals_van_loan():
     np.testing.assert_allclose(discrete_noise_nilpotent(F, GQG, 0.7), Qd, rtol=1e-10, atol=1e-16)
 
 
+def test_fused_transition_and_noise_equal_van_loan():
+    """Oracle: van_loan (one matrix exponential) for the transition and the discrete noise that the
+    Monte Carlo's loop forms together from the powers of a batch of F."""
+    F = np.stack(
+        [
+            error_dynamics_17(
+                fr.dcm_from_euler(0.02, -0.01, yaw), fr.dcm_from_euler(0.02, -0.01, yaw) @ [0.1, 0, -G0]
+            )
+            for yaw in (0.3, np.pi / 2)
+        ]
+    )
+    GQG = noise_psd_17(1e-2, 1e-3, 1e-5, 1e-6, 0.2, 0.1)
+    for dt in (1.0, 0.7):
+        Phi, Qd = _transition_and_noise(F, np.diag(GQG), dt)
+        for i in range(2):
+            Phi_ref, Qd_ref = van_loan(F[i], GQG, dt)
+            np.testing.assert_allclose(Phi[i], Phi_ref, rtol=1e-12, atol=1e-14)
+            np.testing.assert_allclose(Qd[i], Qd_ref, rtol=1e-10, atol=1e-16)
+        np.testing.assert_allclose(Phi, transition_exact(F, dt), rtol=1e-14, atol=1e-15)
+
+
 def test_left_correction_removes_n_frame_error():
     """Oracle: scipy Rotation — R_hat = exp([dpsi x]) R; the left correction recovers R exactly,
     the printed right-hand order leaves a residual at heading 90 deg."""
@@ -123,3 +148,28 @@ def test_batched_jacobians_match_builders():
 def test_bad_mode_rejected():
     with pytest.raises(ValueError, match="mode"):
         run_monte_carlo(table1_scenario(), "loose", 2, 0)
+
+
+def test_chained_strapdown_equals_one_step_at_a_time():
+    # oracle: S calls of strapdown_step (the mechanization of KZL Eqs. 7-9, one IMU interval each)
+    rng = np.random.default_rng(7)
+    n, steps, dt = 5, 100, 0.01
+    w = 1e-2 * rng.normal(size=(n, steps, 3)) + 2e-3
+    f = np.array([0.3, -0.2, -G0]) + 0.05 * rng.normal(size=(n, steps, 3))
+    q0 = fr.quat_from_rotvec(0.3 * rng.normal(size=(n, 3)))
+    pos0, vel0 = rng.normal(size=(n, 3)), 100.0 * rng.normal(size=(n, 3))
+    pos, vel, quat, f_n_mean = _strapdown_rows(pos0, vel0, q0, w, f, dt)
+    state, f_n = NavState(pos0, vel0, q0), []
+    for s in range(steps):
+        q_mid = np.array([_mid(state.quat[i], w[i, s] * dt) for i in range(n)])
+        f_n.append(np.einsum("nij,nj->ni", np.array([fr.dcm_from_quat(q) for q in q_mid]), f[:, s]))
+        state = strapdown_step(state, w[:, s], f[:, s], dt)
+    assert np.allclose(pos, state.pos, rtol=1e-12, atol=1e-9)
+    assert np.allclose(vel, state.vel, rtol=1e-12, atol=1e-11)
+    assert np.allclose(quat, state.quat, rtol=0.0, atol=1e-13)
+    assert np.allclose(f_n_mean, np.mean(f_n, axis=0), rtol=0.0, atol=1e-12)
+
+
+def _mid(q: np.ndarray, rotvec: np.ndarray) -> np.ndarray:
+    """The mid-interval attitude of strapdown_step: q times half the body increment."""
+    return fr.quat_multiply(q, fr.quat_from_rotvec(0.5 * rotvec))

@@ -206,9 +206,9 @@ def _atc10_n_v() -> float:
 def _kzl_dd_sigma_mm() -> float:
     """A double difference (a_i - b_i) - (a_m - b_m) sums four independent phase errors of the
     same sigma: 2 sigma (closed form), sigma the scenario's phase noise."""
-    from navcore.papers.kzl_scenario import GNSS_NOMINAL, IN
+    from navcore.papers.kzl_scenario import IN
 
-    return 2 * IN.gnss_noise_scale * GNSS_NOMINAL["phase"] * 1e3
+    return 2 * IN.phase_noise_m * 1e3
 
 
 def _kzl_gyro_residual_deg_h() -> float:

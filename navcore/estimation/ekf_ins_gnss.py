@@ -2,8 +2,9 @@ r"""Tightly coupled, indirect feedback INS/GPS extended Kalman filter, batched o
 
 Structure (KZL Sec. 3.5, Fig. 3):
 
-1. the strapdown mechanization (:mod:`navcore.inertial.strapdown`) runs at the IMU rate on
-   bias-corrected sensor data;
+1. the strapdown mechanization (:mod:`navcore.inertial.strapdown`, simplified as in Eqs. 7-9)
+   runs at the IMU rate on bias-corrected sensor data, the attitude chained one interval at a
+   time as :func:`~navcore.inertial.strapdown.strapdown_step` chains it;
 2. the 17-state error covariance (:mod:`navcore.inertial.error_model17`) is predicted at the
    GPS rate with the exact transition :math:`e^{FT}` (a cubic, F being nilpotent) and the
    exact discrete noise :math:`Q_d = \int_0^T e^{Fs} GQG^T e^{F^Ts} ds` (Gauss-Legendre with
@@ -15,7 +16,9 @@ Structure (KZL Sec. 3.5, Fig. 3):
    attitude by the n-frame rotation :math:`q^+ = q(-\Delta\hat\psi)\otimes q^-`
    (:func:`correct_attitude`), and the error state is reset to zero.
 
-Everything carries a leading run axis so that ``N`` Monte Carlo runs advance together.
+Everything carries a leading run axis so that ``N`` Monte Carlo runs advance together;
+:func:`run_monte_carlo_batch` advances the runs of several scenarios (a ledger band's) together
+on that axis, each run with the random numbers and the arithmetic it has alone.
 
 References
 ----------
@@ -25,8 +28,10 @@ References
 
 from __future__ import annotations
 
+import hashlib
 import math
-from dataclasses import dataclass
+from collections.abc import Sequence
+from dataclasses import dataclass, fields
 from typing import Any, Literal
 
 import numpy as np
@@ -50,10 +55,8 @@ from navcore.inertial.alignment import heading_from_velocity, levelling
 from navcore.inertial.error_model17 import ERROR_LAYOUT_17, error_dynamics_17, transition_exact
 from navcore.inertial.imu import ImuSpec
 from navcore.inertial.strapdown import (
-    NavState,
     dcm_from_quat_batch,
     quat_multiply_batch,
-    strapdown_interval,
 )
 from navcore.units import G0, GPS_L1_WAVELENGTH_M
 
@@ -62,11 +65,14 @@ __all__ = [
     "GnssNoise",
     "MonteCarloResult",
     "Scenario",
+    "batch_group_key",
     "correct_attitude",
     "discrete_noise_nilpotent",
     "euler_batch",
     "euler_jacobian_batch",
+    "monte_carlo_key",
     "run_monte_carlo",
+    "run_monte_carlo_batch",
     "sequential_scalar_updates",
 ]
 
@@ -75,6 +81,8 @@ Mode = Literal["ins", "tc", "tc_att", "tc_dd"]
 #: Filter configurations: stand-alone INS, tightly coupled (code + delta range), plus Euler
 #: attitude from a multi-antenna receiver (Eq. 12), plus double-difference phases (Eq. 17).
 MODES = ("ins", "tc", "tc_att", "tc_dd")
+#: Satellites a double difference needs: the master and one other (KZL Eq. (14), two satellites).
+DD_MIN_SATELLITES = 2
 
 L = ERROR_LAYOUT_17
 _P, _V, _A = L.slice("position"), L.slice("velocity"), L.slice("misalignment")
@@ -260,6 +268,104 @@ def discrete_noise_nilpotent(F: Array, GQGt: Array, dt: float) -> Array:
     return symmetrize_unchecked(Qd)
 
 
+#: Four-node Gauss-Legendre rule on [-1, 1] (exact for the degree-6 integrand of the discrete noise).
+_GL4_NODES, _GL4_WEIGHTS = np.polynomial.legendre.leggauss(4)
+
+
+def _transition_and_noise(F: Array, q: Array, dt: float) -> tuple[Array, Array]:
+    """:func:`~navcore.inertial.error_model17.transition_exact` and :func:`discrete_noise_nilpotent`
+    of one batch of ``F`` over ``dt``, for a diagonal ``GQG^T = diag(q)``, with the powers of ``F``
+    formed once for the transition and the four quadrature nodes (the same sums in another order:
+    equal to round-off). The inner-loop kernel of :func:`run_monte_carlo`: nothing is checked."""
+    F2 = F @ F
+    F3 = F2 @ F
+    eye = np.eye(F.shape[-1])
+
+    def phi(s: float) -> Array:
+        return eye + F * s + F2 * (s * s / 2.0) + F3 * (s * s * s / 6.0)
+
+    Qd = np.zeros_like(F)
+    for s, w in zip(0.5 * dt * (_GL4_NODES + 1.0), 0.5 * dt * _GL4_WEIGHTS, strict=True):
+        P_s = phi(s)
+        Qd = Qd + w * (P_s * q) @ np.swapaxes(P_s, -1, -2)
+    return phi(dt), symmetrize_unchecked(Qd)
+
+
+_k_quat_from_rotvec = unchecked(quat_from_rotvec)
+
+
+def _strapdown_rows(
+    pos: Array, vel: Array, quat: Array, w: Array, f: Array, dt: float, gravity: float = G0
+) -> tuple[Array, Array, Array, Array]:
+    """The simplified mechanization of :func:`~navcore.inertial.strapdown.strapdown_interval` over
+    ``S`` IMU intervals, chaining the attitude one interval at a time (the order of ``S`` calls of
+    :func:`~navcore.inertial.strapdown.strapdown_step`) on arrays with the runs innermost.
+
+    The inner-loop kernel of :func:`run_monte_carlo` (nothing is checked): for the thousands of
+    rows of a batched band, ``S`` sequential Hamilton products on contiguous rows cost less than
+    the ``log2 S`` products of the whole ``(N, S, 4)`` array of the parallel prefix product, and
+    the result is the same to round-off (the products are associated in another order).
+
+    Parameters
+    ----------
+    pos, vel : (N, 3) arrays
+        Position (m) and velocity (m/s), NED.
+    quat : (N, 4) array
+        Attitude ``q_bn``, scalar first.
+    w, f : (N, S, 3) arrays
+        Angular rate (rad/s) and specific force (m/s^2) of each interval.
+    dt : float
+        IMU interval, s.
+    gravity : float
+        Local gravity along +down (m/s^2).
+
+    Returns
+    -------
+    pos, vel, quat : arrays
+        The state after the ``S`` intervals.
+    f_n_mean : (N, 3) ndarray
+        The specific force resolved in NED, averaged over the intervals (for the error model).
+    """
+    dq = _k_quat_from_rotvec(w * dt)  # (N, S, 4)
+    hq = _k_quat_from_rotvec(0.5 * w * dt)
+    S = w.shape[1]
+    dw, dx, dy, dz = (np.ascontiguousarray(dq[..., i].T) for i in range(4))  # (S, N) each
+    # the attitude at the start of each interval: q_{s+1} = q_s ⊗ dq_s (strapdown_step's order)
+    qs = np.empty((4, S + 1, w.shape[0]))
+    a, b, c, d = (quat[:, i].copy() for i in range(4))
+    for s in range(S):
+        qs[0, s], qs[1, s], qs[2, s], qs[3, s] = a, b, c, d
+        e, x, y, z = dw[s], dx[s], dy[s], dz[s]
+        a, b, c, d = (
+            a * e - b * x - c * y - d * z,
+            a * x + b * e + c * z - d * y,
+            a * y - b * z + c * e + d * x,
+            a * z + b * y - c * x + d * e,
+        )
+    qs[0, S], qs[1, S], qs[2, S], qs[3, S] = a, b, c, d
+    # mid-interval attitude (start ⊗ half increment) resolves the specific force
+    a, b, c, d = qs[0, :S], qs[1, :S], qs[2, :S], qs[3, :S]
+    e, x, y, z = (hq[..., i].T for i in range(4))
+    mw = a * e - b * x - c * y - d * z
+    mx = a * x + b * e + c * z - d * y
+    my = a * y - b * z + c * e + d * x
+    mz = a * z + b * y - c * x + d * e
+    fx, fy, fz = (f[..., i].T for i in range(3))
+    ww, xx, yy, zz = mw * mw, mx * mx, my * my, mz * mz
+    fn = (ww + xx - yy - zz) * fx + 2 * (mx * my - mw * mz) * fy + 2 * (mx * mz + mw * my) * fz
+    fe = 2 * (mx * my + mw * mz) * fx + (ww - xx + yy - zz) * fy + 2 * (my * mz - mw * mx) * fz
+    fd = 2 * (mx * mz - mw * my) * fx + 2 * (my * mz + mw * mx) * fy + (ww - xx - yy + zz) * fz
+    f_n = np.stack([fn, fe, fd])  # (3, S, N)
+    acc = f_n.copy()
+    acc[2] += gravity
+    v_all = vel.T[:, None, :] + np.cumsum(acc, axis=1) * dt  # v_1 .. v_S, (3, S, N)
+    v_prev = np.concatenate([vel.T[:, None, :], v_all[:, :-1]], axis=1)
+    pos_end = pos + 0.5 * dt * np.sum(v_prev + v_all, axis=1).T
+    q_end = qs[:, S].T
+    q_end = q_end / np.linalg.norm(q_end, axis=-1, keepdims=True)
+    return pos_end, np.ascontiguousarray(v_all[:, -1].T), q_end, f_n.mean(axis=1).T
+
+
 def sequential_scalar_updates(x: Array, P: Array, y: Array, H: Array, r: Array) -> tuple[Array, Array]:
     """Process measurements one scalar at a time, for a batch of runs.
 
@@ -274,8 +380,8 @@ def sequential_scalar_updates(x: Array, P: Array, y: Array, H: Array, r: Array) 
         Measurements ``y = H x + v`` with uncorrelated noise of variances ``r``.
     H : (N, m, n) array
         Rows.
-    r : (m,) array
-        Noise variances (measurement units squared).
+    r : (m,) or (N, m) array
+        Noise variances (measurement units squared), shared by the runs or one row per run.
 
     Returns
     -------
@@ -302,7 +408,7 @@ def sequential_scalar_updates(x: Array, P: Array, y: Array, H: Array, r: Array) 
     for j in range(y.shape[-1]):
         h = H[:, j, :]
         Ph = np.einsum("nij,nj->ni", P, h)
-        s = np.einsum("ni,ni->n", h, Ph) + r[j]
+        s = np.einsum("ni,ni->n", h, Ph) + r[..., j]
         K = Ph / s[:, None]
         x = x + K * (y[:, j] - np.einsum("ni,ni->n", h, x))[:, None]
         # P+ = P - K (P h)^T: the optimal-gain form, O(n^2) per scalar; symmetrised below
@@ -598,17 +704,229 @@ def run_monte_carlo(
     if initialise:
         _needed(sc.init_time, "sc.init_time", "an initialising run")
     if batches == 1:
-        parts = [_monte_carlo_batch(sc, mode, n_runs, seed, initialise, attitude_min_sats)]
+        parts = _monte_carlo_batch([sc], mode, n_runs, seed, initialise, [attitude_min_sats])
     else:
         from navcore.parallel import run_tasks, task_seeds
 
         edges = [i * n_runs // batches for i in range(batches + 1)]
         tasks = [
-            (sc, mode, edges[i + 1] - edges[i], child, initialise, attitude_min_sats)
+            ([sc], mode, edges[i + 1] - edges[i], child, initialise, [attitude_min_sats])
             for i, child in enumerate(task_seeds(seed, batches))
         ]
-        parts = run_tasks(_monte_carlo_batch, tasks, n_jobs=n_jobs)
+        parts = [task[0] for task in run_tasks(_monte_carlo_batch, tasks, n_jobs=n_jobs)]
     return _join_batches(parts)
+
+
+def _digest(h: Any, name: str, value: Any) -> None:
+    """Feed one named argument to ``h`` exactly: arrays by dtype, shape and bytes, other values by
+    their ``repr`` (a float's ``repr`` round-trips, a frozen dataclass's lists its fields)."""
+    h.update(name.encode() + b"=")
+    if isinstance(value, np.ndarray):
+        a = np.ascontiguousarray(value)
+        h.update(f"{a.dtype.str}{a.shape}".encode())
+        h.update(a.tobytes())
+    else:
+        h.update(repr(value).encode())
+    h.update(b";")
+
+
+def monte_carlo_key(
+    sc: Scenario,
+    mode: Mode,
+    n_runs: int,
+    seed: int,
+    *,
+    initialise: bool = True,
+    attitude_min_sats: int = 4,
+    batches: int = 1,
+) -> str:
+    """Digest of everything the numbers of :func:`run_monte_carlo` depend on, for memoising runs.
+
+    Two calls with the same key return the same errors and 1-sigma (``n_jobs`` does not change
+    them; the result's ``n_visible`` echoes the scenario's schedule). The
+    key holds every argument and every field of the scenario exactly, except what the call
+    provably never reads: the stand-alone INS (``"ins"``) uses no GPS measurement, so of the
+    satellites it keeps only how many there are (that sets how many GPS noises are drawn, and so
+    which draws the IMU noise takes next) and of the antennas only their count (the phase noises
+    drawn), and none of the visibility schedule or the GPS noises; a run without initialisation
+    does not read ``init_time``; only ``"tc_att"`` reads ``attitude_min_sats``. So the runs of a
+    band's corners that differ only in what the mode never reads share one key.
+
+    Parameters
+    ----------
+    sc, mode, n_runs, seed, initialise, attitude_min_sats, batches
+        As for :func:`run_monte_carlo`.
+
+    Returns
+    -------
+    str
+        A hexadecimal SHA-256 digest.
+
+    Raises
+    ------
+    ValueError
+        If ``mode`` is unknown.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from dataclasses import replace
+    >>> from navcore.inertial.imu import ImuSpec
+    >>> sats = np.array([[2e7, 0.0, -1e7], [-2e7, 0.0, -1e7], [0.0, 2e7, -1e7], [0.0, -2e7, -1e7]])
+    >>> sc = Scenario(velocity_ned=np.array([100.0, 0.0, 0.0]), attitude=np.zeros(3),
+    ...     duration=5.0, imu_rate=100.0, gps_rate=1.0, imu=ImuSpec("example", accel_bias=1e-2),
+    ...     sat_pos_ned=np.tile(sats, (6, 1, 1)), sat_vel_ned=np.zeros((6, 4, 3)),
+    ...     n_visible=np.full(6, 4), gnss=GnssNoise(3.0, 0.1, None, None), init_time=None,
+    ...     pos0_sigma=3.0, vel0_sigma=0.1, baselines_b=None)
+    >>> three = replace(sc, n_visible=np.full(6, 3))
+    >>> key = lambda s, mode: monte_carlo_key(s, mode, 50, 1, initialise=False)
+    >>> key(sc, "ins") == key(three, "ins"), key(sc, "tc") == key(three, "tc")
+    (True, False)
+    """
+    if mode not in MODES:
+        raise ValueError(f"mode must be one of {MODES}, got {mode!r}")
+    h = hashlib.sha256()
+    _digest(h, "call", (mode, int(n_runs), int(seed), bool(initialise), int(batches)))
+    if mode == "tc_att":
+        _digest(h, "attitude_min_sats", int(attitude_min_sats))
+    for f in fields(sc):
+        value = getattr(sc, f.name)
+        if f.name == "init_time" and not initialise:
+            continue
+        if mode == "ins" and f.name in ("sat_pos_ned", "sat_vel_ned"):
+            value = np.shape(value)[1]
+        elif mode == "ins" and f.name == "baselines_b":
+            value = None if value is None else np.shape(value)[0]
+        elif mode == "ins" and f.name in ("n_visible", "gnss"):
+            continue
+        _digest(h, f.name, value)
+    return h.hexdigest()
+
+
+#: The fields of a :class:`Scenario` that every scenario of one :func:`run_monte_carlo_batch` call
+#: shares (the flight, the rates and so the array shapes, the satellites, the antennas); the others
+#: are values per row of the batch.
+_BATCH_SHARED_FIELDS = (
+    "velocity_ned",
+    "attitude",
+    "duration",
+    "imu_rate",
+    "gps_rate",
+    "sat_pos_ned",
+    "sat_vel_ned",
+    "baselines_b",
+)
+
+
+def batch_group_key(sc: Scenario) -> str:
+    """Digest of the fields of ``sc`` that the scenarios of one batch share (the flight, the
+    rates, the satellites and the antennas); scenarios with equal keys can run in one
+    :func:`run_monte_carlo_batch` call.
+
+    Parameters
+    ----------
+    sc : Scenario
+        The flight, the IMU, the satellites and the visibility schedule.
+
+    Returns
+    -------
+    str
+        A hexadecimal SHA-256 digest.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from dataclasses import replace
+    >>> from navcore.inertial.imu import ImuSpec
+    >>> sats = np.array([[2e7, 0.0, -1e7], [-2e7, 0.0, -1e7], [0.0, 2e7, -1e7], [0.0, -2e7, -1e7]])
+    >>> sc = Scenario(velocity_ned=np.array([100.0, 0.0, 0.0]), attitude=np.zeros(3),
+    ...     duration=5.0, imu_rate=100.0, gps_rate=1.0, imu=ImuSpec("example", accel_bias=1e-2),
+    ...     sat_pos_ned=np.tile(sats, (6, 1, 1)), sat_vel_ned=np.zeros((6, 4, 3)),
+    ...     n_visible=np.full(6, 4), gnss=GnssNoise(3.0, 0.1, None, None), init_time=None,
+    ...     pos0_sigma=3.0, vel0_sigma=0.1, baselines_b=None)
+    >>> batch_group_key(sc) == batch_group_key(replace(sc, gnss=GnssNoise(6.0, 0.1, None, None)))
+    True
+    >>> batch_group_key(sc) == batch_group_key(replace(sc, duration=4.0))
+    False
+    """
+    h = hashlib.sha256()
+    for name in _BATCH_SHARED_FIELDS:
+        _digest(h, name, getattr(sc, name))
+    return h.hexdigest()
+
+
+def run_monte_carlo_batch(
+    scenarios: Sequence[Scenario],
+    mode: Mode,
+    n_runs: int,
+    seed: int,
+    *,
+    initialise: bool = True,
+    attitude_min_sats: int = 4,
+) -> list[MonteCarloResult]:
+    """:func:`run_monte_carlo` of several scenarios in one vectorised call (a band's runs).
+
+    The leading axis of every array is (scenario x Monte Carlo run). Each scenario takes exactly
+    the random numbers it takes alone (common random numbers across the scenarios: each draw is
+    made once and scaled by each scenario's own sigma), and each run sees the arithmetic it sees
+    alone, so the results equal ``[run_monte_carlo(sc, mode, n_runs, seed, ...) for sc in
+    scenarios]`` (``batches=1``). The scenarios must share the flight, the rates, the satellites
+    and the antennas (:func:`batch_group_key`); noises, initial sigmas, the IMU's errors, the
+    filter's tuning and the visibility schedule may differ.
+
+    Parameters
+    ----------
+    scenarios : sequence of Scenario
+        At least one; all with the same :func:`batch_group_key`.
+    mode, n_runs, seed, initialise, attitude_min_sats
+        As for :func:`run_monte_carlo`.
+
+    Returns
+    -------
+    list of MonteCarloResult
+        One per scenario, in order.
+
+    Raises
+    ------
+    ValueError
+        If ``scenarios`` is empty or its scenarios differ in a shared field, or as
+        :func:`run_monte_carlo` raises.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from dataclasses import replace
+    >>> from navcore.inertial.imu import ImuSpec
+    >>> sats = np.array([[2e7, 0.0, -1e7], [-2e7, 0.0, -1e7], [0.0, 2e7, -1e7], [0.0, -2e7, -1e7]])
+    >>> sc = Scenario(velocity_ned=np.array([100.0, 0.0, 0.0]), attitude=np.zeros(3),
+    ...     duration=5.0, imu_rate=100.0, gps_rate=1.0, imu=ImuSpec("example", accel_bias=1e-2),
+    ...     sat_pos_ned=np.tile(sats, (6, 1, 1)), sat_vel_ned=np.zeros((6, 4, 3)),
+    ...     n_visible=np.full(6, 4), gnss=GnssNoise(3.0, 0.1, None, None), init_time=None,
+    ...     pos0_sigma=3.0, vel0_sigma=0.1, baselines_b=None)
+    >>> noisy = replace(sc, gnss=GnssNoise(6.0, 0.1, None, None))
+    >>> both = run_monte_carlo_batch([sc, noisy], "tc", 50, seed=1, initialise=False)
+    >>> [round(float(r.horizontal_rms("pos_err")[-1]), 2) for r in both]
+    [1.48, 2.58]
+    >>> alone = run_monte_carlo(noisy, "tc", 50, seed=1, initialise=False)
+    >>> bool(np.allclose(both[1].pos_err, alone.pos_err, rtol=1e-10, atol=0.0))
+    True
+    """
+    if mode not in MODES:
+        raise ValueError(f"mode must be one of {MODES}, got {mode!r}")
+    require_integer("n_runs", n_runs, minimum=1)
+    scenarios = list(scenarios)
+    if not scenarios:
+        raise ValueError("scenarios must hold at least one Scenario, got none")
+    keys = {batch_group_key(sc) for sc in scenarios}
+    if len(keys) > 1:
+        raise ValueError(f"scenarios must share the fields {_BATCH_SHARED_FIELDS} to run in one batch")
+    if initialise:
+        for sc in scenarios:
+            _needed(sc.init_time, "sc.init_time", "an initialising run")
+    parts = _monte_carlo_batch(
+        scenarios, mode, n_runs, seed, initialise, [attitude_min_sats] * len(scenarios)
+    )
+    return [_join_batches([part]) for part in parts]
 
 
 def _join_batches(parts: list[tuple[MonteCarloResult, Array, Array, Array]]) -> MonteCarloResult:
@@ -632,18 +950,30 @@ def _join_batches(parts: list[tuple[MonteCarloResult, Array, Array, Array]]) -> 
 
 
 def _monte_carlo_batch(
-    sc: Scenario,
+    scs: Sequence[Scenario],
     mode: str,
     n_runs: int,
     seed: int | np.random.SeedSequence,
     initialise: bool,
-    attitude_min_sats: int,
-) -> tuple[MonteCarloResult, Array, Array, Array]:
-    """``n_runs`` runs from ``default_rng(seed)`` (one task of :func:`run_monte_carlo`): the result
-    without its 1-sigma columns, and the run-averaged variances of position, velocity and attitude."""
-    N = n_runs
+    attitude_min_sats: Sequence[int],
+) -> list[tuple[MonteCarloResult, Array, Array, Array]]:
+    """``n_runs`` runs from ``default_rng(seed)`` of each scenario of ``scs`` (one task of
+    :func:`run_monte_carlo`, or one batch of :func:`run_monte_carlo_batch`): per scenario, the
+    result without its 1-sigma columns, and the run-averaged variances of position, velocity and
+    attitude.
+
+    The scenarios share everything :func:`batch_group_key` digests; what else they hold (noises,
+    sigmas, the IMU's errors, the visibility schedule, ``attitude_min_sats``) is a value per row
+    of the leading axis, row ``b * n_runs + n`` being run ``n`` of scenario ``b``. Every
+    scenario takes the draws of ``default_rng(seed)`` that it takes alone (each standard normal
+    is drawn once for ``n_runs`` rows and scaled per row), and every row sees the arithmetic it
+    sees alone (element by element, or a measurement update on the rows with its satellite
+    count), so a row's numbers do not depend on the other scenarios of the batch.
+    """
+    sc = scs[0]  # the fields every scenario of the batch shares (batch_group_key)
+    B, N = len(scs), n_runs
+    M = B * N
     rng = np.random.default_rng(seed)
-    imu = sc.imu
     dt = 1.0 / sc.imu_rate
     T = 1.0 / sc.gps_rate
     K = sc.n_epochs
@@ -651,25 +981,44 @@ def _monte_carlo_batch(
     v_true = np.asarray(sc.velocity_ned, dtype=float)
     roll0, pitch0, yaw0 = (float(a) for a in sc.attitude)
 
+    def per_row(get: Any) -> Array:
+        """One value per scenario, repeated over its ``N`` rows: ``(M,)``."""
+        return np.repeat(np.array([float(get(s)) for s in scs]), N)
+
+    def shared(z: Array) -> Array:
+        """Draws ``z`` of shape ``(N, ...)``, the same for every scenario: ``(M, ...)``."""
+        return z if B == 1 else np.broadcast_to(z, (B, *z.shape)).reshape(M, *z.shape[1:])
+
+    imus = [s.imu for s in scs]
+    gyro_rw = np.repeat(np.array([i.gyro_random_walk for i in imus]), N)
+    accel_rw = np.repeat(np.array([i.accel_random_walk for i in imus]), N)
+
     # --- truth (constant attitude and velocity; flat non-rotating Earth, as in Eqs. 7-9) ---
-    yaw_true = yaw0 + sc.heading_sigma * rng.standard_normal(N)
+    yaw_true = yaw0 + per_row(lambda s: s.heading_sigma) * shared(rng.standard_normal(N))
     C_true = np.stack([dcm_from_euler(roll0, pitch0, y) for y in yaw_true])
     f_true_b = np.einsum("nji,j->ni", C_true, np.array([0.0, 0.0, -G0]))
-    b_g = imu.gyro_bias * rng.standard_normal((N, 3))
-    b_a = imu.accel_bias * rng.standard_normal((N, 3))
-    rng.standard_normal((N, 3))  # gyro scale factors: drawn for the record, the true rate is zero
-    s_a = imu.accel_scale_factor * rng.standard_normal((N, 3))
+    b_g = per_row(lambda s: s.imu.gyro_bias)[:, None] * shared(rng.standard_normal((N, 3)))
+    b_a = per_row(lambda s: s.imu.accel_bias)[:, None] * shared(rng.standard_normal((N, 3)))
+    shared(rng.standard_normal((N, 3)))  # gyro scale factors: drawn for the record, the true rate is zero
+    s_a = per_row(lambda s: s.imu.accel_scale_factor)[:, None] * shared(rng.standard_normal((N, 3)))
     f_sensor_const = f_true_b * (1.0 + s_a) + b_a  # accelerometer output without noise
     clock = np.stack(
-        [sc.clock_bias_sigma * rng.standard_normal(N), sc.clock_drift_sigma * rng.standard_normal(N)], -1
+        [
+            per_row(lambda s: s.clock_bias_sigma) * shared(rng.standard_normal(N)),
+            per_row(lambda s: s.clock_drift_sigma) * shared(rng.standard_normal(N)),
+        ],
+        -1,
     )
 
     # --- initialisation (KZL Sec. 3.1) ---
-    Tinit = _needed(sc.init_time, "sc.init_time", "an initialising run") if initialise else math.inf
-    pos_hat = sc.pos0_sigma * rng.standard_normal((N, 3))
-    v_meas0 = v_true + sc.vel0_sigma * rng.standard_normal((N, 3))
-    f_avg = f_sensor_const + imu.accel_random_walk / np.sqrt(Tinit) * rng.standard_normal((N, 3))
-    w_avg = b_g + imu.gyro_random_walk / np.sqrt(Tinit) * rng.standard_normal((N, 3))
+    if initialise:
+        Tinit = per_row(lambda s: _needed(s.init_time, "sc.init_time", "an initialising run"))
+    else:
+        Tinit = np.full(M, math.inf)
+    pos_hat = per_row(lambda s: s.pos0_sigma)[:, None] * shared(rng.standard_normal((N, 3)))
+    v_meas0 = v_true + per_row(lambda s: s.vel0_sigma)[:, None] * shared(rng.standard_normal((N, 3)))
+    f_avg = f_sensor_const + (accel_rw / np.sqrt(Tinit))[:, None] * shared(rng.standard_normal((N, 3)))
+    w_avg = b_g + (gyro_rw / np.sqrt(Tinit))[:, None] * shared(rng.standard_normal((N, 3)))
     if initialise:
         roll_h, pitch_h = levelling(f_avg)
         yaw_h = heading_from_velocity(v_meas0)
@@ -677,173 +1026,210 @@ def _monte_carlo_batch(
         bg_hat = w_avg.copy()
         ba_hat = f_avg - np.einsum("nji,j->ni", C_hat0, np.array([0.0, 0.0, -G0]))
     else:
-        C_hat0 = np.tile(dcm_from_euler(roll0, pitch0, yaw0), (N, 1, 1))
-        bg_hat = np.zeros((N, 3))
-        ba_hat = np.zeros((N, 3))
-    q_hat = np.stack([quat_from_dcm(C) for C in C_hat0])
-    nav = NavState(pos_hat, v_meas0.copy(), q_hat)
-    clock_hat = np.zeros((N, 2))
-    P0 = _initial_covariance(sc, dcm_from_euler(roll0, pitch0, yaw0), Tinit if initialise else None)
-    P = np.tile(P0, (N, 1, 1))
-    GQGt = _gqgt(sc)
-    g = sc.gnss
+        C_hat0 = np.tile(dcm_from_euler(roll0, pitch0, yaw0), (M, 1, 1))
+        bg_hat = np.zeros((M, 3))
+        ba_hat = np.zeros((M, 3))
+    quat = np.stack([quat_from_dcm(C) for C in C_hat0])
+    pos, vel = pos_hat, v_meas0.copy()
+    clock_hat = np.zeros((M, 2))
+    C0 = dcm_from_euler(roll0, pitch0, yaw0)
+    P = np.repeat(
+        np.stack([_initial_covariance(s, C0, s.init_time if initialise else None) for s in scs]), N, axis=0
+    )
+    # GQG^T is diagonal (isotropic noises, _gqgt): its diagonal per row, to scale columns
+    q_diag = np.repeat(np.stack([np.diag(_gqgt(s)) for s in scs]), N, axis=0)[:, None, :]
+    noise = {
+        name: [getattr(s.gnss, name) for s in scs]
+        for name in ("pseudorange", "delta_range", "phase", "attitude")
+    }
+    sig = {name: np.repeat(np.array([_sigma(v) for v in vals]), N) for name, vals in noise.items()}
+    given = {name: np.repeat(np.array([v is not None for v in vals]), N) for name, vals in noise.items()}
+    clock_phase_walk = per_row(lambda s: s.clock_phase_walk)
+    clock_drift_walk = per_row(lambda s: s.clock_drift_walk)
+    n_vis = np.repeat(np.stack([np.asarray(s.n_visible) for s in scs]), N, axis=0)
+    att_min = np.repeat(np.asarray(attitude_min_sats, dtype=np.int64), N)
     k2pi = 2 * np.pi / GPS_L1_WAVELENGTH_M
     # phase noise of every antenna is drawn in every mode (common random numbers); without
     # baselines, three antennas' worth, as for KZL's two baselines
     n_antennas = 1 + (2 if sc.baselines_b is None else np.shape(sc.baselines_b)[0])
 
-    out_pos = np.zeros((N, K + 1, 3))
-    out_vel = np.zeros((N, K + 1, 3))
-    out_att = np.zeros((N, K + 1, 3))
-    var_pos = np.zeros((K + 1, 3))
-    var_vel = np.zeros((K + 1, 3))
-    var_att = np.zeros((K + 1, 3))
+    out_pos = np.zeros((M, K + 1, 3))
+    out_vel = np.zeros((M, K + 1, 3))
+    out_att = np.zeros((M, K + 1, 3))
+    var_pos = np.zeros((B, K + 1, 3))
+    var_vel = np.zeros((B, K + 1, 3))
+    var_att = np.zeros((B, K + 1, 3))
     eul_true = euler_batch(C_true)
 
-    # the scenario and the arguments are checked: the loop calls the kernels without re-checking
-    _k_strapdown_interval = unchecked(strapdown_interval)
+    # the scenarios and the arguments are checked: the loop calls the kernels without re-checking
     _k_dcm_from_quat_batch = unchecked(dcm_from_quat_batch)
     _k_error_dynamics_17 = unchecked(error_dynamics_17)
-    _k_transition_exact = unchecked(transition_exact)
-    _k_discrete_noise_nilpotent = unchecked(discrete_noise_nilpotent)
     _k_sequential_scalar_updates = unchecked(sequential_scalar_updates)
     _k_euler_batch = unchecked(euler_batch)
     _k_euler_jacobian_batch = unchecked(euler_jacobian_batch)
     _k_correct_attitude = unchecked(correct_attitude)
 
+    def run_mean(a: Array) -> Array:
+        """Mean over each scenario's runs of a per-row ``(M, 3)`` array: ``(B, 3)``."""
+        return np.mean(a.reshape(B, N, 3), axis=1)
+
     def record(k: int, t: float) -> None:
-        C_hat = _k_dcm_from_quat_batch(nav.quat)
-        out_pos[:, k] = nav.pos - v_true * t
-        out_vel[:, k] = nav.vel - v_true
+        C_hat = _k_dcm_from_quat_batch(quat)
+        out_pos[:, k] = pos - v_true * t
+        out_vel[:, k] = vel - v_true
         out_att[:, k] = _wrap(_k_euler_batch(C_hat) - eul_true)
         J = _k_euler_jacobian_batch(C_hat)
-        var_pos[k] = np.mean(np.diagonal(P[:, _P, _P], axis1=1, axis2=2), axis=0)
-        var_vel[k] = np.mean(np.diagonal(P[:, _V, _V], axis1=1, axis2=2), axis=0)
+        var_pos[:, k] = run_mean(np.diagonal(P[:, _P, _P], axis1=1, axis2=2))
+        var_vel[:, k] = run_mean(np.diagonal(P[:, _V, _V], axis1=1, axis2=2))
         Pe = J @ P[:, _A, _A] @ np.swapaxes(J, -1, -2)
-        var_att[k] = np.mean(np.diagonal(Pe, axis1=1, axis2=2), axis=0)
+        var_att[:, k] = run_mean(np.diagonal(Pe, axis1=1, axis2=2))
+
+    def need(name: str, rows: Any) -> Array:
+        """The per-row noise ``name`` of ``rows``; a ValueError if a scenario lacks it."""
+        if not np.all(given[name][rows]):
+            _needed(None, f"sc.gnss.{name}", f"mode {mode!r}")
+        return sig[name][rows]
+
+    def update(
+        rows: Any, nu: int, k: int, C_hat: Array, e_pr: Array, e_prr: Array, e_ph: Array, e_att: Array
+    ) -> None:
+        """The measurement update and feedback of epoch ``k`` on ``rows``, which see ``nu`` satellites."""
+        t = k * T
+        p_r, v_r, q_r, C_r = pos[rows], vel[rows], quat[rows], C_hat[rows]
+        m = p_r.shape[0]
+        sats = sc.sat_pos_ned[k, :nu]
+        svel = sc.sat_vel_ned[k, :nu]
+        x_true = v_true * t
+        d_hat = sats[None] - p_r[:, None]
+        rho_hat = np.linalg.norm(d_hat, axis=-1)
+        u_hat = d_hat / rho_hat[..., None]
+        d_true = sats - x_true
+        rho_true = np.linalg.norm(d_true, axis=-1)
+        u_true = d_true / rho_true[:, None]
+        ch, c = clock_hat[rows], clock[rows]
+        y_rho = (rho_hat + ch[:, :1]) - (rho_true[None] + c[:, :1] + e_pr[rows, :nu])
+        rate_hat = np.einsum("nsi,nsi->ns", u_hat, svel[None] - v_r[:, None]) + ch[:, 1:]
+        rate_true = np.einsum("si,si->s", u_true, svel - v_true)[None] + c[:, 1:] + e_prr[rows, :nu]
+        y = np.empty((m, 2 * nu))
+        y[:, 0::2] = y_rho
+        y[:, 1::2] = rate_hat - rate_true
+        H = np.zeros((m, 2 * nu, 17))
+        H[:, 0::2, _P] = -u_hat
+        H[:, 0::2, _CB] = 1.0
+        H[:, 1::2, _V] = -u_hat
+        H[:, 1::2, _CD] = 1.0
+        r = np.tile(np.stack([need("pseudorange", rows) ** 2, need("delta_range", rows) ** 2], -1), (1, nu))
+        dx = np.zeros((m, 17))
+        dx, P_r = _k_sequential_scalar_updates(dx, P[rows], y, H, r)
+        if mode == "tc_att":
+            att = np.flatnonzero(nu >= att_min[rows])  # the rows with the multi-antenna attitude
+            if att.size:
+                sub = slice(None) if att.size == m else att
+                C_a = C_r[sub]
+                eul_hat = _k_euler_batch(C_a)
+                y_att = _wrap(eul_hat - (eul_true[rows][sub] + e_att[rows][sub]))
+                H_att = np.zeros((C_a.shape[0], 3, 17))
+                H_att[:, :, _A] = _k_euler_jacobian_batch(C_a)
+                sig_att = need("attitude", rows)[sub]
+                # the attitude rows see the already-updated error state through H dx
+                dx_a, P_a = _k_sequential_scalar_updates(
+                    dx[sub], P_r[sub], y_att, H_att, np.repeat((sig_att**2)[:, None], 3, axis=1)
+                )
+                dx[sub], P_r[sub] = dx_a, P_a
+        if mode == "tc_dd" and nu >= DD_MIN_SATELLITES:
+            base_b = _needed(sc.baselines_b, "sc.baselines_b", f"mode {mode!r}")
+            nb = base_b.shape[0]
+            ant_hat = np.einsum("nij,bj->nbi", C_r, base_b)  # (m, nb, 3) NED
+            ant_true = np.einsum("nij,bj->nbi", C_true[rows], base_b)
+            e_r = e_ph[rows]
+            y_dd = np.zeros((m, (nu - 1) * nb))
+            H_dd = np.zeros((m, (nu - 1) * nb, 17))
+            for s in range(1, nu):
+                dd_hat = _dd_phase_batch(p_r, ant_hat, sats[s], sats[0])
+                ph = e_r[:, s, 1:] - e_r[:, s, :1] - e_r[:, 0, 1:] + e_r[:, 0, :1]
+                dd_meas = (
+                    _dd_phase_batch(np.broadcast_to(x_true, (m, 3)), ant_true, sats[s], sats[0])
+                    + k2pi * ph[:, :nb]
+                )
+                cols = slice((s - 1) * nb, s * nb)
+                y_dd[:, cols] = dd_hat - dd_meas
+                # Eq. 17 (corrected): (l_m - l_n)^T [R l x]_paper = (R l) x (l_m - l_n)
+                H_dd[:, cols, _A] = k2pi * np.cross(ant_hat, (u_hat[:, 0] - u_hat[:, s])[:, None, :])
+            sig_ph = need("phase", rows)
+            for value in np.unique(sig_ph):  # rows of one phase noise share one whitening
+                same = np.flatnonzero(sig_ph == value)
+                sub = slice(None) if same.size == m else same
+                Lc = np.linalg.cholesky(dd_covariance(nu, k2pi * float(value), nb))
+                Linv = np.linalg.inv(Lc)
+                y_w = np.einsum("ij,nj->ni", Linv, y_dd[sub])
+                H_w = np.einsum("ij,njk->nik", Linv, H_dd[sub])
+                dx_d, P_d = _k_sequential_scalar_updates(dx[sub], P_r[sub], y_w, H_w, np.ones(y_w.shape[1]))
+                dx[sub], P_r[sub] = dx_d, P_d
+        # feedback correction and reset (KZL Sec. 3.5)
+        pos[rows] = p_r - dx[:, _P]
+        vel[rows] = v_r - dx[:, _V]
+        quat[rows] = _k_correct_attitude(q_r, dx[:, _A], "left")
+        ba_hat[rows] = ba_hat[rows] - dx[:, _BA]
+        bg_hat[rows] = bg_hat[rows] - dx[:, _BG]
+        clock_hat[rows] = ch - dx[:, _CB : _CD + 1]
+        P[rows] = P_r
 
     record(0, 0.0)
+    nsat_all = sc.sat_pos_ned.shape[1]
     for k in range(1, K + 1):
         # IMU noise for this second, drawn in the same order for every mode
-        n_a = imu.accel_random_walk / np.sqrt(dt) * rng.standard_normal((N, steps, 3))
-        n_g = imu.gyro_random_walk / np.sqrt(dt) * rng.standard_normal((N, steps, 3))
+        n_a = (accel_rw / np.sqrt(dt))[:, None, None] * shared(rng.standard_normal((N, steps, 3)))
+        n_g = (gyro_rw / np.sqrt(dt))[:, None, None] * shared(rng.standard_normal((N, steps, 3)))
         # 100 Hz strapdown on bias-corrected data (Eqs. 7-9), vectorised over the interval
         w_hat = (b_g - bg_hat)[:, None, :] + n_g
         f_hat = (f_sensor_const - ba_hat)[:, None, :] + n_a
-        nav, f_n = _k_strapdown_interval(nav, w_hat, f_hat, dt)
-        clock = clock + np.stack([clock[:, 1] * T, np.zeros(N)], -1)
+        pos, vel, quat, f_n_mean = _strapdown_rows(pos, vel, quat, w_hat, f_hat, dt)
+        clock = clock + np.stack([clock[:, 1] * T, np.zeros(M)], -1)
         clock = clock + np.stack(
             [
-                sc.clock_phase_walk * np.sqrt(T) * rng.standard_normal(N),
-                sc.clock_drift_walk * np.sqrt(T) * rng.standard_normal(N),
+                clock_phase_walk * np.sqrt(T) * shared(rng.standard_normal(N)),
+                clock_drift_walk * np.sqrt(T) * shared(rng.standard_normal(N)),
             ],
             -1,
         )
-        clock_hat = clock_hat + np.stack([clock_hat[:, 1] * T, np.zeros(N)], -1)
-        t = k * T
+        clock_hat = clock_hat + np.stack([clock_hat[:, 1] * T, np.zeros(M)], -1)
         # GPS noise draws (always drawn, used or not)
-        nsat_all = sc.sat_pos_ned.shape[1]
-        e_pr = _sigma(g.pseudorange) * rng.standard_normal((N, nsat_all))
-        e_prr = _sigma(g.delta_range) * rng.standard_normal((N, nsat_all))
-        e_ph = _sigma(g.phase) * rng.standard_normal((N, nsat_all, n_antennas))
-        e_att = _sigma(g.attitude) * rng.standard_normal((N, 3))
+        e_pr = sig["pseudorange"][:, None] * shared(rng.standard_normal((N, nsat_all)))
+        e_prr = sig["delta_range"][:, None] * shared(rng.standard_normal((N, nsat_all)))
+        e_ph = sig["phase"][:, None, None] * shared(rng.standard_normal((N, nsat_all, n_antennas)))
+        e_att = sig["attitude"][:, None] * shared(rng.standard_normal((N, 3)))
 
         # covariance prediction over the GPS interval
-        C_hat = _k_dcm_from_quat_batch(nav.quat)
-        F = _k_error_dynamics_17(C_hat, f_n.mean(axis=1))
-        Phi = _k_transition_exact(F, T)
-        P = symmetrize_unchecked(Phi @ P @ np.swapaxes(Phi, -1, -2) + _k_discrete_noise_nilpotent(F, GQGt, T))
+        C_hat = _k_dcm_from_quat_batch(quat)
+        F = _k_error_dynamics_17(C_hat, f_n_mean)
+        Phi, Qd = _transition_and_noise(F, q_diag, T)
+        P = symmetrize_unchecked(Phi @ P @ np.swapaxes(Phi, -1, -2) + Qd)
 
-        nu = int(sc.n_visible[k])
-        if mode != "ins" and nu >= 1:
-            sats = sc.sat_pos_ned[k, :nu]
-            svel = sc.sat_vel_ned[k, :nu]
-            x_true = v_true * t
-            d_hat = sats[None] - nav.pos[:, None]
-            rho_hat = np.linalg.norm(d_hat, axis=-1)
-            u_hat = d_hat / rho_hat[..., None]
-            d_true = sats - x_true
-            rho_true = np.linalg.norm(d_true, axis=-1)
-            u_true = d_true / rho_true[:, None]
-            y_rho = (rho_hat + clock_hat[:, :1]) - (rho_true[None] + clock[:, :1] + e_pr[:, :nu])
-            rate_hat = np.einsum("nsi,nsi->ns", u_hat, svel[None] - nav.vel[:, None]) + clock_hat[:, 1:]
-            rate_true = np.einsum("si,si->s", u_true, svel - v_true)[None] + clock[:, 1:] + e_prr[:, :nu]
-            y = np.empty((N, 2 * nu))
-            y[:, 0::2] = y_rho
-            y[:, 1::2] = rate_hat - rate_true
-            H = np.zeros((N, 2 * nu, 17))
-            H[:, 0::2, _P] = -u_hat
-            H[:, 0::2, _CB] = 1.0
-            H[:, 1::2, _V] = -u_hat
-            H[:, 1::2, _CD] = 1.0
-            r = np.tile(
-                [
-                    _needed(g.pseudorange, "sc.gnss.pseudorange", f"mode {mode!r}") ** 2,
-                    _needed(g.delta_range, "sc.gnss.delta_range", f"mode {mode!r}") ** 2,
-                ],
-                nu,
-            )
-            dx = np.zeros((N, 17))
-            dx, P = _k_sequential_scalar_updates(dx, P, y, H, r)
-            if mode == "tc_att" and nu >= attitude_min_sats:
-                eul_hat = _k_euler_batch(C_hat)
-                y_att = _wrap(eul_hat - (eul_true + e_att))
-                H_att = np.zeros((N, 3, 17))
-                H_att[:, :, _A] = _k_euler_jacobian_batch(C_hat)
-                # the attitude rows see the already-updated error state through H dx
-                dx, P = _k_sequential_scalar_updates(
-                    dx,
-                    P,
-                    y_att,
-                    H_att,
-                    np.full(3, _needed(g.attitude, "sc.gnss.attitude", f"mode {mode!r}") ** 2),
-                )
-            if mode == "tc_dd" and nu >= 2:
-                base_b = _needed(sc.baselines_b, "sc.baselines_b", f"mode {mode!r}")
-                nb = base_b.shape[0]
-                ant_hat = np.einsum("nij,bj->nbi", C_hat, base_b)  # (N, nb, 3) NED
-                ant_true = np.einsum("nij,bj->nbi", C_true, base_b)
-
-                y_dd = np.zeros((N, (nu - 1) * nb))
-                H_dd = np.zeros((N, (nu - 1) * nb, 17))
-                for s in range(1, nu):
-                    dd_hat = _dd_phase_batch(nav.pos, ant_hat, sats[s], sats[0])
-                    noise = e_ph[:, s, 1:] - e_ph[:, s, :1] - e_ph[:, 0, 1:] + e_ph[:, 0, :1]
-                    dd_meas = (
-                        _dd_phase_batch(np.broadcast_to(x_true, (N, 3)), ant_true, sats[s], sats[0])
-                        + k2pi * noise[:, :nb]
-                    )
-                    rows = slice((s - 1) * nb, s * nb)
-                    y_dd[:, rows] = dd_hat - dd_meas
-                    # Eq. 17 (corrected): (l_m - l_n)^T [R l x]_paper = (R l) x (l_m - l_n)
-                    H_dd[:, rows, _A] = k2pi * np.cross(ant_hat, (u_hat[:, 0] - u_hat[:, s])[:, None, :])
-                R_dd = dd_covariance(nu, k2pi * _needed(g.phase, "sc.gnss.phase", f"mode {mode!r}"), nb)
-                Lc = np.linalg.cholesky(R_dd)
-                Linv = np.linalg.inv(Lc)
-                y_w = np.einsum("ij,nj->ni", Linv, y_dd)
-                H_w = np.einsum("ij,njk->nik", Linv, H_dd)
-                dx, P = _k_sequential_scalar_updates(dx, P, y_w, H_w, np.ones(y_w.shape[1]))
-            # feedback correction and reset (KZL Sec. 3.5)
-            nav = NavState(
-                nav.pos - dx[:, _P], nav.vel - dx[:, _V], _k_correct_attitude(nav.quat, dx[:, _A], "left")
-            )
-            ba_hat = ba_hat - dx[:, _BA]
-            bg_hat = bg_hat - dx[:, _BG]
-            clock_hat = clock_hat - dx[:, _CB : _CD + 1]
-        record(k, t)
+        if mode != "ins":
+            counts = n_vis[:, k]
+            for nu in np.unique(counts):  # the rows that see nu satellites are updated together
+                if nu < 1:
+                    continue
+                same = np.flatnonzero(counts == nu)
+                update(slice(None) if same.size == M else same, int(nu), k, C_hat, e_pr, e_prr, e_ph, e_att)
+        record(k, k * T)
 
     empty = np.zeros((0, 3))
-    result = MonteCarloResult(
-        t=np.arange(K + 1, dtype=float) * T,
-        pos_err=out_pos,
-        vel_err=out_vel,
-        att_err=out_att,
-        pos_sigma=empty,
-        vel_sigma=empty,
-        att_sigma=empty,
-        n_visible=np.asarray(sc.n_visible),
-    )
-    return result, var_pos, var_vel, var_att
+    out = []
+    for b, s in enumerate(scs):
+        rows = slice(b * N, (b + 1) * N)
+        result = MonteCarloResult(
+            t=np.arange(K + 1, dtype=float) * T,
+            pos_err=out_pos[rows],
+            vel_err=out_vel[rows],
+            att_err=out_att[rows],
+            pos_sigma=empty,
+            vel_sigma=empty,
+            att_sigma=empty,
+            n_visible=np.asarray(s.n_visible),
+        )
+        out.append((result, var_pos[b], var_vel[b], var_att[b]))
+    return out
 
 
 # Every public function checks its arguments against their annotations (finite numbers,

@@ -101,7 +101,11 @@ class Constellation:
 
 
 def nominal_gps_constellation(
-    n_planes: int = 6, per_plane: int = 4, phase_offset_deg: float = 15.0, raan0_deg: float = 0.0
+    n_planes: int = 6,
+    per_plane: int = 4,
+    phase_offset_deg: float = 15.0,
+    raan0_deg: float = 0.0,
+    inclination_deg: float | None = None,
 ) -> Constellation:
     """The nominal 24-satellite GPS constellation as a Walker-like pattern.
 
@@ -115,6 +119,8 @@ def nominal_gps_constellation(
         Argument-of-latitude offset between successive planes, deg.
     raan0_deg : float, default 0.0
         Right ascension of plane A at t = 0, deg, to rotate the whole pattern.
+    inclination_deg : float or None, default None
+        Orbit inclination, deg; ``None`` takes the GPS nominal 55 deg (:data:`GPS_INCLINATION_RAD`).
 
     Returns
     -------
@@ -143,7 +149,8 @@ def nominal_gps_constellation(
     slots = np.tile(np.arange(per_plane), n_planes)
     raan = (raan0_deg * DEG + planes * 2 * np.pi / n_planes) % (2 * np.pi)
     arg = (slots * 2 * np.pi / per_plane + planes * phase_offset_deg * DEG) % (2 * np.pi)
-    return Constellation(raan, arg, GPS_INCLINATION_RAD, GPS_SEMI_MAJOR_AXIS_M, np.arange(1, planes.size + 1))
+    inc = GPS_INCLINATION_RAD if inclination_deg is None else inclination_deg * DEG
+    return Constellation(raan, arg, inc, GPS_SEMI_MAJOR_AXIS_M, np.arange(1, planes.size + 1))
 
 
 def line_of_sight(r_user: ArrayLike, r_sat: ArrayLike) -> tuple[NDArray[np.float64], NDArray[np.float64]]:

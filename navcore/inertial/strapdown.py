@@ -144,15 +144,13 @@ def quat_multiply_batch(q: Array, p: Array) -> Array:
     """
     w1, x1, y1, z1 = q[..., 0], q[..., 1], q[..., 2], q[..., 3]
     w2, x2, y2, z2 = p[..., 0], p[..., 1], p[..., 2], p[..., 3]
-    return np.stack(
-        [
-            w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2,
-            w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
-            w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2,
-            w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2,
-        ],
-        axis=-1,
-    )
+    # written into one array (no np.stack: this runs a dozen times per GPS epoch)
+    out = np.empty((*np.broadcast_shapes(w1.shape, w2.shape), 4), dtype=np.result_type(q, p))
+    out[..., 0] = w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2
+    out[..., 1] = w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2
+    out[..., 2] = w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2
+    out[..., 3] = w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2
+    return out
 
 
 def dcm_from_quat_batch(q: Array) -> Array:
@@ -178,14 +176,17 @@ def dcm_from_quat_batch(q: Array) -> Array:
     [[0.8776, -0.4794, 0.0], [0.4794, 0.8776, 0.0], [0.0, 0.0, 1.0]]
     """
     w, x, y, z = q[..., 0], q[..., 1], q[..., 2], q[..., 3]
-    return np.stack(
-        [
-            np.stack([w * w + x * x - y * y - z * z, 2 * (x * y - w * z), 2 * (x * z + w * y)], -1),
-            np.stack([2 * (x * y + w * z), w * w - x * x + y * y - z * z, 2 * (y * z - w * x)], -1),
-            np.stack([2 * (x * z - w * y), 2 * (y * z + w * x), w * w - x * x - y * y + z * z], -1),
-        ],
-        axis=-2,
-    )
+    C = np.empty((*w.shape, 3, 3), dtype=np.result_type(q, 1.0))
+    C[..., 0, 0] = w * w + x * x - y * y - z * z
+    C[..., 0, 1] = 2 * (x * y - w * z)
+    C[..., 0, 2] = 2 * (x * z + w * y)
+    C[..., 1, 0] = 2 * (x * y + w * z)
+    C[..., 1, 1] = w * w - x * x + y * y - z * z
+    C[..., 1, 2] = 2 * (y * z - w * x)
+    C[..., 2, 0] = 2 * (x * z - w * y)
+    C[..., 2, 1] = 2 * (y * z + w * x)
+    C[..., 2, 2] = w * w - x * x - y * y + z * z
+    return C
 
 
 def earth_rate_ned(lat: ArrayLike, *, deg: bool = False) -> Array:

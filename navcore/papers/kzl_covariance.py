@@ -93,6 +93,7 @@ def standalone_covariance(initialise: bool = True, init_time: float | None = Non
         IN.duration_s,
         speed=speed,
         heading=float(np.arctan2(ve, vn)),
+        dt=1.0 / IN.gps_rate_hz,  # the GPS epochs of Table 1, at which the claims read the errors
         lat0=lat,
         lon0=lon,
         h0=IN.height_m,

@@ -196,15 +196,17 @@ def eq9_quaternion_error_deg() -> float:
     x, y, z, s = R0.as_quat()
     q = np.array([s, x, y, z])
     f = lambda q: 0.5 * _qmul(q, np.concatenate([[0.0], w]))
-    h = 1e-3
-    for _ in range(1000):
+    # RK4 over T = 1 s in 1000 steps (a resolution: the claim asks whether Eq. (9) holds)
+    T, steps = 1.0, 1000
+    h = T / steps
+    for _ in range(steps):
         k1 = f(q)
         k2 = f(q + h / 2 * k1)
         k3 = f(q + h / 2 * k2)
         k4 = f(q + h * k3)
         q = q + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
     num = Rotation.from_quat([q[1], q[2], q[3], q[0]])
-    ref = R0 * Rotation.from_rotvec(w)
+    ref = R0 * Rotation.from_rotvec(w * T)
     return float(np.degrees((num * ref.inv()).magnitude()))
 
 

@@ -250,8 +250,9 @@ def heading_observable(mode: str = "tc", nu: int = 8) -> bool:
 
 def _complete_only_with_attitude() -> bool:
     r = observability_ranks()
-    return all(r["tc"][nu] < 17 for nu in range(1, 9)) and all(
-        r["tc_att"][nu] == 17 and r["tc_dd"][nu] == 17 for nu in range(4, 9)
+    n = ERROR_LAYOUT_17.size  # complete: every one of the 17 states of Eq. (1)
+    return all(r["tc"][nu] < n for nu in range(1, 9)) and all(
+        r["tc_att"][nu] == n and r["tc_dd"][nu] == n for nu in range(4, 9)
     )
 
 
@@ -260,14 +261,15 @@ def _row_counts_eq13() -> bool:
 
 
 def _row_counts_eq17() -> bool:
-    return all(dd_observation_rows_count(nu) == 2 + 4 * (nu - 1) for nu in range(1, 9))
+    nb = len(table1_baselines_b())  # Table 1's 3 antennas: two baselines from the master
+    return all(dd_observation_rows_count(nu, nb) == 2 + 4 * (nu - 1) for nu in range(1, 9))
 
 
 def _sequential_equals_batch() -> bool:
     """Eight satellites with DD: whitened sequential scalar updates vs one batch update."""
     C = table1_attitude()
     H = tc_dd_observation_matrix(table1_los(8), C, table1_baselines_b())
-    n_code = 16
+    n_code = code_doppler_rows(table1_los(8)).shape[0]  # pseudorange and delta range of 8 satellites
     R = scipy.linalg.block_diag(np.diag(np.tile([9.0, 0.0025], 8)), dd_covariance(8, 0.1))
     rng = np.random.default_rng(4)
     A = rng.normal(size=(17, 17))
@@ -374,8 +376,9 @@ def discretisation_comparison(dt: float = 1.0) -> dict[str, float]:
 
 def _geometry_rank_is_min_nu_4() -> bool:
     """Rank of the code geometry [-l^T 1] equals min(nu, 4) for nu = 1..8 (Table 1 sky)."""
-    ranks = [np.linalg.matrix_rank(np.hstack([-table1_los(nu), np.ones((nu, 1))])) for nu in range(1, 9)]
-    return ranks == [min(nu, 4) for nu in range(1, 9)]
+    geometry = [np.hstack([-table1_los(nu), np.ones((nu, 1))]) for nu in range(1, 9)]
+    # the unknowns: three position coordinates and the clock bias (the columns of [-l^T 1])
+    return [np.linalg.matrix_rank(G) for G in geometry] == [min(G.shape) for G in geometry]
 
 
 def rotation_vector_euler_mismatch() -> float:

@@ -13,7 +13,7 @@ from navcore.ledger import EXACT, Claim, Erratum, InputSet, printed, prose
 from navcore.ledger import monte_carlo as mc_tolerance
 from navcore.papers.kzl_models import IN as MODELS
 from navcore.papers.kzl_quotes import quoted
-from navcore.papers.kzl_scenario import IN, N_RUNS, VISIBILITY_SCHEDULE, kzl_imu, monte_carlo
+from navcore.papers.kzl_scenario import IN, N_RUNS, kzl_imu, monte_carlo, visibility_schedule
 from navcore.units import DEG
 
 PAGE3 = "kzl/03-simulation"
@@ -80,9 +80,10 @@ def seg() -> dict[int, slice]:
 
     The first epoch (the initial state) is left out of the first segment.
     """
-    starts = [round(t0 * IN.gps_rate_hz) for t0, _ in VISIBILITY_SCHEDULE] + [t_end() + 1]
+    schedule = visibility_schedule()
+    starts = [round(t0 * IN.gps_rate_hz) for t0, _ in schedule] + [t_end() + 1]
     out = {}
-    for i, (_, n) in enumerate(VISIBILITY_SCHEDULE):
+    for i, (_, n) in enumerate(schedule):
         out[n] = slice(max(starts[i], 1), starts[i + 1])
     return out
 
