@@ -25,7 +25,8 @@ its own box: each such item is listed, with the reason, in ``tools/layout_allowl
 (``{"420": {"math": {"page#equation": "why"}, "table": {...}}}``). The gate fails on an
 overflow not in the list and on a list entry that no longer overflows (so the list only
 shrinks). Equations and tables are named by page and by their anchor (an equation's label)
-or their position on the page (``math-3``, ``table-2``), so that the list survives a rebuild.
+or their position on the page (``math-3``, ``table-2``; a pandas Styler table's generated id,
+which changes with its numbers, is not used), so that the list survives a rebuild.
 
 Chromium is found on the PATH (``chromium``, ``chromium-browser``, ``google-chrome``); when
 it is missing and the gate runs as root on Debian it is installed with apt-get, otherwise
@@ -89,8 +90,10 @@ MEASURE = r"""
     const width = table.getBoundingClientRect().width;
     if (width > box.clientWidth + 1 || width > column + 1) {
       const head = Array.from(table.querySelectorAll('th')).map(t => t.textContent.trim()).join(' | ');
-      out.table.push({name: table.id || ('table-' + j), scroll: Math.round(width), client: box.clientWidth,
-                      text: head.slice(0, 60)});
+      // a pandas Styler table's id (T_ and a hash of its content) changes with its numbers: by position
+      const named = table.id && !/^T_[0-9a-f]+$/.test(table.id);
+      out.table.push({name: named ? table.id : ('table-' + j), scroll: Math.round(width),
+                      client: box.clientWidth, text: head.slice(0, 60)});
     }
   }
   return JSON.stringify(out);
