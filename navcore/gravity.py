@@ -15,7 +15,9 @@ and at a small height :math:`h` above it the second-order expansion of NIMA TR83
 .. math::
 
     \gamma_h = \gamma\left[1 - \frac{2}{a}\left(1 + f + m - 2f\sin^2\varphi\right)h
-        + \frac{3}{a^2}h^2\right],\qquad m = \frac{\omega^2 a^2 b}{GM}.
+        + \frac{3}{a^2}h^2\right],
+
+    m = \frac{\omega^2 a^2 b}{GM}.
 
 The equatorial and polar values :math:`\gamma_e, \gamma_p` are not typed in: they follow from
 the four defining constants of the level ellipsoid (:math:`a, f, GM, \omega`) through the
@@ -24,12 +26,14 @@ eccentricity :math:`e' = \sqrt{a^2 - b^2}/b`,
 
 .. math::
 
-    q_0 = \tfrac12\left[\left(1 + \tfrac{3}{e'^2}\right)\arctan e' - \tfrac{3}{e'}\right],\quad
+    q_0 = \tfrac12\left[\left(1 + \tfrac{3}{e'^2}\right)\arctan e' - \tfrac{3}{e'}\right],
+
     q_0' = 3\left(1 + \tfrac{1}{e'^2}\right)\left(1 - \tfrac{1}{e'}\arctan e'\right) - 1,
 
 .. math::
 
-    \gamma_e = \frac{GM}{ab}\left(1 - m - \frac{m}{6}\frac{e' q_0'}{q_0}\right),\qquad
+    \gamma_e = \frac{GM}{ab}\left(1 - m - \frac{m}{6}\frac{e' q_0'}{q_0}\right),
+
     \gamma_p = \frac{GM}{a^2}\left(1 + \frac{m}{3}\frac{e' q_0'}{q_0}\right).
 
 WGS-84 gives 9.7803253359 m/s^2 at the equator and 9.8321849378 m/s^2 at the poles

@@ -15,8 +15,10 @@ and the dilutions of precision are the square roots of sums of its diagonal per 
 
 .. math::
 
-    \mathrm{HDOP} = \sqrt{D_{NN} + D_{EE}},\quad \mathrm{VDOP} = \sqrt{D_{DD}},\quad
-    \mathrm{PDOP} = \sqrt{D_{NN} + D_{EE} + D_{DD}},\quad \mathrm{TDOP} = \sqrt{D_{tt}},\quad
+    \mathrm{HDOP} = \sqrt{D_{NN} + D_{EE}},\quad \mathrm{VDOP} = \sqrt{D_{DD}},
+
+    \mathrm{PDOP} = \sqrt{D_{NN} + D_{EE} + D_{DD}},\quad \mathrm{TDOP} = \sqrt{D_{tt}},
+
     \mathrm{GDOP} = \sqrt{\mathrm{tr}\,D}.
 
 Satellites below the elevation mask get weight zero; where the usable geometry has fewer
