@@ -122,7 +122,7 @@ IN.published(
     "accel_vrw_micro_g",
     1000.0,
     locator=_T1 + ", accelerometer noise (VRW)",
-    unit="micro-g/sqrt(Hz)",
+    unit="micro-g/√Hz",
     quantity="velocity random walk",
 )
 IN.published(
@@ -139,7 +139,7 @@ IN.convention(
     reason="Table 1's gyro block is OCR-scrambled: 360 and 180 stand on the lines of 'bias stability' "
     "and 'Accelerometer'; moving the gyro numbers up one line gives bias 360 deg/h, ARW 180 "
     "deg/h/√Hz; the other reading swaps them",
-    unit="(deg/h, deg/h/sqrt(Hz))",
+    unit="(deg/h, deg/h/√Hz)",
     quantity="gyro bias stability and angle random walk",
 )
 IN.assumed(
