@@ -826,9 +826,7 @@ def input_cache(fn: F) -> F:
             del variants[:-256]
         return result
 
-    def prime(
-        entries: Sequence[tuple[tuple[tuple[Input, Any], ...], Any]], *args: Any, **kwargs: Any
-    ) -> None:
+    def prime(entries: Sequence[tuple[Reads, Any]], *args: Any, **kwargs: Any) -> None:
         """Store results computed elsewhere (a batched band) for the call ``fn(*args, **kwargs)``.
 
         ``entries`` holds ``(reads, result)`` pairs, the reads as :func:`for_each_band_run`
@@ -841,11 +839,7 @@ def input_cache(fn: F) -> F:
         key = tuple((k, _hashable(v)) for k, v in bound.arguments.items())
         variants = store.setdefault(key, [])
         for reads, result in entries:
-            if not any(
-                len(r) == len(reads)
-                and all(a is b and _same(x, y) for (a, x), (b, y) in zip(r, reads, strict=True))
-                for r, _ in variants
-            ):
+            if not any(_same_reads(r, reads) for r, _ in variants):
                 variants.append((tuple(reads), result))
         if len(variants) > 256:
             del variants[:-256]
@@ -861,8 +855,9 @@ def band_ahead(runs: Sequence[dict[str, Any]]) -> Iterator[None]:
 
     The ledger wraps each batch of a band's runs (the one-at-a-time runs, then the corners) in
     this block, so that a model can compute them all in one batched call when the first of
-    them asks for its result (:func:`for_each_band_run`), instead of one call per run. What a
-    run returns does not depend on whether it was batched.
+    them asks for its result (:func:`for_each_band_run`), instead of one call per run. A model
+    that batches must give each run the result it gives that run alone (the ledger's values
+    may not depend on the batching).
 
     Parameters
     ----------
