@@ -68,7 +68,8 @@ the evaluation's ``left_out`` records which case was left out and in how many ru
 says it. Each batch of runs (the one-at-a-time runs, then the corners) is announced before it
 is made (``band_ahead`` in :mod:`navcore.ledger.inputs`), so that a model whose runs batch well
 can compute the whole batch in one call when the first run asks, and serve the others from its
-:func:`~navcore.ledger.inputs.input_cache`; what a run returns does not depend on it.
+:func:`~navcore.ledger.inputs.input_cache`; such a model gives each run the result it gives
+that run alone (KZL's Monte Carlo does, bit for bit, and its tests check it).
 
 A band too wide to decide
 -------------------------
