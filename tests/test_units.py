@@ -69,3 +69,31 @@ def test_db_rejects_nonpositive(bad):
         u.db_from_power_ratio(bad)
     with pytest.raises(ValueError, match=r"power_w must be (> 0|finite)"):
         u.dbw_from_watts(bad)
+
+
+@pytest.mark.parametrize(
+    ("convert", "name", "per_decade"),
+    [
+        (u.power_ratio_from_db, "db", 10.0),
+        (u.amplitude_ratio_from_db, "db", 20.0),
+        (u.watts_from_dbw, "power_dbw", 10.0),
+    ],
+)
+def test_from_db_accepts_its_range_to_the_last_float_and_names_the_parameter_beyond(convert, name, per_decade):
+    """Oracle: the definition 10**(x / per_decade) evaluated by math.pow at the ends of
+    [-MAX_DB, MAX_DB], and the documented rejection just beyond them (the next float out),
+    whose message names the parameter as the caller spells it."""
+    for x in (u.MAX_DB, -u.MAX_DB):
+        assert convert(x) == pytest.approx(math.pow(10.0, x / per_decade), rel=1e-12)
+        beyond = math.nextafter(x, math.copysign(math.inf, x))
+        with pytest.raises(ValueError, match=rf"^{name} must lie in \[-3000, 3000\] dB"):
+            convert(beyond)
+    with pytest.raises(ValueError, match=rf"^{name} must lie in"):
+        convert(np.array([0.0, 2 * u.MAX_DB]))  # one element of an array is enough
+
+
+def test_amplitude_db_rejects_a_nonpositive_ratio_by_name():
+    """Oracle: the documented domain of db_from_amplitude_ratio (a ratio > 0)."""
+    with pytest.raises(ValueError, match=r"^ratio must be > 0"):
+        u.db_from_amplitude_ratio(0.0)
+    assert u.db_from_amplitude_ratio(10.0) == pytest.approx(20.0, rel=1e-15)
