@@ -79,7 +79,7 @@ def test_db_rejects_nonpositive(bad):
         (u.watts_from_dbw, "power_dbw", 10.0),
     ],
 )
-def test_from_db_accepts_its_range_to_the_last_float_and_names_the_parameter_beyond(convert, name, per_decade):
+def test_from_db_accepts_its_range_to_the_last_float_and_names_itself_beyond(convert, name, per_decade):
     """Oracle: the definition 10**(x / per_decade) evaluated by math.pow at the ends of
     [-MAX_DB, MAX_DB], and the documented rejection just beyond them (the next float out),
     whose message names the parameter as the caller spells it."""
