@@ -619,20 +619,17 @@ def check_argument(name: str, value: Any, kind: str, *, allow_inf: bool = False)
         if value != value or (not allow_inf and value in (math.inf, -math.inf)):
             raise ValueError(f"{name} must be finite (no NaN or infinity), got {value!r}")
         return
-    if type(value) is np.ndarray and value.dtype.kind == "f":  # the common case, checked at once
-        if not (np.isfinite(value).all() if not allow_inf else not np.isnan(value).any()):
-            what = "NaN" if allow_inf else "NaN or infinity"
-            raise ValueError(f"{name} must be finite (no {what})")
-        return
-    # array: anything numpy turns into a numeric array
-    if isinstance(value, str | bytes) or value is None:
-        raise TypeError(f"{name} must be a number or an array of numbers, got {value!r}")
-    try:
-        arr = np.asarray(value)
-    except ValueError as exc:  # ragged nested sequences
-        raise ValueError(f"{name} must be a rectangular array of numbers ({exc})") from None
-    if arr.dtype.kind not in "biufc":
-        raise TypeError(f"{name} must be a number or an array of numbers, got dtype {arr.dtype}")
+    if type(value) is np.ndarray and value.dtype.kind == "f":  # the common case: no conversion
+        arr = value
+    else:  # array: anything numpy turns into a numeric array
+        if isinstance(value, str | bytes) or value is None:
+            raise TypeError(f"{name} must be a number or an array of numbers, got {value!r}")
+        try:
+            arr = np.asarray(value)
+        except ValueError as exc:  # ragged nested sequences
+            raise ValueError(f"{name} must be a rectangular array of numbers ({exc})") from None
+        if arr.dtype.kind not in "biufc":
+            raise TypeError(f"{name} must be a number or an array of numbers, got dtype {arr.dtype}")
     if arr.dtype.kind in "fc":
         ok = np.isfinite(arr) if not allow_inf else ~np.isnan(arr)
         if not ok.all():

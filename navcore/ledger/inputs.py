@@ -55,6 +55,8 @@ from collections.abc import Callable, Hashable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Literal, TypeVar
 
+from navcore._validate import ModelDomainError
+
 __all__ = [
     "NOMINAL_LABEL",
     "OTHER_LABEL",
@@ -926,8 +928,6 @@ def for_each_band_run(key: Hashable, fn: Callable[[], T]) -> list[tuple[Reads, T
     >>> first, again
     ([1500000000.0, 2000000000.0], [])
     """
-    from navcore._validate import ModelDomainError
-
     outer, runs, taken = _BAND_AHEAD.get()
     if key in taken:
         return []
