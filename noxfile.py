@@ -407,8 +407,9 @@ def layout(session: nox.Session) -> None:
     in ``tools/layout_allowlist.json`` with its reason; an entry that no longer
     overflows fails too, so the list only shrinks. Builds the HTML book first (from the
     execution cache) unless ``_build/html`` exists; ``-- --list`` prints every overflow,
-    ``-- --width 420`` measures one width. Needs Chromium (installed with apt-get when run as
-    root) and about five minutes: a developer's session, ``.ci/run`` does not run it.
+    ``-- --width 420`` measures one width, ``-- --tabs N`` sets how many pages load at once.
+    Needs Chromium (installed with apt-get when run as root) and about two minutes on two
+    busy cores (26 s of CPU): a developer's session, ``.ci/run`` does not run it.
     """
     _install(session)
     if not (HTML / "index.html").exists():
