@@ -2420,3 +2420,169 @@ def atc10_30_fit_worst_pct() -> float:
             for c in paper.COLUMNS
         )
     )
+
+
+# --- KZL Sec. 1-2: the requirements page's simple models ---------------------------------------
+
+
+@register(
+    "kzl00-overlap-s",
+    "kzl/00-requirements",
+    "time the satellite's footprint stays within the receiver's footprint (s)",
+)
+def kzl00_overlap_s() -> float:
+    """Receiver footprint over the speed of the satellite's ground track relative to the aircraft
+    (KZL Sec. 1, circular orbit, the assumed footprint), in seconds."""
+    from navcore.papers import kzl_coverage
+
+    return float(kzl_coverage.footprint_overlap_s())
+
+
+@register(
+    "kzl00-pointing-shift-m",
+    "kzl/00-requirements",
+    "footprint shift of the 0.5 deg pointing error at the slant range (m)",
+)
+def kzl00_pointing_shift_m() -> float:
+    """Shift of the footprint that KZL's acceptable pointing error (Sec. 1) gives at the slant
+    range of the Table 1 height and the assumed look angle, in metres."""
+    from navcore.papers import kzl_coverage
+
+    return float(kzl_coverage.pointing_shift_m())
+
+
+@register(
+    "kzl00-baseline-arcsec",
+    "kzl/00-requirements",
+    "baseline tilt error that gives 1 m of InSAR height error (arcsec)",
+)
+def kzl00_baseline_arcsec() -> float:
+    """Baseline tilt error giving 1 m of height error in the assumed TerraSAR-X geometry, arcsec."""
+    from navcore.papers import kzl_coverage
+
+    return float(kzl_coverage.baseline_angle_arcsec())
+
+
+@register(
+    "kzl00-baseline-mm",
+    "kzl/00-requirements",
+    "baseline length error that gives 1 m of InSAR height error (mm)",
+)
+def kzl00_baseline_mm() -> float:
+    """Baseline length error giving 1 m of height error in the assumed TerraSAR-X geometry, mm."""
+    from navcore.papers import kzl_coverage
+
+    return float(kzl_coverage.baseline_length_mm())
+
+
+@register(
+    "kzl00-correlation-10s",
+    "kzl/00-requirements",
+    "correlation of a first-order receiver filter's output 10 s apart",
+)
+def kzl00_correlation_10s() -> float:
+    """Correlation of the assumed first-order receiver filter's output 10 s apart (KZL Sec. 2.2)."""
+    from navcore.papers import kzl_coverage
+
+    return float(kzl_coverage.correlation_after_10s())
+
+
+# --- KZL Sec. 2: the mechanization and error-model pages ----------------------------------------
+
+
+@register(
+    "kzl01-printed-roll-deg",
+    "kzl/01-mechanization",
+    "roll of a level IMU by Eq. (3) as printed, two-argument arctangent (deg)",
+)
+def kzl01_printed_roll_deg() -> float:
+    """Roll that KZL's Eq. (3) as printed (``arctan_2(a_y, a_z)``) gives a level IMU at rest, whose
+    specific force is [0, 0, -g] in NED body axes, in degrees."""
+    import numpy as np
+
+    from navcore.inertial.alignment import levelling_as_printed
+    from navcore.units import G0
+
+    roll, _ = levelling_as_printed(np.array([0.0, 0.0, -G0]))
+    return float(np.degrees(roll))
+
+
+@register(
+    "kzl01-first-order-low-pct-{T}s",
+    "kzl/01-mechanization",
+    "how much lower the 180 s north-position sigma is with I + FT than with the exact transition (%)",
+)
+def kzl01_first_order_low_pct(T: str) -> float:
+    """How much lower (%) the stand-alone north-position sigma at the end of the 180 s Table 1
+    flight is with KZL's first-order transition (Eq. (6)) than with the exact one, step ``T`` s."""
+    from navcore.papers.kzl_models import discretisation_comparison
+
+    d = discretisation_comparison(float(T))
+    return float(100 * (1 - d["pos_first_order_m"] / d["pos_exact_m"]))
+
+
+@register(
+    "kzl01-neglected-rates-deg-h",
+    "kzl/01-mechanization",
+    "navigation-frame rate the simplified mechanization drops, Table 1 flight (deg/h)",
+)
+def kzl01_neglected_rates_deg_h() -> float:
+    """|Earth rate + transport rate| of the Table 1 flight, dropped by KZL's Eq. (9), deg/h."""
+    from navcore.papers.kzl_models import neglected_rates_deg_per_h
+
+    return float(neglected_rates_deg_per_h())
+
+
+@register(
+    "kzl01-neglected-coriolis-micro-g",
+    "kzl/01-mechanization",
+    "Coriolis and transport acceleration the simplified mechanization drops, Table 1 flight (micro-g)",
+)
+def kzl01_neglected_coriolis_micro_g() -> float:
+    """|(2 omega_ie + omega_en) x v| of the Table 1 flight, dropped by KZL's Eq. (8), micro-g."""
+    from navcore.papers.kzl_models import neglected_coriolis_micro_g
+
+    return float(neglected_coriolis_micro_g())
+
+
+@register(
+    "kzl02-rank-code-delta-range",
+    "kzl/02-error-model",
+    "observability rank with code and delta range only, eight satellites",
+)
+def kzl_rank_code_delta_range() -> int:
+    """Rank of the observability matrix of KZL's error model in the Table 1 flight with the code
+    and delta-range rows of Eq. (13) only, the largest over one to eight satellites."""
+    from navcore.papers.kzl_models import observability_ranks
+
+    return int(max(observability_ranks()["tc"].values()))
+
+
+@register(
+    "kzl03-rank-code-delta-range",
+    "kzl/03-simulation",
+    "observability rank with code and delta range only, eight satellites",
+)
+def kzl03_rank_code_delta_range_8() -> int:
+    """Rank of the observability matrix of KZL's error model in the Table 1 flight with the code
+    and delta-range rows of Eq. (13) only, eight satellites."""
+    from navcore.papers.kzl_models import observability_ranks
+
+    return int(observability_ranks()["tc"][8])
+
+
+@register(
+    "kzl02-full-rank-from-nu",
+    "kzl/02-error-model",
+    "satellites needed for full observability with attitude or DD rows (the larger of the two)",
+)
+def kzl02_full_rank_from_nu() -> int:
+    """Fewest satellites that make every state of KZL's error model observable, with the attitude
+    rows of Eq. (13) or the double differences of Eq. (17); the larger of the two counts."""
+    from navcore.inertial.error_model17 import ERROR_LAYOUT_17
+    from navcore.papers.kzl_models import observability_ranks
+
+    ranks = observability_ranks()
+    return int(
+        max(min(nu for nu, r in ranks[m].items() if r == ERROR_LAYOUT_17.size) for m in ("tc_att", "tc_dd"))
+    )

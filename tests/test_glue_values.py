@@ -133,6 +133,200 @@ def _kzl_rows(n: int) -> int:
     return 2 + (n - 1) * 4
 
 
+# --- KZL Sec. 1-2 ------------------------------------------------------------------------------
+_OMEGA_E = 7.292115e-5  # WGS-84 Earth rotation rate, rad/s (defined)
+_WGS84_F = 1 / 298.257223563  # WGS-84 flattening (defined)
+_ARCSEC_PER_RAD = 180 * 3600 / math.pi
+
+
+def _kzl_in(module: str) -> Any:
+    import importlib
+
+    return importlib.import_module(f"navcore.papers.{module}").IN
+
+
+def _kzl00_overlap_s() -> float:
+    """Kepler oracle: the satellite's angular rate sqrt(GM / r^3) times the Earth's radius is its
+    ground-track speed; the footprint over that speed less the aircraft's."""
+    m, c = _kzl_in("kzl_models"), _kzl_in("kzl_coverage")
+    r = m.earth_radius_m + m.terrasar_altitude_km * 1e3
+    ground = math.sqrt(m.gm_m3_s2 / r**3) * m.earth_radius_m
+    return c.receiver_footprint_km * 1e3 / (ground - m.aircraft_speed_mps)
+
+
+def _kzl00_pointing_shift_m() -> float:
+    """Vector oracle: the beam at the look angle from the Table 1 height, turned by the pointing
+    error about the along-track axis (scipy's Rotation), meets the plane normal to the original
+    beam at the slant range; the distance between the two points there."""
+    from scipy.spatial.transform import Rotation
+
+    m, c, s = _kzl_in("kzl_models"), _kzl_in("kzl_coverage"), _kzl_in("kzl_scenario")
+    look = math.radians(c.look_angle_deg)
+    beam = np.array([0.0, math.sin(look), -math.cos(look)])  # x along track, z up
+    slant = s.height_m / math.cos(look)
+    turned = Rotation.from_euler("x", m.pointing_error_deg, degrees=True).apply(beam)
+    hit = turned * slant / float(turned @ beam)  # on the plane {x : x . beam = slant}
+    return float(np.linalg.norm(hit - slant * beam))
+
+
+def _kzl00_baseline_arcsec() -> float:
+    """InSAR oracle: height h = H - R cos(theta) with R sin(theta) fixed by the baseline tilt, so a
+    tilt d alpha moves the height by R sin(theta) d alpha (differentiated numerically here by a
+    central difference of the flat-earth geometry); the tilt giving 1 m, in arcsec."""
+    m, c = _kzl_in("kzl_models"), _kzl_in("kzl_coverage")
+    H, th = m.terrasar_altitude_km * 1e3, math.radians(c.look_angle_deg)
+    R = H / math.cos(th)
+
+    def height(theta: float) -> float:
+        return H - R * math.cos(theta)
+
+    eps = 1e-6
+    dh_dtheta = (height(th + eps) - height(th - eps)) / (2 * eps)
+    return _ARCSEC_PER_RAD / dh_dtheta
+
+
+def _kzl00_baseline_mm() -> float:
+    """InSAR oracle: the interferometric phase of a perpendicular baseline B sees a height change
+    dh as a look-angle change dh / (R sin theta), and a baseline length error dB as dB / (B tan
+    theta); equal for 1 m: dB = B / (R sin theta tan theta), flat earth, in mm."""
+    m, c = _kzl_in("kzl_models"), _kzl_in("kzl_coverage")
+    th = math.radians(c.look_angle_deg)
+    R = m.terrasar_altitude_km * 1e3 / math.cos(th)
+    return 1e3 * c.perp_baseline_m / (R * math.sin(th) * math.tan(th))
+
+
+def _kzl00_correlation_10s() -> float:
+    """Quadrature oracle: the normalised autocorrelation of white noise through the impulse
+    response exp(-t / tau), integral of h(t) h(t + 10) over that of h^2 (scipy quad)."""
+    tau = _kzl_in("kzl_coverage").receiver_filter_tau_s
+    num = integrate.quad(lambda t: math.exp(-t / tau) * math.exp(-(t + 10.0) / tau), 0, math.inf)[0]
+    den = integrate.quad(lambda t: math.exp(-2 * t / tau), 0, math.inf)[0]
+    return num / den
+
+
+def _kzl_frame_rates(lat_deg: float, h: float, v_east: float) -> tuple[np.ndarray, np.ndarray]:
+    """Earth rate and transport rate in NED for an eastward velocity: Omega (cos L, 0, -sin L) and
+    v_e / (N + h) (1, 0, -tan L), N the WGS-84 prime-vertical radius (Titterton & Weston
+    Eq. 3.61)."""
+    L = math.radians(lat_deg)
+    e2 = _WGS84_F * (2 - _WGS84_F)
+    N = _WGS84_A / math.sqrt(1 - e2 * math.sin(L) ** 2)
+    earth = _OMEGA_E * np.array([math.cos(L), 0.0, -math.sin(L)])
+    return earth, v_east / (N + h) * np.array([1.0, 0.0, -math.tan(L)])
+
+
+def _kzl01_neglected_rates_deg_h() -> float:
+    s = _kzl_in("kzl_scenario")
+    wie, wen = _kzl_frame_rates(s.lat_deg, s.height_m, s.velocity_east_mps)
+    return float(np.linalg.norm(wie + wen)) * 180 / math.pi * 3600
+
+
+def _kzl01_neglected_coriolis_micro_g() -> float:
+    s = _kzl_in("kzl_scenario")
+    wie, wen = _kzl_frame_rates(s.lat_deg, s.height_m, s.velocity_east_mps)
+    v = np.array([0.0, s.velocity_east_mps, 0.0])
+    return float(np.linalg.norm(np.cross(2 * wie + wen, v))) / (1e-6 * _G0)
+
+
+@functools.cache
+def _kzl01_first_order(T: float) -> float:
+    """Riccati oracle: the exact covariance as the solution of P' = F P + P F^T + G Q G^T over the
+    180 s (scipy solve_ivp, rtol 1e-11), against the printed first-order recursion of Eq. (6),
+    P <- (I + F T) P (I + F T)^T + G Q G^T T, written out here; F, G Q G^T and P0 are the model's
+    (the model under test is the discretisation)."""
+    from navcore.estimation.ekf_ins_gnss import _gqgt, _initial_covariance
+    from navcore.papers.kzl_models import table1_attitude, table1_F, table1_scenario
+
+    F, C = table1_F(), table1_attitude()
+    gqg = _gqgt(table1_scenario())
+    P0 = _initial_covariance(table1_scenario(), C, True)
+    n = F.shape[0]
+
+    def rhs(_t, p):
+        P = p.reshape(n, n)
+        return (F @ P + P @ F.T + gqg).ravel()
+
+    exact = integrate.solve_ivp(rhs, (0, 180.0), P0.ravel(), rtol=1e-11, atol=1e-14, method="DOP853")
+    Pe = exact.y[:, -1].reshape(n, n)
+    A = np.eye(n) + F * T
+    P1 = P0.copy()
+    for _ in range(round(180.0 / T)):
+        P1 = A @ P1 @ A.T + gqg * T
+    return 100 * (1 - math.sqrt(P1[0, 0]) / math.sqrt(Pe[0, 0]))
+
+
+def _exact_rank(rows: list[list[Fraction]]) -> int:
+    """Rank by Gaussian elimination in exact rational arithmetic (no threshold)."""
+    m = [r[:] for r in rows]
+    rank, cols = 0, len(m[0]) if m else 0
+    for c in range(cols):
+        piv = next((i for i in range(rank, len(m)) if m[i][c] != 0), None)
+        if piv is None:
+            continue
+        m[rank], m[piv] = m[piv], m[rank]
+        for i in range(len(m)):
+            if i != rank and m[i][c] != 0:
+                f = m[i][c] / m[rank][c]
+                m[i] = [a - f * b for a, b in zip(m[i], m[rank], strict=True)]
+        rank += 1
+    return rank
+
+
+def _kzl_generic_rank(mode: str, nu: int) -> int:
+    """Observability rank of KZL's Eq. (10) error model, written out here in level flight at the
+    Table 1 heading (Earth rate dropped, as in Eq. (9)): p' = v, v' = -[f x] psi + C b_a,
+    psi' = -C b_g, biases constant, clock bias' = drift; observed by code [-l 1] and delta range
+    [-l 1] (Eq. 13), plus the three attitude angles (``"tc_att"``) or the double differences
+    (l_i - l_1) . (psi x C b) on the two Table 1 baselines (``"tc_dd"``). The lines of sight are
+    rational, drawn at random (seeded): a generic geometry, so this is the rank the model's
+    structure allows; the rank is exact (rational Gaussian elimination)."""
+    from navcore.papers.kzl_scenario import table1_baselines_b
+
+    q = Fraction
+    g = q(_G0)
+    C = [[0, -1, 0], [1, 0, 0], [0, 0, 1]]  # body to NED at heading 90 deg, level
+    n = 17
+    F = [[q(0)] * n for _ in range(n)]
+    for i in range(3):
+        F[i][3 + i] = q(1)  # p' = v
+        for j in range(3):
+            F[3 + i][9 + j] = q(C[i][j])  # v' += C b_a
+            F[6 + i][12 + j] = -q(C[i][j])  # psi' = -C b_g
+    fx = [[0, g, 0], [-g, 0, 0], [0, 0, 0]]  # [f x] for f = (0, 0, -g)
+    for i in range(3):
+        for j in range(3):
+            F[3 + i][6 + j] = -fx[i][j]
+    F[15][16] = q(1)
+    rng = np.random.default_rng(1)
+    los = [[q(int(x), 97) for x in rng.integers(-97, 98, 3)] for _ in range(nu)]
+    H: list[list[Fraction]] = []
+    for l in los:
+        H.append([-a for a in l] + [q(0)] * 12 + [q(1), q(0)])
+        H.append([q(0)] * 3 + [-a for a in l] + [q(0)] * 9 + [q(0), q(1)])
+    if mode == "tc_att":
+        for i in range(3):
+            H.append([q(0)] * 6 + [q(int(i == j)) for j in range(3)] + [q(0)] * 8)
+    elif mode == "tc_dd":
+        for b in table1_baselines_b():
+            cb = [sum(q(C[i][k]) * q(float(b[k])) for k in range(3)) for i in range(3)]
+            for l in los[1:]:
+                d = [l[i] - los[0][i] for i in range(3)]
+                # d . (psi x cb) = psi . (cb x d)
+                row = [cb[1] * d[2] - cb[2] * d[1], cb[2] * d[0] - cb[0] * d[2], cb[0] * d[1] - cb[1] * d[0]]
+                H.append([q(0)] * 6 + row + [q(0)] * 8)
+    blocks, Hk = [], H
+    for _ in range(4):  # F^4 = 0
+        blocks += Hk
+        Hk = [[sum(r[k] * F[k][j] for k in range(n) if r[k] != 0) for j in range(n)] for r in Hk]
+    return _exact_rank(blocks)
+
+
+def _kzl02_full_rank_from_nu() -> int:
+    return max(
+        min(nu for nu in range(1, 9) if _kzl_generic_rank(mode, nu) == 17) for mode in ("tc_att", "tc_dd")
+    )
+
+
 def test_kzl_oracles_are_the_papers_text():
     """The typed-in oracles above are what the transcription prints (where it is beside the
     checkout): "the state vector comprises 17 states" and the (2 + (nu - 1) 4) x 17 matrix."""
@@ -222,6 +416,38 @@ def _kzl_gyro_residual_deg_h() -> float:
 _BARKER13 = np.array([1, 1, 1, 1, 1, -1, -1, 1, 1, -1, 1, -1, 1], float)
 
 ORACLES = [
+    # --- KZL Sec. 1-2 (closed forms of the scenario's inputs in other arithmetic: 1e-9; the
+    # pointing-shift oracle is exact geometry, the function's slant * tan(delta) the same: 1e-9)
+    Oracle("kzl00-overlap-s", _kzl00_overlap_s, rtol=1e-9, why="Kepler ground-track speed"),
+    Oracle("kzl00-pointing-shift-m", _kzl00_pointing_shift_m, rtol=1e-9, why="scipy Rotation of the beam"),
+    # a central difference at 1e-6 rad of a cosine: truncation ~1e-12 relative, rounding ~1e-10
+    Oracle("kzl00-baseline-arcsec", _kzl00_baseline_arcsec, rtol=1e-7, why="central difference of h(theta)"),
+    Oracle("kzl00-baseline-mm", _kzl00_baseline_mm, rtol=1e-9, why="InSAR phase sensitivities"),
+    # scipy quad on smooth exponentials: 1e-10 relative at least
+    Oracle("kzl00-correlation-10s", _kzl00_correlation_10s, rtol=1e-8, why="quadrature of the impulse response"),
+    Oracle("kzl01-printed-roll-deg", lambda: math.degrees(math.atan2(0.0, -_G0)), rtol=1e-12, why="math.atan2"),
+    # the ODE at rtol 1e-11 gives the exact sigma to ~1e-10 relative, 1e-8 percentage points
+    Oracle(
+        "kzl01-first-order-low-pct-1s",
+        lambda: _kzl01_first_order(1.0),
+        atol=1e-6,
+        why="Riccati ODE (scipy) against Eq. (6) written out",
+    ),
+    Oracle(
+        "kzl01-first-order-low-pct-0.01s",
+        lambda: _kzl01_first_order(0.01),
+        atol=1e-6,
+        why="Riccati ODE (scipy) against Eq. (6) written out",
+    ),
+    # same constants, same closed forms: rounding only
+    Oracle("kzl01-neglected-rates-deg-h", _kzl01_neglected_rates_deg_h, rtol=1e-9, why="Earth + transport rate"),
+    Oracle(
+        "kzl01-neglected-coriolis-micro-g", _kzl01_neglected_coriolis_micro_g, rtol=1e-9, why="Coriolis by hand"
+    ),
+    # exact ranks of a generic geometry: equal counts
+    Oracle("kzl02-rank-code-delta-range", lambda: _kzl_generic_rank("tc", 8), why="exact rank, generic sky"),
+    Oracle("kzl03-rank-code-delta-range", lambda: _kzl_generic_rank("tc", 8), why="exact rank, generic sky"),
+    Oracle("kzl02-full-rank-from-nu", _kzl02_full_rank_from_nu, why="exact rank, generic sky"),
     Oracle("kzl00-schuler-min", _schuler_period_min, rtol=1e-8, why="ODE solved to 1e-12"),
     Oracle("atc10-32-c-ft-per-ns", lambda: sc.c * 1e-9 / sc.foot, rtol=1e-12, why="scipy.constants"),
     Oracle(
