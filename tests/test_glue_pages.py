@@ -302,7 +302,10 @@ def test_pages_glue_through_navcore_book():
         ('glue("x-12", float(obj.cruise_alt_m))', "unchecked"),  # not read through IN
         ('glue("x-13", int(ledger.counts("KZL")["KZL"]["total"]))', "count"),
         ('glue("x-14", len(ledger.errata("KZL")))', "count"),
-        ('glue("x-15", sum(e.status == "reproduced" for e in ledger.evaluations("SP", prefix="SP-t")))', "count"),
+        (
+            'glue("x-15", sum(e.status == "reproduced" for e in ledger.evaluations("SP", prefix="T")))',
+            "count",
+        ),
         ('glue("x-16", int(n["total"]))', "unchecked"),  # a count kept in a variable
         ('glue("x-17", len(other.errata("KZL")))', "unchecked"),  # not the ledger's
         ('glue("kzl00-schuler-min", 84.45)', "registered"),

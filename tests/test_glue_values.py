@@ -424,8 +424,12 @@ ORACLES = [
     Oracle("kzl00-baseline-arcsec", _kzl00_baseline_arcsec, rtol=1e-7, why="central difference of h(theta)"),
     Oracle("kzl00-baseline-mm", _kzl00_baseline_mm, rtol=1e-9, why="InSAR phase sensitivities"),
     # scipy quad on smooth exponentials: 1e-10 relative at least
-    Oracle("kzl00-correlation-10s", _kzl00_correlation_10s, rtol=1e-8, why="quadrature of the impulse response"),
-    Oracle("kzl01-printed-roll-deg", lambda: math.degrees(math.atan2(0.0, -_G0)), rtol=1e-12, why="math.atan2"),
+    Oracle(
+        "kzl00-correlation-10s", _kzl00_correlation_10s, rtol=1e-8, why="quadrature of the impulse response"
+    ),
+    Oracle(
+        "kzl01-printed-roll-deg", lambda: math.degrees(math.atan2(0.0, -_G0)), rtol=1e-12, why="math.atan2"
+    ),
     # the ODE at rtol 1e-11 gives the exact sigma to ~1e-10 relative, 1e-8 percentage points
     Oracle(
         "kzl01-first-order-low-pct-1s",
@@ -440,9 +444,14 @@ ORACLES = [
         why="Riccati ODE (scipy) against Eq. (6) written out",
     ),
     # same constants, same closed forms: rounding only
-    Oracle("kzl01-neglected-rates-deg-h", _kzl01_neglected_rates_deg_h, rtol=1e-9, why="Earth + transport rate"),
     Oracle(
-        "kzl01-neglected-coriolis-micro-g", _kzl01_neglected_coriolis_micro_g, rtol=1e-9, why="Coriolis by hand"
+        "kzl01-neglected-rates-deg-h", _kzl01_neglected_rates_deg_h, rtol=1e-9, why="Earth + transport rate"
+    ),
+    Oracle(
+        "kzl01-neglected-coriolis-micro-g",
+        _kzl01_neglected_coriolis_micro_g,
+        rtol=1e-9,
+        why="Coriolis by hand",
     ),
     # exact ranks of a generic geometry: equal counts
     Oracle("kzl02-rank-code-delta-range", lambda: _kzl_generic_rank("tc", 8), why="exact rank, generic sky"),
