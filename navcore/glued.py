@@ -447,6 +447,11 @@ def kzl_dd_phase_sigma_mm() -> float:
 
 
 @register(
+    "kzl90-residual-deg-h",
+    "kzl/90-exercises",
+    "gyro bias left after averaging the angle random walk over the initialisation (deg/h)",
+)
+@register(
     "kzl03-gyro-residual-deg-h",
     "kzl/03-simulation",
     "gyro bias left after averaging the angle random walk over the initialisation (deg/h)",
@@ -2585,4 +2590,374 @@ def kzl02_full_rank_from_nu() -> int:
     ranks = observability_ranks()
     return int(
         max(min(nu for nu, r in ranks[m].items() if r == ERROR_LAYOUT_17.size) for m in ("tc_att", "tc_dd"))
+    )
+
+
+# --- KZL Sec. 3.6: the simulation page (closed forms and the seeded Monte Carlo) ----------------
+
+
+@register(
+    "kzl03-arw-position-km",
+    "kzl/03-simulation",
+    "position error per axis from the angle random walk, 180 s (km)",
+)
+def kzl03_arw_position_km() -> float:
+    """Stand-alone position error per horizontal axis that the Table 1 angle random walk N gives
+    after the 180 s flight, g N sqrt(t^5 / 20), in km."""
+    from navcore.papers.kzl_scenario import IN, kzl_imu
+    from navcore.units import G0
+
+    t = IN.duration_s
+    return float(G0 * kzl_imu().gyro_random_walk * math.sqrt(t**5 / 20) / 1e3)
+
+
+@register("kzl03-bias-heading-deg", "kzl/03-simulation", "heading error from the raw gyro bias, 180 s (deg)")
+@register("kzl90-bias-term-raw-deg", "kzl/90-exercises", "heading error from the raw gyro bias, 180 s (deg)")
+def kzl_bias_heading_deg() -> float:
+    """Heading error that the uncalibrated Table 1 gyro bias b builds over the 180 s flight, b t,
+    in degrees."""
+    from navcore.papers.kzl_scenario import IN, kzl_imu
+
+    return float(math.degrees(kzl_imu().gyro_bias * IN.duration_s))
+
+
+@register("kzl03-seed", "kzl/03-simulation", "seed of the KZL Monte Carlo")
+def kzl03_seed() -> int:
+    """The seed of the KZL Monte Carlo (the date of the paper's flight, 29 October 2006)."""
+    from navcore.papers.kzl_scenario import SEED
+
+    return int(SEED)
+
+
+def _kzl_runs(mode: str, initialise: bool = True) -> Any:
+    from navcore.papers.kzl_scenario import monte_carlo
+
+    return monte_carlo(mode, initialise)
+
+
+def _kzl_segment_mean(mode: str, col: int, counts: tuple[int, ...]) -> float:
+    """Time average of a configuration's attitude RMS over the runs (deg), over the epochs of the
+    segments with ``counts`` satellites (the first epoch, the initial state, left out)."""
+    import numpy as np
+
+    from navcore.papers.kzl_simulation import seg
+    from navcore.units import DEG
+
+    segments = seg()
+    a = _kzl_runs(mode).rms("att_err") / DEG
+    return float(np.concatenate([a[segments[n], col] for n in counts]).mean())
+
+
+@register(
+    "kzl03-share-beyond-20deg",
+    "kzl/03-simulation",
+    "share of the uninitialised stand-alone runs whose heading error ends beyond 20 deg",
+)
+def kzl03_share_beyond_20deg() -> float:
+    """Share of the Monte Carlo runs of the stand-alone INS without initialisation whose heading
+    error exceeds 20 deg at the end of the 180 s flight (KZL Sec. 3.6)."""
+    import numpy as np
+
+    from navcore.units import DEG
+
+    return float(np.mean(np.abs(_kzl_runs("ins", False).att_err[:, -1, 2]) > 20 * DEG))
+
+
+@register(
+    "kzl03-raw-heading-closed-deg",
+    "kzl/03-simulation",
+    "1-sigma heading error of the uncalibrated stand-alone gyro after 180 s, closed form (deg)",
+)
+@register(
+    "kzl90-heading-uncalibrated-deg",
+    "kzl/90-exercises",
+    "1-sigma heading error of the uncalibrated stand-alone gyro after 180 s, closed form (deg)",
+)
+def kzl_heading_closed_uncalibrated_deg() -> float:
+    """sqrt((b t)^2 + N^2 t + sigma0^2) at t = 180 s with the raw Table 1 gyro bias, in degrees."""
+    from navcore.papers.kzl_simulation import heading_closed_form_deg
+
+    return float(heading_closed_form_deg(180.0, calibrated=False))
+
+
+@register(
+    "kzl90-heading-calibrated-deg",
+    "kzl/90-exercises",
+    "1-sigma heading error of the calibrated stand-alone gyro after 180 s, closed form (deg)",
+)
+def kzl_heading_closed_calibrated_deg() -> float:
+    """sqrt((b' t)^2 + N^2 t + sigma0^2) at t = 180 s with the calibration residual
+    b' = N / sqrt(T_init) for the gyro bias, in degrees."""
+    from navcore.papers.kzl_simulation import heading_closed_form_deg
+
+    return float(heading_closed_form_deg(180.0, calibrated=True))
+
+
+@register(
+    "kzl03-bias-for-20deg-deg-h",
+    "kzl/03-simulation",
+    "gyro bias that alone turns the heading 20 deg over the flight (deg/h)",
+)
+def kzl03_bias_for_20deg_deg_h() -> float:
+    """Constant gyro bias that alone builds a 20 deg heading error over the 180 s flight, deg/h."""
+    from navcore.papers.kzl_simulation import t_end
+
+    return float(20.0 / (t_end() / 3600.0))
+
+
+@register(
+    "kzl03-raw-att-min-deg",
+    "kzl/03-simulation",
+    "smallest of the three attitude RMS errors of the uninitialised stand-alone runs at 180 s (deg)",
+)
+def kzl03_raw_att_min_deg() -> float:
+    """Smallest over roll, pitch and heading of the RMS over runs of the uninitialised stand-alone
+    INS's attitude error at the end of the flight, deg."""
+    from navcore.papers.kzl_simulation import t_end
+    from navcore.units import DEG
+
+    return float((_kzl_runs("ins", False).rms("att_err")[t_end()] / DEG).min())
+
+
+@register(
+    "kzl03-raw-att-max-deg",
+    "kzl/03-simulation",
+    "largest of the three attitude RMS errors of the uninitialised stand-alone runs at 180 s (deg)",
+)
+def kzl03_raw_att_max_deg() -> float:
+    """Largest over roll, pitch and heading of the RMS over runs of the uninitialised stand-alone
+    INS's attitude error at the end of the flight, deg."""
+    from navcore.papers.kzl_simulation import t_end
+    from navcore.units import DEG
+
+    return float((_kzl_runs("ins", False).rms("att_err")[t_end()] / DEG).max())
+
+
+@register(
+    "kzl03-tc-{axis}-gain",
+    "kzl/03-simulation",
+    "time-averaged attitude RMS of the stand-alone INS over that of the TC filter, one axis",
+)
+def kzl03_tc_gain(axis: str) -> float:
+    """Ratio of the time-averaged RMS error of the initialised stand-alone INS to that of the
+    tightly coupled filter (code and delta range), in roll or pitch, over the whole flight."""
+    from navcore.papers.kzl_simulation import seg
+
+    col = {"roll": 0, "pitch": 1}[axis]
+    every = tuple(seg())
+    return _kzl_segment_mean("ins", col, every) / _kzl_segment_mean("tc", col, every)
+
+
+@register(
+    "kzl03-att-heading-many-deg",
+    "kzl/03-simulation",
+    "time-averaged heading RMS of TC with attitude rows, segments with 4 or more satellites (deg)",
+)
+def kzl03_att_heading_many_deg() -> float:
+    """Time-averaged heading RMS of the filter with attitude rows over the segments with 8, 4 and
+    5 satellites, deg."""
+    return _kzl_segment_mean("tc_att", 2, (8, 4, 5))
+
+
+@register(
+    "kzl03-att-heading-growth",
+    "kzl/03-simulation",
+    "heading RMS of TC with attitude rows, 2-3 satellites over 4 or more (ratio)",
+)
+def kzl03_att_heading_growth() -> float:
+    """Time-averaged heading RMS of the filter with attitude rows over the 3- and 2-satellite
+    segments, over that over the segments with 8, 4 and 5 satellites."""
+    return _kzl_segment_mean("tc_att", 2, (3, 2)) / _kzl_segment_mean("tc_att", 2, (8, 4, 5))
+
+
+@register(
+    "kzl03-{mode}-heading-{n}sat-deg",
+    "kzl/03-simulation",
+    "time-averaged heading RMS of a TC filter over the segment with n satellites (deg)",
+)
+def kzl03_heading_segment_deg(mode: str, n: str) -> float:
+    """Time-averaged heading RMS of the filter with attitude rows (``mode="att"``) or with double
+    differences (``"dd"``) over the segment with ``n`` satellites, deg."""
+    return _kzl_segment_mean({"att": "tc_att", "dd": "tc_dd"}[mode], 2, (int(n),))
+
+
+@register(
+    "kzl03-tc-{quantity}-{where}-{n}sat-{unit}",
+    "kzl/03-simulation",
+    "horizontal RMS error of the TC filter at the end of a satellite segment",
+)
+def kzl03_tc_horizontal(quantity: str, where: str, n: str, unit: str) -> float:
+    """Horizontal (north-east norm) RMS over runs of the tightly coupled filter's position (m) or
+    velocity (m/s) error at the last epoch of the segment with ``n`` satellites (``where="end"``)
+    or of the segment before it (``"start"``)."""
+    from navcore.papers.kzl_simulation import seg
+
+    segments = seg()
+    counts = list(segments)
+    k = counts.index(int(n)) - (1 if where == "start" else 0)
+    epoch = segments[counts[k]].stop - 1
+    name = {"pos": "pos_err", "vel": "vel_err"}[quantity]
+    return float(_kzl_runs("tc").horizontal_rms(name)[epoch])
+
+
+@register(
+    "kzl03-candidates-2m",
+    "kzl/03-simulation",
+    "integer candidates per double difference on a 2 m baseline, 2 B / lambda + 1",
+)
+def kzl03_candidates_2m() -> float:
+    """Integer candidates per double difference of the Table 1 2 m baseline, 2 B / lambda + 1."""
+    from navcore.papers.kzl_coverage import baseline_tradeoff
+
+    return float(baseline_tradeoff()["2 m"][0])
+
+
+@register(
+    "kzl03-tilt-2m-mrad",
+    "kzl/03-simulation",
+    "baseline tilt from a 0.01-cycle phase error on a 2 m baseline (mrad)",
+)
+def kzl03_tilt_2m_mrad() -> float:
+    """Tilt of the Table 1 2 m baseline from a 0.01-cycle phase error, 0.01 lambda / B, mrad."""
+    from navcore.papers.kzl_coverage import baseline_tradeoff
+
+    return float(baseline_tradeoff()["2 m"][1])
+
+
+# --- KZL: the summary and the exercises ---------------------------------------------------------
+
+
+@register(
+    "kzl89-qcorr-residual-deg",
+    "kzl/89-summary",
+    "attitude error left by the printed right-hand quaternion correction (deg)",
+)
+def kzl89_qcorr_residual_deg() -> float:
+    """Attitude error (deg) that the printed right-hand correction of KZL Sec. 3.5 leaves of the
+    test error at the Table 1 attitude."""
+    from navcore.papers import kzl_models
+
+    return float(kzl_models.printed_correction_residual_deg())
+
+
+@register("kzl89-qcorr-error-deg", "kzl/89-summary", "size of the test attitude error (deg)")
+def kzl89_qcorr_error_deg() -> float:
+    """Rotation angle of the test attitude error of the quaternion-correction check, in degrees."""
+    import numpy as np
+
+    from navcore.papers.kzl_models import QCORR_DPSI
+
+    return float(np.degrees(np.linalg.norm(QCORR_DPSI)))
+
+
+@register(
+    "kzl89-dd-printed-rank", "kzl/89-summary", "rank of the two DD attitude rows of Eq. (17) as printed"
+)
+def kzl89_dd_printed_rank() -> int:
+    """Rank of the two double-difference attitude rows of KZL Eq. (17) as printed (both with the
+    baseline l_02), Table 1 sky."""
+    from navcore.papers import kzl_coverage
+
+    return int(kzl_coverage.eq17_printed_rank())
+
+
+@register("kzl89-dd-rank", "kzl/89-summary", "rank of the two DD attitude rows of Eq. (17), corrected")
+def kzl89_dd_rank() -> int:
+    """Rank of the two double-difference attitude rows of KZL Eq. (17) with l_01 and l_02."""
+    from navcore.papers import kzl_coverage
+
+    return int(kzl_coverage.eq17_corrected_rank())
+
+
+@register(
+    "kzl89-heading-removed",
+    "kzl/89-summary",
+    "fraction of the stand-alone time-averaged heading RMS the TC filter removes",
+)
+def kzl89_heading_removed() -> float:
+    """Fraction of the initialised stand-alone INS's time-averaged heading RMS that the tightly
+    coupled filter (code and delta range) removes, Monte Carlo."""
+    from navcore.papers import kzl_simulation
+
+    return float(kzl_simulation.tc_heading_improvement_mc())
+
+
+@register(
+    "kzl89-attitude-removed",
+    "kzl/89-summary",
+    "fraction of the stand-alone time-averaged attitude error the TC filter removes",
+)
+def kzl89_attitude_removed() -> float:
+    """Fraction of the initialised stand-alone INS's time-averaged attitude error (root sum square
+    of the three angles' RMS) that the tightly coupled filter removes, Monte Carlo."""
+    from navcore.papers import kzl_simulation
+
+    return float(kzl_simulation.tc_attitude_improvement_mc())
+
+
+def _kzl_gyro_residual_deg_per_s() -> float:
+    from navcore.papers.kzl_scenario import IN, kzl_imu
+    from navcore.units import DEG
+
+    return float(kzl_imu().gyro_random_walk / math.sqrt(IN.init_time_s) / DEG)
+
+
+@register(
+    "kzl90-bias-term-calibrated-deg",
+    "kzl/90-exercises",
+    "heading error from the calibration residual of the gyro bias, 180 s (deg)",
+)
+def kzl90_bias_term_calibrated_deg() -> float:
+    """Heading error that the gyro-bias residual N / sqrt(T_init) builds over the 180 s, deg."""
+    from navcore.papers.kzl_scenario import IN
+
+    return _kzl_gyro_residual_deg_per_s() * IN.duration_s
+
+
+def _kzl_heading_floor_deg() -> float:
+    """The heading error no calibration removes after 180 s: sqrt(N^2 t + sigma0^2), deg."""
+    from navcore.papers.kzl_scenario import IN, kzl_imu
+    from navcore.units import DEG
+
+    n_deg = kzl_imu().gyro_random_walk / DEG
+    return float(math.sqrt(n_deg**2 * IN.duration_s + IN.crab_angle_deg**2))
+
+
+@register(
+    "kzl90-floor-deg",
+    "kzl/90-exercises",
+    "heading error after 180 s that no calibration removes (random walk and initial heading, deg)",
+)
+def kzl90_floor_deg() -> float:
+    """sqrt(N^2 t + sigma0^2) at t = 180 s: the angle random walk and the initial heading error."""
+    return _kzl_heading_floor_deg()
+
+
+@register(
+    "kzl90-crossover-s",
+    "kzl/90-exercises",
+    "averaging time at which the calibration residual's heading term equals the floor (s)",
+)
+def kzl90_crossover_s() -> float:
+    """Averaging time T at which (N / sqrt(T)) t equals the floor after t = 180 s, in seconds."""
+    from navcore.papers.kzl_scenario import IN, kzl_imu
+    from navcore.units import DEG
+
+    n_deg = kzl_imu().gyro_random_walk / DEG
+    return float((n_deg * IN.duration_s / _kzl_heading_floor_deg()) ** 2)
+
+
+@register(
+    "kzl90-gain-300-1200-deg",
+    "kzl/90-exercises",
+    "heading error after 180 s, 300 s of calibration less 1200 s, covariance analysis (deg)",
+)
+def kzl90_gain_300_1200_deg() -> float:
+    """How much lower the covariance analysis' heading 1-sigma after 180 s is with 1200 s of
+    calibration at rest than with 300 s, deg."""
+    from navcore.papers import kzl_covariance as kc
+
+    return float(
+        kc.standalone_sigma("misalignment", True, 300.0)[2]
+        - kc.standalone_sigma("misalignment", True, 1200.0)[2]
     )
