@@ -2961,3 +2961,231 @@ def kzl90_gain_300_1200_deg() -> float:
         kc.standalone_sigma("misalignment", True, 300.0)[2]
         - kc.standalone_sigma("misalignment", True, 1200.0)[2]
     )
+
+
+# --- SP Sec. 2.5: the tracking loop -------------------------------------------------------------
+
+
+@register(
+    "sp02-lam-fit", "sp/02-tracking-loop", "wavelength that gives Fig. 2.1's 90 deg peak at 17.67 rad/s (m)"
+)
+def sp02_lam_fit() -> float:
+    """Metres per cycle that make the 6-g step peak at exactly 90 deg in the third-order loop at
+    Fig. 2.1's natural frequency (SP Sec. 2.5)."""
+    from navcore.gnss.tracking import wavelength_for_peak_error
+    from navcore.papers import sp_tracking as spt
+    from navcore.units import G0
+
+    return float(wavelength_for_peak_error(spt.IN.step_g * G0, spt.IN.omega0_fig21, spt.IN.peak_limit_deg))
+
+
+@register(
+    "sp02-l1-peak", "sp/02-tracking-loop", "peak phase error of the 6-g step with the L1 wavelength (deg)"
+)
+def sp02_l1_peak() -> float:
+    """Peak phase error of the 6-g step at Fig. 2.1's natural frequency with the L1 carrier's
+    wavelength as the conversion, deg."""
+    from navcore.papers import sp_tracking as spt
+    from navcore.units import GPS_L1_WAVELENGTH_M
+
+    return float(spt.peak_deg(GPS_L1_WAVELENGTH_M))
+
+
+@register("sp02-l1-w0", "sp/02-tracking-loop", "natural frequency that holds the L1 peak at 90 deg (rad/s)")
+def sp02_l1_w0() -> float:
+    """Natural frequency of the third-order loop that holds the 6-g step's peak at 90 deg with the
+    L1 wavelength, rad/s."""
+    from navcore.gnss.tracking import natural_frequency_for_peak_error
+    from navcore.papers import sp_tracking as spt
+    from navcore.units import GPS_L1_WAVELENGTH_M
+
+    return float(
+        natural_frequency_for_peak_error(spt.step_deg_s2(GPS_L1_WAVELENGTH_M), spt.IN.peak_limit_deg)
+    )
+
+
+@register(
+    "sp02-l1-factor", "sp/02-tracking-loop", "L1 natural frequency for 90 deg over the unaided 18 rad/s"
+)
+def sp02_l1_factor() -> float:
+    """The L1 natural frequency for a 90 deg peak over the unaided 18 rad/s that Table 2.6 scales."""
+    from navcore.papers import sp_residual_acceleration as spr
+
+    return sp02_l1_w0() / float(spr.IN.unaided_omega0)
+
+
+@register(
+    "sp02-step-over-jerk", "sp/02-tracking-loop", "peak error of the 6-g step over that of the 10-g/s jerk"
+)
+def sp02_step_over_jerk() -> float:
+    """Peak phase error of the 6-g step over that of the 10 g/s jerk held 0.6 s, Fig. 2.1's loop
+    (the ratio does not depend on the conversion; one foot as the page shows it)."""
+    from navcore.papers import sp_tracking as spt
+    from navcore.units import FT
+
+    return float(spt.peak_deg(FT) / spt.jerk_peak_deg(FT))
+
+
+# --- SP Sec. 2.6: residual acceleration (Table 2.6) ---------------------------------------------
+
+
+@register(
+    "sp03-iso",
+    "sp/03-residual-acceleration",
+    "90 % sphere radius of a 3-D standard normal by quadrature (sigmas)",
+)
+def sp03_iso() -> float:
+    """Radius of the sphere holding 90 % of N(0, I_3), by navcore's quadrature and root finding."""
+    import numpy as np
+
+    from navcore.inertial.residual_acceleration import sphere_radius
+
+    return float(sphere_radius(np.eye(3), 0.9))
+
+
+def _sp03_apriori_ratios() -> list[float]:
+    """Table 2.6 column 2 over the 90 % radius of Table 2.5's a-priori accelerometer scale factor
+    and misalignment, per grade."""
+    from navcore.papers import sp_residual_acceleration as spr
+    from navcore.papers.sp_tables import TABLE_2_5_PRINTED
+
+    sf = TABLE_2_5_PRINTED["accel_scale_factor_ppm"]
+    mis = TABLE_2_5_PRINTED["accel_misalignment_arcsec"]
+    return [spr.col2_ppm(g) / spr.r90_from_apriori_ppm(sf[j], mis[j]) for j, g in enumerate(spr.GRADES)]
+
+
+@register(
+    "sp03-n-above",
+    "sp/03-residual-acceleration",
+    "grades whose Table 2.6 column 2 exceeds the a-priori 90 % radius of Table 2.5",
+)
+def sp03_n_above() -> int:
+    """How many of the four grades print a Table 2.6 column 2 above the 90 % radius that Table
+    2.5's a-priori accelerometer errors give."""
+    return int(sum(r > 1 for r in _sp03_apriori_ratios()))
+
+
+@register("sp03-col2-fall", "sp/03-residual-acceleration", "largest over smallest Table 2.6 column 2 value")
+def sp03_col2_fall() -> float:
+    """How much Table 2.6 column 2 falls from the worst grade to the best (largest over smallest)."""
+    from navcore.papers import sp_residual_acceleration as spr
+
+    col2 = [spr.col2_ppm(g) for g in spr.GRADES]
+    return float(max(col2) / min(col2))
+
+
+@register(
+    "sp03-sf-fall",
+    "sp/03-residual-acceleration",
+    "largest over smallest Table 2.5 accelerometer scale factor",
+)
+def sp03_sf_fall() -> float:
+    """How much Table 2.5's accelerometer scale factor falls from the worst grade to the best."""
+    from navcore.papers.sp_tables import TABLE_2_5_PRINTED
+
+    sf = TABLE_2_5_PRINTED["accel_scale_factor_ppm"]
+    return float(max(sf) / min(sf))
+
+
+# --- SP Sec. 2.5-2.6: acquisition (Table 2.7) and target location -------------------------------
+
+
+def _sp04_search_s(system: str) -> Any:
+    from navcore.papers import sp_acquisition as spa
+
+    return spa.search_times_s(system)
+
+
+@register("sp04-tc10-min-s", "sp/04-acquisition", "shortest Table 2.7 search of the TC 10 nmi/h system (s)")
+def sp04_tc10_min_s() -> float:
+    """Shortest search time over the satellites of Table 2.7's tightly coupled 10 nmi/h row, s."""
+    from navcore.papers import sp_acquisition as spa
+
+    return float(_sp04_search_s(spa.TC10).min())
+
+
+@register("sp04-tc10-max-s", "sp/04-acquisition", "longest Table 2.7 search of the TC 10 nmi/h system (s)")
+def sp04_tc10_max_s() -> float:
+    """Longest search time over the satellites of Table 2.7's tightly coupled 10 nmi/h row, s."""
+    from navcore.papers import sp_acquisition as spa
+
+    return float(_sp04_search_s(spa.TC10).max())
+
+
+@register("sp04-better-max-s", "sp/04-acquisition", "longest Table 2.7 search of the better systems (s)")
+def sp04_better_max_s() -> float:
+    """Longest search time of every Table 2.7 row but the tightly coupled 10 nmi/h one, s."""
+    from navcore.papers import sp_acquisition as spa
+
+    return float(spa.better_max_s())
+
+
+@register(
+    "sp04-tc10-sigma-{which}-m",
+    "sp/04-acquisition",
+    "1-sigma range uncertainty that the TC 10 nmi/h row's intervals imply (m)",
+)
+def sp04_tc10_sigma_m(which: str) -> float:
+    """The 1-sigma range uncertainty of the fewest (``which="min"``) or most (``"max"``) code-phase
+    intervals of Table 2.7's TC 10 nmi/h row: intervals of one cell span +-1 sigma, m."""
+    from navcore.papers import sp_acquisition as spa
+
+    cells = spa.table_2_7(spa.TC10)
+    n = {"min": min, "max": max}[which](cells)
+    return float(n * spa.IN.range_cell_m / 2)
+
+
+@register(
+    "sp05-mis-1pct-mrad",
+    "sp/05-target-location",
+    "heading error that adds 1 % to the 1 nmi/h helicopter's target error (mrad)",
+)
+def sp05_mis_1pct_mrad() -> float:
+    """Heading error at which the pointing error over the target range adds 1 % (root sum square)
+    to the 1 nmi/h helicopter's position error: sqrt(1.01^2 - 1) pos / L, mrad."""
+    from navcore.papers import sp_acquisition as spa
+
+    pos, lever = spa.IN.helicopter_error_1nmi_m, spa.IN.target_range_m
+    return float(1e3 * math.sqrt(1.01**2 - 1) * pos / lever)
+
+
+@register(
+    "sp05-mis-equal-mrad",
+    "sp/05-target-location",
+    "heading error whose pointing error equals the 1 nmi/h helicopter's position error (mrad)",
+)
+def sp05_mis_equal_mrad() -> float:
+    """Heading error whose pointing error over the target range equals the 1 nmi/h helicopter's
+    position error, pos / L, mrad."""
+    from navcore.papers import sp_acquisition as spa
+
+    return float(1e3 * spa.IN.helicopter_error_1nmi_m / spa.IN.target_range_m)
+
+
+# --- SP Sec. 3: deep integration ----------------------------------------------------------------
+
+
+@register(
+    "sp06-q-{kind}",
+    "sp/06-deep-integration",
+    "spectral-separation factor Q of the jammer on the P(Y) code (wide: 20 MHz, narrow: 1 kHz)",
+)
+def sp06_q(kind: str) -> float:
+    """Spectral-separation factor Q = 1 / (R_c kappa) of SP Sec. 3's wideband (``kind="wide"``)
+    or narrowband (``"narrow"``) jammer on the assumed code."""
+    from navcore.papers import sp_antijam as spj
+
+    return float(spj.q_factor({"wide": "wideband", "narrow": "narrowband"}[kind]))
+
+
+@register(
+    "sp06-{arch}-threshold",
+    "sp/06-deep-integration",
+    "effective C/N0 at the stated J/S limit of TC or DI against the wideband jammer (dB-Hz)",
+)
+def sp06_threshold(arch: str) -> float:
+    """Effective C/N0 that the stated J/S limit of the tightly coupled (``arch="tc"``) or deeply
+    integrated (``"di"``) receiver implies against the wideband jammer (SP Sec. 3.0-3.1), dB-Hz."""
+    from navcore.papers import sp_antijam as spj
+
+    return float(spj.threshold_dbhz(arch.upper()))
