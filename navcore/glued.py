@@ -3189,3 +3189,65 @@ def sp06_threshold(arch: str) -> float:
     from navcore.papers import sp_antijam as spj
 
     return float(spj.threshold_dbhz(arch.upper()))
+
+
+# --- SP Sec. 2.6: the inertial error budget (Table 2.4-2.5) -------------------------------------
+
+
+@register(
+    "sp20-clock-offset-us",
+    "sp/20-inertial-errors",
+    "Table 2.4's clock offset, read as metres, in microseconds",
+)
+def sp20_clock_offset_us() -> float:
+    """Table 2.4's initial clock offset, printed '5000 ms' and read as metres, as a time in us."""
+    from navcore.papers import sp_tables as spt
+    from navcore.units import C
+
+    entry = next(e for e in spt.table_2_4().values() if e.name == "clock initial offset")
+    return float(entry.si / C * 1e6)
+
+
+def _sp20_hour_horizontal_covariances() -> list[Any]:
+    """The 1-h horizontal position covariances (m^2) of the Table 2.5 columns, gyrocompass-aligned
+    at the grade latitude, in 10 s steps (as the inertial-errors page computes them)."""
+    import numpy as np
+
+    from navcore.estimation.covariance_analysis import run_covariance_analysis
+    from navcore.inertial.error_dynamics import ErrorSources, gyrocompass_alignment, initial_covariance
+    from navcore.inertial.trajectories import straight_and_level
+    from navcore.papers import sp_missions as spm
+    from navcore.papers import sp_tables as spt
+    from navcore.units import DEG, HOUR
+
+    grades = spt.sp_imu_grades()
+    lay = spm.unaided_layout()
+    lat = spm.IN.grade_latitude_deg * DEG
+    srcs = [ErrorSources(imu=grades[g]) for g in spt.GRADE_LABELS_NMI_PER_H]
+    P0 = [gyrocompass_alignment(initial_covariance(lay, src), lay, lat=lat) for src in srcs]
+    hour = run_covariance_analysis(
+        straight_and_level(HOUR, dt=10.0, lat0=lat),
+        lay,
+        lay,
+        srcs,
+        np.stack(P0),
+        snapshots=(-1,),
+        vertical_channel=False,
+    )
+    return [r.final_true[:2, :2] for r in hour]
+
+
+@register(
+    "sp20-rss-over-cep-max-pct",
+    "sp/20-inertial-errors",
+    "largest excess of the 1-h rss horizontal error over the CEP, Table 2.5 columns (%)",
+)
+def sp20_rss_over_cep_max_pct() -> float:
+    """How much larger (%) the root-sum-square horizontal error is than the CEP after 1 h, the
+    largest over the Table 2.5 columns."""
+    import numpy as np
+
+    from navcore.estimation.covariance_analysis import circular_error_probable
+
+    ratios = [np.sqrt(np.trace(P)) / circular_error_probable(P) for P in _sp20_hour_horizontal_covariances()]
+    return float(100 * (max(ratios) - 1))
