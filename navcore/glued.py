@@ -3234,7 +3234,12 @@ def _sp20_hour_horizontal_covariances() -> list[Any]:
         snapshots=(-1,),
         vertical_channel=False,
     )
-    return [r.final_true[:2, :2] for r in hour]
+    assert isinstance(hour, list)  # one run per stacked initial covariance
+    out = []
+    for r in hour:
+        assert r.final_true is not None  # the snapshot asked for
+        out.append(r.final_true[:2, :2])
+    return out
 
 
 @register(
