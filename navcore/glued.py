@@ -3256,3 +3256,47 @@ def sp20_rss_over_cep_max_pct() -> float:
 
     ratios = [np.sqrt(np.trace(P)) / circular_error_probable(P) for P in _sp20_hour_horizontal_covariances()]
     return float(100 * (max(ratios) - 1))
+
+
+# --- SP Sec. 2.6.2: the jammer flyby --------------------------------------------------------------
+
+
+@register(
+    "sp22-lc-jitter-dbhz",
+    "sp/22-jammer-flyby",
+    "C/N0 where the loosely coupled carrier loop's 3-sigma jitter reaches the phase limit (dB-Hz)",
+)
+def sp22_lc_jitter_dbhz() -> float:
+    """C/N0 at which the thermal jitter rule of thumb puts the first system's (loosely coupled)
+    carrier loop at its phase-error limit, k sigma = limit (SP Sec. 2.5), dB-Hz."""
+    from navcore.gnss.jammer_geometry import pll_jitter_threshold_dbhz
+    from navcore.papers import sp_flyby as fb
+    from navcore.papers import sp_missions_scenarios as sc
+
+    return float(
+        pll_jitter_threshold_dbhz(
+            fb.carrier_loop(sc.SYSTEMS[0]).bandwidth_hz,
+            fb.IN.max_phase_error_deg,
+            fb.IN.jitter_k_sigma,
+            fb.IN.coherent_s,
+        )
+    )
+
+
+@register(
+    "sp22-horizon-km", "sp/22-jammer-flyby", "radio horizon of the cruise altitude, 4/3-Earth radius (km)"
+)
+def sp22_horizon_km() -> float:
+    """Radio horizon sqrt(2 (4/3) R h) of the missions' cruise altitude over a 4/3-radius Earth, km."""
+    from navcore.location.multilateration import EARTH_MEAN_RADIUS_M
+    from navcore.papers import sp_missions_scenarios as sc
+
+    return float(math.sqrt(2 * 4 / 3 * EARTH_MEAN_RADIUS_M * sc.IN.cruise_altitude_m) / 1e3)
+
+
+@register("sp22-range-min-km", "sp/22-jammer-flyby", "closest approach of the flyby to the jammer (km)")
+def sp22_range_min_km() -> float:
+    """Smallest slant range from the aircraft to the jammer over the flyby, km."""
+    from navcore.papers import sp_flyby as fb
+
+    return float(fb.jammer_range_m().min() / 1e3)

@@ -591,6 +591,47 @@ def _sp20_rss_over_cep_max_pct() -> float:
     return 100 * (max(math.sqrt(P[0, 0] + P[1, 1]) / _cep_by_quadrature(P) for P in covs) - 1)
 
 
+# --- SP Sec. 2.6.2: the jammer flyby ------------------------------------------------------------
+_EARTH_MEAN_RADIUS = 6_371_000.0  # m, the round mean radius the flyby's propagation model states
+
+
+def _sp22_lc_jitter_dbhz() -> float:
+    """brentq oracle on the thermal-jitter rule of thumb (Kaplan & Hegarty Sec. 5.6.2),
+    sigma = (180 / pi) sqrt(B_n / x (1 + 1 / (2 T x))) deg, for k sigma = the phase limit."""
+    from navcore.papers import sp_flyby as fb
+    from navcore.papers import sp_missions_scenarios as sc
+
+    bn = fb.carrier_loop(sc.SYSTEMS[0]).bandwidth_hz
+    a = fb.IN
+
+    def excess(db: float) -> float:
+        x = 10 ** (db / 10)
+        sigma = math.degrees(math.sqrt(bn / x * (1 + 1 / (2 * a.coherent_s * x))))
+        return a.jitter_k_sigma * sigma - a.max_phase_error_deg
+
+    return optimize.brentq(excess, 0.0, 60.0, xtol=1e-12)
+
+
+def _sp22_horizon_exact() -> tuple[float, float]:
+    """Tangent distance from height h to a sphere of radius R' = 4/3 R, sqrt((R' + h)^2 - R'^2), km,
+    and the relative size h / (2 R') of the h^2 term the function's sqrt(2 R' h) drops."""
+    h = _sp_in("sp_missions_scenarios").cruise_altitude_m
+    r = 4 / 3 * _EARTH_MEAN_RADIUS
+    return math.sqrt((r + h) ** 2 - r**2) / 1e3, h / (2 * r)
+
+
+def _sp22_range_min_km() -> float:
+    """The jammer abeam the straight cruise at the closest-approach time: hypot(cross-track
+    offset, cruise altitude - jammer height), km."""
+    fb = _sp_in("sp_flyby")
+    return (
+        math.hypot(
+            fb.jammer_offset_km * 1e3, _sp_in("sp_missions_scenarios").cruise_altitude_m - fb.jammer_height_m
+        )
+        / 1e3
+    )
+
+
 def test_kzl_oracles_are_the_papers_text():
     """The typed-in oracles above are what the transcription prints (where it is beside the
     checkout): "the state vector comprises 17 states" and the (2 + (nu - 1) 4) x 17 matrix."""
@@ -680,6 +721,15 @@ def _kzl_gyro_residual_deg_h() -> float:
 _BARKER13 = np.array([1, 1, 1, 1, 1, -1, -1, 1, 1, -1, 1, -1, 1], float)
 
 ORACLES = [
+    # --- SP Sec. 2.6.2 (brentq to 1e-12 dB; the horizon's dropped h^2 term bounds the difference)
+    Oracle("sp22-lc-jitter-dbhz", _sp22_lc_jitter_dbhz, rtol=1e-9, why="brentq on the jitter rule of thumb"),
+    Oracle(
+        "sp22-horizon-km",
+        lambda: _sp22_horizon_exact()[0],
+        band=lambda: _sp22_horizon_exact()[0] * _sp22_horizon_exact()[1],
+        why="exact tangent distance",
+    ),
+    Oracle("sp22-range-min-km", _sp22_range_min_km, rtol=1e-6, why="the jammer abeam, by hand"),
     # --- SP Sec. 2.6 (Table 2.4 as printed, '5000', read as metres; the CEP's quadrature and brentq
     # to 1e-9 relative, 1e-7 percentage points)
     Oracle("sp20-clock-offset-us", lambda: 5000 / _C * 1e6, rtol=1e-12, why="Table 2.4 typed in, over c"),
