@@ -1106,6 +1106,25 @@ def wf05_vel_gain_db() -> float:
     return float(20 * math.log10(_wf05_velocity_rms("navigation") / _wf05_velocity_rms("federated")))
 
 
+def _wf05_horizontal_location_rms(case: str) -> float:
+    """Horizontal emitter-location RMS (m) of the worked example's flights with one aperture velocity."""
+    from navcore.papers import wf_example as ex
+
+    return {row[0]: row[2] for row in ex.summary_rows()}[case]
+
+
+@register(
+    "wf05-loc-nav-over-{other}",
+    "wf/05-end-to-end",
+    "horizontal location RMS with the navigation-only velocity over that with the true or federated one",
+)
+def wf05_loc_nav_over(other: str) -> float:
+    """Horizontal emitter-location RMS of the worked example with the navigation-only aperture
+    velocity over that with the true (``other="true"``) or the federated (``"fed"``) one."""
+    case = {"true": "true", "fed": "federated"}[other]
+    return float(_wf05_horizontal_location_rms("navigation") / _wf05_horizontal_location_rms(case))
+
+
 # --- model values: ATC-10 Section 2, the jamming model's thresholds ---------------------------
 
 

@@ -632,6 +632,15 @@ def _sp22_range_min_km() -> float:
     )
 
 
+def _wf05_location_rms_by_hand(case: str) -> float:
+    """Horizontal location RMS over the seeded flights, from the returned per-flight errors: the
+    root of the mean over flights of north^2 + east^2, written out."""
+    from navcore.papers import wf_example as ex
+
+    e = ex.run()["errors"][case]
+    return math.sqrt(sum(float(e[i, 0]) ** 2 + float(e[i, 1]) ** 2 for i in range(e.shape[0])) / e.shape[0])
+
+
 def test_kzl_oracles_are_the_papers_text():
     """The typed-in oracles above are what the transcription prints (where it is beside the
     checkout): "the state vector comprises 17 states" and the (2 + (nu - 1) 4) x 17 matrix."""
@@ -721,6 +730,20 @@ def _kzl_gyro_residual_deg_h() -> float:
 _BARKER13 = np.array([1, 1, 1, 1, 1, -1, -1, 1, 1, -1, 1, -1, 1], float)
 
 ORACLES = [
+    # the seeded flights' location errors recomputed by hand from the run's arrays (summation
+    # order only: 1e-12)
+    Oracle(
+        "wf05-loc-nav-over-true",
+        lambda: _wf05_location_rms_by_hand("navigation") / _wf05_location_rms_by_hand("true"),
+        rtol=1e-12,
+        why="RMS by hand from the flights' errors",
+    ),
+    Oracle(
+        "wf05-loc-nav-over-fed",
+        lambda: _wf05_location_rms_by_hand("navigation") / _wf05_location_rms_by_hand("federated"),
+        rtol=1e-12,
+        why="RMS by hand from the flights' errors",
+    ),
     # --- SP Sec. 2.6.2 (brentq to 1e-12 dB; the horizon's dropped h^2 term bounds the difference)
     Oracle("sp22-lc-jitter-dbhz", _sp22_lc_jitter_dbhz, rtol=1e-9, why="brentq on the jitter rule of thumb"),
     Oracle(
