@@ -3319,3 +3319,55 @@ def sp22_range_min_km() -> float:
     from navcore.papers import sp_flyby as fb
 
     return float(fb.jammer_range_m().min() / 1e3)
+
+
+# --- ATC-10 Sec. 3.6-3.8: the physical PSK simulation --------------------------------------------
+
+
+def _atc10_psk_samples() -> Any:
+    from navcore.papers import atc10_multiple_access as pm
+
+    return pm.psk_physical_samples()
+
+
+@register(
+    "atc10-20-psk-b",
+    "atc10/20-multiple-access-noise",
+    "second moment b of the simulated PSK amplitudes n_ij given an overlap",
+)
+def atc10_20_psk_b() -> float:
+    """Mean square of the simulated amplitudes of overlapping PSK interferers (ATC-10 Sec. 3.6's b)."""
+    import numpy as np
+
+    return float(np.mean(_atc10_psk_samples() ** 2))
+
+
+@register(
+    "atc10-20-psk-kurtosis",
+    "atc10/20-multiple-access-noise",
+    "kurtosis E[x^4] / b^2 of the simulated PSK amplitudes",
+)
+@register(
+    "atc10-22-psk-kurtosis",
+    "atc10/22-gaussian-comparison",
+    "kurtosis E[x^4] / b^2 of the simulated PSK amplitudes",
+)
+def atc10_psk_kurtosis() -> float:
+    """Fourth moment over the squared second moment of the simulated PSK amplitudes."""
+    import numpy as np
+
+    x = _atc10_psk_samples()
+    return float(np.mean(x**4) / np.mean(x**2) ** 2)
+
+
+@register(
+    "atc10-22-psk-pf-gauss",
+    "atc10/22-gaussian-comparison",
+    "ROC_g false-alarm probability at p_d = 0.9 with the simulated PSK density's power",
+)
+def atc10_22_psk_pf_gauss() -> float:
+    """False-alarm probability of the Gaussian ROC (ATC-10 Eq. (3.8.3)) at p_d = 0.9, with the
+    Theorem 3.1 power of the simulated PSK amplitude density."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(pm.gaussian_best_pf(pm.psk_contour(), 0.9))

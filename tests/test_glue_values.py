@@ -641,6 +641,29 @@ def _wf05_location_rms_by_hand(case: str) -> float:
     return math.sqrt(sum(float(e[i, 0]) ** 2 + float(e[i, 1]) ** 2 for i in range(e.shape[0])) / e.shape[0])
 
 
+# --- ATC-10 Sec. 3.6-3.8: the physical PSK simulation's statistics -------------------------------
+
+
+def _atc10_psk_moments() -> tuple[float, float]:
+    """Second and fourth moments of the simulated amplitudes, as sums written out (einsum)."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    x = np.asarray(pm.psk_physical_samples(), dtype=float)
+    x2 = np.einsum("i,i->", x, x) / x.size
+    x4 = np.einsum("i,i,i,i->", x, x, x, x) / x.size
+    return float(x2), float(x4)
+
+
+def _atc10_psk_pf_gauss() -> float:
+    """ROC_g in Gaussian noise of power P = N q b (Theorem 3.1, q = 2 tau / alpha): p_d = Q((theta -
+    1) / sqrt(P)) fixes theta at p_d = 0.9, and p_f = Q(theta / sqrt(P)) (scipy's normal)."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    P = pm.IN.n_sec36 * 2 * pm.IN.tau_over_alpha_sec36 * _atc10_psk_moments()[0]
+    theta = 1 + math.sqrt(P) * stats.norm.isf(0.9)
+    return float(stats.norm.sf(theta / math.sqrt(P)))
+
+
 def test_kzl_oracles_are_the_papers_text():
     """The typed-in oracles above are what the transcription prints (where it is beside the
     checkout): "the state vector comprises 17 states" and the (2 + (nu - 1) 4) x 17 matrix."""
@@ -730,6 +753,22 @@ def _kzl_gyro_residual_deg_h() -> float:
 _BARKER13 = np.array([1, 1, 1, 1, 1, -1, -1, 1, 1, -1, 1, -1, 1], float)
 
 ORACLES = [
+    # --- ATC-10 Sec. 3.6-3.8: the PSK sample moments written out (summation order: 1e-10), and
+    # scipy's normal for ROC_g (1e-9)
+    Oracle("atc10-20-psk-b", lambda: _atc10_psk_moments()[0], rtol=1e-10, why="moments written out"),
+    Oracle(
+        "atc10-20-psk-kurtosis",
+        lambda: _atc10_psk_moments()[1] / _atc10_psk_moments()[0] ** 2,
+        rtol=1e-10,
+        why="moments written out",
+    ),
+    Oracle(
+        "atc10-22-psk-kurtosis",
+        lambda: _atc10_psk_moments()[1] / _atc10_psk_moments()[0] ** 2,
+        rtol=1e-10,
+        why="moments written out",
+    ),
+    Oracle("atc10-22-psk-pf-gauss", _atc10_psk_pf_gauss, rtol=1e-9, why="scipy's normal, Theorem 3.1 power"),
     # the seeded flights' location errors recomputed by hand from the run's arrays (summation
     # order only: 1e-12)
     Oracle(
