@@ -3371,3 +3371,30 @@ def atc10_22_psk_pf_gauss() -> float:
     from navcore.papers import atc10_multiple_access as pm
 
     return float(pm.gaussian_best_pf(pm.psk_contour(), 0.9))
+
+
+# --- ATC-10 Sec. 4.5: the clock tracker's gain -------------------------------------------------------
+
+
+@register(
+    "atc10-31-convergence-speedup",
+    "atc10/31-clock-tracking",
+    "median over the examples and sigma0 of (2.3 / psi - 1) over the recursion's steps to 10 %",
+)
+def atc10_31_convergence_speedup() -> float:
+    """How many times faster the gain recursion of ATC-10 Eqs. (4.5.16)-(4.5.25) comes within 10 %
+    of its limit than the geometric series' 2.3 / psi - 1 steps, median over both examples and the
+    three published sigma0 (sigma = 50 ns)."""
+    import numpy as np
+
+    from navcore.location import clock_tracking as ct
+    from navcore.papers import atc10_tracking as paper
+
+    speedups = []
+    for ex in ("I", "II"):
+        b = float(paper.TABLE_4_2[ex]["beta"])
+        for s0 in paper.sigma0_values():
+            steps = ct.convergence_steps(ct.gain_recursion(b, 50.0, s0, 3000), 0.1)
+            if steps > 0:
+                speedups.append((2.3 / ct.psi(ct.alpha_parameter(s0, 50.0, b)) - 1) / steps)
+    return float(np.median(speedups))

@@ -664,6 +664,33 @@ def _atc10_psk_pf_gauss() -> float:
     return float(stats.norm.sf(theta / math.sqrt(P)))
 
 
+def _atc10_convergence_speedup() -> float:
+    """The gains of (4.5.16)-(4.5.25) iterated by hand, their limit psi / beta from the real root of
+    psi^3 + q psi - q = 0, q = 27 alpha / 4 (numpy.roots), alpha = (8/27) sigma0^2 beta / sigma^2;
+    the steps counted to the last gain more than 10 % from the limit."""
+    from navcore.papers import atc10_tracking as paper
+
+    sigma = 50.0
+    out = []
+    for ex in ("I", "II"):
+        beta = float(paper.TABLE_4_2[ex]["beta"])
+        for s0 in paper.sigma0_values():
+            q = 27 / 4 * (8 / 27) * s0**2 * beta / sigma**2
+            psi = float(next(r.real for r in np.roots([1.0, 0.0, q, -q]) if abs(r.imag) < 1e-9))
+            limit = psi / beta
+            gamma, d, last_out = 1 / beta, 0.0, 0
+            for n in range(1, 3001):
+                s_n = 2 * s0**2 + sigma**2 * gamma + 2 * d
+                gamma = s_n / (sigma**2 + beta * s_n)
+                d = (1 - gamma * beta) * (s0**2 + d)
+                if abs(gamma - limit) > 0.1 * limit:
+                    last_out = n
+            if abs(1 / beta - limit) > 0.1 * limit or last_out > 0:
+                steps = last_out + 1
+                out.append((2.3 / psi - 1) / steps)
+    return float(np.median(out))
+
+
 def test_kzl_oracles_are_the_papers_text():
     """The typed-in oracles above are what the transcription prints (where it is beside the
     checkout): "the state vector comprises 17 states" and the (2 + (nu - 1) 4) x 17 matrix."""
@@ -753,6 +780,14 @@ def _kzl_gyro_residual_deg_h() -> float:
 _BARKER13 = np.array([1, 1, 1, 1, 1, -1, -1, 1, 1, -1, 1, -1, 1], float)
 
 ORACLES = [
+    # the recursion iterated by hand against the closed-form limit: equal step counts, so the
+    # ratios agree to rounding (1e-9)
+    Oracle(
+        "atc10-31-convergence-speedup",
+        _atc10_convergence_speedup,
+        rtol=1e-9,
+        why="recursion by hand, cubic's root",
+    ),
     # --- ATC-10 Sec. 3.6-3.8: the PSK sample moments written out (summation order: 1e-10), and
     # scipy's normal for ROC_g (1e-9)
     Oracle("atc10-20-psk-b", lambda: _atc10_psk_moments()[0], rtol=1e-10, why="moments written out"),
