@@ -3396,5 +3396,5 @@ def atc10_31_convergence_speedup() -> float:
         for s0 in paper.sigma0_values():
             steps = ct.convergence_steps(ct.gain_recursion(b, 50.0, s0, 3000), 0.1)
             if steps > 0:
-                speedups.append((2.3 / ct.psi(ct.alpha_parameter(s0, 50.0, b)) - 1) / steps)
+                speedups.append((2.3 / float(ct.psi(ct.alpha_parameter(s0, 50.0, b))) - 1) / steps)
     return float(np.median(speedups))
