@@ -3398,3 +3398,32 @@ def atc10_31_convergence_speedup() -> float:
             if steps > 0:
                 speedups.append((2.3 / float(ct.psi(ct.alpha_parameter(s0, 50.0, b))) - 1) / steps)
     return float(np.median(speedups))
+
+
+def _atc10_printed_ms_factors() -> list[float]:
+    """(rms at N + 1 with the printed S3 over that with the invariant S3)^2, both examples and the
+    three published sigma0, at the fitted geometry (the finite-N gains and the exact extrapolation)."""
+    from navcore.papers import atc10_tracking as paper
+
+    r_fit = paper.fitted_radius_ratio()
+    out = []
+    for ex in ("I", "II"):
+        geo = paper.table_4_2_from_geometry(ex, r_fit)
+        printed_geo = dict(geo, s_123=geo["s_123_printed"])
+        for s0 in paper.sigma0_values():
+            pred = paper.rms_history_ft(geo, s0, paper.MC_N_LAST, 1)[1][-1]
+            pred_p = paper.rms_history_ft(printed_geo, s0, paper.MC_N_LAST, 1)[1][-1]
+            out.append(float((pred_p / pred) ** 2))
+    return out
+
+
+@register(
+    "atc10-32-printed-ms-factor-{end}",
+    "atc10/32-tracking-examples",
+    "smallest or largest ratio of the N + 1 mean square with the printed S3 to that with the invariant S3",
+)
+def atc10_32_printed_ms_factor(end: str) -> float:
+    """The smallest (``end="lo"``) or largest (``"hi"``) factor by which the printed S3 of (4.5.30)
+    changes the mean-square position error at the first three-satellite epoch, over both examples
+    and the three published sigma0."""
+    return {"lo": min, "hi": max}[end](_atc10_printed_ms_factors())

@@ -691,6 +691,31 @@ def _atc10_convergence_speedup() -> float:
     return float(np.median(out))
 
 
+def _atc10_printed_ms_factors_by_hand() -> list[float]:
+    """The gains of (4.5.16)-(4.5.25) iterated by hand for N = 150 epochs (sigma = 50 ns), then the
+    clock variance one epoch after the drop, v = sigma^2 gamma_N + 2 sigma0^2 + 2 d_N, and the
+    mean squares sigma^2 tr3 + v S3 with the printed and the invariant S3 (the geometry's columns
+    are the model's, the inputs of this arithmetic)."""
+    from navcore.papers import atc10_tracking as paper
+
+    sigma, n_last = 50.0, 150
+    r_fit = paper.fitted_radius_ratio()
+    out = []
+    for ex in ("I", "II"):
+        geo = paper.table_4_2_from_geometry(ex, r_fit)
+        beta = geo["beta"]
+        for s0 in paper.sigma0_values():
+            gamma, d = 1 / beta, 0.0
+            for _ in range(n_last):
+                s_n = 2 * s0**2 + sigma**2 * gamma + 2 * d
+                gamma = s_n / (sigma**2 + beta * s_n)
+                d = (1 - gamma * beta) * (s0**2 + d)
+            v = sigma**2 * gamma + 2 * s0**2 + 2 * d
+            ms = [sigma**2 * geo["trace_123"] + v * s3 for s3 in (geo["s_123_printed"], geo["s_123"])]
+            out.append(ms[0] / ms[1])
+    return out
+
+
 def test_kzl_oracles_are_the_papers_text():
     """The typed-in oracles above are what the transcription prints (where it is beside the
     checkout): "the state vector comprises 17 states" and the (2 + (nu - 1) 4) x 17 matrix."""
@@ -780,6 +805,19 @@ def _kzl_gyro_residual_deg_h() -> float:
 _BARKER13 = np.array([1, 1, 1, 1, 1, -1, -1, 1, 1, -1, 1, -1, 1], float)
 
 ORACLES = [
+    # the recursion and the extrapolation variance by hand: rounding only (1e-10)
+    Oracle(
+        "atc10-32-printed-ms-factor-lo",
+        lambda: min(_atc10_printed_ms_factors_by_hand()),
+        rtol=1e-10,
+        why="recursion and extrapolation by hand",
+    ),
+    Oracle(
+        "atc10-32-printed-ms-factor-hi",
+        lambda: max(_atc10_printed_ms_factors_by_hand()),
+        rtol=1e-10,
+        why="recursion and extrapolation by hand",
+    ),
     # the recursion iterated by hand against the closed-form limit: equal step counts, so the
     # ratios agree to rounding (1e-9)
     Oracle(
