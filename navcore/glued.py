@@ -3427,3 +3427,29 @@ def atc10_32_printed_ms_factor(end: str) -> float:
     changes the mean-square position error at the first three-satellite epoch, over both examples
     and the three published sigma0."""
     return {"lo": min, "hi": max}[end](_atc10_printed_ms_factors())
+
+
+@register(
+    "atc10-32-mse-I-5-n0",
+    "atc10/32-tracking-examples",
+    "Monte Carlo mean-square position error, Example I, sigma0 = 5 ns, n = 0 (ft^2)",
+)
+def atc10_32_mse_i_5_n0() -> float:
+    """E||xi_p||^2 at the least-squares epoch n = 0 from the seeded tracker Monte Carlo, Example I,
+    sigma0 = 5 ns, ft^2."""
+    from navcore.papers import atc10_tracking as paper
+
+    return float(paper.tracker_monte_carlo("I", 5.0).position_mse[0])
+
+
+@register(
+    "atc10-32-normvar-I-5-n0",
+    "atc10/32-tracking-examples",
+    "Monte Carlo variance of the position error's norm, Example I, sigma0 = 5 ns, n = 0 (ft^2)",
+)
+def atc10_32_normvar_i_5_n0() -> float:
+    """Var ||xi_p|| at the least-squares epoch n = 0 from the seeded tracker Monte Carlo, Example I,
+    sigma0 = 5 ns, ft^2."""
+    from navcore.papers import atc10_tracking as paper
+
+    return float(paper.tracker_monte_carlo("I", 5.0).position_norm_variance[0])

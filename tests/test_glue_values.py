@@ -716,6 +716,31 @@ def _atc10_printed_ms_factors_by_hand() -> list[float]:
     return out
 
 
+@functools.cache
+def _atc10_ls_position_norm() -> tuple[float, float, float, float]:
+    """Least squares at n = 0 of Example I (fitted geometry): position and clock from the K ranges
+    with unit lines of sight F, so the position covariance is sigma^2 (F' (I - 1 1'/K) F)^-1 (ft^2
+    at the declared ft per ns). Returns the exact E||xi||^2 and the sampling standard deviation of
+    its mean over the tracker's 10 000 runs, sqrt(2 sum l_i^2 / runs), and Var||xi|| from 2e6
+    seeded Gaussian draws with the standard deviation of a 10 000-run sample variance,
+    sqrt((m4 - v^2) / runs), m4 the fourth central moment of the norm."""
+    from navcore.papers import atc10_tracking as paper
+
+    runs = 10_000
+    F = _atc10_los("I", "fit")
+    K = F.shape[0]
+    center = np.eye(K) - np.ones((K, K)) / K
+    scale = (paper.IN.sigma_ns * paper.IN.c_ft_per_ns) ** 2
+    P = scale * np.linalg.inv(F.T @ center @ F)
+    lam = np.linalg.eigvalsh(P)
+    mse, mse_sd = float(lam.sum()), math.sqrt(2 * float(np.sum(lam**2)) / runs)
+    z = np.random.default_rng(31).standard_normal((2_000_000, 3)) * np.sqrt(lam)
+    norm = np.linalg.norm(z, axis=1)
+    v = float(np.var(norm))
+    m4 = float(np.mean((norm - norm.mean()) ** 4))
+    return mse, mse_sd, v, math.sqrt((m4 - v**2) / runs)
+
+
 def test_kzl_oracles_are_the_papers_text():
     """The typed-in oracles above are what the transcription prints (where it is beside the
     checkout): "the state vector comprises 17 states" and the (2 + (nu - 1) 4) x 17 matrix."""
@@ -805,6 +830,20 @@ def _kzl_gyro_residual_deg_h() -> float:
 _BARKER13 = np.array([1, 1, 1, 1, 1, -1, -1, 1, 1, -1, 1, -1, 1], float)
 
 ORACLES = [
+    # the tracker's Monte Carlo at n = 0 against least squares by hand, five sampling standard
+    # deviations of 10 000 runs
+    Oracle(
+        "atc10-32-mse-I-5-n0",
+        lambda: _atc10_ls_position_norm()[0],
+        band=lambda: 5 * _atc10_ls_position_norm()[1],
+        why="least-squares covariance, sampling band",
+    ),
+    Oracle(
+        "atc10-32-normvar-I-5-n0",
+        lambda: _atc10_ls_position_norm()[2],
+        band=lambda: 5 * _atc10_ls_position_norm()[3],
+        why="Gaussian norm's variance, sampling band",
+    ),
     # the recursion and the extrapolation variance by hand: rounding only (1e-10)
     Oracle(
         "atc10-32-printed-ms-factor-lo",
