@@ -3453,3 +3453,27 @@ def atc10_32_normvar_i_5_n0() -> float:
     from navcore.papers import atc10_tracking as paper
 
     return float(paper.tracker_monte_carlo("I", 5.0).position_norm_variance[0])
+
+
+@register(
+    "atc10-90-ms-left-5ns-{ex}",
+    "atc10/90-exercises",
+    "fraction (sd_N / sd_0)^2 of the least-squares mean square that tracking leaves, sigma0 = 5 ns",
+)
+def atc10_90_ms_left_5ns(ex: str) -> float:
+    """(sd_N / sd_0)^2 of Table 4.3 from the printed Table 4.2 of Example ``ex``, sigma0 = 5 ns."""
+    from navcore.papers import atc10_tracking as pt
+
+    return float(pt.ms_ratio_tracking(ex, 5.0))
+
+
+@register(
+    "atc10-23-coef-se",
+    "atc10/23-zakai-bandwidth",
+    "standard error of the simulated PSK power coefficient 2 L E[x^2]",
+)
+def atc10_23_coef_se() -> float:
+    """Standard error of the power coefficient 2 L E[n_ij^2] estimated from the PSK samples."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(pm.psk_power_coefficient_se())

@@ -741,6 +741,16 @@ def _atc10_ls_position_norm() -> tuple[float, float, float, float]:
     return mse, mse_sd, v, math.sqrt((m4 - v**2) / runs)
 
 
+def _atc10_coef_se_by_hand() -> float:
+    """2 L times the standard error of a mean of the squared samples, the spread written out:
+    sqrt(sum (x^2 - mean)^2 / n) / sqrt(n)."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    x2 = np.asarray(pm.psk_physical_samples(), dtype=float) ** 2
+    dev = x2 - x2.sum() / x2.size
+    return 2 * pm.IN.psk_chips * math.sqrt(float(dev @ dev) / x2.size) / math.sqrt(x2.size)
+
+
 def test_kzl_oracles_are_the_papers_text():
     """The typed-in oracles above are what the transcription prints (where it is beside the
     checkout): "the state vector comprises 17 states" and the (2 + (nu - 1) 4) x 17 matrix."""
@@ -830,6 +840,20 @@ def _kzl_gyro_residual_deg_h() -> float:
 _BARKER13 = np.array([1, 1, 1, 1, 1, -1, -1, 1, 1, -1, 1, -1, 1], float)
 
 ORACLES = [
+    # Table 4.3 by hand from the printed Table 4.2 (the cubic's root: 1e-9)
+    Oracle(
+        "atc10-90-ms-left-5ns-I",
+        lambda: (_table_43_row(_TABLE_42_I, 5.0)["sdN"] / _table_43_row(_TABLE_42_I, 5.0)["sd0"]) ** 2,
+        rtol=1e-9,
+        why="Table 4.3 by hand",
+    ),
+    Oracle(
+        "atc10-90-ms-left-5ns-II",
+        lambda: (_table_43_row(_TABLE_42_II, 5.0)["sdN"] / _table_43_row(_TABLE_42_II, 5.0)["sd0"]) ** 2,
+        rtol=1e-9,
+        why="Table 4.3 by hand",
+    ),
+    Oracle("atc10-23-coef-se", _atc10_coef_se_by_hand, rtol=1e-9, why="standard error written out"),
     # the tracker's Monte Carlo at n = 0 against least squares by hand, five sampling standard
     # deviations of 10 000 runs
     Oracle(
