@@ -3477,3 +3477,23 @@ def atc10_23_coef_se() -> float:
     from navcore.papers import atc10_multiple_access as pm
 
     return float(pm.psk_power_coefficient_se())
+
+
+@register(
+    "atc10-21-convexity-worst",
+    "atc10/21-roc-bounds",
+    "largest rho sqrt(b) the Chernoff optimum reaches at the Sec. 3.6 operating points (two-point density)",
+)
+def atc10_21_convexity_worst() -> float:
+    """Largest rho* sqrt(b) of the Chernoff bound's optimal tilt over the contours of Sec. 3.6 and
+    thresholds 0.02-0.98, two-point amplitude density, N = 1e5."""
+    import numpy as np
+
+    from navcore.detection.roc_bounds import chernoff_log_tails
+    from navcore.papers import atc10_multiple_access as pm
+
+    worst = 0.0
+    for x in pm.contours():
+        rho = chernoff_log_tails(pm.noise_sec36("C2 two-point", x), np.linspace(0.02, 0.98, 49))[1]
+        worst = max(worst, float(np.max(rho)) * math.sqrt(pm.b_of_contour(x)))
+    return worst

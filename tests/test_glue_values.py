@@ -751,6 +751,25 @@ def _atc10_coef_se_by_hand() -> float:
     return 2 * pm.IN.psk_chips * math.sqrt(float(dev @ dev) / x2.size) / math.sqrt(x2.size)
 
 
+def _atc10_convexity_worst() -> float:
+    """The Chernoff tilt of the two-point density +-a (a = sqrt(b), b = 1 / (3 x^2)) solves
+    theta = (N - 1) q a sinh(rho a) / (1 - q + q cosh(rho a)) (the derivative of the exponent);
+    u = rho a by brentq for each contour x and threshold, and the largest u (= rho sqrt(b))."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    n, q = pm.IN.n_sec36, 2 * pm.IN.tau_over_alpha_sec36
+    worst = 0.0
+    for x in pm.contours():
+        a = math.sqrt(1 / (3 * x * x))
+        for theta in np.linspace(0.02, 0.98, 49):
+
+            def slope(u: float, theta: float = float(theta), a: float = a) -> float:
+                return (n - 1) * q * a * math.sinh(u) / (1 - q + q * math.cosh(u)) - theta
+
+            worst = max(worst, optimize.brentq(slope, 0.0, 60.0, xtol=1e-14, rtol=1e-14))
+    return worst
+
+
 def test_kzl_oracles_are_the_papers_text():
     """The typed-in oracles above are what the transcription prints (where it is beside the
     checkout): "the state vector comprises 17 states" and the (2 + (nu - 1) 4) x 17 matrix."""
@@ -840,6 +859,8 @@ def _kzl_gyro_residual_deg_h() -> float:
 _BARKER13 = np.array([1, 1, 1, 1, 1, -1, -1, 1, 1, -1, 1, -1, 1], float)
 
 ORACLES = [
+    # the tilt by brentq on the exponent's derivative; navcore bisects to 2^-70 (1e-9)
+    Oracle("atc10-21-convexity-worst", _atc10_convexity_worst, rtol=1e-9, why="brentq on the Chernoff tilt"),
     # Table 4.3 by hand from the printed Table 4.2 (the cubic's root: 1e-9)
     Oracle(
         "atc10-90-ms-left-5ns-I",
