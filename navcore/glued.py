@@ -3497,3 +3497,24 @@ def atc10_21_convexity_worst() -> float:
         rho = chernoff_log_tails(pm.noise_sec36("C2 two-point", x), np.linspace(0.02, 0.98, 49))[1]
         worst = max(worst, float(np.max(rho)) * math.sqrt(pm.b_of_contour(x)))
     return worst
+
+
+@register(
+    "atc10-21-lower-efolds",
+    "atc10/21-roc-bounds",
+    "exact ln p_f minus the corrected lower bound (3.5.14), two-point noise at N = 1e7 (e-folds)",
+)
+def atc10_21_lower_efolds() -> float:
+    """ln (exact tail) - ln (corrected lower bound (3.5.14)) for two-point multiple-access noise,
+    N = 1e7 (the page's largest N)."""
+    import numpy as np
+
+    from navcore.detection.multiple_access import MultipleAccessNoise, two_point_density, two_point_exact_tail
+    from navcore.detection.roc_bounds import gallager_log_tails_lower
+
+    n, theta = ATC10_TWO_POINT_N, ATC10_TWO_POINT_THETA
+    q = 2 * ATC10_TWO_POINT_TAU_OVER_ALPHA
+    bb = ATC10_TWO_POINT_POWER / ((n - 1) * q)
+    nz = MultipleAccessNoise(n, ATC10_TWO_POINT_TAU_OVER_ALPHA, two_point_density(bb))
+    exact = float(np.log(two_point_exact_tail(np.sqrt(bb), n - 1, q, [theta])[0]))
+    return float(exact - gallager_log_tails_lower(nz, [theta])[0][0])

@@ -770,6 +770,33 @@ def _atc10_convexity_worst() -> float:
     return worst
 
 
+def _two_point_lower_efolds() -> float:
+    """The same noise: the corrected (3.5.14) written out, mu(s) = (N - 1) ln(1 - q + q cosh(s a))
+    with its derivatives by hand, the tilt r1 solving mu'(r1) - sqrt(2 mu''(r1)) = theta (brentq)
+    and the bound -ln 2 + mu(r1) - r1 theta - 2 r1 sqrt(2 mu''(r1)); against the exact tail by
+    scipy's binomial sums."""
+    power, theta, n, q = 4 / 75, 0.5, 10_000_000, 4e-5
+    a = math.sqrt(power / ((n - 1) * q))
+
+    def d(s: float) -> float:
+        return 1 - q + q * math.cosh(s * a)
+
+    def mu1(s: float) -> float:
+        return (n - 1) * q * a * math.sinh(s * a) / d(s)
+
+    def mu2(s: float) -> float:
+        return (n - 1) * (q * a * a * math.cosh(s * a) / d(s) - (q * a * math.sinh(s * a) / d(s)) ** 2)
+
+    r1 = optimize.brentq(lambda s: mu1(s) - math.sqrt(2 * mu2(s)) - theta, 0.0, 50.0 / a, xtol=1e-14)
+    lower = -math.log(2) + (n - 1) * math.log1p(q * (math.cosh(r1 * a) - 1)) - r1 * theta
+    lower -= 2 * r1 * math.sqrt(2 * mu2(r1))
+    ks = np.arange(0, 4001)
+    pk = stats.binom.pmf(ks, n - 1, q)
+    j_min = np.ceil((theta / a + ks) / 2 - 1e-12)
+    tail = float(np.sum(pk * stats.binom.sf(j_min - 1, ks, 0.5)))
+    return math.log(tail) - lower
+
+
 def test_kzl_oracles_are_the_papers_text():
     """The typed-in oracles above are what the transcription prints (where it is beside the
     checkout): "the state vector comprises 17 states" and the (2 + (nu - 1) 4) x 17 matrix."""
@@ -859,6 +886,14 @@ def _kzl_gyro_residual_deg_h() -> float:
 _BARKER13 = np.array([1, 1, 1, 1, 1, -1, -1, 1, 1, -1, 1, -1, 1], float)
 
 ORACLES = [
+    # brentq on the tilt and scipy's binomial sums to K = 4000 (mean 400): 1e-6 on a difference of
+    # logs of order 1, as for the upper bound
+    Oracle(
+        "atc10-21-lower-efolds",
+        _two_point_lower_efolds,
+        rtol=1e-6,
+        why="corrected (3.5.14) by hand, scipy binomial sums",
+    ),
     # the tilt by brentq on the exponent's derivative; navcore bisects to 2^-70 (1e-9)
     Oracle("atc10-21-convexity-worst", _atc10_convexity_worst, rtol=1e-9, why="brentq on the Chernoff tilt"),
     # Table 4.3 by hand from the printed Table 4.2 (the cubic's root: 1e-9)
