@@ -3518,3 +3518,31 @@ def atc10_21_lower_efolds() -> float:
     nz = MultipleAccessNoise(n, ATC10_TWO_POINT_TAU_OVER_ALPHA, two_point_density(bb))
     exact = float(np.log(two_point_exact_tail(np.sqrt(bb), n - 1, q, [theta])[0]))
     return float(exact - gallager_log_tails_lower(nz, [theta])[0][0])
+
+
+def _atc10_21_lower_gaps() -> list[float]:
+    """log10 (actual p_f / corrected lower bound (3.5.14)), two-point density, contours 3, 5, 6 and
+    thresholds 0.3, 0.5, 0.7 (the actual p_f at the nearest point of the exact ROC's grid)."""
+    import numpy as np
+
+    from navcore.detection.roc_bounds import gallager_log_tails_lower
+    from navcore.papers import atc10_multiple_access as pm
+
+    theta = np.array([0.3, 0.5, 0.7])
+    out: list[float] = []
+    for x in (3.0, 5.0, 6.0):
+        lb = gallager_log_tails_lower(pm.noise_sec36("C2 two-point", x), theta)[0]
+        idx = [int(np.argmin(abs(pm.THETA_GRID - t))) for t in theta]
+        out += [float(v) for v in np.log10(pm.exact_roc("C2 two-point", x).p_f[idx]) - lb / np.log(10)]
+    return out
+
+
+@register(
+    "atc10-21-lower-gap-{end}",
+    "atc10/21-roc-bounds",
+    "smallest or largest gap between the actual p_f and the corrected lower bound (decades)",
+)
+def atc10_21_lower_gap(end: str) -> float:
+    """The smallest (``end="lo"``) or largest (``"hi"``) number of decades by which the corrected
+    lower bound (3.5.14) lies below the actual p_f, over the page's nine two-point cases."""
+    return {"lo": min, "hi": max}[end](_atc10_21_lower_gaps())

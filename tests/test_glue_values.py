@@ -797,6 +797,43 @@ def _two_point_lower_efolds() -> float:
     return math.log(tail) - lower
 
 
+def _atc10_lower_gaps_by_hand() -> list[float]:
+    """For the two-point density +-a of Sec. 3.6 (N = 1e5, q = 2 tau / alpha, a = 1 / (sqrt(3) x)):
+    the exact tail sum_K Bin(N - 1, q)(K) P(a (2J - K) >= theta_g), J ~ Bin(K, 1/2) (scipy), at the
+    exact ROC's grid point theta_g nearest to theta, and the corrected (3.5.14) at theta by hand
+    (brentq's tilt), in decades."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    n, q = pm.IN.n_sec36, 2 * pm.IN.tau_over_alpha_sec36
+    grid = np.asarray(pm.THETA_GRID)
+    ks = np.arange(0, 200)
+    pk = stats.binom.pmf(ks, n - 1, q)
+    out = []
+    for x in (3.0, 5.0, 6.0):
+        a = 1 / (math.sqrt(3) * x)
+
+        def d(s: float, a: float = a) -> float:
+            return 1 - q + q * math.cosh(s * a)
+
+        def mu1(s: float, a: float = a) -> float:
+            return (n - 1) * q * a * math.sinh(s * a) / d(s)
+
+        def mu2(s: float, a: float = a) -> float:
+            return (n - 1) * (q * a * a * math.cosh(s * a) / d(s) - (q * a * math.sinh(s * a) / d(s)) ** 2)
+
+        for theta in (0.3, 0.5, 0.7):
+            r1 = optimize.brentq(
+                lambda s, t=theta: mu1(s) - math.sqrt(2 * mu2(s)) - t, 0.0, 200.0 / a, xtol=1e-14
+            )
+            lower = -math.log(2) + (n - 1) * math.log1p(q * (math.cosh(r1 * a) - 1)) - r1 * theta
+            lower -= 2 * r1 * math.sqrt(2 * mu2(r1))
+            tg = float(grid[int(np.argmin(abs(grid - theta)))])
+            j_min = np.ceil((tg / a + ks) / 2 - 1e-12)
+            tail = float(np.sum(pk * stats.binom.sf(j_min - 1, ks, 0.5)))
+            out.append(math.log10(tail) - lower / math.log(10))
+    return out
+
+
 def test_kzl_oracles_are_the_papers_text():
     """The typed-in oracles above are what the transcription prints (where it is beside the
     checkout): "the state vector comprises 17 states" and the (2 + (nu - 1) 4) x 17 matrix."""
@@ -886,6 +923,20 @@ def _kzl_gyro_residual_deg_h() -> float:
 _BARKER13 = np.array([1, 1, 1, 1, 1, -1, -1, 1, 1, -1, 1, -1, 1], float)
 
 ORACLES = [
+    # scipy's binomial sums (K to 200, mean 4: nothing left) and brentq's tilt: 1e-6 on gaps of
+    # decades
+    Oracle(
+        "atc10-21-lower-gap-lo",
+        lambda: min(_atc10_lower_gaps_by_hand()),
+        rtol=1e-6,
+        why="binomial sums, bound by hand",
+    ),
+    Oracle(
+        "atc10-21-lower-gap-hi",
+        lambda: max(_atc10_lower_gaps_by_hand()),
+        rtol=1e-6,
+        why="binomial sums, bound by hand",
+    ),
     # brentq on the tilt and scipy's binomial sums to K = 4000 (mean 400): 1e-6 on a difference of
     # logs of order 1, as for the upper bound
     Oracle(
