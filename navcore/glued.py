@@ -3546,3 +3546,39 @@ def atc10_21_lower_gap(end: str) -> float:
     """The smallest (``end="lo"``) or largest (``"hi"``) number of decades by which the corrected
     lower bound (3.5.14) lies below the actual p_f, over the page's nine two-point cases."""
     return {"lo": min, "hi": max}[end](_atc10_21_lower_gaps())
+
+
+def _atc10_outage_corrected_s(ex: str) -> float:
+    from navcore.papers import atc10_tracking as paper
+
+    return float(
+        paper.acceptable_outage_s(ex, 5.0, paper.table_4_2_from_geometry(ex, paper.fitted_radius_ratio()))
+    )
+
+
+@register(
+    "atc10-32-outage-corrected-{ex}",
+    "atc10/32-tracking-examples",
+    "acceptable three-satellite outage at sigma0 = 5 ns, fitted geometry with the invariant S3 (s)",
+)
+def atc10_32_outage_corrected(ex: str) -> float:
+    """Seconds for which the three-satellite rms of Example ``ex`` stays below the fitted factor
+    times the all-satellite least-squares rms (rule of thumb 4), sigma0 = 5 ns, fitted geometry."""
+    return _atc10_outage_corrected_s(ex)
+
+
+@register(
+    "atc10-32-outage-ratio-{end}",
+    "atc10/32-tracking-examples",
+    "smallest or largest corrected acceptable outage over the printed one",
+)
+def atc10_32_outage_ratio(end: str) -> float:
+    """The corrected acceptable outage over the printed one (rule of thumb 4), the smaller
+    (``end="lo"``) or larger (``"hi"``) of the two examples."""
+    from navcore import ledger
+
+    ratios = [
+        _atc10_outage_corrected_s(ex) / float(ledger.claim(f"ATC10-sec4.6-rule4-outage-ex{ex}").published)
+        for ex in ("I", "II")
+    ]
+    return {"lo": min, "hi": max}[end](ratios)

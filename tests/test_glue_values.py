@@ -834,6 +834,31 @@ def _atc10_lower_gaps_by_hand() -> list[float]:
     return out
 
 
+# Rule of thumb (4) of Sec. 4.6: "from about 30 to 60 seconds" (Example I, Example II)
+_ATC10_RULE4_PRINTED_S = (("I", 30.0), ("II", 60.0))
+
+
+def _atc10_outage_closed_form(ex: str) -> float:
+    """Rule of thumb 4 in closed form: with the steady clock variance of (4.5.27), v(m) = sigma^2
+    psi / beta + sigma0^2 ((2 - psi) / psi m + m^2), the three-satellite mean square sigma^2 tr3 +
+    v(m) S3 first exceeds (f sd_0)^2, sd_0^2 = sigma^2 (tr + S / beta), at the integer above the
+    positive root of that quadratic in m; the outage is one epoch (1 s) less. psi is the cubic's
+    root; the geometry's columns are the model's (inputs of this arithmetic)."""
+    from navcore.papers import atc10_tracking as paper
+
+    sigma, s0, f = 50.0, 5.0, paper.IN.outage_threshold_factor
+    g = paper.table_4_2_from_geometry(ex, paper.fitted_radius_ratio())
+    beta = g["beta"]
+    psi = _psi_cubic(8 / 27 * s0**2 * beta / sigma**2)
+    limit = f**2 * sigma**2 * (g["trace_all"] + g["s_all"] / beta)
+    # s0^2 m^2 + s0^2 (2 - psi) / psi m + sigma^2 psi / beta - (limit - sigma^2 tr3) / S3 > 0
+    A, B = s0**2, s0**2 * (2 - psi) / psi
+    C = sigma**2 * psi / beta - (limit - sigma**2 * g["trace_123"]) / g["s_123"]
+    root = (-B + math.sqrt(B * B - 4 * A * C)) / (2 * A)
+    m_first = math.floor(root) + 1  # the first integer m beyond the root
+    return float(m_first - 1) * 1.0
+
+
 def test_kzl_oracles_are_the_papers_text():
     """The typed-in oracles above are what the transcription prints (where it is beside the
     checkout): "the state vector comprises 17 states" and the (2 + (nu - 1) 4) x 17 matrix."""
@@ -923,6 +948,31 @@ def _kzl_gyro_residual_deg_h() -> float:
 _BARKER13 = np.array([1, 1, 1, 1, 1, -1, -1, 1, 1, -1, 1, -1, 1], float)
 
 ORACLES = [
+    # the quadratic's root in closed form: the same integer (exact)
+    Oracle(
+        "atc10-32-outage-corrected-I",
+        lambda: _atc10_outage_closed_form("I"),
+        rtol=1e-12,
+        why="closed-form root",
+    ),
+    Oracle(
+        "atc10-32-outage-corrected-II",
+        lambda: _atc10_outage_closed_form("II"),
+        rtol=1e-12,
+        why="closed-form root",
+    ),
+    Oracle(
+        "atc10-32-outage-ratio-lo",
+        lambda: min(_atc10_outage_closed_form(ex) / p for ex, p in _ATC10_RULE4_PRINTED_S),
+        rtol=1e-12,
+        why="closed-form root over the printed outages",
+    ),
+    Oracle(
+        "atc10-32-outage-ratio-hi",
+        lambda: max(_atc10_outage_closed_form(ex) / p for ex, p in _ATC10_RULE4_PRINTED_S),
+        rtol=1e-12,
+        why="closed-form root over the printed outages",
+    ),
     # scipy's binomial sums (K to 200, mean 4: nothing left) and brentq's tilt: 1e-6 on gaps of
     # decades
     Oracle(
