@@ -439,7 +439,7 @@ def layout(session: nox.Session) -> None:
     execution cache) unless ``_build/html`` exists; ``-- --list`` prints every overflow,
     ``-- --width 420`` measures one width, ``-- --tabs N`` sets how many pages load at once.
     Needs Chromium (installed with apt-get when run as root) and about two minutes on two
-    busy cores (26 s of CPU): a developer's session, ``.ci/run`` does not run it.
+    busy cores (26 s of CPU); ``.ci/run`` runs it on the book it has built.
     """
     _install(session)
     if not (HTML / "index.html").exists():
