@@ -1560,7 +1560,7 @@ ERRATA += [
         "$\\sigma^2/(\\sigma^2 + \\beta \\sigma_\\tau^2)$; $\\gamma_n = s_n/(\\sigma^2 + \\beta s_n)$; "
         "$E|\\xi|^2 = \\sigma^2[\\operatorname{tr} + \\gamma_n 1'F(F'F)^{-2}F'1]$.",
         evidence="The corrected recursion reproduces Table 4.3 and its fixed point is the root of the "
-        "printed cubic (4.5.26); a seeded Monte Carlo of the tracker matches its variances (tests).",
+        "printed cubic (4.5.26); a seeded Monte Carlo of the tracker matches its variances.",
         discussed_in=PAGE_TRACKER,
         claims=(
             "ATC10-eq4.5.31-printed",
@@ -1627,8 +1627,7 @@ ERRATA += [
         finding="integrand $((1+s)^{\\rho-1/2} - s^{\\rho-1/2})^2$; $R_{x3} = \\beta^2 V_0 / 2\\, "
         "(\\ldots)$; Newton step $G/G'$.",
         evidence="With the corrected integrand the quadrature equals $1/(\\Gamma(2\\rho+1) \\sin \\pi\\rho)$ "
-        "to $10^{-8}$ "
-        "(test).",
+        "to $10^{-8}$.",
         discussed_in=PAGE_TRACKER,
         claims=("ATC10-appG-V0-printed",),
     ),
@@ -1656,7 +1655,7 @@ ERRATA += [
         printed="$\\gamma = \\sigma^2 / (\\sigma^2 + \\sigma_x^2 [F'F - F'G(G'G)^{-1}G'F])$",
         finding="$\\gamma = \\sigma_x^2 / (\\sigma^2 + \\sigma_x^2 [F'F - F'G(G'G)^{-1}G'F])$.",
         evidence="Equals the general gain H of Eq. (H.20) to $10^{-12}$ and gives the error variance "
-        "$\\sigma^2 \\gamma$ of (H.21); the printed numerator does not (test).",
+        "$\\sigma^2 \\gamma$ of (H.21); the printed numerator does not.",
         discussed_in=PAGE_TRACKER,
         claims=("ATC10-appH-scalar-gain-printed",),
     ),
