@@ -120,7 +120,7 @@ class Ellipsoid:
     f : float
         Flattening ``(a - b) / a``, in [0, 1) (0: a sphere of radius ``a``).
     gm : float
-        Geocentric gravitational constant GM, m^3/s^2 (``> 0``; for normal gravity).
+        Geocentric gravitational constant GM, m³/s² (``> 0``; for normal gravity).
     omega : float
         Angular velocity of rotation, rad/s (``>= 0``; for normal gravity).
 

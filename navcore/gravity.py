@@ -36,8 +36,8 @@ eccentricity :math:`e' = \sqrt{a^2 - b^2}/b`,
 
     \gamma_p = \frac{GM}{a^2}\left(1 + \frac{m}{3}\frac{e' q_0'}{q_0}\right).
 
-WGS-84 gives 9.7803253359 m/s^2 at the equator and 9.8321849378 m/s^2 at the poles
-(TR8350.2, Table 3.4), against the standard gravity 9.80665 m/s^2 (``navcore.units.G0``): a
+WGS-84 gives 9.7803253359 m/s² at the equator and 9.8321849378 m/s² at the poles
+(TR8350.2, Table 3.4), against the standard gravity 9.80665 m/s² (``navcore.units.G0``): a
 constant g is 2.7 mg too large at the equator and 2.6 mg too small at the poles.
 
 The models of navcore take the gravity magnitude as an argument (``g``); their default is the
@@ -75,9 +75,9 @@ def normal_gravity_at_equator_and_pole(ellipsoid: Ellipsoid = WGS84) -> tuple[fl
     Returns
     -------
     gamma_e : float
-        Normal gravity at the equator, m/s^2.
+        Normal gravity at the equator, m/s².
     gamma_p : float
-        Normal gravity at the poles, m/s^2.
+        Normal gravity at the poles, m/s².
 
     Raises
     ------
@@ -135,7 +135,7 @@ def normal_gravity(
     Returns
     -------
     ndarray
-        Normal gravity, m/s^2 (broadcast shape of ``lat`` and ``h``; 0-d for scalars).
+        Normal gravity, m/s² (broadcast shape of ``lat`` and ``h``; 0-d for scalars).
 
     Raises
     ------
@@ -177,7 +177,7 @@ def free_air_gradient(
     Returns
     -------
     ndarray
-        Gradient, 1/s^2 (m/s^2 per m); about -3.086e-6 (the free-air gradient of
+        Gradient, 1/s² (m/s² per m); about -3.086e-6 (the free-air gradient of
         0.3086 mGal/m).
 
     Raises

@@ -48,6 +48,7 @@ _NAME_SECTIONS = {
     "Warnings",
     "See Also",
     "Methods",
+    "Modules",
 }
 _DIRECTIVE = re.compile(r"^(\s*)\.\. ")
 _ROLE = re.compile(r":[\w:+-]+:`[^`]*`")

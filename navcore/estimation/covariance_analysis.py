@@ -1400,7 +1400,7 @@ def circular_error_probable(P2: ArrayLike, p: float = 0.5) -> float:
     Parameters
     ----------
     P2 : (2, 2) array
-        Horizontal covariance, m^2.
+        Horizontal covariance, m².
     p : float, default 0.5
         Probability inside the circle, in (0, 1); 0.5 gives the CEP.
 

@@ -313,11 +313,11 @@ def _strapdown_rows(
     quat : (N, 4) array
         Attitude ``q_bn``, scalar first.
     w, f : (N, S, 3) arrays
-        Angular rate (rad/s) and specific force (m/s^2) of each interval.
+        Angular rate (rad/s) and specific force (m/s²) of each interval.
     dt : float
         IMU interval, s.
     gravity : float
-        Local gravity along +down (m/s^2).
+        Local gravity along +down (m/s²).
 
     Returns
     -------

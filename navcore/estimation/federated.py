@@ -135,12 +135,12 @@ def navigation_mapped_covariance(tau: ArrayLike, P_N: ArrayLike, Q_T: ArrayLike)
     P_N : (k, k) array
         Covariance of the navigation states (their units squared).
     Q_T : (m, m) array
-        Covariance of the mapping uncertainty, (m/s)^2.
+        Covariance of the mapping uncertainty, (m/s)².
 
     Returns
     -------
     (m, m) ndarray
-        Covariance of the mapped local state, (m/s)^2.
+        Covariance of the mapped local state, (m/s)².
 
     Raises
     ------
@@ -181,11 +181,11 @@ def accelerometer_predict(
     x : (n,) array
         Velocity estimate, m/s.
     P : (n, n) array
-        Its covariance, (m/s)^2 (symmetric positive semi-definite).
+        Its covariance, (m/s)² (symmetric positive semi-definite).
     accel : (n,) array
-        Measured acceleration ``y_a``, m/s^2.
+        Measured acceleration ``y_a``, m/s².
     Q_a : (n, n) array
-        Covariance of the accelerometer noise ``w_a``, (m/s^2)^2.
+        Covariance of the accelerometer noise ``w_a``, (m/s²)².
     Ts : float
         Sample interval, s (``> 0``).
 
@@ -194,7 +194,7 @@ def accelerometer_predict(
     x_pred : (n,) ndarray
         Predicted velocity, m/s.
     P_pred : (n, n) ndarray
-        Predicted covariance, (m/s)^2.
+        Predicted covariance, (m/s)².
 
     Raises
     ------
@@ -234,11 +234,11 @@ def local_velocity_update(x: ArrayLike, P: ArrayLike, y_L: ArrayLike, R_L: Array
     x : (n,) array
         Prior velocity, m/s.
     P : (n, n) array
-        Its covariance, (m/s)^2.
+        Its covariance, (m/s)².
     y_L : (n,) array
         Local velocity measurement, m/s.
     R_L : (n, n) array
-        Its noise covariance, (m/s)^2 (positive definite).
+        Its noise covariance, (m/s)² (positive definite).
 
     Returns
     -------
@@ -271,7 +271,7 @@ def accelerometer_steady_state_isotropic(sigma_a: float, Ts: float, sigma_L: flo
     Parameters
     ----------
     sigma_a : float
-        Accelerometer noise standard deviation, m/s^2.
+        Accelerometer noise standard deviation, m/s².
     Ts : float
         Update interval, s.
     sigma_L : float
@@ -280,7 +280,7 @@ def accelerometer_steady_state_isotropic(sigma_a: float, Ts: float, sigma_L: flo
     Returns
     -------
     ScalarSteadyState
-        ``prior`` = P(k/k-1), ``posterior`` = P(k/k) in (m/s)^2, and the gain. For
+        ``prior`` = P(k/k-1), ``posterior`` = P(k/k) in (m/s)², and the gain. For
         ``sigma_a Ts << sigma_L`` the posterior is close to ``sigma_a Ts sigma_L``.
 
     Raises
@@ -310,18 +310,18 @@ def accelerometer_steady_state(Q_a: ArrayLike, R_L: ArrayLike, Ts: float) -> tup
     Parameters
     ----------
     Q_a : (n, n) array
-        Covariance of the accelerometer noise, (m/s^2)^2.
+        Covariance of the accelerometer noise, (m/s²)².
     R_L : (n, n) array
-        Covariance of the local velocity measurement, (m/s)^2 (positive definite).
+        Covariance of the local velocity measurement, (m/s)² (positive definite).
     Ts : float
         Sample interval, s (``> 0``).
 
     Returns
     -------
     prior : (n, n) ndarray
-        Steady-state prior covariance, (m/s)^2.
+        Steady-state prior covariance, (m/s)².
     posterior : (n, n) ndarray
-        Steady-state posterior covariance, (m/s)^2.
+        Steady-state posterior covariance, (m/s)².
 
     Raises
     ------
@@ -363,13 +363,13 @@ def gps_doppler_update(
     x_prior : (n,) array
         Prior velocity, m/s.
     P_prior : (n, n) array
-        Its covariance, (m/s)^2.
+        Its covariance, (m/s)².
     y_G : (m,) array
         Doppler measurement, Hz.
     H_G : (m, n) array
         Doppler measurement matrix, Hz per (m/s).
     R_G : (m, m) array
-        Doppler noise covariance, Hz^2 (positive definite).
+        Doppler noise covariance, Hz² (positive definite).
 
     Returns
     -------
@@ -403,16 +403,16 @@ def gps_doppler_covariance(P_prior: ArrayLike, H_G: ArrayLike, R_G: ArrayLike) -
     Parameters
     ----------
     P_prior : (n, n) array
-        Prior velocity covariance, (m/s)^2 (positive definite).
+        Prior velocity covariance, (m/s)² (positive definite).
     H_G : (m, n) array
         Doppler measurement matrix, Hz per (m/s).
     R_G : (m, m) array
-        Doppler noise covariance, Hz^2 (positive definite).
+        Doppler noise covariance, Hz² (positive definite).
 
     Returns
     -------
     (n, n) ndarray
-        Posterior covariance, (m/s)^2.
+        Posterior covariance, (m/s)².
 
     Raises
     ------
@@ -531,16 +531,16 @@ def fused_error_covariance(covariances: Sequence[ArrayLike | float | None], join
     Parameters
     ----------
     covariances : sequence of (n, n) array, float or None
-        Covariance of each local estimator, (m/s)^2; ``None``, a scalar or an infinite
+        Covariance of each local estimator, (m/s)²; ``None``, a scalar or an infinite
         diagonal marks an outage.
     joint : (N n, N n) array
-        Joint covariance of the stacked local errors, (m/s)^2 (symmetric positive
+        Joint covariance of the stacked local errors, (m/s)² (symmetric positive
         semi-definite once outage blocks are zeroed).
 
     Returns
     -------
     (n, n) ndarray
-        Covariance of the fused error, (m/s)^2.
+        Covariance of the fused error, (m/s)².
 
     Raises
     ------
@@ -588,12 +588,12 @@ def feasible_weights(
     Parameters
     ----------
     covariances : sequence of (n, n) array, float or None
-        Covariance of each local estimator, (m/s)^2; ``None``, a scalar or an infinite
+        Covariance of each local estimator, (m/s)²; ``None``, a scalar or an infinite
         diagonal marks an outage.
     directions : sequence of (n,) array, optional
         Non-zero direction :math:`\mathbf z_i` per estimator (WF Eq. (22)).
     sigmas : (N,) array, optional
-        Positive variances :math:`\sigma_i`, (m/s)^2, per estimator (Remark (i)).
+        Positive variances :math:`\sigma_i`, (m/s)², per estimator (Remark (i)).
 
     Returns
     -------
@@ -653,7 +653,7 @@ def optimal_weights(covariances: Sequence[ArrayLike | float | None]) -> Array:
     Parameters
     ----------
     covariances : sequence of (n, n) array, float or None
-        Covariance of each local estimator, (m/s)^2; ``None``, a scalar or an infinite
+        Covariance of each local estimator, (m/s)²; ``None``, a scalar or an infinite
         diagonal marks an outage.
 
     Returns
@@ -691,7 +691,7 @@ def federated_covariance_bound(
     Parameters
     ----------
     covariances : sequence of (n, n) array, float or None
-        Covariance of each local estimator, (m/s)^2; ``None``, a scalar or an infinite
+        Covariance of each local estimator, (m/s)²; ``None``, a scalar or an infinite
         diagonal marks an outage.
     weights : (N,) array, optional
         Weights :math:`k_i` (dimensionless); default :func:`feasible_weights`.
@@ -699,7 +699,7 @@ def federated_covariance_bound(
     Returns
     -------
     (n, n) ndarray
-        Bound on the covariance of the fused error, (m/s)^2.
+        Bound on the covariance of the fused error, (m/s)².
 
     Raises
     ------
@@ -743,13 +743,13 @@ def minkowski_trace_bound(covariances: Sequence[ArrayLike | float | None]) -> fl
     Parameters
     ----------
     covariances : sequence of (n, n) array, float or None
-        Covariance of each local estimator, (m/s)^2; ``None``, a scalar or an infinite
+        Covariance of each local estimator, (m/s)²; ``None``, a scalar or an infinite
         diagonal marks an outage.
 
     Returns
     -------
     float
-        Bound on the mean squared fused error, (m/s)^2.
+        Bound on the mean squared fused error, (m/s)².
 
     References
     ----------

@@ -445,7 +445,7 @@ class NavigatorErrorModel:
 
     Attributes
     ----------
-    accel_bias, accel_tau_s : Markov accelerometer bias stability (m/s^2, 1 sigma,
+    accel_bias, accel_tau_s : Markov accelerometer bias stability (m/s², 1 sigma,
         stationary) and its correlation time (s).
     gyro_bias, gyro_tau_s : Markov gyro bias stability (rad/s, 1 sigma, stationary) and its
         correlation time (s).

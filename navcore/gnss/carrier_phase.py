@@ -209,7 +209,7 @@ def dd_covariance(nu: int, sigma_phase: float, n_baselines: int = 2) -> Array:
     Returns
     -------
     ((nu - 1) n_baselines, (nu - 1) n_baselines) ndarray
-        Covariance, rad^2.
+        Covariance, rad².
 
     Raises
     ------

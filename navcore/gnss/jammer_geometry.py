@@ -560,7 +560,7 @@ def pll_jitter_threshold_dbhz(
     """C/N0 (dB-Hz) at which ``k_sigma`` times the carrier loop's thermal jitter equals the
     allowed phase error.
 
-    Positive root of ``a x^2 - Bn x - Bn/(2T) = 0`` with ``a = (phi_max/k)^2`` (rad^2).
+    Positive root of ``a x^2 - Bn x - Bn/(2T) = 0`` with ``a = (phi_max/k)^2`` (rad²).
 
     Parameters
     ----------
@@ -670,7 +670,7 @@ def pll_thermal_jitter_deg(
 ) -> Array | float:
     r"""Carrier-loop thermal phase jitter, deg (1 sigma).
 
-    :math:`\sigma_\phi^2 = \frac{B_n}{C/N_0}\big(1 + \frac{1}{2T\,C/N_0}\big)` rad^2 (Kaplan &
+    :math:`\sigma_\phi^2 = \frac{B_n}{C/N_0}\big(1 + \frac{1}{2T\,C/N_0}\big)` rad² (Kaplan &
     Hegarty, Sec. 5.6.2), the quantity :func:`pll_jitter_threshold_dbhz` holds at its limit.
     Arrays broadcast.
 

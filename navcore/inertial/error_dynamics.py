@@ -11,10 +11,10 @@ block                     size  meaning
 ``gyro bias``             3     gyro bias (the papers' gyro drift), random constant (rad/s)
 ``gyro scale factor``     3     (-)
 ``gyro misalignment``     3     small-angle input-axis misalignment of the gyro triad (rad)
-``accel bias``            3     (m/s^2)
+``accel bias``            3     (m/s²)
 ``accel scale factor``    3     (-)
 ``accel misalignment``    3     small-angle input-axis misalignment of the accelerometers (rad)
-``gravity``               3     gravity anomaly, first-order Gauss-Markov (m/s^2)
+``gravity``               3     gravity anomaly, first-order Gauss-Markov (m/s²)
 ``altimeter bias``        1     barometric altimeter bias, first-order Gauss-Markov (m)
 ``clock bias``            1     user clock bias (m)
 ``clock drift``           1     user clock drift (m/s)
@@ -129,7 +129,7 @@ def schuler_frequency(g: float = G0, radius: float = SCHULER_RADIUS_M) -> float:
     Parameters
     ----------
     g : float, default G0
-        Gravity magnitude, m/s^2 (``> 0``).
+        Gravity magnitude, m/s² (``> 0``).
     radius : float, default SCHULER_RADIUS_M
         Earth radius, m (``> 0``).
 
@@ -164,7 +164,7 @@ def schuler_period(g: float = G0, radius: float = SCHULER_RADIUS_M) -> float:
     Parameters
     ----------
     g : float, default G0
-        Gravity magnitude, m/s^2 (``> 0``).
+        Gravity magnitude, m/s² (``> 0``).
     radius : float, default SCHULER_RADIUS_M
         Earth radius, m (``> 0``).
 
@@ -225,9 +225,9 @@ class ClockModel:
     g_sensitivity_sigma : float
         1-sigma g-sensitivity of the frequency (m/s per g).
     bias_psd : float
-        White frequency-noise PSD driving the bias (m^2/s).
+        White frequency-noise PSD driving the bias (m²/s).
     drift_psd : float
-        Random-walk frequency PSD driving the drift (m^2/s^3).
+        Random-walk frequency PSD driving the drift (m²/s³).
     """
 
     bias_sigma: float
@@ -250,7 +250,7 @@ class ErrorSources:
     imu : ImuSpec
         Inertial instrument errors (biases and scale factors are random constants).
     gravity : GaussMarkov or None
-        Gravity-anomaly process per axis (m/s^2).
+        Gravity-anomaly process per axis (m/s²).
     altimeter : GaussMarkov or None
         Barometric altimeter bias (m).
     clock : ClockModel or None
@@ -495,7 +495,7 @@ def error_dynamics(
         Blocks named as in :func:`ins_error_layout` (must contain position, velocity and
         misalignment).
     f_ned : (3,) array
-        Specific force in NED (m/s^2); ``(0, 0, -g)`` at rest.
+        Specific force in NED (m/s²); ``(0, 0, -g)`` at rest.
     C_bn : (3, 3) array
         Body-to-NED direction cosine matrix (a rotation matrix).
     omega_ib_b : (3,) array
@@ -507,7 +507,7 @@ def error_dynamics(
     sources : ErrorSources, optional
         Supplies the Gauss-Markov distance constants (ignored if absent).
     g : float
-        Gravity magnitude (m/s^2); the default is the constant standard gravity G0 (what the
+        Gravity magnitude (m/s²); the default is the constant standard gravity G0 (what the
         papers assume), :func:`navcore.gravity.normal_gravity` gives the WGS-84 value at
         ``lat``, ``h``.
     vertical_channel : bool
@@ -902,7 +902,7 @@ def gyrocompass_alignment(
     C_bn : (3, 3) array, optional
         Body-to-NED attitude, a rotation matrix (default identity).
     g : float, default G0
-        Gravity magnitude, m/s^2 (G0 is the papers' constant; see
+        Gravity magnitude, m/s² (G0 is the papers' constant; see
         :func:`navcore.gravity.normal_gravity`).
     deg : bool, default False
         The latitude is in degrees.
@@ -910,7 +910,7 @@ def gyrocompass_alignment(
     Returns
     -------
     (n, n) ndarray
-        ``P0`` with its attitude rows and columns replaced (rad^2 and cross terms).
+        ``P0`` with its attitude rows and columns replaced (rad² and cross terms).
 
     References
     ----------
@@ -975,7 +975,7 @@ def levelling_alignment(
     C_bn : (3, 3) array, optional
         Body-to-NED attitude, a rotation matrix (default identity).
     g : float, default G0
-        Gravity magnitude, m/s^2.
+        Gravity magnitude, m/s².
     tilt_noise_sigma : float, default 0.0
         Independent tilt 1-sigma per horizontal axis, rad (``>= 0``).
     deg : bool, default False

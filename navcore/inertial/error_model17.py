@@ -8,7 +8,7 @@ block               size  meaning
 ``position``        3     NED position error (m)
 ``velocity``        3     NED velocity error (m/s)
 ``misalignment``    3     n-frame attitude error :math:`\Delta\psi` (rad)
-``accel bias``      3     accelerometer bias error (m/s^2)
+``accel bias``      3     accelerometer bias error (m/s²)
 ``gyro bias``       3     gyro bias error (rad/s)
 ``clock bias``      1     receiver clock bias (m)
 ``clock drift``     1     receiver clock drift (m/s)
@@ -136,7 +136,7 @@ def error_dynamics_17(C_bn: ArrayLike, f_n: ArrayLike) -> Array:
     C_bn : (3, 3) or (N, 3, 3) array
         Computed body-to-NED rotation :math:`\\hat R_b^n`.
     f_n : (3,) or (N, 3) array
-        Computed specific force in NED, :math:`\\hat a^n_{ib} = \\hat R_b^n \\hat a^b_{ib}` (m/s^2).
+        Computed specific force in NED, :math:`\\hat a^n_{ib} = \\hat R_b^n \\hat a^b_{ib}` (m/s²).
 
     Returns
     -------
@@ -186,7 +186,7 @@ def noise_psd_17(
     gyro_noise : float
         Root PSD of the white gyro noise, rad/sqrt(s) (``>= 0``).
     accel_bias_walk : float, default 0.0
-        Root PSD of the accelerometer-bias random walk, m/s^2/sqrt(s).
+        Root PSD of the accelerometer-bias random walk, m/s²/sqrt(s).
     gyro_bias_walk : float, default 0.0
         Root PSD of the gyro-bias random walk, rad/s/sqrt(s).
     clock_drift_walk : float, default 0.0

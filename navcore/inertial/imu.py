@@ -1,7 +1,7 @@
 """IMU error specifications as data, in SI units with the published units kept alongside.
 
 An :class:`ImuSpec` holds the 1-sigma values of the error sources a covariance analysis or a
-simulation needs. Values are stored in SI (rad/s, m/s^2, dimensionless scale factor, rad,
+simulation needs. Values are stored in SI (rad/s, m/s², dimensionless scale factor, rad,
 root PSDs in rad/sqrt(s) and m/s/sqrt(s)); build specs from the papers' units with the
 factors of :mod:`navcore.units`, e.g. ``gyro_bias=0.01 * DEG_PER_H``. A value beyond what
 any inertial sensor has (:data:`IMU_SPEC_LIMITS`: a gyro bias above 0.1 rad/s, about
@@ -74,7 +74,7 @@ class ImuSpec:
     gyro_random_walk : float
         Angle random walk, root PSD of rate noise, rad/sqrt(s).
     accel_bias : float
-        Accelerometer bias, m/s^2.
+        Accelerometer bias, m/s².
     accel_scale_factor : float
         Accelerometer scale-factor error, dimensionless.
     accel_misalignment : float

@@ -140,7 +140,7 @@ def residual_acceleration_covariance(sensitivity: ArrayLike, error_covariance: A
         Sensitivity of the residual acceleration to the error states (e.g.
         :func:`scale_factor_misalignment_sensitivity`).
     error_covariance : (n, n) array
-        Covariance of the error states (scale factors dimensionless, misalignments rad^2).
+        Covariance of the error states (scale factors dimensionless, misalignments rad²).
 
     Returns
     -------

@@ -479,14 +479,14 @@ def location_error_covariance(H: ArrayLike, error_covariance: ArrayLike, W: Arra
     H : (M, n) array
         Jacobian of WF Eq. (4) (Hz per m and Hz per Hz).
     error_covariance : (M, M) array
-        Covariance :math:`\Sigma` of the frequency errors, Hz^2.
+        Covariance :math:`\Sigma` of the frequency errors, Hz².
     W : (M, M) or (M,) array, optional
         Positive-definite weight (identity by default; a vector means a diagonal).
 
     Returns
     -------
     (n, n) ndarray
-        Covariance of the error of ``[p^e, f0]`` (m^2, Hz^2 and cross terms).
+        Covariance of the error of ``[p^e, f0]`` (m², Hz² and cross terms).
 
     Raises
     ------

@@ -15,7 +15,7 @@ coordinates are then in error by (SP Sec. 2.6.4)
 Sign convention: errors are *computed minus true*, and :math:`\delta\alpha` is the small
 rotation that carries the true frame into the computed one, :math:`\hat C = (I +
 [\delta\alpha\times])\,C`: a lever arm measured in the vehicle frame is resolved as
-:math:`\hat C r^b = r + \delta\alpha\times r`, which is the paper's formula. The psi angle of
+:math:`\hat C r^b = r + \delta\alpha\times r`, which is the paper's formula. The angle :math:`\psi` of
 :mod:`navcore.inertial.error_dynamics` has the opposite sign (:math:`\hat C = (I -
 [\psi\times])\,C`, so :math:`\delta\alpha = -\psi`): convert a covariance of that model with
 :func:`navcore.inertial.error_dynamics.psi_to_attitude_error` before passing it here, or the
@@ -106,9 +106,9 @@ def target_location_covariance(
     Parameters
     ----------
     P_position : (3, 3) array
-        Vehicle position error covariance, m^2.
+        Vehicle position error covariance, m².
     P_attitude : (3, 3) array
-        Attitude error covariance, rad^2.
+        Attitude error covariance, rad².
     r_target_m : (3,) array
         Lever arm from vehicle to target, m (same frame).
     P_position_attitude : (3, 3) array, optional
@@ -118,7 +118,7 @@ def target_location_covariance(
     Returns
     -------
     (3, 3) ndarray
-        Target error covariance, m^2.
+        Target error covariance, m².
 
     Raises
     ------
