@@ -54,6 +54,10 @@ _DIRECTIVE = re.compile(r"^(\s*)\.\. ")
 _ROLE = re.compile(r":[\w:+-]+:`[^`]*`")
 _LITERAL = re.compile(r"``.+?``", re.S)
 _BACKTICK_NAME = re.compile(r"`[^`\n]*`_{0,2}")
+_STRONG = re.compile(r"\*\*(?=\S)(.+?)(?<=\S)\*\*")  # reST bold, not a power
+#: Names of distributions and functions that are words, not symbols ("chi-square", "gamma
+#: function", "beta distribution").
+_WORDS = re.compile(r"\bchi-squared?\b|\b(?:gamma|beta)(?= (?:functions?|distributions?|variates?)\b)")
 _URL = re.compile(r"<?https?://\S+|\bdoi:\S+|\b10\.\d{4,}/\S+")
 
 
@@ -116,6 +120,8 @@ def prose(doc: str) -> str:
     text = _ROLE.sub(" ", text)
     text = _LITERAL.sub(" ", text)
     text = _BACKTICK_NAME.sub(" ", text)
+    text = _STRONG.sub(r"\1", text)
+    text = _WORDS.sub(" ", text)
     return _URL.sub(" ", text)
 
 
@@ -151,6 +157,8 @@ def plain_math(doc: str) -> list[tuple[str, str]]:
         ),
         ("Example.\n\nExamples\n--------\n>>> sigma_0 = 1e-6\n>>> sigma_0 ** 2\n1e-12", []),
         ("Use ``sigma_0 ** 2`` or :func:`rms_xy` or `sigma_0`, see https://x.org/a_b.", []),
+        ("Decides when **more than** half agree, not x**2.", ["power"]),
+        ("A chi-square law, an incomplete gamma function; chi = 2.", ["Greek name"]),
         ("Code::\n\n    x = a_b ** 2\n\nends.", []),
         ("The 1-:math:`\\sigma` noise, 3 dB, 0.5 s, Eq. (3.8.16), Table 2.1.", []),
     ],

@@ -1,30 +1,36 @@
-"""Lower bounds on false and ambiguous aircraft locations under barrage jamming (ATC-10 Sec. 2).
+r"""Lower bounds on false and ambiguous aircraft locations under barrage jamming (ATC-10 Sec. 2).
 
-Four satellites receive each aircraft's pulse; each of ``4 N_T`` matched filters declares a
-pulse in a sample when it crosses a threshold set for a per-sample detection probability
-``p_d`` (false-alarm probability ``p_f``, :mod:`navcore.detection.neyman_pearson`). A
-*list* for aircraft ``i`` in one repetition segment is non-empty when a consistent
-quadruplet of declarations exists. Over ``K`` segments the first stage decides "aircraft
-present" when **more than** ``K t`` of the ``K`` lists are non-empty (ATC-10 Sec. 2.4,
-(A.11), (B.1)).
+Four satellites receive each aircraft's pulse; each of :math:`4 N_T` matched filters
+declares a pulse in a sample when it crosses a threshold set for a per-sample detection
+probability :math:`p_d` (false-alarm probability :math:`p_f`,
+:mod:`navcore.detection.neyman_pearson`). A *list* for aircraft :math:`i` in one repetition
+segment is non-empty when a consistent quadruplet of declarations exists. Over :math:`K`
+segments the first stage decides "aircraft present" when **more than** :math:`K t` of the
+:math:`K` lists are non-empty (ATC-10 Sec. 2.4, (A.11), (B.1)).
 
 Models, with their equations:
 
-* the Chernoff exponent of that rule, maximised over ``nu`` in closed form,
-  ``E(t, q) = D(t || q)`` for ``t < q`` and 0 otherwise, with ``q = p_d**4`` (App. A,
-  (A.12)-(A.18)), so ``P_DL = 1 - exp(-K E)`` (Eq. 2.4.2); at ``t = 0`` it is exactly
-  ``1 - (1 - q)**K``;
-* ``F(p_f) = [1 - (1 - p_f)**(2 B alpha)] [1 - (1 - p_f)**(4 B beta)]**3`` (B.6) and
-  ``G(p_f) = [1 - (1 - p_f)**(2 B alpha)] [1 - (1 - p_f)**n_v]**3`` with
-  ``n_v = (8 B / 3) v alpha / c`` (C.14);
-* ``N_FL / N_T = (1 - N/N_T) F**(K t + 1)`` (Eq. 2.5.5) and
-  ``N_ADL / N_T = 1/2 (N/N_T) P_DL G**(K - 1) F`` (Eq. 2.5.12 as corrected);
-* the jammer-to-signal ratio ``x = J / (P0 B tau)`` at which a bound reaches a level, and the
-  jammer ERP ``10 log10(x P0 tau B)`` dBW.
+* the Chernoff exponent of that rule, maximised over :math:`\nu` in closed form,
+  :math:`E(t, q) = D(t \,\|\, q)` for :math:`t < q` and 0 otherwise, with :math:`q = p_d^4`
+  (App. A, (A.12)-(A.18)), so :math:`P_{DL} = 1 - e^{-K E}` (Eq. 2.4.2); at :math:`t = 0` it
+  is exactly :math:`1 - (1 - q)^K`;
+* (B.6) and (C.14):
 
-All probabilities are carried as natural logarithms: ``(1 - p)**n`` with ``n = 2e7`` and
-``p = 1e-20`` and products of 999 factors stay exact where direct evaluation returns 0,
-1 or ``-inf``.
+  .. math::
+
+      F(p_f) &= [1 - (1 - p_f)^{2 B \alpha}]\, [1 - (1 - p_f)^{4 B \beta}]^3, \\
+      G(p_f) &= [1 - (1 - p_f)^{2 B \alpha}]\, [1 - (1 - p_f)^{n_v}]^3,
+      \qquad n_v = \frac{8 B}{3} \frac{v \alpha}{c};
+
+* :math:`N_{FL} / N_T = (1 - N/N_T) F^{K t + 1}` (Eq. 2.5.5) and
+  :math:`N_{ADL} / N_T = \frac12 (N/N_T) P_{DL} G^{K - 1} F` (Eq. 2.5.12 as corrected);
+* the jammer-to-signal ratio :math:`x = J / (P_0 B \tau)` at which a bound reaches a level,
+  and the jammer ERP :math:`10 \log_{10}(x P_0 \tau B)` dBW.
+
+All probabilities are carried as natural logarithms: :math:`(1 - p)^n` with
+:math:`n = 2 \times 10^7` and :math:`p = 10^{-20}` and products of 999 factors stay exact
+where direct evaluation returns 0, 1 or ``-inf``.
+
 """
 
 from __future__ import annotations
