@@ -17,7 +17,7 @@ Conventions
   product, and the quaternion of ``C_bn`` satisfies :math:`v^n = q \otimes v^b \otimes q^*`.
   A rotation by angle :math:`\alpha` about unit axis :math:`u` is
   :math:`q = [\cos(\alpha/2), u \sin(\alpha/2)]`. A function that rotates with a quaternion
-  requires it to be a unit quaternion (to within 1e-6); :func:`quat_multiply`,
+  requires it to be a unit quaternion (to within :math:`10^{-6}`); :func:`quat_multiply`,
   :func:`quat_conjugate` and :func:`quat_normalize` are algebra and take any.
 - ``skew(v) @ w == cross(v, w)``.
 - Angles in radians unless ``deg=True`` (then every angle in and out is in degrees);

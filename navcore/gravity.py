@@ -118,7 +118,7 @@ def _terms(lat: Array, ell: Ellipsoid) -> tuple[Array, Array, float, Array]:
 def normal_gravity(
     lat: ArrayLike, h: ArrayLike = 0.0, *, deg: bool = False, ellipsoid: Ellipsoid = WGS84
 ) -> Array:
-    """Magnitude of normal gravity at geodetic latitude ``lat`` and height ``h``.
+    r"""Magnitude of normal gravity at geodetic latitude ``lat`` and height ``h``.
 
     Parameters
     ----------
@@ -126,7 +126,7 @@ def normal_gravity(
         Geodetic latitude, rad (deg with ``deg=True``).
     h : float or array, default 0.0
         Height above the ellipsoid, m, in [-20 km, 100 km] (the second-order expansion in
-        ``h / a``; its neglected third-order term is below 4e-6 of g at 100 km).
+        ``h / a``; its neglected third-order term is below :math:`4 \times 10^{-6}` of g at 100 km).
     deg : bool, default False
         The latitude is in degrees.
     ellipsoid : Ellipsoid, default WGS84

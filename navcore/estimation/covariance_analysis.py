@@ -141,7 +141,7 @@ def embedding(filter_layout: StateLayout, truth_layout: StateLayout) -> NDArray[
 
 @dataclass(frozen=True)
 class CovarianceAnalysis:
-    """Result of :func:`run_covariance_analysis`.
+    r"""Result of :func:`run_covariance_analysis`.
 
     Attributes
     ----------
@@ -153,9 +153,9 @@ class CovarianceAnalysis:
     filter_var : (N, n_f) array
         Diagonal of the filter's own covariance.
     horizontal_position : (N,) array
-        True rss 1-sigma horizontal position error (m).
+        True rss 1-:math:`\sigma` horizontal position error (m).
     horizontal_velocity : (N,) array
-        True rss 1-sigma horizontal velocity error (m/s).
+        True rss 1-:math:`\sigma` horizontal velocity error (m/s).
     n_updates : (N,) int array
         Scalar measurements processed at each time.
     snapshots : dict
@@ -178,7 +178,7 @@ class CovarianceAnalysis:
     final_filter: Array | None = None
 
     def sigma(self, block: str, *, filter_model: bool = False) -> Array:
-        """1-sigma time series of a block (``(N, size)``), true or as the filter believes."""
+        r"""1-:math:`\sigma` time series of a block (``(N, size)``), true or as the filter believes."""
         layout = self.filter_layout if filter_model else self.truth_layout
         var = self.filter_var if filter_model else self.true_var
         return np.sqrt(np.clip(var[:, layout.slice(block)], 0.0, None))
@@ -207,7 +207,7 @@ def run_covariance_analysis(
     stride: int = 10,
     filter_added_psd: ArrayLike | None = None,
 ) -> CovarianceAnalysis | list[CovarianceAnalysis]:
-    """Propagate the true and the filter covariance along a trajectory.
+    r"""Propagate the true and the filter covariance along a trajectory.
 
     Parameters
     ----------
@@ -257,7 +257,7 @@ def run_covariance_analysis(
     -------
     CovarianceAnalysis or list of CovarianceAnalysis
         Variances of the true error and of the filter's own estimate per step (state
-        units squared), horizontal position (m) and velocity (m/s) 1-sigma, update counts,
+        units squared), horizontal position (m) and velocity (m/s) 1-:math:`\sigma`, update counts,
         snapshots and final covariances; a list (one per source) for a batch of sources.
 
     Raises
@@ -275,7 +275,7 @@ def run_covariance_analysis(
 
     Examples
     --------
-    An unaided INS with an accelerometer bias of 1 mg (1-sigma) per axis: after 60 s the
+    An unaided INS with an accelerometer bias of 1 mg (1-:math:`\sigma`) per axis: after 60 s the
     horizontal position error is close to ``sqrt(2) b t^2 / 2``.
 
     >>> import numpy as np
@@ -1005,7 +1005,7 @@ def tightly_coupled_schedule(
     mask_rad: float = 0.0,
     g_load: NDArray[np.float64] | None = None,
 ) -> Schedule:
-    """Pseudorange (code lock) and range rate (carrier lock) from each channel every ``every`` steps.
+    r"""Pseudorange (code lock) and range rate (carrier lock) from each channel every ``every`` steps.
 
     Rows (truth layout): ``d rho = -u . dr + db + b_pr[c]``, ``d rho_dot = -u . dv + d(b_dot) + b_rr[c]``,
     with ``u`` the NED line-of-sight unit vector to the satellite, ``dr`` (m) and ``dv`` (m/s)
@@ -1025,9 +1025,9 @@ def tightly_coupled_schedule(
     carrier : (N, n_channels) bool array
         Carrier lock per step and channel.
     pseudorange_noise : float
-        1-sigma white pseudorange noise per measurement, m (``> 0``).
+        1-:math:`\sigma` white pseudorange noise per measurement, m (``> 0``).
     range_rate_noise : float
-        1-sigma white range-rate noise per measurement, m/s (``> 0``).
+        1-:math:`\sigma` white range-rate noise per measurement, m/s (``> 0``).
     every : int, default 1
         Measure at every ``every``-th step.
     mask_rad : float, default 0.0
@@ -1132,7 +1132,7 @@ def loosely_coupled_schedule(
     max_ehe_m: float = 100.0,
     mask_rad: float = 0.0,
 ) -> Schedule:
-    """The receiver's position solution every ``interval_steps`` steps.
+    r"""The receiver's position solution every ``interval_steps`` steps.
 
     A fix is used when at least four codes are tracked and the expected horizontal error is
     below ``max_ehe_m``. The receiver solves position and clock by least squares from the
@@ -1151,9 +1151,9 @@ def loosely_coupled_schedule(
     code : (N, n_channels) bool array
         Code lock per step and channel (see :func:`lock_table`).
     pseudorange_noise : float
-        1-sigma white pseudorange noise, m (``> 0``).
+        1-:math:`\sigma` white pseudorange noise, m (``> 0``).
     pseudorange_bias_sigma : float, default 0.0
-        1-sigma per-channel pseudorange bias, m (counts in the UERE of the EHE test).
+        1-:math:`\sigma` per-channel pseudorange bias, m (counts in the UERE of the EHE test).
     interval_steps : int, default 10
         Steps between fixes.
     max_ehe_m : float, default 100.0
@@ -1223,7 +1223,7 @@ def loosely_coupled_schedule(
 
 
 def baro_schedule(layout: StateLayout, *, noise_m: float, every: int = 1) -> Schedule:
-    """Barometric altitude: ``dz = -dr_D - b_alt + noise`` (height = minus down).
+    r"""Barometric altitude: ``dz = -dr_D - b_alt + noise`` (height = minus down).
 
     Parameters
     ----------
@@ -1231,7 +1231,7 @@ def baro_schedule(layout: StateLayout, *, noise_m: float, every: int = 1) -> Sch
         Truth layout the rows refer to (needs a ``"position"`` block; an ``"altimeter bias"``
         block, if present, enters the row).
     noise_m : float
-        1-sigma white altitude noise, m (``> 0``).
+        1-:math:`\sigma` white altitude noise, m (``> 0``).
     every : int, default 1
         Measure at every ``every``-th step.
 
@@ -1298,7 +1298,7 @@ def doppler_schedule(
     trajectory : Trajectory
         Flight path giving the attitude and velocity at each step.
     noise_mps : float
-        1-sigma white noise per body axis, m/s (``> 0``).
+        1-:math:`\sigma` white noise per body axis, m/s (``> 0``).
     every : int, default 1
         Measure at every ``every``-th step.
     active : (N,) bool array, optional

@@ -419,7 +419,7 @@ def sequential_scalar_updates(x: Array, P: Array, y: Array, H: Array, r: Array) 
 # --- scenario ---------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class GnssNoise:
-    """1-sigma GPS measurement noises (assumptions: the paper gives none).
+    r"""1-:math:`\sigma` GPS measurement noises (assumptions: the paper gives none).
 
     A noise is ``None`` when the scenario does not measure that quantity (a stand-alone INS
     has none of them); :func:`run_monte_carlo` raises if a mode needs one that is ``None``.
@@ -444,7 +444,7 @@ class GnssNoise:
 
 @dataclass(frozen=True)
 class Scenario:
-    """A straight, unaccelerated flight observed by an IMU and a GPS receiver.
+    r"""A straight, unaccelerated flight observed by an IMU and a GPS receiver.
 
     Attributes
     ----------
@@ -467,7 +467,7 @@ class Scenario:
         Averaging time (s) of the initialisation (levelling, gyro-bias and vertical
         accelerometer calibration); ``None`` for a run without initialisation.
     heading_sigma : float
-        1-sigma true heading offset from the GPS track (crab angle), rad: what Eq. 4 cannot see.
+        1-:math:`\sigma` true heading offset from the GPS track (crab angle), rad: what Eq. 4 cannot see.
     pos0_sigma, vel0_sigma : float
         Errors of the initial GPS position (m) and velocity (m/s).
     clock_bias_sigma, clock_drift_sigma : float
@@ -515,7 +515,7 @@ class Scenario:
 
 @dataclass(frozen=True)
 class MonteCarloResult:
-    """Errors (estimated - true) at each GPS epoch, for every run, and the filter's 1-sigma.
+    r"""Errors (estimated - true) at each GPS epoch, for every run, and the filter's 1-:math:`\sigma`.
 
     Attributes
     ----------
@@ -526,7 +526,7 @@ class MonteCarloResult:
     att_err : (N, K, 3) arrays
         Roll, pitch, heading errors (rad).
     pos_sigma, vel_sigma, att_sigma : (K, 3) arrays
-        Filter 1-sigma (root of the run-averaged variance); attitude mapped to Euler angles.
+        Filter 1-:math:`\sigma` (root of the run-averaged variance); attitude mapped to Euler angles.
     n_visible : (K,) int array
     """
 
@@ -616,7 +616,7 @@ def run_monte_carlo(
     batches: int = 1,
     n_jobs: int | None = None,
 ) -> MonteCarloResult:
-    """Seeded Monte Carlo of one filter configuration over ``n_runs`` runs, batched.
+    r"""Seeded Monte Carlo of one filter configuration over ``n_runs`` runs, batched.
 
     The same ``seed`` gives the same truth (IMU errors, noises, GPS noises) for every
     ``mode``, so configurations are compared on common random numbers. The runs advance
@@ -655,7 +655,7 @@ def run_monte_carlo(
     -------
     MonteCarloResult
         Per-run position (m), velocity (m/s) and Euler-angle (rad) errors at each GPS epoch,
-        the filter's mean 1-sigma of each, and the number of visible satellites.
+        the filter's mean 1-:math:`\sigma` of each, and the number of visible satellites.
 
     Raises
     ------
@@ -740,9 +740,9 @@ def monte_carlo_key(
     attitude_min_sats: int = 4,
     batches: int = 1,
 ) -> str:
-    """Digest of everything the numbers of :func:`run_monte_carlo` depend on, for memoising runs.
+    r"""Digest of everything the numbers of :func:`run_monte_carlo` depend on, for memoising runs.
 
-    Two calls with the same key return the same errors and 1-sigma (``n_jobs`` does not change
+    Two calls with the same key return the same errors and 1-:math:`\sigma` (``n_jobs`` does not change
     them; the result's ``n_visible`` echoes the scenario's schedule). The
     key holds every argument and every field of the scenario exactly, except what the call
     provably never reads: the stand-alone INS (``"ins"``) uses no GPS measurement, so of the
@@ -957,9 +957,9 @@ def _monte_carlo_batch(
     initialise: bool,
     attitude_min_sats: Sequence[int],
 ) -> list[tuple[MonteCarloResult, Array, Array, Array]]:
-    """``n_runs`` runs from ``default_rng(seed)`` of each scenario of ``scs`` (one task of
+    r"""``n_runs`` runs from ``default_rng(seed)`` of each scenario of ``scs`` (one task of
     :func:`run_monte_carlo`, or one batch of :func:`run_monte_carlo_batch`): per scenario, the
-    result without its 1-sigma columns, and the run-averaged variances of position, velocity and
+    result without its 1-:math:`\sigma` columns, and the run-averaged variances of position, velocity and
     attitude.
 
     The scenarios share everything :func:`batch_group_key` digests; what else they hold (noises,

@@ -51,12 +51,12 @@ Array = NDArray[np.float64]
 
 @implements("SP Table 2.7")
 def search_cells(sigma: ArrayLike, cell: float, n_sigma: float = 1.0) -> Array | int:
-    """Number of cells covering +-n_sigma*sigma: ``ceil(2 n_sigma sigma / cell)``, at least 1.
+    r"""Number of cells covering +-n_sigma*sigma: ``ceil(2 n_sigma sigma / cell)``, at least 1.
 
     Parameters
     ----------
     sigma : array_like
-        1-sigma uncertainty (``>= 0``; m, m/s or Hz, the unit of ``cell``).
+        1-:math:`\sigma` uncertainty (``>= 0``; m, m/s or Hz, the unit of ``cell``).
     cell : float
         Cell width (``> 0``), same unit.
     n_sigma : float, default 1.0
@@ -143,14 +143,14 @@ def search_time(
     rate_cell_mps: float,
     n_sigma: float = 1.0,
 ) -> Array | float:
-    """Time to search the +-n_sigma region (SP Sec. 2.5 Delta T, brackets read as ceilings).
+    r"""Time to search the +-n_sigma region (SP Sec. 2.5 Delta T, brackets read as ceilings).
 
     Parameters
     ----------
     sigma_range_m : array_like
-        1-sigma range uncertainty, m (``>= 0``).
+        1-:math:`\sigma` range uncertainty, m (``>= 0``).
     sigma_range_rate_mps : array_like
-        1-sigma range-rate uncertainty, m/s (``>= 0``).
+        1-:math:`\sigma` range-rate uncertainty, m/s (``>= 0``).
     dwell_s : float
         Dwell per cell, s (``> 0``).
     range_cell_m : float

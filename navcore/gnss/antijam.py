@@ -342,7 +342,7 @@ def free_space_js_db(
 def code_tracking_sigma_chips(
     cn0_dbhz: ArrayLike, spacing_chips: float = 0.5, integration_s: float = 1.0, coherent_s: float = 0.02
 ) -> Array | float:
-    r"""1-sigma code-phase error (chips) of a noncoherent early-minus-late power DLL.
+    r"""1-:math:`\sigma` code-phase error (chips) of a noncoherent early-minus-late power DLL.
 
     .. math::
 
@@ -474,14 +474,14 @@ class NavigatorErrorModel:
 
 @dataclass(frozen=True)
 class RunResult:
-    """Monte Carlo output: impact errors (runs, 2), final filter sigma per axis, lock history.
+    r"""Monte Carlo output: impact errors (runs, 2), final filter sigma per axis, lock history.
 
     Attributes
     ----------
     impact_errors_m : (runs, 2) ndarray
         Horizontal impact errors (north, east), m.
     filter_sigma_m : float
-        The filter's final 1-sigma per axis, m.
+        The filter's final 1-:math:`\sigma` per axis, m.
     locked : (N,) bool ndarray
         Code lock at each step.
     seed : int
@@ -522,7 +522,7 @@ def simulate_impact_errors(
     seed: int = 0,
     dt: float = 1.0,
 ) -> RunResult:
-    """Monte Carlo of the reduced navigator along a fix-noise history (NaN where unlocked).
+    r"""Monte Carlo of the reduced navigator along a fix-noise history (NaN where unlocked).
 
     Parameters
     ----------
@@ -541,7 +541,7 @@ def simulate_impact_errors(
     Returns
     -------
     RunResult
-        Horizontal impact errors per run ``(runs, 2)`` (m), the filter's final 1-sigma per
+        Horizontal impact errors per run ``(runs, 2)`` (m), the filter's final 1-:math:`\sigma` per
         axis (m), the lock history and the seed.
 
     Raises

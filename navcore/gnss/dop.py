@@ -143,7 +143,7 @@ def dop_from_lines_of_sight(u_ned: ArrayLike, *, weights: ArrayLike | None = Non
     Raises
     ------
     ValueError
-        If a row of ``u_ned`` is not a unit vector (to within 1e-6: positions in metres are
+        If a row of ``u_ned`` is not a unit vector (to within :math:`10^{-6}`: positions in metres are
         not lines of sight), ``u_ned`` does not end in (K, 3), or a weight is negative.
 
     References

@@ -557,7 +557,7 @@ def pll_jitter_threshold_dbhz(
     *,
     loop: str = "costas",
 ) -> Array | float:
-    """C/N0 (dB-Hz) at which ``k_sigma`` times the carrier loop's thermal jitter equals the
+    r"""C/N0 (dB-Hz) at which ``k_sigma`` times the carrier loop's thermal jitter equals the
     allowed phase error.
 
     Positive root of ``a x^2 - Bn x - Bn/(2T) = 0`` with ``a = (phi_max/k)^2`` (rad²).
@@ -570,7 +570,7 @@ def pll_jitter_threshold_dbhz(
         Allowed phase error (deg); default: the rule of ``loop`` (45 deg for a Costas loop,
         90 deg for a pure PLL). A value given here overrides the rule (e.g. a printed one).
     k_sigma : float
-        Multiple of the 1-sigma jitter that must stay within the allowed error.
+        Multiple of the 1-:math:`\sigma` jitter that must stay within the allowed error.
     coherent_s : float
         Coherent integration (predetection) time :math:`T` (s).
     loop : {"costas", "pll"}
@@ -620,7 +620,7 @@ def carrier_loss_threshold_dbhz(
     *,
     loop: str = "costas",
 ) -> Array | float:
-    """Carrier-loop loss threshold: the larger of a C/N0 floor and the jitter threshold.
+    r"""Carrier-loop loss threshold: the larger of a C/N0 floor and the jitter threshold.
 
     The jitter threshold is :func:`pll_jitter_threshold_dbhz` for the given ``loop``.
 
@@ -633,7 +633,7 @@ def carrier_loss_threshold_dbhz(
     max_phase_error_deg : float, optional
         Allowed phase error, deg (default: the rule of ``loop``).
     k_sigma : float, default 3.0
-        Multiple of the 1-sigma jitter that must stay within the allowed error.
+        Multiple of the 1-:math:`\sigma` jitter that must stay within the allowed error.
     coherent_s : float, default 0.02
         Coherent integration time, s.
     loop : {"costas", "pll"}

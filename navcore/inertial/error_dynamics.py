@@ -192,14 +192,14 @@ def schuler_period(g: float = G0, radius: float = SCHULER_RADIUS_M) -> float:
 
 @dataclass(frozen=True)
 class GaussMarkov:
-    """First-order Gauss-Markov process: 1-sigma and a distance constant (m).
+    r"""First-order Gauss-Markov process: 1-:math:`\sigma` and a distance constant (m).
 
     ``distance_constant_m = inf`` makes a random constant.
 
     Attributes
     ----------
     sigma : float
-        Stationary 1-sigma (unit of the process).
+        Stationary 1-:math:`\sigma` (unit of the process).
     distance_constant_m : float
         Correlation distance, m (``inf`` for a random constant).
     """
@@ -214,16 +214,16 @@ class GaussMarkov:
 
 @dataclass(frozen=True)
 class ClockModel:
-    """Receiver clock: initial sigmas and the two-state random-process PSDs.
+    r"""Receiver clock: initial sigmas and the two-state random-process PSDs.
 
     Attributes
     ----------
     bias_sigma : float
-        Initial clock-bias 1-sigma (m).
+        Initial clock-bias 1-:math:`\sigma` (m).
     drift_sigma : float
-        Initial clock-drift 1-sigma (m/s).
+        Initial clock-drift 1-:math:`\sigma` (m/s).
     g_sensitivity_sigma : float
-        1-sigma g-sensitivity of the frequency (m/s per g).
+        1-:math:`\sigma` g-sensitivity of the frequency (m/s per g).
     bias_psd : float
         White frequency-noise PSD driving the bias (m²/s).
     drift_psd : float
@@ -243,7 +243,7 @@ class ClockModel:
 
 @dataclass(frozen=True)
 class ErrorSources:
-    """Everything the error model needs besides the layout.
+    r"""Everything the error model needs besides the layout.
 
     Attributes
     ----------
@@ -257,9 +257,9 @@ class ErrorSources:
     pseudorange_bias_sigma, range_rate_bias_sigma : float
         Per-channel constant biases (m, m/s).
     doppler_bias, doppler_scale_factor : (3,) arrays
-        Doppler sensor 1-sigma per body axis (m/s, -).
+        Doppler sensor 1-:math:`\sigma` per body axis (m/s, -).
     doppler_misalignment : float
-        Doppler boresight misalignment 1-sigma per axis (rad).
+        Doppler boresight misalignment 1-:math:`\sigma` per axis (rad).
     """
 
     imu: ImuSpec
@@ -764,7 +764,7 @@ def initial_covariance(
     velocity_sigma: tuple[float, float, float] = (0.0, 0.0, 0.0),
     attitude_sigma: tuple[float, float, float] = (0.0, 0.0, 0.0),
 ) -> Array:
-    """Diagonal initial covariance: navigation errors as given, sensor states at their 1-sigma.
+    r"""Diagonal initial covariance: navigation errors as given, sensor states at their 1-:math:`\sigma`.
 
     Use :func:`navcore.inertial.error_dynamics.gyrocompass_alignment` afterwards to replace
     the attitude block by the instrument-dependent, correlated gyrocompass errors.
@@ -774,13 +774,13 @@ def initial_covariance(
     layout : StateLayout
         Error-state layout (blocks of :func:`ins_error_layout`).
     sources : ErrorSources
-        Supplies the 1-sigma of every sensor and aiding state (SI, see :class:`ErrorSources`).
+        Supplies the 1-:math:`\sigma` of every sensor and aiding state (SI, see :class:`ErrorSources`).
     position_sigma : (3,) tuple of float, default zeros
-        Initial NED position 1-sigma, m (``>= 0``).
+        Initial NED position 1-:math:`\sigma`, m (``>= 0``).
     velocity_sigma : (3,) tuple of float, default zeros
-        Initial NED velocity 1-sigma, m/s (``>= 0``).
+        Initial NED velocity 1-:math:`\sigma`, m/s (``>= 0``).
     attitude_sigma : (3,) tuple of float, default zeros
-        Initial attitude 1-sigma (north, east, down), rad (``>= 0``).
+        Initial attitude 1-:math:`\sigma` (north, east, down), rad (``>= 0``).
 
     Returns
     -------
@@ -790,7 +790,7 @@ def initial_covariance(
     Raises
     ------
     ValueError
-        If a 1-sigma is negative or not finite.
+        If a 1-:math:`\sigma` is negative or not finite.
 
     Examples
     --------
@@ -958,7 +958,7 @@ def levelling_alignment(
     horizontal accelerometer errors, :math:`\psi_N = e_{f,E}/g` and
     :math:`\psi_E = -e_{f,N}/g` (as in :func:`gyrocompass_alignment`). The heading does not
     come from the gyros (a MEMS gyro cannot sense the Earth rate through its bias) but from
-    outside, e.g. the GPS track of KZL Eq. 4: an independent error of 1-sigma
+    outside, e.g. the GPS track of KZL Eq. 4: an independent error of 1-:math:`\sigma`
     ``heading_sigma``. ``tilt_noise_sigma`` adds an independent tilt per horizontal axis, e.g.
     the averaged accelerometer noise :math:`N_a/(g\sqrt{T})`.
 
@@ -969,7 +969,7 @@ def levelling_alignment(
     layout : StateLayout
         Error-state layout (needs ``"misalignment"``).
     heading_sigma : float
-        1-sigma of the external heading, rad (``>= 0``).
+        1-:math:`\sigma` of the external heading, rad (``>= 0``).
     lat : float
         Latitude, rad (deg with ``deg=True``), in [-90, 90] deg.
     C_bn : (3, 3) array, optional
@@ -977,7 +977,7 @@ def levelling_alignment(
     g : float, default G0
         Gravity magnitude, m/s².
     tilt_noise_sigma : float, default 0.0
-        Independent tilt 1-sigma per horizontal axis, rad (``>= 0``).
+        Independent tilt 1-:math:`\sigma` per horizontal axis, rad (``>= 0``).
     deg : bool, default False
         The latitude is in degrees.
 

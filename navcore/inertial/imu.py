@@ -1,6 +1,6 @@
-"""IMU error specifications as data, in SI units with the published units kept alongside.
+r"""IMU error specifications as data, in SI units with the published units kept alongside.
 
-An :class:`ImuSpec` holds the 1-sigma values of the error sources a covariance analysis or a
+An :class:`ImuSpec` holds the 1-:math:`\sigma` values of the error sources a covariance analysis or a
 simulation needs. Values are stored in SI (rad/s, m/s², dimensionless scale factor, rad,
 root PSDs in rad/sqrt(s) and m/s/sqrt(s)); build specs from the papers' units with the
 factors of :mod:`navcore.units`, e.g. ``gyro_bias=0.01 * DEG_PER_H``. A value beyond what
@@ -59,7 +59,7 @@ IMU_SPEC_LIMITS: dict[str, tuple[float, str]] = {
 
 @dataclass(frozen=True)
 class ImuSpec:
-    """1-sigma IMU error specification (SI units).
+    r"""1-:math:`\sigma` IMU error specification (SI units).
 
     Attributes
     ----------
@@ -68,7 +68,7 @@ class ImuSpec:
     gyro_bias : float
         Gyro bias (drift), rad/s.
     gyro_scale_factor : float
-        Gyro scale-factor error, dimensionless (1 ppm = 1e-6).
+        Gyro scale-factor error, dimensionless (1 ppm = :math:`10^{-6}`).
     gyro_misalignment : float
         Gyro input-axis misalignment, rad.
     gyro_random_walk : float
@@ -192,26 +192,26 @@ def imu_spec_from_published(
     gyro_random_walk_deg_per_h_per_sqrt_hz: float,
     source: str = "",
 ) -> ImuSpec:
-    """Build an :class:`ImuSpec` from the units in which IMU tables are usually printed.
+    r"""Build an :class:`ImuSpec` from the units in which IMU tables are usually printed.
 
     Parameters
     ----------
     name : str
         Name of the instrument.
     accel_bias_micro_g : float
-        Accelerometer bias 1-sigma, micro-g.
+        Accelerometer bias 1-:math:`\sigma`, micro-g.
     accel_scale_factor_ppm : float
-        Accelerometer scale-factor error 1-sigma, ppm.
+        Accelerometer scale-factor error 1-:math:`\sigma`, ppm.
     accel_misalignment_arcsec : float
-        Accelerometer misalignment 1-sigma, arcsec.
+        Accelerometer misalignment 1-:math:`\sigma`, arcsec.
     accel_random_walk_micro_g_per_sqrt_hz : float
         Accelerometer white-noise root PSD, micro-g/sqrt(Hz).
     gyro_bias_deg_per_h : float
-        Gyro bias 1-sigma, deg/h.
+        Gyro bias 1-:math:`\sigma`, deg/h.
     gyro_scale_factor_ppm : float
-        Gyro scale-factor error 1-sigma, ppm.
+        Gyro scale-factor error 1-:math:`\sigma`, ppm.
     gyro_misalignment_arcsec : float
-        Gyro misalignment 1-sigma, arcsec.
+        Gyro misalignment 1-:math:`\sigma`, arcsec.
     gyro_random_walk_deg_per_h_per_sqrt_hz : float
         Gyro white-noise root PSD, deg/h/sqrt(Hz).
     source : str, default ""
@@ -285,7 +285,7 @@ def gyro_bias_calibrated_at_rest(spec: ImuSpec, averaging_time: float) -> ImuSpe
     r"""The spec after the turn-on gyro bias was measured by averaging at rest for ``averaging_time``.
 
     Averaging white rate noise of root PSD :math:`N` for :math:`T` seconds leaves a random
-    constant residual of 1-sigma :math:`N/\sqrt{T}`; that residual replaces ``gyro_bias``
+    constant residual of 1-:math:`\sigma` :math:`N/\sqrt{T}`; that residual replaces ``gyro_bias``
     (KZL Sec. 3.1: the gyro biases are calibrated while the vehicle is stationary). The
     Earth rate the gyros also sense is assumed known and removed.
 

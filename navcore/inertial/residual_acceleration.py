@@ -38,8 +38,8 @@ deviations the range is cut there instead), so that
         &\times\operatorname{erf}\Big(\frac{r\cos s\cos t}{\sqrt{2\lambda_3}}\Big)\,dt\,ds,
     \end{aligned}
 
-a smooth integrand that Gauss-Legendre quadrature integrates to about 1e-10 for eigenvalue
-ratios up to 1e4 (checked against the chi-square distribution and by Monte Carlo in the
+a smooth integrand that Gauss-Legendre quadrature integrates to about :math:`10^{-10}` for eigenvalue
+ratios up to :math:`10^{4}` (checked against the chi-square distribution and by Monte Carlo in the
 tests). Two- and one-dimensional cases drop the outer integrals.
 
 References
