@@ -41,7 +41,7 @@ WGS-84 gives 9.7803253359 m/s² at the equator and 9.8321849378 m/s² at the pol
 constant g is 2.7 mg too large at the equator and 2.6 mg too small at the poles.
 
 The models of navcore take the gravity magnitude as an argument (``g``); their default is the
-constant G0, which is what the papers assume. Pass ``g=normal_gravity(lat, h)`` for the
+constant ``G0``, which is what the papers assume. Pass ``g=normal_gravity(lat, h)`` for the
 WGS-84 value at the flight condition.
 
 References
@@ -161,7 +161,8 @@ def normal_gravity(
 def free_air_gradient(
     lat: ArrayLike, h: ArrayLike = 0.0, *, deg: bool = False, ellipsoid: Ellipsoid = WGS84
 ) -> Array:
-    """Vertical gradient of normal gravity ``d gamma / d h`` (negative: gravity falls with height).
+    r"""Vertical gradient of normal gravity :math:`\partial\gamma / \partial h` (negative: gravity
+    falls with height).
 
     Parameters
     ----------
@@ -177,7 +178,7 @@ def free_air_gradient(
     Returns
     -------
     ndarray
-        Gradient, 1/s² (m/s² per m); about -3.086e-6 (the free-air gradient of
+        Gradient, 1/s² (m/s² per m); about :math:`-3.086 \times 10^{-6}` (the free-air gradient of
         0.3086 mGal/m).
 
     Raises

@@ -123,7 +123,7 @@ M_PER_S_PER_SQRT_H = 1.0 / math.sqrt(HOUR)  # velocity random walk -> m/s/sqrt(s
 
 
 # --- decibels --------------------------------------------------------------------------
-#: Largest magnitude (dB) a decibel value may have: 10**(3000/10) is near the largest double.
+#: Largest magnitude (dB) a decibel value may have: :math:`10^{3000/10}` is near the largest double.
 MAX_DB = 3000.0
 
 

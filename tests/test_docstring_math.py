@@ -49,6 +49,7 @@ _NAME_SECTIONS = {
     "See Also",
     "Methods",
     "Modules",
+    "Constants",
 }
 _DIRECTIVE = re.compile(r"^(\s*)\.\. ")
 _ROLE = re.compile(r":[\w:+-]+:`[^`]*`")
