@@ -57,8 +57,10 @@ _LITERAL = re.compile(r"``.+?``", re.S)
 _BACKTICK_NAME = re.compile(r"`[^`\n]*`_{0,2}")
 _STRONG = re.compile(r"\*\*(?=\S)(.+?)(?<=\S)\*\*")  # reST bold, not a power
 #: Names of distributions and functions that are words, not symbols ("chi-square", "gamma
-#: function", "beta distribution").
-_WORDS = re.compile(r"\bchi-squared?\b|\b(?:gamma|beta)(?= (?:functions?|distributions?|variates?)\b)")
+#: function", "beta distribution", GNSS's "delta-range").
+_WORDS = re.compile(
+    r"\bchi-squared?\b|\bdelta-range\b|\b(?:gamma|beta)(?= (?:functions?|distributions?|variates?)\b)"
+)
 _URL = re.compile(r"<?https?://\S+|\bdoi:\S+|\b10\.\d{4,}/\S+")
 
 

@@ -51,7 +51,8 @@ Array = NDArray[np.float64]
 
 @implements("SP Table 2.7")
 def search_cells(sigma: ArrayLike, cell: float, n_sigma: float = 1.0) -> Array | int:
-    r"""Number of cells covering +-n_sigma*sigma: ``ceil(2 n_sigma sigma / cell)``, at least 1.
+    r"""Number of cells covering :math:`\pm n_\sigma \sigma` (:math:`n_\sigma` = ``n_sigma``):
+    :math:`\lceil 2 n_\sigma \sigma / \mathrm{cell} \rceil`, at least 1.
 
     Parameters
     ----------
@@ -143,7 +144,8 @@ def search_time(
     rate_cell_mps: float,
     n_sigma: float = 1.0,
 ) -> Array | float:
-    r"""Time to search the +-n_sigma region (SP Sec. 2.5 Delta T, brackets read as ceilings).
+    r"""Time to search the :math:`\pm n_\sigma \sigma` region (SP Sec. 2.5 :math:`\Delta T`, brackets
+    read as ceilings).
 
     Parameters
     ----------
@@ -248,7 +250,7 @@ def range_rate_from_doppler(doppler_hz: ArrayLike, wavelength_m: float) -> Array
 
 
 def probability_outside_sigma_box(n_dims: int = 1, k: float = 1.0) -> float:
-    r"""Probability that an n-D standard Gaussian falls outside the +-k sigma box.
+    r"""Probability that an n-D standard Gaussian falls outside the :math:`\pm k \sigma` box.
 
     :math:`1 - (1 - 2\Phi(-k))^n`, evaluated as ``-expm1(n log1p(-2 Phi(-k)))``.
 
@@ -271,7 +273,7 @@ def probability_outside_sigma_box(n_dims: int = 1, k: float = 1.0) -> float:
 
     Notes
     -----
-    The chance that a +-1 sigma search region of Schmidt & Phillips, Sec. 2.5, misses the
+    The chance that a :math:`\pm 1 \sigma` search region of Schmidt & Phillips, Sec. 2.5, misses the
     signal.
 
     Examples

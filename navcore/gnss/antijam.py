@@ -1,4 +1,4 @@
-r"""Code tracking under jamming: correlation, effective C/N0, loss of lock, free-space J/S, CEP.
+r"""Code tracking under jamming: correlation, effective :math:`C/N_0`, loss of lock, free-space J/S, CEP.
 
 Ideal correlation and early-minus-late discriminator (spacing :math:`d` chips):
 
@@ -26,7 +26,7 @@ A loop that needs :math:`(C/N_0)_{eff} \ge \gamma` loses lock at
 The last part is a reduced navigator model for a guided munition: two horizontal channels,
 each with position, velocity, tilt, a Markov accelerometer bias, a Markov gyro bias and a
 fixed nonorthogonality term, updated once a second by a position fix whose noise follows
-the code-tracking variance at the effective C/N0 while the code loop is in lock, plus an
+the code-tracking variance at the effective :math:`C/N_0` while the code loop is in lock, plus an
 unestimated range bias. The Kalman gains depend only on the J/S history, so the Monte
 Carlo runs are vectorised: all runs share one covariance recursion.
 
@@ -149,9 +149,9 @@ def early_minus_late(tau_chips: ArrayLike, spacing_chips: float = 0.5) -> Array 
 
 
 def spectral_separation_q(jammer_bandwidth_hz: float, chip_rate_hz: float) -> float:
-    """``Q = 1/(Rc kappa)`` for a flat jammer of the given bandwidth centred on a BPSK signal.
+    r"""``Q = 1/(Rc kappa)`` for a flat jammer of the given bandwidth centred on a BPSK signal.
 
-    ``kappa`` integrates the signal's normalised spectrum Tc sinc^2(f Tc) against the
+    ``kappa`` integrates the signal's normalised spectrum :math:`T_c \operatorname{sinc}^2(f T_c)` against the
     jammer's flat spectrum 1/B over +-B/2. A narrow jammer gives Q -> 1; a jammer as wide as
     the main lobe (B = 2 Rc) gives about 2.2.
 
@@ -197,7 +197,7 @@ def spectral_separation_q(jammer_bandwidth_hz: float, chip_rate_hz: float) -> fl
 def effective_cn0_dbhz(
     cn0_dbhz: ArrayLike, js_db: ArrayLike, chip_rate_hz: float, q: float = 2.0
 ) -> Array | float:
-    """Effective C/N0 under jamming: ``-10 log10(1/(C/N0) + (J/S)/(Q Rc))``.
+    """Effective :math:`C/N_0` under jamming: ``-10 log10(1/(C/N0) + (J/S)/(Q Rc))``.
 
     Parameters
     ----------
@@ -213,7 +213,7 @@ def effective_cn0_dbhz(
     Returns
     -------
     float or ndarray
-        Effective C/N0, dB-Hz.
+        Effective :math:`C/N_0`, dB-Hz.
 
     Raises
     ------
@@ -241,7 +241,7 @@ def effective_cn0_dbhz(
 def js_for_effective_cn0(
     cn0_dbhz: float, threshold_dbhz: float, chip_rate_hz: float, q: float = 2.0
 ) -> float:
-    """J/S at which the effective C/N0 falls to ``threshold_dbhz`` (loss of lock).
+    """J/S at which the effective :math:`C/N_0` falls to ``threshold_dbhz`` (loss of lock).
 
     Parameters
     ----------
@@ -386,7 +386,7 @@ def code_tracking_sigma_chips(
     Raises
     ------
     ValueError
-        If ``spacing_chips``, ``integration_s`` or ``coherent_s`` is not positive or a C/N0 is
+        If ``spacing_chips``, ``integration_s`` or ``coherent_s`` is not positive or a :math:`C/N_0` is
         not finite.
 
     Examples
@@ -441,7 +441,7 @@ def cep_from_horizontal_errors(errors_m: ArrayLike) -> float:
 
 @dataclass(frozen=True)
 class NavigatorErrorModel:
-    """One horizontal channel of the reduced INS/GPS navigator (SI units, 1 sigma).
+    r"""One horizontal channel of the reduced INS/GPS navigator (SI units, 1-:math:`\sigma`).
 
     Attributes
     ----------
@@ -474,7 +474,7 @@ class NavigatorErrorModel:
 
 @dataclass(frozen=True)
 class RunResult:
-    r"""Monte Carlo output: impact errors (runs, 2), final filter sigma per axis, lock history.
+    r"""Monte Carlo output: impact errors (runs, 2), final filter :math:`\sigma` per axis, lock history.
 
     Attributes
     ----------
@@ -527,7 +527,7 @@ def simulate_impact_errors(
     Parameters
     ----------
     model : NavigatorErrorModel
-        Sensor, initial and geometry errors of one horizontal channel (SI, 1 sigma).
+        Sensor, initial and geometry errors of one horizontal channel (SI, 1-:math:`\sigma`).
     fix_sigma_m : array_like
         Per-axis position-fix noise at each 1-s step (m); NaN or inf marks steps with no fix
         (code loop out of lock: free inertial).

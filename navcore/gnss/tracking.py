@@ -189,9 +189,10 @@ def third_order_loop_step_error(t_s: ArrayLike, step: float, omega0: float) -> A
 
 
 def third_order_loop_jerk_error(t_s: ArrayLike, jerk: float, omega0: float) -> Array | float:
-    """Tracking error of the third-order loop after a jerk starts at t = 0 (input J t^3/6).
+    r"""Tracking error of the third-order loop after a jerk starts at :math:`t = 0` (input
+    :math:`J t^3/6`).
 
-    The inverse Laplace transform of :math:`J/(s D(s))`; it settles at :math:`J/\\omega_0^3`.
+    The inverse Laplace transform of :math:`J/(s D(s))`; it settles at :math:`J/\omega_0^3`.
 
     Parameters
     ----------
