@@ -59,7 +59,7 @@ _STRONG = re.compile(r"\*\*(?=\S)(.+?)(?<=\S)\*\*")  # reST bold, not a power
 #: Names of distributions and functions that are words, not symbols ("chi-square", "gamma
 #: function", "beta distribution", GNSS's "delta-range").
 _WORDS = re.compile(
-    r"\bchi-squared?\b|\bdelta-range\b|\b(?:gamma|beta)(?= (?:functions?|distributions?|variates?)\b)"
+    r"\bchi-squared?\b|(?i:\bdelta[- ]range\b)|\b(?:gamma|beta)(?= (?:functions?|distributions?|variates?)\b)"
 )
 _URL = re.compile(r"<?https?://\S+|\bdoi:\S+|\b10\.\d{4,}/\S+")
 

@@ -473,13 +473,13 @@ class Scenario:
     clock_bias_sigma, clock_drift_sigma : float
         Initial clock uncertainty (m, m/s).
     clock_phase_walk, clock_drift_walk : float
-        Clock random walks, root PSD (m/sqrt(s), m/s/sqrt(s)).
+        Clock random walks, root PSD (m/√s, m/s/√s).
     accel_bias_walk, gyro_bias_walk : float
         Filter tuning of the bias random walks (the truth biases are constant).
     baselines_b : (nb, 3) array or None
-        Antenna baselines A0->A1, ..., A0->A_nb in body axes (m), ``nb >= 1`` (KZL's system
-        has two); ``None`` without a multi-antenna system (the double-difference mode needs
-        them).
+        Antenna baselines :math:`A_0 \to A_1, \dots, A_0 \to A_{n_b}` in body axes (m),
+        ``nb >= 1`` (KZL's system has two); ``None`` without a multi-antenna system (the
+        double-difference mode needs them).
     """
 
     velocity_ned: Array
@@ -864,11 +864,11 @@ def run_monte_carlo_batch(
     initialise: bool = True,
     attitude_min_sats: int = 4,
 ) -> list[MonteCarloResult]:
-    """:func:`run_monte_carlo` of several scenarios in one vectorised call (a band's runs).
+    r""":func:`run_monte_carlo` of several scenarios in one vectorised call (a band's runs).
 
     The leading axis of every array is (scenario x Monte Carlo run). Each scenario takes exactly
     the random numbers it takes alone (common random numbers across the scenarios: each draw is
-    made once and scaled by each scenario's own sigma), and each run sees the arithmetic it sees
+    made once and scaled by each scenario's own :math:`\sigma`), and each run sees the arithmetic it sees
     alone, so the results equal ``[run_monte_carlo(sc, mode, n_runs, seed, ...) for sc in
     scenarios]`` (``batches=1``). The scenarios must share the flight, the rates, the satellites
     and the antennas (:func:`batch_group_key`); noises, initial sigmas, the IMU's errors, the

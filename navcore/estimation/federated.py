@@ -603,7 +603,8 @@ def feasible_weights(
     Raises
     ------
     ValueError
-        If a direction is zero, not finite or of the wrong length, or a sigma is not positive.
+        If a direction is zero, not finite or of the wrong length, or a variance in ``sigmas``
+        is not positive.
 
     References
     ----------
@@ -772,7 +773,7 @@ def minkowski_trace_bound(covariances: Sequence[ArrayLike | float | None]) -> fl
 def federated_improvement_db(
     covariances: Sequence[ArrayLike | float | None], reference_sigma: float
 ) -> float:
-    r"""Improvement (dB) of the federated per-axis bound over a reference per-axis sigma.
+    r"""Improvement (dB) of the federated per-axis bound over a reference per-axis :math:`\sigma`.
 
     :math:`20\log_{10}(\sigma_D/\sigma_{ref})` with
     :math:`\sigma_D = \sqrt{b/n}`, ``b`` the Minkowski trace bound of WF Eq. (23)
@@ -783,7 +784,7 @@ def federated_improvement_db(
     Parameters
     ----------
     covariances : sequence of (n, n) arrays, ``None`` or ``inf``
-        The local estimators' error covariances (units^2; an outage is ``None`` or ``inf``).
+        The local estimators' error covariances (units²; an outage is ``None`` or ``inf``).
     reference_sigma : float
         Per-axis standard deviation to compare with, in the units of the states, ``> 0``.
 

@@ -1,20 +1,28 @@
-"""Linear minimum-mean-square-error estimation with a nonrandom nuisance vector.
+r"""Linear minimum-mean-square-error estimation with a nonrandom nuisance vector.
 
-Observation model (ATC-10 Appendix H, Eq. H.1)::
+Observation model (ATC-10 Appendix H, Eq. H.1):
+
+.. math::
 
     z = F x + G y + n,
 
-with x random (mean mu_x, covariance P_x), y nonrandom and completely unknown, and noise n
-(mean mu_n, covariance P_n, cross-covariance P_nx with x). The estimator of y is generalised
-least squares with the "noise" ``eps = n + F x`` (Eqs. H.4-H.8); the estimator of x is the
-LMMSE estimator among linear functions of z that do not depend on y, i.e. that annihilate
-the columns of G (Eqs. H.9-H.16). With P_nx = 0 the covariances take the information forms
-(H.21)-(H.22). For a scalar x and white noise the gain is
-``gamma = sigma_x^2 / (sigma^2 + sigma_x^2 F'(I - P_G)F)`` (Eq. H.26; the printed numerator
-sigma^2 is erratum E4-10).
+with :math:`x` random (mean :math:`\mu_x`, covariance :math:`P_x`), :math:`y` nonrandom and
+completely unknown, and noise :math:`n` (mean :math:`\mu_n`, covariance :math:`P_n`,
+cross-covariance :math:`P_{nx}` with :math:`x`). The estimator of :math:`y` is generalised
+least squares with the "noise" :math:`\epsilon = n + F x` (Eqs. H.4-H.8); the estimator of
+:math:`x` is the LMMSE estimator among linear functions of :math:`z` that do not depend on
+:math:`y`, i.e. that annihilate the columns of :math:`G` (Eqs. H.9-H.16). With
+:math:`P_{nx} = 0` the covariances take the information forms (H.21)-(H.22). For a scalar
+:math:`x` and white noise the gain is
 
-In ATC-10 Section 4 x is the clock error tau_n (F = 1) and y the aircraft position
-(G = the satellite matrix).
+.. math::
+
+    \gamma = \frac{\sigma_x^2}{\sigma^2 + \sigma_x^2 F'(I - P_G) F}
+
+(Eq. H.26; the printed numerator :math:`\sigma^2` is erratum E4-10).
+
+In ATC-10 Section 4 :math:`x` is the clock error :math:`\tau_n` (:math:`F = 1`) and
+:math:`y` the aircraft position (:math:`G` = the satellite matrix).
 """
 
 from __future__ import annotations
@@ -163,7 +171,7 @@ def lmmse_with_nuisance(
 def lmmse_with_nuisance_information_form(
     F: np.ndarray, G: np.ndarray, P_x: np.ndarray, P_n: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Error covariances in information form for P_nx = 0 (ATC-10 Eqs. H.21-H.22).
+    """Error covariances in information form for :math:`P_{nx} = 0` (ATC-10 Eqs. H.21-H.22).
 
     ``P_x_err = [P_x^-1 + F'Pn^-1 F - F'Pn^-1 G (G'Pn^-1 G)^-1 G'Pn^-1 F]^-1`` and
     ``P_y_err = (G'Pn^-1 G)^-1 + (G'Pn^-1 G)^-1 G'Pn^-1 F P_x_err F'Pn^-1 G (G'Pn^-1 G)^-1``.

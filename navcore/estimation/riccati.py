@@ -72,7 +72,7 @@ def scalar_riccati_steady_state(phi: float, q: float, h: float, r: float) -> Sca
     Returns
     -------
     ScalarSteadyState
-        ``prior`` (P-), ``posterior`` (P+), ``gain`` K = P- h / (h^2 P- + r).
+        ``prior`` (P-), ``posterior`` (P+), ``gain`` :math:`K = P^- h / (h^2 P^- + r)`.
 
     Raises
     ------

@@ -145,7 +145,7 @@ def levelling_as_printed(a_b: ArrayLike, roll_form: str = "atan2") -> tuple[Arra
 
 @implements("KZL 4")
 def heading_from_velocity(v_ned: ArrayLike) -> Array:
-    """Track angle ``atan2(v_E, v_N)`` from a NED velocity (KZL Eq. 4).
+    r"""Track angle ``atan2(v_E, v_N)`` from a NED velocity (KZL Eq. 4).
 
     Parameters
     ----------
@@ -155,7 +155,7 @@ def heading_from_velocity(v_ned: ArrayLike) -> Array:
     Returns
     -------
     ndarray
-        Heading, rad in (-pi, pi].
+        Heading, rad in :math:`(-\pi, \pi]`.
 
     Raises
     ------

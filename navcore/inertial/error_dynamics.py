@@ -1,4 +1,4 @@
-r"""INS error-state dynamics in a local-level (NED) frame, psi-angle form.
+r"""INS error-state dynamics in a local-level (NED) frame, :math:`\psi`-angle form.
 
 State blocks (any subset, in any order, named as in :mod:`navcore.gnss.architectures`):
 
@@ -7,7 +7,7 @@ block                     size  meaning
 ========================  ====  ================================================================
 ``position``              3     NED position error (m)
 ``velocity``              3     velocity error in the computed frame (m/s)
-``misalignment``          3     psi angle: computed-frame attitude error (rad)
+``misalignment``          3     :math:`\psi` angle: computed-frame attitude error (rad)
 ``gyro bias``             3     gyro bias (the papers' gyro drift), random constant (rad/s)
 ``gyro scale factor``     3     (-)
 ``gyro misalignment``     3     small-angle input-axis misalignment of the gyro triad (rad)
@@ -26,7 +26,7 @@ block                     size  meaning
 ``doppler misalignment``  3     boresight misalignment (rad)
 ========================  ====  ================================================================
 
-Dynamics (psi-angle form, Benson 1975):
+Dynamics (:math:`\psi`-angle form, Benson 1975):
 
 .. math::
 
@@ -39,7 +39,7 @@ Dynamics (psi-angle form, Benson 1975):
     \delta\omega^b_{ib} &= b_g + \mathrm{diag}(\omega^b_{ib})\,s_g + [\omega^b_{ib}\times]\,\mu_g + w_g
     \end{aligned}
 
-Sign convention of the attitude error: every error is *computed minus true*, and the psi
+Sign convention of the attitude error: every error is *computed minus true*, and the :math:`\psi`
 angle is the small rotation that carries the true NED frame into the computed one, so the
 computed body-to-NED attitude is
 
@@ -57,7 +57,7 @@ opposite sign, :math:`\hat C = (I + [\delta\alpha\times])\,C`, so
 explicitly where the two meet.
 
 The horizontal channels oscillate at the Schuler frequency :math:`\sqrt{g/R}` (84.4-min
-period) and the psi angle rotates with Earth and transport rate; the vertical channel is
+period) and the :math:`\psi` angle rotates with Earth and transport rate; the vertical channel is
 unstable (:math:`+2g/R`) and must be aided (barometer). A first-order Gauss-Markov
 process characterised by a standard deviation and a *distance* constant :math:`d` (SP Table
 2.4) has the time constant :math:`\tau = d/|v|` at ground speed :math:`|v|`: rate
@@ -338,7 +338,7 @@ def ins_error_layout(*names: str, channels: int = 4, name: str = "") -> StateLay
 
 
 def psi_to_attitude_error(layout: StateLayout) -> Array:
-    r"""Transform from this module's psi angle to the attitude error of the opposite sign.
+    r"""Transform from this module's :math:`\psi` angle to the attitude error of the opposite sign.
 
     This module: :math:`\hat C^n_b = (I - [\psi\times])\,C^n_b`. The attitude error
     :math:`\delta\alpha` of :mod:`navcore.inertial.error_model17` (its :math:`\Delta\psi`) and of
@@ -507,7 +507,7 @@ def error_dynamics(
     sources : ErrorSources, optional
         Supplies the Gauss-Markov distance constants (ignored if absent).
     g : float
-        Gravity magnitude (m/s²); the default is the constant standard gravity G0 (what the
+        Gravity magnitude (m/s²); the default is the constant standard gravity ``G0`` (what the
         papers assume), :func:`navcore.gravity.normal_gravity` gives the WGS-84 value at
         ``lat``, ``h``.
     vertical_channel : bool
@@ -704,9 +704,9 @@ def _process_noise_diag_stack(layout: StateLayout, sources: ErrorSources, speed_
 
 
 def process_noise_psd(layout: StateLayout, sources: ErrorSources, *, speed_mps: float = 0.0) -> Array:
-    """Diagonal state-space noise PSD ``G Q G^T`` for :func:`error_dynamics`.
+    r"""Diagonal state-space noise PSD ``G Q G^T`` for :func:`error_dynamics`.
 
-    Velocity gets the accelerometer white noise (``accel_random_walk^2``), the psi angle the
+    Velocity gets the accelerometer white noise (``accel_random_walk^2``), the :math:`\psi` angle the
     gyro white noise (``gyro_random_walk^2``); Gauss-Markov blocks get ``2 sigma^2 beta`` with
     ``beta = speed / distance constant``; the clock bias and drift their PSDs.
 
@@ -878,7 +878,7 @@ def gyrocompass_alignment(
     r"""Replace the attitude errors by the steady state of a stationary gyrocompass alignment.
 
     At rest the levelled, gyrocompassed platform has zero horizontal velocity-error rate and
-    zero east psi-rate, which ties the attitude error to the sensor errors: with
+    zero east :math:`\psi`-rate, which ties the attitude error to the sensor errors: with
     :math:`e_f = C^n_b\delta f^b` and :math:`e_\omega = C^n_b\delta\omega^b` (linear in the
     sensor states, rows of :func:`error_dynamics`),
 
@@ -902,7 +902,7 @@ def gyrocompass_alignment(
     C_bn : (3, 3) array, optional
         Body-to-NED attitude, a rotation matrix (default identity).
     g : float, default G0
-        Gravity magnitude, m/s² (G0 is the papers' constant; see
+        Gravity magnitude, m/s² (``G0`` is the papers' constant; see
         :func:`navcore.gravity.normal_gravity`).
     deg : bool, default False
         The latitude is in degrees.

@@ -17,7 +17,7 @@ block               size  meaning
 Attitude-error convention: :math:`\hat R_b^n = (I + [\Delta\psi\times]) R_b^n` with the
 standard cross-product matrix :math:`[a\times]b = a\times b` (:func:`navcore.frames.skew`):
 error = estimated - true, and :math:`\Delta\psi` rotates the true frame into the estimated one
-*with the plus sign*. This is the opposite sign of the psi angle of
+*with the plus sign*. This is the opposite sign of the :math:`\psi` angle of
 :mod:`navcore.inertial.error_dynamics` (:math:`\hat C^n_b = (I - [\psi\times]) C^n_b`), so
 :math:`\Delta\psi = -\psi`; convert with
 :func:`navcore.inertial.error_dynamics.psi_to_attitude_error` wherever the two meet.
@@ -182,17 +182,17 @@ def noise_psd_17(
     Parameters
     ----------
     accel_noise : float
-        Root PSD of the white accelerometer noise, m/s/sqrt(s) (``>= 0``).
+        Root PSD of the white accelerometer noise, m/s/√s (``>= 0``).
     gyro_noise : float
-        Root PSD of the white gyro noise, rad/sqrt(s) (``>= 0``).
+        Root PSD of the white gyro noise, rad/√s (``>= 0``).
     accel_bias_walk : float, default 0.0
-        Root PSD of the accelerometer-bias random walk, m/s²/sqrt(s).
+        Root PSD of the accelerometer-bias random walk, m/s²/√s.
     gyro_bias_walk : float, default 0.0
-        Root PSD of the gyro-bias random walk, rad/s/sqrt(s).
+        Root PSD of the gyro-bias random walk, rad/s/√s.
     clock_drift_walk : float, default 0.0
-        Root PSD of the clock-drift random walk, m/s/sqrt(s).
+        Root PSD of the clock-drift random walk, m/s/√s.
     clock_bias_walk : float, default 0.0
-        Root PSD of the clock-phase random walk, m/sqrt(s).
+        Root PSD of the clock-phase random walk, m/√s.
 
     Returns
     -------
@@ -304,7 +304,7 @@ def transition_first_order(F: ArrayLike, dt: float) -> Array:
 
 @implements("KZL 13")
 def code_doppler_rows(los_ned: ArrayLike) -> Array:
-    """Jacobian rows of pseudorange and delta range (KZL Eq. 13, first two rows per satellite).
+    r"""Jacobian rows of pseudorange and delta range (KZL Eq. 13, first two rows per satellite).
 
     Parameters
     ----------
@@ -315,7 +315,7 @@ def code_doppler_rows(los_ned: ArrayLike) -> Array:
     -------
     H : (2 nu, 17) ndarray
         Rows ``[-l^T 0 0 0 0 1 0]`` and ``[0 -l^T 0 0 0 0 1]`` for each satellite, in the
-        order (rho_1, rho_dot_1, rho_2, ...), for ``y = predicted - measured`` (m per m and
+        order (:math:`\rho_1, \dot\rho_1, \rho_2, \dots`), for ``y = predicted - measured`` (m per m and
         m/s per m/s).
 
     Raises

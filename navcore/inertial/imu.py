@@ -2,7 +2,7 @@ r"""IMU error specifications as data, in SI units with the published units kept 
 
 An :class:`ImuSpec` holds the 1-:math:`\sigma` values of the error sources a covariance analysis or a
 simulation needs. Values are stored in SI (rad/s, m/s², dimensionless scale factor, rad,
-root PSDs in rad/sqrt(s) and m/s/sqrt(s)); build specs from the papers' units with the
+root PSDs in rad/√s and m/s/√s); build specs from the papers' units with the
 factors of :mod:`navcore.units`, e.g. ``gyro_bias=0.01 * DEG_PER_H``. A value beyond what
 any inertial sensor has (:data:`IMU_SPEC_LIMITS`: a gyro bias above 0.1 rad/s, about
 20 000 deg/h) is a unit mistake and raises, naming the field and the unit it was probably
@@ -36,7 +36,7 @@ __all__ = [
 ]
 
 
-#: Largest plausible 1-sigma of each error source (SI), beyond the worst consumer MEMS parts,
+#: Largest plausible 1-:math:`\sigma` of each error source (SI), beyond the worst consumer MEMS parts,
 #: with the unit mistake a larger value usually is. A specification beyond it raises.
 IMU_SPEC_LIMITS: dict[str, tuple[float, str]] = {
     "gyro_bias": (0.1, "rad/s (about 20 600 deg/h; a value in deg/h? multiply by navcore.units.DEG_PER_H)"),
@@ -72,7 +72,7 @@ class ImuSpec:
     gyro_misalignment : float
         Gyro input-axis misalignment, rad.
     gyro_random_walk : float
-        Angle random walk, root PSD of rate noise, rad/sqrt(s).
+        Angle random walk, root PSD of rate noise, rad/√s.
     accel_bias : float
         Accelerometer bias, m/s².
     accel_scale_factor : float
@@ -80,7 +80,7 @@ class ImuSpec:
     accel_misalignment : float
         Accelerometer input-axis misalignment, rad.
     accel_random_walk : float
-        Velocity random walk, root PSD of acceleration noise, m/s/sqrt(s).
+        Velocity random walk, root PSD of acceleration noise, m/s/√s.
     source : str
         Where the numbers come from (paper and table).
     extra : dict of str to float
@@ -121,19 +121,19 @@ class ImuSpec:
 
 
 def angle_random_walk_deg_per_sqrt_h(root_psd_deg_per_h_per_sqrt_hz: float) -> float:
-    """Convert a gyro rate-noise root PSD in deg/h/sqrt(Hz) to angle random walk in deg/sqrt(h).
+    """Convert a gyro rate-noise root PSD in deg/h/√Hz to angle random walk in deg/√h.
 
     ``1 deg/h/sqrt(Hz) = 1 deg/h * sqrt(s) = (1/60) deg/sqrt(h)``.
 
     Parameters
     ----------
     root_psd_deg_per_h_per_sqrt_hz : float
-        Rate-noise root PSD, deg/h/sqrt(Hz) (``>= 0``).
+        Rate-noise root PSD, deg/h/√Hz (``>= 0``).
 
     Returns
     -------
     float
-        Angle random walk, deg/sqrt(h).
+        Angle random walk, deg/√h.
 
     Raises
     ------
@@ -150,19 +150,19 @@ def angle_random_walk_deg_per_sqrt_h(root_psd_deg_per_h_per_sqrt_hz: float) -> f
 
 
 def velocity_random_walk_m_per_s_per_sqrt_h(root_psd_micro_g_per_sqrt_hz: float) -> float:
-    """Convert an accelerometer noise root PSD in micro-g/sqrt(Hz) to velocity random walk in m/s/sqrt(h).
+    """Convert an accelerometer noise root PSD in micro-g/√Hz to velocity random walk in m/s/√h.
 
     ``1 micro-g/sqrt(Hz) = 9.80665e-6 m/s/sqrt(s) = 9.80665e-6 * 60 m/s/sqrt(h)``.
 
     Parameters
     ----------
     root_psd_micro_g_per_sqrt_hz : float
-        Acceleration-noise root PSD, micro-g/sqrt(Hz) (``>= 0``).
+        Acceleration-noise root PSD, micro-g/√Hz (``>= 0``).
 
     Returns
     -------
     float
-        Velocity random walk, m/s/sqrt(h).
+        Velocity random walk, m/s/√h.
 
     Raises
     ------
@@ -205,7 +205,7 @@ def imu_spec_from_published(
     accel_misalignment_arcsec : float
         Accelerometer misalignment 1-:math:`\sigma`, arcsec.
     accel_random_walk_micro_g_per_sqrt_hz : float
-        Accelerometer white-noise root PSD, micro-g/sqrt(Hz).
+        Accelerometer white-noise root PSD, micro-g/√Hz.
     gyro_bias_deg_per_h : float
         Gyro bias 1-:math:`\sigma`, deg/h.
     gyro_scale_factor_ppm : float
@@ -213,7 +213,7 @@ def imu_spec_from_published(
     gyro_misalignment_arcsec : float
         Gyro misalignment 1-:math:`\sigma`, arcsec.
     gyro_random_walk_deg_per_h_per_sqrt_hz : float
-        Gyro white-noise root PSD, deg/h/sqrt(Hz).
+        Gyro white-noise root PSD, deg/h/√Hz.
     source : str, default ""
         Where the numbers come from.
 

@@ -86,7 +86,8 @@ Array = NDArray[np.float64]
 def scale_factor_misalignment_sensitivity(
     accel: ArrayLike = (1.0, 1.0, 1.0), convention: Literal["cross", "printed"] = "cross"
 ) -> Array:
-    r"""3x6 sensitivity of the residual acceleration to (sf1, sf2, sf3, dtheta1, dtheta2, dtheta3).
+    r"""3x6 sensitivity of the residual acceleration to
+    :math:`(sf_1, sf_2, sf_3, \delta\theta_1, \delta\theta_2, \delta\theta_3)`.
 
     Parameters
     ----------

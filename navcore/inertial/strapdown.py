@@ -79,11 +79,11 @@ class MechanizationTerms:
     coriolis : bool
         Include :math:`-(2\\omega_{ie}^n + \\omega_{en}^n)\\times v^n` in the velocity update.
     gravity : float
-        Local gravity magnitude (m/s²), along +down (default the constant G0 the papers
+        Local gravity magnitude (m/s²), along +down (default the constant ``G0`` the papers
         assume; :func:`navcore.gravity.normal_gravity` gives the WGS-84 value).
     lat0, h0 : float
-        Latitude (rad, in [-pi/2, pi/2]) and height (m) of the NED origin (used only by the
-        switched terms).
+        Latitude (rad, in :math:`[-\\pi/2, \\pi/2]`) and height (m) of the NED origin (used only
+        by the switched terms).
     """
 
     earth_rate: bool = False

@@ -216,7 +216,7 @@ def fly(
         Start height (m), speed (m/s), heading and flight-path angle (rad, deg with
         ``deg=True``; the flight-path angle in [-90, 90] deg).
     g : float
-        Gravity magnitude (m/s²) in the specific force (default the constant G0 the papers
+        Gravity magnitude (m/s²) in the specific force (default the constant ``G0`` the papers
         assume; :func:`navcore.gravity.normal_gravity` gives the WGS-84 value).
     deg : bool, default False
         The start angles (``lat0``, ``lon0``, ``heading0``, ``path_angle0``) are in degrees;
