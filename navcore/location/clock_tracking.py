@@ -72,7 +72,7 @@ __all__ = [
 
 @implements("ATC10 4.5.32")
 def alpha_parameter(sigma0: float, sigma: float, beta: float) -> float:
-    """``alpha = (8/27) sigma0^2 beta / sigma^2`` (ATC-10 Eq. 4.5.32).
+    r""":math:`\alpha = (8/27)\, \sigma_0^2 \beta / \sigma^2` (ATC-10 Eq. 4.5.32).
 
     Parameters
     ----------
@@ -397,10 +397,10 @@ def gain_recursion(beta: float, sigma: float, sigma0: float, n_steps: int) -> Ga
 def three_satellite_clock_variance(
     gamma_last: float, cross_last: float, sigma: float, sigma0: float, m: np.ndarray | int
 ) -> np.ndarray:
-    """Clock-error variance m epochs after the drop to three satellites (exact, any N).
+    r"""Clock-error variance m epochs after the drop to three satellites (exact, any N).
 
-    ``sigma^2 gamma_N + sigma0^2 (m + m^2) + 2 m d_N``: the extrapolation
-    ``tau_hat_{N+m} = tau_hat_N + m tau_bar`` accumulates the clock increments.
+    :math:`\sigma^2 \gamma_N + \sigma_0^2 (m + m^2) + 2 m d_N`: the extrapolation
+    :math:`\hat\tau_{N+m} = \hat\tau_N + m \bar\tau` accumulates the clock increments.
 
     Parameters
     ----------
@@ -528,7 +528,8 @@ def position_mse(
 
 
 def convergence_steps(history: GainHistory, rel: float) -> int:
-    """First n after which ``|gamma_n - gamma_inf| <= rel * gamma_inf`` for all later n.
+    r"""First n after which :math:`|\gamma_n - \gamma_\infty| \le \mathrm{rel} \cdot \gamma_\infty` for all
+    later n.
 
     ``gamma_inf`` is taken as the last gain of ``history``.
 
@@ -636,12 +637,12 @@ def simulate_tracker(
     tau_bar: float,
     tau_start: float = 12_345.0,
 ) -> TrackerMonteCarlo:
-    """Monte Carlo of the whole tracker on simulated clocks and time-of-arrival noise.
+    r"""Monte Carlo of the whole tracker on simulated clocks and time-of-arrival noise.
 
     Epoch 0: least squares on all satellites; 1..N: the constrained tracker with the gains of
     :func:`gain_recursion`; N+1..N+M: three satellites, clock extrapolated, position from
-    ``F3^-1``. The clock is ``tau_n = tau_start + n tau_bar + sum w_i + n A`` with
-    ``w_i, A ~ N(0, sigma0^2)``; measurement noise ``N(0, sigma^2 I)``. The aircraft track
+    ``F3^-1``. The clock is :math:`\tau_n = \tau_{start} + n \bar\tau + \sum_i w_i + n A` with
+    :math:`w_i, A \sim N(0, \sigma_0^2)`; measurement noise :math:`N(0, \sigma^2 I)`. The aircraft track
     is an arbitrary nonrandom sequence (it cancels in the errors because the estimator is
     exact for it); only errors are simulated. Vectorised over runs.
 
@@ -787,7 +788,8 @@ def tracking_position_errors(
     Parameters
     ----------
     trace_all, s_all : float
-        ``tr{(F'F)^-1}`` and the clock-direction term ``S`` of all the satellites in view
+        :math:`\operatorname{tr}\{(F'F)^{-1}\}` and the clock-direction term ``S`` of all the satellites in
+        view
         (dimensionless, F built from unit line-of-sight vectors; see
         :mod:`navcore.location.multilateration`).
     trace_three, s_three : float

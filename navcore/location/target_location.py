@@ -55,9 +55,9 @@ def _vec3(name: str, v: ArrayLike) -> Array:
 
 @implements("SP Sec. 2.6.4")
 def target_location_error(dr_vehicle_m: ArrayLike, dalpha_rad: ArrayLike, r_target_m: ArrayLike) -> Array:
-    """Target coordinate error: position error plus misalignment crossed with the lever arm.
+    r"""Target coordinate error: position error plus misalignment crossed with the lever arm.
 
-    ``dr + dalpha x r``.
+    :math:`\delta r + \delta\alpha \times r`.
 
     Parameters
     ----------
@@ -98,10 +98,11 @@ def target_location_covariance(
     r_target_m: ArrayLike,
     P_position_attitude: ArrayLike | None = None,
 ) -> Array:
-    """Covariance of the target error :func:`target_location_error`.
+    r"""Covariance of the target error :func:`target_location_error`.
 
-    ``M P M^T`` with ``M = [I, -[r x]]`` and ``P`` the joint covariance of the position and
-    attitude errors: ``P_r + [r x] P_a [r x]^T - P_ra [r x]^T - [r x] P_ra^T``.
+    :math:`M P M^T` with :math:`M = [I, -[r\times]]` and ``P`` the joint covariance of the position and
+    attitude errors: :math:`P_r + [r\times] P_\alpha [r\times]^T - P_{r\alpha} [r\times]^T - [r\times]
+    P_{r\alpha}^T`.
 
     Parameters
     ----------
@@ -112,8 +113,8 @@ def target_location_covariance(
     r_target_m : (3,) array
         Lever arm from vehicle to target, m (same frame).
     P_position_attitude : (3, 3) array, optional
-        Cross-covariance ``E[dr dalpha^T]``, m rad, with ``dalpha`` in the convention of the
-        module (``C_hat = (I + [dalpha x]) C``); default zero (uncorrelated errors).
+        Cross-covariance :math:`E[\delta r\, \delta\alpha^T]`, m rad, with ``dalpha`` in the convention of the
+        module (:math:`\hat C = (I + [\delta\alpha\times])\, C`); default zero (uncorrelated errors).
 
     Returns
     -------
