@@ -524,7 +524,7 @@ class MultipleAccessNoise:
 
 
 def cumulants_from_raw_moments(raw: ArrayLike) -> FloatArray:
-    """Cumulants from raw moments ``m_1..m_n`` by the standard recursion.
+    r"""Cumulants from raw moments :math:`m_1, \dots, m_n` by the standard recursion.
 
     Parameters
     ----------
@@ -534,7 +534,7 @@ def cumulants_from_raw_moments(raw: ArrayLike) -> FloatArray:
     Returns
     -------
     ndarray
-        Cumulants ``kappa_1..kappa_n``.
+        Cumulants :math:`\kappa_1, \dots, \kappa_n`.
 
     Examples
     --------
@@ -838,7 +838,7 @@ def stratified_tail(
 def two_point_exact_tail(amplitude: float, n_interferers: int, q: float, t: ArrayLike) -> FloatArray:
     r"""Exact :math:`P(n \ge t)` for the two-point density :math:`\pm a`.
 
-    ``sum_K Bin(K) P(a(2J - K) >= t)``, ``J ~ Bin(K, 1/2)``.
+    :math:`\sum_K \mathrm{Bin}(K)\, P(a(2J - K) \ge t)`, ``J ~ Bin(K, 1/2)``.
 
     Parameters
     ----------

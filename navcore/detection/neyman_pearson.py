@@ -65,12 +65,12 @@ def _open_probability(p: ArrayLike, name: str) -> FloatArray:
 
 @implements("ATC10 D.7", "ATC10 D.8")
 def detection_index_from_jammer_ratio(jammer_ratio: ArrayLike) -> FloatArray:
-    """Detection index ``d = (J / (P0 B tau))**(-1/2)`` of the matched-filter sample.
+    r"""Detection index :math:`d = (J / (P_0 B \tau))^{-1/2}` of the matched-filter sample.
 
     Parameters
     ----------
     jammer_ratio : array_like
-        ``x = J / (P0 B tau)`` (linear, > 0), jammer power over the signal energy-bandwidth
+        :math:`x = J / (P_0 B \tau)` (linear, > 0), jammer power over the signal energy-bandwidth
         product.
 
     Returns
@@ -101,7 +101,7 @@ def detection_index_from_jammer_ratio(jammer_ratio: ArrayLike) -> FloatArray:
 
 
 def threshold_from_detection_probability(p_d: ArrayLike, d: ArrayLike) -> FloatArray:
-    """Normalised threshold ``eta`` with ``P(d + n > eta) = p_d``, i.e. ``eta = d - Phi^{-1}(p_d)``.
+    r"""Normalised threshold ``eta`` with :math:`P(d + n > \eta) = p_d`, i.e. ``eta = d - Phi^{-1}(p_d)``.
 
     Parameters
     ----------
@@ -137,7 +137,8 @@ def threshold_from_detection_probability(p_d: ArrayLike, d: ArrayLike) -> FloatA
 
 @implements("ATC10 2.7.2")
 def erf_parameter_from_detection_probability(p_d: ArrayLike) -> FloatArray:
-    """The paper's ``phi`` with ``p_d = 1/2 + 1/2 erf(phi)`` (ATC-10 Eq. 2.7.2, D.13-D.15).
+    r"""The paper's ``phi`` with :math:`p_d = \tfrac12 + \tfrac12 \operatorname{erf}(\phi)` (ATC-10 Eq. 2.7.2,
+    D.13-D.15).
 
     Parameters
     ----------
@@ -147,7 +148,7 @@ def erf_parameter_from_detection_probability(p_d: ArrayLike) -> FloatArray:
     Returns
     -------
     ndarray
-        ``phi = erfinv(2 p_d - 1)`` (dimensionless).
+        :math:`\phi = \operatorname{erf}^{-1}(2 p_d - 1)` (dimensionless).
 
     References
     ----------
@@ -165,7 +166,7 @@ def erf_parameter_from_detection_probability(p_d: ArrayLike) -> FloatArray:
 
 @implements("ATC10 2.7.1")
 def log_false_alarm_probability(p_d: ArrayLike, d: ArrayLike) -> FloatArray:
-    """Natural log of ``p_f = Q(d - Phi^{-1}(p_d))`` (ATC-10 Eqs. 2.7.1, D.16-D.17).
+    r"""Natural log of ``p_f = Q(d - Phi^{-1}(p_d))`` (ATC-10 Eqs. 2.7.1, D.16-D.17).
 
     Parameters
     ----------
@@ -177,7 +178,7 @@ def log_false_alarm_probability(p_d: ArrayLike, d: ArrayLike) -> FloatArray:
     Returns
     -------
     ndarray
-        ``ln p_f``, accurate to full relative precision however small ``p_f`` is.
+        :math:`\ln p_f`, accurate to full relative precision however small ``p_f`` is.
 
     Raises
     ------

@@ -136,11 +136,11 @@ def _solve_increasing(fun, targets: ArrayLike, r_max: float = 1e7) -> FloatArray
 
 
 def chernoff_log_tails(cgf: CumulantGenerating, t: ArrayLike) -> tuple[FloatArray, FloatArray]:
-    """Chernoff bounds on ``ln P(S >= t)`` for many thresholds at once (ATC-10 Eqs. 3.5.5-3.5.7).
+    r"""Chernoff bounds on ``ln P(S >= t)`` for many thresholds at once (ATC-10 Eqs. 3.5.5-3.5.7).
 
     The vectorised form of :func:`chernoff_log_tail`: for each threshold the optimal tilt
-    ``r* >= 0`` solves ``mu'(r) = t`` (``r* = 0``, a bound of 1, for ``t <= E S``) and the bound
-    is ``mu(r*) - r* t``. Where ``mu'(r)`` never reaches ``t`` the tail is empty: the bound is
+    ``r* >= 0`` solves :math:`\mu'(r) = t` (``r* = 0``, a bound of 1, for ``t <= E S``) and the bound
+    is :math:`\mu(r^*) - r^* t`. Where :math:`\mu'(r)` never reaches ``t`` the tail is empty: the bound is
     ``-inf`` and the tilt ``inf``.
 
     Parameters
@@ -186,11 +186,11 @@ def chernoff_log_tails(cgf: CumulantGenerating, t: ArrayLike) -> tuple[FloatArra
 
 
 def gallager_log_tails_lower(cgf: CumulantGenerating, t: ArrayLike) -> tuple[FloatArray, FloatArray]:
-    """Lower bounds on ``ln P(S >= t)`` for many thresholds at once (ATC-10 Eq. 3.5.14 as corrected).
+    r"""Lower bounds on ``ln P(S >= t)`` for many thresholds at once (ATC-10 Eq. 3.5.14 as corrected).
 
     The vectorised form of :func:`gallager_log_tail_lower`: for each threshold the tilt ``r1``
-    solves ``mu'(r1) - sqrt(2 mu''(r1)) = t`` and the bound is
-    ``-ln 2 + mu(r1) - r1 t - 2 r1 sqrt(2 mu''(r1))`` (erratum E3-1: the printed exponent mixes
+    solves :math:`\mu'(r_1) - \sqrt{2 \mu''(r_1)} = t` and the bound is
+    :math:`-\ln 2 + \mu(r_1) - r_1 t - 2 r_1 \sqrt{2 \mu''(r_1)}` (erratum E3-1: the printed exponent mixes
     the Chernoff optimum with ``r1``, omits the logarithm and adds the last term). Where no
     tilt reaches ``t`` the bound is ``-inf`` and the tilt ``inf``.
 
@@ -282,12 +282,12 @@ def chernoff_log_tail(cgf: CumulantGenerating, t: float) -> TailBound:
 
 @implements("ATC10 3.5.14")
 def gallager_log_tail_lower(cgf: CumulantGenerating, t: float) -> TailBound:
-    """Tilted-Chebyshev lower bound on ``ln P(S >= t)`` (Eq. 3.5.14 as corrected, erratum E3-1).
+    r"""Tilted-Chebyshev lower bound on ``ln P(S >= t)`` (Eq. 3.5.14 as corrected, erratum E3-1).
 
-    Tilt by r1 chosen so that ``mu'(r1) - sqrt(2 mu''(r1)) = t``. Under the tilted law S has
-    mean ``mu'(r1)`` and variance ``mu''(r1)``; by Chebyshev it lies in
-    ``(t, t + 2 sqrt(2 mu''))`` with probability >= 1/2, and there the likelihood ratio is at
-    least ``exp(mu(r1) - r1 (t + 2 sqrt(2 mu''(r1))))``.
+    Tilt by r1 chosen so that :math:`\mu'(r_1) - \sqrt{2 \mu''(r_1)} = t`. Under the tilted law S has
+    mean :math:`\mu'(r_1)` and variance :math:`\mu''(r_1)`; by Chebyshev it lies in
+    :math:`(t, t + 2 \sqrt{2 \mu''})` with probability >= 1/2, and there the likelihood ratio is at
+    least :math:`\exp(\mu(r_1) - r_1 (t + 2 \sqrt{2 \mu''(r_1)}))`.
 
     Parameters
     ----------
@@ -390,7 +390,7 @@ def roc_lower_bound(cgf: CumulantGenerating, theta: ArrayLike) -> tuple[FloatArr
 
 @implements("ATC10 3.7.1")
 def quasi_optimal_amplitude(power: float, n_aircraft: int, tau_over_alpha: float) -> float:
-    """``a = sqrt(p alpha / ((N-1) 2 tau))``: the atoms +-a of the optimal density (Eq. 3.7.1).
+    r""":math:`a = \sqrt{p \alpha / ((N-1)\, 2 \tau)}`: the atoms +-a of the optimal density (Eq. 3.7.1).
 
     Parameters
     ----------
@@ -519,11 +519,12 @@ def quasi_optimal_exponent(
 def quasi_optimal_exponent_approx(
     theta: ArrayLike, power: float, n_aircraft: int, tau_over_alpha: float
 ) -> FloatArray:
-    """The large-N approximation (3.7.26)/(3.7.27).
+    r"""The large-N approximation (3.7.26)/(3.7.27).
 
     N for N-1, the atanh term and ``1 - q`` in the ratio dropped:
-    ``Expf ~ theta sqrt(N q / p) asinh(u) - N ln(1 - q + q sqrt(1 + u^2))``,
-    ``u = theta / sqrt(N q p)``.
+    :math:`\mathrm{Exp}_f \approx \theta \sqrt{N q / p}\, \operatorname{asinh}(u) - N \ln(1 - q + q \sqrt{1 +
+    u^2})`,
+    :math:`u = \theta / \sqrt{N q p}`.
 
     Parameters
     ----------
@@ -686,7 +687,8 @@ def exponent_from_gaussian_exponent(
 def exponent_from_gaussian_exponent_large_n(
     n_aircraft: ArrayLike, tau_over_alpha: ArrayLike, exp_g: ArrayLike
 ) -> FloatArray:
-    """First-order large-N expansion of (3.8.16): ``Exp_g - Exp_g^2 (1 - 6 tau/alpha) / (12 N tau/alpha)``.
+    r"""First-order large-N expansion of (3.8.16): :math:`\mathrm{Exp}_g - \mathrm{Exp}_g^2 (1 - 6
+    \tau/\alpha) / (12 N \tau/\alpha)`.
 
     Parameters
     ----------

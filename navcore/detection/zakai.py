@@ -317,7 +317,8 @@ def alternating_sidelobe_autocorrelation(
     Returns
     -------
     (2 n_sidelobes + 1,) ndarray
-        Normalised autocorrelation at lags ``-n_sidelobes..n_sidelobes`` (chip units).
+        Normalised autocorrelation at lags :math:`-s, \dots, s` with :math:`s` = ``n_sidelobes``
+        (chip units).
 
     Raises
     ------
