@@ -243,9 +243,10 @@ def run_covariance_analysis(
     measurement_steps : (N,) bool array, optional
         ``True`` where ``schedule`` may return measurements. Where it is known to be
         ``False`` for ``stride - 1`` consecutive steps and the flight condition does not
-        change, the engine takes one composite step ``Phi^L`` (cached per linearisation)
-        and computes the variances of the skipped samples exactly, ``diag(Phi^i P Phi^iT +
-        Q_i)`` for ``i < L`` (the saw-tooth growth between fixes, not an interpolation).
+        change, the engine takes one composite step :math:`\Phi^L` (cached per linearisation)
+        and computes the variances of the skipped samples exactly,
+        :math:`\operatorname{diag}(\Phi^i P \Phi^{iT} + Q_i)` for :math:`i < L` (the saw-tooth
+        growth between fixes, not an interpolation).
         Default: every step is a single step.
     stride : int
         Length of a composite step.
@@ -276,7 +277,7 @@ def run_covariance_analysis(
     Examples
     --------
     An unaided INS with an accelerometer bias of 1 mg (1-:math:`\sigma`) per axis: after 60 s the
-    horizontal position error is close to ``sqrt(2) b t^2 / 2``.
+    horizontal position error is close to :math:`\sqrt{2}\, b t^2 / 2`.
 
     >>> import numpy as np
     >>> from navcore.inertial.error_dynamics import ErrorSources, initial_covariance, ins_error_layout
@@ -669,18 +670,18 @@ class _Propagator:
 
 
 def discrete_noise(F: ArrayLike, S: ArrayLike, dt: float) -> Array:
-    """``Q = int_0^dt Phi(s) S Phi(s)^T ds`` by 3-point Gauss-Legendre quadrature.
+    r""":math:`Q = \int_0^{\Delta t} \Phi(s) S \Phi(s)^T ds` by 3-point Gauss-Legendre quadrature.
 
     The 3-point rule integrates polynomials of degree 5 exactly, i.e. every term of the
     integrand up to the third power of ``F s``; the neglected terms are of relative size
-    ``(|F| dt)^6``.
+    :math:`(\|F\| \Delta t)^6`.
 
     Parameters
     ----------
     F : (n, n) array
         Continuous-time system matrix, 1/s.
     S : (n, n) or (B, n, n) array
-        White-noise PSD ``G Q G^T`` (state unit squared per second), or a stack of them.
+        White-noise PSD :math:`G Q G^T` (state unit squared per second), or a stack of them.
     dt : float
         Step, s.
 
@@ -757,7 +758,7 @@ def _taylor_stack(F: Array, dt: float, order: int = 4) -> Array:
 
 
 def taylor_transition(F: ArrayLike, dt: float, order: int = 4) -> Array:
-    r"""Transition ``sum_{j <= order} (F dt)^j / j!`` (Horner form).
+    r"""Transition :math:`\sum_{j \le \mathrm{order}} (F \Delta t)^j / j!` (Horner form).
 
     Parameters
     ----------
@@ -1007,7 +1008,8 @@ def tightly_coupled_schedule(
 ) -> Schedule:
     r"""Pseudorange (code lock) and range rate (carrier lock) from each channel every ``every`` steps.
 
-    Rows (truth layout): ``d rho = -u . dr + db + b_pr[c]``, ``d rho_dot = -u . dv + d(b_dot) + b_rr[c]``,
+    Rows (truth layout): :math:`\delta\rho = -u \cdot \delta r + \delta b + b_{pr}[c]`, :math:`\delta\dot\rho
+    = -u \cdot \delta v + \delta\dot b + b_{rr}[c]`,
     with ``u`` the NED line-of-sight unit vector to the satellite, ``dr`` (m) and ``dv`` (m/s)
     the NED position and velocity errors, ``db`` the clock bias error (m) and ``d(b_dot)`` the
     clock drift error (m/s). ``g_load`` enters the range-rate rows through the clock's
@@ -1136,7 +1138,8 @@ def loosely_coupled_schedule(
 
     A fix is used when at least four codes are tracked and the expected horizontal error is
     below ``max_ehe_m``. The receiver solves position and clock by least squares from the
-    tracked pseudoranges, ``dr_meas = (G^T G)^{-1} G^T (b_pr + noise)`` with ``G = [-u, 1]``: its
+    tracked pseudoranges, :math:`\delta r_{meas} = (G^T G)^{-1} G^T (b_{pr} + \text{noise})` with ``G = [-u,
+    1]``: its
     position error is the position rows of that map applied to the per-channel biases (truth
     states) and to the noise, so the measurement is correlated with the pseudorange-bias
     states exactly as in the tightly coupled case. EHE is ``sigma_UERE * HDOP``.

@@ -165,7 +165,8 @@ def euler_batch(C: Array) -> Array:
 
 
 def euler_jacobian_batch(C: Array) -> Array:
-    """``d(roll, pitch, yaw)/d(dpsi) = J_b^{-1} C^T`` for ``C = (I + [dpsi x]) C0`` (batched).
+    r""":math:`\partial(\text{roll}, \text{pitch}, \text{yaw})/\partial(\Delta\psi) = J_b^{-1} C^T`
+    for :math:`C = (I + [\Delta\psi\times]) C_0` (batched).
 
     Parameters
     ----------
@@ -223,7 +224,7 @@ def _dd_phase_batch(pos: Array, ant: Array, sat_n: Array, sat_m: Array) -> Array
 
 
 def discrete_noise_nilpotent(F: Array, GQGt: Array, dt: float) -> Array:
-    r""":math:`Q_d=\int_0^{dt} e^{Fs} GQG^T e^{F^Ts} ds` for ``F^4 = 0`` (batched over F).
+    r""":math:`Q_d=\int_0^{dt} e^{Fs} GQG^T e^{F^Ts} ds` for :math:`F^4 = 0` (batched over F).
 
     ``e^{Fs}`` is a cubic in ``s``, so the integrand is a polynomial of degree 6 and the
     four-node Gauss-Legendre rule is exact.
@@ -231,7 +232,7 @@ def discrete_noise_nilpotent(F: Array, GQGt: Array, dt: float) -> Array:
     Parameters
     ----------
     F : (..., n, n) array
-        Continuous-time error dynamics with ``F^4 = 0``, 1/s.
+        Continuous-time error dynamics with :math:`F^4 = 0`, 1/s.
     GQGt : (n, n) array
         White-noise PSD mapped to the states (state unit squared per second; not checked:
         an inner-loop helper of :func:`run_monte_carlo`).

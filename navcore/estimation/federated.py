@@ -79,7 +79,8 @@ def lever_arm_velocity(
 ) -> tuple[Array, Array]:
     r"""Rigid-body map from navigation states to aperture velocity and its Jacobian (WF Eq. (10)).
 
-    ``T(x_N) = v + omega x r`` with ``x_N = [v, omega]``, all in one frame.
+    :math:`T(\mathbf x_N) = \mathbf v + \boldsymbol\omega \times \mathbf r` with ``x_N = [v, omega]``, all in
+    one frame.
 
     Parameters
     ----------
@@ -171,10 +172,12 @@ def navigation_mapped_covariance(tau: ArrayLike, P_N: ArrayLike, Q_T: ArrayLike)
 def accelerometer_predict(
     x: ArrayLike, P: ArrayLike, accel: ArrayLike, Q_a: ArrayLike, Ts: float
 ) -> tuple[Array, Array]:
-    """Time update of the accelerometer-integration filter (WF Eqs. (13)-(14), first lines).
+    r"""Time update of the accelerometer-integration filter (WF Eqs. (13)-(14), first lines).
 
-    It propagates the process model of WF Eq. (12), ``x(k+1) = x(k) + y_a(k) Ts + w_a(k) Ts``
-    with ``Cov w_a = Q_a``: ``x- = x + y_a Ts`` and ``P- = P + Q_a Ts^2``.
+    It propagates the process model of WF Eq. (12), :math:`\mathbf x(k+1) = \mathbf x(k) + \mathbf y_a(k) T_s
+    + \mathbf w_a(k) T_s`
+    with :math:`\operatorname{Cov} \mathbf w_a = \mathbf Q_a`: :math:`\mathbf x^- = \mathbf x + \mathbf y_a
+    T_s` and :math:`\mathbf P^- = \mathbf P + \mathbf Q_a T_s^2`.
 
     Parameters
     ----------
@@ -223,11 +226,13 @@ def accelerometer_predict(
 
 @implements("WF 12", "WF 13", "WF 14")
 def local_velocity_update(x: ArrayLike, P: ArrayLike, y_L: ArrayLike, R_L: ArrayLike) -> KalmanUpdate:
-    """Measurement update with a direct local velocity measurement (WF Eq. (13), corrected).
+    r"""Measurement update with a direct local velocity measurement (WF Eq. (13), corrected).
 
     The measurement model is the second line of WF Eq. (12), ``y_L = x + v_L`` with
-    ``Cov v_L = R_L``. The innovation is ``y_L - x-`` (a velocity); WF Eq. (13) prints
-    ``y_a - x-``. The posterior information is ``P-^-1 + R_L^-1`` (WF Eq. (14), second line).
+    :math:`\operatorname{Cov} \mathbf v_L = \mathbf R_L`. The innovation is :math:`\mathbf y_L - \mathbf x^-`
+    (a velocity); WF Eq. (13) prints
+    :math:`\mathbf y_a - \mathbf x^-`. The posterior information is :math:`(\mathbf P^-)^{-1} + \mathbf
+    R_L^{-1}` (WF Eq. (14), second line).
 
     Parameters
     ----------
@@ -266,7 +271,8 @@ def local_velocity_update(x: ArrayLike, P: ArrayLike, y_L: ArrayLike, R_L: Array
 
 @implements("WF 14")
 def accelerometer_steady_state_isotropic(sigma_a: float, Ts: float, sigma_L: float) -> ScalarSteadyState:
-    """Per-axis steady state of WF Eq. (14) for ``Q_a = sigma_a^2 I``, ``R_L = sigma_L^2 I``.
+    r"""Per-axis steady state of WF Eq. (14) for :math:`\mathbf Q_a = \sigma_a^2 I`, :math:`\mathbf R_L =
+    \sigma_L^2 I`.
 
     Parameters
     ----------
@@ -281,7 +287,7 @@ def accelerometer_steady_state_isotropic(sigma_a: float, Ts: float, sigma_L: flo
     -------
     ScalarSteadyState
         ``prior`` = P(k/k-1), ``posterior`` = P(k/k) in (m/s)², and the gain. For
-        ``sigma_a Ts << sigma_L`` the posterior is close to ``sigma_a Ts sigma_L``.
+        :math:`\sigma_a T_s \ll \sigma_L` the posterior is close to :math:`\sigma_a T_s \sigma_L`.
 
     Raises
     ------
@@ -302,9 +308,10 @@ def accelerometer_steady_state_isotropic(sigma_a: float, Ts: float, sigma_L: flo
 
 @implements("WF 14")
 def accelerometer_steady_state(Q_a: ArrayLike, R_L: ArrayLike, Ts: float) -> tuple[Array, Array]:
-    """Matrix steady state of WF Eq. (14): prior and posterior covariances.
+    r"""Matrix steady state of WF Eq. (14): prior and posterior covariances.
 
-    Solves the filter Riccati equation for ``Phi = I, Q = Q_a Ts^2, H = I, R = R_L`` with
+    Solves the filter Riccati equation for :math:`\Phi = I,\ Q = \mathbf Q_a T_s^2,\ H = I,\ R = \mathbf R_L`
+    with
     ``scipy.linalg.solve_discrete_are``.
 
     Parameters
@@ -354,9 +361,9 @@ def accelerometer_steady_state(Q_a: ArrayLike, R_L: ArrayLike, Ts: float) -> tup
 def gps_doppler_update(
     x_prior: ArrayLike, P_prior: ArrayLike, y_G: ArrayLike, H_G: ArrayLike, R_G: ArrayLike
 ) -> KalmanUpdate:
-    """Single-step GPS-Doppler update of the accelerometer prior (WF Eq. (16)).
+    r"""Single-step GPS-Doppler update of the accelerometer prior (WF Eq. (16)).
 
-    ``y_G = H_G x + v_G`` (WF Eq. (15)).
+    :math:`\mathbf y_G = \mathbf H_G \mathbf x + \mathbf v_G` (WF Eq. (15)).
 
     Parameters
     ----------
@@ -521,9 +528,10 @@ def federated_fusion(
 
 @implements("WF 20")
 def fused_error_covariance(covariances: Sequence[ArrayLike | float | None], joint: ArrayLike) -> Array:
-    """True covariance of the fused error given the joint local-error covariance (WF Eq. (20)).
+    r"""True covariance of the fused error given the joint local-error covariance (WF Eq. (20)).
 
-    ``Cov = P_D [P_1^-1 ... P_N^-1] P [P_1^-1 ... P_N^-1]^T P_D``, where ``P`` is the
+    :math:`\operatorname{Cov} = \mathbf P_D [\mathbf P_1^{-1} \cdots \mathbf P_N^{-1}]\, \mathbf P\, [\mathbf
+    P_1^{-1} \cdots \mathbf P_N^{-1}]^T \mathbf P_D`, where ``P`` is the
     ``(N n) x (N n)`` joint covariance of the stacked local errors, whose ``(i, j)`` block is the
     cross-covariance of estimators ``i`` and ``j`` (WF prints the (2, 3) block as ``P_NG``; it is
     ``P_LG``). Blocks belonging to outages are ignored (zero weight).
