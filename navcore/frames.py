@@ -195,7 +195,7 @@ def _mtv(C: Array, v: Array) -> Array:
 
 
 def skew(v: ArrayLike) -> Array:
-    """Skew-symmetric (cross-product) matrix: ``skew(v) @ w == np.cross(v, w)``.
+    r"""Skew-symmetric (cross-product) matrix: ``skew(v) @ w == np.cross(v, w)``.
 
     Parameters
     ----------
@@ -205,7 +205,7 @@ def skew(v: ArrayLike) -> Array:
     Returns
     -------
     (..., 3, 3) ndarray
-        ``[v x]`` for each vector.
+        :math:`[v\times]` for each vector.
 
     Raises
     ------
@@ -331,7 +331,8 @@ def rot_z(angle: ArrayLike, *, deg: bool = False) -> Array:
 
 
 def dcm_from_euler(roll: ArrayLike, pitch: ArrayLike, yaw: ArrayLike, *, deg: bool = False) -> Array:
-    r"""``C_bn = Rz(yaw) Ry(pitch) Rx(roll)`` (body to NED), for single angles or stacks.
+    r""":math:`C_b^n = R_z(\text{yaw})\, R_y(\text{pitch})\, R_x(\text{roll})` (body to NED), for single
+    angles or stacks.
 
     Parameters
     ----------

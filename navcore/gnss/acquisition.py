@@ -220,7 +220,7 @@ def doppler_cell_hz(dwell_s: float) -> float:
 
 
 def range_rate_from_doppler(doppler_hz: ArrayLike, wavelength_m: float) -> Array | float:
-    """Range rate corresponding to a Doppler shift: ``f * lambda``.
+    r"""Range rate corresponding to a Doppler shift: :math:`f \lambda`.
 
     Parameters
     ----------
@@ -252,7 +252,7 @@ def range_rate_from_doppler(doppler_hz: ArrayLike, wavelength_m: float) -> Array
 def probability_outside_sigma_box(n_dims: int = 1, k: float = 1.0) -> float:
     r"""Probability that an n-D standard Gaussian falls outside the :math:`\pm k \sigma` box.
 
-    :math:`1 - (1 - 2\Phi(-k))^n`, evaluated as ``-expm1(n log1p(-2 Phi(-k)))``.
+    :math:`1 - (1 - 2\Phi(-k))^n`, evaluated as :math:`1 - (1 - 2\Phi(-k))^n`.
 
     Parameters
     ----------

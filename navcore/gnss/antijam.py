@@ -80,7 +80,7 @@ Array = NDArray[np.float64]
 
 
 def ideal_correlation(tau_chips: ArrayLike) -> Array | float:
-    """Ideal code autocorrelation, ``1 - |tau|`` inside one chip, 0 outside (SP Sec. 3.0).
+    r"""Ideal code autocorrelation, :math:`1 - |\tau|` inside one chip, 0 outside (SP Sec. 3.0).
 
     Parameters
     ----------
@@ -149,7 +149,7 @@ def early_minus_late(tau_chips: ArrayLike, spacing_chips: float = 0.5) -> Array 
 
 
 def spectral_separation_q(jammer_bandwidth_hz: float, chip_rate_hz: float) -> float:
-    r"""``Q = 1/(Rc kappa)`` for a flat jammer of the given bandwidth centred on a BPSK signal.
+    r""":math:`Q = 1/(R_c \kappa)` for a flat jammer of the given bandwidth centred on a BPSK signal.
 
     ``kappa`` integrates the signal's normalised spectrum :math:`T_c \operatorname{sinc}^2(f T_c)` against the
     jammer's flat spectrum 1/B over +-B/2. A narrow jammer gives Q -> 1; a jammer as wide as
@@ -197,7 +197,8 @@ def spectral_separation_q(jammer_bandwidth_hz: float, chip_rate_hz: float) -> fl
 def effective_cn0_dbhz(
     cn0_dbhz: ArrayLike, js_db: ArrayLike, chip_rate_hz: float, q: float = 2.0
 ) -> Array | float:
-    """Effective :math:`C/N_0` under jamming: ``-10 log10(1/(C/N0) + (J/S)/(Q Rc))``.
+    r"""Effective :math:`C/N_0` under jamming: :math:`-10 \log_{10}\left(\frac{1}{C/N_0} + \frac{J/S}{Q
+    R_c}\right)`.
 
     Parameters
     ----------
@@ -293,7 +294,7 @@ def free_space_js_db(
     signal_power_dbw: float,
     jammer_gain_db: float = 0.0,
 ) -> Array | float:
-    """Free-space J/S: ``P_J + G_J - 20 log10(4 pi d / lambda) - S``.
+    r"""Free-space J/S: :math:`P_J + G_J - 20 \log_{10}(4 \pi d / \lambda) - S`.
 
     Parameters
     ----------

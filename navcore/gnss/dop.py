@@ -53,12 +53,12 @@ Array = NDArray[np.float64]
 
 @dataclass(frozen=True)
 class DilutionOfPrecision:
-    """Dilutions of precision of one geometry, or a stack of geometries (arrays).
+    r"""Dilutions of precision of one geometry, or a stack of geometries (arrays).
 
     Attributes
     ----------
     gdop : float or ndarray
-        Geometric DOP, ``sqrt(tr D)``.
+        Geometric DOP, :math:`\sqrt{\operatorname{tr} D}`.
     pdop : float or ndarray
         Position DOP (3-D).
     hdop : float or ndarray
@@ -70,7 +70,7 @@ class DilutionOfPrecision:
     n_used : int or ndarray
         Satellites used (above the mask, with a positive weight).
     covariance : (..., 4, 4) ndarray
-        ``D = (G^T W G)^-1`` per unit range variance, order north, east, down, clock;
+        :math:`D = (G^T W G)^{-1}` per unit range variance, order north, east, down, clock;
         infinite where the geometry has no solution.
     """
 

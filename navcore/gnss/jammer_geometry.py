@@ -182,7 +182,7 @@ def slant_range_m(position_ned_m: ArrayLike, emitter_ned_m: ArrayLike) -> Array 
 
 
 def free_space_loss_db(range_m: ArrayLike, wavelength_m: float) -> Array | float:
-    """Free-space path loss ``20 log10(4 pi d / lambda)``.
+    r"""Free-space path loss :math:`20 \log_{10}(4 \pi d / \lambda)`.
 
     Parameters
     ----------
@@ -215,7 +215,7 @@ def free_space_loss_db(range_m: ArrayLike, wavelength_m: float) -> Array | float
 def received_jammer_power_dbw(
     erp_dbw: float, range_m: ArrayLike, wavelength_m: float, rx_gain_dbi: float = 0.0
 ) -> Array | float:
-    """Jammer power at the receiver: ``ERP + G_rj - 20 log10(4 pi d / lambda)``.
+    r"""Jammer power at the receiver: :math:`\mathrm{ERP} + G_{rj} - 20 \log_{10}(4 \pi d / \lambda)`.
 
     Parameters
     ----------
@@ -260,7 +260,7 @@ def effective_cn0_with_jammer_dbhz(
     chip_rate_hz: float,
     q: float = 2.0,
 ) -> Array | float:
-    """Effective :math:`C/N_0`: ``C - 10 log10(N0 + J/(Q Rc))`` (arrays broadcast).
+    r"""Effective :math:`C/N_0`: :math:`C - 10 \log_{10}(N_0 + J/(Q R_c))` (arrays broadcast).
 
     ``carrier_dbw`` of shape ``(n_sat,)`` and ``jammer_dbw`` of shape ``(N, 1)`` give
     ``(N, n_sat)``; ``jammer_dbw = -inf`` is not allowed (use a very low power instead).
@@ -315,7 +315,7 @@ def jammer_power_at_threshold_dbw(
 ) -> Array | float:
     r"""Received jammer power that brings the effective :math:`C/N_0` down to ``threshold_dbhz``.
 
-    ``J* = Q Rc (C/gamma - N0)``.
+    :math:`J^* = Q R_c (C/\gamma - N_0)`.
 
     Parameters
     ----------
@@ -410,8 +410,8 @@ def straight_track_crossing_times(
 ) -> tuple[Array | float, Array | float]:
     """Times at which a straight track enters and leaves the sphere of radius ``threshold_range``.
 
-    The roots of ``d_min^2 + v^2 (t - t_ca)^2 = d*^2``; NaN where the track never comes
-    that close (``d* < d_min``).
+    The roots of :math:`d_{min}^2 + v^2 (t - t_{ca})^2 = d^{*2}`; NaN where the track never comes
+    that close (:math:`d^* < d_{min}`).
 
     Parameters
     ----------
@@ -506,7 +506,7 @@ def jammed_cn0_dbhz(cn0_dbhz: ArrayLike, jammer_to_noise_db: ArrayLike) -> Array
 
     With :math:`x = J/(Q R_c N_0)` the jammer's noise density at the correlator output over
     the thermal density, :math:`(C/N_0)_{eff} = (C/N_0)/(1 + x)`, i.e. in dB
-    ``cn0_dbhz - 10 log10(1 + 10^(jammer_to_noise_db / 10))`` (the form of
+    :math:`(C/N_0) - 10 \log_{10}(1 + x)` (the form of
     :func:`effective_cn0_with_jammer_dbhz` with the signal, jammer power, chip rate and
     spectral separation folded into one ratio). Arrays broadcast.
 
@@ -560,7 +560,7 @@ def pll_jitter_threshold_dbhz(
     r""":math:`C/N_0` (dB-Hz) at which ``k_sigma`` times the carrier loop's thermal jitter equals the
     allowed phase error.
 
-    Positive root of ``a x^2 - Bn x - Bn/(2T) = 0`` with ``a = (phi_max/k)^2`` (rad²).
+    Positive root of :math:`a x^2 - B_n x - B_n/(2T) = 0` with :math:`a = (\phi_{max}/k)^2` (rad²).
 
     Parameters
     ----------

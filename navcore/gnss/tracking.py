@@ -128,7 +128,7 @@ def error_transfer_coefficients(omega0: float) -> tuple[Array, Array]:
     num : (4,) ndarray
         ``[1, 0, 0, 0]``.
     den : (4,) ndarray
-        ``[1, 2 omega0, 2 omega0^2, omega0^3]`` (the standard third-order loop).
+        :math:`[1, 2\omega_0, 2\omega_0^2, \omega_0^3]` (the standard third-order loop).
 
     Raises
     ------

@@ -159,7 +159,7 @@ def schuler_frequency(g: float = G0, radius: float = SCHULER_RADIUS_M) -> float:
 
 
 def schuler_period(g: float = G0, radius: float = SCHULER_RADIUS_M) -> float:
-    """Schuler period ``2 pi sqrt(R / g)``.
+    r"""Schuler period :math:`2 \pi \sqrt{R / g}`.
 
     Parameters
     ----------
@@ -376,7 +376,7 @@ def psi_to_attitude_error(layout: StateLayout) -> Array:
 
 
 def skew_stack(v: ArrayLike) -> Array:
-    """Skew-symmetric cross-product matrices of vectors ``(..., 3) -> (..., 3, 3)``.
+    r"""Skew-symmetric cross-product matrices of vectors ``(..., 3) -> (..., 3, 3)``.
 
     Parameters
     ----------
@@ -386,7 +386,7 @@ def skew_stack(v: ArrayLike) -> Array:
     Returns
     -------
     (..., 3, 3) ndarray
-        ``[v x]`` with ``[v x] w = v x w``.
+        :math:`[v\times]` with :math:`[v\times] w = v \times w`.
 
     Examples
     --------
@@ -403,7 +403,7 @@ def skew_stack(v: ArrayLike) -> Array:
 
 
 def earth_rate_ned(lat: ArrayLike, *, deg: bool = False) -> Array:
-    """Earth rate in NED at latitude ``lat``: ``Omega [cos L, 0, -sin L]``.
+    r"""Earth rate in NED at latitude ``lat``: :math:`\Omega\, [\cos L, 0, -\sin L]`.
 
     Parameters
     ----------
@@ -438,7 +438,7 @@ def earth_rate_ned(lat: ArrayLike, *, deg: bool = False) -> Array:
 
 
 def transport_rate_ned(v_ned: ArrayLike, lat: ArrayLike, h: ArrayLike = 0.0, *, deg: bool = False) -> Array:
-    """Transport rate ``[v_E, -v_N, -v_E tan L] / (R + h)``, spherical Earth.
+    r"""Transport rate :math:`[v_E, -v_N, -v_E \tan L] / (R + h)`, spherical Earth.
 
     Parameters
     ----------
@@ -704,11 +704,11 @@ def _process_noise_diag_stack(layout: StateLayout, sources: ErrorSources, speed_
 
 
 def process_noise_psd(layout: StateLayout, sources: ErrorSources, *, speed_mps: float = 0.0) -> Array:
-    r"""Diagonal state-space noise PSD ``G Q G^T`` for :func:`error_dynamics`.
+    r"""Diagonal state-space noise PSD :math:`G Q G^T` for :func:`error_dynamics`.
 
     Velocity gets the accelerometer white noise (``accel_random_walk^2``), the :math:`\psi` angle the
-    gyro white noise (``gyro_random_walk^2``); Gauss-Markov blocks get ``2 sigma^2 beta`` with
-    ``beta = speed / distance constant``; the clock bias and drift their PSDs.
+    gyro white noise (``gyro_random_walk^2``); Gauss-Markov blocks get :math:`2 \sigma^2 \beta` with
+    :math:`\beta = \text{speed} / \text{distance constant}`; the clock bias and drift their PSDs.
 
     Parameters
     ----------

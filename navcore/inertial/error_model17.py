@@ -102,7 +102,8 @@ _CD = ERROR_LAYOUT_17.index("clock drift")
 
 @implements("KZL 11")
 def skew_paper(a: ArrayLike) -> Array:
-    """The matrix KZL Eq. 11 prints as ``[a x]``: ``-skew(a)``, so ``skew_paper(a) @ b = b x a``.
+    r"""The matrix KZL Eq. 11 prints as :math:`[a\times]`: ``-skew(a)``, so ``skew_paper(a) @ b``
+    is :math:`b \times a`.
 
     Parameters
     ----------
@@ -112,7 +113,7 @@ def skew_paper(a: ArrayLike) -> Array:
     Returns
     -------
     (3, 3) ndarray
-        ``-[a x]``.
+        :math:`-[a\times]`.
 
     References
     ----------
@@ -174,9 +175,9 @@ def noise_psd_17(
     clock_drift_walk: float = 0.0,
     clock_bias_walk: float = 0.0,
 ) -> Array:
-    """State-space noise PSD ``G Q G^T`` (17 x 17) for isotropic sensor noises.
+    r"""State-space noise PSD :math:`G Q G^T` (17 x 17) for isotropic sensor noises.
 
-    The noise enters as ``-R w``; for isotropic noise ``R q I R^T = q I``, so the result does
+    The noise enters as ``-R w``; for isotropic noise :math:`R\, q I\, R^T = q I`, so the result does
     not depend on the attitude.
 
     Parameters
@@ -229,15 +230,15 @@ def noise_psd_17(
 
 @implements("KZL 5")
 def transition_exact(F: ArrayLike, dt: float) -> Array:
-    r""":math:`e^{F\,dt}` of the nilpotent 17-state F: ``I + F dt + (F dt)^2/2 + (F dt)^3/6``.
+    r""":math:`e^{F\,dt}` of the nilpotent 17-state F: :math:`I + F\,dt + (F\,dt)^2/2 + (F\,dt)^3/6`.
 
-    Exact because ``F^4 = 0`` (KZL Eq. 5: the series terminates). Broadcasts over a leading
+    Exact because :math:`F^4 = 0` (KZL Eq. 5: the series terminates). Broadcasts over a leading
     axis.
 
     Parameters
     ----------
     F : (..., n, n) array
-        Error dynamics with ``F^4 = 0``, 1/s.
+        Error dynamics with :math:`F^4 = 0`, 1/s.
     dt : float
         Interval, s (``> 0``).
 
@@ -314,7 +315,8 @@ def code_doppler_rows(los_ned: ArrayLike) -> Array:
     Returns
     -------
     H : (2 nu, 17) ndarray
-        Rows ``[-l^T 0 0 0 0 1 0]`` and ``[0 -l^T 0 0 0 0 1]`` for each satellite, in the
+        Rows :math:`[-l^T\ 0\ 0\ 0\ 0\ 1\ 0]` and :math:`[0\ {-l^T}\ 0\ 0\ 0\ 0\ 1]` for each satellite, in
+        the
         order (:math:`\rho_1, \dot\rho_1, \rho_2, \dots`), for ``y = predicted - measured`` (m per m and
         m/s per m/s).
 

@@ -123,7 +123,7 @@ class ImuSpec:
 def angle_random_walk_deg_per_sqrt_h(root_psd_deg_per_h_per_sqrt_hz: float) -> float:
     """Convert a gyro rate-noise root PSD in deg/h/√Hz to angle random walk in deg/√h.
 
-    ``1 deg/h/sqrt(Hz) = 1 deg/h * sqrt(s) = (1/60) deg/sqrt(h)``.
+    1 deg/h/√Hz = 1 (deg/h)·√s = (1/60) deg/√h.
 
     Parameters
     ----------
@@ -150,9 +150,9 @@ def angle_random_walk_deg_per_sqrt_h(root_psd_deg_per_h_per_sqrt_hz: float) -> f
 
 
 def velocity_random_walk_m_per_s_per_sqrt_h(root_psd_micro_g_per_sqrt_hz: float) -> float:
-    """Convert an accelerometer noise root PSD in micro-g/√Hz to velocity random walk in m/s/√h.
+    r"""Convert an accelerometer noise root PSD in micro-g/√Hz to velocity random walk in m/s/√h.
 
-    ``1 micro-g/sqrt(Hz) = 9.80665e-6 m/s/sqrt(s) = 9.80665e-6 * 60 m/s/sqrt(h)``.
+    1 micro-g/√Hz = :math:`9.80665 \times 10^{-6}` m/s/√s = :math:`9.80665 \times 10^{-6} \cdot 60` m/s/√h.
 
     Parameters
     ----------

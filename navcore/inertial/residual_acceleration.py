@@ -102,7 +102,8 @@ def scale_factor_misalignment_sensitivity(
     Returns
     -------
     (3, 6) ndarray
-        ``[diag(a), [a x] sign]``: acceleration unit per unit scale factor and per rad.
+        :math:`[\operatorname{diag}(a),\ \mp[a\times]]` (the sign by ``convention``): acceleration
+        unit per unit scale factor and per rad.
 
     Raises
     ------
@@ -258,9 +259,10 @@ def sphere_probability(cov: ArrayLike, radius: float) -> float:
 
 @implements("SP Table 2.6")
 def sphere_radius(cov: ArrayLike, p: float = 0.9) -> float:
-    """Radius of the sphere about the origin enclosing probability ``p`` of N(0, cov).
+    r"""Radius of the sphere about the origin enclosing probability ``p`` of N(0, cov).
 
-    For ``cov = s^2 I`` in 3-D and p = 0.9 this is 2.500278 s; the 2-D p = 0.5 value is the
+    For :math:`\mathrm{cov} = s^2 I` in 3-D and :math:`p = 0.9` this is :math:`2.500278\, s`; the 2-D :math:`p
+    = 0.5` value is the
     CEP (1.17741 s). Any dimension and any (PSD) covariance.
 
     Parameters

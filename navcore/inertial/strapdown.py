@@ -264,7 +264,7 @@ def strapdown_step(
     dt: float,
     terms: MechanizationTerms = MechanizationTerms(),
 ) -> NavState:
-    """Advance the mechanization by one IMU interval (KZL Eqs. 7-9).
+    r"""Advance the mechanization by one IMU interval (KZL Eqs. 7-9).
 
     Parameters
     ----------
@@ -283,8 +283,8 @@ def strapdown_step(
     -------
     NavState
         The state at the end of the interval. The attitude update is exact for a constant
-        body rate (``q ⊗ exp(omega dt / 2)``, then the navigation-frame rotation
-        ``exp(-omega_in dt / 2) ⊗ q``); velocity uses the mid-interval attitude (the start
+        body rate (:math:`q \otimes \exp(\omega\, dt / 2)`, then the navigation-frame rotation
+        :math:`\exp(-\omega_{in}\, dt / 2) \otimes q`); velocity uses the mid-interval attitude (the start
         attitude rotated by half the body increment and by half the navigation-frame
         rotation); position is trapezoidal in velocity.
 

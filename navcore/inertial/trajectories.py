@@ -142,7 +142,7 @@ class Trajectory:
 
 
 def euler_to_dcm_stack(roll: Array, pitch: Array, yaw: Array, *, deg: bool = False) -> Array:
-    """``C_bn = Rz(yaw) Ry(pitch) Rx(roll)`` for arrays of angles.
+    r""":math:`C_b^n = R_z(\text{yaw})\, R_y(\text{pitch})\, R_x(\text{roll})` for arrays of angles.
 
     Parameters
     ----------
