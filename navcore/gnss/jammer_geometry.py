@@ -841,7 +841,7 @@ def hysteresis_lock(
     loss_dbhz : float or (n,) array
         Loss threshold, dB-Hz.
     reacquisition_dbhz : float or (n,) array
-        Reacquisition threshold, dB-Hz (``>= loss_dbhz``).
+        Reacquisition threshold, dB-Hz (at least ``loss_dbhz``).
     initially_locked : bool, default True
         Lock state before the first sample that decides it.
 
