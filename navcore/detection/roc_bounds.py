@@ -645,8 +645,8 @@ def exponent_from_gaussian_exponent(
 
     .. math::
 
-        \mathrm{Exp} = \sqrt{4 N (\tau/\alpha) \mathrm{Exp}_g}\, \operatorname{asinh}\sqrt{u}
-            - N \ln\left(1 - 2\tau/\alpha + (2\tau/\alpha) \sqrt{1 + u}\right),
+        \mathrm{Exp} &= \sqrt{4 N (\tau/\alpha) \mathrm{Exp}_g}\, \operatorname{asinh}\sqrt{u} \\
+            &\quad - N \ln\left(1 - 2\tau/\alpha + (2\tau/\alpha) \sqrt{1 + u}\right),
 
     :math:`\theta` eliminated through :math:`\mathrm{Exp}_g = \theta^2/(2p)`.
 

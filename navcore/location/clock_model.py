@@ -7,11 +7,11 @@ plus a fractional-Brownian "1/f" (flicker frequency) component with Hurst expone
 
 .. math::
 
-    E[(\tau_n - \tau_0)(\tau_m - \tau_0)] = \sigma_1^2 \min(m, n)
-        + \frac{\sigma_2^2}{2} \left(m^{2\rho} + n^{2\rho} - |m - n|^{2\rho}\right)
-        \quad \left(+\, \bar\tau^2 m n \text{ for the raw second moment}\right),
+    E[(\tau_n - \tau_0)(\tau_m - \tau_0)] &= \sigma_1^2 \min(m, n) \\
+        &\quad + \frac{\sigma_2^2}{2} \left(m^{2\rho} + n^{2\rho} - |m - n|^{2\rho}\right)
 
-the unnumbered model of ATC-10 Sec. 4.3, with the ":math:`(1/\tau^2)\, mn`" typo read as
+(plus :math:`\bar\tau^2 m n` for the raw second moment), the unnumbered model of ATC-10
+Sec. 4.3, with the ":math:`(1/\tau^2)\, mn`" typo read as
 :math:`\bar\tau^2 mn` (erratum E4-9). With :math:`\sigma_1 = \sigma_2 = \sigma_0` and
 :math:`\rho = 1` it reduces to :math:`\sigma_0^2 (\min(m, n) + m n)`: a random walk plus a
 random frequency offset (Eq. 4.3.1).

@@ -12,8 +12,8 @@ projected off the position directions,
 
 .. math::
 
-    \hat\tau_n = \hat\tau_{n-1} + \bar\tau
-        + \gamma_n \mathbf{1}'(I - P)\left(T_n - k_n - (\hat\tau_{n-1} + \bar\tau) \mathbf{1}\right),
+    \hat\tau_n &= \hat\tau_{n-1} + \bar\tau \\
+        &\quad + \gamma_n \mathbf{1}'(I - P)\left(T_n - k_n - (\hat\tau_{n-1} + \bar\tau) \mathbf{1}\right),
 
 with the gain :math:`\gamma_n = s_n / (\sigma^2 + \beta s_n)`, :math:`s_n` the prior variance
 (Eqs. 4.5.16-4.5.25). The error variance is :math:`\sigma^2 \gamma_n`; the position error
@@ -335,7 +335,7 @@ def gain_recursion(beta: float, sigma: float, sigma0: float, n_steps: int) -> Ga
     .. math::
 
         s_n = 2 \sigma_0^2 + \sigma^2 \gamma_{n-1} + 2 d_{n-1}, \quad
-        \gamma_n = \frac{s_n}{\sigma^2 + \beta s_n}, \quad
+        \gamma_n = \frac{s_n}{\sigma^2 + \beta s_n}, \\
         a_n = 1 - \gamma_n \beta, \quad
         d_n = a_n (\sigma_0^2 + d_{n-1}),
 
