@@ -18,9 +18,11 @@ Models, with their equations:
 
   .. math::
 
-      F(p_f) &= [1 - (1 - p_f)^{2 B \alpha}]\, [1 - (1 - p_f)^{4 B \beta}]^3, \\
-      G(p_f) &= [1 - (1 - p_f)^{2 B \alpha}]\, [1 - (1 - p_f)^{n_v}]^3,
-      \qquad n_v = \frac{8 B}{3} \frac{v \alpha}{c};
+      F(p_f) &= [1 - (1 - p_f)^{2 B \alpha}] \\
+      &\quad \times [1 - (1 - p_f)^{4 B \beta}]^3, \\
+      G(p_f) &= [1 - (1 - p_f)^{2 B \alpha}] \\
+      &\quad \times [1 - (1 - p_f)^{n_v}]^3, \\
+      n_v &= \frac{8 B}{3} \frac{v \alpha}{c};
 
 * :math:`N_{FL} / N_T = (1 - N/N_T) F^{K t + 1}` (Eq. 2.5.5) and
   :math:`N_{ADL} / N_T = \frac12 (N/N_T) P_{DL} G^{K - 1} F` (Eq. 2.5.12 as corrected);

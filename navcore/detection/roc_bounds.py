@@ -5,7 +5,8 @@ exceeds a threshold :math:`\theta`, with :math:`R = 1` (signal at its peak) or 0
 
 .. math::
 
-    p_f = P(n \ge \theta), \qquad 1 - p_d = P(n < \theta - 1) = P(-n > 1 - \theta).
+    p_f &= P(n \ge \theta), \\
+    1 - p_d &= P(n < \theta - 1) = P(-n > 1 - \theta).
 
 All bounds take a *cumulant generating function* object with ``cgf(s)``, ``cgf_d1(s)`` and
 ``cgf_d2(s)`` (e.g. :class:`navcore.detection.multiple_access.MultipleAccessNoise`) and

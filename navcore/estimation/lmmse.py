@@ -177,7 +177,8 @@ def lmmse_with_nuisance_information_form(
 
     .. math::
 
-        P_{x,err} &= \left[P_x^{-1} + F' P_n^{-1} F - F' P_n^{-1} G A G' P_n^{-1} F\right]^{-1}, \\
+        P_{x,err} &= \left[P_x^{-1} + F' P_n^{-1} F\right. \\
+            &\qquad \left. - F' P_n^{-1} G A G' P_n^{-1} F\right]^{-1}, \\
         P_{y,err} &= A + A G' P_n^{-1} F P_{x,err} F' P_n^{-1} G A.
 
     Parameters

@@ -7,8 +7,8 @@ plus a fractional-Brownian "1/f" (flicker frequency) component with Hurst expone
 
 .. math::
 
-    E[(\tau_n - \tau_0)(\tau_m - \tau_0)] &= \sigma_1^2 \min(m, n) \\
-        &\quad + \frac{\sigma_2^2}{2} \left(m^{2\rho} + n^{2\rho} - |m - n|^{2\rho}\right)
+    E[(\tau_n - \tau_0)&(\tau_m - \tau_0)] = \sigma_1^2 \min(m, n) \\
+        &+ \frac{\sigma_2^2}{2} \left(m^{2\rho} + n^{2\rho} - |m - n|^{2\rho}\right)
 
 (plus :math:`\bar\tau^2 m n` for the raw second moment), the unnumbered model of ATC-10
 Sec. 4.3, with the ":math:`(1/\tau^2)\, mn`" typo read as
@@ -93,8 +93,8 @@ def mandelbrot_van_ness_constant_integral(rho_h: float) -> float:
 
     .. math::
 
-        V_0 = \frac{1}{\Gamma(\rho + 1/2)^2} \left[\frac{1}{2 \rho}
-            + \int_0^\infty \left((1 + s)^{\rho - 1/2} - s^{\rho - 1/2}\right)^2 ds\right]
+        V_0 &= \frac{1/(2 \rho) + I}{\Gamma(\rho + 1/2)^2}, \\
+        I &= \int_0^\infty \left((1 + s)^{\rho - 1/2} - s^{\rho - 1/2}\right)^2 ds
 
     with :math:`\rho` = ``rho_h``. Numerical quadrature (``scipy.integrate.quad``), the
     independent oracle for

@@ -116,8 +116,8 @@ def psi(alpha: np.ndarray | float) -> np.ndarray | float:
 
     .. math::
 
-        \psi(\alpha) = 1.5\, \alpha^{1/3} \left\{\sqrt[3]{1 + \sqrt{1 + \alpha}}
-            + \sqrt[3]{1 - \sqrt{1 + \alpha}}\right\}.
+        \psi(\alpha) = 1.5\, \alpha^{1/3} \Big\{&\sqrt[3]{1 + \sqrt{1 + \alpha}} \\
+            &+ \sqrt[3]{1 - \sqrt{1 + \alpha}}\Big\}.
 
     The second cube root has a negative argument: ``np.cbrt`` returns the real root,
     whereas ``x ** (1/3)`` would return a complex principal root. For large :math:`\alpha`
@@ -334,10 +334,10 @@ def gain_recursion(beta: float, sigma: float, sigma0: float, n_steps: int) -> Ga
 
     .. math::
 
-        s_n = 2 \sigma_0^2 + \sigma^2 \gamma_{n-1} + 2 d_{n-1}, \quad
-        \gamma_n = \frac{s_n}{\sigma^2 + \beta s_n}, \\
-        a_n = 1 - \gamma_n \beta, \quad
-        d_n = a_n (\sigma_0^2 + d_{n-1}),
+        s_n &= 2 \sigma_0^2 + \sigma^2 \gamma_{n-1} + 2 d_{n-1}, \\
+        \gamma_n &= \frac{s_n}{\sigma^2 + \beta s_n}, \\
+        a_n &= 1 - \gamma_n \beta, \\
+        d_n &= a_n (\sigma_0^2 + d_{n-1}),
 
     starting from the least-squares :math:`\gamma_0 = 1/\beta`.
 
