@@ -398,9 +398,9 @@ def quasi_optimal_amplitude(power: float, n_aircraft: int, tau_over_alpha: float
     power : float
         Total cross-term noise power ``p`` (``> 0``).
     n_aircraft : int
-        Number of aircraft ``N`` (``>= 2``).
+        Number of aircraft :math:`N` (``>= 2``).
     tau_over_alpha : float
-        ``tau/alpha`` (dimensionless).
+        :math:`\tau/\alpha` (dimensionless).
 
     Returns
     -------
@@ -444,9 +444,9 @@ def quasi_optimal_chernoff_parameter(
     power : float
         Noise power ``p`` per interferer, relative to the unit peak (``> 0``).
     n_aircraft : int
-        Number of aircraft ``N``.
+        Number of aircraft :math:`N`.
     tau_over_alpha : float
-        Pulse duration over repetition period, ``tau/alpha`` (dimensionless).
+        Pulse duration over repetition period, :math:`\tau/\alpha` (dimensionless).
 
     Returns
     -------
@@ -488,9 +488,9 @@ def quasi_optimal_exponent(
     power : float
         Noise power ``p`` per interferer, relative to the unit peak (``> 0``).
     n_aircraft : int
-        Number of aircraft ``N``.
+        Number of aircraft :math:`N`.
     tau_over_alpha : float
-        Pulse duration over repetition period, ``tau/alpha`` (dimensionless).
+        Pulse duration over repetition period, :math:`\tau/\alpha` (dimensionless).
 
     Returns
     -------
@@ -534,9 +534,9 @@ def quasi_optimal_exponent_approx(
     power : float
         Noise power ``p`` per interferer, relative to the unit peak (``> 0``).
     n_aircraft : int
-        Number of aircraft ``N``.
+        Number of aircraft :math:`N`.
     tau_over_alpha : float
-        Pulse duration over repetition period, ``tau/alpha`` (dimensionless).
+        Pulse duration over repetition period, :math:`\tau/\alpha` (dimensionless).
 
     Returns
     -------
@@ -655,11 +655,11 @@ def exponent_from_gaussian_exponent(
     Parameters
     ----------
     n_aircraft : array_like
-        Number of aircraft ``N``.
+        Number of aircraft :math:`N`.
     tau_over_alpha : array_like
-        ``tau/alpha`` (dimensionless).
+        :math:`\tau/\alpha` (dimensionless).
     exp_g : array_like
-        Gaussian exponent ``Exp_g`` (nats).
+        Gaussian exponent :math:`\mathrm{Exp}_g` (nats).
 
     Returns
     -------
@@ -694,9 +694,9 @@ def exponent_from_gaussian_exponent_large_n(
     Parameters
     ----------
     n_aircraft : array_like
-        Number of aircraft ``N``.
+        Number of aircraft :math:`N`.
     tau_over_alpha : array_like
-        ``tau/alpha`` (dimensionless).
+        :math:`\tau/\alpha` (dimensionless).
     exp_g : array_like
         Gaussian exponent (nats).
 

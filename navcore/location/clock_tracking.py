@@ -81,7 +81,7 @@ def alpha_parameter(sigma0: float, sigma: float, beta: float) -> float:
     sigma : float
         Time-of-arrival noise standard deviation (same unit, ``> 0``).
     beta : float
-        ``1'(I - P)1`` (dimensionless, ``>= 0``).
+        :math:`\mathbf{1}'(I - P)\mathbf{1}` (dimensionless, ``>= 0``).
 
     Returns
     -------
@@ -270,16 +270,16 @@ def psi_large_alpha(alpha: np.ndarray | float) -> np.ndarray | float:
 
 @implements("ATC10 4.5.33")
 def steady_state_gain(beta: float, sigma: float, sigma0: float) -> float:
-    """``gamma = psi(alpha) / beta`` (ATC-10 Eq. 4.5.33).
+    r"""``gamma = psi(alpha) / beta`` (ATC-10 Eq. 4.5.33).
 
     Parameters
     ----------
     beta : float
-        ``1'(I - P)1``, the clock's share of the geometry (dimensionless, ``> 0``).
+        :math:`\mathbf{1}'(I - P)\mathbf{1}`, the clock's share of the geometry (dimensionless, ``> 0``).
     sigma : float
         Time-of-arrival noise standard deviation (a time unit, e.g. ns; ``> 0``).
     sigma0 : float
-        Standard deviation of the clock increments ``w_n`` and ``A`` (same time unit, ``>= 0``).
+        Standard deviation of the clock increments :math:`w_n` and :math:`A` (same time unit, ``>= 0``).
 
     Returns
     -------
@@ -344,11 +344,11 @@ def gain_recursion(beta: float, sigma: float, sigma0: float, n_steps: int) -> Ga
     Parameters
     ----------
     beta : float
-        ``1'(I - P)1``, the clock's share of the geometry (dimensionless, ``> 0``).
+        :math:`\mathbf{1}'(I - P)\mathbf{1}`, the clock's share of the geometry (dimensionless, ``> 0``).
     sigma : float
         Time-of-arrival noise standard deviation (a time unit, e.g. ns; ``> 0``).
     sigma0 : float
-        Standard deviation of the clock increments ``w_n`` and ``A`` (same time unit, ``>= 0``).
+        Standard deviation of the clock increments :math:`w_n` and :math:`A` (same time unit, ``>= 0``).
     n_steps : int
         Number of tracked epochs after the first (``>= 0``, bounded).
 
@@ -411,7 +411,7 @@ def three_satellite_clock_variance(
     sigma : float
         Time-of-arrival noise standard deviation (a time unit, e.g. ns; ``> 0``).
     sigma0 : float
-        Standard deviation of the clock increments ``w_n`` and ``A`` (same time unit, ``>= 0``).
+        Standard deviation of the clock increments :math:`w_n` and :math:`A` (same time unit, ``>= 0``).
     m : int or ndarray
         Epochs since the drop (``>= 0``).
 
@@ -452,11 +452,11 @@ def three_satellite_clock_variance_steady(
     Parameters
     ----------
     beta : float
-        ``1'(I - P)1``, the clock's share of the geometry (dimensionless, ``> 0``).
+        :math:`\mathbf{1}'(I - P)\mathbf{1}`, the clock's share of the geometry (dimensionless, ``> 0``).
     sigma : float
         Time-of-arrival noise standard deviation (a time unit, e.g. ns; ``> 0``).
     sigma0 : float
-        Standard deviation of the clock increments ``w_n`` and ``A`` (same time unit, ``>= 0``).
+        Standard deviation of the clock increments :math:`w_n` and :math:`A` (same time unit, ``>= 0``).
     m : int or ndarray
         Epochs since the drop to three satellites (``>= 0``).
 
