@@ -1537,7 +1537,7 @@ ERRATA += [
         paper="ATC10",
         kind="typography",
         basis="text-only",
-        locator="Eqs. (4.5.11), (4.5.20), Sec. 4.5.4 (beta)",
+        locator="Eqs. (4.5.11), (4.5.20), Sec. 4.5.4 ($\\beta$)",
         printed="$\\beta = K^{-1} 1'F(F'F)^{-1}F'1$",
         finding="$\\beta = K - 1'F(F'F)^{-1}F'1 = 1'(I - P)1$ (the minus sign read as an inverse).",
         evidence="$\\gamma_0 = 1/\\beta$ (Eq. 4.5.2); the text's '$\\beta_0 = 0$ for K = 3' holds only for K "
@@ -1621,7 +1621,7 @@ ERRATA += [
         paper="ATC10",
         kind="typography",
         basis="text-only",
-        locator="App. G, Eq. (G.5) and R_x3",
+        locator="App. G, Eq. (G.5) and $R_{x3}$",
         printed="integrand $[s^\\rho - 1/2 - (s+1)^\\rho - 1/2]$; $R_{x3} = \\beta^2 \\sigma^2 / 2\\, "
         "(\\ldots)$; Newton step $G/G$",
         finding="integrand $((1+s)^{\\rho-1/2} - s^{\\rho-1/2})^2$; $R_{x3} = \\beta^2 V_0 / 2\\, "
