@@ -649,7 +649,7 @@ def quat_from_dcm(C: ArrayLike) -> Array:
 
     References
     ----------
-    S. W. Shepperd, "Quaternion from rotation matrix", J. Guidance and Control 1(3) (1978).
+    Shepperd, S. W., "Quaternion from rotation matrix", J. Guidance and Control 1(3) (1978).
 
     Examples
     --------
@@ -951,7 +951,7 @@ def ecef_to_geodetic(
 
     References
     ----------
-    J. Zhu, "Conversion of Earth-centered Earth-fixed coordinates to geodetic coordinates",
+    Zhu, J., "Conversion of Earth-centered Earth-fixed coordinates to geodetic coordinates",
     IEEE Trans. Aerospace and Electronic Systems 30(3) (1994).
 
     Examples

@@ -173,7 +173,7 @@ def log1mexp(a: ArrayLike) -> FloatArray:
 
     References
     ----------
-    M. Maechler, "Accurately Computing ``log(1 - exp(-|a|))``", R package Rmpfr vignette (2012).
+    Maechler, M., "Accurately Computing ``log(1 - exp(-|a|))``", R package Rmpfr vignette (2012).
 
     Examples
     --------

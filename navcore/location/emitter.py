@@ -38,7 +38,7 @@ All quantities are SI: metres, metres per second, hertz.
 
 References
 ----------
-N. E. Wu and M. L. Fowler, "Application of MEMS for improved emitter location accuracy".
+Wu, N. E. and Fowler, M. L., "Application of MEMS for improved emitter location accuracy".
 """
 
 from __future__ import annotations
