@@ -4,8 +4,13 @@ Usage::
 
     python tools/build_book.py                 # whole book, HTML, into _build/html
     python tools/build_book.py --builder pdflatex
-    python tools/build_book.py --only wf       # intro + the WF chapter + ledger/errata pages,
+    python tools/build_book.py --only wf       # the WF chapter and the bibliography, strictly,
                                                # into _build/subset-wf (fast check of one chapter)
+
+A subset build (``--only``) evaluates only the claims its pages use, and reads a reference to
+a page outside the subset (another chapter, the front matter, the API reference) as plain text
+when that page exists: the ``subset_references`` extension, which only subset builds load,
+says in the log how many. A reference to nothing fails a subset build as it fails the full one.
 
 ``--cache`` executes through a jupyter-cache whose folder is keyed by the lock file, the
 execution settings of ``_config.yml`` and this tool. Each executed page is stored with what
@@ -88,7 +93,14 @@ REFERENCE_PAGES = (
 HOWTO_PAGES = ("dop", "outage", "kalman", "frames", "detection", "emitter")
 
 
-def subset_toc(paper: str) -> str:
+def subset_toc(paper: str, book: Path = ROOT / "book") -> str:
+    """The table of contents of a subset build (``--only``).
+
+    A paper's chapter is built alone, rooted at its opening page, with the bibliography its
+    citations need: no front or back matter that reads every paper's claims, so the build
+    evaluates only the claims the chapter's own pages use. References to pages outside the
+    subset read as plain text (the ``subset_references`` extension, loaded by subset builds only).
+    """
     if paper == "reference":  # the how-to guides (executed) and the API reference
         howto = "".join(f"          - file: reference/howto/{name}\n" for name in HOWTO_PAGES)
         pages = "".join(f"      - file: reference/{name}\n" for name in REFERENCE_PAGES)
@@ -107,13 +119,11 @@ def subset_toc(paper: str) -> str:
             "      - file: coverage\n      - file: errata\n"
             "      - file: reports/index\n        sections:\n" + reports + "      - file: bibliography\n"
         )
+    bibliography = "      - file: bibliography\n" if (book / "bibliography.md").exists() else ""
     return (
-        "format: jb-book\nroot: intro\nparts:\n"
-        "  - caption: Introduction\n    chapters:\n      - file: about\n"
-        f"  - caption: {PARTS[paper]}\n    chapters:\n      - file: {paper}/index\n"
-        f"        sections:\n          - glob: {paper}/[0-9]*\n"
-        "  - caption: Verification\n    chapters:\n      - file: ledger\n      - file: errata\n"
-        "      - file: bibliography\n"
+        f"format: jb-book\nroot: {paper}/index\nparts:\n"
+        f"  - caption: {PARTS.get(paper, paper)}\n    chapters:\n      - glob: {paper}/[0-9]*\n"
+        + bibliography
     )
 
 
@@ -171,6 +181,32 @@ def cached_config(config_file: Path | None = None) -> Path:
         local[name] = str(config_file.parent / folder)
     path = parent / "_config_cached.yml"
     path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(yaml.safe_dump(config, sort_keys=False))
+    return path
+
+
+SUBSET_EXTENSION = "subset_references"  # book/_ext: loaded by subset builds only
+
+
+def subset_config(config_file: Path, folder: Path) -> Path:
+    """A copy of ``config_file`` (written into ``folder``) that also loads :data:`SUBSET_EXTENSION`.
+
+    Only a subset build uses it, so the full book never sets a reference to a missing page as
+    plain text. The execution cache stays the one ``config_file`` names (its key does not
+    depend on the Sphinx extensions), so a subset build reuses the full build's executions.
+    """
+    import yaml
+
+    config = yaml.safe_load(config_file.read_text())
+    sphinx = config.setdefault("sphinx", {}) or {}
+    config["sphinx"] = sphinx
+    local = dict(sphinx.get("local_extensions") or {})
+    for name, ext_folder in local.items():  # relative to the config file, which moves
+        local[name] = str((config_file.parent / ext_folder).resolve())
+    local[SUBSET_EXTENSION] = str(ROOT / "book" / "_ext")
+    sphinx["local_extensions"] = local
+    folder.mkdir(parents=True, exist_ok=True)
+    path = folder / f"_config_subset_{config_file.stem}.yml"
     path.write_text(yaml.safe_dump(config, sort_keys=False))
     return path
 
@@ -1058,11 +1094,12 @@ def build(
             raise SystemExit(f"--only must be one of {list(PARTS)}, got {only!r}")
         # the subset toc must sit in book/ so that relative file names resolve
         tmp = tempfile.NamedTemporaryFile("w", suffix=".yml", prefix="_toc_subset_", dir=book, delete=False)
-        tmp.write(subset_toc(only))
+        tmp.write(subset_toc(only, book))
         tmp.close()
         toc = Path(tmp.name)
         out = out or ROOT / "_build" / f"subset-{only}"
     out = out or ROOT
+    sphinx_config = subset_config(config, out / "_build") if only else config
     try:
         if cache:
             import yaml
@@ -1081,7 +1118,7 @@ def build(
         sphinx_builder = "latex" if builder == "pdflatex" else builder  # the PDF: latex_to_pdf
         cmd = [
             str(Path(sys.executable).with_name("jupyter-book")), "build", str(book),
-            "--config", str(config), "--toc", str(toc), "--path-output", str(out),
+            "--config", str(sphinx_config), "--toc", str(toc), "--path-output", str(out),
             "--builder", sphinx_builder, "--all", "-W", "-n", "--keep-going", "-q",
         ]  # fmt: skip
         print(
