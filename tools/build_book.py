@@ -413,6 +413,49 @@ def _data_files(root: Path) -> tuple[str, ...]:
     )
 
 
+def _import_refs(node: ast.AST, package: str) -> set[str]:
+    """The dotted names an ``import`` or ``from ... import`` statement refers to."""
+    if isinstance(node, ast.Import):
+        return {alias.name for alias in node.names}
+    assert isinstance(node, ast.ImportFrom)
+    base = node.module or ""
+    if node.level:
+        parts = package.split(".")[: len(package.split(".")) - node.level + 1]
+        base = ".".join([*parts, *([node.module] if node.module else [])])
+    return {base, *(f"{base}.{alias.name}" for alias in node.names)}
+
+
+@cache
+def _import_statements(root: Path) -> dict[str, tuple[frozenset[str], frozenset[str]]]:
+    """For each navcore module: what it imports when it is imported, and what only its functions import.
+
+    The first set holds the modules of the import statements that run when the module runs
+    (at module level, in ``if``/``try`` blocks and class bodies) and the data files its source
+    names (``file:papers/paper_items.json``); the second the modules that only statements
+    inside functions (and lambdas) import, which run when the function is called.
+    """
+    modules = _module_files(root)
+    data = _data_files(root)
+    found: dict[str, tuple[frozenset[str], frozenset[str]]] = {}
+    for name, path in modules.items():
+        source = path.read_text()
+        package = name if path.name == "__init__.py" else name.rpartition(".")[0]
+        at_import: set[str] = set()
+        in_functions: set[str] = set()
+        stack: list[tuple[ast.AST, bool]] = [(ast.parse(source), False)]
+        while stack:
+            node, in_function = stack.pop()
+            for child in ast.iter_child_nodes(node):
+                inner = in_function or isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda))
+                if isinstance(child, (ast.Import, ast.ImportFrom)):
+                    (in_functions if inner else at_import).update(_import_refs(child, package))
+                stack.append((child, inner))
+        refs = {m for m in at_import if m in modules}
+        refs.update(f"file:{f}" for f in data if Path(f).name in source)
+        found[name] = (frozenset(refs), frozenset(m for m in in_functions if m in modules) - refs)
+    return found
+
+
 @cache
 def static_import_graph(root: Path) -> dict[str, frozenset[str]]:
     """For each navcore module, the navcore modules and data files its source refers to.
@@ -420,27 +463,37 @@ def static_import_graph(root: Path) -> dict[str, frozenset[str]]:
     Every ``import`` and ``from ... import`` statement counts, inside functions too; a data file
     (``file:papers/paper_items.json``) counts when the module's source names it.
     """
-    modules = _module_files(root)
-    data = _data_files(root)
-    graph: dict[str, frozenset[str]] = {}
-    for name, path in modules.items():
-        source = path.read_text()
-        package = name if path.name == "__init__.py" else name.rpartition(".")[0]
-        found: set[str] = set()
-        for node in ast.walk(ast.parse(source)):
-            if isinstance(node, ast.Import):
-                found.update(alias.name for alias in node.names)
-            elif isinstance(node, ast.ImportFrom):
-                base = node.module or ""
-                if node.level:
-                    parts = package.split(".")[: len(package.split(".")) - node.level + 1]
-                    base = ".".join([*parts, *([node.module] if node.module else [])])
-                found.add(base)
-                found.update(f"{base}.{alias.name}" for alias in node.names)
-        refs = {m for m in found if m in modules}
-        refs.update(f"file:{f}" for f in data if Path(f).name in source)
-        graph[name] = frozenset(refs)
-    return graph
+    return {
+        name: at_import | in_functions for name, (at_import, in_functions) in _import_statements(root).items()
+    }
+
+
+PAPER_MODULES = PACKAGE + ".papers."  # the ledger's paper modules: what its evaluations run
+
+
+@cache
+def dependency_graph(root: Path) -> dict[str, frozenset[str]]:
+    """The static part of a page's dependencies: which navcore module depends on which.
+
+    A module that the ledger's paper modules reach (through every import statement, inside
+    functions too: :func:`static_import_graph`) keeps every import statement of its source,
+    because the ledger may run its code in worker processes, where the kernel records nothing.
+    Every other module (what only the book's pages call: the page helpers, the glue registry,
+    the figures, the reports) keeps the imports that run when it is imported; what its
+    functions import when a page calls them runs in the kernel, which records it (an edge of
+    ``page_dependencies``). So a page that glues one paper's number depends on that paper's
+    models, not on every model the glue registry could import.
+    """
+    full = static_import_graph(root)
+    statements = _import_statements(root)
+    run_by_ledger: set[str] = set()
+    todo = [name for name in full if name.startswith(PAPER_MODULES)]
+    while todo:
+        name = todo.pop()
+        if name not in run_by_ledger:
+            run_by_ledger.add(name)
+            todo.extend(m for m in _with_packages(set(full.get(name, ()))) if m in full)
+    return {name: full[name] if name in run_by_ledger else statements[name][0] for name in full}
 
 
 def _with_packages(names: set[str]) -> set[str]:
@@ -458,9 +511,10 @@ def page_dependencies(
     """The navcore modules and data files reachable from a page's imports (sorted).
 
     ``edges`` are the imports that navcore modules made while the kernel ran; the static graph
-    (:func:`static_import_graph`) adds every import statement of every module's source.
+    (:func:`dependency_graph`) adds the import statements of every module's source (those
+    inside functions for the modules the ledger's paper modules reach).
     """
-    graph = static_import_graph(root)
+    graph = dependency_graph(root)
     seen: set[str] = set()
     todo = list(_with_packages(set(roots)))
     while todo:
