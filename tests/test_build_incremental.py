@@ -115,6 +115,20 @@ def test_only_what_the_ledger_runs_keeps_the_imports_inside_its_functions(tmp_pa
     assert modules == ["navcore", "navcore.deep", "navcore.model", "navcore.papers", "navcore.papers.kzl"]
 
 
+def test_a_listed_folder_ignores_a_subset_builds_temporary_toc(tmp_path: Path) -> None:
+    """A subset build writes its table of contents into the book folder while it runs; a page
+    that listed the folder must not look changed (oracle: the hash of the listing without it)."""
+    root = _package(tmp_path, {"__init__.py": ""})
+    book = tmp_path / "book"
+    book.mkdir()
+    (book / "intro.md").write_text("# Intro\n")
+    before = build_book._dependency_hash(root, "../book/")
+    (book / f"{build_book.SUBSET_TOC_PREFIX}abc123.yml").write_text("root: intro\n")
+    assert build_book._dependency_hash(root, "../book/") == before
+    (book / "new.md").write_text("# New\n")
+    assert build_book._dependency_hash(root, "../book/") != before
+
+
 def test_stale_reason_names_what_changed(tmp_path: Path) -> None:
     root = _package(tmp_path, {"__init__.py": "", "a.py": "x = 1\n", "data.json": "{}"})
     record = build_book.dependency_record(["navcore", "navcore.a"], ["data.json"], root)

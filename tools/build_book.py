@@ -534,14 +534,23 @@ def _file_hash(path: Path) -> str | None:
         return None
 
 
+# the table of contents a subset build writes into the book folder while it runs: not part of
+# what a page that lists the folder depends on (else every subset build, and the full build
+# after it, would execute those pages again)
+SUBSET_TOC_PREFIX = "_toc_subset_"
+
+
 def _dependency_hash(root: Path, name: str) -> str | None:
     """Hash of a data dependency, named relative to the package folder: a file's contents, or
-    for a name ending in ``/`` (a folder the page listed) the sorted names in it."""
+    for a name ending in ``/`` (a folder the page listed) the sorted names in it, less a subset
+    build's temporary table of contents."""
     path = _package_dir(root) / name
     if not name.endswith("/"):
         return _file_hash(path)
     try:
-        listing = "\n".join(sorted(p.name for p in path.iterdir()))
+        listing = "\n".join(
+            sorted(p.name for p in path.iterdir() if not p.name.startswith(SUBSET_TOC_PREFIX))
+        )
     except OSError:
         return None
     return hashlib.sha256(listing.encode()).hexdigest()[:20]
@@ -1147,7 +1156,9 @@ def build(
         if only not in PARTS:
             raise SystemExit(f"--only must be one of {list(PARTS)}, got {only!r}")
         # the subset toc must sit in book/ so that relative file names resolve
-        tmp = tempfile.NamedTemporaryFile("w", suffix=".yml", prefix="_toc_subset_", dir=book, delete=False)
+        tmp = tempfile.NamedTemporaryFile(
+            "w", suffix=".yml", prefix=SUBSET_TOC_PREFIX, dir=book, delete=False
+        )
         tmp.write(subset_toc(only, book))
         tmp.close()
         toc = Path(tmp.name)
