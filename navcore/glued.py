@@ -3582,3 +3582,116 @@ def atc10_32_outage_ratio(end: str) -> float:
         for ex in ("I", "II")
     ]
     return {"lo": min, "hi": max}[end](ratios)
+
+
+# --- Across the papers: one filter, one geometry ------------------------------------------------
+
+
+@register(
+    "across01-wf-bound-mm-s",
+    "across/01-filters-and-geometry",
+    "WF fused velocity bound per axis, 100 ug, sigma_T = 0.2 m/s, three satellites (mm/s)",
+)
+def across01_wf_bound_mm_s() -> float:
+    """Per-axis fused velocity bound of WF Eq. (23) at the worked example's accelerometer, the
+    middle sigma_T and three GPS satellites, in mm/s."""
+    from navcore.papers import wf
+
+    return float(1e3 * wf.sigma_d_bound(wf.sigma_a_example(), wf.sigma_t_values()[1], n_sat=3))
+
+
+@register(
+    "across01-sp-outage-m",
+    "across/01-filters-and-geometry",
+    "SP rss horizontal error of the calibrated 1 nmi/h instrument after the helicopter's outage (m)",
+)
+def across01_sp_outage_m() -> float:
+    """rss horizontal error (m) of the perfectly calibrated second Table 2.5 grade (random walks
+    only) after the helicopter mission's jammed minutes of free inertial flight (SP Sec. 2.6)."""
+    from navcore.papers import sp_missions
+    from navcore.papers import sp_missions_scenarios as sp_scenarios
+    from navcore.papers.sp_tables import GRADE_LABELS_NMI_PER_H
+
+    return float(
+        sp_missions.noise_only_error_m(GRADE_LABELS_NMI_PER_H[1], sp_scenarios.IN.helicopter_jammed_min)
+    )
+
+
+@register("across01-sp-states", "across/01-filters-and-geometry", "states of SP's free-inertial error model")
+def across01_sp_states() -> int:
+    """Size of the free-inertial error layout of SP's covariance analysis: navigation errors and
+    every Table 2.5 error source that is not a random walk."""
+    from navcore.papers import sp_missions
+
+    return int(sp_missions.unaided_layout().size)
+
+
+@register(
+    "across01-kzl-{kind}-deg",
+    "across/01-filters-and-geometry",
+    "KZL heading 1-sigma after the 180 s flight, INS alone, covariance analysis (deg)",
+)
+def across01_kzl_heading_deg(kind: str) -> float:
+    """Heading 1-sigma (deg) of the stand-alone KZL INS after the flight from the covariance
+    analysis, without (``kind="raw"``) or with (``"init"``) the initialisation at rest."""
+    from navcore.papers import kzl_covariance
+
+    initialise = {"raw": False, "init": True}[kind]
+    return float(kzl_covariance.standalone_sigma("misalignment", initialise=initialise)[2])
+
+
+def _across01_dilution_geometries() -> dict[str, tuple[Any, float]]:
+    """The page's line-of-sight rows and double-difference scale for each geometry, keyed as
+    the page glues them: ATC-10 Examples I and II at the synchronous radius, the SP flyby's
+    tracked satellites at the start, KZL's satellites at the start and at the first epoch
+    with four (the fewest of four or more)."""
+    import numpy as np
+
+    from navcore.papers import atc10_tracking, kzl_scenario, sp_flyby
+
+    radius = atc10_tracking.physical_radius_ratio()
+    out: dict[str, tuple[Any, float]] = {
+        "atc-i": (atc10_tracking.example_line_of_sight("I", radius), 1.0),
+        "atc-ii": (atc10_tracking.example_line_of_sight("II", radius), 1.0),
+        "sp": (-sp_flyby.flyby_geometry().u_ned[0], 1.0),
+    }
+    positions, _ = kzl_scenario.table1_sky()
+    schedule = kzl_scenario.VISIBILITY_SCHEDULE
+    t_late, n_late = _across01_kzl_late(schedule)
+    for key, (t, n) in (("kzl", (0.0, schedule[0][1])), ("kzl-late", (t_late, n_late))):
+        d = positions[round(t * kzl_scenario.IN.gps_rate_hz), :n]
+        out[key] = (-d / np.linalg.norm(d, axis=1)[:, None], 2.0)
+    return out
+
+
+def _across01_kzl_late(schedule: Any) -> tuple[float, int]:
+    """The first epoch of the KZL schedule with the fewest satellites of four or more."""
+    return min(((t, n) for t, n in schedule if n >= 4), key=lambda tn: tn[1])
+
+
+@register(
+    "across01-dop-{name}",
+    "across/01-filters-and-geometry",
+    "position dilution of precision with the common unknown differenced away",
+)
+def across01_dop(name: str) -> float:
+    """Position dilution of precision, sqrt(scale tr[F'(I - 11'/K)F]^-1), of one of the page's
+    geometries (ATC-10 Sec. 4's differencing form; scale 2 for KZL's double differences)."""
+    import numpy as np
+
+    from navcore.location.multilateration import position_dilution_covariance
+
+    U, scale = _across01_dilution_geometries()[name]
+    return float(np.sqrt(scale * np.trace(position_dilution_covariance(U))))
+
+
+@register(
+    "across01-kzl-late-n",
+    "across/01-filters-and-geometry",
+    "satellites KZL's schedule tracks at its first epoch with the fewest of four or more",
+)
+def across01_kzl_late_n() -> int:
+    """The fewest satellites of four or more in the KZL visibility schedule."""
+    from navcore.papers import kzl_scenario
+
+    return int(_across01_kzl_late(kzl_scenario.VISIBILITY_SCHEDULE)[1])

@@ -3100,6 +3100,134 @@ def _n_sec36() -> int:
     return int(pm.IN.n_sec36)
 
 
+# --- Across the papers: one filter, one geometry ----------------------------------------------
+# SP Table 2.5's error sources as printed, typed in; the two random walks are noises, not states.
+_SP_TABLE_25_SOURCES = (
+    "accel. bias",
+    "accel. scale factor",
+    "accel. input axis misalign.",
+    "accel. random walk",
+    "gyro bias",
+    "gyro scale factor",
+    "gyro input axis misalign.",
+    "gyro random walk",
+)
+
+
+def _sp_free_inertial_states() -> int:
+    """Position, velocity and misalignment, and every Table 2.5 source that is not a random walk,
+    each three components (one per axis of the triad)."""
+    constants = [s for s in _SP_TABLE_25_SOURCES if not s.endswith("random walk")]
+    return 3 * len(("position", "velocity", "misalignment")) + 3 * len(constants)
+
+
+def _sp_noise_only_outage_m() -> float:
+    """Van Loan oracle: the psi-angle error model of an inertial system at rest at the grade
+    latitude, written out (NED; horizontal position and velocity, three angles; Schuler feedback
+    -g/R on position, Coriolis -2 Omega x dv, angles driven by -Omega x psi), driven by the
+    second Table 2.5 column's random walks (15 micro-g/sqrt(Hz), 0.13 deg/h/sqrt(Hz), converted
+    by hand); the covariance after the helicopter's jammed minutes, from zero, is the Van Loan
+    block of scipy's expm; the rss of the two position variances."""
+    from scipy import linalg
+
+    from navcore.papers import sp_missions, sp_tables
+    from navcore.papers import sp_missions_scenarios as sms
+
+    grade = sp_tables.GRADE_LABELS_NMI_PER_H[1]
+    vrw = sp_tables.table_2_5_value("accel_random_walk_micro_g_per_sqrt_hz", grade) * 1e-6 * _G0
+    arw = math.radians(sp_tables.table_2_5_value("gyro_random_walk_deg_per_h_per_sqrt_hz", grade)) / 3600
+    lat = math.radians(sp_missions.IN.grade_latitude_deg)
+    w = 2 * math.pi / _SIDEREAL_DAY
+    wn, wd = w * math.cos(lat), -w * math.sin(lat)  # Earth rate in NED: (cos L, 0, -sin L)
+    ws2 = _G0 / _WGS84_A
+    # x = [r_N, r_E, v_N, v_E, psi_N, psi_E, psi_D]
+    F = np.zeros((7, 7))
+    F[0, 2] = F[1, 3] = 1.0
+    F[2, 0] = F[3, 1] = -ws2
+    F[2, 3], F[3, 2] = 2 * wd, -2 * wd  # -2 Omega x dv with dv_D = 0
+    F[2, 5], F[3, 4] = _G0, -_G0  # f x psi with f = (0, 0, -g)
+    Om = np.array([[0.0, -wd, 0.0], [wd, 0.0, -wn], [0.0, wn, 0.0]])  # Omega x
+    F[4:, 4:] = -Om
+    Q = np.diag([0, 0, vrw**2, vrw**2, arw**2, arw**2, arw**2])
+    T = sms.IN.helicopter_jammed_min * 60.0
+    M = np.block([[-F, Q], [np.zeros((7, 7)), F.T]]) * T
+    E = linalg.expm(M)
+    phi = E[7:, 7:].T
+    P = phi @ E[:7, 7:]
+    return math.sqrt(P[0, 0] + P[1, 1])
+
+
+def _across01_dop_by_hand(name: str) -> float:
+    """Least squares written out: for ATC-10 and SP, tr of the position block of [F 1]'[F 1]
+    inverted, the common unknown a fourth column (ATC-10's geometry by hand, SP's flyby lines of
+    sight from its model); for KZL, explicit double differences against the first satellite,
+    D (2 I) D' their covariance in single-difference units, H = D F, tr (H' (2 D D')^-1 H)^-1,
+    on the sky at the start and at 60 s (the schedule's prose: 8 satellites, then 4)."""
+    if name in ("atc-i", "atc-ii"):
+        F = _atc10_los(name[4:].upper(), "phys")
+    elif name == "sp":
+        from navcore.papers import sp_flyby
+
+        F = -np.asarray(sp_flyby.flyby_geometry().u_ned[0])
+    else:
+        from navcore.papers import kzl_scenario
+
+        n = max(_KZL_SEGMENT_EPOCHS) if name == "kzl" else _across01_kzl_late_n()
+        epoch = 0 if name == "kzl" else _KZL_SEGMENT_EPOCHS[n].start
+        d = kzl_scenario.table1_sky()[0][epoch, :n]
+        F = -d / np.linalg.norm(d, axis=1)[:, None]
+        D = np.hstack([-np.ones((n - 1, 1)), np.eye(n - 1)])
+        H = D @ F
+        return math.sqrt(np.trace(np.linalg.inv(H.T @ np.linalg.inv(2 * D @ D.T) @ H)))
+    H = np.hstack([F, np.ones((F.shape[0], 1))])
+    return math.sqrt(np.trace(np.linalg.inv(H.T @ H)[:3, :3]))
+
+
+def _across01_kzl_late_n() -> int:
+    """The fewest satellites of four or more in the schedule's prose."""
+    return min(n for n in _KZL_SEGMENT_EPOCHS if n >= 4)
+
+
+ORACLES += [
+    Oracle(
+        "across01-wf-bound-mm-s",
+        lambda: 1e3 * _wf_sigma_d(_wf_sigma_a_example(), _wf_in().sigma_t_medium, 3),
+        rtol=_WF_RTOL,
+        why=_WF_DARE,
+    ),
+    # the oracle leaves out the vertical channel's Coriolis coupling 2 Omega_N dv_D (about 0.3 m
+    # of 76 m after 19 min) and terms of order dr / R, and takes g0 and the equatorial radius
+    # for the local gravity and radii (0.3 % in omega_s^2, ~0.1 % in the result): 1 %
+    Oracle("across01-sp-outage-m", _sp_noise_only_outage_m, rtol=0.01, why="Van Loan on the psi-angle model"),
+    Oracle("across01-sp-states", _sp_free_inertial_states, why="Table 2.5's sources, typed in"),
+    # the covariance engine (Earth rate, transport and Schuler coupling on top) against the closed
+    # form sqrt((b t)^2 + N^2 t + sigma0^2): the exercises page holds both within 2 %
+    Oracle(
+        "across01-kzl-raw-deg",
+        lambda: _kzl_closed_heading_deg(False),
+        rtol=0.02,
+        why="closed form, the exercises page's 2 %",
+    ),
+    Oracle(
+        "across01-kzl-init-deg",
+        lambda: _kzl_closed_heading_deg(True),
+        rtol=0.02,
+        why="closed form, the exercises page's 2 %",
+    ),
+    # a 4-column normal matrix conditioned ~1 / beta (3e2 for Example II): rounding ~1e-13
+    *(
+        Oracle(
+            f"across01-dop-{n}",
+            functools.partial(_across01_dop_by_hand, n),
+            rtol=1e-8,
+            why="least squares by hand",
+        )
+        for n in ("atc-i", "atc-ii", "sp", "kzl", "kzl-late")
+    ),
+    Oracle("across01-kzl-late-n", _across01_kzl_late_n, why="the schedule's prose"),
+]
+
+
 @pytest.mark.parametrize("oracle", ORACLES, ids=lambda o: o.name)
 def test_glued_value_against_its_oracle(oracle: Oracle):
     """The registered function's value against the oracle named in the case."""
