@@ -3695,3 +3695,123 @@ def across01_kzl_late_n() -> int:
     from navcore.papers import kzl_scenario
 
     return int(_across01_kzl_late(kzl_scenario.VISIBILITY_SCHEDULE)[1])
+
+
+# --- Across the papers: jamming ------------------------------------------------------------------
+
+
+@register("across02-tb-db", "across/02-jamming", "ATC-10 time-bandwidth product B tau (dB)")
+def across02_tb_db() -> float:
+    """ATC-10's time-bandwidth product 10 log10(B tau) of one pulse (Sec. 2.7), in dB."""
+    from navcore.papers import atc10_jamming as atc
+
+    return float(10 * math.log10(atc.IN.bandwidth_hz * atc.IN.pulse_duration_s))
+
+
+@register("across02-spread-db", "across/02-jamming", "SP spreading gain Q R_c on the wideband jammer (dB-Hz)")
+def across02_spread_db() -> float:
+    """10 log10(Q R_c) of SP Sec. 3's wideband jammer on the assumed P(Y) code, dB-Hz."""
+    from navcore.papers import sp_antijam as sp
+
+    return float(10 * math.log10(sp.q_factor("wideband") * sp.IN.chip_rate_hz))
+
+
+@register(
+    "across02-{arch}-threshold",
+    "across/02-jamming",
+    "effective C/N0 at the stated J/S limit of TC or DI against the wideband jammer (dB-Hz)",
+)
+def across02_threshold(arch: str) -> float:
+    """Effective C/N0 that the stated J/S limit of the tightly coupled (``arch="tc"``) or deeply
+    integrated (``"di"``) receiver implies against the wideband jammer (SP Sec. 3.1), dB-Hz."""
+    from navcore.papers import sp_antijam as sp
+
+    return float(sp.threshold_dbhz(arch.upper()))
+
+
+@register("across02-di-gain-db", "across/02-jamming", "J/S limit of DI over TC's loss of code lock (dB)")
+def across02_di_gain_db() -> float:
+    """SP Sec. 3's stated J/S at which the deeply integrated code loop holds lock less the one at
+    which the tightly coupled loop loses it, dB."""
+    from navcore.papers import sp_antijam as sp
+
+    return float(sp.IN.di_lock_js_db - sp.IN.tc_loss_js_db)
+
+
+def _across02_sync_height_m() -> float:
+    from navcore.location.multilateration import EARTH_MEAN_RADIUS_M, synchronous_orbit_radius
+
+    return float(synchronous_orbit_radius() - EARTH_MEAN_RADIUS_M)
+
+
+@register(
+    "across02-sync-km", "across/02-jamming", "height of the synchronous orbit above the mean Earth (km)"
+)
+def across02_sync_km() -> float:
+    """Synchronous orbit radius less the mean Earth radius, km."""
+    return _across02_sync_height_m() / 1e3
+
+
+@register(
+    "across02-erp-tc-sync",
+    "across/02-jamming",
+    "jammer ERP that breaks SP's tightly coupled code loop from the synchronous height (dBW)",
+)
+def across02_erp_tc_sync() -> float:
+    """ERP (dBW) at which a jammer at the synchronous orbit's height reaches SP's tightly coupled
+    J/S limit at an isotropic L1 receiver (free space)."""
+    from navcore.gnss.antijam import free_space_js_db
+    from navcore.papers import sp_antijam as sp
+    from navcore.units import GPS_L1_WAVELENGTH_M
+
+    js = free_space_js_db(1.0, _across02_sync_height_m(), GPS_L1_WAVELENGTH_M, sp.IN.signal_dbw)
+    return float(sp.IN.tc_loss_js_db - js)
+
+
+def _across02_k1_erp() -> float:
+    from navcore.papers import atc10_jamming as atc
+
+    return float(atc.required_erp_dbw("ambiguous", atc.IN.caption_p_dl, atc.table11_k(0)))
+
+
+@register(
+    "across02-k1-erp",
+    "across/02-jamming",
+    "ATC-10 jammer ERP for ambiguous detections, Table 1.1's first K at the caption's P_DL (dBW)",
+)
+def across02_k1_erp() -> float:
+    """Jammer ERP (dBW) at which ATC-10's ambiguous detections reach 0.01 N_T for Table 1.1's
+    first design (K = 1) at the caption's P_DL."""
+    return _across02_k1_erp()
+
+
+@register(
+    "across02-k1-reach-km",
+    "across/02-jamming",
+    "range out to which ATC-10's K = 1 jammer breaks SP's tightly coupled code loop (km)",
+)
+def across02_k1_reach_km() -> float:
+    """Free-space range (km) at which a jammer of the K = 1 ERP still holds SP's tightly coupled
+    code loop at its J/S limit (isotropic L1 receiver)."""
+    from navcore.gnss.jammer_geometry import threshold_range_m
+    from navcore.papers import sp_antijam as sp
+    from navcore.units import GPS_L1_WAVELENGTH_M
+
+    return float(
+        threshold_range_m(_across02_k1_erp(), sp.IN.signal_dbw + sp.IN.tc_loss_js_db, GPS_L1_WAVELENGTH_M)
+        / 1e3
+    )
+
+
+@register(
+    "across02-k1000-erp",
+    "across/02-jamming",
+    "largest ATC-10 jammer ERP for ambiguous detections over the page's designs (dBW)",
+)
+def across02_k1000_erp() -> float:
+    """Largest ERP (dBW) for ambiguous detections over Table 1.1's first design and Table 2.1's
+    finite designs."""
+    from navcore.papers import atc10_jamming as atc
+
+    designs = [(atc.table11_k(0), atc.IN.caption_p_dl), *atc.table21_finite_designs()]
+    return float(max(atc.required_erp_dbw("ambiguous", p, k) for k, p in designs))

@@ -3228,6 +3228,94 @@ ORACLES += [
 ]
 
 
+# --- Across the papers: jamming ---------------------------------------------------------------
+# As printed, typed in: ATC-10's B = 10 MHz (Sec. 2.4) and tau = 10 usec (Sec. 2.7); SP's code-loop
+# loss of lock at J/S = 54 dB (TC) and lock held to 65 dB (DI), Sec. 3.1; the mean Earth radius
+# 6371 km (the book's convention for heights above the Earth).
+_ATC10_TAU_S = Fraction(10, 1_000_000)
+_SP_JS_TC_DB, _SP_JS_DI_DB = 54, 65
+_EARTH_MEAN_KM = 6371
+
+
+def _across02_sync_km() -> float:
+    """brentq's synchronous radius less the mean Earth radius, km."""
+    return _orbit_radius_km() - _EARTH_MEAN_KM
+
+
+def _friis_erp_dbw(received_dbw: float, d_m: float) -> float:
+    """ERP that free space (isotropic receiver, wavelength c / f_L1) brings down to
+    ``received_dbw`` at ``d_m``: the received power P_r = ERP (lambda / (4 pi d))^2 in watts."""
+    lam = _C / _F_L1
+    p_r = 10 ** (received_dbw / 10)
+    return 10 * math.log10(p_r / (lam / (4 * math.pi * d_m)) ** 2)
+
+
+def _friis_range_km(erp_dbw: float, received_dbw: float) -> float:
+    """Range at which free space brings ``erp_dbw`` down to ``received_dbw``: brentq on the received
+    power in watts, P_r(d) = ERP (lambda / (4 pi d))^2, over log d."""
+    lam = _C / _F_L1
+    erp, p_r = 10 ** (erp_dbw / 10), 10 ** (received_dbw / 10)
+    x = optimize.brentq(
+        lambda lg: math.log(erp * (lam / (4 * math.pi * math.exp(lg))) ** 2 / p_r), 0.0, 40.0, xtol=1e-14
+    )
+    return math.exp(x) / 1e3
+
+
+def _sp_signal_dbw() -> float:
+    return _sp_in("sp_antijam").signal_dbw
+
+
+ORACLES += [
+    Oracle(
+        "across02-tb-db",
+        lambda: 10 * math.log10(_ATC10_B * _ATC10_TAU_S),
+        rtol=1e-12,
+        why="B and tau as printed",
+    ),
+    Oracle(
+        "across02-spread-db",
+        lambda: 10 * math.log10(_sp06_q(_sp_in("sp_antijam").wideband_hz) * 10_230_000),
+        atol=1e-6,
+        why="sine-integral closed form, R_c = 10.23 MHz",
+    ),
+    Oracle(
+        "across02-tc-threshold",
+        lambda: _sp06_threshold(_SP_JS_TC_DB),
+        rtol=1e-7,
+        why="Sec. 3.1's formula, 54 dB",
+    ),
+    Oracle(
+        "across02-di-threshold",
+        lambda: _sp06_threshold(_SP_JS_DI_DB),
+        rtol=1e-7,
+        why="Sec. 3.1's formula, 65 dB",
+    ),
+    Oracle(
+        "across02-di-gain-db", lambda: _SP_JS_DI_DB - _SP_JS_TC_DB, rtol=1e-12, why="the printed J/S limits"
+    ),
+    # brentq to 1e-15 relative on 42 000 km, less 6371 km
+    Oracle("across02-sync-km", _across02_sync_km, rtol=1e-9, why="brentq on the orbit, mean radius typed in"),
+    Oracle(
+        "across02-erp-tc-sync",
+        lambda: _friis_erp_dbw(_sp_signal_dbw() + _SP_JS_TC_DB, 1e3 * _across02_sync_km()),
+        atol=1e-8,
+        why="Friis in watts, the printed 54 dB",
+    ),
+    # the direct solver's ERP to 1e-6 dB (its bisection), the range then to 1.2e-7 relative
+    Oracle("across02-k1-erp", _atc10_direct_erp(1, 0.88), atol=1e-6, why="direct probabilities, K = 1"),
+    Oracle(
+        "across02-k1-reach-km",
+        lambda: _friis_range_km(_atc10_direct_erp(1, 0.88)(), _sp_signal_dbw() + _SP_JS_TC_DB),
+        rtol=1e-6,
+        why="brentq on Friis in watts, the direct K = 1 ERP",
+    ),
+    # the largest design of Table 2.1, K = 1000 at P_DL = 0.999 (typed in): the ERP grows with both
+    Oracle(
+        "across02-k1000-erp", _atc10_direct_erp(1000, 0.999), atol=1e-6, why="direct probabilities, K = 1000"
+    ),
+]
+
+
 @pytest.mark.parametrize("oracle", ORACLES, ids=lambda o: o.name)
 def test_glued_value_against_its_oracle(oracle: Oracle):
     """The registered function's value against the oracle named in the case."""
