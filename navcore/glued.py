@@ -1757,6 +1757,39 @@ def atc10_mc_window_factor_k1000() -> float:
     return float(math.exp(atc10_mc_window_dln_k1000()))
 
 
+@register(
+    "atc10-mc-window-n",
+    "atc10/14-monte-carlo",
+    "samples in the simulated window, about the track window of (C.14)",
+)
+def atc10_mc_window_n() -> int:
+    """Samples in the window of the seeded correlated-noise simulation."""
+    return int(_atc10_window_rates().n)
+
+
+@register(
+    "atc10-mc-window-pf-hi",
+    "atc10/14-monte-carlo",
+    "largest per-sample false-alarm probability of the window simulation, near the K = 1000 threshold",
+)
+def atc10_mc_window_pf_hi() -> float:
+    """Largest per-sample p_f of the window simulation's grid."""
+    return float(max(_atc10_window_rates().p_f))
+
+
+@register(
+    "atc10-14-detection-t13-min",
+    "atc10/14-monte-carlo",
+    "smallest simulated first-stage detection rate, K = 3, t = 1/3, P_DL = 0.9",
+)
+def atc10_14_detection_t13_min() -> float:
+    """Smallest simulated first-stage detection rate over the jammer grid for K = 3 lists, the
+    rule 'more than K t non-empty' with t = 1/3, designed by (2.4.2) for P_DL = 0.9."""
+    from navcore.papers import atc10_jamming_mc as mc
+
+    return float(next(r for r in mc.simulate() if r.k == 3 and r.t > 0).detection.min())
+
+
 # --- ATC-10 Sec. 3.9 and App. F: the Zakai bandwidth of PSK codes -----------------------------
 
 #: The page's Appendix F example: a 31-chip random wanted code and four random interferers (seed 1).

@@ -3316,6 +3316,70 @@ ORACLES += [
 ]
 
 
+# --- ATC-10 Sec. 2: the first-stage simulation ------------------------------------------------
+# The figure caption's reduced sizes, typed in: n_a = 200 samples, an 11-sample window (w = 5),
+# P_DL = 0.9 and 1000 trials; the rule 'more than K t of K = 3 lists', t = 1/3.
+_ATC10_MC_NA, _ATC10_MC_W, _ATC10_MC_TRIALS = 200, 5, 1000
+
+
+def _atc10_list_exponent(t: float, q: float) -> float:
+    """(A.15) as printed, max over nu >= 0 of nu (1 - t) - ln((1 - q) e^nu + q), by scipy's
+    bounded scalar minimiser (a concave function of nu)."""
+    res = optimize.minimize_scalar(
+        lambda nu: -(nu * (1 - t) - math.log((1 - q) * math.exp(nu) + q)),
+        bounds=(0.0, 50.0),
+        method="bounded",
+        options={"xatol": 1e-12},
+    )
+    return max(0.0, -float(res.fun))
+
+
+def _atc10_t13_detection() -> tuple[float, float]:
+    """Exact detection rate at the grid's lowest jammer ratio and its band. p_d solves
+    (2.4.2), 1 - exp(-K E(t, p_d^4)) = 0.9, by brentq. A list holds the signature's quadruplet with
+    probability p_d^4; noise adds at most 4 (1 - p_d) 2w p_f + n_a p_f ((2w + 1) p_f)^3 (a missing
+    signature declaration replaced by noise within the window, or a noise quadruplet), p_f =
+    Q(d - Phi^-1(p_d)), d = 10^(-x/20). The rule's probability is scipy's binomial survival of
+    Binom(3, q) above 1; its slope in q is at most 1.5. With common random numbers a trial's
+    detection cannot fall as the jammer grows (the signature's test, n > -Phi^-1(p_d), does not
+    depend on d; the noise declarations only grow), so the simulated minimum is the rate at the
+    lowest ratio. Band: 4 binomial standard errors of the 1000 trials plus 1.5 times the noise bound."""
+    from navcore.papers import atc10_jamming_mc as mc
+
+    k, t, p_dl = 3, 1 / 3, 0.9
+    q = optimize.brentq(
+        lambda q: -math.expm1(-k * _atc10_list_exponent(t, q)) - p_dl, 0.5, 1 - 1e-12, xtol=1e-14
+    )
+    p_d = q**0.25
+    d = 10 ** (-float(min(mc.X_DB)) / 20)
+    p_f = float(stats.norm.sf(d - stats.norm.ppf(p_d)))
+    w, n_a = _ATC10_MC_W, _ATC10_MC_NA
+    noise = 4 * (1 - p_d) * 2 * w * p_f + n_a * p_f * ((2 * w + 1) * p_f) ** 3
+    exact = float(stats.binom(k, q).sf(math.floor(k * t)))
+    sd = math.sqrt(exact * (1 - exact) / _ATC10_MC_TRIALS)
+    return exact, 4 * sd + 1.5 * noise
+
+
+ORACLES += [
+    Oracle(
+        "atc10-14-detection-t13-min",
+        lambda: _atc10_t13_detection()[0],
+        band=lambda: _atc10_t13_detection()[1],
+        why="(2.4.2) by brentq, scipy's binomial, the 1000-trial band",
+    ),
+    # the prose: 'one window of n = 24 samples, about the size of the track window of (C.14)'
+    Oracle("atc10-mc-window-n", lambda: round(_atc10_n_v()), why="(C.14)'s n_v by hand, rounded"),
+    # the prose: the largest p_f is 'close to the K = 1000 threshold'; the page prints it to two
+    # decimals, so the threshold rounded to two decimals: 0.005
+    Oracle(
+        "atc10-mc-window-pf-hi",
+        lambda: _atc10_direct_pf(0.999, 1000),
+        atol=0.005,
+        why="the K = 1000, P_DL = 0.999 threshold by direct probabilities",
+    ),
+]
+
+
 @pytest.mark.parametrize("oracle", ORACLES, ids=lambda o: o.name)
 def test_glued_value_against_its_oracle(oracle: Oracle):
     """The registered function's value against the oracle named in the case."""
