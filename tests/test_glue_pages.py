@@ -25,7 +25,8 @@ call to one of:
 - **a setting**: the glued expression is a simulation setting (a seed, a number of draws or
   trials) that the page itself assigns from a number literal (``seed, draws = 20260101,
   400_000``), or that a paper module assigns so at its top level and the page reads by its
-  upper-case name (``mc.WINDOW_TRIALS``), at most converted by ``int``, ``float`` or ``str`` or
+  upper-case name (``mc.WINDOW_TRIALS``, or one point ``mc.WINDOW_PF[0]`` of a grid of number
+  literals), at most converted by ``int``, ``float`` or ``str`` or
   formatted (``f"{draws:,}"``, a ``.replace`` of that text). Nothing computes it: it is the
   book's choice, printed so that a reader can repeat the run, and an oracle would only read the
   same literal twice;
@@ -144,9 +145,18 @@ def _module_settings(module: str) -> frozenset[str]:
     out = set()
     for node in tree.body:
         if isinstance(node, ast.Assign) and len(node.targets) == 1 and isinstance(node.targets[0], ast.Name):
-            if node.targets[0].id.isupper() and _is_number(node.value):
+            if node.targets[0].id.isupper() and (_is_number(node.value) or _is_number_list(node.value)):
                 out.add(node.targets[0].id)
     return frozenset(out)
+
+
+def _is_number_list(node: ast.expr) -> bool:
+    """A tuple or list of number literals, or ``np.array`` of one (a grid of settings)."""
+    if isinstance(node, ast.Call) and ast.unparse(node.func) in ("np.array", "numpy.array"):
+        node = node.args[0] if len(node.args) == 1 and not node.keywords else node
+    return (
+        isinstance(node, ast.Tuple | ast.List) and bool(node.elts) and all(_is_number(e) for e in node.elts)
+    )
 
 
 @cache
@@ -187,6 +197,13 @@ def _reads_setting(page: str, value: ast.expr | None) -> bool:
             and isinstance(node.values[0], ast.FormattedValue)
         ):
             node = node.values[0].value
+        elif (
+            isinstance(node, ast.Subscript)
+            and isinstance(node.slice, ast.Constant)
+            and isinstance(node.slice.value, int)
+            and isinstance(node.value, ast.Attribute)
+        ):
+            node = node.value  # one point of a paper module's grid of settings
         else:
             break
     if isinstance(node, ast.Name):
@@ -462,7 +479,10 @@ def test_page_settings_are_assigned_once_from_a_literal():
         ('glue("x-3", int(mc.WINDOW_TRIALS))', "setting"),
         ('glue("x-4", seed * 2)', "unchecked"),  # computed from a setting
         ('glue("x-5", f"{draws / 2:,}")', "unchecked"),
-        ('glue("x-6", mc.WINDOW_PF[0])', "unchecked"),  # an array's element, not a number literal
+        ('glue("x-6", float(mc.WINDOW_PF[0]))', "setting"),  # one point of a grid of literals
+        ('glue("x-10", mc.X_DB[0])', "unchecked"),  # a computed grid (np.arange)
+        ('glue("x-11", mc.WINDOW_PF[i])', "unchecked"),  # a point chosen by a variable
+        ('glue("x-12", seed[0])', "unchecked"),  # a page setting is a number, not a grid
         ('glue("x-7", mc.simulate_window_declarations().trials)', "unchecked"),
         ('glue("x-8", other.WINDOW_TRIALS)', "unchecked"),  # not a paper module the page imports
         ('glue("x-9", n)', "unchecked"),  # not a setting of the page
