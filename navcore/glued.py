@@ -2673,6 +2673,114 @@ def kzl_bias_heading_deg() -> float:
     return float(math.degrees(kzl_imu().gyro_bias * IN.duration_s))
 
 
+def _kzl03_initialised_p0() -> Any:
+    """The page's initial covariance of an initialised tightly coupled run (17 states: position,
+    velocity, attitude, accelerometer bias, gyro bias, clock bias, clock drift): levelling ties
+    each tilt to a horizontal accelerometer bias, heading from the GPS track plus the crab, the
+    gyro bias known to its averaging residual."""
+    import numpy as np
+
+    from navcore.frames import dcm_from_euler
+    from navcore.papers.kzl_scenario import table1_scenario
+    from navcore.units import G0
+
+    sc: Any = table1_scenario("tc")  # its optional fields are set for this flight
+    imu = sc.imu
+    C = dcm_from_euler(*sc.attitude)
+    speed = np.linalg.norm(sc.velocity_ned)
+    P0 = np.zeros((17, 17))
+    P0[0:3, 0:3] = sc.pos0_sigma**2 * np.eye(3)
+    P0[3:6, 3:6] = sc.vel0_sigma**2 * np.eye(3)
+    T_init = sc.init_time
+    S_b = np.diag(
+        [imu.accel_bias**2 + imu.accel_random_walk**2 / T_init] * 2 + [imu.accel_random_walk**2 / T_init]
+    )
+    M = np.array([[0.0, 1 / G0, 0.0], [-1 / G0, 0.0, 0.0], [0.0, 0.0, 0.0]])
+    P0[6:9, 6:9] = M @ S_b @ M.T
+    P0[8, 8] = sc.heading_sigma**2 + (sc.vel0_sigma / speed) ** 2
+    P0[6:9, 9:12] = M @ S_b @ C
+    P0[9:12, 6:9] = P0[6:9, 9:12].T
+    P0[9:12, 9:12] = C.T @ S_b @ C
+    P0[12:15, 12:15] = imu.gyro_random_walk**2 / T_init * np.eye(3)
+    P0[15, 15], P0[16, 16] = sc.clock_bias_sigma**2, sc.clock_drift_sigma**2
+    return P0
+
+
+def _kzl03_loop_sigma_position() -> Any:
+    """The page's covariance recursion written out for the tightly coupled filter (code and
+    delta range) over the Table 1 flight: F of KZL Eq. (10), the cubic transition of Eq. (5),
+    Van Loan's Q_d, two rows of Eq. (13) per tracked satellite and a Joseph update; the position
+    1-sigma (m) per epoch, shape (epochs + 1, 3)."""
+    import numpy as np
+    from scipy.linalg import expm
+
+    from navcore.frames import dcm_from_euler
+    from navcore.papers.kzl_scenario import table1_scenario
+    from navcore.units import G0
+
+    sc: Any = table1_scenario("tc")  # its optional fields are set for this flight
+    imu = sc.imu
+    C = dcm_from_euler(*sc.attitude)
+
+    def cross_matrix(a: Any) -> Any:
+        return np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+
+    T, I17 = 1.0 / sc.gps_rate, np.eye(17)
+    a_n = np.array([0.0, 0.0, -G0])
+    F = np.zeros((17, 17))
+    F[0:3, 3:6] = np.eye(3)
+    F[3:6, 6:9] = -cross_matrix(a_n)
+    F[3:6, 9:12] = -C
+    F[6:9, 12:15] = -C
+    F[15, 16] = 1.0
+    GQGt = np.diag(
+        np.r_[
+            np.zeros(3),
+            np.full(3, imu.accel_random_walk**2),
+            np.full(3, imu.gyro_random_walk**2),
+            np.full(3, sc.accel_bias_walk**2),
+            np.full(3, sc.gyro_bias_walk**2),
+            sc.clock_phase_walk**2,
+            sc.clock_drift_walk**2,
+        ]
+    )
+    Phi = I17 + F * T + F @ F * T**2 / 2 + F @ F @ F * T**3 / 6
+    V = expm(np.block([[-F, GQGt], [np.zeros((17, 17)), F.T]]) * T)
+    Qd = V[17:, 17:].T @ V[:17, 17:]
+    P = _kzl03_initialised_p0()
+    sigma = [np.sqrt(np.diag(P)[0:3])]
+    for k in range(1, sc.n_epochs + 1):
+        P_prior = Phi @ P @ Phi.T + Qd
+        nu = sc.n_visible[k]
+        d = sc.sat_pos_ned[k, :nu] - sc.velocity_ned * k * T
+        los = d / np.linalg.norm(d, axis=1, keepdims=True)
+        H = np.zeros((2 * nu, 17))
+        H[0::2, 0:3], H[0::2, 15] = -los, 1.0
+        H[1::2, 3:6], H[1::2, 16] = -los, 1.0
+        R = np.diag(np.tile([sc.gnss.pseudorange**2, sc.gnss.delta_range**2], nu))
+        K = P_prior @ H.T @ np.linalg.inv(H @ P_prior @ H.T + R)
+        P = (I17 - K @ H) @ P_prior @ (I17 - K @ H).T + K @ R @ K.T
+        sigma.append(np.sqrt(np.diag(P)[0:3]))
+    return np.array(sigma)
+
+
+@register(
+    "kzl03-loop-vs-filter-pct",
+    "kzl/03-simulation",
+    "largest relative gap of the written-out recursion's position 1-sigma from the filter's (%)",
+)
+def kzl03_loop_vs_filter_pct() -> float:
+    """Largest |sigma_loop / sigma_filter - 1| over the flight and the three axes, in percent: the
+    covariance recursion written out about the nominal flight against the position 1-sigma the
+    Monte Carlo's tightly coupled filter reports (root of the run-averaged variance)."""
+    import numpy as np
+
+    from navcore.papers.kzl_scenario import monte_carlo
+
+    filter_sigma = monte_carlo("tc", True).pos_sigma
+    return float(100 * np.abs(_kzl03_loop_sigma_position() / filter_sigma - 1).max())
+
+
 @register("kzl03-seed", "kzl/03-simulation", "seed of the KZL Monte Carlo")
 def kzl03_seed() -> int:
     """The seed of the KZL Monte Carlo (the date of the paper's flight, 29 October 2006)."""
