@@ -3121,19 +3121,17 @@ def _sp_free_inertial_states() -> int:
     return 3 * len(("position", "velocity", "misalignment")) + 3 * len(constants)
 
 
-def _sp_noise_only_outage_m() -> float:
+def _sp_noise_only_m(grade: float, minutes: float) -> float:
     """Van Loan oracle: the psi-angle error model of an inertial system at rest at the grade
     latitude, written out (NED; horizontal position and velocity, three angles; Schuler feedback
     -g/R on position, Coriolis -2 Omega x dv, angles driven by -Omega x psi), driven by the
-    second Table 2.5 column's random walks (15 micro-g/sqrt(Hz), 0.13 deg/h/sqrt(Hz), converted
-    by hand); the covariance after the helicopter's jammed minutes, from zero, is the Van Loan
-    block of scipy's expm; the rss of the two position variances."""
+    Table 2.5 column's random walks (micro-g/sqrt(Hz) and deg/h/sqrt(Hz) converted by hand);
+    the covariance after ``minutes``, from zero, is the Van Loan block of scipy's expm; the rss
+    of the two position variances (m)."""
     from scipy import linalg
 
     from navcore.papers import sp_missions, sp_tables
-    from navcore.papers import sp_missions_scenarios as sms
 
-    grade = sp_tables.GRADE_LABELS_NMI_PER_H[1]
     vrw = sp_tables.table_2_5_value("accel_random_walk_micro_g_per_sqrt_hz", grade) * 1e-6 * _G0
     arw = math.radians(sp_tables.table_2_5_value("gyro_random_walk_deg_per_h_per_sqrt_hz", grade)) / 3600
     lat = math.radians(sp_missions.IN.grade_latitude_deg)
@@ -3149,12 +3147,18 @@ def _sp_noise_only_outage_m() -> float:
     Om = np.array([[0.0, -wd, 0.0], [wd, 0.0, -wn], [0.0, wn, 0.0]])  # Omega x
     F[4:, 4:] = -Om
     Q = np.diag([0, 0, vrw**2, vrw**2, arw**2, arw**2, arw**2])
-    T = sms.IN.helicopter_jammed_min * 60.0
-    M = np.block([[-F, Q], [np.zeros((7, 7)), F.T]]) * T
+    M = np.block([[-F, Q], [np.zeros((7, 7)), F.T]]) * (minutes * 60.0)
     E = linalg.expm(M)
-    phi = E[7:, 7:].T
-    P = phi @ E[:7, 7:]
+    P = E[7:, 7:].T @ E[:7, 7:]
     return math.sqrt(P[0, 0] + P[1, 1])
+
+
+def _sp_noise_only_outage_m() -> float:
+    """:func:`_sp_noise_only_m` for the second Table 2.5 column over the helicopter's jammed minutes."""
+    from navcore.papers import sp_missions_scenarios as sms
+    from navcore.papers import sp_tables
+
+    return _sp_noise_only_m(sp_tables.GRADE_LABELS_NMI_PER_H[1], sms.IN.helicopter_jammed_min)
 
 
 def _across01_dop_by_hand(name: str) -> float:
