@@ -96,8 +96,8 @@ IN.assumed(
     unit="s",
     quantity="length of each momentary loss of carrier lock imposed on the helicopter",
     reason="Sec. 2.6.4 reports 'occasional momentary loss of carrier lock' from the terrain "
-    "following, without its length or rate; the book drops every carrier at each pull-up, once a "
-    "minute, for all of the GPS-aided flight; 'momentary' is one to a few 1-Hz measurements",
+    "following, without its length or rate; the book drops every carrier at each pull-up, once an "
+    "undulation, for all of the GPS-aided flight; 'momentary' is one to a few 1-Hz measurements",
 )
 
 
@@ -846,7 +846,7 @@ CLAIMS = [
         tolerance=EXACT,
         expected_status="not-reproducible",
         note="The helicopter without Doppler (both grades) with every carrier lost for 1-5 s (assumed) "
-        "at each terrain pull-up, once a minute, through the GPS-aided flight, against the "
+        "at each terrain pull-up, once an undulation, through the GPS-aided flight, against the "
         "same mission without the losses: the target-location error 19 min after GPS loss changes by "
         "less than the noticeable change. The book's aided loops do not lose lock by themselves in this "
         "terrain following (their dynamic error stays below a degree), so the losses are imposed.",
