@@ -239,9 +239,15 @@ def _checkout_fingerprint() -> str:
     return h.hexdigest()
 
 
-def _executed_here(marker: Path) -> bool:
-    """Whether ``--execute-only`` completed on this very checkout (else the clean build executes)."""
-    return marker.exists() and marker.read_text() == _checkout_fingerprint()
+def _execution_marker(ledger_from: Path | None) -> str:
+    """What ``--execute-only`` records: the checkout, and the stored ledger it started from."""
+    return _checkout_fingerprint() + (f"\nledger from {ledger_from}" if ledger_from else "")
+
+
+def _executed_here(marker: Path, ledger_from: Path | None) -> bool:
+    """Whether ``--execute-only`` completed on this very checkout, from the same stored ledger
+    (else the clean build executes)."""
+    return marker.exists() and marker.read_text() == _execution_marker(ledger_from)
 
 
 @nox.session
@@ -257,9 +263,20 @@ def reproducible(session: nox.Session) -> None:
     clean build is given the same PDF to link. ``-- --execute-only`` does the clean build's
     execution alone, with fresh execution and ledger caches in ``_build/reproducible``
     (CI runs it beside the other book build); a later ``--against`` run renders from it.
+    ``--ledger-from DIR`` (with either) starts the clean build's ledger cache as a copy of the
+    evaluations stored in DIR (CI passes its ledger gate's, ``_build/navcore-cache``): every
+    page still executes afresh, but no claim is evaluated a second time; the claims' values
+    are then re-evaluated and compared with the gate's by the test suite instead.
     """
     _install(session)
     args = list(session.posargs)
+    ledger_from = None
+    if "--ledger-from" in args:
+        i = args.index("--ledger-from")
+        if i + 1 >= len(args) or not (Path(args[i + 1]) / "claims").is_dir():
+            session.error("--ledger-from DIR: DIR must hold a stored ledger (nox -s ledger -- --store)")
+        ledger_from = Path(args[i + 1]).resolve() / "claims"
+        del args[i : i + 2]
     out, cache, ledger_cache = REPRO / "out", REPRO / "cache", REPRO / "navcore-cache"
     # fresh execution and ledger caches, and a fresh temporary folder (the KZL Monte Carlo
     # keeps its runs there): nothing computed by another build is read
@@ -268,35 +285,48 @@ def reproducible(session: nox.Session) -> None:
     build = ["python", "tools/build_book.py", "--builder", "html", "--cache", "--out", str(out)]
     executed = REPRO / "executed"  # the execution-only run completed
     try:
-        _reproducible(session, args, build, env, executed, out)
+        _reproducible(session, args, build, env, executed, out, ledger_from)
     finally:
         shutil.rmtree(scratch, ignore_errors=True)
 
 
 def _reproducible(
-    session: nox.Session, args: list[str], build: list[str], env: dict[str, str], executed: Path, out: Path
+    session: nox.Session,
+    args: list[str],
+    build: list[str],
+    env: dict[str, str],
+    executed: Path,
+    out: Path,
+    ledger_from: Path | None,
 ) -> None:
+    def seed_ledger() -> None:  # the clean build's ledger cache starts as a copy of a stored ledger
+        if ledger_from is not None:
+            shutil.copytree(ledger_from, Path(env["NAVCORE_CACHE"]) / "claims")
+
     if args == ["--execute-only"]:
         shutil.rmtree(REPRO, ignore_errors=True)
+        seed_ledger()
         session.run(*build, "--execute-only", env=env, **STOPPABLE)
-        executed.write_text(_checkout_fingerprint())
+        executed.write_text(_execution_marker(ledger_from))
         return
     against = None
     if args:
         if len(args) != 2 or args[0] != "--against":
-            session.error("usage: nox -s reproducible [-- --against BUILT_HTML_DIR | -- --execute-only]")
+            usage = "[-- --against BUILT_HTML_DIR | -- --execute-only] [--ledger-from DIR]"
+            session.error(f"usage: nox -s reproducible {usage}")
         against = Path(args[1]).resolve()
         if not (against / "index.html").exists():
             session.error(f"--against {against}: no built HTML book there")
     first = REPRO.with_name("reproducible-first")
     for run in ("first", "second") if against is None else ("second",):
-        reuse = run == "second" and against is not None and _executed_here(executed)
+        reuse = run == "second" and against is not None and _executed_here(executed, ledger_from)
         if reuse:
             session.log("rendering the clean execution that --execute-only made of this checkout")
         else:  # fresh execution and ledger caches, and an empty temporary folder
             shutil.rmtree(REPRO, ignore_errors=True)
             shutil.rmtree(env["TMPDIR"], ignore_errors=True)
             Path(env["TMPDIR"]).mkdir()
+            seed_ledger()
         shutil.rmtree(out, ignore_errors=True)
         if against is not None and (against / "book.pdf").exists():
             (out / "_build" / "latex").mkdir(parents=True)
@@ -336,10 +366,9 @@ def ledger(session: nox.Session) -> None:
     first stores its evaluations in the cache (without reading it). ``nox -s ledger --
     --store`` (CI's gate) makes one fresh evaluation on every core and stores it the same
     way, so that the book built next, and the tests (``.ci/run`` runs this gate first), do
-    not evaluate the ledger again; CI's determinism check of the ledger is then the second
-    clean book build, whose chapters evaluate their claims afresh in one process each and
-    whose HTML, which embeds every claim's full record on the ledger page, must be
-    byte-identical to the book built from this gate's parallel evaluation. Claims are
+    not evaluate the ledger again; CI's determinism check of the ledger is then the test
+    suite, which evaluates every claim's value again in its own processes and compares it bit
+    for bit with what this gate stored (``--twice`` also compares the bands). Claims are
     evaluated under the test suite's numerical rules (``NAVCORE_LEDGER_STRICT=1``:
     floating-point errors raise, warnings are errors), so that the tests may read what the
     gate stored.

@@ -447,6 +447,11 @@ def kzl_dd_phase_sigma_mm() -> float:
 
 
 @register(
+    "kzl90-residual-deg-h",
+    "kzl/90-exercises",
+    "gyro bias left after averaging the angle random walk over the initialisation (deg/h)",
+)
+@register(
     "kzl03-gyro-residual-deg-h",
     "kzl/03-simulation",
     "gyro bias left after averaging the angle random walk over the initialisation (deg/h)",
@@ -1099,6 +1104,25 @@ def wf05_fed_vel_mm() -> float:
 def wf05_vel_gain_db() -> float:
     """20 log10 of the navigation-only over the federated velocity RMS of the worked example, dB."""
     return float(20 * math.log10(_wf05_velocity_rms("navigation") / _wf05_velocity_rms("federated")))
+
+
+def _wf05_horizontal_location_rms(case: str) -> float:
+    """Horizontal emitter-location RMS (m) of the worked example's flights with one aperture velocity."""
+    from navcore.papers import wf_example as ex
+
+    return {row[0]: row[2] for row in ex.summary_rows()}[case]
+
+
+@register(
+    "wf05-loc-nav-over-{other}",
+    "wf/05-end-to-end",
+    "horizontal location RMS with the navigation-only velocity over that with the true or federated one",
+)
+def wf05_loc_nav_over(other: str) -> float:
+    """Horizontal emitter-location RMS of the worked example with the navigation-only aperture
+    velocity over that with the true (``other="true"``) or the federated (``"fed"``) one."""
+    case = {"true": "true", "fed": "federated"}[other]
+    return float(_wf05_horizontal_location_rms("navigation") / _wf05_horizontal_location_rms(case))
 
 
 # --- model values: ATC-10 Section 2, the jamming model's thresholds ---------------------------
@@ -2420,3 +2444,1141 @@ def atc10_30_fit_worst_pct() -> float:
             for c in paper.COLUMNS
         )
     )
+
+
+# --- KZL Sec. 1-2: the requirements page's simple models ---------------------------------------
+
+
+@register(
+    "kzl00-overlap-s",
+    "kzl/00-requirements",
+    "time the satellite's footprint stays within the receiver's footprint (s)",
+)
+def kzl00_overlap_s() -> float:
+    """Receiver footprint over the speed of the satellite's ground track relative to the aircraft
+    (KZL Sec. 1, circular orbit, the assumed footprint), in seconds."""
+    from navcore.papers import kzl_coverage
+
+    return float(kzl_coverage.footprint_overlap_s())
+
+
+@register(
+    "kzl00-pointing-shift-m",
+    "kzl/00-requirements",
+    "footprint shift of the 0.5 deg pointing error at the slant range (m)",
+)
+def kzl00_pointing_shift_m() -> float:
+    """Shift of the footprint that KZL's acceptable pointing error (Sec. 1) gives at the slant
+    range of the Table 1 height and the assumed look angle, in metres."""
+    from navcore.papers import kzl_coverage
+
+    return float(kzl_coverage.pointing_shift_m())
+
+
+@register(
+    "kzl00-baseline-arcsec",
+    "kzl/00-requirements",
+    "baseline tilt error that gives 1 m of InSAR height error (arcsec)",
+)
+def kzl00_baseline_arcsec() -> float:
+    """Baseline tilt error giving 1 m of height error in the assumed TerraSAR-X geometry, arcsec."""
+    from navcore.papers import kzl_coverage
+
+    return float(kzl_coverage.baseline_angle_arcsec())
+
+
+@register(
+    "kzl00-baseline-mm",
+    "kzl/00-requirements",
+    "baseline length error that gives 1 m of InSAR height error (mm)",
+)
+def kzl00_baseline_mm() -> float:
+    """Baseline length error giving 1 m of height error in the assumed TerraSAR-X geometry, mm."""
+    from navcore.papers import kzl_coverage
+
+    return float(kzl_coverage.baseline_length_mm())
+
+
+@register(
+    "kzl00-correlation-10s",
+    "kzl/00-requirements",
+    "correlation of a first-order receiver filter's output 10 s apart",
+)
+def kzl00_correlation_10s() -> float:
+    """Correlation of the assumed first-order receiver filter's output 10 s apart (KZL Sec. 2.2)."""
+    from navcore.papers import kzl_coverage
+
+    return float(kzl_coverage.correlation_after_10s())
+
+
+# --- KZL Sec. 2: the mechanization and error-model pages ----------------------------------------
+
+
+@register(
+    "kzl01-printed-roll-deg",
+    "kzl/01-mechanization",
+    "roll of a level IMU by Eq. (3) as printed, two-argument arctangent (deg)",
+)
+def kzl01_printed_roll_deg() -> float:
+    """Roll that KZL's Eq. (3) as printed (``arctan_2(a_y, a_z)``) gives a level IMU at rest, whose
+    specific force is [0, 0, -g] in NED body axes, in degrees."""
+    import numpy as np
+
+    from navcore.inertial.alignment import levelling_as_printed
+    from navcore.units import G0
+
+    roll, _ = levelling_as_printed(np.array([0.0, 0.0, -G0]))
+    return float(np.degrees(roll))
+
+
+@register(
+    "kzl01-first-order-low-pct-{T}s",
+    "kzl/01-mechanization",
+    "how much lower the 180 s north-position sigma is with I + FT than with the exact transition (%)",
+)
+def kzl01_first_order_low_pct(T: str) -> float:
+    """How much lower (%) the stand-alone north-position sigma at the end of the 180 s Table 1
+    flight is with KZL's first-order transition (Eq. (6)) than with the exact one, step ``T`` s."""
+    from navcore.papers.kzl_models import discretisation_comparison
+
+    d = discretisation_comparison(float(T))
+    return float(100 * (1 - d["pos_first_order_m"] / d["pos_exact_m"]))
+
+
+@register(
+    "kzl01-neglected-rates-deg-h",
+    "kzl/01-mechanization",
+    "navigation-frame rate the simplified mechanization drops, Table 1 flight (deg/h)",
+)
+def kzl01_neglected_rates_deg_h() -> float:
+    """|Earth rate + transport rate| of the Table 1 flight, dropped by KZL's Eq. (9), deg/h."""
+    from navcore.papers.kzl_models import neglected_rates_deg_per_h
+
+    return float(neglected_rates_deg_per_h())
+
+
+@register(
+    "kzl01-neglected-coriolis-micro-g",
+    "kzl/01-mechanization",
+    "Coriolis and transport acceleration the simplified mechanization drops, Table 1 flight (micro-g)",
+)
+def kzl01_neglected_coriolis_micro_g() -> float:
+    """|(2 omega_ie + omega_en) x v| of the Table 1 flight, dropped by KZL's Eq. (8), micro-g."""
+    from navcore.papers.kzl_models import neglected_coriolis_micro_g
+
+    return float(neglected_coriolis_micro_g())
+
+
+@register(
+    "kzl02-rank-code-delta-range",
+    "kzl/02-error-model",
+    "observability rank with code and delta range only, eight satellites",
+)
+def kzl_rank_code_delta_range() -> int:
+    """Rank of the observability matrix of KZL's error model in the Table 1 flight with the code
+    and delta-range rows of Eq. (13) only, the largest over one to eight satellites."""
+    from navcore.papers.kzl_models import observability_ranks
+
+    return int(max(observability_ranks()["tc"].values()))
+
+
+@register(
+    "kzl03-rank-code-delta-range",
+    "kzl/03-simulation",
+    "observability rank with code and delta range only, eight satellites",
+)
+def kzl03_rank_code_delta_range_8() -> int:
+    """Rank of the observability matrix of KZL's error model in the Table 1 flight with the code
+    and delta-range rows of Eq. (13) only, eight satellites."""
+    from navcore.papers.kzl_models import observability_ranks
+
+    return int(observability_ranks()["tc"][8])
+
+
+@register(
+    "kzl02-full-rank-from-nu",
+    "kzl/02-error-model",
+    "satellites needed for full observability with attitude or DD rows (the larger of the two)",
+)
+def kzl02_full_rank_from_nu() -> int:
+    """Fewest satellites that make every state of KZL's error model observable, with the attitude
+    rows of Eq. (13) or the double differences of Eq. (17); the larger of the two counts."""
+    from navcore.inertial.error_model17 import ERROR_LAYOUT_17
+    from navcore.papers.kzl_models import observability_ranks
+
+    ranks = observability_ranks()
+    return int(
+        max(min(nu for nu, r in ranks[m].items() if r == ERROR_LAYOUT_17.size) for m in ("tc_att", "tc_dd"))
+    )
+
+
+# --- KZL Sec. 3.6: the simulation page (closed forms and the seeded Monte Carlo) ----------------
+
+
+@register(
+    "kzl03-arw-position-km",
+    "kzl/03-simulation",
+    "position error per axis from the angle random walk, 180 s (km)",
+)
+def kzl03_arw_position_km() -> float:
+    """Stand-alone position error per horizontal axis that the Table 1 angle random walk N gives
+    after the 180 s flight, g N sqrt(t^5 / 20), in km."""
+    from navcore.papers.kzl_scenario import IN, kzl_imu
+    from navcore.units import G0
+
+    t = IN.duration_s
+    return float(G0 * kzl_imu().gyro_random_walk * math.sqrt(t**5 / 20) / 1e3)
+
+
+@register("kzl03-bias-heading-deg", "kzl/03-simulation", "heading error from the raw gyro bias, 180 s (deg)")
+@register("kzl90-bias-term-raw-deg", "kzl/90-exercises", "heading error from the raw gyro bias, 180 s (deg)")
+def kzl_bias_heading_deg() -> float:
+    """Heading error that the uncalibrated Table 1 gyro bias b builds over the 180 s flight, b t,
+    in degrees."""
+    from navcore.papers.kzl_scenario import IN, kzl_imu
+
+    return float(math.degrees(kzl_imu().gyro_bias * IN.duration_s))
+
+
+@register("kzl03-seed", "kzl/03-simulation", "seed of the KZL Monte Carlo")
+def kzl03_seed() -> int:
+    """The seed of the KZL Monte Carlo (the date of the paper's flight, 29 October 2006)."""
+    from navcore.papers.kzl_scenario import SEED
+
+    return int(SEED)
+
+
+def _kzl_runs(mode: str, initialise: bool = True) -> Any:
+    from navcore.papers.kzl_scenario import monte_carlo
+
+    return monte_carlo(mode, initialise)
+
+
+def _kzl_segment_mean(mode: str, col: int, counts: tuple[int, ...]) -> float:
+    """Time average of a configuration's attitude RMS over the runs (deg), over the epochs of the
+    segments with ``counts`` satellites (the first epoch, the initial state, left out)."""
+    import numpy as np
+
+    from navcore.papers.kzl_simulation import seg
+    from navcore.units import DEG
+
+    segments = seg()
+    a = _kzl_runs(mode).rms("att_err") / DEG
+    return float(np.concatenate([a[segments[n], col] for n in counts]).mean())
+
+
+@register(
+    "kzl03-share-beyond-20deg",
+    "kzl/03-simulation",
+    "share of the uninitialised stand-alone runs whose heading error ends beyond 20 deg",
+)
+def kzl03_share_beyond_20deg() -> float:
+    """Share of the Monte Carlo runs of the stand-alone INS without initialisation whose heading
+    error exceeds 20 deg at the end of the 180 s flight (KZL Sec. 3.6)."""
+    import numpy as np
+
+    from navcore.units import DEG
+
+    return float(np.mean(np.abs(_kzl_runs("ins", False).att_err[:, -1, 2]) > 20 * DEG))
+
+
+@register(
+    "kzl03-raw-heading-closed-deg",
+    "kzl/03-simulation",
+    "1-sigma heading error of the uncalibrated stand-alone gyro after 180 s, closed form (deg)",
+)
+@register(
+    "kzl90-heading-uncalibrated-deg",
+    "kzl/90-exercises",
+    "1-sigma heading error of the uncalibrated stand-alone gyro after 180 s, closed form (deg)",
+)
+def kzl_heading_closed_uncalibrated_deg() -> float:
+    """sqrt((b t)^2 + N^2 t + sigma0^2) at t = 180 s with the raw Table 1 gyro bias, in degrees."""
+    from navcore.papers.kzl_simulation import heading_closed_form_deg
+
+    return float(heading_closed_form_deg(180.0, calibrated=False))
+
+
+@register(
+    "kzl90-heading-calibrated-deg",
+    "kzl/90-exercises",
+    "1-sigma heading error of the calibrated stand-alone gyro after 180 s, closed form (deg)",
+)
+def kzl_heading_closed_calibrated_deg() -> float:
+    """sqrt((b' t)^2 + N^2 t + sigma0^2) at t = 180 s with the calibration residual
+    b' = N / sqrt(T_init) for the gyro bias, in degrees."""
+    from navcore.papers.kzl_simulation import heading_closed_form_deg
+
+    return float(heading_closed_form_deg(180.0, calibrated=True))
+
+
+@register(
+    "kzl03-bias-for-20deg-deg-h",
+    "kzl/03-simulation",
+    "gyro bias that alone turns the heading 20 deg over the flight (deg/h)",
+)
+def kzl03_bias_for_20deg_deg_h() -> float:
+    """Constant gyro bias that alone builds a 20 deg heading error over the 180 s flight, deg/h."""
+    from navcore.papers.kzl_simulation import t_end
+
+    return float(20.0 / (t_end() / 3600.0))
+
+
+@register(
+    "kzl03-raw-att-min-deg",
+    "kzl/03-simulation",
+    "smallest of the three attitude RMS errors of the uninitialised stand-alone runs at 180 s (deg)",
+)
+def kzl03_raw_att_min_deg() -> float:
+    """Smallest over roll, pitch and heading of the RMS over runs of the uninitialised stand-alone
+    INS's attitude error at the end of the flight, deg."""
+    from navcore.papers.kzl_simulation import t_end
+    from navcore.units import DEG
+
+    return float((_kzl_runs("ins", False).rms("att_err")[t_end()] / DEG).min())
+
+
+@register(
+    "kzl03-raw-att-max-deg",
+    "kzl/03-simulation",
+    "largest of the three attitude RMS errors of the uninitialised stand-alone runs at 180 s (deg)",
+)
+def kzl03_raw_att_max_deg() -> float:
+    """Largest over roll, pitch and heading of the RMS over runs of the uninitialised stand-alone
+    INS's attitude error at the end of the flight, deg."""
+    from navcore.papers.kzl_simulation import t_end
+    from navcore.units import DEG
+
+    return float((_kzl_runs("ins", False).rms("att_err")[t_end()] / DEG).max())
+
+
+@register(
+    "kzl03-tc-{axis}-gain",
+    "kzl/03-simulation",
+    "time-averaged attitude RMS of the stand-alone INS over that of the TC filter, one axis",
+)
+def kzl03_tc_gain(axis: str) -> float:
+    """Ratio of the time-averaged RMS error of the initialised stand-alone INS to that of the
+    tightly coupled filter (code and delta range), in roll or pitch, over the whole flight."""
+    from navcore.papers.kzl_simulation import seg
+
+    col = {"roll": 0, "pitch": 1}[axis]
+    every = tuple(seg())
+    return _kzl_segment_mean("ins", col, every) / _kzl_segment_mean("tc", col, every)
+
+
+@register(
+    "kzl03-att-heading-many-deg",
+    "kzl/03-simulation",
+    "time-averaged heading RMS of TC with attitude rows, segments with 4 or more satellites (deg)",
+)
+def kzl03_att_heading_many_deg() -> float:
+    """Time-averaged heading RMS of the filter with attitude rows over the segments with 8, 4 and
+    5 satellites, deg."""
+    return _kzl_segment_mean("tc_att", 2, (8, 4, 5))
+
+
+@register(
+    "kzl03-att-heading-growth",
+    "kzl/03-simulation",
+    "heading RMS of TC with attitude rows, 2-3 satellites over 4 or more (ratio)",
+)
+def kzl03_att_heading_growth() -> float:
+    """Time-averaged heading RMS of the filter with attitude rows over the 3- and 2-satellite
+    segments, over that over the segments with 8, 4 and 5 satellites."""
+    return _kzl_segment_mean("tc_att", 2, (3, 2)) / _kzl_segment_mean("tc_att", 2, (8, 4, 5))
+
+
+@register(
+    "kzl03-{mode}-heading-{n}sat-deg",
+    "kzl/03-simulation",
+    "time-averaged heading RMS of a TC filter over the segment with n satellites (deg)",
+)
+def kzl03_heading_segment_deg(mode: str, n: str) -> float:
+    """Time-averaged heading RMS of the filter with attitude rows (``mode="att"``) or with double
+    differences (``"dd"``) over the segment with ``n`` satellites, deg."""
+    return _kzl_segment_mean({"att": "tc_att", "dd": "tc_dd"}[mode], 2, (int(n),))
+
+
+@register(
+    "kzl03-tc-{quantity}-{where}-{n}sat-{unit}",
+    "kzl/03-simulation",
+    "horizontal RMS error of the TC filter at the end of a satellite segment",
+)
+def kzl03_tc_horizontal(quantity: str, where: str, n: str, unit: str) -> float:
+    """Horizontal (north-east norm) RMS over runs of the tightly coupled filter's position (m) or
+    velocity (m/s) error at the last epoch of the segment with ``n`` satellites (``where="end"``)
+    or of the segment before it (``"start"``)."""
+    from navcore.papers.kzl_simulation import seg
+
+    segments = seg()
+    counts = list(segments)
+    k = counts.index(int(n)) - (1 if where == "start" else 0)
+    epoch = segments[counts[k]].stop - 1
+    name = {"pos": "pos_err", "vel": "vel_err"}[quantity]
+    return float(_kzl_runs("tc").horizontal_rms(name)[epoch])
+
+
+@register(
+    "kzl03-candidates-2m",
+    "kzl/03-simulation",
+    "integer candidates per double difference on a 2 m baseline, 2 B / lambda + 1",
+)
+def kzl03_candidates_2m() -> float:
+    """Integer candidates per double difference of the Table 1 2 m baseline, 2 B / lambda + 1."""
+    from navcore.papers.kzl_coverage import baseline_tradeoff
+
+    return float(baseline_tradeoff()["2 m"][0])
+
+
+@register(
+    "kzl03-tilt-2m-mrad",
+    "kzl/03-simulation",
+    "baseline tilt from a 0.01-cycle phase error on a 2 m baseline (mrad)",
+)
+def kzl03_tilt_2m_mrad() -> float:
+    """Tilt of the Table 1 2 m baseline from a 0.01-cycle phase error, 0.01 lambda / B, mrad."""
+    from navcore.papers.kzl_coverage import baseline_tradeoff
+
+    return float(baseline_tradeoff()["2 m"][1])
+
+
+# --- KZL: the summary and the exercises ---------------------------------------------------------
+
+
+@register(
+    "kzl89-qcorr-residual-deg",
+    "kzl/89-summary",
+    "attitude error left by the printed right-hand quaternion correction (deg)",
+)
+def kzl89_qcorr_residual_deg() -> float:
+    """Attitude error (deg) that the printed right-hand correction of KZL Sec. 3.5 leaves of the
+    test error at the Table 1 attitude."""
+    from navcore.papers import kzl_models
+
+    return float(kzl_models.printed_correction_residual_deg())
+
+
+@register("kzl89-qcorr-error-deg", "kzl/89-summary", "size of the test attitude error (deg)")
+def kzl89_qcorr_error_deg() -> float:
+    """Rotation angle of the test attitude error of the quaternion-correction check, in degrees."""
+    import numpy as np
+
+    from navcore.papers.kzl_models import QCORR_DPSI
+
+    return float(np.degrees(np.linalg.norm(QCORR_DPSI)))
+
+
+@register(
+    "kzl89-dd-printed-rank", "kzl/89-summary", "rank of the two DD attitude rows of Eq. (17) as printed"
+)
+def kzl89_dd_printed_rank() -> int:
+    """Rank of the two double-difference attitude rows of KZL Eq. (17) as printed (both with the
+    baseline l_02), Table 1 sky."""
+    from navcore.papers import kzl_coverage
+
+    return int(kzl_coverage.eq17_printed_rank())
+
+
+@register("kzl89-dd-rank", "kzl/89-summary", "rank of the two DD attitude rows of Eq. (17), corrected")
+def kzl89_dd_rank() -> int:
+    """Rank of the two double-difference attitude rows of KZL Eq. (17) with l_01 and l_02."""
+    from navcore.papers import kzl_coverage
+
+    return int(kzl_coverage.eq17_corrected_rank())
+
+
+@register(
+    "kzl89-heading-removed",
+    "kzl/89-summary",
+    "fraction of the stand-alone time-averaged heading RMS the TC filter removes",
+)
+def kzl89_heading_removed() -> float:
+    """Fraction of the initialised stand-alone INS's time-averaged heading RMS that the tightly
+    coupled filter (code and delta range) removes, Monte Carlo."""
+    from navcore.papers import kzl_simulation
+
+    return float(kzl_simulation.tc_heading_improvement_mc())
+
+
+@register(
+    "kzl89-attitude-removed",
+    "kzl/89-summary",
+    "fraction of the stand-alone time-averaged attitude error the TC filter removes",
+)
+def kzl89_attitude_removed() -> float:
+    """Fraction of the initialised stand-alone INS's time-averaged attitude error (root sum square
+    of the three angles' RMS) that the tightly coupled filter removes, Monte Carlo."""
+    from navcore.papers import kzl_simulation
+
+    return float(kzl_simulation.tc_attitude_improvement_mc())
+
+
+def _kzl_gyro_residual_deg_per_s() -> float:
+    from navcore.papers.kzl_scenario import IN, kzl_imu
+    from navcore.units import DEG
+
+    return float(kzl_imu().gyro_random_walk / math.sqrt(IN.init_time_s) / DEG)
+
+
+@register(
+    "kzl90-bias-term-calibrated-deg",
+    "kzl/90-exercises",
+    "heading error from the calibration residual of the gyro bias, 180 s (deg)",
+)
+def kzl90_bias_term_calibrated_deg() -> float:
+    """Heading error that the gyro-bias residual N / sqrt(T_init) builds over the 180 s, deg."""
+    from navcore.papers.kzl_scenario import IN
+
+    return _kzl_gyro_residual_deg_per_s() * IN.duration_s
+
+
+def _kzl_heading_floor_deg() -> float:
+    """The heading error no calibration removes after 180 s: sqrt(N^2 t + sigma0^2), deg."""
+    from navcore.papers.kzl_scenario import IN, kzl_imu
+    from navcore.units import DEG
+
+    n_deg = kzl_imu().gyro_random_walk / DEG
+    return float(math.sqrt(n_deg**2 * IN.duration_s + IN.crab_angle_deg**2))
+
+
+@register(
+    "kzl90-floor-deg",
+    "kzl/90-exercises",
+    "heading error after 180 s that no calibration removes (random walk and initial heading, deg)",
+)
+def kzl90_floor_deg() -> float:
+    """sqrt(N^2 t + sigma0^2) at t = 180 s: the angle random walk and the initial heading error."""
+    return _kzl_heading_floor_deg()
+
+
+@register(
+    "kzl90-crossover-s",
+    "kzl/90-exercises",
+    "averaging time at which the calibration residual's heading term equals the floor (s)",
+)
+def kzl90_crossover_s() -> float:
+    """Averaging time T at which (N / sqrt(T)) t equals the floor after t = 180 s, in seconds."""
+    from navcore.papers.kzl_scenario import IN, kzl_imu
+    from navcore.units import DEG
+
+    n_deg = kzl_imu().gyro_random_walk / DEG
+    return float((n_deg * IN.duration_s / _kzl_heading_floor_deg()) ** 2)
+
+
+@register(
+    "kzl90-gain-300-1200-deg",
+    "kzl/90-exercises",
+    "heading error after 180 s, 300 s of calibration less 1200 s, covariance analysis (deg)",
+)
+def kzl90_gain_300_1200_deg() -> float:
+    """How much lower the covariance analysis' heading 1-sigma after 180 s is with 1200 s of
+    calibration at rest than with 300 s, deg."""
+    from navcore.papers import kzl_covariance as kc
+
+    return float(
+        kc.standalone_sigma("misalignment", True, 300.0)[2]
+        - kc.standalone_sigma("misalignment", True, 1200.0)[2]
+    )
+
+
+# --- SP Sec. 2.5: the tracking loop -------------------------------------------------------------
+
+
+@register(
+    "sp02-lam-fit", "sp/02-tracking-loop", "wavelength that gives Fig. 2.1's 90 deg peak at 17.67 rad/s (m)"
+)
+def sp02_lam_fit() -> float:
+    """Metres per cycle that make the 6-g step peak at exactly 90 deg in the third-order loop at
+    Fig. 2.1's natural frequency (SP Sec. 2.5)."""
+    from navcore.gnss.tracking import wavelength_for_peak_error
+    from navcore.papers import sp_tracking as spt
+    from navcore.units import G0
+
+    return float(wavelength_for_peak_error(spt.IN.step_g * G0, spt.IN.omega0_fig21, spt.IN.peak_limit_deg))
+
+
+@register(
+    "sp02-l1-peak", "sp/02-tracking-loop", "peak phase error of the 6-g step with the L1 wavelength (deg)"
+)
+def sp02_l1_peak() -> float:
+    """Peak phase error of the 6-g step at Fig. 2.1's natural frequency with the L1 carrier's
+    wavelength as the conversion, deg."""
+    from navcore.papers import sp_tracking as spt
+    from navcore.units import GPS_L1_WAVELENGTH_M
+
+    return float(spt.peak_deg(GPS_L1_WAVELENGTH_M))
+
+
+@register("sp02-l1-w0", "sp/02-tracking-loop", "natural frequency that holds the L1 peak at 90 deg (rad/s)")
+def sp02_l1_w0() -> float:
+    """Natural frequency of the third-order loop that holds the 6-g step's peak at 90 deg with the
+    L1 wavelength, rad/s."""
+    from navcore.gnss.tracking import natural_frequency_for_peak_error
+    from navcore.papers import sp_tracking as spt
+    from navcore.units import GPS_L1_WAVELENGTH_M
+
+    return float(
+        natural_frequency_for_peak_error(spt.step_deg_s2(GPS_L1_WAVELENGTH_M), spt.IN.peak_limit_deg)
+    )
+
+
+@register(
+    "sp02-l1-factor", "sp/02-tracking-loop", "L1 natural frequency for 90 deg over the unaided 18 rad/s"
+)
+def sp02_l1_factor() -> float:
+    """The L1 natural frequency for a 90 deg peak over the unaided 18 rad/s that Table 2.6 scales."""
+    from navcore.papers import sp_residual_acceleration as spr
+
+    return sp02_l1_w0() / float(spr.IN.unaided_omega0)
+
+
+@register(
+    "sp02-step-over-jerk", "sp/02-tracking-loop", "peak error of the 6-g step over that of the 10-g/s jerk"
+)
+def sp02_step_over_jerk() -> float:
+    """Peak phase error of the 6-g step over that of the 10 g/s jerk held 0.6 s, Fig. 2.1's loop
+    (the ratio does not depend on the conversion; one foot as the page shows it)."""
+    from navcore.papers import sp_tracking as spt
+    from navcore.units import FT
+
+    return float(spt.peak_deg(FT) / spt.jerk_peak_deg(FT))
+
+
+# --- SP Sec. 2.6: residual acceleration (Table 2.6) ---------------------------------------------
+
+
+@register(
+    "sp03-iso",
+    "sp/03-residual-acceleration",
+    "90 % sphere radius of a 3-D standard normal by quadrature (sigmas)",
+)
+def sp03_iso() -> float:
+    """Radius of the sphere holding 90 % of N(0, I_3), by navcore's quadrature and root finding."""
+    import numpy as np
+
+    from navcore.inertial.residual_acceleration import sphere_radius
+
+    return float(sphere_radius(np.eye(3), 0.9))
+
+
+def _sp03_apriori_ratios() -> list[float]:
+    """Table 2.6 column 2 over the 90 % radius of Table 2.5's a-priori accelerometer scale factor
+    and misalignment, per grade."""
+    from navcore.papers import sp_residual_acceleration as spr
+    from navcore.papers.sp_tables import TABLE_2_5_PRINTED
+
+    sf = TABLE_2_5_PRINTED["accel_scale_factor_ppm"]
+    mis = TABLE_2_5_PRINTED["accel_misalignment_arcsec"]
+    return [spr.col2_ppm(g) / spr.r90_from_apriori_ppm(sf[j], mis[j]) for j, g in enumerate(spr.GRADES)]
+
+
+@register(
+    "sp03-n-above",
+    "sp/03-residual-acceleration",
+    "grades whose Table 2.6 column 2 exceeds the a-priori 90 % radius of Table 2.5",
+)
+def sp03_n_above() -> int:
+    """How many of the four grades print a Table 2.6 column 2 above the 90 % radius that Table
+    2.5's a-priori accelerometer errors give."""
+    return int(sum(r > 1 for r in _sp03_apriori_ratios()))
+
+
+@register("sp03-col2-fall", "sp/03-residual-acceleration", "largest over smallest Table 2.6 column 2 value")
+def sp03_col2_fall() -> float:
+    """How much Table 2.6 column 2 falls from the worst grade to the best (largest over smallest)."""
+    from navcore.papers import sp_residual_acceleration as spr
+
+    col2 = [spr.col2_ppm(g) for g in spr.GRADES]
+    return float(max(col2) / min(col2))
+
+
+@register(
+    "sp03-sf-fall",
+    "sp/03-residual-acceleration",
+    "largest over smallest Table 2.5 accelerometer scale factor",
+)
+def sp03_sf_fall() -> float:
+    """How much Table 2.5's accelerometer scale factor falls from the worst grade to the best."""
+    from navcore.papers.sp_tables import TABLE_2_5_PRINTED
+
+    sf = TABLE_2_5_PRINTED["accel_scale_factor_ppm"]
+    return float(max(sf) / min(sf))
+
+
+# --- SP Sec. 2.5-2.6: acquisition (Table 2.7) and target location -------------------------------
+
+
+def _sp04_search_s(system: str) -> Any:
+    from navcore.papers import sp_acquisition as spa
+
+    return spa.search_times_s(system)
+
+
+@register("sp04-tc10-min-s", "sp/04-acquisition", "shortest Table 2.7 search of the TC 10 nmi/h system (s)")
+def sp04_tc10_min_s() -> float:
+    """Shortest search time over the satellites of Table 2.7's tightly coupled 10 nmi/h row, s."""
+    from navcore.papers import sp_acquisition as spa
+
+    return float(_sp04_search_s(spa.TC10).min())
+
+
+@register("sp04-tc10-max-s", "sp/04-acquisition", "longest Table 2.7 search of the TC 10 nmi/h system (s)")
+def sp04_tc10_max_s() -> float:
+    """Longest search time over the satellites of Table 2.7's tightly coupled 10 nmi/h row, s."""
+    from navcore.papers import sp_acquisition as spa
+
+    return float(_sp04_search_s(spa.TC10).max())
+
+
+@register("sp04-better-max-s", "sp/04-acquisition", "longest Table 2.7 search of the better systems (s)")
+def sp04_better_max_s() -> float:
+    """Longest search time of every Table 2.7 row but the tightly coupled 10 nmi/h one, s."""
+    from navcore.papers import sp_acquisition as spa
+
+    return float(spa.better_max_s())
+
+
+@register(
+    "sp04-tc10-sigma-{which}-m",
+    "sp/04-acquisition",
+    "1-sigma range uncertainty that the TC 10 nmi/h row's intervals imply (m)",
+)
+def sp04_tc10_sigma_m(which: str) -> float:
+    """The 1-sigma range uncertainty of the fewest (``which="min"``) or most (``"max"``) code-phase
+    intervals of Table 2.7's TC 10 nmi/h row: intervals of one cell span +-1 sigma, m."""
+    from navcore.papers import sp_acquisition as spa
+
+    cells = spa.table_2_7(spa.TC10)
+    n = {"min": min, "max": max}[which](cells)
+    return float(n * spa.IN.range_cell_m / 2)
+
+
+@register(
+    "sp05-mis-1pct-mrad",
+    "sp/05-target-location",
+    "heading error that adds 1 % to the 1 nmi/h helicopter's target error (mrad)",
+)
+def sp05_mis_1pct_mrad() -> float:
+    """Heading error at which the pointing error over the target range adds 1 % (root sum square)
+    to the 1 nmi/h helicopter's position error: sqrt(1.01^2 - 1) pos / L, mrad."""
+    from navcore.papers import sp_acquisition as spa
+
+    pos, lever = spa.IN.helicopter_error_1nmi_m, spa.IN.target_range_m
+    return float(1e3 * math.sqrt(1.01**2 - 1) * pos / lever)
+
+
+@register(
+    "sp05-mis-equal-mrad",
+    "sp/05-target-location",
+    "heading error whose pointing error equals the 1 nmi/h helicopter's position error (mrad)",
+)
+def sp05_mis_equal_mrad() -> float:
+    """Heading error whose pointing error over the target range equals the 1 nmi/h helicopter's
+    position error, pos / L, mrad."""
+    from navcore.papers import sp_acquisition as spa
+
+    return float(1e3 * spa.IN.helicopter_error_1nmi_m / spa.IN.target_range_m)
+
+
+# --- SP Sec. 3: deep integration ----------------------------------------------------------------
+
+
+@register(
+    "sp06-q-{kind}",
+    "sp/06-deep-integration",
+    "spectral-separation factor Q of the jammer on the P(Y) code (wide: 20 MHz, narrow: 1 kHz)",
+)
+def sp06_q(kind: str) -> float:
+    """Spectral-separation factor Q = 1 / (R_c kappa) of SP Sec. 3's wideband (``kind="wide"``)
+    or narrowband (``"narrow"``) jammer on the assumed code."""
+    from navcore.papers import sp_antijam as spj
+
+    return float(spj.q_factor({"wide": "wideband", "narrow": "narrowband"}[kind]))
+
+
+@register(
+    "sp06-{arch}-threshold",
+    "sp/06-deep-integration",
+    "effective C/N0 at the stated J/S limit of TC or DI against the wideband jammer (dB-Hz)",
+)
+def sp06_threshold(arch: str) -> float:
+    """Effective C/N0 that the stated J/S limit of the tightly coupled (``arch="tc"``) or deeply
+    integrated (``"di"``) receiver implies against the wideband jammer (SP Sec. 3.0-3.1), dB-Hz."""
+    from navcore.papers import sp_antijam as spj
+
+    return float(spj.threshold_dbhz(arch.upper()))
+
+
+# --- SP Sec. 2.6: the inertial error budget (Table 2.4-2.5) -------------------------------------
+
+
+@register(
+    "sp20-clock-offset-us",
+    "sp/20-inertial-errors",
+    "Table 2.4's clock offset, read as metres, in microseconds",
+)
+def sp20_clock_offset_us() -> float:
+    """Table 2.4's initial clock offset, printed '5000 ms' and read as metres, as a time in us."""
+    from navcore.papers import sp_tables as spt
+    from navcore.units import C
+
+    entry = next(e for e in spt.table_2_4().values() if e.name == "clock initial offset")
+    return float(entry.si / C * 1e6)
+
+
+def _sp20_hour_horizontal_covariances() -> list[Any]:
+    """The 1-h horizontal position covariances (m^2) of the Table 2.5 columns, gyrocompass-aligned
+    at the grade latitude, in 10 s steps (as the inertial-errors page computes them)."""
+    import numpy as np
+
+    from navcore.estimation.covariance_analysis import run_covariance_analysis
+    from navcore.inertial.error_dynamics import ErrorSources, gyrocompass_alignment, initial_covariance
+    from navcore.inertial.trajectories import straight_and_level
+    from navcore.papers import sp_missions as spm
+    from navcore.papers import sp_tables as spt
+    from navcore.units import DEG, HOUR
+
+    grades = spt.sp_imu_grades()
+    lay = spm.unaided_layout()
+    lat = spm.IN.grade_latitude_deg * DEG
+    srcs = [ErrorSources(imu=grades[g]) for g in spt.GRADE_LABELS_NMI_PER_H]
+    P0 = [gyrocompass_alignment(initial_covariance(lay, src), lay, lat=lat) for src in srcs]
+    hour = run_covariance_analysis(
+        straight_and_level(HOUR, dt=10.0, lat0=lat),
+        lay,
+        lay,
+        srcs,
+        np.stack(P0),
+        snapshots=(-1,),
+        vertical_channel=False,
+    )
+    assert isinstance(hour, list)  # one run per stacked initial covariance
+    out = []
+    for r in hour:
+        assert r.final_true is not None  # the snapshot asked for
+        out.append(r.final_true[:2, :2])
+    return out
+
+
+@register(
+    "sp20-rss-over-cep-max-pct",
+    "sp/20-inertial-errors",
+    "largest excess of the 1-h rss horizontal error over the CEP, Table 2.5 columns (%)",
+)
+def sp20_rss_over_cep_max_pct() -> float:
+    """How much larger (%) the root-sum-square horizontal error is than the CEP after 1 h, the
+    largest over the Table 2.5 columns."""
+    import numpy as np
+
+    from navcore.estimation.covariance_analysis import circular_error_probable
+
+    ratios = [np.sqrt(np.trace(P)) / circular_error_probable(P) for P in _sp20_hour_horizontal_covariances()]
+    return float(100 * (max(ratios) - 1))
+
+
+# --- SP Sec. 2.6.2: the jammer flyby --------------------------------------------------------------
+
+
+@register(
+    "sp22-lc-jitter-dbhz",
+    "sp/22-jammer-flyby",
+    "C/N0 where the loosely coupled carrier loop's 3-sigma jitter reaches the phase limit (dB-Hz)",
+)
+def sp22_lc_jitter_dbhz() -> float:
+    """C/N0 at which the thermal jitter rule of thumb puts the first system's (loosely coupled)
+    carrier loop at its phase-error limit, k sigma = limit (SP Sec. 2.5), dB-Hz."""
+    from navcore.gnss.jammer_geometry import pll_jitter_threshold_dbhz
+    from navcore.papers import sp_flyby as fb
+    from navcore.papers import sp_missions_scenarios as sc
+
+    return float(
+        pll_jitter_threshold_dbhz(
+            fb.carrier_loop(sc.SYSTEMS[0]).bandwidth_hz,
+            fb.IN.max_phase_error_deg,
+            fb.IN.jitter_k_sigma,
+            fb.IN.coherent_s,
+        )
+    )
+
+
+@register(
+    "sp22-horizon-km", "sp/22-jammer-flyby", "radio horizon of the cruise altitude, 4/3-Earth radius (km)"
+)
+def sp22_horizon_km() -> float:
+    """Radio horizon sqrt(2 (4/3) R h) of the missions' cruise altitude over a 4/3-radius Earth, km."""
+    from navcore.location.multilateration import EARTH_MEAN_RADIUS_M
+    from navcore.papers import sp_missions_scenarios as sc
+
+    return float(math.sqrt(2 * 4 / 3 * EARTH_MEAN_RADIUS_M * sc.IN.cruise_altitude_m) / 1e3)
+
+
+@register("sp22-range-min-km", "sp/22-jammer-flyby", "closest approach of the flyby to the jammer (km)")
+def sp22_range_min_km() -> float:
+    """Smallest slant range from the aircraft to the jammer over the flyby, km."""
+    from navcore.papers import sp_flyby as fb
+
+    return float(fb.jammer_range_m().min() / 1e3)
+
+
+# --- ATC-10 Sec. 3.6-3.8: the physical PSK simulation --------------------------------------------
+
+
+def _atc10_psk_samples() -> Any:
+    from navcore.papers import atc10_multiple_access as pm
+
+    return pm.psk_physical_samples()
+
+
+@register(
+    "atc10-20-psk-b",
+    "atc10/20-multiple-access-noise",
+    "second moment b of the simulated PSK amplitudes n_ij given an overlap",
+)
+def atc10_20_psk_b() -> float:
+    """Mean square of the simulated amplitudes of overlapping PSK interferers (ATC-10 Sec. 3.6's b)."""
+    import numpy as np
+
+    return float(np.mean(_atc10_psk_samples() ** 2))
+
+
+@register(
+    "atc10-20-psk-kurtosis",
+    "atc10/20-multiple-access-noise",
+    "kurtosis E[x^4] / b^2 of the simulated PSK amplitudes",
+)
+@register(
+    "atc10-22-psk-kurtosis",
+    "atc10/22-gaussian-comparison",
+    "kurtosis E[x^4] / b^2 of the simulated PSK amplitudes",
+)
+def atc10_psk_kurtosis() -> float:
+    """Fourth moment over the squared second moment of the simulated PSK amplitudes."""
+    import numpy as np
+
+    x = _atc10_psk_samples()
+    return float(np.mean(x**4) / np.mean(x**2) ** 2)
+
+
+@register(
+    "atc10-22-psk-pf-gauss",
+    "atc10/22-gaussian-comparison",
+    "ROC_g false-alarm probability at p_d = 0.9 with the simulated PSK density's power",
+)
+def atc10_22_psk_pf_gauss() -> float:
+    """False-alarm probability of the Gaussian ROC (ATC-10 Eq. (3.8.3)) at p_d = 0.9, with the
+    Theorem 3.1 power of the simulated PSK amplitude density."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(pm.gaussian_best_pf(pm.psk_contour(), 0.9))
+
+
+# --- ATC-10 Sec. 4.5: the clock tracker's gain -------------------------------------------------------
+
+
+@register(
+    "atc10-31-convergence-speedup",
+    "atc10/31-clock-tracking",
+    "median over the examples and sigma0 of (2.3 / psi - 1) over the recursion's steps to 10 %",
+)
+def atc10_31_convergence_speedup() -> float:
+    """How many times faster the gain recursion of ATC-10 Eqs. (4.5.16)-(4.5.25) comes within 10 %
+    of its limit than the geometric series' 2.3 / psi - 1 steps, median over both examples and the
+    three published sigma0 (sigma = 50 ns)."""
+    import numpy as np
+
+    from navcore.location import clock_tracking as ct
+    from navcore.papers import atc10_tracking as paper
+
+    speedups = []
+    for ex in ("I", "II"):
+        b = float(paper.TABLE_4_2[ex]["beta"])
+        for s0 in paper.sigma0_values():
+            steps = ct.convergence_steps(ct.gain_recursion(b, 50.0, s0, 3000), 0.1)
+            if steps > 0:
+                speedups.append((2.3 / float(ct.psi(ct.alpha_parameter(s0, 50.0, b))) - 1) / steps)
+    return float(np.median(speedups))
+
+
+def _atc10_printed_ms_factors() -> list[float]:
+    """(rms at N + 1 with the printed S3 over that with the invariant S3)^2, both examples and the
+    three published sigma0, at the fitted geometry (the finite-N gains and the exact extrapolation)."""
+    from navcore.papers import atc10_tracking as paper
+
+    r_fit = paper.fitted_radius_ratio()
+    out = []
+    for ex in ("I", "II"):
+        geo = paper.table_4_2_from_geometry(ex, r_fit)
+        printed_geo = dict(geo, s_123=geo["s_123_printed"])
+        for s0 in paper.sigma0_values():
+            pred = paper.rms_history_ft(geo, s0, paper.MC_N_LAST, 1)[1][-1]
+            pred_p = paper.rms_history_ft(printed_geo, s0, paper.MC_N_LAST, 1)[1][-1]
+            out.append(float((pred_p / pred) ** 2))
+    return out
+
+
+@register(
+    "atc10-32-printed-ms-factor-{end}",
+    "atc10/32-tracking-examples",
+    "smallest or largest ratio of the N + 1 mean square with the printed S3 to that with the invariant S3",
+)
+def atc10_32_printed_ms_factor(end: str) -> float:
+    """The smallest (``end="lo"``) or largest (``"hi"``) factor by which the printed S3 of (4.5.30)
+    changes the mean-square position error at the first three-satellite epoch, over both examples
+    and the three published sigma0."""
+    return {"lo": min, "hi": max}[end](_atc10_printed_ms_factors())
+
+
+@register(
+    "atc10-32-mse-I-5-n0",
+    "atc10/32-tracking-examples",
+    "Monte Carlo mean-square position error, Example I, sigma0 = 5 ns, n = 0 (ft^2)",
+)
+def atc10_32_mse_i_5_n0() -> float:
+    """E||xi_p||^2 at the least-squares epoch n = 0 from the seeded tracker Monte Carlo, Example I,
+    sigma0 = 5 ns, ft^2."""
+    from navcore.papers import atc10_tracking as paper
+
+    return float(paper.tracker_monte_carlo("I", 5.0).position_mse[0])
+
+
+@register(
+    "atc10-32-normvar-I-5-n0",
+    "atc10/32-tracking-examples",
+    "Monte Carlo variance of the position error's norm, Example I, sigma0 = 5 ns, n = 0 (ft^2)",
+)
+def atc10_32_normvar_i_5_n0() -> float:
+    """Var ||xi_p|| at the least-squares epoch n = 0 from the seeded tracker Monte Carlo, Example I,
+    sigma0 = 5 ns, ft^2."""
+    from navcore.papers import atc10_tracking as paper
+
+    return float(paper.tracker_monte_carlo("I", 5.0).position_norm_variance[0])
+
+
+@register(
+    "atc10-90-ms-left-5ns-{ex}",
+    "atc10/90-exercises",
+    "fraction (sd_N / sd_0)^2 of the least-squares mean square that tracking leaves, sigma0 = 5 ns",
+)
+def atc10_90_ms_left_5ns(ex: str) -> float:
+    """(sd_N / sd_0)^2 of Table 4.3 from the printed Table 4.2 of Example ``ex``, sigma0 = 5 ns."""
+    from navcore.papers import atc10_tracking as pt
+
+    return float(pt.ms_ratio_tracking(ex, 5.0))
+
+
+@register(
+    "atc10-23-coef-se",
+    "atc10/23-zakai-bandwidth",
+    "standard error of the simulated PSK power coefficient 2 L E[x^2]",
+)
+def atc10_23_coef_se() -> float:
+    """Standard error of the power coefficient 2 L E[n_ij^2] estimated from the PSK samples."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    return float(pm.psk_power_coefficient_se())
+
+
+@register(
+    "atc10-21-convexity-worst",
+    "atc10/21-roc-bounds",
+    "largest rho sqrt(b) the Chernoff optimum reaches at the Sec. 3.6 operating points (two-point density)",
+)
+def atc10_21_convexity_worst() -> float:
+    """Largest rho* sqrt(b) of the Chernoff bound's optimal tilt over the contours of Sec. 3.6 and
+    thresholds 0.02-0.98, two-point amplitude density, N = 1e5."""
+    import numpy as np
+
+    from navcore.detection.roc_bounds import chernoff_log_tails
+    from navcore.papers import atc10_multiple_access as pm
+
+    worst = 0.0
+    for x in pm.contours():
+        rho = chernoff_log_tails(pm.noise_sec36("C2 two-point", x), np.linspace(0.02, 0.98, 49))[1]
+        worst = max(worst, float(np.max(rho)) * math.sqrt(pm.b_of_contour(x)))
+    return worst
+
+
+@register(
+    "atc10-21-lower-efolds",
+    "atc10/21-roc-bounds",
+    "exact ln p_f minus the corrected lower bound (3.5.14), two-point noise at N = 1e7 (e-folds)",
+)
+def atc10_21_lower_efolds() -> float:
+    """ln (exact tail) - ln (corrected lower bound (3.5.14)) for two-point multiple-access noise,
+    N = 1e7 (the page's largest N)."""
+    import numpy as np
+
+    from navcore.detection.multiple_access import MultipleAccessNoise, two_point_density, two_point_exact_tail
+    from navcore.detection.roc_bounds import gallager_log_tails_lower
+
+    n, theta = ATC10_TWO_POINT_N, ATC10_TWO_POINT_THETA
+    q = 2 * ATC10_TWO_POINT_TAU_OVER_ALPHA
+    bb = ATC10_TWO_POINT_POWER / ((n - 1) * q)
+    nz = MultipleAccessNoise(n, ATC10_TWO_POINT_TAU_OVER_ALPHA, two_point_density(bb))
+    exact = float(np.log(two_point_exact_tail(np.sqrt(bb), n - 1, q, [theta])[0]))
+    return float(exact - gallager_log_tails_lower(nz, [theta])[0][0])
+
+
+def _atc10_21_lower_gaps() -> list[float]:
+    """log10 (actual p_f / corrected lower bound (3.5.14)), two-point density, contours 3, 5, 6 and
+    thresholds 0.3, 0.5, 0.7 (the actual p_f at the nearest point of the exact ROC's grid)."""
+    import numpy as np
+
+    from navcore.detection.roc_bounds import gallager_log_tails_lower
+    from navcore.papers import atc10_multiple_access as pm
+
+    theta = np.array([0.3, 0.5, 0.7])
+    out: list[float] = []
+    for x in (3.0, 5.0, 6.0):
+        lb = gallager_log_tails_lower(pm.noise_sec36("C2 two-point", x), theta)[0]
+        idx = [int(np.argmin(abs(pm.THETA_GRID - t))) for t in theta]
+        out += [float(v) for v in np.log10(pm.exact_roc("C2 two-point", x).p_f[idx]) - lb / np.log(10)]
+    return out
+
+
+@register(
+    "atc10-21-lower-gap-{end}",
+    "atc10/21-roc-bounds",
+    "smallest or largest gap between the actual p_f and the corrected lower bound (decades)",
+)
+def atc10_21_lower_gap(end: str) -> float:
+    """The smallest (``end="lo"``) or largest (``"hi"``) number of decades by which the corrected
+    lower bound (3.5.14) lies below the actual p_f, over the page's nine two-point cases."""
+    return {"lo": min, "hi": max}[end](_atc10_21_lower_gaps())
+
+
+def _atc10_outage_corrected_s(ex: str) -> float:
+    from navcore.papers import atc10_tracking as paper
+
+    return float(
+        paper.acceptable_outage_s(ex, 5.0, paper.table_4_2_from_geometry(ex, paper.fitted_radius_ratio()))
+    )
+
+
+@register(
+    "atc10-32-outage-corrected-{ex}",
+    "atc10/32-tracking-examples",
+    "acceptable three-satellite outage at sigma0 = 5 ns, fitted geometry with the invariant S3 (s)",
+)
+def atc10_32_outage_corrected(ex: str) -> float:
+    """Seconds for which the three-satellite rms of Example ``ex`` stays below the fitted factor
+    times the all-satellite least-squares rms (rule of thumb 4), sigma0 = 5 ns, fitted geometry."""
+    return _atc10_outage_corrected_s(ex)
+
+
+@register(
+    "atc10-32-outage-ratio-{end}",
+    "atc10/32-tracking-examples",
+    "smallest or largest corrected acceptable outage over the printed one",
+)
+def atc10_32_outage_ratio(end: str) -> float:
+    """The corrected acceptable outage over the printed one (rule of thumb 4), the smaller
+    (``end="lo"``) or larger (``"hi"``) of the two examples."""
+    from navcore import ledger
+
+    ratios = [
+        _atc10_outage_corrected_s(ex) / float(ledger.claim(f"ATC10-sec4.6-rule4-outage-ex{ex}").published)
+        for ex in ("I", "II")
+    ]
+    return {"lo": min, "hi": max}[end](ratios)

@@ -17,6 +17,11 @@ call to one of:
   through its paper module's ``IN`` (``float(sp.IN.cruise_altitude_m / 1000.0)``: the input
   itself, at most converted by a number or negated); its value, provenance and reason are in
   the ledger, and an oracle would only read the same declaration twice;
+- **a ledger count**: the glued expression counts what the ledger itself returns, calling
+  ``ledger.counts``, ``ledger.evaluations`` or ``ledger.errata`` (how many claims a paper has,
+  how many are reproduced, how many errata): the ledger page reads the same functions, each
+  claim's verdict is pinned by its expected status in the claim tests and the errata by their
+  registry's tests, so a re-implementation of the count would only repeat them;
 - **a figure**: the glued object is a figure (``fig``), not a number;
 - **not yet registered**: listed in ``tests/glue_todo.txt``. That list may only shrink: a
   listed name that is now registered, a claim's value or no longer glued fails the test.
@@ -158,6 +163,24 @@ def _reads_input(value: ast.expr | None) -> bool:
     )
 
 
+_LEDGER_COUNTS = {"counts", "evaluations", "errata"}
+
+
+def _counts_ledger(value: ast.expr | None) -> bool:
+    """Whether the glued expression calls ``ledger.counts``, ``ledger.evaluations`` or
+    ``ledger.errata`` itself (a count kept in a variable first is not seen as one)."""
+    if value is None:
+        return False
+    return any(
+        isinstance(node, ast.Call)
+        and isinstance(node.func, ast.Attribute)
+        and node.func.attr in _LEDGER_COUNTS
+        and isinstance(node.func.value, ast.Name)
+        and node.func.value.id == "ledger"
+        for node in ast.walk(value)
+    )
+
+
 def _is_figure(value: ast.expr | None) -> bool:
     return isinstance(value, ast.Name) and value.id == "fig"
 
@@ -193,6 +216,8 @@ def _kind(page: str, name: str, value: ast.expr | None) -> str:
         return "claim"
     if _reads_input(value):
         return "input"
+    if _counts_ledger(value):
+        return "count"
     if _is_figure(value):
         return "figure"
     return "unchecked"
@@ -203,7 +228,7 @@ def test_the_scan_finds_the_glue_calls():
     calls = glue_calls()
     assert len(calls) > 300
     kinds = {_kind(p, n, v) for p, n, _, v in calls}
-    assert {"registered", "claim", "input", "figure", "unchecked"} <= kinds
+    assert {"registered", "claim", "input", "count", "figure", "unchecked"} <= kinds
 
 
 def test_every_glued_number_is_a_claim_or_registered():
@@ -275,6 +300,14 @@ def test_pages_glue_through_navcore_book():
         ('glue("x-10", float(spj.IN.cruise_alt_m / h))', "unchecked"),  # divided by a variable
         ('glue("x-11", float(spj.IN.not_an_input))', "unchecked"),  # no such declaration
         ('glue("x-12", float(obj.cruise_alt_m))', "unchecked"),  # not read through IN
+        ('glue("x-13", int(ledger.counts("KZL")["KZL"]["total"]))', "count"),
+        ('glue("x-14", len(ledger.errata("KZL")))', "count"),
+        (
+            'glue("x-15", sum(e.status == "reproduced" for e in ledger.evaluations("SP", prefix="T")))',
+            "count",
+        ),
+        ('glue("x-16", int(n["total"]))', "unchecked"),  # a count kept in a variable
+        ('glue("x-17", len(other.errata("KZL")))', "unchecked"),  # not the ledger's
         ('glue("kzl00-schuler-min", 84.45)', "registered"),
         ('glue(f"atc10-erp-K{k}-{p_dl}", 1.0)', "registered"),
         ('glue(f"atc10-erp-quarter-K{k}-{p_dl}", 1.0)', "unchecked"),
@@ -283,8 +316,8 @@ def test_pages_glue_through_navcore_book():
 def test_classification(source, kind):
     """The rules on hand-written calls: a claim read by id or evaluation, a figure, a registered
     name or pattern (and a pattern that merely shares a prefix is not registered), a declared
-    input read through IN (converted by a number at most), and plain arithmetic, which is
-    unchecked."""
+    input read through IN (converted by a number at most), a count the ledger's own functions
+    return, and plain arithmetic, which is unchecked."""
     call = ast.parse(source).body[0].value
     assert isinstance(call, ast.Call)
     name = _name_pattern(call.args[0])

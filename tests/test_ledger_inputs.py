@@ -357,6 +357,68 @@ def test_a_perturbed_published_input_makes_the_ledger_fail(paper):
     pytest.fail(f"no perturbation of a {paper} published input makes the ledger fail")
 
 
+def _reading_values(readings) -> dict[str, object]:
+    """Each convention reading's value, keyed by the readings of the conventions alone (a full
+    evaluation adds the printed-precision readings of the tolerance, which change no value)."""
+    out = {}
+    for r in readings or ():
+        conventions = {k: v for k, v in r["reading"].items() if k != "printed precision"}
+        out[repr(sorted(conventions.items()))] = r["value"]
+    return out
+
+
+@pytest.mark.parametrize("paper", list(ledger.PAPERS))
+def test_every_claims_value_is_the_stored_gates_bit_for_bit(paper):
+    """Determinism: every claim's value, evaluated again here, in another process and another
+    order (the paper's claims at their nominal inputs, no band run between them), is the value
+    the ledger gate stored for this checkout, bit for bit: its reproduced value, the inputs it
+    read and their values, and the value under each reading of its conventions.
+
+    Oracle: the gate's own evaluation (``nox -s ledger -- --store``, on every core, one task
+    per paper module), which CI hands to the test command in ``NAVCORE_TEST_CACHE_FROM``.
+    Without a stored ledger there is nothing to compare with and the test skips; with one that
+    was made from another checkout it fails (a stale store proves nothing). The bands are not
+    re-run here (they are the same model functions under other inputs); ``nox -s ledger --
+    --twice`` compares two whole evaluations, bands included.
+    """
+    import json
+    import os
+
+    from navcore.ledger import registry
+
+    folder = os.environ.get("NAVCORE_TEST_CACHE_FROM")
+    if not folder:
+        pytest.skip("no stored ledger to compare with (CI passes its gate's in NAVCORE_TEST_CACHE_FROM)")
+    stored_dir = Path(folder, "claims")
+    differ, stale = [], []
+    for cid, ev in _nominal(paper).items():
+        try:
+            stored = json.loads((stored_dir / f"{cid}.json").read_text())
+        except OSError:
+            stale.append(f"{cid} (not stored)")
+            continue
+        if stored.get("key") != registry._claim_key(cid):
+            stale.append(f"{cid} (stored from other files)")
+            continue
+        fresh = {
+            "reproduced": registry._to_json(ev.reproduced),
+            "inputs": registry._to_json(ev.inputs),
+            "readings": _reading_values(registry._to_json(ev.readings)),
+        }
+        kept = {
+            "reproduced": stored["reproduced"],
+            "inputs": stored["inputs"],
+            "readings": _reading_values(stored["readings"]),
+        }
+        # compared on the readings both evaluations ran (a full evaluation may run more of them)
+        kept["readings"] = {k: v for k, v in kept["readings"].items() if k in fresh["readings"]}
+        fresh["readings"] = {k: v for k, v in fresh["readings"].items() if k in kept["readings"]}
+        if json.dumps(fresh, sort_keys=True) != json.dumps(kept, sort_keys=True):
+            differ.append(f"{cid}: here {fresh['reproduced']!r}, stored {kept['reproduced']!r}")
+    assert not stale, f"the stored ledger in {folder} is not this checkout's: " + "; ".join(stale[:10])
+    assert not differ, "evaluated again, these claims differ from the stored ledger: " + "; ".join(differ)
+
+
 def _wrong(claim: Claim, tol: Tolerance, expected: str):
     """A value that reverses the claim's agreement: far off the print if it agrees, the print if not."""
     disagrees = expected in ("discrepant", "inconsistent")

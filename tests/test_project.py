@@ -42,3 +42,22 @@ def test_hypothesis_is_derandomised_in_ci():
     assert settings.default.derandomize is want_ci
     ci = settings.get_profile("ci")
     assert ci.derandomize is True and ci.deadline is None
+
+
+def test_the_mutation_runs_name_test_files_that_exist():
+    """Each mutation package's tests (tools/mutation.py) are files of tests/: a misspelt name
+    would leave its package's mutants to the other files' tests and lower the score silently."""
+    import importlib.util
+    import sys
+
+    spec = importlib.util.spec_from_file_location("navcore_mutation_tool", ROOT / "tools" / "mutation.py")
+    mutation = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = mutation  # its dataclasses look their module up there
+    spec.loader.exec_module(mutation)
+    missing = [
+        f"{name}: {t}"
+        for name, pkg in mutation.PACKAGES.items()
+        for t in pkg.tests
+        if not (ROOT / "tests" / t).is_file()
+    ]
+    assert not missing, missing
