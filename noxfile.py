@@ -432,12 +432,14 @@ def layout(session: nox.Session) -> None:
     """The layout gate on a built HTML book, measured in headless Chromium (tools/check_layout.py).
 
     Loads every page at 1400 px and 420 px once MathJax has typeset it and fails on a display
-    equation cut by its box or an output table wider than the text column, unless the item is
+    equation cut by its box, an output table wider than the text column or a cell of a
+    fixed-width table (the ledger's) whose content runs past it, unless the item is
     in ``tools/layout_allowlist.json`` with its reason; an entry that no longer
     overflows fails too, so the list only shrinks. Builds the HTML book first (from the
     execution cache) unless ``_build/html`` exists; ``-- --list`` prints every overflow,
-    ``-- --width 420`` measures one width. Needs Chromium (installed with apt-get when run as
-    root) and about five minutes: a developer's session, ``.ci/run`` does not run it.
+    ``-- --width 420`` measures one width, ``-- --tabs N`` sets how many pages load at once.
+    Needs Chromium (installed with apt-get when run as root) and about two minutes on two
+    busy cores (26 s of CPU); ``.ci/run`` runs it on the book it has built.
     """
     _install(session)
     if not (HTML / "index.html").exists():

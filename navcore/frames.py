@@ -17,7 +17,7 @@ Conventions
   product, and the quaternion of ``C_bn`` satisfies :math:`v^n = q \otimes v^b \otimes q^*`.
   A rotation by angle :math:`\alpha` about unit axis :math:`u` is
   :math:`q = [\cos(\alpha/2), u \sin(\alpha/2)]`. A function that rotates with a quaternion
-  requires it to be a unit quaternion (to within 1e-6); :func:`quat_multiply`,
+  requires it to be a unit quaternion (to within :math:`10^{-6}`); :func:`quat_multiply`,
   :func:`quat_conjugate` and :func:`quat_normalize` are algebra and take any.
 - ``skew(v) @ w == cross(v, w)``.
 - Angles in radians unless ``deg=True`` (then every angle in and out is in degrees);
@@ -120,7 +120,7 @@ class Ellipsoid:
     f : float
         Flattening ``(a - b) / a``, in [0, 1) (0: a sphere of radius ``a``).
     gm : float
-        Geocentric gravitational constant GM, m^3/s^2 (``> 0``; for normal gravity).
+        Geocentric gravitational constant GM, m³/s² (``> 0``; for normal gravity).
     omega : float
         Angular velocity of rotation, rad/s (``>= 0``; for normal gravity).
 
@@ -195,7 +195,7 @@ def _mtv(C: Array, v: Array) -> Array:
 
 
 def skew(v: ArrayLike) -> Array:
-    """Skew-symmetric (cross-product) matrix: ``skew(v) @ w == np.cross(v, w)``.
+    r"""Skew-symmetric (cross-product) matrix: ``skew(v) @ w == np.cross(v, w)``.
 
     Parameters
     ----------
@@ -205,7 +205,7 @@ def skew(v: ArrayLike) -> Array:
     Returns
     -------
     (..., 3, 3) ndarray
-        ``[v x]`` for each vector.
+        :math:`[v\times]` for each vector.
 
     Raises
     ------
@@ -331,14 +331,15 @@ def rot_z(angle: ArrayLike, *, deg: bool = False) -> Array:
 
 
 def dcm_from_euler(roll: ArrayLike, pitch: ArrayLike, yaw: ArrayLike, *, deg: bool = False) -> Array:
-    """``C_bn = Rz(yaw) Ry(pitch) Rx(roll)`` (body to NED), for single angles or stacks.
+    r""":math:`C_b^n = R_z(\text{yaw})\, R_y(\text{pitch})\, R_x(\text{roll})` (body to NED), for single
+    angles or stacks.
 
     Parameters
     ----------
     roll : float or array
         Roll, rad (deg with ``deg=True``).
     pitch : float or array
-        Pitch, rad, in [-pi/2, pi/2] (deg with ``deg=True``).
+        Pitch, rad, in :math:`[-\pi/2, \pi/2]` (deg with ``deg=True``).
     yaw : float or array
         Yaw (heading), rad (deg with ``deg=True``).
     deg : bool, default False
@@ -368,9 +369,9 @@ def dcm_from_euler(roll: ArrayLike, pitch: ArrayLike, yaw: ArrayLike, *, deg: bo
 
 
 def euler_from_dcm(C_bn: ArrayLike, *, deg: bool = False) -> tuple[Any, Any, Any]:
-    """Roll, pitch, yaw of body-to-NED matrices (inverse of :func:`dcm_from_euler`).
+    r"""Roll, pitch, yaw of body-to-NED matrices (inverse of :func:`dcm_from_euler`).
 
-    Pitch is in [-pi/2, pi/2]; roll and yaw in (-pi, pi].
+    Pitch is in :math:`[-\pi/2, \pi/2]`; roll and yaw in :math:`(-\pi, \pi]`.
 
     Parameters
     ----------
@@ -551,7 +552,7 @@ def quat_from_rotvec(rotvec: ArrayLike) -> Array:
 
 
 def rotvec_from_quat(q: ArrayLike) -> Array:
-    """Rotation vector of a unit quaternion (angle in [0, pi]).
+    r"""Rotation vector of a unit quaternion (angle in :math:`[0, \pi]`).
 
     Parameters
     ----------
@@ -648,7 +649,7 @@ def quat_from_dcm(C: ArrayLike) -> Array:
 
     References
     ----------
-    S. W. Shepperd, "Quaternion from rotation matrix", J. Guidance and Control 1(3) (1978).
+    Shepperd, S. W., "Quaternion from rotation matrix", J. Guidance and Control 1(3) (1978).
 
     Examples
     --------
@@ -681,14 +682,14 @@ def quat_from_dcm(C: ArrayLike) -> Array:
 
 
 def quat_from_euler(roll: ArrayLike, pitch: ArrayLike, yaw: ArrayLike, *, deg: bool = False) -> Array:
-    """Quaternion of ``dcm_from_euler(roll, pitch, yaw)``, for single angles or stacks.
+    r"""Quaternion of ``dcm_from_euler(roll, pitch, yaw)``, for single angles or stacks.
 
     Parameters
     ----------
     roll : float or array
         Roll, rad (deg with ``deg=True``).
     pitch : float or array
-        Pitch, rad, in [-pi/2, pi/2] (deg with ``deg=True``).
+        Pitch, rad, in :math:`[-\pi/2, \pi/2]` (deg with ``deg=True``).
     yaw : float or array
         Yaw, rad (deg with ``deg=True``).
     deg : bool, default False
@@ -922,7 +923,7 @@ def _geodetic(r: Array, ell: Ellipsoid) -> tuple[Array, Array, Array]:
 def ecef_to_geodetic(
     r_e: ArrayLike, *, deg: bool = False, ellipsoid: Ellipsoid = WGS84
 ) -> tuple[Array, Array, Array]:
-    """Geodetic latitude, longitude, height of ECEF position(s) ``(..., 3)`` (Zhu 1994).
+    r"""Geodetic latitude, longitude, height of ECEF position(s) ``(..., 3)`` (Zhu 1994).
 
     Parameters
     ----------
@@ -938,7 +939,7 @@ def ecef_to_geodetic(
     lat : ndarray
         Geodetic latitude, rad (deg with ``deg=True``).
     lon : ndarray
-        Longitude in (-pi, pi], rad (deg with ``deg=True``).
+        Longitude in :math:`(-\pi, \pi]`, rad (deg with ``deg=True``).
     h : ndarray
         Height above the ellipsoid, m.
 
@@ -950,7 +951,7 @@ def ecef_to_geodetic(
 
     References
     ----------
-    J. Zhu, "Conversion of Earth-centered Earth-fixed coordinates to geodetic coordinates",
+    Zhu, J., "Conversion of Earth-centered Earth-fixed coordinates to geodetic coordinates",
     IEEE Trans. Aerospace and Electronic Systems 30(3) (1994).
 
     Examples
@@ -1470,7 +1471,7 @@ def _enu_of_aer(az: Array, el: Array, srange: Array) -> Array:
 
 
 def enu_to_aer(r_enu: ArrayLike, *, deg: bool = False) -> tuple[Array, Array, Array]:
-    """Azimuth, elevation and slant range of ENU vector(s).
+    r"""Azimuth, elevation and slant range of ENU vector(s).
 
     Parameters
     ----------
@@ -1482,7 +1483,7 @@ def enu_to_aer(r_enu: ArrayLike, *, deg: bool = False) -> tuple[Array, Array, Ar
     Returns
     -------
     az : ndarray
-        Azimuth from north towards east, in [0, 2 pi) rad (deg with ``deg=True``).
+        Azimuth from north towards east, in :math:`[0, 2\pi)` rad (deg with ``deg=True``).
     el : ndarray
         Elevation above the horizontal plane, rad (deg).
     srange : ndarray
@@ -1536,7 +1537,7 @@ def aer_to_enu(az: ArrayLike, el: ArrayLike, srange: ArrayLike, *, deg: bool = F
 
 
 def ned_to_aer(r_n: ArrayLike, *, deg: bool = False) -> tuple[Array, Array, Array]:
-    """Azimuth, elevation and slant range of NED vector(s).
+    r"""Azimuth, elevation and slant range of NED vector(s).
 
     Parameters
     ----------
@@ -1548,7 +1549,7 @@ def ned_to_aer(r_n: ArrayLike, *, deg: bool = False) -> tuple[Array, Array, Arra
     Returns
     -------
     az : ndarray
-        Azimuth from north towards east, in [0, 2 pi) rad (deg with ``deg=True``).
+        Azimuth from north towards east, in :math:`[0, 2\pi)` rad (deg with ``deg=True``).
     el : ndarray
         Elevation above the horizontal plane, rad (deg).
     srange : ndarray
@@ -1610,7 +1611,7 @@ def ecef_to_aer(
     deg: bool = False,
     ellipsoid: Ellipsoid = WGS84,
 ) -> tuple[Array, Array, Array]:
-    """Azimuth, elevation, slant range of ECEF point(s) seen from geodetic observer(s).
+    r"""Azimuth, elevation, slant range of ECEF point(s) seen from geodetic observer(s).
 
     Parameters
     ----------
@@ -1628,7 +1629,7 @@ def ecef_to_aer(
     Returns
     -------
     az : ndarray
-        Azimuth from north towards east, in [0, 2 pi) rad (deg with ``deg=True``).
+        Azimuth from north towards east, in :math:`[0, 2\pi)` rad (deg with ``deg=True``).
     el : ndarray
         Elevation above the observer's local horizontal plane, rad (deg).
     srange : ndarray
@@ -1712,7 +1713,7 @@ def geodetic_to_aer(
     deg: bool = False,
     ellipsoid: Ellipsoid = WGS84,
 ) -> tuple[Array, Array, Array]:
-    """Azimuth, elevation, slant range of geodetic point(s) seen from geodetic observer(s).
+    r"""Azimuth, elevation, slant range of geodetic point(s) seen from geodetic observer(s).
 
     Parameters
     ----------
@@ -1732,7 +1733,7 @@ def geodetic_to_aer(
     Returns
     -------
     az : ndarray
-        Azimuth from north towards east, in [0, 2 pi) rad (deg with ``deg=True``).
+        Azimuth from north towards east, in :math:`[0, 2\pi)` rad (deg with ``deg=True``).
     el : ndarray
         Elevation, rad (deg).
     srange : ndarray

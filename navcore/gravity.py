@@ -36,12 +36,12 @@ eccentricity :math:`e' = \sqrt{a^2 - b^2}/b`,
 
     \gamma_p = \frac{GM}{a^2}\left(1 + \frac{m}{3}\frac{e' q_0'}{q_0}\right).
 
-WGS-84 gives 9.7803253359 m/s^2 at the equator and 9.8321849378 m/s^2 at the poles
-(TR8350.2, Table 3.4), against the standard gravity 9.80665 m/s^2 (``navcore.units.G0``): a
+WGS-84 gives 9.7803253359 m/s² at the equator and 9.8321849378 m/s² at the poles
+(TR8350.2, Table 3.4), against the standard gravity 9.80665 m/s² (``navcore.units.G0``): a
 constant g is 2.7 mg too large at the equator and 2.6 mg too small at the poles.
 
 The models of navcore take the gravity magnitude as an argument (``g``); their default is the
-constant G0, which is what the papers assume. Pass ``g=normal_gravity(lat, h)`` for the
+constant ``G0``, which is what the papers assume. Pass ``g=normal_gravity(lat, h)`` for the
 WGS-84 value at the flight condition.
 
 References
@@ -75,9 +75,9 @@ def normal_gravity_at_equator_and_pole(ellipsoid: Ellipsoid = WGS84) -> tuple[fl
     Returns
     -------
     gamma_e : float
-        Normal gravity at the equator, m/s^2.
+        Normal gravity at the equator, m/s².
     gamma_p : float
-        Normal gravity at the poles, m/s^2.
+        Normal gravity at the poles, m/s².
 
     Raises
     ------
@@ -118,7 +118,7 @@ def _terms(lat: Array, ell: Ellipsoid) -> tuple[Array, Array, float, Array]:
 def normal_gravity(
     lat: ArrayLike, h: ArrayLike = 0.0, *, deg: bool = False, ellipsoid: Ellipsoid = WGS84
 ) -> Array:
-    """Magnitude of normal gravity at geodetic latitude ``lat`` and height ``h``.
+    r"""Magnitude of normal gravity at geodetic latitude ``lat`` and height ``h``.
 
     Parameters
     ----------
@@ -126,7 +126,7 @@ def normal_gravity(
         Geodetic latitude, rad (deg with ``deg=True``).
     h : float or array, default 0.0
         Height above the ellipsoid, m, in [-20 km, 100 km] (the second-order expansion in
-        ``h / a``; its neglected third-order term is below 4e-6 of g at 100 km).
+        ``h / a``; its neglected third-order term is below :math:`4 \times 10^{-6}` of g at 100 km).
     deg : bool, default False
         The latitude is in degrees.
     ellipsoid : Ellipsoid, default WGS84
@@ -135,7 +135,7 @@ def normal_gravity(
     Returns
     -------
     ndarray
-        Normal gravity, m/s^2 (broadcast shape of ``lat`` and ``h``; 0-d for scalars).
+        Normal gravity, m/s² (broadcast shape of ``lat`` and ``h``; 0-d for scalars).
 
     Raises
     ------
@@ -161,7 +161,8 @@ def normal_gravity(
 def free_air_gradient(
     lat: ArrayLike, h: ArrayLike = 0.0, *, deg: bool = False, ellipsoid: Ellipsoid = WGS84
 ) -> Array:
-    """Vertical gradient of normal gravity ``d gamma / d h`` (negative: gravity falls with height).
+    r"""Vertical gradient of normal gravity :math:`\partial\gamma / \partial h` (negative: gravity
+    falls with height).
 
     Parameters
     ----------
@@ -177,7 +178,7 @@ def free_air_gradient(
     Returns
     -------
     ndarray
-        Gradient, 1/s^2 (m/s^2 per m); about -3.086e-6 (the free-air gradient of
+        Gradient, 1/s² (m/s² per m); about :math:`-3.086 \times 10^{-6}` (the free-air gradient of
         0.3086 mGal/m).
 
     Raises

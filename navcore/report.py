@@ -668,7 +668,8 @@ def build_report(
         v_blocks.append(
             "The claims the ledger could not settle: inconsistent (the printed value lies outside "
             "everything the assumed inputs allow) or not reproducible (the band the assumptions "
-            "span is too wide to decide, or nothing could be computed), each with why."
+            "span is too wide to decide, the search over more than six assumed inputs cannot rule "
+            "the printed value out, or nothing could be computed), each with why."
         )
         v_blocks.append(_frame_table(unresolved))
     else:

@@ -2,14 +2,14 @@
 
 Every conversion factor multiplies a value in the named unit to give SI::
 
-    sigma_a = 100 * MICRO_G          # 100 micro-g -> m/s^2
+    sigma_a = 100 * MICRO_G          # 100 micro-g -> m/s²
     drift = 0.01 * DEG_PER_H         # 0.01 deg/h -> rad/s
     x_nmi = x_m / NMI                # metres -> nautical miles
 
 Constants
 ---------
 C : speed of light in vacuum, m/s (exact, SI definition).
-G0 : standard gravity, m/s^2 (exact, CGPM 1901).
+G0 : standard gravity, m/s² (exact, CGPM 1901).
 OMEGA_EARTH : Earth rotation rate, rad/s (WGS-84).
 WGS84_A, WGS84_F, WGS84_E2 : WGS-84 semi-major axis (m), flattening and first
 eccentricity squared.
@@ -123,7 +123,7 @@ M_PER_S_PER_SQRT_H = 1.0 / math.sqrt(HOUR)  # velocity random walk -> m/s/sqrt(s
 
 
 # --- decibels --------------------------------------------------------------------------
-#: Largest magnitude (dB) a decibel value may have: 10**(3000/10) is near the largest double.
+#: Largest magnitude (dB) a decibel value may have: :math:`10^{3000/10}` is near the largest double.
 MAX_DB = 3000.0
 
 

@@ -171,3 +171,23 @@ def test_class_fields_documented_only_shrink():
     done = sorted(todo - lacking)
     assert not new, f"public classes with undocumented fields (add Attributes): {new}"
     assert not done, f"fields documented now, remove from {FIELDS_TODO.name}: {done}"
+
+
+def test_no_reference_entry_opens_with_an_initial():
+    """A References entry that opens with an initial ("N. E. Wu and ...") is read by reST as an
+    enumerated list item labelled "N." (the PDF printed "N." apart from "E. Wu"): the surname
+    goes first. Oracle: docutils' own reading of such a line, checked on a hand-written case."""
+    from docutils.core import publish_doctree
+
+    tree = publish_doctree('N. E. Wu and M. L. Fowler, "A title".', settings_overrides={"report_level": 5})
+    assert tree.children[0].tagname == "enumerated_list"  # what the check below guards against
+    opens_with_initial = re.compile(r"^\s*[A-Z]\. ")
+    found = []
+    for path in sorted((ROOT / "navcore").rglob("*.py")):
+        lines = path.read_text().splitlines()
+        for i, line in enumerate(lines[:-2]):
+            if line.strip() == "References" and set(lines[i + 1].strip()) == {"-"}:
+                entry = lines[i + 2]
+                if opens_with_initial.match(entry):
+                    found.append(f"{path.relative_to(ROOT)}:{i + 3}: {entry.strip()}")
+    assert not found, found

@@ -3033,41 +3033,15 @@ ORACLES += [
     Oracle(
         "atc10-30-s123-printed-residual-pct", _atc10_s123_printed_residual_pct, rtol=1e-6, why="SVD in ECEF"
     ),
-    Oracle(
-        "atc10-32-col5-corrected-I-5",
-        lambda: _atc10_col5_corrected("I", 5.0),
-        rtol=1e-8,
-        why="Table 4.3 by hand, SVD invariant",
-    ),
-    Oracle(
-        "atc10-32-col5-corrected-I-50",
-        lambda: _atc10_col5_corrected("I", 50.0),
-        rtol=1e-8,
-        why="Table 4.3 by hand, SVD invariant",
-    ),
-    Oracle(
-        "atc10-32-col5-corrected-I-500",
-        lambda: _atc10_col5_corrected("I", 500.0),
-        rtol=1e-8,
-        why="Table 4.3 by hand, SVD invariant",
-    ),
-    Oracle(
-        "atc10-32-col5-corrected-II-5",
-        lambda: _atc10_col5_corrected("II", 5.0),
-        rtol=1e-8,
-        why="Table 4.3 by hand, SVD invariant",
-    ),
-    Oracle(
-        "atc10-32-col5-corrected-II-50",
-        lambda: _atc10_col5_corrected("II", 50.0),
-        rtol=1e-8,
-        why="Table 4.3 by hand, SVD invariant",
-    ),
-    Oracle(
-        "atc10-32-col5-corrected-II-500",
-        lambda: _atc10_col5_corrected("II", 500.0),
-        rtol=1e-8,
-        why="Table 4.3 by hand, SVD invariant",
+    *(
+        Oracle(
+            f"atc10-32-col5-corrected-{example}-{sigma0:g}",
+            lambda example=example, sigma0=sigma0: _atc10_col5_corrected(example, sigma0),
+            rtol=1e-8,
+            why="Table 4.3 by hand, SVD invariant",
+        )
+        for example in ("I", "II")
+        for sigma0 in (5.0, 50.0, 500.0)
     ),
     Oracle("atc10-21-convexity-limit", _convexity_limit, rtol=1e-9, why="sympy's derivatives, brentq"),
     # the bounded maximisation is flat at its optimum (error ~ xtol^2); the binomial sums to K = 4000

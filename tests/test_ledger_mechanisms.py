@@ -10,7 +10,8 @@ verdict follows can be counted by hand.
 
 * the band's corners: six assumed inputs where only one off-diagonal corner agrees (every
   corner is run up to six inputs); seven inputs fall back to the documented four corners and
-  the two steepest ones;
+  the two steepest ones, and a printed value those runs miss but the inputs' separate effects
+  reach is undecided (not-reproducible);
 * the verdict rule with an admissible and a plausible-range input read together;
 * the input cache: a cached function reading two inputs of which one is overridden (the
   overridden value is used, and both reads are recorded, on a miss and on a hit); a cached
@@ -132,6 +133,85 @@ def test_seven_assumed_inputs_fall_back_to_four_corners_and_the_steepest_two():
     assert runs[-6:] == corners
     assert len(runs) == 1 + 7 * 2 + 6
     assert ev.band == pytest.approx((7.0, 14.0))
+
+
+def _capped_sum() -> float:
+    """10 plus seven inputs in [0, 1] summed and capped at 5: one at a time each moves the value
+    from 13 to 14 (nominal 13.5), so their separate effects add up to 10 to 17, while no run
+    exceeds 15."""
+    return 10.0 + min(sum(getattr(IN, f"x{i}") for i in range(7)), 5.0)
+
+
+@pytest.mark.parametrize(
+    ("published", "expected", "envelope"),
+    [
+        (14.5, "consistent", None),  # inside the band the runs reach (10 to 15)
+        (16.0, "not-reproducible", (10.0, 17.0)),  # beyond the runs, within the separate effects' sum
+        (17.6, "inconsistent", None),  # beyond both (17 + the tolerance 0.5 < 17.6)
+    ],
+)
+def test_beyond_six_inputs_a_value_the_runs_miss_but_the_effects_reach_is_undecided(
+    published, expected, envelope
+):
+    """Beyond six inputs the corners are a sample (core docstring, "Beyond six inputs"). Oracle:
+    the rule by hand for 10 + min(x0 + ... + x6, 5): the runs reach 10 to 15 (all low: 10; the
+    steepest corner, all high: capped at 15), the envelope is 13.5 - 7 x 0.5 to 13.5 + 7 x 0.5 =
+    10 to 17; a printed 16 lies between them (not-reproducible, and the note gives the envelope),
+    17.6 beyond both (inconsistent)."""
+    ev = evaluate(make(published=published, compute=_capped_sum, expected_status=expected))
+    assert ev.status == expected, ev.detail
+    assert ev.band == pytest.approx((10.0, 15.0))
+    assert ev.envelope == (pytest.approx(envelope) if envelope else None)
+    assert not ev.band_too_wide
+    assert ("separate effects add up to 10 to 17 m" in ev.note()) is (envelope is not None)
+
+
+def test_beyond_six_inputs_another_readings_envelope_leaves_it_undecided():
+    """The rule weighs every reading: x scale, read as 1 (used) or 10 (the other). Oracle by
+    hand: the used reading's runs and envelope (10 to 15, 10 to 17) miss a printed 160; the other
+    reading's runs reach 100 to 150 and its envelope 100 to 170, which holds it: not-reproducible,
+    the envelope and the note are the other reading's."""
+    ev = evaluate(
+        make(published=160.0, compute=lambda: IN.scale * _capped_sum(), expected_status="not-reproducible")
+    )
+    assert ev.status == "not-reproducible", ev.detail
+    assert ev.envelope == pytest.approx((100.0, 170.0))
+    assert [r["undecided"] for r in ev.readings] == [False, True]
+    assert "With the scale of the band read as the other reading (10), the runs over the 7" in ev.note()
+
+
+def test_six_inputs_run_every_corner_and_take_no_envelope():
+    """Up to six inputs every corner is run, so a value beyond the band is out of reach. Oracle:
+    10 + min(x0 + ... + x5, 4) by hand: band 10 to 14, separate effects 10 to 16; a printed 15
+    is inconsistent (the envelope is not used)."""
+    ev = evaluate(
+        make(
+            published=15.0,
+            compute=lambda: 10.0 + min(sum(getattr(IN, f"x{i}") for i in range(6)), 4.0),
+            expected_status="inconsistent",
+        )
+    )
+    assert ev.status == "inconsistent" and ev.envelope is None
+    assert ev.band == pytest.approx((10.0, 14.0))
+
+
+def test_the_additive_envelope_only_widens_when_an_input_is_added():
+    """The property that makes the rule stable under new declarations (issue 27): adding an
+    input's one-at-a-time row adds a non-negative rise and fall. Oracle: interval inclusion
+    over random rows (seeded)."""
+    import numpy as np
+
+    from navcore.ledger.core import additive_envelope
+
+    rng = np.random.default_rng(27)
+    for _ in range(200):
+        v0 = float(rng.normal())
+        rows = [
+            (f"x{i}", tuple((p, v0 + float(d)) for p, d in enumerate(rng.normal(size=3)))) for i in range(8)
+        ]
+        lo7, hi7 = additive_envelope(v0, rows[:7])
+        lo8, hi8 = additive_envelope(v0, rows)
+        assert lo8 <= lo7 <= v0 <= hi7 <= hi8
 
 
 def test_the_steepest_corners_are_skipped_for_a_statement():

@@ -1,6 +1,6 @@
 """No formula left as plain text in what a reader sees of the registry (issue 32, item 7).
 
-Claim quantities, notes and tolerance reasons, errata findings and evidence, and input
+Claim quantities, notes and tolerance reasons, errata locators, findings and evidence, and input
 quantities and reasons render in the claim rows, the ledger, the errata page and the
 Assumptions page, where ``$...$`` is set as math (:func:`navcore.ledger.render.html_text`,
 :func:`~navcore.ledger.render.tex_text`). Outside those spans, e-notation (``1e-6``), flat
@@ -84,7 +84,7 @@ def _registry_texts() -> list[tuple[str, str, str]]:
             if tol is not None and not callable(tol):  # a callable tolerance is made at evaluation
                 texts.append((c.id, name, tol.reason))
     for e in ledger.errata():
-        texts += [(e.id, f, getattr(e, f)) for f in ("finding", "evidence", "no_claim_reason")]
+        texts += [(e.id, f, getattr(e, f)) for f in ("locator", "finding", "evidence", "no_claim_reason")]
     inputs = all_inputs()
     assert len(inputs) > 100  # every paper module's declarations, loaded by ledger.claims()
     texts += [(i.name, f, getattr(i, f) or "") for i in inputs for f in ("quantity", "reason")]

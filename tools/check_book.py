@@ -158,7 +158,7 @@ def check_prose(root: Path) -> list[str]:
 # change history, regression pins and test bookkeeping: for developers (git, tests), not readers
 DEVELOPER_WORDING = re.compile(
     r"[Vv]erdict changed|\bwas (?:discrepant|inconsistent|consistent|reproduced|not-reproducible)\b"
-    r"|expected_status|\bOracle:|caught by the oracle|checked by the library's tests"
+    r"|expected_status|\bOracle:|caught by the oracle|checked by the library's tests|\(tests?\)"
 )
 _SCRIPT_OR_STYLE = re.compile(r"<(style)\b.*?</\1>", re.S)
 

@@ -26,6 +26,9 @@
     timer = setTimeout(fit, 150);
   }
 
+  // the layout gate measures each width after running the fitting itself, not after a timer
+  window.navcoreFitMath = fit;
+
   function start() {
     if (window.MathJax && MathJax.startup && MathJax.startup.promise) {
       MathJax.startup.promise.then(fit);

@@ -1,13 +1,15 @@
-"""Detection theory.
+r"""Detection theory.
 
 Modules
 -------
 pulse_detection
-    threshold from Pfa, Pd from SNR for N pulses, coherent and noncoherent, Swerling 0-IV,
-    and the required SNR; the SNR convention of navcore (E/N0 per pulse) is stated there.
+    threshold from :math:`P_{fa}`, :math:`P_d` from SNR for :math:`N` pulses, coherent and
+    noncoherent, Swerling 0-IV, and the required SNR; the SNR convention of navcore
+    (:math:`E/N_0` per pulse) is stated there.
 neyman_pearson
     detection of a known signal in white Gaussian noise, in the log domain (ATC-10's
-    detection index d, which is sqrt(2 E/N0) in navcore's convention).
+    detection index :math:`d`, which is :math:`\sqrt{2 E/N_0}` in navcore's convention).
+
 jamming
     lower bounds on false and ambiguous aircraft locations under barrage jamming.
 antenna

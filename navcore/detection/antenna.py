@@ -1,8 +1,8 @@
-"""Parabolic-dish antenna relations for jammer hardware (ATC-10 Table 1.1).
+r"""Parabolic-dish antenna relations for jammer hardware (ATC-10 Table 1.1).
 
 The gain of a dish of diameter ``D`` with aperture efficiency ``eta`` at wavelength
-``lambda = c / f`` is ``G = eta (pi D / lambda)**2``; its half-power beamwidth is about
-``k lambda / D`` degrees with ``k = 70`` (a common rule for a tapered illumination). The
+:math:`\lambda = c / f` is :math:`G = \eta (\pi D / \lambda)^2`; its half-power beamwidth is about
+:math:`k \lambda / D` degrees with ``k = 70`` (a common rule for a tapered illumination). The
 radiated power needed for an effective radiated power ``ERP`` is ``ERP / G``.
 """
 
@@ -39,7 +39,7 @@ def _efficiency(efficiency: float) -> float:
 
 @implements("ATC10 Table 1.1")
 def dish_gain(diameter_m: ArrayLike, frequency_hz: float, efficiency: float) -> FloatArray:
-    """Linear gain ``eta (pi D / lambda)**2`` of a parabolic dish.
+    r"""Linear gain :math:`\eta (\pi D / \lambda)^2` of a parabolic dish.
 
     Parameters
     ----------
@@ -79,7 +79,7 @@ def dish_gain(diameter_m: ArrayLike, frequency_hz: float, efficiency: float) -> 
 
 @implements("ATC10 Table 1.1")
 def dish_diameter(gain: ArrayLike, frequency_hz: float, efficiency: float) -> FloatArray:
-    """Diameter ``(lambda / pi) sqrt(G / eta)`` giving linear gain ``G``.
+    r"""Diameter :math:`(\lambda / \pi) \sqrt{G / \eta}` giving linear gain ``G``.
 
     Parameters
     ----------
@@ -118,7 +118,7 @@ def dish_diameter(gain: ArrayLike, frequency_hz: float, efficiency: float) -> Fl
 
 @implements("ATC10 Table 1.1")
 def dish_beamwidth_deg(diameter_m: ArrayLike, frequency_hz: float, factor_deg: float = 70.0) -> FloatArray:
-    """Half-power beamwidth ``factor_deg * lambda / D`` in degrees (70 by default).
+    r"""Half-power beamwidth :math:`k \lambda / D` in degrees, :math:`k` = ``factor_deg`` (70 by default).
 
     Parameters
     ----------
@@ -157,7 +157,7 @@ def dish_beamwidth_deg(diameter_m: ArrayLike, frequency_hz: float, factor_deg: f
 
 
 def beamwidth_from_gain_deg(gain: ArrayLike, constant_deg2: float = 27000.0) -> FloatArray:
-    """Pencil-beam rule ``theta = sqrt(C / G)`` degrees (``G ~ C / theta**2``).
+    r"""Pencil-beam rule ``theta = sqrt(C / G)`` degrees (:math:`G \approx C / \theta^2`).
 
     Parameters
     ----------

@@ -1,30 +1,38 @@
-"""Lower bounds on false and ambiguous aircraft locations under barrage jamming (ATC-10 Sec. 2).
+r"""Lower bounds on false and ambiguous aircraft locations under barrage jamming (ATC-10 Sec. 2).
 
-Four satellites receive each aircraft's pulse; each of ``4 N_T`` matched filters declares a
-pulse in a sample when it crosses a threshold set for a per-sample detection probability
-``p_d`` (false-alarm probability ``p_f``, :mod:`navcore.detection.neyman_pearson`). A
-*list* for aircraft ``i`` in one repetition segment is non-empty when a consistent
-quadruplet of declarations exists. Over ``K`` segments the first stage decides "aircraft
-present" when **more than** ``K t`` of the ``K`` lists are non-empty (ATC-10 Sec. 2.4,
-(A.11), (B.1)).
+Four satellites receive each aircraft's pulse; each of :math:`4 N_T` matched filters
+declares a pulse in a sample when it crosses a threshold set for a per-sample detection
+probability :math:`p_d` (false-alarm probability :math:`p_f`,
+:mod:`navcore.detection.neyman_pearson`). A *list* for aircraft :math:`i` in one repetition
+segment is non-empty when a consistent quadruplet of declarations exists. Over :math:`K`
+segments the first stage decides "aircraft present" when **more than** :math:`K t` of the
+:math:`K` lists are non-empty (ATC-10 Sec. 2.4, (A.11), (B.1)).
 
 Models, with their equations:
 
-* the Chernoff exponent of that rule, maximised over ``nu`` in closed form,
-  ``E(t, q) = D(t || q)`` for ``t < q`` and 0 otherwise, with ``q = p_d**4`` (App. A,
-  (A.12)-(A.18)), so ``P_DL = 1 - exp(-K E)`` (Eq. 2.4.2); at ``t = 0`` it is exactly
-  ``1 - (1 - q)**K``;
-* ``F(p_f) = [1 - (1 - p_f)**(2 B alpha)] [1 - (1 - p_f)**(4 B beta)]**3`` (B.6) and
-  ``G(p_f) = [1 - (1 - p_f)**(2 B alpha)] [1 - (1 - p_f)**n_v]**3`` with
-  ``n_v = (8 B / 3) v alpha / c`` (C.14);
-* ``N_FL / N_T = (1 - N/N_T) F**(K t + 1)`` (Eq. 2.5.5) and
-  ``N_ADL / N_T = 1/2 (N/N_T) P_DL G**(K - 1) F`` (Eq. 2.5.12 as corrected);
-* the jammer-to-signal ratio ``x = J / (P0 B tau)`` at which a bound reaches a level, and the
-  jammer ERP ``10 log10(x P0 tau B)`` dBW.
+* the Chernoff exponent of that rule, maximised over :math:`\nu` in closed form,
+  :math:`E(t, q) = D(t \,\|\, q)` for :math:`t < q` and 0 otherwise, with :math:`q = p_d^4`
+  (App. A, (A.12)-(A.18)), so :math:`P_{DL} = 1 - e^{-K E}` (Eq. 2.4.2); at :math:`t = 0` it
+  is exactly :math:`1 - (1 - q)^K`;
+* (B.6) and (C.14):
 
-All probabilities are carried as natural logarithms: ``(1 - p)**n`` with ``n = 2e7`` and
-``p = 1e-20`` and products of 999 factors stay exact where direct evaluation returns 0,
-1 or ``-inf``.
+  .. math::
+
+      F(p_f) &= [1 - (1 - p_f)^{2 B \alpha}] \\
+      &\quad \times [1 - (1 - p_f)^{4 B \beta}]^3, \\
+      G(p_f) &= [1 - (1 - p_f)^{2 B \alpha}] \\
+      &\quad \times [1 - (1 - p_f)^{n_v}]^3, \\
+      n_v &= \frac{8 B}{3} \frac{v \alpha}{c};
+
+* :math:`N_{FL} / N_T = (1 - N/N_T) F^{K t + 1}` (Eq. 2.5.5) and
+  :math:`N_{ADL} / N_T = \frac12 (N/N_T) P_{DL} G^{K - 1} F` (Eq. 2.5.12 as corrected);
+* the jammer-to-signal ratio :math:`x = J / (P_0 B \tau)` at which a bound reaches a level,
+  and the jammer ERP :math:`10 \log_{10}(x P_0 \tau B)` dBW.
+
+All probabilities are carried as natural logarithms: :math:`(1 - p)^n` with
+:math:`n = 2 \times 10^7` and :math:`p = 10^{-20}` and products of 999 factors stay exact
+where direct evaluation returns 0, 1 or ``-inf``.
+
 """
 
 from __future__ import annotations
@@ -80,7 +88,7 @@ _LOG_HUGE = 700.0  # above this ln u, e^-u is 0 and ln(1 - e^-u) = 0
 
 @dataclass(frozen=True)
 class SurveillanceGeometry:
-    """System parameters of the satellite multilateration surveillance (ATC-10 Sec. 2).
+    r"""System parameters of the satellite multilateration surveillance (ATC-10 Sec. 2).
 
     Every field is required: the paper's scenario is the preset
     ``navcore.papers.atc10_jamming.geometry()``, built from its published inputs.
@@ -98,7 +106,7 @@ class SurveillanceGeometry:
     airborne_fraction : float
         ``N / N_T``, the fraction of the ``N_T`` aircraft codes that are airborne.
     pulse_energy_j : float
-        Signal pulse energy ``E = P0 tau``.
+        Signal pulse energy :math:`E = P_0 \tau`.
     """
 
     bandwidth_hz: float
@@ -122,17 +130,18 @@ class SurveillanceGeometry:
 
     @property
     def samples_per_period(self) -> float:
-        """``2 B alpha``: samples in one repetition period (B.6)."""
+        r""":math:`2 B \alpha`: samples in one repetition period (B.6)."""
         return 2.0 * self.bandwidth_hz * self.repetition_s
 
     @property
     def samples_per_delay_window(self) -> float:
-        """``4 B beta``: samples in a window of radius ``beta`` (B.6)."""
+        r""":math:`4 B \beta`: samples in a window of radius ``beta`` (B.6)."""
         return 4.0 * self.bandwidth_hz * self.differential_delay_s
 
     @property
     def samples_per_track_window(self) -> float:
-        """``(8 B / 3) v alpha / c``: samples in a window of radius ``(2/3) v alpha / c`` (C.14).
+        r""":math:`(8 B / 3)\, v \alpha / c`: samples in a window of radius :math:`(2/3)\, v \alpha / c`
+        (C.14).
 
         Not an integer (23.86 for the paper's values); it is used as a real exponent.
         """
@@ -140,7 +149,7 @@ class SurveillanceGeometry:
 
     @property
     def energy_bandwidth_dbw(self) -> float:
-        """``10 log10(P0 tau B)`` in dBW: the ERP of a jammer at ``x = 1``."""
+        r""":math:`10 \log_{10}(P_0 \tau B)` in dBW: the ERP of a jammer at ``x = 1``."""
         return 10.0 * math.log10(self.pulse_energy_j * self.bandwidth_hz)
 
 
@@ -164,7 +173,7 @@ def log1mexp(a: ArrayLike) -> FloatArray:
 
     References
     ----------
-    M. Maechler, "Accurately Computing ``log(1 - exp(-|a|))``", R package Rmpfr vignette (2012).
+    Maechler, M., "Accurately Computing ``log(1 - exp(-|a|))``", R package Rmpfr vignette (2012).
 
     Examples
     --------
@@ -277,7 +286,7 @@ def binary_divergence(t: ArrayLike, q: ArrayLike) -> FloatArray:
 
 @implements("ATC10 A.15", "ATC10 A.16", "ATC10 A.17", "ATC10 A.18")
 def list_rule_exponent(t: ArrayLike, q: ArrayLike) -> FloatArray:
-    """``max_{nu >= 0} [nu (1 - t) - ln((1 - q) e^nu + q)]`` in closed form (ATC-10 (A.15)-(A.18)).
+    r""":math:`\max_{\nu \ge 0} [\nu (1 - t) - \ln((1 - q) e^\nu + q)]` in closed form (ATC-10 (A.15)-(A.18)).
 
     Equals ``D(t || q)`` when ``t < q`` and 0 when ``t >= q`` (the maximiser is then
     ``nu = 0`` and the Chernoff bound is vacuous). At ``t = 0`` it is ``-ln(1 - q)``.
@@ -315,7 +324,7 @@ def list_rule_exponent(t: ArrayLike, q: ArrayLike) -> FloatArray:
 
 
 def list_rule_optimal_nu(t: ArrayLike, q: ArrayLike) -> FloatArray:
-    """The maximising ``nu* = ln[(1 - t) q / (t (1 - q))]`` for ``0 < t < q``.
+    r"""The maximising :math:`\nu^* = \ln[(1 - t) q / (t (1 - q))]` for ``0 < t < q``.
 
     0 for ``t >= q`` and ``+inf`` at ``t = 0``.
 
@@ -329,7 +338,7 @@ def list_rule_optimal_nu(t: ArrayLike, q: ArrayLike) -> FloatArray:
     Returns
     -------
     ndarray
-        ``nu*`` (dimensionless).
+        :math:`\nu^*` (dimensionless).
 
     Raises
     ------
@@ -355,7 +364,7 @@ def list_rule_optimal_nu(t: ArrayLike, q: ArrayLike) -> FloatArray:
 
 @implements("ATC10 2.4.1", "ATC10 2.4.2")
 def log_detection_lower_bound(p_d: ArrayLike, k: int, t: ArrayLike = 0.0) -> FloatArray:
-    """``ln P_DL`` with ``P_DL = 1 - exp(-K E(t, p_d**4))`` (ATC-10 Eqs. 2.4.1-2.4.2, (A.17)).
+    r""":math:`\ln P_{DL}` with :math:`P_{DL} = 1 - \exp(-K E(t, p_d^4))` (ATC-10 Eqs. 2.4.1-2.4.2, (A.17)).
 
     ``P_DL`` lower-bounds the probability that more than ``K t`` of ``K`` lists are non-empty
     when the aircraft is present; at ``t = 0`` it equals that probability exactly.
@@ -372,7 +381,7 @@ def log_detection_lower_bound(p_d: ArrayLike, k: int, t: ArrayLike = 0.0) -> Flo
     Returns
     -------
     ndarray
-        ``ln P_DL``.
+        :math:`\ln P_{DL}`.
 
     Raises
     ------
@@ -397,7 +406,7 @@ def log_detection_lower_bound(p_d: ArrayLike, k: int, t: ArrayLike = 0.0) -> Flo
 
 @implements("ATC10 2.4.2")
 def detection_lower_bound(p_d: ArrayLike, k: int, t: ArrayLike = 0.0) -> FloatArray:
-    """``P_DL = 1 - exp(-K E(t, p_d**4))`` (ATC-10 Eq. 2.4.2); ``p_d**4`` for ``K = 1``.
+    r""":math:`P_{DL} = 1 - \exp(-K E(t, p_d^4))` (ATC-10 Eq. 2.4.2); ``p_d**4`` for ``K = 1``.
 
     Parameters
     ----------
@@ -474,9 +483,10 @@ def list_rule_detection_probability(q: ArrayLike, k: int, t: float = 0.0) -> Flo
 
 
 def empty_list_rule_detection_probability(q: ArrayLike, k: int, t: float = 0.0) -> FloatArray:
-    """The rule under the paper's literal (A.9)/(A.10): "H1 if at most ``K t`` lists are empty".
+    r"""The rule under the paper's literal (A.9)/(A.10): "H1 if at most ``K t`` lists are empty".
 
-    That is ``P(K_0 <= K t)`` with ``K_0 ~ Binomial(K, 1 - q)``. Kept to show that it is not the
+    That is :math:`P(K_0 \le K t)` with :math:`K_0 \sim \mathrm{Binomial}(K, 1 - q)`. Kept to show that it is
+    not the
     rule the bounds use (at ``t = 0`` it is ``q**K``).
 
     Parameters
@@ -514,10 +524,10 @@ def empty_list_rule_detection_probability(q: ArrayLike, k: int, t: float = 0.0) 
 
 @implements("ATC10 2.4.2")
 def list_probability_for_detection_bound(p_dl: float, k: int, t: float = 0.0) -> float:
-    """Per-list probability ``q = p_d**4`` at which ``P_DL`` of Eq. (2.4.2) equals ``p_dl``.
+    r"""Per-list probability ``q = p_d**4`` at which ``P_DL`` of Eq. (2.4.2) equals ``p_dl``.
 
     Closed form at ``t = 0``: ``q = 1 - (1 - P_DL)**(1/K)``; for ``t > 0`` the root of
-    ``K D(t || q) = -ln(1 - P_DL)`` on ``(t, 1)``.
+    :math:`K D(t \,\|\, q) = -\ln(1 - P_{DL})` on ``(t, 1)``.
 
     Parameters
     ----------
@@ -603,7 +613,7 @@ def _require_count(k: int) -> int:
 
 
 def log_false_list_factor(log_pf: ArrayLike, geometry: SurveillanceGeometry) -> FloatArray:
-    """``ln F(p_f)``, ``F = [1 - (1 - p_f)**(2 B alpha)] [1 - (1 - p_f)**(4 B beta)]**3`` (B.6).
+    r""":math:`\ln F(p_f)`, :math:`F = [1 - (1 - p_f)^{2 B \alpha}]\, [1 - (1 - p_f)^{4 B \beta}]^3` (B.6).
 
     ``F`` lower-bounds the probability that a list is non-empty from noise alone.
 
@@ -643,7 +653,7 @@ def log_false_list_factor(log_pf: ArrayLike, geometry: SurveillanceGeometry) -> 
 
 
 def log_ambiguous_list_factor(log_pf: ArrayLike, geometry: SurveillanceGeometry) -> FloatArray:
-    """``ln G(p_f)``, ``G = [1 - (1 - p_f)**(2 B alpha)] [1 - (1 - p_f)**n_v]**3`` (C.14).
+    r""":math:`\ln G(p_f)`, :math:`G = [1 - (1 - p_f)^{2 B \alpha}]\, [1 - (1 - p_f)^{n_v}]^3` (C.14).
 
     Parameters
     ----------
@@ -688,12 +698,12 @@ def _log_pf(jammer_ratio: ArrayLike, p_d: float) -> FloatArray:
 def log_false_location_bound(
     jammer_ratio: ArrayLike, p_d: float, k: int, t: float, geometry: SurveillanceGeometry
 ) -> FloatArray:
-    """``ln(N_FL / N_T) = ln(1 - N/N_T) + (K t + 1) ln F(p_f)`` (ATC-10 Eqs. 2.5.5, 2.8.3).
+    r""":math:`\ln(N_{FL} / N_T) = \ln(1 - N/N_T) + (K t + 1) \ln F(p_f)` (ATC-10 Eqs. 2.5.5, 2.8.3).
 
     Parameters
     ----------
     jammer_ratio : array_like
-        ``x = J / (P0 B tau)``, linear.
+        :math:`x = J / (P_0 B \tau)`, linear.
     p_d : float
         Per-sample detection probability the filters are designed for.
     k : int
@@ -735,14 +745,14 @@ def log_false_location_bound(
 def log_ambiguous_detection_bound(
     jammer_ratio: ArrayLike, p_d: float, k: int, t: float, geometry: SurveillanceGeometry
 ) -> FloatArray:
-    """``ln(N_ADL / N_T) = ln(N / (2 N_T)) + ln P_DL + (K - 1) ln G(p_f) + ln F(p_f)``.
+    r""":math:`\ln(N_{ADL} / N_T) = \ln(N / (2 N_T)) + \ln P_{DL} + (K - 1) \ln G(p_f) + \ln F(p_f)`.
 
-    ATC-10 Eqs. 2.5.12, 2.7.3, 2.8.4; ``P_DL = p_d**4`` at ``K = 1``.
+    ATC-10 Eqs. 2.5.12, 2.7.3, 2.8.4; :math:`P_{DL} = p_d^4` at :math:`K = 1`.
 
     Parameters
     ----------
     jammer_ratio : array_like
-        ``x = J / (P0 B tau)``, linear.
+        :math:`x = J / (P_0 B \tau)`, linear.
     p_d : float
         Per-sample detection probability the filters are designed for, in (0, 1).
     k : int
@@ -787,7 +797,7 @@ def log_ambiguous_detection_bound(
 
 
 def log_false_location_ceiling(p_d: float, k: int, t: float, geometry: SurveillanceGeometry) -> float:
-    """Limit of :func:`log_false_location_bound` as ``J -> inf`` (``p_f -> p_d``).
+    r"""Limit of :func:`log_false_location_bound` as ``J -> inf`` (:math:`p_f \to p_d`).
 
     Parameters
     ----------
@@ -828,7 +838,7 @@ def log_false_location_ceiling(p_d: float, k: int, t: float, geometry: Surveilla
 
 
 def log_ambiguous_detection_ceiling(p_d: float, k: int, t: float, geometry: SurveillanceGeometry) -> float:
-    """Limit of :func:`log_ambiguous_detection_bound` as ``J -> inf`` (``p_f -> p_d``).
+    r"""Limit of :func:`log_ambiguous_detection_bound` as ``J -> inf`` (:math:`p_f \to p_d`).
 
     Parameters
     ----------
@@ -886,7 +896,7 @@ def jammer_ratio_threshold_db(
     lower_db: float = -60.0,
     upper_db: float = 160.0,
 ) -> float:
-    """``10 log10(J / (P0 B tau))`` at which a bound reaches ``level * N_T``.
+    r""":math:`10 \log_{10}(J / (P_0 B \tau))` at which a bound reaches ``level * N_T``.
 
     Parameters
     ----------
@@ -954,14 +964,14 @@ def jammer_ratio_threshold_db(
 
 
 def jammer_erp_dbw(jammer_ratio_db: ArrayLike, pulse_energy_j: float, bandwidth_hz: float) -> FloatArray:
-    """Jammer ERP ``J`` in dBW from ``10 log10(J / (P0 tau B))`` (ATC-10 Sec. 2.7, Table 2.1).
+    r"""Jammer ERP ``J`` in dBW from :math:`10 \log_{10}(J / (P_0 \tau B))` (ATC-10 Sec. 2.7, Table 2.1).
 
     Parameters
     ----------
     jammer_ratio_db : array_like
-        ``10 log10(J / (P0 tau B))``, dB.
+        :math:`10 \log_{10}(J / (P_0 \tau B))`, dB.
     pulse_energy_j : float
-        Signal pulse energy ``P0 tau``, J (``> 0``).
+        Signal pulse energy :math:`P_0 \tau`, J (``> 0``).
     bandwidth_hz : float
         Bandwidth ``B``, Hz (``> 0``).
 

@@ -1,20 +1,23 @@
-"""Multiple-access noise at the output of a matched filter (ATC-10 Section 3.4, Appendix E).
+r"""Multiple-access noise at the output of a matched filter (ATC-10 Section 3.4, Appendix E).
 
-N aircraft transmit unit-energy signatures of duration tau once every alpha seconds, at
-independent, uniformly distributed arrival times. At a sampling instant, interferer j
-overlaps the matched filter of aircraft i with probability ``q = 2 tau / alpha`` and then
-contributes an amplitude drawn from its *amplitude density* C(x). The noise sample is the
-sum of the N - 1 gated contributions, so its cumulant generating function is
+:math:`N` aircraft transmit unit-energy signatures of duration :math:`\tau` once every
+:math:`\alpha` seconds, at independent, uniformly distributed arrival times. At a sampling
+instant, interferer :math:`j` overlaps the matched filter of aircraft :math:`i` with
+probability :math:`q = 2 \tau / \alpha` and then contributes an amplitude drawn from its
+*amplitude density* :math:`C(x)`. The noise sample is the sum of the :math:`N - 1` gated
+contributions, so its cumulant generating function is
 
-    mu(s) = (N - 1) ln((1 - q) + q M_C(s)),
+.. math::
 
-the logarithm of ATC-10 Eq. (3.4.6) with v = s / j. Everything here works with ``mu`` and
-its first two derivatives in the log domain; the ROC bounds of
+    \mu(s) = (N - 1) \ln\left((1 - q) + q M_C(s)\right),
+
+the logarithm of ATC-10 Eq. (3.4.6) with :math:`v = s / j`. Everything here works with
+:math:`\mu` and its first two derivatives in the log domain; the ROC bounds of
 :mod:`navcore.detection.roc_bounds` only need those.
 
-Amplitude densities are objects with ``log_mgf(s)``, ``dlog_mgf(s)`` (= M'/M),
-``d2_ratio(s)`` (= M''/M), ``moment(r)``, ``char_fn(v)`` and ``sample(rng, size)``. Four
-closed forms of equal second moment b are provided (two-point, uniform, triangular,
+Amplitude densities are objects with ``log_mgf(s)``, ``dlog_mgf(s)`` (:math:`= M'/M`),
+``d2_ratio(s)`` (:math:`= M''/M`), ``moment(r)``, ``char_fn(v)`` and ``sample(rng, size)``.
+Four closed forms of equal second moment :math:`b` are provided (two-point, uniform, triangular,
 Gaussian), a general point-mass density (which also represents a tabulated continuous
 density or an empirical sample), and a density given only by its log-MGF.
 """
@@ -171,7 +174,8 @@ class PointMassDensity:
 
 @implements("ATC10 3.7.1")
 def two_point_density(b: float) -> PointMassDensity:
-    """The quasi-optimal density: masses 1/2 at +-sqrt(b) (ATC-10 Eq. 3.7.1 with ``b = p/((N-1)q)``).
+    r"""The quasi-optimal density: masses 1/2 at :math:`\pm\sqrt{b}` (ATC-10 Eq. 3.7.1 with
+    :math:`b = p/((N-1)q)`).
 
     Parameters
     ----------
@@ -251,7 +255,7 @@ def tabulated_density(
 
 @dataclass(frozen=True)
 class UniformDensity:
-    """Uniform amplitude density on [-sqrt(3b), sqrt(3b)] (second moment b).
+    r"""Uniform amplitude density on :math:`[-\sqrt{3b}, \sqrt{3b}]` (second moment :math:`b`).
 
     Attributes
     ----------
@@ -298,7 +302,8 @@ class UniformDensity:
 
 @dataclass(frozen=True)
 class TriangularDensity:
-    """Triangular density on [-sqrt(6b), sqrt(6b)]: the sum of two uniforms of second moment b/2.
+    r"""Triangular density on :math:`[-\sqrt{6b}, \sqrt{6b}]`: the sum of two uniforms of second
+    moment :math:`b/2`.
 
     Attributes
     ----------
@@ -345,7 +350,7 @@ class TriangularDensity:
 
 @dataclass(frozen=True)
 class GaussianDensity:
-    """Gaussian amplitude density N(0, b).
+    """Gaussian amplitude density :math:`N(0, b)`.
 
     Attributes
     ----------
@@ -433,17 +438,18 @@ class LogMGFDensity:
 
 @dataclass(frozen=True)
 class MultipleAccessNoise:
-    """The multiple-access noise sample n_i(t) for a common amplitude density (ATC-10 Sec. 3.4).
+    r"""The multiple-access noise sample :math:`n_i(t)` for a common amplitude density (ATC-10
+    Sec. 3.4).
 
     Parameters
     ----------
     n_aircraft : int
-        N, the number of aircraft; N - 1 of them interfere.
+        :math:`N`, the number of aircraft; :math:`N - 1` of them interfere.
     tau_over_alpha : float
         Signature duration over repetition period; an interferer overlaps the sample with
-        probability ``q = 2 tau/alpha`` (Eq. 3.4.4).
+        probability :math:`q = 2 \tau/\alpha` (Eq. 3.4.4).
     density : amplitude density
-        The common C(x) of Eq. (3.3.8).
+        The common :math:`C(x)` of Eq. (3.3.8).
     """
 
     n_aircraft: int
@@ -457,7 +463,7 @@ class MultipleAccessNoise:
 
     @property
     def q(self) -> float:
-        """Overlap probability 2 tau/alpha."""
+        r"""Overlap probability :math:`2 \tau/\alpha`."""
         return 2.0 * self.tau_over_alpha
 
     @property
@@ -470,33 +476,35 @@ class MultipleAccessNoise:
         return k1, np.exp(np.log(self.q) + lm - k1)
 
     def cgf(self, s: ArrayLike) -> FloatArray:
-        """mu(s) = ln E exp(s n) = (N-1) ln((1-q) + q M_C(s)); ATC-10 Eq. (3.4.6) at v = s/j."""
+        r""":math:`\mu(s) = \ln E e^{s n} = (N-1) \ln((1-q) + q M_C(s))`; ATC-10 Eq. (3.4.6) at
+        :math:`v = s/j`."""
         return self.n_interferers * self._weight(s)[0]
 
     def cgf_d1(self, s: ArrayLike) -> FloatArray:
-        """mu'(s), the mean of the tilted noise."""
+        r""":math:`\mu'(s)`, the mean of the tilted noise."""
         w = self._weight(s)[1]
         return self.n_interferers * w * self.density.dlog_mgf(s)
 
     def cgf_d2(self, s: ArrayLike) -> FloatArray:
-        """mu''(s) > 0, the variance of the tilted noise."""
+        r""":math:`\mu''(s) > 0`, the variance of the tilted noise."""
         w = self._weight(s)[1]
         r1 = self.density.dlog_mgf(s)
         return self.n_interferers * (w * self.density.d2_ratio(s) - (w * r1) ** 2)
 
     def char_fn(self, v: ArrayLike) -> NDArray[np.complex128]:
-        """M_i(v) = E exp(j v n), ATC-10 Eq. (3.4.6)."""
+        """:math:`M_i(v) = E e^{j v n}`, ATC-10 Eq. (3.4.6)."""
         phi = np.asarray(self.density.char_fn(v), dtype=complex)
         return np.exp(self.n_interferers * np.log((1.0 - self.q) + self.q * phi))
 
     @property
     def mean(self) -> float:
-        """E(n), Eq. (3.4.9)."""
+        """:math:`E(n)`, Eq. (3.4.9)."""
         return self.n_interferers * self.q * self.density.moment(1)
 
     @property
     def power(self) -> float:
-        """E(n^2), Eq. (3.4.10); equals (N-1) q b for a symmetric C (Eq. 3.4.13)."""
+        """:math:`E(n^2)`, Eq. (3.4.10); equals :math:`(N-1) q b` for a symmetric :math:`C`
+        (Eq. 3.4.13)."""
         m1 = self.density.moment(1)
         m2 = self.density.moment(2)
         k = self.n_interferers
@@ -504,17 +512,19 @@ class MultipleAccessNoise:
 
     @property
     def gaussian_limit_variance(self) -> float:
-        """N (2 tau/alpha) b: the variance of Theorem 3.1's limit (uses N, as the paper does)."""
+        r""":math:`N (2 \tau/\alpha) b`: the variance of Theorem 3.1's limit (uses :math:`N`, as
+        the paper does)."""
         return self.n_aircraft * self.q * self.density.moment(2)
 
     def cumulants(self, order: int = 6) -> FloatArray:
-        """Cumulants kappa_1..kappa_order of n: (N-1) times the cumulants of Q (Eqs. E.2-E.6)."""
+        r"""Cumulants :math:`\kappa_1, \dots, \kappa_r` of :math:`n`, :math:`r` = ``order``:
+        :math:`N-1` times the cumulants of :math:`Q` (Eqs. E.2-E.6)."""
         raw = [self.q * self.density.moment(r) for r in range(1, order + 1)]
         return self.n_interferers * cumulants_from_raw_moments(raw)
 
 
 def cumulants_from_raw_moments(raw: ArrayLike) -> FloatArray:
-    """Cumulants from raw moments ``m_1..m_n`` by the standard recursion.
+    r"""Cumulants from raw moments :math:`m_1, \dots, m_n` by the standard recursion.
 
     Parameters
     ----------
@@ -524,7 +534,7 @@ def cumulants_from_raw_moments(raw: ArrayLike) -> FloatArray:
     Returns
     -------
     ndarray
-        Cumulants ``kappa_1..kappa_n``.
+        Cumulants :math:`\kappa_1, \dots, \kappa_n`.
 
     Examples
     --------
@@ -552,11 +562,11 @@ def _edgeworth_coefficients(noise: MultipleAccessNoise, use_n: bool) -> tuple[fl
 def edgeworth_density(
     noise: MultipleAccessNoise, n: ArrayLike, terms: int = 2, use_n: bool = True
 ) -> FloatArray:
-    """The expansion (E.15) truncated after ``terms`` correction terms.
+    r"""The expansion (E.15) truncated after ``terms`` correction terms.
 
-    ``terms=0`` is Theorem 3.1's Gaussian limit; 1 adds the lambda_3 term, 2 the lambda_4 term
-    and 3 the (jv)^6 term (lambda_6 and lambda_3^2). ``use_n`` replaces N - 1 by N as App. E
-    does.
+    ``terms=0`` is Theorem 3.1's Gaussian limit; 1 adds the :math:`\lambda_3` term, 2 the
+    :math:`\lambda_4` term and 3 the :math:`(jv)^6` term (:math:`\lambda_6` and
+    :math:`\lambda_3^2`). ``use_n`` replaces :math:`N - 1` by :math:`N` as App. E does.
 
     Parameters
     ----------
@@ -826,9 +836,9 @@ def stratified_tail(
 
 
 def two_point_exact_tail(amplitude: float, n_interferers: int, q: float, t: ArrayLike) -> FloatArray:
-    """Exact ``P(n >= t)`` for the two-point density +-a.
+    r"""Exact :math:`P(n \ge t)` for the two-point density :math:`\pm a`.
 
-    ``sum_K Bin(K) P(a(2J - K) >= t)``, ``J ~ Bin(K, 1/2)``.
+    :math:`\sum_K \mathrm{Bin}(K)\, P(a(2J - K) \ge t)`, ``J ~ Bin(K, 1/2)``.
 
     Parameters
     ----------
@@ -867,7 +877,9 @@ def two_point_exact_tail(amplitude: float, n_interferers: int, q: float, t: Arra
 
 
 def gaussian_mixture_exact_tail(b: float, n_interferers: int, q: float, t: ArrayLike) -> FloatArray:
-    """Exact ``P(n >= t)`` for Gaussian ``C = N(0, b)``: ``sum_K Bin(K) Q(t / sqrt(K b))``.
+    r"""Exact :math:`P(n \ge t)` for Gaussian :math:`C = N(0, b)`:
+    :math:`\sum_K \mathrm{Bin}(K)\, Q(t / \sqrt{K b})`.
+
 
     Parameters
     ----------
@@ -907,13 +919,14 @@ def gaussian_mixture_exact_tail(b: float, n_interferers: int, q: float, t: Array
 def psk_amplitude_samples(
     code_i: ArrayLike, n_events: int, rng: np.random.Generator, chunk: int = 20000
 ) -> FloatArray:
-    """Samples of ``n_ij(t)`` given overlap (Eq. 3.3.7) for random PSK interferers.
+    r"""Samples of :math:`n_{ij}(t)` given overlap (Eq. 3.3.7) for random PSK interferers.
 
-    Each interferer has a fresh random +-1 code of the same length L as ``code_i``,
-    rectangular chips, unit energy, a delay d uniform over (-tau, tau) relative to the
-    matched-filter peak and a uniform carrier phase. The cross-correlation at a continuous
-    delay d = (k + f) tau_c is (1-f) c_k + f c_{k+1}, with c_k the aperiodic discrete
-    cross-correlation divided by L.
+    Each interferer has a fresh random :math:`\pm 1` code of the same length :math:`L` as
+    ``code_i``, rectangular chips, unit energy, a delay :math:`d` uniform over
+    :math:`(-\tau, \tau)` relative to the matched-filter peak and a uniform carrier phase. The
+    cross-correlation at a continuous delay :math:`d = (k + f) \tau_c` is
+    :math:`(1-f) c_k + f c_{k+1}`, with :math:`c_k` the aperiodic discrete cross-correlation
+    divided by :math:`L`.
 
     Parameters
     ----------

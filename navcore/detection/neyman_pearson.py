@@ -1,29 +1,37 @@
-"""Neyman-Pearson detection of a known signal in white Gaussian noise (ATC-10 App. D).
+r"""Neyman-Pearson detection of a known signal in white Gaussian noise (ATC-10 App. D).
 
-A matched filter with unit-energy impulse response sees a sample ``y`` that is Gaussian with
-variance ``J/B`` (jammer power ``J`` spread over the bandwidth ``B``) and mean ``sqrt(E)``
-when the signal of energy ``E = P0 tau`` is present at its peak, or mean 0 when it is
-absent. After normalising by the noise standard deviation the detection index is
+A matched filter with unit-energy impulse response sees a sample :math:`y` that is Gaussian
+with variance :math:`J/B` (jammer power :math:`J` spread over the bandwidth :math:`B`) and
+mean :math:`\sqrt{E}` when the signal of energy :math:`E = P_0 \tau` is present at its peak,
+or mean 0 when it is absent. After normalising by the noise standard deviation the
+detection index is (ATC-10 App. D convention)
 
-    d = sqrt(E B / J) = (J / (P0 B tau))**(-1/2)        (ATC-10 App. D convention),
+.. math::
 
-and the likelihood-ratio test is a threshold on ``y``. Fixing the per-sample detection
-probability ``p_d`` fixes the threshold, and then
+    d = \sqrt{E B / J} = \left(\frac{J}{P_0 B \tau}\right)^{-1/2},
 
-    p_f = Q(d - Phi^{-1}(p_d))                          (ATC-10 Eqs. (2.7.1), (D.17)),
+and the likelihood-ratio test is a threshold on :math:`y`. Fixing the per-sample detection
+probability :math:`p_d` fixes the threshold, and then (ATC-10 Eqs. (2.7.1), (D.17))
 
-where ``Q`` is the Gaussian upper tail. The paper writes this as
-``1/2 - 1/2 erf(sqrt(P0 B tau / (2 J)) - phi)`` with ``phi = erfinv(2 p_d - 1)``.
+.. math::
+
+    p_f = Q\left(d - \Phi^{-1}(p_d)\right),
+
+where :math:`Q` is the Gaussian upper tail. The paper writes this as
+:math:`\frac12 - \frac12 \operatorname{erf}\left(\sqrt{P_0 B \tau / (2 J)} - \phi\right)`
+with :math:`\phi = \operatorname{erf}^{-1}(2 p_d - 1)`.
 
 In navcore's SNR convention (signal energy over the one-sided noise density per pulse,
-``snr = E/N0``, stated once in :mod:`navcore.detection.pulse_detection`) the coherent
-detection index is ``d = sqrt(2 snr)``: the results here are those of
+:math:`\chi = E/N_0`, stated once in :mod:`navcore.detection.pulse_detection`) the coherent
+detection index is :math:`d = \sqrt{2 \chi}`: the results here are those of
 :func:`navcore.detection.pulse_detection.pulse_detection_probability` with ``coherent=True``
-at ``snr = d**2 / 2 = E B / (2 J)``, i.e. ATC-10 takes the noise density ``N0 = 2 J / B``.
+at :math:`\chi = d^2 / 2 = E B / (2 J)`, i.e. ATC-10 takes the noise density
+:math:`N_0 = 2 J / B`.
 
 Everything is evaluated in the log domain with ``scipy.special.log_ndtr``, so tail
-probabilities such as 1e-45 (or 1e-300) are computed to full relative precision instead of
-cancelling to zero as ``0.5 - 0.5 * erf(z)`` does.
+probabilities such as :math:`10^{-45}` (or :math:`10^{-300}`) are computed to full relative
+precision instead of cancelling to zero as ``0.5 - 0.5 * erf(z)`` does.
+
 """
 
 from __future__ import annotations
@@ -57,12 +65,12 @@ def _open_probability(p: ArrayLike, name: str) -> FloatArray:
 
 @implements("ATC10 D.7", "ATC10 D.8")
 def detection_index_from_jammer_ratio(jammer_ratio: ArrayLike) -> FloatArray:
-    """Detection index ``d = (J / (P0 B tau))**(-1/2)`` of the matched-filter sample.
+    r"""Detection index :math:`d = (J / (P_0 B \tau))^{-1/2}` of the matched-filter sample.
 
     Parameters
     ----------
     jammer_ratio : array_like
-        ``x = J / (P0 B tau)`` (linear, > 0), jammer power over the signal energy-bandwidth
+        :math:`x = J / (P_0 B \tau)` (linear, > 0), jammer power over the signal energy-bandwidth
         product.
 
     Returns
@@ -93,7 +101,7 @@ def detection_index_from_jammer_ratio(jammer_ratio: ArrayLike) -> FloatArray:
 
 
 def threshold_from_detection_probability(p_d: ArrayLike, d: ArrayLike) -> FloatArray:
-    """Normalised threshold ``eta`` with ``P(d + n > eta) = p_d``, i.e. ``eta = d - Phi^{-1}(p_d)``.
+    r"""Normalised threshold ``eta`` with :math:`P(d + n > \eta) = p_d`, i.e. ``eta = d - Phi^{-1}(p_d)``.
 
     Parameters
     ----------
@@ -129,7 +137,8 @@ def threshold_from_detection_probability(p_d: ArrayLike, d: ArrayLike) -> FloatA
 
 @implements("ATC10 2.7.2")
 def erf_parameter_from_detection_probability(p_d: ArrayLike) -> FloatArray:
-    """The paper's ``phi`` with ``p_d = 1/2 + 1/2 erf(phi)`` (ATC-10 Eq. 2.7.2, D.13-D.15).
+    r"""The paper's ``phi`` with :math:`p_d = \tfrac12 + \tfrac12 \operatorname{erf}(\phi)` (ATC-10 Eq. 2.7.2,
+    D.13-D.15).
 
     Parameters
     ----------
@@ -139,7 +148,7 @@ def erf_parameter_from_detection_probability(p_d: ArrayLike) -> FloatArray:
     Returns
     -------
     ndarray
-        ``phi = erfinv(2 p_d - 1)`` (dimensionless).
+        :math:`\phi = \operatorname{erf}^{-1}(2 p_d - 1)` (dimensionless).
 
     References
     ----------
@@ -157,7 +166,7 @@ def erf_parameter_from_detection_probability(p_d: ArrayLike) -> FloatArray:
 
 @implements("ATC10 2.7.1")
 def log_false_alarm_probability(p_d: ArrayLike, d: ArrayLike) -> FloatArray:
-    """Natural log of ``p_f = Q(d - Phi^{-1}(p_d))`` (ATC-10 Eqs. 2.7.1, D.16-D.17).
+    r"""Natural log of ``p_f = Q(d - Phi^{-1}(p_d))`` (ATC-10 Eqs. 2.7.1, D.16-D.17).
 
     Parameters
     ----------
@@ -169,7 +178,7 @@ def log_false_alarm_probability(p_d: ArrayLike, d: ArrayLike) -> FloatArray:
     Returns
     -------
     ndarray
-        ``ln p_f``, accurate to full relative precision however small ``p_f`` is.
+        :math:`\ln p_f`, accurate to full relative precision however small ``p_f`` is.
 
     Raises
     ------

@@ -85,7 +85,7 @@ def _case(swerling: int, coherent: bool) -> int:
 
 
 def detection_threshold(p_fa: ArrayLike, n_pulses: int = 1, *, coherent: bool = False) -> Array:
-    """Threshold that noise alone exceeds with probability ``p_fa``.
+    r"""Threshold that noise alone exceeds with probability ``p_fa``.
 
     Parameters
     ----------
@@ -95,8 +95,8 @@ def detection_threshold(p_fa: ArrayLike, n_pulses: int = 1, *, coherent: bool = 
         Number of pulses integrated (``>= 1``).
     coherent : bool, default False
         Coherent detector (threshold on the normalised real statistic, a standard normal
-        under noise); otherwise the square-law sum ``sum |y_k|^2 / sigma^2`` (gamma with
-        shape ``n_pulses`` under noise).
+        under noise); otherwise the square-law sum :math:`\sum_k |y_k|^2 / \sigma^2`
+        (under noise a gamma distribution with shape ``n_pulses``).
 
     Returns
     -------
@@ -275,7 +275,8 @@ def required_snr(
     swerling: int = 0,
     coherent: bool = False,
 ) -> Array:
-    """SNR per pulse that reaches detection probability ``p_d`` at false-alarm probability ``p_fa``.
+    r"""SNR per pulse that reaches detection probability ``p_d`` at false-alarm probability ``p_fa``.
+
 
     Parameters
     ----------
@@ -293,7 +294,7 @@ def required_snr(
     Returns
     -------
     ndarray
-        SNR per pulse, ``E/N0`` (linear; ``10 log10`` of it in dB).
+        SNR per pulse, :math:`E/N_0` (linear; :math:`10 \log_{10}` of it in dB).
 
     Raises
     ------
@@ -303,8 +304,8 @@ def required_snr(
     Notes
     -----
     The inverse of :func:`pulse_detection_probability` in the SNR, by Brent's method on
-    the SNR in dB (to 1e-10 dB). The coherent case is closed form:
-    ``(Q^-1(p_fa) - Q^-1(p_d))^2 / (2 N)``.
+    the SNR in dB (to :math:`10^{-10}` dB). The coherent case is closed form:
+    :math:`(Q^{-1}(p_{fa}) - Q^{-1}(p_d))^2 / (2 N)`.
 
     Examples
     --------

@@ -1,21 +1,27 @@
-"""Bounds to the receiver operating characteristic in multiple-access noise (ATC-10 Secs. 3.5-3.8).
+r"""Bounds to the receiver operating characteristic in multiple-access noise (ATC-10 Secs. 3.5-3.8).
 
-The detector decides "signal present" when the matched-filter sample y = R + n exceeds a
-threshold theta, with R = 1 (signal at its peak) or 0. Thus
+The detector decides "signal present" when the matched-filter sample :math:`y = R + n`
+exceeds a threshold :math:`\theta`, with :math:`R = 1` (signal at its peak) or 0. Thus
 
-    p_f = P(n >= theta),     1 - p_d = P(n < theta - 1) = P(-n > 1 - theta).
+.. math::
+
+    p_f &= P(n \ge \theta), \\
+    1 - p_d &= P(n < \theta - 1) = P(-n > 1 - \theta).
 
 All bounds take a *cumulant generating function* object with ``cgf(s)``, ``cgf_d1(s)`` and
 ``cgf_d2(s)`` (e.g. :class:`navcore.detection.multiple_access.MultipleAccessNoise`) and
 return natural logarithms of probabilities, so that exponents of hundreds stay finite.
 
-* :func:`chernoff_log_tail`: ln P(S >= t) <= min_{r>=0} [mu(r) - r t]  (Eqs. 3.5.5-3.5.13),
-  with the optimum found by bracketing and Brent's method on mu'(r) = t.
-* :func:`gallager_log_tail_lower`: the tilted-Chebyshev lower bound that Eq. (3.5.14) intends,
-  as corrected: ln P(S >= t) >= -ln 2 + mu(r1) - r1 t - 2 r1 sqrt(2 mu''(r1)), where
-  mu'(r1) - sqrt(2 mu''(r1)) = t.
+* :func:`chernoff_log_tail`: :math:`\ln P(S \ge t) \le \min_{r \ge 0} [\mu(r) - r t]`
+  (Eqs. 3.5.5-3.5.13), with the optimum found by bracketing and Brent's method on
+  :math:`\mu'(r) = t`.
+* :func:`gallager_log_tail_lower`: the tilted-Chebyshev lower bound that Eq. (3.5.14)
+  intends, as corrected:
+  :math:`\ln P(S \ge t) \ge -\ln 2 + \mu(r_1) - r_1 t - 2 r_1 \sqrt{2 \mu''(r_1)}`, where
+  :math:`\mu'(r_1) - \sqrt{2 \mu''(r_1)} = t`.
 * closed forms for the two-point (quasi-optimal) density, Eqs. (3.7.20)-(3.7.27);
-* the Gaussian ROC (3.8.3), its Chernoff bound (3.8.7)-(3.8.9) and Exp(N, tau/alpha, Exp_g) (3.8.16).
+* the Gaussian ROC (3.8.3), its Chernoff bound (3.8.7)-(3.8.9) and
+  :math:`\mathrm{Exp}(N, \tau/\alpha, \mathrm{Exp}_g)` (3.8.16).
 """
 
 from __future__ import annotations
@@ -62,7 +68,8 @@ class CumulantGenerating(Protocol):
 
 @dataclass(frozen=True)
 class NegatedCGF:
-    """The CGF of -S from that of S: mu~(g) = mu(-g) (used for the p_d side, Eq. 3.5.9).
+    r"""The CGF of :math:`-S` from that of :math:`S`: :math:`\tilde\mu(g) = \mu(-g)` (used for
+    the :math:`p_d` side, Eq. 3.5.9).
 
     Attributes
     ----------
@@ -130,11 +137,11 @@ def _solve_increasing(fun, targets: ArrayLike, r_max: float = 1e7) -> FloatArray
 
 
 def chernoff_log_tails(cgf: CumulantGenerating, t: ArrayLike) -> tuple[FloatArray, FloatArray]:
-    """Chernoff bounds on ``ln P(S >= t)`` for many thresholds at once (ATC-10 Eqs. 3.5.5-3.5.7).
+    r"""Chernoff bounds on ``ln P(S >= t)`` for many thresholds at once (ATC-10 Eqs. 3.5.5-3.5.7).
 
     The vectorised form of :func:`chernoff_log_tail`: for each threshold the optimal tilt
-    ``r* >= 0`` solves ``mu'(r) = t`` (``r* = 0``, a bound of 1, for ``t <= E S``) and the bound
-    is ``mu(r*) - r* t``. Where ``mu'(r)`` never reaches ``t`` the tail is empty: the bound is
+    ``r* >= 0`` solves :math:`\mu'(r) = t` (``r* = 0``, a bound of 1, for ``t <= E S``) and the bound
+    is :math:`\mu(r^*) - r^* t`. Where :math:`\mu'(r)` never reaches ``t`` the tail is empty: the bound is
     ``-inf`` and the tilt ``inf``.
 
     Parameters
@@ -180,11 +187,11 @@ def chernoff_log_tails(cgf: CumulantGenerating, t: ArrayLike) -> tuple[FloatArra
 
 
 def gallager_log_tails_lower(cgf: CumulantGenerating, t: ArrayLike) -> tuple[FloatArray, FloatArray]:
-    """Lower bounds on ``ln P(S >= t)`` for many thresholds at once (ATC-10 Eq. 3.5.14 as corrected).
+    r"""Lower bounds on ``ln P(S >= t)`` for many thresholds at once (ATC-10 Eq. 3.5.14 as corrected).
 
     The vectorised form of :func:`gallager_log_tail_lower`: for each threshold the tilt ``r1``
-    solves ``mu'(r1) - sqrt(2 mu''(r1)) = t`` and the bound is
-    ``-ln 2 + mu(r1) - r1 t - 2 r1 sqrt(2 mu''(r1))`` (erratum E3-1: the printed exponent mixes
+    solves :math:`\mu'(r_1) - \sqrt{2 \mu''(r_1)} = t` and the bound is
+    :math:`-\ln 2 + \mu(r_1) - r_1 t - 2 r_1 \sqrt{2 \mu''(r_1)}` (erratum E3-1: the printed exponent mixes
     the Chernoff optimum with ``r1``, omits the logarithm and adds the last term). Where no
     tilt reaches ``t`` the bound is ``-inf`` and the tilt ``inf``.
 
@@ -237,11 +244,12 @@ def gallager_log_tails_lower(cgf: CumulantGenerating, t: ArrayLike) -> tuple[Flo
 
 @implements("ATC10 3.5.5", "ATC10 3.5.6", "ATC10 3.5.7")
 def chernoff_log_tail(cgf: CumulantGenerating, t: float) -> TailBound:
-    """Chernoff bound ``ln P(S >= t) <= mu(r*) - r* t``, ``r* >= 0`` optimal (ATC-10 Eqs. 3.5.5-3.5.7).
+    r"""Chernoff bound :math:`\ln P(S \ge t) \le \mu(r^*) - r^* t`, :math:`r^* \ge 0` optimal
+    (ATC-10 Eqs. 3.5.5-3.5.7).
 
-    mu is convex, so ``mu(r) - r t`` is minimised where ``mu'(r) = t``; for ``t <= E S`` the
-    minimum is at ``r = 0`` (the bound is 1). If ``mu'(r)`` never reaches ``t`` the tail is
-    empty (``-inf``).
+    :math:`\mu` is convex, so :math:`\mu(r) - r t` is minimised where :math:`\mu'(r) = t`; for
+    :math:`t \le E S` the minimum is at :math:`r = 0` (the bound is 1). If :math:`\mu'(r)`
+    never reaches :math:`t` the tail is empty (``-inf``).
 
     Parameters
     ----------
@@ -253,7 +261,8 @@ def chernoff_log_tail(cgf: CumulantGenerating, t: float) -> TailBound:
     Returns
     -------
     TailBound
-        ``log_p``, the natural log of the bound, and the optimal tilt ``parameter`` r*.
+        ``log_p``, the natural log of the bound, and the optimal tilt ``parameter``
+        :math:`r^*`.
 
     References
     ----------
@@ -274,12 +283,12 @@ def chernoff_log_tail(cgf: CumulantGenerating, t: float) -> TailBound:
 
 @implements("ATC10 3.5.14")
 def gallager_log_tail_lower(cgf: CumulantGenerating, t: float) -> TailBound:
-    """Tilted-Chebyshev lower bound on ``ln P(S >= t)`` (Eq. 3.5.14 as corrected, erratum E3-1).
+    r"""Tilted-Chebyshev lower bound on ``ln P(S >= t)`` (Eq. 3.5.14 as corrected, erratum E3-1).
 
-    Tilt by r1 chosen so that ``mu'(r1) - sqrt(2 mu''(r1)) = t``. Under the tilted law S has
-    mean ``mu'(r1)`` and variance ``mu''(r1)``; by Chebyshev it lies in
-    ``(t, t + 2 sqrt(2 mu''))`` with probability >= 1/2, and there the likelihood ratio is at
-    least ``exp(mu(r1) - r1 (t + 2 sqrt(2 mu''(r1))))``.
+    Tilt by r1 chosen so that :math:`\mu'(r_1) - \sqrt{2 \mu''(r_1)} = t`. Under the tilted law S has
+    mean :math:`\mu'(r_1)` and variance :math:`\mu''(r_1)`; by Chebyshev it lies in
+    :math:`(t, t + 2 \sqrt{2 \mu''})` with probability >= 1/2, and there the likelihood ratio is at
+    least :math:`\exp(\mu(r_1) - r_1 (t + 2 \sqrt{2 \mu''(r_1)}))`.
 
     Parameters
     ----------
@@ -382,16 +391,16 @@ def roc_lower_bound(cgf: CumulantGenerating, theta: ArrayLike) -> tuple[FloatArr
 
 @implements("ATC10 3.7.1")
 def quasi_optimal_amplitude(power: float, n_aircraft: int, tau_over_alpha: float) -> float:
-    """``a = sqrt(p alpha / ((N-1) 2 tau))``: the atoms +-a of the optimal density (Eq. 3.7.1).
+    r""":math:`a = \sqrt{p \alpha / ((N-1)\, 2 \tau)}`: the atoms +-a of the optimal density (Eq. 3.7.1).
 
     Parameters
     ----------
     power : float
         Total cross-term noise power ``p`` (``> 0``).
     n_aircraft : int
-        Number of aircraft ``N`` (``>= 2``).
+        Number of aircraft :math:`N` (``>= 2``).
     tau_over_alpha : float
-        ``tau/alpha`` (dimensionless).
+        :math:`\tau/\alpha` (dimensionless).
 
     Returns
     -------
@@ -421,10 +430,12 @@ def quasi_optimal_amplitude(power: float, n_aircraft: int, tau_over_alpha: float
 def quasi_optimal_chernoff_parameter(
     theta: ArrayLike, power: float, n_aircraft: int, tau_over_alpha: float
 ) -> FloatArray:
-    """Closed-form optimal rho for the two-point density (Eq. 3.7.23, with ``1 - 2 tau/alpha``).
+    r"""Closed-form optimal :math:`\rho` for the two-point density (Eq. 3.7.23, with
+    :math:`1 - 2 \tau/\alpha`).
 
-    Solves ``A sinh x - B cosh x = C`` with ``x = rho a``, ``A = (N-1) q a``, ``B = theta q``,
-    ``C = theta (1 - q)``: ``x = asinh(C / sqrt(A^2 - B^2)) + atanh(B / A)``.
+    Solves :math:`A \sinh x - B \cosh x = C` with :math:`x = \rho a`, :math:`A = (N-1) q a`,
+    :math:`B = \theta q`, :math:`C = \theta (1 - q)`:
+    :math:`x = \operatorname{asinh}(C / \sqrt{A^2 - B^2}) + \operatorname{atanh}(B / A)`.
 
     Parameters
     ----------
@@ -433,14 +444,14 @@ def quasi_optimal_chernoff_parameter(
     power : float
         Noise power ``p`` per interferer, relative to the unit peak (``> 0``).
     n_aircraft : int
-        Number of aircraft ``N``.
+        Number of aircraft :math:`N`.
     tau_over_alpha : float
-        Pulse duration over repetition period, ``tau/alpha`` (dimensionless).
+        Pulse duration over repetition period, :math:`\tau/\alpha` (dimensionless).
 
     Returns
     -------
     ndarray
-        Optimal Chernoff parameter ``rho``.
+        Optimal Chernoff parameter :math:`\rho`.
 
     References
     ----------
@@ -465,9 +476,10 @@ def quasi_optimal_chernoff_parameter(
 def quasi_optimal_exponent(
     theta: ArrayLike, power: float, n_aircraft: int, tau_over_alpha: float
 ) -> FloatArray:
-    """``Expf = rho theta - (N-1) ln(1 - q + q cosh(rho a))`` at the optimal rho (Eqs. 3.7.21, 3.7.24).
+    r""":math:`\mathrm{Exp}_f = \rho \theta - (N-1) \ln(1 - q + q \cosh(\rho a))` at the optimal
+    :math:`\rho` (Eqs. 3.7.21, 3.7.24).
 
-    Expd is the same function of ``1 - theta`` (Eq. 3.7.25).
+    :math:`\mathrm{Exp}_d` is the same function of :math:`1 - \theta` (Eq. 3.7.25).
 
     Parameters
     ----------
@@ -476,9 +488,9 @@ def quasi_optimal_exponent(
     power : float
         Noise power ``p`` per interferer, relative to the unit peak (``> 0``).
     n_aircraft : int
-        Number of aircraft ``N``.
+        Number of aircraft :math:`N`.
     tau_over_alpha : float
-        Pulse duration over repetition period, ``tau/alpha`` (dimensionless).
+        Pulse duration over repetition period, :math:`\tau/\alpha` (dimensionless).
 
     Returns
     -------
@@ -508,11 +520,12 @@ def quasi_optimal_exponent(
 def quasi_optimal_exponent_approx(
     theta: ArrayLike, power: float, n_aircraft: int, tau_over_alpha: float
 ) -> FloatArray:
-    """The large-N approximation (3.7.26)/(3.7.27).
+    r"""The large-N approximation (3.7.26)/(3.7.27).
 
     N for N-1, the atanh term and ``1 - q`` in the ratio dropped:
-    ``Expf ~ theta sqrt(N q / p) asinh(u) - N ln(1 - q + q sqrt(1 + u^2))``,
-    ``u = theta / sqrt(N q p)``.
+    :math:`\mathrm{Exp}_f \approx \theta \sqrt{N q / p}\, \operatorname{asinh}(u) - N \ln(1 - q + q \sqrt{1 +
+    u^2})`,
+    :math:`u = \theta / \sqrt{N q p}`.
 
     Parameters
     ----------
@@ -521,9 +534,9 @@ def quasi_optimal_exponent_approx(
     power : float
         Noise power ``p`` per interferer, relative to the unit peak (``> 0``).
     n_aircraft : int
-        Number of aircraft ``N``.
+        Number of aircraft :math:`N`.
     tau_over_alpha : float
-        Pulse duration over repetition period, ``tau/alpha`` (dimensionless).
+        Pulse duration over repetition period, :math:`\tau/\alpha` (dimensionless).
 
     Returns
     -------
@@ -550,7 +563,7 @@ def quasi_optimal_exponent_approx(
 
 @implements("ATC10 3.8.3")
 def gaussian_roc(theta: ArrayLike, power: float) -> tuple[FloatArray, FloatArray]:
-    """ROC_g (Eq. 3.8.3) in logs: ``(ln p_f, ln(1 - p_d))``.
+    r""":math:`\mathrm{ROC}_g` (Eq. 3.8.3) in logs: :math:`(\ln p_f, \ln(1 - p_d))`.
 
     Parameters
     ----------
@@ -562,9 +575,9 @@ def gaussian_roc(theta: ArrayLike, power: float) -> tuple[FloatArray, FloatArray
     Returns
     -------
     log_pf : ndarray
-        ``ln p_f = ln Q(theta / sqrt(p))``.
+        :math:`\ln p_f = \ln Q(\theta / \sqrt{p})`.
     log_miss : ndarray
-        ``ln(1 - p_d) = ln Q((1 - theta) / sqrt(p))``.
+        :math:`\ln(1 - p_d) = \ln Q((1 - \theta) / \sqrt{p})`.
 
     Raises
     ------
@@ -590,7 +603,8 @@ def gaussian_roc(theta: ArrayLike, power: float) -> tuple[FloatArray, FloatArray
 
 @implements("ATC10 3.8.8", "ATC10 3.8.5", "ATC10 3.8.6", "ATC10 3.8.7")
 def gaussian_chernoff_exponent(threshold: ArrayLike, power: float) -> FloatArray:
-    """``Expfg = theta^2/(2p)`` (Eq. 3.8.8); the optimal tilt is ``mu = theta/p`` (Eqs. 3.8.5-3.8.7).
+    r""":math:`\mathrm{Exp}_{fg} = \theta^2/(2p)` (Eq. 3.8.8); the optimal tilt is
+    :math:`\mu = \theta/p` (Eqs. 3.8.5-3.8.7).
 
     Parameters
     ----------
@@ -627,19 +641,25 @@ def gaussian_chernoff_exponent(threshold: ArrayLike, power: float) -> FloatArray
 def exponent_from_gaussian_exponent(
     n_aircraft: ArrayLike, tau_over_alpha: ArrayLike, exp_g: ArrayLike
 ) -> FloatArray:
-    """``Exp(N, tau/alpha, Exp_g)`` of Eq. (3.8.16) (with ``Exp_g/(N tau/alpha)``, erratum E3-9).
+    r""":math:`\mathrm{Exp}(N, \tau/\alpha, \mathrm{Exp}_g)` of Eq. (3.8.16) (with
+    :math:`\mathrm{Exp}_g/(N \tau/\alpha)`, erratum E3-9).
 
-    ``Exp = sqrt(4 N tau/alpha Exp_g) asinh(sqrt(u)) - N ln(1 - 2tau/alpha + (2tau/alpha) sqrt(1+u))``,
-    theta eliminated through ``Exp_g = theta^2/(2p)``.
+    .. math::
+
+        \mathrm{Exp} &= \sqrt{4 N (\tau/\alpha) \mathrm{Exp}_g}\, \operatorname{asinh}\sqrt{u} \\
+            &\quad - N \ln\left(1 - 2\tau/\alpha + (2\tau/\alpha) \sqrt{1 + u}\right),
+
+    :math:`\theta` eliminated through :math:`\mathrm{Exp}_g = \theta^2/(2p)`.
+
 
     Parameters
     ----------
     n_aircraft : array_like
-        Number of aircraft ``N``.
+        Number of aircraft :math:`N`.
     tau_over_alpha : array_like
-        ``tau/alpha`` (dimensionless).
+        :math:`\tau/\alpha` (dimensionless).
     exp_g : array_like
-        Gaussian exponent ``Exp_g`` (nats).
+        Gaussian exponent :math:`\mathrm{Exp}_g` (nats).
 
     Returns
     -------
@@ -668,14 +688,15 @@ def exponent_from_gaussian_exponent(
 def exponent_from_gaussian_exponent_large_n(
     n_aircraft: ArrayLike, tau_over_alpha: ArrayLike, exp_g: ArrayLike
 ) -> FloatArray:
-    """First-order large-N expansion of (3.8.16): ``Exp_g - Exp_g^2 (1 - 6 tau/alpha) / (12 N tau/alpha)``.
+    r"""First-order large-N expansion of (3.8.16): :math:`\mathrm{Exp}_g - \mathrm{Exp}_g^2 (1 - 6
+    \tau/\alpha) / (12 N \tau/\alpha)`.
 
     Parameters
     ----------
     n_aircraft : array_like
-        Number of aircraft ``N``.
+        Number of aircraft :math:`N`.
     tau_over_alpha : array_like
-        ``tau/alpha`` (dimensionless).
+        :math:`\tau/\alpha` (dimensionless).
     exp_g : array_like
         Gaussian exponent (nats).
 

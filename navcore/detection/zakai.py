@@ -1,13 +1,17 @@
-"""Zakai bandwidth and the multiple-access noise power of PSK signatures (ATC-10 Sec. 3.9, App. F).
+r"""Zakai bandwidth and the multiple-access noise power of PSK signatures (ATC-10 Sec. 3.9, App. F).
 
-The Zakai bandwidth of a unit-energy signal with autocorrelation R(t) is
-W = [2 integral R(t)^2 dt]^{-1} (Theorem 3.3). For rectangular-chip PSK sequences R is
-piecewise linear between multiples of the chip duration, so the integral is exact from the
-chip-lag samples R_k: integral R^2 = tau_c sum_k (R_k^2 + R_k R_{k+1} + R_{k+1}^2) / 3.
+The Zakai bandwidth of a unit-energy signal with autocorrelation :math:`R(t)` is
+:math:`W = \left[2 \int R(t)^2\, dt\right]^{-1}` (Theorem 3.3). For rectangular-chip PSK
+sequences :math:`R` is piecewise linear between multiples of the chip duration, so the
+integral is exact from the chip-lag samples :math:`R_k`:
 
-Appendix F shows E(n^2) = (1/(2 alpha)) sum_j integral R_ii R_jj (Eq. F.6) and, by
-Cauchy-Schwarz, E(n^2) <= sum_j 1/(4 alpha sqrt(W_i W_j)) with equality when all
-autocorrelations are equal, giving (N-1)/(4 alpha W) (Eq. 3.9.2).
+.. math::
+
+    \int R^2\, dt = \tau_c \sum_k \frac{R_k^2 + R_k R_{k+1} + R_{k+1}^2}{3}.
+
+Appendix F shows :math:`E(n^2) = \frac{1}{2 \alpha} \sum_j \int R_{ii} R_{jj}` (Eq. F.6)
+and, by Cauchy-Schwarz, :math:`E(n^2) \le \sum_j 1/(4 \alpha \sqrt{W_i W_j})` with equality
+when all autocorrelations are equal, giving :math:`(N-1)/(4 \alpha W)` (Eq. 3.9.2).
 """
 
 from __future__ import annotations
@@ -56,7 +60,7 @@ _MSEQ_TAPS = {3: (3, 2), 4: (4, 3), 5: (5, 3), 6: (6, 5), 7: (7, 6), 8: (8, 6, 5
 
 
 def barker_code(length: int) -> FloatArray:
-    """The Barker code of the given length (2, 3, 4, 5, 7, 11 or 13) as +-1.
+    r"""The Barker code of the given length (2, 3, 4, 5, 7, 11 or 13) as :math:`\pm 1`.
 
     Parameters
     ----------
@@ -84,7 +88,8 @@ def barker_code(length: int) -> FloatArray:
 
 
 def m_sequence(degree: int) -> FloatArray:
-    """A maximal-length sequence of length ``2^degree - 1`` (degree 3..10) as +-1, from a Fibonacci LFSR.
+    r"""A maximal-length sequence of length :math:`2^d - 1` (:math:`d` = ``degree``, 3 to 10) as
+    :math:`\pm 1`, from a Fibonacci LFSR.
 
     Parameters
     ----------
@@ -122,7 +127,8 @@ def m_sequence(degree: int) -> FloatArray:
 
 
 def aperiodic_autocorrelation(code: ArrayLike) -> FloatArray:
-    """``R_k / R_0`` of a +-1 (or real) chip sequence at lags -(L-1)..(L-1), unit-peak normalised.
+    r""":math:`R_k / R_0` of a :math:`\pm 1` (or real) chip sequence at lags
+    :math:`-(L-1), \dots, L-1`, unit-peak normalised.
 
     Parameters
     ----------
@@ -159,7 +165,8 @@ def _closed(samples: ArrayLike) -> FloatArray:
 
 
 def piecewise_linear_energy(samples: ArrayLike, spacing: float) -> float:
-    """Exact integral of ``R(t)^2`` for R linear between samples ``spacing`` apart and zero outside.
+    """Exact integral of :math:`R(t)^2` for :math:`R` linear between samples ``spacing`` apart
+    and zero outside.
 
     Parameters
     ----------
@@ -189,7 +196,8 @@ def piecewise_linear_energy(samples: ArrayLike, spacing: float) -> float:
 
 
 def piecewise_linear_inner(f: ArrayLike, g: ArrayLike, spacing: float) -> float:
-    """Exact integral of ``f(t) g(t)`` for two piecewise-linear functions on the same sample grid.
+    """Exact integral of :math:`f(t) g(t)` for two piecewise-linear functions on the same
+    sample grid.
 
     Parameters
     ----------
@@ -225,7 +233,8 @@ def piecewise_linear_inner(f: ArrayLike, g: ArrayLike, spacing: float) -> float:
 
 
 def zakai_bandwidth(samples: ArrayLike, spacing: float) -> float:
-    """``W = [2 integral R^2]^{-1}`` (Theorem 3.3) for a piecewise-linear, unit-peak autocorrelation.
+    r""":math:`W = \left[2 \int R^2\, dt\right]^{-1}` (Theorem 3.3) for a piecewise-linear,
+    unit-peak autocorrelation.
 
     Parameters
     ----------
@@ -293,7 +302,8 @@ def psk_zakai_bandwidth(code: ArrayLike, chip_s: float) -> float:
 def alternating_sidelobe_autocorrelation(
     n_chips: int, n_sidelobes: int, first_sign: float = 1.0
 ) -> FloatArray:
-    """Idealised 'good' PSK autocorrelation (cf. ATC-10 Fig. 3.11): peak 1, sidelobes +-1/L alternating.
+    r"""Idealised 'good' PSK autocorrelation (cf. ATC-10 Fig. 3.11): peak 1, sidelobes
+    :math:`\pm 1/L` alternating.
 
     Parameters
     ----------
@@ -307,7 +317,8 @@ def alternating_sidelobe_autocorrelation(
     Returns
     -------
     (2 n_sidelobes + 1,) ndarray
-        Normalised autocorrelation at lags ``-n_sidelobes..n_sidelobes`` (chip units).
+        Normalised autocorrelation at lags :math:`-s, \dots, s` with :math:`s` = ``n_sidelobes``
+        (chip units).
 
     Raises
     ------
@@ -332,7 +343,8 @@ def alternating_sidelobe_autocorrelation(
 
 
 def paper_psk_zakai_bandwidth(chip_s: float, tau_s: float) -> float:
-    """The printed ``W = [(4/3) tau_c (1 + 2 tau_c/tau + 2 (tau_c/tau)^2)]^{-1}`` (Sec. 3.9).
+    r"""The printed :math:`W = [(4/3) \tau_c (1 + 2 \tau_c/\tau + 2 (\tau_c/\tau)^2)]^{-1}`
+    (Sec. 3.9).
 
     Parameters
     ----------
@@ -362,7 +374,8 @@ def paper_psk_zakai_bandwidth(chip_s: float, tau_s: float) -> float:
 
 @implements("ATC10 3.9.2")
 def equal_autocorrelation_noise_power(n_aircraft: int, alpha_s: float, zakai_w_hz: float) -> float:
-    """``E(n^2) = (N - 1)/(4 alpha W)`` when all signatures share one autocorrelation (Eq. 3.9.2).
+    r""":math:`E(n^2) = (N - 1)/(4 \alpha W)` when all signatures share one autocorrelation
+    (Eq. 3.9.2).
 
     Parameters
     ----------
@@ -399,7 +412,7 @@ def equal_autocorrelation_noise_power(n_aircraft: int, alpha_s: float, zakai_w_h
 
 
 def zakai_noise_power_bound(w_i_hz: float, w_j_hz: ArrayLike, alpha_s: float) -> float:
-    """Theorem 3.3 (corrected, erratum E3-6): ``E(n^2) <= sum_j 1/(4 alpha sqrt(W_i W_j))``.
+    r"""Theorem 3.3 (corrected, erratum E3-6): :math:`E(n^2) \le \sum_j 1/(4 \alpha \sqrt{W_i W_j})`.
 
     Parameters
     ----------
@@ -433,7 +446,9 @@ def zakai_noise_power_bound(w_i_hz: float, w_j_hz: ArrayLike, alpha_s: float) ->
 def cross_term_noise_power(
     code_i: ArrayLike, codes_j: list[ArrayLike], chip_s: float, alpha_s: float
 ) -> float:
-    """``E(n^2) = (1/(2 alpha)) sum_j integral R_ii R_jj`` (Eq. F.6), exact for rectangular chips.
+    r""":math:`E(n^2) = \frac{1}{2 \alpha} \sum_j \int R_{ii} R_{jj}` (Eq. F.6), exact for
+    rectangular chips.
+
 
     Parameters
     ----------

@@ -100,13 +100,13 @@ class CovarianceHistory:
     n_updates: NDArray[np.int64]
 
     def sigma(self, index: int | slice | Sequence[int], *, posterior: bool = True) -> Array:
-        """1-sigma of state(s) ``index`` over time (square root of the diagonal)."""
+        r"""1-:math:`\sigma` of state(s) ``index`` over time (square root of the diagonal)."""
         P = self.posterior if posterior else self.prior
         diag = np.diagonal(P, axis1=1, axis2=2)[:, index]
         return np.sqrt(np.clip(diag, 0.0, None))
 
     def rss(self, indices: Sequence[int] | slice, *, posterior: bool = True) -> Array:
-        """Root-sum-square 1-sigma of several states (e.g. horizontal position)."""
+        r"""Root-sum-square 1-:math:`\sigma` of several states (e.g. horizontal position)."""
         P = self.posterior if posterior else self.prior
         diag = np.diagonal(P, axis1=1, axis2=2)[:, indices]
         return np.sqrt(np.clip(diag.sum(axis=1), 0.0, None))

@@ -141,7 +141,7 @@ def embedding(filter_layout: StateLayout, truth_layout: StateLayout) -> NDArray[
 
 @dataclass(frozen=True)
 class CovarianceAnalysis:
-    """Result of :func:`run_covariance_analysis`.
+    r"""Result of :func:`run_covariance_analysis`.
 
     Attributes
     ----------
@@ -153,9 +153,9 @@ class CovarianceAnalysis:
     filter_var : (N, n_f) array
         Diagonal of the filter's own covariance.
     horizontal_position : (N,) array
-        True rss 1-sigma horizontal position error (m).
+        True rss 1-:math:`\sigma` horizontal position error (m).
     horizontal_velocity : (N,) array
-        True rss 1-sigma horizontal velocity error (m/s).
+        True rss 1-:math:`\sigma` horizontal velocity error (m/s).
     n_updates : (N,) int array
         Scalar measurements processed at each time.
     snapshots : dict
@@ -178,7 +178,7 @@ class CovarianceAnalysis:
     final_filter: Array | None = None
 
     def sigma(self, block: str, *, filter_model: bool = False) -> Array:
-        """1-sigma time series of a block (``(N, size)``), true or as the filter believes."""
+        r"""1-:math:`\sigma` time series of a block (``(N, size)``), true or as the filter believes."""
         layout = self.filter_layout if filter_model else self.truth_layout
         var = self.filter_var if filter_model else self.true_var
         return np.sqrt(np.clip(var[:, layout.slice(block)], 0.0, None))
@@ -207,7 +207,7 @@ def run_covariance_analysis(
     stride: int = 10,
     filter_added_psd: ArrayLike | None = None,
 ) -> CovarianceAnalysis | list[CovarianceAnalysis]:
-    """Propagate the true and the filter covariance along a trajectory.
+    r"""Propagate the true and the filter covariance along a trajectory.
 
     Parameters
     ----------
@@ -243,9 +243,10 @@ def run_covariance_analysis(
     measurement_steps : (N,) bool array, optional
         ``True`` where ``schedule`` may return measurements. Where it is known to be
         ``False`` for ``stride - 1`` consecutive steps and the flight condition does not
-        change, the engine takes one composite step ``Phi^L`` (cached per linearisation)
-        and computes the variances of the skipped samples exactly, ``diag(Phi^i P Phi^iT +
-        Q_i)`` for ``i < L`` (the saw-tooth growth between fixes, not an interpolation).
+        change, the engine takes one composite step :math:`\Phi^L` (cached per linearisation)
+        and computes the variances of the skipped samples exactly,
+        :math:`\operatorname{diag}(\Phi^i P \Phi^{iT} + Q_i)` for :math:`i < L` (the saw-tooth
+        growth between fixes, not an interpolation).
         Default: every step is a single step.
     stride : int
         Length of a composite step.
@@ -257,7 +258,7 @@ def run_covariance_analysis(
     -------
     CovarianceAnalysis or list of CovarianceAnalysis
         Variances of the true error and of the filter's own estimate per step (state
-        units squared), horizontal position (m) and velocity (m/s) 1-sigma, update counts,
+        units squared), horizontal position (m) and velocity (m/s) 1-:math:`\sigma`, update counts,
         snapshots and final covariances; a list (one per source) for a batch of sources.
 
     Raises
@@ -275,8 +276,8 @@ def run_covariance_analysis(
 
     Examples
     --------
-    An unaided INS with an accelerometer bias of 1 mg (1-sigma) per axis: after 60 s the
-    horizontal position error is close to ``sqrt(2) b t^2 / 2``.
+    An unaided INS with an accelerometer bias of 1 mg (1-:math:`\sigma`) per axis: after 60 s the
+    horizontal position error is close to :math:`\sqrt{2}\, b t^2 / 2`.
 
     >>> import numpy as np
     >>> from navcore.inertial.error_dynamics import ErrorSources, initial_covariance, ins_error_layout
@@ -669,18 +670,18 @@ class _Propagator:
 
 
 def discrete_noise(F: ArrayLike, S: ArrayLike, dt: float) -> Array:
-    """``Q = int_0^dt Phi(s) S Phi(s)^T ds`` by 3-point Gauss-Legendre quadrature.
+    r""":math:`Q = \int_0^{\Delta t} \Phi(s) S \Phi(s)^T ds` by 3-point Gauss-Legendre quadrature.
 
     The 3-point rule integrates polynomials of degree 5 exactly, i.e. every term of the
     integrand up to the third power of ``F s``; the neglected terms are of relative size
-    ``(|F| dt)^6``.
+    :math:`(\|F\| \Delta t)^6`.
 
     Parameters
     ----------
     F : (n, n) array
         Continuous-time system matrix, 1/s.
     S : (n, n) or (B, n, n) array
-        White-noise PSD ``G Q G^T`` (state unit squared per second), or a stack of them.
+        White-noise PSD :math:`G Q G^T` (state unit squared per second), or a stack of them.
     dt : float
         Step, s.
 
@@ -757,7 +758,7 @@ def _taylor_stack(F: Array, dt: float, order: int = 4) -> Array:
 
 
 def taylor_transition(F: ArrayLike, dt: float, order: int = 4) -> Array:
-    r"""Transition ``sum_{j <= order} (F dt)^j / j!`` (Horner form).
+    r"""Transition :math:`\sum_{j \le \mathrm{order}} (F \Delta t)^j / j!` (Horner form).
 
     Parameters
     ----------
@@ -1005,9 +1006,10 @@ def tightly_coupled_schedule(
     mask_rad: float = 0.0,
     g_load: NDArray[np.float64] | None = None,
 ) -> Schedule:
-    """Pseudorange (code lock) and range rate (carrier lock) from each channel every ``every`` steps.
+    r"""Pseudorange (code lock) and range rate (carrier lock) from each channel every ``every`` steps.
 
-    Rows (truth layout): ``d rho = -u . dr + db + b_pr[c]``, ``d rho_dot = -u . dv + d(b_dot) + b_rr[c]``,
+    Rows (truth layout): :math:`\delta\rho = -u \cdot \delta r + \delta b + b_{pr}[c]`, :math:`\delta\dot\rho
+    = -u \cdot \delta v + \delta\dot b + b_{rr}[c]`,
     with ``u`` the NED line-of-sight unit vector to the satellite, ``dr`` (m) and ``dv`` (m/s)
     the NED position and velocity errors, ``db`` the clock bias error (m) and ``d(b_dot)`` the
     clock drift error (m/s). ``g_load`` enters the range-rate rows through the clock's
@@ -1025,9 +1027,9 @@ def tightly_coupled_schedule(
     carrier : (N, n_channels) bool array
         Carrier lock per step and channel.
     pseudorange_noise : float
-        1-sigma white pseudorange noise per measurement, m (``> 0``).
+        1-:math:`\sigma` white pseudorange noise per measurement, m (``> 0``).
     range_rate_noise : float
-        1-sigma white range-rate noise per measurement, m/s (``> 0``).
+        1-:math:`\sigma` white range-rate noise per measurement, m/s (``> 0``).
     every : int, default 1
         Measure at every ``every``-th step.
     mask_rad : float, default 0.0
@@ -1132,11 +1134,12 @@ def loosely_coupled_schedule(
     max_ehe_m: float = 100.0,
     mask_rad: float = 0.0,
 ) -> Schedule:
-    """The receiver's position solution every ``interval_steps`` steps.
+    r"""The receiver's position solution every ``interval_steps`` steps.
 
     A fix is used when at least four codes are tracked and the expected horizontal error is
     below ``max_ehe_m``. The receiver solves position and clock by least squares from the
-    tracked pseudoranges, ``dr_meas = (G^T G)^{-1} G^T (b_pr + noise)`` with ``G = [-u, 1]``: its
+    tracked pseudoranges, :math:`\delta r_{meas} = (G^T G)^{-1} G^T (b_{pr} + \text{noise})` with ``G = [-u,
+    1]``: its
     position error is the position rows of that map applied to the per-channel biases (truth
     states) and to the noise, so the measurement is correlated with the pseudorange-bias
     states exactly as in the tightly coupled case. EHE is ``sigma_UERE * HDOP``.
@@ -1151,9 +1154,9 @@ def loosely_coupled_schedule(
     code : (N, n_channels) bool array
         Code lock per step and channel (see :func:`lock_table`).
     pseudorange_noise : float
-        1-sigma white pseudorange noise, m (``> 0``).
+        1-:math:`\sigma` white pseudorange noise, m (``> 0``).
     pseudorange_bias_sigma : float, default 0.0
-        1-sigma per-channel pseudorange bias, m (counts in the UERE of the EHE test).
+        1-:math:`\sigma` per-channel pseudorange bias, m (counts in the UERE of the EHE test).
     interval_steps : int, default 10
         Steps between fixes.
     max_ehe_m : float, default 100.0
@@ -1223,7 +1226,7 @@ def loosely_coupled_schedule(
 
 
 def baro_schedule(layout: StateLayout, *, noise_m: float, every: int = 1) -> Schedule:
-    """Barometric altitude: ``dz = -dr_D - b_alt + noise`` (height = minus down).
+    r"""Barometric altitude: ``dz = -dr_D - b_alt + noise`` (height = minus down).
 
     Parameters
     ----------
@@ -1231,7 +1234,7 @@ def baro_schedule(layout: StateLayout, *, noise_m: float, every: int = 1) -> Sch
         Truth layout the rows refer to (needs a ``"position"`` block; an ``"altimeter bias"``
         block, if present, enters the row).
     noise_m : float
-        1-sigma white altitude noise, m (``> 0``).
+        1-:math:`\sigma` white altitude noise, m (``> 0``).
     every : int, default 1
         Measure at every ``every``-th step.
 
@@ -1298,7 +1301,7 @@ def doppler_schedule(
     trajectory : Trajectory
         Flight path giving the attitude and velocity at each step.
     noise_mps : float
-        1-sigma white noise per body axis, m/s (``> 0``).
+        1-:math:`\sigma` white noise per body axis, m/s (``> 0``).
     every : int, default 1
         Measure at every ``every``-th step.
     active : (N,) bool array, optional
@@ -1400,7 +1403,7 @@ def circular_error_probable(P2: ArrayLike, p: float = 0.5) -> float:
     Parameters
     ----------
     P2 : (2, 2) array
-        Horizontal covariance, m^2.
+        Horizontal covariance, m².
     p : float, default 0.5
         Probability inside the circle, in (0, 1); 0.5 gives the CEP.
 

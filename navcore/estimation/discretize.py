@@ -47,7 +47,7 @@ def van_loan(F: ArrayLike, GQGt: ArrayLike, dt: float) -> tuple[NDArray[np.float
     F : (n, n) array
         Continuous dynamics matrix.
     GQGt : (n, n) array
-        ``G Q_c G^T``, the state-space noise PSD (symmetric PSD).
+        :math:`G Q_c G^T`, the state-space noise PSD (symmetric PSD).
     dt : float
         Step, ``dt > 0``.
 
@@ -87,7 +87,7 @@ def van_loan(F: ArrayLike, GQGt: ArrayLike, dt: float) -> tuple[NDArray[np.float
 
 
 def first_order_transition(F: ArrayLike, dt: float) -> NDArray[np.float64]:
-    """The first-order approximation ``Phi = I + F dt`` of ``e^{F dt}``.
+    r"""The first-order approximation :math:`\Phi = I + F \Delta t` of ``e^{F dt}``.
 
     Parameters
     ----------

@@ -165,7 +165,8 @@ def euler_batch(C: Array) -> Array:
 
 
 def euler_jacobian_batch(C: Array) -> Array:
-    """``d(roll, pitch, yaw)/d(dpsi) = J_b^{-1} C^T`` for ``C = (I + [dpsi x]) C0`` (batched).
+    r""":math:`\partial(\text{roll}, \text{pitch}, \text{yaw})/\partial(\Delta\psi) = J_b^{-1} C^T`
+    for :math:`C = (I + [\Delta\psi\times]) C_0` (batched).
 
     Parameters
     ----------
@@ -223,7 +224,7 @@ def _dd_phase_batch(pos: Array, ant: Array, sat_n: Array, sat_m: Array) -> Array
 
 
 def discrete_noise_nilpotent(F: Array, GQGt: Array, dt: float) -> Array:
-    r""":math:`Q_d=\int_0^{dt} e^{Fs} GQG^T e^{F^Ts} ds` for ``F^4 = 0`` (batched over F).
+    r""":math:`Q_d=\int_0^{dt} e^{Fs} GQG^T e^{F^Ts} ds` for :math:`F^4 = 0` (batched over F).
 
     ``e^{Fs}`` is a cubic in ``s``, so the integrand is a polynomial of degree 6 and the
     four-node Gauss-Legendre rule is exact.
@@ -231,7 +232,7 @@ def discrete_noise_nilpotent(F: Array, GQGt: Array, dt: float) -> Array:
     Parameters
     ----------
     F : (..., n, n) array
-        Continuous-time error dynamics with ``F^4 = 0``, 1/s.
+        Continuous-time error dynamics with :math:`F^4 = 0`, 1/s.
     GQGt : (n, n) array
         White-noise PSD mapped to the states (state unit squared per second; not checked:
         an inner-loop helper of :func:`run_monte_carlo`).
@@ -313,11 +314,11 @@ def _strapdown_rows(
     quat : (N, 4) array
         Attitude ``q_bn``, scalar first.
     w, f : (N, S, 3) arrays
-        Angular rate (rad/s) and specific force (m/s^2) of each interval.
+        Angular rate (rad/s) and specific force (m/s²) of each interval.
     dt : float
         IMU interval, s.
     gravity : float
-        Local gravity along +down (m/s^2).
+        Local gravity along +down (m/s²).
 
     Returns
     -------
@@ -419,7 +420,7 @@ def sequential_scalar_updates(x: Array, P: Array, y: Array, H: Array, r: Array) 
 # --- scenario ---------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class GnssNoise:
-    """1-sigma GPS measurement noises (assumptions: the paper gives none).
+    r"""1-:math:`\sigma` GPS measurement noises (assumptions: the paper gives none).
 
     A noise is ``None`` when the scenario does not measure that quantity (a stand-alone INS
     has none of them); :func:`run_monte_carlo` raises if a mode needs one that is ``None``.
@@ -444,7 +445,7 @@ class GnssNoise:
 
 @dataclass(frozen=True)
 class Scenario:
-    """A straight, unaccelerated flight observed by an IMU and a GPS receiver.
+    r"""A straight, unaccelerated flight observed by an IMU and a GPS receiver.
 
     Attributes
     ----------
@@ -467,19 +468,19 @@ class Scenario:
         Averaging time (s) of the initialisation (levelling, gyro-bias and vertical
         accelerometer calibration); ``None`` for a run without initialisation.
     heading_sigma : float
-        1-sigma true heading offset from the GPS track (crab angle), rad: what Eq. 4 cannot see.
+        1-:math:`\sigma` true heading offset from the GPS track (crab angle), rad: what Eq. 4 cannot see.
     pos0_sigma, vel0_sigma : float
         Errors of the initial GPS position (m) and velocity (m/s).
     clock_bias_sigma, clock_drift_sigma : float
         Initial clock uncertainty (m, m/s).
     clock_phase_walk, clock_drift_walk : float
-        Clock random walks, root PSD (m/sqrt(s), m/s/sqrt(s)).
+        Clock random walks, root PSD (m/√s, m/s/√s).
     accel_bias_walk, gyro_bias_walk : float
         Filter tuning of the bias random walks (the truth biases are constant).
     baselines_b : (nb, 3) array or None
-        Antenna baselines A0->A1, ..., A0->A_nb in body axes (m), ``nb >= 1`` (KZL's system
-        has two); ``None`` without a multi-antenna system (the double-difference mode needs
-        them).
+        Antenna baselines :math:`A_0 \to A_1, \dots, A_0 \to A_{n_b}` in body axes (m),
+        ``nb >= 1`` (KZL's system has two); ``None`` without a multi-antenna system (the
+        double-difference mode needs them).
     """
 
     velocity_ned: Array
@@ -515,7 +516,7 @@ class Scenario:
 
 @dataclass(frozen=True)
 class MonteCarloResult:
-    """Errors (estimated - true) at each GPS epoch, for every run, and the filter's 1-sigma.
+    r"""Errors (estimated - true) at each GPS epoch, for every run, and the filter's 1-:math:`\sigma`.
 
     Attributes
     ----------
@@ -526,7 +527,7 @@ class MonteCarloResult:
     att_err : (N, K, 3) arrays
         Roll, pitch, heading errors (rad).
     pos_sigma, vel_sigma, att_sigma : (K, 3) arrays
-        Filter 1-sigma (root of the run-averaged variance); attitude mapped to Euler angles.
+        Filter 1-:math:`\sigma` (root of the run-averaged variance); attitude mapped to Euler angles.
     n_visible : (K,) int array
     """
 
@@ -616,7 +617,7 @@ def run_monte_carlo(
     batches: int = 1,
     n_jobs: int | None = None,
 ) -> MonteCarloResult:
-    """Seeded Monte Carlo of one filter configuration over ``n_runs`` runs, batched.
+    r"""Seeded Monte Carlo of one filter configuration over ``n_runs`` runs, batched.
 
     The same ``seed`` gives the same truth (IMU errors, noises, GPS noises) for every
     ``mode``, so configurations are compared on common random numbers. The runs advance
@@ -655,7 +656,7 @@ def run_monte_carlo(
     -------
     MonteCarloResult
         Per-run position (m), velocity (m/s) and Euler-angle (rad) errors at each GPS epoch,
-        the filter's mean 1-sigma of each, and the number of visible satellites.
+        the filter's mean 1-:math:`\sigma` of each, and the number of visible satellites.
 
     Raises
     ------
@@ -740,9 +741,9 @@ def monte_carlo_key(
     attitude_min_sats: int = 4,
     batches: int = 1,
 ) -> str:
-    """Digest of everything the numbers of :func:`run_monte_carlo` depend on, for memoising runs.
+    r"""Digest of everything the numbers of :func:`run_monte_carlo` depend on, for memoising runs.
 
-    Two calls with the same key return the same errors and 1-sigma (``n_jobs`` does not change
+    Two calls with the same key return the same errors and 1-:math:`\sigma` (``n_jobs`` does not change
     them; the result's ``n_visible`` echoes the scenario's schedule). The
     key holds every argument and every field of the scenario exactly, except what the call
     provably never reads: the stand-alone INS (``"ins"``) uses no GPS measurement, so of the
@@ -864,11 +865,11 @@ def run_monte_carlo_batch(
     initialise: bool = True,
     attitude_min_sats: int = 4,
 ) -> list[MonteCarloResult]:
-    """:func:`run_monte_carlo` of several scenarios in one vectorised call (a band's runs).
+    r""":func:`run_monte_carlo` of several scenarios in one vectorised call (a band's runs).
 
     The leading axis of every array is (scenario x Monte Carlo run). Each scenario takes exactly
     the random numbers it takes alone (common random numbers across the scenarios: each draw is
-    made once and scaled by each scenario's own sigma), and each run sees the arithmetic it sees
+    made once and scaled by each scenario's own :math:`\sigma`), and each run sees the arithmetic it sees
     alone, so the results equal ``[run_monte_carlo(sc, mode, n_runs, seed, ...) for sc in
     scenarios]`` (``batches=1``). The scenarios must share the flight, the rates, the satellites
     and the antennas (:func:`batch_group_key`); noises, initial sigmas, the IMU's errors, the
@@ -957,9 +958,9 @@ def _monte_carlo_batch(
     initialise: bool,
     attitude_min_sats: Sequence[int],
 ) -> list[tuple[MonteCarloResult, Array, Array, Array]]:
-    """``n_runs`` runs from ``default_rng(seed)`` of each scenario of ``scs`` (one task of
+    r"""``n_runs`` runs from ``default_rng(seed)`` of each scenario of ``scs`` (one task of
     :func:`run_monte_carlo`, or one batch of :func:`run_monte_carlo_batch`): per scenario, the
-    result without its 1-sigma columns, and the run-averaged variances of position, velocity and
+    result without its 1-:math:`\sigma` columns, and the run-averaged variances of position, velocity and
     attitude.
 
     The scenarios share everything :func:`batch_group_key` digests; what else they hold (noises,

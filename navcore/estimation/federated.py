@@ -79,7 +79,8 @@ def lever_arm_velocity(
 ) -> tuple[Array, Array]:
     r"""Rigid-body map from navigation states to aperture velocity and its Jacobian (WF Eq. (10)).
 
-    ``T(x_N) = v + omega x r`` with ``x_N = [v, omega]``, all in one frame.
+    :math:`T(\mathbf x_N) = \mathbf v + \boldsymbol\omega \times \mathbf r` with ``x_N = [v, omega]``, all in
+    one frame.
 
     Parameters
     ----------
@@ -135,12 +136,12 @@ def navigation_mapped_covariance(tau: ArrayLike, P_N: ArrayLike, Q_T: ArrayLike)
     P_N : (k, k) array
         Covariance of the navigation states (their units squared).
     Q_T : (m, m) array
-        Covariance of the mapping uncertainty, (m/s)^2.
+        Covariance of the mapping uncertainty, (m/s)².
 
     Returns
     -------
     (m, m) ndarray
-        Covariance of the mapped local state, (m/s)^2.
+        Covariance of the mapped local state, (m/s)².
 
     Raises
     ------
@@ -171,21 +172,23 @@ def navigation_mapped_covariance(tau: ArrayLike, P_N: ArrayLike, Q_T: ArrayLike)
 def accelerometer_predict(
     x: ArrayLike, P: ArrayLike, accel: ArrayLike, Q_a: ArrayLike, Ts: float
 ) -> tuple[Array, Array]:
-    """Time update of the accelerometer-integration filter (WF Eqs. (13)-(14), first lines).
+    r"""Time update of the accelerometer-integration filter (WF Eqs. (13)-(14), first lines).
 
-    It propagates the process model of WF Eq. (12), ``x(k+1) = x(k) + y_a(k) Ts + w_a(k) Ts``
-    with ``Cov w_a = Q_a``: ``x- = x + y_a Ts`` and ``P- = P + Q_a Ts^2``.
+    It propagates the process model of WF Eq. (12), :math:`\mathbf x(k+1) = \mathbf x(k) + \mathbf y_a(k) T_s
+    + \mathbf w_a(k) T_s`
+    with :math:`\operatorname{Cov} \mathbf w_a = \mathbf Q_a`: :math:`\mathbf x^- = \mathbf x + \mathbf y_a
+    T_s` and :math:`\mathbf P^- = \mathbf P + \mathbf Q_a T_s^2`.
 
     Parameters
     ----------
     x : (n,) array
         Velocity estimate, m/s.
     P : (n, n) array
-        Its covariance, (m/s)^2 (symmetric positive semi-definite).
+        Its covariance, (m/s)² (symmetric positive semi-definite).
     accel : (n,) array
-        Measured acceleration ``y_a``, m/s^2.
+        Measured acceleration ``y_a``, m/s².
     Q_a : (n, n) array
-        Covariance of the accelerometer noise ``w_a``, (m/s^2)^2.
+        Covariance of the accelerometer noise ``w_a``, (m/s²)².
     Ts : float
         Sample interval, s (``> 0``).
 
@@ -194,7 +197,7 @@ def accelerometer_predict(
     x_pred : (n,) ndarray
         Predicted velocity, m/s.
     P_pred : (n, n) ndarray
-        Predicted covariance, (m/s)^2.
+        Predicted covariance, (m/s)².
 
     Raises
     ------
@@ -223,22 +226,24 @@ def accelerometer_predict(
 
 @implements("WF 12", "WF 13", "WF 14")
 def local_velocity_update(x: ArrayLike, P: ArrayLike, y_L: ArrayLike, R_L: ArrayLike) -> KalmanUpdate:
-    """Measurement update with a direct local velocity measurement (WF Eq. (13), corrected).
+    r"""Measurement update with a direct local velocity measurement (WF Eq. (13), corrected).
 
     The measurement model is the second line of WF Eq. (12), ``y_L = x + v_L`` with
-    ``Cov v_L = R_L``. The innovation is ``y_L - x-`` (a velocity); WF Eq. (13) prints
-    ``y_a - x-``. The posterior information is ``P-^-1 + R_L^-1`` (WF Eq. (14), second line).
+    :math:`\operatorname{Cov} \mathbf v_L = \mathbf R_L`. The innovation is :math:`\mathbf y_L - \mathbf x^-`
+    (a velocity); WF Eq. (13) prints
+    :math:`\mathbf y_a - \mathbf x^-`. The posterior information is :math:`(\mathbf P^-)^{-1} + \mathbf
+    R_L^{-1}` (WF Eq. (14), second line).
 
     Parameters
     ----------
     x : (n,) array
         Prior velocity, m/s.
     P : (n, n) array
-        Its covariance, (m/s)^2.
+        Its covariance, (m/s)².
     y_L : (n,) array
         Local velocity measurement, m/s.
     R_L : (n, n) array
-        Its noise covariance, (m/s)^2 (positive definite).
+        Its noise covariance, (m/s)² (positive definite).
 
     Returns
     -------
@@ -266,12 +271,13 @@ def local_velocity_update(x: ArrayLike, P: ArrayLike, y_L: ArrayLike, R_L: Array
 
 @implements("WF 14")
 def accelerometer_steady_state_isotropic(sigma_a: float, Ts: float, sigma_L: float) -> ScalarSteadyState:
-    """Per-axis steady state of WF Eq. (14) for ``Q_a = sigma_a^2 I``, ``R_L = sigma_L^2 I``.
+    r"""Per-axis steady state of WF Eq. (14) for :math:`\mathbf Q_a = \sigma_a^2 I`, :math:`\mathbf R_L =
+    \sigma_L^2 I`.
 
     Parameters
     ----------
     sigma_a : float
-        Accelerometer noise standard deviation, m/s^2.
+        Accelerometer noise standard deviation, m/s².
     Ts : float
         Update interval, s.
     sigma_L : float
@@ -280,8 +286,8 @@ def accelerometer_steady_state_isotropic(sigma_a: float, Ts: float, sigma_L: flo
     Returns
     -------
     ScalarSteadyState
-        ``prior`` = P(k/k-1), ``posterior`` = P(k/k) in (m/s)^2, and the gain. For
-        ``sigma_a Ts << sigma_L`` the posterior is close to ``sigma_a Ts sigma_L``.
+        ``prior`` = P(k/k-1), ``posterior`` = P(k/k) in (m/s)², and the gain. For
+        :math:`\sigma_a T_s \ll \sigma_L` the posterior is close to :math:`\sigma_a T_s \sigma_L`.
 
     Raises
     ------
@@ -302,26 +308,27 @@ def accelerometer_steady_state_isotropic(sigma_a: float, Ts: float, sigma_L: flo
 
 @implements("WF 14")
 def accelerometer_steady_state(Q_a: ArrayLike, R_L: ArrayLike, Ts: float) -> tuple[Array, Array]:
-    """Matrix steady state of WF Eq. (14): prior and posterior covariances.
+    r"""Matrix steady state of WF Eq. (14): prior and posterior covariances.
 
-    Solves the filter Riccati equation for ``Phi = I, Q = Q_a Ts^2, H = I, R = R_L`` with
+    Solves the filter Riccati equation for :math:`\Phi = I,\ Q = \mathbf Q_a T_s^2,\ H = I,\ R = \mathbf R_L`
+    with
     ``scipy.linalg.solve_discrete_are``.
 
     Parameters
     ----------
     Q_a : (n, n) array
-        Covariance of the accelerometer noise, (m/s^2)^2.
+        Covariance of the accelerometer noise, (m/s²)².
     R_L : (n, n) array
-        Covariance of the local velocity measurement, (m/s)^2 (positive definite).
+        Covariance of the local velocity measurement, (m/s)² (positive definite).
     Ts : float
         Sample interval, s (``> 0``).
 
     Returns
     -------
     prior : (n, n) ndarray
-        Steady-state prior covariance, (m/s)^2.
+        Steady-state prior covariance, (m/s)².
     posterior : (n, n) ndarray
-        Steady-state posterior covariance, (m/s)^2.
+        Steady-state posterior covariance, (m/s)².
 
     Raises
     ------
@@ -354,22 +361,22 @@ def accelerometer_steady_state(Q_a: ArrayLike, R_L: ArrayLike, Ts: float) -> tup
 def gps_doppler_update(
     x_prior: ArrayLike, P_prior: ArrayLike, y_G: ArrayLike, H_G: ArrayLike, R_G: ArrayLike
 ) -> KalmanUpdate:
-    """Single-step GPS-Doppler update of the accelerometer prior (WF Eq. (16)).
+    r"""Single-step GPS-Doppler update of the accelerometer prior (WF Eq. (16)).
 
-    ``y_G = H_G x + v_G`` (WF Eq. (15)).
+    :math:`\mathbf y_G = \mathbf H_G \mathbf x + \mathbf v_G` (WF Eq. (15)).
 
     Parameters
     ----------
     x_prior : (n,) array
         Prior velocity, m/s.
     P_prior : (n, n) array
-        Its covariance, (m/s)^2.
+        Its covariance, (m/s)².
     y_G : (m,) array
         Doppler measurement, Hz.
     H_G : (m, n) array
         Doppler measurement matrix, Hz per (m/s).
     R_G : (m, m) array
-        Doppler noise covariance, Hz^2 (positive definite).
+        Doppler noise covariance, Hz² (positive definite).
 
     Returns
     -------
@@ -403,16 +410,16 @@ def gps_doppler_covariance(P_prior: ArrayLike, H_G: ArrayLike, R_G: ArrayLike) -
     Parameters
     ----------
     P_prior : (n, n) array
-        Prior velocity covariance, (m/s)^2 (positive definite).
+        Prior velocity covariance, (m/s)² (positive definite).
     H_G : (m, n) array
         Doppler measurement matrix, Hz per (m/s).
     R_G : (m, m) array
-        Doppler noise covariance, Hz^2 (positive definite).
+        Doppler noise covariance, Hz² (positive definite).
 
     Returns
     -------
     (n, n) ndarray
-        Posterior covariance, (m/s)^2.
+        Posterior covariance, (m/s)².
 
     Raises
     ------
@@ -521,9 +528,10 @@ def federated_fusion(
 
 @implements("WF 20")
 def fused_error_covariance(covariances: Sequence[ArrayLike | float | None], joint: ArrayLike) -> Array:
-    """True covariance of the fused error given the joint local-error covariance (WF Eq. (20)).
+    r"""True covariance of the fused error given the joint local-error covariance (WF Eq. (20)).
 
-    ``Cov = P_D [P_1^-1 ... P_N^-1] P [P_1^-1 ... P_N^-1]^T P_D``, where ``P`` is the
+    :math:`\operatorname{Cov} = \mathbf P_D [\mathbf P_1^{-1} \cdots \mathbf P_N^{-1}]\, \mathbf P\, [\mathbf
+    P_1^{-1} \cdots \mathbf P_N^{-1}]^T \mathbf P_D`, where ``P`` is the
     ``(N n) x (N n)`` joint covariance of the stacked local errors, whose ``(i, j)`` block is the
     cross-covariance of estimators ``i`` and ``j`` (WF prints the (2, 3) block as ``P_NG``; it is
     ``P_LG``). Blocks belonging to outages are ignored (zero weight).
@@ -531,16 +539,16 @@ def fused_error_covariance(covariances: Sequence[ArrayLike | float | None], join
     Parameters
     ----------
     covariances : sequence of (n, n) array, float or None
-        Covariance of each local estimator, (m/s)^2; ``None``, a scalar or an infinite
+        Covariance of each local estimator, (m/s)²; ``None``, a scalar or an infinite
         diagonal marks an outage.
     joint : (N n, N n) array
-        Joint covariance of the stacked local errors, (m/s)^2 (symmetric positive
+        Joint covariance of the stacked local errors, (m/s)² (symmetric positive
         semi-definite once outage blocks are zeroed).
 
     Returns
     -------
     (n, n) ndarray
-        Covariance of the fused error, (m/s)^2.
+        Covariance of the fused error, (m/s)².
 
     Raises
     ------
@@ -588,12 +596,12 @@ def feasible_weights(
     Parameters
     ----------
     covariances : sequence of (n, n) array, float or None
-        Covariance of each local estimator, (m/s)^2; ``None``, a scalar or an infinite
+        Covariance of each local estimator, (m/s)²; ``None``, a scalar or an infinite
         diagonal marks an outage.
     directions : sequence of (n,) array, optional
         Non-zero direction :math:`\mathbf z_i` per estimator (WF Eq. (22)).
     sigmas : (N,) array, optional
-        Positive variances :math:`\sigma_i`, (m/s)^2, per estimator (Remark (i)).
+        Positive variances :math:`\sigma_i`, (m/s)², per estimator (Remark (i)).
 
     Returns
     -------
@@ -603,7 +611,8 @@ def feasible_weights(
     Raises
     ------
     ValueError
-        If a direction is zero, not finite or of the wrong length, or a sigma is not positive.
+        If a direction is zero, not finite or of the wrong length, or a variance in ``sigmas``
+        is not positive.
 
     References
     ----------
@@ -653,7 +662,7 @@ def optimal_weights(covariances: Sequence[ArrayLike | float | None]) -> Array:
     Parameters
     ----------
     covariances : sequence of (n, n) array, float or None
-        Covariance of each local estimator, (m/s)^2; ``None``, a scalar or an infinite
+        Covariance of each local estimator, (m/s)²; ``None``, a scalar or an infinite
         diagonal marks an outage.
 
     Returns
@@ -691,7 +700,7 @@ def federated_covariance_bound(
     Parameters
     ----------
     covariances : sequence of (n, n) array, float or None
-        Covariance of each local estimator, (m/s)^2; ``None``, a scalar or an infinite
+        Covariance of each local estimator, (m/s)²; ``None``, a scalar or an infinite
         diagonal marks an outage.
     weights : (N,) array, optional
         Weights :math:`k_i` (dimensionless); default :func:`feasible_weights`.
@@ -699,7 +708,7 @@ def federated_covariance_bound(
     Returns
     -------
     (n, n) ndarray
-        Bound on the covariance of the fused error, (m/s)^2.
+        Bound on the covariance of the fused error, (m/s)².
 
     Raises
     ------
@@ -743,13 +752,13 @@ def minkowski_trace_bound(covariances: Sequence[ArrayLike | float | None]) -> fl
     Parameters
     ----------
     covariances : sequence of (n, n) array, float or None
-        Covariance of each local estimator, (m/s)^2; ``None``, a scalar or an infinite
+        Covariance of each local estimator, (m/s)²; ``None``, a scalar or an infinite
         diagonal marks an outage.
 
     Returns
     -------
     float
-        Bound on the mean squared fused error, (m/s)^2.
+        Bound on the mean squared fused error, (m/s)².
 
     References
     ----------
@@ -772,7 +781,7 @@ def minkowski_trace_bound(covariances: Sequence[ArrayLike | float | None]) -> fl
 def federated_improvement_db(
     covariances: Sequence[ArrayLike | float | None], reference_sigma: float
 ) -> float:
-    r"""Improvement (dB) of the federated per-axis bound over a reference per-axis sigma.
+    r"""Improvement (dB) of the federated per-axis bound over a reference per-axis :math:`\sigma`.
 
     :math:`20\log_{10}(\sigma_D/\sigma_{ref})` with
     :math:`\sigma_D = \sqrt{b/n}`, ``b`` the Minkowski trace bound of WF Eq. (23)
@@ -783,7 +792,7 @@ def federated_improvement_db(
     Parameters
     ----------
     covariances : sequence of (n, n) arrays, ``None`` or ``inf``
-        The local estimators' error covariances (units^2; an outage is ``None`` or ``inf``).
+        The local estimators' error covariances (units²; an outage is ``None`` or ``inf``).
     reference_sigma : float
         Per-axis standard deviation to compare with, in the units of the states, ``> 0``.
 

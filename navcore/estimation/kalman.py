@@ -230,7 +230,7 @@ def _model_matrix(name: str, value: ArrayLike, shape: tuple[int, int]) -> Array:
 def kf_predict(
     x: ArrayLike, P: ArrayLike, Phi: ArrayLike, Q: ArrayLike, *, validate: bool = True
 ) -> tuple[Array, Array]:
-    """Kalman prediction ``x- = Phi x``, ``P- = Phi P Phi^T + Q``.
+    r"""Kalman prediction :math:`x^- = \Phi x`, :math:`P^- = \Phi P \Phi^T + Q`.
 
     Parameters
     ----------
@@ -314,7 +314,7 @@ class KalmanUpdate(NamedTuple):
     innovation : (m,) ndarray
         ``z - H x`` (measurement units).
     S : (m, m) ndarray
-        Innovation covariance ``H P H^T + R``.
+        Innovation covariance :math:`H P H^T + R`.
     """
 
     x: Array
@@ -360,7 +360,7 @@ def kf_update(
 
     Notes
     -----
-    ``P+ = (I-KH) P- (I-KH)^T + K R K^T`` (Joseph form, Bucy and Joseph 1968, reference 3 of
+    :math:`P^+ = (I - KH) P^- (I - KH)^T + K R K^T` (Joseph form, Bucy and Joseph 1968, reference 3 of
     the module): it stays symmetric and positive semi-definite under round-off, unlike ``(I-KH) P-``.
 
     An epoch without measurements (``z`` of length 0, an epoch without satellites) is a
@@ -428,7 +428,7 @@ def _no_update(x: ArrayLike, P: ArrayLike) -> KalmanUpdate:
 
 
 def information_from_covariance(x: ArrayLike, P: ArrayLike) -> tuple[Array, Array]:
-    """Return the information vector ``y = P^-1 x`` and matrix ``Y = P^-1``.
+    """Return the information vector :math:`y = P^{-1} x` and matrix ``Y = P^-1``.
 
     Parameters
     ----------
@@ -440,7 +440,7 @@ def information_from_covariance(x: ArrayLike, P: ArrayLike) -> tuple[Array, Arra
     Returns
     -------
     y : (n,) ndarray
-        Information vector ``P^-1 x``.
+        Information vector :math:`P^{-1} x`.
     Y : (n, n) ndarray
         Information matrix ``P^-1``, exactly symmetric.
 
@@ -466,12 +466,12 @@ def information_from_covariance(x: ArrayLike, P: ArrayLike) -> tuple[Array, Arra
 
 
 def covariance_from_information(y: ArrayLike, Y: ArrayLike) -> tuple[Array, Array]:
-    """Return the state ``x = Y^-1 y`` and covariance ``P = Y^-1`` from information form.
+    """Return the state :math:`x = Y^{-1} y` and covariance ``P = Y^-1`` from information form.
 
     Parameters
     ----------
     y : (n,) array
-        Information vector ``P^-1 x`` (units of the state divided by its variance).
+        Information vector :math:`P^{-1} x` (units of the state divided by its variance).
     Y : (n, n) array
         Information matrix ``P^-1`` (symmetric positive definite).
 
@@ -508,13 +508,13 @@ def information_update(
 ) -> tuple[Array, Array]:
     """Information-form measurement update.
 
-    ``Y+ = Y- + H^T R^-1 H`` and ``y+ = y- + H^T R^-1 z``. A zero information matrix
+    :math:`Y^+ = Y^- + H^T R^{-1} H` and :math:`y^+ = y^- + H^T R^{-1} z`. A zero information matrix
     (no prior knowledge) is allowed, which the covariance form cannot express.
 
     Parameters
     ----------
     y : (n,) array
-        Prior information vector ``P^-1 x``.
+        Prior information vector :math:`P^{-1} x`.
     Y : (n, n) array
         Prior information matrix ``P^-1`` (positive semi-definite).
     z : (m,) array

@@ -1,20 +1,28 @@
-"""Linear minimum-mean-square-error estimation with a nonrandom nuisance vector.
+r"""Linear minimum-mean-square-error estimation with a nonrandom nuisance vector.
 
-Observation model (ATC-10 Appendix H, Eq. H.1)::
+Observation model (ATC-10 Appendix H, Eq. H.1):
+
+.. math::
 
     z = F x + G y + n,
 
-with x random (mean mu_x, covariance P_x), y nonrandom and completely unknown, and noise n
-(mean mu_n, covariance P_n, cross-covariance P_nx with x). The estimator of y is generalised
-least squares with the "noise" ``eps = n + F x`` (Eqs. H.4-H.8); the estimator of x is the
-LMMSE estimator among linear functions of z that do not depend on y, i.e. that annihilate
-the columns of G (Eqs. H.9-H.16). With P_nx = 0 the covariances take the information forms
-(H.21)-(H.22). For a scalar x and white noise the gain is
-``gamma = sigma_x^2 / (sigma^2 + sigma_x^2 F'(I - P_G)F)`` (Eq. H.26; the printed numerator
-sigma^2 is erratum E4-10).
+with :math:`x` random (mean :math:`\mu_x`, covariance :math:`P_x`), :math:`y` nonrandom and
+completely unknown, and noise :math:`n` (mean :math:`\mu_n`, covariance :math:`P_n`,
+cross-covariance :math:`P_{nx}` with :math:`x`). The estimator of :math:`y` is generalised
+least squares with the "noise" :math:`\epsilon = n + F x` (Eqs. H.4-H.8); the estimator of
+:math:`x` is the LMMSE estimator among linear functions of :math:`z` that do not depend on
+:math:`y`, i.e. that annihilate the columns of :math:`G` (Eqs. H.9-H.16). With
+:math:`P_{nx} = 0` the covariances take the information forms (H.21)-(H.22). For a scalar
+:math:`x` and white noise the gain is
 
-In ATC-10 Section 4 x is the clock error tau_n (F = 1) and y the aircraft position
-(G = the satellite matrix).
+.. math::
+
+    \gamma = \frac{\sigma_x^2}{\sigma^2 + \sigma_x^2 F'(I - P_G) F}
+
+(Eq. H.26; the printed numerator :math:`\sigma^2` is erratum E4-10).
+
+In ATC-10 Section 4 :math:`x` is the clock error :math:`\tau_n` (:math:`F = 1`) and
+:math:`y` the aircraft position (:math:`G` = the satellite matrix).
 """
 
 from __future__ import annotations
@@ -44,10 +52,10 @@ __all__ = [
 
 @dataclass(frozen=True)
 class NuisanceLMMSE:
-    """Gains and error covariances of the joint estimator (ATC-10 App. H).
+    r"""Gains and error covariances of the joint estimator (ATC-10 App. H).
 
     ``x_hat = H (z - mu_eps) + mu_x`` and ``y_hat = K (z - mu_eps)`` with
-    ``mu_eps = mu_n + F mu_x``. ``P_x_err`` is (H.16) and ``P_y_err`` is (H.8).
+    :math:`\mu_\epsilon = \mu_n + F \mu_x`. ``P_x_err`` is (H.16) and ``P_y_err`` is (H.8).
 
     Attributes
     ----------
@@ -88,7 +96,7 @@ def lmmse_with_nuisance(
     P_n: np.ndarray,
     P_xn: np.ndarray | None = None,
 ) -> NuisanceLMMSE:
-    """Joint estimator of random x and nonrandom y (ATC-10 Eqs. H.5-H.8, H.14-H.16).
+    r"""Joint estimator of random x and nonrandom y (ATC-10 Eqs. H.5-H.8, H.14-H.16).
 
     Parameters
     ----------
@@ -105,7 +113,7 @@ def lmmse_with_nuisance(
     P_n : (r, r) array
         Noise covariance (units of z squared).
     P_xn : (p, r) array, optional
-        Cross-covariance ``E[(x - mu_x)(n - mu_n)']`` (default 0).
+        Cross-covariance :math:`E[(x - \mu_x)(n - \mu_n)']` (default 0).
 
     Returns
     -------
@@ -163,10 +171,15 @@ def lmmse_with_nuisance(
 def lmmse_with_nuisance_information_form(
     F: np.ndarray, G: np.ndarray, P_x: np.ndarray, P_n: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Error covariances in information form for P_nx = 0 (ATC-10 Eqs. H.21-H.22).
+    r"""Error covariances in information form for :math:`P_{nx} = 0` (ATC-10 Eqs. H.21-H.22).
 
-    ``P_x_err = [P_x^-1 + F'Pn^-1 F - F'Pn^-1 G (G'Pn^-1 G)^-1 G'Pn^-1 F]^-1`` and
-    ``P_y_err = (G'Pn^-1 G)^-1 + (G'Pn^-1 G)^-1 G'Pn^-1 F P_x_err F'Pn^-1 G (G'Pn^-1 G)^-1``.
+    With :math:`A = (G' P_n^{-1} G)^{-1}`,
+
+    .. math::
+
+        P_{x,err} &= \left[P_x^{-1} + F' P_n^{-1} F\right. \\
+            &\qquad \left. - F' P_n^{-1} G A G' P_n^{-1} F\right]^{-1}, \\
+        P_{y,err} &= A + A G' P_n^{-1} F P_{x,err} F' P_n^{-1} G A.
 
     Parameters
     ----------
@@ -191,7 +204,7 @@ def lmmse_with_nuisance_information_form(
     ValueError
         If an array has a non-finite element.
     numpy.linalg.LinAlgError
-        If ``P_x``, ``P_n`` or ``G' P_n^-1 G`` is singular.
+        If ``P_x``, ``P_n`` or :math:`G' P_n^{-1} G` is singular.
 
     References
     ----------
@@ -219,12 +232,12 @@ def lmmse_with_nuisance_information_form(
 
 @implements("ATC10 H.26")
 def scalar_nuisance_gain(f: np.ndarray, G: np.ndarray, sigma: float, sigma_x: float) -> float:
-    """Gain of the scalar-x corollary (ATC-10 Eq. H.26, corrected numerator).
+    r"""Gain of the scalar-x corollary (ATC-10 Eq. H.26, corrected numerator).
 
-    ``x_hat = gamma f'(I - P_G)(z - f mu_x - mu_n) + mu_x`` with
-    ``gamma = sigma_x^2 / (sigma^2 + sigma_x^2 f'(I - P_G) f)``; the error variance is
-    ``sigma^2 gamma``. In ATC-10 Section 4 (f = 1, G = satellite matrix) this is
-    ``gamma_n = s_n / (sigma^2 + beta s_n)``.
+    :math:`\hat x = \gamma f'(I - P_G)(z - f \mu_x - \mu_n) + \mu_x` with
+    :math:`\gamma = \sigma_x^2 / (\sigma^2 + \sigma_x^2 f'(I - P_G) f)`; the error variance is
+    :math:`\sigma^2 \gamma`. In ATC-10 Section 4 (f = 1, G = satellite matrix) this is
+    :math:`\gamma_n = s_n / (\sigma^2 + \beta s_n)`.
 
     Parameters
     ----------

@@ -55,7 +55,7 @@ class ScalarSteadyState(NamedTuple):
 
 
 def scalar_riccati_steady_state(phi: float, q: float, h: float, r: float) -> ScalarSteadyState:
-    """Steady-state prior/posterior variance and gain of the scalar Kalman filter.
+    r"""Steady-state prior/posterior variance and gain of the scalar Kalman filter.
 
     Parameters
     ----------
@@ -63,7 +63,7 @@ def scalar_riccati_steady_state(phi: float, q: float, h: float, r: float) -> Sca
         Transition coefficient (dimensionless).
     q : float
         Process-noise variance per step, in the state's unit squared (``q >= 0``; ``q = 0``
-        with ``|phi| <= 1`` gives the trivial steady state 0).
+        with :math:`|\phi| \le 1` gives the trivial steady state 0).
     h : float
         Measurement coefficient (``h != 0``; measurement unit per state unit).
     r : float
@@ -72,7 +72,7 @@ def scalar_riccati_steady_state(phi: float, q: float, h: float, r: float) -> Sca
     Returns
     -------
     ScalarSteadyState
-        ``prior`` (P-), ``posterior`` (P+), ``gain`` K = P- h / (h^2 P- + r).
+        ``prior`` (P-), ``posterior`` (P+), ``gain`` :math:`K = P^- h / (h^2 P^- + r)`.
 
     Raises
     ------

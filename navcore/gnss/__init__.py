@@ -15,7 +15,7 @@ tracking
 acquisition
     acquisition search time over a code-phase by Doppler uncertainty region.
 antijam
-    correlation and discriminators, effective C/N0 and loss of lock under jamming,
+    correlation and discriminators, effective :math:`C/N_0` and loss of lock under jamming,
     free-space J/S along a trajectory, CEP under jamming.
 architectures
     INS/GPS integration architectures as named state layouts.

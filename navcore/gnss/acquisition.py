@@ -51,12 +51,13 @@ Array = NDArray[np.float64]
 
 @implements("SP Table 2.7")
 def search_cells(sigma: ArrayLike, cell: float, n_sigma: float = 1.0) -> Array | int:
-    """Number of cells covering +-n_sigma*sigma: ``ceil(2 n_sigma sigma / cell)``, at least 1.
+    r"""Number of cells covering :math:`\pm n_\sigma \sigma` (:math:`n_\sigma` = ``n_sigma``):
+    :math:`\lceil 2 n_\sigma \sigma / \mathrm{cell} \rceil`, at least 1.
 
     Parameters
     ----------
     sigma : array_like
-        1-sigma uncertainty (``>= 0``; m, m/s or Hz, the unit of ``cell``).
+        1-:math:`\sigma` uncertainty (``>= 0``; m, m/s or Hz, the unit of ``cell``).
     cell : float
         Cell width (``> 0``), same unit.
     n_sigma : float, default 1.0
@@ -143,14 +144,15 @@ def search_time(
     rate_cell_mps: float,
     n_sigma: float = 1.0,
 ) -> Array | float:
-    """Time to search the +-n_sigma region (SP Sec. 2.5 Delta T, brackets read as ceilings).
+    r"""Time to search the :math:`\pm n_\sigma \sigma` region (SP Sec. 2.5 :math:`\Delta T`, brackets
+    read as ceilings).
 
     Parameters
     ----------
     sigma_range_m : array_like
-        1-sigma range uncertainty, m (``>= 0``).
+        1-:math:`\sigma` range uncertainty, m (``>= 0``).
     sigma_range_rate_mps : array_like
-        1-sigma range-rate uncertainty, m/s (``>= 0``).
+        1-:math:`\sigma` range-rate uncertainty, m/s (``>= 0``).
     dwell_s : float
         Dwell per cell, s (``> 0``).
     range_cell_m : float
@@ -218,7 +220,7 @@ def doppler_cell_hz(dwell_s: float) -> float:
 
 
 def range_rate_from_doppler(doppler_hz: ArrayLike, wavelength_m: float) -> Array | float:
-    """Range rate corresponding to a Doppler shift: ``f * lambda``.
+    r"""Range rate corresponding to a Doppler shift: :math:`f \lambda`.
 
     Parameters
     ----------
@@ -248,9 +250,9 @@ def range_rate_from_doppler(doppler_hz: ArrayLike, wavelength_m: float) -> Array
 
 
 def probability_outside_sigma_box(n_dims: int = 1, k: float = 1.0) -> float:
-    r"""Probability that an n-D standard Gaussian falls outside the +-k sigma box.
+    r"""Probability that an n-D standard Gaussian falls outside the :math:`\pm k \sigma` box.
 
-    :math:`1 - (1 - 2\Phi(-k))^n`, evaluated as ``-expm1(n log1p(-2 Phi(-k)))``.
+    :math:`1 - (1 - 2\Phi(-k))^n`, evaluated as :math:`1 - (1 - 2\Phi(-k))^n`.
 
     Parameters
     ----------
@@ -271,7 +273,7 @@ def probability_outside_sigma_box(n_dims: int = 1, k: float = 1.0) -> float:
 
     Notes
     -----
-    The chance that a +-1 sigma search region of Schmidt & Phillips, Sec. 2.5, misses the
+    The chance that a :math:`\pm 1 \sigma` search region of Schmidt & Phillips, Sec. 2.5, misses the
     signal.
 
     Examples

@@ -1,4 +1,4 @@
-r"""Code tracking under jamming: correlation, effective C/N0, loss of lock, free-space J/S, CEP.
+r"""Code tracking under jamming: correlation, effective :math:`C/N_0`, loss of lock, free-space J/S, CEP.
 
 Ideal correlation and early-minus-late discriminator (spacing :math:`d` chips):
 
@@ -26,7 +26,7 @@ A loop that needs :math:`(C/N_0)_{eff} \ge \gamma` loses lock at
 The last part is a reduced navigator model for a guided munition: two horizontal channels,
 each with position, velocity, tilt, a Markov accelerometer bias, a Markov gyro bias and a
 fixed nonorthogonality term, updated once a second by a position fix whose noise follows
-the code-tracking variance at the effective C/N0 while the code loop is in lock, plus an
+the code-tracking variance at the effective :math:`C/N_0` while the code loop is in lock, plus an
 unestimated range bias. The Kalman gains depend only on the J/S history, so the Monte
 Carlo runs are vectorised: all runs share one covariance recursion.
 
@@ -80,7 +80,7 @@ Array = NDArray[np.float64]
 
 
 def ideal_correlation(tau_chips: ArrayLike) -> Array | float:
-    """Ideal code autocorrelation, ``1 - |tau|`` inside one chip, 0 outside (SP Sec. 3.0).
+    r"""Ideal code autocorrelation, :math:`1 - |\tau|` inside one chip, 0 outside (SP Sec. 3.0).
 
     Parameters
     ----------
@@ -149,9 +149,9 @@ def early_minus_late(tau_chips: ArrayLike, spacing_chips: float = 0.5) -> Array 
 
 
 def spectral_separation_q(jammer_bandwidth_hz: float, chip_rate_hz: float) -> float:
-    """``Q = 1/(Rc kappa)`` for a flat jammer of the given bandwidth centred on a BPSK signal.
+    r""":math:`Q = 1/(R_c \kappa)` for a flat jammer of the given bandwidth centred on a BPSK signal.
 
-    ``kappa`` integrates the signal's normalised spectrum Tc sinc^2(f Tc) against the
+    ``kappa`` integrates the signal's normalised spectrum :math:`T_c \operatorname{sinc}^2(f T_c)` against the
     jammer's flat spectrum 1/B over +-B/2. A narrow jammer gives Q -> 1; a jammer as wide as
     the main lobe (B = 2 Rc) gives about 2.2.
 
@@ -197,7 +197,8 @@ def spectral_separation_q(jammer_bandwidth_hz: float, chip_rate_hz: float) -> fl
 def effective_cn0_dbhz(
     cn0_dbhz: ArrayLike, js_db: ArrayLike, chip_rate_hz: float, q: float = 2.0
 ) -> Array | float:
-    """Effective C/N0 under jamming: ``-10 log10(1/(C/N0) + (J/S)/(Q Rc))``.
+    r"""Effective :math:`C/N_0` under jamming: :math:`-10 \log_{10}\left(\frac{1}{C/N_0} + \frac{J/S}{Q
+    R_c}\right)`.
 
     Parameters
     ----------
@@ -213,7 +214,7 @@ def effective_cn0_dbhz(
     Returns
     -------
     float or ndarray
-        Effective C/N0, dB-Hz.
+        Effective :math:`C/N_0`, dB-Hz.
 
     Raises
     ------
@@ -241,7 +242,7 @@ def effective_cn0_dbhz(
 def js_for_effective_cn0(
     cn0_dbhz: float, threshold_dbhz: float, chip_rate_hz: float, q: float = 2.0
 ) -> float:
-    """J/S at which the effective C/N0 falls to ``threshold_dbhz`` (loss of lock).
+    """J/S at which the effective :math:`C/N_0` falls to ``threshold_dbhz`` (loss of lock).
 
     Parameters
     ----------
@@ -293,7 +294,7 @@ def free_space_js_db(
     signal_power_dbw: float,
     jammer_gain_db: float = 0.0,
 ) -> Array | float:
-    """Free-space J/S: ``P_J + G_J - 20 log10(4 pi d / lambda) - S``.
+    r"""Free-space J/S: :math:`P_J + G_J - 20 \log_{10}(4 \pi d / \lambda) - S`.
 
     Parameters
     ----------
@@ -342,7 +343,7 @@ def free_space_js_db(
 def code_tracking_sigma_chips(
     cn0_dbhz: ArrayLike, spacing_chips: float = 0.5, integration_s: float = 1.0, coherent_s: float = 0.02
 ) -> Array | float:
-    r"""1-sigma code-phase error (chips) of a noncoherent early-minus-late power DLL.
+    r"""1-:math:`\sigma` code-phase error (chips) of a noncoherent early-minus-late power DLL.
 
     .. math::
 
@@ -386,7 +387,7 @@ def code_tracking_sigma_chips(
     Raises
     ------
     ValueError
-        If ``spacing_chips``, ``integration_s`` or ``coherent_s`` is not positive or a C/N0 is
+        If ``spacing_chips``, ``integration_s`` or ``coherent_s`` is not positive or a :math:`C/N_0` is
         not finite.
 
     Examples
@@ -441,11 +442,11 @@ def cep_from_horizontal_errors(errors_m: ArrayLike) -> float:
 
 @dataclass(frozen=True)
 class NavigatorErrorModel:
-    """One horizontal channel of the reduced INS/GPS navigator (SI units, 1 sigma).
+    r"""One horizontal channel of the reduced INS/GPS navigator (SI units, 1-:math:`\sigma`).
 
     Attributes
     ----------
-    accel_bias, accel_tau_s : Markov accelerometer bias stability (m/s^2, 1 sigma,
+    accel_bias, accel_tau_s : Markov accelerometer bias stability (m/s², 1 sigma,
         stationary) and its correlation time (s).
     gyro_bias, gyro_tau_s : Markov gyro bias stability (rad/s, 1 sigma, stationary) and its
         correlation time (s).
@@ -474,14 +475,14 @@ class NavigatorErrorModel:
 
 @dataclass(frozen=True)
 class RunResult:
-    """Monte Carlo output: impact errors (runs, 2), final filter sigma per axis, lock history.
+    r"""Monte Carlo output: impact errors (runs, 2), final filter :math:`\sigma` per axis, lock history.
 
     Attributes
     ----------
     impact_errors_m : (runs, 2) ndarray
         Horizontal impact errors (north, east), m.
     filter_sigma_m : float
-        The filter's final 1-sigma per axis, m.
+        The filter's final 1-:math:`\sigma` per axis, m.
     locked : (N,) bool ndarray
         Code lock at each step.
     seed : int
@@ -522,12 +523,12 @@ def simulate_impact_errors(
     seed: int = 0,
     dt: float = 1.0,
 ) -> RunResult:
-    """Monte Carlo of the reduced navigator along a fix-noise history (NaN where unlocked).
+    r"""Monte Carlo of the reduced navigator along a fix-noise history (NaN where unlocked).
 
     Parameters
     ----------
     model : NavigatorErrorModel
-        Sensor, initial and geometry errors of one horizontal channel (SI, 1 sigma).
+        Sensor, initial and geometry errors of one horizontal channel (SI, 1-:math:`\sigma`).
     fix_sigma_m : array_like
         Per-axis position-fix noise at each 1-s step (m); NaN or inf marks steps with no fix
         (code loop out of lock: free inertial).
@@ -541,7 +542,7 @@ def simulate_impact_errors(
     Returns
     -------
     RunResult
-        Horizontal impact errors per run ``(runs, 2)`` (m), the filter's final 1-sigma per
+        Horizontal impact errors per run ``(runs, 2)`` (m), the filter's final 1-:math:`\sigma` per
         axis (m), the lock history and the seed.
 
     Raises

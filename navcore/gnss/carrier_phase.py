@@ -1,7 +1,7 @@
 r"""Multi-antenna attitude observations: Euler-angle attitude rows and double-difference
-carrier phase for three antennas (master A0, A1, A2).
+carrier phase for three antennas (master :math:`A_0`, :math:`A_1`, :math:`A_2`).
 
-Double difference between satellites n and master satellite m and antennas A0, Ai
+Double difference between satellites n and master satellite m and antennas :math:`A_0`, :math:`A_i`
 (KZL Eq. 15):
 
 .. math::
@@ -98,7 +98,7 @@ def double_difference_phase(
     sat_n : (..., 3) array
         Position of satellite n, m.
     r_a0 : (..., 3) array
-        Position of the master antenna A0, m.
+        Position of the master antenna :math:`A_0`, m.
     r_ai : (..., 3) array
         Position of antenna Ai, m.
     wavelength : float, default GPS_L1_WAVELENGTH_M
@@ -189,13 +189,13 @@ def dd_observation_rows(
 
 
 def dd_covariance(nu: int, sigma_phase: float, n_baselines: int = 2) -> Array:
-    """Covariance of the ``(nu - 1) * n_baselines`` double differences of one epoch.
+    r"""Covariance of the ``(nu - 1) * n_baselines`` double differences of one epoch.
 
     Each undifferenced phase (per antenna and satellite) has standard deviation
-    ``sigma_phase``; the DDs are ``D phi`` with the differencing matrix D, so the covariance is
-    ``sigma^2 D D^T``: ``4 sigma^2`` on the diagonal, ``2 sigma^2`` between DDs sharing a
+    ``sigma_phase``; the DDs are :math:`D \phi` with the differencing matrix D, so the covariance is
+    :math:`\sigma^2 D D^T`: :math:`4 \sigma^2` on the diagonal, :math:`2 \sigma^2` between DDs sharing a
     satellite or an antenna pair, ``sigma^2`` otherwise. Rows are ordered satellite by
-    satellite (n = 1..nu-1), baselines within.
+    satellite (:math:`n = 1, \dots, \nu - 1`), baselines within.
 
     Parameters
     ----------
@@ -209,7 +209,7 @@ def dd_covariance(nu: int, sigma_phase: float, n_baselines: int = 2) -> Array:
     Returns
     -------
     ((nu - 1) n_baselines, (nu - 1) n_baselines) ndarray
-        Covariance, rad^2.
+        Covariance, rad².
 
     Raises
     ------
@@ -328,7 +328,7 @@ def euler_attitude_rows(C_bn: ArrayLike, roll: float, pitch: float, *, deg: bool
 def tc_attitude_observation_matrix(
     los_ned: ArrayLike, C_bn: ArrayLike, roll: float, pitch: float, *, deg: bool = False
 ) -> Array:
-    """Observation matrix of KZL Eq. 13 stacked over satellites: ``(2 nu + 3, 17)``.
+    r"""Observation matrix of KZL Eq. 13 stacked over satellites: :math:`(2 \nu + 3) \times 17`.
 
     Parameters
     ----------
@@ -412,7 +412,7 @@ def tc_dd_observation_matrix(los_ned: ArrayLike, C_bn: ArrayLike, baselines_b: A
 
 @implements("KZL 13")
 def attitude_observation_rows_count(nu: int) -> int:
-    """Rows of the stacked Eq. 13 matrix, counted from the builder (code, Doppler, 3 angles).
+    r"""Rows of the stacked Eq. 13 matrix, counted from the builder (code, Doppler, 3 angles).
 
     Parameters
     ----------
@@ -422,7 +422,7 @@ def attitude_observation_rows_count(nu: int) -> int:
     Returns
     -------
     int
-        ``2 nu + 3``.
+        :math:`2 \nu + 3`.
 
     Raises
     ------
@@ -446,7 +446,7 @@ def attitude_observation_rows_count(nu: int) -> int:
 
 @implements("KZL 17")
 def dd_observation_rows_count(nu: int, n_baselines: int = 2) -> int:
-    """Rows of the stacked Eq. 17 matrix, counted from the builder.
+    r"""Rows of the stacked Eq. 17 matrix, counted from the builder.
 
     Parameters
     ----------
@@ -458,7 +458,7 @@ def dd_observation_rows_count(nu: int, n_baselines: int = 2) -> int:
     Returns
     -------
     int
-        ``2 nu + (nu - 1) n_baselines``.
+        :math:`2 \nu + (\nu - 1) n_b` with :math:`n_b` = ``n_baselines``.
 
     Raises
     ------

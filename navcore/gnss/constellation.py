@@ -189,7 +189,7 @@ def line_of_sight(r_user: ArrayLike, r_sat: ArrayLike) -> tuple[NDArray[np.float
 def elevation_azimuth(
     r_user: ArrayLike, r_sat: ArrayLike, lat: float, lon: float, *, deg: bool = False
 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """Elevation and azimuth of satellites seen from ``r_user`` at (lat, lon).
+    r"""Elevation and azimuth of satellites seen from ``r_user`` at (lat, lon).
 
     Parameters
     ----------
@@ -209,7 +209,7 @@ def elevation_azimuth(
     el : (N,) ndarray
         Elevation, rad (deg with ``deg=True``).
     az : (N,) ndarray
-        Azimuth from north, in [0, 2 pi) rad (deg with ``deg=True``).
+        Azimuth from north, in :math:`[0, 2\pi)` rad (deg with ``deg=True``).
 
     Raises
     ------

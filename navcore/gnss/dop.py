@@ -53,12 +53,12 @@ Array = NDArray[np.float64]
 
 @dataclass(frozen=True)
 class DilutionOfPrecision:
-    """Dilutions of precision of one geometry, or a stack of geometries (arrays).
+    r"""Dilutions of precision of one geometry, or a stack of geometries (arrays).
 
     Attributes
     ----------
     gdop : float or ndarray
-        Geometric DOP, ``sqrt(tr D)``.
+        Geometric DOP, :math:`\sqrt{\operatorname{tr} D}`.
     pdop : float or ndarray
         Position DOP (3-D).
     hdop : float or ndarray
@@ -70,7 +70,7 @@ class DilutionOfPrecision:
     n_used : int or ndarray
         Satellites used (above the mask, with a positive weight).
     covariance : (..., 4, 4) ndarray
-        ``D = (G^T W G)^-1`` per unit range variance, order north, east, down, clock;
+        :math:`D = (G^T W G)^{-1}` per unit range variance, order north, east, down, clock;
         infinite where the geometry has no solution.
     """
 
@@ -143,7 +143,7 @@ def dop_from_lines_of_sight(u_ned: ArrayLike, *, weights: ArrayLike | None = Non
     Raises
     ------
     ValueError
-        If a row of ``u_ned`` is not a unit vector (to within 1e-6: positions in metres are
+        If a row of ``u_ned`` is not a unit vector (to within :math:`10^{-6}`: positions in metres are
         not lines of sight), ``u_ned`` does not end in (K, 3), or a weight is negative.
 
     References

@@ -1,4 +1,4 @@
-r"""A ground jammer seen from a moving receiver: effective C/N0, lock thresholds, crossing times.
+r"""A ground jammer seen from a moving receiver: effective :math:`C/N_0`, lock thresholds, crossing times.
 
 The receiver (antenna gain :math:`G_s(e)` towards a satellite at elevation :math:`e`,
 :math:`G_{rj}` towards the jammer) receives the satellite's carrier power
@@ -31,14 +31,14 @@ Along a straight, level track at speed :math:`v` whose slant range at closest ap
 Loss of lock and reacquisition use different thresholds (hysteresis): a loop locked is lost
 when :math:`(C/N_0)_{eff}` drops below its loss threshold and is back only when it rises
 above its (higher) reacquisition threshold. A carrier loop's loss threshold is the larger of
-a stated C/N0 floor and the C/N0 at which :math:`k` times its thermal phase jitter
+a stated :math:`C/N_0` floor and the :math:`C/N_0` at which :math:`k` times its thermal phase jitter
 (PLL, noise bandwidth :math:`B_n`, coherent integration :math:`T`)
 
 .. math::
 
     \sigma_\phi^2 = \frac{B_n}{C/N_0}\Big(1 + \frac{1}{2T\,C/N_0}\Big)\ \text{rad}^2
 
-reaches the allowed phase error :math:`\phi_{max}`; that C/N0 is the positive root of
+reaches the allowed phase error :math:`\phi_{max}`; that :math:`C/N_0` is the positive root of
 :math:`(\phi_{max}/k)^2 x^2 - B_n x - B_n/(2T) = 0`.
 
 The allowed phase error depends on the loop's discriminator (Kaplan Sec. 5.6.2, rule of thumb
@@ -182,7 +182,7 @@ def slant_range_m(position_ned_m: ArrayLike, emitter_ned_m: ArrayLike) -> Array 
 
 
 def free_space_loss_db(range_m: ArrayLike, wavelength_m: float) -> Array | float:
-    """Free-space path loss ``20 log10(4 pi d / lambda)``.
+    r"""Free-space path loss :math:`20 \log_{10}(4 \pi d / \lambda)`.
 
     Parameters
     ----------
@@ -215,7 +215,7 @@ def free_space_loss_db(range_m: ArrayLike, wavelength_m: float) -> Array | float
 def received_jammer_power_dbw(
     erp_dbw: float, range_m: ArrayLike, wavelength_m: float, rx_gain_dbi: float = 0.0
 ) -> Array | float:
-    """Jammer power at the receiver: ``ERP + G_rj - 20 log10(4 pi d / lambda)``.
+    r"""Jammer power at the receiver: :math:`\mathrm{ERP} + G_{rj} - 20 \log_{10}(4 \pi d / \lambda)`.
 
     Parameters
     ----------
@@ -260,7 +260,7 @@ def effective_cn0_with_jammer_dbhz(
     chip_rate_hz: float,
     q: float = 2.0,
 ) -> Array | float:
-    """Effective C/N0: ``C - 10 log10(N0 + J/(Q Rc))`` (arrays broadcast).
+    r"""Effective :math:`C/N_0`: :math:`C - 10 \log_{10}(N_0 + J/(Q R_c))` (arrays broadcast).
 
     ``carrier_dbw`` of shape ``(n_sat,)`` and ``jammer_dbw`` of shape ``(N, 1)`` give
     ``(N, n_sat)``; ``jammer_dbw = -inf`` is not allowed (use a very low power instead).
@@ -313,16 +313,16 @@ _LN10_10 = math.log(10.0) / 10.0
 def jammer_power_at_threshold_dbw(
     carrier_dbw: ArrayLike, threshold_dbhz: ArrayLike, n0_dbw_hz: float, chip_rate_hz: float, q: float = 2.0
 ) -> Array | float:
-    r"""Received jammer power that brings the effective C/N0 down to ``threshold_dbhz``.
+    r"""Received jammer power that brings the effective :math:`C/N_0` down to ``threshold_dbhz``.
 
-    ``J* = Q Rc (C/gamma - N0)``.
+    :math:`J^* = Q R_c (C/\gamma - N_0)`.
 
     Parameters
     ----------
     carrier_dbw : array_like
         Received carrier power, dBW.
     threshold_dbhz : array_like
-        C/N0 threshold :math:`\gamma`, dB-Hz.
+        :math:`C/N_0` threshold :math:`\gamma`, dB-Hz.
     n0_dbw_hz : float
         Thermal noise density, dBW/Hz.
     chip_rate_hz : float
@@ -338,7 +338,7 @@ def jammer_power_at_threshold_dbw(
     Raises
     ------
     ValueError
-        If a threshold is not below the unjammed C/N0 (the loop would never be in lock), or
+        If a threshold is not below the unjammed :math:`C/N_0` (the loop would never be in lock), or
         ``chip_rate_hz`` or ``q`` is not positive.
 
     References
@@ -410,8 +410,8 @@ def straight_track_crossing_times(
 ) -> tuple[Array | float, Array | float]:
     """Times at which a straight track enters and leaves the sphere of radius ``threshold_range``.
 
-    The roots of ``d_min^2 + v^2 (t - t_ca)^2 = d*^2``; NaN where the track never comes
-    that close (``d* < d_min``).
+    The roots of :math:`d_{min}^2 + v^2 (t - t_{ca})^2 = d^{*2}`; NaN where the track never comes
+    that close (:math:`d^* < d_{min}`).
 
     Parameters
     ----------
@@ -502,25 +502,25 @@ def elevation_gain_dbi(
 
 @implements("SP Sec. 2.6.2")
 def jammed_cn0_dbhz(cn0_dbhz: ArrayLike, jammer_to_noise_db: ArrayLike) -> Array | float:
-    r"""Effective C/N0 under a jammer given as its density relative to the thermal noise.
+    r"""Effective :math:`C/N_0` under a jammer given as its density relative to the thermal noise.
 
     With :math:`x = J/(Q R_c N_0)` the jammer's noise density at the correlator output over
     the thermal density, :math:`(C/N_0)_{eff} = (C/N_0)/(1 + x)`, i.e. in dB
-    ``cn0_dbhz - 10 log10(1 + 10^(jammer_to_noise_db / 10))`` (the form of
+    :math:`(C/N_0) - 10 \log_{10}(1 + x)` (the form of
     :func:`effective_cn0_with_jammer_dbhz` with the signal, jammer power, chip rate and
     spectral separation folded into one ratio). Arrays broadcast.
 
     Parameters
     ----------
     cn0_dbhz : array_like
-        Unjammed C/N0, dB-Hz.
+        Unjammed :math:`C/N_0`, dB-Hz.
     jammer_to_noise_db : array_like
         Jammer density over thermal density, dB.
 
     Returns
     -------
     float or ndarray
-        Effective C/N0, dB-Hz.
+        Effective :math:`C/N_0`, dB-Hz.
 
     Raises
     ------
@@ -537,7 +537,7 @@ def jammed_cn0_dbhz(cn0_dbhz: ArrayLike, jammer_to_noise_db: ArrayLike) -> Array
     return _out(c - np.logaddexp(0.0, x * _LN10_10) / _LN10_10)
 
 
-#: Allowed 1-sigma-times-k phase error (deg) of each carrier-loop type (Kaplan Sec. 5.6.2).
+#: Allowed phase error :math:`k \sigma` (deg) of each carrier-loop type (Kaplan Sec. 5.6.2).
 LOOP_PHASE_LIMIT_DEG = {"pll": 90.0, "costas": 45.0}
 
 
@@ -557,10 +557,10 @@ def pll_jitter_threshold_dbhz(
     *,
     loop: str = "costas",
 ) -> Array | float:
-    """C/N0 (dB-Hz) at which ``k_sigma`` times the carrier loop's thermal jitter equals the
+    r""":math:`C/N_0` (dB-Hz) at which ``k_sigma`` times the carrier loop's thermal jitter equals the
     allowed phase error.
 
-    Positive root of ``a x^2 - Bn x - Bn/(2T) = 0`` with ``a = (phi_max/k)^2`` (rad^2).
+    Positive root of :math:`a x^2 - B_n x - B_n/(2T) = 0` with :math:`a = (\phi_{max}/k)^2` (rad²).
 
     Parameters
     ----------
@@ -570,7 +570,7 @@ def pll_jitter_threshold_dbhz(
         Allowed phase error (deg); default: the rule of ``loop`` (45 deg for a Costas loop,
         90 deg for a pure PLL). A value given here overrides the rule (e.g. a printed one).
     k_sigma : float
-        Multiple of the 1-sigma jitter that must stay within the allowed error.
+        Multiple of the 1-:math:`\sigma` jitter that must stay within the allowed error.
     coherent_s : float
         Coherent integration (predetection) time :math:`T` (s).
     loop : {"costas", "pll"}
@@ -580,7 +580,7 @@ def pll_jitter_threshold_dbhz(
     Returns
     -------
     float or ndarray
-        Threshold C/N0, dB-Hz (shape of ``noise_bandwidth_hz``).
+        Threshold :math:`C/N_0`, dB-Hz (shape of ``noise_bandwidth_hz``).
 
     Raises
     ------
@@ -620,7 +620,7 @@ def carrier_loss_threshold_dbhz(
     *,
     loop: str = "costas",
 ) -> Array | float:
-    """Carrier-loop loss threshold: the larger of a C/N0 floor and the jitter threshold.
+    r"""Carrier-loop loss threshold: the larger of a :math:`C/N_0` floor and the jitter threshold.
 
     The jitter threshold is :func:`pll_jitter_threshold_dbhz` for the given ``loop``.
 
@@ -629,11 +629,11 @@ def carrier_loss_threshold_dbhz(
     noise_bandwidth_hz : array_like
         Carrier-loop noise bandwidth :math:`B_n`, Hz (``> 0``).
     floor_dbhz : float
-        C/N0 floor below which the loop is lost regardless of jitter, dB-Hz.
+        :math:`C/N_0` floor below which the loop is lost regardless of jitter, dB-Hz.
     max_phase_error_deg : float, optional
         Allowed phase error, deg (default: the rule of ``loop``).
     k_sigma : float, default 3.0
-        Multiple of the 1-sigma jitter that must stay within the allowed error.
+        Multiple of the 1-:math:`\sigma` jitter that must stay within the allowed error.
     coherent_s : float, default 0.02
         Coherent integration time, s.
     loop : {"costas", "pll"}
@@ -668,16 +668,16 @@ def carrier_loss_threshold_dbhz(
 def pll_thermal_jitter_deg(
     cn0_dbhz: ArrayLike, noise_bandwidth_hz: ArrayLike, coherent_s: float = 0.02
 ) -> Array | float:
-    r"""Carrier-loop thermal phase jitter, deg (1 sigma).
+    r"""Carrier-loop thermal phase jitter, deg (1-:math:`\sigma`).
 
-    :math:`\sigma_\phi^2 = \frac{B_n}{C/N_0}\big(1 + \frac{1}{2T\,C/N_0}\big)` rad^2 (Kaplan &
+    :math:`\sigma_\phi^2 = \frac{B_n}{C/N_0}\big(1 + \frac{1}{2T\,C/N_0}\big)` rad² (Kaplan &
     Hegarty, Sec. 5.6.2), the quantity :func:`pll_jitter_threshold_dbhz` holds at its limit.
     Arrays broadcast.
 
     Parameters
     ----------
     cn0_dbhz : array_like
-        C/N0, dB-Hz.
+        :math:`C/N_0`, dB-Hz.
     noise_bandwidth_hz : array_like
         Loop noise bandwidth :math:`B_n`, Hz (``> 0``).
     coherent_s : float, default 0.02
@@ -708,15 +708,15 @@ def pll_thermal_jitter_deg(
 def dll_thermal_jitter_chips(
     cn0_dbhz: ArrayLike, noise_bandwidth_hz: ArrayLike, spacing_chips: float = 1.0, coherent_s: float = 0.02
 ) -> Array | float:
-    r"""Code-loop (noncoherent early-minus-late power DLL) thermal jitter, chips (1 sigma).
+    r"""Code-loop (noncoherent early-minus-late power DLL) thermal jitter, chips (1-:math:`\sigma`).
 
-    :math:`\sigma^2 = \frac{B_n d}{2\,C/N_0}\Big(1 + \frac{2}{T\,C/N_0\,(2 - d)}\Big)` chips^2
+    :math:`\sigma^2 = \frac{B_n d}{2\,C/N_0}\Big(1 + \frac{2}{T\,C/N_0\,(2 - d)}\Big)` chips²
     for an early-late spacing :math:`d` chips (Kaplan & Hegarty, Sec. 5.6.1). Arrays broadcast.
 
     Parameters
     ----------
     cn0_dbhz : array_like
-        C/N0, dB-Hz.
+        :math:`C/N_0`, dB-Hz.
     noise_bandwidth_hz : array_like
         Code-loop noise bandwidth, Hz (``> 0``).
     spacing_chips : float, default 1.0
@@ -756,7 +756,7 @@ def hysteresis_from_conditions(
 
     A channel is unlocked from the first sample where ``lose`` holds and locked again from
     the first later sample where ``regain`` holds (and ``lose`` does not); in between it
-    keeps its state. :func:`hysteresis_lock` is the case of two C/N0 thresholds.
+    keeps its state. :func:`hysteresis_lock` is the case of two :math:`C/N_0` thresholds.
 
     Parameters
     ----------
@@ -797,7 +797,7 @@ def hysteresis_from_conditions(
 
 @dataclass(frozen=True)
 class LockThresholds:
-    """Effective-C/N0 thresholds (dB-Hz) of one receiver: loss and reacquisition, code and carrier.
+    """Effective-:math:`C/N_0` thresholds (dB-Hz) of one receiver: loss and reacquisition, code and carrier.
 
     Attributes
     ----------
@@ -837,11 +837,11 @@ def hysteresis_lock(
     Parameters
     ----------
     cn0_dbhz : (N, n) array
-        Effective C/N0 per time sample and channel, dB-Hz.
+        Effective :math:`C/N_0` per time sample and channel, dB-Hz.
     loss_dbhz : float or (n,) array
         Loss threshold, dB-Hz.
     reacquisition_dbhz : float or (n,) array
-        Reacquisition threshold, dB-Hz (``>= loss_dbhz``).
+        Reacquisition threshold, dB-Hz (at least ``loss_dbhz``).
     initially_locked : bool, default True
         Lock state before the first sample that decides it.
 

@@ -11,7 +11,7 @@ with user position :math:`r` and velocity :math:`v`, satellite :math:`i` positio
 and metres per second. Any frame may be used as long as all vectors share it (ECEF for
 physics; the Jacobian rows can be rotated into NED with ``C_en``). Earth rotation during
 signal transit (Sagnac) is neglected: over the 0.067-0.086 s transit the Earth turns by
-:math:`\omega_{ie}\tau` up to about 6.5e-6 rad, which moves the range by
+:math:`\omega_{ie}\tau` up to about :math:`6.5 \times 10^{-6}` rad, which moves the range by
 :math:`\omega_{ie}(x_i y - y_i x)/c`, up to a few tens of metres, so these models are for
 error (Jacobian) analysis, not for positioning from real ECEF ephemerides.
 

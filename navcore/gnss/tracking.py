@@ -128,7 +128,7 @@ def error_transfer_coefficients(omega0: float) -> tuple[Array, Array]:
     num : (4,) ndarray
         ``[1, 0, 0, 0]``.
     den : (4,) ndarray
-        ``[1, 2 omega0, 2 omega0^2, omega0^3]`` (the standard third-order loop).
+        :math:`[1, 2\omega_0, 2\omega_0^2, \omega_0^3]` (the standard third-order loop).
 
     Raises
     ------
@@ -158,14 +158,14 @@ def third_order_loop_step_error(t_s: ArrayLike, step: float, omega0: float) -> A
     t_s : array_like
         Time since the step, s (>= 0).
     step : float
-        Step size in phase units per s^2 (deg/s^2 gives degrees; m/s^2 gives metres).
+        Step size in phase units per s² (deg/s² gives degrees; m/s² gives metres).
     omega0 : float
         Natural frequency, rad/s.
 
     Returns
     -------
     float or ndarray
-        Error in the units of ``step`` times s^2: zero at t = 0 and as t -> infinity.
+        Error in the units of ``step`` times s²: zero at t = 0 and as t -> infinity.
 
     Raises
     ------
@@ -189,23 +189,24 @@ def third_order_loop_step_error(t_s: ArrayLike, step: float, omega0: float) -> A
 
 
 def third_order_loop_jerk_error(t_s: ArrayLike, jerk: float, omega0: float) -> Array | float:
-    """Tracking error of the third-order loop after a jerk starts at t = 0 (input J t^3/6).
+    r"""Tracking error of the third-order loop after a jerk starts at :math:`t = 0` (input
+    :math:`J t^3/6`).
 
-    The inverse Laplace transform of :math:`J/(s D(s))`; it settles at :math:`J/\\omega_0^3`.
+    The inverse Laplace transform of :math:`J/(s D(s))`; it settles at :math:`J/\omega_0^3`.
 
     Parameters
     ----------
     t_s : array_like
         Time since the jerk started, s (>= 0).
     jerk : float
-        Jerk in phase units per s^3 (deg/s^3 gives degrees; m/s^3 gives metres).
+        Jerk in phase units per s³ (deg/s³ gives degrees; m/s³ gives metres).
     omega0 : float
         Natural frequency, rad/s.
 
     Returns
     -------
     float or ndarray
-        Error in the units of ``jerk`` times s^3 (degrees or metres as above).
+        Error in the units of ``jerk`` times s³ (degrees or metres as above).
 
     Raises
     ------
@@ -238,7 +239,7 @@ def jerk_pulse_error(t_s: ArrayLike, jerk: float, duration_s: float, omega0: flo
     t_s : array_like
         Time since the jerk started, s (>= 0).
     jerk : float
-        Jerk in phase units per s^3 (deg/s^3 gives degrees; m/s^3 gives metres).
+        Jerk in phase units per s³ (deg/s³ gives degrees; m/s³ gives metres).
     duration_s : float
         How long the jerk lasts, s (>= 0).
     omega0 : float
@@ -247,7 +248,7 @@ def jerk_pulse_error(t_s: ArrayLike, jerk: float, duration_s: float, omega0: flo
     Returns
     -------
     float or ndarray
-        Error in the units of ``jerk`` times s^3 (degrees or metres as above).
+        Error in the units of ``jerk`` times s³ (degrees or metres as above).
 
     Raises
     ------
@@ -289,7 +290,7 @@ def peak_factor() -> float:
     -------
     float
         Peak error of the third-order loop for a unit acceleration step at
-        :math:`\omega_0 = 1` rad/s (phase unit per unit of the step times s^2).
+        :math:`\omega_0 = 1` rad/s (phase unit per unit of the step times s²).
 
     References
     ----------
@@ -314,14 +315,14 @@ def third_order_peak_step_error(step: float, omega0: float) -> float:
     Parameters
     ----------
     step : float
-        Acceleration step (deg/s^2 gives degrees; m/s^2 gives metres).
+        Acceleration step (deg/s² gives degrees; m/s² gives metres).
     omega0 : float
         Natural frequency, rad/s (``> 0``).
 
     Returns
     -------
     float
-        Peak error, in the unit of ``step`` times s^2.
+        Peak error, in the unit of ``step`` times s².
 
     Raises
     ------
@@ -344,7 +345,7 @@ def third_order_peak_step_error(step: float, omega0: float) -> float:
 def natural_frequency_for_peak_error(step: float, peak_error: float) -> float:
     """Natural frequency at which the step error peaks at ``peak_error``.
 
-    ``step`` and ``peak_error`` share a unit (deg/s^2 and deg, or m/s^2 and m).
+    ``step`` and ``peak_error`` share a unit (deg/s² and deg, or m/s² and m).
 
     Parameters
     ----------
@@ -384,7 +385,7 @@ def wavelength_for_peak_error(accel_mps2: float, omega0: float, peak_deg: float)
     Parameters
     ----------
     accel_mps2 : float
-        Acceleration step, m/s^2 (``> 0``).
+        Acceleration step, m/s² (``> 0``).
     omega0 : float
         Natural frequency, rad/s (``> 0``).
     peak_deg : float
@@ -428,7 +429,7 @@ def aided_natural_frequency(
     ----------
     step_aided : array_like
         Acceleration step the aided loop sees (``>= 0``; any unit shared with
-        ``step_unaided``, e.g. g or m/s^2).
+        ``step_unaided``, e.g. g or m/s²).
     step_unaided : float
         Acceleration step of the unaided loop (``> 0``, same unit).
     omega0_unaided : float
@@ -533,7 +534,7 @@ def third_order_loop_dynamic_error_bound(accel: ArrayLike, dt_s: float, omega0: 
     Parameters
     ----------
     accel : (N,) or (N, m) array
-        Acceleration the loop sees at each sample, in distance units per s^2 (m/s^2 gives
+        Acceleration the loop sees at each sample, in distance units per s² (m/s² gives
         metres of tracking error).
     dt_s : float
         Sample interval, s (``> 0``).
@@ -557,7 +558,7 @@ def third_order_loop_dynamic_error_bound(accel: ArrayLike, dt_s: float, omega0: 
 
     Examples
     --------
-    One isolated 1-m/s^2 step at a loop of 1 rad/s, sampled every 0.5 s: the bound reaches
+    One isolated 1-m/s² step at a loop of 1 rad/s, sampled every 0.5 s: the bound reaches
     the step response's peak 0.4045 m and decays with it.
 
     >>> b = third_order_loop_dynamic_error_bound([0.0, 1.0] + [1.0] * 30, 0.5, 1.0)

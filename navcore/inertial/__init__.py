@@ -1,4 +1,4 @@
-"""Inertial navigation.
+r"""Inertial navigation.
 
 Modules
 -------
@@ -9,7 +9,7 @@ strapdown
 alignment
     accelerometer levelling and heading from GPS velocity.
 error_dynamics
-    psi-angle INS error dynamics with Schuler, Earth rate, transport rate, sensor and
+    :math:`\psi`-angle INS error dynamics with Schuler, Earth rate, transport rate, sensor and
     Gauss-Markov states.
 error_model17
     the 17-state error model of a low-cost tightly coupled INS/GNSS filter.

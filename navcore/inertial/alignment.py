@@ -48,7 +48,7 @@ def levelling(
     Parameters
     ----------
     f_b : (..., 3) array
-        Averaged accelerometer output in body axes (m/s^2).
+        Averaged accelerometer output in body axes (m/s²).
     convention : {"specific-force", "gravity-reaction"}
         ``"specific-force"``: ``f_b`` is the specific force of KZL Eq. 8 (level at rest:
         ``[0, 0, -g]``). ``"gravity-reaction"``: ``f_b`` is its negative, the convention
@@ -96,7 +96,7 @@ def levelling_as_printed(a_b: ArrayLike, roll_form: str = "atan2") -> tuple[Arra
     Parameters
     ----------
     a_b : (..., 3) array
-        Averaged accelerometer output in body axes, m/s^2.
+        Averaged accelerometer output in body axes, m/s².
     roll_form : {"atan2", "arctan"}, optional
         ``"atan2"``: ``atan2(a_y, a_z)``, the two-argument function the name ``arctan_2``
         calls for (default); ``"arctan"``: ``arctan(a_y / a_z)``, the one-argument arctangent of
@@ -145,7 +145,7 @@ def levelling_as_printed(a_b: ArrayLike, roll_form: str = "atan2") -> tuple[Arra
 
 @implements("KZL 4")
 def heading_from_velocity(v_ned: ArrayLike) -> Array:
-    """Track angle ``atan2(v_E, v_N)`` from a NED velocity (KZL Eq. 4).
+    r"""Track angle ``atan2(v_E, v_N)`` from a NED velocity (KZL Eq. 4).
 
     Parameters
     ----------
@@ -155,7 +155,7 @@ def heading_from_velocity(v_ned: ArrayLike) -> Array:
     Returns
     -------
     ndarray
-        Heading, rad in (-pi, pi].
+        Heading, rad in :math:`(-\pi, \pi]`.
 
     Raises
     ------

@@ -1,4 +1,4 @@
-r"""INS error-state dynamics in a local-level (NED) frame, psi-angle form.
+r"""INS error-state dynamics in a local-level (NED) frame, :math:`\psi`-angle form.
 
 State blocks (any subset, in any order, named as in :mod:`navcore.gnss.architectures`):
 
@@ -7,14 +7,14 @@ block                     size  meaning
 ========================  ====  ================================================================
 ``position``              3     NED position error (m)
 ``velocity``              3     velocity error in the computed frame (m/s)
-``misalignment``          3     psi angle: computed-frame attitude error (rad)
+``misalignment``          3     :math:`\psi` angle: computed-frame attitude error (rad)
 ``gyro bias``             3     gyro bias (the papers' gyro drift), random constant (rad/s)
 ``gyro scale factor``     3     (-)
 ``gyro misalignment``     3     small-angle input-axis misalignment of the gyro triad (rad)
-``accel bias``            3     (m/s^2)
+``accel bias``            3     (m/s²)
 ``accel scale factor``    3     (-)
 ``accel misalignment``    3     small-angle input-axis misalignment of the accelerometers (rad)
-``gravity``               3     gravity anomaly, first-order Gauss-Markov (m/s^2)
+``gravity``               3     gravity anomaly, first-order Gauss-Markov (m/s²)
 ``altimeter bias``        1     barometric altimeter bias, first-order Gauss-Markov (m)
 ``clock bias``            1     user clock bias (m)
 ``clock drift``           1     user clock drift (m/s)
@@ -26,7 +26,7 @@ block                     size  meaning
 ``doppler misalignment``  3     boresight misalignment (rad)
 ========================  ====  ================================================================
 
-Dynamics (psi-angle form, Benson 1975):
+Dynamics (:math:`\psi`-angle form, Benson 1975):
 
 .. math::
 
@@ -39,7 +39,7 @@ Dynamics (psi-angle form, Benson 1975):
     \delta\omega^b_{ib} &= b_g + \mathrm{diag}(\omega^b_{ib})\,s_g + [\omega^b_{ib}\times]\,\mu_g + w_g
     \end{aligned}
 
-Sign convention of the attitude error: every error is *computed minus true*, and the psi
+Sign convention of the attitude error: every error is *computed minus true*, and the :math:`\psi`
 angle is the small rotation that carries the true NED frame into the computed one, so the
 computed body-to-NED attitude is
 
@@ -57,7 +57,7 @@ opposite sign, :math:`\hat C = (I + [\delta\alpha\times])\,C`, so
 explicitly where the two meet.
 
 The horizontal channels oscillate at the Schuler frequency :math:`\sqrt{g/R}` (84.4-min
-period) and the psi angle rotates with Earth and transport rate; the vertical channel is
+period) and the :math:`\psi` angle rotates with Earth and transport rate; the vertical channel is
 unstable (:math:`+2g/R`) and must be aided (barometer). A first-order Gauss-Markov
 process characterised by a standard deviation and a *distance* constant :math:`d` (SP Table
 2.4) has the time constant :math:`\tau = d/|v|` at ground speed :math:`|v|`: rate
@@ -129,7 +129,7 @@ def schuler_frequency(g: float = G0, radius: float = SCHULER_RADIUS_M) -> float:
     Parameters
     ----------
     g : float, default G0
-        Gravity magnitude, m/s^2 (``> 0``).
+        Gravity magnitude, m/s² (``> 0``).
     radius : float, default SCHULER_RADIUS_M
         Earth radius, m (``> 0``).
 
@@ -159,12 +159,12 @@ def schuler_frequency(g: float = G0, radius: float = SCHULER_RADIUS_M) -> float:
 
 
 def schuler_period(g: float = G0, radius: float = SCHULER_RADIUS_M) -> float:
-    """Schuler period ``2 pi sqrt(R / g)``.
+    r"""Schuler period :math:`2 \pi \sqrt{R / g}`.
 
     Parameters
     ----------
     g : float, default G0
-        Gravity magnitude, m/s^2 (``> 0``).
+        Gravity magnitude, m/s² (``> 0``).
     radius : float, default SCHULER_RADIUS_M
         Earth radius, m (``> 0``).
 
@@ -192,14 +192,14 @@ def schuler_period(g: float = G0, radius: float = SCHULER_RADIUS_M) -> float:
 
 @dataclass(frozen=True)
 class GaussMarkov:
-    """First-order Gauss-Markov process: 1-sigma and a distance constant (m).
+    r"""First-order Gauss-Markov process: 1-:math:`\sigma` and a distance constant (m).
 
     ``distance_constant_m = inf`` makes a random constant.
 
     Attributes
     ----------
     sigma : float
-        Stationary 1-sigma (unit of the process).
+        Stationary 1-:math:`\sigma` (unit of the process).
     distance_constant_m : float
         Correlation distance, m (``inf`` for a random constant).
     """
@@ -214,20 +214,20 @@ class GaussMarkov:
 
 @dataclass(frozen=True)
 class ClockModel:
-    """Receiver clock: initial sigmas and the two-state random-process PSDs.
+    r"""Receiver clock: initial sigmas and the two-state random-process PSDs.
 
     Attributes
     ----------
     bias_sigma : float
-        Initial clock-bias 1-sigma (m).
+        Initial clock-bias 1-:math:`\sigma` (m).
     drift_sigma : float
-        Initial clock-drift 1-sigma (m/s).
+        Initial clock-drift 1-:math:`\sigma` (m/s).
     g_sensitivity_sigma : float
-        1-sigma g-sensitivity of the frequency (m/s per g).
+        1-:math:`\sigma` g-sensitivity of the frequency (m/s per g).
     bias_psd : float
-        White frequency-noise PSD driving the bias (m^2/s).
+        White frequency-noise PSD driving the bias (m²/s).
     drift_psd : float
-        Random-walk frequency PSD driving the drift (m^2/s^3).
+        Random-walk frequency PSD driving the drift (m²/s³).
     """
 
     bias_sigma: float
@@ -243,23 +243,23 @@ class ClockModel:
 
 @dataclass(frozen=True)
 class ErrorSources:
-    """Everything the error model needs besides the layout.
+    r"""Everything the error model needs besides the layout.
 
     Attributes
     ----------
     imu : ImuSpec
         Inertial instrument errors (biases and scale factors are random constants).
     gravity : GaussMarkov or None
-        Gravity-anomaly process per axis (m/s^2).
+        Gravity-anomaly process per axis (m/s²).
     altimeter : GaussMarkov or None
         Barometric altimeter bias (m).
     clock : ClockModel or None
     pseudorange_bias_sigma, range_rate_bias_sigma : float
         Per-channel constant biases (m, m/s).
     doppler_bias, doppler_scale_factor : (3,) arrays
-        Doppler sensor 1-sigma per body axis (m/s, -).
+        Doppler sensor 1-:math:`\sigma` per body axis (m/s, -).
     doppler_misalignment : float
-        Doppler boresight misalignment 1-sigma per axis (rad).
+        Doppler boresight misalignment 1-:math:`\sigma` per axis (rad).
     """
 
     imu: ImuSpec
@@ -338,7 +338,7 @@ def ins_error_layout(*names: str, channels: int = 4, name: str = "") -> StateLay
 
 
 def psi_to_attitude_error(layout: StateLayout) -> Array:
-    r"""Transform from this module's psi angle to the attitude error of the opposite sign.
+    r"""Transform from this module's :math:`\psi` angle to the attitude error of the opposite sign.
 
     This module: :math:`\hat C^n_b = (I - [\psi\times])\,C^n_b`. The attitude error
     :math:`\delta\alpha` of :mod:`navcore.inertial.error_model17` (its :math:`\Delta\psi`) and of
@@ -376,7 +376,7 @@ def psi_to_attitude_error(layout: StateLayout) -> Array:
 
 
 def skew_stack(v: ArrayLike) -> Array:
-    """Skew-symmetric cross-product matrices of vectors ``(..., 3) -> (..., 3, 3)``.
+    r"""Skew-symmetric cross-product matrices of vectors ``(..., 3) -> (..., 3, 3)``.
 
     Parameters
     ----------
@@ -386,7 +386,7 @@ def skew_stack(v: ArrayLike) -> Array:
     Returns
     -------
     (..., 3, 3) ndarray
-        ``[v x]`` with ``[v x] w = v x w``.
+        :math:`[v\times]` with :math:`[v\times] w = v \times w`.
 
     Examples
     --------
@@ -403,7 +403,7 @@ def skew_stack(v: ArrayLike) -> Array:
 
 
 def earth_rate_ned(lat: ArrayLike, *, deg: bool = False) -> Array:
-    """Earth rate in NED at latitude ``lat``: ``Omega [cos L, 0, -sin L]``.
+    r"""Earth rate in NED at latitude ``lat``: :math:`\Omega\, [\cos L, 0, -\sin L]`.
 
     Parameters
     ----------
@@ -438,7 +438,7 @@ def earth_rate_ned(lat: ArrayLike, *, deg: bool = False) -> Array:
 
 
 def transport_rate_ned(v_ned: ArrayLike, lat: ArrayLike, h: ArrayLike = 0.0, *, deg: bool = False) -> Array:
-    """Transport rate ``[v_E, -v_N, -v_E tan L] / (R + h)``, spherical Earth.
+    r"""Transport rate :math:`[v_E, -v_N, -v_E \tan L] / (R + h)`, spherical Earth.
 
     Parameters
     ----------
@@ -495,7 +495,7 @@ def error_dynamics(
         Blocks named as in :func:`ins_error_layout` (must contain position, velocity and
         misalignment).
     f_ned : (3,) array
-        Specific force in NED (m/s^2); ``(0, 0, -g)`` at rest.
+        Specific force in NED (m/s²); ``(0, 0, -g)`` at rest.
     C_bn : (3, 3) array
         Body-to-NED direction cosine matrix (a rotation matrix).
     omega_ib_b : (3,) array
@@ -507,7 +507,7 @@ def error_dynamics(
     sources : ErrorSources, optional
         Supplies the Gauss-Markov distance constants (ignored if absent).
     g : float
-        Gravity magnitude (m/s^2); the default is the constant standard gravity G0 (what the
+        Gravity magnitude (m/s²); the default is the constant standard gravity ``G0`` (what the
         papers assume), :func:`navcore.gravity.normal_gravity` gives the WGS-84 value at
         ``lat``, ``h``.
     vertical_channel : bool
@@ -704,11 +704,11 @@ def _process_noise_diag_stack(layout: StateLayout, sources: ErrorSources, speed_
 
 
 def process_noise_psd(layout: StateLayout, sources: ErrorSources, *, speed_mps: float = 0.0) -> Array:
-    """Diagonal state-space noise PSD ``G Q G^T`` for :func:`error_dynamics`.
+    r"""Diagonal state-space noise PSD :math:`G Q G^T` for :func:`error_dynamics`.
 
-    Velocity gets the accelerometer white noise (``accel_random_walk^2``), the psi angle the
-    gyro white noise (``gyro_random_walk^2``); Gauss-Markov blocks get ``2 sigma^2 beta`` with
-    ``beta = speed / distance constant``; the clock bias and drift their PSDs.
+    Velocity gets the accelerometer white noise (``accel_random_walk^2``), the :math:`\psi` angle the
+    gyro white noise (``gyro_random_walk^2``); Gauss-Markov blocks get :math:`2 \sigma^2 \beta` with
+    :math:`\beta = \text{speed} / \text{distance constant}`; the clock bias and drift their PSDs.
 
     Parameters
     ----------
@@ -764,7 +764,7 @@ def initial_covariance(
     velocity_sigma: tuple[float, float, float] = (0.0, 0.0, 0.0),
     attitude_sigma: tuple[float, float, float] = (0.0, 0.0, 0.0),
 ) -> Array:
-    """Diagonal initial covariance: navigation errors as given, sensor states at their 1-sigma.
+    r"""Diagonal initial covariance: navigation errors as given, sensor states at their 1-:math:`\sigma`.
 
     Use :func:`navcore.inertial.error_dynamics.gyrocompass_alignment` afterwards to replace
     the attitude block by the instrument-dependent, correlated gyrocompass errors.
@@ -774,13 +774,13 @@ def initial_covariance(
     layout : StateLayout
         Error-state layout (blocks of :func:`ins_error_layout`).
     sources : ErrorSources
-        Supplies the 1-sigma of every sensor and aiding state (SI, see :class:`ErrorSources`).
+        Supplies the 1-:math:`\sigma` of every sensor and aiding state (SI, see :class:`ErrorSources`).
     position_sigma : (3,) tuple of float, default zeros
-        Initial NED position 1-sigma, m (``>= 0``).
+        Initial NED position 1-:math:`\sigma`, m (``>= 0``).
     velocity_sigma : (3,) tuple of float, default zeros
-        Initial NED velocity 1-sigma, m/s (``>= 0``).
+        Initial NED velocity 1-:math:`\sigma`, m/s (``>= 0``).
     attitude_sigma : (3,) tuple of float, default zeros
-        Initial attitude 1-sigma (north, east, down), rad (``>= 0``).
+        Initial attitude 1-:math:`\sigma` (north, east, down), rad (``>= 0``).
 
     Returns
     -------
@@ -790,7 +790,7 @@ def initial_covariance(
     Raises
     ------
     ValueError
-        If a 1-sigma is negative or not finite.
+        If a 1-:math:`\sigma` is negative or not finite.
 
     Examples
     --------
@@ -878,7 +878,7 @@ def gyrocompass_alignment(
     r"""Replace the attitude errors by the steady state of a stationary gyrocompass alignment.
 
     At rest the levelled, gyrocompassed platform has zero horizontal velocity-error rate and
-    zero east psi-rate, which ties the attitude error to the sensor errors: with
+    zero east :math:`\psi`-rate, which ties the attitude error to the sensor errors: with
     :math:`e_f = C^n_b\delta f^b` and :math:`e_\omega = C^n_b\delta\omega^b` (linear in the
     sensor states, rows of :func:`error_dynamics`),
 
@@ -902,7 +902,7 @@ def gyrocompass_alignment(
     C_bn : (3, 3) array, optional
         Body-to-NED attitude, a rotation matrix (default identity).
     g : float, default G0
-        Gravity magnitude, m/s^2 (G0 is the papers' constant; see
+        Gravity magnitude, m/s² (``G0`` is the papers' constant; see
         :func:`navcore.gravity.normal_gravity`).
     deg : bool, default False
         The latitude is in degrees.
@@ -910,7 +910,7 @@ def gyrocompass_alignment(
     Returns
     -------
     (n, n) ndarray
-        ``P0`` with its attitude rows and columns replaced (rad^2 and cross terms).
+        ``P0`` with its attitude rows and columns replaced (rad² and cross terms).
 
     References
     ----------
@@ -958,7 +958,7 @@ def levelling_alignment(
     horizontal accelerometer errors, :math:`\psi_N = e_{f,E}/g` and
     :math:`\psi_E = -e_{f,N}/g` (as in :func:`gyrocompass_alignment`). The heading does not
     come from the gyros (a MEMS gyro cannot sense the Earth rate through its bias) but from
-    outside, e.g. the GPS track of KZL Eq. 4: an independent error of 1-sigma
+    outside, e.g. the GPS track of KZL Eq. 4: an independent error of 1-:math:`\sigma`
     ``heading_sigma``. ``tilt_noise_sigma`` adds an independent tilt per horizontal axis, e.g.
     the averaged accelerometer noise :math:`N_a/(g\sqrt{T})`.
 
@@ -969,15 +969,15 @@ def levelling_alignment(
     layout : StateLayout
         Error-state layout (needs ``"misalignment"``).
     heading_sigma : float
-        1-sigma of the external heading, rad (``>= 0``).
+        1-:math:`\sigma` of the external heading, rad (``>= 0``).
     lat : float
         Latitude, rad (deg with ``deg=True``), in [-90, 90] deg.
     C_bn : (3, 3) array, optional
         Body-to-NED attitude, a rotation matrix (default identity).
     g : float, default G0
-        Gravity magnitude, m/s^2.
+        Gravity magnitude, m/s².
     tilt_noise_sigma : float, default 0.0
-        Independent tilt 1-sigma per horizontal axis, rad (``>= 0``).
+        Independent tilt 1-:math:`\sigma` per horizontal axis, rad (``>= 0``).
     deg : bool, default False
         The latitude is in degrees.
 

@@ -8,7 +8,7 @@ block               size  meaning
 ``position``        3     NED position error (m)
 ``velocity``        3     NED velocity error (m/s)
 ``misalignment``    3     n-frame attitude error :math:`\Delta\psi` (rad)
-``accel bias``      3     accelerometer bias error (m/s^2)
+``accel bias``      3     accelerometer bias error (m/s²)
 ``gyro bias``       3     gyro bias error (rad/s)
 ``clock bias``      1     receiver clock bias (m)
 ``clock drift``     1     receiver clock drift (m/s)
@@ -17,7 +17,7 @@ block               size  meaning
 Attitude-error convention: :math:`\hat R_b^n = (I + [\Delta\psi\times]) R_b^n` with the
 standard cross-product matrix :math:`[a\times]b = a\times b` (:func:`navcore.frames.skew`):
 error = estimated - true, and :math:`\Delta\psi` rotates the true frame into the estimated one
-*with the plus sign*. This is the opposite sign of the psi angle of
+*with the plus sign*. This is the opposite sign of the :math:`\psi` angle of
 :mod:`navcore.inertial.error_dynamics` (:math:`\hat C^n_b = (I - [\psi\times]) C^n_b`), so
 :math:`\Delta\psi = -\psi`; convert with
 :func:`navcore.inertial.error_dynamics.psi_to_attitude_error` wherever the two meet.
@@ -102,7 +102,8 @@ _CD = ERROR_LAYOUT_17.index("clock drift")
 
 @implements("KZL 11")
 def skew_paper(a: ArrayLike) -> Array:
-    """The matrix KZL Eq. 11 prints as ``[a x]``: ``-skew(a)``, so ``skew_paper(a) @ b = b x a``.
+    r"""The matrix KZL Eq. 11 prints as :math:`[a\times]`: ``-skew(a)``, so ``skew_paper(a) @ b``
+    is :math:`b \times a`.
 
     Parameters
     ----------
@@ -112,7 +113,7 @@ def skew_paper(a: ArrayLike) -> Array:
     Returns
     -------
     (3, 3) ndarray
-        ``-[a x]``.
+        :math:`-[a\times]`.
 
     References
     ----------
@@ -136,7 +137,7 @@ def error_dynamics_17(C_bn: ArrayLike, f_n: ArrayLike) -> Array:
     C_bn : (3, 3) or (N, 3, 3) array
         Computed body-to-NED rotation :math:`\\hat R_b^n`.
     f_n : (3,) or (N, 3) array
-        Computed specific force in NED, :math:`\\hat a^n_{ib} = \\hat R_b^n \\hat a^b_{ib}` (m/s^2).
+        Computed specific force in NED, :math:`\\hat a^n_{ib} = \\hat R_b^n \\hat a^b_{ib}` (m/s²).
 
     Returns
     -------
@@ -174,25 +175,25 @@ def noise_psd_17(
     clock_drift_walk: float = 0.0,
     clock_bias_walk: float = 0.0,
 ) -> Array:
-    """State-space noise PSD ``G Q G^T`` (17 x 17) for isotropic sensor noises.
+    r"""State-space noise PSD :math:`G Q G^T` (17 x 17) for isotropic sensor noises.
 
-    The noise enters as ``-R w``; for isotropic noise ``R q I R^T = q I``, so the result does
+    The noise enters as ``-R w``; for isotropic noise :math:`R\, q I\, R^T = q I`, so the result does
     not depend on the attitude.
 
     Parameters
     ----------
     accel_noise : float
-        Root PSD of the white accelerometer noise, m/s/sqrt(s) (``>= 0``).
+        Root PSD of the white accelerometer noise, m/s/√s (``>= 0``).
     gyro_noise : float
-        Root PSD of the white gyro noise, rad/sqrt(s) (``>= 0``).
+        Root PSD of the white gyro noise, rad/√s (``>= 0``).
     accel_bias_walk : float, default 0.0
-        Root PSD of the accelerometer-bias random walk, m/s^2/sqrt(s).
+        Root PSD of the accelerometer-bias random walk, m/s²/√s.
     gyro_bias_walk : float, default 0.0
-        Root PSD of the gyro-bias random walk, rad/s/sqrt(s).
+        Root PSD of the gyro-bias random walk, rad/s/√s.
     clock_drift_walk : float, default 0.0
-        Root PSD of the clock-drift random walk, m/s/sqrt(s).
+        Root PSD of the clock-drift random walk, m/s/√s.
     clock_bias_walk : float, default 0.0
-        Root PSD of the clock-phase random walk, m/sqrt(s).
+        Root PSD of the clock-phase random walk, m/√s.
 
     Returns
     -------
@@ -229,15 +230,15 @@ def noise_psd_17(
 
 @implements("KZL 5")
 def transition_exact(F: ArrayLike, dt: float) -> Array:
-    r""":math:`e^{F\,dt}` of the nilpotent 17-state F: ``I + F dt + (F dt)^2/2 + (F dt)^3/6``.
+    r""":math:`e^{F\,dt}` of the nilpotent 17-state F: :math:`I + F\,dt + (F\,dt)^2/2 + (F\,dt)^3/6`.
 
-    Exact because ``F^4 = 0`` (KZL Eq. 5: the series terminates). Broadcasts over a leading
+    Exact because :math:`F^4 = 0` (KZL Eq. 5: the series terminates). Broadcasts over a leading
     axis.
 
     Parameters
     ----------
     F : (..., n, n) array
-        Error dynamics with ``F^4 = 0``, 1/s.
+        Error dynamics with :math:`F^4 = 0`, 1/s.
     dt : float
         Interval, s (``> 0``).
 
@@ -304,7 +305,7 @@ def transition_first_order(F: ArrayLike, dt: float) -> Array:
 
 @implements("KZL 13")
 def code_doppler_rows(los_ned: ArrayLike) -> Array:
-    """Jacobian rows of pseudorange and delta range (KZL Eq. 13, first two rows per satellite).
+    r"""Jacobian rows of pseudorange and delta range (KZL Eq. 13, first two rows per satellite).
 
     Parameters
     ----------
@@ -314,8 +315,9 @@ def code_doppler_rows(los_ned: ArrayLike) -> Array:
     Returns
     -------
     H : (2 nu, 17) ndarray
-        Rows ``[-l^T 0 0 0 0 1 0]`` and ``[0 -l^T 0 0 0 0 1]`` for each satellite, in the
-        order (rho_1, rho_dot_1, rho_2, ...), for ``y = predicted - measured`` (m per m and
+        Rows :math:`[-l^T\ 0\ 0\ 0\ 0\ 1\ 0]` and :math:`[0\ {-l^T}\ 0\ 0\ 0\ 0\ 1]` for each satellite, in
+        the
+        order (:math:`\rho_1, \dot\rho_1, \rho_2, \dots`), for ``y = predicted - measured`` (m per m and
         m/s per m/s).
 
     Raises

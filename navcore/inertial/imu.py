@@ -1,8 +1,8 @@
-"""IMU error specifications as data, in SI units with the published units kept alongside.
+r"""IMU error specifications as data, in SI units with the published units kept alongside.
 
-An :class:`ImuSpec` holds the 1-sigma values of the error sources a covariance analysis or a
-simulation needs. Values are stored in SI (rad/s, m/s^2, dimensionless scale factor, rad,
-root PSDs in rad/sqrt(s) and m/s/sqrt(s)); build specs from the papers' units with the
+An :class:`ImuSpec` holds the 1-:math:`\sigma` values of the error sources a covariance analysis or a
+simulation needs. Values are stored in SI (rad/s, m/s², dimensionless scale factor, rad,
+root PSDs in rad/√s and m/s/√s); build specs from the papers' units with the
 factors of :mod:`navcore.units`, e.g. ``gyro_bias=0.01 * DEG_PER_H``. A value beyond what
 any inertial sensor has (:data:`IMU_SPEC_LIMITS`: a gyro bias above 0.1 rad/s, about
 20 000 deg/h) is a unit mistake and raises, naming the field and the unit it was probably
@@ -36,7 +36,7 @@ __all__ = [
 ]
 
 
-#: Largest plausible 1-sigma of each error source (SI), beyond the worst consumer MEMS parts,
+#: Largest plausible 1-:math:`\sigma` of each error source (SI), beyond the worst consumer MEMS parts,
 #: with the unit mistake a larger value usually is. A specification beyond it raises.
 IMU_SPEC_LIMITS: dict[str, tuple[float, str]] = {
     "gyro_bias": (0.1, "rad/s (about 20 600 deg/h; a value in deg/h? multiply by navcore.units.DEG_PER_H)"),
@@ -59,7 +59,7 @@ IMU_SPEC_LIMITS: dict[str, tuple[float, str]] = {
 
 @dataclass(frozen=True)
 class ImuSpec:
-    """1-sigma IMU error specification (SI units).
+    r"""1-:math:`\sigma` IMU error specification (SI units).
 
     Attributes
     ----------
@@ -68,19 +68,19 @@ class ImuSpec:
     gyro_bias : float
         Gyro bias (drift), rad/s.
     gyro_scale_factor : float
-        Gyro scale-factor error, dimensionless (1 ppm = 1e-6).
+        Gyro scale-factor error, dimensionless (1 ppm = :math:`10^{-6}`).
     gyro_misalignment : float
         Gyro input-axis misalignment, rad.
     gyro_random_walk : float
-        Angle random walk, root PSD of rate noise, rad/sqrt(s).
+        Angle random walk, root PSD of rate noise, rad/√s.
     accel_bias : float
-        Accelerometer bias, m/s^2.
+        Accelerometer bias, m/s².
     accel_scale_factor : float
         Accelerometer scale-factor error, dimensionless.
     accel_misalignment : float
         Accelerometer input-axis misalignment, rad.
     accel_random_walk : float
-        Velocity random walk, root PSD of acceleration noise, m/s/sqrt(s).
+        Velocity random walk, root PSD of acceleration noise, m/s/√s.
     source : str
         Where the numbers come from (paper and table).
     extra : dict of str to float
@@ -121,19 +121,19 @@ class ImuSpec:
 
 
 def angle_random_walk_deg_per_sqrt_h(root_psd_deg_per_h_per_sqrt_hz: float) -> float:
-    """Convert a gyro rate-noise root PSD in deg/h/sqrt(Hz) to angle random walk in deg/sqrt(h).
+    """Convert a gyro rate-noise root PSD in deg/h/√Hz to angle random walk in deg/√h.
 
-    ``1 deg/h/sqrt(Hz) = 1 deg/h * sqrt(s) = (1/60) deg/sqrt(h)``.
+    1 deg/h/√Hz = 1 (deg/h)·√s = (1/60) deg/√h.
 
     Parameters
     ----------
     root_psd_deg_per_h_per_sqrt_hz : float
-        Rate-noise root PSD, deg/h/sqrt(Hz) (``>= 0``).
+        Rate-noise root PSD, deg/h/√Hz (``>= 0``).
 
     Returns
     -------
     float
-        Angle random walk, deg/sqrt(h).
+        Angle random walk, deg/√h.
 
     Raises
     ------
@@ -150,19 +150,19 @@ def angle_random_walk_deg_per_sqrt_h(root_psd_deg_per_h_per_sqrt_hz: float) -> f
 
 
 def velocity_random_walk_m_per_s_per_sqrt_h(root_psd_micro_g_per_sqrt_hz: float) -> float:
-    """Convert an accelerometer noise root PSD in micro-g/sqrt(Hz) to velocity random walk in m/s/sqrt(h).
+    r"""Convert an accelerometer noise root PSD in micro-g/√Hz to velocity random walk in m/s/√h.
 
-    ``1 micro-g/sqrt(Hz) = 9.80665e-6 m/s/sqrt(s) = 9.80665e-6 * 60 m/s/sqrt(h)``.
+    1 micro-g/√Hz = :math:`9.80665 \times 10^{-6}` m/s/√s = :math:`9.80665 \times 10^{-6} \cdot 60` m/s/√h.
 
     Parameters
     ----------
     root_psd_micro_g_per_sqrt_hz : float
-        Acceleration-noise root PSD, micro-g/sqrt(Hz) (``>= 0``).
+        Acceleration-noise root PSD, micro-g/√Hz (``>= 0``).
 
     Returns
     -------
     float
-        Velocity random walk, m/s/sqrt(h).
+        Velocity random walk, m/s/√h.
 
     Raises
     ------
@@ -192,28 +192,28 @@ def imu_spec_from_published(
     gyro_random_walk_deg_per_h_per_sqrt_hz: float,
     source: str = "",
 ) -> ImuSpec:
-    """Build an :class:`ImuSpec` from the units in which IMU tables are usually printed.
+    r"""Build an :class:`ImuSpec` from the units in which IMU tables are usually printed.
 
     Parameters
     ----------
     name : str
         Name of the instrument.
     accel_bias_micro_g : float
-        Accelerometer bias 1-sigma, micro-g.
+        Accelerometer bias 1-:math:`\sigma`, micro-g.
     accel_scale_factor_ppm : float
-        Accelerometer scale-factor error 1-sigma, ppm.
+        Accelerometer scale-factor error 1-:math:`\sigma`, ppm.
     accel_misalignment_arcsec : float
-        Accelerometer misalignment 1-sigma, arcsec.
+        Accelerometer misalignment 1-:math:`\sigma`, arcsec.
     accel_random_walk_micro_g_per_sqrt_hz : float
-        Accelerometer white-noise root PSD, micro-g/sqrt(Hz).
+        Accelerometer white-noise root PSD, micro-g/√Hz.
     gyro_bias_deg_per_h : float
-        Gyro bias 1-sigma, deg/h.
+        Gyro bias 1-:math:`\sigma`, deg/h.
     gyro_scale_factor_ppm : float
-        Gyro scale-factor error 1-sigma, ppm.
+        Gyro scale-factor error 1-:math:`\sigma`, ppm.
     gyro_misalignment_arcsec : float
-        Gyro misalignment 1-sigma, arcsec.
+        Gyro misalignment 1-:math:`\sigma`, arcsec.
     gyro_random_walk_deg_per_h_per_sqrt_hz : float
-        Gyro white-noise root PSD, deg/h/sqrt(Hz).
+        Gyro white-noise root PSD, deg/h/√Hz.
     source : str, default ""
         Where the numbers come from.
 
@@ -285,7 +285,7 @@ def gyro_bias_calibrated_at_rest(spec: ImuSpec, averaging_time: float) -> ImuSpe
     r"""The spec after the turn-on gyro bias was measured by averaging at rest for ``averaging_time``.
 
     Averaging white rate noise of root PSD :math:`N` for :math:`T` seconds leaves a random
-    constant residual of 1-sigma :math:`N/\sqrt{T}`; that residual replaces ``gyro_bias``
+    constant residual of 1-:math:`\sigma` :math:`N/\sqrt{T}`; that residual replaces ``gyro_bias``
     (KZL Sec. 3.1: the gyro biases are calibrated while the vehicle is stationary). The
     Earth rate the gyros also sense is assumed known and removed.
 

@@ -38,8 +38,8 @@ deviations the range is cut there instead), so that
         &\times\operatorname{erf}\Big(\frac{r\cos s\cos t}{\sqrt{2\lambda_3}}\Big)\,dt\,ds,
     \end{aligned}
 
-a smooth integrand that Gauss-Legendre quadrature integrates to about 1e-10 for eigenvalue
-ratios up to 1e4 (checked against the chi-square distribution and by Monte Carlo in the
+a smooth integrand that Gauss-Legendre quadrature integrates to about :math:`10^{-10}` for eigenvalue
+ratios up to :math:`10^{4}` (checked against the chi-square distribution and by Monte Carlo in the
 tests). Two- and one-dimensional cases drop the outer integrals.
 
 References
@@ -86,7 +86,8 @@ Array = NDArray[np.float64]
 def scale_factor_misalignment_sensitivity(
     accel: ArrayLike = (1.0, 1.0, 1.0), convention: Literal["cross", "printed"] = "cross"
 ) -> Array:
-    r"""3x6 sensitivity of the residual acceleration to (sf1, sf2, sf3, dtheta1, dtheta2, dtheta3).
+    r"""3x6 sensitivity of the residual acceleration to
+    :math:`(sf_1, sf_2, sf_3, \delta\theta_1, \delta\theta_2, \delta\theta_3)`.
 
     Parameters
     ----------
@@ -101,7 +102,8 @@ def scale_factor_misalignment_sensitivity(
     Returns
     -------
     (3, 6) ndarray
-        ``[diag(a), [a x] sign]``: acceleration unit per unit scale factor and per rad.
+        :math:`[\operatorname{diag}(a),\ \mp[a\times]]` (the sign by ``convention``): acceleration
+        unit per unit scale factor and per rad.
 
     Raises
     ------
@@ -140,7 +142,7 @@ def residual_acceleration_covariance(sensitivity: ArrayLike, error_covariance: A
         Sensitivity of the residual acceleration to the error states (e.g.
         :func:`scale_factor_misalignment_sensitivity`).
     error_covariance : (n, n) array
-        Covariance of the error states (scale factors dimensionless, misalignments rad^2).
+        Covariance of the error states (scale factors dimensionless, misalignments rad²).
 
     Returns
     -------
@@ -257,9 +259,10 @@ def sphere_probability(cov: ArrayLike, radius: float) -> float:
 
 @implements("SP Table 2.6")
 def sphere_radius(cov: ArrayLike, p: float = 0.9) -> float:
-    """Radius of the sphere about the origin enclosing probability ``p`` of N(0, cov).
+    r"""Radius of the sphere about the origin enclosing probability ``p`` of N(0, cov).
 
-    For ``cov = s^2 I`` in 3-D and p = 0.9 this is 2.500278 s; the 2-D p = 0.5 value is the
+    For :math:`\mathrm{cov} = s^2 I` in 3-D and :math:`p = 0.9` this is :math:`2.500278\, s`; the 2-D :math:`p
+    = 0.5` value is the
     CEP (1.17741 s). Any dimension and any (PSD) covariance.
 
     Parameters

@@ -79,11 +79,11 @@ class MechanizationTerms:
     coriolis : bool
         Include :math:`-(2\\omega_{ie}^n + \\omega_{en}^n)\\times v^n` in the velocity update.
     gravity : float
-        Local gravity magnitude (m/s^2), along +down (default the constant G0 the papers
+        Local gravity magnitude (m/s²), along +down (default the constant ``G0`` the papers
         assume; :func:`navcore.gravity.normal_gravity` gives the WGS-84 value).
     lat0, h0 : float
-        Latitude (rad, in [-pi/2, pi/2]) and height (m) of the NED origin (used only by the
-        switched terms).
+        Latitude (rad, in :math:`[-\\pi/2, \\pi/2]`) and height (m) of the NED origin (used only
+        by the switched terms).
     """
 
     earth_rate: bool = False
@@ -264,7 +264,7 @@ def strapdown_step(
     dt: float,
     terms: MechanizationTerms = MechanizationTerms(),
 ) -> NavState:
-    """Advance the mechanization by one IMU interval (KZL Eqs. 7-9).
+    r"""Advance the mechanization by one IMU interval (KZL Eqs. 7-9).
 
     Parameters
     ----------
@@ -273,7 +273,7 @@ def strapdown_step(
     omega_ib_b : (N, 3) array
         Body angular rate w.r.t. the inertial frame (rad/s), constant over the interval.
     f_ib_b : (N, 3) array
-        Specific force (m/s^2), constant over the interval.
+        Specific force (m/s²), constant over the interval.
     dt : float
         Interval (s), ``dt > 0``.
     terms : MechanizationTerms
@@ -283,8 +283,8 @@ def strapdown_step(
     -------
     NavState
         The state at the end of the interval. The attitude update is exact for a constant
-        body rate (``q ⊗ exp(omega dt / 2)``, then the navigation-frame rotation
-        ``exp(-omega_in dt / 2) ⊗ q``); velocity uses the mid-interval attitude (the start
+        body rate (:math:`q \otimes \exp(\omega\, dt / 2)`, then the navigation-frame rotation
+        :math:`\exp(-\omega_{in}\, dt / 2) \otimes q`); velocity uses the mid-interval attitude (the start
         attitude rotated by half the body increment and by half the navigation-frame
         rotation); position is trapezoidal in velocity.
 
@@ -357,11 +357,11 @@ def strapdown_interval(
     state : NavState
         State at the start (leading run axis ``N``).
     omega_ib_b, f_ib_b : (N, S, 3) arrays
-        Angular rate (rad/s) and specific force (m/s^2) of each of the ``S`` intervals.
+        Angular rate (rad/s) and specific force (m/s²) of each of the ``S`` intervals.
     dt : float
         IMU interval (s).
     gravity : float
-        Local gravity along +down (m/s^2).
+        Local gravity along +down (m/s²).
 
     Returns
     -------

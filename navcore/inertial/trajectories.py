@@ -21,12 +21,12 @@ The bank angle :math:`\phi` (yaw :math:`\chi`, pitch :math:`\gamma`, roll :math:
 the turn coordinated: the body-y specific force
 :math:`f_y^b = V\dot\chi\cos\gamma\cos\phi - (g\cos\gamma + V\dot\gamma)\sin\phi` vanishes.
 In a turn at constant flight-path angle this is :math:`\tan\phi = V\dot\chi/g`, not
-:math:`V\dot\chi\cos\gamma/g` (which leaves 0.100 m/s^2 of side force at 200 m/s,
+:math:`V\dot\chi\cos\gamma/g` (which leaves 0.100 m/s² of side force at 200 m/s,
 0.03 rad/s and a 0.2 rad climb); the root with :math:`|\phi| \le 90^\circ` is taken.
 
 Frames and simplifications: ``vel_ned`` is the ground velocity in the local NED frame and
 ``pos_ned`` its time integral (north/east distance travelled and height loss, m);
-``f_ned`` is the specific force (m/s^2) in NED of a flat, non-rotating Earth with constant
+``f_ned`` is the specific force (m/s²) in NED of a flat, non-rotating Earth with constant
 gravity ``g`` along +down: it omits the Coriolis and transport terms
 :math:`(2\omega_{ie} + \omega_{en})\times v` of the true specific force (about 2 mg at
 200 m/s, 0.2 % of the 1 g that couples a tilt into the velocity error) and has no latitude
@@ -76,7 +76,7 @@ class Segment:
     duration : float
         Seconds.
     speed_rate : float
-        Along-track acceleration (m/s^2).
+        Along-track acceleration (m/s²).
     turn_rate : float
         Heading rate (rad/s), coordinated turn.
     path_angle_rate : float
@@ -111,7 +111,7 @@ class Trajectory:
     vel_ned : (N, 3) ndarray
         Ground velocity, m/s (NED).
     f_ned : (N, 3) ndarray
-        Specific force resolved in NED, m/s^2.
+        Specific force resolved in NED, m/s².
     C_bn : (N, 3, 3) ndarray
         Body-to-NED attitude.
     omega_nb_b : (N, 3) ndarray
@@ -142,7 +142,7 @@ class Trajectory:
 
 
 def euler_to_dcm_stack(roll: Array, pitch: Array, yaw: Array, *, deg: bool = False) -> Array:
-    """``C_bn = Rz(yaw) Ry(pitch) Rx(roll)`` for arrays of angles.
+    r""":math:`C_b^n = R_z(\text{yaw})\, R_y(\text{pitch})\, R_x(\text{roll})` for arrays of angles.
 
     Parameters
     ----------
@@ -206,7 +206,7 @@ def fly(
     Parameters
     ----------
     segments : sequence of Segment
-        Manoeuvres flown one after the other (durations in s, rates in rad/s, m/s^2).
+        Manoeuvres flown one after the other (durations in s, rates in rad/s, m/s²).
     dt : float
         Sample interval (s).
     lat0, lon0 : float
@@ -216,7 +216,7 @@ def fly(
         Start height (m), speed (m/s), heading and flight-path angle (rad, deg with
         ``deg=True``; the flight-path angle in [-90, 90] deg).
     g : float
-        Gravity magnitude (m/s^2) in the specific force (default the constant G0 the papers
+        Gravity magnitude (m/s²) in the specific force (default the constant ``G0`` the papers
         assume; :func:`navcore.gravity.normal_gravity` gives the WGS-84 value).
     deg : bool, default False
         The start angles (``lat0``, ``lon0``, ``heading0``, ``path_angle0``) are in degrees;
@@ -226,7 +226,7 @@ def fly(
     -------
     Trajectory
         Time (s), geodetic position (rad, rad, m), NED position (m) and velocity (m/s),
-        specific force in NED (m/s^2), body-to-NED attitude and body rates (rad/s) at
+        specific force in NED (m/s²), body-to-NED attitude and body rates (rad/s) at
         every sample.
 
     Raises

@@ -71,6 +71,23 @@ can compute the whole batch in one call when the first run asks, and serve the o
 :func:`~navcore.ledger.inputs.input_cache`; such a model gives each run the result it gives
 that run alone (KZL's Monte Carlo does, bit for bit, and its tests check it).
 
+Beyond six inputs
+-----------------
+Up to :data:`MAX_CORNER_INPUTS` inputs every corner is run, and the band holds the extremes of
+any response monotone in each input. Beyond, the corners run are a sample of the box: a
+printed value inside the band is still reached by runs on both sides of it, but one outside
+the band may lie at a corner not run, and a band from a sample can shrink when an input is
+added (another split of the list, other diagonals). So, stated before any value is computed,
+such a band shows a printed value out of reach only when the value is also outside what the
+inputs' separate effects add up to, :func:`additive_envelope`: the nominal value plus every
+input's largest rise in its one-at-a-time run, and minus every largest fall (the extremes of
+a response that is a sum of one function of each input). The envelope uses only the
+one-at-a-time runs and only widens when an input is added. A printed value outside the band
+and inside the envelope is ``not-reproducible``: the search cannot decide, and the note gives
+the envelope. Outside both, the verdict is derived as before (``inconsistent``, or
+``discrepant`` over admissible ranges). A statement's truth values do not add, so a
+statement's band is its runs' truth values alone.
+
 A band too wide to decide
 -------------------------
 Stated before any value is computed: a band decides nothing when its ends are more than a
@@ -174,6 +191,7 @@ __all__ = [
     "Erratum",
     "Evaluation",
     "Tolerance",
+    "additive_envelope",
     "band_spread",
     "band_too_wide",
     "claim_errata",
@@ -1243,6 +1261,13 @@ class Evaluation:
         The band runs left out as outside the model's domain (module docstring, "Band runs"),
         one per case in the order met: ``case`` (the reader's words of the
         :class:`~navcore.ModelDomainError`) and ``runs`` (how many runs met it).
+    envelope : tuple of (float, float) or None
+        Set when the verdict is ``not-reproducible`` because, with more than
+        :data:`MAX_CORNER_INPUTS` assumed inputs, the runs do not reach the printed value
+        while the inputs' separate effects add up to it (:func:`additive_envelope`, of the
+        reading used if it is the one, else of the first other reading that is; its entry
+        in ``readings`` has ``undecided`` true; module docstring, "Beyond six inputs");
+        else ``None``.
 
     Examples
     --------
@@ -1268,6 +1293,7 @@ class Evaluation:
     readings: tuple[dict[str, Any], ...] = ()
     band_too_wide: bool = False
     left_out: tuple[dict[str, Any], ...] = ()
+    envelope: tuple[float, float] | None = None
 
     def __post_init__(self) -> None:
         # comparisons on numpy scalars give numpy booleans: store a plain bool
@@ -1295,9 +1321,8 @@ class Evaluation:
         """The readings (of :attr:`readings`) under which the printed value is accepted."""
         return tuple(r for r in self.readings if r["agrees"])
 
-    def _reading_text(self, reading: dict[str, Any]) -> str:
-        """One reading other than the one used, in words: what differs and what it gives."""
-        unit = "" if self.claim.unit in ("", "statement") else f" {self.claim.unit}"
+    def _reading_words(self, reading: dict[str, Any]) -> list[str]:
+        """What a reading changes from the one used, in words, one phrase per changed input."""
         changed = []
         for name, label in reading["reading"].items():
             if name == PRECISION_READING:
@@ -1314,6 +1339,12 @@ class Evaluation:
             shown = next((_plain(v) for lab, v in (inp.readings if inp else ()) if lab == label), "")
             shown = f" ({shown}{' ' + in_unit if in_unit and shown else ''})" if shown else ""
             changed.append(f"the {quantity} read as {label}{shown}")
+        return changed
+
+    def _reading_text(self, reading: dict[str, Any]) -> str:
+        """One reading other than the one used, in words: what differs and what it gives."""
+        unit = "" if self.claim.unit in ("", "statement") else f" {self.claim.unit}"
+        changed = self._reading_words(reading)
         value = reading["value"]
         band = reading.get("band")
         text = "With " + " and ".join(changed) + ": "
@@ -1374,6 +1405,21 @@ class Evaluation:
                     "The reading that agrees does so over only part of a band whose ends are more than "
                     f"a factor {BAND_FACTOR:g} apart: the assumptions are too loose to decide."
                 )
+        if self.envelope is not None and self.band is not None:
+            unit = "" if self.claim.unit in ("", "statement") else f" {self.claim.unit}"
+            n = sum(1 for i in self.inputs if i["provenance"] == "assumed")
+            other = next((r for r in self.readings if r.get("undecided") and not r["nominal"]), None)
+            if other is not None and not any(r.get("undecided") and r["nominal"] for r in self.readings):
+                who = " and ".join(self._reading_words(other))
+                lead = f"With {who}, the runs over the {n} assumed inputs do not reach the printed value"
+            else:
+                lead = f"The runs over the {n} assumed inputs do not reach the printed value"
+            extra.append(
+                f"{lead}, but the inputs' "
+                f"separate effects add up to {_plain(self.envelope[0])} to {_plain(self.envelope[1])}{unit}, "
+                f"which does: beyond {MAX_CORNER_INPUTS} inputs the corners run are a sample of the box, "
+                "so the search cannot show the printed value out of reach."
+            )
         if self.left_out:
             extra.append(
                 "The band leaves out, as outside the model's domain, "
@@ -1664,6 +1710,49 @@ def _steepest_corners(
     return [up, down]
 
 
+def additive_envelope(
+    value: Any, sensitivity: Sequence[tuple[str, Sequence[tuple[Any, Any]]]]
+) -> tuple[float, float] | None:
+    """What the assumed inputs' separate effects add up to (module docstring, "Beyond six inputs").
+
+    The nominal value plus every input's largest rise in its one-at-a-time run, and minus
+    every largest fall: the extremes of a response that is the sum of one function of each
+    input. It uses only the one-at-a-time runs, and it can only widen when an input is added.
+
+    Parameters
+    ----------
+    value : float or bool
+        The claim's value at the nominal inputs.
+    sensitivity : sequence of (str, sequence of (point, value))
+        Per assumed input, its one-at-a-time runs (:attr:`Evaluation.sensitivity`).
+
+    Returns
+    -------
+    tuple of (float, float) or None
+        ``(low, high)``; ``None`` for a truth value, or where a value is not a finite real
+        number (effects of a truth value do not add).
+
+    Examples
+    --------
+    >>> additive_envelope(10.0, [("a", ((0, 9.0), (1, 12.0))), ("b", ((0, 10.5), (1, 11.0)))])
+    (9.0, 13.0)
+    >>> additive_envelope(True, [("a", ((0, False), (1, True)))]) is None
+    True
+    """
+    if _is_truth(value):
+        return None
+    try:
+        v0 = float(value)
+        rows = [[float(v) - v0 for _, v in row if not _is_truth(v)] for _, row in sensitivity]
+    except (TypeError, ValueError):
+        return None
+    if not math.isfinite(v0) or not all(math.isfinite(d) for row in rows for d in row):
+        return None
+    low = v0 + math.fsum(min(0.0, *row) for row in rows if row)
+    high = v0 + math.fsum(max(0.0, *row) for row in rows if row)
+    return low, high
+
+
 def reading_combinations(conventions: Sequence[Input]) -> list[tuple[tuple[Input, str, Any], ...]]:
     """The combinations of readings a claim is run under, the readings used first.
 
@@ -1705,9 +1794,18 @@ class _Outcome:
     agrees_at_value: bool
     agrees: bool
     too_wide: bool
+    #: the runs do not reach the printed value but the inputs' separate effects add up to it
+    #: (more than six assumed inputs: module docstring, "Beyond six inputs")
+    undecided: bool = False
 
 
-def _outcome(claim: Claim, tol: Tolerance, value: Any, values: Sequence[Any]) -> _Outcome:
+def _outcome(
+    claim: Claim,
+    tol: Tolerance,
+    value: Any,
+    values: Sequence[Any],
+    envelope: tuple[float, float] | None = None,
+) -> _Outcome:
     if claim.is_statement:
         at_value = value == claim.published
         outcomes = {bool(v) for v in (value, *values)}
@@ -1717,7 +1815,12 @@ def _outcome(claim: Claim, tol: Tolerance, value: Any, values: Sequence[Any]) ->
     at_value = _satisfies(value, claim.relation, pub, allowed)
     lo, hi = min([value, *values]), max([value, *values])
     agrees = at_value or _band_satisfies(lo, hi, claim.relation, pub, allowed)
-    return _Outcome(at_value, agrees, bool(values) and band_too_wide(claim, tol, lo, hi))
+    undecided = (
+        not agrees
+        and envelope is not None
+        and _band_satisfies(min(lo, envelope[0]), max(hi, envelope[1]), claim.relation, pub, allowed)
+    )
+    return _Outcome(at_value, agrees, bool(values) and band_too_wide(claim, tol, lo, hi), undecided)
 
 
 #: The verdicts that agree with the printed value.
@@ -1761,7 +1864,8 @@ def derive_status(
     values: list[Any],
     provenances: set[str],
     admissible: bool,
-    readings: Sequence[tuple[Any, Sequence[Any]]] = (),
+    readings: Sequence[tuple[Any, ...]] = (),
+    envelope: tuple[float, float] | None = None,
 ) -> str:
     """The verdict of LEDGER.md from every reading's value and band and the provenances read.
 
@@ -1780,9 +1884,13 @@ def derive_status(
         The provenances of the inputs read.
     admissible : bool
         Every assumed input read spans all admissible values.
-    readings : sequence of (value, values), optional
+    readings : sequence of (value, values) or (value, values, envelope), optional
         The same for each other combination of readings (``values`` empty where no band
         was run).
+    envelope : tuple of (float, float) or None, optional
+        With more than :data:`MAX_CORNER_INPUTS` assumed inputs, what their separate effects
+        add up to (:func:`additive_envelope`): a printed value the runs do not reach but the
+        envelope does is not shown out of reach (module docstring, "Beyond six inputs").
 
     Returns
     -------
@@ -1802,20 +1910,20 @@ def derive_status(
     >>> derive_status(c, tol, 10.5, [], {"convention"}, False, [(11.0, [])])
     'discrepant'
     """
-    outcomes = [_outcome(claim, tol, value, values)] + [_outcome(claim, tol, v, vs) for v, vs in readings]
+    outcomes = [_outcome(claim, tol, value, values, envelope)] + [_outcome(claim, tol, *r) for r in readings]
     if claim.kind == "cross-check":
         return "consistent" if any(o.agrees_at_value for o in outcomes) else "discrepant"
     if claim.kind == "fit" or "fitted" in provenances:
         if any(o.agrees and not o.too_wide for o in outcomes):
             return "consistent"
-        if any(o.agrees for o in outcomes):
-            return "not-reproducible"  # a band over the assumed inputs too wide to decide
+        if any(o.agrees or o.undecided for o in outcomes):
+            return "not-reproducible"  # a band too wide to decide, or a search that cannot
         return "inconsistent"
     if "assumed" in provenances:
         if any(o.agrees and not o.too_wide for o in outcomes):
             return "consistent"
-        if any(o.agrees for o in outcomes):
-            return "not-reproducible"  # a band too wide to decide
+        if any(o.agrees or o.undecided for o in outcomes):
+            return "not-reproducible"  # a band too wide to decide, or a search that cannot
         return "discrepant" if admissible else "inconsistent"
     if outcomes[0].agrees_at_value:
         return "reproduced"
@@ -1920,17 +2028,22 @@ def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
     try:
         excluded: list[str] = []
         values, sensitivity = _band_runs(claim, assumed, excluded=excluded) if run_bands else ([], [])
-        first = _outcome(claim, tol, value, values)
+        # beyond six inputs the corners are a sample of the box: what the inputs' separate
+        # effects add up to bounds what the runs cannot rule out ("Beyond six inputs")
+        sampled = run_bands and len(assumed) > MAX_CORNER_INPUTS
+        envelope = additive_envelope(value, sensitivity) if sampled else None
+        first = _outcome(claim, tol, value, values, envelope)
         # the other readings: their values always (they are shown); their bands only where the
         # readings used do not already agree with a band that decides
         combos = reading_combinations(conventions)[1:] if conventions else []
         others = []
         for combo in combos:
             overrides = {inp.name: v for inp, _, v in combo}
-            others.append([combo, overrides, _run(claim, overrides)[0], []])
+            others.append([combo, overrides, _run(claim, overrides)[0], [], None])
         if run_bands and others and not (first.agrees and not first.too_wide):
             for other in others:
-                other[3] = _band_runs(claim, assumed, base=other[1], excluded=excluded)[0]
+                other[3], other_sensitivity = _band_runs(claim, assumed, base=other[1], excluded=excluded)
+                other[4] = additive_envelope(other[2], other_sensitivity) if sampled else None
     except Exception as exc:
         return Evaluation(
             claim,
@@ -1942,22 +2055,26 @@ def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
             inputs=inputs,
         )
     band = (min([value, *values]), max([value, *values])) if assumed else None
-    other_runs = [(v, vs) for _, _, v, vs in others]
-    status = derive_status(claim, tol, value, values, provenances, admissible, other_runs)
+    other_runs = [(v, vs, env) for _, _, v, vs, env in others]
+    status = derive_status(claim, tol, value, values, provenances, admissible, other_runs, envelope)
     # a whole number's trailing zeros: the loose precision is weighed where the strict one does not agree
     loose = tol.loose() if status not in _AGREEMENT else None
+    final_tol = tol
     if loose is not None:
         status = precision_status(
-            derive_status(claim, loose, value, values, provenances, admissible, other_runs)
+            derive_status(claim, loose, value, values, provenances, admissible, other_runs, envelope)
         )
+        final_tol = loose
     readings: list[dict[str, Any]] = []
     if conventions or loose is not None:
         nominal_combo = tuple((inp, inp.nominal_label, inp.value) for inp in conventions)
-        runs = [(nominal_combo, value, values, True)] + [(c, v, vs, False) for c, _, v, vs in others]
+        runs = [(nominal_combo, value, values, envelope, True)] + [
+            (c, v, vs, env, False) for c, _, v, vs, env in others
+        ]
         precisions = [(None, tol)] if loose is None else [(PRECISION_STRICT, tol), (PRECISION_LOOSE, loose)]
         for precision, t in precisions:
-            for combo, v, vs, nominal in runs:
-                o = first if nominal and t is tol else _outcome(claim, t, v, vs)
+            for combo, v, vs, env, nominal in runs:
+                o = first if nominal and t is tol else _outcome(claim, t, v, vs, env)
                 reading = {inp.name: label for inp, label, _ in combo}
                 if precision is not None:
                     reading[PRECISION_READING] = precision
@@ -1969,9 +2086,19 @@ def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
                         "band": (min([v, *vs]), max([v, *vs])) if vs else None,
                         "agrees": o.agrees,
                         "band_too_wide": o.too_wide,
+                        "undecided": o.undecided,
                     }
                 )
 
+    # not-reproducible: a band too wide to decide, or (beyond six inputs) a printed value the runs
+    # do not reach and the inputs' separate effects add up to
+    final = [
+        (env, _outcome(claim, final_tol, v, vs, env))
+        for v, vs, env in [(value, values, envelope), *other_runs]
+    ]
+    undecided = status == "not-reproducible" and not any(o.agrees for _, o in final)
+    # the envelope that leaves it undecided: the reading used's, else the first other reading's
+    undecided_envelope = next((env for env, o in final if o.undecided), None) if undecided else None
     left_out = tuple({"case": m, "runs": excluded.count(m)} for m in dict.fromkeys(excluded))
     common: dict[str, Any] = dict(
         status=status,
@@ -1980,7 +2107,8 @@ def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
         band=band,
         sensitivity=tuple(sensitivity),
         readings=tuple(readings),
-        band_too_wide=status == "not-reproducible",  # computed: only a band too wide gives it
+        band_too_wide=status == "not-reproducible" and not undecided,
+        envelope=undecided_envelope,
         left_out=left_out,
     )
     if status != claim.expected_status:

@@ -526,6 +526,7 @@ _RECORD_FIELDS = (
     "readings",
     "band_too_wide",
     "left_out",
+    "envelope",
 )
 
 

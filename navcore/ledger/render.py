@@ -1427,7 +1427,7 @@ class ErrataList:
                 claims_html = ", ".join(self._claim_html(c) for c in e.claims) or "none"
                 out.append(
                     f'<div class="erratum erratum-{html.escape(e.basis)}" id="{html.escape(e.id.lower())}">'
-                    f"<h4>{html.escape(e.id)} — {html.escape(e.paper)}, {html.escape(e.locator)}</h4>"
+                    f"<h4>{html.escape(e.id)} — {html.escape(e.paper)}, {html_text(e.locator)}</h4>"
                     f'<p class="erratum-basis"><b>Basis:</b> {html.escape(e.basis)} · '
                     f"<b>Kind:</b> {html.escape(e.kind)}</p>"
                     f"<p><b>Printed:</b> {html_text(e.printed)}</p>"

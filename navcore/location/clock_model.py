@@ -1,21 +1,25 @@
-"""Stochastic model of a free-running aircraft clock (ATC-10 Appendix G).
+r"""Stochastic model of a free-running aircraft clock (ATC-10 Appendix G).
 
-The phase error of the clock (in seconds, after removing the nominal period) is modelled as
-an independent-increment component (white frequency noise, a Wiener process) plus a
-fractional-Brownian "1/f" (flicker frequency) component with Hurst exponent ``rho_h``::
+The phase error :math:`\tau_n` of the clock (in seconds, after removing the nominal period)
+is modelled as an independent-increment component (white frequency noise, a Wiener process)
+plus a fractional-Brownian "1/f" (flicker frequency) component with Hurst exponent
+:math:`\rho` (``rho_h``):
 
-    E[(tau_n - tau_0)(tau_m - tau_0)] = s1^2 min(m, n) + s2^2/2 (m^2H + n^2H - |m - n|^2H)
-                                         (+ tau_bar^2 m n for the raw second moment),
+.. math::
 
-the unnumbered model of ATC-10 Sec. 4.3, with the "(1/tau^2) mn" typo read as tau_bar^2 mn
-(erratum E4-9). With
-``s1 = s2 = sigma0`` and ``rho_h = 1`` it reduces to ``sigma0^2 (min(m, n) + m n)``: a
-random walk plus a random frequency offset (Eq. 4.3.1).
+    E[(\tau_n - \tau_0)&(\tau_m - \tau_0)] = \sigma_1^2 \min(m, n) \\
+        &+ \frac{\sigma_2^2}{2} \left(m^{2\rho} + n^{2\rho} - |m - n|^{2\rho}\right)
+
+(plus :math:`\bar\tau^2 m n` for the raw second moment), the unnumbered model of ATC-10
+Sec. 4.3, with the ":math:`(1/\tau^2)\, mn`" typo read as
+:math:`\bar\tau^2 mn` (erratum E4-9). With :math:`\sigma_1 = \sigma_2 = \sigma_0` and
+:math:`\rho = 1` it reduces to :math:`\sigma_0^2 (\min(m, n) + m n)`: a random walk plus a
+random frequency offset (Eq. 4.3.1).
 
 The Mandelbrot-Van Ness representation of fractional Brownian motion normalises its
-variance by ``V0(rho) = 1 / (Gamma(2 rho + 1) sin(pi rho))`` (Eq. G.5, corrected integrand,
-erratum E4-7); :func:`mandelbrot_van_ness_constant_integral` evaluates the defining
-integral numerically as an independent check.
+variance by :math:`V_0(\rho) = 1 / (\Gamma(2 \rho + 1) \sin(\pi \rho))` (Eq. G.5, corrected
+integrand, erratum E4-7); :func:`mandelbrot_van_ness_constant_integral` evaluates the
+defining integral numerically as an independent check.
 """
 
 from __future__ import annotations
@@ -48,7 +52,8 @@ __all__ = [
 
 @implements("ATC10 G.5")
 def mandelbrot_van_ness_constant(rho_h: float) -> float:
-    """``V0 = 1 / (Gamma(2 rho + 1) sin(pi rho))`` (ATC-10 Eq. G.5), for 0 < rho < 1.
+    r""":math:`V_0 = 1 / (\Gamma(2 \rho + 1) \sin(\pi \rho))` (ATC-10 Eq. G.5), for
+    :math:`0 < \rho < 1` (:math:`\rho` is ``rho_h``).
 
     Parameters
     ----------
@@ -58,7 +63,7 @@ def mandelbrot_van_ness_constant(rho_h: float) -> float:
     Returns
     -------
     float
-        ``V0`` (dimensionless).
+        :math:`V_0` (dimensionless).
 
     Raises
     ------
@@ -84,11 +89,15 @@ def mandelbrot_van_ness_constant(rho_h: float) -> float:
 
 @implements("ATC10 G.5")
 def mandelbrot_van_ness_constant_integral(rho_h: float) -> float:
-    """V0 from its defining integral (ATC-10 Eq. G.5, corrected integrand).
+    r""":math:`V_0` from its defining integral (ATC-10 Eq. G.5, corrected integrand).
 
-    ``V0 = [1/(2 rho) + int_0^inf ((1+s)^(rho-1/2) - s^(rho-1/2))^2 ds] / Gamma(rho+1/2)^2``.
+    .. math::
 
-    Numerical quadrature (scipy.integrate.quad), the independent oracle for
+        V_0 &= \frac{1/(2 \rho) + I}{\Gamma(\rho + 1/2)^2}, \\
+        I &= \int_0^\infty \left((1 + s)^{\rho - 1/2} - s^{\rho - 1/2}\right)^2 ds
+
+    with :math:`\rho` = ``rho_h``. Numerical quadrature (``scipy.integrate.quad``), the
+    independent oracle for
     :func:`mandelbrot_van_ness_constant`.
 
     Parameters
@@ -99,7 +108,7 @@ def mandelbrot_van_ness_constant_integral(rho_h: float) -> float:
     Returns
     -------
     float
-        ``V0`` (dimensionless).
+        :math:`V_0` (dimensionless).
 
     Raises
     ------
@@ -139,10 +148,12 @@ def mandelbrot_van_ness_constant_integral(rho_h: float) -> float:
 def clock_covariance(
     n_epochs: int, sigma1: float, sigma2: float, rho_h: float = 1.0, tau_bar: float = 0.0
 ) -> np.ndarray:
-    """Second moments ``E[(tau_n - tau_0)(tau_m - tau_0)]``, n, m = 1..n_epochs (ATC-10 Sec. 4.3).
+    r"""Second moments :math:`E[(\tau_n - \tau_0)(\tau_m - \tau_0)]`, :math:`n, m = 1, \dots, N`
+    with :math:`N` = ``n_epochs`` (ATC-10 Sec. 4.3).
 
-    ``tau_bar = 0`` gives the covariance; a nonzero ``tau_bar`` adds the mean product
-    ``tau_bar^2 m n``. ``rho_h`` in (0, 1]; rho_h = 1 is the random-frequency-offset limit.
+    ``tau_bar = 0`` gives the covariance; a nonzero ``tau_bar`` (:math:`\bar\tau`) adds the mean
+    product :math:`\bar\tau^2 m n`. ``rho_h`` (:math:`\rho`) lies in (0, 1]; :math:`\rho = 1` is
+    the random-frequency-offset limit.
 
     Parameters
     ----------
@@ -165,7 +176,8 @@ def clock_covariance(
     Raises
     ------
     ValueError
-        If ``n_epochs`` is not a positive integer, a sigma is negative or ``rho_h`` is not in
+        If ``n_epochs`` is not a positive integer, ``sigma1`` or ``sigma2`` is negative or
+        ``rho_h`` is not in
         (0, 1].
 
     References
@@ -193,16 +205,17 @@ def clock_covariance(
 
 @implements("ATC10 4.5.23", "ATC10 4.3.1")
 def clock_increment_covariance(n_epochs: int, sigma0: float) -> np.ndarray:
-    """Covariance of the increments Delta_n for the Eq. 4.3.1 model.
+    r"""Covariance of the increments :math:`\Delta_n` for the Eq. 4.3.1 model.
 
-    ``2 sigma0^2`` on the diagonal, ``sigma0^2`` off it.
+    :math:`2 \sigma_0^2` on the diagonal, :math:`\sigma_0^2` off it.
 
     Parameters
     ----------
     n_epochs : int
         Number of increments (``>= 1``).
     sigma0 : float
-        Standard deviation of the clock increments ``w_n`` and of ``A`` (a time unit, ``>= 0``).
+        Standard deviation :math:`\sigma_0` of the clock increments :math:`w_n` and of
+        :math:`A` (a time unit, ``>= 0``).
 
     Returns
     -------
@@ -237,10 +250,12 @@ def sample_clock_paths(
     rho_h: float = 1.0,
     seed: int = 0,
 ) -> np.ndarray:
-    """Seeded sample paths of ``tau_n - tau_0 - n tau_bar``, n = 1..n_epochs.
+    r"""Seeded sample paths of :math:`\tau_n - \tau_0 - n \bar\tau`, :math:`n = 1, \dots, N`
+    with :math:`N` = ``n_epochs``.
 
     Exact Gaussian sampling by Cholesky factorisation of :func:`clock_covariance` (a tiny
-    diagonal jitter keeps the factorisation stable for the rank-deficient rho_h = 1 case).
+    diagonal jitter keeps the factorisation stable for the rank-deficient ``rho_h = 1`` case).
+
 
     Parameters
     ----------

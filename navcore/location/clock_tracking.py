@@ -1,25 +1,31 @@
-"""Tracking the aircraft clock (emission time tau_n) to improve multilateration.
+r"""Tracking the aircraft clock (emission time :math:`\tau_n`) to improve multilateration.
 
-The aircraft emits a pulse about every tau_bar seconds; the emission times form a clock
-process tau_n with increments Delta_n = tau_n - tau_{n-1} - tau_bar whose covariance is
-``E[Delta_n Delta_m] = 2 sigma0^2`` for n = m and ``sigma0^2`` otherwise (ATC-10 Eq. 4.5.23,
-the random-walk-plus-frequency-offset model Delta_n = w_n + A).
+The aircraft emits a pulse about every :math:`\bar\tau` seconds; the emission times form a
+clock process :math:`\tau_n` with increments :math:`\Delta_n = \tau_n - \tau_{n-1} - \bar\tau`
+whose covariance is :math:`E[\Delta_n \Delta_m] = 2 \sigma_0^2` for :math:`n = m` and
+:math:`\sigma_0^2` otherwise (ATC-10 Eq. 4.5.23, the random-walk-plus-frequency-offset model
+:math:`\Delta_n = w_n + A`).
 
-The estimator of ATC-10 Section 4.5 predicts ``tau_n`` from ``tau_hat_{n-1} + tau_bar`` and
-corrects it with the time-of-arrival residuals projected off the position directions,
+The estimator of ATC-10 Section 4.5 predicts :math:`\tau_n` from
+:math:`\hat\tau_{n-1} + \bar\tau` and corrects it with the time-of-arrival residuals
+projected off the position directions,
 
-    tau_hat_n = tau_hat_{n-1} + tau_bar + gamma_n 1'(I - P)(T_n - k_n - (tau_hat_{n-1} + tau_bar) 1),
+.. math::
 
-with the gain ``gamma_n = s_n / (sigma^2 + beta s_n)``, ``s_n`` the prior variance
-(Eqs. 4.5.16-4.5.25). The error variance is ``sigma^2 gamma_n``; the position error
-has mean square ``sigma^2 (tr{(F'F)^-1} + gamma_n S)`` (Eq. 4.5.35 corrected).
-In steady state ``gamma = psi(alpha)/beta`` with ``alpha = (8/27) sigma0^2 beta / sigma^2``
-and psi the real root of a cubic (Eqs. 4.5.26, 4.5.32-4.5.34). When only three
-satellites remain, tau is extrapolated (Eqs. 4.5.27-4.5.30).
+    \hat\tau_n &= \hat\tau_{n-1} + \bar\tau \\
+        &\quad + \gamma_n \mathbf{1}'(I - P)\left(T_n - k_n - (\hat\tau_{n-1} + \bar\tau) \mathbf{1}\right),
 
-All variances are in the square of the time unit of ``sigma``; with F built from unit
-vectors and c = 1 ft/ns (the paper's convention) position variances in ft^2 equal the
-ns^2 numbers.
+with the gain :math:`\gamma_n = s_n / (\sigma^2 + \beta s_n)`, :math:`s_n` the prior variance
+(Eqs. 4.5.16-4.5.25). The error variance is :math:`\sigma^2 \gamma_n`; the position error
+has mean square :math:`\sigma^2 (\operatorname{tr}\{(F'F)^{-1}\} + \gamma_n S)` (Eq. 4.5.35
+corrected). In steady state :math:`\gamma = \psi(\alpha)/\beta` with
+:math:`\alpha = (8/27) \sigma_0^2 \beta / \sigma^2` and :math:`\psi` the real root of a cubic
+(Eqs. 4.5.26, 4.5.32-4.5.34). When only three satellites remain, :math:`\tau` is
+extrapolated (Eqs. 4.5.27-4.5.30).
+
+All variances are in the square of the time unit of :math:`\sigma`; with :math:`F` built
+from unit vectors and :math:`c` = 1 ft/ns (the paper's convention) position variances in
+ft² equal the ns² numbers.
 """
 
 from __future__ import annotations
@@ -66,7 +72,7 @@ __all__ = [
 
 @implements("ATC10 4.5.32")
 def alpha_parameter(sigma0: float, sigma: float, beta: float) -> float:
-    """``alpha = (8/27) sigma0^2 beta / sigma^2`` (ATC-10 Eq. 4.5.32).
+    r""":math:`\alpha = (8/27)\, \sigma_0^2 \beta / \sigma^2` (ATC-10 Eq. 4.5.32).
 
     Parameters
     ----------
@@ -75,7 +81,7 @@ def alpha_parameter(sigma0: float, sigma: float, beta: float) -> float:
     sigma : float
         Time-of-arrival noise standard deviation (same unit, ``> 0``).
     beta : float
-        ``1'(I - P)1`` (dimensionless, ``>= 0``).
+        :math:`\mathbf{1}'(I - P)\mathbf{1}` (dimensionless, ``>= 0``).
 
     Returns
     -------
@@ -105,14 +111,20 @@ def alpha_parameter(sigma0: float, sigma: float, beta: float) -> float:
 
 @implements("ATC10 4.5.34")
 def psi(alpha: np.ndarray | float) -> np.ndarray | float:
-    """Steady-state gain factor ``psi = gamma beta`` (ATC-10 Eq. 4.5.34), real cube roots.
+    r"""Steady-state gain factor :math:`\psi = \gamma \beta` (ATC-10 Eq. 4.5.34), real cube
+    roots.
 
-    ``psi(alpha) = 1.5 alpha^(1/3) {cbrt(1 + sqrt(1 + alpha)) + cbrt(1 - sqrt(1 + alpha))}``.
+    .. math::
+
+        \psi(\alpha) = 1.5\, \alpha^{1/3} \Big\{&\sqrt[3]{1 + \sqrt{1 + \alpha}} \\
+            &+ \sqrt[3]{1 - \sqrt{1 + \alpha}}\Big\}.
+
     The second cube root has a negative argument: ``np.cbrt`` returns the real root,
-    whereas ``x ** (1/3)`` would return a complex principal root. For large alpha the two
-    cube roots nearly cancel, so the algebraically equal form
-    ``1.5 alpha / (cbrt(a)^2 + cbrt(a) cbrt(b) + cbrt(b)^2)`` with ``a - b = 2 sqrt(1+alpha)``
-    is not needed here; both are accurate to ~1e-12 for alpha <= 1e3.
+    whereas ``x ** (1/3)`` would return a complex principal root. For large :math:`\alpha`
+    the two cube roots nearly cancel, so the algebraically equal form
+    :math:`1.5\, \alpha / (\sqrt[3]{a}^2 + \sqrt[3]{a} \sqrt[3]{b} + \sqrt[3]{b}^2)` with
+    :math:`a - b = 2 \sqrt{1 + \alpha}` is not needed here; both are accurate to about
+    :math:`10^{-12}` for :math:`\alpha \le 10^3`.
 
     Parameters
     ----------
@@ -122,7 +134,7 @@ def psi(alpha: np.ndarray | float) -> np.ndarray | float:
     Returns
     -------
     float or ndarray
-        ``psi`` in [0, 1).
+        :math:`\psi` in [0, 1).
 
     Raises
     ------
@@ -148,7 +160,8 @@ def psi(alpha: np.ndarray | float) -> np.ndarray | float:
 
 
 def psi_cubic_root(alpha: float) -> float:
-    """psi as the real root in (0, 1) of ``x^3 + q x - q = 0``, ``q = 27 alpha / 4``.
+    r""":math:`\psi` as the real root in (0, 1) of :math:`x^3 + q x - q = 0`,
+    :math:`q = 27 \alpha / 4`.
 
     Independent of :func:`psi`: uses ``numpy.roots`` (companion-matrix eigenvalues).
 
@@ -160,7 +173,7 @@ def psi_cubic_root(alpha: float) -> float:
     Returns
     -------
     float
-        ``psi``.
+        :math:`\psi`.
 
     Raises
     ------
@@ -186,7 +199,8 @@ def psi_cubic_root(alpha: float) -> float:
 
 @implements("ATC10 4.5.38")
 def psi_small_alpha(alpha: np.ndarray | float) -> np.ndarray | float:
-    """``1.5 * 2^(1/3) [alpha^(1/3) - (alpha/2)^(2/3)]``, the alpha <= 0.3 approximation (Eq. 4.5.38).
+    r""":math:`1.5 \cdot 2^{1/3} [\alpha^{1/3} - (\alpha/2)^{2/3}]`, the :math:`\alpha \le 0.3`
+    approximation (Eq. 4.5.38).
 
     Parameters
     ----------
@@ -196,7 +210,7 @@ def psi_small_alpha(alpha: np.ndarray | float) -> np.ndarray | float:
     Returns
     -------
     float or ndarray
-        Approximate ``psi``.
+        Approximate :math:`\psi`.
 
     Raises
     ------
@@ -220,7 +234,7 @@ def psi_small_alpha(alpha: np.ndarray | float) -> np.ndarray | float:
 
 @implements("ATC10 4.5.38")
 def psi_large_alpha(alpha: np.ndarray | float) -> np.ndarray | float:
-    """``1 - 4 / (27 alpha)``, the alpha >= 1 approximation (Eq. 4.5.38).
+    r""":math:`1 - 4 / (27 \alpha)`, the :math:`\alpha \ge 1` approximation (Eq. 4.5.38).
 
     Parameters
     ----------
@@ -230,7 +244,7 @@ def psi_large_alpha(alpha: np.ndarray | float) -> np.ndarray | float:
     Returns
     -------
     float or ndarray
-        Approximate ``psi``.
+        Approximate :math:`\psi`.
 
     Raises
     ------
@@ -256,16 +270,16 @@ def psi_large_alpha(alpha: np.ndarray | float) -> np.ndarray | float:
 
 @implements("ATC10 4.5.33")
 def steady_state_gain(beta: float, sigma: float, sigma0: float) -> float:
-    """``gamma = psi(alpha) / beta`` (ATC-10 Eq. 4.5.33).
+    r"""``gamma = psi(alpha) / beta`` (ATC-10 Eq. 4.5.33).
 
     Parameters
     ----------
     beta : float
-        ``1'(I - P)1``, the clock's share of the geometry (dimensionless, ``> 0``).
+        :math:`\mathbf{1}'(I - P)\mathbf{1}`, the clock's share of the geometry (dimensionless, ``> 0``).
     sigma : float
         Time-of-arrival noise standard deviation (a time unit, e.g. ns; ``> 0``).
     sigma0 : float
-        Standard deviation of the clock increments ``w_n`` and ``A`` (same time unit, ``>= 0``).
+        Standard deviation of the clock increments :math:`w_n` and :math:`A` (same time unit, ``>= 0``).
 
     Returns
     -------
@@ -294,18 +308,19 @@ def steady_state_gain(beta: float, sigma: float, sigma0: float) -> float:
 
 @dataclass(frozen=True)
 class GainHistory:
-    """The gain recursion for n = 0..n_steps.
+    r"""The gain recursion for :math:`n = 0, \dots, N` with :math:`N` = ``n_steps``.
 
     Attributes
     ----------
     gamma : ndarray
-        gamma_n; the clock-error variance is ``sigma^2 gamma_n`` (gamma_0 = 1/beta).
+        :math:`\gamma_n`; the clock-error variance is :math:`\sigma^2 \gamma_n`
+        (:math:`\gamma_0 = 1/\beta`).
     prior_variance : ndarray
-        ``s_n``, variance of the predicted clock error; at n = 0, where nothing is predicted,
-        the least-squares variance ``sigma^2 gamma_0``.
+        :math:`s_n`, variance of the predicted clock error; at :math:`n = 0`, where nothing
+        is predicted, the least-squares variance :math:`\sigma^2 \gamma_0`.
     cross : ndarray
-        ``d_n = -E[Delta_{n+1} xi_n]``, the correlation of the estimation error with the
-        next clock increment (d_0 = 0).
+        :math:`d_n = -E[\Delta_{n+1} \xi_n]`, the correlation of the estimation error with
+        the next clock increment (:math:`d_0 = 0`).
     """
 
     gamma: np.ndarray
@@ -315,28 +330,34 @@ class GainHistory:
 
 @implements("ATC10 4.5.16", "ATC10 4.5.25")
 def gain_recursion(beta: float, sigma: float, sigma0: float, n_steps: int) -> GainHistory:
-    """Optimal gains of the constrained clock tracker (ATC-10 Eqs. 4.5.16-4.5.25, corrected).
+    r"""Optimal gains of the constrained clock tracker (ATC-10 Eqs. 4.5.16-4.5.25, corrected).
 
-    ``s_n = 2 sigma0^2 + sigma^2 gamma_{n-1} + 2 d_{n-1}``,
-    ``gamma_n = s_n / (sigma^2 + beta s_n)``, ``a_n = 1 - gamma_n beta``,
-    ``d_n = a_n (sigma0^2 + d_{n-1})``, starting from the least-squares ``gamma_0 = 1/beta``.
+    .. math::
+
+        s_n &= 2 \sigma_0^2 + \sigma^2 \gamma_{n-1} + 2 d_{n-1}, \\
+        \gamma_n &= \frac{s_n}{\sigma^2 + \beta s_n}, \\
+        a_n &= 1 - \gamma_n \beta, \\
+        d_n &= a_n (\sigma_0^2 + d_{n-1}),
+
+    starting from the least-squares :math:`\gamma_0 = 1/\beta`.
 
     Parameters
     ----------
     beta : float
-        ``1'(I - P)1``, the clock's share of the geometry (dimensionless, ``> 0``).
+        :math:`\mathbf{1}'(I - P)\mathbf{1}`, the clock's share of the geometry (dimensionless, ``> 0``).
     sigma : float
         Time-of-arrival noise standard deviation (a time unit, e.g. ns; ``> 0``).
     sigma0 : float
-        Standard deviation of the clock increments ``w_n`` and ``A`` (same time unit, ``>= 0``).
+        Standard deviation of the clock increments :math:`w_n` and :math:`A` (same time unit, ``>= 0``).
     n_steps : int
         Number of tracked epochs after the first (``>= 0``, bounded).
 
     Returns
     -------
     GainHistory
-        Gains ``gamma_n`` (dimensionless; the clock-error variance is ``sigma^2 gamma_n``),
-        prior variances ``s_n`` and cross terms ``d_n`` (time unit squared), n = 0..n_steps.
+        Gains :math:`\gamma_n` (dimensionless; the clock-error variance is
+        :math:`\sigma^2 \gamma_n`), prior variances :math:`s_n` and cross terms :math:`d_n`
+        (time unit squared), :math:`n = 0, \dots, N` with :math:`N` = ``n_steps``.
 
     Raises
     ------
@@ -376,10 +397,10 @@ def gain_recursion(beta: float, sigma: float, sigma0: float, n_steps: int) -> Ga
 def three_satellite_clock_variance(
     gamma_last: float, cross_last: float, sigma: float, sigma0: float, m: np.ndarray | int
 ) -> np.ndarray:
-    """Clock-error variance m epochs after the drop to three satellites (exact, any N).
+    r"""Clock-error variance m epochs after the drop to three satellites (exact, any N).
 
-    ``sigma^2 gamma_N + sigma0^2 (m + m^2) + 2 m d_N``: the extrapolation
-    ``tau_hat_{N+m} = tau_hat_N + m tau_bar`` accumulates the clock increments.
+    :math:`\sigma^2 \gamma_N + \sigma_0^2 (m + m^2) + 2 m d_N`: the extrapolation
+    :math:`\hat\tau_{N+m} = \hat\tau_N + m \bar\tau` accumulates the clock increments.
 
     Parameters
     ----------
@@ -390,7 +411,7 @@ def three_satellite_clock_variance(
     sigma : float
         Time-of-arrival noise standard deviation (a time unit, e.g. ns; ``> 0``).
     sigma0 : float
-        Standard deviation of the clock increments ``w_n`` and ``A`` (same time unit, ``>= 0``).
+        Standard deviation of the clock increments :math:`w_n` and :math:`A` (same time unit, ``>= 0``).
     m : int or ndarray
         Epochs since the drop (``>= 0``).
 
@@ -425,16 +446,17 @@ def three_satellite_clock_variance(
 def three_satellite_clock_variance_steady(
     beta: float, sigma: float, sigma0: float, m: np.ndarray | int
 ) -> np.ndarray:
-    """Eq. 4.5.27: ``sigma^2 gamma + sigma0^2 [(2 - psi)/psi m + m^2]`` with gamma = psi/beta.
+    r"""Eq. 4.5.27: :math:`\sigma^2 \gamma + \sigma_0^2 [(2 - \psi) m / \psi + m^2]` with
+    :math:`\gamma = \psi/\beta`.
 
     Parameters
     ----------
     beta : float
-        ``1'(I - P)1``, the clock's share of the geometry (dimensionless, ``> 0``).
+        :math:`\mathbf{1}'(I - P)\mathbf{1}`, the clock's share of the geometry (dimensionless, ``> 0``).
     sigma : float
         Time-of-arrival noise standard deviation (a time unit, e.g. ns; ``> 0``).
     sigma0 : float
-        Standard deviation of the clock increments ``w_n`` and ``A`` (same time unit, ``>= 0``).
+        Standard deviation of the clock increments :math:`w_n` and :math:`A` (same time unit, ``>= 0``).
     m : int or ndarray
         Epochs since the drop to three satellites (``>= 0``).
 
@@ -468,26 +490,29 @@ def three_satellite_clock_variance_steady(
 def position_mse(
     sigma: float, trace: float, clock_term: float, gamma: np.ndarray | float
 ) -> np.ndarray | float:
-    """``E|xi_p|^2 = sigma^2 (tr{(F'F)^-1} + gamma S)`` (ATC-10 Eq. 4.5.35, corrected).
+    r""":math:`E|\xi_p|^2 = \sigma^2 (\operatorname{tr}\{(F'F)^{-1}\} + \gamma S)` (ATC-10
+    Eq. 4.5.35, corrected).
 
     For three satellites pass the clock term the caller believes in: the invariant
-    ``1'(FF')^-1 1`` (correct) or the printed ``1'(F'F)^-1 1`` (erratum E4-1).
+    :math:`\mathbf{1}'(FF')^{-1} \mathbf{1}` (correct) or the printed
+    :math:`\mathbf{1}'(F'F)^{-1} \mathbf{1}` (erratum E4-1).
 
     Parameters
     ----------
     sigma : float
         Time-of-arrival noise standard deviation (a time unit; with c = 1 ft/ns, ns gives ft).
     trace : float
-        ``tr{(F'F)^-1}`` of the position geometry (dimensionless).
+        :math:`\operatorname{tr}\{(F'F)^{-1}\}` of the position geometry (dimensionless).
     clock_term : float
-        ``S``, the clock's contribution to the position error (dimensionless).
+        :math:`S`, the clock's contribution to the position error (dimensionless).
     gamma : float or ndarray
-        Clock gain(s) ``gamma_n`` (dimensionless).
+        Clock gain(s) :math:`\gamma_n` (dimensionless).
 
     Returns
     -------
     float or ndarray
-        Mean square position error, in the time unit squared (ft^2 with ns and c = 1 ft/ns).
+        Mean square position error, in the time unit squared (ft² with ns and
+        :math:`c` = 1 ft/ns).
 
     References
     ----------
@@ -503,7 +528,8 @@ def position_mse(
 
 
 def convergence_steps(history: GainHistory, rel: float) -> int:
-    """First n after which ``|gamma_n - gamma_inf| <= rel * gamma_inf`` for all later n.
+    r"""First n after which :math:`|\gamma_n - \gamma_\infty| \le \mathrm{rel} \cdot \gamma_\infty` for all
+    later n.
 
     ``gamma_inf`` is taken as the last gain of ``history``.
 
@@ -536,14 +562,16 @@ def convergence_steps(history: GainHistory, rel: float) -> int:
 
 
 def convergence_steps_geometric(psi_value: float, rel: float) -> float:
-    """Steps for the geometric series ``sum (1 - psi)^i`` to come within ``rel`` of its limit.
+    r"""Steps for the geometric series :math:`\sum_i (1 - \psi)^i` to come within ``rel`` of
+    its limit.
 
-    ``n = log(rel) / log(1 - psi) - 1``; for small psi about ``2.3 / psi - 1`` (rel = 0.1).
+    :math:`n = \log(\mathrm{rel}) / \log(1 - \psi) - 1`; for small :math:`\psi` about
+    :math:`2.3 / \psi - 1` (``rel = 0.1``).
 
     Parameters
     ----------
     psi_value : float
-        Steady-state gain factor ``psi``, in (0, 1).
+        Steady-state gain factor :math:`\psi`, in (0, 1).
     rel : float
         Relative tolerance, in (0, 1).
 
@@ -609,12 +637,12 @@ def simulate_tracker(
     tau_bar: float,
     tau_start: float = 12_345.0,
 ) -> TrackerMonteCarlo:
-    """Monte Carlo of the whole tracker on simulated clocks and time-of-arrival noise.
+    r"""Monte Carlo of the whole tracker on simulated clocks and time-of-arrival noise.
 
     Epoch 0: least squares on all satellites; 1..N: the constrained tracker with the gains of
     :func:`gain_recursion`; N+1..N+M: three satellites, clock extrapolated, position from
-    ``F3^-1``. The clock is ``tau_n = tau_start + n tau_bar + sum w_i + n A`` with
-    ``w_i, A ~ N(0, sigma0^2)``; measurement noise ``N(0, sigma^2 I)``. The aircraft track
+    ``F3^-1``. The clock is :math:`\tau_n = \tau_{start} + n \bar\tau + \sum_i w_i + n A` with
+    :math:`w_i, A \sim N(0, \sigma_0^2)`; measurement noise :math:`N(0, \sigma^2 I)`. The aircraft track
     is an arbitrary nonrandom sequence (it cancels in the errors because the estimator is
     exact for it); only errors are simulated. Vectorised over runs.
 
@@ -755,12 +783,13 @@ def tracking_position_errors(
     c: float,
     psi_value: float | None = None,
 ) -> TrackingErrors:
-    """RMS position errors with clock tracking for any geometry and clock (a Table 4.3 row).
+    r"""RMS position errors with clock tracking for any geometry and clock (a Table 4.3 row).
 
     Parameters
     ----------
     trace_all, s_all : float
-        ``tr{(F'F)^-1}`` and the clock-direction term ``S`` of all the satellites in view
+        :math:`\operatorname{tr}\{(F'F)^{-1}\}` and the clock-direction term ``S`` of all the satellites in
+        view
         (dimensionless, F built from unit line-of-sight vectors; see
         :mod:`navcore.location.multilateration`).
     trace_three, s_three : float
@@ -779,24 +808,26 @@ def tracking_position_errors(
         makes position errors in ft equal the ns numbers. There is no default: the
         convention is the caller's choice.
     psi_value : float, optional
-        Use this steady-state gain factor instead of the exact ``psi(alpha)`` (to propagate
-        a printed, rounded psi).
+        Use this steady-state gain factor instead of the exact :math:`\psi(\alpha)` (to
+        propagate a printed, rounded :math:`\psi`).
 
     Returns
     -------
     TrackingErrors
-        ``alpha`` (Eq. 4.5.32), ``psi`` (Eq. 4.5.34), and the RMS position errors: least
-        squares without tracking ``c sigma sqrt(tr + S/beta)``, the tracking limit
-        ``c sigma sqrt(tr + (psi/beta) S)`` (Eq. 4.5.35 corrected) and the first
-        three-satellite estimate ``c sigma sqrt(tr3 + gamma_{N+1} S3)`` with
-        ``gamma_{N+1} = [psi + (27/8) alpha (2/psi)] / beta`` (Eq. 4.5.27).
+        :math:`\alpha` (Eq. 4.5.32), :math:`\psi` (Eq. 4.5.34), and the RMS position
+        errors: least squares without tracking :math:`c \sigma \sqrt{\mathrm{tr} + S/\beta}`,
+        the tracking limit :math:`c \sigma \sqrt{\mathrm{tr} + (\psi/\beta) S}` (Eq. 4.5.35
+        corrected) and the first three-satellite estimate
+        :math:`c \sigma \sqrt{\mathrm{tr}_3 + \gamma_{N+1} S_3}` with
+        :math:`\gamma_{N+1} = [\psi + (27/8) \alpha (2/\psi)] / \beta` (Eq. 4.5.27).
 
     Raises
     ------
     ValueError
         If a trace is not positive, an ``S`` negative, ``beta``, ``sigma`` or ``c`` not
-        positive, or ``sigma0`` negative (``sigma0 = 0`` gives psi = 0 and no first
+        positive, or ``sigma0`` negative (``sigma0 = 0`` gives :math:`\psi = 0` and no first
         three-satellite estimate, so it is rejected too).
+
 
     References
     ----------

@@ -38,7 +38,7 @@ All quantities are SI: metres, metres per second, hertz.
 
 References
 ----------
-N. E. Wu and M. L. Fowler, "Application of MEMS for improved emitter location accuracy".
+Wu, N. E. and Fowler, M. L., "Application of MEMS for improved emitter location accuracy".
 """
 
 from __future__ import annotations
@@ -100,7 +100,7 @@ def _geometry(emitter: ArrayLike, position: ArrayLike) -> tuple[Array, Array]:
 
 @implements("WF 1")
 def doppler_frequency(f0: float, emitter: ArrayLike, position: ArrayLike, velocity: ArrayLike) -> Array:
-    """Received frequency of a stationary emitter at a moving aperture (WF Eq. (1)).
+    r"""Received frequency of a stationary emitter at a moving aperture (WF Eq. (1)).
 
     Parameters
     ----------
@@ -114,7 +114,7 @@ def doppler_frequency(f0: float, emitter: ArrayLike, position: ArrayLike, veloci
     Returns
     -------
     (M,) array
-        ``f0 + (f0/c) v . u_R`` in Hz; positive shift when closing on the emitter.
+        :math:`f_0 + (f_0/c)\, \mathbf v \cdot \mathbf u_R` in Hz; positive shift when closing on the emitter.
 
     Raises
     ------
@@ -137,7 +137,8 @@ def doppler_frequency(f0: float, emitter: ArrayLike, position: ArrayLike, veloci
 
 @implements("WF 7", "WF 8")
 def doppler_gradient_velocity(f0: float, emitter: ArrayLike, position: ArrayLike) -> Array:
-    """Gradient of the received frequency w.r.t. aperture velocity, ``(f0/c) u_R`` (WF Eq. (8)).
+    r"""Gradient of the received frequency w.r.t. aperture velocity, :math:`(f_0/c)\, \mathbf u_R` (WF Eq.
+    (8)).
 
     It is the velocity term ``df/dv`` of the total differential WF Eq. (7).
 
@@ -178,9 +179,10 @@ def doppler_gradient_velocity(f0: float, emitter: ArrayLike, position: ArrayLike
 def doppler_gradient_position(
     f0: float, emitter: ArrayLike, position: ArrayLike, velocity: ArrayLike
 ) -> Array:
-    """Gradient of the received frequency w.r.t. aperture position (WF Eq. (9), exact form).
+    r"""Gradient of the received frequency w.r.t. aperture position (WF Eq. (9), exact form).
 
-    ``df/dp = -(f0/(c R)) (v - (v.u_R) u_R)``: only the velocity component across the line
+    :math:`\partial f/\partial \mathbf p = -\frac{f_0}{c R} (\mathbf v - (\mathbf v^T \mathbf u_R) \mathbf
+    u_R)`: only the velocity component across the line
     of sight matters. It is the position term of the total differential WF Eq. (7).
 
     Parameters
@@ -225,7 +227,8 @@ def doppler_gradient_position(
 
 @implements("WF 9")
 def position_sensitivity_bound(f0: float, speed: ArrayLike, range_m: ArrayLike) -> Array:
-    """The printed upper bound ``(f0/c) 2||v|| / R`` on ``||df/dp||`` (WF Eq. (9)).
+    r"""The printed upper bound :math:`(f_0/c)\, 2\|\mathbf v\|/R` on :math:`\|\partial f/\partial \mathbf
+    p\|` (WF Eq. (9)).
 
     Parameters
     ----------
@@ -471,7 +474,8 @@ def linearized_location_error(H: ArrayLike, error: ArrayLike, W: ArrayLike | Non
 def location_error_covariance(H: ArrayLike, error_covariance: ArrayLike, W: ArrayLike | None = None) -> Array:
     r"""Covariance of the WF Eq. (6) error for a frequency-error covariance :math:`\Sigma`.
 
-    ``G Sigma G^T`` with ``G = (H^T W H)^{-1} H^T W``; it reduces to ``(H^T Sigma^-1 H)^-1``
+    :math:`\mathbf G \Sigma \mathbf G^T` with :math:`\mathbf G = (\mathbf H^T \mathbf W \mathbf H)^{-1}
+    \mathbf H^T \mathbf W`; it reduces to :math:`(\mathbf H^T \Sigma^{-1} \mathbf H)^{-1}`
     when ``W = Sigma^-1``.
 
     Parameters
@@ -479,14 +483,14 @@ def location_error_covariance(H: ArrayLike, error_covariance: ArrayLike, W: Arra
     H : (M, n) array
         Jacobian of WF Eq. (4) (Hz per m and Hz per Hz).
     error_covariance : (M, M) array
-        Covariance :math:`\Sigma` of the frequency errors, Hz^2.
+        Covariance :math:`\Sigma` of the frequency errors, Hz².
     W : (M, M) or (M,) array, optional
         Positive-definite weight (identity by default; a vector means a diagonal).
 
     Returns
     -------
     (n, n) ndarray
-        Covariance of the error of ``[p^e, f0]`` (m^2, Hz^2 and cross terms).
+        Covariance of the error of ``[p^e, f0]`` (m², Hz² and cross terms).
 
     Raises
     ------
@@ -514,7 +518,7 @@ def location_error_covariance(H: ArrayLike, error_covariance: ArrayLike, W: Arra
 
 @dataclass(frozen=True)
 class GaussNewtonResult:
-    """Result of :func:`emitter_gauss_newton`.
+    r"""Result of :func:`emitter_gauss_newton`.
 
     Attributes
     ----------
@@ -525,7 +529,7 @@ class GaussNewtonResult:
     residual : (M,) array
         ``m - f(estimate)`` in Hz.
     normal_equation : (4,) array
-        ``H^T W residual`` (WF Eq. (3)); zero at the solution.
+        :math:`\mathbf H^T \mathbf W` times ``residual`` (WF Eq. (3)); zero at the solution.
     iterations : int
     converged : bool
     """

@@ -1,23 +1,27 @@
-"""Satellite multilateration geometry: unit vectors, the matrix F and its invariants.
+r"""Satellite multilateration geometry: unit vectors, the matrix F and its invariants.
 
-An aircraft's pulse is received by K satellites; the times of arrival are linear (after
-linearisation) in the aircraft position p and the unknown emission time tau,
+An aircraft's pulse is received by :math:`K` satellites; the times of arrival are linear
+(after linearisation) in the aircraft position :math:`p` and the unknown emission time
+:math:`\tau`,
 
-    T = k + tau * 1 + F (p - p*) + eps,    F = U / c,
+.. math::
 
-where the rows of U are unit vectors from the satellites to the aircraft (ATC-10 Eq. 4.2.3).
-navcore's lines of sight point the other way, from the aircraft (the receiver) to each
-satellite (:func:`line_of_sight_matrix`, as everywhere in navcore), so F = -U/c; every
-quantity below is quadratic in F and does not see the sign.
+    T = k + \tau \mathbf{1} + F (p - p^*) + \epsilon, \qquad F = U / c,
+
+where the rows of :math:`U` are unit vectors from the satellites to the aircraft (ATC-10
+Eq. 4.2.3). navcore's lines of sight point the other way, from the aircraft (the receiver)
+to each satellite (:func:`line_of_sight_matrix`, as everywhere in navcore), so
+:math:`F = -U/c`; every quantity below is quadratic in :math:`F` and does not see the sign.
 All the quality measures of the constellation are functions of the projector
-``P = F (F'F)^-1 F'`` onto the column space of F:
+:math:`P = F (F'F)^{-1} F'` onto the column space of :math:`F`:
 
-* ``beta = K - 1'P1 = 1'(I - P)1`` (Eq. 4.5.2, with the "K minus" reading of the printed
-  "K^-1", see ATC-10 erratum E4-3);
-* ``tr{(F'F)^-1}`` (the position-only dilution);
-* the clock-direction term ``S = 1'F(F'F)^-2 F'1``; for K = 3 it equals the rotation
-  invariant ``1'(FF')^-1 1``;
-* the dilution ``k^2 = tr{(F'F)^-1} + S / beta`` (Eqs. 4.1.1-4.1.2, 4.6.2), which ATC-10
+* :math:`\beta = K - \mathbf{1}'P\mathbf{1} = \mathbf{1}'(I - P)\mathbf{1}` (Eq. 4.5.2, with
+  the "K minus" reading of the printed ":math:`K^{-1}`", see ATC-10 erratum E4-3);
+* :math:`\operatorname{tr}\{(F'F)^{-1}\}` (the position-only dilution);
+* the clock-direction term :math:`S = \mathbf{1}'F(F'F)^{-2} F'\mathbf{1}`; for
+  :math:`K = 3` it equals the rotation invariant :math:`\mathbf{1}'(FF')^{-1} \mathbf{1}`;
+* the dilution :math:`k^2 = \operatorname{tr}\{(F'F)^{-1}\} + S / \beta` (Eqs. 4.1.1-4.1.2,
+  4.6.2), which ATC-10
   calls the geometric dilution: it is the position dilution of precision (PDOP) of the
   time-of-arrival solution, with the emission time in the role of a receiver clock
   (:func:`position_dilution`; :func:`navcore.gnss.dop.dop_from_lines_of_sight` gives the
@@ -68,7 +72,7 @@ __all__ = [
 
 #: IUGG mean Earth radius (spherical Earth model), m.
 EARTH_MEAN_RADIUS_M = 6_371_000.0
-#: WGS-84 Earth gravitational constant GM, m^3/s^2.
+#: WGS-84 Earth gravitational constant GM, m³/s².
 GM_EARTH_M3_S2 = 3.986004418e14
 #: Sidereal day, s.
 SIDEREAL_DAY_S = 86_164.0905
@@ -80,7 +84,7 @@ def synchronous_orbit_radius(gm: float = GM_EARTH_M3_S2, period_s: float = SIDER
     Parameters
     ----------
     gm : float, default GM_EARTH_M3_S2
-        Gravitational parameter, m^3/s^2 (``> 0``).
+        Gravitational parameter, m³/s² (``> 0``).
     period_s : float, default SIDEREAL_DAY_S
         Orbital period, s (``> 0``).
 
@@ -243,10 +247,12 @@ def _check_f(F: np.ndarray) -> np.ndarray:
 
 @implements("ATC10 4.5.2")
 def beta_parameter(F: np.ndarray) -> float:
-    """``beta = K - 1'F(F'F)^-1 F'1 = |(I - P)1|^2`` (ATC-10 Eq. 4.5.2, "K minus" reading).
+    r""":math:`\beta = K - \mathbf{1}'F(F'F)^{-1} F'\mathbf{1} = |(I - P)\mathbf{1}|^2` (ATC-10
+    Eq. 4.5.2, "K minus" reading).
 
-    Zero for K = 3 (P = I), which is why the clock cannot be estimated with three
-    satellites. Computed as the squared least-squares residual of 1 on F.
+    Zero for :math:`K = 3` (:math:`P = I`), which is why the clock cannot be estimated with
+    three satellites. Computed as the squared least-squares residual of :math:`\mathbf{1}` on
+    :math:`F`.
 
     Parameters
     ----------
@@ -256,7 +262,7 @@ def beta_parameter(F: np.ndarray) -> float:
     Returns
     -------
     float
-        ``beta`` (dimensionless, ``>= 0``).
+        :math:`\beta` (dimensionless, :math:`\ge 0`).
 
     Raises
     ------
@@ -283,7 +289,7 @@ def beta_parameter(F: np.ndarray) -> float:
 
 
 def position_trace(F: np.ndarray) -> float:
-    """``tr{(F'F)^-1}``: the position dilution with the clock known.
+    r""":math:`\operatorname{tr}\{(F'F)^{-1}\}`: the position dilution with the clock known.
 
     Parameters
     ----------
@@ -318,10 +324,12 @@ def position_trace(F: np.ndarray) -> float:
 
 @implements("ATC10 4.5.30")
 def clock_direction_term(F: np.ndarray) -> float:
-    """``S = 1'F(F'F)^-2 F'1``, the position error per unit clock-error variance.
+    r""":math:`S = \mathbf{1}'F(F'F)^{-2} F'\mathbf{1}`, the position error per unit
+    clock-error variance.
 
-    It equals ``|(F'F)^-1 F'1|^2``; for K = 3 it is the rotation invariant ``1'(FF')^-1 1``
-    (the correct quantity for ATC-10 Eq. 4.5.30, erratum E4-1).
+    It equals :math:`|(F'F)^{-1} F'\mathbf{1}|^2`; for :math:`K = 3` it is the rotation
+    invariant :math:`\mathbf{1}'(FF')^{-1} \mathbf{1}` (the correct quantity for ATC-10
+    Eq. 4.5.30, erratum E4-1).
 
     Parameters
     ----------
@@ -331,7 +339,7 @@ def clock_direction_term(F: np.ndarray) -> float:
     Returns
     -------
     float
-        ``S`` (dimensionless).
+        :math:`S` (dimensionless).
 
     Raises
     ------
@@ -357,9 +365,11 @@ def clock_direction_term(F: np.ndarray) -> float:
 
 @implements("ATC10 4.5.30")
 def frame_dependent_clock_term(F: np.ndarray) -> float:
-    """``1'(F'F)^-1 1`` for K = 3: the term printed in ATC-10 Eq. 4.5.30.
+    r""":math:`\mathbf{1}'(F'F)^{-1} \mathbf{1}` for :math:`K = 3`: the term printed in ATC-10
+    Eq. 4.5.30.
 
-    It is NOT invariant under a rotation of the coordinate frame (F -> F R'): kept only to
+    It is NOT invariant under a rotation of the coordinate frame (:math:`F \to F R'`): kept
+    only to
     reproduce what the paper tabulated (erratum E4-1).
 
     Parameters
@@ -398,9 +408,10 @@ def frame_dependent_clock_term(F: np.ndarray) -> float:
 
 @implements("ATC10 4.1.1")
 def position_dilution_covariance(F: np.ndarray, H: np.ndarray | None = None) -> np.ndarray:
-    """Position error covariance per unit sigma^2, ``[F'H'(HH')^-1 H F]^-1`` (Eq. 4.1.1).
+    r"""Position error covariance per unit :math:`\sigma^2`, :math:`[F'H'(HH')^{-1} H F]^{-1}`
+    (Eq. 4.1.1).
 
-    ``H`` is any (K-1) x K matrix of full row rank whose rows sum to zero (it removes the
+    ``H`` is any :math:`(K-1) \times K` matrix of full row rank whose rows sum to zero (it removes the
     common emission time by differencing). The default differences against satellite 1.
 
     Parameters
@@ -413,7 +424,7 @@ def position_dilution_covariance(F: np.ndarray, H: np.ndarray | None = None) -> 
     Returns
     -------
     (3, 3) ndarray
-        Position error covariance per unit time-of-arrival variance; its trace is ``k^2`` of
+        Position error covariance per unit time-of-arrival variance; its trace is :math:`k^2` of
         :func:`position_dilution` (PDOP squared).
 
     Raises
@@ -450,9 +461,10 @@ def position_dilution_covariance(F: np.ndarray, H: np.ndarray | None = None) -> 
 
 @implements("ATC10 4.1.2", "ATC10 4.6.2")
 def position_dilution(F: np.ndarray) -> float:
-    """PDOP ``k = sqrt(tr{(F'F)^-1} + S / beta)`` (Eqs. 4.1.2 and 4.6.2); inf when beta = 0.
+    r"""PDOP :math:`k = \sqrt{\operatorname{tr}\{(F'F)^{-1}\} + S / \beta}` (Eqs. 4.1.2 and
+    4.6.2); ``inf`` when :math:`\beta = 0`.
 
-    ATC-10 calls ``k`` the geometric dilution; it is the position dilution of precision of
+    ATC-10 calls :math:`k` the geometric dilution; it is the position dilution of precision of
     the time-of-arrival solution, whose unknown emission time acts as a receiver clock: the
     PDOP of :func:`navcore.gnss.dop.dop_from_lines_of_sight` for the same lines of sight.
 
@@ -464,7 +476,7 @@ def position_dilution(F: np.ndarray) -> float:
     Returns
     -------
     float
-        Position dilution ``k`` (PDOP: position error per unit time-of-arrival noise;
+        Position dilution :math:`k` (PDOP: position error per unit time-of-arrival noise;
         ``inf`` for three satellites).
 
     Raises
@@ -492,18 +504,18 @@ def position_dilution(F: np.ndarray) -> float:
 
 @dataclass(frozen=True)
 class ConstellationParameters:
-    """The invariants of a constellation (ATC-10 Table 4.2 columns) for one satellite set.
+    r"""The invariants of a constellation (ATC-10 Table 4.2 columns) for one satellite set.
 
     Attributes
     ----------
     beta : float
-        ``1'(I - P)1`` (Eq. 4.5.2).
+        :math:`\beta = \mathbf{1}'(I - P)\mathbf{1}` (Eq. 4.5.2).
     trace : float
-        ``tr{(F'F)^-1}``.
+        :math:`\operatorname{tr}\{(F'F)^{-1}\}`.
     clock_term : float
-        ``S = 1'F(F'F)^-2 F'1``.
+        :math:`S = \mathbf{1}'F(F'F)^{-2} F'\mathbf{1}`.
     dilution : float
-        Position dilution ``k`` (PDOP; ATC-10's geometric dilution, Eqs. 4.1.2, 4.6.2).
+        Position dilution :math:`k` (PDOP; ATC-10's geometric dilution, Eqs. 4.1.2, 4.6.2).
     """
 
     beta: float
@@ -513,7 +525,8 @@ class ConstellationParameters:
 
 
 def constellation_parameters(F: np.ndarray) -> ConstellationParameters:
-    """Compute beta, tr{(F'F)^-1}, S and the position dilution k (PDOP) of ``F``.
+    r"""Compute :math:`\beta`, :math:`\operatorname{tr}\{(F'F)^{-1}\}`, :math:`S` and the
+    position dilution :math:`k` (PDOP) of ``F``.
 
     Parameters
     ----------
@@ -560,9 +573,11 @@ def most_widely_spaced_triplet(
     *,
     deg: bool = False,
 ) -> tuple[tuple[int, int, int], float]:
-    """Best three satellites inside the cone about the local vertical (0-based indices).
+    r"""Best three satellites inside the cone about the local vertical (0-based indices).
 
-    ``criterion``: ``"trace"`` minimises tr{(F3'F3)^-1}; ``"det"`` maximises ``|det F3|``;
+
+    ``criterion``: ``"trace"`` minimises :math:`\operatorname{tr}\{(F_3'F_3)^{-1}\}`;
+    ``"det"`` maximises :math:`|\det F_3|`;
     ``"angle"`` maximises the smallest pairwise angle between the lines of sight. Returns the
     triplet and its score (trace, ``|det|`` or angle).
 

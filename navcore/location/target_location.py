@@ -15,7 +15,7 @@ coordinates are then in error by (SP Sec. 2.6.4)
 Sign convention: errors are *computed minus true*, and :math:`\delta\alpha` is the small
 rotation that carries the true frame into the computed one, :math:`\hat C = (I +
 [\delta\alpha\times])\,C`: a lever arm measured in the vehicle frame is resolved as
-:math:`\hat C r^b = r + \delta\alpha\times r`, which is the paper's formula. The psi angle of
+:math:`\hat C r^b = r + \delta\alpha\times r`, which is the paper's formula. The angle :math:`\psi` of
 :mod:`navcore.inertial.error_dynamics` has the opposite sign (:math:`\hat C = (I -
 [\psi\times])\,C`, so :math:`\delta\alpha = -\psi`): convert a covariance of that model with
 :func:`navcore.inertial.error_dynamics.psi_to_attitude_error` before passing it here, or the
@@ -55,9 +55,9 @@ def _vec3(name: str, v: ArrayLike) -> Array:
 
 @implements("SP Sec. 2.6.4")
 def target_location_error(dr_vehicle_m: ArrayLike, dalpha_rad: ArrayLike, r_target_m: ArrayLike) -> Array:
-    """Target coordinate error: position error plus misalignment crossed with the lever arm.
+    r"""Target coordinate error: position error plus misalignment crossed with the lever arm.
 
-    ``dr + dalpha x r``.
+    :math:`\delta r + \delta\alpha \times r`.
 
     Parameters
     ----------
@@ -98,27 +98,28 @@ def target_location_covariance(
     r_target_m: ArrayLike,
     P_position_attitude: ArrayLike | None = None,
 ) -> Array:
-    """Covariance of the target error :func:`target_location_error`.
+    r"""Covariance of the target error :func:`target_location_error`.
 
-    ``M P M^T`` with ``M = [I, -[r x]]`` and ``P`` the joint covariance of the position and
-    attitude errors: ``P_r + [r x] P_a [r x]^T - P_ra [r x]^T - [r x] P_ra^T``.
+    :math:`M P M^T` with :math:`M = [I, -[r\times]]` and ``P`` the joint covariance of the position and
+    attitude errors: :math:`P_r + [r\times] P_\alpha [r\times]^T - P_{r\alpha} [r\times]^T - [r\times]
+    P_{r\alpha}^T`.
 
     Parameters
     ----------
     P_position : (3, 3) array
-        Vehicle position error covariance, m^2.
+        Vehicle position error covariance, m².
     P_attitude : (3, 3) array
-        Attitude error covariance, rad^2.
+        Attitude error covariance, rad².
     r_target_m : (3,) array
         Lever arm from vehicle to target, m (same frame).
     P_position_attitude : (3, 3) array, optional
-        Cross-covariance ``E[dr dalpha^T]``, m rad, with ``dalpha`` in the convention of the
-        module (``C_hat = (I + [dalpha x]) C``); default zero (uncorrelated errors).
+        Cross-covariance :math:`E[\delta r\, \delta\alpha^T]`, m rad, with ``dalpha`` in the convention of the
+        module (:math:`\hat C = (I + [\delta\alpha\times])\, C`); default zero (uncorrelated errors).
 
     Returns
     -------
     (3, 3) ndarray
-        Target error covariance, m^2.
+        Target error covariance, m².
 
     Raises
     ------

@@ -1537,7 +1537,7 @@ ERRATA += [
         paper="ATC10",
         kind="typography",
         basis="text-only",
-        locator="Eqs. (4.5.11), (4.5.20), Sec. 4.5.4 (beta)",
+        locator="Eqs. (4.5.11), (4.5.20), Sec. 4.5.4 ($\\beta$)",
         printed="$\\beta = K^{-1} 1'F(F'F)^{-1}F'1$",
         finding="$\\beta = K - 1'F(F'F)^{-1}F'1 = 1'(I - P)1$ (the minus sign read as an inverse).",
         evidence="$\\gamma_0 = 1/\\beta$ (Eq. 4.5.2); the text's '$\\beta_0 = 0$ for K = 3' holds only for K "
@@ -1560,7 +1560,7 @@ ERRATA += [
         "$\\sigma^2/(\\sigma^2 + \\beta \\sigma_\\tau^2)$; $\\gamma_n = s_n/(\\sigma^2 + \\beta s_n)$; "
         "$E|\\xi|^2 = \\sigma^2[\\operatorname{tr} + \\gamma_n 1'F(F'F)^{-2}F'1]$.",
         evidence="The corrected recursion reproduces Table 4.3 and its fixed point is the root of the "
-        "printed cubic (4.5.26); a seeded Monte Carlo of the tracker matches its variances (tests).",
+        "printed cubic (4.5.26); a seeded Monte Carlo of the tracker matches its variances.",
         discussed_in=PAGE_TRACKER,
         claims=(
             "ATC10-eq4.5.31-printed",
@@ -1621,14 +1621,13 @@ ERRATA += [
         paper="ATC10",
         kind="typography",
         basis="text-only",
-        locator="App. G, Eq. (G.5) and R_x3",
+        locator="App. G, Eq. (G.5) and $R_{x3}$",
         printed="integrand $[s^\\rho - 1/2 - (s+1)^\\rho - 1/2]$; $R_{x3} = \\beta^2 \\sigma^2 / 2\\, "
         "(\\ldots)$; Newton step $G/G$",
         finding="integrand $((1+s)^{\\rho-1/2} - s^{\\rho-1/2})^2$; $R_{x3} = \\beta^2 V_0 / 2\\, "
         "(\\ldots)$; Newton step $G/G'$.",
         evidence="With the corrected integrand the quadrature equals $1/(\\Gamma(2\\rho+1) \\sin \\pi\\rho)$ "
-        "to $10^{-8}$ "
-        "(test).",
+        "to $10^{-8}$.",
         discussed_in=PAGE_TRACKER,
         claims=("ATC10-appG-V0-printed",),
     ),
@@ -1656,7 +1655,7 @@ ERRATA += [
         printed="$\\gamma = \\sigma^2 / (\\sigma^2 + \\sigma_x^2 [F'F - F'G(G'G)^{-1}G'F])$",
         finding="$\\gamma = \\sigma_x^2 / (\\sigma^2 + \\sigma_x^2 [F'F - F'G(G'G)^{-1}G'F])$.",
         evidence="Equals the general gain H of Eq. (H.20) to $10^{-12}$ and gives the error variance "
-        "$\\sigma^2 \\gamma$ of (H.21); the printed numerator does not (test).",
+        "$\\sigma^2 \\gamma$ of (H.21); the printed numerator does not.",
         discussed_in=PAGE_TRACKER,
         claims=("ATC10-appH-scalar-gain-printed",),
     ),
