@@ -3986,3 +3986,84 @@ def across02_k1000_erp() -> float:
 
     designs = [(atc.table11_k(0), atc.IN.caption_p_dl), *atc.table21_finite_designs()]
     return float(max(atc.required_erp_dbw("ambiguous", p, k) for k, p in designs))
+
+
+# --- SP Sec. 2.6: free-inertial errors of the calibrated instrument, the flyby's ranges ----------
+
+
+@register(
+    "sp21-noise-only-10-19min-m",
+    "sp/21-missions",
+    "rss horizontal error of the perfectly calibrated 10 nmi/h instrument after 19 min (m)",
+)
+def sp21_noise_only_10_19min_m() -> float:
+    """rss horizontal error (m) of the 10 nmi/h Table 2.5 column with its random walks only,
+    from zero, after the helicopter mission's 19 minutes without GPS (SP Sec. 2.6.3)."""
+    from navcore.papers import sp_missions as spm
+
+    return float(spm.noise_only_error_m(10.0, 19.0))
+
+
+def _sp22_tc10_blackout_min() -> float:
+    from navcore.papers import sp_flyby as fb
+
+    return float(fb.blackouts_min()["TC 10 nmi/h"])
+
+
+def _sp22_noise_only_10(minutes: float) -> float:
+    from navcore.papers import sp_missions as spm
+
+    return float(spm.noise_only_error_m(10.0, minutes))
+
+
+@register(
+    "sp22-noise-model-m",
+    "sp/22-jammer-flyby",
+    "rss horizontal error of the calibrated 10 nmi/h instrument over the model's TC 10 blackout (m)",
+)
+def sp22_noise_model_m() -> float:
+    """rss horizontal error (m) of the 10 nmi/h column's random walks alone, from zero, over the
+    tightly coupled 10 nmi/h system's blackout in the flyby model."""
+    return _sp22_noise_only_10(_sp22_tc10_blackout_min())
+
+
+@register(
+    "sp22-noise-18-m",
+    "sp/22-jammer-flyby",
+    "rss horizontal error of the calibrated 10 nmi/h instrument over the paper's 20 - 2 min blackout (m)",
+)
+def sp22_noise_18_m() -> float:
+    """rss horizontal error (m) of the 10 nmi/h column's random walks alone over the paper's
+    tightly coupled blackout: its 20-min loosely coupled outage less 'about 2 min' (Sec. 2.6.2)."""
+    from navcore.papers import sp_flyby as fb
+
+    return _sp22_noise_only_10(fb.LC_BLACKOUT_MIN - fb.BLACKOUT_REDUCTION_MIN)
+
+
+@register(
+    "sp22-scaled-tc10-m",
+    "sp/22-jammer-flyby",
+    "TC 10 nmi/h error before reacquisition grown to the paper's blackout by the random walks (m)",
+)
+def sp22_scaled_tc10_m() -> float:
+    """The flyby model's tightly coupled 10 nmi/h error before reacquisition, times the ratio of
+    the random-walk errors over the paper's blackout and over the model's (m)."""
+    from navcore.papers import sp_flyby as fb
+
+    err = fb.errors_before_reacquisition()["TC 10 nmi/h"]
+    return float(err * sp22_noise_18_m() / sp22_noise_model_m())
+
+
+@register(
+    "sp22-range-{when}-km",
+    "sp/22-jammer-flyby",
+    "slant range to the jammer where the loosely coupled blackout starts (loss) or ends (back) (km)",
+)
+def sp22_range_km(when: str) -> float:
+    """Slant range (km) from the aircraft to the jammer at the sample where the loosely coupled
+    blackout starts (``when="loss"``) or ends (``"back"``)."""
+    from navcore.papers import sp_flyby as fb
+    from navcore.papers import sp_missions_scenarios as sc
+
+    t = fb._blackout_s(sc.SYSTEMS[0])[{"loss": 0, "back": 1}[when]]
+    return float(fb.jammer_range_m()[int(t)] / 1e3)
