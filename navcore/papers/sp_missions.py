@@ -96,8 +96,8 @@ IN.assumed(
     unit="s",
     quantity="length of each momentary loss of carrier lock imposed on the helicopter",
     reason="Sec. 2.6.4 reports 'occasional momentary loss of carrier lock' from the terrain "
-    "following, without its length or rate; the book drops every carrier at each pull-up, once a "
-    "minute, for all of the GPS-aided flight; 'momentary' is one to a few 1-Hz measurements",
+    "following, without its length or rate; the book drops every carrier at each pull-up, once an "
+    "undulation, for all of the GPS-aided flight; 'momentary' is one to a few 1-Hz measurements",
 )
 
 
@@ -493,13 +493,12 @@ CLAIMS = [
         unit="m",
         compute=lambda: _seq("TC 1 nmi/h", True),
         tolerance=printed("1131")[1],
-        expected_status="inconsistent",
+        expected_status="not-reproducible",
         note=_MISSION_NOTE + " 84 min is one Schuler period, so the initial velocity and tilt "
-        "errors at GPS loss largely cancel and the value is set by the calibrated gyro drift. "
-        "The book's value stays near 850-890 m across the turn-rate band (and for latitudes "
-        "20-55 deg or pseudorange noise 0.5-3 m); 1131 m would need about 30 % more residual gyro "
-        "drift after the in-flight calibration, i.e. a less observable (less manoeuvring or "
-        "shorter) calibration phase than the book's.",
+        "errors at GPS loss largely cancel and the value is set by the gyro drift the in-flight "
+        "calibration leaves: 1131 m needs about 30 % more of it than the book's nominal flight "
+        "leaves. The calibration turns the paper does not publish (when they start, how often, "
+        "how far and how fast) move this value most.",
         discussed_in="sp/21-missions",
     ),
     Claim(
@@ -846,7 +845,7 @@ CLAIMS = [
         tolerance=EXACT,
         expected_status="not-reproducible",
         note="The helicopter without Doppler (both grades) with every carrier lost for 1-5 s (assumed) "
-        "at each terrain pull-up, once a minute, through the GPS-aided flight, against the "
+        "at each terrain pull-up, once an undulation, through the GPS-aided flight, against the "
         "same mission without the losses: the target-location error 19 min after GPS loss changes by "
         "less than the noticeable change. The book's aided loops do not lose lock by themselves in this "
         "terrain following (their dynamic error stays below a degree), so the losses are imposed.",

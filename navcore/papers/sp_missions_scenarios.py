@@ -21,6 +21,7 @@ from dataclasses import dataclass, fields
 
 import numpy as np
 
+from navcore._validate import ModelDomainError
 from navcore.estimation.covariance_analysis import (
     CovarianceAnalysis,
     baro_schedule,
@@ -58,7 +59,7 @@ from navcore.papers.sp_tables import (
     sp_imu_grade,
     table_2_8,
 )
-from navcore.units import DEG, G0, MINUTE
+from navcore.units import DEG, FT, G0, MINUTE
 
 __all__ = [
     "IN",
@@ -129,10 +130,56 @@ IN.assumed(
     low=0.75,
     high=3.0,
     unit="deg/s",
-    quantity="rate of the 90-deg calibration turns of the sequential-outage cruise",
+    quantity="rate of the calibration turns of the sequential-outage cruise",
     reason="the paper gives no trajectory; the turns make heading and the gyro errors observable "
     "(how well they are calibrated sets the free-inertial growth). 1.5 deg/s is a standard-rate "
     "turn for a transport; half to twice that covers a gentle to a brisk turn",
+)
+IN.assumed(
+    "first_turn_s",
+    240.0,
+    low=120.0,
+    high=360.0,
+    unit="s",
+    quantity="straight cruise before the first calibration turn (sequential outage and jammer flyby)",
+    reason="the paper gives no trajectory; the book turns first after 4 min, while every signal is "
+    "still tracked (the first carrier is lost at 360 s, Sec. 2.6.1), so that the filter sees a "
+    "turn with all of GPS; 2-6 min keeps the first turn's start inside that span",
+)
+IN.assumed(
+    "turn_interval_min",
+    10.0,
+    low=5.0,
+    high=20.0,
+    unit="min",
+    quantity="interval between the calibration turns of the sequential-outage cruise (and the flyby's "
+    "two turns)",
+    reason="the paper gives no trajectory; a cruise of more than 100 min (Sec. 2.6.1's 20-min outage "
+    "and 84-min free-inertial variant) that turns every 5-20 min keeps heading and the gyro errors "
+    "observable, like the legs of a racetrack or survey pattern",
+)
+IN.assumed(
+    "turn_angle_deg",
+    90.0,
+    low=45.0,
+    high=180.0,
+    unit="deg",
+    quantity="heading change of each turn of the missions' profiles (sequential outage, jammer flyby, "
+    "helicopter), alternately right and left",
+    reason="the paper gives no trajectory; the book zig-zags about a mean course with 90-deg turns. "
+    "45-180 deg spans a dogleg to a reversal",
+)
+IN.assumed(
+    "heading_deg",
+    0.0,
+    low=0.0,
+    high=270.0,
+    grid=4,
+    unit="deg",
+    quantity="initial heading of the sequential outage, head-on approach and helicopter missions",
+    reason="the paper gives no route; the book starts north. The heading sets the track over the "
+    "Earth and against the constellation (and the gyro errors a turn exposes): north, east, south "
+    "and west (a grid because the geometry's effect is not monotone)",
 )
 IN.assumed(
     "headon_lc_pseudorange_noise_m",
@@ -288,6 +335,147 @@ IN.assumed(
     reason="Table 2.4 gives the barometer's errors (3 m noise), not its rate; from the tightly coupled "
     "filter's 1 s to the loosely coupled 10 s",
 )
+IN.published(
+    "headon_top_altitude_ft",
+    40_000.0,
+    locator="Sec. 2.6.3 ('the aircraft climbs to 40,000 ft')",
+    unit="ft",
+    quantity="head-on mission's climb altitude",
+)
+IN.published(
+    "headon_low_altitude_ft",
+    200.0,
+    locator="Sec. 2.6.3 ('then dives down to 200 ft')",
+    unit="ft",
+    quantity="head-on mission's low-level altitude",
+)
+_HEADON = (
+    "Sec. 2.6.3 describes the fighter-bomber's flight in words (climb to 40,000 ft, dodge a missile, "
+    "dive to 200 ft, climb to a few thousand feet, release) without its speeds, angles or times; "
+)
+IN.assumed(
+    "headon_takeoff_speed_mps",
+    160.0,
+    low=120.0,
+    high=200.0,
+    unit="m/s",
+    quantity="head-on mission's speed at the start of its climb, after take-off (at 100 m)",
+    reason=_HEADON + "a loaded fighter-bomber climbs out at 230-390 kn (120-200 m/s)",
+)
+IN.assumed(
+    "headon_speed_mps",
+    280.0,
+    low=230.0,
+    high=300.0,
+    unit="m/s",
+    quantity="head-on mission's speed after its accelerating climb, held to release",
+    reason=_HEADON + "450-580 kn (230-300 m/s) spans the subsonic cruise and low-level penetration "
+    "speeds of fighter-bombers",
+)
+IN.assumed(
+    "headon_acceleration_mps2",
+    2.0,
+    low=1.0,
+    high=4.0,
+    unit="m/s²",
+    quantity="head-on mission's acceleration from its take-off speed to its cruise speed, in the climb",
+    reason=_HEADON + "0.1-0.4 g of longitudinal acceleration spans a fighter-bomber climbing at "
+    "military to full power",
+)
+IN.assumed(
+    "headon_climb_angle_deg",
+    10.0,
+    low=5.0,
+    high=20.0,
+    unit="deg",
+    quantity="head-on mission's climb angle",
+    reason=_HEADON + "5-20 deg spans a cruise climb to a steep climb of a loaded fighter-bomber",
+)
+IN.assumed(
+    "headon_dive_angle_deg",
+    15.0,
+    low=10.0,
+    high=30.0,
+    unit="deg",
+    quantity="head-on mission's dive angle (to the 200 ft of its low-level ingress)",
+    reason=_HEADON + "10-30 deg spans a shallow to a steep descent of a fighter-bomber",
+)
+IN.assumed(
+    "headon_pitch_rate_deg_s",
+    0.5,
+    low=0.25,
+    high=1.0,
+    unit="deg/s",
+    quantity="head-on mission's rate of change of flight-path angle into and out of its climb and dive",
+    reason=_HEADON + "0.25-1 deg/s spans gentle to brisk transitions (0.1-0.5 g of normal "
+    "acceleration at 280 m/s)",
+)
+IN.assumed(
+    "headon_cruise_s",
+    300.0,
+    low=120.0,
+    high=600.0,
+    unit="s",
+    quantity="head-on mission's cruise at altitude before the missile",
+    reason=_HEADON + "2-10 min at altitude before the missile is dodged",
+)
+IN.assumed(
+    "headon_break_turn_deg_s",
+    4.0,
+    low=2.0,
+    high=8.0,
+    unit="deg/s",
+    quantity="rate of the head-on mission's break turns (missile evasion)",
+    reason=_HEADON + "2-8 deg/s spans the sustained turn rates of a fighter-bomber at 40,000 ft "
+    "(bank about 50-80 deg at 280 m/s)",
+)
+IN.assumed(
+    "headon_break_turn_deg",
+    80.0,
+    low=45.0,
+    high=120.0,
+    unit="deg",
+    quantity="heading change of each of the head-on mission's two break turns (right, then back left)",
+    reason=_HEADON + "dodging a missile is a hard turn off the course and back; 45-120 deg each way",
+)
+IN.assumed(
+    "headon_ingress_s",
+    600.0,
+    low=300.0,
+    high=1200.0,
+    unit="s",
+    quantity="head-on mission's low-level ingress (at 200 ft, before the pop-up)",
+    reason=_HEADON + "5-20 min at low level spans an ingress of 80-340 km at 280 m/s",
+)
+IN.assumed(
+    "headon_popup_angle_deg",
+    10.0,
+    low=5.0,
+    high=20.0,
+    unit="deg",
+    quantity="flight-path angle of the head-on mission's pop-up",
+    reason=_HEADON + "a pop-up to 'a few thousand feet' to find the target climbs at 5-20 deg",
+)
+IN.assumed(
+    "headon_popup_pitch_rate_deg_s",
+    1.0,
+    low=0.5,
+    high=2.0,
+    unit="deg/s",
+    quantity="rate of change of flight-path angle into and out of the head-on mission's pop-up",
+    reason=_HEADON + "the pop-up is brisker than the transitions at altitude: 0.5-2 deg/s "
+    "(0.25-1 g of normal acceleration at 280 m/s)",
+)
+IN.assumed(
+    "headon_popup_hold_s",
+    12.0,
+    low=5.0,
+    high=30.0,
+    unit="s",
+    quantity="head-on mission's time at its pop-up angle",
+    reason=_HEADON + "with the pop-up angle's range, 5-30 s climbs to 'a few thousand feet' "
+    "above the 200-ft ingress",
+)
 IN.assumed(
     "helicopter_speed_mps",
     40.0,
@@ -303,9 +491,40 @@ IN.assumed(
     low=30.0,
     high=120.0,
     unit="s",
-    quantity="period of the helicopter's terrain-following undulation (flight-path angle +-4 deg)",
+    quantity="period of the helicopter's terrain-following undulation",
     reason="Sec. 2.6.4 says only that the scout flies nap-of-the-earth; at 20-60 m/s, hills 1-5 km "
     "apart give a swing every 30-120 s",
+)
+IN.assumed(
+    "helicopter_path_angle_deg",
+    4.0,
+    low=2.0,
+    high=8.0,
+    unit="deg",
+    quantity="amplitude of the helicopter's flight-path angle over one terrain-following undulation",
+    reason="Sec. 2.6.4 says only that the scout 'closely follows the terrain' with 'high levels of "
+    "acceleration and jerk'; at 40 m/s and a 60-s undulation +-4 deg gives height swings of about "
+    "+-25 m; 2-8 deg spans gently rolling to hilly terrain",
+)
+IN.assumed(
+    "helicopter_turn_rate_deg_s",
+    3.0,
+    low=1.5,
+    high=6.0,
+    unit="deg/s",
+    quantity="rate of the helicopter's turns",
+    reason="not published; 3 deg/s is the standard-rate (rate one) turn of instrument flight; half to "
+    "twice that spans a gentle to a brisk turn of a scout at 20-60 m/s (bank 3-33 deg)",
+)
+IN.assumed(
+    "helicopter_turn_interval_min",
+    5.0,
+    low=2.0,
+    high=10.0,
+    unit="min",
+    quantity="time between the helicopter's turns (the first undulation's end after it)",
+    reason="not published; a scout following valleys and tree lines changes course every few minutes; "
+    "2-10 min over the book's 30-60 min of flight",
 )
 IN.assumed(
     "helicopter_calibration_min",
@@ -483,12 +702,14 @@ def _run(
     initial_position: bool = True,
     lc_pseudorange_noise_m: float | None = None,
     constellation: Constellation | None = None,
+    measure_last: bool = True,
 ) -> dict[System, CovarianceAnalysis]:
     """Run several systems on one trajectory and lock table (one batched pass per
     architecture), from the mission start or resuming from ``resume``'s final covariances.
     ``initial_position=False`` starts without horizontal position error;
     ``lc_pseudorange_noise_m`` replaces the loosely coupled receiver's pseudorange noise;
-    ``constellation`` the nominal 24-satellite one."""
+    ``constellation`` the nominal 24-satellite one; ``measure_last=False`` applies no
+    measurement at the last sample (a phase that another resumes from there)."""
     runs = _run_list(
         systems,
         tr,
@@ -501,6 +722,7 @@ def _run(
         initial_position=initial_position,
         lc_pseudorange_noise_m=lc_pseudorange_noise_m,
         constellation=constellation,
+        measure_last=measure_last,
     )
     return dict(zip(systems, runs, strict=True))
 
@@ -519,6 +741,7 @@ def _run_list(
     lc_pseudorange_noise_m: float | None = None,
     constellation: Constellation | None = None,
     transforms: tuple[AprioriTransform | None, ...] | None = None,
+    measure_last: bool = True,
 ) -> list[CovarianceAnalysis]:
     """:func:`_run` for a list of members (a system may appear several times, each with its
     own ``transforms`` of the a-priori covariance), in the order given."""
@@ -590,13 +813,17 @@ def _run_list(
             steps |= (code | carrier).any(axis=1)
         if doppler:
             steps[:] = True
+        schedule = combine_schedules(gps, baro, dop)
+        if not measure_last:  # the last sample's measurements belong to the phase resumed from it
+            steps[-1] = False
+            schedule = _without_step(schedule, len(tr) - 1)
         res = run_covariance_analysis(
             tr,
             truth,
             filt,
             sources,
             P0,
-            combine_schedules(gps, baro, dop),
+            schedule,
             snapshots=snapshots,
             P0_filter=Pf0,
             P0_apriori=apriori,
@@ -606,6 +833,15 @@ def _run_list(
         assert isinstance(res, list)  # a stack of initial covariances gives one run each
         out.update(zip(members, res, strict=True))
     return [out[i] for i in range(len(systems))]
+
+
+def _without_step(schedule: Callable, last: int) -> Callable:
+    """``schedule`` with no measurement at step ``last``."""
+
+    def sched(k: int) -> list:
+        return [] if k == last else schedule(k)
+
+    return sched
 
 
 @dataclass(frozen=True)
@@ -700,28 +936,50 @@ def sequential_outage_events(
     return ev
 
 
-@input_cache
-def sequential_outage_trajectory(duration_s: float) -> Trajectory:
-    """Cruise at constant height and speed with a 90-degree coordinated turn every 10 min
-    (alternating left and right), which makes heading and the gyro errors observable."""
-    a = IN
+def calibration_turn_s() -> float:
+    """Duration (s) of one calibration turn: :data:`IN` ``turn_angle_deg`` at ``turn_rate_deg_s``."""
+    return IN.turn_angle_deg / IN.turn_rate_deg_s
+
+
+def calibration_turns(duration_s: float) -> list[Segment]:
+    """The cruise's segments: straight for :data:`IN` ``first_turn_s``, then every
+    ``turn_interval_min`` a turn of ``turn_angle_deg`` at ``turn_rate_deg_s`` (alternately right
+    and left) and straight flight to the next, until ``duration_s`` is covered. The jammer flyby
+    flies the first two of them."""
     rate = IN.turn_rate_deg_s
-    turn_s = 90.0 / rate
-    segs: list[Segment] = [Segment(240.0)]
-    t = 240.0
+    turn_s = calibration_turn_s()
+    interval_s = IN.turn_interval_min * MINUTE
+    if turn_s >= interval_s:
+        raise ModelDomainError(
+            f"turn_angle_deg / turn_rate_deg_s ({turn_s:g} s) must be shorter than turn_interval_min "
+            f"({interval_s:g} s)",
+            case="a calibration turn outlasts the interval between turns",
+        )
+    segs: list[Segment] = [Segment(IN.first_turn_s)]
+    t = IN.first_turn_s
     sign = 1.0
     while t < duration_s:
         segs.append(Segment(turn_s, turn_rate=sign * rate * DEG))
-        segs.append(Segment(600.0 - turn_s))
-        t += 600.0
+        segs.append(Segment(interval_s - turn_s))
+        t += interval_s
         sign = -sign
+    return segs
+
+
+@input_cache
+def sequential_outage_trajectory(duration_s: float) -> Trajectory:
+    """Cruise at constant height and speed from the assumed heading, with a calibration turn
+    every :data:`IN` ``turn_interval_min`` (:func:`calibration_turns`: 90 deg every 10 min,
+    alternating right and left, nominally), which makes heading and the gyro errors observable."""
+    a = IN
     tr = fly(
-        segs,
+        calibration_turns(duration_s),
         dt=a.step_s,
         lat0=a.latitude_deg * DEG,
         lon0=a.longitude_deg * DEG,
         h0=a.cruise_altitude_m,
         speed0=a.cruise_speed_mps,
+        heading0=a.heading_deg * DEG,
     )
     n = round(duration_s / a.step_s) + 1
     return Trajectory(*(getattr(tr, f.name)[:n] for f in fields(tr)))
@@ -746,10 +1004,14 @@ def end_free_s() -> float:
     return last_code_loss_s() + IN.free_inertial_min * MINUTE
 
 
-def _phase(systems, tr_full, channels, t0, t1, step, events, resume):
+def _phase(systems, tr_full, channels, t0, t1, step, events, resume, measure_last=False):
+    """One phase of a mission from ``t0`` to ``t1``. Its last sample is the next phase's first,
+    so its measurements belong to one of them only: to the next phase unless ``measure_last``
+    (the mission's final phase), so that nothing is applied twice at a boundary and a
+    reacquisition at the boundary belongs to the phase that has it."""
     tr = _slice(tr_full, t0, t1, step)
     code, carrier = lock_table(tr.t, len(channels), events)
-    return _run(systems, tr, code, carrier, channels, resume=resume)
+    return _run(systems, tr, code, carrier, channels, resume=resume, measure_last=measure_last)
 
 
 def _group(architecture: str) -> tuple[System, ...]:
@@ -849,6 +1111,7 @@ def initial_error_runs(scale: float) -> dict[str, CovarianceAnalysis]:
                 channels,
                 resume=parts[-1] if parts else None,
                 transforms=transforms,
+                measure_last=bool(parts),  # the boundary's measurements belong to the second part
             )
         )
     return {n: concatenate_analyses([a, b]) for n, a, b in zip(names, *parts, strict=True)}
@@ -866,7 +1129,7 @@ def _sequential_group_on(
     tr, channels, a, b = _sequential_common_on(architecture, channel_key)
     ev = sequential_outage_events(len(channels), outage_s=None if free_inertial else -1.0)
     end = end_free_s() if free_inertial else END_S
-    c = _phase(_group(architecture), tr, channels, reacquisition_s(), end, 1, ev, b)
+    c = _phase(_group(architecture), tr, channels, reacquisition_s(), end, 1, ev, b, measure_last=True)
     return {s: concatenate_analyses([a[s], b[s], c[s]]) for s in _group(architecture)}
 
 
@@ -911,29 +1174,83 @@ def unaided_after_ground_alignment(initial_position: bool = True) -> dict[System
 # ------------------------------------------------------------------ head-on approach
 
 
+#: Height (m) at which the head-on mission's profile starts (just after take-off).
+HEAD_ON_START_HEIGHT_M = 100.0
+
+
+def head_on_segments() -> list[Segment]:
+    """The head-on mission's profile (SP Sec. 2.6.3) from the inputs of :data:`IN`: after
+    take-off, pitch up to the climb angle, accelerate to the cruise speed in the climb, climb to
+    the printed 40,000 ft and level off, cruise, break turn right and back left (missile
+    evasion), push over into the dive, pull out at the printed 200 ft, fly the low-level
+    ingress, pop up and run in to release. The climb and the dive last as long as it takes to
+    reach the printed altitudes, and the pop-up starts when the loosely coupled receiver loses
+    lock, ``headon_free_loose_s`` (159 s, Fig. 2.8) before release: the jammer at the target
+    'overwhelms all variations ... as soon as the aircraft climbs above its horizon'.
+
+    Raises
+    ------
+    ModelDomainError
+        If the assumed speeds, acceleration and angles reach the printed altitudes before the
+        straight climb or dive starts, the cruise speed is below the take-off speed, or the
+        pop-up outlasts the free-inertial span.
+    """
+    a = IN
+    pitch = a.headon_pitch_rate_deg_s * DEG
+    climb, dive = a.headon_climb_angle_deg * DEG, a.headon_dive_angle_deg * DEG
+    v0, v, acc = a.headon_takeoff_speed_mps, a.headon_speed_mps, a.headon_acceleration_mps2
+    top, low = a.headon_top_altitude_ft * FT, a.headon_low_altitude_ft * FT
+    accelerate_s = (v - v0) / acc
+    # height gained by the pitch-up at v0 and the level-off at v (an arc at constant speed and
+    # pitch rate: V / q (1 - cos gamma)) and by the accelerating climb (sin gamma (v0 T + a T^2/2))
+    arcs_climb = (v0 + v) / pitch * (1.0 - np.cos(climb))
+    accelerating = np.sin(climb) * (v0 * accelerate_s + 0.5 * acc * accelerate_s**2)
+    climb_s = (top - HEAD_ON_START_HEIGHT_M - arcs_climb - accelerating) / (v * np.sin(climb))
+    dive_s = (top - low - 2.0 * v / pitch * (1.0 - np.cos(dive))) / (v * np.sin(dive))
+    popup_rate = a.headon_popup_pitch_rate_deg_s * DEG
+    popup_s = 2.0 * a.headon_popup_angle_deg * DEG / popup_rate + a.headon_popup_hold_s
+    run_in_s = a.headon_free_loose_s - popup_s
+    if min(accelerate_s, climb_s, dive_s, run_in_s) < 0.0:
+        raise ModelDomainError(
+            f"the head-on profile cannot be flown: acceleration {accelerate_s:.0f} s, straight climb "
+            f"{climb_s:.0f} s, dive {dive_s:.0f} s, run-in {run_in_s:.0f} s (headon_* inputs)",
+            case="the assumed speeds and angles reach the printed altitudes before the straight climb or "
+            "dive, or the pop-up outlasts the free-inertial span",
+        )
+    turn_s = a.headon_break_turn_deg / a.headon_break_turn_deg_s
+    turn = a.headon_break_turn_deg_s * DEG
+    return [
+        Segment(climb / pitch, path_angle_rate=pitch),  # pitch up into the climb
+        Segment(accelerate_s, speed_rate=acc),  # accelerate in the climb
+        Segment(float(climb_s)),  # climb to 40,000 ft
+        Segment(climb / pitch, path_angle_rate=-pitch),  # level off
+        Segment(a.headon_cruise_s),  # cruise
+        Segment(turn_s, turn_rate=turn),  # break turn (missile evasion)
+        Segment(turn_s, turn_rate=-turn),
+        Segment(dive / pitch, path_angle_rate=-pitch),  # push over into the dive
+        Segment(float(dive_s)),  # dive
+        Segment(dive / pitch, path_angle_rate=pitch),  # pull out at 200 ft
+        Segment(a.headon_ingress_s),  # low-level ingress
+        Segment(a.headon_popup_angle_deg * DEG / popup_rate, path_angle_rate=popup_rate),  # pop-up
+        Segment(a.headon_popup_hold_s),
+        Segment(a.headon_popup_angle_deg * DEG / popup_rate, path_angle_rate=-popup_rate),
+        Segment(run_in_s),  # run in to release
+    ]
+
+
 def head_on_trajectory() -> Trajectory:
     """Take-off climb to 40,000 ft, a missile-evasion turn, dive to 200 ft, low-level
-    ingress, pop-up climb to about 3,000 ft and release (times in :data:`HEAD_ON_TIMES`)."""
+    ingress, pop-up climb to a few thousand feet and release (:func:`head_on_segments`), from
+    the assumed heading."""
     a = IN
-    segs = [
-        Segment(20.0, path_angle_rate=0.5 * DEG),  # rotate to a 10 deg climb
-        Segment(60.0, speed_rate=2.0),  # accelerate in the climb
-        Segment(183.0),  # climb to about 40,000 ft
-        Segment(20.0, path_angle_rate=-0.5 * DEG),  # level off
-        Segment(300.0),  # cruise
-        Segment(20.0, turn_rate=4.0 * DEG),  # break turn (missile evasion)
-        Segment(20.0, turn_rate=-4.0 * DEG),
-        Segment(30.0, path_angle_rate=-0.5 * DEG),  # push over into a 15 deg dive
-        Segment(135.0),  # dive
-        Segment(30.0, path_angle_rate=0.5 * DEG),  # pull out near 200 ft
-        Segment(600.0),  # low-level ingress
-        Segment(10.0, path_angle_rate=1.0 * DEG),  # pop-up
-        Segment(12.0),
-        Segment(10.0, path_angle_rate=-1.0 * DEG),
-        Segment(130.0),  # run in to release
-    ]
     return fly(
-        segs, dt=a.step_s, lat0=a.latitude_deg * DEG, lon0=a.longitude_deg * DEG, h0=100.0, speed0=160.0
+        head_on_segments(),
+        dt=a.step_s,
+        lat0=a.latitude_deg * DEG,
+        lon0=a.longitude_deg * DEG,
+        h0=HEAD_ON_START_HEIGHT_M,
+        speed0=a.headon_takeoff_speed_mps,
+        heading0=a.heading_deg * DEG,
     )
 
 
@@ -967,26 +1284,45 @@ def _head_on_on(
 # ------------------------------------------------------------------ helicopter
 
 
-def helicopter_trajectory(duration_s: float) -> Trajectory:
-    """Terrain following at constant ground speed: the flight-path angle swings +-4 deg
-    with the assumed undulation period (60 s: height changes of about +-25 m), plus a 90-degree
-    turn every fifth undulation (5 min)."""
+def _helicopter_segments(duration_s: float) -> tuple[list[Segment], np.ndarray]:
+    """The helicopter's segments covering ``duration_s`` and the start time (s) of each
+    undulation, which begins with a pull-up."""
     a = IN
+    period_s = a.helicopter_undulation_period_s
+    swing = (1.0, -1.0, -1.0, 1.0)  # the flight-path angle's rate over the quarters of one undulation
+    quarter_s = period_s / len(swing)
+    pitch_rate = a.helicopter_path_angle_deg / quarter_s * DEG
+    turn_rate = a.helicopter_turn_rate_deg_s
+    turn_s = a.turn_angle_deg / turn_rate
+    interval_s = a.helicopter_turn_interval_min * MINUTE
     segs: list[Segment] = []
+    starts: list[float] = []
     t = 0.0
     sign = 1.0
-    k = 0
-    swing = (1.0, -1.0, -1.0, 1.0)  # the flight-path angle's rate over the quarters of one undulation
-    quarter_s = a.helicopter_undulation_period_s / len(swing)
+    since_turn = 0  # undulations flown since the last turn
     while t < duration_s:
+        starts.append(t)
         for rate in swing:
-            segs.append(Segment(quarter_s, path_angle_rate=rate * 4.0 / quarter_s * DEG))
-        t += a.helicopter_undulation_period_s
-        k += 1
-        if k % 5 == 0:
-            segs.append(Segment(30.0, turn_rate=sign * 3.0 * DEG))
+            segs.append(Segment(quarter_s, path_angle_rate=rate * pitch_rate))
+        t += period_s
+        since_turn += 1
+        if since_turn * period_s >= interval_s:
+            segs.append(Segment(turn_s, turn_rate=sign * turn_rate * DEG))
             sign = -sign
-            t += 30.0
+            t += turn_s
+            since_turn = 0
+    return segs, np.array(starts)
+
+
+def helicopter_trajectory(duration_s: float) -> Trajectory:
+    """Terrain following at constant ground speed from the assumed heading: the flight-path
+    angle swings by :data:`IN` ``helicopter_path_angle_deg`` (4 deg) either way with the assumed
+    undulation period (60 s: height changes of about +-25 m), and at the end of the first
+    undulation after each ``helicopter_turn_interval_min`` (5 min) the helicopter turns by
+    ``turn_angle_deg`` (90 deg) at ``helicopter_turn_rate_deg_s`` (3 deg/s), alternately right
+    and left."""
+    a = IN
+    segs, _ = _helicopter_segments(duration_s)
     tr = fly(
         segs,
         dt=a.step_s,
@@ -994,9 +1330,19 @@ def helicopter_trajectory(duration_s: float) -> Trajectory:
         lon0=a.longitude_deg * DEG,
         h0=100.0,
         speed0=a.helicopter_speed_mps,
+        heading0=a.heading_deg * DEG,
     )
     n = round(duration_s / a.step_s) + 1
     return Trajectory(*(getattr(tr, f.name)[:n] for f in fields(tr)))
+
+
+def helicopter_pull_ups(t: np.ndarray, loss_s: float) -> np.ndarray:
+    """Samples of the times ``t`` (s) within ``loss_s`` of the start of an undulation (the start
+    of a terrain pull-up) of :func:`helicopter_trajectory`, the start of the flight excluded."""
+    t = np.asarray(t, dtype=float)
+    _, starts = _helicopter_segments(float(t[-1]))
+    k = np.searchsorted(starts, t, side="right") - 1
+    return (t - starts[k] < loss_s) & (t > 0.0)
 
 
 @input_cache
@@ -1016,7 +1362,8 @@ def _helicopter_on(
     doppler: bool, loss_s: float, channel_key: tuple[int, ...]
 ) -> dict[float, CovarianceAnalysis]:
     """The helicopter on the satellites ``channel_key``; ``loss_s > 0`` drops every carrier for
-    that long at the start of each terrain pull-up while GPS is tracked."""
+    that long at the start of each terrain pull-up (:func:`helicopter_pull_ups`) while GPS is
+    tracked."""
     calibration_min = IN.helicopter_calibration_min
     duration = (calibration_min + IN.helicopter_jammed_min) * MINUTE
     tr = helicopter_trajectory(duration)
@@ -1025,8 +1372,7 @@ def _helicopter_on(
     ev = [(t_loss, c, k, False) for c in range(len(channels)) for k in ("code", "carrier")]
     code, carrier = lock_table(tr.t, len(channels), ev)
     if loss_s > 0.0:
-        pull_ups = (tr.t % 60.0 < loss_s) & (tr.t > 0.0)  # each 60-s undulation starts with a pull-up
-        carrier = carrier & ~pull_ups[:, None]
+        carrier = carrier & ~helicopter_pull_ups(tr.t, loss_s)[:, None]
     res = _run((System("tight", 10.0), System("tight", 1.0)), tr, code, carrier, channels, doppler=doppler)
     return {s.grade: r for s, r in res.items()}
 
@@ -1034,7 +1380,7 @@ def _helicopter_on(
 @input_cache
 def helicopter_momentary_carrier_loss(loss_s: float) -> dict[float, CovarianceAnalysis]:
     """The helicopter without Doppler (Sec. 2.6.4) with every carrier dropped for ``loss_s`` at
-    the start of each terrain pull-up while GPS is tracked (once a minute): the "occasional
+    the start of each terrain pull-up while GPS is tracked (once an undulation): the "occasional
     momentary loss of carrier lock" imposed, to compare with :func:`helicopter`."""
     a = IN
     calibration_min = a.helicopter_calibration_min
