@@ -65,7 +65,10 @@ _R = TypeVar("_R")
 
 def as_finite_array(name: str, value: ArrayLike, *, ndim: int | None = None) -> NDArray[np.float64]:
     """Return ``value`` as a float array, checking that every element is finite."""
-    arr = np.asarray(value, dtype=float)
+    try:
+        arr = np.asarray(value, dtype=float)
+    except (TypeError, ValueError) as exc:  # a string, a ragged list, an object numpy cannot read
+        raise TypeError(f"{name} must be a number or an array of numbers, got {value!r} ({exc})") from None
     if ndim is not None and arr.ndim != ndim:
         raise ValueError(f"{name} must be a {ndim}-dimensional array, got shape {arr.shape}")
     if not np.all(np.isfinite(arr)):

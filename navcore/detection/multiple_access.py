@@ -39,6 +39,7 @@ from navcore._validate import (
     POSITIVE,
     PROBABILITY,
     Range,
+    as_finite_array,
     check_public,
     require_integer,
     require_positive,
@@ -121,8 +122,8 @@ class PointMassDensity:
     _cdf: FloatArray = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        x = np.asarray(self.values, dtype=float).ravel()
-        w = np.asarray(self.weights, dtype=float).ravel()
+        x = as_finite_array("values", self.values).ravel()
+        w = as_finite_array("weights", self.weights).ravel()
         if x.size == 0 or x.shape != w.shape:
             raise ValueError("values and weights must be non-empty and of equal length")
         if np.any(w < 0) or not np.isfinite(w).all() or not np.isfinite(x).all():

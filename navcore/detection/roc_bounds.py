@@ -33,7 +33,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy import special
 
-from navcore._validate import POSITIVE, Range, check_public, require_positive
+from navcore._validate import NONNEGATIVE, POSITIVE, Range, check_public, require_positive
 from navcore.trace import implements
 
 __all__ = [
@@ -723,4 +723,13 @@ def exponent_from_gaussian_exponent_large_n(
 
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
-check_public(globals(), {"tau_over_alpha": POSITIVE, "n_aircraft": Range(1.0, None), "power": POSITIVE})
+check_public(
+    globals(),
+    {
+        # q = 2 tau/alpha is the probability that a cross term is non-zero (Eq. 3.7.1)
+        "tau_over_alpha": Range(0.0, 0.5, low_open=True),
+        "n_aircraft": Range(1.0, None),
+        "power": POSITIVE,
+        "exp_g": NONNEGATIVE,
+    },
+)

@@ -489,7 +489,10 @@ def cross_term_noise_power(
     for cj in codes_j:
         rj = aperiodic_autocorrelation(cj)
         if rj.size != ri.size:
-            raise ValueError("all codes must have the same length")
+            raise ValueError(
+                f"codes_j: every code must have the length of code_i ({np.size(code_i)} chips), got one "
+                f"whose autocorrelation has {rj.size} lags against {ri.size}"
+            )
         total += piecewise_linear_inner(ri, rj, chip_s)
     return total / (2.0 * alpha_s)
 

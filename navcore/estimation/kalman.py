@@ -204,7 +204,12 @@ def _cholesky_passes(arr: Array, definite: bool) -> bool:
 
 
 def _matrix(name: str, value: ArrayLike, shape: tuple[int, int]) -> Array:
-    arr = np.asarray(value, dtype=float)
+    try:
+        arr = np.asarray(value, dtype=float)
+    except (TypeError, ValueError) as exc:  # a string, a ragged list
+        raise TypeError(
+            f"{name} must be a {shape[0]}x{shape[1]} matrix of numbers, got {value!r} ({exc})"
+        ) from None
     if arr.ndim < 2:
         arr = np.atleast_2d(arr)
     if arr.shape != shape:

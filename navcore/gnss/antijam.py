@@ -45,8 +45,8 @@ from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
-from scipy.integrate import quad
 from scipy.linalg import expm
+from scipy.special import sici
 
 from navcore._validate import (
     COUNT,
@@ -152,8 +152,10 @@ def spectral_separation_q(jammer_bandwidth_hz: float, chip_rate_hz: float) -> fl
     r""":math:`Q = 1/(R_c \kappa)` for a flat jammer of the given bandwidth centred on a BPSK signal.
 
     ``kappa`` integrates the signal's normalised spectrum :math:`T_c \operatorname{sinc}^2(f T_c)` against the
-    jammer's flat spectrum 1/B over +-B/2. A narrow jammer gives Q -> 1; a jammer as wide as
-    the main lobe (B = 2 Rc) gives about 2.2.
+    jammer's flat spectrum 1/B over +-B/2, in closed form: with :math:`x = B T_c / 2`,
+    :math:`\int_{-x}^{x} \operatorname{sinc}^2 u \, du = (2/\pi)\,[\operatorname{Si}(2\pi x) -
+    \sin^2(\pi x)/(\pi x)]`. A narrow jammer gives Q -> 1; a jammer as wide as the main lobe
+    (B = 2 Rc) gives about 2.2, and a much wider one about :math:`B/R_c`.
 
     Parameters
     ----------
@@ -186,11 +188,13 @@ def spectral_separation_q(jammer_bandwidth_hz: float, chip_rate_hz: float) -> fl
     """
     require_positive("jammer_bandwidth_hz", jammer_bandwidth_hz)
     require_positive("chip_rate_hz", chip_rate_hz)
-    tc = 1.0 / chip_rate_hz
-    half = 0.5 * jammer_bandwidth_hz
-    frac, _ = quad(lambda f: tc * np.sinc(f * tc) ** 2, -half, half, limit=400, points=[0.0])
+    x = 0.5 * jammer_bandwidth_hz / chip_rate_hz
+    if x < 1e-4:  # the closed form cancels to first order: its series, exact to O(x^5)
+        frac = 2.0 * x - (2.0 / 9.0) * np.pi**2 * x**3
+    else:
+        frac = (2.0 / np.pi) * (float(sici(2.0 * np.pi * x)[0]) - np.sin(np.pi * x) ** 2 / (np.pi * x))
     kappa = frac / jammer_bandwidth_hz
-    return 1.0 / (chip_rate_hz * kappa)
+    return float(1.0 / (chip_rate_hz * kappa))
 
 
 @implements("SP Sec. 3.1")
@@ -235,7 +239,10 @@ def effective_cn0_dbhz(
     require_positive("q", q)
     c = as_finite_array("cn0_dbhz", cn0_dbhz)
     j = as_finite_array("js_db", js_db)
-    out = -10.0 * np.log10(10.0 ** (-c / 10.0) + 10.0 ** (j / 10.0) / (q * chip_rate_hz))
+    # the sum of the two noise densities in logarithms, so that no power of ten overflows
+    ln10 = np.log(10.0)
+    noise = np.logaddexp(-c / 10.0 * ln10, (j / 10.0 - np.log10(q * chip_rate_hz)) * ln10)
+    out = -10.0 * noise / ln10
     return float(out) if out.ndim == 0 else out
 
 

@@ -236,6 +236,11 @@ def dilution_of_precision(
     rho = np.linalg.norm(d, axis=-1)
     if np.any(rho == 0.0):
         raise ValueError("r_sat must not coincide with r_receiver (no line of sight)")
+    if np.any(np.linalg.norm(r, axis=-1) < 1e5):
+        raise ValueError(
+            "r_receiver must be at least 100 km from the Earth's centre (an ECEF position in metres; "
+            f"its geodetic latitude is undefined there), got {r!r}"
+        )
     lat, lon, _ = ecef_to_geodetic(r, ellipsoid=ellipsoid)
     C_en = dcm_ecef_to_ned(lat, lon)[..., None, :, :]  # one rotation per receiver
     u = np.matmul(C_en, (d / rho[..., None])[..., None])[..., 0]  # lines of sight in NED

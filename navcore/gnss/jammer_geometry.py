@@ -401,6 +401,12 @@ def threshold_range_m(
     """
     require_positive("wavelength_m", wavelength_m)
     jt = as_finite_array("jammer_threshold_dbw", jammer_threshold_dbw)
+    decades = (erp_dbw + rx_gain_dbi - jt) / 20.0 + np.log10(wavelength_m / (4.0 * np.pi))
+    if np.any(decades > 300.0):
+        raise ValueError(
+            "threshold_range_m: erp_dbw + rx_gain_dbi - jammer_threshold_dbw is so large that the "
+            f"range exceeds 1e300 m (erp_dbw={erp_dbw!r}, rx_gain_dbi={rx_gain_dbi!r})"
+        )
     return _out(wavelength_m / (4.0 * np.pi) * 10.0 ** ((erp_dbw + rx_gain_dbi - jt) / 20.0))
 
 

@@ -59,6 +59,7 @@ from navcore._validate import (
     check_public,
     require_nonnegative,
     require_positive,
+    require_square,
 )
 from navcore.estimation.layout import StateBlock, StateLayout
 from navcore.frames import skew
@@ -371,9 +372,15 @@ def observability_rank(F: ArrayLike, H: ArrayLike, rtol: float = 1e-9) -> int:
     >>> observability_rank([[0.0, 1.0], [0.0, 0.0]], [[1.0, 0.0]])
     2
     """
-    F = np.asarray(F, dtype=float)
-    H = np.atleast_2d(np.asarray(H, dtype=float))
+    F = require_square("F", F)
+    H = np.atleast_2d(as_finite_array("H", H))
     n = F.shape[0]
+    if n == 0:
+        raise ValueError("observability_rank: F must have at least one state, got shape (0, 0)")
+    if H.ndim != 2 or H.shape[1] != n:
+        raise ValueError(
+            f"observability_rank: H must have {n} columns (one per state of F), got shape {H.shape}"
+        )
     blocks, M = [], H
     for _ in range(n):
         blocks.append(M)

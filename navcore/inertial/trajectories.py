@@ -232,8 +232,9 @@ def fly(
     Raises
     ------
     ValueError
-        If ``dt`` or ``g`` is not positive, an angle is out of range for its unit (a
-        latitude of 45 given as radians), or an argument is not finite.
+        If ``dt`` or ``g`` is not positive, the segments are too short for two samples, an
+        angle is out of range for its unit (a latitude of 45 given as radians), or an argument
+        is not finite.
 
     Examples
     --------
@@ -257,6 +258,12 @@ def fly(
         ]
     )
     N = rates.shape[0] + 1
+    if N < 2:
+        total = sum(s.duration for s in segments)
+        raise ValueError(
+            f"fly: the segments last {total:g} s, no sample interval of dt = {dt:g} s: a trajectory "
+            "needs at least two samples"
+        )
     t = np.arange(N) * dt
     # integrate the rates exactly (piecewise-constant)
     V = speed0 + np.concatenate([[0.0], np.cumsum(rates[:, 0]) * dt])
@@ -331,8 +338,9 @@ def straight_and_level(
     Raises
     ------
     ValueError
-        If ``dt`` is not positive, ``duration`` is negative, or an angle is out of range for
-        its unit (``lat0=48.0`` without ``deg=True``).
+        If ``dt`` is not positive, ``duration`` is negative or spans no sample interval
+        (``round(duration / dt) < 1``: one sample), or an angle is out of range for its unit
+        (``lat0=48.0`` without ``deg=True``).
 
     Examples
     --------
@@ -340,6 +348,12 @@ def straight_and_level(
     >>> len(tr), round(float(tr.pos_ned[-1, 0]), 6)
     (11, 500.0)
     """
+    require_positive("dt", dt)
+    if not round(duration / dt) >= 1:
+        raise ValueError(
+            f"straight_and_level: duration must span at least one sample interval dt (two samples; "
+            f"round(duration / dt) >= 1), got duration={duration!r} with dt={dt!r}"
+        )
     return fly(
         [Segment(duration)], dt=dt, lat0=lat0, lon0=lon0, h0=h0, speed0=speed, heading0=heading, deg=deg
     )
