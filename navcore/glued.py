@@ -1757,6 +1757,36 @@ def atc10_mc_window_factor_k1000() -> float:
     return float(math.exp(atc10_mc_window_dln_k1000()))
 
 
+def _atc10_exact_window_ratio(end: str) -> float:
+    from navcore.papers import atc10_coverage_jamming as cj
+
+    rho = cj.IN.input("neighbour_correlation")
+    return float(cj._window_empty_ratio(float(getattr(rho, end))))
+
+
+@register(
+    "atc10-14-exact-window-ratio-lo",
+    "atc10/14-monte-carlo",
+    "exact empty-window probability of the 24-sample track window over (1 - p_f)^24, neighbours "
+    "correlated at the low end of the assumed range",
+)
+def atc10_exact_window_ratio_lo() -> float:
+    """P(no declaration in the 24-sample window) over (1 - p_f)^24 at the Table 2.1 threshold p_f,
+    neighbouring samples correlated at the low end of the assumed neighbour correlation (Genz)."""
+    return _atc10_exact_window_ratio("low")
+
+
+@register(
+    "atc10-14-exact-window-ratio-hi",
+    "atc10/14-monte-carlo",
+    "exact empty-window probability of the 24-sample track window over (1 - p_f)^24, neighbours "
+    "correlated at the high end of the assumed range",
+)
+def atc10_exact_window_ratio_hi() -> float:
+    """As :func:`atc10_exact_window_ratio_lo`, at the high end of the assumed neighbour correlation."""
+    return _atc10_exact_window_ratio("high")
+
+
 # --- ATC-10 Sec. 3.9 and App. F: the Zakai bandwidth of PSK codes -----------------------------
 
 #: The page's Appendix F example: a 31-chip random wanted code and four random interferers (seed 1).

@@ -2085,6 +2085,35 @@ def _ma1_window_empty(pf: float, n: int = 24, half_width: float = 9.0, step: flo
     return float(np.sum(0.5 * (f[1:] + f[:-1]) * step))
 
 
+def _ma1_window_empty_rho(
+    pf: float, rho: float, n: int = 24, half_width: float = 9.0, step: float = 2e-3
+) -> float:
+    """Exact probability that n samples y_k = a z_k + b z_(k+1), z i.i.d. N(0, 1), a^2 + b^2 = 1 and
+    a b = rho (neighbours correlated rho, none beyond), all stay below Q^-1(p_f): the chain of z
+    carried on a grid as in :func:`_ma1_window_empty`,
+    f_(k+1)(z') = phi(z') int f_k(z) [a z <= u - b z'] dz."""
+    u = float(stats.norm.isf(pf))
+    a = math.sqrt((1 + math.sqrt(1 - 4 * rho * rho)) / 2)
+    b = rho / a
+    z = np.arange(-half_width, half_width + step / 2, step)
+    phi = np.exp(-0.5 * z * z) / math.sqrt(2 * math.pi)
+    f = phi.copy()
+    for _ in range(n):
+        cum = np.concatenate([[0.0], np.cumsum(0.5 * (f[1:] + f[:-1]) * step)])
+        f = phi * np.interp((u - b * z) / a, z, cum, left=0.0, right=cum[-1])
+    return float(np.sum(0.5 * (f[1:] + f[:-1]) * step))
+
+
+def _atc10_exact_window_ratio(end: str) -> float:
+    """The grid chain at the Table 2.1 threshold p_f and an end of the assumed correlation range
+    (both read from the model's declarations), over (1 - p_f)^n."""
+    from navcore.papers import atc10_coverage_jamming as cj
+
+    pf, n = cj.window_pf(), cj.window_n()
+    rho = float(getattr(cj.IN.input("neighbour_correlation"), end))
+    return _ma1_window_empty_rho(pf, rho, n) / (1 - pf) ** n
+
+
 def _atc10_window(pf: float) -> tuple[float, float, float]:
     """(exact correlated empty probability, (1 - p_f)^24, sampling standard deviation of the
     400 000-trial estimate) for the page's 24-sample window."""
@@ -2778,6 +2807,19 @@ ORACLES += [
     ),
     # the simulated window (400 000 seeded trials, p_f from 0.01 to 0.27) against the exact chain
     # probability, within five sampling standard deviations (the grid quadrature is good to 1e-6)
+    # the page's Genz integration of the 24-dimensional orthant against a grid chain of the MA(1) samples
+    Oracle(
+        "atc10-14-exact-window-ratio-lo",
+        lambda: _atc10_exact_window_ratio("low"),
+        rtol=2e-3,
+        why="exact MA(1) window by a grid chain",
+    ),
+    Oracle(
+        "atc10-14-exact-window-ratio-hi",
+        lambda: _atc10_exact_window_ratio("high"),
+        rtol=2e-3,
+        why="exact MA(1) window by a grid chain",
+    ),
     Oracle(
         "atc10-mc-window-ratio-hi",
         lambda: _atc10_window(0.27)[0] / _atc10_window(0.27)[1],

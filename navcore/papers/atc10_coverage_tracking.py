@@ -1370,7 +1370,7 @@ CLAIMS = [
     Claim(
         id="ATC10-fig4.1-large-alpha",
         paper="ATC10",
-        locator="Sec. 4.5.4 (Fig. 4.1), alpha >= 1",
+        locator="Sec. 4.5.4 (Fig. 4.1), the large-argument approximation",
         quantity="$\\psi(\\alpha) \\cong 1 - (4/27)/\\alpha$ for $\\alpha \\ge 1$ (largest relative error "
         "within the prose band of '≅')",
         published=True,
@@ -1384,7 +1384,7 @@ CLAIMS = [
     Claim(
         id="ATC10-fig4.1-small-alpha",
         paper="ATC10",
-        locator="Sec. 4.5.4 (Fig. 4.1), alpha <= 0.3",
+        locator="Sec. 4.5.4 (Fig. 4.1), the small-argument approximation",
         quantity="$\\psi(\\alpha) \\cong 1.89 [\\alpha^{1/3} - (\\alpha/2)^{2/3}]$ for $\\alpha \\le 0.3$ "
         "(largest relative error within the prose band of '≅')",
         published=True,

@@ -1320,7 +1320,7 @@ CLAIMS = [
     Claim(
         id="ATC10-sec3.9-W-bracket",
         paper="ATC10",
-        locator="Sec. 3.9, W = [(4/3) tau_c (1 + 2 tau_c/tau + 2 (tau_c/tau)^2)]^{-1}",
+        locator="Sec. 3.9, the bracketed Zakai bandwidth",
         quantity="the printed W equals the exact Zakai bandwidth of the idealised autocorrelation",
         published=True,
         unit="statement",
@@ -1354,7 +1354,7 @@ CLAIMS = [
     Claim(
         id="ATC10-sec3.9-power",
         paper="ATC10",
-        locator="Sec. 3.9, E(n^2) = N / (3 alpha / tau_c); Sec. 3.1.3 C",
+        locator="Sec. 3.9, the noise power of PSK signatures; Sec. 3.1.3 C",
         quantity="multiple-access noise power in units of $N \\tau_c/\\alpha$ for PSK signatures",
         published=POWER_COEFF_PRINTED,
         unit="N tau_c / alpha",
