@@ -1167,7 +1167,7 @@ ERRATA = [
         "covariances, the Sec. IV.D case); for general, non-commuting covariances the bound stays "
         "conservative even with completely correlated errors.",
         evidence="Exact covariance (Eq. (20)) and a seeded Monte Carlo for a completely correlated "
-        "generic case: trace bound / true trace about 1.2.",
+        "generic case: trace bound / true trace about 1.26.",
         claims=("WF-rem2-generic",),
         discussed_in=DOCS["IV"],
     ),
