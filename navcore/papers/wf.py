@@ -218,8 +218,8 @@ IN.convention(
     quantity="speed of light in the printed $f_{L1}/c$",
     readings={
         "the defined speed of light, 299 792 458 m/s": C,
-        "the engineering value 3 x 10^8 m/s": 3.0e8,
-        "the four-digit value 2.998 x 10^8 m/s": 2.998e8,
+        "the engineering value 3 × 10⁸ m/s": 3.0e8,
+        "the four-digit value 2.998 × 10⁸ m/s": 2.998e8,
     },
     reason="Sec. IV.D prints $f_o^{L1}/c = 5.25$ m⁻¹ without its c; 1575.42 MHz over the defined c is "
     "5.2550, "
