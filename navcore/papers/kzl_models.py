@@ -109,7 +109,7 @@ IN.convention(
     },
     reason="Eq. (3) prints '$\\arctan_2(a_y / a_z)$': the name of the two-argument arctangent with one "
     "argument, the ratio; read as the ratio's arctangent it returns the roll of a level specific "
-    "force (for |roll| < 90 deg), read as atan2 it returns 180 deg",
+    "force (for $|\\phi| < 90$ deg), read as atan2 it returns 180 deg",
 )
 IN.convention(
     "negligible_fraction",
@@ -426,13 +426,13 @@ ERRATA = [
         basis="text-only",
         locator="Eqs. (2)-(3)",
         printed="$\\theta = \\arctan(-a_x / \\sqrt{a_y^2 + a_z^2})$, $\\phi = \\arctan_2(a_y / a_z)$",
-        finding="The pitch of Eq. (2) has the wrong sign: with a = the specific force of Eq. (8) (a "
-        "level IMU measures [0, 0, -g] in NED body axes) a nose-up pitch comes out nose-down, under "
+        finding="The pitch of Eq. (2) has the wrong sign: with $a$ the specific force of Eq. (8) (a "
+        "level IMU measures $[0, 0, -g]$ in NED body axes) a nose-up pitch comes out nose-down, under "
         "every reading. For the specific force: $\\theta = \\arctan(f_x / \\sqrt{f_y^2 + f_z^2})$, "
         "$\\phi = \\mathrm{atan2}(-f_y, -f_z)$. The printed pair is right for $a = -f$, a sign "
         "convention Eq. (8) contradicts. The roll of Eq. (3) is an open reading, not part of the "
         "finding: read as the one-argument arctangent of the printed ratio it returns the roll of a "
-        "level aircraft (for |roll| < 90 deg), read as atan2 it returns 180 deg.",
+        "level aircraft (for $|\\phi| < 90$ deg), read as atan2 it returns 180 deg.",
         evidence="The printed Eq. (2) applied to the specific force of nose-up and nose-down attitudes "
         "built with scipy's Rotation; Table 1 is level, so no printed number depends on it.",
         claims=("KZL-eq2-pitch-sign",),
