@@ -462,7 +462,7 @@ ERRATA = [
         finding="The explicit matrix is minus the usual cross-product matrix: $[a "
         "\\times]_{\\text{paper}}\\, b = b \\times a$. "
         "The explicit matrix is the right $F_{23}$ for error = estimated - true and "
-        "$\\hat{R} = (I + [\\delta\\psi \\times]) R$; reading the bracket as the standard skew flips the "
+        "$\\hat{R} = (I + [\\Delta\\psi \\times]) R$; reading the bracket as the standard skew flips the "
         "sign of $F_{23}$ "
         "and of the DD rows of Eq. (17).",
         evidence="Finite differences of the nonlinear velocity-error rate.",
@@ -495,7 +495,7 @@ ERRATA = [
         printed="Eq. (17): both DD rows use $l_{02}$ and rows 2 and 4 have an extra $0^T$ block; Eq. (14) "
         "lists "
         "$\\rho^{(n)}$ twice; Eq. (10) says O is the identity and I the zero matrix; Eq. (1)'s compact "
-        "form drops $\\delta\\psi$, $\\delta b_\\omega$ and the clock",
+        "form drops $\\Delta\\psi$, $\\Delta b_\\omega$ and the clock",
         finding="The first DD row uses $l_{01}$; Eq. (14) has 6 rows for two satellites, matching "
         "$2 + 4 (\\nu - 1)$; O is the zero and I the identity matrix.",
         evidence="Row counts from the library's carrier-phase measurement builders; with $l_{02}$ in both "
@@ -511,7 +511,7 @@ ERRATA = [
         basis="text-only",
         locator="Sec. 3.5, attitude correction",
         printed="$q_b^{n,+} = q_b^{n,-} \\otimes q^n$ with the n-frame rotation quaternion $q^n$ of $\\phi = "
-        "-\\delta\\psi$",
+        "-\\Delta\\hat{\\psi}$",
         finding="An n-frame rotation multiplies $q_b^n$ from the left: $q^{n,+} = q^n \\otimes q^{n,-}$. The "
         "printed order rotates about body axes; at the Table 1 heading of 90 deg a 2.29 deg "
         "error leaves a 1.58 deg residual.",
