@@ -780,8 +780,9 @@ CLAIMS = [
         tolerance=prose("about"),
         expected_status="not-reproducible",
         note="No sensor specification is given for the navigation-grade INS. Long-term (beyond the "
-        "84-min Schuler period) position drift of an unaided INS with gyro bias eps: R eps, with the "
-        "assumed eps = 0.01 deg/h (0.005-0.02) giving 1.1 km/h, the classic 1 nmi/h class.",
+        "84-min Schuler period) position drift of an unaided INS with gyro bias $\\varepsilon$: "
+        "$R\\varepsilon$, with the assumed $\\varepsilon$ = 0.01 deg/h (0.005-0.02) giving 1.1 km/h, "
+        "the classic 1 nmi/h class.",
         discussed_in=PAGE0,
     ),
     Claim(

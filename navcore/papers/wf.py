@@ -1596,10 +1596,10 @@ CLAIMS = [
         compute=f_l1_over_c_read,
         tolerance=_fl1_tol,
         expected_status="consistent",
-        note="1575.42 MHz (154 x 10.23 MHz) over c. With the defined c (299 792 458 m/s) the ratio is "
-        "5.2550, which rounds to 5.26, 0.00004 beyond half a unit in the last printed digit; with the "
-        "engineering c of $3 \\times 10^{8}$ m/s (5.2514) or $2.998 \\times 10^{8}$ m/s (5.2549) it rounds "
-        "to the printed 5.25. "
+        note="1575.42 MHz ($154 \\times 10.23$ MHz) over $c$. With the defined $c$ (299 792 458 m/s) "
+        "the ratio is 5.2550, which rounds to 5.26, 0.00004 beyond half a unit in the last printed "
+        "digit; with the engineering $c$ of $3 \\times 10^{8}$ m/s (5.2514) or $2.998 \\times 10^{8}$ m/s "
+        "(5.2549) it rounds to the printed 5.25. "
         "The figures use the printed 5.25.",
         discussed_in=DOCS["IVD"],
     ),
