@@ -104,8 +104,8 @@ IN.convention(
     "atan2",
     quantity="arctangent of the printed roll of Eq. (3)",
     readings={
-        "atan2(a_y, a_z), the two-argument function the name arctan_2 calls for": "atan2",
-        "arctan(a_y / a_z), the one-argument arctangent of the printed ratio": "arctan",
+        "the two-argument arctangent that the name arctan_2 calls for": "atan2",
+        "the one-argument arctangent of the printed ratio": "arctan",
     },
     reason="Eq. (3) prints '$\\arctan_2(a_y / a_z)$': the name of the two-argument arctangent with one "
     "argument, the ratio; read as the ratio's arctangent it returns the roll of a level specific "

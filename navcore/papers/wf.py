@@ -283,7 +283,7 @@ IN.convention(
     "negligible_fraction",
     1.0,
     quantity="share of the on-board accuracy $\\sigma_N$ below which an error is negligible",
-    readings={"below sigma_N": 1.0, "below a tenth of sigma_N": 0.1},
+    readings={"below the on-board accuracy": 1.0, "below a tenth of the on-board accuracy": 0.1},
     reason="Sec. V's 'negligible level' carries no number; the on-board accuracy $\\sigma_N$ is the error "
     "the "
     "aircraft has without any flexure",
