@@ -404,8 +404,10 @@ def bench(session: nox.Session) -> None:
 
     The library numbers: the Kalman filter step against filterpy's (a ratio from one run) and
     the covariance-analysis engine on a 104-minute mission. ``nox -s bench -- --library-only``
-    measures only those; ``-- --standalone --models`` also times every page alone in a fresh
-    kernel and every paper's ledger and figure in a fresh process.
+    measures only those; ``-- --build-only`` only the builds (clean, incremental after a comment
+    in ``--touch MODULE``, floor); ``-- --ledger-from _build/navcore-cache`` starts the clean
+    build from a stored ledger; ``-- --standalone --models`` also times every page alone in a
+    fresh kernel and every paper's ledger and figure in a fresh process.
     """
     _install(session)
     session.run("python", "tools/bench.py", *session.posargs)

@@ -490,13 +490,16 @@ def table(data: Any) -> Table:
     return Table(data)
 
 
-def text_table(frame: Any) -> Table:
+def text_table(frame: Any, css_class: str | None = None) -> Table:
     """A DataFrame of mostly text (reasons, names) without its index, read left to right.
 
     Parameters
     ----------
     frame : pandas.DataFrame
         The table to show.
+    css_class : str or None, optional
+        A further HTML class for a table the book's style sheet lays out on its own (the
+        verification reports' verdict counts and unresolved claims).
 
     Returns
     -------
@@ -512,7 +515,10 @@ def text_table(frame: Any) -> Table:
     KZL  48
     """
     styler = frame.style.hide(axis="index").set_properties(**{"text-align": "left"})
-    styler = styler.set_table_attributes('class="navcore-text-table"')  # its cells may break long words
+    classes = "navcore-text-table" + ("" if css_class is None else f" {css_class}")
+    if css_class is not None and not re.fullmatch(r"[A-Za-z][A-Za-z0-9_-]*", css_class):
+        raise ValueError(f"text_table: css_class must be one HTML class name, got {css_class!r}")
+    styler = styler.set_table_attributes(f'class="{classes}"')  # its cells may break long words
     return Table(styler.set_table_styles([{"selector": "th", "props": "text-align: left;"}]))
 
 

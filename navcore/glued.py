@@ -1757,6 +1757,39 @@ def atc10_mc_window_factor_k1000() -> float:
     return float(math.exp(atc10_mc_window_dln_k1000()))
 
 
+@register(
+    "atc10-mc-window-n",
+    "atc10/14-monte-carlo",
+    "samples in the simulated window, about the track window of (C.14)",
+)
+def atc10_mc_window_n() -> int:
+    """Samples in the window of the seeded correlated-noise simulation."""
+    return int(_atc10_window_rates().n)
+
+
+@register(
+    "atc10-mc-window-pf-hi",
+    "atc10/14-monte-carlo",
+    "largest per-sample false-alarm probability of the window simulation, near the K = 1000 threshold",
+)
+def atc10_mc_window_pf_hi() -> float:
+    """Largest per-sample p_f of the window simulation's grid."""
+    return float(max(_atc10_window_rates().p_f))
+
+
+@register(
+    "atc10-14-detection-t13-min",
+    "atc10/14-monte-carlo",
+    "smallest simulated first-stage detection rate, K = 3, t = 1/3, P_DL = 0.9",
+)
+def atc10_14_detection_t13_min() -> float:
+    """Smallest simulated first-stage detection rate over the jammer grid for K = 3 lists, the
+    rule 'more than K t non-empty' with t = 1/3, designed by (2.4.2) for P_DL = 0.9."""
+    from navcore.papers import atc10_jamming_mc as mc
+
+    return float(next(r for r in mc.simulate() if r.k == 3 and r.t > 0).detection.min())
+
+
 def _atc10_exact_window_ratio(end: str) -> float:
     from navcore.papers import atc10_coverage_jamming as cj
 
@@ -2668,6 +2701,114 @@ def kzl_bias_heading_deg() -> float:
     from navcore.papers.kzl_scenario import IN, kzl_imu
 
     return float(math.degrees(kzl_imu().gyro_bias * IN.duration_s))
+
+
+def _kzl03_initialised_p0() -> Any:
+    """The page's initial covariance of an initialised tightly coupled run (17 states: position,
+    velocity, attitude, accelerometer bias, gyro bias, clock bias, clock drift): levelling ties
+    each tilt to a horizontal accelerometer bias, heading from the GPS track plus the crab, the
+    gyro bias known to its averaging residual."""
+    import numpy as np
+
+    from navcore.frames import dcm_from_euler
+    from navcore.papers.kzl_scenario import table1_scenario
+    from navcore.units import G0
+
+    sc: Any = table1_scenario("tc")  # its optional fields are set for this flight
+    imu = sc.imu
+    C = dcm_from_euler(*sc.attitude)
+    speed = np.linalg.norm(sc.velocity_ned)
+    P0 = np.zeros((17, 17))
+    P0[0:3, 0:3] = sc.pos0_sigma**2 * np.eye(3)
+    P0[3:6, 3:6] = sc.vel0_sigma**2 * np.eye(3)
+    T_init = sc.init_time
+    S_b = np.diag(
+        [imu.accel_bias**2 + imu.accel_random_walk**2 / T_init] * 2 + [imu.accel_random_walk**2 / T_init]
+    )
+    M = np.array([[0.0, 1 / G0, 0.0], [-1 / G0, 0.0, 0.0], [0.0, 0.0, 0.0]])
+    P0[6:9, 6:9] = M @ S_b @ M.T
+    P0[8, 8] = sc.heading_sigma**2 + (sc.vel0_sigma / speed) ** 2
+    P0[6:9, 9:12] = M @ S_b @ C
+    P0[9:12, 6:9] = P0[6:9, 9:12].T
+    P0[9:12, 9:12] = C.T @ S_b @ C
+    P0[12:15, 12:15] = imu.gyro_random_walk**2 / T_init * np.eye(3)
+    P0[15, 15], P0[16, 16] = sc.clock_bias_sigma**2, sc.clock_drift_sigma**2
+    return P0
+
+
+def _kzl03_loop_sigma_position() -> Any:
+    """The page's covariance recursion written out for the tightly coupled filter (code and
+    delta range) over the Table 1 flight: F of KZL Eq. (10), the cubic transition of Eq. (5),
+    Van Loan's Q_d, two rows of Eq. (13) per tracked satellite and a Joseph update; the position
+    1-sigma (m) per epoch, shape (epochs + 1, 3)."""
+    import numpy as np
+    from scipy.linalg import expm
+
+    from navcore.frames import dcm_from_euler
+    from navcore.papers.kzl_scenario import table1_scenario
+    from navcore.units import G0
+
+    sc: Any = table1_scenario("tc")  # its optional fields are set for this flight
+    imu = sc.imu
+    C = dcm_from_euler(*sc.attitude)
+
+    def cross_matrix(a: Any) -> Any:
+        return np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+
+    T, I17 = 1.0 / sc.gps_rate, np.eye(17)
+    a_n = np.array([0.0, 0.0, -G0])
+    F = np.zeros((17, 17))
+    F[0:3, 3:6] = np.eye(3)
+    F[3:6, 6:9] = -cross_matrix(a_n)
+    F[3:6, 9:12] = -C
+    F[6:9, 12:15] = -C
+    F[15, 16] = 1.0
+    GQGt = np.diag(
+        np.r_[
+            np.zeros(3),
+            np.full(3, imu.accel_random_walk**2),
+            np.full(3, imu.gyro_random_walk**2),
+            np.full(3, sc.accel_bias_walk**2),
+            np.full(3, sc.gyro_bias_walk**2),
+            sc.clock_phase_walk**2,
+            sc.clock_drift_walk**2,
+        ]
+    )
+    Phi = I17 + F * T + F @ F * T**2 / 2 + F @ F @ F * T**3 / 6
+    V = expm(np.block([[-F, GQGt], [np.zeros((17, 17)), F.T]]) * T)
+    Qd = V[17:, 17:].T @ V[:17, 17:]
+    P = _kzl03_initialised_p0()
+    sigma = [np.sqrt(np.diag(P)[0:3])]
+    for k in range(1, sc.n_epochs + 1):
+        P_prior = Phi @ P @ Phi.T + Qd
+        nu = sc.n_visible[k]
+        d = sc.sat_pos_ned[k, :nu] - sc.velocity_ned * k * T
+        los = d / np.linalg.norm(d, axis=1, keepdims=True)
+        H = np.zeros((2 * nu, 17))
+        H[0::2, 0:3], H[0::2, 15] = -los, 1.0
+        H[1::2, 3:6], H[1::2, 16] = -los, 1.0
+        R = np.diag(np.tile([sc.gnss.pseudorange**2, sc.gnss.delta_range**2], nu))
+        K = P_prior @ H.T @ np.linalg.inv(H @ P_prior @ H.T + R)
+        P = (I17 - K @ H) @ P_prior @ (I17 - K @ H).T + K @ R @ K.T
+        sigma.append(np.sqrt(np.diag(P)[0:3]))
+    return np.array(sigma)
+
+
+@register(
+    "kzl03-loop-vs-filter-pct",
+    "kzl/03-simulation",
+    "largest relative gap of the written-out recursion's position 1-sigma from the filter's (%)",
+)
+def kzl03_loop_vs_filter_pct() -> float:
+    """Largest |sigma_loop / sigma_filter - 1| over the flight and the three axes, in percent: the
+    covariance recursion written out about the nominal flight against the position 1-sigma the
+    Monte Carlo's tightly coupled filter reports (root of the run-averaged variance)."""
+    import numpy as np
+
+    from navcore.papers.kzl_scenario import monte_carlo
+
+    filter_sigma = monte_carlo("tc", True).pos_sigma
+    return float(100 * np.abs(_kzl03_loop_sigma_position() / filter_sigma - 1).max())
 
 
 @register("kzl03-seed", "kzl/03-simulation", "seed of the KZL Monte Carlo")
@@ -3612,3 +3753,317 @@ def atc10_32_outage_ratio(end: str) -> float:
         for ex in ("I", "II")
     ]
     return {"lo": min, "hi": max}[end](ratios)
+
+
+# --- Across the papers: one filter, one geometry ------------------------------------------------
+
+
+@register(
+    "across01-wf-bound-mm-s",
+    "across/01-filters-and-geometry",
+    "WF fused velocity bound per axis, 100 ug, sigma_T = 0.2 m/s, three satellites (mm/s)",
+)
+def across01_wf_bound_mm_s() -> float:
+    """Per-axis fused velocity bound of WF Eq. (23) at the worked example's accelerometer, the
+    middle sigma_T and three GPS satellites, in mm/s."""
+    from navcore.papers import wf
+
+    return float(1e3 * wf.sigma_d_bound(wf.sigma_a_example(), wf.sigma_t_values()[1], n_sat=3))
+
+
+@register(
+    "across01-sp-outage-m",
+    "across/01-filters-and-geometry",
+    "SP rss horizontal error of the calibrated 1 nmi/h instrument after the helicopter's outage (m)",
+)
+def across01_sp_outage_m() -> float:
+    """rss horizontal error (m) of the perfectly calibrated second Table 2.5 grade (random walks
+    only) after the helicopter mission's jammed minutes of free inertial flight (SP Sec. 2.6)."""
+    from navcore.papers import sp_missions
+    from navcore.papers import sp_missions_scenarios as sp_scenarios
+    from navcore.papers.sp_tables import GRADE_LABELS_NMI_PER_H
+
+    return float(
+        sp_missions.noise_only_error_m(GRADE_LABELS_NMI_PER_H[1], sp_scenarios.IN.helicopter_jammed_min)
+    )
+
+
+@register("across01-sp-states", "across/01-filters-and-geometry", "states of SP's free-inertial error model")
+def across01_sp_states() -> int:
+    """Size of the free-inertial error layout of SP's covariance analysis: navigation errors and
+    every Table 2.5 error source that is not a random walk."""
+    from navcore.papers import sp_missions
+
+    return int(sp_missions.unaided_layout().size)
+
+
+@register(
+    "across01-kzl-{kind}-deg",
+    "across/01-filters-and-geometry",
+    "KZL heading 1-sigma after the 180 s flight, INS alone, covariance analysis (deg)",
+)
+def across01_kzl_heading_deg(kind: str) -> float:
+    """Heading 1-sigma (deg) of the stand-alone KZL INS after the flight from the covariance
+    analysis, without (``kind="raw"``) or with (``"init"``) the initialisation at rest."""
+    from navcore.papers import kzl_covariance
+
+    initialise = {"raw": False, "init": True}[kind]
+    return float(kzl_covariance.standalone_sigma("misalignment", initialise=initialise)[2])
+
+
+def _across01_dilution_geometries() -> dict[str, tuple[Any, float]]:
+    """The page's line-of-sight rows and double-difference scale for each geometry, keyed as
+    the page glues them: ATC-10 Examples I and II at the synchronous radius, the SP flyby's
+    tracked satellites at the start, KZL's satellites at the start and at the first epoch
+    with four (the fewest of four or more)."""
+    import numpy as np
+
+    from navcore.papers import atc10_tracking, kzl_scenario, sp_flyby
+
+    radius = atc10_tracking.physical_radius_ratio()
+    out: dict[str, tuple[Any, float]] = {
+        "atc-i": (atc10_tracking.example_line_of_sight("I", radius), 1.0),
+        "atc-ii": (atc10_tracking.example_line_of_sight("II", radius), 1.0),
+        "sp": (-sp_flyby.flyby_geometry().u_ned[0], 1.0),
+    }
+    positions, _ = kzl_scenario.table1_sky()
+    schedule = kzl_scenario.VISIBILITY_SCHEDULE
+    t_late, n_late = _across01_kzl_late(schedule)
+    for key, (t, n) in (("kzl", (0.0, schedule[0][1])), ("kzl-late", (t_late, n_late))):
+        d = positions[round(t * kzl_scenario.IN.gps_rate_hz), :n]
+        out[key] = (-d / np.linalg.norm(d, axis=1)[:, None], 2.0)
+    return out
+
+
+def _across01_kzl_late(schedule: Any) -> tuple[float, int]:
+    """The first epoch of the KZL schedule with the fewest satellites of four or more."""
+    return min(((t, n) for t, n in schedule if n >= 4), key=lambda tn: tn[1])
+
+
+@register(
+    "across01-dop-{name}",
+    "across/01-filters-and-geometry",
+    "position dilution of precision with the common unknown differenced away",
+)
+def across01_dop(name: str) -> float:
+    """Position dilution of precision, sqrt(scale tr[F'(I - 11'/K)F]^-1), of one of the page's
+    geometries (ATC-10 Sec. 4's differencing form; scale 2 for KZL's double differences)."""
+    import numpy as np
+
+    from navcore.location.multilateration import position_dilution_covariance
+
+    U, scale = _across01_dilution_geometries()[name]
+    return float(np.sqrt(scale * np.trace(position_dilution_covariance(U))))
+
+
+@register(
+    "across01-kzl-late-n",
+    "across/01-filters-and-geometry",
+    "satellites KZL's schedule tracks at its first epoch with the fewest of four or more",
+)
+def across01_kzl_late_n() -> int:
+    """The fewest satellites of four or more in the KZL visibility schedule."""
+    from navcore.papers import kzl_scenario
+
+    return int(_across01_kzl_late(kzl_scenario.VISIBILITY_SCHEDULE)[1])
+
+
+# --- Across the papers: jamming ------------------------------------------------------------------
+
+
+@register("across02-tb-db", "across/02-jamming", "ATC-10 time-bandwidth product B tau (dB)")
+def across02_tb_db() -> float:
+    """ATC-10's time-bandwidth product 10 log10(B tau) of one pulse (Sec. 2.7), in dB."""
+    from navcore.papers import atc10_jamming as atc
+
+    return float(10 * math.log10(atc.IN.bandwidth_hz * atc.IN.pulse_duration_s))
+
+
+@register("across02-spread-db", "across/02-jamming", "SP spreading gain Q R_c on the wideband jammer (dB-Hz)")
+def across02_spread_db() -> float:
+    """10 log10(Q R_c) of SP Sec. 3's wideband jammer on the assumed P(Y) code, dB-Hz."""
+    from navcore.papers import sp_antijam as sp
+
+    return float(10 * math.log10(sp.q_factor("wideband") * sp.IN.chip_rate_hz))
+
+
+@register(
+    "across02-{arch}-threshold",
+    "across/02-jamming",
+    "effective C/N0 at the stated J/S limit of TC or DI against the wideband jammer (dB-Hz)",
+)
+def across02_threshold(arch: str) -> float:
+    """Effective C/N0 that the stated J/S limit of the tightly coupled (``arch="tc"``) or deeply
+    integrated (``"di"``) receiver implies against the wideband jammer (SP Sec. 3.1), dB-Hz."""
+    from navcore.papers import sp_antijam as sp
+
+    return float(sp.threshold_dbhz(arch.upper()))
+
+
+@register("across02-di-gain-db", "across/02-jamming", "J/S limit of DI over TC's loss of code lock (dB)")
+def across02_di_gain_db() -> float:
+    """SP Sec. 3's stated J/S at which the deeply integrated code loop holds lock less the one at
+    which the tightly coupled loop loses it, dB."""
+    from navcore.papers import sp_antijam as sp
+
+    return float(sp.IN.di_lock_js_db - sp.IN.tc_loss_js_db)
+
+
+def _across02_sync_height_m() -> float:
+    from navcore.location.multilateration import EARTH_MEAN_RADIUS_M, synchronous_orbit_radius
+
+    return float(synchronous_orbit_radius() - EARTH_MEAN_RADIUS_M)
+
+
+@register(
+    "across02-sync-km", "across/02-jamming", "height of the synchronous orbit above the mean Earth (km)"
+)
+def across02_sync_km() -> float:
+    """Synchronous orbit radius less the mean Earth radius, km."""
+    return _across02_sync_height_m() / 1e3
+
+
+@register(
+    "across02-erp-tc-sync",
+    "across/02-jamming",
+    "jammer ERP that breaks SP's tightly coupled code loop from the synchronous height (dBW)",
+)
+def across02_erp_tc_sync() -> float:
+    """ERP (dBW) at which a jammer at the synchronous orbit's height reaches SP's tightly coupled
+    J/S limit at an isotropic L1 receiver (free space)."""
+    from navcore.gnss.antijam import free_space_js_db
+    from navcore.papers import sp_antijam as sp
+    from navcore.units import GPS_L1_WAVELENGTH_M
+
+    js = free_space_js_db(1.0, _across02_sync_height_m(), GPS_L1_WAVELENGTH_M, sp.IN.signal_dbw)
+    return float(sp.IN.tc_loss_js_db - js)
+
+
+def _across02_k1_erp() -> float:
+    from navcore.papers import atc10_jamming as atc
+
+    return float(atc.required_erp_dbw("ambiguous", atc.IN.caption_p_dl, atc.table11_k(0)))
+
+
+@register(
+    "across02-k1-erp",
+    "across/02-jamming",
+    "ATC-10 jammer ERP for ambiguous detections, Table 1.1's first K at the caption's P_DL (dBW)",
+)
+def across02_k1_erp() -> float:
+    """Jammer ERP (dBW) at which ATC-10's ambiguous detections reach 0.01 N_T for Table 1.1's
+    first design (K = 1) at the caption's P_DL."""
+    return _across02_k1_erp()
+
+
+@register(
+    "across02-k1-reach-km",
+    "across/02-jamming",
+    "range out to which ATC-10's K = 1 jammer breaks SP's tightly coupled code loop (km)",
+)
+def across02_k1_reach_km() -> float:
+    """Free-space range (km) at which a jammer of the K = 1 ERP still holds SP's tightly coupled
+    code loop at its J/S limit (isotropic L1 receiver)."""
+    from navcore.gnss.jammer_geometry import threshold_range_m
+    from navcore.papers import sp_antijam as sp
+    from navcore.units import GPS_L1_WAVELENGTH_M
+
+    return float(
+        threshold_range_m(_across02_k1_erp(), sp.IN.signal_dbw + sp.IN.tc_loss_js_db, GPS_L1_WAVELENGTH_M)
+        / 1e3
+    )
+
+
+@register(
+    "across02-k1000-erp",
+    "across/02-jamming",
+    "largest ATC-10 jammer ERP for ambiguous detections over the page's designs (dBW)",
+)
+def across02_k1000_erp() -> float:
+    """Largest ERP (dBW) for ambiguous detections over Table 1.1's first design and Table 2.1's
+    finite designs."""
+    from navcore.papers import atc10_jamming as atc
+
+    designs = [(atc.table11_k(0), atc.IN.caption_p_dl), *atc.table21_finite_designs()]
+    return float(max(atc.required_erp_dbw("ambiguous", p, k) for k, p in designs))
+
+
+# --- SP Sec. 2.6: free-inertial errors of the calibrated instrument, the flyby's ranges ----------
+
+
+@register(
+    "sp21-noise-only-10-19min-m",
+    "sp/21-missions",
+    "rss horizontal error of the perfectly calibrated 10 nmi/h instrument after 19 min (m)",
+)
+def sp21_noise_only_10_19min_m() -> float:
+    """rss horizontal error (m) of the 10 nmi/h Table 2.5 column with its random walks only,
+    from zero, after the helicopter mission's 19 minutes without GPS (SP Sec. 2.6.3)."""
+    from navcore.papers import sp_missions as spm
+
+    return float(spm.noise_only_error_m(10.0, 19.0))
+
+
+def _sp22_tc10_blackout_min() -> float:
+    from navcore.papers import sp_flyby as fb
+
+    return float(fb.blackouts_min()["TC 10 nmi/h"])
+
+
+def _sp22_noise_only_10(minutes: float) -> float:
+    from navcore.papers import sp_missions as spm
+
+    return float(spm.noise_only_error_m(10.0, minutes))
+
+
+@register(
+    "sp22-noise-model-m",
+    "sp/22-jammer-flyby",
+    "rss horizontal error of the calibrated 10 nmi/h instrument over the model's TC 10 blackout (m)",
+)
+def sp22_noise_model_m() -> float:
+    """rss horizontal error (m) of the 10 nmi/h column's random walks alone, from zero, over the
+    tightly coupled 10 nmi/h system's blackout in the flyby model."""
+    return _sp22_noise_only_10(_sp22_tc10_blackout_min())
+
+
+@register(
+    "sp22-noise-18-m",
+    "sp/22-jammer-flyby",
+    "rss horizontal error of the calibrated 10 nmi/h instrument over the paper's 20 - 2 min blackout (m)",
+)
+def sp22_noise_18_m() -> float:
+    """rss horizontal error (m) of the 10 nmi/h column's random walks alone over the paper's
+    tightly coupled blackout: its 20-min loosely coupled outage less 'about 2 min' (Sec. 2.6.2)."""
+    from navcore.papers import sp_flyby as fb
+
+    return _sp22_noise_only_10(fb.LC_BLACKOUT_MIN - fb.BLACKOUT_REDUCTION_MIN)
+
+
+@register(
+    "sp22-scaled-tc10-m",
+    "sp/22-jammer-flyby",
+    "TC 10 nmi/h error before reacquisition grown to the paper's blackout by the random walks (m)",
+)
+def sp22_scaled_tc10_m() -> float:
+    """The flyby model's tightly coupled 10 nmi/h error before reacquisition, times the ratio of
+    the random-walk errors over the paper's blackout and over the model's (m)."""
+    from navcore.papers import sp_flyby as fb
+
+    err = fb.errors_before_reacquisition()["TC 10 nmi/h"]
+    return float(err * sp22_noise_18_m() / sp22_noise_model_m())
+
+
+@register(
+    "sp22-range-{when}-km",
+    "sp/22-jammer-flyby",
+    "slant range to the jammer where the loosely coupled blackout starts (loss) or ends (back) (km)",
+)
+def sp22_range_km(when: str) -> float:
+    """Slant range (km) from the aircraft to the jammer at the sample where the loosely coupled
+    blackout starts (``when="loss"``) or ends (``"back"``)."""
+    from navcore.papers import sp_flyby as fb
+    from navcore.papers import sp_missions_scenarios as sc
+
+    t = fb._blackout_s(sc.SYSTEMS[0])[{"loss": 0, "back": 1}[when]]
+    return float(fb.jammer_range_m()[int(t)] / 1e3)

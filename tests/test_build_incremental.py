@@ -53,7 +53,10 @@ def test_static_import_graph_follows_every_import_statement(tmp_path: Path) -> N
     assert graph["navcore.a"] == {"navcore", "navcore.b"}
     assert graph["navcore.b"] == {"navcore.sub", "navcore.sub.c"}
     assert graph["navcore.sub.c"] == {"navcore.sub", "navcore.sub.d", "navcore.e", "file:sub/table.json"}
-    modules, files = build_book.page_dependencies({"navcore.a"}, {}, root)
+    # b's function ran in the kernel, which recorded its import (b is no ledger paper module's:
+    # without the record, only what b imports when it is imported counts; see the next test)
+    assert build_book.page_dependencies({"navcore.a"}, {}, root)[0] == ["navcore", "navcore.a", "navcore.b"]
+    modules, files = build_book.page_dependencies({"navcore.a"}, {"navcore.b": ["navcore.sub.c"]}, root)
     assert modules == [
         "navcore",
         "navcore.a",
@@ -69,6 +72,61 @@ def test_static_import_graph_follows_every_import_statement(tmp_path: Path) -> N
         "navcore.lonely"
         in build_book.page_dependencies({"navcore.e"}, {"navcore.e": ["navcore.lonely"]}, root)[0]
     )
+
+
+def test_only_what_the_ledger_runs_keeps_the_imports_inside_its_functions(tmp_path: Path) -> None:
+    """Oracle: a hand-written package with a paper module, a model and a page helper.
+
+    The paper module's function imports a model, which the ledger may run in a worker process
+    where nothing is recorded: a static edge. The page helper's function imports a paper module
+    only when a page calls it, in the kernel, which records the import: no static edge, so a page
+    that imports the helper depends on that paper only once the kernel saw the call.
+    """
+    root = _package(
+        tmp_path,
+        {
+            "__init__.py": "",
+            "papers/__init__.py": "",
+            "papers/kzl.py": "def run():\n    from navcore import model\n    return model.X\n",
+            "papers/sp.py": "",
+            "model.py": "def f():\n    from navcore import deep\n",
+            "deep.py": "",
+            "helper.py": "from navcore import units\n\ndef glue(name):\n    from navcore.papers import sp\n",
+            "units.py": "",
+        },
+    )
+    graph = build_book.dependency_graph(root)
+    assert graph["navcore.papers.kzl"] == {"navcore", "navcore.model"}
+    assert graph["navcore.model"] == {"navcore", "navcore.deep"}  # reached by a paper module
+    assert graph["navcore.helper"] == {"navcore", "navcore.units"}  # not: its function's import dropped
+    assert build_book.static_import_graph(root)["navcore.helper"] == {
+        "navcore",
+        "navcore.units",
+        "navcore.papers",
+        "navcore.papers.sp",
+    }
+    modules, _ = build_book.page_dependencies({"navcore.helper"}, {}, root)
+    assert modules == ["navcore", "navcore.helper", "navcore.units"]
+    modules, _ = build_book.page_dependencies(
+        {"navcore.helper"}, {"navcore.helper": ["navcore.papers.sp"]}, root
+    )
+    assert modules == ["navcore", "navcore.helper", "navcore.papers", "navcore.papers.sp", "navcore.units"]
+    modules, _ = build_book.page_dependencies({"navcore.papers.kzl"}, {}, root)
+    assert modules == ["navcore", "navcore.deep", "navcore.model", "navcore.papers", "navcore.papers.kzl"]
+
+
+def test_a_listed_folder_ignores_a_subset_builds_temporary_toc(tmp_path: Path) -> None:
+    """A subset build writes its table of contents into the book folder while it runs; a page
+    that listed the folder must not look changed (oracle: the hash of the listing without it)."""
+    root = _package(tmp_path, {"__init__.py": ""})
+    book = tmp_path / "book"
+    book.mkdir()
+    (book / "intro.md").write_text("# Intro\n")
+    before = build_book._dependency_hash(root, "../book/")
+    (book / f"{build_book.SUBSET_TOC_PREFIX}abc123.yml").write_text("root: intro\n")
+    assert build_book._dependency_hash(root, "../book/") == before
+    (book / "new.md").write_text("# New\n")
+    assert build_book._dependency_hash(root, "../book/") != before
 
 
 def test_stale_reason_names_what_changed(tmp_path: Path) -> None:

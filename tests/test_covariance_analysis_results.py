@@ -75,19 +75,20 @@ def test_sigma_selects_block_of_truth_or_filter_and_clips_round_off():
 
 
 def test_concatenate_analyses_joins_by_hand():
-    """Oracle: the joined arrays written out by hand (each later part's first sample, equal to
-    the previous part's last, is dropped; snapshot steps shift to the joined time axis)."""
+    """Oracle: the joined arrays written out by hand (a shared sample is taken from the later
+    part, which resumed there and applied its measurements; snapshot steps shift to the joined
+    time axis)."""
     a = _part([0.0, 1.0, 2.0], 0.0, {0: "a0", 2: "a2"}, 1.0)
     b = _part([2.0, 3.0, 4.0, 5.0], 100.0, {1: "b1", 3: "b3"}, 2.0)
     c = _part([5.0, 6.0], 200.0, {1: "c1"}, 3.0)
     j = concatenate_analyses([a, b, c])
     np.testing.assert_array_equal(j.t, [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0])
-    np.testing.assert_array_equal(j.true_var[:, 0], [0.0, 10.0, 20.0, 110.0, 120.0, 130.0, 210.0])
-    np.testing.assert_array_equal(j.true_var[:, 4], [4.0, 14.0, 24.0, 114.0, 124.0, 134.0, 214.0])
-    np.testing.assert_array_equal(j.filter_var[:, 3], [3.5, 13.5, 23.5, 113.5, 123.5, 133.5, 213.5])
-    np.testing.assert_array_equal(j.horizontal_position, [1.0, 11.0, 21.0, 111.0, 121.0, 131.0, 211.0])
-    np.testing.assert_array_equal(j.horizontal_velocity, [2.0, 12.0, 22.0, 112.0, 122.0, 132.0, 212.0])
-    np.testing.assert_array_equal(j.n_updates, [0, 1, 2, 101, 102, 103, 201])
+    np.testing.assert_array_equal(j.true_var[:, 0], [0.0, 10.0, 100.0, 110.0, 120.0, 200.0, 210.0])
+    np.testing.assert_array_equal(j.true_var[:, 4], [4.0, 14.0, 104.0, 114.0, 124.0, 204.0, 214.0])
+    np.testing.assert_array_equal(j.filter_var[:, 3], [3.5, 13.5, 103.5, 113.5, 123.5, 203.5, 213.5])
+    np.testing.assert_array_equal(j.horizontal_position, [1.0, 11.0, 101.0, 111.0, 121.0, 201.0, 211.0])
+    np.testing.assert_array_equal(j.horizontal_velocity, [2.0, 12.0, 102.0, 112.0, 122.0, 202.0, 212.0])
+    np.testing.assert_array_equal(j.n_updates, [0, 1, 100, 101, 102, 200, 201])
     assert j.n_updates.dtype == np.int64
     assert j.snapshots == {0: "a0", 2: "a2", 3: "b1", 5: "b3", 6: "c1"}
     assert j.truth_layout is TRUTH and j.filter_layout is FILT

@@ -22,6 +22,14 @@ call to one of:
   how many are reproduced, how many errata): the ledger page reads the same functions, each
   claim's verdict is pinned by its expected status in the claim tests and the errata by their
   registry's tests, so a re-implementation of the count would only repeat them;
+- **a setting**: the glued expression is a simulation setting (a seed, a number of draws or
+  trials) that the page itself assigns from a number literal (``seed, draws = 20260101,
+  400_000``), or that a paper module assigns so at its top level and the page reads by its
+  upper-case name (``mc.WINDOW_TRIALS``, or one point ``mc.WINDOW_PF[0]`` of a grid of number
+  literals), at most converted by ``int``, ``float`` or ``str`` or
+  formatted (``f"{draws:,}"``, a ``.replace`` of that text). Nothing computes it: it is the
+  book's choice, printed so that a reader can repeat the run, and an oracle would only read the
+  same literal twice;
 - **a figure**: the glued object is a figure (``fig``), not a number;
 - **not yet registered**: listed in ``tests/glue_todo.txt``. That list may only shrink: a
   listed name that is now registered, a claim's value or no longer glued fails the test.
@@ -34,6 +42,7 @@ from __future__ import annotations
 
 import ast
 import re
+import sys
 from functools import cache
 from pathlib import Path
 
@@ -78,6 +87,131 @@ def _cell_source(src: str) -> str:
         end = next(i for i in range(1, len(lines)) if lines[i].strip() == "---")
         lines = lines[end + 1 :]
     return "\n".join(line for line in lines if not line.startswith((":", "%")))
+
+
+def _is_number(node: ast.expr) -> bool:
+    if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+        node = node.operand
+    return (
+        isinstance(node, ast.Constant)
+        and isinstance(node.value, int | float)
+        and not isinstance(node.value, bool)
+    )
+
+
+def _literal_assignments(tree: ast.AST) -> tuple[set[str], set[str]]:
+    """Names a tree assigns from a number literal (``n = 24``, ``seed, draws = 1, 2``), and
+    names it assigns otherwise."""
+    literal, other = set(), set()
+    for node in ast.walk(tree):
+        targets: list[tuple[ast.expr, ast.expr | None]] = []
+        if isinstance(node, ast.Assign):
+            for target in node.targets:
+                if isinstance(target, ast.Tuple) and isinstance(node.value, ast.Tuple):
+                    targets += list(zip(target.elts, node.value.elts, strict=False))
+                else:
+                    targets.append((target, node.value))
+        elif isinstance(node, ast.AnnAssign | ast.AugAssign):
+            targets.append((node.target, None))
+        elif isinstance(node, ast.For | ast.comprehension):
+            targets.append((node.target, None))
+        for target, value in targets:
+            for name in ast.walk(target):
+                if isinstance(name, ast.Name):
+                    is_lit = isinstance(target, ast.Name) and value is not None and _is_number(value)
+                    (literal if is_lit else other).add(name.id)
+    return literal, other
+
+
+@cache
+def page_settings(page: str) -> frozenset[str]:
+    """Names a page's code cells assign once from a number literal and never otherwise."""
+    literal, other = set(), set()
+    text = (BOOK / f"{page}.md").read_text(encoding="utf-8")
+    for m in _CELL.finditer(text):
+        lit, oth = _literal_assignments(ast.parse(_cell_source(m.group(1))))
+        literal |= lit
+        other |= oth
+    return frozenset(literal - other)
+
+
+@cache
+def _module_settings(module: str) -> frozenset[str]:
+    """Upper-case names a ``navcore.papers`` module assigns at its top level from a number literal."""
+    path = ROOT / "navcore" / "papers" / f"{module}.py"
+    if not path.exists():
+        return frozenset()
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    out = set()
+    for node in tree.body:
+        if isinstance(node, ast.Assign) and len(node.targets) == 1 and isinstance(node.targets[0], ast.Name):
+            if node.targets[0].id.isupper() and (_is_number(node.value) or _is_number_list(node.value)):
+                out.add(node.targets[0].id)
+    return frozenset(out)
+
+
+def _is_number_list(node: ast.expr) -> bool:
+    """A tuple or list of number literals, or ``np.array`` of one (a grid of settings)."""
+    if isinstance(node, ast.Call) and ast.unparse(node.func) in ("np.array", "numpy.array"):
+        node = node.args[0] if len(node.args) == 1 and not node.keywords else node
+    return (
+        isinstance(node, ast.Tuple | ast.List) and bool(node.elts) and all(_is_number(e) for e in node.elts)
+    )
+
+
+@cache
+def _paper_aliases(page: str) -> dict[str, str]:
+    """The page's aliases of ``navcore.papers`` modules (``from navcore.papers import x as mc``)."""
+    out = {}
+    text = (BOOK / f"{page}.md").read_text(encoding="utf-8")
+    for m in _CELL.finditer(text):
+        for node in ast.walk(ast.parse(_cell_source(m.group(1)))):
+            if isinstance(node, ast.ImportFrom) and node.module == "navcore.papers":
+                for alias in node.names:
+                    out[alias.asname or alias.name] = alias.name
+    return out
+
+
+def _reads_setting(page: str, value: ast.expr | None) -> bool:
+    """Whether the glued expression is a setting: a name the page assigns from a number literal,
+    or an upper-case number constant of a paper module read through the page's alias, at most
+    converted (``int``, ``float``, ``str``), formatted in an f-string, or ``.replace``d."""
+    node = value
+    while node is not None:
+        if (
+            isinstance(node, ast.Call)
+            and isinstance(node.func, ast.Name)
+            and node.func.id in ("float", "int", "str")
+        ):
+            node = node.args[0] if len(node.args) == 1 and not node.keywords else None
+        elif (
+            isinstance(node, ast.Call)
+            and isinstance(node.func, ast.Attribute)
+            and node.func.attr == "replace"
+            and all(isinstance(a, ast.Constant) for a in node.args)
+        ):
+            node = node.func.value
+        elif (
+            isinstance(node, ast.JoinedStr)
+            and len(node.values) == 1
+            and isinstance(node.values[0], ast.FormattedValue)
+        ):
+            node = node.values[0].value
+        elif (
+            isinstance(node, ast.Subscript)
+            and isinstance(node.slice, ast.Constant)
+            and isinstance(node.slice.value, int)
+            and isinstance(node.value, ast.Attribute)
+        ):
+            node = node.value  # one point of a paper module's grid of settings
+        else:
+            break
+    if isinstance(node, ast.Name):
+        return node.id in page_settings(page)
+    if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name):
+        module = _paper_aliases(page).get(node.value.id)
+        return module is not None and node.attr in _module_settings(module)
+    return False
 
 
 @cache
@@ -218,6 +352,8 @@ def _kind(page: str, name: str, value: ast.expr | None) -> str:
         return "input"
     if _counts_ledger(value):
         return "count"
+    if _reads_setting(page, value):
+        return "setting"
     if _is_figure(value):
         return "figure"
     return "unchecked"
@@ -228,7 +364,7 @@ def test_the_scan_finds_the_glue_calls():
     calls = glue_calls()
     assert len(calls) > 300
     kinds = {_kind(p, n, v) for p, n, _, v in calls}
-    assert {"registered", "claim", "input", "count", "figure", "unchecked"} <= kinds
+    assert {"registered", "claim", "input", "count", "setting", "figure", "unchecked"} <= kinds
 
 
 def test_every_glued_number_is_a_claim_or_registered():
@@ -324,3 +460,39 @@ def test_classification(source, kind):
     assert name is not None
     page = "atc10/10-jamming-model" if "atc10" in name else "kzl/00-requirements"
     assert _kind(page, name, call.args[1]) == kind
+
+
+def test_page_settings_are_assigned_once_from_a_literal():
+    """A setting is a name the page assigns from a number literal and never otherwise: a name
+    also incremented, looped over or assigned a computed value is not one."""
+    src = "seed, draws = 20260101, 400_000\nn = 3\nn += 1\nm = f(2)\nfor k in range(3):\n    pass\n"
+    src += "k = 4\nx = -2.5"
+    literal, other = _literal_assignments(ast.parse(src))
+    assert literal - other == {"seed", "draws", "x"}
+
+
+@pytest.mark.parametrize(
+    "source, kind",
+    [
+        ('glue("x-1", f"{draws:,}".replace(",", " "))', "setting"),
+        ('glue("x-2", str(seed))', "setting"),
+        ('glue("x-3", int(mc.WINDOW_TRIALS))', "setting"),
+        ('glue("x-4", seed * 2)', "unchecked"),  # computed from a setting
+        ('glue("x-5", f"{draws / 2:,}")', "unchecked"),
+        ('glue("x-6", float(mc.WINDOW_PF[0]))', "setting"),  # one point of a grid of literals
+        ('glue("x-10", mc.X_DB[0])', "unchecked"),  # a computed grid (np.arange)
+        ('glue("x-11", mc.WINDOW_PF[i])', "unchecked"),  # a point chosen by a variable
+        ('glue("x-12", seed[0])', "unchecked"),  # a page setting is a number, not a grid
+        ('glue("x-7", mc.simulate_window_declarations().trials)', "unchecked"),
+        ('glue("x-8", other.WINDOW_TRIALS)', "unchecked"),  # not a paper module the page imports
+        ('glue("x-9", n)', "unchecked"),  # not a setting of the page
+    ],
+)
+def test_setting_classification(source, kind, monkeypatch):
+    """Settings on hand-written calls: the page's literal settings ``seed`` and ``draws``, and a
+    paper module's upper-case number constant read through the page's alias ``mc``."""
+    monkeypatch.setattr(sys.modules[__name__], "page_settings", lambda page: frozenset({"seed", "draws"}))
+    monkeypatch.setattr(sys.modules[__name__], "_paper_aliases", lambda page: {"mc": "atc10_jamming_mc"})
+    call = ast.parse(source).body[0].value
+    assert isinstance(call, ast.Call)
+    assert _kind("sp/03-residual-acceleration", "x", call.args[1]) == kind

@@ -1,6 +1,7 @@
 """Benchmark the book build: clean full build, each chapter, and the floor.
 
-Usage: ``python tools/bench.py [--jobs N] [--standalone] [--models] [--out _build/bench.md]``
+Usage: ``python tools/bench.py [--jobs N] [--standalone] [--models] [--build-only]
+[--ledger-from _build/navcore-cache] [--touch navcore/gnss/antijam.py] [--out _build/bench.md]``
 
 1. **Clean full build.** The HTML book is built exactly as ``nox -s book`` builds it
    (``tools/build_book.py --cache``), but with empty caches: a fresh jupyter-cache folder, a
@@ -8,8 +9,11 @@ Usage: ``python tools/bench.py [--jobs N] [--standalone] [--models] [--out _buil
    The wall-clock time is split into execution (before Sphinx) and Sphinx itself; each
    chapter's execution time comes from the build's own ``page-times.json``. Then the
    **incremental rebuild**: the same build again, after a comment is added to one model module
-   (``--touch``, in a copy of navcore); only the pages that depend on it execute, the table
-   lists them, and its ratio to the clean build is reported.
+   (``--touch``, in a copy of navcore beside links to the book's pages, the tests and the
+   papers' texts); only the pages that depend on it execute, the report lists them with the
+   build's reason for each, and its ratio to the clean build is reported. ``--build-only``
+   stops after the builds (no library or ledger timings); ``--ledger-from`` starts the clean
+   build's ledger cache from a stored ledger, as CI's book build does.
 2. **Floor.** The same book with every code cell removed, built with the same configuration
    and forced execution (a notebook without code cells still starts no computation), not
    strict (glued figures are missing, by construction). Its time is what the build costs
@@ -55,12 +59,18 @@ sys.path.insert(0, str(ROOT / "tools"))
 import build_book  # noqa: E402
 
 
-def clean_full_build(jobs: int | None, workdir: Path, source: Path | None = None) -> dict:
+def clean_full_build(
+    jobs: int | None, workdir: Path, source: Path | None = None, ledger_from: Path | None = None
+) -> dict:
     """The HTML book built as ``nox -s book`` builds it, with the caches of ``workdir``.
 
     Empty caches: a clean build. ``source``: a copy of navcore (on ``PYTHONPATH``) to build
-    against instead of the checkout's (the incremental rebuild).
+    against instead of the checkout's (the incremental rebuild). ``ledger_from``: a stored
+    ledger (``nox -s ledger -- --store``) the clean build's ledger cache starts from, as CI's
+    book build does, so that the build is timed without evaluating the ledger.
     """
+    if ledger_from is not None and not (workdir / "ledger_cache" / "claims").exists():
+        shutil.copytree(ledger_from / "claims", workdir / "ledger_cache" / "claims")
     env = dict(
         os.environ,
         NAVCORE_BOOK_CACHE=str(workdir / "jupyter_cache"),
@@ -93,7 +103,9 @@ def clean_full_build(jobs: int | None, workdir: Path, source: Path | None = None
     times_file = out / "_build" / "page-times.json"
     times = json.loads(times_file.read_text()) if times_file.exists() else {"chapters": {}, "pages": {}}
     times_file.unlink(missing_ok=True)
-    executed = [m.group(1) for line in log_lines if (m := re.match(r"prefill:   (\S+) \(", line))]
+    executed = {
+        m.group(1): m.group(2) for line in log_lines if (m := re.match(r"prefill:   (\S+) \((.*)\)$", line))
+    }
     return {
         "total": total,
         "execution": (sphinx_start or start) - start,
@@ -112,6 +124,13 @@ def incremental_build(jobs: int | None, workdir: Path, module: str) -> dict:
     """
     source = workdir / "navcore-copy"
     shutil.copytree(ROOT / "navcore", source / "navcore", ignore=shutil.ignore_patterns("__pycache__"))
+    # what the pages read beyond the package is found beside it (the book's pages, the tests, the
+    # papers' texts next to the checkout): the same files, so that only the module differs
+    for name in ("book", "tests"):
+        (source / name).symlink_to(ROOT / name)
+    shared = ROOT.parent / "shared"
+    if shared.exists() and not (workdir / "shared").exists():
+        (workdir / "shared").symlink_to(shared)
     with open(source / module, "a") as f:
         f.write("# a comment added by the benchmark\n")
     return clean_full_build(jobs, workdir, source)
@@ -404,6 +423,18 @@ def main() -> int:
     parser.add_argument(
         "--library-only", action="store_true", help="only the library numbers (filter step, mission)"
     )
+    parser.add_argument(
+        "--build-only",
+        action="store_true",
+        help="only the book builds (clean, incremental, floor): no library or ledger timings",
+    )
+    parser.add_argument(
+        "--ledger-from",
+        type=Path,
+        default=None,
+        help="start the clean build's ledger cache from this stored ledger (nox -s ledger -- --store "
+        "writes _build/navcore-cache), as CI's book build does: the build is timed without the ledger",
+    )
     parser.add_argument("--out", type=Path, default=ROOT / "_build" / "bench.md")
     parser.add_argument(
         "--touch",
@@ -430,13 +461,19 @@ def main() -> int:
     lines = [
         f"# Build benchmark ({cores} cores, jobs = {args.jobs or cores})",
         "",
+        "The clean build's ledger: "
+        + (f"read from the store {args.ledger_from}" if args.ledger_from else "evaluated (empty cache)"),
+        "",
         "| measurement | seconds |",
         "|---|---:|",
     ]
     with tempfile.TemporaryDirectory(prefix="navcore-bench-") as tmp:
         workdir = Path(tmp)
         print("clean full build (HTML, every chapter executed) ...", flush=True)
-        full = clean_full_build(args.jobs, workdir)
+        ledger_from = args.ledger_from.resolve() if args.ledger_from else None
+        if ledger_from is not None and not (ledger_from / "claims").is_dir():
+            raise SystemExit(f"--ledger-from {args.ledger_from}: no stored ledger (a claims folder) there")
+        full = clean_full_build(args.jobs, workdir, ledger_from=ledger_from)
         print(f"incremental rebuild after a comment in {args.touch} ...", flush=True)
         incremental = incremental_build(args.jobs, workdir, args.touch)
         print("floor build (the same book without code cells) ...", flush=True)
@@ -458,7 +495,8 @@ def main() -> int:
     lines += [f"| {name} | {seconds:.1f} |" for name, seconds in sorted(full["chapters"].items())]
     lines += ["", "| page | execution in the build (s) |", "|---|---:|"]
     lines += [f"| {name} | {seconds:.1f} |" for name, seconds in sorted(full["pages"].items())]
-    lines += ["", f"Pages the incremental rebuild executed: {', '.join(incremental['executed']) or 'none'}."]
+    lines += ["", f"Pages the incremental rebuild executed ({len(incremental['executed'])}), and why:", ""]
+    lines += [f"- {page} ({why})" for page, why in incremental["executed"].items()] or ["- none"]
     aims = [
         ("full build under 5 min", full["total"] < 300),
         ("full build within 1.3x of the floor", full["total"] <= 1.3 * floor["total"]),
@@ -497,16 +535,22 @@ def main() -> int:
             seconds, status = time_subprocess(f"from navcore import figures; figures.render('{fig_id}')")
             ok &= status == "ok"
             lines.append(f"| figure {fig_id} | {seconds:.1f} | {status} |")
+    if args.build_only:
+        return _write(args.out, lines, ok)
     library, library_ok = library_benchmarks()
     lines += library
     ok &= library_ok
     ledger_lines, ledger_ok = ledger_parallel_ratio()
     lines += ["", "| ledger | value |", "|---|---:|", *ledger_lines]
     ok &= ledger_ok
-    args.out.parent.mkdir(parents=True, exist_ok=True)
-    args.out.write_text("\n".join(lines) + "\n")
+    return _write(args.out, lines, ok)
+
+
+def _write(out: Path, lines: list[str], ok: bool) -> int:
+    out.parent.mkdir(parents=True, exist_ok=True)
+    out.write_text("\n".join(lines) + "\n")
     print("\n".join(lines))
-    print(f"written to {args.out}")
+    print(f"written to {out}")
     return 0 if ok else 1
 
 

@@ -4,8 +4,13 @@ Usage::
 
     python tools/build_book.py                 # whole book, HTML, into _build/html
     python tools/build_book.py --builder pdflatex
-    python tools/build_book.py --only wf       # intro + the WF chapter + ledger/errata pages,
+    python tools/build_book.py --only wf       # the WF chapter and the bibliography, strictly,
                                                # into _build/subset-wf (fast check of one chapter)
+
+A subset build (``--only``) evaluates only the claims its pages use, and reads a reference to
+a page outside the subset (another chapter, the front matter, the API reference) as plain text
+when that page exists: the ``subset_references`` extension, which only subset builds load,
+says in the log how many. A reference to nothing fails a subset build as it fails the full one.
 
 ``--cache`` executes through a jupyter-cache whose folder is keyed by the lock file, the
 execution settings of ``_config.yml`` and this tool. Each executed page is stored with what
@@ -88,7 +93,14 @@ REFERENCE_PAGES = (
 HOWTO_PAGES = ("dop", "outage", "kalman", "frames", "detection", "emitter")
 
 
-def subset_toc(paper: str) -> str:
+def subset_toc(paper: str, book: Path = ROOT / "book") -> str:
+    """The table of contents of a subset build (``--only``).
+
+    A paper's chapter is built alone, rooted at its opening page, with the bibliography its
+    citations need: no front or back matter that reads every paper's claims, so the build
+    evaluates only the claims the chapter's own pages use. References to pages outside the
+    subset read as plain text (the ``subset_references`` extension, loaded by subset builds only).
+    """
     if paper == "reference":  # the how-to guides (executed) and the API reference
         howto = "".join(f"          - file: reference/howto/{name}\n" for name in HOWTO_PAGES)
         pages = "".join(f"      - file: reference/{name}\n" for name in REFERENCE_PAGES)
@@ -107,13 +119,11 @@ def subset_toc(paper: str) -> str:
             "      - file: coverage\n      - file: errata\n"
             "      - file: reports/index\n        sections:\n" + reports + "      - file: bibliography\n"
         )
+    bibliography = "      - file: bibliography\n" if (book / "bibliography.md").exists() else ""
     return (
-        "format: jb-book\nroot: intro\nparts:\n"
-        "  - caption: Introduction\n    chapters:\n      - file: about\n"
-        f"  - caption: {PARTS[paper]}\n    chapters:\n      - file: {paper}/index\n"
-        f"        sections:\n          - glob: {paper}/[0-9]*\n"
-        "  - caption: Verification\n    chapters:\n      - file: ledger\n      - file: errata\n"
-        "      - file: bibliography\n"
+        f"format: jb-book\nroot: {paper}/index\nparts:\n"
+        f"  - caption: {PARTS.get(paper, paper)}\n    chapters:\n      - glob: {paper}/[0-9]*\n"
+        + bibliography
     )
 
 
@@ -171,6 +181,32 @@ def cached_config(config_file: Path | None = None) -> Path:
         local[name] = str(config_file.parent / folder)
     path = parent / "_config_cached.yml"
     path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(yaml.safe_dump(config, sort_keys=False))
+    return path
+
+
+SUBSET_EXTENSION = "subset_references"  # book/_ext: loaded by subset builds only
+
+
+def subset_config(config_file: Path, folder: Path) -> Path:
+    """A copy of ``config_file`` (written into ``folder``) that also loads :data:`SUBSET_EXTENSION`.
+
+    Only a subset build uses it, so the full book never sets a reference to a missing page as
+    plain text. The execution cache stays the one ``config_file`` names (its key does not
+    depend on the Sphinx extensions), so a subset build reuses the full build's executions.
+    """
+    import yaml
+
+    config = yaml.safe_load(config_file.read_text())
+    sphinx = config.setdefault("sphinx", {}) or {}
+    config["sphinx"] = sphinx
+    local = dict(sphinx.get("local_extensions") or {})
+    for name, ext_folder in local.items():  # relative to the config file, which moves
+        local[name] = str((config_file.parent / ext_folder).resolve())
+    local[SUBSET_EXTENSION] = str(ROOT / "book" / "_ext")
+    sphinx["local_extensions"] = local
+    folder.mkdir(parents=True, exist_ok=True)
+    path = folder / f"_config_subset_{config_file.stem}.yml"
     path.write_text(yaml.safe_dump(config, sort_keys=False))
     return path
 
@@ -377,6 +413,49 @@ def _data_files(root: Path) -> tuple[str, ...]:
     )
 
 
+def _import_refs(node: ast.AST, package: str) -> set[str]:
+    """The dotted names an ``import`` or ``from ... import`` statement refers to."""
+    if isinstance(node, ast.Import):
+        return {alias.name for alias in node.names}
+    assert isinstance(node, ast.ImportFrom)
+    base = node.module or ""
+    if node.level:
+        parts = package.split(".")[: len(package.split(".")) - node.level + 1]
+        base = ".".join([*parts, *([node.module] if node.module else [])])
+    return {base, *(f"{base}.{alias.name}" for alias in node.names)}
+
+
+@cache
+def _import_statements(root: Path) -> dict[str, tuple[frozenset[str], frozenset[str]]]:
+    """For each navcore module: what it imports when it is imported, and what only its functions import.
+
+    The first set holds the modules of the import statements that run when the module runs
+    (at module level, in ``if``/``try`` blocks and class bodies) and the data files its source
+    names (``file:papers/paper_items.json``); the second the modules that only statements
+    inside functions (and lambdas) import, which run when the function is called.
+    """
+    modules = _module_files(root)
+    data = _data_files(root)
+    found: dict[str, tuple[frozenset[str], frozenset[str]]] = {}
+    for name, path in modules.items():
+        source = path.read_text()
+        package = name if path.name == "__init__.py" else name.rpartition(".")[0]
+        at_import: set[str] = set()
+        in_functions: set[str] = set()
+        stack: list[tuple[ast.AST, bool]] = [(ast.parse(source), False)]
+        while stack:
+            node, in_function = stack.pop()
+            for child in ast.iter_child_nodes(node):
+                inner = in_function or isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda))
+                if isinstance(child, (ast.Import, ast.ImportFrom)):
+                    (in_functions if inner else at_import).update(_import_refs(child, package))
+                stack.append((child, inner))
+        refs = {m for m in at_import if m in modules}
+        refs.update(f"file:{f}" for f in data if Path(f).name in source)
+        found[name] = (frozenset(refs), frozenset(m for m in in_functions if m in modules) - refs)
+    return found
+
+
 @cache
 def static_import_graph(root: Path) -> dict[str, frozenset[str]]:
     """For each navcore module, the navcore modules and data files its source refers to.
@@ -384,27 +463,37 @@ def static_import_graph(root: Path) -> dict[str, frozenset[str]]:
     Every ``import`` and ``from ... import`` statement counts, inside functions too; a data file
     (``file:papers/paper_items.json``) counts when the module's source names it.
     """
-    modules = _module_files(root)
-    data = _data_files(root)
-    graph: dict[str, frozenset[str]] = {}
-    for name, path in modules.items():
-        source = path.read_text()
-        package = name if path.name == "__init__.py" else name.rpartition(".")[0]
-        found: set[str] = set()
-        for node in ast.walk(ast.parse(source)):
-            if isinstance(node, ast.Import):
-                found.update(alias.name for alias in node.names)
-            elif isinstance(node, ast.ImportFrom):
-                base = node.module or ""
-                if node.level:
-                    parts = package.split(".")[: len(package.split(".")) - node.level + 1]
-                    base = ".".join([*parts, *([node.module] if node.module else [])])
-                found.add(base)
-                found.update(f"{base}.{alias.name}" for alias in node.names)
-        refs = {m for m in found if m in modules}
-        refs.update(f"file:{f}" for f in data if Path(f).name in source)
-        graph[name] = frozenset(refs)
-    return graph
+    return {
+        name: at_import | in_functions for name, (at_import, in_functions) in _import_statements(root).items()
+    }
+
+
+PAPER_MODULES = PACKAGE + ".papers."  # the ledger's paper modules: what its evaluations run
+
+
+@cache
+def dependency_graph(root: Path) -> dict[str, frozenset[str]]:
+    """The static part of a page's dependencies: which navcore module depends on which.
+
+    A module that the ledger's paper modules reach (through every import statement, inside
+    functions too: :func:`static_import_graph`) keeps every import statement of its source,
+    because the ledger may run its code in worker processes, where the kernel records nothing.
+    Every other module (what only the book's pages call: the page helpers, the glue registry,
+    the figures, the reports) keeps the imports that run when it is imported; what its
+    functions import when a page calls them runs in the kernel, which records it (an edge of
+    ``page_dependencies``). So a page that glues one paper's number depends on that paper's
+    models, not on every model the glue registry could import.
+    """
+    full = static_import_graph(root)
+    statements = _import_statements(root)
+    run_by_ledger: set[str] = set()
+    todo = [name for name in full if name.startswith(PAPER_MODULES)]
+    while todo:
+        name = todo.pop()
+        if name not in run_by_ledger:
+            run_by_ledger.add(name)
+            todo.extend(m for m in _with_packages(set(full.get(name, ()))) if m in full)
+    return {name: full[name] if name in run_by_ledger else statements[name][0] for name in full}
 
 
 def _with_packages(names: set[str]) -> set[str]:
@@ -422,9 +511,10 @@ def page_dependencies(
     """The navcore modules and data files reachable from a page's imports (sorted).
 
     ``edges`` are the imports that navcore modules made while the kernel ran; the static graph
-    (:func:`static_import_graph`) adds every import statement of every module's source.
+    (:func:`dependency_graph`) adds the import statements of every module's source (those
+    inside functions for the modules the ledger's paper modules reach).
     """
-    graph = static_import_graph(root)
+    graph = dependency_graph(root)
     seen: set[str] = set()
     todo = list(_with_packages(set(roots)))
     while todo:
@@ -444,14 +534,23 @@ def _file_hash(path: Path) -> str | None:
         return None
 
 
+# the table of contents a subset build writes into the book folder while it runs: not part of
+# what a page that lists the folder depends on (else every subset build, and the full build
+# after it, would execute those pages again)
+SUBSET_TOC_PREFIX = "_toc_subset_"
+
+
 def _dependency_hash(root: Path, name: str) -> str | None:
     """Hash of a data dependency, named relative to the package folder: a file's contents, or
-    for a name ending in ``/`` (a folder the page listed) the sorted names in it."""
+    for a name ending in ``/`` (a folder the page listed) the sorted names in it, less a subset
+    build's temporary table of contents."""
     path = _package_dir(root) / name
     if not name.endswith("/"):
         return _file_hash(path)
     try:
-        listing = "\n".join(sorted(p.name for p in path.iterdir()))
+        listing = "\n".join(
+            sorted(p.name for p in path.iterdir() if not p.name.startswith(SUBSET_TOC_PREFIX))
+        )
     except OSError:
         return None
     return hashlib.sha256(listing.encode()).hexdigest()[:20]
@@ -1057,12 +1156,15 @@ def build(
         if only not in PARTS:
             raise SystemExit(f"--only must be one of {list(PARTS)}, got {only!r}")
         # the subset toc must sit in book/ so that relative file names resolve
-        tmp = tempfile.NamedTemporaryFile("w", suffix=".yml", prefix="_toc_subset_", dir=book, delete=False)
-        tmp.write(subset_toc(only))
+        tmp = tempfile.NamedTemporaryFile(
+            "w", suffix=".yml", prefix=SUBSET_TOC_PREFIX, dir=book, delete=False
+        )
+        tmp.write(subset_toc(only, book))
         tmp.close()
         toc = Path(tmp.name)
         out = out or ROOT / "_build" / f"subset-{only}"
     out = out or ROOT
+    sphinx_config = subset_config(config, out / "_build") if only else config
     try:
         if cache:
             import yaml
@@ -1081,7 +1183,7 @@ def build(
         sphinx_builder = "latex" if builder == "pdflatex" else builder  # the PDF: latex_to_pdf
         cmd = [
             str(Path(sys.executable).with_name("jupyter-book")), "build", str(book),
-            "--config", str(config), "--toc", str(toc), "--path-output", str(out),
+            "--config", str(sphinx_config), "--toc", str(toc), "--path-output", str(out),
             "--builder", sphinx_builder, "--all", "-W", "-n", "--keep-going", "-q",
         ]  # fmt: skip
         print(

@@ -159,6 +159,7 @@ def check_prose(root: Path) -> list[str]:
 DEVELOPER_WORDING = re.compile(
     r"[Vv]erdict changed|\bwas (?:discrepant|inconsistent|consistent|reproduced|not-reproducible)\b"
     r"|expected_status|\bOracle:|caught by the oracle|checked by the library's tests|\(tests?\)"
+    r"|\bin the tests\b|\bin the test suite\b|\bthe library's tests\b"
 )
 _SCRIPT_OR_STYLE = re.compile(r"<(style)\b.*?</\1>", re.S)
 

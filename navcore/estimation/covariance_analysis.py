@@ -800,8 +800,12 @@ def _taylor(F: Array, dt: float, order: int = 4) -> Array:
 def concatenate_analyses(parts: Sequence[CovarianceAnalysis]) -> CovarianceAnalysis:
     """Join consecutive analyses into one time series.
 
-    Each part is resumed from the previous one's final covariances; a part's first sample,
-    equal to the previous part's last, is dropped.
+    Each part is resumed from the previous one's final covariances, so its first sample is the
+    previous part's last one with that sample's measurements (if any) applied by the later
+    part: the joined series takes the shared sample from the later part. A part that another
+    resumes should therefore apply no measurement at its last sample, or the sample's
+    measurements are applied twice. Snapshots keep their steps on the joined time axis (the
+    later part's where both hold one at the shared sample).
 
     Parameters
     ----------
@@ -842,7 +846,7 @@ def concatenate_analyses(parts: Sequence[CovarianceAnalysis]) -> CovarianceAnaly
             raise ValueError("parts must be consecutive: each starts where the previous ends")
 
     def join(attr: str) -> Any:
-        return np.concatenate([getattr(parts[0], attr)] + [getattr(p, attr)[1:] for p in parts[1:]])
+        return np.concatenate([getattr(p, attr)[:-1] for p in parts[:-1]] + [getattr(parts[-1], attr)])
 
     snaps: dict[int, Array] = {}
     offset = 0

@@ -17,13 +17,15 @@ _ASSUMED = (
 )
 
 
-def _events(ax) -> None:
-    for t in (360, 540, 720, 900):
-        ax.axvline(t / 60, color="tab:orange", lw=0.6, ls=":")
-    for t in (1020, 1200, 1380, 1560):
-        ax.axvline(t / 60, color="tab:red", lw=0.6, ls=":")
-    for t in (2760, 2940, 3120, 3300):
-        ax.axvline(t / 60, color="tab:green", lw=0.6, ls=":")
+def _events(ax, reacquisition: bool = True) -> None:
+    """Dotted lines at the Sec. 2.6.1 events: carrier losses (orange), code losses (red) and,
+    unless ``reacquisition`` is false (the free-inertial variant), code reacquisitions (green)."""
+    events = sc.sequential_outage_events(outage_s=-1.0 if reacquisition else None)
+    for t, _, kind, back in events:
+        if kind == "carrier" and not back:
+            ax.axvline(t / 60, color="tab:orange", lw=0.6, ls=":")
+        elif kind == "code":
+            ax.axvline(t / 60, color="tab:green" if back else "tab:red", lw=0.6, ls=":")
 
 
 def _velocity_figure(label: str) -> Figure:
@@ -88,7 +90,12 @@ def sp_fig2_4() -> Figure:
     "10 nmi/h). " + _ASSUMED,
 )
 def sp_fig2_5() -> Figure:
-    pub = {"TC 1 nmi/h": 1131.0, "TC 10 nmi/h": 18000.0}
+    from navcore import ledger
+
+    pub = {
+        "TC 1 nmi/h": float(ledger.claim("SP-sec2.6.1-84min-1nmi").published),
+        "TC 10 nmi/h": float(ledger.claim("SP-sec2.6.1-84min-10nmi").published),
+    }
     return _bars(spm.sequential_errors(True), "horizontal position error after 84 min (m)", pub)
 
 
@@ -104,7 +111,7 @@ def sp_seq_position() -> Figure:
     fig, ax = plt.subplots()
     for s, r in sc.sequential_outage(True).items():
         ax.semilogy(r.t / 60, r.horizontal_position, label=s.label)
-    _events(ax)
+    _events(ax, reacquisition=False)
     ax.set_xlabel("time (min)")
     ax.set_ylabel("horizontal position error, rss 1-sigma (m)")
     ax.legend()

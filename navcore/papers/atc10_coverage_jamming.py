@@ -851,7 +851,7 @@ CLAIMS: list[Claim] = [
         note="Neighbouring samples correlated, farther ones not (assumed 0.3-0.5; Genz integration of the "
         "24-dimensional Gaussian orthant, $10^{-3}$ allowing for its error): correlated samples leave a "
         "window "
-        "empty 2.3-4.2 times more often than the product assumes (Slepian's inequality), so F and G, and "
+        "empty 2.3-4.1 times more often than the product assumes (Slepian's inequality), so F and G, and "
         "the bounds built on them, are approximations. A caveat, not a finding: the size needs the "
         "signature's spectrum, which the paper does not give, and read with B a one-sided baseband "
         "bandwidth the samples are independent for a flat spectrum. The seeded Monte Carlo on the Monte "

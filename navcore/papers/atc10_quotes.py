@@ -154,7 +154,10 @@ QUOTES: dict[str, str] = {
     "ATC10-eqA.9-rule-at-design": (
         "$$\\text{Decide } H_1(i) \\text{ if } K_0 \\leq t K \\quad (\\text{A.9})$$"
     ),
-    "ATC10-eqB.11-monte-carlo": "$$P_F \\geq \\exp \\left[(Kt + 1) \\text{Ln}",
+    "ATC10-eqB.11-monte-carlo": (
+        "$$P_F \\geq \\exp \\left[(Kt + 1) \\text{Ln} \\left(\\left(1 - (1-p_f)^{2B\\alpha}\\right) "
+        "\\left(1 - (1-p_f)^{4B\\beta}\\right)^3 \\right) \\right] \\quad (\\text{B.11})$$"
+    ),
     "ATC10-eqB.6-correlated-samples": (
         "$$\\text{Prob} (\\phi_1 | H_0(i)) = \\left(1 - (1-p_f)^{2B\\alpha}\\right) \\left(1 - "
         "(1-p_f)^{4B\\beta}\\right)^3 \\quad (\\text{B.6})$$"

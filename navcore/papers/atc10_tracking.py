@@ -1500,7 +1500,7 @@ ERRATA += [
         "above 1.45 and 1.22 for any orbit radius from 5 to 14 Earth radii. The printed 5.76/14.3 equal "
         "the frame-dependent $1'(F'F)^{-1} 1$ in east-positive ECEF at the radius ratio that reproduces "
         "the rest of Table 4.2 (9.235). With the invariant term and the rest of Table 4.2 as printed, "
-        "col. (v) is 175/258/915 ft (I) and 269/470/1228 ft (II) against 230/450/1840 and 677/1500/4200; "
+        "col. (v) is 175/258/915 ft (I) and 270/470/1228 ft (II) against 230/450/1840 and 677/1500/4200; "
         "rule (3) holds only at $\\sigma_0$ = 5 ns, and no threshold gives rule (4)'s 30 and 60 s together.",
         evidence="Table 4.2 col. 5 reproduced to 0.1 % by the printed formula in ECEF and not by the "
         "invariant; a rotation of the frame changes the printed quantity; a seeded Monte Carlo of the full "

@@ -230,10 +230,10 @@ IN.convention(
     "table27_matching",
     "tc10-rank",
     readings={
-        "by the rank of the uncertainty in the 10 nmi/h row": "tc10-rank",
-        "by the rank of the uncertainty in each row": "row-rank",
+        "ranked by uncertainty in the 10 nmi/h row": "tc10-rank",
+        "ranked by uncertainty in each row on its own": "row-rank",
     },
-    quantity="which book satellite stands for which printed satellite of Table 2.7",
+    quantity="matching of the book's satellites to Table 2.7's printed ones",
     reason="the book's constellation does not hold the paper's satellites 3-21, so a printed column is "
     "matched to the book's satellite of the same rank of range uncertainty in the 10 nmi/h row, "
     "where the printed counts are best resolved (the printed pattern is the same in every row); "
@@ -678,17 +678,29 @@ def _search_time(sr, srr):
     )
 
 
-def _blackout_s(system: sc.System) -> tuple[float, float]:
-    """(start, end) in s of ``system``'s GPS blackout: from the first sample with fewer codes
-    than it needs to the moment it has them again, each satellite's search time included."""
+def _ending_return(system: sc.System) -> tuple[float, float, int | None]:
+    """(start, end) in s of ``system``'s GPS blackout, and the first sample at which the
+    covariance run has the codes it needs again (``None`` if none was lost). The blackout's
+    end includes each satellite's search time; the run applies a pseudorange from the sample
+    its code is back."""
     lk = _lock_tables()[system]
     start, _ = _outage(system, lk.code)
     search = reacquisition_search()[system.label]
     k0 = int(np.argmin(np.abs(flyby_trajectory().t - start)))
     kept = int(lk.code[k0:].all(axis=0).sum())  # channels never lost in the outage
-    back = np.sort(search["back_s"])
     need = _need(system) - kept
-    return start, float(back[need - 1]) if need > 0 else start
+    if need <= 0:
+        return start, start, None
+    back = np.sort(search["back_s"])
+    step = np.sort(search["step"])
+    return start, float(back[need - 1]), int(step[need - 1])
+
+
+def _blackout_s(system: sc.System) -> tuple[float, float]:
+    """(start, end) in s of ``system``'s GPS blackout: from the first sample with fewer codes
+    than it needs to the moment it has them again, each satellite's search time included."""
+    start, end, _ = _ending_return(system)
+    return start, end
 
 
 def blackouts_min() -> dict[str, float]:
@@ -712,12 +724,14 @@ def blackout_reduction_min() -> float:
 def errors_before_reacquisition() -> dict[str, float]:
     """Horizontal position error (rss 1 sigma, m) of each system at the sample before the
     reacquisition that ends its blackout (the first code back for the tightly coupled filter,
-    the fourth for the loosely coupled receiver)."""
+    the fourth for the loosely coupled receiver): the last sample before the covariance run
+    applies the pseudoranges that end it (it applies each from the sample its code is back)."""
     out = {}
     for s, r in flyby_runs().items():
-        _, end = _blackout_s(s)
-        k = int(np.searchsorted(r.t, end, side="left")) - 1
-        out[s.label] = float(r.horizontal_position[max(k, 0)])
+        start, _, k = _ending_return(s)
+        if k is None:
+            k = int(np.searchsorted(r.t, start, side="left"))
+        out[s.label] = float(r.horizontal_position[max(k - 1, 0)])
     return out
 
 

@@ -702,12 +702,14 @@ def _run(
     initial_position: bool = True,
     lc_pseudorange_noise_m: float | None = None,
     constellation: Constellation | None = None,
+    measure_last: bool = True,
 ) -> dict[System, CovarianceAnalysis]:
     """Run several systems on one trajectory and lock table (one batched pass per
     architecture), from the mission start or resuming from ``resume``'s final covariances.
     ``initial_position=False`` starts without horizontal position error;
     ``lc_pseudorange_noise_m`` replaces the loosely coupled receiver's pseudorange noise;
-    ``constellation`` the nominal 24-satellite one."""
+    ``constellation`` the nominal 24-satellite one; ``measure_last=False`` applies no
+    measurement at the last sample (a phase that another resumes from there)."""
     runs = _run_list(
         systems,
         tr,
@@ -720,6 +722,7 @@ def _run(
         initial_position=initial_position,
         lc_pseudorange_noise_m=lc_pseudorange_noise_m,
         constellation=constellation,
+        measure_last=measure_last,
     )
     return dict(zip(systems, runs, strict=True))
 
@@ -738,6 +741,7 @@ def _run_list(
     lc_pseudorange_noise_m: float | None = None,
     constellation: Constellation | None = None,
     transforms: tuple[AprioriTransform | None, ...] | None = None,
+    measure_last: bool = True,
 ) -> list[CovarianceAnalysis]:
     """:func:`_run` for a list of members (a system may appear several times, each with its
     own ``transforms`` of the a-priori covariance), in the order given."""
@@ -809,13 +813,17 @@ def _run_list(
             steps |= (code | carrier).any(axis=1)
         if doppler:
             steps[:] = True
+        schedule = combine_schedules(gps, baro, dop)
+        if not measure_last:  # the last sample's measurements belong to the phase resumed from it
+            steps[-1] = False
+            schedule = _without_step(schedule, len(tr) - 1)
         res = run_covariance_analysis(
             tr,
             truth,
             filt,
             sources,
             P0,
-            combine_schedules(gps, baro, dop),
+            schedule,
             snapshots=snapshots,
             P0_filter=Pf0,
             P0_apriori=apriori,
@@ -825,6 +833,15 @@ def _run_list(
         assert isinstance(res, list)  # a stack of initial covariances gives one run each
         out.update(zip(members, res, strict=True))
     return [out[i] for i in range(len(systems))]
+
+
+def _without_step(schedule: Callable, last: int) -> Callable:
+    """``schedule`` with no measurement at step ``last``."""
+
+    def sched(k: int) -> list:
+        return [] if k == last else schedule(k)
+
+    return sched
 
 
 @dataclass(frozen=True)
@@ -987,10 +1004,14 @@ def end_free_s() -> float:
     return last_code_loss_s() + IN.free_inertial_min * MINUTE
 
 
-def _phase(systems, tr_full, channels, t0, t1, step, events, resume):
+def _phase(systems, tr_full, channels, t0, t1, step, events, resume, measure_last=False):
+    """One phase of a mission from ``t0`` to ``t1``. Its last sample is the next phase's first,
+    so its measurements belong to one of them only: to the next phase unless ``measure_last``
+    (the mission's final phase), so that nothing is applied twice at a boundary and a
+    reacquisition at the boundary belongs to the phase that has it."""
     tr = _slice(tr_full, t0, t1, step)
     code, carrier = lock_table(tr.t, len(channels), events)
-    return _run(systems, tr, code, carrier, channels, resume=resume)
+    return _run(systems, tr, code, carrier, channels, resume=resume, measure_last=measure_last)
 
 
 def _group(architecture: str) -> tuple[System, ...]:
@@ -1090,6 +1111,7 @@ def initial_error_runs(scale: float) -> dict[str, CovarianceAnalysis]:
                 channels,
                 resume=parts[-1] if parts else None,
                 transforms=transforms,
+                measure_last=bool(parts),  # the boundary's measurements belong to the second part
             )
         )
     return {n: concatenate_analyses([a, b]) for n, a, b in zip(names, *parts, strict=True)}
@@ -1107,7 +1129,7 @@ def _sequential_group_on(
     tr, channels, a, b = _sequential_common_on(architecture, channel_key)
     ev = sequential_outage_events(len(channels), outage_s=None if free_inertial else -1.0)
     end = end_free_s() if free_inertial else END_S
-    c = _phase(_group(architecture), tr, channels, reacquisition_s(), end, 1, ev, b)
+    c = _phase(_group(architecture), tr, channels, reacquisition_s(), end, 1, ev, b, measure_last=True)
     return {s: concatenate_analyses([a[s], b[s], c[s]]) for s in _group(architecture)}
 
 

@@ -207,7 +207,7 @@ ERRATA = [
         "from "
         "18 rad/s and the rounded column 3 (17.67 would give 0.31 for the 0.5 nmi/h row).",
         evidence="Column 4 recomputed from column 3 with Eq. (2.1) both ways; noise bandwidth of "
-        "the loop by numerical quadrature of $|H(j\\omega)|^2$.",
+        "the loop by quadrature of $|H(j\\omega)|^2$ against the closed form $(5/6)\\, \\omega_0$.",
         claims=tuple(f"SP-tab2.6-col4-{g}" for g in GRADES),
         discussed_in=PAGE,
     ),
