@@ -103,8 +103,9 @@ def sp_fig2_7() -> Figure:
     fig, ax = plt.subplots()
     for s, r in runs.items():
         (line,) = ax.semilogy(r.t / MINUTE, r.horizontal_position, lw=1.0, label=s.label)
-        _, end = fb._blackout_s(s)
-        ax.plot(end / MINUTE, before[s.label], "o", color=line.get_color(), ms=5)
+        start, end, k = fb._ending_return(s)
+        at = r.t[k - 1] if k is not None else start  # the sample the value is read at
+        ax.plot(at / MINUTE, before[s.label], "o", color=line.get_color(), ms=5)
         if s.grade in fb.FIG27_M and s.architecture == "tight":
             ax.plot(end / MINUTE, fb.FIG27_M[s.grade], "*", color=line.get_color(), ms=12, mec="k")
     t_ca = fb.IN.closest_approach_min
