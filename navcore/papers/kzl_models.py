@@ -104,12 +104,12 @@ IN.convention(
     "atan2",
     quantity="arctangent of the printed roll of Eq. (3)",
     readings={
-        "atan2(a_y, a_z), the two-argument function the name arctan_2 calls for": "atan2",
-        "arctan(a_y / a_z), the one-argument arctangent of the printed ratio": "arctan",
+        "the two-argument arctangent that the name arctan_2 calls for": "atan2",
+        "the one-argument arctangent of the printed ratio": "arctan",
     },
     reason="Eq. (3) prints '$\\arctan_2(a_y / a_z)$': the name of the two-argument arctangent with one "
     "argument, the ratio; read as the ratio's arctangent it returns the roll of a level specific "
-    "force (for |roll| < 90 deg), read as atan2 it returns 180 deg",
+    "force (for $|\\phi| < 90$ deg), read as atan2 it returns 180 deg",
 )
 IN.convention(
     "negligible_fraction",
@@ -426,13 +426,13 @@ ERRATA = [
         basis="text-only",
         locator="Eqs. (2)-(3)",
         printed="$\\theta = \\arctan(-a_x / \\sqrt{a_y^2 + a_z^2})$, $\\phi = \\arctan_2(a_y / a_z)$",
-        finding="The pitch of Eq. (2) has the wrong sign: with a = the specific force of Eq. (8) (a "
-        "level IMU measures [0, 0, -g] in NED body axes) a nose-up pitch comes out nose-down, under "
+        finding="The pitch of Eq. (2) has the wrong sign: with $a$ the specific force of Eq. (8) (a "
+        "level IMU measures $[0, 0, -g]$ in NED body axes) a nose-up pitch comes out nose-down, under "
         "every reading. For the specific force: $\\theta = \\arctan(f_x / \\sqrt{f_y^2 + f_z^2})$, "
         "$\\phi = \\mathrm{atan2}(-f_y, -f_z)$. The printed pair is right for $a = -f$, a sign "
         "convention Eq. (8) contradicts. The roll of Eq. (3) is an open reading, not part of the "
         "finding: read as the one-argument arctangent of the printed ratio it returns the roll of a "
-        "level aircraft (for |roll| < 90 deg), read as atan2 it returns 180 deg.",
+        "level aircraft (for $|\\phi| < 90$ deg), read as atan2 it returns 180 deg.",
         evidence="The printed Eq. (2) applied to the specific force of nose-up and nose-down attitudes "
         "built with scipy's Rotation; Table 1 is level, so no printed number depends on it.",
         claims=("KZL-eq2-pitch-sign",),
@@ -462,7 +462,7 @@ ERRATA = [
         finding="The explicit matrix is minus the usual cross-product matrix: $[a "
         "\\times]_{\\text{paper}}\\, b = b \\times a$. "
         "The explicit matrix is the right $F_{23}$ for error = estimated - true and "
-        "$\\hat{R} = (I + [\\delta\\psi \\times]) R$; reading the bracket as the standard skew flips the "
+        "$\\hat{R} = (I + [\\Delta\\psi \\times]) R$; reading the bracket as the standard skew flips the "
         "sign of $F_{23}$ "
         "and of the DD rows of Eq. (17).",
         evidence="Finite differences of the nonlinear velocity-error rate.",
@@ -495,7 +495,7 @@ ERRATA = [
         printed="Eq. (17): both DD rows use $l_{02}$ and rows 2 and 4 have an extra $0^T$ block; Eq. (14) "
         "lists "
         "$\\rho^{(n)}$ twice; Eq. (10) says O is the identity and I the zero matrix; Eq. (1)'s compact "
-        "form drops $\\delta\\psi$, $\\delta b_\\omega$ and the clock",
+        "form drops $\\Delta\\psi$, $\\Delta b_\\omega$ and the clock",
         finding="The first DD row uses $l_{01}$; Eq. (14) has 6 rows for two satellites, matching "
         "$2 + 4 (\\nu - 1)$; O is the zero and I the identity matrix.",
         evidence="Row counts from the library's carrier-phase measurement builders; with $l_{02}$ in both "
@@ -511,7 +511,7 @@ ERRATA = [
         basis="text-only",
         locator="Sec. 3.5, attitude correction",
         printed="$q_b^{n,+} = q_b^{n,-} \\otimes q^n$ with the n-frame rotation quaternion $q^n$ of $\\phi = "
-        "-\\delta\\psi$",
+        "-\\Delta\\hat{\\psi}$",
         finding="An n-frame rotation multiplies $q_b^n$ from the left: $q^{n,+} = q^n \\otimes q^{n,-}$. The "
         "printed order rotates about body axes; at the Table 1 heading of 90 deg a 2.29 deg "
         "error leaves a 1.58 deg residual.",
@@ -780,8 +780,9 @@ CLAIMS = [
         tolerance=prose("about"),
         expected_status="not-reproducible",
         note="No sensor specification is given for the navigation-grade INS. Long-term (beyond the "
-        "84-min Schuler period) position drift of an unaided INS with gyro bias eps: R eps, with the "
-        "assumed eps = 0.01 deg/h (0.005-0.02) giving 1.1 km/h, the classic 1 nmi/h class.",
+        "84-min Schuler period) position drift of an unaided INS with gyro bias $\\varepsilon$: "
+        "$R\\varepsilon$, with the assumed $\\varepsilon$ = 0.01 deg/h (0.005-0.02) giving 1.1 km/h, "
+        "the classic 1 nmi/h class.",
         discussed_in=PAGE0,
     ),
     Claim(

@@ -15,7 +15,7 @@ accel         scale factor        10000 ppm
 accel         noise (VRW)         1000 micro-g/sqrt(Hz)
 ============  ==================  ======================
 
-That assignment is a ``convention`` input (:data:`IN` ``gyro_bias_arw``); the other reading
+That assignment is a ``convention`` input (:data:`IN` ``gyro_bias_arw``); the swapped reading
 (bias 180, ARW 360) is what ``kzl_imu(swapped=True)`` builds, and the ledger shows what each
 claim gives under it.
 
@@ -135,10 +135,13 @@ IN.published(
 IN.convention(
     "gyro_bias_arw",
     (360.0, 180.0),
-    alternative=(180.0, 360.0),
+    readings={
+        "the gyro numbers moved up one line: bias 360, angle random walk 180": (360.0, 180.0),
+        "the two swapped: bias 180, angle random walk 360": (180.0, 360.0),
+    },
     reason="Table 1's gyro block is OCR-scrambled: 360 and 180 stand on the lines of 'bias stability' "
     "and 'Accelerometer'; moving the gyro numbers up one line gives bias 360 deg/h, ARW 180 "
-    "deg/h/√Hz; the other reading swaps them",
+    "deg/h/√Hz; the swapped reading exchanges them",
     unit="(deg/h, deg/h/√Hz)",
     quantity="gyro bias stability and angle random walk",
 )

@@ -218,8 +218,8 @@ IN.convention(
     quantity="speed of light in the printed $f_{L1}/c$",
     readings={
         "the defined speed of light, 299 792 458 m/s": C,
-        "the engineering value 3 x 10^8 m/s": 3.0e8,
-        "the four-digit value 2.998 x 10^8 m/s": 2.998e8,
+        "the engineering value 3 × 10⁸ m/s": 3.0e8,
+        "the four-digit value 2.998 × 10⁸ m/s": 2.998e8,
     },
     reason="Sec. IV.D prints $f_o^{L1}/c = 5.25$ m⁻¹ without its c; 1575.42 MHz over the defined c is "
     "5.2550, "
@@ -283,7 +283,7 @@ IN.convention(
     "negligible_fraction",
     1.0,
     quantity="share of the on-board accuracy $\\sigma_N$ below which an error is negligible",
-    readings={"below sigma_N": 1.0, "below a tenth of sigma_N": 0.1},
+    readings={"below the on-board accuracy": 1.0, "below a tenth of the on-board accuracy": 0.1},
     reason="Sec. V's 'negligible level' carries no number; the on-board accuracy $\\sigma_N$ is the error "
     "the "
     "aircraft has without any flexure",
@@ -1167,7 +1167,7 @@ ERRATA = [
         "covariances, the Sec. IV.D case); for general, non-commuting covariances the bound stays "
         "conservative even with completely correlated errors.",
         evidence="Exact covariance (Eq. (20)) and a seeded Monte Carlo for a completely correlated "
-        "generic case: trace bound / true trace about 1.2.",
+        "generic case: trace bound / true trace about 1.26.",
         claims=("WF-rem2-generic",),
         discussed_in=DOCS["IV"],
     ),
@@ -1596,10 +1596,10 @@ CLAIMS = [
         compute=f_l1_over_c_read,
         tolerance=_fl1_tol,
         expected_status="consistent",
-        note="1575.42 MHz (154 x 10.23 MHz) over c. With the defined c (299 792 458 m/s) the ratio is "
-        "5.2550, which rounds to 5.26, 0.00004 beyond half a unit in the last printed digit; with the "
-        "engineering c of $3 \\times 10^{8}$ m/s (5.2514) or $2.998 \\times 10^{8}$ m/s (5.2549) it rounds "
-        "to the printed 5.25. "
+        note="1575.42 MHz ($154 \\times 10.23$ MHz) over $c$. With the defined $c$ (299 792 458 m/s) "
+        "the ratio is 5.2550, which rounds to 5.26, 0.00004 beyond half a unit in the last printed "
+        "digit; with the engineering $c$ of $3 \\times 10^{8}$ m/s (5.2514) or $2.998 \\times 10^{8}$ m/s "
+        "(5.2549) it rounds to the printed 5.25. "
         "The figures use the printed 5.25.",
         discussed_in=DOCS["IVD"],
     ),
