@@ -855,14 +855,18 @@ def _band_text(e: Evaluation) -> str:
 
 
 def _agreeing_reading_text(e: Evaluation) -> str:
-    """Where only readings other than the one used agree: "agrees under: <labels>"."""
+    """Where only readings other than the one used agree, or the one used agrees only over a
+    band too wide to decide while another decides: "agrees under: <labels>"."""
     nominal = next((r for r in e.readings if r["nominal"]), None)
-    if nominal is None or nominal["agrees"]:
+    if nominal is None:
         return ""
-    labels = []
-    for r in e.readings:
-        if r["agrees"]:
-            labels.append("; ".join(r["reading"].values()))
+    if nominal["agrees"]:
+        if not nominal.get("band_too_wide") or e.status != "consistent":
+            return ""
+        agreeing = [r for r in e.readings if r["agrees"] and not r.get("band_too_wide") and not r["nominal"]]
+    else:
+        agreeing = [r for r in e.readings if r["agrees"]]
+    labels = ["; ".join(r["reading"].values()) for r in agreeing]
     return "agrees under: " + " / ".join(labels) if labels else ""
 
 
