@@ -58,7 +58,8 @@ Band runs
 ---------
 The band runs each assumed input one at a time over its band points and then the corners of
 the box: every corner for up to :data:`MAX_CORNER_INPUTS` inputs; beyond that, the two
-diagonal corners (all low, all high), their mirror, and, for a numeric value, the two corners
+diagonal corners (all low, all high), the two half-and-half corners (the first half of the
+inputs low and the rest high, and the reverse), and, for a numeric value, the two corners
 where each input sits at the end of its range that raised (lowered) the value in its
 one-at-a-time run (the extremes of a response monotone in each input, which the diagonals can
 miss). A run whose inputs are each in range but together describe a case the model does not
@@ -1667,7 +1668,7 @@ def _band_runs(
 
     if 2 <= len(assumed) <= MAX_CORNER_INPUTS:
         corners: Any = itertools.product(*[(inp.low, inp.high) for inp in assumed])
-    elif len(assumed) > MAX_CORNER_INPUTS:  # the two diagonal corners (all low, all high) and their mirror
+    elif len(assumed) > MAX_CORNER_INPUTS:  # the diagonal and the two half-and-half corners
         lows, highs = [inp.low for inp in assumed], [inp.high for inp in assumed]
         half = len(assumed) // 2
         corners = [lows, highs, lows[:half] + highs[half:], highs[:half] + lows[half:]]
