@@ -545,13 +545,13 @@ def _sp05_heading_for_ratio(ratio: float) -> float:
 
 def _sp06_q(bandwidth_hz: float) -> float:
     """Q = 1 / (R_c kappa), kappa the BPSK spectrum Tc sinc^2(f Tc) averaged over the jammer's band
-    B: the integral over +-B/2 in closed form, (2 / pi) (Si(2 pi x) - sin^2(pi x) / (pi x)) with
-    x = B Tc / 2 (scipy's sine integral)."""
-    from scipy.special import sici
+    B: the integral over +-B/2 by adaptive quadrature (scipy's quad; the library uses the closed
+    form with the sine integral, so the oracle integrates instead)."""
+    from scipy.integrate import quad
 
     rc = _sp_in("sp_antijam").chip_rate_hz
-    x = bandwidth_hz / (2 * rc)
-    frac = 2 / math.pi * (sici(2 * math.pi * x)[0] - math.sin(math.pi * x) ** 2 / (math.pi * x))
+    half = bandwidth_hz / 2
+    frac, _ = quad(lambda f: np.sinc(f / rc) ** 2 / rc, -half, half, limit=400, points=[0.0], epsabs=0.0)
     return 1 / (rc * frac / bandwidth_hz)
 
 
