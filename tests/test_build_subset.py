@@ -13,6 +13,7 @@ from __future__ import annotations
 import importlib.util
 import re
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -94,7 +95,7 @@ def _book(tmp_path: Path, kzl_page: str = KZL_PAGE) -> tuple[Path, Path]:
 
 def _build(tmp_path: Path, book: Path, config: Path, only: str | None) -> subprocess.CompletedProcess:
     cmd = [
-        "python", str(ROOT / "tools" / "build_book.py"), "--cache", "--book", str(book),
+        sys.executable, str(ROOT / "tools" / "build_book.py"), "--cache", "--book", str(book),
         "--config", str(config), "--out", str(tmp_path / f"out-{only or 'full'}"), "--jobs", "1",
     ]  # fmt: skip
     if only:
