@@ -848,7 +848,7 @@ _PREAMBLE = r"""\documentclass[10pt]{article}
 \setsansfont{FreeSans}
 \setmonofont{FreeMono}
 \usepackage{amsmath,amssymb}
-\usepackage{array,longtable}
+\usepackage{array,longtable,graphicx}
 \usepackage[hidelinks]{hyperref}
 \usepackage{enumitem}
 \setlist{itemsep=1pt,topsep=2pt,parsep=0pt}
@@ -875,7 +875,7 @@ def to_latex(report: Report) -> str:
     >>> r"50 \% of $K_1$." in tex, tex.rstrip().endswith(r"\end{document}")
     (True, True)
     """
-    from navcore.ledger.render import ErrataList, _tex_breakable, _tex_escape, tex_text
+    from navcore.ledger.render import FIT_MATH_PREAMBLE, ErrataList, _tex_breakable, _tex_escape, tex_text
 
     p = report.provenance
     date = p.date if p.date != "unknown" else "commit date unknown"
@@ -884,7 +884,7 @@ def to_latex(report: Report) -> str:
         for w, v in p.rows()
     )
     out = [
-        _PREAMBLE,
+        _PREAMBLE + FIT_MATH_PREAMBLE,  # the tables' long formulas (fit_math)
         rf"\hypersetup{{pdftitle={{{_tex_escape(report.title)}}},pdfauthor={{navcore}}}}",
         r"\begin{document}",
         r"\begin{titlepage}\raggedright",
