@@ -299,7 +299,17 @@ def unresolved_frame(evals: Sequence[Evaluation]) -> Any:
     """
     import pandas as pd
 
-    from navcore.ledger.render import _agreeing_reading_text, _band_text, _printed_text, _reproduced_text
+    from navcore.ledger.render import (
+        _DISPLAY,
+        _EQ_NUMBER,
+        _agreeing_reading_text,
+        _band_text,
+        _printed_text,
+        _reproduced_text,
+    )
+
+    def inline(text: str) -> str:  # a display formula in a table cell: inline, unnumbered
+        return _DISPLAY.sub(lambda m: "$" + _EQ_NUMBER.sub("", m.group(1)).strip() + "$", text)
 
     rows = []
     for e in evals:
@@ -318,7 +328,7 @@ def unresolved_frame(evals: Sequence[Evaluation]) -> Any:
                 "Claim": e.claim.id,
                 "Verdict": e.status,
                 "Where": e.claim.locator,
-                "Printed": _printed_text(e),
+                "Printed": inline(_printed_text(e)),
                 "Computed": computed,
                 "Why": why,
             }
@@ -848,7 +858,7 @@ _PREAMBLE = r"""\documentclass[10pt]{article}
 \setsansfont{FreeSans}
 \setmonofont{FreeMono}
 \usepackage{amsmath,amssymb}
-\usepackage{array,longtable}
+\usepackage{array,longtable,graphicx}
 \usepackage[hidelinks]{hyperref}
 \usepackage{enumitem}
 \setlist{itemsep=1pt,topsep=2pt,parsep=0pt}
@@ -875,7 +885,7 @@ def to_latex(report: Report) -> str:
     >>> r"50 \% of $K_1$." in tex, tex.rstrip().endswith(r"\end{document}")
     (True, True)
     """
-    from navcore.ledger.render import ErrataList, _tex_breakable, _tex_escape, tex_text
+    from navcore.ledger.render import FIT_MATH_PREAMBLE, ErrataList, _tex_breakable, _tex_escape, tex_text
 
     p = report.provenance
     date = p.date if p.date != "unknown" else "commit date unknown"
@@ -884,7 +894,7 @@ def to_latex(report: Report) -> str:
         for w, v in p.rows()
     )
     out = [
-        _PREAMBLE,
+        _PREAMBLE + FIT_MATH_PREAMBLE,  # the tables' long formulas (fit_math)
         rf"\hypersetup{{pdftitle={{{_tex_escape(report.title)}}},pdfauthor={{navcore}}}}",
         r"\begin{document}",
         r"\begin{titlepage}\raggedright",

@@ -111,6 +111,30 @@ def test_layout_gate_measures_each_page_once_in_several_tabs_and_reports_in_page
         assert [name for name, _ in found[width]["math"]] == [f"{p}.html#eq-{width}" for p in "abcde"]
 
 
+@pytest.mark.skipif(
+    not any(__import__("shutil").which(b) for b in ("chromium", "chromium-browser", "google-chrome")),
+    reason="no Chromium",
+)
+def test_layout_gate_finds_a_word_broken_in_a_text_tables_first_column(layout, tmp_path):
+    """Oracle: Chromium laying out two tiny pages, one whose first column is narrower than
+    "Appendix" and breaks anywhere, one whose first column keeps its words; a claim id broken
+    after a hyphen is not a broken word."""
+    module, _ = layout
+
+    def page(name: str, style: str) -> None:
+        (tmp_path / name).write_text(
+            '<article class="bd-article"><div class="cell_output"><table class="navcore-text-table">'
+            f'<tbody><tr><td style="{style}">Appendix D</td><td>text</td></tr>'
+            '<tr><td style="width:4em">WF-eq3-normal</td><td>x</td></tr></tbody></table></div></article>'
+        )
+
+    page("broken.html", "overflow-wrap:anywhere; width:30px")
+    page("whole.html", "overflow-wrap:normal")
+    found = module.measure(tmp_path, (1400,), tabs=1)[1400]["word"]
+    assert [name for name, _ in found] == ["broken.html#text-table-1"]
+    assert 'inside "Appendix"' in found[0][1]["text"]
+
+
 def test_the_committed_allowlist_gives_a_reason_for_every_entry():
     allow = json.loads((ROOT / "tools" / "layout_allowlist.json").read_text(encoding="utf-8"))
     for width, kinds in allow.items():

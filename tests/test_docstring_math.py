@@ -294,3 +294,51 @@ def test_api_docstrings_set_every_formula_as_math():
         "\t".join(h) for h in new
     )
     assert not done, f"fixed now, remove from {TODO.name}:\n" + "\n".join("\t".join(h) for h in done)
+
+
+_CITATION = re.compile(r"^\.\. \[[^\]]+\][ \t]+\S.*(?:\n(?:[ \t]+\S.*|[ \t]*)$)*", re.M)
+
+
+def test_api_references_are_not_read_as_lists():
+    """A reference whose text begins with an initial ("P. S. Maybeck, ...") on one line is read
+    by docutils as a list enumerated "P.", "S." (issue 32, item 4: "P.   S. Maybeck" in the
+    PDF's API reference). The book's API-reference extension escapes that initial: every
+    citation of every API docstring, so escaped, parses without a list.
+
+    Oracle: docutils itself, which parses each citation as Sphinx does; it reads the
+    hand-written first case, unescaped, as a list."""
+    import importlib.util
+
+    from docutils.core import publish_doctree
+
+    spec = importlib.util.spec_from_file_location(
+        "api_reference", ROOT / "book" / "_ext" / "api_reference.py"
+    )
+    assert spec is not None and spec.loader is not None
+    ext = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(ext)
+
+    def is_list(citation: str, escape: bool = True) -> bool:
+        lines = citation.splitlines()
+        if escape:
+            ext.escape_citation_initials(lines)
+        tree = publish_doctree(
+            "\n".join(lines) + "\n", settings_overrides={"report_level": 5, "halt_level": 5}
+        )
+        return "<enumerated_list" in tree.pformat()
+
+    maybeck = ".. [2] P. S. Maybeck, Stochastic Models, Vol. 1 (1979), Ch. 6."
+    assert is_list(maybeck, escape=False) and not is_list(maybeck)
+    assert "P. S. Maybeck" in publish_doctree("\n".join(_escaped([maybeck], ext))).astext()
+    citations = [
+        (who, m.group(0)) for who, doc in api_docstrings() for m in _CITATION.finditer(inspect.cleandoc(doc))
+    ]
+    assert any(is_list(c, escape=False) for _, c in citations)  # the API has such references
+    bad = [f"{who}: {c.splitlines()[0]}" for who, c in citations if is_list(c)]
+    assert not bad, "references read as enumerated lists:\n" + "\n".join(bad)
+
+
+def _escaped(lines: list[str], ext) -> list[str]:
+    lines = list(lines)
+    ext.escape_citation_initials(lines)
+    return lines

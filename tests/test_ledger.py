@@ -247,6 +247,46 @@ def test_latex_escaping_of_ledger_text():
     )
 
 
+def test_long_printed_formula_is_math_scaled_to_its_column(tmp_path):
+    """A long formula in a printed claim-table cell is set as math, in a box that is scaled
+    down to the column only when wider than it; both preambles define the macro.
+
+    Oracle: XeLaTeX itself, which reports an overfull box in a 3 cm column when the formula is
+    set unscaled, and none when set by the macro (nor for a short formula in it)."""
+    import shutil
+    from pathlib import Path
+
+    from navcore.ledger.render import FIT_MATH_PREAMBLE, _printed_tex, latex_table
+    from navcore.report import Report, build_provenance, to_latex
+
+    formula = r"\hat{\tau}_1 = \gamma_1^{-1} (I - F_1 (F_1' F_1)^{-1} F_1') [\hat{T}_1 - k_1]"
+    cell = _printed_tex(f"$${formula} \\quad (4.5.10)$$")
+    assert cell == r"\navcorefitmath{" + formula + "}" and "ttfamily" not in cell
+    assert r"\navcorefitmath{" + formula + "}" in latex_table(["Printed"], [[f"${formula}$"]])
+    config = (Path(__file__).resolve().parents[1] / "_config.yml").read_text(encoding="utf-8")
+    assert FIT_MATH_PREAMBLE in config
+    assert FIT_MATH_PREAMBLE in to_latex(Report("WF", "t", "r", build_provenance(), ()))
+    if shutil.which("xelatex") is None:
+        pytest.skip("xelatex is not installed")
+
+    def overfull(body: str) -> bool:
+        doc = (
+            "\\documentclass{article}\\usepackage{amsmath,graphicx,array}\n" + FIT_MATH_PREAMBLE + "\n"
+            "\\begin{document}\\begin{tabular}{|p{3cm}|}" + body + "\\end{tabular}\\end{document}\n"
+        )
+        (tmp_path / "t.tex").write_text(doc, encoding="utf-8")
+        run = subprocess.run(
+            ["xelatex", "-interaction=nonstopmode", "-halt-on-error", "t.tex"],
+            cwd=tmp_path, capture_output=True, text=True, timeout=120,
+        )  # fmt: skip
+        assert run.returncode == 0, run.stdout[-2000:]
+        return "Overfull \\hbox" in (tmp_path / "t.log").read_text(encoding="utf-8", errors="replace")
+
+    assert overfull(f"${formula}$")  # the formula unscaled runs over the column
+    assert not overfull(cell)  # scaled to it, it does not
+    assert not overfull(r"\navcorefitmath{x_1}")
+
+
 def test_cli_ledger_json_and_exit_status(monkeypatch, capsys):
     """The command line prints valid JSON with the documented fields and exits 0 when all pass.
 

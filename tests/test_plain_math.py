@@ -36,6 +36,7 @@ PATTERNS = {
     "cross-product bracket": re.compile(r"\[\s*\w+\s+x\s*\]"),
     "(x) product": re.compile(r"\(x\)"),
     "symbol with a flat 0": re.compile(r"\b[A-Za-z]0\b"),
+    "derivative quotient": re.compile(r"\bd[A-Za-z]/d[A-Za-z]\b"),
 }
 
 #: (who, text found) pairs that are legitimately plain, each with its reason. Keep it short.
@@ -58,6 +59,8 @@ def plain_math(text: str) -> list[tuple[str, str]]:
         ("agrees to $10^{-6}$ relative", []),
         ("the design P_DL of Table 2.1", ["flat subscript"]),
         ("the design $P_{DL}$ of Table 2.1", []),
+        ("H = df/dp at the estimate", ["derivative quotient"]),
+        ("$\\mathbf{H} = \\partial \\mathbf{f}/\\partial \\mathbf{p}$ at the estimate", []),
         ("clock parameter sigma0 = 50 ns", ["Greek name"]),
         ("at rho = 0.25", ["Greek name"]),
         ("at $\\rho = 0.25$, with a price of 50 $ more", []),

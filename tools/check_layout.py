@@ -9,7 +9,7 @@ Usage::
 Every page of the book (not the API reference's highlighted sources, the search page or the
 indexes) is loaded once, at the first width; once MathJax has typeset it, it is measured, the
 viewport is resized to the next width (``Emulation.setDeviceMetricsOverride``: the
-stylesheet's media queries follow it) and it is measured again. Three things are measured:
+stylesheet's media queries follow it) and it is measured again. Four things are measured:
 
 ``math``
     a display equation whose rendered width exceeds its box (``scrollWidth > clientWidth``
@@ -22,7 +22,11 @@ stylesheet's media queries follow it) and it is measured again. Three things are
     keeps its width whatever its cells hold, with a cell whose content runs past the cell:
     a verdict, a heading or the part of a claim id between two hyphens wider than its
     column. Its column widths must also add up to at most the text column (a test reads
-    the stylesheet's shares).
+    the stylesheet's shares);
+``word``
+    a table of text (``navcore-text-table``: reasons, sections, readings) whose first
+    column, which names the rows, breaks a word across lines ("Appendi" / "x D") rather
+    than only after a hyphen, dot, slash or underscore.
 
 Several pages are measured at once (``--tabs``, default 4), each in its own tab over the one
 DevTools connection; nothing waits a fixed time: each measurement waits for the page's load
@@ -72,7 +76,7 @@ WIDTHS = (1400, 420)
 SKIP = re.compile(r"^(?:_modules/|_sources/|_static/|_images/|genindex|py-modindex|search\.html)")
 BROWSERS = ("chromium", "chromium-browser", "google-chrome")
 # what MEASURE reports; "smaller" is not a problem, only counted
-KINDS = ("math", "table", "cell", "smaller")
+KINDS = ("math", "table", "cell", "word", "smaller")
 # pages measured at once, each in its own tab
 TABS = 4
 # a page not loaded and measured within this many seconds fails the gate (it never hangs)
@@ -91,7 +95,7 @@ MEASURE = r"""
   await new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)));
   const root = document.querySelector('article.bd-article') || document.body;
   const over = el => el.scrollWidth > el.clientWidth + 1;
-  const out = {math: [], table: [], cell: [], smaller: []};
+  const out = {math: [], table: [], cell: [], word: [], smaller: []};
   let i = 0;
   for (const block of root.querySelectorAll('div.math')) {
     i += 1;
@@ -143,6 +147,35 @@ MEASURE = r"""
                      client: worst.clientWidth,
                      text: n + ' cell(s) wider than their column, e.g. column ' + col + ': ' +
                            (worst.textContent || '').trim().slice(0, 40)});
+    }
+  }
+  // a table of text names its rows in its first column ("Appendix D", "Sec. 2.5"): a word
+  // there broken across lines ("Appendi/x") is measured as a piece of it, between two
+  // hyphens, dots, slashes or underscores, whose text spans more than one line box
+  let m = 0;
+  for (const table of root.querySelectorAll('table.navcore-text-table')) {
+    m += 1;
+    for (const cell of table.querySelectorAll('tbody td:first-child')) {
+      if (cell.offsetParent === null) continue;
+      const walker = document.createTreeWalker(cell, NodeFilter.SHOW_TEXT);
+      let broken = null;
+      for (let node = walker.nextNode(); node && !broken; node = walker.nextNode()) {
+        const re = /[^\s\-./_\u200b]+/g;
+        let w;
+        while ((w = re.exec(node.data)) !== null) {
+          const range = document.createRange();
+          range.setStart(node, w.index);
+          range.setEnd(node, w.index + w[0].length);
+          const rects = Array.from(range.getClientRects()).filter(r => r.width > 0);
+          const tops = new Set(rects.map(r => Math.round(r.top)));
+          if (tops.size > 1) { broken = w[0]; break; }
+        }
+      }
+      if (broken) {
+        out.word.push({name: 'text-table-' + m, scroll: cell.scrollWidth, client: cell.clientWidth,
+                       text: 'first column breaks inside "' + broken + '"'});
+        break;
+      }
     }
   }
   return JSON.stringify(out);
@@ -292,12 +325,18 @@ class Browser:
         return out
 
     def close(self) -> None:
+        if hasattr(self, "ws"):  # the connection and its reader first, then Chromium
+            self.ws.close()
+            self.reader.cancel()
         self.proc.terminate()
         try:
             self.proc.wait(timeout=10)
         except subprocess.TimeoutExpired:
             self.proc.kill()
             self.proc.wait()
+        self._drain.join(timeout=10)
+        if self.proc.stderr is not None:
+            self.proc.stderr.close()
         shutil.rmtree(self.profile, ignore_errors=True)
 
 
@@ -373,7 +412,7 @@ def check(
             if list_all:
                 for name, item in smaller:
                     print(f"{width} px: smaller {name} at {100 * item['scale']:.0f} %")
-        for kind in ("math", "table", "cell"):
+        for kind in ("math", "table", "cell", "word"):
             allowed = allow.get(str(width), {}).get(kind, {})
             names = set()
             for name, item in found[width].get(kind, []):

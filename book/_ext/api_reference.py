@@ -9,6 +9,11 @@ is a data attribute, and its documentation is the class docstring's *Attributes*
 
 A docstring that refers to such a field (``:attr:`readings``` inside a method of the class, or
 ``:attr:`Evaluation.readings```) then links to the class, where the field is described.
+
+A reference of a *References* section whose text begins with an author's initial and fits on
+one line (``.. [2] P. S. Maybeck, Stochastic Models ...``) would be read by docutils as a list
+enumerated "P.", "S." (the PDF printed "P.   S. Maybeck"): the initial's dot is escaped
+(:func:`escape_citation_initials`), so that the reference reads as written.
 """
 
 from __future__ import annotations
@@ -16,6 +21,7 @@ from __future__ import annotations
 import enum
 import importlib
 import inspect
+import re
 from typing import Any
 
 from docutils import nodes
@@ -74,7 +80,31 @@ def _field_reference(app: Sphinx, env: Any, node: Any, contnode: nodes.Element) 
     return None
 
 
+_CITATION_INITIAL = re.compile(r"^(\s*\.\. \[[^\]]+\][ \t]+)([A-Z][a-z]?)\.(?=\s)")
+
+
+def escape_citation_initials(lines: list[str]) -> None:
+    r"""Escape the dot of an initial that begins a reference, in place: ``.. [2] P. S. Maybeck``
+    becomes ``.. [2] P\. S. Maybeck``, which docutils reads as text, not as a list item "P.".
+
+    Examples
+    --------
+    >>> lines = [".. [2] P. S. Maybeck, Stochastic Models (1979).", "   P. S. Maybeck"]
+    >>> escape_citation_initials(lines)
+    >>> lines
+    ['.. [2] P\\. S. Maybeck, Stochastic Models (1979).', '   P. S. Maybeck']
+    """
+    for i, line in enumerate(lines):
+        lines[i] = _CITATION_INITIAL.sub(r"\1\2\\.", line)
+
+
+def _process_docstring(app: Sphinx, what: str, name: str, obj: Any, options: Any, lines: list[str]) -> None:
+    escape_citation_initials(lines)
+
+
 def setup(app: Sphinx) -> dict[str, Any]:
+    # after numpydoc (priority 500), which writes the References section as citations
+    app.connect("autodoc-process-docstring", _process_docstring, priority=600)
     app.connect("autodoc-skip-member", _skip_class_data)
     app.connect("missing-reference", _field_reference)
     return {"parallel_read_safe": True, "parallel_write_safe": True}

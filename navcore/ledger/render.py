@@ -425,7 +425,9 @@ def _min_pt(text: str, numeric: bool, bold: bool = False) -> float:
     widest = 0.0
     for is_math, piece in _text_pieces(text):
         if is_math:
-            widest = max(widest, 0.8 * _word_pt(re.sub(r"\\[a-zA-Z]+|[{}_^]", "x", piece)))
+            # a long formula is scaled down to its column (fit_math): it counts as a short one
+            shown = re.sub(r"\\[a-zA-Z]+|[{}_^]", "x", piece)[:_FIT_MATH_CHARS]
+            widest = max(widest, 0.8 * _word_pt(shown))
         else:
             widest = max([widest] + [_word_pt(w, bold) for w in re.split(r"\s+|\u200b", piece)])
     return widest
@@ -510,7 +512,7 @@ def latex_table(head: Sequence[str], body: Sequence[Sequence[str]]) -> str:
 
     def text_cell(text: str) -> str:  # words escaped, $...$ set as math
         return "".join(
-            f"${piece}$" if is_math else _tex_escape(piece).replace("\u200b", r"\allowbreak{}")
+            fit_math(piece) if is_math else _tex_escape(piece).replace("\u200b", r"\allowbreak{}")
             for is_math, piece in _text_pieces(text)
         )
 
@@ -721,21 +723,65 @@ def _printed_text(e: Evaluation) -> str:
     return _plain_with_unit(rel + format_value(c.published), c.unit)
 
 
+#: A formula longer than this many characters is set in a box scaled to its table column
+#: when wider than it (:func:`fit_math`); a shorter one as inline math.
+_FIT_MATH_CHARS = 24
+
+#: The LaTeX macro :func:`fit_math` calls, defined in the book's preamble (``_config.yml``) and
+#: in the verification reports' (:mod:`navcore.report`); it needs graphicx. The formula is set
+#: as inline math in a box, scaled down to the line width (a table cell's column) only when
+#: wider than it, so that a narrow column holds a long formula without an overfull box.
+FIT_MATH_PREAMBLE = (
+    r"\newsavebox{\navcorefitbox}"
+    r"\newcommand{\navcorefitmath}[1]{\sbox{\navcorefitbox}{$#1$}"
+    r"\ifdim\wd\navcorefitbox>\linewidth\resizebox{\linewidth}{!}{\usebox{\navcorefitbox}}"
+    r"\else\usebox{\navcorefitbox}\fi}"
+)
+
+
+def fit_math(piece: str) -> str:
+    r"""A formula of a printed table cell as LaTeX math: inline if short, else in a box scaled
+    down to its column only when wider than it (:data:`FIT_MATH_PREAMBLE`).
+
+    Parameters
+    ----------
+    piece : str
+        The formula, without its dollar signs.
+
+    Returns
+    -------
+    str
+        ``$piece$``, or ``\navcorefitmath{piece}`` for a formula longer than 24 characters.
+
+    Examples
+    --------
+    >>> print(fit_math("K_1"))
+    $K_1$
+    >>> print(fit_math("\\sigma_{\\xi\\tau_0}^2 = \\sigma^2 \\gamma_0 + \\sigma^2 \\gamma_1"))
+    \navcorefitmath{\sigma_{\xi\tau_0}^2 = \sigma^2 \gamma_0 + \sigma^2 \gamma_1}
+    """
+    return f"${piece}$" if len(piece) <= _FIT_MATH_CHARS else r"\navcorefitmath{" + piece + "}"
+
+
 _DISPLAY = re.compile(r"\$\$(.*?)\$\$", re.S)
 _EQ_NUMBER = re.compile(r"\\(?:quad|qquad)\s*\(?[\w.]+\)?\s*$|\\tag\{[^}]*\}")
 
 
 def _printed_tex(text: str) -> str:
-    r"""The Printed cell of a PDF claim table: the paper's words as text, short formulas as
-    math, and a long formula (or LaTeX transcribed without math delimiters) as small source
-    text that may break anywhere, so that a narrow column never runs over.
+    r"""The Printed cell of a PDF claim table: the paper's words as text, its formulas as math
+    (a long one scaled down to the column when wider than it, :func:`fit_math`; a display
+    formula inline, without its equation number), and LaTeX transcribed without math
+    delimiters as small source text that may break anywhere, so that a narrow column never
+    runs over.
 
     Examples
     --------
     >>> print(_printed_tex("about $10^{-6}$ of it"))
     about $10^{-6}$ of it
     >>> long = "$$\\frac{2\\pi}{\\lambda}\\left(l_{t}^{(m),n} - l_{t}^{(n),n}\\right)^T x \\quad (17)$$"
-    >>> "\\ttfamily" in _printed_tex(long)
+    >>> print(_printed_tex(long))
+    \navcorefitmath{\frac{2\pi}{\lambda}\left(l_{t}^{(m),n} - l_{t}^{(n),n}\right)^T x}
+    >>> "\\ttfamily" in _printed_tex("\\mathbf{P}_N \\mathbf{P}_N^T = \\sigma_N^2 \\mathbf{I}")
     True
     """
     text = _DISPLAY.sub(lambda m: "$" + _EQ_NUMBER.sub("", m.group(1)).strip() + "$", text)
@@ -744,12 +790,7 @@ def _printed_tex(text: str) -> str:
         return r"{\scriptsize\ttfamily " + _tex_breakable(text) + "}"
     out = []
     for is_math, piece in pieces:
-        if not is_math:
-            out.append(_tex_breakable(piece))
-        elif len(piece) <= 24:
-            out.append(f"${piece}$")
-        else:
-            out.append(r"{\scriptsize\ttfamily " + _tex_breakable(piece) + "}")
+        out.append(fit_math(piece) if is_math else _tex_breakable(piece))
     return "".join(out)
 
 

@@ -105,7 +105,7 @@ IN.published(
 IN.convention(
     "fl_fraction_of_level",
     0.99,
-    alternative=0.999,
+    readings={"99 % of the printed level": 0.99, "99.9 % of it": 0.999},
     reason="$0.9 N_T$ is the supremum $1 - N/N_T$ of $N_{FL}$, approached as J grows but never reached "
     "(the gap "
     "is below $10^{-10^{5}}$ at any J the figures show); the book takes the level as 99 % of it",

@@ -228,7 +228,10 @@ for (_ex, _s0), _row in TABLE_4_3.items():
 IN.convention(
     "c_ft_per_ns",
     1.0,
-    alternative=0.299792458 / 0.3048,
+    readings={
+        "1 ft per ns, as Table 4.3's units imply": 1.0,
+        "the physical speed of light, 0.98357 ft/ns": 0.299792458 / 0.3048,
+    },
     unit="ft/ns",
     quantity="speed of light used to turn ns into ft",
     reason="Table 4.3 prints $\\sigma\\,[\\mathrm{ns}] \\cdot \\sqrt{\\dots}$ as ft, i.e. c = 1 ft/ns; the "
@@ -237,7 +240,7 @@ IN.convention(
 IN.convention(
     "longitude_sign",
     1.0,
-    alternative=-1.0,
+    readings={"east-positive": 1.0, "west-positive, which puts the aircraft in North America": -1.0},
     quantity="sign of the printed longitudes (+1 east-positive)",
     reason="Table 4.1 prints longitudes without E/W; the aircraft at 120 deg is in North America "
     "(west), but the printed three-satellite term 5.76/14.3 is reproduced in east-positive ECEF "

@@ -56,7 +56,10 @@ IN.published(
 IN.convention(
     "search_dimensions",
     1,
-    alternative=2,
+    readings={
+        "in code phase only, over the one Doppler cell of Sec. 2.6.2": 1,
+        "a box in code phase and Doppler": 2,
+    },
     reason="Sec. 2.6.2 searches one Doppler cell, so the bounds are in code phase only; the other reading "
     "is a 1-$\\sigma$ box in code phase and Doppler",
     quantity="dimensions of the 1-$\\sigma$ search bounds",

@@ -174,7 +174,10 @@ IN.published(
 IN.convention(
     "chip_rate_hz",
     GPS_P_CHIP_RATE_HZ,
-    alternative=GPS_CA_CHIP_RATE_HZ,
+    readings={
+        "the P(Y) code, 10.23 Mchip/s, whose half chip is the 50 ns of Sec. 2.5": GPS_P_CHIP_RATE_HZ,
+        "the C/A code, 1.023 Mchip/s": GPS_CA_CHIP_RATE_HZ,
+    },
     unit="Hz",
     quantity="chip rate of the tracked code",
     reason="Sec. 3 names no code; Sec. 2.5's half chip of '50 ns' is a P(Y) chip (10.23 Mchip/s); the other "

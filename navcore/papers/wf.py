@@ -1404,7 +1404,8 @@ CLAIMS = [
         paper="WF",
         locator="Sec. III, after Eq. (9)",
         quantity="a 1 m/s velocity error changes the modelled frequency at least 100 times as much as a "
-        "1 m position error (smallest ||df/dv|| / ||df/dp|| over the track)",
+        "1 m position error (smallest "
+        "$\\|\\partial f/\\partial \\mathbf{v}\\| / \\|\\partial f/\\partial \\mathbf{p}\\|$ over the track)",
         published=_c8,
         unit="s",
         compute=lambda: float(np.min(sensitivity_ratios())),
