@@ -98,6 +98,24 @@ def test_the_reading_used_agrees_reproduced_and_the_others_are_shown():
     assert "With the range per cycle read as the 300 m code (300): 3000 m." in note
 
 
+def test_a_reading_that_sets_several_numbers_lists_them_once_as_numbers():
+    """A convention whose readings are tuples (a schedule, a pair of values) is named in a note
+    with its numbers as a reader writes them: one pair of parentheses, no Python float zeros.
+    Oracle: the note text written out by hand."""
+    S = InputSet("KZL", "synthetic_tuple_readings")
+    S.convention(
+        "pair",
+        (1.0, 2.0),
+        quantity="pair of gains",
+        readings={"the printed pair": (1.0, 2.0), "the swapped pair": (2.0, 1.0)},
+        reason="the table's columns are not labelled",
+    )
+    ev = evaluate(make(id="KZL-test-tuple", compute=lambda: 10.0 * S.pair[0]))
+    note = ev.note()
+    assert "With the pair of gains read as the swapped pair (2, 1): 20 m." in note
+    assert "((" not in note and "2.0" not in note
+
+
 def test_only_another_reading_agrees_consistent_and_named():
     ev = evaluate(make(compute=lambda: 16.13 * IN.per_cycle, expected_status="consistent"))
     # 16.13 under the reading used, 10.0006 under the L1 wavelength, 4839 under the code

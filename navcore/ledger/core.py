@@ -1337,7 +1337,10 @@ class Evaluation:
                 inp = None
             if inp is not None and label == inp.nominal_label:
                 continue
-            shown = next((_plain(v) for lab, v in (inp.readings if inp else ()) if lab == label), "")
+            value = next((v for lab, v in (inp.readings if inp else ()) if lab == label), None)
+            # a tuple's items go inside the one pair of parentheses below
+            items = value if isinstance(value, tuple | list) else () if value is None else (value,)
+            shown = ", ".join(_plain(v) for v in items)
             shown = f" ({shown}{' ' + in_unit if in_unit and shown else ''})" if shown else ""
             changed.append(f"the {quantity} read as {label}{shown}")
         return changed
@@ -1485,7 +1488,14 @@ def _plain(value: Any) -> str:
     ('$1.023 \\times 10^{6}$', '$9.4007 \\times 10^{-4}$', '0.0226556', '2.5', 'true')
     >>> _plain(0.00353918)
     '$3.53918 \\times 10^{-3}$'
+
+    A tuple (a reading that sets several numbers) lists its items, each written the same way:
+
+    >>> _plain((6, 4, 55.0, 0.0))
+    '(6, 4, 55, 0)'
     """
+    if isinstance(value, tuple | list):
+        return "(" + ", ".join(_plain(v) for v in value) + ")"
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, float):
