@@ -364,13 +364,22 @@ def _tex_escape(text: str) -> str:
 
 
 def _tex_breakable(text: str) -> str:
-    """Escaped text that may break after ``-``, ``.``, ``_`` and ``/``, and inside words longer
-    than ten letters (claim and erratum ids, locators with formulas): a narrow table column
-    never runs over."""
+    """Escaped text that may break after ``-``, ``.``, ``_`` and ``/``, inside a run of more than
+    ten characters that is not a plain word (claim and erratum ids, locators with formulas), and
+    inside a plain word only when it is longer than ``_LONG_WORD`` letters: a narrow table column
+    never runs over, and the paper's words ("interpreted") stay whole.
+
+    Examples
+    --------
+    >>> "allowbreak" in _tex_breakable("interpreted")
+    False
+    >>> _tex_breakable("KZLsec36headingX").count("allowbreak")
+    2
+    """
     pieces = re.split(r"([-./_ ])", text)
     out = []
     for piece in pieces:
-        if len(piece) > 10:
+        if len(piece) > (_LONG_WORD if piece.isalpha() else 10):
             piece = "\x00".join(piece[i : i + 7] for i in range(0, len(piece), 7))
         out.append(piece)
     escaped = _tex_escape("".join(out)).replace("\x00", r"\allowbreak{}")
