@@ -4067,3 +4067,30 @@ def sp22_range_km(when: str) -> float:
 
     t = fb._blackout_s(sc.SYSTEMS[0])[{"loss": 0, "back": 1}[when]]
     return float(fb.jammer_range_m()[int(t)] / 1e3)
+
+
+# --- ATC-10 Sec. 3.8: the actual ROC against ROC_g ----------------------------------------------
+
+
+def _atc10_22_best_ratios_8() -> list[float]:
+    """Best actual p_f over the four densities divided by the ROC_g p_f, at the highest contour
+    1/sqrt(3b) = 8, for p_d >= 0.9 and p_d >= 0.99 (the page's comparison table)."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    tab = pm.gaussian_comparison_table()
+    return [
+        min(tab[(n, 8.0, pd_min)][0] for n in pm.DENSITY_NAMES) / tab[(pm.DENSITY_NAMES[0], 8.0, pd_min)][1]
+        for pd_min in (0.9, 0.99)
+    ]
+
+
+@register(
+    "atc10-22-ratio-8-{end}",
+    "atc10/22-gaussian-comparison",
+    "smaller or larger, over p_d >= 0.9 and 0.99, of the best actual over the ROC_g p_f at 1/sqrt(3b) = 8",
+)
+def atc10_22_ratio_8(end: str) -> float:
+    """How many times the ROC_g false-alarm rate the best of the four densities' exact actual
+    ROCs reaches at 1/sqrt(3b) = 8 (ATC-10 Sec. 3.8), the smaller (``end="lo"``) or larger
+    (``"hi"``) of the p_d >= 0.9 and p_d >= 0.99 cases."""
+    return float({"lo": min, "hi": max}[end](_atc10_22_best_ratios_8()))

@@ -3551,6 +3551,102 @@ ORACLES += [
 ]
 
 
+# --- ATC-10 Sec. 3.8: the exact actual ROCs against ROC_g at the highest contour ---------------
+@functools.cache
+def _atc10_22_exact_ratio_8(pd_min: float) -> float:
+    """mpmath oracle (80 digits) of the best actual p_f over ROC_g at 1/sqrt(3b) = 8 and p_d >= pd_min.
+
+    Each density's exact tail written out from the model's definition: given K ~ Bin(N - 1, q)
+    overlaps (all K up to a binomial weight of 1e-45), the noise is a(2J - K), J ~ Bin(K, 1/2), for
+    the two-point density (+-a, a = sqrt(b)); Gaussian of variance K b; h(2V - m) with V
+    Irwin-Hall of m = K uniforms on [-h, h], h = sqrt(3b), for the uniform density and of
+    m = 2K uniforms, h = sqrt(3b/2), for the triangular one, the Irwin-Hall CDF by its alternating
+    sum (exact in 80 digits; the cancellation here is below 40). On the page's threshold grid,
+    p_miss rises and p_f falls with theta, so the best p_f at p_d >= pd_min is p_f at the largest
+    threshold whose p_miss = P(n > 1 - theta) is at most 1 - pd_min (found by bisection). ROC_g:
+    Gaussian noise of the Theorem 3.1 power N q b (scipy's normal)."""
+    import mpmath
+
+    from navcore.papers import atc10_multiple_access as pm
+
+    with mpmath.workdps(80):
+        n_int, q = pm.IN.n_sec36 - 1, mpmath.mpf(2 * pm.IN.tau_over_alpha_sec36)
+        b = 1 / (3 * mpmath.mpf(8) ** 2)
+        weights = []
+        for k in range(n_int + 1):
+            w = mpmath.binomial(n_int, k) * q**k * (1 - q) ** (n_int - k)
+            if k > 4 and w < mpmath.mpf("1e-45"):
+                break
+            weights.append(w)
+
+        def ih_cdf(m: int, x):
+            if x <= 0:
+                return mpmath.mpf(0)
+            if x >= m:
+                return mpmath.mpf(1)
+            s = mpmath.fsum(
+                (-1) ** j * mpmath.binomial(m, j) * (x - j) ** m for j in range(int(mpmath.floor(x)) + 1)
+            )
+            return s / mpmath.factorial(m)
+
+        def tail(name: str, t, strict: bool):
+            """P(n > t) (strict) or P(n >= t), t > 0."""
+            out = mpmath.mpf(0)
+            for k, w in enumerate(weights[1:], start=1):
+                if name == "C2 two-point":
+                    a = mpmath.sqrt(b)
+                    js = [
+                        j for j in range(k + 1) if (a * (2 * j - k) > t if strict else a * (2 * j - k) >= t)
+                    ]
+                    p = mpmath.fsum(mpmath.binomial(k, j) for j in js) / mpmath.mpf(2) ** k
+                elif name == "C4 Gaussian":
+                    p = mpmath.erfc(t / mpmath.sqrt(2 * k * b)) / 2
+                else:
+                    per, h = (1, mpmath.sqrt(3 * b)) if name == "C1 uniform" else (2, mpmath.sqrt(3 * b / 2))
+                    m = per * k
+                    p = ih_cdf(m, (m - t / h) / 2)
+                out += w * p
+            return out
+
+        grid = [mpmath.mpf(float(t)) for t in pm.THETA_GRID]
+        level = 1 - mpmath.mpf(pd_min)
+        best = []
+        for name in pm.DENSITY_NAMES:
+
+            def ok(i: int, name: str = name) -> bool:
+                return bool(tail(name, 1 - grid[i], True) <= level)
+
+            last = len(grid) - 1
+            if not ok(0):
+                continue
+            lo, hi = (last, last) if ok(last) else (0, last)  # ok(lo); not ok(hi) unless lo == hi
+            while hi - lo > 1:
+                mid = (lo + hi) // 2
+                lo, hi = (mid, hi) if ok(mid) else (lo, mid)
+            best.append(tail(name, grid[lo], False))
+        P = float(pm.IN.n_sec36 * 2 * pm.IN.tau_over_alpha_sec36 * b)
+        theta_g = 1 - math.sqrt(P) * stats.norm.ppf(pd_min)
+        return float(min(best)) / float(stats.norm.sf(theta_g / math.sqrt(P)))
+
+
+ORACLES += [
+    # both exact (the library's spline against the 80-digit alternating sums, the same grid): the
+    # library's relative round-off, a few hundred units (1e-9 allowed)
+    Oracle(
+        "atc10-22-ratio-8-lo",
+        lambda: min(_atc10_22_exact_ratio_8(0.9), _atc10_22_exact_ratio_8(0.99)),
+        rtol=1e-9,
+        why="mpmath binomial mixtures of the four densities' exact sums",
+    ),
+    Oracle(
+        "atc10-22-ratio-8-hi",
+        lambda: max(_atc10_22_exact_ratio_8(0.9), _atc10_22_exact_ratio_8(0.99)),
+        rtol=1e-9,
+        why="mpmath binomial mixtures of the four densities' exact sums",
+    ),
+]
+
+
 @pytest.mark.parametrize("oracle", ORACLES, ids=lambda o: o.name)
 def test_glued_value_against_its_oracle(oracle: Oracle):
     """The registered function's value against the oracle named in the case."""
