@@ -941,8 +941,8 @@ def irwin_hall_cdf(n: int, x: ArrayLike) -> FloatArray:
     are cumulative sums of positive numbers. De Boor's recursion (scipy's ``BSpline``) evaluates
     it by convex combinations of those non-negative coefficients, so the result has a relative
     error of a few units of round-off everywhere, the far tails included (checked against the
-    alternating sum in 80-digit arithmetic: below 1e-15 relative for n up to 60 and values down
-    to 1e-260). The textbook alternating sum
+    alternating sum in 80-digit arithmetic: below :math:`10^{-15}` relative for n up to 60 and
+    values down to :math:`10^{-260}`). The textbook alternating sum
     :math:`\sum_{j \le x} (-1)^j \binom{n}{j} (x - j)^n / n!` is not used: in double precision
     it cancels catastrophically near the middle of the law for large n.
 
@@ -1008,7 +1008,7 @@ def uniform_exact_tail(b: float, n_interferers: int, q: float, t: ArrayLike) -> 
     on :math:`[-\sqrt{3b}, \sqrt{3b}]` (an Irwin-Hall law, :func:`irwin_hall_cdf`).
 
     The binomial weights are those of :func:`gaussian_mixture_exact_tail` (overlap counts whose
-    probability is below 1e-16 are dropped); each conditional tail has a relative error of a
+    probability is below :math:`10^{-16}` are dropped); each conditional tail has a relative error of a
     few round-off units, so the result is exact to that truncation.
 
     Parameters
