@@ -377,7 +377,7 @@ def gaussian_smallest_pf_ratio() -> float:
 def gaussian_beaten_at_low_snr_oracle() -> bool:
     """Independent check: at x = 3 the exact Gaussian-C mixture beats ROC_g at p_d = 0.9.
 
-    A quadrature on a fine threshold grid of the exact mixture, not the Monte Carlo table.
+    The exact mixture on a fine threshold grid of its own (4001 points), not the comparison table's.
     """
     b = b_of_contour(3.0)
     th = np.linspace(0.0, 1.0, 4001)
@@ -828,8 +828,8 @@ ERRATA = [
         "argument '$\\mathrm{ROC}_g$ $p_f$ below the lower bound of the actual $p_f$' cannot be "
         "made with it.",
         evidence="Tilted-Chebyshev derivation; the printed version (sign of $\\phi_1$) lies above the "
-        "Chernoff upper bound; the corrected one lies below the exact compound-binomial and "
-        "stratified Monte Carlo tails at every tested point.",
+        "Chernoff upper bound; the corrected one lies below the exact tails (compound-binomial, "
+        "Irwin-Hall and Gaussian mixtures) at every tested point.",
         claims=(
             "ATC10-sec3.5-lower-bound-printed",
             "ATC10-sec3.8-gauss-always-optimistic",
