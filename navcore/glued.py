@@ -4067,3 +4067,108 @@ def sp22_range_km(when: str) -> float:
 
     t = fb._blackout_s(sc.SYSTEMS[0])[{"loss": 0, "back": 1}[when]]
     return float(fb.jammer_range_m()[int(t)] / 1e3)
+
+
+# --- ATC-10 Sec. 3.8: the actual ROC against ROC_g ----------------------------------------------
+
+
+def _atc10_22_best_ratios_8() -> list[float]:
+    """Best actual p_f over the four densities divided by the ROC_g p_f, at the highest contour
+    1/sqrt(3b) = 8, for p_d >= 0.9 and p_d >= 0.99 (the page's comparison table)."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    tab = pm.gaussian_comparison_table()
+    return [
+        min(tab[(n, 8.0, pd_min)][0] for n in pm.DENSITY_NAMES) / tab[(pm.DENSITY_NAMES[0], 8.0, pd_min)][1]
+        for pd_min in (0.9, 0.99)
+    ]
+
+
+@register(
+    "atc10-22-ratio-8-{end}",
+    "atc10/22-gaussian-comparison",
+    "smaller or larger, over p_d >= 0.9 and 0.99, of the best actual over the ROC_g p_f at 1/sqrt(3b) = 8",
+)
+def atc10_22_ratio_8(end: str) -> float:
+    """How many times the ROC_g false-alarm rate the best of the four densities' exact actual
+    ROCs reaches at 1/sqrt(3b) = 8 (ATC-10 Sec. 3.8), the smaller (``end="lo"``) or larger
+    (``"hi"``) of the p_d >= 0.9 and p_d >= 0.99 cases."""
+    return float({"lo": min, "hi": max}[end](_atc10_22_best_ratios_8()))
+
+
+# --- SP Sec. 2.6.2: the flyby's blackouts and their causes --------------------------------------
+
+
+@register(
+    "sp22-tc10-blackout-min",
+    "sp/22-jammer-flyby",
+    "GPS blackout of the tightly coupled 10 nmi/h system in the flyby model, search time included (min)",
+)
+def sp22_tc10_blackout_min() -> float:
+    """Blackout (min) of the tightly coupled 10 nmi/h system at the fitted jammer: from its code
+    loss to the first satellite back, that satellite's search time included (SP Sec. 2.6.2)."""
+    return _sp22_tc10_blackout_min()
+
+
+@register(
+    "sp22-grade-spread-s",
+    "sp/22-jammer-flyby",
+    "longest minus shortest tightly coupled blackout in the flyby model, search times included (s)",
+)
+def sp22_grade_spread_s() -> float:
+    """Spread (s) of the four tightly coupled systems' blackouts at the fitted jammer."""
+    from navcore.papers import sp_flyby as fb
+
+    return float(60 * fb.grade_spread_min())
+
+
+@register(
+    "sp22-bandwidth-s",
+    "sp/22-jammer-flyby",
+    "change of the TC 1 nmi/h lock-table blackout with Table 2.6's first-row unaided carrier loop (s)",
+)
+def sp22_bandwidth_s() -> float:
+    """How much (s) the tightly coupled 1 nmi/h lock-table blackout changes when its aided
+    carrier loop is replaced by the unaided 18 rad/s loop of Table 2.6's first row."""
+    from navcore.papers import sp_flyby as fb
+
+    return float(60 * fb.bandwidth_effect_min())
+
+
+def _sp22_part_min(part: str) -> float:
+    from navcore.papers import sp_flyby as fb
+
+    return float(fb.shortening_parts_min()[part])
+
+
+@register(
+    "sp22-resistance-s",
+    "sp/22-jammer-flyby",
+    "part of the blackout shortening due to the carrier loop (jamming resistance) (s)",
+)
+def sp22_resistance_s() -> float:
+    """Change (s) of the 0.2 nmi/h system's lock-table blackout when it tracks with the loosely
+    coupled receiver's carrier loop instead of its own."""
+    return 60 * _sp22_part_min("jamming resistance")
+
+
+@register(
+    "sp22-calibration-s",
+    "sp/22-jammer-flyby",
+    "part of the blackout shortening due to the range uncertainty searched at reacquisition (s)",
+)
+def sp22_calibration_s() -> float:
+    """Search time (s) the loosely coupled receiver's range uncertainty would add to the 0.2
+    nmi/h system's first satellite back, over the 0.2 nmi/h system's own."""
+    return 60 * _sp22_part_min("calibration")
+
+
+@register(
+    "sp22-architecture-min",
+    "sp/22-jammer-flyby",
+    "part of the blackout shortening due to the architecture (any code against four) (min)",
+)
+def sp22_architecture_min() -> float:
+    """The loosely coupled to 0.2 nmi/h blackout shortening (min) less its carrier-loop and
+    calibration parts."""
+    return _sp22_part_min("architecture")

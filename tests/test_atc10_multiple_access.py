@@ -55,7 +55,8 @@ def test_psk_bounds_bracket_exact_roc():
 
 
 def test_bounds_bracket_actual_roc_at_section_36_values():
-    """Oracle: exact sums (C2, C4) and stratified Monte Carlo (C1, C3) of the actual ROC."""
+    """Oracle: the exact actual ROC (binomial mixtures of two-point, Irwin-Hall and Gaussian sums);
+    the Chernoff and Gallager bounds bracket it."""
     th = np.linspace(0.2, 0.8, 4)
     for name in m.DENSITY_NAMES:
         for x in (4.0, 6.0):

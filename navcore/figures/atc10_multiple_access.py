@@ -92,7 +92,7 @@ def _column_limit(x: float) -> float:
     reproduces="Figs. 3.3-3.6",
     caption="Bounds to the ROC at N = 1e5, tau/alpha = 2e-5, one row per amplitude density (the "
     "paper's Figs. 3.3 to 3.6) and one column per contour 1/sqrt(3b): upper bound (3.5.13, solid), "
-    "actual ROC (dotted; exact sums or stratified Monte Carlo) and ROC_g of equal power (Eq. 3.8.3, "
+    "actual ROC (dotted; computed exactly) and ROC_g of equal power (Eq. 3.8.3, "
     "thick grey). Each column has its own range, shared down the column; the ROCs are symmetric, so "
     "both axes of a panel cover the same decades. The corrected lower bound (3.5.14) lies below the "
     "range of every panel and is not drawn.",
@@ -272,7 +272,7 @@ def noise_tails() -> Figure:
     "ATC10-ma-actual-vs-gaussian",
     paper="ATC10",
     reproduces="new",
-    caption="Actual ROCs (exact sums or stratified Monte Carlo, N = 1e5, tau/alpha = 2e-5) against "
+    caption="Actual ROCs (computed exactly, N = 1e5, tau/alpha = 2e-5) against "
     "ROC_g of equal power, at 1/sqrt(3b) = 3, 5 and 8, and the simulated 32-chip PSK signatures "
     "(1/sqrt(3b) about 7.9) with their Chernoff upper bound.",
 )

@@ -916,7 +916,7 @@ CLAIMS = [
         tolerance=EXACT,
         expected_status="not-reproducible",
         note="The sentence follows from Theorem 3.2, which orders the Chernoff upper bounds; checked on "
-        "the actual ROCs of the four densities (exact sums and stratified Monte Carlo, as "
+        "the actual ROCs of the four densities (computed exactly, as "
         "ATC10-sec3.8-gauss-always-optimistic) at $p_d$ = 0.9 and 0.99 and the figure contours: "
         "$\\mathrm{ROC}_g$ is the better ROC except at the lowest contour, 3, where the continuous "
         "densities beat it; the contour labels are lost (assumed). The bound's $p_d$ line is misprinted "

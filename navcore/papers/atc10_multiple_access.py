@@ -21,16 +21,16 @@ from navcore.detection.multiple_access import (
     GaussianDensity,
     MultipleAccessNoise,
     PointMassDensity,
-    StratifiedSums,
     TriangularDensity,
     UniformDensity,
     edgeworth_density,
     gaussian_mixture_exact_tail,
     psk_amplitude_samples,
-    stratified_sums,
     stratified_tail,
+    triangular_exact_tail,
     two_point_density,
     two_point_exact_tail,
+    uniform_exact_tail,
 )
 from navcore.detection.roc_bounds import (
     chernoff_log_tail,
@@ -115,7 +115,10 @@ IN.published(
 IN.convention(
     "alpha_example_s",
     1.0,
-    alternative=2.5,
+    readings={
+        "one second: N counted effectively as 2 x 10^5 pulses a second, as the example does": 1.0,
+        "2.5 s: the printed period of a signature of 5 pulses in Ref. [1]": 2.5,
+    },
     unit="s",
     quantity="signature repetition period $\\alpha$ in p = (N - 1)/(B $\\alpha$)",
     reason="the text gives 5 pulses in $\\alpha = 2.5$ s or 4 in 2 s and counts N effectively as "
@@ -288,7 +291,8 @@ def noise_sec36(name: str, x: float) -> MultipleAccessNoise:
 # ---------------------------------------------------------------------------------------
 THETA_EDGE = 0.02
 THETA_GRID = np.linspace(THETA_EDGE, 1.0 - THETA_EDGE, 193)
-#: Samples per stratum (number K of overlapping interferers) of the stratified Monte Carlo.
+#: Samples per stratum (number K of overlapping interferers) of the stratified Monte Carlo of
+#: the PSK simulation.
 MC_PER_STRATUM = 20_000
 
 
@@ -306,36 +310,29 @@ class ExactROC:
 
 @input_cache
 def exact_roc(name: str, x: float) -> ExactROC:
-    """The actual ROC at the Sec. 3.6 parameters: exact sums (two-point, Gaussian C) or stratified MC.
+    """The actual ROC at the Sec. 3.6 parameters, exact for every density.
 
-    Sums of K draws from C(b) are sqrt(b) times sums from C(1), so one unit-b sample per
-    density serves every contour (seeded per density).
+    Conditional on the number K of overlapping interferers the noise is a sum of K amplitudes:
+    a compound binomial for the two-point density, a Gaussian for the Gaussian one, an
+    Irwin-Hall law (rescaled) for the uniform one and one of 2K summands for the triangular one
+    (each triangular amplitude the sum of two uniforms); the binomial weights of K are exact.
+    p_f = P(n >= theta) and, the noise being symmetric, 1 - p_d = P(n < theta - 1) =
+    P(n >= 1 - theta).
     """
     b = b_of_contour(x)
     th = THETA_GRID
     nint, q = IN.n_sec36 - 1, 2 * IN.tau_over_alpha_sec36
+    z = np.zeros_like(th)
     if name == "C2 two-point":
         pf = two_point_exact_tail(np.sqrt(b), nint, q, th)
         pm = 1.0 - two_point_exact_tail(np.sqrt(b), nint, q, th - 1.0)  # P(n < theta - 1)
-        z = np.zeros_like(th)
         return ExactROC(th, pf, z, pm, z, "exact binomial sums")
-    if name == "C4 Gaussian":
-        pf = gaussian_mixture_exact_tail(b, nint, q, th)
-        pm = gaussian_mixture_exact_tail(b, nint, q, 1.0 - th)
-        z = np.zeros_like(th)
-        return ExactROC(th, pf, z, pm, z, "exact Gaussian mixture")
-    sums = _unit_sums(name)
-    pf, pf_se = sums.tail(th, scale=np.sqrt(b))
-    ge, ge_se = sums.tail(th - 1.0, scale=np.sqrt(b))
-    # p_f = P(n >= theta); 1 - p_d = P(n < theta - 1) = 1 - P(n >= theta - 1)
-    return ExactROC(th, pf, pf_se, 1.0 - ge, ge_se, "stratified Monte Carlo")
-
-
-@input_cache
-def _unit_sums(name: str) -> StratifiedSums:
-    """One seeded stratified sample per density at b = 1, rescaled for every contour."""
-    unit = MultipleAccessNoise(IN.n_sec36, IN.tau_over_alpha_sec36, density(name, 1.0))
-    return stratified_sums(unit, MC_PER_STRATUM, np.random.default_rng(31 + DENSITY_NAMES.index(name)))
+    tail, method = {
+        "C1 uniform": (uniform_exact_tail, "exact Irwin-Hall mixture"),
+        "C3 triangular": (triangular_exact_tail, "exact Irwin-Hall mixture"),
+        "C4 Gaussian": (gaussian_mixture_exact_tail, "exact Gaussian mixture"),
+    }[name]
+    return ExactROC(th, tail(b, nint, q, th), z, tail(b, nint, q, 1.0 - th), z, method)
 
 
 def best_pf_at_pd(roc_pf: np.ndarray, roc_miss: np.ndarray, pd_min: float) -> float:
@@ -380,7 +377,7 @@ def gaussian_smallest_pf_ratio() -> float:
 def gaussian_beaten_at_low_snr_oracle() -> bool:
     """Independent check: at x = 3 the exact Gaussian-C mixture beats ROC_g at p_d = 0.9.
 
-    A quadrature on a fine threshold grid of the exact mixture, not the Monte Carlo table.
+    The exact mixture on a fine threshold grid of its own (4001 points), not the comparison table's.
     """
     b = b_of_contour(3.0)
     th = np.linspace(0.0, 1.0, 4001)
@@ -831,8 +828,8 @@ ERRATA = [
         "argument '$\\mathrm{ROC}_g$ $p_f$ below the lower bound of the actual $p_f$' cannot be "
         "made with it.",
         evidence="Tilted-Chebyshev derivation; the printed version (sign of $\\phi_1$) lies above the "
-        "Chernoff upper bound; the corrected one lies below the exact compound-binomial and "
-        "stratified Monte Carlo tails at every tested point.",
+        "Chernoff upper bound; the corrected one lies below the exact tails (compound-binomial, "
+        "Irwin-Hall and Gaussian mixtures) at every tested point.",
         claims=(
             "ATC10-sec3.5-lower-bound-printed",
             "ATC10-sec3.8-gauss-always-optimistic",
@@ -1136,7 +1133,8 @@ CLAIMS = [
         compute=gaussian_always_more_optimistic,
         tolerance=EXACT,
         expected_status="not-reproducible",
-        note="Actual ROCs from exact sums (C2, C4) and stratified Monte Carlo (C1, C3): the smallest ratio "
+        note="Actual ROCs computed exactly (binomial mixtures of two-point, Irwin-Hall and Gaussian sums): "
+        "the smallest ratio "
         "of the actual best $p_f$ to the $\\mathrm{ROC}_g$ one is 0.87-1.13 over the assumed lowest "
         "contour. $\\mathrm{ROC}_g$ is more optimistic at high SNR but not at $1/\\sqrt{3b}$ = 3, where "
         "the continuous densities beat it (confirmed by the exact Gaussian-C mixture). The contour labels "
