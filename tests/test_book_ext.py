@@ -1,0 +1,900 @@
+"""The book's Sphinx extensions, function by function, without a book build (issue 31, item 1).
+
+The full book build reaches every extension, but only as a whole and only for form; these tests
+give each function the inputs that tell its branches apart, with Sphinx's objects replaced by
+small stand-ins (a namespace with the attributes the function reads).
+
+Oracles: the hand-made input and the result written out by hand; Sphinx's own table of events
+for the event names an extension connects to; LaTeX's special characters for the escapes.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import json
+import sys
+from collections import Counter
+from dataclasses import dataclass
+from pathlib import Path
+from types import SimpleNamespace
+from typing import ClassVar, NamedTuple
+
+import pytest
+from docutils import nodes
+from sphinx import addnodes
+
+ROOT = Path(__file__).resolve().parents[1]
+EXT = ROOT / "book" / "_ext"
+
+
+def _load(name: str):
+    dotted = f"book._ext.{name}"
+    if dotted in sys.modules:
+        return sys.modules[dotted]
+    spec = importlib.util.spec_from_file_location(dotted, EXT / f"{name}.py")
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[dotted] = module
+    spec.loader.exec_module(module)
+    return module
+
+
+api_reference = _load("api_reference")
+book_downloads = _load("book_downloads")
+build_provenance = _load("build_provenance")
+number_text = _load("number_text")
+pdf_layout = _load("pdf_layout")
+subset_references = _load("subset_references")
+
+
+# --- setup: what each extension registers ---------------------------------------------------------
+
+
+class _Recorder:
+    """A stand-in Sphinx application that records every registration call."""
+
+    def __init__(self) -> None:
+        self.calls: list[tuple] = []
+
+    def __getattr__(self, name: str):
+        def record(*args, **kwargs):
+            self.calls.append((name, *args, *sorted(kwargs.items())))
+
+        return record
+
+
+SAFE = {"parallel_read_safe": True, "parallel_write_safe": True}
+SETUP = {
+    "api_reference": (
+        [
+            ("connect", "autodoc-skip-member", api_reference._skip_class_data),
+            ("connect", "missing-reference", api_reference._field_reference),
+        ],
+        SAFE,
+    ),
+    "book_downloads": (
+        [
+            ("connect", "html-page-context", book_downloads._add_notebook, ("priority", 400)),
+            ("connect", "html-page-context", book_downloads._add_notebook, ("priority", 900)),
+            ("connect", "html-page-context", book_downloads._add_pdf_button, ("priority", 600)),
+            ("connect", "build-finished", book_downloads._copy_pdf),
+        ],
+        {"version": "1.0", **SAFE},
+    ),
+    "build_provenance": (
+        [
+            ("add_directive", "build-provenance", build_provenance.BuildProvenanceDirective),
+            ("connect", "builder-inited", build_provenance._title_page),
+            ("connect", "html-page-context", build_provenance._ledger_page),
+        ],
+        {"version": "1.0", **SAFE},
+    ),
+    "number_text": ([("add_post_transform", number_text.TidyPastedNumbers)], SAFE),
+    "subset_references": (
+        [
+            ("connect", "missing-reference", subset_references.missing_reference),
+            ("add_post_transform", subset_references.MystLinksOutside),
+            ("connect", "build-finished", subset_references._report),
+        ],
+        {"parallel_read_safe": True, "parallel_write_safe": False},
+    ),
+}
+#: events that extensions or builders (not Sphinx's core) define
+OTHER_EVENTS = {"html-page-context", "autodoc-skip-member"}
+
+
+@pytest.mark.parametrize("name", sorted(SETUP))
+def test_setup_registers_its_handlers(name):
+    from sphinx.events import core_events
+
+    calls, metadata = SETUP[name]
+    app = _Recorder()
+    assert _load(name).setup(app) == metadata
+    assert app.calls == calls
+    for call in app.calls:
+        if call[0] == "connect":
+            assert call[1] in set(core_events) | OTHER_EVENTS
+
+
+def test_pdf_layout_setup_registers_nodes_and_transforms():
+    app = _Recorder()
+    assert pdf_layout.setup(app) == SAFE
+    assert app.calls == [
+        (
+            "add_node",
+            pdf_layout.in_place_citation,
+            ("latex", (pdf_layout._visit_in_place_citation, pdf_layout._depart_in_place_citation)),
+        ),
+        (
+            "add_node",
+            nodes.admonition,
+            ("latex", (pdf_layout._visit_admonition, pdf_layout._depart_admonition)),
+            ("override", True),
+        ),
+        ("add_post_transform", pdf_layout.CitationUrlsInline),
+        ("add_post_transform", pdf_layout.CitationsInPlace),
+        ("add_post_transform", pdf_layout.IntroductionHeading),
+    ]
+
+
+# --- number_text ------------------------------------------------------------------------------------
+
+
+def _pasted(text: str, classes: list[str]) -> nodes.inline:
+    return nodes.inline("", "", nodes.Text(text), classes=classes)
+
+
+def test_pasted_numbers_are_tidied_and_other_text_is_left_alone():
+    from navcore.formatting import tidy_numbers
+
+    doc = nodes.paragraph()
+    doc += _pasted("9.5e-04 and -0.0", ["pasted-text"])
+    doc += _pasted("9.5e-04", ["other"])
+    doc += _pasted("12", ["pasted-text"])
+    transform = SimpleNamespace(document=doc)
+    number_text.TidyPastedNumbers.run(transform)
+    texts = [n.astext() for n in doc.children]
+    assert texts == [tidy_numbers("9.5e-04 and -0.0"), "9.5e-04", "12"]
+    assert texts[0] != "9.5e-04 and -0.0"  # the oracle does change it
+    assert all(isinstance(c, nodes.Text) for n in doc.children for c in n.children)
+
+
+# --- build_provenance -------------------------------------------------------------------------------
+
+
+def test_latex_escape_of_every_special_character():
+    for module in (build_provenance, pdf_layout):
+        assert module._latex_escape("a&b%c$d#e_f{g}h\\i") == r"a\&b\%c\$d\#e\_f\{g\}h\i"
+
+
+def test_provenance_table_literals_and_words():
+    table = build_provenance.provenance_table([("commit", "abc123"), ("tree", "clean and tidy")])
+    assert table["classes"] == ["navcore-provenance"]
+    (group,) = table.children
+    assert group["cols"] == 2
+    assert [c["colwidth"] for c in group.findall(nodes.colspec)] == [30, 70]
+    rows = list(group.findall(nodes.row))
+    assert [[e.astext() for e in r.children] for r in rows] == [
+        ["Built with", "Value"],
+        ["commit", "abc123"],
+        ["tree", "clean and tidy"],
+    ]
+    assert isinstance(rows[0].parent, nodes.thead) and isinstance(rows[1].parent, nodes.tbody)
+    assert len(list(rows[1].findall(nodes.literal))) == 1  # a hash: a literal
+    assert not list(rows[2].findall(nodes.literal))  # words: text
+
+
+class _Provenance(NamedTuple):
+    date: str
+
+    def rows(self):
+        return [("commit_sha", "a&b"), ("lock", "f_0")]
+
+    def as_dict(self):
+        return {"b": "</script>", "a": 1}
+
+
+def test_title_page_latex_block():
+    text = build_provenance.title_page_latex(_Provenance("2026-01-01"))
+    assert text == (
+        "\\authoraddress{\\scriptsize\\begin{tabular}{@{}r@{\\enspace}l@{}}\n"
+        "\\multicolumn{2}{r}{\\itshape Built from}\\\\\n"
+        "commit\\_sha & \\texttt{a\\&b}\\\\\n"
+        "lock & \\texttt{f\\_0}\\\\\n"
+        "\\end{tabular}}\n"
+    )
+
+
+@pytest.mark.parametrize(
+    ("builder", "date", "expected_date"),
+    [("latex", "2026-01-01", "2026-01-01"), ("latex", "unknown", "commit date unknown"), ("html", "x", None)],
+)
+def test_title_page_date_and_preamble(monkeypatch, builder, date, expected_date):
+    p = _Provenance(date)
+    monkeypatch.setattr(build_provenance, "provenance", lambda: p)
+    context = {"preamble": "PRE"}
+    app = SimpleNamespace(builder=SimpleNamespace(name=builder, context=context))
+    build_provenance._title_page(app)
+    if expected_date is None:
+        assert context == {"preamble": "PRE"}
+    else:
+        assert context == {"preamble": "PRE\n" + build_provenance.title_page_latex(p), "date": expected_date}
+    context.clear()
+    build_provenance._title_page(app)
+    if expected_date is not None:
+        assert context["preamble"] == "\n" + build_provenance.title_page_latex(p)
+
+
+@pytest.mark.parametrize(
+    ("fmt", "body", "added"),
+    [("html", "<div data-ledger-app>", True), ("html", "<p>", False), ("latex", "data-ledger-app", False)],
+)
+def test_ledger_page_carries_the_provenance(monkeypatch, fmt, body, added):
+    monkeypatch.setattr(build_provenance, "provenance", lambda: _Provenance("d"))
+    app = SimpleNamespace(builder=SimpleNamespace(format=fmt))
+    context = {"body": body, "metatags": "M"}
+    build_provenance._ledger_page(app, "ledger", "page.html", context, None)
+    script = '<script type="application/json" id="navcore-provenance">{"a": 1, "b": "<\\/script>"}</script>\n'
+    assert context["metatags"] == ("M" + script if added else "M")
+    if added:
+        context = {"body": body}
+        build_provenance._ledger_page(app, "ledger", "page.html", context, None)
+        assert context["metatags"] == script
+        json.loads(script.split(">", 1)[1].rsplit("</script>", 1)[0])  # valid JSON
+
+
+def test_ledger_page_without_a_body(monkeypatch):
+    monkeypatch.setattr(build_provenance, "provenance", lambda: _Provenance("d"))
+    context: dict = {}
+    build_provenance._ledger_page(
+        SimpleNamespace(builder=SimpleNamespace(format="html")), "p", "t", context, None
+    )
+    assert context == {}
+
+
+def test_provenance_directive_writes_the_table(monkeypatch):
+    monkeypatch.setattr(build_provenance, "provenance", lambda: _Provenance("d"))
+    (table,) = build_provenance.BuildProvenanceDirective.run(SimpleNamespace())
+    assert table.astext() == build_provenance.provenance_table(_Provenance("d").rows()).astext()
+
+
+# --- api_reference ----------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Sample:
+    """A class with fields of each kind."""
+
+    count: int
+    label: str = "x"
+    LIMIT: ClassVar[int] = 3
+
+    @dataclass
+    class Inner:
+        depth: int
+
+    def method(self) -> int:
+        return self.count
+
+    @property
+    def twice(self) -> int:
+        return 2 * self.count
+
+
+class Pair(NamedTuple):
+    left: float
+    right: float
+
+
+@pytest.mark.parametrize(
+    ("what", "obj", "skip", "expected"),
+    [
+        ("class", 3, False, True),  # a data attribute: skipped
+        ("module", 3, False, None),
+        ("class", 3, True, None),  # already skipped: left to Sphinx
+        ("class", Sample.method, False, None),
+        ("class", Sample.twice, False, None),
+        ("class", classmethod(len), False, None),
+        ("class", staticmethod(len), False, None),
+        ("class", Sample, False, None),
+        ("class", __import__("enum").Enum("E", "a").a, False, None),
+        ("class", len, False, None),
+    ],
+)
+def test_skip_class_data(what, obj, skip, expected):
+    assert api_reference._skip_class_data(None, what, "n", obj, skip, None) is expected
+
+
+def test_class_fields():
+    here = __name__
+    assert api_reference._class_fields(f"{here}.Sample") == {"count", "label", "LIMIT"}
+    assert api_reference._class_fields(f"{here}.Pair") == {"left", "right"}
+    assert api_reference._class_fields(f"{here}.test_class_fields") == set()
+    assert api_reference._class_fields(f"{here}.Nothing") == set()
+    assert api_reference._class_fields("no_such_module_xyz.Thing") == set()
+    # a nested class: the module part is found by walking back
+    assert api_reference._class_fields(f"{here}.Sample.Inner") == {"depth"}
+    assert api_reference._class_fields(f"{here}.Sample.Inner.depth") == set()
+
+
+def _xref(**attrs) -> addnodes.pending_xref:
+    node = addnodes.pending_xref("", refdomain="py", reftype="attr", refdoc="here", **attrs)
+    return node
+
+
+class _Entry(NamedTuple):
+    docname: str
+    node_id: str
+    objtype: str
+
+
+def _api_env(objects: dict) -> SimpleNamespace:
+    return SimpleNamespace(get_domain=lambda name: SimpleNamespace(objects=objects) if name == "py" else None)
+
+
+def test_field_reference_links_to_the_class(monkeypatch):
+    made = []
+    monkeypatch.setattr(api_reference, "make_refnode", lambda *a: made.append(a) or "ref")
+    here = __name__
+    objects = {
+        f"{here}.Sample": _Entry("api", "id-sample", "class"),
+        "Pair": _Entry("api", "id-pair", "exception"),
+        f"{here}.Pair": _Entry("api", "id-pair2", "function"),
+    }
+    env = _api_env(objects)
+    app = SimpleNamespace(builder="B")
+    cont = nodes.literal(text="c")
+    # Owner.attr with a module: the module-qualified candidate
+    assert (
+        api_reference._field_reference(app, env, _xref(reftarget="Sample.count", **{"py:module": here}), cont)
+        == "ref"
+    )
+    assert made[-1] == ("B", "here", "api", "id-sample", cont, f"{here}.Sample")
+    # a field the class does not have, a method, a bare name without a class: unresolved
+    assert (
+        api_reference._field_reference(app, env, _xref(reftarget="Sample.nope", **{"py:module": here}), cont)
+        is None
+    )
+    assert api_reference._field_reference(app, env, _xref(reftarget="count"), cont) is None
+    # inside a class: the bare name is the class's field
+    node = _xref(reftarget="count", **{"py:module": here, "py:class": "Sample"})
+    assert api_reference._field_reference(app, env, node, cont) == "ref"
+    node = _xref(reftarget="count", **{"py:class": f"{here}.Sample"})
+    assert api_reference._field_reference(app, env, node, cont) == "ref"
+    # objtype must be a class or an exception
+    node = _xref(reftarget="Pair.left", **{"py:module": here})
+    assert api_reference._field_reference(app, env, node, cont) is None
+    # another domain or role
+    other = _xref(reftarget="Sample.count", **{"py:module": here})
+    other["reftype"] = "func"
+    assert api_reference._field_reference(app, env, other, cont) is None
+    other["reftype"], other["refdomain"] = "attr", "std"
+    assert api_reference._field_reference(app, env, other, cont) is None
+    assert len(made) == 3
+
+
+def test_field_reference_owner_without_a_module(monkeypatch):
+    monkeypatch.setattr(api_reference, "make_refnode", lambda *a: a[-1])
+    here = __name__
+    env = _api_env({f"{here}.Pair": _Entry("api", "i", "exception")})
+    node = _xref(reftarget=f"{here}.Pair.left")
+    assert api_reference._field_reference(SimpleNamespace(builder=None), env, node, None) == f"{here}.Pair"
+
+
+# --- pdf_layout -------------------------------------------------------------------------------------
+
+
+def _citation(key: str, *children) -> nodes.citation:
+    c = nodes.citation("raw-" + key, *children, ids=[key])
+    return c
+
+
+def test_citation_urls_are_printed_as_addresses():
+    doc = nodes.section()
+    doi = nodes.reference("", "10.1/x", refuri="https://doi.org/10.1/x")
+    same = nodes.reference("", "http://a.b", refuri="http://a.b")
+    local = nodes.reference("", "see", refuri="#x")
+    outside = nodes.reference("", "elsewhere", refuri="https://c.d")
+    doc += _citation("k", nodes.paragraph("", "", doi, same, local))
+    doc += nodes.paragraph("", "", outside)
+    pdf_layout.CitationUrlsInline.run(SimpleNamespace(document=doc))
+    assert [r.astext() for r in doc.findall(nodes.reference)] == [
+        "https://doi.org/10.1/x",
+        "http://a.b",
+        "see",
+        "elsewhere",
+    ]
+    assert pdf_layout.CitationUrlsInline.formats == ("latex",)
+    assert pdf_layout.CitationUrlsInline.default_priority < 400
+
+
+def test_citations_in_place_keep_runs_where_they_stand():
+    doc = nodes.section()
+    doc += nodes.title("", "T")
+    doc += _citation("a", nodes.label("", "1"))
+    doc += _citation("b", nodes.label("", "2"))
+    doc += nodes.paragraph("", "between")
+    doc += _citation("c", nodes.label("", "3"))
+    inner = nodes.section()
+    inner += _citation("d", nodes.label("", "4"))
+    doc += inner
+    pdf_layout.CitationsInPlace.run(SimpleNamespace(document=doc))
+    kinds = [type(c).__name__ for c in doc.children]
+    assert kinds == ["title", "thebibliography", "paragraph", "thebibliography", "section"]
+    lists = [c for c in doc.children if type(c).__name__ == "thebibliography"]
+    assert [[(type(x).__name__, x["ids"], x.rawsource, x.astext()) for x in lst] for lst in lists] == [
+        [("in_place_citation", ["a"], "raw-a", "1"), ("in_place_citation", ["b"], "raw-b", "2")],
+        [("in_place_citation", ["c"], "raw-c", "3")],
+    ]
+    assert [type(x).__name__ for x in inner.children] == ["thebibliography"]
+    assert not list(doc.findall(nodes.citation))
+    assert pdf_layout.CitationsInPlace.default_priority < 750
+
+
+def _intro(title: str | None, first_title: str = "Book", children: bool = True):
+    doc = nodes.document(None, None)
+    section = nodes.section()
+    if children:
+        section += nodes.title("", first_title)
+        section += nodes.paragraph("", "text")
+    doc += section
+    titles = {} if title is None else {"index": nodes.title("", title)}
+    return SimpleNamespace(
+        document=doc, config=SimpleNamespace(root_doc="index"), env=SimpleNamespace(titles=titles)
+    ), section
+
+
+def test_introduction_heading():
+    transform, section = _intro("A & B", "A & B")
+    pdf_layout.IntroductionHeading.run(transform)
+    raw = section[1]
+    assert isinstance(raw, nodes.raw) and raw["format"] == "latex"
+    t = r"A \& B"
+    assert raw.astext() == (
+        rf"\chapter*{{{t}}}\addcontentsline{{toc}}{{chapter}}{{{t}}}\markboth{{{t}}}{{{t}}}" + "\n"
+    )
+    assert len(section) == 3
+    for transform, section in (_intro(None), _intro("Book", "Other"), _intro("Book", children=False)):
+        before = len(section)
+        pdf_layout.IntroductionHeading.run(transform)
+        assert len(section) == before
+    # the first section starts with something other than a title
+    transform, section = _intro("text", "Book")
+    section.children = [nodes.paragraph("", "text")]
+    pdf_layout.IntroductionHeading.run(transform)
+    assert len(section) == 1
+    # no section at all
+    transform, _ = _intro("Book")
+    transform.document.children = []
+    pdf_layout.IntroductionHeading.run(transform)
+    assert transform.document.children == []
+
+
+class _Writer:
+    def __init__(self, table=None):
+        self.body: list[str] = []
+        self.no_latex_floats = 0
+        self.table = table
+        self.calls: list[str] = []
+
+    def visit_citation(self, node):
+        self.calls.append("visit")
+
+    def depart_citation(self, node):
+        self.calls.append("depart")
+
+
+@pytest.mark.parametrize(
+    ("classes", "kind"), [(["warning"], "warning"), (["x", "warning"], "warning"), ([], "note")]
+)
+def test_admonition_boxes(classes, kind):
+    table = SimpleNamespace(has_problematic=False)
+    writer = _Writer(table)
+    node = nodes.admonition(classes=classes)
+    pdf_layout._visit_admonition(writer, node)
+    assert writer.body == ["\n\\begin{sphinxadmonition}{" + kind + "}"]
+    assert writer.no_latex_floats == 1 and table.has_problematic is True
+    pdf_layout._depart_admonition(writer, node)
+    assert writer.body[-1] == "\\end{sphinxadmonition}\n"
+    assert writer.no_latex_floats == 0
+    outside = _Writer(None)
+    pdf_layout._visit_admonition(outside, nodes.admonition())
+    assert outside.table is None and outside.no_latex_floats == 1
+
+
+def test_in_place_citation_is_printed_as_a_citation():
+    writer = _Writer()
+    pdf_layout._visit_in_place_citation(writer, nodes.citation())
+    pdf_layout._depart_in_place_citation(writer, nodes.citation())
+    assert writer.calls == ["visit", "depart"]
+
+
+# --- book_downloads ---------------------------------------------------------------------------------
+
+
+def _app(tmp_path: Path, fmt: str = "html", env=None) -> SimpleNamespace:
+    out = tmp_path / "html"
+    out.mkdir(exist_ok=True)
+    return SimpleNamespace(outdir=str(out), builder=SimpleNamespace(format=fmt), env=env or SimpleNamespace())
+
+
+def _write_notebook(path: Path, outputs: list) -> None:
+    import nbformat
+
+    outputs = [nbformat.from_dict(o) for o in outputs]
+    nb = nbformat.v4.new_notebook()
+    nb.cells = [
+        nbformat.v4.new_markdown_cell("# t"),
+        nbformat.v4.new_code_cell("x", outputs=outputs, execution_count=1),
+    ]
+    path.parent.mkdir(parents=True, exist_ok=True)
+    nbformat.write(nb, path)
+
+
+def test_executed_notebook_ids_addresses_and_provenance(tmp_path, monkeypatch):
+    monkeypatch.setattr(book_downloads, "_provenance", lambda: {"commit": "c"})
+    out = {
+        "output_type": "execute_result",
+        "execution_count": 1,
+        "metadata": {},
+        "data": {"text/plain": "<Thing at 0x7fAB12> and <Other at 0xff>"},
+    }
+    _write_notebook(tmp_path / "p.ipynb", [out])
+    nb = book_downloads.executed_notebook(tmp_path / "p.ipynb", None)
+    assert [c["id"] for c in nb.cells] == ["cell-0", "cell-1"]
+    assert nb.cells[1].outputs[0]["data"]["text/plain"] == "<Thing> and <Other>"
+    assert nb.metadata["navcore_provenance"] == {"commit": "c"}
+
+
+def test_executed_notebook_merges_outputs_only_when_absent(tmp_path, monkeypatch):
+    import jupyter_cache
+    import nbformat
+
+    monkeypatch.setattr(book_downloads, "_provenance", lambda: {})
+    merged = []
+
+    class Cache:
+        def merge_match_into_notebook(self, nb):
+            merged.append(nb)
+            if len(merged) == 2:
+                raise KeyError("not cached")
+            nb.cells[1].outputs = [
+                nbformat.from_dict({"output_type": "stream", "name": "stdout", "text": "hi"})
+            ]
+            return 1, nb
+
+    monkeypatch.setattr(jupyter_cache, "get_cache", lambda path: Cache() if path == "C" else None)
+    _write_notebook(tmp_path / "empty.ipynb", [])
+    nb = book_downloads.executed_notebook(tmp_path / "empty.ipynb", "C")
+    assert nb.cells[1].outputs[0]["text"] == "hi" and len(merged) == 1
+    nb = book_downloads.executed_notebook(tmp_path / "empty.ipynb", "C")  # KeyError: as written
+    assert nb.cells[1].outputs == [] and len(merged) == 2
+    nb = book_downloads.executed_notebook(tmp_path / "empty.ipynb", None)
+    assert len(merged) == 2
+    _write_notebook(tmp_path / "full.ipynb", [{"output_type": "stream", "name": "stdout", "text": "own"}])
+    nb = book_downloads.executed_notebook(tmp_path / "full.ipynb", "C")
+    assert nb.cells[1].outputs[0]["text"] == "own" and len(merged) == 2
+
+
+def test_add_notebook_writes_the_download(tmp_path, monkeypatch):
+    monkeypatch.setattr(book_downloads, "_provenance", lambda: {"commit": "c"})
+    config = SimpleNamespace(execution_mode="off", execution_cache_path="C")
+    app = _app(tmp_path, env=SimpleNamespace(mystnb_config=config))
+    _write_notebook(tmp_path / "jupyter_execute" / "wf" / "page.ipynb", [])
+    context: dict = {}
+    book_downloads._add_notebook(app, "wf/page", "page.html", context, object())
+    target = tmp_path / "html" / "_sources" / "wf" / "page.ipynb"
+    assert context == {"ipynb_source": "wf/page.ipynb"}
+    text = target.read_text()
+    assert text.endswith("}\n\n") or text.endswith("}\n")
+    assert json.loads(text)["metadata"]["navcore_provenance"] == {"commit": "c"}
+    # no doctree, another builder, no executed notebook: nothing
+    for args in (
+        (app, "wf/page", None),
+        (_app(tmp_path, "latex"), "wf/page", object()),
+        (app, "nope", object()),
+    ):
+        context = {}
+        book_downloads._add_notebook(args[0], args[1], "page.html", context, args[2])
+        assert context == {}
+
+
+@pytest.mark.parametrize(("mode", "expected"), [("cache", "C"), ("force", None)])
+def test_add_notebook_uses_the_cache_only_in_cache_mode(tmp_path, monkeypatch, mode, expected):
+    seen = []
+    monkeypatch.setattr(book_downloads, "executed_notebook", lambda path, cache: seen.append(cache) or {})
+    monkeypatch.setitem(sys.modules, "nbformat", SimpleNamespace(writes=lambda nb: "{}"))
+    config = SimpleNamespace(execution_mode=mode, execution_cache_path="C")
+    app = _app(tmp_path, env=SimpleNamespace(mystnb_config=config))
+    (tmp_path / "jupyter_execute").mkdir()
+    (tmp_path / "jupyter_execute" / "p.ipynb").write_text("{}")
+    book_downloads._add_notebook(app, "p", "t", {}, object())
+    book_downloads._add_notebook(_app(tmp_path), "p", "t", {}, object())  # no MyST-NB config
+    assert seen == [expected, None]
+    assert (tmp_path / "html" / "_sources" / "p.ipynb").read_text() == "{}\n"
+
+
+def test_pdf_button_and_copy(tmp_path):
+    app = _app(tmp_path)
+    pdf = tmp_path / "latex" / "book.pdf"
+    assert book_downloads._pdf_source(app) == pdf
+    assert book_downloads._build_dir(app) == tmp_path
+
+    def context():
+        return {
+            "header_buttons": [
+                {"label": "other", "buttons": []},
+                {"label": "download-buttons", "buttons": []},
+            ],
+            "pathto": lambda name, kind: f"../{name}#{kind}",
+        }
+
+    ctx = context()
+    book_downloads._add_pdf_button(app, "p", "t", ctx, None)  # no PDF yet
+    assert ctx["header_buttons"][1]["buttons"] == []
+    book_downloads._copy_pdf(app, None)
+    assert not (tmp_path / "html" / "book.pdf").exists()
+    pdf.parent.mkdir()
+    pdf.write_bytes(b"%PDF")
+    ctx = context()
+    book_downloads._add_pdf_button(app, "p", "t", ctx, None)
+    assert ctx["header_buttons"][0]["buttons"] == []
+    assert ctx["header_buttons"][1]["buttons"] == [
+        {
+            "type": "link",
+            "url": "../book.pdf#1",
+            "text": "book (PDF)",
+            "tooltip": "Download the whole book as a PDF",
+            "icon": "fas fa-book",
+            "label": "download-book-pdf-button",
+        }
+    ]
+    book_downloads._add_pdf_button(app, "p", "t", {}, None)  # no header buttons: nothing to do
+    latex = _app(tmp_path, "latex")
+    ctx = context()
+    book_downloads._add_pdf_button(latex, "p", "t", ctx, None)
+    assert ctx["header_buttons"][1]["buttons"] == []
+    book_downloads._copy_pdf(latex, None)
+    assert not (tmp_path / "html" / "book.pdf").exists()
+    book_downloads._copy_pdf(app, RuntimeError("failed"))
+    assert not (tmp_path / "html" / "book.pdf").exists()
+    book_downloads._copy_pdf(app, None)
+    assert (tmp_path / "html" / "book.pdf").read_bytes() == b"%PDF"
+
+
+# --- subset_references ------------------------------------------------------------------------------
+
+
+GLOSSARY = """# Glossary
+
+```{glossary}
+:sorted:
+CEP
+  Circular error probable.
+Kalman Filter
+  A filter.
+%comment
+```
+
+Not a term
+
+:::{glossary}
+Tightly coupled
+  text
+:::
+After
+"""
+
+
+def test_glossary_terms():
+    assert subset_references._glossary_terms(GLOSSARY) == {"cep", "kalman filter", "tightly coupled"}
+    assert subset_references._glossary_terms("CEP\n") == set()
+
+
+def _book(tmp_path: Path) -> Path:
+    src = tmp_path / "book"
+    pages = {
+        "intro.md": "# Introduction\n",
+        "wf/01-model.md": "(wf-model)=\n# The model\n\n```{math}\n:label: Eq-One\n```\n$$ x $$ (eq-two)\n",
+        "kzl/01-page.md": "# KZL page\n",
+        "reference/api.rst": "The API\n=======\n\n.. _api-top:\n\n.. automodule:: navcore.frames\n",
+        "reference/more.md": "```{automodule} navcore.units\n```\n\n:::{py:module} navcore.ledger\n:::\n",
+        "glossary.md": GLOSSARY,
+        "notes.txt": "(not-a-page)=\n",
+        "_hidden/x.md": "(hidden)=\n",
+        ".dot/y.md": "(dot)=\n",
+        "bad.md": b"\xff\xfe(bad-label)=\n",
+    }
+    for name, text in pages.items():
+        path = src / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        if isinstance(text, bytes):
+            path.write_bytes(text)
+        else:
+            path.write_text(text)
+    return src
+
+
+def _env(src: Path, found=("intro", "kzl/01-page"), docname="kzl/01-page") -> SimpleNamespace:
+    return SimpleNamespace(
+        srcdir=str(src), found_docs=set(found), all_docs=dict.fromkeys(found), docname=docname
+    )
+
+
+def test_outside_sources_and_what_they_define(tmp_path):
+    src = _book(tmp_path)
+    env = _env(src)
+    sources = subset_references._outside_sources(env)
+    assert sources == {
+        "bad": src / "bad.md",
+        "glossary": src / "glossary.md",
+        "reference/api": src / "reference/api.rst",
+        "reference/more": src / "reference/more.md",
+        "wf/01-model": src / "wf/01-model.md",
+    }
+    outside = subset_references._Outside(env)
+    assert outside.sources == sources
+    assert outside.labels == {"wf-model", "eq-one", "eq-two", "api-top"}
+    assert outside.titles == {
+        "wf/01-model": "The model",
+        "reference/api": "The API",
+        "glossary": "Glossary",
+    }
+    assert outside.terms == {"cep", "kalman filter", "tightly coupled"}
+    assert outside.modules == {"navcore.frames", "navcore.units", "navcore.ledger"}
+
+
+def test_outside_is_computed_once_per_app(tmp_path):
+    app = SimpleNamespace(env=_env(_book(tmp_path)))
+    first = subset_references._outside(app)
+    assert subset_references._outside(app) is first is app._subset_outside
+
+
+@pytest.mark.parametrize(
+    ("name", "expected"),
+    [
+        ("navcore.frames.quat_normalize", True),
+        ("navcore.frames", True),
+        ("navcore.frames._private", False),
+        ("navcore.frames.no_such_thing", False),
+        ("navcore.estimation.kalman", False),  # not documented outside
+        ("numpy.linalg", False),
+        ("navcoreish.x", False),
+        ("navcore.no_such_module.f", False),
+        ("navcore", False),
+    ],
+)
+def test_documented(name, expected):
+    modules = {"navcore.frames", "navcore.units"}
+    assert subset_references._documented(name, modules) is expected
+
+
+def test_documented_the_package_itself():
+    assert subset_references._documented("navcore", {"navcore"}) is True
+
+
+def _subset_app(tmp_path: Path, **env) -> SimpleNamespace:
+    app = SimpleNamespace(env=_env(_book(tmp_path), **env), _subset_counts=Counter())
+    return app
+
+
+def _ref(domain, reftype, target, **attrs) -> addnodes.pending_xref:
+    return addnodes.pending_xref(
+        "", nodes.Text("words"), refdomain=domain, reftype=reftype, reftarget=target, **attrs
+    )
+
+
+def test_missing_reference_sets_what_lies_outside_as_text(tmp_path):
+    app = _subset_app(tmp_path)
+    env = app.env
+    cont = nodes.literal(text="cont")
+
+    def resolve(node):
+        out = subset_references.missing_reference(app, env, node, cont)
+        return None if out is None else (out["classes"], out.astext())
+
+    plain = ["xref-outside-subset"]
+    # pages: by title, by its own words, unknown, inside the subset
+    assert resolve(_ref("std", "doc", "../wf/01-model", refdoc="kzl/01-page")) == (plain, "The model")
+    assert resolve(_ref("std", "doc", "../wf/01-model.md", refdoc="kzl/01-page", refexplicit=True)) == (
+        plain,
+        "cont",
+    )
+    assert resolve(_ref("std", "doc", "/bad")) == (plain, "/bad")  # no title: the target
+    assert resolve(_ref("std", "doc", "../wf/02-none", refdoc="kzl/01-page")) is None
+    assert resolve(_ref("std", "doc", "/intro", refdoc="kzl/01-page")) is None
+    # labels, of every role, any case
+    for domain, reftype in (("std", "ref"), ("std", "numref"), ("math", "eq"), ("prf", "ref")):
+        assert resolve(_ref(domain, reftype, "WF-model")) == (plain, "cont")
+        assert resolve(_ref(domain, reftype, "nope")) is None
+    assert resolve(_ref("std", "label", "wf-model")) is None
+    # glossary terms
+    assert resolve(_ref("std", "term", "Kalman filter")) == (plain, "cont")
+    assert resolve(_ref("std", "term", "nope")) is None
+    # the API, with and without the current module
+    assert resolve(_ref("py", "func", "navcore.frames.quat_normalize")) == (plain, "cont")
+    assert resolve(_ref("py", "func", "quat_normalize", **{"py:module": "navcore.frames"})) == (plain, "cont")
+    assert resolve(_ref("py", "func", "quat_normalize")) is None
+    assert resolve(_ref("py", "func", "navcore.estimation.kalman")) is None
+    assert resolve(_ref("c", "func", "wf-model")) is None
+    assert resolve(_ref(None, None, None)) is None
+    assert app._subset_counts == Counter({"page": 3, "label": 4, "term": 1, "API": 2})
+
+
+def test_missing_reference_reads_the_current_page_when_the_node_has_none(tmp_path):
+    app = _subset_app(tmp_path)
+    node = _ref("std", "doc", "../wf/01-model")
+    out = subset_references.missing_reference(app, app.env, node, nodes.Text("x"))
+    assert out.astext() == "The model"
+
+
+def test_myst_links_outside(tmp_path):
+    app = _subset_app(tmp_path, docname="kzl/01-page")
+    std = SimpleNamespace(labels={"eq-two": 1}, anonlabels={"api-top": 1})
+    env = app.env
+    env.get_domain = lambda name: std
+    para = nodes.paragraph()
+
+    def link(domain, target, **attrs):
+        node = addnodes.pending_xref(
+            "",
+            nodes.inline("", "text " + target),
+            refdomain=domain,
+            reftype="myst",
+            reftarget=target,
+            **attrs,
+        )
+        para.append(node)
+        return node
+
+    link("doc", "wf/01-model")  # a page outside: its title
+    link("doc", "wf/01-model", refexplicit=True)  # its own words
+    link("doc", "intro")  # inside: left to MyST
+    link("doc", "wf/none")  # no such page
+    link(None, "WF-model")  # a label outside
+    link(None, "eq-two")  # defined inside too (Sphinx's labels)
+    link(None, "api-top")  # an anonymous label inside
+    link(None, "nope")
+    other = addnodes.pending_xref(
+        "", nodes.Text("o"), refdomain="doc", reftype="doc", reftarget="wf/01-model"
+    )
+    para.append(other)
+    transform = SimpleNamespace(env=env, app=app, document=para)
+    subset_references.MystLinksOutside.run(transform)
+    out = [(type(n).__name__, n.astext()) for n in para.children]
+    assert out == [
+        ("inline", "The model"),
+        ("inline", "text wf/01-model"),
+        ("pending_xref", "text intro"),
+        ("pending_xref", "text wf/none"),
+        ("inline", "text WF-model"),
+        ("pending_xref", "text eq-two"),
+        ("pending_xref", "text api-top"),
+        ("pending_xref", "text nope"),
+        ("pending_xref", "o"),
+    ]
+    assert app._subset_counts == Counter({"page": 2, "label": 1})
+    assert subset_references.MystLinksOutside.default_priority == 8
+
+
+def test_plain_text_node(tmp_path):
+    app = SimpleNamespace(_subset_counts=Counter())
+    cont = nodes.literal(text="c")
+    node = subset_references._plain(app, "page", cont)
+    assert node["classes"] == ["xref-outside-subset"] and node.astext() == "c"
+    assert node.children[0] is not cont
+    node = subset_references._plain(app, "page", cont, "Title")
+    assert node.astext() == "Title" and isinstance(node.children[0], nodes.Text)
+    assert app._subset_counts == Counter({"page": 2})
+
+
+def test_report_counts(capsys):
+    app = SimpleNamespace(_subset_counts=Counter({"page": 2, "API": 1}))
+    subset_references._report(app, None)
+    assert capsys.readouterr().out == (
+        "subset build: 3 references to what lies outside the subset set as plain text (API 1, page 2)\n"
+    )
+    subset_references._report(SimpleNamespace(_subset_counts=Counter()), None)
+    assert (
+        capsys.readouterr().out
+        == "subset build: 0 references to what lies outside the subset set as plain text\n"
+    )
