@@ -190,7 +190,9 @@ PACKAGES: dict[str, Package] = {
         deselect="each_published_input_moves or every_tolerance_has_a_policy or no_old_id_left",
     ),
     "units": Package(
-        ["navcore/units.py", "navcore/_validate.py"], ["test_units.py", "test_api_inputs.py"], not_mutated=[]
+        ["navcore/units.py", "navcore/_validate.py"],
+        ["test_units.py", "test_validate.py", "test_api_inputs.py"],
+        not_mutated=[],
     ),
     "figures": Package(["navcore/figures/*"], ["test_figures.py", "test_figure_data.py"]),
     "papers": Package(
