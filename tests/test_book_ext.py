@@ -11,6 +11,7 @@ for the event names an extension connects to; LaTeX's special characters for the
 from __future__ import annotations
 
 import importlib.util
+import itertools
 import json
 import sys
 from collections import Counter
@@ -39,6 +40,9 @@ def _load(name: str):
 
 
 api_reference = _load("api_reference")
+book_presentation = _load("book_presentation")
+glossary_links = _load("glossary_links")
+paper_equations = _load("paper_equations")
 book_downloads = _load("book_downloads")
 build_provenance = _load("build_provenance")
 number_text = _load("number_text")
@@ -89,6 +93,43 @@ SETUP = {
         {"version": "1.0", **SAFE},
     ),
     "number_text": ([("add_post_transform", number_text.TidyPastedNumbers)], SAFE),
+    "book_presentation": (
+        [
+            ("set_html_assets_policy", "always"),
+            ("connect", "doctree-read", book_presentation._hide_helpers),
+            ("connect", "doctree-read", book_presentation._erratum_anchors),
+            ("connect", "doctree-read", book_presentation._captions),
+            ("connect", "doctree-read", book_presentation._collect_titles),
+            ("connect", "env-purge-doc", book_presentation._purge),
+            ("connect", "env-merge-info", book_presentation._merge),
+            ("connect", "env-get-updated", book_presentation._renumber, ("priority", 900)),
+            ("connect", "doctree-resolved", book_presentation._latex_figure_numbers),
+            ("connect", "doctree-resolved", book_presentation._print_hidden_inputs),
+            ("connect", "doctree-resolved", book_presentation._print_proof_titles),
+            ("connect", "doctree-resolved", book_presentation._words_links_in_text_font),
+        ],
+        {"version": "1.0", **SAFE},
+    ),
+    "paper_equations": (
+        [
+            ("connect", "doctree-read", paper_equations._collect),
+            ("connect", "env-purge-doc", paper_equations._purge),
+            ("connect", "env-merge-info", paper_equations._merge),
+            ("connect", "env-get-updated", paper_equations._renumber, ("priority", 900)),
+        ],
+        {"version": "1.0", **SAFE},
+    ),
+    "glossary_links": (
+        [
+            ("add_config_value", "glossary_links_docname", "glossary", "env"),
+            ("add_config_value", "glossary_links_exclude", ["reference/"], "env"),
+            ("add_config_value", "glossary_links_ignore", [], "env"),
+            ("connect", "builder-inited", glossary_links._read_glossary),
+            ("connect", "env-get-outdated", glossary_links._outdated),
+            ("add_transform", glossary_links.GlossaryLinks),
+        ],
+        {"version": "1.0", **SAFE, "env_version": 1},
+    ),
     "subset_references": (
         [
             ("connect", "missing-reference", subset_references.missing_reference),
@@ -108,11 +149,22 @@ def test_setup_registers_its_handlers(name):
 
     calls, metadata = SETUP[name]
     app = _Recorder()
-    assert _load(name).setup(app) == metadata
+    assert globals()[name].setup(app) == metadata  # the module these expectations name
     assert app.calls == calls
     for call in app.calls:
         if call[0] == "connect":
             assert call[1] in set(core_events) | OTHER_EVENTS
+
+
+def test_paper_equations_setup_patches_the_latex_writer_once():
+    """The LaTeX writer's display-math visitor is wrapped once, however often the extension loads."""
+    from sphinx.writers.latex import LaTeXTranslator
+
+    paper_equations.setup(_Recorder())
+    patched = LaTeXTranslator.visit_math_block
+    assert patched._paper_equations is True
+    paper_equations.setup(_Recorder())
+    assert LaTeXTranslator.visit_math_block is patched
 
 
 def test_pdf_layout_setup_registers_nodes_and_transforms():
@@ -898,3 +950,244 @@ def test_report_counts(capsys):
         capsys.readouterr().out
         == "subset build: 0 references to what lies outside the subset set as plain text\n"
     )
+
+
+# --- glossary_links: the parts a toy build does not tell apart --------------------------------------
+
+
+def test_glossary_entries_edges():
+    source = (
+        "```{glossary}\n"
+        ":sorted:\n"
+        "A posteriori\n"
+        "  definition\n"
+        "term : index key : more\n"
+        "synonym\n"
+        "\n"
+        "next\n"
+        "```\n"
+        "After the glossary\n"
+        "\n"
+        ":::{glossary}\n"
+        "second\n"
+        "  text\n"
+        ":::\n"
+        "Outside\n"
+    )
+    assert glossary_links.glossary_entries(source) == [
+        ["A posteriori"],
+        ["term", "synonym"],
+        ["next"],
+        ["second"],
+    ]
+    assert glossary_links.glossary_entries("no glossary\n") == []
+
+
+@pytest.mark.parametrize(
+    ("term", "text", "match"),
+    [("dB", "DB here", "DB"), ("dB", "dB here", "dB"), ("x", "X here", "X"), ("X", "x here", None)],
+)
+def test_term_pattern_capital_first_letter(term, text, match):
+    m = glossary_links.term_pattern(term).search(text)
+    assert (m.group(0) if m else None) == match
+
+
+def test_matcher_ignores_terms_in_either_case_and_sorts_longest_first():
+    m = glossary_links.Matcher([["coupled"], ["tightly coupled"], ["Consistent", "fine"]], {"consistent"})
+    assert [(i, t) for i, t, _ in m.patterns] == [(1, "tightly coupled"), (0, "coupled"), (2, "fine")]
+    m = glossary_links.Matcher([["Consistent"]], {"Consistent"})
+    assert m.patterns == []
+
+
+@pytest.mark.parametrize(
+    ("entries", "text", "done", "expected"),
+    [
+        ([["Kalman filter"], ["Kalman"]], "a Kalman filter", set(), (2, 15, 0, "Kalman filter")),
+        ([["Kalman filter"], ["filter bank"]], "Kalman filter bank", set(), (0, 13, 0, "Kalman filter")),
+        ([["CEP"], ["CEP"]], "the CEP", set(), (4, 7, 0, "CEP")),
+        ([["CEP"], ["fix"]], "CEP fix CEP", {0}, (4, 7, 1, "fix")),
+        ([["CEP"], ["fix"]], "CEP fix CEP", {0, 1}, None),
+        ([["tightly coupled"], ["coupled"]], "tightly coupled, then coupled", {0}, (22, 29, 1, "coupled")),
+        ([["CEP"]], "nothing", set(), None),
+    ],
+)
+def test_matcher_first(entries, text, done, expected):
+    assert glossary_links.Matcher(entries, set()).first(text, done) == expected
+
+
+def _in(*parents: nodes.Element) -> nodes.Text:
+    """A Text node inside the given chain of elements (outermost first)."""
+    for outer, inner in itertools.pairwise(parents):
+        outer += inner
+    text = nodes.Text("CEP")
+    parents[-1].append(text)
+    return text
+
+
+@pytest.mark.parametrize(
+    ("chain", "skipped"),
+    [
+        (lambda: (nodes.section(), nodes.paragraph()), False),
+        (lambda: (nodes.container(classes=["cell_output"]), nodes.paragraph()), True),
+        (lambda: (nodes.container(classes=["x", "output"]), nodes.paragraph()), True),
+        (lambda: (nodes.container(classes=["glossary"]),), True),
+        (lambda: (nodes.container(classes=["other"]), nodes.paragraph()), False),
+        (lambda: (nodes.section(), nodes.title()), True),
+        (lambda: (nodes.paragraph(), nodes.literal()), True),
+        (
+            lambda: (
+                nodes.table(),
+                nodes.tgroup(),
+                nodes.thead(),
+                nodes.row(),
+                nodes.entry(),
+                nodes.paragraph(),
+            ),
+            True,
+        ),
+        (
+            lambda: (
+                nodes.table(),
+                nodes.tgroup(),
+                nodes.tbody(),
+                nodes.row(),
+                nodes.entry(),
+                nodes.paragraph(),
+            ),
+            False,
+        ),
+    ],
+)
+def test_skipped(chain, skipped):
+    assert glossary_links._skipped(_in(*chain())) is skipped
+
+
+def test_skipped_header_cell_outside_a_table_group():
+    """A header row's cell is skipped by its row's parent (thead) even without the SKIP_NODES match."""
+    head = nodes.thead()
+    row = nodes.row()
+    entry = nodes.entry()
+    head += row
+    row += entry
+    text = nodes.Text("CEP")
+    entry += text
+    saved = glossary_links.SKIP_NODES
+    try:
+        glossary_links.SKIP_NODES = tuple(n for n in saved if n is not nodes.thead)
+        assert glossary_links._skipped(text) is True
+    finally:
+        glossary_links.SKIP_NODES = saved
+
+
+class _GlossEnv:
+    def __init__(self, docname="page", found=("page", "glossary", "reference/api")):
+        self.docname = docname
+        self.serials: list[str] = []
+        self.found_docs = set(found)
+        self.config = SimpleNamespace(
+            glossary_links_docname="glossary", glossary_links_exclude=["reference/"]
+        )
+
+    def new_serialno(self, category):
+        self.serials.append(category)
+        return len(self.serials) - 1
+
+
+def _transform(paragraph_text: str, matcher, docname="page"):
+    doc = nodes.section()
+    para = nodes.paragraph()
+    para += nodes.Text(paragraph_text)
+    doc += para
+    noted = []
+    document = SimpleNamespace(findall=doc.findall, note_explicit_target=noted.append)
+    app = SimpleNamespace() if matcher is None else SimpleNamespace(_glossary_links_matcher=matcher)
+    t = SimpleNamespace(env=_GlossEnv(docname), app=app, document=document)
+    t._link_in = lambda *a: glossary_links.GlossaryLinks._link_in(t, *a)
+    t._link = lambda *a: glossary_links.GlossaryLinks._link(t, *a)
+    return t, para, noted
+
+
+def test_glossary_links_nodes():
+    matcher = glossary_links.Matcher([["CEP"], ["fix"]], set())
+    t, para, noted = _transform("The CEP of a fix, the CEP.", matcher)
+    glossary_links.GlossaryLinks.apply(t)
+    kinds = [type(n).__name__ for n in para.children]
+    assert kinds == [
+        "Text",
+        "index",
+        "target",
+        "pending_xref",
+        "Text",
+        "index",
+        "target",
+        "pending_xref",
+        "Text",
+    ]
+    assert [para[0].astext(), para[4].astext(), para[8].astext()] == ["The ", " of a ", ", the CEP."]
+    index, target, xref = para[1], para[2], para[3]
+    assert index["entries"] == [("single", "CEP", "index-0", "", None)] and index["inline"] is True
+    assert target["ids"] == ["index-0"] and target.rawsource == "" and target.astext() == ""
+    assert noted == [target, para[6]]
+    assert xref.attributes | {} == {
+        **xref.attributes,
+        "refdomain": "std",
+        "reftype": "term",
+        "reftarget": "CEP",
+        "refexplicit": True,
+        "refwarn": True,
+        "refdoc": "page",
+    }
+    (inline,) = xref.children
+    assert inline.rawsource == "CEP" and inline.astext() == "CEP"
+    assert inline["classes"] == ["xref", "std", "std-term", "glossary-link"]
+    assert t.env.serials == ["index", "index"]
+    assert para[7]["reftarget"] == "fix" and para[5]["entries"][0][2] == "index-1"
+
+
+def test_glossary_links_only_where_they_should():
+    matcher = glossary_links.Matcher([["CEP"]], set())
+    for t, para, _ in (
+        _transform("The CEP.", None),  # no glossary read
+        _transform("The CEP.", glossary_links.Matcher([], set())),  # an empty glossary
+        _transform("The CEP.", matcher, docname="glossary"),  # the glossary itself
+        _transform("The CEP.", matcher, docname="reference/api"),  # an excluded part
+    ):
+        glossary_links.GlossaryLinks.apply(t)
+        assert [type(n).__name__ for n in para.children] == ["Text"]
+    t, para, _ = _transform("CEP", matcher)
+    glossary_links.GlossaryLinks.apply(t)
+    assert [type(n).__name__ for n in para.children] == ["index", "target", "pending_xref"]
+
+
+def test_glossary_links_not_without_a_glossary_page():
+    env = _GlossEnv(found=("page",))
+    assert glossary_links._is_excluded("page", env) is True
+    assert glossary_links._is_excluded("page", _GlossEnv()) is False
+    assert glossary_links._is_excluded("reference/x", _GlossEnv()) is True
+
+
+def test_read_glossary_and_outdated(tmp_path):
+    (tmp_path / "glossary.md").write_text(
+        "% glossary-links ignore: b\n```{glossary}\nA1\n  x\nb\n  y\nc\n  z\n```\n"
+    )
+    config = SimpleNamespace(glossary_links_docname="glossary", glossary_links_ignore=["c"])
+    app = SimpleNamespace(config=config, srcdir=str(tmp_path))
+    glossary_links._read_glossary(app)
+    import hashlib
+
+    digest = hashlib.sha256((tmp_path / "glossary.md").read_bytes()).hexdigest()
+    assert app._glossary_links_source_hash == digest
+    assert [(i, t) for i, t, _ in app._glossary_links_matcher.patterns] == [(0, "A1")]
+    env = SimpleNamespace(found_docs={"a", "b", "c", "glossary"})
+    assert sorted(glossary_links._outdated(app, env, {"a"}, {"b"}, set())) == ["c", "glossary"]
+    assert env.glossary_links_source_hash == digest
+    assert glossary_links._outdated(app, env, set(), set(), set()) == []
+    # an rst glossary, and none at all
+    (tmp_path / "glossary.md").unlink()
+    (tmp_path / "glossary.rst").write_text(".. glossary::\n")
+    glossary_links._read_glossary(app)
+    assert app._glossary_links_source_hash == hashlib.sha256(b".. glossary::\n").hexdigest()
+    (tmp_path / "glossary.rst").unlink()
+    glossary_links._read_glossary(app)
+    assert app._glossary_links_source_hash == hashlib.sha256(b"").hexdigest()
+    assert app._glossary_links_matcher.patterns == []
