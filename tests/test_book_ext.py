@@ -151,6 +151,8 @@ def test_setup_registers_its_handlers(name):
     app = _Recorder()
     assert globals()[name].setup(app) == metadata  # the module these expectations name
     assert app.calls == calls
+    if name == "subset_references":  # the counts the build's report reads
+        assert app.__dict__["_subset_counts"] == Counter()
     for call in app.calls:
         if call[0] == "connect":
             assert call[1] in set(core_events) | OTHER_EVENTS
@@ -202,10 +204,12 @@ def test_pasted_numbers_are_tidied_and_other_text_is_left_alone():
     doc += _pasted("9.5e-04 and -0.0", ["pasted-text"])
     doc += _pasted("9.5e-04", ["other"])
     doc += _pasted("12", ["pasted-text"])
+    doc += _pasted("1.0e-05", ["pasted-text"])
     transform = SimpleNamespace(document=doc)
     number_text.TidyPastedNumbers.run(transform)
     texts = [n.astext() for n in doc.children]
-    assert texts == [tidy_numbers("9.5e-04 and -0.0"), "9.5e-04", "12"]
+    assert texts == [tidy_numbers("9.5e-04 and -0.0"), "9.5e-04", "12", tidy_numbers("1.0e-05")]
+    assert texts[3] != "1.0e-05"
     assert texts[0] != "9.5e-04 and -0.0"  # the oracle does change it
     assert all(isinstance(c, nodes.Text) for n in doc.children for c in n.children)
 
@@ -356,6 +360,31 @@ def test_skip_class_data(what, obj, skip, expected):
     assert api_reference._skip_class_data(None, what, "n", obj, skip, None) is expected
 
 
+def test_class_fields_of_every_kind(tmp_path, monkeypatch):
+    """Inherited dataclass fields, a named tuple without annotations, a plain annotated class;
+    and a module reached only by its dotted name (not as an attribute of its package)."""
+    (tmp_path / "fieldpkg").mkdir()
+    (tmp_path / "fieldpkg" / "__init__.py").write_text("")
+    (tmp_path / "fieldpkg" / "sub.py").write_text(
+        "import collections\n"
+        "from dataclasses import dataclass\n"
+        "@dataclass\n"
+        "class Base:\n    a: int\n"
+        "@dataclass\n"
+        "class Child(Base):\n    b: int\n"
+        "Point = collections.namedtuple('Point', 'x y')\n"
+        "class Plain:\n    z: int\n"
+    )
+    monkeypatch.syspath_prepend(str(tmp_path))
+    import fieldpkg
+    import fieldpkg.sub
+
+    monkeypatch.delattr(fieldpkg, "sub")
+    assert api_reference._class_fields("fieldpkg.sub.Child") == {"a", "b"}
+    assert api_reference._class_fields("fieldpkg.sub.Point") == {"x", "y"}
+    assert api_reference._class_fields("fieldpkg.sub.Plain") == {"z"}
+
+
 def test_class_fields():
     here = __name__
     assert api_reference._class_fields(f"{here}.Sample") == {"count", "label", "LIMIT"}
@@ -444,14 +473,18 @@ def test_citation_urls_are_printed_as_addresses():
     doc = nodes.section()
     doi = nodes.reference("", "10.1/x", refuri="https://doi.org/10.1/x")
     same = nodes.reference("", "http://a.b", refuri="http://a.b")
+    plain_http = nodes.reference("", "a page", refuri="http://e.f/g")
+    internal = nodes.reference("", "internal", refid="x")
     local = nodes.reference("", "see", refuri="#x")
     outside = nodes.reference("", "elsewhere", refuri="https://c.d")
-    doc += _citation("k", nodes.paragraph("", "", doi, same, local))
+    doc += _citation("k", nodes.paragraph("", "", doi, same, plain_http, internal, local))
     doc += nodes.paragraph("", "", outside)
     pdf_layout.CitationUrlsInline.run(SimpleNamespace(document=doc))
     assert [r.astext() for r in doc.findall(nodes.reference)] == [
         "https://doi.org/10.1/x",
         "http://a.b",
+        "http://e.f/g",
+        "internal",
         "see",
         "elsewhere",
     ]
@@ -529,10 +562,10 @@ class _Writer:
         self.calls: list[str] = []
 
     def visit_citation(self, node):
-        self.calls.append("visit")
+        self.calls.append(("visit", node))
 
     def depart_citation(self, node):
-        self.calls.append("depart")
+        self.calls.append(("depart", node))
 
 
 @pytest.mark.parametrize(
@@ -549,15 +582,17 @@ def test_admonition_boxes(classes, kind):
     assert writer.body[-1] == "\\end{sphinxadmonition}\n"
     assert writer.no_latex_floats == 0
     outside = _Writer(None)
+    outside.no_latex_floats = 2  # nested in another float-free box
     pdf_layout._visit_admonition(outside, nodes.admonition())
-    assert outside.table is None and outside.no_latex_floats == 1
+    assert outside.table is None and outside.no_latex_floats == 3
 
 
 def test_in_place_citation_is_printed_as_a_citation():
     writer = _Writer()
-    pdf_layout._visit_in_place_citation(writer, nodes.citation())
-    pdf_layout._depart_in_place_citation(writer, nodes.citation())
-    assert writer.calls == ["visit", "depart"]
+    node = nodes.citation()
+    pdf_layout._visit_in_place_citation(writer, node)
+    pdf_layout._depart_in_place_citation(writer, node)
+    assert writer.calls == [("visit", node), ("depart", node)]
 
 
 # --- book_downloads ---------------------------------------------------------------------------------
@@ -877,14 +912,24 @@ def test_missing_reference_reads_the_current_page_when_the_node_has_none(tmp_pat
     node = _ref("std", "doc", "../wf/01-model")
     out = subset_references.missing_reference(app, app.env, node, nodes.Text("x"))
     assert out.astext() == "The model"
+    # a page name relative to the node's own page, not the page being resolved
+    node = _ref("std", "doc", "01-model", refdoc="wf/02-other")
+    out = subset_references.missing_reference(app, app.env, node, nodes.Text("x"))
+    assert out.astext() == "The model"
+    node = _ref("std", "doc", "01-model")
+    assert subset_references.missing_reference(app, app.env, node, nodes.Text("x")) is None
 
 
 def test_myst_links_outside(tmp_path):
     app = _subset_app(tmp_path, docname="kzl/01-page")
     std = SimpleNamespace(labels={"eq-two": 1}, anonlabels={"api-top": 1})
     env = app.env
-    env.get_domain = lambda name: std
+    env.get_domain = lambda name: {"std": std}[name]
     para = nodes.paragraph()
+    other = addnodes.pending_xref(
+        "", nodes.Text("o"), refdomain="doc", reftype="doc", reftarget="wf/01-model"
+    )
+    para.append(other)  # not a MyST link: left alone, and the links after it are still read
 
     def link(domain, target, **attrs):
         node = addnodes.pending_xref(
@@ -902,29 +947,27 @@ def test_myst_links_outside(tmp_path):
     link("doc", "wf/01-model", refexplicit=True)  # its own words
     link("doc", "intro")  # inside: left to MyST
     link("doc", "wf/none")  # no such page
+    link("doc", "bad")  # a page outside without a title: its name
     link(None, "WF-model")  # a label outside
     link(None, "eq-two")  # defined inside too (Sphinx's labels)
     link(None, "api-top")  # an anonymous label inside
     link(None, "nope")
-    other = addnodes.pending_xref(
-        "", nodes.Text("o"), refdomain="doc", reftype="doc", reftarget="wf/01-model"
-    )
-    para.append(other)
     transform = SimpleNamespace(env=env, app=app, document=para)
     subset_references.MystLinksOutside.run(transform)
     out = [(type(n).__name__, n.astext()) for n in para.children]
     assert out == [
+        ("pending_xref", "o"),
         ("inline", "The model"),
         ("inline", "text wf/01-model"),
         ("pending_xref", "text intro"),
         ("pending_xref", "text wf/none"),
+        ("inline", "bad"),
         ("inline", "text WF-model"),
         ("pending_xref", "text eq-two"),
         ("pending_xref", "text api-top"),
         ("pending_xref", "text nope"),
-        ("pending_xref", "o"),
     ]
-    assert app._subset_counts == Counter({"page": 2, "label": 1})
+    assert app._subset_counts == Counter({"page": 3, "label": 1})
     assert subset_references.MystLinksOutside.default_priority == 8
 
 
