@@ -1234,3 +1234,158 @@ def test_read_glossary_and_outdated(tmp_path):
     glossary_links._read_glossary(app)
     assert app._glossary_links_source_hash == hashlib.sha256(b"").hexdigest()
     assert app._glossary_links_matcher.patterns == []
+
+
+# --- book_presentation and paper_equations: the parts the toy builds leave open ---------------------
+
+
+@pytest.mark.parametrize(
+    ("source", "statements"),
+    [
+        ("a = 1\nb = 2", [["a = 1"], ["b = 2"]]),
+        ("f(1,\n  2)\nx", [["f(1,", "  2)"], ["x"]]),
+        ("s = '(' + \"[\"  # (\nt", [["s = '(' + \"[\"  # ("], ["t"]]),
+        ("x = (1 +  \\\n 2)\ny", [["x = (1 +  \\", " 2)"], ["y"]]),
+        ("x = 1 + \\\n 2\ny", [["x = 1 + \\", " 2"], ["y"]]),
+        ("x = 1 + \\   \n 2", [["x = 1 + \\   ", " 2"]]),
+        ("a = [1,\n2]]\nb = (3,\n4)", [["a = [1,", "2]]"], ["b = (3,", "4)"]]),
+        ("g(\n", [["g("]]),
+    ],
+)
+def test_statements_follow_brackets_strings_and_backslashes(source, statements):
+    assert book_presentation._statements(source) == statements
+
+
+def test_strip_helpers_keeps_the_cell_and_trims_only_newlines():
+    source = "\nfrom navcore import book\nbook.setup()\n  x = 1\nglue('a', x)\n\n"
+    assert book_presentation.strip_helpers(source) == "  x = 1"
+    assert book_presentation.strip_helpers("\n\n y = 2 \n") == " y = 2 "
+
+
+@pytest.mark.parametrize(("docname", "chapter"), [("wf/01-page", "wf"), ("intro", ""), ("a/b/c", "a")])
+def test_chapter_of_a_page(docname, chapter):
+    assert book_presentation._chapter(docname) == chapter
+
+
+def test_renumber_leaves_equations_code_tables_and_solutions():
+    env = SimpleNamespace(
+        toc_fignumbers={
+            "intro": {
+                "displaymath": {"eq": (7,)},
+                "code-block": {"c": (8,)},
+                "table": {"t": (9,)},
+                "figure": {"fig-own": (1,)},
+            },
+            "wf/01": {
+                "solution": {"sol": (5,)},
+                "theorem": {"thm": (1,)},
+                "exercise": {"ex1": (2,), "ex2": (3,)},
+            },
+        }
+    )
+    book_presentation._renumber(None, env)  # no paper theorem numbers recorded at all
+    n = env.toc_fignumbers
+    assert n["intro"] == {
+        "displaymath": {"eq": (7,)},
+        "code-block": {"c": (8,)},
+        "table": {"t": (9,)},
+        "figure": {"fig-own": ("N1",)},
+    }
+    assert n["wf/01"] == {
+        "solution": {"sol": (5,)},
+        "theorem": {"thm": ("N1",)},
+        "exercise": {"ex1": ("1",), "ex2": ("2",)},
+    }
+    env = SimpleNamespace(
+        toc_fignumbers={"kzl/01": {"theorem": {"a": (1,), "b": (2,)}}},
+        paper_theorem_numbers={"wf/01": {"a": "9.9"}},
+    )
+    book_presentation._renumber(None, env)  # numbers of another page do not apply
+    assert env.toc_fignumbers["kzl/01"]["theorem"] == {"a": ("N1",), "b": ("N2",)}
+
+
+def _latex_app(fmt: str = "latex") -> SimpleNamespace:
+    return SimpleNamespace(builder=SimpleNamespace(format=fmt))
+
+
+def _proof_box(classes: list[str], text: str, title: str | None = None) -> nodes.admonition:
+    box = nodes.admonition(classes=classes)
+    if title is not None:
+        box += nodes.title("", title)
+    box += nodes.paragraph("", text)
+    return box
+
+
+def test_print_proof_titles():
+    doc = nodes.section()
+    doc += _proof_box(["theorem"], "Theorem. Not a proof box.")
+    doc += _proof_box(["proof"], "Proof. It follows.", title="Proof")  # titled already
+    doc += _proof_box(["proof"], "Proof. It follows.")
+    doc += _proof_box(["proof", "lemma"], "Lemma. A lemma's proof.")
+    doc += _proof_box(["proof"], "No prefix here.")
+    book_presentation._print_proof_titles(_latex_app(), doc, "p")
+    shown = [[(type(c).__name__, c.astext(), c.rawsource) for c in box.children] for box in doc.children]
+    assert shown == [
+        [("paragraph", "Theorem. Not a proof box.", "")],
+        [("title", "Proof", ""), ("paragraph", "Proof. It follows.", "")],
+        [("title", "Proof", ""), ("paragraph", "It follows.", "")],
+        [("title", "Lemma", ""), ("paragraph", "A lemma's proof.", "")],
+        [("title", "Proof", ""), ("paragraph", "No prefix here.", "")],
+    ]
+    empty = nodes.section()
+    empty += nodes.admonition(classes=["proof"])  # no text at all
+    book_presentation._print_proof_titles(_latex_app(), empty, "p")
+    assert [type(c).__name__ for c in empty[0].children] == ["title"]
+    html = nodes.section()
+    html += _proof_box(["proof"], "Proof. x")
+    book_presentation._print_proof_titles(_latex_app("html"), html, "p")
+    assert [type(c).__name__ for c in html[0].children] == ["paragraph"]
+
+
+def test_print_hidden_inputs_drops_only_folded_sources():
+    def cell(classes):
+        c = nodes.container(classes=classes)
+        c += nodes.container("", nodes.Text("src"), classes=["cell_input"])
+        c += nodes.container("", nodes.Text("out"), classes=["cell_output"])
+        return c
+
+    doc = nodes.section()
+    doc += cell(["cell", "tag_hide-input"])
+    doc += cell(["cell"])
+    doc += cell(["other", "tag_hide-input"])
+    book_presentation._print_hidden_inputs(_latex_app(), doc, "p")
+    assert [c.astext() for c in doc.children] == ["out", "src\n\nout", "src\n\nout"]
+
+
+def test_words_links_in_text_font():
+    para = nodes.paragraph()
+    para += nodes.literal("", "the federated fusion", classes=["xref", "py"])
+    para += nodes.literal("", "federated_fuse", classes=["xref", "py"])
+    para += nodes.literal("", "a b", classes=["code"])
+    book_presentation._words_links_in_text_font(None, para, "p")
+    first = para[0]
+    assert isinstance(first, nodes.inline) and first["classes"] == ["api-link", "xref", "py"]
+    assert first.astext() == "the federated fusion" and first.rawsource == ""
+    assert [type(c).__name__ for c in para.children] == ["inline", "literal", "literal"]
+
+
+def test_paper_equation_tags_per_page_merge_and_renumber():
+    def doc_with(label, node_id):
+        doc = nodes.section()
+        doc += nodes.math_block("", "x", label=label, ids=[node_id])
+        return doc
+
+    env = SimpleNamespace(docname="wf/01")
+    app = SimpleNamespace(env=env)
+    paper_equations._collect(app, doc_with("own", "eq-own"))
+    env.docname = "wf/02"
+    paper_equations._collect(app, doc_with("own2", "eq-own2"))
+    assert env.paper_equation_tags == {"wf/01": {"eq-own": "N1"}, "wf/02": {"eq-own2": "N1"}}
+    paper_equations._merge(app, env, set(), SimpleNamespace())  # a worker that collected nothing
+    assert set(env.paper_equation_tags) == {"wf/01", "wf/02"}
+    fresh = SimpleNamespace()
+    paper_equations._merge(app, fresh, set(), env)
+    assert fresh.paper_equation_tags == env.paper_equation_tags
+    bare = SimpleNamespace(toc_fignumbers={"p": {}})
+    assert paper_equations._renumber(None, bare) == [] and bare.toc_fignumbers == {"p": {}}
+    paper_equations._purge(None, SimpleNamespace(), "p")  # nothing collected: nothing to purge
