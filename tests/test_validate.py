@@ -1032,3 +1032,233 @@ def test_exported_names():
     assert set(v.__all__) <= set(dir(v))
     assert v.MAX_LOOP_COUNT == 10_000_000 and v.UNIT_TOLERANCE == 1e-6 and v.MAX_DECIBELS == 3000.0
     assert re.fullmatch(r"[a-z_ ]+", " ".join(v.RESULT_RECORDS).lower().replace("_", "")) is not None
+
+
+# --- the edges a first mutation run found open (issue 31) -----------------------------------------------
+
+
+def _with_eigen(values: Sequence[float], vectors: np.ndarray) -> np.ndarray:
+    """Oracle: the symmetric matrix V diag(values) V^T with orthonormal columns V."""
+    q, _ = np.linalg.qr(vectors)
+    return q @ np.diag(values) @ q.T
+
+
+# one direction per column: the first column is the eigenvector of the first value
+_DIRS3 = np.array([[1.0, 1.0, 1.0], [1.0, -1.0, 1.0], [1.0, 0.0, -2.0]]).T
+
+
+@pytest.mark.parametrize(
+    ("values", "ok"),
+    [
+        # the fast Cholesky path fails (its shift, 1e-9 x the largest diagonal element, is below
+        # 0.7e-9), the eigenvalue margin (1e-9 x the largest eigenvalue, 1) accepts
+        ([1.0, 0.5, -0.7e-9], True),
+        ([1.0, 0.5, -1.2e-9], False),
+        # the margin follows the largest eigenvalue (0.5 here), not 1
+        ([0.5, 0.25, -0.4e-9], True),
+        ([0.5, 0.25, -0.8e-9], False),
+        # a large matrix: the margin is relative (1e-9 x 100)
+        ([100.0, 1.0, -5e-8], True),
+        ([100.0, 1.0, -2e-7], False),
+    ],
+)
+def test_psd_margin_is_relative_to_the_largest_eigenvalue(values, ok):
+    """Oracle: the eigenvalues the matrix is built from, against -1e-9 x the largest."""
+    arr = _with_eigen(values, _DIRS3)
+    assert ok == (min(values) >= -1e-9 * max(values))
+    for check in (
+        lambda: v.require_symmetric_psd("P", arr),
+        lambda: v.check_symmetric_psd("P", arr.copy()),
+        lambda: v.COVARIANCE.check("P", arr),
+        lambda: v.COVARIANCE_STACK.check("P", np.stack([np.eye(3), arr])),
+    ):
+        if ok:
+            check()
+        else:
+            with pytest.raises(
+                ValueError, match=r"^P must be positive semi-definite \(smallest eigenvalue -"
+            ):
+                check()
+
+
+def test_psd_shift_is_on_the_diagonal_only_and_scales_with_the_matrix():
+    """A negative eigenvalue along (1, 0, 1) that a shift of the corners too would hide, and a
+    small matrix whose shift is relative to its size (1e-9 x 6e-4, not 1e-9 / 6e-4)."""
+    corners = _with_eigen(
+        [-1.5e-9, 1.0, 1.0], np.array([[1.0, 0.0, 1.0], [0.0, 1.0, 0.0], [1.0, 0.0, -1.0]]).T
+    )
+    small = _with_eigen([1e-3, -2e-12], np.array([[0.6, 0.8], [-0.8, 0.6]]).T)
+    for arr in (corners, small):
+        with pytest.raises(ValueError, match=r"^P must be positive semi-definite"):
+            v.check_symmetric_psd("P", arr.copy())
+
+
+def test_psd_defaults_and_definite_messages():
+    v.check_symmetric_psd("P", np.ones((2, 2)))  # semi-definite by default
+    with pytest.raises(ValueError, match=r"^P must be positive semi-definite"):
+        v.check_symmetric_psd("P", _with_eigen([1.0, -2e-9], np.eye(2) + 0.3))  # rtol 1e-9 by default
+    _raises(
+        ValueError,
+        "P must be positive definite (smallest eigenvalue 0)",
+        lambda: v.require_symmetric_psd("P", np.diag([0.0, 1.0]), definite=True),
+    )
+    _raises(
+        ValueError,
+        "P must be a square matrix, got shape (2, 3)",
+        lambda: v.require_symmetric_psd("P", np.ones((2, 3))),
+    )
+
+
+@pytest.mark.parametrize("scale", [1.0, 100.0, 1e-200])
+def test_symmetry_bound_is_ten_rtol_times_the_scale(scale):
+    """Oracle: |A - A^T| <= 10 rtol max|A| (rtol = 2^-20, so that the bound is exact in floats)."""
+    rtol = 2.0**-20
+    bound = 10 * rtol * scale
+    at = np.array([[scale, 0.0], [bound, scale]])
+    v.require_symmetric_psd("P", at, rtol=rtol)
+    v.Covariance(rtol=rtol).check("P", at)
+    beyond = np.array([[scale, 0.0], [bound * (1 + 2**-40), scale]])
+    beyond_11 = np.array([[scale, 0.0], [bound * 1.05, scale]])
+    for arr in (beyond, beyond_11):
+        _raises(
+            ValueError, "P must be symmetric", lambda arr=arr: v.require_symmetric_psd("P", arr, rtol=rtol)
+        )
+        _raises(ValueError, "P must be symmetric", lambda arr=arr: v.Covariance(rtol=rtol).check("P", arr))
+
+
+def test_covariance_stacks_read_each_matrix():
+    _raises(
+        ValueError,
+        "P must be positive semi-definite (a diagonal entry is -1)",
+        lambda: v.COVARIANCE_STACK.check("P", np.stack([np.diag([1.0, 2.0]), np.diag([3.0, -1.0])])),
+    )
+    asym = np.array([[1.0, 0.5], [0.0, 1.0]])
+    _raises(
+        ValueError, "P must be symmetric", lambda: v.COVARIANCE_STACK.check("P", np.stack([np.eye(2), asym]))
+    )
+    v.Covariance(definite=True).check("P", np.array([[2.0, 1.0], [1.0, 2.0]]))  # smallest eigenvalue 1
+    both = v.Covariance(stack=True, allow_inf_diagonal=True)
+    _raises(
+        ValueError,
+        "P must be positive semi-definite (a diagonal entry is -1)",
+        lambda: both.check("P", np.stack([np.diag([INF, 1.0]), np.diag([1.0, -1.0])])),
+    )
+    both.check("P", np.stack([np.diag([INF, 1.0]), np.diag([1.0, INF])]))
+
+
+def test_infinite_variance_rows_become_zero():
+    ok = v.Covariance(allow_inf_diagonal=True)
+    ok.check("P", np.diag([INF, 0.25]))  # the infinite row and column are left out, not set to 1
+    _raises(
+        ValueError,
+        "P must be positive semi-definite (a diagonal entry is -1)",
+        lambda: ok.check("P", np.diag([INF, -1.0])),
+    )
+
+
+def test_potrf_loads_lapack_once(monkeypatch):
+    monkeypatch.setattr(v, "_DPOTRF", None)
+    lower, info = v._potrf(np.array([[4.0]]))
+    assert info == 0 and lower[0, 0] == 2.0
+    assert v._DPOTRF is not None
+    cached = v._DPOTRF
+    v._potrf(np.array([[1.0]]))
+    assert v._DPOTRF is cached
+
+
+def test_unit_quaternion_reports_the_worst_norm():
+    q = np.array([1.0, 0.0, 0.0, 0.0])
+    with pytest.raises(ValueError, match=r"got a norm of 1\.2;"):
+        v.UNIT_QUATERNION_STACK.check("q", [q, 1.2 * q])
+
+
+def test_rotation_determinant_of_a_general_matrix():
+    """Oracle: numpy.linalg.det of a rotation with every element non-zero, and of its negative."""
+    a, b, c = 0.3, -0.7, 1.1
+    rx = np.array([[1, 0, 0], [0, math.cos(a), -math.sin(a)], [0, math.sin(a), math.cos(a)]])
+    ry = np.array([[math.cos(b), 0, math.sin(b)], [0, 1, 0], [-math.sin(b), 0, math.cos(b)]])
+    rz = np.array([[math.cos(c), -math.sin(c), 0], [math.sin(c), math.cos(c), 0], [0, 0, 1]])
+    r = rx @ ry @ rz
+    assert np.all(np.abs(r) > 0.05) and np.linalg.det(r) == pytest.approx(1.0)
+    v.ROTATION.check("C", r)
+    v.ROTATION_STACK.check("C", np.stack([r, r.T]))
+    for m in (-r, r[[1, 0, 2]]):
+        assert np.linalg.det(m) == pytest.approx(-1.0)
+        _raises(
+            ValueError,
+            "C must be a proper rotation matrix (det +1), got a reflection (det -1)",
+            lambda m=m: v.ROTATION.check("C", m),
+        )
+
+
+@pytest.mark.parametrize(
+    ("annotation", "expected"),
+    [
+        ("Sequence[float] | None", (None, False)),
+        ("NDArray[np.dtype[np.float64]]", ("array", False)),
+        ("float | int | np.floating | np.integer", ("number", False)),
+        (3, (None, False)),  # no __name__
+    ],
+)
+def test_kind_more(annotation, expected):
+    assert v._kind(annotation) == expected
+
+
+def test_classes_more():
+    import typing
+
+    ns = {"Thing": Thing, "Generic": typing.Generic}
+    assert v._classes("None | Thing", ns) == (type(None), Thing)
+    assert v._classes("Thing | bool", ns) == (Thing, bool, np.bool_)
+    assert v._classes("Thing | float", ns) == (Thing, float, int, np.floating, np.integer)
+    assert v._classes("Generic", ns) is None  # a class of the typing module
+
+
+def test_container_list_head():
+    assert v._container("list[Thing]", NS) == ["sequence", (Thing,)]
+
+
+def test_checked_more():
+    def f(
+        x: float, window: tuple[float, float] | None = None, pair: tuple[float, float] = (0.0, 1.0)
+    ) -> float:
+        return x
+
+    g = v.checked(f, ranges={"window": v.NONNEGATIVE, "pair": v.NONNEGATIVE})
+    assert g(1.0, None) == 1.0 and g(1.0, window=(1.0, 2.0)) == 1.0
+    _raises(
+        ValueError,
+        "window must be >= 0, got 'an array with 1 element(s) outside'",
+        lambda: g(1.0, (1.0, -1.0)),
+    )
+    _raises(TypeError, "pair must be a number or an array of numbers, got None", lambda: g(1.0, pair=None))
+
+    def star(x: float, *rest: float, k: float = 0.0) -> float:
+        return x
+
+    assert v.checked(star)(1.0, 2.0, NAN, k=1.0) == 1.0  # *rest is left to the function
+    _raises(ValueError, "k must be finite (no NaN or infinity), got nan", lambda: v.checked(star)(1.0, k=NAN))
+
+    @v.checked(ranges={"p": v.PROBABILITY})
+    def decorated(p: float) -> float:
+        return p
+
+    assert decorated(0.5) == 0.5
+    _raises(ValueError, "p must be in [0, 1], got 2.0", lambda: decorated(2.0))
+
+
+def test_check_public_module_ranges_reach_functions_and_own_options_reach_constructors():
+    import dataclasses
+
+    def h(p: float) -> float:
+        return p
+
+    @dataclasses.dataclass
+    class Box:
+        t: float
+
+    Box.__module__ = "mod"
+    ns = {"__name__": "mod", "__all__": ["h", "Box"], "h": h, "Box": Box}
+    v.check_public(ns, {"p": v.PROBABILITY}, Box={"ranges": {"t": v.POSITIVE}})
+    _raises(ValueError, "p must be in [0, 1], got 2.0", lambda: ns["h"](2.0))
+    _raises(ValueError, "t must be > 0, got -1.0", lambda: Box(-1.0))
