@@ -757,6 +757,8 @@ GLOSSARY = """# Glossary
 :sorted:
 CEP
   Circular error probable.
+A posteriori
+  After the data.
 Kalman Filter
   A filter.
 %comment
@@ -773,7 +775,12 @@ After
 
 
 def test_glossary_terms():
-    assert subset_references._glossary_terms(GLOSSARY) == {"cep", "kalman filter", "tightly coupled"}
+    assert subset_references._glossary_terms(GLOSSARY) == {
+        "cep",
+        "a posteriori",
+        "kalman filter",
+        "tightly coupled",
+    }
     assert subset_references._glossary_terms("CEP\n") == set()
 
 
@@ -826,8 +833,16 @@ def test_outside_sources_and_what_they_define(tmp_path):
         "reference/api": "The API",
         "glossary": "Glossary",
     }
-    assert outside.terms == {"cep", "kalman filter", "tightly coupled"}
+    assert outside.terms == {"cep", "a posteriori", "kalman filter", "tightly coupled"}
     assert outside.modules == {"navcore.frames", "navcore.units", "navcore.ledger"}
+
+
+def test_outside_without_the_glossary_has_no_terms(tmp_path):
+    env = _env(_book(tmp_path), found=("intro", "glossary"))
+    outside = subset_references._Outside(env)
+    assert outside.terms == set()
+    app = SimpleNamespace(env=env, _subset_counts=Counter(), _subset_outside=outside)
+    assert subset_references.missing_reference(app, env, _ref("std", "term", "CEP"), nodes.Text("x")) is None
 
 
 def test_outside_is_computed_once_per_app(tmp_path):
@@ -842,6 +857,7 @@ def test_outside_is_computed_once_per_app(tmp_path):
         ("navcore.frames.quat_normalize", True),
         ("navcore.frames", True),
         ("navcore.frames._private", False),
+        ("navcore.frames.__name__", False),  # exists, but private
         ("navcore.frames.no_such_thing", False),
         ("navcore.estimation.kalman", False),  # not documented outside
         ("numpy.linalg", False),
@@ -897,6 +913,8 @@ def test_missing_reference_sets_what_lies_outside_as_text(tmp_path):
     # glossary terms
     assert resolve(_ref("std", "term", "Kalman filter")) == (plain, "cont")
     assert resolve(_ref("std", "term", "nope")) is None
+    assert resolve(_ref("std", "keyword", "Kalman filter")) is None  # not a term reference
+    assert resolve(_ref("c", "term", "Kalman filter")) is None
     # the API, with and without the current module
     assert resolve(_ref("py", "func", "navcore.frames.quat_normalize")) == (plain, "cont")
     assert resolve(_ref("py", "func", "quat_normalize", **{"py:module": "navcore.frames"})) == (plain, "cont")
@@ -1250,6 +1268,9 @@ def test_read_glossary_and_outdated(tmp_path):
         ("x = 1 + \\   \n 2", [["x = 1 + \\   ", " 2"]]),
         ("a = [1,\n2]]\nb = (3,\n4)", [["a = [1,", "2]]"], ["b = (3,", "4)"]]),
         ("g(\n", [["g("]]),
+        ("f(1,\n  2,\n  3)\ny", [["f(1,", "  2,", "  3)"], ["y"]]),
+        ("XX = (1,\n 2)\nXY = 3", [["XX = (1,", " 2)"], ["XY = 3"]]),
+        ("t = (1,\n X)\nX", [["t = (1,", " X)"], ["X"]]),
     ],
 )
 def test_statements_follow_brackets_strings_and_backslashes(source, statements):
@@ -1260,6 +1281,7 @@ def test_strip_helpers_keeps_the_cell_and_trims_only_newlines():
     source = "\nfrom navcore import book\nbook.setup()\n  x = 1\nglue('a', x)\n\n"
     assert book_presentation.strip_helpers(source) == "  x = 1"
     assert book_presentation.strip_helpers("\n\n y = 2 \n") == " y = 2 "
+    assert book_presentation.strip_helpers("X = 1\nglue('a', X)\nprint(X)\n") == "X = 1\nprint(X)"
 
 
 @pytest.mark.parametrize(("docname", "chapter"), [("wf/01-page", "wf"), ("intro", ""), ("a/b/c", "a")])
@@ -1389,3 +1411,33 @@ def test_paper_equation_tags_per_page_merge_and_renumber():
     bare = SimpleNamespace(toc_fignumbers={"p": {}})
     assert paper_equations._renumber(None, bare) == [] and bare.toc_fignumbers == {"p": {}}
     paper_equations._purge(None, SimpleNamespace(), "p")  # nothing collected: nothing to purge
+
+
+def test_paper_equations_setup_patches_an_unpatched_writer(monkeypatch):
+    from sphinx.writers.latex import LaTeXTranslator
+
+    def plain(self, node):
+        self.body.append("plain")
+
+    monkeypatch.setattr(LaTeXTranslator, "visit_math_block", plain)
+    paper_equations.setup(_Recorder())
+    patched = LaTeXTranslator.visit_math_block
+    assert patched is not plain and patched._paper_equations is True
+    writer = SimpleNamespace(body=[])
+    patched(writer, nodes.math_block("", "x"))
+    assert writer.body == ["plain"]
+
+
+def test_latex_visit_tags_the_last_label_once():
+    seen = []
+
+    def original(self, node):
+        seen.append(node)
+        self.body += ["\\begin{equation}\\label{a}", "\\label{b}\\label{c}x"]
+
+    visit = paper_equations._latex_visit_math_block(original)
+    writer = SimpleNamespace(body=["start"])
+    node = nodes.math_block("", "x", paper_tag="2.1")
+    visit(writer, node)
+    assert seen == [node]
+    assert writer.body == ["start", "\\begin{equation}\\label{a}", "\\tag{2.1}\\label{b}\\label{c}x"]
