@@ -1441,3 +1441,170 @@ def test_latex_visit_tags_the_last_label_once():
     visit(writer, node)
     assert seen == [node]
     assert writer.body == ["start", "\\begin{equation}\\label{a}", "\\tag{2.1}\\label{b}\\label{c}x"]
+
+
+# --- book_presentation: the doctree passes a build runs (here on hand-made doctrees) ----------------
+
+
+def _cell(source: str, output: bool) -> nodes.container:
+    cell = nodes.container(classes=["cell"])
+    cell_input = nodes.container(classes=["cell_input"])
+    cell_input += nodes.literal_block(source, source)
+    cell += cell_input
+    if output:
+        cell += nodes.container("", nodes.Text("out"), classes=["cell_output"])
+    return cell
+
+
+def test_hide_helpers():
+    doc = nodes.section()
+    doc += _cell("x = 1\nglue('a', x)\n", output=False)  # a helper inside: stripped
+    doc += _cell("glue('a', 1)\n", output=True)  # only a helper, with output: the input goes
+    doc += _cell("from navcore import book\nbook.setup()\n", output=False)  # nothing left: all goes
+    doc += _cell("\ny = 2\n", output=False)  # nothing to strip: left as it is
+    other = nodes.container(classes=["note"])
+    other += nodes.literal_block("glue('b', 2)", "glue('b', 2)")
+    doc += other  # not a cell input: left
+    bare = nodes.container(classes=["cell_input"])
+    bare += nodes.literal_block("glue('c', 3)", "glue('c', 3)")
+    holder = nodes.container(classes=["plain"])
+    holder += bare
+    doc += holder  # an input outside a cell: removed, its holder stays
+    book_presentation._hide_helpers(None, doc)
+    first = doc[0][0][0]
+    assert first.astext() == "x = 1" and first.rawsource == "x = 1"
+    assert [c["classes"] for c in doc[1].children] == [["cell_output"]]
+    assert [c.get("classes") for c in doc.children] == [["cell"], ["cell"], ["cell"], ["note"], ["plain"]]
+    assert doc[2][0][0].astext() == "\ny = 2\n"
+    assert doc[3][0].astext() == "glue('b', 2)"
+    assert doc[4].children == []
+
+
+def _figure(ids: list[str], caption: str | None) -> nodes.figure:
+    figure = nodes.figure(ids=ids)
+    if caption is not None:
+        figure += nodes.caption("", caption)
+    return figure
+
+
+@pytest.mark.parametrize(
+    ("ids", "caption", "expected"),
+    [
+        (["fig-atc10-2-1"], "Fig. 2.1: redrawn from the model.", "Redrawn from the model."),
+        (["x", "fig-wf-3"], "Figure 3 redrawn", "Redrawn"),
+        (["fig-atc10-2-1"], "Fig. 2.10 is another figure", "Fig. 2.10 is another figure"),
+        (["fig-atc10-2-1"], "The figure", "The figure"),
+        (["fig-own"], "Fig. 2.1: not a paper figure", "Fig. 2.1: not a paper figure"),
+        (["fig-atc10-3-3-to-3-6"], "Fig. 3.3\u20133.6. four panels", "Four panels"),
+    ],
+)
+def test_captions_drop_the_repeated_number(ids, caption, expected):
+    doc = nodes.section()
+    doc += _figure(ids, caption)
+    book_presentation._captions(None, doc)
+    assert doc[0][0].astext() == expected
+
+
+def test_captions_without_caption_or_text():
+    doc = nodes.section()
+    doc += _figure(["fig-wf-3"], None)
+    doc += nodes.figure("", nodes.caption(), ids=["fig-wf-4"])
+    book_presentation._captions(None, doc)
+    assert [f.astext() for f in doc.children] == ["", ""]
+
+
+def test_erratum_anchors():
+    doc = nodes.section()
+    box = nodes.admonition()
+    box += nodes.title("", "Erratum WF-E2-sign-flip")
+    box += nodes.paragraph("", "The sign of WF-E2-sign-flip is wrong; see also SP-E1-units.")
+    doc += box
+    other = nodes.admonition()
+    other += nodes.title("", "Note on KZL-E3-scale")  # not titled Erratum
+    doc += other
+    doc += nodes.paragraph("", "SP-E1-units again, and KZL-E3-scale, and ATC10-E4.1-x.")
+    again = nodes.admonition()
+    again += nodes.title("", "Erratum WF-E2-sign-flip")  # the same erratum again: no second anchor
+    doc += again
+    book_presentation._erratum_anchors(None, doc)
+    assert box["ids"] == ["wf-e2-sign-flip"]
+    assert other["ids"] == [] and again["ids"] == []
+    assert box[1]["ids"] == ["sp-e1-units"]
+    assert doc[2]["ids"] == ["kzl-e3-scale", "atc10-e4.1-x"]
+
+
+def test_collect_titles_and_their_bookkeeping():
+    def theorem(title: str, ids: list[str], **attrs) -> nodes.Element:
+        node = nodes.container(ids=ids, **attrs)
+        node += nodes.title("", title)
+        return node
+
+    doc = nodes.section()
+    doc += theorem("Theorem #1 (Theorem 3.1 of ATC-10)", ["thm-a"], countertype="theorem")
+    doc += theorem("Theorem #2 (Theorem 2.4 of WF (Eq. 7))", ["thm-b"], realtype="theorem")
+    doc += theorem("Theorem #3 (Our own)", ["thm-c"], countertype="theorem")
+    doc += theorem("Theorem 5 of KZL", [], countertype="theorem")  # no id
+    doc += theorem("Theorem 6 of KZL", ["x"], countertype="lemma")
+    doc += nodes.container("", ids=["thm-d"], countertype="theorem")  # no title
+    env = SimpleNamespace(docname="atc10/01")
+    book_presentation._collect_titles(SimpleNamespace(env=env), doc)
+    assert env.paper_theorem_numbers == {"atc10/01": {"thm-a": "3.1", "thm-b": "2.4"}}
+    assert [n[0].astext() for n in doc.children[:5]] == [
+        "Theorem #1 (ATC-10)",
+        "Theorem #2 (WF, Eq. 7)",
+        "Theorem #3 (Our own)",
+        "Theorem 5 of KZL",
+        "Theorem 6 of KZL",
+    ]
+    env.docname = "kzl/01"
+    book_presentation._collect_titles(SimpleNamespace(env=env), nodes.section())
+    assert env.paper_theorem_numbers == {"atc10/01": {"thm-a": "3.1", "thm-b": "2.4"}, "kzl/01": {}}
+    book_presentation._merge(None, env, set(), SimpleNamespace())
+    fresh = SimpleNamespace()
+    book_presentation._merge(None, fresh, set(), env)
+    assert fresh.paper_theorem_numbers == env.paper_theorem_numbers
+    book_presentation._purge(None, fresh, "kzl/01")
+    assert set(fresh.paper_theorem_numbers) == {"atc10/01"}
+    book_presentation._purge(None, SimpleNamespace(), "kzl/01")
+
+
+def test_latex_figure_numbers():
+    section = nodes.section()
+    for ids, docname in (
+        (["fig-a"], None),
+        (["fig-b"], "other"),
+        (["fig-c"], None),
+        ([], None),
+        (["fig-z"], None),
+    ):
+        figure = nodes.figure(ids=ids)
+        if docname:
+            figure["docname"] = docname
+        section += figure
+    env = SimpleNamespace(
+        toc_fignumbers={
+            "page": {"figure": {"fig-a": (2, 1)}},
+            "other": {"figure": {"fig-b": (3,)}},
+            "third": {"table": {}, "figure": {"fig-c": ("N1",)}},
+        }
+    )
+    app = SimpleNamespace(builder=SimpleNamespace(format="latex"), env=env)
+    book_presentation._latex_figure_numbers(app, section, "page")
+    out = [(type(n).__name__, n.astext() if isinstance(n, nodes.raw) else n["ids"]) for n in section.children]
+    assert out == [
+        ("raw", "\\renewcommand{\\thefigure}{2.1}\n"),
+        ("figure", ["fig-a"]),
+        ("raw", "\\renewcommand{\\thefigure}{3}\n"),
+        ("figure", ["fig-b"]),
+        ("raw", "\\renewcommand{\\thefigure}{N1}\n"),
+        ("figure", ["fig-c"]),
+        ("figure", []),
+        ("figure", ["fig-z"]),
+    ]
+    assert all(n["format"] == "latex" for n in section.findall(nodes.raw))
+    html = nodes.section()
+    html += nodes.figure(ids=["fig-a"])
+    book_presentation._latex_figure_numbers(
+        SimpleNamespace(builder=SimpleNamespace(format="html"), env=env), html, "page"
+    )
+    assert len(html) == 1
