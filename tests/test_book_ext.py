@@ -1461,7 +1461,8 @@ def test_hide_helpers():
     doc += _cell("x = 1\nglue('a', x)\n", output=False)  # a helper inside: stripped
     doc += _cell("glue('a', 1)\n", output=True)  # only a helper, with output: the input goes
     doc += _cell("from navcore import book\nbook.setup()\n", output=False)  # nothing left: all goes
-    doc += _cell("\ny = 2\n", output=False)  # nothing to strip: left as it is
+    doc += _cell("  y = 2\n", output=False)  # nothing to strip: left as it is, spaces and all
+    doc += _cell("X = 3\n", output=False)
     other = nodes.container(classes=["note"])
     other += nodes.literal_block("glue('b', 2)", "glue('b', 2)")
     doc += other  # not a cell input: left
@@ -1474,10 +1475,11 @@ def test_hide_helpers():
     first = doc[0][0][0]
     assert first.astext() == "x = 1" and first.rawsource == "x = 1"
     assert [c["classes"] for c in doc[1].children] == [["cell_output"]]
-    assert [c.get("classes") for c in doc.children] == [["cell"], ["cell"], ["cell"], ["note"], ["plain"]]
-    assert doc[2][0][0].astext() == "\ny = 2\n"
-    assert doc[3][0].astext() == "glue('b', 2)"
-    assert doc[4].children == []
+    assert [c.get("classes") for c in doc.children] == [["cell"]] * 4 + [["note"], ["plain"]]
+    assert doc[2][0][0].astext() == "  y = 2\n"
+    assert doc[3][0][0].astext() == "X = 3\n"
+    assert doc[4][0].astext() == "glue('b', 2)"
+    assert doc[5].children == []
 
 
 def _figure(ids: list[str], caption: str | None) -> nodes.figure:
@@ -1500,9 +1502,12 @@ def _figure(ids: list[str], caption: str | None) -> nodes.figure:
 )
 def test_captions_drop_the_repeated_number(ids, caption, expected):
     doc = nodes.section()
+    doc += _figure(["fig-own"], "Fig. 1: first, not a paper figure")  # passed over, the next still read
+    doc += _figure(["fig-wf-5"], None)
     doc += _figure(ids, caption)
     book_presentation._captions(None, doc)
-    assert doc[0][0].astext() == expected
+    assert doc[0][0].astext() == "Fig. 1: first, not a paper figure"
+    assert isinstance(doc[2][0], nodes.caption) and doc[2][0].astext() == expected
 
 
 def test_captions_without_caption_or_text():
@@ -1526,39 +1531,56 @@ def test_erratum_anchors():
     again = nodes.admonition()
     again += nodes.title("", "Erratum WF-E2-sign-flip")  # the same erratum again: no second anchor
     doc += again
+    doc += nodes.admonition("", nodes.paragraph("", "untitled"))
+    plain = nodes.admonition()
+    plain += nodes.title("", "Erratum note")  # no id in the title: the id in its text is a paragraph's
+    plain += nodes.paragraph("", "about SP-E9-x")
+    doc += plain
+    spaced = nodes.admonition()
+    spaced += nodes.title("", "  Erratum WF-E5-y")
+    doc += spaced
     book_presentation._erratum_anchors(None, doc)
     assert box["ids"] == ["wf-e2-sign-flip"]
     assert other["ids"] == [] and again["ids"] == []
     assert box[1]["ids"] == ["sp-e1-units"]
     assert doc[2]["ids"] == ["kzl-e3-scale", "atc10-e4.1-x"]
+    assert plain["ids"] == [] and plain[1]["ids"] == ["sp-e9-x"]
+    assert spaced["ids"] == ["wf-e5-y"]
 
 
 def test_collect_titles_and_their_bookkeeping():
     def theorem(title: str, ids: list[str], **attrs) -> nodes.Element:
         node = nodes.container(ids=ids, **attrs)
         node += nodes.title("", title)
+        node += nodes.paragraph("", "The statement (with a remark).")
         return node
 
     doc = nodes.section()
+    doc += theorem("Theorem 5 of KZL", [], countertype="theorem")  # no id: passed over
     doc += theorem("Theorem #1 (Theorem 3.1 of ATC-10)", ["thm-a"], countertype="theorem")
     doc += theorem("Theorem #2 (Theorem 2.4 of WF (Eq. 7))", ["thm-b"], realtype="theorem")
     doc += theorem("Theorem #3 (Our own)", ["thm-c"], countertype="theorem")
-    doc += theorem("Theorem 5 of KZL", [], countertype="theorem")  # no id
+    doc += theorem("Theorem 2.5 of WF", ["thm-e"], countertype="theorem")
+    doc += theorem("Theorem #4 (Theorem 1.2\nof SP)", ["thm-f"], countertype="theorem")
     doc += theorem("Theorem 6 of KZL", ["x"], countertype="lemma")
     doc += nodes.container("", ids=["thm-d"], countertype="theorem")  # no title
     env = SimpleNamespace(docname="atc10/01")
     book_presentation._collect_titles(SimpleNamespace(env=env), doc)
-    assert env.paper_theorem_numbers == {"atc10/01": {"thm-a": "3.1", "thm-b": "2.4"}}
-    assert [n[0].astext() for n in doc.children[:5]] == [
+    found = {"thm-a": "3.1", "thm-b": "2.4", "thm-e": "2.5", "thm-f": "1.2"}
+    assert env.paper_theorem_numbers == {"atc10/01": found}
+    assert [n[0].astext() for n in doc.children[:7]] == [
+        "Theorem 5 of KZL",
         "Theorem #1 (ATC-10)",
         "Theorem #2 (WF, Eq. 7)",
         "Theorem #3 (Our own)",
-        "Theorem 5 of KZL",
+        "WF",
+        "Theorem #4 (SP)",
         "Theorem 6 of KZL",
     ]
+    assert all(isinstance(n[0], nodes.title) for n in doc.children[:7])
     env.docname = "kzl/01"
     book_presentation._collect_titles(SimpleNamespace(env=env), nodes.section())
-    assert env.paper_theorem_numbers == {"atc10/01": {"thm-a": "3.1", "thm-b": "2.4"}, "kzl/01": {}}
+    assert env.paper_theorem_numbers == {"atc10/01": found, "kzl/01": {}}
     book_presentation._merge(None, env, set(), SimpleNamespace())
     fresh = SimpleNamespace()
     book_presentation._merge(None, fresh, set(), env)
@@ -1570,11 +1592,12 @@ def test_collect_titles_and_their_bookkeeping():
 
 def test_latex_figure_numbers():
     section = nodes.section()
+    section += nodes.paragraph("", "text between figures")
     for ids, docname in (
         (["fig-a"], None),
         (["fig-b"], "other"),
-        (["fig-c"], None),
         ([], None),
+        (["fig-c"], None),
         (["fig-z"], None),
     ):
         figure = nodes.figure(ids=ids)
@@ -1583,6 +1606,7 @@ def test_latex_figure_numbers():
         section += figure
     env = SimpleNamespace(
         toc_fignumbers={
+            "earlier": {"figure": {"fig-a": (9,), "fig-b": (8,)}},  # the same ids on another page
             "page": {"figure": {"fig-a": (2, 1)}},
             "other": {"figure": {"fig-b": (3,)}},
             "third": {"table": {}, "figure": {"fig-c": ("N1",)}},
@@ -1592,13 +1616,14 @@ def test_latex_figure_numbers():
     book_presentation._latex_figure_numbers(app, section, "page")
     out = [(type(n).__name__, n.astext() if isinstance(n, nodes.raw) else n["ids"]) for n in section.children]
     assert out == [
+        ("paragraph", []),
         ("raw", "\\renewcommand{\\thefigure}{2.1}\n"),
         ("figure", ["fig-a"]),
         ("raw", "\\renewcommand{\\thefigure}{3}\n"),
         ("figure", ["fig-b"]),
+        ("figure", []),
         ("raw", "\\renewcommand{\\thefigure}{N1}\n"),
         ("figure", ["fig-c"]),
-        ("figure", []),
         ("figure", ["fig-z"]),
     ]
     assert all(n["format"] == "latex" for n in section.findall(nodes.raw))
