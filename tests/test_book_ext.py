@@ -1433,14 +1433,14 @@ def test_latex_visit_tags_the_last_label_once():
 
     def original(self, node):
         seen.append(node)
-        self.body += ["\\begin{equation}\\label{a}", "\\label{b}\\label{c}x"]
+        self.body += ["\\begin{equation}", "\\label{b}\\label{c}x"]
 
     visit = paper_equations._latex_visit_math_block(original)
     writer = SimpleNamespace(body=["start"])
     node = nodes.math_block("", "x", paper_tag="2.1")
     visit(writer, node)
     assert seen == [node]
-    assert writer.body == ["start", "\\begin{equation}\\label{a}", "\\tag{2.1}\\label{b}\\label{c}x"]
+    assert writer.body == ["start", "\\begin{equation}", "\\tag{2.1}\\label{b}\\label{c}x"]
 
 
 # --- book_presentation: the doctree passes a build runs (here on hand-made doctrees) ----------------
@@ -1504,10 +1504,11 @@ def test_captions_drop_the_repeated_number(ids, caption, expected):
     doc = nodes.section()
     doc += _figure(["fig-own"], "Fig. 1: first, not a paper figure")  # passed over, the next still read
     doc += _figure(["fig-wf-5"], None)
+    doc += nodes.figure("", nodes.caption(), ids=["fig-wf-6"])  # a caption without text
     doc += _figure(ids, caption)
     book_presentation._captions(None, doc)
     assert doc[0][0].astext() == "Fig. 1: first, not a paper figure"
-    assert isinstance(doc[2][0], nodes.caption) and doc[2][0].astext() == expected
+    assert isinstance(doc[3][0], nodes.caption) and doc[3][0].astext() == expected
 
 
 def test_captions_without_caption_or_text():
@@ -1609,6 +1610,7 @@ def test_latex_figure_numbers():
             "earlier": {"figure": {"fig-a": (9,), "fig-b": (8,)}},  # the same ids on another page
             "page": {"figure": {"fig-a": (2, 1)}},
             "other": {"figure": {"fig-b": (3,)}},
+            "tables only": {"table": {"t": (1,)}},
             "third": {"table": {}, "figure": {"fig-c": ("N1",)}},
         }
     )
