@@ -1262,3 +1262,27 @@ def test_check_public_module_ranges_reach_functions_and_own_options_reach_constr
     v.check_public(ns, {"p": v.PROBABILITY}, Box={"ranges": {"t": v.POSITIVE}})
     _raises(ValueError, "p must be in [0, 1], got 2.0", lambda: ns["h"](2.0))
     _raises(ValueError, "t must be > 0, got -1.0", lambda: Box(-1.0))
+
+
+def _rotation_with_first_row(row: Sequence[float]) -> np.ndarray:
+    """A rotation whose first row is ``row`` (normalised), completed by Gram-Schmidt."""
+    x = np.asarray(row, dtype=float) / np.linalg.norm(row)
+    y = np.array([0.3, -0.5, 0.7]) - np.dot([0.3, -0.5, 0.7], x) * x
+    y /= np.linalg.norm(y)
+    return np.array([x, y, np.cross(x, y)])
+
+
+@pytest.mark.parametrize("row", [(0.1, 0.15, 0.98), (0.12, 0.98, 0.1), (0.98, 0.1, 0.14), (0.6, -0.55, 0.58)])
+def test_rotation_determinant_whichever_element_dominates(row):
+    """Oracle: numpy.linalg.det. The cofactor expansion along the first row is a^2 + b^2 + c^2 for
+    a rotation; a first row dominated by one element tells each of its three terms apart."""
+    r = _rotation_with_first_row(row)
+    assert np.linalg.det(r) == pytest.approx(1.0) and np.allclose(r @ r.T, np.eye(3))
+    v.ROTATION.check("C", r)
+    for m in (-r, r @ np.diag([1.0, 1.0, -1.0]), np.diag([-1.0, 1.0, 1.0]) @ r, r[[0, 2, 1]]):
+        assert np.linalg.det(m) == pytest.approx(-1.0)
+        _raises(
+            ValueError,
+            "C must be a proper rotation matrix (det +1), got a reflection (det -1)",
+            lambda m=m: v.ROTATION.check("C", m),
+        )
