@@ -1286,3 +1286,13 @@ def test_rotation_determinant_whichever_element_dominates(row):
             "C must be a proper rotation matrix (det +1), got a reflection (det -1)",
             lambda m=m: v.ROTATION.check("C", m),
         )
+
+
+def test_rotation_by_quarter_turns_with_zero_elements():
+    """Quarter turns about z and x: rotations with zero elements (and zero cofactors) pass."""
+    for r in (
+        [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]],
+        [[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]],
+    ):
+        assert np.linalg.det(r) == pytest.approx(1.0)
+        v.ROTATION.check("C", r)
