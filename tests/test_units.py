@@ -97,3 +97,30 @@ def test_amplitude_db_rejects_a_nonpositive_ratio_by_name():
     with pytest.raises(ValueError, match=r"^ratio must be > 0"):
         u.db_from_amplitude_ratio(0.0)
     assert u.db_from_amplitude_ratio(10.0) == pytest.approx(20.0, rel=1e-15)
+
+
+@pytest.mark.parametrize(
+    ("convert", "x", "expected"),
+    [
+        (u.db_from_power_ratio, 1000.0, 30.0),
+        (u.db_from_amplitude_ratio, 1000.0, 60.0),
+        (u.dbw_from_watts, 0.001, -30.0),
+        (u.power_ratio_from_db, -30.0, 0.001),
+        (u.amplitude_ratio_from_db, -60.0, 0.001),
+        (u.watts_from_dbw, 30.0, 1000.0),
+    ],
+)
+def test_scalars_give_floats_and_arrays_keep_their_shape(convert, x, expected):
+    """Oracle: decades written out (10 dB per decade of power, 20 dB per decade of amplitude)."""
+    out = convert(x)
+    assert type(out) is float and out == pytest.approx(expected, rel=1e-14)
+    grid = convert(np.full((2, 3), x))
+    assert isinstance(grid, np.ndarray) and grid.shape == (2, 3)
+    np.testing.assert_allclose(grid, expected, rtol=1e-14)
+    assert convert(np.array([x]))[0] == pytest.approx(expected, rel=1e-14)
+
+
+@pytest.mark.parametrize("convert", [u.power_ratio_from_db, u.amplitude_ratio_from_db, u.watts_from_dbw])
+def test_from_db_of_an_empty_array_is_empty(convert):
+    out = convert(np.array([]))
+    assert isinstance(out, np.ndarray) and out.shape == (0,)

@@ -190,7 +190,9 @@ PACKAGES: dict[str, Package] = {
         deselect="each_published_input_moves or every_tolerance_has_a_policy or no_old_id_left",
     ),
     "units": Package(
-        ["navcore/units.py", "navcore/_validate.py"], ["test_units.py", "test_api_inputs.py"], not_mutated=[]
+        ["navcore/units.py", "navcore/_validate.py"],
+        ["test_units.py", "test_validate.py", "test_api_inputs.py"],
+        not_mutated=[],
     ),
     "figures": Package(["navcore/figures/*"], ["test_figures.py", "test_figure_data.py"]),
     "papers": Package(
@@ -213,14 +215,16 @@ PACKAGES: dict[str, Package] = {
     ),
     "tools": Package(
         ["tools/*"],
-        ["test_book_tools.py", "test_book_tools_edges.py"],
+        ["test_book_tools.py", "test_book_tools_edges.py", "test_book_format.py", "test_input_gate.py"],
         sources=("navcore", "tools"),
+        copy=("book",),
         deselect="errata_and_ledger_links or interactive_ledger_filters",
     ),
     "book_ext": Package(
         ["book/_ext/*"],
-        ["test_book_tools.py", "test_book_tools_edges.py", "test_glossary_links.py"],
+        ["test_book_ext.py", "test_book_tools.py", "test_book_tools_edges.py", "test_glossary_links.py"],
         sources=("navcore", "book/_ext"),
+        copy=("book",),
         deselect="errata_and_ledger_links or interactive_ledger_filters",
     ),
 }
