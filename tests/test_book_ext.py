@@ -70,6 +70,8 @@ SAFE = {"parallel_read_safe": True, "parallel_write_safe": True}
 SETUP = {
     "api_reference": (
         [
+            # after numpydoc (priority 500), which writes the References section as citations
+            ("connect", "autodoc-process-docstring", api_reference._process_docstring, ("priority", 600)),
             ("connect", "autodoc-skip-member", api_reference._skip_class_data),
             ("connect", "missing-reference", api_reference._field_reference),
         ],
@@ -140,7 +142,7 @@ SETUP = {
     ),
 }
 #: events that extensions or builders (not Sphinx's core) define
-OTHER_EVENTS = {"html-page-context", "autodoc-skip-member"}
+OTHER_EVENTS = {"html-page-context", "autodoc-skip-member", "autodoc-process-docstring"}
 
 
 @pytest.mark.parametrize("name", sorted(SETUP))
