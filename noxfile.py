@@ -451,11 +451,14 @@ def layout(session: nox.Session) -> None:
 
 @nox.session
 def mutation(session: nox.Session) -> None:
-    """Mutation testing (mutmut) of the model packages; writes _build/mutation.md.
+    """Mutation testing (mutmut) of navcore's packages, the tools and the book's extensions;
+    writes _build/mutation.md.
 
-    ``nox -s mutation`` runs estimation, inertial, gnss, detection, location and frames one
-    after another, each in its own scratch copy under ``_build/mutation/`` with only the test
-    files that exercise it (tools/mutation.py); ``nox -s mutation -- gnss frames`` runs some,
+    ``nox -s mutation`` runs the model packages (estimation, inertial, gnss, detection,
+    location, frames), then the ledger, units and validation, figures, the paper modules'
+    functions, the tools and the book's extensions, one after another, each in its own scratch
+    copy under ``_build/mutation/`` with only the test files that exercise it
+    (tools/mutation.py); ``nox -s mutation -- gnss frames`` runs some,
     ``-- --budget-min 20`` bounds each package's wall-clock time (default 30 min on 2 cores),
     ``-- --report-only`` tabulates the last runs. A developer's session: ``.ci/run`` does not
     run it. Equivalent mutants are documented in ``tests/mutation_equivalents.md``.
