@@ -55,7 +55,7 @@ IN.convention(
     "zero",
     readings={
         "the variance of the deterministic gain, zero": "zero",
-        "the product squared, (sigma gamma_{n-1})^2": "squared",
+        "the product squared, $(\\sigma\\gamma_{n-1})^2$": "squared",
     },
     quantity="reading of the printed $\\sigma^2_{\\gamma_{n-1}}$ in (4.5.21)",
     reason="the printed symbol is the variance of the gain, which is not random (zero); the other "
@@ -649,9 +649,10 @@ def printed_4510_oracle(example: str = "I", runs: int = 400_000, seed: int = 21)
 
 
 def printed_4521_sdn(example: str, sigma0_attr: str) -> float:
-    """sd_N with the printed (4.5.21), its sigma^2_{gamma_{n-1}} read as the convention says
-    ('zero': the variance of the deterministic gain; 'squared': (sigma gamma_{n-1})^2) where the
-    recursion needs sigma^2 gamma_{n-1}: the recursion iterated to its limit."""
+    r""":math:`\mathrm{sd}_N` with the printed (4.5.21), its :math:`\sigma^2_{\gamma_{n-1}}` read as
+    the convention says ('zero': the variance of the deterministic gain; 'squared':
+    :math:`(\sigma\gamma_{n-1})^2`) where the recursion needs :math:`\sigma^2\gamma_{n-1}`: the
+    recursion iterated to its limit."""
     t = _ex(example)
     s0, sigma, b = getattr(TR, sigma0_attr), TR.sigma_ns, t["beta"]
     g, d = 1.0 / b, 0.0
