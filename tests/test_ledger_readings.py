@@ -114,6 +114,10 @@ def test_a_reading_that_sets_several_numbers_lists_them_once_as_numbers():
     note = ev.note()
     assert "With the pair of gains read as the swapped pair (2, 1): 20 m." in note
     assert "((" not in note and "2.0" not in note
+    from navcore.ledger.render import _inputs_text
+
+    inputs = _inputs_text(ev)
+    assert "pair of gains = (1, 2) (convention)" in inputs and "1.0" not in inputs
 
 
 def test_only_another_reading_agrees_consistent_and_named():

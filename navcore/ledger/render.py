@@ -880,7 +880,12 @@ def _inputs_text(e: Evaluation) -> str:
     for i in e.inputs:
         value = i.get("value")
         label, unit = _label_and_unit(i["name"])
-        shown = format_value(value) if isinstance(value, int | float) else str(value)
+        if isinstance(value, list | tuple) and all(
+            isinstance(v, int | float) and not isinstance(v, bool) for v in value
+        ):  # a reading that sets several numbers: each as a number, not as Python prints a list
+            shown = "(" + ", ".join(format_value(v) for v in value) + ")"
+        else:
+            shown = format_value(value) if isinstance(value, int | float) else str(value)
         if len(shown) > 40:
             shown = shown[:39] + "…"
         elif isinstance(value, int | float) and not isinstance(value, bool):
