@@ -326,7 +326,13 @@ class Browser:
 
     def close(self) -> None:
         if hasattr(self, "ws"):  # the connection and its reader first, then Chromium
+            # tornado waits up to 5 s for Chromium's half of the close handshake, on an event
+            # loop that ends with the measurement: close the socket itself too (an unclosed one
+            # is reported when it is collected, in whatever runs next)
+            stream = getattr(getattr(self.ws, "protocol", None), "stream", None)
             self.ws.close()
+            if stream is not None:
+                stream.close()
             self.reader.cancel()
         self.proc.terminate()
         try:
