@@ -21,6 +21,7 @@ from typing import Any
 import numpy as np
 import pytest
 import scipy.constants as sc
+from _oracles import irwin_hall_cdf_mpmath
 from scipy import integrate, optimize, signal, stats
 
 from navcore import glued
@@ -3579,16 +3580,6 @@ def _atc10_22_exact_ratio_8(pd_min: float) -> float:
                 break
             weights.append(w)
 
-        def ih_cdf(m: int, x):
-            if x <= 0:
-                return mpmath.mpf(0)
-            if x >= m:
-                return mpmath.mpf(1)
-            s = mpmath.fsum(
-                (-1) ** j * mpmath.binomial(m, j) * (x - j) ** m for j in range(int(mpmath.floor(x)) + 1)
-            )
-            return s / mpmath.factorial(m)
-
         def tail(name: str, t, strict: bool):
             """P(n > t) (strict) or P(n >= t), t > 0."""
             out = mpmath.mpf(0)
@@ -3604,7 +3595,7 @@ def _atc10_22_exact_ratio_8(pd_min: float) -> float:
                 else:
                     per, h = (1, mpmath.sqrt(3 * b)) if name == "C1 uniform" else (2, mpmath.sqrt(3 * b / 2))
                     m = per * k
-                    p = ih_cdf(m, (m - t / h) / 2)
+                    p = irwin_hall_cdf_mpmath(m, (m - t / h) / 2)
                 out += w * p
             return out
 

@@ -6,6 +6,7 @@ import itertools
 
 import numpy as np
 import pytest
+from _oracles import irwin_hall_cdf_mpmath
 from scipy import integrate, special, stats
 
 from navcore.detection.multiple_access import (
@@ -558,21 +559,8 @@ def test_gaussian_moments_are_exact():
 
 
 def _irwin_hall_cdf_mpmath(n: int, x: float, dps: int = 120):
-    """Oracle: the alternating sum sum_{j <= x} (-1)^j C(n, j) (x - j)^n / n! in mpmath at
-    ``dps`` digits, with x taken exactly (a binary float is a rational), so its cancellation,
-    at most ~n log10(n) digits here, is far below the working precision."""
-    import mpmath
-
-    with mpmath.workdps(dps):
-        xm = mpmath.mpf(x)
-        if xm <= 0:
-            return mpmath.mpf(0)
-        if xm >= n:
-            return mpmath.mpf(1)
-        s = mpmath.fsum(
-            (-1) ** j * mpmath.binomial(n, j) * (xm - j) ** n for j in range(int(mpmath.floor(xm)) + 1)
-        )
-        return s / mpmath.factorial(n)
+    """The shared oracle (Hall's alternating sum in mpmath) at 120 digits unless told otherwise."""
+    return irwin_hall_cdf_mpmath(n, x, dps)
 
 
 @pytest.mark.parametrize("n", [1, 2, 3, 7, 20, 33, 60, 90])
