@@ -288,6 +288,10 @@ def test_lock_table_and_tightly_coupled_rows():
     assert np.diag(m[0].R) == pytest.approx([1.0, 0.01])
 
 
+#: The loosely coupled receiver's fix interval and EHE gate of the tests below (SP Sec. 2.1's values)
+_LC = {"interval_steps": 10, "max_ehe_m": 100.0}
+
+
 def test_loosely_coupled_gating():
     """Oracle: SP Sec. 2.1 rule: a fix every 10 s only with >= 4 codes and EHE < 100 m;
     its noise is sigma^2 (G'G)^-1 (least squares)."""
@@ -299,12 +303,15 @@ def test_loosely_coupled_gating():
     geo = satellite_geometry(tr, const, vis)
     lay = ins_error_layout("position", "velocity", "misalignment")
     code = np.ones((len(tr), vis.size), bool)
-    sched = loosely_coupled_schedule(lay, geo, code, pseudorange_noise=2.0)
+    sched = loosely_coupled_schedule(lay, geo, code, pseudorange_noise=2.0, **_LC)
     assert sched(5) == [] and len(sched(10)) == 1
     code[:, :2] = False  # three codes left
-    assert loosely_coupled_schedule(lay, geo, code, pseudorange_noise=2.0)(10) == []
+    assert loosely_coupled_schedule(lay, geo, code, pseudorange_noise=2.0, **_LC)(10) == []
     code[:] = True
-    assert loosely_coupled_schedule(lay, geo, code, pseudorange_noise=2.0, max_ehe_m=0.1)(10) == []
+    assert (
+        loosely_coupled_schedule(lay, geo, code, pseudorange_noise=2.0, interval_steps=10, max_ehe_m=0.1)(10)
+        == []
+    )
     m = sched(20)[0]
     u = geo.u_ned[20]
     G = np.hstack([-u, np.ones((vis.size, 1))])
@@ -321,7 +328,13 @@ def test_loosely_coupled_gating():
     assert 1.0 < ehe < 20.0  # a fix of metres, so the gate below tests the square root
     for factor, accepted in ((1.02, True), (0.98, False)):
         gate = loosely_coupled_schedule(
-            lay, geo, code, pseudorange_noise=2.0, pseudorange_bias_sigma=1.5, max_ehe_m=factor * ehe
+            lay,
+            geo,
+            code,
+            pseudorange_noise=2.0,
+            pseudorange_bias_sigma=1.5,
+            interval_steps=10,
+            max_ehe_m=factor * ehe,
         )
         assert (len(gate(10)) == 1) is accepted, factor
 

@@ -1133,9 +1133,9 @@ def loosely_coupled_schedule(
     code: NDArray[np.bool_],
     *,
     pseudorange_noise: float,
+    interval_steps: int,
+    max_ehe_m: float,
     pseudorange_bias_sigma: float = 0.0,
-    interval_steps: int = 10,
-    max_ehe_m: float = 100.0,
     mask_rad: float = 0.0,
 ) -> Schedule:
     r"""The receiver's position solution every ``interval_steps`` steps.
@@ -1159,12 +1159,12 @@ def loosely_coupled_schedule(
         Code lock per step and channel (see :func:`lock_table`).
     pseudorange_noise : float
         1-:math:`\sigma` white pseudorange noise, m (``> 0``).
+    interval_steps : int
+        Steps between fixes (``>= 1``; SP Sec. 2.1's filter takes one every 10 s).
+    max_ehe_m : float
+        Largest expected horizontal error accepted, m (``> 0``; SP Sec. 2.1: 100 m).
     pseudorange_bias_sigma : float, default 0.0
         1-:math:`\sigma` per-channel pseudorange bias, m (counts in the UERE of the EHE test).
-    interval_steps : int, default 10
-        Steps between fixes.
-    max_ehe_m : float, default 100.0
-        Largest expected horizontal error accepted, m.
     mask_rad : float, default 0.0
         Elevation mask, rad.
 
@@ -1192,7 +1192,9 @@ def loosely_coupled_schedule(
     ...               [0.0, -0.6, -0.8]])
     >>> geo = SatelliteGeometry(np.arange(1, 6), u[None], np.arcsin(-u[None, :, 2]))
     >>> lock = np.ones((1, 5), dtype=bool)
-    >>> m = loosely_coupled_schedule(lay, geo, lock, pseudorange_noise=5.0)(0)[0]
+    >>> sched = loosely_coupled_schedule(lay, geo, lock, pseudorange_noise=5.0, interval_steps=10,
+    ...                                  max_ehe_m=100.0)
+    >>> m = sched(0)[0]
     >>> m.H.shape, round(float(m.R[2, 2]), 2)
     ((3, 9), 781.25)
     """

@@ -227,12 +227,16 @@ def _lc_rises_tc_delayed() -> bool:
 
 
 def _steps_at_reacquisition() -> bool:
-    step = sc.IN.loss_interval_min * MINUTE
-    times = [sc.reacquisition_s() + step * j for j in range(4)]
-    tc_drops = all(_velocity("TC 1 nmi/h", t + 1) < _velocity("TC 1 nmi/h", t - 1) for t in times)
-    lc_flat = all(_velocity("LC 1 nmi/h", t + 1) >= 0.999 * _velocity("LC 1 nmi/h", t - 1) for t in times[:3])
-    lc_drop = _velocity("LC 1 nmi/h", times[3] + 1) < 0.9 * _velocity("LC 1 nmi/h", times[3] - 1)
-    return bool(tc_drops and lc_flat and lc_drop)
+    interval = sc.IN.loss_interval_min * MINUTE
+    times = [sc.reacquisition_s() + interval * j for j in range(4)]
+    kept = 1.0 - sc.IN.velocity_step_pct / 100.0  # below this fraction of the error before: a step
+
+    def step(label: str, t: float) -> bool:
+        return _velocity(label, t + 1) < kept * _velocity(label, t - 1)
+
+    tc_drops = all(step("TC 1 nmi/h", t) for t in times)
+    lc_flat = not any(step("LC 1 nmi/h", t) for t in times[:3])
+    return bool(tc_drops and lc_flat and step("LC 1 nmi/h", times[3]))
 
 
 def _tight_beats_loose() -> bool:

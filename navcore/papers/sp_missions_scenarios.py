@@ -325,6 +325,44 @@ IN.assumed(
     quantity="elevation mask of the satellite selection",
     reason="not published; receivers of the period used 5-15 deg",
 )
+IN.convention(
+    "velocity_step_pct",
+    0.1,
+    readings={"a change of more than 0.1 % across the 2 s": 0.1, "a change of more than 1 %": 1.0},
+    unit="%",
+    quantity="how much the velocity error must fall from 1 s before a code reacquisition to 1 s after "
+    "it to count as a step",
+    reason="Sec. 2.6.1 sees 'a step improvement in velocity' at each tightly coupled reacquisition and "
+    "none in the loosely coupled system until the fourth code, but prints no size of a step; the "
+    "book's 0.1 % stands against 1 %, both far below the loosely coupled step at the fourth code and "
+    "above the change an error growing between fixes makes in 2 s",
+)
+IN.published(
+    "lc_fix_interval_s",
+    10.0,
+    locator="Sec. 2.1 ('the integration filter only used the position from the PVA solution, and this "
+    "only once every 10 s')",
+    unit="s",
+    quantity="interval between the loosely coupled filter's position fixes",
+)
+IN.published(
+    "lc_max_ehe_m",
+    100.0,
+    locator="Sec. 2.1 ('only if the Expected Horizontal Error (EHE) ... was less than 100 m')",
+    unit="m",
+    quantity="largest expected horizontal error of a position fix the loosely coupled filter takes",
+)
+IN.assumed(
+    "doppler_interval_s",
+    1.0,
+    low=1.0,
+    high=10.0,
+    unit="s",
+    quantity="interval between the Doppler ground-speed measurements the filter takes",
+    reason="Table 2.8 gives the Doppler sensor's errors, not the rate at which the filter takes its "
+    "velocity; from every covariance step (1 s, the rate at which its noise is stated) to the loosely "
+    "coupled filter's 10 s",
+)
 IN.assumed(
     "baro_interval_s",
     10.0,
@@ -759,7 +797,13 @@ def _run_list(
         tight = arch == "tight"
         truth = truth_layout(doppler=doppler, channels=len(channels), clock=tight)
         baro = baro_schedule(truth, noise_m=tab.IN.barometer_noise_m, every=every)
-        dop = doppler_schedule(truth, tr, noise_mps=IN.doppler_noise_mps) if doppler else None
+        dop = (
+            doppler_schedule(
+                truth, tr, noise_mps=IN.doppler_noise_mps, every=max(1, round(IN.doppler_interval_s / tr.dt))
+            )
+            if doppler
+            else None
+        )
         group = [systems[i] for i in members]
         sources = [error_sources(sp_imu_grade(s.grade), doppler, clock=tight) for s in group]
         filt = loosely_coupled_layout() if arch == "loose" else tightly_coupled_layout()
@@ -776,6 +820,8 @@ def _run_list(
                     IN.pseudorange_noise_m if lc_pseudorange_noise_m is None else lc_pseudorange_noise_m
                 ),
                 pseudorange_bias_sigma=sources[0].pseudorange_bias_sigma,
+                interval_steps=max(1, round(IN.lc_fix_interval_s / tr.dt)),
+                max_ehe_m=IN.lc_max_ehe_m,
             )
         else:
             gps = tightly_coupled_schedule(
