@@ -423,7 +423,8 @@ def inputs(session: nox.Session) -> None:
     ``_build/input_gate.json`` and ``_build/input_gate.md``; fails on a flagged number the
     allowlist (``tools/input_gate_allowlist.toml``) does not excuse. ``-- --paper WF``,
     ``--claim PREFIX``, ``--module NAME``, ``--sample N --seed S`` select; the whole ledger takes
-    hours on two cores. A developer's session: ``.ci/run`` does not run it.
+    about 45 minutes of one core (WF 2, KZL 5, SP 11, ATC-10 27, measured one paper at a time
+    with ``--jobs 1`` on a shared machine). A developer's session: ``.ci/run`` does not run it.
     """
     _install(session)
     session.run("python", "tools/input_gate.py", *session.posargs)
