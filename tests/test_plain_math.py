@@ -137,3 +137,62 @@ def test_coverage_inventory_sets_every_formula_as_math():
         f"{who} ({field}): {kind} {hit!r}" for who, field, text in texts for kind, hit in plain_math(text)
     ]
     assert not found, "\n".join(found)
+
+
+#: LaTeX source outside math: a command (``\frac``, ``\mathbf``), a braced sub- or superscript
+#: (``_{n-1}``) or a matrix's alignment. A quote's formulas are the paper's: each one is set as
+#: ``$...$`` (or ``$$...$$``) math, never shown as source.
+_LATEX_SOURCE = re.compile(r"\\[A-Za-z]{2,}(?![A-Za-z])|[_^]\{|&=|\\\\")
+_OPEN_DOLLAR = re.compile(r"(?<!\\)\$(?=\S)")
+
+
+def quote_problems(quote: str) -> list[str]:
+    """What keeps a quote's formulas from being set as math: an odd number of dollar signs, LaTeX
+    source or a flat subscript (``p_d``, ``x_D``) outside its ``$...$`` and ``$$...$$``."""
+    from navcore.ledger.render import _DISPLAY
+
+    if quote.count("$$") % 2:
+        return ["an unbalanced $$"]
+    found = []
+    for is_math, piece in math_spans(_DISPLAY.sub(lambda m: "$" + m.group(1).strip() + "$", quote)):
+        if not is_math:
+            if _OPEN_DOLLAR.search(piece):  # a dollar sign that opens math no other one closes
+                found.append("an unbalanced $")
+            found += [f"LaTeX {m.group(0)!r}" for m in _LATEX_SOURCE.finditer(piece)]
+            found += [f"flat subscript {m.group(0)!r}" for m in PATTERNS["flat subscript"].finditer(piece)]
+    return found
+
+
+@pytest.mark.parametrize(
+    ("quote", "problems"),
+    [
+        ("the measurement error \\mathbf{e} .", ["LaTeX '\\\\mathbf'"]),
+        ("the measurement error $\\mathbf{e}$ .", []),
+        ("a fixed P_{DL}", ["LaTeX '_{'"]),
+        ("As t decreases p_d must decrease", ["flat subscript 'p_d'"]),
+        (
+            "\\gamma_n &= \\frac{a}{b}",
+            ["LaTeX '\\\\gamma'", "LaTeX '&='", "LaTeX '\\\\frac'", "flat subscript 'gamma_n'"],
+        ),
+        ("$\\gamma_n &= \\frac{a}{b}$", []),
+        ("= \\frac{2\\pi}{\\lambda} x $$", ["an unbalanced $$"]),
+        ("the bound $x_1 + y", ["an unbalanced $", "flat subscript 'x_1'"]),
+        ("$$= \\frac{2\\pi}{\\lambda} x $$", []),
+        ("a price of 50 $ and $x_1$ and 1.61×10^{-4}", ["LaTeX '^{'"]),
+    ],
+)
+def test_quote_detector(quote, problems):
+    assert quote_problems(quote) == problems
+
+
+def test_every_quote_sets_its_formulas_as_math():
+    """Every claim's quote of the paper (the ledger's Printed column, the claim rows, the reports,
+    the JSON and CSV exports) sets each formula as math: the transcription left many bare
+    (``\\mathbf{H}``, ``p_d``, ``P_{DL}``, a displayed equation cut at one of its ``$$``)."""
+    from navcore import ledger
+    from navcore.ledger.core import claim_quote
+
+    quotes = [(c.id, claim_quote(c)) for c in ledger.claims()]
+    assert sum(src == "claim" for _, (_, src) in quotes) > 400
+    found = [f"{cid}: {p}" for cid, (q, src) in quotes if src == "claim" for p in quote_problems(q)]
+    assert not found, "\n".join(found)
