@@ -37,6 +37,7 @@ PATTERNS = {
     "(x) product": re.compile(r"\(x\)"),
     "symbol with a flat 0": re.compile(r"\b[A-Za-z]0\b"),
     "derivative quotient": re.compile(r"\bd[A-Za-z]/d[A-Za-z]\b"),
+    "starred symbol": re.compile(r"(?<![\w\\])[A-Za-z]{1,3}\d?\*(?![\w*])"),
 }
 
 #: (who, text found) pairs that are legitimately plain, each with its reason. Keep it short.
@@ -69,6 +70,8 @@ def plain_math(text: str) -> list[tuple[str, str]]:
         ("diag(sf) a + [dtheta x] a", ["Greek name", "cross-product bracket"]),
         ("q' = q (x) [0, w]/2", ["(x) product"]),
         ("the zenith C/N0", ["symbol with a flat 0"]),
+        ("a definition of hypothesis h1*", ["starred symbol"]),
+        ("a definition of hypothesis $h_1^*$, at rho*", ["Greek name", "starred symbol"]),
         ("the 1-$\\sigma$ noise, 3 dB, 0.5 s, Eq. (3.8.16), 1,2,3 satellites", []),
     ],
 )
