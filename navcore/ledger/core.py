@@ -1080,9 +1080,9 @@ def quote_has_number(quote: str, published: float) -> bool:
 
 
 def label_prints_value(label: str, value: Any) -> bool:
-    """Whether a reading's label already prints its value, in its own unit or with an SI
-    prefix (``"the C/A code, 1.023 Mchip/s"`` for 1.023e6 Hz, ``"within 1 %"`` for 0.01), so
-    that a text naming the reading need not show the value again.
+    r"""Whether a reading's label already prints its value, in its own unit or with an SI
+    prefix (``"the C/A code, 1.023 Mchip/s"`` for :math:`1.023 \times 10^6` Hz, ``"within 1 %"``
+    for 0.01), so that a text naming the reading need not show the value again.
 
     Parameters
     ----------
@@ -1095,7 +1095,7 @@ def label_prints_value(label: str, value: Any) -> bool:
     -------
     bool
         Whether one of the label's numbers (:func:`quote_numbers`) times a power of 1000 equals
-        the value to a relative 1e-9.
+        the value to a relative :math:`10^{-9}`.
 
     Examples
     --------
