@@ -42,6 +42,8 @@ PATTERNS = {
 #: A starred symbol (``h1*``, the hypothesis :math:`h_1^*`), found in the registry's and the
 #: inventory's texts (the docstring gate, which reads ``PATTERNS``, has its own to-do list).
 STARRED = re.compile(r"(?<![\w\\*])[A-Za-z]\d?\*(?![\w*])")
+#: LaTeX source outside math (``tau_{i+1}``, ``e^{+jnv}``, ``\\bar``), found there too.
+LATEX_SOURCE = re.compile(r"\\[A-Za-z]{2,}(?![A-Za-z])|[_^]\{")
 
 #: (who, text found) pairs that are legitimately plain, each with its reason. Keep it short.
 ALLOWED: dict[tuple[str, str], str] = {}
@@ -54,6 +56,7 @@ def plain_math(text: str) -> list[tuple[str, str]]:
         if not is_math:
             found += [(kind, m.group(0)) for kind, pat in PATTERNS.items() for m in pat.finditer(piece)]
             found += [("starred symbol", m.group(0)) for m in STARRED.finditer(piece)]
+            found += [("LaTeX source", m.group(0)) for m in LATEX_SOURCE.finditer(piece)]
     return found
 
 
@@ -76,6 +79,9 @@ def plain_math(text: str) -> list[tuple[str, str]]:
         ("the zenith C/N0", ["symbol with a flat 0"]),
         ("a definition of hypothesis h1*", ["starred symbol"]),
         ("hypothesis $h_1^*$, the *a* of a PLL* footnote", []),
+        ("Sec. 4 opening (tau_{i+1} - tau_i = 1 s)", ["flat subscript", "Greek name", "LaTeX source"]),
+        ("the sign of the exponent (e^{+jnv})", ["LaTeX source"]),
+        ("the sign of the exponent ($e^{+jnv}$), Sec. 4 ($\\tau_{i+1} - \\tau_i = 1$ s)", []),
         ("the 1-$\\sigma$ noise, 3 dB, 0.5 s, Eq. (3.8.16), 1,2,3 satellites", []),
     ],
 )
@@ -109,6 +115,25 @@ def test_registry_texts_set_every_formula_as_math():
         for who, field, text in texts
         for kind, hit in plain_math(text)
         if (who, hit) not in ALLOWED
+    ]
+    assert not found, "\n".join(found)
+
+
+def test_input_locators_show_no_latex_source():
+    """An input's locator (shown in the claim rows' inputs) sets a formula it quotes as math:
+    ``Sec. 4 opening ($\\tau_{i+1} - \\tau_i = 1$ s)``, not ``tau_{i+1}``. Only LaTeX source is
+    scanned here (the HTML gate finds it on the page); the locators' other plain notation
+    (``P_DL``, ``tau``) is left to a later pass."""
+    from navcore import ledger
+    from navcore.ledger.inputs import all_inputs
+
+    ledger.claims()
+    found = [
+        f"{i.name}: {m.group(0)!r}"
+        for i in all_inputs()
+        for is_math, piece in math_spans(i.locator or "")
+        if not is_math
+        for m in LATEX_SOURCE.finditer(piece)
     ]
     assert not found, "\n".join(found)
 
