@@ -515,11 +515,57 @@ def text_table(frame: Any, css_class: str | None = None) -> Table:
     KZL  48
     """
     styler = frame.style.hide(axis="index").set_properties(**{"text-align": "left"})
-    classes = "navcore-text-table" + ("" if css_class is None else f" {css_class}")
     if css_class is not None and not re.fullmatch(r"[A-Za-z][A-Za-z0-9_-]*", css_class):
         raise ValueError(f"text_table: css_class must be one HTML class name, got {css_class!r}")
+    layout = _phone_layout(frame)
+    classes = " ".join(c for c in ("navcore-text-table", layout, css_class) if c)
     styler = styler.set_table_attributes(f'class="{classes}"')  # its cells may break long words
-    return Table(styler.set_table_styles([{"selector": "th", "props": "text-align: left;"}]))
+    styler = styler.set_table_styles([{"selector": "th", "props": "text-align: left;"}])
+    if layout == "navcore-cards":
+        return _CardTable(styler, [str(c) for c in frame.columns])
+    return Table(styler)
+
+
+#: A text table with at least this many columns is laid out for a phone (:func:`_phone_layout`).
+_PHONE_COLUMNS = 4
+
+
+def _phone_layout(frame: Any) -> str:
+    """How a text table of four or more columns reads on a phone, as the class the style sheet
+    lays it out by: ``navcore-counts-phone`` when every column after the first holds numbers
+    (its headings turn upright on their side, so that the columns are as narrow as their
+    numbers), ``navcore-cards`` when its headings are words (each row becomes a card whose
+    fields are named by their headings), else ``""`` (a table as on a wide screen)."""
+    if frame.shape[1] < _PHONE_COLUMNS or frame.empty:
+        return ""
+
+    def number(value: Any) -> bool:
+        if isinstance(value, bool):
+            return False
+        if isinstance(value, int | float):
+            return True
+        return bool(re.fullmatch(r"[-−+]?[\d.,]+\s*%?", str(value).strip()))
+
+    if all(number(v) for col in frame.columns[1:] for v in frame[col]):
+        return "navcore-counts-phone"
+    if any("$" in str(c) or not str(c).strip() for c in frame.columns):
+        return ""  # a heading set as math (or none) cannot name a card's field
+    return "navcore-cards"
+
+
+class _CardTable(Table):
+    """A text table whose body cells carry their column's heading (``data-label``), which the
+    style sheet shows before each field when a phone lays the rows out as cards."""
+
+    def __init__(self, data: Any, labels: list[str]) -> None:
+        super().__init__(data)
+        self.labels = labels
+
+    def _repr_html_(self) -> str:
+        def label(m: re.Match[str]) -> str:
+            return f'{m.group(0)} data-label="{html.escape(self.labels[int(m.group(1))], quote=True)}"'
+
+        return re.sub(r'<td [^>]*class="data row\d+ col(\d+)"', label, super()._repr_html_())
 
 
 class Markdown:

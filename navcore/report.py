@@ -300,16 +300,12 @@ def unresolved_frame(evals: Sequence[Evaluation]) -> Any:
     import pandas as pd
 
     from navcore.ledger.render import (
-        _DISPLAY,
-        _EQ_NUMBER,
         _agreeing_reading_text,
         _band_text,
         _printed_text,
         _reproduced_text,
+        quote_text,
     )
-
-    def inline(text: str) -> str:  # a display formula in a table cell: inline, unnumbered
-        return _DISPLAY.sub(lambda m: "$" + _EQ_NUMBER.sub("", m.group(1)).strip() + "$", text)
 
     rows = []
     for e in evals:
@@ -328,7 +324,7 @@ def unresolved_frame(evals: Sequence[Evaluation]) -> Any:
                 "Claim": e.claim.id,
                 "Verdict": e.status,
                 "Where": e.claim.locator,
-                "Printed": inline(_printed_text(e)),
+                "Printed": quote_text(_printed_text(e)),
                 "Computed": computed,
                 "Why": why,
             }

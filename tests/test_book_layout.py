@@ -135,6 +135,61 @@ def test_layout_gate_finds_a_word_broken_in_a_text_tables_first_column(layout, t
     assert 'inside "Appendix"' in found[0][1]["text"]
 
 
+def test_layout_gate_finds_a_word_broken_in_any_column_of_a_whole_words_table(layout, tmp_path):
+    """Oracle: Chromium laying out two tiny pages whose tables keep their words whole
+    (``navcore-whole-words``, the Assumptions page's), one of them with a second column that
+    breaks "deterministic" anywhere; in a plain text table only the first column is measured."""
+    module, _ = layout
+
+    def page(name: str, classes: str, style: str) -> None:
+        (tmp_path / name).write_text(
+            f'<article class="bd-article"><div class="cell_output"><table class="{classes}">'
+            f'<tbody><tr><td>Sec. 2</td><td style="{style}">deterministic input</td></tr></tbody>'
+            "</table></div></article>"
+        )
+
+    narrow = "overflow-wrap:anywhere; width:40px"
+    page("broken.html", "navcore-text-table navcore-whole-words", narrow)
+    page("whole.html", "navcore-text-table navcore-whole-words", "overflow-wrap:normal")
+    page("plain.html", "navcore-text-table", narrow)
+    found = module.measure(tmp_path, (1400,), tabs=1)[1400]["word"]
+    assert [name for name, _ in found] == ["broken.html#text-table-1"]
+    assert 'column 2 breaks inside "deterministic"' in found[0][1]["text"]
+
+
+def test_text_tables_lay_out_for_a_phone_as_cards_or_with_upright_headings(layout, tmp_path):
+    """Oracle: Chromium laying out, at 420 px with the book's style sheet, two text tables too
+    wide for a phone as tables (six columns of long whole words; eleven count columns with
+    word headings): as cards, and with their headings on their side, both fit the column,
+    while the same tables without their phone layout run past it."""
+    import pandas as pd
+
+    from navcore import book
+
+    module, _ = layout
+    words = pd.DataFrame({f"Heading{i}": [f"deterministic{i} and more"] for i in range(6)})
+    counts = pd.DataFrame({"Section": ["Appendix D"], **{f"heading{i}": [i] for i in range(10)}})
+    cards, upright = book.text_table(words, "navcore-whole-words"), book.text_table(counts)
+    assert 'class="navcore-text-table navcore-cards navcore-whole-words"' in cards._repr_html_()
+    assert 'data-label="Heading5"' in cards._repr_html_()
+    assert "navcore-counts-phone" in upright._repr_html_() and "data-label" not in upright._repr_html_()
+    three = book.text_table(pd.DataFrame({"a": ["x"], "b": ["y"], "c": ["z"]}))._repr_html_()
+    assert "navcore-cards" not in three and "navcore-counts-phone" not in three
+    css = (ROOT / "book" / "_static" / "navcore.css").read_text(encoding="utf-8")
+    for name, table in (("cards", cards), ("upright", upright)):
+        for variant, html in (("", table._repr_html_()), ("-as-table", table._repr_html_())):
+            if variant:  # the same table without its phone layout
+                html = html.replace(" navcore-cards", "").replace(" navcore-counts-phone", "")
+            (tmp_path / f"{name}{variant}.html").write_text(
+                f'<html><head><style>{css}</style></head><body><main class="bd-content">'
+                '<article class="bd-article" style="width:100%">'
+                f'<div class="cell_output"><div class="output">{html}</div></div>'
+                "</article></main></body></html>"
+            )
+    measured = module.measure(tmp_path, (420,), tabs=1)[420]["table"]
+    assert [name for name, _ in measured] == ["cards-as-table.html#table-1", "upright-as-table.html#table-1"]
+
+
 @pytest.mark.skipif(
     not any(__import__("shutil").which(b) for b in ("chromium", "chromium-browser", "google-chrome")),
     reason="no Chromium",

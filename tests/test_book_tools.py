@@ -203,6 +203,41 @@ def test_html_gate_finds_numbers_as_a_program_prints_them(tmp_path):
     assert check_book.main(["numbers", str(tmp_path)]) == 1
 
 
+def test_html_gate_finds_formulas_shown_as_latex_source(tmp_path):
+    """Oracle: hand-written pages and ledger records, each with one formula shown as LaTeX source
+    that the gate must find, beside the forms a reader sees typeset, which it must pass."""
+    import json
+
+    article = '<article class="bd-article">{}</article>'
+    typeset = (
+        r"<p>The error $\mathbf{e}$ and <span class='math'>\(\bar{N}_{FL}\)</span>; "
+        r"a table heading $\sigma_0$ (ns); a price of 50 $ more.</p>"
+        r'<div class="cell_input"><pre>x = r"\frac{a}{b}"</pre></div>'
+    )
+    _page(tmp_path / "wf" / "ok.html", article.format(typeset))
+    _page(tmp_path / "wf" / "bare.html", article.format(r"<p>the measurement error \mathbf{e} .</p>"))
+    _page(tmp_path / "atc10" / "sub.html", article.format("<table><tr><td>a fixed P_{DL}</td></tr></table>"))
+    code = '<td><code class="ledger-latex">x</code></td>'
+    _page(tmp_path / "kzl" / "code.html", article.format(f"<table><tr>{code}</tr></table>"))
+    records = [
+        {"id": "WF-a", "printed": r"the error $\mathbf{e}$", "quantity": "q", "note": ""},
+        {"id": "WF-b", "printed": r"\gamma_n = 1", "quantity": "q", "note": ""},
+    ]
+    data = json.dumps(records).replace("</", "<\\/")
+    _page(tmp_path / "ledger.html", f'<script type="application/json" class="ledger-data">{data}</script>')
+    _page(tmp_path / "reference" / "api.html", article.format(r"<p>\frac{a}{b} in a docstring</p>"))
+    problems = check_book.check_plain_math(tmp_path)
+    assert [p.split(":")[0] for p in problems] == [
+        "atc10/sub.html",
+        "kzl/code.html",
+        "ledger.html",
+        "wf/bare.html",
+    ]
+    assert "'_{'" in problems[0] and "ledger-latex" in problems[1]
+    assert "WF-b (printed)" in problems[2] and "'\\\\mathbf'" in problems[3]
+    assert check_book.latex_outside_math(r"$$x_{n-1}$$ and \(y_{2}\), 50 $ and 60 $") == []
+
+
 PROSE_PAGE = """
 <nav><p>sidebar: navcore.location.fdoa is navigation, not prose</p></nav>
 <article class="bd-article"><section>

@@ -95,7 +95,8 @@ def test_the_reading_used_agrees_reproduced_and_the_others_are_shown():
     ]
     note = ev.note()
     assert "With the range per cycle read as the L1 wavelength (0.62): 6.2 m." in note
-    assert "With the range per cycle read as the 300 m code (300): 3000 m." in note
+    # a label that prints its value is not followed by it again
+    assert "With the range per cycle read as the 300 m code: 3000 m." in note
 
 
 def test_a_reading_that_sets_several_numbers_lists_them_once_as_numbers():
@@ -118,6 +119,34 @@ def test_a_reading_that_sets_several_numbers_lists_them_once_as_numbers():
 
     inputs = _inputs_text(ev)
     assert "pair of gains = (1, 2) (convention)" in inputs and "1.0" not in inputs
+
+
+def test_a_reading_whose_label_prints_its_value_shows_it_once():
+    """A convention's reading label that says its value (in another SI prefix, or as a
+    percentage) is not followed by the value again: "read as the C/A code, 1.023 Mchip/s",
+    not "... 1.023 Mchip/s (1.023×10⁶ Hz)"; a label without its value keeps it.
+    Oracle: the note text written out by hand."""
+    C = InputSet("SP", "synthetic_chip_readings")
+    C.convention(
+        "chip_rate_hz",
+        10.23e6,
+        unit="Hz",
+        quantity="chip rate",
+        readings={"the P(Y) code, 10.23 Mchip/s": 10.23e6, "the C/A code, 1.023 Mchip/s": 1.023e6},
+        reason="the code is not named",
+    )
+    C.convention(
+        "slack", 0.1, readings={"within 10 %": 0.1, "within 1 %": 0.01}, quantity="slack", reason="r"
+    )
+    C.convention(
+        "gain", 1.0, readings={"the printed gain": 1.0, "the doubled gain": 2.0}, quantity="gain", reason="r"
+    )
+    ev = evaluate(make(id="SP-test-chip", paper="SP", compute=lambda: C.chip_rate_hz / 1.023e6 * C.gain))
+    note = ev.note()
+    assert "the chip rate read as the C/A code, 1.023 Mchip/s:" in note and "×10⁶ Hz" not in note
+    assert "the gain read as the doubled gain (2)" in note
+    ev = evaluate(make(id="SP-test-slack", paper="SP", compute=lambda: 100.0 * C.slack))
+    assert "the slack read as within 1 %:" in ev.note()
 
 
 def test_only_another_reading_agrees_consistent_and_named():

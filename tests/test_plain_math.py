@@ -39,6 +39,12 @@ PATTERNS = {
     "derivative quotient": re.compile(r"\bd[A-Za-z]/d[A-Za-z]\b"),
 }
 
+#: A starred symbol (``h1*``, the hypothesis :math:`h_1^*`), found in the registry's and the
+#: inventory's texts (the docstring gate, which reads ``PATTERNS``, has its own to-do list).
+STARRED = re.compile(r"(?<![\w\\*])[A-Za-z]\d?\*(?![\w*])")
+#: LaTeX source outside math (``tau_{i+1}``, ``e^{+jnv}``, ``\\bar``), found there too.
+LATEX_SOURCE = re.compile(r"\\[A-Za-z]{2,}(?![A-Za-z])|[_^]\{")
+
 #: (who, text found) pairs that are legitimately plain, each with its reason. Keep it short.
 ALLOWED: dict[tuple[str, str], str] = {}
 
@@ -49,6 +55,8 @@ def plain_math(text: str) -> list[tuple[str, str]]:
     for is_math, piece in math_spans(text):
         if not is_math:
             found += [(kind, m.group(0)) for kind, pat in PATTERNS.items() for m in pat.finditer(piece)]
+            found += [("starred symbol", m.group(0)) for m in STARRED.finditer(piece)]
+            found += [("LaTeX source", m.group(0)) for m in LATEX_SOURCE.finditer(piece)]
     return found
 
 
@@ -69,6 +77,11 @@ def plain_math(text: str) -> list[tuple[str, str]]:
         ("diag(sf) a + [dtheta x] a", ["Greek name", "cross-product bracket"]),
         ("q' = q (x) [0, w]/2", ["(x) product"]),
         ("the zenith C/N0", ["symbol with a flat 0"]),
+        ("a definition of hypothesis h1*", ["starred symbol"]),
+        ("hypothesis $h_1^*$, the *a* of a PLL* footnote", []),
+        ("Sec. 4 opening (tau_{i+1} - tau_i = 1 s)", ["flat subscript", "Greek name", "LaTeX source"]),
+        ("the sign of the exponent (e^{+jnv})", ["LaTeX source"]),
+        ("the sign of the exponent ($e^{+jnv}$), Sec. 4 ($\\tau_{i+1} - \\tau_i = 1$ s)", []),
         ("the 1-$\\sigma$ noise, 3 dB, 0.5 s, Eq. (3.8.16), 1,2,3 satellites", []),
     ],
 )
@@ -106,6 +119,25 @@ def test_registry_texts_set_every_formula_as_math():
     assert not found, "\n".join(found)
 
 
+def test_input_locators_show_no_latex_source():
+    """An input's locator (shown in the claim rows' inputs) sets a formula it quotes as math:
+    ``Sec. 4 opening ($\\tau_{i+1} - \\tau_i = 1$ s)``, not ``tau_{i+1}``. Only LaTeX source is
+    scanned here (the HTML gate finds it on the page); the locators' other plain notation
+    (``P_DL``, ``tau``) is left to a later pass."""
+    from navcore import ledger
+    from navcore.ledger.inputs import all_inputs
+
+    ledger.claims()
+    found = [
+        f"{i.name}: {m.group(0)!r}"
+        for i in all_inputs()
+        for is_math, piece in math_spans(i.locator or "")
+        if not is_math
+        for m in LATEX_SOURCE.finditer(piece)
+    ]
+    assert not found, "\n".join(found)
+
+
 def test_allowlist_entries_still_occur():
     """An allowlist entry whose text is gone is removed, so the list stays short and true."""
     present = {(who, hit) for who, _, text in _registry_texts() for _, hit in plain_math(text)}
@@ -136,4 +168,63 @@ def test_coverage_inventory_sets_every_formula_as_math():
     found = [
         f"{who} ({field}): {kind} {hit!r}" for who, field, text in texts for kind, hit in plain_math(text)
     ]
+    assert not found, "\n".join(found)
+
+
+#: LaTeX source outside math: a command (``\frac``, ``\mathbf``), a braced sub- or superscript
+#: (``_{n-1}``) or a matrix's alignment. A quote's formulas are the paper's: each one is set as
+#: ``$...$`` (or ``$$...$$``) math, never shown as source.
+_LATEX_SOURCE = re.compile(r"\\[A-Za-z]{2,}(?![A-Za-z])|[_^]\{|&=|\\\\")
+_OPEN_DOLLAR = re.compile(r"(?<!\\)\$(?=\S)")
+
+
+def quote_problems(quote: str) -> list[str]:
+    """What keeps a quote's formulas from being set as math: an odd number of dollar signs, LaTeX
+    source or a flat subscript (``p_d``, ``x_D``) outside its ``$...$`` and ``$$...$$``."""
+    from navcore.ledger.render import _DISPLAY
+
+    if quote.count("$$") % 2:
+        return ["an unbalanced $$"]
+    found = []
+    for is_math, piece in math_spans(_DISPLAY.sub(lambda m: "$" + m.group(1).strip() + "$", quote)):
+        if not is_math:
+            if _OPEN_DOLLAR.search(piece):  # a dollar sign that opens math no other one closes
+                found.append("an unbalanced $")
+            found += [f"LaTeX {m.group(0)!r}" for m in _LATEX_SOURCE.finditer(piece)]
+            found += [f"flat subscript {m.group(0)!r}" for m in PATTERNS["flat subscript"].finditer(piece)]
+    return found
+
+
+@pytest.mark.parametrize(
+    ("quote", "problems"),
+    [
+        ("the measurement error \\mathbf{e} .", ["LaTeX '\\\\mathbf'"]),
+        ("the measurement error $\\mathbf{e}$ .", []),
+        ("a fixed P_{DL}", ["LaTeX '_{'"]),
+        ("As t decreases p_d must decrease", ["flat subscript 'p_d'"]),
+        (
+            "\\gamma_n &= \\frac{a}{b}",
+            ["LaTeX '\\\\gamma'", "LaTeX '&='", "LaTeX '\\\\frac'", "flat subscript 'gamma_n'"],
+        ),
+        ("$\\gamma_n &= \\frac{a}{b}$", []),
+        ("= \\frac{2\\pi}{\\lambda} x $$", ["an unbalanced $$"]),
+        ("the bound $x_1 + y", ["an unbalanced $", "flat subscript 'x_1'"]),
+        ("$$= \\frac{2\\pi}{\\lambda} x $$", []),
+        ("a price of 50 $ and $x_1$ and 1.61×10^{-4}", ["LaTeX '^{'"]),
+    ],
+)
+def test_quote_detector(quote, problems):
+    assert quote_problems(quote) == problems
+
+
+def test_every_quote_sets_its_formulas_as_math():
+    """Every claim's quote of the paper (the ledger's Printed column, the claim rows, the reports,
+    the JSON and CSV exports) sets each formula as math: the transcription left many bare
+    (``\\mathbf{H}``, ``p_d``, ``P_{DL}``, a displayed equation cut at one of its ``$$``)."""
+    from navcore import ledger
+    from navcore.ledger.core import claim_quote
+
+    quotes = [(c.id, claim_quote(c)) for c in ledger.claims()]
+    assert sum(src == "claim" for _, (_, src) in quotes) > 400
+    found = [f"{cid}: {p}" for cid, (q, src) in quotes if src == "claim" for p in quote_problems(q)]
     assert not found, "\n".join(found)

@@ -382,3 +382,78 @@ def test_no_old_id_left_in_the_repository():
         cwd=ROOT,
     )
     assert proc.returncode == 0, proc.stdout
+
+
+@pytest.mark.parametrize(
+    ("piece", "made_whole"),
+    [
+        # an alignment point of the paper's display, and its equation number, left out
+        (r"\gamma_n &= \frac{a}{b} \tag{4.5.31}", r"\gamma_n = \frac{a}{b}"),
+        (r"\leq K \left(x\right) \quad (\text{A.7})", r"\leq K \left(x\right)"),
+        # a quote that stops inside \left[ ... or inside a brace
+        (r"\exp \left[(K t + 1) \ln", r"\exp \left[(K t + 1) \ln\right."),
+        (r"\sqrt{2 \frac{\partial^2}{\partial r^2}", r"\sqrt{2 \frac{\partial^2}{\partial r^2}\ldots}"),
+        (r"x \right) - 1", r"\left.x \right) - 1"),
+        # rows of a matrix cut from its environment; an environment's own & and \\ untouched
+        (r"a & b \\ c & d", r"\begin{matrix}a & b \\ c & d\end{matrix}"),
+        (
+            r"P &= \begin{bmatrix} a & b \\ c & d \end{bmatrix}",
+            r"P = \begin{bmatrix} a & b \\ c & d \end{bmatrix}",
+        ),
+        # escaped braces are not groups; Unicode letters and operators as commands
+        (r"\{ \rho = 1 \}", r"\{ \rho = 1 \}"),
+        ("1.61×10^{-4}, σ_a", r"1.61\times 10^{-4}, \sigma _a"),
+    ],
+)
+def test_quote_math_makes_a_cut_formula_whole(piece, made_whole):
+    """Oracle: each fragment closed by hand (a quote may stop inside the paper's display)."""
+    from navcore.ledger.render import quote_math
+
+    assert quote_math(piece) == made_whole
+
+
+def _claim_quotes() -> list[tuple[str, str]]:
+    from navcore import ledger
+    from navcore.ledger.core import claim_quote
+
+    quotes = [(c.id, claim_quote(c)) for c in ledger.claims()]
+    return [(cid, q) for cid, (q, src) in quotes if src == "claim"]
+
+
+def test_no_quote_is_shown_as_latex_source():
+    """Every claim's quote is typeset: its words as text and its formulas as math, in the HTML
+    claim rows and ledger (MathJax) and in the PDF tables; none falls back to LaTeX source in
+    code type (which it did for 84 quotes whose formulas the transcription left bare)."""
+    from navcore.ledger.render import _printed_html, _printed_tex
+
+    quotes = _claim_quotes()
+    assert len(quotes) > 400
+    source = [cid for cid, q in quotes if "ledger-latex" in _printed_html(q) or "ttfamily" in _printed_tex(q)]
+    assert not source, source
+
+
+def test_every_quote_typesets_in_latex(tmp_path):
+    """Oracle: XeLaTeX itself. Every claim's quote as the PDF's Printed cell sets it compiles
+    without an error, cut formulas (an open brace, a lone \\left, rows of a matrix) included."""
+    import shutil
+
+    from navcore.ledger.render import FIT_MATH_PREAMBLE, _printed_tex
+
+    if shutil.which("xelatex") is None:
+        pytest.skip("xelatex is not installed")
+    cells = "\n".join(
+        rf"\noindent\parbox{{6cm}}{{{_printed_tex(q)}}}\par % {cid}" for cid, q in _claim_quotes()
+    )
+    doc = (
+        "\\documentclass{article}\\usepackage{fontspec}\\usepackage{amsmath,amssymb,graphicx}\n"
+        + FIT_MATH_PREAMBLE
+        + "\n\\begin{document}\n"
+        + cells
+        + "\n\\end{document}\n"
+    )
+    (tmp_path / "q.tex").write_text(doc, encoding="utf-8")
+    run = subprocess.run(
+        ["xelatex", "-interaction=nonstopmode", "-halt-on-error", "q.tex"],
+        cwd=tmp_path, capture_output=True, text=True, timeout=300,
+    )  # fmt: skip
+    assert run.returncode == 0, run.stdout[-3000:]

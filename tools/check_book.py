@@ -19,6 +19,11 @@ It also finds developer wording in anything a reader sees or downloads (see
 ``DEVELOPER_WORDING``): a claim's change history ("Verdict changed from ..."), the regression pin
 ``expected_status``, or test and oracle bookkeeping, in the text and the embedded data of
 every page but the API reference and in the downloadable notebooks' outputs.
+It also finds formulas shown as LaTeX source (see ``check_plain_math``): a LaTeX command
+(``\\frac``, ``\\mathbf``) or a braced sub- or superscript (``_{n-1}``) outside the math a
+reader sees typeset, in the text of every page but the API reference (a quote of the paper in a
+claim row or the ledger, a table, a caption), and in the text fields of the ledger's embedded
+records, which its JSON and CSV downloads carry (``printed``, ``quantity``, ``note``).
 ``numbers``: no number as a program prints it (``1.00e-04``, ``1.6344416666666666``,
 ``-0.000``, ``60.000000``, a printed dictionary; see ``tools/check_numbers.py``) in the text a
 reader sees. Part of ``html`` too.
@@ -188,6 +193,64 @@ def check_wording(root: Path) -> list[str]:
     return problems
 
 
+# --- formulas shown as LaTeX source -------------------------------------------------------
+
+#: LaTeX outside math: a command of two or more letters, or a braced sub- or superscript.
+LATEX_SOURCE = re.compile(r"\\[A-Za-z]{2,}(?![A-Za-z])|[_^]\{")
+#: What a reader sees typeset: MathJax's delimiters in the page (``\(..\)``, ``\[..\]``) and
+#: the ``$...$`` and ``$$...$$`` of texts and tables that MathJax or the ledger's cells typeset.
+TYPESET_MATH = re.compile(
+    r"\$\$.*?\$\$|(?<![\\$])\$(?=[^\s$])[^$]*?[^\s\\$]\$(?!\$)|\\\(.*?\\\)|\\\[.*?\\\]", re.S
+)
+#: The text fields of a ledger record a reader sees (and downloads as JSON or CSV).
+RECORD_TEXT_FIELDS = ("printed", "quantity", "note")
+_LEDGER_DATA = re.compile(r'<script type="application/json" class="ledger-data">(.*?)</script>', re.S)
+
+
+def latex_outside_math(text: str) -> list[str]:
+    """The LaTeX source (commands, braced sub- and superscripts) in ``text`` outside its math.
+
+    Examples
+    --------
+    >>> latex_outside_math(r"the error \\mathbf{e} and $\\mathbf{p}$ of $$x_{n-1}$$")
+    ['\\\\mathbf']
+    >>> latex_outside_math(r"a fixed P_{DL} and \\(\\bar{N}\\)")
+    ['_{']
+    """
+    return [m.group(0) for m in LATEX_SOURCE.finditer(TYPESET_MATH.sub(" ", text))]
+
+
+def check_plain_math(root: Path) -> list[str]:
+    """Formulas shown as LaTeX source in what a reader sees: the text of every page but the API
+    reference (``tools/check_numbers.py``'s reader text, with code cells and typeset math left
+    out), a quote the ledger could only show as LaTeX source (class ``ledger-latex``), and the
+    text fields of the ledger's embedded records (its JSON and CSV downloads)."""
+    numbers = _check_numbers()
+    problems = []
+    for page in sorted(root.rglob("*.html")):
+        rel = page.relative_to(root).as_posix()
+        if numbers.SKIP_PAGES.match(rel):
+            continue
+        page_html = page.read_text(encoding="utf-8", errors="replace")
+        if 'class="ledger-latex"' in page_html:
+            problems.append(f"{rel}: a quote shown as LaTeX source (ledger-latex)")
+        for block in numbers.reader_text(page_html):
+            found = latex_outside_math(block)
+            if found:
+                context = block[:120]
+                problems.append(f"{rel}: LaTeX outside math {sorted(set(found))}: {context}...")
+        for data in _LEDGER_DATA.findall(page_html):
+            for record in json.loads(html.unescape(data).replace("<\\/", "</")):
+                for field in RECORD_TEXT_FIELDS:
+                    found = latex_outside_math(record.get(field) or "")
+                    if found:
+                        problems.append(
+                            f"{rel}: LaTeX outside math in the ledger record {record.get('id')} "
+                            f"({field}): {sorted(set(found))}"
+                        )
+    return problems
+
+
 def check_html(root: Path) -> list[str]:
     problems = []
     for page in sorted(root.rglob("*.html")):
@@ -213,12 +276,17 @@ def check_html(root: Path) -> list[str]:
                 f"({unrun} of {len(code)} code cells without execution count, "
                 f"{sum(bool(c.get('outputs')) for c in code)} with outputs)"
             )
-    return problems + check_prose(root) + check_wording(root) + check_number_format(root)
+    return (
+        problems
+        + check_prose(root)
+        + check_wording(root)
+        + check_number_format(root)
+        + check_plain_math(root)
+    )
 
 
-def check_number_format(root: Path) -> list[str]:
-    """Numbers as a program prints them in what a reader sees (``tools/check_numbers.py``):
-    ``1.00e-04``, ``1.6344416666666666``, ``-0.000``, ``60.000000``, ``{180.0: 18.0}``."""
+def _check_numbers():
+    """``tools/check_numbers.py``, loaded beside this file."""
     import importlib.util
 
     path = Path(__file__).with_name("check_numbers.py")
@@ -226,6 +294,13 @@ def check_number_format(root: Path) -> list[str]:
     assert spec is not None and spec.loader is not None
     numbers = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(numbers)
+    return numbers
+
+
+def check_number_format(root: Path) -> list[str]:
+    """Numbers as a program prints them in what a reader sees (``tools/check_numbers.py``):
+    ``1.00e-04``, ``1.6344416666666666``, ``-0.000``, ``60.000000``, ``{180.0: 18.0}``."""
+    numbers = _check_numbers()
     return [
         f"{page}: number printed as a program prints it ({name}) {match!r}: ...{context}..."
         for page, name, match, context in numbers.check(root)

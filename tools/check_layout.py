@@ -26,7 +26,9 @@ stylesheet's media queries follow it) and it is measured again. Four things are 
 ``word``
     a table of text (``navcore-text-table``: reasons, sections, readings) whose first
     column, which names the rows, breaks a word across lines ("Appendi" / "x D") rather
-    than only after a hyphen, dot, slash or underscore.
+    than only after a hyphen, dot, slash or underscore; in a table whose page keeps its
+    words whole (``navcore-whole-words``, the Assumptions page's), any column that does
+    ("determinis" / "tic").
 
 Several pages are measured at once (``--tabs``, default 4), each in its own tab over the one
 DevTools connection; nothing waits a fixed time: each measurement waits for the page's load
@@ -155,7 +157,9 @@ MEASURE = r"""
   let m = 0;
   for (const table of root.querySelectorAll('table.navcore-text-table')) {
     m += 1;
-    for (const cell of table.querySelectorAll('tbody td:first-child')) {
+    // a table whose page keeps its words whole (navcore-whole-words) is measured in every cell
+    const whole = table.classList.contains('navcore-whole-words');
+    for (const cell of table.querySelectorAll(whole ? 'tbody td' : 'tbody td:first-child')) {
       if (cell.offsetParent === null) continue;
       const walker = document.createTreeWalker(cell, NodeFilter.SHOW_TEXT);
       let broken = null;
@@ -172,8 +176,9 @@ MEASURE = r"""
         }
       }
       if (broken) {
+        const where = cell.cellIndex === 0 ? 'first column' : 'column ' + (cell.cellIndex + 1);
         out.word.push({name: 'text-table-' + m, scroll: cell.scrollWidth, client: cell.clientWidth,
-                       text: 'first column breaks inside "' + broken + '"'});
+                       text: where + ' breaks inside "' + broken + '"'});
         break;
       }
     }

@@ -199,6 +199,7 @@ __all__ = [
     "claim_quote",
     "evaluate",
     "figure_reading",
+    "label_prints_value",
     "left_out_of_band",
     "monte_carlo",
     "precision_status",
@@ -1078,6 +1079,39 @@ def quote_has_number(quote: str, published: float) -> bool:
     return any(abs(n - target) <= scale for n in quote_numbers(quote))
 
 
+def label_prints_value(label: str, value: Any) -> bool:
+    r"""Whether a reading's label already prints its value, in its own unit or with an SI
+    prefix (``"the C/A code, 1.023 Mchip/s"`` for :math:`1.023 \times 10^6` Hz, ``"within 1 %"``
+    for 0.01), so that a text naming the reading need not show the value again.
+
+    Parameters
+    ----------
+    label : str
+        The reading's label (a convention's ``readings`` key).
+    value : Any
+        The value it sets; only a real number can be printed.
+
+    Returns
+    -------
+    bool
+        Whether one of the label's numbers (:func:`quote_numbers`) times a power of 1000 equals
+        the value to a relative :math:`10^{-9}`.
+
+    Examples
+    --------
+    >>> label_prints_value("the C/A code, 1.023 Mchip/s", 1.023e6), label_prints_value("within 1 %", 0.01)
+    (True, True)
+    >>> label_prints_value("the C/A code", 1.023e6), label_prints_value("a factor 3", 2.0)
+    (False, False)
+    """
+    if isinstance(value, bool) or not isinstance(value, int | float) or value == 0:
+        return False
+    target = float(value)
+    return any(
+        abs(n * 1000.0**k - target) <= 1e-9 * abs(target) for n in quote_numbers(label) for k in range(-4, 5)
+    )
+
+
 def quote_policies(quote: str, *, published: float | bool, locator: str = "") -> tuple[str, ...]:
     """The tolerance policies the printed words admit (LEDGER.md, "Tolerance").
 
@@ -1341,6 +1375,8 @@ class Evaluation:
             # a tuple's items go inside the one pair of parentheses below
             items = value if isinstance(value, tuple | list) else () if value is None else (value,)
             shown = ", ".join(_plain(v) for v in items)
+            if len(items) == 1 and label_prints_value(label, items[0]):
+                shown = ""  # "the C/A code, 1.023 Mchip/s" says its value: not again in Hz
             shown = f" ({shown}{' ' + in_unit if in_unit and shown else ''})" if shown else ""
             changed.append(f"the {quantity} read as {label}{shown}")
         return changed

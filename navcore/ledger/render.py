@@ -49,6 +49,8 @@ __all__ = [
     "json_export",
     "latex_table",
     "math_spans",
+    "quote_math",
+    "quote_text",
     "rows",
     "tex_text",
     "text_table",
@@ -773,7 +775,125 @@ def fit_math(piece: str) -> str:
 
 
 _DISPLAY = re.compile(r"\$\$(.*?)\$\$", re.S)
-_EQ_NUMBER = re.compile(r"\\(?:quad|qquad)\s*\(?[\w.]+\)?\s*$|\\tag\{[^}]*\}")
+_EQ_NUMBER = re.compile(r"\\(?:quad|qquad)\s*\(?(?:\\text\{[\w.]+\}|[\w.]+)\)?\s*$|\\tag\{[^}]*\}")
+_MATH_TOKEN = re.compile(r"\\(?:begin|end)\{[^}]*\}|\\(?:left|right)(?![A-Za-z])|\\[A-Za-z]+|\\.|[{}&]")
+
+#: Unicode a quote's formulas use, as math commands (the PDF's math fonts are not Unicode).
+_TEX_MATH_CHARS = {
+    "×": r"\times ",
+    "·": r"\cdot ",
+    "≤": r"\leq ",
+    "≥": r"\geq ",
+    "≈": r"\approx ",
+    "−": "-",
+    **{
+        ch: "\\" + name + " "
+        for ch, name in zip(
+            "αβγδεθλμνξπρστφχψωΓΔΘΛΞΠΣΦΨΩ",
+            "alpha beta gamma delta epsilon theta lambda mu nu xi pi rho sigma tau phi chi psi "
+            "omega Gamma Delta Theta Lambda Xi Pi Sigma Phi Psi Omega".split(),
+            strict=True,
+        )
+    },
+}
+
+
+def quote_math(piece: str) -> str:
+    r"""A formula of a quote made whole for typesetting: a quote may cut a displayed equation
+    (the transcription's alignment ``&``, a matrix's rows, an open ``\left`` or brace).
+
+    The equation number (``\tag{..}``, ``\quad (3)``) is left out; a matrix fragment (rows
+    ``\\`` outside an environment) is set as a matrix, and an alignment ``&`` outside one is
+    dropped; a ``\left`` or ``\right`` without its partner is closed by an empty delimiter and
+    an open brace by an ellipsis and its brace, so that the formula typesets as far as the
+    paper's words go. The symbols stay the paper's.
+
+    Parameters
+    ----------
+    piece : str
+        The formula, without its dollar signs.
+
+    Returns
+    -------
+    str
+        The formula, typesettable by MathJax and LaTeX (Unicode letters and operators such as
+        ``σ`` and ``×``, which the PDF's math fonts lack, as math commands).
+
+    Examples
+    --------
+    >>> quote_math(r"\gamma_n &= \frac{a}{b} \tag{4.5.31}")
+    '\\gamma_n = \\frac{a}{b}'
+    >>> quote_math(r"\exp \left[(K t + 1) \ln")
+    '\\exp \\left[(K t + 1) \\ln\\right.'
+    >>> quote_math(r"\sqrt{2 \frac{\partial^2}{\partial r^2}")
+    '\\sqrt{2 \\frac{\\partial^2}{\\partial r^2}\\ldots}'
+    >>> quote_math(r"a & b \\ c & d")
+    '\\begin{matrix}a & b \\\\ c & d\\end{matrix}'
+    >>> quote_math("1.61×10^{-4}")
+    '1.61\\times 10^{-4}'
+    """
+    piece = _EQ_NUMBER.sub("", piece).strip()
+    depth, stack, lead, amps = 0, [], [], []
+    rows = False
+    for m in _MATH_TOKEN.finditer(piece):
+        tok = m.group(0)
+        if tok.startswith("\\begin"):
+            depth += 1
+        elif tok.startswith("\\end"):
+            depth -= 1
+        elif tok in ("{", "\\left"):
+            stack.append(tok)
+        elif tok in ("}", "\\right"):
+            if stack and stack[-1] == ("{" if tok == "}" else "\\left"):
+                stack.pop()
+            else:
+                lead.append("{" if tok == "}" else "\\left.")
+        elif depth == 0 and tok == "&":
+            amps.append(m.start())
+        elif depth == 0 and tok == "\\\\":
+            rows = True
+    if amps and not rows:  # an alignment point of the paper's display: no alignment inline
+        piece = "".join(ch for i, ch in enumerate(piece) if i not in amps)
+    tail = "".join("}" if tok == "{" else "\\right." for tok in reversed(stack))
+    if "{" in stack:
+        tail = "\\ldots" + tail
+    piece = "".join(reversed(lead)) + re.sub(r"\s{2,}", " ", piece) + tail
+    if rows:
+        piece = "\\begin{matrix}" + piece + "\\end{matrix}"
+    return "".join(_TEX_MATH_CHARS.get(ch, ch) for ch in piece).strip()
+
+
+def quote_text(text: str) -> str:
+    r"""A quote of the paper with every formula as inline ``$...$`` math made whole
+    (:func:`quote_math`): a display formula inline and unnumbered, a cut one closed.
+
+    Parameters
+    ----------
+    text : str
+        A claim's quote (its ``printed``), whose ``$...$`` and ``$$...$$`` are its formulas.
+
+    Returns
+    -------
+    str
+        The quote's words as they are and each formula as ``$...$``.
+
+    Examples
+    --------
+    >>> print(quote_text("so that $$x &= 1 \\quad (3)$$ holds for $p_d$"))
+    so that $x = 1$ holds for $p_d$
+    """
+    text = _DISPLAY.sub(lambda m: "$" + m.group(1).strip() + "$", text)
+    return "".join(f"${quote_math(piece)}$" if is_math else piece for is_math, piece in math_spans(text))
+
+
+#: A dollar sign of the paper's words in HTML, which MathJax leaves as it is.
+_HTML_DOLLAR = '<span class="tex2jax_ignore mathjax_ignore">$</span>'
+
+
+def _latex_source(piece: str) -> bool:
+    """Whether a piece of a quote outside its math is LaTeX source (a backslash other than an
+    escaped dollar sign, ``\\$``, which is the paper's own)."""
+    return "\\" in piece.replace("\\$", "")
 
 
 def _printed_tex(text: str) -> str:
@@ -795,11 +915,11 @@ def _printed_tex(text: str) -> str:
     """
     text = _DISPLAY.sub(lambda m: "$" + _EQ_NUMBER.sub("", m.group(1)).strip() + "$", text)
     pieces = math_spans(text)
-    if any("\\" in piece for is_math, piece in pieces if not is_math):  # LaTeX without delimiters
+    if any(_latex_source(piece) for is_math, piece in pieces if not is_math):  # LaTeX without delimiters
         return r"{\scriptsize\ttfamily " + _tex_breakable(text) + "}"
     out = []
     for is_math, piece in pieces:
-        out.append(fit_math(piece) if is_math else _tex_breakable(piece))
+        out.append(fit_math(quote_math(piece)) if is_math else _tex_breakable(piece.replace("\\$", "$")))
     return "".join(out)
 
 
@@ -830,14 +950,15 @@ def _printed_html(text: str, *, fold: int = 0) -> str:
         return _nowrap(text)
     text = _DISPLAY.sub(lambda m: "$" + _EQ_NUMBER.sub("", m.group(1)).strip() + "$", text)
     pieces = math_spans(text)
-    if any("\\" in piece for is_math, piece in pieces if not is_math):  # LaTeX without delimiters
+    if any(_latex_source(piece) for is_math, piece in pieces if not is_math):  # LaTeX without delimiters
         body = f'<code class="ledger-latex">{html.escape(text)}</code>'
     else:
         out = []
         for is_math, piece in pieces:
-            if not is_math:
-                out.append(html.escape(piece))
+            if not is_math:  # a dollar sign of the paper's (a price) is not a math delimiter
+                out.append(html.escape(piece).replace("\\$", _HTML_DOLLAR))
                 continue
+            piece = quote_math(piece)
             span = f'<span class="math notranslate nohighlight">\\({html.escape(piece)}\\)</span>'
             out.append(span if len(piece) <= 24 else f'<span class="ledger-math-wide">{span}</span>')
         body = "".join(out)

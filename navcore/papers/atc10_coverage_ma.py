@@ -886,7 +886,7 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec3.6-C2-smallest-lower-bound",
-        printed="it has the smallest upper bound to p_f (and also the smallest lower bound)",
+        printed="it has the smallest upper bound to $p_f$ (and also the smallest lower bound)",
         paper="ATC10",
         locator="Sec. 3.6",
         quantity="C2 has the smallest upper bound to $p_f$ '(and also the smallest lower bound)'",

@@ -20,9 +20,9 @@ __all__ = ["QUOTES", "quoted"]
 #: Claim id -> the paper's words or formula as quoted.
 QUOTES: dict[str, str] = {
     "ATC10-appA-any-pd-reachable": (
-        "(A.17) can be made to hold by taking t sufficiently small and p_d sufficiently large"
+        "(A.17) can be made to hold by taking t sufficiently small and $p_d$ sufficiently large"
     ),
-    "ATC10-appA-limit": "if $t < p_d^4$ then P_D will approach 1 as K gets larger and larger",
+    "ATC10-appA-limit": "if $t < p_d^4$ then $P_D$ will approach 1 as K gets larger and larger",
     "ATC10-appE-cumulants": (
         "$$\\lambda_2 = \\frac{2\\tau}{\\alpha} \\int_{-\\infty}^{\\infty} x^2 C(x) dx \\quad (\\text{E.9})$$"
     ),
@@ -37,7 +37,7 @@ QUOTES: dict[str, str] = {
     "ATC10-appG-V0-closed-form": "$$\\text{Var}[x_3(t)] = \\beta^2 V_0 t^{2\\rho}$$",
     "ATC10-appG-V0-printed": (
         "$$V_0 = \\frac{\\frac{1}{2\\rho} + \\int_0^{\\infty} [s^\\rho - \\frac{1}{2} - (s+1)^\\rho - "
-        "\\frac{1}{2}] ds}{[\\Gamma(\\rho + \\frac{1}{2})]^2}"
+        "\\frac{1}{2}] ds}{[\\Gamma(\\rho + \\frac{1}{2})]^2}$$"
     ),
     "ATC10-appG-counter-linearisation": (
         "$$(nN + K)^{2\\rho} - (nN)^{2\\rho} \\approx 2\\rho(nN)^{2\\rho - 1} k$$"
@@ -79,7 +79,7 @@ QUOTES: dict[str, str] = {
         "$$\\bar{N}_{AD} \\geq 0.5 N p_d^4 (1 - (1-p_f)^{2B\\alpha}) (1 - (1-p_f)^{4B\\beta})^3 \\quad "
         "\\text{when } K = 1$$"
     ),
-    "ATC10-eq2.5.5-composition": "\\bar{N}_f \\geq \\bar{N}_{FL} = (N_T - N) \\exp \\left[(K t + 1) \\ln",
+    "ATC10-eq2.5.5-composition": "$\\bar{N}_f \\geq \\bar{N}_{FL} = (N_T - N) \\exp \\left[(K t + 1) \\ln$",
     "ATC10-eq2.8.1-erf-coefficient": (
         "$$p_f = \\frac{1}{2} - \\frac{1}{2} \\operatorname{erf} \\left(\\frac{1}{2} \\sqrt{\\frac{P_0 B "
         "\\tau}{J}} - \\phi \\right) \\quad (2.8.1)$$"
@@ -94,7 +94,7 @@ QUOTES: dict[str, str] = {
     "ATC10-eq3.7.26-approx": "in which case (3.7.24) and (3.7.25) can be approximated by",
     "ATC10-eq3.7.5-cosh-inequality": "By Jensen's Inequality we have",
     "ATC10-eq3.8.12-series": (
-        "\\frac{1}{16} \\left(\\frac{\\text{Expfg}}{N\\tau/\\alpha}\\right)^3 + \\dots \\quad (3.8.12)"
+        "$\\frac{1}{16} \\left(\\frac{\\text{Expfg}}{N\\tau/\\alpha}\\right)^3 + \\dots \\quad (3.8.12)$"
     ),
     "ATC10-eq3.8.16-equals-closed-form": (
         "It will be convenient to express; Expf in terms of Expfg, and Expd in terms of Expdg. This is "
@@ -109,31 +109,31 @@ QUOTES: dict[str, str] = {
     ),
     "ATC10-eq4.5.16-recursion-mc": "The resulting error statistics are just",
     "ATC10-eq4.5.27-extrapolation-mc": (
-        "\\sigma_{\\varepsilon_{\\tau_n}}^2 &= \\sigma_\\gamma^2 + \\sigma_0^2 "
-        "\\left[\\frac{2-\\gamma\\beta}{\\gamma\\beta} (n-N) + (n-N)^2 \\right] \\tag{4.5.27}"
+        "$\\sigma_{\\varepsilon_{\\tau_n}}^2 &= \\sigma_\\gamma^2 + \\sigma_0^2 "
+        "\\left[\\frac{2-\\gamma\\beta}{\\gamma\\beta} (n-N) + (n-N)^2 \\right] \\tag{4.5.27}$"
     ),
     "ATC10-eq4.5.10-printed": (
         "$$\\hat{\\tau}_1 = \\gamma_1^{-1} (I - F_1 (F_1' F_1)^{-1} F_1') [\\hat{T}_1 - k_1 - "
         "(\\hat{\\tau}_0 + \\bar{\\tau}) 1] + \\hat{\\tau}_0 + \\bar{\\tau} \\quad (4.5.10)$$"
     ),
     "ATC10-eq4.5.21-printed": (
-        "&= 2\\sigma_0^2 + \\sigma_{\\gamma_{n-1}}^2 - 2E[\\Delta_n \\xi_{\\tau_{n-1}}] \\tag{4.5.21}"
+        "$&= 2\\sigma_0^2 + \\sigma_{\\gamma_{n-1}}^2 - 2E[\\Delta_n \\xi_{\\tau_{n-1}}] \\tag{4.5.21}$"
     ),
     "ATC10-eq4.5.23-increment-covariance": (
         "$$E[\\Delta_n \\Delta_{n-i}] = \\begin{cases} 2\\sigma_0^2, & i=0 \\\\ \\sigma_0^2, & 1 \\leq i "
         "\\leq n-1 \\end{cases} \\quad (4.5.23)$$"
     ),
     "ATC10-eq4.5.31-printed": (
-        "\\gamma_n &= \\frac{\\sigma_{\\tau_n}^2}{\\sigma_o^2 + \\sigma_{\\tau_n}^2 \\beta_n}"
+        "$\\gamma_n &= \\frac{\\sigma_{\\tau_n}^2}{\\sigma_o^2 + \\sigma_{\\tau_n}^2 \\beta_n}$"
     ),
     "ATC10-eq4.5.37-gain-limit": (
         "$$\\gamma_n \\rightarrow \\gamma = \\frac{1}{\\beta} \\psi(\\alpha) \\quad (4.5.37)$$"
     ),
     "ATC10-eq4.5.35-printed": (
-        "\\sigma^2 [\\text{tr}\\{(F_n' F_n)^{-1}\\} + \\gamma_n^2 F_n' (F_n' F_n)^{-2} F_n] \\quad (4.5.35)"
+        "$\\sigma^2 [\\text{tr}\\{(F_n' F_n)^{-1}\\} + \\gamma_n^2 F_n' (F_n' F_n)^{-2} F_n] \\quad (4.5.35)$"
     ),
     "ATC10-eq4.5.38-coefficient": (
-        "&\\cong 1.89 [\\alpha^{1/3} - (\\frac{\\alpha}{2})^{2/3}], \\text{ for } \\alpha \\leq 0.3"
+        "$&\\cong 1.89 [\\alpha^{1/3} - (\\frac{\\alpha}{2})^{2/3}], \\text{ for } \\alpha \\leq 0.3$"
     ),
     "ATC10-eqA.13-chernoff-below-exact": (
         "$$P_D \\geq 1 - \\exp -K (v(1-t) - \\ln ((1-p_d^4) e^v + p_d^4)) \\quad (A.17)$$"
@@ -148,8 +148,8 @@ QUOTES: dict[str, str] = {
     ),
     "ATC10-eqA.6-majority-test": "The coefficient of the left hand side of (A.7) is positive.",
     "ATC10-eqA.7-printed": (
-        "\\leq K \\left(\\text{Ln} \\lambda_1 \\left(\\frac{\\text{Prob} (\\rho(i,1) = 1 | "
-        "H_0(i))}{\\text{Prob} (\\rho(i,1) = 1 | H_1(i))} \\right) \\right) \\quad (\\text{A.7})"
+        "$\\leq K \\left(\\text{Ln} \\lambda_1 \\left(\\frac{\\text{Prob} (\\rho(i,1) = 1 | "
+        "H_0(i))}{\\text{Prob} (\\rho(i,1) = 1 | H_1(i))} \\right) \\right) \\quad (\\text{A.7})$"
     ),
     "ATC10-eqA.9-rule-at-design": (
         "$$\\text{Decide } H_1(i) \\text{ if } K_0 \\leq t K \\quad (\\text{A.9})$$"
@@ -163,7 +163,7 @@ QUOTES: dict[str, str] = {
         "(1-p_f)^{4B\\beta}\\right)^3 \\quad (\\text{B.6})$$"
     ),
     "ATC10-eqB.9-lists-needed": (
-        "\\{ \\text{A false alarm on Seg.}(K) \\} \\supseteq \\bigcap_{j=1}^{Kt+1} \\{ \\rho(i,j) = 1 \\}"
+        "$\\{ \\text{A false alarm on Seg.}(K) \\} \\supseteq \\bigcap_{j=1}^{Kt+1} \\{ \\rho(i,j) = 1 \\}$"
     ),
     "ATC10-eqC.1-printed": (
         "$$\\text{Prob } [\\gamma_D(i) = 1] \\geq [1 - p_f]^{2B\\alpha} [1 - (1-p_f)^{4B\\beta}]^3 "
@@ -178,22 +178,23 @@ QUOTES: dict[str, str] = {
         "$$p_f = \\frac{1}{2} - \\frac{1}{2} \\operatorname{erf} \\left(\\sqrt{\\frac{E}{2J/B}} - \\phi "
         "\\right) \\quad (D.16)$$"
     ),
-    "ATC10-eqD.17-direct": "(D.17) gives the desired dependence of p_f upon the parameters of interest.",
-    "ATC10-fig2.3-2.16-curve-sets": "For Various (p_d, t) Combinations.",
-    "ATC10-fig3.10-linear": "the functional dependence between Exp and Exp_g is practically linear",
+    "ATC10-eqD.17-direct": "(D.17) gives the desired dependence of $p_f$ upon the parameters of interest.",
+    "ATC10-fig2.3-2.16-curve-sets": "For Various ($p_d$, t) Combinations.",
+    "ATC10-fig3.10-linear": "the functional dependence between Exp and $Exp_g$ is practically linear",
     "ATC10-fig3.10-rate": (
-        "the rate of this approach is more rapid for lower values of Exp_g than for higher values of Exp_g"
+        "the rate of this approach is more rapid for lower values of $Exp_g$ than for higher "
+        "values of $Exp_g$"
     ),
     "ATC10-fig3.9-exp-below": (
         "Figure 3.9 illustrates Exp as a function of N for $\\text{Exp}_g = 4$ and various values of τ/α "
-        ". [...] Exp is less than Exp_g by a non-negligible amount"
+        ". [...] Exp is less than $Exp_g$ by a non-negligible amount"
     ),
-    "ATC10-fig3.9-shortfall": "Exp is less than Exp_g by a non-negligible amount",
+    "ATC10-fig3.9-shortfall": "Exp is less than $Exp_g$ by a non-negligible amount",
     "ATC10-fig4.1-large-alpha": (
         "$$\\psi(\\alpha) \\cong 1 - \\frac{4}{27} \\alpha^{-1}, \\text{ for } \\alpha \\geq 1$$"
     ),
     "ATC10-fig4.1-small-alpha": (
-        "&\\cong 1.89 [\\alpha^{1/3} - (\\frac{\\alpha}{2})^{2/3}], \\text{ for } \\alpha \\leq 0.3"
+        "$&\\cong 1.89 [\\alpha^{1/3} - (\\frac{\\alpha}{2})^{2/3}], \\text{ for } \\alpha \\leq 0.3$"
     ),
     "ATC10-fig4.2-4.3-shape": (
         "Finally, Figures 4.2 and 4.3 illustrate how $\\sqrt{\\text{Var}[\\|\\xi_{p_n}\\|]}$ varies with n ."
@@ -205,7 +206,7 @@ QUOTES: dict[str, str] = {
     "ATC10-sec1.1-erp-rises-with-K": "For K less than 100 the required jammer is modest",
     "ATC10-sec1.1-level-10pct-airborne": (
         "at least 10% of the number of airborne aircraft are falsely located [...] we have selected the "
-        "threshold values as $(0.9) N_T$ for \\bar{N}_F and $(0.01) N_T$ for \\bar{N}_{AD}"
+        "threshold values as $(0.9) N_T$ for $\\bar{N}_F$ and $(0.01) N_T$ for $\\bar{N}_{AD}$"
     ),
     "ATC10-sec1.3-oscillator": "requires a short-term oscillator stability better than 5 parts in 10^8",
     "ATC10-sec2.1-threshold-behaviour": (
@@ -218,7 +219,7 @@ QUOTES: dict[str, str] = {
     ),
     "ATC10-sec2.3-segment-holds-signature": "at least once in each such time segment and possibly twice",
     "ATC10-sec2.6-monotone-in-J": (
-        "the presence of other sources of interference can only increase \\bar{N}_{FL} and \\bar{N}_{ADL}"
+        "the presence of other sources of interference can only increase $\\bar{N}_{FL}$ and $\\bar{N}_{ADL}$"
     ),
     "ATC10-sec2.7-20deg": (
         "This could be realized with 30 watts of rf power and an antenna with a 20° beamwidth."
@@ -231,10 +232,10 @@ QUOTES: dict[str, str] = {
         "performance degeneration."
     ),
     "ATC10-sec2.7-lt2dB-ADL": (
-        "the difference between required jamming power for a P_{DL} of 0.9 and 0.999 is less than 2 db"
+        "the difference between required jamming power for a $P_{DL}$ of 0.9 and 0.999 is less than 2 db"
     ),
     "ATC10-sec2.7-lt2dB-FL": (
-        "the difference between required jamming power for a P_{DL} of 0.9 and 0.999 is less than 2 db"
+        "the difference between required jamming power for a $P_{DL}$ of 0.9 and 0.999 is less than 2 db"
     ),
     "ATC10-sec2.7-nominal-33dBW": (
         "we can determine, from Figs. 2.1 and 2.2, the maximum required jammer ERP [...] we shall thus "
@@ -251,25 +252,27 @@ QUOTES: dict[str, str] = {
         "db more power to disable a $K = 100$ system"
     ),
     "ATC10-sec2.8-FL-first": (
-        "\\bar{N}_{FL} degrades more rapidly with $\\frac{J}{P_0 B \\tau}$ than does the bound on the "
+        "$\\bar{N}_{FL}$ degrades more rapidly with $\\frac{J}{P_0 B \\tau}$ than does the bound on the "
         "average number of ambiguous detections"
     ),
     "ATC10-sec2.8-FL-less-t-sensitive": (
-        'make the \\bar{N}_{FL} vs. $\\frac{J}{P_0 B \\tau}$ curve less sensitive to decreasing " t "'
+        'make the $\\bar{N}_{FL}$ vs. $\\frac{J}{P_0 B \\tau}$ curve less sensitive to decreasing " t "'
     ),
     "ATC10-sec2.8-K1000-critical": (
-        "For $K = 1000$ the required jamming power depends critically on the desired level of P_{DL} ."
+        "For $K = 1000$ the required jamming power depends critically on the desired level of $P_{DL}$ ."
     ),
     "ATC10-sec2.8-adl-falls-with-t": (
-        "This implies that p_f is decreasing and thus \\bar{N}_{ADL} is decreasing."
+        "This implies that $p_f$ is decreasing and thus $\\bar{N}_{ADL}$ is decreasing."
     ),
     "ATC10-sec2.8-first-stage-fa-rises": (
         'As " t " decreases the probability of an aircraft false alarm (on the first stage decision '
         "process) will increase."
     ),
-    "ATC10-sec2.8-pd-rises-with-t": "As t decreases p_d must decrease in order to maintain a fixed P_{DL}",
+    "ATC10-sec2.8-pd-rises-with-t": (
+        "As t decreases $p_d$ must decrease in order to maintain a fixed $P_{DL}$"
+    ),
     "ATC10-sec2.8-t0-worst": (
-        'by just considering the curves corresponding to " $t=0$ " for a fixed K and P_{DL}'
+        'by just considering the curves corresponding to " $t=0$ " for a fixed K and $P_{DL}$'
     ),
     "ATC10-sec2.8-threshold-every-curve": "each curve exhibits a strong thresholding property",
     "ATC10-sec3.1.2-coherent-beats-envelope": (
@@ -283,7 +286,7 @@ QUOTES: dict[str, str] = {
         "is not as preferable as the ROC obtained when the detector operates, only in the presence of "
         "additive gaussian noise, with the same signal to interference ratio"
     ),
-    "ATC10-sec3.3-overlap-window": "can only be nonzero if the reception time t_j satisfies",
+    "ATC10-sec3.3-overlap-window": "can only be nonzero if the reception time $t_j$ satisfies",
     "ATC10-sec3.3-peak-one": "this has a peak value of 1",
     "ATC10-sec3.4-power": (
         "constrains the average multiple access noise power to equal $\\frac{2(N-1)\\tau}{\\alpha} b$"
@@ -294,10 +297,10 @@ QUOTES: dict[str, str] = {
         "number of aircraft being considered increases."
     ),
     "ATC10-sec3.5-bound-monotone": (
-        "As N increases and/or (τ/α) increases the upper bound to p_f increases and the lower bound to "
-        "p_d decreases."
+        "As N increases and/or (τ/α) increases the upper bound to $p_f$ increases and the lower bound to "
+        "$p_d$ decreases."
     ),
-    "ATC10-sec3.5-lower-bound-printed": "$$\\phi_1 = -2\\rho_1 \\sqrt{2 \\frac{\\partial^2}{\\partial r^2}",
+    "ATC10-sec3.5-lower-bound-printed": "$$\\phi_1 = -2\\rho_1 \\sqrt{2 \\frac{\\partial^2}{\\partial r^2}$$",
     "ATC10-sec3.5-lower-bound-valid": "The bounds given by (3.5.14) constitute the lower bound to the ROC.",
     "ATC10-sec3.6-deteriorates": "the performance of the matched filter detector **deteriorates**",
     "ATC10-sec3.6-order": (
@@ -324,13 +327,13 @@ QUOTES: dict[str, str] = {
         "yielded a much more optimistic system performance than actually existed"
     ),
     "ATC10-sec3.8-example-p": "$$p = 50$$",
-    "ATC10-sec3.8-example-ratio": "the ratio of Exp_g to Exp is approximately 1.4",
-    "ATC10-sec3.8-exp-below-exp-g": "Exp approaches Exp_g monotonically from below with increasing N",
+    "ATC10-sec3.8-example-ratio": "the ratio of $Exp_g$ to Exp is approximately 1.4",
+    "ATC10-sec3.8-exp-below-exp-g": "Exp approaches $Exp_g$ monotonically from below with increasing N",
     "ATC10-sec3.8-exp-limit": (
         "$$\\text{Expf} \\sim \\text{Expfg} \\quad \\text{as } N \\rightarrow \\infty \\quad (3.8.15)$$"
     ),
     "ATC10-sec3.8-gauss-always-optimistic": (
-        "The value of p_f indicated by the ROCg is always lower than the actual p_f ."
+        "The value of $p_f$ indicated by the ROCg is always lower than the actual $p_f$ ."
     ),
     "ATC10-sec3.8-tail-ratio": (
         "the gaussian approximation to the multiple access noise distribution is a very poor approximation"
@@ -409,7 +412,7 @@ QUOTES: dict[str, str] = {
         "all within a 45° half-angle cone with a vertical axis and the vertex at the aircraft"
     ),
     "ATC10-sec4.6-dominance-stronger-exII": "This is particularly true in Example II.",
-    "ATC10-sec4.6-k-identity": "&= \\sqrt{\\text{tr}\\{(F'F)^{-1}\\} + \\frac{1}{\\beta} 1'F(F'F)^{-2}F'1}",
+    "ATC10-sec4.6-k-identity": "$&= \\sqrt{\\text{tr}\\{(F'F)^{-1}\\} + \\frac{1}{\\beta} 1'F(F'F)^{-2}F'1}$",
     "ATC10-sec4.6-marginal-gains": (
         "the point at which one begins to obtain only marginal gains by tracking $\\{\\tau_n\\}$ is the "
         "point at which"
@@ -508,43 +511,43 @@ QUOTES: dict[str, str] = {
     "ATC10-tab4.2-exII-trace_123-physical": "II .00355 3.99 14.9 1.16 14.3",
     "ATC10-tab4.2-exII-trace_all-fitted": "II .00355 3.99 14.9 1.16 14.3",
     "ATC10-tab4.2-exII-trace_all-physical": "II .00355 3.99 14.9 1.16 14.3",
-    "ATC10-tab4.3-exI-s5-alpha": "I 50 nsec 5 nsec 1.61×10^{-4} .10 282 ft 160 ft 230 ft",
-    "ATC10-tab4.3-exI-s5-psi": "I 50 nsec 5 nsec 1.61×10^{-4} .10 282 ft 160 ft 230 ft",
-    "ATC10-tab4.3-exI-s5-sd0": "I 50 nsec 5 nsec 1.61×10^{-4} .10 282 ft 160 ft 230 ft",
-    "ATC10-tab4.3-exI-s5-sdN": "I 50 nsec 5 nsec 1.61×10^{-4} .10 282 ft 160 ft 230 ft",
-    "ATC10-tab4.3-exI-s5-sdN1": "I 50 nsec 5 nsec 1.61×10^{-4} .10 282 ft 160 ft 230 ft",
-    "ATC10-tab4.3-exI-s5-sdN1-corrected": "I 50 nsec 5 nsec 1.61×10^{-4} .10 282 ft 160 ft 230 ft",
-    "ATC10-tab4.3-exI-s50-alpha": "50 nsec 50 nsec 1.61×10^{-2} .40 282 ft 209 ft 450 ft",
-    "ATC10-tab4.3-exI-s50-psi": "50 nsec 50 nsec 1.61×10^{-2} .40 282 ft 209 ft 450 ft",
-    "ATC10-tab4.3-exI-s50-sd0": "50 nsec 50 nsec 1.61×10^{-2} .40 282 ft 209 ft 450 ft",
-    "ATC10-tab4.3-exI-s50-sdN": "50 nsec 50 nsec 1.61×10^{-2} .40 282 ft 209 ft 450 ft",
-    "ATC10-tab4.3-exI-s50-sdN1": "50 nsec 50 nsec 1.61×10^{-2} .40 282 ft 209 ft 450 ft",
-    "ATC10-tab4.3-exI-s50-sdN1-corrected": "50 nsec 50 nsec 1.61×10^{-2} .40 282 ft 209 ft 450 ft",
+    "ATC10-tab4.3-exI-s5-alpha": "I 50 nsec 5 nsec $1.61×10^{-4}$ .10 282 ft 160 ft 230 ft",
+    "ATC10-tab4.3-exI-s5-psi": "I 50 nsec 5 nsec $1.61×10^{-4}$ .10 282 ft 160 ft 230 ft",
+    "ATC10-tab4.3-exI-s5-sd0": "I 50 nsec 5 nsec $1.61×10^{-4}$ .10 282 ft 160 ft 230 ft",
+    "ATC10-tab4.3-exI-s5-sdN": "I 50 nsec 5 nsec $1.61×10^{-4}$ .10 282 ft 160 ft 230 ft",
+    "ATC10-tab4.3-exI-s5-sdN1": "I 50 nsec 5 nsec $1.61×10^{-4}$ .10 282 ft 160 ft 230 ft",
+    "ATC10-tab4.3-exI-s5-sdN1-corrected": "I 50 nsec 5 nsec $1.61×10^{-4}$ .10 282 ft 160 ft 230 ft",
+    "ATC10-tab4.3-exI-s50-alpha": "50 nsec 50 nsec $1.61×10^{-2}$ .40 282 ft 209 ft 450 ft",
+    "ATC10-tab4.3-exI-s50-psi": "50 nsec 50 nsec $1.61×10^{-2}$ .40 282 ft 209 ft 450 ft",
+    "ATC10-tab4.3-exI-s50-sd0": "50 nsec 50 nsec $1.61×10^{-2}$ .40 282 ft 209 ft 450 ft",
+    "ATC10-tab4.3-exI-s50-sdN": "50 nsec 50 nsec $1.61×10^{-2}$ .40 282 ft 209 ft 450 ft",
+    "ATC10-tab4.3-exI-s50-sdN1": "50 nsec 50 nsec $1.61×10^{-2}$ .40 282 ft 209 ft 450 ft",
+    "ATC10-tab4.3-exI-s50-sdN1-corrected": "50 nsec 50 nsec $1.61×10^{-2}$ .40 282 ft 209 ft 450 ft",
     "ATC10-tab4.3-exI-s500-alpha": "50 nsec 500 nsec 1.61 .925 282 ft 274 ft 1840 ft",
     "ATC10-tab4.3-exI-s500-psi": "50 nsec 500 nsec 1.61 .925 282 ft 274 ft 1840 ft",
     "ATC10-tab4.3-exI-s500-sd0": "50 nsec 500 nsec 1.61 .925 282 ft 274 ft 1840 ft",
     "ATC10-tab4.3-exI-s500-sdN": "50 nsec 500 nsec 1.61 .925 282 ft 274 ft 1840 ft",
     "ATC10-tab4.3-exI-s500-sdN1": "50 nsec 500 nsec 1.61 .925 282 ft 274 ft 1840 ft",
     "ATC10-tab4.3-exI-s500-sdN1-corrected": "50 nsec 500 nsec 1.61 .925 282 ft 274 ft 1840 ft",
-    "ATC10-tab4.3-exI-sd0-norm-variance": "I 50 nsec 5 nsec 1.61×10^{-4} .10 282 ft 160 ft 230 ft",
-    "ATC10-tab4.3-exII-s5-alpha": "II 50 nsec 5 nsec 1.05×10^{-5} .04 910 ft 205 ft 677 ft",
-    "ATC10-tab4.3-exII-s5-psi": "II 50 nsec 5 nsec 1.05×10^{-5} .04 910 ft 205 ft 677 ft",
-    "ATC10-tab4.3-exII-s5-sd0": "II 50 nsec 5 nsec 1.05×10^{-5} .04 910 ft 205 ft 677 ft",
-    "ATC10-tab4.3-exII-s5-sdN": "II 50 nsec 5 nsec 1.05×10^{-5} .04 910 ft 205 ft 677 ft",
-    "ATC10-tab4.3-exII-s5-sdN1": "II 50 nsec 5 nsec 1.05×10^{-5} .04 910 ft 205 ft 677 ft",
-    "ATC10-tab4.3-exII-s5-sdN1-corrected": "II 50 nsec 5 nsec 1.05×10^{-5} .04 910 ft 205 ft 677 ft",
-    "ATC10-tab4.3-exII-s50-alpha": "50 nsec 50 nsec 1.05×10^{-3} .18 910 ft 396 ft 1500 ft",
-    "ATC10-tab4.3-exII-s50-psi": "50 nsec 50 nsec 1.05×10^{-3} .18 910 ft 396 ft 1500 ft",
-    "ATC10-tab4.3-exII-s50-sd0": "50 nsec 50 nsec 1.05×10^{-3} .18 910 ft 396 ft 1500 ft",
-    "ATC10-tab4.3-exII-s50-sdN": "50 nsec 50 nsec 1.05×10^{-3} .18 910 ft 396 ft 1500 ft",
-    "ATC10-tab4.3-exII-s50-sdN1": "50 nsec 50 nsec 1.05×10^{-3} .18 910 ft 396 ft 1500 ft",
-    "ATC10-tab4.3-exII-s50-sdN1-corrected": "50 nsec 50 nsec 1.05×10^{-3} .18 910 ft 396 ft 1500 ft",
-    "ATC10-tab4.3-exII-s500-alpha": "50 nsec 500 nsec 1.05×10^{-1} .635 910 ft 727 ft 4200 ft",
-    "ATC10-tab4.3-exII-s500-psi": "50 nsec 500 nsec 1.05×10^{-1} .635 910 ft 727 ft 4200 ft",
-    "ATC10-tab4.3-exII-s500-sd0": "50 nsec 500 nsec 1.05×10^{-1} .635 910 ft 727 ft 4200 ft",
-    "ATC10-tab4.3-exII-s500-sdN": "50 nsec 500 nsec 1.05×10^{-1} .635 910 ft 727 ft 4200 ft",
-    "ATC10-tab4.3-exII-s500-sdN1": "50 nsec 500 nsec 1.05×10^{-1} .635 910 ft 727 ft 4200 ft",
-    "ATC10-tab4.3-exII-s500-sdN1-corrected": "50 nsec 500 nsec 1.05×10^{-1} .635 910 ft 727 ft 4200 ft",
+    "ATC10-tab4.3-exI-sd0-norm-variance": "I 50 nsec 5 nsec $1.61×10^{-4}$ .10 282 ft 160 ft 230 ft",
+    "ATC10-tab4.3-exII-s5-alpha": "II 50 nsec 5 nsec $1.05×10^{-5}$ .04 910 ft 205 ft 677 ft",
+    "ATC10-tab4.3-exII-s5-psi": "II 50 nsec 5 nsec $1.05×10^{-5}$ .04 910 ft 205 ft 677 ft",
+    "ATC10-tab4.3-exII-s5-sd0": "II 50 nsec 5 nsec $1.05×10^{-5}$ .04 910 ft 205 ft 677 ft",
+    "ATC10-tab4.3-exII-s5-sdN": "II 50 nsec 5 nsec $1.05×10^{-5}$ .04 910 ft 205 ft 677 ft",
+    "ATC10-tab4.3-exII-s5-sdN1": "II 50 nsec 5 nsec $1.05×10^{-5}$ .04 910 ft 205 ft 677 ft",
+    "ATC10-tab4.3-exII-s5-sdN1-corrected": "II 50 nsec 5 nsec $1.05×10^{-5}$ .04 910 ft 205 ft 677 ft",
+    "ATC10-tab4.3-exII-s50-alpha": "50 nsec 50 nsec $1.05×10^{-3}$ .18 910 ft 396 ft 1500 ft",
+    "ATC10-tab4.3-exII-s50-psi": "50 nsec 50 nsec $1.05×10^{-3}$ .18 910 ft 396 ft 1500 ft",
+    "ATC10-tab4.3-exII-s50-sd0": "50 nsec 50 nsec $1.05×10^{-3}$ .18 910 ft 396 ft 1500 ft",
+    "ATC10-tab4.3-exII-s50-sdN": "50 nsec 50 nsec $1.05×10^{-3}$ .18 910 ft 396 ft 1500 ft",
+    "ATC10-tab4.3-exII-s50-sdN1": "50 nsec 50 nsec $1.05×10^{-3}$ .18 910 ft 396 ft 1500 ft",
+    "ATC10-tab4.3-exII-s50-sdN1-corrected": "50 nsec 50 nsec $1.05×10^{-3}$ .18 910 ft 396 ft 1500 ft",
+    "ATC10-tab4.3-exII-s500-alpha": "50 nsec 500 nsec $1.05×10^{-1}$ .635 910 ft 727 ft 4200 ft",
+    "ATC10-tab4.3-exII-s500-psi": "50 nsec 500 nsec $1.05×10^{-1}$ .635 910 ft 727 ft 4200 ft",
+    "ATC10-tab4.3-exII-s500-sd0": "50 nsec 500 nsec $1.05×10^{-1}$ .635 910 ft 727 ft 4200 ft",
+    "ATC10-tab4.3-exII-s500-sdN": "50 nsec 500 nsec $1.05×10^{-1}$ .635 910 ft 727 ft 4200 ft",
+    "ATC10-tab4.3-exII-s500-sdN1": "50 nsec 500 nsec $1.05×10^{-1}$ .635 910 ft 727 ft 4200 ft",
+    "ATC10-tab4.3-exII-s500-sdN1-corrected": "50 nsec 500 nsec $1.05×10^{-1}$ .635 910 ft 727 ft 4200 ft",
     "ATC10-thm3.1-gaussian-limit": (
         "then $M_i(v)$ is asymptotically (with N) the characteristic function of a gaussian random variable"
     ),

@@ -168,7 +168,7 @@ IN.published(
 IN.published(
     "tau_bar_s",
     1.0,
-    locator="Sec. 4 opening (tau_{i+1} - tau_i = 1 s); Sec. 1.3 (one update per second)",
+    locator="Sec. 4 opening ($\\tau_{i+1} - \\tau_i = 1$ s); Sec. 1.3 (one update per second)",
     unit="s",
     quantity="nominal pulse period $\\bar{\\tau}$",
 )

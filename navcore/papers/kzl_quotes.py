@@ -29,7 +29,7 @@ QUOTES: dict[str, str] = {
     ),
     "KZL-eq1-states": "That is, the state vector comprises 17 states.",
     "KZL-eq10-11-fd": (
-        "the sub-matrix F_{23} is a skew-symmetric matrix that contains the specific force "
+        "the sub-matrix $F_{23}$ is a skew-symmetric matrix that contains the specific force "
         "components transformed to the n-frame"
     ),
     "KZL-eq11-bracket": (
@@ -43,20 +43,20 @@ QUOTES: dict[str, str] = {
         "to the Euler angle angular rates."
     ),
     "KZL-eq15-orderings": (
-        "= \\frac{2\\pi}{\\lambda} \\left[\\left(\\rho_{A1}^{(n)} - \\rho_{A0}^{(n)} \\right) - "
+        "$$= \\frac{2\\pi}{\\lambda} \\left[\\left(\\rho_{A1}^{(n)} - \\rho_{A0}^{(n)} \\right) - "
         "\\left(\\rho_{A1}^{(m)} - \\rho_{A0}^{(m)} \\right) \\right]$$"
     ),
     "KZL-eq17-printed-rank": (
-        "\\frac{2\\pi}{\\lambda}\\left(\\mathbf{l}_{t}^{(m),n} - "
+        "$\\frac{2\\pi}{\\lambda}\\left(\\mathbf{l}_{t}^{(m),n} - "
         "\\mathbf{l}_{t}^{(n),n}\\right)^{T} \\left[\\hat{R}_{b}^{n} \\mathbf{l}_{02}^{b} "
         "\\times\\right] & \\mathbf{0}^{T} & \\mathbf{0}^{T} & \\mathbf{0} & \\mathbf{0} \\\\ "
         "\\mathbf{0}^{T} & \\mathbf{0}^{T} & "
         "\\frac{2\\pi}{\\lambda}\\left(\\mathbf{l}_{t}^{(m),n} - "
         "\\mathbf{l}_{t}^{(n),n}\\right)^{T} \\left[\\hat{R}_{b}^{n} \\mathbf{l}_{02}^{b} "
-        "\\times\\right]"
+        "\\times\\right]$"
     ),
     "KZL-eq17-rank": (
-        "\\mathbf{l}_{0i}^{b} is the lever arm (baseline) between the phase centers of master "
+        "$\\mathbf{l}_{0i}^{b}$ is the lever arm (baseline) between the phase centers of master "
         "antenna (A0) and antenna number i, known in the b-frame."
     ),
     "KZL-eq2-3-levelling": (

@@ -89,7 +89,7 @@ QUOTES: dict[str, str] = {
     ),
     "SP-sec2.5-H-sign": (
         "$$\\delta a = \\begin{bmatrix} 1 & 0 & 0 & 0 & -1 & 1 \\\\ 0 & 1 & 0 & 1 & 0 & -1 \\\\ "
-        "0 & 0 & 1 & -1 & 1 & 0 \\end{bmatrix}"
+        "0 & 0 & 1 & -1 & 1 & 0 \\end{bmatrix}$$"
     ),
     "SP-sec2.5-doppler-cell-hz": (
         "At the given signal level, a 20-ms integration period should be adequate for "
@@ -111,8 +111,8 @@ QUOTES: dict[str, str] = {
         "The size of the phase shift between 20-ms search intervals was 36 deg corresponding to 30 m."
     ),
     "SP-sec2.5-right-factor": (
-        "\\begin{bmatrix} 1 & 0 & 0 \\\\ 0 & 1 & 0 \\\\ 0 & 0 & 1 \\\\ 0 & 1 & -1 \\\\ -1 & 0 & "
-        "1 \\\\ 1 & -1 & 0 \\end{bmatrix}"
+        "$\\begin{bmatrix} 1 & 0 & 0 \\\\ 0 & 1 & 0 \\\\ 0 & 0 & 1 \\\\ 0 & 1 & -1 \\\\ -1 & 0 & "
+        "1 \\\\ 1 & -1 & 0 \\end{bmatrix}$"
     ),
     "SP-sec2.5-step-vs-jerk": "This is a slightly more stringent requirement, but is easier to analyze.",
     "SP-sec2.6.1-code-after-fourth-carrier": (

@@ -26,18 +26,18 @@ QUOTES: dict[str, str] = {
     ),
     "WF-eq11-large-QT": (
         "It can be seen that if the uncertainty introduced by transformation T is large "
-        "(\\mathbf{Q}_T large), the local state estimate error \\mathbf{P}_{DN} will be large, "
-        "regardless of the accuracy of the on-board navigation system (\\mathbf{P}_N small or "
+        "($\\mathbf{Q}_T$ large), the local state estimate error $\\mathbf{P}_{DN}$ will be large, "
+        "regardless of the accuracy of the on-board navigation system ($\\mathbf{P}_N$ small or "
         "large)."
     ),
     "WF-eq13-innovation": (
-        "\\hat{\\mathbf{x}}_{DL}(k/k) &= \\hat{\\mathbf{x}}_{DL}(k/k-1) + "
-        "\\mathbf{K}_{DL}(k)[\\mathbf{y}_a(k) - \\hat{\\mathbf{x}}_{DL}(k/k-1)]"
+        "$\\hat{\\mathbf{x}}_{DL}(k/k) &= \\hat{\\mathbf{x}}_{DL}(k/k-1) + "
+        "\\mathbf{K}_{DL}(k)[\\mathbf{y}_a(k) - \\hat{\\mathbf{x}}_{DL}(k/k-1)]$"
     ),
     "WF-eq14-three-factors": (
         "three factors contribute to the accuracy of this local velocity estimate: the accuracy "
-        "of the local acceleration measurement (\\mathbf{Q}_a); the accuracy of the local "
-        "velocity measurement (\\mathbf{R}_L); and the update rate ($1/T_s$)."
+        "of the local acceleration measurement ($\\mathbf{Q}_a$); the accuracy of the local "
+        "velocity measurement ($\\mathbf{R}_L$); and the update rate ($1/T_s$)."
     ),
     "WF-eq16-17-information": (
         "$$\\mathbf{P}_{DG}(k/k) = [\\mathbf{P}_{DL}^{-1}(k/k-1) + "
@@ -52,23 +52,23 @@ QUOTES: dict[str, str] = {
         "weighted least squares cost and can also be given a minimum variance interpretation."
     ),
     "WF-eq20-PNG": (
-        "\\mathbf{P} &= \\begin{bmatrix} \\mathbf{P}_{DN} & \\mathbf{P}_{NL} & \\mathbf{P}_{NG} "
+        "$\\mathbf{P} &= \\begin{bmatrix} \\mathbf{P}_{DN} & \\mathbf{P}_{NL} & \\mathbf{P}_{NG} "
         "\\\\ \\mathbf{P}_{LN} & \\mathbf{P}_{DL} & \\mathbf{P}_{NG} \\\\ \\mathbf{P}_{GN} & "
-        "\\mathbf{P}_{GL} & \\mathbf{P}_{DG} \\end{bmatrix}"
+        "\\mathbf{P}_{GL} & \\mathbf{P}_{DG} \\end{bmatrix}$"
     ),
-    "WF-eq24-PN": "\\mathbf{P}_N \\mathbf{P}_N^T = \\sigma_N^2 \\mathbf{I}",
+    "WF-eq24-PN": "$\\mathbf{P}_N \\mathbf{P}_N^T = \\sigma_N^2 \\mathbf{I}$",
     "WF-eq25-fL1c": "$f_o^{L1}/c = 5.25 \\text{m}^{-1}$",
     "WF-eq3-normal": (
         "The condition for a least-squares solution is $$\\mathbf{H}^T \\mathbf{W}[\\mathbf{m} "
         "- \\mathbf{f}(\\hat{\\mathbf{p}}^e, \\hat{\\Theta})] = 0, \\quad (3)$$"
     ),
     "WF-eq6-linear": (
-        "Using the definition of \\mathbf{H} in (4) as a derivative and assuming that the "
+        "Using the definition of $\\mathbf{H}$ in (4) as a derivative and assuming that the "
         "location estimate is close to the true value gives"
     ),
     "WF-eq6-model-error-acts-like-noise": (
         "Therefore, (6) shows that the location error is affected as much by the signal model "
-        "error $\\tilde{\\mathbf{f}}_\\theta$ as it is by the measurement error \\mathbf{e} ."
+        "error $\\tilde{\\mathbf{f}}_\\theta$ as it is by the measurement error $\\mathbf{e}$ ."
     ),
     "WF-eq6-montecarlo": (
         "$$\\hat{\\mathbf{p}}^e - \\mathbf{p}^e = (\\mathbf{H}^T \\mathbf{W} \\mathbf{H})^{-1} "
@@ -83,8 +83,8 @@ QUOTES: dict[str, str] = {
         "\\frac{2\\|\\mathbf{v}\\|}{R}, \\quad (9)$$"
     ),
     "WF-eq9-velocity-error-dominates": (
-        "Thus, reducing the uncertainty in \\mathbf{v} is at least 100 times more effective "
-        "than reducing the uncertainty in \\mathbf{p} in order to achieve the same relative "
+        "Thus, reducing the uncertainty in $\\mathbf{v}$ is at least 100 times more effective "
+        "than reducing the uncertainty in $\\mathbf{p}$ in order to achieve the same relative "
         "accuracy improvement."
     ),
     "WF-eq9-velocity-position-ratio": (
@@ -103,8 +103,8 @@ QUOTES: dict[str, str] = {
         "GPS measurements."
     ),
     "WF-fig1-slope": (
-        "The velocity estimation error bound given in (23) is calculated as a function of σ_a "
-        "and T_s with σ_T as a parameter"
+        "The velocity estimation error bound given in (23) is calculated as a function of $σ_a$ "
+        "and $T_s$ with $σ_T$ as a parameter"
     ),
     "WF-fig1-update-rate-50hz": (
         "The horizontal axes for these two figures are labeled as local accelerometer "
@@ -122,7 +122,7 @@ QUOTES: dict[str, str] = {
         "Note that the 3-satellite result is not shown for the $\\sigma_T = 0$ case because it "
         "was virtually identical to the 1-satellite result."
     ),
-    "WF-rem1-weights": "Remarks: (i) A particular set of feasible k_i 's in (22) can be, for example,",
+    "WF-rem1-weights": "Remarks: (i) A particular set of feasible $k_i$ 's in (22) can be, for example,",
     "WF-rem2-generic": (
         "(ii) The upper bound tends to be exact when one sensor error is much smaller than the "
         "others or when the estimation errors of all processors are completely correlated."
