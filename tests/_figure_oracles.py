@@ -879,7 +879,8 @@ def _sp_grade(data: Data) -> None:
 def _sp_architectures(data: Data) -> None:
     """A block diagram: the state counts it prints are the filters' layouts (receiver PVA, the
     22-state loosely and 24-state tightly coupled filters: the two clock states of the tight
-    filter counted by hand, 22 + 2 = 24)."""
+    filter counted by hand, 22 + 2 = 24), and the loosely coupled fix interval and EHE gate are
+    the 10 s and 100 m SP Sec. 2.1 prints."""
     from navcore.gnss.architectures import loosely_coupled_layout, receiver_pva_layout, tightly_coupled_layout
 
     text = " ".join(t for ax in data for t in ax.texts)
@@ -888,6 +889,10 @@ def _sp_architectures(data: Data) -> None:
                     (tightly_coupled_layout().size, "error states")):  # fmt: skip
         assert f"{n} {what}" in text, (n, what)
     assert "22 error states" in text and "24 error states" in text
+    # the loosely coupled filter's fix every 10 s if EHE < 100 m (SP Sec. 2.1, printed), the
+    # tightly coupled measurements at 1 Hz, and 4 satellites: 3 position unknowns + 1 clock bias
+    assert "position every 10 s\nif EHE < 100 m" in text
+    assert "satellite, 1 Hz" in text and "≥ 4 satellites" in text
 
 
 @check("ATC10-fig3.1")

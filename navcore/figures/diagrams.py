@@ -84,12 +84,12 @@ def atc10_matched_filter_receiver() -> Figure:
     reproduces="new",
     caption="Loosely coupled, tightly coupled and deeply integrated INS/GPS side by side, as Secs. 2.1, "
     "2.2 and 3 describe them in words (the paper has no such figure). State counts come from the layouts "
-    "of Tables 2.1-2.3 (navcore.gnss.architectures); the cascade's update interval and EHE limit from "
-    "the covariance engine's loosely coupled schedule; the minimum number of satellites is the number of "
+    "of Tables 2.1-2.3 (navcore.gnss.architectures); the cascade's update interval and EHE limit are "
+    "those Sec. 2.1 prints; the minimum number of satellites is the number of "
     "unknowns of a pseudorange fix (position and clock bias).",
 )
 def sp_integration_architectures() -> Figure:
-    from navcore.estimation.covariance_analysis import loosely_coupled_schedule, tightly_coupled_schedule
+    from navcore.estimation.covariance_analysis import tightly_coupled_schedule
     from navcore.gnss.architectures import (
         CLOCK,
         PVA,
@@ -99,14 +99,13 @@ def sp_integration_architectures() -> Figure:
     )
     from navcore.papers.sp_missions_scenarios import IN as SCENARIO
 
-    loose = inspect.signature(loosely_coupled_schedule).parameters
     tight = inspect.signature(tightly_coupled_schedule).parameters
     return diagrams.integration_architectures_diagram(
         receiver_states=receiver_pva_layout().size,
         loose_states=loosely_coupled_layout().size,
         tight_states=tightly_coupled_layout().size,
-        loose_update_s=loose["interval_steps"].default * SCENARIO.step_s,
-        ehe_limit_m=loose["max_ehe_m"].default,
+        loose_update_s=SCENARIO.lc_fix_interval_s,
+        ehe_limit_m=SCENARIO.lc_max_ehe_m,
         tight_rate_hz=1.0 / (tight["every"].default * SCENARIO.step_s),
         min_satellites=PVA.block("position").size + CLOCK.block("clock bias").size,
     )
