@@ -111,6 +111,8 @@ def _atc10_bound_check(data: Data, fig_id: str) -> None:
         p_d = paper.design_p_d(p_dl, k, t)
         expected = np.asarray(fn(10.0 ** (s.x / 10.0), p_d, k, t, paper.geometry())) / math.log(10.0)
         near(s.y, expected, rtol=1e-9, what=f"{fig_id} {s.label}")
+        if n in ("1", "2"):  # the curve spans the drawn axis, -25 to -5 dB, in 0.05 dB steps
+            near([s.x[0], s.x[-1], s.x[1] - s.x[0]], [-25.0, -5.0, 0.05], rtol=1e-9)
         if s.y.max() < level:
             continue
         x_cross = crossing(s.x, s.y, level)
@@ -423,8 +425,12 @@ def _atc10_rms(data: Data, fig_id: str) -> None:
         near(head.x, n[: N_SHOWN + 1])
         near(tail_p.y, rms_p[N_SHOWN:])
         near(tail_c.y, rms_c[N_SHOWN:])
+        near(tail_p.x, n[N_SHOWN:], what="the three-satellite tail starts at epoch N")
+        near(tail_c.x, n[N_SHOWN:], what="the three-satellite tail starts at epoch N")
         near(tail_p.y[0], tail_c.y[0], what="same history before the drop")
         assert np.all(tail_c.y[1:] < tail_p.y[1:])
+    (drop,) = [s for s in lines(ax) if len(s.x) == 2]
+    near(drop.x, [N_SHOWN, N_SHOWN], what="the vertical line marks the drop to three satellites at N")
 
 
 check("ATC10-fig4.2", "ATC10-fig4.3")(_atc10_rms)

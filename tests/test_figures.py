@@ -4,6 +4,7 @@ deterministically. The data checks (and their oracles) are in ``_figure_oracles.
 from __future__ import annotations
 
 import hashlib
+from pathlib import Path
 
 import matplotlib.pyplot as plt
 import pytest
@@ -254,3 +255,13 @@ def test_register_records_the_spec_and_refuses_a_second_function_under_one_id(mo
         figures.register("KZL-test", paper="KZL", reproduces="Fig. 9", caption="c")(other)
     with pytest.raises(ValueError, match="registered twice"):
         figures.register("KZL-fig1", paper="KZL", reproduces="Fig. 1", caption="c")(other)
+
+
+def test_write_all_by_default_writes_every_registered_figure_to_figures(tmp_path, monkeypatch):
+    """Oracle: the defaults by hand, the folder ``figures`` of the working directory and every
+    registered figure (here a registry of one)."""
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setattr(figures, "registry", lambda: {"KZL-fig1": figures.spec("KZL-fig1")})
+    paths = figures.write_all()
+    assert paths == [Path("figures") / "KZL-fig1.svg", Path("figures") / "KZL-fig1.png"]
+    assert all((tmp_path / p).stat().st_size > 0 for p in paths)

@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import functools
 import math
+from typing import Any
 
 import matplotlib.pyplot as plt
 import numpy as np
@@ -131,16 +133,9 @@ def _k_figure(quantity: str, k: int, p_dl: float) -> Figure:
     return fig
 
 
-def _make_k_figure(quantity: str, k: int, p_dl: float):
-    # made at import: the drawing is a module-level function, called when the figure is drawn
-    def draw() -> Figure:
-        return _k_figure(quantity, k, p_dl)
-
-    return draw
-
-
 for _n, _q, _k, _p in K_FIGURES:
-    _f = _make_k_figure(_q, _k, _p)
+    # registered at import: the drawing itself is the module-level _k_figure, called when drawn
+    _f: Any = functools.partial(_k_figure, _q, _k, _p)
     _f.__qualname__ = f"fig2_{_n}"
     _f.__name__ = f"fig2_{_n}"
     register(
