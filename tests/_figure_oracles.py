@@ -769,8 +769,9 @@ def _sp_fig27(data: Data) -> None:
 
 def _sp_velocity(data: Data, fig_id: str) -> None:
     """True and filter-believed horizontal velocity errors recomputed from the covariance
-    engine's run. Oracle: both start from the same initial covariance (equal at t = 0), and the
-    filter's own is the root of the sum of its north and east variances, computed here."""
+    engine's run. Oracle: both start from the same initial covariance (equal at t = 0), the
+    filter's own is the root of the sum of its north and east variances, computed here, and the
+    event lines sit at the minutes of Sec. 2.6.1's timeline."""
     from navcore.papers import sp_missions_scenarios as sc
 
     label = "LC 1 nmi/h" if fig_id.endswith("2.2") else "TC 1 nmi/h"
@@ -781,6 +782,11 @@ def _sp_velocity(data: Data, fig_id: str) -> None:
     near(own.y, np.sqrt(res.filter_var[:, 3] + res.filter_var[:, 4]))
     near(true.y[0], own.y[0], rtol=1e-9)
     near(true.x, res.t / 60)
+    near(own.x, res.t / 60)
+    # the dotted event lines at the minutes Sec. 2.6.1 gives (as the caption prints them):
+    # carriers lost at 6, 9, 12, 15, codes lost at 17, 20, 23, 26, codes back from 46 every 3 min
+    events = sorted(s.x[0] for s in lines(ax) if len(s.x) == 2 and s.x[0] == s.x[1])
+    near(events, [6, 9, 12, 15, 17, 20, 23, 26, 46, 49, 52, 55], what="event lines (min)")
 
 
 check("SP-fig2.2", "SP-fig2.3")(_sp_velocity)

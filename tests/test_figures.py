@@ -265,3 +265,15 @@ def test_write_all_by_default_writes_every_registered_figure_to_figures(tmp_path
     paths = figures.write_all()
     assert paths == [Path("figures") / "KZL-fig1.svg", Path("figures") / "KZL-fig1.png"]
     assert all((tmp_path / p).stat().st_size > 0 for p in paths)
+
+
+def test_the_micro_g_axis_functions_are_each_others_inverse():
+    """Oracle: 1 ug = 9.80665e-6 m/s^2 (the standard gravity) by hand; matplotlib's secondary
+    axis needs the forward and inverse functions to be each other's inverse."""
+    import numpy as np
+
+    from navcore.figures import wf as wf_figures
+
+    x = np.array([1e-5, 9.80665e-4, 1.0])
+    np.testing.assert_allclose(wf_figures._to_micro_g(x), x / 9.80665e-6, rtol=1e-12)
+    np.testing.assert_allclose(wf_figures._from_micro_g(wf_figures._to_micro_g(x)), x, rtol=1e-12)
