@@ -150,7 +150,8 @@ def test_value_bars_draws_each_value_its_label_the_printed_mark_and_the_legend()
 
 def test_value_bars_defaults_blue_this_book_linear_no_marks():
     """Oracle: the defaults by hand: every bar the book's blue, the legend 'this book', no
-    printed marks, a linear axis, values formatted with no decimals."""
+    printed marks, a linear axis, values formatted with no decimals; printed marks are
+    'printed in the paper'."""
     from matplotlib.colors import to_rgba
 
     fig, ax = plt.subplots()
@@ -162,6 +163,9 @@ def test_value_bars_defaults_blue_this_book_linear_no_marks():
         legend = ax.get_legend()
         assert [t.get_text() for t in legend.get_texts()] == ["this book"]
         assert legend.legend_handles[0].get_facecolor() == to_rgba("tab:blue")
+        ax.clear()
+        figures.value_bars(ax, {"x": 2.6}, printed={"x": 3.0})
+        assert [t.get_text() for t in ax.get_legend().get_texts()] == ["this book", "printed in the paper"]
     finally:
         plt.close(fig)
 
