@@ -2,7 +2,7 @@
 
 :func:`appearance` lists, per axes, its title, axis labels, scales and limits, the style of
 every line, collection and patch (colour, line style and width, marker, face colour, order),
-every text (string, position, size, alignment, colour) and the legend (entries, place,
+every text (string, position, size, alignment, colour), the tick labels and the legend (entries, place,
 columns, size), and the figure's size. The data themselves are checked against the model and
 the oracles in ``_figure_oracles.py``; this is the rest.
 
@@ -121,6 +121,7 @@ def _axes(ax: Any) -> dict[str, Any]:
         "axis": ax.axison,
         "aspect": str(ax.get_aspect()),
         "xticklabels": [t.get_text() for t in ax.get_xticklabels()],
+        "yticklabels": [t.get_text() for t in ax.get_yticklabels()],
         "lines": lines,
         "collections": collections,
         "patches": patches,
