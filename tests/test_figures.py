@@ -281,3 +281,29 @@ def test_the_micro_g_axis_functions_are_each_others_inverse():
     x = np.array([1e-5, 9.80665e-4, 1.0])
     np.testing.assert_allclose(wf_figures._to_micro_g(x), x / 9.80665e-6, rtol=1e-12)
     np.testing.assert_allclose(wf_figures._from_micro_g(wf_figures._to_micro_g(x)), x, rtol=1e-12)
+
+
+def test_varying_range_runs_from_the_first_curve_in_view_to_the_last_flattening():
+    """Oracle: a synthetic curve on a 0.1 dB grid, thresholds placed by hand. It is in view
+    (more than 0.05 decades above the floor) from 12 dB, and within 0.02 decades of its plateau
+    from 38.1 dB on: padded by 2 dB and rounded out to 5 dB the range is 10 to 40 dB. The
+    points exactly at 0.05 above the floor (11.9 dB) and exactly 0.02 below the plateau
+    (38.1 dB) are outside; the curve stays within a decade of the floor up to 17 dB."""
+    import numpy as np
+
+    from navcore.figures.atc10_jamming import LOG10_FLOOR, X_AXIS_DB, varying_range
+
+    x = np.round(np.arange(-20.0, 80.05, 0.1), 10)
+    y = np.full_like(x, LOG10_FLOOR - 1.0)
+    y[np.isclose(x, 11.9)] = LOG10_FLOOR + 0.05
+    y[(x > 11.95) & (x < 16.95)] = LOG10_FLOOR + 0.06
+    ramp = (x > 16.95) & (x < 38.05)
+    y[ramp] = np.linspace(LOG10_FLOOR + 1.1, -0.03, ramp.sum())
+    y[np.isclose(x, 38.1)] = 0.0 - 0.02
+    y[x > 38.15] = 0.0
+    assert varying_range(x, [y]) == (10.0, 40.0)
+    assert varying_range(x, [y], pad_db=3.0) == (5.0, 45.0)
+    # a flat curve never moves: the whole axis
+    assert varying_range(x, [np.zeros_like(x)]) == X_AXIS_DB
+    # padding beyond the axis is clipped to it
+    assert varying_range(x, [y], pad_db=40.0) == X_AXIS_DB
