@@ -63,6 +63,7 @@ def _axes(ax: Any) -> dict[str, Any]:
             "label": str(line.get_label()),
             "colour": _colour(line.get_color()),
             "ls": str(line.get_linestyle()),
+            "drawstyle": str(line.get_drawstyle()),
             "lw": _num(line.get_linewidth()),
             "marker": str(line.get_marker()),
             "ms": _num(line.get_markersize()),
