@@ -115,6 +115,7 @@ def _axes(ax: Any) -> dict[str, Any]:
     ]
     return {
         "title": ax.get_title(),
+        "title_size": _num(ax.title.get_fontsize()),
         "xlabel": ax.get_xlabel(),
         "ylabel": ax.get_ylabel(),
         "scales": [ax.get_xscale(), ax.get_yscale()],
