@@ -307,3 +307,26 @@ def test_varying_range_runs_from_the_first_curve_in_view_to_the_last_flattening(
     assert varying_range(x, [np.zeros_like(x)]) == X_AXIS_DB
     # padding beyond the axis is clipped to it
     assert varying_range(x, [y], pad_db=40.0) == X_AXIS_DB
+
+
+def test_covered_counts_a_point_within_two_pixels_of_the_legend_and_not_beyond():
+    """Oracle: points placed by hand in display pixels, 1.5 px and 2.5 px left of the legend's
+    box: the first counts (the box is padded by 2 px), the second does not."""
+    fig, ax = plt.subplots()
+    try:
+        ax.set_xlim(0, 1)
+        ax.set_ylim(0, 1)
+        ax.plot([0.0, 0.1], [0.0, 0.1], label="far away")
+        legend = ax.legend(loc="upper right")
+        fig.canvas.draw()
+        box = legend.get_window_extent()
+        to_data = ax.transData.inverted()
+        near, beyond = (to_data.transform((box.x0 - d, (box.y0 + box.y1) / 2)) for d in (1.5, 2.5))
+        ax.scatter([beyond[0]], [beyond[1]])
+        fig.canvas.draw()
+        assert figures._covered(ax, legend) == 0
+        ax.scatter([near[0]], [near[1]])
+        fig.canvas.draw()
+        assert figures._covered(ax, legend) == 1
+    finally:
+        plt.close(fig)
