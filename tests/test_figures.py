@@ -201,22 +201,25 @@ def test_a_legend_over_the_data_moves_to_a_free_place_or_below_the_axes():
 
 
 def test_covered_counts_lines_bars_texts_and_points_under_the_legend():
-    """Oracle: by hand, a legend in the upper right corner over one line, one bar, one text and
-    two of three points: 5; an empty line and a hidden one count nothing."""
+    """Oracle: by hand, a legend in the upper right corner over one line, a one-point line, one
+    bar, one text and two of four points: 6; an empty line and a hidden one, drawn first, count
+    nothing, and a point level with the legend but left of it is not under it."""
     fig, ax = plt.subplots()
     try:
         ax.set_xlim(0, 1)
         ax.set_ylim(0, 1)
-        ax.plot([0.9, 0.95], [0.95, 0.95], label="line")
-        ax.bar([0.9], [0.97], width=0.02, label="bar")
-        ax.text(0.9, 0.93, "text")
-        ax.scatter([0.92, 0.94, 0.1], [0.96, 0.96, 0.1], label="points")
         ax.plot([], [], label="empty")
         (hidden,) = ax.plot([0.9, 0.95], [0.9, 0.9], label="hidden")
         hidden.set_visible(False)
+        ax.plot([0.9, 0.95], [0.95, 0.95], label="line")
+        ax.plot([0.93], [0.94], "o", label="one point")
+        ax.bar([0.9], [0.97], width=0.02, label="bar")
+        ax.text(0.9, 0.93, "text")
+        # two points under the legend; one level with it but to its left; one far away
+        ax.scatter([0.92, 0.94, 0.1, 0.1], [0.96, 0.96, 0.96, 0.1], label="points")
         legend = ax.legend(loc="upper right")
         fig.canvas.draw()
-        assert figures._covered(ax, legend) == 5
+        assert figures._covered(ax, legend) == 6
         figures.tidy_legends(fig)
         assert legend._loc != 1
     finally:
