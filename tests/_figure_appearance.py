@@ -2,9 +2,9 @@
 
 :func:`appearance` lists, per axes, its title, axis labels, scales and limits, the style of
 every line, collection and patch (colour, line style and width, marker, face colour, order),
-every text (string, position, size, alignment, colour), the tick labels and the legend (entries, place,
-columns, size), and the figure's size. The data themselves are checked against the model and
-the oracles in ``_figure_oracles.py``; this is the rest.
+every text (string, position, size, alignment, colour), the tick labels, the minor ticks and
+the legend (entries, place, columns, size), and the figure's size. The data themselves are
+checked against the model and the oracles in ``_figure_oracles.py``; this is the rest.
 
 The oracle is the appearance reviewed when the figure was last changed on purpose, recorded
 in ``figure_appearance.json``. A change in a figure's code that changes what a reader sees (a
@@ -124,6 +124,10 @@ def _axes(ax: Any) -> dict[str, Any]:
         "aspect": str(ax.get_aspect()),
         "xticklabels": [t.get_text() for t in ax.get_xticklabels()],
         "yticklabels": [t.get_text() for t in ax.get_yticklabels()],
+        "minor_ticks": [
+            [_num(v) for v in ax.xaxis.get_minorticklocs()],
+            [_num(v) for v in ax.yaxis.get_minorticklocs()],
+        ],
         "lines": lines,
         "collections": collections,
         "patches": patches,

@@ -306,6 +306,10 @@ def test_varying_range_runs_from_the_first_curve_in_view_to_the_last_flattening(
     y[x > 38.15] = 0.0
     assert varying_range(x, [y]) == (10.0, 40.0)
     assert varying_range(x, [y], pad_db=3.0) == (5.0, 45.0)
+    # a curve that moves at one point only: that point, padded
+    step = np.where(x < 29.95, LOG10_FLOOR - 1.0, 0.0)
+    step[np.isclose(x, 30.0)] = -1.0
+    assert varying_range(x, [step]) == (25.0, 35.0)
     # a flat curve never moves: the whole axis
     assert varying_range(x, [np.zeros_like(x)]) == X_AXIS_DB
     # padding beyond the axis is clipped to it
