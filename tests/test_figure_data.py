@@ -80,3 +80,14 @@ def test_every_check_fails_on_scaled_data_of_a_synthetic_kind():
     )  # fmt: skip
     (out,) = scaled([axes], 1 / 57)
     assert out.series[0].y.tolist() == [1.0] and out.texts == ("0.298246 states, 1.75439 Hz",)
+
+
+def test_masked_values_are_read_as_nan_and_integers_as_floats():
+    """Oracle: by hand; a masked entry (a gap matplotlib does not draw) reads as NaN, never as a
+    fill value, for integer and float data alike."""
+    ints = figures._floats(np.ma.masked_array([1, 2, 3], mask=[False, True, False]))
+    floats = figures._floats(np.ma.masked_array([1.5, 2.5], mask=[True, False]))
+    assert ints.dtype == np.float64 and floats.dtype == np.float64
+    np.testing.assert_array_equal(ints, [1.0, np.nan, 3.0])
+    np.testing.assert_array_equal(floats, [np.nan, 2.5])
+    assert figures._floats([1, 2]).tolist() == [1.0, 2.0]
