@@ -91,3 +91,21 @@ def test_masked_values_are_read_as_nan_and_integers_as_floats():
     np.testing.assert_array_equal(ints, [1.0, np.nan, 3.0])
     np.testing.assert_array_equal(floats, [np.nan, 2.5])
     assert figures._floats([1, 2]).tolist() == [1.0, 2.0]
+
+
+def test_a_segment_reads_as_its_two_ends_and_an_empty_collection_as_nothing():
+    """Oracle: by hand; a three-point segment (a polyline in a LineCollection) reads as its first
+    and last points; ``vlines`` of no values reads as an empty series."""
+    from matplotlib.collections import LineCollection
+
+    fig, ax = plt.subplots()
+    try:
+        ax.add_collection(LineCollection([[(0.0, 1.0), (2.0, 3.0), (4.0, 5.0)]], label="polyline"))
+        ax.vlines([], 0.0, 1.0, label="none")
+        (axes,) = figures.plotted(fig)
+    finally:
+        plt.close(fig)
+    poly = axes.get("polyline")
+    assert (poly.kind, poly.x.tolist(), poly.y.tolist()) == ("segments", [0.0, 4.0], [1.0, 5.0])
+    none = axes.get("none")
+    assert (none.kind, none.x.tolist(), none.y.tolist()) == ("segments", [], [])
