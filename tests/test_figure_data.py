@@ -109,3 +109,15 @@ def test_a_segment_reads_as_its_two_ends_and_an_empty_collection_as_nothing():
     assert (poly.kind, poly.x.tolist(), poly.y.tolist()) == ("segments", [0.0, 4.0], [1.0, 5.0])
     none = axes.get("none")
     assert (none.kind, none.x.tolist(), none.y.tolist()) == ("segments", [], [])
+
+
+def test_a_scatter_reads_as_its_points():
+    """Oracle: by hand; a scatter's offsets are its points, in order."""
+    fig, ax = plt.subplots()
+    try:
+        ax.scatter([1.0, 2.0, 3.0], [4.0, 5.0, 6.0], label="dots")
+        (axes,) = figures.plotted(fig)
+    finally:
+        plt.close(fig)
+    dots = axes.get("dots")
+    assert (dots.kind, dots.x.tolist(), dots.y.tolist()) == ("points", [1.0, 2.0, 3.0], [4.0, 5.0, 6.0])
