@@ -111,6 +111,8 @@ def _atc10_bound_check(data: Data, fig_id: str) -> None:
         p_d = paper.design_p_d(p_dl, k, t)
         expected = np.asarray(fn(10.0 ** (s.x / 10.0), p_d, k, t, paper.geometry())) / math.log(10.0)
         near(s.y, expected, rtol=1e-9, what=f"{fig_id} {s.label}")
+        if n in ("1", "2"):  # the curve spans the drawn axis, -25 to -5 dB, in 0.05 dB steps
+            near([s.x[0], s.x[-1], s.x[1] - s.x[0]], [-25.0, -5.0, 0.05], rtol=1e-9)
         if s.y.max() < level:
             continue
         x_cross = crossing(s.x, s.y, level)
@@ -423,8 +425,12 @@ def _atc10_rms(data: Data, fig_id: str) -> None:
         near(head.x, n[: N_SHOWN + 1])
         near(tail_p.y, rms_p[N_SHOWN:])
         near(tail_c.y, rms_c[N_SHOWN:])
+        near(tail_p.x, n[N_SHOWN:], what="the three-satellite tail starts at epoch N")
+        near(tail_c.x, n[N_SHOWN:], what="the three-satellite tail starts at epoch N")
         near(tail_p.y[0], tail_c.y[0], what="same history before the drop")
         assert np.all(tail_c.y[1:] < tail_p.y[1:])
+    (drop,) = [s for s in lines(ax) if len(s.x) == 2]
+    near(drop.x, [N_SHOWN, N_SHOWN], what="the vertical line marks the drop to three satellites at N")
 
 
 check("ATC10-fig4.2", "ATC10-fig4.3")(_atc10_rms)
@@ -763,8 +769,9 @@ def _sp_fig27(data: Data) -> None:
 
 def _sp_velocity(data: Data, fig_id: str) -> None:
     """True and filter-believed horizontal velocity errors recomputed from the covariance
-    engine's run. Oracle: both start from the same initial covariance (equal at t = 0), and the
-    filter's own is the root of the sum of its north and east variances, computed here."""
+    engine's run. Oracle: both start from the same initial covariance (equal at t = 0), the
+    filter's own is the root of the sum of its north and east variances, computed here, and the
+    event lines sit at the minutes of Sec. 2.6.1's timeline."""
     from navcore.papers import sp_missions_scenarios as sc
 
     label = "LC 1 nmi/h" if fig_id.endswith("2.2") else "TC 1 nmi/h"
@@ -775,6 +782,11 @@ def _sp_velocity(data: Data, fig_id: str) -> None:
     near(own.y, np.sqrt(res.filter_var[:, 3] + res.filter_var[:, 4]))
     near(true.y[0], own.y[0], rtol=1e-9)
     near(true.x, res.t / 60)
+    near(own.x, res.t / 60)
+    # the dotted event lines at the minutes Sec. 2.6.1 gives (as the caption prints them):
+    # carriers lost at 6, 9, 12, 15, codes lost at 17, 20, 23, 26, codes back from 46 every 3 min
+    events = sorted(s.x[0] for s in lines(ax) if len(s.x) == 2 and s.x[0] == s.x[1])
+    near(events, [6, 9, 12, 15, 17, 20, 23, 26, 46, 49, 52, 55], what="event lines (min)")
 
 
 check("SP-fig2.2", "SP-fig2.3")(_sp_velocity)
@@ -879,7 +891,8 @@ def _sp_grade(data: Data) -> None:
 def _sp_architectures(data: Data) -> None:
     """A block diagram: the state counts it prints are the filters' layouts (receiver PVA, the
     22-state loosely and 24-state tightly coupled filters: the two clock states of the tight
-    filter counted by hand, 22 + 2 = 24)."""
+    filter counted by hand, 22 + 2 = 24), and the loosely coupled fix interval and EHE gate are
+    the 10 s and 100 m SP Sec. 2.1 prints."""
     from navcore.gnss.architectures import loosely_coupled_layout, receiver_pva_layout, tightly_coupled_layout
 
     text = " ".join(t for ax in data for t in ax.texts)
@@ -888,6 +901,10 @@ def _sp_architectures(data: Data) -> None:
                     (tightly_coupled_layout().size, "error states")):  # fmt: skip
         assert f"{n} {what}" in text, (n, what)
     assert "22 error states" in text and "24 error states" in text
+    # the loosely coupled filter's fix every 10 s if EHE < 100 m (SP Sec. 2.1, printed), the
+    # tightly coupled measurements at 1 Hz, and 4 satellites: 3 position unknowns + 1 clock bias
+    assert "position every 10 s\nif EHE < 100 m" in text
+    assert "satellite, 1 Hz" in text and "≥ 4 satellites" in text
 
 
 @check("ATC10-fig3.1")

@@ -80,3 +80,44 @@ def test_every_check_fails_on_scaled_data_of_a_synthetic_kind():
     )  # fmt: skip
     (out,) = scaled([axes], 1 / 57)
     assert out.series[0].y.tolist() == [1.0] and out.texts == ("0.298246 states, 1.75439 Hz",)
+
+
+def test_masked_values_are_read_as_nan_and_integers_as_floats():
+    """Oracle: by hand; a masked entry (a gap matplotlib does not draw) reads as NaN, never as a
+    fill value, for integer and float data alike."""
+    ints = figures._floats(np.ma.masked_array([1, 2, 3], mask=[False, True, False]))
+    floats = figures._floats(np.ma.masked_array([1.5, 2.5], mask=[True, False]))
+    assert ints.dtype == np.float64 and floats.dtype == np.float64
+    np.testing.assert_array_equal(ints, [1.0, np.nan, 3.0])
+    np.testing.assert_array_equal(floats, [np.nan, 2.5])
+    assert figures._floats([1, 2]).tolist() == [1.0, 2.0]
+
+
+def test_a_segment_reads_as_its_two_ends_and_an_empty_collection_as_nothing():
+    """Oracle: by hand; a three-point segment (a polyline in a LineCollection) reads as its first
+    and last points; ``vlines`` of no values reads as an empty series."""
+    from matplotlib.collections import LineCollection
+
+    fig, ax = plt.subplots()
+    try:
+        ax.add_collection(LineCollection([[(0.0, 1.0), (2.0, 3.0), (4.0, 5.0)]], label="polyline"))
+        ax.vlines([], 0.0, 1.0, label="none")
+        (axes,) = figures.plotted(fig)
+    finally:
+        plt.close(fig)
+    poly = axes.get("polyline")
+    assert (poly.kind, poly.x.tolist(), poly.y.tolist()) == ("segments", [0.0, 4.0], [1.0, 5.0])
+    none = axes.get("none")
+    assert (none.kind, none.x.tolist(), none.y.tolist()) == ("segments", [], [])
+
+
+def test_a_scatter_reads_as_its_points():
+    """Oracle: by hand; a scatter's offsets are its points, in order."""
+    fig, ax = plt.subplots()
+    try:
+        ax.scatter([1.0, 2.0, 3.0], [4.0, 5.0, 6.0], label="dots")
+        (axes,) = figures.plotted(fig)
+    finally:
+        plt.close(fig)
+    dots = axes.get("dots")
+    assert (dots.kind, dots.x.tolist(), dots.y.tolist()) == ("points", [1.0, 2.0, 3.0], [4.0, 5.0, 6.0])

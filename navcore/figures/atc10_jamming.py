@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import functools
 import math
+from typing import Any
 
 import matplotlib.pyplot as plt
 import numpy as np
@@ -113,29 +115,27 @@ def varying_range(x: np.ndarray, curves: list[np.ndarray], pad_db: float = 2.0) 
     return lo, hi
 
 
-def _make_k_figure(quantity: str, k: int, p_dl: float):
-    def draw() -> Figure:
-        fig, ax = plt.subplots()
-        bounds = {t: lambda x, t=t: log10_bound(quantity, x, p_dl, k, t) for t in T_VALUES}
-        x = np.linspace(*X_AXIS_DB, 501)
-        x_lo, x_hi = varying_range(x, [bound(x) for bound in bounds.values()])
-        # a figure whose curves all change within half the paper's axis is drawn on that part
-        # only (Figs. 2.4 and 2.5 would otherwise squeeze everything into the first 20 dB)
-        if x_hi - x_lo > 0.5 * (X_AXIS_DB[1] - X_AXIS_DB[0]):
-            x_lo, x_hi = X_AXIS_DB
-        x = np.linspace(x_lo, x_hi, 501)
-        for t, bound in bounds.items():
-            p_d = paper.design_p_d(p_dl, k, t)
-            ax.plot(x, bound(x), label=rf"$t$ = {t:g}, $p_d$ = {p_d:.3f}")
-        _axes_common(ax, quantity, x_lo, x_hi)
-        ax.set_title(rf"$K$ = {k}, $P_{{DL}}$ = {p_dl}", fontsize=10)
-        return fig
-
-    return draw
+def _k_figure(quantity: str, k: int, p_dl: float) -> Figure:
+    fig, ax = plt.subplots()
+    bounds = {t: lambda x, t=t: log10_bound(quantity, x, p_dl, k, t) for t in T_VALUES}
+    x = np.linspace(*X_AXIS_DB, 501)
+    x_lo, x_hi = varying_range(x, [bound(x) for bound in bounds.values()])
+    # a figure whose curves all change within half the paper's axis is drawn on that part
+    # only (Figs. 2.4 and 2.5 would otherwise squeeze everything into the first 20 dB)
+    if x_hi - x_lo > 0.5 * (X_AXIS_DB[1] - X_AXIS_DB[0]):
+        x_lo, x_hi = X_AXIS_DB
+    x = np.linspace(x_lo, x_hi, 501)
+    for t, bound in bounds.items():
+        p_d = paper.design_p_d(p_dl, k, t)
+        ax.plot(x, bound(x), label=rf"$t$ = {t:g}, $p_d$ = {p_d:.3f}")
+    _axes_common(ax, quantity, x_lo, x_hi)
+    ax.set_title(rf"$K$ = {k}, $P_{{DL}}$ = {p_dl}", fontsize=10)
+    return fig
 
 
 for _n, _q, _k, _p in K_FIGURES:
-    _f = _make_k_figure(_q, _k, _p)
+    # registered at import: the drawing itself is the module-level _k_figure, called when drawn
+    _f: Any = functools.partial(_k_figure, _q, _k, _p)
     _f.__qualname__ = f"fig2_{_n}"
     _f.__name__ = f"fig2_{_n}"
     register(

@@ -84,8 +84,8 @@ def atc10_matched_filter_receiver() -> Figure:
     reproduces="new",
     caption="Loosely coupled, tightly coupled and deeply integrated INS/GPS side by side, as Secs. 2.1, "
     "2.2 and 3 describe them in words (the paper has no such figure). State counts come from the layouts "
-    "of Tables 2.1-2.3 (navcore.gnss.architectures); the cascade's update interval and EHE limit from "
-    "the covariance engine's loosely coupled schedule; the minimum number of satellites is the number of "
+    "of Tables 2.1-2.3 (navcore.gnss.architectures); the cascade's update interval and EHE limit are "
+    "those Sec. 2.1 prints; the minimum number of satellites is the number of "
     "unknowns of a pseudorange fix (position and clock bias).",
 )
 def sp_integration_architectures() -> Figure:
