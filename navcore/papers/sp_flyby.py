@@ -225,15 +225,15 @@ IN.convention(
     "snr_measure",
     "C/N0",
     readings={
-        "a carrier-to-noise density, $C/N_0$ in dB-Hz": "C/N0",
-        "a signal-to-noise ratio in the tracking loop's noise bandwidth, $C/N_0 - 10 \\log_{10} B_L$": "loop",
+        "$C/N_0$ in dB-Hz": "C/N0",
+        "a ratio in each loop's own noise bandwidth": "loop",
     },
     quantity="measure of Sec. 2.5's signal-to-noise thresholds (19, 18, 21 and 22 dB)",
     reason="Sec. 2.5 prints the thresholds in dB, not dB-Hz: a signal-to-noise ratio needs a bandwidth, "
     "which the text does not name. Read as $C/N_0$, the thresholds do not depend on the loops; read in "
-    "each loop's own noise bandwidth (the carrier loop's, Table 2.6 or 5.83 Hz; the code loop's, 1.5 or "
-    "0.5 Hz), they do, as Sec. 2.6.2 says the outage does ('a function of the bandwidth of the carrier "
-    "tracking loops')",
+    "each loop's own noise bandwidth $B_L$ (the carrier loop's, Table 2.6 or 5.83 Hz; the code loop's, "
+    "1.5 or 0.5 Hz), as $C/N_0 - 10 \\log_{10} B_L$, they do, as Sec. 2.6.2 says the outage does ('a "
+    "function of the bandwidth of the carrier tracking loops')",
 )
 IN.convention(
     "table27_clock",
