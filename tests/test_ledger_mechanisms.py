@@ -461,6 +461,81 @@ def test_an_other_reading_whose_band_is_too_wide_does_not_make_the_claim_consist
     assert "The reading that agrees does so over only part of a band" in wide.note()
 
 
+def test_other_readings_bands_stop_at_the_first_reading_that_decides():
+    """Conventions c0, c1 (readings 0 and 1 each) and one assumed input: the value is
+    10 * (1 + c0 + c1) + plausible. The reading used (0, 0) gives [9, 11] against 20: no
+    agreement. The combinations after it, in order: (0, 1) gives [19, 21], which agrees and
+    decides, so the verdict is settled and the bands of (1, 0) and (1, 1) are not run; their
+    values (20 and 30) are, and the note says they are at the nominal inputs. Oracle: the rule of the
+    module docstring ("the readings after it show their values") by hand, and the runs counted."""
+    runs = []
+
+    def compute():
+        runs.append((IN.c0, IN.c1, IN.plausible))
+        return 10.0 * (1.0 + IN.c0 + IN.c1) + IN.plausible
+
+    value, tol = printed("20.0")
+    ev = evaluate(make(published=value, tolerance=tol, compute=compute, expected_status="consistent"))
+    assert ev.status == "consistent" and ev.passes
+    bands = {(r["reading"][NAME + "c0"], r["reading"][NAME + "c1"]): r["band"] for r in ev.readings}
+    used = ev.readings[0]["reading"][NAME + "c0"]
+    other = next(k[0] for k in bands if k[0] != used)
+    assert bands[(used, used)] == (9.0, 11.0) and bands[(used, other)] == (19.0, 21.0)
+    assert bands[(other, used)] is None and bands[(other, other)] is None
+    # the band's points (one input, its low and high ends) for two readings; values for four
+    assert sorted(r for r in runs if r[2] != 0.0) == [
+        (0.0, 0.0, -1.0),
+        (0.0, 0.0, 1.0),
+        (0.0, 1.0, -1.0),
+        (0.0, 1.0, 1.0),
+    ]
+    assert sorted({r[:2] for r in runs}) == [(0.0, 0.0), (0.0, 1.0), (1.0, 0.0), (1.0, 1.0)]
+    assert "20 m at the nominal inputs" in ev.note() and "30 m at the nominal inputs" in ev.note()
+
+
+def test_a_statement_whose_one_at_a_time_runs_hold_both_truth_values_runs_no_corner():
+    """x0 > 0.7 or x1 > 0.7 at the nominal (0.5, 0.5) is False; x0 alone at its high end makes it
+    True: after the one-at-a-time runs the band already holds both truth values, so the four
+    corners of the two-input box (which could only repeat them) are not run, and the band is
+    (False, True) as with them. x0 + x1 > 1.5 holds at none of the one-at-a-time runs (each
+    input alone reaches 1.5 only at its end, not beyond): its corners are run, and the corner
+    (1, 1) is the only one that makes it True. Oracle: the truth tables by hand, runs counted."""
+    runs = []
+
+    def either():
+        runs.append((IN.x0, IN.x1))
+        return bool(IN.x0 > 0.7 or IN.x1 > 0.7)
+
+    ev = evaluate(
+        make(
+            published=True,
+            unit="statement",
+            tolerance=Tolerance(reason="exact", abs=0.0, policy="exact"),
+            compute=either,
+            expected_status="not-reproducible",
+        )
+    )
+    assert ev.band == (False, True) and ev.status == "not-reproducible"
+    assert (1.0, 1.0) not in runs and (0.0, 0.0) not in runs  # no corner was run
+    runs.clear()
+
+    def both():
+        runs.append((IN.x0, IN.x1))
+        return bool(IN.x0 + IN.x1 > 1.5)
+
+    ev = evaluate(
+        make(
+            published=False,
+            unit="statement",
+            tolerance=Tolerance(reason="exact", abs=0.0, policy="exact"),
+            compute=both,
+            expected_status="not-reproducible",
+        )
+    )
+    assert set(itertools.product((0.0, 1.0), repeat=2)) <= set(runs)
+    assert ev.band == (False, True)
+
+
 def test_a_statements_other_reading_is_said_in_words():
     ev = evaluate(
         make(

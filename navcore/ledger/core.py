@@ -51,8 +51,10 @@ reads assumed inputs, and weighs them:
   admissible assumed range) or ``inconsistent`` (plausible assumed ranges).
 
 A reading other than the one used is run across the assumed ranges only when the verdict
-needs it (the reading used does not already agree with a band that decides), over the assumed
-inputs that the run under the readings used read (a claim's inputs are those of that run).
+needs it: the other readings are taken in order, and their bands run until one reading (the one
+used first) agrees with a band that decides, which settles the verdict; the readings after it
+show their values. The bands run over the assumed inputs that the run under the readings used
+read (a claim's inputs are those of that run).
 
 Band runs
 ---------
@@ -66,7 +68,9 @@ miss). A run whose inputs are each in range but together describe a case the mod
 cover (it raises ``ModelDomainError``, for example no four satellites stay above the mask
 along the whole flight for fixed channels) gives no value: it is left out of the band, and
 the evaluation's ``left_out`` records which case was left out and in how many runs; the note
-says it. Each batch of runs (the one-at-a-time runs, then the corners) is announced before it
+says it. A statement whose nominal and one-at-a-time runs already hold both truth values
+skips its corners: its band is ``(False, True)`` whatever they give (and ``left_out`` counts
+the runs made). Each batch of runs (the one-at-a-time runs, then the corners) is announced before it
 is made (``band_ahead`` in :mod:`navcore.ledger.inputs`), so that a model whose runs batch well
 can compute the whole batch in one call when the first run asks, and serve the others from its
 :func:`~navcore.ledger.inputs.input_cache`; such a model gives each run the result it gives
@@ -1388,12 +1392,16 @@ class Evaluation:
         value = reading["value"]
         band = reading.get("band")
         text = "With " + " and ".join(changed) + ": "
+        # a claim with assumed inputs whose band this reading did not need (the verdict was settled)
+        at_nominal = " at the nominal inputs" if band is None and self.band is not None else ""
         if not _is_truth(value):
-            text += _plain(value) + unit
+            text += _plain(value) + unit + at_nominal
             if band is not None:
                 text += f" (over the assumed ranges {_plain(band[0])} to {_plain(band[1])}{unit})"
         elif band is None or bool(band[0]) == bool(band[1]):
-            text += ("holds" if value else "does not hold") + (" across the assumed ranges" if band else "")
+            text += ("holds" if value else "does not hold") + (
+                " across the assumed ranges" if band else at_nominal
+            )
         else:
             text += (
                 "holds at the nominal inputs, not across all the assumed ranges"
@@ -1679,12 +1687,19 @@ MAX_READING_COMBINATIONS = 16
 
 
 def _band_runs(
-    claim: Claim, assumed: list[Any], base: dict[str, Any] | None = None, excluded: list[str] | None = None
+    claim: Claim,
+    assumed: list[Any],
+    base: dict[str, Any] | None = None,
+    excluded: list[str] | None = None,
+    nominal: Any = None,
 ) -> tuple[list[Any], list[tuple[str, tuple[tuple[Any, Any], ...]]]]:
     """Values across the assumed inputs' ranges: one at a time, and every corner of the box for up
     to :data:`MAX_CORNER_INPUTS` inputs (extremes of a monotone response lie at corners).
 
     ``base`` holds the overrides of a reading other than the one used (every run keeps them).
+    ``nominal`` is the value at the nominal inputs of that reading: a statement whose nominal and
+    one-at-a-time runs already hold both truth values has the band ``(False, True)`` whatever the
+    corners give, so its corners are not run (module docstring, "Band runs").
     A run the model does not cover (it raises :class:`~navcore.ModelDomainError`)
     gives no value: its case in a reader's words is appended to ``excluded`` (module docstring,
     "Band runs").
@@ -1712,8 +1727,10 @@ def _band_runs(
                     row.append((point, v))
             sensitivity.append((inp.name, tuple(row)))
 
-    if 2 <= len(assumed) <= MAX_CORNER_INPUTS:
-        corners: Any = itertools.product(*[(inp.low, inp.high) for inp in assumed])
+    if claim.is_statement and {bool(v) for v in (nominal, *values) if v is not None} == {False, True}:
+        corners: Any = []  # the band already holds both truth values
+    elif 2 <= len(assumed) <= MAX_CORNER_INPUTS:
+        corners = itertools.product(*[(inp.low, inp.high) for inp in assumed])
     elif len(assumed) > MAX_CORNER_INPUTS:  # the diagonal and the two half-and-half corners
         lows, highs = [inp.low for inp in assumed], [inp.high for inp in assumed]
         half = len(assumed) // 2
@@ -2074,7 +2091,9 @@ def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
     run_bands = bool(assumed) and bands
     try:
         excluded: list[str] = []
-        values, sensitivity = _band_runs(claim, assumed, excluded=excluded) if run_bands else ([], [])
+        values, sensitivity = (
+            _band_runs(claim, assumed, excluded=excluded, nominal=value) if run_bands else ([], [])
+        )
         # beyond six inputs the corners are a sample of the box: what the inputs' separate
         # effects add up to bounds what the runs cannot rule out ("Beyond six inputs")
         sampled = run_bands and len(assumed) > MAX_CORNER_INPUTS
@@ -2087,10 +2106,17 @@ def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
         for combo in combos:
             overrides = {inp.name: v for inp, _, v in combo}
             others.append([combo, overrides, _run(claim, overrides)[0], [], None])
-        if run_bands and others and not (first.agrees and not first.too_wide):
-            for other in others:
-                other[3], other_sensitivity = _band_runs(claim, assumed, base=other[1], excluded=excluded)
-                other[4] = additive_envelope(other[2], other_sensitivity) if sampled else None
+        # in order, until one agrees with a band that decides (the verdict is then settled)
+        decided = first.agrees and not first.too_wide
+        for other in others if run_bands else []:
+            if decided:
+                break
+            other[3], other_sensitivity = _band_runs(
+                claim, assumed, base=other[1], excluded=excluded, nominal=other[2]
+            )
+            other[4] = additive_envelope(other[2], other_sensitivity) if sampled else None
+            o = _outcome(claim, tol, other[2], other[3], other[4])
+            decided = o.agrees and not o.too_wide
     except Exception as exc:
         return Evaluation(
             claim,
