@@ -391,7 +391,7 @@ def ledger(session: nox.Session) -> None:
         args.remove("--store")
         # afresh on every core, never reading the cache, storing every evaluation in it
         store_env = {**env, "NAVCORE_CACHE": "", "NAVCORE_CACHE_REFRESH": "1"}
-        ledger = ["python", "-m", "navcore", "ledger", "--jobs", "-1", "--json-out", str(out)]
+        ledger = ["python", "-m", "navcore", "ledger", "--jobs", "-1", "--times", "--json-out", str(out)]
         session.run(*ledger, *args, env=store_env)
     else:
         session.run("python", "-m", "navcore", "ledger", "--json-out", str(out), *args, env=env)

@@ -1,9 +1,10 @@
 """Command line: ``python -m navcore ledger|report|figures``.
 
-``python -m navcore ledger [--paper KEY] [--json] [--csv] [--jobs N] [--claim ID]``
+``python -m navcore ledger [--paper KEY] [--json] [--csv] [--jobs N] [--claim ID] [--times]``
     print the verification ledger, evaluated on every core (``--jobs 1``: in this process;
     the same result bit for bit); ``--claim ID`` evaluates one claim and says how long it
-    took; exit status 1 if any claim fails its own check. The JSON export is an object
+    took; ``--times`` prints the seconds of each parallel task (a paper module's claims);
+    exit status 1 if any claim fails its own check. The JSON export is an object
     ``{"provenance": ..., "claims": [...]}``; every CSV row carries the same ``build_*``
     columns (commit, clean or dirty tree, commit date, lock hash, versions).
 ``python -m navcore report PAPER [--pdf [OUT]] [--jobs N]``
@@ -32,6 +33,15 @@ def _cmd_ledger(args: argparse.Namespace) -> int:
     if args.claim:
         evals = [ledger.evaluate_claim(args.claim)]
     else:
+        if args.times:
+            from navcore.ledger.registry import evaluate_in_parallel, ledger_task
+
+            seconds = evaluate_in_parallel([c.id for c in ledger.claims(args.paper)], n_jobs=args.jobs)
+            tasks: dict[str, float] = {}
+            for cid, s in seconds.items():
+                tasks[ledger_task(cid)] = tasks.get(ledger_task(cid), 0.0) + s
+            for task, s in sorted(tasks.items(), key=lambda kv: -kv[1]):  # on stderr, as --claim's time
+                print(f"{s:8.1f} s  {task}", file=sys.stderr)
         evals = ledger.evaluations(paper=args.paper, n_jobs=args.jobs)
     elapsed = time.perf_counter() - start
     provenance = build_provenance()  # the exports name the commit, lock and versions
@@ -100,6 +110,12 @@ def main(argv: list[str] | None = None) -> int:
         default=None,
         metavar="ID",
         help="evaluate this claim alone (and the model runs it reads) and say how long it took",
+    )
+    p_ledger.add_argument(
+        "--times",
+        action="store_true",
+        help="also print, on stderr, the seconds each parallel task's claims took in their worker "
+        "(claims not already evaluated)",
     )
     p_ledger.add_argument(
         "--jobs",

@@ -315,6 +315,23 @@ def test_cli_ledger_json_and_exit_status(monkeypatch, capsys):
     assert proc.returncode == 0 and "--json" in proc.stdout
 
 
+def test_cli_times_sums_each_tasks_claims(monkeypatch, capsys):
+    """``--times`` prints, on stderr, each parallel task's seconds, longest first: the sum of its
+    claims' seconds (two SP flyby claims of two modules make one task, a WF claim another).
+    Oracle: the sums by hand from the seconds the stub reports."""
+    from navcore import __main__ as cli
+    from navcore import ledger
+    from navcore.ledger import registry
+
+    seconds = {"SP-fig2.7-tc10": 1.5, "SP-tab2.7-tc10-sv3": 2.0, "WF-eq3-normal": 0.25}
+    monkeypatch.setattr(registry, "evaluate_in_parallel", lambda ids, n_jobs=-1: seconds)
+    one = [evaluate(make())]
+    monkeypatch.setattr(ledger, "evaluations", lambda paper=None, prefix=None, n_jobs=None: one)
+    assert cli.main(["ledger", "--times"]) == 0
+    err = capsys.readouterr().err.splitlines()
+    assert err == ["     3.5 s  navcore.papers.sp_coverage", "     0.2 s  navcore.papers.wf"]
+
+
 def test_cli_exit_status_nonzero_on_failure(monkeypatch, capsys):
     """Oracle: a registry with one failing claim must make `ledger` exit with status 1."""
     from navcore import __main__ as cli

@@ -661,26 +661,54 @@ def _group_records(claim_ids: tuple[str, ...]) -> list[tuple[str, dict[str, Any]
     return out
 
 
-#: Seconds each paper module's claims took to evaluate, on the reference machine (2 cores):
-#: only the order in which the parallel ledger hands out its tasks (longest first) uses them.
-#: ``python -m navcore ledger --jobs 1 --times`` prints the current ones.
-_MODULE_SECONDS = {
-    "navcore.papers.kzl_simulation": 40.0,
-    "navcore.papers.sp_missions": 18.0,
-    "navcore.papers.atc10_coverage_jamming": 9.5,
-    "navcore.papers.sp_antijam": 5.7,
-    "navcore.papers.atc10_coverage_tracking": 5.0,
-    "navcore.papers.atc10_multiple_access": 4.9,
-    "navcore.papers.sp_coverage": 4.2,
-    "navcore.papers.atc10_jamming": 1.4,
-    "navcore.papers.wf": 1.0,
-    "navcore.papers.atc10_coverage_ma": 1.0,
-    "navcore.papers.sp_tracking": 0.5,
+#: Paper modules whose claims read the same model runs, evaluated in one task (the first module
+#: names it) so that each shared run is made once: SP's flyby, whose Table 2.7 cells the coverage
+#: module declares beside the flyby module's own claims.
+_SHARED_RUNS = (("navcore.papers.sp_coverage", "navcore.papers.sp_flyby"),)
+
+#: Seconds of CPU each task's claims took to evaluate afresh with their bands, measured on the
+#: reference machine (2 cores): only the order in which the parallel ledger hands out its tasks
+#: (longest first) uses them. ``python -m navcore ledger --times`` prints the current ones.
+_TASK_SECONDS = {
+    "navcore.papers.sp_coverage": 235.0,
+    "navcore.papers.sp_missions": 200.0,
+    "navcore.papers.kzl_simulation": 140.0,
+    "navcore.papers.atc10_coverage_jamming": 14.0,
+    "navcore.papers.atc10_multiple_access": 10.0,
+    "navcore.papers.sp_antijam": 7.0,
+    "navcore.papers.wf": 5.0,
+    "navcore.papers.atc10_coverage_tracking": 2.6,
+    "navcore.papers.sp_tracking": 1.9,
+    "navcore.papers.atc10_coverage_ma": 1.7,
+    "navcore.papers.atc10_jamming": 1.3,
 }
 
 
+def ledger_task(claim_id: str) -> str:
+    """The parallel ledger's task of a claim: its paper module, or the first module of the
+    :data:`_SHARED_RUNS` group the module belongs to.
+
+    Parameters
+    ----------
+    claim_id : str
+        A claim id (current or former).
+
+    Returns
+    -------
+    str
+        The task's name (a module name).
+
+    Examples
+    --------
+    >>> ledger_task("SP-fig2.7-tc10") == ledger_task("SP-tab2.7-tc10-sv3")
+    True
+    """
+    module = _CLAIM_MODULE[claim(claim_id).id]
+    return next((group[0] for group in _SHARED_RUNS if module in group), module)
+
+
 def ledger_tasks(claim_ids: list[str]) -> list[tuple[str, ...]]:
-    """Split claims into the parallel ledger's tasks: one per paper module, longest first.
+    """Split claims into the parallel ledger's tasks (:func:`ledger_task`), longest first.
 
     The claims of a paper module read the same model runs (one flyby, one Monte Carlo, one
     mission), so they run in one process, which computes each shared run once.
@@ -693,8 +721,8 @@ def ledger_tasks(claim_ids: list[str]) -> list[tuple[str, ...]]:
     Returns
     -------
     list of tuple of str
-        The claim ids of each task, in registry order within a task; tasks ordered by the
-        modules' usual evaluation time, longest first.
+        The claim ids of each task, in registry order within a task; tasks ordered by their
+        usual evaluation time (:data:`_TASK_SECONDS`), longest first.
 
     Examples
     --------
@@ -705,8 +733,8 @@ def ledger_tasks(claim_ids: list[str]) -> list[tuple[str, ...]]:
     """
     groups: dict[str, list[str]] = {}
     for cid in claim_ids:
-        groups.setdefault(_CLAIM_MODULE[claim(cid).id], []).append(cid)
-    order = sorted(groups, key=lambda m: -_MODULE_SECONDS.get(m, 0.1))
+        groups.setdefault(ledger_task(cid), []).append(cid)
+    order = sorted(groups, key=lambda m: -_TASK_SECONDS.get(m, 0.1))
     return [tuple(groups[m]) for m in order]
 
 
