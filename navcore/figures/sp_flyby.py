@@ -16,7 +16,9 @@ _ASSUMED = (
     "approach at the flight's midpoint; free-space propagation; an upward-looking antenna whose gain "
     "falls from the zenith to the horizon; seven satellites of a 30-satellite constellation. The "
     "jammer's strength is fitted so that the loosely coupled blackout lasts the paper's 20 min. "
-    "Thresholds, bandwidths and the search rule are the paper's (Sec. 2.5)."
+    "Thresholds, bandwidths and the search rule are the paper's (Sec. 2.5), the thresholds read as "
+    "C/N0 in dB-Hz (the book's reading; the flyby page also gives the other, a ratio in each loop's "
+    "own noise bandwidth)."
 )
 
 

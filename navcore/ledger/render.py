@@ -1311,7 +1311,7 @@ class LedgerTable:
             )
         reading = _agreeing_reading_text(e)
         if reading:
-            out += f' <span class="ledger-reading">{html.escape(reading)}</span>'
+            out += f' <span class="ledger-reading">{html_text(reading)}</span>'  # a label may hold math
         return out
 
     def _claim_id_html(self, e: Evaluation) -> str:
@@ -1425,7 +1425,7 @@ class LedgerTable:
                 if c.erratum:
                     verdict += r"\newline{}{\scriptsize " + _tex_breakable(c.erratum) + "}"
                 if _agreeing_reading_text(e):
-                    verdict += r"\newline{}{\scriptsize " + _tex_escape(_agreeing_reading_text(e)) + "}"
+                    verdict += r"\newline{}{\scriptsize " + tex_text(_agreeing_reading_text(e)) + "}"
                 verdict += r"\newline{}{\scriptsize\itshape " + _tex_escape(str(c.kind)) + "}"
                 cells = [
                     what,
@@ -2056,7 +2056,7 @@ class InteractiveLedger:
                 anchor = html.escape(r["erratum"].lower())
                 status += f'<br><a href="{self.root}errata.html#{anchor}">{html.escape(r["erratum"])}</a>'
             if _agreeing_reading_text(e):
-                status += f'<br><span class="ledger-reading">{html.escape(_agreeing_reading_text(e))}</span>'
+                status += f'<br><span class="ledger-reading">{html_text(_agreeing_reading_text(e))}</span>'
             claim = f"<code>{html.escape(r['id'])}</code>"
             if r["discussed_in"]:
                 target = html.escape(f"{self.root}{r['discussed_in']}.html#{r['id'].lower()}")

@@ -8,6 +8,7 @@ fitted to and the claims that read it; the assumed inputs with the claims each m
 
 from __future__ import annotations
 
+import re
 import textwrap
 from collections.abc import Sequence
 from typing import Any
@@ -568,6 +569,30 @@ def fitted_inputs_frame(evals: Sequence[Evaluation]) -> Any:
     )
 
 
+def _reading(label: str, value: Any) -> str:
+    """A convention's reading for a table: its label, and its value where the label does not say it.
+
+    A reading's value that is a code word (``"loop"``, ``"atan2"``) is what the label says in
+    words, and a number the label already states (``"30 runs"``) would only repeat it; neither is
+    shown.
+
+    Examples
+    --------
+    >>> _reading("the reading used", 1.0)
+    'the reading used (1)'
+    >>> _reading("30 runs (the book's ensemble)", 30)
+    "30 runs (the book's ensemble)"
+    >>> _reading("$C/N_0$ in dB-Hz", "C/N0")
+    '$C/N_0$ in dB-Hz'
+    """
+    if isinstance(value, str):
+        return label
+    text = _fmt(value)
+    if re.search(rf"(?<![\d.]){re.escape(text)}(?![\d.])", label):
+        return label
+    return f"{label} ({text})"
+
+
 def convention_inputs_frame(evals: Sequence[Evaluation]) -> Any:
     """Every convention: the reading used, the other admissible readings, and the claims they move.
 
@@ -580,7 +605,8 @@ def convention_inputs_frame(evals: Sequence[Evaluation]) -> Any:
     -------
     pandas.DataFrame
         One row per convention input read, columns ``Paper``, ``Convention``, ``Reading
-        used`` (its label and value), ``Other readings`` (each label and value), ``Unit``,
+        used`` (its label, with its value where the label does not already state it),
+        ``Other readings`` (each the same way), ``Unit``,
         ``Reason``, ``Claims`` (the number that read it) and ``Agree only under another
         reading`` (the ids of the claims whose printed value only another reading accepts).
 
@@ -618,8 +644,8 @@ def convention_inputs_frame(evals: Sequence[Evaluation]) -> Any:
             {
                 "Paper": inp.paper,
                 "Convention": _label(inp),
-                "Reading used": f"{inp.nominal_label} ({_fmt(inp.value)})",
-                "Other readings": "; ".join(f"{label} ({_fmt(v)})" for label, v in inp.other_readings),
+                "Reading used": _reading(inp.nominal_label, inp.value),
+                "Other readings": "; ".join(_reading(label, v) for label, v in inp.other_readings),
                 "Unit": inp.unit,
                 "Reason": inp.reason,
                 "Claims": len(readers),

@@ -342,8 +342,8 @@ CLAIMS = [
         tolerance=EXACT,
         expected_status="consistent",
         note="Horizontal $1\\sigma$ error of the tightly coupled 10 and 0.2 nmi/h systems 1 s before the "
-        "flyby blackout (GPS tracked for the whole approach): a ratio of about 2.6, against the "
-        "50:1 of the grades; 'not as dramatic' read as below a fifth of the grade ratio. The GPS "
+        "flyby blackout (GPS tracked for the whole approach): their ratio (the flyby page gives it) "
+        "against the 50:1 of the grades; 'not as dramatic' read as below a fifth of the grade ratio. The GPS "
         "measurements bound both errors.",
         discussed_in=PAGE_FLYBY,
     ),
