@@ -840,7 +840,8 @@ def bandwidth_effect_min() -> float:
     """How much the tightly coupled 1 nmi/h blackout changes (min) when its Table 2.6 carrier loop
     is replaced by the unaided loop of the table's first row (18 rad/s, all the dynamics)."""
     tc1 = sc.SYSTEMS[2]
-    unaided = CarrierLoop(18.0, 18.0 * third_order_noise_bandwidth_hz(1.0), aided=False)
+    w0 = float(spr.IN.unaided_omega0)
+    unaided = CarrierLoop(w0, w0 * third_order_noise_bandwidth_hz(1.0), aided=False)
     own = _outage(tc1, _lock_tables()[tc1].code)
     return tc_blackout_with_loop(tc1, unaided) - float(np.subtract(*own[::-1])) / MINUTE
 
