@@ -321,8 +321,8 @@ CLAIMS = [
         tolerance=printed("192")[1],
         expected_status="inconsistent",
         note="The mission model of the missions page (tightly coupled, calibrated on the assumed "
-        "terrain-following trajectory, then 19 min jammed) gives about 318 m, 1.7 times the printed "
-        "192 m (the target at 8 km, bearing assumed; the pointing error adds under 1 %, "
+        "terrain-following trajectory, then 19 min jammed) gives the value shown, well above the "
+        "printed 192 m (the target at 8 km, bearing assumed; the pointing error adds under 1 %, "
         "SP-sec2.6.4-pointing-negligible). The helicopter's trajectory and calibration span are "
         "stated assumptions of the missions page, not ledger inputs, so the band covers the bearing "
         "only. Its 10 nmi/h counterpart is close to the printed 2750 m. The helicopter trajectory, "
