@@ -536,6 +536,37 @@ def test_a_statement_whose_one_at_a_time_runs_hold_both_truth_values_runs_no_cor
     assert ev.band == (False, True)
 
 
+def test_another_readings_statement_band_stops_once_it_holds_both_truth_values():
+    """Under the reading used (sign 1) the statement is x0 + x1 > 0.8: True at the nominal
+    (0.5, 0.5), False with x0 at 0, so its band is too wide and the other reading's band is run.
+    Under the other reading (sign -1) it is x0 > 0.7: False at the nominal, True with x0 at 1.
+    After x0's two runs that band holds both truth values: it is (False, True) whatever else is
+    run, so neither x1's runs nor the corners are made under it, while the reading used makes
+    all its one-at-a-time runs (they are shown). Oracle: the truth tables by hand, runs counted."""
+    runs = []
+
+    def compute():
+        runs.append((IN.sign, IN.x0, IN.x1))
+        return bool(IN.x0 + IN.x1 > 0.8) if IN.sign > 0 else bool(IN.x0 > 0.7)
+
+    ev = evaluate(
+        make(
+            published=True,
+            unit="statement",
+            tolerance=Tolerance(reason="exact", abs=0.0, policy="exact"),
+            compute=compute,
+            expected_status="not-reproducible",
+        )
+    )
+    assert ev.status == "not-reproducible" and ev.band == (False, True)
+    other = [r[1:] for r in runs if r[0] < 0]
+    assert other == [(0.5, 0.5), (0.0, 0.5), (1.0, 0.5)]  # its value, then x0 at its two ends
+    used = [r[1:] for r in runs if r[0] > 0]
+    assert {(0.5, 0.0), (0.5, 1.0)} <= set(used)  # x1's runs under the reading used are made
+    assert [row for name, row in ev.sensitivity if name == NAME + "x1"] == [((0.0, False), (1.0, True))]
+    assert ev.readings[1]["band"] == (False, True)
+
+
 def test_a_statements_other_reading_is_said_in_words():
     ev = evaluate(
         make(

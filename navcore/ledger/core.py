@@ -69,10 +69,12 @@ cover (it raises ``ModelDomainError``, for example no four satellites stay above
 along the whole flight for fixed channels) gives no value: it is left out of the band, and
 the evaluation's ``left_out`` records which case was left out and in how many runs; the note
 says it. A statement whose nominal and one-at-a-time runs already hold both truth values
-skips its corners: its band is ``(False, True)`` whatever they give (and ``left_out`` counts
-the runs made). Each batch of runs (the one-at-a-time runs, then the corners) is announced before it
-is made (``band_ahead`` in :mod:`navcore.ledger.inputs`), so that a model whose runs batch well
-can compute the whole batch in one call when the first run asks, and serve the others from its
+skips its corners: its band is ``(False, True)`` whatever they give; under a reading other
+than the one used, whose one-at-a-time runs are not shown, its runs stop as soon as both truth
+values are in (``left_out`` counts the runs made). Each batch of runs (the one-at-a-time
+runs, then the corners) is announced before it is made (``band_ahead`` in
+:mod:`navcore.ledger.inputs`), so that a model whose runs batch well can compute the whole
+batch in one call when the first run asks, and serve the others from its
 :func:`~navcore.ledger.inputs.input_cache`; such a model gives each run the result it gives
 that run alone (KZL's Monte Carlo does, bit for bit, and its tests check it).
 
@@ -1699,7 +1701,8 @@ def _band_runs(
     ``base`` holds the overrides of a reading other than the one used (every run keeps them).
     ``nominal`` is the value at the nominal inputs of that reading: a statement whose nominal and
     one-at-a-time runs already hold both truth values has the band ``(False, True)`` whatever the
-    corners give, so its corners are not run (module docstring, "Band runs").
+    corners give, so its corners are not run; under another reading (``base``), whose
+    one-at-a-time runs are not shown, its runs stop there (module docstring, "Band runs").
     A run the model does not cover (it raises :class:`~navcore.ModelDomainError`)
     gives no value: its case in a reader's words is appended to ``excluded`` (module docstring,
     "Band runs").
@@ -1717,17 +1720,22 @@ def _band_runs(
             return False, None
 
     # each batch of runs is announced first, so that a model can run it in one call (band_ahead)
+    def both_truth_values() -> bool:
+        return claim.is_statement and {bool(v) for v in (nominal, *values) if v is not None} == {False, True}
+
     with band_ahead([{**base, inp.name: point} for inp in assumed for point in inp.band_points]):
         for inp in assumed:
             row = []
             for point in inp.band_points:
+                if base and both_truth_values():
+                    break  # another reading's statement: its band is settled, its runs are not shown
                 ok, v = run({**base, inp.name: point})
                 if ok:
                     values.append(v)
                     row.append((point, v))
             sensitivity.append((inp.name, tuple(row)))
 
-    if claim.is_statement and {bool(v) for v in (nominal, *values) if v is not None} == {False, True}:
+    if both_truth_values():
         corners: Any = []  # the band already holds both truth values
     elif 2 <= len(assumed) <= MAX_CORNER_INPUTS:
         corners = itertools.product(*[(inp.low, inp.high) for inp in assumed])
