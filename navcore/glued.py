@@ -4004,6 +4004,21 @@ def sp21_noise_only_10_19min_m() -> float:
     return float(spm.noise_only_error_m(10.0, 19.0))
 
 
+@register(
+    "sp21-clock-digits",
+    "sp/21-missions",
+    "significant digits in which the clock offset read as 5000 ns leaves the 1 nmi/h error unchanged",
+)
+def sp21_clock_digits() -> int:
+    """Number of leading significant digits the tightly coupled 1 nmi/h horizontal error 1 s before
+    reacquisition keeps when Table 2.4's initial clock offset is read as 5000 ns instead of 5000 m:
+    the largest d with a relative change below :math:`10^{-d}` (SP Table 2.4, Sec. 2.6.1)."""
+    from navcore.papers import sp_missions as spm
+
+    relative = spm.initial_error_effect_pct(("clock offset in ns",)) / 100.0
+    return math.floor(-math.log10(relative)) if relative > 0 else 17
+
+
 def _sp22_tc10_blackout_min() -> float:
     from navcore.papers import sp_flyby as fb
 

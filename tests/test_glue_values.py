@@ -3196,6 +3196,23 @@ def _sp_noise_only_m(grade: float, minutes: float) -> float:
     return math.sqrt(P[0, 0] + P[1, 1])
 
 
+def _sp21_clock_digits() -> int:
+    """Digit-string oracle: the two runs' errors 1 s before reacquisition, taken from the runs
+    (not through the registered percentage), written out to 17 significant digits, and the
+    number of leading digits the two strings share. It agrees with the registered count (the
+    largest d with a relative change below 1e-d) to one digit, the most a carry can move it."""
+    from navcore.papers import sp_missions as spm
+    from navcore.papers import sp_missions_scenarios as sc
+
+    runs = sc.initial_error_runs(spm.IN.initial_error_scale)
+    t = sc.reacquisition_s() - 1.0
+    a, b = (
+        f"{float(runs[m].horizontal_position[runs[m].at(t)]):.16e}".replace(".", "")
+        for m in ("nominal", "clock offset in ns")
+    )
+    return next((i for i, (x, y) in enumerate(zip(a, b, strict=True)) if x != y), 17)
+
+
 def _sp_noise_only_outage_m() -> float:
     """:func:`_sp_noise_only_m` for the second Table 2.5 column over the helicopter's jammed minutes."""
     from navcore.papers import sp_missions_scenarios as sms
@@ -3517,6 +3534,7 @@ def _sp22_range_by_hand_km(when: str) -> float:
 ORACLES += [
     # the Van Loan oracle's 1 % (the vertical channel's coupling and the gravity model it leaves
     # out); a ratio of two of them: 2 %
+    Oracle("sp21-clock-digits", _sp21_clock_digits, atol=1, why="digit strings of the two runs' errors"),
     Oracle(
         "sp21-noise-only-10-19min-m",
         lambda: _sp_noise_only_m(10.0, 19.0),

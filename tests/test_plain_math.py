@@ -119,21 +119,57 @@ def test_registry_texts_set_every_formula_as_math():
     assert not found, "\n".join(found)
 
 
-def test_input_locators_show_no_latex_source():
-    """An input's locator (shown in the claim rows' inputs) sets a formula it quotes as math:
-    ``Sec. 4 opening ($\\tau_{i+1} - \\tau_i = 1$ s)``, not ``tau_{i+1}``. Only LaTeX source is
-    scanned here (the HTML gate finds it on the page); the locators' other plain notation
-    (``P_DL``, ``tau``) is left to a later pass."""
+#: A one-letter symbol given a value (``K = 100``, ``t = 0``, ``n=100``) outside math: in an input's
+#: locator, quantity, reason or reading label it is a formula (``$K = 100$``). Scanned in the inputs'
+#: texts only, which quote the paper's parameter statements; claim notes and the inventory are not
+#: scanned for it.
+SYMBOL_VALUE = re.compile(r"(?<![\w.'/-])[A-Za-z]\s*=\s*[-+]?\d")
+
+
+def input_plain_math(text: str) -> list[tuple[str, str]]:
+    """:func:`plain_math` of an input's text, plus a one-letter symbol given a value outside math."""
+    found = plain_math(text)
+    for is_math, piece in math_spans(text):
+        if not is_math:
+            found += [("symbol = value", m.group(0)) for m in SYMBOL_VALUE.finditer(piece)]
+    return found
+
+
+@pytest.mark.parametrize(
+    ("text", "kinds"),
+    [
+        ("Sec. 2.7 ('for a P_DL of 0.9 and 0.999')", ["flat subscript"]),
+        ("Sec. 2.7 ('for a $P_{DL}$ of 0.9 and 0.999')", []),
+        ("Sec. 3.8 ('when N = 10^5, tau/alpha = 10^-5')", ["Greek name", "power", "symbol = value"]),
+        ("Sec. 3.8 ('when $N = 10^5$, $\\tau/\\alpha = 10^{-5}$')", []),
+        ("Table 1.1's K = 10, 100 and 1000 rows", ["symbol = value"]),
+        ("much larger, say, n=100", ["symbol = value"]),
+        ("Table 1.1's $K = 10$, 100 and 1000 rows; a 1-s fix, 3-dB beamwidth, Eq. (2.7.3)", []),
+    ],
+)
+def test_input_detector(text, kinds):
+    assert sorted({k for k, _ in input_plain_math(text)}) == sorted(kinds)
+
+
+def test_input_texts_set_every_formula_as_math():
+    """Every input's locator, quantity, reason and reading labels (the Assumptions page, the claim
+    rows' inputs, the PDF) set a formula as math: ``Sec. 2.7 ('for a $P_{DL}$ of 0.9 and
+    0.999')``, not ``P_DL``; ``$\\tau/\\alpha = 10^{-5}$``, not ``tau/alpha = 10^-5``; ``$K = 1$``.
+    Words and the paper's quoted words are unchanged; units (``unit``) stay plain."""
     from navcore import ledger
     from navcore.ledger.inputs import all_inputs
 
     ledger.claims()
+    texts = [
+        (i.name, f, getattr(i, f) or "") for i in all_inputs() for f in ("locator", "quantity", "reason")
+    ]
+    texts += [(i.name, "reading", str(label)) for i in all_inputs() for label, _ in i.readings]
+    assert len(texts) > 1400  # three texts of each of the 480 inputs, and the readings' labels
     found = [
-        f"{i.name}: {m.group(0)!r}"
-        for i in all_inputs()
-        for is_math, piece in math_spans(i.locator or "")
-        if not is_math
-        for m in LATEX_SOURCE.finditer(piece)
+        f"{who} ({field}): {kind} {hit!r}"
+        for who, field, text in texts
+        for kind, hit in input_plain_math(text)
+        if (who, hit) not in ALLOWED
     ]
     assert not found, "\n".join(found)
 

@@ -42,33 +42,33 @@ IN = InputSet("ATC10", "coverage_ma")
 IN.published(
     "pulses_a",
     5,
-    locator="Sec. 3.8, worked example ('5 equal length pulses with alpha = 2.5 s')",
+    locator="Sec. 3.8, worked example ('5 equal length pulses with $\\alpha = 2.5$ s')",
     quantity="pulses of the first signature of the worked example",
 )
 IN.published(
     "alpha_a_s",
     2.5,
-    locator="Sec. 3.8, worked example ('5 equal length pulses with alpha = 2.5 s')",
+    locator="Sec. 3.8, worked example ('5 equal length pulses with $\\alpha = 2.5$ s')",
     unit="s",
     quantity="$\\alpha$ of the first signature of the worked example",
 )
 IN.published(
     "pulses_b",
     4,
-    locator="Sec. 3.8, worked example ('4 equal length pulses with alpha = 2 s')",
+    locator="Sec. 3.8, worked example ('4 equal length pulses with $\\alpha = 2$ s')",
     quantity="pulses of the second signature of the worked example",
 )
 IN.published(
     "alpha_b_s",
     2.0,
-    locator="Sec. 3.8, worked example ('4 equal length pulses with alpha = 2 s')",
+    locator="Sec. 3.8, worked example ('4 equal length pulses with $\\alpha = 2$ s')",
     unit="s",
     quantity="$\\alpha$ of the second signature of the worked example",
 )
 IN.published(
     "n_ref1",
     100_000,
-    locator="Sec. 3.8, worked example ('systems ... in which N = 10^5')",
+    locator="Sec. 3.8, worked example ('systems ... in which $N = 10^5$')",
     quantity="number of users $N$ of the worked example's reference systems",
 )
 

@@ -76,24 +76,25 @@ IN.convention(
     100,
     quantity="epoch at which the 1/f term equals the random walk in the Sec. 4.7 alternative",
     readings={
-        "n = 100, the example the text gives ('much larger, say, n=100')": 100,
-        "n = 10, a crossover ten times later than n = 1": 10,
-        "n = 1000": 1000,
+        "$n = 100$, the example the text gives ('much larger, say, $n=100$')": 100,
+        "$n = 10$, a crossover ten times later than $n = 1$": 10,
+        "$n = 1000$": 1000,
     },
-    reason="Sec. 4.7 says only that the crossover 'could be ... much larger, say, n=100': the printed value "
-    "is an example of 'much larger', and the book reads the statement at it and a decade either side",
+    reason="Sec. 4.7 says only that the crossover 'could be ... much larger, say, $n=100$': the "
+    "printed value is an example of 'much larger', and the book reads the statement at it and a "
+    "decade either side",
 )
 IN.published(
     "fig41_small_alpha_max",
     0.3,
-    locator="Sec. 4.5.4, (4.5.38) ('for alpha <= 0.3')",
+    locator="Sec. 4.5.4, (4.5.38) ('for $\\alpha \\leq 0.3$')",
     quantity="largest $\\alpha$ of the small-$\\alpha$ approximation of $\\psi$",
 )
 IN.convention(
     "std_n_from",
     10,
     quantity="first epoch $n$ from which std$(\\tau_n - \\tau_0)$ is 'approximately' $n \\sigma_0$",
-    readings={"from n = 10 on": 10, "from n = 5 on": 5, "from n = 20 on": 20},
+    readings={"from $n = 10$ on": 10, "from $n = 5$ on": 5, "from $n = 20$ on": 20},
     reason="'becomes approximately $n\\sigma_0$' (Sec. 4.3) names no epoch: the ratio $\\sqrt{n + n^2}/n$ "
     "tends to 1, and the book checks it from a few epochs to tens of them",
 )

@@ -78,16 +78,20 @@ IN.published(
     10e-3,
     unit="J",
     locator="Sec. 2.7 and the captions of Tables 1.1 and 2.1",
-    quantity="signal pulse energy E = $P_0 \\tau$",
+    quantity="signal pulse energy $E = P_0 \\tau$",
 )
 IN.published(
-    "pulse_power_dbw", 30.0, unit="dBW", locator="Sec. 2.7 ('e.g. P0 = 30 dbw')", quantity="pulse power $P_0$"
+    "pulse_power_dbw",
+    30.0,
+    unit="dBW",
+    locator="Sec. 2.7 ('e.g. $P_0 = 30$ dbw')",
+    quantity="pulse power $P_0$",
 )
 IN.published(
     "pulse_duration_s",
     10e-6,
     unit="s",
-    locator="Sec. 2.7 ('tau = 10 usec')",
+    locator="Sec. 2.7 ('$\\tau = 10$ usec')",
     quantity="pulse duration $\\tau$",
 )
 IN.published(
@@ -122,7 +126,7 @@ IN.convention(
 IN.published(
     "design_t",
     0.0,
-    locator="Sec. 2.8 ('by just considering the curves corresponding to t = 0')",
+    locator="Sec. 2.8 ('by just considering the curves corresponding to $t = 0$')",
     quantity="fraction t of the first-stage rule at which the required power is largest",
 )
 #: Table 2.1 prints each K on two rows (K = 10: rows 1-2, 100: rows 3-4, 1000: rows 5-6).
@@ -156,20 +160,20 @@ IN.convention(
     "table11_p_dl",
     0.999,
     readings={
-        "P_DL = 0.999, the Table 2.1 rows that print Table 1.1's 43 and 77": 0.999,
-        "the caption's P_DL = 0.88": 0.88,
-        "P_DL = 0.98, Table 2.1's other K = 1000 design (at least 0.88, as the caption asks)": 0.98,
+        "$P_{DL} = 0.999$, the Table 2.1 rows that print Table 1.1's 43 and 77": 0.999,
+        "the caption's $P_{DL} = 0.88$": 0.88,
+        "$P_{DL} = 0.98$, Table 2.1's other $K = 1000$ design (at least 0.88, as the caption asks)": 0.98,
     },
     reason="the caption asks for 'at least 0.88', which a design for any higher $P_{DL}$ also meets; the "
     "three design values the paper uses in Sec. 2.8 and Table 2.1",
-    quantity="design $P_{DL}$ of Table 1.1's K = 10, 100 and 1000 rows",
+    quantity="design $P_{DL}$ of Table 1.1's $K = 10$, 100 and 1000 rows",
 )
 IN.convention(
     "figure_level_decades",
     0.0,
     unit="decades",
     readings={
-        "the stated level, 0.01 N_T": 0.0,
+        "the stated level, $0.01 N_T$": 0.0,
         "0.05 decade above it, as misread on a logarithmic axis": 0.05,
         "0.05 decade below it, as misread on a logarithmic axis": -0.05,
     },
@@ -182,8 +186,8 @@ IN.convention(
     "step_p_dl",
     0.999,
     readings={
-        "Table 2.1's P_DL = 0.999 rows, the design Table 1.1 summarises": 0.999,
-        "Table 2.1's P_DL = 0.88 rows, the caption's design": 0.88,
+        "Table 2.1's $P_{DL} = 0.999$ rows, the design Table 1.1 summarises": 0.999,
+        "Table 2.1's $P_{DL} = 0.88$ rows, the caption's design": 0.88,
     },
     reason="Sec. 2.8's 'about 10 db more power' summarises Table 2.1, whose rows have two design values, "
     "and names neither",
@@ -193,27 +197,31 @@ IN.convention(
     "step_k1_reference",
     "nominal",
     readings={
-        "Sec. 2.7's nominal 33 dBW, the paper's K = 1 level": "nominal",
-        "the K = 1 threshold computed at the same P_DL": "computed",
+        "Sec. 2.7's nominal 33 dBW, the paper's $K = 1$ level": "nominal",
+        "the $K = 1$ threshold computed at the same $P_{DL}$": "computed",
     },
-    reason="Sec. 2.8 compares a K = 10 system with 'a K = 1 system'; Sec. 2.7 takes 33 dBW as the "
-    "nominal K = 1 level for any $P_{DL}$ from 0.9 to 0.999",
-    quantity="K = 1 level the step from K = 1 to K = 10 starts from",
+    reason="Sec. 2.8 compares a $K = 10$ system with 'a $K = 1$ system'; Sec. 2.7 takes 33 dBW as the "
+    "nominal $K = 1$ level for any $P_{DL}$ from 0.9 to 0.999",
+    quantity="$K = 1$ level the step from $K = 1$ to $K = 10$ starts from",
 )
 IN.published(
-    "sec27_p_dl_low", 0.9, locator="Sec. 2.7 ('for a P_DL of 0.9 and 0.999')", quantity="design $P_{DL}$"
+    "sec27_p_dl_low", 0.9, locator="Sec. 2.7 ('for a $P_{DL}$ of 0.9 and 0.999')", quantity="design $P_{DL}$"
 )
 IN.published(
-    "sec27_p_dl_high", 0.999, locator="Sec. 2.7 ('for a P_DL of 0.9 and 0.999')", quantity="design $P_{DL}$"
+    "sec27_p_dl_high",
+    0.999,
+    locator="Sec. 2.7 ('for a $P_{DL}$ of 0.9 and 0.999')",
+    quantity="design $P_{DL}$",
 )
 IN.assumed(
     "nominal_p_dl",
     0.9,
     low=0.9,
     high=0.999,
-    reason="Sec. 2.7 takes 33 dBW as the nominal level for K = 1 because the requirements for $P_{DL} = 0.9$ "
-    "and 0.999 differ by less than 2 dB; the design it stands for is any $P_{DL}$ in that printed range",
-    quantity="design $P_{DL}$ behind the nominal 33 dBW (K = 1)",
+    reason="Sec. 2.7 takes 33 dBW as the nominal level for $K = 1$ because the requirements for "
+    "$P_{DL} = 0.9$ and 0.999 differ by less than 2 dB; the design it stands for is any "
+    "$P_{DL}$ in that printed range",
+    quantity="design $P_{DL}$ behind the nominal 33 dBW ($K = 1$)",
 )
 IN.published(
     "nominal_erp_dbw",
@@ -258,7 +266,7 @@ IN.fitted(
     "$G = C/\\theta^2$ solved from Sec. 2.7's 20 degrees for 33 dBW from 30 W ($C = 400 \\times 66.5$). "
     "Textbook "
     "constants range from about 26 000 to 33 000 for practical dishes (41 253 for an ideal beam), and "
-    "only 26 400-28 000 fits Sec. 2.7 and Table 1.1's K = 10-1000 rows together: a fit, not a reading",
+    "only 26 400-28 000 fits Sec. 2.7 and Table 1.1's $K = 10$-1000 rows together: a fit, not a reading",
     quantity="constant of the pencil-beam rule, beamwidth² × gain",
 )
 IN.published("toa_rms_error_s", 50e-9, unit="s", locator="Sec. 1.3", quantity="rms time-of-arrival error")

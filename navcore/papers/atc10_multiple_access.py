@@ -72,13 +72,13 @@ IN.published(
 IN.published(
     "n_fig39",
     100_000,
-    locator="Sec. 3.8 ('when N = 10^5, tau/alpha = 10^-5, typical system parameter values')",
+    locator="Sec. 3.8 ('when $N = 10^5$, $\\tau/\\alpha = 10^{-5}$, typical system parameter values')",
     quantity="number of aircraft of the Fig. 3.9 remark",
 )
 IN.published(
     "tau_over_alpha_fig39",
     1e-5,
-    locator="Sec. 3.8 ('when N = 10^5, tau/alpha = 10^-5, typical system parameter values')",
+    locator="Sec. 3.8 ('when $N = 10^5$, $\\tau/\\alpha = 10^{-5}$, typical system parameter values')",
     quantity="duty ratio of the Fig. 3.9 remark",
 )
 IN.published(
@@ -90,33 +90,33 @@ IN.published(
 IN.published(
     "tau_over_alpha_fig310",
     1e-5,
-    locator="Sec. 3.8 ('Figure 3.10 which corresponds to a tau/alpha = 10^-5')",
+    locator="Sec. 3.8 ('Figure 3.10 which corresponds to a $\\tau/\\alpha = 10^{-5}$')",
     quantity="duty ratio of Fig. 3.10 and the worked example",
 )
 IN.published(
     "n_effective_example",
     200_000,
-    locator="Sec. 3.8, worked example ('N effectively equal to 2(10^5)')",
+    locator="Sec. 3.8, worked example ('N effectively equal to $2(10^5)$')",
     quantity="effective number of aircraft of Ref. [1]",
 )
 IN.published(
     "bandwidth_example_hz",
     1e7,
-    locator="Sec. 3.8, worked example ('B was assumed to be 10^7 Hz')",
+    locator="Sec. 3.8, worked example ('B was assumed to be $10^7$ Hz')",
     unit="Hz",
     quantity="bandwidth $B$ of the worked example",
 )
 IN.published(
     "theta_example",
     0.5,
-    locator="Sec. 3.8, worked example ('we let theta = 0.5')",
+    locator="Sec. 3.8, worked example ('we let $\\theta = 0.5$')",
     quantity="$\\theta$ of the worked example",
 )
 IN.convention(
     "alpha_example_s",
     1.0,
     readings={
-        "one second: N counted effectively as 2 x 10^5 pulses a second, as the example does": 1.0,
+        "one second: $N$ counted effectively as $2 \\times 10^5$ pulses a second, as the example does": 1.0,
         "2.5 s: the printed period of a signature of 5 pulses in Ref. [1]": 2.5,
     },
     unit="s",
@@ -132,9 +132,9 @@ IN.convention(
     0.5,
     quantity="meaning of the worked example's p (output variance per unit of p)",
     readings={
-        "the one-sided density N0 of an in-band white noise, whose matched-filter output variance is "
-        "N0/2, so Exp_g = a^2/p": 0.5,
-        "the output variance of (3.8.4)-(3.8.8), so Exp_g = a^2/(2p) as (3.8.8) prints": 1.0,
+        "the one-sided density $N_0$ of an in-band white noise, whose matched-filter output variance is "
+        "$N_0/2$, so $\\mathrm{Exp}_g = a^2/p$": 0.5,
+        "the output variance of (3.8.4)-(3.8.8), so $\\mathrm{Exp}_g = a^2/(2p)$ as (3.8.8) prints": 1.0,
     },
     reason="Sec. 3.8 calls p the 'average multiple access noise power' and writes "
     "$\\mathrm{Exp}_g = a^2/p$ in the "
@@ -198,7 +198,7 @@ IN.convention(
     "comparison_pd",
     0.9,
     quantity="lower detection probability at which the actual and Gaussian $p_f$ are compared (with 0.99)",
-    readings={"p_d = 0.9 and 0.99": 0.9, "p_d = 0.8 and 0.99": 0.8, "p_d = 0.5 and 0.99": 0.5},
+    readings={"$p_d = 0.9$ and 0.99": 0.9, "$p_d = 0.8$ and 0.99": 0.8, "$p_d = 0.5$ and 0.99": 0.5},
     reason="'always lower' (Sec. 3.8) is read off Figs. 3.3-3.8, whose detection levels are lost with "
     "them: the book compares at 0.99 and one lower $p_d$, and the text does not say which",
 )

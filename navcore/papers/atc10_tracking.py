@@ -182,7 +182,7 @@ IN.published(
 IN.published(
     "convergence_fraction",
     0.1,
-    locator="Sec. 4.5.4 ('to within (0.1) gamma of gamma')",
+    locator="Sec. 4.5.4 ('to within $(0.1) \\gamma$ of $\\gamma$')",
     quantity="convergence criterion of $\\gamma_n$",
 )
 for _ex in EXAMPLES:
@@ -211,7 +211,7 @@ for (_ex, _s0), _row in TABLE_4_3.items():
     IN.published(
         _key,
         float(_row[1]),
-        locator="Table 4.3 col. (ii), 'psi(alpha) (Fig. 4.1)'",
+        locator="Table 4.3 col. (ii), '$\\psi(\\alpha)$ (Fig. 4.1)'",
         quantity=f"Example {_ex}, $\\sigma_0 = {int(_s0)}$ ns: $\\psi$ as the paper read it off Fig. 4.1",
     )
     _half = printed(_row[1])[1].absolute
@@ -234,8 +234,8 @@ IN.convention(
     },
     unit="ft/ns",
     quantity="speed of light used to turn ns into ft",
-    reason="Table 4.3 prints $\\sigma\\,[\\mathrm{ns}] \\cdot \\sqrt{\\dots}$ as ft, i.e. c = 1 ft/ns; the "
-    "true c is 0.98357 ft/ns",
+    reason="Table 4.3 prints $\\sigma\\,[\\mathrm{ns}] \\cdot \\sqrt{\\dots}$ as ft, i.e. $c = 1$ ft/ns; the "
+    "true $c$ is 0.98357 ft/ns",
 )
 IN.convention(
     "longitude_sign",
@@ -318,7 +318,7 @@ IN.convention(
     "trace",
     quantity="measure of how widely three satellites are spaced (Sec. 4.6)",
     readings={
-        "the smallest position dilution tr{(F3'F3)^-1}": "trace",
+        "the smallest position dilution $\\mathrm{tr}\\{(F_3'F_3)^{-1}\\}$": "trace",
         "the largest |det F3| (volume spanned by the lines of sight)": "det",
         "the largest smallest angle between two lines of sight": "angle",
     },
@@ -330,9 +330,9 @@ IN.convention(
     "sd0",
     quantity="form of the acceptable three-satellite error of rule (4)",
     readings={
-        "a multiple of the all-satellite least-squares rms error sd_0": "sd0",
-        "a multiple of the tracking limit sd_N": "sdN",
-        "a multiple of the first three-satellite rms error sd_N+1": "sdN1",
+        "a multiple of the all-satellite least-squares rms error $\\mathrm{sd}_0$": "sd0",
+        "a multiple of the tracking limit $\\mathrm{sd}_N$": "sdN",
+        "a multiple of the first three-satellite rms error $\\mathrm{sd}_{N+1}$": "sdN1",
         "an absolute error in ft, the same for both examples": "ft",
     },
     reason="rule (4) says the tracking error 'will be acceptable' for about 30 to 60 seconds and names "

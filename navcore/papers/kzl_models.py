@@ -104,7 +104,7 @@ IN.convention(
     "atan2",
     quantity="arctangent of the printed roll of Eq. (3)",
     readings={
-        "the two-argument arctangent that the name arctan_2 calls for": "atan2",
+        "the two-argument arctangent that the name $\\arctan_2$ calls for": "atan2",
         "the one-argument arctangent of the printed ratio": "arctan",
     },
     reason="Eq. (3) prints '$\\arctan_2(a_y / a_z)$': the name of the two-argument arctangent with one "

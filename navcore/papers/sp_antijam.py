@@ -262,7 +262,7 @@ IN.assumed(
     high=5.0,
     unit="s",
     quantity="code-loop measurement interval ($B_n = 1/(2T)$)",
-    reason="1-s fixes; the tightly coupled receiver filter of Sec. 3.0 has 0.1 Hz (T = 5 s), "
+    reason="1-s fixes; the tightly coupled receiver filter of Sec. 3.0 has 0.1 Hz ($T = 5$ s), "
     "a 1-Hz loop 0.5 s",
 )
 IN.assumed(

@@ -304,8 +304,8 @@ IN.assumed(
     high=3.0,
     unit="",
     quantity="shape of the antenna's roll-off from zenith to horizon (1: linear in elevation)",
-    reason="the gain falls as the zenith angle's p-th power; patches hold most of their gain to mid "
-    "elevations (their 3-dB beamwidth is 90-120 deg) and fall near the horizon, p = 2-3; p = 1, "
+    reason="the gain falls as the zenith angle's $p$-th power; patches hold most of their gain to mid "
+    "elevations (their 3-dB beamwidth is 90-120 deg) and fall near the horizon, $p = 2$-3; $p = 1$, "
     "linear in elevation, is the steepest plausible shape",
 )
 IN.assumed(

@@ -596,8 +596,8 @@ IN.assumed(
     quantity="offset of the satellites' argument of latitude from one orbital plane to the next",
     reason="the paper names no constellation and no date; the book flies an evenly phased (Walker-like) "
     "pattern, a stand-in for the almanac (the real slots are unevenly phased). A 24/6/F Walker pattern "
-    "offsets the planes by F x 15 deg: F = 0, 1, 2 give 0, 15 and 30 deg; with the longitude it sets "
-    "which satellites are up and where; a grid because the geometry's effect is not monotone",
+    "offsets the planes by $F \\times 15$ deg: $F = 0, 1, 2$ give 0, 15 and 30 deg; with the longitude it "
+    "sets which satellites are up and where; a grid because the geometry's effect is not monotone",
 )
 
 

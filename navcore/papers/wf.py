@@ -63,54 +63,54 @@ _IVD = "Sec. IV.D, parameter list"
 IN.published(
     "sigma_n",
     0.02,
-    locator=_IVD + " (sigma_N, [3] Table 1)",
+    locator=_IVD + " ($\\sigma_N$, [3] Table 1)",
     unit="m/s",
     quantity="on-board navigation velocity accuracy",
 )
 IN.published(
     "sigma_t_small",
     0.0,
-    locator=_IVD + " (sigma_T, small)",
+    locator=_IVD + " ($\\sigma_T$, small)",
     unit="m/s",
     quantity="lever-arm adjustment uncertainty, small",
 )
 IN.published(
     "sigma_t_medium",
     0.2,
-    locator=_IVD + " (sigma_T, medium)",
+    locator=_IVD + " ($\\sigma_T$, medium)",
     unit="m/s",
     quantity="lever-arm adjustment uncertainty, medium",
 )
 IN.published(
     "sigma_t_large",
     2.0,
-    locator=_IVD + " (sigma_T, large)",
+    locator=_IVD + " ($\\sigma_T$, large)",
     unit="m/s",
     quantity="lever-arm adjustment uncertainty, large",
 )
 IN.published(
     "sigma_a_low",
     10e-6,
-    locator=_IVD + " (sigma_a = 10 um/s^2 ~ 10 mm/s^2)",
+    locator=_IVD + " ($\\sigma_a = 10$ µm/s² ~ 10 mm/s²)",
     unit="m/s^2",
     quantity="accelerometer resolution, high-resolution end",
 )
 IN.published(
     "sigma_a_high",
     10e-3,
-    locator=_IVD + " (sigma_a = 10 um/s^2 ~ 10 mm/s^2)",
+    locator=_IVD + " ($\\sigma_a = 10$ µm/s² ~ 10 mm/s²)",
     unit="m/s^2",
     quantity="accelerometer resolution, medium-resolution end",
 )
-IN.published("ts", 0.02, locator=_IVD + " (T_s = 0.02 s)", unit="s", quantity="update interval")
+IN.published("ts", 0.02, locator=_IVD + " ($T_s = 0.02$ s)", unit="s", quantity="update interval")
 IN.published(
     "sigma_l_per_sigma_a",
     200.0,
-    locator=_IVD + " (sigma_L = 200 sigma_a)",
+    locator=_IVD + " ($\\sigma_L = 200\\,\\sigma_a$)",
     unit="s",
     quantity="local velocity accuracy per unit accelerometer resolution",
 )
-IN.published("sigma_g", 1.0, locator=_IVD + " (sigma_G = 1 Hz)", unit="Hz", quantity="GPS Doppler noise")
+IN.published("sigma_g", 1.0, locator=_IVD + " ($\\sigma_G = 1$ Hz)", unit="Hz", quantity="GPS Doppler noise")
 IN.published(
     "sigma_a_example_micro_g",
     100.0,
@@ -207,7 +207,7 @@ IN.assumed(
 IN.published(
     "f_l1_over_c_printed",
     5.25,
-    locator=_IVD + " (f_o^L1/c = 5.25 m^-1)",
+    locator=_IVD + " ($f_o^{L1}/c = 5.25$ m$^{-1}$)",
     unit="1/m",
     quantity="GPS L1 frequency over the speed of light, as printed",
 )
