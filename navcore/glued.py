@@ -4187,3 +4187,114 @@ def sp22_architecture_min() -> float:
     """The loosely coupled to 0.2 nmi/h blackout shortening (min) less its carrier-loop and
     calibration parts."""
     return _sp22_part_min("architecture")
+
+
+# --- SP pages: the numbers the chapter's read-through glued -----------------------------------
+
+
+@register(
+    "sp02-step-over-jerk-w0",
+    "sp/02-tracking-loop",
+    "natural frequency holding the 6-g step at 90 deg over that holding the 10-g/s jerk (one foot)",
+)
+def sp02_step_over_jerk_w0() -> float:
+    """Fig. 2.1's loop with the one-foot conversion: the natural frequency that holds the 6-g
+    step's peak at the phase limit over the one that holds the 10 g/s jerk's."""
+    from scipy.optimize import brentq
+
+    from navcore.papers import sp_residual_acceleration as spr
+    from navcore.papers import sp_tracking as spt
+    from navcore.units import FT
+
+    w0_step = spr.unaided_omega0(FT)
+    w0_jerk = brentq(lambda w: spt.jerk_peak_deg(FT, w) - spt.IN.peak_limit_deg, 1.0, w0_step)
+    return float(w0_step / w0_jerk)
+
+
+@register(
+    "sp03-l1-unaided",
+    "sp/03-residual-acceleration",
+    "unaided natural frequency with the L1 conversion (rad/s)",
+)
+def sp03_l1_unaided() -> float:
+    """Table 2.6's unaided natural frequency (90 deg under the 6-g step) with the L1 carrier's
+    wavelength in place of one foot, rad/s."""
+    from navcore.papers import sp_residual_acceleration as spr
+    from navcore.units import GPS_L1_WAVELENGTH_M
+
+    return float(spr.unaided_omega0(GPS_L1_WAVELENGTH_M))
+
+
+@register(
+    "sp03-apriori-sf-1", "sp/03-residual-acceleration", "Table 2.5 accelerometer scale factor, 1 nmi/h (ppm)"
+)
+def sp03_apriori_sf_1() -> float:
+    """Table 2.5's a-priori accelerometer scale factor of the 1 nmi/h IMU, ppm (as printed)."""
+    from navcore.papers.sp_tables import TABLE_2_5_PRINTED
+
+    return float(TABLE_2_5_PRINTED["accel_scale_factor_ppm"][1])
+
+
+@register(
+    "sp03-needed-sf-1",
+    "sp/03-residual-acceleration",
+    "accelerometer scale factor that alone gives the printed 1 nmi/h radius of Table 2.6 (ppm)",
+)
+def sp03_needed_sf_1() -> float:
+    """The scale factor (ppm) whose 90 % radius with a perfect alignment is the printed column 2
+    of the 1 nmi/h IMU (Sec. 2.5's sensitivity at a = (1, 1, 1))."""
+    from scipy.optimize import brentq
+
+    from navcore.papers import sp_residual_acceleration as spr
+
+    return float(
+        brentq(lambda s: spr.r90_from_apriori_ppm(s, 0.0) - spr.col2_ppm("1"), 1e-3, sp03_apriori_sf_1())
+    )
+
+
+@register(
+    "sp03-needed-mis-{g}",
+    "sp/03-residual-acceleration",
+    "misalignment that gives the printed Table 2.6 radius with the a-priori scale factor (arcsec)",
+)
+def sp03_needed_mis(g: str) -> float:
+    """The misalignment (arcsec) whose 90 % radius, with Table 2.5's a-priori scale factor of
+    grade ``g``, is the printed column 2 of that grade."""
+    from scipy.optimize import brentq
+
+    from navcore.papers import sp_residual_acceleration as spr
+    from navcore.papers.sp_tables import TABLE_2_5_PRINTED
+
+    sf = float(TABLE_2_5_PRINTED["accel_scale_factor_ppm"][list(spr.GRADES).index(g)])
+    return float(brentq(lambda m: spr.r90_from_apriori_ppm(sf, m) - spr.col2_ppm(g), 0.0, 1e3))
+
+
+@register(
+    "sp22-unaided-jitter-dbhz",
+    "sp/22-jammer-flyby",
+    "C/N0 at which the unaided 18 rad/s loop's thermal jitter alone reaches the phase limit (dB-Hz)",
+)
+def sp22_unaided_jitter_dbhz() -> float:
+    """The thermal-jitter threshold of Table 2.6's unaided loop (18 rad/s), dB-Hz."""
+    from navcore.gnss.jammer_geometry import pll_jitter_threshold_dbhz
+    from navcore.gnss.tracking import third_order_noise_bandwidth_hz
+    from navcore.papers import sp_flyby as fb
+    from navcore.papers import sp_residual_acceleration as spr
+
+    bn = third_order_noise_bandwidth_hz(spr.IN.unaided_omega0)
+    return float(
+        pll_jitter_threshold_dbhz(bn, fb.IN.max_phase_error_deg, fb.IN.jitter_k_sigma, fb.IN.coherent_s)
+    )
+
+
+@register(
+    "sp22-gps-aided-ratio",
+    "sp/22-jammer-flyby",
+    "horizontal error of TC 10 nmi/h over TC 0.2 nmi/h while GPS is tracked",
+)
+def sp22_gps_aided_ratio() -> float:
+    """Sec. 2.8 assertion 1 in numbers: the 10 over the 0.2 nmi/h tightly coupled error 1 s
+    before the tightly coupled blackout starts (flyby runs)."""
+    from navcore.papers import sp_coverage as spc
+
+    return float(spc.gps_aided_error_ratio())

@@ -3867,6 +3867,103 @@ def test_sp22_lock_scan_reproduces_the_model_lock_tables():
         )
 
 
+# --- SP pages: the numbers the chapter's read-through glued ----------------------------------
+_FOOT_M = 0.3048  # m, the international foot (by definition)
+
+
+def _sp02_step_over_jerk_w0() -> float:
+    """scipy impulse / lsim oracle: the step's w from its 1 / w^2 scaling, the jerk's by brentq on
+    lsim's peak (the jerk's fixed duration breaks the scaling), both with one foot per cycle."""
+    limit = _sp_in("sp_tracking").peak_limit_deg
+    w_step = math.sqrt(_sp_loop_peak(1.0) * 360 / _FOOT_M / limit)
+    w_jerk = optimize.brentq(
+        lambda w: _sp_loop_peak(w, "jerk") * 360 / _FOOT_M - limit, 1.0, w_step, xtol=1e-10
+    )
+    return w_step / w_jerk
+
+
+def _sp03_r90_monte_carlo(sf_ppm: float, mis_arcsec: float) -> float:
+    """Seeded Monte Carlo 90 % radius (ppm) of the printed 3x6 sensitivity at a = (1, 1, 1) with
+    isotropic scale-factor and misalignment errors (400 000 draws, common to every call)."""
+    from navcore.papers import sp_residual_acceleration as spr
+
+    H = np.array(spr.IN.printed_h, dtype=float)
+    z = _sp03_draws()
+    sig = np.array([sf_ppm * 1e-6] * 3 + [mis_arcsec * math.pi / 648_000] * 3)
+    return float(np.quantile(np.linalg.norm((z * sig) @ H.T, axis=1), 0.9)) * 1e6
+
+
+@functools.cache
+def _sp03_draws() -> np.ndarray:
+    return np.random.default_rng(20261206).standard_normal((400_000, 6))
+
+
+def _sp03_needed(grade_index: int, what: str) -> float:
+    """brentq on the Monte Carlo radius: the misalignment (at Table 2.5's scale factor, typed in
+    as printed) or the scale factor alone (perfect alignment) that meets column 2 as printed."""
+    col2 = _SP_TAB26_COL2_PPM[grade_index]
+    sf = _SP_TAB25_SF_PPM[grade_index]
+    if what == "sf":
+        return optimize.brentq(lambda s: _sp03_r90_monte_carlo(s, 0.0) - col2, 1e-3, sf)
+    return optimize.brentq(lambda m: _sp03_r90_monte_carlo(sf, m) - col2, 0.0, 1e3)
+
+
+def _sp22_unaided_jitter_dbhz() -> float:
+    """The jitter rule of thumb (as for the loosely coupled loop above) with the noise bandwidth of
+    the paper's third-order loop at 18 rad/s integrated from its transfer function (scipy quad of
+    |H(j 2 pi f)|^2 over f, H = (2 w s^2 + 2 w^2 s + w^3) / (s^3 + 2 w s^2 + 2 w^2 s + w^3))."""
+    w = _sp_in("sp_residual_acceleration").unaided_omega0
+    a = _sp_in("sp_flyby")
+
+    def h2(f: float) -> float:
+        s = 2j * math.pi * f
+        return abs((2 * w * s**2 + 2 * w**2 * s + w**3) / (s**3 + 2 * w * s**2 + 2 * w**2 * s + w**3)) ** 2
+
+    bn = integrate.quad(h2, 0.0, np.inf, limit=400)[0]
+
+    def excess(db: float) -> float:
+        x = 10 ** (db / 10)
+        return a.jitter_k_sigma * math.degrees(math.sqrt(bn / x * (1 + 1 / (2 * a.coherent_s * x)))) - (
+            a.max_phase_error_deg
+        )
+
+    return optimize.brentq(excess, 0.0, 60.0, xtol=1e-12)
+
+
+def _sp22_gps_aided_ratio() -> float:
+    """The flyby runs' true north and east variances read by time (not through the analysis'
+    horizontal error or its sample lookup): sqrt(var_N + var_E) of each system at the last sample
+    at or before 1 s ahead of the tightly coupled 10 nmi/h blackout."""
+    from navcore.papers import sp_flyby as fb
+    from navcore.papers import sp_missions_scenarios as sc
+
+    runs = {s.label: r for s, r in fb.flyby_runs().items()}
+    start, _ = fb._blackout_s(next(s for s in sc.SYSTEMS if s.label == "TC 10 nmi/h"))
+
+    def horizontal(label: str) -> float:
+        r = runs[label]
+        k = int(np.searchsorted(r.t, start - 1.0, side="right")) - 1
+        p = r.truth_layout.slice("position").start
+        return math.sqrt(r.true_var[k, p] + r.true_var[k, p + 1])
+
+    return horizontal("TC 10 nmi/h") / horizontal("TC 0.2 nmi/h")
+
+
+ORACLES += [
+    Oracle("sp02-step-over-jerk-w0", _sp02_step_over_jerk_w0, rtol=1e-5, why="scipy lsim, brentq"),
+    Oracle("sp03-l1-unaided", _sp02_l1_w0, rtol=1e-6, why="scipy impulse response, 1 / w^2 scaling"),
+    Oracle("sp03-apriori-sf-1", lambda: _SP_TAB25_SF_PPM[1], why="Table 2.5 as printed, typed in"),
+    Oracle("sp03-needed-sf-1", lambda: _sp03_needed(1, "sf"), rtol=0.01, why="seeded Monte Carlo radius"),
+    Oracle("sp03-needed-mis-10", lambda: _sp03_needed(0, "mis"), rtol=0.01, why="seeded Monte Carlo radius"),
+    Oracle("sp03-needed-mis-0.5", lambda: _sp03_needed(2, "mis"), rtol=0.03, why="seeded Monte Carlo radius"),
+    Oracle("sp03-needed-mis-0.2", lambda: _sp03_needed(3, "mis"), rtol=0.03, why="seeded Monte Carlo radius"),
+    Oracle(
+        "sp22-unaided-jitter-dbhz", _sp22_unaided_jitter_dbhz, rtol=1e-6, why="quad noise bandwidth, brentq"
+    ),
+    Oracle("sp22-gps-aided-ratio", _sp22_gps_aided_ratio, rtol=1e-12, why="the runs' variances read by time"),
+]
+
+
 @pytest.mark.parametrize("oracle", ORACLES, ids=lambda o: o.name)
 def test_glued_value_against_its_oracle(oracle: Oracle):
     """The registered function's value against the oracle named in the case."""
