@@ -1,0 +1,239 @@
+"""The errata list, the findings table and the counts table, rendered from synthetic errata and
+evaluations (issue 31, mutation survivors: rendering the ledger's tests did not read).
+
+Oracle: the layout each class's docstring states (errata grouped by basis, computed first, the
+text-only caveat said once under its heading; each entry's basis, kind, printed text, finding,
+evidence and claims with their verdicts; the findings counted by paper, basis and kind), written
+out by hand for two errata and checked fragment by fragment. The counts table is fed a
+hand-written ``counts`` in place of the registry's, so no claim of a paper is evaluated.
+"""
+
+from __future__ import annotations
+
+from types import SimpleNamespace
+
+import pytest
+
+from navcore.ledger import Claim, Erratum, Tolerance, evaluate
+from navcore.ledger import render as render_module
+from navcore.ledger.core import TEXT_ONLY_CAVEAT
+from navcore.ledger.render import CountsTable, ErrataList, FindingsTable, _breakable_heading, _claim_link_html
+
+#: one claim, a cross-check of a printed 12 that agrees (consistent)
+EVALS = [
+    evaluate(
+        Claim(
+            id="SP-test-sum-a",
+            paper="SP",
+            locator="Table 1",
+            quantity="q",
+            published=12.0,
+            unit="dB",
+            compute=lambda: 12.0,
+            tolerance=Tolerance(reason="t", abs=0.5, policy="printed-digits"),
+            expected_status="consistent",
+            kind="cross-check",
+            note="n",
+        )
+    )
+]
+
+E1 = Erratum(
+    id="SP-E-rend1",
+    paper="SP",
+    locator="Eq. (1)",
+    printed="$a + b$",
+    finding="$a - b$",
+    evidence="the <derivation>",
+    kind="units",
+    basis="computed",
+    claims=("SP-test-sum-a", "SP-test-sum-zz"),
+    discussed_in="sp/ch2",
+)
+E2 = Erratum(
+    id="WF-E-rend2",
+    paper="WF",
+    locator="Table 2",
+    printed="x_1",
+    finding="y & z",
+    evidence="c",
+    kind="typography",
+    basis="text-only",
+)
+
+LINK_A = (
+    '<a href="../ledger.html#sp-test-sum-a"><code>SP-test-sum-a</code></a> '
+    '<span class="ledger-badge ledger-status-consistent">consistent</span>'
+)
+
+
+def test_claim_link_and_heading():
+    assert _claim_link_html("../", "SP-test-sum-a", "consistent") == LINK_A
+    assert _claim_link_html("", "SP-x", None) == '<a href="ledger.html#sp-x"><code>SP-x</code></a>'
+    assert _breakable_heading("unstated assumption") == "unstated<br>as&shy;sumption"
+    assert _breakable_heading("not-reproducible") == "not-<wbr>repro&shy;ducible"
+    assert _breakable_heading("a<b") == "a&lt;b"
+
+
+def test_errata_list_html():
+    out = ErrataList([E2, E1], root="../", titles={"sp/ch2": "Chapter <2>"}, evals=EVALS)._repr_html_()
+    computed = out.index("<b>Computed findings</b> (1)")
+    text_only = out.index("<b>Text-only findings</b> (1)")
+    assert (
+        computed < out.index('id="sp-e-rend1"') < text_only < out.index('id="wf-e-rend2"')
+    )  # computed first
+    assert out.count("transcriptions of the papers") == 1
+    assert out.index("ledger-caveat") > text_only
+    assert (
+        '<div class="erratum erratum-computed" id="sp-e-rend1"><h4>SP-E-rend1 — SP, Eq. (1)</h4>'
+        '<p class="erratum-basis"><b>Basis:</b> computed · <b>Kind:</b> units</p>'
+        '<p><b>Printed:</b> <span class="math notranslate nohighlight">\\(a + b\\)</span></p>'
+        '<p><b>The book finds:</b> <span class="math notranslate nohighlight">\\(a - b\\)</span></p>'
+        "<p><b>Evidence:</b> the &lt;derivation&gt;</p>"
+        f"<p><b>Claims (its evidence in the ledger):</b> {LINK_A}, "
+        '<a href="../ledger.html#sp-test-sum-zz"><code>SP-test-sum-zz</code></a>. '
+        'Discussed in <a href="../sp/ch2.html#sp-e-rend1">Chapter &lt;2&gt;</a>.</p></div>'
+    ) in out
+    assert (
+        "<p><b>Printed:</b> x_1</p><p><b>The book finds:</b> y &amp; z</p><p><b>Evidence:</b> c</p>"
+        "<p><b>Claims (its evidence in the ledger):</b> none.</p></div>"
+    ) in out
+    # no caveat when the page said it already; a page without a title says "the chapter"
+    quiet = ErrataList([E2, E1], caveat=False)._repr_html_()
+    assert "transcriptions" not in quiet
+    assert 'Discussed in <a href="sp/ch2.html#sp-e-rend1">the chapter</a>.' in quiet
+    assert ErrataList([])._repr_html_() == "<p>No errata registered.</p>"
+
+
+def test_errata_list_latex_markdown_and_repr():
+    el = ErrataList([E2, E1], evals=EVALS)
+    assert el.latex().splitlines() == [
+        r"\begingroup\sloppy",
+        r"\par\medskip\noindent\textit{Computed findings (1)}\par",
+        r"\par\medskip\noindent\textbf{SP-\allowbreak{}E-\allowbreak{}rend1} (SP, Eq. (1))\nopagebreak",
+        r"\begin{itemize}",
+        r"\item \textit{Basis:} computed; \textit{kind:} units",
+        r"\item \textit{Printed:} $a + b$",
+        r"\item \textit{The book finds:} $a - b$",
+        r"\item \textit{Evidence:} the <derivation>",
+        r"\item \textit{Claims (its evidence in the ledger):} "
+        r"\texttt{SP-\allowbreak{}test-\allowbreak{}sum-\allowbreak{}a} (consistent); "
+        r"\texttt{SP-\allowbreak{}test-\allowbreak{}sum-\allowbreak{}zz}",
+        r"\end{itemize}",
+        r"\par\medskip\noindent\textit{Text-only findings (1)}\par",
+        r"\noindent{}" + TEXT_ONLY_CAVEAT + r"\par",
+        r"\par\medskip\noindent\textbf{WF-\allowbreak{}E-\allowbreak{}rend2} (WF, Table 2)\nopagebreak",
+        r"\begin{itemize}",
+        r"\item \textit{Basis:} text-only; \textit{kind:} typography",
+        r"\item \textit{Printed:} x\_1",
+        r"\item \textit{The book finds:} y \& z",
+        r"\item \textit{Evidence:} c",
+        r"\item \textit{Claims (its evidence in the ledger):} none",
+        r"\end{itemize}",
+        r"\endgroup",
+    ]
+    assert "transcriptions" not in ErrataList([E2], caveat=False).latex()
+    assert el._repr_markdown_() == "```{raw} latex\n" + el.latex() + "\n```"
+    assert ErrataList([])._repr_markdown_() == "No errata registered."
+    assert (
+        repr(el)
+        == "SP-E-rend1: SP, Eq. (1) (computed, units)\nWF-E-rend2: WF, Table 2 (text-only, typography)"
+    )
+    assert repr(ErrataList([])) == "No errata registered."
+
+
+def test_findings_table():
+    ft = FindingsTable([E1, E2], EVALS, root="../", list_findings=True)
+    assert repr(ft).splitlines() == [
+        "Paper  Basis  typography  units  convention  derivation  unstated assumption  inconsistent numbers  "
+        "overstatement  Findings",
+        "WF  text-only  1  0  0  0  0  0  0  1",
+        "SP  computed  0  1  0  0  0  0  0  1",
+        "all  computed  0  1  0  0  0  0  0  1",
+        "all  text-only  1  0  0  0  0  0  0  1",
+        "all  all  1  1  0  0  0  0  0  2",
+    ]
+    out = ft._repr_html_()
+    assert out.startswith(
+        '<div class="ledger-counts-wrap"><table class="ledger-counts ledger-findings"><thead><tr>'
+        "<th>Paper</th><th>Basis</th><th>typo&shy;graphy</th><th>units</th>"
+    )
+    assert "<tr><td>SP</td><td>computed</td><td>0</td><td>1</td>" in out
+    assert out.count(TEXT_ONLY_CAVEAT) == 1
+    assert (
+        '<tr><td><a href="../errata.html#sp-e-rend1"><code>SP-E-rend1</code></a><br>'
+        '<span class="ledger-locator">SP, Eq. (1)</span></td><td>computed</td><td>units</td>'
+        f"<td>{LINK_A}</td></tr>"
+    ) in out
+    assert (
+        "<td>text-only</td><td>typography</td><td>no claim checks it</td></tr></tbody></table></div>" in out
+    )
+    md = ft._repr_markdown_()
+    assert "\n\n" + TEXT_ONLY_CAVEAT + "\n\n" in md
+    assert r"SP-\allowbreak{}E-\allowbreak{}rend1 & computed & units & " in md
+    assert "(consistent)" in md and "no claim checks it" in md
+    assert md.count("\\begin{longtable}") == 2
+    # computed findings only, not listed: no caveat, no list
+    plain = FindingsTable([E1])
+    assert plain._caveat() == ""
+    assert "ledger-findings-list" not in plain._repr_html_() and "ledger-caveat" not in plain._repr_html_()
+    assert plain._repr_markdown_().count("\\begin{longtable}") == 1
+    assert TEXT_ONLY_CAVEAT not in plain._repr_markdown_()
+
+
+@pytest.fixture
+def fake_counts(monkeypatch):
+    rows = {
+        "SP": {
+            "reproduced": 3,
+            "consistent": 1,
+            "inconsistent": 0,
+            "discrepant": 2,
+            "not-reproducible": 0,
+            "total": 6,
+        },
+        "WF": {
+            "reproduced": 1,
+            "consistent": 0,
+            "inconsistent": 1,
+            "discrepant": 0,
+            "not-reproducible": 1,
+            "total": 3,
+        },
+    }
+    monkeypatch.setattr(
+        render_module, "counts", lambda paper: {p: r for p, r in rows.items() if paper in (None, p)}
+    )
+    passes = {"SP": [True, False, False], "WF": [True]}
+    monkeypatch.setattr(
+        render_module,
+        "evaluations",
+        lambda paper: [SimpleNamespace(passes=ok) for ok in passes[paper]],
+    )
+
+
+def test_counts_table(fake_counts):
+    t = CountsTable()
+    assert t.failing == {"SP": 2, "WF": 0}
+    assert repr(t).splitlines() == [
+        "Paper  reproduced  consistent  inconsistent  discrepant  not-reproducible  total  failing check",
+        "SP  3  1  0  2  0  6  2",
+        "WF  1  0  1  0  1  3  0",
+        "all  4  1  1  2  1  9  2",
+    ]
+    out = t._repr_html_()
+    assert out.startswith(
+        '<div class="ledger-counts-wrap"><table class="ledger-counts"><thead><tr><th>Paper</th>'
+    )
+    assert "<th>repro&shy;duced</th>" in out and "<th>failing<br>check</th>" in out
+    assert (
+        "<tr><td>all</td><td>4</td><td>1</td><td>1</td><td>2</td><td>1</td><td>9</td><td>2</td></tr>" in out
+    )
+    assert out.endswith("</tbody></table></div>")
+    assert (
+        r"all & \mbox{4} & \mbox{1} & \mbox{1} & \mbox{2} & \mbox{1} & \mbox{9} & \mbox{2} \\"
+        in t._repr_markdown_()
+    )
+    # one paper: no total row
+    one = CountsTable("WF")
+    assert repr(one).splitlines()[1:] == ["WF  1  0  1  0  1  3  0"]
