@@ -237,3 +237,37 @@ def test_counts_table(fake_counts):
     # one paper: no total row
     one = CountsTable("WF")
     assert repr(one).splitlines()[1:] == ["WF  1  0  1  0  1  3  0"]
+
+
+def test_small_pieces_of_the_ledger_page():
+    from navcore.ledger.core import _n_runs, left_out_of_band
+    from navcore.ledger.render import (
+        InteractiveLedger,
+        LedgerTable,
+        _band_html,
+        _left_out_brief,
+        _md_escape,
+        quote_text,
+        text_table,
+    )
+
+    assert (_n_runs(0), _n_runs(1), _n_runs(2)) == ("0 runs", "1 run", "2 runs")
+    two = SimpleNamespace(left_out=({"case": "no fix", "runs": 1}, {"case": "a gap", "runs": 3}))
+    assert left_out_of_band(two) == "no fix (1 run); a gap (3 runs)"
+    assert _left_out_brief(two) == "4 runs left out"
+    assert _left_out_brief(SimpleNamespace(left_out=({"case": "x", "runs": 1},))) == "1 run left out"
+    assert _md_escape("a|b\nc") == "a\\|b c"
+    assert quote_text("so that $$x &= 1 \\quad (3)$$ holds for $p_d$") == "so that $x = 1$ holds for $p_d$"
+    assert quote_text("no formula, 5 %") == "no formula, 5 %"
+    assert _band_html({"band": None}, "m") == "" and _band_html({}, "m") == ""
+    assert _band_html({"band": [0.5, 2.0]}, "m") == "0.5 –&nbsp;2&nbsp;m"
+    assert _band_html({"band": [0.5, 2.0]}, "statement") == "0.5 –&nbsp;2"
+    assert _band_html({"band": [0.5, 2.0]}, "") == "0.5 –&nbsp;2"
+    assert _band_html({"band": [True, True]}, "statement") == "holds throughout"
+    assert _band_html({"band": [False, False]}, "statement") == "fails throughout"
+    assert _band_html({"band": [True, False]}, "statement") == "holds for some inputs"
+    assert _band_html({"band": [0.0, True]}, "statement") == "holds for some inputs"
+    assert repr(LedgerTable(EVALS)) == text_table(EVALS)
+    il = InteractiveLedger(EVALS)
+    assert repr(il) == text_table(EVALS)
+    assert il._repr_markdown_() == "```{raw} latex\n" + LedgerTable(EVALS, show_notes=False).latex() + "\n```"
