@@ -14,6 +14,7 @@ layouts are those the functions' docstrings show.
 
 from __future__ import annotations
 
+import pandas  # noqa: F401  (the frames import it; loaded once, at collection, not in a test)
 import pytest
 
 from navcore.ledger import Claim, Erratum, InputSet, Tolerance, evaluate
