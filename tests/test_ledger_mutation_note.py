@@ -417,3 +417,87 @@ def test_published_and_rows():
         "ok",
     )
     assert rows([Evaluation(claim(), None, True, "d")])[0]["tolerance"] == "±0.5"
+
+
+def test_table_cell_texts():
+    from navcore.ledger.render import (
+        _band_text,
+        _inputs_text,
+        _nowrap,
+        _plain_with_unit,
+        _reproduced_text,
+        _status_class,
+        _status_colour,
+        _tolerance_text,
+    )
+
+    assert _status_class("not-reproducible") == "ledger-status-not-reproducible"
+    assert _status_class("a b/c") == "ledger-status-a-b-c"
+    assert _status_colour("unknown") == "#ffffff"
+    assert _nowrap("12 m") == "12&nbsp;m"
+    assert _nowrap("does not hold") == "does not hold"
+    assert _nowrap("a <b> 1") == "a&nbsp;&lt;b&gt;&nbsp;1"
+    assert _nowrap("12345678901234567 m") == "12345678901234567 m"  # longer than 16: may wrap
+    assert _plain_with_unit("1", "states") == "1 state"
+    assert _plain_with_unit("2", "states") == "2 states"
+    assert _plain_with_unit("1", "m") == "1 m"
+    assert _plain_with_unit("—", "m") == "—" and _plain_with_unit("", "m") == ""
+    assert _plain_with_unit("3", "statement") == "3" and _plain_with_unit("3", "") == "3"
+    assert _reproduced_text(ev()) == "2 m"
+    # tolerances: size and reason; a reason that starts with the size is the whole text
+    assert _tolerance_text(ev()) == "±0.5: t"
+    assert _tolerance_text(ev(tolerance=Tolerance(reason="±0.5 by rounding", abs=0.5, policy="exact"))) == (
+        "±0.5 by rounding"
+    )
+    s = claim(published=True, unit="statement", kind="statement", tolerance=EXACT)
+    assert _tolerance_text(ev(s, tolerance=EXACT)) == ""
+    assert _tolerance_text(ev(tolerance=EXACT)) == "exact: an integer count or a logical statement"
+    assert _tolerance_text(Evaluation(claim(tolerance=lambda: HALF), None, True, "d")) == ""
+    assert _tolerance_text(Evaluation(claim(), None, True, "d")) == "±0.5: t"
+    # the band with its unit and the runs left out
+    left = ({"case": "no fix", "runs": 2},)
+    assert _band_text(ev(band=(1.0, 2.5), left_out=left)) == (
+        "1 to 2.5 m (left out, outside the model's domain: no fix (2 runs))"
+    )
+    assert _band_text(ev(claim(unit=""), band=(1.0, 2.5))) == "1 to 2.5"
+    assert _band_text(ev()) == "" and _band_text(ev(s, band=(False, True))) == ""
+    # the inputs read
+    inputs = (
+        {"name": NAME + "scale", "provenance": "convention", "value": 1.0},
+        {"name": NAME + "pair", "provenance": "convention", "value": [1, 2.5]},
+        {"name": "ATC10.nowhere.n_states", "provenance": "published", "locator": "T2", "value": 1},
+        {"name": "ATC10.nowhere.mode", "provenance": "assumed", "value": "tracking"},
+        {"name": "ATC10.nowhere.flag", "provenance": "assumed", "value": True},
+        {"name": "ATC10.nowhere.long", "provenance": "assumed", "value": "x" * 45},
+    )
+    assert _inputs_text(ev(inputs=inputs)) == (
+        "scale = 1 m (convention); pair = (1, 2.5) (convention); n states = 1 (published, T2); "
+        "mode = tracking (assumed); flag = true (assumed); long = " + "x" * 39 + "… (assumed)"
+    )
+
+
+def test_agreeing_reading_text():
+    from navcore.ledger.render import _agreeing_reading_text
+
+    assert _agreeing_reading_text(ev()) == ""
+    # the reading used disagrees: the agreeing readings' labels
+    r = (
+        reading(USED, 2.0, nominal=True),
+        reading(OTHER, 92.0, agrees=True),
+        reading({NAME + "scale": "x", NAME + "code": "y"}, 92.0, agrees=True),
+        reading({NAME + "scale": "z"}, 9.0),
+    )
+    assert _agreeing_reading_text(ev(readings=r)) == "agrees under: the other reading / x; y"
+    # the reading used agrees and decides: nothing to say
+    r = (reading(USED, 92.0, nominal=True, agrees=True), reading(OTHER, 92.0, agrees=True))
+    assert _agreeing_reading_text(ev(readings=r)) == ""
+    # the reading used agrees over a band too wide, another decides: consistent, named
+    r = (
+        reading(USED, 92.0, nominal=True, agrees=True, too_wide=True),
+        reading(OTHER, 92.0, agrees=True),
+        reading({NAME + "scale": "w"}, 92.0, agrees=True, too_wide=True),
+    )
+    assert _agreeing_reading_text(ev(readings=r)) == "agrees under: the other reading"
+    assert _agreeing_reading_text(ev(readings=r, status="not-reproducible")) == ""
+    r = (reading(USED, 2.0, nominal=True), reading(OTHER, 9.0))
+    assert _agreeing_reading_text(ev(readings=r)) == ""
