@@ -269,3 +269,51 @@ def test_small_pieces_of_the_ledger_page():
     # (their text form, text_table, imports every paper module for the errata: not here)
     il = InteractiveLedger(EVALS)
     assert il._repr_markdown_() == "```{raw} latex\n" + LedgerTable(EVALS, show_notes=False).latex() + "\n```"
+
+
+def test_latex_table_widths_by_hand():
+    from navcore.ledger.render import latex_table
+
+    # one long text column (70 letters, breakable every 7: widest piece 7 x 4 pt = 28 pt) and one
+    # number column; 70 characters wide in all, so the columns are proportional (p{...}), not l/r
+    block = latex_table(["A", "B"], [["x" * 70, "1"], ["[y]"]])
+    lines = block.splitlines()
+    # long text: 12 + (mean length of its cells, (70 + 3) / 2) ** 0.75 characters of 4 pt
+    need_text = (12.0 + ((70 + 3) / 2) ** 0.75) * 4.0
+    need_number = 3 * 4.0  # at least 3 characters
+    # the page has room for both (share 1): each column gets its need plus 8 pt of padding
+    w0, w1 = need_text + 8.0, need_number + 8.0
+    assert (
+        lines[1]
+        == r"\begingroup\footnotesize\setlength{\tabcolsep}{4pt}\hyphenpenalty=10000\exhyphenpenalty=10000"
+    )
+    assert lines[2] == (
+        r"\begin{longtable}{>{\raggedright\arraybackslash}p{\dimexpr "
+        + f"{w0 / (w0 + w1):.4f}"
+        + r"\linewidth-2\tabcolsep\relax}>{\raggedleft\arraybackslash}p{\dimexpr "
+        + f"{w1 / (w0 + w1):.4f}"
+        + r"\linewidth-2\tabcolsep\relax}}"
+    )
+    assert lines[3] == r"\hline \textbf{A} & \textbf{B} \\ \hline \endfirsthead"
+    assert lines[4] == r"\hline \textbf{A} & \textbf{B} \\ \hline \endhead"
+    assert lines[5] == r"\hline \endfoot"
+    assert lines[6] == r"\allowbreak{}".join(["x" * 7] * 10) + r" & \mbox{1} \\"
+    # a short row is padded; a cell starting with "[" is protected from reading as an option
+    assert lines[7] == r"{}[y] &  \\"
+    assert lines[8:] == [r"\end{longtable}", r"\endgroup", "```"]
+    assert lines[0] == "```{raw} latex"
+
+
+def test_latex_table_narrow_and_crowded():
+    from navcore.ledger.render import latex_table
+
+    # 60 characters or fewer: the natural width, l and r columns
+    narrow = latex_table(["Paper", "Claims", "Note"], [["SP", "155", "ok"], ["KZL", "4.5 %", "-"]])
+    assert r"\begin{longtable}{lrl}" in narrow
+    assert r"KZL & \mbox{4.5 \%} & - \\" in narrow
+    # a column with a blank cell is still numeric; an empty column is not
+    assert r"\begin{longtable}{rl}" in latex_table(["n", "e"], [["1", ""], ["", ""]])
+    # words that cannot break and do not fit the line: one size smaller
+    crowded = latex_table([f"H{i}" for i in range(10)], [["abcdefghijkl" * 1] * 10])
+    assert r"\begingroup\scriptsize" in crowded
+    assert r"\begingroup\footnotesize" in latex_table([f"H{i}" for i in range(5)], [["abcdefghijkl"] * 5])
