@@ -16,7 +16,7 @@ import pytest
 
 from navcore.ledger import Claim, Erratum, Tolerance, evaluate
 from navcore.ledger import render as render_module
-from navcore.ledger.core import TEXT_ONLY_CAVEAT
+from navcore.ledger.core import TEXT_ONLY_CAVEAT, Evaluation
 from navcore.ledger.render import CountsTable, ErrataList, FindingsTable, _breakable_heading, _claim_link_html
 
 #: one claim, a cross-check of a printed 12 that agrees (consistent)
@@ -317,3 +317,125 @@ def test_latex_table_narrow_and_crowded():
     crowded = latex_table([f"H{i}" for i in range(10)], [["abcdefghijkl" * 1] * 10])
     assert r"\begingroup\scriptsize" in crowded
     assert r"\begingroup\footnotesize" in latex_table([f"H{i}" for i in range(5)], [["abcdefghijkl"] * 5])
+
+
+#: a sentence of 130 characters, long enough to be said once for a group (at least 120)
+LONG = (
+    "The scenario flies a straight track at "
+    + "constant speed " * 5
+    + "over a flat earth with four ground stations in view."
+)
+
+
+def test_common_opening():
+    from navcore.ledger.render import _common_opening
+
+    assert len(LONG) >= 120
+    a, b = LONG + " Then a.", LONG + " Then b."
+    assert _common_opening([a, b]) == LONG
+    # too short a common opening, an empty note, no notes: none
+    assert _common_opening(["Short. Then a.", "Short. Then b."]) == ""
+    assert _common_opening([a, ""]) == "" and _common_opening([]) == ""
+    # a note that is nothing but the opening keeps no text of its own: none
+    assert _common_opening([a, LONG + " "]) == ""
+    # a full stop after an abbreviation or inside math does not end a sentence
+    abbrev = LONG[:-1] + " e.g. more text here. Then a."
+    assert _common_opening([abbrev, LONG[:-1] + " e.g. more text here. Then b."]) == (
+        LONG[:-1] + " e.g. more text here."
+    )
+    assert _common_opening([LONG[:-1] + " e.g. x", LONG[:-1] + " e.g. y"]) == ""
+    math_note = LONG + " $a. b$ c. Then"
+    assert _common_opening([math_note + " a.", math_note + " b."]) == LONG + " $a. b$ c."
+    assert _common_opening([LONG + " $a. b", LONG + " $a. c"]) == LONG
+    # the notes differ inside the first sentence: none
+    assert _common_opening([LONG + " x.", "X" + LONG[1:] + " x."]) == ""
+
+
+def test_locator_detail_and_shared_label():
+    from navcore.ledger.render import _locator_detail, _shared_label
+
+    assert _locator_detail("Table 2.6", "Table 2.6") == ""
+    assert _locator_detail("Table 2.6, column 2", "Table 2.6") == "column 2"
+    assert _locator_detail("Table 2.6; row 1", "Table 2.6") == "row 1"
+    assert _locator_detail("Eq. (3)", "Eq. (3") == "Eq. (3)"  # the rest is a closing bracket
+    assert _locator_detail("Table 2.6,", "Table 2.6") == "Table 2.6,"
+    assert _locator_detail("Fig. 3", "Table 2.6") == "Fig. 3"
+    assert _shared_label(3, 3) == "note for these 3 claims"
+    assert _shared_label(2, 3) == "note shared by 2 of these 3 claims"
+
+
+def _ev(cid, locator, note, unit="m"):
+    return Evaluation(
+        Claim(
+            id=cid,
+            paper="SP",
+            locator=locator,
+            quantity="q",
+            published=1.0,
+            unit=unit,
+            compute=lambda: 1.0,
+            tolerance=Tolerance(reason="t", abs=0.5, policy="printed-digits"),
+            expected_status="reproduced",
+            note=note,
+        ),
+        1.0,
+        True,
+        "d",
+        status="reproduced",
+        tolerance=Tolerance(reason="t", abs=0.5, policy="printed-digits"),
+    )
+
+
+def test_group_claims_and_what_a_group_shares():
+    from navcore.ledger.render import group_claims
+
+    evs = [
+        _ev("SP-g1", "Table 2.6, column 1", LONG + " One."),
+        _ev("SP-g2", "Table 2.6, column 2", LONG + " Two."),
+        _ev("SP-g3", "Table 2.6, column 2", LONG + " Three."),
+        _ev("SP-g4", "Fig. 3", "Alone."),
+    ]
+    groups = group_claims(evs)
+    # g2 and g3 share a locator: a run of their own; g1 is grouped by its table
+    assert [(g.label, g.heading, [e.claim.id for e in g.evals]) for g in groups] == [
+        ("Table 2.6", "Table 2.6, column 1", ["SP-g1"]),
+        ("Table 2.6, column 2", "Table 2.6, column 2", ["SP-g2", "SP-g3"]),
+        ("Fig. 3", "Fig. 3", ["SP-g4"]),
+    ]
+    g = groups[1]
+    assert g.shared == {"tolerance": "±0.5: t", "note": LONG}
+    assert g.shared_by == 2
+    assert [g.own(i) for i in range(2)] == [{"note": "Two."}, {"note": "Three."}]
+    # a single claim shares nothing
+    assert groups[0].shared == {} and groups[0].shared_by == 0
+    assert groups[0].own(0) == {"note": LONG + " One.", "tolerance": "±0.5: t"}
+    # three claims, two of them opening alike: the opening is shared by two, their notes go on with "…"
+    trio = group_claims(
+        [
+            _ev("SP-t1", "Eq. (1)", LONG + " One."),
+            _ev("SP-t2", "Eq. (1)", "Other. " + LONG),
+            _ev("SP-t3", "Eq. (1)", LONG + " Three."),
+        ]
+    )[0]
+    assert trio.shared["note"] == LONG and trio.shared_by == 2
+    assert [d["note"] for d in trio.details] == ["… One.", "Other. " + LONG, "… Three."]
+    assert trio.own(1)["note"] == "Other. " + LONG
+    # identical notes are shared whole
+    same = group_claims([_ev("SP-s1", "Eq. (2)", "Same."), _ev("SP-s2", "Eq. (2)", "Same.")])[0]
+    assert same.shared == {"note": "Same.", "tolerance": "±0.5: t"} and same.shared_by == 2
+    assert same.own(0) == {}
+
+
+def test_details_html_and_tex():
+    from navcore.ledger.render import _details_html, _details_tex
+
+    d = {"note": "A note", "tolerance": "±0.5: t", "band": "1 to 2 m", "inputs": "x = 1 (published)"}
+    assert _details_html(d) == (
+        "<p>A note</p><p><i>Tolerance:</i> ±0.5: t</p><p><i>Over the assumed inputs' ranges:</i> 1 to 2 m</p>"
+        "<p><i>Inputs:</i> x = 1 (published)</p>"
+    )
+    assert _details_html({"note": "", "band": "b"}) == "<p><i>Over the assumed inputs' ranges:</i> b</p>"
+    assert _details_tex(d) == (
+        r"A note. \textit{Tolerance:} ±0.5: t. \textit{Over the assumed inputs' ranges:} 1 to 2 m."
+    )
+    assert _details_tex({"note": "Done!", "tolerance": "(x)"}) == r"Done! \textit{Tolerance:} (x)"
