@@ -439,3 +439,29 @@ def test_details_html_and_tex():
         r"A note. \textit{Tolerance:} ±0.5: t. \textit{Over the assumed inputs' ranges:} 1 to 2 m."
     )
     assert _details_tex({"note": "Done!", "tolerance": "(x)"}) == r"Done! \textit{Tolerance:} (x)"
+
+
+def test_json_and_csv_exports():
+    import csv
+    import io
+    import json
+
+    from navcore.ledger.render import csv_export, json_dump, json_export
+    from navcore.provenance import BuildProvenance
+
+    build = BuildProvenance("0" * 40, "clean", "2026-01-01T00:00:00+00:00", "f" * 64, "3.11.7", ())
+    e = _ev("SP-j1", "Eq. (1)", "Ünïcode note")
+    dumped = json_dump([e])
+    assert json.loads(dumped) == [e.as_json()]
+    assert "Ünïcode" in dumped and '\n  {\n    "id": "SP-j1",' in dumped  # Unicode kept, two-space indent
+    exported = json_export([e], build)
+    assert json.loads(exported) == {"provenance": build.as_dict(), "claims": [e.as_json()]}
+    assert exported.startswith('{\n  "provenance": {') and "Ünïcode" in exported
+    text = csv_export([e, e], build)
+    table = list(csv.DictReader(io.StringIO(text)))
+    assert len(table) == 2 and table[0]["id"] == "SP-j1" and table[0]["note"] == "Ünïcode note"
+    assert table[0]["build_commit"] == "0" * 40 and table[1]["build_lock_sha256"] == "f" * 64
+    assert text.splitlines()[0].startswith("id,locator,quantity,published,")
+    assert text.endswith("\r\n")
+    # no claims: a header of the id and the build's columns
+    assert csv_export([], build).splitlines() == ["id," + ",".join(build.flat())]
