@@ -465,3 +465,119 @@ def test_json_and_csv_exports():
     assert text.endswith("\r\n")
     # no claims: a header of the id and the build's columns
     assert csv_export([], build).splitlines() == ["id," + ",".join(build.flat())]
+
+
+def _table_claims():
+    import dataclasses
+
+    a = _ev("SP-g2", "Table 2.6, column 2", LONG + " Two.")
+    b = _ev("SP-g3", "Table 2.6, column 2", LONG + " Three.")
+    c = _ev("SP-g4", "Fig. 3", "Alone.")
+    claim = dataclasses.replace(
+        c.claim, erratum="SP-E-x", discussed_in="sp/ch3", kind="cross-check", expected_status="consistent"
+    )
+    readings = (
+        {"reading": {"SP.x.y": "r0"}, "nominal": True, "value": 1.0, "band": None, "agrees": False},
+        {"reading": {"SP.x.y": "r1"}, "nominal": False, "value": 1.0, "band": None, "agrees": True},
+    )
+    c = dataclasses.replace(c, claim=claim, passes=False, status="discrepant", readings=readings)
+    return a, b, c
+
+
+#: The ledger table of three claims as the class docstring lays it out (reviewed line by line):
+#: a group of two sharing a locator, whose common note and tolerance are said once in its header,
+#: and a failing discrepant cross-check with an erratum and an agreeing other reading.
+TABLE_HTML = (
+    '<div class="ledger-claims-wrap"><table class="ledger-claims"><thead><tr><th scope="col">Wh'
+    'at it checks</th><th scope="col">Printed</th><th scope="col">Reproduced</th><th scope="col'
+    '">Verdict</th><th scope="col">Kind</th></tr></thead><tbody><tr class="ledger-group"><th co'
+    'lspan="5" scope="rowgroup"><span class="ledger-group-label">Table 2.6, column 2</span><det'
+    'ails class="ledger-shared"><summary>note for these 2 claims</summary><p>The scenario flies'
+    " a straight track at constant speed constant speed constant speed constant speed constant "
+    "speed over a flat earth with four ground stations in view.</p><p><i>Tolerance:</i> ±0.5: t"
+    '</p></details></th></tr><tr id="sp-g2" class="ledger-claim" data-status="reproduced"><td c'
+    'lass="ledger-what">q<details class="ledger-details"><summary>details</summary><p class="le'
+    'dger-id">Claim <code>SP-g2</code></p><p>Two.</p></details></td><td class="ledger-value" da'
+    'ta-label="Printed">1&nbsp;m</td><td class="ledger-value" data-label="Reproduced">1&nbsp;m<'
+    '/td><td class="ledger-verdict" data-label="Verdict"><span class="ledger-badge ledger-statu'
+    's-reproduced">reproduced</span></td><td class="ledger-kind" data-label="Kind"><span class='
+    '"ledger-kind-label">reproduction</span></td></tr><tr id="sp-g3" class="ledger-claim" data-'
+    'status="reproduced"><td class="ledger-what">q<details class="ledger-details"><summary>deta'
+    'ils</summary><p class="ledger-id">Claim <code>SP-g3</code></p><p>Three.</p></details></td>'
+    '<td class="ledger-value" data-label="Printed">1&nbsp;m</td><td class="ledger-value" data-l'
+    'abel="Reproduced">1&nbsp;m</td><td class="ledger-verdict" data-label="Verdict"><span class'
+    '="ledger-badge ledger-status-reproduced">reproduced</span></td><td class="ledger-kind" dat'
+    'a-label="Kind"><span class="ledger-kind-label">reproduction</span></td></tr></tbody><tbody'
+    '><tr class="ledger-group"><th colspan="5" scope="rowgroup"><span class="ledger-group-label'
+    '">Fig. 3</span></th></tr><tr id="sp-g4" class="ledger-claim" data-status="discrepant"><td '
+    'class="ledger-what">q<details class="ledger-details"><summary>details</summary><p class="l'
+    'edger-id">Claim <a href="../sp/ch3.html#sp-g4" title="where the book derives it"><code>SP-'
+    "g4</code></a></p><p>Alone. With the y read as r1: 1 m, which agrees with the printed value"
+    '.</p><p><i>Tolerance:</i> ±0.5: t</p></details></td><td class="ledger-value" data-label="P'
+    'rinted">1&nbsp;m</td><td class="ledger-value" data-label="Reproduced">1&nbsp;m</td><td cla'
+    'ss="ledger-verdict" data-label="Verdict"><span class="ledger-badge ledger-status-discrepan'
+    't">discrepant</span> <b class="ledger-fails">check fails</b> <a class="ledger-erratum" hre'
+    'f="../errata.html#sp-e-x">SP-E-x</a> <span class="ledger-reading">agrees under: r1</span><'
+    '/td><td class="ledger-kind" data-label="Kind"><span class="ledger-kind-label">cross-check<'
+    "/span></td></tr></tbody></table></div>"
+)
+TABLE_LATEX = (
+    "\\begingroup\\footnotesize\\setlength{\\tabcolsep}{3pt}\\sloppy\n\\begin{longtable}{>{\\raggedrigh"
+    "t\\arraybackslash}p{\\dimexpr 0.49\\linewidth-2\\tabcolsep\\relax}>{\\raggedright\\arraybackslash"
+    "}p{\\dimexpr 0.16\\linewidth-2\\tabcolsep\\relax}>{\\raggedleft\\arraybackslash}p{\\dimexpr 0.16\\"
+    "linewidth-2\\tabcolsep\\relax}>{\\raggedright\\arraybackslash}p{\\dimexpr 0.19\\linewidth-2\\tabc"
+    "olsep\\relax}}\n\\hline \\textbf{What it checks} & \\textbf{Printed} & \\textbf{Reproduced} & \\t"
+    "extbf{Verdict} \\\\ \\hline \\endfirsthead\n\\hline \\textbf{What it checks} & \\textbf{Printed} &"
+    " \\textbf{Reproduced} & \\textbf{Verdict} \\\\ \\hline \\endhead\n\\hline \\endfoot\n\\rowcolor[HTML]"
+    "{F1F3F5}\\multicolumn{4}{>{\\raggedright\\arraybackslash}p{\\dimexpr\\linewidth-2\\tabcolsep\\rel"
+    "ax}}{\\textbf{Table 2.6, column 2}\\newline{}{\\scriptsize The scenario flies a straight trac"
+    "k at constant speed constant speed constant speed constant speed constant speed over a fla"
+    "t earth with four ground stations in view. \\textit{Tolerance:} ±0.5: t.}} \\\\*\nq\\newline{}{"
+    "\\scriptsize \\texttt{SP-\\allowbreak{}g2}. Two.} & 1 m & 1 m & \\cellcolor[HTML]{D8F0D8}repro"
+    "duced\\newline{}{\\scriptsize\\itshape reproduction} \\\\ \\arrayrulecolor{black!25}\\hline\\array"
+    "rulecolor{black}\nq\\newline{}{\\scriptsize \\texttt{SP-\\allowbreak{}g3}. Three.} & 1 m & 1 m "
+    "& \\cellcolor[HTML]{D8F0D8}reproduced\\newline{}{\\scriptsize\\itshape reproduction} \\\\ \\hline"
+    "\n\\rowcolor[HTML]{F1F3F5}\\multicolumn{4}{>{\\raggedright\\arraybackslash}p{\\dimexpr\\linewidth"
+    "-2\\tabcolsep\\relax}}{\\textbf{Fig. 3}} \\\\*\nq\\newline{}{\\scriptsize \\texttt{SP-\\allowbreak{}"
+    "g4}. Alone. With the y read as r1: 1 m, which agrees with the printed value. \\textit{Toler"
+    "ance:} ±0.5: t.} & 1 m & 1 m & \\cellcolor[HTML]{FBE3D4}discrepant \\textbf{(check fails)}\\n"
+    "ewline{}{\\scriptsize SP-\\allowbreak{}E-\\allowbreak{}x}\\newline{}{\\scriptsize agrees under:"
+    " r1}\\newline{}{\\scriptsize\\itshape cross-check} \\\\ \\hline\n\\end{longtable}\n\\endgroup"
+)
+TABLE_HTML_NO_NOTES = (
+    '<div class="ledger-claims-wrap"><table class="ledger-claims"><thead><tr><th scope="col">Wh'
+    'at it checks</th><th scope="col">Printed</th><th scope="col">Reproduced</th><th scope="col'
+    '">Verdict</th><th scope="col">Kind</th></tr></thead><tbody><tr class="ledger-group"><th co'
+    'lspan="5" scope="rowgroup"><span class="ledger-group-label">Fig. 3</span></th></tr><tr id='
+    '"sp-g4" class="ledger-claim" data-status="discrepant"><td class="ledger-what">q <span clas'
+    's="ledger-id"><a href="sp/ch3.html#sp-g4" title="where the book derives it"><code>SP-g4</c'
+    'ode></a></span></td><td class="ledger-value" data-label="Printed">1&nbsp;m</td><td class="'
+    'ledger-value" data-label="Reproduced">1&nbsp;m</td><td class="ledger-verdict" data-label="'
+    'Verdict"><span class="ledger-badge ledger-status-discrepant">discrepant</span> <b class="l'
+    'edger-fails">check fails</b> <span class="ledger-reading">agrees under: r1</span></td><td '
+    'class="ledger-kind" data-label="Kind"><span class="ledger-kind-label">cross-check</span></'
+    "td></tr></tbody></table></div>"
+)
+
+
+def test_ledger_table_html_and_latex():
+    from navcore.ledger.render import LedgerTable
+
+    a, b, c = _table_claims()
+    t = LedgerTable([a, b, c], link_pages=True)
+    assert t._repr_html_() == TABLE_HTML
+    assert t.latex() == TABLE_LATEX
+    assert t._repr_markdown_() == "```{raw} latex\n" + TABLE_LATEX + "\n```"
+    bare = LedgerTable([c], show_notes=False, link_pages=True, link_errata=False, root="")
+    assert bare._repr_html_() == TABLE_HTML_NO_NOTES
+    # without page links or notes the claim id is not shown; a group sharing part of its notes says so
+    assert "ledger-id" not in LedgerTable([c], show_notes=False)._repr_html_()
+    trio = [
+        _ev("SP-t1", "Eq. (1)", LONG + " One."),
+        _ev("SP-t2", "Eq. (1)", "Other."),
+        _ev("SP-t3", "Eq. (1)", LONG + " Three."),
+    ]
+    tex = LedgerTable(trio).latex()
+    assert r"{\scriptsize note shared by 2 of these 3 claims: " in tex
+    assert "note shared by 2 of these 3 claims</summary>" in LedgerTable(trio)._repr_html_()
+    assert "note shared" not in LedgerTable(trio, show_notes=False).latex()
