@@ -581,3 +581,120 @@ def test_ledger_table_html_and_latex():
     assert r"{\scriptsize note shared by 2 of these 3 claims: " in tex
     assert "note shared by 2 of these 3 claims</summary>" in LedgerTable(trio)._repr_html_()
     assert "note shared" not in LedgerTable(trio, show_notes=False).latex()
+
+
+#: The interactive ledger of the three claims above, the band of the first with two runs left out
+#: (reviewed against the class docstring: controls, the records as JSON, one row per claim).
+INTERACTIVE_HTML = (
+    '<div class="ledger-app" data-ledger-app><div class="ledger-controls"><input type="search" '
+    'placeholder="Search claims" aria-label="Search claims"><label>Paper <select data-filter="p'
+    'aper"><option value="">all</option><option value="SP">SP</option></select></label><label>V'
+    'erdict <select data-filter="status"><option value="">all</option><option value="reproduced'
+    '">reproduced</option><option value="discrepant">discrepant</option></select></label><label'
+    '>Kind <select data-filter="kind"><option value="">all</option><option value="cross-check">'
+    'cross-check</option><option value="reproduction">reproduction</option></select></label><sp'
+    'an class="ledger-sort"><label>Sort by <select data-sort><option value="">the ledger\'s orde'
+    'r</option><option value="id">Claim</option><option value="paper">Paper</option><option val'
+    'ue="kind">Kind</option><option value="locator">Locator</option><option value="quantity">Qu'
+    'antity</option><option value="published">Printed</option><option value="reproduced">Reprod'
+    'uced</option><option value="band">Band</option><option value="status">Verdict</option></se'
+    'lect></label><button type="button" data-sort-dir title="reverse the order">ascending</butt'
+    'on></span><span class="ledger-count" aria-live="polite"></span><span class="ledger-downloa'
+    'ds">Download the rows shown: <button type="button" data-download="csv">CSV</button> <butto'
+    'n type="button" data-download="json">JSON</button></span></div><script type="application/j'
+    'son" class="ledger-data">[{"band": [0.5, 2.0], "errata": [], "id": "SP-g2", "inputs": [], '
+    '"kind": "reproduction", "locator": "Table 2.6, column 2", "note": "The scenario flies a st'
+    "raight track at constant speed constant speed constant speed constant speed constant speed"
+    " over a flat earth with four ground stations in view. Two. The band leaves out, as outside"
+    ' the model\'s domain, 2 runs where no fix.", "paper": "SP", "printed": null, "published": 1'
+    '.0, "quantity": "q", "readings": [], "relation": "=", "reproduced": 1.0, "status": "reprod'
+    'uced", "tolerance": {"abs": 0.5, "loose_abs": null, "policy": "printed-digits", "reason": '
+    '"t", "rel": null}, "unit": "m"}, {"band": null, "errata": [], "id": "SP-g3", "inputs": [],'
+    ' "kind": "reproduction", "locator": "Table 2.6, column 2", "note": "The scenario flies a s'
+    "traight track at constant speed constant speed constant speed constant speed constant spee"
+    'd over a flat earth with four ground stations in view. Three.", "paper": "SP", "printed": '
+    'null, "published": 1.0, "quantity": "q", "readings": [], "relation": "=", "reproduced": 1.'
+    '0, "status": "reproduced", "tolerance": {"abs": 0.5, "loose_abs": null, "policy": "printed'
+    '-digits", "reason": "t", "rel": null}, "unit": "m"}, {"band": null, "errata": [], "id": "S'
+    'P-g4", "inputs": [], "kind": "cross-check", "locator": "Fig. 3", "note": "Alone. With the '
+    'y read as r1: 1 m, which agrees with the printed value.", "paper": "SP", "printed": null, '
+    '"published": 1.0, "quantity": "q", "readings": [{"agrees": false, "band": null, "band_too_'
+    'wide": false, "nominal": true, "reading": {"SP.x.y": "r0"}, "value": 1.0}, {"agrees": true'
+    ', "band": null, "band_too_wide": false, "nominal": false, "reading": {"SP.x.y": "r1"}, "va'
+    'lue": 1.0}], "relation": "=", "reproduced": 1.0, "status": "discrepant", "tolerance": {"ab'
+    's": 0.5, "loose_abs": null, "policy": "printed-digits", "reason": "t", "rel": null}, "unit'
+    '": "m"}]</script><div class="ledger-table-wrap"><table class="ledger-table ledger-interact'
+    'ive"><thead><tr><th data-key="id" scope="col"><button type="button" title="sort">Claim</bu'
+    'tton></th><th data-key="paper" scope="col"><button type="button" title="sort">Paper</butto'
+    'n></th><th data-key="kind" scope="col"><button type="button" title="sort">Kind</button></t'
+    'h><th data-key="locator" scope="col"><button type="button" title="sort">Locator</button></'
+    'th><th data-key="quantity" scope="col"><button type="button" title="sort">Quantity</button'
+    '></th><th data-key="published" scope="col"><button type="button" title="sort">Printed</but'
+    'ton></th><th data-key="reproduced" scope="col"><button type="button" title="sort">Reproduc'
+    'ed</button></th><th data-key="band" scope="col"><button type="button" title="sort">Band</b'
+    'utton></th><th data-key="status" scope="col"><button type="button" title="sort">Verdict</b'
+    'utton></th></tr></thead><tbody><tr id="sp-g2" data-index="0" class="ledger-status-reproduc'
+    'ed"><td class="ledger-col-id" data-label="Claim"><code>SP-g2</code></td><td class="ledger-'
+    'col-paper" data-label="Paper">SP</td><td class="ledger-col-kind" data-label="Kind">reprodu'
+    'ction</td><td class="ledger-col-locator" data-label="Locator">Table 2.6, column 2</td><td '
+    'class="ledger-col-quantity" data-label="Quantity">q<details><summary>note</summary>The sce'
+    "nario flies a straight track at constant speed constant speed constant speed constant spee"
+    "d constant speed over a flat earth with four ground stations in view. Two. The band leaves"
+    " out, as outside the model&#x27;s domain, 2 runs where no fix.<br><i>Tolerance:</i> ±0.5, "
+    't</details></td><td class="ledger-col-published" data-label="Printed">1&nbsp;m</td><td cla'
+    'ss="ledger-col-reproduced" data-label="Reproduced">1&nbsp;m</td><td class="ledger-col-band'
+    '" data-label="Band">0.5 –&nbsp;2&nbsp;m<br><span class="ledger-reading">2 runs left out</s'
+    'pan></td><td class="ledger-col-status" data-label="Verdict">reproduced</td></tr><tr id="sp'
+    '-g3" data-index="1" class="ledger-status-reproduced"><td class="ledger-col-id" data-label='
+    '"Claim"><code>SP-g3</code></td><td class="ledger-col-paper" data-label="Paper">SP</td><td '
+    'class="ledger-col-kind" data-label="Kind">reproduction</td><td class="ledger-col-locator" '
+    'data-label="Locator">Table 2.6, column 2</td><td class="ledger-col-quantity" data-label="Q'
+    'uantity">q<details><summary>note</summary>The scenario flies a straight track at constant '
+    "speed constant speed constant speed constant speed constant speed over a flat earth with f"
+    'our ground stations in view. Three.<br><i>Tolerance:</i> ±0.5, t</details></td><td class="'
+    'ledger-col-published" data-label="Printed">1&nbsp;m</td><td class="ledger-col-reproduced" '
+    'data-label="Reproduced">1&nbsp;m</td><td class="ledger-col-band ledger-empty" data-label="'
+    'Band"></td><td class="ledger-col-status" data-label="Verdict">reproduced</td></tr><tr id="'
+    'sp-g4" data-index="2" class="ledger-status-discrepant"><td class="ledger-col-id" data-labe'
+    'l="Claim"><a href="../sp/ch3.html#sp-g4" title="where the book derives it"><code>SP-g4</co'
+    'de></a></td><td class="ledger-col-paper" data-label="Paper">SP</td><td class="ledger-col-k'
+    'ind" data-label="Kind">cross-check</td><td class="ledger-col-locator" data-label="Locator"'
+    '>Fig. 3</td><td class="ledger-col-quantity" data-label="Quantity">q<details><summary>note<'
+    "/summary>Alone. With the y read as r1: 1 m, which agrees with the printed value.<br><i>Tol"
+    'erance:</i> ±0.5, t</details></td><td class="ledger-col-published" data-label="Printed">1&'
+    'nbsp;m</td><td class="ledger-col-reproduced" data-label="Reproduced">1&nbsp;m</td><td clas'
+    's="ledger-col-band ledger-empty" data-label="Band"></td><td class="ledger-col-status" data'
+    '-label="Verdict">discrepant <b>(check fails)</b><br><a href="../errata.html#sp-e-x">SP-E-x'
+    '</a><br><span class="ledger-reading">agrees under: r1</span></td></tr></tbody></table></di'
+    "v><script>"
+)
+
+
+def test_interactive_ledger_html():
+    import dataclasses
+
+    from navcore.ledger.render import _LEDGER_JS, InteractiveLedger
+
+    a, b, c = _table_claims()
+    a = dataclasses.replace(a, band=(0.5, 2.0), left_out=({"case": "no fix", "runs": 2},))
+    assert (
+        InteractiveLedger([a, b, c], root="../")._repr_html_()
+        == INTERACTIVE_HTML + _LEDGER_JS + "</script></div>"
+    )
+    # without kinds or bands in the records: no kind filter, no kind or band column
+    plain = InteractiveLedger([b])
+    plain.records = [{**r, "kind": None, "band": None} for r in plain.records]
+    assert [k for k, _ in plain._columns()] == [
+        "id",
+        "paper",
+        "locator",
+        "quantity",
+        "published",
+        "reproduced",
+        "status",
+    ]
+    assert 'data-filter="kind"' not in plain._repr_html_()
+    # a closing tag in a record cannot end the JSON script element
+    d = dataclasses.replace(b, claim=dataclasses.replace(b.claim, note="a </script> note"))
+    html = InteractiveLedger([d])._repr_html_()
+    assert "a <\\/script> note" in html and "a </script> note" not in html.split("<script>")[0]
