@@ -698,3 +698,113 @@ def test_interactive_ledger_html():
     d = dataclasses.replace(b, claim=dataclasses.replace(b.claim, note="a </script> note"))
     html = InteractiveLedger([d])._repr_html_()
     assert "a <\\/script> note" in html and "a </script> note" not in html.split("<script>")[0]
+
+
+def test_quote_math_cases():
+    from navcore.ledger.render import quote_math
+
+    # the docstring's cases, then each mechanism alone
+    assert quote_math(r"\gamma_n &= \frac{a}{b} \tag{4.5.31}") == r"\gamma_n = \frac{a}{b}"
+    assert quote_math(r"\exp \left[(K t + 1) \ln") == r"\exp \left[(K t + 1) \ln\right."
+    assert (
+        quote_math(r"\sqrt{2 \frac{\partial^2}{\partial r^2}")
+        == r"\sqrt{2 \frac{\partial^2}{\partial r^2}\ldots}"
+    )
+    assert quote_math(r"a & b \\ c & d") == r"\begin{matrix}a & b \\ c & d\end{matrix}"
+    assert quote_math("1.61×10^{-4}") == r"1.61\times 10^{-4}"
+    assert quote_math(r"x = 1 \quad (3)") == "x = 1"
+    assert quote_math(r"x = 1 \qquad 3.2") == "x = 1"
+    assert quote_math(r"x = 1 \quad (\text{A.1})") == "x = 1"
+    # a closing brace or \right without its partner is opened at the start
+    assert quote_math(r"a} + b") == r"{a} + b"
+    assert quote_math(r"a \right) + b") == r"\left.a \right) + b"
+    assert quote_math(r"\left( a \right) \left[ b") == r"\left( a \right) \left[ b\right."
+    # alignment inside an environment is kept; rows inside one are not a matrix
+    env = r"\begin{cases} a & b \\ c & d \end{cases}"
+    assert quote_math(env) == env
+    assert quote_math("a   b") == "a b"
+    assert quote_math(" σ ≤ 2 ") == r"\sigma  \leq  2"
+    assert quote_math(r"\{a, b") == r"\{a, b"
+
+
+def test_printed_cells():
+    from navcore.ledger.render import _printed_html, _printed_tex, _printed_text, claim_group
+
+    assert _printed_html("about 10 m") == "about&nbsp;10&nbsp;m"
+    assert (
+        _printed_html("$$x = 1 \\quad (3)$$")
+        == '<span class="math notranslate nohighlight">\\(x = 1\\)</span>'
+    )
+    wide = "$a + b + c + d + e + f + g + h$"
+    assert _printed_html(wide) == (
+        '<span class="ledger-math-wide"><span class="math notranslate nohighlight">'
+        "\\(a + b + c + d + e + f + g + h\\)</span></span>"
+    )
+    assert _printed_html("costs 50 \\$ per unit, or more") == (
+        'costs 50 <span class="tex2jax_ignore mathjax_ignore">$</span> per unit, or more'
+    )
+    assert _printed_html("\\mathbf{P} = \\sigma^2 I <x>") == (
+        '<code class="ledger-latex">\\mathbf{P} = \\sigma^2 I &lt;x&gt;</code>'
+    )
+    folded = _printed_html("a long sentence the paper printed, word for word", fold=20)
+    assert folded == (
+        '<details class="ledger-quote"><summary>quote</summary>'
+        "a long sentence the paper printed, word for word</details>"
+    )
+    assert _printed_html("a long sentence the paper printed", fold=40) == "a long sentence the paper printed"
+    assert _printed_html("16 chars, ok now") == "16&nbsp;chars,&nbsp;ok&nbsp;now"
+    assert _printed_html("17 chars, ok now!") == "17 chars, ok now!"
+    assert _printed_tex("about $10^{-6}$ of it") == "about $10^{-6}$ of it"
+    assert _printed_tex("costs \\$5 & more") == r"costs \$5 \& more"
+    assert (
+        _printed_tex("\\mathbf{P}_N = I")
+        == r"{\scriptsize\ttfamily \textbackslash{}mathbf\{P\}\_\allowbreak{}N = I}"
+    )
+    assert _printed_tex("$$a + b + c + d + e + f + g + h \\tag{2}$$") == (
+        r"\navcorefitmath{a + b + c + d + e + f + g + h}"
+    )
+    # the Printed text: the claim's quote, else the number with its relation and unit
+    assert _printed_text(_ev("SP-p1", "Eq. (1)", "n")) == "1 m"
+    e = _ev("SP-p1", "Eq. (1)", "n")
+    import dataclasses
+
+    bound = dataclasses.replace(e, claim=dataclasses.replace(e.claim, relation=">=", unit=""))
+    assert _printed_text(bound) == "≥ 1"
+    quoted = dataclasses.replace(e, claim=dataclasses.replace(e.claim, printed="about 1 m"))
+    assert _printed_text(quoted) == "about 1 m"
+    stmt = dataclasses.replace(
+        e, claim=dataclasses.replace(e.claim, published=False, unit="statement", kind="statement")
+    )
+    assert _printed_text(stmt) == "stated not to hold"
+    assert claim_group("Sec. III, after Eq. (9)") == "Eq. (9)"
+    assert claim_group("Figs. 3 - 4, right") == "Figs. 3 - 4"
+    assert claim_group("Theorem 2, proof") == "Theorem 2"
+    assert claim_group("Remark (iv)") == "Remark (iv)"
+    assert claim_group("App. B, last line") == "App. B"
+    assert claim_group("Secs. IV.A and V") == "Secs. IV.A"
+    assert claim_group("  abstract ") == "abstract"
+
+
+def test_tex_breakable_and_widths():
+    from navcore.ledger.render import _min_pt, _tex_breakable, _text_pieces, _word_pt
+
+    assert _tex_breakable("interpreted") == "interpreted"
+    assert _tex_breakable("KZLsec36headingX") == r"KZLsec3\allowbreak{}6headin\allowbreak{}gX"
+    assert _tex_breakable("SP-a.b/c_d") == r"SP-\allowbreak{}a.\allowbreak{}b/\allowbreak{}c\_\allowbreak{}d"
+    assert _tex_breakable("abcdefghijklmnop") == r"abcdefg\allowbreak{}hijklmn\allowbreak{}op"  # 16 letters
+    assert _tex_breakable("abcdefghijklmn") == "abcdefghijklmn"  # 14 letters: whole
+    assert _tex_breakable("a1b2c3d4e5") == "a1b2c3d4e5"  # 10 characters: whole
+    assert _word_pt("ab") == 8.0 and _word_pt("AB") == 10.0 and _word_pt("a%&@") == 19.0
+    assert _word_pt("MW") == 10.0 and _word_pt("ab", bold=True) == pytest.approx(8.8)
+    assert _text_pieces("x $K_1$ y") == [(False, "x "), (True, "K_1"), (False, " y")]
+    assert _text_pieces("a-very-long-hyphenated-word") == [
+        (False, "a-\u200bvery-\u200blong-\u200bhyphenated-\u200bword")
+    ]
+    assert _text_pieces("abcdefghijklmnopq") == [(False, "abcdefg\u200bhijklmn\u200bopq")]
+    assert _min_pt("12.5", True) == 16.0
+    assert _min_pt("ab abcd", False) == 16.0
+    assert _min_pt("ab abcd", False, bold=True) == pytest.approx(17.6)
+    # a formula counts as at most 24 characters, at 0.8 of their width, commands as one letter
+    assert _min_pt("$\\alpha + b$", False) == pytest.approx(0.8 * 4.0 * 5)
+    assert _min_pt("$" + "a" * 40 + "$", False) == pytest.approx(0.8 * 4.0 * 24)
+    assert _min_pt("", False) == 0.0
