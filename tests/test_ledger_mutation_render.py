@@ -808,3 +808,26 @@ def test_tex_breakable_and_widths():
     assert _min_pt("$\\alpha + b$", False) == pytest.approx(0.8 * 4.0 * 5)
     assert _min_pt("$" + "a" * 40 + "$", False) == pytest.approx(0.8 * 4.0 * 24)
     assert _min_pt("", False) == 0.0
+
+
+def test_text_table(monkeypatch):
+    import navcore.ledger.summary as summary
+    from navcore.ledger.render import text_table
+
+    # the summary below the table reads the registry's errata: replaced by a marker here
+    monkeypatch.setattr(summary, "summary_text", lambda evals: f"<summary of {len(evals)}>")
+    e = _ev("SP-text-table-claim-with-a-rather-long-identifier", "Eq. (1)", "n")
+    lines = text_table([e], width=20).splitlines()
+    assert lines == [
+        "id                    locator  published  reproduced  unit  tolerance  status      check",
+        "--------------------  -------  ---------  ----------  ----  ---------  ----------  -----",
+        "SP-text-table-claim…  Eq. (1)  1          1           m     ±0.5       reproduced  ok   ",
+        "",
+        "<summary of 1>",
+    ]
+    # a cell exactly as long as the width is kept whole
+    assert (
+        text_table([e], width=49)
+        .splitlines()[2]
+        .startswith("SP-text-table-claim-with-a-rather-long-identifier  ")
+    )
