@@ -147,7 +147,6 @@ def test_input_set_declaration_rules():
     other = InputSet("SP", "mutation_inputs_decl")
     with pytest.raises(ValueError, match="registered twice with different declarations"):
         other.published("x", 2.0, locator="T1")
-    assert get_input("SP.mutation_inputs_decl.x").module == __name__
     with pytest.raises(ValueError, match="give one of readings= and alternative="):
         s.convention("c", 1.0, readings={"a": 1.0, "b": 2.0}, alternative=2.0, reason="r")
     with pytest.raises(AttributeError, match="inputs are declared with"):
