@@ -343,3 +343,10 @@ def test_reading_combinations_one_at_a_time_beyond_the_cap():
     # five conventions of two readings: 32 > 16, so 1 + 5 runs
     assert len(reading_combinations(inputs("c0", "c1", "c2", "c3", "c4"))) == 6
     assert reading_combinations([]) == [()]
+
+
+def test_steepest_corners_read_the_ends_of_a_gridded_row():
+    # a row of three points: the direction is from its first to its last point, not the middle
+    xs = inputs("x0", "x1")
+    sens = [("x0", ((0.0, 1.0), (0.5, 9.0), (1.0, 2.0))), ("x1", _row(5.0, 3.0))]
+    assert _steepest_corners(xs, sens) == [[1.0, 0.0], [0.0, 1.0]]

@@ -501,3 +501,25 @@ def test_agreeing_reading_text():
     assert _agreeing_reading_text(ev(readings=r, status="not-reproducible")) == ""
     r = (reading(USED, 2.0, nominal=True), reading(OTHER, 9.0))
     assert _agreeing_reading_text(ev(readings=r)) == ""
+
+
+def test_plain_drops_a_bare_decimal_point_and_json_writes_floats():
+    # 0.001 and 0.005 in six significant digits are "1.00000e-03", "5.00000e-03": zeros and the point go
+    assert _plain(0.001) == "$10^{-3}$"
+    assert _plain(0.005) == "$5 \\times 10^{-3}$"
+    # a published integer is written as a float
+    js = Evaluation(claim(published=92), 92, True, "d", tolerance=HALF).as_json(errata=[])
+    assert type(js["published"]) is float and js["published"] == 92.0
+
+
+def test_label_and_unit_of_any_name():
+    from navcore.ledger.inputs import _label_and_unit
+
+    s = InputSet("ATC10", "mutation_note_units")
+    s.published("dash", 1.0, locator="T1", unit="-")
+    s.published("truth", True, locator="T1", unit="statement")
+    s.published("metres", 1.0, locator="T1", unit="m")
+    assert _label_and_unit("ATC10.mutation_note_units.dash") == ("dash", "")
+    assert _label_and_unit("ATC10.mutation_note_units.truth") == ("truth", "")
+    assert _label_and_unit("ATC10.mutation_note_units.metres") == ("metres", "m")
+    assert _label_and_unit("nodot") == ("nodot", "")

@@ -295,3 +295,10 @@ def test_quote_policies():
     assert quote_policies("inf", published=math.inf) == ("printed-digits", "monte-carlo")
     # "about" inside a word is not the prose word
     assert quote_policies("roundabout 17.5", published=17.5) == ("printed-digits", "monte-carlo")
+
+
+def test_label_prints_value_powers_of_a_thousand_up_to_four():
+    # oracle: the SI prefixes from pico to tera, 1000 ** -4 to 1000 ** 4, and no further
+    assert label_prints_value("1 P", 1e12)
+    assert not label_prints_value("1 P", 1e15)
+    assert not label_prints_value("1", 1e-15)

@@ -357,3 +357,13 @@ def test_numpy_booleans_are_truth_values():
     # oracle: the docstrings ("a Python or numpy boolean"; the envelope is None for a truth value)
     assert _is_truth(np.True_) and render._is_truth(np.False_)
     assert additive_envelope(np.True_, [("a", ((0, np.False_), (1, np.True_)))]) is None
+
+
+def test_band_too_wide_takes_a_truth_valued_end_as_a_statements_band():
+    # oracle: a band with a truth value at either end is compared as truth values (both the same:
+    # decides), never as the numbers 1 and 5 (a factor 5 apart, which would be too wide)
+    n = make(published=5.0)
+    assert band_too_wide(n, ZERO, True, 5.0) is False
+    assert band_too_wide(n, ZERO, 5.0, True) is False
+    # the same ends as numbers: too wide
+    assert band_too_wide(n, ZERO, 1.0, 5.0) is True
