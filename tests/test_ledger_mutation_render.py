@@ -831,3 +831,70 @@ def test_text_table(monkeypatch):
         .splitlines()[2]
         .startswith("SP-text-table-claim-with-a-rather-long-identifier  ")
     )
+
+
+def test_group_and_opening_edges():
+    from navcore.ledger.render import _common_opening, _details_html, _details_tex, group_claims
+
+    # two identical notes of several sentences are shared whole, not cut at a sentence
+    same = group_claims([_ev("SP-i1", "Eq. (5)", LONG + " Tail."), _ev("SP-i2", "Eq. (5)", LONG + " Tail.")])[
+        0
+    ]
+    assert same.shared["note"] == LONG + " Tail." and same.own(0) == {}
+    # two different notes, one long: nothing is shared
+    two = group_claims([_ev("SP-d1", "Eq. (6)", LONG + " One."), _ev("SP-d2", "Eq. (6)", "Other.")])[0]
+    assert "note" not in two.shared and two.shared_by == 2
+    assert two.own(0)["note"] == LONG + " One."
+    # an escaped dollar sign does not open math: the sentence after it ends where it ends
+    cost = LONG + " It costs \\$5 each."
+    assert _common_opening([cost + " Then a.", cost + " Then b."]) == cost
+    assert _common_opening(["$x$ " + LONG + " Then a.", "$x$ " + LONG + " Then b."]) == "$x$ " + LONG
+    # an abbreviation in brackets does not end a sentence
+    abbrev = LONG + " Some (e.g. this) text."
+    assert _common_opening([abbrev + " Then a.", abbrev + " Then b."]) == abbrev
+    # an opening of exactly 120 characters is long enough
+    s120 = "A" * 119 + "."
+    assert _common_opening([s120 + " x", s120 + " y"]) == s120
+    assert _common_opening(["A" * 118 + ". x", "A" * 118 + ". y"]) == ""
+    # a formula longer than 24 characters scrolls in its own box in the details
+    assert _details_html({"note": "$" + "a" * 25 + "$"}).startswith('<p><span class="ledger-math-wide">')
+    assert "ledger-math-wide" not in _details_html({"note": "$" + "a" * 24 + "$"})
+    # the parts run on: a full stop is added unless the text ends a sentence or a clause
+    assert _details_tex({"note": "Why?", "tolerance": "t:"}) == r"Why? \textit{Tolerance:} t:"
+    assert _details_tex({"note": "A note. "}) == "A note. "
+    assert _details_tex({"note": " x"}) == " x."
+
+
+def test_cells_with_strings_and_bounds():
+    import dataclasses
+
+    from navcore.ledger.render import _inputs_text, _printed_text
+
+    e = _ev("SP-c1", "Eq. (1)", "n")
+    assert _printed_text(dataclasses.replace(e, claim=dataclasses.replace(e.claim, relation="<="))) == "≤ 1 m"
+    inputs = (
+        {"name": "SP.nowhere.labels", "provenance": "convention", "value": ["a", "b"]},
+        {"name": "SP.nowhere.flags", "provenance": "convention", "value": [True, 1]},
+        {"name": "SP.nowhere.s40", "provenance": "assumed", "value": "x" * 40},
+        {"name": "SP.nowhere.s41", "provenance": "assumed", "value": "y" * 41},
+    )
+    assert _inputs_text(dataclasses.replace(e, inputs=inputs)) == (
+        "labels = ['a', 'b'] (convention); flags = [True, 1] (convention); "
+        f"s40 = {'x' * 40} (assumed); s41 = {'y' * 39}… (assumed)"
+    )
+    s = _word_input()
+    words = ({"name": s, "provenance": "published", "locator": "T1", "value": "tracking"},)
+    assert _inputs_text(dataclasses.replace(e, inputs=words)) == "mode = tracking (published, T1)"
+
+
+def _word_input() -> str:
+    """A registered input with a unit whose value is a word (the unit is not appended to words)."""
+    from navcore.ledger import InputSet
+    from navcore.ledger.inputs import get_input
+
+    name = "SP.mutation_render_cells.mode"
+    try:
+        get_input(name)
+    except ValueError:
+        InputSet("SP", "mutation_render_cells").published("mode", "tracking", locator="T1", unit="m")
+    return name

@@ -338,3 +338,56 @@ def test_sensitivity_frame():
 def test_frames_of_claims_without_inputs_are_empty(evals):
     assert len(sensitivity_frame(evals)) == 0
     assert len(assumed_inputs_frame(evals)) == 0
+
+
+def test_summary_edges():
+    from navcore.ledger.inputs import Input
+
+    # a paper with a reproduction and a fit, no cross-check or statement in between: both rows
+    fit = evaluate(_claim("WF-test-sum-f", paper="WF", kind="fit", compute=lambda: 12.0))
+    rep = evaluate(_claim("WF-test-sum-r", paper="WF", compute=lambda: 12.0, expected_status="reproduced"))
+    assert [(r["paper"], r["kind"]) for r in count_table([rep, fit])] == [
+        ("WF", "reproduction"),
+        ("WF", "fit"),
+        ("all", "all"),
+    ]
+    # a finding with two claims as its evidence: both listed, comma-separated
+    e = Erratum(id="WF-E-sum4", paper="WF", locator="Eq. (4)", printed="a", finding="b", evidence="c",
+                kind="units", basis="computed", claims=("WF-test-sum-f", "WF-test-sum-r"))  # fmt: skip
+    assert findings_text([rep, fit], [e]).splitlines()[-1] == (
+        "  WF-E-sum4 (units; Eq. (4)): WF-test-sum-r reproduced, WF-test-sum-f consistent"
+    )
+    # breakable words: runs of spaces kept, 15 characters broken, only - . _ , / broken after
+    assert _breakable("a  b") == "a  b"
+    assert _breakable("abcdefghij-klmn") == "abcdefghij-\u200bklmn"
+    assert _breakable("SP-TEST-XXXXXXXXX") == "SP-\u200bTEST-\u200bXXXXXXXXX"
+    # an input's name without a dot is its own label
+    bare = Input(name="nodot_name", paper="SP", value=1.0, provenance="published", locator="T1")
+    assert _label(bare) == "nodot name"
+    # empty frames keep their columns
+    assert len(fitted_inputs_frame([]).columns) == 7
+    assert len(convention_inputs_frame([]).columns) == 8
+    assert len(sensitivity_frame([]).columns) == 6
+
+
+def test_convention_frame_with_three_readings_and_two_claims_agreeing_elsewhere():
+    s = InputSet("SP", "mutation_summary_three")
+    s.convention("k", 1.0, readings={"one": 1.0, "two": 2.0, "three": 3.0}, reason="three readings")
+    # 4 k: 4 under the reading used, 8 and 12 under the others; printed 8 agrees only under "two"
+    evs = [
+        evaluate(_claim("SP-test-sum-k1", published=8.0, compute=lambda: 4.0 * s.k)),
+        evaluate(_claim("SP-test-sum-k2", published=12.0, compute=lambda: 4.0 * s.k)),
+    ]
+    frame = convention_inputs_frame(evs)
+    assert frame.values.tolist()[0][3] == "two (2); three (3)"
+    # the first id, with its comma, is longer than 14 characters: it may break after - and ,
+    assert frame.values.tolist()[0][7] == "SP-\u200btest-\u200bsum-\u200bk1,\u200b SP-test-sum-k2"
+
+
+def test_sensitivity_frame_reads_the_ends_of_a_grid_and_skips_claims_without_a_band():
+    s = InputSet("SP", "mutation_summary_grid")
+    s.assumed("g", 1.0, low=0.0, high=2.0, grid=3, reason="a gridded range", quantity="g")
+    no_band = evaluate(_claim("SP-test-sum-g0", compute=lambda: 11.0 + s.g), bands=False)
+    banded = evaluate(_claim("SP-test-sum-g1", compute=lambda: 11.0 + s.g))
+    frame = sensitivity_frame([no_band, banded])
+    assert frame.values.tolist() == [["g: SP-test-sum-g1", "11", "12", "13", "12 dB", "consistent"]]
