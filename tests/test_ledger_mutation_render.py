@@ -898,3 +898,133 @@ def _word_input() -> str:
     except ValueError:
         InputSet("SP", "mutation_render_cells").published("mode", "tracking", locator="T1", unit="m")
     return name
+
+
+#: The findings table, the counts table and the errata list above as whole strings (reviewed
+#: against the classes' docstrings; the fragments tested above are their parts).
+FINDINGS_HTML = (
+    '<div class="ledger-counts-wrap"><table class="ledger-counts ledger-findings"><thead><tr><t'
+    "h>Paper</th><th>Basis</th><th>typo&shy;graphy</th><th>units</th><th>con&shy;vention</th><t"
+    "h>deri&shy;vation</th><th>unstated<br>as&shy;sumption</th><th>incon&shy;sistent<br>numbers"
+    "</th><th>over&shy;statement</th><th>Findings</th></tr></thead><tbody><tr><td>WF</td><td>te"
+    "xt-only</td><td>1</td><td>0</td><td>0</td><td>0</td><td>0</td><td>0</td><td>0</td><td>1</t"
+    "d></tr><tr><td>SP</td><td>computed</td><td>0</td><td>1</td><td>0</td><td>0</td><td>0</td><"
+    "td>0</td><td>0</td><td>1</td></tr><tr><td>all</td><td>computed</td><td>0</td><td>1</td><td"
+    ">0</td><td>0</td><td>0</td><td>0</td><td>0</td><td>1</td></tr><tr><td>all</td><td>text-onl"
+    "y</td><td>1</td><td>0</td><td>0</td><td>0</td><td>0</td><td>0</td><td>0</td><td>1</td></tr"
+    "><tr><td>all</td><td>all</td><td>1</td><td>1</td><td>0</td><td>0</td><td>0</td><td>0</td><"
+    'td>0</td><td>2</td></tr></tbody></table></div><p class="ledger-caveat">The book works from'
+    " transcriptions of the papers, so a text-only finding (the text of a formula or a word, on"
+    " which the printed numbers do not depend) cannot tell a misprint in the paper from a slip "
+    'in its transcription.</p><div class="ledger-table-wrap"><table class="ledger-findings-list'
+    '"><thead><tr><th scope="col">Finding</th><th scope="col">Basis</th><th scope="col">Kind</t'
+    'h><th scope="col">Its evidence: claims and verdicts</th></tr></thead><tbody><tr><td><a hre'
+    'f="../errata.html#sp-e-rend1"><code>SP-E-rend1</code></a><br><span class="ledger-locator">'
+    'SP, Eq. (1)</span></td><td>computed</td><td>units</td><td><a href="../ledger.html#sp-test-'
+    'sum-a"><code>SP-test-sum-a</code></a> <span class="ledger-badge ledger-status-consistent">'
+    'consistent</span></td></tr><tr><td><a href="../errata.html#wf-e-rend2"><code>WF-E-rend2</c'
+    'ode></a><br><span class="ledger-locator">WF, Table 2</span></td><td>text-only</td><td>typo'
+    "graphy</td><td>no claim checks it</td></tr></tbody></table></div>"
+)
+FINDINGS_MD = (
+    "```{raw} latex\n\\begingroup\\scriptsize\\setlength{\\tabcolsep}{4pt}\\hyphenpenalty=10000\\exhyp"
+    "henpenalty=10000\n\\begin{longtable}{>{\\raggedright\\arraybackslash}p{\\dimexpr 0.0668\\linewid"
+    "th-2\\tabcolsep\\relax}>{\\raggedright\\arraybackslash}p{\\dimexpr 0.0786\\linewidth-2\\tabcolsep"
+    "\\relax}>{\\raggedleft\\arraybackslash}p{\\dimexpr 0.1089\\linewidth-2\\tabcolsep\\relax}>{\\ragge"
+    "dleft\\arraybackslash}p{\\dimexpr 0.0668\\linewidth-2\\tabcolsep\\relax}>{\\raggedleft\\arrayback"
+    "slash}p{\\dimexpr 0.1089\\linewidth-2\\tabcolsep\\relax}>{\\raggedleft\\arraybackslash}p{\\dimexp"
+    "r 0.1089\\linewidth-2\\tabcolsep\\relax}>{\\raggedleft\\arraybackslash}p{\\dimexpr 0.1089\\linewi"
+    "dth-2\\tabcolsep\\relax}>{\\raggedleft\\arraybackslash}p{\\dimexpr 0.1258\\linewidth-2\\tabcolsep"
+    "\\relax}>{\\raggedleft\\arraybackslash}p{\\dimexpr 0.1342\\linewidth-2\\tabcolsep\\relax}>{\\ragge"
+    "dleft\\arraybackslash}p{\\dimexpr 0.0921\\linewidth-2\\tabcolsep\\relax}}\n\\hline \\textbf{Paper}"
+    " & \\textbf{Basis} & \\textbf{typography} & \\textbf{units} & \\textbf{convention} & \\textbf{d"
+    "erivation} & \\textbf{unstated assumption} & \\textbf{inconsistent numbers} & \\textbf{overst"
+    "atement} & \\textbf{Findings} \\\\ \\hline \\endfirsthead\n\\hline \\textbf{Paper} & \\textbf{Basis"
+    "} & \\textbf{typography} & \\textbf{units} & \\textbf{convention} & \\textbf{derivation} & \\te"
+    "xtbf{unstated assumption} & \\textbf{inconsistent numbers} & \\textbf{overstatement} & \\text"
+    "bf{Findings} \\\\ \\hline \\endhead\n\\hline \\endfoot\nWF & text-only & \\mbox{1} & \\mbox{0} & \\mb"
+    "ox{0} & \\mbox{0} & \\mbox{0} & \\mbox{0} & \\mbox{0} & \\mbox{1} \\\\\nSP & computed & \\mbox{0} &"
+    " \\mbox{1} & \\mbox{0} & \\mbox{0} & \\mbox{0} & \\mbox{0} & \\mbox{0} & \\mbox{1} \\\\\nall & compu"
+    "ted & \\mbox{0} & \\mbox{1} & \\mbox{0} & \\mbox{0} & \\mbox{0} & \\mbox{0} & \\mbox{0} & \\mbox{1"
+    "} \\\\\nall & text-only & \\mbox{1} & \\mbox{0} & \\mbox{0} & \\mbox{0} & \\mbox{0} & \\mbox{0} & \\"
+    "mbox{0} & \\mbox{1} \\\\\nall & all & \\mbox{1} & \\mbox{1} & \\mbox{0} & \\mbox{0} & \\mbox{0} & \\"
+    "mbox{0} & \\mbox{0} & \\mbox{2} \\\\\n\\end{longtable}\n\\endgroup\n```\n\nThe book works from transc"
+    "riptions of the papers, so a text-only finding (the text of a formula or a word, on which "
+    "the printed numbers do not depend) cannot tell a misprint in the paper from a slip in its "
+    "transcription.\n\n```{raw} latex\n\\begingroup\\footnotesize\\setlength{\\tabcolsep}{4pt}\\hyphenp"
+    "enalty=10000\\exhyphenpenalty=10000\n\\begin{longtable}{>{\\raggedright\\arraybackslash}p{\\dime"
+    "xpr 0.2270\\linewidth-2\\tabcolsep\\relax}>{\\raggedright\\arraybackslash}p{\\dimexpr 0.1784\\lin"
+    "ewidth-2\\tabcolsep\\relax}>{\\raggedright\\arraybackslash}p{\\dimexpr 0.1946\\linewidth-2\\tabco"
+    "lsep\\relax}>{\\raggedright\\arraybackslash}p{\\dimexpr 0.4001\\linewidth-2\\tabcolsep\\relax}}\n\\"
+    "hline \\textbf{Finding} & \\textbf{Basis} & \\textbf{Kind} & \\textbf{Its evidence: claims and"
+    " verdicts} \\\\ \\hline \\endfirsthead\n\\hline \\textbf{Finding} & \\textbf{Basis} & \\textbf{Kind"
+    "} & \\textbf{Its evidence: claims and verdicts} \\\\ \\hline \\endhead\n\\hline \\endfoot\nSP-\\allo"
+    "wbreak{}E-\\allowbreak{}rend1 & computed & units & SP-\\allowbreak{}test-\\allowbreak{}sum-\\a"
+    "llowbreak{}a (consistent) \\\\\nWF-\\allowbreak{}E-\\allowbreak{}rend2 & text-only & typography"
+    " & no claim checks it \\\\\n\\end{longtable}\n\\endgroup\n```"
+)
+COUNTS_HTML = (
+    '<div class="ledger-counts-wrap"><table class="ledger-counts"><thead><tr><th>Paper</th><th>'
+    "repro&shy;duced</th><th>consis&shy;tent</th><th>incon&shy;sistent</th><th>discrep&shy;ant<"
+    "/th><th>not-<wbr>repro&shy;ducible</th><th>total</th><th>failing<br>check</th></tr></thead"
+    "><tbody><tr><td>SP</td><td>3</td><td>1</td><td>0</td><td>2</td><td>0</td><td>6</td><td>2</"
+    "td></tr><tr><td>WF</td><td>1</td><td>0</td><td>1</td><td>0</td><td>1</td><td>3</td><td>0</"
+    "td></tr><tr><td>all</td><td>4</td><td>1</td><td>1</td><td>2</td><td>1</td><td>9</td><td>2<"
+    "/td></tr></tbody></table></div>"
+)
+ERRATA_HTML = (
+    '<p class="errata-group"><b>Computed findings</b> (1)</p><div class="erratum erratum-comput'
+    'ed" id="sp-e-rend1"><h4>SP-E-rend1 — SP, Eq. (1)</h4><p class="erratum-basis"><b>Basis:</b'
+    '> computed · <b>Kind:</b> units</p><p><b>Printed:</b> <span class="math notranslate nohigh'
+    'light">\\(a + b\\)</span></p><p><b>The book finds:</b> <span class="math notranslate nohighl'
+    'ight">\\(a - b\\)</span></p><p><b>Evidence:</b> the &lt;derivation&gt;</p><p><b>Claims (its '
+    'evidence in the ledger):</b> <a href="../ledger.html#sp-test-sum-a"><code>SP-test-sum-a</c'
+    'ode></a> <span class="ledger-badge ledger-status-consistent">consistent</span>, <a href=".'
+    './ledger.html#sp-test-sum-zz"><code>SP-test-sum-zz</code></a>. Discussed in <a href="../sp'
+    '/ch2.html#sp-e-rend1">Chapter &lt;2&gt;</a>.</p></div><p class="errata-group"><b>Text-only'
+    ' findings</b> (1)</p><p class="ledger-caveat">The book works from transcriptions of the pa'
+    "pers, so a text-only finding (the text of a formula or a word, on which the printed number"
+    "s do not depend) cannot tell a misprint in the paper from a slip in its transcription.</p>"
+    '<div class="erratum erratum-text-only" id="wf-e-rend2"><h4>WF-E-rend2 — WF, Table 2</h4><p'
+    ' class="erratum-basis"><b>Basis:</b> text-only · <b>Kind:</b> typography</p><p><b>Printed:'
+    "</b> x_1</p><p><b>The book finds:</b> y &amp; z</p><p><b>Evidence:</b> c</p><p><b>Claims ("
+    "its evidence in the ledger):</b> none.</p></div>"
+)
+
+
+def test_tables_as_whole_strings(fake_counts):
+    from navcore.ledger.render import CountsTable, ErrataList, FindingsTable
+
+    ft = FindingsTable([E1, E2], EVALS, root="../", list_findings=True)
+    assert ft._repr_html_() == FINDINGS_HTML
+    assert ft._repr_markdown_() == FINDINGS_MD
+    assert CountsTable()._repr_html_() == COUNTS_HTML
+    errata = ErrataList([E2, E1], root="../", titles={"sp/ch2": "Chapter <2>"}, evals=EVALS)
+    assert errata._repr_html_() == ERRATA_HTML
+    # an erratum of an unknown basis sorts last
+    odd = Erratum(id="SP-E-odd", paper="SP", locator="x", printed="a", finding="b", evidence="c",
+                  kind="units", basis="computed")  # fmt: skip
+    object.__setattr__(odd, "basis", "other")
+    assert [e.id for e in ErrataList([odd, E2, E1]).items] == ["SP-E-rend1", "WF-E-rend2", "SP-E-odd"]
+
+
+def test_ledger_table_locator_details_and_wide_quantities():
+    import dataclasses
+
+    from navcore.ledger.render import LedgerTable
+
+    a = _ev("SP-l1", "Table 2.6, column 2", "n one")
+    b = _ev("SP-l2", "Table 2.6, column 3", "n two")
+    wide = "$" + "q" * 25 + "$ and more"
+    b = dataclasses.replace(b, claim=dataclasses.replace(b.claim, quantity=wide))
+    t = LedgerTable([a, b], show_notes=False)
+    html = t._repr_html_()
+    assert '<span class="ledger-group-label">Table 2.6</span>' in html
+    assert '<td class="ledger-what">q <span class="ledger-locator">(column 2)</span></td>' in html
+    assert '<td class="ledger-what"><span class="ledger-math-wide">' in html
+    assert "(column 3)</span></td>" in html
+    tex = t.latex()
+    assert "\nq (column 2) & 1 m & 1 m & " in tex
+    # a claim whose own details are empty adds no ". " after its id
+    same = [_ev("SP-s1", "Eq. (2)", "Same."), _ev("SP-s2", "Eq. (2)", "Same.")]
+    assert r"\texttt{SP-\allowbreak{}s1}} & " in LedgerTable(same).latex()
