@@ -1028,3 +1028,16 @@ def test_ledger_table_locator_details_and_wide_quantities():
     # a claim whose own details are empty adds no ". " after its id
     same = [_ev("SP-s1", "Eq. (2)", "Same."), _ev("SP-s2", "Eq. (2)", "Same.")]
     assert r"\texttt{SP-\allowbreak{}s1}} & " in LedgerTable(same).latex()
+
+
+def test_exports_default_to_this_checkouts_provenance():
+    import json
+
+    from navcore.ledger.render import csv_export, json_export
+    from navcore.provenance import build_provenance
+
+    e = _ev("SP-j2", "Eq. (1)", "n")
+    assert json.loads(json_export([e]))["provenance"] == build_provenance().as_dict()
+    assert csv_export([e]).splitlines()[0].endswith(",".join(build_provenance().flat()))
+    # the header is the first row's keys: two rows give one header
+    assert csv_export([e, e]).count("id,locator") == 1
