@@ -406,3 +406,65 @@ def test_jsonable():
     assert jsonable(np.array([[1, 2]])) == [[1, 2]]
     assert jsonable(np.float32(0.5)) == 0.5
     assert jsonable(object).startswith("<class")
+
+
+def test_every_evaluation_keeps_its_claim_value_and_tolerance():
+    def boom():
+        raise KeyError("x")
+
+    c = make(compute=boom)
+    ev = evaluate(c)
+    assert ev.claim is c and ev.tolerance is HALF
+    bad_tol = make(tolerance=lambda: 1 / 0)
+    assert evaluate(bad_tol).claim is bad_tol
+
+    def band_fails():
+        if IN.loss != 2.0:
+            raise ZeroDivisionError("band")
+        return 12.0
+
+    c = make(compute=band_fails)
+    ev = evaluate(c)
+    assert ev.claim is c and ev.tolerance is HALF
+
+    def raises():
+        raise ValueError("oracle")
+
+    c = _discrepant(raises)
+    ev = evaluate(c)
+    assert (ev.claim, ev.reproduced, ev.status, ev.tolerance) == (c, 14.0, "discrepant", HALF)
+    c = _discrepant(lambda: 14.05)
+    ev = evaluate(c)
+    assert (ev.claim, ev.reproduced) == (c, 14.0)
+
+
+def test_oracle_tolerance_edge_is_inclusive():
+    # |14 - 14.5| = 0.5 = the oracle tolerance: agrees
+    c = make(
+        published=20.0,
+        compute=lambda: IN.base,
+        expected_status="discrepant",
+        erratum="SP-E-test",
+        oracle=lambda: 14.5,
+        oracle_tolerance=Tolerance(reason="r", abs=0.5, policy="exact"),
+    )
+    assert evaluate(c).passes
+
+
+def test_trailing_zeros_with_an_admissible_input_stay_discrepant():
+    value, tol = printed("2750")
+    # 2700 + wall over [1, 3]: at most 2703, outside 2750 +- 5 too; every assumed input admissible
+    c = make(published=value, tolerance=tol, compute=lambda: 2700.0 + IN.wall, expected_status="inconsistent")
+    ev = evaluate(c)
+    assert ev.status == "discrepant" and len(ev.readings) == 2  # strict and loose, no convention
+
+
+def test_runs_left_out_under_another_reading_are_counted():
+    def compute():
+        if IN.scale == 10.0 and IN.loss == 1.0:
+            raise ModelDomainError("no fix", case="no fix under the other scale")
+        return IN.scale * (14.0 - IN.loss)
+
+    # 120 agrees only under the other reading, whose band is run: one of its runs is left out
+    ev = evaluate(make(published=120.0, compute=compute, unit="m"))
+    assert ev.left_out == ({"case": "no fix under the other scale", "runs": 1},)
