@@ -77,8 +77,8 @@ class Package:
         extensions are loaded by the tests from their files under their dotted names
         (``tools.check_book``), the names mutmut's trampolines recognise.
     copy : tuple of str
-        Further folders the tests read (the book's pages), copied as they are; ``tools`` always is,
-        unmutated unless it is among ``sources``.
+        Further folders or files the tests read (the book's pages, ``_config.yml``), copied as
+        they are; ``tools`` always is, unmutated unless it is among ``sources``.
     not_mutated : list of str or None
         Lines not mutated (regular expressions); ``None`` for :data:`NOT_MUTATED`.
     """
@@ -186,8 +186,17 @@ PACKAGES: dict[str, Package] = {
             "test_ledger_printed.py",
             "test_render_claims.py",
             "test_errata_kinds.py",
+            "test_ledger_mutation_verdict.py",
+            "test_ledger_mutation_tolerance.py",
+            "test_ledger_mutation_bands.py",
+            "test_ledger_mutation_inputs.py",
+            "test_ledger_mutation_evaluate.py",
+            "test_ledger_mutation_summary.py",
+            "test_ledger_mutation_render.py",
+            "test_ledger_mutation_note.py",
         ],
         deselect="each_published_input_moves or every_tolerance_has_a_policy or no_old_id_left",
+        copy=("_config.yml",),  # a rendering test reads the book's LaTeX settings
     ),
     "units": Package(
         ["navcore/units.py", "navcore/_validate.py"],
@@ -244,6 +253,9 @@ def scratch_project(package: str, keep: bool = False) -> Path:
         # stays a survivor after a new test unless the cache goes
         shutil.rmtree(work / "mutants")
     for folder in dict.fromkeys(("navcore", "tests", "tools", *spec.sources, *spec.copy)):
+        if (ROOT / folder).is_file():  # a file the tests read (the book's _config.yml)
+            shutil.copy2(ROOT / folder, work / folder)
+            continue
         if (work / folder).exists():
             shutil.rmtree(work / folder)
         shutil.copytree(ROOT / folder, work / folder, ignore=shutil.ignore_patterns("__pycache__", "_build"))
