@@ -343,12 +343,9 @@ def test_derive_status_statement():
     assert derive_status(s, EXACT, False, [False], {"assumed"}, True) == "discrepant"
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="numpy 2 names its boolean scalar type 'bool', not 'bool_': _is_truth (core and render) "
-    "tests type(value).__name__ == 'bool_', so a numpy boolean is taken for a number",
-)
 def test_numpy_booleans_are_truth_values():
+    """numpy 2 names its boolean scalar type 'bool', not 'bool_': a test of the type's name took
+    a numpy boolean for a number (found by mutation testing)."""
     import numpy as np
 
     from navcore.ledger import render

@@ -1249,7 +1249,17 @@ def band_too_wide(claim: Claim, tol: Tolerance, low: Any, high: Any) -> bool:
 
 
 def _is_truth(value: Any) -> bool:
-    return isinstance(value, bool) or type(value).__name__ == "bool_"
+    """A Python or numpy boolean (numpy 2 names its scalar type ``bool``, numpy 1 ``bool_``).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> _is_truth(True), _is_truth(np.False_), _is_truth(1), _is_truth(np.float64(1.0))
+    (True, True, False, False)
+    """
+    import numpy as np
+
+    return isinstance(value, bool | np.bool_)
 
 
 @dataclass(frozen=True)

@@ -29,6 +29,7 @@ from navcore.ledger.core import (
     claim_quote,
     left_out_of_band,
 )
+from navcore.ledger.core import _is_truth as _core_is_truth
 from navcore.ledger.inputs import _label_and_unit
 from navcore.ledger.registry import counts, errata, evaluations
 from navcore.provenance import BuildProvenance, build_provenance
@@ -709,8 +710,8 @@ def claim_group(locator: str) -> str:
 
 
 def _is_truth(value: Any) -> bool:
-    """A Python or numpy boolean."""
-    return isinstance(value, bool) or type(value).__name__ == "bool_"
+    """A Python or numpy boolean (:func:`navcore.ledger.core._is_truth`, its one home)."""
+    return _core_is_truth(value)
 
 
 def _statement_word(value: Any, *, printed: bool) -> str:
