@@ -670,12 +670,12 @@ _SHARED_RUNS = (("navcore.papers.sp_coverage", "navcore.papers.sp_flyby"),)
 #: reference machine (2 cores): only the order in which the parallel ledger hands out its tasks
 #: (longest first) uses them. ``python -m navcore ledger --times`` prints the current ones.
 _TASK_SECONDS = {
-    "navcore.papers.sp_coverage": 235.0,
-    "navcore.papers.sp_missions": 200.0,
-    "navcore.papers.kzl_simulation": 140.0,
+    "navcore.papers.sp_missions": 245.0,
+    "navcore.papers.sp_coverage": 215.0,
+    "navcore.papers.kzl_simulation": 125.0,
     "navcore.papers.atc10_coverage_jamming": 14.0,
-    "navcore.papers.atc10_multiple_access": 10.0,
-    "navcore.papers.sp_antijam": 7.0,
+    "navcore.papers.atc10_multiple_access": 11.0,
+    "navcore.papers.sp_antijam": 6.0,
     "navcore.papers.wf": 5.0,
     "navcore.papers.atc10_coverage_tracking": 2.6,
     "navcore.papers.sp_tracking": 1.9,
