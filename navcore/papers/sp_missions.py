@@ -389,8 +389,9 @@ ERRATA = [
         "filter is "
         "started with, and a receiver sets its clock from its first pseudoranges anyway. The unit is "
         "probably m (or ns, 1499 m); the book reads 5000 m. No printed result depends on the reading: "
-        "with the offset read as 5000 ns the missions' errors are the same to nine digits (the "
-        "first measurements remove it).",
+        "with the offset read as 5000 ns the tightly coupled error 1 s before reacquisition is the "
+        "same to more digits than any table prints (the first measurements remove it; the missions "
+        "page counts them).",
         evidence="The tightly coupled sequential outage run with the two readings of the offset "
         "(SP-tab2.4-clock-offset); the literal 5 s cannot start a covariance in double precision "
         "(its variance is $2 \\times 10^{18}$ m² against 1-m pseudoranges).",
@@ -832,7 +833,8 @@ CLAIMS = [
         expected_status="consistent",
         erratum="SP-E-tab2.4-clock-offset-unit",
         note="The printed '5000 ms' read as 5000 m (the book's reading) and as 5000 ns (1499 m): the "
-        "tightly coupled 1 nmi/h error 1 s before reacquisition is the same to nine digits. " + _MISSION_NOTE,
+        "tightly coupled 1 nmi/h error 1 s before reacquisition is the same to more digits than any "
+        "table prints (the missions page counts them). " + _MISSION_NOTE,
         discussed_in="sp/21-missions",
     ),
     Claim(
