@@ -686,7 +686,7 @@ _TASK_SECONDS = {
 
 def ledger_task(claim_id: str) -> str:
     """The parallel ledger's task of a claim: its paper module, or the first module of the
-    :data:`_SHARED_RUNS` group the module belongs to.
+    ``_SHARED_RUNS`` group the module belongs to.
 
     Parameters
     ----------
@@ -708,7 +708,7 @@ def ledger_task(claim_id: str) -> str:
 
 
 def ledger_tasks(claim_ids: list[str]) -> list[tuple[str, ...]]:
-    """Split claims into the parallel ledger's tasks (:func:`ledger_task`), longest first.
+    """Split claims into the parallel ledger's tasks (``ledger_task``), longest first.
 
     The claims of a paper module read the same model runs (one flyby, one Monte Carlo, one
     mission), so they run in one process, which computes each shared run once.
@@ -722,7 +722,7 @@ def ledger_tasks(claim_ids: list[str]) -> list[tuple[str, ...]]:
     -------
     list of tuple of str
         The claim ids of each task, in registry order within a task; tasks ordered by their
-        usual evaluation time (:data:`_TASK_SECONDS`), longest first.
+        usual evaluation time (measured seconds kept in the module), longest first.
 
     Examples
     --------
