@@ -569,3 +569,95 @@ def test_shared_transitions_give_the_uncached_run_and_a_changed_input_misses():
         assert not same(warm, cold)
     assert ca._digest(35 * MICRO_G) != ca._digest(np.nextafter(35 * MICRO_G, 1.0))
     assert ca._digest(object()) is None  # a value it cannot spell exactly is never cached
+
+
+def test_random_constants_skipped_only_where_they_are_constant(monkeypatch):
+    """Oracle: the plain recursion written out with the public, per-condition functions
+    (error_dynamics, process_noise_psd, taylor_transition, discrete_noise): both covariances
+    propagated in full (Phi P Phi^T + Q), the filter's gain from its own covariance, the truth
+    updated in Joseph form with that gain.
+
+    The engine propagates only the states that are not random constants (unit transition row,
+    no noise), with the structure read from the first linearisation points. Here the gravity
+    and altimeter Gauss-Markov states are random constants while the vehicle stands still (their
+    correlation time is distance over speed) and not once it moves; with two linearisation
+    points per batch, the later batches do not fit the first one's structure and must be
+    propagated in full. The filter leaves the gravity out (a suboptimal filter)."""
+    import navcore.estimation.covariance_analysis as ca
+    from navcore.estimation.covariance import Measurement
+    from navcore.inertial.error_dynamics import earth_rate_ned, transport_rate_ned
+    from navcore.inertial.trajectories import Segment, fly
+
+    monkeypatch.setattr(ca, "_LIN_CHUNK", 2)
+    paths = []  # True: only the dynamic rows propagated, False: in full
+    real = ca._propagate
+
+    def recorded(P, Phi, Q, dyn_T, d):
+        paths.append(dyn_T is not None)
+        return real(P, Phi, Q, dyn_T, d)
+
+    monkeypatch.setattr(ca, "_propagate", recorded)
+    truth = ins_error_layout("position", "velocity", "misalignment", "gyro bias", "gravity", "altimeter bias")
+    filt = ins_error_layout("position", "velocity", "misalignment", "gyro bias", "altimeter bias")
+    src = ErrorSources(
+        imu=ImuSpec(
+            "t", gyro_bias=0.05 * DEG_PER_H, gyro_random_walk=0.1 * DEG_PER_H, accel_random_walk=50 * MICRO_G
+        ),
+        gravity=GaussMarkov(35 * MICRO_G, 2.0e3),
+        altimeter=GaussMarkov(20.0, 5.0e3),
+    )
+    P0 = initial_covariance(truth, src, position_sigma=(30, 30, 10), velocity_sigma=(0.3,) * 3)
+    tr = fly([Segment(6.0), Segment(20.0, speed_rate=5.0)], dt=1.0, lat0=45 * DEG)
+    assert tr.speed[0] == 0.0 and tr.speed[-1] > 50.0
+    n = truth.size
+    p = truth.slice("position")
+
+    def fixes(k):
+        if k % 3:
+            return []
+        H = np.zeros((2, n))
+        H[0, p.start] = H[1, p.start + 1] = 1.0
+        return [Measurement(H, np.eye(2) * 25.0)]
+
+    sched = combine_schedules(fixes, baro_schedule(truth, noise_m=3.0, every=2))
+    got = run_covariance_analysis(tr, truth, filt, src, P0, sched, relinearize_every=1)
+    assert True in paths and False in paths  # the first batches skip the constants, later ones do not
+
+    idx = embedding(filt, truth)
+    unmodelled = np.setdiff1d(np.arange(n), idx)
+    Pt, Pf = P0.copy(), P0[np.ix_(idx, idx)].copy()
+    want_t, want_f = [], []
+    for k in range(len(tr)):
+        if k:
+            j = k - 1
+            w_in = earth_rate_ned(tr.lat[j]) + transport_rate_ned(tr.vel_ned[j], tr.lat[j], tr.h[j])
+            F = error_dynamics(
+                truth,
+                f_ned=tr.f_ned[j],
+                C_bn=tr.C_bn[j],
+                omega_ib_b=tr.omega_nb_b[j] + tr.C_bn[j].T @ w_in,
+                v_ned=tr.vel_ned[j],
+                lat=float(tr.lat[j]),
+                h=float(tr.h[j]),
+                sources=src,
+            )
+            S = process_noise_psd(truth, src, speed_mps=float(tr.speed[j]))
+            Phi, Q = taylor_transition(F, tr.dt), discrete_noise(F, S, tr.dt)
+            Pt = Phi @ Pt @ Phi.T + Q
+            Pf = Phi[np.ix_(idx, idx)] @ Pf @ Phi[np.ix_(idx, idx)].T + Q[np.ix_(idx, idx)]
+        meas = sched(k)
+        if meas:
+            H = np.vstack([m.H for m in meas])
+            R = scipy.linalg.block_diag(*[m.R for m in meas])
+            Hf, Hu = H[:, idx], H[:, unmodelled]
+            Rf = R + Hu @ P0[np.ix_(unmodelled, unmodelled)] @ Hu.T
+            K = Pf @ Hf.T @ np.linalg.inv(Hf @ Pf @ Hf.T + Rf)
+            Pf = (np.eye(idx.size) - K @ Hf) @ Pf @ (np.eye(idx.size) - K @ Hf).T + K @ Rf @ K.T
+            EK = np.zeros((n, H.shape[0]))
+            EK[idx] = K
+            A = np.eye(n) - EK @ H
+            Pt = A @ Pt @ A.T + EK @ R @ EK.T
+        want_t.append(np.diag(Pt))
+        want_f.append(np.diag(Pf))
+    np.testing.assert_allclose(got.true_var, want_t, rtol=1e-9, atol=1e-24)
+    np.testing.assert_allclose(got.filter_var, want_f, rtol=1e-9, atol=1e-24)

@@ -324,8 +324,6 @@ def run_covariance_analysis(
             )
     N = len(trajectory)
     dt = trajectory.dt
-    tv = np.empty((B, N, n_t))
-    fv = np.empty((B, N, n_f))
     counts = np.zeros(N, dtype=np.int64)
     snaps: list[dict[int, Array]] = [{} for _ in range(B)]
     want = {k % N for k in snapshots}
@@ -347,15 +345,11 @@ def run_covariance_analysis(
     plan, lin = _plan_steps(conds, tol, relinearize_every, free, stride, want)
     lin_arr = np.asarray(lin, dtype=np.intp)
     added = None if filter_added_psd is None else np.diag(np.asarray(filter_added_psd, dtype=float)) * dt
-    ix_f = np.ix_(idx, idx)
-    # the filter's rows of the truth: a slice when contiguous (the usual layouts), else indices
-    contiguous = idx.size > 0 and bool(np.array_equal(idx, np.arange(idx[0], idx[0] + idx.size)))
-    rows_f: Any = slice(int(idx[0]), int(idx[0]) + idx.size) if contiguous else idx
-    block_f: Any = (rows_f, rows_f) if contiguous else ix_f
 
     def transitions(lo: int) -> tuple[Array, Array, Array, Array]:
-        """Transitions and discrete noises (truth, filter) of linearisation points ``lo:lo+chunk``,
-        shared with every other run whose linearisation points read the same values."""
+        """Transitions and discrete noises (truth, filter) of linearisation points ``lo:lo+chunk``
+        in the layouts' own order, shared with every other run whose linearisation points read
+        the same values."""
         js = lin_arr[lo : lo + _LIN_CHUNK]
         args = {
             "f_ned": trajectory.f_ned[js],
@@ -386,28 +380,75 @@ def run_covariance_analysis(
             _remember_transitions(key, out)
         return out
 
+    # Work in a reordered state vector: the truth's unmodelled states whose transition or noise
+    # is not trivial (ED), then the filter's states, those whose transition or noise is not
+    # trivial in either model first (FD, then FS), then the remaining unmodelled states (ES).
+    # The states after the first d of each model are random constants (unit transition row, no
+    # noise), so a propagation transforms only the first d rows:
+    # (Phi P Phi^T)[:d, :d] = X Phi_D^T, [:d, d:] = X[:, d:] with X = Phi[:d] P, and [d:, d:]
+    # is P[d:, d:]: O(d n^2) instead of O(n^3). The filter's rows stay one contiguous block.
+    # A chunk of linearisation points whose structure differs propagates in full.
+    first = transitions(0)
+    dyn_t = ~_static_states(first[0], first[1])
+    dyn_f = ~_static_states(first[2], first[3]) | dyn_t[idx]
+    order_f = np.r_[np.flatnonzero(dyn_f), np.flatnonzero(~dyn_f)]
+    ext_dyn, ext_static = unmodelled[dyn_t[unmodelled]], unmodelled[~dyn_t[unmodelled]]
+    order_t = np.r_[ext_dyn, idx[order_f], ext_static].astype(np.intp)
+    back_t, back_f = np.argsort(order_t), np.argsort(order_f)
+    d_f = int(dyn_f.sum())
+    d_t = ext_dyn.size + d_f
+    f0 = ext_dyn.size
+    rows_f = slice(f0, f0 + n_f)
+    unmod_p = np.r_[np.arange(f0), np.arange(f0 + n_f, n_t)].astype(np.intp)
+    Pt = Pt[:, order_t][:, :, order_t]
+    Pf = Pf[:, order_f][:, :, order_f]
+    P0_uu = Pa[:, order_t][:, :, order_t][:, unmod_p][:, :, unmod_p]
+
+    def reordered(chunk: tuple[Array, Array, Array, Array]) -> tuple[Any, ...]:
+        """A chunk's transitions in the working order, each model's with its transposed
+        dynamic rows, or ``None`` where the chunk does not fit the structure."""
+        Phi, Q, Phi_f_, Qf = chunk
+        Phi = Phi[:, order_t][:, :, order_t]
+        Q = Q[:, :, order_t][:, :, :, order_t]
+        Phi_f_ = Phi_f_[:, order_f][:, :, order_f]
+        Qf = Qf[:, :, order_f][:, :, :, order_f]
+        if not (_static_states(Phi, Q)[d_t:].all() and _static_states(Phi_f_, Qf)[d_f:].all()):
+            return Phi, Q, Phi_f_, Qf, None, None
+        return (
+            Phi,
+            Q,
+            Phi_f_,
+            Qf,
+            np.ascontiguousarray(np.swapaxes(Phi[:, :d_t, :], -1, -2)),
+            np.ascontiguousarray(np.swapaxes(Phi_f_[:, :d_f, :], -1, -2)),
+        )
+
+    schedule_stacked = None if schedule is None else _stacked(schedule)
     L = stride
     lo, hi = 0, 0
-    PhiT_all: Any = None
-    QT_all: Any = None
-    PhiF_all: Any = None
-    QF_all: Any = None
+    chunk: Any = None
     Phi_t: Any = None  # the transitions of the current linearisation (set at k = 1)
     Q_t: Any = None
     Phi_f: Any = None
     Q_f: Any = None
+    DT_t: Any = None  # the transposed dynamic rows, or None (full propagation)
+    DT_f: Any = None
     stride_cache: Any = None
+    tv_p = np.empty((N, B, n_t))
+    fv_p = np.empty((N, B, n_f))
     for k, li, kind in plan:
         if li >= 0:
             if li >= hi:
                 lo, hi = li, li + _LIN_CHUNK
-                PhiT_all, QT_all, PhiF_all, QF_all = transitions(lo)
+                chunk = reordered(first if lo == 0 else transitions(lo))
             i = li - lo
-            Phi_t, Q_t, Phi_f, Q_f = PhiT_all[i], QT_all[i], PhiF_all[i], QF_all[i]
+            Phi_t, Q_t, Phi_f, Q_f = chunk[0][i], chunk[1][i], chunk[2][i], chunk[3][i]
+            DT_t = None if chunk[4] is None else chunk[4][i]
+            DT_f = None if chunk[5] is None else chunk[5][i]
             stride_cache = None
         if kind == 1:
-            Pt = Phi_t @ Pt @ Phi_t.T + Q_t
-            Pf = Phi_f @ Pf @ Phi_f.T + Q_f
+            Pt = _propagate(Pt, Phi_t, Q_t, DT_t, d_t)
+            Pf = _propagate(Pf, Phi_f, Q_f, DT_f, d_f)
         elif kind == 2:
             # L measurement-free steps under one linearisation: one composite step, and
             # the variances of the L - 1 samples it skips propagated exactly from its start
@@ -423,38 +464,30 @@ def run_covariance_analysis(
                     qt.append(np.diagonal(QL, axis1=-2, axis2=-1))
                     qf.append(np.diagonal(QLf, axis1=-2, axis2=-1))
                 powers = np.stack(pw[:-1])
+                PhiLf = PhiL[rows_f, rows_f]
                 stride_cache = (
                     _Propagator(PhiL, QL),
-                    _Propagator(PhiL[ix_f], QLf),
+                    _Propagator(PhiLf, QLf),
                     powers,
-                    powers[:, idx][:, :, idx],
+                    np.ascontiguousarray(powers[:, rows_f, rows_f]),
                     np.stack(qt[:-1]),
                     np.stack(qf[:-1]),
+                    None if DT_t is None else np.ascontiguousarray(PhiL[:d_t].T),
+                    None if DT_f is None else np.ascontiguousarray(PhiLf[:d_f].T),
                 )
-            comp_t, comp_f, pw_t, pw_f, qd_t, qd_f = stride_cache
-            tv[:, j + 1 : k] = comp_t.diagonals(Pt, pw_t, qd_t)
-            fv[:, j + 1 : k] = comp_f.diagonals(Pf, pw_f, qd_f)
-            Pt = comp_t(Pt)
-            Pf = comp_f(Pf)
-        if schedule is not None:
-            meas = schedule(k)
-            if meas:
-                if len(meas) == 1:
-                    Ht = np.atleast_2d(meas[0].H)
-                    Rt = np.atleast_2d(meas[0].R)
-                    m_tot = Ht.shape[0]
-                else:
-                    Ht = np.vstack([np.atleast_2d(m.H) for m in meas])
-                    blocks = [np.atleast_2d(m.R) for m in meas]
-                    m_tot = Ht.shape[0]
-                    Rt = np.zeros((m_tot, m_tot))
-                    r0 = 0
-                    for Rb in blocks:
-                        Rt[r0 : r0 + Rb.shape[0], r0 : r0 + Rb.shape[0]] = Rb
-                        r0 += Rb.shape[0]
-                Hf = Ht[:, idx]
-                if inflate_filter_noise and unmodelled.size:
-                    Hu = Ht[:, unmodelled]
+            comp_t, comp_f, pw_t, pw_f, qd_t, qd_f, LT_t, LT_f = stride_cache
+            tv_p[j + 1 : k] = comp_t.diagonals(Pt, pw_t, qd_t).transpose(1, 0, 2)
+            fv_p[j + 1 : k] = comp_f.diagonals(Pf, pw_f, qd_f).transpose(1, 0, 2)
+            Pt = _propagate(Pt, comp_t.Phi, comp_t.Q, LT_t, d_t)
+            Pf = _propagate(Pf, comp_f.Phi, comp_f.Q, LT_f, d_f)
+        if schedule_stacked is not None:
+            meas = schedule_stacked(k)
+            if meas is not None:
+                Ht = meas[0][:, order_t]
+                Rt = meas[1]
+                Hf = Ht[:, rows_f]
+                if inflate_filter_noise and unmod_p.size:
+                    Hu = Ht[:, unmod_p]
                     Rf = Rt + Hu @ P0_uu @ Hu.T
                 else:
                     Rf = Rt  # broadcast over the members in the sum below
@@ -466,22 +499,28 @@ def run_covariance_analysis(
                 # any gain for the truth: P+ = P - EK H P - P H' EK' + EK (H P H' + R) EK'
                 # (the Joseph form expanded, O(n^2 m) instead of O(n^3))
                 # (E K is K on the filter's rows of the truth and zero elsewhere: only those
-                # rows and columns change, in the same order of operations)
+                # rows and columns change)
+                # (one term M = -E K H P + E K S K^T E^T / 2 added to the rows and its
+                # transpose to the columns: the symmetrisation below averages the two halves
+                # of K S K^T; Pt is this step's own array, so it is changed in place)
                 HPt = Ht @ Pt  # (B, m, n_t)
-                KHP = K @ HPt  # (B, n_f, n_t)
-                St = HPt @ Ht.T + Rt
-                Pt = Pt.copy()
-                Pt[:, rows_f, :] -= KHP
-                Pt[:, :, rows_f] -= KHP.transpose(0, 2, 1)
-                Pt[(slice(None), *block_f)] += K @ St @ K.transpose(0, 2, 1)
-                counts[k] = m_tot
+                M = K @ HPt  # (B, n_f, n_t)
+                M *= -1.0
+                M[:, :, rows_f] += 0.5 * (K @ (HPt @ Ht.T + Rt) @ K.transpose(0, 2, 1))
+                Pt[:, rows_f, :] += M
+                Pt[:, :, rows_f] += M.transpose(0, 2, 1)
+                counts[k] = Ht.shape[0]
         Pt = 0.5 * (Pt + Pt.transpose(0, 2, 1))
         Pf = 0.5 * (Pf + Pf.transpose(0, 2, 1))
-        tv[:, k] = np.diagonal(Pt, axis1=1, axis2=2)
-        fv[:, k] = np.diagonal(Pf, axis1=1, axis2=2)
+        tv_p[k] = np.diagonal(Pt, axis1=1, axis2=2)
+        fv_p[k] = np.diagonal(Pf, axis1=1, axis2=2)
         if k in want:
             for b in range(B):
-                snaps[b][k] = Pt[b].copy()
+                snaps[b][k] = Pt[b][np.ix_(back_t, back_t)]
+    tv = tv_p[:, :, back_t].transpose(1, 0, 2)
+    fv = fv_p[:, :, back_f].transpose(1, 0, 2)
+    Pt = Pt[:, back_t][:, :, back_t]
+    Pf = Pf[:, back_f][:, :, back_f]
     p = truth_layout.slice("position").start
     v = truth_layout.slice("velocity").start
     out = []
@@ -631,11 +670,62 @@ def _plan_steps(
 
 def _static_states(Phi: Array, Q: Array) -> NDArray[np.bool_]:
     """States whose transition row is the unit row and whose noise row is zero (random
-    constants of the layout): their variances and mutual covariances do not propagate."""
-    n = Phi.shape[0]
-    unit = np.all(Phi == np.eye(n), axis=1)
+    constants of the layout): their variances and mutual covariances do not propagate.
+    ``Phi`` is one transition ``(n, n)`` or a stack ``(..., n, n)`` (the row must be the
+    unit row in every member), ``Q`` one noise or a stack of them."""
+    n = Phi.shape[-1]
+    unit = np.all(Phi.reshape(-1, n, n) == np.eye(n), axis=(0, 2))
     quiet = ~np.any(Q.reshape(-1, n, n) != 0.0, axis=(0, 2))
     return unit & quiet
+
+
+def _propagate(P: Array, Phi: Array, Q: Array, dyn_T: Array | None, d: int) -> Array:
+    """``Phi P Phi^T + Q`` for a stack ``P`` ``(B, n, n)``, unchecked.
+
+    With ``dyn_T`` (the transposed first ``d`` rows of ``Phi``, ``(n, d)``), the rows from
+    ``d`` on are unit rows with no noise (:func:`_static_states`), and only the first ``d``
+    rows and columns change: ``O(d n^2)`` instead of ``O(n^3)``; ``dyn_T=None`` propagates
+    in full.
+    """
+    if dyn_T is None:
+        return Phi @ P @ Phi.T + Q
+    X = Phi[:d] @ P  # (B, d, n): the first d rows of Phi P
+    out = P.copy()
+    out[:, :d, :d] = X @ dyn_T + Q[..., :d, :d]
+    out[:, :d, d:] = X[:, :, d:]
+    out[:, d:, :d] = X[:, :, d:].transpose(0, 2, 1)
+    return out
+
+
+def _stacked(schedule: Schedule) -> Callable[[int], tuple[Array, Array] | None]:
+    """``k -> (H, R)`` of the measurements ``schedule`` returns at step ``k`` (rows stacked,
+    ``R`` block-diagonal), or ``None`` when there is none; a schedule built here supplies it
+    directly as its ``stacked`` attribute."""
+    direct = getattr(schedule, "stacked", None)
+    if direct is not None:
+        return direct
+
+    def stacked(k: int) -> tuple[Array, Array] | None:
+        meas = schedule(k)
+        if not meas:
+            return None
+        return _stack_rows([(np.atleast_2d(m.H), np.atleast_2d(m.R)) for m in meas])
+
+    return stacked
+
+
+def _stack_rows(parts: Sequence[tuple[Array, Array]]) -> tuple[Array, Array]:
+    """Rows of several measurements stacked, their noises on a block diagonal."""
+    if len(parts) == 1:
+        return parts[0]
+    H = np.vstack([h for h, _ in parts])
+    m_tot = H.shape[0]
+    R = np.zeros((m_tot, m_tot))
+    r0 = 0
+    for _, Rb in parts:
+        R[r0 : r0 + Rb.shape[0], r0 : r0 + Rb.shape[0]] = Rb
+        r0 += Rb.shape[0]
+    return H, R
 
 
 class _Propagator:
@@ -1109,20 +1199,25 @@ def tightly_coupled_schedule(
             patterns[key] = (H0, R, cc, cr)
         return patterns[key]
 
-    def sched(k: int) -> list[Measurement]:
+    def stacked(k: int) -> tuple[Array, Array] | None:
         if k % every:
-            return []
+            return None
         H0, R, cc, cr = pattern(k)
         if cc.size + cr.size == 0:
-            return []
+            return None
         H = H0.copy()
         u = geometry.u_ned[k]
         H[: cc.size, p0 : p0 + 3] = -u[cc]
         H[cc.size :, v0 : v0 + 3] = -u[cr]
         if i_g is not None:
             H[cc.size :, i_g] = g_load[k]  # type: ignore[index]  # i_g is None when g_load is
-        return [Measurement._unchecked(H, R)]
+        return H, R
 
+    def sched(k: int) -> list[Measurement]:
+        rows = stacked(k)
+        return [] if rows is None else [Measurement._unchecked(*rows)]
+
+    sched.stacked = stacked  # type: ignore[attr-defined]  # the engine's form: (H, R) or None
     return sched
 
 
@@ -1277,6 +1372,7 @@ def baro_schedule(layout: StateLayout, *, noise_m: float, every: int = 1) -> Sch
     def sched(k: int) -> list[Measurement]:
         return [] if k % every else [Measurement._unchecked(H, R)]
 
+    sched.stacked = lambda k: None if k % every else (H, R)  # type: ignore[attr-defined]
     return sched
 
 
@@ -1386,6 +1482,10 @@ def combine_schedules(*schedules: Schedule | None) -> Schedule:
     2
     """
     live = [s for s in schedules if s is not None]
+    parts = [_stacked(s) for s in live]
+    # the block-diagonal noise of each combination of the parts' noise matrices (a schedule
+    # built here returns the same R object for the same pattern; the key holds them alive)
+    noises: dict[tuple[int, ...], tuple[tuple[Array, ...], Array]] = {}
 
     def sched(k: int) -> list[Measurement]:
         out: list[Measurement] = []
@@ -1393,6 +1493,18 @@ def combine_schedules(*schedules: Schedule | None) -> Schedule:
             out.extend(s(k))
         return out
 
+    def stacked(k: int) -> tuple[Array, Array] | None:
+        rows = [r for r in (part(k) for part in parts) if r is not None]
+        if len(rows) <= 1:
+            return rows[0] if rows else None
+        key = tuple(id(R) for _, R in rows)
+        hit = noises.get(key)
+        if hit is None or any(a is not b for a, (_, b) in zip(hit[0], rows, strict=True)):
+            hit = (tuple(R for _, R in rows), _stack_rows(rows)[1])
+            noises[key] = hit
+        return np.vstack([H for H, _ in rows]), hit[1]
+
+    sched.stacked = stacked  # type: ignore[attr-defined]  # the engine's form: (H, R) or None
     return sched
 
 
