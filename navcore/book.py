@@ -424,10 +424,14 @@ class Table:
         return lines[0], lines[1:]
 
 
-def _tidy_html(table_html: str) -> str:
+def _tidy_html(table_html: str, *, math_breaks: bool = False) -> str:
     r"""The table's cell texts with numbers tidied (:func:`~navcore.formatting.tidy_numbers`)
     and ``$...$`` set as MathJax inline math, as in the claim rows; the style block before
     the table is left alone.
+
+    With ``math_breaks`` (a table of text), a long formula may break across lines where TeX
+    would break it in running text (:func:`_math_breaks`): its pieces are set one after the
+    other, joined by a line-break opportunity (``<wbr>``).
 
     Examples
     --------
@@ -435,6 +439,9 @@ def _tidy_html(table_html: str) -> str:
     '<td>at <span class="math notranslate nohighlight">\\(N_T\\)</span>, 9.40×10⁻²</td>'
     >>> _tidy_html("<td>1/2 < $\\rho < 1$</td>")
     '<td>1/2 &lt; <span class="math notranslate nohighlight">\\(\\rho &lt; 1\\)</span></td>'
+    >>> out = _tidy_html("<td>so $\\mathrm{Exp}_g = a^2/(2p)$</td>", math_breaks=True)
+    >>> print(out.replace('<span class="math notranslate nohighlight">', "<span>"))
+    <td>so <span>\(\mathrm{Exp}_g ={}\)</span><wbr><span>\(a^2/(2p)\)</span></td>
     """
     head, sep, body = table_html.rpartition("</style>")
 
@@ -444,13 +451,98 @@ def _tidy_html(table_html: str) -> str:
         def bare(piece: str) -> str:  # a "<" or ">" of the text itself, not markup
             return piece.replace("<", "&lt;").replace(">", "&gt;")
 
+        def formula(tex: str) -> str:
+            pieces = _math_breaks(tex) if math_breaks else [tex]
+            return "<wbr>".join(math.format(bare(piece)) for piece in pieces)
+
         pieces = math_spans(text)
-        return "".join(math.format(bare(p)) if is_math else bare(tidy_numbers(p)) for is_math, p in pieces)
+        return "".join(formula(p) if is_math else bare(tidy_numbers(p)) for is_math, p in pieces)
 
     # text is whatever is not a tag: a "<" in a cell's text ("$\\rho < 1$") is text, not a tag
     parts = re.split(r"(<[A-Za-z/!][^<>]*>)", body)
     body = "".join(part if i % 2 else cell(part) for i, part in enumerate(parts))
     return head + sep + body
+
+
+#: A formula of more characters than this (spaces aside) may break in a table of text.
+_LONG_FORMULA = 12
+_TEX_TOKEN = re.compile(r"\\[A-Za-z]+|\\.|\s+|.", re.S)
+#: TeX breaks inline math after a relation or a binary operator at the formula's outer level
+_TEX_RELATIONS = frozenset(
+    ["=", "<", ">", r"\le", r"\leq", r"\ge", r"\geq", r"\ne", r"\neq", r"\approx", r"\sim",
+     r"\simeq", r"\equiv", r"\propto", r"\to", r"\rightarrow", r"\ll", r"\gg"]
+)  # fmt: skip
+_TEX_BINARY = frozenset(["+", "-", r"\pm", r"\mp", r"\times", r"\cdot"])
+_TEX_OPEN = frozenset(["(", "[", r"\{", r"\langle", r"\lvert", r"\lVert"])
+_TEX_CLOSE = frozenset([")", "]", r"\}", r"\rangle", r"\rvert", r"\rVert"])
+_TEX_BARS = frozenset(["|", r"\|", r"\vert", r"\Vert"])
+
+
+def _math_breaks(tex: str) -> list[str]:
+    r"""A long inline formula cut where TeX may break it in a paragraph: after a relation or a
+    binary operator at its outer level (not inside braces, brackets or bars).
+
+    MathJax 3 never breaks an inline formula, so in a table of text one long formula sets
+    the least width of its column however the words around it wrap. Each piece but the last
+    ends with an empty group, so that its operator keeps the spacing it has between two
+    operands; the pieces set side by side read as the whole formula. A formula of at most
+    ``_LONG_FORMULA`` characters, and a last piece of fewer than three, stay whole.
+
+    Examples
+    --------
+    >>> _math_breaks(r"\mathrm{Exp}_g = a^2/(2p)")
+    ['\\mathrm{Exp}_g ={}', 'a^2/(2p)']
+    >>> _math_breaks(r"C/N_0 - 10\log_{10} B_L")
+    ['C/N_0 -{}', '10\\log_{10} B_L']
+    >>> _math_breaks(r"|\ln \mathrm{bound} - \ln p_f|"), _math_breaks("P_{DL} = 0.999")
+    (['|\\ln \\mathrm{bound} - \\ln p_f|'], ['P_{DL} = 0.999'])
+    >>> _math_breaks(r"\left| a - b \right| = -c + d^{-1}")
+    ['\\left| a - b \\right| ={}', '-c +{}', 'd^{-1}']
+    """
+    if len(re.sub(r"\s", "", tex)) <= _LONG_FORMULA:
+        return [tex]
+    cuts: list[int] = []
+    braces, fences = 0, []
+    prev = ""  # the previous token at the outer level ("" at the start)
+    delimiter = False  # the token after \left or \right
+    for m in _TEX_TOKEN.finditer(tex):
+        tok = m.group(0)
+        if tok.isspace():
+            continue
+        if delimiter:
+            delimiter = False
+            continue
+        braces += {"{": 1, "}": -1}.get(tok, 0)
+        if braces or tok == "}":
+            prev = "}"
+            continue
+        if tok in (r"\left", r"\right"):
+            if tok == r"\left":
+                fences.append(tok)
+            elif fences:
+                fences.pop()
+            delimiter, prev = True, ")"
+            continue
+        if tok in _TEX_OPEN or (tok in _TEX_BARS and not (fences and fences[-1] == tok)):
+            fences.append(tok)
+            prev = "("
+            continue
+        if tok in _TEX_CLOSE or tok in _TEX_BARS:
+            if fences:
+                fences.pop()
+            prev = ")"
+            continue
+        operators = _TEX_RELATIONS | _TEX_BINARY
+        operand_before = prev and prev not in ("(", "^", "_", ",") and prev not in operators
+        if not fences and operand_before and tok in operators:
+            cuts.append(m.end())
+        prev = tok
+    pieces, start = [], 0
+    for cut in cuts:
+        if len(re.sub(r"\s", "", tex[cut:])) >= 3:
+            pieces.append(tex[start:cut].strip() + "{}")
+            start = cut
+    return [*pieces, tex[start:].strip()]
 
 
 def _styler_html(styler: Any) -> str:
@@ -523,7 +615,7 @@ def text_table(frame: Any, css_class: str | None = None) -> Table:
     styler = styler.set_table_styles([{"selector": "th", "props": "text-align: left;"}])
     if layout == "navcore-cards":
         return _CardTable(styler, [str(c) for c in frame.columns])
-    return Table(styler)
+    return _TextTable(styler)
 
 
 #: A text table with at least this many columns is laid out for a phone (:func:`_phone_layout`).
@@ -553,7 +645,15 @@ def _phone_layout(frame: Any) -> str:
     return "navcore-cards"
 
 
-class _CardTable(Table):
+class _TextTable(Table):
+    """A table of text: a long formula in a cell may break where TeX would break it
+    (:func:`_math_breaks`), so that its column is not as wide as the whole formula."""
+
+    def _repr_html_(self) -> str:
+        return _tidy_html(_styler_html(self.styler), math_breaks=True)
+
+
+class _CardTable(_TextTable):
     """A text table whose body cells carry their column's heading (``data-label``), which the
     style sheet shows before each field when a phone lays the rows out as cards."""
 

@@ -190,6 +190,71 @@ def test_text_tables_lay_out_for_a_phone_as_cards_or_with_upright_headings(layou
     assert [name for name, _ in measured] == ["cards-as-table.html#table-1", "upright-as-table.html#table-1"]
 
 
+def _mathjax() -> Path | None:
+    """MathJax's CHTML bundle as the book ships it (sphinx-mathjax-offline), if installed."""
+    spec = importlib.util.find_spec("sphinx-mathjax-offline")
+    if spec is None or spec.origin is None:
+        return None
+    bundle = Path(spec.origin).parent / "static" / "mathjax" / "tex-chtml.js"
+    return bundle if bundle.exists() else None
+
+
+def test_a_text_tables_long_formula_breaks_after_its_relation_in_html_only():
+    """Oracle: the formula cut by hand where TeX may break it (after ``=`` and the binary
+    ``-``, not inside the bars); a numeric table and the printed (LaTeX) table keep it whole."""
+    import pandas as pd
+
+    from navcore import book
+
+    frame = pd.DataFrame(
+        {
+            "reading": ["so $\\mathrm{Exp}_g = a^2/(2p)$"],
+            "reason": ["$|x - y|$ and $C/N_0 - 10\\log_{10} B_L$"],
+        }
+    )
+    html_text = book.text_table(frame)._repr_html_()
+    assert "\\(\\mathrm{Exp}_g ={}\\)</span><wbr><span" in html_text
+    assert "\\(a^2/(2p)\\)" in html_text and "\\(|x - y|\\)" in html_text
+    assert "\\(C/N_0 -{}\\)</span><wbr><span" in html_text
+    assert "<wbr>" not in book.table(frame)._repr_html_()
+    printed = book.text_table(frame)._repr_markdown_()
+    assert "<wbr>" not in printed and "{}" not in printed
+    assert "\\mathrm{Exp}_g = a^2/(2p)" in printed and "$C/N_0 - 10\\log_{10} B_L$" in printed
+
+
+@pytest.mark.skipif(_mathjax() is None, reason="no MathJax bundle (sphinx-mathjax-offline)")
+def test_a_text_table_with_long_formulas_fits_a_column_that_the_whole_formulas_overflow(layout, tmp_path):
+    """Oracle: Chromium and MathJax laying out, in a 330-px column with the book's style sheet,
+    a text table of four formulas set side by side in two columns (each formula about 150 px
+    wide): with the formulas cut where TeX may break them it fits; the same table with every
+    formula whole runs past the column."""
+    import shutil
+
+    import pandas as pd
+
+    from navcore import book
+
+    module, _ = layout
+    shutil.copy(_mathjax(), tmp_path / "tex-chtml.js")
+    formula = "$\\mathrm{Exp}_g = a^2/(2p) + b^2/(2q)$"
+    frame = pd.DataFrame({"first": [f"a {formula}"], "second": [f"b {formula}"]})
+    css = (ROOT / "book" / "_static" / "navcore.css").read_text(encoding="utf-8")
+    broken = book.text_table(frame)._repr_html_()
+    for name, table in (
+        ("broken", broken),
+        ("whole", broken.replace('{}\\)</span><wbr><span class="math notranslate nohighlight">\\(', " ")),
+    ):
+        (tmp_path / f"{name}.html").write_text(
+            f'<html><head><style>{css}</style><script src="tex-chtml.js"></script></head><body>'
+            '<main class="bd-content"><article class="bd-article" style="width:330px">'
+            f'<div class="cell_output"><div class="output">{table}</div></div>'
+            "</article></main></body></html>"
+        )
+    assert "<wbr>" in broken and "<wbr>" not in (tmp_path / "whole.html").read_text()
+    measured = module.measure(tmp_path, (1400,), tabs=1)[1400]["table"]
+    assert [name for name, _ in measured] == ["whole.html#table-1"]
+
+
 @pytest.mark.skipif(
     not any(__import__("shutil").which(b) for b in ("chromium", "chromium-browser", "google-chrome")),
     reason="no Chromium",
