@@ -3544,6 +3544,21 @@ def atc10_22_psk_pf_gauss() -> float:
     return float(pm.gaussian_best_pf(pm.psk_contour(), 0.9))
 
 
+@register(
+    "atc10-22-psk-pf",
+    "atc10/22-gaussian-comparison",
+    "best false-alarm probability at p_d >= 0.9 of the simulated 32-chip PSK set (Monte Carlo ROC)",
+)
+def atc10_22_psk_pf() -> float:
+    """The smallest false-alarm probability over the thresholds whose detection probability is at
+    least 0.9, on the stratified Monte Carlo ROC of a matched filter in multiple-access noise of
+    the simulated PSK signatures (ATC-10 Sec. 3.6-3.8, N = 1e5)."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    roc = pm.psk_roc()
+    return float(pm.best_pf_at_pd(roc.p_f, roc.p_miss, 0.9))
+
+
 # --- ATC-10 Sec. 4.5: the clock tracker's gain -------------------------------------------------------
 
 
@@ -4017,6 +4032,58 @@ def sp21_clock_digits() -> int:
 
     relative = spm.initial_error_effect_pct(("clock offset in ns",)) / 100.0
     return math.floor(-math.log10(relative)) if relative > 0 else 17
+
+
+@register(
+    "sp21-init-effect-pct",
+    "sp/21-missions",
+    "largest change of the 1 nmi/h error before reacquisition with all initial errors scaled (%)",
+)
+def sp21_init_effect_pct() -> float:
+    """Largest relative change (%) of the tightly coupled 1 nmi/h horizontal error 1 s before
+    reacquisition when Table 2.4's initial position, velocity and misalignment errors are all
+    multiplied or divided by the assumed scale (SP Sec. 2.3, Sec. 2.6.1)."""
+    from navcore.papers import sp_missions as spm
+
+    return spm.initial_error_effect_pct(("initial errors up", "initial errors down"))
+
+
+@register(
+    "sp21-mis-effect-pct",
+    "sp/21-missions",
+    "largest change of the 1 nmi/h error before reacquisition with the misalignment alone scaled (%)",
+)
+def sp21_mis_effect_pct() -> float:
+    """:func:`sp21_init_effect_pct` with only the initial misalignment scaled (SP Sec. 2.3)."""
+    from navcore.papers import sp_missions as spm
+
+    return spm.initial_error_effect_pct(("misalignment up", "misalignment down"))
+
+
+@register(
+    "sp21-coupling-pct",
+    "sp/21-missions",
+    "difference of the loosely and tightly coupled 1 nmi/h errors at bomb release (%)",
+)
+def sp21_coupling_pct() -> float:
+    """Relative difference (%) of the loosely and tightly coupled 1 nmi/h horizontal errors at
+    bomb release in the head-on approach, all satellites lost 159 s and 153 s before (SP Sec. 2.6.3)."""
+    from navcore.papers import sp_missions as spm
+
+    return spm.coupling_difference_pct()
+
+
+@register(
+    "sp21-momentary-pct",
+    "sp/21-missions",
+    "largest change of the helicopter's target-location error with momentary carrier losses (%)",
+)
+def sp21_momentary_pct() -> float:
+    """Largest relative change (%) of the helicopter's target-location error 19 min after GPS loss
+    (no Doppler, both grades) when every carrier is dropped for a moment at each pull-up (SP Sec. 2.6.4)."""
+    from navcore.papers import sp_missions as spm
+
+    return spm.momentary_loss_effect_pct()
 
 
 def _sp22_tc10_blackout_min() -> float:

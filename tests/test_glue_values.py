@@ -655,6 +655,49 @@ def _atc10_psk_moments() -> tuple[float, float]:
     return float(x2), float(x4)
 
 
+def _atc10_psk_threshold() -> tuple[float, float, float]:
+    """The threshold the Monte Carlo ROC picks for p_d >= 0.9 (its p_f the smallest there), with
+    the Monte Carlo's p_f and p_miss standard errors at it."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    roc = pm.psk_roc()
+    ok = np.flatnonzero(roc.p_miss <= 0.1)
+    j = ok[np.argmin(roc.p_f[ok])]
+    return float(roc.theta[j]), float(roc.p_f_se[j]), float(roc.p_miss_se[j])
+
+
+def _atc10_psk_exact_roc(theta: float) -> tuple[float, float]:
+    """Exact p_f and p_miss of the matched filter at ``theta`` by characteristic functions: the
+    simulated PSK amplitudes sit on a 1e-4 lattice, so the noise sum n of N - 1 interferers, each
+    overlapping with probability q = 2 tau/alpha, has the lattice law whose transform is
+    ((1 - q) + q phi_C)^(N-1) (numpy's FFT on 2^18 points, +-13.1, far beyond any sum with a
+    probability above 1e-30); p_f = P(n >= theta), p_miss = P(n < theta - 1) (unit peak)."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    density = pm.psk_density()
+    units = np.rint(np.asarray(density.values) * 1e4).astype(np.int64)
+    weights = np.asarray(density.weights, dtype=float)
+    size = 1 << 18
+    pmf = np.zeros(size)
+    np.add.at(pmf, units % size, weights / weights.sum())
+    q = 2.0 * pm.IN.tau_over_alpha_sec36
+    law = np.fft.ifft(((1.0 - q) + q * np.fft.fft(pmf)) ** (pm.IN.n_sec36 - 1)).real
+    lattice = np.fft.fftfreq(size, d=1.0 / size)  # 0, 1, ..., -2, -1 (units of 1e-4)
+    p_f = float(law[lattice >= round(theta * 1e4)].sum())
+    p_miss = float(law[lattice < round((theta - 1.0) * 1e4)].sum())
+    return p_f, p_miss
+
+
+def _atc10_psk_pf_exact() -> float:
+    """The exact p_f at the Monte Carlo's chosen threshold (:func:`_atc10_psk_exact_roc`); the
+    threshold must be admissible exactly too (p_miss <= 0.1 within four Monte Carlo standard
+    errors), else the Monte Carlo picked a threshold the exact ROC refuses."""
+    theta, _, miss_se = _atc10_psk_threshold()
+    p_f, p_miss = _atc10_psk_exact_roc(theta)
+    assert p_miss <= 0.1 + 4 * miss_se, f"the exact p_miss at {theta} is {p_miss}: not p_d >= 0.9"
+    return p_f
+
+
 def _atc10_psk_pf_gauss() -> float:
     """ROC_g in Gaussian noise of power P = N q b (Theorem 3.1, q = 2 tau / alpha): p_d = Q((theta -
     1) / sqrt(P)) fixes theta at p_d = 0.9, and p_f = Q(theta / sqrt(P)) (scipy's normal)."""
@@ -1063,6 +1106,13 @@ ORACLES = [
         why="moments written out",
     ),
     Oracle("atc10-22-psk-pf-gauss", _atc10_psk_pf_gauss, rtol=1e-9, why="scipy's normal, Theorem 3.1 power"),
+    # the Monte Carlo against the exact lattice law at its threshold: four of its standard errors
+    Oracle(
+        "atc10-22-psk-pf",
+        _atc10_psk_pf_exact,
+        band=lambda: 4 * _atc10_psk_threshold()[1],
+        why="exact lattice law by FFT at the chosen threshold",
+    ),
     # the seeded flights' location errors recomputed by hand from the run's arrays (summation
     # order only: 1e-12)
     Oracle(
@@ -3213,6 +3263,69 @@ def _sp21_clock_digits() -> int:
     return next((i for i, (x, y) in enumerate(zip(a, b, strict=True)) if x != y), 17)
 
 
+def _sp21_position_block(run, rows: str = "position"):
+    """Indices of the north and east position states (or of ``rows``) in a run's truth layout."""
+    lay = run.truth_layout
+    return [lay.index(rows, i) for i in range(3)]
+
+
+def _sp21_initial_effect_pct(members: tuple[str, ...]) -> float:
+    """The runs' own variance histories: the sample nearest 1 s before reacquisition found on the
+    time axis (not through the run's lookup), the rss of the north and east variances there (not
+    the run's horizontal error), and the largest relative change over ``members`` (%)."""
+    from navcore.papers import sp_missions as spm
+    from navcore.papers import sp_missions_scenarios as sms
+
+    runs = sms.initial_error_runs(spm.IN.initial_error_scale)
+    t = sms.reacquisition_s() - 1.0
+
+    def error(run) -> float:
+        i = int(np.argmin(np.abs(run.t - t)))
+        n, e, _ = _sp21_position_block(run)
+        return math.sqrt(run.true_var[i, n] + run.true_var[i, e])
+
+    base = error(runs["nominal"])
+    return max(100.0 * abs(error(runs[m]) - base) / base for m in members)
+
+
+def _sp21_coupling_pct() -> float:
+    """The head-on runs' final covariance matrices (not their variance histories): the rss of the
+    north and east position variances of the loosely and tightly coupled 1 nmi/h systems, and
+    their relative difference (%)."""
+    from navcore.papers import sp_missions_scenarios as sms
+
+    def final(arch: str, label: str) -> float:
+        run = next(r for s_, r in sms.head_on_approach(arch).items() if s_.label == label)
+        n, e, _ = _sp21_position_block(run)
+        return math.sqrt(run.final_true[n, n] + run.final_true[e, e])
+
+    return 100.0 * abs(final("loose", "LC 1 nmi/h") / final("tight", "TC 1 nmi/h") - 1.0)
+
+
+def _sp21_momentary_pct() -> float:
+    """Target location written out: the located target is in error by dr + r x psi (psi the
+    engine's attitude error, the target level at the assumed bearing and the paper's 8 km), so
+    its covariance is A P A' with A = [I, [r x]] on the final position and attitude block; the
+    rss of its north and east variances with and without the momentary losses, both grades (%)."""
+    from navcore.papers import sp_acquisition as spa
+    from navcore.papers import sp_missions as spm
+    from navcore.papers import sp_missions_scenarios as sms
+
+    b = math.radians(sms.IN.target_bearing_deg)
+    r = spa.IN.target_range_m * np.array([math.cos(b), math.sin(b), 0.0])
+    cross = np.array([[0.0, -r[2], r[1]], [r[2], 0.0, -r[0]], [-r[1], r[0], 0.0]])  # [r x]
+    A = np.hstack([np.eye(3), cross])
+
+    def sigma(run) -> float:
+        rows = _sp21_position_block(run) + _sp21_position_block(run, "misalignment")
+        C = A @ run.final_true[np.ix_(rows, rows)] @ A.T
+        return math.sqrt(C[0, 0] + C[1, 1])
+
+    base = sms.helicopter(False)
+    lossy = sms.helicopter_momentary_carrier_loss(spm.IN.momentary_loss_s)
+    return max(100.0 * abs(sigma(lossy[g]) / sigma(base[g]) - 1.0) for g in (10.0, 1.0))
+
+
 def _sp_noise_only_outage_m() -> float:
     """:func:`_sp_noise_only_m` for the second Table 2.5 column over the helicopter's jammed minutes."""
     from navcore.papers import sp_missions_scenarios as sms
@@ -3535,6 +3648,27 @@ ORACLES += [
     # the Van Loan oracle's 1 % (the vertical channel's coupling and the gravity model it leaves
     # out); a ratio of two of them: 2 %
     Oracle("sp21-clock-digits", _sp21_clock_digits, atol=1, why="digit strings of the two runs' errors"),
+    # the same runs read another way: the percentages agree to round-off of the errors (1e-12
+    # relative), divided by the percentage itself
+    Oracle(
+        "sp21-init-effect-pct",
+        lambda: _sp21_initial_effect_pct(("initial errors up", "initial errors down")),
+        rtol=1e-6,
+        why="the runs' variance histories on their time axis",
+    ),
+    Oracle(
+        "sp21-mis-effect-pct",
+        lambda: _sp21_initial_effect_pct(("misalignment up", "misalignment down")),
+        rtol=1e-6,
+        why="the runs' variance histories on their time axis",
+    ),
+    Oracle("sp21-coupling-pct", _sp21_coupling_pct, rtol=1e-9, why="the runs' final covariance matrices"),
+    Oracle(
+        "sp21-momentary-pct",
+        _sp21_momentary_pct,
+        rtol=1e-6,
+        why="target location written out on the final position and attitude covariance",
+    ),
     Oracle(
         "sp21-noise-only-10-19min-m",
         lambda: _sp_noise_only_m(10.0, 19.0),
