@@ -26,7 +26,10 @@ Measurements are supplied per time step as :class:`~navcore.estimation.covarianc
 objects over the *truth* layout by schedule functions built here: tightly coupled
 pseudorange and range rate from each tracked channel, the loosely coupled receiver
 position every 10 s when at least four codes are tracked and the expected horizontal
-error is small enough, barometric altitude, and Doppler ground speed in body axes.
+error is small enough, barometric altitude, and Doppler ground speed in body axes. Each of
+them (and :func:`combine_schedules` of them) also hands the engine its rows already stacked,
+``schedule.stacked(k)`` giving ``(H, R)`` or ``None``; a schedule of one's own needs only the
+call ``k -> list of Measurement``.
 
 Discretisation: :math:`\Phi = \sum_{j\le 4} (F\Delta t)^j/j!` (exact for the
 nilpotent chains gyro bias -> attitude -> velocity -> position) and
