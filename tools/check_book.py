@@ -24,6 +24,11 @@ It also finds formulas shown as LaTeX source (see ``check_plain_math``): a LaTeX
 reader sees typeset, in the text of every page but the API reference (a quote of the paper in a
 claim row or the ledger, a table, a caption), and in the text fields of the ledger's embedded
 records, which its JSON and CSV downloads carry (``printed``, ``quantity``, ``note``).
+And it finds formulas shown as program text (see ``check_plain_text_math``): the plain-text math
+patterns the ledger's own texts are held to (a power ``m^3/s^2``, a flat subscript ``tau_c``, a
+Greek letter spelled out, e-notation, ``sqrt(``, literal ``**``), in the text of every page but
+the API reference, outside math, code and a cell's printed output (``PLAIN_TEXT_ALLOWED`` lists
+the few a page may show, each with its reason).
 ``numbers``: no number as a program prints it (``1.00e-04``, ``1.6344416666666666``,
 ``-0.000``, ``60.000000``, a printed dictionary; see ``tools/check_numbers.py``) in the text a
 reader sees. Part of ``html`` too.
@@ -251,6 +256,83 @@ def check_plain_math(root: Path) -> list[str]:
     return problems
 
 
+# --- formulas shown as program text -------------------------------------------------------
+
+#: (page, text found) pairs of plain-text math a page may show, each with its reason. Keep it
+#: short: an entry that no longer occurs fails the gate (see ``check_plain_text_math``).
+PLAIN_TEXT_ALLOWED: dict[tuple[str, str], str] = {}
+
+#: What a program printed or a reader types, which the plain-text math gate leaves out beside
+#: math and code cells: code (``<code>``, ``<pre>``, highlighted blocks) and a cell's printed
+#: output (plain text, a stream); a cell's HTML output (a table, the ledger's claim rows) is
+#: the book's text and is scanned.
+PRINTED_TAGS = {"code", "pre", "kbd", "samp", "tt"}
+PRINTED_CLASSES = {"text_plain", "stream", "highlight", "output_area", "cell_input"}
+
+
+def _reader_text_without_printed(page_html: str) -> list[str]:
+    """The reader text of a page (``tools/check_numbers.py``'s), without code and printed output."""
+    numbers = _check_numbers()
+
+    class _Text(numbers._ReaderText):
+        def handle_starttag(self, tag, attrs):
+            super().handle_starttag(tag, attrs)
+            if tag in numbers.VOID_TAGS:
+                return
+            classes = set((dict(attrs).get("class") or "").split())
+            if tag in PRINTED_TAGS or classes & PRINTED_CLASSES:
+                self.stack[-1] = (tag, True)
+
+    parser = _Text()
+    parser.feed(page_html)
+    parser.close()
+    return [re.sub(r"\s+", " ", b).strip() for b in parser.blocks if b.strip()]
+
+
+def plain_text_math(text: str) -> list[tuple[str, str]]:
+    r"""The (kind, text) of each formula written as program text in ``text`` outside its math:
+    the patterns the ledger's texts are held to (:func:`navcore.ledger.render.plain_math`:
+    e-notation, a flat subscript, a spelled-out Greek letter, a power, ``sqrt(``, ...), one list
+    for both. LaTeX source is ``latex_outside_math``'s.
+
+    Examples
+    --------
+    >>> plain_text_math(r"a unit of m^3/s^2 and $\beta$, \(x_1\) and tau_c")
+    [('power', 'm^3'), ('power', 's^2'), ('flat subscript', 'tau_c'), ('Greek name', 'tau_c')]
+    """
+    from navcore.ledger.render import plain_math
+
+    shown = TYPESET_MATH.sub(lambda m: m.group(0) if m.group(0).startswith("$") else " ", text)
+    return [(kind, hit) for kind, hit in plain_math(shown) if kind != "LaTeX source"]
+
+
+def check_plain_text_math(root: Path) -> list[str]:
+    """Formulas shown as program text (``m^3/s^2``, ``tau_c``, ``**word**``) in what a reader
+    sees: the text of every page but the API reference, outside math, code and printed output
+    (:func:`plain_text_math`), unless listed in ``PLAIN_TEXT_ALLOWED`` with its reason; and each
+    entry of that list that no longer occurs."""
+    numbers = _check_numbers()
+    problems, seen = [], set()
+    for page in sorted(root.rglob("*.html")):
+        rel = page.relative_to(root).as_posix()
+        if numbers.SKIP_PAGES.match(rel):
+            continue
+        for block in _reader_text_without_printed(page.read_text(encoding="utf-8", errors="replace")):
+            for kind, hit in plain_text_math(block):
+                if (rel, hit) in PLAIN_TEXT_ALLOWED:
+                    seen.add((rel, hit))
+                    continue
+                at = block.find(hit)
+                context = block[max(0, at - 50) : at + len(hit) + 50]
+                problems.append(f"{rel}: plain-text math ({kind}) {hit!r}: ...{context}...")
+    problems += [
+        f"{rel}: allowed plain-text math {hit!r} no longer occurs: remove it from PLAIN_TEXT_ALLOWED"
+        for rel, hit in sorted(set(PLAIN_TEXT_ALLOWED) - seen)
+        if (root / rel).exists()
+    ]
+    return problems
+
+
 def check_html(root: Path) -> list[str]:
     problems = []
     for page in sorted(root.rglob("*.html")):
@@ -282,6 +364,7 @@ def check_html(root: Path) -> list[str]:
         + check_wording(root)
         + check_number_format(root)
         + check_plain_math(root)
+        + check_plain_text_math(root)
     )
 
 
