@@ -598,7 +598,7 @@ PLAIN_LATEX_SOURCE = re.compile(r"\\[A-Za-z]{2,}(?![A-Za-z])|[_^]\{")
 
 def plain_math(text: str) -> list[tuple[str, str]]:
     r"""The plain-text math outside the ``$...$`` spans of ``text``: each hit of
-    :data:`PLAIN_MATH_PATTERNS`, a starred symbol and LaTeX source, as ``(kind, text found)``.
+    ``PLAIN_MATH_PATTERNS``, a starred symbol and LaTeX source, as ``(kind, text found)``.
 
     Examples
     --------
@@ -669,7 +669,7 @@ def unit_text(unit: str) -> str:
     The ledger keeps units as plain strings (its JSON and CSV exports carry them so); every
     table and text a reader sees shows them through this function, with :func:`html_text` or
     :func:`tex_text`. A unit is rewritten only when it holds plain-text math
-    (:data:`PLAIN_MATH_PATTERNS`). A unit of symbols takes its powers and roots as the
+    (``PLAIN_MATH_PATTERNS``). A unit of symbols takes its powers and roots as the
     registry's own units write them (``m/s²``, ``deg/h/√Hz``): superscripts and radicals in
     the text, which stays upright and breaks after its slashes as any unit. A unit that is a
     formula, with a Greek letter, a subscript or a symbol standing alone (the :math:`N` of
