@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import importlib.util
+import re
 import sys
 from pathlib import Path
 
@@ -236,6 +237,69 @@ def test_html_gate_finds_formulas_shown_as_latex_source(tmp_path):
     assert "'_{'" in problems[0] and "ledger-latex" in problems[1]
     assert "WF-b (printed)" in problems[2] and "'\\\\mathbf'" in problems[3]
     assert check_book.latex_outside_math(r"$$x_{n-1}$$ and \(y_{2}\), 50 $ and 60 $") == []
+
+
+def test_html_gate_finds_formulas_shown_as_program_text(tmp_path, monkeypatch):
+    """Oracle: hand-written pages, each with formulas written as program text that the gate must
+    find (a unit's power, a flat subscript, a spelled-out Greek letter, literal emphasis marks,
+    in prose, a table cell of a cell's HTML output and a claim row), beside the forms a reader
+    sees typeset, code and a cell's printed output, which it must pass; and an allowlist entry
+    that passes its page and fails once its text is gone."""
+    article = '<article class="bd-article">{}</article>'
+    shown = (
+        "<p>GM in m³/s², $\\beta$ and <span class='math'>\\(N\\tau_c/\\alpha\\)</span>, 5 parts in "
+        "<span class='math'>\\(10^{8}\\)</span>, the detector <strong>deteriorates</strong>.</p>"
+        '<p>The call <code class="docutils literal">exp(mu**2*p/2)</code> in a sentence.</p>'
+        '<div class="cell docutils container"><div class="cell_input docutils container">'
+        '<div class="highlight-ipython3"><div class="highlight"><pre>x = tau_c ** 2</pre></div></div></div>'
+        '<div class="cell_output docutils container">'
+        '<div class="output text_plain highlight-myst-ansi"><div class="highlight"><pre>exp(mu**2*p/2)'
+        "</pre></div></div>"
+        '<div class="output text_html"><table><tr><td>$\\operatorname{tr}\\{(F\'F)^{-1}\\}$</td></tr>'
+        "</table></div></div></div>"
+    )
+    _page(tmp_path / "atc10" / "ok.html", article.format(shown))
+    table = (
+        '<div class="cell_output docutils container"><div class="output text_html">'
+        "<table><tr><td>tr{(F'F)^-1}, all satellites</td><td>3.986×10¹⁴ m^3/s^2</td></tr></table></div></div>"
+    )
+    _page(tmp_path / "atc10" / "table.html", article.format(table))
+    claims = '<table class="ledger-claims"><tr><td class="ledger-value">0.5 N tau_c / alpha</td></tr></table>'
+    # identifiers and the words of prose that name a quantity are not formulas
+    words = (
+        "<table><tr><td>ATC10-tab4.3-exII-s5-alpha, SP-fig2.1-(peak, omega0), ATC10-E4.3-beta-definition</td>"
+        "<td>code and delta range, delta pseudoranges, a chi-square quantile, 1 sigma, a psi-angle form</td>"
+        "</tr></table>"
+    )
+    _page(tmp_path / "sp" / "words.html", article.format(words))
+    _page(tmp_path / "traceability.html", article.format("<p>test_emitter, test_strapdown</p>"))
+    _page(tmp_path / "atc10" / "claims.html", article.format(claims))
+    _page(tmp_path / "atc10" / "quote.html", article.format("<p>the detector **deteriorates**</p>"))
+    _page(tmp_path / "reference" / "api.html", article.format("<p>a docstring's sigma_0 and m^2</p>"))
+    monkeypatch.setattr(check_book, "PLAIN_TEXT_ALLOWED", {})  # the book's own entries aside
+    problems = check_book.check_plain_text_math(tmp_path)
+    found = sorted(re.match(r"(\S+): plain-text math \((.+?)\) (.+?): \.\.\.", p).groups() for p in problems)
+    assert found == [
+        ("atc10/claims.html", "Greek name", "'alpha'"),
+        ("atc10/claims.html", "Greek name", "'tau_c'"),
+        ("atc10/claims.html", "flat subscript", "'tau_c'"),
+        ("atc10/quote.html", "power", "'**'"),
+        ("atc10/quote.html", "power", "'**'"),
+        ("atc10/table.html", "power", "'F)^-'"),
+        ("atc10/table.html", "power", "'m^3'"),
+        ("atc10/table.html", "power", "'s^2'"),
+    ], problems
+    assert check_book.main(["html", str(tmp_path)]) == 1
+    # an allowed hit passes on its page; an entry whose text is gone fails
+    allowed = {("atc10/quo*.html", "**deteriorates**"): "the paper's own asterisks (a synthetic reason)"}
+    monkeypatch.setattr(check_book, "PLAIN_TEXT_ALLOWED", allowed)
+    assert not [p for p in check_book.check_plain_text_math(tmp_path) if p.startswith("atc10/quote.html")]
+    (tmp_path / "atc10" / "quote.html").unlink()
+    _page(tmp_path / "atc10" / "quote.html", article.format("<p>the detector <em>deteriorates</em></p>"))
+    assert [p for p in check_book.check_plain_text_math(tmp_path) if p.startswith("atc10/quo")] == [
+        "atc10/quo*.html: allowed plain-text math '**deteriorates**' no longer occurs: remove it from "
+        "PLAIN_TEXT_ALLOWED"
+    ]
 
 
 PROSE_PAGE = """

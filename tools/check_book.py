@@ -24,6 +24,11 @@ It also finds formulas shown as LaTeX source (see ``check_plain_math``): a LaTeX
 reader sees typeset, in the text of every page but the API reference (a quote of the paper in a
 claim row or the ledger, a table, a caption), and in the text fields of the ledger's embedded
 records, which its JSON and CSV downloads carry (``printed``, ``quantity``, ``note``).
+And it finds formulas shown as program text (see ``check_plain_text_math``): the plain-text math
+patterns the ledger's own texts are held to (a power ``m^3/s^2``, a flat subscript ``tau_c``, a
+Greek letter spelled out, e-notation, ``sqrt(``, literal ``**``), in the text of every page but
+the API reference, outside math, code and a cell's printed output (``PLAIN_TEXT_ALLOWED`` lists
+the few a page may show, each with its reason).
 ``numbers``: no number as a program prints it (``1.00e-04``, ``1.6344416666666666``,
 ``-0.000``, ``60.000000``, a printed dictionary; see ``tools/check_numbers.py``) in the text a
 reader sees. Part of ``html`` too.
@@ -42,6 +47,7 @@ import html
 import json
 import re
 import sys
+from fnmatch import fnmatch
 from html.parser import HTMLParser
 from pathlib import Path
 
@@ -251,6 +257,122 @@ def check_plain_math(root: Path) -> list[str]:
     return problems
 
 
+# --- formulas shown as program text -------------------------------------------------------
+
+#: Text that reads as plain math to the patterns but is not a formula, removed before the scan:
+#: a claim's or an erratum's id (``ATC10-tab4.3-exII-s5-alpha``, ``SP-fig2.1-(peak, omega0)``),
+#: an identifier, and the words of navigation and statistics that name a quantity in prose
+#: (a delta range, a chi-square quantile, one sigma, the psi-angle model).
+NOT_FORMULAS = re.compile(
+    r"\b(?:WF|SP|ATC10|KZL)-(?:[\w.\u200b-]|\((?:[\w.\u200b-]|,\s*)+\))+"
+    r"|\bdelta[- ](?:(?:pseudo)?ranges?|velocity)\b|\bchi-squared?\b"
+    r"|\b(?:\d+|one|two|three|four|five|six)[- ]sigma\b|\bpsi[- ]angle\b",
+    re.I,
+)
+
+#: Pages whose text lists identifiers, not formulas, with the reason; left out of the scan.
+NOT_FORMULA_PAGES = {
+    "traceability.html": "it lists the test modules that check each model by their file names",
+}
+
+#: (pages, text) of plain-text math the book still shows, each with its reason: a hit inside
+#: ``text`` on a page that ``pages`` matches (a glob) passes. Each is for the page's or the
+#: registry's owner to fix; keep the list short: an entry that no longer occurs fails the gate.
+PLAIN_TEXT_ALLOWED: dict[tuple[str, str], str] = {
+    # the ledger's words for a reading of an input (navcore.ledger.core, _reading_words) append
+    # the input's unit as the registry holds it, without the unit formatter of the tables
+    ("atc10/3[0-2]-*.html", "( m^3/s^2)"): "a reading's unit in a claim's note (ledger core)",
+    ("kzl/00-requirements.html", "( m^3/s^2)"): "a reading's unit in a claim's note (ledger core)",
+    ("ledger.html", "( m^3/s^2)"): "a reading's unit in a claim's note (ledger core)",
+    # SP's pages and the glossary write the carrier-to-noise density ratio as C/N0 in prose
+    ("sp/*.html", "C/N0"): "SP's prose (its pages are being changed by the lead): C/N_0 as math",
+    ("glossary.html", "C/N0"): "the glossary's entry and definition of C/N_0, in prose",
+    # an erratum's quote of the paper, stored in the registry with the Greek letter spelled out
+    ("errata.html", "independence of rho(i,j)"): "the stored quote of an ATC-10 erratum (registry data)",
+    ("atc10/index.html", "independence of rho(i,j)"): "the same erratum in the chapter's list",
+    ("reports/atc10.html", "independence of rho(i,j)"): "the same erratum in the verification report",
+    # KZL names its antennas A0, A1, ...: labels, not formulas
+    ("kzl/02-error-model.html", "A0"): "KZL's name of its master antenna, a label",
+    ("ledger.html", "master antenna (A0)"): "KZL's name of its master antenna in a quote, a label",
+    ("kzl/89-summary.html", "arctan_2"): "KZL's prose names the paper's two-argument arctangent",
+    # WF's pages: a formula in a table's text
+    ("wf/03-local-estimators.html", "1/k_i"): "WF's table of the estimators' weights (Eq. (22))",
+    ("wf/02-velocity-sensitivity.html", "f0/"): "WF's table of the Doppler sensitivities",
+}
+
+#: What a program printed or a reader types, which the plain-text math gate leaves out beside
+#: math and code cells: code (``<code>``, ``<pre>``, highlighted blocks) and a cell's printed
+#: output (plain text, a stream); a cell's HTML output (a table, the ledger's claim rows) is
+#: the book's text and is scanned.
+PRINTED_TAGS = {"code", "pre", "kbd", "samp", "tt"}
+PRINTED_CLASSES = {"text_plain", "stream", "highlight", "output_area", "cell_input"}
+
+
+def _reader_text_without_printed(page_html: str) -> list[str]:
+    """The reader text of a page (``tools/check_numbers.py``'s), without code and printed output."""
+    numbers = _check_numbers()
+
+    class _Text(numbers._ReaderText):
+        def handle_starttag(self, tag, attrs):
+            super().handle_starttag(tag, attrs)
+            if tag in numbers.VOID_TAGS:
+                return
+            classes = set((dict(attrs).get("class") or "").split())
+            if tag in PRINTED_TAGS or classes & PRINTED_CLASSES:
+                self.stack[-1] = (tag, True)
+
+    parser = _Text()
+    parser.feed(page_html)
+    parser.close()
+    return [re.sub(r"\s+", " ", b).strip() for b in parser.blocks if b.strip()]
+
+
+def plain_text_math(text: str) -> list[tuple[str, str]]:
+    r"""The (kind, text) of each formula written as program text in ``text`` outside its math:
+    the patterns the ledger's texts are held to (:func:`navcore.ledger.render.plain_math`:
+    e-notation, a flat subscript, a spelled-out Greek letter, a power, ``sqrt(``, ...), one list
+    for both. LaTeX source is ``latex_outside_math``'s.
+
+    Examples
+    --------
+    >>> plain_text_math(r"a unit of m^3/s^2 and $\beta$, \(x_1\) and tau_c")
+    [('power', 'm^3'), ('power', 's^2'), ('flat subscript', 'tau_c'), ('Greek name', 'tau_c')]
+    """
+    from navcore.ledger.render import plain_math
+
+    shown = TYPESET_MATH.sub(lambda m: m.group(0) if m.group(0).startswith("$") else " ", text)
+    shown = NOT_FORMULAS.sub(" ", shown)
+    return [(kind, hit) for kind, hit in plain_math(shown) if kind != "LaTeX source"]
+
+
+def check_plain_text_math(root: Path) -> list[str]:
+    """Formulas shown as program text (``m^3/s^2``, ``tau_c``, ``**word**``) in what a reader
+    sees: the text of every page but the API reference, outside math, code and printed output
+    (:func:`plain_text_math`), unless listed in ``PLAIN_TEXT_ALLOWED`` with its reason; and each
+    entry of that list that no longer occurs."""
+    numbers = _check_numbers()
+    problems, seen = [], set()
+    for page in sorted(root.rglob("*.html")):
+        rel = page.relative_to(root).as_posix()
+        if numbers.SKIP_PAGES.match(rel) or rel in NOT_FORMULA_PAGES:
+            continue
+        for block in _reader_text_without_printed(page.read_text(encoding="utf-8", errors="replace")):
+            for kind, hit in plain_text_math(block):
+                allowed = [(g, t) for g, t in PLAIN_TEXT_ALLOWED if fnmatch(rel, g) and hit in t in block]
+                if allowed:
+                    seen.update(allowed)
+                    continue
+                at = block.find(hit)
+                context = block[max(0, at - 50) : at + len(hit) + 50]
+                problems.append(f"{rel}: plain-text math ({kind}) {hit!r}: ...{context}...")
+    problems += [
+        f"{pages}: allowed plain-text math {text!r} no longer occurs: remove it from PLAIN_TEXT_ALLOWED"
+        for pages, text in sorted(set(PLAIN_TEXT_ALLOWED) - seen)
+        if any(fnmatch(p.relative_to(root).as_posix(), pages) for p in root.rglob("*.html"))
+    ]
+    return problems
+
+
 def check_html(root: Path) -> list[str]:
     problems = []
     for page in sorted(root.rglob("*.html")):
@@ -282,6 +404,7 @@ def check_html(root: Path) -> list[str]:
         + check_wording(root)
         + check_number_format(root)
         + check_plain_math(root)
+        + check_plain_text_math(root)
     )
 
 

@@ -50,11 +50,13 @@ __all__ = [
     "json_export",
     "latex_table",
     "math_spans",
+    "plain_math",
     "quote_math",
     "quote_text",
     "rows",
     "tex_text",
     "text_table",
+    "unit_text",
 ]
 
 # light-mode row colours (the PDF uses them too); the HTML sets them by class
@@ -551,15 +553,164 @@ def latex_table(head: Sequence[str], body: Sequence[Sequence[str]]) -> str:
 
 
 def _plain_with_unit(value: str, unit: str) -> str:
+    """A value and its unit as a reader sees them: a unit with a power or a formula as
+    ``$...$`` math (:func:`unit_text`), which :func:`html_text` and :func:`tex_text` set."""
     if value in ("", "—") or unit in ("", "statement"):
         return value
     if value == "1" and unit in _COUNT_UNITS:  # "1 state", not "1 states"
         unit = unit[:-1]
-    return f"{value} {unit}"
+    return f"{value} {unit_text(unit)}"
 
 
 #: Plural count units that read in the singular after exactly one.
 _COUNT_UNITS = ("states", "channels", "satellites", "entries", "cases", "intervals", "lists")
+
+
+# ---------------------------------------------------------------------------------------
+# plain-text math: what reads as program text outside ``$...$``
+
+_GREEK = (
+    "alpha|beta|gamma|delta|epsilon|zeta|eta|theta|kappa|lambda|mu|nu|xi|pi|rho|sigma|tau|phi|chi|"
+    "psi|omega|Gamma|Delta|Theta|Lambda|Sigma|Phi|Psi|Omega|dtheta|dphi"
+)
+
+#: Plain-text math, by kind: what each pattern finds in text outside ``$...$``. One list for the
+#: registry's texts (the tests), the docstrings' prose and the text of the built book's pages
+#: (the release gate ``tools/check_book.py``), and for :func:`unit_text`, which sets a unit
+#: that holds one of them as math.
+PLAIN_MATH_PATTERNS = {
+    "e-notation": re.compile(r"(?<![\w.])\d+(?:\.\d+)?[eE][+-]?\d+\b"),
+    "flat subscript": re.compile(r"\b[A-Za-z]+_[A-Za-z0-9]+\b"),
+    "Greek name": re.compile(rf"\b(?:{_GREEK})(?:\d+|_\w+)?\b"),
+    "power": re.compile(r"\w\)?\^[-+(\w]|\*\*"),
+    "sqrt(": re.compile(r"\bsqrt\("),
+    "cross-product bracket": re.compile(r"\[\s*\w+\s+x\s*\]"),
+    "(x) product": re.compile(r"\(x\)"),
+    "symbol with a flat 0": re.compile(r"\b[A-Za-z]0\b"),
+    "derivative quotient": re.compile(r"\bd[A-Za-z]/d[A-Za-z]\b"),
+}
+
+#: A starred symbol (``h1*``, the hypothesis :math:`h_1^*`).
+PLAIN_STARRED = re.compile(r"(?<![\w\\*])[A-Za-z]\d?\*(?![\w*])")
+#: LaTeX source outside math (``tau_{i+1}``, ``e^{+jnv}``, ``\bar``).
+PLAIN_LATEX_SOURCE = re.compile(r"\\[A-Za-z]{2,}(?![A-Za-z])|[_^]\{")
+
+
+def plain_math(text: str) -> list[tuple[str, str]]:
+    r"""The plain-text math outside the ``$...$`` spans of ``text``: each hit of
+    ``PLAIN_MATH_PATTERNS``, a starred symbol and LaTeX source, as ``(kind, text found)``.
+
+    Examples
+    --------
+    >>> plain_math("beyond 10 mm/s^2 at rho = 0.25")
+    [('Greek name', 'rho'), ('power', 's^2')]
+    >>> plain_math(r"beyond 10 $\mathrm{mm/s}^2$ at $\rho = 0.25$")
+    []
+    """
+    found = []
+    for is_math, piece in math_spans(text):
+        if not is_math:
+            found += [
+                (kind, m.group(0)) for kind, pat in PLAIN_MATH_PATTERNS.items() for m in pat.finditer(piece)
+            ]
+            found += [("starred symbol", m.group(0)) for m in PLAIN_STARRED.finditer(piece)]
+            found += [("LaTeX source", m.group(0)) for m in PLAIN_LATEX_SOURCE.finditer(piece)]
+    return found
+
+
+#: One atom of a unit: ``sqrt(...)``, a name with an optional subscript (``tau_c``, ``N_T``) and
+#: an optional power (``m^3``, ``deg^2``, ``e^*``), or a number with an optional power (``10^8``).
+_UNIT_ATOM = re.compile(
+    r"sqrt\((?P<root>[^()]+)\)"
+    r"|(?P<name>[A-Za-z]+)(?:_(?P<sub>[A-Za-z0-9]+))?(?:\^(?P<pow>[-+]?\w+|\*))?"
+    r"|(?P<num>\d+(?:\.\d+)?)(?:\^(?P<npow>[-+]?\w+))?"
+)
+_GREEK_NAMES = frozenset(_GREEK.split("|")) - {"dtheta", "dphi"}
+
+
+def _unit_atom_tex(m: re.Match[str], symbol: bool) -> str:
+    if m.group("root"):
+        return r"\sqrt{" + _unit_tex(m.group("root"), symbol=False) + "}"
+    if m.group("num"):
+        return m.group("num") + (f"^{{{m.group('npow')}}}" if m.group("npow") else "")
+    name, sub, power = m.group("name"), m.group("sub"), m.group("pow")
+    if name in _GREEK_NAMES:
+        out = "\\" + name
+    elif symbol or sub:  # a symbol of a formula (N, N_T): italic
+        out = name
+    else:  # a unit's symbol (m, s, deg): upright
+        out = rf"\mathrm{{{name}}}"
+    if sub:
+        out += f"_{{{sub}}}"
+    if power:
+        out += f"^{{{power}}}"
+    return out
+
+
+def _unit_tex(token: str, *, symbol: bool) -> str:
+    """A token of a unit (no spaces) as LaTeX math, atom by atom; other characters as they are."""
+    out, pos = [], 0
+    for m in _UNIT_ATOM.finditer(token):
+        out.append(token[pos : m.start()] + _unit_atom_tex(m, symbol))
+        pos = m.end()
+    return "".join(out) + token[pos:]
+
+
+_SUPERSCRIPTS = str.maketrans("0123456789-+", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁺")
+#: An integer power of a unit's symbol or of a number (``m^3``, ``10^8``), and a root of one.
+_UNIT_POWER = re.compile(r"(?<=[A-Za-z0-9)])\^([-+]?\d+)(?![\w^])")
+_UNIT_ROOT = re.compile(r"\bsqrt\((\w+)\)")
+
+
+def unit_text(unit: str) -> str:
+    r"""A unit as a reader sees it: a power as a superscript, a root as a radical and a unit
+    that is a formula as ``$...$`` math; a plain unit (``m/s``, ``dB-Hz``) as it is.
+
+    The ledger keeps units as plain strings (its JSON and CSV exports carry them so); every
+    table and text a reader sees shows them through this function, with :func:`html_text` or
+    :func:`tex_text`. A unit is rewritten only when it holds plain-text math
+    (``PLAIN_MATH_PATTERNS``). A unit of symbols takes its powers and roots as the
+    registry's own units write them (``m/s²``, ``deg/h/√Hz``): superscripts and radicals in
+    the text, which stays upright and breaks after its slashes as any unit. A unit that is a
+    formula, with a Greek letter, a subscript or a symbol standing alone (the :math:`N` of
+    :math:`N\tau_{c}/\alpha`), is set as math; its words (``parts in``) stay text.
+
+    Parameters
+    ----------
+    unit : str
+        A claim's or an input's unit, as the registry holds it.
+
+    Returns
+    -------
+    str
+        The unit as text, with ``$...$`` around what is math.
+
+    Examples
+    --------
+    >>> unit_text("m/s"), unit_text("m^3/s^2"), unit_text("deg^2"), unit_text("rad/s/sqrt(s)")
+    ('m/s', 'm³/s²', 'deg²', 'rad/s/√s')
+    >>> unit_text("parts in 10^8")
+    'parts in 10⁸'
+    >>> print(unit_text("N tau_c / alpha"), unit_text("N_T"))
+    $N \tau_{c} / \alpha$ $N_{T}$
+    """
+    if not plain_math(unit):
+        return unit
+    text = _UNIT_ROOT.sub(r"√\1", _UNIT_POWER.sub(lambda m: m.group(1).translate(_SUPERSCRIPTS), unit))
+    if not plain_math(text):
+        return text
+    tokens = unit.split()
+    # a single letter standing alone is a symbol of a formula (the N of N tau_c / alpha)
+    formula = any(len(t) == 1 and t.isalpha() for t in tokens)
+    runs: list[tuple[bool, list[str]]] = []
+    for t in tokens:
+        is_word = t.isalpha() and len(t) > 1 and t not in _GREEK_NAMES
+        piece = t if is_word else _unit_tex(t, symbol=formula)
+        if runs and runs[-1][0] == (not is_word):
+            runs[-1][1].append(piece)
+        else:
+            runs.append((not is_word, [piece]))
+    return " ".join(f"${' '.join(ts)}$" if is_math else " ".join(ts) for is_math, ts in runs)
 
 
 # ---------------------------------------------------------------------------------------
@@ -891,6 +1042,46 @@ def quote_text(text: str) -> str:
 _HTML_DOLLAR = '<span class="tex2jax_ignore mathjax_ignore">$</span>'
 
 
+#: A power in a quote's words (``5 parts in 10^8``, ``e^*``): the transcription's mark for a
+#: superscript, set as math by :func:`_quote_markup`.
+_QUOTE_POWER = re.compile(r"(?<![\w^\\])(\w+)\^([-+]?\d+|\w|\*)(?![\w^])")
+#: A quote's emphasis as the transcription marks it: ``**word**`` (strong), ``*word*``.
+_QUOTE_EMPHASIS = re.compile(
+    r"\*\*(?=\S)(?P<strong>.+?)(?<=\S)\*\*|(?<![\w*])\*(?=[^\s*])(?P<em>[^*]+?)(?<=[^\s*])\*(?![\w*])"
+)
+
+
+def _quote_markup(text: str) -> str:
+    """A quote with each power its words mark (``10^8``) as ``$...$`` math, the rest as it is.
+
+    Examples
+    --------
+    >>> print(_quote_markup("better than 5 parts in 10^8, is e^* and $x^2$"))
+    better than 5 parts in $10^{8}$, is $e^{*}$ and $x^2$
+    """
+    return "".join(
+        f"${piece}$" if is_math else _QUOTE_POWER.sub(r"$\1^{\2}$", piece)
+        for is_math, piece in math_spans(text)
+    )
+
+
+def _emphasis(text: str, escape: Any, strong: str, em: str) -> str:
+    """A quote's words escaped by ``escape``, with its marked emphasis (``**word**``,
+    ``*word*``) set by the templates ``strong`` and ``em`` (``{}``: the escaped words).
+
+    Examples
+    --------
+    >>> _emphasis("the detector **deteriorates**, *a priori*", html.escape, "<b>{}</b>", "<em>{}</em>")
+    'the detector <b>deteriorates</b>, <em>a priori</em>'
+    """
+    out, pos = [], 0
+    for m in _QUOTE_EMPHASIS.finditer(text):
+        out.append(escape(text[pos : m.start()]))
+        out.append((strong if m.group("strong") else em).format(escape(m.group("strong") or m.group("em"))))
+        pos = m.end()
+    return "".join(out) + escape(text[pos:])
+
+
 def _latex_source(piece: str) -> bool:
     """Whether a piece of a quote outside its math is LaTeX source (a backslash other than an
     escaped dollar sign, ``\\$``, which is the paper's own)."""
@@ -919,8 +1110,12 @@ def _printed_tex(text: str) -> str:
     if any(_latex_source(piece) for is_math, piece in pieces if not is_math):  # LaTeX without delimiters
         return r"{\scriptsize\ttfamily " + _tex_breakable(text) + "}"
     out = []
-    for is_math, piece in pieces:
-        out.append(fit_math(quote_math(piece)) if is_math else _tex_breakable(piece.replace("\\$", "$")))
+    for is_math, piece in math_spans(_quote_markup(text)):
+        out.append(
+            fit_math(quote_math(piece))
+            if is_math
+            else _emphasis(piece.replace("\\$", "$"), _tex_breakable, r"\textbf{{{}}}", r"\emph{{{}}}")
+        )
     return "".join(out)
 
 
@@ -947,7 +1142,7 @@ def _printed_html(text: str, *, fold: int = 0) -> str:
     >>> "<details" in _printed_html("a long sentence the paper printed, word for word", fold=20)
     True
     """
-    if len(text) <= 16 and "$" not in text and "\\" not in text:
+    if len(text) <= 16 and not any(ch in text for ch in "$\\^*"):
         return _nowrap(text)
     text = _DISPLAY.sub(lambda m: "$" + _EQ_NUMBER.sub("", m.group(1)).strip() + "$", text)
     pieces = math_spans(text)
@@ -955,9 +1150,13 @@ def _printed_html(text: str, *, fold: int = 0) -> str:
         body = f'<code class="ledger-latex">{html.escape(text)}</code>'
     else:
         out = []
-        for is_math, piece in pieces:
+        for is_math, piece in math_spans(_quote_markup(text)):
             if not is_math:  # a dollar sign of the paper's (a price) is not a math delimiter
-                out.append(html.escape(piece).replace("\\$", _HTML_DOLLAR))
+                out.append(
+                    _emphasis(piece, html.escape, "<strong>{}</strong>", "<em>{}</em>").replace(
+                        "\\$", _HTML_DOLLAR
+                    )
+                )
                 continue
             piece = quote_math(piece)
             span = f'<span class="math notranslate nohighlight">\\({html.escape(piece)}\\)</span>'
@@ -972,6 +1171,20 @@ def _reproduced_text(e: Evaluation) -> str:
     if _is_truth(e.reproduced):
         return _statement_word(bool(e.reproduced), printed=False)
     return _plain_with_unit(format_value(e.reproduced), e.claim.unit)
+
+
+def _value_html(text: str) -> str:
+    r"""A value with its unit (:func:`_plain_with_unit`) as HTML: the number and a plain unit
+    kept on one line (:func:`_nowrap`), a unit set as math typeset.
+
+    Examples
+    --------
+    >>> print(_value_html("3.986×10¹⁴ $\\mathrm{m}^{3}$"))
+    3.986×10¹⁴&nbsp;<span class="math notranslate nohighlight">\(\mathrm{m}^{3}\)</span>
+    """
+    return "".join(
+        html_text(f"${piece}$") if is_math else _nowrap(piece) for is_math, piece in math_spans(text)
+    )
 
 
 def _nowrap(text: str) -> str:
@@ -1026,7 +1239,7 @@ def _band_text(e: Evaluation) -> str:
     left_out = left_out_of_band(e)
     return (
         f"{format_value(lo)} to {format_value(hi)}"
-        + (f" {e.claim.unit}" if e.claim.unit not in ("", "statement") else "")
+        + (f" {unit_text(e.claim.unit)}" if e.claim.unit not in ("", "statement") else "")
         + (f" (left out, outside the model's domain: {left_out})" if left_out else "")
     )
 
@@ -1358,7 +1571,7 @@ class LedgerTable:
                 cells = (
                     ("ledger-what", "", what),
                     ("ledger-value", "Printed", _printed_html(_printed_text(e))),
-                    ("ledger-value", "Reproduced", _nowrap(_reproduced_text(e))),
+                    ("ledger-value", "Reproduced", _value_html(_reproduced_text(e))),
                     ("ledger-verdict", "Verdict", self._verdict_html(e)),
                     ("ledger-kind", "Kind", f'<span class="ledger-kind-label">{kind}</span>'),
                 )
@@ -1431,7 +1644,7 @@ class LedgerTable:
                 cells = [
                     what,
                     _printed_tex(_printed_text(e)),
-                    _tex_escape(_reproduced_text(e)),
+                    tex_text(_reproduced_text(e)),
                     verdict,
                 ]
                 last = index == len(g.evals) - 1
@@ -1953,8 +2166,11 @@ def _band_html(record: dict[str, Any], unit: str) -> str:
         if low == high:
             return "holds throughout" if low else "fails throughout"
         return "holds for some inputs"
-    ends = format_value(low), format_value(high) + (f" {unit}" if unit not in ("", "statement") else "")
-    return f"{_nowrap(ends[0])} –&nbsp;{_nowrap(ends[1])}"
+    ends = (
+        format_value(low),
+        format_value(high) + (f" {unit_text(unit)}" if unit not in ("", "statement") else ""),
+    )
+    return f"{_nowrap(ends[0])} –&nbsp;{_value_html(ends[1])}"
 
 
 def _left_out_brief(e: Evaluation) -> str:
@@ -2073,7 +2289,7 @@ class InteractiveLedger:
                 "locator": html.escape(r["locator"]),
                 "quantity": f"{html_text(r['quantity'])}<details><summary>note</summary>{note}</details>",
                 "published": _printed_html(_printed_text(e), fold=40),
-                "reproduced": _nowrap(_reproduced_text(e)),
+                "reproduced": _value_html(_reproduced_text(e)),
                 "band": _band_html(rec, r["unit"])
                 + (
                     f'<br><span class="ledger-reading">{html.escape(_left_out_brief(e))}</span>'

@@ -24,6 +24,7 @@ from navcore.ledger.core import (
     Evaluation,
 )
 from navcore.ledger.inputs import Input, get_input
+from navcore.ledger.render import unit_text
 
 __all__ = [
     "assumed_inputs_frame",
@@ -508,7 +509,7 @@ def assumed_inputs_frame(evals: Sequence[Evaluation]) -> Any:
                 "Input": _label(inp),
                 "Nominal": _fmt(inp.value),
                 "Range": f"{_fmt(inp.low)} to {_fmt(inp.high)}",
-                "Unit": inp.unit,
+                "Unit": unit_text(inp.unit),
                 "Reason": inp.reason,
                 "Claims": len(readers),
             }
@@ -557,7 +558,7 @@ def fitted_inputs_frame(evals: Sequence[Evaluation]) -> Any:
             "Paper": inp.paper,
             "Parameter": _label(inp),
             "Value": _fmt(inp.value),
-            "Unit": inp.unit,
+            "Unit": unit_text(inp.unit),
             "Fitted to": _breakable(", ".join(inp.fitted_to)),
             "Reason": inp.reason,
             "Claims reading it": len(readers),
@@ -646,7 +647,7 @@ def convention_inputs_frame(evals: Sequence[Evaluation]) -> Any:
                 "Convention": _label(inp),
                 "Reading used": _reading(inp.nominal_label, inp.value),
                 "Other readings": "; ".join(_reading(label, v) for label, v in inp.other_readings),
-                "Unit": inp.unit,
+                "Unit": unit_text(inp.unit),
                 "Reason": inp.reason,
                 "Claims": len(readers),
                 "Agree only under another reading": _breakable(", ".join(only_other)),
@@ -714,7 +715,7 @@ def sensitivity_frame(evals: Sequence[Evaluation]) -> Any:
             row = dict(e.sensitivity).get(inp.name)
             if row is None:
                 continue
-            unit = e.claim.unit if e.claim.unit != "statement" else ""
+            unit = unit_text(e.claim.unit) if e.claim.unit != "statement" else ""
             rows.append(
                 {
                     "Assumed input / claim": f"{label}: " + _breakable(e.claim.id),

@@ -63,15 +63,9 @@ PAGE_EXAMPLES = "atc10/32-tracking-examples"
 
 EXAMPLES = ("I", "II")
 COLUMNS = ("beta", "trace_all", "trace_123", "s_all", "s_123")
+#: The columns' quantities as a reader sees them, formulas as inline math: the page's Table 4.2
+#: and the claims' quantities
 COLUMN_NAMES = {
-    "beta": "beta",
-    "trace_all": "tr{(F'F)^-1}, all satellites",
-    "trace_123": "tr{(F'F)^-1}, satellites 1,2,3",
-    "s_all": "1'F(F'F)^-2F'1, all satellites",
-    "s_123": "1'F(F'F)^-2F'1, satellites 1,2,3",
-}
-#: the same names with inline math, for the claims' quantities
-_COLUMN_MATH = {
     "beta": r"$\beta$",
     "trace_all": r"$\operatorname{tr}\{(F'F)^{-1}\}$, all satellites",
     "trace_123": r"$\operatorname{tr}\{(F'F)^{-1}\}$, satellites 1,2,3",
@@ -191,7 +185,7 @@ for _ex in EXAMPLES:
             f"tab42_ex{_ex}_{_col}",
             float(TABLE_4_2[_ex][_col]),
             locator="Table 4.2",
-            quantity=f"Example {_ex}: {_COLUMN_MATH[_col]}",
+            quantity=f"Example {_ex}: {COLUMN_NAMES[_col]}",
         )
 for _ex in EXAMPLES:
     for _col in COLUMNS:
@@ -201,7 +195,7 @@ for _ex in EXAMPLES:
             0.0,
             low=-_half,
             high=_half,
-            quantity=f"Example {_ex}: {_COLUMN_MATH[_col]}, the paper's unrounded value minus the printed "
+            quantity=f"Example {_ex}: {COLUMN_NAMES[_col]}, the paper's unrounded value minus the printed "
             + TABLE_4_2[_ex][_col],
             reason="Table 4.3 was computed from Table 4.2 before its rounding to the printed digits; the "
             "unrounded value lies within half a unit of the last printed digit (the range)",
@@ -1048,7 +1042,7 @@ for _ex in EXAMPLES:
                 id=_cid + "-physical",
                 paper="ATC10",
                 locator="Table 4.2",
-                quantity=f"Example {_ex}: {_COLUMN_MATH[_col]}, physical geometry",
+                quantity=f"Example {_ex}: {COLUMN_NAMES[_col]}, physical geometry",
                 published=_pub,
                 unit="",
                 kind="reproduction",
@@ -1081,7 +1075,7 @@ for _ex in EXAMPLES:
                 id=_cid + "-fitted",
                 paper="ATC10",
                 locator="Table 4.2",
-                quantity=f"Example {_ex}: {_COLUMN_MATH[_col]}, fitted radius ratio",
+                quantity=f"Example {_ex}: {COLUMN_NAMES[_col]}, fitted radius ratio",
                 published=_pub,
                 unit="",
                 kind="fit",
