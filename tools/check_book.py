@@ -279,13 +279,9 @@ NOT_FORMULA_PAGES = {
 #: ``text`` on a page that ``pages`` matches (a glob) passes. Each is for the page's or the
 #: registry's owner to fix; keep the list short: an entry that no longer occurs fails the gate.
 PLAIN_TEXT_ALLOWED: dict[tuple[str, str], str] = {
-    # the ledger's words for a reading of an input (navcore.ledger.core, _reading_words) append
-    # the input's unit as the registry holds it, without the unit formatter of the tables
-    ("atc10/3[0-2]-*.html", "( m^3/s^2)"): "a reading's unit in a claim's note (ledger core)",
-    ("kzl/00-requirements.html", "( m^3/s^2)"): "a reading's unit in a claim's note (ledger core)",
-    ("ledger.html", "( m^3/s^2)"): "a reading's unit in a claim's note (ledger core)",
-    # SP's pages and the glossary write the carrier-to-noise density ratio as C/N0 in prose
-    ("sp/*.html", "C/N0"): "SP's prose (its pages are being changed by the lead): C/N_0 as math",
+    # SP's claim texts, figure labels and model docstrings (navcore) and the glossary write the
+    # carrier-to-noise density ratio as C/N0; the SP pages' own prose sets it as math
+    ("sp/*.html", "C/N0"): "SP's claim texts and figure labels from navcore: C/N_0 as math there",
     ("glossary.html", "C/N0"): "the glossary's entry and definition of C/N_0, in prose",
     # an erratum's quote of the paper, stored in the registry with the Greek letter spelled out
     ("errata.html", "independence of rho(i,j)"): "the stored quote of an ATC-10 erratum (registry data)",
@@ -294,7 +290,6 @@ PLAIN_TEXT_ALLOWED: dict[tuple[str, str], str] = {
     # KZL names its antennas A0, A1, ...: labels, not formulas
     ("kzl/02-error-model.html", "A0"): "KZL's name of its master antenna, a label",
     ("ledger.html", "master antenna (A0)"): "KZL's name of its master antenna in a quote, a label",
-    ("kzl/89-summary.html", "arctan_2"): "KZL's prose names the paper's two-argument arctangent",
     # WF's pages: a formula in a table's text
     ("wf/03-local-estimators.html", "1/k_i"): "WF's table of the estimators' weights (Eq. (22))",
     ("wf/02-velocity-sensitivity.html", "f0/"): "WF's table of the Doppler sensitivities",

@@ -1381,6 +1381,7 @@ class Evaluation:
                     changed.append(f"the printed number's {label}")
                 continue
             quantity, in_unit = _label_and_unit(name)
+            in_unit = _unit_text(in_unit)
             try:
                 inp = get_input(name)
             except ValueError:
@@ -1399,7 +1400,7 @@ class Evaluation:
 
     def _reading_text(self, reading: dict[str, Any]) -> str:
         """One reading other than the one used, in words: what differs and what it gives."""
-        unit = "" if self.claim.unit in ("", "statement") else f" {self.claim.unit}"
+        unit = "" if self.claim.unit in ("", "statement") else f" {_unit_text(self.claim.unit)}"
         changed = self._reading_words(reading)
         value = reading["value"]
         band = reading.get("band")
@@ -1532,6 +1533,14 @@ class Evaluation:
             "status": self.status,
             "note": self.note(),
         }
+
+
+def _unit_text(unit: str) -> str:
+    """A unit as a reader sees it in a note (:func:`navcore.ledger.render.unit_text`: ``m³/s²``,
+    not ``m^3/s^2``); the render module imports this one, so it is imported when first needed."""
+    from navcore.ledger.render import unit_text
+
+    return unit_text(unit) if unit else unit
 
 
 def _plain(value: Any) -> str:
