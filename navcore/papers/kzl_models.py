@@ -458,7 +458,8 @@ ERRATA = [
         kind="convention",
         basis="text-only",
         locator="Eq. (11)",
-        printed="$F_{23} = [a \\times] = [[0, a_d, -a_e], [-a_d, 0, a_n], [a_e, -a_n, 0]]$",
+        printed="$F_{23} = [a \\times] = \\begin{bmatrix} 0 & a_d & -a_e \\\\ -a_d & 0 & a_n \\\\ "
+        "a_e & -a_n & 0 \\end{bmatrix}$",
         finding="The explicit matrix is minus the usual cross-product matrix: $[a "
         "\\times]_{\\text{paper}}\\, b = b \\times a$. "
         "The explicit matrix is the right $F_{23}$ for error = estimated - true and "
