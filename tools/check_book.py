@@ -290,9 +290,6 @@ PLAIN_TEXT_ALLOWED: dict[tuple[str, str], str] = {
     # KZL names its antennas A0, A1, ...: labels, not formulas
     ("kzl/02-error-model.html", "A0"): "KZL's name of its master antenna, a label",
     ("ledger.html", "master antenna (A0)"): "KZL's name of its master antenna in a quote, a label",
-    # WF's pages: a formula in a table's text
-    ("wf/03-local-estimators.html", "1/k_i"): "WF's table of the estimators' weights (Eq. (22))",
-    ("wf/02-velocity-sensitivity.html", "f0/"): "WF's table of the Doppler sensitivities",
 }
 
 #: What a program printed or a reader types, which the plain-text math gate leaves out beside
