@@ -600,6 +600,19 @@ def plain_math(text: str) -> list[tuple[str, str]]:
     r"""The plain-text math outside the ``$...$`` spans of ``text``: each hit of
     ``PLAIN_MATH_PATTERNS``, a starred symbol and LaTeX source, as ``(kind, text found)``.
 
+    Parameters
+    ----------
+    text : str
+        A text a reader sees (a note, a quantity, a unit, a page's words), with its math in
+        ``$...$``.
+
+    Returns
+    -------
+    list of (str, str)
+        Each hit as its kind (a key of ``PLAIN_MATH_PATTERNS``, ``"starred symbol"`` or
+        ``"LaTeX source"``) and the text it found, in the order of the patterns; empty when
+        every formula is set as math.
+
     Examples
     --------
     >>> plain_math("beyond 10 mm/s^2 at rho = 0.25")
