@@ -732,18 +732,15 @@ def _stack_rows(parts: Sequence[tuple[Array, Array]]) -> tuple[Array, Array]:
 
 
 class _Propagator:
-    """``P <- Phi P Phi^T + Q`` for a stack of covariances, and the diagonals of the
-    intermediate samples of a composite step (only the rows of the dynamic states are
-    transformed there: a static state, with a unit transition row and no noise, keeps its
-    variance exactly)."""
+    """A composite step's transition and noise (``Phi``, ``Q``; the step itself goes through
+    :func:`_propagate`) and the diagonals of its intermediate samples (only the rows of the
+    dynamic states are transformed there: a static state, with a unit transition row and no
+    noise, keeps its variance exactly)."""
 
     def __init__(self, Phi: Array, Q: Array) -> None:
         self.n = Phi.shape[0]
         self.Phi, self.Q = Phi, Q
         self.D = np.flatnonzero(~_static_states(Phi, Q))
-
-    def __call__(self, P: Array) -> Array:
-        return self.Phi @ P @ self.Phi.T + self.Q
 
     def diagonals(self, P: Array, powers: Array, noise_diag: Array) -> Array:
         """``diag(Phi^i P Phi^iT) + diag(Q_i)`` for the stacked ``powers`` ``(L, n, n)`` of the
