@@ -226,3 +226,26 @@ def test_k_figure_draws_the_paper_axis_only_when_the_curves_change_over_more_tha
     assert len(curves) == 5  # one per t
     for curve in curves:
         assert (curve.x[0], curve.x[-1]) == pytest.approx(drawn, abs=1e-12)
+
+
+#: (figure id, its paper): ids with one dash and with two, of three papers.
+SPEC_CASES = [("KZL-fig1", "KZL"), ("ATC10-ma-tails", "ATC10"), ("SP-fig2.1", "SP")]
+
+
+def test_spec_reads_only_its_papers_figure_modules(monkeypatch):
+    """Oracle: the contract of :func:`navcore.figures.spec`, by hand: a figure is found
+    through its own paper's modules (the paper key is the id up to its first dash), never by
+    importing every figure module (the whole registry); an unknown id is refused with the
+    known ones listed."""
+    papers: list[str | None] = []
+    discover = figures._discover
+    monkeypatch.setattr(figures, "_discover", lambda paper=None: (papers.append(paper), discover(paper))[1])
+    monkeypatch.setattr(figures, "registry", lambda: pytest.fail("spec read the whole registry"))
+    for fig_id, paper in SPEC_CASES:
+        found = figures.spec(fig_id)
+        assert (found.id, found.paper) == (fig_id, paper)
+    assert papers == [paper for _, paper in SPEC_CASES]
+    monkeypatch.undo()
+    for unknown in ("KZL-fig99", "XY-fig1", "nodash"):
+        with pytest.raises(ValueError, match=rf"fig_id '{unknown}' is not registered; known: \[.*'KZL-fig1'"):
+            figures.spec(unknown)
