@@ -249,3 +249,48 @@ def test_spec_reads_only_its_papers_figure_modules(monkeypatch):
     for unknown in ("KZL-fig99", "XY-fig1", "nodash"):
         with pytest.raises(ValueError, match=rf"fig_id '{unknown}' is not registered; known: \[.*'KZL-fig1'"):
             figures.spec(unknown)
+
+
+def test_write_creates_the_folders_and_leaves_out_the_date_and_the_software_version(tmp_path):
+    """Oracle: the files read back, by hand: :func:`navcore.figures.write` creates missing
+    folders (two levels here), keeps the dot of an id, and writes no date into the SVG and no
+    matplotlib version into the PNG (the book's two builds must give the same bytes). A second
+    write into the same folder succeeds."""
+    from PIL import Image
+
+    fig, ax = plt.subplots()
+    try:
+        ax.plot([0.0, 1.0], [0.0, 1.0])
+        stem = tmp_path / "new" / "deeper" / "ATC10-fig2.16"
+        svg, png = figures.write(fig, stem)
+        assert figures.write(fig, stem) == [svg, png]
+    finally:
+        plt.close(fig)
+    assert (svg.name, png.name, svg.parent) == ("ATC10-fig2.16.svg", "ATC10-fig2.16.png", stem.parent)
+    text = svg.read_text(encoding="utf-8")
+    assert text.startswith("<?xml") and "<svg" in text and "dc:date" not in text
+    with Image.open(png) as image:
+        assert image.format == "PNG" and "Software" not in image.text
+
+
+def test_tidy_legends_moves_every_covering_legend_of_a_figure():
+    """Oracle: hand-made panels, by hand: in three panels side by side, the first legend covers
+    nothing and stays in the upper right; the second and the third each cover a line through
+    the upper right corner, and each moves to the upper left, the next place in the book's
+    order of corners (a legend that moves does not end the tidying of the others)."""
+    figures.apply_style()
+    fig, axes = plt.subplots(1, 3, figsize=(9.0, 3.0))
+    try:
+        legends = []
+        for i, ax in enumerate(axes):
+            ax.set_xlim(0.0, 1.0)
+            ax.set_ylim(0.0, 1.0)
+            y = 0.05 if i == 0 else 0.95  # along the bottom, or through the upper right corner
+            ax.plot([0.6, 1.0], [y, y], label=f"line {i}")
+            legends.append(ax.legend(loc="upper right"))
+        figures.tidy_legends(fig)
+        assert [legend._loc for legend in legends] == [1, 2, 2]  # upper right, upper left
+        fig.canvas.draw()
+        assert [figures._covered(ax, legend) for ax, legend in zip(axes, legends, strict=True)] == [0, 0, 0]
+    finally:
+        plt.close(fig)
