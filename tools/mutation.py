@@ -203,7 +203,9 @@ PACKAGES: dict[str, Package] = {
         ["test_units.py", "test_validate.py", "test_api_inputs.py"],
         not_mutated=[],
     ),
-    "figures": Package(["navcore/figures/*"], ["test_figures.py", "test_figure_data.py"]),
+    "figures": Package(
+        ["navcore/figures/*"], ["test_figures.py", "test_figure_data.py", "test_figures_mutants.py"]
+    ),
     "papers": Package(
         ["navcore/papers/*"],
         [
