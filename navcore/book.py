@@ -32,6 +32,7 @@ from navcore.ledger.render import (
     FindingsTable,
     InteractiveLedger,
     LedgerTable,
+    _math_breaks,
     latex_table,
     math_spans,
 )
@@ -462,87 +463,6 @@ def _tidy_html(table_html: str, *, math_breaks: bool = False) -> str:
     parts = re.split(r"(<[A-Za-z/!][^<>]*>)", body)
     body = "".join(part if i % 2 else cell(part) for i, part in enumerate(parts))
     return head + sep + body
-
-
-#: A formula of more characters than this (spaces aside) may break in a table of text.
-_LONG_FORMULA = 12
-_TEX_TOKEN = re.compile(r"\\[A-Za-z]+|\\.|\s+|.", re.S)
-#: TeX breaks inline math after a relation or a binary operator at the formula's outer level
-_TEX_RELATIONS = frozenset(
-    ["=", "<", ">", r"\le", r"\leq", r"\ge", r"\geq", r"\ne", r"\neq", r"\approx", r"\sim",
-     r"\simeq", r"\equiv", r"\propto", r"\to", r"\rightarrow", r"\ll", r"\gg"]
-)  # fmt: skip
-_TEX_BINARY = frozenset(["+", "-", r"\pm", r"\mp", r"\times", r"\cdot"])
-_TEX_OPEN = frozenset(["(", "[", r"\{", r"\langle", r"\lvert", r"\lVert"])
-_TEX_CLOSE = frozenset([")", "]", r"\}", r"\rangle", r"\rvert", r"\rVert"])
-_TEX_BARS = frozenset(["|", r"\|", r"\vert", r"\Vert"])
-
-
-def _math_breaks(tex: str) -> list[str]:
-    r"""A long inline formula cut where TeX may break it in a paragraph: after a relation or a
-    binary operator at its outer level (not inside braces, brackets or bars).
-
-    MathJax 3 never breaks an inline formula, so in a table of text one long formula sets
-    the least width of its column however the words around it wrap. Each piece but the last
-    ends with an empty group, so that its operator keeps the spacing it has between two
-    operands; the pieces set side by side read as the whole formula. A formula of at most
-    ``_LONG_FORMULA`` characters, and a last piece of fewer than three, stay whole.
-
-    Examples
-    --------
-    >>> _math_breaks(r"\mathrm{Exp}_g = a^2/(2p)")
-    ['\\mathrm{Exp}_g ={}', 'a^2/(2p)']
-    >>> _math_breaks(r"C/N_0 - 10\log_{10} B_L")
-    ['C/N_0 -{}', '10\\log_{10} B_L']
-    >>> _math_breaks(r"|\ln \mathrm{bound} - \ln p_f|"), _math_breaks("P_{DL} = 0.999")
-    (['|\\ln \\mathrm{bound} - \\ln p_f|'], ['P_{DL} = 0.999'])
-    >>> _math_breaks(r"\left| a - b \right| = -c + d^{-1}")
-    ['\\left| a - b \\right| ={}', '-c +{}', 'd^{-1}']
-    """
-    if len(re.sub(r"\s", "", tex)) <= _LONG_FORMULA:
-        return [tex]
-    cuts: list[int] = []
-    braces, fences = 0, []
-    prev = ""  # the previous token at the outer level ("" at the start)
-    delimiter = False  # the token after \left or \right
-    for m in _TEX_TOKEN.finditer(tex):
-        tok = m.group(0)
-        if tok.isspace():
-            continue
-        if delimiter:
-            delimiter = False
-            continue
-        braces += {"{": 1, "}": -1}.get(tok, 0)
-        if braces or tok == "}":
-            prev = "}"
-            continue
-        if tok in (r"\left", r"\right"):
-            if tok == r"\left":
-                fences.append(tok)
-            elif fences:
-                fences.pop()
-            delimiter, prev = True, ")"
-            continue
-        if tok in _TEX_OPEN or (tok in _TEX_BARS and not (fences and fences[-1] == tok)):
-            fences.append(tok)
-            prev = "("
-            continue
-        if tok in _TEX_CLOSE or tok in _TEX_BARS:
-            if fences:
-                fences.pop()
-            prev = ")"
-            continue
-        operators = _TEX_RELATIONS | _TEX_BINARY
-        operand_before = prev and prev not in ("(", "^", "_", ",") and prev not in operators
-        if not fences and operand_before and tok in operators:
-            cuts.append(m.end())
-        prev = tok
-    pieces, start = [], 0
-    for cut in cuts:
-        if len(re.sub(r"\s", "", tex[cut:])) >= 3:
-            pieces.append(tex[start:cut].strip() + "{}")
-            start = cut
-    return [*pieces, tex[start:].strip()]
 
 
 def _styler_html(styler: Any) -> str:

@@ -736,9 +736,11 @@ def test_printed_cells():
         == '<span class="math notranslate nohighlight">\\(x = 1\\)</span>'
     )
     wide = "$a + b + c + d + e + f + g + h$"
+    # a long formula in its own box, cut after each outer operator (where TeX may break it)
+    span = '<span class="math notranslate nohighlight">\\({}\\)</span>'
+    pieces = [f"{x} +{{}}" for x in "abcdef"] + ["g + h"]
     assert _printed_html(wide) == (
-        '<span class="ledger-math-wide"><span class="math notranslate nohighlight">'
-        "\\(a + b + c + d + e + f + g + h\\)</span></span>"
+        '<span class="ledger-math-wide">' + "<wbr>".join(span.format(p) for p in pieces) + "</span>"
     )
     assert _printed_html("costs 50 \\$ per unit, or more") == (
         'costs 50 <span class="tex2jax_ignore mathjax_ignore">$</span> per unit, or more'

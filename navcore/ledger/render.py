@@ -767,6 +767,88 @@ def math_spans(text: str) -> list[tuple[bool, str]]:
     return out
 
 
+#: A formula of more characters than this (spaces aside) may break in a table of text or a
+#: claim row.
+_LONG_FORMULA = 12
+_TEX_TOKEN = re.compile(r"\\[A-Za-z]+|\\.|\s+|.", re.S)
+#: TeX breaks inline math after a relation or a binary operator at the formula's outer level
+_TEX_RELATIONS = frozenset(
+    ["=", "<", ">", r"\le", r"\leq", r"\ge", r"\geq", r"\ne", r"\neq", r"\approx", r"\sim",
+     r"\simeq", r"\equiv", r"\propto", r"\to", r"\rightarrow", r"\ll", r"\gg"]
+)  # fmt: skip
+_TEX_BINARY = frozenset(["+", "-", r"\pm", r"\mp", r"\times", r"\cdot"])
+_TEX_OPEN = frozenset(["(", "[", r"\{", r"\langle", r"\lvert", r"\lVert"])
+_TEX_CLOSE = frozenset([")", "]", r"\}", r"\rangle", r"\rvert", r"\rVert"])
+_TEX_BARS = frozenset(["|", r"\|", r"\vert", r"\Vert"])
+
+
+def _math_breaks(tex: str) -> list[str]:
+    r"""A long inline formula cut where TeX may break it in a paragraph: after a relation or a
+    binary operator at its outer level (not inside braces, brackets or bars).
+
+    MathJax 3 never breaks an inline formula, so in a table of text one long formula sets
+    the least width of its column however the words around it wrap. Each piece but the last
+    ends with an empty group, so that its operator keeps the spacing it has between two
+    operands; the pieces set side by side read as the whole formula. A formula of at most
+    ``_LONG_FORMULA`` characters, and a last piece of fewer than three, stay whole.
+
+    Examples
+    --------
+    >>> _math_breaks(r"\mathrm{Exp}_g = a^2/(2p)")
+    ['\\mathrm{Exp}_g ={}', 'a^2/(2p)']
+    >>> _math_breaks(r"C/N_0 - 10\log_{10} B_L")
+    ['C/N_0 -{}', '10\\log_{10} B_L']
+    >>> _math_breaks(r"|\ln \mathrm{bound} - \ln p_f|"), _math_breaks("P_{DL} = 0.999")
+    (['|\\ln \\mathrm{bound} - \\ln p_f|'], ['P_{DL} = 0.999'])
+    >>> _math_breaks(r"\left| a - b \right| = -c + d^{-1}")
+    ['\\left| a - b \\right| ={}', '-c +{}', 'd^{-1}']
+    """
+    if len(re.sub(r"\s", "", tex)) <= _LONG_FORMULA:
+        return [tex]
+    cuts: list[int] = []
+    braces, fences = 0, []
+    prev = ""  # the previous token at the outer level ("" at the start)
+    delimiter = False  # the token after \left or \right
+    for m in _TEX_TOKEN.finditer(tex):
+        tok = m.group(0)
+        if tok.isspace():
+            continue
+        if delimiter:
+            delimiter = False
+            continue
+        braces += {"{": 1, "}": -1}.get(tok, 0)
+        if braces or tok == "}":
+            prev = "}"
+            continue
+        if tok in (r"\left", r"\right"):
+            if tok == r"\left":
+                fences.append(tok)
+            elif fences:
+                fences.pop()
+            delimiter, prev = True, ")"
+            continue
+        if tok in _TEX_OPEN or (tok in _TEX_BARS and not (fences and fences[-1] == tok)):
+            fences.append(tok)
+            prev = "("
+            continue
+        if tok in _TEX_CLOSE or tok in _TEX_BARS:
+            if fences:
+                fences.pop()
+            prev = ")"
+            continue
+        operators = _TEX_RELATIONS | _TEX_BINARY
+        operand_before = prev and prev not in ("(", "^", "_", ",") and prev not in operators
+        if not fences and operand_before and tok in operators:
+            cuts.append(m.end())
+        prev = tok
+    pieces, start = [], 0
+    for cut in cuts:
+        if len(re.sub(r"\s", "", tex[cut:])) >= 3:
+            pieces.append(tex[start:cut].strip() + "{}")
+            start = cut
+    return [*pieces, tex[start:].strip()]
+
+
 def html_text(text: str, *, wide: int = 0) -> str:
     r"""Escaped HTML with ``$...$`` as MathJax inline math, marked up as Sphinx does.
 
@@ -776,9 +858,11 @@ def html_text(text: str, *, wide: int = 0) -> str:
         A note, quantity or erratum text (:func:`math_spans` says what is math).
     wide : int, optional
         A math piece longer than this many characters is wrapped in a
-        ``<span class="ledger-math-wide">``, which the book's style sheet lets scroll inside
-        its own box in a table cell (0: never), so that one long formula does not widen its
-        column past the page.
+        ``<span class="ledger-math-wide">`` (0: never), so that one long formula does not
+        widen its column past the page: it is cut where TeX may break it
+        (:func:`_math_breaks`), its pieces joined by line-break opportunities, so that it
+        wraps inside its box; a piece still wider than the box is set smaller by the book's
+        equation fitting, and scrolls inside the box only beyond that.
 
     Returns
     -------
@@ -792,15 +876,30 @@ def html_text(text: str, *, wide: int = 0) -> str:
     gain <span class="math notranslate nohighlight">\(K_1 &lt; 2\)</span> &amp; more
     >>> print(html_text("$x = a + b$", wide=5))
     <span class="ledger-math-wide"><span class="math notranslate nohighlight">\(x = a + b\)</span></span>
+    >>> out = html_text("$x_{\\rm long} = a + b$", wide=5)
+    >>> print(out.replace(' class="math notranslate nohighlight"', ""))
+    <span class="ledger-math-wide"><span>\(x_{\rm long} ={}\)</span><wbr><span>\(a + b\)</span></span>
     """
     out = []
     for is_math, piece in math_spans(text):
-        if not is_math:
-            out.append(html.escape(piece))
-            continue
-        span = f'<span class="math notranslate nohighlight">\\({html.escape(piece)}\\)</span>'
-        out.append(f'<span class="ledger-math-wide">{span}</span>' if wide and len(piece) > wide else span)
+        out.append(_math_html(piece, wide) if is_math else html.escape(piece))
     return "".join(out)
+
+
+def _math_html(piece: str, wide: int) -> str:
+    r"""A formula as MathJax inline math; one longer than ``wide`` characters (``wide`` > 0) in
+    a ``ledger-math-wide`` box, cut where TeX may break it (:func:`_math_breaks`).
+
+    Examples
+    --------
+    >>> print(_math_html("K_1", 24))
+    <span class="math notranslate nohighlight">\(K_1\)</span>
+    """
+    span = '<span class="math notranslate nohighlight">\\({}\\)</span>'
+    if not wide or len(piece) <= wide:
+        return span.format(html.escape(piece))
+    pieces = "<wbr>".join(span.format(html.escape(p)) for p in _math_breaks(piece))
+    return f'<span class="ledger-math-wide">{pieces}</span>'
 
 
 def tex_text(text: str) -> str:
@@ -1134,9 +1233,10 @@ def _printed_tex(text: str) -> str:
 
 def _printed_html(text: str, *, fold: int = 0) -> str:
     r"""The Printed cell of an HTML claim table: the paper's words as text and its formulas as
-    MathJax math (a display formula inline, without its equation number), a formula too wide
-    for a narrow column scrolling inside its own box, and LaTeX transcribed without math
-    delimiters as small source text that may break anywhere. A short value stays on one line.
+    MathJax math (a display formula inline, without its equation number), a long formula in a
+    box of its own, cut where TeX may break it so that it wraps in a narrow column
+    (:func:`_math_html`), and LaTeX transcribed without math delimiters as small source text
+    that may break anywhere. A short value stays on one line.
 
     Parameters
     ----------
@@ -1171,9 +1271,7 @@ def _printed_html(text: str, *, fold: int = 0) -> str:
                     )
                 )
                 continue
-            piece = quote_math(piece)
-            span = f'<span class="math notranslate nohighlight">\\({html.escape(piece)}\\)</span>'
-            out.append(span if len(piece) <= 24 else f'<span class="ledger-math-wide">{span}</span>')
+            out.append(_math_html(quote_math(piece), _FIT_MATH_CHARS))
         body = "".join(out)
     if fold and len(text) > fold:
         return f'<details class="ledger-quote"><summary>quote</summary>{body}</details>'
