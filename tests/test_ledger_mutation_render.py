@@ -889,6 +889,26 @@ def test_cells_with_strings_and_bounds():
     assert _inputs_text(dataclasses.replace(e, inputs=words)) == "mode = tracking (published, T1)"
 
 
+def test_a_conventions_code_word_shows_as_its_readings_words():
+    """A convention's value that is a code word ("C/N0", "loop") shows as the words of its
+    reading, as the conventions table shows it: "$C/N_0$ in dB-Hz", set as math, never cut.
+    Oracle: the readings SP's flyby declares for its signal-to-noise measure."""
+    import dataclasses
+
+    from navcore.ledger.inputs import get_input
+    from navcore.ledger.render import _inputs_text
+    from navcore.papers import sp_flyby  # noqa: F401  (declares the input)
+
+    name = "SP.flyby.snr_measure"
+    readings = dict((v, label) for label, v in get_input(name).readings)
+    e = _ev("SP-c1", "Eq. (1)", "n")
+    for code in ("C/N0", "loop"):
+        inputs = ({"name": name, "provenance": "convention", "value": code},)
+        text = _inputs_text(dataclasses.replace(e, inputs=inputs))
+        assert text.endswith(f" = {readings[code]} (convention)") and f"= {code} (" not in text
+    assert readings["C/N0"] == "$C/N_0$ in dB-Hz"
+
+
 def _word_input() -> str:
     """A registered input with a unit whose value is a word (the unit is not appended to words)."""
     from navcore.ledger import InputSet

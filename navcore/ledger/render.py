@@ -30,7 +30,7 @@ from navcore.ledger.core import (
     left_out_of_band,
 )
 from navcore.ledger.core import _is_truth as _core_is_truth
-from navcore.ledger.inputs import _label_and_unit
+from navcore.ledger.inputs import _label_and_unit, get_input
 from navcore.ledger.registry import counts, errata, evaluations
 from navcore.provenance import BuildProvenance, build_provenance
 
@@ -1320,19 +1320,35 @@ def _tolerance_text(e: Evaluation) -> str:
     return f"{size}: {reason}" if reason else size
 
 
+def _reading_label(name: str, value: Any) -> str | None:
+    """The words of a convention's reading whose value is the code word ``value`` (``"C/N0"``:
+    "$C/N_0$ in dB-Hz"), as the conventions table shows it; ``None`` for anything else."""
+    if not isinstance(value, str):
+        return None
+    try:
+        inp = get_input(name)
+    except (KeyError, ValueError):
+        return None
+    return next((label for label, v in inp.readings if v == value), None)
+
+
 def _inputs_text(e: Evaluation) -> str:
-    """The inputs the computation read: name, value, where it comes from."""
+    """The inputs the computation read: name, value (a convention's code word as its reading's
+    words), where it comes from."""
     parts = []
     for i in e.inputs:
         value = i.get("value")
         label, unit = _label_and_unit(i["name"])
-        if isinstance(value, list | tuple) and all(
+        reading = _reading_label(i["name"], value)
+        if reading is not None:  # words written for a reader: whole, never cut inside a formula
+            shown = reading
+        elif isinstance(value, list | tuple) and all(
             isinstance(v, int | float) and not isinstance(v, bool) for v in value
         ):  # a reading that sets several numbers: each as a number, not as Python prints a list
             shown = "(" + ", ".join(format_value(v) for v in value) + ")"
         else:
             shown = format_value(value) if isinstance(value, int | float) else str(value)
-        if len(shown) > 40:
+        if reading is None and len(shown) > 40:
             shown = shown[:39] + "…"
         elif isinstance(value, int | float) and not isinstance(value, bool):
             shown = _plain_with_unit(shown, unit)
