@@ -859,10 +859,10 @@ def html_text(text: str, *, wide: int = 0) -> str:
     wide : int, optional
         A math piece longer than this many characters is wrapped in a
         ``<span class="ledger-math-wide">`` (0: never), so that one long formula does not
-        widen its column past the page: it is cut where TeX may break it
-        (:func:`_math_breaks`), its pieces joined by line-break opportunities, so that it
-        wraps inside its box; a piece still wider than the box is set smaller by the book's
-        equation fitting, and scrolls inside the box only beyond that.
+        widen its column past the page: it is cut where TeX may break it (after a relation or
+        a binary operator at its outer level), its pieces joined by line-break opportunities,
+        so that it wraps inside its box; a piece still wider than the box is set smaller by
+        the book's equation fitting, and scrolls inside the box only beyond that.
 
     Returns
     -------
