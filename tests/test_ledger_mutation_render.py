@@ -889,6 +889,19 @@ def test_cells_with_strings_and_bounds():
     assert _inputs_text(dataclasses.replace(e, inputs=words)) == "mode = tracking (published, T1)"
 
 
+def test_a_long_formula_is_never_cut_inside_a_matrix_or_cases_environment():
+    """A cut inside an environment leaves MathJax two halves it refuses ("Missing
+    \\begin{cases}"); the formula may still be cut outside it. Oracle: ATC-10's Eq. (4.5.23)
+    as printed, cut by hand after its relation only."""
+    from navcore.ledger.render import _printed_html
+
+    cases = r"\begin{cases} 2\sigma_0^2, & i=0 \\ \sigma_0^2, & 1 \leq i \end{cases}"
+    formula = r"E[\Delta_n \Delta_{n-i}] = " + cases
+    out = _printed_html(f"${formula}$")
+    assert out.count("<wbr>") == 1
+    assert "\\(E[\\Delta_n \\Delta_{n-i}] ={}\\)" in out and "\\(\\begin{cases}" in out
+
+
 def test_a_conventions_code_word_shows_as_its_readings_words():
     """A convention's value that is a code word ("C/N0", "loop") shows as the words of its
     reading, as the conventions table shows it: "$C/N_0$ in dB-Hz", set as math, never cut.

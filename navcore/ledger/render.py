@@ -802,11 +802,13 @@ def _math_breaks(tex: str) -> list[str]:
     (['|\\ln \\mathrm{bound} - \\ln p_f|'], ['P_{DL} = 0.999'])
     >>> _math_breaks(r"\left| a - b \right| = -c + d^{-1}")
     ['\\left| a - b \\right| ={}', '-c +{}', 'd^{-1}']
+    >>> _math_breaks(r"E[x] = \begin{cases} a, & i = 0 \\ b, & i > 0 \end{cases}")
+    ['E[x] ={}', '\\begin{cases} a, & i = 0 \\\\ b, & i > 0 \\end{cases}']
     """
     if len(re.sub(r"\s", "", tex)) <= _LONG_FORMULA:
         return [tex]
     cuts: list[int] = []
-    braces, fences = 0, []
+    braces, fences, environments = 0, [], 0
     prev = ""  # the previous token at the outer level ("" at the start)
     delimiter = False  # the token after \left or \right
     for m in _TEX_TOKEN.finditer(tex):
@@ -815,6 +817,11 @@ def _math_breaks(tex: str) -> list[str]:
             continue
         if delimiter:
             delimiter = False
+            continue
+        # a matrix or cases environment is one unit: never cut inside it
+        environments += {r"\begin": 1, r"\end": -1}.get(tok, 0)
+        if environments or tok == r"\end":
+            prev = "}"
             continue
         braces += {"{": 1, "}": -1}.get(tok, 0)
         if braces or tok == "}":
