@@ -770,6 +770,9 @@ def math_spans(text: str) -> list[tuple[bool, str]]:
 #: A formula of more characters than this (spaces aside) may break in a table of text or a
 #: claim row.
 _LONG_FORMULA = 12
+#: A piece of a claim row's formula longer than this (spaces aside) is also cut inside its
+#: parentheses and brackets (about the TeX of what a claim column holds).
+_LONG_PIECE = 36
 _TEX_TOKEN = re.compile(r"\\[A-Za-z]+|\\.|\s+|.", re.S)
 #: TeX breaks inline math after a relation or a binary operator at the formula's outer level
 _TEX_RELATIONS = frozenset(
@@ -782,9 +785,10 @@ _TEX_CLOSE = frozenset([")", "]", r"\}", r"\rangle", r"\rvert", r"\rVert"])
 _TEX_BARS = frozenset(["|", r"\|", r"\vert", r"\Vert"])
 
 
-def _math_breaks(tex: str) -> list[str]:
+def _math_breaks(tex: str, *, brackets: bool = False) -> list[str]:
     r"""A long inline formula cut where TeX may break it in a paragraph: after a relation or a
-    binary operator at its outer level (not inside braces, brackets or bars).
+    binary operator at its outer level (not inside braces, brackets or bars; with
+    ``brackets``, inside the outermost plain parentheses and brackets too, as TeX also may).
 
     MathJax 3 never breaks an inline formula, so in a table of text one long formula sets
     the least width of its column however the words around it wrap. Each piece but the last
@@ -802,13 +806,15 @@ def _math_breaks(tex: str) -> list[str]:
     (['|\\ln \\mathrm{bound} - \\ln p_f|'], ['P_{DL} = 0.999'])
     >>> _math_breaks(r"\left| a - b \right| = -c + d^{-1}")
     ['\\left| a - b \\right| ={}', '-c +{}', 'd^{-1}']
+    >>> _math_breaks(r"[a(k-1) + b_1 + c_2]^{-1}", brackets=True)
+    ['[a(k-1) +{}', 'b_1 +{}', 'c_2]^{-1}']
     >>> _math_breaks(r"E[x] = \begin{cases} a, & i = 0 \\ b, & i > 0 \end{cases}")
     ['E[x] ={}', '\\begin{cases} a, & i = 0 \\\\ b, & i > 0 \\end{cases}']
     """
     if len(re.sub(r"\s", "", tex)) <= _LONG_FORMULA:
         return [tex]
     cuts: list[int] = []
-    braces, fences, environments = 0, [], 0
+    braces, fences, environments, depth = 0, [], 0, 0
     prev = ""  # the previous token at the outer level ("" at the start)
     delimiter = False  # the token after \left or \right
     for m in _TEX_TOKEN.finditer(tex):
@@ -833,6 +839,13 @@ def _math_breaks(tex: str) -> list[str]:
             elif fences:
                 fences.pop()
             delimiter, prev = True, ")"
+            continue
+        if brackets and tok in ("(", "[", ")", "]"):  # cut inside the outermost pair only
+            depth += 1 if tok in "([" else -1
+            prev = "(" if tok in "([" else ")"
+            continue
+        if brackets and depth > 1:
+            prev = tok
             continue
         if tok in _TEX_OPEN or (tok in _TEX_BARS and not (fences and fences[-1] == tok)):
             fences.append(tok)
@@ -905,7 +918,13 @@ def _math_html(piece: str, wide: int) -> str:
     span = '<span class="math notranslate nohighlight">\\({}\\)</span>'
     if not wide or len(piece) <= wide:
         return span.format(html.escape(piece))
-    pieces = "<wbr>".join(span.format(html.escape(p)) for p in _math_breaks(piece))
+    # a piece still longer than a claim column holds is cut inside its brackets too
+    parts = [
+        q
+        for p in _math_breaks(piece)
+        for q in (_math_breaks(p, brackets=True) if len(re.sub(r"\s", "", p)) > _LONG_PIECE else [p])
+    ]
+    pieces = "<wbr>".join(span.format(html.escape(p)) for p in parts)
     return f'<span class="ledger-math-wide">{pieces}</span>'
 
 
