@@ -32,6 +32,7 @@ from navcore.ledger.render import (
     FindingsTable,
     InteractiveLedger,
     LedgerTable,
+    _math_breaks,
     latex_table,
     math_spans,
 )
@@ -44,6 +45,7 @@ __all__ = [
     "claims_table",
     "counts_table",
     "errata_list",
+    "estimate_text",
     "findings_table",
     "format_number",
     "glue",
@@ -55,6 +57,47 @@ __all__ = [
     "table",
     "text_table",
 ]
+
+
+def estimate_text(value: float, se: float) -> str:
+    """A Monte Carlo estimate with its standard error, each with the digits the error supports.
+
+    The error is shown with two significant digits, the estimate rounded at the place of the
+    error's first significant digit (at least one digit), both by :func:`format_number`.
+
+    Parameters
+    ----------
+    value : float
+        The estimate.
+    se : float
+        Its standard error (positive and finite).
+
+    Returns
+    -------
+    str
+        ``"estimate ± error"``, e.g. ``"3×10⁻⁵ ± 1.2×10⁻⁵"``.
+
+    Raises
+    ------
+    ValueError
+        If ``se`` is not positive and finite, or ``value`` is not finite.
+
+    Examples
+    --------
+    >>> estimate_text(3.14e-5, 1.17e-5)
+    '3×10⁻⁵ ± 1.2×10⁻⁵'
+    >>> estimate_text(12.345, 0.26)
+    '12.3 ± 0.26'
+    """
+    import math
+
+    if not (math.isfinite(se) and se > 0):
+        raise ValueError(f"se must be a positive finite standard error, got {se!r}")
+    if not math.isfinite(value):
+        raise ValueError(f"value must be finite, got {value!r}")
+    place = math.floor(math.log10(se))
+    digits = math.floor(math.log10(abs(value))) - place + 1 if value else 1
+    return f"{format_number(value, digits=max(digits, 1))} ± {format_number(se, digits=2)}"
 
 
 def setup() -> None:
@@ -462,87 +505,6 @@ def _tidy_html(table_html: str, *, math_breaks: bool = False) -> str:
     parts = re.split(r"(<[A-Za-z/!][^<>]*>)", body)
     body = "".join(part if i % 2 else cell(part) for i, part in enumerate(parts))
     return head + sep + body
-
-
-#: A formula of more characters than this (spaces aside) may break in a table of text.
-_LONG_FORMULA = 12
-_TEX_TOKEN = re.compile(r"\\[A-Za-z]+|\\.|\s+|.", re.S)
-#: TeX breaks inline math after a relation or a binary operator at the formula's outer level
-_TEX_RELATIONS = frozenset(
-    ["=", "<", ">", r"\le", r"\leq", r"\ge", r"\geq", r"\ne", r"\neq", r"\approx", r"\sim",
-     r"\simeq", r"\equiv", r"\propto", r"\to", r"\rightarrow", r"\ll", r"\gg"]
-)  # fmt: skip
-_TEX_BINARY = frozenset(["+", "-", r"\pm", r"\mp", r"\times", r"\cdot"])
-_TEX_OPEN = frozenset(["(", "[", r"\{", r"\langle", r"\lvert", r"\lVert"])
-_TEX_CLOSE = frozenset([")", "]", r"\}", r"\rangle", r"\rvert", r"\rVert"])
-_TEX_BARS = frozenset(["|", r"\|", r"\vert", r"\Vert"])
-
-
-def _math_breaks(tex: str) -> list[str]:
-    r"""A long inline formula cut where TeX may break it in a paragraph: after a relation or a
-    binary operator at its outer level (not inside braces, brackets or bars).
-
-    MathJax 3 never breaks an inline formula, so in a table of text one long formula sets
-    the least width of its column however the words around it wrap. Each piece but the last
-    ends with an empty group, so that its operator keeps the spacing it has between two
-    operands; the pieces set side by side read as the whole formula. A formula of at most
-    ``_LONG_FORMULA`` characters, and a last piece of fewer than three, stay whole.
-
-    Examples
-    --------
-    >>> _math_breaks(r"\mathrm{Exp}_g = a^2/(2p)")
-    ['\\mathrm{Exp}_g ={}', 'a^2/(2p)']
-    >>> _math_breaks(r"C/N_0 - 10\log_{10} B_L")
-    ['C/N_0 -{}', '10\\log_{10} B_L']
-    >>> _math_breaks(r"|\ln \mathrm{bound} - \ln p_f|"), _math_breaks("P_{DL} = 0.999")
-    (['|\\ln \\mathrm{bound} - \\ln p_f|'], ['P_{DL} = 0.999'])
-    >>> _math_breaks(r"\left| a - b \right| = -c + d^{-1}")
-    ['\\left| a - b \\right| ={}', '-c +{}', 'd^{-1}']
-    """
-    if len(re.sub(r"\s", "", tex)) <= _LONG_FORMULA:
-        return [tex]
-    cuts: list[int] = []
-    braces, fences = 0, []
-    prev = ""  # the previous token at the outer level ("" at the start)
-    delimiter = False  # the token after \left or \right
-    for m in _TEX_TOKEN.finditer(tex):
-        tok = m.group(0)
-        if tok.isspace():
-            continue
-        if delimiter:
-            delimiter = False
-            continue
-        braces += {"{": 1, "}": -1}.get(tok, 0)
-        if braces or tok == "}":
-            prev = "}"
-            continue
-        if tok in (r"\left", r"\right"):
-            if tok == r"\left":
-                fences.append(tok)
-            elif fences:
-                fences.pop()
-            delimiter, prev = True, ")"
-            continue
-        if tok in _TEX_OPEN or (tok in _TEX_BARS and not (fences and fences[-1] == tok)):
-            fences.append(tok)
-            prev = "("
-            continue
-        if tok in _TEX_CLOSE or tok in _TEX_BARS:
-            if fences:
-                fences.pop()
-            prev = ")"
-            continue
-        operators = _TEX_RELATIONS | _TEX_BINARY
-        operand_before = prev and prev not in ("(", "^", "_", ",") and prev not in operators
-        if not fences and operand_before and tok in operators:
-            cuts.append(m.end())
-        prev = tok
-    pieces, start = [], 0
-    for cut in cuts:
-        if len(re.sub(r"\s", "", tex[cut:])) >= 3:
-            pieces.append(tex[start:cut].strip() + "{}")
-            start = cut
-    return [*pieces, tex[start:].strip()]
 
 
 def _styler_html(styler: Any) -> str:

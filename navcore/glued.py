@@ -3559,6 +3559,26 @@ def atc10_22_psk_pf() -> float:
     return float(pm.best_pf_at_pd(roc.p_f, roc.p_miss, 0.9))
 
 
+@register(
+    "atc10-22-psk-pf-estimate",
+    "atc10/22-gaussian-comparison",
+    "that false-alarm probability with its Monte Carlo standard error, to the digits the error supports",
+)
+def atc10_22_psk_pf_estimate() -> str:
+    """The false-alarm probability of :func:`atc10_22_psk_pf` with the stratified Monte Carlo's
+    standard error at the same threshold, as the book shows an estimate
+    (:func:`navcore.book.estimate_text`)."""
+    import numpy as np
+
+    from navcore.book import estimate_text
+    from navcore.papers import atc10_multiple_access as pm
+
+    roc = pm.psk_roc()
+    admissible = np.flatnonzero(roc.p_miss <= 1.0 - 0.9)
+    j = admissible[np.argmin(roc.p_f[admissible])]
+    return estimate_text(float(roc.p_f[j]), float(roc.p_f_se[j]))
+
+
 # --- ATC-10 Sec. 4.5: the clock tracker's gain -------------------------------------------------------
 
 

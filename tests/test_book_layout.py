@@ -255,6 +255,106 @@ def test_a_text_table_with_long_formulas_fits_a_column_that_the_whole_formulas_o
     assert [name for name, _ in measured] == ["whole.html#table-1"]
 
 
+#: WF's Eq. (6) as a claim row quotes it (the Printed cell of claim WF-eq6-montecarlo)
+_EQ6 = (
+    r"$$\hat{\mathbf{p}}^e - \mathbf{p}^e = (\mathbf{H}^T \mathbf{W} \mathbf{H})^{-1} "
+    r"\mathbf{H}^T \mathbf{W}[\mathbf{e} + \tilde{\mathbf{f}}_\theta], \quad (6)$$"
+)
+
+
+def _claim_row_page(path: Path, cells: str, width: str, *, fitting: bool = True) -> None:
+    """A page of one claim row (``table.ledger-claims``) with the book's style sheet, MathJax
+    and (``fitting``) its equation fitting, in a text column of ``width``."""
+    css = (ROOT / "book" / "_static" / "navcore.css").read_text(encoding="utf-8")
+    fit = '<script src="navcore-math.js"></script>' if fitting else ""
+    path.write_text(
+        f'<html><head><style>{css}</style><script src="tex-chtml.js"></script>'
+        f'{fit}</head><body><main class="bd-content">'
+        f'<article class="bd-article" style="width:100%; max-width:{width}">'
+        '<div class="cell_output"><div class="output text_html"><table class="ledger-claims"><tbody>'
+        f'<tr id="x-eq6" class="ledger-claim">{cells}</tr></tbody></table></div></div>'
+        "</article></main></body></html>"
+    )
+
+
+def _boxed(tex: str) -> str:
+    """A formula in a claim row's box of its own, as the ledger sets a long one."""
+    span = f'<span class="math notranslate nohighlight">\\({tex}\\)</span>'
+    return f'<span class="ledger-math-wide">{span}</span>'
+
+
+@pytest.mark.skipif(_mathjax() is None, reason="no MathJax bundle (sphinx-mathjax-offline)")
+def test_layout_gate_finds_a_formula_cut_in_its_own_box_in_a_claim_row_or_folded_details(layout, tmp_path):
+    """A long formula of a claim row scrolls inside its own box (``ledger-math-wide``), which
+    the measurement of display blocks never sees. Oracle: Chromium and MathJax laying out three
+    one-row claim tables with the book's style sheet: a formula wider than its box, the same
+    formula in a folded "details" (measured opened), and a short one; only the first two are
+    cut, each named by its row. A formula with no place to break, a fifth wider than its box,
+    is set smaller to fit by the book's equation fitting; without the fitting it is cut. The
+    first page's formula in a narrow paragraph, not in a claim table, is only counted."""
+    import shutil
+
+    module, _ = layout
+    shutil.copy(_mathjax(), tmp_path / "tex-chtml.js")
+    shutil.copy(ROOT / "book" / "_static" / "navcore-math.js", tmp_path / "navcore-math.js")
+    long = r"\hat{\mathbf{p}}^e - \mathbf{p}^e = (\mathbf{H}^T \mathbf{W} \mathbf{H})^{-1} \mathbf{H}^T"
+    boxed = _boxed(long * 2)
+    _claim_row_page(tmp_path / "cut.html", f'<td class="ledger-value">{boxed}</td>', "772px")
+    folded = f'<details class="ledger-details"><summary>details</summary><p>{boxed}</p></details>'
+    _claim_row_page(tmp_path / "folded.html", f'<td class="ledger-what">text {folded}</td>', "772px")
+    short = '<span class="math notranslate nohighlight">\\(K_1 &lt; 2\\)</span>'
+    _claim_row_page(tmp_path / "fits.html", f'<td class="ledger-value">{short}</td>', "772px")
+    # 17 upright m's: about 1.2 times the 16-em box of a claim table at MathJax's size
+    unbroken = _boxed("\\mathrm{" + "m" * 17 + "}")
+    _claim_row_page(tmp_path / "fitted.html", f'<td class="ledger-value">{unbroken}</td>', "772px")
+    _claim_row_page(
+        tmp_path / "not-fitted.html", f'<td class="ledger-value">{unbroken}</td>', "772px", fitting=False
+    )
+    # the same cut formula outside a chapter's claim table (in a narrow paragraph) is counted
+    css = (ROOT / "book" / "_static" / "navcore.css").read_text(encoding="utf-8")
+    (tmp_path / "prose.html").write_text(
+        f'<html><head><style>{css}</style><script src="tex-chtml.js"></script></head><body>'
+        f'<article class="bd-article"><p id="x-eq6" style="width:150px">{boxed}</p></article></body></html>'
+    )
+    measured = module.measure(tmp_path, (1400,), tabs=1)[1400]
+    found = measured["math"]
+    assert [name for name, _ in found] == [
+        "cut.html#x-eq6-inline-math-1",
+        "folded.html#x-eq6-inline-math-1",
+        "not-fitted.html#x-eq6-inline-math-1",
+    ]
+    assert all(item["scroll"] > item["client"] for _, item in found)
+    assert [name for name, _ in measured["inline"]] == ["prose.html#x-eq6-inline-math-1"]
+
+
+@pytest.mark.skipif(_mathjax() is None, reason="no MathJax bundle (sphinx-mathjax-offline)")
+def test_a_claim_rows_quoted_display_equation_fits_its_column_on_a_screen_and_a_phone(layout, tmp_path):
+    """WF's Eq. (6) quoted in a claim row's Printed cell (a displayed equation set inline) is
+    not cut at 1400 px nor at 420 px. Oracle: Chromium and MathJax laying out the row as the
+    ledger renders it, with the book's style sheet and equation fitting, in the book's text
+    column at 1400 px (772 px) and in a phone's full width, measured by the layout gate."""
+    import shutil
+
+    from navcore.ledger import EXACT, Claim, evaluate
+    from navcore.ledger.render import LedgerTable
+
+    module, _ = layout
+    shutil.copy(_mathjax(), tmp_path / "tex-chtml.js")
+    shutil.copy(ROOT / "book" / "_static" / "navcore-math.js", tmp_path / "navcore-math.js")
+    claim = Claim(
+        id="WF-x-eq6", paper="WF", locator="Eq. (6)", quantity="Eq. (6) predicts the spread",
+        published=True, unit="statement", compute=lambda: True, tolerance=EXACT, printed=_EQ6,
+        expected_status="consistent", note="a synthetic claim",
+    )  # fmt: skip
+    table = LedgerTable([evaluate(claim)])._repr_html_()
+    assert "\\hat{\\mathbf{p}}^e" in table
+    row = table[table.index('<tr id="wf-x-eq6"') :]
+    cells = row[row.index(">") + 1 : row.index("</tr>")]
+    _claim_row_page(tmp_path / "row.html", cells, "772px")
+    measured = module.measure(tmp_path, (1400, 420), tabs=1)
+    assert measured[1400]["math"] == [] and measured[420]["math"] == []
+
+
 @pytest.mark.skipif(
     not any(__import__("shutil").which(b) for b in ("chromium", "chromium-browser", "google-chrome")),
     reason="no Chromium",

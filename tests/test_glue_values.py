@@ -698,6 +698,24 @@ def _atc10_psk_pf_exact() -> float:
     return p_f
 
 
+def _atc10_psk_estimate_by_hand() -> str:
+    """The Monte Carlo p_f at the threshold :func:`_atc10_psk_threshold` picks, and its standard
+    error, written as the book writes an estimate: Python's exponent format with the error's two
+    significant digits and the estimate's digits down to the error's first, in ×10ⁿ form."""
+    from navcore.papers import atc10_multiple_access as pm
+
+    theta, se, _ = _atc10_psk_threshold()
+    roc = pm.psk_roc()
+    p_f = float(roc.p_f[int(np.flatnonzero(roc.theta == theta)[0])])
+    places = int(f"{p_f:e}".split("e")[1]) - int(f"{se:e}".split("e")[1])  # digits after the first
+
+    def sci(x: float, decimals: int) -> str:
+        mantissa, exponent = f"{x:.{decimals}e}".split("e")
+        return mantissa + "×10" + str(int(exponent)).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
+
+    return f"{sci(p_f, max(places, 0))} ± {sci(se, 1)}"
+
+
 def _atc10_psk_pf_gauss() -> float:
     """ROC_g in Gaussian noise of power P = N q b (Theorem 3.1, q = 2 tau / alpha): p_d = Q((theta -
     1) / sqrt(P)) fixes theta at p_d = 0.9, and p_f = Q(theta / sqrt(P)) (scipy's normal)."""
@@ -1113,6 +1131,9 @@ ORACLES = [
         band=lambda: 4 * _atc10_psk_threshold()[1],
         why="exact lattice law by FFT at the chosen threshold",
     ),
+    # the estimate and its standard error at the threshold chosen by hand, rounded by hand: the
+    # error to two significant digits, the estimate at the error's first digit
+    Oracle("atc10-22-psk-pf-estimate", lambda: _atc10_psk_estimate_by_hand(), why="rounding by hand"),
     # the seeded flights' location errors recomputed by hand from the run's arrays (summation
     # order only: 1e-12)
     Oracle(

@@ -736,9 +736,11 @@ def test_printed_cells():
         == '<span class="math notranslate nohighlight">\\(x = 1\\)</span>'
     )
     wide = "$a + b + c + d + e + f + g + h$"
+    # a long formula in its own box, cut after each outer operator (where TeX may break it)
+    span = '<span class="math notranslate nohighlight">\\({}\\)</span>'
+    pieces = [f"{x} +{{}}" for x in "abcdef"] + ["g + h"]
     assert _printed_html(wide) == (
-        '<span class="ledger-math-wide"><span class="math notranslate nohighlight">'
-        "\\(a + b + c + d + e + f + g + h\\)</span></span>"
+        '<span class="ledger-math-wide">' + "<wbr>".join(span.format(p) for p in pieces) + "</span>"
     )
     assert _printed_html("costs 50 \\$ per unit, or more") == (
         'costs 50 <span class="tex2jax_ignore mathjax_ignore">$</span> per unit, or more'
@@ -885,6 +887,39 @@ def test_cells_with_strings_and_bounds():
     s = _word_input()
     words = ({"name": s, "provenance": "published", "locator": "T1", "value": "tracking"},)
     assert _inputs_text(dataclasses.replace(e, inputs=words)) == "mode = tracking (published, T1)"
+
+
+def test_a_long_formula_is_never_cut_inside_a_matrix_or_cases_environment():
+    """A cut inside an environment leaves MathJax two halves it refuses ("Missing
+    \\begin{cases}"); the formula may still be cut outside it. Oracle: ATC-10's Eq. (4.5.23)
+    as printed, cut by hand after its relation only."""
+    from navcore.ledger.render import _printed_html
+
+    cases = r"\begin{cases} 2\sigma_0^2, & i=0 \\ \sigma_0^2, & 1 \leq i \end{cases}"
+    formula = r"E[\Delta_n \Delta_{n-i}] = " + cases
+    out = _printed_html(f"${formula}$")
+    assert out.count("<wbr>") == 1
+    assert "\\(E[\\Delta_n \\Delta_{n-i}] ={}\\)" in out and "\\(\\begin{cases}" in out
+
+
+def test_a_conventions_code_word_shows_as_its_readings_words():
+    """A convention's value that is a code word ("C/N0", "loop") shows as the words of its
+    reading, as the conventions table shows it: "$C/N_0$ in dB-Hz", set as math, never cut.
+    Oracle: the readings SP's flyby declares for its signal-to-noise measure."""
+    import dataclasses
+
+    from navcore.ledger.inputs import get_input
+    from navcore.ledger.render import _inputs_text
+    from navcore.papers import sp_flyby  # noqa: F401  (declares the input)
+
+    name = "SP.flyby.snr_measure"
+    readings = dict((v, label) for label, v in get_input(name).readings)
+    e = _ev("SP-c1", "Eq. (1)", "n")
+    for code in ("C/N0", "loop"):
+        inputs = ({"name": name, "provenance": "convention", "value": code},)
+        text = _inputs_text(dataclasses.replace(e, inputs=inputs))
+        assert text.endswith(f" = {readings[code]} (convention)") and f"= {code} (" not in text
+    assert readings["C/N0"] == "$C/N_0$ in dB-Hz"
 
 
 def _word_input() -> str:

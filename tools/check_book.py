@@ -279,10 +279,6 @@ NOT_FORMULA_PAGES = {
 #: ``text`` on a page that ``pages`` matches (a glob) passes. Each is for the page's or the
 #: registry's owner to fix; keep the list short: an entry that no longer occurs fails the gate.
 PLAIN_TEXT_ALLOWED: dict[tuple[str, str], str] = {
-    # SP's claim texts, figure labels and model docstrings (navcore) and the glossary write the
-    # carrier-to-noise density ratio as C/N0; the SP pages' own prose sets it as math
-    ("sp/*.html", "C/N0"): "SP's claim texts and figure labels from navcore: C/N_0 as math there",
-    ("glossary.html", "C/N0"): "the glossary's entry and definition of C/N_0, in prose",
     # an erratum's quote of the paper, stored in the registry with the Greek letter spelled out
     ("errata.html", "independence of rho(i,j)"): "the stored quote of an ATC-10 erratum (registry data)",
     ("atc10/index.html", "independence of rho(i,j)"): "the same erratum in the chapter's list",

@@ -1,6 +1,9 @@
 // A display equation a little wider than its column is set smaller, down to 70 % of its
 // size, instead of being cut at the column's edge; one still wider scrolls inside its own
-// box. Runs once MathJax has typeset the page, and again when the window is resized.
+// box. So is a long formula of a claim row (a box of its own, .ledger-math-wide, in which the
+// formula's pieces wrap where TeX may break it): its widest piece sets its width. Runs once
+// MathJax has typeset the page, again when the window is resized and when a folded "details"
+// is opened (a formula folded away has no width until then).
 (function () {
   "use strict";
   var SMALLEST = 0.7;
@@ -18,6 +21,30 @@
       var scale = Math.max(SMALLEST, (room - 2) / need);
       eq.style.fontSize = (base * scale).toFixed(1) + "%";
     }
+    // the box's own width is in em of the text around it: the formula's pieces are set
+    // smaller, not the box
+    var boxes = document.querySelectorAll(".bd-article .ledger-math-wide");
+    for (var j = 0; j < boxes.length; j++) {
+      var box = boxes[j];
+      var parts = box.querySelectorAll("mjx-container");
+      for (var k = 0; k < parts.length; k++) {
+        if (parts[k].dataset.navcoreSize === undefined) parts[k].dataset.navcoreSize = parts[k].style.fontSize || "";
+        parts[k].style.fontSize = parts[k].dataset.navcoreSize;
+      }
+      // the typeset formula's extent (the box's scrollWidth also counts a glyph's side bearing)
+      var left = box.getBoundingClientRect().left + box.clientLeft, wide = 0;
+      var maths = box.querySelectorAll("mjx-math");
+      for (var n = 0; n < maths.length; n++) {
+        wide = Math.max(wide, maths[n].getBoundingClientRect().right - left);
+      }
+      var width = box.clientWidth;
+      if (!parts.length || width === 0 || wide <= width + 1) continue;
+      var shrink = Math.max(SMALLEST, (width - 2) / wide);
+      for (var m = 0; m < parts.length; m++) {
+        var size = parseFloat(parts[m].dataset.navcoreSize) || 100;
+        parts[m].style.fontSize = (size * shrink).toFixed(1) + "%";
+      }
+    }
   }
 
   var timer = null;
@@ -34,6 +61,8 @@
       MathJax.startup.promise.then(fit);
     }
     window.addEventListener("resize", refit);
+    // "toggle" does not bubble: listen in the capture phase
+    document.addEventListener("toggle", refit, true);
   }
 
   if (document.readyState === "loading") {

@@ -57,7 +57,7 @@ def sp_flyby_cn0() -> Figure:
     ax.set_xlim(t_ca - 20, t_ca + 25)
     ax.set_ylim(-5, 50)
     ax.set_xlabel("time (min)")
-    ax.set_ylabel("effective C/N0 (dB-Hz)")
+    ax.set_ylabel("effective $C/N_0$ (dB-Hz)")
     ax.legend(loc="lower left", fontsize=7, ncol=3)
     return fig
 

@@ -30,7 +30,7 @@ from navcore.ledger.core import (
     left_out_of_band,
 )
 from navcore.ledger.core import _is_truth as _core_is_truth
-from navcore.ledger.inputs import _label_and_unit
+from navcore.ledger.inputs import _label_and_unit, get_input
 from navcore.ledger.registry import counts, errata, evaluations
 from navcore.provenance import BuildProvenance, build_provenance
 
@@ -767,6 +767,108 @@ def math_spans(text: str) -> list[tuple[bool, str]]:
     return out
 
 
+#: A formula of more characters than this (spaces aside) may break in a table of text or a
+#: claim row.
+_LONG_FORMULA = 12
+#: A piece of a claim row's formula longer than this (spaces aside) is also cut inside its
+#: parentheses and brackets (about the TeX of what a claim column holds).
+_LONG_PIECE = 36
+_TEX_TOKEN = re.compile(r"\\[A-Za-z]+|\\.|\s+|.", re.S)
+#: TeX breaks inline math after a relation or a binary operator at the formula's outer level
+_TEX_RELATIONS = frozenset(
+    ["=", "<", ">", r"\le", r"\leq", r"\ge", r"\geq", r"\ne", r"\neq", r"\approx", r"\sim",
+     r"\simeq", r"\equiv", r"\propto", r"\to", r"\rightarrow", r"\ll", r"\gg"]
+)  # fmt: skip
+_TEX_BINARY = frozenset(["+", "-", r"\pm", r"\mp", r"\times", r"\cdot"])
+_TEX_OPEN = frozenset(["(", "[", r"\{", r"\langle", r"\lvert", r"\lVert"])
+_TEX_CLOSE = frozenset([")", "]", r"\}", r"\rangle", r"\rvert", r"\rVert"])
+_TEX_BARS = frozenset(["|", r"\|", r"\vert", r"\Vert"])
+
+
+def _math_breaks(tex: str, *, brackets: bool = False) -> list[str]:
+    r"""A long inline formula cut where TeX may break it in a paragraph: after a relation or a
+    binary operator at its outer level (not inside braces, brackets or bars; with
+    ``brackets``, inside the outermost plain parentheses and brackets too, as TeX also may).
+
+    MathJax 3 never breaks an inline formula, so in a table of text one long formula sets
+    the least width of its column however the words around it wrap. Each piece but the last
+    ends with an empty group, so that its operator keeps the spacing it has between two
+    operands; the pieces set side by side read as the whole formula. A formula of at most
+    ``_LONG_FORMULA`` characters, and a last piece of fewer than three, stay whole.
+
+    Examples
+    --------
+    >>> _math_breaks(r"\mathrm{Exp}_g = a^2/(2p)")
+    ['\\mathrm{Exp}_g ={}', 'a^2/(2p)']
+    >>> _math_breaks(r"C/N_0 - 10\log_{10} B_L")
+    ['C/N_0 -{}', '10\\log_{10} B_L']
+    >>> _math_breaks(r"|\ln \mathrm{bound} - \ln p_f|"), _math_breaks("P_{DL} = 0.999")
+    (['|\\ln \\mathrm{bound} - \\ln p_f|'], ['P_{DL} = 0.999'])
+    >>> _math_breaks(r"\left| a - b \right| = -c + d^{-1}")
+    ['\\left| a - b \\right| ={}', '-c +{}', 'd^{-1}']
+    >>> _math_breaks(r"[a(k-1) + b_1 + c_2]^{-1}", brackets=True)
+    ['[a(k-1) +{}', 'b_1 +{}', 'c_2]^{-1}']
+    >>> _math_breaks(r"E[x] = \begin{cases} a, & i = 0 \\ b, & i > 0 \end{cases}")
+    ['E[x] ={}', '\\begin{cases} a, & i = 0 \\\\ b, & i > 0 \\end{cases}']
+    """
+    if len(re.sub(r"\s", "", tex)) <= _LONG_FORMULA:
+        return [tex]
+    cuts: list[int] = []
+    braces, fences, environments, depth = 0, [], 0, 0
+    prev = ""  # the previous token at the outer level ("" at the start)
+    delimiter = False  # the token after \left or \right
+    for m in _TEX_TOKEN.finditer(tex):
+        tok = m.group(0)
+        if tok.isspace():
+            continue
+        if delimiter:
+            delimiter = False
+            continue
+        # a matrix or cases environment is one unit: never cut inside it
+        environments += {r"\begin": 1, r"\end": -1}.get(tok, 0)
+        if environments or tok == r"\end":
+            prev = "}"
+            continue
+        braces += {"{": 1, "}": -1}.get(tok, 0)
+        if braces or tok == "}":
+            prev = "}"
+            continue
+        if tok in (r"\left", r"\right"):
+            if tok == r"\left":
+                fences.append(tok)
+            elif fences:
+                fences.pop()
+            delimiter, prev = True, ")"
+            continue
+        if brackets and tok in ("(", "[", ")", "]"):  # cut inside the outermost pair only
+            depth += 1 if tok in "([" else -1
+            prev = "(" if tok in "([" else ")"
+            continue
+        if brackets and depth > 1:
+            prev = tok
+            continue
+        if tok in _TEX_OPEN or (tok in _TEX_BARS and not (fences and fences[-1] == tok)):
+            fences.append(tok)
+            prev = "("
+            continue
+        if tok in _TEX_CLOSE or tok in _TEX_BARS:
+            if fences:
+                fences.pop()
+            prev = ")"
+            continue
+        operators = _TEX_RELATIONS | _TEX_BINARY
+        operand_before = prev and prev not in ("(", "^", "_", ",") and prev not in operators
+        if not fences and operand_before and tok in operators:
+            cuts.append(m.end())
+        prev = tok
+    pieces, start = [], 0
+    for cut in cuts:
+        if len(re.sub(r"\s", "", tex[cut:])) >= 3:
+            pieces.append(tex[start:cut].strip() + "{}")
+            start = cut
+    return [*pieces, tex[start:].strip()]
+
+
 def html_text(text: str, *, wide: int = 0) -> str:
     r"""Escaped HTML with ``$...$`` as MathJax inline math, marked up as Sphinx does.
 
@@ -776,9 +878,11 @@ def html_text(text: str, *, wide: int = 0) -> str:
         A note, quantity or erratum text (:func:`math_spans` says what is math).
     wide : int, optional
         A math piece longer than this many characters is wrapped in a
-        ``<span class="ledger-math-wide">``, which the book's style sheet lets scroll inside
-        its own box in a table cell (0: never), so that one long formula does not widen its
-        column past the page.
+        ``<span class="ledger-math-wide">`` (0: never), so that one long formula does not
+        widen its column past the page: it is cut where TeX may break it (after a relation or
+        a binary operator at its outer level), its pieces joined by line-break opportunities,
+        so that it wraps inside its box; a piece still wider than the box is set smaller by
+        the book's equation fitting, and scrolls inside the box only beyond that.
 
     Returns
     -------
@@ -792,15 +896,36 @@ def html_text(text: str, *, wide: int = 0) -> str:
     gain <span class="math notranslate nohighlight">\(K_1 &lt; 2\)</span> &amp; more
     >>> print(html_text("$x = a + b$", wide=5))
     <span class="ledger-math-wide"><span class="math notranslate nohighlight">\(x = a + b\)</span></span>
+    >>> out = html_text("$x_{\\rm long} = a + b$", wide=5)
+    >>> print(out.replace(' class="math notranslate nohighlight"', ""))
+    <span class="ledger-math-wide"><span>\(x_{\rm long} ={}\)</span><wbr><span>\(a + b\)</span></span>
     """
     out = []
     for is_math, piece in math_spans(text):
-        if not is_math:
-            out.append(html.escape(piece))
-            continue
-        span = f'<span class="math notranslate nohighlight">\\({html.escape(piece)}\\)</span>'
-        out.append(f'<span class="ledger-math-wide">{span}</span>' if wide and len(piece) > wide else span)
+        out.append(_math_html(piece, wide) if is_math else html.escape(piece))
     return "".join(out)
+
+
+def _math_html(piece: str, wide: int) -> str:
+    r"""A formula as MathJax inline math; one longer than ``wide`` characters (``wide`` > 0) in
+    a ``ledger-math-wide`` box, cut where TeX may break it (:func:`_math_breaks`).
+
+    Examples
+    --------
+    >>> print(_math_html("K_1", 24))
+    <span class="math notranslate nohighlight">\(K_1\)</span>
+    """
+    span = '<span class="math notranslate nohighlight">\\({}\\)</span>'
+    if not wide or len(piece) <= wide:
+        return span.format(html.escape(piece))
+    # a piece still longer than a claim column holds is cut inside its brackets too
+    parts = [
+        q
+        for p in _math_breaks(piece)
+        for q in (_math_breaks(p, brackets=True) if len(re.sub(r"\s", "", p)) > _LONG_PIECE else [p])
+    ]
+    pieces = "<wbr>".join(span.format(html.escape(p)) for p in parts)
+    return f'<span class="ledger-math-wide">{pieces}</span>'
 
 
 def tex_text(text: str) -> str:
@@ -1134,9 +1259,10 @@ def _printed_tex(text: str) -> str:
 
 def _printed_html(text: str, *, fold: int = 0) -> str:
     r"""The Printed cell of an HTML claim table: the paper's words as text and its formulas as
-    MathJax math (a display formula inline, without its equation number), a formula too wide
-    for a narrow column scrolling inside its own box, and LaTeX transcribed without math
-    delimiters as small source text that may break anywhere. A short value stays on one line.
+    MathJax math (a display formula inline, without its equation number), a long formula in a
+    box of its own, cut where TeX may break it so that it wraps in a narrow column
+    (:func:`_math_html`), and LaTeX transcribed without math delimiters as small source text
+    that may break anywhere. A short value stays on one line.
 
     Parameters
     ----------
@@ -1171,9 +1297,7 @@ def _printed_html(text: str, *, fold: int = 0) -> str:
                     )
                 )
                 continue
-            piece = quote_math(piece)
-            span = f'<span class="math notranslate nohighlight">\\({html.escape(piece)}\\)</span>'
-            out.append(span if len(piece) <= 24 else f'<span class="ledger-math-wide">{span}</span>')
+            out.append(_math_html(quote_math(piece), _FIT_MATH_CHARS))
         body = "".join(out)
     if fold and len(text) > fold:
         return f'<details class="ledger-quote"><summary>quote</summary>{body}</details>'
@@ -1222,19 +1346,35 @@ def _tolerance_text(e: Evaluation) -> str:
     return f"{size}: {reason}" if reason else size
 
 
+def _reading_label(name: str, value: Any) -> str | None:
+    """The words of a convention's reading whose value is the code word ``value`` (``"C/N0"``:
+    "$C/N_0$ in dB-Hz"), as the conventions table shows it; ``None`` for anything else."""
+    if not isinstance(value, str):
+        return None
+    try:
+        inp = get_input(name)
+    except (KeyError, ValueError):
+        return None
+    return next((label for label, v in inp.readings if v == value), None)
+
+
 def _inputs_text(e: Evaluation) -> str:
-    """The inputs the computation read: name, value, where it comes from."""
+    """The inputs the computation read: name, value (a convention's code word as its reading's
+    words), where it comes from."""
     parts = []
     for i in e.inputs:
         value = i.get("value")
         label, unit = _label_and_unit(i["name"])
-        if isinstance(value, list | tuple) and all(
+        reading = _reading_label(i["name"], value)
+        if reading is not None:  # words written for a reader: whole, never cut inside a formula
+            shown = reading
+        elif isinstance(value, list | tuple) and all(
             isinstance(v, int | float) and not isinstance(v, bool) for v in value
         ):  # a reading that sets several numbers: each as a number, not as Python prints a list
             shown = "(" + ", ".join(format_value(v) for v in value) + ")"
         else:
             shown = format_value(value) if isinstance(value, int | float) else str(value)
-        if len(shown) > 40:
+        if reading is None and len(shown) > 40:
             shown = shown[:39] + "…"
         elif isinstance(value, int | float) and not isinstance(value, bool):
             shown = _plain_with_unit(shown, unit)
