@@ -3568,14 +3568,13 @@ def atc10_22_psk_pf_estimate() -> str:
     """The false-alarm probability of :func:`atc10_22_psk_pf` with the stratified Monte Carlo's
     standard error at the same threshold, as the book shows an estimate
     (:func:`navcore.book.estimate_text`)."""
-    import numpy as np
-
     from navcore.book import estimate_text
     from navcore.papers import atc10_multiple_access as pm
 
     roc = pm.psk_roc()
-    admissible = np.flatnonzero(roc.p_miss <= 1.0 - 0.9)
-    j = admissible[np.argmin(roc.p_f[admissible])]
+    j = pm.best_pf_index_at_pd(roc.p_f, roc.p_miss, 0.9)
+    if j is None:
+        raise ValueError("the simulated PSK set reaches p_d = 0.9 at no threshold")
     return estimate_text(float(roc.p_f[j]), float(roc.p_f_se[j]))
 
 
