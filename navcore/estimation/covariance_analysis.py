@@ -314,9 +314,9 @@ def run_covariance_analysis(
     n_f = idx.size
     unmodelled = np.setdiff1d(np.arange(n_t), idx)
     Pa = Pt if P0_apriori is None else np.broadcast_to(np.asarray(P0_apriori, dtype=float), Pt.shape)
-    P0_uu = Pa[:, unmodelled][:, :, unmodelled]
+    P0_uu = Pa[:, unmodelled[:, None], unmodelled]
     if P0_filter is None:
-        Pf = Pt[:, idx][:, :, idx].copy()
+        Pf = Pt[:, idx[:, None], idx].copy()
     else:
         Pf = np.array(P0_filter, dtype=float)
         if Pf.ndim == 2:
@@ -349,10 +349,11 @@ def run_covariance_analysis(
     lin_arr = np.asarray(lin, dtype=np.intp)
     added = None if filter_added_psd is None else np.diag(np.asarray(filter_added_psd, dtype=float)) * dt
 
-    def transitions(lo: int) -> tuple[Array, Array, Array, Array]:
+    def transitions(lo: int, working: bool = False) -> tuple[Array, Array, Array, Array]:
         """Transitions and discrete noises (truth, filter) of linearisation points ``lo:lo+chunk``
-        in the layouts' own order, shared with every other run whose linearisation points read
-        the same values."""
+        in the layouts' own order, or with ``working`` in the working order defined below (the
+        same values, computed from the permuted dynamics), shared with every other run whose
+        linearisation points read the same values."""
         js = lin_arr[lo : lo + _LIN_CHUNK]
         args = {
             "f_ned": trajectory.f_ned[js],
@@ -365,7 +366,8 @@ def run_covariance_analysis(
         speed_js = speed[js]
         # every value the computation below reads, so two runs share a result only when it
         # would be the same
-        key = _digest((args, speed_js, truth_layout, src_list, vertical_channel, dt, idx, added))
+        order = order_t if working else None
+        key = _digest((args, speed_js, truth_layout, src_list, vertical_channel, dt, idx, added, order))
         if key is not None and key in _TRANSITIONS:
             _TRANSITIONS.move_to_end(key)
             return _TRANSITIONS[key]
@@ -373,12 +375,20 @@ def run_covariance_analysis(
             truth_layout, **args, sources=src_list[0], vertical_channel=vertical_channel
         )
         q = np.stack([_process_noise_diag_stack(truth_layout, s_, speed_js) for s_ in src_list], axis=1)
+        if working:
+            # permuting the dynamics permutes the transition and the noise (the working order
+            # holds the filter's states as the block rows_f, in the filter's working order)
+            F = F[:, order_t[:, None], order_t]
+            q = q[:, :, order_t]
         Phi = _taylor_stack(F, dt)
         Q = _discrete_noise_diag(F, q, dt)  # (M, B, n_t, n_t)
-        Qf = Q[:, :, idx][:, :, :, idx]
-        if added is not None:
-            Qf = Qf + added
-        out = (Phi, Q, Phi[:, idx][:, :, idx], Qf)
+        if working:
+            Phi_f_ = np.ascontiguousarray(Phi[:, rows_f, rows_f])
+            Qf = Q[:, :, rows_f, rows_f] + (0.0 if added is None else added[order_f[:, None], order_f])
+        else:
+            Phi_f_ = Phi[:, idx[:, None], idx]
+            Qf = Q[:, :, idx[:, None], idx] + (0.0 if added is None else added)
+        out = (Phi, Q, Phi_f_, Qf)
         if key is not None:
             _remember_transitions(key, out)
         return out
@@ -403,18 +413,20 @@ def run_covariance_analysis(
     f0 = ext_dyn.size
     rows_f = slice(f0, f0 + n_f)
     unmod_p = np.r_[np.arange(f0), np.arange(f0 + n_f, n_t)].astype(np.intp)
-    Pt = Pt[:, order_t][:, :, order_t]
-    Pf = Pf[:, order_f][:, :, order_f]
-    P0_uu = Pa[:, order_t][:, :, order_t][:, unmod_p][:, :, unmod_p]
+    Pt = Pt[:, order_t[:, None], order_t]
+    Pf = Pf[:, order_f[:, None], order_f]
+    P0_uu = Pa[:, order_t[unmod_p][:, None], order_t[unmod_p]]
 
-    def reordered(chunk: tuple[Array, Array, Array, Array]) -> tuple[Any, ...]:
-        """A chunk's transitions in the working order, each model's with its transposed
-        dynamic rows, or ``None`` where the chunk does not fit the structure."""
+    def reordered(chunk: tuple[Array, Array, Array, Array], working: bool) -> tuple[Any, ...]:
+        """A chunk's transitions in the working order (``working``: they already are), each
+        model's with its transposed dynamic rows, or ``None`` where the chunk does not fit the
+        structure."""
         Phi, Q, Phi_f_, Qf = chunk
-        Phi = Phi[:, order_t][:, :, order_t]
-        Q = Q[:, :, order_t][:, :, :, order_t]
-        Phi_f_ = Phi_f_[:, order_f][:, :, order_f]
-        Qf = Qf[:, :, order_f][:, :, :, order_f]
+        if not working:
+            Phi = Phi[:, order_t[:, None], order_t]
+            Q = Q[:, :, order_t[:, None], order_t]
+            Phi_f_ = Phi_f_[:, order_f[:, None], order_f]
+            Qf = Qf[:, :, order_f[:, None], order_f]
         if not (_static_states(Phi, Q)[d_t:].all() and _static_states(Phi_f_, Qf)[d_f:].all()):
             return Phi, Q, Phi_f_, Qf, None, None
         return (
@@ -443,7 +455,7 @@ def run_covariance_analysis(
         if li >= 0:
             if li >= hi:
                 lo, hi = li, li + _LIN_CHUNK
-                chunk = reordered(first if lo == 0 else transitions(lo))
+                chunk = reordered(first, False) if lo == 0 else reordered(transitions(lo, True), True)
             i = li - lo
             Phi_t, Q_t, Phi_f, Q_f = chunk[0][i], chunk[1][i], chunk[2][i], chunk[3][i]
             DT_t = None if chunk[4] is None else chunk[4][i]
@@ -522,8 +534,8 @@ def run_covariance_analysis(
                 snaps[b][k] = Pt[b][np.ix_(back_t, back_t)]
     tv = tv_p[:, :, back_t].transpose(1, 0, 2)
     fv = fv_p[:, :, back_f].transpose(1, 0, 2)
-    Pt = Pt[:, back_t][:, :, back_t]
-    Pf = Pf[:, back_f][:, :, back_f]
+    Pt = Pt[:, back_t[:, None], back_t]
+    Pf = Pf[:, back_f[:, None], back_f]
     p = truth_layout.slice("position").start
     v = truth_layout.slice("velocity").start
     out = []
@@ -811,39 +823,70 @@ def _discrete_noise_diag(F: Array, q: Array, dt: float) -> Array:
     """:func:`discrete_noise` of ``M`` systems ``F`` ``(M, n, n)``, each driven by ``B``
     diagonal PSDs ``diag(q[m, b])`` (``q``: ``(M, B, n)``), unchecked: ``(M, B, n, n)``.
 
-    The same quadrature as :func:`discrete_noise` (``P S = P * q`` for a diagonal ``S``, exactly).
+    The same quadrature as :func:`discrete_noise` (``P S = P * q`` for a diagonal ``S``, exactly),
+    computed where it can differ from zero: ``Phi(s) S Phi(s)^T`` reads only the driven columns
+    of ``Phi(s)``, which are zero outside the rows of ``F`` that are not zero (the dynamic rows)
+    and the driven states' own unit entries; the three nodes' products are one product over
+    their stacked columns.
     """
     x, w = _GAUSS3
-    Q = np.zeros((*q.shape, q.shape[-1]))
+    M, B, n = q.shape
+    Q = np.zeros((M, B, n, n))
     driven = np.flatnonzero(np.any(q != 0.0, axis=(0, 1)))  # only these columns of S are not 0
-    qd = q[:, :, None, driven]
+    if driven.size == 0:
+        return Q
+    dyn = np.flatnonzero(np.any(F != 0.0, axis=(0, 2)))
+    rows = np.union1d(dyn, driven)  # the rows of Phi(s)[:, driven] that can be non-zero
+    at_dyn = np.searchsorted(rows, dyn)
+    static_driven = np.setdiff1d(driven, dyn)
+    cols, parts = [], []
     for xi, wi in zip(x, w, strict=True):
-        P = _taylor_stack(F, 0.5 * dt * (xi + 1.0))[:, None, :, driven]  # (M, 1, n, d)
-        Q = Q + (0.5 * dt * wi) * ((P * qd) @ np.swapaxes(P, -1, -2))
-    return 0.5 * (Q + np.swapaxes(Q, -1, -2))
+        part = np.zeros((M, rows.size, driven.size))
+        part[:, at_dyn, :] = _taylor_rows(F, 0.5 * dt * (xi + 1.0), dyn)[:, :, driven]
+        # a driven random constant or random walk keeps its unit row
+        part[:, np.searchsorted(rows, static_driven), np.searchsorted(driven, static_driven)] = 1.0
+        parts.append(part)
+        cols.append((0.5 * dt * wi) * q[:, :, None, driven])
+    P = np.concatenate(parts, axis=-1)[:, None]  # (M, 1, r, 3 d)
+    Qr = (P * np.concatenate(cols, axis=-1)) @ np.swapaxes(P, -1, -2)  # (M, B, r, r)
+    Q[:, :, rows[:, None], rows] = 0.5 * (Qr + np.swapaxes(Qr, -1, -2))
+    return Q
 
 
-def _taylor_stack(F: Array, dt: float, order: int = 4) -> Array:
-    """:func:`_taylor` of a stack ``(M, n, n)``, transforming only the rows of ``F`` that are
-    not zero in any member (a zero row of ``F``, a random constant's, is a unit row of ``Phi``).
+#: Highest power of the transition series the engine keeps (4 is exact for the nilpotent INS
+#: error chains; a resolution, not an input: the tests check that 12 moves nothing).
+_SERIES_ORDER = 4
+
+
+def _taylor_rows(F: Array, dt: float, dyn: NDArray[np.intp]) -> Array:
+    """The rows ``dyn`` of :func:`_taylor` of a stack ``(M, n, n)`` whose other rows are zero
+    in every member (a zero row of ``F``, a random constant's, is a unit row of ``Phi``):
+    ``(M, d, n)``.
 
     With ``F = [[a, b], [0, 0]]`` (dynamic rows first) the Horner step
     ``Phi <- I + F dt Phi / j`` keeps ``Phi = [[x, y], [0, I]]`` and updates
     ``[x, y] <- [I, 0] + (a dt [x, y] + [0, b dt]) / j``.
     """
     n = F.shape[-1]
-    dyn = np.flatnonzero(np.any(F != 0.0, axis=(0, 2)))
-    eye = np.eye(n)
     A = F[:, dyn, :] * dt  # (M, d, n)
     A_dd = A[:, :, dyn]
     A_ds = A.copy()
     A_ds[:, :, dyn] = 0.0  # the columns of the static states
-    rows = eye[dyn]
+    rows = np.eye(n)[dyn]
     X = rows
-    for j in range(order, 0, -1):
+    for j in range(_SERIES_ORDER, 0, -1):
         X = rows + (A_dd @ X + A_ds) / j
-    Phi = np.broadcast_to(eye, F.shape).copy()
-    Phi[:, dyn, :] = X
+    return X
+
+
+def _taylor_stack(F: Array, dt: float) -> Array:
+    """:func:`_taylor` of a stack ``(M, n, n)``, transforming only the rows of ``F`` that are
+    not zero in any member (:func:`_taylor_rows`)."""
+    n = F.shape[-1]
+    dyn = np.flatnonzero(np.any(F != 0.0, axis=(0, 2)))
+    Phi = np.zeros(F.shape)
+    Phi[:, np.arange(n), np.arange(n)] = 1.0
+    Phi[:, dyn, :] = _taylor_rows(F, dt, dyn)
     return Phi
 
 

@@ -292,7 +292,26 @@ def _transition_and_noise(F: Array, q: Array, dt: float) -> tuple[Array, Array]:
     return phi(dt), symmetrize_unchecked(Qd)
 
 
-_k_quat_from_rotvec = unchecked(quat_from_rotvec)
+def _increment_quaternions(r: Array) -> tuple[tuple[Array, ...], tuple[Array, ...]]:
+    """The quaternions of the rotation vectors ``r`` ``(N, S, 3)`` and of their halves, as
+    :func:`~navcore.frames.quat_from_rotvec` gives them, each component an ``(S, N)`` array.
+
+    One sine and one cosine of a quarter of the angle serve both: the half rotation is
+    ``[cos(a/4), sin(a/4) r / a]`` and the whole one ``[1 - 2 sin²(a/4), 2 cos(a/4) sin(a/4) r / a]``
+    (the double-angle identities; equal to round-off). Below an angle of 2e-8 rad, ``sin(a/4)/a``
+    is its series ``1/4 - a²/384`` (the small-angle branch of ``quat_from_rotvec``).
+    """
+    rx, ry, rz = (np.ascontiguousarray(r[..., i].T) for i in range(3))  # (S, N) each
+    angle2 = rx * rx + ry * ry + rz * rz
+    angle = np.sqrt(angle2)
+    quarter = 0.25 * angle
+    s, c = np.sin(quarter), np.cos(quarter)
+    small = angle < 2e-8
+    k = np.where(small, 0.25 - angle2 / 384.0, s / np.where(small, 1.0, angle))
+    k2 = 2.0 * c * k
+    half = (c, k * rx, k * ry, k * rz)
+    whole = (1.0 - 2.0 * s * s, k2 * rx, k2 * ry, k2 * rz)
+    return whole, half
 
 
 def _strapdown_rows(
@@ -327,10 +346,8 @@ def _strapdown_rows(
     f_n_mean : (N, 3) ndarray
         The specific force resolved in NED, averaged over the intervals (for the error model).
     """
-    dq = _k_quat_from_rotvec(w * dt)  # (N, S, 4)
-    hq = _k_quat_from_rotvec(0.5 * w * dt)
+    (dw, dx, dy, dz), hq = _increment_quaternions(w * dt)  # (S, N) each
     S = w.shape[1]
-    dw, dx, dy, dz = (np.ascontiguousarray(dq[..., i].T) for i in range(4))  # (S, N) each
     # the attitude at the start of each interval: q_{s+1} = q_s ⊗ dq_s (strapdown_step's order)
     qs = np.empty((4, S + 1, w.shape[0]))
     a, b, c, d = (quat[:, i].copy() for i in range(4))
@@ -346,7 +363,7 @@ def _strapdown_rows(
     qs[0, S], qs[1, S], qs[2, S], qs[3, S] = a, b, c, d
     # mid-interval attitude (start ⊗ half increment) resolves the specific force
     a, b, c, d = qs[0, :S], qs[1, :S], qs[2, :S], qs[3, :S]
-    e, x, y, z = (hq[..., i].T for i in range(4))
+    e, x, y, z = hq
     mw = a * e - b * x - c * y - d * z
     mx = a * x + b * e + c * z - d * y
     my = a * y - b * z + c * e + d * x
