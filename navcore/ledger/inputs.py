@@ -798,7 +798,42 @@ def input_cache(fn: F) -> F:
     (0.2, 2)
     """
     store: dict[Any, list[tuple[tuple[tuple[Input, Any], ...], Any]]] = {}
+    # per argument key, the stored variants indexed by the names of the inputs they read, then
+    # by those inputs' values: a lookup costs one probe per distinct set of inputs read, not a
+    # scan of up to 256 variants (a deterministic computation has at most one variant that
+    # matches the current values: the one whose path it would take now)
+    index: dict[Any, dict[tuple[str, ...], dict[tuple[Any, ...], tuple[Reads, Any]]]] = {}
     signature = inspect.signature(fn)
+
+    def indexed(key: Any, reads: Reads, result: Any) -> None:
+        names = tuple(inp.name for inp, _ in reads)
+        values = tuple(_hashable(value) for _, value in reads)
+        index.setdefault(key, {}).setdefault(names, {}).setdefault(values, (reads, result))
+
+    def remember(key: Any, reads: Reads, result: Any) -> None:
+        variants = store.setdefault(key, [])
+        variants.append((reads, result))
+        if len(variants) > 256:  # bounded: perturbation runs and batched bands create variants
+            del variants[:-256]
+            index.pop(key, None)
+            for r, res in variants:
+                indexed(key, r, res)
+        else:
+            indexed(key, reads, result)
+
+    def lookup(key: Any) -> tuple[Reads, Any] | None:
+        variants = store.get(key)
+        if not variants:
+            return None
+        for by_values in index.get(key, {}).values():
+            reads, _ = next(iter(by_values.values()))
+            hit = by_values.get(tuple(_hashable(_current(inp)) for inp, _ in reads))
+            if hit is not None and all(_same(_current(inp), value) for inp, value in hit[0]):
+                return hit
+        for reads, result in variants:  # values the index cannot tell apart (compared by repr)
+            if all(_same(_current(inp), value) for inp, value in reads):
+                return reads, result
+        return None
 
     @functools.wraps(fn)
     def wrapper(*args: Any, **kwargs: Any) -> Any:
@@ -810,22 +845,19 @@ def input_cache(fn: F) -> F:
         key = tuple((k, _hashable(v)) for k, v in bound.arguments.items())
         outer = _RECORDER.get()
         _guard(getattr(fn, "__qualname__", "a cached computation"), outer is not None)
-        for reads, result in store.get(key, ()):
-            if all(_same(_current(inp), value) for inp, value in reads):
-                if outer is not None:
-                    for inp, _ in reads:
-                        _read(inp)
-                return result
+        hit = lookup(key)
+        if hit is not None:
+            if outer is not None:
+                for inp, _ in hit[0]:
+                    _read(inp)
+            return hit[1]
         with recording() as inner:
             result = fn(*args, **kwargs)
         reads = tuple((inp, _current(inp)) for inp in inner.values())
         if outer is not None:
             for inp, _ in reads:
                 _read(inp)
-        variants = store.setdefault(key, [])
-        variants.append((reads, result))
-        if len(variants) > 256:  # bounded: perturbation runs and batched bands create variants
-            del variants[:-256]
+        remember(key, reads, result)
         return result
 
     def prime(entries: Sequence[tuple[Reads, Any]], *args: Any, **kwargs: Any) -> None:
@@ -839,14 +871,15 @@ def input_cache(fn: F) -> F:
         bound = signature.bind(*args, **kwargs)
         bound.apply_defaults()
         key = tuple((k, _hashable(v)) for k, v in bound.arguments.items())
-        variants = store.setdefault(key, [])
         for reads, result in entries:
-            if not any(_same_reads(r, reads) for r, _ in variants):
-                variants.append((tuple(reads), result))
-        if len(variants) > 256:
-            del variants[:-256]
+            if not any(_same_reads(r, reads) for r, _ in store.get(key, ())):
+                remember(key, tuple(reads), result)
 
-    wrapper.cache_clear = store.clear  # type: ignore[attr-defined]
+    def cache_clear() -> None:
+        store.clear()
+        index.clear()
+
+    wrapper.cache_clear = cache_clear  # type: ignore[attr-defined]
     wrapper.prime = prime  # type: ignore[attr-defined]
     return wrapper  # type: ignore[return-value]
 
