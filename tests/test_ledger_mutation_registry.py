@@ -24,7 +24,7 @@ import joblib
 import numpy as np
 import pytest
 
-from navcore.ledger import EXACT, Claim, Erratum, InputSet, evaluate, registry
+from navcore.ledger import EXACT, Claim, Erratum, InputSet, evaluate, printed, registry
 from navcore.ledger import core as ledger_core
 from navcore.ledger import inputs as ledger_inputs
 
@@ -100,7 +100,7 @@ def synthetic(monkeypatch, tmp_path):
     monkeypatch.setattr(registry, "_MEMO", {})
     monkeypatch.setattr(registry, "_SHARED_RUNS", ((P + "kzl_delta", P + "wf_gamma"),))
     monkeypatch.setattr(
-        registry, "_TASK_SECONDS", {P + "wf_beta": 5.0, P + "kzl_delta": 0.05, P + "wf_gamma": 0.2}
+        registry, "_TASK_SECONDS", {P + "wf_beta": 5.0, P + "kzl_delta": 0.5, P + "wf_gamma": 0.2}
     )
     monkeypatch.setattr(ledger_core, "_ERRATA_BY_ID", dict(ledger_core._ERRATA_BY_ID))
     monkeypatch.setattr(ledger_inputs, "all_inputs", lambda paper=None: ())
@@ -222,9 +222,11 @@ def test_a_paper_key_loads_only_that_papers_modules(synthetic):
     else imports them all. Oracle: a module of another paper that raises when it is read."""
     mods = standard_modules()
     mods[P + "atc10_eps"] = _Exploding(P + "atc10_eps")
+    mods[P + "kzl_zeta"] = _module(P + "kzl_zeta", [_claim("KZL-z-1")])
     synthetic(mods)
+    assert [c.id for c in registry.claims(prefix="KZL-z-")] == ["KZL-z-1"]  # the key before the first dash
     assert len(registry.claims("WF")) == 5
-    assert [c.id for c in registry.claims(prefix="KZL-")] == ["KZL-d1"]
+    assert [c.id for c in registry.claims(prefix="KZL-")] == ["KZL-d1", "KZL-z-1"]
     assert registry.claim("WF-old-a1").id == "WF-a1"
     assert registry.erratum("KZL-E901-typo").paper == "KZL"
     assert registry.errata("WF")[0].id == "WF-E901-slip"
@@ -290,8 +292,8 @@ def test_validate_registry_links_and_fitted_inputs(monkeypatch):
 
 
 def test_published_value_must_be_printed_in_the_quote(monkeypatch):
-    """Oracle: a quote that prints 15 passes, one that prints 16 is refused, unless the claim
-    is a statement or on the allowlist."""
+    """Oracle: a quote (the claim's own, or the digits given to ``printed``) that prints 15
+    passes, one that prints 16 is refused, unless the claim is a statement or on the allowlist."""
     from navcore.ledger import allowlists
 
     monkeypatch.setattr(ledger_inputs, "all_inputs", lambda paper=None: ())
@@ -301,8 +303,21 @@ def test_published_value_must_be_printed_in_the_quote(monkeypatch):
         ValueError, match=r"claim 'WF-q': its published value 15.0 is not printed in its quote"
     ):
         registry.validate_registry([bad], [])
+    # every claim is checked, also after a statement or an allowlisted claim
+    statement = _claim("WF-s", published=True, unit="statement", compute=lambda: True)
+    with pytest.raises(ValueError, match="claim 'WF-q'"):
+        registry.validate_registry([statement, bad], [])
+    # the digits given to printed() are the quote when the claim has none
+    registry.validate_registry([_claim("WF-r", tolerance=printed("15")[1])], [])
+    digits = _claim("WF-r", tolerance=printed("16")[1])
+    with pytest.raises(
+        ValueError, match=r"claim 'WF-r': its published value 15.0 is not printed in its quote '16'"
+    ):
+        registry.validate_registry([digits], [])
     monkeypatch.setattr(allowlists, "PUBLISHED_NOT_IN_QUOTE", {"WF-q": "a unit conversion"})
     registry.validate_registry([bad], [])
+    with pytest.raises(ValueError, match="claim 'WF-r'"):
+        registry.validate_registry([bad, digits], [])
 
 
 # --- dependencies and the cache key ------------------------------------------------------------
@@ -603,13 +618,13 @@ def test_group_records(synthetic, monkeypatch):
 def test_ledger_tasks_group_and_order(synthetic):
     """A claim's task is its module, or the first module of its shared-runs group; tasks come
     longest first by their measured seconds (0.1 s for a module not measured). Oracle: the
-    stand-in seconds (beta 5, alpha unmeasured, delta 0.05, gamma 0.2 but run in delta's task)."""
+    stand-in seconds (beta 5, delta 0.5, alpha unmeasured, gamma 0.2 but run in delta's task)."""
     synthetic(standard_modules())
     assert registry.ledger_task("WF-old-a1") == P + "wf_alpha"
     assert registry.ledger_task("WF-c1") == P + "kzl_delta"
     assert registry.ledger_task("KZL-d1") == P + "kzl_delta"
     tasks = registry.ledger_tasks(["KZL-d1", "WF-a1", "WF-c1", "WF-b1", "WF-a2"])
-    assert tasks == [("WF-b1",), ("WF-a1", "WF-a2"), ("KZL-d1", "WF-c1")]
+    assert tasks == [("WF-b1",), ("KZL-d1", "WF-c1"), ("WF-a1", "WF-a2")]
     assert registry.ledger_tasks([]) == []
 
 
@@ -637,7 +652,7 @@ def test_evaluate_in_parallel_gives_the_serial_evaluations(synthetic, monkeypatc
     monkeypatch.setattr(navcore.parallel, "run_tasks", recording)
     asked = ["WF-c1", "KZL-d1", "WF-old-a1", "WF-b1", "WF-a1", "WF-a2", "WF-b2", "KZL-d1"]
     seconds = registry.evaluate_in_parallel(asked, n_jobs=n_jobs)
-    assert handed == [([(("WF-b2",),), (("WF-a1", "WF-a2"),), (("KZL-d1",),)], n_jobs)]
+    assert handed == [([(("WF-b2",),), (("KZL-d1",),), (("WF-a1", "WF-a2"),)], n_jobs)]
     assert sorted(seconds) == ["KZL-d1", "WF-a1", "WF-a2", "WF-b2"]
     assert all(isinstance(s, float) and 0.0 <= s < 60.0 for s in seconds.values())
     assert registry._MEMO["WF-c1"] is memo
