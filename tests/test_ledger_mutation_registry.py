@@ -88,6 +88,12 @@ SOURCES = {
 }
 
 
+@pytest.fixture(autouse=True)
+def _own_errata(monkeypatch):
+    """Every erratum constructed registers itself (``claim_errata``): the synthetic ones here only."""
+    monkeypatch.setattr(ledger_core, "_ERRATA_BY_ID", dict(ledger_core._ERRATA_BY_ID))
+
+
 @pytest.fixture
 def synthetic(monkeypatch, tmp_path):
     """Install a synthetic registry; yield a function that installs one set of modules."""
@@ -102,7 +108,6 @@ def synthetic(monkeypatch, tmp_path):
     monkeypatch.setattr(
         registry, "_TASK_SECONDS", {P + "wf_beta": 5.0, P + "kzl_delta": 0.5, P + "wf_gamma": 0.2}
     )
-    monkeypatch.setattr(ledger_core, "_ERRATA_BY_ID", dict(ledger_core._ERRATA_BY_ID))
     monkeypatch.setattr(ledger_inputs, "all_inputs", lambda paper=None: ())
     monkeypatch.setenv("NAVCORE_CACHE", str(tmp_path / "cache"))
     monkeypatch.delenv("NAVCORE_CACHE_REFRESH", raising=False)
