@@ -194,6 +194,7 @@ PACKAGES: dict[str, Package] = {
             "test_ledger_mutation_summary.py",
             "test_ledger_mutation_render.py",
             "test_ledger_mutation_note.py",
+            "test_ledger_mutation_registry.py",
         ],
         deselect="each_published_input_moves or every_tolerance_has_a_policy or no_old_id_left",
         copy=("_config.yml",),  # a rendering test reads the book's LaTeX settings
