@@ -1119,6 +1119,8 @@ def quote_math(piece: str) -> str:
     '\\sqrt{2 \\frac{\\partial^2}{\\partial r^2}\\ldots}'
     >>> quote_math(r"a & b \\ c & d")
     '\\begin{matrix}a & b \\\\ c & d\\end{matrix}'
+    >>> quote_math(r"\sum_{\substack{j=1 \\ j \neq i}}^N x_j")
+    '\\sum_{\\substack{j=1 \\\\ j \\neq i}}^N x_j'
     >>> quote_math("1.61×10^{-4}")
     '1.61\\times 10^{-4}'
     """
@@ -1138,9 +1140,9 @@ def quote_math(piece: str) -> str:
                 stack.pop()
             else:
                 lead.append("{" if tok == "}" else "\\left.")
-        elif depth == 0 and tok == "&":
+        elif depth == 0 and "{" not in stack and tok == "&":
             amps.append(m.start())
-        elif depth == 0 and tok == "\\\\":
+        elif depth == 0 and "{" not in stack and tok == "\\\\":  # not a \substack's lines
             rows = True
     if amps and not rows:  # an alignment point of the paper's display: no alignment inline
         piece = "".join(ch for i, ch in enumerate(piece) if i not in amps)
