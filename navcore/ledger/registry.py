@@ -721,8 +721,9 @@ def ledger_tasks(claim_ids: list[str]) -> list[tuple[str, ...]]:
     Returns
     -------
     list of tuple of str
-        The claim ids of each task, in registry order within a task; tasks ordered by their
-        usual evaluation time (measured seconds kept in the module), longest first.
+        The claim ids of each task, in the order given within a task (registry order when
+        called through :func:`evaluations`); tasks ordered by their usual evaluation time
+        (measured seconds kept in the module), longest first.
 
     Examples
     --------
