@@ -1998,7 +1998,8 @@ class LedgerTable:
                 )
                 if below:  # the quote on a line of its own, the width of the table
                     out.append(
-                        f'<tr class="ledger-claim-quote" data-status="{status}">'
+                        f'<tr id="{html.escape(c.id.lower())}-quote" class="ledger-claim-quote" '
+                        f'data-status="{status}">'
                         f'<td colspan="5" data-label="Printed">{_printed_html(printed)}</td></tr>'
                     )
             out.append("</tbody>")
