@@ -1864,8 +1864,10 @@ class LedgerTable:
     consecutive claims of one table, figure, equation or section share a header row naming
     it. Each claim is one line: what it checks, the printed and the reproduced value with
     their unit (a statement reads "stated" / "holds"), its verdict as a coloured badge and
-    its kind. The note, the tolerance with its reason, the band and the inputs sit behind a
-    disclosure; what every claim of a group shares is said once, in the group's header.
+    its kind; a quoted equation too wide for the Printed column (:func:`quote_below`) follows
+    on a line of its own, the table's width. The note, the tolerance with its reason, the
+    band and the inputs sit behind a disclosure; what every claim of a group shares is said
+    once, in the group's header.
     Each row carries the lower-cased claim id as its anchor.
 
     Parameters
