@@ -918,14 +918,210 @@ def _math_html(piece: str, wide: int) -> str:
     span = '<span class="math notranslate nohighlight">\\({}\\)</span>'
     if not wide or len(piece) <= wide:
         return span.format(html.escape(piece))
-    # a piece still longer than a claim column holds is cut inside its brackets too
-    parts = [
+    pieces = "<wbr>".join(span.format(html.escape(p)) for p in _math_parts(piece))
+    return f'<span class="ledger-math-wide">{pieces}</span>'
+
+
+def _math_parts(piece: str) -> list[str]:
+    r"""The pieces a long formula of a claim row is cut into (:func:`_math_html`): where TeX may
+    break it, and a piece still longer than a claim column holds inside its brackets too.
+
+    Examples
+    --------
+    >>> _math_parts(r"x_{\rm long} = a + b")
+    ['x_{\\rm long} ={}', 'a + b']
+    """
+    return [
         q
         for p in _math_breaks(piece)
         for q in (_math_breaks(p, brackets=True) if len(re.sub(r"\s", "", p)) > _LONG_PIECE else [p])
     ]
-    pieces = "<wbr>".join(span.format(html.escape(p)) for p in parts)
-    return f'<span class="ledger-math-wide">{pieces}</span>'
+
+
+# ---------------------------------------------------------------------------------------
+# how wide a formula sets: a rule that does not depend on the browser
+
+#: Widths in em of what inline TeX math sets (Computer Modern's metrics, rounded): an
+#: italic letter, a capital, a digit, a Greek letter, a fence, a relation and a binary
+#: operator with the spaces TeX puts around them, a named operator's letter.
+_EM = {
+    "letter": 0.52, "capital": 0.75, "digit": 0.5, "greek": 0.58, "Greek": 0.72, "fence": 0.39,
+    "relation": 1.33, "binary": 1.22, "sign": 0.78, "comma": 0.45, "thin": 0.28, "text": 0.5,
+    "space": 0.25, "script": 0.71, "frac": 0.24, "sqrt": 0.85, "delimiter": 0.45, "other": 0.6,
+}  # fmt: skip
+_EM_SPACES = {
+    r"\,": 0.17, r"\:": 0.22, r"\;": 0.28, r"\ ": 0.25, r"\!": -0.17, r"\quad": 1.0, r"\qquad": 2.0,
+}  # fmt: skip
+_EM_FONTS = {
+    r"\mathbf": 1.1, r"\boldsymbol": 1.1, r"\bm": 1.1, r"\mathrm": 0.95, r"\mathcal": 1.2, r"\mathbb": 1.2,
+}  # fmt: skip
+#: symbols of their own widths (a large operator with the thin space after it)
+_EM_SYMBOLS = {
+    r"\ldots": 1.17, r"\cdots": 1.17, r"\dots": 1.17, r"\infty": 1.0, r"\partial": 0.57, r"\nabla": 0.83,
+    r"\ell": 0.42, r"\prime": 0.28, r"\{": 0.5, r"\}": 0.5, r"\|": 0.5, r"\langle": 0.39, r"\rangle": 0.39,
+    r"\vert": 0.28, r"\Vert": 0.5, r"\%": 0.83, r"\sum": 1.22, r"\prod": 1.12, r"\bigcap": 1.02,
+    r"\bigcup": 1.02, r"\int": 0.77, r"|": 0.28, "/": 0.5, ".": 0.28, "!": 0.28,
+}  # fmt: skip
+_EM_TEXT = frozenset([r"\text", r"\textrm", r"\mbox", r"\textit", r"\textbf", r"\operatorname"])
+_EM_ACCENTS = frozenset([r"\hat", r"\bar", r"\tilde", r"\dot", r"\ddot", r"\vec", r"\widehat", r"\overline"])
+_EM_NAMED = frozenset(
+    [r"\exp", r"\ln", r"\log", r"\sin", r"\cos", r"\tan", r"\arctan", r"\min", r"\max", r"\det", r"\lim",
+     r"\sup", r"\inf", r"\tr", r"\sinh", r"\cosh", r"\tanh", r"\arg", r"\Pr"]
+)  # fmt: skip
+_EM_GREEK_CAPITALS = frozenset(
+    [r"\Gamma", r"\Delta", r"\Theta", r"\Lambda", r"\Xi", r"\Pi", r"\Sigma", r"\Phi", r"\Psi", r"\Omega"]
+)
+_EM_BIG = frozenset(
+    [r"\left", r"\right", r"\big", r"\Big", r"\bigg", r"\Bigg", r"\bigl", r"\bigr", r"\Bigl", r"\Bigr"]
+)
+_EM_FENCES = {"bmatrix": 0.9, "pmatrix": 0.9, "vmatrix": 0.6, "Bmatrix": 1.0, "cases": 0.6}
+
+
+def _text_em(text: str) -> float:
+    return sum(_EM["space"] if ch == " " else 0.72 if ch.isupper() else _EM["text"] for ch in text)
+
+
+def math_em(tex: str) -> float:
+    r"""About how wide a formula sets as inline TeX math, in em of its font, from its source
+    alone (no browser): each symbol's width from Computer Modern's metrics, a script at 71 %,
+    a fraction as wide as its wider part at script size, a matrix or cases environment as its
+    columns' widest cells side by side, the spaces TeX puts around relations and operators.
+
+    A rough measure (MathJax sets the claim rows' formulas 1.18 to 1.5 times wider than this,
+    in em of the table's text, median 1.35, over every formula the claim tables quote): it
+    ranks formulas by width, which is what :func:`quote_below` needs.
+
+    Examples
+    --------
+    >>> math_em("x"), math_em("x = 1")
+    (0.52, 2.35)
+    >>> round(math_em(r"\frac{a}{b}"), 2), round(math_em(r"x^{2}"), 3)
+    (0.61, 0.925)
+    >>> round(math_em(r"\begin{bmatrix} a & b \\ c & d \end{bmatrix}"), 2)
+    3.27
+    """
+    toks = [t for t in _TEX_TOKEN.findall(tex) if not t.isspace()]
+    pos = 0
+
+    def argument() -> list[str]:  # a {group} or one token
+        nonlocal pos
+        if pos >= len(toks):
+            return []
+        if toks[pos] != "{":
+            pos += 1
+            return [toks[pos - 1]]
+        depth, start = 0, pos
+        while pos < len(toks):
+            depth += {"{": 1, "}": -1}.get(toks[pos], 0)
+            pos += 1
+            if depth == 0:
+                break
+        return toks[start + 1 : pos - 1]
+
+    def em(ts: list[str]) -> float:
+        return math_em(" ".join(ts))
+
+    def scripts(base: float) -> float:  # a base with the scripts after it
+        nonlocal pos
+        sup = sub = 0.0
+        while pos < len(toks) and toks[pos] in ("^", "_", "'"):
+            pos += 1
+            if toks[pos - 1] == "'":
+                sup += _EM["thin"]
+            elif toks[pos - 1] == "^":
+                sup = max(sup, _EM["script"] * em(argument()))
+            else:
+                sub = max(sub, _EM["script"] * em(argument()))
+        return base + (max(sup, sub) + 0.05 if sup or sub else 0.0)
+
+    def environment(name: str) -> float:  # columns side by side, 1 em apart
+        nonlocal pos
+        depth, start = 1, pos
+        while pos < len(toks) and depth:
+            depth += {r"\begin": 1, r"\end": -1}.get(toks[pos], 0)
+            pos += 1
+        body = toks[start : pos - 1]
+        argument()  # the environment's name after \end
+        rows: list[list[list[str]]] = [[[]]]
+        depth = 0
+        for t in body:
+            depth += {"{": 1, "}": -1, r"\begin": 1, r"\end": -1}.get(t, 0)
+            if depth == 0 and t == "&":
+                rows[-1].append([])
+            elif depth == 0 and t == r"\\":
+                rows.append([[]])
+            else:
+                rows[-1][-1].append(t)
+        ncol = max(len(row) for row in rows)
+        cols = [max(em(row[j]) if j < len(row) else 0.0 for row in rows) for j in range(ncol)]
+        return sum(cols) + (ncol - 1) + _EM_FENCES.get(name, 0.0) + (0.33 if name != "matrix" else 0.0)
+
+    width, operand = 0.0, False  # operand: the token before was an operand (a sign is binary)
+    while pos < len(toks):
+        t = toks[pos]
+        pos += 1
+        if t == "{":
+            pos -= 1
+            width += scripts(em(argument()))
+        elif t == r"\begin":
+            width += environment("".join(argument()))
+        elif t in (r"\frac", r"\tfrac", r"\dfrac"):
+            parts = max(em(argument()), em(argument()))
+            width += scripts((1.0 if t == r"\dfrac" else _EM["script"]) * parts + _EM["frac"])
+        elif t == r"\sqrt":
+            width += scripts(em(argument()) + _EM["sqrt"])
+        elif t == r"\substack":
+            rows: list[list[str]] = []
+            row: list[str] = []
+            for s in argument():
+                if s == r"\\":
+                    rows.append(row)
+                    row = []
+                else:
+                    row.append(s)
+            width += max(em(r) for r in [*rows, row])
+        elif t in _EM_BIG:
+            width += scripts(0.12 if pos < len(toks) and toks[pos] == "." else _EM["delimiter"])
+            pos += 1
+        elif t in _EM_TEXT:
+            width += scripts(_text_em("".join(argument())) + (0.17 if t == r"\operatorname" else 0.0))
+        elif t in _EM_FONTS:
+            width += scripts(_EM_FONTS[t] * em(argument()))
+        elif t in _EM_ACCENTS:
+            width += scripts(em(argument()))
+        elif t in _EM_NAMED:
+            width += scripts(_EM["text"] * (len(t) - 1)) + 0.17
+        elif t in _EM_SPACES:
+            width += _EM_SPACES[t]
+        elif t in _TEX_RELATIONS:
+            width += _EM["relation"] if operand else 1.05
+        elif t in _TEX_BINARY:
+            width += _EM["binary"] if operand else _EM["sign"]
+            operand = False
+            continue
+        elif t in (",", ";"):
+            width += _EM["comma"]
+        elif t in ("(", "[", ")", "]"):
+            width += scripts(_EM["fence"])
+            operand = t in ")]"
+            continue
+        elif t in ("^", "_", "'"):
+            pos -= 1
+            width += scripts(0.0)
+        elif t in _EM_SYMBOLS:
+            width += scripts(_EM_SYMBOLS[t])
+        elif t in _EM_GREEK_CAPITALS:
+            width += scripts(_EM["Greek"])
+        elif t.startswith("\\") and len(t) > 2:
+            width += scripts(_EM["greek"])
+        elif t.isdigit():
+            width += scripts(_EM["digit"])
+        elif t.isalpha():
+            width += scripts(_EM["capital"] if t.isupper() else _EM["letter"])
+        elif t not in ("&", r"\\", "}"):
+            width += scripts(_EM["other"])
+        operand = True
+    return width
 
 
 def tex_text(text: str) -> str:
@@ -1306,6 +1502,61 @@ def _printed_html(text: str, *, fold: int = 0) -> str:
     return body
 
 
+#: A quoted formula whose widest unbreakable piece sets wider than this (:func:`math_em`) does
+#: not fit the Printed column even set at 70 % (its box is 16 em of the table's text, so 22.9
+#: em of it at 70 %; MathJax sets 1.18 to 1.5 times :func:`math_em`, median 1.35). Calibrated
+#: on every formula the claim tables quoted (December 2026): the seven that scrolled in their
+#: box measure 19.1 to 31.8 em here (26 to 43 em of text as set), the widest of those that fit
+#: 16.2 em (21.8 em as set); 17.5 lies between, so that none of those that fit moves.
+_QUOTE_BELOW_EM = 17.5
+
+
+def quote_below(text: str) -> bool:
+    r"""Whether a claim's printed quote is shown in a full-width line under its claim's row (in
+    the Printed column, "the equation below"): a formula of it that cannot be cut where TeX
+    may break it into pieces the column holds, its widest piece (:func:`_math_parts`) wider
+    than 17.5 em by :func:`math_em`, a measure of the formula's source alone, so that the
+    layout does not depend on the browser.
+
+    Parameters
+    ----------
+    text : str
+        What the paper printed (:func:`_printed_text`).
+
+    Returns
+    -------
+    bool
+        True if the quote goes under its claim's row.
+
+    Examples
+    --------
+    >>> quote_below("$$x = a + b \\quad (3)$$"), quote_below("about 10 m")
+    (False, False)
+    >>> quote_below("$$(G'P_n^{-1}G)^{-1}G'P_n^{-1}FP_{\\xi_x}F'P_n^{-1}G(G'P_n^{-1}G)^{-1}$$")
+    True
+    """
+    text = _DISPLAY.sub(lambda m: "$" + _EQ_NUMBER.sub("", m.group(1)).strip() + "$", text)
+    pieces = math_spans(text)
+    if not any(is_math for is_math, _ in pieces) or any(
+        _latex_source(piece) for is_math, piece in pieces if not is_math
+    ):
+        return False
+    widths = [
+        math_em(part)
+        for is_math, piece in math_spans(_quote_markup(text))
+        if is_math
+        for part in _math_parts(quote_math(piece))
+    ]
+    return max(widths) > _QUOTE_BELOW_EM
+
+
+def _below_words(text: str) -> str:
+    """The Printed cell of a claim whose quote is shown under its row (:func:`quote_below`)."""
+    text = _DISPLAY.sub(lambda m: "$" + m.group(1) + "$", text)
+    words = "".join(piece for is_math, piece in math_spans(text) if not is_math).strip(" .,;:")
+    return "the quote below" if words else "the equation below"
+
+
 def _reproduced_text(e: Evaluation) -> str:
     if _is_truth(e.reproduced):
         return _statement_word(bool(e.reproduced), printed=False)
@@ -1615,8 +1866,10 @@ class LedgerTable:
     consecutive claims of one table, figure, equation or section share a header row naming
     it. Each claim is one line: what it checks, the printed and the reproduced value with
     their unit (a statement reads "stated" / "holds"), its verdict as a coloured badge and
-    its kind. The note, the tolerance with its reason, the band and the inputs sit behind a
-    disclosure; what every claim of a group shares is said once, in the group's header.
+    its kind; a quoted equation too wide for the Printed column (:func:`quote_below`) follows
+    on a line of its own, the table's width. The note, the tolerance with its reason, the
+    band and the inputs sit behind a disclosure; what every claim of a group shares is said
+    once, in the group's header.
     Each row carries the lower-cased claim id as its anchor.
 
     Parameters
@@ -1723,9 +1976,17 @@ class LedgerTable:
                 elif self.link_pages:
                     what += f' <span class="ledger-id">{self._claim_id_html(e)}</span>'
                 kind = html.escape(_KIND_LABELS.get(str(c.kind), str(c.kind)))
+                printed = _printed_text(e)
+                below = quote_below(printed)
                 cells = (
                     ("ledger-what", "", what),
-                    ("ledger-value", "Printed", _printed_html(_printed_text(e))),
+                    (
+                        "ledger-value",
+                        "Printed",
+                        f'<span class="ledger-quote-below">{_below_words(printed)}</span>'
+                        if below
+                        else _printed_html(printed),
+                    ),
                     ("ledger-value", "Reproduced", _value_html(_reproduced_text(e))),
                     ("ledger-verdict", "Verdict", self._verdict_html(e)),
                     ("ledger-kind", "Kind", f'<span class="ledger-kind-label">{kind}</span>'),
@@ -1734,10 +1995,17 @@ class LedgerTable:
                     f'<td class="{cls}"' + (f' data-label="{label}"' if label else "") + f">{body}</td>"
                     for cls, label, body in cells
                 )
+                status = html.escape(e.status)
                 out.append(
-                    f'<tr id="{html.escape(c.id.lower())}" class="ledger-claim" '
-                    f'data-status="{html.escape(e.status)}">{tds}</tr>'
+                    f'<tr id="{html.escape(c.id.lower())}" class="ledger-claim'
+                    f'{" ledger-claim-quoted" if below else ""}" data-status="{status}">{tds}</tr>'
                 )
+                if below:  # the quote on a line of its own, the width of the table
+                    out.append(
+                        f'<tr id="{html.escape(c.id.lower())}-quote" class="ledger-claim-quote" '
+                        f'data-status="{status}">'
+                        f'<td colspan="5" data-label="Printed">{_printed_html(printed)}</td></tr>'
+                    )
             out.append("</tbody>")
         out.append("</table></div>")
         return "".join(out)
