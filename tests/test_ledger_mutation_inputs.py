@@ -352,6 +352,51 @@ def test_input_cache_keeps_at_most_256_variants_per_key():
     assert len(calls) == 259
 
 
+def test_input_cache_finds_an_unhashable_value_equal_to_a_stored_one():
+    """Oracle: equality of the values read, by hand. An array input is indexed by its repr; an
+    override by an equal array (another object, another repr: -0.0) still finds the stored
+    result, and a different array does not."""
+    calls = []
+
+    @input_cache
+    def v():
+        calls.append(1)
+        return float(np.sum(IN.vec))
+
+    with overriding({NAME + "vec": np.array([0.0, 1.0])}):
+        assert v() == 1.0
+    with overriding({NAME + "vec": np.array([-0.0, 1.0])}):
+        assert v() == 1.0
+    assert len(calls) == 1
+    with overriding({NAME + "vec": np.array([0.0, 2.0])}):
+        assert v() == 2.0
+    assert len(calls) == 2
+
+
+def test_input_cache_with_reads_that_depend_on_a_value():
+    """Oracle: the branch taken, by hand. A computation that reads a second input only on one
+    branch stores variants with two sets of inputs; each call finds the variant of its branch,
+    and an override of the input read on one branch only misses that branch's variant."""
+    calls = []
+
+    @input_cache
+    def b():
+        calls.append(1)
+        return IN.gain if IN.sign > 0 else IN.gain + IN.loss
+
+    assert b() == 2.0
+    with overriding({NAME + "sign": -1.0}):
+        assert b() == 3.0
+        assert b() == 3.0
+    assert b() == 2.0
+    assert len(calls) == 2
+    with overriding({NAME + "loss": 2.0}):
+        assert b() == 2.0  # the positive branch does not read the loss
+        with overriding({NAME + "sign": -1.0}):
+            assert b() == 4.0
+    assert len(calls) == 3
+
+
 def test_input_cache_prime_stores_batched_results():
     calls = []
 

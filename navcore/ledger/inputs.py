@@ -801,38 +801,43 @@ def input_cache(fn: F) -> F:
     # per argument key, the stored variants indexed by the names of the inputs they read, then
     # by those inputs' values: a lookup costs one probe per distinct set of inputs read, not a
     # scan of up to 256 variants (a deterministic computation has at most one variant that
-    # matches the current values: the one whose path it would take now)
+    # matches the current values: the one whose path it would take now). A value that cannot
+    # be hashed is indexed by its repr, which equal values need not share: the keys holding one
+    # are also scanned on a miss, as before.
     index: dict[Any, dict[tuple[str, ...], dict[tuple[Any, ...], tuple[Reads, Any]]]] = {}
+    scanned: set[Any] = set()
     signature = inspect.signature(fn)
 
-    def indexed(key: Any, reads: Reads, result: Any) -> None:
-        names = tuple(inp.name for inp, _ in reads)
-        values = tuple(_hashable(value) for _, value in reads)
-        index.setdefault(key, {}).setdefault(names, {}).setdefault(values, (reads, result))
+    def index_key(reads: Reads) -> tuple[tuple[str, ...], tuple[Any, ...]]:
+        return tuple(inp.name for inp, _ in reads), tuple(_hashable(value) for _, value in reads)
 
     def remember(key: Any, reads: Reads, result: Any) -> None:
         variants = store.setdefault(key, [])
         variants.append((reads, result))
+        names, values = index_key(reads)
+        index.setdefault(key, {}).setdefault(names, {}).setdefault(values, (reads, result))
+        if any(v is not h for v, (_, h) in zip(values, reads, strict=True)):
+            scanned.add(key)
         if len(variants) > 256:  # bounded: perturbation runs and batched bands create variants
+            for old in variants[:-256]:
+                names, values = index_key(old[0])
+                by_values = index[key].get(names, {})
+                if values in by_values and by_values[values][0] is old[0]:
+                    del by_values[values]
             del variants[:-256]
-            index.pop(key, None)
-            for r, res in variants:
-                indexed(key, r, res)
-        else:
-            indexed(key, reads, result)
 
     def lookup(key: Any) -> tuple[Reads, Any] | None:
-        variants = store.get(key)
-        if not variants:
-            return None
         for by_values in index.get(key, {}).values():
+            if not by_values:
+                continue
             reads, _ = next(iter(by_values.values()))
             hit = by_values.get(tuple(_hashable(_current(inp)) for inp, _ in reads))
             if hit is not None and all(_same(_current(inp), value) for inp, value in hit[0]):
                 return hit
-        for reads, result in variants:  # values the index cannot tell apart (compared by repr)
-            if all(_same(_current(inp), value) for inp, value in reads):
-                return reads, result
+        if key in scanned:
+            for reads, result in store.get(key, ()):
+                if all(_same(_current(inp), value) for inp, value in reads):
+                    return reads, result
         return None
 
     @functools.wraps(fn)
@@ -878,6 +883,7 @@ def input_cache(fn: F) -> F:
     def cache_clear() -> None:
         store.clear()
         index.clear()
+        scanned.clear()
 
     wrapper.cache_clear = cache_clear  # type: ignore[attr-defined]
     wrapper.prime = prime  # type: ignore[attr-defined]
