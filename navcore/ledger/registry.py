@@ -670,17 +670,17 @@ _SHARED_RUNS = (("navcore.papers.sp_coverage", "navcore.papers.sp_flyby"),)
 #: reference machine (2 cores): only the order in which the parallel ledger hands out its tasks
 #: (longest first) uses them. ``python -m navcore ledger --times`` prints the current ones.
 _TASK_SECONDS = {
-    "navcore.papers.sp_missions": 245.0,
-    "navcore.papers.sp_coverage": 215.0,
-    "navcore.papers.kzl_simulation": 125.0,
-    "navcore.papers.atc10_coverage_jamming": 14.0,
-    "navcore.papers.atc10_multiple_access": 11.0,
-    "navcore.papers.sp_antijam": 6.0,
-    "navcore.papers.wf": 5.0,
-    "navcore.papers.atc10_coverage_tracking": 2.6,
-    "navcore.papers.sp_tracking": 1.9,
-    "navcore.papers.atc10_coverage_ma": 1.7,
-    "navcore.papers.atc10_jamming": 1.3,
+    "navcore.papers.sp_missions": 193.0,
+    "navcore.papers.sp_coverage": 196.0,
+    "navcore.papers.kzl_simulation": 106.0,
+    "navcore.papers.atc10_coverage_jamming": 15.0,
+    "navcore.papers.atc10_multiple_access": 10.0,
+    "navcore.papers.sp_antijam": 0.7,
+    "navcore.papers.wf": 4.8,
+    "navcore.papers.atc10_coverage_tracking": 2.2,
+    "navcore.papers.sp_tracking": 0.6,
+    "navcore.papers.atc10_coverage_ma": 1.4,
+    "navcore.papers.atc10_jamming": 1.2,
 }
 
 
