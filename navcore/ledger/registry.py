@@ -365,18 +365,28 @@ def _module_file(name: str) -> Path | None:
     return None
 
 
+#: The ledger's modules that present evaluations (tables, notes in words, summaries): no field
+#: of a stored evaluation is computed by them, and no claim's computation imports them
+#: (``tests/test_ledger_registry_keys.py`` checks both in a fresh process).
+_PRESENTATION = ("render.py", "summary.py")
+
+
 @cache
 def _module_dependencies(module: str) -> tuple[Path, ...]:
     """The files a claim of ``module`` can execute or read: the navcore modules it imports,
     directly or through other navcore modules, at any level (with each package's
-    ``__init__``), the ledger's own modules (which evaluate, but compute no model value, so
-    their own imports are not followed), and navcore's data files.
+    ``__init__``), the ledger's own modules that evaluate (they compute no model value, so
+    their own imports are not followed; the modules of :data:`_PRESENTATION` compute no stored
+    field and are left out), and navcore's data files.
 
     A claim's computation reaches navcore's code through these static imports; the modules
     loaded by a computed name (the traceability registry's walk over every module) serve the
     book's indexes, never a claim.
     """
-    seen: set[Path] = set(_NAVCORE.joinpath("ledger").glob("*.py"))  # the evaluation itself
+    # the evaluation itself; the modules that present evaluations compute none of a stored
+    # evaluation's fields, so a change to them re-renders pages without re-evaluating a claim
+    # (unless a module that computes imports them: the walk below adds them then)
+    seen: set[Path] = {p for p in _NAVCORE.joinpath("ledger").glob("*.py") if p.name not in _PRESENTATION}
     todo = [module]
     while todo:
         name = todo.pop()
@@ -407,8 +417,9 @@ def claim_dependencies(claim_id: str) -> tuple[str, ...]:
     """The navcore files (and data files) whose contents key a claim's stored evaluation.
 
     They are the files of the modules the claim's paper module imports, directly or through
-    other navcore modules (imports inside functions included), the ledger's modules and
-    navcore's data files; an evaluation can execute or read nothing else of navcore. The
+    other navcore modules (imports inside functions included), the ledger's modules that
+    evaluate (not those that only present evaluations) and navcore's data files; an evaluation
+    can execute or read nothing else of navcore. The
     on-disk cache stores this list with each evaluation, so a change to one model module
     re-evaluates only the claims whose modules import it.
 
@@ -432,6 +443,8 @@ def claim_dependencies(claim_id: str) -> tuple[str, ...]:
     >>> deps = claim_dependencies(claims("KZL")[0].id)
     >>> "ledger/core.py" in deps, "estimation/ekf_ins_gnss.py" in deps, "detection/roc.py" in deps
     (True, True, False)
+    >>> "ledger/render.py" in deps
+    False
     """
     c = claim(claim_id)
     return tuple(p.relative_to(_NAVCORE).as_posix() for p in _module_dependencies(_CLAIM_MODULE[c.id]))

@@ -1,0 +1,46 @@
+"""The ledger's stored evaluations are keyed on the files that compute them, not on those that
+present them (issue 29: a change to the claim tables' HTML re-renders without re-evaluating)."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+from navcore.ledger import registry
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def test_presentation_modules_are_not_in_a_claim_key_but_the_evaluation_is():
+    """Oracle: the registry's own file list, read by hand: every claim's key holds the
+    evaluating ledger modules and none of the presentation modules."""
+    for c in registry.claims():
+        deps = set(registry.claim_dependencies(c.id))
+        assert {"ledger/core.py", "ledger/inputs.py", "ledger/registry.py"} <= deps, c.id
+        assert not {f"ledger/{name}" for name in registry._PRESENTATION} & deps, c.id
+
+
+def test_evaluating_claims_imports_no_presentation_module():
+    """Oracle: ``sys.modules`` of a fresh process that evaluates afresh (the disk cache off)
+    every claim of WF and of ATC-10's jamming bounds (statements, bands, readings of
+    conventions) and reads each stored field: no presentation module was imported, so none
+    can have computed a stored field."""
+    code = (
+        "import json, sys\n"
+        "from navcore.ledger import registry\n"
+        "for c in registry.claims():\n"
+        "    if registry._CLAIM_MODULE[c.id] in ('navcore.papers.wf', 'navcore.papers.atc10_jamming'):\n"
+        "        ev = registry.evaluate_claim(c.id)\n"
+        "        [getattr(ev, f) for f in registry._RECORD_FIELDS]\n"
+        "print(json.dumps(sorted(m for m in sys.modules if m.startswith('navcore.ledger'))))\n"
+    )
+    env = dict(os.environ, NAVCORE_CACHE="off")
+    out = subprocess.run(
+        [sys.executable, "-c", code], cwd=ROOT, env=env, capture_output=True, text=True, check=True
+    )
+    loaded = set(json.loads(out.stdout.strip().splitlines()[-1]))
+    assert "navcore.ledger.core" in loaded
+    assert not {f"navcore.ledger.{name.removesuffix('.py')}" for name in registry._PRESENTATION} & loaded
