@@ -125,3 +125,23 @@ def test_the_stylesheet_lays_out_the_quote_line_at_both_widths():
     assert "tr.ledger-claim.ledger-claim-quoted { border-bottom: 0;" in narrow
     assert "tr.ledger-claim-quote { display: block; border-bottom: 1px solid var(--ledger-rule);" in narrow
     assert "tr.ledger-claim-quote td { display: block;" in narrow
+
+
+def test_the_pdf_table_sets_a_long_quote_on_a_line_of_its_own():
+    """By hand, for synthetic claims: in the PDF's claim table a long quote's Printed cell says
+    where the quote is, the row is kept with the next line (``\\\\*``), and that line spans the
+    four columns, centred, with the formula scaled to the table's width only when wider; a short
+    quote stays in its cell."""
+    long_ev = evaluate(statement("ATC10-test-long", LONG))
+    short_ev = evaluate(statement("ATC10-test-short", SHORT))
+    lines = LedgerTable([long_ev, short_ev]).latex().splitlines()
+    at = next(i for i, line in enumerate(lines) if "test-\\allowbreak{}long" in line)
+    assert r"& \textit{the equation below} &" in lines[at] and lines[at].endswith(r"\\*")
+    quote = lines[at + 1]
+    assert quote.startswith(
+        r"\multicolumn{4}{>{\centering\arraybackslash}p{\dimexpr\linewidth-2\tabcolsep\relax}}"
+    )
+    assert r"{\navcorefitmath{P_{\xi_y} = (G'P_n^{-1}G)^{-1} + " in quote and "(H.8)" not in quote
+    short = next(line for line in lines if "test-\\allowbreak{}short" in line)
+    assert r"& $x = a + b$ &" in short and r"\centering" not in short
+    assert sum(r"\centering" in line for line in lines) == 1

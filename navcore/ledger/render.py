@@ -2022,7 +2022,9 @@ class LedgerTable:
 
         Four columns (what it checks, printed, reproduced, verdict with the kind below it);
         a group's header row spans the width and holds, in small type, the note shared by
-        its claims; a claim's own note follows its quantity in small type.
+        its claims; a claim's own note follows its quantity in small type; a quoted equation
+        too wide for the Printed column (:func:`quote_below`) follows its claim's row on a
+        line of its own, centred across the table and kept on the row's page.
         """
         widths = (0.49, 0.16, 0.16, 0.19)
         align = (r"\raggedright", r"\raggedright", r"\raggedleft", r"\raggedright")
@@ -2032,6 +2034,7 @@ class LedgerTable:
         )
         head = " & ".join(rf"\textbf{{{h}}}" for h in ("What it checks", "Printed", "Reproduced", "Verdict"))
         full = r"\multicolumn{4}{>{\raggedright\arraybackslash}p{\dimexpr\linewidth-2\tabcolsep\relax}}"
+        centred = r"\multicolumn{4}{>{\centering\arraybackslash}p{\dimexpr\linewidth-2\tabcolsep\relax}}"
         out = [
             r"\begingroup\footnotesize\setlength{\tabcolsep}{3pt}\sloppy",
             rf"\begin{{longtable}}{{{cols}}}",
@@ -2064,15 +2067,21 @@ class LedgerTable:
                 if _agreeing_reading_text(e):
                     verdict += r"\newline{}{\scriptsize " + tex_text(_agreeing_reading_text(e)) + "}"
                 verdict += r"\newline{}{\scriptsize\itshape " + _tex_escape(str(c.kind)) + "}"
+                printed = _printed_text(e)
+                below = quote_below(printed)
                 cells = [
                     what,
-                    _printed_tex(_printed_text(e)),
+                    r"\textit{" + _below_words(printed) + "}" if below else _printed_tex(printed),
                     tex_text(_reproduced_text(e)),
                     verdict,
                 ]
                 last = index == len(g.evals) - 1
                 rule = r"\hline" if last else r"\arrayrulecolor{black!25}\hline\arrayrulecolor{black}"
-                out.append(" & ".join(cells) + r" \\ " + rule)
+                if below:  # the quote on a line of its own, the width of the table, kept with its row
+                    out.append(" & ".join(cells) + r" \\*")
+                    out.append(rf"{centred}{{{_printed_tex(printed)}}} \\ " + rule)
+                else:
+                    out.append(" & ".join(cells) + r" \\ " + rule)
         out += [r"\end{longtable}", r"\endgroup"]
         return "\n".join(out)
 
