@@ -633,6 +633,21 @@ def test_ledger_tasks_group_and_order(synthetic):
     assert registry.ledger_tasks([]) == []
 
 
+def test_claims_of_a_claim_task_leave_their_module_task(synthetic, monkeypatch):
+    """A claim whose module and id prefix a ``_CLAIM_TASKS`` entry names runs in that task; the
+    prefix in a module the entry does not name, and the module's other claims, stay where they
+    were. Oracle: the entry read by hand (alpha's WF-a2 only; beta's WF-b1 matches the prefix
+    but not the modules)."""
+    synthetic(standard_modules())
+    monkeypatch.setattr(registry, "_CLAIM_TASKS", (("own runs", (P + "wf_alpha",), ("WF-a2", "WF-b")),))
+    monkeypatch.setitem(registry._TASK_SECONDS, "own runs", 9.0)
+    assert registry.ledger_task("WF-a2") == "own runs"
+    assert registry.ledger_task("WF-a1") == P + "wf_alpha"
+    assert registry.ledger_task("WF-b1") == P + "wf_beta"
+    tasks = registry.ledger_tasks(["WF-a1", "WF-a2", "WF-b1"])
+    assert tasks == [("WF-a2",), ("WF-b1",), ("WF-a1",)]
+
+
 @pytest.mark.parametrize("n_jobs", [1, 2])
 def test_evaluate_in_parallel_gives_the_serial_evaluations(synthetic, monkeypatch, n_jobs):
     """The evaluations made in tasks equal the serial ones; claims already memoised or stored
