@@ -1866,7 +1866,7 @@ class LedgerTable:
     consecutive claims of one table, figure, equation or section share a header row naming
     it. Each claim is one line: what it checks, the printed and the reproduced value with
     their unit (a statement reads "stated" / "holds"), its verdict as a coloured badge and
-    its kind; a quoted equation too wide for the Printed column (:func:`quote_below`) follows
+    its kind; a quoted equation too wide for the Printed column (``quote_below``) follows
     on a line of its own, the table's width. The note, the tolerance with its reason, the
     band and the inputs sit behind a disclosure; what every claim of a group shares is said
     once, in the group's header.
@@ -2023,7 +2023,7 @@ class LedgerTable:
         Four columns (what it checks, printed, reproduced, verdict with the kind below it);
         a group's header row spans the width and holds, in small type, the note shared by
         its claims; a claim's own note follows its quantity in small type; a quoted equation
-        too wide for the Printed column (:func:`quote_below`) follows its claim's row on a
+        too wide for the Printed column (``quote_below``) follows its claim's row on a
         line of its own, centred across the table and kept on the row's page.
         """
         widths = (0.49, 0.16, 0.16, 0.19)
