@@ -1,0 +1,71 @@
+"""Every short cross-reference in the API reference names something the reference documents.
+
+The book's Reference part renders the public API's docstrings with Sphinx in nitpicky mode: a
+``:func:`name``` that resolves to nothing fails the strict HTML and PDF builds, minutes into
+CI (a docstring once named a helper outside ``__all__`` that way). A reference written without
+a module path resolves in its docstring's module (and, for ``:meth:`` and ``:attr:``, in its
+class): this test checks those, in a second, on the docstrings the reference renders
+(:func:`tests.test_docstring_math.api_docstrings`). References with a module path are left
+to Sphinx.
+
+Oracle: Sphinx's rule for unqualified Python references, applied by hand; checked on a
+hand-written docstring first.
+"""
+
+from __future__ import annotations
+
+import builtins
+import importlib
+import inspect
+import re
+
+from tests.test_docstring_math import api_docstrings
+
+_ROLE = re.compile(r":(func|class|meth|data|attr|exc|obj):`~?([A-Za-z_][\w]*)(?:\(\))?`")
+
+
+def _owner(qualname: str) -> tuple[object, object | None]:
+    """The module of a documented object's name, and the class when the name is a member's."""
+    parts = qualname.split(".")
+    for cut in range(len(parts), 0, -1):
+        try:
+            module = importlib.import_module(".".join(parts[:cut]))
+        except ImportError:
+            continue
+        rest = parts[cut:]
+        cls = None
+        obj: object = module
+        for part in rest:
+            obj = getattr(obj, part, None)
+            if inspect.isclass(obj):
+                cls = obj
+        return module, cls
+    raise ValueError(qualname)
+
+
+def unresolved(qualname: str, doc: str) -> list[str]:
+    """The short references of ``doc`` (the docstring of ``qualname``) that resolve to nothing
+    the reference documents: not in the module's ``__all__``, not a member of the class."""
+    module, cls = _owner(qualname)
+    public = set(getattr(module, "__all__", ()))
+    out = []
+    for role, target in _ROLE.findall(doc):
+        if target in public or (cls is not None and hasattr(cls, target)):
+            continue
+        if role == "exc" and hasattr(builtins, target):
+            continue
+        out.append(f":{role}:`{target}`")
+    return out
+
+
+def test_the_check_finds_a_reference_to_a_helper_outside_all():
+    doc = "Uses :func:`quote_math` and :func:`~quote_below`; see :class:`LedgerTable` and :meth:`latex`."
+    found = unresolved("navcore.ledger.render.LedgerTable", doc)
+    assert found == [":func:`quote_below`"]
+
+
+def test_short_references_in_the_api_reference_resolve():
+    bad = [(name, ref) for name, doc in api_docstrings() for ref in unresolved(name, doc)]
+    assert not bad, "references Sphinx cannot resolve (qualify them, or name them as code):\n" + "\n".join(
+        f"{name}: {ref}" for name, ref in bad
+    )
