@@ -798,3 +798,235 @@ def test_layout_main_passes_its_options_and_prints_the_problems(monkeypatch, cap
         check_layout.main(["b", "--tabs", "0"])
     assert exc.value.code == 2
     assert "--tabs must be at least 1, not 0" in capsys.readouterr().err
+
+
+# --- check_layout's browser, over a stand-in DevTools connection ---------------------------------
+
+
+class _DevTools:
+    """A stand-in for Chromium's DevTools websocket: answers each command as Chromium would
+    (a target, a session, a page load's events, a measurement naming the viewport's width)
+    and records what was sent."""
+
+    def __init__(self) -> None:
+        self.incoming: asyncio.Queue = asyncio.Queue()
+        self.sent: list[dict] = []
+        self.width = 0
+        self.closed = False
+
+    def answer(self, data: dict) -> None:
+        self.incoming.put_nowait(json.dumps(data))
+
+    def write_message(self, text: str) -> None:
+        msg = json.loads(text)
+        self.sent.append(msg)
+        ident, method, session = msg["id"], msg["method"], msg.get("sessionId")
+        if method == "Target.createTarget":
+            self.answer({"id": ident, "result": {"targetId": "T1"}})
+        elif method == "Target.attachToTarget":
+            self.answer({"id": ident, "result": {"sessionId": "S1"}})
+        elif method == "Emulation.setDeviceMetricsOverride":
+            self.width = msg["params"]["width"]
+            self.answer({"id": ident})
+        elif method == "Page.navigate":
+            self.answer({"id": ident, "result": {"frameId": "F"}})
+            self.answer({"id": 999, "result": {}})  # a reply nobody waits for
+            self.answer({"method": "Page.loadEventFired", "sessionId": "other"})  # another tab's
+            self.answer({"method": "Page.frameNavigated", "sessionId": session})
+            self.answer({"method": "Page.loadEventFired", "sessionId": session})
+        elif method == "Runtime.evaluate":
+            value = json.dumps({"math": [self.width]}) if self.width != 13 else None
+            self.answer({"id": ident, "result": {"result": {"value": value}}})
+        elif method == "Broken.method":
+            self.answer({"id": ident, "error": {"message": "no such method"}})
+        else:
+            self.answer({"id": ident, "result": {"ok": method}})
+
+    async def read_message(self):
+        return await self.incoming.get()
+
+    def close(self) -> None:
+        self.closed = True
+
+
+async def _connected(monkeypatch) -> tuple:
+    ws = _DevTools()
+    seen = []
+
+    async def websocket_connect(url, max_message_size=None):
+        seen.append((url, max_message_size))
+        return ws
+
+    monkeypatch.setattr("tornado.websocket.websocket_connect", websocket_connect)
+    browser = check_layout.Browser.__new__(check_layout.Browser)
+    browser.browser_ws = "ws://127.0.0.1:1/devtools/browser/x"
+    browser.ids, browser.pending, browser.events = 0, {}, {}
+    await browser.connect()
+    assert seen == [("ws://127.0.0.1:1/devtools/browser/x", 1 << 26)]
+    return browser, ws
+
+
+def test_layout_browser_calls_are_matched_to_their_replies(monkeypatch):
+    """Oracle: the DevTools protocol's message shapes (an id per command, ``sessionId`` for a
+    tab's commands, an ``error`` raised), against the stand-in connection."""
+
+    async def run():
+        browser, ws = await _connected(monkeypatch)
+        assert await browser.call("Any.thing") == {"ok": "Any.thing"}
+        assert await browser.call("Any.other", {"a": 1}, "S9") == {"ok": "Any.other"}
+        assert ws.sent == [
+            {"id": 1, "method": "Any.thing", "params": {}},
+            {"id": 2, "method": "Any.other", "params": {"a": 1}, "sessionId": "S9"},
+        ]
+        with pytest.raises(RuntimeError) as exc:
+            await browser.call("Broken.method")
+        assert str(exc.value) == "Broken.method: {'message': 'no such method'}"
+        assert await browser.call("Emulation.setDeviceMetricsOverride", {"width": 5}) == {}
+        assert browser.pending == {}
+        # the connection closed: a command still waiting fails, the reader ends
+        pending = asyncio.get_running_loop().create_future()
+        browser.pending[50] = pending
+        done = asyncio.get_running_loop().create_future()
+        done.set_result({})
+        browser.pending[51] = done
+        ws.incoming.put_nowait(None)
+        await browser.reader
+        assert str(pending.exception()) == "check_layout: Chromium closed the connection"
+
+    asyncio.run(run())
+
+
+def test_layout_browser_opens_a_tab_and_measures_a_page_at_each_width(monkeypatch):
+    """Oracle: the commands a measurement sends (the viewport at each width, one navigation,
+    one evaluation per width) and the stand-in's answers; a tab's stale events are dropped
+    before the navigation, and an evaluation without a value fails."""
+
+    async def run():
+        browser, ws = await _connected(monkeypatch)
+        session = await browser.open_tab()
+        assert session == "S1" and set(browser.events) == {"S1"}
+        assert [(m["method"], m["params"], m.get("sessionId")) for m in ws.sent] == [
+            ("Target.createTarget", {"url": "about:blank", "newWindow": True}, None),
+            ("Target.attachToTarget", {"targetId": "T1", "flatten": True}, None),
+            ("Page.enable", {}, "S1"),
+        ]
+        ws.sent.clear()
+        browser.events["S1"].put_nowait({"method": "Page.loadEventFired"})  # the previous page's
+        got = await browser.measure("S1", "file:///a.html", (1400, 420))
+        assert got == {1400: {"math": [1400]}, 420: {"math": [420]}}
+        assert browser.events["S1"].empty()
+        methods = [m["method"] for m in ws.sent]
+        assert methods == [
+            "Emulation.setDeviceMetricsOverride",
+            "Page.navigate",
+            "Runtime.evaluate",
+            "Emulation.setDeviceMetricsOverride",
+            "Runtime.evaluate",
+        ]
+        assert ws.sent[0]["params"] == {
+            "width": 1400,
+            "height": 1200,
+            "deviceScaleFactor": 1,
+            "mobile": False,
+        }
+        assert ws.sent[1]["params"] == {"url": "file:///a.html"}
+        assert ws.sent[2]["params"] == {
+            "expression": check_layout.MEASURE,
+            "awaitPromise": True,
+            "returnByValue": True,
+            "timeout": 60000,
+        }
+        assert all(m["sessionId"] == "S1" for m in ws.sent)
+        with pytest.raises(RuntimeError, match=r"^file:///b.html at 13 px: measurement failed: "):
+            await browser.measure("S1", "file:///b.html", (13,))
+        browser.reader.cancel()
+
+    asyncio.run(run())
+
+
+class _Chromium:
+    """A stand-in for the Chromium process: its log announces the DevTools endpoint (or not)."""
+
+    def __init__(self, log: str, hangs: bool = False):
+        import io
+
+        self.stderr = io.StringIO(log)
+        self.hangs, self.calls = hangs, []
+
+    def terminate(self):
+        self.calls.append("terminate")
+
+    def kill(self):
+        self.calls.append("kill")
+
+    def wait(self, timeout=None):
+        self.calls.append(("wait", timeout))
+        if self.hangs and timeout is not None:
+            raise subprocess.TimeoutExpired("chromium", timeout)
+        return 0
+
+
+def test_layout_browser_starts_chromium_and_closes_everything(monkeypatch):
+    """Oracle: the command line the docstring describes, the endpoint read from Chromium's
+    log, and on closing: the socket, then the process (killed if it does not end), then its
+    profile folder."""
+    started = []
+    log = "some line\nDevTools listening on ws://127.0.0.1:9/devtools/browser/abc\nlater line\n"
+
+    def popen(command, stdout=None, stderr=None, text=None):
+        started.append((command, stdout, stderr, text))
+        return _Chromium(log, hangs=True)
+
+    monkeypatch.setattr(check_layout.subprocess, "Popen", popen)
+    browser = check_layout.Browser("/bin/chromium")
+    ((command, stdout, stderr, text),) = started
+    assert command[0] == "/bin/chromium" and command[-1] == "about:blank"
+    for flag in ("--headless", "--no-sandbox", "--hide-scrollbars", "--remote-debugging-port=0"):
+        assert flag in command
+    assert f"--user-data-dir={browser.profile}" in command
+    assert (stdout, stderr, text) == (subprocess.DEVNULL, subprocess.PIPE, True)
+    assert browser.browser_ws == "ws://127.0.0.1:9/devtools/browser/abc"
+    assert (browser.ids, browser.pending, browser.events) == (0, {}, {})
+    assert Path(browser.profile).is_dir()
+
+    class Stream:
+        closed = False
+
+        def close(self):
+            Stream.closed = True
+
+    ws = _DevTools()
+    ws.protocol = type("Protocol", (), {"stream": Stream()})()
+    browser.ws = ws
+
+    class Reader:
+        cancelled = False
+
+        def cancel(self):
+            Reader.cancelled = True
+
+    browser.reader = Reader()
+    browser.close()
+    assert ws.closed and Stream.closed and Reader.cancelled
+    assert browser.proc.calls == ["terminate", ("wait", 10), "kill", ("wait", None)]
+    assert browser.proc.stderr.closed
+    assert not Path(browser.profile).exists()
+    assert not browser._drain.is_alive()
+
+
+def test_layout_browser_that_announces_no_endpoint_fails(monkeypatch):
+    """Oracle: a Chromium whose log never names its DevTools endpoint."""
+    monkeypatch.setattr(check_layout.subprocess, "Popen", lambda *a, **k: _Chromium("no endpoint\n"))
+    with pytest.raises(SystemExit) as exc:
+        check_layout.Browser("chromium")
+    assert str(exc.value) == "check_layout: Chromium did not start its DevTools endpoint"
+
+
+def test_layout_browser_closes_without_a_connection(monkeypatch):
+    """Oracle: a browser closed before it connected ends its process, which ends in time."""
+    log = "DevTools listening on ws://h/x\n"
+    monkeypatch.setattr(check_layout.subprocess, "Popen", lambda *a, **k: _Chromium(log))
+    browser = check_layout.Browser("chromium")
+    browser.close()
+    assert browser.proc.calls == ["terminate", ("wait", 10)]
+    assert not Path(browser.profile).exists()
