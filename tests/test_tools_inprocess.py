@@ -790,7 +790,7 @@ def test_layout_a_page_not_measured_in_time_fails_the_gate(tmp_path, monkeypatch
             return "tab"
 
         async def measure(self, session, url, widths):
-            await asyncio.sleep(60)
+            await asyncio.sleep(2)
 
         def close(self):
             closed.append(True)
@@ -973,7 +973,7 @@ def test_layout_browser_calls_are_matched_to_their_replies(monkeypatch):
         await browser.reader
         assert str(pending.exception()) == "check_layout: Chromium closed the connection"
 
-    asyncio.run(run())
+    asyncio.run(asyncio.wait_for(run(), 5))  # a mutant that hangs fails in 5 s
 
 
 def test_layout_browser_opens_a_tab_and_measures_a_page_at_each_width(monkeypatch):
@@ -1021,7 +1021,7 @@ def test_layout_browser_opens_a_tab_and_measures_a_page_at_each_width(monkeypatc
             await browser.measure("S1", "file:///b.html", (13,))
         browser.reader.cancel()
 
-    asyncio.run(run())
+    asyncio.run(asyncio.wait_for(run(), 5))  # a mutant that hangs fails in 5 s
 
 
 class _Chromium:
