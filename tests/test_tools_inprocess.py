@@ -111,6 +111,8 @@ def test_links_other_schemes_and_hosts_are_not_followed(tmp_path):
     assert check_links.broken_links(tmp_path) == []
     _page(tmp_path / "index.html", '<a href="other:thing">x</a>')
     assert check_links.broken_links(tmp_path) == ["index.html: other:thing (no such file)"]
+    _page(tmp_path / "index.html", '<a href="https://x/">x</a><a href="#nope">x</a>')
+    assert check_links.broken_links(tmp_path) == ["index.html: #nope (no such anchor)"]
 
 
 def test_links_name_anchors_quoted_paths_folders_and_files_that_are_not_pages(tmp_path):
@@ -513,8 +515,11 @@ def test_rename_the_aliases_line_keeps_the_line_ending_and_only_renamed_ids_get_
         '  id="WF-eq9-velocity-error-dominates",'
     )
     # an id line that is not exactly `id="...",` is renamed without an alias
-    assert rename_claim_ids.rewrite_text('x id="KZL-c1",\n id="KZL-c1", y\n', add_aliases=True) == (
+    assert rename_claim_ids.rewrite_text(
+        'x id="KZL-c1",\n id="KZL-c1", y\n id="KZL-c1",X\n', add_aliases=True
+    ) == (
         'x id="KZL-sec1-satellite-aircraft-speed-ratio",\n id="KZL-sec1-satellite-aircraft-speed-ratio", y\n'
+        ' id="KZL-sec1-satellite-aircraft-speed-ratio",X\n'
     )
 
 
@@ -725,7 +730,7 @@ def test_layout_pages_leave_out_assets_indexes_and_redirects(tmp_path):
     for rel in ("genindex.html", "py-modindex.html", "search.html", "reference/api.html"):
         _write(tmp_path / rel, "<p>x</p>")
     _write(tmp_path / "index.html", '<meta http-equiv="Refresh" content="0; url=b.html">')
-    _write(tmp_path / "late.html", "x" * 2000 + '<meta http-equiv="Refresh">')
+    _write(tmp_path / "late.html", "x" * 1981 + 'http-equiv="Refresh"')  # ends at character 2001
     _write(tmp_path / "odd.html", b"\xff<p>x</p>")
     _write(tmp_path / "b.html", "<p>x</p>")
     _write(tmp_path / "b.txt", "<p>x</p>")
@@ -737,7 +742,7 @@ def test_layout_measure_all_reports_every_kind_by_page_and_width(tmp_path, monke
     """Oracle: a stand-in browser reporting one item of each kind per page and width; the
     gathered names by hand, in page order, with every tab closed and one tab per page when
     there are fewer pages than tabs."""
-    for name in ("a", "b"):
+    for name in ("a", "b", "c"):
         _write(tmp_path / "wf" / f"{name}.html", "<p>x</p>")
     log: list = []
 
@@ -753,6 +758,10 @@ def test_layout_measure_all_reports_every_kind_by_page_and_width(tmp_path, monke
             return "tab"
 
         async def measure(self, session, url, widths):
+            assert session == "tab"
+            log.append(url)
+            if url.endswith("c.html"):  # a page that reports no kind at all
+                return {w: {} for w in widths}
             return {w: {k: [{"name": f"{k}-{w}"}] for k in check_layout.KINDS} for w in widths}
 
         def close(self):
@@ -761,7 +770,9 @@ def test_layout_measure_all_reports_every_kind_by_page_and_width(tmp_path, monke
     monkeypatch.setattr(check_layout, "Browser", StandIn)
     monkeypatch.setattr(check_layout, "find_browser", lambda: "/bin/chromium")
     found = check_layout.measure(tmp_path, (1400, 420), tabs=4)
-    assert log == [("start", "/bin/chromium"), "connect", "tab", "tab", "close"]
+    urls = [(tmp_path / "wf" / f"{p}.html").resolve().as_uri() for p in "abc"]
+    assert log[:5] == [("start", "/bin/chromium"), "connect", "tab", "tab", "tab"]
+    assert sorted(log[5:-1]) == urls and log[-1] == "close"
     assert set(found) == {1400, 420}
     for w in (1400, 420):
         assert set(found[w]) == set(check_layout.KINDS)
@@ -836,6 +847,7 @@ def test_layout_find_browser_as_root_installs_chromium_with_apt(monkeypatch):
     Chromium found; if it is still missing, the message."""
     ran = []
     installed = {"apt-get": "/usr/bin/apt-get"}
+    monkeypatch.delenv("DEBIAN_FRONTEND", raising=False)
 
     def run(command, check=False, env=None):
         ran.append((command, check, env["DEBIAN_FRONTEND"], env.get("PATH")))
@@ -916,7 +928,10 @@ class _DevTools:
             self.answer({"method": "Page.loadEventFired", "sessionId": session})
         elif method == "Runtime.evaluate":
             value = json.dumps({"math": [self.width]}) if self.width != 13 else None
-            self.answer({"id": ident, "result": {"result": {"value": value}}})
+            if self.width == 14:  # an answer without a result
+                self.answer({"id": ident})
+            else:
+                self.answer({"id": ident, "result": {"result": {"value": value}}})
         elif method == "Broken.method":
             self.answer({"id": ident, "error": {"message": "no such method"}})
         else:
@@ -1019,6 +1034,8 @@ def test_layout_browser_opens_a_tab_and_measures_a_page_at_each_width(monkeypatc
         assert all(m["sessionId"] == "S1" for m in ws.sent)
         with pytest.raises(RuntimeError, match=r"^file:///b.html at 13 px: measurement failed: "):
             await browser.measure("S1", "file:///b.html", (13,))
+        with pytest.raises(RuntimeError, match=r"^file:///c.html at 14 px: measurement failed: \{\}$"):
+            await browser.measure("S1", "file:///c.html", (14,))
         browser.reader.cancel()
 
     asyncio.run(asyncio.wait_for(run(), 5))  # a mutant that hangs fails in 5 s
@@ -1067,7 +1084,12 @@ def test_layout_browser_starts_chromium_and_closes_everything(monkeypatch):
     assert (stdout, stderr, text) == (subprocess.DEVNULL, subprocess.PIPE, True)
     assert browser.browser_ws == "ws://127.0.0.1:9/devtools/browser/abc"
     assert (browser.ids, browser.pending, browser.events) == (0, {}, {})
-    assert Path(browser.profile).is_dir()
+    assert Path(browser.profile).is_dir() and Path(browser.profile).name.startswith("navcore-layout-")
+    # Chromium's log is read to its end in the background, by a thread that does not keep
+    # the gate alive
+    assert browser._drain.daemon is True
+    browser._drain.join(5)
+    assert browser.proc.stderr.tell() == len(log)
 
     class Stream:
         closed = False
@@ -1103,10 +1125,45 @@ def test_layout_browser_that_announces_no_endpoint_fails(monkeypatch):
 
 
 def test_layout_browser_closes_without_a_connection(monkeypatch):
-    """Oracle: a browser closed before it connected ends its process, which ends in time."""
+    """Oracle: a browser closed before it connected ends its process, which ends in time; a
+    profile folder already gone is no error."""
     log = "DevTools listening on ws://h/x\n"
     monkeypatch.setattr(check_layout.subprocess, "Popen", lambda *a, **k: _Chromium(log))
     browser = check_layout.Browser("chromium")
+    import shutil
+
+    shutil.rmtree(browser.profile)
     browser.close()
     assert browser.proc.calls == ["terminate", ("wait", 10)]
-    assert not Path(browser.profile).exists()
+
+
+@pytest.mark.parametrize("protocol", [None, object()])
+def test_layout_browser_closes_a_connection_without_a_socket_to_close(monkeypatch, protocol):
+    """Oracle: a connection object without a protocol, or whose protocol has no stream (as
+    tornado's after the connection failed), is closed without error."""
+    monkeypatch.setattr(
+        check_layout.subprocess, "Popen", lambda *a, **k: _Chromium("DevTools listening on ws://h\n")
+    )
+    browser = check_layout.Browser("chromium")
+    browser.ws = _DevTools()
+    if protocol is not None:
+        browser.ws.protocol = protocol
+    browser.reader = type("Reader", (), {"cancel": lambda self: None})()
+    browser.close()
+    assert browser.ws.closed
+
+
+def test_layout_main_help_describes_the_options(capsys):
+    """Oracle: the docstring's first line and the options' help, as written in the tool."""
+    with pytest.raises(SystemExit) as exc:
+        check_layout.main(["--help"])
+    assert exc.value.code == 0
+    out = " ".join(capsys.readouterr().out.split())
+    for text in (
+        "Layout gate on a built HTML book, measured in headless Chromium: nothing a reader must",
+        "html the built HTML book (_build/html)",
+        "--width WIDTH px (default: 1400 and 420)",
+        "--list print every overflow, allowed or not",
+        "--tabs TABS pages measured at once (default: 4)",
+    ):
+        assert text in out
