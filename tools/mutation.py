@@ -227,7 +227,13 @@ PACKAGES: dict[str, Package] = {
     ),
     "tools": Package(
         ["tools/*"],
-        ["test_book_tools.py", "test_book_tools_edges.py", "test_book_format.py", "test_input_gate.py"],
+        [
+            "test_book_tools.py",
+            "test_book_tools_edges.py",
+            "test_book_format.py",
+            "test_input_gate.py",
+            "test_tools_inprocess.py",
+        ],
         sources=("navcore", "tools"),
         copy=("book",),
         deselect="errata_and_ledger_links or interactive_ledger_filters",
