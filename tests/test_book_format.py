@@ -6,9 +6,7 @@ Oracles: the expected strings are written out by hand from the rule each case st
 
 from __future__ import annotations
 
-import importlib.util
 import math
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -17,17 +15,12 @@ import pytest
 
 from navcore import book
 from navcore.formatting import format_number, number_formatter, tidy_numbers
+from tests._tools import load_tool
 
 ROOT = Path(__file__).resolve().parents[1]
 
 
-def _tool(name: str):
-    # under its dotted name, which mutation testing's trampolines recognise (tools/mutation.py)
-    spec = importlib.util.spec_from_file_location(f"tools.{name}", ROOT / "tools" / f"{name}.py")
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[f"tools.{name}"] = module
-    spec.loader.exec_module(module)
-    return module
+_tool = load_tool
 
 
 @pytest.mark.parametrize(

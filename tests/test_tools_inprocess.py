@@ -21,7 +21,6 @@ Oracle in each test: the hand-made input and the result written out by hand.
 from __future__ import annotations
 
 import asyncio
-import importlib.util
 import json
 import os
 import subprocess
@@ -30,16 +29,12 @@ from pathlib import Path
 
 import pytest
 
+from tests._tools import load_tool
+
 ROOT = Path(__file__).resolve().parents[1]
 
 
-def _tool(name: str):
-    # under its dotted name, which mutation testing's trampolines recognise (tools/mutation.py)
-    spec = importlib.util.spec_from_file_location(f"tools.{name}", ROOT / "tools" / f"{name}.py")
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[f"tools.{name}"] = module
-    spec.loader.exec_module(module)
-    return module
+_tool = load_tool
 
 
 check_links = _tool("check_links")

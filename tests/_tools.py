@@ -1,0 +1,22 @@
+"""Loading the repository's tools (``tools/*.py``, scripts rather than a package) in a test."""
+
+from __future__ import annotations
+
+import importlib.util
+import sys
+from pathlib import Path
+from types import ModuleType
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def load_tool(name: str) -> ModuleType:
+    """The tool ``tools/<name>.py``, imported under its dotted name ``tools.<name>``, which
+    mutation testing's trampolines recognise (``tools/mutation.py``), and registered in
+    ``sys.modules`` under it."""
+    spec = importlib.util.spec_from_file_location(f"tools.{name}", ROOT / "tools" / f"{name}.py")
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[f"tools.{name}"] = module
+    spec.loader.exec_module(module)
+    return module
