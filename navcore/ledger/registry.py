@@ -692,21 +692,22 @@ _CLAIM_TASKS: tuple[tuple[str, tuple[str, ...], tuple[str, ...]], ...] = (
 )
 
 #: Seconds of CPU each task's claims took to evaluate afresh with their bands, measured on the
-#: reference machine (2 cores): only the order in which the parallel ledger hands out its tasks
-#: (longest first) uses them. ``python -m navcore ledger --times`` prints the current ones.
+#: reference machine (2 cores, the CI simulation's ledger gate): only the order in which the
+#: parallel ledger hands out its tasks (longest first) uses them. ``python -m navcore ledger
+#: --times`` prints the current ones.
 _TASK_SECONDS = {
-    "navcore.papers.sp_coverage": 172.0,
-    "SP helicopter mission": 111.0,
-    "navcore.papers.sp_missions": 82.0,
-    "navcore.papers.kzl_simulation": 106.0,
-    "navcore.papers.atc10_coverage_jamming": 15.0,
+    "navcore.papers.sp_coverage": 151.0,
+    "SP helicopter mission": 73.0,
+    "navcore.papers.sp_missions": 108.0,
+    "navcore.papers.kzl_simulation": 97.0,
+    "navcore.papers.atc10_coverage_jamming": 13.0,
     "navcore.papers.atc10_multiple_access": 10.0,
-    "navcore.papers.sp_antijam": 0.7,
-    "navcore.papers.wf": 4.8,
-    "navcore.papers.atc10_coverage_tracking": 2.2,
-    "navcore.papers.sp_tracking": 0.6,
-    "navcore.papers.atc10_coverage_ma": 1.4,
-    "navcore.papers.atc10_jamming": 1.2,
+    "navcore.papers.sp_antijam": 5.7,
+    "navcore.papers.wf": 4.4,
+    "navcore.papers.atc10_coverage_tracking": 2.4,
+    "navcore.papers.sp_tracking": 0.7,
+    "navcore.papers.atc10_coverage_ma": 1.5,
+    "navcore.papers.atc10_jamming": 1.3,
 }
 
 
