@@ -336,9 +336,6 @@ def test_numbers_reader_text_entities_inline_elements_and_stray_end_tags():
     assert [(n, m) for n, m, _ in check_numbers.hits(html)] == [("negative zero", "−0"), ("exponent", "1e-9")]
 
 
-@pytest.mark.xfail(
-    strict=True, reason="an end tag that closes the article's container implicitly leaves it open"
-)
 def test_numbers_reader_text_ends_when_the_articles_container_closes():
     """Oracle: malformed HTML whose ``</div>`` closes the article without ``</article>``; the
     text after the container is not the article's. (Sphinx writes well-formed pages, so the

@@ -85,7 +85,9 @@ class _ReaderText(HTMLParser):
             if self.stack[i][0] == tag:
                 del self.stack[i:]
                 break
-        if tag == "article" and len(self.stack) <= self.depth:
+        # the article ends when its element leaves the stack: by its own end tag, or by the end
+        # tag of an element around it (malformed HTML that closes it implicitly)
+        if self.in_article and len(self.stack) <= self.depth:
             self.in_article = False
         if tag in BLOCK_TAGS or tag in ("td", "th"):
             self.blocks.append("")
