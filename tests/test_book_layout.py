@@ -328,6 +328,40 @@ def test_layout_gate_finds_a_formula_cut_in_its_own_box_in_a_claim_row_or_folded
 
 
 @pytest.mark.skipif(_mathjax() is None, reason="no MathJax bundle (sphinx-mathjax-offline)")
+def test_an_inline_formula_a_little_wider_than_its_line_is_set_smaller_to_fit(layout, tmp_path):
+    """An inline formula of running text up to 1/0.7 times wider than its line is set smaller
+    by the book's equation fitting and no longer cut; one twice as wide keeps its size and is
+    counted. Oracle: Chromium and MathJax laying out two paragraphs in 250-px boxes that
+    scroll, with the book's style sheet, measured by the layout gate, with and without the
+    fitting (without it, both are cut)."""
+    import shutil
+
+    module, _ = layout
+    shutil.copy(_mathjax(), tmp_path / "tex-chtml.js")
+    shutil.copy(ROOT / "book" / "_static" / "navcore-math.js", tmp_path / "navcore-math.js")
+    css = (ROOT / "book" / "_static" / "navcore.css").read_text(encoding="utf-8")
+
+    def formula(n: int) -> str:  # n upright m's, about 18 px each at MathJax's size
+        return '<span class="math notranslate nohighlight">\\(\\mathrm{' + "m" * n + "}\\)</span>"
+
+    for name, fitting in (("fitted.html", True), ("not-fitted.html", False)):
+        script = '<script src="navcore-math.js"></script>' if fitting else ""
+        (tmp_path / name).write_text(
+            f'<html><head><style>{css}</style><script src="tex-chtml.js"></script>{script}</head>'
+            '<body><article class="bd-article">'
+            f'<div id="little" style="width:250px; overflow-x:auto"><p>text {formula(16)}</p></div>'
+            f'<div id="twice" style="width:250px; overflow-x:auto"><p>text {formula(28)}</p></div>'
+            "</article></body></html>"
+        )
+    inline = [name for name, _ in module.measure(tmp_path, (1400,), tabs=1)[1400]["inline"]]
+    assert sorted(inline) == [
+        "fitted.html#twice-inline-math-1",
+        "not-fitted.html#little-inline-math-1",
+        "not-fitted.html#twice-inline-math-1",
+    ]
+
+
+@pytest.mark.skipif(_mathjax() is None, reason="no MathJax bundle (sphinx-mathjax-offline)")
 def test_a_claim_rows_quoted_display_equation_fits_its_column_on_a_screen_and_a_phone(layout, tmp_path):
     """WF's Eq. (6) quoted in a claim row's Printed cell (a displayed equation set inline) is
     not cut at 1400 px nor at 420 px. Oracle: Chromium and MathJax laying out the row as the

@@ -3,12 +3,14 @@
 // box. So is a long formula of a claim row (a box of its own, .ledger-math-wide, in which the
 // formula's pieces wrap where TeX may break it): its widest piece sets its width. Runs once
 // MathJax has typeset the page, again when the window is resized and when a folded "details"
-// is opened (a formula folded away has no width until then).
+// is opened (a formula folded away has no width until then). An inline formula of running
+// text wider than its line is set smaller the same way (fitInline below).
 (function () {
   "use strict";
   var SMALLEST = 0.7;
 
   function fit() {
+    fitInline();
     var blocks = document.querySelectorAll(".bd-article div.math");
     for (var i = 0; i < blocks.length; i++) {
       var eq = blocks[i].querySelector('mjx-container[display="true"]');
@@ -44,6 +46,52 @@
         var size = parseFloat(parts[m].dataset.navcoreSize) || 100;
         parts[m].style.fontSize = (size * shrink).toFixed(1) + "%";
       }
+    }
+  }
+
+  // An inline formula of running text wider than the line it sits on (an erratum's corrected
+  // formula on a phone, a claim's formula in a narrow ledger column) is set smaller, down to
+  // 70 %, like a display equation; one still wider keeps its size. Its room: from the start of
+  // its block's content to the right edge of the nearest box that clips or scrolls (what the
+  // layout gate measures). All sizes are reset first, then all read, then the few written.
+  var BLOCKS = "p, li, td, th, dd, dt, div, figcaption, blockquote, h1, h2, h3, h4, h5, h6";
+
+  function fitInline() {
+    var all = document.querySelectorAll('.bd-article mjx-container:not([display="true"])');
+    var found = [];
+    for (var i = 0; i < all.length; i++) {
+      var c = all[i];
+      if (c.closest("div.math, .ledger-math-wide")) continue;
+      // in a table that sizes its columns by their content, a smaller formula narrows its
+      // column and moves the others: only fixed columns (the ledger's) are fitted
+      var table = c.closest("table");
+      if (table && getComputedStyle(table).tableLayout !== "fixed") continue;
+      if (c.dataset.navcoreSize === undefined) c.dataset.navcoreSize = c.style.fontSize || "";
+      c.style.fontSize = c.dataset.navcoreSize;
+      found.push(c);
+    }
+    var clips = new Map();
+    function clipping(el) {
+      for (var e = el.parentElement; e && e !== document.body; e = e.parentElement) {
+        if (!clips.has(e)) clips.set(e, getComputedStyle(e).overflowX !== "visible");
+        if (clips.get(e)) return e;
+      }
+      return null;
+    }
+    var shrink = [];
+    for (var j = 0; j < found.length; j++) {
+      var f = found[j];
+      if (f.offsetParent === null) continue;  // folded away
+      var box = clipping(f), block = f.parentElement && f.parentElement.closest(BLOCKS);
+      if (!box || !block) continue;
+      var start = block.getBoundingClientRect().left + block.clientLeft + (parseFloat(getComputedStyle(block).paddingLeft) || 0);
+      var room = box.getBoundingClientRect().left + box.clientLeft + box.clientWidth - start;
+      var wide = f.getBoundingClientRect().width;
+      if (room > 0 && wide > room + 1 && SMALLEST * wide <= room - 2) shrink.push([f, (room - 2) / wide]);
+    }
+    for (var k = 0; k < shrink.length; k++) {
+      var size = parseFloat(shrink[k][0].dataset.navcoreSize) || 100;
+      shrink[k][0].style.fontSize = (size * shrink[k][1]).toFixed(1) + "%";
     }
   }
 
