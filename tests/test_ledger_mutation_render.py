@@ -105,6 +105,28 @@ def test_errata_list_html():
     assert ErrataList([])._repr_html_() == "<p>No errata registered.</p>"
 
 
+def test_errata_list_sets_a_long_formula_in_a_box_cut_where_tex_may_break():
+    """Oracle: the formula cut by hand after its relation and its outer binary operator, its
+    pieces joined by line-break opportunities in a box of their own; a formula of up to 40
+    characters stays inline in the sentence (printed, finding and evidence alike)."""
+    long = "x_{DL}(k/k) = x_{DL}(k/k-1) + K_{DL}(k)[y_a(k) - x_{DL}(k/k-1)]"
+    assert len(long) > 40
+    e = Erratum(
+        id="WF-E-rend3", paper="WF", locator="Eq. (13)", printed=f"${long}$", finding=f"so ${long}$",
+        evidence="$a + b$ and " + "$" + "c" * 40 + "$", kind="typography", basis="text-only",
+    )  # fmt: skip
+    out = ErrataList([e])._repr_html_()
+    m = '<span class="math notranslate nohighlight">'
+    boxed = (
+        f'<span class="ledger-math-wide">{m}\\(x_{{DL}}(k/k) ={{}}\\)</span><wbr>'
+        f"{m}\\(x_{{DL}}(k/k-1) +{{}}\\)</span><wbr>"
+        f"{m}\\(K_{{DL}}(k)[y_a(k) - x_{{DL}}(k/k-1)]\\)</span></span>"
+    )
+    assert f"<p><b>Printed:</b> {boxed}</p>" in out
+    assert f"<p><b>The book finds:</b> so {boxed}</p>" in out
+    assert f"<p><b>Evidence:</b> {m}\\(a + b\\)</span> and {m}\\({'c' * 40}\\)</span></p>" in out
+
+
 def test_errata_list_latex_markdown_and_repr():
     el = ErrataList([E2, E1], evals=EVALS)
     assert el.latex().splitlines() == [

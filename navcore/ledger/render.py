@@ -1224,6 +1224,11 @@ def _printed_text(e: Evaluation) -> str:
 #: when wider than it (:func:`fit_math`); a shorter one as inline math.
 _FIT_MATH_CHARS = 24
 
+#: An erratum's formula longer than this many characters of TeX is set in a box of its own,
+#: cut where TeX may break it (:func:`html_text`), so that a corrected equation wraps on a
+#: phone instead of running past the text column; shorter ones stay inline in the sentence.
+_ERRATUM_WIDE_MATH = 40
+
 #: The LaTeX macro :func:`fit_math` calls, defined in the book's preamble (``_config.yml``) and
 #: in the verification reports' (:mod:`navcore.report`); it needs graphicx. The formula is set
 #: as inline math in a box, scaled down to the line width (a table cell's column) only when
@@ -2256,9 +2261,9 @@ class ErrataList:
                     f"<h4>{html.escape(e.id)} — {html.escape(e.paper)}, {html_text(e.locator)}</h4>"
                     f'<p class="erratum-basis"><b>Basis:</b> {html.escape(e.basis)} · '
                     f"<b>Kind:</b> {html.escape(e.kind)}</p>"
-                    f"<p><b>Printed:</b> {html_text(e.printed)}</p>"
-                    f"<p><b>The book finds:</b> {html_text(e.finding)}</p>"
-                    f"<p><b>Evidence:</b> {html_text(e.evidence)}</p>"
+                    f"<p><b>Printed:</b> {html_text(e.printed, wide=_ERRATUM_WIDE_MATH)}</p>"
+                    f"<p><b>The book finds:</b> {html_text(e.finding, wide=_ERRATUM_WIDE_MATH)}</p>"
+                    f"<p><b>Evidence:</b> {html_text(e.evidence, wide=_ERRATUM_WIDE_MATH)}</p>"
                     f"<p><b>Claims (its evidence in the ledger):</b> {claims_html}.{where}</p></div>"
                 )
         return "".join(out) or "<p>No errata registered.</p>"
