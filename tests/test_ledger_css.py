@@ -93,3 +93,29 @@ def test_cards_leave_out_empty_fields_and_offer_a_sort_menu():
     assert all(("ledger-empty" in attrs) == (body == "") for attrs, _, body in cells)
     css = CSS.read_text(encoding="utf-8")
     assert re.search(r"td\.ledger-empty[^{]*\{\s*display:\s*none", css)
+
+
+def test_a_claims_long_quantity_formula_wraps_in_its_column():
+    """Oracle: the quantity's formula cut by hand after its relation, in a box of its own whose
+    pieces wrap in the narrow column (and are set smaller by the book's equation fitting); a
+    short formula stays inline."""
+    value, tol = printed("17.67")
+    long = r"\mathbf{P}_{NG} = \mathbf{H}^T \mathbf{W} \mathbf{H}"
+    quantities = (f"the block ${long}$ holds", "a gain $K_1 < 2$")
+    evals = [
+        evaluate(
+            Claim(
+                id=f"SP-test-quantity-{i}", paper="SP", locator="Eq. (1)", quantity=q,
+                published=value, unit="rad/s", compute=lambda: 17.671, tolerance=tol,
+                expected_status="reproduced", note="a synthetic claim", kind="reproduction",
+            )
+        )
+        for i, q in enumerate(quantities)
+    ]  # fmt: skip
+    html = InteractiveLedger(evals)._repr_html_()
+    m = '<span class="math notranslate nohighlight">'
+    assert (
+        f'the block <span class="ledger-math-wide">{m}\\(\\mathbf{{P}}_{{NG}} ={{}}\\)</span><wbr>'
+        f"{m}\\(\\mathbf{{H}}^T \\mathbf{{W}} \\mathbf{{H}}\\)</span></span> holds<details>"
+    ) in html
+    assert f"a gain {m}\\(K_1 &lt; 2\\)</span><details>" in html

@@ -2724,7 +2724,9 @@ class InteractiveLedger:
                 "paper": html.escape(str(rec.get("paper", ""))),
                 "kind": html.escape(str(rec.get("kind") or "")),
                 "locator": html.escape(r["locator"]),
-                "quantity": f"{html_text(r['quantity'])}<details><summary>note</summary>{note}</details>",
+                # a long formula wraps in the narrow column, in a box of its own
+                "quantity": html_text(r["quantity"], wide=_FIT_MATH_CHARS)
+                + f"<details><summary>note</summary>{note}</details>",
                 "published": _printed_html(_printed_text(e), fold=40),
                 "reproduced": _value_html(_reproduced_text(e)),
                 "band": _band_html(rec, r["unit"])
