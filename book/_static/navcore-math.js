@@ -53,24 +53,18 @@
   // formula on a phone, a claim's formula in a narrow ledger column) is set smaller, down to
   // 70 %, like a display equation; one still wider keeps its size. Its room: from the start of
   // its block's content to the right edge of the nearest box that clips or scrolls (what the
-  // layout gate measures). All sizes are reset first, then all read, then the few written.
+  // layout gate measures). In a table that sizes its columns by their content, a smaller
+  // formula would narrow its column and move the others: only fixed columns (the ledger's)
+  // are fitted. The sizes an earlier fitting set are restored first, then everything is
+  // measured, then the few sizes written: a page of thousands of formulas is laid out once.
   var BLOCKS = "p, li, td, th, dd, dt, div, figcaption, blockquote, h1, h2, h3, h4, h5, h6";
 
   function fitInline() {
     var all = document.querySelectorAll('.bd-article mjx-container:not([display="true"])');
-    var found = [];
     for (var i = 0; i < all.length; i++) {
-      var c = all[i];
-      if (c.closest("div.math, .ledger-math-wide")) continue;
-      // in a table that sizes its columns by their content, a smaller formula narrows its
-      // column and moves the others: only fixed columns (the ledger's) are fitted
-      var table = c.closest("table");
-      if (table && getComputedStyle(table).tableLayout !== "fixed") continue;
-      if (c.dataset.navcoreSize === undefined) c.dataset.navcoreSize = c.style.fontSize || "";
-      c.style.fontSize = c.dataset.navcoreSize;
-      found.push(c);
+      if (all[i].dataset.navcoreInline !== undefined) all[i].style.fontSize = all[i].dataset.navcoreInline;
     }
-    var clips = new Map();
+    var clips = new Map(), fixed = new Map(), shrink = [];
     function clipping(el) {
       for (var e = el.parentElement; e && e !== document.body; e = e.parentElement) {
         if (!clips.has(e)) clips.set(e, getComputedStyle(e).overflowX !== "visible");
@@ -78,10 +72,16 @@
       }
       return null;
     }
-    var shrink = [];
-    for (var j = 0; j < found.length; j++) {
-      var f = found[j];
-      if (f.offsetParent === null) continue;  // folded away
+    for (var j = 0; j < all.length; j++) {
+      var f = all[j];
+      // folded away in a closed "details" (asked of the element tree: offsetParent would lay
+      // out the page again for every formula)
+      if (f.closest("div.math, .ledger-math-wide, details:not([open]) > :not(summary)")) continue;
+      var table = f.closest("table");
+      if (table) {
+        if (!fixed.has(table)) fixed.set(table, getComputedStyle(table).tableLayout === "fixed");
+        if (!fixed.get(table)) continue;
+      }
       var box = clipping(f), block = f.parentElement && f.parentElement.closest(BLOCKS);
       if (!box || !block) continue;
       var start = block.getBoundingClientRect().left + block.clientLeft + (parseFloat(getComputedStyle(block).paddingLeft) || 0);
@@ -90,8 +90,10 @@
       if (room > 0 && wide > room + 1 && SMALLEST * wide <= room - 2) shrink.push([f, (room - 2) / wide]);
     }
     for (var k = 0; k < shrink.length; k++) {
-      var size = parseFloat(shrink[k][0].dataset.navcoreSize) || 100;
-      shrink[k][0].style.fontSize = (size * shrink[k][1]).toFixed(1) + "%";
+      var c = shrink[k][0];
+      if (c.dataset.navcoreInline === undefined) c.dataset.navcoreInline = c.style.fontSize || "";
+      var size = parseFloat(c.dataset.navcoreInline) || 100;
+      c.style.fontSize = (size * shrink[k][1]).toFixed(1) + "%";
     }
   }
 
