@@ -24,14 +24,14 @@ contents changed, and the build prints which pages execute and why ("imports
 navcore.gnss.tracking, changed"); every other page comes from the cache.
 
 With ``--cache`` the notebooks to execute run *before* Sphinx, ``--jobs`` chapters at a time
-(default: the number of cores), each chapter in one kernel exactly as MyST-NB would execute
-it (same reader, same working directory, same executor), and are stored in the cache; Sphinx
-then finds every notebook there. A chapter's kernel first evaluates the chapter's ledger
-claims (filling the on-disk evaluation cache that the ledger and errata pages read); when a
-page of the front or back matter executes, every paper's claims are evaluated that way first,
-one paper per worker. A notebook that fails is not stored, so Sphinx executes it again and the
-strict build fails with its traceback. The execution time of every page and chapter is
-printed and written to ``<out>/_build/page-times.json``.
+(default: one more than the number of cores, :func:`default_jobs`), each chapter in one kernel
+exactly as MyST-NB would execute it (same reader, same working directory, same executor), and
+are stored in the cache; Sphinx then finds every notebook there. A chapter's kernel first
+evaluates the chapter's ledger claims (filling the on-disk evaluation cache that the ledger and
+errata pages read); when a page of the front or back matter executes, every paper's claims are
+evaluated that way first, one paper per worker. A notebook that fails is not stored, so Sphinx
+executes it again and the strict build fails with its traceback. The execution time of every
+page and chapter is printed and written to ``<out>/_build/page-times.json``.
 
 The build is strict: forced execution, a failing cell fails it (``nb_execution_raise_on_error``),
 and ``-W -n --keep-going`` turns warnings, broken references and missing citations into errors.
@@ -941,6 +941,17 @@ def _why_execute(cache, page: Path, by_uri: dict[str, Any], root: Path) -> tuple
     return reason, (record if reason is not None else None)
 
 
+def default_jobs() -> int:
+    """Chapters executed at once by default: one more than the cores.
+
+    A chapter's kernel leaves its core idle part of the time (between cells, while its worker
+    stores a page), so one chapter more than the cores keeps them busy: a clean execution of
+    the book's 64 pages with the ledger stored took 89.7 s with two workers, 79.5 s with three
+    and 77.6 s with four on two cores (6 December 2026).
+    """
+    return (os.cpu_count() or 1) + 1
+
+
 def prefill(
     cache_path: Path,
     pages: list[Path],
@@ -1170,7 +1181,7 @@ def build(
             import yaml
 
             cache_path = Path(yaml.safe_load(config.read_text())["execute"]["cache"])
-            times = prefill(cache_path, toc_pages(toc, book), jobs or os.cpu_count() or 1, book=book)
+            times = prefill(cache_path, toc_pages(toc, book), jobs or default_jobs(), book=book)
             if times:
                 report_times(times, out / "_build" / "page-times.json")
         if execute_only:
@@ -1214,7 +1225,10 @@ def main() -> int:
     parser.add_argument("--out", type=Path, default=None, help="output folder (default: the repository)")
     parser.add_argument("--cache", action="store_true", help="execute through a jupyter-cache (see above)")
     parser.add_argument(
-        "--jobs", type=int, default=None, help="with --cache: chapters executed at once (default: the cores)"
+        "--jobs",
+        type=int,
+        default=None,
+        help="with --cache: chapters executed at once (default: one more than the cores)",
     )
     parser.add_argument(
         "--execute-only", action="store_true", help="with --cache: execute what the cache lacks, no Sphinx"
