@@ -745,7 +745,12 @@ def log_false_location_bound(
 def log_ambiguous_detection_bound(
     jammer_ratio: ArrayLike, p_d: float, k: int, t: float, geometry: SurveillanceGeometry
 ) -> FloatArray:
-    r""":math:`\ln(N_{ADL} / N_T) = \ln(N / (2 N_T)) + \ln P_{DL} + (K - 1) \ln G(p_f) + \ln F(p_f)`.
+    r"""Natural log of the lower bound on ambiguous locations per aircraft, :math:`\ln(N_{ADL} / N_T)`.
+
+    .. math::
+
+        \ln\frac{N_{ADL}}{N_T} &= \ln\frac{N}{2 N_T} + \ln P_{DL} \\
+        &\quad + (K - 1) \ln G(p_f) + \ln F(p_f)
 
     ATC-10 Eqs. 2.5.12, 2.7.3, 2.8.4; :math:`P_{DL} = p_d^4` at :math:`K = 1`.
 
