@@ -1473,7 +1473,8 @@ def _printed_html(text: str, *, fold: int = 0) -> str:
         What the paper printed (:func:`_printed_text`).
     fold : int, optional
         A quote longer than this many characters is folded behind a "quote" disclosure
-        (0: never), so that a narrow column is not a long thin paragraph.
+        (0: never), so that a narrow column is not a long thin paragraph; so is a shorter one
+        that the interactive ledger's Printed column cannot hold (:func:`_fits_printed_column`).
 
     Examples
     --------
@@ -1483,6 +1484,8 @@ def _printed_html(text: str, *, fold: int = 0) -> str:
     <span class="math notranslate nohighlight">\(x = 1\)</span>
     >>> "<details" in _printed_html("a long sentence the paper printed, word for word", fold=20)
     True
+    >>> [_printed_html(q, fold=40).startswith("<details") for q in ("$p = 50$", "$y = (G'G)^{-1}G'z$")]
+    [False, True]
     """
     if len(text) <= 16 and not any(ch in text for ch in "$\\^*"):
         return _nowrap(text)
@@ -1502,9 +1505,39 @@ def _printed_html(text: str, *, fold: int = 0) -> str:
                 continue
             out.append(_math_html(quote_math(piece), _FIT_MATH_CHARS))
         body = "".join(out)
-    if fold and len(text) > fold:
+    if fold and (len(text) > fold or not _fits_printed_column(text)):
         return f'<details class="ledger-quote"><summary>quote</summary>{body}</details>'
     return body
+
+
+#: The interactive ledger's Printed column is about 55 px wide at 1400 px (8 % of its table): a
+#: word of more than this many characters breaks inside itself there ("resultin-g")...
+_PRINTED_COLUMN_WORD = 8
+#: ... and it holds a formula of about 5.7 em as MathJax sets it at the equation fitting's 70 %,
+#: which :func:`math_em` puts at 3.3 to 4.8 em (MathJax sets 1.18 to 1.75 times its measure;
+#: ``\text{Exp}g = 12.5``, 3.57 em here, sets 85 px and was cut in its 55 px box, December 2026).
+_PRINTED_COLUMN_MATH_EM = 3.0
+
+
+def _fits_printed_column(text: str) -> bool:
+    r"""Whether a short quote can stand unfolded in the interactive ledger's narrow Printed
+    column: no word longer than :data:`_PRINTED_COLUMN_WORD` characters and no formula whose
+    widest unbreakable piece is wider than :data:`_PRINTED_COLUMN_MATH_EM` by :func:`math_em`.
+
+    Examples
+    --------
+    >>> _fits_printed_column("282 ft"), _fits_printed_column("The resulting error statistics")
+    (True, False)
+    >>> _fits_printed_column("$p = 50$"), _fits_printed_column(r"$\text{Exp}g = 12.5$")
+    (True, False)
+    """
+    words, wide = [], 0.0
+    for is_math, piece in math_spans(text):
+        if is_math:
+            wide = max(wide, *(math_em(part) for part in _math_parts(quote_math(piece))))
+        else:
+            words += piece.split()
+    return wide <= _PRINTED_COLUMN_MATH_EM and all(len(w) <= _PRINTED_COLUMN_WORD for w in words)
 
 
 #: A quoted formula whose widest unbreakable piece sets wider than this (:func:`math_em`) does

@@ -665,7 +665,7 @@ CLAIMS: list[Claim] = [
     _statement(
         "ATC10-eq2.5.5-composition",
         "Eqs. (2.5.1)-(2.5.5), (2.7.3), (B.11)",
-        "$N_{FL} = (N_T - N) \\exp[(Kt + 1) \\ln F(p_f)]$ with $p_f$ of (2.7.1)",
+        "$N_{FL} = (N_T - N)\\, e^{(Kt + 1) \\ln F(p_f)}$ with $p_f$ of (2.7.1)",
         lambda: _composition(0),
         "navcore's log-domain bound against the printed formulas typed with plain floats (erf, powers) at "
         "K = 1, 10, 100 and t = 0-0.1, x from -16 to 0 dB, to $10^{-6}$ relative (each factor "

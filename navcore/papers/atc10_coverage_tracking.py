@@ -1500,7 +1500,7 @@ CLAIMS = [
         paper="ATC10",
         locator="Table 4.3 col. (iii); Eq. (4.1.2)",
         quantity="$\\sqrt{\\mathrm{Var}[\\|\\xi_{p0}\\|]}$ as (4.1.2) defines it, $\\sigma^2 "
-        "\\operatorname{tr}\\{[F'H'(HH')^{-1}HF]^{-1}\\}$, Example I",
+        "\\operatorname{tr}\\{M^{-1}\\}$ with $M = F'H'(HH')^{-1}HF$, Example I",
         published=282.0,
         unit="ft",
         compute=lambda: norm_variance_as_defined_ft("I"),
