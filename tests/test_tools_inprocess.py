@@ -689,34 +689,39 @@ def test_layout_the_allowlist_is_per_width_and_per_kind(layout, capsys):
     assert "check_layout: 420 px: 0 overflowing table (1 allowed)" in err
 
 
-def test_layout_smaller_and_inline_are_counted_not_problems(layout, capsys):
-    """Oracle: two equations set smaller (the smallest at 72 %) and one formula cut outside a
-    claim table: no problem, one summary line each, named only with ``list_all``."""
+def test_layout_smaller_is_counted_and_a_cut_inline_formula_is_a_problem(layout, capsys):
+    """Oracle: two equations set smaller (the smallest at 72 %): no problem, one summary line,
+    each named only with ``list_all``. A formula cut in a box outside a claim table is a
+    problem unless the allowlist names it, like an overflowing display equation."""
     allow, found, _ = layout
     smaller = [("a.html#e1", {"scale": 0.9}), ("b.html#e2", {"scale": 0.72})]
     inline = [_item("c.html#p-inline-math-1", 300, 200)]
     found[420] = {"smaller": smaller, "inline": inline, "math": [_item("a.html#m")]}
     allow.write_text(json.dumps({"420": {"math": {"a.html#m": "why"}}}))
-    assert check_layout.check(Path("."), (420,)) == []
+    assert check_layout.check(Path("."), (420,)) == [
+        "420 px: inline c.html#p-inline-math-1 is 300 px in a 200 px box: x"
+    ]
     out, err = capsys.readouterr()
     assert out == ""
     assert "check_layout: 420 px: 2 display equation(s) set smaller to fit (smallest at 72 %)\n" in err
-    assert (
-        "check_layout: 420 px: 1 formula(s) cut in a box outside the chapters' claim tables "
-        "(counted, not yet a problem; --list names them)\n"
-    ) in err
+    assert "check_layout: 420 px: 1 overflowing inline (0 allowed)\n" in err
+    allow.write_text(
+        json.dumps({"420": {"math": {"a.html#m": "why"}, "inline": {"c.html#p-inline-math-1": "why"}}})
+    )
     assert check_layout.check(Path("."), (420,), list_all=True) == []
     out, _ = capsys.readouterr()
     assert out.splitlines() == [
         "420 px: smaller a.html#e1 at 90 %",
         "420 px: smaller b.html#e2 at 72 %",
-        "420 px: inline c.html#p-inline-math-1 is 300 px in a 200 px box",
         "420 px: math a.html#m is 500 px in a 388 px box: x",
+        "420 px: inline c.html#p-inline-math-1 is 300 px in a 200 px box: x",
     ]
     found[420] = {}
-    check_layout.check(Path("."), (420,))
-    err = capsys.readouterr().err
-    assert "smaller" not in err and "formula(s) cut" not in err
+    assert check_layout.check(Path("."), (420,)) == [
+        "420 px: math a.html#m is in the allowlist but no longer overflows: remove it",
+        "420 px: inline c.html#p-inline-math-1 is in the allowlist but no longer overflows: remove it",
+    ]
+    assert "smaller" not in capsys.readouterr().err
 
 
 def test_layout_pages_leave_out_assets_indexes_and_redirects(tmp_path):

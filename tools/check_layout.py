@@ -21,9 +21,8 @@ stylesheet's media queries follow it) and it is measured again. Four things are 
     ``mjx-math``; the box's ``scrollWidth`` also counts a glyph's side bearing), measured with
     every folded ``details`` opened, as a reader opens them, and named by the nearest anchor
     (``wf-eq6-montecarlo-inline-math-1``). Such a formula in a chapter's claim table
-    (``table.ledger-claims``) is a problem; elsewhere (the interactive ledger's narrow
-    columns, a sentence at a phone's width, a report's table) it is counted as ``inline``
-    and named with ``--list``, until those places are laid out for it;
+    (``table.ledger-claims``) is reported as ``math``; elsewhere (the interactive ledger's
+    narrow columns, a sentence at a phone's width, a report's table) as ``inline``;
 ``table``
     a table in a cell's output (``div.cell_output``) that is wider than the text column;
 ``cell``
@@ -476,17 +475,7 @@ def check(
             if list_all:
                 for name, item in smaller:
                     print(f"{width} px: smaller {name} at {100 * item['scale']:.0f} %")
-        inline = found[width].get("inline", [])
-        if inline:
-            print(
-                f"check_layout: {width} px: {len(inline)} formula(s) cut in a box outside the chapters' "
-                "claim tables (counted, not yet a problem; --list names them)",
-                file=sys.stderr,
-            )
-            if list_all:
-                for name, item in inline:
-                    print(f"{width} px: inline {name} is {item['scroll']} px in a {item['client']} px box")
-        for kind in ("math", "table", "cell", "word"):
+        for kind in ("math", "inline", "table", "cell", "word"):
             allowed = allow.get(str(width), {}).get(kind, {})
             names = set()
             for name, item in found[width].get(kind, []):
