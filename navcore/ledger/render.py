@@ -1528,6 +1528,8 @@ def _fits_printed_column(text: str) -> bool:
     --------
     >>> _fits_printed_column("282 ft"), _fits_printed_column("The resulting error statistics")
     (True, False)
+    >>> _fits_printed_column("Appendix G"), _fits_printed_column("Appendices")
+    (True, False)
     >>> _fits_printed_column("$p = 50$"), _fits_printed_column(r"$\text{Exp}g = 12.5$")
     (True, False)
     """
