@@ -31,8 +31,10 @@ pytestmark = [
     pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads /proc"),
 ]
 
+# The pid is written under another name and renamed, so the test never reads a half-written file.
 SLOW_PAGE = """import os, pathlib, time
-pathlib.Path("slow-kernel.pid").write_text(str(os.getpid()))
+pathlib.Path("slow-kernel.pid.part").write_text(str(os.getpid()))
+os.replace("slow-kernel.pid.part", "slow-kernel.pid")
 print("slow page")
 time.sleep(600 if os.environ.get("TOY_LINGER") == "page" else 0)"""
 
@@ -188,6 +190,7 @@ def test_stop_while_a_page_executes(how: str, tmp_path: Path) -> None:
     deadline = time.monotonic() + 120
     while not marker.exists() and time.monotonic() < deadline:
         time.sleep(0.1)
+    assert marker.exists(), "the slow page did not start within 120 s"
     kernel = int(marker.read_text())  # the slow page is running in its kernel
     _stop_and_check(build, how, {kernel})
     assert _check_cache(tmp_path, book) == 1  # the quick page, whole; the slow one not at all
