@@ -9,30 +9,38 @@
   "use strict";
   var SMALLEST = 0.7;
 
+  // Sizes are restored first, then everything measured, then the sizes written (as in
+  // fitInline): the page is laid out once, not once per equation.
   function fit() {
     fitInline();
-    var blocks = document.querySelectorAll(".bd-article div.math");
+    var blocks = document.querySelectorAll(".bd-article div.math"), eqs = [];
     for (var i = 0; i < blocks.length; i++) {
       var eq = blocks[i].querySelector('mjx-container[display="true"]');
       if (!eq) continue;
       if (eq.dataset.navcoreSize === undefined) eq.dataset.navcoreSize = eq.style.fontSize || "";
       eq.style.fontSize = eq.dataset.navcoreSize;
-      var need = eq.scrollWidth, room = eq.clientWidth;
-      if (need <= room + 1) continue;
-      var base = parseFloat(eq.dataset.navcoreSize) || 100;
-      var scale = Math.max(SMALLEST, (room - 2) / need);
-      eq.style.fontSize = (base * scale).toFixed(1) + "%";
+      eqs.push(eq);
     }
     // the box's own width is in em of the text around it: the formula's pieces are set
     // smaller, not the box
-    var boxes = document.querySelectorAll(".bd-article .ledger-math-wide");
+    var boxes = document.querySelectorAll(".bd-article .ledger-math-wide"), pieces = [];
     for (var j = 0; j < boxes.length; j++) {
-      var box = boxes[j];
-      var parts = box.querySelectorAll("mjx-container");
+      var parts = boxes[j].querySelectorAll("mjx-container");
       for (var k = 0; k < parts.length; k++) {
         if (parts[k].dataset.navcoreSize === undefined) parts[k].dataset.navcoreSize = parts[k].style.fontSize || "";
         parts[k].style.fontSize = parts[k].dataset.navcoreSize;
       }
+      pieces.push(parts);
+    }
+    var writes = [];
+    for (var a = 0; a < eqs.length; a++) {
+      var need = eqs[a].scrollWidth, room = eqs[a].clientWidth;
+      if (need <= room + 1) continue;
+      var base = parseFloat(eqs[a].dataset.navcoreSize) || 100;
+      writes.push([eqs[a], base * Math.max(SMALLEST, (room - 2) / need)]);
+    }
+    for (var b = 0; b < boxes.length; b++) {
+      var box = boxes[b];
       // the typeset formula's extent (the box's scrollWidth also counts a glyph's side bearing)
       var left = box.getBoundingClientRect().left + box.clientLeft, wide = 0;
       var maths = box.querySelectorAll("mjx-math");
@@ -40,13 +48,13 @@
         wide = Math.max(wide, maths[n].getBoundingClientRect().right - left);
       }
       var width = box.clientWidth;
-      if (!parts.length || width === 0 || wide <= width + 1) continue;
+      if (!pieces[b].length || width === 0 || wide <= width + 1) continue;
       var shrink = Math.max(SMALLEST, (width - 2) / wide);
-      for (var m = 0; m < parts.length; m++) {
-        var size = parseFloat(parts[m].dataset.navcoreSize) || 100;
-        parts[m].style.fontSize = (size * shrink).toFixed(1) + "%";
+      for (var m = 0; m < pieces[b].length; m++) {
+        writes.push([pieces[b][m], (parseFloat(pieces[b][m].dataset.navcoreSize) || 100) * shrink]);
       }
     }
+    for (var w = 0; w < writes.length; w++) writes[w][0].style.fontSize = writes[w][1].toFixed(1) + "%";
   }
 
   // An inline formula of running text wider than the line it sits on (an erratum's corrected
