@@ -232,6 +232,7 @@ PACKAGES: dict[str, Package] = {
             "test_book_tools_edges.py",
             "test_book_format.py",
             "test_input_gate.py",
+            "test_input_gate_inprocess.py",
             "test_tools_inprocess.py",
         ],
         sources=("navcore", "tools"),
