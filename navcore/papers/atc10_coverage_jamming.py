@@ -160,30 +160,6 @@ def _threshold_behaviour(k_one: bool) -> bool:
     return all(w < width for (_, k, _), w in transition_widths_db().items() if (k == 1) == k_one)
 
 
-def max_width_k_gt_1_db() -> float:
-    """Largest transition width (dB) over the K > 1 curves (t = 0)."""
-    return max(w for (_, k, _), w in transition_widths_db().items() if k > 1)
-
-
-def max_width_k_gt_1_plain_db(upper: float = 0.9) -> float:
-    """Oracle for the K > 1 widths: the N_ADL bound typed with plain floats (:func:`_plain_bounds`),
-    its ceiling at x = +120 dB, and the crossings found by bisection (from ``upper`` of the ceiling)."""
-    widths = []
-    for k, p_dl in aj.table21_finite_designs():
-        p_d = aj.design_p_d(p_dl, k)
-        ceiling = _plain_bounds(120.0, p_d, k, 0.0)[1]
-
-        def cross(frac: float, p_d: float = p_d, k: int = k, ceiling: float = ceiling) -> float:
-            lo, hi = -40.0, 120.0
-            for _ in range(60):
-                mid = 0.5 * (lo + hi)
-                lo, hi = (mid, hi) if _plain_bounds(mid, p_d, k, 0.0)[1] < frac * ceiling else (lo, mid)
-            return hi
-
-        widths.append(cross(upper) - cross(1e-6))
-    return max(widths)
-
-
 def _coherent_beats_envelope() -> bool:
     """Matched-filter (coherent) p_d >= matched filter-envelope p_d at equal p_f and energy."""
     d = np.linspace(0.5, 10.0, 40)[:, None]

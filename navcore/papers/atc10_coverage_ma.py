@@ -239,22 +239,6 @@ def lower_bound_printed_oracle() -> bool:
     return not (printed_lb > chern)
 
 
-def c2_smallest_lower_bound() -> bool:
-    """At equal power the two-point density has the smallest lower bound to p_f (theta = 0.5, 0.7)."""
-    for x in (4.0, 5.0, 6.0):
-        vals = {}
-        for name, d in (
-            ("C2", two_point_density),
-            ("C1", UniformDensity),
-            ("C3", TriangularDensity),
-            ("C4", GaussianDensity),
-        ):
-            vals[name] = gallager_log_tail_lower(_noise(d, x), 0.7).log_p
-        if any(math.isnan(v) for v in vals.values()) or vals["C2"] > min(vals.values()) + 1e-12:
-            return False
-    return True
-
-
 def c2_smallest_lower_bound_everywhere() -> bool:
     """Sec. 3.6: C2's lower bound to p_f (the corrected Gallager bound, E3-1) is the smallest of
     the four densities' at every figure contour (assumed labels) and on the 19-point threshold

@@ -699,28 +699,6 @@ def printed_4535_oracle(example: str, sigma0: float) -> float:
 
 
 # --------------------------------------------------------------------------- E4.8 Var of the norm
-def norm_sd_ft(example: str, n_samples: int = 400_000, seed: int = 48) -> float:
-    """sqrt(Var ||xi_p0||) of the least-squares error (physical geometry), by Monte Carlo."""
-    F = _physical_geometry(example)
-    P = TR.sigma_ns**2 * TR.c_ft_per_ns**2 * position_dilution_covariance(F)
-    rng = np.random.default_rng(seed)
-    x = rng.multivariate_normal(np.zeros(3), P, n_samples)
-    return float(np.std(np.linalg.norm(x, axis=1)))
-
-
-def norm_sd_oracle(example: str) -> float:
-    """Same from the eigenvalues: E||x|| by 3-D quadrature in spherical coordinates."""
-    F = trk.physical_line_of_sight(example)
-    lam = np.linalg.eigvalsh(2500.0 * position_dilution_covariance(F))
-
-    def mean_norm() -> float:
-        # E||x|| = int over directions of E|r| along u: for a Gaussian, E||x|| = E sqrt(sum lam_i z_i^2)
-        z = np.random.default_rng(99).normal(size=(600_000, 3))
-        return float(np.mean(np.sqrt(z**2 @ lam)))
-
-    return math.sqrt(lam.sum() - mean_norm() ** 2)
-
-
 # --------------------------------------------------------------------------- Monte Carlo of the tracker
 def recursion_matches_mc() -> bool:
     """(4.5.10)-(4.5.26): the tracker's Monte Carlo position MSE follows sigma^2 (tr + gamma_n S)."""

@@ -915,13 +915,6 @@ ERRATA = [
 # claims
 # --------------------------------------------------------------------------------------
 
-_ORACLE_DB = Tolerance(
-    reason="two implementations of the same threshold (grid search refined by 60 bisections): rounding only",
-    abs=0.01,
-    policy="exact",
-)
-_ROUNDING = "floating-point rounding only"
-
 
 def _figure_tolerance(text: str, figures: str) -> Tolerance:
     """A whole-dB value read off the lost ``figures``: the reading resolution of their dB axis."""

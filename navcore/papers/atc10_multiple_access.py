@@ -510,10 +510,6 @@ def worked_example_ratio() -> float:
     return worked_example_exp_g() / worked_example_exp()
 
 
-def worked_example_ratio_oracle() -> float:
-    return worked_example_exp_g() / worked_example_exp_oracle()
-
-
 def exp_monotone_in_n_below_exp_g() -> bool:
     """Figs. 3.9/3.10: Exp increases with N and stays below Exp_g, approaching it."""
     n = np.logspace(2, 9, 400)[:, None]
@@ -747,16 +743,6 @@ def psk_chernoff() -> tuple[np.ndarray, np.ndarray]:
     return roc_upper_bound(
         MultipleAccessNoise(IN.n_sec36, IN.tau_over_alpha_sec36, psk_density()), PSK_BOUND_THETAS
     )
-
-
-def psk_bound_holds() -> bool:
-    """The Chernoff upper bound is never below the simulated PSK rate beyond 4 standard errors."""
-    lpf, lmiss = psk_chernoff()
-    r = psk_roc()
-    idx = [int(np.argmin(np.abs(THETA_GRID - t))) for t in PSK_BOUND_THETAS]
-    ok_f = np.all(r.p_f[idx] <= np.exp(lpf) + 4 * r.p_f_se[idx])
-    ok_m = np.all(r.p_miss[idx] <= np.exp(lmiss) + 4 * r.p_miss_se[idx])
-    return bool(ok_f and ok_m)
 
 
 def psk_gaussian_optimistic() -> bool:

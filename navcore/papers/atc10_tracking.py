@@ -692,24 +692,6 @@ def acceptable_outage_s(example: str, sigma0: float, inputs: dict[str, float]) -
     return float(m[above[0]] - 1) * IN.tau_bar_s if above.size else math.inf
 
 
-#: Three-satellite epochs simulated for the outage oracle (beyond the corrected durations).
-OUTAGE_MC_EPOCHS = {"I": 110, "II": 320}
-
-
-def acceptable_outage_mc_s(example: str, sigma0: float) -> float:
-    """Same duration from the Monte Carlo of the full tracker (fitted geometry, invariant S3)."""
-    inputs = table_4_2_from_geometry(example, fitted_radius_ratio(), aircraft_ratio=physical_aircraft_ratio())
-    threshold = IN.outage_threshold_factor * table_4_3_row(inputs, sigma0)[2]
-    mc = tracker_monte_carlo(example, sigma0, m_after=OUTAGE_MC_EPOCHS[example], n_runs=4000)
-    rms = IN.c_ft_per_ns * np.sqrt(mc.position_mse[MC_N_LAST + 1 :])
-    above = np.flatnonzero(rms > threshold)
-    return float(above[0]) * IN.tau_bar_s if above.size else math.inf
-
-
-def _corrected_inputs(example: str) -> dict[str, float]:
-    return table_4_2_from_geometry(example, fitted_radius_ratio(), aircraft_ratio=physical_aircraft_ratio())
-
-
 def invariant_s3_inputs(example: str) -> dict[str, float]:
     """The printed Table 4.2 with col. 5 replaced by the invariant 1'(F3 F3')^-1 1 of the stated system.
 
@@ -749,21 +731,6 @@ def ms_ratio_tracking(example: str, sigma0: float) -> float:
     return (sdn / sd0) ** 2
 
 
-def jump_share_from_clock_term(inputs: dict[str, float], sigma0: float) -> float:
-    """Share of the jump E|xi|^2_{N+1} - E|xi|^2_N due to the increase of the clock term S -> S3."""
-    b = inputs["beta"]
-    a = alpha_parameter(sigma0, IN.sigma_ns, b)
-    p = float(psi(a))
-    g, g1 = p / b, (p + 27.0 / 8.0 * a * 2.0 / p) / b
-    total = (inputs["trace_123"] - inputs["trace_all"]) + g1 * inputs["s_123"] - g * inputs["s_all"]
-    return g1 * (inputs["s_123"] - inputs["s_all"]) / total
-
-
-def _oracle_corrected_jump_share(example: str, sigma0: float) -> float:
-    o = _oracle_invariants(example, fitted_radius_ratio())
-    return jump_share_from_clock_term(o, sigma0)
-
-
 def jump_share_from_tr_and_s(inputs: dict[str, float], sigma0: float) -> float:
     """Rule (3) as printed: share of the mean-square jump E|xi|^2_{N+1} - E|xi|^2_N due to the
     increases of tr{(F'F)^-1} and of the clock term S (at the new gain); the rest is the lost
@@ -776,19 +743,6 @@ def jump_share_from_tr_and_s(inputs: dict[str, float], sigma0: float) -> float:
     d_s = g1 * (inputs["s_123"] - inputs["s_all"])
     total = d_tr + g1 * inputs["s_123"] - g * inputs["s_all"]
     return (d_tr + d_s) / total
-
-
-def _oracle_jump_share_tr_and_s(example: str, sigma0: float) -> float:
-    """Independent: the jump from (4.5.35) and (4.5.27) at m = 1 written out, the cubic's root for psi."""
-    t = {k: float(v) for k, v in TABLE_4_2[example].items()}
-    s3 = _physical_oracle_invariants(example)["s_123"]
-    b = t["beta"]
-    a = sigma0**2 * b / 50.0**2
-    p = psi_cubic_root((8.0 / 27.0) * a)
-    var_n = t["trace_all"] + p / b * t["s_all"]
-    var_n1 = t["trace_123"] + (p + 2.0 * a / p) / b * s3
-    d_gain = (p + 2.0 * a / p) / b * t["s_all"] - p / b * t["s_all"]  # the lost measurement update
-    return (var_n1 - var_n - d_gain) / (var_n1 - var_n)
 
 
 #: 'About 30 to 60 seconds' (rule 4), as printed (labels; computations read :func:`rule4_seconds`).
@@ -875,12 +829,6 @@ def convergence_rule_terms() -> list[tuple[float, float]]:
         # the printed 2.3/psi is ln(1/0.1)/psi, the small-psi form for the 10 % criterion
         out.append((actual + 1.0, -math.log(IN.convergence_fraction) / p))
     return out
-
-
-def convergence_rule_worst_ratio() -> float:
-    """The ratio estimate / recursion of the number of terms n + 1 farthest from 1 in the six cases."""
-    ratios = [est / act for act, est in convergence_rule_terms()]
-    return float(max(ratios, key=lambda r: abs(math.log(r))))
 
 
 def _oracle_convergence_rule_worst_ratio() -> float:

@@ -400,12 +400,6 @@ def small_rotation_example_deg() -> tuple[np.ndarray, np.ndarray]:
     return v, euler
 
 
-def table1_rotation_vector_euler_mismatch() -> float:
-    """Largest entry of d(Euler angles of the vehicle)/d(n-frame rotation vector) - I at the Table 1
-    attitude (heading 90 deg): the Jacobian Eq. (13)'s block R stands for (erratum KZL-E4)."""
-    return float(np.max(np.abs(euler_attitude_rows(table1_attitude(), 0.0, 0.0)[:, 6:9] - np.eye(3))))
-
-
 def satellite_to_aircraft_speed() -> float:
     """TerraSAR-X circular-orbit speed over the aircraft speed of the hybrid experiments (KZL Sec. 1)."""
     v_sat = np.sqrt(IN.gm_m3_s2 / (IN.earth_radius_m + 1000.0 * IN.terrasar_altitude_km))

@@ -26,7 +26,6 @@ from navcore.papers.sp_quotes import quoted
 from navcore.papers.sp_tables import TABLE_2_5_PRINTED
 from navcore.units import DEG, DEG_PER_H, GPS_L1_WAVELENGTH_M, OMEGA_EARTH
 
-PAGE_ACQ = "sp/04-acquisition"
 PAGE_TGT = "sp/05-target-location"
 
 # --- Table 2.7: range (code-phase) intervals to be searched, per satellite ----------------

@@ -1069,13 +1069,6 @@ def _channel_key(channels: np.ndarray) -> tuple[int, ...]:
 
 
 @input_cache
-def _sequential_common(architecture: str) -> tuple[Trajectory, np.ndarray, dict, dict]:
-    # the runs are keyed on the satellites chosen, so an elevation mask that chooses the same
-    # satellites reuses them
-    return _sequential_common_on(architecture, _channel_key(_channels(end_free_s())))
-
-
-@input_cache
 def _sequential_common_on(
     architecture: str, channel_key: tuple[int, ...]
 ) -> tuple[Trajectory, np.ndarray, dict, dict]:

@@ -10,8 +10,6 @@ figures), which is what the paper's worked example does.
 
 from __future__ import annotations
 
-from decimal import ROUND_HALF_UP, Decimal
-
 import numpy as np
 
 from navcore.gnss.tracking import aided_natural_frequency, natural_frequency_for_peak_error
@@ -99,13 +97,6 @@ def col3_printed_g(grade: str) -> float:
 def col4_printed_rad_s(grade: str) -> float:
     """Table 2.6 column 4 as printed (rad/s), the published input (read by the jammer-flyby model)."""
     return getattr(IN, f"col4_rad_s_{_key(grade)}")
-
-
-def round_sig(x: float, digits: int) -> float:
-    """Round half up to ``digits`` significant figures (as a table is printed)."""
-    d = Decimal(repr(x))
-    exp = d.adjusted() - digits + 1
-    return float(d.quantize(Decimal(1).scaleb(exp), rounding=ROUND_HALF_UP))
 
 
 def col3_g(grade: str) -> float:

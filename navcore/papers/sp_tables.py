@@ -23,7 +23,7 @@ from dataclasses import dataclass
 from navcore.inertial.imu import ImuSpec, imu_spec_from_published
 from navcore.ledger import input_cache
 from navcore.ledger.inputs import InputSet
-from navcore.units import G0, KM, MICRO_G, MRAD, NMI_PER_H, PPM, C
+from navcore.units import KM, MICRO_G, MRAD, NMI_PER_H, PPM, C
 
 __all__ = [
     "GRADE_LABELS_NMI_PER_H",
@@ -286,7 +286,3 @@ def table_2_8() -> DopplerErrorModel:
         scale_factor_vertical=IN.doppler_scale_factor_vertical_pct * 1e-2,
         misalignment=IN.doppler_misalignment_mrad * MRAD,
     )
-
-
-#: Acceleration of gravity used to express g-sensitivity (m/s^2 per g): a physical constant.
-G_UNIT = G0

@@ -87,15 +87,6 @@ def closed_form_matches_simulation() -> bool:
     return bool(np.max(np.abs(y - closed)) < 1e-6 * np.max(np.abs(closed)))
 
 
-def printed_ocr_form(t: np.ndarray, step: float, omega0: float) -> np.ndarray:
-    """The formula exactly as the source text prints it, with exp(-w0 t^2)."""
-    tau = omega0 * t
-    s3 = np.sqrt(3.0)
-    return (step / omega0**2) * (
-        np.exp(-tau) + np.exp(-omega0 * t**2) / s3 * (np.sin(s3 / 2 * tau) - s3 * np.cos(s3 / 2 * tau))
-    )
-
-
 def _grid_peak(step: float, omega0: float) -> float:
     t = np.linspace(0.0, 12.0 / omega0, 200001)
     return float(np.max(third_order_loop_step_error(t, step, omega0)))

@@ -354,11 +354,6 @@ def sigma_t_values() -> tuple[float, float, float]:
     return (IN.sigma_t_small, IN.sigma_t_medium, IN.sigma_t_large)
 
 
-def sigma_a_range() -> tuple[float, float]:
-    """The stated accelerometer-resolution range of Sec. IV.D, m/s^2."""
-    return (IN.sigma_a_low, IN.sigma_a_high)
-
-
 def sigma_a_example() -> float:
     """The worked example's 100 ug accelerometer, m/s^2."""
     return IN.sigma_a_example_micro_g * MICRO_G
@@ -626,20 +621,6 @@ def _eq13_oracle() -> bool:
     Eq. (14) (its RMS error over sqrt(P_DL(k/k)) within the allowed sampling standard deviations of 1)."""
     sd = 1.0 / np.sqrt(2 * _EQ13_PATHS)
     return bool(abs(eq13_printed_error_ratio() - 1.0) <= IN.mc_sigmas * sd)
-
-
-def eq13_noise_free_error_ratio() -> float:
-    """Independent: the printed recursion is the linear filter x_k = (1-K) x_{k-1} + ((1-K) T + K) a_k;
-    its noise-free error at the end (scipy.signal.lfilter) over sqrt(P_DL(k/k))."""
-    import scipy.signal
-
-    ts = IN.ts
-    ss = accelerometer_steady_state_isotropic(_EQ13_SA, ts, IN.sigma_l_per_sigma_a * _EQ13_SA)
-    K = ss.gain
-    acc = _eq13_manoeuvre(ts)
-    x = scipy.signal.lfilter([(1 - K) * ts + K], [1.0, -(1 - K)], acc)
-    v = np.cumsum(acc) * ts
-    return float(abs(x[-1] - v[-1]) / np.sqrt(ss.posterior))
 
 
 #: SI dimension exponents (length, time) for the dimensional checks of Eqs. (13) and (24).
@@ -1061,15 +1042,6 @@ def fig2_order_excess(lo: float | None = None, hi: float | None = None, n: int =
     )
 
 
-def _dl_is_best() -> bool:
-    """The accelerometer filter is the best local estimator over the stated range (premise of the slack)."""
-    return all(
-        accelerometer_steady_state_isotropic(sa, IN.ts, IN.sigma_l_per_sigma_a * sa).posterior
-        <= IN.sigma_n**2
-        for sa in sigma_a_grid()
-    )
-
-
 def fig1_slope_db_per_decade() -> float:
     """Least-squares slope of the sigma_T = 2 m/s curve of Fig. 1 over the stated range, dB per decade."""
     c = improvement_curves()
@@ -1196,13 +1168,6 @@ FIG1_READING = figure_reading(
     figure="Fig. 1",
     axis="improvement $20 \\log_{10}(\\sigma_D / \\sigma_{DN})$ in dB; curves closer than half a dB are "
     "not told apart",
-)
-FIG2_READING = figure_reading(
-    0.5,
-    figure="Fig. 2",
-    axis="improvement $20 \\log_{10}(\\sigma_D / \\sigma_{DN})$ in dB; curves closer than half a dB are "
-    "not told "
-    "apart (the 3-satellite markers lie on the 1-satellite lines)",
 )
 
 CLAIMS = [
