@@ -25,11 +25,12 @@ from __future__ import annotations
 import ast
 import json
 import math
+import re
 import sys
 import textwrap
 import time
 from pathlib import Path
-from typing import Any
+from typing import Any, ClassVar
 
 import pytest
 
@@ -1703,6 +1704,16 @@ def test_render_markdown_effect_wording_and_other_outcomes() -> None:
     def other(status: str, **kw: Any) -> dict:
         return {**number, "status": status, "line": 2, "effects": kw.pop("effects", {}), **kw}
 
+    # exactly eight claims (no "and N more"); one effect from a run without the factor step
+    old = _rec(tolerances_per_scale=0.05)
+    del old["tolerances_at_factor"]
+    eff8 = {"B-old": {**old, "paper": "A"}, "B-mid": {**_rec(tolerances_per_scale=0.0505), "paper": "A"}}
+    for i in range(6):
+        eff8[f"B-k{i}"] = {**_rec(tolerances_per_scale=1.5 + i), "paper": "A"}
+    eight = {**number, "line": 3, "flagged_claims": sorted(eff8), "effects": eff8}
+    eff9 = {**eff8, "B-z": {**_rec(), "paper": "A"}}  # a ninth, the lightest: counted, not shown
+    nine = {**number, "line": 4, "flagged_claims": sorted(eff9), "effects": eff9}
+
     report = {
         "selection": {
             "papers": [],
@@ -1730,8 +1741,11 @@ def test_render_markdown_effect_wording_and_other_outcomes() -> None:
         },
         "numbers": [
             number,
+            eight,
+            nine,
             other(
-                "declared", effects={"c": _rec(inputs_changed=["b", "a"]), "d": _rec(inputs_changed=["c"])}
+                "declared",
+                effects={"c": _rec(inputs_changed=["b", "a", "e"]), "d": _rec(inputs_changed=["c", "d"])},
             ),
             other("breaks", effects={"c": _rec(error="Bad | thing " + "y" * 200), "d": _rec()}),
             other("breaks", effects={"c": _rec()}),
@@ -1747,6 +1761,9 @@ def test_render_markdown_effect_wording_and_other_outcomes() -> None:
     assert "Selection: papers all, claims ['X'], modules ['m'], sample 4 (seed 0)." in lines
     assert not [x for x in lines if x.startswith("Left out")]
     assert "- time: 0 s (trace 1 s, perturbation 2 s)" in lines
+    assert "## Summary" in lines
+    # no factor in the settings (an older run): a factor 10
+    assert any("or by a factor 10 either way" in x and "else at ×/÷10." in x for x in lines)
     assert "- excluded by rule: 0 ()" in lines
     row = [x for x in lines if x.startswith("| 1 |")]
     # by weight (per 10 %, plus a thousandth of the factor's): the eight heaviest, then a count
@@ -1754,7 +1771,25 @@ def test_render_markdown_effect_wording_and_other_outcomes() -> None:
         "| 1 | `2.5` | `s` |  | 10 claims: `A-tfac` inf at ×/÷10, `A-flip` flips, `A-scale` flips at ±10 %, "
         "`A-tol` 0.55, `A-ffac` flips at ×/÷10, `A-x4` 0.114, `A-x3` 0.113, `A-x2` 0.112 and 2 more | c |"
     ]
-    assert "| declared | f.py:2 | `2.5` | `s` | feeds `a`, `b`, `c` |" in lines
+    row8 = (
+        "| 3 | `2.5` | `s` |  | 8 claims: `B-k5` 6.5, `B-k4` 5.5, `B-k3` 4.5, `B-k2` 3.5, `B-k1` 2.5, "
+        "`B-k0` 1.5, `B-mid` 0 at ×/÷10, `B-old` 0 at ×/÷10 | c |"
+    )
+    assert lines[lines.index(row[0]) + 1] == row8
+    assert lines[lines.index(row8) + 2 :][:2] == ["", "## Other outcomes"]  # after line 4's row
+    assert lines[lines.index(row[0]) - 1] == "| --- | --- | --- | --- | --- | --- |"
+    assert "| status | file:line | number | in | detail |" in lines
+    assert (
+        lines[lines.index("| status | file:line | number | in | detail |") + 1]
+        == "| --- | --- | --- | --- | --- |"
+    )
+    assert not [x for x in lines if x.startswith("| flagged |")]  # flagged numbers are not "other"
+    assert lines[-1] == "" and lines[-2].startswith("| below-threshold |")
+    assert "| declared | f.py:2 | `2.5` | `s` | feeds `a`, `b`, `c`, `d` |" in lines
+    assert [x for x in lines if x.startswith("| 4 |")] == [
+        "| 4 | `2.5` | `s` |  | 9 claims: `B-k5` 6.5, `B-k4` 5.5, `B-k3` 4.5, `B-k2` 3.5, `B-k1` 2.5, "
+        "`B-k0` 1.5, `B-mid` 0 at ×/÷10, `B-old` 0 at ×/÷10 and 1 more | c |"
+    ]
     err = ("Bad | thing " + "y" * 200)[:120].replace("|", "\\|")
     assert f"| breaks | f.py:2 | `2.5` | `s` | {err} |" in lines
     assert "| breaks | f.py:2 | `2.5` | `s` |  |" in lines
@@ -1765,6 +1800,11 @@ def test_render_markdown_effect_wording_and_other_outcomes() -> None:
         "3e-05 (relative) per probe |"
     ) in lines
     assert "| below-threshold | f.py:2 | `2.5` | `s` | worst 0 tolerances per 10 % |" in lines
+    # a run made with another factor says so
+    report["settings"]["factor"] = 4
+    lines = gate.render_markdown(report).splitlines()
+    assert any("or by a factor 4 either way" in x and "else at ×/÷4." in x for x in lines)
+    assert "`A-tfac` inf at ×/÷4" in next(x for x in lines if x.startswith("| 1 |"))
 
 
 # --- the whole gate in this process ------------------------------------------------------------
@@ -1775,10 +1815,13 @@ class _SyncScheduler:
     claims package forgotten first (as a fresh child would find it) and the callback called as
     the real one calls it."""
 
+    made: ClassVar[list[tuple[Any, ...]]] = []
+
     def __init__(self, jobs: int, workdir: Path, nice: int = 0, log: Any = print) -> None:
         self.queue: list[Any] = []
         self.jobs = jobs
         self.log = log
+        _SyncScheduler.made.append((jobs, workdir, nice, log))
 
     def submit(self, task: Any) -> None:
         self.queue.append(task)
@@ -1810,8 +1853,19 @@ def test_gate_run_in_process(sync_gate: Any, tmp_path: Path) -> None:
     (38500), and when R is divided by 10; the failing claim is reported and never perturbed;
     the declared input's 3.0, the formula's 2.0 and 0.5 and the 0.0 are excluded by rule."""
     logs: list[str] = []
-    g = gate.Gate(sync_gate, jobs=1, nice=0, workdir=tmp_path / "work", log=logs.append)
+    _SyncScheduler.made = []
+    g = gate.Gate(sync_gate, jobs=1, nice=3, workdir=tmp_path / "work", log=logs.append)
     rep = g.run()
+    # the schedulers: reading the claims, the trace parent, its children, the control, the
+    # perturbations (each at the gate's niceness but the trace parent, which only waits)
+    work = tmp_path / "work"
+    assert _SyncScheduler.made == [
+        (1, work, 3, print),
+        (1, work, 0, print),
+        (1, work, 3, logs.append),
+        (1, work, 3, print),
+        (1, work, 3, logs.append),
+    ]
     n = rep["counts"]
     assert n["claims"] == 3
     assert n["claims_failing_nominally"] == ["WF-gic-fails"]
@@ -1841,6 +1895,20 @@ def test_gate_run_in_process(sync_gate: Any, tmp_path: Path) -> None:
     threshold = by_text["35000.0"]["effects"]["WF-gic-statement"]
     assert threshold["flipped_at_scale"] and threshold["statement_numbers_rel"] == 0.0
     assert n["perturbed_evaluations"] == g.children > 0
+    # the probes of the two modules' groups (model: drag and the statement, both moved; claims:
+    # the statement, moved by the height), each then split into single literals
+    assert g.group_log == [
+        {"size": 2, "claims": 2, "moved": 2, "depth": 0, "error": False},
+        {"size": 2, "claims": 1, "moved": 1, "depth": 0, "error": False},
+    ]
+    # 0.47: one probe (+0.1 %), flagged at once; R: both probes (it moved without flagging),
+    # +-10 % on the statement, then x10 and /10
+    assert drag["effects"]["WF-gic-drag"]["perturbed_to"] == [0.47 * (1 + 1e-3)]
+    r = 6371000.0
+    assert sorted(radius["perturbed_to"]) == sorted(
+        [r * (1 + 1e-3), r * (1 - 1e-3), r * 1.1, r * 0.9, r * 10.0, r / 10.0]
+    )
+    assert threshold["perturbed_to"][0] == 35000.0 * (1 + 1e-3)
     assert any(s.startswith("reading the claims") for s in logs)
     assert any(s.startswith("tracing 3 claims") for s in logs)
     assert "perturbing 4 literals in 2 modules" in logs
@@ -1851,6 +1919,53 @@ def test_gate_run_in_process(sync_gate: Any, tmp_path: Path) -> None:
     assert not [s for s in logs if s.startswith(("reading the claims", "tracing"))]
     assert again["counts"]["flagged"] == 4
     assert again["counts"]["seconds"]["trace"] == 0.0
+
+
+ORDER_DEPENDENT = """
+CLAIMS += [
+    _c("WF-gic-b1", "1.0", lambda: _bump()),
+    _c("WF-gic-b2", "1.0", lambda: _bump()),
+    Claim(id="WF-gic-b3", paper="WF", locator="Table 1", quantity="s", published=True, unit="statement",
+          compute=lambda: _bump() > 2.5, tolerance=EXACT, expected_status="reproduced", note="synthetic"),
+    _c("WF-gic-b4", "1.0", lambda: _strict()),
+    _c("WF-gic-b5", "1.0", lambda: 1.0 + 0.001 * _bump()),
+    Claim(id="WF-gic-b6", paper="WF", locator="Table 1", quantity="s", published=True, unit="statement",
+          compute=lambda: _bump() > 0.5, tolerance=EXACT, expected_status="reproduced", note="synthetic"),
+]
+_N = [0]
+
+
+def _bump():
+    _N[0] += 1
+    return float(_N[0])
+
+
+def _strict():
+    if _bump() > 3.5:
+        raise ValueError("ran after others")
+    return 1.0
+"""
+
+
+def test_gate_control_finds_order_dependent_claims(sync_gate: Any, tmp_path: Path) -> None:
+    """Oracle: claims that count their own evaluations (a module-level counter), by hand: alone
+    each sees 1; in the control's one process, in order, b1 sees 1 (stable), b2 2 (1 tolerance is
+    0.05: 20 tolerances), the statement b3 3 > 2.5 (flips; its number moves 2/3), b4 4 (raises),
+    b5 1.005 against 1.001 (0.08 tolerances), the statement b6 6 > 0.5 (no flip; 5/6)."""
+    claims = tmp_path / "gic" / "claims.py"
+    claims.write_text(claims.read_text() + ORDER_DEPENDENT)
+    g = gate.Gate(sync_gate, workdir=tmp_path / "work", log=lambda s: None)
+    g._prepare()
+    g._trace()
+    assert g.traces["WF-gic-b2"]["value"] == 1.0 and g.traces["WF-gic-b4"]["value"] == 1.0
+    g._control()
+    assert g.unstable == {
+        "WF-gic-b2": "moves by 20 tolerances; inputs []",
+        "WF-gic-b3": "flipped: True; its numbers move by 0.667 (relative)",
+        "WF-gic-b4": "ValueError: ran after others",
+        "WF-gic-b5": "moves by 0.08 tolerances; inputs []",
+        "WF-gic-b6": "flipped: False; its numbers move by 0.833 (relative)",
+    }
 
 
 def test_gate_selection(sync_gate: Any, tmp_path: Path) -> None:
@@ -2013,32 +2128,50 @@ def test_merge_reports(tmp_path: Path) -> None:
     second["selection"]["papers"] = ["SP"]
     second["selection"]["audit"] = False
     n0 = second["numbers"][0]
-    n0["effects"] = {"SP-9": {**_rec(flipped=True), "paper": "SP", "statement": True}}
-    n0["flagged_claims"] = ["SP-9"]
-    n0["flips"] = ["SP-9"]
+    n0["effects"] = {"KZL-9": {**_rec(flipped=True), "paper": "KZL", "statement": True}}
+    n0["flagged_claims"] = ["KZL-9"]
+    n0["flips"] = ["KZL-9"]
+    n0["papers"] = ["KZL"]
     n0["worst_tolerances"] = "inf"
     n1 = second["numbers"][1]
     n1["status"] = "breaks"
-    second["counts"]["excluded_by_rule"] = {"exponent": 2, "index": 1}
+    z = json.loads(json.dumps(rep["numbers"][0]))
+    z.update(id="z", flagged_claims=["WF-2"], flips=[], papers=["WF"], effects={"WF-2": {"paper": "WF"}})
+    second["numbers"].append(z)
+    second["counts"]["excluded_by_rule"] = {"seed": 1, "exponent": 2, "index": 1}
     second["counts"]["claims_order_dependent"] = {"SP-3": "why"}
     merged = gate.merge_reports([rep, second])
-    a, b = merged["numbers"]
-    assert a["flagged_claims"] == ["SP-1", "SP-9", "WF-1"]
-    assert a["flips"] == ["SP-1", "SP-9"]
-    assert a["papers"] == ["SP", "WF"]
+    a, z_merged, b = merged["numbers"]
+    assert z_merged["id"] == "z"
+    assert a["flagged_claims"] == ["KZL-9", "SP-1", "WF-1"]
+    assert a["flips"] == ["KZL-9", "SP-1"]
+    assert a["papers"] == ["KZL", "SP", "WF"]
     assert a["worst_tolerances"] == math.inf
-    assert sorted(a["effects"]) == ["SP-1", "SP-9", "WF-1"]
+    assert sorted(a["effects"]) == ["KZL-9", "SP-1", "WF-1"]
     assert b["status"] == "breaks"  # breaks outranks below-threshold
-    assert rep["numbers"][0]["flagged_claims"] == ["SP-1", "WF-1"]  # the inputs are not changed
+    # the inputs are not changed
+    assert rep["numbers"][0]["flagged_claims"] == ["SP-1", "WF-1"]
+    assert sorted(rep["numbers"][0]["effects"]) == ["SP-1", "WF-1"]
+    # one run alone: every number of it, as it is
+    alone = gate.merge_reports([rep])
+    assert [e["id"] for e in alone["numbers"]] == [e["id"] for e in rep["numbers"]]
+    assert alone["numbers"][1] == rep["numbers"][1]
     n = merged["counts"]
     assert n["claims"] == 6 and n["perturbed"] == 4 and n["perturbed_evaluations"] == 24
     assert n["allowlisted"] == 2 and n["literals_run_by_claims"] == 8 and n["literals"] == 5
     assert n["claims_failing_nominally"] == ["SP-1", "SP-1"]
     assert n["claims_order_dependent"] == {"SP-2": "moves by 1 tolerances", "SP-3": "why"}
-    assert n["excluded_by_rule"] == {"exponent": 3, "index": 1}
+    assert n["excluded_by_rule"] == {"exponent": 3, "index": 1, "seed": 1}
+    assert (
+        list(n["excluded_by_rule"]) == ["exponent", "index", "seed"] and type(n["excluded_by_rule"]) is dict
+    )
     assert n["seconds"] == {"total": 20.0, "trace": 2.6, "perturb": 6.8}
-    assert n["flagged"] == 1 and n["by_status"] == {"breaks": 1, "flagged": 1}
-    assert n["per_paper"] == {"SP": {"numbers": 1, "claims": 2}, "WF": {"numbers": 1, "claims": 1}}
+    assert n["flagged"] == 2 and n["by_status"] == {"breaks": 1, "flagged": 2}
+    assert n["per_paper"] == {
+        "KZL": {"numbers": 1, "claims": 1},
+        "SP": {"numbers": 1, "claims": 1},
+        "WF": {"numbers": 2, "claims": 2},
+    }
     sel = merged["selection"]
     assert sel == {
         "papers": ["SP", "WF"],
@@ -2075,15 +2208,19 @@ def test_reapply_rules(tmp_path: Path) -> None:
             "allowlist_reason": "",
         }
 
+    two = entry("e", "ATC")
+    two["flagged_claims"] = ["ATC-1", "ATC-2"]
+    two["effects"]["ATC-2"] = {"paper": "ATC"}
     report = {
         "numbers": [
+            entry("gone", "ATC"),  # not a candidate any more: left as it is
+            entry("d", "KZL", "below-threshold"),  # not flagged: left alone
             entry("a", "WF"),
             entry("b", "SP"),
             entry("c", "SP"),
-            entry("d", "KZL", "below-threshold"),
-            entry("gone", "ATC"),
+            two,
         ],
-        "counts": {"flagged": 5, "by_status": {}, "per_paper": {}},
+        "counts": {"flagged": 6, "by_status": {}, "per_paper": {}},
     }
     index = gate.Index(target=gate.Target(package="p", root=tmp_path, claim_modules=list))
     index.candidates = [
@@ -2091,6 +2228,7 @@ def test_reapply_rules(tmp_path: Path) -> None:
         _cand(id="b", rule="exponent"),
         _cand(id="c"),
         _cand(id="d", rule="index"),
+        _cand(id="e"),
     ]
     gate.reapply_rules(report, index)
     st = {e["id"]: e["status"] for e in report["numbers"]}
@@ -2099,19 +2237,21 @@ def test_reapply_rules(tmp_path: Path) -> None:
         "b": "excused-by-rule",
         "c": "flagged",
         "d": "below-threshold",
+        "e": "flagged",
         "gone": "flagged",
     }
-    assert report["numbers"][0]["allowlist_reason"] == "exact"
-    assert report["numbers"][1]["rule"] == "exponent"
-    assert report["counts"]["flagged"] == 2
+    assert report["numbers"][2]["allowlist_reason"] == "exact" and report["numbers"][2]["rule"] == ""
+    assert report["numbers"][3]["rule"] == "exponent" and report["numbers"][3]["allowlist_reason"] == ""
+    assert report["counts"]["flagged"] == 3
     assert report["counts"]["by_status"] == {
         "allowlisted": 1,
         "below-threshold": 1,
         "excused-by-rule": 1,
-        "flagged": 2,
+        "flagged": 3,
     }
+    # ATC: two flagged numbers ("gone" and "e") moving ATC-1 and ATC-2
     assert report["counts"]["per_paper"] == {
-        "ATC": {"numbers": 1, "claims": 1},
+        "ATC": {"numbers": 2, "claims": 2},
         "SP": {"numbers": 1, "claims": 1},
     }
 
@@ -2135,12 +2275,245 @@ def test_main_merge(
         p = tmp_path / f"run{i}.json"
         p.write_text(json.dumps(rep))
         runs.append(str(p))
-    out = tmp_path / "out"
+    out = tmp_path / "deep" / "out"
     assert gate.main(["--merge", *runs, "--out", str(out)]) == 1
-    merged = json.loads((out / "input_gate.json").read_text())
+    text = (out / "input_gate.json").read_text()
+    assert text.startswith('{\n "selection": {\n  "papers"') and text.endswith("}\n")  # indented by one
+    merged = json.loads(text)
     assert merged["counts"]["flagged"] == 1 and merged["selection"]["merged_runs"] == 2
     assert (out / "input_gate.md").read_text().startswith("# Input gate")
     assert capsys.readouterr().out.strip() == "input gate: 1 flagged numbers in 2 runs"
     rep["numbers"] = []
     (tmp_path / "run1.json").write_text(json.dumps(rep))
     assert gate.main(["--merge", runs[0], "--out", str(out)]) == 0
+
+
+def test_lambda_inside_a_lambda(tmp_path: Path) -> None:
+    """Oracle: ``lambda x: (lambda y: 2.5 * y)(x)`` on line 1 makes two functions, the inner one
+    named after the outer; 2.5 is in the inner one's body."""
+    _write_pkg(tmp_path / "n", {"__init__.py": "", "a.py": "NEST = lambda x: (lambda y: 2.5 * y)(x)\n"})
+    index = gate.index_package(
+        gate.Target(package="n", root=tmp_path / "n", claim_modules=list, repo=tmp_path)
+    )
+    assert [(f.qualname, f.top) for f in index.functions] == [
+        ("<module>.<lambda:1>", None),
+        ("<module>.<lambda:1>.<lambda:1>", None),
+    ]
+    (c,) = index.candidates
+    assert (c.scope, c.where, c.unit) == (
+        "<module>.<lambda:1>.<lambda:1>",
+        "body",
+        index.functions[1].units[0],
+    )
+
+
+def test_lambda_inside_a_lambda_in_a_def(tmp_path: Path) -> None:
+    """Oracle: inside ``def g``, both lambdas (one inside the other) belong to g's top-level name."""
+    _write_pkg(tmp_path / "n", {"b.py": "def g():\n    return (lambda x: (lambda y: y)(x))(1)\n"})
+    index = gate.index_package(
+        gate.Target(package="n", root=tmp_path / "n", claim_modules=list, repo=tmp_path)
+    )
+    tops = {f.qualname: f.top for f in index.functions}
+    assert tops == {"g": ("n.b", "g"), "g.<lambda:2>": ("n.b", "g"), "g.<lambda:2>.<lambda:2>": ("n.b", "g")}
+
+
+def test_navcore_target() -> None:
+    """Oracle: the module doc: navcore's library and paper modules, its excluded modules, the
+    paper modules' functions exposed to statements, the committed allowlist."""
+    from navcore.ledger.registry import paper_modules
+
+    t = gate.navcore_target()
+    assert t.package == "navcore" and t.root == gate.ROOT / "navcore" and t.repo == gate.ROOT
+    assert t.exclude is gate.EXCLUDED_MODULES and t.exposure_prefix == "navcore.papers."
+    assert t.allowlist == gate.ALLOWLIST == gate.ROOT / "tools" / "input_gate_allowlist.toml"
+    assert t.claim_modules() == list(paper_modules())
+    assert "ledger" in gate.EXCLUDED_MODULES and "_validate" in gate.EXCLUDED_MODULES
+
+
+def test_exit_on_signal() -> None:
+    """Oracle: SIGTERM (15) exits with 128 + 15, as a shell reports it."""
+    with pytest.raises(SystemExit) as exc:
+        gate._exit_on_signal(15, None)
+    assert exc.value.code == 143
+
+
+HELPS = [
+    "The input gate: find every number that moves a ledger claim without being a declared input.",
+    "only this paper's claims (repeatable)",
+    "only claims whose id starts with this",
+    "only numbers in modules matching this",
+    "N claims drawn at random (seeded)",
+    "niceness of the children (default 5)",
+    "also perturb excluded and allowlisted numbers",
+    "leave out claims whose nominal evaluation takes longer (a quick sample)",
+    "trace again even if a trace is stored",
+    "folder of input_gate.json/.md",
+    "the trace cache and the children's files",
+    "combine the input_gate.json of several runs (one per paper) into --out; runs nothing",
+]
+
+
+def test_main_help(capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch) -> None:
+    """Oracle: the module doc's first paragraph and each option's help, as written in main."""
+    monkeypatch.setenv("COLUMNS", "400")
+    with pytest.raises(SystemExit):
+        gate.main(["--help"])
+    out = " ".join(capsys.readouterr().out.split())
+    for text in HELPS:
+        assert re.search(rf"(?<!\S){re.escape(text)}(?!\S)", out), text
+    assert "LEDGER.md" not in out  # only the doc's first paragraph
+    for opt in (
+        "--paper",
+        "--claim",
+        "--module",
+        "--sample",
+        "--seed",
+        "--jobs",
+        "--nice",
+        "--audit",
+        "--max-seconds",
+        "--no-cache",
+        "--out",
+        "--workdir",
+        "--merge",
+    ):
+        assert f"[{opt}" in out
+
+
+class _FakeGate:
+    made: ClassVar[list[tuple[Any, dict]]] = []
+    report: ClassVar[dict] = {}
+
+    def __init__(self, target: Any, **kw: Any) -> None:
+        _FakeGate.made.append((target, kw))
+
+    def run(self) -> dict:
+        return _FakeGate.report
+
+
+@pytest.fixture
+def fake_main(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Any:
+    """main() with a stand-in Gate (it records its arguments and returns a hand-made report),
+    signal handlers recorded rather than installed, and the environment restored afterwards."""
+    _FakeGate.made = []
+    _FakeGate.report = _reported_gate(tmp_path).report()
+    monkeypatch.setattr(gate, "Gate", _FakeGate)
+    target = gate.Target(package="t", root=tmp_path, claim_modules=list)
+    monkeypatch.setattr(gate, "navcore_target", lambda: target)
+    handlers: list[tuple[Any, Any]] = []
+    monkeypatch.setattr(gate.signal, "signal", lambda sig, h: handlers.append((sig, h)))
+    for var in ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "MPLBACKEND", "NAVCORE_NO_DISK_CACHE"):
+        monkeypatch.delenv(var, raising=False)
+    monkeypatch.delenv("OMP_NUM_THREADS", raising=False)
+    monkeypatch.setenv("MKL_NUM_THREADS", "4")
+    monkeypatch.setenv("NAVCORE_CACHE", "on")
+    return target, handlers
+
+
+def test_main_runs_the_gate_with_its_defaults(
+    fake_main: Any, tmp_path: Path, capsys: pytest.CaptureFixture
+) -> None:
+    """Oracle: main's argument defaults (two jobs at niceness 5, the trace cache on, the work
+    folder under _build), the environment a run needs (one BLAS thread unless set, no caches,
+    Agg), the handlers that stop it cleanly, the two files written and exit status 1 for a
+    flagged number."""
+    import os
+    import signal
+
+    target, handlers = fake_main
+    out = tmp_path / "out"
+    assert gate.main(["--out", str(out)]) == 1
+    ((got_target, kw),) = _FakeGate.made
+    assert got_target is target
+    log = kw.pop("log")
+    assert kw == {
+        "papers": [],
+        "claim_prefixes": [],
+        "modules": [],
+        "sample": None,
+        "seed": 0,
+        "jobs": 2,
+        "nice": 5,
+        "audit": False,
+        "workdir": gate.ROOT / "_build" / "input_gate",
+        "use_cache": True,
+        "max_seconds": None,
+    }
+    log("a line from the gate")
+    assert handlers == [(signal.SIGINT, signal.default_int_handler), (signal.SIGTERM, gate._exit_on_signal)]
+    assert os.environ["OPENBLAS_NUM_THREADS"] == "1" and os.environ["OMP_NUM_THREADS"] == "1"
+    assert os.environ["MKL_NUM_THREADS"] == "4"  # set before: kept
+    assert os.environ["NAVCORE_CACHE"] == "off" and os.environ["NAVCORE_NO_DISK_CACHE"] == "1"
+    assert os.environ["MPLBACKEND"] == "Agg"
+    written = (out / "input_gate.json").read_text()
+    assert json.loads(written) == json.loads(json.dumps(_FakeGate.report))
+    # indented by one space, in the report's own order (selection first, not sorted)
+    assert written.endswith("}\n") and written.startswith('{\n "selection": {')
+    assert (out / "input_gate.md").read_text() == gate.render_markdown(_FakeGate.report)
+    printed = capsys.readouterr().out.splitlines()
+    assert printed == [
+        f"input gate: 1 flagged numbers; 2 perturbed; report in {out / 'input_gate.md'}",
+        "a line from the gate",  # the gate's log prints
+    ]
+
+
+def test_main_writes_under_build_by_default(
+    fake_main: Any, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Oracle: without --out the report goes to <repository>/_build (here a stand-in root), made
+    if missing, and again when it exists."""
+    monkeypatch.setattr(gate, "ROOT", tmp_path / "repo")
+    assert gate.main([]) == 1
+    assert (tmp_path / "repo" / "_build" / "input_gate.json").exists()
+    assert gate.main([]) == 1
+    assert _FakeGate.made[0][1]["workdir"] == tmp_path / "repo" / "_build" / "input_gate"
+
+
+def test_main_passes_every_option(fake_main: Any, tmp_path: Path) -> None:
+    """Oracle: each option given once (and --paper twice) arrives at the gate as written; no
+    flagged number means exit status 0."""
+    _FakeGate.report["counts"]["flagged"] = 0
+    out = tmp_path / "deep" / "out"
+    argv = [
+        "--paper",
+        "WF",
+        "--paper",
+        "SP",
+        "--claim",
+        "WF-1",
+        "--module",
+        "antenna",
+        "--sample",
+        "3",
+        "--seed",
+        "7",
+        "--jobs",
+        "1",
+        "--nice",
+        "2",
+        "--audit",
+        "--max-seconds",
+        "2.5",
+        "--no-cache",
+        "--out",
+        str(out),
+        "--workdir",
+        str(tmp_path / "w"),
+    ]
+    assert gate.main(argv) == 0
+    ((_, kw),) = _FakeGate.made
+    kw.pop("log")
+    assert kw == {
+        "papers": ["WF", "SP"],
+        "claim_prefixes": ["WF-1"],
+        "modules": ["antenna"],
+        "sample": 3,
+        "seed": 7,
+        "jobs": 1,
+        "nice": 2,
+        "audit": True,
+        "workdir": tmp_path / "w",
+        "use_cache": False,
+        "max_seconds": 2.5,
+    }
+    assert (out / "input_gate.json").exists()
