@@ -2581,9 +2581,6 @@ def render_markdown(report: dict[str, Any]) -> str:
                         how = f"{_num(eff.get('tolerances_at_factor', 0.0)):.3g} at ×/÷{factor:g}"
                     shown.append(f"`{cid}` {how}")
                 more = f" and {len(mine) - 8} more" if len(mine) > 8 else ""
-                src = e["source"].replace("|", "\\|")
-                if len(src) > 90:
-                    src = src[:87] + "..."
                 out.append(
                     f"| {e['line']} | `{e['text']}` | `{e['scope']}` | {e['binding'] or ''} | "
                     f"{len(mine)} claims: {', '.join(shown)}{more} | {e['classification']} |"
