@@ -33,6 +33,9 @@ def _module_group(claim_id: str) -> str:
 def test_claim(claim_id: str) -> None:
     result = ledger.evaluate_claim(claim_id)
     if result.claim.compute is None:
+        # skipped only where the claim expects it: a claim whose computation went missing
+        # (expected reproduced, say) fails here instead of being skipped
+        assert result.passes, f"{claim_id}: {result.detail}"
         pytest.skip(f"not reproducible: {result.claim.note}")
     assert result.passes, (
         f"{claim_id} ({result.claim.locator}, {result.claim.quantity}): {result.detail}; "
@@ -91,3 +94,28 @@ def test_failure_message_describes_a_callable_tolerance() -> None:
     assert _tolerance_text(result) == "±0.05"
     broken = ledger.evaluate(dataclasses.replace(claim, tolerance=lambda: 1.0))
     assert broken.status == "error" and _tolerance_text(broken) == "not resolved (see the detail)"
+
+
+def test_a_claim_that_lost_its_computation_fails_and_one_that_has_none_is_skipped(monkeypatch) -> None:
+    """A claim expected to reproduce whose computation is gone (a mutant set ``compute=None``
+    and the test skipped it as "not reproducible") fails; one that expects not-reproducible is
+    skipped with its note. Oracle: the two outcomes written out by hand."""
+    claim = ledger.Claim(
+        id="WF-test-no-computation", paper="WF", locator="Eq. (1)", quantity="q", published=1.0,
+        unit="m", compute=None, tolerance=ledger.EXACT, expected_status="reproduced",
+        note="a synthetic claim without its computation",
+    )  # fmt: skip
+    monkeypatch.setattr(ledger, "evaluate_claim", lambda claim_id: ledger.evaluate(claim))
+
+    def outcome() -> str:  # a skip must not escape: it would skip this test, not fail it
+        try:
+            test_claim(claim.id)
+        except AssertionError as exc:
+            return f"failed: {exc}"
+        except pytest.skip.Exception as exc:
+            return f"skipped: {exc}"
+        return "passed"
+
+    assert outcome().startswith("failed: WF-test-no-computation")
+    claim = dataclasses.replace(claim, expected_status="not-reproducible")
+    assert outcome() == "skipped: not reproducible: a synthetic claim without its computation"
