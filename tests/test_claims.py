@@ -44,6 +44,88 @@ def test_claim(claim_id: str) -> None:
     )
 
 
+def _claim_values():
+    """The record of what every claim reproduced (``tests/claim_values.json``) and its tool."""
+    import sys
+    from pathlib import Path
+
+    tools = str(Path(__file__).resolve().parents[1] / "tools")
+    if tools not in sys.path:
+        sys.path.insert(0, tools)
+    import claim_values
+
+    return claim_values
+
+
+RECORDED = _claim_values().load()
+
+
+@pytest.mark.parametrize(
+    "claim_id", [pytest.param(i, marks=pytest.mark.xdist_group(_module_group(i))) for i in CLAIM_IDS]
+)
+def test_claim_reproduces_the_recorded_values(claim_id: str) -> None:
+    """The claim's value, band and readings are those recorded (to a relative 1e-6): a change
+    that moves a reproduced number, whether or not its verdict moves, fails here until the record
+    is written again, and the record's diff shows it in review. A regression check: the record
+    says that a number moved, the claim's own check says whether it still agrees."""
+    cv = _claim_values()
+    assert claim_id in RECORDED, f"{claim_id} is not recorded: python tools/claim_values.py --update"
+    now = cv.values(ledger.evaluate_claim(claim_id).as_json())
+    moved = cv.differences(RECORDED[claim_id], now)
+    assert not moved, (
+        f"{claim_id}: its reproduced numbers moved ({'; '.join(moved)}). If the change is meant, "
+        "write the record again (python tools/claim_values.py --update) and review its diff"
+    )
+
+
+def test_the_record_holds_exactly_the_ledger_claims() -> None:
+    """No claim left unrecorded, no recorded claim that is gone (renamed or removed)."""
+    assert sorted(RECORDED) == sorted(CLAIM_IDS)
+
+
+def test_the_record_comparison_catches_each_kind_of_move() -> None:
+    """The comparison the claim tests use. Oracle: each case decided by hand (a move of 1e-5 is
+    seen, 1e-9 is round-off; a statement that flips, a band end, a reading's value, a reading
+    that appears; zero against round-off)."""
+    cv = _claim_values()
+    base = {"reproduced": 2.0, "band": [1.0, 3.0], "readings": [[2.0, [1.0, 3.0]]]}
+    assert cv.differences(base, base) == []
+    assert cv.differences(base, {**base, "reproduced": 2.0 * (1 + 1e-9)}) == []
+    assert cv.differences(base, {**base, "reproduced": 2.0 * (1 + 1e-5)}) == [
+        f"reproduced: 2.0 -> {2.0 * (1 + 1e-5)!r}"
+    ]
+    assert cv.differences(base, {**base, "band": [1.0, 3.1]}) == ["band: [1.0, 3.0] -> [1.0, 3.1]"]
+    assert cv.differences(base, {**base, "band": None}) == ["band: [1.0, 3.0] -> None"]
+    assert len(cv.differences(base, {**base, "readings": [[2.5, [1.0, 3.0]]]})) == 1
+    assert len(cv.differences(base, {**base, "readings": [*base["readings"], [2.0, None]]})) == 1
+    statement = {"reproduced": True, "band": [False, True], "readings": []}
+    assert cv.differences(statement, {**statement, "reproduced": False}) == ["reproduced: True -> False"]
+    assert cv.differences(statement, {**statement, "reproduced": 1.0}) != []  # a number is no truth value
+    assert cv.differences({**base, "reproduced": 0.0}, {**base, "reproduced": 1e-15}) == []
+    assert cv.differences({**base, "reproduced": "Infinity"}, {**base, "reproduced": 1e308}) != []
+
+
+def test_the_record_is_written_from_a_ledger_export(tmp_path) -> None:
+    """The record written from an export reads back as each claim's values, one claim a line.
+    Oracle: a two-claim export written out by hand."""
+    cv = _claim_values()
+    export = {
+        "claims": [
+            {"id": "B", "reproduced": 1.5, "band": None, "readings": []},
+            {"id": "A", "reproduced": True, "band": [False, True],
+             "readings": [{"reading": {"x": "y"}, "value": False, "band": None}]},
+        ]
+    }  # fmt: skip
+    path = tmp_path / "values.json"
+    assert cv.write(export, path) == 2
+    assert cv.load(path) == {
+        "A": {"reproduced": True, "band": [False, True], "readings": [[False, None]]},
+        "B": {"reproduced": 1.5, "band": None, "readings": []},
+    }
+    lines = path.read_text().splitlines()
+    assert [line.split(":")[0].strip() for line in lines[3:5]] == ['"A"', '"B"']
+
+
 def _tolerance_text(result: ledger.Evaluation) -> str:
     """The tolerance in short, as the ledger resolved it (a callable tolerance included).
 
