@@ -64,13 +64,14 @@ RECORDED = _claim_values().load()
     "claim_id", [pytest.param(i, marks=pytest.mark.xdist_group(_module_group(i))) for i in CLAIM_IDS]
 )
 def test_claim_reproduces_the_recorded_values(claim_id: str) -> None:
-    """The claim's value, band and readings are those recorded (to a relative 1e-6): a change
+    """The claim's value, band, readings, one-at-a-time band runs and oracle value are those
+    recorded (to a relative 1e-6): a change
     that moves a reproduced number, whether or not its verdict moves, fails here until the record
     is written again, and the record's diff shows it in review. A regression check: the record
     says that a number moved, the claim's own check says whether it still agrees."""
     cv = _claim_values()
     assert claim_id in RECORDED, f"{claim_id} is not recorded: python tools/claim_values.py --update"
-    now = cv.values(ledger.evaluate_claim(claim_id).as_json())
+    now = cv.values(ledger.evaluate_claim(claim_id))
     moved = cv.differences(RECORDED[claim_id], now)
     assert not moved, (
         f"{claim_id}: its reproduced numbers moved ({'; '.join(moved)}). If the change is meant, "
@@ -86,9 +87,12 @@ def test_the_record_holds_exactly_the_ledger_claims() -> None:
 def test_the_record_comparison_catches_each_kind_of_move() -> None:
     """The comparison the claim tests use. Oracle: each case decided by hand (a move of 1e-5 is
     seen, 1e-9 is round-off; a statement that flips, a band end, a reading's value, a reading
-    that appears; zero against round-off)."""
+    that appears, one band run of one input, an oracle's value; zero against round-off)."""
     cv = _claim_values()
-    base = {"reproduced": 2.0, "band": [1.0, 3.0], "readings": [[2.0, [1.0, 3.0]]]}
+    base = {
+        "reproduced": 2.0, "band": [1.0, 3.0], "readings": [[2.0, [1.0, 3.0]]],
+        "sensitivity": [["P.m.x", [[0.5, 1.0], [2.0, 3.0]]], ["P.m.y", [["a", 2.0]]]], "oracle": None,
+    }  # fmt: skip
     assert cv.differences(base, base) == []
     assert cv.differences(base, {**base, "reproduced": 2.0 * (1 + 1e-9)}) == []
     assert cv.differences(base, {**base, "reproduced": 2.0 * (1 + 1e-5)}) == [
@@ -98,32 +102,38 @@ def test_the_record_comparison_catches_each_kind_of_move() -> None:
     assert cv.differences(base, {**base, "band": None}) == ["band: [1.0, 3.0] -> None"]
     assert len(cv.differences(base, {**base, "readings": [[2.5, [1.0, 3.0]]]})) == 1
     assert len(cv.differences(base, {**base, "readings": [*base["readings"], [2.0, None]]})) == 1
-    statement = {"reproduced": True, "band": [False, True], "readings": []}
+    moved = {**base, "sensitivity": [["P.m.x", [[0.5, 1.0], [2.0, 3.5]]], ["P.m.y", [["a", 2.0]]]]}
+    assert cv.differences(base, moved) == [
+        "sensitivity to P.m.x: [[0.5, 1.0], [2.0, 3.0]] -> [[0.5, 1.0], [2.0, 3.5]]"
+    ]
+    other_point = {**base, "sensitivity": [["P.m.x", [[0.5, 1.0], [2.0, 3.0]]], ["P.m.y", [["b", 2.0]]]]}
+    assert cv.differences(base, other_point) == ["sensitivity to P.m.y: [['a', 2.0]] -> [['b', 2.0]]"]
+    assert cv.differences({**base, "oracle": 4.0}, {**base, "oracle": 4.1}) == ["oracle: 4.0 -> 4.1"]
+    statement = {**base, "reproduced": True, "band": [False, True]}
     assert cv.differences(statement, {**statement, "reproduced": False}) == ["reproduced: True -> False"]
     assert cv.differences(statement, {**statement, "reproduced": 1.0}) != []  # a number is no truth value
     assert cv.differences({**base, "reproduced": 0.0}, {**base, "reproduced": 1e-15}) == []
     assert cv.differences({**base, "reproduced": "Infinity"}, {**base, "reproduced": 1e308}) != []
 
 
-def test_the_record_is_written_from_a_ledger_export(tmp_path) -> None:
-    """The record written from an export reads back as each claim's values, one claim a line.
-    Oracle: a two-claim export written out by hand."""
+def test_the_record_is_written_from_evaluations(tmp_path) -> None:
+    """The record written from two evaluations reads back as their values, one claim a line in
+    the order of their ids. Oracle: the two claims' values written out by hand."""
     cv = _claim_values()
-    export = {
-        "claims": [
-            {"id": "B", "reproduced": 1.5, "band": None, "readings": []},
-            {"id": "A", "reproduced": True, "band": [False, True],
-             "readings": [{"reading": {"x": "y"}, "value": False, "band": None}]},
-        ]
-    }  # fmt: skip
+    a = ledger.Claim(
+        id="WF-test-a", paper="WF", locator="Eq. (1)", quantity="q", published=1.5, unit="m",
+        compute=lambda: 1.5, tolerance=ledger.EXACT, expected_status="reproduced", note="a synthetic claim",
+    )  # fmt: skip
+    b = dataclasses.replace(a, id="WF-test-b", compute=lambda: 2.0, published=2.0)
     path = tmp_path / "values.json"
-    assert cv.write(export, path) == 2
+    assert cv.write({c.id: cv.values(ledger.evaluate(c)) for c in (b, a)}, path) == 2
+    plain = {"band": None, "readings": [], "sensitivity": [], "oracle": None}
     assert cv.load(path) == {
-        "A": {"reproduced": True, "band": [False, True], "readings": [[False, None]]},
-        "B": {"reproduced": 1.5, "band": None, "readings": []},
+        "WF-test-a": {"reproduced": 1.5, **plain},
+        "WF-test-b": {"reproduced": 2.0, **plain},
     }
     lines = path.read_text().splitlines()
-    assert [line.split(":")[0].strip() for line in lines[3:5]] == ['"A"', '"B"']
+    assert [line.split(":")[0].strip() for line in lines[3:5]] == ['"WF-test-a"', '"WF-test-b"']
 
 
 def _tolerance_text(result: ledger.Evaluation) -> str:

@@ -1,8 +1,10 @@
 """The recorded values of every claim: a change that moves a reproduced number shows in review.
 
 ``tests/claim_values.json`` holds, for every claim of the ledger, what its evaluation
-reproduced: the value at the nominal inputs, the band over the assumed inputs' ranges, and the
-value and band under each reading of the conventions it reads. The claim tests compare each
+reproduced: the value at the nominal inputs, the band over the assumed inputs' ranges, the value
+and band under each reading of the conventions it reads, the value of each one-at-a-time run of
+the band (each assumed input at each of its band points), and the independent oracle's value
+of a discrepant claim. The claim tests compare each
 claim's evaluation with it (:func:`differences`), so a change to a model, a scenario or an input
 that moves any reproduced number fails a test until the record is written again, and the
 record's diff shows the reviewer every number that moved, whether or not its verdict did.
@@ -13,19 +15,17 @@ and the models' oracle tests say that.
 
 Usage::
 
-    python tools/claim_values.py --update [LEDGER_JSON]
+    python tools/claim_values.py --update
 
-writes the record from a ledger JSON export (``nox -s ledger`` writes ``_build/ledger.json``);
-without ``LEDGER_JSON`` it evaluates the ledger itself, on every core.
+evaluates the ledger on every core (reading the evaluations the ledger's on-disk cache holds
+for this checkout: after ``nox -s ledger -- --store`` it takes seconds) and writes the record.
 """
 
 from __future__ import annotations
 
 import json
 import math
-import subprocess
 import sys
-import tempfile
 from pathlib import Path
 from typing import Any
 
@@ -43,34 +43,47 @@ RTOL = 1e-6
 #: and leaves round-off (the smallest non-zero value the ledger reproduces is about 1e-5).
 ATOL = 1e-12
 
-#: The fields of a claim's JSON export (:meth:`navcore.ledger.Evaluation.as_json`) recorded.
-FIELDS = ("reproduced", "band", "readings")
+#: The fields recorded of each claim.
+FIELDS = ("reproduced", "band", "readings", "sensitivity", "oracle")
 
 
-def values(record: dict[str, Any]) -> dict[str, Any]:
-    """What the record keeps of one claim's JSON export: its reproduced value, its band, and
-    each reading's value and band (in the order the evaluation lists them).
+def values(evaluation: Any) -> dict[str, Any]:
+    """What the record keeps of one claim's evaluation, as plain JSON: its reproduced value, its
+    band, each reading's value and band (in the order the evaluation lists them), each
+    one-at-a-time band run (input name, then ``[point, value]`` pairs) and the oracle's value.
 
     Parameters
     ----------
-    record : dict
-        One claim of the ledger's JSON export.
+    evaluation : navcore.ledger.Evaluation
+        One claim's evaluation.
 
     Returns
     -------
     dict
-        ``reproduced``, ``band`` and ``readings`` (a list of ``[value, band]``).
+        ``reproduced``, ``band``, ``readings`` (a list of ``[value, band]``), ``sensitivity``
+        (a list of ``[name, [[point, value], ...]]``) and ``oracle``.
 
     Examples
     --------
-    >>> values({"id": "X", "reproduced": 1.5, "band": [1.0, 2.0],
-    ...         "readings": [{"reading": {}, "value": 1.4, "band": None}]})
-    {'reproduced': 1.5, 'band': [1.0, 2.0], 'readings': [[1.4, None]]}
+    >>> from types import SimpleNamespace
+    >>> ev = SimpleNamespace(
+    ...     as_json=lambda: {"reproduced": 1.5, "band": [1.0, 2.0],
+    ...                      "readings": [{"reading": {}, "value": 1.4, "band": None}]},
+    ...     sensitivity=(("P.m.x", ((0.5, 1.0), (2.0, 2.0))),), oracle_value=None)
+    >>> values(ev)["readings"], values(ev)["sensitivity"]
+    ([[1.4, None]], [['P.m.x', [[0.5, 1.0], [2.0, 2.0]]]])
     """
+    from navcore.ledger.core import jsonable
+
+    record = evaluation.as_json()
     return {
         "reproduced": record["reproduced"],
         "band": record["band"],
         "readings": [[r["value"], r["band"]] for r in record["readings"]],
+        "sensitivity": [
+            [name, [[jsonable(p), jsonable(v)] for p, v in row]] for name, row in evaluation.sensitivity
+        ],
+        "oracle": jsonable(evaluation.oracle_value),
     }
 
 
@@ -116,15 +129,31 @@ def differences(recorded: dict[str, Any], now: dict[str, Any], rtol: float = RTO
 
     Examples
     --------
-    >>> differences({"reproduced": 2.0, "band": None, "readings": []},
-    ...             {"reproduced": 3.0, "band": None, "readings": []})
-    ['reproduced: 2.0 -> 3.0']
+    >>> differences({"reproduced": 2.0, "band": None, "sensitivity": [["x", [[1, 2.0]]]]},
+    ...             {"reproduced": 3.0, "band": None, "sensitivity": [["x", [[1, 2.5]]]]})
+    ['reproduced: 2.0 -> 3.0', 'sensitivity to x: [[1, 2.0]] -> [[1, 2.5]]']
     """
-    return [
-        f"{field}: {recorded.get(field)!r} -> {now.get(field)!r}"
-        for field in FIELDS
-        if not same(recorded.get(field), now.get(field), rtol)
-    ]
+    out = []
+    for field in FIELDS:
+        was, is_ = recorded.get(field), now.get(field)
+        if same(was, is_, rtol):
+            continue
+        if field == "sensitivity" and isinstance(was, list) and isinstance(is_, list):
+            old_rows, new_rows = dict(map(tuple, was)), dict(map(tuple, is_))
+            for name in sorted(set(old_rows) | set(new_rows)):
+                if not same(old_rows.get(name), new_rows.get(name), rtol):
+                    out.append(
+                        f"sensitivity to {name}: {_short(old_rows.get(name))} -> {_short(new_rows.get(name))}"
+                    )
+        else:
+            out.append(f"{field}: {_short(was)} -> {_short(is_)}")
+    return out
+
+
+def _short(value: Any, limit: int = 300) -> str:
+    """``repr`` of a value, cut to ``limit`` characters."""
+    text = repr(value)
+    return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
 def load(path: Path = RECORD) -> dict[str, dict[str, Any]]:
@@ -132,42 +161,29 @@ def load(path: Path = RECORD) -> dict[str, dict[str, Any]]:
     return json.loads(path.read_text())["claims"]
 
 
-def write(export: dict[str, Any], path: Path = RECORD) -> int:
-    """Write the record from a ledger JSON export; returns the number of claims."""
-    claims = {c["id"]: values(c) for c in sorted(export["claims"], key=lambda c: c["id"])}
-    doc = {
-        "about": (
-            "What each claim's evaluation reproduced (tools/claim_values.py): the claim tests "
-            "compare every evaluation with it, to a relative 1e-6. Written with "
-            "'python tools/claim_values.py --update'; its diff shows every number a change moved."
-        ),
-        "claims": claims,
-    }
-    # one claim a line, so that the diff of a change names each claim whose numbers it moved
-    lines = [f" {json.dumps(cid)}: {json.dumps(v)}" for cid, v in claims.items()]
-    path.write_text(
-        "{\n"
-        + f' "about": {json.dumps(doc["about"])},\n'
-        + ' "claims": {\n'
-        + ",\n".join(" " + line for line in lines)
-        + "\n }\n}\n"
+def write(records: dict[str, dict[str, Any]], path: Path = RECORD) -> int:
+    """Write the record (claim id -> :func:`values`), one claim a line; returns the number of claims."""
+    about = (
+        "What each claim's evaluation reproduced (tools/claim_values.py): the claim tests "
+        "compare every evaluation with it, to a relative 1e-6. Written with "
+        "'python tools/claim_values.py --update'; its diff shows every number a change moved."
     )
-    return len(claims)
+    # one claim a line, so that the diff of a change names each claim whose numbers it moved
+    lines = [f"  {json.dumps(cid)}: {json.dumps(records[cid])}" for cid in sorted(records)]
+    path.write_text(
+        "{\n" + f' "about": {json.dumps(about)},\n' + ' "claims": {\n' + ",\n".join(lines) + "\n }\n}\n"
+    )
+    return len(records)
 
 
 def main(argv: list[str]) -> int:
-    if not argv or argv[0] != "--update" or len(argv) > 2:
-        print(__doc__.split("Usage::")[1].strip().splitlines()[0], file=sys.stderr)
+    if argv != ["--update"]:
+        print("usage: python tools/claim_values.py --update", file=sys.stderr)
         return 2
-    if len(argv) == 2:
-        export = json.loads(Path(argv[1]).read_text())
-    else:
-        with tempfile.TemporaryDirectory() as tmp:
-            out = Path(tmp) / "ledger.json"
-            cmd = [sys.executable, "-m", "navcore", "ledger", "--json-out", str(out)]
-            subprocess.run(cmd, check=False, stdout=subprocess.DEVNULL)
-            export = json.loads(out.read_text())
-    n = write(export)
+    from navcore.ledger import registry
+
+    evs = registry.evaluations(n_jobs=-1)
+    n = write({ev.claim.id: values(ev) for ev in evs})
     print(f"recorded the values of {n} claims in {RECORD.relative_to(ROOT)}")
     return 0
 
