@@ -10,6 +10,7 @@ hand-written ``counts`` in place of the registry's, so no claim of a paper is ev
 
 from __future__ import annotations
 
+import dataclasses
 from types import SimpleNamespace
 
 import pytest
@@ -1098,3 +1099,24 @@ def test_exports_default_to_this_checkouts_provenance():
     assert csv_export([e]).splitlines()[0].endswith(",".join(build_provenance().flat()))
     # the header is the first row's keys: two rows give one header
     assert csv_export([e, e]).count("id,locator") == 1
+
+
+def test_locator_words_break_at_syllables_and_stay_searchable():
+    """The interactive ledger's locator column is narrower than "Appendix" at 1400 px: a long
+    locator word carries soft hyphens at its syllables (a browser breaks it there, with a hyphen,
+    instead of at the column's edge), and the table's search ignores them. Oracle: the
+    hyphenations written out by hand; every locator of the registry comes back unchanged once the
+    soft hyphens are removed."""
+    from navcore import ledger
+    from navcore.ledger.render import InteractiveLedger, soft_hyphens
+
+    assert soft_hyphens("Appendix E, (E.1)") == "Ap&shy;pen&shy;dix E, (E.1)"
+    assert soft_hyphens("Sec. 3.8, approximation") == "Sec. 3.8, ap&shy;prox&shy;i&shy;ma&shy;tion"
+    assert soft_hyphens("Sec. II, after Eq. (6)") == "Sec. II, after Eq. (6)"
+    assert soft_hyphens("Table 2.7, residual") == "Table 2.7, resid&shy;ual"
+    for c in ledger.claims():
+        assert soft_hyphens(c.locator).replace("&shy;", "") == c.locator
+    claim = dataclasses.replace(EVALS[0].claim, locator="Appendix E")
+    page = InteractiveLedger([evaluate(claim)])._repr_html_()
+    assert '<td class="ledger-col-locator" data-label="Locator">Ap&shy;pen&shy;dix E</td>' in page
+    assert 'tr.textContent.replace(/\\u00ad/g, "").toLowerCase().indexOf(q)' in page

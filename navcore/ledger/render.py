@@ -1220,6 +1220,41 @@ def _printed_text(e: Evaluation) -> str:
     return _plain_with_unit(rel + format_value(c.published), c.unit)
 
 
+#: Where the long words of the papers' locators may break, as a dictionary hyphenates them: the
+#: interactive ledger's locator column is narrower than "Appendix" at 1400 px, and a word broken
+#: at the column's edge ("Appendi" / "x") reads worse than one broken at a syllable with a hyphen.
+_LOCATOR_SYLLABLES = {
+    word.replace("-", ""): word
+    for word in (
+        "Ap-pen-dix", "dis-cus-sion", "ap-prox-i-ma-tion", "ac-cel-er-a-tion", "sen-si-tiv-i-ty",
+        "co-vari-ance", "cor-ol-lary", "as-ser-tion", "ac-qui-si-tion", "in-er-tial", "resid-ual",
+        "equa-tion", "com-ment", "The-o-rem", "cap-tion", "para-graph", "con-clu-sion",
+        "In-tro-duc-tion", "ab-stract", "Ab-stract", "def-i-ni-tion", "foot-note",
+    )
+}  # fmt: skip
+
+
+def soft_hyphens(text: str) -> str:
+    """``text`` with a soft hyphen (``&shy;``) at each syllable break of the long locator words
+    the papers use (:data:`_LOCATOR_SYLLABLES`); a browser breaks such a word there, with a
+    hyphen, only where it does not fit its column. Other words are left as they are.
+
+    Examples
+    --------
+    >>> soft_hyphens("Appendix E, (E.1)")
+    'Ap&shy;pen&shy;dix E, (E.1)'
+    >>> soft_hyphens("Sec. 2.5 (acquisition)")
+    'Sec. 2.5 (ac&shy;qui&shy;si&shy;tion)'
+    >>> soft_hyphens("Eq. (3)")
+    'Eq. (3)'
+    """
+    return re.sub(
+        r"[A-Za-z]{7,}",
+        lambda m: _LOCATOR_SYLLABLES.get(m.group(0), m.group(0)).replace("-", "&shy;"),
+        text,
+    )
+
+
 #: A formula longer than this many characters is set in a box scaled to its table column
 #: when wider than it (:func:`fit_math`); a shorter one as inline math.
 _FIT_MATH_CHARS = 24
@@ -2538,7 +2573,8 @@ _LEDGER_JS = r"""
         return rows.filter(function (tr) {
           var rec = data[+tr.dataset.index];
           for (var k in want) if (String(rec[k]) !== want[k]) return false;
-          return !q || tr.textContent.toLowerCase().indexOf(q) >= 0;
+          // the soft hyphens of long locator words (U+00AD) are not part of the text searched
+          return !q || tr.textContent.replace(/\u00ad/g, "").toLowerCase().indexOf(q) >= 0;
         });
       }
       function update() {
@@ -2758,7 +2794,7 @@ class InteractiveLedger:
                 "id": claim,
                 "paper": html.escape(str(rec.get("paper", ""))),
                 "kind": html.escape(str(rec.get("kind") or "")),
-                "locator": html.escape(r["locator"]),
+                "locator": soft_hyphens(html.escape(r["locator"])),
                 # a long formula wraps in the narrow column, in a box of its own
                 "quantity": html_text(r["quantity"], wide=_FIT_MATH_CHARS)
                 + f"<details><summary>note</summary>{note}</details>",
