@@ -84,58 +84,6 @@ def test_the_record_holds_exactly_the_ledger_claims() -> None:
     assert sorted(RECORDED) == sorted(CLAIM_IDS)
 
 
-def test_the_record_comparison_catches_each_kind_of_move() -> None:
-    """The comparison the claim tests use. Oracle: each case decided by hand (a move of 1e-5 is
-    seen, 1e-9 is round-off; a statement that flips, a band end, a reading's value, a reading
-    that appears, one band run of one input, an oracle's value; zero against round-off)."""
-    cv = _claim_values()
-    base = {
-        "reproduced": 2.0, "band": [1.0, 3.0], "readings": [[2.0, [1.0, 3.0]]],
-        "sensitivity": [["P.m.x", [[0.5, 1.0], [2.0, 3.0]]], ["P.m.y", [["a", 2.0]]]], "oracle": None,
-    }  # fmt: skip
-    assert cv.differences(base, base) == []
-    assert cv.differences(base, {**base, "reproduced": 2.0 * (1 + 1e-9)}) == []
-    assert cv.differences(base, {**base, "reproduced": 2.0 * (1 + 1e-5)}) == [
-        f"reproduced: 2.0 -> {2.0 * (1 + 1e-5)!r}"
-    ]
-    assert cv.differences(base, {**base, "band": [1.0, 3.1]}) == ["band: [1.0, 3.0] -> [1.0, 3.1]"]
-    assert cv.differences(base, {**base, "band": None}) == ["band: [1.0, 3.0] -> None"]
-    assert len(cv.differences(base, {**base, "readings": [[2.5, [1.0, 3.0]]]})) == 1
-    assert len(cv.differences(base, {**base, "readings": [*base["readings"], [2.0, None]]})) == 1
-    moved = {**base, "sensitivity": [["P.m.x", [[0.5, 1.0], [2.0, 3.5]]], ["P.m.y", [["a", 2.0]]]]}
-    assert cv.differences(base, moved) == [
-        "sensitivity to P.m.x: [[0.5, 1.0], [2.0, 3.0]] -> [[0.5, 1.0], [2.0, 3.5]]"
-    ]
-    other_point = {**base, "sensitivity": [["P.m.x", [[0.5, 1.0], [2.0, 3.0]]], ["P.m.y", [["b", 2.0]]]]}
-    assert cv.differences(base, other_point) == ["sensitivity to P.m.y: [['a', 2.0]] -> [['b', 2.0]]"]
-    assert cv.differences({**base, "oracle": 4.0}, {**base, "oracle": 4.1}) == ["oracle: 4.0 -> 4.1"]
-    statement = {**base, "reproduced": True, "band": [False, True]}
-    assert cv.differences(statement, {**statement, "reproduced": False}) == ["reproduced: True -> False"]
-    assert cv.differences(statement, {**statement, "reproduced": 1.0}) != []  # a number is no truth value
-    assert cv.differences({**base, "reproduced": 0.0}, {**base, "reproduced": 1e-15}) == []
-    assert cv.differences({**base, "reproduced": "Infinity"}, {**base, "reproduced": 1e308}) != []
-
-
-def test_the_record_is_written_from_evaluations(tmp_path) -> None:
-    """The record written from two evaluations reads back as their values, one claim a line in
-    the order of their ids. Oracle: the two claims' values written out by hand."""
-    cv = _claim_values()
-    a = ledger.Claim(
-        id="WF-test-a", paper="WF", locator="Eq. (1)", quantity="q", published=1.5, unit="m",
-        compute=lambda: 1.5, tolerance=ledger.EXACT, expected_status="reproduced", note="a synthetic claim",
-    )  # fmt: skip
-    b = dataclasses.replace(a, id="WF-test-b", compute=lambda: 2.0, published=2.0)
-    path = tmp_path / "values.json"
-    assert cv.write({c.id: cv.values(ledger.evaluate(c)) for c in (b, a)}, path) == 2
-    plain = {"band": None, "readings": [], "sensitivity": [], "oracle": None}
-    assert cv.load(path) == {
-        "WF-test-a": {"reproduced": 1.5, **plain},
-        "WF-test-b": {"reproduced": 2.0, **plain},
-    }
-    lines = path.read_text().splitlines()
-    assert [line.split(":")[0].strip() for line in lines[3:5]] == ['"WF-test-a"', '"WF-test-b"']
-
-
 def _tolerance_text(result: ledger.Evaluation) -> str:
     """The tolerance in short, as the ledger resolved it (a callable tolerance included).
 

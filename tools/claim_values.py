@@ -156,13 +156,14 @@ def _short(value: Any, limit: int = 300) -> str:
     return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
-def load(path: Path = RECORD) -> dict[str, dict[str, Any]]:
-    """The record: claim id -> :func:`values`."""
-    return json.loads(path.read_text())["claims"]
+def load(path: Path | None = None) -> dict[str, dict[str, Any]]:
+    """The record (default :data:`RECORD`, read when called): claim id -> :func:`values`."""
+    return json.loads((RECORD if path is None else path).read_text())["claims"]
 
 
-def write(records: dict[str, dict[str, Any]], path: Path = RECORD) -> int:
-    """Write the record (claim id -> :func:`values`), one claim a line; returns the number of claims."""
+def write(records: dict[str, dict[str, Any]], path: Path) -> int:
+    """Write the record (claim id -> :func:`values`) to ``path``, one claim a line; returns the
+    number of claims."""
     about = (
         "What each claim's evaluation reproduced (tools/claim_values.py): the claim tests "
         "compare every evaluation with it, to a relative 1e-6. Written with "
@@ -183,7 +184,7 @@ def main(argv: list[str]) -> int:
     from navcore.ledger import registry
 
     evs = registry.evaluations(n_jobs=-1)
-    n = write({ev.claim.id: values(ev) for ev in evs})
+    n = write({ev.claim.id: values(ev) for ev in evs}, RECORD)
     print(f"recorded the values of {n} claims in {RECORD.relative_to(ROOT)}")
     return 0
 
