@@ -40,6 +40,9 @@ def test_the_record_comparison_catches_each_kind_of_move() -> None:
     other_point = {**base, "sensitivity": [["P.m.x", [[0.5, 1.0], [2.0, 3.0]]], ["P.m.y", [["b", 2.0]]]]}
     assert cv.differences(base, other_point) == ["sensitivity to P.m.y: [['a', 2.0]] -> [['b', 2.0]]"]
     assert cv.differences({**base, "oracle": 4.0}, {**base, "oracle": 4.1}) == ["oracle: 4.0 -> 4.1"]
+    assert cv.differences({**base, "unit": "ppm"}, {**base, "unit": "PPM"}) == ["unit: 'ppm' -> 'PPM'"]
+    tol = {"rel": 0.0, "abs": 0.05, "reason": "printed", "policy": "printed-digits"}
+    assert cv.differences({**base, "tolerance": tol}, {**base, "tolerance": {**tol, "abs": 0.5}}) != []
     statement = {**base, "reproduced": True, "band": [False, True]}
     assert cv.differences(statement, {**statement, "reproduced": False}) == ["reproduced: True -> False"]
     assert cv.differences(statement, {**statement, "reproduced": 1.0}) != []  # a number is no truth value
@@ -58,10 +61,13 @@ def test_the_record_is_written_from_evaluations(tmp_path) -> None:
     b = dataclasses.replace(a, id="WF-test-b", compute=lambda: 2.0, published=2.0)
     path = tmp_path / "values.json"
     assert cv.write({c.id: cv.values(ledger.evaluate(c)) for c in (b, a)}, path) == 2
-    plain = {"band": None, "readings": [], "sensitivity": [], "oracle": None}
+    exact = {"abs": 0.0, "rel": None, "reason": "exact: an integer count or a logical statement",
+             "policy": "exact", "loose_abs": None}  # fmt: skip
+    plain = {"band": None, "readings": [], "sensitivity": [], "oracle": None, "unit": "m", "tolerance": exact,
+             "locator": "Eq. (1)", "kind": "reproduction"}  # fmt: skip
     assert cv.load(path) == {
-        "WF-test-a": {"reproduced": 1.5, **plain},
-        "WF-test-b": {"reproduced": 2.0, **plain},
+        "WF-test-a": {"reproduced": 1.5, "published": 1.5, **plain},
+        "WF-test-b": {"reproduced": 2.0, "published": 2.0, **plain},
     }
     lines = path.read_text().splitlines()
     assert [line.split(":")[0].strip() for line in lines[3:5]] == ['"WF-test-a"', '"WF-test-b"']

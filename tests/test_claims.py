@@ -64,8 +64,9 @@ RECORDED = _claim_values().load()
     "claim_id", [pytest.param(i, marks=pytest.mark.xdist_group(_module_group(i))) for i in CLAIM_IDS]
 )
 def test_claim_reproduces_the_recorded_values(claim_id: str) -> None:
-    """The claim's value, band, readings, one-at-a-time band runs and oracle value are those
-    recorded (to a relative 1e-6): a change
+    """The claim's value, band, readings, one-at-a-time band runs and oracle value, and the
+    published value, unit, tolerance, locator and kind it declares, are those recorded (numbers
+    to a relative 1e-6): a change
     that moves a reproduced number, whether or not its verdict moves, fails here until the record
     is written again, and the record's diff shows it in review. A regression check: the record
     says that a number moved, the claim's own check says whether it still agrees."""

@@ -4,7 +4,8 @@
 reproduced: the value at the nominal inputs, the band over the assumed inputs' ranges, the value
 and band under each reading of the conventions it reads, the value of each one-at-a-time run of
 the band (each assumed input at each of its band points), and the independent oracle's value
-of a discrepant claim. The claim tests compare each
+of a discrepant claim; and what the claim declares that a verdict reads or a reader sees beside
+it: the published value, its unit, the tolerance, the locator and the kind. The claim tests compare each
 claim's evaluation with it (:func:`differences`), so a change to a model, a scenario or an input
 that moves any reproduced number fails a test until the record is written again, and the
 record's diff shows the reviewer every number that moved, whether or not its verdict did.
@@ -44,7 +45,10 @@ RTOL = 1e-6
 ATOL = 1e-12
 
 #: The fields recorded of each claim.
-FIELDS = ("reproduced", "band", "readings", "sensitivity", "oracle")
+FIELDS = (
+    "reproduced", "band", "readings", "sensitivity", "oracle",
+    "published", "unit", "tolerance", "locator", "kind",
+)  # fmt: skip
 
 
 def values(evaluation: Any) -> dict[str, Any]:
@@ -61,14 +65,17 @@ def values(evaluation: Any) -> dict[str, Any]:
     -------
     dict
         ``reproduced``, ``band``, ``readings`` (a list of ``[value, band]``), ``sensitivity``
-        (a list of ``[name, [[point, value], ...]]``) and ``oracle``.
+        (a list of ``[name, [[point, value], ...]]``), ``oracle``, and the claim's ``published``,
+        ``unit``, ``tolerance`` (as the JSON export writes it), ``locator`` and ``kind``.
 
     Examples
     --------
     >>> from types import SimpleNamespace
     >>> ev = SimpleNamespace(
     ...     as_json=lambda: {"reproduced": 1.5, "band": [1.0, 2.0],
-    ...                      "readings": [{"reading": {}, "value": 1.4, "band": None}]},
+    ...                      "readings": [{"reading": {}, "value": 1.4, "band": None}],
+    ...                      "published": 1.5, "unit": "m", "tolerance": None, "locator": "Eq. (1)",
+    ...                      "kind": "reproduction"},
     ...     sensitivity=(("P.m.x", ((0.5, 1.0), (2.0, 2.0))),), oracle_value=None)
     >>> values(ev)["readings"], values(ev)["sensitivity"]
     ([[1.4, None]], [['P.m.x', [[0.5, 1.0], [2.0, 2.0]]]])
@@ -84,6 +91,7 @@ def values(evaluation: Any) -> dict[str, Any]:
             [name, [[jsonable(p), jsonable(v)] for p, v in row]] for name, row in evaluation.sensitivity
         ],
         "oracle": jsonable(evaluation.oracle_value),
+        **{k: record[k] for k in ("published", "unit", "tolerance", "locator", "kind")},
     }
 
 
