@@ -5,10 +5,12 @@ reproduced: the value at the nominal inputs, the band over the assumed inputs' r
 and band under each reading of the conventions it reads, the value of each one-at-a-time run of
 the band (each assumed input at each of its band points), and the independent oracle's value
 of a discrepant claim; and what the claim declares that a verdict reads or a reader sees beside
-it: the published value, its unit, the tolerance, the locator and the kind. The claim tests compare each
-claim's evaluation with it (:func:`differences`), so a change to a model, a scenario or an input
-that moves any reproduced number fails a test until the record is written again, and the
-record's diff shows the reviewer every number that moved, whether or not its verdict did.
+it: the published value, its unit, the tolerance, the locator, the kind, the verdict it expects
+and whether it computes at all (:func:`declared`, which a test reads without evaluating). The
+claim tests compare each claim's evaluation with it (:func:`differences`), so a change to a
+model, a scenario or an input that moves any reproduced number fails a test until the record is
+written again, and the record's diff shows the reviewer every number that moved, whether or not
+its verdict did.
 
 The record is a regression check, not an oracle: it says that a number changed, not which of
 the two is right. The claim's own check (against the published value, within the tolerance)
@@ -47,8 +49,49 @@ ATOL = 1e-12
 #: The fields recorded of each claim.
 FIELDS = (
     "reproduced", "band", "readings", "sensitivity", "oracle",
-    "published", "unit", "tolerance", "locator", "kind",
+    "published", "unit", "tolerance", "locator", "kind", "expected_status", "computes",
 )  # fmt: skip
+
+#: The fields a claim declares (:func:`declared`), read without evaluating it.
+DECLARED = ("published", "unit", "tolerance", "locator", "kind", "expected_status", "computes")
+
+
+def declared(claim: Any) -> dict[str, Any]:
+    """What a claim declares beside its computation, as the record keeps it: its published
+    value, unit, resolved tolerance (as the JSON export writes it), locator, kind, expected
+    verdict, and whether it has a computation.
+
+    Parameters
+    ----------
+    claim : navcore.ledger.Claim
+        The claim (not evaluated: only its tolerance is resolved, which reads no input).
+
+    Returns
+    -------
+    dict
+        The fields of :data:`DECLARED`.
+
+    Examples
+    --------
+    >>> from navcore import ledger
+    >>> c = ledger.Claim(id="WF-doc-x", paper="WF", locator="Eq. (1)", quantity="q", published=2,
+    ...                  unit="m", compute=None, tolerance=ledger.EXACT,
+    ...                  expected_status="not-reproducible", note="n")
+    >>> d = declared(c)
+    >>> d["published"], d["unit"], d["tolerance"]["policy"], d["computes"]
+    (2.0, 'm', 'exact', False)
+    """
+    from navcore.ledger.core import resolve_tolerance
+
+    return {
+        "published": claim.published if isinstance(claim.published, bool) else float(claim.published),
+        "unit": claim.unit,
+        "tolerance": resolve_tolerance(claim).as_dict(),
+        "locator": claim.locator,
+        "kind": claim.kind,
+        "expected_status": claim.expected_status,
+        "computes": claim.compute is not None,
+    }
 
 
 def values(evaluation: Any) -> dict[str, Any]:
@@ -65,17 +108,20 @@ def values(evaluation: Any) -> dict[str, Any]:
     -------
     dict
         ``reproduced``, ``band``, ``readings`` (a list of ``[value, band]``), ``sensitivity``
-        (a list of ``[name, [[point, value], ...]]``), ``oracle``, and the claim's ``published``,
-        ``unit``, ``tolerance`` (as the JSON export writes it), ``locator`` and ``kind``.
+        (a list of ``[name, [[point, value], ...]]``), ``oracle``, and what the claim declares
+        (:func:`declared`).
 
     Examples
     --------
     >>> from types import SimpleNamespace
+    >>> from navcore import ledger
+    >>> claim = ledger.Claim(id="WF-doc-x", paper="WF", locator="Eq. (1)", quantity="q",
+    ...                      published=1.5, unit="m", compute=lambda: 1.5, tolerance=ledger.EXACT,
+    ...                      expected_status="reproduced", note="n")
     >>> ev = SimpleNamespace(
+    ...     claim=claim,
     ...     as_json=lambda: {"reproduced": 1.5, "band": [1.0, 2.0],
-    ...                      "readings": [{"reading": {}, "value": 1.4, "band": None}],
-    ...                      "published": 1.5, "unit": "m", "tolerance": None, "locator": "Eq. (1)",
-    ...                      "kind": "reproduction"},
+    ...                      "readings": [{"reading": {}, "value": 1.4, "band": None}]},
     ...     sensitivity=(("P.m.x", ((0.5, 1.0), (2.0, 2.0))),), oracle_value=None)
     >>> values(ev)["readings"], values(ev)["sensitivity"]
     ([[1.4, None]], [['P.m.x', [[0.5, 1.0], [2.0, 2.0]]]])
@@ -91,7 +137,7 @@ def values(evaluation: Any) -> dict[str, Any]:
             [name, [[jsonable(p), jsonable(v)] for p, v in row]] for name, row in evaluation.sensitivity
         ],
         "oracle": jsonable(evaluation.oracle_value),
-        **{k: record[k] for k in ("published", "unit", "tolerance", "locator", "kind")},
+        **declared(evaluation.claim),
     }
 
 
