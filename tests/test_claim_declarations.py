@@ -1,8 +1,9 @@
 """What every claim declares beside its computation is what the record holds, read without
-evaluating a claim (a second): published value, unit, tolerance, locator, kind, expected verdict,
-and whether it computes. The paper modules build their claims when imported, so this is the
-test that their claim helpers' mutants meet first (``tools/mutation.py``'s papers package runs
-it first: mutmut gives the code that runs at import to the first test it runs)."""
+evaluating a claim (a second): published value, unit, tolerance, locator, kind, expected
+verdict, whether it computes, and the page that derives it. The paper modules build their claims
+when imported, so this is the test that their claim helpers' mutants meet first
+(``tools/mutation.py``'s papers package runs it first: mutmut gives the code that runs at import
+to the first test it runs)."""
 
 from __future__ import annotations
 
@@ -48,6 +49,7 @@ def test_a_declared_field_that_moves_is_seen(field: str, monkeypatch) -> None:
         "kind": {"kind": "cross-check"},
         "expected_status": {"expected_status": "consistent"},
         "computes": {"compute": None, "expected_status": "not-reproducible"},
+        "discussed_in": {"discussed_in": "wf/01-emitter-location"},
     }[field]
     other = dataclasses.replace(base, **change)
     moved = claim_values.differences(claim_values.declared(base), claim_values.declared(other))

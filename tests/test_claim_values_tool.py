@@ -65,7 +65,7 @@ def test_the_record_is_written_from_evaluations(tmp_path) -> None:
              "policy": "exact", "loose_abs": None}  # fmt: skip
     plain = {"band": None, "readings": [], "sensitivity": [], "oracle": None, "unit": "m", "tolerance": exact,
              "locator": "Eq. (1)", "kind": "reproduction", "expected_status": "reproduced",
-             "computes": True}  # fmt: skip
+             "computes": True, "discussed_in": ""}  # fmt: skip
     assert cv.load(path) == {
         "WF-test-a": {"reproduced": 1.5, "published": 1.5, **plain},
         "WF-test-b": {"reproduced": 2.0, "published": 2.0, **plain},

@@ -3,14 +3,14 @@
 ``tests/claim_values.json`` holds, for every claim of the ledger, what its evaluation
 reproduced: the value at the nominal inputs, the band over the assumed inputs' ranges, the value
 and band under each reading of the conventions it reads, the value of each one-at-a-time run of
-the band (each assumed input at each of its band points), and the independent oracle's value
-of a discrepant claim; and what the claim declares that a verdict reads or a reader sees beside
-it: the published value, its unit, the tolerance, the locator, the kind, the verdict it expects
-and whether it computes at all (:func:`declared`, which a test reads without evaluating). The
-claim tests compare each claim's evaluation with it (:func:`differences`), so a change to a
-model, a scenario or an input that moves any reproduced number fails a test until the record is
-written again, and the record's diff shows the reviewer every number that moved, whether or not
-its verdict did.
+the band (each assumed input at each of its band points), and the independent oracle's value of
+a discrepant claim; and what the claim declares that a verdict reads or a reader sees beside it:
+the published value, its unit, the tolerance, the locator, the kind, the verdict it expects,
+whether it computes at all and the page that derives it (:func:`declared`, which a test reads
+without evaluating). The claim tests compare each claim's evaluation with it
+(:func:`differences`), so a change to a model, a scenario or an input that moves any reproduced
+number fails a test until the record is written again, and the record's diff shows the reviewer
+every number that moved, whether or not its verdict did.
 
 The record is a regression check, not an oracle: it says that a number changed, not which of
 the two is right. The claim's own check (against the published value, within the tolerance)
@@ -49,17 +49,26 @@ ATOL = 1e-12
 #: The fields recorded of each claim.
 FIELDS = (
     "reproduced", "band", "readings", "sensitivity", "oracle",
-    "published", "unit", "tolerance", "locator", "kind", "expected_status", "computes",
+    "published", "unit", "tolerance", "locator", "kind", "expected_status", "computes", "discussed_in",
 )  # fmt: skip
 
 #: The fields a claim declares (:func:`declared`), read without evaluating it.
-DECLARED = ("published", "unit", "tolerance", "locator", "kind", "expected_status", "computes")
+DECLARED = (
+    "published",
+    "unit",
+    "tolerance",
+    "locator",
+    "kind",
+    "expected_status",
+    "computes",
+    "discussed_in",
+)
 
 
 def declared(claim: Any) -> dict[str, Any]:
     """What a claim declares beside its computation, as the record keeps it: its published
     value, unit, resolved tolerance (as the JSON export writes it), locator, kind, expected
-    verdict, and whether it has a computation.
+    verdict, whether it has a computation, and the page that derives it (the ledger links it).
 
     Parameters
     ----------
@@ -91,6 +100,7 @@ def declared(claim: Any) -> dict[str, Any]:
         "kind": claim.kind,
         "expected_status": claim.expected_status,
         "computes": claim.compute is not None,
+        "discussed_in": claim.discussed_in,
     }
 
 
