@@ -10,10 +10,15 @@ with its note as the reason.
 from __future__ import annotations
 
 import dataclasses
+import sys
+from pathlib import Path
 
 import pytest
 
 from navcore import ledger
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
+import claim_values
 
 CLAIM_IDS = [c.id for c in ledger.claims()]
 
@@ -44,20 +49,7 @@ def test_claim(claim_id: str) -> None:
     )
 
 
-def _claim_values():
-    """The record of what every claim reproduced (``tests/claim_values.json``) and its tool."""
-    import sys
-    from pathlib import Path
-
-    tools = str(Path(__file__).resolve().parents[1] / "tools")
-    if tools not in sys.path:
-        sys.path.insert(0, tools)
-    import claim_values
-
-    return claim_values
-
-
-RECORDED = _claim_values().load()
+RECORDED = claim_values.load()
 
 
 @pytest.mark.parametrize(
@@ -70,7 +62,7 @@ def test_claim_reproduces_the_recorded_values(claim_id: str) -> None:
     that moves a reproduced number, whether or not its verdict moves, fails here until the record
     is written again, and the record's diff shows it in review. A regression check: the record
     says that a number moved, the claim's own check says whether it still agrees."""
-    cv = _claim_values()
+    cv = claim_values
     assert claim_id in RECORDED, f"{claim_id} is not recorded: python tools/claim_values.py --update"
     now = cv.values(ledger.evaluate_claim(claim_id))
     moved = cv.differences(RECORDED[claim_id], now)

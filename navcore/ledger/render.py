@@ -1220,24 +1220,12 @@ def _printed_text(e: Evaluation) -> str:
     return _plain_with_unit(rel + format_value(c.published), c.unit)
 
 
-#: Where the long words of the papers' locators may break, as a dictionary hyphenates them: the
-#: interactive ledger's locator column is narrower than "Appendix" at 1400 px, and a word broken
-#: at the column's edge ("Appendi" / "x") reads worse than one broken at a syllable with a hyphen.
-_LOCATOR_SYLLABLES = {
-    word.replace("-", ""): word
-    for word in (
-        "Ap-pen-dix", "dis-cus-sion", "ap-prox-i-ma-tion", "ac-cel-er-a-tion", "sen-si-tiv-i-ty",
-        "co-vari-ance", "cor-ol-lary", "as-ser-tion", "ac-qui-si-tion", "in-er-tial", "resid-ual",
-        "equa-tion", "com-ment", "The-o-rem", "cap-tion", "para-graph", "con-clu-sion",
-        "In-tro-duc-tion", "ab-stract", "Ab-stract", "def-i-ni-tion", "foot-note",
-    )
-}  # fmt: skip
-
-
 def soft_hyphens(text: str) -> str:
-    """``text`` with a soft hyphen (``&shy;``) at each syllable break of the long locator words
-    the papers use (:data:`_LOCATOR_SYLLABLES`); a browser breaks such a word there, with a
-    hyphen, only where it does not fit its column. Other words are left as they are.
+    """``text`` with a soft hyphen (``&shy;``) at each syllable break of the long words the
+    ledger's narrow columns hold (:data:`_SOFT_HYPHENS`: verdicts, kinds, and the papers' locator
+    words, "Appendix" among them, wider than the interactive ledger's locator column at 1400 px);
+    a browser breaks such a word there, with a hyphen, only where it does not fit its column,
+    instead of at the column's edge. Other words are left as they are.
 
     Examples
     --------
@@ -1248,11 +1236,7 @@ def soft_hyphens(text: str) -> str:
     >>> soft_hyphens("Eq. (3)")
     'Eq. (3)'
     """
-    return re.sub(
-        r"[A-Za-z]{7,}",
-        lambda m: _LOCATOR_SYLLABLES.get(m.group(0), m.group(0)).replace("-", "&shy;"),
-        text,
-    )
+    return re.sub(r"[A-Za-z]{7,}", lambda m: _SOFT_HYPHENS.get(m.group(0), m.group(0)), text)
 
 
 #: A formula longer than this many characters is set in a box scaled to its table column
@@ -2226,6 +2210,29 @@ _SOFT_HYPHENS = {
     "inconsistent": "incon&shy;sistent",
     "discrepant": "discrep&shy;ant",
     "reproducible": "repro&shy;ducible",
+    # the papers' locator words
+    "Appendix": "Ap&shy;pen&shy;dix",
+    "discussion": "dis&shy;cus&shy;sion",
+    "approximation": "ap&shy;prox&shy;i&shy;ma&shy;tion",
+    "acceleration": "ac&shy;cel&shy;er&shy;a&shy;tion",
+    "sensitivity": "sen&shy;si&shy;tiv&shy;i&shy;ty",
+    "covariance": "co&shy;vari&shy;ance",
+    "corollary": "cor&shy;ol&shy;lary",
+    "assertion": "as&shy;ser&shy;tion",
+    "acquisition": "ac&shy;qui&shy;si&shy;tion",
+    "inertial": "in&shy;er&shy;tial",
+    "residual": "resid&shy;ual",
+    "equation": "equa&shy;tion",
+    "comment": "com&shy;ment",
+    "Theorem": "The&shy;o&shy;rem",
+    "caption": "cap&shy;tion",
+    "paragraph": "para&shy;graph",
+    "conclusion": "con&shy;clu&shy;sion",
+    "Introduction": "In&shy;tro&shy;duc&shy;tion",
+    "abstract": "ab&shy;stract",
+    "Abstract": "Ab&shy;stract",
+    "definition": "def&shy;i&shy;ni&shy;tion",
+    "footnote": "foot&shy;note",
 }
 
 
