@@ -7,6 +7,7 @@ to the first test it runs)."""
 
 from __future__ import annotations
 
+import dataclasses
 import sys
 from pathlib import Path
 
@@ -32,11 +33,9 @@ def test_every_claim_declares_what_the_record_holds() -> None:
 
 
 @pytest.mark.parametrize("field", claim_values.DECLARED)
-def test_a_declared_field_that_moves_is_seen(field: str, monkeypatch) -> None:
+def test_a_declared_field_that_moves_is_seen(field: str) -> None:
     """A claim whose declaration changes in any one field fails the check above. Oracle: a
     synthetic claim declared twice, the second time with the field changed by hand."""
-    import dataclasses
-
     base = ledger.Claim(
         id="WF-test-declared", paper="WF", locator="Eq. (1)", quantity="q", published=1.5, unit="m",
         compute=lambda: 1.5, tolerance=ledger.EXACT, expected_status="reproduced", note="n",

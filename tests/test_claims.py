@@ -56,16 +56,15 @@ RECORDED = claim_values.load()
     "claim_id", [pytest.param(i, marks=pytest.mark.xdist_group(_module_group(i))) for i in CLAIM_IDS]
 )
 def test_claim_reproduces_the_recorded_values(claim_id: str) -> None:
-    """The claim's value, band, readings, one-at-a-time band runs and oracle value, and the
-    published value, unit, tolerance, locator and kind it declares, are those recorded (numbers
-    to a relative 1e-6): a change
-    that moves a reproduced number, whether or not its verdict moves, fails here until the record
-    is written again, and the record's diff shows it in review. A regression check: the record
-    says that a number moved, the claim's own check says whether it still agrees."""
-    cv = claim_values
+    """The claim's value, band, readings, one-at-a-time band runs and oracle value, and what it
+    declares (published value, unit, tolerance, locator, kind, expected verdict, computation,
+    page), are those recorded (numbers to a relative 1e-6): a change that moves a reproduced
+    number, whether or not its verdict moves, fails here until the record is written again, and
+    the record's diff shows it in review. A regression check: the record says that a number
+    moved, the claim's own check says whether it still agrees."""
     assert claim_id in RECORDED, f"{claim_id} is not recorded: python tools/claim_values.py --update"
-    now = cv.values(ledger.evaluate_claim(claim_id))
-    moved = cv.differences(RECORDED[claim_id], now)
+    now = claim_values.values(ledger.evaluate_claim(claim_id))
+    moved = claim_values.differences(RECORDED[claim_id], now)
     assert not moved, (
         f"{claim_id}: its reproduced numbers moved ({'; '.join(moved)}). If the change is meant, "
         "write the record again (python tools/claim_values.py --update) and review its diff"

@@ -46,23 +46,13 @@ RTOL = 1e-6
 #: and leaves round-off (the smallest non-zero value the ledger reproduces is about 1e-5).
 ATOL = 1e-12
 
-#: The fields recorded of each claim.
-FIELDS = (
-    "reproduced", "band", "readings", "sensitivity", "oracle",
+#: The fields a claim declares (:func:`declared`), read without evaluating it.
+DECLARED = (
     "published", "unit", "tolerance", "locator", "kind", "expected_status", "computes", "discussed_in",
 )  # fmt: skip
 
-#: The fields a claim declares (:func:`declared`), read without evaluating it.
-DECLARED = (
-    "published",
-    "unit",
-    "tolerance",
-    "locator",
-    "kind",
-    "expected_status",
-    "computes",
-    "discussed_in",
-)
+#: The fields recorded of each claim: what its evaluation reproduced, then what it declares.
+FIELDS = ("reproduced", "band", "readings", "sensitivity", "oracle", *DECLARED)
 
 
 def declared(claim: Any) -> dict[str, Any]:
