@@ -48,12 +48,15 @@ from __future__ import annotations
 import contextlib
 import contextvars
 import functools
+import hashlib
 import inspect
 import math
 import sys
 from collections.abc import Callable, Hashable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Literal, TypeVar
+
+import numpy as np
 
 from navcore._validate import ModelDomainError
 
@@ -742,11 +745,23 @@ def _same_reads(a: Reads, b: Reads) -> bool:
 
 
 def _hashable(obj: Any) -> Any:
+    """``obj`` itself if it can be hashed, else a key that equal contents share.
+
+    An array is keyed by its dtype, shape and a digest of its bytes (its repr elides the middle
+    of a large array, so two different arrays would share it); a list or tuple by its items'
+    keys; anything else by its repr.
+    """
     try:
         hash(obj)
         return obj
     except TypeError:
-        return repr(obj)
+        pass
+    if isinstance(obj, np.ndarray) and not obj.dtype.hasobject:
+        digest = hashlib.blake2b(np.ascontiguousarray(obj).tobytes(), digest_size=16).hexdigest()
+        return ("ndarray", obj.dtype.str, obj.shape, digest)
+    if isinstance(obj, (list, tuple)):
+        return (type(obj).__name__, tuple(_hashable(item) for item in obj))
+    return repr(obj)
 
 
 def input_cache(fn: F) -> F:
@@ -762,7 +777,8 @@ def input_cache(fn: F) -> F:
     Parameters
     ----------
     fn : callable
-        The function to memoise; unhashable arguments are keyed by their ``repr``.
+        The function to memoise; an unhashable argument is keyed by its contents (an array by
+        its dtype, shape and bytes, a list by its items), anything else by its ``repr``.
 
     Returns
     -------
@@ -802,8 +818,8 @@ def input_cache(fn: F) -> F:
     # by those inputs' values: a lookup costs one probe per distinct set of inputs read, not a
     # scan of up to 256 variants (a deterministic computation has at most one variant that
     # matches the current values: the one whose path it would take now). A value that cannot
-    # be hashed is indexed by its repr, which equal values need not share: the keys holding one
-    # are also scanned on a miss, as before.
+    # be hashed is indexed by a key of its contents (an array's bytes) or its repr, which equal
+    # values need not share (-0.0 and 0.0): the keys holding one are also scanned on a miss.
     index: dict[Any, dict[tuple[str, ...], dict[tuple[Any, ...], tuple[Reads, Any]]]] = {}
     scanned: set[Any] = set()
     signature = inspect.signature(fn)
