@@ -59,6 +59,12 @@ sys.path.insert(0, str(ROOT / "tools"))
 import build_book  # noqa: E402
 
 
+def _last_line(stderr: str) -> str:
+    """The last line of a failed run's error output (the exception), or a note that it wrote none."""
+    lines = stderr.strip().splitlines()
+    return lines[-1] if lines else "no error output"
+
+
 def clean_full_build(
     jobs: int | None, workdir: Path, source: Path | None = None, ledger_from: Path | None = None
 ) -> dict:
@@ -342,7 +348,7 @@ def library_benchmarks() -> tuple[list[str], bool]:
         us = f"navcore {navcore_s * 1e6:.1f}, checked {checked_s * 1e6:.1f} us"
         print(f"filter step: {us}, filterpy {filterpy_s * 1e6:.1f} us, ratio {ratio:.2f}|{checked_ratio:.2f}")
     else:
-        lines.append(f"| filter step benchmark | failed: {proc.stderr.strip().splitlines()[-1:]} |")
+        lines.append(f"| filter step benchmark | failed: {_last_line(proc.stderr)} |")
     proc = subprocess.run([sys.executable, "-c", MISSION_CODE], capture_output=True, text=True, cwd=ROOT)
     if proc.returncode == 0:
         seconds, minutes, systems = proc.stdout.split()
@@ -353,7 +359,7 @@ def library_benchmarks() -> tuple[list[str], bool]:
         print(f"covariance analysis: {float(minutes):.0f}-min mission in {float(seconds):.1f} s")
     else:
         ok = False
-        lines.append(f"| covariance-analysis mission | failed: {proc.stderr.strip().splitlines()[-1:]} |")
+        lines.append(f"| covariance-analysis mission | failed: {_last_line(proc.stderr)} |")
     more, more_ok = covariance_loop_ratio()
     return lines + more, ok and more_ok
 
@@ -363,8 +369,7 @@ def covariance_loop_ratio() -> tuple[list[str], bool]:
     code = COVARIANCE_LOOP_CODE
     proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
     if proc.returncode != 0:
-        failure = proc.stderr.strip().splitlines()[-1:]
-        return [f"| covariance engine against a numpy loop | failed: {failure} |"], False
+        return [f"| covariance engine against a numpy loop | failed: {_last_line(proc.stderr)} |"], False
     engine_s, plain_s = map(float, proc.stdout.split())
     ratio = engine_s / plain_s
     print(f"covariance engine: {engine_s:.3f} s, plain numpy loop {plain_s:.3f} s, ratio {ratio:.2f}")
@@ -396,7 +401,7 @@ def ledger_parallel_ratio() -> tuple[list[str], bool]:
             )
             seconds[jobs] = time.perf_counter() - start
             if proc.returncode != 0:
-                return [f"| ledger --jobs {jobs} | failed: {proc.stderr.strip().splitlines()[-1:]} |"], False
+                return [f"| ledger --jobs {jobs} | failed: {_last_line(proc.stderr)} |"], False
             outputs[jobs] = out.read_bytes()
         same = outputs["1"] == outputs["-1"]
     cores = os.cpu_count() or 1

@@ -1,0 +1,532 @@
+"""The mutation-testing driver (``tools/mutation.py``) run in-process, mutmut stood in for.
+
+What the driver computes is tested on hand-made inputs: the scratch project it lays out for a
+package (on a small repository in a temporary folder: the folders copied, the stale ones
+replaced, the ``pyproject.toml`` with the pytest options and the ``[tool.mutmut]`` section),
+the counts it reads from mutmut's ``.meta`` files (each exit code's class), the score table
+and its survivors, the command and environment ``run_package`` starts mutmut with and the cut
+at the budget (with a stand-in for ``subprocess.Popen``), and the options of ``main`` (with a
+stand-in for ``run_package``). No mutmut run starts.
+
+The tool is loaded under its dotted name ``tools.mutation``, the name mutmut's trampolines
+recognise. Oracle in each test: the hand-made input and the result written out by hand.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import tomllib
+import types
+from pathlib import Path
+
+import pytest
+
+from tests._tools import load_tool
+
+mutation = load_tool("mutation")
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def _write(path: Path, text: str) -> Path:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+# --- the packages ------------------------------------------------------------------------------
+
+
+def test_mutation_every_package_mutates_files_that_exist():
+    """Oracle: the repository itself: each package's globs match a file (a misspelt glob would
+    mutate nothing and score nothing), and no test file is named twice."""
+    for name, spec in mutation.PACKAGES.items():
+        for pattern in spec.mutate:
+            assert list(ROOT.glob(pattern)), (name, pattern)
+        assert len(set(spec.tests)) == len(spec.tests), name
+
+
+def test_mutation_exit_code_classes():
+    """Oracle: mutmut's exit codes sorted by hand into killed (timeouts, crashes and type
+    checks included), survived (no test reaching a mutant included) and the rest."""
+    from mutmut.stats import status_by_exit_code
+
+    killed = [1, 3, 36, 24, -24, 152, 255, -11, -9, 37]
+    survived = [0, 5, 33]
+    assert {status_by_exit_code[c] for c in killed} <= mutation.KILLED
+    assert {status_by_exit_code[c] for c in survived} <= mutation.SURVIVED
+    assert mutation.KILLED == {"killed", "timeout", "segfault", "caught by type check"}
+    assert mutation.SURVIVED == {"survived", "no tests"}
+    for code in (None, 2, 34, 35):
+        assert status_by_exit_code[code] not in mutation.KILLED | mutation.SURVIVED
+
+
+# --- scratch_project ---------------------------------------------------------------------------
+
+
+PYPROJECT = """\
+[tool.pytest.ini_options]
+testpaths = ["tests"]
+addopts = "-ra --strict-markers"
+markers = ["slow: a slow test"]
+filterwarnings = ["error"]
+xfail_strict = true
+
+[tool.ruff]
+line-length = 110
+"""
+
+
+def _repo(root: Path) -> Path:
+    """A small repository: the package, its tests and tools (each with a ``__pycache__`` and
+    a ``_build`` folder), the book and its configuration."""
+    for folder in ("navcore", "tests", "tools", "book"):
+        _write(root / folder / "m.py", f"# {folder}\n")
+        _write(root / folder / "__pycache__" / "m.pyc", "")
+        _write(root / folder / "_build" / "x.html", "")
+    _write(root / "book" / "_ext" / "e.py", "# ext\n")
+    _write(root / "_config.yml", "title: T\n")
+    _write(root / "pyproject.toml", PYPROJECT)
+    return root
+
+
+@pytest.fixture
+def repo(tmp_path, monkeypatch) -> Path:
+    """The small repository as the tool's checkout, its scratch projects under ``work``."""
+    root = _repo(tmp_path / "repo")
+    monkeypatch.setattr(mutation, "ROOT", root)
+    monkeypatch.setattr(mutation, "WORK", tmp_path / "work")
+    return root
+
+
+def _pyproject(**mutmut: str) -> str:
+    """The scratch project's ``pyproject.toml`` for the small repository, by hand."""
+    section = {
+        "source_paths": '["navcore"]',
+        "also_copy": '["tools"]',
+        "only_mutate": '["navcore/x/*"]',
+        "pytest_add_cli_args_test_selection": '["tests/test_a.py", "tests/test_b.py"]',
+        "do_not_mutate_patterns": json.dumps(mutation.NOT_MUTATED),
+        "warmup": "collect",
+        **mutmut,
+    }
+    return (
+        "[tool.pytest.ini_options]\n"
+        'markers = ["slow: a slow test"]\n'
+        'filterwarnings = ["error"]\n'
+        "xfail_strict = true\n"
+        'addopts = "-p no:cacheprovider"\n'
+        "\n"
+        "[tool.mutmut]\n"
+        f"source_paths = {section['source_paths']}\n"
+        f"also_copy = {section['also_copy']}\n"
+        f"only_mutate = {section['only_mutate']}\n"
+        f"pytest_add_cli_args_test_selection = {section['pytest_add_cli_args_test_selection']}\n"
+        'pytest_add_cli_args = ["-x", "-q"]\n'
+        f"do_not_mutate_patterns = {section['do_not_mutate_patterns']}\n"
+        "use_git_change_detection = false\n"
+        'process_isolation = "forkserver"\n'
+        f'forkserver_warmup = "{section["warmup"]}"\n'
+        "timeout_multiplier = 5.0\n"
+        "timeout_constant = 10.0\n"
+    )
+
+
+def test_mutation_scratch_project_of_a_model_package(repo, tmp_path, monkeypatch):
+    """Oracle: a package mutating ``navcore/x/*`` with two test files: the folders copied
+    without caches or builds, and the ``pyproject.toml`` written out by hand."""
+    monkeypatch.setitem(
+        mutation.PACKAGES, "demo", mutation.Package(["navcore/x/*"], ["test_a.py", "test_b.py"])
+    )
+    work = mutation.scratch_project("demo")
+    assert work == tmp_path / "work" / "demo"
+    assert sorted(p.name for p in work.iterdir()) == ["navcore", "pyproject.toml", "tests", "tools"]
+    for folder in ("navcore", "tests", "tools"):
+        assert sorted(p.name for p in (work / folder).iterdir()) == ["m.py"]
+        assert (work / folder / "m.py").read_text() == f"# {folder}\n"
+    text = (work / "pyproject.toml").read_text()
+    assert text == _pyproject()
+    assert tomllib.loads(text)["tool"]["mutmut"]["do_not_mutate_patterns"] == mutation.NOT_MUTATED
+
+
+def test_mutation_scratch_project_options_of_a_package(repo, tmp_path, monkeypatch):
+    """Oracle: a package with a deselection, no lines spared, code run at import, the book
+    and its configuration copied and its sources including the tools: the copies and the
+    ``[tool.mutmut]`` lines that change, by hand."""
+    spec = mutation.Package(
+        ["tools/*"],
+        ["test_a.py"],
+        deselect="slow_one or other",
+        sources=("navcore", "tools", "book/_ext"),
+        copy=("_config.yml", "book"),
+        not_mutated=[],
+        import_time=True,
+    )
+    monkeypatch.setitem(mutation.PACKAGES, "demo", spec)
+    work = mutation.scratch_project("demo")
+    names = sorted(p.name for p in work.iterdir())
+    assert names == ["_config.yml", "book", "navcore", "pyproject.toml", "tests", "tools"]
+    assert (work / "_config.yml").read_text() == "title: T\n"
+    assert (work / "book" / "_ext" / "e.py").read_text() == "# ext\n"
+    assert (work / "book" / "m.py").read_text() == "# book\n"
+    assert not (work / "book" / "_build").exists() and not (work / "book" / "__pycache__").exists()
+    assert (work / "pyproject.toml").read_text() == _pyproject(
+        source_paths='["navcore", "tools", "book/_ext"]',
+        also_copy='["_config.yml", "book"]',
+        only_mutate='["tools/*"]',
+        pytest_add_cli_args_test_selection='["tests/test_a.py", "-k", "not (slow_one or other)"]',
+        do_not_mutate_patterns="[]",
+        warmup="none",
+    )
+
+
+def test_mutation_scratch_project_of_the_tools_package(repo, tmp_path):
+    """Oracle: the repository's own ``tools`` package: its tests, its deselection, the tools
+    among the sources (so not copied again) and the book copied."""
+    work = mutation.scratch_project("tools")
+    mutmut = tomllib.loads((work / "pyproject.toml").read_text())["tool"]["mutmut"]
+    spec = mutation.PACKAGES["tools"]
+    assert mutmut["source_paths"] == ["navcore", "tools"]
+    assert mutmut["also_copy"] == ["book"]
+    assert mutmut["only_mutate"] == ["tools/*"]
+    assert mutmut["pytest_add_cli_args_test_selection"] == [
+        *("tests/" + t for t in spec.tests),
+        "-k",
+        "not (errata_and_ledger_links or interactive_ledger_filters)",
+    ]
+    assert sorted(p.name for p in work.iterdir()) == ["book", "navcore", "pyproject.toml", "tests", "tools"]
+
+
+def test_mutation_scratch_project_refreshes_copies_and_drops_old_verdicts(repo, tmp_path, monkeypatch):
+    """Oracle: a second layout after the repository changed: a stale copied file is gone, the
+    new one is there, a file in the project that is not a copy stays; mutmut's ``mutants``
+    folder goes, unless kept."""
+    monkeypatch.setitem(mutation.PACKAGES, "demo", mutation.Package(["navcore/x/*"], ["test_a.py"]))
+    work = mutation.scratch_project("demo")
+    _write(work / "navcore" / "stale.py", "")
+    _write(work / "mutants" / "navcore" / "m.py.meta", "{}")
+    _write(work / "mutmut-run.log", "log")
+    _write(repo / "navcore" / "new.py", "")
+    mutation.scratch_project("demo", keep=True)
+    assert sorted(p.name for p in (work / "navcore").iterdir()) == ["m.py", "new.py"]
+    assert (work / "mutants" / "navcore" / "m.py.meta").exists()
+    mutation.scratch_project("demo")
+    assert not (work / "mutants").exists()
+    assert (work / "mutmut-run.log").read_text() == "log"
+    mutation.scratch_project("demo")  # no mutants folder to remove
+    assert not (work / "mutants").exists()
+
+
+# --- count_results and table -------------------------------------------------------------------
+
+
+def _meta(work: Path, module: str, codes: dict) -> None:
+    _write(work / "mutants" / module, json.dumps({"exit_code_by_key": codes, "durations_by_key": {}}))
+
+
+def test_mutation_count_results_reads_each_exit_code(tmp_path):
+    """Oracle: two modules' ``.meta`` files with one mutant of each class, a file with no
+    verdicts and files that are not ``.py.meta``: the counts and the survivors, in the order
+    of the files and of their mutants."""
+    _meta(
+        tmp_path,
+        "tools/b.py.meta",
+        {"tools.b.x_f__mutmut_1": 0, "tools.b.x_f__mutmut_2": 1, "tools.b.x_f__mutmut_3": 33},
+    )
+    _meta(
+        tmp_path,
+        "tools/a.py.meta",
+        {
+            "tools.a.x_g__mutmut_1": 3,
+            "tools.a.x_g__mutmut_2": 36,
+            "tools.a.x_g__mutmut_3": -11,
+            "tools.a.x_g__mutmut_4": 37,
+            "tools.a.x_g__mutmut_5": 5,
+            "tools.a.x_g__mutmut_6": None,
+            "tools.a.x_g__mutmut_7": None,
+            "tools.a.x_g__mutmut_8": 34,
+            "tools.a.x_g__mutmut_9": 2,
+            "tools.a.x_g__mutmut_10": None,
+        },
+    )
+    _write(tmp_path / "mutants" / "tools" / "c.py.meta", "{}")
+    _meta(tmp_path, "tools/d.meta", {"tools.d.x_h__mutmut_1": 0})
+    _meta(tmp_path, "mutmut-stats.json", {"tools.d.x_h__mutmut_2": 0})
+    assert mutation.count_results(tmp_path) == {
+        "killed": 5,
+        "survived": 3,
+        "not checked": 3,
+        "other": 2,
+        "total": 13,
+        "survivors": [
+            "tools.a.x_g__mutmut_5 (no tests)",
+            "tools.b.x_f__mutmut_1 (survived)",
+            "tools.b.x_f__mutmut_3 (no tests)",
+        ],
+    }
+
+
+def test_mutation_count_results_without_a_run(tmp_path):
+    """Oracle: no ``mutants`` folder: every count zero, no survivors."""
+    assert mutation.count_results(tmp_path / "none") == {
+        "killed": 0,
+        "survived": 0,
+        "not checked": 0,
+        "other": 0,
+        "total": 0,
+        "survivors": [],
+    }
+
+
+def _row(package, killed, survived, not_checked=0, minutes=1.26, cut=False, survivors=()) -> dict:
+    return {
+        "package": package,
+        "total": killed + survived + not_checked,
+        "killed": killed,
+        "survived": survived,
+        "not checked": not_checked,
+        "minutes": minutes,
+        "cut": cut,
+        "survivors": list(survivors),
+    }
+
+
+LEGEND = [
+    "",
+    "Score = killed / (killed + survived); timeouts count as killed, mutants no test",
+    "reaches as survived; unchecked mutants (budget) are excluded from the score.",
+    "Survivors examined and found equivalent are described in tests/mutation_equivalents.md.",
+]
+
+
+def test_mutation_table_rows_scores_and_survivors():
+    """Oracle: four packages (3 of 4 killed; 2 of 3 with one unchecked; none judged, cut at
+    the budget; all killed) and two with survivors: the table written out by hand."""
+    rows = [
+        _row("gnss", 3, 1, survivors=["a.x_f__mutmut_1 (survived)"]),
+        _row("tools", 2, 1, not_checked=1, minutes=30.04, survivors=["b (no tests)", "c (survived)"]),
+        _row("units", 0, 0, not_checked=5, minutes=0.0, cut=True),
+        _row("frames", 7, 0, minutes=2.0),
+    ]
+    assert (
+        mutation.table(rows)
+        == "\n".join(
+            [
+                "| package | mutants | killed | survived | not checked | score | minutes | complete |",
+                "|---|---:|---:|---:|---:|---:|---:|---|",
+                "| gnss | 4 | 3 | 1 | 0 | 75.0 % | 1.3 | yes |",
+                "| tools | 4 | 2 | 1 | 1 | 66.7 % | 30.0 | no (budget) |",
+                "| units | 5 | 0 | 0 | 5 | - | 0.0 | no (budget) |",
+                "| frames | 7 | 7 | 0 | 0 | 100.0 % | 2.0 | yes |",
+                *LEGEND,
+                "",
+                "Survivors in gnss:",
+                "",
+                "- `a.x_f__mutmut_1 (survived)`",
+                "",
+                "Survivors in tools:",
+                "",
+                "- `b (no tests)`",
+                "- `c (survived)`",
+            ]
+        )
+        + "\n"
+    )
+
+
+def test_mutation_table_a_cut_run_with_every_mutant_checked_is_incomplete():
+    """Oracle: a run stopped at the budget just after its last mutant: not complete; a run
+    with none killed scores 0.0 %."""
+    text = mutation.table([_row("ledger", 0, 2, cut=True)])
+    assert text.splitlines()[2] == "| ledger | 2 | 0 | 2 | 0 | 0.0 % | 1.3 | no (budget) |"
+    assert text == "\n".join([*text.splitlines()[:3], *LEGEND]) + "\n"
+
+
+# --- run_package -------------------------------------------------------------------------------
+
+
+class _Mutmut:
+    """A stand-in for ``subprocess.Popen`` running mutmut: records the command and keyword
+    arguments; ``wait`` raises ``TimeoutExpired`` the first time if ``hangs``."""
+
+    def __init__(self, hangs: bool = False, returncode: int = 0):
+        self.hangs, self.returncode, self.calls, self.waits, self.pid = hangs, returncode, [], [], 4242
+
+    def __call__(self, cmd, **kwargs):
+        kwargs["stdout"].write("mutmut output\n")
+        self.calls.append((cmd, {**kwargs, "stdout": kwargs["stdout"].name}))
+        return self
+
+    def wait(self, timeout=None):
+        self.waits.append(timeout)
+        if self.hangs and len(self.waits) == 1:
+            raise subprocess.TimeoutExpired("mutmut", timeout)
+        return self.returncode
+
+
+def _run_setup(tmp_path, monkeypatch, proc: _Mutmut) -> list:
+    """Stand-ins for the scratch project (recorded), mutmut, the clock and the counts."""
+    work = tmp_path / "work"
+    work.mkdir()
+    projects = []
+    monkeypatch.setattr(
+        mutation, "scratch_project", lambda package, keep: projects.append((package, keep)) or work
+    )
+    monkeypatch.setattr(mutation.subprocess, "Popen", proc)
+    monkeypatch.setattr(mutation, "time", types.SimpleNamespace(monotonic=iter([100.0, 190.0]).__next__))
+    monkeypatch.setattr(mutation, "count_results", lambda w: {"killed": 1, "work": w})
+    return projects
+
+
+def test_mutation_run_package_starts_mutmut_in_the_scratch_project(tmp_path, monkeypatch):
+    """Oracle: the command, its folder, log and environment (caches off, the CI profile), the
+    budget in seconds, and the counts with the minutes (90 s) and the status."""
+    proc = _Mutmut(returncode=3)
+    projects = _run_setup(tmp_path, monkeypatch, proc)
+    monkeypatch.setenv("NAVCORE_OTHER", "kept")
+    for name in ("HYPOTHESIS_PROFILE", "NAVCORE_CACHE", "NAVCORE_TEST_CACHE", "NAVCORE_NO_DISK_CACHE"):
+        monkeypatch.setenv(name, "replaced")  # whatever the session (or a mutation run) set
+    counts = mutation.run_package("gnss", 2.5, 3)
+    work = tmp_path / "work"
+    assert counts == {
+        "killed": 1,
+        "work": work,
+        "package": "gnss",
+        "minutes": 1.5,
+        "cut": False,
+        "returncode": 3,
+    }
+    assert projects == [("gnss", False)]
+    ((cmd, kwargs),) = proc.calls
+    assert cmd == [sys.executable, "-m", "mutmut", "run", "--max-children", "3"]
+    assert kwargs == {
+        "cwd": work,
+        "env": {
+            **os.environ,
+            "HYPOTHESIS_PROFILE": "ci",
+            "NAVCORE_CACHE": "off",
+            "NAVCORE_TEST_CACHE": "off",
+            "NAVCORE_NO_DISK_CACHE": "1",
+        },
+        "stdout": str(work / "mutmut-run.log"),
+        "stderr": subprocess.STDOUT,
+        "start_new_session": True,
+    }
+    assert proc.waits == [150.0]
+    assert (work / "mutmut-run.log").read_text() == "mutmut output\n"
+
+
+@pytest.mark.parametrize(
+    ("keep", "mutants", "expected_keep"),
+    [(True, None, True), (False, ["tools.a*", "tools.b*"], True), (False, [], False)],
+)
+def test_mutation_run_package_keeps_the_verdicts_for_named_mutants(
+    tmp_path, monkeypatch, keep, mutants, expected_keep
+):
+    """Oracle: ``keep``, or named mutants (which are added to the command), keep the
+    scratch project's verdicts."""
+    proc = _Mutmut()
+    projects = _run_setup(tmp_path, monkeypatch, proc)
+    mutation.run_package("tools", 1.0, 1, keep, mutants)
+    assert projects == [("tools", expected_keep)]
+    assert proc.calls[0][0][4:] == ["--max-children", "1", *(mutants or [])]
+
+
+def test_mutation_run_package_stops_mutmut_at_the_budget(tmp_path, monkeypatch):
+    """Oracle: mutmut still running at the budget: its process group is sent SIGTERM, waited
+    for, and the run is marked cut."""
+    proc = _Mutmut(hangs=True, returncode=-15)
+    _run_setup(tmp_path, monkeypatch, proc)
+    killed = []
+    monkeypatch.setattr(mutation.os, "killpg", lambda pid, sig: killed.append((pid, sig)))
+    counts = mutation.run_package("gnss", 0.5, 2)
+    assert killed == [(4242, 15)]
+    assert proc.waits == [30.0, None]
+    assert (counts["cut"], counts["returncode"], counts["minutes"]) == (True, -15, 1.5)
+
+
+# --- main --------------------------------------------------------------------------------------
+
+
+def test_mutation_main_help_describes_the_options(capsys):
+    """Oracle: the docstring's first line and the options' help, as written in the tool."""
+    with pytest.raises(SystemExit) as exc:
+        mutation.main(["--help"])
+    assert exc.value.code == 0
+    out = " ".join(capsys.readouterr().out.split())
+    for text in (
+        "Mutation testing with mutmut, one package at a time: the models, the ledger, the tools.",
+        "--budget-min BUDGET_MIN wall-clock minutes per package",
+        "--max-children MAX_CHILDREN",
+        "--out OUT",
+        "--report-only tabulate the last runs, run nothing",
+        "--keep reuse mutmut's cached verdicts (if the tests did not change)",
+        "--mutants PATTERN [PATTERN ...] re-run only these mutants (globs), one package",
+    ):
+        assert text in out
+
+
+def test_mutation_main_report_only_tabulates_every_package(tmp_path, monkeypatch, capsys):
+    """Oracle: no package named: one row per package of :data:`PACKAGES` in order, the
+    counts read from the scratch projects (one with a survivor), nothing run; the table
+    printed and written to ``_build/mutation.md`` of the checkout by default."""
+    monkeypatch.setattr(mutation, "ROOT", tmp_path)
+    monkeypatch.setattr(mutation, "WORK", tmp_path / "work")
+    monkeypatch.setattr(mutation, "run_package", lambda *a, **k: pytest.fail("a run started"))
+    _meta(tmp_path / "work" / "gnss", "navcore/gnss/a.py.meta", {"navcore.gnss.a.x_f__mutmut_1": 0})
+    _meta(tmp_path / "work" / "tools", "tools/b.py.meta", {"tools.b.x_g__mutmut_1": 1})
+    assert mutation.main(["--report-only"]) == 0
+    text = (tmp_path / "_build" / "mutation.md").read_text()
+    rows = text.splitlines()[2 : 2 + len(mutation.PACKAGES)]
+    assert [r.split(" | ")[0][2:] for r in rows] == list(mutation.PACKAGES)
+    assert "| gnss | 1 | 0 | 1 | 0 | 0.0 % | 0.0 | yes |" in rows
+    assert "| tools | 1 | 1 | 0 | 0 | 100.0 % | 0.0 | yes |" in rows
+    assert "| frames | 0 | 0 | 0 | 0 | - | 0.0 | yes |" in rows
+    assert text.endswith("Survivors in gnss:\n\n- `navcore.gnss.a.x_f__mutmut_1 (survived)`\n")
+    assert capsys.readouterr().out == text + "\n"
+
+
+def test_mutation_main_runs_the_named_packages(tmp_path, monkeypatch, capsys):
+    """Oracle: two packages with every option: what each run is given, the lines printed
+    before each (the budget as given: 2.5, 30), and the table of their counts in a new
+    folder."""
+    runs = []
+
+    def run_package(*args):
+        runs.append(args)
+        return _row(args[0], 1, 0, minutes=0.5)
+
+    monkeypatch.setattr(mutation, "run_package", run_package)
+    out = tmp_path / "new" / "dir" / "m.md"
+    assert (
+        mutation.main(["gnss", "tools", "--budget-min", "2.5", "--max-children", "4", "--out", str(out)]) == 0
+    )
+    assert mutation.main(["frames", "--keep", "--mutants", "a*", "b*", "--out", str(out)]) == 0
+    assert runs == [
+        ("gnss", 2.5, 4, False, None),
+        ("tools", 2.5, 4, False, None),
+        ("frames", 30.0, 2, True, ["a*", "b*"]),
+    ]
+    printed = capsys.readouterr().out
+    assert printed.startswith(
+        "mutation testing navcore.gnss (2.5 min budget)\nmutation testing navcore.tools (2.5 min budget)\n"
+    )
+    assert "mutation testing navcore.frames (30 min budget)\n" in printed
+    assert out.read_text() == mutation.table([_row("frames", 1, 0, minutes=0.5)])
+
+
+def test_mutation_main_refuses_mutants_of_several_packages_and_unknown_packages(monkeypatch, capsys):
+    """Oracle: ``--mutants`` with two packages, or with none (all of them), and an unknown
+    package: usage errors (status 2), nothing run."""
+    monkeypatch.setattr(mutation, "run_package", lambda *a, **k: pytest.fail("a run started"))
+    for argv in (["gnss", "tools", "--mutants", "x*"], ["--mutants", "x*"]):
+        with pytest.raises(SystemExit) as exc:
+            mutation.main(argv)
+        assert exc.value.code == 2
+        assert capsys.readouterr().err.endswith("error: --mutants needs exactly one package\n")
+    with pytest.raises(SystemExit) as exc:
+        mutation.main(["nopackage"])
+    assert exc.value.code == 2
+    assert "invalid choice: 'nopackage'" in capsys.readouterr().err
