@@ -1126,6 +1126,8 @@ def _run_quietly(cmd: list[str], cwd: Path, env: dict[str, str] | None = None) -
         except subprocess.TimeoutExpired:
             continue
     relay.join(5)
+    if not relay.is_alive() and proc.stdout is not None:
+        proc.stdout.close()  # the relay has read it to its end
     return code
 
 
