@@ -530,3 +530,60 @@ def test_mutation_main_refuses_mutants_of_several_packages_and_unknown_packages(
         mutation.main(["nopackage"])
     assert exc.value.code == 2
     assert "invalid choice: 'nopackage'" in capsys.readouterr().err
+
+
+# --- every unit test reaches its package's run -------------------------------------------------
+
+#: Test files that import one mutated package but belong to no mutation run, with why.
+NOT_IN_A_RUN = {
+    "test_book_layout.py": "the rendered book's layout (Chromium), not the ledger's code it reads",
+    "test_coverage.py": "navcore.coverage, which no package mutates",
+    "test_glue_pages.py": "the chapters' glued values against their sources (executes pages)",
+    "test_provenance.py": "navcore.provenance, which no package mutates",
+    "test_report.py": "navcore.report, which no package mutates",
+    "test_traceability.py": "navcore.traceability, which no package mutates",
+}
+
+
+def _mutated_modules() -> dict[str, str]:
+    """Dotted name of each module a package mutates -> the package (the tools and the book's
+    extensions aside: their tests load files, not modules)."""
+    out = {}
+    for name, spec in mutation.PACKAGES.items():
+        if name in ("tools", "book_ext"):
+            continue
+        for pattern in spec.mutate:
+            for path in ROOT.glob(pattern):
+                if path.suffix == ".py":
+                    module = ".".join(path.relative_to(ROOT).with_suffix("").parts)
+                    out[module.removesuffix(".__init__")] = name
+    return out
+
+
+def _navcore_imports(path: Path) -> set[str]:
+    import ast
+
+    out = set()
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if isinstance(node, ast.ImportFrom) and node.module and node.module.startswith("navcore"):
+            out |= {node.module, *(f"{node.module}.{alias.name}" for alias in node.names)}
+        elif isinstance(node, ast.Import):
+            out |= {alias.name for alias in node.names if alias.name.startswith("navcore")}
+    return out
+
+
+def test_mutation_every_unit_test_file_is_in_a_run():
+    """Oracle: the test files' own imports. A file that imports modules of one mutated package
+    only (units aside: every package reads its constants) is that package's unit test, and a
+    run that leaves it out scores its package without it (test_frames_bulk.py and
+    test_pulse_detection.py were missing: the frames run counted 444 of its mutants as
+    untested). It is in some package's list, or in NOT_IN_A_RUN with why."""
+    modules = _mutated_modules()
+    listed = {t for spec in mutation.PACKAGES.values() for t in spec.tests}
+    missing = []
+    for path in sorted((ROOT / "tests").glob("test_*.py")):
+        packages = {modules[m] for m in _navcore_imports(path) if m in modules} - {"units"}
+        if len(packages) == 1 and path.name not in listed and path.name not in NOT_IN_A_RUN:
+            missing.append(f"{path.name} ({packages.pop()})")
+    assert not missing, "unit test files in no mutation run: " + ", ".join(missing)
+    assert set(NOT_IN_A_RUN) <= {p.name for p in (ROOT / "tests").glob("test_*.py")} - listed

@@ -129,6 +129,7 @@ PACKAGES: dict[str, Package] = {
             "test_ekf_ins_gnss_physics.py",
             "test_error_model17.py",
             "test_error_dynamics.py",
+            "test_library_lifted.py",
         ],
     ),
     "inertial": Package(
@@ -156,6 +157,7 @@ PACKAGES: dict[str, Package] = {
             "test_sp_architectures.py",
             "test_constellation_geometry.py",
             "test_carrier_phase_geometry.py",
+            "test_dop.py",
         ],
     ),
     "detection": Package(
@@ -167,6 +169,7 @@ PACKAGES: dict[str, Package] = {
             "test_neyman_pearson.py",
             "test_roc_bounds.py",
             "test_zakai.py",
+            "test_pulse_detection.py",
         ],
     ),
     "location": Package(
@@ -177,11 +180,14 @@ PACKAGES: dict[str, Package] = {
             "test_emitter.py",
             "test_multilateration.py",
             "test_sp_target_location.py",
+            "test_library_lifted.py",
         ],
     ),
     "frames": Package(
-        ["navcore/frames.py"], ["test_frames.py", "test_strapdown.py", "test_error_model17.py"]
+        ["navcore/frames.py"],
+        ["test_frames.py", "test_frames_bulk.py", "test_strapdown.py", "test_error_model17.py"],
     ),
+    "gravity": Package(["navcore/gravity.py"], ["test_gravity.py"]),
     # the ledger engine on synthetic claims (one test evaluates a single registry claim: the
     # evaluation cache's round trip)
     "ledger": Package(
@@ -203,6 +209,11 @@ PACKAGES: dict[str, Package] = {
             "test_ledger_mutation_render.py",
             "test_ledger_mutation_note.py",
             "test_ledger_mutation_registry.py",
+            "test_ledger_css.py",
+            "test_ledger_registry_keys.py",
+            "test_ledger_render_quote_below.py",
+            "test_ledger_trailing_zeros.py",
+            "test_plain_math.py",
         ],
         deselect="each_published_input_moves or every_tolerance_has_a_policy or no_old_id_left",
         copy=("_config.yml",),  # a rendering test reads the book's LaTeX settings
@@ -248,6 +259,9 @@ PACKAGES: dict[str, Package] = {
             "test_input_gate.py",
             "test_input_gate_inprocess.py",
             "test_tools_inprocess.py",
+            "test_bench_inprocess.py",
+            "test_mutation_tool.py",
+            "test_build_book_inprocess.py",
         ],
         sources=("navcore", "tools"),
         copy=("book",),
