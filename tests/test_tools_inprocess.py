@@ -29,7 +29,7 @@ from pathlib import Path
 
 import pytest
 
-from tests._tools import load_tool
+from tests._tools import help_text, load_tool
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -265,14 +265,6 @@ def test_ledger_twice_returns_the_first_failing_process_status(tmp_path, monkeyp
 # --- check_numbers ------------------------------------------------------------------------------
 
 
-def _help_text(main, capsys) -> str:
-    """What a tool's ``main(["--help"])`` prints, its whitespace collapsed; it must exit with 0."""
-    with pytest.raises(SystemExit) as exc:
-        main(["--help"])
-    assert exc.value.code == 0
-    return " ".join(capsys.readouterr().out.split())
-
-
 def _article(body: str) -> str:
     article = f'<article class="bd-article">{body}</article>'
     return f"<html><body><p>1.00e-04 outside</p>{article}<p>-0</p></body></html>"
@@ -354,7 +346,7 @@ def test_numbers_reader_text_ends_when_the_articles_container_closes():
 
 def test_numbers_main_help_describes_the_options(capsys):
     """Oracle: the docstring's first line and the options' help, as written in the tool."""
-    out = _help_text(check_numbers.main, capsys)
+    out = help_text(check_numbers.main, capsys)
     for text in (
         "Number-format gate on a built HTML book: no number as a program prints it.",
         "html the built HTML book (_build/html)",
@@ -1157,7 +1149,7 @@ def test_layout_browser_closes_a_connection_without_a_socket_to_close(monkeypatc
 
 def test_layout_main_help_describes_the_options(capsys):
     """Oracle: the docstring's first line and the options' help, as written in the tool."""
-    out = _help_text(check_layout.main, capsys)
+    out = help_text(check_layout.main, capsys)
     for text in (
         "Layout gate on a built HTML book, measured in headless Chromium: nothing a reader must",
         "html the built HTML book (_build/html)",
