@@ -344,6 +344,27 @@ def test_mutation_table_a_cut_run_with_every_mutant_checked_is_incomplete():
     assert text == "\n".join([*text.splitlines()[:3], *LEGEND]) + "\n"
 
 
+def test_mutation_table_says_why_a_run_is_incomplete():
+    """Oracle: the rows written out by hand: mutmut failing (exit 1, not cut) is named as such
+    even with every mutant unchecked; a failure at the budget's cut is the budget; a run with
+    no mutants has no results; mutants in no column are counted in the last column and the
+    legend says what they are (and only then)."""
+    failed = {**_row("gnss", 0, 0, not_checked=3), "returncode": 1}
+    cut = {**_row("units", 1, 0, not_checked=2, cut=True), "returncode": -15}
+    empty = {**_row("frames", 0, 0), "returncode": 0}
+    other = {**_row("ledger", 2, 1), "total": 5, "other": 2, "returncode": 0}
+    lines = mutation.table([failed, cut, empty, other]).splitlines()
+    assert lines[2:6] == [
+        "| gnss | 3 | 0 | 0 | 3 | - | 1.3 | no (mutmut exited 1) |",
+        "| units | 3 | 1 | 0 | 2 | 100.0 % | 1.3 | no (budget) |",
+        "| frames | 0 | 0 | 0 | 0 | - | 1.3 | no (no results) |",
+        "| ledger | 5 | 2 | 1 | 0 | 66.7 % | 1.3 | yes; 2 other |",
+    ]
+    assert lines[6:9] == LEGEND[:3]
+    assert lines[9] == "'other': mutants mutmut reports as skipped, suspicious or interrupted (in no column)."
+    assert "'other'" not in mutation.table([empty])
+
+
 # --- run_package -------------------------------------------------------------------------------
 
 
@@ -461,6 +482,7 @@ def test_mutation_main_help_describes_the_options(capsys):
         "--report-only tabulate the last runs, run nothing",
         "--keep reuse mutmut's cached verdicts (if the tests did not change)",
         "--mutants PATTERN [PATTERN ...] re-run only these mutants (globs), one package",
+        "PACKAGE packages to run (default all): " + ", ".join(mutation.PACKAGES),
     ):
         assert text in out
 
@@ -480,7 +502,7 @@ def test_mutation_main_report_only_tabulates_every_package(tmp_path, monkeypatch
     assert [r.split(" | ")[0][2:] for r in rows] == list(mutation.PACKAGES)
     assert "| gnss | 1 | 0 | 1 | 0 | 0.0 % | 0.0 | yes |" in rows
     assert "| tools | 1 | 1 | 0 | 0 | 100.0 % | 0.0 | yes |" in rows
-    assert "| frames | 0 | 0 | 0 | 0 | - | 0.0 | yes |" in rows
+    assert "| frames | 0 | 0 | 0 | 0 | - | 0.0 | no (no results) |" in rows
     assert text.endswith("Survivors in gnss:\n\n- `navcore.gnss.a.x_f__mutmut_1 (survived)`\n")
     assert capsys.readouterr().out == text + "\n"
 
@@ -526,7 +548,7 @@ def test_mutation_main_refuses_mutants_of_several_packages_and_unknown_packages(
     with pytest.raises(SystemExit) as exc:
         mutation.main(["nopackage"])
     assert exc.value.code == 2
-    assert "invalid choice: 'nopackage'" in capsys.readouterr().err
+    assert "unknown package 'nopackage'; choose from estimation, inertial," in capsys.readouterr().err
 
 
 # --- every unit test reaches its package's run -------------------------------------------------

@@ -394,6 +394,24 @@ def count_results(work: Path) -> dict:
     return counts
 
 
+def _completeness(r: dict) -> str:
+    """Whether a run judged every mutant, and if not why: mutmut failed (it exits non-zero only
+    when it cannot run, e.g. the clean tests fail), the budget cut it, or it left no result;
+    mutants mutmut reports as neither killed nor survived (skipped, suspicious, interrupted)
+    are counted after it."""
+    code = r.get("returncode") or 0  # a --report-only row has none
+    if code and not r["cut"]:
+        done = f"no (mutmut exited {code})"
+    elif r["cut"] or r["not checked"]:
+        done = "no (budget)"
+    elif not r["total"]:
+        done = "no (no results)"
+    else:
+        done = "yes"
+    other = r.get("other", 0)
+    return f"{done}; {other} other" if other else done
+
+
 def table(rows: list[dict]) -> str:
     lines = [
         "| package | mutants | killed | survived | not checked | score | minutes | complete |",
@@ -402,7 +420,7 @@ def table(rows: list[dict]) -> str:
     for r in rows:
         judged = r["killed"] + r["survived"]
         score = f"{100 * r['killed'] / judged:.1f} %" if judged else "-"
-        complete = "no (budget)" if r["cut"] or r["not checked"] else "yes"
+        complete = _completeness(r)
         lines.append(
             f"| {r['package']} | {r['total']} | {r['killed']} | {r['survived']} | {r['not checked']} "
             f"| {score} | {r['minutes']:.1f} | {complete} |"
@@ -410,6 +428,8 @@ def table(rows: list[dict]) -> str:
     lines.append("")
     lines.append("Score = killed / (killed + survived); timeouts count as killed, mutants no test")
     lines.append("reaches as survived; unchecked mutants (budget) are excluded from the score.")
+    if any(r.get("other") for r in rows):
+        lines.append("'other': mutants mutmut reports as skipped, suspicious or interrupted (in no column).")
     lines.append("Survivors examined and found equivalent are described in tests/mutation_equivalents.md.")
     for r in rows:
         if r["survivors"]:
@@ -422,7 +442,9 @@ def table(rows: list[dict]) -> str:
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("packages", nargs="*", choices=[*PACKAGES, []], default=[])
+    parser.add_argument(
+        "packages", nargs="*", metavar="PACKAGE", help=f"packages to run (default all): {', '.join(PACKAGES)}"
+    )
     parser.add_argument("--budget-min", type=float, default=30.0, help="wall-clock minutes per package")
     parser.add_argument("--max-children", type=int, default=2)
     parser.add_argument("--out", type=Path, default=ROOT / "_build" / "mutation.md")
@@ -434,6 +456,9 @@ def main(argv: list[str] | None = None) -> int:
         "--mutants", nargs="+", metavar="PATTERN", help="re-run only these mutants (globs), one package"
     )
     args = parser.parse_args(argv)
+    unknown = [p for p in args.packages if p not in PACKAGES]
+    if unknown:
+        parser.error(f"unknown package {unknown[0]!r}; choose from {', '.join(PACKAGES)}")
     packages = args.packages or list(PACKAGES)
     if args.mutants and len(packages) != 1:
         parser.error("--mutants needs exactly one package")
