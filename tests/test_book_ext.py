@@ -19,6 +19,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from types import SimpleNamespace
 from typing import ClassVar, NamedTuple
+from unittest import mock
 
 import pytest
 from docutils import nodes
@@ -1284,6 +1285,35 @@ def test_strip_helpers_keeps_the_cell_and_trims_only_newlines():
     assert book_presentation.strip_helpers(source) == "  x = 1"
     assert book_presentation.strip_helpers("\n\n y = 2 \n") == " y = 2 "
     assert book_presentation.strip_helpers("X = 1\nglue('a', X)\nprint(X)\n") == "X = 1\nprint(X)"
+
+
+def test_strip_helpers_refuses_a_helper_that_is_a_block_s_whole_body():
+    """A loop whose body is a glue call would be shown with an empty body (SP read-through)."""
+    source = "for n, v in zip(a, b):\n    glue(f'x-{n}', v, display=False)\nshown = 1\n"
+    with pytest.raises(book_presentation.HelperInBlockError, match="move the helper to a hidden cell"):
+        book_presentation.strip_helpers(source)
+    with pytest.raises(book_presentation.HelperInBlockError):
+        book_presentation.strip_helpers("if x:\n    fig = book.show_figure('F')\n")
+
+
+def test_strip_helpers_keeps_a_block_with_other_statements_and_unparsable_cells():
+    assert book_presentation.strip_helpers("if a:\n    glue('a', 1)\n    y = 2\n") == "if a:\n    y = 2"
+    # a cell that does not parse as Python (a magic, a fragment) is stripped as before, unchecked
+    assert book_presentation.strip_helpers("%matplotlib inline\nx = 1\n") == "x = 1"
+    assert book_presentation.strip_helpers("for x in y:\nglue('a', 1)") == "for x in y:"
+
+
+def test_a_helper_in_a_block_is_a_build_warning():
+    """The Sphinx hook reports the cell (a warning, an error in the strict build) and leaves it."""
+    doc = nodes.container(classes=["cell_input"])
+    block = nodes.literal_block("", "for n in a:\n    glue('x', n)\n")
+    doc += block
+    root = nodes.section()
+    root += doc
+    with mock.patch.object(book_presentation.logger, "warning") as warn:
+        book_presentation._hide_helpers(None, root)
+    assert warn.call_count == 1 and "hidden cell" in warn.call_args[0][0]
+    assert block.astext() == "for n in a:\n    glue('x', n)\n"
 
 
 @pytest.mark.parametrize(("docname", "chapter"), [("wf/01-page", "wf"), ("intro", ""), ("a/b/c", "a")])

@@ -23,12 +23,17 @@ each figure, and sphinx-proof and sphinx-exercise read ``env.toc_fignumbers`` in
 
 from __future__ import annotations
 
+import ast
 import re
+import textwrap
 from typing import Any
 
 from docutils import nodes
 from sphinx.application import Sphinx
 from sphinx.environment import BuildEnvironment
+from sphinx.util import logging
+
+logger = logging.getLogger(__name__)
 
 PAPERS = ("wf", "sp", "atc10", "kzl")
 FIGURE_RE = re.compile(r"^fig-(?:wf|sp|atc10|kzl)-(?:fig)?(\d+(?:-\d+)*)$")
@@ -78,15 +83,41 @@ def _statements(source: str) -> list[list[str]]:
     return out
 
 
+class HelperInBlockError(ValueError):
+    """A build helper inside a compound statement: removing it would leave code that does not run."""
+
+
+def _parses(text: str) -> bool:
+    try:
+        ast.parse(text)
+    except SyntaxError:
+        return False
+    return True
+
+
 def strip_helpers(source: str) -> str:
-    """The source of a code cell without its build-helper statements (and their imports)."""
+    """The source of a code cell without its build-helper statements (and their imports).
+
+    Raises
+    ------
+    HelperInBlockError
+        If the cell's code parses but the code without its helpers does not: a helper was the
+        body (or all of it) of a ``for``, ``if`` or ``with``, and the reader would see a block
+        with nothing in it. Such a helper belongs in a hidden cell of its own.
+    """
     kept = [s for s in _statements(source) if not HELPER_RE.match(s[0])]
     text = "\n".join(line for s in kept for line in s)
     rest = [s for s in kept if not re.match(r"^\s*from\s+navcore\s+import\s+book\s*$", s[0])]
     rest_text = "\n".join(line for s in rest for line in s)
     if not re.search(r"\bbook\.", rest_text):  # the import served only the helpers
         text = rest_text
-    return text.strip("\n")
+    text = text.strip("\n")
+    if text != source.strip("\n") and _parses(textwrap.dedent(source)) and not _parses(textwrap.dedent(text)):
+        raise HelperInBlockError(
+            "a build helper (glue, show_figure) inside a block of a shown code cell: without it the "
+            "shown code does not parse; move the helper to a hidden cell of its own"
+        )
+    return text
 
 
 def _hide_helpers(app: Sphinx, doctree: nodes.document) -> None:
@@ -95,7 +126,11 @@ def _hide_helpers(app: Sphinx, doctree: nodes.document) -> None:
             continue
         for block in list(cell.findall(nodes.literal_block)):
             source = block.astext()
-            stripped = strip_helpers(source)
+            try:
+                stripped = strip_helpers(source)
+            except HelperInBlockError as exc:
+                logger.warning(str(exc), location=block)
+                continue
             if stripped == source.strip("\n"):
                 continue
             if stripped.strip():
