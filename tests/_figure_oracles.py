@@ -612,7 +612,7 @@ def _sp_correlation(data: Data) -> None:
     """Oracle: R(tau) = max(0, 1 - |tau|) and the early-minus-late output R(tau - 1/4) -
     R(tau + 1/4), written out here."""
     (ax,) = data
-    r = ax.get("R(tau) = 1 - |tau|")
+    r = ax.get(r"$R_c(\tau) = 1 - |\tau|$")
     near(r.y, np.clip(1 - np.abs(r.x), 0, None), atol=1e-12)
     el = ax.get("early - late, spacing 1/2 chip")
     tau = el.x

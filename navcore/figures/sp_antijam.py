@@ -22,9 +22,9 @@ from navcore.units import NMI
 def correlation_figure() -> Figure:
     tau = np.linspace(-2.0, 2.0, 801)
     fig, ax = plt.subplots()
-    ax.plot(tau, ideal_correlation(tau), label="R(tau) = 1 - |tau|")
+    ax.plot(tau, ideal_correlation(tau), label=r"$R_c(\tau) = 1 - |\tau|$")
     ax.plot(tau, early_minus_late(tau, 0.5), "--", label="early - late, spacing 1/2 chip")
-    ax.set_xlabel("code phase error tau (chips)")
+    ax.set_xlabel(r"code phase error $\tau$ (chips)")
     ax.set_ylabel("normalised output")
     ax.legend()
     return fig

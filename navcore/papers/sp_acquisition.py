@@ -100,15 +100,15 @@ IN.assumed(
     high=60.0,
     unit="deg",
     quantity="latitude of the gyrocompass alignment",
-    reason="the paper gives no attitude error; the steady-state gyrocompass heading error eps/($\\Omega$ "
-    "cos L) "
-    "is assumed, at a mid latitude of 30 to 60 deg",
+    reason="the paper gives no attitude error; the steady-state gyrocompass heading error "
+    "$\\varepsilon/(\\Omega \\cos L)$ is assumed, at a mid latitude of 30 to 60 deg",
 )
 IN.convention(
     "negligible_rel",
     0.01,
-    readings={"within 1 %": 0.01, "within 10 %, the prose table's 'nearly'": 0.10},
-    quantity="share of the position error by which 'negligible' pointing may raise the target error",
+    readings={"within 1 %": 0.01, "within 10 % (the prose table's 'nearly')": 0.10},
+    quantity="threshold of 'negligible' pointing (the share by which it may raise the target error "
+    "over the position error)",
     reason="Sec. 2.6.4: 'the pointing error is negligible compared with the position error so that the "
     "target location errors and the aircraft position errors are essentially the same' carries no "
     "number",
@@ -199,7 +199,7 @@ CLAIMS = [
         compute=lambda: float(range_rate_from_doppler(IN.doppler_cell_hz, GPS_L1_WAVELENGTH_M)),
         tolerance=printed("10", why="'50 Hz corresponding to 10 m/s'")[1],
         expected_status="reproduced",
-        note="50 Hz x 0.1903 m = 9.51 m/s, printed as 10 m/s.",
+        note="$50\\ \\mathrm{Hz} \\times 0.1903\\ \\mathrm{m} = 9.51$ m/s, printed as 10 m/s.",
     ),
     Claim(
         id="SP-tab2.7-ordering",
@@ -227,10 +227,12 @@ CLAIMS = [
         compute=better_max_s,
         tolerance=_t02[1],
         expected_status="consistent",
-        note="$\\Delta$ T = 20 ms x intervals x one Doppler cell: 0.10 to 0.18 s for the four better "
+        note="$\\Delta T = 20\\ \\mathrm{ms} \\times$ intervals $\\times$ one Doppler cell: 0.10 to 0.18 "
+        "s for the four better "
         "systems; "
         "arithmetic on printed numbers, a cross-check. One Doppler cell: the Sec. 2.5 formula's "
-        "$[2 \\sigma_{\\text{rng-rate}}/10]$ is one 10-m/s interval when 'not greater than 10 m/s' bounds "
+        "$\\lceil 2 \\sigma_{\\text{rng-rate}}/10 \\rceil$ is one 10-m/s interval when 'not greater than "
+        "10 m/s' bounds "
         "the whole uncertainty span; the 30-m interval called a 'chip' is a P(Y) chip (29.3 m).",
     ),
     Claim(
@@ -244,7 +246,7 @@ CLAIMS = [
         compute=lambda: float(np.min(search_times_s(TC10))),
         tolerance=_ABOUT_SEARCH,
         expected_status="consistent",
-        note="42 intervals x 20 ms = 0.84 s, arithmetic on printed numbers, a cross-check.",
+        note="42 intervals $\\times$ 20 ms = 0.84 s, arithmetic on printed numbers, a cross-check.",
     ),
     Claim(
         id="SP-sec2.6.2-search-10-max",
@@ -257,7 +259,7 @@ CLAIMS = [
         compute=lambda: float(np.max(search_times_s(TC10))),
         tolerance=_ABOUT_SEARCH,
         expected_status="consistent",
-        note="82 intervals x 20 ms = 1.64 s, arithmetic on printed numbers, a cross-check.",
+        note="82 intervals $\\times$ 20 ms = 1.64 s, arithmetic on printed numbers, a cross-check.",
     ),
     Claim(
         id="SP-sec2.6.2-outside-1sigma",
@@ -282,7 +284,8 @@ CLAIMS = [
         compute=pointing_negligible,
         tolerance=EXACT,
         expected_status="consistent",
-        note="Target error = rss of the printed position error (192 m, 2750 m) and misalignment x 8 km; "
+        note="Target error = rss of the printed position error (192 m, 2750 m) and misalignment "
+        "$\\times$ 8 km; "
         "the attitude error is not published, so the steady-state gyrocompass heading error of the "
         "Table 2.5 gyro bias at 45 deg latitude is assumed (0.42 and 10.3 mrad): the target error is "
         "within 1 % of the position error for both IMUs ('negligible' read as within 1 %, or 10 %). "

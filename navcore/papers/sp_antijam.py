@@ -649,10 +649,11 @@ def _cep_claim(arch: str, power: float) -> Claim:
         return Claim(
             **common,
             expected_status="not-reproducible",
-            note="Same reduced model and assumptions as the DI claims. The nominal model gives about 253 m, "
-            "twice the printed value; the band reaches 120 m only through the jammer-direction antenna gain "
+            note="Same reduced model and assumptions as the DI claims. The nominal model gives the value "
+            "shown, well above the printed one; the band reaches 120 m only through the jammer-direction "
+            "antenna gain "
             "(about -6 dB instead of -3 dB) or a stronger signal, and at those values the model's TC CEP at "
-            "10 W collapses to the range-bias floor (2.6 m, against the printed 71 m): no single assumed "
+            "10 W collapses to the range-bias floor, far below the printed 71 m: no single assumed "
             "input fits both TC values (see SP-sec3.3-cep-tc-10W). The fix noise is the library's "
             "early-minus-late code-tracking noise.",
         )
@@ -660,8 +661,9 @@ def _cep_claim(arch: str, power: float) -> Claim:
         "Same reduced model and assumptions as the DI claims. The TC error after loss of lock is "
         "free-inertial growth over the outage near the jammer; in the model it grows roughly with the "
         "cube of the outage time (10 deg/h gyro), so the model's TC CEP is too small at 10 W (and, at "
-        "nominal assumptions, too large at 100 W). No assumed input within its range reaches 71 m (the "
-        "largest, about 47 m, comes at 200 m/s or 0 dB jammer gain); reaching it would take a longer outage "
+        "nominal assumptions, too large at 100 W). No assumed input alone, within its range, reaches 71 m "
+        "(the largest values come at 200 m/s or 0 dB jammer gain, as the row's inputs show); reaching it "
+        "would take a longer outage "
         "at 10 W, i.e. an unpublished trajectory, manoeuvre or reacquisition behaviour, or a TC lock limit "
         "several dB below the printed 54 dB. The fix noise is the library's early-minus-late "
         "code-tracking noise."
@@ -700,12 +702,12 @@ CLAIMS = [
         tolerance=prose("approximately", why="'an improvement of approximately 15 dB'"),
         expected_status="consistent",
         note="Arithmetic on printed numbers. The stated thresholds give 65 - 54 = 11 dB, outside "
-        "'approximately 15 dB' (+-10 %). But Sec. 3.1 flies J/S on a 5-dB grid (40 to 80 dB), and its "
+        "'approximately 15 dB' ($\\pm 10$ %). But Sec. 3.1 flies J/S on a 5-dB grid (40 to 80 dB), and its "
         "'up to 65 dB' is a grid level: on the grid the tightly coupled system holds 50 dB and loses 55 "
         "(its 54-dB threshold lies between them), so the highest levels held (65 and 50) and the first "
         "levels lost (70 and 55) are both 15 dB apart. With the DI limit somewhere in [65, 70) dB the "
-        "improvement over the 54-dB threshold lies in [11, 16) dB, which holds 15 for a limit of "
-        "67.5 dB or more.",
+        "improvement over the 54-dB threshold lies in [11, 16) dB, which is within 10 % of 15 dB for a "
+        "limit of 67.5 dB or more.",
         discussed_in=PAGE,
     ),
     Claim(
@@ -780,12 +782,13 @@ CLAIMS = [
         "decade power grid, 1 W to 10 kW), minimised over CEPs from 6 to 120 m, at the nominal inputs "
         "and across the assumed ranges (trajectory of Fig. 3.4, jammer offset and gain of the J/S "
         "history of Fig. 3.5, reacquisition time, link and code loop): this row's value and band. The "
-        "model's improvement is held near the 11 dB between the stated lock limits (65 and 54 dB), and "
-        "raising the DI limit towards 80 dB does not lift it to 15 dB. The paper's own printed CEPs put "
+        "row's value, the model's smallest improvement over those CEPs, lies below the 11 dB between "
+        "the stated lock limits (65 and 54 dB), and raising the DI limit towards 80 dB does not lift it "
+        "to 15 dB. The paper's own printed CEPs put "
         "its curves more than 10 dB apart at 11 and 71 m; the model's gap is below 10 dB at 71 m: the "
         "reduced model's "
         "curves differ in shape from the paper's 6-DOF ones (its deeply integrated filter above all), "
-        "so the disagreement is the model's, not an accusation. Depends on the code-tracking noise "
+        "so the disagreement is the model's, not an error of the paper. Depends on the code-tracking noise "
         "model through the fix noise.",
         discussed_in=PAGE,
     ),

@@ -250,14 +250,14 @@ CLAIMS = [
         id="SP-sec2.6.1-reacquisition-2760s",
         paper="SP",
         locator="Sec. 2.6.1",
-        quantity="start of code reacquisition: first code loss + 3 x 3-min intervals + 20-min outage",
+        quantity="start of code reacquisition: first code loss + $3\\times$ 3-min intervals + 20-min outage",
         published=printed("2760")[0],
         unit="s",
         kind="cross-check",
         compute=reacquisition_start_s,
         tolerance=printed("2760")[1],
         expected_status="consistent",
-        note="1020 + 3 x 180 + 1200 = 2760 s: the printed times agree with the 3-min spacing within "
+        note="$1020 + 3\\times 180 + 1200 = 2760$ s: the printed times agree with the 3-min spacing within "
         "the code losses and the 20-min outage (arithmetic on printed numbers).",
         discussed_in=PAGE_MISSIONS,
     ),
@@ -265,14 +265,15 @@ CLAIMS = [
         id="SP-sec2.6.1-code-after-fourth-carrier",
         paper="SP",
         locator="Sec. 2.6.1",
-        quantity="the first code loss (1020 s) follows the fourth carrier loss (360 s + 3 x 3 min)",
+        quantity="the first code loss (1020 s) follows the fourth carrier loss (360 s + $3\\times$ 3 min)",
         published=True,
         unit="statement",
         kind="cross-check",
         compute=code_loss_after_fourth_carrier,
         tolerance=EXACT,
         expected_status="consistent",
-        note="The fourth carrier loss is at 360 + 3 x 180 = 900 s, so code loss 'began after the fourth "
+        note="The fourth carrier loss is at $360 + 3\\times 180 = 900$ s, so code loss 'began after the "
+        "fourth "
         "carrier tracking loop lost lock', as printed; the gap is 120 s, not a full 3-min interval, "
         "which the text does not claim.",
         discussed_in=PAGE_MISSIONS,
@@ -323,11 +324,9 @@ CLAIMS = [
         note="The mission model of the missions page (tightly coupled, calibrated on the assumed "
         "terrain-following trajectory, then 19 min jammed) gives the value shown, well above the "
         "printed 192 m (the target at 8 km, bearing assumed; the pointing error adds under 1 %, "
-        "SP-sec2.6.4-pointing-negligible). The helicopter's trajectory and calibration span are "
-        "stated assumptions of the missions page, not ledger inputs, so the band covers the bearing "
-        "only. Its 10 nmi/h counterpart is close to the printed 2750 m. The helicopter trajectory, "
-        "calibration time and geometry are not published; a longer or more manoeuvring calibration "
-        "would lower the 1 nmi/h error, whose residual calibration errors dominate.",
+        "SP-sec2.6.4-pointing-negligible). The helicopter's trajectory, calibration span and geometry "
+        "are not published; they are assumed inputs with ranges, and the band over all of them stays "
+        "above the printed 192 m. Its 10 nmi/h counterpart is close to the printed 2750 m.",
         discussed_in=PAGE_MISSIONS,
     ),
     Claim(
@@ -360,8 +359,8 @@ CLAIMS = [
         expected_status="inconsistent",
         note="As SP-fig3.8-aj-15dB for the narrowband jammer: jammer-power ratio DI/TC at equal CEP "
         "on the reduced model's exact curves, minimised over 4-80 m; below 15 dB across the assumed "
-        "ranges, for the same reasons (the reduced model's CEP curves, held near the 11 dB between the "
-        "stated lock limits, differ in shape from the paper's 6-DOF ones). No narrowband CEPs are "
+        "ranges, for the same reason (the reduced model's CEP curves differ in shape from the paper's "
+        "6-DOF ones). No narrowband CEPs are "
         "printed to check the model against.",
         discussed_in=PAGE_DI,
     ),
@@ -375,9 +374,10 @@ CLAIMS = [
         compute=aj_falls_beyond_100m,
         tolerance=EXACT,
         expected_status="not-reproducible",
-        note="A/J improvement at 100 m against 0.95 x the largest CEP both reduced-model curves reach "
-        "(towards the free-inertial CEP as power grows). In the reduced model the improvement does "
-        "not fall, neither at the nominal inputs nor at any corner of the assumed ranges: the band "
+        note="A/J improvement at 100 m against $0.95\\times$ the largest CEP both reduced-model curves reach "
+        "(towards the free-inertial CEP as power grows). In the reduced model, with the P(Y) code, the "
+        "improvement does not fall, neither at the nominal inputs nor at any corner of the assumed "
+        "ranges: the band "
         "is false throughout. "
         "The reduced model's deeply integrated navigator keeps "
         "lock up to the 65-dB limit and then loses it at once: its CEP curve lacks the gradual "

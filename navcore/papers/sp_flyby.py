@@ -240,9 +240,9 @@ IN.convention(
     "without",
     readings={
         "the position (and velocity) uncertainty alone, as the text says": "without",
-        "the receiver clock's uncertainty added": "with",
+        "the position (and velocity) uncertainty with the receiver clock's added": "with",
     },
-    quantity="receiver clock in the range uncertainty searched at reacquisition",
+    quantity="range uncertainty searched at reacquisition",
     reason="Sec. 2.6.2: the counts 'only reflect the error growth in position (and velocity) "
     "uncertainty'; the other reading adds the receiver clock's bias (drift for the range rate), "
     "which a receiver must search too: from the filter's covariance (tightly coupled) or run free "
@@ -970,9 +970,10 @@ CLAIMS = [
         expected_status="consistent",
         note="The tightly coupled 1 nmi/h blackout with its Table 2.6 loop (0.37 rad/s, aided) against the "
         "same receiver with the table's unaided 18 rad/s loop, which sees all the dynamics: true if the "
-        "blackout moves by one sample (1 s) or more. The wider loop loses its carrier at a higher $C/N_0$ "
-        "(its 3-$\\sigma$ jitter reaches 90 deg near 20 dB-Hz), but the tightly coupled filter navigates on "
-        "pseudoranges, which last until the code's 18 dB-Hz (the code loop is then aided by the INS at "
+        "blackout moves by one sample (1 s) or more. The wider loop's thermal jitter alone reaches 90 deg "
+        "(3 $\\sigma$) only just below the carrier's 19 dB-Hz floor, so it loses its carrier at the floor "
+        "as the aided loop does; and the tightly coupled filter navigates on pseudoranges, which last "
+        "until the code's 18 dB-Hz (the code loop is then aided by the INS at "
         "0.5 Hz, and its jitter stays far below half a chip). On the straight leg past the jammer no "
         "dynamics load either loop. With the thresholds read as $C/N_0$ the statement would need a code "
         "loss tied to the carrier loop, or manoeuvres while the signals fade; read in each loop's own "

@@ -63,7 +63,7 @@ IN.fitted(
     quantity="what a grade's nmi/h measures (the 1-h CEP or the 1-h rss of the unaided position error)",
     reason="the paper does not define the 'nmi/h' of a grade. Of the definitions tried (1-h CEP "
     "or rss, stationary and gyrocompass-aligned), the 1-h CEP is the one that reproduces the "
-    "10 nmi/h label, so the definition is fitted to that label (the rss reading: 'rss')",
+    "10 nmi/h label, so the definition is fitted to that label (the other reading: the 1-h rss)",
 )
 
 
@@ -83,7 +83,7 @@ IN.convention(
     10.0,
     readings={"a change one can see on a bar chart (10 %)": 10.0, "any change of 1 % or more": 1.0},
     unit="%",
-    quantity="relative change of a result that counts as an effect",
+    quantity="threshold of an effect (the least relative change of a result that counts as one)",
     reason="the statements 'very little effect', 'not critical', 'no effect ... can be seen' and "
     "'can make a difference' are read against the paper's bar charts, on which a change of about "
     "10 % is the least a reader can see; the other reading counts 1 %",
@@ -413,7 +413,7 @@ ERRATA = [
         "the claims are inconsistent (not discrepant): a definition that differs between columns "
         "would remove the disagreement.",
         evidence="Covariance propagation of the full Table 2.5 error model, checked by a seeded "
-        "20000-run Monte Carlo of the same model with exact (Van Loan) discretisation.",
+        "Monte Carlo of the same model with exact (Van Loan) discretisation.",
         claims=("SP-tab2.5-grade-1", "SP-tab2.5-grade-0.5", "SP-tab2.5-grade-0.2"),
         discussed_in="sp/20-inertial-errors",
     ),
@@ -434,8 +434,7 @@ def _grade_claim(label: float, text: str) -> Claim:
             tolerance=tol,
             expected_status="consistent",
             kind="fit",
-            note=_GRADE_NOTE + " This label is the one the definition was fitted to: not evidence. "
-            "Verdict unchanged (consistent); kind changed to fit.",
+            note=_GRADE_NOTE + " This label is the one the definition was fitted to: not evidence.",
             discussed_in="sp/20-inertial-errors",
         )
     return Claim(
@@ -772,13 +771,11 @@ CLAIMS = [
         tolerance=printed("50")[1],
         expected_status="not-reproducible",
         note="Target-location errors of the two grades 19 min after GPS loss, with Doppler aiding "
-        "(Table 2.8 errors), across the assumed Doppler white noise (0.03-0.3 m/s: about 160 % to "
-        "40 %) and target bearing (with Doppler the position error is small, so the attitude term "
-        "over 8 km, and with it the bearing, matters: the band reaches about 350 %). The book's "
-        "nominal value (0.1 m/s, 45 deg) is about twice the printed 50 %, but the band contains "
-        "50 %: the ratio rests on unpublished inputs. The "
-        "GPS-aided span before jamming (fixed at 30 min) moves it less (about 90-100 % for 15-60 "
-        "min).",
+        "(Table 2.8 errors). With Doppler the position error is small, so the attitude term over 8 km, "
+        "and with it the target's bearing, matters; the ratio also moves with the Doppler sensor's "
+        "noise and interval, the satellite geometry and the flight profile, each by the amount the "
+        "row's inputs show. The book's nominal value is well above the printed 50 %, but the band "
+        "over the assumed ranges contains 50 %: the ratio rests on unpublished inputs.",
         discussed_in="sp/21-missions",
     ),
     Claim(

@@ -189,8 +189,9 @@ IN.assumed(
     unit="m",
     quantity="pseudorange noise behind the position fix of the head-on mission's loosely coupled receiver",
     reason="Sec. 2.6.3 speaks of 'this particular loosely coupled system' and its receiver is not "
-    "published; 0.5-3 m spans P(Y) code receivers of the period. Elsewhere the pseudorange noise "
-    "is fixed at 1 m: it moves no other claim (the 84-min 1 nmi/h error is 883-886 m for 0.5-3 m)",
+    "published; 0.5-3 m spans P(Y) code receivers of the period. The other missions' receivers read "
+    "the white pseudorange noise of Table 2.4, itself assumed over the same range, whose effect "
+    "each of their rows shows",
 )
 IN.assumed(
     "target_bearing_deg",
@@ -330,8 +331,8 @@ IN.convention(
     0.1,
     readings={"a change of more than 0.1 % across the 2 s": 0.1, "a change of more than 1 %": 1.0},
     unit="%",
-    quantity="how much the velocity error must fall from 1 s before a code reacquisition to 1 s after "
-    "it to count as a step",
+    quantity="threshold of a step in the velocity error (its fall from 1 s before a code reacquisition "
+    "to 1 s after it)",
     reason="Sec. 2.6.1 sees 'a step improvement in velocity' at each tightly coupled reacquisition and "
     "none in the loosely coupled system until the fourth code, but prints no size of a step; the "
     "book's 0.1 % stands against 1 %, both far below the loosely coupled step at the fourth code and "
@@ -541,8 +542,8 @@ IN.assumed(
     unit="deg",
     quantity="amplitude of the helicopter's flight-path angle over one terrain-following undulation",
     reason="Sec. 2.6.4 says only that the scout 'closely follows the terrain' with 'high levels of "
-    "acceleration and jerk'; at 40 m/s and a 60-s undulation +-4 deg gives height swings of about "
-    "+-25 m; 2-8 deg spans gently rolling to hilly terrain",
+    "acceleration and jerk'; at 40 m/s and a 60-s undulation $\\pm 4$ deg gives height swings of about "
+    "$\\pm 25$ m; 2-8 deg spans gently rolling to hilly terrain",
 )
 IN.assumed(
     "helicopter_turn_rate_deg_s",

@@ -171,15 +171,16 @@ ERRATA = [
         kind="convention",
         basis="text-only",
         locator="Sec. 2.5, 3x6 sensitivity matrix",
-        printed="misalignment block [[0,-1,1],[1,0,-1],[-1,1,0]] after the skew matrix $[\\delta\\theta "
-        "\\times]\\, a$",
+        printed="misalignment block "
+        "$\\begin{bmatrix}0&-1&1\\\\1&0&-1\\\\-1&1&0\\end{bmatrix}$ after the skew matrix "
+        "$[\\delta\\theta \\times]\\, a$",
         finding="The printed skew matrix gives $\\delta\\theta \\times a$, whose Jacobian at $a = (1,1,1)$ "
-        "is "
-        "[[0,1,-1],[-1,0,1],[1,-1,0]]: the printed block has the opposite sign (it is $a \\times "
+        "is $\\begin{bmatrix}0&1&-1\\\\-1&0&1\\\\1&-1&0\\end{bmatrix}$: the printed block has the "
+        "opposite sign (it is $a \\times "
         "\\delta\\theta$). "
         "The 'unit step' is also 1 g on every axis at once (magnitude $\\sqrt{3}$ g). The sign does not "
         "matter unless scale factor and misalignment are correlated ($c_{\\text{sf-mis}} \\neq 0$).",
-        evidence="A finite-difference Jacobian of $\\mathrm{diag}(sf)\\, a + \\delta\\theta \\times a$ "
+        evidence="A finite-difference Jacobian of $\\operatorname{diag}(sf)\\, a + \\delta\\theta \\times a$ "
         "(cross product computed numerically) against the library's analytic $-[a\\times]$ block.",
         claims=("SP-sec2.5-H-sign",),
         discussed_in=PAGE,
@@ -236,7 +237,7 @@ def _col4_claim(g: str) -> Claim:
         tolerance=tol,
         expected_status="reproduced",
         note="Eq. (2.1) with 6 g and 18 rad/s unaided, applied to column 3 as printed (two significant "
-        "figures; the paper's worked example uses 0.011 g). With column 2 x 6 g unrounded the "
+        "figures; the paper's worked example uses 0.011 g). With column 2 $\\times$ 6 g unrounded the "
         "10 nmi/h row would be 0.78. With the L1 carrier all values are 1.243 times larger "
         "(erratum SP-E-phase-conversion).",
     )
@@ -254,7 +255,7 @@ def _col2_claim(g: str) -> Claim:
         compute=None,
         tolerance=tol,
         expected_status="not-reproducible",
-        note="Needs the post-calibration 6x6 scale-factor/misalignment covariance ('taken from a "
+        note="Needs the post-calibration $6\\times 6$ scale-factor/misalignment covariance ('taken from a "
         "covariance analysis after ... calibration maneuvers'), which Sec. 2.5 / Table 2.6 should give "
         "and does not. Table 2.5 does not give it either: read as the accelerometers' a-priori scale "
         "factor and input-axis misalignment, its values give 676, 450, 226 and 53 ppm for a (1,1,1) "
@@ -305,23 +306,25 @@ CLAIMS = [
         id="SP-sec2.5-right-factor",
         paper="SP",
         locator="Sec. 2.5, covariance of the residual acceleration",
-        quantity="the printed right factor of the covariance is the transpose of the printed 3x6 matrix",
+        quantity="the printed right factor of the covariance is the transpose of the printed "
+        "$3\\times 6$ matrix",
         published=True,
         unit="statement",
         kind="cross-check",
         compute=right_factor_is_transpose,
         tolerance=EXACT,
         expected_status="consistent",
-        note="$\\langle \\delta a\\, \\delta a^T \\rangle = H P H^T$ with the middle factor a 6x6 block "
-        "matrix written in 2x2 shorthand; a "
+        note="$\\langle \\delta a\\, \\delta a^T \\rangle = H P H^T$ with the middle factor a "
+        "$6\\times 6$ block "
+        "matrix written in $2\\times 2$ shorthand; a "
         "check of the two printed matrices against each other, a cross-check.",
     ),
     Claim(
         id="SP-sec2.5-H-sign",
         paper="SP",
         locator="Sec. 2.5, 3x6 sensitivity matrix",
-        quantity="the printed 3x6 matrix is the sensitivity of "
-        "$\\operatorname{diag}(s_f)\\, a + [\\delta\\theta \\times]\\, a$ for $a = (1,1,1)$",
+        quantity="the printed $3\\times 6$ matrix is the sensitivity of "
+        "$\\operatorname{diag}(sf)\\, a + [\\delta\\theta \\times]\\, a$ for $a = (1,1,1)$",
         published=True,
         unit="statement",
         compute=printed_h_matches_skew_model,

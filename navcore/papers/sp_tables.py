@@ -83,7 +83,7 @@ _TABLE_2_4_ROWS: tuple[tuple[str, str, str, str, int], ...] = (
     ("clock g-sensitive drift", "clock_g_sensitivity_ppm_per_g", "1e-3", "ppm/g", 1),
     ("pseudorange bias", "pseudorange_bias_m", "3.0", "m", 4),
     ("range-rate bias", "range_rate_bias_mps", "0.003", "m/s", 4),
-    ("gravity (Markov) $\\sigma$", "gravity_sigma_micro_g", "35", "micro-g", 3),
+    ("gravity (Markov) $\\sigma$", "gravity_sigma_micro_g", "35", "µg", 3),
     ("gravity (Markov) distance", "gravity_distance_km", "37", "km", 3),
     ("barometer (Markov) $\\sigma$", "barometer_sigma_m", "150", "m", 1),
     ("barometer (Markov) distance", "barometer_distance_km", "460", "km", 1),
@@ -96,7 +96,7 @@ _SI = {
     "ms (read as m)": 1.0,
     "ppm": PPM * C,
     "ppm/g": PPM * C,
-    "micro-g": MICRO_G,
+    "µg": MICRO_G,
     "km": KM,
 }
 
@@ -124,7 +124,7 @@ def table_2_4() -> dict[str, TableEntry]:
 
 
 def gravity_markov() -> GaussMarkovSpec:
-    """Table 2.4 gravity anomaly: 35 micro-g, 37 km (SI)."""
+    """Table 2.4 gravity anomaly: 35 µg, 37 km (SI)."""
     return GaussMarkovSpec(IN.gravity_sigma_micro_g * MICRO_G, IN.gravity_distance_km * KM)
 
 
@@ -140,10 +140,10 @@ GRADE_LABELS_NMI_PER_H: tuple[float, ...] = (10.0, 1.0, 0.5, 0.2)
 
 #: Table 2.5 rows in printed units, one value per grade (10, 1.0, 0.5, 0.2 nmi/h).
 TABLE_2_5_ROWS: tuple[tuple[str, str, tuple[str, str, str, str]], ...] = (
-    ("accel_bias_micro_g", "micro-g", ("223", "37", "19", "4.2")),
+    ("accel_bias_micro_g", "µg", ("223", "37", "19", "4.2")),
     ("accel_scale_factor_ppm", "ppm", ("223", "179", "90", "21")),
     ("accel_misalignment_arcsec", "arcsec", ("22", "3", "1.5", "0.4")),
-    ("accel_random_walk_micro_g_per_sqrt_hz", "micro-g/√Hz", ("56", "15", "7.5", "4.2")),
+    ("accel_random_walk_micro_g_per_sqrt_hz", "µg/√Hz", ("56", "15", "7.5", "4.2")),
     ("gyro_bias_deg_per_h", "deg/h", ("0.11", "0.0045", "0.0022", "0.00084")),
     ("gyro_scale_factor_ppm", "ppm", ("112", "7.5", "3.5", "1.67")),
     ("gyro_misalignment_arcsec", "arcsec", ("22", "2.2", "1.1", "0.4")),

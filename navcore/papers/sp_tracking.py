@@ -250,7 +250,7 @@ CLAIMS = [
         id="SP-eq2.1-keeps-peak",
         paper="SP",
         locator="Eq. (2.1)",
-        quantity="scaling $w_0$ by the square root of the step ratio keeps the peak error unchanged",
+        quantity="scaling $\\omega_0$ by the square root of the step ratio keeps the peak error unchanged",
         published=True,
         unit="statement",
         compute=eq21_keeps_peak,
@@ -271,7 +271,8 @@ CLAIMS = [
         compute=lambda: IN.jerk_g_per_s * IN.jerk_duration_s,
         tolerance=_g6[1],
         expected_status="consistent",
-        note="The step the paper substitutes for the jerk has the jerk's final acceleration: 10 g/s x 0.6 s, "
+        note="The step the paper substitutes for the jerk has the jerk's final acceleration: "
+        "$10\\ \\mathrm{g/s} \\times 0.6\\ \\mathrm{s}$, "
         "arithmetic on printed numbers, a cross-check.",
     ),
     Claim(
@@ -286,8 +287,9 @@ CLAIMS = [
         expected_status="reproduced",
         note="Peaks at 17.67 rad/s with the L1 carrier; the ratio (about 4) does not depend on the "
         "conversion. 'Slightly' has no band in the prose table, and the requirement sets the natural "
-        "frequency: there the step asks for about 1.6 times the jerk's (the jerk pulse's peak falls "
-        "about as the cube of the natural frequency), in peak error 4 times.",
+        "frequency: there the step needs a natural frequency about 1.6 times the one the jerk needs (the "
+        "jerk pulse's peak falls about as the cube of the natural frequency), while its peak error at "
+        "one natural frequency is about 4 times the jerk's.",
     ),
     Claim(
         id="SP-sec2.5-half-chip-ns",
@@ -314,7 +316,8 @@ CLAIMS = [
         tolerance=printed("5.83")[1],
         expected_status="not-reproducible",
         note="No design rule for it is given. For the Butterworth loop of Fig. 2.1 the noise bandwidth "
-        "is (5/6) $w_0 = 14.7$ Hz at 17.67 rad/s; 5.83 Hz would need $w_0 = 7.0$ rad/s. Missing: the loosely "
+        "is $(5/6)\\,\\omega_0 = 14.7$ Hz at $\\omega_0 = 17.67$ rad/s; 5.83 Hz would need "
+        "$\\omega_0 = 7.0$ rad/s. Missing: the loosely "
         "coupled loop's coefficients and the requirement behind 5.83 Hz, which Sec. 2.5 should give "
         "next to the value.",
     ),
