@@ -97,8 +97,11 @@ IN.convention(
 IN.convention(
     "approx_rel",
     0.10,
-    quantity="closeness that '≈' in A(k) ≈ I + F T allows",
-    readings={"within 10 %, the prose table's 'approximately'": 0.10, "within 1 %": 0.01},
+    quantity="closeness that '≈' in $A(k) \\approx I + F T$ allows",
+    readings={
+        "within 10 %, the reading of 'approximately' in the ledger's table of prose words": 0.10,
+        "within 1 %": 0.01,
+    },
     reason="Eq. (6) writes '≈' in a formula and prints no number",
 )
 
@@ -348,7 +351,8 @@ CLAIMS = [
         paper="KZL",
         locator="Sec. 1",
         quantity="the longest footprint overlap in the hybrid experiment (receiver footprint over the "
-        "satellite's ground speed) is a few seconds (2 to 5 s, the prose table's 'a few')",
+        "satellite's ground speed) is a few seconds (2 to 5 s, the reading of 'a few' in the ledger's "
+        "table of prose words)",
         published=True,
         unit="statement",
         kind="statement",
@@ -408,7 +412,7 @@ CLAIMS = [
         compute=_length_mm_cm_level,
         tolerance=EXACT,
         expected_status="consistent",
-        note="$dh = R \\sin\\theta \\tan\\theta \\, dB / B$: about 1.2 mm for B = 200 m at 30 deg; 0.2-4.4 "
+        note="$dh = R \\sin\\theta \\tan\\theta \\, dB / B$: about 1.2 mm for $B$ = 200 m at 30 deg; 0.2-4.4 "
         "mm over "
         "the band. The paper names units, not a value: 'mm/cm accuracy' read as within half a decade (or "
         "a decade) of 1 mm to 1 cm. The 'cm' of the text fits longer baselines or airborne geometries.",
@@ -474,9 +478,9 @@ CLAIMS = [
         compute=_eq6_approximates,
         tolerance=EXACT,
         expected_status="consistent",
-        note="Covariance propagation of the 17-state model over the Table 1 flight at T = 1 s; the "
-        "first-order noise $Q_d = G Q G^T T$ goes with Eq. (6). '≈' read as within 10 % (the prose "
-        "table's 'approximately') or 1 %.",
+        note="Covariance propagation of the 17-state model over the Table 1 flight at $T$ = 1 s; the "
+        "first-order noise $Q_d = G Q G^T T$ goes with Eq. (6). '≈' read as within 10 % (the reading "
+        "of 'approximately' in the ledger's table of prose words) or 1 %.",
         discussed_in=PAGE1,
     ),
     Claim(
@@ -507,7 +511,8 @@ CLAIMS = [
         compute=_eq10_11_holds,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="Error = computed - true, $\\hat R = e^{[d \\times]} R$; Table 1 attitude, specific force "
+        note="Error = computed $-$ true, $\\hat R = e^{[\\Delta\\psi \\times]} R$; Table 1 attitude, "
+        "specific force "
         "(0.5, -0.3, $-g$) m/s$^2$ in NED; central differences at $10^{-6}$ rad agree to $10^{-6}$ of g.",
         discussed_in=PAGE2,
     ),
@@ -526,10 +531,12 @@ CLAIMS = [
         erratum="KZL-E3-skew-notation",
         oracle=_eq11_oracle,
         oracle_tolerance=EXACT,
-        note="At the Table 1 specific force (0, 0, -g) the printed matrix is minus skew(a) (entries apart by "
-        "2 |a|). The explicit matrix, which is what enters a computation, is right under the paper's "
+        note="At the Table 1 specific force $(0, 0, -g)$ the printed matrix is $-[a \\times]$, the usual "
+        "cross-product matrix with its sign flipped (entries apart by up to $2\\|a\\|$). The explicit "
+        "matrix, which is what enters a computation, is right under the paper's "
         "own error convention; the bracket names the other sign, and no printed number depends on it. "
-        "Checked independently: the printed matrix times unit vectors against numpy's cross product.",
+        "Checked independently: the printed matrix times unit vectors against the cross product computed "
+        "directly.",
         discussed_in=PAGE2,
     ),
     Claim(

@@ -93,8 +93,8 @@ IN.convention(
     unit="m^3/s^2",
     quantity="Earth's gravitational constant GM",
     readings={
-        "the WGS-84 value": 3.986004418e14,
-        "the WGS-72 value": 3.986008e14,
+        "the WGS-84 value, 398600.4418 km³/s²": 3.986004418e14,
+        "the WGS-72 value, 398600.8 km³/s²": 3.986008e14,
     },
     reason="the circular-orbit speed of TerraSAR-X follows from GM (the paper gives neither); the two "
     "geodetic standards of GM are both admissible",
@@ -456,7 +456,7 @@ ERRATA = [
         "a_e & -a_n & 0 \\end{bmatrix}$",
         finding="The explicit matrix is minus the usual cross-product matrix: $[a "
         "\\times]_{\\text{paper}}\\, b = b \\times a$. "
-        "The explicit matrix is the right $F_{23}$ for error = estimated - true and "
+        "The explicit matrix is the right $F_{23}$ for error = estimated $-$ true and "
         "$\\hat{R} = (I + [\\Delta\\psi \\times]) R$; reading the bracket as the standard skew flips the "
         "sign of $F_{23}$ "
         "and of the DD rows of Eq. (17).",
@@ -493,7 +493,8 @@ ERRATA = [
         "form drops $\\Delta\\psi$, $\\Delta b_\\omega$ and the clock",
         finding="The first DD row uses $l_{01}$; Eq. (14) has 6 rows for two satellites, matching "
         "$2 + 4 (\\nu - 1)$; O is the zero and I the identity matrix.",
-        evidence="Row counts from the library's carrier-phase measurement builders; with $l_{02}$ in both "
+        evidence="Row counts of the carrier-phase observation matrices the book's code builds; with "
+        "$l_{02}$ in both "
         "rows "
         "the DD attitude block of one satellite pair has rank 1 instead of 2.",
         claims=("KZL-eq17-printed-rank",),
@@ -563,11 +564,11 @@ CLAIMS = [
         compute=printed_levelling_level_roll_deg,
         tolerance=printed("0", why="Table 1 prints roll 0")[1],
         expected_status="consistent",
-        note="A level IMU measures f = [0, 0, -g]. Eq. (3) prints '$\\arctan_2(a_y / a_z)$', the "
+        note="A level IMU measures $f = [0, 0, -g]^T$. Eq. (3) prints '$\\arctan_2(a_y / a_z)$', the "
         "two-argument "
         "name with one argument: read as $\\operatorname{atan2}(a_y, a_z)$ it returns roll = 180 deg; read "
         "as the "
-        "arctangent of the printed ratio it returns 0, the Table 1 roll (for any |roll| < 90 deg).",
+        "arctangent of the printed ratio it returns 0, the Table 1 roll (for any roll within $\\pm 90$ deg).",
         discussed_in=PAGE1,
     ),
     Claim(
@@ -606,7 +607,8 @@ CLAIMS = [
         ),
         tolerance=EXACT,
         expected_status="reproduced",
-        note="Table 1 gyro bias 360 deg/h against the horizontal Earth rate 9.46 deg/h at 51 N (38x).",
+        note="Table 1 gyro bias 360 deg/h against the horizontal Earth rate 9.46 deg/h at 51° N (38 times "
+        "smaller).",
         discussed_in=PAGE1,
     ),
     Claim(
@@ -624,7 +626,7 @@ CLAIMS = [
         expected_status="reproduced",
         note="'Can be neglected' read as below a tenth (or a fifth) of the gyro bias: $|\\omega_{in}|$ = "
         "20.7 deg/h against 360 deg/h (factor 17). "
-        "The neglected Coriolis term (about 1900 micro-g) is NOT small against the 2400 micro-g "
+        "The neglected Coriolis term (about 1900 µg) is not small against the 2400 µg "
         "accelerometer bias; inside the GPS-aided filter it is absorbed by the accelerometer-bias "
         "states. The computation reads published inputs only.",
         discussed_in=PAGE1,
@@ -756,10 +758,10 @@ CLAIMS = [
         compute=satellite_to_aircraft_speed,
         tolerance=prose("about"),
         expected_status="consistent",
-        note="Circular-orbit speed $\\sqrt{\\mu / (R + h)}$ of TerraSAR-X (7.6 km/s at the assumed 514 km) "
+        note="Circular-orbit speed $\\sqrt{GM / (R + h)}$ of TerraSAR-X (7.6 km/s at the assumed 514 km) "
         "over "
-        "the assumed aircraft speed; the paper gives neither. 76x means about 100 m/s; Table 1's "
-        "110 m/s would give 69x. The book computes it under stated assumptions.",
+        "the assumed aircraft speed; the paper gives neither. A ratio of 76 means about 100 m/s; Table 1's "
+        "110 m/s would give 69. The book computes it under stated assumptions.",
         discussed_in=PAGE0,
     ),
     Claim(

@@ -108,7 +108,7 @@ IN.published(
     "accel_bias_micro_g",
     2400.0,
     locator=_T1 + ", accelerometer bias stability",
-    unit="micro-g",
+    unit="µg",
     quantity="accelerometer bias",
 )
 IN.published(
@@ -122,7 +122,7 @@ IN.published(
     "accel_vrw_micro_g",
     1000.0,
     locator=_T1 + ", accelerometer noise (VRW)",
-    unit="micro-g/√Hz",
+    unit="µg/√Hz",
     quantity="velocity random walk",
 )
 IN.published(
@@ -236,7 +236,7 @@ IN.published(
 IN.convention(
     "n_runs",
     30,
-    quantity="runs of the Monte Carlo ensemble the book reads Figs. 4-5 as",
+    quantity="number of Monte Carlo runs behind the book's Figs. 4-5",
     readings={"30 runs (the book's ensemble)": 30, "60 runs": 60},
     reason="Figs. 4-5 show the errors of one simulated flight and the paper states no ensemble; the "
     "book reads 'the error' as the RMS over seeded runs, whose number the paper leaves open (the "
@@ -245,8 +245,8 @@ IN.convention(
 IN.convention(
     "constellation",
     (6, 4, 55.0, 15.0),
-    quantity="GPS sky: orbital planes, satellites per plane, inclination (deg), phasing of successive "
-    "planes (deg)",
+    quantity="GPS sky (orbital planes, satellites per plane, inclination and phasing of successive "
+    "planes in deg)",
     readings={
         "24 satellites, 6 planes of 4 at 55 deg, planes phased 15 deg": (6, 4, 55.0, 15.0),
         "the same planes unphased (0 deg)": (6, 4, 55.0, 0.0),

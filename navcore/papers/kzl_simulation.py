@@ -288,10 +288,12 @@ CLAIMS = [
         compute=_heading_largest_standalone,
         tolerance=EXACT,
         expected_status="not-reproducible",
-        note="Holds in the ensemble $1\\sigma$ (0.99 deg heading vs 0.86 deg tilt at 180 s) only because the "
-        "assumed initial heading uncertainty (0.5 deg crab) exceeds the levelling tilt error; the gyro "
-        "errors grow alike on all axes. The 30-run RMS cannot resolve the difference, and without "
-        "initialisation all three angles reach about 19-21 deg. " + _MC_NOTE,
+        note="Read in the filter's $1\\sigma$ at 180 s (the root of the run-averaged covariance, not the "
+        "RMS of the runs' errors that the table on the page shows), the heading error is above the "
+        "tilt errors, only because the assumed initial heading uncertainty (0.5 deg crab) exceeds the "
+        "levelling tilt error; the gyro errors grow alike on all axes. The 30-run RMS cannot resolve the "
+        "difference, and without initialisation all three angles end with errors of similar size. "
+        + _MC_NOTE,
         discussed_in=PAGE3,
     ),
     Claim(
@@ -341,8 +343,9 @@ CLAIMS = [
         compute=_tc_improves_tilt,
         tolerance=EXACT,
         expected_status="consistent",
-        note="Time-averaged roll/pitch RMS of TC at least a tenth (or a twentieth) below that of the "
-        "initialised INS: about a tenth of it. " + _MC_NOTE + " The Monte Carlo reads assumed inputs.",
+        note="'Improves' read as a time-averaged roll/pitch RMS of TC at least a tenth (or a twentieth) "
+        "below that of the initialised INS. TC's lies far below that line in roll and in pitch; the page "
+        "shows the factor in each. " + _MC_NOTE + " The Monte Carlo reads assumed inputs.",
         discussed_in=PAGE3,
     ),
     Claim(
@@ -415,7 +418,8 @@ CLAIMS = [
         compute=_pos_bounded_3_grows_2,
         tolerance=EXACT,
         expected_status="consistent",
-        note="Horizontal RMS at the end of the 2-satellite segment more than 3x (or 2x) that at the end of "
+        note="Horizontal RMS at the end of the 2-satellite segment more than 3 (or 2) times that at the "
+        "end of "
         "the 3-satellite segment, which stays below 10 m (or 30 m). With 3 satellites one position/clock "
         "direction is unobservable, so the error still grows slowly: bounded over 30 s, not for ever. "
         + _MC_NOTE,
@@ -453,7 +457,8 @@ CLAIMS = [
         tolerance=prose("about", why="'about 0.5 deg pointing accuracy'"),
         expected_status="consistent",
         note="Largest TC + DD attitude RMS or filter $1\\sigma$ on any axis after 10 s, with 2-8 "
-        "satellites. " + _MC_NOTE,
+        "satellites. 'About 0.5 deg' is read as an upper bound: at most 0.5 deg, with the 10 % that "
+        "'about' allows. " + _MC_NOTE,
         discussed_in=PAGE3,
     ),
 ]

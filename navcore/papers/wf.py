@@ -114,8 +114,8 @@ IN.published("sigma_g", 1.0, locator=_IVD + " ($\\sigma_G = 1$ Hz)", unit="Hz", 
 IN.published(
     "sigma_a_example_micro_g",
     100.0,
-    locator="Sec. IV.D ('a 100 ug local accelerometer')",
-    unit="micro-g",
+    locator="Sec. IV.D ('a 100 µg local accelerometer')",
+    unit="µg",
     quantity="the worked example's accelerometer",
 )
 IN.assumed(
@@ -154,7 +154,7 @@ IN.assumed(
     high=9.0,
     unit="ft",
     quantity="wing-tip deflection",
-    reason="Sec. III: 'several feet'; 'several' is 3-9 (the prose table), 5 ft nominal",
+    reason="Sec. III: 'several feet'; 'several' is 3-9 (the ledger's table of prose words), 5 ft nominal",
 )
 IN.assumed(
     "vib_hz",
@@ -163,7 +163,7 @@ IN.assumed(
     high=9.0,
     unit="Hz",
     quantity="first flexible-mode frequency",
-    reason="Sec. III: 'in the range of several Hertz'; 'several' is 3-9 (the prose table)",
+    reason="Sec. III: 'in the range of several Hertz'; 'several' is 3-9 (the ledger's table of prose words)",
 )
 IN.assumed(
     "vib_amplitude_m",
@@ -234,7 +234,7 @@ IN.convention(
     quantity="closeness that 'as much as', 'close' and 'exact' allow",
     readings={
         "within 1 %": 0.01,
-        "within 10 %, the prose table's 'nearly'": 0.10,
+        "within 10 %, the reading of 'nearly' in the ledger's table of prose words": 0.10,
     },
     reason="Sec. II's 'as much as' and 'close to the true value', Remark (ii)'s 'tends to be exact' and "
     "Sec. IV.B.1's 'regardless' carry no number",
@@ -1109,8 +1109,8 @@ ERRATA = [
         "$\\sigma_{DN}^2 = \\sigma_N^2 + \\sigma_T^2$.",
         evidence="Units: $P_N P_N^T$ is in (m/s)$^4$; the literal reading makes $\\sigma_{DN}$ depend on the "
         "velocity unit. The one printed number that depends on it, the 60 dB of Sec. IV.D at "
-        "$\\sigma_T$ = 2 m/s, holds under both readings (-60.16 dB corrected, -60.18 dB literal in "
-        "(m/s)$^2$): the finding rests on the units alone.",
+        "$\\sigma_T$ = 2 m/s, holds under both readings, the corrected one and the literal one in "
+        "(m/s)$^2$ (the claim on Eq. (24) gives both values): the finding rests on the units alone.",
         claims=("WF-eq24-PN",),
         discussed_in=DOCS["IVD"],
     ),
@@ -1182,8 +1182,8 @@ CLAIMS = [
         compute=lambda: _ls_trial()["normal_rel"] < 1e-12,
         tolerance=EXACT,
         expected_status="consistent",
-        note="Book geometry (2 deg/s turn at 8 km, 200 m/s, 120 s, 200 samples, the chapter's ground "
-        "emitter, whose mean range the chapter shows, "
+        note="Book geometry (2 deg/s turn at 8 km, 200 m/s, 120 s, 200 samples, the ground "
+        "emitter of the chapter's geometry (its mean range is on the page), "
         "$f_0 = 10$ GHz, 1 Hz noise, 0.05 m/s velocity errors), 50 seeded trials; the largest "
         "$\\|\\mathbf H^T\\mathbf W\\,\\mathbf r\\| / (\\|\\mathbf H\\|\\,\\|\\mathbf m\\|)$ "
         "is below $10^{-12}$.",
@@ -1250,7 +1250,8 @@ CLAIMS = [
         expected_status="not-reproducible",
         relation="<=",
         note="'Several feet' (assumed 5 ft, 3-9) over the mean range of the Sec. III scenario (assumed "
-        "speed, altitude and emitter distance).",
+        "speed, altitude and emitter distance). 'At most 0.01 %' is read as an upper bound, with half a "
+        "unit in its last printed digit.",
         discussed_in=DOCS["III"],
     ),
     Claim(
@@ -1277,19 +1278,19 @@ CLAIMS = [
         paper="WF",
         locator="Sec. III",
         quantity="a first flexible mode of several hertz gives an aperture velocity amplitude of several "
-        "m/s (3 to 9 m/s, the prose table's 'several')",
+        "m/s (3 to 9 m/s, the reading of 'several' in the ledger's table of prose words)",
         published=True,
         unit="statement",
         kind="statement",
         compute=flexible_mode_is_several,
         tolerance=EXACT,
         expected_status="not-reproducible",
-        note="2 $\\pi$ f A of the assumed first wing mode: 3 Hz (3-9, 'several Hertz') with 0.1 m tip "
-        "amplitude "
-        "(5-30 cm) gives 1.9 m/s, below 'several'. The paper says the mode 'can result in' several m/s, a "
+        note="The velocity amplitude $2\\pi f A$ of the assumed first wing mode: $f$ = 3 Hz (3-9, "
+        "'several Hertz') with a tip amplitude $A$ = 0.1 m (5-30 cm) gives 1.9 m/s, below 'several'. The "
+        "paper says the mode 'can result in' several m/s, a "
         "possibility: across the assumed frequency and amplitude the velocity amplitude spans 0.94-17 "
         "m/s and lies in 3-9 m/s over part of that range, not at the nominal mode. The paper prints no "
-        "number: 'several' is read with the prose table's 3-9.",
+        "number: 'several' is read as 3-9, as in the ledger's table of prose words.",
         discussed_in=DOCS["III"],
     ),
     Claim(
@@ -1327,7 +1328,7 @@ CLAIMS = [
         id="WF-eq8-norm",
         paper="WF",
         locator="Eq. (8)",
-        quantity="$|df/dv| = f_0/c$ for every geometry",
+        quantity="$\\|\\partial f/\\partial \\mathbf{v}\\| = f_0/c$ for every geometry",
         published=True,
         unit="statement",
         compute=_eq8_identity,
@@ -1340,13 +1341,15 @@ CLAIMS = [
         id="WF-eq9-bound",
         paper="WF",
         locator="Eq. (9)",
-        quantity="$|\\partial f/\\partial p| \\le (f_0/c)\\, 2|v|/R$ for every geometry",
+        quantity="$\\|\\partial f/\\partial \\mathbf{p}\\| \\le (f_0/c)\\, 2\\|\\mathbf{v}\\|/R$ for every "
+        "geometry",
         published=True,
         unit="statement",
         compute=_eq9_bound_holds,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="2000 seeded random geometries. The exact norm is $(f_0/c)|v_\\perp|/R$, so the bound is "
+        note="2000 seeded random geometries. The exact norm is $(f_0/c)\\|\\mathbf{v}_\\perp\\|/R$, so the "
+        "bound is "
         "loose by at least a factor 2.",
         discussed_in=DOCS["III"],
     ),
@@ -1355,14 +1358,14 @@ CLAIMS = [
         aliases=("WF-c7-ratio",),
         paper="WF",
         locator="Sec. III, after Eq. (9)",
-        quantity="$R / (2 \\lvert v \\rvert)$, velocity-to-position sensitivity ratio",
+        quantity="$R / (2 \\|\\mathbf{v}\\|)$, velocity-to-position sensitivity ratio",
         published=100.0,
         unit="s",
         compute=lambda: float(velocity_to_position_sensitivity_ratio(IN.speed_mps, mean_range())),
         tolerance=ORDER,
         expected_status="not-reproducible",
         note="Mean range of the Sec. III scenario (assumed speed, altitude and emitter distance). With the "
-        "exact Eq. (9) norm the ratio is at least R/|v|, twice as large.",
+        "exact Eq. (9) norm the ratio is at least $R/\\|\\mathbf{v}\\|$, twice as large.",
         discussed_in=DOCS["III"],
     ),
     Claim(
@@ -1381,11 +1384,13 @@ CLAIMS = [
         relation=">=",
         note="'At least 100 times more effective', read with the exact gradients of Eqs. (8)-(9) over the "
         "Sec. III scenario (assumed speed, altitude and emitter distance: the paper gives none). The "
-        "exact ratio is $R/|v_\\perp| \\ge R/|v|$, "
-        "so it holds on any track with $R \\ge$ 100 s $\\cdot |v|$. The paper's own argument, $R/(2|v|)$ "
+        "exact ratio is $R/\\|\\mathbf{v}_\\perp\\| \\ge R/\\|\\mathbf{v}\\|$, "
+        "so it holds on any track with $R \\ge$ 100 s $\\cdot \\|\\mathbf{v}\\|$. The paper's own "
+        "argument, $R/(2\\|\\mathbf{v}\\|)$ "
         "(WF-eq9-velocity-position-ratio), "
         "falls short of 100 on this geometry. Through Eq. (6) the location-error leverage depends on the "
-        "error: a constant vertical velocity error is mostly absorbed by the $f_0$ estimate (page).",
+        "error: a constant vertical velocity error is mostly absorbed by the $f_0$ estimate (shown on this "
+        "page).",
         discussed_in=DOCS["III"],
     ),
     # Section IV.A-C
@@ -1425,7 +1430,8 @@ CLAIMS = [
         erratum="WF-E3-eq20-PNG",
         oracle=_eq20_oracle,
         oracle_tolerance=EXACT,
-        note="A seeded random 9x9 joint covariance; with $P_{NG}$ in block (2,3) the matrix is not symmetric "
+        note="A seeded random $9 \\times 9$ joint covariance; with $P_{NG}$ in block (2,3) the matrix is "
+        "not symmetric "
         "and not the covariance of the stacked errors. Checked independently against the Monte Carlo L-G "
         "cross-covariance.",
         discussed_in=DOCS["IV"],
@@ -1455,7 +1461,8 @@ CLAIMS = [
         compute=_fusion_is_wls,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="The gradient of $\\sum (x - x_i)' P_i^{-1} (x - x_i)$ vanishes at the fused estimate. The "
+        note="The gradient of $\\sum_i (\\mathbf x - \\hat{\\mathbf x}_i)^T \\mathbf P_i^{-1} (\\mathbf x "
+        "- \\hat{\\mathbf x}_i)$ vanishes at the fused estimate. The "
         "proof "
         "in [7] is not available; the minimum-variance reading holds for uncorrelated local errors.",
         discussed_in=DOCS["IV"],
@@ -1642,8 +1649,10 @@ CLAIMS = [
         erratum="WF-E2-eq24-PN",
         oracle=_eq24_oracle,
         oracle_tolerance=EXACT,
-        note="A consistent reading gives the same $\\sigma_{DN}$ in any velocity unit; the literal reading, "
-        "computed in cm/s, gives 0.1 times its value in m/s. Checked independently by the derivation "
+        note="A consistent reading gives the same $\\sigma_{DN}$ in any velocity unit. Under the literal "
+        "reading, the navigation-only error $\\sigma_{DN}$ of a rigid wing ($\\sigma_T = 0$), computed in "
+        "cm/s and converted back, is 0.1 times the value computed in m/s. Checked independently by the "
+        "derivation "
         "($P_N P_N^T$ in (m/s)$^4$ against $\\sigma_N^2$ in (m/s)$^2$). The one printed number that "
         "depends on Eq. (24), the 60 dB of Fig. 1 at $\\sigma_T$ = 2 m/s, holds under both readings "
         "(-60.16 and -60.18 dB).",
@@ -1665,7 +1674,8 @@ CLAIMS = [
         note="'At least a 60dB reduction', which the paper reads off Fig. 1. Per-axis $\\sigma_D "
         "= \\sqrt{\\text{Eq. (23) middle term} / 3}$; "
         "1 µg = $9.80665 \\times 10^{-6}$ m/s²; steady state; $P_{DL}(k/k)$. Under the full-trace reading "
-        "it is 55.4 dB.",
+        "(the whole middle term of Eq. (23), not a third of it) the reduction falls short of 60 dB; the "
+        "page shows the value.",
         discussed_in=DOCS["IVD"],
     ),
     Claim(
@@ -1705,7 +1715,7 @@ CLAIMS = [
         aliases=("WF-c17-unfiltered",),
         paper="WF",
         locator="Sec. IV.D",
-        quantity="local velocity accuracy without filtering at 100 ug",
+        quantity="local velocity accuracy without filtering at 100 µg",
         published=_c17,
         unit="m/s",
         kind="cross-check",
@@ -1759,8 +1769,9 @@ CLAIMS = [
         compute=_gps_adds_little,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="|Fig. 2 - Fig. 1| at most 0.72 dB for 1 and 3 satellites, all $\\sigma_T$, $\\sigma_a$ in 10 "
-        "µm/s² to 10 mm/s², below 1 dB (or 3 dB), the readings of 'noticeable'. Beyond about 30 mm/s² it no "
+        note="Fig. 2 differs from Fig. 1 by less than 1 dB (or 3 dB), the readings of 'noticeable', for 1 "
+        "and 3 satellites, every $\\sigma_T$ and every $\\sigma_a$ in 10 µm/s² to 10 mm/s² (the page "
+        "shows the largest difference). Beyond about 30 mm/s² it no "
         "longer holds.",
         discussed_in=DOCS["IVD"],
     ),
@@ -1794,7 +1805,8 @@ CLAIMS = [
         compute=_three_as_one,
         tolerance=EXACT,
         expected_status="reproduced",
-        note="Over the stated $\\sigma_a$ range the two curves differ by at most 0.011 dB. 'Virtually "
+        note="Over the stated $\\sigma_a$ range the two curves differ by less than the figure can show "
+        "(the page gives the largest difference). 'Virtually "
         "identical' (the 3-satellite curve is not drawn) is read as closer than the figure's resolution "
         "(half or a tenth of a dB).",
         discussed_in=DOCS["IVD"],

@@ -216,8 +216,8 @@ CLAIMS = [
         id="WF-rem2-weaker-correlation",
         paper="WF",
         locator="Remark (ii)",
-        quantity="the bound grows more conservative as the correlation weakens: tr(bound)/tr(true) "
-        "increases strictly as $\\rho$ falls from 1 to 0, and is 1 at $\\rho = 1$",
+        quantity="the bound grows more conservative as the correlation weakens: the ratio of the bound's "
+        "trace to the true trace increases strictly as $\\rho$ falls from 1 to 0, and is 1 at $\\rho = 1$",
         published=True,
         unit="statement",
         compute=_more_conservative_as_weaker,
@@ -275,8 +275,9 @@ CLAIMS = [
         tolerance=EXACT,
         expected_status="consistent",
         note="100 µg = 981 µm/s², about 98 times 10 µm/s² (about 1 µg): the paper's own parameter list "
-        "already holds devices two orders of magnitude finer, more than 'an order of magnitude' (the "
-        "prose table: a factor 10 within half a decade). Reference [4]'s device list itself is not checked.",
+        "already holds devices two orders of magnitude finer, more than 'an order of magnitude' (read "
+        "as in the ledger's table of prose words: a factor 10 within half a decade). Reference [4]'s "
+        "device list itself is not checked.",
         discussed_in=PAGE,
     ),
     Claim(
