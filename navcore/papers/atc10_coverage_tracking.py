@@ -963,9 +963,9 @@ ERRATA = [
         "$\\sigma_\\gamma^2$ for $\\sigma^2 \\gamma$, (4.5.37) citing (4.5.30))",
         finding="(4.5.9) implies $\\tau_n + \\alpha_n = \\alpha_0$, hence $\\tau_n = n \\alpha_0 + \\sum "
         "w_i$; the printed "
-        "form has variance $\\sigma_0^2 (n + 1)$, not the $\\sigma_0^2 (n + n^2)$ of (4.3.1c)",
-        evidence="exact propagation of (4.5.9) reproduces (4.3.1b) (ATC10-sec4.5.2-state-model); a Monte "
-        "Carlo of the printed sum gives the (n + 1) variance",
+        "form has variance $\\sigma_0^2 (n + 1)$, not the $\\sigma_0^2 (n + n^2)$ of (4.3.1c).",
+        evidence="Exact propagation of (4.5.9) reproduces (4.3.1b); a Monte Carlo of the printed sum gives "
+        "the $n + 1$ variance.",
         claims=("ATC10-sec4.5.2-tau-sum-printed",),
         discussed_in=PAGE_TRACKER,
     ),
@@ -1038,7 +1038,7 @@ CLAIMS = [
         compute=lambda: all(abs(std_ratio_at(n) - 1.0) <= _APPROX for n in _from_epoch(int(IN.std_n_from))),
         tolerance=EXACT,
         expected_status="reproduced",
-        note="$\\sqrt{n + n^2}/n$ from (4.3.1c): 1.049 at $n$ = 10 s, tending to 1.",
+        note="$\\sqrt{n + n^2}/n$ from (4.3.1c): 1.049 at $n = 10$ (10 s), tending to 1.",
         discussed_in=PAGE_TRACKER,
     ),
     Claim(
@@ -1458,7 +1458,8 @@ CLAIMS = [
         id="ATC10-eq4.5.35-printed",
         paper="ATC10",
         locator="Eq. (4.5.35)",
-        quantity="(4.5.35) as printed gives Table 4.3's $sd_N$ = 160 ft (Example I, $\\sigma_0$ = 5 ns)",
+        quantity="(4.5.35) as printed gives Table 4.3's $\\mathrm{sd}_N$ = 160 ft (Example I, "
+        "$\\sigma_0$ = 5 ns)",
         published=True,
         unit="statement",
         compute=lambda: abs(printed_4535_sdn("I", "sigma0_low_ns") - 160.0) <= 0.5,
@@ -1467,7 +1468,8 @@ CLAIMS = [
         erratum="ATC10-E4.4-recursion-formulas",
         oracle=lambda: abs(printed_4535_oracle("I", 5.0) - 160.0) <= 0.5,
         oracle_tolerance=EXACT,
-        note="$F_n'(F_n'F_n)^{-2}F_n$ cannot be multiplied as printed (3 x K times 3 x 3); read as its "
+        note="$F_n'(F_n'F_n)^{-2}F_n$ cannot be multiplied as printed: $F_n'$ ($3 \\times K$) times "
+        "$(F_n'F_n)^{-2}$ ($3 \\times 3$) is not defined. Read as its "
         "trace with $\\gamma_n^2$ it gives 292 ft, read as $1'F(F'F)^{-2}F'1$ with $\\gamma_n^2$ 175 ft; "
         "only $\\gamma_n$ with $1'F(F'F)^{-2}F'1$ gives the printed 160. Table 4.3 is the test point: "
         "(4.5.35) prints no number.",
@@ -1477,8 +1479,8 @@ CLAIMS = [
         id="ATC10-tab4.3-exI-sd0-norm-variance",
         paper="ATC10",
         locator="Table 4.3 col. (iii); Eq. (4.1.2)",
-        quantity="$\\sqrt{\\mathrm{Var}[\\|\\xi_{p0}\\|]}$ as (4.1.2) defines it, $\\sigma^2 "
-        "\\operatorname{tr}\\{M^{-1}\\}$ with $M = F'H'(HH')^{-1}HF$, Example I",
+        quantity="$\\sqrt{\\mathrm{Var}[\\|\\xi_{p0}\\|]}$ as (4.1.2) defines it, "
+        "$\\sigma \\sqrt{\\operatorname{tr}\\{M^{-1}\\}}$ with $M = F'H'(HH')^{-1}HF$, Example I",
         published=282.0,
         unit="ft",
         compute=lambda: norm_variance_as_defined_ft("I"),
@@ -1543,8 +1545,8 @@ CLAIMS = [
         "Appendix G, Var x3 ($V_0$ as printed)",
         "the printed $V_0$ is a positive constant",
         v0_printed_positive,
-        "The printed integrand has lost its square; as printed the integral to $10^{6}$ is about "
-        "$-X^{\\rho - 1/2}$, so $V_0$ would be negative and unbounded.",
+        "The printed integrand has lost its square; as printed, the integral up to $X$ grows like "
+        "$-X^{\\rho - 1/2}$ (checked to $X = 10^{6}$), so $V_0$ would be negative and unbounded.",
         PAGE_TRACKER,
         status="discrepant",
         erratum="ATC10-E4.7-fbm-normalisation",
@@ -1641,7 +1643,8 @@ CLAIMS = [
         "Appendix H, corollary (H.26)",
         "with $\\sigma_x^2$ in the numerator the scalar gain equals (H.20)",
         scalar_gain_corrected_matches,
-        "Seeded example, F = 1.",
+        "The formula shown is the paper's, with $\\sigma^2$ in the numerator; with $\\sigma_x^2$ there "
+        "it equals (H.20), checked on a seeded example with $F = \\mathbf{1}$.",
         PAGE_TRACKER,
     ),
     _s(

@@ -759,13 +759,13 @@ ERRATA = [
         locator="Eqs. (A.9)-(A.10) against (A.11), (B.1)",
         printed="Decide $H_1$ if $K_0 \\le tK$ ($K_0$ the number of empty lists)",
         finding="The bounds (A.17), (B.11), the figures and the tables use the rule of (A.11)/(B.1) and of "
-        "Sec. 2.4: decide H1 if more than tK lists are non-empty. (A.11) does not follow from (A.10); the "
-        "two are the same family with t replaced by 1 - t.",
+        "Sec. 2.4: decide $H_1$ if more than $tK$ lists are non-empty. (A.11) does not follow from (A.10); "
+        "the two are the same family with $t$ replaced by $1 - t$.",
         evidence="Exact binomial probabilities: at the $K = 10$, $P_{DL} = 0.999$ design point the literal "
         "(A.9) "
-        "rule with t = 0 detects with probability $q^K = 9.6 \\times 10^{-4}$, far below the bound 0.999 "
-        "that holds "
-        "(with equality) for the (A.11) rule.",
+        "rule with $t = 0$ detects only when every one of the $K$ lists is non-empty, with probability "
+        "$q^K$ ($q$ that of one list), far below the bound 0.999 that holds (with equality) for the (A.11) "
+        "rule.",
         claims=("ATC10-eqA.9-rule-at-design",),
         discussed_in=PAGE,
     ),
@@ -897,7 +897,7 @@ ERRATA = [
         kind="typography",
         basis="text-only",
         locator="Eq. (B.10)",
-        printed="'From (B.8) and the statistical independence of rho(i,j), we obtain immediately' (B.10)",
+        printed="'From (B.8) and the statistical independence of $\\rho(i,j)$, we obtain immediately' (B.10)",
         finding="(B.10) follows from the event inclusion (B.9) and independence; read 'From (B.9)'. (B.8) "
         "is the K = 1 bound, which enters only in the next step, (B.11).",
         evidence="(B.10) bounds $P_F$ by the probability of the intersection of $Kt + 1$ events $\\rho(i,j) "
@@ -1216,9 +1216,8 @@ CLAIMS: list[Claim] = [
         oracle_tolerance=EXACT,
         note="Evaluated at the $K = 1$, $P_{DL} = 0.88$ threshold, $p_f \\approx 10^{-6}$: "
         "$(1 - p_f)^{2 \\times 10^7} \\approx e^{-20}$ where $1 - (1 - p_f)^{2 \\times 10^7} \\approx 1$, so "
-        "the printed form is $e^{-19.6}$ times $F$ ($10^{-6}$ in the logarithm allows for rounding only). "
-        "Checked "
-        "independently with 40-digit arbitrary-precision arithmetic.",
+        "the printed form is $e^{-19.6}$ times $F$ (the check allows $10^{-6}$ in the logarithm, for "
+        "rounding only). Checked independently with 40-digit arbitrary-precision arithmetic.",
         discussed_in=PAGE,
     ),
     Claim(
@@ -1245,10 +1244,8 @@ CLAIMS: list[Claim] = [
             "quantile adds about "
             "as much in quadrature: $6 \\times 10^{-3}$",
         ),
-        note="navcore's $p_f$ (App. D, D.17) inverted for $c$ at $x$ = 0 dB, $p_d = 0.5$ gives "
-        "$1/\\sqrt{2}$. "
-        "(2.7.1) "
-        "and (2.8.4) print the correct argument.",
+        note="The book's $p_f$ (App. D, D.17) inverted for $c$ at $J/(P_0 B \\tau)$ = 0 dB and $p_d = 0.5$ "
+        "gives $1/\\sqrt{2}$. (2.7.1) and (2.8.4) print the correct argument.",
         discussed_in=PAGE_K,
     ),
     # ---- Sec. 2.7, K = 1

@@ -814,9 +814,9 @@ ERRATA = [
         finding="The exponent must use $\\rho_1$ throughout, include the logarithm, and subtract "
         "$+2 \\rho_1 \\sqrt{2 \\mu''(\\rho_1)}$: $p_f \\ge \\frac{1}{2} \\exp[\\mu(\\rho_1) - \\rho_1 "
         "\\theta - 2 \\rho_1 \\sqrt{2 \\mu''(\\rho_1)}]$ "
-        "with $\\mu'(\\rho_1) - \\sqrt{2 \\mu''(\\rho_1)} = \\theta$. The corrected bound is valid but "
-        "$10^2$-$10^9$ "
-        "times below the actual $p_f$ at $N = 10^{5}$, $\\tau/\\alpha = 2 \\times 10^{-5}$, so Sec. 3.8's "
+        "with $\\mu'(\\rho_1) - \\sqrt{2 \\mu''(\\rho_1)} = \\theta$. The corrected bound is valid but lies "
+        "orders of magnitude below the actual $p_f$ at $N = 10^{5}$, $\\tau/\\alpha = 2 \\times 10^{-5}$, "
+        "so Sec. 3.8's "
         "argument '$\\mathrm{ROC}_g$ $p_f$ below the lower bound of the actual $p_f$' cannot be "
         "made with it.",
         evidence="Tilted-Chebyshev derivation; the printed version (sign of $\\phi_1$) lies above the "
@@ -834,10 +834,10 @@ ERRATA = [
         kind="typography",
         basis="text-only",
         locator="Sec. 3.8, worked example",
-        printed="p = 50",
-        finding="$p = (N-1)/(B \\alpha) = (2 \\times 10^{5} - 1)/(10^{7} \\times 1\\,\\mathrm{s})$ "
-        "$= 0.02 = 1/50$.",
-        evidence="Direct arithmetic; the printed $\\mathrm{Exp}_g = 12.5 = 0.25/p$ follows p = 1/50, so no "
+        printed="$p = 50$",
+        finding="$p = (N-1)/(B \\alpha) = (2 \\times 10^{5} - 1)/(10^{7}\\,\\mathrm{Hz} \\times "
+        "1\\,\\mathrm{s})$ $= 0.02 = 1/50$.",
+        evidence="Direct arithmetic; the printed $\\mathrm{Exp}_g = 12.5 = 0.25/p$ follows $p = 1/50$, so no "
         "printed number depends on the slip.",
         claims=("ATC10-sec3.8-example-p",),
         discussed_in=PAGE_GAUSS,
@@ -961,7 +961,8 @@ CLAIMS = [
         id="ATC10-thm3.1-gaussian-limit",
         paper="ATC10",
         locator="Theorem 3.1",
-        quantity="the noise distribution approaches $N(0, N q b)$ as $N$ grows with $\\tau/\\alpha$ fixed",
+        quantity="the noise distribution approaches $\\mathcal{N}(0, N q b)$ as $N$ grows with "
+        "$\\tau/\\alpha$ fixed",
         published=True,
         unit="statement",
         compute=lambda: bool(np.all(np.diff(clt_tail_convergence()) < 0)),
@@ -1161,8 +1162,9 @@ CLAIMS = [
         compute=lambda: exp_fig39_shortfall() > IN.non_negligible_fraction,
         tolerance=STATEMENT,
         expected_status="not-reproducible",
-        note="Exp = 3.30 against 4: a shortfall of 17 %, against the assumed reading of 'non-negligible' "
-        "(5-20 %; false only above 17 %).",
+        note="Exp = 3.30 against 4, a shortfall of 17 %. The assumed reading of 'non-negligible' spans "
+        "5-20 % of $\\mathrm{Exp}_g$: the statement holds for every reading up to the shortfall and fails "
+        "only if 'non-negligible' means more than that.",
         discussed_in=PAGE_GAUSS,
     ),
     Claim(
@@ -1179,8 +1181,9 @@ CLAIMS = [
         ),
         tolerance=EXACT,
         expected_status="reproduced",
-        note="The numbers behind ATC10-fig3.9-shortfall: Eq. (3.8.16) gives Exp = 3.30 (the published value "
-        "is the printed $\\mathrm{Exp}_g = 4$, the relation the text's 'less than').",
+        note="Eq. (3.8.16) gives Exp = 3.30, less than the printed $\\mathrm{Exp}_g = 4$; the row's "
+        "published value is that 4, with the text's 'less than' as the relation. Whether the shortfall is "
+        "non-negligible is a separate claim.",
         discussed_in=PAGE_GAUSS,
     ),
     Claim(
@@ -1370,11 +1373,11 @@ CLAIMS = [
         compute=psk_gaussian_optimistic,
         tolerance=STATEMENT,
         expected_status="consistent",
-        note="Book's signature set: random PSK codes of L chips (assumed 16-64; $1/\\sqrt{3b}$ about 8 at "
-        "$L = 32$) at $N = 10^{5}$, $\\tau/\\alpha = 2 \\times 10^{-5}$; "
-        "best $p_f$ at $p_d \\ge 0.9$ from the stratified Monte Carlo ($3.5 \\times 10^{-5}$) against "
-        "$\\mathrm{ROC}_g$ "
-        "($1.1 \\times 10^{-8}$).",
+        note="The book's signature set: random PSK codes of $L$ chips (assumed 16-64; $1/\\sqrt{3b}$ about 8 "
+        "at $L = 32$) at $N = 10^{5}$, $\\tau/\\alpha = 2 \\times 10^{-5}$. The best $p_f$ at "
+        "$p_d \\ge 0.9$ from the stratified Monte Carlo is set against that of $\\mathrm{ROC}_g$ at the "
+        "same power; the page comparing the Gaussian approximation gives both, the first with its "
+        "standard error.",
         discussed_in=PAGE_GAUSS,
     ),
     Claim(

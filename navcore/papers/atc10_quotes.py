@@ -79,7 +79,10 @@ QUOTES: dict[str, str] = {
         "$$\\bar{N}_{AD} \\geq 0.5 N p_d^4 (1 - (1-p_f)^{2B\\alpha}) (1 - (1-p_f)^{4B\\beta})^3 \\quad "
         "\\text{when } K = 1$$"
     ),
-    "ATC10-eq2.5.5-composition": "$\\bar{N}_f \\geq \\bar{N}_{FL} = (N_T - N) \\exp \\left[(K t + 1) \\ln$",
+    "ATC10-eq2.5.5-composition": (
+        "$$\\bar{N}_f \\geq \\bar{N}_{FL} = (N_T - N) \\exp \\left[(K t + 1) \\ln \\left((1 - (1 - "
+        "p_f)^{2B\\alpha}) (1 - (1 - p_f)^{4B\\beta})^3 \\right) \\right] \\quad (2.5.5)$$"
+    ),
     "ATC10-eq2.8.1-erf-coefficient": (
         "$$p_f = \\frac{1}{2} - \\frac{1}{2} \\operatorname{erf} \\left(\\frac{1}{2} \\sqrt{\\frac{P_0 B "
         "\\tau}{J}} - \\phi \\right) \\quad (2.8.1)$$"
@@ -466,22 +469,22 @@ QUOTES: dict[str, str] = {
         "it is only when $\\sigma_0 \\cong .1 \\sigma$ that one can estimate aircraft positions, with "
         "acceptable error, over several tens of seconds"
     ),
-    "ATC10-tab1.1-K1-beamwidth": "1 33 15 2 15",
-    "ATC10-tab1.1-K1-diameter": "1 33 15 2 15",
-    "ATC10-tab1.1-K1-erp": "1 33 15 2 15",
-    "ATC10-tab1.1-K1-rf": "1 33 15 2 15",
-    "ATC10-tab1.1-K10-beamwidth": "10 43 20 4 12",
-    "ATC10-tab1.1-K10-diameter": "10 43 20 4 12",
-    "ATC10-tab1.1-K10-erp": "10 43 20 4 12",
-    "ATC10-tab1.1-K10-rf": "10 43 20 4 12",
-    "ATC10-tab1.1-K100-beamwidth": "100 53 23 8 5",
-    "ATC10-tab1.1-K100-diameter": "100 53 23 8 5",
-    "ATC10-tab1.1-K100-erp": "100 53 23 8 5",
-    "ATC10-tab1.1-K100-rf": "100 53 23 8 5",
-    "ATC10-tab1.1-K1000-beamwidth": "1000 77 40 18 2",
-    "ATC10-tab1.1-K1000-diameter": "1000 77 40 18 2",
-    "ATC10-tab1.1-K1000-erp": "1000 77 40 18 2",
-    "ATC10-tab1.1-K1000-rf": "1000 77 40 18 2",
+    "ATC10-tab1.1-K1-beamwidth": "Beamwidth (degrees) [...] 1 33 15 2 15",
+    "ATC10-tab1.1-K1-diameter": "Antenna Diameter (feet) [...] 1 33 15 2 15",
+    "ATC10-tab1.1-K1-erp": "ERP (dbw) [...] 1 33 15 2 15",
+    "ATC10-tab1.1-K1-rf": "rf Power (dbw) [...] 1 33 15 2 15",
+    "ATC10-tab1.1-K10-beamwidth": "Beamwidth (degrees) [...] 10 43 20 4 12",
+    "ATC10-tab1.1-K10-diameter": "Antenna Diameter (feet) [...] 10 43 20 4 12",
+    "ATC10-tab1.1-K10-erp": "ERP (dbw) [...] 10 43 20 4 12",
+    "ATC10-tab1.1-K10-rf": "rf Power (dbw) [...] 10 43 20 4 12",
+    "ATC10-tab1.1-K100-beamwidth": "Beamwidth (degrees) [...] 100 53 23 8 5",
+    "ATC10-tab1.1-K100-diameter": "Antenna Diameter (feet) [...] 100 53 23 8 5",
+    "ATC10-tab1.1-K100-erp": "ERP (dbw) [...] 100 53 23 8 5",
+    "ATC10-tab1.1-K100-rf": "rf Power (dbw) [...] 100 53 23 8 5",
+    "ATC10-tab1.1-K1000-beamwidth": "Beamwidth (degrees) [...] 1000 77 40 18 2",
+    "ATC10-tab1.1-K1000-diameter": "Antenna Diameter (feet) [...] 1000 77 40 18 2",
+    "ATC10-tab1.1-K1000-erp": "ERP (dbw) [...] 1000 77 40 18 2",
+    "ATC10-tab1.1-K1000-rf": "rf Power (dbw) [...] 1000 77 40 18 2",
     "ATC10-tab1.1-caption-pdl": (
         "with a processor designed to achieve a detection probability of at least 0.88"
     ),

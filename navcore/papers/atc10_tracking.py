@@ -294,17 +294,16 @@ IN.fitted(
     fitted_to=tuple(f"ATC10-tab4.2-ex{ex}-{col}-fitted" for ex in EXAMPLES for col in COLUMNS),
     quantity="effective satellite orbit radius over Earth radius",
     reason="the one shape parameter $r_{\\mathrm{orbit}}/R_E$ (aircraft on the surface) that best "
-    "reproduces the ten "
-    "printed Table 4.2 numbers (least squares on log ratios, col. 5 with the printed formula; "
-    "solve_radius_ratio): about 59 000 km, a 39-hour orbit, not the synchronous orbit of Sec. 4.1 (6.6 "
-    "Earth radii); shown, never a reading of the text",
+    "reproduces the ten printed Table 4.2 numbers (least squares on log ratios, col. 5 with the printed "
+    "formula): about 59 000 km, a 39-hour orbit, not the synchronous orbit of Sec. 4.1 (6.6 Earth radii); "
+    "shown, never a reading of the text",
 )
 IN.fitted(
     "outage_threshold_factor",
     1.8,
     fitted_to=("ATC10-sec4.6-rule4-outage-exI", "ATC10-sec4.6-rule4-outage-exII"),
     quantity="acceptable three-satellite rms error over the all-satellite least-squares rms",
-    reason="the paper names no threshold for 'acceptable'; 1.8 x the least-squares rms was inferred "
+    reason="the paper names no threshold for 'acceptable'; $1.8 \\times$ the least-squares rms was inferred "
     "so that the printed Table 4.2 gives rule 4's 30 s and 60 s",
 )
 IN.convention(
@@ -1348,9 +1347,10 @@ for _ex, _pub_s in (("I", 30.0), ("II", 60.0)):
             compute=lambda ex=_ex: acceptable_outage_s(ex, IN.sigma0_low_ns, _printed_inputs(ex)),
             tolerance=prose("about", why="'from about 30 to 60 seconds'"),
             expected_status="consistent",
-            note="The paper gives no threshold. The factor 1.8 $\\times$ the all-satellite least-squares rms "
-            "(508 ft, 1637 ft) was fitted to these two numbers (printed Table 4.2 with the printed $S_3$, "
-            "steady state before the drop, $\\bar\\tau$ = 1 s): a fit claim, not evidence.",
+            note="The paper gives no threshold. The factor 1.8 $\\times$ each example's all-satellite "
+            "least-squares rms error $\\mathrm{sd}_0$ was fitted to these two numbers (printed Table 4.2 "
+            "with the printed $S_3$, steady state before the drop, $\\bar\\tau$ = 1 s): a fit claim, not "
+            "evidence.",
             discussed_in=PAGE_EXAMPLES,
         )
     )
@@ -1372,12 +1372,13 @@ CLAIMS.append(
         tolerance=EXACT,
         expected_status="discrepant",
         note="The paper names no threshold, so every threshold is admitted: for each reading of what it "
-        "scales (an absolute error, or a multiple of $sd_0$, $sd_N$ or $sd_{N+1}$) the thresholds that "
+        "scales (an absolute error, or a multiple of $\\mathrm{sd}_0$, $\\mathrm{sd}_N$ or "
+        "$\\mathrm{sd}_{N+1}$) the thresholds that "
         "give 27-33 s in Example I and those that give 54-66 s in Example II are two intervals, and they "
         "do not meet. Printed Table 4.2 with the invariant $S_3$ of the stated system, steady state "
         "before the drop, $\\bar\\tau$ = 1 s; a 4000-run Monte Carlo of the tracker confirms the "
         "coasting times on the page. With the printed $S_3$ (E4-1) a common threshold exists (1.71-1.97 "
-        "$sd_0$).",
+        "$\\mathrm{sd}_0$).",
         erratum=_E1,
         oracle=lambda: _oracle_rule4_common_threshold(IN.nominal("rule4_threshold_reference")),
         oracle_tolerance=EXACT,
@@ -1470,15 +1471,16 @@ ERRATA += [
         locator="Table 4.2 (from Table 4.1)",
         printed="$\\beta$ = .0543/.00355, $\\operatorname{tr}$ = 7.84/3.99 (all), 9.39/14.9 (1,2,3), "
         "$S$ = 1.30/1.16",
-        finding="The finding rests on Sec. 4.1's statement that the system's satellites are in "
-        "synchronous orbits applying to the constellations of Sec. 4.6, which are taken for that system. "
+        finding="The finding rests on reading Sec. 4.1's statement that the system's satellites are in "
+        "synchronous orbits as applying to the constellations of Sec. 4.6, which are taken for that system. "
         "Synchronous orbits (42 164 km, 6.6 Earth radii) give $\\beta$ = .0658/.00425, "
         "$\\operatorname{tr}$ = 7.19/3.68 and 8.64/13.6, $S$ = 1.33/1.18, 2-21 % from the printed values "
         "under every admissible Earth radius, GM, period and aircraft height, and beyond the rounding of "
         "Table 4.1; Example I's satellite 1 is then outside the 45 deg cone (47.2 deg). The printed values "
         "fit an orbit of about 9.2 Earth radii (59 000 km, a 39-hour orbit): the paper's geometry is "
-        "self-consistent but is not the stated one. That radius is a fit, shown and not evidence.",
-        evidence="Geometry built twice (navcore on a sphere; an independent geodesy library's "
+        "self-consistent but is not the stated one. That radius is a fit, shown for illustration, not "
+        "evidence for the finding.",
+        evidence="Geometry built twice (the book's library on a sphere; an independent geodesy library's "
         "azimuth/elevation with QR/SVD invariants); the WGS-84 ellipsoid with geodetic latitudes moves "
         "the invariants by less than 0.1 %, the 0.05 deg rounding of Table 4.1 by less than 1 % (3 % for "
         "Example II's $\\beta$); a one-parameter fit of $r/R_E$ reproduces all ten numbers within their "
