@@ -185,7 +185,13 @@ PACKAGES: dict[str, Package] = {
     ),
     "frames": Package(
         ["navcore/frames.py"],
-        ["test_frames.py", "test_frames_bulk.py", "test_strapdown.py", "test_error_model17.py"],
+        [
+            "test_frames.py",
+            "test_frames_bulk.py",
+            "test_frames_edges.py",
+            "test_strapdown.py",
+            "test_error_model17.py",
+        ],
     ),
     "gravity": Package(["navcore/gravity.py"], ["test_gravity.py"]),
     # the ledger engine on synthetic claims (one test evaluates a single registry claim: the
