@@ -68,6 +68,15 @@ def test_height_dependence_matches_its_gradient():
     np.testing.assert_allclose(free_air_gradient(lat, h), fd, rtol=1e-8)
 
 
+def test_height_defaults_to_the_ellipsoid_surface():
+    """``h`` defaults to 0 in both functions. Oracle: the same calls with ``h=0.0`` spelled out
+    (the gradient's height term, 6 gamma h / a^2, is 5e-7 of it at 1 m: visible at rtol 1e-12)."""
+    for lat in (0.2, 1.1):
+        assert free_air_gradient(lat) == pytest.approx(float(free_air_gradient(lat, 0.0)), rel=1e-12)
+        assert normal_gravity(lat) == pytest.approx(float(normal_gravity(lat, 0.0)), rel=1e-15)
+    assert free_air_gradient(0.2) != pytest.approx(float(free_air_gradient(0.2, 1.0)), rel=1e-12)
+
+
 def test_constant_standard_gravity_error():
     """The constant G0 is 2.7 mg above normal gravity at the equator and 2.6 mg below it at
     the poles (the figures the module docstring quotes)."""
