@@ -2214,7 +2214,8 @@ def atc10_30_trace_123_ii() -> float:
     "the invariant 1'(F3 F3')^-1 1 of satellites 1-3 at the fitted radius",
 )
 def atc10_s123_invariant(ex: str) -> float:
-    """1'(F3 F3')^-1 1 of example ``ex``'s satellites 1-3 at the fitted radius (erratum E4-1's form)."""
+    """1'(F3 F3')^-1 1 of example ``ex``'s satellites 1-3 at the fitted radius (the form of erratum
+    ATC10-E4.1-three-satellite-clock-term)."""
     return float(_atc10_geometry_row(ex, "fit")["s_123"])
 
 
@@ -2428,7 +2429,8 @@ def atc10_30_s123_printed_residual_pct() -> float:
 )
 def atc10_32_col5_corrected(ex: str, s0: str) -> float:
     """sd_(N+1) of Table 4.3 col. (v) for example ``ex`` at sigma0 = ``s0`` ns, with the invariant
-    1'(F3 F3')^-1 1 of the synchronous geometry in place of the printed S3 (erratum E4-1), ft."""
+    1'(F3 F3')^-1 1 of the synchronous geometry in place of the printed S3 (erratum
+    ATC10-E4.1-three-satellite-clock-term), ft."""
     from navcore.papers import atc10_tracking as paper
 
     return float(paper.first_three_satellite_sd_invariant(ex, float(s0)))

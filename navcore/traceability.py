@@ -371,7 +371,12 @@ def functions_used_by_tests() -> dict[str, tuple[str, ...]]:
 
 @dataclass
 class Entry:
-    """One paper item with everything that refers to it."""
+    """One paper item with everything that refers to it.
+
+    ``claims`` are the claims whose locator names the item; for an equation that no locator
+    names, the claims that the coverage inventory (:mod:`navcore.coverage`) says check it, such
+    as a claim filed under a neighbouring equation.
+    """
 
     ref: Ref
     functions: list[Implementation] = field(default_factory=list)
@@ -389,7 +394,8 @@ class Index:
     ----------
     entries : dict of Ref to Entry
         Each paper item named anywhere, with the functions implementing it, the pages that
-        display or mention it, the tests using those functions and the claims locating it.
+        display or mention it, the tests using those functions and the claims that locate it
+        (or, for an equation no locator names, that the coverage inventory says check it).
     implementations : tuple of Implementation
         Every decorated navcore function (:func:`navcore.trace.registry`).
 
@@ -422,6 +428,21 @@ def claim_refs(locator: str, paper: str) -> list[Ref]:
     return [Ref(paper, item) for item in sorted(items_in_text(locator, dotted=True))]
 
 
+def _inventory_claims() -> dict[Ref, list[str]]:
+    """Equation -> the claims the coverage inventory names for it (in the inventory's order)."""
+    from navcore import coverage
+
+    out: dict[Ref, list[str]] = {}
+    for it in coverage.items():
+        if it.category != "equation" or not it.claims:
+            continue
+        for ref in claim_refs(it.locator, it.paper):
+            if ref.is_equation:
+                known = out.setdefault(ref, [])
+                known.extend(c for c in it.claims if c not in known)
+    return out
+
+
 @cache
 def build_index() -> Index:
     """Assemble the index from the decorators, the book's pages, the tests and the ledger.
@@ -433,7 +454,8 @@ def build_index() -> Index:
     -------
     Index
         Every paper item that a function implements, a claim locates or a page displays,
-        with the pages that mention it.
+        with the pages that mention it. An equation that no claim's locator names takes the
+        claims the coverage inventory gives it (a claim filed under a neighbouring equation).
     """
     from navcore import ledger
 
@@ -452,6 +474,9 @@ def build_index() -> Index:
     for claim in ledger.claims():
         for ref in claim_refs(claim.locator, claim.paper):
             entry(ref).claims.append(claim.id)
+    for ref, claims in _inventory_claims().items():  # checked under a neighbouring equation
+        if ref in entries and not entries[ref].claims:
+            entries[ref].claims.extend(claims)
     for page in book_pages():
         if page.paper is None:
             continue

@@ -78,48 +78,93 @@ __all__ = [
 ]
 
 # --- constants -------------------------------------------------------------------------
+#: Speed of light in vacuum, m/s: 299 792 458 m/s exactly (the SI definition of the metre).
 C = 299_792_458.0
+#: Standard gravity :math:`g_0`, m/s²: 9.806 65 m/s² exactly (3rd CGPM, 1901).
 G0 = 9.806_65
+#: Earth's rotation rate, rad/s: the WGS-84 value :math:`7.292\,115 \times 10^{-5}` rad/s
+#: (NIMA TR8350.2).
 OMEGA_EARTH = 7.292_115e-5
+#: WGS-84 semi-major axis :math:`a`, m: 6 378 137 m (a defining parameter of WGS-84, NIMA TR8350.2).
 WGS84_A = 6_378_137.0
+#: WGS-84 flattening :math:`f = 1/298.257\,223\,563` (a defining parameter, NIMA
+#: TR8350.2), dimensionless.
 WGS84_F = 1.0 / 298.257_223_563
+#: WGS-84 semi-minor axis :math:`b = a(1 - f)`, m, derived from :data:`WGS84_A` and :data:`WGS84_F`.
 WGS84_B = WGS84_A * (1.0 - WGS84_F)
+#: WGS-84 first eccentricity squared :math:`e^2 = f(2 - f)`, dimensionless, derived from
+#: :data:`WGS84_F`.
 WGS84_E2 = WGS84_F * (2.0 - WGS84_F)
 
+#: GPS L1 carrier frequency :math:`f_{L1}`, Hz: 1575.42 MHz, 154 times the 10.23 MHz
+#: fundamental (IS-GPS-200).
 GPS_L1_HZ = 1_575.42e6
+#: GPS L1 carrier wavelength :math:`c/f_{L1}`, m, derived from :data:`C` and :data:`GPS_L1_HZ`.
 GPS_L1_WAVELENGTH_M = C / GPS_L1_HZ
+#: GPS C/A-code chipping rate, chips/s (Hz): 1.023 MHz (IS-GPS-200).
 GPS_CA_CHIP_RATE_HZ = 1.023e6
+#: Length of one C/A-code chip, m: :data:`C` divided by :data:`GPS_CA_CHIP_RATE_HZ`.
 GPS_CA_CHIP_M = C / GPS_CA_CHIP_RATE_HZ
+#: GPS P(Y)-code chipping rate, chips/s (Hz): 10.23 MHz (IS-GPS-200).
 GPS_P_CHIP_RATE_HZ = 10.23e6
+#: Length of one P(Y)-code chip, m: :data:`C` divided by :data:`GPS_P_CHIP_RATE_HZ`.
 GPS_P_CHIP_M = C / GPS_P_CHIP_RATE_HZ
 
 # --- length and speed ------------------------------------------------------------------
+#: One international foot, in metres: 0.3048 m exactly (1959 agreement).
 FT = 0.3048
+#: One international nautical mile, in metres: 1852 m exactly.
 NMI = 1852.0
+#: One international statute mile, in metres: 5280 ft, 1609.344 m exactly.
 MILE = 1609.344
+#: One kilometre, in metres.
 KM = 1000.0
+#: One hour, in seconds.
 HOUR = 3600.0
+#: One minute, in seconds.
 MINUTE = 60.0
+#: One mile per hour, in m/s (:data:`MILE` / :data:`HOUR`).
 MPH = MILE / HOUR
+#: One knot (one nautical mile per hour), in m/s (:data:`NMI` / :data:`HOUR`).
 KNOT = NMI / HOUR
-NMI_PER_H = NMI / HOUR  # a navigation-grade drift rate is quoted in nmi/h
+#: One nautical mile per hour, in m/s: the same value as :data:`KNOT`, the unit in which a
+#: navigation-grade inertial system's position drift rate is quoted.
+NMI_PER_H = NMI / HOUR
 
 # --- angle -----------------------------------------------------------------------------
+#: One degree, in radians (:math:`\pi/180`).
 DEG = math.pi / 180.0
+#: One minute of arc, in radians (:data:`DEG` / 60).
 ARCMIN = DEG / 60.0
+#: One second of arc, in radians (:data:`DEG` / 3600).
 ARCSEC = DEG / 3600.0
+#: One milliradian, in radians (:math:`10^{-3}` rad).
 MRAD = 1e-3
 
 # --- inertial sensor units -------------------------------------------------------------
+#: One micro-g, in m/s²: :math:`10^{-6}\,g_0` (:data:`G0`), the unit of accelerometer bias.
 MICRO_G = 1e-6 * G0
+#: One milli-g, in m/s²: :math:`10^{-3}\,g_0` (:data:`G0`).
 MILLI_G = 1e-3 * G0
+#: One part per million (:math:`10^{-6}`), dimensionless: the unit of a scale-factor error.
 PPM = 1e-6
+#: One degree per hour, in rad/s: the unit of gyro drift (bias).
 DEG_PER_H = DEG / HOUR
+#: One degree per second, in rad/s.
 DEG_PER_S = DEG
-DEG_PER_SQRT_H = DEG / math.sqrt(HOUR)  # angle random walk -> rad/sqrt(s)
-DEG_PER_H_PER_SQRT_HZ = DEG_PER_H  # root PSD of rate noise: (rad/s)/sqrt(Hz) = rad/sqrt(s)
-MICRO_G_PER_SQRT_HZ = MICRO_G  # root PSD of accel noise: (m/s^2)/sqrt(Hz)
-M_PER_S_PER_SQRT_H = 1.0 / math.sqrt(HOUR)  # velocity random walk -> m/s/sqrt(s)
+#: One degree per root hour, in :math:`\mathrm{rad}/\sqrt{\mathrm{s}}`: the unit of a gyro's
+#: angle random walk.
+DEG_PER_SQRT_H = DEG / math.sqrt(HOUR)
+#: One degree per hour per root hertz, in :math:`(\mathrm{rad/s})/\sqrt{\mathrm{Hz}} =
+#: \mathrm{rad}/\sqrt{\mathrm{s}}`: the unit of a gyro's rate-noise root spectral density
+#: (numerically equal to :data:`DEG_PER_H`).
+DEG_PER_H_PER_SQRT_HZ = DEG_PER_H
+#: One micro-g per root hertz, in :math:`(\mathrm{m/s^2})/\sqrt{\mathrm{Hz}}`: the unit of an
+#: accelerometer's noise root spectral density (numerically equal to :data:`MICRO_G`).
+MICRO_G_PER_SQRT_HZ = MICRO_G
+#: One metre per second per root hour, in :math:`(\mathrm{m/s})/\sqrt{\mathrm{s}}`: the unit
+#: of an accelerometer's velocity random walk (:math:`1/\sqrt{3600}`).
+M_PER_S_PER_SQRT_H = 1.0 / math.sqrt(HOUR)
 
 
 # --- decibels --------------------------------------------------------------------------

@@ -30,6 +30,25 @@ def test_every_claim_locator_names_known_items():
             assert ref in index.entries and claim.id in index.entries[ref].claims
 
 
+def test_equations_checked_under_a_neighbour_show_the_inventorys_claims():
+    """Oracle: the coverage inventory. An equation it counts as checked has claims in the index
+    even when the claim is filed under a neighbouring equation (WF Eq. (1), checked by the claim
+    on Eq. (8)); claims named by a locator are kept as they are."""
+    from navcore import coverage, ledger
+    from navcore.trace import Ref
+
+    index = traceability.build_index()
+    for item in coverage.items():
+        if item.category != "equation" or not item.claims:
+            continue
+        for ref in traceability.claim_refs(item.locator, item.paper):
+            if ref in index.entries:
+                assert index.entries[ref].claims, f"{ref}: the inventory names {item.claims}, the index none"
+    assert index.entries[Ref("WF", "1")].claims == ["WF-eq8-norm"]
+    located = [c.id for c in ledger.claims() if Ref("WF", "8") in traceability.claim_refs(c.locator, c.paper)]
+    assert index.entries[Ref("WF", "8")].claims == located
+
+
 def test_papers_items_are_available_for_the_guard():
     """The guard knows every paper's items: from the texts, or the committed snapshot."""
     missing = [p for p in trace.PAPER_KEYS if traceability.paper_items(p) is None]

@@ -71,7 +71,8 @@ def _rms_figure(example: str) -> Figure:
     caption="rms position error against n for Example I (printed Table 4.2, sigma = 50 ns, c = 1 ft/ns): "
     "least squares at n = 0, optimal clock tracking to the limit, then satellites 1, 2, 3 only from "
     "n = N + 1 (N = 40 assumed; the paper does not state N). Dashed: the printed three-satellite "
-    "formula; thick: the rotation-invariant clock term (erratum E4-1).",
+    "formula; thick: the rotation-invariant clock term (erratum "
+    "ATC10-E4.1-three-satellite-clock-term).",
 )
 def rms_example_i() -> Figure:
     return _rms_figure("I")

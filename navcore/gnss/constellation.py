@@ -47,9 +47,15 @@ __all__ = [
     "visible",
 ]
 
+#: Semi-major axis of the nominal GPS orbits, m: 26 559.7 km (the SPS Performance Standard's
+#: nominal constellation).
 GPS_SEMI_MAJOR_AXIS_M = 26_559_700.0
+#: Inclination of the nominal GPS orbital planes, rad: 55 deg (the SPS Performance Standard's
+#: nominal constellation).
 GPS_INCLINATION_RAD = 55.0 * DEG
-EARTH_MU = 3.986_004_418e14  # WGS-84 gravitational parameter, m^3/s^2
+#: Earth's gravitational parameter :math:`GM`, m³/s²: the WGS-84 value
+#: :math:`3.986\,004\,418 \times 10^{14}` m³/s² (NIMA TR8350.2).
+EARTH_MU = 3.986_004_418e14
 
 
 @dataclass(frozen=True)

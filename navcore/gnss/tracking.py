@@ -305,7 +305,8 @@ def peak_factor() -> float:
     return _peak()[0]
 
 
-#: :math:`\omega_0 t` at which the step error peaks (2.05439).
+#: :math:`\omega_0 t` at which the third-order loop's error after an acceleration step peaks,
+#: dimensionless: the time of the peak that :func:`peak_factor` returns.
 PEAK_TIME_FACTOR = _peak()[1]
 
 

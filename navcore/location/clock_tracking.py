@@ -495,7 +495,7 @@ def position_mse(
 
     For three satellites pass the clock term the caller believes in: the invariant
     :math:`\mathbf{1}'(FF')^{-1} \mathbf{1}` (correct) or the printed
-    :math:`\mathbf{1}'(F'F)^{-1} \mathbf{1}` (erratum E4-1).
+    :math:`\mathbf{1}'(F'F)^{-1} \mathbf{1}` (erratum ATC10-E4.1-three-satellite-clock-term).
 
     Parameters
     ----------
@@ -517,7 +517,8 @@ def position_mse(
     References
     ----------
     Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
-    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (4.5.35) and erratum E4-1.
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (4.5.35) and erratum
+    ATC10-E4.1-three-satellite-clock-term.
 
     Examples
     --------

@@ -16,7 +16,8 @@ All the quality measures of the constellation are functions of the projector
 :math:`P = F (F'F)^{-1} F'` onto the column space of :math:`F`:
 
 * :math:`\beta = K - \mathbf{1}'P\mathbf{1} = \mathbf{1}'(I - P)\mathbf{1}` (Eq. 4.5.2, with
-  the "K minus" reading of the printed ":math:`K^{-1}`", see ATC-10 erratum E4-3);
+  the "K minus" reading of the printed ":math:`K^{-1}`", see the book's ATC-10 erratum on
+  the definition of :math:`\beta`);
 * :math:`\operatorname{tr}\{(F'F)^{-1}\}` (the position-only dilution);
 * the clock-direction term :math:`S = \mathbf{1}'F(F'F)^{-2} F'\mathbf{1}`; for
   :math:`K = 3` it equals the rotation invariant :math:`\mathbf{1}'(FF')^{-1} \mathbf{1}`;
@@ -329,7 +330,7 @@ def clock_direction_term(F: np.ndarray) -> float:
 
     It equals :math:`|(F'F)^{-1} F'\mathbf{1}|^2`; for :math:`K = 3` it is the rotation
     invariant :math:`\mathbf{1}'(FF')^{-1} \mathbf{1}` (the correct quantity for ATC-10
-    Eq. 4.5.30, erratum E4-1).
+    Eq. 4.5.30, erratum ATC10-E4.1-three-satellite-clock-term).
 
     Parameters
     ----------
@@ -349,7 +350,8 @@ def clock_direction_term(F: np.ndarray) -> float:
     References
     ----------
     Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
-    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (4.5.30) and erratum E4-1.
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (4.5.30) and erratum
+    ATC10-E4.1-three-satellite-clock-term.
 
     Examples
     --------
@@ -370,7 +372,7 @@ def frame_dependent_clock_term(F: np.ndarray) -> float:
 
     It is NOT invariant under a rotation of the coordinate frame (:math:`F \to F R'`): kept
     only to
-    reproduce what the paper tabulated (erratum E4-1).
+    reproduce what the paper tabulated (erratum ATC10-E4.1-three-satellite-clock-term).
 
     Parameters
     ----------
@@ -390,7 +392,8 @@ def frame_dependent_clock_term(F: np.ndarray) -> float:
     References
     ----------
     Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
-    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (4.5.30) and erratum E4-1.
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (4.5.30) and erratum
+    ATC10-E4.1-three-satellite-clock-term.
 
     Examples
     --------

@@ -73,7 +73,7 @@ IN.published(
 IN.published(
     "printed_h",
     ((1, 0, 0, 0, -1, 1), (0, 1, 0, 1, 0, -1), (0, 0, 1, -1, 1, 0)),
-    locator="Sec. 2.5, 3x6 sensitivity matrix",
+    locator=r"Sec. 2.5, $3\times 6$ sensitivity matrix",
     quantity="printed sensitivity of the residual acceleration to scale factor and misalignment",
 )
 IN.published(
@@ -170,7 +170,7 @@ ERRATA = [
         paper="SP",
         kind="convention",
         basis="text-only",
-        locator="Sec. 2.5, 3x6 sensitivity matrix",
+        locator=r"Sec. 2.5, $3\times 6$ sensitivity matrix",
         printed="misalignment block "
         "$\\begin{bmatrix}0&-1&1\\\\1&0&-1\\\\-1&1&0\\end{bmatrix}$ after the skew matrix "
         "$[\\delta\\theta \\times]\\, a$",
@@ -322,7 +322,7 @@ CLAIMS = [
     Claim(
         id="SP-sec2.5-H-sign",
         paper="SP",
-        locator="Sec. 2.5, 3x6 sensitivity matrix",
+        locator=r"Sec. 2.5, $3\times 6$ sensitivity matrix",
         quantity="the printed $3\\times 6$ matrix is the sensitivity of "
         "$\\operatorname{diag}(sf)\\, a + [\\delta\\theta \\times]\\, a$ for $a = (1,1,1)$",
         published=True,
