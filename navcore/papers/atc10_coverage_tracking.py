@@ -1250,7 +1250,8 @@ CLAIMS = [
         "Sec. 4.5.4, Sec. 4.6",
         "the invariant $1'(F_3 F_3')^{-1} 1$ exceeds $1'F(F'F)^{-2}F'1$ (all satellites)",
         s_increases_invariant,
-        "Physical geometry: 1.40 > 1.33 (I), 1.19 > 1.18 (II): an increase, though slight (E4-1).",
+        "Physical geometry: 1.40 > 1.33 (I), 1.19 > 1.18 (II): an increase, though slight (erratum "
+        "ATC10-E4.1-three-satellite-clock-term).",
         PAGE_GEOMETRY,
     ),
     _s(

@@ -238,7 +238,8 @@ IN.convention(
     quantity="sign of the printed longitudes (+1 east-positive)",
     reason="Table 4.1 prints longitudes without E/W; the aircraft at 120 deg is in North America "
     "(west), but the printed three-satellite term 5.76/14.3 is reproduced in east-positive ECEF "
-    "(E4-1); every rotation-invariant quantity is the same under both readings",
+    "(erratum ATC10-E4.1-three-satellite-clock-term); every rotation-invariant quantity is the same "
+    "under both readings",
 )
 IN.convention(
     "earth_radius_m",
@@ -442,7 +443,8 @@ def table_4_2_from_geometry(
     """Table 4.2 columns from Table 4.1, plus both readings of the three-satellite clock term.
 
     ``s_123`` is the invariant 1'(F3 F3')^-1 1 (= 1'F3(F3'F3)^-2 F3'1, correct);
-    ``s_123_printed`` is 1'(F3'F3)^-1 1 in ECEF (the printed Eq. 4.5.30, erratum E4-1).
+    ``s_123_printed`` is 1'(F3'F3)^-1 1 in ECEF (the printed Eq. 4.5.30, erratum
+    ATC10-E4.1-three-satellite-clock-term).
     """
     U = example_line_of_sight(example, radius_ratio, west_positive, aircraft_ratio)
     return {
@@ -624,7 +626,8 @@ def table_4_3_cell(example: str, sigma0_nominal: float, column: int) -> float:
 
 
 def corrected_first_three_satellite_sd(example: str, sigma0: float) -> float:
-    """Col. (v) with the invariant S3 (erratum E4-1), geometry at the fitted ratio, steady state."""
+    """Col. (v) with the invariant S3 (erratum ATC10-E4.1-three-satellite-clock-term), geometry at the
+    fitted ratio, steady state."""
     inputs = table_4_2_from_geometry(example, fitted_radius_ratio(), aircraft_ratio=physical_aircraft_ratio())
     return table_4_3_row(inputs, sigma0)[4]
 
@@ -694,7 +697,8 @@ def acceptable_outage_s(example: str, sigma0: float, inputs: dict[str, float]) -
 def invariant_s3_inputs(example: str) -> dict[str, float]:
     """The printed Table 4.2 with col. 5 replaced by the invariant 1'(F3 F3')^-1 1 of the stated system.
 
-    Isolates erratum E4-1: every other quantity is as printed; the invariant term comes from the
+    Isolates erratum ATC10-E4.1-three-satellite-clock-term: every other quantity is as printed; the
+    invariant term comes from the
     synchronous geometry (it stays within 1.33-1.45 (I) and 1.16-1.22 (II) for any orbit radius
     from 5 to 14 Earth radii, so the orbit radius does not matter here).
     """
@@ -1256,7 +1260,8 @@ for (_ex, _s0), _row in TABLE_4_3.items():
             "$S_3 = 1'(F_3F_3')^{-1} 1$ of the stated system (1.40, 1.19), exact $\\psi$, steady-state Eq. "
             "4.5.27 at $m = 1$. The invariant stays within 1.33-1.45 (I) and 1.16-1.22 (II) for any orbit "
             "radius, so this does not rest on the orbit: the printed value needs the frame-dependent $S_3$ "
-            "of the printed Eq. 4.5.30 (erratum E4-1), confirmed on the page by a Monte Carlo of the full "
+            "of the printed Eq. 4.5.30 (erratum ATC10-E4.1-three-satellite-clock-term), confirmed on the "
+            "page by a Monte Carlo of the full "
             "tracker.",
             erratum=_E1,
             oracle=lambda ex=_ex, s0=_s0: _oracle_first_three_satellite_sd(ex, s0),
@@ -1326,7 +1331,8 @@ CLAIMS += [
         "lost measurement update (the growth of the gain). Printed Table 4.2 with the invariant $S_3$ of "
         "the stated system: the two increases carry 87 % and 95 % of the jump at $\\sigma_0$ = 5 ns, but "
         "30 % and 50 % at 50 ns and 8 % and 7 % at 500 ns, where the lost update dominates. With the "
-        "printed $S_3$ (E4-1) they carry 79-100 % in every case and the rule holds.",
+        "printed $S_3$ (erratum ATC10-E4.1-three-satellite-clock-term) they carry 79-100 % in every case "
+        "and the rule holds.",
         erratum=_E1,
         discussed_in=PAGE_EXAMPLES,
     ),
@@ -1377,7 +1383,8 @@ CLAIMS.append(
         "give 27-33 s in Example I and those that give 54-66 s in Example II are two intervals, and they "
         "do not meet. Printed Table 4.2 with the invariant $S_3$ of the stated system, steady state "
         "before the drop, $\\bar\\tau$ = 1 s; a 4000-run Monte Carlo of the tracker confirms the "
-        "coasting times on the page. With the printed $S_3$ (E4-1) a common threshold exists (1.71-1.97 "
+        "coasting times on the page. With the printed $S_3$ (erratum "
+        "ATC10-E4.1-three-satellite-clock-term) a common threshold exists (1.71-1.97 "
         "$\\mathrm{sd}_0$).",
         erratum=_E1,
         oracle=lambda: _oracle_rule4_common_threshold(IN.nominal("rule4_threshold_reference")),
