@@ -1373,7 +1373,9 @@ class Evaluation:
         return tuple(r for r in self.readings if r["agrees"])
 
     def _reading_words(self, reading: dict[str, Any]) -> list[str]:
-        """What a reading changes from the one used, in words, one phrase per changed input."""
+        """What a reading changes from the one used, in words, one phrase per changed input:
+        "the chip rate read as the P code (...)", or, for an input described by a clause rather
+        than a noun ("how much ... must fall"), "a change of more than 1 % for how much ..."."""
         changed = []
         for name, label in reading["reading"].items():
             if name == PRECISION_READING:
@@ -1392,38 +1394,173 @@ class Evaluation:
             # a tuple's items go inside the one pair of parentheses below
             items = value if isinstance(value, tuple | list) else () if value is None else (value,)
             shown = ", ".join(_plain(v) for v in items)
-            if len(items) == 1 and label_prints_value(label, items[0]):
+            if items and all(_label_prints(label, v) for v in items):
                 shown = ""  # "the C/A code, 1.023 Mchip/s" says its value: not again in Hz
             shown = f" ({shown}{' ' + in_unit if in_unit and shown else ''})" if shown else ""
-            changed.append(f"the {quantity} read as {label}{shown}")
+            words = reader_label(label) + shown
+            if quantity.lower().startswith(_CLAUSE_WORDS):
+                changed.append(f"{words} for {quantity}")
+            else:
+                changed.append(f"the {quantity} read as {words}")
         return changed
 
-    def _reading_text(self, reading: dict[str, Any]) -> str:
-        """One reading other than the one used, in words: what differs and what it gives."""
-        unit = "" if self.claim.unit in ("", "statement") else f" {_unit_text(self.claim.unit)}"
-        changed = self._reading_words(reading)
+    def _note_digits(self) -> int:
+        """Significant digits of the numbers a note's generated sentences print: the printed
+        value's, plus two (:func:`note_digits`)."""
+        tol = self.tolerance if isinstance(self.tolerance, Tolerance) else None
+        return note_digits(self.claim, tol)
+
+    def _num(self, value: Any) -> str:
+        """A value of the claim in a generated sentence, at the claim's :meth:`_note_digits`."""
+        return _plain(value, self._note_digits())
+
+    def _range(self, lo: Any, hi: Any, unit: str) -> str:
+        """``"lo to hi unit"``; ``""`` when the two ends print the same."""
+        a, b = self._num(lo), self._num(hi)
+        return "" if a == b else f"{a} to {b}{unit}"
+
+    def _unit(self, value: Any = None) -> str:
+        """The claim's unit after a number (" m"); a count unit in the singular after one."""
+        if self.claim.unit in ("", "statement"):
+            return ""
+        unit = self.claim.unit
+        if unit in COUNT_UNITS and value is not None and not isinstance(value, bool):
+            try:
+                if float(value) == 1:
+                    unit = unit[:-1]
+            except (TypeError, ValueError):
+                pass
+        return f" {_unit_text(unit)}"
+
+    def _reading_outcome(self, reading: dict[str, Any]) -> str:
+        """What one reading gives and whether it agrees: the text after "With ...: "."""
         value = reading["value"]
         band = reading.get("band")
-        text = "With " + " and ".join(changed) + ": "
         # a claim with assumed inputs whose band this reading did not need (the verdict was settled)
         at_nominal = " at the nominal inputs" if band is None and self.band is not None else ""
         if not _is_truth(value):
-            text += _plain(value) + unit + at_nominal
+            text = self._num(value) + self._unit(value) + at_nominal
             if band is not None:
-                text += f" (over the assumed ranges {_plain(band[0])} to {_plain(band[1])}{unit})"
+                spans = self._range(band[0], band[1], self._unit())
+                text += f" (over the assumed ranges {spans})" if spans else ""
         elif band is None or bool(band[0]) == bool(band[1]):
-            text += ("holds" if value else "does not hold") + (
+            text = ("holds" if value else "does not hold") + (
                 " across the assumed ranges" if band else at_nominal
             )
         else:
-            text += (
+            text = (
                 "holds at the nominal inputs, not across all the assumed ranges"
                 if value
                 else "does not hold at the nominal inputs, but holds over part of the assumed ranges"
             )
         if reading["agrees"]:
-            text += ", which agrees with the printed value"
-        return text + "."
+            at_value = band is None or self._agrees_at_value(reading)
+            too_wide = band is not None and reading.get("band_too_wide", False)
+            if at_value and not too_wide:
+                text += ", which agrees with the printed value"
+            elif at_value:
+                text += "; the value agrees with the printed value, but the range is too wide to decide"
+            elif _is_truth(value):
+                text += "; only part of the assumed ranges agrees with the printed value"
+            else:
+                text += "; the value does not agree with the printed value, only part of that range does"
+        return text
+
+    def _agrees_at_value(self, reading: dict[str, Any]) -> bool:
+        """Whether a reading's value itself (not its band) agrees with the printed value."""
+        tol = self.tolerance if isinstance(self.tolerance, Tolerance) else None
+        if tol is None:
+            return bool(reading["agrees"])
+        if reading["reading"].get(PRECISION_READING) == PRECISION_LOOSE:
+            tol = tol.loose() or tol
+        try:
+            return _outcome(self.claim, tol, reading["value"], ()).agrees_at_value
+        except (TypeError, ValueError):
+            return bool(reading["agrees"])
+
+    def _reading_text(self, reading: dict[str, Any]) -> str:
+        """One reading other than the one used, in words: what differs and what it gives."""
+        return (
+            "With " + " and ".join(self._reading_words(reading)) + ": " + self._reading_outcome(reading) + "."
+        )
+
+    def inert_conventions(self) -> tuple[str, ...]:
+        """The conventions read whose other readings change nothing, when the claim reads more
+        than one (a cross product of readings to thin out): every reading that differs from
+        another only in one of them gives the same value, band and agreement (an input the
+        claim's computation reads on its way but whose reading does not reach the result).
+        ``()`` when there is no reading used to compare with."""
+        nominal = next((r for r in self.readings if r["nominal"]), None)
+        if nominal is None:
+            return ()
+        names = list(nominal["reading"])
+        if len(names) < 2:
+            return ()
+        inert = []
+        for name in names:
+            used = nominal["reading"][name]
+            groups: dict[tuple, list[tuple[bool, tuple]]] = {}
+            for r in self.readings:
+                key = tuple(sorted((k, v) for k, v in r["reading"].items() if k != name))
+                groups.setdefault(key, []).append((r["reading"].get(name) == used, _reading_result(r)))
+            varied = [g for g in groups.values() if any(not is_used for is_used, _ in g)]
+            if varied and all(any(is_used for is_used, _ in g) and _same_results(g) for g in varied):
+                inert.append(name)
+        return tuple(inert)
+
+    def shown_readings(self) -> tuple[dict[str, Any], ...]:
+        """The readings other than the one used that a reader is shown: those whose inert
+        conventions (:meth:`inert_conventions`) keep their reading used."""
+        nominal = next((r for r in self.readings if r["nominal"]), None)
+        inert = self.inert_conventions()
+        return tuple(
+            r
+            for r in self.readings
+            if not r["nominal"]
+            and all(r["reading"].get(n) == nominal["reading"][n] for n in inert if nominal is not None)
+        )
+
+    def _readings_sentences(self) -> list[str]:
+        """The sentences on the other readings: one per reading shown, or one for all of them
+        when every combination gives the same; then one naming the conventions whose readings
+        change nothing (:meth:`inert_conventions`)."""
+        shown = self.shown_readings()
+        tails = [self._reading_outcome(r) for r in shown]
+        nominal = next((r for r in self.readings if r["nominal"]), None)
+        extra: list[str] = []
+        if nominal is not None and len(shown) > 1 and len(set(tails)) == 1:
+            labels = _other_labels(nominal, shown)
+            if len(shown) == math.prod(len(ls) + 1 for ls in labels.values()) - 1:
+                together = ", alone or together," if len(labels) > 1 else ""
+                phrases = "; ".join(_alternatives_phrase(n, ls) for n, ls in labels.items())
+                extra.append(f"The other readings{together} give the same ({tails[0]}): {phrases}.")
+                shown = ()
+        extra += [self._reading_text(r) for r in shown]
+        inert = self.inert_conventions()
+        if inert and nominal is not None:
+            labels = _other_labels(nominal, [r for r in self.readings if not r["nominal"]], only=inert)
+            phrases = "; ".join(_alternatives_phrase(n, ls) for n, ls in labels.items())
+            # a reading whose band the verdict did not need was compared at the nominal inputs only
+            kept = [id(r) for r in self.shown_readings()]
+            folded = [r for r in self.readings if not r["nominal"] and id(r) not in kept]
+            what = (
+                "the result at the nominal inputs"
+                if self.band is not None and any(r.get("band") is None for r in folded)
+                else "the result"
+            )
+            if len(labels) > 1 or any(len(ls) > 1 for ls in labels.values()):
+                # "together" only where the readings combine them (else each was run alone)
+                combined = any(
+                    sum(r["reading"].get(n) != nominal["reading"][n] for n in inert) > 1
+                    for r in self.readings
+                )
+                together = (
+                    (", alone or together," if combined else ", each alone,") if len(labels) > 1 else ""
+                )
+                extra.append(f"The other readings{together} leave {what} unchanged: {phrases}.")
+            else:
+                extra.append(f"The other reading leaves {what} unchanged: {phrases}.")
+        return extra
 
     def note(self) -> str:
         """The claim's note, then what the other readings give and why the verdict is what it is.
@@ -1434,7 +1571,7 @@ class Evaluation:
         the assumptions are too loose to decide.
         """
         text = self.claim.note.rstrip()
-        extra = [self._reading_text(r) for r in self.readings if not r["nominal"]]
+        extra = self._readings_sentences()
         nominal = next((r for r in self.readings if r["nominal"]), None)
         if (
             self.status == "consistent"
@@ -1448,7 +1585,7 @@ class Evaluation:
             )
         if self.band_too_wide and self.band is not None:
             lo, hi = self.band
-            unit = "" if self.claim.unit in ("", "statement") else f" {self.claim.unit}"
+            unit = self._unit()
             if self.claim.is_statement:
                 extra.append(
                     ("It" if nominal is None or nominal["agrees"] else "The reading that agrees")
@@ -1457,7 +1594,8 @@ class Evaluation:
                 )
             elif nominal is None or nominal["agrees"]:
                 extra.append(
-                    f"Over the assumed inputs' ranges the value spans {_plain(lo)} to {_plain(hi)}{unit}, "
+                    "Over the assumed inputs' ranges the value spans "
+                    f"{self._num(lo)} to {self._num(hi)}{unit}, "
                     f"ends more than a factor {BAND_FACTOR:g} apart, and the printed value agrees with "
                     "only part of it: the assumptions are too loose to decide."
                 )
@@ -1467,7 +1605,7 @@ class Evaluation:
                     f"a factor {BAND_FACTOR:g} apart: the assumptions are too loose to decide."
                 )
         if self.envelope is not None and self.band is not None:
-            unit = "" if self.claim.unit in ("", "statement") else f" {self.claim.unit}"
+            unit = self._unit()
             n = sum(1 for i in self.inputs if i["provenance"] == "assumed")
             other = next((r for r in self.readings if r.get("undecided") and not r["nominal"]), None)
             if other is not None and not any(r.get("undecided") and r["nominal"] for r in self.readings):
@@ -1477,7 +1615,8 @@ class Evaluation:
                 lead = f"The runs over the {n} assumed inputs do not reach the printed value"
             extra.append(
                 f"{lead}, but the inputs' "
-                f"separate effects add up to {_plain(self.envelope[0])} to {_plain(self.envelope[1])}{unit}, "
+                "separate effects add up to "
+                f"{self._num(self.envelope[0])} to {self._num(self.envelope[1])}{unit}, "
                 f"which does: beyond {MAX_CORNER_INPUTS} inputs the corners run are a sample of the box, "
                 "so the search cannot show the printed value out of reach."
             )
@@ -1543,9 +1682,11 @@ def _unit_text(unit: str) -> str:
     return unit_text(unit) if unit else unit
 
 
-def _plain(value: Any) -> str:
-    r"""A value in a note's text: six significant digits, a very large or small number as
-    inline math (never a program's ``1.023e+06`` or a string of zeros such as ``0.00094007``).
+def _plain(value: Any, digits: int = 6) -> str:
+    r"""A value in a note's text: ``digits`` significant digits (six unless a claim's note asks
+    for its own, :func:`note_digits`), a very large or small number as inline math (never a
+    program's ``1.023e+06`` or a string of zeros such as ``0.00094007``), an infinite one as
+    the symbol.
 
     Examples
     --------
@@ -1553,6 +1694,8 @@ def _plain(value: Any) -> str:
     ('$1.023 \\times 10^{6}$', '$9.4007 \\times 10^{-4}$', '0.0226556', '2.5', 'true')
     >>> _plain(0.00353918)
     '$3.53918 \\times 10^{-3}$'
+    >>> _plain(72.4315, 4), _plain(476.476, 4), _plain(float("inf")), _plain(-float("inf"))
+    ('72.43', '476.5', '∞', '−∞')
 
     A tuple (a reading that sets several numbers) lists its items, each written the same way:
 
@@ -1560,16 +1703,164 @@ def _plain(value: Any) -> str:
     '(6, 4, 55, 0)'
     """
     if isinstance(value, tuple | list):
-        return "(" + ", ".join(_plain(v) for v in value) + ")"
+        return "(" + ", ".join(_plain(v, digits) for v in value) + ")"
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, float):
-        text = f"{value:.6g}"
+        if math.isinf(value):
+            return "∞" if value > 0 else "−∞"
+        if 1 <= abs(value) < 1e6:  # every digit before the point, never 1.2e+03 for 1234.5
+            digits = max(digits, math.floor(math.log10(abs(value))) + 1)
+        text = f"{value:.{digits}g}"
         if value != 0 and abs(value) < 1e-2 and "e" not in text:  # else eight decimals or more
-            mantissa, exponent = f"{value:.5e}".split("e")
+            mantissa, exponent = f"{value:.{digits - 1}e}".split("e")
             text = mantissa.rstrip("0").rstrip(".") + "e" + exponent
         return _number_math(text)
     return str(value)
+
+
+def note_digits(claim: Claim, tol: Tolerance | None = None) -> int:
+    """Significant digits of the numbers in a claim's generated sentences: those of the
+    printed number plus two, between 3 and 6 (4 for a statement). The printed number's digits
+    are counted as printed when its tolerance was fixed from them; else they are those its
+    tolerance resolves (an absolute half unit, or a relative one: 10 % is one digit); else
+    those of the published value.
+
+    Examples
+    --------
+    >>> value, tol = printed("11")
+    >>> c = Claim(id="SP-doc-digits", paper="SP", locator="T", quantity="q", published=value,
+    ...           unit="m", compute=lambda: 1.0, tolerance=tol, expected_status="reproduced", note="n")
+    >>> note_digits(c, tol), note_digits(c, printed("5.250")[1]), note_digits(c, printed("0.5")[1])
+    (4, 6, 3)
+    """
+    if claim.is_statement or isinstance(claim.published, bool):
+        return 4
+    pub = abs(float(claim.published))
+    source = claim_quote(claim, tol)[1] if tol is not None else "none"
+    if source == "digits" and tol is not None:
+        number = re.search(r"\d[\d.]*", tol.quote.replace(" ", ""))
+        sig = len((number.group(0) if number else "").replace(".", "").lstrip("0"))
+    elif tol is not None and tol.abs and pub > 0:
+        sig = math.floor(math.log10(pub)) - math.floor(math.log10(2 * tol.abs)) + 1
+    elif tol is not None and tol.rel:
+        sig = max(1, -math.floor(math.log10(tol.rel)))
+    else:
+        sig = len(f"{pub:.6g}".split("e")[0].replace(".", "").lstrip("0").rstrip("0"))
+    return min(6, max(3, sig + 2))
+
+
+#: Plural count units that read in the singular after exactly one ("1 interval").
+COUNT_UNITS = ("states", "channels", "satellites", "entries", "cases", "intervals", "lists", "units", "runs")
+
+#: Words that open a clause rather than a noun phrase: an input described so ("how much the
+#: velocity error must fall ...") is named after its reading, not after "the".
+_CLAUSE_WORDS = ("how ", "what ", "whether ", "which ", "when ", "where ", "why ", "who ")
+
+
+def reader_label(label: str) -> str:
+    """A reading's label as a generated sentence shows it: "the prose table" named for a
+    reader, as the ledger page names it.
+
+    Examples
+    --------
+    >>> reader_label("within 10 %, the prose table's 'nearly'")
+    "within 10 % ('nearly' in the ledger's table of prose words)"
+    >>> reader_label("2 to 5 s, the prose table's reading")
+    "2 to 5 s, the reading of the ledger's table of prose words"
+    """
+    label = re.sub(r",? the prose table's ('[^']*')", r" (\1 in the ledger's table of prose words)", label)
+    label = label.replace("the prose table's reading", "the reading of the ledger's table of prose words")
+    return label.replace("the prose table", "the ledger's table of prose words")
+
+
+def _input_or_none(name: str) -> Any:
+    try:
+        return get_input(name)
+    except ValueError:
+        return None
+
+
+def _quantity_phrase(name: str) -> str:
+    """An input named in a sentence: "the chip rate", or its clause as it stands."""
+    quantity = _label_and_unit(name)[0]
+    return quantity if quantity.lower().startswith(_CLAUSE_WORDS) else f"the {quantity}"
+
+
+def _other_labels(
+    nominal: dict[str, Any], readings: Sequence[dict[str, Any]], only: Sequence[str] | None = None
+) -> dict[str, list[str]]:
+    """Per input, the labels other than the one used that the readings give it, in order."""
+    labels: dict[str, list[str]] = {}
+    for r in readings:
+        for name, label in r["reading"].items():
+            if (only is None or name in only) and label != nominal["reading"].get(name, PRECISION_STRICT):
+                labels.setdefault(name, [])
+                if label not in labels[name]:
+                    labels[name].append(label)
+    return labels
+
+
+def _alternatives_phrase(name: str, labels: Sequence[str]) -> str:
+    """An input and its other readings in words: "the chip rate read as the P code or as ...",
+    or "x or y for how much ..." for an input described by a clause."""
+    if name == PRECISION_READING:  # "trailing zeros not significant": taken so
+        return "the printed number's " + " or ".join(
+            lab.replace("trailing zeros ", "trailing zeros taken as ", 1) for lab in labels
+        )
+    words = [reader_label(lab) for lab in labels]
+    quantity = _label_and_unit(name)[0]
+    if quantity.lower().startswith(_CLAUSE_WORDS):
+        return " or ".join(words) + f" for {quantity}"
+    return f"the {quantity} read as " + " or as ".join(words)
+
+
+def _label_prints(label: str, value: Any) -> bool:
+    """Whether a reading's label prints this one of its values, as far as a reader can tell:
+    :func:`label_prints_value`, or one of the label's numbers (times a power of 1000) within
+    its last printed digits of the value (0.98357 ft/ns for 0.983571), or a zero the label
+    prints; a code word (a string) is never shown, so it counts as printed."""
+    if isinstance(value, str):
+        return True
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        return False
+    if value == 0:
+        return 0.0 in quote_numbers(label)
+    target = float(value)
+    return label_prints_value(label, value) or any(
+        abs(n * 1000.0**k - target) <= 5e-6 * abs(target) for n in quote_numbers(label) for k in range(-4, 5)
+    )
+
+
+def _same_results(group: list[tuple[bool, tuple]]) -> bool:
+    """Whether readings give the same (:func:`_reading_result`): the same value and agreement,
+    and the same band and band flag among those that ran one (a reading whose band the verdict
+    did not need has none)."""
+    results = [res for _, res in group]
+    banded = [r for r in results if r[1] is not None]
+    return (
+        len({(r[0], r[2]) for r in results}) == 1
+        and len({r[1] for r in banded}) <= 1
+        and len({r[3] for r in banded}) <= 1
+    )
+
+
+def _reading_result(reading: dict[str, Any]) -> tuple:
+    """What a reading gives, comparable: value, band, agreement and band flag."""
+
+    def key(v: Any) -> Any:
+        try:
+            return _json_value(v)
+        except (TypeError, ValueError):
+            return repr(v)
+
+    band = reading.get("band")
+    return (
+        key(reading["value"]),
+        None if band is None else tuple(key(b) for b in band),
+        bool(reading["agrees"]),
+        bool(reading.get("band_too_wide", False)),
+    )
 
 
 def _json_value(value: Any) -> Any:

@@ -20,7 +20,9 @@ from typing import Any
 
 from navcore.formatting import format_number
 from navcore.ledger.core import (
+    COUNT_UNITS,
     ERRATUM_BASES,
+    PRECISION_STRICT,
     STATUSES,
     TEXT_ONLY_CAVEAT,
     Erratum,
@@ -28,6 +30,7 @@ from navcore.ledger.core import (
     _n_runs,
     claim_quote,
     left_out_of_band,
+    reader_label,
 )
 from navcore.ledger.core import _is_truth as _core_is_truth
 from navcore.ledger.inputs import _label_and_unit, get_input
@@ -562,8 +565,8 @@ def _plain_with_unit(value: str, unit: str) -> str:
     return f"{value} {unit_text(unit)}"
 
 
-#: Plural count units that read in the singular after exactly one.
-_COUNT_UNITS = ("states", "channels", "satellites", "entries", "cases", "intervals", "lists")
+#: Plural count units that read in the singular after exactly one (the core's list).
+_COUNT_UNITS = COUNT_UNITS
 
 
 # ---------------------------------------------------------------------------------------
@@ -1670,6 +1673,53 @@ def _reading_label(name: str, value: Any) -> str | None:
     return next((label for label, v in inp.readings if v == value), None)
 
 
+#: Longest text of a table-valued input in a claim's inputs; longer ones end after a row.
+_TABLE_TEXT_WIDTH = 100
+
+
+def _table_value_text(value: Any) -> str | None:
+    r"""A table-valued input (rows of cells, or a mapping) as a reader reads it, never as Python
+    prints a list: a numeric matrix by its size ("a $3 \times 6$ matrix"), other rows as
+    their cells ("Position 3, Velocity 3, ..."), cut after a row and counted when long;
+    ``None`` for a value that is not a table.
+
+    Examples
+    --------
+    >>> _table_value_text([["Position", 3], ["Velocity", 3]])
+    'Position 3, Velocity 3'
+    >>> _table_value_text([[1, 0, -1], [0, 1, 0]])
+    'a $2 \\times 3$ matrix'
+    >>> _table_value_text([["a long row name " * 3, i] for i in range(5)])[-8:]
+    '(5 rows)'
+    >>> _table_value_text([1, 2]) is None
+    True
+    """
+    if isinstance(value, dict):
+        rows: list[Any] = [[k, v] for k, v in value.items()]
+    elif isinstance(value, list | tuple) and value and all(isinstance(r, list | tuple) for r in value):
+        rows = list(value)
+    else:
+        return None
+    numeric = all(isinstance(c, int | float) and not isinstance(c, bool) for r in rows for c in r)
+    widths = {len(r) for r in rows}
+    if numeric and len(widths) == 1:
+        return f"a ${len(rows)} \\times {widths.pop()}$ matrix"
+
+    def cell(c: Any) -> str:
+        return format_value(c) if isinstance(c, int | float) else str(c)
+
+    texts = [" ".join(cell(c) for c in r) for r in rows]
+    whole = ", ".join(texts)
+    if len(whole) <= _TABLE_TEXT_WIDTH:
+        return whole
+    kept: list[str] = []
+    for t in texts:
+        if len(", ".join([*kept, t])) > _TABLE_TEXT_WIDTH - 12:
+            break
+        kept.append(t)
+    return ", ".join(kept) + f", … ({len(rows)} rows)"
+
+
 def _inputs_text(e: Evaluation) -> str:
     """The inputs the computation read: name, value (a convention's code word as its reading's
     words), where it comes from."""
@@ -1684,6 +1734,9 @@ def _inputs_text(e: Evaluation) -> str:
             isinstance(v, int | float) and not isinstance(v, bool) for v in value
         ):  # a reading that sets several numbers: each as a number, not as Python prints a list
             shown = "(" + ", ".join(format_value(v) for v in value) + ")"
+        elif (table := _table_value_text(value)) is not None:
+            shown = table
+            reading = table  # already short: not cut below
         else:
             shown = format_value(value) if isinstance(value, int | float) else str(value)
         if reading is None and len(shown) > 40:
@@ -1698,12 +1751,18 @@ def _inputs_text(e: Evaluation) -> str:
 
 
 def _band_text(e: Evaluation) -> str:
+    """The details' band line: its ends at the digits of the note's sentences (one precision per
+    claim, :func:`~navcore.ledger.core.note_digits`); ``""`` when they print the same."""
     if e.band is None or e.claim.is_statement:
         return ""
     lo, hi = e.band
+    digits = e._note_digits()
+    low, high = format_value(lo, digits), format_value(hi, digits)
+    if low == high:  # a range whose two ends print the same: no range
+        return ""
     left_out = left_out_of_band(e)
     return (
-        f"{format_value(lo)} to {format_value(hi)}"
+        f"{low} to {high}"
         + (f" {unit_text(e.claim.unit)}" if e.claim.unit not in ("", "statement") else "")
         + (f" (left out, outside the model's domain: {left_out})" if left_out else "")
     )
@@ -1711,17 +1770,36 @@ def _band_text(e: Evaluation) -> str:
 
 def _agreeing_reading_text(e: Evaluation) -> str:
     """Where only readings other than the one used agree, or the one used agrees only over a
-    band too wide to decide while another decides: "agrees under: <labels>"."""
+    band too wide to decide while another decides: "agrees under: <labels>".
+
+    Each agreeing reading the note shows (:meth:`~navcore.ledger.core.Evaluation.shown_readings`:
+    not those that differ only in conventions whose readings change nothing) is named by what
+    it changes from the one used (the labels of the reading used are not repeated); a reading
+    that only adds changes to another agreeing reading listed is left out."""
     nominal = next((r for r in e.readings if r["nominal"]), None)
     if nominal is None:
         return ""
+    # the readings the note shows: those of conventions that change nothing are folded away
+    shown = e.shown_readings()
     if nominal["agrees"]:
         if not nominal.get("band_too_wide") or e.status != "consistent":
             return ""
-        agreeing = [r for r in e.readings if r["agrees"] and not r.get("band_too_wide") and not r["nominal"]]
+        agreeing = [r for r in shown if r["agrees"] and not r.get("band_too_wide")]
     else:
-        agreeing = [r for r in e.readings if r["agrees"]]
-    labels = ["; ".join(r["reading"].values()) for r in agreeing]
+        agreeing = [r for r in shown if r["agrees"]]
+    inert = set(e.inert_conventions())
+    changes = []
+    for r in agreeing:
+        changed = tuple(
+            (name, label)
+            for name, label in r["reading"].items()
+            if name not in inert and label != nominal["reading"].get(name, PRECISION_STRICT)
+        )
+        if changed and changed not in changes:
+            changes.append(changed)
+    # a reading whose changes include another listed reading's adds nothing to "agrees under"
+    minimal = [c for c in changes if not any(set(o) < set(c) for o in changes)]
+    labels = ["; ".join(reader_label(label) for _, label in c) for c in minimal]
     return "agrees under: " + " / ".join(labels) if labels else ""
 
 
@@ -2681,6 +2759,8 @@ def _band_html(record: dict[str, Any], unit: str) -> str:
         if low == high:
             return "holds throughout" if low else "fails throughout"
         return "holds for some inputs"
+    if format_value(low) == format_value(high):  # both ends print the same: no range to show
+        return ""
     ends = (
         format_value(low),
         format_value(high) + (f" {unit_text(unit)}" if unit not in ("", "statement") else ""),
