@@ -676,6 +676,11 @@ def _findings_phrase(items: Any) -> str:
     return findings_phrase(items)
 
 
+def _claims_count(n: int) -> str:
+    """``"1 claim"``, ``"46 claims"``."""
+    return f"{n} claim{'' if n == 1 else 's'}"
+
+
 def chapter_summary(paper: str) -> Markdown:
     """A box for the top of a chapter: its findings by basis and kind, then its claims by verdict.
 
@@ -718,14 +723,14 @@ def chapter_summary(paper: str) -> Markdown:
     ...     with mock.patch("navcore.ledger.evaluations", return_value=[ev]):
     ...         with mock.patch("navcore.ledger.errata", return_value=(e,)):
     ...             chapter_summary("SP")
-    **Ledger for SP:** 1 finding: 1 text-only (1 typography). 1 claims — 1 reproduced; every check passes.
+    **Ledger for SP:** 1 finding: 1 text-only (1 typography). 1 claim — 1 reproduced; every check passes.
     """
     c = ledger.counts(paper)[paper]
     failing = sum(not e.passes for e in ledger.evaluations(paper))
     found = ledger.errata(paper)
     parts = [f"{c[s]} {s}" for s in STATUSES if c[s]]
     md = (
-        f"**Ledger for {paper}:** {_findings_phrase(found)}. {c['total']} claims — "
+        f"**Ledger for {paper}:** {_findings_phrase(found)}. {_claims_count(c['total'])} — "
         + ", ".join(parts)
         + (f"; **{failing} failing their check**" if failing else "; every check passes")
         + "."
@@ -736,7 +741,7 @@ def chapter_summary(paper: str) -> Markdown:
     )
     html_text = (
         f'<div class="ledger-summary"><b>Ledger for {paper}:</b> {html.escape(_findings_phrase(found))}.'
-        f"<br>{c['total']} claims &nbsp; {chips}"
+        f"<br>{_claims_count(c['total'])} &nbsp; {chips}"
         + (f"<b class='ledger-failing'>{failing} failing</b>" if failing else "every check passes")
         + "</div>"
     )
