@@ -73,13 +73,16 @@ __all__ = [
     "figure_claims",
     "figures_frame",
     "figures_table",
+    "findings_frame",
     "findings_phrase",
     "fitted_frame",
+    "moved_claims",
     "overview_text",
     "to_latex",
     "to_markdown",
     "to_text",
     "unresolved_frame",
+    "unresolved_notes",
     "verdicts_frame",
     "write_pdf",
     "write_reports",
@@ -135,6 +138,7 @@ class Table:
 
     head: tuple[str, ...]
     rows: tuple[tuple[str, ...], ...]
+    ids: tuple[str, ...] = ()  # per row, the file a renderer may link its first cell to
 
 
 @dataclass(frozen=True)
@@ -194,17 +198,56 @@ def findings_phrase(items: Sequence[Erratum]) -> str:
     --------
     >>> findings_phrase([])
     '0 findings'
+    >>> from navcore.ledger import Erratum
+    >>> findings_phrase([Erratum(id="SP-E9-doc", paper="SP", locator="Eq. (1)", printed="m",
+    ...                          finding="km", evidence="the scale", kind="units", basis="text-only")])
+    '1 finding: 1 text-only (1 unit)'
     """
     parts = []
     for b in ERRATUM_BASES:
         sel = [e for e in items if e.basis == b]
         if sel:
             kinds = ", ".join(
-                f"{n} {k.replace('-', ' ')}" for k in ERRATUM_KINDS if (n := sum(e.kind == k for e in sel))
+                f"{n} {'unit' if n == 1 and k == 'units' else k.replace('-', ' ')}"
+                for k in ERRATUM_KINDS
+                if (n := sum(e.kind == k for e in sel))
             )
             parts.append(f"{len(sel)} {b} ({kinds})")
     n = len(items)
     return f"{n} finding{'' if n == 1 else 's'}" + (": " + ", ".join(parts) if parts else "")
+
+
+def findings_frame(errata: Sequence[Erratum]) -> Any:
+    """The findings counted by kind (rows) and basis (columns), with the totals.
+
+    One row per kind and a column per basis, so that the table is narrow and its headings stay
+    whole words (kinds as columns broke "typo-graphy", "con-vention" in a text column).
+
+    Returns
+    -------
+    pandas.DataFrame
+        Columns ``Kind``, one per basis that has findings, and ``all``; one row per kind of
+        :data:`~navcore.ledger.core.ERRATUM_KINDS` and a last row ``all``, the counts of
+        :func:`navcore.ledger.summary.findings_count_table`.
+
+    Examples
+    --------
+    >>> findings_frame([]).columns.tolist()
+    ['Kind', 'all']
+    """
+    import pandas as pd
+
+    from navcore.ledger.summary import findings_count_table
+
+    rows = [r for r in findings_count_table(errata) if r["paper"] != "all" or r["basis"] == "all"]
+    by_basis = {("all" if r["paper"] == "all" else r["basis"]): r for r in rows}
+    bases = [b for b in ERRATUM_BASES if b in by_basis] + ["all"]
+    body = [
+        {"Kind": k.replace("-", " "), **{b: int(by_basis[b][k]) if b in by_basis else 0 for b in bases}}
+        for k in ERRATUM_KINDS
+    ]
+    body.append({"Kind": "all", **{b: int(by_basis[b]["total"]) if b in by_basis else 0 for b in bases}})
+    return pd.DataFrame(body, columns=["Kind", *bases])
 
 
 def _count_phrase(evals: Sequence[Evaluation]) -> str:
@@ -251,17 +294,34 @@ def overview_text(paper: str, evals: Sequence[Evaluation], errata: Sequence[Erra
     )
 
 
+#: What the coverage table's last column holds beyond the items its counts count.
+COVERAGE_NOTE = (
+    "The last column lists every item of the section left without a claim: besides printed "
+    "numbers, checkable statements and numbered equations, the inputs the paper gives and "
+    "printed text with nothing to compute, which the counts do not include."
+)
+
+
 def coverage_frame(paper: str) -> Any:
     """Per section of the paper: printed items, those with a claim, equations, and what is left.
 
     Returns
     -------
     pandas.DataFrame
-        :func:`navcore.coverage.sections_frame` of ``paper``.
+        :func:`navcore.coverage.sections_frame` of ``paper``, each item left written "item —
+        reason" (a reason in parentheses after an item would nest the reason's own).
     """
     from navcore import coverage
 
-    return coverage.sections_frame(check_paper(paper))
+    frame = coverage.sections_frame(check_paper(paper))
+    left = [
+        "; ".join(f"{i.printed} \u2014 {i.reason}" for i in r["left"]) or "—"
+        for r in coverage.section_rows(paper)
+    ]
+    column = frame.columns[-1]
+    if len(left) == len(frame):
+        frame[column] = left
+    return frame
 
 
 def verdicts_frame(evals: Sequence[Evaluation]) -> Any:
@@ -287,6 +347,32 @@ def verdicts_frame(evals: Sequence[Evaluation]) -> Any:
     return kind_counts_frame(evals).drop(columns="Paper")
 
 
+def _shared_notes(evals: Sequence[Evaluation]) -> dict[str, tuple[str, list[str]]]:
+    """The notes that two or more unsettled claims share: note -> (its letter, the claims' ids)."""
+    by_note: dict[str, list[str]] = {}
+    for e in evals:
+        if e.status in UNRESOLVED and e.claim.note:
+            by_note.setdefault(e.claim.note, []).append(e.claim.id)
+    shared = [(note, ids) for note, ids in by_note.items() if len(ids) > 1]
+    letters = [chr(ord("A") + i) if i < 26 else f"A{i - 25}" for i in range(len(shared))]
+    return {note: (letter, ids) for letter, (note, ids) in zip(letters, shared, strict=True)}
+
+
+def unresolved_notes(evals: Sequence[Evaluation]) -> list[str]:
+    """The notes that two or more of :func:`unresolved_frame`'s claims share, each said once.
+
+    Returns
+    -------
+    list of str
+        One paragraph per shared note: its letter (the ``Why`` cell of each of its claims
+        names it), the claims it is for and the note.
+    """
+    return [
+        f"**Note {letter}**, for these {len(ids)} claims ({_ids(ids)}): {note}"
+        for note, (letter, ids) in _shared_notes(evals).items()
+    ]
+
+
 def unresolved_frame(evals: Sequence[Evaluation]) -> Any:
     """The inconsistent and not-reproducible claims, each with what was printed and computed, and why.
 
@@ -295,7 +381,9 @@ def unresolved_frame(evals: Sequence[Evaluation]) -> Any:
     pandas.DataFrame
         Columns ``Claim``, ``Verdict``, ``Where``, ``Printed``, ``Computed`` (the value at the
         nominal inputs, and the band over the assumed inputs' ranges when one was run) and
-        ``Why`` (the claim's note, and the readings that agree when only others do).
+        ``Why`` (the claim's note, and the readings that agree when only others do). A note
+        that several of these claims share is said once (:func:`unresolved_notes`); their
+        ``Why`` cells name it ("See note A.").
     """
     import pandas as pd
 
@@ -307,6 +395,7 @@ def unresolved_frame(evals: Sequence[Evaluation]) -> Any:
         quote_text,
     )
 
+    shared = _shared_notes(evals)
     rows = []
     for e in evals:
         if e.status not in UNRESOLVED:
@@ -314,11 +403,12 @@ def unresolved_frame(evals: Sequence[Evaluation]) -> Any:
         computed = _reproduced_text(e)
         band = _band_text(e)
         if band:
-            computed += f" (band {band})"
-        why = e.claim.note
+            computed += f"; band {band}"
+        note = e.claim.note
+        why = f"See note {shared[note][0]}." if note in shared else note
         agreeing = _agreeing_reading_text(e)
         if agreeing:
-            why += f" ({agreeing})"
+            why = f"{why.rstrip('.')}; {agreeing}." if why else agreeing
         rows.append(
             {
                 "Claim": e.claim.id,
@@ -350,6 +440,63 @@ def _ids(ids: Sequence[str]) -> str:
     )
 
 
+#: A cell of claim ids longer than this (characters) names only their number; the ids follow the
+#: table (:func:`moved_claims`), so that no row of a printed table outgrows a page.
+MAX_IDS_CELL = 160
+
+
+def _ids_cell(ids: Sequence[str]) -> str:
+    """The claim ids of a table cell, or their number when the list is long (listed after the table).
+
+    Examples
+    --------
+    >>> _ids_cell(["SP-t2-a", "SP-t2-b"])
+    'SP-t2-(a, b)'
+    >>> _ids_cell([f"SP-claim-{i}-number" for i in range(20)])
+    '20 claims, listed after the table'
+    """
+    text = _ids(ids)
+    return text if len(text) <= MAX_IDS_CELL else f"{len(ids)} claims, listed after the table"
+
+
+def _readers(evals: Sequence[Evaluation], provenance: str) -> list[tuple[Any, list[str]]]:
+    from navcore.ledger.summary import input_readers
+
+    return input_readers(evals, provenance)
+
+
+def moved_claims(evals: Sequence[Evaluation], provenance: str) -> list[str]:
+    """The long claim lists of an inputs table, one paragraph per input, to follow the table.
+
+    Parameters
+    ----------
+    evals : sequence of Evaluation
+        The paper's evaluations.
+    provenance : str
+        ``"assumed"``, ``"fitted"`` or ``"convention"``.
+
+    Returns
+    -------
+    list of str
+        For each input whose cell in :func:`assumed_frame`, :func:`fitted_frame` or
+        :func:`conventions_frame` gives only a number of claims: its name (as the table's
+        first column gives it), the number and every claim id.
+    """
+    frames = {"assumed": assumed_frame, "fitted": fitted_frame, "convention": conventions_frame}
+    frame = frames[provenance](evals)
+    out = []
+    for name, (_, ids) in zip(frame.iloc[:, 0], _readers(evals, provenance), strict=True):
+        if len(_ids(ids)) > MAX_IDS_CELL:
+            out.append(f"**{name}** ({len(ids)} claims): {_ids(ids)}.")
+    return out
+
+
+def _no_double_parentheses(text: str) -> str:
+    """``"label ((6, 4, 55, 15))"`` -> ``"label (6, 4, 55, 15)"``: a tuple shown in parentheses
+    keeps one pair."""
+    return re.sub(r"\(\(([^()]*)\)\)", r"(\1)", text) if isinstance(text, str) else text
+
+
 def assumed_frame(evals: Sequence[Evaluation]) -> Any:
     """The assumed inputs the claims read: nominal, range, reason, and the claims each moves.
 
@@ -357,13 +504,14 @@ def assumed_frame(evals: Sequence[Evaluation]) -> Any:
     -------
     pandas.DataFrame
         :func:`navcore.ledger.summary.assumed_inputs_frame` with the ids of the claims that
-        read each input (column ``Claims it moves``) in place of their number.
+        read each input (column ``Claims it moves``) in place of their number; a long list
+        gives only its number and follows the table (:func:`moved_claims`).
     """
-    from navcore.ledger.summary import assumed_inputs_frame, input_readers
+    from navcore.ledger.summary import assumed_inputs_frame
 
     frame = assumed_inputs_frame(evals).drop(columns="Paper")
-    frame["Claims"] = [_ids(ids) for _, ids in input_readers(evals, "assumed")]
-    return frame.rename(columns={"Claims": "Claims it moves"})
+    frame["Claims"] = [_ids_cell(ids) for _, ids in _readers(evals, "assumed")]
+    return frame.rename(columns={"Claims": "Claims it moves"}).map(_no_double_parentheses)
 
 
 def fitted_frame(evals: Sequence[Evaluation]) -> Any:
@@ -373,13 +521,14 @@ def fitted_frame(evals: Sequence[Evaluation]) -> Any:
     -------
     pandas.DataFrame
         :func:`navcore.ledger.summary.fitted_inputs_frame` with the ids of the claims that
-        read each parameter (column ``Read by``) in place of their number.
+        read each parameter (column ``Read by``) in place of their number; a long list gives
+        only its number and follows the table (:func:`moved_claims`).
     """
-    from navcore.ledger.summary import fitted_inputs_frame, input_readers
+    from navcore.ledger.summary import fitted_inputs_frame
 
     frame = fitted_inputs_frame(evals).drop(columns="Paper")
-    frame["Claims reading it"] = [_ids(ids) for _, ids in input_readers(evals, "fitted")]
-    return frame.rename(columns={"Claims reading it": "Read by"})
+    frame["Claims reading it"] = [_ids_cell(ids) for _, ids in _readers(evals, "fitted")]
+    return frame.rename(columns={"Claims reading it": "Read by"}).map(_no_double_parentheses)
 
 
 def conventions_frame(evals: Sequence[Evaluation]) -> Any:
@@ -389,13 +538,14 @@ def conventions_frame(evals: Sequence[Evaluation]) -> Any:
     -------
     pandas.DataFrame
         :func:`navcore.ledger.summary.convention_inputs_frame` with the ids of the claims
-        that read each convention (column ``Claims it moves``) in place of their number.
+        that read each convention (column ``Claims it moves``) in place of their number; a
+        long list gives only its number and follows the table (:func:`moved_claims`).
     """
-    from navcore.ledger.summary import convention_inputs_frame, input_readers
+    from navcore.ledger.summary import convention_inputs_frame
 
     frame = convention_inputs_frame(evals).drop(columns="Paper")
-    frame["Claims"] = [_ids(ids) for _, ids in input_readers(evals, "convention")]
-    return frame.rename(columns={"Claims": "Claims it moves"})
+    frame["Claims"] = [_ids_cell(ids) for _, ids in _readers(evals, "convention")]
+    return frame.rename(columns={"Claims": "Claims it moves"}).map(_no_double_parentheses)
 
 
 _FIG_REF = re.compile(r"\bFigs?\.\s+(\d+(?:\.\d+)*)(?:\s*(?:-|–|to|and)\s*(\d+(?:\.\d+)*))?")
@@ -457,6 +607,33 @@ def _figure_pages(book_dir: Path) -> dict[str, tuple[str, str]]:
     return out
 
 
+#: A figure name that carries the paper's figure number (book/_ext/book_presentation.py, which
+#: numbers the book's figures: the paper's number where a figure redraws one, else N1, N2, ...
+#: per chapter in the order of its pages).
+_PAPER_FIGURE_NAME = re.compile(r"^fig-(?:wf|sp|atc10|kzl)-(?:fig)?\d+(?:-\d+)*(?:-to-\d+(?:-\d+)*)?$")
+
+
+def _own_figure_numbers(book_dir: Path, paper: str) -> dict[str, str]:
+    """Each figure of the book's own in ``paper``'s chapter -> its number there ("N1", ...).
+
+    The chapter's pages are its index and then its numbered pages in name order (the book's
+    table of contents globs them so); within a page, its figures in order.
+    """
+    folder = book_dir / paper.lower()
+    if not folder.is_dir():
+        return {}
+    pages = [folder / "index.md", *sorted(folder.glob("[0-9]*.md"))]
+    out: dict[str, str] = {}
+    for page in pages:
+        if not page.is_file():
+            continue
+        for m in _GLUE_FIGURE.finditer(page.read_text(encoding="utf-8")):
+            name = m.group(2)
+            if name and not _PAPER_FIGURE_NAME.match(name):
+                out.setdefault(m.group(1), f"N{len(out) + 1}")
+    return out
+
+
 def _page_titles(book_dir: Path) -> dict[str, str]:
     if not book_dir.is_dir():
         return {}
@@ -484,10 +661,11 @@ def figures_frame(paper: str, evals: Sequence[Evaluation], book_dir: Path | None
     Returns
     -------
     pandas.DataFrame
-        Columns ``Figure`` (the reproduced figure's id), ``Redraws`` (the paper's figure, or
-        a dash for a figure of the book's own), ``Claims that check it`` (id and verdict),
-        ``Shown in`` (the page's title) and, hidden from the tables, ``page`` and
-        ``anchor`` (for links).
+        Columns ``Figure`` (the figure as the book numbers it: the paper's number, or N1, N2,
+        ... for a figure of the book's own; its id when the book is absent), ``Redraws`` (the
+        paper's figure, or "not in the paper"), ``Claims that check it`` (id and verdict),
+        ``Shown in`` (the page's title) and, hidden from the tables, ``page``, ``anchor``
+        (for links) and ``id`` (the figure's file name).
     """
     import pandas as pd
 
@@ -497,24 +675,30 @@ def figures_frame(paper: str, evals: Sequence[Evaluation], book_dir: Path | None
     book_dir = project_root() / "book" if book_dir is None else Path(book_dir)
     shown = _figure_pages(book_dir)
     titles = _page_titles(book_dir)
+    own = _own_figure_numbers(book_dir, paper)
     rows = []
     specs = [s for s in figures.registry().values() if s.paper == paper]
     specs.sort(key=lambda s: (s.reproduces == "new", _fig_key(s.reproduces), s.id))
     for s in specs:
         checks = figure_claims(s.reproduces, evals)
         page, anchor = shown.get(s.id, ("", ""))
+        if s.reproduces != "new":
+            number = s.reproduces if s.id in shown or not shown else s.id
+        else:
+            number = f"Fig. {own[s.id]}" if s.id in own else s.id
         rows.append(
             {
-                "Figure": s.id,
-                "Redraws": "— (the book's own)" if s.reproduces == "new" else s.reproduces,
+                "Figure": number,
+                "Redraws": "not in the paper" if s.reproduces == "new" else s.reproduces,
                 "Claims that check it": ", ".join(f"{e.claim.id} ({e.status})" for e in checks)
                 or "no claim names it",
                 "Shown in": titles.get(page, ""),
                 "page": page,
                 "anchor": anchor,
+                "id": s.id,
             }
         )
-    columns = ["Figure", "Redraws", "Claims that check it", "Shown in", "page", "anchor"]
+    columns = ["Figure", "Redraws", "Claims that check it", "Shown in", "page", "anchor", "id"]
     return pd.DataFrame(rows, columns=columns)
 
 
@@ -532,7 +716,7 @@ class FiguresTable:
     def __init__(self, frame: Any, root: str) -> None:
         import html
 
-        self.plain = frame.drop(columns=["page", "anchor"])
+        self.plain = frame.drop(columns=["page", "anchor", "id"])
         linked = self.plain.copy()
         shown = []
         for page, anchor, title in zip(frame["page"], frame["anchor"], frame["Shown in"], strict=True):
@@ -629,7 +813,6 @@ def build_report(
         If ``paper`` is not a paper key.
     """
     from navcore import ledger
-    from navcore.ledger.summary import findings_count_table
 
     check_paper(paper)
     evals = list(ledger.evaluations(paper) if evals is None else evals)
@@ -645,20 +828,15 @@ def build_report(
         "of them a claim of the ledger checks, its numbered equations and how many a claim checks, "
         "and every item left without a claim, with the reason."
     ]
-    cov_blocks.append(_frame_table(cov) if len(cov) else "The paper's printed items are not inventoried.")
+    if len(cov):
+        cov_blocks += [_frame_table(cov), COVERAGE_NOTE]
+    else:
+        cov_blocks.append("The paper's printed items are not inventoried.")
     sections.append(Section("coverage", "What was checked", tuple(cov_blocks)))
 
     f_blocks: list[Block] = [findings_phrase(errata) + "."]
     if errata:
-        from navcore.ledger.core import ERRATUM_KINDS as kinds
-
-        rows = [r for r in findings_count_table(errata) if r["paper"] != "all" or r["basis"] == "all"]
-        head = ("Basis", *(k.replace("-", " ") for k in kinds), "Findings")
-        body = tuple(
-            (r["basis"] if r["paper"] != "all" else "all", *(str(r[k]) for k in kinds), str(r["total"]))
-            for r in rows
-        )
-        f_blocks.append(Table(head, body))
+        f_blocks.append(_frame_table(findings_frame(errata)))
         if any(e.basis == "text-only" for e in errata):
             f_blocks.append(TEXT_ONLY_CAVEAT)
         status = {e.claim.id: e.status for e in evals}
@@ -677,22 +855,29 @@ def build_report(
             "span is too wide to decide, the search over more than six assumed inputs cannot rule "
             "the printed value out, or nothing could be computed), each with why."
         )
+        notes = unresolved_notes(evals)
+        if notes:
+            v_blocks.append("Notes that several of these claims share are given once, before the table:")
+            v_blocks += notes
         v_blocks.append(_frame_table(unresolved))
     else:
         v_blocks.append("No claim of this paper is inconsistent or not reproducible.")
     sections.append(Section("verdicts", "Claims by verdict", tuple(v_blocks)))
 
     i_blocks: list[Block] = []
-    for title, frame in (
+    for title, frame, kind in (
         ("Assumed inputs (not in the paper: nominal value, plausible range and reason), each with the "
-         "claims whose computation reads it.", assumed_frame(evals)),
+         "claims whose computation reads it.", assumed_frame(evals), "assumed"),
         ("Fitted parameters (solved from printed results, which are then not evidence), each with "
-         "the claims it was fitted to and the claims that read it.", fitted_frame(evals)),
+         "the claims it was fitted to and the claims that read it.", fitted_frame(evals), "fitted"),
         ("Conventions (readings the text leaves open; every claim that reads one is evaluated under "
-         "each reading), each with the claims it moves.", conventions_frame(evals)),
+         "each reading), each with the claims it moves.", conventions_frame(evals), "convention"),
     ):  # fmt: skip
         if len(frame):
             i_blocks += [title, _frame_table(frame)]
+            lists = moved_claims(evals, kind)
+            if lists:
+                i_blocks += ["The claims of the longer lists:", *lists]
     if not i_blocks:
         i_blocks.append("No claim of this paper reads an assumed, fitted or convention input.")
     sections.append(Section("inputs", "Assumptions and fits", tuple(i_blocks)))
@@ -701,11 +886,12 @@ def build_report(
     g_blocks: list[Block] = [
         "The paper's figures are not reproduced here as images; each figure the book redraws is "
         "listed with the paper figure it redraws, the claims that check it, and the page of the "
-        "book that shows it. Each reproduced figure is also a file named by its id, as SVG and "
-        "PNG, in the repository's figures folder."
+        "book that shows it, numbered as the book numbers it (the paper's number, or N1, N2, ... "
+        "for a figure that is not in the paper)."
     ]
     if len(figs):
-        g_blocks.append(_frame_table(figs.drop(columns=["page", "anchor"])))
+        table = _frame_table(figs.drop(columns=["page", "anchor", "id"]))
+        g_blocks.append(Table(table.head, table.rows, tuple(figs["id"])))
     else:
         g_blocks.append("The book redraws no figure of this paper.")
     sections.append(Section("figures", "Figures", tuple(g_blocks)))
@@ -760,10 +946,10 @@ def to_markdown(report: Report, figures_href: str | None = None) -> str:
             elif isinstance(b, Table):
                 out.append("| " + " | ".join(_md_cell(h) for h in b.head) + " |")
                 out.append("| " + " | ".join("---" for _ in b.head) + " |")
-                for row in b.rows:
+                for k, row in enumerate(b.rows):
                     cells = [_md_cell(c) for c in row]
-                    if s.key == "figures" and figures_href is not None:  # the reproduced figure
-                        cells[0] = f"[{cells[0]}]({figures_href}/{cells[0]}.png)"
+                    if b.ids and figures_href is not None:  # the reproduced figure's image
+                        cells[0] = f"[{cells[0]}]({figures_href}/{b.ids[k]}.png)"
                     out.append("| " + " | ".join(cells) + " |")
                 out.append("")
             else:
@@ -818,7 +1004,7 @@ def to_text(section: Section, width: int = 100) -> str:
     out = [section.title, "=" * len(section.title)]
     for b in section.blocks:
         if isinstance(b, str):
-            out += _wrap(b, width)
+            out += _wrap(b.replace("**", ""), width)
         elif isinstance(b, Table):
             out += _text_table(b, width)
         else:
@@ -840,11 +1026,54 @@ def to_text(section: Section, width: int = 100) -> str:
     return "\n".join(out).rstrip() + "\n"
 
 
-def _raw_latex_table(t: Table) -> str:
-    from navcore.ledger.render import latex_table
+#: A printed formula longer than this (characters of LaTeX) is set on a line of its own under
+#: its row of the unsettled claims' table, at the table's full width, not shrunk into its column.
+WIDE_FORMULA = 40
 
-    block = latex_table(list(t.head), [list(r) for r in t.rows])
-    return block.removeprefix("```{raw} latex\n").removesuffix("\n```")
+_MATH_ONLY = re.compile(r"^\$[^$]+\$$")
+
+
+def _raw_latex_table(t: Table, intro: str = "") -> str:
+    """The book's printed table; in the unsettled claims' table a long printed formula takes a
+    row of its own under its claim's row (``Printed: below``). ``intro``, the LaTeX of the
+    paragraph that introduces the table, is set in the table's first head when the table takes
+    the full width, so that no page break parts the two (else it precedes the table, with room
+    kept for a few rows)."""
+    from navcore.ledger.render import fit_math, latex_table
+
+    rows = [list(r) for r in t.rows]
+    wide: dict[int, str] = {}
+    if "Printed" in t.head and "Why" in t.head:
+        j = t.head.index("Printed")
+        for k, row in enumerate(rows):
+            cell = row[j].strip()
+            if _MATH_ONLY.match(cell) and len(cell) > WIDE_FORMULA:
+                wide[k] = cell[1:-1]
+                row[j] = "below"
+    block = latex_table(list(t.head), rows)
+    lines = block.removeprefix("```{raw} latex\n").removesuffix("\n```").split("\n")
+    if wide:
+        first = lines.index(r"\hline \endfoot") + 1
+        span = rf"\multicolumn{{{len(t.head)}}}{{p{{\dimexpr\linewidth-2\tabcolsep\relax}}}}"
+        for k in sorted(wide, reverse=True):
+            printed = rf"{span}{{\hspace*{{1.5em}}Printed: {fit_math(wide[k])}}} \\"
+            lines.insert(first + k + 1, printed)
+    if intro:
+        head = next(i for i, line in enumerate(lines) if line.endswith(r"\endfirsthead"))
+        if any(line.startswith(r"\begin{longtable}{>") for line in lines):
+            span = rf"\multicolumn{{{len(t.head)}}}{{@{{}}p{{\linewidth}}@{{}}}}"
+            lines[head] = rf"{span}{{\normalsize {intro}}} \\[0.5\baselineskip]" + "\n" + lines[head]
+        else:
+            lines.insert(0, rf"\needspace{{8\baselineskip}}{intro}" + "\n\n")
+    return "\n".join(lines)
+
+
+def _tex_paragraph(text: str) -> str:
+    """A paragraph for LaTeX: an opening ``**...**`` in bold, ``$...$`` as math."""
+    from navcore.ledger.render import tex_text
+
+    m = re.match(r"^\*\*(.+?)\*\*(.*)$", text, re.S)
+    return rf"\textbf{{{tex_text(m.group(1))}}}{tex_text(m.group(2))}" if m else tex_text(text)
 
 
 _PREAMBLE = r"""\documentclass[10pt]{article}
@@ -854,7 +1083,7 @@ _PREAMBLE = r"""\documentclass[10pt]{article}
 \setsansfont{FreeSans}
 \setmonofont{FreeMono}
 \usepackage{amsmath,amssymb}
-\usepackage{array,longtable,graphicx}
+\usepackage{array,longtable,graphicx,needspace}
 \usepackage[hidelinks]{hyperref}
 \usepackage{enumitem}
 \setlist{itemsep=1pt,topsep=2pt,parsep=0pt}
@@ -881,7 +1110,7 @@ def to_latex(report: Report) -> str:
     >>> r"50 \% of $K_1$." in tex, tex.rstrip().endswith(r"\end{document}")
     (True, True)
     """
-    from navcore.ledger.render import FIT_MATH_PREAMBLE, ErrataList, _tex_breakable, _tex_escape, tex_text
+    from navcore.ledger.render import FIT_MATH_PREAMBLE, ErrataList, _tex_breakable, _tex_escape
 
     p = report.provenance
     date = p.date if p.date != "unknown" else "commit date unknown"
@@ -905,12 +1134,15 @@ def to_latex(report: Report) -> str:
         r"\end{titlepage}",
     ]
     for s in report.sections:
-        out.append(r"\section*{" + _tex_escape(s.title) + "}")
-        for b in s.blocks:
+        out.append(r"\needspace{10\baselineskip}\section*{" + _tex_escape(s.title) + "}")
+        for i, b in enumerate(s.blocks):
             if isinstance(b, str):
-                out.append(tex_text(b) + "\n")
+                if i + 1 < len(s.blocks) and isinstance(s.blocks[i + 1], Table):
+                    continue  # the paragraph that introduces a table goes with it
+                out.append(_tex_paragraph(b) + "\n")
             elif isinstance(b, Table):
-                out.append(_raw_latex_table(b))
+                before = s.blocks[i - 1] if i else None
+                out.append(_raw_latex_table(b, _tex_paragraph(before) if isinstance(before, str) else ""))
             else:
                 evals_status = b.status
                 lst = ErrataList(list(b.errata), caveat=False)

@@ -76,8 +76,45 @@ def test_unresolved_claims_are_listed_with_their_notes(wf_evals, wf_report):
     expected = {e.claim.id: e for e in wf_evals if e.status in UNRESOLVED}
     assert set(listed) == set(expected)
     why = tables[1].head.index("Why")
+    shared = {}  # a note several of these claims share is said once, before the table
+    for b in wf_report.section("verdicts").blocks:
+        if isinstance(b, str) and (m := re.match(r"\*\*Note ([A-Z]+)\*\*, for these (\d+) claims", b)):
+            shared[m.group(1)] = (b, int(m.group(2)))
     for cid, row in listed.items():
-        assert row[why].startswith(expected[cid].claim.note)
+        note = expected[cid].claim.note
+        ref = re.match(r"See note ([A-Z]+)[.;]", row[why])
+        if ref:
+            text, n = shared[ref.group(1)]
+            assert text.endswith(note) and n == sum(
+                r[why].startswith(ref.group(0)[:-1]) for r in listed.values()
+            )
+        else:
+            assert row[why].startswith(note.rstrip("."))
+
+
+def test_long_claim_lists_follow_their_table():
+    """No cell of the inputs tables outgrows a page: a long list of claim ids is a number in
+    the cell, and the ids follow the table (synthetic: 30 claims read one convention)."""
+    from navcore.ledger import Claim, InputSet, evaluate, printed
+    from navcore.report import MAX_IDS_CELL, conventions_frame, moved_claims
+
+    inputs = InputSet("WF", "doc_report_lists")
+    inputs.convention("scale", 1.0, alternative=0.5, quantity="loss scale", reason="counted once or twice")
+    value, tol = printed("2.0")
+    evals = [
+        evaluate(
+            Claim(id=f"WF-doc-long-{i}-list-claim", paper="WF", locator="Sec. 9", quantity="a number",
+                  published=value, unit="1", compute=lambda: 2.0 * inputs.scale, tolerance=tol,
+                  expected_status="consistent", note="synthetic")
+        )
+        for i in range(30)
+    ]  # fmt: skip
+    frame = conventions_frame(evals)
+    cell = frame["Claims it moves"].iloc[0]
+    assert cell == "30 claims, listed after the table" and len(cell) <= MAX_IDS_CELL
+    (listed,) = moved_claims(evals, "convention")
+    assert listed.startswith(f"**{frame.iloc[0, 0]}** (30 claims): ")
+    assert all(f"WF-doc-long-{i}-list-claim" in listed for i in range(30))
 
 
 def test_findings_section_lists_every_erratum_with_its_basis(wf_evals, wf_report):
@@ -100,13 +137,28 @@ def test_findings_section_lists_every_erratum_with_its_basis(wf_evals, wf_report
             assert f"{cid} ({status[cid]})" in entry.split("###")[1]
     for line in text.splitlines():
         assert len(line) <= 100, line
+    # the counts by kind (rows) and basis (columns): each finding counted once, by hand
+    counts = next(b for b in section.blocks if isinstance(b, Table))
+    col = {h: j for j, h in enumerate(counts.head)}
+    for row in counts.rows:
+        kind = row[0].replace(" ", "-")
+        for basis in (*{e.basis for e in errata}, "all"):
+            sel = [
+                e
+                for e in errata
+                if (basis == "all" or e.basis == basis) and (kind == "all" or e.kind == kind)
+            ]
+            assert int(row[col[basis]]) == len(sel), (kind, basis)
 
 
 def test_figures_name_the_claims_that_check_them(wf_evals, wf_report):
     table = wf_report.section("figures").blocks[1]
     assert isinstance(table, Table)
-    rows = {r[0]: r for r in table.rows}
+    rows = dict(zip(table.ids, table.rows, strict=True))  # the figure's id -> its row
     assert {"WF-fig1", "WF-fig2"} <= set(rows)
+    assert rows["WF-fig1"][0] == "Fig. 1"  # named by its number, as the book numbers it
+    own = [r for r in table.rows if r[1] == "not in the paper"]
+    assert own and all(re.fullmatch(r"Fig\. N\d+", r[0]) for r in own)
     fig1 = figure_claims("Fig. 1", wf_evals)
     assert fig1 and all("Fig" in e.claim.locator for e in fig1)
     for e in fig1:
@@ -151,3 +203,21 @@ def test_latex_is_produced(wf_report):
 def test_pdf_compiles_strictly(wf_report, tmp_path):
     out = write_pdf(wf_report, tmp_path / "WF.pdf")
     assert out.read_bytes().startswith(b"%PDF")
+
+
+def test_a_note_several_unsettled_claims_share_is_said_once():
+    """Synthetic: three inconsistent claims, two with one note; that note is given once, with
+    the number and the ids of its claims, and the third claim keeps its own note."""
+    from types import SimpleNamespace
+
+    from navcore.report import unresolved_notes
+
+    def stub(cid, note):
+        return SimpleNamespace(status="inconsistent", claim=SimpleNamespace(id=cid, note=note))
+
+    evals = [
+        stub("SP-x-a", "the long shared note"),
+        stub("SP-y", "its own"),
+        stub("SP-x-b", "the long shared note"),
+    ]
+    assert unresolved_notes(evals) == ["**Note A**, for these 2 claims (SP-x-(a, b)): the long shared note"]
