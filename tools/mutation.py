@@ -219,6 +219,7 @@ PACKAGES: dict[str, Package] = {
             "test_ledger_registry_keys.py",
             "test_ledger_render_quote_below.py",
             "test_ledger_trailing_zeros.py",
+            "test_ledger_note_text.py",
             "test_plain_math.py",
         ],
         deselect="each_published_input_moves or every_tolerance_has_a_policy or no_old_id_left",
