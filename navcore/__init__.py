@@ -57,8 +57,12 @@ Attitude
     direction-cosine matrix a proper rotation (``C C^T = I``, ``det C = +1``), both to within
     :math:`10^{-6}`; the quaternion algebra (product, conjugate, normalisation) takes any quaternion.
 Attitude error
-    The attitude-error convention is :math:`\hat C = (I - [\psi\times])\,C`, with the error
-    defined as computed minus true (:mod:`navcore.inertial.error_dynamics`).
+    The psi-angle error models (:mod:`navcore.inertial.error_dynamics`, SP's) write
+    :math:`\hat C = (I - [\psi\times])\,C`, with the error defined as computed minus true;
+    the 17-state model of KZL (:mod:`navcore.inertial.error_model17`) and
+    :mod:`navcore.location.target_location` write :math:`\hat C = (I + [\delta\alpha\times])\,C`,
+    so :math:`\delta\alpha = -\psi` (:func:`navcore.inertial.error_dynamics.psi_to_attitude_error`
+    converts).
 Lines of sight
     The receiver (user, aircraft, observer) is the first argument and the satellites or
     targets the second; a line of sight is the unit vector from the receiver to the

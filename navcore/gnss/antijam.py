@@ -371,9 +371,8 @@ def code_tracking_sigma_chips(
     :math:`S = a(1 - d/2)`, so :math:`\mathrm{var}\,D = 4|S|^2\sigma_c^2 d
     + 2\sigma_c^4 d(2-d)`; the gain is :math:`\partial D/\partial\tau = 4a^2(1-d/2)`. Their
     ratio is :math:`\frac{d}{4 (C/N_0) T_c}[1 + \frac{2}{(2-d)(C/N_0)T_c}]`, and averaging
-    :math:`T/T_c` independent intervals divides it by :math:`T/T_c`. An earlier version had
-    :math:`d/(2\,(C/N_0)\,T)`, twice this variance (``tests/test_antijam.py`` checks the
-    formula against a simulation of sampled correlators).
+    :math:`T/T_c` independent intervals divides it by :math:`T/T_c`. A simulation of sampled
+    correlators confirms the formula.
 
     Parameters
     ----------

@@ -17,7 +17,7 @@ error (Jacobian) analysis, not for positioning from real ECEF ephemerides.
 
 Their Jacobians (with respect to :math:`r, b` and :math:`v, \dot b`), which the error models'
 measurement rows implement (:mod:`navcore.inertial.error_model17`, checked against finite
-differences of these functions in ``tests/test_error_model17.py``):
+differences of these functions):
 
 .. math::
 

@@ -1,6 +1,6 @@
 """The verification ledger: every published number as a claim, checked by navcore.
 
-Schema and policy: see the book's introduction and ``shared/design/LEDGER.md``. Typical use
+Schema and policy: see the book's introduction and its ledger page. Typical use
 from a paper module::
 
     from navcore.ledger import Claim, Erratum, Tolerance, printed

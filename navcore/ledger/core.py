@@ -8,8 +8,8 @@ policy) and the verdict it expects; :func:`evaluate` derives the verdict from th
 computation, the tolerance and the provenance of every input the computation read
 (:mod:`navcore.ledger.inputs`), and the ledger fails where the two differ.
 
-Verdicts, as derived (LEDGER.md)
---------------------------------
+Verdicts, as derived (the ledger page)
+--------------------------------------
 ``not-reproducible``
     nothing is computed (``compute is None``); the note names the missing input. Or the
     band over the assumed inputs is too wide to decide (below): the value and the band are
@@ -253,7 +253,7 @@ ERRATUM_KINDS: dict[str, str] = {
     "that the paper's own model and numbers do not support",
 }
 
-#: The basis of an erratum's evidence (LEDGER.md, "The basis of an erratum").
+#: The basis of an erratum's evidence (the ledger's rules, "The basis of an erratum").
 ERRATUM_BASES: dict[str, str] = {
     "computed": "a number the paper prints is wrong: a recomputation under its stated inputs, or its "
     "own other printed numbers, contradict it",
@@ -277,7 +277,7 @@ class Tolerance:
 
     The allowed deviation is ``max(abs, rel * |published|)``. ``policy`` is one of
     :data:`POLICIES` and ``reason`` says how the printed text gives the size; both are
-    mandatory (LEDGER.md, "Tolerance: fixed before the value is computed"). Build one
+    mandatory (the ledger's rules, "Tolerance: fixed before the value is computed"). Build one
     through its policy's helper (:func:`printed`, :func:`prose`, :func:`figure_reading`,
     :func:`monte_carlo`, :data:`EXACT`).
 
@@ -534,7 +534,7 @@ def prose(word: str, *, why: str = "") -> Tolerance:
     -------
     Tolerance
         Policy ``prose``: ``rel`` for a relative band, ``abs`` for an absolute band, or
-        ``abs`` in decades for a base-10 logarithm of a ratio (LEDGER.md, "Tolerance: fixed
+        ``abs`` in decades for a base-10 logarithm of a ratio (the ledger's rules, "Tolerance: fixed
         before the value is computed").
 
     Raises
@@ -575,7 +575,7 @@ def figure_reading(resolution: float, *, figure: str, axis: str) -> Tolerance:
     Returns
     -------
     Tolerance
-        Policy ``figure-reading`` with ``abs = resolution`` (LEDGER.md, "Tolerance: fixed
+        Policy ``figure-reading`` with ``abs = resolution`` (the ledger's rules, "Tolerance: fixed
         before the value is computed").
 
     Raises
@@ -617,7 +617,7 @@ def monte_carlo(*, rel: float | None = None, abs: float | None = None, runs: int
     Returns
     -------
     Tolerance
-        Policy ``monte-carlo`` (LEDGER.md, "Tolerance: fixed before the value is computed").
+        Policy ``monte-carlo`` (the ledger's rules, "Tolerance: fixed before the value is computed").
 
     Raises
     ------
@@ -1119,7 +1119,7 @@ def label_prints_value(label: str, value: Any) -> bool:
 
 
 def quote_policies(quote: str, *, published: float | bool, locator: str = "") -> tuple[str, ...]:
-    """The tolerance policies the printed words admit (LEDGER.md, "Tolerance").
+    """The tolerance policies the printed words admit (the ledger's rules, "Tolerance").
 
     The rule: a truth value is ``exact``; a quote with a word or sign of approximation
     ("approximately", "about", "of the order of", "~", "≈", "roughly", "nearly", any word of
@@ -1631,7 +1631,7 @@ class Evaluation:
         return " ".join([text, *extra]).strip()
 
     def as_json(self, errata: Sequence[Erratum] | None = None) -> dict[str, Any]:
-        """The fields of LEDGER.md, and no others.
+        """The ledger's fields, and no others.
 
         Parameters
         ----------
@@ -2249,7 +2249,7 @@ def derive_status(
     readings: Sequence[tuple[Any, ...]] = (),
     envelope: tuple[float, float] | None = None,
 ) -> str:
-    """The verdict of LEDGER.md from every reading's value and band and the provenances read.
+    """The ledger's verdict from every reading's value and band and the provenances read.
 
     Parameters
     ----------
@@ -2319,7 +2319,7 @@ def evaluate(claim: Claim, *, bands: bool = True) -> Evaluation:
     nominal inputs with every read recorded; then across each assumed input's range (the
     band, unless ``bands`` is false) and under every other admissible reading of each
     convention read (across the assumed ranges too, where the verdict needs it). The
-    verdict follows the rules of LEDGER.md (module docstring); a discrepant claim's value
+    verdict follows the ledger's rules (module docstring); a discrepant claim's value
     must also agree with its independent oracle.
 
     Parameters

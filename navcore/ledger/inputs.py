@@ -27,7 +27,7 @@ Two rules keep verdicts honest:
 
 * inputs may not be read while a paper module is being imported, nor while the ledger
   resolves a tolerance: a tolerance or an expected status can therefore never be computed
-  from the model (LEDGER.md, "fixed before the value is computed");
+  from the model (the ledger's rules, "fixed before the value is computed");
 * a function that memoises a result computed from inputs must use :func:`input_cache`
   (not ``functools.cache``), which keys the memo on the values the result read and
   replays those reads, so cached results are recorded and follow overrides.
@@ -656,7 +656,7 @@ def overriding(values: dict[str, Any]) -> Iterator[None]:
 
     Overrides nest: an inner block adds to (and may replace) the outer block's values. The
     ledger uses it to evaluate a claim across an assumed input's range and at a convention's
-    other reading (LEDGER.md, "Provenance of an input").
+    other reading (the ledger's rules, "Provenance of an input").
 
     Parameters
     ----------
@@ -697,7 +697,7 @@ def overriding(values: dict[str, Any]) -> Iterator[None]:
 def declaring() -> Iterator[None]:
     """Forbid every input read inside the block (the ledger resolves tolerances in one).
 
-    A tolerance is fixed by the printed text before anything is computed (LEDGER.md,
+    A tolerance is fixed by the printed text before anything is computed (the ledger's rules,
     "Tolerance: fixed before the value is computed"); a read inside the block raises
     :class:`InputReadError`.
 

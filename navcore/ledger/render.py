@@ -238,7 +238,7 @@ def text_table(evals: Sequence[Evaluation], *, width: int = 38) -> str:
 
 
 def json_dump(evals: Sequence[Evaluation]) -> str:
-    """The ledger as a JSON array of claim objects (LEDGER.md fields), stable and sorted.
+    """The ledger as a JSON array of claim objects (the ledger's fields), stable and sorted.
 
     Parameters
     ----------

@@ -1,6 +1,6 @@
 """Counts and input summaries of a set of evaluations (terminal, book pages).
 
-The ledger's summary (LEDGER.md) leads with the findings: the errata counted by basis
+The ledger's summary leads with the findings: the errata counted by basis
 (``computed``, ``text-only``) and kind, each with the claims that are its evidence; then the
 claims counted by paper, verdict and kind; the fitted parameters with the claims each was
 fitted to and the claims that read it; the assumed inputs with the claims each moves.
@@ -252,7 +252,7 @@ def input_readers(evals: Sequence[Evaluation], provenance: str) -> list[tuple[In
     evals : sequence of Evaluation
         The evaluations to summarise (from :func:`~navcore.ledger.registry.evaluations`).
     provenance : str
-        One of :data:`~navcore.ledger.inputs.PROVENANCES` (LEDGER.md, "Provenance of an
+        One of :data:`~navcore.ledger.inputs.PROVENANCES` (the ledger's rules, "Provenance of an
         input").
 
     Returns
@@ -305,7 +305,7 @@ def summary_text(evals: Sequence[Evaluation], errata: Sequence[Erratum] | None =
     Returns
     -------
     str
-        The summary of LEDGER.md for a terminal: the findings (:func:`findings_text`), then
+        The ledger's summary for a terminal: the findings (:func:`findings_text`), then
         the claims by verdict (:func:`count_table`), the number of claims failing their
         check, the fitted parameters and the assumed inputs read.
 
@@ -436,7 +436,7 @@ def prose_words_frame() -> Any:
     -------
     pandas.DataFrame
         One row per word of :data:`~navcore.ledger.core.PROSE_WORDS`, columns ``Word in the
-        paper`` and ``Band the ledger uses`` (LEDGER.md, "Tolerance: fixed before the value
+        paper`` and ``Band the ledger uses`` (the ledger's rules, "Tolerance: fixed before the value
         is computed").
 
     Examples
