@@ -60,6 +60,7 @@ def test_fitted_radius_ratio_matches_an_independent_fit():
     best = fine[int(np.argmin([misfit(r) for r in fine]))]
     assert paper.IN.input("radius_ratio").provenance == "fitted"
     assert paper.IN.nominal("radius_ratio") == pytest.approx(best, abs=5e-4)
+    assert paper.solve_radius_ratio() == pytest.approx(best, abs=5e-4)  # the module's own fit
     assert paper.physical_radius_ratio() == pytest.approx(42_164.0 / 6_371.0, abs=0.001)
 
 
