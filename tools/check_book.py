@@ -279,10 +279,6 @@ NOT_FORMULA_PAGES = {
 #: ``text`` on a page that ``pages`` matches (a glob) passes. Each is for the page's or the
 #: registry's owner to fix; keep the list short: an entry that no longer occurs fails the gate.
 PLAIN_TEXT_ALLOWED: dict[tuple[str, str], str] = {
-    # an erratum's quote of the paper, stored in the registry with the Greek letter spelled out
-    ("errata.html", "independence of rho(i,j)"): "the stored quote of an ATC-10 erratum (registry data)",
-    ("atc10/index.html", "independence of rho(i,j)"): "the same erratum in the chapter's list",
-    ("reports/atc10.html", "independence of rho(i,j)"): "the same erratum in the verification report",
     # KZL names its antennas A0, A1, ...: labels, not formulas
     ("kzl/02-error-model.html", "A0"): "KZL's name of its master antenna, a label",
     ("ledger.html", "master antenna (A0)"): "KZL's name of its master antenna in a quote, a label",
