@@ -269,6 +269,7 @@ PACKAGES: dict[str, Package] = {
             "test_bench_inprocess.py",
             "test_mutation_tool.py",
             "test_build_book_inprocess.py",
+            "test_import_layers.py",
         ],
         sources=("navcore", "tools"),
         copy=("book",),
