@@ -25,13 +25,16 @@ from __future__ import annotations
 
 import ast
 import re
+import sys
 import textwrap
 from typing import Any
 
 from docutils import nodes
 from sphinx.application import Sphinx
 from sphinx.environment import BuildEnvironment
+from sphinx.errors import ExtensionError
 from sphinx.util import logging
+from sphinx.util.docutils import SphinxDirective
 
 logger = logging.getLogger(__name__)
 
@@ -165,6 +168,51 @@ def _captions(app: Sphinx, doctree: nodes.document) -> None:
         if m:
             rest = text[m.end() :]
             first.parent.replace(first, nodes.Text(rest[:1].upper() + rest[1:]))
+
+
+# --- errata boxes ------------------------------------------------------------------------------
+
+
+class ErratumDirective(SphinxDirective):
+    """``{erratum} <id>``: the erratum's warning box, built from its ``Erratum`` object.
+
+    The box says what the paper prints (and where), what the book finds and the evidence, in
+    the erratum's own words (:func:`navcore.book.erratum_box`); it takes no content, so no
+    page writes an erratum's text by hand. An unknown id, or a box on another page than the
+    erratum's ``discussed_in``, stops the build. The page is read again when the paper module
+    that declares the erratum changes.
+    """
+
+    required_arguments = 1
+    has_content = False
+
+    def run(self) -> list[nodes.Node]:
+        from navcore import ledger
+        from navcore.book import erratum_box
+
+        erratum_id = self.arguments[0]
+        try:
+            title, paragraphs = erratum_box(erratum_id, self.env.docname)
+        except ValueError as exc:
+            raise ExtensionError(f"{self.get_location()}: {{erratum}} {erratum_id}: {exc}") from exc
+        box = nodes.admonition(classes=["warning", "erratum-box"])
+        box += nodes.title(title, title)
+        for pieces in paragraphs:
+            para = nodes.paragraph()
+            for style, text in pieces:
+                if style == "math":
+                    para += nodes.math(text, text)
+                elif style == "label":
+                    para += nodes.strong(text, text)
+                else:
+                    para += nodes.Text(text)
+            box += para
+        self.set_source_info(box)
+        for name in ledger.paper_modules():
+            module = sys.modules.get(name)
+            if module is not None and any(e.id == erratum_id for e in getattr(module, "ERRATA", ())):
+                self.env.note_dependency(module.__file__)
+        return [box]
 
 
 # --- anchors for errata -------------------------------------------------------------------------
@@ -339,6 +387,7 @@ def setup(app: Sphinx) -> dict[str, Any]:
     # MathJax on every page: the ledger and errata pages hold math only in generated HTML
     # (claim notes and errata written with $...$), which Sphinx does not count as equations
     app.set_html_assets_policy("always")
+    app.add_directive("erratum", ErratumDirective)
     app.connect("doctree-read", _hide_helpers)
     app.connect("doctree-read", _erratum_anchors)
     app.connect("doctree-read", _captions)
