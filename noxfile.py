@@ -110,6 +110,8 @@ def book(session: nox.Session) -> None:
 
 
 def _build_html(session: nox.Session) -> None:
+    # the pages' source first (no build needed): no code cell a reader sees runs a build helper
+    session.run("python", "tools/check_book.py", "pages", "book")
     session.run(
         "python", "tools/build_book.py", "--builder", "html", "--cache", *session.posargs, **STOPPABLE
     )  # fmt: skip

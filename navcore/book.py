@@ -45,6 +45,7 @@ __all__ = [
     "claims_table",
     "counts_table",
     "errata_list",
+    "erratum_box",
     "estimate_text",
     "findings_table",
     "format_number",
@@ -307,6 +308,62 @@ def errata_list(paper: str | None = None, *, root: str | None = None, caveat: bo
         evals=ledger.evaluations(paper=paper),
         caveat=caveat,
     )
+
+
+def erratum_box(erratum_id: str, page: str | None = None) -> tuple[str, list[list[tuple[str, str]]]]:
+    """An erratum's box as the page that discusses it shows it, in the erratum's own words.
+
+    The book's ``{erratum}`` directive builds its warning box from this, so that a page
+    never writes an erratum's text by hand.
+
+    Parameters
+    ----------
+    erratum_id : str
+        The erratum's id (``"ATC10-E4.10-scalar-gain"``).
+    page : str or None, optional
+        The page (docname, ``"atc10/31-clock-tracking"``) that shows the box: it must be the
+        erratum's ``discussed_in``; ``None`` does not check.
+
+    Returns
+    -------
+    title : str
+        ``"Erratum <id>"``.
+    paragraphs : list of list of tuple of (str, str)
+        What the paper prints (with the locator), what the book finds and the evidence, each a
+        paragraph of ``(style, text)`` pieces, ``style`` one of ``"label"`` (a bold field
+        name), ``"text"`` and ``"math"`` (the inside of a ``$...$`` span).
+
+    Raises
+    ------
+    ValueError
+        If no erratum has that id, or ``page`` is not the page that discusses it.
+
+    Examples
+    --------
+    >>> first = ledger.errata("KZL")[0]
+    >>> title, paragraphs = erratum_box(first.id, first.discussed_in)
+    >>> title == f"Erratum {first.id}", [p[0] for p in paragraphs]
+    (True, [('label', 'Printed'), ('label', 'The book finds:'), ('label', 'Evidence:')])
+    >>> erratum_box("KZL-E1-levelling-sign", "wf/elsewhere")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ValueError: erratum 'KZL-E1-levelling-sign' is discussed in kzl/01-mechanization, not on wf/elsewhere: ...
+    """
+    e = ledger.erratum(erratum_id)
+    if page is not None and e.discussed_in != page:
+        raise ValueError(
+            f"erratum {e.id!r} is discussed in {e.discussed_in or 'no page'}, not on {page}: "
+            "show its box on that page, or set its discussed_in"
+        )
+
+    def pieces(text: str) -> list[tuple[str, str]]:
+        return [("math" if is_math else "text", piece) for is_math, piece in math_spans(text)]
+
+    paragraphs = [
+        [("label", "Printed"), ("text", " ("), *pieces(e.locator), ("text", "): "), *pieces(e.printed)],
+        [("label", "The book finds:"), ("text", " "), *pieces(e.finding)],
+        [("label", "Evidence:"), ("text", " "), *pieces(e.evidence)],
+    ]
+    return f"Erratum {e.id}", paragraphs
 
 
 def findings_table(

@@ -19,7 +19,6 @@ from dataclasses import dataclass
 from pathlib import Path
 from types import SimpleNamespace
 from typing import ClassVar, NamedTuple
-from unittest import mock
 
 import pytest
 from docutils import nodes
@@ -99,7 +98,7 @@ SETUP = {
     "book_presentation": (
         [
             ("set_html_assets_policy", "always"),
-            ("connect", "doctree-read", book_presentation._hide_helpers),
+            ("add_directive", "erratum", book_presentation.ErratumDirective),
             ("connect", "doctree-read", book_presentation._erratum_anchors),
             ("connect", "doctree-read", book_presentation._captions),
             ("connect", "doctree-read", book_presentation._collect_titles),
@@ -1260,62 +1259,6 @@ def test_read_glossary_and_outdated(tmp_path):
 # --- book_presentation and paper_equations: the parts the toy builds leave open ---------------------
 
 
-@pytest.mark.parametrize(
-    ("source", "statements"),
-    [
-        ("a = 1\nb = 2", [["a = 1"], ["b = 2"]]),
-        ("f(1,\n  2)\nx", [["f(1,", "  2)"], ["x"]]),
-        ("s = '(' + \"[\"  # (\nt", [["s = '(' + \"[\"  # ("], ["t"]]),
-        ("x = (1 +  \\\n 2)\ny", [["x = (1 +  \\", " 2)"], ["y"]]),
-        ("x = 1 + \\\n 2\ny", [["x = 1 + \\", " 2"], ["y"]]),
-        ("x = 1 + \\   \n 2", [["x = 1 + \\   ", " 2"]]),
-        ("a = [1,\n2]]\nb = (3,\n4)", [["a = [1,", "2]]"], ["b = (3,", "4)"]]),
-        ("g(\n", [["g("]]),
-        ("f(1,\n  2,\n  3)\ny", [["f(1,", "  2,", "  3)"], ["y"]]),
-        ("XX = (1,\n 2)\nXY = 3", [["XX = (1,", " 2)"], ["XY = 3"]]),
-        ("t = (1,\n X)\nX", [["t = (1,", " X)"], ["X"]]),
-    ],
-)
-def test_statements_follow_brackets_strings_and_backslashes(source, statements):
-    assert book_presentation._statements(source) == statements
-
-
-def test_strip_helpers_keeps_the_cell_and_trims_only_newlines():
-    source = "\nfrom navcore import book\nbook.setup()\n  x = 1\nglue('a', x)\n\n"
-    assert book_presentation.strip_helpers(source) == "  x = 1"
-    assert book_presentation.strip_helpers("\n\n y = 2 \n") == " y = 2 "
-    assert book_presentation.strip_helpers("X = 1\nglue('a', X)\nprint(X)\n") == "X = 1\nprint(X)"
-
-
-def test_strip_helpers_refuses_a_helper_that_is_a_block_s_whole_body():
-    """A loop whose body is a glue call would be shown with an empty body (SP read-through)."""
-    source = "for n, v in zip(a, b):\n    glue(f'x-{n}', v, display=False)\nshown = 1\n"
-    with pytest.raises(book_presentation.HelperInBlockError, match="move the helper to a hidden cell"):
-        book_presentation.strip_helpers(source)
-    with pytest.raises(book_presentation.HelperInBlockError):
-        book_presentation.strip_helpers("if x:\n    fig = book.show_figure('F')\n")
-
-
-def test_strip_helpers_keeps_a_block_with_other_statements_and_unparsable_cells():
-    assert book_presentation.strip_helpers("if a:\n    glue('a', 1)\n    y = 2\n") == "if a:\n    y = 2"
-    # a cell that does not parse as Python (a magic, a fragment) is stripped as before, unchecked
-    assert book_presentation.strip_helpers("%matplotlib inline\nx = 1\n") == "x = 1"
-    assert book_presentation.strip_helpers("for x in y:\nglue('a', 1)") == "for x in y:"
-
-
-def test_a_helper_in_a_block_is_a_build_warning():
-    """The Sphinx hook reports the cell (a warning, an error in the strict build) and leaves it."""
-    doc = nodes.container(classes=["cell_input"])
-    block = nodes.literal_block("", "for n in a:\n    glue('x', n)\n")
-    doc += block
-    root = nodes.section()
-    root += doc
-    with mock.patch.object(book_presentation.logger, "warning") as warn:
-        book_presentation._hide_helpers(None, root)
-    assert warn.call_count == 1 and "hidden cell" in warn.call_args[0][0]
-    assert block.astext() == "for n in a:\n    glue('x', n)\n"
-
-
 @pytest.mark.parametrize(("docname", "chapter"), [("wf/01-page", "wf"), ("intro", ""), ("a/b/c", "a")])
 def test_chapter_of_a_page(docname, chapter):
     assert book_presentation._chapter(docname) == chapter
@@ -1476,42 +1419,6 @@ def test_latex_visit_tags_the_last_label_once():
 
 
 # --- book_presentation: the doctree passes a build runs (here on hand-made doctrees) ----------------
-
-
-def _cell(source: str, output: bool) -> nodes.container:
-    cell = nodes.container(classes=["cell"])
-    cell_input = nodes.container(classes=["cell_input"])
-    cell_input += nodes.literal_block(source, source)
-    cell += cell_input
-    if output:
-        cell += nodes.container("", nodes.Text("out"), classes=["cell_output"])
-    return cell
-
-
-def test_hide_helpers():
-    doc = nodes.section()
-    doc += _cell("x = 1\nglue('a', x)\n", output=False)  # a helper inside: stripped
-    doc += _cell("glue('a', 1)\n", output=True)  # only a helper, with output: the input goes
-    doc += _cell("from navcore import book\nbook.setup()\n", output=False)  # nothing left: all goes
-    doc += _cell("  y = 2\n", output=False)  # nothing to strip: left as it is, spaces and all
-    doc += _cell("X = 3\n", output=False)
-    other = nodes.container(classes=["note"])
-    other += nodes.literal_block("glue('b', 2)", "glue('b', 2)")
-    doc += other  # not a cell input: left
-    bare = nodes.container(classes=["cell_input"])
-    bare += nodes.literal_block("glue('c', 3)", "glue('c', 3)")
-    holder = nodes.container(classes=["plain"])
-    holder += bare
-    doc += holder  # an input outside a cell: removed, its holder stays
-    book_presentation._hide_helpers(None, doc)
-    first = doc[0][0][0]
-    assert first.astext() == "x = 1" and first.rawsource == "x = 1"
-    assert [c["classes"] for c in doc[1].children] == [["cell_output"]]
-    assert [c.get("classes") for c in doc.children] == [["cell"]] * 4 + [["note"], ["plain"]]
-    assert doc[2][0][0].astext() == "  y = 2\n"
-    assert doc[3][0][0].astext() == "X = 3\n"
-    assert doc[4][0].astext() == "glue('b', 2)"
-    assert doc[5].children == []
 
 
 def _figure(ids: list[str], caption: str | None) -> nodes.figure:

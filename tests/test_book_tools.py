@@ -111,25 +111,34 @@ book_presentation = _load(ROOT / "book" / "_ext" / "book_presentation.py", "book
 check_book = _load(ROOT / "tools" / "check_book.py", "tools.check_book")
 
 
-def test_build_helpers_are_stripped_from_displayed_cells():
-    """Oracle: the displayed source written out by hand."""
-    source = (
-        "import numpy as np\n"
-        "from myst_nb import glue\n"
-        "from navcore.book import glue\n"
-        "from navcore import book\n"
-        "%matplotlib inline\n"
-        "book.setup()\n"
-        "x = np.arange(3)\n"
-        'glue("a-key",\n     int(x.sum()), display=False)\n'
-        'book.show_figure("WF-fig1")\n'
-        "print(x)"
+def test_pages_gate_finds_helpers_in_shown_cells(tmp_path):
+    """Oracle: hand-written pages; a helper in a cell whose source a reader sees is found, one in
+    a removed cell or input is not (a folded ``hide-input`` cell is still shown)."""
+    page = (
+        "# P\n\n"
+        "```{code-cell} ipython3\nx = 1\nglue('a', x, display=False)\n```\n\n"  # shown: found
+        "```{code-cell} ipython3\n:tags: [remove-cell]\nglue('b', 1, display=False)\n```\n\n"
+        "```{code-cell} ipython3\n:tags: [remove-input]\nbook.show_figure('F')\n```\n\n"
+        "```{code-cell} ipython3\n:tags: [hide-input]\nimport numpy\n%matplotlib inline\n```\n\n"
+        "```{code-cell} ipython3\n:tags: [remove-output]\nfig = book.show_figure('G')\n```\n\n"
+        "```{code-cell} ipython3\nfrom navcore.book import glue\n```\n\n"
+        "```{code-cell} ipython3\nbook.table(x)  # glue( in a comment, not at a line's start\n```\n\n"
+        "A paragraph: glue('c', 2) in prose is not code.\n"
     )
-    assert book_presentation.strip_helpers(source) == "import numpy as np\nx = np.arange(3)\nprint(x)"
-    # a cell that uses book for something else keeps the import
-    kept = "from navcore import book\nbook.setup()\nbook.table(df)"
-    assert book_presentation.strip_helpers(kept) == "from navcore import book\nbook.table(df)"
-    assert book_presentation.strip_helpers("book.setup()\n") == ""
+    (tmp_path / "wf").mkdir()
+    (tmp_path / "wf" / "a.md").write_text(page)
+    (tmp_path / "_build").mkdir()
+    (tmp_path / "_build" / "b.md").write_text(page)  # a build's copy is not a page
+    problems = check_book.check_pages(tmp_path)
+    assert [p.split(": ")[0] for p in problems] == ["wf/a.md:5", "wf/a.md:21", "wf/a.md:26", "wf/a.md:30"]
+    assert "'glue('" in problems[0] and "'%matplotlib'" in problems[1]
+    assert "'fig = book.show_figure('" in problems[2] and "'from navcore.book import glue'" in problems[3]
+    assert check_book.main(["pages", str(tmp_path)]) == 1
+
+
+def test_pages_gate_passes_the_book():
+    """The book's own pages keep every helper in a hidden cell."""
+    assert check_book.check_pages(ROOT / "book") == []
 
 
 @pytest.mark.parametrize(

@@ -2,11 +2,15 @@
 
 Usage::
 
+    python tools/check_book.py pages book              # helpers in shown code cells of the pages
     python tools/check_book.py html _build/html        # helpers in code cells; notebook outputs
     python tools/check_book.py numbers _build/html     # numbers as a program prints them
     python tools/check_book.py latex _build/latex      # overfull boxes; helpers in code listings
     python tools/check_book.py same BUILD_A BUILD_B    # byte-identical trees (PDF: up to its dates)
 
+``pages``: no code cell whose source a reader sees (not ``remove-cell`` or ``remove-input``)
+holds a build helper (``HELPERS``); the pages keep them in hidden cells, so that the code
+shown is the code the downloaded notebook runs.
 ``html``: no rendered code cell shows a build helper (``glue(...)``, ``show_figure``,
 ``book.setup()``, ``%matplotlib``); every downloadable notebook under ``_sources`` is
 executed (each code cell has an execution count), carries outputs and names the build that
@@ -51,10 +55,20 @@ from fnmatch import fnmatch
 from html.parser import HTMLParser
 from pathlib import Path
 
+#: A build helper: bookkeeping a page needs to run on its own but that teaches the reader
+#: nothing (glue, a registered figure, the book's setup, the matplotlib magic, glue's import).
+#: Pages keep these in hidden cells (``remove-cell``, or ``remove-input`` when they display
+#: something); the one pattern for the gates on the pages, the HTML and the LaTeX.
 HELPERS = re.compile(
-    r"(?m)^\s*(?:glue\s*\(|(?:book\.)?show_figure\s*\(|book\.setup\s*\(|%matplotlib"
-    r"|from (?:myst_nb|navcore\.book) import glue)"
+    r"(?m)^\s*(?:(?:\w+\s*=\s*)?(?:book\.)?show_figure\s*\(|glue\s*\(|book\.setup\s*\(|%matplotlib\b"
+    r"|from\s+(?:myst_nb|navcore\.book)\s+import\s+glue\b)"
 )
+#: A code cell of a page (a MyST notebook): its tags and its source.
+CODE_CELL = re.compile(
+    r"^```\{code-cell\}[^\n]*\n(?::tags:\s*\[([^\]\n]*)\]\n)?(.*?)^```[ \t]*$", re.M | re.S
+)
+#: Tags that hide a cell's source from the reader (``hide-input`` only folds it: still shown).
+HIDDEN_SOURCE = {"remove-cell", "remove-input"}
 PROVENANCE_KEY = "navcore_provenance"  # book/_ext/book_downloads.py writes it
 CELL_PRE = re.compile(
     r'class="cell_input[^"]*"[^>]*>\s*<div class="highlight-[^"]*"><div class="highlight"><pre>(.*?)</pre>',
@@ -357,6 +371,42 @@ def check_plain_text_math(root: Path) -> list[str]:
     return problems
 
 
+def check_pages(book: Path) -> list[str]:
+    """Build helpers in code cells a reader sees, in the pages' source.
+
+    A cell whose source is shown (not tagged ``remove-cell`` or ``remove-input``; a
+    ``hide-input`` cell only folds its source away) must not hold a helper (:data:`HELPERS`):
+    the book shows cells as they run, and the downloaded notebook is the page.
+
+    Parameters
+    ----------
+    book : Path
+        The book's folder; every ``*.md`` under it is read.
+
+    Returns
+    -------
+    list of str
+        One line per shown cell with a helper: the page, the line and the helper.
+    """
+    problems = []
+    for page in sorted(book.rglob("*.md")):
+        if "_build" in page.parts:
+            continue
+        text = page.read_text(encoding="utf-8")
+        for cell in CODE_CELL.finditer(text):
+            tags = {t.strip() for t in (cell.group(1) or "").split(",")}
+            if tags & HIDDEN_SOURCE:
+                continue
+            m = HELPERS.search(cell.group(2))
+            if m:
+                line = text.count("\n", 0, cell.start(2) + m.start()) + 1
+                problems.append(
+                    f"{page.relative_to(book)}:{line}: a shown code cell runs {m.group(0).strip()!r}; "
+                    "move it to a hidden cell (remove-cell) after it"
+                )
+    return problems
+
+
 def check_html(root: Path) -> list[str]:
     problems = []
     for page in sorted(root.rglob("*.html")):
@@ -456,11 +506,13 @@ def same_trees(a: Path, b: Path) -> list[str]:
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("gate", choices=["html", "numbers", "latex", "same"])
+    parser.add_argument("gate", choices=["pages", "html", "numbers", "latex", "same"])
     parser.add_argument("paths", nargs="+", type=Path)
     parser.add_argument("--max-overfull", type=float, default=3.0, help="points (latex gate)")
     args = parser.parse_args(argv)
-    if args.gate == "html":
+    if args.gate == "pages":
+        problems = check_pages(args.paths[0])
+    elif args.gate == "html":
         problems = check_html(args.paths[0])
     elif args.gate == "numbers":
         problems = check_number_format(args.paths[0])

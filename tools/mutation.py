@@ -277,7 +277,13 @@ PACKAGES: dict[str, Package] = {
     ),
     "book_ext": Package(
         ["book/_ext/*"],
-        ["test_book_ext.py", "test_book_tools.py", "test_book_tools_edges.py", "test_glossary_links.py"],
+        [
+            "test_book_ext.py",
+            "test_book_errata_boxes.py",
+            "test_book_tools.py",
+            "test_book_tools_edges.py",
+            "test_glossary_links.py",
+        ],
         sources=("navcore", "book/_ext"),
         copy=("book",),
         deselect="errata_and_ledger_links or interactive_ledger_filters",

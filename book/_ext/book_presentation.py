@@ -1,10 +1,12 @@
-"""What readers see of the notebooks: no build helpers in code cells, the papers' numbering.
+"""What readers see of the notebooks: erratum boxes from the ledger, the papers' numbering.
 
-Build helpers. A code cell may call ``glue(...)``, ``book.show_figure(...)``,
-``book.setup()`` or ``%matplotlib``: bookkeeping that the page needs to run on its own but
-that teaches the reader nothing. Their statements are removed from the *displayed* source
-of every code cell (the downloaded notebook keeps them, so it still runs); a cell left with
-no source shows only its outputs, and a cell with neither disappears.
+Errata. ``{erratum} <id>`` shows an erratum's warning box, built from its ``Erratum`` object
+(what the paper prints, what the book finds, the evidence); each erratum discussed on a page
+gets an anchor, which the errata page links to.
+
+A page's build helpers (``glue(...)``, ``book.show_figure(...)``, ``book.setup()``,
+``%matplotlib``) stand in cells the page itself hides: what a reader sees is what the
+downloaded notebook runs, and the book gate fails on a shown cell with a helper.
 
 Numbering. One scheme for figures, theorems and exercises, in HTML and in the PDF:
 
@@ -23,34 +25,21 @@ each figure, and sphinx-proof and sphinx-exercise read ``env.toc_fignumbers`` in
 
 from __future__ import annotations
 
-import ast
 import re
-import textwrap
+import sys
 from typing import Any
 
 from docutils import nodes
 from sphinx.application import Sphinx
 from sphinx.environment import BuildEnvironment
-from sphinx.util import logging
-
-logger = logging.getLogger(__name__)
+from sphinx.errors import ExtensionError
+from sphinx.util.docutils import SphinxDirective
 
 PAPERS = ("wf", "sp", "atc10", "kzl")
 FIGURE_RE = re.compile(r"^fig-(?:wf|sp|atc10|kzl)-(?:fig)?(\d+(?:-\d+)*)$")
 # one figure of the book that redraws a run of the paper's figures: fig-atc10-3-3-to-3-6
 FIGURE_RANGE_RE = re.compile(r"^fig-(?:wf|sp|atc10|kzl)-(?:fig)?(\d+(?:-\d+)*)-to-(\d+(?:-\d+)*)$")
 THEOREM_RE = re.compile(r"^Theorem\s+([A-Z]?\d+(?:\.\d+)*)\s+of\s+(.*)$")
-
-# statements that are bookkeeping for the build, not part of the model being shown
-HELPER_RE = re.compile(
-    r"^\s*(?:"
-    r"(?:\w+\s*=\s*)?(?:book\.)?show_figure\s*\("
-    r"|glue\s*\("
-    r"|book\.setup\s*\(\s*\)"
-    r"|%matplotlib\b"
-    r"|from\s+(?:myst_nb|navcore\.book)\s+import\s+glue\s*$"
-    r")"
-)
 
 
 def paper_figure_number(name: str) -> str | None:
@@ -64,90 +53,6 @@ def paper_figure_number(name: str) -> str | None:
         return f"{m.group(1).replace('-', '.')}\u2013{m.group(2).replace('-', '.')}"
     m = FIGURE_RE.match(name)
     return m.group(1).replace("-", ".") if m else None
-
-
-def _statements(source: str) -> list[list[str]]:
-    """Split cell source into statements (lists of lines), following brackets and backslashes."""
-    out: list[list[str]] = []
-    current: list[str] = []
-    depth = 0
-    for line in source.splitlines():
-        current.append(line)
-        code = re.sub(r"(\"[^\"]*\"|'[^']*'|#.*$)", "", line)
-        depth += sum(code.count(c) for c in "([{") - sum(code.count(c) for c in ")]}")
-        if depth <= 0 and not line.rstrip().endswith("\\"):
-            out.append(current)
-            current, depth = [], 0
-    if current:
-        out.append(current)
-    return out
-
-
-class HelperInBlockError(ValueError):
-    """A build helper inside a compound statement: removing it would leave code that does not run."""
-
-
-def _parses(text: str) -> bool:
-    try:
-        ast.parse(text)
-    except SyntaxError:
-        return False
-    return True
-
-
-def strip_helpers(source: str) -> str:
-    """The source of a code cell without its build-helper statements (and their imports).
-
-    Raises
-    ------
-    HelperInBlockError
-        If the cell's code parses but the code without its helpers does not: a helper was the
-        body (or all of it) of a ``for``, ``if`` or ``with``, and the reader would see a block
-        with nothing in it. Such a helper belongs in a hidden cell of its own.
-    """
-    kept = [s for s in _statements(source) if not HELPER_RE.match(s[0])]
-    text = "\n".join(line for s in kept for line in s)
-    rest = [s for s in kept if not re.match(r"^\s*from\s+navcore\s+import\s+book\s*$", s[0])]
-    rest_text = "\n".join(line for s in rest for line in s)
-    if not re.search(r"\bbook\.", rest_text):  # the import served only the helpers
-        text = rest_text
-    text = text.strip("\n")
-    if text != source.strip("\n") and _parses(textwrap.dedent(source)) and not _parses(textwrap.dedent(text)):
-        raise HelperInBlockError(
-            "a build helper (glue, show_figure) inside a block of a shown code cell: without it the "
-            "shown code does not parse; move the helper to a hidden cell of its own"
-        )
-    return text
-
-
-def _hide_helpers(app: Sphinx, doctree: nodes.document) -> None:
-    for cell in list(doctree.findall(nodes.container)):
-        if "cell_input" not in cell.get("classes", []):
-            continue
-        for block in list(cell.findall(nodes.literal_block)):
-            source = block.astext()
-            try:
-                stripped = strip_helpers(source)
-            except HelperInBlockError as exc:
-                logger.warning(str(exc), location=block)
-                continue
-            if stripped == source.strip("\n"):
-                continue
-            if stripped.strip():
-                block.children = [nodes.Text(stripped)]
-                block.rawsource = stripped
-            else:
-                parent = cell.parent
-                cell.parent.remove(cell)
-                if parent is not None and "cell" in parent.get("classes", []):
-                    has_output = any(
-                        "cell_output" in c.get("classes", [])
-                        for c in parent.children
-                        if isinstance(c, nodes.Element)
-                    )
-                    if not has_output and parent.parent is not None:
-                        parent.parent.remove(parent)
-                break
 
 
 def _captions(app: Sphinx, doctree: nodes.document) -> None:
@@ -165,6 +70,51 @@ def _captions(app: Sphinx, doctree: nodes.document) -> None:
         if m:
             rest = text[m.end() :]
             first.parent.replace(first, nodes.Text(rest[:1].upper() + rest[1:]))
+
+
+# --- errata boxes ------------------------------------------------------------------------------
+
+
+class ErratumDirective(SphinxDirective):
+    """``{erratum} <id>``: the erratum's warning box, built from its ``Erratum`` object.
+
+    The box says what the paper prints (and where), what the book finds and the evidence, in
+    the erratum's own words (:func:`navcore.book.erratum_box`); it takes no content, so no
+    page writes an erratum's text by hand. An unknown id, or a box on another page than the
+    erratum's ``discussed_in``, stops the build. The page is read again when the paper module
+    that declares the erratum changes.
+    """
+
+    required_arguments = 1
+    has_content = False
+
+    def run(self) -> list[nodes.Node]:
+        from navcore import ledger
+        from navcore.book import erratum_box
+
+        erratum_id = self.arguments[0]
+        try:
+            title, paragraphs = erratum_box(erratum_id, self.env.docname)
+        except ValueError as exc:
+            raise ExtensionError(f"{self.get_location()}: {{erratum}} {erratum_id}: {exc}") from exc
+        box = nodes.admonition(classes=["warning", "erratum-box"])
+        box += nodes.title(title, title)
+        for pieces in paragraphs:
+            para = nodes.paragraph()
+            for style, text in pieces:
+                if style == "math":
+                    para += nodes.math(text, text)
+                elif style == "label":
+                    para += nodes.strong(text, text)
+                else:
+                    para += nodes.Text(text)
+            box += para
+        self.set_source_info(box)
+        for name in ledger.paper_modules():
+            module = sys.modules.get(name)
+            if module is not None and any(e.id == erratum_id for e in getattr(module, "ERRATA", ())):
+                self.env.note_dependency(module.__file__)
+        return [box]
 
 
 # --- anchors for errata -------------------------------------------------------------------------
@@ -339,7 +289,7 @@ def setup(app: Sphinx) -> dict[str, Any]:
     # MathJax on every page: the ledger and errata pages hold math only in generated HTML
     # (claim notes and errata written with $...$), which Sphinx does not count as equations
     app.set_html_assets_policy("always")
-    app.connect("doctree-read", _hide_helpers)
+    app.add_directive("erratum", ErratumDirective)
     app.connect("doctree-read", _erratum_anchors)
     app.connect("doctree-read", _captions)
     app.connect("doctree-read", _collect_titles)

@@ -896,12 +896,13 @@ ERRATA = [
         kind="typography",
         basis="text-only",
         locator="Sec. 3.3-3.9, App. E (typographical)",
-        printed="$R_{ij}$ for $R_{ii}$; $(1-2\\tau)/\\alpha$; '$\\rho\\alpha$' in (3.7.20); missing square "
-        "root in (3.7.27); "
-        "$\\mathrm{Exp}_g/(N \\tau)$ in (3.8.16); $\\tau/\\alpha = 10^5$ and $N = 2(10^{-5})$; (E.7) "
-        "$e^{+jnv}$",
-        finding="$R_{ii}$; $1 - 2\\tau/\\alpha$; $p\\alpha$; $\\theta/\\sqrt{2 N \\tau p/\\alpha}$; "
-        "$\\mathrm{Exp}_g/(N \\tau/\\alpha)$; "
+        printed="$R_{ij}$ for $R_{ii}$ in (3.3.4) and (3.5.1), and lower-case $c_{ij}$ for $C_{ij}$; "
+        "$(1-2\\tau)/\\alpha$ throughout (3.7.23)-(3.7.27) and (3.5.14); '$\\rho\\alpha$' in (3.7.20); "
+        "missing square root in the first logarithm of (3.7.27); "
+        "$\\mathrm{Exp}_g/(N \\tau)$ in (3.8.16); $\\tau/\\alpha = 10^5$ in the text of Fig. 3.10 and "
+        "$N = 2(10^{-5})$ in the worked example; (E.7) $e^{+jnv}$",
+        finding="$R_{ii}$ and $C_{ij}$; $1 - 2\\tau/\\alpha$; $p\\alpha$; "
+        "$\\theta/\\sqrt{2 N \\tau p/\\alpha}$; $\\mathrm{Exp}_g/(N \\tau/\\alpha)$; "
         "$\\tau/\\alpha = 10^{-5}$ and $N = 2 \\times 10^{5}$; $e^{-jnv}$.",
         evidence="Each corrected form is the one whose numbers the book reproduces (closed forms "
         "against numerical optima).",
