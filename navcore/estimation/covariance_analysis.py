@@ -73,6 +73,7 @@ from navcore._validate import (
     require_symmetric_psd,
 )
 from navcore.estimation.covariance import Measurement
+from navcore.estimation.kalman import joseph_rows_unchecked
 from navcore.estimation.layout import StateLayout
 from navcore.gnss.constellation import Constellation
 from navcore.inertial.error_dynamics import (
@@ -511,19 +512,11 @@ def run_covariance_analysis(
                 K = np.linalg.solve(Sf, HP).transpose(0, 2, 1)  # (B, n_f, m)
                 # optimal gain for the filter's own model: P+ = P - K S K^T (rank-m downdate)
                 Pf = Pf - K @ HP
-                # any gain for the truth: P+ = P - EK H P - P H' EK' + EK (H P H' + R) EK'
-                # (the Joseph form expanded, O(n^2 m) instead of O(n^3))
-                # (E K is K on the filter's rows of the truth and zero elsewhere: only those
-                # rows and columns change)
-                # (one term M = -E K H P + E K S K^T E^T / 2 added to the rows and its
-                # transpose to the columns: the symmetrisation below averages the two halves
-                # of K S K^T; Pt is this step's own array, so it is changed in place)
-                HPt = Ht @ Pt  # (B, m, n_t)
-                M = K @ HPt  # (B, n_f, n_t)
-                M *= -1.0
-                M[:, :, rows_f] += 0.5 * (K @ (HPt @ Ht.T + Rt) @ K.transpose(0, 2, 1))
-                Pt[:, rows_f, :] += M
-                Pt[:, :, rows_f] += M.transpose(0, 2, 1)
+                # any gain for the truth: the Joseph form with the gain E K (K on the filter's
+                # rows of the truth, zero elsewhere), expanded so that only those rows and
+                # columns change; Pt is this step's own array, so it is changed in place, and
+                # symmetrised below
+                joseph_rows_unchecked(Pt, K, Ht, Rt, rows_f)
                 counts[k] = Ht.shape[0]
         Pt = 0.5 * (Pt + Pt.transpose(0, 2, 1))
         Pf = 0.5 * (Pf + Pf.transpose(0, 2, 1))

@@ -417,7 +417,7 @@ def _joseph_update(x: ArrayLike, P: ArrayLike, z: ArrayLike, H: Array, R: ArrayL
         raise ValueError("the innovation covariance H P H' + R is not positive definite")
     K: Array = Kt.T
     innovation = np.subtract(z, np.dot(H, x))
-    P_post = _joseph(np.asarray(P), K, H, np.asarray(R))
+    P_post = joseph_unchecked(np.asarray(P), K, H, np.asarray(R))
     return KalmanUpdate(np.add(x, np.dot(K, innovation)), P_post, K, innovation, S)
 
 
@@ -500,16 +500,37 @@ def joseph_update(
             f"got K {K.shape} and R {R.shape}"
         )
     if rows is None:
-        return _joseph(P, K, H, R, symmetric=symmetric)
+        return joseph_unchecked(P, K, H, R, symmetric=symmetric)
     idx = np.asarray(rows, dtype=np.intp)
     if idx.ndim != 1 or (idx.size and (idx.min() < -n or idx.max() >= n)):
         raise ValueError(f"rows must be a 1-D array of state indices below {n}, got {rows!r}")
-    out = _joseph_rows(np.array(np.broadcast_to(P, np.broadcast_shapes(P.shape, (*K.shape[:-2], n, n)))), K, H, R, idx)
+    shape = np.broadcast_shapes(P.shape, (*K.shape[:-2], n, n))
+    out = joseph_rows_unchecked(np.array(np.broadcast_to(P, shape)), K, H, R, idx)
     return symmetrize_unchecked(out) if symmetric else out
 
 
-def _joseph(P: Array, K: Array, H: Array, R: Array, *, symmetric: bool = True) -> Array:
-    """The arithmetic of :func:`joseph_update` (no ``rows``) on float arrays, unchecked."""
+def joseph_unchecked(P: Array, K: Array, H: Array, R: Array, *, symmetric: bool = True) -> Array:
+    """:func:`joseph_update` (without ``rows``) with no argument checks, for loops over float
+    arrays checked once.
+
+    Parameters
+    ----------
+    P, K, H, R : ndarray
+        As :func:`joseph_update`: float arrays (not checked).
+    symmetric : bool, default True
+        Return the symmetric part.
+
+    Returns
+    -------
+    ndarray
+        The same numbers as :func:`joseph_update`.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> joseph_unchecked(np.eye(2), np.array([[0.5], [0.0]]), np.array([[1.0, 0.0]]), np.eye(1)).tolist()
+    [[0.5, 0.0], [0.0, 1.0]]
+    """
     I_KH = -(K @ H)
     n = I_KH.shape[-1]
     if I_KH.ndim == 2:
@@ -524,10 +545,34 @@ def _joseph(P: Array, K: Array, H: Array, R: Array, *, symmetric: bool = True) -
     return P_post
 
 
-def _joseph_rows(P: Array, K: Array, H: Array, R: Array, rows: NDArray[np.intp]) -> Array:
-    """:func:`joseph_update` with ``rows``, in place on ``P`` (a float array of the caller's
-    own), unchecked, not symmetrised: the expanded form, half of ``E K S K^T E^T`` added to the
-    rows and half to the columns with the correction term."""
+def joseph_rows_unchecked(P: Array, K: Array, H: Array, R: Array, rows: NDArray[np.intp]) -> Array:
+    """:func:`joseph_update` with ``rows``, in place on ``P``, not symmetrised, unchecked.
+
+    The expanded form: ``M = -E K H P + E K (H P H' + R) K' E' / 2`` is added to the rows
+    ``rows`` and its transpose to the columns (the symmetrisation the caller applies averages
+    the two halves of ``E K S K' E'``).
+
+    Parameters
+    ----------
+    P : (..., n, n) ndarray
+        Float covariance of the caller's own, changed in place (not checked).
+    K, H, R : ndarray
+        As :func:`joseph_update` with ``rows`` (not checked).
+    rows : (k,) ndarray of int
+        The states the gain corrects.
+
+    Returns
+    -------
+    ndarray
+        ``P`` itself, updated.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> P = np.eye(2)
+    >>> joseph_rows_unchecked(P, np.array([[0.5]]), np.array([[1.0, 0.0]]), np.eye(1), np.array([0])).tolist()
+    [[0.5, 0.0], [0.0, 1.0]]
+    """
     HP = H @ P  # (..., m, n)
     M = K @ HP  # (..., k, n)
     M *= -1.0
