@@ -117,7 +117,8 @@ def discretize(
     >>> import numpy as np
     >>> exact = 2.0 * np.array([[0.5**3 / 3, 0.5**2 / 2], [0.5**2 / 2, 0.5]])
     >>> F, S = [[0.0, 1.0], [0.0, 0.0]], [[0.0, 0.0], [0.0, 2.0]]
-    >>> [bool(np.allclose(discretize(F, S, 0.5, method=m)[1], exact)) for m in ("van_loan", "nilpotent", "series")]
+    >>> methods = ("van_loan", "nilpotent", "series")
+    >>> [bool(np.allclose(discretize(F, S, 0.5, method=m)[1], exact)) for m in methods]
     [True, True, True]
     >>> discretize(np.zeros((4, 3, 3)), np.eye(3), 1.0)[1].shape  # a stack of four models
     (4, 3, 3)
@@ -170,7 +171,8 @@ def discretize_unchecked(
     >>> import numpy as np
     >>> F = np.array([[0.0, 1.0], [0.0, 0.0]])
     >>> full = discretize_unchecked(F, np.diag([0.0, 2.0]), 0.5, method="nilpotent")[1]
-    >>> bool((discretize_unchecked(F, np.array([0.0, 2.0]), 0.5, method="nilpotent", diagonal=True)[1] == full).all())
+    >>> diag = discretize_unchecked(F, np.array([0.0, 2.0]), 0.5, method="nilpotent", diagonal=True)[1]
+    >>> bool((diag == full).all())
     True
     """
     S = GQGt

@@ -61,10 +61,7 @@ from navcore._validate import (
     COUNT,
     COVARIANCE,
     COVARIANCE_STACK,
-    NONNEGATIVE,
     OPEN_PROBABILITY,
-    POSITIVE,
-    Range,
     check_public,
     require_positive,
     require_symmetric_psd,
@@ -718,16 +715,15 @@ class _Propagator:
         return out
 
 
-
-
 def _discrete_noise_diag(F: Array, q: Array, dt: float) -> Array:
     """The noise of :func:`~navcore.estimation.discretize.discretize` (``method="series"``) of
     ``M`` systems ``F`` ``(M, n, n)``, each driven by ``B`` diagonal PSDs ``diag(q[m, b])``
     (``q``: ``(M, B, n)``), unchecked: ``(M, B, n, n)``.
 
-    The same quadrature (``P S = P * q`` for a diagonal ``S``, exactly), computed where it can differ from zero: ``Phi(s) S Phi(s)^T`` reads only the driven columns
-    of ``Phi(s)``, which are zero outside the rows of ``F`` that are not zero (the dynamic rows)
-    and the driven states' own unit entries; the three nodes' products are one product over
+    The same quadrature (``P S = P * q`` for a diagonal ``S``, exactly), computed where it
+    can differ from zero: ``Phi(s) S Phi(s)^T`` reads only the driven columns of ``Phi(s)``,
+    which are zero outside the rows of ``F`` that are not zero (the dynamic rows) and the
+    driven states' own unit entries; the three nodes' products are one product over
     their stacked columns.
     """
     x, w = _GAUSS3
@@ -789,8 +785,6 @@ def _taylor_stack(F: Array, dt: float) -> Array:
     Phi[:, np.arange(n), np.arange(n)] = 1.0
     Phi[:, dyn, :] = _taylor_rows(F, dt, dyn)
     return Phi
-
-
 
 
 def concatenate_analyses(parts: Sequence[CovarianceAnalysis]) -> CovarianceAnalysis:
@@ -925,29 +919,15 @@ def circular_error_probable(P2: ArrayLike, p: float = 0.5) -> float:
     return float(brentq(lambda r: prob(r) - p, 0.0, hi, xtol=1e-12 * hi))
 
 
-
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
 check_public(
     globals(),
     {
-        "dt": POSITIVE,
-        "mask_deg": Range(-90.0, 90.0),
         "p": OPEN_PROBABILITY,
-        "n_channels": COUNT,
-        "every": COUNT,
         "relinearize_every": COUNT,
         "stride": COUNT,
-        "interval_steps": COUNT,
-        "order": COUNT,
-        "noise_m": NONNEGATIVE,
-        "noise_mps": NONNEGATIVE,
-        "pseudorange_noise": NONNEGATIVE,
-        "range_rate_noise": NONNEGATIVE,
-        "pseudorange_bias_sigma": NONNEGATIVE,
-        "max_ehe_m": POSITIVE,
         "P2": COVARIANCE,
-        "S": COVARIANCE_STACK,
         "P0_filter": COVARIANCE_STACK,
         "P0_apriori": COVARIANCE_STACK,
     },

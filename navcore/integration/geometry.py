@@ -22,11 +22,6 @@ from numpy.typing import ArrayLike, NDArray
 
 from navcore._validate import (
     COUNT,
-    COVARIANCE,
-    COVARIANCE_STACK,
-    NONNEGATIVE,
-    OPEN_PROBABILITY,
-    POSITIVE,
     ModelDomainError,
     Range,
     check_public,
@@ -245,30 +240,12 @@ def best_geometry_channels(
     return np.asarray(best, dtype=np.int64)
 
 
-
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
 check_public(
     globals(),
     {
-        "dt": POSITIVE,
         "mask_deg": Range(-90.0, 90.0),
-        "p": OPEN_PROBABILITY,
         "n_channels": COUNT,
-        "every": COUNT,
-        "relinearize_every": COUNT,
-        "stride": COUNT,
-        "interval_steps": COUNT,
-        "order": COUNT,
-        "noise_m": NONNEGATIVE,
-        "noise_mps": NONNEGATIVE,
-        "pseudorange_noise": NONNEGATIVE,
-        "range_rate_noise": NONNEGATIVE,
-        "pseudorange_bias_sigma": NONNEGATIVE,
-        "max_ehe_m": POSITIVE,
-        "P2": COVARIANCE,
-        "S": COVARIANCE_STACK,
-        "P0_filter": COVARIANCE_STACK,
-        "P0_apriori": COVARIANCE_STACK,
     },
 )

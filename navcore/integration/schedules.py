@@ -25,20 +25,16 @@ from numpy.typing import NDArray
 
 from navcore._validate import (
     COUNT,
-    COVARIANCE,
-    COVARIANCE_STACK,
     NONNEGATIVE,
-    OPEN_PROBABILITY,
     POSITIVE,
-    Range,
     check_public,
     require_nonnegative,
     require_positive,
 )
 from navcore.estimation.covariance import Measurement
 from navcore.estimation.layout import StateLayout
-from navcore.integration.geometry import SatelliteGeometry
 from navcore.inertial.trajectories import Trajectory
+from navcore.integration.geometry import SatelliteGeometry
 from navcore.trace import implements
 
 __all__ = [
@@ -505,30 +501,18 @@ def combine_schedules(*schedules: Schedule | None) -> Schedule:
     return sched
 
 
-
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
 check_public(
     globals(),
     {
-        "dt": POSITIVE,
-        "mask_deg": Range(-90.0, 90.0),
-        "p": OPEN_PROBABILITY,
-        "n_channels": COUNT,
         "every": COUNT,
-        "relinearize_every": COUNT,
-        "stride": COUNT,
         "interval_steps": COUNT,
-        "order": COUNT,
         "noise_m": NONNEGATIVE,
         "noise_mps": NONNEGATIVE,
         "pseudorange_noise": NONNEGATIVE,
         "range_rate_noise": NONNEGATIVE,
         "pseudorange_bias_sigma": NONNEGATIVE,
         "max_ehe_m": POSITIVE,
-        "P2": COVARIANCE,
-        "S": COVARIANCE_STACK,
-        "P0_filter": COVARIANCE_STACK,
-        "P0_apriori": COVARIANCE_STACK,
     },
 )
