@@ -16,7 +16,7 @@ chapters use for their local filters and trackers.
 
 A step with no measurement is a pure prediction; a measurement with infinite variance is
 skipped (an outage). Schedules, and a time-varying ``Phi`` or ``Q``, are functions of the step
-index ``k`` alone, as in :func:`navcore.estimation.covariance_analysis.run_covariance_analysis`
+index ``k`` alone, as in :func:`navcore.integration.engine.run_covariance_analysis`
 (the time is ``t[k]``).
 """
 
@@ -153,7 +153,7 @@ def propagate_covariance(
         Measurements available at ``t[k]`` (``k = 0..N``), processed sequentially. A
         measurement whose ``R`` has an infinite diagonal entry is skipped (outage). The
         signature is that of the schedules of
-        :func:`navcore.estimation.covariance_analysis.run_covariance_analysis`.
+        :func:`navcore.integration.engine.run_covariance_analysis`.
 
     Returns
     -------

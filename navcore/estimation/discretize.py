@@ -129,7 +129,7 @@ def discretize(
     n = F.shape[-1]
     S = as_finite_array("GQGt", GQGt)
     if S.ndim < 2 or S.shape[-2:] != (n, n):
-        raise ValueError(f"GQGt must be {n}x{n} (or a stack of them) like F, got shape {S.shape}")
+        raise ValueError(f"GQGt must be {n}x{n}, got shape {S.shape}")
     COVARIANCE_STACK.check("GQGt", S)
     require_positive("dt", dt)
     if method not in ("van_loan", "nilpotent", "series"):
