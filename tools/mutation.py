@@ -134,17 +134,6 @@ PACKAGES: dict[str, Package] = {
             "test_library_lifted.py",
         ],
     ),
-    "integration": Package(
-        ["navcore/integration/*"],
-        [
-            "test_covariance_analysis.py",
-            "test_covariance_analysis_results.py",
-            "test_ekf_ins_gnss.py",
-            "test_ekf_ins_gnss_physics.py",
-            "test_error_model17.py",
-            "test_error_dynamics.py",
-        ],
-    ),
     "inertial": Package(
         ["navcore/inertial/*"],
         [
@@ -171,6 +160,17 @@ PACKAGES: dict[str, Package] = {
             "test_constellation_geometry.py",
             "test_carrier_phase_geometry.py",
             "test_dop.py",
+        ],
+    ),
+    "integration": Package(
+        ["navcore/integration/*"],
+        [
+            "test_covariance_analysis.py",
+            "test_covariance_analysis_results.py",
+            "test_ekf_ins_gnss.py",
+            "test_ekf_ins_gnss_physics.py",
+            "test_error_model17.py",
+            "test_error_dynamics.py",
         ],
     ),
     "detection": Package(
