@@ -396,6 +396,21 @@ REGISTRY: dict[str, tuple[Callable[[], dict[str, Any]], dict[str, str]]] = {
         lambda: {"x": [0.0, 1.0], "P": SPD2, "Phi": np.eye(2), "Q": SPD2},
         {"P": COVARIANCE, "Q": COVARIANCE},
     ),
+    "estimation.kalman.joseph_update": (
+        lambda: {"P": SPD2, "K": np.eye(2), "H": np.eye(2), "R": SPD2},
+        {"P": COVARIANCE, "R": COVARIANCE},
+    ),
+    "estimation.covariance.biased_filter_error_covariance": (
+        lambda: {
+            "Phi": np.eye(2),
+            "Q": SPD2,
+            "P0": SPD2,
+            "h": [1.0, 0.0],
+            "sigma": [1.0, np.nan],
+            "bias_sigma": 1.0,
+        },
+        {"P0": COVARIANCE, "Q": COVARIANCE},
+    ),
     "estimation.kalman.kf_update": (
         lambda: {"x": [0.0, 1.0], "P": SPD2, "z": [1.0, 2.0], "H": np.eye(2), "R": SPD2},
         {"P": COVARIANCE, "R": COVARIANCE},
@@ -693,6 +708,8 @@ STACKS = {
     ("integration.ekf_ins_gnss.euler_batch", "C"),
     ("integration.ekf_ins_gnss.euler_jacobian_batch", "C"),
     ("estimation.discretize.discretize", "GQGt"),
+    ("estimation.kalman.joseph_update", "P"),
+    ("estimation.kalman.joseph_update", "R"),
     ("inertial.error_model17.error_dynamics_17", "C_bn"),
     ("integration.engine.run_covariance_analysis", "P0"),
     ("integration.engine.run_covariance_analysis", "P0_filter"),

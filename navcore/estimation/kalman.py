@@ -45,6 +45,7 @@ from scipy.linalg import lapack
 
 from navcore._validate import (
     _SQRT_EPS,
+    COVARIANCE_STACK,
     _potrf,
     as_finite_array,
     check_argument,
@@ -737,4 +738,4 @@ def information_update(
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
 # kf_predict and kf_update check every argument in their bodies, once (checks_own_arguments).
-check_public(globals())
+check_public(globals(), joseph_update={"ranges": {"P": COVARIANCE_STACK, "R": COVARIANCE_STACK}})
