@@ -228,3 +228,17 @@ def test_biased_filter_error_covariance_matches_a_seeded_monte_carlo():
     se = np.diag(C)[:2] * np.sqrt(2.0 / N)
     assert np.all(np.abs(var_mc - np.diag(C)[:2]) < 4 * se)
     assert np.diag(C)[0] > P[0, 0] * 1.5  # the ignored bias leaves far more error than the filter thinks
+
+
+def test_joseph_unchecked_scalar_variance_is_the_one_by_one_noise():
+    """A single measurement's variance as a scalar: R (K K^T), the same matrix as K [[R]] K^T."""
+    from navcore.estimation.kalman import joseph_unchecked
+
+    rng = np.random.default_rng(16)
+    P = _spd(rng, 6)
+    K = rng.standard_normal((6, 1))
+    H = np.eye(6)[:1]
+    scalar = joseph_unchecked(P, K, H, 2.5, symmetric=False)
+    matrix = joseph_unchecked(P, K, H, np.array([[2.5]]), symmetric=False)
+    np.testing.assert_allclose(scalar, matrix, rtol=1e-15, atol=1e-15)
+    np.testing.assert_allclose(scalar, _textbook_joseph(P, K, H, np.array([[2.5]])), rtol=1e-13)

@@ -510,14 +510,17 @@ def joseph_update(
     return symmetrize_unchecked(out) if symmetric else out
 
 
-def joseph_unchecked(P: Array, K: Array, H: Array, R: Array, *, symmetric: bool = True) -> Array:
+def joseph_unchecked(P: Array, K: Array, H: Array, R: Array | float, *, symmetric: bool = True) -> Array:
     """:func:`joseph_update` (without ``rows``) with no argument checks, for loops over float
     arrays checked once.
 
     Parameters
     ----------
-    P, K, H, R : ndarray
+    P, K, H : ndarray
         As :func:`joseph_update`: float arrays (not checked).
+    R : ndarray or float
+        As :func:`joseph_update`, or, for a single measurement (``m = 1``), its variance as a
+        scalar: the noise term is then formed as ``R (K K^T)``.
     symmetric : bool, default True
         Return the symmetric part.
 
@@ -539,7 +542,8 @@ def joseph_unchecked(P: Array, K: Array, H: Array, R: Array, *, symmetric: bool 
     else:
         diag = np.arange(n)
         I_KH[..., diag, diag] += 1.0
-    P_post = I_KH @ P @ np.swapaxes(I_KH, -1, -2) + K @ R @ np.swapaxes(K, -1, -2)
+    Kt = np.swapaxes(K, -1, -2)
+    P_post = I_KH @ P @ np.swapaxes(I_KH, -1, -2) + (R * (K @ Kt) if np.ndim(R) == 0 else K @ R @ Kt)
     if symmetric:  # made exactly symmetric, in place
         P_post += np.swapaxes(P_post, -1, -2)
         P_post *= 0.5

@@ -605,7 +605,7 @@ def simulate_impact_errors(
             S = P[0, 0] + r
             K = P[:, 0] / S
             xh = xh + np.outer(z - xh[:, 0], K)
-            P = joseph_unchecked(P, K[:, None], H, np.array([[r]]), symmetric=False)
+            P = joseph_unchecked(P, K[:, None], H, r, symmetric=False)
     err = (x[:, 0] - xh[:, 0]).reshape(runs, 2)
     return RunResult(err, float(math.sqrt(P[0, 0])), locked, seed)
 
