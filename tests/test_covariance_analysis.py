@@ -461,7 +461,7 @@ def _all_sources(scale=1.0):
 @pytest.mark.parametrize("vertical_channel", [True, False])
 def test_batched_kernels_equal_the_checked_functions_per_condition(vertical_channel):
     """Oracle: the public, per-condition error_dynamics, process_noise_psd, taylor_transition and
-    discrete_noise; the engine's batched, unchecked kernels give the same matrices for each of a
+    discretize (method "series"); the engine's batched, unchecked kernels give the same matrices for each of a
     stack of random flight conditions (every block of the model present)."""
     from scipy.spatial.transform import Rotation
 
@@ -568,7 +568,7 @@ def test_shared_transitions_give_the_uncached_run_and_a_changed_input_misses():
 
 def test_random_constants_skipped_only_where_they_are_constant(monkeypatch):
     """Oracle: the plain recursion written out with the public, per-condition functions
-    (error_dynamics, process_noise_psd, taylor_transition, discrete_noise): both covariances
+    (error_dynamics, process_noise_psd, taylor_transition, discretize): both covariances
     propagated in full (Phi P Phi^T + Q), the filter's gain from its own covariance, the truth
     updated in Joseph form with that gain.
 

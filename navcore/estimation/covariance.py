@@ -313,7 +313,7 @@ def biased_filter_error_covariance(
     Qa = np.zeros((n + 1, n + 1))
     Qa[:n, :n] = Q
     H = h[None, :]
-    Ha = np.append(h, 1.0)[None, :]
+    Ha = np.append(h, 1.0)[None, :]  # the measurement of the error and the bias
     for k in range(nt):
         P = Phi @ P @ Phi.T + Q
         C = A @ C @ A.T + Qa
