@@ -457,8 +457,8 @@ def mutation(session: nox.Session) -> None:
     """Mutation testing (mutmut) of navcore's packages, the tools and the book's extensions;
     writes _build/mutation.md.
 
-    ``nox -s mutation`` runs the model packages (estimation, inertial, gnss, detection,
-    location, frames), then the ledger, units and validation, figures, the paper modules'
+    ``nox -s mutation`` runs the model packages (estimation, inertial, gnss, integration,
+    detection, location, frames), then the ledger, units and validation, figures, the paper modules'
     functions, the tools and the book's extensions, one after another, each in its own scratch
     copy under ``_build/mutation/`` with only the test files that exercise it
     (tools/mutation.py); ``nox -s mutation -- gnss frames`` runs some,

@@ -76,7 +76,7 @@ Covariances
     information" (an outage). Schedules of measurements, and a time-varying transition or
     noise, are functions of the step index ``k`` alone (the time is ``t[k]``), in
     :func:`navcore.estimation.covariance.propagate_covariance` and
-    :func:`navcore.estimation.covariance_analysis.run_covariance_analysis` alike. A Kalman
+    :func:`navcore.integration.engine.run_covariance_analysis` alike. A Kalman
     update with no measurement (an epoch without satellites) returns the prior unchanged.
 Detection
     The signal-to-noise ratio is per pulse, ``E/N0`` (signal energy over the one-sided noise
@@ -121,7 +121,7 @@ Errors
     unchecked: with ``validate=False`` where a function offers it
     (:func:`navcore.estimation.kalman.kf_predict`), else through
     ``navcore._validate.unchecked`` (the Monte Carlo of
-    :mod:`navcore.estimation.ekf_ins_gnss`, the strapdown). Inputs each in range whose
+    :mod:`navcore.integration.ekf_ins_gnss`, the strapdown). Inputs each in range whose
     combination the model does not cover (no four satellites stay above the mask along the
     whole flight, for fixed channels) raise :class:`navcore.ModelDomainError`, a
     ``ValueError`` a caller can tell apart.

@@ -430,7 +430,7 @@ def kzl_error_states() -> int:
 )
 def kzl_dd_rows(n: str) -> int:
     """Rows of KZL's stacked observation matrix (Eq. (17)) for ``n`` satellites in view."""
-    from navcore.gnss.carrier_phase import dd_observation_rows_count
+    from navcore.integration.measurement_rows import dd_observation_rows_count
 
     return int(dd_observation_rows_count(int(n)))
 
@@ -3405,9 +3405,9 @@ def _sp20_hour_horizontal_covariances() -> list[Any]:
     at the grade latitude, in 10 s steps (as the inertial-errors page computes them)."""
     import numpy as np
 
-    from navcore.estimation.covariance_analysis import run_covariance_analysis
     from navcore.inertial.error_dynamics import ErrorSources, gyrocompass_alignment, initial_covariance
     from navcore.inertial.trajectories import straight_and_level
+    from navcore.integration.engine import run_covariance_analysis
     from navcore.papers import sp_missions as spm
     from navcore.papers import sp_tables as spt
     from navcore.units import DEG, HOUR
@@ -3444,7 +3444,7 @@ def sp20_rss_over_cep_max_pct() -> float:
     largest over the Table 2.5 columns."""
     import numpy as np
 
-    from navcore.estimation.covariance_analysis import circular_error_probable
+    from navcore.integration.engine import circular_error_probable
 
     ratios = [np.sqrt(np.trace(P)) / circular_error_probable(P) for P in _sp20_hour_horizontal_covariances()]
     return float(100 * (max(ratios) - 1))

@@ -40,7 +40,6 @@ from test_api_inputs import PUBLIC, _parameters
 
 def _issue_30_cases() -> list[tuple[str, Callable[[], Any], str]]:
     from navcore.estimation.covariance import Measurement, propagate_covariance
-    from navcore.estimation.covariance_analysis import circular_error_probable
     from navcore.frames import dcm_from_quat, quat_rotate
     from navcore.inertial.error_dynamics import (
         ErrorSources,
@@ -50,6 +49,7 @@ def _issue_30_cases() -> list[tuple[str, Callable[[], Any], str]]:
     )
     from navcore.inertial.imu import ImuSpec
     from navcore.inertial.trajectories import straight_and_level
+    from navcore.integration.engine import circular_error_probable
     from navcore.location.multilateration import position_dilution
 
     lay = ins_error_layout("position", "velocity", "misalignment")
@@ -347,7 +347,7 @@ REGISTRY: dict[str, tuple[Callable[[], dict[str, Any]], dict[str, str]]] = {
         {"cov": COVARIANCE},
     ),
     # GNSS attitude rows
-    "gnss.carrier_phase.dd_observation_rows": (
+    "integration.measurement_rows.dd_observation_rows": (
         lambda: {
             "los_m": [0.0, 0.0, -1.0],
             "los_n": [1.0, 0.0, 0.0],
@@ -356,16 +356,16 @@ REGISTRY: dict[str, tuple[Callable[[], dict[str, Any]], dict[str, str]]] = {
         },
         {"C_bn": ROTATION},
     ),
-    "gnss.carrier_phase.euler_attitude_rows": (
+    "integration.measurement_rows.euler_attitude_rows": (
         lambda: {"C_bn": C1, "roll": 0.1, "pitch": 0.2},
         {"C_bn": ROTATION, "pitch": VERTICAL},
     ),
     "gnss.carrier_phase.euler_rate_matrix_body": (lambda: {"roll": 0.1, "pitch": 0.2}, {"pitch": VERTICAL}),
-    "gnss.carrier_phase.tc_attitude_observation_matrix": (
+    "integration.measurement_rows.tc_attitude_observation_matrix": (
         lambda: {"los_ned": LOS, "C_bn": C1, "roll": 0.1, "pitch": 0.2},
         {"C_bn": ROTATION, "pitch": VERTICAL},
     ),
-    "gnss.carrier_phase.tc_dd_observation_matrix": (
+    "integration.measurement_rows.tc_dd_observation_matrix": (
         lambda: {"los_ned": LOS, "C_bn": C1, "baselines_b": np.eye(3)[:2]},
         {"C_bn": ROTATION},
     ),
@@ -375,12 +375,8 @@ REGISTRY: dict[str, tuple[Callable[[], dict[str, Any]], dict[str, str]]] = {
         lambda: {"P0": SPD2, "t": [0.0, 1.0], "Phi": np.eye(2), "Q": SPD2},
         {"P0": COVARIANCE, "Q": COVARIANCE},
     ),
-    "estimation.covariance_analysis.circular_error_probable": (lambda: {"P2": SPD2}, {"P2": COVARIANCE}),
-    "estimation.covariance_analysis.discrete_noise": (
-        lambda: {"F": [[0.0, 1.0], [0.0, 0.0]], "S": SPD2, "dt": 0.5},
-        {"S": COVARIANCE},
-    ),
-    "estimation.covariance_analysis.run_covariance_analysis": (
+    "integration.engine.circular_error_probable": (lambda: {"P2": SPD2}, {"P2": COVARIANCE}),
+    "integration.engine.run_covariance_analysis": (
         lambda: {
             "trajectory": _trajectory(),
             "truth_layout": _layout(),
@@ -392,13 +388,28 @@ REGISTRY: dict[str, tuple[Callable[[], dict[str, Any]], dict[str, str]]] = {
         },
         {"P0": COVARIANCE, "P0_filter": COVARIANCE, "P0_apriori": COVARIANCE},
     ),
-    "estimation.discretize.van_loan": (
+    "estimation.discretize.discretize": (
         lambda: {"F": [[0.0, 1.0], [0.0, 0.0]], "GQGt": SPD2, "dt": 0.5},
         {"GQGt": COVARIANCE},
     ),
     "estimation.kalman.kf_predict": (
         lambda: {"x": [0.0, 1.0], "P": SPD2, "Phi": np.eye(2), "Q": SPD2},
         {"P": COVARIANCE, "Q": COVARIANCE},
+    ),
+    "estimation.kalman.joseph_update": (
+        lambda: {"P": SPD2, "K": np.eye(2), "H": np.eye(2), "R": SPD2},
+        {"P": COVARIANCE, "R": COVARIANCE},
+    ),
+    "estimation.covariance.biased_filter_error_covariance": (
+        lambda: {
+            "Phi": np.eye(2),
+            "Q": SPD2,
+            "P0": SPD2,
+            "h": [1.0, 0.0],
+            "sigma": [1.0, np.nan],
+            "bias_sigma": 1.0,
+        },
+        {"P0": COVARIANCE, "Q": COVARIANCE},
     ),
     "estimation.kalman.kf_update": (
         lambda: {"x": [0.0, 1.0], "P": SPD2, "z": [1.0, 2.0], "H": np.eye(2), "R": SPD2},
@@ -483,12 +494,12 @@ REGISTRY: dict[str, tuple[Callable[[], dict[str, Any]], dict[str, str]]] = {
         lambda: {"covariances": [SPD2, 4.0 * SPD2]},
         {"covariances": COVARIANCE},
     ),
-    "estimation.ekf_ins_gnss.correct_attitude": (
+    "integration.ekf_ins_gnss.correct_attitude": (
         lambda: {"q": np.stack([Q1, Q1]), "dpsi": np.zeros((2, 3))},
         {"q": QUATERNION},
     ),
-    "estimation.ekf_ins_gnss.euler_batch": (lambda: {"C": np.stack([C1, np.eye(3)])}, {"C": ROTATION}),
-    "estimation.ekf_ins_gnss.euler_jacobian_batch": (
+    "integration.ekf_ins_gnss.euler_batch": (lambda: {"C": np.stack([C1, np.eye(3)])}, {"C": ROTATION}),
+    "integration.ekf_ins_gnss.euler_jacobian_batch": (
         lambda: {"C": np.stack([C1, np.eye(3)])},
         {"C": ROTATION},
     ),
@@ -523,11 +534,8 @@ EXEMPT: dict[str, str] = {
         "(frames.dcm_from_quat is the checked one)"
     ),
     "estimation.kalman.symmetrize": "the symmetric part of any square matrix (or stack)",
-    "estimation.ekf_ins_gnss.sequential_scalar_updates": (
+    "integration.ekf_ins_gnss.sequential_scalar_updates": (
         "inner-loop helper of run_monte_carlo, which checks its scenario at entry (P is a stack per run)"
-    ),
-    "estimation.ekf_ins_gnss.discrete_noise_nilpotent": (
-        "inner-loop helper of run_monte_carlo, called every step with the model's own noise"
     ),
 }
 
@@ -536,7 +544,7 @@ _COV_NAMES = re.compile(
 )
 _ROT_NAMES = {"C", "C_bn"}
 _LAT_NAMES = {"lat", "lat0"}
-_QUAT_MODULES = ("frames", "inertial.strapdown", "estimation.ekf_ins_gnss")
+_QUAT_MODULES = ("frames", "inertial.strapdown", "integration.ekf_ins_gnss")
 
 
 def _short(name: str) -> str:
@@ -564,7 +572,7 @@ def test_every_marked_parameter_is_registered_or_exempt():
             continue
         marked = _marked(short, func)
         covered = set(REGISTRY.get(short, (None, {}))[1])
-        if short == "estimation.covariance_analysis.circular_error_probable":
+        if short == "integration.engine.circular_error_probable":
             marked.discard("p")  # the probability, not a quaternion
         if short == "location.target_location.target_location_covariance":
             # a cross-covariance: any finite 3x3 (not symmetric); the joint matrix it forms with
@@ -696,14 +704,16 @@ STACKS = {
     ("frames.rotvec_from_quat", "q"),
     ("frames.euler_from_dcm", "C_bn"),
     ("frames.quat_from_dcm", "C"),
-    ("estimation.ekf_ins_gnss.correct_attitude", "q"),
-    ("estimation.ekf_ins_gnss.euler_batch", "C"),
-    ("estimation.ekf_ins_gnss.euler_jacobian_batch", "C"),
-    ("estimation.covariance_analysis.discrete_noise", "S"),
+    ("integration.ekf_ins_gnss.correct_attitude", "q"),
+    ("integration.ekf_ins_gnss.euler_batch", "C"),
+    ("integration.ekf_ins_gnss.euler_jacobian_batch", "C"),
+    ("estimation.discretize.discretize", "GQGt"),
+    ("estimation.kalman.joseph_update", "P"),
+    ("estimation.kalman.joseph_update", "R"),
     ("inertial.error_model17.error_dynamics_17", "C_bn"),
-    ("estimation.covariance_analysis.run_covariance_analysis", "P0"),
-    ("estimation.covariance_analysis.run_covariance_analysis", "P0_filter"),
-    ("estimation.covariance_analysis.run_covariance_analysis", "P0_apriori"),
+    ("integration.engine.run_covariance_analysis", "P0"),
+    ("integration.engine.run_covariance_analysis", "P0_filter"),
+    ("integration.engine.run_covariance_analysis", "P0_apriori"),
 }
 
 

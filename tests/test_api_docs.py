@@ -37,6 +37,7 @@ SUBPACKAGES = (
     "estimation",
     "inertial",
     "gnss",
+    "integration",
     "detection",
     "location",
     "ledger",

@@ -1,8 +1,8 @@
 """Every public model function rejects bad input cleanly (issue 19, item 5).
 
 The public API is enumerated from the ``__all__`` of every module of the model subpackages
-(units, frames, estimation, inertial, gnss, detection, location). For each function (and each
-class constructor that takes inputs), hypothesis (derandomized, so the run is reproducible)
+(units, frames, estimation, inertial, gnss, integration, detection, location). For each function
+(and each class constructor that takes inputs), hypothesis (derandomized, so the run is reproducible)
 draws one parameter and gives it a bad value -- NaN, infinity, a negative, zero or
 out-of-range number, an empty or wrong-shaped array, a string, ``None``, a ragged list --
 while the other required parameters get simple plausible values. A call passes if it
@@ -34,7 +34,17 @@ from hypothesis import strategies as st
 
 from navcore import _validate
 
-SUBPACKAGES = ("units", "frames", "gravity", "estimation", "inertial", "gnss", "detection", "location")
+SUBPACKAGES = (
+    "units",
+    "frames",
+    "gravity",
+    "estimation",
+    "inertial",
+    "gnss",
+    "integration",
+    "detection",
+    "location",
+)
 
 #: Result records: containers a function returns, not inputs a user builds; not checked.
 RESULT_RECORDS = _validate.RESULT_RECORDS | {"KalmanUpdate", "ScalarSteadyState"}

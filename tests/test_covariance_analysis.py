@@ -9,20 +9,7 @@ import scipy.linalg
 from _oracles import van_loan_expm
 from filterpy.kalman import KalmanFilter
 
-from navcore.estimation.covariance_analysis import (
-    baro_schedule,
-    circular_error_probable,
-    combine_schedules,
-    discrete_noise,
-    embedding,
-    lock_table,
-    loosely_coupled_schedule,
-    run_covariance_analysis,
-    satellite_geometry,
-    taylor_transition,
-    tightly_coupled_schedule,
-)
-from navcore.estimation.discretize import van_loan
+from navcore.estimation.discretize import discretize, taylor_transition
 from navcore.gnss.constellation import nominal_gps_constellation
 from navcore.inertial.error_dynamics import (
     ErrorSources,
@@ -34,6 +21,14 @@ from navcore.inertial.error_dynamics import (
 )
 from navcore.inertial.imu import ImuSpec
 from navcore.inertial.trajectories import straight_and_level
+from navcore.integration.engine import circular_error_probable, embedding, run_covariance_analysis
+from navcore.integration.geometry import lock_table, satellite_geometry
+from navcore.integration.schedules import (
+    baro_schedule,
+    combine_schedules,
+    loosely_coupled_schedule,
+    tightly_coupled_schedule,
+)
 from navcore.units import DEG, DEG_PER_H, MICRO_G
 
 
@@ -48,7 +43,7 @@ def _monte_carlo(truth, filt, src, P0, tr, sched, runs, seed):
         truth, f_ned=tr.f_ned[0], C_bn=tr.C_bn[0], v_ned=tr.vel_ned[0], lat=tr.lat[0], sources=src
     )
     S = process_noise_psd(truth, src, speed_mps=float(tr.speed[0]))
-    Phi, Qd = van_loan(F, S, tr.dt)
+    Phi, Qd = discretize(F, S, tr.dt)
     Lq = np.linalg.cholesky(Qd + 1e-30 * np.eye(n))
     x = rng.multivariate_normal(np.zeros(n), P0, size=runs, method="eigh")
     xh = np.zeros((runs, idx.size))
@@ -388,13 +383,13 @@ def test_discrete_noise_against_van_loan():
     F *= 0.05 / (np.linalg.norm(F, 2) * dt)
     L = rng.standard_normal((3, n, n))
     S = L @ np.swapaxes(L, -1, -2)
-    Q = discrete_noise(F, S, dt)
+    Q = discretize(F, S, dt, method="series")[1]
     assert Q.shape == (3, n, n)
     for b in range(3):
         _, Q_ref = van_loan_expm(F, S[b], dt)
         np.testing.assert_allclose(Q[b], Q_ref, rtol=0, atol=1e-8 * np.max(np.abs(Q_ref)))
         np.testing.assert_array_equal(Q[b], Q[b].T)
-        np.testing.assert_allclose(discrete_noise(F, S[b], dt), Q[b], rtol=1e-15, atol=0)
+        np.testing.assert_allclose(discretize(F, S[b], dt, method="series")[1], Q[b], rtol=1e-15, atol=0)
 
 
 def test_composite_steps_give_the_single_step_histories_between_fixes():
@@ -466,12 +461,12 @@ def _all_sources(scale=1.0):
 @pytest.mark.parametrize("vertical_channel", [True, False])
 def test_batched_kernels_equal_the_checked_functions_per_condition(vertical_channel):
     """Oracle: the public, per-condition error_dynamics, process_noise_psd, taylor_transition and
-    discrete_noise; the engine's batched, unchecked kernels give the same matrices for each of a
+    discretize (method "series"); the engine's batched, unchecked kernels give the same matrices for each of a
     stack of random flight conditions (every block of the model present)."""
     from scipy.spatial.transform import Rotation
 
-    from navcore.estimation.covariance_analysis import _discrete_noise_diag, _taylor_stack
     from navcore.inertial.error_dynamics import _error_dynamics_stack, _process_noise_diag_stack
+    from navcore.integration.engine import _discrete_noise_diag, _taylor_stack
 
     rng = np.random.default_rng(7)
     lay = _all_blocks_layout()
@@ -498,7 +493,7 @@ def test_batched_kernels_equal_the_checked_functions_per_condition(vertical_chan
         S1 = np.stack([process_noise_psd(lay, s, speed_mps=float(speed[m])) for s in srcs])
         np.testing.assert_array_equal(np.stack([np.diag(x) for x in q[m]]), S1)
         np.testing.assert_allclose(Phi[m], taylor_transition(F1, dt), rtol=1e-13, atol=1e-16)
-        Q1 = discrete_noise(F1, S1, dt)
+        Q1 = discretize(F1, S1, dt, method="series")[1]
         np.testing.assert_allclose(Q[m], Q1, rtol=1e-12, atol=1e-14 * np.abs(Q1).max())
 
 
@@ -508,7 +503,7 @@ def test_transition_series_order_is_converged_on_a_turning_flight(monkeypatch):
     break turn, the fastest rotation of the SP scenarios, and at the 10-s steps of a vehicle at
     rest): the series' order is a resolution, not an input, and moves no variance by more than
     1e-7 relative over ten minutes of turning flight with sensor scale factors."""
-    import navcore.estimation.covariance_analysis as ca
+    import navcore.integration.engine as ca
     from navcore.inertial.trajectories import Segment, fly
 
     lay = ins_error_layout("position", "velocity", "misalignment", "gyro bias", "gyro scale factor")
@@ -538,7 +533,7 @@ def test_shared_transitions_give_the_uncached_run_and_a_changed_input_misses():
     transition and noise computed afresh). A second run served from the store is bit for bit
     the uncached one; a run whose error sources differ in one number (and one whose trajectory
     differs) computes its own matrices and equals its own uncached run, not the first one."""
-    import navcore.estimation.covariance_analysis as ca
+    import navcore.integration.engine as ca
 
     truth = ins_error_layout("position", "velocity", "misalignment", "gyro bias", "gravity")
     filt = ins_error_layout("position", "velocity", "misalignment", "gyro bias")
@@ -573,7 +568,7 @@ def test_shared_transitions_give_the_uncached_run_and_a_changed_input_misses():
 
 def test_random_constants_skipped_only_where_they_are_constant(monkeypatch):
     """Oracle: the plain recursion written out with the public, per-condition functions
-    (error_dynamics, process_noise_psd, taylor_transition, discrete_noise): both covariances
+    (error_dynamics, process_noise_psd, taylor_transition, discretize): both covariances
     propagated in full (Phi P Phi^T + Q), the filter's gain from its own covariance, the truth
     updated in Joseph form with that gain.
 
@@ -583,7 +578,7 @@ def test_random_constants_skipped_only_where_they_are_constant(monkeypatch):
     correlation time is distance over speed) and not once it moves; with two linearisation
     points per batch, the later batches do not fit the first one's structure and must be
     propagated in full. The filter leaves the gravity out (a suboptimal filter)."""
-    import navcore.estimation.covariance_analysis as ca
+    import navcore.integration.engine as ca
     from navcore.estimation.covariance import Measurement
     from navcore.inertial.error_dynamics import earth_rate_ned, transport_rate_ned
     from navcore.inertial.trajectories import Segment, fly
@@ -642,7 +637,7 @@ def test_random_constants_skipped_only_where_they_are_constant(monkeypatch):
                 sources=src,
             )
             S = process_noise_psd(truth, src, speed_mps=float(tr.speed[j]))
-            Phi, Q = taylor_transition(F, tr.dt), discrete_noise(F, S, tr.dt)
+            Phi, Q = taylor_transition(F, tr.dt), discretize(F, S, tr.dt, method="series")[1]
             Pt = Phi @ Pt @ Phi.T + Q
             Pf = Phi[np.ix_(idx, idx)] @ Pf @ Phi[np.ix_(idx, idx)].T + Q[np.ix_(idx, idx)]
         meas = sched(k)

@@ -14,17 +14,12 @@ import numpy as np
 import pymap3d
 import pytest
 
-from navcore.estimation.covariance_analysis import (
-    CovarianceAnalysis,
-    baro_schedule,
-    best_geometry_channels,
-    combine_schedules,
-    concatenate_analyses,
-    satellite_geometry,
-)
 from navcore.estimation.layout import StateLayout
 from navcore.gnss.constellation import Constellation, nominal_gps_constellation
 from navcore.inertial.trajectories import straight_and_level
+from navcore.integration.engine import CovarianceAnalysis, concatenate_analyses
+from navcore.integration.geometry import best_geometry_channels, satellite_geometry
+from navcore.integration.schedules import baro_schedule, combine_schedules
 from navcore.units import DEG
 
 TRUTH = StateLayout.of(("gravity", 1), ("position", 2), ("velocity", 2), name="truth")

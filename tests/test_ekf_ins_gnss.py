@@ -14,21 +14,21 @@ import pytest
 from scipy.spatial.transform import Rotation
 
 from navcore import frames as fr
-from navcore.estimation import kf_update, van_loan
-from navcore.estimation.ekf_ins_gnss import (
+from navcore.estimation import discretize, kf_update
+from navcore.gnss.carrier_phase import dd_covariance, double_difference_phase
+from navcore.inertial.error_model17 import error_dynamics_17, noise_psd_17, transition_exact
+from navcore.inertial.strapdown import NavState, strapdown_step
+from navcore.integration.ekf_ins_gnss import (
     _dd_phase_batch,
     _strapdown_rows,
     _transition_and_noise,
     correct_attitude,
-    discrete_noise_nilpotent,
     euler_batch,
     euler_jacobian_batch,
     run_monte_carlo,
     sequential_scalar_updates,
 )
-from navcore.gnss.carrier_phase import dd_covariance, double_difference_phase, euler_attitude_rows
-from navcore.inertial.error_model17 import error_dynamics_17, noise_psd_17, transition_exact
-from navcore.inertial.strapdown import NavState, strapdown_step
+from navcore.integration.measurement_rows import euler_attitude_rows
 from navcore.papers.kzl_scenario import table1_scenario
 from navcore.units import DEG, G0
 
@@ -75,10 +75,10 @@ def test_gauss_legendre_noise_equals_van_loan():
     C = fr.dcm_from_euler(0.02, -0.01, np.pi / 2)
     F = error_dynamics_17(C, C @ [0.1, 0.0, -G0])
     GQG = noise_psd_17(1e-2, 1e-3, 1e-5, 1e-6, 0.2, 0.1)
-    _, Qd = van_loan(F, GQG, 1.0)
-    np.testing.assert_allclose(discrete_noise_nilpotent(F, GQG, 1.0), Qd, rtol=1e-10, atol=1e-16)
-    _, Qd = van_loan(F, GQG, 0.7)
-    np.testing.assert_allclose(discrete_noise_nilpotent(F, GQG, 0.7), Qd, rtol=1e-10, atol=1e-16)
+    _, Qd = discretize(F, GQG, 1.0)
+    np.testing.assert_allclose(discretize(F, GQG, 1.0, method="nilpotent")[1], Qd, rtol=1e-10, atol=1e-16)
+    _, Qd = discretize(F, GQG, 0.7)
+    np.testing.assert_allclose(discretize(F, GQG, 0.7, method="nilpotent")[1], Qd, rtol=1e-10, atol=1e-16)
 
 
 def test_fused_transition_and_noise_equal_van_loan():
@@ -96,7 +96,7 @@ def test_fused_transition_and_noise_equal_van_loan():
     for dt in (1.0, 0.7):
         Phi, Qd = _transition_and_noise(F, np.diag(GQG), dt)
         for i in range(2):
-            Phi_ref, Qd_ref = van_loan(F[i], GQG, dt)
+            Phi_ref, Qd_ref = discretize(F[i], GQG, dt)
             np.testing.assert_allclose(Phi[i], Phi_ref, rtol=1e-12, atol=1e-14)
             np.testing.assert_allclose(Qd[i], Qd_ref, rtol=1e-10, atol=1e-16)
         np.testing.assert_allclose(Phi, transition_exact(F, dt), rtol=1e-14, atol=1e-15)

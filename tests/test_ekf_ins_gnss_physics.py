@@ -23,8 +23,8 @@ import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
 
-from navcore.estimation.ekf_ins_gnss import GnssNoise, Scenario, run_monte_carlo
 from navcore.inertial.imu import ImuSpec
+from navcore.integration.ekf_ins_gnss import GnssNoise, Scenario, run_monte_carlo
 
 G = 9.80665  # standard gravity (the module's G0), m/s^2
 RUNS = 3000

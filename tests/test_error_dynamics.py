@@ -8,7 +8,6 @@ import pytest
 import scipy.linalg
 from _oracles import van_loan_expm
 
-from navcore.estimation.covariance_analysis import run_covariance_analysis
 from navcore.frames import dcm_from_euler as fr_dcm
 from navcore.inertial.error_dynamics import (
     ClockModel,
@@ -27,6 +26,7 @@ from navcore.inertial.error_dynamics import (
 )
 from navcore.inertial.imu import ImuSpec
 from navcore.inertial.trajectories import straight_and_level
+from navcore.integration.engine import run_covariance_analysis
 from navcore.units import DEG, DEG_PER_H, G0, MICRO_G, OMEGA_EARTH, WGS84_A
 
 CORE = ins_error_layout("position", "velocity", "misalignment")

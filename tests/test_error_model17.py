@@ -14,16 +14,8 @@ import scipy.linalg
 from _oracles import van_loan_expm
 
 from navcore import frames as fr
-from navcore.estimation import van_loan
-from navcore.gnss.carrier_phase import (
-    attitude_observation_rows_count,
-    dd_covariance,
-    dd_observation_rows,
-    dd_observation_rows_count,
-    double_difference_phase,
-    euler_attitude_rows,
-    tc_dd_observation_matrix,
-)
+from navcore.estimation import discretize
+from navcore.gnss.carrier_phase import dd_covariance, double_difference_phase
 from navcore.gnss.measurements import pseudorange, pseudorange_rate
 from navcore.inertial.error_model17 import (
     ERROR_LAYOUT_17,
@@ -34,6 +26,13 @@ from navcore.inertial.error_model17 import (
     skew_paper,
     transition_exact,
     transition_first_order,
+)
+from navcore.integration.measurement_rows import (
+    attitude_observation_rows_count,
+    dd_observation_rows,
+    dd_observation_rows_count,
+    euler_attitude_rows,
+    tc_dd_observation_matrix,
 )
 from navcore.units import G0, GPS_L1_WAVELENGTH_M
 
@@ -118,7 +117,7 @@ def test_transition_series_terminates():
     F = error_dynamics_17(C_TRUE, C_TRUE @ F_B)
     assert np.abs(np.linalg.matrix_power(F, 4)).max() == 0.0
     np.testing.assert_allclose(transition_exact(F, 1.0), scipy.linalg.expm(F), atol=1e-12)
-    Phi_vl, _ = van_loan(F, noise_psd_17(1e-2, 1e-3), 1.0)
+    Phi_vl, _ = discretize(F, noise_psd_17(1e-2, 1e-3), 1.0)
     np.testing.assert_allclose(transition_exact(F, 1.0), Phi_vl, atol=1e-12)
     # KZL Eq. 6 keeps only the first-order coupling: a tilt moves the velocity error by
     # |f| T per rad (exactly, as e^{FT} does) but the position error not at all, where the

@@ -20,6 +20,7 @@ from navcore.estimation import (
     StateBlock,
     StateLayout,
     covariance_from_information,
+    discretize,
     first_order_transition,
     information_from_covariance,
     information_update,
@@ -28,7 +29,6 @@ from navcore.estimation import (
     propagate_covariance,
     scalar_riccati_iterate,
     scalar_riccati_steady_state,
-    van_loan,
 )
 
 
@@ -197,7 +197,7 @@ def test_scalar_riccati_rejects_bad_input(bad):
 def test_van_loan_double_integrator_closed_form(dt):
     """Oracle: Qd = q [[dt^3/3, dt^2/2], [dt^2/2, dt]] for white acceleration of PSD q."""
     q = 0.7
-    Phi, Qd = van_loan([[0, 1], [0, 0]], [[0, 0], [0, q]], dt)
+    Phi, Qd = discretize([[0, 1], [0, 0]], [[0, 0], [0, q]], dt)
     np.testing.assert_allclose(Phi, [[1, dt], [0, 1]], atol=1e-14)
     np.testing.assert_allclose(Qd, q * np.array([[dt**3 / 3, dt**2 / 2], [dt**2 / 2, dt]]), rtol=1e-10)
 
@@ -205,7 +205,7 @@ def test_van_loan_double_integrator_closed_form(dt):
 def test_van_loan_gauss_markov_closed_form():
     """Oracle: first-order Markov x' = -x/T + w: Phi = e^{-dt/T}, Qd = sigma^2 (1 - e^{-2dt/T})."""
     T, sigma, dt = 37.0, 2.5, 1.3
-    Phi, Qd = van_loan([[-1 / T]], [[2 * sigma**2 / T]], dt)
+    Phi, Qd = discretize([[-1 / T]], [[2 * sigma**2 / T]], dt)
     assert Phi[0, 0] == pytest.approx(np.exp(-dt / T))
     assert Qd[0, 0] == pytest.approx(sigma**2 * (1 - np.exp(-2 * dt / T)), rel=1e-10)
 
@@ -242,7 +242,7 @@ def test_propagate_covariance_matches_monte_carlo():
     """
     rng = np.random.default_rng(11)
     dt, q, r = 1.0, 0.05, 4.0
-    Phi, Q = van_loan([[0, 1], [0, 0]], [[0, 0], [0, q]], dt)
+    Phi, Q = discretize([[0, 1], [0, 0]], [[0, 0], [0, q]], dt)
     H = np.array([[1.0, 0.0]])
     R = np.array([[r]])
     P0 = np.diag([100.0, 1.0])
@@ -275,7 +275,7 @@ def test_propagate_covariance_matches_monte_carlo():
 
 def test_propagate_covariance_outage_is_prediction():
     """An infinite-variance measurement carries no information: same as no measurement."""
-    Phi, Q = van_loan([[0, 1], [0, 0]], [[0, 0], [0, 0.1]], 1.0)
+    Phi, Q = discretize([[0, 1], [0, 0]], [[0, 0], [0, 0.1]], 1.0)
     t = np.arange(5.0)
     P0 = np.eye(2)
     outage = propagate_covariance(P0, t, Phi, Q, lambda k: [Measurement.scalar([1, 0], np.inf)])
@@ -416,7 +416,7 @@ def test_symmetrize_a_stack_matrix_by_matrix():
             lambda x, I: kf_update(x, I, [[1.0]], [[1.0, 0.0]], [[1.0]]),
             r"z must be a vector, got shape \(1, 1\)",
         ),
-        (lambda x, I: van_loan(I, np.eye(3), 1.0), r"GQGt must be 2x2, got shape \(3, 3\)"),
+        (lambda x, I: discretize(I, np.eye(3), 1.0), r"GQGt must be 2x2, got shape \(3, 3\)"),
         (lambda x, I: information_from_covariance(x, np.diag([1.0, 0.0])), r"P must be positive definite"),
         (lambda x, I: covariance_from_information(x, np.diag([1.0, 0.0])), r"Y must be positive definite"),
     ],

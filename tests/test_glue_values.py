@@ -235,7 +235,7 @@ def _kzl01_first_order(T: float) -> float:
     180 s (scipy solve_ivp, rtol 1e-11), against the printed first-order recursion of Eq. (6),
     P <- (I + F T) P (I + F T)^T + G Q G^T T, written out here; F, G Q G^T and P0 are the model's
     (the model under test is the discretisation)."""
-    from navcore.estimation.ekf_ins_gnss import _gqgt, _initial_covariance
+    from navcore.integration.ekf_ins_gnss import _gqgt, _initial_covariance
     from navcore.papers.kzl_models import table1_attitude, table1_F, table1_scenario
 
     F, C = table1_F(), table1_attitude()
@@ -3584,10 +3584,11 @@ def _kzl03_library_sigma_position() -> np.ndarray:
     error_dynamics_17, the exact transition, Q_d by the nilpotent Gauss-Legendre quadrature (not
     Van Loan), the code and Doppler rows, and sequential scalar updates (not the batch Joseph
     form); the initial covariance the page writes (its only shared part) and the scenario's sky."""
-    from navcore.estimation.ekf_ins_gnss import discrete_noise_nilpotent, sequential_scalar_updates
+    from navcore.estimation.discretize import discretize
     from navcore.frames import dcm_from_euler
     from navcore.glued import _kzl03_initialised_p0
     from navcore.inertial.error_model17 import code_doppler_rows, error_dynamics_17, transition_exact
+    from navcore.integration.ekf_ins_gnss import sequential_scalar_updates
     from navcore.papers.kzl_scenario import table1_scenario
 
     sc = table1_scenario("tc")
@@ -3599,7 +3600,7 @@ def _kzl03_library_sigma_position() -> np.ndarray:
         + [sc.gyro_bias_walk**2] * 3
         + [sc.clock_phase_walk**2, sc.clock_drift_walk**2]
     )
-    Phi, Qd = transition_exact(F, T), discrete_noise_nilpotent(F, np.diag(noise), T)
+    Phi, Qd = transition_exact(F, T), discretize(F, np.diag(noise), T, method="nilpotent")[1]
     P = _kzl03_initialised_p0()
     out = [np.sqrt(np.diag(P)[:3])]
     for k in range(1, sc.n_epochs + 1):

@@ -6,9 +6,9 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
-from navcore.estimation.covariance_analysis import lock_table
 from navcore.gnss import jammer_geometry as jg
 from navcore.gnss.antijam import js_for_effective_cn0
+from navcore.integration.geometry import lock_table
 from navcore.units import GPS_L1_WAVELENGTH_M, GPS_P_CHIP_RATE_HZ
 
 N0 = -204.0

@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from navcore.estimation.ekf_ins_gnss import monte_carlo_key, run_monte_carlo, run_monte_carlo_batch
+from navcore.integration.ekf_ins_gnss import monte_carlo_key, run_monte_carlo, run_monte_carlo_batch
 from navcore.ledger.inputs import band_ahead, overriding, recording
 from navcore.papers import kzl_scenario as S
 

@@ -9,8 +9,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from navcore.estimation.ekf_ins_gnss import GnssNoise, Scenario, run_monte_carlo
 from navcore.inertial.imu import ImuSpec
+from navcore.integration.ekf_ins_gnss import GnssNoise, Scenario, run_monte_carlo
 from navcore.parallel import effective_jobs, run_tasks, task_seeds
 
 
@@ -149,6 +149,6 @@ def test_claim_dependencies_follow_the_imports():
     from navcore.ledger import registry
 
     deps = registry.claim_dependencies("KZL-fig4-dd-phases-robust")
-    assert {"estimation/ekf_ins_gnss.py", "inertial/strapdown.py", "papers/kzl_scenario.py"} <= set(deps)
+    assert {"integration/ekf_ins_gnss.py", "inertial/strapdown.py", "papers/kzl_scenario.py"} <= set(deps)
     assert not any(d.startswith("detection/") for d in deps)
     assert "ledger/core.py" in deps and "papers/paper_items.json" in deps

@@ -86,6 +86,7 @@ REFERENCE_PAGES = (
     "estimation",
     "inertial",
     "gnss",
+    "integration",
     "detection",
     "location",
     "ledger",

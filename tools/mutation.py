@@ -4,9 +4,10 @@ Usage: ``python tools/mutation.py [PACKAGE ...] [--budget-min M] [--max-children
 (``nox -s mutation -- gnss`` runs it in the locked environment). PACKAGE is one of
 :data:`PACKAGES` (default: all of them).
 
-The packages (:data:`PACKAGES`): the model packages (estimation, inertial, gnss, detection,
-location, frames), the ledger engine (``ledger``), ``units`` (``navcore/units.py`` and the
-validation layer ``navcore/_validate.py``), ``figures``, the paper modules' functions
+The packages (:data:`PACKAGES`): the model packages (estimation, inertial, gnss,
+integration, detection, location, frames), the ledger engine (``ledger``), ``units``
+(``navcore/units.py`` and the validation layer ``navcore/_validate.py``), ``figures``, the
+paper modules' functions
 (``papers``: the claims are their tests), ``tools`` (``tools/*.py``) and the book's Sphinx
 extensions (``book_ext``). Each is run with the tests that exercise it, never the whole
 suite.
@@ -123,6 +124,7 @@ PACKAGES: dict[str, Package] = {
             "test_estimation.py",
             "test_lmmse.py",
             "test_federated.py",
+            "test_antijam.py",
             "test_covariance_analysis.py",
             "test_covariance_analysis_results.py",
             "test_ekf_ins_gnss.py",
@@ -158,6 +160,17 @@ PACKAGES: dict[str, Package] = {
             "test_constellation_geometry.py",
             "test_carrier_phase_geometry.py",
             "test_dop.py",
+        ],
+    ),
+    "integration": Package(
+        ["navcore/integration/*"],
+        [
+            "test_covariance_analysis.py",
+            "test_covariance_analysis_results.py",
+            "test_ekf_ins_gnss.py",
+            "test_ekf_ins_gnss_physics.py",
+            "test_error_model17.py",
+            "test_error_dynamics.py",
         ],
     ),
     "detection": Package(

@@ -7,31 +7,37 @@ kalman
 riccati
     steady state of the scalar Riccati recursion.
 discretize
-    Van Loan discretisation and the first-order transition.
+    one discretiser (Van Loan, nilpotent and series methods) and the truncated transitions.
 covariance
-    linear covariance analysis over a measurement schedule.
+    linear covariance analysis over a measurement schedule, and the error covariance of a
+    filter that ignores a measurement bias.
 layout
     named state layouts.
-covariance_analysis
-    truth-versus-filter covariance analysis of an aided INS (missions, schedules).
 federated
     local velocity estimators, federated fusion and its correlation-free bound.
 lmmse
     linear MMSE estimation with a nonrandom nuisance vector.
-ekf_ins_gnss
-    tightly coupled indirect feedback INS/GNSS EKF, batched over Monte Carlo runs.
+
+The INS/GNSS filter and the covariance analysis of an aided INS, which need the inertial
+and GNSS models, are in :mod:`navcore.integration`.
 
 The specialised modules are imported from their own paths
 (``from navcore.estimation.federated import ...``); the core is re-exported here.
 """
 
-from navcore.estimation.covariance import CovarianceHistory, Measurement, propagate_covariance
-from navcore.estimation.discretize import first_order_transition, van_loan
+from navcore.estimation.covariance import (
+    CovarianceHistory,
+    Measurement,
+    biased_filter_error_covariance,
+    propagate_covariance,
+)
+from navcore.estimation.discretize import discretize, first_order_transition, taylor_transition
 from navcore.estimation.kalman import (
     KalmanUpdate,
     covariance_from_information,
     information_from_covariance,
     information_update,
+    joseph_update,
     kf_predict,
     kf_update,
     symmetrize,
@@ -50,15 +56,18 @@ __all__ = [
     "ScalarSteadyState",
     "StateBlock",
     "StateLayout",
+    "biased_filter_error_covariance",
     "covariance_from_information",
+    "discretize",
     "first_order_transition",
     "information_from_covariance",
     "information_update",
+    "joseph_update",
     "kf_predict",
     "kf_update",
     "propagate_covariance",
     "scalar_riccati_iterate",
     "scalar_riccati_steady_state",
     "symmetrize",
-    "van_loan",
+    "taylor_transition",
 ]

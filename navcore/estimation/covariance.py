@@ -16,7 +16,7 @@ chapters use for their local filters and trackers.
 
 A step with no measurement is a pure prediction; a measurement with infinite variance is
 skipped (an outage). Schedules, and a time-varying ``Phi`` or ``Q``, are functions of the step
-index ``k`` alone, as in :func:`navcore.estimation.covariance_analysis.run_covariance_analysis`
+index ``k`` alone, as in :func:`navcore.integration.engine.run_covariance_analysis`
 (the time is ``t[k]``).
 """
 
@@ -28,10 +28,10 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import COVARIANCE, Covariance, check_public, require_square
-from navcore.estimation.kalman import symmetrize_unchecked
+from navcore._validate import COVARIANCE, NONNEGATIVE, Covariance, check_public, require_square
+from navcore.estimation.kalman import joseph_unchecked, symmetrize_unchecked
 
-__all__ = ["CovarianceHistory", "Measurement", "propagate_covariance"]
+__all__ = ["CovarianceHistory", "Measurement", "biased_filter_error_covariance", "propagate_covariance"]
 
 Array = NDArray[np.float64]
 
@@ -153,7 +153,7 @@ def propagate_covariance(
         Measurements available at ``t[k]`` (``k = 0..N``), processed sequentially. A
         measurement whose ``R`` has an infinite diagonal entry is skipped (outage). The
         signature is that of the schedules of
-        :func:`navcore.estimation.covariance_analysis.run_covariance_analysis`.
+        :func:`navcore.integration.engine.run_covariance_analysis`.
 
     Returns
     -------
@@ -193,7 +193,6 @@ def propagate_covariance(
     prior = np.empty((N, n, n))
     post = np.empty((N, n, n))
     counts = np.zeros(N, dtype=np.int64)
-    eye = np.eye(n)
     # a constant transition or noise is checked once here; a callable's matrices at each step
     fixed_F = None if callable(Phi) else _model_matrix("Phi", Phi, n)
     fixed_Q = None if callable(Q) else _model_matrix("Q", Q, n)
@@ -218,16 +217,126 @@ def propagate_covariance(
                     continue  # outage: infinite variance carries no information
                 S = H @ P @ H.T + R
                 K = np.linalg.solve(S, H @ P).T  # K = P H' S^-1
-                I_KH = eye - K @ H
-                P = symmetrize_unchecked(I_KH @ P @ I_KH.T + K @ R @ K.T)  # Joseph form
+                P = joseph_unchecked(P, K, H, R)
                 counts[k] += 1
         post[k] = P
     return CovarianceHistory(t, prior, post, counts)
+
+
+def biased_filter_error_covariance(
+    Phi: ArrayLike, Q: ArrayLike, P0: ArrayLike, h: ArrayLike, sigma: ArrayLike, bias_sigma: float
+) -> Array:
+    r"""Covariance of the true error of a filter that ignores a constant bias of its measurements.
+
+    A Kalman filter of the model :math:`x_{k+1} = \Phi x_k + w_k` (``cov(w) = Q``) processes
+    scalar measurements :math:`z_k = h^T x_k + b + v_k` with :math:`\mathrm{var}(v_k) =
+    \sigma_k^2`, as if there were no bias :math:`b` (a random constant of standard deviation
+    ``bias_sigma``). Its gains follow its own covariance recursion (prediction, then the
+    update at each step that has a measurement); the true error :math:`e = x - \hat x` and the
+    bias obey
+
+    .. math::
+
+        \begin{bmatrix} e \\ b \end{bmatrix}^+ =
+        \begin{bmatrix} I - K h^T & -K \\ 0 & 1 \end{bmatrix}
+        \begin{bmatrix} \Phi e + w \\ b \end{bmatrix} - \begin{bmatrix} K \\ 0 \end{bmatrix} v,
+
+    whose covariance is propagated exactly: a Joseph-form update
+    (:func:`navcore.estimation.kalman.joseph_update`) with the augmented gain and row
+    :math:`[h^T, 1]`. Several sequences of measurement noise (rows of ``sigma``) are
+    propagated together.
+
+    Parameters
+    ----------
+    Phi : (n, n) array
+        Transition over one step (the filter's and the truth's).
+    Q : (n, n) array
+        Process-noise covariance over one step (symmetric positive semi-definite).
+    P0 : (n, n) array
+        Initial covariance of the error, the filter's and the truth's (symmetric positive
+        semi-definite).
+    h : (n,) array
+        Measurement row.
+    sigma : (N,) or (B, N) array
+        Standard deviation of the measurement noise at each step (measurement units);
+        ``NaN`` where a step has no measurement.
+    bias_sigma : float
+        Standard deviation of the unmodelled constant bias (measurement units).
+
+    Returns
+    -------
+    (B, n + 1, n + 1) ndarray
+        Covariance of the true error and the bias after the last step, per row of ``sigma``
+        (``B = 1`` for a 1-D ``sigma``); the bias is the last state. Symmetric up to round-off.
+
+    Raises
+    ------
+    ValueError
+        If the shapes do not match, a covariance is not symmetric positive semi-definite, or
+        an input is not finite (``sigma`` may hold ``NaN``).
+
+    Notes
+    -----
+    The sensitivity analysis of a suboptimal filter (Gelb 1974, Sec. 7.2): the truth model
+    is the filter's model plus one unmodelled state. With ``bias_sigma = 0`` the true error
+    covariance equals the filter's own (the optimal filter).
+
+    Examples
+    --------
+    A random constant measured twice with unit noise, plus a bias of unit standard deviation
+    the filter does not know (its own variance would be 1/3):
+
+    >>> import numpy as np
+    >>> C = biased_filter_error_covariance(np.eye(1), np.zeros((1, 1)), np.eye(1), [1.0], [1.0, 1.0], 1.0)
+    >>> np.round(C[0], 6).tolist()
+    [[0.777778, -0.666667], [-0.666667, 1.0]]
+    """
+    Phi = require_square("Phi", Phi)
+    n = Phi.shape[0]
+    Q = require_square("Q", Q, n)
+    P0 = require_square("P0", P0, n)
+    COVARIANCE.check("Q", Q)
+    COVARIANCE.check("P0", P0)
+    h = np.asarray(h, dtype=float)
+    if h.shape != (n,):
+        raise ValueError(f"h must have shape ({n},), got {h.shape}")
+    sig = np.atleast_2d(np.asarray(sigma, dtype=float))
+    if sig.ndim != 2 or np.isinf(sig).any() or (sig < 0).any():
+        raise ValueError("sigma must be a (N,) or (B, N) array of standard deviations >= 0 or NaN")
+    nb, nt = sig.shape
+    P = np.broadcast_to(P0, (nb, n, n)).copy()  # the filter's covariance
+    C = np.zeros((nb, n + 1, n + 1))  # the true error's and the bias's
+    C[:, :n, :n] = P0
+    C[:, n, n] = float(bias_sigma) ** 2
+    A = np.eye(n + 1)
+    A[:n, :n] = Phi
+    Qa = np.zeros((n + 1, n + 1))
+    Qa[:n, :n] = Q
+    H = h[None, :]
+    Ha = np.append(h, 1.0)[None, :]  # the measurement of the error and the bias
+    for k in range(nt):
+        P = Phi @ P @ Phi.T + Q
+        C = A @ C @ A.T + Qa
+        measured = np.isfinite(sig[:, k])
+        if not measured.any():
+            continue
+        r = np.where(measured, sig[:, k], 0.0) ** 2
+        Ph = P @ h  # (B, n)
+        K = Ph / (Ph @ h + r)[:, None]
+        K = np.where(measured[:, None], K, 0.0)[:, :, None]  # (B, n, 1); no update without one
+        R = r[:, None, None]
+        P = joseph_unchecked(P, K, H, R, symmetric=False)
+        Ka = np.zeros((nb, n + 1, 1))
+        Ka[:, :n] = K
+        C = joseph_unchecked(C, Ka, Ha, R, symmetric=False)
+    return C
 
 
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
 check_public(
     globals(),
+    {"bias_sigma": NONNEGATIVE},
+    biased_filter_error_covariance={"allow_inf": ("sigma",), "skip": ("sigma",)},
     Measurement={"allow_inf": ("R",), "ranges": {"R": Covariance(allow_inf_diagonal=True)}},
 )

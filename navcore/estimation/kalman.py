@@ -45,6 +45,7 @@ from scipy.linalg import lapack
 
 from navcore._validate import (
     _SQRT_EPS,
+    COVARIANCE_STACK,
     _potrf,
     as_finite_array,
     check_argument,
@@ -59,6 +60,7 @@ __all__ = [
     "covariance_from_information",
     "information_from_covariance",
     "information_update",
+    "joseph_update",
     "kf_predict",
     "kf_update",
     "symmetrize",
@@ -416,12 +418,173 @@ def _joseph_update(x: ArrayLike, P: ArrayLike, z: ArrayLike, H: Array, R: ArrayL
         raise ValueError("the innovation covariance H P H' + R is not positive definite")
     K: Array = Kt.T
     innovation = np.subtract(z, np.dot(H, x))
-    I_KH = -np.dot(K, H)
-    I_KH.flat[:: I_KH.shape[0] + 1] += 1.0  # I - K H
-    P_post = np.dot(np.dot(I_KH, P), I_KH.T) + np.dot(np.dot(K, R), K.T)
-    P_post += P_post.T  # Joseph form, made exactly symmetric
-    P_post *= 0.5
+    P_post = joseph_unchecked(np.asarray(P), K, H, np.asarray(R))
     return KalmanUpdate(np.add(x, np.dot(K, innovation)), P_post, K, innovation, S)
+
+
+def joseph_update(
+    P: ArrayLike,
+    K: ArrayLike,
+    H: ArrayLike,
+    R: ArrayLike,
+    *,
+    rows: ArrayLike | None = None,
+    symmetric: bool = True,
+) -> Array:
+    r"""Joseph-form covariance update :math:`(I - K H) P (I - K H)^T + K R K^T`, for any gain.
+
+    Parameters
+    ----------
+    P : (..., n, n) array
+        Prior covariance (symmetric positive semi-definite), or a stack of them.
+    K : (..., n, m) array
+        Gain, any gain (optimal or not); with ``rows``, ``(..., k, m)``: the gain of the
+        states ``rows`` of ``P``, zero on the others.
+    H : (..., m, n) array
+        Measurement matrix (over all ``n`` states of ``P``).
+    R : (..., m, m) array
+        Measurement-noise covariance (symmetric positive semi-definite).
+    rows : (k,) array of int, optional
+        The states of ``P`` that the gain corrects (the filter's states inside a larger truth
+        model: the gain is :math:`E K` with :math:`E` the embedding of these rows). The update
+        is then computed in its expanded form
+        :math:`P - E K H P - (E K H P)^T + E K (H P H^T + R) K^T E^T`, which touches only those
+        rows and columns (:math:`O(n^2 m)` instead of :math:`O(n^3)`).
+    symmetric : bool, default True
+        Return :math:`(P^+ + P^{+T}) / 2`, exactly symmetric; ``False`` returns the form as
+        computed, symmetric up to round-off (for a loop that symmetrises once per step).
+
+    Returns
+    -------
+    (..., n, n) ndarray
+        Posterior covariance; the leading axes broadcast.
+
+    Raises
+    ------
+    ValueError
+        If the shapes do not match or an input is not finite.
+
+    Notes
+    -----
+    The Joseph form (Bucy and Joseph 1968, reference 3 of the module) is valid for any gain
+    and keeps the covariance symmetric positive semi-definite under round-off; with the
+    optimal gain :math:`K = P H^T (H P H^T + R)^{-1}` it equals the short form
+    :math:`(I - K H) P` of Kalman (1960). With a suboptimal gain it is the covariance of the
+    true estimation error, which is how a covariance analysis of a mismodelled filter
+    (Gelb 1974, Sec. 7.2) uses it. :func:`kf_update` updates its covariance with this
+    function; batched over leading axes (a stack of runs, of jammer powers, of members).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> joseph_update(np.eye(2), [[0.5], [0.0]], [[1.0, 0.0]], [[1.0]])
+    array([[0.5, 0. ],
+           [0. , 1. ]])
+
+    A suboptimal gain (0.8 instead of the optimal 0.5) leaves more error, ``0.2**2 + 0.8**2``:
+
+    >>> round(float(joseph_update(np.eye(1), [[0.8]], [[1.0]], [[1.0]])[0, 0]), 12)
+    0.68
+    """
+    P = np.asarray(P, dtype=float)
+    K = np.asarray(K, dtype=float)
+    H = np.asarray(H, dtype=float)
+    R = np.asarray(R, dtype=float)
+    n = P.shape[-1]
+    if P.ndim < 2 or P.shape[-2] != n or H.ndim < 2 or H.shape[-1] != n or K.ndim < 2:
+        raise ValueError(f"P must be (..., n, n) and H (..., m, n), got P {P.shape} and H {H.shape}")
+    m = H.shape[-2]
+    k = n if rows is None else np.size(rows)
+    if K.shape[-2:] != (k, m) or R.shape[-2:] != (m, m):
+        raise ValueError(
+            f"K must be (..., {k}, {m}) and R (..., {m}, {m}) for P {P.shape} and H {H.shape}, "
+            f"got K {K.shape} and R {R.shape}"
+        )
+    if rows is None:
+        return joseph_unchecked(P, K, H, R, symmetric=symmetric)
+    idx = np.asarray(rows, dtype=np.intp)
+    if idx.ndim != 1 or (idx.size and (idx.min() < -n or idx.max() >= n)):
+        raise ValueError(f"rows must be a 1-D array of state indices below {n}, got {rows!r}")
+    shape = np.broadcast_shapes(P.shape, (*K.shape[:-2], n, n))
+    out = joseph_rows_unchecked(np.array(np.broadcast_to(P, shape)), K, H, R, idx)
+    return symmetrize_unchecked(out) if symmetric else out
+
+
+def joseph_unchecked(P: Array, K: Array, H: Array, R: Array | float, *, symmetric: bool = True) -> Array:
+    """:func:`joseph_update` (without ``rows``) with no argument checks, for loops over float
+    arrays checked once.
+
+    Parameters
+    ----------
+    P, K, H : ndarray
+        As :func:`joseph_update`: float arrays (not checked).
+    R : ndarray or float
+        As :func:`joseph_update`, or, for a single measurement (``m = 1``), its variance as a
+        scalar: the noise term is then formed as ``R (K K^T)``.
+    symmetric : bool, default True
+        Return the symmetric part.
+
+    Returns
+    -------
+    ndarray
+        The same numbers as :func:`joseph_update`.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> joseph_unchecked(np.eye(2), np.array([[0.5], [0.0]]), np.array([[1.0, 0.0]]), np.eye(1)).tolist()
+    [[0.5, 0.0], [0.0, 1.0]]
+    """
+    I_KH = -(K @ H)
+    n = I_KH.shape[-1]
+    if I_KH.ndim == 2:
+        I_KH.flat[:: n + 1] += 1.0  # I - K H
+    else:
+        diag = np.arange(n)
+        I_KH[..., diag, diag] += 1.0
+    Kt = np.swapaxes(K, -1, -2)
+    P_post = I_KH @ P @ np.swapaxes(I_KH, -1, -2) + (R * (K @ Kt) if np.ndim(R) == 0 else K @ R @ Kt)
+    if symmetric:  # made exactly symmetric, in place
+        P_post += np.swapaxes(P_post, -1, -2)
+        P_post *= 0.5
+    return P_post
+
+
+def joseph_rows_unchecked(P: Array, K: Array, H: Array, R: Array, rows: NDArray[np.intp]) -> Array:
+    """:func:`joseph_update` with ``rows``, in place on ``P``, not symmetrised, unchecked.
+
+    The expanded form: ``M = -E K H P + E K (H P H' + R) K' E' / 2`` is added to the rows
+    ``rows`` and its transpose to the columns (the symmetrisation the caller applies averages
+    the two halves of ``E K S K' E'``).
+
+    Parameters
+    ----------
+    P : (..., n, n) ndarray
+        Float covariance of the caller's own, changed in place (not checked).
+    K, H, R : ndarray
+        As :func:`joseph_update` with ``rows`` (not checked).
+    rows : (k,) ndarray of int
+        The states the gain corrects.
+
+    Returns
+    -------
+    ndarray
+        ``P`` itself, updated.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> P = np.eye(2)
+    >>> joseph_rows_unchecked(P, np.array([[0.5]]), np.array([[1.0, 0.0]]), np.eye(1), np.array([0])).tolist()
+    [[0.5, 0.0], [0.0, 1.0]]
+    """
+    HP = H @ P  # (..., m, n)
+    M = K @ HP  # (..., k, n)
+    M *= -1.0
+    M[..., :, rows] += 0.5 * (K @ (HP @ np.swapaxes(H, -1, -2) + R) @ np.swapaxes(K, -1, -2))
+    P[..., rows, :] += M
+    P[..., :, rows] += np.swapaxes(M, -1, -2)
+    return P
 
 
 def _no_update(x: ArrayLike, P: ArrayLike) -> KalmanUpdate:
@@ -579,4 +742,4 @@ def information_update(
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
 # kf_predict and kf_update check every argument in their bodies, once (checks_own_arguments).
-check_public(globals())
+check_public(globals(), joseph_update={"ranges": {"P": COVARIANCE_STACK, "R": COVARIANCE_STACK}})

@@ -89,7 +89,6 @@ def atc10_matched_filter_receiver() -> Figure:
     "unknowns of a pseudorange fix (position and clock bias).",
 )
 def sp_integration_architectures() -> Figure:
-    from navcore.estimation.covariance_analysis import tightly_coupled_schedule
     from navcore.gnss.architectures import (
         CLOCK,
         PVA,
@@ -97,6 +96,7 @@ def sp_integration_architectures() -> Figure:
         receiver_pva_layout,
         tightly_coupled_layout,
     )
+    from navcore.integration.schedules import tightly_coupled_schedule
     from navcore.papers.sp_missions_scenarios import IN as SCENARIO
 
     tight = inspect.signature(tightly_coupled_schedule).parameters

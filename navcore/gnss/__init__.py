@@ -9,7 +9,8 @@ dop
 measurements
     pseudorange and pseudorange-rate models and their Jacobians.
 carrier_phase
-    multi-antenna attitude: Euler-angle attitude rows, double-difference carrier phase.
+    multi-antenna attitude: double-difference carrier phase and its covariance, the Euler-rate
+    matrix (the 17-state rows are in navcore.integration.measurement_rows).
 tracking
     third-order tracking loop responses to acceleration steps and jerks, aided bandwidth.
 acquisition

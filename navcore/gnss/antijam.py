@@ -59,6 +59,7 @@ from navcore._validate import (
     require_integer,
     require_positive,
 )
+from navcore.estimation.kalman import joseph_unchecked
 from navcore.trace import implements
 from navcore.units import G0
 
@@ -604,8 +605,7 @@ def simulate_impact_errors(
             S = P[0, 0] + r
             K = P[:, 0] / S
             xh = xh + np.outer(z - xh[:, 0], K)
-            IKH = np.eye(6) - np.outer(K, H[0])
-            P = IKH @ P @ IKH.T + r * np.outer(K, K)  # Joseph form
+            P = joseph_unchecked(P, K[:, None], H, r, symmetric=False)
     err = (x[:, 0] - xh[:, 0]).reshape(runs, 2)
     return RunResult(err, float(math.sqrt(P[0, 0])), locked, seed)
 

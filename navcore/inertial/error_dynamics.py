@@ -50,7 +50,7 @@ computed body-to-NED attitude is
 and a vector measured in body axes is resolved with the error :math:`\hat C^n_b x^b - C^n_b x^b
 = -\psi\times(C^n_b x^b)`; that is where :math:`-\psi\times f^n` above comes from (and
 the :math:`-C^b_n[v^n\times]\,\psi` term of the Doppler rows of
-:func:`navcore.estimation.covariance_analysis.doppler_schedule`).
+:func:`navcore.integration.schedules.doppler_schedule`).
 :mod:`navcore.inertial.error_model17` and :mod:`navcore.location.target_location` use the
 opposite sign, :math:`\hat C = (I + [\delta\alpha\times])\,C`, so
 :math:`\delta\alpha = -\psi`; :func:`psi_to_attitude_error` converts a state or covariance

@@ -446,7 +446,7 @@ def claim_dependencies(claim_id: str) -> tuple[str, ...]:
     Examples
     --------
     >>> deps = claim_dependencies(claims("KZL")[0].id)
-    >>> "ledger/core.py" in deps, "estimation/ekf_ins_gnss.py" in deps, "detection/roc.py" in deps
+    >>> "ledger/core.py" in deps, "integration/ekf_ins_gnss.py" in deps, "detection/roc.py" in deps
     (True, True, False)
     >>> "ledger/render.py" in deps
     False

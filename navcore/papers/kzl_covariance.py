@@ -2,7 +2,7 @@
 
 The chapter's seeded Monte Carlo (:mod:`navcore.papers.kzl_simulation`) runs the nonlinear
 100 Hz strapdown of KZL Sec. 3.2 on 30 sampled IMUs. This module asks the same questions of
-the engine built for SP Sec. 2.6 (:func:`~navcore.estimation.covariance_analysis.run_covariance_analysis`):
+the engine built for SP Sec. 2.6 (:func:`~navcore.integration.engine.run_covariance_analysis`):
 the psi-angle error model with Earth rate, transport rate and Schuler coupling, the KZL
 Table 1 consumer-grade IMU as an :class:`~navcore.inertial.imu.ImuSpec`, the Table 1 flight
 (110 m/s east at 51 deg N, 3 km), and an initial covariance that encodes the KZL Sec. 3.1
@@ -27,7 +27,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from navcore.estimation.covariance_analysis import CovarianceAnalysis, run_covariance_analysis
 from navcore.inertial.error_dynamics import (
     ErrorSources,
     initial_covariance,
@@ -36,6 +35,7 @@ from navcore.inertial.error_dynamics import (
 )
 from navcore.inertial.imu import gyro_bias_calibrated_at_rest
 from navcore.inertial.trajectories import straight_and_level
+from navcore.integration.engine import CovarianceAnalysis, run_covariance_analysis
 from navcore.ledger import Claim, input_cache, printed, prose
 from navcore.papers.kzl_quotes import quoted
 from navcore.papers.kzl_scenario import IN, initial_fix_sigmas, kzl_imu

@@ -9,17 +9,8 @@ import scipy.linalg
 from scipy.spatial.transform import Rotation
 
 from navcore.estimation import kf_update
-from navcore.estimation.ekf_ins_gnss import correct_attitude, sequential_scalar_updates
 from navcore.frames import dcm_from_euler, dcm_from_quat, euler_from_dcm, quat_from_dcm, skew
-from navcore.gnss.carrier_phase import (
-    attitude_observation_rows_count,
-    dd_covariance,
-    dd_observation_rows_count,
-    euler_attitude_rows,
-    euler_rate_matrix_body,
-    tc_attitude_observation_matrix,
-    tc_dd_observation_matrix,
-)
+from navcore.gnss.carrier_phase import dd_covariance, euler_rate_matrix_body
 from navcore.inertial.alignment import heading_from_velocity, levelling_as_printed
 from navcore.inertial.error_model17 import (
     ERROR_LAYOUT_17,
@@ -29,6 +20,14 @@ from navcore.inertial.error_model17 import (
     transition_exact,
 )
 from navcore.inertial.strapdown import earth_rate_ned, transport_rate_ned
+from navcore.integration.ekf_ins_gnss import correct_attitude, sequential_scalar_updates
+from navcore.integration.measurement_rows import (
+    attitude_observation_rows_count,
+    dd_observation_rows_count,
+    euler_attitude_rows,
+    tc_attitude_observation_matrix,
+    tc_dd_observation_matrix,
+)
 from navcore.ledger import EXACT, Claim, Erratum, InputSet, input_cache, printed, prose
 from navcore.papers.kzl_quotes import quoted
 from navcore.papers.kzl_scenario import IN as SCEN
@@ -352,15 +351,15 @@ def discretisation_comparison(dt: float = 1.0) -> dict[str, float]:
     """Stand-alone covariance over the 180 s Table 1 flight with the exact transition and Van
     Loan noise (Eq. 5) and with I + F T and Q_d = G Q G^T T (Eq. 6): north-position and
     east-velocity 1-sigma at 180 s."""
-    from navcore.estimation import first_order_transition, van_loan
-    from navcore.estimation.ekf_ins_gnss import _gqgt, _initial_covariance
+    from navcore.estimation import discretize, first_order_transition
+    from navcore.integration.ekf_ins_gnss import _gqgt, _initial_covariance
 
     sc = table1_scenario()
     C = table1_attitude()
     F = error_dynamics_17(C, np.array([0.0, 0.0, -G0]))
     GQG = _gqgt(sc)
     P0 = _initial_covariance(sc, C, True)
-    Phi_e, Qd_e = van_loan(F, GQG, dt)
+    Phi_e, Qd_e = discretize(F, GQG, dt)
     Phi_1, Qd_1 = first_order_transition(F, dt), GQG * dt
     Pe, P1 = P0.copy(), P0.copy()
     for _ in range(round(180.0 / dt)):

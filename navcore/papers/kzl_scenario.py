@@ -28,7 +28,7 @@ the satellite counts of its segments, :data:`SCHEDULE_COUNTS`, are the structure
 to, "the 3-satellite segment"). The sky is the nominal GPS constellation of a declared
 convention (``constellation``); the Monte Carlo ensemble size is a declared reading
 (``n_runs``). The clock model and the accelerometer-bias random walk are the filter's
-(:class:`~navcore.estimation.ekf_ins_gnss.Scenario`) and are stated there.
+(:class:`~navcore.integration.ekf_ins_gnss.Scenario`) and are stated there.
 """
 
 from __future__ import annotations
@@ -45,7 +45,10 @@ from typing import cast
 
 import numpy as np
 
-from navcore.estimation.ekf_ins_gnss import (
+from navcore.frames import dcm_ecef_to_ned, ecef_to_ned, geodetic_to_ecef
+from navcore.gnss.constellation import elevation_azimuth, nominal_gps_constellation
+from navcore.inertial.imu import ImuSpec, imu_spec_from_published
+from navcore.integration.ekf_ins_gnss import (
     GnssNoise,
     Mode,
     MonteCarloResult,
@@ -55,9 +58,6 @@ from navcore.estimation.ekf_ins_gnss import (
     run_monte_carlo,
     run_monte_carlo_batch,
 )
-from navcore.frames import dcm_ecef_to_ned, ecef_to_ned, geodetic_to_ecef
-from navcore.gnss.constellation import elevation_azimuth, nominal_gps_constellation
-from navcore.inertial.imu import ImuSpec, imu_spec_from_published
 from navcore.ledger import InputSet, for_each_band_run, input_cache
 from navcore.units import DEG
 
@@ -459,8 +459,8 @@ def table1_scenario(
 
 def _source_key(run_key: str) -> str:
     """Hash of the sources of every module the Monte Carlo depends on and of the run's arguments
-    (:func:`~navcore.estimation.ekf_ins_gnss.monte_carlo_key`): the key of a run stored on disk."""
-    import navcore.estimation.ekf_ins_gnss as m1
+    (:func:`~navcore.integration.ekf_ins_gnss.monte_carlo_key`): the key of a run stored on disk."""
+    import navcore.estimation.discretize as m9
     import navcore.frames as m2
     import navcore.gnss.carrier_phase as m3
     import navcore.gnss.constellation as m4
@@ -468,15 +468,16 @@ def _source_key(run_key: str) -> str:
     import navcore.inertial.error_model17 as m6
     import navcore.inertial.imu as m7
     import navcore.inertial.strapdown as m8
+    import navcore.integration.ekf_ins_gnss as m1
 
     h = hashlib.sha256()
-    for mod in (m1, m2, m3, m4, m5, m6, m7, m8, sys.modules[__name__]):
+    for mod in (m1, m2, m3, m4, m5, m6, m7, m8, m9, sys.modules[__name__]):
         h.update(inspect.getsource(mod).encode())
     h.update(repr((run_key, np.__version__)).encode())
     return h.hexdigest()[:24]
 
 
-#: Monte Carlo runs made in this process, by :func:`~navcore.estimation.ekf_ins_gnss.monte_carlo_key`
+#: Monte Carlo runs made in this process, by :func:`~navcore.integration.ekf_ins_gnss.monte_carlo_key`
 #: (most recently used last; at most :data:`_RUNS_KEPT`). A band's corners that differ only in
 #: inputs a configuration never reads, and the claims that read the same configuration at the same
 #: inputs, share one run (the input cache above it is keyed on every input a configuration reads,
@@ -544,7 +545,7 @@ _BATCH_ROWS = 240
 def _run_band(mode: str, initialise: bool, ahead: list[tuple[Scenario, int, dict[str, int]]]) -> None:
     """Make the runs of an announced band batch that no memo or disk holds, in batched calls: one
     per group of scenarios that can share arrays (the same ensemble size, attitude threshold and
-    :func:`~navcore.estimation.ekf_ins_gnss.batch_group_key`), split at :data:`_BATCH_ROWS`."""
+    :func:`~navcore.integration.ekf_ins_gnss.batch_group_key`), split at :data:`_BATCH_ROWS`."""
     groups: dict[tuple[int, int, str], dict[str, Scenario]] = {}
     for args in ahead:
         key = _run_key(mode, initialise, args)
@@ -580,10 +581,10 @@ def monte_carlo(mode: str, initialise: bool = True, imu_name: str = "table1") ->
 
     Keyed on the values of the inputs it reads (so the ledger's bands re-run it across the
     assumed ranges), and below that on the run's complete arguments
-    (:func:`~navcore.estimation.ekf_ins_gnss.monte_carlo_key`): every claim and every band corner
+    (:func:`~navcore.integration.ekf_ins_gnss.monte_carlo_key`): every claim and every band corner
     that asks for the same run in this process shares one computation. Inside a band the ledger
     announces (:func:`~navcore.ledger.inputs.for_each_band_run`), the first call makes every run of the
-    batch at once (:func:`~navcore.estimation.ekf_ins_gnss.run_monte_carlo_batch`, which gives each
+    batch at once (:func:`~navcore.integration.ekf_ins_gnss.run_monte_carlo_batch`, which gives each
     run the numbers it gets alone) and stores them for the band's later calls. The arrays of the
     result are read-only. Results are also kept on disk (in the system temporary directory, under a
     key hashed from the sources of every module involved and from the scenario), so that the

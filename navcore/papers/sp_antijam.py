@@ -20,6 +20,7 @@ from typing import Any
 
 import numpy as np
 
+from navcore.estimation.covariance import biased_filter_error_covariance
 from navcore.gnss.antijam import (
     NavigatorErrorModel,
     _channel_matrices,
@@ -418,8 +419,6 @@ def impact_rms_m(model: NavigatorErrorModel, fix_sigma: np.ndarray) -> np.ndarra
     error is Gaussian, so the CEP is 1.1774 times the per-axis rms. Rows (one per jammer power)
     are propagated together.
     """
-    sig = np.atleast_2d(np.asarray(fix_sigma, dtype=float))
-    nb, nt = sig.shape
     Phi, Q = _channel_matrices(model, 1.0)
     P0 = np.diag(
         [
@@ -431,32 +430,8 @@ def impact_rms_m(model: NavigatorErrorModel, fix_sigma: np.ndarray) -> np.ndarra
             model.nonorthogonality**2,
         ]
     )
-    P = np.broadcast_to(P0, (nb, 6, 6)).copy()
-    Cov = np.zeros((nb, 7, 7))
-    Cov[:, :6, :6] = P0
-    Cov[:, 6, 6] = (model.hdop_axis * model.range_bias) ** 2
-    A = np.eye(7)
-    A[:6, :6] = Phi
-    Qa = np.zeros((7, 7))
-    Qa[:6, :6] = Q
-    eye6 = np.eye(6)
-    for k in range(nt):
-        P = Phi @ P @ Phi.T + Q
-        Cov = A @ Cov @ A.T + Qa
-        locked = np.isfinite(sig[:, k])
-        if not locked.any():
-            continue
-        r = np.where(locked, sig[:, k], 0.0) ** 2
-        K = P[:, :, 0] / (P[:, 0, 0] + r)[:, None]  # (nb, 6)
-        K = np.where(locked[:, None], K, 0.0)
-        IKH = eye6 - K[:, :, None] * eye6[0][None, None, :]
-        P = IKH @ P @ IKH.transpose(0, 2, 1) + r[:, None, None] * K[:, :, None] * K[:, None, :]
-        M = np.broadcast_to(np.eye(7), (nb, 7, 7)).copy()
-        M[:, :6, :6] = IKH
-        M[:, :6, 6] = -K
-        Ka = np.zeros((nb, 7))
-        Ka[:, :6] = K
-        Cov = M @ Cov @ M.transpose(0, 2, 1) + r[:, None, None] * Ka[:, :, None] * Ka[:, None, :]
+    h = np.eye(6)[0]  # the fix measures the position error
+    Cov = biased_filter_error_covariance(Phi, Q, P0, h, fix_sigma, model.hdop_axis * model.range_bias)
     return np.sqrt(Cov[:, 0, 0])
 
 

@@ -1,7 +1,7 @@
 """SP Sections 2.4 and 2.6: IMU grade calibration and the four missions, as ledger claims.
 
 Published values are typed here once with their locators; every reproduced value is
-computed by the covariance-analysis engine (:mod:`navcore.estimation.covariance_analysis`)
+computed by the covariance-analysis engine (:mod:`navcore.integration.engine`)
 from Tables 2.4, 2.5 and 2.8 (:mod:`navcore.papers.sp_tables`) and the stated assumptions
 of :mod:`navcore.papers.sp_missions_scenarios`.
 """
@@ -14,8 +14,7 @@ from decimal import ROUND_HALF_UP, Decimal
 
 import numpy as np
 
-from navcore.estimation.covariance_analysis import circular_error_probable, run_covariance_analysis
-from navcore.estimation.discretize import van_loan
+from navcore.estimation.discretize import discretize
 from navcore.inertial.error_dynamics import (
     ErrorSources,
     earth_rate_ned,
@@ -27,6 +26,7 @@ from navcore.inertial.error_dynamics import (
 )
 from navcore.inertial.imu import noise_only
 from navcore.inertial.trajectories import straight_and_level
+from navcore.integration.engine import circular_error_probable, run_covariance_analysis
 from navcore.ledger import EXACT, Claim, Erratum, input_cache, printed, prose
 from navcore.ledger.inputs import InputSet
 from navcore.papers import sp_missions_scenarios as sc
@@ -175,7 +175,7 @@ def grade_cep_monte_carlo_nmi(grade: float, runs: int = 20_000, seed: int = 2) -
         lat=IN.grade_latitude_deg * DEG,
         vertical_channel=False,
     )
-    Phi, Qd = van_loan(F, process_noise_psd(lay, src), 60.0)
+    Phi, Qd = discretize(F, process_noise_psd(lay, src), 60.0)
     rng = np.random.default_rng(seed)
     x = rng.multivariate_normal(np.zeros(lay.size), P0, size=runs, method="eigh")
     w_ev, w_V = np.linalg.eigh(Qd)

@@ -10,7 +10,7 @@ shapes of the flight profiles (when each turn or climb happens) are the scenario
 written out in the trajectory functions and on the missions page.
 
 Nothing here is a model: the models are :mod:`navcore.inertial.error_dynamics` and
-:mod:`navcore.estimation.covariance_analysis`. This module only wires the paper's inputs
+:mod:`navcore.integration.engine`. This module only wires the paper's inputs
 into them.
 """
 
@@ -22,19 +22,6 @@ from dataclasses import dataclass, fields
 import numpy as np
 
 from navcore._validate import ModelDomainError
-from navcore.estimation.covariance_analysis import (
-    CovarianceAnalysis,
-    baro_schedule,
-    best_geometry_channels,
-    combine_schedules,
-    concatenate_analyses,
-    doppler_schedule,
-    lock_table,
-    loosely_coupled_schedule,
-    run_covariance_analysis,
-    satellite_geometry,
-    tightly_coupled_schedule,
-)
 from navcore.estimation.layout import StateLayout
 from navcore.gnss.architectures import loosely_coupled_layout, tightly_coupled_layout
 from navcore.gnss.constellation import Constellation, nominal_gps_constellation
@@ -48,6 +35,19 @@ from navcore.inertial.error_dynamics import (
 )
 from navcore.inertial.imu import ImuSpec
 from navcore.inertial.trajectories import Segment, Trajectory, fly
+from navcore.integration.engine import (
+    CovarianceAnalysis,
+    concatenate_analyses,
+    run_covariance_analysis,
+)
+from navcore.integration.geometry import best_geometry_channels, lock_table, satellite_geometry
+from navcore.integration.schedules import (
+    baro_schedule,
+    combine_schedules,
+    doppler_schedule,
+    loosely_coupled_schedule,
+    tightly_coupled_schedule,
+)
 from navcore.ledger import input_cache
 from navcore.ledger.inputs import InputSet
 from navcore.papers import sp_acquisition as spa
@@ -910,7 +910,7 @@ def engine_inputs(system: System, seconds: float) -> EngineInputs:
     every code and carrier tracked: its trajectory, truth and filter layouts, error sources,
     a-priori covariance, measurement schedule (pseudoranges and range rates at 1 Hz, the
     barometer) and the filter's tuning, exactly as :func:`sequential_outage` passes them to
-    :func:`~navcore.estimation.covariance_analysis.run_covariance_analysis`."""
+    :func:`~navcore.integration.engine.run_covariance_analysis`."""
     if system.architecture != "tight":
         raise ValueError("system must be tightly coupled")
     tr_all = sequential_outage_trajectory(end_free_s())

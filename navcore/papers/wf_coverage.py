@@ -118,9 +118,9 @@ def eq16_17_information_form() -> float:
         for _ in range(20):
             P = 1e-4 * _spd(rng)
             K = P @ H.T @ np.linalg.inv(H @ P @ H.T + R)
-            joseph = (np.eye(3) - K @ H) @ P
+            short_form = P - K @ H @ P  # (I - K H) P of Eq. (16)
             info = np.linalg.inv(np.linalg.inv(P) + H.T @ np.linalg.inv(R) @ H)
-            worst = max(worst, float(np.max(np.abs(joseph - info)) / np.max(np.abs(info))))
+            worst = max(worst, float(np.max(np.abs(short_form - info)) / np.max(np.abs(info))))
     return worst
 
 

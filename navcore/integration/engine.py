@@ -22,20 +22,19 @@ The filter accounts for unmodelled measurement errors by inflating its noise wit
 a-priori covariance, :math:`R_f = R_t + H_u P_{0,uu} H_u^T`. When both layouts coincide the
 two covariances are identical (the optimal filter).
 
-Measurements are supplied per time step as :class:`~navcore.estimation.covariance.Measurement`
-objects over the *truth* layout by schedule functions built here: tightly coupled
-pseudorange and range rate from each tracked channel, the loosely coupled receiver
-position every 10 s when at least four codes are tracked and the expected horizontal
-error is small enough, barometric altitude, and Doppler ground speed in body axes. Each of
-them (and :func:`combine_schedules` of them) also hands the engine its rows already stacked,
-``schedule.stacked(k)`` giving ``(H, R)`` or ``None``; a schedule of one's own needs only the
-call ``k -> list of Measurement``.
+Measurements are supplied per time step by schedule functions
+(:mod:`navcore.integration.schedules`, ``k -> list of Measurement`` over the *truth* layout);
+the satellites they read come from :mod:`navcore.integration.geometry`. The truth's update
+is the Joseph form of :func:`navcore.estimation.kalman.joseph_update` with the filter's gain on
+the filter's rows of the truth. The circular error probable of a horizontal covariance,
+:func:`circular_error_probable`, summarises the engine's output.
 
 Discretisation: :math:`\Phi = \sum_{j\le 4} (F\Delta t)^j/j!` (exact for the
 nilpotent chains gyro bias -> attitude -> velocity -> position) and
-:math:`Q = \int_0^{\Delta t}\Phi(s)\,GQG^T\Phi(s)^T ds` by Gauss-Legendre quadrature,
-relinearised whenever the flight condition changes (1-s and 10-s steps are far below the
-84-min Schuler period).
+:math:`Q = \int_0^{\Delta t}\Phi(s)\,GQG^T\Phi(s)^T ds` by Gauss-Legendre quadrature
+(:func:`navcore.estimation.discretize.discretize` with ``method="series"``, here in a form
+specialised to diagonal noise and the rows that move), relinearised whenever the flight
+condition changes (1-s and 10-s steps are far below the 84-min Schuler period).
 
 References
 ----------
@@ -51,7 +50,7 @@ import dataclasses
 import hashlib
 import itertools
 from collections import OrderedDict
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -62,19 +61,13 @@ from navcore._validate import (
     COUNT,
     COVARIANCE,
     COVARIANCE_STACK,
-    NONNEGATIVE,
     OPEN_PROBABILITY,
-    POSITIVE,
-    ModelDomainError,
-    Range,
     check_public,
-    require_nonnegative,
     require_positive,
     require_symmetric_psd,
 )
-from navcore.estimation.covariance import Measurement
+from navcore.estimation.kalman import joseph_rows_unchecked
 from navcore.estimation.layout import StateLayout
-from navcore.gnss.constellation import Constellation
 from navcore.inertial.error_dynamics import (
     ErrorSources,
     _error_dynamics_stack,
@@ -83,29 +76,18 @@ from navcore.inertial.error_dynamics import (
     transport_rate_ned,
 )
 from navcore.inertial.trajectories import Trajectory
+from navcore.integration.schedules import Schedule, stacked_measurements
 from navcore.trace import implements
 
 __all__ = [
     "CovarianceAnalysis",
-    "SatelliteGeometry",
-    "baro_schedule",
-    "best_geometry_channels",
     "circular_error_probable",
-    "combine_schedules",
     "concatenate_analyses",
-    "discrete_noise",
-    "doppler_schedule",
     "embedding",
-    "lock_table",
-    "loosely_coupled_schedule",
     "run_covariance_analysis",
-    "satellite_geometry",
-    "taylor_transition",
-    "tightly_coupled_schedule",
 ]
 
 Array = NDArray[np.float64]
-Schedule = Callable[[int], Sequence[Measurement]]
 
 
 def embedding(filter_layout: StateLayout, truth_layout: StateLayout) -> NDArray[np.int64]:
@@ -438,7 +420,7 @@ def run_covariance_analysis(
             np.ascontiguousarray(np.swapaxes(Phi_f_[:, :d_f, :], -1, -2)),
         )
 
-    schedule_stacked = None if schedule is None else _stacked(schedule)
+    schedule_stacked = None if schedule is None else stacked_measurements(schedule)
     L = stride
     lo, hi = 0, 0
     chunk: Any = None
@@ -511,19 +493,11 @@ def run_covariance_analysis(
                 K = np.linalg.solve(Sf, HP).transpose(0, 2, 1)  # (B, n_f, m)
                 # optimal gain for the filter's own model: P+ = P - K S K^T (rank-m downdate)
                 Pf = Pf - K @ HP
-                # any gain for the truth: P+ = P - EK H P - P H' EK' + EK (H P H' + R) EK'
-                # (the Joseph form expanded, O(n^2 m) instead of O(n^3))
-                # (E K is K on the filter's rows of the truth and zero elsewhere: only those
-                # rows and columns change)
-                # (one term M = -E K H P + E K S K^T E^T / 2 added to the rows and its
-                # transpose to the columns: the symmetrisation below averages the two halves
-                # of K S K^T; Pt is this step's own array, so it is changed in place)
-                HPt = Ht @ Pt  # (B, m, n_t)
-                M = K @ HPt  # (B, n_f, n_t)
-                M *= -1.0
-                M[:, :, rows_f] += 0.5 * (K @ (HPt @ Ht.T + Rt) @ K.transpose(0, 2, 1))
-                Pt[:, rows_f, :] += M
-                Pt[:, :, rows_f] += M.transpose(0, 2, 1)
+                # any gain for the truth: the Joseph form with the gain E K (K on the filter's
+                # rows of the truth, zero elsewhere), expanded so that only those rows and
+                # columns change; Pt is this step's own array, so it is changed in place, and
+                # symmetrised below
+                joseph_rows_unchecked(Pt, K, Ht, Rt, rows_f)
                 counts[k] = Ht.shape[0]
         Pt = 0.5 * (Pt + Pt.transpose(0, 2, 1))
         Pf = 0.5 * (Pf + Pf.transpose(0, 2, 1))
@@ -621,6 +595,7 @@ def _digest(obj: Any) -> bytes | None:
     return h.digest()
 
 
+#: The three-node rule of the series discretisation (:func:`navcore.estimation.discretize.discretize`).
 _GAUSS3 = np.polynomial.legendre.leggauss(3)
 # linearisation points whose transitions are computed in one batch (bounds the memory of the
 # (chunk, B, n, n) noise stack)
@@ -712,37 +687,6 @@ def _propagate(P: Array, Phi: Array, Q: Array, dyn_T: Array | None, d: int) -> A
     return out
 
 
-def _stacked(schedule: Schedule) -> Callable[[int], tuple[Array, Array] | None]:
-    """``k -> (H, R)`` of the measurements ``schedule`` returns at step ``k`` (rows stacked,
-    ``R`` block-diagonal), or ``None`` when there is none; a schedule built here supplies it
-    directly as its ``stacked`` attribute."""
-    direct = getattr(schedule, "stacked", None)
-    if direct is not None:
-        return direct
-
-    def stacked(k: int) -> tuple[Array, Array] | None:
-        meas = schedule(k)
-        if not meas:
-            return None
-        return _stack_rows([(np.atleast_2d(m.H), np.atleast_2d(m.R)) for m in meas])
-
-    return stacked
-
-
-def _stack_rows(parts: Sequence[tuple[Array, Array]]) -> tuple[Array, Array]:
-    """Rows of several measurements stacked, their noises on a block diagonal."""
-    if len(parts) == 1:
-        return parts[0]
-    H = np.vstack([h for h, _ in parts])
-    m_tot = H.shape[0]
-    R = np.zeros((m_tot, m_tot))
-    r0 = 0
-    for _, Rb in parts:
-        R[r0 : r0 + Rb.shape[0], r0 : r0 + Rb.shape[0]] = Rb
-        r0 += Rb.shape[0]
-    return H, R
-
-
 class _Propagator:
     """A composite step's transition and noise (``Phi``, ``Q``; the step itself goes through
     :func:`_propagate`) and the diagonals of its intermediate samples (only the rows of the
@@ -771,62 +715,15 @@ class _Propagator:
         return out
 
 
-def discrete_noise(F: ArrayLike, S: ArrayLike, dt: float) -> Array:
-    r""":math:`Q = \int_0^{\Delta t} \Phi(s) S \Phi(s)^T ds` by 3-point Gauss-Legendre quadrature.
-
-    The 3-point rule integrates polynomials of degree 5 exactly, i.e. every term of the
-    integrand up to the third power of ``F s``; the neglected terms are of relative size
-    :math:`(\|F\| \Delta t)^6`.
-
-    Parameters
-    ----------
-    F : (n, n) array
-        Continuous-time system matrix, 1/s.
-    S : (n, n) or (B, n, n) array
-        White-noise PSD :math:`G Q G^T` (state unit squared per second), or a stack of them.
-    dt : float
-        Step, s.
-
-    Returns
-    -------
-    ndarray
-        Discrete process-noise covariance over ``dt``, same shape as ``S``, exactly symmetric.
-
-    Notes
-    -----
-    The discretisation of the module docstring (Maybeck 1979, Ch. 4, reference 2 of the
-    module).
-
-    Examples
-    --------
-    A double integrator driven by white acceleration of PSD ``q``:
-
-    >>> import numpy as np
-    >>> Q = discrete_noise([[0.0, 1.0], [0.0, 0.0]], [[0.0, 0.0], [0.0, 2.0]], 0.5)
-    >>> np.allclose(Q, 2.0 * np.array([[0.5**3 / 3, 0.5**2 / 2], [0.5**2 / 2, 0.5]]))
-    True
-    """
-    return _discrete_noise(np.asarray(F, dtype=float), np.asarray(S, dtype=float), dt)
-
-
-def _discrete_noise(F: Array, S: Array, dt: float) -> Array:
-    """:func:`discrete_noise` without the argument checks (the engine's inner loop)."""
-    x, w = _GAUSS3
-    Q = np.zeros(S.shape)
-    for xi, wi in zip(x, w, strict=True):
-        P = _taylor(F, 0.5 * dt * (xi + 1.0))
-        Q = Q + (0.5 * dt * wi) * (P @ S @ P.T)
-    return 0.5 * (Q + np.swapaxes(Q, -1, -2))
-
-
 def _discrete_noise_diag(F: Array, q: Array, dt: float) -> Array:
-    """:func:`discrete_noise` of ``M`` systems ``F`` ``(M, n, n)``, each driven by ``B``
-    diagonal PSDs ``diag(q[m, b])`` (``q``: ``(M, B, n)``), unchecked: ``(M, B, n, n)``.
+    """The noise of :func:`~navcore.estimation.discretize.discretize` (``method="series"``) of
+    ``M`` systems ``F`` ``(M, n, n)``, each driven by ``B`` diagonal PSDs ``diag(q[m, b])``
+    (``q``: ``(M, B, n)``), unchecked: ``(M, B, n, n)``.
 
-    The same quadrature as :func:`discrete_noise` (``P S = P * q`` for a diagonal ``S``, exactly),
-    computed where it can differ from zero: ``Phi(s) S Phi(s)^T`` reads only the driven columns
-    of ``Phi(s)``, which are zero outside the rows of ``F`` that are not zero (the dynamic rows)
-    and the driven states' own unit entries; the three nodes' products are one product over
+    The same quadrature (``P S = P * q`` for a diagonal ``S``, exactly), computed where it
+    can differ from zero: ``Phi(s) S Phi(s)^T`` reads only the driven columns of ``Phi(s)``,
+    which are zero outside the rows of ``F`` that are not zero (the dynamic rows) and the
+    driven states' own unit entries; the three nodes' products are one product over
     their stacked columns.
     """
     x, w = _GAUSS3
@@ -887,46 +784,6 @@ def _taylor_stack(F: Array, dt: float) -> Array:
     Phi = np.zeros(F.shape)
     Phi[:, np.arange(n), np.arange(n)] = 1.0
     Phi[:, dyn, :] = _taylor_rows(F, dt, dyn)
-    return Phi
-
-
-def taylor_transition(F: ArrayLike, dt: float, order: int = 4) -> Array:
-    r"""Transition :math:`\sum_{j \le \mathrm{order}} (F \Delta t)^j / j!` (Horner form).
-
-    Parameters
-    ----------
-    F : (n, n) array
-        Continuous-time system matrix, 1/s.
-    dt : float
-        Step, s.
-    order : int, default 4
-        Highest power kept (4 is exact for the nilpotent INS error chains).
-
-    Returns
-    -------
-    (n, n) ndarray
-        Truncated series of :math:`e^{F\,dt}`.
-
-    Notes
-    -----
-    The discretisation of the module docstring (Maybeck 1979, Ch. 4, reference 2 of the
-    module).
-
-    Examples
-    --------
-    >>> taylor_transition([[0.0, 1.0], [0.0, 0.0]], 2.0).tolist()
-    [[1.0, 2.0], [0.0, 1.0]]
-    """
-    return _taylor(np.asarray(F, dtype=float), dt, order)
-
-
-def _taylor(F: Array, dt: float, order: int = 4) -> Array:
-    """:func:`taylor_transition` without the argument checks (also of a stack ``(..., n, n)``)."""
-    A = F * dt
-    eye = np.eye(A.shape[-1])
-    Phi = eye
-    for j in range(order, 0, -1):
-        Phi = eye + (A @ Phi) / j
     return Phi
 
 
@@ -1005,552 +862,6 @@ def concatenate_analyses(parts: Sequence[CovarianceAnalysis]) -> CovarianceAnaly
     )
 
 
-# --------------------------------------------------------------------------- GPS geometry
-
-
-@dataclass(frozen=True)
-class SatelliteGeometry:
-    """Line-of-sight unit vectors (NED) and elevations of tracked channels over a trajectory.
-
-    ``u_ned[k, c]`` points from the vehicle to the satellite of channel ``c`` at step ``k``.
-
-    Attributes
-    ----------
-    prn : (c,) ndarray of int
-        PRN of each channel.
-    u_ned : (N, c, 3) ndarray
-        Unit line-of-sight vectors in NED.
-    elevation : (N, c) ndarray
-        Elevations, rad.
-    """
-
-    prn: NDArray[np.int64]
-    u_ned: Array
-    elevation: Array
-
-
-def satellite_geometry(
-    trajectory: Trajectory, constellation: Constellation, channels: Sequence[int]
-) -> SatelliteGeometry:
-    """Vectorised line-of-sight geometry of satellites along a trajectory.
-
-    Parameters
-    ----------
-    trajectory : Trajectory
-        Sampled flight path (geodetic latitude and longitude in rad, height in m).
-    constellation : Constellation
-        Satellite orbits.
-    channels : sequence of int
-        Indices into the constellation of the tracked satellites.
-
-    Returns
-    -------
-    SatelliteGeometry
-        PRNs, NED unit vectors from vehicle to satellite ``(N, c, 3)`` and elevations ``(N, c)``
-        in rad.
-
-    Examples
-    --------
-    >>> from navcore.gnss.constellation import nominal_gps_constellation
-    >>> from navcore.inertial.trajectories import straight_and_level
-    >>> geo = satellite_geometry(straight_and_level(2.0), nominal_gps_constellation(), [0, 1])
-    >>> geo.u_ned.shape, geo.elevation.shape
-    ((3, 2, 3), (3, 2))
-    """
-    ch = np.asarray(channels, dtype=np.int64)
-    lat, lon, h = trajectory.lat, trajectory.lon, trajectory.h
-    from navcore.frames import geodetic_to_ecef
-
-    r_user = geodetic_to_ecef(lat, lon, h)  # (N, 3)
-    r_sat = constellation.positions_ecef(trajectory.t)[:, ch]  # (N, c, 3)
-    d = r_sat - r_user[:, None, :]
-    u = d / np.linalg.norm(d, axis=-1, keepdims=True)
-    sl, cl, so, co = np.sin(lat), np.cos(lat), np.sin(lon), np.cos(lon)
-    C_en = np.stack(
-        [
-            np.stack([-sl * co, -sl * so, cl], -1),
-            np.stack([-so, co, np.zeros_like(lat)], -1),
-            np.stack([-cl * co, -cl * so, -sl], -1),
-        ],
-        -2,
-    )  # (N, 3, 3) ECEF -> NED
-    u_ned = np.einsum("nij,ncj->nci", C_en, u)
-    el = np.arcsin(np.clip(-u_ned[..., 2], -1.0, 1.0))
-    return SatelliteGeometry(constellation.prn[ch], u_ned, el)
-
-
-def lock_table(
-    t: ArrayLike,
-    n_channels: int,
-    events: Sequence[tuple[float, int, str, bool]],
-    *,
-    start_locked: bool = True,
-) -> tuple[NDArray[np.bool_], NDArray[np.bool_]]:
-    """Code and carrier lock of each channel over time from a list of events.
-
-    Parameters
-    ----------
-    t : (N,) array
-        Times, s.
-    n_channels : int
-        Number of receiver channels.
-    events : sequence of ``(time, channel, "code" | "carrier", locked)``
-        From ``time`` (s) on, the channel's code or carrier is (un)locked. Events apply in
-        time order, whatever their order in the list; events at the same time apply in the
-        order listed, so the last of them sets the state.
-    start_locked : bool, default True
-        Lock state of every channel before its first event.
-
-    Returns
-    -------
-    code : (N, n_channels) bool ndarray
-        Code lock per step and channel.
-    carrier : (N, n_channels) bool ndarray
-        Carrier lock per step and channel.
-
-    Raises
-    ------
-    ValueError
-        If an event's kind is not ``"code"`` or ``"carrier"``.
-
-    Examples
-    --------
-    >>> code, carrier = lock_table([0.0, 1.0, 2.0], 2, [(1.0, 0, "carrier", False)])
-    >>> carrier.tolist()
-    [[True, True], [False, True], [False, True]]
-    """
-    t = np.asarray(t, dtype=float)
-    code = np.full((t.size, n_channels), start_locked)
-    carrier = np.full((t.size, n_channels), start_locked)
-    for time, c, kind, locked in sorted(events, key=lambda e: e[0]):
-        if kind not in ("code", "carrier"):
-            raise ValueError(f"event kind must be 'code' or 'carrier', got {kind!r}")
-        target = code if kind == "code" else carrier
-        target[t >= time, c] = locked
-    return code, carrier
-
-
-@implements("SP Sec. 2.2")
-def tightly_coupled_schedule(
-    layout: StateLayout,
-    geometry: SatelliteGeometry,
-    code: NDArray[np.bool_],
-    carrier: NDArray[np.bool_],
-    *,
-    pseudorange_noise: float,
-    range_rate_noise: float,
-    every: int = 1,
-    mask_rad: float = 0.0,
-    g_load: NDArray[np.float64] | None = None,
-) -> Schedule:
-    r"""Pseudorange (code lock) and range rate (carrier lock) from each channel every ``every`` steps.
-
-    Rows (truth layout): :math:`\delta\rho = -u \cdot \delta r + \delta b + b_{pr}[c]`, :math:`\delta\dot\rho
-    = -u \cdot \delta v + \delta\dot b + b_{rr}[c]`,
-    with ``u`` the NED line-of-sight unit vector to the satellite, ``dr`` (m) and ``dv`` (m/s)
-    the NED position and velocity errors, ``db`` the clock bias error (m) and ``d(b_dot)`` the
-    clock drift error (m/s). ``g_load`` enters the range-rate rows through the clock's
-    g-sensitivity state, consistently with the clock-bias dynamics.
-
-    Parameters
-    ----------
-    layout : StateLayout
-        Truth layout (needs ``"position"`` and ``"velocity"``; clock, bias and g-sensitivity
-        blocks enter when present).
-    geometry : SatelliteGeometry
-        Line-of-sight vectors and elevations of the channels.
-    code : (N, n_channels) bool array
-        Code lock per step and channel.
-    carrier : (N, n_channels) bool array
-        Carrier lock per step and channel.
-    pseudorange_noise : float
-        1-:math:`\sigma` white pseudorange noise per measurement, m (``> 0``).
-    range_rate_noise : float
-        1-:math:`\sigma` white range-rate noise per measurement, m/s (``> 0``).
-    every : int, default 1
-        Measure at every ``every``-th step.
-    mask_rad : float, default 0.0
-        Elevation mask, rad.
-    g_load : (N,) array, optional
-        Specific-force magnitude at each step, in g (dimensionless).
-
-    Returns
-    -------
-    callable
-        Schedule ``k -> list[Measurement]`` (one measurement with a pseudorange row per
-        code-locked and a range-rate row per carrier-locked channel).
-
-    Raises
-    ------
-    ValueError
-        If ``pseudorange_noise`` or ``range_rate_noise`` is not positive.
-
-    References
-    ----------
-    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",
-    Sec. 2.2 (tightly coupled architecture).
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> from navcore.inertial.error_dynamics import ins_error_layout
-    >>> lay = ins_error_layout("position", "velocity", "misalignment")
-    >>> u = np.array([[0.0, 0.0, -1.0], [0.6, 0.0, -0.8], [-0.6, 0.0, -0.8], [0.0, 0.6, -0.8],
-    ...               [0.0, -0.6, -0.8]])
-    >>> geo = SatelliteGeometry(np.arange(1, 6), u[None], np.arcsin(-u[None, :, 2]))
-    >>> lock = np.ones((1, 5), dtype=bool)
-    >>> m = tightly_coupled_schedule(lay, geo, lock, lock, pseudorange_noise=5.0,
-    ...                              range_rate_noise=0.1)(0)[0]
-    >>> m.H.shape
-    (10, 9)
-    """
-    require_positive("pseudorange_noise", pseudorange_noise)
-    require_positive("range_rate_noise", range_rate_noise)
-    n = layout.size
-    names = layout.names
-    p0, v0 = layout.slice("position").start, layout.slice("velocity").start
-    n_ch = geometry.u_ned.shape[1]
-    i_b = layout.index("clock bias") if "clock bias" in names else None
-    i_d = layout.index("clock drift") if "clock drift" in names else None
-    i_pb = layout.slice("pseudorange bias").start if "pseudorange bias" in names else None
-    i_rb = layout.slice("range-rate bias").start if "range-rate bias" in names else None
-    i_g = (
-        layout.index("clock g-sensitivity") if "clock g-sensitivity" in names and g_load is not None else None
-    )
-    use_code = code & (geometry.elevation >= mask_rad)
-    use_carr = carrier & (geometry.elevation >= mask_rad)
-    ch = np.arange(n_ch)
-    # the rows that do not depend on the geometry, and R, per pattern of tracked channels
-    patterns: dict[bytes, tuple[Array, Array, NDArray[np.intp], NDArray[np.intp]]] = {}
-
-    def pattern(k: int) -> tuple[Array, Array, NDArray[np.intp], NDArray[np.intp]]:
-        key = use_code[k].tobytes() + use_carr[k].tobytes()
-        if key not in patterns:
-            cc, cr = ch[use_code[k]], ch[use_carr[k]]
-            H0 = np.zeros((cc.size + cr.size, n))
-            rows = np.arange(cc.size)
-            if i_b is not None:
-                H0[rows, i_b] = 1.0
-            if i_pb is not None:
-                H0[rows, i_pb + cc] = 1.0
-            rows = cc.size + np.arange(cr.size)
-            if i_d is not None:
-                H0[rows, i_d] = 1.0
-            if i_rb is not None:
-                H0[rows, i_rb + cr] = 1.0
-            R = np.diag(np.r_[np.full(cc.size, pseudorange_noise**2), np.full(cr.size, range_rate_noise**2)])
-            patterns[key] = (H0, R, cc, cr)
-        return patterns[key]
-
-    def stacked(k: int) -> tuple[Array, Array] | None:
-        if k % every:
-            return None
-        H0, R, cc, cr = pattern(k)
-        if cc.size + cr.size == 0:
-            return None
-        H = H0.copy()
-        u = geometry.u_ned[k]
-        H[: cc.size, p0 : p0 + 3] = -u[cc]
-        H[cc.size :, v0 : v0 + 3] = -u[cr]
-        if i_g is not None:
-            H[cc.size :, i_g] = g_load[k]  # type: ignore[index]  # i_g is None when g_load is
-        return H, R
-
-    def sched(k: int) -> list[Measurement]:
-        rows = stacked(k)
-        return [] if rows is None else [Measurement._unchecked(*rows)]
-
-    sched.stacked = stacked  # type: ignore[attr-defined]  # the engine's form: (H, R) or None
-    return sched
-
-
-@implements("SP Sec. 2.1")
-def loosely_coupled_schedule(
-    layout: StateLayout,
-    geometry: SatelliteGeometry,
-    code: NDArray[np.bool_],
-    *,
-    pseudorange_noise: float,
-    interval_steps: int,
-    max_ehe_m: float,
-    pseudorange_bias_sigma: float = 0.0,
-    mask_rad: float = 0.0,
-) -> Schedule:
-    r"""The receiver's position solution every ``interval_steps`` steps.
-
-    A fix is used when at least four codes are tracked and the expected horizontal error is
-    below ``max_ehe_m``. The receiver solves position and clock by least squares from the
-    tracked pseudoranges, :math:`\delta r_{meas} = (G^T G)^{-1} G^T (b_{pr} + \text{noise})` with ``G = [-u,
-    1]``: its
-    position error is the position rows of that map applied to the per-channel biases (truth
-    states) and to the noise, so the measurement is correlated with the pseudorange-bias
-    states exactly as in the tightly coupled case. EHE is ``sigma_UERE * HDOP``.
-
-    Parameters
-    ----------
-    layout : StateLayout
-        Truth layout (needs ``"position"``; a ``"pseudorange bias"`` block enters when
-        present).
-    geometry : SatelliteGeometry
-        Line-of-sight vectors and elevations of the channels.
-    code : (N, n_channels) bool array
-        Code lock per step and channel (see :func:`lock_table`).
-    pseudorange_noise : float
-        1-:math:`\sigma` white pseudorange noise, m (``> 0``).
-    interval_steps : int
-        Steps between fixes (``>= 1``; SP Sec. 2.1's filter takes one every 10 s).
-    max_ehe_m : float
-        Largest expected horizontal error accepted, m (``> 0``; SP Sec. 2.1: 100 m).
-    pseudorange_bias_sigma : float, default 0.0
-        1-:math:`\sigma` per-channel pseudorange bias, m (counts in the UERE of the EHE test).
-    mask_rad : float, default 0.0
-        Elevation mask, rad.
-
-    Returns
-    -------
-    callable
-        Schedule ``k -> list[Measurement]`` (one 3-row position measurement per fix).
-
-    Raises
-    ------
-    ValueError
-        If ``pseudorange_noise`` is not positive or ``pseudorange_bias_sigma`` is negative.
-
-    References
-    ----------
-    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",
-    Sec. 2.1 (loosely coupled architecture).
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> from navcore.inertial.error_dynamics import ins_error_layout
-    >>> lay = ins_error_layout("position", "velocity", "misalignment")
-    >>> u = np.array([[0.0, 0.0, -1.0], [0.6, 0.0, -0.8], [-0.6, 0.0, -0.8], [0.0, 0.6, -0.8],
-    ...               [0.0, -0.6, -0.8]])
-    >>> geo = SatelliteGeometry(np.arange(1, 6), u[None], np.arcsin(-u[None, :, 2]))
-    >>> lock = np.ones((1, 5), dtype=bool)
-    >>> sched = loosely_coupled_schedule(lay, geo, lock, pseudorange_noise=5.0, interval_steps=10,
-    ...                                  max_ehe_m=100.0)
-    >>> m = sched(0)[0]
-    >>> m.H.shape, round(float(m.R[2, 2]), 2)
-    ((3, 9), 781.25)
-    """
-    require_positive("pseudorange_noise", pseudorange_noise)
-    require_nonnegative("pseudorange_bias_sigma", pseudorange_bias_sigma)
-    n = layout.size
-    p = layout.slice("position")
-    has_bias = "pseudorange bias" in layout.names
-    uere2 = pseudorange_noise**2 + pseudorange_bias_sigma**2
-
-    def sched(k: int) -> list[Measurement]:
-        if k % interval_steps:
-            return []
-        ok = code[k] & (geometry.elevation[k] >= mask_rad)
-        chans = np.flatnonzero(ok)
-        if chans.size < 4:
-            return []
-        u = geometry.u_ned[k, chans]
-        G = np.hstack([-u, np.ones((chans.size, 1))])
-        GtG_inv = np.linalg.inv(G.T @ G)
-        ehe = np.sqrt(uere2 * (GtG_inv[0, 0] + GtG_inv[1, 1]))
-        if ehe >= max_ehe_m:
-            return []
-        A = (GtG_inv @ G.T)[:3]  # position rows
-        # the LS solution maps -u.dr onto -dr: measured position error minus INS error
-        H = np.zeros((3, n))
-        H[:, p] = np.eye(3)
-        if has_bias:
-            for j, c in enumerate(chans):
-                H[:, layout.index("pseudorange bias", int(c))] = -A[:, j]
-        R = pseudorange_noise**2 * GtG_inv[:3, :3]
-        return [Measurement._unchecked(H, 0.5 * (R + R.T))]
-
-    return sched
-
-
-def baro_schedule(layout: StateLayout, *, noise_m: float, every: int = 1) -> Schedule:
-    r"""Barometric altitude: ``dz = -dr_D - b_alt + noise`` (height = minus down).
-
-    Parameters
-    ----------
-    layout : StateLayout
-        Truth layout the rows refer to (needs a ``"position"`` block; an ``"altimeter bias"``
-        block, if present, enters the row).
-    noise_m : float
-        1-:math:`\sigma` white altitude noise, m (``> 0``).
-    every : int, default 1
-        Measure at every ``every``-th step.
-
-    Returns
-    -------
-    callable
-        Schedule ``k -> list[Measurement]`` (one 1-row measurement on the steps it measures).
-
-    Raises
-    ------
-    ValueError
-        If ``noise_m`` is not positive.
-
-    References
-    ----------
-    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",
-    Sec. 2.6 (baro-aided INS).
-
-    Examples
-    --------
-    >>> from navcore.inertial.error_dynamics import ins_error_layout
-    >>> lay = ins_error_layout("position", "velocity", "misalignment")
-    >>> m = baro_schedule(lay, noise_m=3.0, every=10)
-    >>> len(m(5)), m(10)[0].H[0, :3], m(10)[0].R
-    (0, array([ 0.,  0., -1.]), array([[9.]]))
-    """
-    require_positive("noise_m", noise_m)
-    H = np.zeros((1, layout.size))
-    H[0, layout.index("position", 2)] = -1.0
-    if "altimeter bias" in layout.names:
-        H[0, layout.slice("altimeter bias")] = -1.0
-    R = np.array([[noise_m**2]])
-
-    def sched(k: int) -> list[Measurement]:
-        return [] if k % every else [Measurement._unchecked(H, R)]
-
-    sched.stacked = lambda k: None if k % every else (H, R)  # type: ignore[attr-defined]
-    return sched
-
-
-@implements("SP Table 2.8")
-def doppler_schedule(
-    layout: StateLayout,
-    trajectory: Trajectory,
-    *,
-    noise_mps: float,
-    every: int = 1,
-    active: NDArray[np.bool_] | None = None,
-) -> Schedule:
-    r"""Doppler ground velocity in body axes.
-
-    With the computed attitude :math:`\hat C^n_b = (I-[\psi\times])C^n_b`, the INS-predicted
-    body velocity minus the Doppler reading is
-
-    .. math::
-
-        \delta z = C^b_n\,\delta v - C^b_n [v^n\times]\,\psi - b_d - \mathrm{diag}(v^b)\,s_d
-        - [v^b\times]\,\mu_d + w.
-
-    Parameters
-    ----------
-    layout : StateLayout
-        Truth layout (needs ``"velocity"`` and ``"misalignment"``; the Doppler bias, scale
-        factor and misalignment blocks enter when present).
-    trajectory : Trajectory
-        Flight path giving the attitude and velocity at each step.
-    noise_mps : float
-        1-:math:`\sigma` white noise per body axis, m/s (``> 0``).
-    every : int, default 1
-        Measure at every ``every``-th step.
-    active : (N,) bool array, optional
-        Steps at which the Doppler is available (default: all).
-
-    Returns
-    -------
-    callable
-        Schedule ``k -> list[Measurement]`` (one 3-row measurement on the steps it measures).
-
-    Raises
-    ------
-    ValueError
-        If ``noise_mps`` is not positive.
-
-    References
-    ----------
-    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",
-    Table 2.8 (Doppler-aided INS).
-
-    Examples
-    --------
-    >>> from navcore.inertial.trajectories import straight_and_level
-    >>> from navcore.inertial.error_dynamics import ins_error_layout
-    >>> lay = ins_error_layout("position", "velocity", "misalignment")
-    >>> tr = straight_and_level(10.0, speed=100.0)
-    >>> m = doppler_schedule(lay, tr, noise_mps=0.1)(0)[0]
-    >>> m.H.shape, round(float(m.R[0, 0]), 6)
-    ((3, 9), 0.01)
-    """
-    require_positive("noise_mps", noise_mps)
-    n = layout.size
-    names = layout.names
-    R = noise_mps**2 * np.eye(3)
-    from navcore.inertial.error_dynamics import skew_stack
-
-    def sched(k: int) -> list[Measurement]:
-        if k % every or (active is not None and not active[k]):
-            return []
-        C = trajectory.C_bn[k]
-        vn = trajectory.vel_ned[k]
-        vb = C.T @ vn
-        H = np.zeros((3, n))
-        H[:, layout.slice("velocity")] = C.T
-        H[:, layout.slice("misalignment")] = -C.T @ skew_stack(vn)
-        if "doppler bias" in names:
-            H[:, layout.slice("doppler bias")] = -np.eye(3)
-        if "doppler scale factor" in names:
-            H[:, layout.slice("doppler scale factor")] = -np.diag(vb)
-        if "doppler misalignment" in names:
-            H[:, layout.slice("doppler misalignment")] = -skew_stack(vb)
-        return [Measurement._unchecked(H, R)]
-
-    return sched
-
-
-def combine_schedules(*schedules: Schedule | None) -> Schedule:
-    """A schedule that returns the measurements of all given schedules at each step.
-
-    Parameters
-    ----------
-    *schedules : callable or None
-        Schedules ``k -> list[Measurement]``; ``None`` entries are skipped.
-
-    Returns
-    -------
-    callable
-        Schedule returning, at step ``k``, the concatenated measurements of all schedules.
-
-    Examples
-    --------
-    >>> from navcore.inertial.error_dynamics import ins_error_layout
-    >>> lay = ins_error_layout("position", "velocity", "misalignment")
-    >>> both = combine_schedules(baro_schedule(lay, noise_m=3.0), None, baro_schedule(lay, noise_m=5.0))
-    >>> len(both(0))
-    2
-    """
-    live = [s for s in schedules if s is not None]
-    parts = [_stacked(s) for s in live]
-    # the block-diagonal noise of each combination of the parts' noise matrices (a schedule
-    # built here returns the same R object for the same pattern; the key holds them alive)
-    noises: dict[tuple[int, ...], tuple[tuple[Array, ...], Array]] = {}
-
-    def sched(k: int) -> list[Measurement]:
-        out: list[Measurement] = []
-        for s in live:
-            out.extend(s(k))
-        return out
-
-    def stacked(k: int) -> tuple[Array, Array] | None:
-        rows = [r for r in (part(k) for part in parts) if r is not None]
-        if len(rows) <= 1:
-            return rows[0] if rows else None
-        key = tuple(id(R) for _, R in rows)
-        hit = noises.get(key)
-        if hit is None or any(a is not b for a, (_, b) in zip(hit[0], rows, strict=True)):
-            hit = (tuple(R for _, R in rows), _stack_rows(rows)[1])
-            noises[key] = hit
-        return np.vstack([H for H, _ in rows]), hit[1]
-
-    sched.stacked = stacked  # type: ignore[attr-defined]  # the engine's form: (H, R) or None
-    return sched
-
-
 def circular_error_probable(P2: ArrayLike, p: float = 0.5) -> float:
     r"""Radius containing probability ``p`` of a zero-mean 2-D Gaussian with covariance ``P2``.
 
@@ -1608,103 +919,15 @@ def circular_error_probable(P2: ArrayLike, p: float = 0.5) -> float:
     return float(brentq(lambda r: prob(r) - p, 0.0, hi, xtol=1e-12 * hi))
 
 
-def best_geometry_channels(
-    trajectory: Trajectory, constellation: Constellation, n: int = 4, mask_deg: float = 10.0
-) -> NDArray[np.int64]:
-    """The ``n`` satellites with the smallest mean PDOP above ``mask_deg`` for the whole trajectory.
-
-    Brute force over the combinations of the satellites that stay visible; the PDOP is
-    averaged over 12 samples spread evenly from the trajectory's first sample to its last
-    (indices ``linspace(0, N - 1, 12)`` rounded down).
-
-    Parameters
-    ----------
-    trajectory : Trajectory
-        Sampled flight path.
-    constellation : Constellation
-        Satellite orbits.
-    n : int, default 4
-        Number of channels to choose (``> 0``).
-    mask_deg : float, default 10.0
-        Elevation mask, degrees.
-
-    Returns
-    -------
-    (n,) ndarray of int
-        Indices into the constellation of the chosen satellites.
-
-    Raises
-    ------
-    ValueError
-        If ``n`` is not positive.
-    ModelDomainError
-        If fewer than ``n`` satellites stay above the mask for the whole trajectory, or no
-        combination of them gives a usable geometry (a ``ValueError``: the fixed channels this
-        selection models do not exist for that flight).
-
-    Examples
-    --------
-    >>> from navcore.gnss.constellation import nominal_gps_constellation
-    >>> from navcore.inertial.trajectories import straight_and_level
-    >>> tr = straight_and_level(60.0, speed=100.0, dt=10.0, lat0=0.5)
-    >>> best_geometry_channels(tr, nominal_gps_constellation(), n=4).size
-    4
-    """
-    from itertools import combinations
-
-    require_positive("n", n)
-    geo = satellite_geometry(trajectory, constellation, range(constellation.prn.size))
-    always = np.flatnonzero(np.all(geo.elevation >= mask_deg * np.pi / 180, axis=0))
-    if always.size < n:
-        raise ModelDomainError(
-            f"only {always.size} satellites stay above mask_deg={mask_deg} for the whole trajectory",
-            case=(
-                f"only {always.size} satellites stay above the {mask_deg:g} deg elevation mask "
-                "for the whole flight"
-            ),
-        )
-    ks = np.linspace(0, len(trajectory) - 1, 12).astype(int)
-    best, best_val = None, np.inf
-    for combo in combinations(always.tolist(), n):
-        u = geo.u_ned[np.ix_(ks, np.asarray(combo, dtype=np.intp))]  # (K, n, 3)
-        G = np.concatenate([-u, np.ones((*u.shape[:2], 1))], axis=-1)
-        GtG = np.einsum("kni,knj->kij", G, G)
-        if np.any(np.abs(np.linalg.det(GtG)) < 1e-9):
-            continue
-        Q = np.linalg.inv(GtG)
-        val = float(np.mean(np.sqrt(Q[:, 0, 0] + Q[:, 1, 1] + Q[:, 2, 2])))
-        if val < best_val:
-            best, best_val = combo, val
-    if best is None:
-        raise ModelDomainError(
-            "no satellite combination gives a usable geometry",
-            case=f"no {n} satellites that stay above the mask give a usable geometry throughout the flight",
-        )
-    return np.asarray(best, dtype=np.int64)
-
-
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
 check_public(
     globals(),
     {
-        "dt": POSITIVE,
-        "mask_deg": Range(-90.0, 90.0),
         "p": OPEN_PROBABILITY,
-        "n_channels": COUNT,
-        "every": COUNT,
         "relinearize_every": COUNT,
         "stride": COUNT,
-        "interval_steps": COUNT,
-        "order": COUNT,
-        "noise_m": NONNEGATIVE,
-        "noise_mps": NONNEGATIVE,
-        "pseudorange_noise": NONNEGATIVE,
-        "range_rate_noise": NONNEGATIVE,
-        "pseudorange_bias_sigma": NONNEGATIVE,
-        "max_ehe_m": POSITIVE,
         "P2": COVARIANCE,
-        "S": COVARIANCE_STACK,
         "P0_filter": COVARIANCE_STACK,
         "P0_apriori": COVARIANCE_STACK,
     },

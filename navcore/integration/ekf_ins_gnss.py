@@ -8,7 +8,8 @@ Structure (KZL Sec. 3.5, Fig. 3):
 2. the 17-state error covariance (:mod:`navcore.inertial.error_model17`) is predicted at the
    GPS rate with the exact transition :math:`e^{FT}` (a cubic, F being nilpotent) and the
    exact discrete noise :math:`Q_d = \int_0^T e^{Fs} GQG^T e^{F^Ts} ds` (Gauss-Legendre with
-   four nodes, exact for the degree-6 polynomial integrand);
+   four nodes, exact for the degree-6 polynomial integrand: the ``"nilpotent"`` method of
+   :func:`navcore.estimation.discretize.discretize`);
 3. at each GPS epoch the measurements ``y = predicted - measured`` are processed one scalar
    at a time (correlated DD phases are whitened first with the Cholesky factor of their
    covariance), which gives the same posterior as one batch update;
@@ -45,14 +46,14 @@ from navcore._validate import (
     UNIT_QUATERNION_STACK,
     check_public,
     require_integer,
-    require_positive,
     unchecked,
 )
+from navcore.estimation.discretize import discretize_unchecked
 from navcore.estimation.kalman import symmetrize_unchecked
 from navcore.frames import dcm_from_euler, quat_from_dcm, quat_from_rotvec
 from navcore.gnss.carrier_phase import dd_covariance
 from navcore.inertial.alignment import heading_from_velocity, levelling
-from navcore.inertial.error_model17 import ERROR_LAYOUT_17, error_dynamics_17, transition_exact
+from navcore.inertial.error_model17 import ERROR_LAYOUT_17, error_dynamics_17
 from navcore.inertial.imu import ImuSpec
 from navcore.inertial.strapdown import (
     dcm_from_quat_batch,
@@ -67,7 +68,6 @@ __all__ = [
     "Scenario",
     "batch_group_key",
     "correct_attitude",
-    "discrete_noise_nilpotent",
     "euler_batch",
     "euler_jacobian_batch",
     "monte_carlo_key",
@@ -223,73 +223,12 @@ def _dd_phase_batch(pos: Array, ant: Array, sat_n: Array, sat_m: Array) -> Array
     return 2 * np.pi / GPS_L1_WAVELENGTH_M * (rdiff(sat_n) - rdiff(sat_m))
 
 
-def discrete_noise_nilpotent(F: Array, GQGt: Array, dt: float) -> Array:
-    r""":math:`Q_d=\int_0^{dt} e^{Fs} GQG^T e^{F^Ts} ds` for :math:`F^4 = 0` (batched over F).
-
-    ``e^{Fs}`` is a cubic in ``s``, so the integrand is a polynomial of degree 6 and the
-    four-node Gauss-Legendre rule is exact.
-
-    Parameters
-    ----------
-    F : (..., n, n) array
-        Continuous-time error dynamics with :math:`F^4 = 0`, 1/s.
-    GQGt : (n, n) array
-        White-noise PSD mapped to the states (state unit squared per second; not checked:
-        an inner-loop helper of :func:`run_monte_carlo`).
-    dt : float
-        Interval, s (``> 0``).
-
-    Returns
-    -------
-    (..., n, n) ndarray
-        Discrete process-noise covariance, exactly symmetric.
-
-    Raises
-    ------
-    ValueError
-        If ``dt`` is not positive.
-
-    Notes
-    -----
-    The discretisation of the 17-state error model of KZL Sec. 3.3 (Maybeck 1979, Ch. 4).
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> Q = discrete_noise_nilpotent(np.array([[0.0, 1.0], [0.0, 0.0]]), np.diag([0.0, 2.0]), 0.5)
-    >>> np.allclose(Q, 2.0 * np.array([[0.5**3 / 3, 0.5**2 / 2], [0.5**2 / 2, 0.5]]))
-    True
-    """
-    require_positive("dt", dt)
-    nodes, weights = np.polynomial.legendre.leggauss(4)
-    Qd = np.zeros_like(np.asarray(F, dtype=float))
-    for s, w in zip(0.5 * dt * (nodes + 1.0), 0.5 * dt * weights, strict=True):
-        Phi = unchecked(transition_exact)(F, s) if s > 0 else np.broadcast_to(np.eye(F.shape[-1]), F.shape)
-        Qd = Qd + w * Phi @ GQGt @ np.swapaxes(Phi, -1, -2)
-    return symmetrize_unchecked(Qd)
-
-
-#: Four-node Gauss-Legendre rule on [-1, 1] (exact for the degree-6 integrand of the discrete noise).
-_GL4_NODES, _GL4_WEIGHTS = np.polynomial.legendre.leggauss(4)
-
-
 def _transition_and_noise(F: Array, q: Array, dt: float) -> tuple[Array, Array]:
-    """:func:`~navcore.inertial.error_model17.transition_exact` and :func:`discrete_noise_nilpotent`
-    of one batch of ``F`` over ``dt``, for a diagonal ``GQG^T = diag(q)``, with the powers of ``F``
-    formed once for the transition and the four quadrature nodes (the same sums in another order:
-    equal to round-off). The inner-loop kernel of :func:`run_monte_carlo`: nothing is checked."""
-    F2 = F @ F
-    F3 = F2 @ F
-    eye = np.eye(F.shape[-1])
-
-    def phi(s: float) -> Array:
-        return eye + F * s + F2 * (s * s / 2.0) + F3 * (s * s * s / 6.0)
-
-    Qd = np.zeros_like(F)
-    for s, w in zip(0.5 * dt * (_GL4_NODES + 1.0), 0.5 * dt * _GL4_WEIGHTS, strict=True):
-        P_s = phi(s)
-        Qd = Qd + w * (P_s * q) @ np.swapaxes(P_s, -1, -2)
-    return phi(dt), symmetrize_unchecked(Qd)
+    """The exact transition and discrete noise of one batch of ``F`` over ``dt`` for a diagonal
+    ``GQG^T = diag(q)``: :func:`~navcore.estimation.discretize.discretize` with
+    ``method="nilpotent"`` (``F^4 = 0``), unchecked. The inner-loop kernel of
+    :func:`run_monte_carlo`."""
+    return discretize_unchecked(F, q, dt, method="nilpotent", diagonal=True)
 
 
 def _increment_quaternions(r: Array) -> tuple[tuple[Array, ...], tuple[Array, ...]]:
@@ -1055,7 +994,7 @@ def _monte_carlo_batch(
         np.stack([_initial_covariance(s, C0, s.init_time if initialise else None) for s in scs]), N, axis=0
     )
     # GQG^T is diagonal (isotropic noises, _gqgt): its diagonal per row, to scale columns
-    q_diag = np.repeat(np.stack([np.diag(_gqgt(s)) for s in scs]), N, axis=0)[:, None, :]
+    q_diag = np.repeat(np.stack([np.diag(_gqgt(s)) for s in scs]), N, axis=0)  # (runs, n)
     noise = {
         name: [getattr(s.gnss, name) for s in scs]
         for name in ("pseudorange", "delta_range", "phase", "attitude")
