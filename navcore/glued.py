@@ -1700,7 +1700,7 @@ def atc10_13_2ft_rf_w() -> float:
 
 
 def _atc10_window_rates() -> Any:
-    from navcore.papers import atc10_jamming_mc as mc
+    from navcore.detection import jamming_monte_carlo as mc
 
     return mc.simulate_window_declarations()
 
@@ -1785,7 +1785,7 @@ def atc10_mc_window_pf_hi() -> float:
 def atc10_14_detection_t13_min() -> float:
     """Smallest simulated first-stage detection rate over the jammer grid for K = 3 lists, the
     rule 'more than K t non-empty' with t = 1/3, designed by (2.4.2) for P_DL = 0.9."""
-    from navcore.papers import atc10_jamming_mc as mc
+    from navcore.detection import jamming_monte_carlo as mc
 
     return float(next(r for r in mc.simulate() if r.k == 3 and r.t > 0).detection.min())
 
