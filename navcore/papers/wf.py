@@ -20,6 +20,7 @@ import numpy as np
 
 from navcore.estimation.federated import (
     accelerometer_steady_state_isotropic,
+    correlated_joint_covariance,
     feasible_weights,
     federated_covariance_bound,
     federated_fusion,
@@ -696,15 +697,6 @@ def _eq20_oracle() -> bool:
     return deviation <= IN.mc_sigmas * np.sqrt(2.0 / n)
 
 
-def _random_joint(rng: np.random.Generator, n: int, N: int, rho: float) -> np.ndarray:
-    L = [np.linalg.cholesky(_spd(rng, n)) for _ in range(N)]
-    common = np.vstack(L)
-    J = rho * common @ common.T
-    for i, Li in enumerate(L):
-        J[n * i : n * i + n, n * i : n * i + n] += (1 - rho) * Li @ Li.T
-    return J
-
-
 def _spd(rng: np.random.Generator, n: int) -> np.ndarray:
     A = rng.normal(size=(n, n))
     return A @ A.T + 0.1 * np.eye(n)
@@ -716,7 +708,7 @@ def theorem_margins(cases: int = 200) -> dict[str, float]:
     rng = np.random.default_rng(21)
     eig_margin, first, second = np.inf, np.inf, np.inf
     for _ in range(cases):
-        J = _random_joint(rng, 3, 3, rng.uniform())
+        J = correlated_joint_covariance(rng, 3, 3, rng.uniform())
         Ps = [J[3 * i : 3 * i + 3, 3 * i : 3 * i + 3] for i in range(3)]
         cov = fused_error_covariance(Ps, J)
         k = feasible_weights(Ps, directions=[rng.normal(size=3) for _ in range(3)])
@@ -785,7 +777,7 @@ def theorem_monte_carlo_case(rng: np.random.Generator, N: int, kind: str, sample
     if kind == "generic":
         J = _spd(rng, n * N)
     elif kind == "mixed":
-        J = _random_joint(rng, n, N, rng.uniform())
+        J = correlated_joint_covariance(rng, n, N, rng.uniform())
     elif kind == "complete":
         sig = rng.uniform(0.1, 2.0, N)
         J = np.kron(np.outer(sig, sig), np.eye(n))
