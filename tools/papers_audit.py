@@ -13,9 +13,10 @@ The classification is static and transitive:
 * a function *reads a paper input* when its body names an input set (a module-level
   ``X = InputSet(...)``, an input set imported from another paper module, or ``alias.IN``
   of an imported paper module) or names a function of ``navcore/papers`` that does;
-* a function is a *claim's compute* when it is named inside a ``Claim(...)`` or
-  ``Erratum(...)`` call (``compute=f``, ``compute=lambda: f(...)``) or builds one (its body
-  calls ``Claim``);
+* a function is a *claim's compute* when it is named inside a call that builds a claim:
+  ``Claim(...)``, ``Erratum(...)`` or a function of the module whose body calls ``Claim``
+  (``compute=f``, ``compute=lambda: f(...)``, ``_s("id", ..., f, ...)``), or builds one
+  itself;
 * methods count under their class (``Class.method``); nested functions count with the
   function that holds them.
 
@@ -84,10 +85,10 @@ def _references(node: ast.AST) -> tuple[set[str], set[tuple[str, str]]]:
     return names, attrs
 
 
-def _claim_names(tree: ast.AST) -> set[str]:
+def _claim_names(tree: ast.AST, builders: set[str]) -> set[str]:
     out: set[str] = set()
     for node in ast.walk(tree):
-        if isinstance(node, ast.Call) and _call_name(node) in BUILDERS:
+        if isinstance(node, ast.Call) and _call_name(node) in builders:
             for part in [*node.args, *(k.value for k in node.keywords)]:
                 out |= _references(part)[0]
     return out
@@ -131,7 +132,7 @@ def read_module(path: Path) -> Module:
         fn.names, fn.attrs = _references(node)
         fn.in_claim = any(isinstance(s, ast.Call) and _call_name(s) == "Claim" for s in ast.walk(node))
         mod.functions[name] = fn
-    mod.claim_names = _claim_names(tree)
+    mod.claim_names = _claim_names(tree, BUILDERS | {n for n, f in mod.functions.items() if f.in_claim})
     for fn in mod.functions.values():
         if fn.name in mod.claim_names:
             fn.in_claim = True
