@@ -19,8 +19,10 @@ from navcore._validate import require_in_range
 from navcore.ledger import EXACT, Claim, Erratum, printed
 from navcore.ledger.core import PROSE_WORDS
 from navcore.ledger.inputs import InputSet
+from navcore.location.clock_model import clock_covariance
 from navcore.location.clock_tracking import (
     alpha_parameter,
+    clock_error_variances,
     gain_recursion,
     psi,
     psi_cubic_root,
@@ -254,14 +256,6 @@ def printed_tau_sum_oracle(n: int = 10) -> float:
     return float(v / (s0**2 * (n + n * n)))
 
 
-def _fbm_cov(n: int, s1: float, s2: float, rho: float) -> np.ndarray:
-    k = np.arange(1, n + 1, dtype=float)
-    m, j = np.meshgrid(k, k, indexing="ij")
-    return s1**2 * np.minimum(m, j) + 0.5 * s2**2 * (
-        m ** (2 * rho) + j ** (2 * rho) - np.abs(m - j) ** (2 * rho)
-    )
-
-
 def kalman_vs_constrained(n_epochs: int = 600, runs: int = 300) -> tuple[float, float]:
     """rms clock error over the last 100 epochs: Kalman filter on (4.5.9) vs the constrained tracker.
 
@@ -273,7 +267,7 @@ def kalman_vs_constrained(n_epochs: int = 600, runs: int = 300) -> tuple[float, 
     sigma, s0 = TR.sigma_ns, TR.sigma0_low_ns
     r = sigma**2 / beta
     rng = np.random.default_rng(4592)
-    L = np.linalg.cholesky(_fbm_cov(n_epochs, s0, s0, rho) + 1e-9 * np.eye(n_epochs))
+    L = np.linalg.cholesky(clock_covariance(n_epochs, s0, s0, rho) + 1e-9 * np.eye(n_epochs))
     tau = np.concatenate([np.zeros((runs, 1)), rng.normal(size=(runs, n_epochs)) @ L.T], axis=1)
     z = tau + rng.normal(0.0, math.sqrt(r), tau.shape)
     # Kalman filter on (4.5.9): x = [tau, alpha]
@@ -319,27 +313,14 @@ def one_real_root() -> bool:
     return True
 
 
-def _clock_error_variances(beta: float, sigma: float, s0: float, gains: np.ndarray) -> np.ndarray:
-    """Exact Var(xi_tau_n) for any gain sequence: state (xi, A) with Delta_n = w_n + A."""
-    C = np.array([[sigma**2 / beta, 0.0], [0.0, s0**2]])  # n = 0: least squares, A independent
-    out = [C[0, 0]]
-    for g in gains[1:]:
-        a = 1.0 - g * beta
-        # xi_n = a (xi_{n-1} - w_n - A) + g 1'(I-P) eps_n
-        M = np.array([[a, -a], [0.0, 1.0]])
-        C = M @ C @ M.T + np.array([[a * a * s0**2 + g * g * sigma**2 * beta, 0.0], [0.0, 0.0]])
-        out.append(C[0, 0])
-    return np.array(out)
-
-
 def constant_gain_worse() -> bool:
     """The steady gamma from n = 1 gives larger early clock-error variances than the optimal gamma_n."""
     for ex, s0 in _cases():
         beta, sigma = _ex(ex)["beta"], TR.sigma_ns
         h = gain_recursion(beta, sigma, s0, 10)
         fixed = np.full_like(h.gamma, float(psi(alpha_parameter(s0, sigma, beta))) / beta)
-        v_opt = _clock_error_variances(beta, sigma, s0, h.gamma)
-        v_fix = _clock_error_variances(beta, sigma, s0, fixed)
+        v_opt = clock_error_variances(beta, sigma, s0, h.gamma)
+        v_fix = clock_error_variances(beta, sigma, s0, fixed)
         if not (v_fix[1] > v_opt[1] and np.mean(v_fix[1:6]) >= np.mean(v_opt[1:6]) * (1 - 1e-2)):
             return False
         if not np.allclose(v_opt[1:], sigma**2 * h.gamma[1:], rtol=1e-6):
@@ -530,9 +511,13 @@ def crossover_100_helps() -> bool:
     # the two components of (4.3.1c), sigma1^2 n and sigma2^2 n^2, are equal at n = sigma1^2 / sigma2^2
     epochs, horizon = 60, 30  # both clocks tracked over the same epochs and extrapolated as far
     late = _extrapolation_error(
-        lambda n: _fbm_cov(n, s0, s0 / math.sqrt(IN.sec47_crossover_n), rho), beta, sigma, epochs, horizon
+        lambda n: clock_covariance(n, s0, s0 / math.sqrt(IN.sec47_crossover_n), rho),
+        beta,
+        sigma,
+        epochs,
+        horizon,
     )
-    early = _extrapolation_error(lambda n: _fbm_cov(n, s0, s0, rho), beta, sigma, epochs, horizon)
+    early = _extrapolation_error(lambda n: clock_covariance(n, s0, s0, rho), beta, sigma, epochs, horizon)
     return late < early
 
 
