@@ -3555,10 +3555,11 @@ def atc10_22_psk_pf() -> float:
     """The smallest false-alarm probability over the thresholds whose detection probability is at
     least 0.9, on the stratified Monte Carlo ROC of a matched filter in multiple-access noise of
     the simulated PSK signatures (ATC-10 Sec. 3.6-3.8, N = 1e5)."""
+    from navcore.detection.roc_bounds import best_pf_at_pd
     from navcore.papers import atc10_multiple_access as pm
 
     roc = pm.psk_roc()
-    return float(pm.best_pf_at_pd(roc.p_f, roc.p_miss, 0.9))
+    return float(best_pf_at_pd(roc.p_f, roc.p_miss, 0.9))
 
 
 @register(
@@ -3571,10 +3572,11 @@ def atc10_22_psk_pf_estimate() -> str:
     standard error at the same threshold, as the book shows an estimate
     (:func:`navcore.book.estimate_text`)."""
     from navcore.book import estimate_text
+    from navcore.detection.roc_bounds import best_pf_index_at_pd
     from navcore.papers import atc10_multiple_access as pm
 
     roc = pm.psk_roc()
-    j = pm.best_pf_index_at_pd(roc.p_f, roc.p_miss, 0.9)
+    j = best_pf_index_at_pd(roc.p_f, roc.p_miss, 0.9)
     if j is None:
         raise ValueError("the simulated PSK set reaches p_d = 0.9 at no threshold")
     return estimate_text(float(roc.p_f[j]), float(roc.p_f_se[j]))
