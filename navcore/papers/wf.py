@@ -47,6 +47,7 @@ from navcore.location.emitter import (
     doppler_gradient_velocity,
     doppler_jacobian_emitter,
     emitter_gauss_newton,
+    level_turn_track,
     linearized_location_error,
     location_error_covariance,
     position_sensitivity_bound,
@@ -382,22 +383,10 @@ DOCS = {
 }
 
 
-def track(
-    speed: float, altitude: float, M: int, turn_rate_deg: float, duration: float
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Times, positions and velocities of a ``turn_rate_deg`` turn flown for ``duration`` s."""
-    t = np.linspace(0.0, duration, M)
-    w = np.deg2rad(turn_rate_deg)
-    radius = speed / w
-    pos = np.column_stack([radius * np.sin(w * t), radius * (1 - np.cos(w * t)), np.full(M, altitude)])
-    vel = np.column_stack([speed * np.cos(w * t), speed * np.sin(w * t), np.zeros(M)])
-    return t, pos, vel
-
-
 def orbit(M: int = N_SAMPLES) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Times, positions and velocities of the test geometry: a turn at 8 km, 200 m/s, at the assumed
     turn rate (2 deg/s) for the assumed aperture duration (120 s)."""
-    return track(SPEED, ALTITUDE, M, IN.turn_rate_deg_s, IN.aperture_duration_s)
+    return level_turn_track(SPEED, ALTITUDE, M, IN.turn_rate_deg_s, IN.aperture_duration_s)
 
 
 #: Samples along the Sec. III scenario track: a numerical resolution, not an input (the claims
@@ -409,7 +398,7 @@ SCENARIO_SAMPLES = 2001
 def scenario_track(M: int = SCENARIO_SAMPLES) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The Sec. III scenario track: a turn at the assumed rate, speed and altitude, for the assumed
     aperture duration."""
-    return track(IN.speed_mps, IN.altitude_m, M, IN.turn_rate_deg_s, IN.aperture_duration_s)
+    return level_turn_track(IN.speed_mps, IN.altitude_m, M, IN.turn_rate_deg_s, IN.aperture_duration_s)
 
 
 def scenario_emitter() -> np.ndarray:
