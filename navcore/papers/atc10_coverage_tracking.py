@@ -20,6 +20,7 @@ from navcore.ledger.core import PROSE_WORDS
 from navcore.ledger.inputs import InputSet
 from navcore.location.clock_model import (
     clock_covariance,
+    clock_prediction_variance,
     mandelbrot_van_ness_constant,
     mandelbrot_van_ness_constant_integral,
 )
@@ -498,14 +499,6 @@ def fig_shape() -> bool:
     return True
 
 
-def _extrapolation_error(cov_fun, beta: float, sigma: float, n_last: int, m: int) -> float:
-    """LMMSE error variance of tau_{N+m} from z_n = tau_n + v_n (n = 1..N), Var v = sigma^2/beta."""
-    C = cov_fun(n_last + m)
-    Czz = C[:n_last, :n_last] + sigma**2 / beta * np.eye(n_last)
-    c = C[:n_last, n_last + m - 1]
-    return float(C[n_last + m - 1, n_last + m - 1] - c @ np.linalg.solve(Czz, c))
-
-
 def crossover_100_helps() -> bool:
     """Sec. 4.7: if the 1/f term equals the random walk only at n = 100 (sigma2^2 = sigma1^2/100),
     the 3-satellite extrapolation error after 30 s is smaller than with the crossover at n = 1."""
@@ -513,14 +506,12 @@ def crossover_100_helps() -> bool:
     beta, sigma, s0 = _ex("I")["beta"], TR.sigma_ns, TR.sigma0_low_ns
     # the two components of (4.3.1c), sigma1^2 n and sigma2^2 n^2, are equal at n = sigma1^2 / sigma2^2
     epochs, horizon = 60, 30  # both clocks tracked over the same epochs and extrapolated as far
-    late = _extrapolation_error(
-        lambda n: clock_covariance(n, s0, s0 / math.sqrt(IN.sec47_crossover_n), rho),
-        beta,
-        sigma,
-        epochs,
-        horizon,
+    # the 3-satellite clock observations have the noise variance sigma^2 / beta
+    n = epochs + horizon
+    late = clock_prediction_variance(
+        clock_covariance(n, s0, s0 / math.sqrt(IN.sec47_crossover_n), rho), sigma**2 / beta, epochs
     )
-    early = _extrapolation_error(lambda n: clock_covariance(n, s0, s0, rho), beta, sigma, epochs, horizon)
+    early = clock_prediction_variance(clock_covariance(n, s0, s0, rho), sigma**2 / beta, epochs)
     return late < early
 
 
