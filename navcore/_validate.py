@@ -863,9 +863,11 @@ RESULT_RECORDS = frozenset(
         "CovarianceAnalysis",
         "CovarianceHistory",
         "DilutionOfPrecision",
+        "FalseTrackRates",
         "ConstellationParameters",
         "GainHistory",
         "GaussNewtonResult",
+        "ListRates",
         "MechanizationTerms",
         "MonteCarloResult",
         "NavState",
@@ -876,6 +878,7 @@ RESULT_RECORDS = frozenset(
         "TailBound",
         "Trajectory",
         "TrackerMonteCarlo",
+        "WindowRates",
     }
 )
 

@@ -1700,7 +1700,7 @@ def atc10_13_2ft_rf_w() -> float:
 
 
 def _atc10_window_rates() -> Any:
-    from navcore.papers import atc10_jamming_mc as mc
+    from navcore.detection import jamming_monte_carlo as mc
 
     return mc.simulate_window_declarations()
 
@@ -1785,7 +1785,7 @@ def atc10_mc_window_pf_hi() -> float:
 def atc10_14_detection_t13_min() -> float:
     """Smallest simulated first-stage detection rate over the jammer grid for K = 3 lists, the
     rule 'more than K t non-empty' with t = 1/3, designed by (2.4.2) for P_DL = 0.9."""
-    from navcore.papers import atc10_jamming_mc as mc
+    from navcore.detection import jamming_monte_carlo as mc
 
     return float(next(r for r in mc.simulate() if r.k == 3 and r.t > 0).detection.min())
 
@@ -3555,10 +3555,11 @@ def atc10_22_psk_pf() -> float:
     """The smallest false-alarm probability over the thresholds whose detection probability is at
     least 0.9, on the stratified Monte Carlo ROC of a matched filter in multiple-access noise of
     the simulated PSK signatures (ATC-10 Sec. 3.6-3.8, N = 1e5)."""
+    from navcore.detection.roc_bounds import best_pf_at_pd
     from navcore.papers import atc10_multiple_access as pm
 
     roc = pm.psk_roc()
-    return float(pm.best_pf_at_pd(roc.p_f, roc.p_miss, 0.9))
+    return float(best_pf_at_pd(roc.p_f, roc.p_miss, 0.9))
 
 
 @register(
@@ -3571,10 +3572,11 @@ def atc10_22_psk_pf_estimate() -> str:
     standard error at the same threshold, as the book shows an estimate
     (:func:`navcore.book.estimate_text`)."""
     from navcore.book import estimate_text
+    from navcore.detection.roc_bounds import best_pf_index_at_pd
     from navcore.papers import atc10_multiple_access as pm
 
     roc = pm.psk_roc()
-    j = pm.best_pf_index_at_pd(roc.p_f, roc.p_miss, 0.9)
+    j = best_pf_index_at_pd(roc.p_f, roc.p_miss, 0.9)
     if j is None:
         raise ValueError("the simulated PSK set reaches p_d = 0.9 at no threshold")
     return estimate_text(float(roc.p_f[j]), float(roc.p_f_se[j]))

@@ -136,7 +136,7 @@ def _atc10_mc_lists(data: Data) -> None:
     simulated false-alarm rate does not decrease as the jammer grows (beyond 4 standard
     errors). The false-alarm bound F^(Kt+1) is an approximation the figure tests, not an upper
     bound on the simulation, so it is only recomputed."""
-    from navcore.papers import atc10_jamming_mc as mc
+    from navcore.detection import jamming_monte_carlo as mc
 
     fa, det = data
     bounds = [s for s in lines(fa) if s.label.endswith(" bound")]

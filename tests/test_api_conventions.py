@@ -289,6 +289,16 @@ REGISTRY: dict[str, tuple[Callable[[], dict[str, Any]], dict[str, str]]] = {
         },
         {"mask": VERTICAL},
     ),
+    "gnss.dop.satellite_priority": (
+        lambda: {
+            "r_sat": 2.6e7 * np.vstack([[1, 0, 0], 0.6 + 0.4 * np.eye(3)]),
+            "lat": 0.1,
+            "lon": 0.1,
+            "h": 0.0,
+            "mask": 0.1,
+        },
+        {"lat": LATITUDE, "lon": LONGITUDE, "mask": VERTICAL},
+    ),
     "location.multilateration.position_on_sphere": (
         lambda: {"lat": 0.5, "lon": 0.1, "radius": 1.0},
         {"lat": LATITUDE, "lon": LONGITUDE},

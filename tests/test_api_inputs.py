@@ -54,6 +54,8 @@ RESULT_RECORDS = _validate.RESULT_RECORDS | {"KalmanUpdate", "ScalarSteadyState"
 MAY_RETURN_NAN: dict[str, str] = {
     "straight_track_crossing_times": "no entry or exit time where the track never comes within the "
     "threshold range (a threshold below the closest approach is a valid question)",
+    "best_pf_at_pd": "no threshold of the tabulated ROC reaches the required detection probability "
+    "(a valid question whose answer is 'none')",
 }
 
 MAY_RETURN_INF: set[str] = {

@@ -9,6 +9,7 @@ import math
 import numpy as np
 import pytest
 
+from navcore.location.clock_model import clock_covariance
 from navcore.papers import atc10_coverage_tracking as cov
 from navcore.papers import atc10_tracking as trk
 from navcore.papers import kzl_coverage as kzl
@@ -47,7 +48,7 @@ def test_kalman_against_constrained_tracker_matches_their_exact_error_variances(
     sigma, s0 = cov.TR.sigma_ns, cov.TR.sigma0_low_ns
     r = sigma**2 / beta
     C = np.zeros((n_epochs + 1, n_epochs + 1))  # tau_0 = 0, then the clock's covariance
-    C[1:, 1:] = cov._fbm_cov(n_epochs, s0, s0, rho) + 1e-9 * np.eye(n_epochs)
+    C[1:, 1:] = clock_covariance(n_epochs, s0, s0, rho) + 1e-9 * np.eye(n_epochs)
     # the two estimators as matrices: row n holds the weights of z_0..z_n (impulse responses)
     T = np.array([[2.0, 1.0], [-1.0, 0.0]])
     Q = s0**2 * np.array([[1.0, -1.0], [-1.0, 1.0]])

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pytest
 
@@ -130,3 +132,34 @@ def test_sample_paths_pure_frequency_offset_and_default_exponent():
         sample_clock_paths(5, 4, 0.7, 0.4, seed=9), sample_clock_paths(5, 4, 0.7, 0.4, 1.0, seed=9)
     )
     assert sample_clock_paths(5, 1, 0.7, 0.4, seed=9).shape == (1, 5)  # a single path is valid
+
+
+@pytest.mark.parametrize(("n_observed", "ahead"), [(1, 1), (5, 3), (20, 10)])
+def test_clock_prediction_variance_is_the_kalman_prediction_of_a_random_walk(n_observed, ahead):
+    """Oracle: for a random walk (sigma2 = 0) the best linear predictor is the scalar Kalman
+    filter: filter the n_observed observations, then add one step variance per epoch ahead."""
+    from navcore.location.clock_model import clock_prediction_variance
+
+    q, r = 2.0, 3.0
+    p = 0.0  # tau_0 = 0 is known
+    for _ in range(n_observed):
+        p += q
+        p = p * r / (p + r)
+    want = p + ahead * q
+    C = clock_covariance(n_observed + ahead, math.sqrt(q), 0.0)
+    assert clock_prediction_variance(C, r, n_observed) == pytest.approx(want, rel=1e-12)
+
+
+def test_clock_prediction_variance_rejects_bad_arguments():
+    from navcore.location.clock_model import clock_prediction_variance
+
+    C = clock_covariance(4, 1.0, 1.0, 0.8)
+    for args, name in (
+        ((C, 0.0, 2), "noise_variance"),
+        ((C, 1.0, 4), "n_observed"),
+        ((C, 1.0, 0), "n_observed"),
+        ((-C, 1.0, 2), "covariance"),
+        ((C[:3], 1.0, 2), "covariance"),
+    ):
+        with pytest.raises(ValueError, match=name):
+            clock_prediction_variance(*args)

@@ -11,6 +11,7 @@ import sympy as sp
 from navcore.location.clock_tracking import (
     GainHistory,
     alpha_parameter,
+    clock_error_variances,
     convergence_steps,
     convergence_steps_geometric,
     gain_recursion,
@@ -98,6 +99,50 @@ def test_recursion_vs_brute_force_covariance():
         row[k - 1] -= a
         row[n + k] += h.gamma[k]
         assert row @ cov @ row == pytest.approx(sigma**2 * h.gamma[k], rel=1e-10)
+
+
+@pytest.mark.parametrize("gains", ["optimal", "fixed", "random"])
+def test_clock_error_variances_vs_brute_force_covariance(gains):
+    """Oracle: the tracking error as an explicit linear map of all noise (as above), for the
+    optimal gains, a fixed gain and random gains; with the optimal gains it is sigma^2 gamma_n."""
+    beta, sigma, sigma0, n = 0.05, 50.0, 20.0, 12
+    h = gain_recursion(beta, sigma, sigma0, n)
+    g = {
+        "optimal": h.gamma,
+        "fixed": np.full(n + 1, h.gamma[-1]),
+        "random": np.random.default_rng(3).uniform(0.0, 2.0 / beta, n + 1),
+    }[gains]
+    got = clock_error_variances(beta, sigma, sigma0, g)
+    cov = np.zeros((2 * n + 1, 2 * n + 1))
+    cov[:n, :n] = sigma0**2 * (np.ones((n, n)) + np.eye(n))
+    cov[n:, n:] = sigma**2 * beta * np.eye(n + 1)
+    row = np.zeros(2 * n + 1)
+    row[n] = 1.0 / beta
+    assert got[0] == pytest.approx(sigma**2 / beta, rel=1e-12)
+    for k in range(1, n + 1):
+        a = 1.0 - g[k] * beta
+        row = a * row
+        row[k - 1] -= a
+        row[n + k] += g[k]
+        assert got[k] == pytest.approx(row @ cov @ row, rel=1e-10)
+    if gains == "optimal":
+        np.testing.assert_allclose(got, sigma**2 * h.gamma, rtol=1e-10)
+
+
+@pytest.mark.parametrize(
+    ("args", "name"),
+    [
+        ((0.0, 50.0, 5.0, [1.0]), "beta"),
+        ((0.5, -1.0, 5.0, [1.0]), "sigma"),
+        ((0.5, 50.0, -5.0, [1.0]), "sigma0"),
+        ((0.5, 50.0, 5.0, []), "gains"),
+        ((0.5, 50.0, 5.0, [[1.0]]), "gains"),
+        ((0.5, 50.0, 5.0, [1.0, np.nan]), "gains"),
+    ],
+)
+def test_clock_error_variances_rejects_bad_arguments(args, name):
+    with pytest.raises(ValueError, match=name):
+        clock_error_variances(*args)
 
 
 def test_convergence_estimate_vs_geometric():

@@ -129,3 +129,40 @@ def test_positions_are_not_lines_of_sight():
         dop_from_lines_of_sight(sats / np.linalg.norm(sats, axis=1)[:, None], weights=-np.ones(6))
     with pytest.raises(ValueError, match="mask must be an elevation"):
         dilution_of_precision(geodetic_to_ecef(0.0, 0.0, 0.0), sats, mask=15.0)
+
+
+def test_satellite_priority_orders_the_visible_satellites_greedily():
+    """Oracle: elevations from pymap3d (an independent geodesy library): the list holds exactly
+    the satellites at or above the mask, highest first; each later satellite maximises
+    det(G'G + 1e-3 I) of the chosen ones, by brute force over the remaining ones (determinants,
+    not log-determinants); degrees and radians give one order."""
+    from navcore.gnss.dop import satellite_priority
+
+    lat, lon, h, mask = 35.0, -100.0, 300.0, 10.0
+    sats = nominal_gps_constellation().positions_ecef(0.0)
+    order = satellite_priority(sats, lat, lon, h, mask=mask, deg=True)
+    _, el, _ = pymap3d.ecef2aer(sats[:, 0], sats[:, 1], sats[:, 2], lat, lon, h)
+    assert sorted(order.tolist()) == np.flatnonzero(el >= mask).tolist()
+    assert order[0] == int(np.argmax(np.where(el >= mask, el, -90.0)))
+    r = geodetic_to_ecef(lat, lon, h, deg=True)
+    u = (sats - r) / np.linalg.norm(sats - r, axis=1, keepdims=True)
+    G = np.hstack([-u, np.ones((len(sats), 1))])
+    for k in range(1, len(order)):
+        dets = {
+            c: np.linalg.det(G[[*order[:k], c]].T @ G[[*order[:k], c]] + 1e-3 * np.eye(4)) for c in order[k:]
+        }
+        assert order[k] == max(dets, key=dets.get)
+    same = satellite_priority(sats, math.radians(lat), math.radians(lon), h, mask=math.radians(mask))
+    assert same.tolist() == order.tolist()
+
+
+def test_satellite_priority_rejects_bad_arguments():
+    from navcore.gnss.dop import satellite_priority
+
+    sats = nominal_gps_constellation().positions_ecef(0.0)
+    with pytest.raises(ValueError, match="r_sat"):
+        satellite_priority(sats[:, :2], 0.5, 0.1, 0.0)
+    with pytest.raises(ValueError, match="lat"):
+        satellite_priority(sats, 2.0, 0.1, 0.0)
+    with pytest.raises(ValueError, match="mask"):
+        satellite_priority(sats, 0.5, 0.1, 0.0, mask=100.0, deg=True)

@@ -258,3 +258,43 @@ def test_track_and_emitter_shapes_are_checked():
         doppler_frequency(F0, EMITTER, np.zeros((4, 2)), np.ones((4, 3)))
     with pytest.raises(ValueError, match="emitter"):
         doppler_frequency(F0, EMITTER[None, :], np.zeros((4, 3)), np.ones((4, 3)))
+
+
+def test_level_turn_track_is_a_circle_flown_at_constant_speed():
+    """Oracle: geometry of the turn: every position lies on the circle of radius v/omega about
+    (0, r, h), the speed is v throughout, the velocity is tangent to the circle, and the heading
+    advances by omega t (the velocity's angle, from atan2)."""
+    from navcore.location.emitter import level_turn_track
+
+    v, h, rate, duration = 150.0, 5000.0, -3.0, 100.0
+    t, p, vel = level_turn_track(v, h, 51, rate, duration)
+    w = np.deg2rad(rate)
+    r = v / w
+    centre = np.array([0.0, r, h])
+    assert np.allclose(np.linalg.norm(p - centre, axis=1), abs(r), rtol=1e-12)
+    assert np.allclose(np.linalg.norm(vel, axis=1), v, rtol=1e-12)
+    assert np.allclose(np.sum((p - centre) * vel, axis=1), 0.0, atol=1e-6)
+    heading = np.unwrap(np.arctan2(vel[:, 1], vel[:, 0]))
+    assert np.allclose(heading, w * t, atol=1e-12)
+    assert np.allclose(t, np.linspace(0.0, duration, 51)) and np.all(p[:, 2] == h)
+    # the positions are the integral of the velocities (trapezoid rule, fine sampling)
+    t, p, vel = level_turn_track(v, h, 20001, rate, duration)
+    integral = np.concatenate([[0.0], np.cumsum(0.5 * (vel[1:, 1] + vel[:-1, 1]) * np.diff(t))])
+    assert np.allclose(p[:, 1], integral, atol=1e-3)
+
+
+@pytest.mark.parametrize(
+    ("args", "name"),
+    [
+        ((0.0, 1.0, 5, 2.0, 10.0), "speed"),
+        ((100.0, np.nan, 5, 2.0, 10.0), "altitude"),
+        ((100.0, 1.0, 1, 2.0, 10.0), "n_samples"),
+        ((100.0, 1.0, 5, 0.0, 10.0), "turn_rate_deg_s"),
+        ((100.0, 1.0, 5, 2.0, -1.0), "duration"),
+    ],
+)
+def test_level_turn_track_rejects_bad_arguments(args, name):
+    from navcore.location.emitter import level_turn_track
+
+    with pytest.raises(ValueError, match=name):
+        level_turn_track(*args)

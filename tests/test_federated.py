@@ -12,6 +12,7 @@ from navcore.estimation.federated import (
     accelerometer_predict,
     accelerometer_steady_state,
     accelerometer_steady_state_isotropic,
+    correlated_joint_covariance,
     feasible_weights,
     federated_covariance_bound,
     federated_fusion,
@@ -151,14 +152,41 @@ def test_fused_covariance_monte_carlo():
     np.testing.assert_allclose(fused_error_covariance(Ps, J), np.cov(fused.T), rtol=0.03, atol=0.01)
 
 
-def _random_joint(rng, n, N, rho):
-    """Joint covariance with correlation rho between estimators (common + independent parts)."""
-    L = [np.linalg.cholesky(_spd(rng, n)) for _ in range(N)]
-    common = np.vstack(L)
-    J = rho * common @ common.T
-    for i, Li in enumerate(L):
-        J[n * i : n * i + n, n * i : n * i + n] += (1 - rho) * Li @ Li.T
-    return J
+def test_correlated_joint_covariance_blocks():
+    """Oracle: the construction written out with the same draws: A_i, L_i = chol(A_i A_i' + 0.1 I),
+    blocks J_ii = L_i L_i' and J_ij = rho L_i L_j'; and a sample covariance of errors built as
+    e_i = L_i (sqrt(rho) w + sqrt(1 - rho) u_i) matches J."""
+    rho, n, N = 0.3, 2, 3
+    J = correlated_joint_covariance(np.random.default_rng(4), n, N, rho)
+    rng = np.random.default_rng(4)
+    L = []
+    for _ in range(N):
+        A = rng.normal(size=(n, n))
+        L.append(np.linalg.cholesky(A @ A.T + 0.1 * np.eye(n)))
+    for i in range(N):
+        for j in range(N):
+            block = L[i] @ L[j].T * (1.0 if i == j else rho)
+            np.testing.assert_allclose(J[n * i : n * i + n, n * j : n * j + n], block, rtol=1e-12, atol=1e-14)
+    draws = np.random.default_rng(5)
+    w = draws.normal(size=(200_000, n))
+    e = np.hstack([(np.sqrt(rho) * w + np.sqrt(1 - rho) * draws.normal(size=w.shape)) @ Li.T for Li in L])
+    np.testing.assert_allclose(np.cov(e.T), J, atol=0.02 * np.max(np.abs(J)))
+
+
+@pytest.mark.parametrize(
+    ("args", "name"),
+    [
+        ((0, 2, 0.5), "n_states"),
+        ((2, 0, 0.5), "n_estimators"),
+        ((2, 2, 1.5), "rho"),
+        ((100, 100, 0.5), "n_states"),
+    ],
+)
+def test_correlated_joint_covariance_rejects_bad_arguments(args, name):
+    with pytest.raises(ValueError, match=name):
+        correlated_joint_covariance(np.random.default_rng(0), *args)
+    with pytest.raises(TypeError, match="rng"):
+        correlated_joint_covariance(0, 2, 2, 0.5)
 
 
 @settings(max_examples=50, deadline=None)
@@ -166,7 +194,7 @@ def _random_joint(rng, n, N, rho):
 def test_theorem_bound_holds(seed, n, N, rho):
     """Oracle: WF Eq. (20) exact covariance vs the bound (21) and the trace chain (23), any correlation."""
     rng = np.random.default_rng(seed)
-    J = _random_joint(rng, n, N, rho)
+    J = correlated_joint_covariance(rng, n, N, rho)
     Ps = [J[n * i : n * i + n, n * i : n * i + n] for i in range(N)]
     cov = fused_error_covariance(Ps, J)
     z = [rng.normal(size=n) + 1e-3 for _ in range(N)]

@@ -24,9 +24,10 @@ call to one of:
   registry's tests, so a re-implementation of the count would only repeat them;
 - **a setting**: the glued expression is a simulation setting (a seed, a number of draws or
   trials) that the page itself assigns from a number literal (``seed, draws = 20260101,
-  400_000``), or that a paper module assigns so at its top level and the page reads by its
-  upper-case name (``mc.WINDOW_TRIALS``, or one point ``mc.WINDOW_PF[0]`` of a grid of number
-  literals), at most converted by ``int``, ``float`` or ``str`` or
+  400_000``), or that a navcore module (a paper or a model) assigns so at its top level and
+  the page reads by its upper-case name (``mc.WINDOW_TRIALS``, or one point
+  ``mc.WINDOW_PF[0]`` of a grid of number literals), at most converted by ``int``, ``float``
+  or ``str`` or
   formatted (``f"{draws:,}"``, a ``.replace`` of that text). Nothing computes it: it is the
   book's choice, printed so that a reader can repeat the run, and an oracle would only read the
   same literal twice;
@@ -134,8 +135,8 @@ def page_settings(page: str) -> frozenset[str]:
 
 @cache
 def _module_settings(module: str) -> frozenset[str]:
-    """Upper-case names a ``navcore.papers`` module assigns at its top level from a number literal."""
-    path = ROOT / "navcore" / "papers" / f"{module}.py"
+    """Upper-case names a navcore module (dotted name) assigns at its top level from a number literal."""
+    path = ROOT.joinpath(*module.split(".")).with_suffix(".py")
     if not path.exists():
         return frozenset()
     tree = ast.parse(path.read_text(encoding="utf-8"))
@@ -158,14 +159,15 @@ def _is_number_list(node: ast.expr) -> bool:
 
 @cache
 def _paper_aliases(page: str) -> dict[str, str]:
-    """The page's aliases of ``navcore.papers`` modules (``from navcore.papers import x as mc``)."""
+    """The page's aliases of navcore modules (``from navcore.detection import x as mc``), each
+    to its dotted name: a paper module or a model module whose settings a page glues."""
     out = {}
     text = (BOOK / f"{page}.md").read_text(encoding="utf-8")
     for m in _CELL.finditer(text):
         for node in ast.walk(ast.parse(_cell_source(m.group(1)))):
-            if isinstance(node, ast.ImportFrom) and node.module == "navcore.papers":
+            if isinstance(node, ast.ImportFrom) and (node.module or "").startswith("navcore."):
                 for alias in node.names:
-                    out[alias.asname or alias.name] = alias.name
+                    out[alias.asname or alias.name] = f"{node.module}.{alias.name}"
     return out
 
 
@@ -470,7 +472,9 @@ def test_setting_classification(source, kind, monkeypatch):
     """Settings on hand-written calls: the page's literal settings ``seed`` and ``draws``, and a
     paper module's upper-case number constant read through the page's alias ``mc``."""
     monkeypatch.setattr(sys.modules[__name__], "page_settings", lambda page: frozenset({"seed", "draws"}))
-    monkeypatch.setattr(sys.modules[__name__], "_paper_aliases", lambda page: {"mc": "atc10_jamming_mc"})
+    monkeypatch.setattr(
+        sys.modules[__name__], "_paper_aliases", lambda page: {"mc": "navcore.detection.jamming_monte_carlo"}
+    )
     call = ast.parse(source).body[0].value
     assert isinstance(call, ast.Call)
     assert _kind("sp/03-residual-acceleration", "x", call.args[1]) == kind

@@ -3542,7 +3542,7 @@ def _atc10_t13_detection() -> tuple[float, float]:
     detection cannot fall as the jammer grows (the signature's test, n > -Phi^-1(p_d), does not
     depend on d; the noise declarations only grow), so the simulated minimum is the rate at the
     lowest ratio. Band: 4 binomial standard errors of the 1000 trials plus 1.5 times the noise bound."""
-    from navcore.papers import atc10_jamming_mc as mc
+    from navcore.detection import jamming_monte_carlo as mc
 
     k, t, p_dl = 3, 1 / 3, 0.9
     q = optimize.brentq(

@@ -46,3 +46,30 @@ def test_longer_averaging_gives_smaller_errors():
     lo, hi = IN.input("init_time_s").low, IN.input("init_time_s").high
     short, nominal, long = (kc.standalone_sigma("velocity", True, t)[0] for t in (lo, IN.init_time_s, hi))
     assert short > nominal > long
+
+
+@pytest.mark.parametrize("mode", ["tc", "tc_att", "tc_dd"])
+def test_heading_observability_is_the_row_space_test(mode):
+    """Oracle: the heading's unit vector e lies in the row space of the observability matrix
+    [H; HF; ...; HF^16] exactly when the least-squares residual of e against those rows (each
+    normalised) is zero; ``heading_observable`` decides it from two observability ranks."""
+    from navcore.inertial.error_model17 import ERROR_LAYOUT_17
+    from navcore.papers import kzl_models as km
+
+    for nu in (2, 4, 8):
+        F, C, los = km.table1_F(), km.table1_attitude(), km.table1_los(nu)
+        if mode == "tc":
+            H = km.code_doppler_rows(los)
+        elif mode == "tc_att":
+            H = km.tc_attitude_observation_matrix(los, C, 0.0, 0.0)
+        else:
+            H = km.tc_dd_observation_matrix(los, C, km.table1_baselines_b())
+        rows = [np.atleast_2d(H) @ np.linalg.matrix_power(F, k) for k in range(F.shape[0])]
+        O_ = np.vstack(rows)
+        O_ = O_[np.linalg.norm(O_, axis=1) > 0]
+        O_ = O_ / np.linalg.norm(O_, axis=1)[:, None]
+        e = np.zeros(F.shape[0])
+        e[ERROR_LAYOUT_17.slice("misalignment").start + 2] = 1.0
+        c = np.linalg.lstsq(O_.T, e, rcond=1e-9)[0]
+        in_row_space = np.linalg.norm(O_.T @ c - e) < 1e-6
+        assert km.heading_observable(mode, nu) == in_row_space, (mode, nu)

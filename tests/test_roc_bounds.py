@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import itertools
+import math
 
 import numpy as np
 import pytest
@@ -301,3 +302,38 @@ def test_thresholds_beyond_the_support_give_empty_tails():
     assert lg[1] == -np.inf and r1[1] == np.inf
     scalar = gallager_log_tail_lower(noise, 0.5)
     np.testing.assert_allclose([lg[0], r1[0]], [scalar.log_p, scalar.parameter], rtol=ulps, atol=0)
+
+
+def test_best_pf_at_pd_is_the_brute_force_operating_point():
+    """Oracle: a loop over the thresholds keeping the smallest p_f among those whose p_d reaches
+    the requirement, on random ROCs; and NaN (index None) when none reaches it."""
+    from navcore.detection.roc_bounds import best_pf_at_pd, best_pf_index_at_pd
+
+    rng = np.random.default_rng(11)
+    for _ in range(50):
+        pf, miss = rng.uniform(size=12), rng.uniform(size=12)
+        pd_min = float(rng.uniform(0.3, 0.95))
+        best, best_j = math.inf, None
+        for j in range(12):
+            if miss[j] <= 1.0 - pd_min and pf[j] < best:
+                best, best_j = pf[j], j
+        assert best_pf_index_at_pd(pf, miss, pd_min) == best_j
+        got = best_pf_at_pd(pf, miss, pd_min)
+        assert (best_j is None and math.isnan(got)) or got == best
+
+
+@pytest.mark.parametrize(
+    ("args", "name"),
+    [
+        (([0.1, 1.5], [0.1, 0.1], 0.9), "p_f"),
+        (([0.1, 0.2], [0.1, -0.1], 0.9), "p_miss"),
+        (([0.1, 0.2], [0.1, 0.1], 1.2), "pd_min"),
+        (([0.1, 0.2], [0.1], 0.9), "p_miss"),
+        (([], [], 0.9), "p_f"),
+    ],
+)
+def test_best_pf_at_pd_rejects_bad_arguments(args, name):
+    from navcore.detection.roc_bounds import best_pf_at_pd
+
+    with pytest.raises(ValueError, match=name):
+        best_pf_at_pd(*args)

@@ -12,6 +12,9 @@ neyman_pearson
 
 jamming
     lower bounds on false and ambiguous aircraft locations under barrage jamming.
+jamming_monte_carlo
+    a seeded Monte Carlo of the first stage (lists, the K-list rule, false tracks) against
+    those bounds.
 antenna
     parabolic-dish antenna relations for jammer hardware.
 multiple_access

@@ -21,7 +21,9 @@ return natural logarithms of probabilities, so that exponents of hundreds stay f
   :math:`\mu'(r_1) - \sqrt{2 \mu''(r_1)} = t`.
 * closed forms for the two-point (quasi-optimal) density, Eqs. (3.7.20)-(3.7.27);
 * the Gaussian ROC (3.8.3), its Chernoff bound (3.8.7)-(3.8.9) and
-  :math:`\mathrm{Exp}(N, \tau/\alpha, \mathrm{Exp}_g)` (3.8.16).
+  :math:`\mathrm{Exp}(N, \tau/\alpha, \mathrm{Exp}_g)` (3.8.16);
+* :func:`best_pf_at_pd`: the operating point of a tabulated ROC, the smallest :math:`p_f`
+  among the thresholds that reach a required :math:`p_d` (how Sec. 3.8 compares detectors).
 """
 
 from __future__ import annotations
@@ -33,13 +35,23 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy import special
 
-from navcore._validate import NONNEGATIVE, POSITIVE, Range, check_public, require_positive
+from navcore._validate import (
+    NONNEGATIVE,
+    POSITIVE,
+    Range,
+    as_finite_array,
+    check_public,
+    require_positive,
+    require_probability,
+)
 from navcore.trace import implements
 
 __all__ = [
     "CumulantGenerating",
     "NegatedCGF",
     "TailBound",
+    "best_pf_at_pd",
+    "best_pf_index_at_pd",
     "chernoff_log_tail",
     "chernoff_log_tails",
     "exponent_from_gaussian_exponent",
@@ -559,6 +571,96 @@ def quasi_optimal_exponent_approx(
     return th * np.sqrt(n_aircraft * q / power) * np.arcsinh(u) - n_aircraft * np.log1p(
         q * (np.sqrt(1.0 + u**2) - 1.0)
     )
+
+
+def _roc_points(p_f: ArrayLike, p_miss: ArrayLike, pd_min: float) -> tuple[FloatArray, FloatArray]:
+    """Check a tabulated ROC and a required detection probability at the boundary."""
+    pf = as_finite_array("p_f", p_f, ndim=1)
+    miss = as_finite_array("p_miss", p_miss, ndim=1)
+    if pf.size == 0 or pf.shape != miss.shape:
+        raise ValueError(
+            f"p_f and p_miss must be non-empty and of one length, got {pf.shape} and {miss.shape}"
+        )
+    require_probability("p_f", pf)
+    require_probability("p_miss", miss)
+    require_probability("pd_min", pd_min)
+    return pf, miss
+
+
+def best_pf_index_at_pd(p_f: ArrayLike, p_miss: ArrayLike, pd_min: float) -> int | None:
+    r"""Index of the threshold with the smallest :math:`p_f` among those with :math:`p_d \ge` ``pd_min``.
+
+    A tabulated ROC lists, per threshold, the false-alarm probability :math:`p_f` and the miss
+    probability :math:`1 - p_d`. The operating point for a required detection probability is
+    the threshold that reaches it with the fewest false alarms (ATC-10 Sec. 3.8 compares
+    detectors at :math:`p_d` = 0.9 this way).
+
+    Parameters
+    ----------
+    p_f : array_like
+        False-alarm probability at each threshold, in [0, 1].
+    p_miss : array_like
+        Miss probability :math:`1 - p_d` at each threshold, in [0, 1]; same length.
+    pd_min : float
+        Required detection probability, in [0, 1].
+
+    Returns
+    -------
+    int or None
+        The index, or ``None`` when no threshold reaches ``pd_min``.
+
+    Raises
+    ------
+    ValueError
+        If a probability is outside [0, 1] or the arrays are empty or of different lengths.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Sec. 3.8.
+
+    Examples
+    --------
+    >>> best_pf_index_at_pd([0.3, 0.1, 0.01], [0.01, 0.05, 0.4], 0.9)
+    1
+    >>> best_pf_index_at_pd([0.3, 0.1], [0.2, 0.5], 0.9) is None
+    True
+    """
+    pf, miss = _roc_points(p_f, p_miss, pd_min)
+    ok = np.flatnonzero(miss <= 1.0 - pd_min)
+    return int(ok[np.argmin(pf[ok])]) if ok.size else None
+
+
+def best_pf_at_pd(p_f: ArrayLike, p_miss: ArrayLike, pd_min: float) -> float:
+    r"""The smallest :math:`p_f` over the thresholds with :math:`p_d \ge` ``pd_min``.
+
+    Parameters
+    ----------
+    p_f : array_like
+        False-alarm probability at each threshold, in [0, 1].
+    p_miss : array_like
+        Miss probability :math:`1 - p_d` at each threshold, in [0, 1]; same length.
+    pd_min : float
+        Required detection probability, in [0, 1].
+
+    Returns
+    -------
+    float
+        That :math:`p_f` (the one at :func:`best_pf_index_at_pd`), or NaN when no threshold
+        reaches ``pd_min``.
+
+    Raises
+    ------
+    ValueError
+        As :func:`best_pf_index_at_pd`.
+
+    Examples
+    --------
+    >>> best_pf_at_pd([0.3, 0.1, 0.01], [0.01, 0.05, 0.4], 0.9)
+    0.1
+    """
+    j = best_pf_index_at_pd(p_f, p_miss, pd_min)
+    return float("nan") if j is None else float(np.asarray(p_f, dtype=float)[j])
 
 
 @implements("ATC10 3.8.3")

@@ -24,6 +24,8 @@ Fusion (WF Sec. IV.C)
   theorem (WF Eqs. (21)-(23)), which needs only the local covariances. Any weights
   :math:`k_i > 0` with :math:`\sum_i 1/k_i = 1` give a valid matrix bound; WF Eq. (22) and the
   remark's choice are such weights.
+* :func:`correlated_joint_covariance`: a random joint covariance of correlated local
+  errors (a common and an independent part), on which the theorem can be exercised.
 
 Everything is general: any state dimension, any number of local estimators.
 """
@@ -43,6 +45,8 @@ from navcore._validate import (
     POSITIVE,
     as_finite_array,
     check_public,
+    require_in_range,
+    require_integer,
     require_positive,
     require_symmetric_psd,
 )
@@ -55,6 +59,7 @@ __all__ = [
     "accelerometer_predict",
     "accelerometer_steady_state",
     "accelerometer_steady_state_isotropic",
+    "correlated_joint_covariance",
     "feasible_weights",
     "federated_covariance_bound",
     "federated_fusion",
@@ -820,6 +825,83 @@ def federated_improvement_db(
     n = _state_size(covariances)
     sigma_d = math.sqrt(minkowski_trace_bound(covariances) / n)
     return float(20.0 * math.log10(sigma_d / reference_sigma))
+
+
+#: Largest joint state size ``n_states * n_estimators`` that
+#: :func:`correlated_joint_covariance` draws.
+MAX_JOINT_SIZE = 1000
+
+
+def correlated_joint_covariance(
+    rng: np.random.Generator, n_states: int, n_estimators: int, rho: float
+) -> Array:
+    r"""Draw a joint covariance of ``n_estimators`` correlated local errors of ``n_states`` states.
+
+    Each local covariance is :math:`\mathbf P_i = \mathbf L_i \mathbf L_i^T` with
+    :math:`\mathbf L_i` the Cholesky factor of :math:`\mathbf A_i \mathbf A_i^T + 0.1\,\mathbf I`,
+    :math:`\mathbf A_i` standard normal. The local errors share a common part of weight
+    :math:`\rho`: :math:`\mathbf e_i = \mathbf L_i(\sqrt{\rho}\,\mathbf w +
+    \sqrt{1 - \rho}\,\mathbf u_i)` with :math:`\mathbf w, \mathbf u_i` independent white, so
+    the joint covariance has blocks :math:`\mathbf J_{ii} = \mathbf P_i` and
+    :math:`\mathbf J_{ij} = \rho\,\mathbf L_i \mathbf L_j^T`. :math:`\rho = 0` gives
+    independent local errors and :math:`\rho = 1` completely correlated ones: the family on
+    which the theorem of WF Eqs. (20)-(23) (a bound for *any* correlation) can be exercised.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        Source of the random factors (the draws are :math:`\mathbf A_1, \dots,
+        \mathbf A_N` in order).
+    n_states : int
+        States per local estimator, ``>= 1``.
+    n_estimators : int
+        Number of local estimators, ``>= 1``; ``n_states * n_estimators`` at most
+        ``MAX_JOINT_SIZE``.
+    rho : float
+        Weight of the common part, in [0, 1].
+
+    Returns
+    -------
+    ndarray
+        The joint covariance, shape ``(n_states * n_estimators, n_states * n_estimators)``;
+        block ``i`` of its diagonal is the covariance of estimator ``i``.
+
+    Raises
+    ------
+    TypeError
+        If ``rng`` is not a :class:`numpy.random.Generator`.
+    ValueError
+        If ``n_states`` or ``n_estimators`` is not a positive integer, their product exceeds
+        ``MAX_JOINT_SIZE``, or ``rho`` is outside [0, 1].
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eqs. (20)-(23).
+
+    Examples
+    --------
+    >>> J = correlated_joint_covariance(np.random.default_rng(0), 2, 3, 0.5)
+    >>> J.shape
+    (6, 6)
+    >>> bool(np.linalg.eigvalsh(J)[0] > 0)
+    True
+    """
+    if not isinstance(rng, np.random.Generator):
+        raise TypeError(f"rng must be a numpy.random.Generator, got {type(rng).__name__}")
+    n = require_integer("n_states", n_states, minimum=1)
+    N = require_integer("n_estimators", n_estimators, minimum=1)
+    if n * N > MAX_JOINT_SIZE:
+        raise ValueError(f"n_states * n_estimators must be at most {MAX_JOINT_SIZE}, got {n * N}")
+    require_in_range("rho", rho, 0.0, 1.0)
+    L = []
+    for _ in range(N):
+        A = rng.normal(size=(n, n))
+        L.append(np.linalg.cholesky(A @ A.T + 0.1 * np.eye(n)))
+    common = np.vstack(L)
+    J = rho * common @ common.T
+    for i, Li in enumerate(L):
+        J[n * i : n * i + n, n * i : n * i + n] += (1 - rho) * Li @ Li.T
+    return J
 
 
 # Every public function checks its arguments against their annotations (finite numbers,

@@ -159,7 +159,7 @@ for _n, _q, _k, _p in K_FIGURES:
     "(lines). Triangles: no event in 1000 trials (rate below about 1e-3).",
 )
 def list_rule_monte_carlo() -> Figure:
-    from navcore.papers import atc10_jamming_mc as mc
+    from navcore.detection import jamming_monte_carlo as mc
 
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(9.0, 3.8))
     for i, r in enumerate(mc.simulate()):

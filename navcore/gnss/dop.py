@@ -29,6 +29,9 @@ Eqs. 4.1.2 and 4.6.2, :func:`navcore.location.multilateration.position_dilution`
 unknown emission time plays the role of the receiver clock, and the sign of the lines of
 sight does not matter (the covariance is quadratic in them).
 
+:func:`satellite_priority` orders the visible satellites so that every prefix of the list
+has a good geometry (the order in which a receiver with few channels should track them).
+
 References
 ----------
 .. [1] P. D. Groves (2013), Sec. 9.4.3 (dilution of precision).
@@ -43,10 +46,11 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from navcore._validate import ELEVATION, NONNEGATIVE, check_public
-from navcore.frames import WGS84, Ellipsoid, dcm_ecef_to_ned, ecef_to_geodetic
+from navcore._validate import ELEVATION, LATITUDE, LONGITUDE, NONNEGATIVE, as_finite_array, check_public
+from navcore.frames import WGS84, Ellipsoid, dcm_ecef_to_ned, ecef_to_geodetic, geodetic_to_ecef
+from navcore.gnss.constellation import elevation_azimuth
 
-__all__ = ["DilutionOfPrecision", "dilution_of_precision", "dop_from_lines_of_sight"]
+__all__ = ["DilutionOfPrecision", "dilution_of_precision", "dop_from_lines_of_sight", "satellite_priority"]
 
 Array = NDArray[np.float64]
 
@@ -250,7 +254,83 @@ def dilution_of_precision(
     return _dop(u, w)
 
 
+def satellite_priority(
+    r_sat: ArrayLike, lat: float, lon: float, h: float, *, mask: float = 0.0, deg: bool = False
+) -> NDArray[np.intp]:
+    r"""Indices of the visible satellites in tracking priority, each prefix a good geometry.
+
+    The highest satellite comes first (the master of double differences); then, greedily, the
+    one that most increases :math:`\log\det(G^T G + 10^{-3} I)` of the geometry matrix
+    :math:`G` (rows :math:`[-u_i^T, 1]`) of those already chosen, so that the first four are
+    a well-conditioned fix and each later one adds the most information. The small
+    regularisation ranks the first three, whose :math:`G^T G` is singular.
+
+    Parameters
+    ----------
+    r_sat : (K, 3) array_like
+        Satellite ECEF positions, m.
+    lat, lon : float
+        Receiver geodetic latitude and longitude, rad (deg with ``deg=True``).
+    h : float
+        Receiver height above the ellipsoid, m.
+    mask : float, default 0.0
+        Elevation mask, rad (deg with ``deg=True``): satellites below it are left out.
+    deg : bool, default False
+        ``lat``, ``lon`` and ``mask`` are in degrees.
+
+    Returns
+    -------
+    ndarray of int
+        Indices into ``r_sat`` of the satellites at or above the mask, in priority order.
+
+    Raises
+    ------
+    ValueError
+        If ``r_sat`` is not a finite (K, 3) array or an angle is out of range for its unit.
+
+    References
+    ----------
+    Kaplan & Hegarty, Understanding GPS/GNSS, 3rd ed. (2017), Sec. 11.2.1 (geometry and
+    satellite selection); KZL's Table 1 flight tracks its satellites in this order.
+
+    Examples
+    --------
+    >>> from navcore.gnss.constellation import nominal_gps_constellation
+    >>> sats = nominal_gps_constellation().positions_ecef(0.0)
+    >>> order = satellite_priority(sats, 48.0, 11.0, 500.0, mask=10.0, deg=True)
+    >>> len(order), int(dilution_of_precision(
+    ...     geodetic_to_ecef(48.0, 11.0, 500.0, deg=True), sats[order[:4]]).n_used)
+    (7, 4)
+    """
+    positions = as_finite_array("r_sat", r_sat, ndim=2)
+    if positions.shape[1] != 3:
+        raise ValueError(f"r_sat must have shape (K, 3), got {positions.shape}")
+    if deg:
+        lat, lon, mask = np.radians(lat), np.radians(lon), np.radians(mask)
+    r_user = geodetic_to_ecef(lat, lon, h)
+    el, _ = elevation_azimuth(r_user, positions, lat, lon)
+    vis = np.flatnonzero(el >= mask)
+    d = positions[vis] - r_user
+    u = d / np.linalg.norm(d, axis=1, keepdims=True)
+    G = np.hstack([-u, np.ones((len(vis), 1))])
+    if len(vis) == 0:
+        return vis
+    order = [int(np.argmax(el[vis]))]
+    while len(order) < len(vis):
+        best, best_val = None, -np.inf
+        for c in range(len(vis)):
+            if c in order:
+                continue
+            Gs = G[[*order, c]]
+            val = np.linalg.slogdet(Gs.T @ Gs + 1e-3 * np.eye(4))[1]
+            if val > best_val:
+                best, best_val = c, val
+        assert best is not None  # every remaining satellite is a candidate
+        order.append(int(best))
+    return vis[order]
+
+
 check_public(
     globals(),
-    {"mask": ELEVATION, "weights": NONNEGATIVE},
+    {"mask": ELEVATION, "weights": NONNEGATIVE, "lat": LATITUDE, "lon": LONGITUDE},
 )

@@ -20,6 +20,10 @@ The Mandelbrot-Van Ness representation of fractional Brownian motion normalises 
 variance by :math:`V_0(\rho) = 1 / (\Gamma(2 \rho + 1) \sin(\pi \rho))` (Eq. G.5, corrected
 integrand, erratum E4-7); :func:`mandelbrot_van_ness_constant_integral` evaluates the
 defining integral numerically as an independent check.
+
+:func:`clock_prediction_variance` is the error of the best linear prediction of the clock
+from noisy observations of it, for any such covariance: what a tracker that loses its
+observations (ATC-10 Sec. 4.5.3, three satellites; Sec. 4.7) can at best extrapolate.
 """
 
 from __future__ import annotations
@@ -27,6 +31,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from numpy.typing import ArrayLike
 from scipy import integrate, special
 
 from navcore._validate import (
@@ -38,12 +43,15 @@ from navcore._validate import (
     require_in_range,
     require_integer,
     require_nonnegative,
+    require_positive,
+    require_symmetric_psd,
 )
 from navcore.trace import implements
 
 __all__ = [
     "clock_covariance",
     "clock_increment_covariance",
+    "clock_prediction_variance",
     "mandelbrot_van_ness_constant",
     "mandelbrot_van_ness_constant_integral",
     "sample_clock_paths",
@@ -240,6 +248,66 @@ def clock_increment_covariance(n_epochs: int, sigma0: float) -> np.ndarray:
     n_epochs = require_integer("n_epochs", n_epochs, minimum=1)
     require_nonnegative("sigma0", sigma0)
     return sigma0**2 * (np.ones((n_epochs, n_epochs)) + np.eye(n_epochs))
+
+
+def clock_prediction_variance(covariance: ArrayLike, noise_variance: float, n_observed: int) -> float:
+    r"""Error variance of the best linear prediction of the last epoch from noisy earlier ones.
+
+    With the clock's second moments :math:`C` over epochs :math:`1, \dots, N` and the
+    observations :math:`z_n = \tau_n + v_n`, :math:`n = 1, \dots, N_o` (white noise of variance
+    :math:`r`), the linear minimum-mean-square-error predictor of :math:`\tau_N` has the error
+    variance
+
+    .. math::
+
+        C_{NN} - \mathbf c^T (C_{oo} + r I)^{-1} \mathbf c, \qquad
+        \mathbf c = (C_{nN})_{n \le N_o},
+
+    with :math:`C_{oo}` the block of the observed epochs. :math:`N - N_o` is how far ahead the
+    clock is extrapolated.
+
+    Parameters
+    ----------
+    covariance : (N, N) array_like
+        Second moments of the clock over the epochs (e.g. :func:`clock_covariance`), time
+        unit squared; symmetric positive semi-definite.
+    noise_variance : float
+        Variance :math:`r` of each observation's noise (same unit, ``> 0``).
+    n_observed : int
+        Number :math:`N_o` of observed epochs, ``1 <= n_observed < N``.
+
+    Returns
+    -------
+    float
+        The prediction error variance of the last epoch, time unit squared.
+
+    Raises
+    ------
+    ValueError
+        If ``covariance`` is not a square symmetric positive semi-definite matrix,
+        ``noise_variance`` is not positive or ``n_observed`` is out of range.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Secs. 4.5.3 and 4.7.
+
+    Examples
+    --------
+    A random walk of unit steps observed once with unit noise, predicted one step ahead:
+    the filtered variance 1/2 plus one step.
+
+    >>> clock_prediction_variance(clock_covariance(2, 1.0, 0.0), 1.0, 1)
+    1.5
+    """
+    C = require_symmetric_psd("covariance", covariance)
+    require_positive("noise_variance", noise_variance)
+    n_last = require_integer("n_observed", n_observed, minimum=1)
+    if n_last >= C.shape[0]:
+        raise ValueError(f"n_observed must be less than the {C.shape[0]} epochs of covariance, got {n_last}")
+    Czz = C[:n_last, :n_last] + noise_variance * np.eye(n_last)
+    c = C[:n_last, -1]
+    return float(C[-1, -1] - c @ np.linalg.solve(Czz, c))
 
 
 def sample_clock_paths(

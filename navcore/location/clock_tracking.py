@@ -35,6 +35,7 @@ from dataclasses import dataclass
 from typing import NamedTuple
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from navcore._validate import (
     COUNT,
@@ -54,6 +55,7 @@ __all__ = [
     "TrackerMonteCarlo",
     "TrackingErrors",
     "alpha_parameter",
+    "clock_error_variances",
     "convergence_steps",
     "convergence_steps_geometric",
     "gain_recursion",
@@ -392,6 +394,76 @@ def gain_recursion(beta: float, sigma: float, sigma0: float, n_steps: int) -> Ga
         gamma[n] = s / (s2 + beta * s)
         cross[n] = (1.0 - gamma[n] * beta) * (q2 + cross[n - 1])
     return GainHistory(gamma=gamma, prior_variance=prior, cross=cross)
+
+
+def clock_error_variances(beta: float, sigma: float, sigma0: float, gains: ArrayLike) -> NDArray[np.float64]:
+    r"""Exact clock-error variances of the constrained tracker for any gain sequence.
+
+    The tracker of ATC-10 Sec. 4.5.2 with gains :math:`\gamma_n` (not necessarily the optimal
+    ones of :func:`gain_recursion`) has the clock error
+    :math:`\xi_n = \hat\tau_n - \tau_n` with, for the increments
+    :math:`\Delta_n = w_n + A` of Eq. (4.5.23),
+
+    .. math::
+
+        \xi_n = a_n (\xi_{n-1} - w_n - A) + \gamma_n \mathbf{1}'(I - P)\boldsymbol\epsilon_n,
+        \qquad a_n = 1 - \gamma_n \beta,
+
+    starting from the least-squares error (variance :math:`\sigma^2/\beta`) independent of
+    :math:`A`. The covariance of :math:`(\xi_n, A)` is propagated exactly. With the optimal
+    gains the variances are :math:`\sigma^2 \gamma_n`; a fixed gain shows what the
+    recursion buys in the first epochs.
+
+    Parameters
+    ----------
+    beta : float
+        :math:`\mathbf{1}'(I - P)\mathbf{1}` (dimensionless, ``> 0``).
+    sigma : float
+        Time-of-arrival noise standard deviation (a time unit, ``> 0``).
+    sigma0 : float
+        Standard deviation of the clock increments :math:`w_n` and of :math:`A` (same unit,
+        ``>= 0``).
+    gains : array_like
+        Gains :math:`\gamma_0, \dots, \gamma_N` (dimensionless; :math:`\gamma_0` is not
+        used: epoch 0 is the least-squares fix).
+
+    Returns
+    -------
+    ndarray
+        :math:`\operatorname{Var}(\xi_n)`, :math:`n = 0, \dots, N` (time unit squared).
+
+    Raises
+    ------
+    ValueError
+        If ``beta`` or ``sigma`` is not positive, ``sigma0`` is negative or ``gains`` is not a
+        non-empty one-dimensional array of finite numbers.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Sec. 4.5.2, Eqs. (4.5.16)-(4.5.25).
+
+    Examples
+    --------
+    >>> h = gain_recursion(0.5, 50.0, 5.0, 3)
+    >>> bool(np.allclose(clock_error_variances(0.5, 50.0, 5.0, h.gamma), 50.0**2 * h.gamma))
+    True
+    """
+    require_positive("beta", beta)
+    require_positive("sigma", sigma)
+    require_nonnegative("sigma0", sigma0)
+    gains = as_finite_array("gains", gains, ndim=1)
+    if gains.size == 0:
+        raise ValueError("gains must hold at least the epoch-0 gain")
+    C = np.array([[sigma**2 / beta, 0.0], [0.0, sigma0**2]])  # n = 0: least squares, A independent
+    out = [C[0, 0]]
+    for g in gains[1:]:
+        a = 1.0 - g * beta
+        # xi_n = a (xi_{n-1} - w_n - A) + g 1'(I-P) eps_n
+        M = np.array([[a, -a], [0.0, 1.0]])
+        C = M @ C @ M.T + np.array([[a * a * sigma0**2 + g * g * sigma**2 * beta, 0.0], [0.0, 0.0]])
+        out.append(C[0, 0])
+    return np.array(out)
 
 
 def three_satellite_clock_variance(

@@ -34,6 +34,9 @@ aperture states. The gradients with respect to the aperture states (WF Eqs. (7)-
 so :math:`\|\partial f/\partial\mathbf p\| = (f_0/c)\|\mathbf v_\perp\|/R`, half of the bound
 :math:`(f_0/c)\,2\|\mathbf v\|/R` printed as WF Eq. (9) at most.
 
+:func:`level_turn_track` gives the aperture's path for the simplest geometry that
+observes the emitter from changing directions: a level turn at constant speed and rate.
+
 All quantities are SI: metres, metres per second, hertz.
 
 References
@@ -67,6 +70,7 @@ __all__ = [
     "doppler_gradient_velocity",
     "doppler_jacobian_emitter",
     "emitter_gauss_newton",
+    "level_turn_track",
     "linearized_location_error",
     "location_error_covariance",
     "position_sensitivity_bound",
@@ -627,6 +631,80 @@ def emitter_gauss_newton(
     r = m - doppler_frequency(psi[3], psi[:3], p, v)
     HtW = H.T if Wm is None else H.T @ Wm
     return GaussNewtonResult(psi, H, r, HtW @ r, iterations, converged)
+
+
+def level_turn_track(
+    speed: float, altitude: float, n_samples: int, turn_rate_deg_s: float, duration: float
+) -> tuple[Array, Array, Array]:
+    r"""Times, positions and velocities of a level turn at constant speed and turn rate.
+
+    The aperture starts at :math:`(0, 0, h)` heading along :math:`x` and turns at the rate
+    :math:`\omega` (positive: towards :math:`+y`) on the circle of radius
+    :math:`r = v/\omega`:
+
+    .. math::
+
+        \mathbf p(t) = (r \sin\omega t,\; r (1 - \cos\omega t),\; h), \qquad
+        \mathbf v(t) = (v \cos\omega t,\; v \sin\omega t,\; 0),
+
+    sampled at ``n_samples`` equally spaced times from 0 to ``duration``. WF Sec. III flies
+    such a turn (200 m/s, 8 km) to locate an emitter by its Doppler history.
+
+    Parameters
+    ----------
+    speed : float
+        Ground speed :math:`v`, m/s (``> 0``).
+    altitude : float
+        Height :math:`h`, m.
+    n_samples : int
+        Number of samples (``>= 2``).
+    turn_rate_deg_s : float
+        Turn rate :math:`\omega`, deg/s (non-zero; negative turns towards :math:`-y`).
+    duration : float
+        Length of the track, s (``> 0``).
+
+    Returns
+    -------
+    t : (n_samples,) ndarray
+        Times, s.
+    position : (n_samples, 3) ndarray
+        Positions, m.
+    velocity : (n_samples, 3) ndarray
+        Velocities, m/s.
+
+    Raises
+    ------
+    ValueError
+        If ``speed`` or ``duration`` is not positive, ``turn_rate_deg_s`` is zero or not
+        finite, or ``n_samples`` is not an integer of at least 2.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Sec. III.
+
+    Examples
+    --------
+    >>> t, p, v = level_turn_track(100.0, 1000.0, 3, 90.0, 2.0)  # a half circle of radius 63.7 m
+    >>> p.round(1).tolist()
+    [[0.0, 0.0, 1000.0], [63.7, 63.7, 1000.0], [0.0, 127.3, 1000.0]]
+    >>> v.round(6).tolist()[2]
+    [-100.0, 0.0, 0.0]
+    """
+    require_positive("speed", speed)
+    altitude = float(as_finite_array("altitude", altitude))
+    M = require_integer("n_samples", n_samples, minimum=2)
+    if M > COUNT.high:
+        raise ValueError(f"n_samples must be at most {COUNT.high}, got {M}")
+    rate = float(as_finite_array("turn_rate_deg_s", turn_rate_deg_s))
+    if rate == 0.0:
+        raise ValueError("turn_rate_deg_s must be non-zero (a straight track has no turn radius)")
+    require_positive("duration", duration)
+    t = np.linspace(0.0, duration, M)
+    w = np.deg2rad(rate)
+    radius = speed / w
+    pos = np.column_stack([radius * np.sin(w * t), radius * (1 - np.cos(w * t)), np.full(M, altitude)])
+    vel = np.column_stack([speed * np.cos(w * t), speed * np.sin(w * t), np.zeros(M)])
+    return t, pos, vel
 
 
 # Every public function checks its arguments against their annotations (finite numbers,

@@ -13,14 +13,20 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy import integrate, optimize, special
+from scipy import optimize, special
 
-from navcore._validate import require_in_range
 from navcore.ledger import EXACT, Claim, Erratum, printed
 from navcore.ledger.core import PROSE_WORDS
 from navcore.ledger.inputs import InputSet
+from navcore.location.clock_model import (
+    clock_covariance,
+    clock_prediction_variance,
+    mandelbrot_van_ness_constant,
+    mandelbrot_van_ness_constant_integral,
+)
 from navcore.location.clock_tracking import (
     alpha_parameter,
+    clock_error_variances,
     gain_recursion,
     psi,
     psi_cubic_root,
@@ -254,14 +260,6 @@ def printed_tau_sum_oracle(n: int = 10) -> float:
     return float(v / (s0**2 * (n + n * n)))
 
 
-def _fbm_cov(n: int, s1: float, s2: float, rho: float) -> np.ndarray:
-    k = np.arange(1, n + 1, dtype=float)
-    m, j = np.meshgrid(k, k, indexing="ij")
-    return s1**2 * np.minimum(m, j) + 0.5 * s2**2 * (
-        m ** (2 * rho) + j ** (2 * rho) - np.abs(m - j) ** (2 * rho)
-    )
-
-
 def kalman_vs_constrained(n_epochs: int = 600, runs: int = 300) -> tuple[float, float]:
     """rms clock error over the last 100 epochs: Kalman filter on (4.5.9) vs the constrained tracker.
 
@@ -273,7 +271,7 @@ def kalman_vs_constrained(n_epochs: int = 600, runs: int = 300) -> tuple[float, 
     sigma, s0 = TR.sigma_ns, TR.sigma0_low_ns
     r = sigma**2 / beta
     rng = np.random.default_rng(4592)
-    L = np.linalg.cholesky(_fbm_cov(n_epochs, s0, s0, rho) + 1e-9 * np.eye(n_epochs))
+    L = np.linalg.cholesky(clock_covariance(n_epochs, s0, s0, rho) + 1e-9 * np.eye(n_epochs))
     tau = np.concatenate([np.zeros((runs, 1)), rng.normal(size=(runs, n_epochs)) @ L.T], axis=1)
     z = tau + rng.normal(0.0, math.sqrt(r), tau.shape)
     # Kalman filter on (4.5.9): x = [tau, alpha]
@@ -319,27 +317,14 @@ def one_real_root() -> bool:
     return True
 
 
-def _clock_error_variances(beta: float, sigma: float, s0: float, gains: np.ndarray) -> np.ndarray:
-    """Exact Var(xi_tau_n) for any gain sequence: state (xi, A) with Delta_n = w_n + A."""
-    C = np.array([[sigma**2 / beta, 0.0], [0.0, s0**2]])  # n = 0: least squares, A independent
-    out = [C[0, 0]]
-    for g in gains[1:]:
-        a = 1.0 - g * beta
-        # xi_n = a (xi_{n-1} - w_n - A) + g 1'(I-P) eps_n
-        M = np.array([[a, -a], [0.0, 1.0]])
-        C = M @ C @ M.T + np.array([[a * a * s0**2 + g * g * sigma**2 * beta, 0.0], [0.0, 0.0]])
-        out.append(C[0, 0])
-    return np.array(out)
-
-
 def constant_gain_worse() -> bool:
     """The steady gamma from n = 1 gives larger early clock-error variances than the optimal gamma_n."""
     for ex, s0 in _cases():
         beta, sigma = _ex(ex)["beta"], TR.sigma_ns
         h = gain_recursion(beta, sigma, s0, 10)
         fixed = np.full_like(h.gamma, float(psi(alpha_parameter(s0, sigma, beta))) / beta)
-        v_opt = _clock_error_variances(beta, sigma, s0, h.gamma)
-        v_fix = _clock_error_variances(beta, sigma, s0, fixed)
+        v_opt = clock_error_variances(beta, sigma, s0, h.gamma)
+        v_fix = clock_error_variances(beta, sigma, s0, fixed)
         if not (v_fix[1] > v_opt[1] and np.mean(v_fix[1:6]) >= np.mean(v_opt[1:6]) * (1 - 1e-2)):
             return False
         if not np.allclose(v_opt[1:], sigma**2 * h.gamma[1:], rtol=1e-6):
@@ -514,14 +499,6 @@ def fig_shape() -> bool:
     return True
 
 
-def _extrapolation_error(cov_fun, beta: float, sigma: float, n_last: int, m: int) -> float:
-    """LMMSE error variance of tau_{N+m} from z_n = tau_n + v_n (n = 1..N), Var v = sigma^2/beta."""
-    C = cov_fun(n_last + m)
-    Czz = C[:n_last, :n_last] + sigma**2 / beta * np.eye(n_last)
-    c = C[:n_last, n_last + m - 1]
-    return float(C[n_last + m - 1, n_last + m - 1] - c @ np.linalg.solve(Czz, c))
-
-
 def crossover_100_helps() -> bool:
     """Sec. 4.7: if the 1/f term equals the random walk only at n = 100 (sigma2^2 = sigma1^2/100),
     the 3-satellite extrapolation error after 30 s is smaller than with the crossover at n = 1."""
@@ -529,10 +506,12 @@ def crossover_100_helps() -> bool:
     beta, sigma, s0 = _ex("I")["beta"], TR.sigma_ns, TR.sigma0_low_ns
     # the two components of (4.3.1c), sigma1^2 n and sigma2^2 n^2, are equal at n = sigma1^2 / sigma2^2
     epochs, horizon = 60, 30  # both clocks tracked over the same epochs and extrapolated as far
-    late = _extrapolation_error(
-        lambda n: _fbm_cov(n, s0, s0 / math.sqrt(IN.sec47_crossover_n), rho), beta, sigma, epochs, horizon
+    # the 3-satellite clock observations have the noise variance sigma^2 / beta
+    n = epochs + horizon
+    late = clock_prediction_variance(
+        clock_covariance(n, s0, s0 / math.sqrt(IN.sec47_crossover_n), rho), sigma**2 / beta, epochs
     )
-    early = _extrapolation_error(lambda n: _fbm_cov(n, s0, s0, rho), beta, sigma, epochs, horizon)
+    early = clock_prediction_variance(clock_covariance(n, s0, s0, rho), sigma**2 / beta, epochs)
     return late < early
 
 
@@ -761,20 +740,12 @@ def counter_linearisation() -> bool:
     return abs(exact / (2 * rho * nN ** (2 * rho - 1) * k) - 1) < 1e-3
 
 
-def v0_integral(rho: float) -> float:
-    """V0 of App. G by quadrature; ``rho`` in [1/2, 1) (1/2: the Wiener process)."""
-    require_in_range("rho", rho, 0.5, math.nextafter(1.0, 0.0))
-    a = rho - 0.5
-    val, _ = integrate.quad(lambda s: ((1 + s) ** a - s**a) ** 2, 0, np.inf, limit=400)
-    return (1 / (2 * rho) + val) / special.gamma(rho + 0.5) ** 2
-
-
-def v0_closed(rho: float) -> float:
-    return 1.0 / (special.gamma(2 * rho + 1) * math.sin(math.pi * rho))
-
-
 def v0_matches() -> bool:
-    return all(abs(v0_integral(r) / v0_closed(r) - 1) < 1e-6 for r in (0.55, 0.75, IN.rho_hurst, 0.95))
+    """V0 of App. G by quadrature of the squared integrand against the closed form (G.5)."""
+    return all(
+        abs(mandelbrot_van_ness_constant_integral(r) / mandelbrot_van_ness_constant(r) - 1) < 1e-6
+        for r in (0.55, 0.75, IN.rho_hurst, 0.95)
+    )
 
 
 def v0_printed_positive() -> bool:
@@ -796,7 +767,10 @@ def v0_printed_positive_oracle() -> bool:
 
 def half_is_wiener() -> bool:
     """rho = 1/2: kernel (t - s)^0, V0 = 1, Var x3(t) = t (the integral of v)."""
-    return abs(v0_integral(0.5) - 1) < 1e-9 and abs(v0_closed(0.5) - 1) < 1e-12
+    return (
+        abs(mandelbrot_van_ness_constant_integral(0.5) - 1) < 1e-9
+        and abs(mandelbrot_van_ness_constant(0.5) - 1) < 1e-12
+    )
 
 
 def spectrum_exponent() -> float:

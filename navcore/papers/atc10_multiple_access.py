@@ -33,6 +33,7 @@ from navcore.detection.multiple_access import (
     uniform_exact_tail,
 )
 from navcore.detection.roc_bounds import (
+    best_pf_at_pd,
     chernoff_log_tail,
     exponent_from_gaussian_exponent,
     gallager_log_tails_lower,
@@ -333,18 +334,6 @@ def exact_roc(name: str, x: float) -> ExactROC:
         "C4 Gaussian": (gaussian_mixture_exact_tail, "exact Gaussian mixture"),
     }[name]
     return ExactROC(th, tail(b, nint, q, th), z, tail(b, nint, q, 1.0 - th), z, method)
-
-
-def best_pf_index_at_pd(roc_pf: np.ndarray, roc_miss: np.ndarray, pd_min: float) -> int | None:
-    """Index of the threshold with the smallest p_f among those with p_d >= pd_min (None if none)."""
-    ok = np.flatnonzero(roc_miss <= 1.0 - pd_min)
-    return int(ok[np.argmin(roc_pf[ok])]) if ok.size else None
-
-
-def best_pf_at_pd(roc_pf: np.ndarray, roc_miss: np.ndarray, pd_min: float) -> float:
-    """The smallest p_f over thresholds with p_d >= pd_min (NaN if no threshold reaches it)."""
-    j = best_pf_index_at_pd(roc_pf, roc_miss, pd_min)
-    return float("nan") if j is None else float(roc_pf[j])
 
 
 def gaussian_best_pf(x: float, pd_min: float) -> float:

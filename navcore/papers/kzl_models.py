@@ -222,7 +222,10 @@ def heading_observable(mode: str = "tc", nu: int = 8) -> bool:
 
     True when the unit vector of the heading state lies in the row space of the LTI
     observability matrix of code and delta range (``mode="tc"``), plus Euler attitude
-    (``"tc_att"``) or DD phases (``"tc_dd"``); rows normalised as in ``observability_rank``.
+    (``"tc_att"``) or DD phases (``"tc_dd"``): then a direct measurement of the heading
+    added to the rows leaves :func:`~navcore.inertial.error_model17.observability_rank`
+    unchanged (that row space is invariant under ``F``, so the added row's propagations
+    ``e F^k`` add nothing either).
     """
     F, C, los = table1_F(), table1_attitude(), table1_los(nu)
     H = {
@@ -230,21 +233,10 @@ def heading_observable(mode: str = "tc", nu: int = 8) -> bool:
         "tc_att": lambda: tc_attitude_observation_matrix(los, C, 0.0, 0.0),
         "tc_dd": lambda: tc_dd_observation_matrix(los, C, table1_baselines_b()),
     }[mode]()
-    blocks, M = [], np.atleast_2d(H)
-    for _ in range(F.shape[0]):
-        blocks.append(M)
-        M = M @ F
-    O_ = np.vstack(blocks)
-    norms = np.linalg.norm(O_, axis=1)
-    O_ = O_[norms > 0] / norms[norms > 0, None]
-    e = np.zeros(F.shape[0])
-    e[ERROR_LAYOUT_17.slice("misalignment").start + 2] = 1.0
-
-    def rank(A: np.ndarray) -> int:
-        sv = np.linalg.svd(A, compute_uv=False)
-        return int(np.sum(sv > 1e-9 * sv[0]))
-
-    return rank(np.vstack([O_, e])) == rank(O_)
+    H = np.atleast_2d(H)
+    e = np.zeros((1, F.shape[0]))
+    e[0, ERROR_LAYOUT_17.slice("misalignment").start + 2] = 1.0
+    return observability_rank(F, np.vstack([H, e])) == observability_rank(F, H)
 
 
 def _complete_only_with_attitude() -> bool:

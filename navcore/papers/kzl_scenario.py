@@ -45,8 +45,9 @@ from typing import cast
 
 import numpy as np
 
-from navcore.frames import dcm_ecef_to_ned, ecef_to_ned, geodetic_to_ecef
-from navcore.gnss.constellation import elevation_azimuth, nominal_gps_constellation
+from navcore.frames import dcm_ecef_to_ned, ecef_to_ned
+from navcore.gnss.constellation import nominal_gps_constellation
+from navcore.gnss.dop import satellite_priority
 from navcore.inertial.imu import ImuSpec, imu_spec_from_published
 from navcore.integration.ekf_ins_gnss import (
     GnssNoise,
@@ -72,7 +73,6 @@ __all__ = [
     "kzl_imu",
     "monte_carlo",
     "n_runs",
-    "satellite_priority",
     "table1",
     "table1_baselines_b",
     "table1_scenario",
@@ -369,33 +369,6 @@ def table1_baselines_b() -> np.ndarray:
     return b * np.eye(3)[: IN.antennas - 1]
 
 
-def satellite_priority(
-    positions_ecef: np.ndarray, lat: float, lon: float, h: float, mask_deg: float
-) -> np.ndarray:
-    """Indices of the visible satellites in tracking priority: highest elevation first (the DD
-    master), then greedily the one that most increases ``log det(G^T G + 1e-3 I)`` so that
-    every prefix of the list has a good geometry."""
-    r_user = geodetic_to_ecef(lat, lon, h)
-    el, _ = elevation_azimuth(r_user, positions_ecef, lat, lon)
-    vis = np.flatnonzero(el >= mask_deg * DEG)
-    d = positions_ecef[vis] - r_user
-    u = d / np.linalg.norm(d, axis=1, keepdims=True)
-    G = np.hstack([-u, np.ones((len(vis), 1))])
-    order = [int(np.argmax(el[vis]))]
-    while len(order) < len(vis):
-        best, best_val = None, -np.inf
-        for c in range(len(vis)):
-            if c in order:
-                continue
-            Gs = G[[*order, c]]
-            val = np.linalg.slogdet(Gs.T @ Gs + 1e-3 * np.eye(4))[1]
-            if val > best_val:
-                best, best_val = c, val
-        assert best is not None  # every remaining satellite is a candidate
-        order.append(int(best))
-    return vis[order]
-
-
 @input_cache
 def table1_sky() -> tuple[np.ndarray, np.ndarray]:
     """Satellite positions and velocities (NED of the start point) in tracking priority, per epoch.
@@ -411,7 +384,7 @@ def table1_sky() -> tuple[np.ndarray, np.ndarray]:
     const = nominal_gps_constellation(
         n_planes, per_plane, phase_offset_deg=phasing_deg, inclination_deg=inclination_deg
     )
-    prio = satellite_priority(const.positions_ecef(0.0), lat, lon, h, IN.elevation_mask_deg)
+    prio = satellite_priority(const.positions_ecef(0.0), lat, lon, h, mask=IN.elevation_mask_deg * DEG)
     pos_e = const.positions_ecef(t)[:, prio]
     vel_e = const.velocities_ecef(t)[:, prio]
     return ecef_to_ned(pos_e, lat, lon, h), vel_e @ dcm_ecef_to_ned(lat, lon).T

@@ -20,6 +20,7 @@ import numpy as np
 
 from navcore.estimation.federated import (
     accelerometer_steady_state_isotropic,
+    correlated_joint_covariance,
     feasible_weights,
     federated_covariance_bound,
     federated_fusion,
@@ -46,6 +47,7 @@ from navcore.location.emitter import (
     doppler_gradient_velocity,
     doppler_jacobian_emitter,
     emitter_gauss_newton,
+    level_turn_track,
     linearized_location_error,
     location_error_covariance,
     position_sensitivity_bound,
@@ -381,22 +383,10 @@ DOCS = {
 }
 
 
-def track(
-    speed: float, altitude: float, M: int, turn_rate_deg: float, duration: float
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Times, positions and velocities of a ``turn_rate_deg`` turn flown for ``duration`` s."""
-    t = np.linspace(0.0, duration, M)
-    w = np.deg2rad(turn_rate_deg)
-    radius = speed / w
-    pos = np.column_stack([radius * np.sin(w * t), radius * (1 - np.cos(w * t)), np.full(M, altitude)])
-    vel = np.column_stack([speed * np.cos(w * t), speed * np.sin(w * t), np.zeros(M)])
-    return t, pos, vel
-
-
 def orbit(M: int = N_SAMPLES) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Times, positions and velocities of the test geometry: a turn at 8 km, 200 m/s, at the assumed
     turn rate (2 deg/s) for the assumed aperture duration (120 s)."""
-    return track(SPEED, ALTITUDE, M, IN.turn_rate_deg_s, IN.aperture_duration_s)
+    return level_turn_track(SPEED, ALTITUDE, M, IN.turn_rate_deg_s, IN.aperture_duration_s)
 
 
 #: Samples along the Sec. III scenario track: a numerical resolution, not an input (the claims
@@ -408,7 +398,7 @@ SCENARIO_SAMPLES = 2001
 def scenario_track(M: int = SCENARIO_SAMPLES) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The Sec. III scenario track: a turn at the assumed rate, speed and altitude, for the assumed
     aperture duration."""
-    return track(IN.speed_mps, IN.altitude_m, M, IN.turn_rate_deg_s, IN.aperture_duration_s)
+    return level_turn_track(IN.speed_mps, IN.altitude_m, M, IN.turn_rate_deg_s, IN.aperture_duration_s)
 
 
 def scenario_emitter() -> np.ndarray:
@@ -696,15 +686,6 @@ def _eq20_oracle() -> bool:
     return deviation <= IN.mc_sigmas * np.sqrt(2.0 / n)
 
 
-def _random_joint(rng: np.random.Generator, n: int, N: int, rho: float) -> np.ndarray:
-    L = [np.linalg.cholesky(_spd(rng, n)) for _ in range(N)]
-    common = np.vstack(L)
-    J = rho * common @ common.T
-    for i, Li in enumerate(L):
-        J[n * i : n * i + n, n * i : n * i + n] += (1 - rho) * Li @ Li.T
-    return J
-
-
 def _spd(rng: np.random.Generator, n: int) -> np.ndarray:
     A = rng.normal(size=(n, n))
     return A @ A.T + 0.1 * np.eye(n)
@@ -716,7 +697,7 @@ def theorem_margins(cases: int = 200) -> dict[str, float]:
     rng = np.random.default_rng(21)
     eig_margin, first, second = np.inf, np.inf, np.inf
     for _ in range(cases):
-        J = _random_joint(rng, 3, 3, rng.uniform())
+        J = correlated_joint_covariance(rng, 3, 3, rng.uniform())
         Ps = [J[3 * i : 3 * i + 3, 3 * i : 3 * i + 3] for i in range(3)]
         cov = fused_error_covariance(Ps, J)
         k = feasible_weights(Ps, directions=[rng.normal(size=3) for _ in range(3)])
@@ -785,7 +766,7 @@ def theorem_monte_carlo_case(rng: np.random.Generator, N: int, kind: str, sample
     if kind == "generic":
         J = _spd(rng, n * N)
     elif kind == "mixed":
-        J = _random_joint(rng, n, N, rng.uniform())
+        J = correlated_joint_covariance(rng, n, N, rng.uniform())
     elif kind == "complete":
         sig = rng.uniform(0.1, 2.0, N)
         J = np.kron(np.outer(sig, sig), np.eye(n))

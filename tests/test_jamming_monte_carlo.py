@@ -3,8 +3,9 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
-from navcore.papers import atc10_jamming_mc as mc
+from navcore.detection import jamming_monte_carlo as mc
 
 
 def test_simulated_rates_exceed_bounds() -> None:
@@ -88,3 +89,53 @@ def test_window_simulation_against_independent_formula() -> None:
     high = r.p_f >= 0.1
     assert np.all(r.empty_correlated[high] > r.empty_formula[high] + 10 * sigma_c[high])
     assert np.all(np.diff(r.empty_correlated) < 0)  # common random numbers: monotone in p_f
+
+
+def test_false_track_search_on_hand_built_chains() -> None:
+    """Oracle: chains built by hand, whose existence follows from the definition alone: a
+    quadruplet in segment 1 at offsets (0, 0, 0) and one in segment 2 at (1, 1, 1) form a
+    track when the track window is +-1 and not when it is 0; a first quadruplet outside the
+    list window forms none."""
+    decl = np.zeros((2, 2, 4, 5), bool)
+    decl[:, 0, 0, 2] = True
+    decl[0, 0, 1:, 2] = True  # trial 0: offsets (0, 0, 0) in segment 1
+    decl[1, 0, 1:, 4] = True  # trial 1: offsets (2, 2, 2), outside w = 1
+    decl[:, 1, 0, 2] = True
+    decl[:, 1, 1:, 3] = True  # both trials: offsets (1, 1, 1) in segment 2
+    assert mc.false_track_exists(decl, 1, 1).tolist() == [True, False]
+    assert mc.false_track_exists(decl, 1, 0).tolist() == [False, False]
+    assert mc.false_track_exists(decl[:, :1], 2, 0).tolist() == [True, True]
+
+
+def test_false_track_bound_is_the_product_formula() -> None:
+    """Oracle: (B.6) and (C.14) written out with powers of 1 - p_f (no logarithms)."""
+    p = np.array([0.02, 0.1, 0.3])
+    f = (1 - (1 - p) ** mc.TRACK_N_A) * (1 - (1 - p) ** (2 * mc.TRACK_W + 1)) ** 3
+    g = (1 - (1 - p) ** mc.TRACK_N_A) * (1 - (1 - p) ** (2 * mc.TRACK_V + 1)) ** 3
+    for k in (1, 2, 3):
+        assert np.allclose(mc.false_track_bound(p, k), f * g ** (k - 1), rtol=1e-12)
+
+
+def test_binomial_sigma_floor() -> None:
+    """Oracle: sqrt(r (1 - r) / n) by hand, with one event's rate for a zero count."""
+    got = mc.binomial_sigma(np.array([0.0, 0.25]), 400)
+    assert np.allclose(got, [np.sqrt(399 / 400**3), np.sqrt(0.1875) / 20])
+
+
+@pytest.mark.parametrize(
+    ("call", "name"),
+    [
+        (lambda: mc.binomial_sigma(np.array([0.5, 1.5]), 10), "rate"),
+        (lambda: mc.binomial_sigma(0.5, 0), "trials"),
+        (lambda: mc.false_track_bound(0.0, 1), "p_f"),
+        (lambda: mc.false_track_bound(0.1, 0), "k"),
+        (lambda: mc.false_track_exists(np.zeros((2, 1, 3, 5), bool), 1, 1), "decl"),
+        (lambda: mc.false_track_exists(np.zeros((2, 1, 4, 5)), 1, 1), "decl"),
+        (lambda: mc.false_track_exists(np.zeros((2, 1, 4, 5), bool), -1, 1), "w"),
+        (lambda: mc.false_track_exists_brute_force(np.zeros((2, 1, 4, 5), bool), 1, 1.5), "v"),
+        (lambda: mc.false_track_exists(np.zeros((2, 3, 4, 5), bool), 1, 1), "decl"),
+    ],
+)
+def test_bad_arguments_raise_naming_them(call, name) -> None:
+    with pytest.raises(ValueError, match=name):
+        call()
