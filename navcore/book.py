@@ -321,8 +321,10 @@ def claims_table(
     (['Fig. 2.1'], '../')
     """
     if items is not None or ids is not None:
-        chosen = [] if items is None else select_claims(paper, items)
-        chosen += [i for i in ids or () if ledger.claim(i).id not in chosen]
+        chosen = list(ids or ())
+        if items is not None:  # the items' claims, then the typed ids not among them
+            chosen = select_claims(paper, items)
+            chosen += [i for i in ids or () if ledger.claim(i).id not in chosen]
         evals = [ledger.evaluate_claim(i) for i in chosen]
     else:
         evals = ledger.evaluations(paper=paper, prefix=prefix)
