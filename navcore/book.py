@@ -50,9 +50,11 @@ __all__ = [
     "findings_table",
     "format_number",
     "glue",
+    "item_key",
     "ledger_table",
     "number_formatter",
     "quantity_table",
+    "select_claims",
     "setup",
     "show_figure",
     "table",
@@ -168,16 +170,101 @@ def book_root_prefix() -> str:
     return "../"
 
 
+def item_key(item: str) -> str:
+    """A printed item as the claims' locators name it (an equation by its number).
+
+    Parameters
+    ----------
+    item : str
+        One printed item in the paper's words: ``"Eq. (4.5.37)"``, ``"Table 4.3"``,
+        ``"Fig. 2.1"``, ``"Sec. 4.5.4"``, ``"Appendix G"``, ``"Remark ii"``.
+
+    Returns
+    -------
+    str
+        Its key (:func:`navcore.traceability.items_in_text`): ``"4.5.37"``, ``"Table 4.3"``.
+
+    Raises
+    ------
+    ValueError
+        If the text names no item or more than one.
+
+    Examples
+    --------
+    >>> item_key("Eq. (4.5.37)"), item_key("Table 4.3"), item_key("Sec. IV.D")
+    ('4.5.37', 'Table 4.3', 'Sec. IV.D')
+    """
+    from navcore.traceability import items_in_text
+
+    found = items_in_text(item, dotted=True)
+    if len(found) != 1:
+        raise ValueError(f"{item!r} names {len(found)} printed items, not one: {sorted(found)}")
+    return found.pop()
+
+
+def select_claims(paper: str | None, items: list[str]) -> list[str]:
+    """The ids of the claims that check the given printed items of a paper.
+
+    A claim checks an item when its locator names it (read by
+    :func:`navcore.traceability.claim_refs`, as the traceability index reads it); a locator
+    naming several items puts the claim under each. Nothing is evaluated.
+
+    Parameters
+    ----------
+    paper : str or None
+        Paper key (``"ATC10"``); items are numbered per paper.
+    items : list of str
+        Printed items (:func:`item_key`), in the order the table shows them.
+
+    Returns
+    -------
+    list of str
+        Claim ids: the first item's claims, then the next item's not yet listed, and so on;
+        within an item in the ledger's order (:func:`navcore.ledger.claims`).
+
+    Raises
+    ------
+    ValueError
+        If ``paper`` is ``None`` or an item selects no claim of the paper.
+
+    Examples
+    --------
+    >>> select_claims("KZL", ["Eq. (9)"])
+    ['KZL-eq9-quaternion']
+    """
+    from navcore.traceability import claim_refs
+
+    if paper is None:
+        raise ValueError("selecting claims by printed item needs the paper's key")
+    by_item: dict[str, list[str]] = {}
+    for c in ledger.claims(paper):
+        for ref in claim_refs(c.locator, c.paper):
+            by_item.setdefault(ref.item, []).append(c.id)
+    out: list[str] = []
+    for item in items:
+        found = by_item.get(item_key(item))
+        if not found:
+            raise ValueError(f"no claim of {paper} names {item!r} in its locator")
+        out += [i for i in found if i not in out]
+    return out
+
+
 def claims_table(
     paper: str | None = None,
     prefix: str | None = None,
     ids: list[str] | None = None,
     *,
+    items: list[str] | None = None,
     notes: bool = True,
     root: str | None = None,
     link_pages: bool = False,
 ) -> LedgerTable:
     """Published-versus-reproduced table of the selected claims (HTML coloured; PDF table).
+
+    A section's table selects its claims by the printed items they check (``items``, see
+    :func:`select_claims`), so that a new claim whose locator names one of them joins the
+    table with no change to the page; ``ids`` names claims one by one, where a table shows a
+    hand-picked part of an item's claims.
 
     ``root`` is the link prefix to the book's root (default: found from the working
     directory, see :func:`book_root_prefix`); ``link_pages`` links each claim to the page
@@ -186,12 +273,17 @@ def claims_table(
     Parameters
     ----------
     paper : str or None, optional
-        Paper key of the claims to show (with ``prefix``; ignored when ``ids`` is given).
+        Paper key of the claims to show (with ``prefix``, or with ``items``, which need it;
+        ignored when only ``ids`` is given).
     prefix : str or None, optional
         Id prefix of the claims to show (``"WF-sec3"``).
     ids : list of str or None, optional
-        The claims to show, in this order (ids or former ids); overrides ``paper`` and
-        ``prefix``.
+        The claims to show, in this order (ids or former ids); overrides ``prefix``. With
+        ``items``, shown after the items' claims.
+    items : list of str or None, optional
+        Printed items of ``paper`` (``"Eq. (4.5.37)"``, ``"Table 4.3"``, ``"Sec. 4.6"``):
+        every claim whose locator names one of them, in this order
+        (:func:`select_claims`); overrides ``prefix``.
     notes : bool, optional
         Show each claim's note, tolerance, band and inputs.
     root : str or None, optional
@@ -208,7 +300,8 @@ def claims_table(
     Raises
     ------
     ValueError
-        If no claim is selected, or an id is not in the ledger.
+        If no claim is selected, an id is not in the ledger, ``items`` is given without
+        ``paper`` or an item selects no claim.
 
     Examples
     --------
@@ -227,8 +320,12 @@ def claims_table(
     >>> [g.heading for g in t.groups()], t.root
     (['Fig. 2.1'], '../')
     """
-    if ids is not None:
-        evals = [ledger.evaluate_claim(i) for i in ids]
+    if items is not None or ids is not None:
+        chosen = list(ids or ())
+        if items is not None:  # the items' claims, then the typed ids not among them
+            chosen = select_claims(paper, items)
+            chosen += [i for i in ids or () if ledger.claim(i).id not in chosen]
+        evals = [ledger.evaluate_claim(i) for i in chosen]
     else:
         evals = ledger.evaluations(paper=paper, prefix=prefix)
     if not evals:

@@ -274,6 +274,7 @@ PACKAGES: dict[str, Package] = {
         [
             "test_book_tools.py",
             "test_book_tools_edges.py",
+            "test_book_claim_selection.py",
             "test_book_format.py",
             "test_claim_values_tool.py",
             "test_input_gate.py",
