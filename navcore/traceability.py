@@ -53,6 +53,8 @@ PAPER_FILES = {
 }
 _NUM = r"(?:[A-H]\.)?\d+(?:\.\d+)*[a-z]?"
 _LABEL = re.compile(r"\$\$\s*\((eq-(?:wf|sp|atc10|kzl)-[^)\s]+)\)")
+#: An erratum box, rendered on the page from its ``Erratum`` object (``{erratum} ID``).
+_ERRATUM_BOX = re.compile(r"^```\{erratum\}[ \t]+(\S+)", re.M)
 _PAPER_LABEL = re.compile(r"^eq-(?:wf|sp|atc10|kzl)-(?P<number>(?:[a-z]\.?)?\d+[a-z]?(?:\.\d+[a-z]?)*)$")
 _EQ_MENTION = re.compile(
     r"\bEq(?:uation)?s?\.?\s*\(?(" + _NUM + r")\)?((?:\s*(?:,|-|–|to|and|&)\s*\(?" + _NUM + r"\)?)*)"
@@ -328,6 +330,21 @@ class BookPage:
     mentioned: frozenset[str]
 
 
+def _with_erratum_boxes(text: str) -> str:
+    """A page's source with the words of the erratum boxes it renders appended.
+
+    A box's text lives in its ``Erratum`` object, not in the page, but the reader sees it on
+    the page: the items it names are mentioned there.
+    """
+    ids = _ERRATUM_BOX.findall(text)
+    if not ids:
+        return text
+    from navcore import ledger
+
+    boxes = [ledger.erratum(i) for i in ids]
+    return "\n".join([text, *(f"{e.locator}. {e.printed} {e.finding} {e.evidence}" for e in boxes)])
+
+
 @cache
 def book_pages() -> tuple[BookPage, ...]:
     pages = []
@@ -336,7 +353,7 @@ def book_pages() -> tuple[BookPage, ...]:
         if "_build" in path.parts or path.name.startswith("_"):
             continue
         rel = path.relative_to(book).with_suffix("").as_posix()
-        text = path.read_text()
+        text = _with_erratum_boxes(path.read_text())
         title = next((ln[2:].strip() for ln in text.splitlines() if ln.startswith("# ")), rel)
         labels = tuple(_LABEL.findall(text))
         numbers = {paper_equation_number(label) for label in labels}

@@ -122,6 +122,7 @@ PACKAGES: dict[str, Package] = {
         ["navcore/estimation/*"],
         [
             "test_estimation.py",
+            "test_estimation_kernel.py",
             "test_lmmse.py",
             "test_federated.py",
             "test_antijam.py",
