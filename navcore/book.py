@@ -24,18 +24,11 @@ from typing import Any
 
 from navcore import figures as _figures
 from navcore import ledger
-from navcore.formatting import format_number, number_formatter, tidy_numbers
-from navcore.ledger.core import STATUSES
-from navcore.ledger.render import (
-    CountsTable,
-    ErrataList,
-    FindingsTable,
-    InteractiveLedger,
-    LedgerTable,
-    _math_breaks,
-    latex_table,
-    math_spans,
-)
+from navcore.claims.core import STATUSES
+from navcore.formatting import format_number, math_spans, number_formatter, tidy_numbers
+from navcore.ledger.interactive import InteractiveLedger
+from navcore.ledger.tables import CountsTable, ErrataList, FindingsTable, LedgerTable, latex_table
+from navcore.ledger.text import _math_breaks
 
 __all__ = [
     "Markdown",
@@ -201,7 +194,7 @@ def claims_table(
     Returns
     -------
     LedgerTable
-        The table (:class:`~navcore.ledger.render.LedgerTable`); the selected claims are
+        The table (:class:`~navcore.ledger.tables.LedgerTable`); the selected claims are
         evaluated (memoised, :func:`~navcore.ledger.registry.evaluate_claim`).
 
     Raises
@@ -249,7 +242,7 @@ def counts_table(paper: str | None = None) -> CountsTable:
     Returns
     -------
     CountsTable
-        The table (:class:`~navcore.ledger.render.CountsTable`): per paper, the claims with
+        The table (:class:`~navcore.ledger.tables.CountsTable`): per paper, the claims with
         each derived verdict, the total and the number failing their check.
 
     Examples
@@ -266,8 +259,8 @@ def counts_table(paper: str | None = None) -> CountsTable:
     >>> ev = evaluate(c)
     >>> row = {"reproduced": 1, "consistent": 0, "inconsistent": 0, "discrepant": 0,
     ...        "not-reproducible": 0, "total": 1}
-    >>> with mock.patch("navcore.ledger.render.counts", return_value={"SP": row}):
-    ...     with mock.patch("navcore.ledger.render.evaluations", return_value=[ev]):
+    >>> with mock.patch("navcore.ledger.registry.counts", return_value={"SP": row}):
+    ...     with mock.patch("navcore.ledger.registry.evaluations", return_value=[ev]):
     ...         print(repr(counts_table("SP")))
     Paper  reproduced  consistent  inconsistent  discrepant  not-reproducible  total  failing check
     SP  1  0  0  0  0  1  0
@@ -292,7 +285,7 @@ def errata_list(paper: str | None = None, *, root: str | None = None, caveat: bo
     Returns
     -------
     ErrataList
-        The list (:class:`~navcore.ledger.render.ErrataList`), one entry per erratum.
+        The list (:class:`~navcore.ledger.tables.ErrataList`), one entry per erratum.
 
     Raises
     ------
@@ -329,7 +322,7 @@ def findings_table(
     Returns
     -------
     FindingsTable
-        The table (:class:`~navcore.ledger.render.FindingsTable`); the text-only caveat
+        The table (:class:`~navcore.ledger.tables.FindingsTable`); the text-only caveat
         follows the counts once.
 
     Raises
@@ -370,7 +363,7 @@ def ledger_table(paper: str | None = None, *, root: str | None = None) -> Intera
     Returns
     -------
     InteractiveLedger
-        The table (:class:`~navcore.ledger.render.InteractiveLedger`); every selected claim
+        The table (:class:`~navcore.ledger.interactive.InteractiveLedger`); every selected claim
         is evaluated.
 
     Raises

@@ -39,6 +39,7 @@ SUBPACKAGES = (
     "gnss",
     "detection",
     "location",
+    "claims",
     "ledger",
 )
 TODO = ROOT / "tests" / "api_docs_todo.txt"

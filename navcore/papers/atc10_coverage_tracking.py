@@ -16,9 +16,9 @@ import numpy as np
 from scipy import integrate, optimize, special
 
 from navcore._validate import require_in_range
-from navcore.ledger import EXACT, Claim, Erratum, printed
-from navcore.ledger.core import PROSE_WORDS
-from navcore.ledger.inputs import InputSet
+from navcore.claims import EXACT, Claim, Erratum, printed
+from navcore.claims.core import PROSE_WORDS
+from navcore.claims.inputs import InputSet
 from navcore.location.clock_tracking import (
     alpha_parameter,
     gain_recursion,

@@ -35,9 +35,9 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import special
 
+from navcore.claims.inputs import input_cache
 from navcore.detection import jamming as jm
 from navcore.detection.neyman_pearson import detection_index_from_jammer_ratio, log_false_alarm_probability
-from navcore.ledger.inputs import input_cache
 
 #: Reduced sizes: filter-1 samples per segment and window half-width (ratio 2e7 / 9.6e5 ~ 20).
 N_A = 200

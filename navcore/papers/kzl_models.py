@@ -8,6 +8,7 @@ import numpy as np
 import scipy.linalg
 from scipy.spatial.transform import Rotation
 
+from navcore.claims import EXACT, Claim, Erratum, InputSet, input_cache, printed, prose
 from navcore.estimation import kf_update
 from navcore.estimation.ekf_ins_gnss import correct_attitude, sequential_scalar_updates
 from navcore.frames import dcm_from_euler, dcm_from_quat, euler_from_dcm, quat_from_dcm, skew
@@ -29,7 +30,6 @@ from navcore.inertial.error_model17 import (
     transition_exact,
 )
 from navcore.inertial.strapdown import earth_rate_ned, transport_rate_ned
-from navcore.ledger import EXACT, Claim, Erratum, InputSet, input_cache, printed, prose
 from navcore.papers.kzl_quotes import quoted
 from navcore.papers.kzl_scenario import IN as SCEN
 from navcore.papers.kzl_scenario import kzl_imu, table1_baselines_b, table1_scenario, table1_sky

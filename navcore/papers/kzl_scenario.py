@@ -45,6 +45,7 @@ from typing import cast
 
 import numpy as np
 
+from navcore.claims import InputSet, for_each_band_run, input_cache
 from navcore.estimation.ekf_ins_gnss import (
     GnssNoise,
     Mode,
@@ -58,7 +59,6 @@ from navcore.estimation.ekf_ins_gnss import (
 from navcore.frames import dcm_ecef_to_ned, ecef_to_ned, geodetic_to_ecef
 from navcore.gnss.constellation import elevation_azimuth, nominal_gps_constellation
 from navcore.inertial.imu import ImuSpec, imu_spec_from_published
-from navcore.ledger import InputSet, for_each_band_run, input_cache
 from navcore.units import DEG
 
 __all__ = [
@@ -582,7 +582,7 @@ def monte_carlo(mode: str, initialise: bool = True, imu_name: str = "table1") ->
     assumed ranges), and below that on the run's complete arguments
     (:func:`~navcore.estimation.ekf_ins_gnss.monte_carlo_key`): every claim and every band corner
     that asks for the same run in this process shares one computation. Inside a band the ledger
-    announces (:func:`~navcore.ledger.inputs.for_each_band_run`), the first call makes every run of the
+    announces (:func:`~navcore.claims.inputs.for_each_band_run`), the first call makes every run of the
     batch at once (:func:`~navcore.estimation.ekf_ins_gnss.run_monte_carlo_batch`, which gives each
     run the numbers it gets alone) and stores them for the band's later calls. The arrays of the
     result are read-only. Results are also kept on disk (in the system temporary directory, under a

@@ -20,18 +20,7 @@ from typing import Any
 
 import numpy as np
 
-from navcore.gnss.antijam import (
-    NavigatorErrorModel,
-    _channel_matrices,
-    cep_from_horizontal_errors,
-    code_tracking_sigma_chips,
-    effective_cn0_dbhz,
-    free_space_js_db,
-    js_for_effective_cn0,
-    simulate_impact_errors,
-    spectral_separation_q,
-)
-from navcore.ledger import (
+from navcore.claims import (
     EXACT,
     Claim,
     Erratum,
@@ -42,6 +31,17 @@ from navcore.ledger import (
     monte_carlo,
     printed,
     prose,
+)
+from navcore.gnss.antijam import (
+    NavigatorErrorModel,
+    _channel_matrices,
+    cep_from_horizontal_errors,
+    code_tracking_sigma_chips,
+    effective_cn0_dbhz,
+    free_space_js_db,
+    js_for_effective_cn0,
+    simulate_impact_errors,
+    spectral_separation_q,
 )
 from navcore.papers import sp_tracking as spt
 from navcore.papers.sp_quotes import quoted

@@ -22,6 +22,8 @@ from dataclasses import dataclass, fields
 import numpy as np
 
 from navcore._validate import ModelDomainError
+from navcore.claims import input_cache
+from navcore.claims.inputs import InputSet
 from navcore.estimation.covariance_analysis import (
     CovarianceAnalysis,
     baro_schedule,
@@ -48,8 +50,6 @@ from navcore.inertial.error_dynamics import (
 )
 from navcore.inertial.imu import ImuSpec
 from navcore.inertial.trajectories import Segment, Trajectory, fly
-from navcore.ledger import input_cache
-from navcore.ledger.inputs import InputSet
 from navcore.papers import sp_acquisition as spa
 from navcore.papers import sp_tables as tab
 from navcore.papers.sp_tables import (
