@@ -389,13 +389,14 @@ def unit_text(unit: str) -> str:
     that is a formula as ``$...$`` math; a plain unit (``m/s``, ``dB-Hz``) as it is.
 
     The ledger keeps units as plain strings (its JSON and CSV exports carry them so); every
-    table and text a reader sees shows them through this function, with :func:`~navcore.ledger.text.html_text` or
-    :func:`~navcore.ledger.text.tex_text`. A unit is rewritten only when it holds plain-text math
-    (``PLAIN_MATH_PATTERNS``). A unit of symbols takes its powers and roots as the
-    registry's own units write them (``m/s²``, ``deg/h/√Hz``): superscripts and radicals in
-    the text, which stays upright and breaks after its slashes as any unit. A unit that is a
-    formula, with a Greek letter, a subscript or a symbol standing alone (the :math:`N` of
-    :math:`N\tau_{c}/\alpha`), is set as math; its words (``parts in``) stay text.
+    table and text a reader sees shows them through this function, with
+    :func:`~navcore.ledger.text.html_text` or :func:`~navcore.ledger.text.tex_text`. A unit is
+    rewritten only when it holds plain-text math (``PLAIN_MATH_PATTERNS``). A unit of symbols
+    takes its powers and roots as the registry's own units write them (``m/s²``,
+    ``deg/h/√Hz``): superscripts and radicals in the text, which stays upright and breaks
+    after its slashes as any unit. A unit that is a formula, with a Greek letter, a subscript
+    or a symbol standing alone (the :math:`N` of :math:`N\tau_{c}/\alpha`), is set as math;
+    its words (``parts in``) stay text.
 
     Parameters
     ----------

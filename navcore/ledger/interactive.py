@@ -85,8 +85,9 @@ class InteractiveLedger:
     by any column, filters by paper, verdict and (when the claims carry it) kind, searches the
     text, and downloads the rows shown as CSV or JSON (the records of
     :meth:`~navcore.claims.core.Evaluation.as_json`, so the download is the command line's
-    JSON; see :func:`~navcore.ledger.tables.json_export` and :func:`~navcore.ledger.tables.csv_export`), with the build's provenance where
-    the book put it on the page (a JSON script element ``navcore-provenance``). Columns for
+    JSON; see :func:`~navcore.ledger.tables.json_export` and
+    :func:`~navcore.ledger.tables.csv_export`), with the build's provenance where the book put it
+    on the page (a JSON script element ``navcore-provenance``). Columns for
     the optional record fields ``kind`` and ``band`` appear when any claim has them. The
     columns share the text column's width (the stylesheet's shares add up to 100 %); below
     900 px each row becomes a card without its empty fields, sorted by a menu instead of the

@@ -185,7 +185,8 @@ _LONG_WORD = 14  # a longer word of a text cell may break (every 7 characters, o
 
 def _plain_with_unit(value: str, unit: str) -> str:
     """A value and its unit as a reader sees them: a unit with a power or a formula as
-    ``$...$`` math (:func:`~navcore.formatting.unit_text`), which :func:`html_text` and :func:`tex_text` set."""
+    ``$...$`` math (:func:`~navcore.formatting.unit_text`), which :func:`html_text` and
+    :func:`tex_text` set."""
     if value in ("", "—") or unit in ("", "statement"):
         return value
     if value == "1" and unit in _COUNT_UNITS:  # "1 state", not "1 states"
