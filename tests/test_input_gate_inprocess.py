@@ -1006,7 +1006,7 @@ def _forget(prefix: str) -> None:
 def gic(tmp_path: Path) -> Any:
     """The claims package on sys.path for one test; afterwards its modules, its registered input
     and the gate's import hook are gone again."""
-    from navcore.ledger import inputs
+    from navcore.claims import inputs
 
     _write_pkg(tmp_path / "gic", GIC)
     sys.path.insert(0, str(tmp_path))

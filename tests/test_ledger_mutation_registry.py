@@ -24,9 +24,9 @@ import joblib
 import numpy as np
 import pytest
 
+from navcore.claims import core as ledger_core
+from navcore.claims import inputs as ledger_inputs
 from navcore.ledger import EXACT, Claim, Erratum, InputSet, evaluate, printed, registry
-from navcore.ledger import core as ledger_core
-from navcore.ledger import inputs as ledger_inputs
 
 IN = InputSet("WF", "mutation_registry")
 IN.published("arr", np.array([1.0, 2.5]), locator="Eq. (2)")
@@ -70,11 +70,12 @@ class _Exploding(types.ModuleType):
 
 
 # the synthetic source tree: paper module -> navcore.models.a -> navcore.models.b (in a
-# function); the ledger imports navcore.models.c, which is not followed
+# function); the claims' core imports navcore.models.c, which is not followed
 SOURCES = {
     "__init__.py": "",
+    "claims/__init__.py": "",
+    "claims/core.py": "import navcore.models.c\n",
     "ledger/__init__.py": "",
-    "ledger/core.py": "import navcore.models.c\n",
     "papers/__init__.py": "",
     "models/__init__.py": "",
     "models/a.py": "import os\n\n\ndef f():\n    from navcore.models import b\n    return b, os\n",
@@ -344,7 +345,7 @@ def test_imported_navcore_modules_at_any_level(tmp_path):
 
 def test_module_file_and_dependencies(synthetic):
     """The files a claim's evaluation depends on: its module, what it imports through other
-    modules (with each package's ``__init__``), the ledger's files (not their imports) and the
+    modules (with each package's ``__init__``), the claims' and the ledger's files (not their imports) and the
     data files. Oracle: the synthetic tree's import graph, followed by hand."""
     root = synthetic(standard_modules())
     assert registry._module_file("navcore.models.a") == root / "models" / "a.py"
@@ -353,9 +354,9 @@ def test_module_file_and_dependencies(synthetic):
     assert registry._module_file("navcore.models.nothing") is None
     assert registry._module_file("navcore.data") is None
     expected = (
-        "__init__.py", "data/read.txt", "data/rows.csv", "data/table.json", "ledger/__init__.py",
-        "ledger/core.py", "models/__init__.py", "models/a.py", "models/b.py", "papers/__init__.py",
-        "papers/wf_alpha.py",
+        "__init__.py", "claims/__init__.py", "claims/core.py", "data/read.txt", "data/rows.csv",
+        "data/table.json", "ledger/__init__.py", "models/__init__.py", "models/a.py", "models/b.py",
+        "papers/__init__.py", "papers/wf_alpha.py",
     )  # fmt: skip
     assert registry.claim_dependencies("WF-old-a1") == expected
     assert registry._module_dependencies(P + "wf_alpha") == tuple(root / p for p in expected)
