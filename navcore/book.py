@@ -25,8 +25,9 @@ from typing import Any
 from navcore import figures as _figures
 from navcore import ledger
 from navcore.claims.core import STATUSES
-from navcore.formatting import format_number, math_spans, number_formatter, tidy_numbers
+from navcore.formatting import estimate_text, format_number, math_spans, number_formatter, tidy_numbers
 from navcore.ledger.interactive import InteractiveLedger
+from navcore.ledger.summary import findings_phrase
 from navcore.ledger.tables import CountsTable, ErrataList, FindingsTable, LedgerTable, latex_table
 from navcore.ledger.text import _math_breaks
 
@@ -50,47 +51,6 @@ __all__ = [
     "table",
     "text_table",
 ]
-
-
-def estimate_text(value: float, se: float) -> str:
-    """A Monte Carlo estimate with its standard error, each with the digits the error supports.
-
-    The error is shown with two significant digits, the estimate rounded at the place of the
-    error's first significant digit (at least one digit), both by :func:`format_number`.
-
-    Parameters
-    ----------
-    value : float
-        The estimate.
-    se : float
-        Its standard error (positive and finite).
-
-    Returns
-    -------
-    str
-        ``"estimate ± error"``, e.g. ``"3×10⁻⁵ ± 1.2×10⁻⁵"``.
-
-    Raises
-    ------
-    ValueError
-        If ``se`` is not positive and finite, or ``value`` is not finite.
-
-    Examples
-    --------
-    >>> estimate_text(3.14e-5, 1.17e-5)
-    '3×10⁻⁵ ± 1.2×10⁻⁵'
-    >>> estimate_text(12.345, 0.26)
-    '12.3 ± 0.26'
-    """
-    import math
-
-    if not (math.isfinite(se) and se > 0):
-        raise ValueError(f"se must be a positive finite standard error, got {se!r}")
-    if not math.isfinite(value):
-        raise ValueError(f"value must be finite, got {value!r}")
-    place = math.floor(math.log10(se))
-    digits = math.floor(math.log10(abs(value))) - place + 1 if value else 1
-    return f"{format_number(value, digits=max(digits, 1))} ± {format_number(se, digits=2)}"
 
 
 def setup() -> None:
@@ -661,14 +621,6 @@ class Markdown:
         return self.markdown
 
 
-def _findings_phrase(items: Any) -> str:
-    """``"9 findings: 4 computed (2 inconsistent numbers, ...), 5 text-only (...)"``: the
-    verification report's phrase (one home, :func:`navcore.report.findings_phrase`)."""
-    from navcore.report import findings_phrase
-
-    return findings_phrase(items)
-
-
 def _claims_count(n: int) -> str:
     """``"1 claim"``, ``"46 claims"``."""
     return f"{n} claim{'' if n == 1 else 's'}"
@@ -723,7 +675,7 @@ def chapter_summary(paper: str) -> Markdown:
     found = ledger.errata(paper)
     parts = [f"{c[s]} {s}" for s in STATUSES if c[s]]
     md = (
-        f"**Ledger for {paper}:** {_findings_phrase(found)}. {_claims_count(c['total'])} — "
+        f"**Ledger for {paper}:** {findings_phrase(found)}. {_claims_count(c['total'])} — "
         + ", ".join(parts)
         + (f"; **{failing} failing their check**" if failing else "; every check passes")
         + "."
@@ -733,7 +685,7 @@ def chapter_summary(paper: str) -> Markdown:
         for s in STATUSES
     )
     html_text = (
-        f'<div class="ledger-summary"><b>Ledger for {paper}:</b> {html.escape(_findings_phrase(found))}.'
+        f'<div class="ledger-summary"><b>Ledger for {paper}:</b> {html.escape(findings_phrase(found))}.'
         f"<br>{_claims_count(c['total'])} &nbsp; {chips}"
         + (f"<b class='ledger-failing'>{failing} failing</b>" if failing else "every check passes")
         + "</div>"

@@ -265,6 +265,45 @@ def tidy_numbers(text: str) -> str:
     return _NEGATIVE_ZERO.sub(r"\1", _EXPONENT.sub(_exponent, text))
 
 
+def estimate_text(value: float, se: float) -> str:
+    """A Monte Carlo estimate with its standard error, each with the digits the error supports.
+
+    The error is shown with two significant digits, the estimate rounded at the place of the
+    error's first significant digit (at least one digit), both by :func:`format_number`.
+
+    Parameters
+    ----------
+    value : float
+        The estimate.
+    se : float
+        Its standard error (positive and finite).
+
+    Returns
+    -------
+    str
+        ``"estimate ± error"``, e.g. ``"3×10⁻⁵ ± 1.2×10⁻⁵"``.
+
+    Raises
+    ------
+    ValueError
+        If ``se`` is not positive and finite, or ``value`` is not finite.
+
+    Examples
+    --------
+    >>> estimate_text(3.14e-5, 1.17e-5)
+    '3×10⁻⁵ ± 1.2×10⁻⁵'
+    >>> estimate_text(12.345, 0.26)
+    '12.3 ± 0.26'
+    """
+    if not (math.isfinite(se) and se > 0):
+        raise ValueError(f"se must be a positive finite standard error, got {se!r}")
+    if not math.isfinite(value):
+        raise ValueError(f"value must be finite, got {value!r}")
+    place = math.floor(math.log10(se))
+    digits = math.floor(math.log10(abs(value))) - place + 1 if value else 1
+    return f"{format_number(value, digits=max(digits, 1))} ± {format_number(se, digits=2)}"
+
+
 # ---------------------------------------------------------------------------------------
 # units and plain-text math: what reads as program text outside ``$...$``
 

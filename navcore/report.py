@@ -57,6 +57,7 @@ from navcore.claims.core import (
     Erratum,
     Evaluation,
 )
+from navcore.ledger.summary import findings_phrase
 from navcore.provenance import BuildProvenance, build_provenance, project_root
 
 __all__ = [
@@ -189,32 +190,6 @@ def _frame_table(frame: Any) -> Table:
 
 # ---------------------------------------------------------------------------------------
 # the parts, as frames the book shows and the stand-alone report prints
-
-
-def findings_phrase(items: Sequence[Erratum]) -> str:
-    """``"9 findings: 4 computed (2 inconsistent numbers, ...), 5 text-only (...)"``.
-
-    Examples
-    --------
-    >>> findings_phrase([])
-    '0 findings'
-    >>> from navcore.ledger import Erratum
-    >>> findings_phrase([Erratum(id="SP-E9-doc", paper="SP", locator="Eq. (1)", printed="m",
-    ...                          finding="km", evidence="the scale", kind="units", basis="text-only")])
-    '1 finding: 1 text-only (1 unit)'
-    """
-    parts = []
-    for b in ERRATUM_BASES:
-        sel = [e for e in items if e.basis == b]
-        if sel:
-            kinds = ", ".join(
-                f"{n} {'unit' if n == 1 and k == 'units' else k.replace('-', ' ')}"
-                for k in ERRATUM_KINDS
-                if (n := sum(e.kind == k for e in sel))
-            )
-            parts.append(f"{len(sel)} {b} ({kinds})")
-    n = len(items)
-    return f"{n} finding{'' if n == 1 else 's'}" + (": " + ", ".join(parts) if parts else "")
 
 
 def findings_frame(errata: Sequence[Erratum]) -> Any:

@@ -33,6 +33,7 @@ __all__ = [
     "count_table",
     "finding_evidence",
     "findings_count_table",
+    "findings_phrase",
     "findings_text",
     "fitted_inputs_frame",
     "input_readers",
@@ -726,3 +727,41 @@ def sensitivity_frame(evals: Sequence[Evaluation]) -> Any:
             )
     columns = ["Assumed input / claim", "Low end", "Nominal", "High end", "Printed", "Verdict"]
     return pd.DataFrame(rows, columns=columns)
+
+
+def findings_phrase(items: Sequence[Erratum]) -> str:
+    """The findings in one phrase: their number, then per basis its count and its kinds
+    (``"9 findings: 4 computed (2 inconsistent numbers, ...), 5 text-only (...)"``).
+
+    Parameters
+    ----------
+    items : sequence of Erratum
+        The findings (errata) to count.
+
+    Returns
+    -------
+    str
+        The phrase, bases in the order of :data:`~navcore.claims.core.ERRATUM_BASES` and kinds
+        in that of :data:`~navcore.claims.core.ERRATUM_KINDS`; ``"0 findings"`` for none.
+
+    Examples
+    --------
+    >>> findings_phrase([])
+    '0 findings'
+    >>> from navcore.ledger import Erratum
+    >>> findings_phrase([Erratum(id="SP-E9-doc", paper="SP", locator="Eq. (1)", printed="m",
+    ...                          finding="km", evidence="the scale", kind="units", basis="text-only")])
+    '1 finding: 1 text-only (1 unit)'
+    """
+    parts = []
+    for b in ERRATUM_BASES:
+        sel = [e for e in items if e.basis == b]
+        if sel:
+            kinds = ", ".join(
+                f"{n} {'unit' if n == 1 and k == 'units' else k.replace('-', ' ')}"
+                for k in ERRATUM_KINDS
+                if (n := sum(e.kind == k for e in sel))
+            )
+            parts.append(f"{len(sel)} {b} ({kinds})")
+    n = len(items)
+    return f"{n} finding{'' if n == 1 else 's'}" + (": " + ", ".join(parts) if parts else "")
