@@ -13,6 +13,7 @@ import sys
 
 import pytest
 
+from navcore.claims.core import from_jsonable, jsonable
 from navcore.ledger import Claim, Erratum, Tolerance, evaluate, printed, validate_registry
 from navcore.ledger.tables import LedgerTable, json_dump
 from navcore.provenance import build_provenance
@@ -367,7 +368,7 @@ def test_evaluation_cache_round_trip(tmp_path, monkeypatch):
             assert ev.inputs == fresh.inputs
         assert any(isinstance(i["value"], list) for i in fresh.inputs)  # the case that differed
         for value in (float("inf"), -float("inf"), 1.5, None, True):
-            assert registry._from_json(registry._to_json(value)) == value
+            assert from_jsonable(jsonable(value, round_trip=True)) == value
     finally:
         registry.evaluate_claim.cache_clear()
 

@@ -21,6 +21,7 @@ from pathlib import Path
 import pytest
 
 from navcore import ledger
+from navcore.claims.core import jsonable
 from navcore.claims.inputs import InputReadError, all_inputs, overriding, recording
 from navcore.ledger import Claim, Evaluation, InputSet, Tolerance, evaluate, input_cache, printed, prose
 
@@ -484,9 +485,9 @@ def test_every_claims_value_is_the_stored_gates_bit_for_bit(paper):
             stale.append(f"{cid} (stored from other files)")
             continue
         fresh = {
-            "reproduced": registry._to_json(ev.reproduced),
-            "inputs": registry._to_json(ev.inputs),
-            "readings": _reading_values(registry._to_json(ev.readings)),
+            "reproduced": jsonable(ev.reproduced, round_trip=True),
+            "inputs": jsonable(ev.inputs, round_trip=True),
+            "readings": _reading_values(jsonable(ev.readings, round_trip=True)),
         }
         kept = {
             "reproduced": stored["reproduced"],

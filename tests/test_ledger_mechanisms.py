@@ -29,7 +29,14 @@ import itertools
 import pytest
 
 from navcore._validate import ModelDomainError
-from navcore.claims.core import MAX_CORNER_INPUTS, MAX_READING_COMBINATIONS, STATUSES, left_out_of_band
+from navcore.claims.core import (
+    MAX_CORNER_INPUTS,
+    MAX_READING_COMBINATIONS,
+    STATUSES,
+    from_jsonable,
+    jsonable,
+    left_out_of_band,
+)
 from navcore.claims.inputs import Input, overriding, recording
 from navcore.ledger import Claim, InputSet, Tolerance, evaluate, input_cache, printed
 from navcore.ledger.interactive import InteractiveLedger
@@ -628,7 +635,7 @@ def test_a_band_run_outside_the_models_domain_is_left_out_and_said():
     # the stored record round-trips the field (the cache and the parallel workers use these fields)
     from navcore.ledger import registry
 
-    stored = {k: registry._from_json(registry._to_json(getattr(ev, k))) for k in registry._RECORD_FIELDS}
+    stored = {k: from_jsonable(jsonable(getattr(ev, k), round_trip=True)) for k in registry._RECORD_FIELDS}
     assert stored["left_out"] == ({"case": "no fixed channels for this flight", "runs": 1},)
 
 

@@ -1862,33 +1862,61 @@ def _reading_result(reading: dict[str, Any]) -> tuple:
     )
 
 
+def _json_number(value: Any, *, round_trip: bool = False) -> Any:
+    """A number as JSON: a float; a non-finite one as text (``"Infinity"``, ``"-Infinity"``,
+    ``None`` for NaN) or, for a round trip, as ``{"float": "inf"}`` (:func:`from_jsonable`)."""
+    v = float(value)
+    if math.isfinite(v):
+        return v
+    if round_trip:
+        return {"float": repr(v)}
+    return None if math.isnan(v) else ("Infinity" if v > 0 else "-Infinity")
+
+
 def _json_value(value: Any) -> Any:
+    """A claim's value as its JSON record holds it: a truth value or ``None`` as it is, any
+    other value as a float (:func:`_json_number`)."""
     if value is None or isinstance(value, bool):
         return value
-    v = float(value)
-    if not math.isfinite(v):
-        return None if math.isnan(v) else ("Infinity" if v > 0 else "-Infinity")
-    return v
+    return _json_number(value)
 
 
-def jsonable(value: Any) -> Any:
-    """An input value as plain JSON (numbers, strings, lists, objects)."""
-    if value is None or isinstance(value, bool | str):
+def jsonable(value: Any, *, round_trip: bool = False) -> Any:
+    """A value as plain JSON (numbers, strings, lists, objects): the ledger's one JSON encoder.
+
+    For a reader (the export, the input records, the tools' records): a numpy value or array
+    as the Python value or list it holds, a key as text, a non-finite number as text, anything
+    else as its ``repr``. For a round trip (``round_trip=True``, the registry's stored
+    evaluations, read back by :func:`from_jsonable`): keys, integers and truth values as they
+    are, every other number as a float with a non-finite one kept exactly; a value that is no
+    number raises.
+    """
+    if value is None or isinstance(value, bool | str | int):
         return value
-    if isinstance(value, int):
-        return value
-    if isinstance(value, float):
-        return _json_value(value)
     if isinstance(value, dict):
-        return {str(k): jsonable(v) for k, v in value.items()}
-    if hasattr(value, "tolist"):
-        return jsonable(value.tolist())
+        return {(k if round_trip else str(k)): jsonable(v, round_trip=round_trip) for k, v in value.items()}
     if isinstance(value, list | tuple):
-        return [jsonable(v) for v in value]
+        return [jsonable(v, round_trip=round_trip) for v in value]
+    if round_trip:
+        return _json_number(value, round_trip=True)
+    if not isinstance(value, float) and hasattr(value, "tolist"):
+        return jsonable(value.tolist())
     try:
-        return _json_value(value)
+        return _json_number(value)
     except (TypeError, ValueError):
         return repr(value)
+
+
+def from_jsonable(value: Any, sequence: type = tuple) -> Any:
+    """Undo :func:`jsonable` with ``round_trip=True``; JSON arrays become ``sequence`` (tuples,
+    as the evaluation fields hold them; the recorded input values are plain JSON with lists)."""
+    if isinstance(value, dict):
+        if set(value) == {"float"}:
+            return float(value["float"])
+        return {k: from_jsonable(v, sequence) for k, v in value.items()}
+    if isinstance(value, list):
+        return sequence(from_jsonable(v, sequence) for v in value)
+    return value
 
 
 def _satisfies(value: float, relation: str, published: float, allowed: float) -> bool:

@@ -12,7 +12,6 @@ import contextlib
 import hashlib
 import importlib
 import json
-import math
 import os
 import pkgutil
 import time
@@ -22,7 +21,16 @@ from functools import cache
 from pathlib import Path
 from typing import Any
 
-from navcore.claims.core import PAPERS, STATUSES, Claim, Erratum, Evaluation, evaluate
+from navcore.claims.core import (
+    PAPERS,
+    STATUSES,
+    Claim,
+    Erratum,
+    Evaluation,
+    evaluate,
+    from_jsonable,
+    jsonable,
+)
 
 __all__ = [
     "cache_dir",
@@ -508,31 +516,6 @@ def cache_dir() -> Path | None:
     return parent / "claims"
 
 
-def _to_json(value: Any) -> Any:
-    if value is None or isinstance(value, bool | str):
-        return value
-    if isinstance(value, list | tuple):
-        return [_to_json(v) for v in value]
-    if isinstance(value, dict):
-        return {k: _to_json(v) for k, v in value.items()}
-    if isinstance(value, int):
-        return value
-    v = float(value)
-    return {"float": repr(v)} if not math.isfinite(v) else v
-
-
-def _from_json(value: Any, sequence: type = tuple) -> Any:
-    """Undo :func:`_to_json`; JSON arrays become ``sequence`` (tuples, as the evaluation fields
-    hold them; the recorded input values are plain JSON with lists, see ``core.jsonable``)."""
-    if isinstance(value, dict):
-        if set(value) == {"float"}:
-            return float(value["float"])
-        return {k: _from_json(v, sequence) for k, v in value.items()}
-    if isinstance(value, list):
-        return sequence(_from_json(v, sequence) for v in value)
-    return value
-
-
 _RECORD_FIELDS = (
     "reproduced",
     "passes",
@@ -587,8 +570,8 @@ def _cached(claim_id: str) -> Evaluation | None:
         c = claim(claim_id)
         from navcore.claims.core import resolve_tolerance
 
-        fields = {k: _from_json(data[k]) for k in _RECORD_FIELDS if k != "inputs"}
-        inputs = tuple(_from_json(data["inputs"], sequence=list))
+        fields = {k: from_jsonable(data[k]) for k in _RECORD_FIELDS if k != "inputs"}
+        inputs = tuple(from_jsonable(data["inputs"], sequence=list))
     except (OSError, ValueError, KeyError):
         return None
     return Evaluation(c, **fields, inputs=inputs, tolerance=resolve_tolerance(c))
@@ -598,7 +581,7 @@ def _store(ev: Evaluation) -> None:
     folder = cache_dir()
     if folder is None:
         return
-    data = {k: _to_json(getattr(ev, k)) for k in _RECORD_FIELDS}
+    data = {k: jsonable(getattr(ev, k), round_trip=True) for k in _RECORD_FIELDS}
     data["key"] = _claim_key(ev.claim.id)
     data["strict"] = _strict_evaluation()
     data["dependencies"] = list(claim_dependencies(ev.claim.id))
