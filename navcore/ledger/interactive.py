@@ -1,6 +1,6 @@
 """The whole ledger as one interactive table (:class:`InteractiveLedger`): filters, columns
 and a download of what is shown, run by a small script shipped with the package
-(``ledger.js``, read with :mod:`importlib.resources`).
+(``ledger.js``, read with ``importlib.resources``).
 """
 
 from __future__ import annotations
