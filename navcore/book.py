@@ -219,8 +219,8 @@ def counts_table(paper: str | None = None) -> CountsTable:
     >>> ev = evaluate(c)
     >>> row = {"reproduced": 1, "consistent": 0, "inconsistent": 0, "discrepant": 0,
     ...        "not-reproducible": 0, "total": 1}
-    >>> with mock.patch("navcore.ledger.registry.counts", return_value={"SP": row}):
-    ...     with mock.patch("navcore.ledger.registry.evaluations", return_value=[ev]):
+    >>> with mock.patch("navcore.ledger.tables.counts", return_value={"SP": row}):
+    ...     with mock.patch("navcore.ledger.tables.evaluations", return_value=[ev]):
     ...         print(repr(counts_table("SP")))
     Paper  reproduced  consistent  inconsistent  discrepant  not-reproducible  total  failing check
     SP  1  0  0  0  0  1  0
