@@ -26,7 +26,7 @@ def _cmd_ledger(args: argparse.Namespace) -> int:
     import time
 
     from navcore import ledger
-    from navcore.ledger.render import csv_export, json_export, text_table
+    from navcore.ledger.tables import csv_export, json_export, text_table
     from navcore.provenance import build_provenance
 
     start = time.perf_counter()

@@ -24,18 +24,12 @@ from typing import Any
 
 from navcore import figures as _figures
 from navcore import ledger
-from navcore.formatting import format_number, number_formatter, tidy_numbers
-from navcore.ledger.core import STATUSES
-from navcore.ledger.render import (
-    CountsTable,
-    ErrataList,
-    FindingsTable,
-    InteractiveLedger,
-    LedgerTable,
-    _math_breaks,
-    latex_table,
-    math_spans,
-)
+from navcore.claims.core import STATUSES
+from navcore.formatting import estimate_text, format_number, math_spans, number_formatter, tidy_numbers
+from navcore.ledger.interactive import InteractiveLedger
+from navcore.ledger.summary import findings_phrase
+from navcore.ledger.tables import CountsTable, ErrataList, FindingsTable, LedgerTable, latex_table
+from navcore.ledger.text import _math_breaks
 
 __all__ = [
     "Markdown",
@@ -60,47 +54,6 @@ __all__ = [
     "table",
     "text_table",
 ]
-
-
-def estimate_text(value: float, se: float) -> str:
-    """A Monte Carlo estimate with its standard error, each with the digits the error supports.
-
-    The error is shown with two significant digits, the estimate rounded at the place of the
-    error's first significant digit (at least one digit), both by :func:`format_number`.
-
-    Parameters
-    ----------
-    value : float
-        The estimate.
-    se : float
-        Its standard error (positive and finite).
-
-    Returns
-    -------
-    str
-        ``"estimate ± error"``, e.g. ``"3×10⁻⁵ ± 1.2×10⁻⁵"``.
-
-    Raises
-    ------
-    ValueError
-        If ``se`` is not positive and finite, or ``value`` is not finite.
-
-    Examples
-    --------
-    >>> estimate_text(3.14e-5, 1.17e-5)
-    '3×10⁻⁵ ± 1.2×10⁻⁵'
-    >>> estimate_text(12.345, 0.26)
-    '12.3 ± 0.26'
-    """
-    import math
-
-    if not (math.isfinite(se) and se > 0):
-        raise ValueError(f"se must be a positive finite standard error, got {se!r}")
-    if not math.isfinite(value):
-        raise ValueError(f"value must be finite, got {value!r}")
-    place = math.floor(math.log10(se))
-    digits = math.floor(math.log10(abs(value))) - place + 1 if value else 1
-    return f"{format_number(value, digits=max(digits, 1))} ± {format_number(se, digits=2)}"
 
 
 def setup() -> None:
@@ -294,7 +247,7 @@ def claims_table(
     Returns
     -------
     LedgerTable
-        The table (:class:`~navcore.ledger.render.LedgerTable`); the selected claims are
+        The table (:class:`~navcore.ledger.tables.LedgerTable`); the selected claims are
         evaluated (memoised, :func:`~navcore.ledger.registry.evaluate_claim`).
 
     Raises
@@ -347,7 +300,7 @@ def counts_table(paper: str | None = None) -> CountsTable:
     Returns
     -------
     CountsTable
-        The table (:class:`~navcore.ledger.render.CountsTable`): per paper, the claims with
+        The table (:class:`~navcore.ledger.tables.CountsTable`): per paper, the claims with
         each derived verdict, the total and the number failing their check.
 
     Examples
@@ -364,8 +317,8 @@ def counts_table(paper: str | None = None) -> CountsTable:
     >>> ev = evaluate(c)
     >>> row = {"reproduced": 1, "consistent": 0, "inconsistent": 0, "discrepant": 0,
     ...        "not-reproducible": 0, "total": 1}
-    >>> with mock.patch("navcore.ledger.render.counts", return_value={"SP": row}):
-    ...     with mock.patch("navcore.ledger.render.evaluations", return_value=[ev]):
+    >>> with mock.patch("navcore.ledger.tables.counts", return_value={"SP": row}):
+    ...     with mock.patch("navcore.ledger.tables.evaluations", return_value=[ev]):
     ...         print(repr(counts_table("SP")))
     Paper  reproduced  consistent  inconsistent  discrepant  not-reproducible  total  failing check
     SP  1  0  0  0  0  1  0
@@ -390,7 +343,7 @@ def errata_list(paper: str | None = None, *, root: str | None = None, caveat: bo
     Returns
     -------
     ErrataList
-        The list (:class:`~navcore.ledger.render.ErrataList`), one entry per erratum.
+        The list (:class:`~navcore.ledger.tables.ErrataList`), one entry per erratum.
 
     Raises
     ------
@@ -483,7 +436,7 @@ def findings_table(
     Returns
     -------
     FindingsTable
-        The table (:class:`~navcore.ledger.render.FindingsTable`); the text-only caveat
+        The table (:class:`~navcore.ledger.tables.FindingsTable`); the text-only caveat
         follows the counts once.
 
     Raises
@@ -524,7 +477,7 @@ def ledger_table(paper: str | None = None, *, root: str | None = None) -> Intera
     Returns
     -------
     InteractiveLedger
-        The table (:class:`~navcore.ledger.render.InteractiveLedger`); every selected claim
+        The table (:class:`~navcore.ledger.interactive.InteractiveLedger`); every selected claim
         is evaluated.
 
     Raises
@@ -822,14 +775,6 @@ class Markdown:
         return self.markdown
 
 
-def _findings_phrase(items: Any) -> str:
-    """``"9 findings: 4 computed (2 inconsistent numbers, ...), 5 text-only (...)"``: the
-    verification report's phrase (one home, :func:`navcore.report.findings_phrase`)."""
-    from navcore.report import findings_phrase
-
-    return findings_phrase(items)
-
-
 def _claims_count(n: int) -> str:
     """``"1 claim"``, ``"46 claims"``."""
     return f"{n} claim{'' if n == 1 else 's'}"
@@ -884,7 +829,7 @@ def chapter_summary(paper: str) -> Markdown:
     found = ledger.errata(paper)
     parts = [f"{c[s]} {s}" for s in STATUSES if c[s]]
     md = (
-        f"**Ledger for {paper}:** {_findings_phrase(found)}. {_claims_count(c['total'])} — "
+        f"**Ledger for {paper}:** {findings_phrase(found)}. {_claims_count(c['total'])} — "
         + ", ".join(parts)
         + (f"; **{failing} failing their check**" if failing else "; every check passes")
         + "."
@@ -894,7 +839,7 @@ def chapter_summary(paper: str) -> Markdown:
         for s in STATUSES
     )
     html_text = (
-        f'<div class="ledger-summary"><b>Ledger for {paper}:</b> {html.escape(_findings_phrase(found))}.'
+        f'<div class="ledger-summary"><b>Ledger for {paper}:</b> {html.escape(findings_phrase(found))}.'
         f"<br>{_claims_count(c['total'])} &nbsp; {chips}"
         + (f"<b class='ledger-failing'>{failing} failing</b>" if failing else "every check passes")
         + "</div>"

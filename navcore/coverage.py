@@ -29,9 +29,8 @@ from __future__ import annotations
 import json
 from dataclasses import dataclass
 from functools import cache
+from pathlib import Path
 from typing import Any
-
-from navcore.traceability import ITEMS_SNAPSHOT
 
 __all__ = [
     "CATEGORIES",
@@ -46,6 +45,13 @@ __all__ = [
 
 CATEGORIES = ("quantity", "statement", "equation", "input", "context")
 COUNTED = ("quantity", "statement")  # the quantitative items of the coverage percentage
+
+#: Snapshot of every paper's items (:func:`navcore.traceability.paper_items_from_text`) and of
+#: the printed-item inventory (key ``"printed"``), committed so that the guard also runs where
+#: the papers' texts are not beside the checkout (a clean CI machine).
+#: ``tests/test_traceability.py`` fails when it differs from the texts; rewrite it with
+#: ``python -c "from navcore import traceability; traceability.write_items_snapshot()"``.
+ITEMS_SNAPSHOT = Path(__file__).resolve().parent / "papers" / "paper_items.json"
 
 
 @dataclass(frozen=True)
@@ -273,7 +279,7 @@ def summary_frame() -> Any:
     Returns
     -------
     pandas.DataFrame
-        One row per paper of :data:`~navcore.ledger.core.PAPERS` (from :func:`summary`),
+        One row per paper of :data:`~navcore.claims.core.PAPERS` (from :func:`summary`),
         columns ``Paper``, ``Printed items``, ``With a claim``, ``Covered`` (a percentage as
         text), ``Numbered equations``, ``Checked by a claim``, ``Errata`` and ``Errata with
         a claim``.

@@ -15,7 +15,9 @@ after the minus sign) or ``{180.0: 18.019433953373785}``. The book prints what t
 * a mapping or sequence of numbers element by element (``180: 18.0``).
 
 :func:`format_number` is the function; :func:`number_formatter` makes the one-argument
-callable that ``pandas.io.formats.style.Styler.format`` takes.
+callable that ``pandas.io.formats.style.Styler.format`` takes. A unit is printed by
+:func:`unit_text` (``m³/s²``, not ``m^3/s^2``); :func:`plain_math` finds the plain-text math a
+reader should not see outside ``$...$`` (:func:`math_spans` cuts a text at its math).
 
 Examples
 --------
@@ -38,7 +40,15 @@ import re
 from collections.abc import Callable, Mapping
 from typing import Any
 
-__all__ = ["KINDS", "format_number", "number_formatter", "tidy_numbers"]
+__all__ = [
+    "KINDS",
+    "format_number",
+    "math_spans",
+    "number_formatter",
+    "plain_math",
+    "tidy_numbers",
+    "unit_text",
+]
 
 #: What a value can be; each kind sets its significant digits and notation.
 KINDS = ("quantity", "count", "residual", "percent", "exact")
@@ -253,3 +263,250 @@ def tidy_numbers(text: str) -> str:
     '0.000 and 2.5'
     """
     return _NEGATIVE_ZERO.sub(r"\1", _EXPONENT.sub(_exponent, text))
+
+
+def estimate_text(value: float, se: float) -> str:
+    """A Monte Carlo estimate with its standard error, each with the digits the error supports.
+
+    The error is shown with two significant digits, the estimate rounded at the place of the
+    error's first significant digit (at least one digit), both by :func:`format_number`.
+
+    Parameters
+    ----------
+    value : float
+        The estimate.
+    se : float
+        Its standard error (positive and finite).
+
+    Returns
+    -------
+    str
+        ``"estimate ± error"``, e.g. ``"3×10⁻⁵ ± 1.2×10⁻⁵"``.
+
+    Raises
+    ------
+    ValueError
+        If ``se`` is not positive and finite, or ``value`` is not finite.
+
+    Examples
+    --------
+    >>> estimate_text(3.14e-5, 1.17e-5)
+    '3×10⁻⁵ ± 1.2×10⁻⁵'
+    >>> estimate_text(12.345, 0.26)
+    '12.3 ± 0.26'
+    """
+    if not (math.isfinite(se) and se > 0):
+        raise ValueError(f"se must be a positive finite standard error, got {se!r}")
+    if not math.isfinite(value):
+        raise ValueError(f"value must be finite, got {value!r}")
+    place = math.floor(math.log10(se))
+    digits = math.floor(math.log10(abs(value))) - place + 1 if value else 1
+    return f"{format_number(value, digits=max(digits, 1))} ± {format_number(se, digits=2)}"
+
+
+# ---------------------------------------------------------------------------------------
+# units and plain-text math: what reads as program text outside ``$...$``
+
+_GREEK = (
+    "alpha|beta|gamma|delta|epsilon|zeta|eta|theta|kappa|lambda|mu|nu|xi|pi|rho|sigma|tau|phi|chi|"
+    "psi|omega|Gamma|Delta|Theta|Lambda|Sigma|Phi|Psi|Omega|dtheta|dphi"
+)
+
+
+#: Plain-text math, by kind: what each pattern finds in text outside ``$...$``. One list for the
+#: registry's texts (the tests), the docstrings' prose and the text of the built book's pages
+#: (the release gate ``tools/check_book.py``), and for :func:`unit_text`, which sets a unit
+#: that holds one of them as math.
+PLAIN_MATH_PATTERNS = {
+    "e-notation": re.compile(r"(?<![\w.])\d+(?:\.\d+)?[eE][+-]?\d+\b"),
+    "flat subscript": re.compile(r"\b[A-Za-z]+_[A-Za-z0-9]+\b"),
+    "Greek name": re.compile(rf"\b(?:{_GREEK})(?:\d+|_\w+)?\b"),
+    "power": re.compile(r"\w\)?\^[-+(\w]|\*\*"),
+    "sqrt(": re.compile(r"\bsqrt\("),
+    "cross-product bracket": re.compile(r"\[\s*\w+\s+x\s*\]"),
+    "(x) product": re.compile(r"\(x\)"),
+    "symbol with a flat 0": re.compile(r"\b[A-Za-z]0\b"),
+    "derivative quotient": re.compile(r"\bd[A-Za-z]/d[A-Za-z]\b"),
+}
+
+
+#: A starred symbol (``h1*``, the hypothesis :math:`h_1^*`).
+PLAIN_STARRED = re.compile(r"(?<![\w\\*])[A-Za-z]\d?\*(?![\w*])")
+
+
+#: LaTeX source outside math (``tau_{i+1}``, ``e^{+jnv}``, ``\bar``).
+PLAIN_LATEX_SOURCE = re.compile(r"\\[A-Za-z]{2,}(?![A-Za-z])|[_^]\{")
+
+
+def plain_math(text: str) -> list[tuple[str, str]]:
+    r"""The plain-text math outside the ``$...$`` spans of ``text``: each hit of
+    ``PLAIN_MATH_PATTERNS``, a starred symbol and LaTeX source, as ``(kind, text found)``.
+
+    Parameters
+    ----------
+    text : str
+        A text a reader sees (a note, a quantity, a unit, a page's words), with its math in
+        ``$...$``.
+
+    Returns
+    -------
+    list of (str, str)
+        Each hit as its kind (a key of ``PLAIN_MATH_PATTERNS``, ``"starred symbol"`` or
+        ``"LaTeX source"``) and the text it found, in the order of the patterns; empty when
+        every formula is set as math.
+
+    Examples
+    --------
+    >>> plain_math("beyond 10 mm/s^2 at rho = 0.25")
+    [('Greek name', 'rho'), ('power', 's^2')]
+    >>> plain_math(r"beyond 10 $\mathrm{mm/s}^2$ at $\rho = 0.25$")
+    []
+    """
+    found = []
+    for is_math, piece in math_spans(text):
+        if not is_math:
+            found += [
+                (kind, m.group(0)) for kind, pat in PLAIN_MATH_PATTERNS.items() for m in pat.finditer(piece)
+            ]
+            found += [("starred symbol", m.group(0)) for m in PLAIN_STARRED.finditer(piece)]
+            found += [("LaTeX source", m.group(0)) for m in PLAIN_LATEX_SOURCE.finditer(piece)]
+    return found
+
+
+#: One atom of a unit: ``sqrt(...)``, a name with an optional subscript (``tau_c``, ``N_T``) and
+#: an optional power (``m^3``, ``deg^2``, ``e^*``), or a number with an optional power (``10^8``).
+_UNIT_ATOM = re.compile(
+    r"sqrt\((?P<root>[^()]+)\)"
+    r"|(?P<name>[A-Za-z]+)(?:_(?P<sub>[A-Za-z0-9]+))?(?:\^(?P<pow>[-+]?\w+|\*))?"
+    r"|(?P<num>\d+(?:\.\d+)?)(?:\^(?P<npow>[-+]?\w+))?"
+)
+
+
+_GREEK_NAMES = frozenset(_GREEK.split("|")) - {"dtheta", "dphi"}
+
+
+def _unit_atom_tex(m: re.Match[str], symbol: bool) -> str:
+    if m.group("root"):
+        return r"\sqrt{" + _unit_tex(m.group("root"), symbol=False) + "}"
+    if m.group("num"):
+        return m.group("num") + (f"^{{{m.group('npow')}}}" if m.group("npow") else "")
+    name, sub, power = m.group("name"), m.group("sub"), m.group("pow")
+    if name in _GREEK_NAMES:
+        out = "\\" + name
+    elif symbol or sub:  # a symbol of a formula (N, N_T): italic
+        out = name
+    else:  # a unit's symbol (m, s, deg): upright
+        out = rf"\mathrm{{{name}}}"
+    if sub:
+        out += f"_{{{sub}}}"
+    if power:
+        out += f"^{{{power}}}"
+    return out
+
+
+def _unit_tex(token: str, *, symbol: bool) -> str:
+    """A token of a unit (no spaces) as LaTeX math, atom by atom; other characters as they are."""
+    out, pos = [], 0
+    for m in _UNIT_ATOM.finditer(token):
+        out.append(token[pos : m.start()] + _unit_atom_tex(m, symbol))
+        pos = m.end()
+    return "".join(out) + token[pos:]
+
+
+_SUPERSCRIPTS = str.maketrans("0123456789-+", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁺")
+
+
+#: An integer power of a unit's symbol or of a number (``m^3``, ``10^8``), and a root of one.
+_UNIT_POWER = re.compile(r"(?<=[A-Za-z0-9)])\^([-+]?\d+)(?![\w^])")
+
+
+_UNIT_ROOT = re.compile(r"\bsqrt\((\w+)\)")
+
+
+def unit_text(unit: str) -> str:
+    r"""A unit as a reader sees it: a power as a superscript, a root as a radical and a unit
+    that is a formula as ``$...$`` math; a plain unit (``m/s``, ``dB-Hz``) as it is.
+
+    The ledger keeps units as plain strings (its JSON and CSV exports carry them so); every
+    table and text a reader sees shows them through this function, with
+    :func:`~navcore.ledger.text.html_text` or :func:`~navcore.ledger.text.tex_text`. A unit is
+    rewritten only when it holds plain-text math (``PLAIN_MATH_PATTERNS``). A unit of symbols
+    takes its powers and roots as the registry's own units write them (``m/s²``,
+    ``deg/h/√Hz``): superscripts and radicals in the text, which stays upright and breaks
+    after its slashes as any unit. A unit that is a formula, with a Greek letter, a subscript
+    or a symbol standing alone (the :math:`N` of :math:`N\tau_{c}/\alpha`), is set as math;
+    its words (``parts in``) stay text.
+
+    Parameters
+    ----------
+    unit : str
+        A claim's or an input's unit, as the registry holds it.
+
+    Returns
+    -------
+    str
+        The unit as text, with ``$...$`` around what is math.
+
+    Examples
+    --------
+    >>> unit_text("m/s"), unit_text("m^3/s^2"), unit_text("deg^2"), unit_text("rad/s/sqrt(s)")
+    ('m/s', 'm³/s²', 'deg²', 'rad/s/√s')
+    >>> unit_text("parts in 10^8")
+    'parts in 10⁸'
+    >>> print(unit_text("N tau_c / alpha"), unit_text("N_T"))
+    $N \tau_{c} / \alpha$ $N_{T}$
+    """
+    if not plain_math(unit):
+        return unit
+    text = _UNIT_ROOT.sub(r"√\1", _UNIT_POWER.sub(lambda m: m.group(1).translate(_SUPERSCRIPTS), unit))
+    if not plain_math(text):
+        return text
+    tokens = unit.split()
+    # a single letter standing alone is a symbol of a formula (the N of N tau_c / alpha)
+    formula = any(len(t) == 1 and t.isalpha() for t in tokens)
+    runs: list[tuple[bool, list[str]]] = []
+    for t in tokens:
+        is_word = t.isalpha() and len(t) > 1 and t not in _GREEK_NAMES
+        piece = t if is_word else _unit_tex(t, symbol=formula)
+        if runs and runs[-1][0] == (not is_word):
+            runs[-1][1].append(piece)
+        else:
+            runs.append((not is_word, [piece]))
+    return " ".join(f"${' '.join(ts)}$" if is_math else " ".join(ts) for is_math, ts in runs)
+
+
+_MATH = re.compile(r"(?<![\\$])\$(?=[^\s$])([^$]*?[^\s\\$])\$(?!\$)")
+
+
+def math_spans(text: str) -> list[tuple[bool, str]]:
+    """``text`` cut into ``(is_math, piece)``: ``$...$`` is inline math.
+
+    A dollar sign followed by a space (``50,000 $ INS``) or escaped (``\\$``) is not math,
+    so prices and lone dollar signs stay text.
+
+    Parameters
+    ----------
+    text : str
+        A note, quantity or erratum text.
+
+    Returns
+    -------
+    list of tuple of (bool, str)
+        The pieces in order, ``True`` for the inside of a ``$...$`` span (without the dollar
+        signs), ``False`` for text.
+
+    Examples
+    --------
+    >>> math_spans("gain $K_1$ costs 50 $ more")
+    [(False, 'gain '), (True, 'K_1'), (False, ' costs 50 $ more')]
+    """
+    out: list[tuple[bool, str]] = []
+    pos = 0
+    for m in _MATH.finditer(text):
+        if m.start() > pos:
+            out.append((False, text[pos : m.start()]))
+        out.append((True, m.group(1)))
+        pos = m.end()
+    if pos < len(text):
+        out.append((False, text[pos:]))
+    return out

@@ -48,7 +48,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from navcore.ledger.core import (
+from navcore.claims.core import (
     ERRATUM_BASES,
     ERRATUM_KINDS,
     PAPERS,
@@ -57,6 +57,7 @@ from navcore.ledger.core import (
     Erratum,
     Evaluation,
 )
+from navcore.ledger.summary import findings_phrase
 from navcore.provenance import BuildProvenance, build_provenance, project_root
 
 __all__ = [
@@ -191,32 +192,6 @@ def _frame_table(frame: Any) -> Table:
 # the parts, as frames the book shows and the stand-alone report prints
 
 
-def findings_phrase(items: Sequence[Erratum]) -> str:
-    """``"9 findings: 4 computed (2 inconsistent numbers, ...), 5 text-only (...)"``.
-
-    Examples
-    --------
-    >>> findings_phrase([])
-    '0 findings'
-    >>> from navcore.ledger import Erratum
-    >>> findings_phrase([Erratum(id="SP-E9-doc", paper="SP", locator="Eq. (1)", printed="m",
-    ...                          finding="km", evidence="the scale", kind="units", basis="text-only")])
-    '1 finding: 1 text-only (1 unit)'
-    """
-    parts = []
-    for b in ERRATUM_BASES:
-        sel = [e for e in items if e.basis == b]
-        if sel:
-            kinds = ", ".join(
-                f"{n} {'unit' if n == 1 and k == 'units' else k.replace('-', ' ')}"
-                for k in ERRATUM_KINDS
-                if (n := sum(e.kind == k for e in sel))
-            )
-            parts.append(f"{len(sel)} {b} ({kinds})")
-    n = len(items)
-    return f"{n} finding{'' if n == 1 else 's'}" + (": " + ", ".join(parts) if parts else "")
-
-
 def findings_frame(errata: Sequence[Erratum]) -> Any:
     """The findings counted by kind (rows) and basis (columns), with the totals.
 
@@ -227,7 +202,7 @@ def findings_frame(errata: Sequence[Erratum]) -> Any:
     -------
     pandas.DataFrame
         Columns ``Kind``, one per basis that has findings, and ``all``; one row per kind of
-        :data:`~navcore.ledger.core.ERRATUM_KINDS` and a last row ``all``, the counts of
+        :data:`~navcore.claims.core.ERRATUM_KINDS` and a last row ``all``, the counts of
         :func:`navcore.ledger.summary.findings_count_table`.
 
     Examples
@@ -387,7 +362,7 @@ def unresolved_frame(evals: Sequence[Evaluation]) -> Any:
     """
     import pandas as pd
 
-    from navcore.ledger.render import (
+    from navcore.ledger.text import (
         _agreeing_reading_text,
         _band_text,
         _printed_text,
@@ -789,7 +764,7 @@ def build_report(
     Parameters
     ----------
     paper : str
-        Paper key, one of :data:`~navcore.ledger.core.PAPERS`.
+        Paper key, one of :data:`~navcore.claims.core.PAPERS`.
     evals : sequence of Evaluation, optional
         The paper's evaluations; ``None`` evaluates them through the ledger (and its on-disk
         cache, :func:`~navcore.ledger.registry.cache_dir`).
@@ -1039,7 +1014,8 @@ def _raw_latex_table(t: Table, intro: str = "") -> str:
     paragraph that introduces the table, is set in the table's first head when the table takes
     the full width, so that no page break parts the two (else it precedes the table, with room
     kept for a few rows)."""
-    from navcore.ledger.render import fit_math, latex_table
+    from navcore.ledger.tables import latex_table
+    from navcore.ledger.text import fit_math
 
     rows = [list(r) for r in t.rows]
     wide: dict[int, str] = {}
@@ -1070,7 +1046,7 @@ def _raw_latex_table(t: Table, intro: str = "") -> str:
 
 def _tex_paragraph(text: str) -> str:
     """A paragraph for LaTeX: an opening ``**...**`` in bold, ``$...$`` as math."""
-    from navcore.ledger.render import tex_text
+    from navcore.ledger.text import tex_text
 
     m = re.match(r"^\*\*(.+?)\*\*(.*)$", text, re.S)
     return rf"\textbf{{{tex_text(m.group(1))}}}{tex_text(m.group(2))}" if m else tex_text(text)
@@ -1098,9 +1074,9 @@ _PREAMBLE = r"""\documentclass[10pt]{article}
 def to_latex(report: Report) -> str:
     r"""The report as a stand-alone XeLaTeX document; its title page carries the provenance.
 
-    Tables are the book's printed tables (:func:`navcore.ledger.render.latex_table`, which
+    Tables are the book's printed tables (:func:`navcore.ledger.tables.latex_table`, which
     fit the text width); the findings are the errata page's printed list
-    (:class:`navcore.ledger.render.ErrataList`).
+    (:class:`navcore.ledger.tables.ErrataList`).
 
     Examples
     --------
@@ -1110,7 +1086,8 @@ def to_latex(report: Report) -> str:
     >>> r"50 \% of $K_1$." in tex, tex.rstrip().endswith(r"\end{document}")
     (True, True)
     """
-    from navcore.ledger.render import FIT_MATH_PREAMBLE, ErrataList, _tex_breakable, _tex_escape
+    from navcore.ledger.tables import ErrataList
+    from navcore.ledger.text import FIT_MATH_PREAMBLE, _tex_breakable, _tex_escape
 
     p = report.provenance
     date = p.date if p.date != "unknown" else "commit date unknown"

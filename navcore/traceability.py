@@ -27,6 +27,8 @@ from dataclasses import dataclass, field
 from functools import cache
 from pathlib import Path
 
+from navcore import coverage
+from navcore.coverage import ITEMS_SNAPSHOT
 from navcore.trace import Implementation, Ref, registry
 
 __all__ = [
@@ -174,13 +176,6 @@ def items_in_text(text: str, *, dotted: bool = False) -> set[str]:
     return found
 
 
-#: Snapshot of :func:`paper_items_from_text` for every paper, committed so that the guard also
-#: runs where the papers' texts are not beside the checkout (a clean CI machine).
-#: ``tests/test_traceability.py`` fails when it differs from the texts; rewrite it with
-#: ``python -c "from navcore import traceability; traceability.write_items_snapshot()"``.
-ITEMS_SNAPSHOT = Path(__file__).resolve().parent / "papers" / "paper_items.json"
-
-
 def paper_text_path(paper: str) -> Path:
     """Where the paper's text is expected: ``../shared/papers`` beside the checkout."""
     return ROOT.parent / "shared" / "papers" / PAPER_FILES[paper]
@@ -219,7 +214,7 @@ def paper_items(paper: str) -> frozenset[str] | None:
 
 
 def write_items_snapshot() -> Path:
-    """Write :data:`ITEMS_SNAPSHOT` from the papers' texts (all four must be present).
+    """Write :data:`~navcore.coverage.ITEMS_SNAPSHOT` from the papers' texts (all four must be present).
 
     The printed-item inventory kept in the same file (key ``"printed"``, read by
     :mod:`navcore.coverage`) is carried over unchanged. The file is part of the source tree,
@@ -447,8 +442,6 @@ def claim_refs(locator: str, paper: str) -> list[Ref]:
 
 def _inventory_claims() -> dict[Ref, list[str]]:
     """Equation -> the claims the coverage inventory names for it (in the inventory's order)."""
-    from navcore import coverage
-
     out: dict[Ref, list[str]] = {}
     for it in coverage.items():
         if it.category != "equation" or not it.claims:

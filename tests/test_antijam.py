@@ -326,7 +326,7 @@ def test_bad_input_raises(call, match) -> None:
 def test_sp_exact_impact_covariance_matches_monte_carlo() -> None:
     """Oracle: the seeded Monte Carlo of the same reduced navigator (4000 runs, seed 11) for the SP
     PGM claims' exact CEP, at a power with an outage (100 W) and one without (1 W)."""
-    from navcore.ledger.inputs import recording
+    from navcore.claims.inputs import recording
     from navcore.papers import sp_antijam as spj
 
     with recording():

@@ -59,8 +59,8 @@ def unresolved(qualname: str, doc: str) -> list[str]:
 
 
 def test_the_check_finds_a_reference_to_a_helper_outside_all():
-    doc = "Uses :func:`quote_math` and :func:`~quote_below`; see :class:`LedgerTable` and :meth:`latex`."
-    found = unresolved("navcore.ledger.render.LedgerTable", doc)
+    doc = "Uses :func:`quote_math` and :func:`~quote_below`; see :func:`tex_text`."
+    found = unresolved("navcore.ledger.text.quote_text", doc)
     assert found == [":func:`quote_below`"]
 
 

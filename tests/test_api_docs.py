@@ -40,6 +40,7 @@ SUBPACKAGES = (
     "integration",
     "detection",
     "location",
+    "claims",
     "ledger",
 )
 TODO = ROOT / "tests" / "api_docs_todo.txt"

@@ -89,7 +89,7 @@ def test_pulse_energy_input_matches_printed_power_and_duration() -> None:
     The thresholds read the one published pulse input IN.pulse_energy_j (the printed 10 mJ); it must
     equal the printed P0 tau, and changing it must move every ERP by the same dB.
     """
-    from navcore.ledger.inputs import overriding
+    from navcore.claims.inputs import overriding
 
     assert paper.IN.pulse_power_dbw == 30.0 and paper.IN.pulse_duration_s == 10e-6
     assert paper.geometry().pulse_energy_j == pytest.approx(1000.0 * 10e-6, rel=1e-15)
@@ -155,7 +155,7 @@ def test_threshold_helpers_for_the_errata() -> None:
 def test_errata_numbers_match_the_model() -> None:
     """Oracle: the model itself. The errata are declared before anything is computed, so their
     numbers are typed; this test recomputes each and checks the text."""
-    from navcore.ledger.inputs import recording
+    from navcore.claims.inputs import recording
 
     text = {e.id: e.finding + " " + e.evidence for e in paper.ERRATA}
     g = paper.geometry()
@@ -171,7 +171,7 @@ def test_errata_numbers_match_the_model() -> None:
 def test_pencil_beam_constant_is_solved_from_sec_27() -> None:
     """Oracle: hand arithmetic, C = 20^2 x 10^((33 - 10 log10 30)/10); the declared fitted value is that
     solution (to three figures), and the K = 1 claim does not depend on it."""
-    from navcore.ledger.inputs import overriding, recording
+    from navcore.claims.inputs import overriding, recording
 
     c = 20.0**2 * 10 ** ((33.0 - 10 * math.log10(30.0)) / 10)
     inp = paper.IN.input("pencil_beam_constant_deg2")

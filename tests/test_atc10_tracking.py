@@ -76,7 +76,7 @@ def test_table_4_3_cell_at_the_edge_reaches_printed_only_at_a_corner():
     """Table 4.3 Ex I, 50 ns, col. v reaches 450 +- 0.5 only at a corner of the rounding box."""
     import itertools
 
-    from navcore.ledger.inputs import overriding
+    from navcore.claims.inputs import overriding
 
     names = [f"tab42_exI_{c}_unrounded" for c in paper.COLUMNS] + ["tab43_exI_s50_psi_unrounded"]
     best = 0.0

@@ -370,7 +370,7 @@ def test_a_claim_rows_quoted_display_equation_fits_its_column_on_a_screen_and_a_
     import shutil
 
     from navcore.ledger import EXACT, Claim, evaluate
-    from navcore.ledger.render import LedgerTable
+    from navcore.ledger.tables import LedgerTable
 
     module, _ = layout
     shutil.copy(_mathjax(), tmp_path / "tex-chtml.js")

@@ -429,7 +429,8 @@ def test_same_gate_ignores_only_pdf_dates_and_the_rebuild_record(tmp_path):
 
 def test_interactive_ledger_filters_by_the_fields_present():
     from navcore import ledger
-    from navcore.ledger.render import STATUS_COLOURS, InteractiveLedger
+    from navcore.ledger.interactive import InteractiveLedger
+    from navcore.ledger.text import STATUS_COLOURS
 
     assert "inconsistent" in STATUS_COLOURS
     evals = ledger.evaluations("WF")[:3]
@@ -607,7 +608,7 @@ def test_registry_texts_carry_no_developer_wording():
     """What the exports and claim rows show (quantities, notes, quotes, errata, input reasons)
     carries no change history, regression pin or test bookkeeping: that lives in git and tests."""
     from navcore import ledger
-    from navcore.ledger.inputs import all_inputs
+    from navcore.claims.inputs import all_inputs
 
     texts = []
     for c in ledger.claims():

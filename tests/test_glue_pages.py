@@ -254,8 +254,8 @@ def _reads_claim(value: ast.expr | None) -> bool:
 @cache
 def _input_names() -> frozenset[str]:
     """The short names of the ledger's declared inputs (``cruise_altitude_m``)."""
+    from navcore.claims.inputs import all_inputs
     from navcore.ledger import claims
-    from navcore.ledger.inputs import all_inputs
 
     claims()  # imports every paper module, which declares its inputs
     return frozenset(i.name.rsplit(".", 1)[-1] for i in all_inputs())

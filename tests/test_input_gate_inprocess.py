@@ -1006,7 +1006,7 @@ def _forget(prefix: str) -> None:
 def gic(tmp_path: Path) -> Any:
     """The claims package on sys.path for one test; afterwards its modules, its registered input
     and the gate's import hook are gone again."""
-    from navcore.ledger import inputs
+    from navcore.claims import inputs
 
     _write_pkg(tmp_path / "gic", GIC)
     sys.path.insert(0, str(tmp_path))
@@ -1188,11 +1188,11 @@ def test_exposure_records_only_floats_returned_between_paper_functions() -> None
 
     memo.__module__ = "pp.b"
     memo.__qualname__ = "memoised"
-    wrapper = Frame("navcore.ledger.inputs", "input_cache.<locals>.wrapper", paper, "wrapper", {"fn": memo})
+    wrapper = Frame("navcore.claims.inputs", "input_cache.<locals>.wrapper", paper, "wrapper", {"fn": memo})
     expo(wrapper, "return", 9.5)
-    lib_fn = Frame("navcore.ledger.inputs", "w", paper, "wrapper", {"fn": len})
+    lib_fn = Frame("navcore.claims.inputs", "w", paper, "wrapper", {"fn": len})
     expo(lib_fn, "return", 10.5)
-    not_wrapper = Frame("navcore.ledger.inputs", "other", paper, "other", {"fn": memo})
+    not_wrapper = Frame("navcore.claims.inputs", "other", paper, "other", {"fn": memo})
     expo(not_wrapper, "return", 11.5)
     assert dict(expo.values) == {"g": [2.5, 3.5, 4.5], "memoised": [9.5]}
     assert expo.n == 4
@@ -1214,7 +1214,7 @@ def test_canonical() -> None:
     assert gate._canonical(1.5) == "1.5"
     assert gate._canonical({"b": 1, "a": [2.0, 3]}) == '{"a": [2.0, 3], "b": 1}'
     assert gate._canonical(np.array([1.0, 2.0])) == "[1.0, 2.0]"
-    from navcore.ledger.core import jsonable
+    from navcore.claims.core import jsonable
 
     assert gate._canonical(float("nan")) == json.dumps(jsonable(float("nan")))
 

@@ -267,7 +267,7 @@ def test_flyby_calibration_and_flat_antenna_limit():
     1-s grid), and with a flat antenna (no gain drop towards the horizon: every satellite at the
     same C/N0) the four codes the loosely coupled receiver needs and the one the tightly coupled
     filter needs go and come back together: the two blackouts coincide."""
-    from navcore.ledger.inputs import overriding, recording
+    from navcore.claims.inputs import overriding, recording
     from navcore.papers import sp_flyby as fb
     from navcore.papers import sp_missions_scenarios as sc
 
@@ -287,7 +287,7 @@ def test_flyby_table_2_7_counts_by_hand():
     covariance snapshot before that satellite's first pseudorange, ceil(2 sigma / 30 m) with
     sigma^2 = u^T P_position u (Sec. 2.5, the range uncertainty along the line of sight), and
     the range-rate sigma from the velocity block."""
-    from navcore.ledger.inputs import recording
+    from navcore.claims.inputs import recording
     from navcore.papers import sp_flyby as fb
 
     with recording():

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from navcore.integration.ekf_ins_gnss import monte_carlo_key, run_monte_carlo, run_monte_carlo_batch
-from navcore.ledger.inputs import band_ahead, overriding, recording
+from navcore.claims.inputs import band_ahead, overriding, recording
 from navcore.papers import kzl_scenario as S
 
 FIELDS = ("pos_err", "vel_err", "att_err", "pos_sigma", "vel_sigma", "att_sigma")

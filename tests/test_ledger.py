@@ -13,8 +13,9 @@ import sys
 
 import pytest
 
+from navcore.claims.core import from_jsonable, jsonable
 from navcore.ledger import Claim, Erratum, Tolerance, evaluate, printed, validate_registry
-from navcore.ledger.render import LedgerTable, json_dump
+from navcore.ledger.tables import LedgerTable, json_dump
 from navcore.provenance import build_provenance
 
 TOL = Tolerance(reason="test", abs=0.5, policy="printed-digits")
@@ -240,7 +241,7 @@ def test_table_renders_html_and_markdown():
 
 def test_latex_escaping_of_ledger_text():
     """Oracle: LaTeX's ten special characters written out by hand."""
-    from navcore.ledger.render import _tex_escape
+    from navcore.ledger.text import _tex_escape
 
     assert _tex_escape("50 % & $x_1$ #2 {a} ~ ^ \\") == (
         r"50 \% \& \$x\_1\$ \#2 \{a\} \textasciitilde{} \textasciicircum{} \textbackslash{}"
@@ -256,7 +257,8 @@ def test_long_printed_formula_is_math_scaled_to_its_column(tmp_path):
     import shutil
     from pathlib import Path
 
-    from navcore.ledger.render import FIT_MATH_PREAMBLE, _printed_tex, latex_table
+    from navcore.ledger.tables import latex_table
+    from navcore.ledger.text import FIT_MATH_PREAMBLE, _printed_tex
     from navcore.report import Report, build_provenance, to_latex
 
     formula = r"\hat{\tau}_1 = \gamma_1^{-1} (I - F_1 (F_1' F_1)^{-1} F_1') [\hat{T}_1 - k_1]"
@@ -366,7 +368,7 @@ def test_evaluation_cache_round_trip(tmp_path, monkeypatch):
             assert ev.inputs == fresh.inputs
         assert any(isinstance(i["value"], list) for i in fresh.inputs)  # the case that differed
         for value in (float("inf"), -float("inf"), 1.5, None, True):
-            assert registry._from_json(registry._to_json(value)) == value
+            assert from_jsonable(jsonable(value, round_trip=True)) == value
     finally:
         registry.evaluate_claim.cache_clear()
 

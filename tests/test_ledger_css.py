@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from navcore.ledger import Claim, evaluate, printed
-from navcore.ledger.render import InteractiveLedger
+from navcore.ledger.interactive import InteractiveLedger
 
 CSS = Path(__file__).resolve().parents[1] / "book" / "_static" / "navcore.css"
 WIDTH = re.compile(r'table\.ledger-interactive th\[data-key="(\w+)"\]\s*\{\s*width:\s*([\d.]+)%;?\s*\}')

@@ -21,8 +21,9 @@ from pathlib import Path
 import pytest
 
 from navcore import ledger
+from navcore.claims.core import jsonable
+from navcore.claims.inputs import InputReadError, all_inputs, overriding, recording
 from navcore.ledger import Claim, Evaluation, InputSet, Tolerance, evaluate, input_cache, printed, prose
-from navcore.ledger.inputs import InputReadError, all_inputs, overriding, recording
 
 ROOT = Path(__file__).resolve().parents[1]
 TOL = Tolerance(reason="test", abs=0.5, policy="printed-digits")
@@ -484,9 +485,9 @@ def test_every_claims_value_is_the_stored_gates_bit_for_bit(paper):
             stale.append(f"{cid} (stored from other files)")
             continue
         fresh = {
-            "reproduced": registry._to_json(ev.reproduced),
-            "inputs": registry._to_json(ev.inputs),
-            "readings": _reading_values(registry._to_json(ev.readings)),
+            "reproduced": jsonable(ev.reproduced, round_trip=True),
+            "inputs": jsonable(ev.inputs, round_trip=True),
+            "readings": _reading_values(jsonable(ev.readings, round_trip=True)),
         }
         kept = {
             "reproduced": stored["reproduced"],
@@ -522,7 +523,7 @@ def test_a_wrong_value_changes_the_verdict_not_the_tolerance(paper):
     """Substitute a value that reverses the claim's agreement with the print (far outside it when
     the claim agrees, the printed value itself when it does not): the derived verdict changes and
     the ledger fails; the tolerance, fixed before the computation, stays what it was."""
-    from navcore.ledger.core import resolve_tolerance
+    from navcore.claims.core import resolve_tolerance
 
     for c in ledger.claims(paper):
         if c.compute is None:

@@ -3,8 +3,8 @@
 Each test builds its own inputs and claims here and never imports a paper module, so a
 mechanism that breaks fails here, not only through one registry claim among hundreds.
 
-Oracle in every test: the rule of LEDGER.md (and of :mod:`navcore.ledger.core`'s and
-:mod:`navcore.ledger.inputs`' docstrings) written out by hand for claims whose values are
+Oracle in every test: the rule of LEDGER.md (and of :mod:`navcore.claims.core`'s and
+:mod:`navcore.claims.inputs`' docstrings) written out by hand for claims whose values are
 simple closed forms of their inputs, so which runs are made, which band results and which
 verdict follows can be counted by hand.
 
@@ -29,9 +29,18 @@ import itertools
 import pytest
 
 from navcore._validate import ModelDomainError
-from navcore.ledger import Claim, InputSet, Tolerance, evaluate, input_cache, printed, render
-from navcore.ledger.core import MAX_CORNER_INPUTS, MAX_READING_COMBINATIONS, STATUSES, left_out_of_band
-from navcore.ledger.inputs import Input, overriding, recording
+from navcore.claims.core import (
+    MAX_CORNER_INPUTS,
+    MAX_READING_COMBINATIONS,
+    STATUSES,
+    from_jsonable,
+    jsonable,
+    left_out_of_band,
+)
+from navcore.claims.inputs import Input, overriding, recording
+from navcore.ledger import Claim, InputSet, Tolerance, evaluate, input_cache, printed
+from navcore.ledger.interactive import InteractiveLedger
+from navcore.ledger.text import _band_text
 
 TOL = Tolerance(reason="test", abs=0.5, policy="printed-digits")
 
@@ -201,7 +210,7 @@ def test_the_additive_envelope_only_widens_when_an_input_is_added():
     over random rows (seeded)."""
     import numpy as np
 
-    from navcore.ledger.core import additive_envelope
+    from navcore.claims.core import additive_envelope
 
     rng = np.random.default_rng(27)
     for _ in range(200):
@@ -616,17 +625,17 @@ def test_a_band_run_outside_the_models_domain_is_left_out_and_said():
     assert ev.band == pytest.approx((10.0, 11.0))  # x0 = 1 still reached at x1 = 0
     assert ev.left_out == ({"case": "no fixed channels for this flight", "runs": 1},)
     assert left_out_of_band(ev) == "no fixed channels for this flight (1 run)"
-    assert "x0=1.0" not in ev.detail + ev.note() + render._band_text(ev)  # the caller's words stay out
-    assert "left out, outside the model's domain: no fixed channels for this flight" in render._band_text(ev)
+    assert "x0=1.0" not in ev.detail + ev.note() + _band_text(ev)  # the caller's words stay out
+    assert "left out, outside the model's domain: no fixed channels for this flight" in _band_text(ev)
     assert ev.note().endswith(
         "The band leaves out, as outside the model's domain, 1 run where no fixed channels for this flight."
     )
-    page = render.InteractiveLedger([ev])._repr_html_()
+    page = InteractiveLedger([ev])._repr_html_()
     assert "1 run left out" in page
     # the stored record round-trips the field (the cache and the parallel workers use these fields)
     from navcore.ledger import registry
 
-    stored = {k: registry._from_json(registry._to_json(getattr(ev, k))) for k in registry._RECORD_FIELDS}
+    stored = {k: from_jsonable(jsonable(getattr(ev, k), round_trip=True)) for k in registry._RECORD_FIELDS}
     assert stored["left_out"] == ({"case": "no fixed channels for this flight", "runs": 1},)
 
 
@@ -693,7 +702,7 @@ def test_band_batches_reach_the_model_in_one_call_and_give_the_unbatched_values(
     plain_model = _batched_model(plain_calls)
 
     def unbatched() -> float:
-        from navcore.ledger.inputs import band_ahead
+        from navcore.claims.inputs import band_ahead
 
         with band_ahead([]):  # nothing announced: one call per run
             return plain_model()
@@ -708,13 +717,13 @@ def test_band_batches_reach_the_model_in_one_call_and_give_the_unbatched_values(
 
 
 def get_band_points(i: int) -> tuple[float, ...]:
-    from navcore.ledger.inputs import get_input
+    from navcore.claims.inputs import get_input
 
     return get_input(f"{NAME}x{i}").band_points
 
 
 def test_for_each_band_run_reads_stay_out_of_the_callers_recording_and_use_the_outer_overrides():
-    from navcore.ledger.inputs import band_ahead, for_each_band_run
+    from navcore.claims.inputs import band_ahead, for_each_band_run
 
     with overriding({NAME + "x1": 0.25}), band_ahead([{NAME + "x0": 1.0}, {NAME + "x0": 0.0}]):
         with overriding({NAME + "x0": 0.75}), recording() as reads:  # inside the first run

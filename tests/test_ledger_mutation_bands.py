@@ -3,7 +3,7 @@
 Each claim's computation logs the values of the inputs it read, so a test sees exactly which runs
 ``_band_runs`` made, in which order and under which overrides. No paper module is imported.
 
-Oracle in every test: the module docstring of :mod:`navcore.ledger.core` ("Band runs", "Beyond
+Oracle in every test: the module docstring of :mod:`navcore.claims.core` ("Band runs", "Beyond
 six inputs", "Readings") written out by hand: each assumed input one at a time over its band
 points (the others nominal), then every corner of the box up to six inputs, beyond that the two
 diagonal corners, the two half-and-half corners and the two steepest corners; the additive
@@ -18,15 +18,15 @@ import math
 import pytest
 
 from navcore._validate import ModelDomainError
-from navcore.ledger import Claim, InputSet, Tolerance
-from navcore.ledger.core import (
+from navcore.claims.core import (
     MAX_READING_COMBINATIONS,
     _band_runs,
     _steepest_corners,
     additive_envelope,
     reading_combinations,
 )
-from navcore.ledger.inputs import Input, band_ahead, for_each_band_run
+from navcore.claims.inputs import Input, band_ahead, for_each_band_run
+from navcore.ledger import Claim, InputSet, Tolerance
 
 TOL = Tolerance(reason="test", abs=0.5, policy="printed-digits")
 IN = InputSet("KZL", "mutation_bands")
@@ -207,7 +207,7 @@ def test_band_runs_are_announced_in_two_batches():
 
 
 def test_band_ahead_runs_on_top_of_the_active_overrides():
-    from navcore.ledger.inputs import overriding
+    from navcore.claims.inputs import overriding
 
     with overriding({NAME + "b": 7.0}), band_ahead([{NAME + "a": 2.0}]):
         got = for_each_band_run("mutation-bands-outer", lambda: (IN.a, IN.b))

@@ -2,8 +2,8 @@
 band, readings, precision readings, envelope, left-out runs) and the note and JSON it writes
 (issue 31, mutation survivors). No paper module is imported; every claim is a closed form.
 
-Oracle in every test: the verdict rule and the record described in :mod:`navcore.ledger.core`
-(module docstring, :class:`~navcore.ledger.core.Evaluation`) applied by hand to claims such as
+Oracle in every test: the verdict rule and the record described in :mod:`navcore.claims.core`
+(module docstring, :class:`~navcore.claims.core.Evaluation`) applied by hand to claims such as
 ``14 - loss`` with ``loss`` over [1, 3], whose values, bands and verdicts are read off directly.
 """
 
@@ -13,8 +13,7 @@ import numpy as np
 import pytest
 
 from navcore._validate import ModelDomainError
-from navcore.ledger import Claim, InputSet, Tolerance, evaluate, printed
-from navcore.ledger.core import (
+from navcore.claims.core import (
     EXACT,
     PRECISION_LOOSE,
     PRECISION_READING,
@@ -24,6 +23,7 @@ from navcore.ledger.core import (
     jsonable,
     resolve_tolerance,
 )
+from navcore.ledger import Claim, InputSet, Tolerance, evaluate, printed
 
 IN = InputSet("SP", "mutation_evaluate")
 IN.published("base", 14.0, unit="dB", locator="Table 1", quantity="base margin")
@@ -389,7 +389,7 @@ def test_claim_quote_sources():
     value, tol = printed("17.67")
     c = make(published=value, tolerance=tol)
     assert claim_quote(c) == ("17.67", "digits")
-    from navcore.ledger.core import prose
+    from navcore.claims.core import prose
 
     assert claim_quote(make(tolerance=prose("about"))) == ("about", "word")
     assert claim_quote(make(tolerance=HALF)) == ("", "none")

@@ -1,7 +1,7 @@
 """The input registry: declarations, reads, overrides, recording and the input cache
 (issue 31, mutation survivors). Synthetic input sets only; no paper module is imported.
 
-Oracle in every test: the contract of :mod:`navcore.ledger.inputs` as its docstrings state it,
+Oracle in every test: the contract of :mod:`navcore.claims.inputs` as its docstrings state it,
 checked on values chosen by hand: which reads a recording holds (only the innermost one), which
 value a read returns under nested overrides (the inner one wins), when the input cache calls its
 function again (a new argument key, or a changed value of an input it read) and what it replays.
@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from navcore.ledger.inputs import (
+from navcore.claims.inputs import (
     NOMINAL_LABEL,
     OTHER_LABEL,
     Input,

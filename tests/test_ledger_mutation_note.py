@@ -2,11 +2,11 @@
 survivors of ``Evaluation.note``, ``_reading_words``, ``_reading_text``, ``as_json``, ``_plain``,
 ``Tolerance.describe``, and the ledger table's ``format_value`` and ``rows``).
 
-Each test builds an :class:`~navcore.ledger.core.Evaluation` directly (its readings, band, inputs
+Each test builds an :class:`~navcore.claims.core.Evaluation` directly (its readings, band, inputs
 and flags written by hand), so the sentence the note must add is fixed by the record alone.
 
 Oracle: the sentences and formats the docstrings of :meth:`Evaluation.note` and
-:func:`~navcore.ledger.render.format_value` describe, written out by hand for each record.
+:func:`~navcore.ledger.text.format_value` describe, written out by hand for each record.
 """
 
 from __future__ import annotations
@@ -15,8 +15,7 @@ import math
 
 import pytest
 
-from navcore.ledger import Claim, Erratum, InputSet, Tolerance
-from navcore.ledger.core import (
+from navcore.claims.core import (
     EXACT,
     PRECISION_LOOSE,
     PRECISION_READING,
@@ -25,7 +24,9 @@ from navcore.ledger.core import (
     _plain,
     printed,
 )
-from navcore.ledger.render import _published, format_value, rows
+from navcore.ledger import Claim, Erratum, InputSet, Tolerance
+from navcore.ledger.tables import rows
+from navcore.ledger.text import format_value, published_text
 
 IN = InputSet("ATC10", "mutation_note")
 IN.convention("scale", 1.0, alternative=10.0, unit="m", quantity="scale", reason="two readings")
@@ -377,7 +378,7 @@ def test_format_value_digits():
 
 def test_published_and_rows():
     for relation, text in (("=", "92"), ("<", "< 92"), ("<=", "≤ 92"), (">", "> 92"), (">=", "≥ 92")):
-        assert _published(ev(claim(relation=relation))) == text
+        assert published_text(ev(claim(relation=relation))) == text
     e = Evaluation(
         claim(erratum="ATC10-E-x", discussed_in="atc10/ch1"),
         2.0,
@@ -420,7 +421,7 @@ def test_published_and_rows():
 
 
 def test_table_cell_texts():
-    from navcore.ledger.render import (
+    from navcore.ledger.text import (
         _band_text,
         _inputs_text,
         _nowrap,
@@ -477,7 +478,7 @@ def test_table_cell_texts():
 
 
 def test_agreeing_reading_text():
-    from navcore.ledger.render import _agreeing_reading_text
+    from navcore.ledger.text import _agreeing_reading_text
 
     assert _agreeing_reading_text(ev()) == ""
     # the reading used disagrees: the agreeing readings' labels
@@ -513,7 +514,7 @@ def test_plain_drops_a_bare_decimal_point_and_json_writes_floats():
 
 
 def test_label_and_unit_of_any_name():
-    from navcore.ledger.inputs import _label_and_unit
+    from navcore.claims.inputs import _label_and_unit
 
     s = InputSet("ATC10", "mutation_note_units")
     s.published("dash", 1.0, locator="T1", unit="-")

@@ -24,9 +24,10 @@ import joblib
 import numpy as np
 import pytest
 
+from navcore.claims import core as ledger_core
+from navcore.claims import inputs as ledger_inputs
+from navcore.claims.core import from_jsonable, jsonable
 from navcore.ledger import EXACT, Claim, Erratum, InputSet, evaluate, printed, registry
-from navcore.ledger import core as ledger_core
-from navcore.ledger import inputs as ledger_inputs
 
 IN = InputSet("WF", "mutation_registry")
 IN.published("arr", np.array([1.0, 2.5]), locator="Eq. (2)")
@@ -70,11 +71,12 @@ class _Exploding(types.ModuleType):
 
 
 # the synthetic source tree: paper module -> navcore.models.a -> navcore.models.b (in a
-# function); the ledger imports navcore.models.c, which is not followed
+# function); the claims' core imports navcore.models.c, which is not followed
 SOURCES = {
     "__init__.py": "",
+    "claims/__init__.py": "",
+    "claims/core.py": "import navcore.models.c\n",
     "ledger/__init__.py": "",
-    "ledger/core.py": "import navcore.models.c\n",
     "papers/__init__.py": "",
     "models/__init__.py": "",
     "models/a.py": "import os\n\n\ndef f():\n    from navcore.models import b\n    return b, os\n",
@@ -344,7 +346,7 @@ def test_imported_navcore_modules_at_any_level(tmp_path):
 
 def test_module_file_and_dependencies(synthetic):
     """The files a claim's evaluation depends on: its module, what it imports through other
-    modules (with each package's ``__init__``), the ledger's files (not their imports) and the
+    modules (with each package's ``__init__``), the claims' and the ledger's files (not their imports) and the
     data files. Oracle: the synthetic tree's import graph, followed by hand."""
     root = synthetic(standard_modules())
     assert registry._module_file("navcore.models.a") == root / "models" / "a.py"
@@ -353,9 +355,9 @@ def test_module_file_and_dependencies(synthetic):
     assert registry._module_file("navcore.models.nothing") is None
     assert registry._module_file("navcore.data") is None
     expected = (
-        "__init__.py", "data/read.txt", "data/rows.csv", "data/table.json", "ledger/__init__.py",
-        "ledger/core.py", "models/__init__.py", "models/a.py", "models/b.py", "papers/__init__.py",
-        "papers/wf_alpha.py",
+        "__init__.py", "claims/__init__.py", "claims/core.py", "data/read.txt", "data/rows.csv",
+        "data/table.json", "ledger/__init__.py", "models/__init__.py", "models/a.py", "models/b.py",
+        "papers/__init__.py", "papers/wf_alpha.py",
     )  # fmt: skip
     assert registry.claim_dependencies("WF-old-a1") == expected
     assert registry._module_dependencies(P + "wf_alpha") == tuple(root / p for p in expected)
@@ -453,22 +455,22 @@ def test_cache_dir_settings(monkeypatch, tmp_path):
         ({"k": [np.float64(-np.inf), None]}, {"k": [{"float": "-inf"}, None]}),
     ],
 )
-def test_to_json(value, stored):
+def test_jsonable_round_trip(value, stored):
     """Oracle: the JSON forms written out by hand (types included)."""
-    out = registry._to_json(value)
+    out = jsonable(value, round_trip=True)
     assert out == stored and type(out) is type(stored)
     assert json.loads(json.dumps(out)) == stored
 
 
-def test_from_json_undoes_to_json():
-    """Oracle: the values before ``_to_json``, with arrays as tuples (or lists, when asked)."""
-    assert np.isnan(registry._from_json(registry._to_json(float("nan"))))
-    assert registry._from_json({"float": "-inf"}) == -float("inf")
-    assert registry._from_json({"float": "1.5", "other": [1]}) == {"float": "1.5", "other": (1,)}
-    assert registry._from_json([1, [2, {"a": [3]}]]) == (1, (2, {"a": (3,)}))
-    out = registry._from_json([1, [2, {"a": [3]}]], sequence=list)
+def test_from_jsonable_undoes_jsonable():
+    """Oracle: the values before ``jsonable``, with arrays as tuples (or lists, when asked)."""
+    assert np.isnan(from_jsonable(jsonable(float("nan"), round_trip=True)))
+    assert from_jsonable({"float": "-inf"}) == -float("inf")
+    assert from_jsonable({"float": "1.5", "other": [1]}) == {"float": "1.5", "other": (1,)}
+    assert from_jsonable([1, [2, {"a": [3]}]]) == (1, (2, {"a": (3,)}))
+    out = from_jsonable([1, [2, {"a": [3]}]], sequence=list)
     assert out == [1, [2, {"a": [3]}]] and isinstance(out[1], list) and isinstance(out[1][1]["a"], list)
-    assert registry._from_json("x") == "x" and registry._from_json(None) is None
+    assert from_jsonable("x") == "x" and from_jsonable(None) is None
 
 
 def test_strict_evaluation_setting(monkeypatch):

@@ -15,10 +15,11 @@ from types import SimpleNamespace
 
 import pytest
 
+from navcore.claims.core import TEXT_ONLY_CAVEAT, Evaluation
 from navcore.ledger import Claim, Erratum, Tolerance, evaluate
-from navcore.ledger import render as render_module
-from navcore.ledger.core import TEXT_ONLY_CAVEAT, Evaluation
-from navcore.ledger.render import CountsTable, ErrataList, FindingsTable, _breakable_heading, _claim_link_html
+from navcore.ledger import tables as tables_module
+from navcore.ledger.tables import CountsTable, ErrataList, FindingsTable, _claim_link_html
+from navcore.ledger.text import _breakable_heading
 
 #: one claim, a cross-check of a printed 12 that agrees (consistent)
 EVALS = [
@@ -225,11 +226,11 @@ def fake_counts(monkeypatch):
         },
     }
     monkeypatch.setattr(
-        render_module, "counts", lambda paper: {p: r for p, r in rows.items() if paper in (None, p)}
+        tables_module, "counts", lambda paper: {p: r for p, r in rows.items() if paper in (None, p)}
     )
     passes = {"SP": [True, False, False], "WF": [True]}
     monkeypatch.setattr(
-        render_module,
+        tables_module,
         "evaluations",
         lambda paper: [SimpleNamespace(passes=ok) for ok in passes[paper]],
     )
@@ -263,15 +264,10 @@ def test_counts_table(fake_counts):
 
 
 def test_small_pieces_of_the_ledger_page():
-    from navcore.ledger.core import _n_runs, left_out_of_band
-    from navcore.ledger.render import (
-        InteractiveLedger,
-        LedgerTable,
-        _band_html,
-        _left_out_brief,
-        _md_escape,
-        quote_text,
-    )
+    from navcore.claims.core import _n_runs, left_out_of_band
+    from navcore.ledger.interactive import InteractiveLedger, _band_html, _left_out_brief
+    from navcore.ledger.tables import LedgerTable
+    from navcore.ledger.text import _md_escape, quote_text
 
     assert (_n_runs(0), _n_runs(1), _n_runs(2)) == ("0 runs", "1 run", "2 runs")
     two = SimpleNamespace(left_out=({"case": "no fix", "runs": 1}, {"case": "a gap", "runs": 3}))
@@ -295,7 +291,7 @@ def test_small_pieces_of_the_ledger_page():
 
 
 def test_latex_table_widths_by_hand():
-    from navcore.ledger.render import latex_table
+    from navcore.ledger.tables import latex_table
 
     # one long text column (70 letters, breakable every 7: widest piece 7 x 4 pt = 28 pt) and one
     # number column; 70 characters wide in all, so the columns are proportional (p{...}), not l/r
@@ -328,7 +324,7 @@ def test_latex_table_widths_by_hand():
 
 
 def test_latex_table_narrow_and_crowded():
-    from navcore.ledger.render import latex_table
+    from navcore.ledger.tables import latex_table
 
     # 60 characters or fewer: the natural width, l and r columns
     narrow = latex_table(["Paper", "Claims", "Note"], [["SP", "155", "ok"], ["KZL", "4.5 %", "-"]])
@@ -351,7 +347,7 @@ LONG = (
 
 
 def test_common_opening():
-    from navcore.ledger.render import _common_opening
+    from navcore.ledger.tables import _common_opening
 
     assert len(LONG) >= 120
     a, b = LONG + " Then a.", LONG + " Then b."
@@ -375,7 +371,7 @@ def test_common_opening():
 
 
 def test_locator_detail_and_shared_label():
-    from navcore.ledger.render import _locator_detail, _shared_label
+    from navcore.ledger.tables import _locator_detail, _shared_label
 
     assert _locator_detail("Table 2.6", "Table 2.6") == ""
     assert _locator_detail("Table 2.6, column 2", "Table 2.6") == "column 2"
@@ -410,7 +406,7 @@ def _ev(cid, locator, note, unit="m"):
 
 
 def test_group_claims_and_what_a_group_shares():
-    from navcore.ledger.render import group_claims
+    from navcore.ledger.tables import group_claims
 
     evs = [
         _ev("SP-g1", "Table 2.6, column 1", LONG + " One."),
@@ -450,7 +446,7 @@ def test_group_claims_and_what_a_group_shares():
 
 
 def test_details_html_and_tex():
-    from navcore.ledger.render import _details_html, _details_tex
+    from navcore.ledger.tables import _details_html, _details_tex
 
     d = {"note": "A note", "tolerance": "±0.5: t", "band": "1 to 2 m", "inputs": "x = 1 (published)"}
     assert _details_html(d) == (
@@ -469,7 +465,7 @@ def test_json_and_csv_exports():
     import io
     import json
 
-    from navcore.ledger.render import csv_export, json_dump, json_export
+    from navcore.ledger.tables import csv_export, json_dump, json_export
     from navcore.provenance import BuildProvenance
 
     build = BuildProvenance("0" * 40, "clean", "2026-01-01T00:00:00+00:00", "f" * 64, "3.11.7", ())
@@ -584,7 +580,7 @@ TABLE_HTML_NO_NOTES = (
 
 
 def test_ledger_table_html_and_latex():
-    from navcore.ledger.render import LedgerTable
+    from navcore.ledger.tables import LedgerTable
 
     a, b, c = _table_claims()
     t = LedgerTable([a, b, c], link_pages=True)
@@ -696,7 +692,7 @@ INTERACTIVE_HTML = (
 def test_interactive_ledger_html():
     import dataclasses
 
-    from navcore.ledger.render import _LEDGER_JS, InteractiveLedger
+    from navcore.ledger.interactive import _LEDGER_JS, InteractiveLedger
 
     a, b, c = _table_claims()
     a = dataclasses.replace(a, band=(0.5, 2.0), left_out=({"case": "no fix", "runs": 2},))
@@ -724,7 +720,7 @@ def test_interactive_ledger_html():
 
 
 def test_quote_math_cases():
-    from navcore.ledger.render import quote_math
+    from navcore.ledger.text import quote_math
 
     # the docstring's cases, then each mechanism alone
     assert quote_math(r"\gamma_n &= \frac{a}{b} \tag{4.5.31}") == r"\gamma_n = \frac{a}{b}"
@@ -751,7 +747,7 @@ def test_quote_math_cases():
 
 
 def test_printed_cells():
-    from navcore.ledger.render import _printed_html, _printed_tex, _printed_text, claim_group
+    from navcore.ledger.text import _printed_html, _printed_tex, _printed_text, claim_group
 
     assert _printed_html("about 10 m") == "about&nbsp;10&nbsp;m"
     assert (
@@ -811,7 +807,8 @@ def test_printed_cells():
 
 
 def test_tex_breakable_and_widths():
-    from navcore.ledger.render import _min_pt, _tex_breakable, _text_pieces, _word_pt
+    from navcore.ledger.tables import _min_pt, _text_pieces, _word_pt
+    from navcore.ledger.text import _tex_breakable
 
     assert _tex_breakable("interpreted") == "interpreted"
     assert _tex_breakable("KZLsec36headingX") == r"KZLsec3\allowbreak{}6headin\allowbreak{}gX"
@@ -836,11 +833,11 @@ def test_tex_breakable_and_widths():
 
 
 def test_text_table(monkeypatch):
-    import navcore.ledger.summary as summary
-    from navcore.ledger.render import text_table
+    import navcore.ledger.tables as tables
+    from navcore.ledger.tables import text_table
 
     # the summary below the table reads the registry's errata: replaced by a marker here
-    monkeypatch.setattr(summary, "summary_text", lambda evals: f"<summary of {len(evals)}>")
+    monkeypatch.setattr(tables, "summary_text", lambda evals: f"<summary of {len(evals)}>")
     e = _ev("SP-text-table-claim-with-a-rather-long-identifier", "Eq. (1)", "n")
     lines = text_table([e], width=20).splitlines()
     assert lines == [
@@ -859,7 +856,7 @@ def test_text_table(monkeypatch):
 
 
 def test_group_and_opening_edges():
-    from navcore.ledger.render import _common_opening, _details_html, _details_tex, group_claims
+    from navcore.ledger.tables import _common_opening, _details_html, _details_tex, group_claims
 
     # two identical notes of several sentences are shared whole, not cut at a sentence
     same = group_claims([_ev("SP-i1", "Eq. (5)", LONG + " Tail."), _ev("SP-i2", "Eq. (5)", LONG + " Tail.")])[
@@ -893,7 +890,7 @@ def test_group_and_opening_edges():
 def test_cells_with_strings_and_bounds():
     import dataclasses
 
-    from navcore.ledger.render import _inputs_text, _printed_text
+    from navcore.ledger.text import _inputs_text, _printed_text
 
     e = _ev("SP-c1", "Eq. (1)", "n")
     assert _printed_text(dataclasses.replace(e, claim=dataclasses.replace(e.claim, relation="<="))) == "≤ 1 m"
@@ -916,7 +913,7 @@ def test_a_long_formula_is_never_cut_inside_a_matrix_or_cases_environment():
     """A cut inside an environment leaves MathJax two halves it refuses ("Missing
     \\begin{cases}"); the formula may still be cut outside it. Oracle: ATC-10's Eq. (4.5.23)
     as printed, cut by hand after its relation only."""
-    from navcore.ledger.render import _printed_html
+    from navcore.ledger.text import _printed_html
 
     cases = r"\begin{cases} 2\sigma_0^2, & i=0 \\ \sigma_0^2, & 1 \leq i \end{cases}"
     formula = r"E[\Delta_n \Delta_{n-i}] = " + cases
@@ -931,8 +928,8 @@ def test_a_conventions_code_word_shows_as_its_readings_words():
     Oracle: the readings SP's flyby declares for its signal-to-noise measure."""
     import dataclasses
 
-    from navcore.ledger.inputs import get_input
-    from navcore.ledger.render import _inputs_text
+    from navcore.claims.inputs import get_input
+    from navcore.ledger.text import _inputs_text
     from navcore.papers import sp_flyby  # noqa: F401  (declares the input)
 
     name = "SP.flyby.snr_measure"
@@ -947,8 +944,8 @@ def test_a_conventions_code_word_shows_as_its_readings_words():
 
 def _word_input() -> str:
     """A registered input with a unit whose value is a word (the unit is not appended to words)."""
+    from navcore.claims.inputs import get_input
     from navcore.ledger import InputSet
-    from navcore.ledger.inputs import get_input
 
     name = "SP.mutation_render_cells.mode"
     try:
@@ -1051,7 +1048,7 @@ ERRATA_HTML = (
 
 
 def test_tables_as_whole_strings(fake_counts):
-    from navcore.ledger.render import CountsTable, ErrataList, FindingsTable
+    from navcore.ledger.tables import CountsTable, ErrataList, FindingsTable
 
     ft = FindingsTable([E1, E2], EVALS, root="../", list_findings=True)
     assert ft._repr_html_() == FINDINGS_HTML
@@ -1069,7 +1066,7 @@ def test_tables_as_whole_strings(fake_counts):
 def test_ledger_table_locator_details_and_wide_quantities():
     import dataclasses
 
-    from navcore.ledger.render import LedgerTable
+    from navcore.ledger.tables import LedgerTable
 
     a = _ev("SP-l1", "Table 2.6, column 2", "n one")
     b = _ev("SP-l2", "Table 2.6, column 3", "n two")
@@ -1091,7 +1088,7 @@ def test_ledger_table_locator_details_and_wide_quantities():
 def test_exports_default_to_this_checkouts_provenance():
     import json
 
-    from navcore.ledger.render import csv_export, json_export
+    from navcore.ledger.tables import csv_export, json_export
     from navcore.provenance import build_provenance
 
     e = _ev("SP-j2", "Eq. (1)", "n")
@@ -1108,7 +1105,8 @@ def test_locator_words_break_at_syllables_and_stay_searchable():
     hyphenations written out by hand; every locator of the registry comes back unchanged once the
     soft hyphens are removed."""
     from navcore import ledger
-    from navcore.ledger.render import InteractiveLedger, soft_hyphens
+    from navcore.ledger.interactive import InteractiveLedger
+    from navcore.ledger.text import soft_hyphens
 
     assert soft_hyphens("Appendix E, (E.1)") == "Ap&shy;pen&shy;dix E, (E.1)"
     assert soft_hyphens("Sec. 3.8, approximation") == "Sec. 3.8, ap&shy;prox&shy;i&shy;ma&shy;tion"

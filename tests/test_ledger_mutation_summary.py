@@ -341,7 +341,7 @@ def test_frames_of_claims_without_inputs_are_empty(evals):
 
 
 def test_summary_edges():
-    from navcore.ledger.inputs import Input
+    from navcore.claims.inputs import Input
 
     # a paper with a reproduction and a fit, no cross-check or statement in between: both rows
     fit = evaluate(_claim("WF-test-sum-f", paper="WF", kind="fit", compute=lambda: 12.0))

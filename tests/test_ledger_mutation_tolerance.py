@@ -1,6 +1,6 @@
 """The ledger's tolerance policies and quote rules, value by value (issue 31, mutation survivors).
 
-Oracle in every test: the policy as LEDGER.md and :mod:`navcore.ledger.core` state it, applied by
+Oracle in every test: the policy as LEDGER.md and :mod:`navcore.claims.core` state it, applied by
 hand to a printed text: half a unit in the last printed digit (``"17.67"`` -> 0.005, ``"1.2e-3"``
 -> 5e-5, ``"2750"`` -> 0.5, or 5 if its trailing zero is not significant), the prose table's
 bands, a figure's reading resolution, and the numbers a quote prints. Synthetic, no registry.
@@ -12,7 +12,7 @@ import math
 
 import pytest
 
-from navcore.ledger.core import (
+from navcore.claims.core import (
     PROSE_WORDS,
     Tolerance,
     _number_math,

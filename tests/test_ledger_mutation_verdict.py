@@ -1,6 +1,6 @@
 """The ledger's verdict rule at its edges, on synthetic claims (issue 31, mutation survivors).
 
-Each test pins one comparison of the rule (:mod:`navcore.ledger.core`, "Verdicts", "A band too
+Each test pins one comparison of the rule (:mod:`navcore.claims.core`, "Verdicts", "A band too
 wide to decide", "Trailing zeros") at the value where a changed operator or constant would give
 another answer: a value exactly at the tolerance's edge, a band exactly a factor 3 wide, a band
 touching zero. No paper module is imported and nothing is evaluated over the registry.
@@ -16,8 +16,7 @@ import math
 
 import pytest
 
-from navcore.ledger import Claim, Tolerance
-from navcore.ledger.core import (
+from navcore.claims.core import (
     BAND_FACTOR,
     EXACT,
     _band_satisfies,
@@ -28,6 +27,7 @@ from navcore.ledger.core import (
     derive_status,
     precision_status,
 )
+from navcore.ledger import Claim, Tolerance
 
 HALF = Tolerance(reason="test: half a unit", abs=0.5, policy="printed-digits")
 ZERO = Tolerance(reason="test: exact", abs=0.0, policy="exact")
@@ -348,11 +348,11 @@ def test_numpy_booleans_are_truth_values():
     a numpy boolean for a number (found by mutation testing)."""
     import numpy as np
 
-    from navcore.ledger import render
-    from navcore.ledger.core import _is_truth, additive_envelope
+    from navcore.claims.core import _is_truth, additive_envelope
+    from navcore.ledger import text
 
     # oracle: the docstrings ("a Python or numpy boolean"; the envelope is None for a truth value)
-    assert _is_truth(np.True_) and render._is_truth(np.False_)
+    assert _is_truth(np.True_) and text._is_truth(np.False_)
     assert additive_envelope(np.True_, [("a", ((0, np.False_), (1, np.True_)))]) is None
 
 

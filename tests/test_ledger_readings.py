@@ -22,8 +22,7 @@ import math
 
 import pytest
 
-from navcore.ledger import Claim, InputSet, Tolerance, evaluate, printed, prose
-from navcore.ledger.core import (
+from navcore.claims.core import (
     BAND_FACTOR,
     MAX_READING_COMBINATIONS,
     TEXT_ONLY_CAVEAT,
@@ -38,6 +37,7 @@ from navcore.ledger.core import (
     quote_policies,
     reading_combinations,
 )
+from navcore.ledger import Claim, InputSet, Tolerance, evaluate, printed, prose
 from navcore.ledger.registry import validate_registry
 
 TOL = Tolerance(reason="test", abs=0.5, policy="printed-digits")
@@ -115,7 +115,7 @@ def test_a_reading_that_sets_several_numbers_lists_them_once_as_numbers():
     note = ev.note()
     assert "With the pair of gains read as the swapped pair (2, 1): 20 m." in note
     assert "((" not in note and "2.0" not in note
-    from navcore.ledger.render import _inputs_text
+    from navcore.ledger.text import _inputs_text
 
     inputs = _inputs_text(ev)
     assert "pair of gains = (1, 2) (convention)" in inputs and "1.0" not in inputs
@@ -228,7 +228,7 @@ def test_every_combination_of_two_conventions_is_run_nominal_first():
 
 
 def test_combinations_beyond_the_cap_are_run_one_convention_at_a_time():
-    from navcore.ledger.inputs import Input
+    from navcore.claims.inputs import Input
 
     conventions = [
         Input(name=f"KZL.doc.c{i}", paper="KZL", value=0, provenance="convention", alternative=1, reason="r")
@@ -539,7 +539,7 @@ def test_the_terminal_summary_leads_with_findings_then_claims_by_verdict():
 
 
 def test_findings_table_and_errata_list_group_by_basis_and_say_the_caveat_once():
-    from navcore.ledger.render import ErrataList, FindingsTable
+    from navcore.ledger.tables import ErrataList, FindingsTable
 
     evals, found = _finding_fixture()
     table = FindingsTable(found, evals, list_findings=True)
@@ -563,7 +563,8 @@ def test_findings_table_and_errata_list_group_by_basis_and_say_the_caveat_once()
 
 
 def test_printed_column_quotes_the_paper_and_says_stated_for_a_statement():
-    from navcore.ledger.render import InteractiveLedger, LedgerTable
+    from navcore.ledger.interactive import InteractiveLedger
+    from navcore.ledger.tables import LedgerTable
 
     quoted = evaluate(make(id="KZL-test-quoted", tolerance=prose("about"), printed="about 10 m"))
     stated = evaluate(make(id="KZL-test-stated", published=True, unit="statement", compute=lambda: True))
@@ -576,7 +577,7 @@ def test_printed_column_quotes_the_paper_and_says_stated_for_a_statement():
 def test_json_carries_the_new_fields_and_is_deterministic():
     import json
 
-    from navcore.ledger.render import json_dump
+    from navcore.ledger.tables import json_dump
 
     evals = [evaluate(make(compute=lambda: 16.13 * IN.per_cycle + IN.offset, expected_status="consistent"))]
     first, second = json_dump(evals), json_dump([evaluate(evals[0].claim)])

@@ -19,7 +19,7 @@ def test_presentation_modules_are_not_in_a_claim_key_but_the_evaluation_is():
     evaluating ledger modules and none of the presentation modules."""
     for c in registry.claims():
         deps = set(registry.claim_dependencies(c.id))
-        assert {"ledger/core.py", "ledger/inputs.py", "ledger/registry.py"} <= deps, c.id
+        assert {"claims/core.py", "claims/inputs.py", "ledger/registry.py"} <= deps, c.id
         assert not {f"ledger/{name}" for name in registry._PRESENTATION} & deps, c.id
 
 
@@ -35,12 +35,13 @@ def test_evaluating_claims_imports_no_presentation_module():
         "    if registry._CLAIM_MODULE[c.id] in ('navcore.papers.wf', 'navcore.papers.atc10_jamming'):\n"
         "        ev = registry.evaluate_claim(c.id)\n"
         "        [getattr(ev, f) for f in registry._RECORD_FIELDS]\n"
-        "print(json.dumps(sorted(m for m in sys.modules if m.startswith('navcore.ledger'))))\n"
+        "ours = ('navcore.ledger', 'navcore.claims')\n"
+        "print(json.dumps(sorted(m for m in sys.modules if m.startswith(ours))))\n"
     )
     env = dict(os.environ, NAVCORE_CACHE="off")
     out = subprocess.run(
         [sys.executable, "-c", code], cwd=ROOT, env=env, capture_output=True, text=True, check=True
     )
     loaded = set(json.loads(out.stdout.strip().splitlines()[-1]))
-    assert "navcore.ledger.core" in loaded
+    assert "navcore.claims.core" in loaded
     assert not {f"navcore.ledger.{name.removesuffix('.py')}" for name in registry._PRESENTATION} & loaded

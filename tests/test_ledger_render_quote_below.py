@@ -14,7 +14,8 @@ from pathlib import Path
 import pytest
 
 from navcore.ledger import EXACT, Claim, evaluate
-from navcore.ledger.render import LedgerTable, math_em, quote_below
+from navcore.ledger.tables import LedgerTable
+from navcore.ledger.text import math_em, quote_below
 
 ROOT = Path(__file__).resolve().parents[1]
 #: ATC-10 Eqs. (H.8)-(H.22) as quoted: one product of seven factors, with no operator at its

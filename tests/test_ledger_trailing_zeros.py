@@ -14,14 +14,14 @@ import json
 
 import pytest
 
-from navcore.ledger import Claim, InputSet, Tolerance, evaluate, printed
-from navcore.ledger.core import (
+from navcore.claims.core import (
     PRECISION_LOOSE,
     PRECISION_READING,
     PRECISION_STRICT,
     Erratum,
     precision_status,
 )
+from navcore.ledger import Claim, InputSet, Tolerance, evaluate, printed
 
 IN = InputSet("SP", "synthetic_trailing_zeros")
 IN.assumed("offset", 0.0, low=-1.0, high=1.0, reason="test range", unit="m")

@@ -92,7 +92,7 @@ def test_dask_backend_gives_the_serial_numbers():
     import joblib
 
     from navcore.ledger import evaluate, registry
-    from navcore.ledger.render import json_dump
+    from navcore.ledger.tables import json_dump
 
     sc = _scenario()
     serial = run_monte_carlo(sc, "tc", 8, seed=5, initialise=False, batches=2)
@@ -128,7 +128,7 @@ def test_parallel_ledger_is_the_serial_ledger(monkeypatch):
     Oracle: :func:`navcore.ledger.evaluate` of each claim in this process.
     """
     from navcore.ledger import evaluate, registry
-    from navcore.ledger.render import json_dump
+    from navcore.ledger.tables import json_dump
 
     monkeypatch.setenv("NAVCORE_CACHE", "off")  # every claim goes to a worker
 
@@ -151,4 +151,4 @@ def test_claim_dependencies_follow_the_imports():
     deps = registry.claim_dependencies("KZL-fig4-dd-phases-robust")
     assert {"integration/ekf_ins_gnss.py", "inertial/strapdown.py", "papers/kzl_scenario.py"} <= set(deps)
     assert not any(d.startswith("detection/") for d in deps)
-    assert "ledger/core.py" in deps and "papers/paper_items.json" in deps
+    assert "claims/core.py" in deps and "papers/paper_items.json" in deps

@@ -2,8 +2,8 @@
 
 Claim quantities, notes and tolerance reasons, errata locators, findings and evidence, and input
 quantities and reasons render in the claim rows, the ledger, the errata page and the
-Assumptions page, where ``$...$`` is set as math (:func:`navcore.ledger.render.html_text`,
-:func:`~navcore.ledger.render.tex_text`). Outside those spans, e-notation (``1e-6``), flat
+Assumptions page, where ``$...$`` is set as math (:func:`navcore.ledger.text.html_text`,
+:func:`~navcore.ledger.text.tex_text`). Outside those spans, e-notation (``1e-6``), flat
 subscripts (``P_DL``, ``sigma0``), spelled-out Greek letters (``rho =``), powers (``^2``),
 ``sqrt(`` and ASCII operator notation (``[a x]``, ``(x)``) read as program text: they belong
 inside ``$...$`` (``$10^{-6}$``, ``$P_{DL}$``, ``$\\sigma_0$``). Quotes of the paper
@@ -19,8 +19,8 @@ import re
 
 import pytest
 
-from navcore.ledger.render import PLAIN_LATEX_SOURCE, PLAIN_MATH_PATTERNS, PLAIN_STARRED, math_spans
-from navcore.ledger.render import plain_math as plain_math
+from navcore.formatting import PLAIN_LATEX_SOURCE, PLAIN_MATH_PATTERNS, PLAIN_STARRED, math_spans
+from navcore.formatting import plain_math as plain_math
 
 #: Plain-text math, by kind: what each pattern finds outside ``$...$``. The one list that the
 #: registry's texts (here), the docstrings' prose (``tests/test_docstring_math.py``) and the text
@@ -67,7 +67,7 @@ def test_detector_finds_plain_math_and_passes_set_math(text, kinds):
 
 def _registry_texts() -> list[tuple[str, str, str]]:
     from navcore import ledger
-    from navcore.ledger.inputs import all_inputs
+    from navcore.claims.inputs import all_inputs
 
     texts = []
     for c in ledger.claims():
@@ -133,7 +133,7 @@ def test_input_texts_set_every_formula_as_math():
     0.999')``, not ``P_DL``; ``$\\tau/\\alpha = 10^{-5}$``, not ``tau/alpha = 10^-5``; ``$K = 1$``.
     Words and the paper's quoted words are unchanged; units (``unit``) stay plain."""
     from navcore import ledger
-    from navcore.ledger.inputs import all_inputs
+    from navcore.claims.inputs import all_inputs
 
     ledger.claims()
     # navcore's own inputs: the test modules' synthetic inputs (declared when a worker collects
@@ -194,7 +194,7 @@ _OPEN_DOLLAR = re.compile(r"(?<!\\)\$(?=\S)")
 def quote_problems(quote: str) -> list[str]:
     """What keeps a quote's formulas from being set as math: an odd number of dollar signs, LaTeX
     source or a flat subscript (``p_d``, ``x_D``) outside its ``$...$`` and ``$$...$$``."""
-    from navcore.ledger.render import _DISPLAY
+    from navcore.ledger.text import _DISPLAY
 
     if quote.count("$$") % 2:
         return ["an unbalanced $$"]
@@ -235,7 +235,7 @@ def test_every_quote_sets_its_formulas_as_math():
     the JSON and CSV exports) sets each formula as math: the transcription left many bare
     (``\\mathbf{H}``, ``p_d``, ``P_{DL}``, a displayed equation cut at one of its ``$$``)."""
     from navcore import ledger
-    from navcore.ledger.core import claim_quote
+    from navcore.claims.core import claim_quote
 
     quotes = [(c.id, claim_quote(c)) for c in ledger.claims()]
     assert sum(src == "claim" for _, (_, src) in quotes) > 400
@@ -258,7 +258,7 @@ def test_every_quote_sets_its_formulas_as_math():
 )
 def test_unit_text_sets_powers_and_formulas(unit, shown):
     """Oracle: each unit as a reader should see it, written out by hand."""
-    from navcore.ledger.render import unit_text
+    from navcore.formatting import unit_text
 
     assert unit_text(unit) == shown
 
@@ -269,8 +269,8 @@ def test_every_unit_is_shown_without_plain_math():
     unit column) has no formula left as program text (``m^3/s^2``, ``N tau_c / alpha``); the
     registry keeps the plain unit, which the JSON and CSV exports carry."""
     from navcore import ledger
-    from navcore.ledger.inputs import all_inputs
-    from navcore.ledger.render import unit_text
+    from navcore.claims.inputs import all_inputs
+    from navcore.formatting import unit_text
 
     units = {c.unit for c in ledger.claims()} | {i.unit for i in all_inputs()}
     assert len(units) > 50
@@ -300,8 +300,8 @@ def test_quote_markup_is_rendered_not_shown():
     rendered in a claim row, HTML and PDF, and its words are kept: no quote shows plain math or
     literal asterisks. Oracle: hand-written cells, then every claim's quote."""
     from navcore import ledger
-    from navcore.ledger.core import claim_quote
-    from navcore.ledger.render import _printed_html, _printed_tex
+    from navcore.claims.core import claim_quote
+    from navcore.ledger.text import _printed_html, _printed_tex
 
     cell = _printed_html("the performance of the matched filter detector **deteriorates**")
     assert cell == "the performance of the matched filter detector <strong>deteriorates</strong>"

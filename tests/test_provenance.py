@@ -21,7 +21,7 @@ from pathlib import Path
 import pytest
 
 from navcore.ledger import Claim, Tolerance, evaluate
-from navcore.ledger.render import csv_export, json_dump, json_export
+from navcore.ledger.tables import csv_export, json_dump, json_export
 from navcore.provenance import CORE_PACKAGES, BuildProvenance, build_provenance
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -252,7 +252,7 @@ def test_a_toy_book_build_names_its_build(tmp_path: Path) -> None:
 @pytest.mark.skipif(shutil.which("node") is None, reason="node is not installed")
 def test_the_ledger_pages_csv_download_has_the_command_lines_build_columns() -> None:
     """Oracle: the page's script (run by node) against BuildProvenance.flat, key for key, in order."""
-    from navcore.ledger.render import _LEDGER_JS
+    from navcore.ledger.interactive import _LEDGER_JS
 
     start, end = _LEDGER_JS.index("  function buildColumns"), _LEDGER_JS.index("  function download")
     p = build_provenance()

@@ -15,16 +15,10 @@ from pathlib import Path
 
 import pytest
 
+from navcore.formatting import math_spans
 from navcore.ledger import EXACT, Claim, Erratum, Tolerance, evaluate
-from navcore.ledger.render import (
-    ErrataList,
-    LedgerTable,
-    claim_group,
-    group_claims,
-    html_text,
-    math_spans,
-    tex_text,
-)
+from navcore.ledger.tables import ErrataList, LedgerTable, group_claims
+from navcore.ledger.text import claim_group, html_text, tex_text
 
 ROOT = Path(__file__).resolve().parents[1]
 TOL = Tolerance(reason="half a unit in the last printed digit", abs=0.5, policy="printed-digits")
@@ -407,14 +401,14 @@ def test_no_old_id_left_in_the_repository():
 )
 def test_quote_math_makes_a_cut_formula_whole(piece, made_whole):
     """Oracle: each fragment closed by hand (a quote may stop inside the paper's display)."""
-    from navcore.ledger.render import quote_math
+    from navcore.ledger.text import quote_math
 
     assert quote_math(piece) == made_whole
 
 
 def _claim_quotes() -> list[tuple[str, str]]:
     from navcore import ledger
-    from navcore.ledger.core import claim_quote
+    from navcore.claims.core import claim_quote
 
     quotes = [(c.id, claim_quote(c)) for c in ledger.claims()]
     return [(cid, q) for cid, (q, src) in quotes if src == "claim"]
@@ -424,7 +418,7 @@ def test_no_quote_is_shown_as_latex_source():
     """Every claim's quote is typeset: its words as text and its formulas as math, in the HTML
     claim rows and ledger (MathJax) and in the PDF tables; none falls back to LaTeX source in
     code type (which it did for 84 quotes whose formulas the transcription left bare)."""
-    from navcore.ledger.render import _printed_html, _printed_tex
+    from navcore.ledger.text import _printed_html, _printed_tex
 
     quotes = _claim_quotes()
     assert len(quotes) > 400
@@ -437,7 +431,7 @@ def test_every_quote_typesets_in_latex(tmp_path):
     without an error, cut formulas (an open brace, a lone \\left, rows of a matrix) included."""
     import shutil
 
-    from navcore.ledger.render import FIT_MATH_PREAMBLE, _printed_tex
+    from navcore.ledger.text import FIT_MATH_PREAMBLE, _printed_tex
 
     if shutil.which("xelatex") is None:
         pytest.skip("xelatex is not installed")

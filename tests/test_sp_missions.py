@@ -7,7 +7,7 @@ import pytest
 
 from navcore._validate import ModelDomainError
 from navcore.integration.engine import CovarianceAnalysis, concatenate_analyses
-from navcore.ledger.inputs import overriding
+from navcore.claims.inputs import overriding
 from navcore.papers import sp_missions_scenarios as sc
 from navcore.units import DEG, FT
 

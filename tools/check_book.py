@@ -327,7 +327,7 @@ def _reader_text_without_printed(page_html: str) -> list[str]:
 
 def plain_text_math(text: str) -> list[tuple[str, str]]:
     r"""The (kind, text) of each formula written as program text in ``text`` outside its math:
-    the patterns the ledger's texts are held to (:func:`navcore.ledger.render.plain_math`:
+    the patterns the ledger's texts are held to (:func:`navcore.formatting.plain_math`:
     e-notation, a flat subscript, a spelled-out Greek letter, a power, ``sqrt(``, ...), one list
     for both. LaTeX source is ``latex_outside_math``'s.
 
@@ -336,7 +336,7 @@ def plain_text_math(text: str) -> list[tuple[str, str]]:
     >>> plain_text_math(r"a unit of m^3/s^2 and $\beta$, \(x_1\) and tau_c")
     [('power', 'm^3'), ('power', 's^2'), ('flat subscript', 'tau_c'), ('Greek name', 'tau_c')]
     """
-    from navcore.ledger.render import plain_math
+    from navcore.formatting import plain_math
 
     shown = TYPESET_MATH.sub(lambda m: m.group(0) if m.group(0).startswith("$") else " ", text)
     shown = NOT_FORMULAS.sub(" ", shown)

@@ -5,9 +5,9 @@ Usage: ``python tools/mutation.py [PACKAGE ...] [--budget-min M] [--max-children
 :data:`PACKAGES` (default: all of them).
 
 The packages (:data:`PACKAGES`): the model packages (estimation, inertial, gnss,
-integration, detection, location, frames), the ledger engine (``ledger``), ``units``
-(``navcore/units.py`` and the validation layer ``navcore/_validate.py``), ``figures``, the
-paper modules' functions
+integration, detection, location, frames), the ledger engine (``ledger``: ``navcore/claims``,
+``navcore/ledger`` and ``navcore/formatting.py``), ``units`` (``navcore/units.py`` and the
+validation layer ``navcore/_validate.py``), ``figures``, the paper modules' functions
 (``papers``: the claims are their tests), ``tools`` (``tools/*.py``) and the book's Sphinx
 extensions (``book_ext``). Each is run with the tests that exercise it, never the whole
 suite.
@@ -210,9 +210,10 @@ PACKAGES: dict[str, Package] = {
     ),
     "gravity": Package(["navcore/gravity.py"], ["test_gravity.py"]),
     # the ledger engine on synthetic claims (one test evaluates a single registry claim: the
-    # evaluation cache's round trip)
+    # evaluation cache's round trip): the claims' types and verdict rule, the registry, the
+    # rendering, and the text of units and numbers it prints with
     "ledger": Package(
-        ["navcore/ledger/*"],
+        ["navcore/claims/*", "navcore/ledger/*", "navcore/formatting.py"],
         [
             "test_ledger.py",
             "test_ledger_inputs.py",
@@ -236,6 +237,7 @@ PACKAGES: dict[str, Package] = {
             "test_ledger_trailing_zeros.py",
             "test_ledger_note_text.py",
             "test_plain_math.py",
+            "test_book_format.py",
         ],
         deselect="each_published_input_moves or every_tolerance_has_a_policy or no_old_id_left",
         copy=("_config.yml",),  # a rendering test reads the book's LaTeX settings

@@ -1,33 +1,15 @@
-"""The verification ledger: every published number as a claim, checked by navcore.
+"""The verification ledger: every paper's claims gathered, evaluated, rendered and summarised.
 
-Schema and policy: see the book's introduction and its ledger page. Typical use
-from a paper module::
-
-    from navcore.ledger import Claim, Erratum, Tolerance, printed
-
-    value, tol = printed("17.67")
-    CLAIMS = [
-        Claim(
-            id="SP-fig2.1-omega0",
-            paper="SP",
-            locator="Fig. 2.1",
-            quantity="loop natural frequency for a 90 deg peak error",
-            published=value,
-            unit="rad/s",
-            compute=lambda: natural_frequency_for_peak(...),
-            tolerance=tol,
-            expected_status="reproduced",
-            note="phase converted with ...",
-        )
-    ]
-
-and from anywhere::
+Schema and policy: see the book's introduction and its ledger page. A paper module declares
+its claims, errata and inputs with :mod:`navcore.claims` (the types and the verdict rule);
+the ledger re-exports those names, so a reader may write ``from navcore.ledger import
+Claim`` as well. From anywhere::
 
     from navcore import ledger
     ledger.evaluations(paper="SP")
 """
 
-from navcore.ledger.core import (
+from navcore.claims import (
     BAND_FACTOR,
     ERRATUM_BASES,
     EXACT,
@@ -41,17 +23,21 @@ from navcore.ledger.core import (
     Claim,
     Erratum,
     Evaluation,
+    Input,
+    InputSet,
     Tolerance,
+    band_ahead,
     claim_errata,
     claim_quote,
     evaluate,
     figure_reading,
+    for_each_band_run,
+    input_cache,
     monte_carlo,
     printed,
     prose,
     quote_policies,
 )
-from navcore.ledger.inputs import Input, InputSet, band_ahead, for_each_band_run, input_cache
 from navcore.ledger.registry import (
     cache_dir,
     claim,

@@ -12,7 +12,6 @@ import contextlib
 import hashlib
 import importlib
 import json
-import math
 import os
 import pkgutil
 import time
@@ -22,7 +21,16 @@ from functools import cache
 from pathlib import Path
 from typing import Any
 
-from navcore.ledger.core import PAPERS, STATUSES, Claim, Erratum, Evaluation, evaluate
+from navcore.claims.core import (
+    PAPERS,
+    STATUSES,
+    Claim,
+    Erratum,
+    Evaluation,
+    evaluate,
+    from_jsonable,
+    jsonable,
+)
 
 __all__ = [
     "cache_dir",
@@ -174,7 +182,7 @@ def validate_registry(all_claims: list[Claim], all_errata: list[Erratum]) -> Non
             if cid not in seen:
                 raise ValueError(f"erratum {e.id!r} names unknown claim {cid!r}")
     _check_published_is_printed(all_claims)
-    from navcore.ledger.inputs import all_inputs
+    from navcore.claims.inputs import all_inputs
 
     papers_loaded = {c.paper for c in all_claims}
     for inp in all_inputs():
@@ -191,8 +199,8 @@ def validate_registry(all_claims: list[Claim], all_errata: list[Erratum]) -> Non
 def _check_published_is_printed(all_claims: list[Claim]) -> None:
     """Refuse a number claim whose quote (the claim's own, or the digits given to ``printed``)
     does not print its published value, unless it is a reasoned exception."""
+    from navcore.claims.core import claim_quote, quote_has_number
     from navcore.ledger.allowlists import PUBLISHED_NOT_IN_QUOTE
-    from navcore.ledger.core import claim_quote, quote_has_number
 
     for c in all_claims:
         if c.is_statement or c.id in PUBLISHED_NOT_IN_QUOTE:
@@ -214,7 +222,7 @@ def claims(paper: str | None = None, prefix: str | None = None) -> tuple[Claim, 
     Parameters
     ----------
     paper : str or None, optional
-        Paper key, one of :data:`~navcore.ledger.core.PAPERS` (``"KZL"``); ``None`` for
+        Paper key, one of :data:`~navcore.claims.core.PAPERS` (``"KZL"``); ``None`` for
         every paper. Only that paper's modules are imported.
     prefix : str or None, optional
         Keep only the claims whose id starts with it (``"KZL-eq"``); a prefix that starts
@@ -223,7 +231,7 @@ def claims(paper: str | None = None, prefix: str | None = None) -> tuple[Claim, 
     Returns
     -------
     tuple of Claim
-        The claims, by paper in the order of :data:`~navcore.ledger.core.PAPERS`, then in
+        The claims, by paper in the order of :data:`~navcore.claims.core.PAPERS`, then in
         the order their modules define them.
 
     Raises
@@ -253,12 +261,12 @@ def errata(paper: str | None = None) -> tuple[Erratum, ...]:
     Parameters
     ----------
     paper : str or None, optional
-        Paper key, one of :data:`~navcore.ledger.core.PAPERS`; ``None`` for every paper.
+        Paper key, one of :data:`~navcore.claims.core.PAPERS`; ``None`` for every paper.
 
     Returns
     -------
     tuple of Erratum
-        The errata, by paper in the order of :data:`~navcore.ledger.core.PAPERS`, then in
+        The errata, by paper in the order of :data:`~navcore.claims.core.PAPERS`, then in
         the order their modules define them.
 
     Raises
@@ -370,17 +378,17 @@ def _module_file(name: str) -> Path | None:
     return None
 
 
-#: The ledger's modules that present evaluations (tables, notes in words, summaries): no field
-#: of a stored evaluation is computed by them, and no claim's computation imports them
-#: (``tests/test_ledger_registry_keys.py`` checks both in a fresh process).
-_PRESENTATION = ("render.py", "summary.py")
+#: The ledger's modules that present evaluations (text, tables, the interactive table,
+#: summaries): no field of a stored evaluation is computed by them, and no claim's computation
+#: imports them (``tests/test_ledger_registry_keys.py`` checks both in a fresh process).
+_PRESENTATION = ("summary.py", "text.py", "tables.py", "interactive.py")
 
 
 @cache
 def _module_dependencies(module: str) -> tuple[Path, ...]:
     """The files a claim of ``module`` can execute or read: the navcore modules it imports,
     directly or through other navcore modules, at any level (with each package's
-    ``__init__``), the ledger's own modules that evaluate (they compute no model value, so
+    ``__init__``), the claims' and the ledger's own modules that evaluate (they compute no model value, so
     their own imports are not followed; the modules of :data:`_PRESENTATION` compute no stored
     field and are left out), and navcore's data files.
 
@@ -392,6 +400,7 @@ def _module_dependencies(module: str) -> tuple[Path, ...]:
     # evaluation's fields, so a change to them re-renders pages without re-evaluating a claim
     # (unless a module that computes imports them: the walk below adds them then)
     seen: set[Path] = {p for p in _NAVCORE.joinpath("ledger").glob("*.py") if p.name not in _PRESENTATION}
+    seen.update(_NAVCORE.joinpath("claims").glob("*.py"))
     todo = [module]
     while todo:
         name = todo.pop()
@@ -446,9 +455,9 @@ def claim_dependencies(claim_id: str) -> tuple[str, ...]:
     Examples
     --------
     >>> deps = claim_dependencies(claims("KZL")[0].id)
-    >>> "ledger/core.py" in deps, "integration/ekf_ins_gnss.py" in deps, "detection/roc.py" in deps
+    >>> "claims/core.py" in deps, "integration/ekf_ins_gnss.py" in deps, "detection/roc.py" in deps
     (True, True, False)
-    >>> "ledger/render.py" in deps
+    >>> "ledger/tables.py" in deps
     False
     """
     c = claim(claim_id)
@@ -507,31 +516,6 @@ def cache_dir() -> Path | None:
     return parent / "claims"
 
 
-def _to_json(value: Any) -> Any:
-    if value is None or isinstance(value, bool | str):
-        return value
-    if isinstance(value, list | tuple):
-        return [_to_json(v) for v in value]
-    if isinstance(value, dict):
-        return {k: _to_json(v) for k, v in value.items()}
-    if isinstance(value, int):
-        return value
-    v = float(value)
-    return {"float": repr(v)} if not math.isfinite(v) else v
-
-
-def _from_json(value: Any, sequence: type = tuple) -> Any:
-    """Undo :func:`_to_json`; JSON arrays become ``sequence`` (tuples, as the evaluation fields
-    hold them; the recorded input values are plain JSON with lists, see ``core.jsonable``)."""
-    if isinstance(value, dict):
-        if set(value) == {"float"}:
-            return float(value["float"])
-        return {k: _from_json(v, sequence) for k, v in value.items()}
-    if isinstance(value, list):
-        return sequence(_from_json(v, sequence) for v in value)
-    return value
-
-
 _RECORD_FIELDS = (
     "reproduced",
     "passes",
@@ -584,10 +568,10 @@ def _cached(claim_id: str) -> Evaluation | None:
         if _strict_evaluation() and data.get("strict") is not True:
             return None  # made without the strict rules: it may hide a warning
         c = claim(claim_id)
-        from navcore.ledger.core import resolve_tolerance
+        from navcore.claims.core import resolve_tolerance
 
-        fields = {k: _from_json(data[k]) for k in _RECORD_FIELDS if k != "inputs"}
-        inputs = tuple(_from_json(data["inputs"], sequence=list))
+        fields = {k: from_jsonable(data[k]) for k in _RECORD_FIELDS if k != "inputs"}
+        inputs = tuple(from_jsonable(data["inputs"], sequence=list))
     except (OSError, ValueError, KeyError):
         return None
     return Evaluation(c, **fields, inputs=inputs, tolerance=resolve_tolerance(c))
@@ -597,7 +581,7 @@ def _store(ev: Evaluation) -> None:
     folder = cache_dir()
     if folder is None:
         return
-    data = {k: _to_json(getattr(ev, k)) for k in _RECORD_FIELDS}
+    data = {k: jsonable(getattr(ev, k), round_trip=True) for k in _RECORD_FIELDS}
     data["key"] = _claim_key(ev.claim.id)
     data["strict"] = _strict_evaluation()
     data["dependencies"] = list(claim_dependencies(ev.claim.id))
@@ -634,7 +618,7 @@ def evaluate_claim(claim_id: str) -> Evaluation:
     Returns
     -------
     Evaluation
-        The claim's evaluation (:func:`~navcore.ledger.core.evaluate`); the same object on
+        The claim's evaluation (:func:`~navcore.claims.core.evaluate`); the same object on
         every later call in the process.
 
     Raises
@@ -782,7 +766,7 @@ def evaluate_in_parallel(claim_ids: list[str], n_jobs: int | None = -1) -> dict[
 
     The claims that are neither memoised nor on disk go to :func:`navcore.parallel.run_tasks`
     in the tasks of :func:`ledger_tasks`; each evaluation is the one a serial run gives, bit
-    for bit (the workers run the same :func:`~navcore.ledger.core.evaluate`, and the fields
+    for bit (the workers run the same :func:`~navcore.claims.core.evaluate`, and the fields
     come back pickled). Later calls of :func:`evaluate_claim` return them.
 
     Parameters
@@ -816,7 +800,7 @@ def evaluate_in_parallel(claim_ids: list[str], n_jobs: int | None = -1) -> dict[
     seconds: dict[str, float] = {}
     if not todo:
         return seconds
-    from navcore.ledger.core import resolve_tolerance
+    from navcore.claims.core import resolve_tolerance
 
     for records in run_tasks(_group_records, [(t,) for t in ledger_tasks(todo)], n_jobs=n_jobs):
         for cid, fields, elapsed in records:
@@ -840,7 +824,7 @@ def evaluations(
     Parameters
     ----------
     paper : str or None, optional
-        Paper key, one of :data:`~navcore.ledger.core.PAPERS`; ``None`` for every paper.
+        Paper key, one of :data:`~navcore.claims.core.PAPERS`; ``None`` for every paper.
     prefix : str or None, optional
         Keep only the claims whose id starts with it.
     n_jobs : int or None, optional
@@ -879,14 +863,14 @@ def counts(paper: str | None = None) -> dict[str, dict[str, int]]:
     Parameters
     ----------
     paper : str or None, optional
-        Paper key, one of :data:`~navcore.ledger.core.PAPERS`; ``None`` (or ``""``) for
+        Paper key, one of :data:`~navcore.claims.core.PAPERS`; ``None`` (or ``""``) for
         every paper.
 
     Returns
     -------
     dict of str to dict of str to int
         For each paper, the number of claims with each derived verdict of
-        :data:`~navcore.ledger.core.STATUSES` (zero included), any other status met (an
+        :data:`~navcore.claims.core.STATUSES` (zero included), any other status met (an
         ``error`` of a claim whose evaluation failed) and ``total``.
 
     Raises

@@ -13,7 +13,7 @@ import textwrap
 from collections.abc import Sequence
 from typing import Any
 
-from navcore.ledger.core import (
+from navcore.claims.core import (
     ERRATUM_BASES,
     ERRATUM_KINDS,
     KINDS,
@@ -23,8 +23,9 @@ from navcore.ledger.core import (
     Erratum,
     Evaluation,
 )
-from navcore.ledger.inputs import Input, get_input
-from navcore.ledger.render import unit_text
+from navcore.claims.inputs import Input, get_input
+from navcore.formatting import unit_text
+from navcore.ledger.text import format_value, published_text
 
 __all__ = [
     "assumed_inputs_frame",
@@ -32,6 +33,7 @@ __all__ = [
     "count_table",
     "finding_evidence",
     "findings_count_table",
+    "findings_phrase",
     "findings_text",
     "fitted_inputs_frame",
     "input_readers",
@@ -54,8 +56,8 @@ def count_table(evals: Sequence[Evaluation]) -> list[dict[str, Any]]:
     -------
     list of dict
         One row per (paper, kind) with claims, in the order of
-        :data:`~navcore.ledger.core.PAPERS` and :data:`~navcore.ledger.core.KINDS`: a count
-        per verdict of :data:`~navcore.ledger.core.STATUSES`, ``error`` (claims whose
+        :data:`~navcore.claims.core.PAPERS` and :data:`~navcore.claims.core.KINDS`: a count
+        per verdict of :data:`~navcore.claims.core.STATUSES`, ``error`` (claims whose
         evaluation failed) and ``total``; the last row, paper and kind ``"all"``, sums them.
 
     Examples
@@ -146,8 +148,8 @@ def findings_count_table(errata: Sequence[Erratum]) -> list[dict[str, Any]]:
     -------
     list of dict
         One row per (paper, basis) with findings, in the order of
-        :data:`~navcore.ledger.core.PAPERS` and :data:`~navcore.ledger.core.ERRATUM_BASES`,
-        a count per kind of :data:`~navcore.ledger.core.ERRATUM_KINDS` and ``total``; then,
+        :data:`~navcore.claims.core.PAPERS` and :data:`~navcore.claims.core.ERRATUM_BASES`,
+        a count per kind of :data:`~navcore.claims.core.ERRATUM_KINDS` and ``total``; then,
         for more than one paper, one row per basis over all papers (paper ``"all"``); the
         last row, paper and basis ``"all"``, sums them.
 
@@ -252,7 +254,7 @@ def input_readers(evals: Sequence[Evaluation], provenance: str) -> list[tuple[In
     evals : sequence of Evaluation
         The evaluations to summarise (from :func:`~navcore.ledger.registry.evaluations`).
     provenance : str
-        One of :data:`~navcore.ledger.inputs.PROVENANCES` (the ledger's rules, "Provenance of an
+        One of :data:`~navcore.claims.inputs.PROVENANCES` (the ledger's rules, "Provenance of an
         input").
 
     Returns
@@ -384,7 +386,6 @@ def _breakable(text: str) -> str:
 
 
 def _fmt(value: Any) -> str:
-    from navcore.ledger.render import format_value
 
     if isinstance(value, tuple | list):
         return "(" + ", ".join(_fmt(v) for v in value) + ")"
@@ -435,7 +436,7 @@ def prose_words_frame() -> Any:
     Returns
     -------
     pandas.DataFrame
-        One row per word of :data:`~navcore.ledger.core.PROSE_WORDS`, columns ``Word in the
+        One row per word of :data:`~navcore.claims.core.PROSE_WORDS`, columns ``Word in the
         paper`` and ``Band the ledger uses`` (the ledger's rules, "Tolerance: fixed before the value
         is computed").
 
@@ -448,7 +449,7 @@ def prose_words_frame() -> Any:
     """
     import pandas as pd
 
-    from navcore.ledger.core import PROSE_WORDS
+    from navcore.claims.core import PROSE_WORDS
 
     return pd.DataFrame(
         [{"Word in the paper": w, "Band the ledger uses": b["meaning"]} for w, b in PROSE_WORDS.items()]
@@ -706,8 +707,6 @@ def sensitivity_frame(evals: Sequence[Evaluation]) -> Any:
     """
     import pandas as pd
 
-    from navcore.ledger.render import _published
-
     rows = []
     for inp, readers in _inputs_of(evals, "assumed"):
         label = _label(inp)
@@ -722,9 +721,47 @@ def sensitivity_frame(evals: Sequence[Evaluation]) -> Any:
                     "Low end": _fmt(row[0][1]),
                     "Nominal": _fmt(e.reproduced),
                     "High end": _fmt(row[-1][1]),
-                    "Printed": _published(e) + (f" {unit}" if unit else ""),
+                    "Printed": published_text(e) + (f" {unit}" if unit else ""),
                     "Verdict": e.status,
                 }
             )
     columns = ["Assumed input / claim", "Low end", "Nominal", "High end", "Printed", "Verdict"]
     return pd.DataFrame(rows, columns=columns)
+
+
+def findings_phrase(items: Sequence[Erratum]) -> str:
+    """The findings in one phrase: their number, then per basis its count and its kinds
+    (``"9 findings: 4 computed (2 inconsistent numbers, ...), 5 text-only (...)"``).
+
+    Parameters
+    ----------
+    items : sequence of Erratum
+        The findings (errata) to count.
+
+    Returns
+    -------
+    str
+        The phrase, bases in the order of :data:`~navcore.claims.core.ERRATUM_BASES` and kinds
+        in that of :data:`~navcore.claims.core.ERRATUM_KINDS`; ``"0 findings"`` for none.
+
+    Examples
+    --------
+    >>> findings_phrase([])
+    '0 findings'
+    >>> from navcore.ledger import Erratum
+    >>> findings_phrase([Erratum(id="SP-E9-doc", paper="SP", locator="Eq. (1)", printed="m",
+    ...                          finding="km", evidence="the scale", kind="units", basis="text-only")])
+    '1 finding: 1 text-only (1 unit)'
+    """
+    parts = []
+    for b in ERRATUM_BASES:
+        sel = [e for e in items if e.basis == b]
+        if sel:
+            kinds = ", ".join(
+                f"{n} {'unit' if n == 1 and k == 'units' else k.replace('-', ' ')}"
+                for k in ERRATUM_KINDS
+                if (n := sum(e.kind == k for e in sel))
+            )
+            parts.append(f"{len(sel)} {b} ({kinds})")
+    n = len(items)
+    return f"{n} finding{'' if n == 1 else 's'}" + (": " + ", ".join(parts) if parts else "")

@@ -21,11 +21,11 @@ import sympy as sp
 from scipy import special, stats
 
 from navcore import units
+from navcore.claims import EXACT, Claim, Erratum, printed
+from navcore.claims.inputs import InputSet, input_cache
 from navcore.detection import jamming as jm
 from navcore.detection import jamming_monte_carlo as mc
 from navcore.detection.neyman_pearson import detection_index_from_jammer_ratio, false_alarm_probability
-from navcore.ledger import EXACT, Claim, Erratum, printed
-from navcore.ledger.inputs import InputSet, input_cache
 from navcore.papers import atc10_jamming as aj
 from navcore.papers.atc10_quotes import quoted
 

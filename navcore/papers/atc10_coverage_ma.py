@@ -14,6 +14,8 @@ import numpy as np
 import sympy as sp
 from scipy import integrate, special, stats
 
+from navcore.claims import EXACT, Claim, Erratum, printed
+from navcore.claims.inputs import InputSet
 from navcore.detection.multiple_access import (
     GaussianDensity,
     MultipleAccessNoise,
@@ -32,8 +34,6 @@ from navcore.detection.roc_bounds import (
     quasi_optimal_exponent,
 )
 from navcore.detection.zakai import aperiodic_autocorrelation, m_sequence, piecewise_linear_inner
-from navcore.ledger import EXACT, Claim, Erratum, printed
-from navcore.ledger.inputs import InputSet
 from navcore.papers import atc10_multiple_access as ma
 from navcore.papers.atc10_quotes import quoted
 

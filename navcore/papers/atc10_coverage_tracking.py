@@ -15,9 +15,9 @@ import math
 import numpy as np
 from scipy import optimize, special
 
-from navcore.ledger import EXACT, Claim, Erratum, printed
-from navcore.ledger.core import PROSE_WORDS
-from navcore.ledger.inputs import InputSet
+from navcore.claims import EXACT, Claim, Erratum, printed
+from navcore.claims.core import PROSE_WORDS
+from navcore.claims.inputs import InputSet
 from navcore.location.clock_model import (
     clock_covariance,
     clock_prediction_variance,

@@ -20,6 +20,9 @@ import numpy as np
 from scipy import optimize, special, stats
 
 from navcore import units
+from navcore.claims import EXACT, Claim, Erratum, Tolerance, figure_reading, printed
+from navcore.claims.core import monte_carlo, prose
+from navcore.claims.inputs import InputSet, input_cache
 from navcore.detection import antenna
 from navcore.detection import jamming as jm
 from navcore.detection.neyman_pearson import (
@@ -28,9 +31,6 @@ from navcore.detection.neyman_pearson import (
     false_alarm_probability,
     log_false_alarm_probability,
 )
-from navcore.ledger import EXACT, Claim, Erratum, Tolerance, figure_reading, printed
-from navcore.ledger.core import monte_carlo, prose
-from navcore.ledger.inputs import InputSet, input_cache
 from navcore.papers.atc10_quotes import quoted
 
 PAGE = "atc10/10-jamming-model"

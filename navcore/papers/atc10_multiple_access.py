@@ -17,6 +17,8 @@ from fractions import Fraction
 import numpy as np
 from scipy import integrate, special
 
+from navcore.claims import EXACT, Claim, Erratum, Tolerance, monte_carlo, printed, prose
+from navcore.claims.inputs import InputSet, input_cache
 from navcore.detection.multiple_access import (
     GaussianDensity,
     MultipleAccessNoise,
@@ -50,8 +52,6 @@ from navcore.detection.zakai import (
     psk_zakai_bandwidth,
     zakai_bandwidth,
 )
-from navcore.ledger import EXACT, Claim, Erratum, Tolerance, monte_carlo, printed, prose
-from navcore.ledger.inputs import InputSet, input_cache
 from navcore.papers.atc10_quotes import quoted
 
 PAGE_NOISE = "atc10/20-multiple-access-noise"

@@ -30,8 +30,8 @@ from typing import Any
 
 import numpy as np
 
-from navcore.ledger import EXACT, Claim, Erratum, Tolerance, figure_reading, printed, prose
-from navcore.ledger.inputs import InputSet, input_cache
+from navcore.claims import EXACT, Claim, Erratum, Tolerance, figure_reading, printed, prose
+from navcore.claims.inputs import InputSet, input_cache
 from navcore.location.clock_tracking import (
     alpha_parameter,
     convergence_steps,

@@ -11,9 +11,9 @@ import numpy as np
 import scipy.linalg
 from scipy.spatial.transform import Rotation
 
+from navcore.claims import EXACT, PROSE_WORDS, Claim, InputSet, printed
 from navcore.frames import skew
 from navcore.inertial.error_model17 import ERROR_LAYOUT_17, error_dynamics_17
-from navcore.ledger import EXACT, PROSE_WORDS, Claim, InputSet, printed
 from navcore.papers.kzl_models import IN as MODELS
 from navcore.papers.kzl_models import (
     PAGE0,

@@ -8,6 +8,7 @@ import numpy as np
 import scipy.linalg
 from scipy.spatial.transform import Rotation
 
+from navcore.claims import EXACT, Claim, Erratum, InputSet, input_cache, printed, prose
 from navcore.estimation import kf_update
 from navcore.frames import dcm_from_euler, dcm_from_quat, euler_from_dcm, quat_from_dcm, skew
 from navcore.gnss.carrier_phase import dd_covariance, euler_rate_matrix_body
@@ -28,7 +29,6 @@ from navcore.integration.measurement_rows import (
     tc_attitude_observation_matrix,
     tc_dd_observation_matrix,
 )
-from navcore.ledger import EXACT, Claim, Erratum, InputSet, input_cache, printed, prose
 from navcore.papers.kzl_quotes import quoted
 from navcore.papers.kzl_scenario import IN as SCEN
 from navcore.papers.kzl_scenario import kzl_imu, table1_baselines_b, table1_scenario, table1_sky

@@ -13,7 +13,7 @@ from __future__ import annotations
 import dataclasses
 from collections.abc import Iterable
 
-from navcore.ledger import Claim
+from navcore.claims import Claim
 
 __all__ = ["QUOTES", "quoted"]
 

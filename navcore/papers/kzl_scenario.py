@@ -45,6 +45,7 @@ from typing import cast
 
 import numpy as np
 
+from navcore.claims import InputSet, for_each_band_run, input_cache
 from navcore.frames import dcm_ecef_to_ned, ecef_to_ned
 from navcore.gnss.constellation import nominal_gps_constellation
 from navcore.gnss.dop import satellite_priority
@@ -59,7 +60,6 @@ from navcore.integration.ekf_ins_gnss import (
     run_monte_carlo,
     run_monte_carlo_batch,
 )
-from navcore.ledger import InputSet, for_each_band_run, input_cache
 from navcore.units import DEG
 
 __all__ = [
@@ -556,7 +556,7 @@ def monte_carlo(mode: str, initialise: bool = True, imu_name: str = "table1") ->
     assumed ranges), and below that on the run's complete arguments
     (:func:`~navcore.integration.ekf_ins_gnss.monte_carlo_key`): every claim and every band corner
     that asks for the same run in this process shares one computation. Inside a band the ledger
-    announces (:func:`~navcore.ledger.inputs.for_each_band_run`), the first call makes every run of the
+    announces (:func:`~navcore.claims.inputs.for_each_band_run`), the first call makes every run of the
     batch at once (:func:`~navcore.integration.ekf_ins_gnss.run_monte_carlo_batch`, which gives each
     run the numbers it gets alone) and stores them for the band's later calls. The arrays of the
     result are read-only. Results are also kept on disk (in the system temporary directory, under a

@@ -9,8 +9,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from navcore.ledger import EXACT, Claim, Erratum, InputSet, printed, prose
-from navcore.ledger import monte_carlo as mc_tolerance
+from navcore.claims import EXACT, Claim, Erratum, InputSet, printed, prose
+from navcore.claims import monte_carlo as mc_tolerance
 from navcore.papers.kzl_models import IN as MODELS
 from navcore.papers.kzl_quotes import quoted
 from navcore.papers.kzl_scenario import IN, N_RUNS, kzl_imu, monte_carlo, visibility_schedule

@@ -12,6 +12,7 @@ import math
 
 import numpy as np
 
+from navcore.claims import EXACT, Claim, Erratum, InputSet, printed, prose
 from navcore.gnss.acquisition import (
     doppler_cell_hz,
     probability_outside_sigma_box,
@@ -19,7 +20,6 @@ from navcore.gnss.acquisition import (
     search_time_from_cells,
 )
 from navcore.gnss.tracking import distance_to_phase_deg
-from navcore.ledger import EXACT, Claim, Erratum, InputSet, printed, prose
 from navcore.location.target_location import target_location_rss
 from navcore.papers import sp_tracking as spt
 from navcore.papers.sp_quotes import quoted

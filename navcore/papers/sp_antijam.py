@@ -20,6 +20,18 @@ from typing import Any
 
 import numpy as np
 
+from navcore.claims import (
+    EXACT,
+    Claim,
+    Erratum,
+    InputSet,
+    Tolerance,
+    figure_reading,
+    input_cache,
+    monte_carlo,
+    printed,
+    prose,
+)
 from navcore.estimation.covariance import biased_filter_error_covariance
 from navcore.gnss.antijam import (
     NavigatorErrorModel,
@@ -31,18 +43,6 @@ from navcore.gnss.antijam import (
     js_for_effective_cn0,
     simulate_impact_errors,
     spectral_separation_q,
-)
-from navcore.ledger import (
-    EXACT,
-    Claim,
-    Erratum,
-    InputSet,
-    Tolerance,
-    figure_reading,
-    input_cache,
-    monte_carlo,
-    printed,
-    prose,
 )
 from navcore.papers import sp_tracking as spt
 from navcore.papers.sp_quotes import quoted

@@ -6,12 +6,12 @@ from the layouts of :mod:`navcore.gnss.architectures`.
 
 from __future__ import annotations
 
+from navcore.claims import EXACT, Claim, InputSet
 from navcore.gnss.architectures import (
     loosely_coupled_layout,
     receiver_pva_layout,
     tightly_coupled_layout,
 )
-from navcore.ledger import EXACT, Claim, InputSet
 from navcore.papers.sp_quotes import quoted
 
 #: Table rows as printed (state element, components).

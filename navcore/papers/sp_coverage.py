@@ -10,13 +10,13 @@ from __future__ import annotations
 
 import numpy as np
 
+from navcore.claims import EXACT, Claim, printed, prose
+from navcore.claims.core import Status
 from navcore.gnss.architectures import (
     loosely_coupled_layout,
     receiver_pva_layout,
     tightly_coupled_layout,
 )
-from navcore.ledger import EXACT, Claim, printed, prose
-from navcore.ledger.core import Status
 from navcore.papers import sp_acquisition as spa
 from navcore.papers import sp_antijam as saj
 from navcore.papers import sp_architectures as sar

@@ -44,6 +44,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from navcore._validate import ModelDomainError
+from navcore.claims import EXACT, Claim, input_cache, printed, prose
+from navcore.claims.inputs import InputSet
 from navcore.gnss.acquisition import search_cells, search_time
 from navcore.gnss.constellation import Constellation
 from navcore.gnss.jammer_geometry import (
@@ -59,8 +61,6 @@ from navcore.gnss.tracking import third_order_loop_dynamic_error_bound, third_or
 from navcore.inertial.trajectories import Segment, Trajectory, fly
 from navcore.integration.engine import CovarianceAnalysis
 from navcore.integration.geometry import SatelliteGeometry, satellite_geometry
-from navcore.ledger import EXACT, Claim, input_cache, printed, prose
-from navcore.ledger.inputs import InputSet
 from navcore.papers import sp_acquisition as spa
 from navcore.papers import sp_missions_scenarios as sc
 from navcore.papers import sp_residual_acceleration as spr

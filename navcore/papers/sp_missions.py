@@ -14,6 +14,8 @@ from decimal import ROUND_HALF_UP, Decimal
 
 import numpy as np
 
+from navcore.claims import EXACT, Claim, Erratum, input_cache, printed, prose
+from navcore.claims.inputs import InputSet
 from navcore.estimation.discretize import discretize
 from navcore.inertial.error_dynamics import (
     ErrorSources,
@@ -27,8 +29,6 @@ from navcore.inertial.error_dynamics import (
 from navcore.inertial.imu import noise_only
 from navcore.inertial.trajectories import straight_and_level
 from navcore.integration.engine import circular_error_probable, run_covariance_analysis
-from navcore.ledger import EXACT, Claim, Erratum, input_cache, printed, prose
-from navcore.ledger.inputs import InputSet
 from navcore.papers import sp_missions_scenarios as sc
 from navcore.papers.sp_tables import GRADE_LABELS_NMI_PER_H, sp_imu_grade
 from navcore.units import DEG, MINUTE, NMI

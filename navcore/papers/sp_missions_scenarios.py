@@ -22,6 +22,8 @@ from dataclasses import dataclass, fields
 import numpy as np
 
 from navcore._validate import ModelDomainError
+from navcore.claims import input_cache
+from navcore.claims.inputs import InputSet
 from navcore.estimation.layout import StateLayout
 from navcore.gnss.architectures import loosely_coupled_layout, tightly_coupled_layout
 from navcore.gnss.constellation import Constellation, nominal_gps_constellation
@@ -48,8 +50,6 @@ from navcore.integration.schedules import (
     loosely_coupled_schedule,
     tightly_coupled_schedule,
 )
-from navcore.ledger import input_cache
-from navcore.ledger.inputs import InputSet
 from navcore.papers import sp_acquisition as spa
 from navcore.papers import sp_tables as tab
 from navcore.papers.sp_tables import (

@@ -12,13 +12,13 @@ from __future__ import annotations
 
 import numpy as np
 
+from navcore.claims import EXACT, Claim, Erratum, InputSet, Tolerance, printed
 from navcore.gnss.tracking import aided_natural_frequency, natural_frequency_for_peak_error
 from navcore.inertial.residual_acceleration import (
     residual_acceleration_covariance,
     scale_factor_misalignment_sensitivity,
     sphere_radius,
 )
-from navcore.ledger import EXACT, Claim, Erratum, InputSet, Tolerance, printed
 from navcore.papers import sp_tracking as spt
 from navcore.papers.sp_quotes import quoted
 from navcore.units import ARCSEC, GPS_L1_WAVELENGTH_M, PPM

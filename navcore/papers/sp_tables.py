@@ -20,9 +20,9 @@ from __future__ import annotations
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 
+from navcore.claims import input_cache
+from navcore.claims.inputs import InputSet
 from navcore.inertial.imu import ImuSpec, imu_spec_from_published
-from navcore.ledger import input_cache
-from navcore.ledger.inputs import InputSet
 from navcore.units import KM, MICRO_G, MRAD, NMI_PER_H, PPM, C
 
 __all__ = [

@@ -11,6 +11,7 @@ from __future__ import annotations
 import numpy as np
 from scipy import signal
 
+from navcore.claims import EXACT, Claim, Erratum, InputSet, Tolerance, input_cache, printed
 from navcore.gnss.tracking import (
     aided_natural_frequency,
     distance_to_phase_deg,
@@ -20,7 +21,6 @@ from navcore.gnss.tracking import (
     third_order_loop_step_error,
     third_order_peak_step_error,
 )
-from navcore.ledger import EXACT, Claim, Erratum, InputSet, Tolerance, input_cache, printed
 from navcore.papers.sp_quotes import quoted
 from navcore.units import FT, G0, GPS_L1_WAVELENGTH_M, GPS_P_CHIP_RATE_HZ
 

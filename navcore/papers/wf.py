@@ -18,6 +18,17 @@ from typing import Any
 
 import numpy as np
 
+from navcore.claims import (
+    EXACT,
+    PROSE_WORDS,
+    Claim,
+    Erratum,
+    InputSet,
+    figure_reading,
+    input_cache,
+    printed,
+    prose,
+)
 from navcore.estimation.federated import (
     accelerometer_steady_state_isotropic,
     correlated_joint_covariance,
@@ -29,17 +40,6 @@ from navcore.estimation.federated import (
     gps_doppler_covariance,
     minkowski_trace_bound,
     optimal_weights,
-)
-from navcore.ledger import (
-    EXACT,
-    PROSE_WORDS,
-    Claim,
-    Erratum,
-    InputSet,
-    figure_reading,
-    input_cache,
-    printed,
-    prose,
 )
 from navcore.location.emitter import (
     doppler_frequency,

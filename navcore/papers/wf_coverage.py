@@ -10,8 +10,8 @@ import itertools
 
 import numpy as np
 
+from navcore.claims import EXACT, PROSE_WORDS, Claim, printed
 from navcore.estimation.federated import accelerometer_steady_state_isotropic
-from navcore.ledger import EXACT, PROSE_WORDS, Claim, printed
 from navcore.papers.wf import (
     DOCS,
     IN,

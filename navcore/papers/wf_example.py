@@ -17,11 +17,11 @@ from __future__ import annotations
 
 import numpy as np
 
+from navcore.claims import input_cache
 from navcore.estimation.federated import (
     accelerometer_steady_state_isotropic,
     federated_fusion,
 )
-from navcore.ledger import input_cache
 from navcore.location.emitter import doppler_frequency, emitter_gauss_newton
 from navcore.papers.wf import (
     ALTITUDE,

@@ -6,7 +6,7 @@ reproduced value is never typed: it is whatever ``compute()`` returns. The claim
 its ``kind``, its tolerance (fixed by how the paper printed the number, through a named
 policy) and the verdict it expects; :func:`evaluate` derives the verdict from the
 computation, the tolerance and the provenance of every input the computation read
-(:mod:`navcore.ledger.inputs`), and the ledger fails where the two differ.
+(:mod:`navcore.claims.inputs`), and the ledger fails where the two differ.
 
 Verdicts, as derived (the ledger page)
 --------------------------------------
@@ -36,7 +36,7 @@ Verdicts, as derived (the ledger page)
 Readings
 --------
 A ``convention`` input lists every admissible reading of a text that leaves one open, each
-labelled in words, the one used included (:meth:`~navcore.ledger.inputs.InputSet.convention`).
+labelled in words, the one used included (:meth:`~navcore.claims.inputs.InputSet.convention`).
 The ledger runs a claim under every combination of the readings of the conventions it read
 (up to :data:`MAX_READING_COMBINATIONS`; beyond it, each convention's readings one at a time,
 the others at the reading used), across the assumed inputs' ranges too where the claim also
@@ -73,9 +73,9 @@ skips its corners: its band is ``(False, True)`` whatever they give; under a rea
 than the one used, whose one-at-a-time runs are not shown, its runs stop as soon as both truth
 values are in (``left_out`` counts the runs made). Each batch of runs (the one-at-a-time
 runs, then the corners) is announced before it is made (``band_ahead`` in
-:mod:`navcore.ledger.inputs`), so that a model whose runs batch well can compute the whole
+:mod:`navcore.claims.inputs`), so that a model whose runs batch well can compute the whole
 batch in one call when the first run asks, and serve the others from its
-:func:`~navcore.ledger.inputs.input_cache`; such a model gives each run the result it gives
+:func:`~navcore.claims.inputs.input_cache`; such a model gives each run the result it gives
 that run alone (KZL's Monte Carlo does, bit for bit, and its tests check it).
 
 Beyond six inputs
@@ -167,7 +167,7 @@ from dataclasses import dataclass, field
 from typing import Any, Literal
 
 from navcore._validate import ModelDomainError
-from navcore.ledger.inputs import (
+from navcore.claims.inputs import (
     Input,
     _label_and_unit,
     band_ahead,
@@ -176,6 +176,7 @@ from navcore.ledger.inputs import (
     overriding,
     recording,
 )
+from navcore.formatting import unit_text
 
 __all__ = [
     "BAND_FACTOR",
@@ -814,7 +815,7 @@ class Claim:
         values).
     compute : callable or None
         Returns the reproduced value in ``unit``; it reads its inputs from the paper
-        module's :class:`~navcore.ledger.inputs.InputSet`. ``None`` when nothing can be
+        module's :class:`~navcore.claims.inputs.InputSet`. ``None`` when nothing can be
         computed (the verdict is then ``not-reproducible``).
     tolerance : Tolerance or callable
         The allowed deviation, its policy and reason; fixed by the printed text. A callable
@@ -1675,10 +1676,8 @@ class Evaluation:
 
 
 def _unit_text(unit: str) -> str:
-    """A unit as a reader sees it in a note (:func:`navcore.ledger.render.unit_text`: ``m³/s²``,
-    not ``m^3/s^2``); the render module imports this one, so it is imported when first needed."""
-    from navcore.ledger.render import unit_text
-
+    """A unit as a reader sees it in a note (:func:`navcore.formatting.unit_text`: ``m³/s²``,
+    not ``m^3/s^2``)."""
     return unit_text(unit) if unit else unit
 
 
@@ -1863,33 +1862,61 @@ def _reading_result(reading: dict[str, Any]) -> tuple:
     )
 
 
+def _json_number(value: Any, *, round_trip: bool = False) -> Any:
+    """A number as JSON: a float; a non-finite one as text (``"Infinity"``, ``"-Infinity"``,
+    ``None`` for NaN) or, for a round trip, as ``{"float": "inf"}`` (:func:`from_jsonable`)."""
+    v = float(value)
+    if math.isfinite(v):
+        return v
+    if round_trip:
+        return {"float": repr(v)}
+    return None if math.isnan(v) else ("Infinity" if v > 0 else "-Infinity")
+
+
 def _json_value(value: Any) -> Any:
+    """A claim's value as its JSON record holds it: a truth value or ``None`` as it is, any
+    other value as a float (:func:`_json_number`)."""
     if value is None or isinstance(value, bool):
         return value
-    v = float(value)
-    if not math.isfinite(v):
-        return None if math.isnan(v) else ("Infinity" if v > 0 else "-Infinity")
-    return v
+    return _json_number(value)
 
 
-def jsonable(value: Any) -> Any:
-    """An input value as plain JSON (numbers, strings, lists, objects)."""
-    if value is None or isinstance(value, bool | str):
+def jsonable(value: Any, *, round_trip: bool = False) -> Any:
+    """A value as plain JSON (numbers, strings, lists, objects): the ledger's one JSON encoder.
+
+    For a reader (the export, the input records, the tools' records): a numpy value or array
+    as the Python value or list it holds, a key as text, a non-finite number as text, anything
+    else as its ``repr``. For a round trip (``round_trip=True``, the registry's stored
+    evaluations, read back by :func:`from_jsonable`): keys, integers and truth values as they
+    are, every other number as a float with a non-finite one kept exactly; a value that is no
+    number raises.
+    """
+    if value is None or isinstance(value, bool | str | int):
         return value
-    if isinstance(value, int):
-        return value
-    if isinstance(value, float):
-        return _json_value(value)
     if isinstance(value, dict):
-        return {str(k): jsonable(v) for k, v in value.items()}
-    if hasattr(value, "tolist"):
-        return jsonable(value.tolist())
+        return {(k if round_trip else str(k)): jsonable(v, round_trip=round_trip) for k, v in value.items()}
     if isinstance(value, list | tuple):
-        return [jsonable(v) for v in value]
+        return [jsonable(v, round_trip=round_trip) for v in value]
+    if round_trip:
+        return _json_number(value, round_trip=True)
+    if not isinstance(value, float) and hasattr(value, "tolist"):
+        return jsonable(value.tolist())
     try:
-        return _json_value(value)
+        return _json_number(value)
     except (TypeError, ValueError):
         return repr(value)
+
+
+def from_jsonable(value: Any, sequence: type = tuple) -> Any:
+    """Undo :func:`jsonable` with ``round_trip=True``; JSON arrays become ``sequence`` (tuples,
+    as the evaluation fields hold them; the recorded input values are plain JSON with lists)."""
+    if isinstance(value, dict):
+        if set(value) == {"float"}:
+            return float(value["float"])
+        return {k: from_jsonable(v, sequence) for k, v in value.items()}
+    if isinstance(value, list):
+        return sequence(from_jsonable(v, sequence) for v in value)
+    return value
 
 
 def _satisfies(value: float, relation: str, published: float, allowed: float) -> bool:
@@ -2153,7 +2180,7 @@ def reading_combinations(conventions: Sequence[Input]) -> list[tuple[tuple[Input
 
     Examples
     --------
-    >>> from navcore.ledger.inputs import Input
+    >>> from navcore.claims.inputs import Input
     >>> a = Input(name="WF.doc.a", paper="WF", value=1.0, provenance="convention",
     ...           alternative=2.0, reason="two readings")
     >>> [[label for _, label, _ in combo] for combo in reading_combinations([a])]

@@ -10,7 +10,7 @@ module defines. Each input is declared once with where it comes from:
     read from a figure against one computed, a modelling constant with a standard
     alternative); ``readings`` labels every admissible reading in words, the one used
     included (a single ``alternative`` is shorthand for two readings), and the ledger weighs
-    them all (:mod:`navcore.ledger.core`, "Readings").
+    them all (:mod:`navcore.claims.core`, "Readings").
 ``assumed``
     not in the paper; a nominal value, a plausible ``low``-``high`` range and the reason for
     both. The ledger evaluates the claim across the range and reports the band.
@@ -34,7 +34,7 @@ Two rules keep verdicts honest:
 
 Example
 -------
->>> from navcore.ledger.inputs import InputSet, recording
+>>> from navcore.claims.inputs import InputSet, recording
 >>> IN = InputSet("WF", "doc")
 >>> IN.published("carrier_hz", 1.0e9, unit="Hz", locator="Sec. IV", quantity="carrier frequency")
 >>> with recording() as reads:
@@ -388,7 +388,7 @@ class InputSet:
         """Declare a reading the text leaves open, with every admissible reading.
 
         The ledger evaluates each claim that reads it under every reading and weighs them
-        (:mod:`navcore.ledger.core`, "Readings"): a claim is discrepant only if every
+        (:mod:`navcore.claims.core`, "Readings"): a claim is discrepant only if every
         admissible reading disagrees.
 
         Parameters
@@ -714,7 +714,7 @@ def declaring() -> Iterator[None]:
     ...     IN.carrier_hz
     Traceback (most recent call last):
     ...
-    navcore.ledger.inputs.InputReadError: input WF.doc_inputs.carrier_hz read while a tolerance ...
+    navcore.claims.inputs.InputReadError: input WF.doc_inputs.carrier_hz read while a tolerance ...
     """
     token = _DECLARING.set(True)
     try:
