@@ -3571,8 +3571,8 @@ def atc10_22_psk_pf_estimate() -> str:
     """The false-alarm probability of :func:`atc10_22_psk_pf` with the stratified Monte Carlo's
     standard error at the same threshold, as the book shows an estimate
     (:func:`navcore.formatting.estimate_text`)."""
-    from navcore.formatting import estimate_text
     from navcore.detection.roc_bounds import best_pf_index_at_pd
+    from navcore.formatting import estimate_text
     from navcore.papers import atc10_multiple_access as pm
 
     roc = pm.psk_roc()

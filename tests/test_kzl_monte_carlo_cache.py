@@ -11,8 +11,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from navcore.integration.ekf_ins_gnss import monte_carlo_key, run_monte_carlo, run_monte_carlo_batch
 from navcore.claims.inputs import band_ahead, overriding, recording
+from navcore.integration.ekf_ins_gnss import monte_carlo_key, run_monte_carlo, run_monte_carlo_batch
 from navcore.papers import kzl_scenario as S
 
 FIELDS = ("pos_err", "vel_err", "att_err", "pos_sigma", "vel_sigma", "att_sigma")

@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 
 from navcore._validate import ModelDomainError
-from navcore.integration.engine import CovarianceAnalysis, concatenate_analyses
 from navcore.claims.inputs import overriding
+from navcore.integration.engine import CovarianceAnalysis, concatenate_analyses
 from navcore.papers import sp_missions_scenarios as sc
 from navcore.units import DEG, FT
 
