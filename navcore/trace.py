@@ -8,23 +8,22 @@ A model function names the paper equations (or tables, figures, sections) it imp
 A reference is ``"<PAPER> <item>"``: the paper key (``WF``, ``SP``, ``ATC10``, ``KZL``) and
 either an equation number as the paper prints it (``13``, ``2.4.2``, ``A.18``) or a labelled
 item (``Table 2.6``, ``Fig. 2.1``, ``Sec. 2.5``). The decorator only records the references;
-it returns the function itself, unchanged. :func:`registry` imports every navcore module and
-returns what was recorded; :mod:`navcore.traceability` builds the book's index from it and
-checks it against the book's pages and the ledger's locators.
+it returns the function itself, unchanged. :func:`recorded` returns what the modules imported
+so far have recorded; :func:`navcore.traceability.implementations` imports every navcore
+module first, builds the book's index from the records and checks them against the book's
+pages and the ledger's locators.
 
-This module imports nothing heavy, so that every model module can use it.
+This module imports nothing (it sits below every model module that uses it).
 """
 
 from __future__ import annotations
 
-import importlib
-import pkgutil
 import re
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TypeVar
 
-__all__ = ["PAPER_KEYS", "Implementation", "Ref", "implements", "parse_ref", "registry"]
+__all__ = ["PAPER_KEYS", "Implementation", "Ref", "implements", "parse_ref", "recorded"]
 
 PAPER_KEYS = ("WF", "SP", "ATC10", "KZL")
 _EQUATION = re.compile(r"^(?:[A-H]\.?)?\d+(?:\.\d+)*[a-z]?$")
@@ -186,26 +185,20 @@ def implements(*refs: str) -> Callable[[F], F]:
     return register
 
 
-def registry() -> tuple[Implementation, ...]:
-    """Every recorded implementation, after importing all navcore modules (sorted by name).
+def recorded() -> tuple[Implementation, ...]:
+    """The implementations recorded by the modules imported so far, sorted by full name.
 
     Returns
     -------
     tuple of Implementation
-        One per decorated function, sorted by full name. Importing every module includes
-        the paper modules, which takes seconds.
+        One per decorated function of an imported module, sorted by full name; every
+        module's records: :func:`navcore.traceability.implementations`.
 
     Examples
     --------
     >>> from navcore.detection.roc_bounds import chernoff_log_tail
-    >>> impl = next(i for i in registry() if i.qualname == "chernoff_log_tail")
+    >>> impl = next(i for i in recorded() if i.qualname == "chernoff_log_tail")
     >>> [str(r) for r in impl.refs]
     ['ATC10 3.5.5', 'ATC10 3.5.6', 'ATC10 3.5.7']
     """
-    import navcore
-
-    for info in pkgutil.walk_packages(navcore.__path__, prefix="navcore."):
-        if info.name.endswith("__main__"):
-            continue
-        importlib.import_module(info.name)
     return tuple(_REGISTRY[k] for k in sorted(_REGISTRY))

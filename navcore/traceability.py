@@ -2,7 +2,7 @@
 
 Sources, all read from the checkout (nothing is typed in):
 
-* the ``@implements`` records of the model functions (:func:`navcore.trace.registry`);
+* the ``@implements`` records of the model functions (:func:`implementations`);
 * the book's pages (``book/**/*.md``): an equation is *displayed* on a page when a display
   equation carries the label ``eq-<paper>-<number>`` (the label convention of
   ``book/_ext/paper_equations.py``), and an item is *mentioned* when the page's text names it
@@ -20,6 +20,7 @@ index.
 from __future__ import annotations
 
 import ast
+import importlib
 import json
 import re
 from collections import defaultdict
@@ -29,11 +30,12 @@ from pathlib import Path
 
 from navcore import coverage
 from navcore.coverage import ITEMS_SNAPSHOT
-from navcore.trace import Implementation, Ref, registry
+from navcore.trace import Implementation, Ref, recorded
 
 __all__ = [
     "BookPage",
     "Index",
+    "all_implementations",
     "build_index",
     "index_markdown",
     "items_in_text",
@@ -55,6 +57,8 @@ PAPER_FILES = {
 }
 _NUM = r"(?:[A-H]\.)?\d+(?:\.\d+)*[a-z]?"
 _LABEL = re.compile(r"\$\$\s*\((eq-(?:wf|sp|atc10|kzl)-[^)\s]+)\)")
+#: A decorated function's first line: the module records paper items (``navcore.trace``).
+_DECORATES = re.compile(r"^[ \t]*@implements\(", re.M)
 #: An erratum box, rendered on the page from its ``Erratum`` object (``{erratum} ID``).
 _ERRATUM_BOX = re.compile(r"^```\{erratum\}[ \t]+(\S+)", re.M)
 _PAPER_LABEL = re.compile(r"^eq-(?:wf|sp|atc10|kzl)-(?P<number>(?:[a-z]\.?)?\d+[a-z]?(?:\.\d+[a-z]?)*)$")
@@ -409,7 +413,7 @@ class Index:
         display or mention it, the tests using those functions and the claims that locate it
         (or, for an equation no locator names, that the coverage inventory says check it).
     implementations : tuple of Implementation
-        Every decorated navcore function (:func:`navcore.trace.registry`).
+        Every decorated navcore function (:func:`all_implementations`).
 
     Examples
     --------
@@ -453,11 +457,38 @@ def _inventory_claims() -> dict[Ref, list[str]]:
     return out
 
 
+def all_implementations() -> tuple[Implementation, ...]:
+    """Every ``@implements`` record of navcore, after importing the modules that decorate.
+
+    The modules are found by their source (a line that starts with ``@implements(``), so that
+    only they are imported: the models and paper modules, below this module, never the book
+    or report modules above it.
+
+    Returns
+    -------
+    tuple of Implementation
+        One per decorated function, sorted by full name (:func:`navcore.trace.recorded`).
+        Importing the paper modules takes seconds.
+
+    Examples
+    --------
+    >>> impl = next(i for i in all_implementations() if i.qualname == "chernoff_log_tail")
+    >>> impl.module, [str(r) for r in impl.refs]
+    ('navcore.detection.roc_bounds', ['ATC10 3.5.5', 'ATC10 3.5.6', 'ATC10 3.5.7'])
+    """
+    package = Path(__file__).resolve().parent
+    for path in sorted(package.rglob("*.py")):
+        if _DECORATES.search(path.read_text(encoding="utf-8")):
+            parts = path.relative_to(package.parent).with_suffix("").parts
+            importlib.import_module(".".join(parts[:-1] if parts[-1] == "__init__" else parts))
+    return recorded()
+
+
 @cache
 def build_index() -> Index:
     """Assemble the index from the decorators, the book's pages, the tests and the ledger.
 
-    Imports every navcore module (:func:`navcore.trace.registry`) and every paper's claims,
+    Imports every navcore module (:func:`all_implementations`) and every paper's claims,
     so the first call takes seconds; the result is cached.
 
     Returns
@@ -469,7 +500,7 @@ def build_index() -> Index:
     """
     from navcore import ledger
 
-    implementations = registry()
+    implementations = all_implementations()
     entries: dict[Ref, Entry] = {}
 
     def entry(ref: Ref) -> Entry:

@@ -117,7 +117,7 @@ def test_model_functions_are_decorated():
     """Every model package has decorated functions, and each record points to a real function."""
     import importlib
 
-    impls = trace.registry()
+    impls = traceability.all_implementations()
     packages = {i.module.split(".")[1] for i in impls}
     assert {"estimation", "inertial", "gnss", "detection", "location"} <= packages
     for impl in impls:
