@@ -206,6 +206,7 @@ def test_subset_toc_of_the_reference_and_the_reports(tmp_path):
         "      - file: reference/estimation\n"
         "      - file: reference/inertial\n"
         "      - file: reference/gnss\n"
+        "      - file: reference/integration\n"
         "      - file: reference/detection\n"
         "      - file: reference/location\n"
         "      - file: reference/ledger\n"

@@ -84,7 +84,7 @@ __all__ = [
 FloatArray = NDArray[np.float64]
 
 #: Filter-1 samples per segment in the first-stage simulation (reduced: the paper's segments
-#: hold 2e7, its windows 9.6e5, a ratio of about 20 kept here).
+#: hold :math:`2\times10^7`, its windows :math:`9.6\times10^5`, a ratio of about 20 kept here).
 N_A = 200
 #: Half-width ``w`` of the list window, in samples.
 HALF_WINDOW = 5
@@ -94,7 +94,7 @@ TRIALS = 1000
 SEED = 19720622
 #: Jammer-to-signal ratios ``x`` (dB) simulated.
 X_DB = np.arange(-14.0, -6.5, 1.0)
-#: (K, t, P_DL) cases simulated.
+#: :math:`(K, t, P_{DL})` cases simulated.
 CASES = ((1, 0.0, 0.9), (3, 0.0, 0.9), (3, 1.0 / 3.0, 0.9))
 #: Lists simulated per trial: the largest K of the cases.
 K_MAX = max(k for k, _, _ in CASES)
@@ -102,7 +102,7 @@ K_MAX = max(k for k, _, _ in CASES)
 
 @dataclass(frozen=True)
 class ListRates:
-    """Simulated and bound rates of the first stage on the grid ``X_DB`` for one (K, t, P_DL) case.
+    """Simulated and bound rates of the first stage on the grid ``X_DB`` for one :math:`(K, t, P_{DL})` case.
 
     Attributes
     ----------
@@ -117,11 +117,11 @@ class ListRates:
     false_alarm : ndarray
         Simulated false-alarm rate at each ``x`` of ``X_DB``.
     false_alarm_bound : ndarray
-        ``F^(K t + 1)`` (B.11) at each ``x``.
+        :math:`F^{K t + 1}` (B.11) at each ``x``.
     detection : ndarray
         Simulated detection rate at each ``x``.
     detection_bound : float
-        ``P_DL`` of (2.4.2) at ``p_d``.
+        :math:`P_{DL}` of (2.4.2) at ``p_d``.
     trials : int
         Trials behind each simulated rate.
     """
@@ -258,7 +258,7 @@ TRACK_KS = (1, 2, 3)
 
 @dataclass(frozen=True)
 class FalseTrackRates:
-    """Simulated probability that a false track exists over K segments, and the bound F G^(K-1).
+    """Simulated probability that a false track exists over K segments, and its bound :math:`F G^{K-1}`.
 
     Attributes
     ----------
@@ -269,7 +269,7 @@ class FalseTrackRates:
     simulated : ndarray
         Simulated probability of a false track at each ``p_f``.
     bound : ndarray
-        ``F G^(K-1)`` at each ``p_f`` (:func:`false_track_bound`).
+        :math:`F G^{K-1}` at each ``p_f`` (:func:`false_track_bound`).
     trials : int
         Trials behind each simulated probability.
     """
@@ -308,19 +308,19 @@ def _check_declarations(decl: ArrayLike, w: int, v: int) -> tuple[NDArray[np.boo
 
 
 def false_track_exists(decl: ArrayLike, w: int, v: int) -> NDArray[np.bool_]:
-    """Decide, per trial, whether a false track exists among the declarations ``decl``.
+    r"""Decide, per trial, whether a false track exists among the declarations ``decl``.
 
     Filter 1 uses the central ``n_a`` samples; ``R = w + (K - 1) v`` pads filters 2-4. A false
     track is one quadruplet per segment: a filter-1 declaration at ``a_k`` and, for each filter
-    ``j = 2..4``, a declaration at ``a_k + delta_kj`` with ``|delta_1j| <= w`` in the first
-    segment (a consistent list entry) and ``|delta_kj - delta_(k-1)j| <= v`` afterwards (a
+    ``j = 2..4``, a declaration at :math:`a_k + \delta_{kj}` with :math:`|\delta_{1j}| \le w` in the first
+    segment (a consistent list entry) and :math:`|\delta_{kj} - \delta_{(k-1)j}| \le v` afterwards (a
     physically possible track; ATC-10 Appendix C). The existence is decided exactly, by
     propagating the set of reachable offset triples from segment to segment.
 
     Parameters
     ----------
     decl : array_like of bool
-        Declarations, shape ``(trials, K, 4, n_a + 2 R)``.
+        Declarations, shape :math:`(\text{trials}, K, 4, n_a + 2R)`.
     w : int
         Half-width of the list window (``>= 0``), in samples.
     v : int
@@ -370,7 +370,7 @@ def false_track_exists(decl: ArrayLike, w: int, v: int) -> NDArray[np.bool_]:
 
 
 def false_track_exists_brute_force(decl: ArrayLike, w: int, v: int) -> NDArray[np.bool_]:
-    """Decide the same as :func:`false_track_exists` by explicit search over every chain.
+    r"""Decide the same as :func:`false_track_exists` by explicit search over every chain.
 
     Slow (a loop over trials, segments and quadruplets): an independent check of the
     propagation.
@@ -378,7 +378,7 @@ def false_track_exists_brute_force(decl: ArrayLike, w: int, v: int) -> NDArray[n
     Parameters
     ----------
     decl : array_like of bool
-        Declarations, shape ``(trials, K, 4, n_a + 2 R)`` with ``R = w + (K - 1) v``.
+        Declarations, shape :math:`(\text{trials}, K, 4, n_a + 2R)` with ``R = w + (K - 1) v``.
     w : int
         Half-width of the list window (``>= 0``), in samples.
     v : int
@@ -431,10 +431,10 @@ def false_track_exists_brute_force(decl: ArrayLike, w: int, v: int) -> NDArray[n
 
 
 def false_track_bound(p_f: ArrayLike, k: int) -> FloatArray:
-    """``F G^(K-1)`` at the reduced sizes of the false-track simulation (ATC-10 (B.6), (C.14)).
+    """:math:`F G^{K-1}` at the reduced sizes of the false-track simulation (ATC-10 (B.6), (C.14)).
 
     ``F`` and ``G`` are (B.6) and (C.14) with ``TRACK_N_A`` filter-1 samples and windows of
-    ``2 TRACK_W + 1`` and ``2 TRACK_V + 1`` samples.
+    :math:`2 w + 1` and :math:`2 v + 1` samples (``TRACK_W`` and ``TRACK_V``).
 
     Parameters
     ----------
@@ -509,7 +509,7 @@ WINDOW_TRIALS = 400_000
 #: Seed of the window simulation.
 WINDOW_SEED = 19720624
 #: Per-sample false-alarm probabilities simulated (the K >= 10 ambiguous-location thresholds
-#: lie at p_f of about 0.1-0.27).
+#: lie at :math:`p_f` of about 0.1-0.27).
 WINDOW_PF = np.array([0.01, 0.03, 0.1, 0.2, 0.27])
 
 

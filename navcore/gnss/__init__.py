@@ -10,7 +10,7 @@ measurements
     pseudorange and pseudorange-rate models and their Jacobians.
 carrier_phase
     multi-antenna attitude: double-difference carrier phase and its covariance, the Euler-rate
-    matrix (the 17-state rows are in navcore.integration.measurement_rows).
+    matrix (the 17-state rows are in :mod:`navcore.integration.measurement_rows`).
 tracking
     third-order tracking loop responses to acceleration steps and jerks, aided bandwidth.
 acquisition

@@ -244,7 +244,7 @@ def loosely_coupled_schedule(
     geometry : SatelliteGeometry
         Line-of-sight vectors and elevations of the channels.
     code : (N, n_channels) bool array
-        Code lock per step and channel (see :func:`lock_table`).
+        Code lock per step and channel (see :func:`~navcore.integration.geometry.lock_table`).
     pseudorange_noise : float
         1-:math:`\sigma` white pseudorange noise, m (``> 0``).
     interval_steps : int
