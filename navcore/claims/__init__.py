@@ -1,8 +1,9 @@
 """Claims, errata, inputs and the verdict rule: what a paper module declares.
 
 A paper module (``navcore.papers``) states, for each number the paper publishes, a
-:class:`Claim` with its tolerance and expected verdict, each erratum as an :class:`Erratum`,
-and its inputs in an :class:`InputSet`; :func:`evaluate` derives a claim's verdict. The
+:class:`~navcore.claims.core.Claim` with its tolerance and expected verdict, each erratum as an
+:class:`~navcore.claims.core.Erratum`, and its inputs in an :class:`~navcore.claims.inputs.InputSet`;
+:func:`~navcore.claims.core.evaluate` derives a claim's verdict. The
 registry of every paper's claims, its rendering and its summaries are the ledger's
 (``navcore.ledger``), which re-exports these names. Typical use from a paper module::
 

@@ -869,7 +869,7 @@ def correlated_joint_covariance(
     Raises
     ------
     TypeError
-        If ``rng`` is not a :class:`numpy.random.Generator`.
+        If ``rng`` is not a ``numpy.random.Generator``.
     ValueError
         If ``n_states`` or ``n_estimators`` is not a positive integer, their product exceeds
         ``MAX_JOINT_SIZE``, or ``rho`` is outside [0, 1].
