@@ -102,14 +102,13 @@ def subset_toc(paper: str, book: Path = ROOT / "book") -> str:
     evaluates only the claims the chapter's own pages use. References to pages outside the
     subset read as plain text (the ``subset_references`` extension, loaded by subset builds only).
     """
-    bibliography = "      - file: bibliography\n" if (book / "bibliography.md").exists() else ""
-    if paper == "reference":  # the how-to guides (executed, they cite), the API reference
+    if paper == "reference":  # the how-to guides (executed) and the API reference
         howto = "".join(f"          - file: reference/howto/{name}\n" for name in HOWTO_PAGES)
         pages = "".join(f"      - file: reference/{name}\n" for name in REFERENCE_PAGES)
         return (
             "format: jb-book\nroot: reference/index\nparts:\n"
             "  - caption: Reference\n    chapters:\n"
-            "      - file: reference/howto/index\n        sections:\n" + howto + pages + bibliography
+            "      - file: reference/howto/index\n        sections:\n" + howto + pages
         )
     if paper == "reports":  # the four reports and the Verification pages they link to
         reports = "".join(f"          - file: reports/{key}\n" for key in ("wf", "sp", "atc10", "kzl"))
@@ -121,6 +120,7 @@ def subset_toc(paper: str, book: Path = ROOT / "book") -> str:
             "      - file: coverage\n      - file: errata\n"
             "      - file: reports/index\n        sections:\n" + reports + "      - file: bibliography\n"
         )
+    bibliography = "      - file: bibliography\n" if (book / "bibliography.md").exists() else ""
     return (
         f"format: jb-book\nroot: {paper}/index\nparts:\n"
         f"  - caption: {PARTS.get(paper, paper)}\n    chapters:\n      - glob: {paper}/[0-9]*\n"
