@@ -216,7 +216,7 @@ def propagate_covariance(
                 if np.any(np.isinf(np.diag(R))):
                     continue  # outage: infinite variance carries no information
                 S = H @ P @ H.T + R
-                K = np.linalg.solve(S, H @ P).T  # K = P H' S^-1
+                K = np.asarray(np.linalg.solve(S, H @ P).T, dtype=float)  # K = P H' S^-1
                 P = joseph_unchecked(P, K, H, R)
                 counts[k] += 1
         post[k] = P

@@ -550,7 +550,7 @@ def joseph_unchecked(P: Array, K: Array, H: Array, R: Array | float, *, symmetri
     return P_post
 
 
-def joseph_rows_unchecked(P: Array, K: Array, H: Array, R: Array, rows: NDArray[np.intp]) -> Array:
+def joseph_rows_unchecked(P: Array, K: Array, H: Array, R: Array, rows: NDArray[np.intp] | slice) -> Array:
     """:func:`joseph_update` with ``rows``, in place on ``P``, not symmetrised, unchecked.
 
     The expanded form: ``M = -E K H P + E K (H P H' + R) K' E' / 2`` is added to the rows

@@ -693,7 +693,7 @@ def level_turn_track(
     require_positive("speed", speed)
     altitude = float(as_finite_array("altitude", altitude))
     M = require_integer("n_samples", n_samples, minimum=2)
-    if M > COUNT.high:
+    if COUNT.high is not None and M > COUNT.high:
         raise ValueError(f"n_samples must be at most {COUNT.high}, got {M}")
     rate = float(as_finite_array("turn_rate_deg_s", turn_rate_deg_s))
     if rate == 0.0:
