@@ -407,7 +407,8 @@ def clock_error_variances(beta: float, sigma: float, sigma0: float, gains: Array
     .. math::
 
         \xi_n = a_n (\xi_{n-1} - w_n - A) + \gamma_n \mathbf{1}'(I - P)\boldsymbol\epsilon_n,
-        \qquad a_n = 1 - \gamma_n \beta,
+
+        a_n = 1 - \gamma_n \beta,
 
     starting from the least-squares error (variance :math:`\sigma^2/\beta`) independent of
     :math:`A`. The covariance of :math:`(\xi_n, A)` is propagated exactly. With the optimal

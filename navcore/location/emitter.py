@@ -644,7 +644,8 @@ def level_turn_track(
 
     .. math::
 
-        \mathbf p(t) = (r \sin\omega t,\; r (1 - \cos\omega t),\; h), \qquad
+        \mathbf p(t) = (r \sin\omega t,\; r (1 - \cos\omega t),\; h),
+
         \mathbf v(t) = (v \cos\omega t,\; v \sin\omega t,\; 0),
 
     sampled at ``n_samples`` equally spaced times from 0 to ``duration``. WF Sec. III flies
