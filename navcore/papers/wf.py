@@ -1070,7 +1070,7 @@ ERRATA = [
         kind="typography",
         basis="text-only",
         locator="Eq. (13)",
-        printed="$x_{DL}(k/k) = x_{DL}(k/k-1) + K_{DL}(k)[y_a(k) - x_{DL}(k/k-1)]$",
+        printed="$x_{DL}(k/k) = x_{DL}(k/k-1)$ $+ K_{DL}(k)[y_a(k) - x_{DL}(k/k-1)]$",
         finding="The innovation must be $y_L(k) - x_{DL}(k/k-1)$: the local velocity measurement of "
         "Eq. (12), not the acceleration $y_a$.",
         evidence="Dimensional analysis (acceleration minus velocity) and a seeded simulation of the "
