@@ -24,15 +24,41 @@ def test_every_kind_is_documented_on_the_erratum():
 
 def test_unknown_kind_raises_naming_kind():
     with pytest.raises(ValueError, match=r"Erratum\.kind must be one of"):
-        Erratum("WF-E9", "WF", "Eq. (1)", "p", "f", "e", kind="misprint", basis="computed")
+        Erratum(
+            id="WF-E9",
+            paper="WF",
+            locator="Eq. (1)",
+            printed="p",
+            finding="f",
+            evidence="e",
+            kind="misprint",
+            basis="computed",
+        )
 
 
 def test_known_kind_is_accepted():
-    e = Erratum("WF-E9", "WF", "Eq. (1)", "p", "f", "e", kind="typography", basis="computed")
+    e = Erratum(
+        id="WF-E9",
+        paper="WF",
+        locator="Eq. (1)",
+        printed="p",
+        finding="f",
+        evidence="e",
+        kind="typography",
+        basis="computed",
+    )
     assert e.kind == "typography"
 
 
 def test_missing_kind_raises():
     """Every erratum says what kind of slip it is: leaving the kind out is an error."""
     with pytest.raises(ValueError, match=r"Erratum\.kind must be one of"):
-        Erratum("WF-E9", "WF", "Eq. (1)", "p", "f", "e", basis="computed")
+        Erratum(
+            id="WF-E9",
+            paper="WF",
+            locator="Eq. (1)",
+            printed="p",
+            finding="f",
+            evidence="e",
+            basis="computed",
+        )

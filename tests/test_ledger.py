@@ -178,7 +178,15 @@ def test_registry_validation():
     with pytest.raises(ValueError, match="unknown erratum"):
         validate_registry([c], [])
     e = Erratum(
-        "WF-E9", "WF", "Eq. (1)", "p", "f", "e", claims=("WF-nope",), kind="typography", basis="text-only"
+        id="WF-E9",
+        paper="WF",
+        locator="Eq. (1)",
+        printed="p",
+        finding="f",
+        evidence="e",
+        claims=("WF-nope",),
+        kind="typography",
+        basis="text-only",
     )
     with pytest.raises(ValueError, match="unknown claim"):
         validate_registry([c], [e])
@@ -427,3 +435,23 @@ def test_a_strict_process_reads_only_evaluations_stored_under_the_strict_rules(t
         assert registry._cached(cid) is not None
     finally:
         registry.evaluate_claim.cache_clear()
+
+
+def test_a_claim_and_an_erratum_take_their_paper_from_their_id():
+    """The paper has one home, the id's key: left out it is derived, given it must agree."""
+    common = dict(
+        locator="Eq. (1)", quantity="q", published=1.0, unit="", compute=None,
+        tolerance=Tolerance(abs=0.0, reason="exact"), expected_status="not-reproducible", note="n",
+    )  # fmt: skip
+    assert Claim(id="ATC10-x", **common).paper == "ATC10"
+    assert Claim(id="KZL-x", paper="KZL", **common).paper == "KZL"
+    with pytest.raises(ValueError, match=r"Claim\.id must start with 'WF-'"):
+        Claim(id="SP-x", paper="WF", **common)
+    texts = dict(
+        locator="Eq. (1)", printed="p", finding="f", evidence="e", kind="typography", basis="text-only"
+    )
+    assert Erratum(id="SP-E9-x", **texts).paper == "SP"
+    with pytest.raises(ValueError, match=r"Erratum\.id must start with 'KZL-'"):
+        Erratum(id="SP-E9-x", paper="KZL", **texts)
+    with pytest.raises(ValueError, match=r"Erratum\.paper must be one of"):
+        Erratum(id="XX-E9-x", **texts)

@@ -134,12 +134,12 @@ def synthetic(monkeypatch, tmp_path):
 
 def _errata() -> tuple[Erratum, Erratum]:
     slip = Erratum(
-        "WF-E901-slip", "WF", "Eq. (3)", "2", "1", "the derivation", claims=("WF-b2",),
-        kind="typography", basis="text-only",
+        id="WF-E901-slip", locator="Eq. (3)", printed="2", finding="1", evidence="the derivation",
+        claims=("WF-b2",), kind="typography", basis="text-only",
     )  # fmt: skip
     typo = Erratum(
-        "KZL-E901-typo", "KZL", "Eq. (4)", "p", "f", "e", claims=("KZL-d1",),
-        kind="typography", basis="text-only",
+        id="KZL-E901-typo", locator="Eq. (4)", printed="p", finding="f", evidence="e",
+        claims=("KZL-d1",), kind="typography", basis="text-only",
     )  # fmt: skip
     return slip, typo
 

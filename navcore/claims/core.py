@@ -641,15 +641,18 @@ def monte_carlo(*, rel: float | None = None, abs: float | None = None, runs: int
     return Tolerance(reason=f"Monte Carlo of {runs} runs: {why}", abs=abs, rel=rel, policy="monte-carlo")
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Erratum:
     """A suspected error in a paper, with the book's finding and its evidence.
 
     Parameters
     ----------
     id : str
-        Stable identifier such as ``"ATC10-E2-erf-argument"``.
-    paper, locator : str
+        Stable identifier such as ``"ATC10-E2-erf-argument"``; starts with the paper key.
+    paper : str, optional
+        ``WF``, ``SP``, ``ATC10`` or ``KZL``; by default the key the id starts with, and if
+        given it must be that key.
+    locator : str
         Where it stands (``"Eq. (2.8.1)"``).
     printed : str
         What the paper prints.
@@ -705,7 +708,7 @@ class Erratum:
     Raises
     ------
     ValueError
-        If ``paper`` is unknown, a text field is empty, ``kind`` is not one of
+        If ``paper`` is unknown or not the id's key, a text field is empty, ``kind`` is not one of
         :data:`ERRATUM_KINDS` or ``basis`` not one of :data:`ERRATUM_BASES`.
 
     Notes
@@ -723,7 +726,7 @@ class Erratum:
     """
 
     id: str
-    paper: str
+    paper: str = ""
     locator: str
     printed: str
     finding: str
@@ -735,8 +738,12 @@ class Erratum:
     basis: str = ""
 
     def __post_init__(self) -> None:
+        if not self.paper:
+            object.__setattr__(self, "paper", self.id.split("-", 1)[0])
         if self.paper not in PAPERS:
             raise ValueError(f"Erratum.paper must be one of {list(PAPERS)}, got {self.paper!r}")
+        if not self.id.startswith(self.paper + "-"):
+            raise ValueError(f"Erratum.id must start with '{self.paper}-', got {self.id!r}")
         if self.kind not in ERRATUM_KINDS:
             raise ValueError(
                 f"Erratum.kind must be one of {list(ERRATUM_KINDS)}, got {self.kind!r} (erratum {self.id!r})"
@@ -794,7 +801,7 @@ def claim_errata(claim: Claim, errata: Sequence[Erratum] | None = None) -> list[
     return [{"id": k, "basis": out[k]} for k in sorted(out)]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Claim:
     """One published number or statement and how navcore reproduces it.
 
@@ -802,8 +809,9 @@ class Claim:
     ----------
     id : str
         Stable, unique; starts with the paper key (``"ATC10-tab2.1-K1-pdl0.9"``).
-    paper : str
-        ``WF``, ``SP``, ``ATC10`` or ``KZL``.
+    paper : str, optional
+        ``WF``, ``SP``, ``ATC10`` or ``KZL``; by default the key the id starts with (the one
+        home of a claim's paper), and if given it must be that key.
     locator : str
         Where it stands in the paper, in the paper's words (``"Table 4.3"``).
     quantity : str
@@ -872,7 +880,7 @@ class Claim:
     """
 
     id: str
-    paper: str
+    paper: str = ""
     locator: str
     quantity: str
     published: float | bool
@@ -896,6 +904,8 @@ class Claim:
             raise ValueError(
                 f"Claim.id must start with its paper key and a dash and use [A-Za-z0-9._+-], got {self.id!r}"
             )
+        if not self.paper:
+            object.__setattr__(self, "paper", self.id.split("-", 1)[0])
         if self.paper not in PAPERS:
             raise ValueError(f"Claim.paper must be one of {list(PAPERS)}, got {self.paper!r}")
         if not self.id.startswith(self.paper + "-"):

@@ -530,7 +530,6 @@ ERRATA: list[Erratum] = []
 def _statement(cid: str, locator: str, quantity: str, compute, note: str, page: str, **kw) -> Claim:
     return Claim(
         id=cid,
-        paper="ATC10",
         locator=locator,
         quantity=quantity,
         published=True,
@@ -547,7 +546,6 @@ def _statement(cid: str, locator: str, quantity: str, compute, note: str, page: 
 CLAIMS: list[Claim] = [
     Claim(
         id="ATC10-sec1.1-level-10pct-airborne",
-        paper="ATC10",
         locator="Sec. 1.1 and Sec. 2.1",
         quantity="10 % of the airborne aircraft ($N = 0.1 N_T$) is the level (0.01) $N_T$ of $N_{AD}$",
         published=printed("0.01")[0],
@@ -574,7 +572,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-sec2.8-threshold-every-curve",
-        paper="ATC10",
         locator="Sec. 2.8, Figs. 2.3-2.16",
         quantity="each of the K > 1 curves exhibits a strong thresholding property (falls within the "
         "width read as 'strong')",
@@ -663,7 +660,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-sec2.7-levels-near-threshold",
-        paper="ATC10",
         locator="Sec. 2.7",
         quantity="the failure levels of the K = 1 curves are close to the threshold (each within the gap "
         "read as 'close' of the half-ceiling point)",
@@ -723,7 +719,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-eqA.7-printed",
-        paper="ATC10",
         locator="Eq. (A.7)",
         quantity="(A.7) as printed decides as the test (A.4) it rewrites, for every ($\\lambda_1$, $K_0$)",
         published=True,
@@ -794,7 +789,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-eqB.9-lists-needed",
-        paper="ATC10",
         locator="Eqs. (B.9)-(B.11), (2.5.4)",
         quantity="with a non-integer $Kt$ the bound $F^{Kt+1}$ of (B.10)-(B.11) still bounds the false-alarm "
         "probability of the rule 'more than Kt lists non-empty' from below",
@@ -813,7 +807,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-eqB.6-correlated-samples",
-        paper="ATC10",
         locator="Eqs. (B.6), (C.14); Sec. 2.3",
         quantity="(B.6)'s product gives the probability that a window of samples taken at twice the Nyquist "
         "rate holds no declaration (the 24-sample track window at the $K = 100$, $P_{DL} = 0.999$ "
@@ -838,7 +831,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-eqC.2-printed",
-        paper="ATC10",
         locator="Eqs. (C.2)-(C.5)",
         quantity="the printed step $|T_1(1) - T_2(1)| \\le v \\alpha / c$ holds for the reception times it "
         "names",

@@ -547,7 +547,6 @@ def exp_equals_closed_form() -> bool:
 ERRATA: list[Erratum] = [
     Erratum(
         id="ATC10-E3-12-pd-line",
-        paper="ATC10",
         kind="typography",
         basis="text-only",
         locator="Sec. 3.8 ('no uniform signature set ... more preferable than')",
@@ -568,7 +567,6 @@ _ST = EXACT
 def _s(cid, locator, quantity, compute, note, page, status="reproduced", **kw) -> Claim:
     return Claim(
         id=cid,
-        paper="ATC10",
         locator=locator,
         quantity=quantity,
         published=True,
@@ -718,7 +716,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec3.8-tail-ratio",
-        paper="ATC10",
         locator="Sec. 3.8",
         quantity="the Gaussian approximation to the multiple-access noise is very poor in the tail "
         "($P(n > 4 \\sigma)$ against the Gaussian tail, two-point $C$, $N = 10^{5}$, "
@@ -743,7 +740,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec3.8-example-n-effective",
-        paper="ATC10",
         locator="Sec. 3.8, worked example",
         quantity="effective N from 5 pulses per 2.5 s or 4 per 2 s",
         published=2e5,
@@ -836,7 +832,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-eq3.8.6-printed",
-        paper="ATC10",
         locator="Eq. (3.8.6)",
         quantity="(3.8.6) as printed, $E e^{\\mu n} = \\exp(\\mu^2/2)$, is the moment generating "
         "function of the Gaussian noise of (3.8.4) (checked at $\\mu = 1$, $p$ = 0.02)",
@@ -872,7 +867,6 @@ CLAIMS = [
     Claim(
         id="ATC10-sec3.6-C2-smallest-lower-bound",
         printed="it has the smallest upper bound to $p_f$ (and also the smallest lower bound)",
-        paper="ATC10",
         locator="Sec. 3.6",
         quantity="C2 has the smallest upper bound to $p_f$ '(and also the smallest lower bound)'",
         published=True,
@@ -891,7 +885,6 @@ CLAIMS = [
         id="ATC10-sec3.8-no-uniform-set-beats-roc-g",
         printed="no uniform signature set suffering this average multiple access noise power will "
         "yield an ROC more preferable than",
-        paper="ATC10",
         locator="Sec. 3.8",
         quantity="no uniform signature set with this multiple-access power yields an ROC more "
         "preferable than $\\mathrm{ROC}_g$ (every actual $p_f$ above the Gaussian one at equal $p_d$)",
@@ -912,7 +905,6 @@ CLAIMS = [
         id="ATC10-sec3.8-pd-line",
         printed="$p_d = \\frac{1}{2} + \\frac{1}{2} \\operatorname{erf} \\left(\\theta "
         "\\sqrt{\\frac{1}{2p}} \\right)$",
-        paper="ATC10",
         locator="Sec. 3.8",
         quantity="the $p_d$ line of the bound after 'no uniform signature set' is the $p_d$ of "
         "$\\mathrm{ROC}_g$, Eq. (3.8.4)",

@@ -928,7 +928,6 @@ def orthogonal_best() -> bool:
 ERRATA = [
     Erratum(
         id="ATC10-E4.9-typos",
-        paper="ATC10",
         kind="typography",
         basis="text-only",
         locator="Sec. 4.5.2, after (4.5.9); (4.3.0); (4.5.3)-(4.5.4); Sec. 4.5.3; (4.5.37)",
@@ -945,7 +944,6 @@ ERRATA = [
     ),
     Erratum(
         id="ATC10-E4.11-second-term",
-        paper="ATC10",
         kind="overstatement",
         basis="computed",
         locator="Sec. 4.5.4 ('the second term in (4.5.35) always significantly dominates the first term')",
@@ -969,7 +967,6 @@ STATEMENT = EXACT
 def _s(cid, locator, quantity, compute, note, page, status="reproduced", **kw) -> Claim:
     return Claim(
         id=cid,
-        paper="ATC10",
         locator=locator,
         quantity=quantity,
         published=True,
@@ -1003,7 +1000,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec4.3-std-n-sigma0",
-        paper="ATC10",
         locator="Sec. 4.3, after (4.3.1)",
         quantity="the standard deviation of $\\tau_n - \\tau_0$ becomes approximately $n \\sigma_0$ "
         "(within the prose band of 'approximately' from $n$ = 10 on)",
@@ -1017,7 +1013,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec4.3-fractional-error",
-        paper="ATC10",
         locator="Sec. 4.3, after (4.3.1)",
         quantity="the rms fractional error of $\\tau_n$ is just $\\sigma_0/\\bar\\tau$ (at $n$ = 1000, "
         "within "
@@ -1066,7 +1061,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec4.5.2-tau-sum-printed",
-        paper="ATC10",
         locator="Sec. 4.5.2, after (4.5.9)",
         quantity="the printed $\\tau_n = \\sum w_i + \\alpha_0$ has the variance (4.3.1c) that (4.5.9) gives "
         "(checked at $n$ = 1 to 30)",
@@ -1133,7 +1127,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec4.5.3-quadratic-growth",
-        paper="ATC10",
         locator="Sec. 4.5.3",
         quantity="growth exponent of the 3-satellite clock variance in (n - N)",
         published=2.0,
@@ -1167,7 +1160,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec4.5.4-psi-approx-exI-s5",
-        paper="ATC10",
         locator="Sec. 4.5.4",
         quantity="tracking reduces $\\mathrm{Var}[\\|\\xi_{p}\\|]$ to approximately $\\psi(\\alpha) "
         "\\mathrm{Var}[\\|\\xi_{p0}\\|]$ (Example I, $\\sigma_0$ = 5 ns, within the prose band)",
@@ -1185,7 +1177,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec4.5.4-psi-approx-exII-s50",
-        paper="ATC10",
         locator="Sec. 4.5.4",
         quantity="tracking reduces $\\mathrm{Var}[\\|\\xi_{p}\\|]$ to approximately $\\psi(\\alpha) "
         "\\mathrm{Var}[\\|\\xi_{p0}\\|]$ (Example II, $\\sigma_0$ = 50 ns, within the prose band)",
@@ -1207,7 +1198,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec4.6-s-increases-printed",
-        paper="ATC10",
         locator="Sec. 4.6, Table 4.2",
         quantity="printed tr and S both larger for satellites 1, 2, 3",
         published=True,
@@ -1254,7 +1244,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec4.6-satellite-count",
-        paper="ATC10",
         locator="Sec. 4.6, Table 4.1",
         quantity="the two examples start with seven or eight satellites",
         published=True,
@@ -1324,7 +1313,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-fig4.1-large-alpha",
-        paper="ATC10",
         locator="Sec. 4.5.4 (Fig. 4.1), the large-argument approximation",
         quantity="$\\psi(\\alpha) \\cong 1 - (4/27)/\\alpha$ for $\\alpha \\ge 1$ (largest relative error "
         "within the prose band of '≅')",
@@ -1338,7 +1326,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-fig4.1-small-alpha",
-        paper="ATC10",
         locator="Sec. 4.5.4 (Fig. 4.1), the small-argument approximation",
         quantity="$\\psi(\\alpha) \\cong 1.89 [\\alpha^{1/3} - (\\alpha/2)^{2/3}]$ for $\\alpha \\le 0.3$ "
         "(largest relative error within the prose band of '≅')",
@@ -1352,7 +1339,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-eq4.5.31-printed",
-        paper="ATC10",
         locator="Eq. (4.5.31)",
         quantity="(4.5.31) as printed gives Table 4.3's $sd_N$ = 160 ft (Example I, $\\sigma_0$ = 5 ns)",
         published=True,
@@ -1390,7 +1376,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-eq4.5.10-printed",
-        paper="ATC10",
         locator="Eq. (4.5.10)",
         quantity="the clock estimate (4.5.10) as printed ($\\gamma_1^{-1}$) has the error variance "
         "$\\sigma^2\\gamma_1$ of (4.5.18)",
@@ -1411,7 +1396,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-eq4.5.21-printed",
-        paper="ATC10",
         locator="Eq. (4.5.21)",
         quantity="(4.5.21) as printed gives Table 4.3's $sd_N$ = 160 ft (Example I, $\\sigma_0$ = 5 ns)",
         published=True,
@@ -1431,7 +1415,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-eq4.5.35-printed",
-        paper="ATC10",
         locator="Eq. (4.5.35)",
         quantity="(4.5.35) as printed gives Table 4.3's $\\mathrm{sd}_N$ = 160 ft (Example I, "
         "$\\sigma_0$ = 5 ns)",
@@ -1452,7 +1435,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-tab4.3-exI-sd0-norm-variance",
-        paper="ATC10",
         locator="Table 4.3 col. (iii); Eq. (4.1.2)",
         quantity="$\\sqrt{\\mathrm{Var}[\\|\\xi_{p0}\\|]}$ as (4.1.2) defines it, "
         "$\\sigma \\sqrt{\\operatorname{tr}\\{M^{-1}\\}}$ with $M = F'H'(HH')^{-1}HF$, Example I",
@@ -1538,7 +1520,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-appG-spectrum",
-        paper="ATC10",
         locator="Appendix G, x3",
         quantity="a spectrum $S(f) \\sim |f|^{-2\\rho-1}$ gives a variance growing as $t^{2\\rho}$",
         published=True,
@@ -1555,7 +1536,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-appG-offset-like-flicker",
-        paper="ATC10",
         locator="Appendix G",
         quantity="when $\\rho \\approx 1$ the '1/f' noise acts much like an unknown frequency offset "
         "($t^{2\\rho}$ "

@@ -736,7 +736,6 @@ E_B10 = "ATC10-E-jam-B10-reference"
 ERRATA = [
     Erratum(
         id=E_ERF,
-        paper="ATC10",
         kind="typography",
         basis="text-only",
         locator="Eqs. (2.8.1), (2.8.3)",
@@ -753,7 +752,6 @@ ERRATA = [
     ),
     Erratum(
         id=E_RULE,
-        paper="ATC10",
         kind="derivation",
         basis="text-only",
         locator="Eqs. (A.9)-(A.10) against (A.11), (B.1)",
@@ -771,7 +769,6 @@ ERRATA = [
     ),
     Erratum(
         id=E_TAB11,
-        paper="ATC10",
         kind="inconsistent-numbers",
         basis="computed",
         locator="Table 1.1 and Sec. 1.1",
@@ -789,7 +786,6 @@ ERRATA = [
     ),
     Erratum(
         id=E_BEAM,
-        paper="ATC10",
         kind="inconsistent-numbers",
         basis="computed",
         locator="Table 1.1, K = 1 beamwidth",
@@ -806,7 +802,6 @@ ERRATA = [
     ),
     Erratum(
         id=E_C1,
-        paper="ATC10",
         kind="typography",
         basis="text-only",
         locator="Eqs. (C.1), (C.11) and cross-references of App. C",
@@ -825,7 +820,6 @@ ERRATA = [
     ),
     Erratum(
         id=E_A15,
-        paper="ATC10",
         kind="typography",
         basis="text-only",
         locator="Eq. (A.15)",
@@ -839,7 +833,6 @@ ERRATA = [
     ),
     Erratum(
         id=E_A7,
-        paper="ATC10",
         kind="typography",
         basis="text-only",
         locator="Eqs. (A.7)-(A.8); text after (A.13), (A.18)",
@@ -855,7 +848,6 @@ ERRATA = [
     ),
     Erratum(
         id=E_MINOR,
-        paper="ATC10",
         kind="typography",
         basis="text-only",
         locator="Sec. 2.8 and Figs. 2.13-2.14",
@@ -870,7 +862,6 @@ ERRATA = [
     ),
     Erratum(
         id=E_C2,
-        paper="ATC10",
         kind="derivation",
         basis="text-only",
         locator="Eqs. (C.2)-(C.5)",
@@ -893,7 +884,6 @@ ERRATA = [
     ),
     Erratum(
         id=E_B10,
-        paper="ATC10",
         kind="typography",
         basis="text-only",
         locator="Eq. (B.10)",
@@ -948,7 +938,6 @@ def _table21_claim(row: int, k: int, p_dl: float, text: str, relation: str) -> C
     expected = "consistent" if (k, p_dl) == (1000, 0.999) else "reproduced"
     return Claim(
         id=f"ATC10-tab2.1-K{k}-pdl{p_dl}",
-        paper="ATC10",
         locator="Table 2.1 (t = 0 curves of Figs. 2.3-2.16)",
         quantity=f"jammer ERP per satellite for $N_{{ADL}} = 0.01 N_T$, $K = {k}$, $P_{{DL}} = {p_dl}$",
         published=value,
@@ -1002,7 +991,6 @@ def _step_claim(k_from: int, k_to: int) -> Claim:
     return Claim(
         id=f"ATC10-sec2.8-10dB-K{k_from}to{k_to}",
         aliases=tuple(f"ATC10-sec2.8-10dB-K{k_from}to{k_to}-pdl{p}" for p in (0.999, 0.88)),
-        paper="ATC10",
         locator="Sec. 2.8",
         quantity=f"extra jammer ERP to disable $K = {k_to}$ rather than $K = {k_from}$",
         published=10.0,
@@ -1030,7 +1018,6 @@ def _table11_erp(row: int) -> float:
 CLAIMS: list[Claim] = [
     Claim(
         id="ATC10-sec1.1-erp-rises-with-K",
-        paper="ATC10",
         locator="Sec. 1.1 and Table 1.1",
         quantity="the jammer ERP needed to disable the system rises with the transmission length K = 1, 10, "
         "100, 1000 ('for K less than 100 the required jammer is modest ... as K approaches 1000 ...')",
@@ -1050,7 +1037,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-sec1.1-K1000-prohibitive",
-        paper="ATC10",
         locator="Sec. 1.1 and Table 2.1",
         quantity="as K approaches 1000 the barrage jammer becomes prohibitive: for the caption's $P_D \\ge "
         "0.88$ "
@@ -1073,7 +1059,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-sec1.3-oscillator",
-        paper="ATC10",
         locator="Sec. 1.3",
         quantity="oscillator stability for 50 ns rms over a 1 s update",
         published=5.0,
@@ -1088,7 +1073,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-sec2.7-pulse-energy",
-        paper="ATC10",
         locator="Sec. 2.7",
         quantity="pulse energy for $P_0 = 30$ dBW and $\\tau = 10$ µs",
         published=10.0,
@@ -1108,7 +1092,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-eq2.4.1",
-        paper="ATC10",
         locator="Eqs. (2.4.1), (A.10a)",
         quantity="for K = 1 the detection bound is $p_d^4$",
         published=True,
@@ -1122,7 +1105,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-eq2.4.2-nu-max",
-        paper="ATC10",
         locator="Eqs. (2.4.2), (A.17)-(A.18)",
         quantity="the $\\nu$-maximised exponent of (2.4.2) equals the binary divergence $D(t \\| p_d^4)$ for "
         "$t < p_d^4$ and 0 otherwise",
@@ -1138,7 +1120,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-appA-limit",
-        paper="ATC10",
         locator="App. A, after (A.18)",
         quantity="if $t < p_d^4$ then $P_D \\to 1$ as $K \\to \\infty$",
         published=True,
@@ -1153,7 +1134,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-eqA.9-rule-at-design",
-        paper="ATC10",
         locator="Eqs. (A.9)-(A.10)",
         quantity="the rule as printed in (A.9) meets the bound (A.17) at the $K = 10$, $P_{DL} = 0.999$ "
         "design "
@@ -1182,7 +1162,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-eqA.15-printed",
-        paper="ATC10",
         locator="Eq. (A.15)",
         quantity="the right side of (A.15) as printed, $1 \\exp -K(\\ldots)$, is the lower bound on $P_D$ "
         "(the design $P_{DL}$ at Table 2.1's $K = 10$, $P_{DL} = 0.999$ point)",
@@ -1202,7 +1181,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-eqC.1-printed",
-        paper="ATC10",
         locator="Eq. (C.1)",
         quantity="(C.1) as printed equals $F(p_f)$ of (B.6), the factor (2.5.12) uses for $K = 1$",
         published=True,
@@ -1222,7 +1200,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-eq2.8.1-erf-coefficient",
-        paper="ATC10",
         locator="Eqs. (2.8.1), (2.8.3)",
         quantity="coefficient $c$ of $\\sqrt{P_0 B \\tau / J}$ in the erf argument of $p_f$",
         published=0.5,
@@ -1251,7 +1228,6 @@ CLAIMS: list[Claim] = [
     # ---- Sec. 2.7, K = 1
     Claim(
         id="ATC10-sec2.7-nominal-33dBW",
-        paper="ATC10",
         locator="Sec. 2.7 (Figs. 2.1 and 2.2)",
         quantity="nominal jammer ERP for $K = 1$ ($N_{ADL} = 0.01 N_T$, $P_{DL}$ between 0.9 and 0.999)",
         published=float(NOMINAL_ERP_TEXT),
@@ -1268,7 +1244,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-sec2.7-lt2dB-ADL",
-        paper="ATC10",
         locator="Sec. 2.7 (Figs. 2.1 and 2.2)",
         quantity="difference in required jammer ERP between $P_{DL} = 0.9$ and 0.999 ($K = 1$, $N_{ADL}$)",
         published=2.0,
@@ -1286,7 +1261,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-sec2.7-lt2dB-FL",
-        paper="ATC10",
         locator="Sec. 2.7 (Figs. 2.1 and 2.2)",
         quantity="difference in required jammer ERP between $P_{DL} = 0.9$ and 0.999 ($K = 1$, $N_{FL}$)",
         published=2.0,
@@ -1303,7 +1277,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-sec2.7-plateau",
-        paper="ATC10",
         locator="Sec. 2.7",
         quantity="from -12 dB downwards the K = 1 bounds keep their maximum values over a large range",
         published=True,
@@ -1321,7 +1294,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-sec2.7-30W",
-        paper="ATC10",
         locator="Sec. 2.7",
         quantity="rf power for 33 dBW ERP with a 2 ft dish",
         published=float(NOMINAL_RF_TEXT),
@@ -1336,7 +1308,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-sec2.7-20deg",
-        paper="ATC10",
         locator="Sec. 2.7",
         quantity="beamwidth of an antenna giving 33 dBW ERP from 30 W",
         published=20.0,
@@ -1356,7 +1327,6 @@ CLAIMS: list[Claim] = [
     _step_claim(10, 100),
     Claim(
         id="ATC10-sec2.8-t0-worst",
-        paper="ATC10",
         locator="Sec. 2.8",
         quantity="the t = 0 curves need the most jammer power (required ERP decreases as t increases)",
         published=True,
@@ -1372,7 +1342,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-sec2.8-FL-less-t-sensitive",
-        paper="ATC10",
         locator="Sec. 2.8",
         quantity="the $N_{FL}$ curves are less sensitive to t than the $N_{ADL}$ curves",
         published=True,
@@ -1388,7 +1357,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-sec2.8-FL-first",
-        paper="ATC10",
         locator="Sec. 2.8",
         quantity="$N_{FL}$ degrades at less jammer power than $N_{ADL}$",
         published=True,
@@ -1404,7 +1372,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-sec2.8-K1000-critical",
-        paper="ATC10",
         locator="Sec. 2.8",
         quantity="for $K = 1000$ the required power depends critically on $P_{DL}$: unbounded at 0.98, "
         "finite "
@@ -1420,7 +1387,6 @@ CLAIMS: list[Claim] = [
     ),
     Claim(
         id="ATC10-fig2.3-2.16-curve-sets",
-        paper="ATC10",
         locator="Figs. 2.3-2.16",
         quantity="the ($p_d$, t) combinations of the curves in Figs. 2.3-2.16",
         published=True,
@@ -1439,7 +1405,6 @@ CLAIMS: list[Claim] = [
     # ---- Table 1.1
     Claim(
         id="ATC10-tab1.1-K1-erp",
-        paper="ATC10",
         locator="Table 1.1 (Sec. 2.7, Figs. 2.1 and 2.2)",
         quantity="jammer ERP for K = 1 (the nominal level of Sec. 2.7)",
         published=float(TABLE_1_1[0][1]),
@@ -1456,7 +1421,6 @@ CLAIMS: list[Claim] = [
     *[
         Claim(
             id=f"ATC10-tab1.1-K{TABLE_1_1[_r][0]}-erp",
-            paper="ATC10",
             locator="Table 1.1 (Table 2.1, Figs. 2.3-2.16)",
             quantity=f"jammer ERP for $K = {TABLE_1_1[_r][0]}$",
             published=float(TABLE_1_1[_r][1]),
@@ -1495,7 +1459,6 @@ CLAIMS: list[Claim] = [
     ],
     Claim(
         id="ATC10-tab1.1-caption-pdl",
-        paper="ATC10",
         locator="Table 1.1 caption and Sec. 1.1",
         quantity="every Table 1.1 ERP is the requirement for a processor designed for $P_D = 0.88$, as the "
         "caption says",
@@ -1520,7 +1483,6 @@ for _i, (_k, _erp, _rf, _dia, _bw) in enumerate(TABLE_1_1):
     CLAIMS.append(
         Claim(
             id=f"ATC10-tab1.1-K{_k}-rf",
-            paper="ATC10",
             locator="Table 1.1",
             quantity=f"rf power for K = {_k}: printed ERP minus the gain of the printed {_dia} ft dish",
             published=float(_rf),
@@ -1539,7 +1501,6 @@ for _i, (_k, _erp, _rf, _dia, _bw) in enumerate(TABLE_1_1):
     CLAIMS.append(
         Claim(
             id=f"ATC10-tab1.1-K{_k}-diameter",
-            paper="ATC10",
             locator="Table 1.1",
             quantity=f"dish diameter for K = {_k} from the gain ERP - rf power",
             published=float(_dia),
@@ -1557,7 +1518,6 @@ for _i, (_k, _erp, _rf, _dia, _bw) in enumerate(TABLE_1_1):
         CLAIMS.append(
             Claim(
                 id=f"ATC10-tab1.1-K{_k}-beamwidth",
-                paper="ATC10",
                 locator="Table 1.1 and Sec. 2.7",
                 quantity="beamwidth of the K = 1 jammer antenna, scaled from Sec. 2.7's 20 degree antenna "
                 "by the pencil-beam rule",
@@ -1587,7 +1547,6 @@ for _i, (_k, _erp, _rf, _dia, _bw) in enumerate(TABLE_1_1):
         CLAIMS.append(
             Claim(
                 id=f"ATC10-tab1.1-K{_k}-beamwidth",
-                paper="ATC10",
                 locator="Table 1.1",
                 quantity=f"beamwidth of the K = {_k} jammer antenna",
                 published=float(_bw),

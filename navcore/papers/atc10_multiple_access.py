@@ -772,7 +772,6 @@ def bounds_tight_gaussian_limit_oracle(power: float = 4.0 / 75.0, theta: float =
 ERRATA = [
     Erratum(
         id="ATC10-E3-11",
-        paper="ATC10",
         kind="overstatement",
         basis="text-only",
         locator="Secs. 3.1.3 A and 3.5.2 (and the opening of the Exp analysis in Sec. 3.8)",
@@ -793,7 +792,6 @@ ERRATA = [
     ),
     Erratum(
         id="ATC10-E3-1",
-        paper="ATC10",
         kind="derivation",
         basis="text-only",
         locator="Eq. (3.5.14)",
@@ -819,7 +817,6 @@ ERRATA = [
     ),
     Erratum(
         id="ATC10-E3-2",
-        paper="ATC10",
         kind="typography",
         basis="text-only",
         locator="Sec. 3.8, worked example",
@@ -833,7 +830,6 @@ ERRATA = [
     ),
     Erratum(
         id="ATC10-E3-4",
-        paper="ATC10",
         kind="derivation",
         basis="text-only",
         locator="Eqs. (3.8.5)-(3.8.7)",
@@ -847,7 +843,6 @@ ERRATA = [
     ),
     Erratum(
         id="ATC10-E3-6",
-        paper="ATC10",
         kind="derivation",
         basis="text-only",
         locator="Theorem 3.3 and Eq. (F.8)",
@@ -862,7 +857,6 @@ ERRATA = [
     ),
     Erratum(
         id="ATC10-E3-8",
-        paper="ATC10",
         kind="derivation",
         basis="text-only",
         locator="Theorem 3.2, proof after Eq. (3.7.16)",
@@ -881,7 +875,6 @@ ERRATA = [
     ),
     Erratum(
         id="ATC10-E3-9",
-        paper="ATC10",
         kind="typography",
         basis="text-only",
         locator="Sec. 3.3-3.9, App. E (typographical)",
@@ -927,7 +920,6 @@ _PSK_POWER_TOL = monte_carlo(
 CLAIMS = [
     Claim(
         id="ATC10-sec3.4-power",
-        paper="ATC10",
         locator="Eq. (3.4.13), Sec. 3.6",
         quantity="average multiple-access noise power equals $2(N-1)(\\tau/\\alpha)\\, b$ for every "
         "symmetric $C$",
@@ -949,7 +941,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-thm3.1-gaussian-limit",
-        paper="ATC10",
         locator="Theorem 3.1",
         quantity="the noise distribution approaches $\\mathcal{N}(0, N q b)$ as $N$ grows with "
         "$\\tau/\\alpha$ fixed",
@@ -964,7 +955,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-appE-gaussian-order",
-        paper="ATC10",
         locator="Appendix E, after Eq. (E.15)",
         quantity="decay rate in $N$ of the first (Gaussian) term of $G(n)$ at $n$ of order $\\sigma$ (the "
         "term falls as $N^{-1/2}$)",
@@ -985,7 +975,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-appE-lambda3-order",
-        paper="ATC10",
         locator="Appendix E, after Eq. (E.15)",
         quantity="decay rate in $N$ of the terms of $G(n)$ after the first (the printed $O(N^{-3/2})$ of the "
         "second and higher terms)",
@@ -1012,7 +1001,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec3.5-bound-monotone",
-        paper="ATC10",
         locator="Sec. 3.5.1, discussion of (3.5.13)",
         quantity="the upper bound to $p_f$ increases with N and with $\\tau/\\alpha$",
         published=True,
@@ -1028,7 +1016,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec3.6-order",
-        paper="ATC10",
         locator="Sec. 3.6, Figs. 3.3-3.6",
         quantity="preference order C2, C1, C3, C4 of the upper-bound ROCs",
         published=True,
@@ -1044,7 +1031,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec3.6-deteriorates",
-        paper="ATC10",
         locator="Sec. 3.6, last paragraph",
         quantity="each ROC bound deteriorates as $1/\\sqrt{3b}$ decreases",
         published=True,
@@ -1059,7 +1045,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-thm3.2-optimum",
-        paper="ATC10",
         locator="Theorem 3.2, Eq. (3.7.1)",
         quantity="the two-point density gives the best ROC upper bound at fixed noise power",
         published=True,
@@ -1077,7 +1062,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-eq3.7.23-closed-form",
-        paper="ATC10",
         locator="Eqs. (3.7.23)-(3.7.25)",
         quantity="closed-form optimal $\\rho$ and Expf for the two-point density",
         published=True,
@@ -1090,7 +1074,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-eq3.7.26-approx",
-        paper="ATC10",
         locator="Eqs. (3.7.26)-(3.7.27)",
         quantity="(3.7.26) approximates (3.7.24) at $N = 10^{5}$, $\\tau/\\alpha = 2 \\times 10^{-5}$",
         published=True,
@@ -1105,7 +1088,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec3.8-gauss-always-optimistic",
-        paper="ATC10",
         locator="Sec. 3.8, comparison of Figs. 3.3-3.6 with Fig. 3.8",
         quantity="the $p_f$ of $\\mathrm{ROC}_g$ is always lower than the actual $p_f$ ($N = 10^{5}$, "
         "$\\tau/\\alpha = 2 \\times 10^{-5}$, $C_1$ to $C_4$, $p_d = 0.9$ and 0.99, at the figures' "
@@ -1128,7 +1110,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec3.8-exp-below-exp-g",
-        paper="ATC10",
         locator="Sec. 3.8, Figs. 3.9-3.10",
         quantity="Exp increases monotonically with N and approaches $\\mathrm{Exp}_g$ from below",
         published=True,
@@ -1143,7 +1124,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-fig3.9-shortfall",
-        paper="ATC10",
         locator="Sec. 3.8, Fig. 3.9",
         quantity="at $N = 10^{5}$, $\\tau/\\alpha = 10^{-5}$, Exp is below $\\mathrm{Exp}_g = 4$ by a "
         "non-negligible amount",
@@ -1159,7 +1139,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-fig3.9-exp-below",
-        paper="ATC10",
         locator="Sec. 3.8, Fig. 3.9",
         quantity="Exp at $N = 10^{5}$, $\\tau/\\alpha = 10^{-5}$ is less than $\\mathrm{Exp}_g = 4$",
         published=float(IN.nominal("exp_g_fig39")),
@@ -1178,7 +1157,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-fig3.10-rate",
-        paper="ATC10",
         locator="Sec. 3.8, Fig. 3.10",
         quantity="the approach of Exp to $\\mathrm{Exp}_g$ is more rapid for lower $\\mathrm{Exp}_g$",
         published=True,
@@ -1194,7 +1172,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-fig3.10-linear",
-        paper="ATC10",
         locator="Sec. 3.8, Fig. 3.10",
         quantity="Exp is practically linear in $\\mathrm{Exp}_g$ ($R^2$ of a line fit on [0, 20], "
         "$N = 10^{5}$)",
@@ -1210,7 +1187,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec3.8-example-p",
-        paper="ATC10",
         locator="Sec. 3.8, worked example",
         quantity="average multiple-access noise power $p = (N-1)/(B \\alpha)$ under Ref. [1]'s assumption",
         published=_p_example,
@@ -1228,7 +1204,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec3.8-example-expg",
-        paper="ATC10",
         locator="Sec. 3.8, worked example",
         quantity="Gaussian exponent $\\mathrm{Exp}_g = a^2/p$ at $\\theta$ = 0.5",
         published=_expg,
@@ -1243,7 +1218,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec3.8-example-exp",
-        paper="ATC10",
         locator="Sec. 3.8, worked example (Fig. 3.10)",
         quantity="Exp at $N = 2 \\times 10^{5}$, $\\tau/\\alpha = 10^{-5}$, $\\mathrm{Exp}_g = 12.5$",
         published=_exp,
@@ -1256,7 +1230,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec3.8-example-ratio",
-        paper="ATC10",
         locator="Sec. 3.8, worked example",
         quantity="ratio $\\mathrm{Exp}_g/\\mathrm{Exp}$ in the worked example",
         published=_ratio,
@@ -1270,7 +1243,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec3.8-example-optimistic",
-        paper="ATC10",
         locator="Sec. 3.8, worked example",
         quantity="the Gaussian assumption of Ref. [1] is optimistic ($\\mathrm{Exp}_g > \\mathrm{Exp}$)",
         published=True,
@@ -1285,7 +1257,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec3.9-W-limit",
-        paper="ATC10",
         locator="Eq. (3.9.3)",
         quantity="Zakai bandwidth times chip duration for $\\tau_c/\\tau \\ll 1$",
         published=_w_pub,
@@ -1302,7 +1273,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec3.9-W-bracket",
-        paper="ATC10",
         locator="Sec. 3.9, the bracketed Zakai bandwidth",
         quantity="the printed W equals the exact Zakai bandwidth of the idealised autocorrelation",
         published=True,
@@ -1318,7 +1288,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec3.9-W-real-code",
-        paper="ATC10",
         locator="Eq. (3.9.3)",
         quantity="$W \\tau_c$ of a long PSK sequence with good autocorrelation (m-sequence, 127-1023 chips)",
         published=_w_pub,
@@ -1336,7 +1305,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec3.9-power",
-        paper="ATC10",
         locator="Sec. 3.9, the noise power of PSK signatures; Sec. 3.1.3 C",
         quantity="multiple-access noise power in units of $N \\tau_c/\\alpha$ for PSK signatures",
         published=POWER_COEFF_PRINTED,
@@ -1354,7 +1322,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec3.1.3B-psk",
-        paper="ATC10",
         locator="Sec. 3.1.3 B (and Sec. 1.2)",
         quantity="in PSK multiple-access noise the ROC is less preferable than with Gaussian noise "
         "of equal power",
@@ -1372,7 +1339,6 @@ CLAIMS = [
     ),
     Claim(
         id="ATC10-sec3.5-asymptotically-tight",
-        paper="ATC10",
         locator="Sec. 3.1.3 A, end of Sec. 3.5.2",
         quantity="the ROC bounds approach the actual ROC as the number of aircraft grows",
         published=True,

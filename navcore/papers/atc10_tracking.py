@@ -1000,7 +1000,6 @@ for _ex in EXAMPLES:
         CLAIMS.append(
             Claim(
                 id=_cid + "-physical",
-                paper="ATC10",
                 locator="Table 4.2",
                 quantity=f"Example {_ex}: {COLUMN_NAMES[_col]}, physical geometry",
                 published=_pub,
@@ -1033,7 +1032,6 @@ for _ex in EXAMPLES:
         CLAIMS.append(
             Claim(
                 id=_cid + "-fitted",
-                paper="ATC10",
                 locator="Table 4.2",
                 quantity=f"Example {_ex}: {COLUMN_NAMES[_col]}, fitted radius ratio",
                 published=_pub,
@@ -1061,7 +1059,6 @@ for _ex in EXAMPLES:
 CLAIMS += [
     Claim(
         id="ATC10-sec4.6-cone-exI",
-        paper="ATC10",
         locator="Sec. 4.6",
         quantity="Example I: all satellites within a 45 deg half-angle cone about the local vertical",
         published=True,
@@ -1078,7 +1075,6 @@ CLAIMS += [
     ),
     Claim(
         id="ATC10-sec4.6-cone-exII",
-        paper="ATC10",
         locator="Sec. 4.6",
         quantity="Example II: all satellites within a 45 deg half-angle cone about the local vertical",
         published=True,
@@ -1091,7 +1087,6 @@ CLAIMS += [
     ),
     Claim(
         id="ATC10-sec4.6-triplet-exI",
-        paper="ATC10",
         locator="Sec. 4.6",
         quantity="Example I: satellites 1, 2, 3 are the most widely spaced triplet",
         published=True,
@@ -1109,7 +1104,6 @@ CLAIMS += [
     ),
     Claim(
         id="ATC10-sec4.6-triplet-exII",
-        paper="ATC10",
         locator="Sec. 4.6",
         quantity="Example II: satellites 1, 2, 3 are the most widely spaced triplet",
         published=True,
@@ -1129,7 +1123,6 @@ CLAIMS += [
     ),
     Claim(
         id="ATC10-sec4.5.4-beta-three-satellites",
-        paper="ATC10",
         locator="Sec. 4.5.4",
         quantity="$\\beta_0 = 0$ with three satellites (the clock cannot be estimated)",
         published=True,
@@ -1143,7 +1136,6 @@ CLAIMS += [
     ),
     Claim(
         id="ATC10-sec4.1-dilution-range",
-        paper="ATC10",
         locator="Sec. 4.1",
         quantity="typical constellations have geometric dilutions of one to two orders of magnitude",
         published=True,
@@ -1212,7 +1204,6 @@ for (_ex, _s0), _row in TABLE_4_3.items():
         CLAIMS.append(
             Claim(
                 id=f"ATC10-tab4.3-ex{_ex}-s{int(_s0)}-{_col}",
-                paper="ATC10",
                 locator="Table 4.3 col. (ii) (Fig. 4.1)" if _col == "psi" else "Table 4.3",
                 quantity=f"Example {_ex}, $\\sigma_0 = {int(_s0)}$ ns: {_TAB3_NAMES[_col]}",
                 published=_pub,
@@ -1246,7 +1237,6 @@ for (_ex, _s0), _row in TABLE_4_3.items():
     CLAIMS.append(
         Claim(
             id=_cid,
-            paper="ATC10",
             locator="Table 4.3",
             quantity=f"Example {_ex}, $\\sigma_0 = {int(_s0)}$ ns: rms error of the first three-satellite "
             "estimate, rotation-invariant clock term",
@@ -1275,7 +1265,6 @@ for (_ex, _s0), _row in TABLE_4_3.items():
 CLAIMS += [
     Claim(
         id="ATC10-sec4.6-rule1-exII",
-        paper="ATC10",
         locator="Sec. 4.6, rule (1)",
         quantity="Example II (small $\\beta$): tracking significantly reduces the error when "
         "$\\sigma_0 \\lesssim \\sigma$",
@@ -1295,7 +1284,6 @@ CLAIMS += [
     ),
     Claim(
         id="ATC10-sec4.6-rule2-exI",
-        paper="ATC10",
         locator="Sec. 4.6, rule (2)",
         quantity="Example I: the reduction is significant only when $\\sigma_0 \\lesssim 0.1 \\sigma$",
         published=True,
@@ -1314,7 +1302,6 @@ CLAIMS += [
     ),
     Claim(
         id="ATC10-sec4.6-rule3-jump-from-clock-term",
-        paper="ATC10",
         locator="Sec. 4.6, rule (3)",
         quantity="the jump from $sd_N$ to $sd_{N+1}$ is due largely to the increases of "
         "$\\operatorname{tr}\\{(F'F)^{-1}\\}$ and $1'F(F'F)^{-2}F'1$ (all six Table 4.3 cases)",
@@ -1343,7 +1330,6 @@ for _ex, _pub_s in (("I", 30.0), ("II", 60.0)):
     CLAIMS.append(
         Claim(
             id=f"ATC10-sec4.6-rule4-outage-ex{_ex}",
-            paper="ATC10",
             locator="Sec. 4.6, rule (4)",
             quantity=f"Example {_ex}, $\\sigma_0 = 0.1 \\sigma$: time the three-satellite error stays "
             "acceptable",
@@ -1366,7 +1352,6 @@ CLAIMS.append(
     Claim(
         id="ATC10-sec4.6-rule4-common-threshold",
         aliases=("ATC10-sec4.6-rule4-outage-exI-corrected", "ATC10-sec4.6-rule4-outage-exII-corrected"),
-        paper="ATC10",
         locator="Sec. 4.6, rule (4)",
         quantity="with $\\sigma_0 = 0.1 \\sigma$ one acceptable-error threshold gives about 30 s of "
         "three-satellite tracking in Example I and about 60 s in Example II (invariant $S_3$)",
@@ -1396,7 +1381,6 @@ CLAIMS.append(
 CLAIMS += [
     Claim(
         id="ATC10-eq4.5.38-coefficient",
-        paper="ATC10",
         locator="Eq. (4.5.38)",
         quantity="coefficient $(3/2)\\, 2^{1/3}$ of the small-$\\alpha$ approximation of $\\psi$",
         published=1.89,
@@ -1410,7 +1394,6 @@ CLAIMS += [
     ),
     Claim(
         id="ATC10-sec4.5.4-convergence-rule",
-        paper="ATC10",
         locator="Sec. 4.5.4",
         quantity="$\\gamma_n$ comes within 10 % of its limit in approximately $2.3/\\psi - 1$ steps, in the "
         "six cases of Table 4.3 (the number of terms $n + 1$ within the prose band of 'approximately')",
@@ -1430,7 +1413,6 @@ CLAIMS += [
     ),
     Claim(
         id="ATC10-sec4.5.4-steps-formula-sign",
-        paper="ATC10",
         locator="Sec. 4.5.4",
         quantity="the printed $n = 1/\\mathrm{Log}(1 - \\psi) - 1$ gives the number of steps",
         published=True,
@@ -1450,7 +1432,6 @@ CLAIMS += [
 ERRATA += [
     Erratum(
         id=_E1,
-        paper="ATC10",
         kind="derivation",
         basis="computed",
         locator="Eq. (4.5.30); Table 4.2 col. 5; Table 4.3 col. (v); Figs. 4.2-4.3; Sec. 4.6 rules (3)-(4)",
@@ -1472,7 +1453,6 @@ ERRATA += [
     ),
     Erratum(
         id=_E2,
-        paper="ATC10",
         kind="inconsistent-numbers",
         basis="computed",
         locator="Table 4.2 (from Table 4.1)",
@@ -1497,7 +1477,6 @@ ERRATA += [
     ),
     Erratum(
         id=_E3,
-        paper="ATC10",
         kind="typography",
         basis="text-only",
         locator="Eqs. (4.5.11), (4.5.20), Sec. 4.5.4 ($\\beta$)",
@@ -1511,7 +1490,6 @@ ERRATA += [
     ),
     Erratum(
         id="ATC10-E4.4-recursion-formulas",
-        paper="ATC10",
         kind="typography",
         basis="text-only",
         locator="Eqs. (4.5.10), (4.5.21), (4.5.31), (4.5.35); Sec. 4.5.2 steady state",
@@ -1534,7 +1512,6 @@ ERRATA += [
     ),
     Erratum(
         id=_E5,
-        paper="ATC10",
         kind="typography",
         basis="text-only",
         locator="Sec. 4.5.4 (steps to converge)",
@@ -1548,7 +1525,6 @@ ERRATA += [
     ),
     Erratum(
         id=_E5_COUNT,
-        paper="ATC10",
         kind="overstatement",
         basis="computed",
         locator="Sec. 4.5.4 (steps to converge)",
@@ -1564,7 +1540,6 @@ ERRATA += [
     ),
     Erratum(
         id=_E6,
-        paper="ATC10",
         kind="overstatement",
         basis="computed",
         locator="Sec. 4.6 (choice of satellites 1, 2, 3)",
@@ -1581,7 +1556,6 @@ ERRATA += [
     ),
     Erratum(
         id="ATC10-E4.7-fbm-normalisation",
-        paper="ATC10",
         kind="typography",
         basis="text-only",
         locator="App. G, Eq. (G.5) and $R_{x3}$",
@@ -1596,7 +1570,6 @@ ERRATA += [
     ),
     Erratum(
         id="ATC10-E4.8-var-of-norm",
-        paper="ATC10",
         kind="units",
         basis="text-only",
         locator="Eqs. (4.1.2), (4.5.7), (4.5.35); Table 4.3",
@@ -1611,7 +1584,6 @@ ERRATA += [
     ),
     Erratum(
         id="ATC10-E4.10-scalar-gain",
-        paper="ATC10",
         kind="typography",
         basis="text-only",
         locator="App. H, corollary (Eq. H.26)",

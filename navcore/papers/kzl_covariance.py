@@ -151,7 +151,6 @@ CLAIMS = [
     Claim(
         id="KZL-sec3.6-heading-with-init-covariance",
         aliases=("KZL-c16-covariance",),
-        paper="KZL",
         locator="Sec. 3.6",
         quantity="stand-alone IMU heading error after 180 s with initialisation (covariance engine)",
         published=_C16[0],
@@ -167,7 +166,6 @@ CLAIMS = [
     Claim(
         id="KZL-sec3.6-heading-without-init-covariance",
         aliases=("KZL-c17-covariance",),
-        paper="KZL",
         locator="Sec. 3.6",
         quantity="stand-alone IMU heading error after 180 s without initialisation (covariance engine)",
         published=_C17[0],
@@ -190,7 +188,6 @@ CLAIMS = [
     Claim(
         id="KZL-fig5-ins-position-covariance",
         aliases=("KZL-c22-position-covariance",),
-        paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 5",
         quantity="stand-alone IMU position error after 3 min, per horizontal axis (covariance engine)",
         published=1.0,
@@ -207,7 +204,6 @@ CLAIMS = [
     Claim(
         id="KZL-fig5-ins-velocity-covariance",
         aliases=("KZL-c22-velocity-covariance",),
-        paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 5",
         quantity="stand-alone IMU velocity error after 3 min, per horizontal axis (covariance engine)",
         published=15.0,

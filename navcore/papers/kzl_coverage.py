@@ -348,7 +348,6 @@ CLAIMS = [
     Claim(
         id="KZL-sec1-footprint-overlap",
         aliases=("KZL-c26-overlap",),
-        paper="KZL",
         locator="Sec. 1",
         quantity="the longest footprint overlap in the hybrid experiment (receiver footprint over the "
         "satellite's ground speed) is a few seconds (2 to 5 s, the reading of 'a few' in the ledger's "
@@ -367,7 +366,6 @@ CLAIMS = [
     Claim(
         id="KZL-sec1-positioning-less-strict",
         aliases=("KZL-c27-positioning",),
-        paper="KZL",
         locator="Sec. 1",
         quantity="positioning requirements less strict than pointing: the footprint shift of a 0.5 deg "
         "pointing error exceeds the stand-alone GPS position error",
@@ -384,7 +382,6 @@ CLAIMS = [
     Claim(
         id="KZL-sec1-baseline-tilt-accuracy",
         aliases=("KZL-c28-baseline-angle",),
-        paper="KZL",
         locator="Sec. 1",
         quantity="the baseline tilt accuracy for a height error below 1 m (TerraSAR-X geometry) is at the "
         "level of an arcsec",
@@ -402,7 +399,6 @@ CLAIMS = [
     Claim(
         id="KZL-sec1-baseline-length-accuracy",
         aliases=("KZL-c29-baseline-length",),
-        paper="KZL",
         locator="Sec. 1",
         quantity="the baseline length accuracy for a height error below 1 m (TerraSAR-X geometry) is at the "
         "level of a mm to a cm",
@@ -421,7 +417,6 @@ CLAIMS = [
     Claim(
         id="KZL-sec2.1-ins-data-rate",
         aliases=("KZL-c30-ins-rate",),
-        paper="KZL",
         locator="Sec. 2.1",
         quantity="the example INS data rate of Sec. 2.1 against Table 1's IMU update rate",
         published=_rate100,
@@ -436,7 +431,6 @@ CLAIMS = [
     Claim(
         id="KZL-sec2.1-gnss-output-rate",
         aliases=("KZL-c31-gnss-rate",),
-        paper="KZL",
         locator="Sec. 2.1",
         quantity="the example GNSS output rate of Sec. 2.1 against Table 1's GPS update rate",
         published=_rate1,
@@ -451,7 +445,6 @@ CLAIMS = [
     Claim(
         id="KZL-sec2.2-cascaded-nearly-uncorrelated",
         aliases=("KZL-c32-cascaded",),
-        paper="KZL",
         locator="Sec. 2.2",
         quantity="cascaded filters: using the GNSS outputs only every >10 s accounts for their time "
         "correlation (a first-order receiver filter's outputs 10 s apart are nearly uncorrelated)",
@@ -468,7 +461,6 @@ CLAIMS = [
     ),
     Claim(
         id="KZL-eq6-first-order",
-        paper="KZL",
         locator="Eq. (6)",
         quantity="$A \\approx I + FT$: the first-order transition gives the 180 s stand-alone north-position "
         "$\\sigma$ of $e^{FT}$, at the Table 1 GPS interval",
@@ -485,7 +477,6 @@ CLAIMS = [
     ),
     Claim(
         id="KZL-eq9-quaternion",
-        paper="KZL",
         locator="Eq. (9)",
         quantity="the quaternion rate $\\dot q = q \\otimes [0, \\omega]/2$ integrates to the rotation of "
         "the body rate",
@@ -501,7 +492,6 @@ CLAIMS = [
     ),
     Claim(
         id="KZL-eq10-11-fd",
-        paper="KZL",
         locator="Eqs. (10)-(11)",
         quantity="the velocity-attitude block of F (the explicit matrix of Eq. (11)) equals finite "
         "differences of the velocity-error rate",
@@ -518,7 +508,6 @@ CLAIMS = [
     ),
     Claim(
         id="KZL-eq11-bracket",
-        paper="KZL",
         locator="Eq. (11)",
         quantity="the explicit matrix of Eq. (11) is the cross-product matrix its bracket $[a \\times]$ "
         "names",
@@ -541,7 +530,6 @@ CLAIMS = [
     ),
     Claim(
         id="KZL-eq15-orderings",
-        paper="KZL",
         locator="Eq. (15)",
         quantity="the two groupings of the double difference in Eq. (15) are equal",
         published=True,
@@ -556,7 +544,6 @@ CLAIMS = [
     ),
     Claim(
         id="KZL-eq17-printed-rank",
-        paper="KZL",
         locator="Eq. (17)",
         quantity="the two DD attitude rows of Eq. (17) as printed (both rows with $l_{02}$) are two "
         "independent observations of one satellite pair, as two baselines should give",
@@ -576,7 +563,6 @@ CLAIMS = [
     ),
     Claim(
         id="KZL-eq17-rank",
-        paper="KZL",
         locator="Eq. (17)",
         quantity="the DD attitude rows with $l_{01}$ and $l_{02}$ (corrected Eq. (17)) are two independent "
         "observations",
@@ -592,7 +578,6 @@ CLAIMS = [
     Claim(
         id="KZL-fig5-loose-three-unbounded",
         aliases=("KZL-c33-loose-three",),
-        paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 5",
         quantity="with three satellites a loosely coupled integration is not bounded: the receiver's "
         "code geometry has rank 3 < 4 unknowns, so it gives no fix to the fusion filter",
@@ -608,7 +593,6 @@ CLAIMS = [
     Claim(
         id="KZL-sec3.7-baseline-tradeoff",
         aliases=("KZL-c34-baselines",),
-        paper="KZL",
         locator="Sec. 3.7",
         quantity="shorter baselines shrink the integer search, longer baselines improve the attitude: "
         "over 0.5, 1, 2, 4 m the candidates per DD rise and the attitude error falls",

@@ -406,7 +406,6 @@ def nav_grade_drift_km_per_h() -> float:
 ERRATA = [
     Erratum(
         id="KZL-E1-levelling-sign",
-        paper="KZL",
         kind="convention",
         basis="text-only",
         locator="Eqs. (2)-(3)",
@@ -425,7 +424,6 @@ ERRATA = [
     ),
     Erratum(
         id="KZL-E2-time-invariant",
-        paper="KZL",
         kind="unstated-assumption",
         basis="text-only",
         locator="Eq. (5), preceding text",
@@ -439,7 +437,6 @@ ERRATA = [
     ),
     Erratum(
         id="KZL-E3-skew-notation",
-        paper="KZL",
         kind="convention",
         basis="text-only",
         locator="Eq. (11)",
@@ -457,7 +454,6 @@ ERRATA = [
     ),
     Erratum(
         id="KZL-E4-euler-rows",
-        paper="KZL",
         kind="derivation",
         basis="text-only",
         locator="Eq. (13), block R",
@@ -474,7 +470,6 @@ ERRATA = [
     ),
     Erratum(
         id="KZL-E5-dd-typos",
-        paper="KZL",
         kind="typography",
         basis="text-only",
         locator="Eqs. (1), (10), (14), (17)",
@@ -493,7 +488,6 @@ ERRATA = [
     ),
     Erratum(
         id="KZL-E6-quaternion-order",
-        paper="KZL",
         kind="convention",
         basis="text-only",
         locator="Sec. 3.5, attitude correction",
@@ -514,7 +508,6 @@ ERRATA = [
 CLAIMS = [
     Claim(
         id="KZL-eq1-states",
-        paper="KZL",
         locator="Sec. 3.1, Eq. (1)",
         quantity="number of states of the tightly coupled error-state vector",
         published=17,
@@ -528,7 +521,6 @@ CLAIMS = [
     ),
     Claim(
         id="KZL-eq4-heading",
-        paper="KZL",
         locator="Eq. (4) and Table 1",
         quantity="heading from the Table 1 GPS velocity (110 m/s east)",
         published=90.0,
@@ -545,7 +537,6 @@ CLAIMS = [
     ),
     Claim(
         id="KZL-eq2-3-levelling",
-        paper="KZL",
         locator="Eqs. (2)-(3)",
         quantity="roll that the printed levelling formula (Eq. 3) returns for the level Table 1 attitude, "
         "from the specific force of Eq. (8)",
@@ -564,7 +555,6 @@ CLAIMS = [
     ),
     Claim(
         id="KZL-eq2-pitch-sign",
-        paper="KZL",
         locator="Eq. (2)",
         quantity="the printed levelling formula (Eq. 2), applied to the specific force of Eq. (8), returns "
         "the pitch of a nose-up or nose-down attitude with its sign",
@@ -588,7 +578,6 @@ CLAIMS = [
     Claim(
         id="KZL-sec3.1-gyro-bias-swamps-earth-rate",
         aliases=("KZL-c11-earth-rate",),
-        paper="KZL",
         locator="Sec. 3.1",
         quantity="a MEMS gyro bias of several 100 deg/h swamps the horizontal Earth rate (no gyrocompassing)",
         published=True,
@@ -605,7 +594,6 @@ CLAIMS = [
     Claim(
         id="KZL-sec3.2-earth-transport-rates-negligible",
         aliases=("KZL-c13-neglected-rates",),
-        paper="KZL",
         locator="Secs. 3.1-3.2",
         quantity="Earth and transport rate are negligible against the low-cost gyro bias",
         published=True,
@@ -624,7 +612,6 @@ CLAIMS = [
     ),
     Claim(
         id="KZL-eq5-series",
-        paper="KZL",
         locator="Eq. (5)",
         quantity="$e^{FT} = I + FT + (FT)^2/2 + \\ldots$ for the 17-state $F$",
         published=True,
@@ -638,7 +625,6 @@ CLAIMS = [
     ),
     Claim(
         id="KZL-dim13",
-        paper="KZL",
         locator="Sec. 3.4, after Eq. (13)",
         quantity="rows of the observation matrix with redundant attitude = $3 + 2\\nu$ ($\\nu$ = 1..8)",
         published=True,
@@ -651,7 +637,6 @@ CLAIMS = [
     ),
     Claim(
         id="KZL-dim17",
-        paper="KZL",
         locator="Sec. 3.4, before Eq. (17)",
         quantity="rows of the DD observation matrix = $2 + 4 (\\nu - 1)$ ($\\nu$ = 1..8)",
         published=True,
@@ -667,7 +652,6 @@ CLAIMS = [
     Claim(
         id="KZL-sec3.1-observability-needs-attitude",
         aliases=("KZL-c12-observability",),
-        paper="KZL",
         locator="Sec. 3.1",
         quantity="complete observability only with redundant attitude information, depending on $\\nu$",
         published=True,
@@ -683,7 +667,6 @@ CLAIMS = [
     Claim(
         id="KZL-sec3.4-sequential-update",
         aliases=("KZL-c14-sequential",),
-        paper="KZL",
         locator="Sec. 3.4",
         quantity="sequential processing gives the batch update without inverting the full innovation matrix",
         published=True,
@@ -698,7 +681,6 @@ CLAIMS = [
     ),
     Claim(
         id="KZL-eq13-R",
-        paper="KZL",
         locator="Eq. (13), block R",
         quantity="the block R of Eq. (13), body-axes rates to Euler-angle rates, is the Jacobian of the "
         "Euler angles with respect to the n-frame attitude error (at the Table 1 attitude)",
@@ -718,7 +700,6 @@ CLAIMS = [
     ),
     Claim(
         id="KZL-qcorr",
-        paper="KZL",
         locator="Sec. 3.5",
         quantity="the printed correction $q^+ = q^- \\otimes q^n$ (right product) removes an estimated "
         "n-frame attitude error",
@@ -740,7 +721,6 @@ CLAIMS = [
     Claim(
         id="KZL-sec1-satellite-aircraft-speed-ratio",
         aliases=("KZL-c1",),
-        paper="KZL",
         locator="Sec. 1",
         quantity="satellite speed about 76 times the aircraft speed in the hybrid experiments",
         published=76.0,
@@ -758,7 +738,6 @@ CLAIMS = [
     Claim(
         id="KZL-sec2.1-ins-drift-per-hour",
         aliases=("KZL-c6",),
-        paper="KZL",
         locator="Sec. 2.1",
         quantity="position error of a 50,000-100,000 $ INS without aiding, km per hour",
         published=1.0,
@@ -776,7 +755,6 @@ CLAIMS = [
     Claim(
         id="KZL-sec2.1-four-measurements",
         aliases=("KZL-c7",),
-        paper="KZL",
         locator="Sec. 2.1",
         quantity="four or more simultaneous measurements are needed for 3-D position and clock bias",
         published=True,
@@ -791,7 +769,6 @@ CLAIMS = [
     Claim(
         id="KZL-sec3.5-small-rotation-euler-angles",
         aliases=("KZL-c15",),
-        paper="KZL",
         locator="Sec. 3.5",
         quantity="for a small rotation there is approximately no difference between the components of its "
         "rotation vector and its Euler angles (the Jacobian at the identity is I)",

@@ -237,7 +237,6 @@ CLAIMS = [
     Claim(
         id="KZL-sec3.6-heading-with-init",
         aliases=("KZL-c16",),
-        paper="KZL",
         locator="Sec. 3.6",
         quantity="stand-alone IMU heading error after 180 s with initialisation",
         published=_C16[0],
@@ -256,7 +255,6 @@ CLAIMS = [
     Claim(
         id="KZL-sec3.6-heading-without-init",
         aliases=("KZL-c17",),
-        paper="KZL",
         locator="Sec. 3.6",
         quantity="stand-alone IMU heading error after 180 s without initialisation and calibration",
         published=20.0,
@@ -279,7 +277,6 @@ CLAIMS = [
     Claim(
         id="KZL-sec3.6-heading-largest-attitude-error",
         aliases=("KZL-c18",),
-        paper="KZL",
         locator="Sec. 3.6",
         quantity="stand-alone IMU: the largest attitude error is in heading",
         published=True,
@@ -299,7 +296,6 @@ CLAIMS = [
     Claim(
         id="KZL-fig5-ins-position",
         aliases=("KZL-c22-position",),
-        paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 5",
         quantity="stand-alone IMU position error after 3 min",
         published=1.0,
@@ -317,7 +313,6 @@ CLAIMS = [
     Claim(
         id="KZL-fig5-ins-velocity",
         aliases=("KZL-c22-velocity",),
-        paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 5",
         quantity="stand-alone IMU velocity error after 3 min",
         published=15.0,
@@ -334,7 +329,6 @@ CLAIMS = [
     Claim(
         id="KZL-fig4-tight-improves-roll-pitch",
         aliases=("KZL-c19-tilt",),
-        paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 4",
         quantity="tight coupling without attitude information improves roll and pitch over the INS alone",
         published=True,
@@ -351,7 +345,6 @@ CLAIMS = [
     Claim(
         id="KZL-fig4-tight-improves-heading",
         aliases=("KZL-c19-heading",),
-        paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 4",
         quantity="the attitude results of tight coupling (without attitude information) are better than "
         "those of the INS alone, 'attitude' read as every angle, the heading included",
@@ -374,7 +367,6 @@ CLAIMS = [
     Claim(
         id="KZL-fig4-redundant-attitude",
         aliases=("KZL-c20",),
-        paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 4",
         quantity="redundant attitude: much better attitude, much larger errors with fewer than 4 satellites",
         published=True,
@@ -391,7 +383,6 @@ CLAIMS = [
     Claim(
         id="KZL-fig4-dd-phases-robust",
         aliases=("KZL-c21",),
-        paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 4",
         quantity="DD phases: comparable with $\\ge 4$ satellites, robust and accurate with 2 or 3",
         published=True,
@@ -409,7 +400,6 @@ CLAIMS = [
     Claim(
         id="KZL-fig5-tight-three-bounded",
         aliases=("KZL-c23-c24",),
-        paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 5",
         quantity="TC position error bounded with 3 satellites, growing remarkably with 2",
         published=True,
@@ -428,7 +418,6 @@ CLAIMS = [
     Claim(
         id="KZL-fig5-dd-best",
         aliases=("KZL-c25",),
-        paper="KZL",
         locator="Sec. 3.6, discussion of Fig. 5",
         quantity="the DD carrier-phase integration yields the best results",
         published=True,
@@ -445,7 +434,6 @@ CLAIMS = [
     Claim(
         id="KZL-sec1-pointing-half-degree",
         aliases=("KZL-c3",),
-        paper="KZL",
         locator="Sec. 1",
         quantity="about 0.5 deg pointing accuracy is achievable (footprint chasing requirement): the "
         "largest TC + DD attitude error after 10 s",

@@ -165,7 +165,6 @@ _hz50 = printed("50")
 CLAIMS = [
     Claim(
         id="SP-sec2.5-phase-step-deg",
-        paper="SP",
         locator="Sec. 2.5 (acquisition)",
         quantity="code-phase step between 20-ms search intervals for a 30-m cell",
         published=_d36[0],
@@ -179,7 +178,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.5-doppler-cell-hz",
-        paper="SP",
         locator="Sec. 2.5 (acquisition)",
         quantity="frequency cell of a 20-ms coherent dwell",
         published=_hz50[0],
@@ -191,7 +189,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.5-doppler-cell-mps",
-        paper="SP",
         locator="Sec. 2.5 (acquisition)",
         quantity="range rate corresponding to the 50-Hz frequency cell at L1",
         published=10.0,
@@ -203,7 +200,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-tab2.7-ordering",
-        paper="SP",
         locator="Table 2.7",
         quantity="intervals never increase with IMU quality, and tight coupling needs fewer than loose",
         published=True,
@@ -218,7 +214,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.2-search-better",
-        paper="SP",
         locator="Sec. 2.6.2",
         quantity="longest search time of the better IMUs (20 ms per interval)",
         published=_t02[0],
@@ -237,7 +232,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.2-search-10-min",
-        paper="SP",
         locator="Sec. 2.6.2",
         quantity="shortest search time of the 10 nmi/h system",
         published=0.8,
@@ -250,7 +244,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.2-search-10-max",
-        paper="SP",
         locator="Sec. 2.6.2",
         quantity="longest search time of the 10 nmi/h system",
         published=1.6,
@@ -263,7 +256,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.2-outside-1sigma",
-        paper="SP",
         locator="Sec. 2.6.2",
         quantity="probability that the signal lies outside the $1\\sigma$ search bounds",
         published=_p32[0],
@@ -275,7 +267,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.4-pointing-gyrocompass",
-        paper="SP",
         locator="Sec. 2.6.4",
         quantity="pointing error over 8 km is negligible next to the helicopter's position error "
         "(gyrocompass heading error assumed)",

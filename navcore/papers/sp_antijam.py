@@ -601,7 +601,6 @@ def _cep_claim(arch: str, power: float) -> Claim:
     quantity = f"CEP at impact, {name}, {power:g}-W wideband jammer (paper: 25-run Monte Carlo)"
     common: dict[str, Any] = dict(
         id=cid,
-        paper="SP",
         locator="Sec. 3.3, Fig. 3.6",
         quantity=quantity,
         published=value,
@@ -649,7 +648,6 @@ def _cep_claim(arch: str, power: float) -> Claim:
 CLAIMS = [
     Claim(
         id="SP-sec3.0-tc-loss-54dB",
-        paper="SP",
         locator="Sec. 3.0",
         quantity="J/S at which the tightly coupled code loop loses lock",
         published=_js54[0],
@@ -667,7 +665,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec3.1-improvement-15dB",
-        paper="SP",
         locator="Sec. 3.1",
         quantity="J/S improvement of the deeply integrated code loop over the tightly coupled one",
         published=15.0,
@@ -687,7 +684,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec3.3-aj-rule-100x",
-        paper="SP",
         locator="Sec. 3.3 (second), 'Final comment'",
         quantity="jammer power factor needed to offset a 20-dB A/J improvement",
         published=100.0,
@@ -701,7 +697,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec3.3-aj-rule-distance",
-        paper="SP",
         locator="Sec. 3.3 (second), 'Final comment'",
         quantity="20 dB more J/S in free space equals a 10 times shorter jammer distance",
         published=True,
@@ -714,7 +709,6 @@ CLAIMS = [
     *(_cep_claim(a, p) for a, p in (("DI", 100.0), ("TC", 100.0), ("DI", 10.0), ("TC", 10.0))),
     Claim(
         id="SP-sec3.3-di-better",
-        paper="SP",
         locator="Sec. 3.3, Figs. 3.6-3.7",
         quantity="deep integration has a smaller CEP than tight coupling at 10 and 100 W, both jammer types",
         published=True,
@@ -727,7 +721,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec3.3-low-power-comparable",
-        paper="SP",
         locator="Sec. 3.3",
         quantity="as jammer power goes to zero both systems give comparable performance",
         published=True,
@@ -741,7 +734,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-fig3.8-aj-15dB",
-        paper="SP",
         locator="Sec. 3.3, Fig. 3.8",
         quantity="smallest A/J improvement for wideband CEPs from 6 to 120 m, read off Fig. 3.8 "
         "(paper: 25-run Monte Carlo curves)",
@@ -769,7 +761,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-fig3.3-aj-above-10dB",
-        paper="SP",
         locator="Sec. 3.1, Fig. 3.3",
         quantity="A/J improvement of deep integration at every rss error (second scenario)",
         published=10.0,
@@ -790,7 +781,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-fig3.3-aj-15dB-above-35m",
-        paper="SP",
         locator="Sec. 3.1, Fig. 3.3",
         quantity="A/J improvement of deep integration for rss errors above 35 m",
         published=15.0,
@@ -810,7 +800,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-fig3.1-di-lower-initial-rss",
-        paper="SP",
         locator="Sec. 3.1, Fig. 3.1",
         quantity="deep integration has the lower rss error during the 60-s, 30-dB initialisation phase",
         published=True,

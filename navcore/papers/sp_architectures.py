@@ -81,7 +81,6 @@ def _tight_within_loose_cascade() -> bool:
 CLAIMS = [
     Claim(
         id="SP-tab2.1-total",
-        paper="SP",
         locator="Table 2.1",
         quantity="number of states of the GPS receiver's PVA filter",
         published=12,
@@ -94,7 +93,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-tab2.2-total",
-        paper="SP",
         locator="Table 2.2",
         quantity="number of error states of the loosely coupled integration filter",
         published=22,
@@ -107,7 +105,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-tab2.3-total",
-        paper="SP",
         locator="Table 2.3",
         quantity="number of error states of the tightly coupled integration filter",
         published=24,
@@ -119,7 +116,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.2-same-states",
-        paper="SP",
         locator="Sec. 2.2",
         quantity="the tightly coupled states all appear in the cascaded loosely coupled filters",
         published=True,

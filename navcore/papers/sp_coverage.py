@@ -71,7 +71,6 @@ def _state_claim(table: str, row: int) -> Claim:
     label, count = _ROWS[table][row]
     return Claim(
         id=f"SP-tab{table}-{_slug(label)}",
-        paper="SP",
         locator=f"Table {table}",
         quantity=f"states of the '{label}' block of {_TABLES[table][2]}",
         published=count,
@@ -122,7 +121,6 @@ def _t27_claim(system: str, col: int) -> Claim:
     value, tol = printed(str(cell))
     return Claim(
         id=f"SP-tab2.7-{key}-sv{sat}",
-        paper="SP",
         locator="Table 2.7",
         quantity=f"code-phase intervals to search at reacquisition, {system}, satellite {sat}",
         published=value,
@@ -248,7 +246,6 @@ CLAIMS = [
     *(_t27_claim(s, c) for s in spa.TABLE_2_7_ROWS for c in range(len(spa.TABLE_2_7_SATELLITES))),
     Claim(
         id="SP-sec2.6.1-reacquisition-2760s",
-        paper="SP",
         locator="Sec. 2.6.1",
         quantity="start of code reacquisition: first code loss + $3\\times$ 3-min intervals + 20-min outage",
         published=printed("2760")[0],
@@ -263,7 +260,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.1-code-after-fourth-carrier",
-        paper="SP",
         locator="Sec. 2.6.1",
         quantity="the first code loss (1020 s) follows the fourth carrier loss (360 s + $3\\times$ 3 min)",
         published=True,
@@ -280,7 +276,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.3-6s-longer",
-        paper="SP",
         locator="Sec. 2.6.3",
         quantity="how much longer the tightly coupled systems resisted the jamming",
         published=6.0,
@@ -294,7 +289,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-tab2.5-half-column",
-        paper="SP",
         locator="Table 2.5",
         quantity="the 0.5 nmi/h column is half the 1.0 nmi/h column in every row but the gyro scale factor",
         published=True,
@@ -313,7 +307,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-fig2.9-heli-1nmi",
-        paper="SP",
         locator="Sec. 2.6.4 (Fig. 2.9)",
         quantity="1 nmi/h helicopter target-location error 19 min after GPS loss (no Doppler)",
         published=printed("192")[0],
@@ -331,7 +324,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.8-gps-aided-not-dramatic",
-        paper="SP",
         locator="Sec. 2.8",
         quantity="with GPS, the error gain from the 10 to the 0.2 nmi/h IMU is far below the grade "
         "ratio (assertion 1)",
@@ -348,7 +340,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-fig3.8-narrowband-15dB",
-        paper="SP",
         locator="Sec. 3.3, Fig. 3.8",
         quantity="smallest A/J improvement for narrowband CEPs from 4 to 80 m, read off Fig. 3.8",
         published=15.0,
@@ -366,7 +357,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec3.3-aj-falls-beyond-100m",
-        paper="SP",
         locator="Sec. 3.3",
         quantity="the A/J improvement decreases as CEP grows beyond 100 m (wideband)",
         published=True,
@@ -387,7 +377,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-fig3.2-di-better-second",
-        paper="SP",
         locator="Sec. 3.1, Fig. 3.2",
         quantity="deep integration has a lower rss error than tight coupling in the second scenario",
         published=True,
@@ -401,7 +390,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec3.1-aj-grows-with-imu",
-        paper="SP",
         locator="Sec. 3.1",
         quantity="the A/J improvement increases with higher-quality inertial sensors (10 to 1 deg/h)",
         published=True,
@@ -416,7 +404,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.1-fixes-decorrelated",
-        paper="SP",
         locator="Sec. 2.1",
         quantity="receiver position solutions 10 s apart are not significantly correlated",
         published=True,

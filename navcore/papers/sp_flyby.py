@@ -906,7 +906,6 @@ ERRATA: list = []
 CLAIMS = [
     Claim(
         id="SP-fig2.6-lc-blackout",
-        paper="SP",
         locator="Sec. 2.6.2 (Fig. 2.6)",
         quantity="loss-of-lock (blackout) duration of the loosely coupled system in the jammer flyby",
         published=LC_BLACKOUT_MIN,
@@ -925,7 +924,6 @@ CLAIMS = [
         printed="Even for the best IMU, the blackout time is reduced by only about 2 min from the "
         "20-min blackout experienced by the loosely coupled receiver with full (unaided) "
         "bandwidth.",
-        paper="SP",
         locator="Sec. 2.6.2 (Fig. 2.6)",
         quantity="blackout shortening by the best tightly coupled IMU relative to the loosely coupled one",
         published=BLACKOUT_REDUCTION_MIN,
@@ -945,7 +943,6 @@ CLAIMS = [
         printed="The blackout period as a function of IMU architecture and IMU quality is shown in "
         "Figure 2.6. ... Even for the best IMU, the blackout time is reduced by only about 2 "
         "min",
-        paper="SP",
         locator="Sec. 2.6.2 (Fig. 2.6)",
         quantity="every tightly coupled system has a shorter blackout than the loosely coupled one",
         published=True,
@@ -961,7 +958,6 @@ CLAIMS = [
         id="SP-sec2.6.2-blackout-bandwidth",
         printed="The period of outage will also be a function of the bandwidth of the carrier tracking "
         "loops for each of the receivers.",
-        paper="SP",
         locator="Sec. 2.6.2",
         quantity="the period of outage is a function of the bandwidth of the carrier tracking loops",
         published=True,
@@ -989,7 +985,6 @@ CLAIMS = [
         id="SP-fig2.6-blackout-grade",
         printed="The blackout period as a function of IMU architecture and IMU quality is shown in "
         "Figure 2.6.",
-        paper="SP",
         locator="Sec. 2.6.2 (Fig. 2.6)",
         quantity="the tightly coupled blackout varies with IMU quality",
         published=True,
@@ -1009,7 +1004,6 @@ CLAIMS = [
         id="SP-sec2.6.2-calibration-not-resistance",
         printed="For this particular scenario, the performance difference is due to better calibration "
         "of the inertial instruments rather than jamming resistance.",
-        paper="SP",
         locator="Sec. 2.6.2",
         quantity="the blackout difference is due to better calibration of the inertial instruments rather "
         "than jamming resistance",
@@ -1030,7 +1024,6 @@ CLAIMS = [
         id="SP-fig2.7-tc10",
         printed="The ratio of error level between the 10-nmi/h and the 1-nmi/h tightly coupled systems "
         "(3300:260)",
-        paper="SP",
         locator="Sec. 2.6.2 (Fig. 2.7)",
         quantity="tightly coupled 10 nmi/h horizontal position error just before reacquisition",
         published=printed("3300")[0],
@@ -1047,7 +1040,6 @@ CLAIMS = [
         id="SP-fig2.7-tc1",
         printed="The ratio of error level between the 10-nmi/h and the 1-nmi/h tightly coupled systems "
         "(3300:260)",
-        paper="SP",
         locator="Sec. 2.6.2 (Fig. 2.7)",
         quantity="tightly coupled 1 nmi/h horizontal position error just before reacquisition",
         published=printed("260")[0],
@@ -1065,7 +1057,6 @@ CLAIMS = [
         id="SP-fig2.7-tc1-below-lc1",
         printed="The tightly coupled 1-nm/h system benefits somewhat more by the GPS in-flight "
         "calibration than the loosely coupled system.",
-        paper="SP",
         locator="Sec. 2.6.2 (Fig. 2.7)",
         quantity="just before reacquisition the tightly coupled 1 nmi/h error is below the loosely "
         "coupled 1 nmi/h error",
@@ -1087,7 +1078,6 @@ CLAIMS = [
         id="SP-fig2.7-monotone-grade",
         printed="Thus, the better IMUs perform better yet when they are calibrated continuously by "
         "in-flight GPS measurements.",
-        paper="SP",
         locator="Sec. 2.6.2 (Fig. 2.7)",
         quantity="tightly coupled errors just before reacquisition fall with IMU quality "
         "(10, 1, 0.5, 0.2 nmi/h)",
@@ -1103,7 +1093,6 @@ CLAIMS = [
         id="SP-sec2.6.2-range-rate-cell",
         printed="In no case did the error growth in velocity cause the range rate uncertainty to any "
         "satellite to be greater than 10 m/s (one Doppler shift interval).",
-        paper="SP",
         locator="Sec. 2.6.2 (Table 2.7 text)",
         quantity="at reacquisition no satellite's range-rate uncertainty exceeds 10 m/s (one Doppler cell)",
         published=True,

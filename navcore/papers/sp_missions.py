@@ -380,7 +380,6 @@ _GRADE_NOTE = (
 ERRATA = [
     Erratum(
         id="SP-E-tab2.4-clock-offset-unit",
-        paper="SP",
         kind="units",
         basis="text-only",
         locator="Table 2.4 (GPS user clock, initial offset)",
@@ -400,7 +399,6 @@ ERRATA = [
     ),
     Erratum(
         id="SP-E-grade-labels",
-        paper="SP",
         kind="inconsistent-numbers",
         basis="computed",
         locator="Table 2.5 and Sec. 2.4",
@@ -425,7 +423,6 @@ def _grade_claim(label: float, text: str) -> Claim:
     if label == 10.0:
         return Claim(
             id="SP-tab2.5-grade-10",
-            paper="SP",
             locator=_TAB25,
             quantity="1-hour unaided navigation error of the 10 nmi/h instrument set",
             published=val,
@@ -439,7 +436,6 @@ def _grade_claim(label: float, text: str) -> Claim:
         )
     return Claim(
         id=f"SP-tab2.5-grade-{label:g}",
-        paper="SP",
         locator=_TAB25,
         quantity=f"1-hour unaided navigation error of the {label:g} nmi/h instrument set",
         published=val,
@@ -460,7 +456,6 @@ def _ratio_claim(label: float) -> Claim:
     val, tol = printed(f"{label:g}")
     return Claim(
         id=f"SP-tab2.5-grade-ratio-{label:g}",
-        paper="SP",
         locator=_TAB25,
         quantity=f"1-h error of the {label:g} nmi/h set relative to the 1.0 nmi/h set",
         published=val,
@@ -490,7 +485,6 @@ CLAIMS = [
     _ratio_claim(0.2),
     Claim(
         id="SP-sec2.6.1-84min-1nmi",
-        paper="SP",
         locator="Sec. 2.6.1 (Fig. 2.5)",
         quantity="horizontal position error of the 1.0 nmi/h (tightly coupled) system 84 min after GPS loss",
         published=printed("1131")[0],
@@ -507,7 +501,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.1-84min-10nmi",
-        paper="SP",
         locator="Sec. 2.6.1 (Fig. 2.5)",
         quantity="horizontal position error of the 10 nmi/h system 84 min after GPS loss (close to)",
         published=18000.0,
@@ -520,7 +513,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.1-84min-10nmi-noise-only",
-        paper="SP",
         locator="Sec. 2.6.1",
         quantity="84-min error of the 10 nmi/h instrument if only its random walks remained",
         published=18000.0,
@@ -536,7 +528,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.1-20min-ratio",
-        paper="SP",
         locator="Sec. 2.6.1 (Fig. 2.4)",
         quantity="ratio of 10 nmi/h to 1.0 nmi/h horizontal position error at the end of the 20-min blackout",
         published=10.0,
@@ -549,7 +540,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.1-tight-beats-loose",
-        paper="SP",
         locator="Sec. 2.6.1",
         quantity="the tightly coupled 1.0 nmi/h system has a smaller position error than the loosely "
         "coupled one (at reacquisition and after 84 min)",
@@ -563,7 +553,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.1-difference-shrinks",
-        paper="SP",
         locator="Sec. 2.6.1",
         quantity="the tight-vs-loose difference diminishes with time (relative gap after 84 min "
         "smaller than after the 20-min blackout)",
@@ -577,7 +566,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.1-monotone-grade",
-        paper="SP",
         locator="Sec. 2.6.1 (Figs. 2.4-2.5)",
         quantity="position errors fall monotonically with IMU quality (10, 1, 0.5, 0.2 nmi/h)",
         published=True,
@@ -590,7 +578,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.1-velocity-rise",
-        paper="SP",
         locator="Sec. 2.6.1 (Figs. 2.2-2.3)",
         quantity="loosely coupled velocity error rises from the first code loss (1020 s); the "
         "tightly coupled rise is delayed",
@@ -605,7 +592,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.1-reacquisition-steps",
-        paper="SP",
         locator="Sec. 2.6.1 (Figs. 2.2-2.3)",
         quantity="tightly coupled velocity error steps down at each code reacquisition; loosely "
         "coupled only when the fourth code is back",
@@ -621,7 +607,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.8-better-gain-more",
-        paper="SP",
         locator="Sec. 2.8, assertion 3 (and Sec. 2.6.2)",
         quantity="better inertial instruments gain more from in-flight alignment",
         published=True,
@@ -639,7 +624,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.2-ratio-printed",
-        paper="SP",
         locator="Sec. 2.6.2 (Fig. 2.7)",
         quantity="the printed 10:1 nmi/h tightly coupled error ratio 3300:260 exceeds 10",
         published=10.0,
@@ -656,7 +640,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.3-minutes",
-        paper="SP",
         locator="Sec. 2.6.3 (Fig. 2.8 caption)",
         quantity="'about 2.7 min' of free inertial navigation before bomb release (159 s of Fig. 2.8)",
         published=printed("2.7")[0],
@@ -672,7 +655,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.3-tc10-beats-lc1",
-        paper="SP",
         locator="Sec. 2.6.3 (Fig. 2.8)",
         quantity="at bomb release the tightly coupled 10 nmi/h system beats the loosely coupled 1 nmi/h",
         published=True,
@@ -693,7 +675,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.4-ratio-printed",
-        paper="SP",
         locator="Sec. 2.6.4 (Fig. 2.9)",
         quantity="the printed helicopter error ratio 2750:192 exceeds the 10:1 characterisation ratio",
         published=10.0,
@@ -708,7 +689,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.4-2750-noise-only",
-        paper="SP",
         locator="Sec. 2.6.4 (Fig. 2.9)",
         quantity="10 nmi/h helicopter position error 19 min after GPS loss, if only random walks remained",
         published=printed("2750")[0],
@@ -727,7 +707,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.4-pointing-negligible",
-        paper="SP",
         locator="Sec. 2.6.4",
         quantity="without Doppler, the target-location error 8 km away equals the position error "
         "(pointing error negligible)",
@@ -747,7 +726,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.4-doppler-improves",
-        paper="SP",
         locator="Sec. 2.6.4 (Figs. 2.9-2.10)",
         quantity="Doppler ground-speed aiding reduces the target-location error for both grades",
         published=True,
@@ -761,7 +739,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.6.4-doppler-50pct",
-        paper="SP",
         locator="Sec. 2.6.4 (Fig. 2.10)",
         quantity="with Doppler aiding the 10 nmi/h target-location error is 50 % greater than the "
         "1 nmi/h one",
@@ -783,7 +760,6 @@ CLAIMS = [
         printed="The initial errors in position, velocity, and misalignment in fact have very little "
         "effect on the performance of the system as long as it operates for a significant "
         "time.",
-        paper="SP",
         locator="Sec. 2.3",
         quantity="the initial errors in position, velocity and misalignment have very little effect on "
         "the performance of the system (after a significant time)",
@@ -803,7 +779,6 @@ CLAIMS = [
         id="SP-sec2.4-misalignment-not-critical",
         printed="Its values are not critical for the analysis because improvements in alignment due to "
         "in-flight maneuvers soon dominate the navigation results.",
-        paper="SP",
         locator="Sec. 2.4 (after Table 2.5)",
         quantity="the initial misalignment's values are not critical, because in-flight alignment soon "
         "dominates",
@@ -820,7 +795,6 @@ CLAIMS = [
     Claim(
         id="SP-tab2.4-clock-offset",
         printed="GPS user clock: Initial offset 5000 ms",
-        paper="SP",
         locator="Table 2.4 (GPS user clock, initial offset '5000 ms')",
         quantity="no result depends on the unit of Table 2.4's initial clock offset",
         published=True,
@@ -839,7 +813,6 @@ CLAIMS = [
         printed="The resulting flight profile has high levels of acceleration and jerk, which caused "
         "occasional momentary loss of carrier lock. No effect on mission performance can be "
         "seen.",
-        paper="SP",
         locator="Sec. 2.6.4",
         quantity="occasional momentary loss of carrier lock has no visible effect on mission performance",
         published=True,
@@ -858,7 +831,6 @@ CLAIMS = [
         id="SP-sec2.8-coupling-short-term",
         printed="For short time intervals after GPS loss, coupling architectures can make a difference "
         "in performance (because they affect calibration and alignment quality).",
-        paper="SP",
         locator="Sec. 2.8, assertion 4",
         quantity="for short intervals after GPS loss coupling architectures make a difference (they "
         "affect calibration and alignment), which fades in the long run",

@@ -167,7 +167,6 @@ def _tie_tolerance(text: str) -> tuple[float, Tolerance]:
 ERRATA = [
     Erratum(
         id="SP-E-misalignment-sign",
-        paper="SP",
         kind="convention",
         basis="text-only",
         locator=r"Sec. 2.5, $3\times 6$ sensitivity matrix",
@@ -187,7 +186,6 @@ ERRATA = [
     ),
     Erratum(
         id="SP-E-tab2.6-columns",
-        paper="SP",
         kind="units",
         basis="text-only",
         locator="Table 2.6 and the text after it",
@@ -210,7 +208,6 @@ def _col3_claim(g: str) -> Claim:
     value, tol = _tie_tolerance(TAB26_COL3_G[g])
     return Claim(
         id=f"SP-tab2.6-col3-{g}",
-        paper="SP",
         locator="Table 2.6, column 3",
         quantity=f"acceleration seen by the {g} nmi/h aided loop for a 6-g step",
         published=value,
@@ -228,7 +225,6 @@ def _col4_claim(g: str) -> Claim:
     value, tol = printed(TAB26_COL4[g])
     return Claim(
         id=f"SP-tab2.6-col4-{g}",
-        paper="SP",
         locator="Table 2.6, column 4",
         quantity=f"required natural frequency of the {g} nmi/h aided carrier loop",
         published=value,
@@ -247,7 +243,6 @@ def _col2_claim(g: str) -> Claim:
     value, tol = printed(TAB26_COL2_PPM[g])
     return Claim(
         id=f"SP-tab2.6-col2-{g}",
-        paper="SP",
         locator="Table 2.6, column 2",
         quantity=f"90 % residual scale-factor and misalignment error, {g} nmi/h IMU",
         published=value,
@@ -276,7 +271,6 @@ CLAIMS = [
     *(_col4_claim(g) for g in GRADES),
     Claim(
         id="SP-tab2.6-unaided",
-        paper="SP",
         locator="Table 2.6, row 'No inertial aiding'",
         quantity="natural frequency of the unaided carrier loop (6-g step, 90 deg)",
         published=_w18[0],
@@ -289,7 +283,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-eq2.u7-worked-example",
-        paper="SP",
         locator="Sec. 2.5, worked example after Table 2.6",
         quantity="aided natural frequency of the 10 nmi/h system, $\\sqrt{0.011\\,\\mathrm{g} / "
         "6\\,\\mathrm{g}} \\times 18$ rad/s",
@@ -304,7 +297,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.5-right-factor",
-        paper="SP",
         locator="Sec. 2.5, covariance of the residual acceleration",
         quantity="the printed right factor of the covariance is the transpose of the printed "
         "$3\\times 6$ matrix",
@@ -321,7 +313,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.5-H-sign",
-        paper="SP",
         locator=r"Sec. 2.5, $3\times 6$ sensitivity matrix",
         quantity="the printed $3\\times 6$ matrix is the sensitivity of "
         "$\\operatorname{diag}(sf)\\, a + [\\delta\\theta \\times]\\, a$ for $a = (1,1,1)$",

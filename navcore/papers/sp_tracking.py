@@ -130,7 +130,6 @@ _LSIM_TOL = Tolerance(
 ERRATA = [
     Erratum(
         id="SP-E-phase-conversion",
-        paper="SP",
         kind="units",
         basis="computed",
         locator="Sec. 2.5, Fig. 2.1",
@@ -148,7 +147,6 @@ ERRATA = [
     ),
     Erratum(
         id="SP-E-exponent-t2",
-        paper="SP",
         kind="typography",
         basis="text-only",
         locator="Sec. 2.5, equation above Fig. 2.1",
@@ -169,7 +167,6 @@ ERRATA = [
 CLAIMS = [
     Claim(
         id="SP-fig2.1-peak",
-        paper="SP",
         locator="Fig. 2.1",
         quantity="peak phase error of the third-order loop, 6-g step, 17.67 rad/s (one cycle per foot)",
         published=_peak90[0],
@@ -186,7 +183,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-fig2.1-omega0",
-        paper="SP",
         locator="Fig. 2.1",
         quantity="natural frequency keeping the 6-g step's peak error at 90 deg (one cycle per foot)",
         published=_omega[0],
@@ -202,7 +198,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-fig2.1-peak-code300",
-        paper="SP",
         locator="Sec. 2.5, Fig. 2.1",
         quantity="peak phase error at 17.67 rad/s with the stated conversion (360 deg per 300 m code length)",
         published=_peak90[0],
@@ -217,7 +212,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-fig2.1-peak-L1",
-        paper="SP",
         locator="Sec. 2.5, Fig. 2.1",
         quantity="peak L1 carrier-phase error at 17.67 rad/s for a 6-g step (physical conversion, 0.1903 m)",
         published=_peak90[0],
@@ -233,7 +227,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-eq2.u1-closed-form",
-        paper="SP",
         locator="Sec. 2.5, equation above Fig. 2.1",
         quantity="the closed form (exponent read as $-\\omega_0 t/2$) is the third-order loop's step error",
         published=True,
@@ -248,7 +241,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-eq2.1-keeps-peak",
-        paper="SP",
         locator="Eq. (2.1)",
         quantity="scaling $\\omega_0$ by the square root of the step ratio keeps the peak error unchanged",
         published=True,
@@ -262,7 +254,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.5-jerk-6g",
-        paper="SP",
         locator="Sec. 2.5",
         quantity="acceleration reached by a 10-g/s jerk lasting 0.6 s",
         published=_g6[0],
@@ -277,7 +268,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.5-step-vs-jerk",
-        paper="SP",
         locator="Sec. 2.5",
         quantity="the 6-g step gives a larger peak error than the 10-g/s, 0.6-s jerk (more stringent)",
         published=True,
@@ -293,7 +283,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.5-half-chip-ns",
-        paper="SP",
         locator="Sec. 2.5",
         quantity="half a code chip, in nanoseconds (code loss-of-lock threshold)",
         published=50.0,
@@ -307,7 +296,6 @@ CLAIMS = [
     ),
     Claim(
         id="SP-sec2.5-loose-carrier-5.83Hz",
-        paper="SP",
         locator="Sec. 2.5",
         quantity="loosely coupled receiver's third-order carrier-loop bandwidth",
         published=5.83,

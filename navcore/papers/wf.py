@@ -1066,7 +1066,6 @@ def flexible_mode_is_several() -> bool:
 ERRATA = [
     Erratum(
         id="WF-E1-eq13-innovation",
-        paper="WF",
         kind="typography",
         basis="text-only",
         locator="Eq. (13)",
@@ -1081,7 +1080,6 @@ ERRATA = [
     ),
     Erratum(
         id="WF-E2-eq24-PN",
-        paper="WF",
         kind="units",
         basis="text-only",
         locator="Eq. (24)",
@@ -1097,7 +1095,6 @@ ERRATA = [
     ),
     Erratum(
         id="WF-E3-eq20-PNG",
-        paper="WF",
         kind="typography",
         basis="text-only",
         locator="Eq. (20)",
@@ -1110,7 +1107,6 @@ ERRATA = [
     ),
     Erratum(
         id="WF-E4-remark2-correlated",
-        paper="WF",
         kind="unstated-assumption",
         basis="text-only",
         locator="Remark (ii) after the Theorem",
@@ -1155,7 +1151,6 @@ CLAIMS = [
     # Section II
     Claim(
         id="WF-eq3-normal",
-        paper="WF",
         locator="Eq. (3)",
         quantity="the Gauss-Newton solution satisfies the weighted LS normal equation",
         published=True,
@@ -1172,7 +1167,6 @@ CLAIMS = [
     ),
     Claim(
         id="WF-eq6-linear",
-        paper="WF",
         locator="Eq. (6)",
         quantity="first-order location error agrees with the nonlinear estimate (within 1 %)",
         published=True,
@@ -1187,7 +1181,6 @@ CLAIMS = [
     ),
     Claim(
         id="WF-eq6-montecarlo",
-        paper="WF",
         locator="Eq. (6)",
         quantity="Eq. (6) predicts the Monte Carlo spread of the nonlinear estimator (each axis within the "
         "sampling error)",
@@ -1204,7 +1197,6 @@ CLAIMS = [
     Claim(
         id="WF-eq6-model-error-acts-like-noise",
         aliases=("WF-c1-additive",),
-        paper="WF",
         locator="Sec. II, after Eq. (6)",
         quantity="a signal-model error moves the estimate as much as the same measurement error",
         published=True,
@@ -1221,7 +1213,6 @@ CLAIMS = [
     Claim(
         id="WF-sec3-tip-position-vs-range",
         aliases=("WF-c2-position",),
-        paper="WF",
         locator="Sec. III",
         quantity="wing-tip position perturbation relative to range",
         published=_c2,
@@ -1238,7 +1229,6 @@ CLAIMS = [
     Claim(
         id="WF-sec3-tip-position-vs-ins",
         aliases=("WF-c3-position-ins",),
-        paper="WF",
         locator="Sec. III",
         quantity="wing-tip position perturbation relative to the best INS/GPS position accuracy",
         published=_c3,
@@ -1256,7 +1246,6 @@ CLAIMS = [
     Claim(
         id="WF-sec3-flexible-mode-velocity",
         aliases=("WF-c4-flexible-mode",),
-        paper="WF",
         locator="Sec. III",
         quantity="a first flexible mode of several hertz gives an aperture velocity amplitude of several "
         "m/s (3 to 9 m/s, the reading of 'several' in the ledger's table of prose words)",
@@ -1277,7 +1266,6 @@ CLAIMS = [
     Claim(
         id="WF-sec3-velocity-vs-nominal",
         aliases=("WF-c5-velocity-nominal",),
-        paper="WF",
         locator="Sec. III",
         quantity="velocity perturbation relative to the nominal velocity",
         published=1.0,
@@ -1292,7 +1280,6 @@ CLAIMS = [
     Claim(
         id="WF-sec3-velocity-vs-ins",
         aliases=("WF-c6-velocity-ins",),
-        paper="WF",
         locator="Sec. III",
         quantity="velocity perturbation relative to the best INS/GPS velocity accuracy",
         published=_c6,
@@ -1307,7 +1294,6 @@ CLAIMS = [
     ),
     Claim(
         id="WF-eq8-norm",
-        paper="WF",
         locator="Eq. (8)",
         quantity="$\\|\\partial f/\\partial \\mathbf{v}\\| = f_0/c$ for every geometry",
         published=True,
@@ -1320,7 +1306,6 @@ CLAIMS = [
     ),
     Claim(
         id="WF-eq9-bound",
-        paper="WF",
         locator="Eq. (9)",
         quantity="$\\|\\partial f/\\partial \\mathbf{p}\\| \\le (f_0/c)\\, 2\\|\\mathbf{v}\\|/R$ for every "
         "geometry",
@@ -1337,7 +1322,6 @@ CLAIMS = [
     Claim(
         id="WF-eq9-velocity-position-ratio",
         aliases=("WF-c7-ratio",),
-        paper="WF",
         locator="Sec. III, after Eq. (9)",
         quantity="$R / (2 \\|\\mathbf{v}\\|)$, velocity-to-position sensitivity ratio",
         published=100.0,
@@ -1352,7 +1336,6 @@ CLAIMS = [
     Claim(
         id="WF-eq9-velocity-error-dominates",
         aliases=("WF-c8-effective",),
-        paper="WF",
         locator="Sec. III, after Eq. (9)",
         quantity="a 1 m/s velocity error changes the modelled frequency at least 100 times as much as a "
         "1 m position error (smallest "
@@ -1377,7 +1360,6 @@ CLAIMS = [
     # Section IV.A-C
     Claim(
         id="WF-eq13-innovation",
-        paper="WF",
         locator="Eq. (13)",
         quantity="the innovation of the printed filter, $y_a(k) - \\hat x_{DL}(k/k-1)$, is a velocity "
         "residual (a difference of like quantities), as a Kalman filter of Eq. (12) needs",
@@ -1399,7 +1381,6 @@ CLAIMS = [
     ),
     Claim(
         id="WF-eq20-PNG",
-        paper="WF",
         locator="Eq. (20)",
         quantity="the printed joint matrix (block (2,3) = $P_{NG}$) is the covariance of the stacked errors",
         published=True,
@@ -1420,7 +1401,6 @@ CLAIMS = [
     Claim(
         id="WF-eq19-outage-infinite-covariance",
         aliases=("WF-c11-outage",),
-        paper="WF",
         locator="Sec. IV.C, after Eq. (19)",
         quantity="an outage is handled by setting its covariance to infinity",
         published=True,
@@ -1434,7 +1414,6 @@ CLAIMS = [
     Claim(
         id="WF-eq19-weighted-least-squares",
         aliases=("WF-c12-wls",),
-        paper="WF",
         locator="Sec. IV.C, after Eq. (19)",
         quantity="Eq. (18) is the solution of a weighted least-squares cost",
         published=True,
@@ -1450,7 +1429,6 @@ CLAIMS = [
     ),
     Claim(
         id="WF-thm-bound",
-        paper="WF",
         locator="Theorem, Eqs. (21)-(23)",
         quantity="the matrix bound (21) and both inequalities of (23) hold for any correlation",
         published=True,
@@ -1464,7 +1442,6 @@ CLAIMS = [
     ),
     Claim(
         id="WF-thm-montecarlo",
-        paper="WF",
         locator="Theorem, Eqs. (21)-(23)",
         quantity="sampled fused errors stay below the bounds (21) and (23) and match Eq. (20), within "
         "sampling error",
@@ -1482,7 +1459,6 @@ CLAIMS = [
     ),
     Claim(
         id="WF-rem1-weights",
-        paper="WF",
         locator="Remark (i)",
         quantity="$k_i = \\sum_j \\sqrt{\\sigma_j}/\\sqrt{\\sigma_i}$ is feasible",
         published=True,
@@ -1496,7 +1472,6 @@ CLAIMS = [
     ),
     Claim(
         id="WF-rem2-isotropic",
-        paper="WF",
         locator="Remark (ii)",
         quantity="the bound is exact for completely correlated errors (isotropic covariances)",
         published=True,
@@ -1509,7 +1484,6 @@ CLAIMS = [
     ),
     Claim(
         id="WF-rem2-one-small",
-        paper="WF",
         locator="Remark (ii)",
         quantity="the bound tends to be exact when one sensor error is much smaller",
         published=True,
@@ -1523,7 +1497,6 @@ CLAIMS = [
     ),
     Claim(
         id="WF-rem2-generic",
-        paper="WF",
         locator="Remark (ii)",
         quantity="the bound tends to be exact for completely correlated errors, general (non-commuting) "
         "covariances",
@@ -1544,7 +1517,6 @@ CLAIMS = [
     # Section IV.D
     Claim(
         id="WF-eq25-fL1c",
-        paper="WF",
         locator="Sec. IV.D",
         quantity="$f_{L1} / c$",
         published=_fl1,
@@ -1562,7 +1534,6 @@ CLAIMS = [
     Claim(
         id="WF-sec4d-sigma-g-from-gps-doppler",
         aliases=("WF-c13-sigmaG",),
-        paper="WF",
         locator="Sec. IV.D",
         quantity="$\\sigma_G$ = 1 Hz is consistent with the GPS velocity accuracy from Doppler: the Doppler "
         "noise equivalent to that accuracy per line of sight",
@@ -1583,7 +1554,6 @@ CLAIMS = [
     Claim(
         id="WF-sec4d-sigma-l-high-resolution",
         aliases=("WF-c13-sigmaL-high-res",),
-        paper="WF",
         locator="Sec. IV.D",
         quantity="$\\sigma_L = 200 \\sigma_a$ at $\\sigma_a$ = 10 µm/s²",
         published=_sL_lo,
@@ -1600,7 +1570,6 @@ CLAIMS = [
     Claim(
         id="WF-sec4d-sigma-l-medium-resolution",
         aliases=("WF-c13-sigmaL-medium-res",),
-        paper="WF",
         locator="Sec. IV.D",
         quantity="$\\sigma_L = 200 \\sigma_a$ at $\\sigma_a$ = 10 mm/s²",
         published=_sL_hi,
@@ -1616,7 +1585,6 @@ CLAIMS = [
     ),
     Claim(
         id="WF-eq24-PN",
-        paper="WF",
         locator="Eq. (24)",
         quantity="$P_N P_N^T = \\sigma_N^2 I$ is consistent with Eq. (11): the "
         "literal reading gives the same "
@@ -1642,7 +1610,6 @@ CLAIMS = [
     Claim(
         id="WF-fig1-improvement-at-100ug",
         aliases=("WF-c14-60dB",),
-        paper="WF",
         locator="Sec. IV.D, Fig. 1",
         quantity="reduction of the local velocity error with a 100 µg accelerometer at $\\sigma_T$ = 2 m/s, "
         "read off Fig. 1",
@@ -1662,7 +1629,6 @@ CLAIMS = [
     Claim(
         id="WF-sec4d-improvement-factor",
         aliases=("WF-c15-factor",),
-        paper="WF",
         locator="Sec. IV.D",
         quantity="accuracy improvement factor $\\sigma_{DN} / \\sigma_D$ at 100 µg, $\\sigma_T$ = 2 m/s",
         published=_c15f,
@@ -1679,7 +1645,6 @@ CLAIMS = [
     Claim(
         id="WF-sec4d-fused-velocity-accuracy",
         aliases=("WF-c15-sigmaD",),
-        paper="WF",
         locator="Sec. IV.D",
         quantity="improved local velocity accuracy at 100 µg, $\\sigma_T$ = 2 m/s",
         published=_c15,
@@ -1694,7 +1659,6 @@ CLAIMS = [
     Claim(
         id="WF-sec4d-unfiltered-velocity-accuracy",
         aliases=("WF-c17-unfiltered",),
-        paper="WF",
         locator="Sec. IV.D",
         quantity="local velocity accuracy without filtering at 100 µg",
         published=_c17,
@@ -1709,7 +1673,6 @@ CLAIMS = [
     ),
     Claim(
         id="WF-fig1-slope",
-        paper="WF",
         locator="Fig. 1",
         quantity="the $\\sigma_T$ = 2 m/s curve rises 20 dB per decade of accelerometer resolution",
         published=True,
@@ -1724,7 +1687,6 @@ CLAIMS = [
     ),
     Claim(
         id="WF-fig1-order",
-        paper="WF",
         locator="Fig. 1",
         quantity="larger lever-arm uncertainty gives more improvement: the curves $\\sigma_T$ = 2 below 0.2 "
         "below 0 m/s over the stated range",
@@ -1742,7 +1704,6 @@ CLAIMS = [
     Claim(
         id="WF-fig2-gps-adds-little",
         aliases=("WF-c18-gps-little",),
-        paper="WF",
         locator="Sec. IV.D, Fig. 2",
         quantity="GPS adds little to the accelerometer over the stated range (less than a noticeable change)",
         published=True,
@@ -1759,7 +1720,6 @@ CLAIMS = [
     Claim(
         id="WF-sec4d-gps-noticeable-only-when-severe",
         aliases=("WF-c19-gps-noticeable",),
-        paper="WF",
         locator="Sec. IV.D",
         quantity="GPS is noticeable only with severe $\\sigma_T$, a poor accelerometer and 3 satellites",
         published=True,
@@ -1775,7 +1735,6 @@ CLAIMS = [
     Claim(
         id="WF-fig2-three-vs-one-satellite",
         aliases=("WF-c20-three-vs-one",),
-        paper="WF",
         locator="Sec. IV.D, Fig. 2",
         quantity="3 satellites virtually identical to 1 at $\\sigma_T$ = 0: the two "
         "improvement curves closer "
@@ -1794,7 +1753,6 @@ CLAIMS = [
     ),
     Claim(
         id="WF-fig2-order",
-        paper="WF",
         locator="Sec. IV.D, Fig. 2",
         quantity="more GPS satellites never give less improvement (3 satellites over 1, 1 over none, any "
         "$\\sigma_T$, over the stated $\\sigma_a$ range), as far as Fig. 2 can show",

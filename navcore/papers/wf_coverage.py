@@ -164,7 +164,6 @@ _rate, _rate_tol = printed("50", why="'a 50 Hz measurement update rate' (axis la
 CLAIMS = [
     Claim(
         id="WF-eq11-covariance",
-        paper="WF",
         locator="Eq. (11)",
         quantity="$P_{DN} = \\tau P_N \\tau^T + Q_T$ is the covariance of the Eq. (10) error",
         published=True,
@@ -180,7 +179,6 @@ CLAIMS = [
     ),
     Claim(
         id="WF-eq11-large-QT",
-        paper="WF",
         locator="Sec. IV.B.1, after Eq. (11)",
         quantity="with a large $Q_T$, $P_{DN}$ is large regardless of $P_N$: $\\sigma_{DN} / \\sigma_T$ at "
         "$\\sigma_T$ = 2 m/s hardly varies between $\\sigma_N$ = 0, 0.02 and 0.2 m/s",
@@ -196,7 +194,6 @@ CLAIMS = [
     ),
     Claim(
         id="WF-eq14-three-factors",
-        paper="WF",
         locator="Sec. IV.B.2, after Eq. (14)",
         quantity="the local accuracy depends on $Q_a$, $R_L$ and the update rate: doubling each of $Q_a$, "
         "$R_L$, $T_s$ in turn raises the steady-state $\\sqrt{P_{DL}(k/k)}$",
@@ -214,7 +211,6 @@ CLAIMS = [
     ),
     Claim(
         id="WF-rem2-weaker-correlation",
-        paper="WF",
         locator="Remark (ii)",
         quantity="the bound grows more conservative as the correlation weakens: the ratio of the bound's "
         "trace to the true trace increases strictly as $\\rho$ falls from 1 to 0, and is 1 at $\\rho = 1$",
@@ -230,7 +226,6 @@ CLAIMS = [
     ),
     Claim(
         id="WF-eq16-17-information",
-        paper="WF",
         locator="Eqs. (16)-(17)",
         quantity="the single-step Kalman update of Eq. (16) gives the covariance of Eq. (17): $(I - K H_G) "
         "P_{DL} = [P_{DL}^{-1} + H_G^T R_G^{-1} H_G]^{-1}$",
@@ -249,7 +244,6 @@ CLAIMS = [
     Claim(
         id="WF-fig1-update-rate-50hz",
         aliases=("WF-c21-50Hz",),
-        paper="WF",
         locator="Sec. IV.D, axis label of Figs. 1-2",
         quantity="the '50 Hz measurement update rate' of the axis label is $1/T_s$ of the parameter list",
         published=_rate,
@@ -264,7 +258,6 @@ CLAIMS = [
     Claim(
         id="WF-sec4d-mems-ten-times-more-sensitive",
         aliases=("WF-c22-mems-sensitive",),
-        paper="WF",
         locator="Sec. IV.D, after Fig. 2",
         quantity="MEMS devices an order of magnitude more sensitive than 100 µg: the high-resolution end "
         "(10 µm/s²) of the range Sec. IV.D lists from [4] is at least that much finer",
@@ -283,7 +276,6 @@ CLAIMS = [
     Claim(
         id="WF-sec5-aperture-errors-negligible",
         aliases=("WF-c23-negligible",),
-        paper="WF",
         locator="Sec. V",
         quantity="the processing reduces the aperture errors' impact to a negligible level: the fused bound "
         "$\\sigma_D$ at 100 µg and $\\sigma_T$ = 2 m/s is below the on-board navigation accuracy $\\sigma_N$",
