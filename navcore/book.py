@@ -26,10 +26,10 @@ from navcore import figures as _figures
 from navcore import ledger
 from navcore.claims.core import STATUSES
 from navcore.formatting import estimate_text, format_number, math_spans, number_formatter, tidy_numbers
+from navcore.ledger import text as ledger_text
 from navcore.ledger.interactive import InteractiveLedger
 from navcore.ledger.summary import findings_phrase
 from navcore.ledger.tables import CountsTable, ErrataList, FindingsTable, LedgerTable, latex_table
-from navcore.ledger.text import _math_breaks
 
 __all__ = [
     "Markdown",
@@ -580,8 +580,8 @@ def _tidy_html(table_html: str, *, math_breaks: bool = False) -> str:
     the table is left alone.
 
     With ``math_breaks`` (a table of text), a long formula may break across lines where TeX
-    would break it in running text (:func:`_math_breaks`): its pieces are set one after the
-    other, joined by a line-break opportunity (``<wbr>``).
+    would break it in running text (:func:`~navcore.ledger.text.math_breaks`): its pieces are
+    set one after the other, joined by a line-break opportunity (``<wbr>``).
 
     Examples
     --------
@@ -602,7 +602,7 @@ def _tidy_html(table_html: str, *, math_breaks: bool = False) -> str:
             return piece.replace("<", "&lt;").replace(">", "&gt;")
 
         def formula(tex: str) -> str:
-            pieces = _math_breaks(tex) if math_breaks else [tex]
+            pieces = ledger_text.math_breaks(tex) if math_breaks else [tex]
             return "<wbr>".join(math.format(bare(piece)) for piece in pieces)
 
         pieces = math_spans(text)
@@ -716,7 +716,7 @@ def _phone_layout(frame: Any) -> str:
 
 class _TextTable(Table):
     """A table of text: a long formula in a cell may break where TeX would break it
-    (:func:`_math_breaks`), so that its column is not as wide as the whole formula."""
+    (:func:`~navcore.ledger.text.math_breaks`), so that its column is not as wide as the whole formula."""
 
     def _repr_html_(self) -> str:
         return _tidy_html(_styler_html(self.styler), math_breaks=True)

@@ -249,9 +249,9 @@ def test_table_renders_html_and_markdown():
 
 def test_latex_escaping_of_ledger_text():
     """Oracle: LaTeX's ten special characters written out by hand."""
-    from navcore.ledger.text import _tex_escape
+    from navcore.ledger.text import tex_escape
 
-    assert _tex_escape("50 % & $x_1$ #2 {a} ~ ^ \\") == (
+    assert tex_escape("50 % & $x_1$ #2 {a} ~ ^ \\") == (
         r"50 \% \& \$x\_1\$ \#2 \{a\} \textasciitilde{} \textasciicircum{} \textbackslash{}"
     )
 

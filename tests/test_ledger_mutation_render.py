@@ -808,14 +808,14 @@ def test_printed_cells():
 
 def test_tex_breakable_and_widths():
     from navcore.ledger.tables import _min_pt, _text_pieces, _word_pt
-    from navcore.ledger.text import _tex_breakable
+    from navcore.ledger.text import tex_breakable
 
-    assert _tex_breakable("interpreted") == "interpreted"
-    assert _tex_breakable("KZLsec36headingX") == r"KZLsec3\allowbreak{}6headin\allowbreak{}gX"
-    assert _tex_breakable("SP-a.b/c_d") == r"SP-\allowbreak{}a.\allowbreak{}b/\allowbreak{}c\_\allowbreak{}d"
-    assert _tex_breakable("abcdefghijklmnop") == r"abcdefg\allowbreak{}hijklmn\allowbreak{}op"  # 16 letters
-    assert _tex_breakable("abcdefghijklmn") == "abcdefghijklmn"  # 14 letters: whole
-    assert _tex_breakable("a1b2c3d4e5") == "a1b2c3d4e5"  # 10 characters: whole
+    assert tex_breakable("interpreted") == "interpreted"
+    assert tex_breakable("KZLsec36headingX") == r"KZLsec3\allowbreak{}6headin\allowbreak{}gX"
+    assert tex_breakable("SP-a.b/c_d") == r"SP-\allowbreak{}a.\allowbreak{}b/\allowbreak{}c\_\allowbreak{}d"
+    assert tex_breakable("abcdefghijklmnop") == r"abcdefg\allowbreak{}hijklmn\allowbreak{}op"  # 16 letters
+    assert tex_breakable("abcdefghijklmn") == "abcdefghijklmn"  # 14 letters: whole
+    assert tex_breakable("a1b2c3d4e5") == "a1b2c3d4e5"  # 10 characters: whole
     assert _word_pt("ab") == 8.0 and _word_pt("AB") == 10.0 and _word_pt("a%&@") == 19.0
     assert _word_pt("MW") == 10.0 and _word_pt("ab", bold=True) == pytest.approx(8.8)
     assert _text_pieces("x $K_1$ y") == [(False, "x "), (True, "K_1"), (False, " y")]

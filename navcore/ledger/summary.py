@@ -28,6 +28,7 @@ from navcore.formatting import unit_text
 from navcore.ledger.text import format_value, published_text
 
 __all__ = [
+    "KIND_SHORT",
     "assumed_inputs_frame",
     "convention_inputs_frame",
     "count_table",
@@ -184,7 +185,7 @@ def findings_count_table(errata: Sequence[Erratum]) -> list[dict[str, Any]]:
 
 
 #: Short column heads of the erratum kinds for the terminal.
-_KIND_SHORT = {
+KIND_SHORT = {
     "typography": "typo",
     "units": "units",
     "convention": "conv",
@@ -225,8 +226,8 @@ def findings_text(evals: Sequence[Evaluation], errata: Sequence[Erratum]) -> str
       SP-E7-doc (typography; Eq. (1)): SP-doc-sum reproduced
     """
     lines = [f"findings (errata): {len(errata)}, by paper, basis and kind"]
-    head = ["paper", "basis", *(_KIND_SHORT[k] for k in ERRATUM_KINDS), "total"]
-    widths = [6, 9, *(max(len(_KIND_SHORT[k]), 3) for k in ERRATUM_KINDS), 5]
+    head = ["paper", "basis", *(KIND_SHORT[k] for k in ERRATUM_KINDS), "total"]
+    widths = [6, 9, *(max(len(KIND_SHORT[k]), 3) for k in ERRATUM_KINDS), 5]
     lines.append("  ".join(h.ljust(w) for h, w in zip(head, widths, strict=True)).rstrip())
     for r in findings_count_table(errata):
         cells = [r["paper"], r["basis"], *(str(r[k]) for k in ERRATUM_KINDS), str(r["total"])]

@@ -41,8 +41,6 @@ from navcore.ledger.text import (
     _reproduced_text,
     _status_class,
     _status_colour,
-    _tex_breakable,
-    _tex_escape,
     _tolerance_text,
     _value_html,
     claim_group,
@@ -51,6 +49,8 @@ from navcore.ledger.text import (
     html_text,
     published_text,
     quote_below,
+    tex_breakable,
+    tex_escape,
     tex_text,
 )
 from navcore.provenance import BuildProvenance, build_provenance
@@ -422,13 +422,13 @@ def latex_table(head: Sequence[str], body: Sequence[Sequence[str]]) -> str:
 
     def text_cell(text: str) -> str:  # words escaped, $...$ set as math
         return "".join(
-            fit_math(piece) if is_math else _tex_escape(piece).replace("\u200b", r"\allowbreak{}")
+            fit_math(piece) if is_math else tex_escape(piece).replace("\u200b", r"\allowbreak{}")
             for is_math, piece in _text_pieces(text)
         )
 
     def cell(text: str, j: int) -> str:
         if numeric[j]:
-            text = _tex_escape(text)
+            text = tex_escape(text)
             return rf"\mbox{{{text}}}" if text else text
         text = text_cell(text)
         if text.startswith("["):  # after the previous row's \\ a "[" would read as its option
@@ -838,20 +838,20 @@ class LedgerTable:
                 what = tex_text(c.quantity)
                 where = _locator_detail(c.locator, g.heading)
                 if where:
-                    what += " (" + _tex_escape(where) + ")"
+                    what += " (" + tex_escape(where) + ")"
                 if self.show_notes:
                     own = _details_tex(g.own(index))
-                    what += r"\newline{}{\scriptsize \texttt{" + _tex_breakable(c.id) + "}"
+                    what += r"\newline{}{\scriptsize \texttt{" + tex_breakable(c.id) + "}"
                     what += (". " + own if own else "") + "}"
                 colour = _status_colour(e.status).lstrip("#").upper()
-                verdict = rf"\cellcolor[HTML]{{{colour}}}" + _tex_breakable(e.status)
+                verdict = rf"\cellcolor[HTML]{{{colour}}}" + tex_breakable(e.status)
                 if not e.passes:
                     verdict += r" \textbf{(check fails)}"
                 if c.erratum:
-                    verdict += r"\newline{}{\scriptsize " + _tex_breakable(c.erratum) + "}"
+                    verdict += r"\newline{}{\scriptsize " + tex_breakable(c.erratum) + "}"
                 if _agreeing_reading_text(e):
                     verdict += r"\newline{}{\scriptsize " + tex_text(_agreeing_reading_text(e)) + "}"
-                verdict += r"\newline{}{\scriptsize\itshape " + _tex_escape(str(c.kind)) + "}"
+                verdict += r"\newline{}{\scriptsize\itshape " + tex_escape(str(c.kind)) + "}"
                 printed = _printed_text(e)
                 below = quote_below(printed)
                 cells = [
@@ -1040,31 +1040,31 @@ class ErrataList:
                 r"\par\medskip\noindent\textit{" + _BASIS_HEADINGS[basis] + f" ({len(items)})" + "}\\par"
             )
             if basis == "text-only" and self.caveat:
-                out.append(r"\noindent{}" + _tex_escape(TEXT_ONLY_CAVEAT) + r"\par")
+                out.append(r"\noindent{}" + tex_escape(TEXT_ONLY_CAVEAT) + r"\par")
             for e in items:
                 claims_tex = (
                     "; ".join(
                         r"\texttt{"
-                        + _tex_breakable(c)
+                        + tex_breakable(c)
                         + "}"
-                        + (f" ({_tex_escape(self.status[c])})" if c in self.status else "")
+                        + (f" ({tex_escape(self.status[c])})" if c in self.status else "")
                         for c in e.claims
                     )
                     or "none"
                 )
                 out += [
                     r"\par\medskip\noindent\textbf{"
-                    + _tex_breakable(e.id)
+                    + tex_breakable(e.id)
                     + "} ("
-                    + _tex_escape(e.paper)
+                    + tex_escape(e.paper)
                     + ", "
                     + tex_text(e.locator)
                     + r")\nopagebreak",
                     r"\begin{itemize}",
                     r"\item \textit{Basis:} "
-                    + _tex_escape(e.basis)
+                    + tex_escape(e.basis)
                     + r"; \textit{kind:} "
-                    + _tex_escape(e.kind),
+                    + tex_escape(e.kind),
                     r"\item \textit{Printed:} " + tex_text(e.printed),
                     r"\item \textit{The book finds:} " + tex_text(e.finding),
                     r"\item \textit{Evidence:} " + tex_text(e.evidence),

@@ -31,9 +31,12 @@ __all__ = [
     "claim_group",
     "format_value",
     "html_text",
+    "math_breaks",
     "published_text",
     "quote_math",
     "quote_text",
+    "tex_breakable",
+    "tex_escape",
     "tex_text",
 ]
 
@@ -150,22 +153,48 @@ _TEX_SPECIAL = {
 }
 
 
-def _tex_escape(text: str) -> str:
-    """Escape LaTeX's special characters (the PDF engine is XeLaTeX: Unicode passes)."""
+def tex_escape(text: str) -> str:
+    r"""Escape LaTeX's special characters (the PDF engine is XeLaTeX: Unicode passes).
+
+    Parameters
+    ----------
+    text : str
+        Plain text; a newline becomes a space.
+
+    Returns
+    -------
+    str
+        The text with ``\ & % $ # _ { } ~ ^`` written as LaTeX sets them literally.
+
+    Examples
+    --------
+    >>> print(tex_escape("50 % of R&D_1"))
+    50 \% of R\&D\_1
+    """
     return "".join(_TEX_SPECIAL.get(ch, ch) for ch in text.replace("\n", " "))
 
 
-def _tex_breakable(text: str) -> str:
+def tex_breakable(text: str) -> str:
     """Escaped text that may break after ``-``, ``.``, ``_`` and ``/``, inside a run of more than
     ten characters that is not a plain word (claim and erratum ids, locators with formulas), and
     inside a plain word only when it is longer than ``_LONG_WORD`` letters: a narrow table column
     never runs over, and the paper's words ("interpreted") stay whole.
 
+    Parameters
+    ----------
+    text : str
+        Plain text (escaped here with :func:`tex_escape`).
+
+    Returns
+    -------
+    str
+        The escaped text with ``\allowbreak{}`` at the places it may break.
+
     Examples
     --------
-    >>> "allowbreak" in _tex_breakable("interpreted")
+    >>> "allowbreak" in tex_breakable("interpreted")
     False
-    >>> _tex_breakable("KZLsec36headingX").count("allowbreak")
+    >>> tex_breakable("KZLsec36headingX").count("allowbreak")
     2
     """
     pieces = re.split(r"([-./_ ])", text)
@@ -174,7 +203,7 @@ def _tex_breakable(text: str) -> str:
         if len(piece) > (_LONG_WORD if piece.isalpha() else 10):
             piece = "\x00".join(piece[i : i + 7] for i in range(0, len(piece), 7))
         out.append(piece)
-    escaped = _tex_escape("".join(out)).replace("\x00", r"\allowbreak{}")
+    escaped = tex_escape("".join(out)).replace("\x00", r"\allowbreak{}")
     for ch in ("-", ".", "/"):
         escaped = escaped.replace(ch, ch + r"\allowbreak{}")
     return escaped.replace(r"\_", r"\_\allowbreak{}")
@@ -230,7 +259,7 @@ _TEX_CLOSE = frozenset([")", "]", r"\}", r"\rangle", r"\rvert", r"\rVert"])
 _TEX_BARS = frozenset(["|", r"\|", r"\vert", r"\Vert"])
 
 
-def _math_breaks(tex: str, *, brackets: bool = False) -> list[str]:
+def math_breaks(tex: str, *, brackets: bool = False) -> list[str]:
     r"""A long inline formula cut where TeX may break it in a paragraph: after a relation or a
     binary operator at its outer level (not inside braces, brackets or bars; with
     ``brackets``, inside the outermost plain parentheses and brackets too, as TeX also may).
@@ -241,19 +270,31 @@ def _math_breaks(tex: str, *, brackets: bool = False) -> list[str]:
     operands; the pieces set side by side read as the whole formula. A formula of at most
     ``_LONG_FORMULA`` characters, and a last piece of fewer than three, stay whole.
 
+    Parameters
+    ----------
+    tex : str
+        The formula's TeX, without its ``$`` delimiters.
+    brackets : bool, optional
+        Also cut inside the outermost plain parentheses and brackets.
+
+    Returns
+    -------
+    list of str
+        The pieces, in order; one piece when the formula stays whole.
+
     Examples
     --------
-    >>> _math_breaks(r"\mathrm{Exp}_g = a^2/(2p)")
+    >>> math_breaks(r"\mathrm{Exp}_g = a^2/(2p)")
     ['\\mathrm{Exp}_g ={}', 'a^2/(2p)']
-    >>> _math_breaks(r"C/N_0 - 10\log_{10} B_L")
+    >>> math_breaks(r"C/N_0 - 10\log_{10} B_L")
     ['C/N_0 -{}', '10\\log_{10} B_L']
-    >>> _math_breaks(r"|\ln \mathrm{bound} - \ln p_f|"), _math_breaks("P_{DL} = 0.999")
+    >>> math_breaks(r"|\ln \mathrm{bound} - \ln p_f|"), math_breaks("P_{DL} = 0.999")
     (['|\\ln \\mathrm{bound} - \\ln p_f|'], ['P_{DL} = 0.999'])
-    >>> _math_breaks(r"\left| a - b \right| = -c + d^{-1}")
+    >>> math_breaks(r"\left| a - b \right| = -c + d^{-1}")
     ['\\left| a - b \\right| ={}', '-c +{}', 'd^{-1}']
-    >>> _math_breaks(r"[a(k-1) + b_1 + c_2]^{-1}", brackets=True)
+    >>> math_breaks(r"[a(k-1) + b_1 + c_2]^{-1}", brackets=True)
     ['[a(k-1) +{}', 'b_1 +{}', 'c_2]^{-1}']
-    >>> _math_breaks(r"E[x] = \begin{cases} a, & i = 0 \\ b, & i > 0 \end{cases}")
+    >>> math_breaks(r"E[x] = \begin{cases} a, & i = 0 \\ b, & i > 0 \end{cases}")
     ['E[x] ={}', '\\begin{cases} a, & i = 0 \\\\ b, & i > 0 \\end{cases}']
     """
     if len(re.sub(r"\s", "", tex)) <= _LONG_FORMULA:
@@ -353,7 +394,7 @@ def html_text(text: str, *, wide: int = 0) -> str:
 
 def _math_html(piece: str, wide: int) -> str:
     r"""A formula as MathJax inline math; one longer than ``wide`` characters (``wide`` > 0) in
-    a ``ledger-math-wide`` box, cut where TeX may break it (:func:`_math_breaks`).
+    a ``ledger-math-wide`` box, cut where TeX may break it (:func:`math_breaks`).
 
     Examples
     --------
@@ -378,8 +419,8 @@ def _math_parts(piece: str) -> list[str]:
     """
     return [
         q
-        for p in _math_breaks(piece)
-        for q in (_math_breaks(p, brackets=True) if len(re.sub(r"\s", "", p)) > _LONG_PIECE else [p])
+        for p in math_breaks(piece)
+        for q in (math_breaks(p, brackets=True) if len(re.sub(r"\s", "", p)) > _LONG_PIECE else [p])
     ]
 
 
@@ -603,7 +644,7 @@ def tex_text(text: str) -> str:
     >>> print(tex_text("50% of $K_1$"))
     50\% of $K_1$
     """
-    return "".join(f"${piece}$" if is_math else _tex_escape(piece) for is_math, piece in math_spans(text))
+    return "".join(f"${piece}$" if is_math else tex_escape(piece) for is_math, piece in math_spans(text))
 
 
 _GROUP_PATTERNS = (
@@ -934,13 +975,13 @@ def _printed_tex(text: str) -> str:
     text = _DISPLAY.sub(lambda m: "$" + _EQ_NUMBER.sub("", m.group(1)).strip() + "$", text)
     pieces = math_spans(text)
     if any(_latex_source(piece) for is_math, piece in pieces if not is_math):  # LaTeX without delimiters
-        return r"{\scriptsize\ttfamily " + _tex_breakable(text) + "}"
+        return r"{\scriptsize\ttfamily " + tex_breakable(text) + "}"
     out = []
     for is_math, piece in math_spans(_quote_markup(text)):
         out.append(
             fit_math(quote_math(piece))
             if is_math
-            else _emphasis(piece.replace("\\$", "$"), _tex_breakable, r"\textbf{{{}}}", r"\emph{{{}}}")
+            else _emphasis(piece.replace("\\$", "$"), tex_breakable, r"\textbf{{{}}}", r"\emph{{{}}}")
         )
     return "".join(out)
 
