@@ -47,6 +47,7 @@ __all__ = [
     "item_key",
     "ledger_table",
     "number_formatter",
+    "page_titles",
     "quantity_table",
     "select_claims",
     "setup",
@@ -354,7 +355,7 @@ def errata_list(paper: str | None = None, *, root: str | None = None, caveat: bo
     return ErrataList(
         ledger.errata(paper),
         root=root,
-        titles=_page_titles(Path.cwd() / root),
+        titles=page_titles(Path.cwd() / root),
         evals=ledger.evaluations(paper=paper),
         caveat=caveat,
     )
@@ -506,8 +507,29 @@ def ledger_table(paper: str | None = None, *, root: str | None = None) -> Intera
     return InteractiveLedger(ledger.evaluations(paper=paper), root=root)
 
 
-def _page_titles(book_dir: Path) -> dict[str, str]:
-    """Each page's title (its first level-1 heading), keyed by its path without suffix."""
+def page_titles(book_dir: Path) -> dict[str, str]:
+    r"""Each page's title (its first level-1 heading), keyed by its path without suffix.
+
+    Parameters
+    ----------
+    book_dir : Path
+        The book's folder; every ``*.md`` below it is read.
+
+    Returns
+    -------
+    dict of str to str
+        ``{"sp/22-jammer-flyby": "The jammer flyby", ...}``; a page without a level-1
+        heading is left out.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     _ = (Path(d) / "wf").mkdir()
+    ...     _ = (Path(d) / "wf" / "01-location.md").write_text("---\n---\n# Emitter location\n")
+    ...     page_titles(Path(d))
+    {'wf/01-location': 'Emitter location'}
+    """
     titles = {}
     for page in sorted(book_dir.rglob("*.md")):
         for line in page.read_text(encoding="utf-8").splitlines():
@@ -1068,7 +1090,7 @@ def trace_table(paper: str | None = None, index: Any = None, *, root: str | None
 
     index = index or traceability.build_index()
     root = book_root_prefix() if root is None else root
-    titles = _page_titles(Path.cwd() / root)
+    titles = page_titles(Path.cwd() / root)
 
     def link(page: Any, displayed: bool) -> tuple[str, str]:
         title = re.sub(r"\s*\([^()]*\)$", "", titles.get(page.docname, page.title))  # no section list

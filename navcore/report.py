@@ -612,9 +612,9 @@ def _own_figure_numbers(book_dir: Path, paper: str) -> dict[str, str]:
 def _page_titles(book_dir: Path) -> dict[str, str]:
     if not book_dir.is_dir():
         return {}
-    from navcore.book import _page_titles as titles
+    from navcore.book import page_titles
 
-    return titles(book_dir)
+    return page_titles(book_dir)
 
 
 def figures_frame(paper: str, evals: Sequence[Evaluation], book_dir: Path | None = None) -> Any:
