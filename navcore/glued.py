@@ -290,9 +290,9 @@ def factor_three_db() -> float:
 @register("wf89-fl1c", "wf/89-summary", "f_L1 / c with the defined c (cycles per metre)")
 def f_l1_over_defined_c() -> float:
     """The GPS L1 carrier frequency over the defined speed of light (Wu & Fowler Sec. IV.D), 1/m."""
-    from navcore.papers import wf
+    from navcore.papers import wf_assessment
 
-    return float(wf.f_l1_over_c())
+    return float(wf_assessment.f_l1_over_c())
 
 
 @register("wf89-fl1c-3e8", "wf/89-summary", "f_L1 / c with c read as 3e8 m/s (cycles per metre)")
@@ -371,9 +371,9 @@ def horizontal_earth_rate_deg_h() -> float:
 def wf_frequency_noise_velocity() -> float:
     """Wu & Fowler's frequency-measurement noise as a radial velocity at the 10 GHz carrier (m/s)."""
     from navcore import units
-    from navcore.papers import wf
+    from navcore.papers import wf_location_error
 
-    return float(wf.SIGMA_F / (wf.F0 / units.C))
+    return float(wf_location_error.SIGMA_F / (wf_location_error.F0 / units.C))
 
 
 # --- sampling errors of Monte Carlo runs -----------------------------------------------------
@@ -621,9 +621,9 @@ def zakai_barker13_of_ideal() -> float:
 @register("wf01-mean-range-km", "wf/01-location-error", "mean aperture-to-emitter range of Sec. III (km)")
 def wf_mean_range_km() -> float:
     """Mean aperture-to-emitter range over Wu & Fowler's Sec. III scenario track, in km."""
-    from navcore.papers import wf
+    from navcore.papers import wf_aperture_velocity
 
-    return float(wf.mean_range() / 1e3)
+    return float(wf_aperture_velocity.mean_range() / 1e3)
 
 
 #: Seeded Gauss-Newton fits of the Sec. II Monte Carlo on the WF location-error page (a run
@@ -649,18 +649,18 @@ def wf_sd_sampling_error_pct() -> float:
 @register("wf89-bound-ratio", "wf/89-summary", "largest ||df/dp|| over the Eq. (9) bound, random geometries")
 def wf_largest_bound_ratio() -> float:
     """Largest ratio of ||df/dp|| to its bound, WF Eq. (9), over the seeded geometries."""
-    from navcore.papers import wf
+    from navcore.papers import wf_aperture_velocity
 
-    return float(wf.position_bound_ratios().max())
+    return float(wf_aperture_velocity.position_bound_ratios().max())
 
 
 def _wf_dl_steady_state_example() -> Any:
     """Steady state of WF Eq. (14) for the worked example's 100 ug accelerometer (Sec. IV.D)."""
     from navcore.estimation.federated import accelerometer_steady_state_isotropic
-    from navcore.papers import wf
+    from navcore.papers import wf_inputs
 
-    sa = wf.sigma_a_example()
-    return accelerometer_steady_state_isotropic(sa, wf.IN.ts, wf.IN.sigma_l_per_sigma_a * sa)
+    sa = wf_inputs.sigma_a_example()
+    return accelerometer_steady_state_isotropic(sa, wf_inputs.IN.ts, wf_inputs.IN.sigma_l_per_sigma_a * sa)
 
 
 @register("wf03-dl-gain", "wf/03-local-estimators", "steady-state gain of the Eq. (14) filter at 100 ug")
@@ -676,9 +676,9 @@ def wf_dl_gain() -> float:
 )
 def wf_dl_time_constant() -> float:
     """Time constant T_s / K of WF Eq. (14)'s steady-state filter for the 100 ug accelerometer, s."""
-    from navcore.papers import wf
+    from navcore.papers import wf_inputs
 
-    return float(wf.IN.ts / _wf_dl_steady_state_example().gain)
+    return float(wf_inputs.IN.ts / _wf_dl_steady_state_example().gain)
 
 
 def _wf03_joint() -> tuple[list[Any], Any]:
@@ -686,22 +686,27 @@ def _wf03_joint() -> tuple[list[Any], Any]:
     and the joint covariance of their errors (WF Eq. (20)), sigma_T = 2 m/s."""
     import numpy as np
 
-    from navcore.papers import wf
+    from navcore.papers import wf_assessment, wf_inputs
 
-    sa = wf.sigma_a_example()
-    P_dn, P_dl, P_dg = wf.local_covariances(sa, wf.IN.sigma_t_large, n_sat=3)
+    sa = wf_inputs.sigma_a_example()
+    P_dn, P_dl, P_dg = wf_assessment.local_covariances(sa, wf_inputs.IN.sigma_t_large, n_sat=3)
     ss = _wf_dl_steady_state_example()
     I3 = np.eye(3)
-    H = wf.f_l1_over_c_printed() * I3
+    H = wf_inputs.f_l1_over_c_printed() * I3
     K_l = ss.gain * I3
-    K_g = P_dg @ H.T / wf.IN.sigma_g**2
+    K_g = P_dg @ H.T / wf_inputs.IN.sigma_g**2
     maps = [
         np.hstack([0 * I3, I3, 0 * I3, 0 * I3]),
         np.hstack([I3 - K_l, 0 * I3, K_l, 0 * I3]),
         np.hstack([I3 - K_g @ H, 0 * I3, 0 * I3, K_g]),
     ]
     S = np.zeros((12, 12))
-    blocks = [ss.prior * I3, P_dn, (wf.IN.sigma_l_per_sigma_a * sa) ** 2 * I3, wf.IN.sigma_g**2 * I3]
+    blocks = [
+        ss.prior * I3,
+        P_dn,
+        (wf_inputs.IN.sigma_l_per_sigma_a * sa) ** 2 * I3,
+        wf_inputs.IN.sigma_g**2 * I3,
+    ]
     for j, block in enumerate(blocks):
         S[3 * j : 3 * j + 3, 3 * j : 3 * j + 3] = block
     A = np.vstack(maps)
@@ -747,9 +752,9 @@ def wf_naive_optimism() -> float:
 )
 def wf_generic_tightness_rho1() -> float:
     """Minkowski bound of WF Eq. (23) over the true fused trace, seeded generic covariances, rho = 1."""
-    from navcore.papers import wf
+    from navcore.papers import wf_federated_fusion
 
-    return float(wf.bound_tightness(1.0, "generic"))
+    return float(wf_federated_fusion.bound_tightness(1.0, "generic"))
 
 
 @register(
@@ -759,9 +764,9 @@ def wf_generic_tightness_rho1() -> float:
 )
 def wf_isotropic_tightness_rho0() -> float:
     """Minkowski bound of WF Eq. (23) over the true fused trace, isotropic covariances, uncorrelated."""
-    from navcore.papers import wf
+    from navcore.papers import wf_federated_fusion
 
-    return float(wf.bound_tightness(0.0, "isotropic"))
+    return float(wf_federated_fusion.bound_tightness(0.0, "isotropic"))
 
 
 #: The page's example of Eq. (11) with a large Q_T: a navigation sigma of 0.2 m/s per axis beside a
@@ -796,9 +801,12 @@ def wf_large_qt_change_pct() -> float:
 )
 def wf_trace_reading_100ug_db() -> float:
     """The 100 ug improvement of Fig. 1 (sigma_T = 2 m/s) plus the factor 3 of a trace read per axis, dB."""
-    from navcore.papers import wf
+    from navcore.papers import wf_assessment, wf_inputs
 
-    return float(wf.improvement_db(wf.sigma_a_example(), wf.IN.sigma_t_large) + 10 * math.log10(3))
+    return float(
+        wf_assessment.improvement_db(wf_inputs.sigma_a_example(), wf_inputs.IN.sigma_t_large)
+        + 10 * math.log10(3)
+    )
 
 
 @register(
@@ -811,14 +819,16 @@ def wf_prior_instead_shift_db() -> float:
     import numpy as np
 
     from navcore.estimation.federated import accelerometer_steady_state_isotropic, minkowski_trace_bound
-    from navcore.papers import wf
+    from navcore.papers import wf_assessment, wf_inputs
 
     shift = 0.0
-    for sa in wf.sigma_a_grid():
-        prior = accelerometer_steady_state_isotropic(sa, wf.IN.ts, wf.IN.sigma_l_per_sigma_a * sa).prior
-        for st in wf.sigma_t_values():
-            for ns in wf.SATELLITE_CASES:
-                Ps = wf.local_covariances(sa, st, ns)
+    for sa in wf_assessment.sigma_a_grid():
+        prior = accelerometer_steady_state_isotropic(
+            sa, wf_inputs.IN.ts, wf_inputs.IN.sigma_l_per_sigma_a * sa
+        ).prior
+        for st in wf_inputs.sigma_t_values():
+            for ns in wf_assessment.SATELLITE_CASES:
+                Ps = wf_assessment.local_covariances(sa, st, ns)
                 alt = [Ps[0], prior * np.eye(3), *Ps[2:]]
                 shift = max(
                     shift, abs(10 * math.log10(minkowski_trace_bound(alt) / minkowski_trace_bound(Ps)))
@@ -834,12 +844,14 @@ def wf_prior_instead_shift_db() -> float:
 def wf_sigma_dl_max() -> float:
     """Steady-state per-axis sigma of WF Eq. (14) at the medium-resolution end of Sec. IV.D, m/s."""
     from navcore.estimation.federated import accelerometer_steady_state_isotropic
-    from navcore.papers import wf
+    from navcore.papers import wf_inputs
 
-    sa = wf.IN.sigma_a_high
+    sa = wf_inputs.IN.sigma_a_high
     return float(
         math.sqrt(
-            accelerometer_steady_state_isotropic(sa, wf.IN.ts, wf.IN.sigma_l_per_sigma_a * sa).posterior
+            accelerometer_steady_state_isotropic(
+                sa, wf_inputs.IN.ts, wf_inputs.IN.sigma_l_per_sigma_a * sa
+            ).posterior
         )
     )
 
@@ -847,9 +859,9 @@ def wf_sigma_dl_max() -> float:
 @register("wf04-gps-velocity-sigma", "wf/04-assessment", "velocity sigma equivalent to sigma_G = 1 Hz (m/s)")
 def wf_gps_velocity_sigma() -> float:
     """Line-of-sight velocity sigma equivalent to WF's 1 Hz GPS Doppler noise, m/s."""
-    from navcore.papers import wf
+    from navcore.papers import wf_assessment
 
-    return float(wf.gps_doppler_velocity_sigma())
+    return float(wf_assessment.gps_doppler_velocity_sigma())
 
 
 @register(
@@ -859,9 +871,9 @@ def wf_gps_velocity_sigma() -> float:
 )
 def wf_gps_velocity_over_sigma_n() -> float:
     """The GPS-equivalent velocity sigma over WF's navigation velocity accuracy sigma_N."""
-    from navcore.papers import wf
+    from navcore.papers import wf_assessment, wf_inputs
 
-    return float(wf.gps_doppler_velocity_sigma() / wf.IN.sigma_n)
+    return float(wf_assessment.gps_doppler_velocity_sigma() / wf_inputs.IN.sigma_n)
 
 
 @register(
@@ -871,9 +883,12 @@ def wf_gps_velocity_over_sigma_n() -> float:
 )
 def wf_sigma_d_over_sigma_n() -> float:
     """Per-axis fused bound of WF Eq. (23) at 100 ug and sigma_T = 2 m/s over sigma_N."""
-    from navcore.papers import wf
+    from navcore.papers import wf_assessment, wf_inputs
 
-    return float(wf.sigma_d_bound(wf.sigma_a_example(), wf.IN.sigma_t_large) / wf.IN.sigma_n)
+    return float(
+        wf_assessment.sigma_d_bound(wf_inputs.sigma_a_example(), wf_inputs.IN.sigma_t_large)
+        / wf_inputs.IN.sigma_n
+    )
 
 
 @register(
@@ -885,10 +900,16 @@ def wf_gps_gain_max_db() -> float:
     satellites, the stated sigma_a range."""
     import numpy as np
 
-    from navcore.papers import wf
+    from navcore.papers import wf_assessment, wf_inputs
 
-    c = wf.improvement_curves()
-    return float(max(np.max(c[(st, 0)] - c[(st, ns)]) for st in wf.sigma_t_values() for ns in wf.GPS_CASES))
+    c = wf_assessment.improvement_curves()
+    return float(
+        max(
+            np.max(c[(st, 0)] - c[(st, ns)])
+            for st in wf_inputs.sigma_t_values()
+            for ns in wf_assessment.GPS_CASES
+        )
+    )
 
 
 @register(
@@ -900,10 +921,10 @@ def wf_three_vs_one_db() -> float:
     """Largest |three-satellite - one-satellite| difference of Fig. 2 at sigma_T = 0, stated range, dB."""
     import numpy as np
 
-    from navcore.papers import wf
+    from navcore.papers import wf_assessment, wf_inputs
 
-    c = wf.improvement_curves()
-    st = wf.IN.sigma_t_small
+    c = wf_assessment.improvement_curves()
+    st = wf_inputs.IN.sigma_t_small
     return float(np.max(np.abs(c[(st, 3)] - c[(st, 1)])))
 
 
@@ -918,10 +939,13 @@ WF04_WIDE_SIGMA_A = 0.3
 )
 def wf_gps_gain_wide_db() -> float:
     """Improvement (dB) three satellites add at sigma_a = 0.3 m/s^2, sigma_T = 2 m/s."""
-    from navcore.papers import wf
+    from navcore.papers import wf_assessment, wf_inputs
 
-    st = wf.IN.sigma_t_large
-    return float(wf.improvement_db(WF04_WIDE_SIGMA_A, st, 0) - wf.improvement_db(WF04_WIDE_SIGMA_A, st, 3))
+    st = wf_inputs.IN.sigma_t_large
+    return float(
+        wf_assessment.improvement_db(WF04_WIDE_SIGMA_A, st, 0)
+        - wf_assessment.improvement_db(WF04_WIDE_SIGMA_A, st, 3)
+    )
 
 
 @register(
@@ -932,9 +956,9 @@ def wf_gps_gain_wide_db() -> float:
 def wf_leverage_z() -> float:
     """Emitter-location error (WF Eq. (6)) from a constant 1 m/s aperture-velocity error along z
     over that from a constant 1 m position error along z, s."""
-    from navcore.papers import wf
+    from navcore.papers import wf_aperture_velocity
 
-    lev = wf.location_error_leverage()
+    lev = wf_aperture_velocity.location_error_leverage()
     return float(lev["bias_v"][2] / lev["bias_p"][2])
 
 
@@ -946,9 +970,9 @@ def wf_leverage_z() -> float:
 def wf_leverage_white() -> float:
     """RMS emitter-location error (WF Eq. (6)) from independent 1 m/s velocity errors per axis and
     sample over that from independent 1 m position errors, s."""
-    from navcore.papers import wf
+    from navcore.papers import wf_aperture_velocity
 
-    lev = wf.location_error_leverage()
+    lev = wf_aperture_velocity.location_error_leverage()
     return float(lev["white_v"] / lev["white_p"])
 
 
@@ -959,9 +983,9 @@ def wf_leverage_white() -> float:
 )
 def wf_eq13_ratio() -> float:
     """Final RMS error of WF Eq. (13) run as printed (seeded) over the Eq. (14) sigma."""
-    from navcore.papers import wf
+    from navcore.papers import wf_local_estimators
 
-    return float(wf.eq13_printed_error_ratio())
+    return float(wf_local_estimators.eq13_printed_error_ratio())
 
 
 @register(
@@ -971,9 +995,9 @@ def wf_eq13_ratio() -> float:
 )
 def wf_eq20_block() -> float:
     """How far WF Eq. (20)'s printed block (2, 3), P_NG, is from the L-G cross-covariance (seeded joint)."""
-    from navcore.papers import wf
+    from navcore.papers import wf_federated_fusion
 
-    return float(wf.eq20_printed_block_error())
+    return float(wf_federated_fusion.eq20_printed_block_error())
 
 
 @register(
@@ -983,9 +1007,9 @@ def wf_eq20_block() -> float:
 )
 def wf_eq24_ratio() -> float:
     """WF Eq. (24) read literally: sigma_DN computed in cm/s (converted) over sigma_DN computed in m/s."""
-    from navcore.papers import wf
+    from navcore.papers import wf_assessment
 
-    return float(wf.eq24_literal_unit_ratio())
+    return float(wf_assessment.eq24_literal_unit_ratio())
 
 
 # --- model values: Wu & Fowler's worked example (a seeded simulation of 20 flights) -----------
@@ -1020,10 +1044,12 @@ def wf05_uz_rms() -> float:
     """RMS over the Sec. II turn's samples of the vertical component of the unit line of sight."""
     import numpy as np
 
-    from navcore.papers import wf
+    from navcore.papers import wf_location_error
 
-    _, pos, _ = wf.orbit()
-    u_z = np.abs(pos[:, 2] - wf.EMITTER[2]) / np.linalg.norm(pos - wf.EMITTER, axis=1)
+    _, pos, _ = wf_location_error.orbit()
+    u_z = np.abs(pos[:, 2] - wf_location_error.EMITTER[2]) / np.linalg.norm(
+        pos - wf_location_error.EMITTER, axis=1
+    )
     return float(np.sqrt(np.mean(u_z**2)))
 
 
@@ -1036,9 +1062,9 @@ def wf05_freq_err() -> float:
     """Frequency error (Hz RMS) the unseen vertical vibration causes: f0/c times its RMS velocity times
     the RMS vertical line-of-sight component."""
     from navcore import units
-    from navcore.papers import wf
+    from navcore.papers import wf_location_error
 
-    return float(wf.F0 / units.C * wf05_vib_rms() * wf05_uz_rms())
+    return float(wf_location_error.F0 / units.C * wf05_vib_rms() * wf05_uz_rms())
 
 
 @register(
@@ -1048,9 +1074,9 @@ def wf05_freq_err() -> float:
 )
 def wf05_freq_err_over_noise() -> float:
     """The vibration's RMS frequency error over the 1 Hz frequency-measurement noise."""
-    from navcore.papers import wf
+    from navcore.papers import wf_location_error
 
-    return float(wf05_freq_err() / wf.SIGMA_F)
+    return float(wf05_freq_err() / wf_location_error.SIGMA_F)
 
 
 #: The page's Euler illustration: 60 s of a sinusoid sampled at T_s.
@@ -3804,9 +3830,11 @@ def atc10_32_outage_ratio(end: str) -> float:
 def across01_wf_bound_mm_s() -> float:
     """Per-axis fused velocity bound of WF Eq. (23) at the worked example's accelerometer, the
     middle sigma_T and three GPS satellites, in mm/s."""
-    from navcore.papers import wf
+    from navcore.papers import wf_assessment, wf_inputs
 
-    return float(1e3 * wf.sigma_d_bound(wf.sigma_a_example(), wf.sigma_t_values()[1], n_sat=3))
+    return float(
+        1e3 * wf_assessment.sigma_d_bound(wf_inputs.sigma_a_example(), wf_inputs.sigma_t_values()[1], n_sat=3)
+    )
 
 
 @register(

@@ -926,11 +926,11 @@ def _wf_fig1(data: Data) -> None:
     """Curves recomputed (paper module). Oracle: for small sigma_a the bound is proportional to
     sigma_a, so each curve starts rising at 20 dB per decade (within 0.1 dB) and rises
     throughout; the 100 ug point is the paper's -60 dB (Fig. 1) within 0.5 dB."""
-    from navcore.papers import wf
+    from navcore.papers import wf_assessment, wf_inputs
 
     (ax,) = data
-    c = wf.improvement_curves()
-    for st in wf.sigma_t_values():
+    c = wf_assessment.improvement_curves()
+    for st in wf_inputs.sigma_t_values():
         s = ax.get(rf"$\sigma_T$ = {st:g} m/s")
         near(s.x, c["sigma_a"])
         near(s.y, c[(st, 0)])
@@ -938,7 +938,7 @@ def _wf_fig1(data: Data) -> None:
         near(slope[0], 20.0, atol=0.1, what="20 dB per decade")
         assert np.all(slope > 0)
     point = ax.get(r"100 $\mu g$")
-    near(point.y, [wf.improvement_db(wf.sigma_a_example(), 2.0)])
+    near(point.y, [wf_assessment.improvement_db(wf_inputs.sigma_a_example(), 2.0)])
     near(point.y[0], -60.0, atol=0.5)
 
 
@@ -947,13 +947,13 @@ def _wf_fig2(data: Data) -> None:
     """Curves with GPS (1 and 3 satellites) and without, recomputed, in both ranges. Oracle: two
     more satellites' Doppler measurements never make the bound worse (the 3-satellite points
     are at most the 1-satellite curve)."""
-    from navcore.papers import wf
+    from navcore.papers import wf_assessment, wf_inputs
 
-    extended = wf.improvement_curves(wf.IN.sigma_a_low, wf.IN.sigma_a_poor_max, 41)
-    for ax, c in zip(data, (wf.improvement_curves(), extended), strict=True):
+    extended = wf_assessment.improvement_curves(wf_inputs.IN.sigma_a_low, wf_inputs.IN.sigma_a_poor_max, 41)
+    for ax, c in zip(data, (wf_assessment.improvement_curves(), extended), strict=True):
         drawn = lines(ax)
         k = 0
-        for st in wf.sigma_t_values():
+        for st in wf_inputs.sigma_t_values():
             one = drawn[k]
             near(one.y, c[(st, 1)])
             k += 1
@@ -994,11 +994,11 @@ def _wf_example(data: Data) -> None:
 def _wf_sensitivity(data: Data) -> None:
     """The histogram recomputed from the ratios. Oracle: its counts sum to the 2000 geometries
     and no ratio reaches beyond 1/2 (the attained maximum is half the printed bound)."""
-    from navcore.papers import wf
+    from navcore.papers import wf_aperture_velocity
 
     (ax,) = data
     (bars,) = ax.of_kind("bars")
-    counts, _ = np.histogram(wf.position_bound_ratios(), np.linspace(0, 0.55, 45))
+    counts, _ = np.histogram(wf_aperture_velocity.position_bound_ratios(), np.linspace(0, 0.55, 45))
     near(bars.y, counts)
     assert bars.y.sum() == 2000
     assert bars.y[bars.x > 0.5 + 0.55 / 44].sum() == 0

@@ -215,8 +215,8 @@ def test_theorem_bound_monte_carlo(N, kind):
     Local errors of 3 states with a random joint covariance J ("generic": A A' + 0.1 I; "mixed": a
     common and an independent part, correlation uniform in [0, 1]; "complete": e_i = sigma_i w,
     where the bound with the optimal weights is exact) are fused with the weights of WF Eqs. (18)-(19)
-    (``wf.theorem_monte_carlo_case``, which the ledger claim WF-thm-montecarlo also runs, on other
-    seeds). Criteria, in sampling standard deviations (sd) of S:
+    (``wf_federated_fusion.theorem_monte_carlo_case``, which the ledger claim WF-thm-montecarlo also
+    runs, on other seeds). Criteria, in sampling standard deviations (sd) of S:
 
     * WF Eq. (21): whitening by the bound B, lambda_max(B^-1/2 S B^-1/2) - 1 <= 5 sd, sd = sqrt(2/(n-1))
       (the sd of a whitened sample variance whose true value is 1, the largest it can be);
@@ -224,10 +224,10 @@ def test_theorem_bound_monte_carlo(N, kind):
     * WF Eq. (20): |S_jk - C_jk| <= 5 sd_jk, sd_jk = sqrt((S_jj S_kk + S_jk^2)/(n-1)); and Eq. (20) applied to
       the sample joint covariance of the local errors is S itself (to round-off), so E[S] = Eq. (20) exactly.
     """
-    from navcore.papers import wf
+    from navcore.papers import wf_federated_fusion
 
     rng = np.random.default_rng([N, ("generic", "mixed", "complete").index(kind), 31])
-    r = wf.theorem_monte_carlo_case(rng, N, kind, 20_000)
+    r = wf_federated_fusion.theorem_monte_carlo_case(rng, N, kind, 20_000)
     assert r["z_bound"] <= 5 and r["z_trace"] <= 5 and r["z_eq20"] <= 5
     assert r["exact"] < 1e-10
     if kind == "complete":  # the criterion has power: it rejects the naive P_D of Eq. (19) as a bound

@@ -1591,9 +1591,9 @@ _WF_DARE = "closed-form diagonal arithmetic, scipy's Riccati solver"
 
 
 def _wf_in():
-    from navcore.papers import wf
+    from navcore.papers import wf_inputs
 
-    return wf.IN
+    return wf_inputs.IN
 
 
 def _wf_filter(sigma_a: float) -> tuple[float, float, float]:
@@ -1790,10 +1790,10 @@ def _wf_leverage() -> dict[str, float]:
     """WF Eq. (6) by hand on the Sec. II turn: the Doppler model f0 (1 + v.u / c) written out
     (scipy.constants' c), its Jacobian in (emitter, f0) by central differences (step 1e-4 R)
     except the f0 column, exact; the errors by numpy's least squares."""
-    from navcore.papers import wf
+    from navcore.papers import wf_location_error
 
-    f0, emitter = wf.F0, wf.EMITTER
-    _, pos, vel = wf.orbit()
+    f0, emitter = wf_location_error.F0, wf_location_error.EMITTER
+    _, pos, vel = wf_location_error.orbit()
 
     def doppler(e: np.ndarray, p: np.ndarray, v: np.ndarray) -> np.ndarray:  # f - f0
         d = e - p
@@ -3189,9 +3189,9 @@ def _atc10_dish_hz() -> float:
 
 def _wf_sigma_f_velocity() -> float:
     """A frequency error of sigma_f Hz at the carrier F0 is a radial velocity sigma_f c / F0."""
-    from navcore.papers import wf
+    from navcore.papers import wf_location_error
 
-    return wf.SIGMA_F * sc.c / wf.F0
+    return wf_location_error.SIGMA_F * sc.c / wf_location_error.F0
 
 
 def _kzl_runs() -> int:

@@ -339,7 +339,7 @@ def test_cli_times_sums_each_tasks_claims(monkeypatch, capsys):
     monkeypatch.setattr(ledger, "evaluations", lambda paper=None, prefix=None, n_jobs=None: one)
     assert cli.main(["ledger", "--times"]) == 0
     err = capsys.readouterr().err.splitlines()
-    assert err == ["     3.5 s  navcore.papers.sp_coverage", "     0.2 s  navcore.papers.wf"]
+    assert err == ["     3.5 s  navcore.papers.sp_coverage", "     0.2 s  navcore.papers.wf_location_error"]
 
 
 def test_cli_exit_status_nonzero_on_failure(monkeypatch, capsys):

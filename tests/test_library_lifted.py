@@ -19,7 +19,7 @@ from navcore.location.clock_tracking import (
     three_satellite_clock_variance,
     tracking_position_errors,
 )
-from navcore.papers import atc10_tracking, wf
+from navcore.papers import atc10_tracking, wf_assessment, wf_inputs
 from navcore.units import FT, C
 
 
@@ -75,10 +75,10 @@ def test_tracking_position_errors_convention_is_a_parameter():
 @pytest.mark.parametrize(("sigma_a", "sigma_t", "n_sat"), [(3e-4, 0.0, 0), (3e-4, 0.01, 3), (1e-3, 0.02, 1)])
 def test_federated_improvement_db_matches_wf(sigma_a, sigma_t, n_sat):
     """The WF module's improvement is the library's (it delegates)."""
-    covs = wf.local_covariances(sigma_a, sigma_t, n_sat)
-    reference = math.hypot(wf.IN.sigma_n, sigma_t)
+    covs = wf_assessment.local_covariances(sigma_a, sigma_t, n_sat)
+    reference = math.hypot(wf_inputs.IN.sigma_n, sigma_t)
     assert federated_improvement_db(covs, reference) == pytest.approx(
-        wf.improvement_db(sigma_a, sigma_t, n_sat), abs=1e-12
+        wf_assessment.improvement_db(sigma_a, sigma_t, n_sat), abs=1e-12
     )
 
 

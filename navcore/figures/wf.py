@@ -9,7 +9,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from navcore.figures import apply_style, register
-from navcore.papers import wf
+from navcore.papers import wf_aperture_velocity, wf_assessment, wf_inputs
 from navcore.papers import wf_example as ex
 from navcore.units import MICRO_G
 
@@ -43,12 +43,15 @@ def _from_micro_g(x: Any) -> Any:
 )
 def improvement_without_gps() -> Figure:
     apply_style()
-    c = wf.improvement_curves()
+    c = wf_assessment.improvement_curves()
     fig, ax = plt.subplots()
-    for st in wf.sigma_t_values():
+    for st in wf_inputs.sigma_t_values():
         ax.plot(c["sigma_a"], c[(st, 0)], color=_COLOURS[st], label=rf"$\sigma_T$ = {st:g} m/s")
     ax.plot(
-        [wf.sigma_a_example()], [wf.improvement_db(wf.sigma_a_example(), 2.0)], "kx", label=r"100 $\mu g$"
+        [wf_inputs.sigma_a_example()],
+        [wf_assessment.improvement_db(wf_inputs.sigma_a_example(), 2.0)],
+        "kx",
+        label=r"100 $\mu g$",
     )
     _axis_ug(ax)
     ax.legend()
@@ -69,10 +72,13 @@ def improvement_with_gps() -> Figure:
     fig, axes = plt.subplots(1, 2, figsize=(10, 4.0), sharey=True)
     for ax, c in zip(
         axes,
-        (wf.improvement_curves(), wf.improvement_curves(wf.IN.sigma_a_low, wf.IN.sigma_a_poor_max, 41)),
+        (
+            wf_assessment.improvement_curves(),
+            wf_assessment.improvement_curves(wf_inputs.IN.sigma_a_low, wf_inputs.IN.sigma_a_poor_max, 41),
+        ),
         strict=True,
     ):
-        for st in wf.sigma_t_values():
+        for st in wf_inputs.sigma_t_values():
             col = _COLOURS[st]
             ax.plot(c["sigma_a"], c[(st, 1)], color=col, label=rf"$\sigma_T$ = {st:g} m/s, 1 sat")
             if st > 0:
@@ -81,7 +87,7 @@ def improvement_with_gps() -> Figure:
         _axis_ug(ax)
     axes[0].set_title("stated range")
     axes[1].set_title("extended range")
-    axes[1].axvspan(wf.IN.sigma_a_high, wf.IN.sigma_a_poor_max, color="0.9", zorder=0)
+    axes[1].axvspan(wf_inputs.IN.sigma_a_high, wf_inputs.IN.sigma_a_poor_max, color="0.9", zorder=0)
     axes[0].legend(fontsize=8)
     return fig
 
@@ -126,7 +132,7 @@ def worked_example() -> Figure:
 )
 def position_bound_ratio() -> Figure:
     apply_style()
-    ratios = wf.position_bound_ratios()
+    ratios = wf_aperture_velocity.position_bound_ratios()
     fig, ax = plt.subplots(figsize=(6.4, 3.2))
     ax.hist(ratios, bins=np.linspace(0, 0.55, 45).tolist(), color="C0")
     ax.axvline(0.5, color="k", ls="--", lw=1)

@@ -23,15 +23,8 @@ from navcore.estimation.federated import (
     federated_fusion,
 )
 from navcore.location.emitter import doppler_frequency, emitter_gauss_newton
-from navcore.papers.wf import (
-    ALTITUDE,
-    EMITTER,
-    F0,
-    IN,
-    SIGMA_F,
-    SPEED,
-    sigma_a_example,
-)
+from navcore.papers.wf_inputs import IN, sigma_a_example
+from navcore.papers.wf_location_error import ALTITUDE, EMITTER, F0, SIGMA_F, SPEED
 
 #: measurement decimation: one frequency measurement every DECIM accelerometer steps
 DECIM = 30
