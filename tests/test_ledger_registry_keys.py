@@ -45,3 +45,15 @@ def test_evaluating_claims_imports_no_presentation_module():
     loaded = set(json.loads(out.stdout.strip().splitlines()[-1]))
     assert "navcore.claims.core" in loaded
     assert not {f"navcore.ledger.{name.removesuffix('.py')}" for name in registry._PRESENTATION} & loaded
+
+
+def test_every_paper_module_is_in_the_reading_order_and_the_ledger_follows_it():
+    """Oracle: the files of navcore/papers, and the order the reading list gives by hand."""
+    import navcore.papers as pkg
+
+    files = {p.stem for p in Path(pkg.__file__).parent.glob("*.py") if not p.stem.startswith("_")}
+    assert sorted(pkg.READING_ORDER) == sorted(files), "list each paper module once in READING_ORDER"
+    assert [m.rsplit(".", 1)[1] for m in registry.paper_modules()] == list(pkg.READING_ORDER)
+    papers = [registry._module_paper(m) for m in pkg.READING_ORDER]
+    runs = [p for i, p in enumerate(papers) if i == 0 or p != papers[i - 1]]
+    assert runs == ["WF", "SP", "ATC10", "KZL"], "each paper's modules together, in the papers' order"

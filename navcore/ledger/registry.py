@@ -51,32 +51,32 @@ __all__ = [
 
 @cache
 def paper_modules() -> tuple[str, ...]:
-    """Names of the modules in :mod:`navcore.papers`, sorted.
+    """Names of the modules in :mod:`navcore.papers`, in the papers' reading order.
 
-    Each module defines the ``CLAIMS`` and ``ERRATA`` of one paper or section; the registry
-    imports them on demand (:func:`claims`, :func:`errata`).
+    Each module defines the ``CLAIMS`` and ``ERRATA`` of one section of a paper; the registry
+    imports them on demand (:func:`claims`, :func:`errata`) in this order, which is the order of
+    the ledger's rows and of the errata lists: :data:`navcore.papers.READING_ORDER` (a
+    module it does not list comes after, by name).
 
     Returns
     -------
     tuple of str
-        Full module names (``"navcore.papers.kzl"``), sorted; modules whose name starts
-        with ``_`` are left out.
+        Full module names (``"navcore.papers.kzl_models"``); modules whose name starts with
+        ``_`` are left out.
 
     Examples
     --------
     >>> names = paper_modules()
-    >>> all(name.startswith("navcore.papers.") for name in names), names == tuple(sorted(names))
-    (True, True)
+    >>> all(name.startswith("navcore.papers.") for name in names)
+    True
+    >>> names[0]
+    'navcore.papers.wf_location_error'
     """
     import navcore.papers as pkg
 
-    return tuple(
-        sorted(
-            f"{pkg.__name__}.{m.name}"
-            for m in pkgutil.iter_modules(pkg.__path__)
-            if not m.name.startswith("_")
-        )
-    )
+    found = [m.name for m in pkgutil.iter_modules(pkg.__path__) if not m.name.startswith("_")]
+    rank = {name: i for i, name in enumerate(pkg.READING_ORDER)}
+    return tuple(f"{pkg.__name__}.{m}" for m in sorted(found, key=lambda m: (rank.get(m, len(rank)), m)))
 
 
 def _module_paper(name: str) -> str:
