@@ -46,7 +46,7 @@ from typing import cast
 import numpy as np
 
 from navcore.claims import InputSet, for_each_band_run, input_cache
-from navcore.frames import dcm_ecef_to_ned, ecef_to_ned
+from navcore.frames import dcm_ecef_to_ned, dcm_from_euler, ecef_to_ned
 from navcore.gnss.constellation import nominal_gps_constellation
 from navcore.gnss.dop import satellite_priority
 from navcore.inertial.imu import ImuSpec, imu_spec_from_published
@@ -74,7 +74,9 @@ __all__ = [
     "monte_carlo",
     "n_runs",
     "table1",
+    "table1_attitude",
     "table1_baselines_b",
+    "table1_los",
     "table1_scenario",
     "table1_sky",
     "visibility_schedule",
@@ -388,6 +390,18 @@ def table1_sky() -> tuple[np.ndarray, np.ndarray]:
     pos_e = const.positions_ecef(t)[:, prio]
     vel_e = const.velocities_ecef(t)[:, prio]
     return ecef_to_ned(pos_e, lat, lon, h), vel_e @ dcm_ecef_to_ned(lat, lon).T
+
+
+def table1_attitude() -> np.ndarray:
+    """Body-to-NED DCM of the Table 1 attitude (roll 0, pitch 0, heading 90 deg)."""
+    return dcm_from_euler(IN.roll_deg * DEG, IN.pitch_deg * DEG, IN.heading_deg * DEG)
+
+
+def table1_los(nu: int, k: int = 0) -> np.ndarray:
+    """Unit LOS (NED) of the first ``nu`` satellites in priority order at epoch ``k``."""
+    sats = table1_sky()[0][k, :nu]
+    d = sats - np.array([0.0, 0.0, 0.0])
+    return d / np.linalg.norm(d, axis=1, keepdims=True)
 
 
 @input_cache
