@@ -328,7 +328,7 @@ CLAIMS = [
     Claim(
         id="KZL-sec3.2-earth-transport-rates-negligible",
         aliases=("KZL-c13-neglected-rates",),
-        locator="Secs. 3.1-3.2",
+        locator="Secs. 3.1-3.2, Eq. (9)",
         quantity="Earth and transport rate are negligible against the low-cost gyro bias",
         published=True,
         unit="statement",
