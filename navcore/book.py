@@ -184,7 +184,7 @@ def select_claims(paper: str | None, items: list[str]) -> list[str]:
     Examples
     --------
     >>> select_claims("KZL", ["Eq. (9)"])
-    ['KZL-eq9-quaternion']
+    ['KZL-sec3.2-earth-transport-rates-negligible', 'KZL-eq9-quaternion']
     """
     from navcore.traceability import claim_refs
 

@@ -2548,9 +2548,9 @@ def atc10_30_fit_worst_pct() -> float:
 def kzl00_overlap_s() -> float:
     """Receiver footprint over the speed of the satellite's ground track relative to the aircraft
     (KZL Sec. 1, circular orbit, the assumed footprint), in seconds."""
-    from navcore.papers import kzl_coverage
+    from navcore.papers import kzl_requirements
 
-    return float(kzl_coverage.footprint_overlap_s())
+    return float(kzl_requirements.footprint_overlap_s())
 
 
 @register(
@@ -2561,9 +2561,9 @@ def kzl00_overlap_s() -> float:
 def kzl00_pointing_shift_m() -> float:
     """Shift of the footprint that KZL's acceptable pointing error (Sec. 1) gives at the slant
     range of the Table 1 height and the assumed look angle, in metres."""
-    from navcore.papers import kzl_coverage
+    from navcore.papers import kzl_requirements
 
-    return float(kzl_coverage.pointing_shift_m())
+    return float(kzl_requirements.pointing_shift_m())
 
 
 @register(
@@ -2573,9 +2573,9 @@ def kzl00_pointing_shift_m() -> float:
 )
 def kzl00_baseline_arcsec() -> float:
     """Baseline tilt error giving 1 m of height error in the assumed TerraSAR-X geometry, arcsec."""
-    from navcore.papers import kzl_coverage
+    from navcore.papers import kzl_requirements
 
-    return float(kzl_coverage.baseline_angle_arcsec())
+    return float(kzl_requirements.baseline_angle_arcsec())
 
 
 @register(
@@ -2585,9 +2585,9 @@ def kzl00_baseline_arcsec() -> float:
 )
 def kzl00_baseline_mm() -> float:
     """Baseline length error giving 1 m of height error in the assumed TerraSAR-X geometry, mm."""
-    from navcore.papers import kzl_coverage
+    from navcore.papers import kzl_requirements
 
-    return float(kzl_coverage.baseline_length_mm())
+    return float(kzl_requirements.baseline_length_mm())
 
 
 @register(
@@ -2597,9 +2597,9 @@ def kzl00_baseline_mm() -> float:
 )
 def kzl00_correlation_10s() -> float:
     """Correlation of the assumed first-order receiver filter's output 10 s apart (KZL Sec. 2.2)."""
-    from navcore.papers import kzl_coverage
+    from navcore.papers import kzl_requirements
 
-    return float(kzl_coverage.correlation_after_10s())
+    return float(kzl_requirements.correlation_after_10s())
 
 
 # --- KZL Sec. 2: the mechanization and error-model pages ----------------------------------------
@@ -2630,7 +2630,7 @@ def kzl01_printed_roll_deg() -> float:
 def kzl01_first_order_low_pct(T: str) -> float:
     """How much lower (%) the stand-alone north-position sigma at the end of the 180 s Table 1
     flight is with KZL's first-order transition (Eq. (6)) than with the exact one, step ``T`` s."""
-    from navcore.papers.kzl_models import discretisation_comparison
+    from navcore.papers.kzl_mechanization import discretisation_comparison
 
     d = discretisation_comparison(float(T))
     return float(100 * (1 - d["pos_first_order_m"] / d["pos_exact_m"]))
@@ -2643,7 +2643,7 @@ def kzl01_first_order_low_pct(T: str) -> float:
 )
 def kzl01_neglected_rates_deg_h() -> float:
     """|Earth rate + transport rate| of the Table 1 flight, dropped by KZL's Eq. (9), deg/h."""
-    from navcore.papers.kzl_models import neglected_rates_deg_per_h
+    from navcore.papers.kzl_mechanization import neglected_rates_deg_per_h
 
     return float(neglected_rates_deg_per_h())
 
@@ -2655,7 +2655,7 @@ def kzl01_neglected_rates_deg_h() -> float:
 )
 def kzl01_neglected_coriolis_micro_g() -> float:
     """|(2 omega_ie + omega_en) x v| of the Table 1 flight, dropped by KZL's Eq. (8), micro-g."""
-    from navcore.papers.kzl_models import neglected_coriolis_micro_g
+    from navcore.papers.kzl_mechanization import neglected_coriolis_micro_g
 
     return float(neglected_coriolis_micro_g())
 
@@ -2668,7 +2668,7 @@ def kzl01_neglected_coriolis_micro_g() -> float:
 def kzl_rank_code_delta_range() -> int:
     """Rank of the observability matrix of KZL's error model in the Table 1 flight with the code
     and delta-range rows of Eq. (13) only, the largest over one to eight satellites."""
-    from navcore.papers.kzl_models import observability_ranks
+    from navcore.papers.kzl_tightly_coupled_filter import observability_ranks
 
     return int(max(observability_ranks()["tc"].values()))
 
@@ -2681,7 +2681,7 @@ def kzl_rank_code_delta_range() -> int:
 def kzl03_rank_code_delta_range_8() -> int:
     """Rank of the observability matrix of KZL's error model in the Table 1 flight with the code
     and delta-range rows of Eq. (13) only, eight satellites."""
-    from navcore.papers.kzl_models import observability_ranks
+    from navcore.papers.kzl_tightly_coupled_filter import observability_ranks
 
     return int(observability_ranks()["tc"][8])
 
@@ -2695,7 +2695,7 @@ def kzl02_full_rank_from_nu() -> int:
     """Fewest satellites that make every state of KZL's error model observable, with the attitude
     rows of Eq. (13) or the double differences of Eq. (17); the larger of the two counts."""
     from navcore.inertial.error_model17 import ERROR_LAYOUT_17
-    from navcore.papers.kzl_models import observability_ranks
+    from navcore.papers.kzl_tightly_coupled_filter import observability_ranks
 
     ranks = observability_ranks()
     return int(
@@ -3025,7 +3025,7 @@ def kzl03_tc_horizontal(quantity: str, where: str, n: str, unit: str) -> float:
 )
 def kzl03_candidates_2m() -> float:
     """Integer candidates per double difference of the Table 1 2 m baseline, 2 B / lambda + 1."""
-    from navcore.papers.kzl_coverage import baseline_tradeoff
+    from navcore.papers.kzl_simulation import baseline_tradeoff
 
     return float(baseline_tradeoff()["2 m"][0])
 
@@ -3037,7 +3037,7 @@ def kzl03_candidates_2m() -> float:
 )
 def kzl03_tilt_2m_mrad() -> float:
     """Tilt of the Table 1 2 m baseline from a 0.01-cycle phase error, 0.01 lambda / B, mrad."""
-    from navcore.papers.kzl_coverage import baseline_tradeoff
+    from navcore.papers.kzl_simulation import baseline_tradeoff
 
     return float(baseline_tradeoff()["2 m"][1])
 
@@ -3053,9 +3053,9 @@ def kzl03_tilt_2m_mrad() -> float:
 def kzl89_qcorr_residual_deg() -> float:
     """Attitude error (deg) that the printed right-hand correction of KZL Sec. 3.5 leaves of the
     test error at the Table 1 attitude."""
-    from navcore.papers import kzl_models
+    from navcore.papers import kzl_tightly_coupled_filter
 
-    return float(kzl_models.printed_correction_residual_deg())
+    return float(kzl_tightly_coupled_filter.printed_correction_residual_deg())
 
 
 @register("kzl89-qcorr-error-deg", "kzl/89-summary", "size of the test attitude error (deg)")
@@ -3063,7 +3063,7 @@ def kzl89_qcorr_error_deg() -> float:
     """Rotation angle of the test attitude error of the quaternion-correction check, in degrees."""
     import numpy as np
 
-    from navcore.papers.kzl_models import QCORR_DPSI
+    from navcore.papers.kzl_tightly_coupled_filter import QCORR_DPSI
 
     return float(np.degrees(np.linalg.norm(QCORR_DPSI)))
 
@@ -3074,17 +3074,17 @@ def kzl89_qcorr_error_deg() -> float:
 def kzl89_dd_printed_rank() -> int:
     """Rank of the two double-difference attitude rows of KZL Eq. (17) as printed (both with the
     baseline l_02), Table 1 sky."""
-    from navcore.papers import kzl_coverage
+    from navcore.papers import kzl_tightly_coupled_filter
 
-    return int(kzl_coverage.eq17_printed_rank())
+    return int(kzl_tightly_coupled_filter.eq17_printed_rank())
 
 
 @register("kzl89-dd-rank", "kzl/89-summary", "rank of the two DD attitude rows of Eq. (17), corrected")
 def kzl89_dd_rank() -> int:
     """Rank of the two double-difference attitude rows of KZL Eq. (17) with l_01 and l_02."""
-    from navcore.papers import kzl_coverage
+    from navcore.papers import kzl_tightly_coupled_filter
 
-    return int(kzl_coverage.eq17_corrected_rank())
+    return int(kzl_tightly_coupled_filter.eq17_corrected_rank())
 
 
 @register(

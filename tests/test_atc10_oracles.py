@@ -12,7 +12,7 @@ import pytest
 from navcore.location.clock_model import clock_covariance
 from navcore.papers import atc10_coverage_tracking as cov
 from navcore.papers import atc10_tracking as trk
-from navcore.papers import kzl_coverage as kzl
+from navcore.papers import kzl_tightly_coupled_filter as kzl
 
 
 def test_convergence_rule_oracle_counts_the_library_recursion_steps() -> None:

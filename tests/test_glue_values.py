@@ -140,16 +140,16 @@ _WGS84_F = 1 / 298.257223563  # WGS-84 flattening (defined)
 _ARCSEC_PER_RAD = 180 * 3600 / math.pi
 
 
-def _kzl_in(module: str) -> Any:
+def _kzl_in(module: str, name: str = "IN") -> Any:
     import importlib
 
-    return importlib.import_module(f"navcore.papers.{module}").IN
+    return getattr(importlib.import_module(f"navcore.papers.{module}"), name)
 
 
 def _kzl00_overlap_s() -> float:
     """Kepler oracle: the satellite's angular rate sqrt(GM / r^3) times the Earth's radius is its
     ground-track speed; the footprint over that speed less the aircraft's."""
-    m, c = _kzl_in("kzl_models"), _kzl_in("kzl_coverage")
+    m, c = _kzl_in("kzl_requirements"), _kzl_in("kzl_requirements", "IN_COVERAGE")
     r = m.earth_radius_m + m.terrasar_altitude_km * 1e3
     ground = math.sqrt(m.gm_m3_s2 / r**3) * m.earth_radius_m
     return c.receiver_footprint_km * 1e3 / (ground - m.aircraft_speed_mps)
@@ -161,7 +161,7 @@ def _kzl00_pointing_shift_m() -> float:
     beam at the slant range; the distance between the two points there."""
     from scipy.spatial.transform import Rotation
 
-    m, c, s = _kzl_in("kzl_models"), _kzl_in("kzl_coverage"), _kzl_in("kzl_scenario")
+    m, c, s = _kzl_in("kzl_requirements"), _kzl_in("kzl_requirements", "IN_COVERAGE"), _kzl_in("kzl_scenario")
     look = math.radians(c.look_angle_deg)
     beam = np.array([0.0, math.sin(look), -math.cos(look)])  # x along track, z up
     slant = s.height_m / math.cos(look)
@@ -174,7 +174,7 @@ def _kzl00_baseline_arcsec() -> float:
     """InSAR oracle: height h = H - R cos(theta) with R sin(theta) fixed by the baseline tilt, so a
     tilt d alpha moves the height by R sin(theta) d alpha (differentiated numerically here by a
     central difference of the flat-earth geometry); the tilt giving 1 m, in arcsec."""
-    m, c = _kzl_in("kzl_models"), _kzl_in("kzl_coverage")
+    m, c = _kzl_in("kzl_requirements"), _kzl_in("kzl_requirements", "IN_COVERAGE")
     H, th = m.terrasar_altitude_km * 1e3, math.radians(c.look_angle_deg)
     R = H / math.cos(th)
 
@@ -190,7 +190,7 @@ def _kzl00_baseline_mm() -> float:
     """InSAR oracle: the interferometric phase of a perpendicular baseline B sees a height change
     dh as a look-angle change dh / (R sin theta), and a baseline length error dB as dB / (B tan
     theta); equal for 1 m: dB = B / (R sin theta tan theta), flat earth, in mm."""
-    m, c = _kzl_in("kzl_models"), _kzl_in("kzl_coverage")
+    m, c = _kzl_in("kzl_requirements"), _kzl_in("kzl_requirements", "IN_COVERAGE")
     th = math.radians(c.look_angle_deg)
     R = m.terrasar_altitude_km * 1e3 / math.cos(th)
     return 1e3 * c.perp_baseline_m / (R * math.sin(th) * math.tan(th))
@@ -199,7 +199,7 @@ def _kzl00_baseline_mm() -> float:
 def _kzl00_correlation_10s() -> float:
     """Quadrature oracle: the normalised autocorrelation of white noise through the impulse
     response exp(-t / tau), integral of h(t) h(t + 10) over that of h^2 (scipy quad)."""
-    tau = _kzl_in("kzl_coverage").receiver_filter_tau_s
+    tau = _kzl_in("kzl_requirements", "IN_COVERAGE").receiver_filter_tau_s
     num = integrate.quad(lambda t: math.exp(-t / tau) * math.exp(-(t + 10.0) / tau), 0, math.inf)[0]
     den = integrate.quad(lambda t: math.exp(-2 * t / tau), 0, math.inf)[0]
     return num / den
@@ -236,7 +236,8 @@ def _kzl01_first_order(T: float) -> float:
     P <- (I + F T) P (I + F T)^T + G Q G^T T, written out here; F, G Q G^T and P0 are the model's
     (the model under test is the discretisation)."""
     from navcore.integration.ekf_ins_gnss import _gqgt, _initial_covariance
-    from navcore.papers.kzl_models import table1_attitude, table1_F, table1_scenario
+    from navcore.papers.kzl_scenario import table1_attitude, table1_scenario
+    from navcore.papers.kzl_tightly_coupled_filter import table1_F
 
     F, C = table1_F(), table1_attitude()
     gqg = _gqgt(table1_scenario())
@@ -424,7 +425,7 @@ def _kzl_qcorr_residual_deg() -> float:
     the body side as the printed right-hand product R_hat Exp(-dpsi); its angle to R."""
     from scipy.spatial.transform import Rotation
 
-    from navcore.papers.kzl_models import QCORR_DPSI
+    from navcore.papers.kzl_tightly_coupled_filter import QCORR_DPSI
 
     R = Rotation.from_euler("ZYX", [90.0, 0.0, 0.0], degrees=True)  # Table 1: level, heading 90
     R_hat = Rotation.from_rotvec(QCORR_DPSI) * R
@@ -435,7 +436,7 @@ def _kzl_qcorr_residual_deg() -> float:
 def _kzl_dd_rank(printed: bool) -> int:
     """Exact rank of the two DD attitude rows (l_1 - l_2) x (C b) of Eq. (17), both with the
     y baseline as printed or with the x and y baselines, Table 1 heading 90 deg (C typed in)."""
-    from navcore.papers.kzl_models import table1_los
+    from navcore.papers.kzl_scenario import table1_los
 
     b = Fraction(_kzl_in("kzl_scenario").baseline_m)
     los = table1_los(2)
@@ -1410,7 +1411,9 @@ ORACLES = [
             np.degrees(
                 __import__("scipy.spatial.transform", fromlist=["Rotation"])
                 .Rotation.from_rotvec(
-                    __import__("navcore.papers.kzl_models", fromlist=["QCORR_DPSI"]).QCORR_DPSI
+                    __import__(
+                        "navcore.papers.kzl_tightly_coupled_filter", fromlist=["QCORR_DPSI"]
+                    ).QCORR_DPSI
                 )
                 .magnitude()
             )

@@ -54,7 +54,7 @@ def test_heading_observability_is_the_row_space_test(mode):
     [H; HF; ...; HF^16] exactly when the least-squares residual of e against those rows (each
     normalised) is zero; ``heading_observable`` decides it from two observability ranks."""
     from navcore.inertial.error_model17 import ERROR_LAYOUT_17
-    from navcore.papers import kzl_models as km
+    from navcore.papers import kzl_tightly_coupled_filter as km
 
     for nu in (2, 4, 8):
         F, C, los = km.table1_F(), km.table1_attitude(), km.table1_los(nu)

@@ -1,4 +1,4 @@
-"""KZL Sec. 3.6 and Table 1: the simulation scenario, as registered inputs, and the cached Monte Carlo.
+"""KZL Sec. 3.6 and Table 1: the simulation scenario, as registered inputs, and its Monte Carlo.
 
 Table 1's IMU block is scrambled by the OCR (numbers and labels on different lines). The
 assignment used here keeps both in their printed order and moves the gyro numbers up one
@@ -33,20 +33,15 @@ convention (``constellation``); the Monte Carlo ensemble size is a declared read
 
 from __future__ import annotations
 
-import hashlib
-import inspect
-import os
-import sys
-import tempfile
 from collections import OrderedDict
-from dataclasses import fields, replace
-from pathlib import Path
+from dataclasses import replace
 from typing import cast
 
 import numpy as np
 
 from navcore.claims import InputSet, for_each_band_run, input_cache
-from navcore.frames import dcm_ecef_to_ned, ecef_to_ned
+from navcore.claims.run_store import RunStore
+from navcore.frames import dcm_ecef_to_ned, dcm_from_euler, ecef_to_ned
 from navcore.gnss.constellation import nominal_gps_constellation
 from navcore.gnss.dop import satellite_priority
 from navcore.inertial.imu import ImuSpec, imu_spec_from_published
@@ -74,7 +69,9 @@ __all__ = [
     "monte_carlo",
     "n_runs",
     "table1",
+    "table1_attitude",
     "table1_baselines_b",
+    "table1_los",
     "table1_scenario",
     "table1_sky",
     "visibility_schedule",
@@ -390,6 +387,18 @@ def table1_sky() -> tuple[np.ndarray, np.ndarray]:
     return ecef_to_ned(pos_e, lat, lon, h), vel_e @ dcm_ecef_to_ned(lat, lon).T
 
 
+def table1_attitude() -> np.ndarray:
+    """Body-to-NED DCM of the Table 1 attitude (roll 0, pitch 0, heading 90 deg)."""
+    return dcm_from_euler(IN.roll_deg * DEG, IN.pitch_deg * DEG, IN.heading_deg * DEG)
+
+
+def table1_los(nu: int, k: int = 0) -> np.ndarray:
+    """Unit LOS (NED) of the first ``nu`` satellites in priority order at epoch ``k``."""
+    sats = table1_sky()[0][k, :nu]
+    d = sats - np.array([0.0, 0.0, 0.0])
+    return d / np.linalg.norm(d, axis=1, keepdims=True)
+
+
 @input_cache
 def table1_scenario(
     mode: str = "all", initialise: bool = True, swapped: bool = False, imu: ImuSpec | None = None
@@ -430,24 +439,29 @@ def table1_scenario(
     )
 
 
-def _source_key(run_key: str) -> str:
-    """Hash of the sources of every module the Monte Carlo depends on and of the run's arguments
-    (:func:`~navcore.integration.ekf_ins_gnss.monte_carlo_key`): the key of a run stored on disk."""
-    import navcore.estimation.discretize as m9
-    import navcore.frames as m2
-    import navcore.gnss.carrier_phase as m3
-    import navcore.gnss.constellation as m4
-    import navcore.inertial.alignment as m5
-    import navcore.inertial.error_model17 as m6
-    import navcore.inertial.imu as m7
-    import navcore.inertial.strapdown as m8
-    import navcore.integration.ekf_ins_gnss as m1
+#: The disk store of the runs (:class:`~navcore.claims.run_store.RunStore`, in the system temporary
+#: directory): a run's file is keyed on the sources of every module the Monte Carlo depends on, this
+#: module's included, and on the run's arguments (:func:`~navcore.integration.ekf_ins_gnss.monte_carlo_key`).
+_STORE = RunStore(
+    "navcore-kzl-mc",
+    modules=(
+        "navcore.integration.ekf_ins_gnss",
+        "navcore.frames",
+        "navcore.gnss.carrier_phase",
+        "navcore.gnss.constellation",
+        "navcore.inertial.alignment",
+        "navcore.inertial.error_model17",
+        "navcore.inertial.imu",
+        "navcore.inertial.strapdown",
+        "navcore.estimation.discretize",
+        __name__,
+    ),
+)
 
-    h = hashlib.sha256()
-    for mod in (m1, m2, m3, m4, m5, m6, m7, m8, m9, sys.modules[__name__]):
-        h.update(inspect.getsource(mod).encode())
-    h.update(repr((run_key, np.__version__)).encode())
-    return h.hexdigest()[:24]
+
+def _label(mode: str, initialise: bool) -> str:
+    """The readable prefix of a run's file name in the store."""
+    return f"{mode}-{initialise}"
 
 
 #: Monte Carlo runs made in this process, by :func:`~navcore.integration.ekf_ins_gnss.monte_carlo_key`
@@ -457,13 +471,6 @@ def _source_key(run_key: str) -> str:
 #: so it cannot tell that a mode ignores one of them); a batched band stores its runs here too.
 _RUNS: OrderedDict[str, MonteCarloResult] = OrderedDict()
 _RUNS_KEPT = 1024
-
-
-def _read_only(result: MonteCarloResult) -> MonteCarloResult:
-    """``result`` with its arrays made read-only (it is shared by every caller with its key)."""
-    for f in fields(result):
-        getattr(result, f.name).flags.writeable = False
-    return result
 
 
 def _run_arguments(mode: str, initialise: bool, imu_name: str) -> tuple[Scenario, int, dict[str, int]]:
@@ -500,7 +507,12 @@ def _monte_carlo(mode: str, initialise: bool, imu_name: str) -> MonteCarloResult
     result = _RUNS.get(key)
     if result is None:
         sc, runs, extra = args
-        result = _stored_or_run(key, sc, mode, runs, initialise, extra)
+        result = _STORE.read_or_run(
+            key,
+            _label(mode, initialise),
+            MonteCarloResult,
+            lambda: run_monte_carlo(sc, cast(Mode, mode), runs, SEED, initialise=initialise, **extra),
+        )
         _remember(key, result)
     else:
         _RUNS.move_to_end(key)
@@ -526,7 +538,7 @@ def _run_band(mode: str, initialise: bool, ahead: list[tuple[Scenario, int, dict
             _RUNS.move_to_end(key)
             continue
         sc, runs, extra = args
-        stored = _stored(key, mode, initialise)
+        stored = _STORE.read(key, _label(mode, initialise), MonteCarloResult)
         if stored is not None:
             _remember(key, stored)
             continue
@@ -546,7 +558,7 @@ def _run_band(mode: str, initialise: bool, ahead: list[tuple[Scenario, int, dict
                 attitude_min_sats=min_sats,
             )
             for k, result in zip(chunk, results, strict=True):
-                _remember(k, _store(k, mode, initialise, result))
+                _remember(k, _STORE.write(k, _label(mode, initialise), result))
 
 
 def monte_carlo(mode: str, initialise: bool = True, imu_name: str = "table1") -> MonteCarloResult:
@@ -559,8 +571,9 @@ def monte_carlo(mode: str, initialise: bool = True, imu_name: str = "table1") ->
     announces (:func:`~navcore.claims.inputs.for_each_band_run`), the first call makes every run of the
     batch at once (:func:`~navcore.integration.ekf_ins_gnss.run_monte_carlo_batch`, which gives each
     run the numbers it gets alone) and stores them for the band's later calls. The arrays of the
-    result are read-only. Results are also kept on disk (in the system temporary directory, under a
-    key hashed from the sources of every module involved and from the scenario), so that the
+    result are read-only. Results are also kept on disk (a :class:`~navcore.claims.run_store.RunStore`
+    in the system temporary directory, under a key hashed from the sources of every module involved
+    and from the scenario), so that the
     chapter's notebooks, the ledger page and the tests share one computation per code version
     and input values. Set ``NAVCORE_NO_DISK_CACHE=1`` to recompute.
     """
@@ -581,45 +594,3 @@ def monte_carlo(mode: str, initialise: bool = True, imu_name: str = "table1") ->
 
 
 monte_carlo.cache_clear = _monte_carlo.cache_clear  # type: ignore[attr-defined]
-
-
-def _disk_path(key: str, mode: str, initialise: bool) -> Path | None:
-    """Where the run of ``key`` is kept on disk, or ``None`` with the disk cache off."""
-    if os.environ.get("NAVCORE_NO_DISK_CACHE"):
-        return None
-    return Path(tempfile.gettempdir()) / "navcore-kzl-mc" / f"{mode}-{initialise}-{_source_key(key)}.npz"
-
-
-def _stored(key: str, mode: str, initialise: bool) -> MonteCarloResult | None:
-    """The run of ``key`` from the disk cache, or ``None``."""
-    path = _disk_path(key, mode, initialise)
-    if path is None or not path.exists():
-        return None
-    with np.load(path) as data:
-        return _read_only(MonteCarloResult(**{f.name: data[f.name] for f in fields(MonteCarloResult)}))
-
-
-def _store(key: str, mode: str, initialise: bool, result: MonteCarloResult) -> MonteCarloResult:
-    """``result`` kept on disk (with the disk cache on) and made read-only."""
-    path = _disk_path(key, mode, initialise)
-    if path is not None:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        tmp = path.with_suffix(f".{os.getpid()}.npz")
-        np.savez(tmp, **{f.name: getattr(result, f.name) for f in fields(MonteCarloResult)})
-        os.replace(tmp, path)
-    return _read_only(result)
-
-
-def _stored_or_run(
-    key: str, sc: Scenario, mode: str, runs: int, initialise: bool, extra: dict[str, int]
-) -> MonteCarloResult:
-    """The run of ``key`` from the disk cache, or computed (and stored) if it is not there."""
-    stored = _stored(key, mode, initialise)
-    if stored is not None:
-        return stored
-    return _store(
-        key,
-        mode,
-        initialise,
-        run_monte_carlo(sc, cast(Mode, mode), runs, SEED, initialise=initialise, **extra),
-    )

@@ -1,5 +1,7 @@
-"""KZL Sec. 3.6 (Table 1, Figs. 4-5): the stand-alone numbers and the orderings of the four
-configurations, from the seeded Monte Carlo of :mod:`navcore.papers.kzl_scenario`.
+"""KZL Secs. 3.6-3.7 (Table 1, Figs. 4-5, the conclusions): the stand-alone numbers and the
+orderings of the four configurations, from the seeded Monte Carlo of
+:mod:`navcore.papers.kzl_scenario`; the loosely coupled filter's three-satellite gap, and the
+baseline trade-off of the conclusions.
 
 Segments of the assumed visibility schedule (epochs, 1 Hz): 8 satellites 1-59 s, 4 at 60-89 s,
 3 at 90-119 s, 2 at 120-149 s, 5 at 150-180 s.
@@ -7,14 +9,16 @@ Segments of the assumed visibility schedule (epochs, 1 Hz): 8 satellites 1-59 s,
 
 from __future__ import annotations
 
+import itertools
+
 import numpy as np
 
 from navcore.claims import EXACT, Claim, Erratum, InputSet, printed, prose
 from navcore.claims import monte_carlo as mc_tolerance
-from navcore.papers.kzl_models import IN as MODELS
 from navcore.papers.kzl_quotes import quoted
-from navcore.papers.kzl_scenario import IN, N_RUNS, kzl_imu, monte_carlo, visibility_schedule
-from navcore.units import DEG
+from navcore.papers.kzl_requirements import IN as MODELS
+from navcore.papers.kzl_scenario import IN, N_RUNS, kzl_imu, monte_carlo, table1_los, visibility_schedule
+from navcore.units import DEG, GPS_L1_WAVELENGTH_M
 
 PAGE3 = "kzl/03-simulation"
 
@@ -161,7 +165,7 @@ def tc_heading_improvement_bound() -> float:
     """Largest fraction of the heading error code and delta range can remove in the Table 1 flight:
     0 when the heading error is unobservable (it lies in the null space of the TC observability
     matrix in straight and level flight), else up to 1. Reads the published flight only."""
-    from navcore.papers.kzl_models import heading_observable
+    from navcore.papers.kzl_tightly_coupled_filter import heading_observable
 
     return 1.0 if heading_observable("tc", 8) else 0.0
 
@@ -207,6 +211,25 @@ def _dd_best() -> bool:
         }
         ok &= m["tc_dd"] <= (1.0 + IN_SIM.sampling_slack) * min(m["tc"], m["tc_att"])
     return bool(ok)
+
+
+def _loose_three_no_fix() -> bool:
+    """Three satellites: the code geometry [-l^T 1] has rank 3 < 4 unknowns, so a receiver alone
+    gives no position fix and a loosely coupled filter gets no GNSS update."""
+    G = np.hstack([-table1_los(3), np.ones((3, 1))])
+    return int(np.linalg.matrix_rank(G)) == 3
+
+
+def baseline_tradeoff(lengths=(0.5, 1.0, 2.0, 4.0)) -> dict[str, tuple[float, float]]:
+    """Per baseline length (m): integer candidates per DD, 2 B / lambda + 1, and the attitude
+    error from a 0.01-cycle phase error, lambda 0.01 / B (mrad)."""
+    lam = GPS_L1_WAVELENGTH_M
+    return {f"{b:g} m": (2 * b / lam + 1, 1e3 * 0.01 * lam / b) for b in (*lengths, IN.baseline_m)}
+
+
+def _baseline_tradeoff() -> bool:
+    v = [baseline_tradeoff()[k] for k in ("0.5 m", "1 m", "2 m", "4 m")]
+    return all(b[0] > a[0] and b[1] < a[1] for a, b in itertools.pairwise(v))
 
 
 def pointing_accuracy_deg() -> float:
@@ -447,6 +470,36 @@ CLAIMS = [
         note="Largest TC + DD attitude RMS or filter $1\\sigma$ on any axis after 10 s, with 2-8 "
         "satellites. 'About 0.5 deg' is read as an upper bound: at most 0.5 deg, with the 10 % that "
         "'about' allows. " + _MC_NOTE,
+        discussed_in=PAGE3,
+    ),
+    Claim(
+        id="KZL-fig5-loose-three-unbounded",
+        aliases=("KZL-c33-loose-three",),
+        locator="Sec. 3.6, discussion of Fig. 5",
+        quantity="with three satellites a loosely coupled integration is not bounded: the receiver's "
+        "code geometry has rank 3 < 4 unknowns, so it gives no fix to the fusion filter",
+        published=True,
+        unit="statement",
+        compute=_loose_three_no_fix,
+        tolerance=EXACT,
+        expected_status="reproduced",
+        note="Table 1 sky, first three satellites. Without a fix the loosely coupled filter runs free "
+        "inertial, whose error grows to about 1 km in 3 min (KZL-fig5-ins-position).",
+        discussed_in=PAGE3,
+    ),
+    Claim(
+        id="KZL-sec3.7-baseline-tradeoff",
+        aliases=("KZL-c34-baselines",),
+        locator="Sec. 3.7",
+        quantity="shorter baselines shrink the integer search, longer baselines improve the attitude: "
+        "over 0.5, 1, 2, 4 m the candidates per DD rise and the attitude error falls",
+        published=True,
+        unit="statement",
+        compute=_baseline_tradeoff,
+        tolerance=EXACT,
+        expected_status="reproduced",
+        note="Candidates $2 B / \\lambda + 1$ (about 22 for the Table 1 2 m baselines); attitude error "
+        "$0.01 \\lambda / B$ (about 1 mrad at 2 m).",
         discussed_in=PAGE3,
     ),
 ]
