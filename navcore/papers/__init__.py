@@ -39,11 +39,12 @@ READING_ORDER = (
     "atc10_multiple_access",
     "atc10_quotes",
     "atc10_tracking",
-    # KZL
+    # KZL: Secs. 1-2, 3.1-3.2, 3.3-3.5, 3.6 (covariance, then the simulation) and 3.7
+    "kzl_requirements",
+    "kzl_mechanization",
+    "kzl_tightly_coupled_filter",
     "kzl_covariance",
-    "kzl_coverage",
-    "kzl_models",
-    "kzl_quotes",
-    "kzl_scenario",
     "kzl_simulation",
+    "kzl_scenario",
+    "kzl_quotes",
 )
