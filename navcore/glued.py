@@ -2124,7 +2124,7 @@ def atc10_90_ratio(n: str) -> float:
 
 def _atc10_geometry_row(example: str, radius: str) -> dict[str, float]:
     """Table 4.2's columns of ``example`` at the synchronous orbit (``"phys"``) or the fitted ratio."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     r = paper.physical_radius_ratio() if radius == "phys" else paper.fitted_radius_ratio()
     return paper.table_4_2_from_geometry(example, r)
@@ -2137,7 +2137,7 @@ def _atc10_geometry_row(example: str, radius: str) -> dict[str, float]:
 )
 def atc10_30_r_phys() -> float:
     """Synchronous-orbit radius over the declared Earth radius (ATC-10 Sec. 4.1)."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     return float(paper.physical_radius_ratio())
 
@@ -2150,7 +2150,7 @@ def atc10_30_r_phys() -> float:
 def atc10_30_zenith_i(radius: str) -> float:
     """Largest zenith angle (deg) of Table 4.1 Example I's satellites seen from the aircraft, at the
     synchronous (``"phys"``) or fitted (``"fit"``) orbit radius."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     r = paper.physical_radius_ratio() if radius == "phys" else paper.fitted_radius_ratio()
     return float(paper.max_zenith_angle_deg("I", r))
@@ -2173,7 +2173,7 @@ def atc10_30_beta_phys(ex: str) -> float:
 )
 def atc10_30_beta_over_k(ex: str) -> float:
     """beta / K of example ``ex`` at the synchronous orbit."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     return atc10_30_beta_phys(ex) / paper.table_4_1(ex).shape[0]
 
@@ -2221,7 +2221,7 @@ def atc10_s123_invariant(ex: str) -> float:
 
 def _atc10_geometry_misses() -> dict[tuple[str, str], float]:
     """Relative misses of the synchronous-orbit beta and traces against Table 4.2 as printed."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     return {
         (ex, c): _atc10_geometry_row(ex, "phys")[c] / float(paper.TABLE_4_2[ex][c]) - 1
@@ -2259,7 +2259,7 @@ def atc10_30_trace_deficit() -> float:
 
 def _atc10_best_triplet_ii() -> tuple[int, ...]:
     """The triplet of Example II's satellites with the smallest position trace, synchronous orbit."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     return tuple(paper.best_triplet("II", paper.physical_radius_ratio(), "trace"))
 
@@ -2277,7 +2277,7 @@ def _atc10_best_triplet_ii() -> tuple[int, ...]:
 def atc10_trace_best_ii() -> float:
     """tr (F3'F3)^-1 of the best triplet of Example II's satellites at the synchronous orbit."""
     from navcore.location import multilateration as ml
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     los = paper.example_line_of_sight("II", paper.physical_radius_ratio())
     return float(ml.position_trace(los[list(_atc10_best_triplet_ii())]))
@@ -2298,9 +2298,10 @@ def atc10_90_best_triplet() -> str:
 
 def _atc10_exact_row_ii_5() -> tuple[float, ...]:
     """Table 4.3's row of Example II at sigma0 = 5 ns from the printed Table 4.2, exact psi."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_clock_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as geometry
 
-    return tuple(paper.table_4_3_row(paper.printed_table_4_2("II"), 5.0))
+    return tuple(paper.table_4_3_row(geometry.printed_table_4_2("II"), 5.0))
 
 
 @register(
@@ -2332,19 +2333,21 @@ def atc10_32_psi_needed_ii_5() -> float:
     """The psi for which (4.5.35) with the printed Table 4.2 gives Table 4.3's printed sd_N (II, 5 ns)."""
     from scipy import optimize
 
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_clock_tracking as clock
+    from navcore.papers import atc10_tracking_geometry as paper
 
     printed = paper.printed_table_4_2("II")
     target = float(paper.TABLE_4_3[("II", 5.0)][3])
     return float(
-        optimize.brentq(lambda p: paper.table_4_3_row(printed, 5.0, psi_value=p)[3] - target, 0.01, 0.1)
+        optimize.brentq(lambda p: clock.table_4_3_row(printed, 5.0, psi_value=p)[3] - target, 0.01, 0.1)
     )
 
 
 def _atc10_fit_row_i_5() -> tuple[float, ...]:
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_clock_tracking as clock
+    from navcore.papers import atc10_tracking_geometry as paper
 
-    return tuple(paper.table_4_3_row(paper.table_4_2_from_geometry("I", paper.fitted_radius_ratio()), 5.0))
+    return tuple(clock.table_4_3_row(paper.table_4_2_from_geometry("I", paper.fitted_radius_ratio()), 5.0))
 
 
 @register(
@@ -2370,15 +2373,16 @@ def atc10_32_sdn1_i_5() -> float:
 def _atc10_phys_lowering() -> list[float]:
     """1 - (Table 4.3's sd_0 or sd_N from the synchronous-orbit geometry) / (the same from the printed
     Table 4.2), over both examples and the three sigma0."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_clock_tracking as clock
+    from navcore.papers import atc10_tracking_geometry as paper
 
     r_phys = paper.physical_radius_ratio()
     return [
         1
-        - paper.table_4_3_row(paper.table_4_2_from_geometry(ex, r_phys), s0)[col]
-        / paper.table_4_3_row(paper.printed_table_4_2(ex), s0)[col]
+        - clock.table_4_3_row(paper.table_4_2_from_geometry(ex, r_phys), s0)[col]
+        / clock.table_4_3_row(paper.printed_table_4_2(ex), s0)[col]
         for ex in ("I", "II")
-        for s0 in paper.sigma0_values()
+        for s0 in clock.sigma0_values()
         for col in (2, 3)
     ]
 
@@ -2411,7 +2415,7 @@ def atc10_32_phys_lowering_hi() -> float:
 def atc10_30_s123_printed_residual_pct() -> float:
     """Largest relative miss (%) of 1'(F3'F3)^-1 1 in ECEF at the fitted radius (the printed (4.5.30))
     against Table 4.2's printed S3, over both examples."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     return float(
         100
@@ -2431,7 +2435,7 @@ def atc10_32_col5_corrected(ex: str, s0: str) -> float:
     """sd_(N+1) of Table 4.3 col. (v) for example ``ex`` at sigma0 = ``s0`` ns, with the invariant
     1'(F3 F3')^-1 1 of the synchronous geometry in place of the printed S3 (erratum
     ATC10-E4.1-three-satellite-clock-term), ft."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_examples as paper
 
     return float(paper.first_three_satellite_sd_invariant(ex, float(s0)))
 
@@ -2497,8 +2501,8 @@ def atc10_21_upper_efolds() -> float:
 def atc10_30_fit_worst_pct() -> float:
     """Largest relative miss (%) over both examples and the five columns of Table 4.2 computed as the
     paper did (the printed (4.5.30) for col. 5, the aircraft at its height) at the fitted radius."""
-    from navcore.papers import atc10_tracking as paper
-    from navcore.papers.atc10_tracking import _printed_table_4_2_as_computed as as_computed
+    from navcore.papers import atc10_tracking_geometry as paper
+    from navcore.papers.atc10_tracking_geometry import _printed_table_4_2_as_computed as as_computed
 
     r_fit = paper.fitted_radius_ratio()
     return float(
@@ -3597,12 +3601,13 @@ def atc10_31_convergence_speedup() -> float:
     import numpy as np
 
     from navcore.location import clock_tracking as ct
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_clock_tracking as clock
+    from navcore.papers import atc10_tracking_geometry as paper
 
     speedups = []
     for ex in ("I", "II"):
         b = float(paper.TABLE_4_2[ex]["beta"])
-        for s0 in paper.sigma0_values():
+        for s0 in clock.sigma0_values():
             steps = ct.convergence_steps(ct.gain_recursion(b, 50.0, s0, 3000), 0.1)
             if steps > 0:
                 speedups.append((2.3 / float(ct.psi(ct.alpha_parameter(s0, 50.0, b))) - 1) / steps)
@@ -3612,16 +3617,18 @@ def atc10_31_convergence_speedup() -> float:
 def _atc10_printed_ms_factors() -> list[float]:
     """(rms at N + 1 with the printed S3 over that with the invariant S3)^2, both examples and the
     three published sigma0, at the fitted geometry (the finite-N gains and the exact extrapolation)."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_clock_tracking as paper
+    from navcore.papers import atc10_tracking_examples as examples
+    from navcore.papers import atc10_tracking_geometry as geometry
 
-    r_fit = paper.fitted_radius_ratio()
+    r_fit = geometry.fitted_radius_ratio()
     out = []
     for ex in ("I", "II"):
-        geo = paper.table_4_2_from_geometry(ex, r_fit)
+        geo = geometry.table_4_2_from_geometry(ex, r_fit)
         printed_geo = dict(geo, s_123=geo["s_123_printed"])
         for s0 in paper.sigma0_values():
-            pred = paper.rms_history_ft(geo, s0, paper.MC_N_LAST, 1)[1][-1]
-            pred_p = paper.rms_history_ft(printed_geo, s0, paper.MC_N_LAST, 1)[1][-1]
+            pred = examples.rms_history_ft(geo, s0, paper.MC_N_LAST, 1)[1][-1]
+            pred_p = examples.rms_history_ft(printed_geo, s0, paper.MC_N_LAST, 1)[1][-1]
             out.append(float((pred_p / pred) ** 2))
     return out
 
@@ -3646,7 +3653,7 @@ def atc10_32_printed_ms_factor(end: str) -> float:
 def atc10_32_mse_i_5_n0() -> float:
     """E||xi_p||^2 at the least-squares epoch n = 0 from the seeded tracker Monte Carlo, Example I,
     sigma0 = 5 ns, ft^2."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_clock_tracking as paper
 
     return float(paper.tracker_monte_carlo("I", 5.0).position_mse[0])
 
@@ -3659,7 +3666,7 @@ def atc10_32_mse_i_5_n0() -> float:
 def atc10_32_normvar_i_5_n0() -> float:
     """Var ||xi_p|| at the least-squares epoch n = 0 from the seeded tracker Monte Carlo, Example I,
     sigma0 = 5 ns, ft^2."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_clock_tracking as paper
 
     return float(paper.tracker_monte_carlo("I", 5.0).position_norm_variance[0])
 
@@ -3671,7 +3678,7 @@ def atc10_32_normvar_i_5_n0() -> float:
 )
 def atc10_90_ms_left_5ns(ex: str) -> float:
     """(sd_N / sd_0)^2 of Table 4.3 from the printed Table 4.2 of Example ``ex``, sigma0 = 5 ns."""
-    from navcore.papers import atc10_tracking as pt
+    from navcore.papers import atc10_tracking_examples as pt
 
     return float(pt.ms_ratio_tracking(ex, 5.0))
 
@@ -3758,10 +3765,11 @@ def atc10_21_lower_gap(end: str) -> float:
 
 
 def _atc10_outage_corrected_s(ex: str) -> float:
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_examples as examples
+    from navcore.papers import atc10_tracking_geometry as paper
 
     return float(
-        paper.acceptable_outage_s(ex, 5.0, paper.table_4_2_from_geometry(ex, paper.fitted_radius_ratio()))
+        examples.acceptable_outage_s(ex, 5.0, paper.table_4_2_from_geometry(ex, paper.fitted_radius_ratio()))
     )
 
 
@@ -3856,12 +3864,12 @@ def _across01_dilution_geometries() -> dict[str, tuple[Any, float]]:
     with four (the fewest of four or more)."""
     import numpy as np
 
-    from navcore.papers import atc10_tracking, kzl_scenario, sp_flyby
+    from navcore.papers import atc10_tracking_geometry, kzl_scenario, sp_flyby
 
-    radius = atc10_tracking.physical_radius_ratio()
+    radius = atc10_tracking_geometry.physical_radius_ratio()
     out: dict[str, tuple[Any, float]] = {
-        "atc-i": (atc10_tracking.example_line_of_sight("I", radius), 1.0),
-        "atc-ii": (atc10_tracking.example_line_of_sight("II", radius), 1.0),
+        "atc-i": (atc10_tracking_geometry.example_line_of_sight("I", radius), 1.0),
+        "atc-ii": (atc10_tracking_geometry.example_line_of_sight("II", radius), 1.0),
         "sp": (-sp_flyby.flyby_geometry().u_ned[0], 1.0),
     }
     positions, _ = kzl_scenario.table1_sky()

@@ -384,7 +384,8 @@ def _atc10_psi(data: Data) -> None:
     the first at small alpha and the second at large alpha (1e-3 relative); the Table 4.3
     markers at alpha = (8/27) sigma0^2 beta / sigma^2."""
     from navcore.location.clock_tracking import psi
-    from navcore.papers import atc10_tracking as m
+    from navcore.papers import atc10_clock_tracking as clock
+    from navcore.papers import atc10_tracking_geometry as m
 
     (ax,) = data
     main = ax.get("ψ(α), Eq. (4.5.34)")
@@ -398,7 +399,7 @@ def _atc10_psi(data: Data) -> None:
     for ex in ("I", "II"):
         s = ax.get(f"Table 4.3, Example {ex}")
         beta = float(m.TABLE_4_2[ex]["beta"])
-        near(s.x, [8 / 27 * s0**2 * beta / m.IN.sigma_ns**2 for s0 in m.sigma0_values()])
+        near(s.x, [8 / 27 * s0**2 * beta / m.IN.sigma_ns**2 for s0 in clock.sigma0_values()])
         near(s.y, psi(s.x))
 
 
@@ -408,7 +409,9 @@ def _atc10_rms(data: Data, fig_id: str) -> None:
     inputs give the same history (they differ only in s_123), and the corrected
     three-satellite error is the smaller (erratum E4-1: the printed formula overstates it)."""
     from navcore.figures.atc10_tracking import M_SHOWN, N_SHOWN
-    from navcore.papers import atc10_tracking as m
+    from navcore.papers import atc10_clock_tracking as clock
+    from navcore.papers import atc10_tracking_examples as examples
+    from navcore.papers import atc10_tracking_geometry as m
 
     example = "I" if fig_id.endswith("4.2") else "II"
     printed = m.printed_table_4_2(example)
@@ -416,10 +419,10 @@ def _atc10_rms(data: Data, fig_id: str) -> None:
     corrected["s_123"] = m.table_4_2_from_geometry(example, m.fitted_radius_ratio())["s_123"]
     (ax,) = data
     drawn = [s for s in lines(ax) if len(s.x) > 2]
-    assert len(drawn) == 3 * len(m.sigma0_values())
-    for i, s0 in enumerate(m.sigma0_values()):
-        n, rms_p = m.rms_history_ft(printed, s0, N_SHOWN, M_SHOWN)
-        _, rms_c = m.rms_history_ft(corrected, s0, N_SHOWN, M_SHOWN)
+    assert len(drawn) == 3 * len(clock.sigma0_values())
+    for i, s0 in enumerate(clock.sigma0_values()):
+        n, rms_p = examples.rms_history_ft(printed, s0, N_SHOWN, M_SHOWN)
+        _, rms_c = examples.rms_history_ft(corrected, s0, N_SHOWN, M_SHOWN)
         head, tail_p, tail_c = drawn[3 * i : 3 * i + 3]
         near(head.y, rms_p[: N_SHOWN + 1])
         near(head.x, n[: N_SHOWN + 1])
@@ -441,14 +444,16 @@ def _atc10_tracker(data: Data) -> None:
     """The recursion recomputed from the paper module. Oracle: the seeded Monte Carlo of the
     whole tracker (10 000 runs) agrees with the recursion within 5 % (the rms of 10 000 runs
     has a relative standard error of 0.7 %; 5 % leaves room for the model's approximations)."""
-    from navcore.papers import atc10_tracking as m
+    from navcore.papers import atc10_clock_tracking as clock
+    from navcore.papers import atc10_tracking_examples as examples
+    from navcore.papers import atc10_tracking_geometry as m
 
     (ax,) = data
     geo = m.table_4_2_from_geometry("II", m.fitted_radius_ratio())
     recursions = [s for s in lines(ax) if s.label.startswith("recursion")]
     mcs = [s for s in lines(ax) if s.label == "Monte Carlo"]
     for s0, rec, mc in zip((5.0, 50.0), recursions, mcs, strict=True):
-        _, pred = m.rms_history_ft(geo, s0, m.MC_N_LAST, 1)
+        _, pred = examples.rms_history_ft(geo, s0, clock.MC_N_LAST, 1)
         near(rec.y, pred)
         sel = mc.x.astype(int)
         near(mc.y, pred[sel], rtol=0.05, what=f"Monte Carlo against the recursion, sigma0 {s0}")

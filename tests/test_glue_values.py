@@ -730,13 +730,14 @@ def _atc10_convergence_speedup() -> float:
     """The gains of (4.5.16)-(4.5.25) iterated by hand, their limit psi / beta from the real root of
     psi^3 + q psi - q = 0, q = 27 alpha / 4 (numpy.roots), alpha = (8/27) sigma0^2 beta / sigma^2;
     the steps counted to the last gain more than 10 % from the limit."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_clock_tracking as clock
+    from navcore.papers import atc10_tracking_geometry as paper
 
     sigma = 50.0
     out = []
     for ex in ("I", "II"):
         beta = float(paper.TABLE_4_2[ex]["beta"])
-        for s0 in paper.sigma0_values():
+        for s0 in clock.sigma0_values():
             q = 27 / 4 * (8 / 27) * s0**2 * beta / sigma**2
             psi = float(next(r.real for r in np.roots([1.0, 0.0, q, -q]) if abs(r.imag) < 1e-9))
             limit = psi / beta
@@ -758,7 +759,8 @@ def _atc10_printed_ms_factors_by_hand() -> list[float]:
     clock variance one epoch after the drop, v = sigma^2 gamma_N + 2 sigma0^2 + 2 d_N, and the
     mean squares sigma^2 tr3 + v S3 with the printed and the invariant S3 (the geometry's columns
     are the model's, the inputs of this arithmetic)."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_clock_tracking as clock
+    from navcore.papers import atc10_tracking_geometry as paper
 
     sigma, n_last = 50.0, 150
     r_fit = paper.fitted_radius_ratio()
@@ -766,7 +768,7 @@ def _atc10_printed_ms_factors_by_hand() -> list[float]:
     for ex in ("I", "II"):
         geo = paper.table_4_2_from_geometry(ex, r_fit)
         beta = geo["beta"]
-        for s0 in paper.sigma0_values():
+        for s0 in clock.sigma0_values():
             gamma, d = 1 / beta, 0.0
             for _ in range(n_last):
                 s_n = 2 * s0**2 + sigma**2 * gamma + 2 * d
@@ -786,7 +788,7 @@ def _atc10_ls_position_norm() -> tuple[float, float, float, float]:
     its mean over the tracker's 10 000 runs, sqrt(2 sum l_i^2 / runs), and Var||xi|| from 2e6
     seeded Gaussian draws with the standard deviation of a 10 000-run sample variance,
     sqrt((m4 - v^2) / runs), m4 the fourth central moment of the norm."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     runs = 10_000
     F = _atc10_los("I", "fit")
@@ -906,7 +908,7 @@ def _atc10_outage_closed_form(ex: str) -> float:
     v(m) S3 first exceeds (f sd_0)^2, sd_0^2 = sigma^2 (tr + S / beta), at the integer above the
     positive root of that quadratic in m; the outage is one epoch (1 s) less. psi is the cubic's
     root; the geometry's columns are the model's (inputs of this arithmetic)."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     sigma, s0, f = 50.0, 5.0, paper.IN.outage_threshold_factor
     g = paper.table_4_2_from_geometry(ex, paper.fitted_radius_ratio())
@@ -2333,7 +2335,7 @@ _TABLE_42 = {
 def _atc10_radius(which: str) -> float:
     """The synchronous orbit (brentq of GM/r^2 = w^2 r with the declared GM and period) over the
     declared Earth radius, or the declared fitted ratio."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     if which == "fit":
         return float(paper.IN.radius_ratio)
@@ -2352,7 +2354,7 @@ def _atc10_los(example: str, which: str, aircraft_height: bool = False) -> np.nd
     """Unit vectors satellite -> aircraft of a Table 4.1 example (the declared sub-satellite points
     and aircraft position), the aircraft on the unit sphere or, with ``aircraft_height``, at the
     declared height; a mirror of the longitudes changes none of the invariants below."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     r = _atc10_radius(which)
     h = 1 + paper.IN.aircraft_height_m / paper.IN.earth_radius_m if aircraft_height else 1.0
@@ -2379,7 +2381,7 @@ def _atc10_invariants(example: str, which: str) -> dict[str, float]:
 def _atc10_zenith_max(which: str) -> float:
     """Largest zenith angle of Example I's satellites: for central angle g between the aircraft (on
     the unit sphere) and a satellite at radius r, z = atan2(r sin g, r cos g - 1)."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     r = _atc10_radius(which)
     ac = _unit_sphere(*paper.aircraft_lat_lon())

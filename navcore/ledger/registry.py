@@ -693,7 +693,7 @@ _TASK_SECONDS = {
     "navcore.papers.atc10_multiple_access": 10.0,
     "navcore.papers.sp_antijam": 5.7,
     "navcore.papers.wf": 4.4,
-    "navcore.papers.atc10_coverage_tracking": 2.4,
+    "navcore.papers.atc10_clock_tracking": 2.4,
     "navcore.papers.sp_tracking": 0.7,
     "navcore.papers.atc10_coverage_ma": 1.5,
     "navcore.papers.atc10_jamming": 1.3,
