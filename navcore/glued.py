@@ -1892,7 +1892,7 @@ def atc10_23_w_random_1023() -> float:
 )
 def atc10_23_thm_ratio() -> float:
     """1 / (4 W tau_c) for the idealised Fig. 3.11 autocorrelation, L = 10 000 chips."""
-    from navcore.papers import atc10_multiple_access as pm
+    from navcore.papers import atc10_zakai_bandwidth as pm
 
     return float(1 / (4 * pm.w_chip_limit_ideal()))
 
@@ -1964,7 +1964,7 @@ def atc10_22_ratio_1e5() -> float:
 )
 def atc10_22_optimistic_pct() -> float:
     """100 (Exp_g / Exp - 1) for the worked example at N = 2e5, percent."""
-    from navcore.papers import atc10_multiple_access as pm
+    from navcore.papers import atc10_gaussian_comparison as pm
 
     return float(100 * (pm.worked_example_ratio() - 1))
 
@@ -1976,9 +1976,10 @@ def atc10_22_optimistic_pct() -> float:
 )
 def atc10_22_pf_factor() -> float:
     """exp(Exp_g - Exp) at N = 2e5: the factor on p_f that the Gaussian assumption misses."""
+    from navcore.papers import atc10_gaussian_comparison as gaussian
     from navcore.papers import atc10_multiple_access as pm
 
-    return float(math.exp(pm.worked_example_exp_g() - pm.worked_example_exp()))
+    return float(math.exp(pm.worked_example_exp_g() - gaussian.worked_example_exp()))
 
 
 @register(
@@ -3545,9 +3546,10 @@ def atc10_psk_kurtosis() -> float:
 def atc10_22_psk_pf_gauss() -> float:
     """False-alarm probability of the Gaussian ROC (ATC-10 Eq. (3.8.3)) at p_d = 0.9, with the
     Theorem 3.1 power of the simulated PSK amplitude density."""
+    from navcore.papers import atc10_gaussian_comparison as gaussian
     from navcore.papers import atc10_multiple_access as pm
 
-    return float(pm.gaussian_best_pf(pm.psk_contour(), 0.9))
+    return float(pm.gaussian_best_pf(gaussian.psk_contour(), 0.9))
 
 
 @register(
@@ -3560,7 +3562,7 @@ def atc10_22_psk_pf() -> float:
     least 0.9, on the stratified Monte Carlo ROC of a matched filter in multiple-access noise of
     the simulated PSK signatures (ATC-10 Sec. 3.6-3.8, N = 1e5)."""
     from navcore.detection.roc_bounds import best_pf_at_pd
-    from navcore.papers import atc10_multiple_access as pm
+    from navcore.papers import atc10_gaussian_comparison as pm
 
     roc = pm.psk_roc()
     return float(best_pf_at_pd(roc.p_f, roc.p_miss, 0.9))
@@ -3577,7 +3579,7 @@ def atc10_22_psk_pf_estimate() -> str:
     (:func:`navcore.formatting.estimate_text`)."""
     from navcore.detection.roc_bounds import best_pf_index_at_pd
     from navcore.formatting import estimate_text
-    from navcore.papers import atc10_multiple_access as pm
+    from navcore.papers import atc10_gaussian_comparison as pm
 
     roc = pm.psk_roc()
     j = best_pf_index_at_pd(roc.p_f, roc.p_miss, 0.9)
@@ -3707,9 +3709,10 @@ def atc10_21_convexity_worst() -> float:
 
     from navcore.detection.roc_bounds import chernoff_log_tails
     from navcore.papers import atc10_multiple_access as pm
+    from navcore.papers import atc10_roc_bounds as roc
 
     worst = 0.0
-    for x in pm.contours():
+    for x in roc.contours():
         rho = chernoff_log_tails(pm.noise_sec36("C2 two-point", x), np.linspace(0.02, 0.98, 49))[1]
         worst = max(worst, float(np.max(rho)) * math.sqrt(pm.b_of_contour(x)))
     return worst
@@ -3742,12 +3745,13 @@ def _atc10_21_lower_gaps() -> list[float]:
     import numpy as np
 
     from navcore.detection.roc_bounds import gallager_log_tails_lower
-    from navcore.papers import atc10_multiple_access as pm
+    from navcore.papers import atc10_gaussian_comparison as pm
+    from navcore.papers import atc10_multiple_access as noise
 
     theta = np.array([0.3, 0.5, 0.7])
     out: list[float] = []
     for x in (3.0, 5.0, 6.0):
-        lb = gallager_log_tails_lower(pm.noise_sec36("C2 two-point", x), theta)[0]
+        lb = gallager_log_tails_lower(noise.noise_sec36("C2 two-point", x), theta)[0]
         idx = [int(np.argmin(abs(pm.THETA_GRID - t))) for t in theta]
         out += [float(v) for v in np.log10(pm.exact_roc("C2 two-point", x).p_f[idx]) - lb / np.log(10)]
     return out
@@ -4188,9 +4192,10 @@ def sp22_range_km(when: str) -> float:
 def _atc10_22_best_ratios_8() -> list[float]:
     """Best actual p_f over the four densities divided by the ROC_g p_f, at the highest contour
     1/sqrt(3b) = 8, for p_d >= 0.9 and p_d >= 0.99 (the page's comparison table)."""
+    from navcore.papers import atc10_gaussian_comparison as gaussian
     from navcore.papers import atc10_multiple_access as pm
 
-    tab = pm.gaussian_comparison_table()
+    tab = gaussian.gaussian_comparison_table()
     return [
         min(tab[(n, 8.0, pd_min)][0] for n in pm.DENSITY_NAMES) / tab[(pm.DENSITY_NAMES[0], 8.0, pd_min)][1]
         for pd_min in (0.9, 0.99)

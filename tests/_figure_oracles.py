@@ -212,9 +212,11 @@ def _atc10_bounds_grid(data: Data) -> None:
     lies below its upper bound."""
     from navcore.detection.roc_bounds import roc_upper_bound
     from navcore.figures.atc10_multiple_access import ROC_THETAS
+    from navcore.papers import atc10_gaussian_comparison as gaussian
     from navcore.papers import atc10_multiple_access as m
+    from navcore.papers import atc10_roc_bounds as roc
 
-    xs = m.contours()
+    xs = roc.contours()
     assert len(data) == len(m.DENSITY_NAMES) * len(xs)
     th = np.linspace(0.005, 0.995, 199)
     for i, name in enumerate(m.DENSITY_NAMES):
@@ -224,7 +226,7 @@ def _atc10_bounds_grid(data: Data) -> None:
             _gaussian_roc_oracle(gauss, th, power, f"{name} {x} ROC_g")
             ub_f, ub_m = roc_upper_bound(m.noise_sec36(name, x), ROC_THETAS)
             _roc_close(upper, ub_f, ub_m, f"{name} {x} upper bound")
-            r = m.exact_roc(name, x)
+            r = gaussian.exact_roc(name, x)
             keep = (r.p_f > 0) & (r.p_miss > 0)
             near(actual.x, r.p_miss[keep])
             near(actual.y, r.p_f[keep])
@@ -250,10 +252,11 @@ def _atc10_two_valued(data: Data) -> None:
 def _atc10_gaussian_rocs(data: Data) -> None:
     """Oracle: ROC_g from scipy's normal tail for each contour's power N 2 tau/alpha b."""
     from navcore.papers import atc10_multiple_access as m
+    from navcore.papers import atc10_roc_bounds as roc
 
     (ax,) = data
     th = np.linspace(0.01, 0.99, 197)
-    for x in m.contours():
+    for x in roc.contours():
         power = m.IN.n_sec36 * 2 * m.IN.tau_over_alpha_sec36 * m.b_of_contour(x)
         _gaussian_roc_oracle(ax.get(f"1/√(3b) = {x:g}"), th, power, f"contour {x}")
 
@@ -280,6 +283,7 @@ def _atc10_exp_vs_expg(data: Data) -> None:
     """Recomputed from Eq. (3.8.16). Oracle: the identity line Exp = Exp_g, every curve below
     it and approaching it as N grows, and the worked example's point is the paper module's."""
     from navcore.detection.roc_bounds import exponent_from_gaussian_exponent
+    from navcore.papers import atc10_gaussian_comparison as gaussian
     from navcore.papers import atc10_multiple_access as m
 
     (ax,) = data
@@ -294,7 +298,7 @@ def _atc10_exp_vs_expg(data: Data) -> None:
             assert np.all(s.y >= prev - 1e-12)
         prev = s.y
     point = next(s for s in lines(ax) if len(s.x) == 1)
-    near([point.x[0], point.y[0]], [m.worked_example_exp_g(), m.worked_example_exp()])
+    near([point.x[0], point.y[0]], [m.worked_example_exp_g(), gaussian.worked_example_exp()])
 
 
 @check("ATC10-fig3.11")
@@ -345,10 +349,11 @@ def _atc10_actual_vs_gaussian(data: Data) -> None:
     """Left: ROC_g (scipy oracle) and the actual ROCs (paper module) at contours 3, 5, 8. Right:
     the PSK Monte Carlo ROC, its Chernoff upper bound (paper module) and ROC_g; oracle: the
     Chernoff bound lies above the simulated ROC."""
+    from navcore.papers import atc10_gaussian_comparison as gaussian
     from navcore.papers import atc10_multiple_access as m
 
     left, right = data
-    th = m.THETA_GRID
+    th = gaussian.THETA_GRID
     drawn = lines(left)
     k = 0
     for x in (3.0, 5.0, 8.0):
@@ -356,13 +361,13 @@ def _atc10_actual_vs_gaussian(data: Data) -> None:
         _gaussian_roc_oracle(drawn[k], th, power, f"contour {x}")
         k += 1
         for name in m.DENSITY_NAMES:
-            r = m.exact_roc(name, x)
+            r = gaussian.exact_roc(name, x)
             keep = (r.p_f > 0) & (r.p_miss > 0)
             near(drawn[k].y, r.p_f[keep], what=f"{name} {x}")
             near(drawn[k].x, r.p_miss[keep])
             k += 1
     assert k == len(drawn)
-    r = m.psk_roc()
+    r = gaussian.psk_roc()
     keep = (r.p_f > 0) & (r.p_miss > 0)
     mc = right.get("PSK, Monte Carlo")
     near(mc.y, r.p_f[keep])
@@ -370,7 +375,7 @@ def _atc10_actual_vs_gaussian(data: Data) -> None:
     bound = right.get("Chernoff upper bound")
     _roc_close(bound, lpf, lmiss, "Chernoff")
     _below_in_log(bound, mc, "PSK")
-    power = m.IN.n_sec36 * 2 * m.IN.tau_over_alpha_sec36 / (3 * m.psk_contour() ** 2)
+    power = m.IN.n_sec36 * 2 * m.IN.tau_over_alpha_sec36 / (3 * gaussian.psk_contour() ** 2)
     _gaussian_roc_oracle(right.get("ROC_g, same power"), th, power, "PSK ROC_g")
 
 

@@ -658,7 +658,7 @@ def _atc10_psk_moments() -> tuple[float, float]:
 def _atc10_psk_threshold() -> tuple[float, float, float]:
     """The threshold the Monte Carlo ROC picks for p_d >= 0.9 (its p_f the smallest there), with
     the Monte Carlo's p_f and p_miss standard errors at it."""
-    from navcore.papers import atc10_multiple_access as pm
+    from navcore.papers import atc10_gaussian_comparison as pm
 
     roc = pm.psk_roc()
     ok = np.flatnonzero(roc.p_miss <= 0.1)
@@ -702,7 +702,7 @@ def _atc10_psk_estimate_by_hand() -> str:
     """The Monte Carlo p_f at the threshold :func:`_atc10_psk_threshold` picks, and its standard
     error, written as the book writes an estimate: Python's exponent format with the error's two
     significant digits and the estimate's digits down to the error's first, in ×10ⁿ form."""
-    from navcore.papers import atc10_multiple_access as pm
+    from navcore.papers import atc10_gaussian_comparison as pm
 
     theta, se, _ = _atc10_psk_threshold()
     roc = pm.psk_roc()
@@ -820,10 +820,11 @@ def _atc10_convexity_worst() -> float:
     theta = (N - 1) q a sinh(rho a) / (1 - q + q cosh(rho a)) (the derivative of the exponent);
     u = rho a by brentq for each contour x and threshold, and the largest u (= rho sqrt(b))."""
     from navcore.papers import atc10_multiple_access as pm
+    from navcore.papers import atc10_roc_bounds as roc
 
     n, q = pm.IN.n_sec36, 2 * pm.IN.tau_over_alpha_sec36
     worst = 0.0
-    for x in pm.contours():
+    for x in roc.contours():
         a = math.sqrt(1 / (3 * x * x))
         for theta in np.linspace(0.02, 0.98, 49):
 
@@ -866,10 +867,11 @@ def _atc10_lower_gaps_by_hand() -> list[float]:
     the exact tail sum_K Bin(N - 1, q)(K) P(a (2J - K) >= theta_g), J ~ Bin(K, 1/2) (scipy), at the
     exact ROC's grid point theta_g nearest to theta, and the corrected (3.5.14) at theta by hand
     (brentq's tilt), in decades."""
+    from navcore.papers import atc10_gaussian_comparison as gaussian
     from navcore.papers import atc10_multiple_access as pm
 
     n, q = pm.IN.n_sec36, 2 * pm.IN.tau_over_alpha_sec36
-    grid = np.asarray(pm.THETA_GRID)
+    grid = np.asarray(gaussian.THETA_GRID)
     ks = np.arange(0, 200)
     pk = stats.binom.pmf(ks, n - 1, q)
     out = []
@@ -3744,6 +3746,7 @@ def _atc10_22_exact_ratio_8(pd_min: float) -> float:
     Gaussian noise of the Theorem 3.1 power N q b (scipy's normal)."""
     import mpmath
 
+    from navcore.papers import atc10_gaussian_comparison as gaussian
     from navcore.papers import atc10_multiple_access as pm
 
     with mpmath.workdps(80):
@@ -3775,7 +3778,7 @@ def _atc10_22_exact_ratio_8(pd_min: float) -> float:
                 out += w * p
             return out
 
-        grid = [mpmath.mpf(float(t)) for t in pm.THETA_GRID]
+        grid = [mpmath.mpf(float(t)) for t in gaussian.THETA_GRID]
         level = 1 - mpmath.mpf(pd_min)
         best = []
         for name in pm.DENSITY_NAMES:

@@ -690,12 +690,15 @@ _TASK_SECONDS = {
     "navcore.papers.sp_missions": 108.0,
     "navcore.papers.kzl_simulation": 97.0,
     "navcore.papers.atc10_coverage_jamming": 13.0,
-    "navcore.papers.atc10_multiple_access": 10.0,
+    "navcore.papers.atc10_gaussian_comparison": 5.2,
+    "navcore.papers.atc10_multiple_access": 3.1,
+    "navcore.papers.atc10_roc_bounds": 2.2,
     "navcore.papers.sp_antijam": 5.7,
     "navcore.papers.wf": 4.4,
-    "navcore.papers.atc10_clock_tracking": 2.4,
+    "navcore.papers.atc10_clock_tracking": 1.8,
+    "navcore.papers.atc10_zakai_bandwidth": 1.0,
+    "navcore.papers.atc10_tracking_examples": 0.4,
     "navcore.papers.sp_tracking": 0.7,
-    "navcore.papers.atc10_coverage_ma": 1.5,
     "navcore.papers.atc10_jamming": 1.3,
 }
 
