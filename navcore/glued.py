@@ -1135,7 +1135,7 @@ def wf05_loc_nav_over(other: str) -> float:
 )
 def atc10_pf_k1000_0999() -> float:
     """p_f at the t = 0 N_ADL = 0.01 N_T threshold for K = 1000, P_DL = 0.999 (ATC-10 Sec. 2.5)."""
-    from navcore.papers import atc10_jamming as pj
+    from navcore.papers import atc10_tracking_lists as pj
 
     return float(math.exp(pj.threshold_log_pf(0.999, 1000)))
 
@@ -1152,7 +1152,7 @@ def atc10_pf_k1000_0999() -> float:
 )
 def atc10_pf_k1_088() -> float:
     """p_f at the t = 0 N_ADL = 0.01 N_T threshold for K = 1, P_DL = 0.88 (ATC-10 Sec. 2.5)."""
-    from navcore.papers import atc10_jamming as pj
+    from navcore.papers import atc10_tracking_lists as pj
 
     return float(math.exp(pj.threshold_log_pf(0.88, 1)))
 
@@ -1407,7 +1407,7 @@ def atc10_12_adl_pf_hi() -> float:
 )
 def atc10_12_k1000_critical() -> float:
     """Smallest P_DL whose K = 1000 N_ADL ceiling reaches 0.01 N_T (t = 0)."""
-    from navcore.papers import atc10_jamming as pj
+    from navcore.papers import atc10_tracking_lists as pj
 
     return float(pj.k1000_critical_p_dl())
 
@@ -1519,7 +1519,7 @@ def atc10_12_nv23_small_k() -> float:
 )
 def atc10_12_erf_coef_model() -> float:
     """The coefficient c of p_f = 1/2 - 1/2 erf(c sqrt(P0 B tau / J) - phi) in navcore's detector model."""
-    from navcore.papers import atc10_jamming as pj
+    from navcore.papers import atc10_tracking_lists as pj
 
     return float(pj.erf_argument_coefficient())
 
@@ -1531,7 +1531,7 @@ def atc10_12_erf_coef_model() -> float:
 )
 def atc10_12_erf_coef_mc() -> float:
     """The erf argument's coefficient recovered from a seeded Monte Carlo of matched-filter samples."""
-    from navcore.papers import atc10_jamming as pj
+    from navcore.papers import atc10_tracking_lists as pj
 
     return float(pj.monte_carlo_erf_coefficient())
 
@@ -1546,10 +1546,11 @@ def atc10_12_erf_coef_mc() -> float:
 )
 def atc10_erp_by_k(k: str, p_dl: str) -> float:
     """Jammer ERP (dBW) of the t = 0 N_ADL threshold for Table 1.1's K (``inf`` where none is reached)."""
-    from navcore.papers import atc10_jamming as pj
+    from navcore.papers import atc10_jamming as model
+    from navcore.papers import atc10_system_tables as pj
 
     erps = pj.erp_by_transmission_length(float(p_dl))
-    return float(erps[pj.TABLE_1_1_KS.index(int(k))])
+    return float(erps[model.TABLE_1_1_KS.index(int(k))])
 
 
 @register(
@@ -1569,18 +1570,20 @@ def atc10_13_ceiling_k1000_088() -> float:
 )
 def atc10_step_k100_k1000_0999() -> float:
     """How much more ERP the t = 0 N_ADL threshold needs at K = 1000 than at K = 100, P_DL = 0.999, dB."""
-    from navcore.papers import atc10_jamming as pj
+    from navcore.papers import atc10_jamming as model
+    from navcore.papers import atc10_system_tables as pj
 
     erps = pj.erp_by_transmission_length(0.999)
-    ks = pj.TABLE_1_1_KS
+    ks = model.TABLE_1_1_KS
     return float(erps[ks.index(1000)] - erps[ks.index(100)])
 
 
 def _atc10_table11_misfits() -> tuple[list[float], list[float]]:
     """|printed - model| of Table 1.1's rf column (dB) and beamwidth column (deg), by row."""
     from navcore.papers import atc10_jamming as pj
+    from navcore.papers import atc10_system_tables as tables
 
-    rf = [abs(r - pj.table11_rf_dbw(i)) for i, (_, _, r, _, _) in enumerate(pj.TABLE_1_1)]
+    rf = [abs(r - tables.table11_rf_dbw(i)) for i, (_, _, r, _, _) in enumerate(pj.TABLE_1_1)]
     bw = [abs(b - pj.table11_beamwidth_deg(i)) for i, (*_, b) in enumerate(pj.TABLE_1_1)]
     return rf, bw
 
@@ -1629,7 +1632,7 @@ def atc10_13_bw_k1_dish() -> float:
 )
 def atc10_13_bw_k1_scaled() -> float:
     """Sec. 2.7's printed 20 deg beamwidth scaled by sqrt of the gain ratio to the K = 1 row, deg."""
-    from navcore.papers import atc10_jamming as pj
+    from navcore.papers import atc10_system_tables as pj
 
     return float(pj.table11_k1_beamwidth_scaled_deg())
 
@@ -1791,10 +1794,11 @@ def atc10_14_detection_t13_min() -> float:
 
 
 def _atc10_exact_window_ratio(end: str) -> float:
-    from navcore.papers import atc10_coverage_jamming as cj
+    from navcore.papers import atc10_jamming as cj
+    from navcore.papers import atc10_jamming_appendices as appendices
 
     rho = cj.IN.input("neighbour_correlation")
-    return float(cj._window_empty_ratio(float(getattr(rho, end))))
+    return float(appendices._window_empty_ratio(float(getattr(rho, end))))
 
 
 @register(
@@ -3991,8 +3995,9 @@ def across02_erp_tc_sync() -> float:
 
 def _across02_k1_erp() -> float:
     from navcore.papers import atc10_jamming as atc
+    from navcore.papers import atc10_system_tables as tables
 
-    return float(atc.required_erp_dbw("ambiguous", atc.IN.caption_p_dl, atc.table11_k(0)))
+    return float(atc.required_erp_dbw("ambiguous", atc.IN.caption_p_dl, tables.table11_k(0)))
 
 
 @register(
@@ -4033,8 +4038,9 @@ def across02_k1000_erp() -> float:
     """Largest ERP (dBW) for ambiguous detections over Table 1.1's first design and Table 2.1's
     finite designs."""
     from navcore.papers import atc10_jamming as atc
+    from navcore.papers import atc10_system_tables as tables
 
-    designs = [(atc.table11_k(0), atc.IN.caption_p_dl), *atc.table21_finite_designs()]
+    designs = [(tables.table11_k(0), atc.IN.caption_p_dl), *atc.table21_finite_designs()]
     return float(max(atc.required_erp_dbw("ambiguous", p, k) for k, p in designs))
 
 

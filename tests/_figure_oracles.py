@@ -93,6 +93,8 @@ def _atc10_bound_check(data: Data, fig_id: str) -> None:
     from navcore.detection import jamming as jm
     from navcore.figures.atc10_jamming import K_FIGURES
     from navcore.papers import atc10_jamming as paper
+    from navcore.papers import atc10_system_tables as tables
+    from navcore.papers import atc10_tracking_lists as lists
 
     n = fig_id.rsplit(".", 1)[1]
     if n in ("1", "2"):
@@ -100,7 +102,7 @@ def _atc10_bound_check(data: Data, fig_id: str) -> None:
         runs = [(p_dl, 0.0) for p_dl in paper.K1_PDL_GRID]
     else:
         _, quantity, k, p_dl = next(f for f in K_FIGURES if str(f[0]) == n)
-        runs = [(p_dl, t) for t in paper.T_GRID]
+        runs = [(p_dl, t) for t in lists.T_GRID]
     (ax,) = data
     level = math.log10(paper.level(quantity))
     near(ax.get("level").y, [level, level], what="failure level")
@@ -122,7 +124,7 @@ def _atc10_bound_check(data: Data, fig_id: str) -> None:
         tol = step if quantity == "false" else 0.05
         near(x_cross + 50.0, paper.required_erp_dbw(quantity, p_dl, k, t), atol=tol, what="crossing")
         if quantity == "ambiguous" and t == 0.0 and k <= 100:
-            near(x_cross + 50.0, paper.direct_adl_erp_dbw(p_dl, k), atol=0.1, what="direct oracle")
+            near(x_cross + 50.0, tables.direct_adl_erp_dbw(p_dl, k), atol=0.1, what="direct oracle")
 
 
 check(*(f"ATC10-fig2.{n}" for n in range(1, 17)))(_atc10_bound_check)

@@ -943,7 +943,7 @@ def _atc10_direct_erp(k: int, p_dl: float) -> Callable[[], float]:
     numbers typed in, no model code (navcore.papers.atc10_jamming.direct_adl_erp_dbw)."""
 
     def f() -> float:
-        from navcore.papers import atc10_jamming as pj
+        from navcore.papers import atc10_system_tables as pj
 
         return pj.direct_adl_erp_dbw(p_dl, k)
 
@@ -2183,10 +2183,11 @@ def _ma1_window_empty_rho(
 def _atc10_exact_window_ratio(end: str) -> float:
     """The grid chain at the Table 2.1 threshold p_f and an end of the assumed correlation range
     (both read from the model's declarations), over (1 - p_f)^n."""
-    from navcore.papers import atc10_coverage_jamming as cj
+    from navcore.papers import atc10_jamming as model
+    from navcore.papers import atc10_jamming_appendices as cj
 
     pf, n = cj.window_pf(), cj.window_n()
-    rho = float(getattr(cj.IN.input("neighbour_correlation"), end))
+    rho = float(getattr(model.IN.input("neighbour_correlation"), end))
     return _ma1_window_empty_rho(pf, rho, n) / (1 - pf) ** n
 
 

@@ -689,7 +689,7 @@ _TASK_SECONDS = {
     "SP helicopter mission": 73.0,
     "navcore.papers.sp_missions": 108.0,
     "navcore.papers.kzl_simulation": 97.0,
-    "navcore.papers.atc10_coverage_jamming": 13.0,
+    "navcore.papers.atc10_jamming_appendices": 10.0,
     "navcore.papers.atc10_gaussian_comparison": 5.2,
     "navcore.papers.atc10_multiple_access": 3.1,
     "navcore.papers.atc10_roc_bounds": 2.2,
@@ -699,7 +699,9 @@ _TASK_SECONDS = {
     "navcore.papers.atc10_zakai_bandwidth": 1.0,
     "navcore.papers.atc10_tracking_examples": 0.4,
     "navcore.papers.sp_tracking": 0.7,
-    "navcore.papers.atc10_jamming": 1.3,
+    "navcore.papers.atc10_tracking_lists": 1.9,
+    "navcore.papers.atc10_system_tables": 1.2,
+    "navcore.papers.atc10_single_pulse": 1.1,
 }
 
 
