@@ -1797,7 +1797,7 @@ def _atc10_exact_window_ratio(end: str) -> float:
     from navcore.papers import atc10_jamming as cj
     from navcore.papers import atc10_jamming_appendices as appendices
 
-    rho = cj.IN.input("neighbour_correlation")
+    rho = cj.IN_COV.input("neighbour_correlation")
     return float(appendices._window_empty_ratio(float(getattr(rho, end))))
 
 

@@ -2187,7 +2187,7 @@ def _atc10_exact_window_ratio(end: str) -> float:
     from navcore.papers import atc10_jamming_appendices as cj
 
     pf, n = cj.window_pf(), cj.window_n()
-    rho = float(getattr(model.IN.input("neighbour_correlation"), end))
+    rho = float(getattr(model.IN_COV.input("neighbour_correlation"), end))
     return _ma1_window_empty_rho(pf, rho, n) / (1 - pf) ** n
 
 
