@@ -1161,7 +1161,7 @@ def wf05_loc_nav_over(other: str) -> float:
 )
 def atc10_pf_k1000_0999() -> float:
     """p_f at the t = 0 N_ADL = 0.01 N_T threshold for K = 1000, P_DL = 0.999 (ATC-10 Sec. 2.5)."""
-    from navcore.papers import atc10_jamming as pj
+    from navcore.papers import atc10_tracking_lists as pj
 
     return float(math.exp(pj.threshold_log_pf(0.999, 1000)))
 
@@ -1178,7 +1178,7 @@ def atc10_pf_k1000_0999() -> float:
 )
 def atc10_pf_k1_088() -> float:
     """p_f at the t = 0 N_ADL = 0.01 N_T threshold for K = 1, P_DL = 0.88 (ATC-10 Sec. 2.5)."""
-    from navcore.papers import atc10_jamming as pj
+    from navcore.papers import atc10_tracking_lists as pj
 
     return float(math.exp(pj.threshold_log_pf(0.88, 1)))
 
@@ -1433,7 +1433,7 @@ def atc10_12_adl_pf_hi() -> float:
 )
 def atc10_12_k1000_critical() -> float:
     """Smallest P_DL whose K = 1000 N_ADL ceiling reaches 0.01 N_T (t = 0)."""
-    from navcore.papers import atc10_jamming as pj
+    from navcore.papers import atc10_tracking_lists as pj
 
     return float(pj.k1000_critical_p_dl())
 
@@ -1545,7 +1545,7 @@ def atc10_12_nv23_small_k() -> float:
 )
 def atc10_12_erf_coef_model() -> float:
     """The coefficient c of p_f = 1/2 - 1/2 erf(c sqrt(P0 B tau / J) - phi) in navcore's detector model."""
-    from navcore.papers import atc10_jamming as pj
+    from navcore.papers import atc10_tracking_lists as pj
 
     return float(pj.erf_argument_coefficient())
 
@@ -1557,7 +1557,7 @@ def atc10_12_erf_coef_model() -> float:
 )
 def atc10_12_erf_coef_mc() -> float:
     """The erf argument's coefficient recovered from a seeded Monte Carlo of matched-filter samples."""
-    from navcore.papers import atc10_jamming as pj
+    from navcore.papers import atc10_tracking_lists as pj
 
     return float(pj.monte_carlo_erf_coefficient())
 
@@ -1572,10 +1572,11 @@ def atc10_12_erf_coef_mc() -> float:
 )
 def atc10_erp_by_k(k: str, p_dl: str) -> float:
     """Jammer ERP (dBW) of the t = 0 N_ADL threshold for Table 1.1's K (``inf`` where none is reached)."""
-    from navcore.papers import atc10_jamming as pj
+    from navcore.papers import atc10_jamming as model
+    from navcore.papers import atc10_system_tables as pj
 
     erps = pj.erp_by_transmission_length(float(p_dl))
-    return float(erps[pj.TABLE_1_1_KS.index(int(k))])
+    return float(erps[model.TABLE_1_1_KS.index(int(k))])
 
 
 @register(
@@ -1595,18 +1596,20 @@ def atc10_13_ceiling_k1000_088() -> float:
 )
 def atc10_step_k100_k1000_0999() -> float:
     """How much more ERP the t = 0 N_ADL threshold needs at K = 1000 than at K = 100, P_DL = 0.999, dB."""
-    from navcore.papers import atc10_jamming as pj
+    from navcore.papers import atc10_jamming as model
+    from navcore.papers import atc10_system_tables as pj
 
     erps = pj.erp_by_transmission_length(0.999)
-    ks = pj.TABLE_1_1_KS
+    ks = model.TABLE_1_1_KS
     return float(erps[ks.index(1000)] - erps[ks.index(100)])
 
 
 def _atc10_table11_misfits() -> tuple[list[float], list[float]]:
     """|printed - model| of Table 1.1's rf column (dB) and beamwidth column (deg), by row."""
     from navcore.papers import atc10_jamming as pj
+    from navcore.papers import atc10_system_tables as tables
 
-    rf = [abs(r - pj.table11_rf_dbw(i)) for i, (_, _, r, _, _) in enumerate(pj.TABLE_1_1)]
+    rf = [abs(r - tables.table11_rf_dbw(i)) for i, (_, _, r, _, _) in enumerate(pj.TABLE_1_1)]
     bw = [abs(b - pj.table11_beamwidth_deg(i)) for i, (*_, b) in enumerate(pj.TABLE_1_1)]
     return rf, bw
 
@@ -1655,7 +1658,7 @@ def atc10_13_bw_k1_dish() -> float:
 )
 def atc10_13_bw_k1_scaled() -> float:
     """Sec. 2.7's printed 20 deg beamwidth scaled by sqrt of the gain ratio to the K = 1 row, deg."""
-    from navcore.papers import atc10_jamming as pj
+    from navcore.papers import atc10_system_tables as pj
 
     return float(pj.table11_k1_beamwidth_scaled_deg())
 
@@ -1817,10 +1820,11 @@ def atc10_14_detection_t13_min() -> float:
 
 
 def _atc10_exact_window_ratio(end: str) -> float:
-    from navcore.papers import atc10_coverage_jamming as cj
+    from navcore.papers import atc10_jamming as cj
+    from navcore.papers import atc10_jamming_appendices as appendices
 
-    rho = cj.IN.input("neighbour_correlation")
-    return float(cj._window_empty_ratio(float(getattr(rho, end))))
+    rho = cj.IN_COV.input("neighbour_correlation")
+    return float(appendices._window_empty_ratio(float(getattr(rho, end))))
 
 
 @register(
@@ -1918,7 +1922,7 @@ def atc10_23_w_random_1023() -> float:
 )
 def atc10_23_thm_ratio() -> float:
     """1 / (4 W tau_c) for the idealised Fig. 3.11 autocorrelation, L = 10 000 chips."""
-    from navcore.papers import atc10_multiple_access as pm
+    from navcore.papers import atc10_zakai_bandwidth as pm
 
     return float(1 / (4 * pm.w_chip_limit_ideal()))
 
@@ -1990,7 +1994,7 @@ def atc10_22_ratio_1e5() -> float:
 )
 def atc10_22_optimistic_pct() -> float:
     """100 (Exp_g / Exp - 1) for the worked example at N = 2e5, percent."""
-    from navcore.papers import atc10_multiple_access as pm
+    from navcore.papers import atc10_gaussian_comparison as pm
 
     return float(100 * (pm.worked_example_ratio() - 1))
 
@@ -2002,9 +2006,10 @@ def atc10_22_optimistic_pct() -> float:
 )
 def atc10_22_pf_factor() -> float:
     """exp(Exp_g - Exp) at N = 2e5: the factor on p_f that the Gaussian assumption misses."""
+    from navcore.papers import atc10_gaussian_comparison as gaussian
     from navcore.papers import atc10_multiple_access as pm
 
-    return float(math.exp(pm.worked_example_exp_g() - pm.worked_example_exp()))
+    return float(math.exp(pm.worked_example_exp_g() - gaussian.worked_example_exp()))
 
 
 @register(
@@ -2150,7 +2155,7 @@ def atc10_90_ratio(n: str) -> float:
 
 def _atc10_geometry_row(example: str, radius: str) -> dict[str, float]:
     """Table 4.2's columns of ``example`` at the synchronous orbit (``"phys"``) or the fitted ratio."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     r = paper.physical_radius_ratio() if radius == "phys" else paper.fitted_radius_ratio()
     return paper.table_4_2_from_geometry(example, r)
@@ -2163,7 +2168,7 @@ def _atc10_geometry_row(example: str, radius: str) -> dict[str, float]:
 )
 def atc10_30_r_phys() -> float:
     """Synchronous-orbit radius over the declared Earth radius (ATC-10 Sec. 4.1)."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     return float(paper.physical_radius_ratio())
 
@@ -2176,7 +2181,7 @@ def atc10_30_r_phys() -> float:
 def atc10_30_zenith_i(radius: str) -> float:
     """Largest zenith angle (deg) of Table 4.1 Example I's satellites seen from the aircraft, at the
     synchronous (``"phys"``) or fitted (``"fit"``) orbit radius."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     r = paper.physical_radius_ratio() if radius == "phys" else paper.fitted_radius_ratio()
     return float(paper.max_zenith_angle_deg("I", r))
@@ -2199,7 +2204,7 @@ def atc10_30_beta_phys(ex: str) -> float:
 )
 def atc10_30_beta_over_k(ex: str) -> float:
     """beta / K of example ``ex`` at the synchronous orbit."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     return atc10_30_beta_phys(ex) / paper.table_4_1(ex).shape[0]
 
@@ -2247,7 +2252,7 @@ def atc10_s123_invariant(ex: str) -> float:
 
 def _atc10_geometry_misses() -> dict[tuple[str, str], float]:
     """Relative misses of the synchronous-orbit beta and traces against Table 4.2 as printed."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     return {
         (ex, c): _atc10_geometry_row(ex, "phys")[c] / float(paper.TABLE_4_2[ex][c]) - 1
@@ -2285,7 +2290,7 @@ def atc10_30_trace_deficit() -> float:
 
 def _atc10_best_triplet_ii() -> tuple[int, ...]:
     """The triplet of Example II's satellites with the smallest position trace, synchronous orbit."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     return tuple(paper.best_triplet("II", paper.physical_radius_ratio(), "trace"))
 
@@ -2303,7 +2308,7 @@ def _atc10_best_triplet_ii() -> tuple[int, ...]:
 def atc10_trace_best_ii() -> float:
     """tr (F3'F3)^-1 of the best triplet of Example II's satellites at the synchronous orbit."""
     from navcore.location import multilateration as ml
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     los = paper.example_line_of_sight("II", paper.physical_radius_ratio())
     return float(ml.position_trace(los[list(_atc10_best_triplet_ii())]))
@@ -2324,9 +2329,10 @@ def atc10_90_best_triplet() -> str:
 
 def _atc10_exact_row_ii_5() -> tuple[float, ...]:
     """Table 4.3's row of Example II at sigma0 = 5 ns from the printed Table 4.2, exact psi."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_clock_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as geometry
 
-    return tuple(paper.table_4_3_row(paper.printed_table_4_2("II"), 5.0))
+    return tuple(paper.table_4_3_row(geometry.printed_table_4_2("II"), 5.0))
 
 
 @register(
@@ -2358,19 +2364,21 @@ def atc10_32_psi_needed_ii_5() -> float:
     """The psi for which (4.5.35) with the printed Table 4.2 gives Table 4.3's printed sd_N (II, 5 ns)."""
     from scipy import optimize
 
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_clock_tracking as clock
+    from navcore.papers import atc10_tracking_geometry as paper
 
     printed = paper.printed_table_4_2("II")
     target = float(paper.TABLE_4_3[("II", 5.0)][3])
     return float(
-        optimize.brentq(lambda p: paper.table_4_3_row(printed, 5.0, psi_value=p)[3] - target, 0.01, 0.1)
+        optimize.brentq(lambda p: clock.table_4_3_row(printed, 5.0, psi_value=p)[3] - target, 0.01, 0.1)
     )
 
 
 def _atc10_fit_row_i_5() -> tuple[float, ...]:
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_clock_tracking as clock
+    from navcore.papers import atc10_tracking_geometry as paper
 
-    return tuple(paper.table_4_3_row(paper.table_4_2_from_geometry("I", paper.fitted_radius_ratio()), 5.0))
+    return tuple(clock.table_4_3_row(paper.table_4_2_from_geometry("I", paper.fitted_radius_ratio()), 5.0))
 
 
 @register(
@@ -2396,15 +2404,16 @@ def atc10_32_sdn1_i_5() -> float:
 def _atc10_phys_lowering() -> list[float]:
     """1 - (Table 4.3's sd_0 or sd_N from the synchronous-orbit geometry) / (the same from the printed
     Table 4.2), over both examples and the three sigma0."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_clock_tracking as clock
+    from navcore.papers import atc10_tracking_geometry as paper
 
     r_phys = paper.physical_radius_ratio()
     return [
         1
-        - paper.table_4_3_row(paper.table_4_2_from_geometry(ex, r_phys), s0)[col]
-        / paper.table_4_3_row(paper.printed_table_4_2(ex), s0)[col]
+        - clock.table_4_3_row(paper.table_4_2_from_geometry(ex, r_phys), s0)[col]
+        / clock.table_4_3_row(paper.printed_table_4_2(ex), s0)[col]
         for ex in ("I", "II")
-        for s0 in paper.sigma0_values()
+        for s0 in clock.sigma0_values()
         for col in (2, 3)
     ]
 
@@ -2437,7 +2446,7 @@ def atc10_32_phys_lowering_hi() -> float:
 def atc10_30_s123_printed_residual_pct() -> float:
     """Largest relative miss (%) of 1'(F3'F3)^-1 1 in ECEF at the fitted radius (the printed (4.5.30))
     against Table 4.2's printed S3, over both examples."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     return float(
         100
@@ -2457,7 +2466,7 @@ def atc10_32_col5_corrected(ex: str, s0: str) -> float:
     """sd_(N+1) of Table 4.3 col. (v) for example ``ex`` at sigma0 = ``s0`` ns, with the invariant
     1'(F3 F3')^-1 1 of the synchronous geometry in place of the printed S3 (erratum
     ATC10-E4.1-three-satellite-clock-term), ft."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_examples as paper
 
     return float(paper.first_three_satellite_sd_invariant(ex, float(s0)))
 
@@ -2523,8 +2532,8 @@ def atc10_21_upper_efolds() -> float:
 def atc10_30_fit_worst_pct() -> float:
     """Largest relative miss (%) over both examples and the five columns of Table 4.2 computed as the
     paper did (the printed (4.5.30) for col. 5, the aircraft at its height) at the fitted radius."""
-    from navcore.papers import atc10_tracking as paper
-    from navcore.papers.atc10_tracking import _printed_table_4_2_as_computed as as_computed
+    from navcore.papers import atc10_tracking_geometry as paper
+    from navcore.papers.atc10_tracking_geometry import _printed_table_4_2_as_computed as as_computed
 
     r_fit = paper.fitted_radius_ratio()
     return float(
@@ -3567,9 +3576,10 @@ def atc10_psk_kurtosis() -> float:
 def atc10_22_psk_pf_gauss() -> float:
     """False-alarm probability of the Gaussian ROC (ATC-10 Eq. (3.8.3)) at p_d = 0.9, with the
     Theorem 3.1 power of the simulated PSK amplitude density."""
+    from navcore.papers import atc10_gaussian_comparison as gaussian
     from navcore.papers import atc10_multiple_access as pm
 
-    return float(pm.gaussian_best_pf(pm.psk_contour(), 0.9))
+    return float(pm.gaussian_best_pf(gaussian.psk_contour(), 0.9))
 
 
 @register(
@@ -3582,7 +3592,7 @@ def atc10_22_psk_pf() -> float:
     least 0.9, on the stratified Monte Carlo ROC of a matched filter in multiple-access noise of
     the simulated PSK signatures (ATC-10 Sec. 3.6-3.8, N = 1e5)."""
     from navcore.detection.roc_bounds import best_pf_at_pd
-    from navcore.papers import atc10_multiple_access as pm
+    from navcore.papers import atc10_gaussian_comparison as pm
 
     roc = pm.psk_roc()
     return float(best_pf_at_pd(roc.p_f, roc.p_miss, 0.9))
@@ -3599,7 +3609,7 @@ def atc10_22_psk_pf_estimate() -> str:
     (:func:`navcore.formatting.estimate_text`)."""
     from navcore.detection.roc_bounds import best_pf_index_at_pd
     from navcore.formatting import estimate_text
-    from navcore.papers import atc10_multiple_access as pm
+    from navcore.papers import atc10_gaussian_comparison as pm
 
     roc = pm.psk_roc()
     j = best_pf_index_at_pd(roc.p_f, roc.p_miss, 0.9)
@@ -3623,12 +3633,13 @@ def atc10_31_convergence_speedup() -> float:
     import numpy as np
 
     from navcore.location import clock_tracking as ct
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_clock_tracking as clock
+    from navcore.papers import atc10_tracking_geometry as paper
 
     speedups = []
     for ex in ("I", "II"):
         b = float(paper.TABLE_4_2[ex]["beta"])
-        for s0 in paper.sigma0_values():
+        for s0 in clock.sigma0_values():
             steps = ct.convergence_steps(ct.gain_recursion(b, 50.0, s0, 3000), 0.1)
             if steps > 0:
                 speedups.append((2.3 / float(ct.psi(ct.alpha_parameter(s0, 50.0, b))) - 1) / steps)
@@ -3638,16 +3649,18 @@ def atc10_31_convergence_speedup() -> float:
 def _atc10_printed_ms_factors() -> list[float]:
     """(rms at N + 1 with the printed S3 over that with the invariant S3)^2, both examples and the
     three published sigma0, at the fitted geometry (the finite-N gains and the exact extrapolation)."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_clock_tracking as paper
+    from navcore.papers import atc10_tracking_examples as examples
+    from navcore.papers import atc10_tracking_geometry as geometry
 
-    r_fit = paper.fitted_radius_ratio()
+    r_fit = geometry.fitted_radius_ratio()
     out = []
     for ex in ("I", "II"):
-        geo = paper.table_4_2_from_geometry(ex, r_fit)
+        geo = geometry.table_4_2_from_geometry(ex, r_fit)
         printed_geo = dict(geo, s_123=geo["s_123_printed"])
         for s0 in paper.sigma0_values():
-            pred = paper.rms_history_ft(geo, s0, paper.MC_N_LAST, 1)[1][-1]
-            pred_p = paper.rms_history_ft(printed_geo, s0, paper.MC_N_LAST, 1)[1][-1]
+            pred = examples.rms_history_ft(geo, s0, paper.MC_N_LAST, 1)[1][-1]
+            pred_p = examples.rms_history_ft(printed_geo, s0, paper.MC_N_LAST, 1)[1][-1]
             out.append(float((pred_p / pred) ** 2))
     return out
 
@@ -3672,7 +3685,7 @@ def atc10_32_printed_ms_factor(end: str) -> float:
 def atc10_32_mse_i_5_n0() -> float:
     """E||xi_p||^2 at the least-squares epoch n = 0 from the seeded tracker Monte Carlo, Example I,
     sigma0 = 5 ns, ft^2."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_clock_tracking as paper
 
     return float(paper.tracker_monte_carlo("I", 5.0).position_mse[0])
 
@@ -3685,7 +3698,7 @@ def atc10_32_mse_i_5_n0() -> float:
 def atc10_32_normvar_i_5_n0() -> float:
     """Var ||xi_p|| at the least-squares epoch n = 0 from the seeded tracker Monte Carlo, Example I,
     sigma0 = 5 ns, ft^2."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_clock_tracking as paper
 
     return float(paper.tracker_monte_carlo("I", 5.0).position_norm_variance[0])
 
@@ -3697,7 +3710,7 @@ def atc10_32_normvar_i_5_n0() -> float:
 )
 def atc10_90_ms_left_5ns(ex: str) -> float:
     """(sd_N / sd_0)^2 of Table 4.3 from the printed Table 4.2 of Example ``ex``, sigma0 = 5 ns."""
-    from navcore.papers import atc10_tracking as pt
+    from navcore.papers import atc10_tracking_examples as pt
 
     return float(pt.ms_ratio_tracking(ex, 5.0))
 
@@ -3726,9 +3739,10 @@ def atc10_21_convexity_worst() -> float:
 
     from navcore.detection.roc_bounds import chernoff_log_tails
     from navcore.papers import atc10_multiple_access as pm
+    from navcore.papers import atc10_roc_bounds as roc
 
     worst = 0.0
-    for x in pm.contours():
+    for x in roc.contours():
         rho = chernoff_log_tails(pm.noise_sec36("C2 two-point", x), np.linspace(0.02, 0.98, 49))[1]
         worst = max(worst, float(np.max(rho)) * math.sqrt(pm.b_of_contour(x)))
     return worst
@@ -3761,12 +3775,13 @@ def _atc10_21_lower_gaps() -> list[float]:
     import numpy as np
 
     from navcore.detection.roc_bounds import gallager_log_tails_lower
-    from navcore.papers import atc10_multiple_access as pm
+    from navcore.papers import atc10_gaussian_comparison as pm
+    from navcore.papers import atc10_multiple_access as noise
 
     theta = np.array([0.3, 0.5, 0.7])
     out: list[float] = []
     for x in (3.0, 5.0, 6.0):
-        lb = gallager_log_tails_lower(pm.noise_sec36("C2 two-point", x), theta)[0]
+        lb = gallager_log_tails_lower(noise.noise_sec36("C2 two-point", x), theta)[0]
         idx = [int(np.argmin(abs(pm.THETA_GRID - t))) for t in theta]
         out += [float(v) for v in np.log10(pm.exact_roc("C2 two-point", x).p_f[idx]) - lb / np.log(10)]
     return out
@@ -3784,10 +3799,11 @@ def atc10_21_lower_gap(end: str) -> float:
 
 
 def _atc10_outage_corrected_s(ex: str) -> float:
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_examples as examples
+    from navcore.papers import atc10_tracking_geometry as paper
 
     return float(
-        paper.acceptable_outage_s(ex, 5.0, paper.table_4_2_from_geometry(ex, paper.fitted_radius_ratio()))
+        examples.acceptable_outage_s(ex, 5.0, paper.table_4_2_from_geometry(ex, paper.fitted_radius_ratio()))
     )
 
 
@@ -3884,12 +3900,12 @@ def _across01_dilution_geometries() -> dict[str, tuple[Any, float]]:
     with four (the fewest of four or more)."""
     import numpy as np
 
-    from navcore.papers import atc10_tracking, kzl_scenario, sp_flyby
+    from navcore.papers import atc10_tracking_geometry, kzl_scenario, sp_flyby
 
-    radius = atc10_tracking.physical_radius_ratio()
+    radius = atc10_tracking_geometry.physical_radius_ratio()
     out: dict[str, tuple[Any, float]] = {
-        "atc-i": (atc10_tracking.example_line_of_sight("I", radius), 1.0),
-        "atc-ii": (atc10_tracking.example_line_of_sight("II", radius), 1.0),
+        "atc-i": (atc10_tracking_geometry.example_line_of_sight("I", radius), 1.0),
+        "atc-ii": (atc10_tracking_geometry.example_line_of_sight("II", radius), 1.0),
         "sp": (-sp_flyby.flyby_geometry().u_ned[0], 1.0),
     }
     positions, _ = kzl_scenario.table1_sky()
@@ -4007,8 +4023,9 @@ def across02_erp_tc_sync() -> float:
 
 def _across02_k1_erp() -> float:
     from navcore.papers import atc10_jamming as atc
+    from navcore.papers import atc10_system_tables as tables
 
-    return float(atc.required_erp_dbw("ambiguous", atc.IN.caption_p_dl, atc.table11_k(0)))
+    return float(atc.required_erp_dbw("ambiguous", atc.IN.caption_p_dl, tables.table11_k(0)))
 
 
 @register(
@@ -4049,8 +4066,9 @@ def across02_k1000_erp() -> float:
     """Largest ERP (dBW) for ambiguous detections over Table 1.1's first design and Table 2.1's
     finite designs."""
     from navcore.papers import atc10_jamming as atc
+    from navcore.papers import atc10_system_tables as tables
 
-    designs = [(atc.table11_k(0), atc.IN.caption_p_dl), *atc.table21_finite_designs()]
+    designs = [(tables.table11_k(0), atc.IN.caption_p_dl), *atc.table21_finite_designs()]
     return float(max(atc.required_erp_dbw("ambiguous", p, k) for k, p in designs))
 
 
@@ -4208,9 +4226,10 @@ def sp22_range_km(when: str) -> float:
 def _atc10_22_best_ratios_8() -> list[float]:
     """Best actual p_f over the four densities divided by the ROC_g p_f, at the highest contour
     1/sqrt(3b) = 8, for p_d >= 0.9 and p_d >= 0.99 (the page's comparison table)."""
+    from navcore.papers import atc10_gaussian_comparison as gaussian
     from navcore.papers import atc10_multiple_access as pm
 
-    tab = pm.gaussian_comparison_table()
+    tab = gaussian.gaussian_comparison_table()
     return [
         min(tab[(n, 8.0, pd_min)][0] for n in pm.DENSITY_NAMES) / tab[(pm.DENSITY_NAMES[0], 8.0, pd_min)][1]
         for pd_min in (0.9, 0.99)

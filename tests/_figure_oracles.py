@@ -93,6 +93,8 @@ def _atc10_bound_check(data: Data, fig_id: str) -> None:
     from navcore.detection import jamming as jm
     from navcore.figures.atc10_jamming import K_FIGURES
     from navcore.papers import atc10_jamming as paper
+    from navcore.papers import atc10_system_tables as tables
+    from navcore.papers import atc10_tracking_lists as lists
 
     n = fig_id.rsplit(".", 1)[1]
     if n in ("1", "2"):
@@ -100,7 +102,7 @@ def _atc10_bound_check(data: Data, fig_id: str) -> None:
         runs = [(p_dl, 0.0) for p_dl in paper.K1_PDL_GRID]
     else:
         _, quantity, k, p_dl = next(f for f in K_FIGURES if str(f[0]) == n)
-        runs = [(p_dl, t) for t in paper.T_GRID]
+        runs = [(p_dl, t) for t in lists.T_GRID]
     (ax,) = data
     level = math.log10(paper.level(quantity))
     near(ax.get("level").y, [level, level], what="failure level")
@@ -122,7 +124,7 @@ def _atc10_bound_check(data: Data, fig_id: str) -> None:
         tol = step if quantity == "false" else 0.05
         near(x_cross + 50.0, paper.required_erp_dbw(quantity, p_dl, k, t), atol=tol, what="crossing")
         if quantity == "ambiguous" and t == 0.0 and k <= 100:
-            near(x_cross + 50.0, paper.direct_adl_erp_dbw(p_dl, k), atol=0.1, what="direct oracle")
+            near(x_cross + 50.0, tables.direct_adl_erp_dbw(p_dl, k), atol=0.1, what="direct oracle")
 
 
 check(*(f"ATC10-fig2.{n}" for n in range(1, 17)))(_atc10_bound_check)
@@ -212,9 +214,11 @@ def _atc10_bounds_grid(data: Data) -> None:
     lies below its upper bound."""
     from navcore.detection.roc_bounds import roc_upper_bound
     from navcore.figures.atc10_multiple_access import ROC_THETAS
+    from navcore.papers import atc10_gaussian_comparison as gaussian
     from navcore.papers import atc10_multiple_access as m
+    from navcore.papers import atc10_roc_bounds as roc
 
-    xs = m.contours()
+    xs = roc.contours()
     assert len(data) == len(m.DENSITY_NAMES) * len(xs)
     th = np.linspace(0.005, 0.995, 199)
     for i, name in enumerate(m.DENSITY_NAMES):
@@ -224,7 +228,7 @@ def _atc10_bounds_grid(data: Data) -> None:
             _gaussian_roc_oracle(gauss, th, power, f"{name} {x} ROC_g")
             ub_f, ub_m = roc_upper_bound(m.noise_sec36(name, x), ROC_THETAS)
             _roc_close(upper, ub_f, ub_m, f"{name} {x} upper bound")
-            r = m.exact_roc(name, x)
+            r = gaussian.exact_roc(name, x)
             keep = (r.p_f > 0) & (r.p_miss > 0)
             near(actual.x, r.p_miss[keep])
             near(actual.y, r.p_f[keep])
@@ -250,10 +254,11 @@ def _atc10_two_valued(data: Data) -> None:
 def _atc10_gaussian_rocs(data: Data) -> None:
     """Oracle: ROC_g from scipy's normal tail for each contour's power N 2 tau/alpha b."""
     from navcore.papers import atc10_multiple_access as m
+    from navcore.papers import atc10_roc_bounds as roc
 
     (ax,) = data
     th = np.linspace(0.01, 0.99, 197)
-    for x in m.contours():
+    for x in roc.contours():
         power = m.IN.n_sec36 * 2 * m.IN.tau_over_alpha_sec36 * m.b_of_contour(x)
         _gaussian_roc_oracle(ax.get(f"1/√(3b) = {x:g}"), th, power, f"contour {x}")
 
@@ -280,6 +285,7 @@ def _atc10_exp_vs_expg(data: Data) -> None:
     """Recomputed from Eq. (3.8.16). Oracle: the identity line Exp = Exp_g, every curve below
     it and approaching it as N grows, and the worked example's point is the paper module's."""
     from navcore.detection.roc_bounds import exponent_from_gaussian_exponent
+    from navcore.papers import atc10_gaussian_comparison as gaussian
     from navcore.papers import atc10_multiple_access as m
 
     (ax,) = data
@@ -294,7 +300,7 @@ def _atc10_exp_vs_expg(data: Data) -> None:
             assert np.all(s.y >= prev - 1e-12)
         prev = s.y
     point = next(s for s in lines(ax) if len(s.x) == 1)
-    near([point.x[0], point.y[0]], [m.worked_example_exp_g(), m.worked_example_exp()])
+    near([point.x[0], point.y[0]], [m.worked_example_exp_g(), gaussian.worked_example_exp()])
 
 
 @check("ATC10-fig3.11")
@@ -345,10 +351,11 @@ def _atc10_actual_vs_gaussian(data: Data) -> None:
     """Left: ROC_g (scipy oracle) and the actual ROCs (paper module) at contours 3, 5, 8. Right:
     the PSK Monte Carlo ROC, its Chernoff upper bound (paper module) and ROC_g; oracle: the
     Chernoff bound lies above the simulated ROC."""
+    from navcore.papers import atc10_gaussian_comparison as gaussian
     from navcore.papers import atc10_multiple_access as m
 
     left, right = data
-    th = m.THETA_GRID
+    th = gaussian.THETA_GRID
     drawn = lines(left)
     k = 0
     for x in (3.0, 5.0, 8.0):
@@ -356,13 +363,13 @@ def _atc10_actual_vs_gaussian(data: Data) -> None:
         _gaussian_roc_oracle(drawn[k], th, power, f"contour {x}")
         k += 1
         for name in m.DENSITY_NAMES:
-            r = m.exact_roc(name, x)
+            r = gaussian.exact_roc(name, x)
             keep = (r.p_f > 0) & (r.p_miss > 0)
             near(drawn[k].y, r.p_f[keep], what=f"{name} {x}")
             near(drawn[k].x, r.p_miss[keep])
             k += 1
     assert k == len(drawn)
-    r = m.psk_roc()
+    r = gaussian.psk_roc()
     keep = (r.p_f > 0) & (r.p_miss > 0)
     mc = right.get("PSK, Monte Carlo")
     near(mc.y, r.p_f[keep])
@@ -370,7 +377,7 @@ def _atc10_actual_vs_gaussian(data: Data) -> None:
     bound = right.get("Chernoff upper bound")
     _roc_close(bound, lpf, lmiss, "Chernoff")
     _below_in_log(bound, mc, "PSK")
-    power = m.IN.n_sec36 * 2 * m.IN.tau_over_alpha_sec36 / (3 * m.psk_contour() ** 2)
+    power = m.IN.n_sec36 * 2 * m.IN.tau_over_alpha_sec36 / (3 * gaussian.psk_contour() ** 2)
     _gaussian_roc_oracle(right.get("ROC_g, same power"), th, power, "PSK ROC_g")
 
 
@@ -384,7 +391,8 @@ def _atc10_psi(data: Data) -> None:
     the first at small alpha and the second at large alpha (1e-3 relative); the Table 4.3
     markers at alpha = (8/27) sigma0^2 beta / sigma^2."""
     from navcore.location.clock_tracking import psi
-    from navcore.papers import atc10_tracking as m
+    from navcore.papers import atc10_clock_tracking as clock
+    from navcore.papers import atc10_tracking_geometry as m
 
     (ax,) = data
     main = ax.get("ψ(α), Eq. (4.5.34)")
@@ -398,7 +406,7 @@ def _atc10_psi(data: Data) -> None:
     for ex in ("I", "II"):
         s = ax.get(f"Table 4.3, Example {ex}")
         beta = float(m.TABLE_4_2[ex]["beta"])
-        near(s.x, [8 / 27 * s0**2 * beta / m.IN.sigma_ns**2 for s0 in m.sigma0_values()])
+        near(s.x, [8 / 27 * s0**2 * beta / m.IN.sigma_ns**2 for s0 in clock.sigma0_values()])
         near(s.y, psi(s.x))
 
 
@@ -408,7 +416,9 @@ def _atc10_rms(data: Data, fig_id: str) -> None:
     inputs give the same history (they differ only in s_123), and the corrected
     three-satellite error is the smaller (erratum E4-1: the printed formula overstates it)."""
     from navcore.figures.atc10_tracking import M_SHOWN, N_SHOWN
-    from navcore.papers import atc10_tracking as m
+    from navcore.papers import atc10_clock_tracking as clock
+    from navcore.papers import atc10_tracking_examples as examples
+    from navcore.papers import atc10_tracking_geometry as m
 
     example = "I" if fig_id.endswith("4.2") else "II"
     printed = m.printed_table_4_2(example)
@@ -416,10 +426,10 @@ def _atc10_rms(data: Data, fig_id: str) -> None:
     corrected["s_123"] = m.table_4_2_from_geometry(example, m.fitted_radius_ratio())["s_123"]
     (ax,) = data
     drawn = [s for s in lines(ax) if len(s.x) > 2]
-    assert len(drawn) == 3 * len(m.sigma0_values())
-    for i, s0 in enumerate(m.sigma0_values()):
-        n, rms_p = m.rms_history_ft(printed, s0, N_SHOWN, M_SHOWN)
-        _, rms_c = m.rms_history_ft(corrected, s0, N_SHOWN, M_SHOWN)
+    assert len(drawn) == 3 * len(clock.sigma0_values())
+    for i, s0 in enumerate(clock.sigma0_values()):
+        n, rms_p = examples.rms_history_ft(printed, s0, N_SHOWN, M_SHOWN)
+        _, rms_c = examples.rms_history_ft(corrected, s0, N_SHOWN, M_SHOWN)
         head, tail_p, tail_c = drawn[3 * i : 3 * i + 3]
         near(head.y, rms_p[: N_SHOWN + 1])
         near(head.x, n[: N_SHOWN + 1])
@@ -441,14 +451,16 @@ def _atc10_tracker(data: Data) -> None:
     """The recursion recomputed from the paper module. Oracle: the seeded Monte Carlo of the
     whole tracker (10 000 runs) agrees with the recursion within 5 % (the rms of 10 000 runs
     has a relative standard error of 0.7 %; 5 % leaves room for the model's approximations)."""
-    from navcore.papers import atc10_tracking as m
+    from navcore.papers import atc10_clock_tracking as clock
+    from navcore.papers import atc10_tracking_examples as examples
+    from navcore.papers import atc10_tracking_geometry as m
 
     (ax,) = data
     geo = m.table_4_2_from_geometry("II", m.fitted_radius_ratio())
     recursions = [s for s in lines(ax) if s.label.startswith("recursion")]
     mcs = [s for s in lines(ax) if s.label == "Monte Carlo"]
     for s0, rec, mc in zip((5.0, 50.0), recursions, mcs, strict=True):
-        _, pred = m.rms_history_ft(geo, s0, m.MC_N_LAST, 1)
+        _, pred = examples.rms_history_ft(geo, s0, clock.MC_N_LAST, 1)
         near(rec.y, pred)
         sel = mc.x.astype(int)
         near(mc.y, pred[sel], rtol=0.05, what=f"Monte Carlo against the recursion, sigma0 {s0}")

@@ -12,6 +12,9 @@ from scipy import optimize, stats
 
 from navcore.detection import jamming as jm
 from navcore.papers import atc10_jamming as paper
+from navcore.papers import atc10_jamming_appendices as appendices
+from navcore.papers import atc10_system_tables as tables
+from navcore.papers import atc10_tracking_lists as lists
 
 
 @pytest.mark.parametrize(("k", "p_dl"), [(1, 0.88), (10, 0.88), (100, 0.999), (1000, 0.98)])
@@ -72,14 +75,14 @@ def test_ceilings() -> None:
     critical = optimize.brentq(
         lambda p: float(_mp_log_ceiling(p, 1000)) - math.log(0.01), 0.98, 0.9999, xtol=1e-14, rtol=1e-14
     )
-    assert paper.k1000_critical_p_dl() == pytest.approx(float(critical), rel=1e-9)
+    assert lists.k1000_critical_p_dl() == pytest.approx(float(critical), rel=1e-9)
 
 
 def test_table11_k100_would_need_pdl_098() -> None:
     """Oracle: plain-probability grid search (direct_adl_erp_dbw): P_DL = 0.98 gives 53 dBW at K = 100."""
-    assert paper.direct_adl_erp_dbw(0.98, 100) == pytest.approx(53.0, abs=0.1)
+    assert tables.direct_adl_erp_dbw(0.98, 100) == pytest.approx(53.0, abs=0.1)
     assert paper.required_erp_dbw("ambiguous", 0.98, 100) == pytest.approx(
-        paper.direct_adl_erp_dbw(0.98, 100), abs=1e-3
+        tables.direct_adl_erp_dbw(0.98, 100), abs=1e-3
     )
 
 
@@ -107,13 +110,13 @@ def test_erp_by_transmission_length_against_direct_oracle() -> None:
     threshold, at P_DL = 0.999 it has one.
     """
     for p_dl in (0.88, 0.999):
-        model = paper.erp_by_transmission_length(p_dl)
-        direct = [paper.direct_adl_erp_dbw(p_dl, k) for k in paper.TABLE_1_1_KS]
+        model = tables.erp_by_transmission_length(p_dl)
+        direct = [tables.direct_adl_erp_dbw(p_dl, k) for k in paper.TABLE_1_1_KS]
         for m, d in zip(model, direct, strict=True):
             assert (math.isinf(m) and math.isinf(d)) or m == pytest.approx(d, abs=0.01)
         assert all(a < b for a, b in itertools.pairwise(direct))
-    assert math.isinf(paper.erp_by_transmission_length(0.88)[-1])
-    assert math.isfinite(paper.erp_by_transmission_length(0.999)[-1])
+    assert math.isinf(tables.erp_by_transmission_length(0.88)[-1])
+    assert math.isfinite(tables.erp_by_transmission_length(0.999)[-1])
 
 
 def test_threshold_helpers_for_the_errata() -> None:
@@ -149,7 +152,7 @@ def test_threshold_helpers_for_the_errata() -> None:
         return math.log(full.airborne_fraction / 2 * p_dl) + (k - 1) * log_g + log_f - math.log(0.01)
 
     p_f = optimize.brentq(log_adl, 0.01, paper.design_p_d(p_dl, k), xtol=1e-15)
-    assert math.exp(paper.threshold_log_pf(p_dl, k)) == pytest.approx(p_f, rel=1e-8)
+    assert math.exp(lists.threshold_log_pf(p_dl, k)) == pytest.approx(p_f, rel=1e-8)
 
 
 def test_errata_numbers_match_the_model() -> None:
@@ -157,14 +160,16 @@ def test_errata_numbers_match_the_model() -> None:
     numbers are typed; this test recomputes each and checks the text."""
     from navcore.claims.inputs import recording
 
-    text = {e.id: e.finding + " " + e.evidence for e in paper.ERRATA}
+    errata = [*paper.ERRATA, *appendices.ERRATA, *tables.ERRATA]
+    text = {e.id: e.finding + " " + e.evidence for e in errata}
     g = paper.geometry()
-    assert f"{g.max_speed_m_s * g.repetition_s / 299792458.0 * 1e6:.3f} µs" in text[paper.E_C2]
+    assert f"{g.max_speed_m_s * g.repetition_s / 299792458.0 * 1e6:.3f} µs" in text[appendices.E_C2]
     with recording():
-        scaled = paper.table11_k1_beamwidth_scaled_deg()
-    assert f"About {scaled:.1f} degrees" in text[paper.E_BEAM]
+        scaled = tables.table11_k1_beamwidth_scaled_deg()
+    assert f"About {scaled:.1f} degrees" in text[tables.E_BEAM]
     assert (
-        f"$P_{{DL}} = 0.98$ gives {paper.required_erp_dbw('ambiguous', 0.98, 100):.1f}" in text[paper.E_TAB11]
+        f"$P_{{DL}} = 0.98$ gives {paper.required_erp_dbw('ambiguous', 0.98, 100):.1f}"
+        in text[tables.E_TAB11]
     )
 
 
@@ -178,12 +183,12 @@ def test_pencil_beam_constant_is_solved_from_sec_27() -> None:
     assert inp.provenance == "fitted" and inp.fitted_to == ("ATC10-sec2.7-20deg",)
     assert inp.value == pytest.approx(c, abs=5.0)
     with recording() as reads:
-        base = paper.table11_k1_beamwidth_scaled_deg()
+        base = tables.table11_k1_beamwidth_scaled_deg()
     assert "ATC10.jamming.pencil_beam_constant_deg2" not in reads
     with overriding({"ATC10.jamming.pencil_beam_constant_deg2": 41253.0}), recording():
-        assert paper.table11_k1_beamwidth_scaled_deg() == base
+        assert tables.table11_k1_beamwidth_scaled_deg() == base
     # two dishes of the two gains: 20 deg x D_2.7 / D_K1, whatever the frequency and efficiency
     assert base == pytest.approx(
         20.0 * math.sqrt(10 ** ((33.0 - 10 * math.log10(30.0) - 18.0) / 10)), rel=1e-12
     )
-    assert base == pytest.approx(paper._oracle_k1_beamwidth_scaled_deg(), rel=1e-12)
+    assert base == pytest.approx(tables._oracle_k1_beamwidth_scaled_deg(), rel=1e-12)

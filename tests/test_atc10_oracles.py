@@ -10,8 +10,9 @@ import numpy as np
 import pytest
 
 from navcore.location.clock_model import clock_covariance
-from navcore.papers import atc10_coverage_tracking as cov
-from navcore.papers import atc10_tracking as trk
+from navcore.location.clock_tracking import gain_recursion
+from navcore.papers import atc10_clock_tracking as clock
+from navcore.papers import atc10_tracking_geometry as geometry
 from navcore.papers import kzl_tightly_coupled_filter as kzl
 
 
@@ -21,11 +22,11 @@ def test_convergence_rule_oracle_counts_the_library_recursion_steps() -> None:
     ratio alone would not tell: it is the case of no step, whatever the other counts), and the
     worst ratio of the printed 2.3/psi estimate to the count is the same number. Oracle: the library's
     count (``convergence_rule_terms``), an independent implementation."""
-    terms = trk.convergence_rule_terms()
-    assert [act - 1 for act, _ in terms] == trk._oracle_convergence_counts()
+    terms = clock.convergence_rule_terms()
+    assert [act - 1 for act, _ in terms] == clock._oracle_convergence_counts()
     ratios = [est / act for act, est in terms]
     worst = max(ratios, key=lambda r: abs(math.log(r)))
-    assert trk._oracle_convergence_rule_worst_ratio() == pytest.approx(worst, rel=1e-12)
+    assert clock._oracle_convergence_rule_worst_ratio() == pytest.approx(worst, rel=1e-12)
 
 
 def _exact_tail_rms(weights: np.ndarray, C: np.ndarray, r: float, tail: slice) -> float:
@@ -44,8 +45,8 @@ def test_kalman_against_constrained_tracker_matches_their_exact_error_variances(
     under the truth covariance of the clock. Oracle: that exact computation; the tolerance, 4 %,
     is about four standard deviations of a 300-run, 100-epoch rms (correlated epochs)."""
     n_epochs = 120  # a shorter run than the claim's, whose last 100 epochs are already steady
-    rho, beta = cov.IN.rho_hurst, cov._ex("II")["beta"]
-    sigma, s0 = cov.TR.sigma_ns, cov.TR.sigma0_low_ns
+    rho, beta = geometry.IN_COV.rho_hurst, geometry._example_row("II")["beta"]
+    sigma, s0 = geometry.IN.sigma_ns, geometry.IN.sigma0_low_ns
     r = sigma**2 / beta
     C = np.zeros((n_epochs + 1, n_epochs + 1))  # tau_0 = 0, then the clock's covariance
     C[1:, 1:] = clock_covariance(n_epochs, s0, s0, rho) + 1e-9 * np.eye(n_epochs)
@@ -56,7 +57,7 @@ def test_kalman_against_constrained_tracker_matches_their_exact_error_variances(
     x[0, 0] = 1.0
     W_kf = np.zeros((n_epochs + 1, n_epochs + 1))
     W_kf[0] = x[0]
-    gam = trk.gain_recursion(beta, sigma, s0, n_epochs).gamma
+    gam = gain_recursion(beta, sigma, s0, n_epochs).gamma
     tc = np.zeros(n_epochs + 1)
     tc[0] = 1.0
     W_cf = np.zeros_like(W_kf)
@@ -73,7 +74,7 @@ def test_kalman_against_constrained_tracker_matches_their_exact_error_variances(
         W_cf[n] = tc
     tail = slice(n_epochs - 99, n_epochs + 1)
     kf_exact, cf_exact = _exact_tail_rms(W_kf, C, r, tail), _exact_tail_rms(W_cf, C, r, tail)
-    kf, cf = cov.kalman_vs_constrained(n_epochs=n_epochs)
+    kf, cf = clock.kalman_vs_constrained(n_epochs=n_epochs)
     assert kf == pytest.approx(kf_exact, rel=0.04)
     assert cf == pytest.approx(cf_exact, rel=0.04)
     assert kf_exact > 1.2 * cf_exact  # the claim's finding, with room: the Kalman filter is poorer

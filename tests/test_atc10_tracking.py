@@ -4,7 +4,9 @@ from __future__ import annotations
 
 import pytest
 
-from navcore.papers import atc10_tracking as paper
+from navcore.papers import atc10_clock_tracking as clock
+from navcore.papers import atc10_tracking_examples as examples
+from navcore.papers import atc10_tracking_geometry as paper
 
 
 def _independent_table_4_2(example: str, radius_ratio: float) -> list[float]:
@@ -68,7 +70,7 @@ def test_outage_threshold_factor_gives_rule_4():
     """The fitted factor 1.8 is the one that gives rule 4's 30 s and 60 s (within 'about', +-10 %)."""
     assert paper.IN.input("outage_threshold_factor").provenance == "fitted"
     for ex, printed_s in (("I", 30.0), ("II", 60.0)):
-        got = paper.acceptable_outage_s(ex, paper.IN.sigma0_low_ns, paper.printed_table_4_2(ex))
+        got = examples.acceptable_outage_s(ex, paper.IN.sigma0_low_ns, paper.printed_table_4_2(ex))
         assert got == pytest.approx(printed_s, rel=0.1)
 
 
@@ -86,7 +88,7 @@ def test_table_4_3_cell_at_the_edge_reaches_printed_only_at_a_corner():
             inp = paper.IN.input(n)
             ov[inp.name] = inp.low if k == 0 else inp.high
         with overriding(ov):
-            best = max(best, paper.table_4_3_cell("I", 50.0, 4))
+            best = max(best, examples.table_4_3_cell("I", 50.0, 4))
     assert 449.5 <= best < 450.0
 
 
@@ -112,7 +114,7 @@ def test_physical_geometry_misses_table_4_2(example):
 def test_table_4_3_all_entries_from_printed_table_4_2():
     """Oracle: the printed Table 4.3 (relative 2 %, the catalog's independent recomputation band)."""
     for (ex, s0), row in paper.TABLE_4_3.items():
-        got = paper.table_4_3_row(paper.printed_table_4_2(ex), s0, psi_value=float(row[1]))
+        got = clock.table_4_3_row(paper.printed_table_4_2(ex), s0, psi_value=float(row[1]))
         for g, text in zip(got, row, strict=True):
             assert g == pytest.approx(float(text), rel=0.02, abs=0.003)
 
@@ -121,19 +123,19 @@ def test_monte_carlo_rejects_printed_three_satellite_term():
     """Oracle: seeded Monte Carlo of the full tracker (E4-1): printed S3 overstates E|xi|^2 by > 40 %."""
     for ex in ("I", "II"):
         geo = paper.table_4_2_from_geometry(ex, paper.fitted_radius_ratio())
-        mc = paper.tracker_monte_carlo(ex, 50.0)
-        emp = mc.position_mse[paper.MC_N_LAST + 1]
+        mc = clock.tracker_monte_carlo(ex, 50.0)
+        emp = mc.position_mse[clock.MC_N_LAST + 1]
         printed_inputs = dict(geo)
         printed_inputs["s_123"] = geo["s_123_printed"]
-        pred_printed = paper.table_4_3_row(printed_inputs, 50.0)[4] ** 2
-        pred_correct = paper.table_4_3_row(geo, 50.0)[4] ** 2
+        pred_printed = clock.table_4_3_row(printed_inputs, 50.0)[4] ** 2
+        pred_correct = clock.table_4_3_row(geo, 50.0)[4] ** 2
         assert emp / pred_correct == pytest.approx(1.0, abs=0.04)
         assert emp / pred_printed < 0.6
 
 
 def test_monte_carlo_norm_variance_is_not_mean_square():
     """Oracle: Monte Carlo; 'Var[|xi|]' of the paper is E|xi|^2 (erratum E4-8)."""
-    mc = paper.tracker_monte_carlo("I", 5.0)
+    mc = clock.tracker_monte_carlo("I", 5.0)
     assert mc.position_norm_variance[0] < 0.5 * mc.position_mse[0]
 
 
@@ -204,13 +206,13 @@ def test_rule4_common_threshold_exists_only_with_the_printed_term():
     agrees with the interval computation for every reading; with the printed S3 of Table 4.2 (the
     paper's own numbers) a common threshold exists, 1.71 to 1.97 times sd0."""
     printed_inputs = {ex: paper.printed_table_4_2(ex) for ex in paper.EXAMPLES}
-    invariant_inputs = {ex: paper.invariant_s3_inputs(ex) for ex in paper.EXAMPLES}
+    invariant_inputs = {ex: examples.invariant_s3_inputs(ex) for ex in paper.EXAMPLES}
     for ref in ("sd0", "sdN", "sdN1", "ft"):
-        assert not paper.rule4_common_threshold_exists(invariant_inputs, ref)
-        assert paper._oracle_rule4_common_threshold(ref) is False
-    assert paper.rule4_common_threshold_exists(printed_inputs, "sd0")
+        assert not examples.rule4_common_threshold_exists(invariant_inputs, ref)
+        assert examples._oracle_rule4_common_threshold(ref) is False
+    assert examples.rule4_common_threshold_exists(printed_inputs, "sd0")
     (lo_i, hi_i), (lo_ii, hi_ii) = (
-        paper.rule4_threshold_interval(ex, printed_inputs[ex], s, "sd0")
+        examples.rule4_threshold_interval(ex, printed_inputs[ex], s, "sd0")
         for ex, s in zip(paper.EXAMPLES, paper.RULE4_SECONDS, strict=True)
     )
     assert 1.6 < max(lo_i, lo_ii) < min(hi_i, hi_ii) < 2.0

@@ -659,7 +659,7 @@ def _atc10_psk_moments() -> tuple[float, float]:
 def _atc10_psk_threshold() -> tuple[float, float, float]:
     """The threshold the Monte Carlo ROC picks for p_d >= 0.9 (its p_f the smallest there), with
     the Monte Carlo's p_f and p_miss standard errors at it."""
-    from navcore.papers import atc10_multiple_access as pm
+    from navcore.papers import atc10_gaussian_comparison as pm
 
     roc = pm.psk_roc()
     ok = np.flatnonzero(roc.p_miss <= 0.1)
@@ -703,7 +703,7 @@ def _atc10_psk_estimate_by_hand() -> str:
     """The Monte Carlo p_f at the threshold :func:`_atc10_psk_threshold` picks, and its standard
     error, written as the book writes an estimate: Python's exponent format with the error's two
     significant digits and the estimate's digits down to the error's first, in ×10ⁿ form."""
-    from navcore.papers import atc10_multiple_access as pm
+    from navcore.papers import atc10_gaussian_comparison as pm
 
     theta, se, _ = _atc10_psk_threshold()
     roc = pm.psk_roc()
@@ -731,13 +731,14 @@ def _atc10_convergence_speedup() -> float:
     """The gains of (4.5.16)-(4.5.25) iterated by hand, their limit psi / beta from the real root of
     psi^3 + q psi - q = 0, q = 27 alpha / 4 (numpy.roots), alpha = (8/27) sigma0^2 beta / sigma^2;
     the steps counted to the last gain more than 10 % from the limit."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_clock_tracking as clock
+    from navcore.papers import atc10_tracking_geometry as paper
 
     sigma = 50.0
     out = []
     for ex in ("I", "II"):
         beta = float(paper.TABLE_4_2[ex]["beta"])
-        for s0 in paper.sigma0_values():
+        for s0 in clock.sigma0_values():
             q = 27 / 4 * (8 / 27) * s0**2 * beta / sigma**2
             psi = float(next(r.real for r in np.roots([1.0, 0.0, q, -q]) if abs(r.imag) < 1e-9))
             limit = psi / beta
@@ -759,7 +760,8 @@ def _atc10_printed_ms_factors_by_hand() -> list[float]:
     clock variance one epoch after the drop, v = sigma^2 gamma_N + 2 sigma0^2 + 2 d_N, and the
     mean squares sigma^2 tr3 + v S3 with the printed and the invariant S3 (the geometry's columns
     are the model's, the inputs of this arithmetic)."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_clock_tracking as clock
+    from navcore.papers import atc10_tracking_geometry as paper
 
     sigma, n_last = 50.0, 150
     r_fit = paper.fitted_radius_ratio()
@@ -767,7 +769,7 @@ def _atc10_printed_ms_factors_by_hand() -> list[float]:
     for ex in ("I", "II"):
         geo = paper.table_4_2_from_geometry(ex, r_fit)
         beta = geo["beta"]
-        for s0 in paper.sigma0_values():
+        for s0 in clock.sigma0_values():
             gamma, d = 1 / beta, 0.0
             for _ in range(n_last):
                 s_n = 2 * s0**2 + sigma**2 * gamma + 2 * d
@@ -787,7 +789,7 @@ def _atc10_ls_position_norm() -> tuple[float, float, float, float]:
     its mean over the tracker's 10 000 runs, sqrt(2 sum l_i^2 / runs), and Var||xi|| from 2e6
     seeded Gaussian draws with the standard deviation of a 10 000-run sample variance,
     sqrt((m4 - v^2) / runs), m4 the fourth central moment of the norm."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     runs = 10_000
     F = _atc10_los("I", "fit")
@@ -819,10 +821,11 @@ def _atc10_convexity_worst() -> float:
     theta = (N - 1) q a sinh(rho a) / (1 - q + q cosh(rho a)) (the derivative of the exponent);
     u = rho a by brentq for each contour x and threshold, and the largest u (= rho sqrt(b))."""
     from navcore.papers import atc10_multiple_access as pm
+    from navcore.papers import atc10_roc_bounds as roc
 
     n, q = pm.IN.n_sec36, 2 * pm.IN.tau_over_alpha_sec36
     worst = 0.0
-    for x in pm.contours():
+    for x in roc.contours():
         a = math.sqrt(1 / (3 * x * x))
         for theta in np.linspace(0.02, 0.98, 49):
 
@@ -865,10 +868,11 @@ def _atc10_lower_gaps_by_hand() -> list[float]:
     the exact tail sum_K Bin(N - 1, q)(K) P(a (2J - K) >= theta_g), J ~ Bin(K, 1/2) (scipy), at the
     exact ROC's grid point theta_g nearest to theta, and the corrected (3.5.14) at theta by hand
     (brentq's tilt), in decades."""
+    from navcore.papers import atc10_gaussian_comparison as gaussian
     from navcore.papers import atc10_multiple_access as pm
 
     n, q = pm.IN.n_sec36, 2 * pm.IN.tau_over_alpha_sec36
-    grid = np.asarray(pm.THETA_GRID)
+    grid = np.asarray(gaussian.THETA_GRID)
     ks = np.arange(0, 200)
     pk = stats.binom.pmf(ks, n - 1, q)
     out = []
@@ -907,7 +911,7 @@ def _atc10_outage_closed_form(ex: str) -> float:
     v(m) S3 first exceeds (f sd_0)^2, sd_0^2 = sigma^2 (tr + S / beta), at the integer above the
     positive root of that quadratic in m; the outage is one epoch (1 s) less. psi is the cubic's
     root; the geometry's columns are the model's (inputs of this arithmetic)."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     sigma, s0, f = 50.0, 5.0, paper.IN.outage_threshold_factor
     g = paper.table_4_2_from_geometry(ex, paper.fitted_radius_ratio())
@@ -940,7 +944,7 @@ def _atc10_direct_erp(k: int, p_dl: float) -> Callable[[], float]:
     numbers typed in, no model code (navcore.papers.atc10_jamming.direct_adl_erp_dbw)."""
 
     def f() -> float:
-        from navcore.papers import atc10_jamming as pj
+        from navcore.papers import atc10_system_tables as pj
 
         return pj.direct_adl_erp_dbw(p_dl, k)
 
@@ -2182,10 +2186,11 @@ def _ma1_window_empty_rho(
 def _atc10_exact_window_ratio(end: str) -> float:
     """The grid chain at the Table 2.1 threshold p_f and an end of the assumed correlation range
     (both read from the model's declarations), over (1 - p_f)^n."""
-    from navcore.papers import atc10_coverage_jamming as cj
+    from navcore.papers import atc10_jamming as model
+    from navcore.papers import atc10_jamming_appendices as cj
 
     pf, n = cj.window_pf(), cj.window_n()
-    rho = float(getattr(cj.IN.input("neighbour_correlation"), end))
+    rho = float(getattr(model.IN_COV.input("neighbour_correlation"), end))
     return _ma1_window_empty_rho(pf, rho, n) / (1 - pf) ** n
 
 
@@ -2336,7 +2341,7 @@ _TABLE_42 = {
 def _atc10_radius(which: str) -> float:
     """The synchronous orbit (brentq of GM/r^2 = w^2 r with the declared GM and period) over the
     declared Earth radius, or the declared fitted ratio."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     if which == "fit":
         return float(paper.IN.radius_ratio)
@@ -2355,7 +2360,7 @@ def _atc10_los(example: str, which: str, aircraft_height: bool = False) -> np.nd
     """Unit vectors satellite -> aircraft of a Table 4.1 example (the declared sub-satellite points
     and aircraft position), the aircraft on the unit sphere or, with ``aircraft_height``, at the
     declared height; a mirror of the longitudes changes none of the invariants below."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     r = _atc10_radius(which)
     h = 1 + paper.IN.aircraft_height_m / paper.IN.earth_radius_m if aircraft_height else 1.0
@@ -2382,7 +2387,7 @@ def _atc10_invariants(example: str, which: str) -> dict[str, float]:
 def _atc10_zenith_max(which: str) -> float:
     """Largest zenith angle of Example I's satellites: for central angle g between the aircraft (on
     the unit sphere) and a satellite at radius r, z = atan2(r sin g, r cos g - 1)."""
-    from navcore.papers import atc10_tracking as paper
+    from navcore.papers import atc10_tracking_geometry as paper
 
     r = _atc10_radius(which)
     ac = _unit_sphere(*paper.aircraft_lat_lon())
@@ -3745,6 +3750,7 @@ def _atc10_22_exact_ratio_8(pd_min: float) -> float:
     Gaussian noise of the Theorem 3.1 power N q b (scipy's normal)."""
     import mpmath
 
+    from navcore.papers import atc10_gaussian_comparison as gaussian
     from navcore.papers import atc10_multiple_access as pm
 
     with mpmath.workdps(80):
@@ -3776,7 +3782,7 @@ def _atc10_22_exact_ratio_8(pd_min: float) -> float:
                 out += w * p
             return out
 
-        grid = [mpmath.mpf(float(t)) for t in pm.THETA_GRID]
+        grid = [mpmath.mpf(float(t)) for t in gaussian.THETA_GRID]
         level = 1 - mpmath.mpf(pd_min)
         best = []
         for name in pm.DENSITY_NAMES:

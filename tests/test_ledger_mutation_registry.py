@@ -187,7 +187,7 @@ def _same(a, b) -> None:
 
 def test_module_paper_is_the_first_word_of_the_module_name():
     """Oracle: the module naming rule ``<paper>_<section>``, read off the names."""
-    assert registry._module_paper("navcore.papers.atc10_coverage_ma") == "ATC10"
+    assert registry._module_paper("navcore.papers.atc10_roc_bounds") == "ATC10"
     assert registry._module_paper("navcore.papers.wf") == "WF"
     assert registry._module_paper("kzl_a_b") == "KZL"
 

@@ -19,7 +19,7 @@ from navcore.location.clock_tracking import (
     three_satellite_clock_variance,
     tracking_position_errors,
 )
-from navcore.papers import atc10_tracking, wf_assessment, wf_inputs
+from navcore.papers import atc10_clock_tracking, atc10_tracking_geometry, wf_assessment, wf_inputs
 from navcore.units import FT, C
 
 
@@ -32,8 +32,8 @@ def test_tracking_position_errors_matches_paper_row_and_oracle(example, sigma0):
     first gain 1/beta, the tracking limit the converged gain, and the first three-satellite
     estimate the exact clock variance one epoch after the drop. The paper module's table row
     must be the library's (it delegates)."""
-    inputs = atc10_tracking.printed_table_4_2(example)
-    sigma, c = atc10_tracking.IN.sigma_ns, atc10_tracking.IN.c_ft_per_ns
+    inputs = atc10_tracking_geometry.printed_table_4_2(example)
+    sigma, c = atc10_tracking_geometry.IN.sigma_ns, atc10_tracking_geometry.IN.c_ft_per_ns
     row = tracking_position_errors(
         inputs["trace_all"],
         inputs["s_all"],
@@ -44,7 +44,7 @@ def test_tracking_position_errors_matches_paper_row_and_oracle(example, sigma0):
         sigma,
         c=c,
     )
-    assert tuple(row) == pytest.approx(atc10_tracking.table_4_3_row(inputs, sigma0), rel=1e-12)
+    assert tuple(row) == pytest.approx(atc10_clock_tracking.table_4_3_row(inputs, sigma0), rel=1e-12)
     h = gain_recursion(inputs["beta"], sigma, sigma0, 20_000)
     assert h.gamma[0] == pytest.approx(1.0 / inputs["beta"], rel=1e-12)
     sd0 = c * math.sqrt(position_mse(sigma, inputs["trace_all"], inputs["s_all"], h.gamma[0]))
@@ -60,7 +60,7 @@ def test_tracking_position_errors_matches_paper_row_and_oracle(example, sigma0):
 
 def test_tracking_position_errors_convention_is_a_parameter():
     """Physical c in SI: sigma in seconds gives metres, the ft/ns convention gives ns numbers."""
-    inputs = atc10_tracking.printed_table_4_2("I")
+    inputs = atc10_tracking_geometry.printed_table_4_2("I")
     args = (inputs["trace_all"], inputs["s_all"], inputs["trace_123"], inputs["s_123"], inputs["beta"])
     ns = tracking_position_errors(*args, 5.0, 50.0, c=1.0)
     si = tracking_position_errors(*args, 5e-9, 50e-9, c=C)

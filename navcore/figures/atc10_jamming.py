@@ -13,9 +13,10 @@ from matplotlib.figure import Figure
 from navcore.detection import jamming as jm
 from navcore.figures import register
 from navcore.papers import atc10_jamming as paper
+from navcore.papers import atc10_tracking_lists as lists
 
 #: Fraction t of the first-stage rule drawn in Figs. 2.3-2.16 (the paper's sets are lost).
-T_VALUES = paper.T_GRID
+T_VALUES = lists.T_GRID
 K1_PDL = paper.K1_PDL_GRID
 LOG10_FLOOR = -12.0
 

@@ -29,7 +29,9 @@ from navcore.detection.zakai import (
     m_sequence,
 )
 from navcore.figures import register
+from navcore.papers import atc10_gaussian_comparison as gaussian
 from navcore.papers import atc10_multiple_access as m
+from navcore.papers import atc10_roc_bounds as roc
 
 ROC_THETAS = np.linspace(0.04, 0.96, 47)
 COLORS = {3.0: "C0", 4.0: "C1", 5.0: "C2", 6.0: "C3", 8.0: "C4"}
@@ -79,7 +81,7 @@ def _column_limit(x: float) -> float:
     lo = 1.0
     for name in m.DENSITY_NAMES:
         ub_f, ub_m, _, _ = _bounds(name, x)
-        r = m.exact_roc(name, x)
+        r = gaussian.exact_roc(name, x)
         keep = (r.p_f > 0) & (r.p_miss > 0)
         lo = min(lo, float(np.exp(ub_m.min())), float(np.exp(ub_f.min())))
         lo = min(lo, float(r.p_miss[keep].min()), float(r.p_f[keep].min()))
@@ -98,7 +100,7 @@ def _column_limit(x: float) -> float:
     "range of every panel and is not drawn.",
 )
 def bounds_grid() -> Figure:
-    xs = m.contours()
+    xs = roc.contours()
     fig, axes = plt.subplots(
         len(m.DENSITY_NAMES), len(xs), figsize=(7.6, 6.4), sharex="col", sharey="col", squeeze=False
     )
@@ -111,7 +113,7 @@ def bounds_grid() -> Figure:
             ax.plot(np.exp(lmiss_g), np.exp(lpf_g), color="k", lw=2.5, alpha=0.25)
             ub_f, ub_m, _, _ = _bounds(name, x)
             ax.plot(np.exp(ub_m), np.exp(ub_f), "-", color="C0", lw=1.2)
-            r = m.exact_roc(name, x)
+            r = gaussian.exact_roc(name, x)
             keep = (r.p_f > 0) & (r.p_miss > 0)
             ax.plot(r.p_miss[keep], r.p_f[keep], ":", color="k", lw=1.3)
             ax.set_xscale("log")
@@ -169,7 +171,7 @@ def two_valued_component() -> Figure:
 def gaussian_rocs() -> Figure:
     fig, ax = plt.subplots(figsize=(6.4, 4.6))
     th = np.linspace(0.01, 0.99, 197)
-    for x in m.contours():
+    for x in roc.contours():
         p = m.IN.n_sec36 * 2 * m.IN.tau_over_alpha_sec36 * m.b_of_contour(x)
         lpf, lmiss = gaussian_roc(th, p)
         ax.plot(np.exp(lmiss), np.exp(lpf), color=COLORS[x], label=f"1/√(3b) = {x:g}")
@@ -211,7 +213,7 @@ def exp_vs_expg() -> Figure:
     for n in (1e4, 1e5, 2e5, 1e6, 1e7):
         ax.plot(g, exponent_from_gaussian_exponent(n, m.IN.tau_over_alpha_fig310, g), label=f"N = {n:g}")
     ax.plot(g, g, "k--", lw=0.8, label="Exp = Exp_g")
-    ax.plot([m.worked_example_exp_g()], [m.worked_example_exp()], "ko")
+    ax.plot([m.worked_example_exp_g()], [gaussian.worked_example_exp()], "ko")
     ax.set_xlabel("Exp_g")
     ax.set_ylabel("Exp")
     ax.legend(fontsize=8)
@@ -279,14 +281,14 @@ def noise_tails() -> Figure:
 def actual_vs_gaussian() -> Figure:
     fig, axes = plt.subplots(1, 2, figsize=(9.6, 4.2))
     ax = axes[0]
-    th = m.THETA_GRID
+    th = gaussian.THETA_GRID
     styles = dict(zip(m.DENSITY_NAMES, ("-", "--", "-.", ":"), strict=True))
     for x in (3.0, 5.0, 8.0):
         p = m.IN.n_sec36 * 2 * m.IN.tau_over_alpha_sec36 * m.b_of_contour(x)
         lpf, lmiss = gaussian_roc(th, p)
         ax.plot(np.exp(lmiss), np.exp(lpf), color="k", lw=2.5, alpha=0.35)
         for name in m.DENSITY_NAMES:
-            r = m.exact_roc(name, x)
+            r = gaussian.exact_roc(name, x)
             keep = (r.p_f > 0) & (r.p_miss > 0)
             ax.plot(r.p_miss[keep], r.p_f[keep], styles[name], color=COLORS[x], lw=1)
     _roc_axes(ax)
@@ -297,12 +299,14 @@ def actual_vs_gaussian() -> Figure:
     ax.legend(fontsize=7, loc="lower left")
     ax.set_title("contours 3 (blue), 5 (green), 8 (purple)", fontsize=9)
     ax = axes[1]
-    r = m.psk_roc()
+    r = gaussian.psk_roc()
     keep = (r.p_f > 0) & (r.p_miss > 0)
     ax.plot(r.p_miss[keep], r.p_f[keep], "C0-", label="PSK, Monte Carlo")
     lpf, lmiss = m.psk_chernoff()
     ax.plot(np.exp(lmiss), np.exp(lpf), "C0o--", ms=4, label="Chernoff upper bound")
-    lpf, lmiss = gaussian_roc(th, m.IN.n_sec36 * 2 * m.IN.tau_over_alpha_sec36 / (3 * m.psk_contour() ** 2))
+    lpf, lmiss = gaussian_roc(
+        th, m.IN.n_sec36 * 2 * m.IN.tau_over_alpha_sec36 / (3 * gaussian.psk_contour() ** 2)
+    )
     ax.plot(np.exp(lmiss), np.exp(lpf), "k-", lw=2.5, alpha=0.35, label="ROC_g, same power")
     _roc_axes(ax)
     ax.set_ylim(1e-10, 1)

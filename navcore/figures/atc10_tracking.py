@@ -8,7 +8,9 @@ from matplotlib.figure import Figure
 
 from navcore.figures import register
 from navcore.location.clock_tracking import psi, psi_large_alpha, psi_small_alpha
-from navcore.papers import atc10_tracking as m
+from navcore.papers import atc10_clock_tracking as clock
+from navcore.papers import atc10_tracking_examples as examples
+from navcore.papers import atc10_tracking_geometry as m
 
 #: Epochs with all satellites shown in Figs. 4.2-4.3 (the paper's N is not stated).
 N_SHOWN = 40
@@ -34,7 +36,7 @@ def psi_function() -> Figure:
     ax.axvspan(0.3, 1.0, color="0.9", zorder=0)
     for ex, mk in (("I", "o"), ("II", "s")):
         b = float(m.TABLE_4_2[ex]["beta"])
-        al = np.array([8 / 27 * s0**2 * b / m.IN.sigma_ns**2 for s0 in m.sigma0_values()])
+        al = np.array([8 / 27 * s0**2 * b / m.IN.sigma_ns**2 for s0 in clock.sigma0_values()])
         ax.plot(al, psi(al), mk, color="C2", mfc="none", label=f"Table 4.3, Example {ex}")
     ax.set_ylim(0, 1.05)
     ax.set_xlabel("α = (8/27) σ₀² β / σ²")
@@ -48,9 +50,9 @@ def _rms_figure(example: str) -> Figure:
     corrected = dict(printed_inputs)
     corrected["s_123"] = m.table_4_2_from_geometry(example, m.fitted_radius_ratio())["s_123"]
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
-    for s0, c in zip(m.sigma0_values(), ("C0", "C1", "C3"), strict=True):
-        n, rms_p = m.rms_history_ft(printed_inputs, s0, N_SHOWN, M_SHOWN)
-        _, rms_c = m.rms_history_ft(corrected, s0, N_SHOWN, M_SHOWN)
+    for s0, c in zip(clock.sigma0_values(), ("C0", "C1", "C3"), strict=True):
+        n, rms_p = examples.rms_history_ft(printed_inputs, s0, N_SHOWN, M_SHOWN)
+        _, rms_c = examples.rms_history_ft(corrected, s0, N_SHOWN, M_SHOWN)
         ax.plot(n[: N_SHOWN + 1], rms_p[: N_SHOWN + 1], "-", color=c, label=f"σ₀ = {s0:g} ns")
         ax.plot(n[N_SHOWN:], rms_p[N_SHOWN:], "--", color=c)
         ax.plot(n[N_SHOWN:], rms_c[N_SHOWN:], "-", color=c, lw=2.4, alpha=0.55)
@@ -104,10 +106,10 @@ def tracker_monte_carlo() -> Figure:
     printed_geo = dict(geo)
     printed_geo["s_123"] = geo["s_123_printed"]
     for s0, c in zip((5.0, 50.0), ("C0", "C1"), strict=True):
-        mc = m.tracker_monte_carlo(ex, s0)
-        n, pred = m.rms_history_ft(geo, s0, m.MC_N_LAST, 1)
-        _, pred_p = m.rms_history_ft(printed_geo, s0, m.MC_N_LAST, 1)
-        sel = np.r_[0:12:1, 12 : m.MC_N_LAST + 2 : 6, m.MC_N_LAST + 1]
+        mc = clock.tracker_monte_carlo(ex, s0)
+        n, pred = examples.rms_history_ft(geo, s0, clock.MC_N_LAST, 1)
+        _, pred_p = examples.rms_history_ft(printed_geo, s0, clock.MC_N_LAST, 1)
+        sel = np.r_[0:12:1, 12 : clock.MC_N_LAST + 2 : 6, clock.MC_N_LAST + 1]
         ax.plot(n, pred, "-", color=c, label=f"recursion, σ₀ = {s0:g} ns")
         ax.plot(n[sel], np.sqrt(mc.position_mse[sel]), "o", color=c, ms=3.5, mfc="none", label="Monte Carlo")
         ax.plot(n[-1], pred_p[-1], "x", color=c, ms=9, mew=2, label="printed Eq. (4.5.30) at N + 1")
