@@ -31,14 +31,23 @@ READING_ORDER = (
     "sp_residual_acceleration",
     "sp_tables",
     "sp_tracking",
-    # ATC-10
-    "atc10_coverage_jamming",
-    "atc10_coverage_ma",
-    "atc10_coverage_tracking",
+    # ATC-10: Ch. 1 (Table 1.1), Ch. 2 (Secs. 2.1-2.5, 2.7, 2.6-2.8 lists), App. A-D; Ch. 3
+    # (Secs. 3.1-3.4 with App. E, 3.5-3.7, 3.8, 3.9 with App. F); Ch. 4 (Secs. 4.1-4.4, 4.5,
+    # 4.6-4.7) and App. G-H
+    "atc10_system_tables",
     "atc10_jamming",
+    "atc10_single_pulse",
+    "atc10_tracking_lists",
+    "atc10_jamming_appendices",
     "atc10_multiple_access",
+    "atc10_roc_bounds",
+    "atc10_gaussian_comparison",
+    "atc10_zakai_bandwidth",
+    "atc10_tracking_geometry",
+    "atc10_clock_tracking",
+    "atc10_tracking_examples",
+    "atc10_tracking_appendices",
     "atc10_quotes",
-    "atc10_tracking",
     # KZL: Secs. 1-2, 3.1-3.2, 3.3-3.5, 3.6 (covariance, then the simulation) and 3.7
     "kzl_requirements",
     "kzl_mechanization",
