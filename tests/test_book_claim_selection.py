@@ -23,7 +23,6 @@ ROOT = Path(__file__).resolve().parents[1]
 #: typed id); which one derives the claim is a page decision, left for the pages' next revision.
 KNOWN_TWICE = {
     "ATC10-tab4.3-exI-sd0-norm-variance": ["atc10/32-tracking-examples"] * 2,
-    "SP-sec2.6.4-pointing-gyrocompass": ["sp/05-target-location", "sp/21-missions"],
 }
 
 
