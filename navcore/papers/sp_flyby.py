@@ -25,7 +25,8 @@ each threshold measured in its own loop's noise bandwidth (C/N0 - 10 log10 B_L).
 
 The lock tables drive the covariance engine of the other Sec. 2.6 missions
 (:mod:`navcore.papers.sp_missions_scenarios`), whose result gives each satellite's range
-uncertainty at its own reacquisition: the cells of Table 2.7.
+uncertainty at its own reacquisition: the cells of Table 2.7, each a claim of this module, as is
+the Sec. 2.8 assertion that the same runs check (the error with GPS tracked).
 
 The paper publishes the thresholds, the bandwidths, the search rule and the outcome (about 20 min
 of loosely coupled blackout), not the jammer, the antenna, the track or the satellites. Each such

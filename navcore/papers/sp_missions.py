@@ -3,7 +3,8 @@
 Published values are typed here once with their locators; every reproduced value is
 computed by the covariance-analysis engine (:mod:`navcore.integration.engine`)
 from Tables 2.4, 2.5 and 2.8 (:mod:`navcore.papers.sp_tables`) and the stated assumptions
-of :mod:`navcore.papers.sp_missions_scenarios`.
+of :mod:`navcore.papers.sp_missions_scenarios`. Cross-checks on the printed times of
+Secs. 2.6.1 and 2.6.3 and on Table 2.5's columns are claims here too.
 """
 
 from __future__ import annotations
