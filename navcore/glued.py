@@ -4432,6 +4432,6 @@ def sp22_unaided_jitter_dbhz() -> float:
 def sp22_gps_aided_ratio() -> float:
     """Sec. 2.8 assertion 1 in numbers: the 10 over the 0.2 nmi/h tightly coupled error 1 s
     before the tightly coupled blackout starts (flyby runs)."""
-    from navcore.papers import sp_coverage as spc
+    from navcore.papers import sp_flyby
 
-    return float(spc.gps_aided_error_ratio())
+    return float(sp_flyby.gps_aided_error_ratio())

@@ -19,12 +19,6 @@ from navcore.ledger import Claim, printed
 
 ROOT = Path(__file__).resolve().parents[1]
 
-#: Claims two tables showed before the pages selected by item (an id prefix's table beside a
-#: typed id); which one derives the claim is a page decision, left for the pages' next revision.
-KNOWN_TWICE = {
-    "SP-sec2.6.4-pointing-gyrocompass": ["sp/05-target-location", "sp/21-missions"],
-}
-
 
 def _claim(cid: str, locator: str, paper: str = "SP") -> Claim:
     value, tol = printed("17.67")
@@ -139,7 +133,7 @@ def test_every_claim_is_shown_on_one_page_its_own():
     in code (a list built from a paper module; for a claim that names no page, a page of its
     paper's chapter)."""
     shown, opaque = page_selections(ROOT / "book")
-    twice = {c: p for c, p in shown.items() if len(p) > 1 and KNOWN_TWICE.get(c) != p}
+    twice = {c: p for c, p in shown.items() if len(p) > 1}
     assert not twice, f"claims shown by two tables: {twice}"
     elsewhere = {c.id: (c.discussed_in, shown[c.id][0]) for c in ledger.claims()
                  if c.id in shown and c.discussed_in and c.discussed_in not in shown[c.id]}  # fmt: skip

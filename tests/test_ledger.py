@@ -327,7 +327,8 @@ def test_cli_ledger_json_and_exit_status(monkeypatch, capsys):
 
 def test_cli_times_sums_each_tasks_claims(monkeypatch, capsys):
     """``--times`` prints, on stderr, each parallel task's seconds, longest first: the sum of its
-    claims' seconds (two SP flyby claims of two modules make one task, a WF claim another).
+    claims' seconds (two SP flyby claims, a figure's and a Table 2.7 cell's, make one task, a WF
+    claim another).
     Oracle: the sums by hand from the seconds the stub reports."""
     from navcore import __main__ as cli
     from navcore import ledger
@@ -339,7 +340,7 @@ def test_cli_times_sums_each_tasks_claims(monkeypatch, capsys):
     monkeypatch.setattr(ledger, "evaluations", lambda paper=None, prefix=None, n_jobs=None: one)
     assert cli.main(["ledger", "--times"]) == 0
     err = capsys.readouterr().err.splitlines()
-    assert err == ["     3.5 s  navcore.papers.sp_coverage", "     0.2 s  navcore.papers.wf_location_error"]
+    assert err == ["     3.5 s  navcore.papers.sp_flyby", "     0.2 s  navcore.papers.wf_location_error"]
 
 
 def test_cli_exit_status_nonzero_on_failure(monkeypatch, capsys):

@@ -664,18 +664,18 @@ def _group_records(claim_ids: tuple[str, ...]) -> list[tuple[str, dict[str, Any]
 
 
 #: Paper modules whose claims read the same model runs, evaluated in one task (the first module
-#: names it) so that each shared run is made once: SP's flyby, whose Table 2.7 cells the coverage
-#: module declares beside the flyby module's own claims.
-_SHARED_RUNS = (("navcore.papers.sp_coverage", "navcore.papers.sp_flyby"),)
+#: names it) so that each shared run is made once. None today: the claims that read SP's flyby
+#: runs (Table 2.7 cell by cell among them) all live in its flyby module.
+_SHARED_RUNS: tuple[tuple[str, ...], ...] = ()
 
 #: Claims that read model runs shared with no other claim of their modules, in a task of their
 #: own (its name, the modules, the claim-id prefixes), so that the two longest modules split
 #: across the cores: SP's helicopter mission (Sec. 2.6.4's claims and Fig. 2.9's helicopter
-#: curve, whose runs the rest of the missions and of the flyby's module do not read).
+#: curve, whose runs the rest of the missions module does not read).
 _CLAIM_TASKS: tuple[tuple[str, tuple[str, ...], tuple[str, ...]], ...] = (
     (
         "SP helicopter mission",
-        ("navcore.papers.sp_missions", "navcore.papers.sp_coverage"),
+        ("navcore.papers.sp_missions",),
         ("SP-sec2.6.4-", "SP-fig2.9-heli"),
     ),
 )
@@ -685,7 +685,7 @@ _CLAIM_TASKS: tuple[tuple[str, tuple[str, ...], tuple[str, ...]], ...] = (
 #: parallel ledger hands out its tasks (longest first) uses them. ``python -m navcore ledger
 #: --times`` prints the current ones.
 _TASK_SECONDS = {
-    "navcore.papers.sp_coverage": 151.0,
+    "navcore.papers.sp_flyby": 151.0,
     "SP helicopter mission": 73.0,
     "navcore.papers.sp_missions": 108.0,
     "navcore.papers.kzl_simulation": 97.0,

@@ -1,7 +1,8 @@
 """SP Sections 2.1-2.2: the state vectors of the receiver and the two integration filters.
 
-Published inputs are the component rows of Tables 2.1-2.3; the totals are claims, computed
-from the layouts of :mod:`navcore.gnss.architectures`.
+Published inputs are the component rows of Tables 2.1-2.3; the totals and each printed cell
+(the state count of one block) are claims, computed from the layouts of
+:mod:`navcore.gnss.architectures`.
 """
 
 from __future__ import annotations
@@ -53,16 +54,19 @@ IN.published("table_2_2", _TABLE_2_2, locator="Table 2.2", quantity="loosely cou
 IN.published("table_2_3", _TABLE_2_3, locator="Table 2.3", quantity="tightly coupled filter states (rows)")
 
 
+#: The library layouts' block names for the printed row labels that differ (lower case).
+_NORM = {
+    "gyro drift": "gyro bias",  # the paper's name for the gyro bias block
+    "user clock bias": "clock bias",
+    "user clock drift": "clock drift",
+    "accel. bias": "accel bias",
+    "accel. scale factor": "accel scale factor",
+}
+
+
 def _printed_rows_match_layout(rows: tuple[tuple[str, int], ...], layout_rows: list[tuple[str, int]]) -> bool:
     """The layout has the printed rows, in order, with the printed sizes."""
-    norm = {
-        "gyro drift": "gyro bias",  # the paper's name for the gyro bias block
-        "user clock bias": "clock bias",
-        "user clock drift": "clock drift",
-        "accel. bias": "accel bias",
-        "accel. scale factor": "accel scale factor",
-    }
-    printed_rows = [(norm.get(n.lower(), n.lower()), k) for n, k in rows]
+    printed_rows = [(_NORM.get(n.lower(), n.lower()), k) for n, k in rows]
     return printed_rows == [(n.lower(), k) for n, k in layout_rows]
 
 
@@ -76,6 +80,54 @@ def _layout_size(layout, rows: tuple[tuple[str, int], ...]) -> int:
 def _tight_within_loose_cascade() -> bool:
     tight = tightly_coupled_layout()
     return tight.issubset(receiver_pva_layout().union(loosely_coupled_layout()))
+
+
+# --- Tables 2.1-2.3: one claim per printed cell ------------------------------------------
+PAGE = "sp/01-architectures"
+
+_TABLES = {
+    "2.1": ("table_2_1", receiver_pva_layout, "the GPS receiver's PVA filter"),
+    "2.2": ("table_2_2", loosely_coupled_layout, "the loosely coupled integration filter"),
+    "2.3": ("table_2_3", tightly_coupled_layout, "the tightly coupled integration filter"),
+}
+#: printed rows (row label, printed count) per table; the same rows are the published inputs
+#: ``table_2_x`` (the claims read the row labels there)
+_ROWS = {
+    "2.1": _TABLE_2_1,
+    "2.2": _TABLE_2_2,
+    "2.3": _TABLE_2_3,
+}
+
+
+def _slug(label: str) -> str:
+    return label.lower().replace(".", "").replace(" ", "-")
+
+
+def layout_block_size(table: str, row: int) -> int:
+    """Size of the layout block named by printed row ``row`` of Table ``table`` (the row
+    label is read from the published input; the count comes from the library layout)."""
+    name, layout, _ = _TABLES[table]
+    label = getattr(IN, name)[row][0]
+    key = _NORM.get(label.lower(), label.lower())
+    sizes = dict(layout().table())
+    return int(sizes[key])
+
+
+def _state_claim(table: str, row: int) -> Claim:
+    label, count = _ROWS[table][row]
+    return Claim(
+        id=f"SP-tab{table}-{_slug(label)}",
+        locator=f"Table {table}",
+        quantity=f"states of the '{label}' block of {_TABLES[table][2]}",
+        published=count,
+        unit="states",
+        compute=lambda t=table, r=row: layout_block_size(t, r),
+        tolerance=EXACT,
+        expected_status="reproduced",
+        note="Block size of the library's state layout used by the SP mission and flyby runs (the "
+        "integration architectures), looked up by the printed row label.",
+        discussed_in=PAGE,
+    )
 
 
 CLAIMS = [
@@ -125,6 +177,20 @@ CLAIMS = [
         expected_status="reproduced",
         note="Set inclusion of the Table 2.3 blocks in the union of the Table 2.1 and 2.2 "
         "blocks, with equal block sizes.",
+    ),
+    *(_state_claim(t, r) for t in ("2.1", "2.2", "2.3") for r in range(len(_ROWS[t]))),
+    Claim(
+        id="SP-sec2.1-fixes-decorrelated",
+        locator="Sec. 2.1",
+        quantity="receiver position solutions 10 s apart are not significantly correlated",
+        published=True,
+        unit="statement",
+        compute=None,
+        tolerance=EXACT,
+        expected_status="not-reproducible",
+        note="The statement is about the magnitude of the receiver filter's process noise, which Sec. 2.1 "
+        "(Table 2.1) does not give; any value the book assumed would decide the answer by itself.",
+        discussed_in=PAGE,
     ),
 ]
 

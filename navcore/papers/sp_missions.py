@@ -3,7 +3,8 @@
 Published values are typed here once with their locators; every reproduced value is
 computed by the covariance-analysis engine (:mod:`navcore.integration.engine`)
 from Tables 2.4, 2.5 and 2.8 (:mod:`navcore.papers.sp_tables`) and the stated assumptions
-of :mod:`navcore.papers.sp_missions_scenarios`.
+of :mod:`navcore.papers.sp_missions_scenarios`. Cross-checks on the printed times of
+Secs. 2.6.1 and 2.6.3 and on Table 2.5's columns are claims here too.
 """
 
 from __future__ import annotations
@@ -30,7 +31,13 @@ from navcore.inertial.imu import noise_only
 from navcore.inertial.trajectories import straight_and_level
 from navcore.integration.engine import circular_error_probable, run_covariance_analysis
 from navcore.papers import sp_missions_scenarios as sc
-from navcore.papers.sp_tables import GRADE_LABELS_NMI_PER_H, sp_imu_grade
+from navcore.papers.sp_quotes import quoted
+from navcore.papers.sp_tables import (
+    GRADE_LABELS_NMI_PER_H,
+    TABLE_2_5_ROWS,
+    sp_imu_grade,
+    table_2_5_value,
+)
 from navcore.units import DEG, MINUTE, NMI
 from navcore.units import HOUR as _HOUR
 
@@ -363,6 +370,46 @@ def coupling_difference_pct() -> float:
 
 def _coupling_matters_short_term() -> bool:
     return coupling_difference_pct() > IN.noticeable_change_pct and _difference_shrinks()
+
+
+# --- statements and cross-checks on printed numbers (Secs. 2.4, 2.6.1, 2.6.3, 2.6.4) ---------
+def reacquisition_start_s() -> float:
+    """1020 s + 3 x 3 min + 20 min: the start of the code reacquisitions (Sec. 2.6.1)."""
+    return sc.reacquisition_s()
+
+
+def code_loss_after_fourth_carrier() -> bool:
+    """The first code loss (1020 s) comes after the fourth carrier loss (360 s + 3 x 3 min)."""
+    fourth = sc.IN.first_carrier_loss_s + 3 * sc.IN.loss_interval_min * MINUTE
+    return bool(sc.IN.first_code_loss_s > fourth)
+
+
+def headon_difference_s() -> float:
+    """159 s - 153 s: how much longer the tightly coupled systems resisted the jammer."""
+    return sc.IN.headon_free_loose_s - sc.IN.headon_free_tight_s
+
+
+def half_column_exceptions() -> tuple[str, ...]:
+    """Table 2.5 rows whose 0.5 nmi/h cell is not half the 1.0 nmi/h cell (to the printed
+    digits of both cells)."""
+    out = []
+    for row, _, texts in TABLE_2_5_ROWS:
+        half = table_2_5_value(row, 1.0) / 2.0
+        # half a unit of the 0.5 cell's last digit, plus half of the 1.0 cell's (it is halved)
+        allowed = printed(texts[2])[1].absolute + printed(texts[1])[1].absolute / 2.0
+        if abs(table_2_5_value(row, 0.5) - half) > allowed:
+            out.append(row)
+    return tuple(out)
+
+
+def half_column_except_gyro_sf() -> bool:
+    return half_column_exceptions() == ("gyro_scale_factor_ppm",)
+
+
+def helicopter_error_1nmi_m() -> float:
+    """1 nmi/h helicopter target-location error (8 km, assumed bearing) 19 min after GPS loss,
+    no Doppler (mission model; equal to the position error within 1 %)."""
+    return sc.target_location_sigma(sc.helicopter(False)[1.0])
 
 
 _TAB25 = "Table 2.5 and Sec. 2.4"
@@ -847,3 +894,87 @@ CLAIMS = [
         discussed_in="sp/21-missions",
     ),
 ]
+
+#: Cross-checks of printed times and of Table 2.5's columns, and the helicopter's Fig. 2.9 value
+#: (their quotes are in :mod:`navcore.papers.sp_quotes`).
+_CROSS_CHECKS = [
+    Claim(
+        id="SP-sec2.6.1-reacquisition-2760s",
+        locator="Sec. 2.6.1",
+        quantity="start of code reacquisition: first code loss + $3\\times$ 3-min intervals + 20-min outage",
+        published=printed("2760")[0],
+        unit="s",
+        kind="cross-check",
+        compute=reacquisition_start_s,
+        tolerance=printed("2760")[1],
+        expected_status="consistent",
+        note="$1020 + 3\\times 180 + 1200 = 2760$ s: the printed times agree with the 3-min spacing within "
+        "the code losses and the 20-min outage (arithmetic on printed numbers).",
+        discussed_in="sp/21-missions",
+    ),
+    Claim(
+        id="SP-sec2.6.1-code-after-fourth-carrier",
+        locator="Sec. 2.6.1",
+        quantity="the first code loss (1020 s) follows the fourth carrier loss (360 s + $3\\times$ 3 min)",
+        published=True,
+        unit="statement",
+        kind="cross-check",
+        compute=code_loss_after_fourth_carrier,
+        tolerance=EXACT,
+        expected_status="consistent",
+        note="The fourth carrier loss is at $360 + 3\\times 180 = 900$ s, so code loss 'began after the "
+        "fourth "
+        "carrier tracking loop lost lock', as printed; the gap is 120 s, not a full 3-min interval, "
+        "which the text does not claim.",
+        discussed_in="sp/21-missions",
+    ),
+    Claim(
+        id="SP-sec2.6.3-6s-longer",
+        locator="Sec. 2.6.3",
+        quantity="how much longer the tightly coupled systems resisted the jamming",
+        published=6.0,
+        unit="s",
+        kind="cross-check",
+        compute=headon_difference_s,
+        tolerance=prose("about", why="'for about 6 s longer'"),
+        expected_status="consistent",
+        note="159 s - 153 s of free inertial flight before bomb release (Sec. 2.6.3).",
+        discussed_in="sp/21-missions",
+    ),
+    Claim(
+        id="SP-tab2.5-half-column",
+        locator="Table 2.5",
+        quantity="the 0.5 nmi/h column is half the 1.0 nmi/h column in every row but the gyro scale factor",
+        published=True,
+        unit="statement",
+        kind="cross-check",
+        compute=half_column_except_gyro_sf,
+        tolerance=EXACT,
+        expected_status="consistent",
+        note="Each 0.5 nmi/h cell against half the 1.0 nmi/h cell, within half a unit of the 0.5 cell's "
+        "last digit plus half of the 1.0 cell's (the printed cells are both rounded): "
+        "37/2 = 18.5 against 19, 179/2 = 89.5 against 90, "
+        "0.0045/2 = 0.00225 against 0.0022, "
+        "0.13/2 = 0.065 against 0.066 all round to the printed cell; only the gyro scale factor "
+        "breaks the rule (7.5/2 = 3.75 against 3.5 ppm).",
+        discussed_in="sp/21-missions",
+    ),
+    Claim(
+        id="SP-fig2.9-heli-1nmi",
+        locator="Sec. 2.6.4 (Fig. 2.9)",
+        quantity="1 nmi/h helicopter target-location error 19 min after GPS loss (no Doppler)",
+        published=printed("192")[0],
+        unit="m",
+        compute=helicopter_error_1nmi_m,
+        tolerance=printed("192")[1],
+        expected_status="inconsistent",
+        note="The mission model of the missions page (tightly coupled, calibrated on the assumed "
+        "terrain-following trajectory, then 19 min jammed) gives the value shown, well above the "
+        "printed 192 m (the target at 8 km, bearing assumed; the pointing error adds under 1 %, "
+        "SP-sec2.6.4-pointing-negligible). The helicopter's trajectory, calibration span and geometry "
+        "are not published; they are assumed inputs with ranges, and the band over all of them stays "
+        "above the printed 192 m. Its 10 nmi/h counterpart is close to the printed 2750 m.",
+        discussed_in="sp/21-missions",
+    ),
+]
+CLAIMS += quoted(_CROSS_CHECKS)
