@@ -19,18 +19,18 @@ READING_ORDER = (
     "wf_inputs",
     "wf_example",
     "wf_quotes",
-    # SP
-    "sp_acquisition",
-    "sp_antijam",
+    # SP: Secs. 2.1-2.3 (Tables 2.1-2.3), 2.5 (tracking, residual acceleration, acquisition),
+    # 2.6.1-2.6.4 (the missions, then the flyby of Sec. 2.6.2 and Table 2.7) and 3
     "sp_architectures",
-    "sp_coverage",
-    "sp_flyby",
+    "sp_tracking",
+    "sp_residual_acceleration",
+    "sp_acquisition",
     "sp_missions",
+    "sp_flyby",
+    "sp_antijam",
+    "sp_tables",
     "sp_missions_scenarios",
     "sp_quotes",
-    "sp_residual_acceleration",
-    "sp_tables",
-    "sp_tracking",
     # ATC-10: Ch. 1 (Table 1.1), Ch. 2 (Secs. 2.1-2.5, 2.7, 2.6-2.8 lists), App. A-D; Ch. 3
     # (Secs. 3.1-3.4 with App. E, 3.5-3.7, 3.8, 3.9 with App. F); Ch. 4 (Secs. 4.1-4.4, 4.5,
     # 4.6-4.7) and App. G-H
