@@ -288,6 +288,7 @@ PACKAGES: dict[str, Package] = {
             "test_mutation_tool.py",
             "test_build_book_inprocess.py",
             "test_import_layers.py",
+            "test_papers_audit.py",
         ],
         sources=("navcore", "tools"),
         copy=("book",),

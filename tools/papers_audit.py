@@ -52,6 +52,7 @@ class Function:
     names: set[str] = field(default_factory=set)  # bare names referenced in the body
     attrs: set[tuple[str, str]] = field(default_factory=set)  # (alias, attribute) pairs
     in_claim: bool = False  # named inside a Claim/Erratum call, or builds a Claim
+    builds: bool = False  # its body calls Claim (a claim builder such as ``_s``)
     reads: bool = False  # reads a paper input, itself or through a function it names
     reads_directly: bool = False  # its own body names an input set
 
@@ -67,6 +68,7 @@ class Module:
     imported: dict[str, tuple[str, str]] = field(default_factory=dict)  # local -> (module, name)
     functions: dict[str, Function] = field(default_factory=dict)
     claim_names: set[str] = field(default_factory=set)  # names inside Claim(...) calls
+    call_refs: dict[str, set[str]] = field(default_factory=dict)  # callee -> names in its arguments
 
 
 def _call_name(node: ast.Call) -> str:
@@ -85,13 +87,19 @@ def _references(node: ast.AST) -> tuple[set[str], set[tuple[str, str]]]:
     return names, attrs
 
 
-def _claim_names(tree: ast.AST, builders: set[str]) -> set[str]:
-    out: set[str] = set()
+def _call_refs(tree: ast.AST) -> dict[str, set[str]]:
+    """For each name called in the module, the bare names its calls' arguments reference."""
+    out: dict[str, set[str]] = {}
     for node in ast.walk(tree):
-        if isinstance(node, ast.Call) and _call_name(node) in builders:
+        if isinstance(node, ast.Call):
+            refs = out.setdefault(_call_name(node), set())
             for part in [*node.args, *(k.value for k in node.keywords)]:
-                out |= _references(part)[0]
+                refs |= _references(part)[0]
     return out
+
+
+def _claim_names(mod: Module, builders: set[str]) -> set[str]:
+    return set().union(*(refs for callee, refs in mod.call_refs.items() if callee in builders))
 
 
 def read_module(path: Path) -> Module:
@@ -130,18 +138,33 @@ def read_module(path: Path) -> Module:
         start = min([node.lineno, *(d.lineno for d in node.decorator_list)])
         fn = Function(mod.name, name, node.end_lineno - start + 1)
         fn.names, fn.attrs = _references(node)
-        fn.in_claim = any(isinstance(s, ast.Call) and _call_name(s) == "Claim" for s in ast.walk(node))
+        fn.builds = any(isinstance(s, ast.Call) and _call_name(s) == "Claim" for s in ast.walk(node))
+        fn.in_claim = fn.builds
         mod.functions[name] = fn
-    mod.claim_names = _claim_names(tree, BUILDERS | {n for n, f in mod.functions.items() if f.in_claim})
-    for fn in mod.functions.values():
-        if fn.name in mod.claim_names:
-            fn.in_claim = True
+    mod.call_refs = _call_refs(tree)
     return mod
+
+
+def _mark_computes(mods: dict[str, Module]) -> None:
+    """Mark the functions named in a claim builder's call, the builder local or imported from
+    another paper module (a section module calls its chapter's ``_s``)."""
+    for mod in mods.values():
+        builders = BUILDERS | {n for n, f in mod.functions.items() if f.builds}
+        builders |= {
+            local
+            for local, (src, orig) in mod.imported.items()
+            if src in mods and orig in mods[src].functions and mods[src].functions[orig].builds
+        }
+        mod.claim_names = _claim_names(mod, builders)
+        for fn in mod.functions.values():
+            if fn.name in mod.claim_names:
+                fn.in_claim = True
 
 
 def audit(paths: list[Path]) -> dict[str, Module]:
     """Read the modules and decide, to a fixed point, which functions read a paper input."""
     mods = {p.stem: read_module(p) for p in paths}
+    _mark_computes(mods)
 
     def resolve(mod: Module, name: str) -> Function | None:
         if name in mod.functions:
