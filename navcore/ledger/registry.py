@@ -61,7 +61,7 @@ def paper_modules() -> tuple[str, ...]:
     Returns
     -------
     tuple of str
-        Full module names (``"navcore.papers.kzl_models"``); modules whose name starts with
+        Full module names (``"navcore.papers.kzl_mechanization"``); modules whose name starts with
         ``_`` are left out.
 
     Examples
