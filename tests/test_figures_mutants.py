@@ -157,11 +157,8 @@ def _fake_model(monkeypatch, densities: dict[str, tuple[list[float], ...]]) -> N
     probabilities (the figure module reads their logarithms)."""
     bounds = {name: tuple(np.log(np.array(v[:2]))) for name, v in densities.items()}
     rocs = {name: SimpleNamespace(p_f=np.array(v[2]), p_miss=np.array(v[3])) for name, v in densities.items()}
-    monkeypatch.setattr(
-        ma_figures,
-        "m",
-        SimpleNamespace(DENSITY_NAMES=tuple(densities), exact_roc=lambda name, x: rocs[name]),
-    )
+    monkeypatch.setattr(ma_figures, "m", SimpleNamespace(DENSITY_NAMES=tuple(densities)))
+    monkeypatch.setattr(ma_figures, "gaussian", SimpleNamespace(exact_roc=lambda name, x: rocs[name]))
     monkeypatch.setattr(ma_figures, "_bounds", lambda name, x: (*bounds[name], None, None))
 
 

@@ -138,7 +138,7 @@ class RunStore:
         Returns
         -------
         str
-            SHA-256 over the sources of :attr:`modules` (in their order), this module's source,
+            SHA-256 over the sources of ``modules`` (in their order), this module's source,
             and ``run_key`` with numpy's version; its first 24 hex digits.
         """
         if not isinstance(run_key, str):
