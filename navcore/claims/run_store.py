@@ -108,7 +108,7 @@ class RunStore:
         the module that assembles the run's arguments); they are imported when a key is made.
     root : Path or None, optional
         The directory that holds the store's directory; ``None`` is the system temporary
-        directory (:func:`tempfile.gettempdir`).
+        directory (``tempfile.gettempdir()``).
 
     Raises
     ------

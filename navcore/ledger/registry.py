@@ -55,7 +55,7 @@ def paper_modules() -> tuple[str, ...]:
 
     Each module defines the ``CLAIMS`` and ``ERRATA`` of one section of a paper; the registry
     imports them on demand (:func:`claims`, :func:`errata`) in this order, which is the order of
-    the ledger's rows and of the errata lists: :data:`navcore.papers.READING_ORDER` (a
+    the ledger's rows and of the errata lists: ``navcore.papers.READING_ORDER`` (a
     module it does not list comes after, by name).
 
     Returns
