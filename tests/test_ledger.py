@@ -14,7 +14,7 @@ import sys
 import pytest
 
 from navcore.claims.core import from_jsonable, jsonable
-from navcore.ledger import Claim, Erratum, Tolerance, evaluate, printed, validate_registry
+from navcore.ledger import EXACT, Claim, Erratum, Tolerance, evaluate, printed, validate_registry
 from navcore.ledger.tables import LedgerTable, json_dump
 from navcore.provenance import build_provenance
 
@@ -456,3 +456,29 @@ def test_a_claim_and_an_erratum_take_their_paper_from_their_id():
         Erratum(id="SP-E9-x", paper="KZL", **texts)
     with pytest.raises(ValueError, match=r"Erratum\.paper must be one of"):
         Erratum(id="XX-E9-x", **texts)
+
+
+def test_a_statement_claim_is_the_claim_written_out():
+    """Oracle: the same claim with every field written out (Claim.statement only fills the
+    fixed ones); published and unit cannot be given, other fields pass through."""
+
+    def holds() -> bool:
+        return True
+
+    short = Claim.statement(
+        id="SP-x", locator="Sec. 2.1", quantity="q", compute=holds, note="n", discussed_in="sp/01",
+        kind="cross-check",
+    )  # fmt: skip
+    long = Claim(
+        id="SP-x", locator="Sec. 2.1", quantity="q", published=True, unit="statement", compute=holds,
+        tolerance=EXACT, expected_status="reproduced", note="n", discussed_in="sp/01", kind="cross-check",
+    )  # fmt: skip
+    assert short == long
+    own = Tolerance(abs=0.0, reason="exact")
+    other = Claim.statement(
+        id="SP-y", locator="Sec. 2.1", quantity="q", compute=None, note="n", tolerance=own,
+        expected_status="not-reproducible",
+    )  # fmt: skip
+    assert (other.tolerance, other.expected_status) == (own, "not-reproducible")
+    with pytest.raises(ValueError, match=r"Claim\.statement fixes published"):
+        Claim.statement(id="SP-z", locator="L", quantity="q", compute=None, note="n", published=False)

@@ -942,6 +942,72 @@ class Claim:
         if isinstance(self.published, bool) and self.relation != "=":
             raise ValueError(f"a statement claim uses relation '=' (claim {self.id})")
 
+    @classmethod
+    def statement(
+        cls,
+        *,
+        id: str,
+        locator: str,
+        quantity: str,
+        compute: Callable[..., Any] | None,
+        note: str,
+        discussed_in: str = "",
+        tolerance: Tolerance | Callable[[], Tolerance] | None = None,
+        expected_status: Status = "reproduced",
+        **fields: Any,
+    ) -> Claim:
+        """A claim that a printed statement holds: published ``True``, unit ``"statement"``.
+
+        The common fields of a statement claim, in one place: its published value is the
+        truth value ``True`` (the paper says it holds), its unit ``"statement"``, its tolerance
+        :data:`EXACT` unless given and its expected verdict ``reproduced`` unless given.
+        Every other field is :class:`Claim`'s, by keyword.
+
+        Parameters
+        ----------
+        id, locator, quantity, compute, note, discussed_in
+            As for :class:`Claim`.
+        tolerance : Tolerance or callable, optional
+            :data:`EXACT` by default (a truth value is met or not).
+        expected_status : str
+            ``"reproduced"`` by default.
+        **fields
+            Any other field of :class:`Claim` (``kind``, ``erratum``, ``oracle``, ``printed``, ...).
+
+        Returns
+        -------
+        Claim
+
+        Raises
+        ------
+        ValueError
+            As :class:`Claim` does; and if ``published`` or ``unit`` is given (a statement's
+            are fixed).
+
+        Examples
+        --------
+        >>> c = Claim.statement(id="SP-doc-tight", locator="Sec. 2.1", quantity="tight beats loose",
+        ...                     compute=lambda: True, note="a synthetic claim")
+        >>> c.published, c.unit, c.tolerance is EXACT, c.kind, c.expected_status
+        (True, 'statement', True, 'statement', 'reproduced')
+        """
+        fixed = sorted({"published", "unit"} & fields.keys())
+        if fixed:
+            raise ValueError(f"Claim.statement fixes {', '.join(fixed)}; got it as an argument (claim {id})")
+        return cls(
+            id=id,
+            locator=locator,
+            quantity=quantity,
+            published=True,
+            unit="statement",
+            compute=compute,
+            tolerance=EXACT if tolerance is None else tolerance,
+            expected_status=expected_status,
+            note=note,
+            discussed_in=discussed_in,
+            **fields,
+        )
+
     @property
     def is_statement(self) -> bool:
         """Whether the claim is a statement (its published value is a truth value)."""
