@@ -271,6 +271,10 @@ def _rule(source: str, literal: str, where: str = "body") -> str:
         ("IN.assumed('x', 3.0, low=1.0, high=5.0)", "3.0", "declared-input"),
         ("y = f(x, sigma=3.0)", "3.0", ""),  # a keyword value stays a candidate
         ("raise ValueError(f'x > {2.5}')", "2.5", "text"),
+        ("c = Claim(id='SP-x', published=2.5)", "2.5", "claim-metadata"),
+        ("c = Claim.statement(id='SP-x', note='n', kind=3.5)", "3.5", "claim-metadata"),
+        ("c = Claim.statement(id='SP-x', compute=lambda: f(3.5))", "3.5", ""),  # a compute is code
+        ("c = report.statement(x, 3.5)", "3.5", ""),  # another object's statement is no claim
     ],
 )
 def test_rules(source: str, literal: str, rule: str) -> None:

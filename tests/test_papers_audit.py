@@ -53,6 +53,7 @@ CLAIMS = [_s("ATC10-a", local_compute)]
 """
 
 SECTION = """
+from navcore.claims import Claim
 from navcore.papers.atc10_chapter import IN, _s
 
 
@@ -68,7 +69,14 @@ def leftover():
     return 4
 
 
-CLAIMS = [_s("ATC10-b", imported_builder_compute)]
+def statement_compute():
+    return 5
+
+
+CLAIMS = [
+    _s("ATC10-b", imported_builder_compute),
+    Claim.statement(id="ATC10-c", compute=statement_compute),
+]
 """
 
 
@@ -78,7 +86,8 @@ def test_reads_computes_and_leftovers_across_two_modules(tmp_path: Path):
     mods = audit_tool.audit(sorted(tmp_path.glob("*.py")))
     left = {m: sorted(f.name for f in audit_tool.candidates(mod)) for m, mod in mods.items()}
     # plain_helper reads no input and is named in no claim call (local_compute is); a compute
-    # passed to a builder imported from the chapter module is a claim's compute too
+    # passed to a builder imported from the chapter module is a claim's compute too, and so is
+    # one passed to Claim.statement
     assert left == {"atc10_chapter": ["plain_helper"], "atc10_section": ["leftover"]}
     chapter, section = mods["atc10_chapter"].functions, mods["atc10_section"].functions
     assert chapter["through_a_reader"].reads and not chapter["through_a_reader"].reads_directly

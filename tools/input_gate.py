@@ -481,7 +481,7 @@ def classify_rule(node: ast.AST, parents: dict[ast.AST, ast.AST], where: str, bi
             last = name[-1] if name else ""
             if last in _DECLARE and isinstance(anc.func, ast.Attribute):
                 return "declared-input"
-            if last in _METADATA_CALLS:
+            if last in _METADATA_CALLS or name == ("Claim", "statement"):
                 # a compute lambda inside Claim(...) is code: only direct metadata counts
                 if not any(isinstance(a, ast.Lambda) for a in chain[1 : chain.index(anc)]):
                     return "claim-metadata"

@@ -72,7 +72,10 @@ class Module:
 
 
 def _call_name(node: ast.Call) -> str:
+    """The called name; ``Claim.statement(...)`` (a constructor of Claim) counts as ``Claim``."""
     f = node.func
+    if isinstance(f, ast.Attribute) and isinstance(f.value, ast.Name) and f.value.id in BUILDERS:
+        return f.value.id
     return f.id if isinstance(f, ast.Name) else f.attr if isinstance(f, ast.Attribute) else ""
 
 
