@@ -40,12 +40,10 @@ from navcore.papers.atc10_tracking_geometry import (
     EXAMPLES,
     IN,
     IN_COV,
-    STATEMENT,
     TABLE_4_2,
     TR,
     _example_row,
     _physical_geometry,
-    _s,
     example_line_of_sight,
     fitted_radius_ratio,
     physical_aircraft_ratio,
@@ -229,15 +227,12 @@ CLAIMS += [
         note="$1.5 \\times 2^{1/3} = 1.88988$.",
         discussed_in=PAGE_TRACKER,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec4.5.4-convergence-rule",
         locator="Sec. 4.5.4",
         quantity="$\\gamma_n$ comes within 10 % of its limit in approximately $2.3/\\psi - 1$ steps, in the "
         "six cases of Table 4.3 (the number of terms $n + 1$ within the prose band of 'approximately')",
-        published=True,
-        unit="statement",
         compute=lambda: all(abs(est / act - 1.0) <= _APPROX_REL for act, est in convergence_rule_terms()),
-        tolerance=EXACT,
         expected_status="discrepant",
         note="'Approximately' read with the prose table ($\\pm$10 %) on the number of terms $n + 1$, with "
         "the printed $\\beta$. The recursion converges about twice as fast (10/2/0/25/5/1 steps against "
@@ -248,14 +243,11 @@ CLAIMS += [
         oracle_tolerance=EXACT,
         discussed_in=PAGE_TRACKER,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec4.5.4-steps-formula-sign",
         locator="Sec. 4.5.4",
         quantity="the printed $n = 1/\\mathrm{Log}(1 - \\psi) - 1$ gives the number of steps",
-        published=True,
-        unit="statement",
         compute=_printed_steps_formula_positive,
-        tolerance=EXACT,
         expected_status="discrepant",
         note="$1/\\log_{10}(1 - \\psi)$ is negative for $0 < \\psi < 1$: a sign is lost "
         "($-1/\\log_{10}(1 - \\psi) - 1$).",
@@ -758,61 +750,51 @@ ERRATA += [
 ]
 
 CLAIMS += [
-    Claim(
+    Claim.statement(
         id="ATC10-sec4.3-std-n-sigma0",
         locator="Sec. 4.3, after (4.3.1)",
         quantity="the standard deviation of $\\tau_n - \\tau_0$ becomes approximately $n \\sigma_0$ "
         "(within the prose band of 'approximately' from $n$ = 10 on)",
-        published=True,
-        unit="statement",
         compute=lambda: all(
             abs(std_ratio_at(n) - 1.0) <= _APPROX for n in _from_epoch(int(IN_COV.std_n_from))
         ),
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="$\\sqrt{n + n^2}/n$ from (4.3.1c): 1.049 at $n = 10$ (10 s), tending to 1.",
         discussed_in=PAGE_TRACKER,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec4.3-fractional-error",
         locator="Sec. 4.3, after (4.3.1)",
         quantity="the rms fractional error of $\\tau_n$ is just $\\sigma_0/\\bar\\tau$ (at $n$ = 1000, "
         "within "
         "the band of the preceding 'approximately')",
-        published=True,
-        unit="statement",
         compute=lambda: abs(fractional_error_ratio() - 1.0) <= _APPROX,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="$\\mathrm{std}(\\tau_n - \\tau_0 - n \\bar\\tau)/(n \\bar\\tau) = (\\sigma_0/\\bar\\tau) "
         "\\sqrt{1 + 1/n}$: $5.0 \\times 10^{-8}$ for $\\sigma_0 = 50$ ns, $\\bar\\tau = 1$ s.",
         discussed_in=PAGE_TRACKER,
     ),
-    _s(
-        "ATC10-eq4.5.1-least-squares",
-        "Eqs. (4.5.1)-(4.5.7), (4.5.36)",
-        "block inverse, $\\gamma_0 = 1/\\beta$, the least-squares estimates and covariances",
-        least_squares_forms,
-        "Checked against a general matrix inverse and least-squares solver on the Example I geometry.",
-        PAGE_TRACKER,
+    Claim.statement(
+        id="ATC10-eq4.5.1-least-squares",
+        locator="Eqs. (4.5.1)-(4.5.7), (4.5.36)",
+        quantity="block inverse, $\\gamma_0 = 1/\\beta$, the least-squares estimates and covariances",
+        compute=least_squares_forms,
+        note="Checked against a general matrix inverse and least-squares solver on the Example I geometry.",
+        discussed_in=PAGE_TRACKER,
     ),
-    _s(
-        "ATC10-sec4.5.2-state-model",
-        "Sec. 4.5.2, (4.5.9); Eqs. (4.3.1a-c)",
-        "the sequence of (4.5.9) has the statistics (4.3.1)",
-        state_model_matches,
-        "Exact covariance propagation of (4.5.9) for $n \\le 30$ equals $\\sigma_0^2 [\\min(m, n) + m n]$.",
-        PAGE_TRACKER,
+    Claim.statement(
+        id="ATC10-sec4.5.2-state-model",
+        locator="Sec. 4.5.2, (4.5.9); Eqs. (4.3.1a-c)",
+        quantity="the sequence of (4.5.9) has the statistics (4.3.1)",
+        compute=state_model_matches,
+        note="Exact covariance propagation of (4.5.9) for $n \\le 30$ equals $\\sigma_0^2 [\\min(m, n) + m "
+        "n]$.",
+        discussed_in=PAGE_TRACKER,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec4.5.2-tau-sum-printed",
         locator="Sec. 4.5.2, after (4.5.9)",
         quantity="the printed $\\tau_n = \\sum w_i + \\alpha_0$ has the variance (4.3.1c) that (4.5.9) gives "
         "(checked at $n$ = 1 to 30)",
-        published=True,
-        unit="statement",
         compute=printed_tau_sum_matches,
-        tolerance=EXACT,
         expected_status="discrepant",
         erratum="ATC10-E4.9-typos",
         oracle=lambda: abs(printed_tau_sum_oracle() - 1.0) <= 0.05,
@@ -822,37 +804,37 @@ CLAIMS += [
         "$2 \\times 10^{5}$ draws agrees). No printed number depends on the slip.",
         discussed_in=PAGE_TRACKER,
     ),
-    _s(
-        "ATC10-sec4.5.2-kalman-poor",
-        "Sec. 4.5.2",
-        "a Kalman filter on (4.5.9) tracks $\\tau_n$ poorly when $\\rho < 1$",
-        kalman_poor,
-        "300 runs, 600 epochs of a clock with $\\sigma_1 = \\sigma_2$ = 5 ns and $\\rho < 1$ (assumed), "
+    Claim.statement(
+        id="ATC10-sec4.5.2-kalman-poor",
+        locator="Sec. 4.5.2",
+        quantity="a Kalman filter on (4.5.9) tracks $\\tau_n$ poorly when $\\rho < 1$",
+        compute=kalman_poor,
+        note="300 runs, 600 epochs of a clock with $\\sigma_1 = \\sigma_2$ = 5 ns and $\\rho < 1$ (assumed), "
         "Example II $\\beta$: rms error over the last 100 epochs of the KF exceeds the constrained "
         "tracker's.",
-        PAGE_TRACKER,
-        status="consistent",
+        discussed_in=PAGE_TRACKER,
+        expected_status="consistent",
     ),
-    _s(
-        "ATC10-sec4.5.2-one-real-root",
-        "Sec. 4.5.2, before (4.5.26)",
-        "the cubic has only one real root",
-        one_real_root,
-        "Discriminant $-(4q^3 + 27q^2) < 0$ and a polynomial root finder: one real root in (0, 1), six "
+    Claim.statement(
+        id="ATC10-sec4.5.2-one-real-root",
+        locator="Sec. 4.5.2, before (4.5.26)",
+        quantity="the cubic has only one real root",
+        compute=one_real_root,
+        note="Discriminant $-(4q^3 + 27q^2) < 0$ and a polynomial root finder: one real root in (0, 1), six "
         "cases.",
-        PAGE_TRACKER,
+        discussed_in=PAGE_TRACKER,
     ),
-    _s(
-        "ATC10-sec4.5.2-constant-gain-worse",
-        "Sec. 4.5.2, after (4.5.26)",
-        "the constant $\\gamma$ from n = 1 gives worse early estimates",
-        constant_gain_worse,
-        "Exact clock-error variances for both gain sequences (state $\\xi$, $A$): the fixed gain is worse at "
-        "$n = 1$ in all six cases ($\\times$1.6 to $\\times$1.8 at $\\sigma_0$ = 5 ns) and on average over "
-        "$n$ = 1-5; at $\\sigma_0$ = 500 ns the two differ by less than 1 % (0.2 % better for the fixed gain "
-        "in Example II; the greedy $\\gamma_n$ is not optimal beyond one step). The optimal one equals "
-        "$\\sigma^2 \\gamma_n$.",
-        PAGE_TRACKER,
+    Claim.statement(
+        id="ATC10-sec4.5.2-constant-gain-worse",
+        locator="Sec. 4.5.2, after (4.5.26)",
+        quantity="the constant $\\gamma$ from n = 1 gives worse early estimates",
+        compute=constant_gain_worse,
+        note="Exact clock-error variances for both gain sequences (state $\\xi$, $A$): the fixed gain is "
+        "worse at $n = 1$ in all six cases ($\\times$1.6 to $\\times$1.8 at $\\sigma_0$ = 5 ns) and on "
+        "average over $n$ = 1-5; at $\\sigma_0$ = 500 ns the two differ by less than 1 % (0.2 % better for "
+        "the fixed gain in Example II; the greedy $\\gamma_n$ is not optimal beyond one step). The optimal "
+        "one equals $\\sigma^2 \\gamma_n$.",
+        discussed_in=PAGE_TRACKER,
     ),
     Claim(
         id="ATC10-sec4.5.3-quadratic-growth",
@@ -866,36 +848,33 @@ CLAIMS += [
         note="Log-slope of (4.5.27) between $m = 10^{6}$ and $2 \\times 10^{6}$ (Example I, 5 ns).",
         discussed_in=PAGE_TRACKER,
     ),
-    _s(
-        "ATC10-sec4.5.4-psi-factor",
-        "Sec. 4.5.4",
-        "$\\psi$ is the factor by which tracking reduces $\\gamma$",
-        psi_is_reduction_factor,
-        "$\\gamma_N \\beta$ from 3000 steps of the recursion equals $\\psi(\\alpha)$ to $10^{-6}$.",
-        PAGE_TRACKER,
+    Claim.statement(
+        id="ATC10-sec4.5.4-psi-factor",
+        locator="Sec. 4.5.4",
+        quantity="$\\psi$ is the factor by which tracking reduces $\\gamma$",
+        compute=psi_is_reduction_factor,
+        note="$\\gamma_N \\beta$ from 3000 steps of the recursion equals $\\psi(\\alpha)$ to $10^{-6}$.",
+        discussed_in=PAGE_TRACKER,
     ),
-    _s(
-        "ATC10-sec4.5.4-second-term-dominates",
-        "Sec. 4.5.4",
-        "the second term of (4.5.35) always significantly dominates the first",
-        second_term_dominates,
-        "At the tracking limit $\\gamma S = (\\psi/\\beta) S$: Example I at 5 ns gives 2.38 against "
+    Claim.statement(
+        id="ATC10-sec4.5.4-second-term-dominates",
+        locator="Sec. 4.5.4",
+        quantity="the second term of (4.5.35) always significantly dominates the first",
+        compute=second_term_dominates,
+        note="At the tracking limit $\\gamma S = (\\psi/\\beta) S$: Example I at 5 ns gives 2.38 against "
         "$\\operatorname{tr} = 7.84$.",
-        PAGE_TRACKER,
-        status="discrepant",
+        discussed_in=PAGE_TRACKER,
+        expected_status="discrepant",
         erratum="ATC10-E4.11-second-term",
         oracle=second_term_dominates_oracle,
         oracle_tolerance=EXACT,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec4.5.4-psi-approx-exI-s5",
         locator="Sec. 4.5.4",
         quantity="tracking reduces $\\mathrm{Var}[\\|\\xi_{p}\\|]$ to approximately $\\psi(\\alpha) "
         "\\mathrm{Var}[\\|\\xi_{p0}\\|]$ (Example I, $\\sigma_0$ = 5 ns, within the prose band)",
-        published=True,
-        unit="statement",
         compute=lambda: abs(psi_approx_ratio("I", "sigma0_low_ns") - 1.0) <= _APPROX,
-        tolerance=EXACT,
         expected_status="discrepant",
         erratum="ATC10-E4.11-second-term",
         oracle=lambda: abs(psi_approx_ratio_oracle("I", 5.0) - 1.0) <= _APPROX,
@@ -904,62 +883,47 @@ CLAIMS += [
         "from the paper's own printed numbers.",
         discussed_in=PAGE_TRACKER,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec4.5.4-psi-approx-exII-s50",
         locator="Sec. 4.5.4",
         quantity="tracking reduces $\\mathrm{Var}[\\|\\xi_{p}\\|]$ to approximately $\\psi(\\alpha) "
         "\\mathrm{Var}[\\|\\xi_{p0}\\|]$ (Example II, $\\sigma_0$ = 50 ns, within the prose band)",
-        published=True,
-        unit="statement",
         compute=lambda: abs(psi_approx_ratio("II", "sigma0_mid_ns") - 1.0) <= _APPROX,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="The ratio is 1.05: the approximation holds where $S/\\beta$ dominates.",
         discussed_in=PAGE_TRACKER,
     ),
-    _s(
-        "ATC10-sec4.7-markov-order",
-        "Sec. 4.7",
-        "$\\{\\tau_n\\}$ is not Markov of finite order when $1/2 < \\rho < 1$",
-        not_markov,
-        "Partial autocorrelations of the $\\rho$-increments nonzero at lags 1..20.",
-        PAGE_TRACKER,
-        status="consistent",
+    Claim.statement(
+        id="ATC10-sec4.7-markov-order",
+        locator="Sec. 4.7",
+        quantity="$\\{\\tau_n\\}$ is not Markov of finite order when $1/2 < \\rho < 1$",
+        compute=not_markov,
+        note="Partial autocorrelations of the $\\rho$-increments nonzero at lags 1..20.",
+        discussed_in=PAGE_TRACKER,
+        expected_status="consistent",
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-fig4.1-large-alpha",
         locator="Sec. 4.5.4 (Fig. 4.1), the large-argument approximation",
         quantity="$\\psi(\\alpha) \\cong 1 - (4/27)/\\alpha$ for $\\alpha \\ge 1$ (largest relative error "
         "within the prose band of '≅')",
-        published=True,
-        unit="statement",
         compute=lambda: approx_large_alpha_error() <= _APPROX,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="4.7 % at $\\alpha = 1$, falling as $1/\\alpha^2$.",
         discussed_in=PAGE_TRACKER,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-fig4.1-small-alpha",
         locator="Sec. 4.5.4 (Fig. 4.1), the small-argument approximation",
         quantity="$\\psi(\\alpha) \\cong 1.89 [\\alpha^{1/3} - (\\alpha/2)^{2/3}]$ for $\\alpha \\le 0.3$ "
         "(largest relative error within the prose band of '≅')",
-        published=True,
-        unit="statement",
         compute=lambda: approx_small_alpha_error() <= _APPROX,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="5.3 % at $\\alpha = 0.3$.",
         discussed_in=PAGE_TRACKER,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-eq4.5.31-printed",
         locator="Eq. (4.5.31)",
         quantity="(4.5.31) as printed gives Table 4.3's $sd_N$ = 160 ft (Example I, $\\sigma_0$ = 5 ns)",
-        published=True,
-        unit="statement",
         compute=lambda: abs(printed_4531_sdn("I", "sigma0_low_ns") - 160.0) <= 0.5,
-        tolerance=EXACT,
         expected_status="discrepant",
         erratum="ATC10-E4.4-recursion-formulas",
         oracle=lambda: abs(printed_4531_oracle("I", 5.0) - 160.0) <= 0.5,
@@ -969,39 +933,37 @@ CLAIMS += [
         "is the test point: (4.5.31) prints no number.",
         discussed_in=PAGE_TRACKER,
     ),
-    _s(
-        "ATC10-eq4.5.37-gain-limit",
-        "Eq. (4.5.37)",
-        "the gains tend to $\\gamma = \\psi(\\alpha)/\\beta$",
-        gain_limit_matches_psi,
-        "The gain recursion (4.5.20)-(4.5.25), corrected as in ATC10-E4.4-recursion-formulas, run 2000 "
+    Claim.statement(
+        id="ATC10-eq4.5.37-gain-limit",
+        locator="Eq. (4.5.37)",
+        quantity="the gains tend to $\\gamma = \\psi(\\alpha)/\\beta$",
+        compute=gain_limit_matches_psi,
+        note="The gain recursion (4.5.20)-(4.5.25), corrected as in ATC10-E4.4-recursion-formulas, run 2000 "
         "steps for both examples and the three $\\sigma_0$ of Table 4.3 (printed Table 4.2 $\\beta$, "
         "$\\sigma$ = 50 ns) against $\\psi(\\alpha)/\\beta$ with $\\psi$ the root of the cubic (4.5.26): "
         "equal to $10^{-9}$. The text cites (4.5.30) for $\\gamma_n$ where (4.5.25) is meant.",
-        PAGE_TRACKER,
+        discussed_in=PAGE_TRACKER,
     ),
-    _s(
-        "ATC10-eq4.5.23-increment-covariance",
-        "Eq. (4.5.23)",
-        "$E[\\Delta_n \\Delta_{n-i}] = 2\\sigma_0^2$ for $i = 0$ and $\\sigma_0^2$ for $1 \\le i \\le n-1$",
-        increment_covariance_matches,
-        "$\\Delta_n = \\tau_n - \\tau_{n-1} - \\bar\\tau$ with the covariance (4.3.1b) of the clock "
+    Claim.statement(
+        id="ATC10-eq4.5.23-increment-covariance",
+        locator="Eq. (4.5.23)",
+        quantity="$E[\\Delta_n \\Delta_{n-i}] = 2\\sigma_0^2$ for $i = 0$ and $\\sigma_0^2$ for $1 \\le i "
+        "\\le n-1$",
+        compute=increment_covariance_matches,
+        note="$\\Delta_n = \\tau_n - \\tau_{n-1} - \\bar\\tau$ with the covariance (4.3.1b) of the clock "
         "model (4.5.9) propagated exactly, $n \\le 30$.",
-        PAGE_TRACKER,
+        discussed_in=PAGE_TRACKER,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-eq4.5.10-printed",
         locator="Eq. (4.5.10)",
         quantity="the clock estimate (4.5.10) as printed ($\\gamma_1^{-1}$) has the error variance "
         "$\\sigma^2\\gamma_1$ of (4.5.18)",
-        published=True,
-        unit="statement",
         compute=lambda: abs(printed_4510_variance_ratio() - 1.0) < 1e-9,
-        tolerance=STATEMENT,
         expected_status="discrepant",
         erratum="ATC10-E4.4-recursion-formulas",
         oracle=lambda: abs(printed_4510_oracle() - 1.0) < 5 * math.sqrt(2.0 / 400_000),
-        oracle_tolerance=STATEMENT,
+        oracle_tolerance=EXACT,
         note="Printed: $\\gamma_1^{-1}(I - F_1(F_1'F_1)^{-1}F_1')[\\ldots]$, a vector; read with the sum "
         "$1'$ restored so that it estimates the scalar clock, its first-step error variance is "
         "$\\gamma_1^{-2}\\sigma^2\\beta + (1 - \\beta/\\gamma_1)^2 s_1$, twice the "
@@ -1009,14 +971,11 @@ CLAIMS += [
         "exactly that (the optimal gain); a seeded 400 000-run Monte Carlo of the first step agrees.",
         discussed_in=PAGE_TRACKER,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-eq4.5.21-printed",
         locator="Eq. (4.5.21)",
         quantity="(4.5.21) as printed gives Table 4.3's $sd_N$ = 160 ft (Example I, $\\sigma_0$ = 5 ns)",
-        published=True,
-        unit="statement",
         compute=lambda: abs(printed_4521_sdn("I", "sigma0_low_ns") - 160.0) <= 0.5,
-        tolerance=EXACT,
         expected_status="discrepant",
         erratum="ATC10-E4.4-recursion-formulas",
         oracle=lambda: abs(printed_4521_oracle("I", 5.0) - 160.0) <= 0.5,
@@ -1028,15 +987,12 @@ CLAIMS += [
         "prints no number.",
         discussed_in=PAGE_TRACKER,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-eq4.5.35-printed",
         locator="Eq. (4.5.35)",
         quantity="(4.5.35) as printed gives Table 4.3's $\\mathrm{sd}_N$ = 160 ft (Example I, "
         "$\\sigma_0$ = 5 ns)",
-        published=True,
-        unit="statement",
         compute=lambda: abs(printed_4535_sdn("I", "sigma0_low_ns") - 160.0) <= 0.5,
-        tolerance=EXACT,
         expected_status="discrepant",
         erratum="ATC10-E4.4-recursion-formulas",
         oracle=lambda: abs(printed_4535_oracle("I", 5.0) - 160.0) <= 0.5,
@@ -1048,24 +1004,24 @@ CLAIMS += [
         "(4.5.35) prints no number.",
         discussed_in=PAGE_TRACKER,
     ),
-    _s(
-        "ATC10-eq4.5.16-recursion-mc",
-        "Eqs. (4.5.10)-(4.5.26)",
-        "the recursion predicts the tracker's MSE",
-        recursion_matches_mc,
-        "10 000-run Monte Carlo of the whole tracker (fitted geometry), n = 0, 1, 5, 10, 150, "
+    Claim.statement(
+        id="ATC10-eq4.5.16-recursion-mc",
+        locator="Eqs. (4.5.10)-(4.5.26)",
+        quantity="the recursion predicts the tracker's MSE",
+        compute=recursion_matches_mc,
+        note="10 000-run Monte Carlo of the whole tracker (fitted geometry), n = 0, 1, 5, 10, 150, "
         "within 6 % (about 3 standard errors).",
-        PAGE_TRACKER,
-        status="consistent",
+        discussed_in=PAGE_TRACKER,
+        expected_status="consistent",
     ),
-    _s(
-        "ATC10-eq4.5.27-extrapolation-mc",
-        "Eqs. (4.5.27)-(4.5.30)",
-        "the 3-satellite extrapolation (invariant S3) predicts the tracker's MSE",
-        extrapolation_matches_mc,
-        "Monte Carlo at $m = 1$ after the drop, $\\sigma_0$ = 50 ns, both examples, within 6 %.",
-        PAGE_TRACKER,
-        status="consistent",
+    Claim.statement(
+        id="ATC10-eq4.5.27-extrapolation-mc",
+        locator="Eqs. (4.5.27)-(4.5.30)",
+        quantity="the 3-satellite extrapolation (invariant S3) predicts the tracker's MSE",
+        compute=extrapolation_matches_mc,
+        note="Monte Carlo at $m = 1$ after the drop, $\\sigma_0$ = 50 ns, both examples, within 6 %.",
+        discussed_in=PAGE_TRACKER,
+        expected_status="consistent",
     ),
 ]
 

@@ -38,8 +38,6 @@ from navcore.papers.atc10_multiple_access import (
     IN_COV,
     MA,
     PAGE_GAUSS,
-    STATEMENT,
-    _s,
     b_of_contour,
     gaussian_best_pf,
     psk_density,
@@ -277,17 +275,14 @@ _ratio, _ratio_tol = printed(RATIO_EXAMPLE_PRINTED)
 
 
 CLAIMS += [
-    Claim(
+    Claim.statement(
         id="ATC10-sec3.8-gauss-always-optimistic",
         locator="Sec. 3.8, comparison of Figs. 3.3-3.6 with Fig. 3.8",
         quantity="the $p_f$ of $\\mathrm{ROC}_g$ is always lower than the actual $p_f$ ($N = 10^{5}$, "
         "$\\tau/\\alpha = 2 \\times 10^{-5}$, $C_1$ to $C_4$, $p_d = 0.9$ and 0.99, at the figures' "
         "contours)",
-        published=True,
-        unit="statement",
         kind="statement",
         compute=gaussian_always_more_optimistic,
-        tolerance=EXACT,
         expected_status="not-reproducible",
         note="Actual ROCs computed exactly (binomial mixtures of two-point, Irwin-Hall and Gaussian sums): "
         "the smallest ratio "
@@ -299,29 +294,22 @@ CLAIMS += [
         erratum="ATC10-E3-1",
         discussed_in=PAGE_GAUSS,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec3.8-exp-below-exp-g",
         locator="Sec. 3.8, Figs. 3.9-3.10",
         quantity="Exp increases monotonically with N and approaches $\\mathrm{Exp}_g$ from below",
-        published=True,
-        unit="statement",
         compute=exp_monotone_in_n_below_exp_g,
-        tolerance=STATEMENT,
-        expected_status="reproduced",
         note="Eq. (3.8.16) on $N = 10^{2}$ to $10^{9}$ (400 points), $\\tau/\\alpha = 10^{-6}$, $10^{-5}$, "
         "$10^{-4}$, seven "
         "$\\mathrm{Exp}_g$ values.",
         discussed_in=PAGE_GAUSS,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-fig3.9-shortfall",
         locator="Sec. 3.8, Fig. 3.9",
         quantity="at $N = 10^{5}$, $\\tau/\\alpha = 10^{-5}$, Exp is below $\\mathrm{Exp}_g = 4$ by a "
         "non-negligible amount",
-        published=True,
-        unit="statement",
         compute=lambda: exp_fig39_shortfall() > IN.non_negligible_fraction,
-        tolerance=STATEMENT,
         expected_status="not-reproducible",
         note="Exp = 3.30 against 4, a shortfall of 17 %. The assumed reading of 'non-negligible' spans "
         "5-20 % of $\\mathrm{Exp}_g$: the statement holds for every reading up to the shortfall and fails "
@@ -346,30 +334,23 @@ CLAIMS += [
         "non-negligible is a separate claim.",
         discussed_in=PAGE_GAUSS,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-fig3.10-rate",
         locator="Sec. 3.8, Fig. 3.10",
         quantity="the approach of Exp to $\\mathrm{Exp}_g$ is more rapid for lower $\\mathrm{Exp}_g$",
-        published=True,
-        unit="statement",
         compute=exp_rate_faster_for_low_exp_g,
-        tolerance=STATEMENT,
-        expected_status="reproduced",
         note="$\\mathrm{Exp}/\\mathrm{Exp}_g$ decreases with $\\mathrm{Exp}_g$ at $N = 10^{4}$, $10^{5}$, "
         "$2 \\times 10^{5}$, $10^{6}$, "
         "$10^{7}$ "
         "($\\tau/\\alpha = 10^{-5}$).",
         discussed_in=PAGE_GAUSS,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-fig3.10-linear",
         locator="Sec. 3.8, Fig. 3.10",
         quantity="Exp is practically linear in $\\mathrm{Exp}_g$ ($R^2$ of a line fit on [0, 20], "
         "$N = 10^{5}$)",
-        published=True,
-        unit="statement",
         compute=lambda: exp_linearity_r2() >= IN.practically_linear_r2,
-        tolerance=STATEMENT,
         expected_status="not-reproducible",
         note="$R^2$ of a least-squares line against the assumed reading of 'practically linear' ($R^2$ of "
         "0.95-0.999); the curve is visibly concave for $N \\le 2 \\times 10^{5}$ and straighter for "
@@ -432,29 +413,22 @@ CLAIMS += [
         "12.5/9 = 1.39.",
         discussed_in=PAGE_GAUSS,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec3.8-example-optimistic",
         locator="Sec. 3.8, worked example",
         quantity="the Gaussian assumption of Ref. [1] is optimistic ($\\mathrm{Exp}_g > \\mathrm{Exp}$)",
-        published=True,
-        unit="statement",
         compute=lambda: worked_example_ratio() > 1.0,
-        tolerance=STATEMENT,
-        expected_status="reproduced",
         note="$\\mathrm{Exp}_g/\\mathrm{Exp}$ = 1.29 > 1 for the exponent of the bound; 'much more "
         "optimistic' is "
         "a judgement.",
         discussed_in=PAGE_GAUSS,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec3.1.3B-psk",
         locator="Sec. 3.1.3 B (and Sec. 1.2)",
         quantity="in PSK multiple-access noise the ROC is less preferable than with Gaussian noise "
         "of equal power",
-        published=True,
-        unit="statement",
         compute=psk_gaussian_optimistic,
-        tolerance=STATEMENT,
         expected_status="consistent",
         note="The book's signature set: random PSK codes of $L$ chips (assumed 16-64; $1/\\sqrt{3b}$ about 8 "
         "at $L = 32$) at $N = 10^{5}$, $\\tau/\\alpha = 2 \\times 10^{-5}$. The best $p_f$ at "
@@ -595,29 +569,25 @@ ERRATA += [
 ]
 
 CLAIMS += [
-    Claim(
+    Claim.statement(
         id="ATC10-sec3.8-tail-ratio",
         locator="Sec. 3.8",
         quantity="the Gaussian approximation to the multiple-access noise is very poor in the tail "
         "($P(n > 4 \\sigma)$ against the Gaussian tail, two-point $C$, $N = 10^{5}$, "
         "$\\tau/\\alpha = 2 \\times 10^{-5}$)",
-        published=True,
-        unit="statement",
         compute=lambda: tail_ratio() > float(IN_COV.very_poor_factor),
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="The exact sum over the lattice of two-point amplitudes puts the actual $4\\sigma$ tail at 7.2 "
         "times the Gaussian one.",
         discussed_in=G_,
     ),
-    _s(
-        "ATC10-sec3.8-exp-limit",
-        "Sec. 3.8, (3.8.13)-(3.8.15)",
-        "Exp tends to $\\mathrm{Exp}_g$ as N grows",
-        exp_limit,
-        "Within 0.1 % at $N = 10^{8}$; the shortfall times $N \\tau/\\alpha$ tends to "
+    Claim.statement(
+        id="ATC10-sec3.8-exp-limit",
+        locator="Sec. 3.8, (3.8.13)-(3.8.15)",
+        quantity="Exp tends to $\\mathrm{Exp}_g$ as N grows",
+        compute=exp_limit,
+        note="Within 0.1 % at $N = 10^{8}$; the shortfall times $N \\tau/\\alpha$ tends to "
         "$\\mathrm{Exp}_g^2 (1 - 6 \\tau/\\alpha)/12$.",
-        G_,
+        discussed_in=G_,
     ),
     Claim(
         id="ATC10-sec3.8-example-n-effective",
@@ -632,23 +602,20 @@ CLAIMS += [
         note="$10^{5} \\times 5/2.5 = 10^{5} \\times 4/2 = 2 \\times 10^{5}$.",
         discussed_in=G_,
     ),
-    _s(
-        "ATC10-eq3.8.3-gaussian-roc",
-        "Eqs. (3.8.1)-(3.8.4)",
-        "the erf $\\mathrm{ROC}_g$",
-        gaussian_roc_forms,
-        "Against quadrature of the Gaussian density.",
-        G_,
+    Claim.statement(
+        id="ATC10-eq3.8.3-gaussian-roc",
+        locator="Eqs. (3.8.1)-(3.8.4)",
+        quantity="the erf $\\mathrm{ROC}_g$",
+        compute=gaussian_roc_forms,
+        note="Against quadrature of the Gaussian density.",
+        discussed_in=G_,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-eq3.8.6-printed",
         locator="Eq. (3.8.6)",
         quantity="(3.8.6) as printed, $E e^{\\mu n} = \\exp(\\mu^2/2)$, is the moment generating "
         "function of the Gaussian noise of (3.8.4) (checked at $\\mu = 1$, $p$ = 0.02)",
-        published=True,
-        unit="statement",
         compute=lambda: abs(printed_386_log_mgf() - 0.5) <= 1e-6,
-        tolerance=EXACT,
         expected_status="discrepant",
         erratum="ATC10-E3-4",
         oracle=lambda: abs(printed_386_oracle() - 0.5) <= 1e-6,
@@ -657,34 +624,38 @@ CLAIMS += [
         "example's $p$ = 0.02, not the printed 0.5. The final bound (3.8.7) is right.",
         discussed_in=G_,
     ),
-    _s(
-        "ATC10-eq3.8.7-bound",
-        "Eqs. (3.8.7)-(3.8.9)",
-        "$p_f \\le \\exp(-\\theta^2/(2p))$",
-        gaussian_bound,
-        "sympy.",
-        G_,
+    Claim.statement(
+        id="ATC10-eq3.8.7-bound",
+        locator="Eqs. (3.8.7)-(3.8.9)",
+        quantity="$p_f \\le \\exp(-\\theta^2/(2p))$",
+        compute=gaussian_bound,
+        note="sympy.",
+        discussed_in=G_,
     ),
-    _s("ATC10-eq3.8.12-series", "Eq. (3.8.12)", "$\\sqrt{1 + x}$ series", series_3812, "sympy.", G_),
-    _s(
-        "ATC10-eq3.8.16-equals-closed-form",
-        "Eqs. (3.8.10)-(3.8.11), (3.8.16)",
-        "Exp equals the closed form (3.7.24)",
-        exp_equals_closed_form,
-        "$N = 10^{5}$ to $10^{6}$, $\\mathrm{Exp}_g$ 1-12.5, $\\tau/\\alpha = 10^{-5}$.",
-        G_,
+    Claim.statement(
+        id="ATC10-eq3.8.12-series",
+        locator="Eq. (3.8.12)",
+        quantity="$\\sqrt{1 + x}$ series",
+        compute=series_3812,
+        note="sympy.",
+        discussed_in=G_,
     ),
-    Claim(
+    Claim.statement(
+        id="ATC10-eq3.8.16-equals-closed-form",
+        locator="Eqs. (3.8.10)-(3.8.11), (3.8.16)",
+        quantity="Exp equals the closed form (3.7.24)",
+        compute=exp_equals_closed_form,
+        note="$N = 10^{5}$ to $10^{6}$, $\\mathrm{Exp}_g$ 1-12.5, $\\tau/\\alpha = 10^{-5}$.",
+        discussed_in=G_,
+    ),
+    Claim.statement(
         id="ATC10-sec3.8-no-uniform-set-beats-roc-g",
         printed="no uniform signature set suffering this average multiple access noise power will "
         "yield an ROC more preferable than",
         locator="Sec. 3.8",
         quantity="no uniform signature set with this multiple-access power yields an ROC more "
         "preferable than $\\mathrm{ROC}_g$ (every actual $p_f$ above the Gaussian one at equal $p_d$)",
-        published=True,
-        unit="statement",
         compute=lambda: gaussian_smallest_pf_ratio() > 1.0,
-        tolerance=EXACT,
         expected_status="not-reproducible",
         note="The sentence follows from Theorem 3.2, which orders the Chernoff upper bounds; checked on "
         "the actual ROCs of the four densities (computed exactly, as "
@@ -694,17 +665,14 @@ CLAIMS += [
         "(ATC10-sec3.8-pd-line).",
         discussed_in=PAGE_GAUSS,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec3.8-pd-line",
         printed="$p_d = \\frac{1}{2} + \\frac{1}{2} \\operatorname{erf} \\left(\\theta "
         "\\sqrt{\\frac{1}{2p}} \\right)$",
         locator="Sec. 3.8",
         quantity="the $p_d$ line of the bound after 'no uniform signature set' is the $p_d$ of "
         "$\\mathrm{ROC}_g$, Eq. (3.8.4)",
-        published=True,
-        unit="statement",
         compute=pd_line_is_roc_g,
-        tolerance=EXACT,
         expected_status="discrepant",
         erratum="ATC10-E3-12-pd-line",
         oracle=pd_line_oracle,

@@ -25,7 +25,7 @@ import numpy as np
 from scipy import optimize, special, stats
 
 from navcore import units
-from navcore.claims import EXACT, Claim, Erratum
+from navcore.claims import Claim, Erratum
 from navcore.claims.inputs import InputSet, input_cache
 from navcore.detection import antenna
 from navcore.detection import jamming as jm
@@ -483,29 +483,21 @@ def max_pdl_factor_shift_db() -> float:
 
 
 CLAIMS += [
-    Claim(
+    Claim.statement(
         id="ATC10-eq2.4.1",
         locator="Eqs. (2.4.1), (A.10a)",
         quantity="for K = 1 the detection bound is $p_d^4$",
-        published=True,
-        unit="statement",
         compute=_k1_bound_is_pd4,
-        tolerance=EXACT,
-        expected_status="reproduced",
         kind="statement",
         note="The closed-form Chernoff bound at $K = 1$, $t = 0$ against $p_d^4$ on a grid of $p_d$.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-eq2.4.2-nu-max",
         locator="Eqs. (2.4.2), (A.17)-(A.18)",
         quantity="the $\\nu$-maximised exponent of (2.4.2) equals the binary divergence $D(t \\| p_d^4)$ for "
         "$t < p_d^4$ and 0 otherwise",
-        published=True,
-        unit="statement",
         compute=_exponent_matches_numeric,
-        tolerance=EXACT,
-        expected_status="reproduced",
         kind="statement",
         note="Closed form against bounded numerical maximisation over $\\nu \\ge 0$ at five (t, q) pairs, to "
         "$10^{-10}$.",
@@ -663,78 +655,62 @@ def _composition(which: int) -> bool:
     return bool(ok)
 
 
-def _statement(cid: str, locator: str, quantity: str, compute, note: str, page: str, **kw) -> Claim:
-    return Claim(
-        id=cid,
-        locator=locator,
-        quantity=quantity,
-        published=True,
-        unit="statement",
-        compute=compute,
-        tolerance=kw.pop("tolerance", EXACT),
-        expected_status=kw.pop("expected_status", "reproduced"),
-        note=note,
-        discussed_in=page,
-        **kw,
-    )
-
-
 CLAIMS += [
-    _statement(
-        "ATC10-sec2.3-coherent-beats-envelope",
-        "Sec. 2.3",
-        "a matched filter detector (phase known) always performs better than a matched filter-envelope "
-        "detector",
-        _coherent_beats_envelope,
-        "At equal $p_f$ and energy: coherent $p_d = Q(Q^{-1}(p_f) - d)$ against the envelope (Rician) "
+    Claim.statement(
+        id="ATC10-sec2.3-coherent-beats-envelope",
+        locator="Sec. 2.3",
+        quantity="a matched filter detector (phase known) always performs better than a matched "
+        "filter-envelope detector",
+        compute=_coherent_beats_envelope,
+        note="At equal $p_f$ and energy: coherent $p_d = Q(Q^{-1}(p_f) - d)$ against the envelope (Rician) "
         "$p_d = Q_1(d, \\sqrt{-2 \\ln p_f})$ (noncentral $\\chi$-square, 2 degrees of freedom), $d$ from "
         "0.5 to "
         "10 "
         "and $p_f$ "
         "from $10^{-9}$ to 0.3.",
-        PAGE,
+        discussed_in=PAGE,
     ),
-    _statement(
-        "ATC10-sec2.3-segment-holds-signature",
-        "Sec. 2.3",
-        "every segment of length $\\alpha + \\bar\\beta$ holds a present aircraft's signature at all four "
-        "filters "
-        "at least once, possibly twice",
-        _segment_holds_signature,
-        "20000 seeded random phases, satellite delays in [0, $\\beta$] and segment origins, $\\alpha = 1$ s, "
-        "$\\beta = 24$ ms: every segment holds a complete quadruplet and some hold two.",
-        PAGE,
+    Claim.statement(
+        id="ATC10-sec2.3-segment-holds-signature",
+        locator="Sec. 2.3",
+        quantity="every segment of length $\\alpha + \\bar\\beta$ holds a present aircraft's signature at "
+        "all four filters at least once, possibly twice",
+        compute=_segment_holds_signature,
+        note="20000 seeded random phases, satellite delays in [0, $\\beta$] and segment origins, $\\alpha = "
+        "1$ s, $\\beta = 24$ ms: every segment holds a complete quadruplet and some hold two.",
+        discussed_in=PAGE,
     ),
-    _statement(
-        "ATC10-eq2.5.10-random-pick",
-        "Eq. (2.5.10)",
-        "a random pick from a position set holding a wrong position is wrong with probability $\\ge 0.5$",
-        _random_pick_at_least_half,
-        "The set holds at least one wrong position and at most one correct one; the smallest share of "
+    Claim.statement(
+        id="ATC10-eq2.5.10-random-pick",
+        locator="Eq. (2.5.10)",
+        quantity="a random pick from a position set holding a wrong position is wrong with probability "
+        "$\\ge 0.5$",
+        compute=_random_pick_at_least_half,
+        note="The set holds at least one wrong position and at most one correct one; the smallest share of "
         "wrong positions over set sizes up to 50 is exactly 1/2 (one wrong, one correct).",
-        PAGE,
+        discussed_in=PAGE,
     ),
-    _statement(
-        "ATC10-eq2.5.5-composition",
-        "Eqs. (2.5.1)-(2.5.5), (2.7.3), (B.11)",
-        "$N_{FL} = (N_T - N)\\, e^{(Kt + 1) \\ln F(p_f)}$ with $p_f$ of (2.7.1)",
-        lambda: _composition(0),
-        "The book's log-domain bound against the printed formulas typed with plain floats (erf, powers) at "
-        "$K$ = 1, 10 and 100, $t$ from 0 to 0.1 and $J/(P_0 B \\tau)$ from -16 to 0 dB, to $10^{-6}$ "
-        "relative (each factor typed in the form that keeps its digits where it is small); at $t = 0$ the "
-        "exponent is 1, so (B.11) gives (B.8).",
-        PAGE,
+    Claim.statement(
+        id="ATC10-eq2.5.5-composition",
+        locator="Eqs. (2.5.1)-(2.5.5), (2.7.3), (B.11)",
+        quantity="$N_{FL} = (N_T - N)\\, e^{(Kt + 1) \\ln F(p_f)}$ with $p_f$ of (2.7.1)",
+        compute=lambda: _composition(0),
+        note="The book's log-domain bound against the printed formulas typed with plain floats (erf, "
+        "powers) at $K$ = 1, 10 and 100, $t$ from 0 to 0.1 and $J/(P_0 B \\tau)$ from -16 to 0 dB, to "
+        "$10^{-6}$ relative (each factor typed in the form that keeps its digits where it is small); at $t "
+        "= 0$ the exponent is 1, so (B.11) gives (B.8).",
+        discussed_in=PAGE,
     ),
-    _statement(
-        "ATC10-eq2.5.12-composition",
-        "Eqs. (2.5.12), (2.7.3), (2.8.4), (C.17)",
-        "$N_{ADL} = 0.5 N P_{DL} G(p_f)^{K-1} F(p_f)$, with $P_{DL} = p_d^4$ at $K = 1$",
-        lambda: _composition(1),
-        "As for $N_{FL}$: the printed $K = 1$ and $K > 1$ lines ($P_{DL}$ from (2.4.2) with its $\\nu$ "
+    Claim.statement(
+        id="ATC10-eq2.5.12-composition",
+        locator="Eqs. (2.5.12), (2.7.3), (2.8.4), (C.17)",
+        quantity="$N_{ADL} = 0.5 N P_{DL} G(p_f)^{K-1} F(p_f)$, with $P_{DL} = p_d^4$ at $K = 1$",
+        compute=lambda: _composition(1),
+        note="As for $N_{FL}$: the printed $K = 1$ and $K > 1$ lines ($P_{DL}$ from (2.4.2) with its $\\nu$ "
         "maximiser) typed "
         "with plain floats, against the book's log-domain bound, to $10^{-6}$ relative where nothing "
         "underflows.",
-        PAGE,
+        discussed_in=PAGE,
     ),
 ]
 

@@ -29,7 +29,6 @@ from navcore.papers.atc10_jamming import (
     IN_COV,
     IN_J,
     PAGE,
-    _statement,
     design_p_d,
     geometry,
     level,
@@ -203,28 +202,22 @@ ERRATA += [
 ]
 
 CLAIMS += [
-    Claim(
+    Claim.statement(
         id="ATC10-appA-limit",
         locator="App. A, after (A.18)",
         quantity="if $t < p_d^4$ then $P_D \\to 1$ as $K \\to \\infty$",
-        published=True,
-        unit="statement",
         compute=_bound_tends_to_one,
-        tolerance=EXACT,
-        expected_status="reproduced",
         kind="statement",
         note="$p_d = 0.7$ ($p_d^4 = 0.24$), $t = 0.2$: the bound does not decrease with K and exceeds "
         "$1 - 10^{-12}$ by $K = 10^{6}$.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-eqA.9-rule-at-design",
         locator="Eqs. (A.9)-(A.10)",
         quantity="the rule as printed in (A.9) meets the bound (A.17) at the $K = 10$, $P_{DL} = 0.999$ "
         "design "
         "point ($t = 0$): it detects with probability at least $P_{DL}$",
-        published=True,
-        unit="statement",
         compute=lambda: (
             float(
                 jm.empty_list_rule_detection_probability(
@@ -233,7 +226,6 @@ CLAIMS += [
             )
             >= table21_design(2)[1]
         ),
-        tolerance=EXACT,
         expected_status="discrepant",
         kind="statement",
         erratum=E_RULE,
@@ -245,15 +237,12 @@ CLAIMS += [
         "uses everywhere else. The design point is Table 2.1's, a test point: (A.9) prints no number.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-eqA.15-printed",
         locator="Eq. (A.15)",
         quantity="the right side of (A.15) as printed, $1 \\exp -K(\\ldots)$, is the lower bound on $P_D$ "
         "(the design $P_{DL}$ at Table 2.1's $K = 10$, $P_{DL} = 0.999$ point)",
-        published=True,
-        unit="statement",
         compute=lambda: abs(printed_a15_value() - table21_design(2)[1]) <= 1e-9,
-        tolerance=EXACT,
         expected_status="discrepant",
         kind="statement",
         erratum=E_A15,
@@ -264,14 +253,11 @@ CLAIMS += [
         "(2.4.2), (A.17) and (2.5.12) print the minus.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-eqC.1-printed",
         locator="Eq. (C.1)",
         quantity="(C.1) as printed equals $F(p_f)$ of (B.6), the factor (2.5.12) uses for $K = 1$",
-        published=True,
-        unit="statement",
         compute=lambda: abs(printed_c1_log_ratio(False)) <= 1e-6,
-        tolerance=EXACT,
         expected_status="discrepant",
         kind="statement",
         erratum=E_C1,
@@ -515,30 +501,25 @@ def _d17_matches_direct() -> bool:
 
 
 CLAIMS += [
-    _statement(
-        "ATC10-eqA.6-majority-test",
-        "Eqs. (A.3)-(A.9), App. A",
-        "$\\Lambda_1 = a^{K_0} b^{K-K_0}$; the coefficient of (A.7) is positive, so the Neyman-Pearson test "
-        "on "
-        "the "
-        "list indicators is a threshold on the number of empty lists",
-        _majority_test,
-        "All $2^{10}$ indicator vectors ($K = 10$ from Table 2.1) for four ($P(\\rho=1|H_0)$, "
+    Claim.statement(
+        id="ATC10-eqA.6-majority-test",
+        locator="Eqs. (A.3)-(A.9), App. A",
+        quantity="$\\Lambda_1 = a^{K_0} b^{K-K_0}$; the coefficient of (A.7) is positive, so the "
+        "Neyman-Pearson test on the list indicators is a threshold on the number of empty lists",
+        compute=_majority_test,
+        note="All $2^{10}$ indicator vectors ($K = 10$ from Table 2.1) for four ($P(\\rho=1|H_0)$, "
         "$P(\\rho=1|H_1)$) "
         "pairs: the "
         "ratio depends on $K_0$ only, equals $a^{K_0} b^{K-K_0}$ and increases strictly with $K_0$ "
         "($a > 1 > b$).",
-        PAGE,
+        discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-eqA.7-printed",
         locator="Eq. (A.7)",
         quantity="(A.7) as printed decides as the test (A.4) it rewrites, for every ($\\lambda_1$, $K_0$)",
-        published=True,
-        unit="statement",
         kind="statement",
         compute=lambda: printed_a7_disagreements(False) == 0,
-        tolerance=EXACT,
         expected_status="discrepant",
         erratum="ATC10-E-jam-A7-ratio",
         oracle=lambda: printed_a7_disagreements(True) == 0,
@@ -549,68 +530,65 @@ CLAIMS += [
         "no printed number depends on it. Checked independently with exact rational arithmetic.",
         discussed_in=PAGE,
     ),
-    _statement(
-        "ATC10-eqA.13-chernoff-below-exact",
-        "Eqs. (A.11)-(A.17)",
-        "the Chernoff bound (A.17) never exceeds the exact detection probability of the rule of (A.11)",
-        _chernoff_below_exact,
-        "K in {2, 5, 10, 100, 1000}, t in {0, 0.05, 0.1, 0.3, 0.6}, $q = p_d^4$ in {0.002, ..., 0.9}: bound "
-        "$\\le$ exact binomial P(more than Kt lists non-empty).",
-        PAGE,
+    Claim.statement(
+        id="ATC10-eqA.13-chernoff-below-exact",
+        locator="Eqs. (A.11)-(A.17)",
+        quantity="the Chernoff bound (A.17) never exceeds the exact detection probability of the rule of "
+        "(A.11)",
+        compute=_chernoff_below_exact,
+        note="K in {2, 5, 10, 100, 1000}, t in {0, 0.05, 0.1, 0.3, 0.6}, $q = p_d^4$ in {0.002, ..., 0.9}: "
+        "bound $\\le$ exact binomial P(more than Kt lists non-empty).",
+        discussed_in=PAGE,
     ),
-    _statement(
-        "ATC10-eqA.16-bound-stays-valid",
-        "Eq. (A.16)",
-        "when $P(\\rho = 1 | H_1) \\approx p_d^4$ is not exact the lower bound stays true",
-        _exponent_rises_with_q,
-        "$P(\\rho=1|H_1) \\ge p_d^4$ and the exponent $\\max_\\nu[\\nu(1-t) - \\ln((1-q)e^\\nu + q)]$ does "
-        "not "
-        "decrease in "
-        "q (checked on a 400-point grid for five t), so the smaller q can only lower the bound.",
-        PAGE,
+    Claim.statement(
+        id="ATC10-eqA.16-bound-stays-valid",
+        locator="Eq. (A.16)",
+        quantity="when $P(\\rho = 1 | H_1) \\approx p_d^4$ is not exact the lower bound stays true",
+        compute=_exponent_rises_with_q,
+        note="$P(\\rho=1|H_1) \\ge p_d^4$ and the exponent $\\max_\\nu[\\nu(1-t) - \\ln((1-q)e^\\nu + q)]$ "
+        "does not decrease in q (checked on a 400-point grid for five t), so the smaller q can only lower "
+        "the bound.",
+        discussed_in=PAGE,
     ),
-    _statement(
-        "ATC10-appA-any-pd-reachable",
-        "App. A, after (A.18)",
-        "for given $P_D$ and K, (A.17) can be made to hold by taking t small and $p_d$ large",
-        _any_pd_reachable,
-        "At $t = 0$ the design $p_d = [1 - (1 - P_D)^{1/K}]^{1/4} < 1$ makes the bound equal $P_D$, for "
+    Claim.statement(
+        id="ATC10-appA-any-pd-reachable",
+        locator="App. A, after (A.18)",
+        quantity="for given $P_D$ and K, (A.17) can be made to hold by taking t small and $p_d$ large",
+        compute=_any_pd_reachable,
+        note="At $t = 0$ the design $p_d = [1 - (1 - P_D)^{1/K}]^{1/4} < 1$ makes the bound equal $P_D$, for "
         "$P_D$ in "
         "{0.88, 0.98, 0.999} and K in {2, 10, 100, 1000}.",
-        PAGE,
+        discussed_in=PAGE,
     ),
-    _statement(
-        "ATC10-eqB.11-monte-carlo",
-        "Eqs. (B.1)-(B.11), (2.5.4), (2.4.2)",
-        "the simulated first-stage false-alarm rate is at least $F^{Kt+1}$ and the detection rate at least "
-        "$P_{DL}$",
-        _false_alarm_above_bound,
-        "Seeded simulation of matched-filter samples, lists and the $K$-list rule at reduced sizes "
+    Claim.statement(
+        id="ATC10-eqB.11-monte-carlo",
+        locator="Eqs. (B.1)-(B.11), (2.5.4), (2.4.2)",
+        quantity="the simulated first-stage false-alarm rate is at least $F^{Kt+1}$ and the detection rate "
+        "at least $P_{DL}$",
+        compute=_false_alarm_above_bound,
+        note="Seeded simulation of matched-filter samples, lists and the $K$-list rule at reduced sizes "
         f"({mc.N_A} filter-1 samples, windows of $\\pm {mc.HALF_WINDOW}$, {mc.TRIALS} trials; cases "
         "($K$, $t$, $P_{DL}$) = (1, 0, 0.9), (3, 0, 0.9), (3, 1/3, 0.9)), $J/(P_0 B \\tau)$ from -14 to "
         "-7 dB: every rate at or above its bound within 3 binomial standard errors.",
-        PAGE_MC,
+        discussed_in=PAGE_MC,
     ),
-    _statement(
-        "ATC10-eqC.17-monte-carlo",
-        "Eqs. (C.10)-(C.17), (2.5.11)",
-        "the simulated probability of a noise-only track over K segments is at least $F G^{K-1}$",
-        _false_tracks_above_bound,
-        f"Seeded false-track simulation (exact existence search, {mc.TRACK_TRIALS} trials, $K$ = 1-3, $p_f$ "
-        "0.02-0.3, reduced windows): every rate at or above the bound within 3 binomial standard errors.",
-        PAGE_MC,
+    Claim.statement(
+        id="ATC10-eqC.17-monte-carlo",
+        locator="Eqs. (C.10)-(C.17), (2.5.11)",
+        quantity="the simulated probability of a noise-only track over K segments is at least $F G^{K-1}$",
+        compute=_false_tracks_above_bound,
+        note=f"Seeded false-track simulation (exact existence search, {mc.TRACK_TRIALS} trials, $K$ = 1-3, "
+        "$p_f$ 0.02-0.3, reduced windows): every rate at or above the bound within 3 binomial standard "
+        "errors.",
+        discussed_in=PAGE_MC,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-eqB.9-lists-needed",
         locator="Eqs. (B.9)-(B.11), (2.5.4)",
         quantity="with a non-integer $Kt$ the bound $F^{Kt+1}$ of (B.10)-(B.11) still bounds the false-alarm "
         "probability of the rule 'more than Kt lists non-empty' from below",
-        published=True,
-        unit="statement",
         kind="statement",
         compute=b9_real_exponent_bound_holds,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="K = 10, t = 0.25: the rule needs $\\lfloor Kt \\rfloor + 1 = 3$ non-empty lists (enumeration "
         "of the $2^{10}$ list patterns), which is what the intersection of (B.9) over $j \\le Kt + 1$ "
         "takes; the exact probability of at least 3 non-empty lists exceeds $F^{3.5}$ (and $F^3$) for every "
@@ -618,17 +596,14 @@ CLAIMS += [
         "for an integer Kt the two coincide.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-eqB.6-correlated-samples",
         locator="Eqs. (B.6), (C.14); Sec. 2.3",
         quantity="(B.6)'s product gives the probability that a window of samples taken at twice the Nyquist "
         "rate holds no declaration (the 24-sample track window at the $K = 100$, $P_{DL} = 0.999$ "
         "threshold, $p_f = 0.20$)",
-        published=True,
-        unit="statement",
         kind="statement",
         compute=lambda: abs(window_empty_ratio() - 1.0) <= 1e-3,
-        tolerance=EXACT,
         expected_status="inconsistent",
         note="Neighbouring samples correlated, farther ones not (assumed 0.3-0.5; Genz integration of the "
         "24-dimensional Gaussian orthant, $10^{-3}$ allowing for its error): correlated samples leave a "
@@ -642,16 +617,13 @@ CLAIMS += [
         "window' of the page on the bounds against a simulated detector).",
         discussed_in=PAGE_MC,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-eqC.2-printed",
         locator="Eqs. (C.2)-(C.5)",
         quantity="the printed step $|T_1(1) - T_2(1)| \\le v \\alpha / c$ holds for the reception times it "
         "names",
-        published=True,
-        unit="statement",
         kind="statement",
         compute=lambda: _track_time_ratio() <= 1.0,
-        tolerance=EXACT,
         expected_status="discrepant",
         erratum="ATC10-E-jam-C2-track-window",
         oracle=lambda: _oracle_track_time_ratio() - 1.0 <= 1.0,
@@ -663,40 +635,37 @@ CLAIMS += [
         "and (C.5)-(C.6) and $n_v$ follow the correct form.",
         discussed_in=PAGE,
     ),
-    _statement(
-        "ATC10-eqC.5-track-window",
-        "Eqs. (C.5)-(C.6), Definition C.1",
-        "between successive pulses a time difference moves by at most $2 v \\alpha / c$, and Definition "
-        "C.1's "
-        "$(2/3) v \\alpha / c$ is more stringent",
-        _track_window_holds,
-        "20000 seeded straight flights of at most $v \\alpha$ with random directions and static satellites "
-        "at "
-        "42000 km: the change of $T(1) - T(2)$ never exceeds $2 v \\alpha / c$ (the transmission periods "
-        "cancel).",
-        PAGE,
+    Claim.statement(
+        id="ATC10-eqC.5-track-window",
+        locator="Eqs. (C.5)-(C.6), Definition C.1",
+        quantity="between successive pulses a time difference moves by at most $2 v \\alpha / c$, and "
+        "Definition C.1's $(2/3) v \\alpha / c$ is more stringent",
+        compute=_track_window_holds,
+        note="20000 seeded straight flights of at most $v \\alpha$ with random directions and static "
+        "satellites at 42000 km: the change of $T(1) - T(2)$ never exceeds $2 v \\alpha / c$ (the "
+        "transmission periods cancel).",
+        discussed_in=PAGE,
     ),
-    _statement(
-        "ATC10-eqD-derivation",
-        "Eqs. (D.7)-(D.16)",
-        "the Gaussian densities (D.7)-(D.8) give the threshold, $p_f$ (D.9), $p_d$ (D.13) and, with (D.15), "
-        "$p_f$ (D.16)",
-        _appendix_d_algebra,
-        "sympy solves the log-likelihood-ratio threshold exactly; (D.9), (D.13) and (D.16) are compared "
+    Claim.statement(
+        id="ATC10-eqD-derivation",
+        locator="Eqs. (D.7)-(D.16)",
+        quantity="the Gaussian densities (D.7)-(D.8) give the threshold, $p_f$ (D.9), $p_d$ (D.13) and, "
+        "with (D.15), $p_f$ (D.16)",
+        compute=_appendix_d_algebra,
+        note="sympy solves the log-likelihood-ratio threshold exactly; (D.9), (D.13) and (D.16) are compared "
         "with the Gaussian tails at 20 random (E, J/B, $\\lambda$) points to $10^{-12}$.",
-        PAGE,
+        discussed_in=PAGE,
     ),
-    _statement(
-        "ATC10-eqD.17-direct",
-        "Eqs. (D.17), (2.7.1)",
-        "$p_f = \\frac{1}{2} - \\frac{1}{2} \\operatorname{erf}(\\sqrt{P_0 B \\tau / (2 J)} - \\phi)$, with "
-        "$p_f \\to 0$ as $J \\to 0$ and $p_f \\to p_d$ as "
-        "$J \\to \\infty$",
-        _d17_matches_direct,
-        "The book's $p_f$ against the threshold set from $p_d$ and the noise-only Gaussian tail of a "
+    Claim.statement(
+        id="ATC10-eqD.17-direct",
+        locator="Eqs. (D.17), (2.7.1)",
+        quantity="$p_f = \\frac{1}{2} - \\frac{1}{2} \\operatorname{erf}(\\sqrt{P_0 B \\tau / (2 J)} - "
+        "\\phi)$, with $p_f \\to 0$ as $J \\to 0$ and $p_f \\to p_d$ as $J \\to \\infty$",
+        compute=_d17_matches_direct,
+        note="The book's $p_f$ against the threshold set from $p_d$ and the noise-only Gaussian tail of a "
         "standard library, with $E$ = 10 mJ and $B$ = 10 MHz, at four $p_d$ and five $J$, to $10^{-9}$ "
         "relative; and the two limits.",
-        PAGE,
+        discussed_in=PAGE,
     ),
 ]
 

@@ -20,7 +20,7 @@ import numpy as np
 import sympy as sp
 from scipy import integrate, special, stats
 
-from navcore.claims import EXACT, Claim, Erratum, Tolerance, printed
+from navcore.claims import Claim, Erratum, Tolerance, printed
 from navcore.claims.inputs import InputSet, input_cache
 from navcore.detection.multiple_access import (
     GaussianDensity,
@@ -496,17 +496,12 @@ def psk_chernoff() -> tuple[np.ndarray, np.ndarray]:
     )
 
 
-STATEMENT = EXACT
-
-
 CLAIMS += [
-    Claim(
+    Claim.statement(
         id="ATC10-sec3.4-power",
         locator="Eq. (3.4.13), Sec. 3.6",
         quantity="average multiple-access noise power equals $2(N-1)(\\tau/\\alpha)\\, b$ for every "
         "symmetric $C$",
-        published=True,
-        unit="statement",
         compute=lambda: all(
             math.isclose(
                 noise_sec36(n, x).power,
@@ -516,21 +511,15 @@ CLAIMS += [
             for n in DENSITY_NAMES
             for x in CHECK_CONTOURS
         ),
-        tolerance=STATEMENT,
-        expected_status="reproduced",
         note="Eq. (3.4.10) evaluated from the moments of each density; the odd moments vanish.",
         discussed_in=PAGE_NOISE,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-thm3.1-gaussian-limit",
         locator="Theorem 3.1",
         quantity="the noise distribution approaches $\\mathcal{N}(0, N q b)$ as $N$ grows with "
         "$\\tau/\\alpha$ fixed",
-        published=True,
-        unit="statement",
         compute=lambda: bool(np.all(np.diff(clt_tail_convergence()) < 0)),
-        tolerance=STATEMENT,
-        expected_status="reproduced",
         note="Exact Gaussian-mixture tail at $2 \\sigma$ against $Q(2)$ for $N q$ = 4, 40, 400: the error "
         "falls monotonically (to $8 \\times 10^{-4}$ at $N q = 400$).",
         discussed_in=PAGE_NOISE,
@@ -760,104 +749,84 @@ def appe_expansion() -> bool:
     return sp.simplify(c6 - (N * lam[3] / sp.factorial(6) + N**2 * lam[0] ** 2 / (2 * 36))) == 0
 
 
-_ST = EXACT
-
-
-def _s(cid, locator, quantity, compute, note, page, status="reproduced", **kw) -> Claim:
-    return Claim(
-        id=cid,
-        locator=locator,
-        quantity=quantity,
-        published=True,
-        unit="statement",
-        compute=compute,
-        tolerance=_ST,
-        expected_status=status,
-        note=note,
-        discussed_in=page,
-        **kw,
-    )
-
-
 N_, R_, G_, Z_ = PAGE_NOISE, PAGE_ROC, PAGE_GAUSS, PAGE_ZAKAI
 
 
 CLAIMS += [
-    _s(
-        "ATC10-sec3.1.2-coherent-beats-envelope",
-        "Sec. 3.1.2 C",
-        "coherent detection beats envelope detection",
-        coherent_beats_envelope,
-        "Gaussian noise, SNR 4, $p_f = 10^{-6}$: $Q(Q^{-1}(p_f) - d)$ against the Rician tail.",
-        N_,
+    Claim.statement(
+        id="ATC10-sec3.1.2-coherent-beats-envelope",
+        locator="Sec. 3.1.2 C",
+        quantity="coherent detection beats envelope detection",
+        compute=coherent_beats_envelope,
+        note="Gaussian noise, SNR 4, $p_f = 10^{-6}$: $Q(Q^{-1}(p_f) - d)$ against the Rician tail.",
+        discussed_in=N_,
     ),
-    _s(
-        "ATC10-sec3.1.2-peak-optimistic",
-        "Sec. 3.1.2 C",
-        "assuming the peak height is optimistic",
-        peak_optimistic,
-        "An off-peak sample (signal 0.8) has a lower $p_d$ at the same threshold.",
-        N_,
+    Claim.statement(
+        id="ATC10-sec3.1.2-peak-optimistic",
+        locator="Sec. 3.1.2 C",
+        quantity="assuming the peak height is optimistic",
+        compute=peak_optimistic,
+        note="An off-peak sample (signal 0.8) has a lower $p_d$ at the same threshold.",
+        discussed_in=N_,
     ),
-    _s(
-        "ATC10-sec3.3-overlap-window",
-        "Sec. 3.3, (3.3.7)",
-        "$n_{ij}$ nonzero only if $t - 2 \\tau < t_j < t$",
-        overlap_window,
-        "Cross-correlation of two 31-chip codes vanishes at offsets of one signature length or more.",
-        N_,
+    Claim.statement(
+        id="ATC10-sec3.3-overlap-window",
+        locator="Sec. 3.3, (3.3.7)",
+        quantity="$n_{ij}$ nonzero only if $t - 2 \\tau < t_j < t$",
+        compute=overlap_window,
+        note="Cross-correlation of two 31-chip codes vanishes at offsets of one signature length or more.",
+        discussed_in=N_,
     ),
-    _s(
-        "ATC10-sec3.4-zero-mean",
-        "Sec. 3.4, (3.4.11)-(3.4.12)",
-        "first moments vanish",
-        zero_mean,
-        "$E \\cos$ over a uniform delay with $f_0 \\alpha = 7$.",
-        N_,
+    Claim.statement(
+        id="ATC10-sec3.4-zero-mean",
+        locator="Sec. 3.4, (3.4.11)-(3.4.12)",
+        quantity="first moments vanish",
+        compute=zero_mean,
+        note="$E \\cos$ over a uniform delay with $f_0 \\alpha = 7$.",
+        discussed_in=N_,
     ),
-    _s(
-        "ATC10-eq3.4.6-cumulants",
-        "Eqs. (3.4.1)-(3.4.6), (E.3)",
-        "characteristic function (3.4.6) gives the cumulants",
-        cumulants_match,
-        "$4 \\times 10^{5}$ samples, uniform C at $1/\\sqrt{3b} = 3$: $\\kappa_2$ within 1 %, $\\kappa_4$ "
-        "within 10 %.",
-        N_,
-        status="reproduced",
+    Claim.statement(
+        id="ATC10-eq3.4.6-cumulants",
+        locator="Eqs. (3.4.1)-(3.4.6), (E.3)",
+        quantity="characteristic function (3.4.6) gives the cumulants",
+        compute=cumulants_match,
+        note="$4 \\times 10^{5}$ samples, uniform C at $1/\\sqrt{3b} = 3$: $\\kappa_2$ within 1 %, "
+        "$\\kappa_4$ within 10 %.",
+        discussed_in=N_,
     ),
-    _s(
-        "ATC10-eq3.4.10-second-moment",
-        "Eqs. (3.4.9)-(3.4.10)",
-        "$E n^2$ of the gated sum",
-        second_moment_identity,
-        "sympy, three interferers with general moments.",
-        N_,
+    Claim.statement(
+        id="ATC10-eq3.4.10-second-moment",
+        locator="Eqs. (3.4.9)-(3.4.10)",
+        quantity="$E n^2$ of the gated sum",
+        compute=second_moment_identity,
+        note="sympy, three interferers with general moments.",
+        discussed_in=N_,
     ),
-    _s(
-        "ATC10-appE-n-minus-one",
-        "Appendix E, (E.1)",
-        "N - 1 may be replaced by N",
-        appe_n_minus_one,
-        "The relative difference is exactly $1/N$: $10^{-3}$, $10^{-5}$ and $10^{-7}$ at $N = 10^{3}$, "
+    Claim.statement(
+        id="ATC10-appE-n-minus-one",
+        locator="Appendix E, (E.1)",
+        quantity="N - 1 may be replaced by N",
+        compute=appe_n_minus_one,
+        note="The relative difference is exactly $1/N$: $10^{-3}$, $10^{-5}$ and $10^{-7}$ at $N = 10^{3}$, "
         "$10^{5}$ (Sec. 3.6) and $10^{7}$; "
         "Appendix E is about the limit in N.",
-        N_,
+        discussed_in=N_,
     ),
-    _s(
-        "ATC10-appE-cumulants",
-        "Eqs. (E.4)-(E.9)",
-        "cumulants of $Q$",
-        appe_cumulants,
-        "Raw moments of $Q$ (uniform $C$) converted to cumulants by the moment-cumulant relations.",
-        N_,
+    Claim.statement(
+        id="ATC10-appE-cumulants",
+        locator="Eqs. (E.4)-(E.9)",
+        quantity="cumulants of $Q$",
+        compute=appe_cumulants,
+        note="Raw moments of $Q$ (uniform $C$) converted to cumulants by the moment-cumulant relations.",
+        discussed_in=N_,
     ),
-    _s(
-        "ATC10-appE-expansion",
-        "Eqs. (E.10)-(E.13)",
-        "the $(jv)^6$ coefficient",
-        appe_expansion,
-        "sympy series.",
-        N_,
+    Claim.statement(
+        id="ATC10-appE-expansion",
+        locator="Eqs. (E.10)-(E.13)",
+        quantity="the $(jv)^6$ coefficient",
+        compute=appe_expansion,
+        note="sympy series.",
+        discussed_in=N_,
     ),
 ]
 

@@ -48,11 +48,9 @@ from navcore.papers.atc10_multiple_access import (
     N_,
     PAGE_ROC,
     R_,
-    STATEMENT,
     X_TEST,
     Z_,
     _noise,
-    _s,
     b_of_contour,
     noise_sec36,
 )
@@ -253,29 +251,22 @@ ERRATA += [
 ]
 
 CLAIMS += [
-    Claim(
+    Claim.statement(
         id="ATC10-sec3.5-bound-monotone",
         locator="Sec. 3.5.1, discussion of (3.5.13)",
         quantity="the upper bound to $p_f$ increases with N and with $\\tau/\\alpha$",
-        published=True,
-        unit="statement",
         compute=bound_monotone_in_n_and_duty,
-        tolerance=STATEMENT,
-        expected_status="reproduced",
         note="Uniform C, $1/\\sqrt{3b} = 5$, $\\theta = 0.5$; $N = 5 \\times 10^{4}$, $10^{5}$, "
         "$2 \\times 10^{5}$ and $\\tau/\\alpha = 10^{-5}$, "
         "$2 \\times 10^{-5}$, $4 \\times 10^{-5}$ "
         "($M_C \\ge 1$ for symmetric C, so each term grows).",
         discussed_in=PAGE_ROC,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec3.6-order",
         locator="Sec. 3.6, Figs. 3.3-3.6",
         quantity="preference order C2, C1, C3, C4 of the upper-bound ROCs",
-        published=True,
-        unit="statement",
         compute=lambda: theorem_32_ordering(("C2 two-point", "C1 uniform", "C3 triangular", "C4 Gaussian")),
-        tolerance=STATEMENT,
         expected_status="consistent",
         note="Fig. 3.2 is lost: C1, C3, C4 are the book's choices (uniform, triangular, Gaussian), so "
         "only the position of C2 (the two-point optimum) is the paper's. Checked on the Chernoff "
@@ -283,71 +274,54 @@ CLAIMS += [
         "are lost (assumed 3 and 8 at the ends, 4, 5, 6 between).",
         discussed_in=PAGE_ROC,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec3.6-deteriorates",
         locator="Sec. 3.6, last paragraph",
         quantity="each ROC bound deteriorates as $1/\\sqrt{3b}$ decreases",
-        published=True,
-        unit="statement",
         compute=deteriorates_with_power,
-        tolerance=STATEMENT,
         expected_status="consistent",
         note="Chernoff exponents of $p_f$, four densities (C1, C3, C4 the book's), at the assumed contours "
         "$1/\\sqrt{3b}$ = 3..8. The contour labels and three of the four densities are lost with "
         "Figs. 3.2-3.6.",
         discussed_in=PAGE_ROC,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-thm3.2-optimum",
         locator="Theorem 3.2, Eq. (3.7.1)",
         quantity="the two-point density gives the best ROC upper bound at fixed noise power",
-        published=True,
-        unit="statement",
         compute=lambda: all(
             theorem_32_ordering(("C2 two-point", other), CHECK_CONTOURS)
             for other in ("C1 uniform", "C3 triangular", "C4 Gaussian")
         ),
-        tolerance=STATEMENT,
-        expected_status="reproduced",
         note="Against the three other symmetric densities of equal second moment, at the test powers "
         "$1/\\sqrt{3b}$ = 3, 4, 5, 6, 8 and every threshold; the theorem is about the Chernoff bound, not "
         "the actual ROC.",
         discussed_in=PAGE_ROC,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-eq3.7.23-closed-form",
         locator="Eqs. (3.7.23)-(3.7.25)",
         quantity="closed-form optimal $\\rho$ and Expf for the two-point density",
-        published=True,
-        unit="statement",
         compute=closed_form_matches_numerical,
-        tolerance=STATEMENT,
-        expected_status="reproduced",
         note="Read with $(1 - 2\\tau/\\alpha)$ (E3-9); equals the numerical Chernoff optimum to $10^{-6}$.",
         discussed_in=PAGE_ROC,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-eq3.7.26-approx",
         locator="Eqs. (3.7.26)-(3.7.27)",
         quantity="(3.7.26) approximates (3.7.24) at $N = 10^{5}$, $\\tau/\\alpha = 2 \\times 10^{-5}$",
-        published=True,
-        unit="statement",
         compute=lambda: approximation_accurate_at_typical_values() <= IN.good_approximation_rel,
-        tolerance=STATEMENT,
         expected_status="consistent",
         note="Largest relative error over thresholds 0.1..0.9 and $1/\\sqrt{3b}$ = 3..8, against the assumed "
         "reading of 'can be approximated' ($10^{-5}$ to 1 %); (3.7.27) read with the square root restored "
         "(E3-9). The accuracy 'can be approximated' asks for is an assumption.",
         discussed_in=PAGE_ROC,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec3.5-asymptotically-tight",
         locator="Sec. 3.1.3 A, end of Sec. 3.5.2",
         quantity="the ROC bounds approach the actual ROC as the number of aircraft grows",
-        published=True,
-        unit="statement",
         compute=bounds_tight_at_large_n,
-        tolerance=STATEMENT,
         expected_status="discrepant",
         note="Read at fixed noise power 4/75 (the $1/\\sqrt{3b}$ = 5 contour) and $\\theta = 0.5$, "
         "$N = 10^{7}$: "
@@ -356,7 +330,7 @@ CLAIMS += [
         "$Q(\\theta/\\sqrt p)$), not to 0. Tight only in the exponent (large deviations).",
         erratum="ATC10-E3-11",
         oracle=bounds_tight_gaussian_limit_oracle,
-        oracle_tolerance=STATEMENT,
+        oracle_tolerance=EXACT,
         discussed_in=PAGE_ROC,
     ),
 ]
@@ -559,112 +533,110 @@ def cosh_inequality() -> bool:
 
 
 CLAIMS += [
-    _s(
-        "ATC10-sec3.3-peak-one",
-        "Sec. 3.3, (3.3.4)-(3.3.5)",
-        "$R_{ii}$ has peak value 1",
-        peak_one,
-        "Unit-energy m-sequence: autocorrelation maximum 1 at zero lag.",
-        N_,
+    Claim.statement(
+        id="ATC10-sec3.3-peak-one",
+        locator="Sec. 3.3, (3.3.4)-(3.3.5)",
+        quantity="$R_{ii}$ has peak value 1",
+        compute=peak_one,
+        note="Unit-energy m-sequence: autocorrelation maximum 1 at zero lag.",
+        discussed_in=N_,
     ),
-    _s(
-        "ATC10-sec3.5-lower-bound-valid",
-        "Sec. 3.5.2, (3.5.14) corrected",
-        "the corrected (3.5.14) is a lower bound",
-        lower_bound_valid,
-        "Two-point density, $1/\\sqrt{3b}$ = 3, 5, 6, $\\theta$ 0.3-0.7: lb $\\le$ exact $\\le$ Chernoff.",
-        R_,
+    Claim.statement(
+        id="ATC10-sec3.5-lower-bound-valid",
+        locator="Sec. 3.5.2, (3.5.14) corrected",
+        quantity="the corrected (3.5.14) is a lower bound",
+        compute=lower_bound_valid,
+        note="Two-point density, $1/\\sqrt{3b}$ = 3, 5, 6, $\\theta$ 0.3-0.7: lb $\\le$ exact $\\le$ "
+        "Chernoff.",
+        discussed_in=R_,
     ),
-    _s(
-        "ATC10-sec3.5-lower-bound-printed",
-        "Sec. 3.5.2, (3.5.14) as printed",
-        "the printed (3.5.14) is a lower bound",
-        lower_bound_printed_valid,
-        "With the printed sign of $\\phi_1$ the 'bound' exceeds the exact $p_f$ (and the Chernoff upper "
+    Claim.statement(
+        id="ATC10-sec3.5-lower-bound-printed",
+        locator="Sec. 3.5.2, (3.5.14) as printed",
+        quantity="the printed (3.5.14) is a lower bound",
+        compute=lower_bound_printed_valid,
+        note="With the printed sign of $\\phi_1$ the 'bound' exceeds the exact $p_f$ (and the Chernoff upper "
         "bound).",
-        R_,
-        status="discrepant",
+        discussed_in=R_,
+        expected_status="discrepant",
         erratum="ATC10-E3-1",
         oracle=lower_bound_printed_oracle,
         oracle_tolerance=EXACT,
     ),
-    _s(
-        "ATC10-sec3.7-equal-share",
-        "Sec. 3.7, (3.7.12), (3.7.14), (3.7.16)",
-        "equal power share per interferer",
-        equal_share,
-        "Exact rational arithmetic at the Sec. 3.6 N and $\\tau/\\alpha$.",
-        R_,
+    Claim.statement(
+        id="ATC10-sec3.7-equal-share",
+        locator="Sec. 3.7, (3.7.12), (3.7.14), (3.7.16)",
+        quantity="equal power share per interferer",
+        compute=equal_share,
+        note="Exact rational arithmetic at the Sec. 3.6 N and $\\tau/\\alpha$.",
+        discussed_in=R_,
     ),
-    _s(
-        "ATC10-sec3.7-smallest-peak",
-        "Sec. 3.7",
-        "two-valued $n_{ij}$ has the smallest peak",
-        smallest_peak,
-        "Peaks $\\sqrt{b}$, $\\sqrt{3b}$, $\\sqrt{6b}$, unbounded.",
-        R_,
+    Claim.statement(
+        id="ATC10-sec3.7-smallest-peak",
+        locator="Sec. 3.7",
+        quantity="two-valued $n_{ij}$ has the smallest peak",
+        compute=smallest_peak,
+        note="Peaks $\\sqrt{b}$, $\\sqrt{3b}$, $\\sqrt{6b}$, unbounded.",
+        discussed_in=R_,
     ),
-    _s(
-        "ATC10-sec3.7-convexity-operating",
-        "Theorem 3.2 proof, (3.7.15)",
-        "$\\ln(1 - q + q \\cosh(\\rho \\sqrt{\\beta}))$ convex in $\\beta$ at the operating points",
-        convex_operating,
-        "Second derivative positive for $\\rho \\sqrt{\\beta}$ up to 8 (operating points reach 1.9).",
-        R_,
+    Claim.statement(
+        id="ATC10-sec3.7-convexity-operating",
+        locator="Theorem 3.2 proof, (3.7.15)",
+        quantity="$\\ln(1 - q + q \\cosh(\\rho \\sqrt{\\beta}))$ convex in $\\beta$ at the operating points",
+        compute=convex_operating,
+        note="Second derivative positive for $\\rho \\sqrt{\\beta}$ up to 8 (operating points reach 1.9).",
+        discussed_in=R_,
     ),
-    _s(
-        "ATC10-sec3.7-convexity-unconditional",
-        "Theorem 3.2 proof, (3.7.15)",
-        "the convexity the proof invokes holds unconditionally",
-        convex_unconditional,
-        "Concave beyond $\\rho \\sqrt{\\beta}$ of about 13 at $q = 4 \\times 10^{-5}$.",
-        R_,
-        status="discrepant",
+    Claim.statement(
+        id="ATC10-sec3.7-convexity-unconditional",
+        locator="Theorem 3.2 proof, (3.7.15)",
+        quantity="the convexity the proof invokes holds unconditionally",
+        compute=convex_unconditional,
+        note="Concave beyond $\\rho \\sqrt{\\beta}$ of about 13 at $q = 4 \\times 10^{-5}$.",
+        discussed_in=R_,
+        expected_status="discrepant",
         erratum="ATC10-E3-8",
         oracle=convex_unconditional_oracle,
         oracle_tolerance=EXACT,
     ),
-    _s(
-        "ATC10-eq3.5.5-chernoff-dominates",
-        "Eqs. (3.5.5)-(3.5.13)",
-        "the Chernoff bound dominates the exact tail",
-        chernoff_dominates,
-        "Two-point exact sums, $1/\\sqrt{3b}$ = 3-8, $\\theta$ 0.3-0.7.",
-        R_,
+    Claim.statement(
+        id="ATC10-eq3.5.5-chernoff-dominates",
+        locator="Eqs. (3.5.5)-(3.5.13)",
+        quantity="the Chernoff bound dominates the exact tail",
+        compute=chernoff_dominates,
+        note="Two-point exact sums, $1/\\sqrt{3b}$ = 3-8, $\\theta$ 0.3-0.7.",
+        discussed_in=R_,
     ),
-    _s(
-        "ATC10-eq3.7.5-cosh-inequality",
-        "Eqs. (3.7.5)-(3.7.13)",
-        "$\\int e^{\\rho x} C \\ge \\cosh(\\rho \\sqrt{b})$",
-        cosh_inequality,
-        "Four densities of second moment b, $\\rho$ up to 30.",
-        R_,
+    Claim.statement(
+        id="ATC10-eq3.7.5-cosh-inequality",
+        locator="Eqs. (3.7.5)-(3.7.13)",
+        quantity="$\\int e^{\\rho x} C \\ge \\cosh(\\rho \\sqrt{b})$",
+        compute=cosh_inequality,
+        note="Four densities of second moment b, $\\rho$ up to 30.",
+        discussed_in=R_,
     ),
-    _s(
-        "ATC10-appF-identity",
-        "Eqs. (F.2)-(F.6)",
-        "$\\int x^2 C_{ij} = (1/4\\tau) \\int R_{ii} R_{jj}$",
-        appf_identity,
-        "Random 31-chip codes: $\\int X_{ij}^2 = \\int R_{ii} R_{jj}$ to $10^{-12}$.",
-        Z_,
+    Claim.statement(
+        id="ATC10-appF-identity",
+        locator="Eqs. (F.2)-(F.6)",
+        quantity="$\\int x^2 C_{ij} = (1/4\\tau) \\int R_{ii} R_{jj}$",
+        compute=appf_identity,
+        note="Random 31-chip codes: $\\int X_{ij}^2 = \\int R_{ii} R_{jj}$ to $10^{-12}$.",
+        discussed_in=Z_,
     ),
-    _s(
-        "ATC10-thm3.3-equality",
-        "Theorem 3.3; (3.9.2)",
-        "equality iff $R_{jj} = R_{ii}$",
-        thm33_equality,
-        "Strict for different codes, equality for a code and its reversal (same autocorrelation).",
-        Z_,
+    Claim.statement(
+        id="ATC10-thm3.3-equality",
+        locator="Theorem 3.3; (3.9.2)",
+        quantity="equality iff $R_{jj} = R_{ii}$",
+        compute=thm33_equality,
+        note="Strict for different codes, equality for a code and its reversal (same autocorrelation).",
+        discussed_in=Z_,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec3.6-C2-smallest-lower-bound",
         printed="it has the smallest upper bound to $p_f$ (and also the smallest lower bound)",
         locator="Sec. 3.6",
         quantity="C2 has the smallest upper bound to $p_f$ '(and also the smallest lower bound)'",
-        published=True,
-        unit="statement",
         compute=c2_smallest_lower_bound_everywhere,
-        tolerance=EXACT,
         expected_status="inconsistent",
         note="The lower bounds to $p_f$ (corrected Gallager bound, E3-1) of C1-C4 (C1, C3, C4 the book's "
         "densities, Fig. 3.2 being lost) compared at each threshold of a 19-point grid and at each "

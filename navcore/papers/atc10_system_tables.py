@@ -248,16 +248,12 @@ def _table11_erp(row: int) -> float:
 
 
 CLAIMS += [
-    Claim(
+    Claim.statement(
         id="ATC10-sec1.1-erp-rises-with-K",
         locator="Sec. 1.1 and Table 1.1",
         quantity="the jammer ERP needed to disable the system rises with the transmission length K = 1, 10, "
         "100, 1000 ('for K less than 100 the required jammer is modest ... as K approaches 1000 ...')",
-        published=True,
-        unit="statement",
         compute=_erp_rises_with_k,
-        tolerance=EXACT,
-        expected_status="reproduced",
         kind="statement",
         note="Threshold search for $N_{ADL} = 0.01 N_T$ at $t = 0$, for the caption's $P_D = 0.88$ and for "
         "Table 2.1's $P_{DL} = 0.999$ (the design point most Table 1.1 entries use): both sequences increase "
@@ -267,17 +263,13 @@ CLAIMS += [
         "dollar cost is not testable.",
         discussed_in=PAGE_T11,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec1.1-K1000-prohibitive",
         locator="Sec. 1.1 and Table 2.1",
         quantity="as K approaches 1000 the barrage jammer becomes prohibitive: for the caption's $P_D \\ge "
         "0.88$ "
         "design no finite ERP disables a $K = 1000$ system (beyond Table 2.1's '>130 dBW')",
-        published=True,
-        unit="statement",
         compute=_k1000_beyond_practical,
-        tolerance=EXACT,
-        expected_status="reproduced",
         kind="statement",
         note="'Prohibit' read at the caption's $P_D = 0.88$: the $K = 1000$ $N_{ADL}$ ceiling "
         "($J \\to \\infty$) "
@@ -386,15 +378,12 @@ CLAIMS += [
             ),
         )
     ],
-    Claim(
+    Claim.statement(
         id="ATC10-tab1.1-caption-pdl",
         locator="Table 1.1 caption and Sec. 1.1",
         quantity="every Table 1.1 ERP is the requirement for a processor designed for $P_D = 0.88$, as the "
         "caption says",
-        published=True,
-        unit="statement",
         compute=lambda: table11_caption_matches(False) == len(TABLE_1_1),
-        tolerance=EXACT,
         expected_status="discrepant",
         kind="statement",
         erratum=E_TAB11,

@@ -20,7 +20,7 @@ from navcore.location.clock_model import (
 )
 from navcore.papers.atc10_clock_tracking import _APPROX, PAGE_TRACKER
 from navcore.papers.atc10_quotes import quoted
-from navcore.papers.atc10_tracking_geometry import IN_COV, _physical_geometry, _s
+from navcore.papers.atc10_tracking_geometry import IN_COV, _physical_geometry
 
 CLAIMS: list[Claim] = []
 ERRATA: list[Erratum] = []
@@ -281,70 +281,67 @@ def orthogonal_best() -> bool:
 
 
 CLAIMS += [
-    _s(
-        "ATC10-appH-rank-r-prior-mean",
-        "Appendix H after (H.11); Sec. 4.5.3",
-        "with three satellites the estimate of $\\tau_n$ is its prior mean",
-        three_satellites_prior_mean,
-        "$I - G(G'G)^{-1} G' = 0$ for the square $F_3$ of both examples: $M = 0$.",
-        PAGE_TRACKER,
+    Claim.statement(
+        id="ATC10-appH-rank-r-prior-mean",
+        locator="Appendix H after (H.11); Sec. 4.5.3",
+        quantity="with three satellites the estimate of $\\tau_n$ is its prior mean",
+        compute=three_satellites_prior_mean,
+        note="$I - G(G'G)^{-1} G' = 0$ for the square $F_3$ of both examples: $M = 0$.",
+        discussed_in=PAGE_TRACKER,
     ),
-    _s(
-        "ATC10-appG-newton-error",
-        "Appendix G, after (G.1)",
-        "first Newton iterate's error $O((k/f_0) \\lambda^2)$",
-        newton_error_order,
-        "Log-slope of the error in $\\lambda$ is 2 and the error is below $(k/f_0) \\lambda^2$ "
+    Claim.statement(
+        id="ATC10-appG-newton-error",
+        locator="Appendix G, after (G.1)",
+        quantity="first Newton iterate's error $O((k/f_0) \\lambda^2)$",
+        compute=newton_error_order,
+        note="Log-slope of the error in $\\lambda$ is 2 and the error is below $(k/f_0) \\lambda^2$ "
         "($\\lambda = 10^{-4}$ and $10^{-5}$, i.e. the printed $10^{-9}$ scaled up to be resolvable).",
-        PAGE_TRACKER,
+        discussed_in=PAGE_TRACKER,
     ),
-    _s(
-        "ATC10-appG-counter-linearisation",
-        "Appendix G",
-        "$(nN + k)^{2\\rho} - (nN)^{2\\rho} \\approx 2 \\rho (nN)^{2\\rho-1} k$",
-        counter_linearisation,
-        "Relative error below $10^{-3}$ at $k/nN = 10^{-4}$.",
-        PAGE_TRACKER,
-        status="consistent",
+    Claim.statement(
+        id="ATC10-appG-counter-linearisation",
+        locator="Appendix G",
+        quantity="$(nN + k)^{2\\rho} - (nN)^{2\\rho} \\approx 2 \\rho (nN)^{2\\rho-1} k$",
+        compute=counter_linearisation,
+        note="Relative error below $10^{-3}$ at $k/nN = 10^{-4}$.",
+        discussed_in=PAGE_TRACKER,
+        expected_status="consistent",
     ),
-    _s(
-        "ATC10-appG-V0-closed-form",
-        "Appendix G, Var x3",
-        "$V_0$ (squared integrand) $= 1/(\\Gamma(2\\rho+1) \\sin(\\pi \\rho))$",
-        v0_matches,
-        "Quadrature at $\\rho = 0.55$, 0.75, 0.9 (assumed) and 0.95.",
-        PAGE_TRACKER,
-        status="consistent",
+    Claim.statement(
+        id="ATC10-appG-V0-closed-form",
+        locator="Appendix G, Var x3",
+        quantity="$V_0$ (squared integrand) $= 1/(\\Gamma(2\\rho+1) \\sin(\\pi \\rho))$",
+        compute=v0_matches,
+        note="Quadrature at $\\rho = 0.55$, 0.75, 0.9 (assumed) and 0.95.",
+        discussed_in=PAGE_TRACKER,
+        expected_status="consistent",
     ),
-    _s(
-        "ATC10-appG-V0-printed",
-        "Appendix G, Var x3 ($V_0$ as printed)",
-        "the printed $V_0$ is a positive constant",
-        v0_printed_positive,
-        "The printed integrand has lost its square; as printed, the integral up to $X$ grows like "
+    Claim.statement(
+        id="ATC10-appG-V0-printed",
+        locator="Appendix G, Var x3 ($V_0$ as printed)",
+        quantity="the printed $V_0$ is a positive constant",
+        compute=v0_printed_positive,
+        note="The printed integrand has lost its square; as printed, the integral up to $X$ grows like "
         "$-X^{\\rho - 1/2}$ (checked to $X = 10^{6}$), so $V_0$ would be negative and unbounded.",
-        PAGE_TRACKER,
-        status="discrepant",
+        discussed_in=PAGE_TRACKER,
+        expected_status="discrepant",
         erratum="ATC10-E4.7-fbm-normalisation",
         oracle=v0_printed_positive_oracle,
         oracle_tolerance=EXACT,
     ),
-    _s(
-        "ATC10-appG-half-is-wiener",
-        "Appendix G, x3",
-        "$\\rho = 1/2$ gives the integral of v",
-        half_is_wiener,
-        "$V_0(1/2) = 1$ from both forms: $\\mathrm{Var}\\, x_3 = \\beta^2 t$.",
-        PAGE_TRACKER,
+    Claim.statement(
+        id="ATC10-appG-half-is-wiener",
+        locator="Appendix G, x3",
+        quantity="$\\rho = 1/2$ gives the integral of v",
+        compute=half_is_wiener,
+        note="$V_0(1/2) = 1$ from both forms: $\\mathrm{Var}\\, x_3 = \\beta^2 t$.",
+        discussed_in=PAGE_TRACKER,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-appG-spectrum",
         locator="Appendix G, x3",
         quantity="a spectrum $S(f) \\sim |f|^{-2\\rho-1}$ gives a variance growing as $t^{2\\rho}$",
-        published=True,
-        unit="statement",
         compute=lambda: abs(spectrum_exponent() - 1.0) <= 1e-6,
-        tolerance=EXACT,
         expected_status="consistent",
         note="$\\mathrm{Var}\\, x(t) = \\int S(f) |1 - e^{j 2 \\pi f t}|^2 df$ by quadrature at t = 1 and "
         "2 s: "
@@ -353,81 +350,78 @@ CLAIMS += [
         "quadrature).",
         discussed_in=PAGE_TRACKER,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-appG-offset-like-flicker",
         locator="Appendix G",
         quantity="when $\\rho \\approx 1$ the '1/f' noise acts much like an unknown frequency offset "
         "($t^{2\\rho}$ "
         "against $t^2$ over 1-100 s, $\\rho$ within the prose band of '≈ 1')",
-        published=True,
-        unit="statement",
         compute=lambda: offset_like_flicker() > float(IN_COV.quite_similar_correlation),
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="The smallest correlation over $0.9 \\le \\rho < 1$ is 0.9991: a frequency offset and a "
         "$\\rho \\approx 1$ flicker are hard to tell apart over the seconds to minutes of tracking.",
         discussed_in=PAGE_TRACKER,
     ),
-    _s(
-        "ATC10-appH-H16-H21",
-        "Appendix H, (H.14)-(H.17), (H.20)-(H.21), (H.23)-(H.24)",
-        "(H.16) = (H.21) = the estimator's error covariance",
-        h16_equals_h21,
-        "Seeded random $F$, $G$, $P_x$, $P_n$ ($p = 2$, $q = 3$, $r = 7$).",
-        PAGE_TRACKER,
+    Claim.statement(
+        id="ATC10-appH-H16-H21",
+        locator="Appendix H, (H.14)-(H.17), (H.20)-(H.21), (H.23)-(H.24)",
+        quantity="(H.16) = (H.21) = the estimator's error covariance",
+        compute=h16_equals_h21,
+        note="Seeded random $F$, $G$, $P_x$, $P_n$ ($p = 2$, $q = 3$, $r = 7$).",
+        discussed_in=PAGE_TRACKER,
     ),
-    _s(
-        "ATC10-appH-H8-H22",
-        "Appendix H, (H.7)-(H.8), (H.18)-(H.19), (H.22), (H.25)",
-        "(H.8) = (H.22)",
-        h8_equals_h22,
-        "Same seeded matrices.",
-        PAGE_TRACKER,
+    Claim.statement(
+        id="ATC10-appH-H8-H22",
+        locator="Appendix H, (H.7)-(H.8), (H.18)-(H.19), (H.22), (H.25)",
+        quantity="(H.8) = (H.22)",
+        compute=h8_equals_h22,
+        note="Same seeded matrices.",
+        discussed_in=PAGE_TRACKER,
     ),
-    _s(
-        "ATC10-appH-proposition",
-        "Appendix H, Proposition, (H.12)-(H.13)",
-        "$M_0'(M_0 P M_0')^{-1} M_0 = P^{-1} (I - GK)$",
-        proposition_holds,
-        "$M_0$ from the SVD of G.",
-        PAGE_TRACKER,
+    Claim.statement(
+        id="ATC10-appH-proposition",
+        locator="Appendix H, Proposition, (H.12)-(H.13)",
+        quantity="$M_0'(M_0 P M_0')^{-1} M_0 = P^{-1} (I - GK)$",
+        compute=proposition_holds,
+        note="$M_0$ from the SVD of G.",
+        discussed_in=PAGE_TRACKER,
     ),
-    _s(
-        "ATC10-appH-H27-gls",
-        "Appendix H, (H.5)-(H.6), (H.27)",
-        "(H.27) equals the GLS estimate of y",
-        h27_is_gls,
-        "Scalar x with F = 1 (Section 4's case), corrected gain.",
-        PAGE_TRACKER,
+    Claim.statement(
+        id="ATC10-appH-H27-gls",
+        locator="Appendix H, (H.5)-(H.6), (H.27)",
+        quantity="(H.27) equals the GLS estimate of y",
+        compute=h27_is_gls,
+        note="Scalar x with F = 1 (Section 4's case), corrected gain.",
+        discussed_in=PAGE_TRACKER,
     ),
-    _s(
-        "ATC10-appH-scalar-gain-printed",
-        "Appendix H, corollary (H.26)",
-        "the printed scalar gain $\\sigma^2/(\\ldots)$ is the LMMSE gain",
-        scalar_gain_printed_matches,
-        "The printed numerator $\\sigma^2$ differs from $H$ of (H.20); $\\sigma_x^2$ is right.",
-        PAGE_TRACKER,
-        status="discrepant",
+    Claim.statement(
+        id="ATC10-appH-scalar-gain-printed",
+        locator="Appendix H, corollary (H.26)",
+        quantity="the printed scalar gain $\\sigma^2/(\\ldots)$ is the LMMSE gain",
+        compute=scalar_gain_printed_matches,
+        note="The printed numerator $\\sigma^2$ differs from $H$ of (H.20); $\\sigma_x^2$ is right.",
+        discussed_in=PAGE_TRACKER,
+        expected_status="discrepant",
         erratum="ATC10-E4.10-scalar-gain",
         oracle=scalar_gain_printed_oracle,
         oracle_tolerance=EXACT,
     ),
-    _s(
-        "ATC10-appH-scalar-gain-corrected",
-        "Appendix H, corollary (H.26)",
-        "with $\\sigma_x^2$ in the numerator the scalar gain equals (H.20)",
-        scalar_gain_corrected_matches,
-        "The formula shown is the paper's, with $\\sigma^2$ in the numerator; with $\\sigma_x^2$ there "
+    Claim.statement(
+        id="ATC10-appH-scalar-gain-corrected",
+        locator="Appendix H, corollary (H.26)",
+        quantity="with $\\sigma_x^2$ in the numerator the scalar gain equals (H.20)",
+        compute=scalar_gain_corrected_matches,
+        note="The formula shown is the paper's, with $\\sigma^2$ in the numerator; with $\\sigma_x^2$ there "
         "it equals (H.20), checked on a seeded example with $F = \\mathbf{1}$.",
-        PAGE_TRACKER,
+        discussed_in=PAGE_TRACKER,
     ),
-    _s(
-        "ATC10-appH-orthogonal-best",
-        "Appendix H, last remark",
-        "with $F'F$ and $G'G$ fixed, $F'G = 0$ is best",
-        orthogonal_best,
-        "Scalar $x$: $P_{\\xi_x}$ with $G$ orthogonal to $F$ is below that with a tilted $G$ of equal $G'G$.",
-        PAGE_TRACKER,
+    Claim.statement(
+        id="ATC10-appH-orthogonal-best",
+        locator="Appendix H, last remark",
+        quantity="with $F'F$ and $G'G$ fixed, $F'G = 0$ is best",
+        compute=orthogonal_best,
+        note="Scalar $x$: $P_{\\xi_x}$ with $G$ orthogonal to $F$ is below that with a tilted $G$ of equal "
+        "$G'G$.",
+        discussed_in=PAGE_TRACKER,
     ),
 ]
 

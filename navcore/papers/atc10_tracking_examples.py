@@ -38,7 +38,6 @@ from navcore.papers.atc10_tracking_geometry import (
     _e1_claims,
     _example_row,
     _physical_oracle_invariants,
-    _s,
     physical_table_4_2,
     printed_table_4_2,
 )
@@ -353,18 +352,15 @@ for (_ex, _s0), _row in TABLE_4_3.items():
 
 
 CLAIMS += [
-    Claim(
+    Claim.statement(
         id="ATC10-sec4.6-rule1-exII",
         locator="Sec. 4.6, rule (1)",
         quantity="Example II (small $\\beta$): tracking significantly reduces the error when "
         "$\\sigma_0 \\lesssim \\sigma$",
-        published=True,
-        unit="statement",
         compute=lambda: (
             ms_ratio_tracking("II", IN.sigma0_mid_ns) <= IN.significant_ms_fraction
             and ms_ratio_tracking("II", IN.sigma0_low_ns) <= IN.significant_ms_fraction
         ),
-        tolerance=EXACT,
         expected_status="consistent",
         note="'Significant' read as: tracking leaves at most half of the mean-square position error "
         "(assumed, 0.3-0.6); $sd_N^2 / sd_0^2 = 0.19$ at $\\sigma_0 = \\sigma$, 0.05 at $\\sigma_0 = 0.1 "
@@ -372,37 +368,31 @@ CLAIMS += [
         "The reading of 'significantly' is an assumption.",
         discussed_in=PAGE_EXAMPLES,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec4.6-rule2-exI",
         locator="Sec. 4.6, rule (2)",
         quantity="Example I: the reduction is significant only when $\\sigma_0 \\lesssim 0.1 \\sigma$",
-        published=True,
-        unit="statement",
         compute=lambda: (
             ms_ratio_tracking("I", IN.sigma0_low_ns)
             <= IN.significant_ms_fraction
             < ms_ratio_tracking("I", IN.sigma0_mid_ns)
         ),
-        tolerance=EXACT,
         expected_status="not-reproducible",
         note="Same reading: $sd_N^2/sd_0^2 = 0.32$ at $\\sigma_0$ = 5 ns, 0.55 at 50 ns; true for thresholds "
         "0.32-0.55, false at the ends of the assumed 0.3-0.6. The reading of 'significantly' is an "
         "assumption.",
         discussed_in=PAGE_EXAMPLES,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec4.6-rule3-jump-from-clock-term",
         locator="Sec. 4.6, rule (3)",
         quantity="the jump from $sd_N$ to $sd_{N+1}$ is due largely to the increases of "
         "$\\operatorname{tr}\\{(F'F)^{-1}\\}$ and $1'F(F'F)^{-2}F'1$ (all six Table 4.3 cases)",
-        published=True,
-        unit="statement",
         compute=lambda: all(
             jump_share_from_tr_and_s(invariant_s3_inputs(ex), s0) > IN.largely_share
             for ex in EXAMPLES
             for s0 in sigma0_values()
         ),
-        tolerance=EXACT,
         expected_status="inconsistent",
         note="'Largely' read as: more than half (assumed, 0.4-0.7) of the mean-square jump; the rest is the "
         "lost measurement update (the growth of the gain). Printed Table 4.2 with the invariant $S_3$ of "
@@ -439,18 +429,15 @@ for _ex, _pub_s in (("I", 30.0), ("II", 60.0)):
 
 
 CLAIMS.append(
-    Claim(
+    Claim.statement(
         id="ATC10-sec4.6-rule4-common-threshold",
         aliases=("ATC10-sec4.6-rule4-outage-exI-corrected", "ATC10-sec4.6-rule4-outage-exII-corrected"),
         locator="Sec. 4.6, rule (4)",
         quantity="with $\\sigma_0 = 0.1 \\sigma$ one acceptable-error threshold gives about 30 s of "
         "three-satellite tracking in Example I and about 60 s in Example II (invariant $S_3$)",
-        published=True,
-        unit="statement",
         compute=lambda: rule4_common_threshold_exists(
             {ex: invariant_s3_inputs(ex) for ex in EXAMPLES}, IN.rule4_threshold_reference
         ),
-        tolerance=EXACT,
         expected_status="discrepant",
         note="The paper names no threshold, so every threshold is admitted: for each reading of what it "
         "scales (an absolute error, or a multiple of $\\mathrm{sd}_0$, $\\mathrm{sd}_N$ or "
@@ -577,60 +564,60 @@ def crossover_100_helps() -> bool:
 
 
 CLAIMS += [
-    _s(
-        "ATC10-sec4.1-tracking-reduces",
-        "Sec. 4.1",
-        "tracking $\\tau_n$ reduces the position error variance",
-        tracking_reduces,
-        "$sd_N < sd_0$ in all six Table 4.3 cases, from the printed Table 4.2.",
-        PAGE_EXAMPLES,
+    Claim.statement(
+        id="ATC10-sec4.1-tracking-reduces",
+        locator="Sec. 4.1",
+        quantity="tracking $\\tau_n$ reduces the position error variance",
+        compute=tracking_reduces,
+        note="$sd_N < sd_0$ in all six Table 4.3 cases, from the printed Table 4.2.",
+        discussed_in=PAGE_EXAMPLES,
     ),
-    _s(
-        "ATC10-sec4.6-marginal-gains",
-        "Sec. 4.6",
-        "marginal gains from tracking once $\\sigma_0$ exceeds $\\sigma$",
-        marginal_beyond_sigma,
-        "At $\\sigma_0 = 10 \\sigma$ the mean-square ratio $sd_N^2/sd_0^2$ is 0.94 (I) and 0.64 (II), "
+    Claim.statement(
+        id="ATC10-sec4.6-marginal-gains",
+        locator="Sec. 4.6",
+        quantity="marginal gains from tracking once $\\sigma_0$ exceeds $\\sigma$",
+        compute=marginal_beyond_sigma,
+        note="At $\\sigma_0 = 10 \\sigma$ the mean-square ratio $sd_N^2/sd_0^2$ is 0.94 (I) and 0.64 (II), "
         "above the assumed 'significant' fraction.",
-        PAGE_EXAMPLES,
-        status="consistent",
+        discussed_in=PAGE_EXAMPLES,
+        expected_status="consistent",
     ),
-    _s(
-        "ATC10-sec4.7-gains-only-below-sigma",
-        "Sec. 4.7",
-        "gains significant only when $\\sigma_0 \\le \\sigma$",
-        gains_only_below_sigma,
-        "Every significant reduction (ratio below the assumed fraction) is at $\\sigma_0 \\le$ 50 ns.",
-        PAGE_EXAMPLES,
-        status="consistent",
+    Claim.statement(
+        id="ATC10-sec4.7-gains-only-below-sigma",
+        locator="Sec. 4.7",
+        quantity="gains significant only when $\\sigma_0 \\le \\sigma$",
+        compute=gains_only_below_sigma,
+        note="Every significant reduction (ratio below the assumed fraction) is at $\\sigma_0 \\le$ 50 ns.",
+        discussed_in=PAGE_EXAMPLES,
+        expected_status="consistent",
     ),
-    _s(
-        "ATC10-sec4.7-three-sat-sigma",
-        "Sec. 4.7",
-        "several tens of seconds on three satellites only at $\\sigma_0 = 0.1 \\sigma$",
-        three_sat_only_at_tenth,
-        "With the fitted threshold of rule 4: under 20 s at $\\sigma_0 = \\sigma$, 30-59 s at $0.1 \\sigma$ "
-        "(printed $S_3$).",
-        PAGE_EXAMPLES,
-        status="consistent",
+    Claim.statement(
+        id="ATC10-sec4.7-three-sat-sigma",
+        locator="Sec. 4.7",
+        quantity="several tens of seconds on three satellites only at $\\sigma_0 = 0.1 \\sigma$",
+        compute=three_sat_only_at_tenth,
+        note="With the fitted threshold of rule 4: under 20 s at $\\sigma_0 = \\sigma$, 30-59 s at $0.1 "
+        "\\sigma$ (printed $S_3$).",
+        discussed_in=PAGE_EXAMPLES,
+        expected_status="consistent",
     ),
-    _s(
-        "ATC10-fig4.2-4.3-shape",
-        "Figs. 4.2-4.3",
-        "rms error falls to the tracking limit, jumps at N + 1, then grows",
-        fig_shape,
-        "Printed Table 4.2, N = 100, six cases.",
-        PAGE_EXAMPLES,
+    Claim.statement(
+        id="ATC10-fig4.2-4.3-shape",
+        locator="Figs. 4.2-4.3",
+        quantity="rms error falls to the tracking limit, jumps at N + 1, then grows",
+        compute=fig_shape,
+        note="Printed Table 4.2, N = 100, six cases.",
+        discussed_in=PAGE_EXAMPLES,
     ),
-    _s(
-        "ATC10-sec4.7-crossover-100",
-        "Sec. 4.7",
-        "a 1/f crossover at n = 100 would make the gains larger",
-        crossover_100_helps,
-        "LMMSE extrapolation error 30 s after 60 epochs (Example I, 5 ns): smaller with "
+    Claim.statement(
+        id="ATC10-sec4.7-crossover-100",
+        locator="Sec. 4.7",
+        quantity="a 1/f crossover at n = 100 would make the gains larger",
+        compute=crossover_100_helps,
+        note="LMMSE extrapolation error 30 s after 60 epochs (Example I, 5 ns): smaller with "
         "$\\sigma_2 = \\sigma_1/10$ than with $\\sigma_2 = \\sigma_1$.",
-        PAGE_EXAMPLES,
-        status="consistent",
+        discussed_in=PAGE_EXAMPLES,
+        expected_status="consistent",
     ),
     Claim(
         id="ATC10-tab4.3-exI-sd0-norm-variance",

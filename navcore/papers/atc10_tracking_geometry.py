@@ -790,14 +790,11 @@ for _ex in EXAMPLES:
 
 
 CLAIMS += [
-    Claim(
+    Claim.statement(
         id="ATC10-sec4.6-cone-exI",
         locator="Sec. 4.6",
         quantity="Example I: all satellites within a 45 deg half-angle cone about the local vertical",
-        published=True,
-        unit="statement",
         compute=lambda: within_cone("I", physical_radius_ratio(), physical_aircraft_ratio()),
-        tolerance=EXACT,
         expected_status="discrepant",
         note="The stated system (synchronous orbits): satellite 1 is at zenith angle 47.2 deg. Even at the "
         "fitted radius ratio, which is not a reading of the text, it is 45.2 deg, just outside.",
@@ -806,46 +803,35 @@ CLAIMS += [
         oracle_tolerance=EXACT,
         discussed_in=PAGE_GEOMETRY,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec4.6-cone-exII",
         locator="Sec. 4.6",
         quantity="Example II: all satellites within a 45 deg half-angle cone about the local vertical",
-        published=True,
-        unit="statement",
         compute=lambda: within_cone("II", physical_radius_ratio(), physical_aircraft_ratio()),
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="The stated system (synchronous orbits): largest zenith angle 44.0 deg.",
         discussed_in=PAGE_GEOMETRY,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec4.6-triplet-exI",
         locator="Sec. 4.6",
         quantity="Example I: satellites 1, 2, 3 are the most widely spaced triplet",
-        published=True,
-        unit="statement",
         compute=lambda: (
             best_triplet("I", physical_radius_ratio(), IN.spacing_criterion, physical_aircraft_ratio())
             == TRIPLET_123
         ),
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Among all 35 triplets, satellites 1, 2, 3 have the smallest "
         "$\\operatorname{tr}\\{(F_3'F_3)^{-1}\\}$, the largest $|\\det F_3|$ and the largest smallest "
         "pairwise angle.",
         discussed_in=PAGE_GEOMETRY,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec4.6-triplet-exII",
         locator="Sec. 4.6",
         quantity="Example II: satellites 1, 2, 3 are the most widely spaced triplet",
-        published=True,
-        unit="statement",
         compute=lambda: (
             best_triplet("II", physical_radius_ratio(), IN.spacing_criterion, physical_aircraft_ratio())
             == TRIPLET_123
         ),
-        tolerance=EXACT,
         expected_status="discrepant",
         note="Satellites 2, 3, 6 have $\\operatorname{tr}\\{(F_3'F_3)^{-1}\\} = 8.5$ against 13.6 for 1, 2, "
         "3; every measure of spacing prefers another triplet, and so does the fitted radius ratio.",
@@ -854,33 +840,25 @@ CLAIMS += [
         oracle_tolerance=EXACT,
         discussed_in=PAGE_GEOMETRY,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec4.5.4-beta-three-satellites",
         locator="Sec. 4.5.4",
         quantity="$\\beta_0 = 0$ with three satellites (the clock cannot be estimated)",
-        published=True,
-        unit="statement",
         compute=lambda: all(abs(beta_parameter(physical_line_of_sight(ex)[:3])) < 1e-12 for ex in EXAMPLES),
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="True with $\\beta = K - 1'P1$ ($P = I$ for $K = 3$); the printed $K^{-1} 1'1$ would give 1, "
         "not 0.",
         discussed_in=PAGE_GEOMETRY,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec4.1-dilution-range",
         locator="Sec. 4.1",
         quantity="typical constellations have geometric dilutions of one to two orders of magnitude",
-        published=True,
-        unit="statement",
         compute=lambda: all(
             1.0 - prose("orders of magnitude").absolute
             <= math.log10(physical_table_4_2(ex)["dilution"])
             < 2.0 + prose("orders of magnitude").absolute
             for ex in EXAMPLES
         ),
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Read with the prose table ('orders of magnitude': +-0.5 decade): log10 k in [0.5, 2.5). "
         "The two examples of the stated system give k = 5.2 (I) and 16.8 (II); Example I is at the low "
         "end (the fitted radius ratio, not a reading of the text, gives 5.6 and 18.3).",
@@ -1138,122 +1116,97 @@ def satellite_counts_seven_or_eight() -> bool:
     return all(len(table_4_1(ex)) in (7, 8) for ex in ("I", "II"))
 
 
-STATEMENT = EXACT
-
-
-def _s(cid, locator, quantity, compute, note, page, status="reproduced", **kw) -> Claim:
-    return Claim(
-        id=cid,
-        locator=locator,
-        quantity=quantity,
-        published=True,
-        unit="statement",
-        compute=compute,
-        tolerance=STATEMENT,
-        expected_status=status,
-        note=note,
-        discussed_in=page,
-        **kw,
-    )
-
-
 CLAIMS += [
-    _s(
-        "ATC10-sec4.1-rank-condition",
-        "Sec. 4.1",
-        "$k$ finite iff $\\operatorname{rank}(HF) = 3$; $K \\ge 4$ necessary",
-        rank_condition,
-        "Differencing $H$ on the Table 4.1 geometry: $\\operatorname{rank}(HF) = 3$ with all satellites, 2 "
-        "with satellites 1-3.",
-        PAGE_GEOMETRY,
+    Claim.statement(
+        id="ATC10-sec4.1-rank-condition",
+        locator="Sec. 4.1",
+        quantity="$k$ finite iff $\\operatorname{rank}(HF) = 3$; $K \\ge 4$ necessary",
+        compute=rank_condition,
+        note="Differencing $H$ on the Table 4.1 geometry: $\\operatorname{rank}(HF) = 3$ with all "
+        "satellites, 2 with satellites 1-3.",
+        discussed_in=PAGE_GEOMETRY,
     ),
-    _s(
-        "ATC10-sec4.5.1-equivalent",
-        "Sec. 4.5.1",
-        "(4.1.1) = (4.5.6) and (4.1.2) = (4.5.7)",
-        equivalent_forms,
-        "A random differencing H on both examples' physical geometry: covariances agree to $10^{-8}$.",
-        PAGE_GEOMETRY,
+    Claim.statement(
+        id="ATC10-sec4.5.1-equivalent",
+        locator="Sec. 4.5.1",
+        quantity="(4.1.1) = (4.5.6) and (4.1.2) = (4.5.7)",
+        compute=equivalent_forms,
+        note="A random differencing H on both examples' physical geometry: covariances agree to $10^{-8}$.",
+        discussed_in=PAGE_GEOMETRY,
     ),
-    _s(
-        "ATC10-sec4.5.1-finite-iff",
-        "Sec. 4.5.1",
-        "$\\sigma^2_{\\xi_{\\tau 0}}$ finite iff the dilution is finite",
-        finite_iff,
-        "$\\beta > 0$ and $\\operatorname{rank}(HF) = 3$ with all satellites; $\\beta = 0$ and rank 2 with "
-        "three.",
-        PAGE_GEOMETRY,
+    Claim.statement(
+        id="ATC10-sec4.5.1-finite-iff",
+        locator="Sec. 4.5.1",
+        quantity="$\\sigma^2_{\\xi_{\\tau 0}}$ finite iff the dilution is finite",
+        compute=finite_iff,
+        note="$\\beta > 0$ and $\\operatorname{rank}(HF) = 3$ with all satellites; $\\beta = 0$ and rank 2 "
+        "with three.",
+        discussed_in=PAGE_GEOMETRY,
     ),
-    _s(
-        "ATC10-sec4.5.2-beta-rotation",
-        "Sec. 4.5.2, (4.5.25)",
-        "$\\beta$, $\\operatorname{tr}$ and $S$ unchanged by a rotation",
-        beta_rotation_invariant,
-        "A random rotation of both examples' unit vectors.",
-        PAGE_GEOMETRY,
+    Claim.statement(
+        id="ATC10-sec4.5.2-beta-rotation",
+        locator="Sec. 4.5.2, (4.5.25)",
+        quantity="$\\beta$, $\\operatorname{tr}$ and $S$ unchanged by a rotation",
+        compute=beta_rotation_invariant,
+        note="A random rotation of both examples' unit vectors.",
+        discussed_in=PAGE_GEOMETRY,
     ),
-    _s(
-        "ATC10-sec4.6-tr-increases",
-        "Sec. 4.5.4, Sec. 4.6",
-        "$\\operatorname{tr}\\{(F'F)^{-1}\\}$ increases with three satellites",
-        tr_increases,
-        "Physical geometry: 8.64 > 7.19 (I), 13.6 > 3.68 (II).",
-        PAGE_GEOMETRY,
+    Claim.statement(
+        id="ATC10-sec4.6-tr-increases",
+        locator="Sec. 4.5.4, Sec. 4.6",
+        quantity="$\\operatorname{tr}\\{(F'F)^{-1}\\}$ increases with three satellites",
+        compute=tr_increases,
+        note="Physical geometry: 8.64 > 7.19 (I), 13.6 > 3.68 (II).",
+        discussed_in=PAGE_GEOMETRY,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec4.6-s-increases-printed",
         locator="Sec. 4.6, Table 4.2",
         quantity="printed tr and S both larger for satellites 1, 2, 3",
-        published=True,
-        unit="statement",
         compute=s_increases_printed,
-        tolerance=EXACT,
         expected_status="consistent",
         kind="cross-check",
         note="9.39 > 7.84, 5.76 > 1.30 (I); 14.9 > 3.99, 14.3 > 1.16 (II).",
         discussed_in=PAGE_GEOMETRY,
     ),
-    _s(
-        "ATC10-sec4.6-s-increases-invariant",
-        "Sec. 4.5.4, Sec. 4.6",
-        "the invariant $1'(F_3 F_3')^{-1} 1$ exceeds $1'F(F'F)^{-2}F'1$ (all satellites)",
-        s_increases_invariant,
-        "Physical geometry: 1.40 > 1.33 (I), 1.19 > 1.18 (II): an increase, though slight (erratum "
+    Claim.statement(
+        id="ATC10-sec4.6-s-increases-invariant",
+        locator="Sec. 4.5.4, Sec. 4.6",
+        quantity="the invariant $1'(F_3 F_3')^{-1} 1$ exceeds $1'F(F'F)^{-2}F'1$ (all satellites)",
+        compute=s_increases_invariant,
+        note="Physical geometry: 1.40 > 1.33 (I), 1.19 > 1.18 (II): an increase, though slight (erratum "
         "ATC10-E4.1-three-satellite-clock-term).",
-        PAGE_GEOMETRY,
+        discussed_in=PAGE_GEOMETRY,
     ),
-    _s(
-        "ATC10-sec4.6-second-term-dominates-p0",
-        "Sec. 4.6",
-        "$\\beta$ small: $S/\\beta$ dominates $\\mathrm{Var}[\\|\\xi_{p0}\\|]$",
-        second_term_dominates_p0,
-        "Share of $S/\\beta$ in $k^2$: 0.75 (I), 0.988 (II), printed Table 4.2.",
-        PAGE_GEOMETRY,
+    Claim.statement(
+        id="ATC10-sec4.6-second-term-dominates-p0",
+        locator="Sec. 4.6",
+        quantity="$\\beta$ small: $S/\\beta$ dominates $\\mathrm{Var}[\\|\\xi_{p0}\\|]$",
+        compute=second_term_dominates_p0,
+        note="Share of $S/\\beta$ in $k^2$: 0.75 (I), 0.988 (II), printed Table 4.2.",
+        discussed_in=PAGE_GEOMETRY,
     ),
-    _s(
-        "ATC10-sec4.6-dominance-stronger-exII",
-        "Sec. 4.6",
-        "the dominance is particularly true in Example II",
-        dominance_stronger_exII,
-        "0.988 (II) > 0.75 (I).",
-        PAGE_GEOMETRY,
+    Claim.statement(
+        id="ATC10-sec4.6-dominance-stronger-exII",
+        locator="Sec. 4.6",
+        quantity="the dominance is particularly true in Example II",
+        compute=dominance_stronger_exII,
+        note="0.988 (II) > 0.75 (I).",
+        discussed_in=PAGE_GEOMETRY,
     ),
-    _s(
-        "ATC10-sec4.6-k-identity",
-        "Sec. 4.6, geometric dilution k",
-        "$k^2 = \\operatorname{tr} + S/\\beta = \\operatorname{tr} P / \\sigma^2$",
-        k_identity,
-        "Both examples, physical geometry.",
-        PAGE_GEOMETRY,
+    Claim.statement(
+        id="ATC10-sec4.6-k-identity",
+        locator="Sec. 4.6, geometric dilution k",
+        quantity="$k^2 = \\operatorname{tr} + S/\\beta = \\operatorname{tr} P / \\sigma^2$",
+        compute=k_identity,
+        note="Both examples, physical geometry.",
+        discussed_in=PAGE_GEOMETRY,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec4.6-satellite-count",
         locator="Sec. 4.6, Table 4.1",
         quantity="the two examples start with seven or eight satellites",
-        published=True,
-        unit="statement",
         compute=satellite_counts_seven_or_eight,
-        tolerance=EXACT,
         expected_status="consistent",
         kind="cross-check",
         note="Table 4.1 lists 7 (I) and 8 (II) sub-satellite points.",

@@ -11,7 +11,7 @@ import math
 import numpy as np
 from scipy import optimize, special
 
-from navcore.claims import EXACT, Claim, Erratum, printed
+from navcore.claims import Claim, Erratum, printed
 from navcore.claims.core import monte_carlo, prose
 from navcore.claims.inputs import input_cache
 from navcore.detection import jamming as jm
@@ -25,7 +25,6 @@ from navcore.papers.atc10_jamming import (
     IN,
     TABLE_2_1,
     _log_bound,
-    _statement,
     design_p_d,
     geometry,
     level,
@@ -301,74 +300,55 @@ CLAIMS += [
     *[_table21_claim(r, k, p, text, rel) for r, (k, p, text, rel) in enumerate(TABLE_2_1, start=1)],
     _step_claim(1, 10),
     _step_claim(10, 100),
-    Claim(
+    Claim.statement(
         id="ATC10-sec2.8-t0-worst",
         locator="Sec. 2.8",
         quantity="the t = 0 curves need the most jammer power (required ERP decreases as t increases)",
-        published=True,
-        unit="statement",
         compute=_t_zero_needs_most_power,
-        tolerance=EXACT,
-        expected_status="reproduced",
         kind="statement",
         note="t in {0, 0.05, 0.1, 0.2, 0.3}, both bounds, every finite Table 2.1 design point; $p_d$ "
         "re-solved "
         "for each t so that $P_{DL}$ stays fixed.",
         discussed_in=PAGE_K,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec2.8-FL-less-t-sensitive",
         locator="Sec. 2.8",
         quantity="the $N_{FL}$ curves are less sensitive to t than the $N_{ADL}$ curves",
-        published=True,
-        unit="statement",
         compute=_fl_less_sensitive_to_t,
-        tolerance=EXACT,
-        expected_status="reproduced",
         kind="statement",
         note="Spread of the required ERP between $t = 0$ and $t = 0.3$ at (K, $P_{DL}$) = (10, 0.88), (100, "
         "0.88), "
         "(1000, 0.999).",
         discussed_in=PAGE_K,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec2.8-FL-first",
         locator="Sec. 2.8",
         quantity="$N_{FL}$ degrades at less jammer power than $N_{ADL}$",
-        published=True,
-        unit="statement",
         compute=_fl_degrades_first,
-        tolerance=EXACT,
-        expected_status="reproduced",
         kind="statement",
         note="At every finite Table 2.1 design point ($t = 0$) the $N_{FL}$ threshold (99 % of 0.9 $N_T$) "
         "lies below "
         "the $N_{ADL}$ threshold ($0.01 N_T$).",
         discussed_in=PAGE_K,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec2.8-K1000-critical",
         locator="Sec. 2.8",
         quantity="for $K = 1000$ the required power depends critically on $P_{DL}$: unbounded at 0.98, "
         "finite "
         "at 0.999",
-        published=True,
-        unit="statement",
         compute=_k1000_depends_critically,
-        tolerance=EXACT,
-        expected_status="reproduced",
         kind="statement",
         note="The $N_{ADL}$ ceiling at $K = 1000$ reaches 0.01 $N_T$ only for $P_{DL}$ above about 0.9954.",
         discussed_in=PAGE_K,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-fig2.3-2.16-curve-sets",
         locator="Figs. 2.3-2.16",
         quantity="the ($p_d$, t) combinations of the curves in Figs. 2.3-2.16",
-        published=True,
-        unit="statement",
         compute=None,
-        tolerance=EXACT,
         expected_status="not-reproducible",
         kind="statement",
         note="The figures survive only as captions, so the ($p_d$, t) pairs of Figs. 2.3-2.16 are missing "
@@ -430,16 +410,13 @@ def _first_stage_fa_rises_as_t_falls() -> bool:
 
 
 CLAIMS += [
-    Claim(
+    Claim.statement(
         id="ATC10-sec2.8-threshold-every-curve",
         locator="Sec. 2.8, Figs. 2.3-2.16",
         quantity="each of the K > 1 curves exhibits a strong thresholding property (falls within the "
         "width read as 'strong')",
-        published=True,
-        unit="statement",
         kind="statement",
         compute=lambda: _threshold_behaviour(False),
-        tolerance=EXACT,
         expected_status="consistent",
         note="$t = 0$, every finite Table 2.1 design. Measured from a tenth of the ceiling, every curve "
         "falls to $10^{-6}$ of it within 7.6 dB; measured from 90 % of it, the $N_{FL}$ curves take 1.5-2 "
@@ -449,47 +426,44 @@ CLAIMS += [
         "is ill-conditioned. 'Strong thresholding' names no level, so the paper is not accused.",
         discussed_in=PAGE_K,
     ),
-    _statement(
-        "ATC10-sec2.6-monotone-in-J",
-        "Secs. 2.3, 2.6 and 2.8",
-        "$N_{FL}$ and $N_{ADL}$ never decrease as $J/(P_0 B \\tau)$ grows, so any interference left out can "
-        "only "
-        "raise them",
-        _monotone_in_jammer,
-        "Both log bounds on a 0.25 dB grid from -40 to +100 dB at $K = 1$ ($P_{DL}$ 0.9, 0.999) and every "
-        "finite "
-        "Table 2.1 design, $t = 0$ and 0.1. More interference raises the noise at the filter output, which "
-        "acts as a larger J.",
-        PAGE_K,
+    Claim.statement(
+        id="ATC10-sec2.6-monotone-in-J",
+        locator="Secs. 2.3, 2.6 and 2.8",
+        quantity="$N_{FL}$ and $N_{ADL}$ never decrease as $J/(P_0 B \\tau)$ grows, so any interference "
+        "left out can only raise them",
+        compute=_monotone_in_jammer,
+        note="Both log bounds on a 0.25 dB grid from -40 to +100 dB at $K = 1$ ($P_{DL}$ 0.9, 0.999) and "
+        "every finite Table 2.1 design, $t = 0$ and 0.1. More interference raises the noise at the filter "
+        "output, which acts as a larger J.",
+        discussed_in=PAGE_K,
     ),
-    _statement(
-        "ATC10-sec2.8-pd-rises-with-t",
-        "Sec. 2.8",
-        "a required $P_{DL}$ is met by a family of (t, $p_d$) pairs, and as t decreases $p_d$ must decrease",
-        _pd_rises_with_t,
-        "Design $p_d$ solving (2.4.2) = $P_{DL}$ for t in {0, 0.05, 0.1, 0.2, 0.3} at every finite Table 2.1 "
-        "design: strictly increasing in t.",
-        PAGE_K,
+    Claim.statement(
+        id="ATC10-sec2.8-pd-rises-with-t",
+        locator="Sec. 2.8",
+        quantity="a required $P_{DL}$ is met by a family of (t, $p_d$) pairs, and as t decreases $p_d$ must "
+        "decrease",
+        compute=_pd_rises_with_t,
+        note="Design $p_d$ solving (2.4.2) = $P_{DL}$ for t in {0, 0.05, 0.1, 0.2, 0.3} at every finite "
+        "Table 2.1 design: strictly increasing in t.",
+        discussed_in=PAGE_K,
     ),
-    _statement(
-        "ATC10-sec2.8-adl-falls-with-t",
-        "Sec. 2.8",
-        "at fixed $J/(P_0 B \\tau)$, a lower $t$ (so a lower $p_d$) lowers $p_f$ and $N_{ADL}$",
-        _adl_and_pf_fall_as_t_falls,
-        "At the $t = 0$ threshold x of each finite Table 2.1 design, $p_f$ and ln $N_{ADL}$ over t in {0, "
-        "0.05, "
-        "0.1, 0.2, 0.3}: both strictly increasing in t.",
-        PAGE_K,
+    Claim.statement(
+        id="ATC10-sec2.8-adl-falls-with-t",
+        locator="Sec. 2.8",
+        quantity="at fixed $J/(P_0 B \\tau)$, a lower $t$ (so a lower $p_d$) lowers $p_f$ and $N_{ADL}$",
+        compute=_adl_and_pf_fall_as_t_falls,
+        note="At the $t = 0$ threshold x of each finite Table 2.1 design, $p_f$ and ln $N_{ADL}$ over t in "
+        "{0, 0.05, 0.1, 0.2, 0.3}: both strictly increasing in t.",
+        discussed_in=PAGE_K,
     ),
-    _statement(
-        "ATC10-sec2.8-first-stage-fa-rises",
-        "Sec. 2.8",
-        "as t decreases the first-stage (aircraft) false alarm probability increases",
-        _first_stage_fa_rises_as_t_falls,
-        "The $P_F$ bound $F(p_f)^{Kt+1}$ of (B.11) at fixed $p_f$ (each finite Table 2.1 threshold), over "
-        "the "
-        "t grid: larger for smaller t, since F < 1.",
-        PAGE_K,
+    Claim.statement(
+        id="ATC10-sec2.8-first-stage-fa-rises",
+        locator="Sec. 2.8",
+        quantity="as t decreases the first-stage (aircraft) false alarm probability increases",
+        compute=_first_stage_fa_rises_as_t_falls,
+        note="The $P_F$ bound $F(p_f)^{Kt+1}$ of (B.11) at fixed $p_f$ (each finite Table 2.1 threshold), "
+        "over the t grid: larger for smaller t, since F < 1.",
+        discussed_in=PAGE_K,
     ),
 ]
 

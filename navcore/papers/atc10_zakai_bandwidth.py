@@ -24,9 +24,7 @@ from navcore.papers.atc10_multiple_access import (
     IN,
     MA,
     PAGE_ZAKAI,
-    STATEMENT,
     Z_,
-    _s,
     psk_physical_samples,
 )
 from navcore.papers.atc10_quotes import quoted
@@ -129,14 +127,11 @@ CLAIMS += [
         "is lost: the sidelobe model is the book's reconstruction.",
         discussed_in=PAGE_ZAKAI,
     ),
-    Claim(
+    Claim.statement(
         id="ATC10-sec3.9-W-bracket",
         locator="Sec. 3.9, the bracketed Zakai bandwidth",
         quantity="the printed W equals the exact Zakai bandwidth of the idealised autocorrelation",
-        published=True,
-        unit="statement",
         compute=paper_bracket_reproduced,
-        tolerance=STATEMENT,
         expected_status="not-reproducible",
         note="Fig. 3.11 is lost; the sidelobe model (alternating $\\pm 1/L$ over $L+1$ lags) is the book's "
         "reconstruction and gives the printed bracket exactly. Sidelobes confined to $|t| < \\tau$ (the "
@@ -220,31 +215,31 @@ def thm33_printed_oracle() -> bool:
 
 
 CLAIMS += [
-    _s(
-        "ATC10-sec3.9-peak-sir",
-        "Sec. 3.9, last line",
-        "peak SIR = $3 \\alpha (1/\\tau_c)/N$",
-        peak_sir_identity,
-        "Reciprocal of (3.9.2) with $W = 3/(4 \\tau_c)$: 300 (24.8 dB) at $N = 10^{5}$, $\\alpha = 1$ s, "
-        "$\\tau_c$ = 0.1 µs.",
-        Z_,
+    Claim.statement(
+        id="ATC10-sec3.9-peak-sir",
+        locator="Sec. 3.9, last line",
+        quantity="peak SIR = $3 \\alpha (1/\\tau_c)/N$",
+        compute=peak_sir_identity,
+        note="Reciprocal of (3.9.2) with $W = 3/(4 \\tau_c)$: 300 (24.8 dB) at $N = 10^{5}$, $\\alpha = 1$ "
+        "s, $\\tau_c$ = 0.1 µs.",
+        discussed_in=Z_,
     ),
-    _s(
-        "ATC10-thm3.3-bound",
-        "Theorem 3.3, (F.7)-(F.8)",
-        "$E(n^2) \\le \\sum 1/(4 \\alpha \\sqrt{W_i W_j})$",
-        thm33_bound,
-        "Cauchy-Schwarz on random codes.",
-        Z_,
+    Claim.statement(
+        id="ATC10-thm3.3-bound",
+        locator="Theorem 3.3, (F.7)-(F.8)",
+        quantity="$E(n^2) \\le \\sum 1/(4 \\alpha \\sqrt{W_i W_j})$",
+        compute=thm33_bound,
+        note="Cauchy-Schwarz on random codes.",
+        discussed_in=Z_,
     ),
-    _s(
-        "ATC10-thm3.3-printed",
-        "Theorem 3.3 and (F.8) as printed",
-        "the printed bound $1/(4 \\alpha \\sqrt{W_j} W_j)$ is unit-free like $E(n^2)$",
-        thm33_printed_unit_free,
-        "printed/true = $W^{-1/2}$ changes with the time unit.",
-        Z_,
-        status="discrepant",
+    Claim.statement(
+        id="ATC10-thm3.3-printed",
+        locator="Theorem 3.3 and (F.8) as printed",
+        quantity="the printed bound $1/(4 \\alpha \\sqrt{W_j} W_j)$ is unit-free like $E(n^2)$",
+        compute=thm33_printed_unit_free,
+        note="printed/true = $W^{-1/2}$ changes with the time unit.",
+        discussed_in=Z_,
+        expected_status="discrepant",
         erratum="ATC10-E3-6",
         oracle=thm33_printed_oracle,
         oracle_tolerance=EXACT,
