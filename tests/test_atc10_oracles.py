@@ -13,6 +13,7 @@ from navcore.location.clock_model import clock_covariance
 from navcore.location.clock_tracking import gain_recursion
 from navcore.papers import atc10_clock_tracking as clock
 from navcore.papers import atc10_tracking_geometry as geometry
+from navcore.papers import atc10_tracking_procedures as procedures
 from navcore.papers import kzl_tightly_coupled_filter as kzl
 
 
@@ -22,11 +23,11 @@ def test_convergence_rule_oracle_counts_the_library_recursion_steps() -> None:
     ratio alone would not tell: it is the case of no step, whatever the other counts), and the
     worst ratio of the printed 2.3/psi estimate to the count is the same number. Oracle: the library's
     count (``convergence_rule_terms``), an independent implementation."""
-    terms = clock.convergence_rule_terms()
-    assert [act - 1 for act, _ in terms] == clock._oracle_convergence_counts()
+    terms = procedures.convergence_rule_terms()
+    assert [act - 1 for act, _ in terms] == procedures._oracle_convergence_counts()
     ratios = [est / act for act, est in terms]
     worst = max(ratios, key=lambda r: abs(math.log(r)))
-    assert clock._oracle_convergence_rule_worst_ratio() == pytest.approx(worst, rel=1e-12)
+    assert procedures._oracle_convergence_rule_worst_ratio() == pytest.approx(worst, rel=1e-12)
 
 
 def _exact_tail_rms(weights: np.ndarray, C: np.ndarray, r: float, tail: slice) -> float:

@@ -32,8 +32,8 @@ READING_ORDER = (
     "sp_missions_scenarios",
     "sp_quotes",
     # ATC-10: Ch. 1 (Table 1.1), Ch. 2 (Secs. 2.1-2.5, 2.7, 2.6-2.8 lists), App. A-D; Ch. 3
-    # (Secs. 3.1-3.4 with App. E, 3.5-3.7, 3.8, 3.9 with App. F); Ch. 4 (Secs. 4.1-4.4, 4.5,
-    # 4.6-4.7) and App. G-H
+    # (Secs. 3.1-3.4 with App. E, 3.5-3.7, 3.8, 3.9 with App. F); Ch. 4 (Secs. 4.1-4.2, 4.3-4.5.2,
+    # 4.5.3-4.5.4, 4.6 with Tables 4.1-4.2, 4.6 with Table 4.3 and 4.7) and App. G-H
     "atc10_system_tables",
     "atc10_jamming",
     "atc10_single_pulse",
@@ -45,6 +45,8 @@ READING_ORDER = (
     "atc10_zakai_bandwidth",
     "atc10_tracking_geometry",
     "atc10_clock_tracking",
+    "atc10_tracking_procedures",
+    "atc10_example_constellations",
     "atc10_tracking_examples",
     "atc10_tracking_appendices",
     "atc10_quotes",

@@ -25,9 +25,9 @@ from navcore.location.clock_tracking import (
     three_satellite_clock_variance_steady,
 )
 from navcore.papers.atc10_clock_tracking import _cases, sigma0_values, table_4_3_row
+from navcore.papers.atc10_example_constellations import _E1, _e1_claims
 from navcore.papers.atc10_quotes import quoted
 from navcore.papers.atc10_tracking_geometry import (
-    _E1,
     COLUMNS,
     EXAMPLES,
     IN,
@@ -35,7 +35,6 @@ from navcore.papers.atc10_tracking_geometry import (
     TABLE_4_2,
     TABLE_4_3,
     TR,
-    _e1_claims,
     _example_row,
     _physical_oracle_invariants,
     physical_table_4_2,
