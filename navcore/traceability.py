@@ -73,6 +73,10 @@ _LABELLED = {
     "Appendix": re.compile(r"\b(?:Appendi(?:x|ces)|App\.)\s+([A-H])\b"),
     "Theorem": re.compile(r"\bTheorem\s+(\d+(?:\.\d+)*)"),
     "Remark": re.compile(r"\bRemark\s+\(?([ivx]+)\)"),
+    # a numbered rule as the paper prints it, "(1)" in a list of rules (ATC-10 Sec. 4.6's rules of thumb)
+    "Rule": re.compile(r"\b[Rr]ules?\s+\((\d+)\)((?:\s*(?:,|-|–|and)\s*\(\d+\))*)"),
+    # a worked example numbered in roman numerals (ATC-10 Sec. 4.6's Examples I and II)
+    "Example": re.compile(r"\bExamples?\s+(I{1,3})\b((?:\s*(?:,|and)\s*I{1,3}\b)*)"),
 }
 
 
@@ -158,7 +162,8 @@ def items_in_text(text: str, *, dotted: bool = False) -> set[str]:
     set of str
         Equation numbers (``"13"``, ``"2.4.2"``; an integer range such as "Eqs. (13)-(15)"
         is filled in) and labelled items (``"Table 2.6"``, ``"Fig. 2.1"``, ``"Sec. 2.5"``,
-        ``"Appendix C"``, ``"Theorem 1"``, ``"Remark ii"``).
+        ``"Appendix C"``, ``"Theorem 1"``, ``"Remark ii"``, ``"Rule 1"`` for a printed rule "(1)",
+        ``"Example II"``).
 
     Examples
     --------
@@ -175,7 +180,8 @@ def items_in_text(text: str, *, dotted: bool = False) -> set[str]:
     for kind, rx in _LABELLED.items():
         for m in rx.finditer(text):
             rest = m.group(2) if rx.groups > 1 else ""
-            for number in _expand(m.group(1), rest or ""):
+            numbers = [m.group(1), *re.findall(r"I{1,3}", rest or "")] if kind == "Example" else None
+            for number in numbers or _expand(m.group(1), rest or ""):
                 found.add(f"{kind} {number}")
     return found
 
@@ -261,8 +267,8 @@ def paper_items_from_text(paper: str) -> frozenset[str] | None:
     -------
     frozenset of str or None
         The items named in the text (:func:`items_in_text` with ``dotted``), the equation
-        tags, the section and appendix headings and the remarks; ``None`` when the text is
-        absent.
+        tags, the section and appendix headings, the remarks and the numbered rules; ``None``
+        when the text is absent.
 
     Examples
     --------
@@ -289,6 +295,8 @@ def paper_items_from_text(paper: str) -> frozenset[str] | None:
     items.update(f"Sec. {m}" for m in re.findall(r"(?m)^(?:#+\s*)?([IV]+(?:\.[A-D])?)\.?\s+[A-Z]", text))
     for block in re.findall(r"Remarks?:(.{0,3000})", text, flags=re.S):  # "Remarks: (i) ... (ii) ..."
         items.update(f"Remark {m}" for m in re.findall(r"\(([ivx]+)\)", block))
+    for block in re.findall(r"rules of thumb:(.{0,3000})", text, flags=re.S):  # "rules of thumb: - (1) ..."
+        items.update(f"Rule {m}" for m in re.findall(r"(?m)^-?\s*\((\d+)\)\s", block))
     appendix = re.compile(r"(?m)^(?:#+\s*)?APPENDIX\s+([A-H])\b", flags=re.I)
     items.update(f"Appendix {m}" for m in appendix.findall(text))
     return frozenset(items)

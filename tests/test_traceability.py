@@ -86,6 +86,10 @@ def test_ocr_lost_items_are_really_absent():
         ("(A.15)-(A.18)", {"A.15", "A.16", "A.17", "A.18"}),
         ("Table 2.6 and Fig. 2.1, Sec. 2.5, Appendix C", {"Table 2.6", "Fig. 2.1", "Sec. 2.5", "Appendix C"}),
         ("Eq. (13)", {"13"}),
+        ("Sec. 4.6, rule (1)", {"Sec. 4.6", "Rule 1"}),
+        ("Sec. 4.6 rules (3)-(4)", {"Sec. 4.6", "Rule 3", "Rule 4"}),
+        ("Sec. 4.6, Example II", {"Sec. 4.6", "Example II"}),
+        ("Examples I and II of Table 4.3", {"Example I", "Example II", "Table 4.3"}),
     ],
 )
 def test_items_in_text(text, items):

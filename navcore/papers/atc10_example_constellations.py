@@ -217,7 +217,7 @@ for _ex in EXAMPLES:
 CLAIMS += [
     Claim.statement(
         id="ATC10-sec4.6-cone-exI",
-        locator="Sec. 4.6",
+        locator="Sec. 4.6, Example I",
         quantity="Example I: all satellites within a 45 deg half-angle cone about the local vertical",
         compute=lambda: within_cone("I", physical_radius_ratio(), physical_aircraft_ratio()),
         expected_status="discrepant",
@@ -230,7 +230,7 @@ CLAIMS += [
     ),
     Claim.statement(
         id="ATC10-sec4.6-cone-exII",
-        locator="Sec. 4.6",
+        locator="Sec. 4.6, Example II",
         quantity="Example II: all satellites within a 45 deg half-angle cone about the local vertical",
         compute=lambda: within_cone("II", physical_radius_ratio(), physical_aircraft_ratio()),
         note="The stated system (synchronous orbits): largest zenith angle 44.0 deg.",
@@ -238,7 +238,7 @@ CLAIMS += [
     ),
     Claim.statement(
         id="ATC10-sec4.6-triplet-exI",
-        locator="Sec. 4.6",
+        locator="Sec. 4.6, Example I",
         quantity="Example I: satellites 1, 2, 3 are the most widely spaced triplet",
         compute=lambda: (
             best_triplet("I", physical_radius_ratio(), IN.spacing_criterion, physical_aircraft_ratio())
@@ -251,7 +251,7 @@ CLAIMS += [
     ),
     Claim.statement(
         id="ATC10-sec4.6-triplet-exII",
-        locator="Sec. 4.6",
+        locator="Sec. 4.6, Example II",
         quantity="Example II: satellites 1, 2, 3 are the most widely spaced triplet",
         compute=lambda: (
             best_triplet("II", physical_radius_ratio(), IN.spacing_criterion, physical_aircraft_ratio())
