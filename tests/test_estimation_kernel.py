@@ -137,6 +137,67 @@ def test_discretize_unchecked_diagonal_noise_is_the_product_with_diag_exactly():
         np.testing.assert_array_equal(diag[0], full[0])
 
 
+def _sparse_stack(rng, M, B, n):
+    """A stack of dense dynamics (|F| dt about 0.3, not nilpotent) with zero rows: states 6-8
+    static in every member, state 5 static in member 0 only; diagonal noises leaving states 0,
+    2, 6 and 7 undriven (6 and 7 random constants, 8 a random walk)."""
+    F = rng.standard_normal((M, 1, n, n)) * 0.1
+    F[..., 6:, :] = 0.0
+    F[0, :, 5, :] = 0.0
+    q = rng.uniform(0.5, 2.0, (M, B, n))
+    q[..., [0, 2, 6, 7]] = 0.0
+    return F, q
+
+
+@pytest.mark.parametrize("order", [4, 12])
+def test_discretize_unchecked_sparse_series_equals_the_dense_series(order):
+    """Oracle: the dense series, ``discretize(F, diag(q), dt, method="series")`` per model and
+    noise (``order`` 4), and ``discretize_unchecked`` without ``sparse`` (any ``order``). The
+    row-sparse form sums the same terms in another order: equal to round-off, and exactly in
+    the unit rows of the static states, the zero rows and columns of the random constants and
+    the transition of a stack with no zero row (the same Horner steps, plus zero)."""
+    rng = np.random.default_rng(29)
+    M, B, n, dt = 4, 3, 9, 1.5
+    F, q = _sparse_stack(rng, M, B, n)
+    Phi, Qd = discretize_unchecked(F, q, dt, method="series", diagonal=True, sparse=True, order=order)
+    assert Phi.shape == (M, 1, n, n) and Qd.shape == (M, B, n, n)
+    Phi_d, Qd_d = discretize_unchecked(F, q, dt, method="series", diagonal=True, order=order)
+    np.testing.assert_allclose(Phi, Phi_d, rtol=1e-12, atol=1e-15)
+    np.testing.assert_allclose(Qd, Qd_d, rtol=1e-12, atol=1e-15 * np.abs(Qd_d).max())
+    for m in range(M):
+        for b in range(B):
+            if order == 4:
+                Phi_1, Qd_1 = discretize(F[m, 0], np.diag(q[m, b]), dt, method="series")
+                np.testing.assert_allclose(Phi[m, 0], Phi_1, rtol=1e-12, atol=1e-15)
+                np.testing.assert_allclose(Qd[m, b], Qd_1, rtol=1e-12, atol=1e-15 * np.abs(Qd_1).max())
+            np.testing.assert_array_equal(Qd[m, b], Qd[m, b].T)
+    # exactly: the static states' unit rows, the random constants' zero rows and columns
+    np.testing.assert_array_equal(Phi[..., 6:, :], np.broadcast_to(np.eye(n)[6:], (M, 1, 3, n)))
+    np.testing.assert_array_equal(Phi[..., 6:, :], Phi_d[..., 6:, :])
+    np.testing.assert_array_equal(Phi[0, 0, 5], np.eye(n)[5])
+    assert not Qd[..., [6, 7], :].any() and not Qd[..., :, [6, 7]].any()
+    assert not Qd_d[..., [6, 7], :].any() and not Qd_d[..., :, [6, 7]].any()
+    assert (Qd[..., 8, 8] > 0.0).all()  # the random walk
+    # exactly: a stack with no zero row transforms every row, by the dense Horner steps
+    F_full = rng.standard_normal((M, 1, n, n)) * 0.1
+    full = discretize_unchecked(F_full, q, dt, method="series", diagonal=True, sparse=True, order=order)
+    np.testing.assert_array_equal(
+        full[0], discretize_unchecked(F_full, q, dt, method="series", diagonal=True, order=order)[0]
+    )
+    # no driven state: no noise
+    none = discretize_unchecked(F, np.zeros_like(q), dt, method="series", diagonal=True, sparse=True)[1]
+    assert none.shape == (M, B, n, n) and not none.any()
+
+
+def test_discretize_unchecked_sparse_is_the_series_with_diagonal_noise_only():
+    with pytest.raises(ValueError, match="sparse"):
+        discretize_unchecked(
+            np.zeros((2, 2)), np.ones(2), 1.0, method="nilpotent", diagonal=True, sparse=True
+        )
+    with pytest.raises(ValueError, match="sparse"):
+        discretize_unchecked(np.zeros((2, 2)), np.eye(2), 1.0, method="series", sparse=True)
+
+
 def test_discretize_rejects_an_unknown_method_and_a_bad_noise():
     with pytest.raises(ValueError, match="method"):
         discretize(np.zeros((2, 2)), np.eye(2), 1.0, method="euler")

@@ -27,7 +27,10 @@ For :math:`\dot x = F x + G w` with white noise of PSD :math:`Q_c`, the transiti
     The transition :math:`\sum_{j \le 4} (F\Delta t)^j / j!` (:func:`taylor_transition`) and the
     noise integral by three-node Gauss-Legendre quadrature over that series: exact to
     :math:`(\|F\| \Delta t)^6` relative, the discretisation of the covariance engine, which
-    relinearises often.
+    relinearises often. For a stack of models whose random constants leave rows of ``F`` zero
+    and a batch of diagonal noises, ``discretize_unchecked(..., diagonal=True, sparse=True)``
+    computes the same series and quadrature on the rows that move and the columns that are
+    driven only (the covariance engine's path, :mod:`navcore.integration.engine`).
 
 :func:`first_order_transition` and :func:`taylor_transition` give the transition alone.
 
@@ -144,6 +147,8 @@ def discretize_unchecked(
     *,
     method: Literal["van_loan", "nilpotent", "series"] = "van_loan",
     diagonal: bool = False,
+    sparse: bool = False,
+    order: int = 4,
 ) -> tuple[Array, Array]:
     """:func:`discretize` without the argument checks, for a loop over float arrays checked once.
 
@@ -160,11 +165,27 @@ def discretize_unchecked(
     diagonal : bool, default False
         ``GQGt`` holds diagonals: ``Phi S`` is formed as ``Phi * q``, the same numbers as the
         product with ``diag(q)`` at a fraction of its cost (``"nilpotent"`` and ``"series"``).
+    sparse : bool, default False
+        With ``method="series"`` and ``diagonal`` only: transform only the rows of ``F`` that
+        are not zero in some member of the stack (a zero row, a random constant's, is a unit
+        row of ``Phi``) and, for the noise, only the driven columns of ``Phi(s)``, the three
+        nodes' products summed as one product over their stacked columns. The same series and
+        quadrature, summed in another order: equal to the dense form to round-off, and
+        exactly where both are exact (the unit rows, the zeros of undriven states).
+    order : int, default 4
+        With ``method="series"``: the highest power of the transition series (of the
+        transition and of the quadrature's nodes).
 
     Returns
     -------
     Phi, Qd : ndarray
-        As :func:`discretize`.
+        As :func:`discretize`: ``Phi`` has the shape of ``F``, ``Qd`` the broadcast shape of
+        ``F`` and ``GQGt``.
+
+    Raises
+    ------
+    ValueError
+        If ``sparse`` is asked for another method than ``"series"`` or without ``diagonal``.
 
     Examples
     --------
@@ -174,7 +195,23 @@ def discretize_unchecked(
     >>> diag = discretize_unchecked(F, np.array([0.0, 2.0]), 0.5, method="nilpotent", diagonal=True)[1]
     >>> bool((diag == full).all())
     True
+
+    A stack of two models ``(2, 1, n, n)``, each driven by three diagonal noises ``(2, 3, n)``,
+    in the row-sparse form (the last state a random constant, the first undriven):
+
+    >>> F = np.zeros((2, 1, 3, 3)); F[:, 0, 0, 1] = 1.0; F[1, 0, 1, 0] = -0.1
+    >>> q = np.zeros((2, 3, 3)); q[:, :, 1] = [1.0, 2.0, 3.0]
+    >>> Phi, Qd = discretize_unchecked(F, q, 0.5, method="series", diagonal=True, sparse=True)
+    >>> Phi.shape, Qd.shape
+    ((2, 1, 3, 3), (2, 3, 3, 3))
+    >>> dense = discretize_unchecked(F, q, 0.5, method="series", diagonal=True)[1]
+    >>> bool(np.allclose(Qd, dense, rtol=1e-14, atol=0.0))
+    True
     """
+    if sparse:
+        if method != "series" or not diagonal:
+            raise ValueError("sparse applies to method='series' with diagonal noise")
+        return _series_sparse(F, GQGt, dt, order)
     S = GQGt
     if diagonal:
         if method == "van_loan":
@@ -185,7 +222,7 @@ def discretize_unchecked(
         return _van_loan(F, S, dt)
     if method == "nilpotent":
         return _nilpotent(F, S, dt, diagonal)
-    return _taylor(F, dt), _series_noise(F, S, dt, diagonal)
+    return _taylor(F, dt, order), _series_noise(F, S, dt, diagonal, order)
 
 
 def _van_loan(F: Array, S: Array, dt: float) -> tuple[Array, Array]:
@@ -219,15 +256,80 @@ def _nilpotent(F: Array, S: Array, dt: float, diagonal: bool) -> tuple[Array, Ar
     return phi(dt), symmetrize_unchecked(Qd)
 
 
-def _series_noise(F: Array, S: Array, dt: float, diagonal: bool = False) -> Array:
-    """The three-node quadrature of the noise integral over the order-4 series (batched)."""
+def _series_noise(F: Array, S: Array, dt: float, diagonal: bool = False, order: int = 4) -> Array:
+    """The three-node quadrature of the noise integral over the series of ``order`` (batched)."""
     x, w = _GAUSS3
     Q: Array | float = 0.0
     for xi, wi in zip(x, w, strict=True):
-        P = _taylor(F, 0.5 * dt * (xi + 1.0))
+        P = _taylor(F, 0.5 * dt * (xi + 1.0), order)
         Q = Q + (0.5 * dt * wi) * ((P * S if diagonal else P @ S) @ np.swapaxes(P, -1, -2))
     Q = np.asarray(Q)
     return 0.5 * (Q + np.swapaxes(Q, -1, -2))
+
+
+def _series_sparse(F: Array, q: Array, dt: float, order: int) -> tuple[Array, Array]:
+    """The series method for diagonal noises ``q`` ``(..., n)``, computed on the rows of ``F``
+    that are not zero in some member of the stack (``sparse`` of :func:`discretize_unchecked`):
+    ``Phi`` of the shape of ``F``, ``Qd`` of the broadcast shape of ``F`` and ``q``."""
+    n = F.shape[-1]
+    dyn = np.flatnonzero(np.any(F.reshape(-1, n, n) != 0.0, axis=(0, 2)))
+    Phi = np.zeros(F.shape)
+    Phi[..., np.arange(n), np.arange(n)] = 1.0
+    Phi[..., dyn, :] = _series_rows(F, dt, dyn, order)
+    return Phi, _series_noise_sparse(F, q, dt, dyn, order)
+
+
+def _series_rows(F: Array, dt: float, dyn: NDArray[np.intp], order: int) -> Array:
+    """The rows ``dyn`` of :func:`_taylor` of a stack ``(..., n, n)`` whose other rows are zero
+    in every member (a zero row of ``F``, a random constant's, is a unit row of ``Phi``):
+    ``(..., d, n)``.
+
+    With ``F = [[a, b], [0, 0]]`` (dynamic rows first) the Horner step
+    ``Phi <- I + F dt Phi / j`` keeps ``Phi = [[x, y], [0, I]]`` and updates
+    ``[x, y] <- [I, 0] + (a dt [x, y] + [0, b dt]) / j``.
+    """
+    n = F.shape[-1]
+    A = F[..., dyn, :] * dt  # (..., d, n)
+    A_dd = A[..., :, dyn]
+    A_ds = A.copy()
+    A_ds[..., :, dyn] = 0.0  # the columns of the static states
+    rows = np.eye(n)[dyn]
+    X = rows
+    for j in range(order, 0, -1):
+        X = rows + (A_dd @ X + A_ds) / j
+    return X
+
+
+def _series_noise_sparse(F: Array, q: Array, dt: float, dyn: NDArray[np.intp], order: int) -> Array:
+    """:func:`_series_noise` of the systems ``F`` ``(..., n, n)`` driven by the diagonal PSDs
+    ``diag(q)`` (``q``: ``(..., n)``), computed where it can differ from zero, given the rows
+    ``dyn`` of ``F`` that are not zero in some member.
+
+    ``P S = P * q`` for a diagonal ``S``, exactly; ``Phi(s) S Phi(s)^T`` reads only the driven
+    columns of ``Phi(s)``, which are zero outside the dynamic rows and the driven states' own
+    unit entries; the three nodes' products are one product over their stacked columns.
+    """
+    x, w = _GAUSS3
+    n = F.shape[-1]
+    Q = np.zeros((*np.broadcast_shapes(F.shape[:-2], q.shape[:-1]), n, n))
+    driven = np.flatnonzero(np.any(q.reshape(-1, n) != 0.0, axis=0))  # only these columns of S are not 0
+    if driven.size == 0:
+        return Q
+    rows = np.union1d(dyn, driven)  # the rows of Phi(s)[..., driven] that can be non-zero
+    at_dyn = np.searchsorted(rows, dyn)
+    static_driven = np.setdiff1d(driven, dyn)
+    cols, parts = [], []
+    for xi, wi in zip(x, w, strict=True):
+        part = np.zeros((*F.shape[:-2], rows.size, driven.size))
+        part[..., at_dyn, :] = _series_rows(F, 0.5 * dt * (xi + 1.0), dyn, order)[..., driven]
+        # a driven random constant or random walk keeps its unit row
+        part[..., np.searchsorted(rows, static_driven), np.searchsorted(driven, static_driven)] = 1.0
+        parts.append(part)
+        cols.append((0.5 * dt * wi) * q[..., None, driven])
+    P = np.concatenate(parts, axis=-1)  # (..., r, 3 d)
+    Qr = (P * np.concatenate(cols, axis=-1)) @ np.swapaxes(P, -1, -2)  # (..., r, r)
+    Q[..., rows[:, None], rows] = 0.5 * (Qr + np.swapaxes(Qr, -1, -2))
+    return Q
 
 
 def first_order_transition(F: ArrayLike, dt: float) -> NDArray[np.float64]:
