@@ -461,12 +461,13 @@ def _all_sources(scale=1.0):
 @pytest.mark.parametrize("vertical_channel", [True, False])
 def test_batched_kernels_equal_the_checked_functions_per_condition(vertical_channel):
     """Oracle: the public, per-condition error_dynamics, process_noise_psd, taylor_transition and
-    discretize (method "series"); the engine's batched, unchecked kernels give the same matrices for each of a
+    discretize (method "series"); the engine's batched, unchecked kernels (the row-sparse series of
+    discretize_unchecked) give the same matrices for each of a
     stack of random flight conditions (every block of the model present)."""
     from scipy.spatial.transform import Rotation
 
+    from navcore.estimation.discretize import discretize_unchecked
     from navcore.inertial.error_dynamics import _error_dynamics_stack, _process_noise_diag_stack
-    from navcore.integration.engine import _discrete_noise_diag, _taylor_stack
 
     rng = np.random.default_rng(7)
     lay = _all_blocks_layout()
@@ -483,7 +484,8 @@ def test_batched_kernels_equal_the_checked_functions_per_condition(vertical_chan
     )  # fmt: skip
     q = np.stack([_process_noise_diag_stack(lay, s, speed) for s in srcs], axis=1)
     dt = 1.0
-    Phi, Q = _taylor_stack(F, dt), _discrete_noise_diag(F, q, dt)
+    Phi, Q = discretize_unchecked(F[:, None], q, dt, method="series", diagonal=True, sparse=True)
+    Phi = Phi[:, 0]
     for m in range(M):
         F1 = error_dynamics(
             lay, f_ned=f[m], C_bn=C[m], omega_ib_b=w[m], v_ned=v[m], lat=float(lat[m]), h=float(h[m]),

@@ -32,9 +32,10 @@ the filter's rows of the truth. The circular error probable of a horizontal cova
 Discretisation: :math:`\Phi = \sum_{j\le 4} (F\Delta t)^j/j!` (exact for the
 nilpotent chains gyro bias -> attitude -> velocity -> position) and
 :math:`Q = \int_0^{\Delta t}\Phi(s)\,GQG^T\Phi(s)^T ds` by Gauss-Legendre quadrature
-(:func:`navcore.estimation.discretize.discretize` with ``method="series"``, here in a form
-specialised to diagonal noise and the rows that move), relinearised whenever the flight
-condition changes (1-s and 10-s steps are far below the 84-min Schuler period).
+(:func:`navcore.estimation.discretize.discretize` with ``method="series"``, in its row-sparse
+form for diagonal noise and the rows that move, ``discretize_unchecked(..., sparse=True)``: the
+engine holds no series or quadrature of its own), relinearised whenever the flight condition
+changes (1-s and 10-s steps are far below the 84-min Schuler period).
 
 References
 ----------
@@ -66,6 +67,7 @@ from navcore._validate import (
     require_positive,
     require_symmetric_psd,
 )
+from navcore.estimation.discretize import discretize_unchecked
 from navcore.estimation.kalman import joseph_rows_unchecked
 from navcore.estimation.layout import StateLayout
 from navcore.inertial.error_dynamics import (
@@ -362,8 +364,11 @@ def run_covariance_analysis(
             # holds the filter's states as the block rows_f, in the filter's working order)
             F = F[:, order_t[:, None], order_t]
             q = q[:, :, order_t]
-        Phi = _taylor_stack(F, dt)
-        Q = _discrete_noise_diag(F, q, dt)  # (M, B, n_t, n_t)
+        # the series discretisation in its row-sparse form: Phi (M, 1, n_t, n_t), Q (M, B, n_t, n_t)
+        Phi, Q = discretize_unchecked(
+            F[:, None], q, dt, method="series", diagonal=True, sparse=True, order=_SERIES_ORDER
+        )
+        Phi = Phi[:, 0]
         if working:
             Phi_f_ = np.ascontiguousarray(Phi[:, rows_f, rows_f])
             Qf = Q[:, :, rows_f, rows_f] + (0.0 if added is None else added[order_f[:, None], order_f])
@@ -595,8 +600,6 @@ def _digest(obj: Any) -> bytes | None:
     return h.digest()
 
 
-#: The three-node rule of the series discretisation (:func:`navcore.estimation.discretize.discretize`).
-_GAUSS3 = np.polynomial.legendre.leggauss(3)
 # linearisation points whose transitions are computed in one batch (bounds the memory of the
 # (chunk, B, n, n) noise stack)
 _LIN_CHUNK = 128
@@ -715,76 +718,9 @@ class _Propagator:
         return out
 
 
-def _discrete_noise_diag(F: Array, q: Array, dt: float) -> Array:
-    """The noise of :func:`~navcore.estimation.discretize.discretize` (``method="series"``) of
-    ``M`` systems ``F`` ``(M, n, n)``, each driven by ``B`` diagonal PSDs ``diag(q[m, b])``
-    (``q``: ``(M, B, n)``), unchecked: ``(M, B, n, n)``.
-
-    The same quadrature (``P S = P * q`` for a diagonal ``S``, exactly), computed where it
-    can differ from zero: ``Phi(s) S Phi(s)^T`` reads only the driven columns of ``Phi(s)``,
-    which are zero outside the rows of ``F`` that are not zero (the dynamic rows) and the
-    driven states' own unit entries; the three nodes' products are one product over
-    their stacked columns.
-    """
-    x, w = _GAUSS3
-    M, B, n = q.shape
-    Q = np.zeros((M, B, n, n))
-    driven = np.flatnonzero(np.any(q != 0.0, axis=(0, 1)))  # only these columns of S are not 0
-    if driven.size == 0:
-        return Q
-    dyn = np.flatnonzero(np.any(F != 0.0, axis=(0, 2)))
-    rows = np.union1d(dyn, driven)  # the rows of Phi(s)[:, driven] that can be non-zero
-    at_dyn = np.searchsorted(rows, dyn)
-    static_driven = np.setdiff1d(driven, dyn)
-    cols, parts = [], []
-    for xi, wi in zip(x, w, strict=True):
-        part = np.zeros((M, rows.size, driven.size))
-        part[:, at_dyn, :] = _taylor_rows(F, 0.5 * dt * (xi + 1.0), dyn)[:, :, driven]
-        # a driven random constant or random walk keeps its unit row
-        part[:, np.searchsorted(rows, static_driven), np.searchsorted(driven, static_driven)] = 1.0
-        parts.append(part)
-        cols.append((0.5 * dt * wi) * q[:, :, None, driven])
-    P = np.concatenate(parts, axis=-1)[:, None]  # (M, 1, r, 3 d)
-    Qr = (P * np.concatenate(cols, axis=-1)) @ np.swapaxes(P, -1, -2)  # (M, B, r, r)
-    Q[:, :, rows[:, None], rows] = 0.5 * (Qr + np.swapaxes(Qr, -1, -2))
-    return Q
-
-
 #: Highest power of the transition series the engine keeps (4 is exact for the nilpotent INS
 #: error chains; a resolution, not an input: the tests check that 12 moves nothing).
 _SERIES_ORDER = 4
-
-
-def _taylor_rows(F: Array, dt: float, dyn: NDArray[np.intp]) -> Array:
-    """The rows ``dyn`` of :func:`_taylor` of a stack ``(M, n, n)`` whose other rows are zero
-    in every member (a zero row of ``F``, a random constant's, is a unit row of ``Phi``):
-    ``(M, d, n)``.
-
-    With ``F = [[a, b], [0, 0]]`` (dynamic rows first) the Horner step
-    ``Phi <- I + F dt Phi / j`` keeps ``Phi = [[x, y], [0, I]]`` and updates
-    ``[x, y] <- [I, 0] + (a dt [x, y] + [0, b dt]) / j``.
-    """
-    n = F.shape[-1]
-    A = F[:, dyn, :] * dt  # (M, d, n)
-    A_dd = A[:, :, dyn]
-    A_ds = A.copy()
-    A_ds[:, :, dyn] = 0.0  # the columns of the static states
-    rows = np.eye(n)[dyn]
-    X = rows
-    for j in range(_SERIES_ORDER, 0, -1):
-        X = rows + (A_dd @ X + A_ds) / j
-    return X
-
-
-def _taylor_stack(F: Array, dt: float) -> Array:
-    """:func:`_taylor` of a stack ``(M, n, n)``, transforming only the rows of ``F`` that are
-    not zero in any member (:func:`_taylor_rows`)."""
-    n = F.shape[-1]
-    dyn = np.flatnonzero(np.any(F != 0.0, axis=(0, 2)))
-    Phi = np.zeros(F.shape)
-    Phi[:, np.arange(n), np.arange(n)] = 1.0
-    Phi[:, dyn, :] = _taylor_rows(F, dt, dyn)
-    return Phi
 
 
 def concatenate_analyses(parts: Sequence[CovarianceAnalysis]) -> CovarianceAnalysis:
