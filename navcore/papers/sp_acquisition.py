@@ -12,7 +12,7 @@ import math
 
 import numpy as np
 
-from navcore.claims import EXACT, Claim, Erratum, InputSet, printed, prose
+from navcore.claims import Claim, Erratum, InputSet, printed, prose
 from navcore.gnss.acquisition import (
     doppler_cell_hz,
     probability_outside_sigma_box,
@@ -198,15 +198,12 @@ CLAIMS = [
         expected_status="reproduced",
         note="$50\\ \\mathrm{Hz} \\times 0.1903\\ \\mathrm{m} = 9.51$ m/s, printed as 10 m/s.",
     ),
-    Claim(
+    Claim.statement(
         id="SP-tab2.7-ordering",
         locator="Table 2.7",
         quantity="intervals never increase with IMU quality, and tight coupling needs fewer than loose",
-        published=True,
-        unit="statement",
         kind="cross-check",
         compute=table_2_7_monotone,
-        tolerance=EXACT,
         expected_status="consistent",
         note="Checked per satellite on the printed table (TC10 $\\ge$ LC1.0 $\\ge$ TC1.0 $\\ge$ TC0.5 "
         "$\\ge$ TC0.2), the "
@@ -265,15 +262,12 @@ CLAIMS = [
         expected_status="reproduced",
         note="One-dimensional (code phase only, one Doppler cell): 31.73 %.",
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.6.4-pointing-gyrocompass",
         locator="Sec. 2.6.4",
         quantity="pointing error over 8 km is negligible next to the helicopter's position error "
         "(gyrocompass heading error assumed)",
-        published=True,
-        unit="statement",
         compute=pointing_negligible,
-        tolerance=EXACT,
         expected_status="consistent",
         note="Target error = rss of the printed position error (192 m, 2750 m) and misalignment "
         "$\\times$ 8 km; "

@@ -166,27 +166,20 @@ CLAIMS = [
         expected_status="reproduced",
         note="The loosely coupled states plus user clock bias and drift.",
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.2-same-states",
         locator="Sec. 2.2",
         quantity="the tightly coupled states all appear in the cascaded loosely coupled filters",
-        published=True,
-        unit="statement",
         compute=_tight_within_loose_cascade,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Set inclusion of the Table 2.3 blocks in the union of the Table 2.1 and 2.2 "
         "blocks, with equal block sizes.",
     ),
     *(_state_claim(t, r) for t in ("2.1", "2.2", "2.3") for r in range(len(_ROWS[t]))),
-    Claim(
+    Claim.statement(
         id="SP-sec2.1-fixes-decorrelated",
         locator="Sec. 2.1",
         quantity="receiver position solutions 10 s apart are not significantly correlated",
-        published=True,
-        unit="statement",
         compute=None,
-        tolerance=EXACT,
         expected_status="not-reproducible",
         note="The statement is about the magnitude of the receiver filter's process noise, which Sec. 2.1 "
         "(Table 2.1) does not give; any value the book assumed would decide the answer by itself.",

@@ -295,31 +295,25 @@ CLAIMS = [
         note="0.7707 rad/s: the worked example's own arithmetic on printed numbers (0.011 g, 6 g, 18 rad/s), "
         "a cross-check.",
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.5-right-factor",
         locator="Sec. 2.5, covariance of the residual acceleration",
         quantity="the printed right factor of the covariance is the transpose of the printed "
         "$3\\times 6$ matrix",
-        published=True,
-        unit="statement",
         kind="cross-check",
         compute=right_factor_is_transpose,
-        tolerance=EXACT,
         expected_status="consistent",
         note="$\\langle \\delta a\\, \\delta a^T \\rangle = H P H^T$ with the middle factor a "
         "$6\\times 6$ block "
         "matrix written in $2\\times 2$ shorthand; a "
         "check of the two printed matrices against each other, a cross-check.",
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.5-H-sign",
         locator=r"Sec. 2.5, $3\times 6$ sensitivity matrix",
         quantity="the printed $3\\times 6$ matrix is the sensitivity of "
         "$\\operatorname{diag}(sf)\\, a + [\\delta\\theta \\times]\\, a$ for $a = (1,1,1)$",
-        published=True,
-        unit="statement",
         compute=printed_h_matches_skew_model,
-        tolerance=EXACT,
         expected_status="discrepant",
         erratum="SP-E-misalignment-sign",
         oracle=printed_h_matches_cross_product_jacobian,

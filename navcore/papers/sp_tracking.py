@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 from scipy import signal
 
-from navcore.claims import EXACT, Claim, Erratum, InputSet, Tolerance, input_cache, printed
+from navcore.claims import Claim, Erratum, InputSet, Tolerance, input_cache, printed
 from navcore.gnss.tracking import (
     aided_natural_frequency,
     distance_to_phase_deg,
@@ -225,29 +225,21 @@ CLAIMS = [
         note="A carrier loop tracks the L1 carrier, whose wavelength is c/1575.42 MHz = 0.1903 m: the 6-g "
         "step then peaks at 144.2 deg, and a 90 deg limit needs 22.37 rad/s.",
     ),
-    Claim(
+    Claim.statement(
         id="SP-eq2.u1-closed-form",
         locator="Sec. 2.5, equation above Fig. 2.1",
         quantity="the closed form (exponent read as $-\\omega_0 t/2$) is the third-order loop's step error",
-        published=True,
-        unit="statement",
         compute=closed_form_matches_simulation,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Compared with a linear-system simulation of "
         "$E/\\Theta = s^3/(s^3 + 2\\omega_0 s^2 + 2\\omega_0^2 s + \\omega_0^3)$ driven by $t^2/2$ "
         "(Butterworth poles, $a_3 = b_3 = 2$); the $t^2$ of the source text is a misprint or a "
         "misreading of $t/2$ (erratum SP-E-exponent-t2).",
     ),
-    Claim(
+    Claim.statement(
         id="SP-eq2.1-keeps-peak",
         locator="Eq. (2.1)",
         quantity="scaling $\\omega_0$ by the square root of the step ratio keeps the peak error unchanged",
-        published=True,
-        unit="statement",
         compute=eq21_keeps_peak,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Peaks found on a fine time grid (not from the peak factor) for the four aided steps of "
         "Table 2.6 against the 6 g, 18 rad/s unaided loop: equal to $10^{-9}$ relative, because the error is "
         "$R/\\omega_0^2$ times a function of $\\omega_0 t$.",
@@ -266,15 +258,11 @@ CLAIMS = [
         "$10\\ \\mathrm{g/s} \\times 0.6\\ \\mathrm{s}$, "
         "arithmetic on printed numbers, a cross-check.",
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.5-step-vs-jerk",
         locator="Sec. 2.5",
         quantity="the 6-g step gives a larger peak error than the 10-g/s, 0.6-s jerk (more stringent)",
-        published=True,
-        unit="statement",
         compute=step_more_stringent_than_jerk,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Peaks at 17.67 rad/s with the L1 carrier; the ratio (about 4) does not depend on the "
         "conversion. 'Slightly' has no band in the prose table, and the requirement sets the natural "
         "frequency: there the step needs a natural frequency about 1.6 times the one the jerk needs (the "
