@@ -24,7 +24,7 @@ them as C/N0 in dB-Hz, and the convention ``snr_measure`` carries the other read
 each threshold measured in its own loop's noise bandwidth (C/N0 - 10 log10 B_L).
 
 The lock tables drive the covariance engine of the other Sec. 2.6 missions
-(:mod:`navcore.papers.sp_missions_scenarios`), whose result gives each satellite's range
+(:mod:`navcore.papers.sp_mission_flights`), whose result gives each satellite's range
 uncertainty at its own reacquisition: the cells of Table 2.7, each a claim of this module, as is
 the Sec. 2.8 assertion that the same runs check (the error with GPS tracked).
 
@@ -64,8 +64,8 @@ from navcore.inertial.trajectories import Segment, Trajectory, fly
 from navcore.integration.engine import CovarianceAnalysis
 from navcore.integration.geometry import SatelliteGeometry, satellite_geometry
 from navcore.papers import sp_acquisition as spa
-from navcore.papers import sp_missions_scenarios as sc
 from navcore.papers import sp_residual_acceleration as spr
+from navcore.papers import sp_scenario_wiring as sc
 from navcore.papers.sp_quotes import quoted
 from navcore.papers.sp_tables import GRADE_LABELS_NMI_PER_H
 from navcore.units import DEG, G0, GPS_L1_WAVELENGTH_M, MINUTE, PPM

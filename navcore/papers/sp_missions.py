@@ -3,8 +3,9 @@
 Published values are typed here once with their locators; every reproduced value is
 computed by the covariance-analysis engine (:mod:`navcore.integration.engine`)
 from Tables 2.4, 2.5 and 2.8 (:mod:`navcore.papers.sp_tables`) and the stated assumptions
-of :mod:`navcore.papers.sp_missions_scenarios`. Cross-checks on the printed times of
-Secs. 2.6.1 and 2.6.3 and on Table 2.5's columns are claims here too.
+of :mod:`navcore.papers.sp_mission_flights` and :mod:`navcore.papers.sp_scenario_wiring`.
+Cross-checks on the printed times of Secs. 2.6.1 and 2.6.3 and on Table 2.5's columns are
+claims here too.
 """
 
 from __future__ import annotations
@@ -30,7 +31,7 @@ from navcore.inertial.error_dynamics import (
 from navcore.inertial.imu import noise_only
 from navcore.inertial.trajectories import straight_and_level
 from navcore.integration.engine import circular_error_probable, run_covariance_analysis
-from navcore.papers import sp_missions_scenarios as sc
+from navcore.papers import sp_mission_flights as sc
 from navcore.papers.sp_quotes import quoted
 from navcore.papers.sp_tables import (
     GRADE_LABELS_NMI_PER_H,
