@@ -707,6 +707,7 @@ CLAIMS = [
         expected_status="consistent",
         note="$10^{20/10} = 100$: the definition of the decibel applied to the printed 20 dB: arithmetic on "
         "printed numbers, a cross-check.",
+        discussed_in=PAGE,
     ),
     Claim.statement(
         id="SP-sec3.3-aj-rule-distance",
@@ -714,6 +715,7 @@ CLAIMS = [
         quantity="20 dB more J/S in free space equals a 10 times shorter jammer distance",
         compute=_aj_rule_distance_holds,
         note="Free-space loss grows as 20 log10(d), whatever the powers.",
+        discussed_in=PAGE,
     ),
     *(_cep_claim(a, p) for a, p in (("DI", 100.0), ("TC", 100.0), ("DI", 10.0), ("TC", 10.0))),
     Claim.statement(
