@@ -3498,7 +3498,7 @@ def sp22_lc_jitter_dbhz() -> float:
     carrier loop at its phase-error limit, k sigma = limit (SP Sec. 2.5), dB-Hz."""
     from navcore.gnss.jammer_geometry import pll_jitter_threshold_dbhz
     from navcore.papers import sp_flyby as fb
-    from navcore.papers import sp_missions_scenarios as sc
+    from navcore.papers import sp_scenario_wiring as sc
 
     return float(
         pll_jitter_threshold_dbhz(
@@ -3516,7 +3516,7 @@ def sp22_lc_jitter_dbhz() -> float:
 def sp22_horizon_km() -> float:
     """Radio horizon sqrt(2 (4/3) R h) of the missions' cruise altitude over a 4/3-radius Earth, km."""
     from navcore.location.multilateration import EARTH_MEAN_RADIUS_M
-    from navcore.papers import sp_missions_scenarios as sc
+    from navcore.papers import sp_scenario_wiring as sc
 
     return float(math.sqrt(2 * 4 / 3 * EARTH_MEAN_RADIUS_M * sc.IN.cruise_altitude_m) / 1e3)
 
@@ -3861,12 +3861,12 @@ def across01_wf_bound_mm_s() -> float:
 def across01_sp_outage_m() -> float:
     """rss horizontal error (m) of the perfectly calibrated second Table 2.5 grade (random walks
     only) after the helicopter mission's jammed minutes of free inertial flight (SP Sec. 2.6)."""
+    from navcore.papers import sp_mission_flights as sp_flights
     from navcore.papers import sp_missions
-    from navcore.papers import sp_missions_scenarios as sp_scenarios
     from navcore.papers.sp_tables import GRADE_LABELS_NMI_PER_H
 
     return float(
-        sp_missions.noise_only_error_m(GRADE_LABELS_NMI_PER_H[1], sp_scenarios.IN.helicopter_jammed_min)
+        sp_missions.noise_only_error_m(GRADE_LABELS_NMI_PER_H[1], sp_flights.IN.helicopter_jammed_min)
     )
 
 
@@ -4214,7 +4214,7 @@ def sp22_range_km(when: str) -> float:
     """Slant range (km) from the aircraft to the jammer at the sample where the loosely coupled
     blackout starts (``when="loss"``) or ends (``"back"``)."""
     from navcore.papers import sp_flyby as fb
-    from navcore.papers import sp_missions_scenarios as sc
+    from navcore.papers import sp_scenario_wiring as sc
 
     t = fb._blackout_s(sc.SYSTEMS[0])[{"loss": 0, "back": 1}[when]]
     return float(fb.jammer_range_m()[int(t)] / 1e3)

@@ -784,7 +784,7 @@ def _sp_velocity(data: Data, fig_id: str) -> None:
     engine's run. Oracle: both start from the same initial covariance (equal at t = 0), the
     filter's own is the root of the sum of its north and east variances, computed here, and the
     event lines sit at the minutes of Sec. 2.6.1's timeline."""
-    from navcore.papers import sp_missions_scenarios as sc
+    from navcore.papers import sp_mission_flights as sc
 
     label = "LC 1 nmi/h" if fig_id.endswith("2.2") else "TC 1 nmi/h"
     res = {s.label: r for s, r in sc.sequential_outage(False).items()}[label]
@@ -829,7 +829,7 @@ def _sp_seq_position(data: Data) -> None:
     """Horizontal errors recomputed (covariance engine). Oracle: the event times by hand: carriers
     lost at 6, 9, 12, 15 min, codes at 17, 20, 23, 26 min, and no code back (GPS never returns in
     the free-inertial variant; the figure drew the other variant's reacquisitions at 46-55 min)."""
-    from navcore.papers import sp_missions_scenarios as sc
+    from navcore.papers import sp_mission_flights as sc
 
     (ax,) = data
     runs = sc.sequential_outage(True)
@@ -846,7 +846,7 @@ def _sp_fig28(data: Data) -> None:
     the tightly coupled systems lose the satellites later (153 s against 159 s before release,
     the text's times), so every tightly coupled bar is below the loosely coupled one of its
     grade."""
-    from navcore.papers import sp_missions_scenarios as sc
+    from navcore.papers import sp_mission_flights as sc
 
     (ax,) = data
     (bars,) = ax.of_kind("bars")
@@ -861,7 +861,7 @@ def _sp_heli(data: Data, fig_id: str) -> None:
     10 and 1 nmi/h. Oracle: the 10 nmi/h system errs more than the 1 nmi/h one; the target's
     location error is at least a third of the helicopter's own position error (the target is
     located from the helicopter's position); Doppler aiding lowers both (Fig. 2.10)."""
-    from navcore.papers import sp_missions_scenarios as sc
+    from navcore.papers import sp_mission_flights as sc
 
     (ax,) = data
     cases = (False,) if fig_id.endswith("2.9") else (False, True)

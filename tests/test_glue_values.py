@@ -601,7 +601,7 @@ def _sp22_lc_jitter_dbhz() -> float:
     """brentq oracle on the thermal-jitter rule of thumb (Kaplan & Hegarty Sec. 5.6.2),
     sigma = (180 / pi) sqrt(B_n / x (1 + 1 / (2 T x))) deg, for k sigma = the phase limit."""
     from navcore.papers import sp_flyby as fb
-    from navcore.papers import sp_missions_scenarios as sc
+    from navcore.papers import sp_scenario_wiring as sc
 
     bn = fb.carrier_loop(sc.SYSTEMS[0]).bandwidth_hz
     a = fb.IN
@@ -617,7 +617,7 @@ def _sp22_lc_jitter_dbhz() -> float:
 def _sp22_horizon_exact() -> tuple[float, float]:
     """Tangent distance from height h to a sphere of radius R' = 4/3 R, sqrt((R' + h)^2 - R'^2), km,
     and the relative size h / (2 R') of the h^2 term the function's sqrt(2 R' h) drops."""
-    h = _sp_in("sp_missions_scenarios").cruise_altitude_m
+    h = _sp_in("sp_scenario_wiring").cruise_altitude_m
     r = 4 / 3 * _EARTH_MEAN_RADIUS
     return math.sqrt((r + h) ** 2 - r**2) / 1e3, h / (2 * r)
 
@@ -628,7 +628,7 @@ def _sp22_range_min_km() -> float:
     fb = _sp_in("sp_flyby")
     return (
         math.hypot(
-            fb.jammer_offset_km * 1e3, _sp_in("sp_missions_scenarios").cruise_altitude_m - fb.jammer_height_m
+            fb.jammer_offset_km * 1e3, _sp_in("sp_scenario_wiring").cruise_altitude_m - fb.jammer_height_m
         )
         / 1e3
     )
@@ -3280,8 +3280,8 @@ def _sp21_clock_digits() -> int:
     (not through the registered percentage), written out to 17 significant digits, and the
     number of leading digits the two strings share. It agrees with the registered count (the
     largest d with a relative change below 1e-d) to one digit, the most a carry can move it."""
+    from navcore.papers import sp_mission_flights as sc
     from navcore.papers import sp_missions as spm
-    from navcore.papers import sp_missions_scenarios as sc
 
     runs = sc.initial_error_runs(spm.IN.initial_error_scale)
     t = sc.reacquisition_s() - 1.0
@@ -3302,8 +3302,8 @@ def _sp21_initial_effect_pct(members: tuple[str, ...]) -> float:
     """The runs' own variance histories: the sample nearest 1 s before reacquisition found on the
     time axis (not through the run's lookup), the rss of the north and east variances there (not
     the run's horizontal error), and the largest relative change over ``members`` (%)."""
+    from navcore.papers import sp_mission_flights as sms
     from navcore.papers import sp_missions as spm
-    from navcore.papers import sp_missions_scenarios as sms
 
     runs = sms.initial_error_runs(spm.IN.initial_error_scale)
     t = sms.reacquisition_s() - 1.0
@@ -3321,7 +3321,7 @@ def _sp21_coupling_pct() -> float:
     """The head-on runs' final covariance matrices (not their variance histories): the rss of the
     north and east position variances of the loosely and tightly coupled 1 nmi/h systems, and
     their relative difference (%)."""
-    from navcore.papers import sp_missions_scenarios as sms
+    from navcore.papers import sp_mission_flights as sms
 
     def final(arch: str, label: str) -> float:
         run = next(r for s_, r in sms.head_on_approach(arch).items() if s_.label == label)
@@ -3337,8 +3337,8 @@ def _sp21_momentary_pct() -> float:
     its covariance is A P A' with A = [I, [r x]] on the final position and attitude block; the
     rss of its north and east variances with and without the momentary losses, both grades (%)."""
     from navcore.papers import sp_acquisition as spa
+    from navcore.papers import sp_mission_flights as sms
     from navcore.papers import sp_missions as spm
-    from navcore.papers import sp_missions_scenarios as sms
 
     b = math.radians(sms.IN.target_bearing_deg)
     r = spa.IN.target_range_m * np.array([math.cos(b), math.sin(b), 0.0])
@@ -3357,7 +3357,7 @@ def _sp21_momentary_pct() -> float:
 
 def _sp_noise_only_outage_m() -> float:
     """:func:`_sp_noise_only_m` for the second Table 2.5 column over the helicopter's jammed minutes."""
-    from navcore.papers import sp_missions_scenarios as sms
+    from navcore.papers import sp_mission_flights as sms
     from navcore.papers import sp_tables
 
     return _sp_noise_only_m(sp_tables.GRADE_LABELS_NMI_PER_H[1], sms.IN.helicopter_jammed_min)
@@ -3665,12 +3665,12 @@ def _sp22_range_by_hand_km(when: str) -> float:
     r(t) = hypot(d_min, v (t - t_ca)) at the blackout's loss or return sample (whole seconds;
     the blackout's times from the model, an input). Both lie after the calibration turns."""
     from navcore.papers import sp_flyby as fb
-    from navcore.papers import sp_missions_scenarios as sc
+    from navcore.papers import sp_scenario_wiring as sc
 
     t = math.floor(fb._blackout_s(sc.SYSTEMS[0])[{"loss": 0, "back": 1}[when]])
     t_ca = _sp_in("sp_flyby").closest_approach_min * 60.0
     assert t > 15 * 60, "the straight leg starts after the second turn"
-    v = _sp_in("sp_missions_scenarios").cruise_speed_mps
+    v = _sp_in("sp_scenario_wiring").cruise_speed_mps
     return math.hypot(_sp22_range_min_km() * 1e3, v * (t - t_ca)) / 1e3
 
 
@@ -3823,7 +3823,7 @@ ORACLES += [
 
 # --- SP Sec. 2.6.2: the flyby's blackouts by an independent lock scan ---------------------------
 def _sp22_system(label: str) -> Any:
-    from navcore.papers import sp_missions_scenarios as sc
+    from navcore.papers import sp_scenario_wiring as sc
 
     return next(s for s in sc.SYSTEMS if s.label == label)
 
@@ -4020,7 +4020,7 @@ def test_sp22_lock_scan_reproduces_the_model_lock_tables():
     own loops: the same code states as the model's vectorised hysteresis, sample by sample, and
     the same nonzero lock-table blackouts (so a zero difference is two equal nonzero times)."""
     from navcore.papers import sp_flyby as fb
-    from navcore.papers import sp_missions_scenarios as sc
+    from navcore.papers import sp_scenario_wiring as sc
 
     for system in sc.SYSTEMS:
         states, _ = _sp22_lock_scan(system.label, system.label)
@@ -4100,7 +4100,7 @@ def _sp22_gps_aided_ratio() -> float:
     horizontal error or its sample lookup): sqrt(var_N + var_E) of each system at the last sample
     at or before 1 s ahead of the tightly coupled 10 nmi/h blackout."""
     from navcore.papers import sp_flyby as fb
-    from navcore.papers import sp_missions_scenarios as sc
+    from navcore.papers import sp_scenario_wiring as sc
 
     runs = {s.label: r for s, r in fb.flyby_runs().items()}
     start, _ = fb._blackout_s(next(s for s in sc.SYSTEMS if s.label == "TC 10 nmi/h"))

@@ -269,7 +269,7 @@ def test_flyby_calibration_and_flat_antenna_limit():
     filter needs go and come back together: the two blackouts coincide."""
     from navcore.claims.inputs import overriding, recording
     from navcore.papers import sp_flyby as fb
-    from navcore.papers import sp_missions_scenarios as sc
+    from navcore.papers import sp_scenario_wiring as sc
 
     lc, tc = sc.SYSTEMS[0], sc.SYSTEMS[2]
     with recording():

@@ -8,7 +8,8 @@ import pytest
 from navcore._validate import ModelDomainError
 from navcore.claims.inputs import overriding
 from navcore.integration.engine import CovarianceAnalysis, concatenate_analyses
-from navcore.papers import sp_missions_scenarios as sc
+from navcore.papers import sp_mission_flights as sc
+from navcore.papers import sp_scenario_wiring as sw
 from navcore.units import DEG, FT
 
 
@@ -120,7 +121,7 @@ def test_helicopter_pull_ups_start_each_undulation(period_s):
 
 
 def _fake(P: np.ndarray) -> CovarianceAnalysis:
-    lay = sc.truth_layout()
+    lay = sw.truth_layout()
     t = np.array([0.0, 1.0])
     z = np.zeros((2, lay.size))
     return CovarianceAnalysis(t, lay, lay, z, z, np.zeros(2), np.zeros(2), np.zeros(2, int), {1: P}, P, P)
@@ -129,7 +130,7 @@ def _fake(P: np.ndarray) -> CovarianceAnalysis:
 def test_target_location_sigma_closed_form():
     """Oracle: target error = position error when attitude is exact; = range x heading
     error when position is exact (level target 8 km away, heading error only)."""
-    lay = sc.truth_layout()
+    lay = sw.truth_layout()
     P = np.zeros((lay.size, lay.size))
     P[0, 0] = P[1, 1] = 50.0**2
     assert sc.target_location_sigma(_fake(P), 8000.0) == pytest.approx(50.0 * np.sqrt(2))
@@ -141,7 +142,7 @@ def test_target_location_sigma_closed_form():
 
 def test_concatenate_analyses_drops_shared_sample():
     """Oracle: two parts of 3 and 2 samples sharing t = 2 give 4 samples."""
-    lay = sc.truth_layout()
+    lay = sw.truth_layout()
 
     def part(t):
         n = len(t)
@@ -187,9 +188,10 @@ def test_scale_initial_errors_scales_the_blocks_and_their_correlations():
     definite matrix; the clock offset replaced by its new sigma with no correlation."""
     import numpy as np
 
-    from navcore.papers import sp_missions_scenarios as sc
+    from navcore.papers import sp_mission_flights as sc
+    from navcore.papers import sp_scenario_wiring as sw
 
-    lay = sc.truth_layout(channels=4)
+    lay = sw.truth_layout(channels=4)
     rng = np.random.default_rng(4)
     A = rng.standard_normal((lay.size, lay.size))
     P = A @ A.T
@@ -219,7 +221,7 @@ def test_free_inertial_variant_is_one_unbroken_run_without_reacquisition():
     events = sc.sequential_outage_events(len(channels), outage_s=None)
     code, carrier = sc.lock_table(tr.t, len(channels), events)
     systems = sc._group("tight")
-    whole = sc._run(systems, tr, code, carrier, channels)
+    whole = sw._run(systems, tr, code, carrier, channels)
     for s in systems:
         np.testing.assert_allclose(phased[s].t, whole[s].t)
         np.testing.assert_allclose(phased[s].horizontal_position, whole[s].horizontal_position, rtol=1e-6)

@@ -89,7 +89,7 @@ def test_target_location_sigma_against_a_monte_carlo_of_the_physical_chain() -> 
 
     from scipy.spatial.transform import Rotation
 
-    from navcore.papers import sp_missions_scenarios as sc
+    from navcore.papers import sp_mission_flights as sc
 
     lay, P = _dead_reckoning_covariance()
     rng = np.random.default_rng(3)

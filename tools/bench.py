@@ -321,7 +321,7 @@ MISSION_CODE = """
 import os, time
 os.environ["NAVCORE_CACHE"] = "off"
 os.environ["NAVCORE_NO_DISK_CACHE"] = "1"
-from navcore.papers import sp_missions_scenarios as s
+from navcore.papers import sp_mission_flights as s
 start = time.perf_counter()
 runs = s.sequential_outage(False)
 elapsed = time.perf_counter() - start

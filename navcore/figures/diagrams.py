@@ -97,7 +97,7 @@ def sp_integration_architectures() -> Figure:
         tightly_coupled_layout,
     )
     from navcore.integration.schedules import tightly_coupled_schedule
-    from navcore.papers.sp_missions_scenarios import IN as SCENARIO
+    from navcore.papers.sp_scenario_wiring import IN as SCENARIO
 
     tight = inspect.signature(tightly_coupled_schedule).parameters
     return diagrams.integration_architectures_diagram(

@@ -7,7 +7,7 @@ from matplotlib.figure import Figure
 
 from navcore.figures import register, value_bars
 from navcore.papers import sp_flyby as fb
-from navcore.papers import sp_missions_scenarios as sc
+from navcore.papers import sp_scenario_wiring as sc
 from navcore.units import MINUTE
 
 _ASSUMED = (

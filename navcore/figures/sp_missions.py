@@ -7,8 +7,8 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from navcore.figures import register, value_bars
+from navcore.papers import sp_mission_flights as sc
 from navcore.papers import sp_missions as spm
-from navcore.papers import sp_missions_scenarios as sc
 from navcore.papers.sp_tables import GRADE_LABELS_NMI_PER_H
 
 _ASSUMED = (

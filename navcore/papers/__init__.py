@@ -29,7 +29,8 @@ READING_ORDER = (
     "sp_flyby",
     "sp_antijam",
     "sp_tables",
-    "sp_missions_scenarios",
+    "sp_scenario_wiring",
+    "sp_mission_flights",
     "sp_quotes",
     # ATC-10: Ch. 1 (Table 1.1), Ch. 2 (Secs. 2.1-2.5, 2.7, 2.6-2.8 lists), App. A-D; Ch. 3
     # (Secs. 3.1-3.4 with App. E, 3.5-3.7, 3.8, 3.9 with App. F); Ch. 4 (Secs. 4.1-4.2, 4.3-4.5.2,

@@ -12,7 +12,7 @@ import math
 
 import numpy as np
 
-from navcore.claims import EXACT, Claim, Erratum, InputSet, printed, prose
+from navcore.claims import Claim, Erratum, InputSet, printed, prose
 from navcore.gnss.acquisition import (
     doppler_cell_hz,
     probability_outside_sigma_box,
@@ -26,6 +26,7 @@ from navcore.papers.sp_quotes import quoted
 from navcore.papers.sp_tables import TABLE_2_5_PRINTED
 from navcore.units import DEG, DEG_PER_H, GPS_L1_WAVELENGTH_M, OMEGA_EARTH
 
+PAGE = "sp/04-acquisition"
 PAGE_TGT = "sp/05-target-location"
 
 # --- Table 2.7: range (code-phase) intervals to be searched, per satellite ----------------
@@ -175,6 +176,7 @@ CLAIMS = [
         expected_status="consistent",
         note="36 deg per 30 m is the section's 360 deg per 300 m convention (close to a C/A chip, 293 m): "
         "arithmetic on printed numbers, a cross-check.",
+        discussed_in=PAGE,
     ),
     Claim(
         id="SP-sec2.5-doppler-cell-hz",
@@ -186,6 +188,7 @@ CLAIMS = [
         tolerance=_hz50[1],
         expected_status="reproduced",
         note="The frequency resolution of a T = 20 ms integration is 1/T.",
+        discussed_in=PAGE,
     ),
     Claim(
         id="SP-sec2.5-doppler-cell-mps",
@@ -197,20 +200,19 @@ CLAIMS = [
         tolerance=printed("10", why="'50 Hz corresponding to 10 m/s'")[1],
         expected_status="reproduced",
         note="$50\\ \\mathrm{Hz} \\times 0.1903\\ \\mathrm{m} = 9.51$ m/s, printed as 10 m/s.",
+        discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="SP-tab2.7-ordering",
         locator="Table 2.7",
         quantity="intervals never increase with IMU quality, and tight coupling needs fewer than loose",
-        published=True,
-        unit="statement",
         kind="cross-check",
         compute=table_2_7_monotone,
-        tolerance=EXACT,
         expected_status="consistent",
         note="Checked per satellite on the printed table (TC10 $\\ge$ LC1.0 $\\ge$ TC1.0 $\\ge$ TC0.5 "
         "$\\ge$ TC0.2), the "
         "ordering the text attributes to better calibration: a check on printed numbers, a cross-check.",
+        discussed_in=PAGE,
     ),
     Claim(
         id="SP-sec2.6.2-search-better",
@@ -229,6 +231,7 @@ CLAIMS = [
         "$\\lceil 2 \\sigma_{\\text{rng-rate}}/10 \\rceil$ is one 10-m/s interval when 'not greater than "
         "10 m/s' bounds "
         "the whole uncertainty span; the 30-m interval called a 'chip' is a P(Y) chip (29.3 m).",
+        discussed_in=PAGE,
     ),
     Claim(
         id="SP-sec2.6.2-search-10-min",
@@ -241,6 +244,7 @@ CLAIMS = [
         tolerance=_ABOUT_SEARCH,
         expected_status="consistent",
         note="42 intervals $\\times$ 20 ms = 0.84 s, arithmetic on printed numbers, a cross-check.",
+        discussed_in=PAGE,
     ),
     Claim(
         id="SP-sec2.6.2-search-10-max",
@@ -253,6 +257,7 @@ CLAIMS = [
         tolerance=_ABOUT_SEARCH,
         expected_status="consistent",
         note="82 intervals $\\times$ 20 ms = 1.64 s, arithmetic on printed numbers, a cross-check.",
+        discussed_in=PAGE,
     ),
     Claim(
         id="SP-sec2.6.2-outside-1sigma",
@@ -264,16 +269,14 @@ CLAIMS = [
         tolerance=_p32[1],
         expected_status="reproduced",
         note="One-dimensional (code phase only, one Doppler cell): 31.73 %.",
+        discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.6.4-pointing-gyrocompass",
         locator="Sec. 2.6.4",
         quantity="pointing error over 8 km is negligible next to the helicopter's position error "
         "(gyrocompass heading error assumed)",
-        published=True,
-        unit="statement",
         compute=pointing_negligible,
-        tolerance=EXACT,
         expected_status="consistent",
         note="Target error = rss of the printed position error (192 m, 2750 m) and misalignment "
         "$\\times$ 8 km; "

@@ -707,39 +707,31 @@ CLAIMS = [
         expected_status="consistent",
         note="$10^{20/10} = 100$: the definition of the decibel applied to the printed 20 dB: arithmetic on "
         "printed numbers, a cross-check.",
+        discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec3.3-aj-rule-distance",
         locator="Sec. 3.3 (second), 'Final comment'",
         quantity="20 dB more J/S in free space equals a 10 times shorter jammer distance",
-        published=True,
-        unit="statement",
         compute=_aj_rule_distance_holds,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Free-space loss grows as 20 log10(d), whatever the powers.",
+        discussed_in=PAGE,
     ),
     *(_cep_claim(a, p) for a, p in (("DI", 100.0), ("TC", 100.0), ("DI", 10.0), ("TC", 10.0))),
-    Claim(
+    Claim.statement(
         id="SP-sec3.3-di-better",
         locator="Sec. 3.3, Figs. 3.6-3.7",
         quantity="deep integration has a smaller CEP than tight coupling at 10 and 100 W, both jammer types",
-        published=True,
-        unit="statement",
         compute=di_better_at_10_and_100w,
-        tolerance=EXACT,
         expected_status="not-reproducible",
         note="Reduced navigator model with the book's trajectory and link assumptions (exact CEPs).",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec3.3-low-power-comparable",
         locator="Sec. 3.3",
         quantity="as jammer power goes to zero both systems give comparable performance",
-        published=True,
-        unit="statement",
         compute=comparable_at_low_power,
-        tolerance=EXACT,
         expected_status="consistent",
         note="'Comparable' read as within 25 % (or 50 %) of each other at 1 W wideband, the lowest power of "
         "the paper's sweep: both keep lock and are limited by the unestimated range bias.",
@@ -811,14 +803,11 @@ CLAIMS = [
         "reduced PGM model of this page is not the second scenario.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="SP-fig3.1-di-lower-initial-rss",
         locator="Sec. 3.1, Fig. 3.1",
         quantity="deep integration has the lower rss error during the 60-s, 30-dB initialisation phase",
-        published=True,
-        unit="statement",
         compute=None,
-        tolerance=EXACT,
         expected_status="not-reproducible",
         note="The difference comes from how the deeply integrated filter weights the correlator outputs, "
         "which Sec. 3.0-3.1 does not describe (27-run Monte Carlo); in the reduced model both navigators "
@@ -842,14 +831,11 @@ CLAIMS = [
         "printed to check the model against.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec3.3-aj-falls-beyond-100m",
         locator="Sec. 3.3",
         quantity="the A/J improvement decreases as CEP grows beyond 100 m (wideband)",
-        published=True,
-        unit="statement",
         compute=aj_falls_beyond_100m,
-        tolerance=EXACT,
         expected_status="not-reproducible",
         note="A/J improvement at 100 m against $0.95\\times$ the largest CEP both reduced-model curves reach "
         "(towards the free-inertial CEP as power grows). In the reduced model, with the P(Y) code, the "
@@ -862,27 +848,21 @@ CLAIMS = [
         "6-DOF model.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="SP-fig3.2-di-better-second",
         locator="Sec. 3.1, Fig. 3.2",
         quantity="deep integration has a lower rss error than tight coupling in the second scenario",
-        published=True,
-        unit="statement",
         compute=None,
-        tolerance=EXACT,
         expected_status="not-reproducible",
         note="Fig. 3.2 is a 35-run 6-DOF Monte Carlo of a 7-min flight whose trajectory, deeply "
         "integrated receiver model and filter tuning Sec. 3.1 does not give (as SP-fig3.3-aj-above-10dB).",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec3.1-aj-grows-with-imu",
         locator="Sec. 3.1",
         quantity="the A/J improvement increases with higher-quality inertial sensors (10 to 1 deg/h)",
-        published=True,
-        unit="statement",
         compute=None,
-        tolerance=EXACT,
         expected_status="not-reproducible",
         note="Read from Fig. 3.3 (second scenario, 10 and 1 deg/h INS error models); the 1 deg/h error "
         "model and the scenario are not given in Sec. 3.1, and the reduced PGM model has the MEMS IMU "

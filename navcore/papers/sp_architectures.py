@@ -142,6 +142,7 @@ CLAIMS = [
         expected_status="reproduced",
         note="Sum of the block sizes of the receiver layout (PVA + clock + altimeter bias), "
         "whose rows match the printed rows. The table's caption is lost in the source text.",
+        discussed_in=PAGE,
     ),
     Claim(
         id="SP-tab2.2-total",
@@ -154,6 +155,7 @@ CLAIMS = [
         expected_status="reproduced",
         note="INS core (9) + IMU errors (12) + altimeter bias (1); no clock states, which "
         "live in the receiver's filter.",
+        discussed_in=PAGE,
     ),
     Claim(
         id="SP-tab2.3-total",
@@ -165,28 +167,23 @@ CLAIMS = [
         tolerance=EXACT,
         expected_status="reproduced",
         note="The loosely coupled states plus user clock bias and drift.",
+        discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.2-same-states",
         locator="Sec. 2.2",
         quantity="the tightly coupled states all appear in the cascaded loosely coupled filters",
-        published=True,
-        unit="statement",
         compute=_tight_within_loose_cascade,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Set inclusion of the Table 2.3 blocks in the union of the Table 2.1 and 2.2 "
         "blocks, with equal block sizes.",
+        discussed_in=PAGE,
     ),
     *(_state_claim(t, r) for t in ("2.1", "2.2", "2.3") for r in range(len(_ROWS[t]))),
-    Claim(
+    Claim.statement(
         id="SP-sec2.1-fixes-decorrelated",
         locator="Sec. 2.1",
         quantity="receiver position solutions 10 s apart are not significantly correlated",
-        published=True,
-        unit="statement",
         compute=None,
-        tolerance=EXACT,
         expected_status="not-reproducible",
         note="The statement is about the magnitude of the receiver filter's process noise, which Sec. 2.1 "
         "(Table 2.1) does not give; any value the book assumed would decide the answer by itself.",

@@ -24,7 +24,7 @@ them as C/N0 in dB-Hz, and the convention ``snr_measure`` carries the other read
 each threshold measured in its own loop's noise bandwidth (C/N0 - 10 log10 B_L).
 
 The lock tables drive the covariance engine of the other Sec. 2.6 missions
-(:mod:`navcore.papers.sp_missions_scenarios`), whose result gives each satellite's range
+(:mod:`navcore.papers.sp_mission_flights`), whose result gives each satellite's range
 uncertainty at its own reacquisition: the cells of Table 2.7, each a claim of this module, as is
 the Sec. 2.8 assertion that the same runs check (the error with GPS tracked).
 
@@ -45,7 +45,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from navcore._validate import ModelDomainError
-from navcore.claims import EXACT, Claim, input_cache, printed, prose
+from navcore.claims import Claim, input_cache, printed, prose
 from navcore.claims.core import Status
 from navcore.claims.inputs import InputSet
 from navcore.gnss.acquisition import search_cells, search_time
@@ -64,8 +64,8 @@ from navcore.inertial.trajectories import Segment, Trajectory, fly
 from navcore.integration.engine import CovarianceAnalysis
 from navcore.integration.geometry import SatelliteGeometry, satellite_geometry
 from navcore.papers import sp_acquisition as spa
-from navcore.papers import sp_missions_scenarios as sc
 from navcore.papers import sp_residual_acceleration as spr
+from navcore.papers import sp_scenario_wiring as sc
 from navcore.papers.sp_quotes import quoted
 from navcore.papers.sp_tables import GRADE_LABELS_NMI_PER_H
 from navcore.units import DEG, G0, GPS_L1_WAVELENGTH_M, MINUTE, PPM
@@ -1044,32 +1044,26 @@ CLAIMS = [
         "search at reacquisition adds seconds." + _FIT + " " + _MODEL,
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.6.2-tc-shorter",
         printed="The blackout period as a function of IMU architecture and IMU quality is shown in "
         "Figure 2.6. ... Even for the best IMU, the blackout time is reduced by only about 2 "
         "min",
         locator="Sec. 2.6.2 (Fig. 2.6)",
         quantity="every tightly coupled system has a shorter blackout than the loosely coupled one",
-        published=True,
-        unit="statement",
         compute=_tc_shorter,
-        tolerance=EXACT,
         expected_status="consistent",
         note="Blackout: fewer than four codes (loosely coupled, no receiver solution) or no code at all "
         "(tightly coupled), plus the Sec. 2.5 search at reacquisition." + _FIT + " " + _MODEL,
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.6.2-blackout-bandwidth",
         printed="The period of outage will also be a function of the bandwidth of the carrier tracking "
         "loops for each of the receivers.",
         locator="Sec. 2.6.2",
         quantity="the period of outage is a function of the bandwidth of the carrier tracking loops",
-        published=True,
-        unit="statement",
         compute=lambda: abs(bandwidth_effect_min()) * MINUTE >= sc.IN.step_s,
-        tolerance=EXACT,
         expected_status="consistent",
         note="The tightly coupled 1 nmi/h blackout with its Table 2.6 loop (0.37 rad/s, aided) against the "
         "same receiver with the table's unaided 18 rad/s loop, which sees all the dynamics: true if the "
@@ -1087,16 +1081,13 @@ CLAIMS = [
         + _MODEL,
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="SP-fig2.6-blackout-grade",
         printed="The blackout period as a function of IMU architecture and IMU quality is shown in "
         "Figure 2.6.",
         locator="Sec. 2.6.2 (Fig. 2.6)",
         quantity="the tightly coupled blackout varies with IMU quality",
-        published=True,
-        unit="statement",
         compute=lambda: grade_spread_min() * MINUTE >= sc.IN.step_s,
-        tolerance=EXACT,
         expected_status="consistent",
         note="Longest minus shortest tightly coupled blackout, search times included: true if the four "
         "differ by one sample (1 s) or more. The grade enters through the loop bandwidth (which does not "
@@ -1106,17 +1097,14 @@ CLAIMS = [
         "blackouts differ by minutes, the best instruments' longest." + _FIT + " " + _MODEL,
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.6.2-calibration-not-resistance",
         printed="For this particular scenario, the performance difference is due to better calibration "
         "of the inertial instruments rather than jamming resistance.",
         locator="Sec. 2.6.2",
         quantity="the blackout difference is due to better calibration of the inertial instruments rather "
         "than jamming resistance",
-        published=True,
-        unit="statement",
         compute=_calibration_rather_than_resistance,
-        tolerance=EXACT,
         expected_status="inconsistent",
         note="The loosely coupled to best tightly coupled shortening split by swapping one ingredient at a "
         "time: the carrier loop (jamming resistance), the range uncertainty searched at reacquisition "
@@ -1159,19 +1147,16 @@ CLAIMS = [
         "aircraft, raises it)." + _FIT + " " + _MODEL,
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="SP-fig2.7-tc1-below-lc1",
         printed="The tightly coupled 1-nm/h system benefits somewhat more by the GPS in-flight "
         "calibration than the loosely coupled system.",
         locator="Sec. 2.6.2 (Fig. 2.7)",
         quantity="just before reacquisition the tightly coupled 1 nmi/h error is below the loosely "
         "coupled 1 nmi/h error",
-        published=True,
-        unit="statement",
         compute=lambda: (
             errors_before_reacquisition()["TC 1 nmi/h"] < errors_before_reacquisition()["LC 1 nmi/h"]
         ),
-        tolerance=EXACT,
         expected_status="not-reproducible",
         note="The paper attributes the difference to better in-flight calibration; in the book's run the "
         "loosely coupled blackout is also longer (it needs four codes), which contributes."
@@ -1180,31 +1165,25 @@ CLAIMS = [
         + _MODEL,
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="SP-fig2.7-monotone-grade",
         printed="Thus, the better IMUs perform better yet when they are calibrated continuously by "
         "in-flight GPS measurements.",
         locator="Sec. 2.6.2 (Fig. 2.7)",
         quantity="tightly coupled errors just before reacquisition fall with IMU quality "
         "(10, 1, 0.5, 0.2 nmi/h)",
-        published=True,
-        unit="statement",
         compute=_monotone_errors,
-        tolerance=EXACT,
         expected_status="consistent",
         note=_MODEL + _FIT,
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.6.2-range-rate-cell",
         printed="In no case did the error growth in velocity cause the range rate uncertainty to any "
         "satellite to be greater than 10 m/s (one Doppler shift interval).",
         locator="Sec. 2.6.2 (Table 2.7 text)",
         quantity="at reacquisition no satellite's range-rate uncertainty exceeds 10 m/s (one Doppler cell)",
-        published=True,
-        unit="statement",
         compute=_range_rate_within_cell,
-        tolerance=EXACT,
         expected_status="consistent",
         note="$1\\sigma$ range-rate uncertainty along each satellite's line of sight at its own code "
         "reacquisition (velocity; the clock drift too in the convention's other reading), all systems "
@@ -1217,15 +1196,12 @@ CLAIMS = [
 #: in :mod:`navcore.papers.sp_quotes`).
 _CELLS_AND_SEC_2_8 = [
     *(_t27_claim(s, c) for s in spa.TABLE_2_7_ROWS for c in range(len(spa.TABLE_2_7_SATELLITES))),
-    Claim(
+    Claim.statement(
         id="SP-sec2.8-gps-aided-not-dramatic",
         locator="Sec. 2.8",
         quantity="with GPS, the error gain from the 10 to the 0.2 nmi/h IMU is far below the grade "
         "ratio (assertion 1)",
-        published=True,
-        unit="statement",
         compute=gps_aided_gain_not_dramatic,
-        tolerance=EXACT,
         expected_status="consistent",
         note="Horizontal $1\\sigma$ error of the tightly coupled 10 and 0.2 nmi/h systems 1 s before the "
         "flyby blackout (GPS tracked for the whole approach): their ratio (the flyby page gives it) "

@@ -3,8 +3,9 @@
 Published values are typed here once with their locators; every reproduced value is
 computed by the covariance-analysis engine (:mod:`navcore.integration.engine`)
 from Tables 2.4, 2.5 and 2.8 (:mod:`navcore.papers.sp_tables`) and the stated assumptions
-of :mod:`navcore.papers.sp_missions_scenarios`. Cross-checks on the printed times of
-Secs. 2.6.1 and 2.6.3 and on Table 2.5's columns are claims here too.
+of :mod:`navcore.papers.sp_mission_flights` and :mod:`navcore.papers.sp_scenario_wiring`.
+Cross-checks on the printed times of Secs. 2.6.1 and 2.6.3 and on Table 2.5's columns are
+claims here too.
 """
 
 from __future__ import annotations
@@ -30,7 +31,7 @@ from navcore.inertial.error_dynamics import (
 from navcore.inertial.imu import noise_only
 from navcore.inertial.trajectories import straight_and_level
 from navcore.integration.engine import circular_error_probable, run_covariance_analysis
-from navcore.papers import sp_missions_scenarios as sc
+from navcore.papers import sp_mission_flights as sc
 from navcore.papers.sp_quotes import quoted
 from navcore.papers.sp_tables import (
     GRADE_LABELS_NMI_PER_H,
@@ -585,81 +586,63 @@ CLAIMS = [
         note=_MISSION_NOTE + " Tolerance from 'about 10 times better'.",
         discussed_in="sp/21-missions",
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.6.1-tight-beats-loose",
         locator="Sec. 2.6.1",
         quantity="the tightly coupled 1.0 nmi/h system has a smaller position error than the loosely "
         "coupled one (at reacquisition and after 84 min)",
-        published=True,
-        unit="statement",
         compute=_tight_beats_loose,
-        tolerance=EXACT,
         expected_status="consistent",
         note=_MISSION_NOTE,
         discussed_in="sp/21-missions",
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.6.1-difference-shrinks",
         locator="Sec. 2.6.1",
         quantity="the tight-vs-loose difference diminishes with time (relative gap after 84 min "
         "smaller than after the 20-min blackout)",
-        published=True,
-        unit="statement",
         compute=_difference_shrinks,
-        tolerance=EXACT,
         expected_status="consistent",
         note=_MISSION_NOTE,
         discussed_in="sp/21-missions",
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.6.1-monotone-grade",
         locator="Sec. 2.6.1 (Figs. 2.4-2.5)",
         quantity="position errors fall monotonically with IMU quality (10, 1, 0.5, 0.2 nmi/h)",
-        published=True,
-        unit="statement",
         compute=_monotone_in_grade,
-        tolerance=EXACT,
         expected_status="consistent",
         note=_MISSION_NOTE + " Checked at reacquisition and after 84 min.",
         discussed_in="sp/21-missions",
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.6.1-velocity-rise",
         locator="Sec. 2.6.1 (Figs. 2.2-2.3)",
         quantity="loosely coupled velocity error rises from the first code loss (1020 s); the "
         "tightly coupled rise is delayed",
-        published=True,
-        unit="statement",
         compute=_lc_rises_tc_delayed,
-        tolerance=EXACT,
         expected_status="not-reproducible",
         note="Loosely coupled horizontal velocity $1\\sigma$ 60 s after the first code loss exceeds "
         "1.5 times its value just before, and the tightly coupled one is still below it. " + _MISSION_NOTE,
         discussed_in="sp/21-missions",
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.6.1-reacquisition-steps",
         locator="Sec. 2.6.1 (Figs. 2.2-2.3)",
         quantity="tightly coupled velocity error steps down at each code reacquisition; loosely "
         "coupled only when the fourth code is back",
-        published=True,
-        unit="statement",
         compute=_steps_at_reacquisition,
-        tolerance=EXACT,
         expected_status="not-reproducible",
         note="Compared 1 s before and after each reacquisition (2760, 2940, 3120, 3300 s). With "
         "the assumed clock the first pseudorange mostly re-estimates the clock, so the first "
         "step is small. " + _MISSION_NOTE,
         discussed_in="sp/21-missions",
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.8-better-gain-more",
         locator="Sec. 2.8, assertion 3 (and Sec. 2.6.2)",
         quantity="better inertial instruments gain more from in-flight alignment",
-        published=True,
-        unit="statement",
         compute=_better_gain_more,
-        tolerance=EXACT,
         expected_status="consistent",
         note="Gain = 84-min free-inertial error from the ground alignment only (Table 2.4 initial "
         "errors, which the paper describes as a ground calibration and alignment, gyrocompass "
@@ -700,14 +683,11 @@ CLAIMS = [
         "cross-check.",
         discussed_in="sp/21-missions",
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.6.3-tc10-beats-lc1",
         locator="Sec. 2.6.3 (Fig. 2.8)",
         quantity="at bomb release the tightly coupled 10 nmi/h system beats the loosely coupled 1 nmi/h",
-        published=True,
-        unit="statement",
         compute=_tc10_beats_lc1,
-        tolerance=EXACT,
         expected_status="not-reproducible",
         note="Horizontal position error at release after the paper's 159 s (LC) and 153 s (TC) of "
         "free inertial navigation on the book's fighter-bomber profile; the loosely coupled "
@@ -752,15 +732,12 @@ CLAIMS = [
         "no wider one.",
         discussed_in="sp/21-missions",
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.6.4-pointing-negligible",
         locator="Sec. 2.6.4",
         quantity="without Doppler, the target-location error 8 km away equals the position error "
         "(pointing error negligible)",
-        published=True,
-        unit="statement",
         compute=_pointing_negligible,
-        tolerance=EXACT,
         expected_status="consistent",
         note="$\\delta r_{tgt} = \\delta r + \\delta\\alpha \\times r$ with the full end covariance of "
         "position "
@@ -771,14 +748,11 @@ CLAIMS = [
         "of GPS-aided flight are fixed scenario design.",
         discussed_in="sp/21-missions",
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.6.4-doppler-improves",
         locator="Sec. 2.6.4 (Figs. 2.9-2.10)",
         quantity="Doppler ground-speed aiding reduces the target-location error for both grades",
-        published=True,
-        unit="statement",
         compute=_doppler_improves,
-        tolerance=EXACT,
         expected_status="consistent",
         note="Table 2.8 Doppler errors (bias and scale factor estimated by the filter, "
         "misalignment unmodelled), white noise assumed (0.1 m/s, band 0.03-0.3 m/s).",
@@ -802,7 +776,7 @@ CLAIMS = [
         "over the assumed ranges contains 50 %: the ratio rests on unpublished inputs.",
         discussed_in="sp/21-missions",
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.3-initial-errors",
         printed="The initial errors in position, velocity, and misalignment in fact have very little "
         "effect on the performance of the system as long as it operates for a significant "
@@ -810,10 +784,7 @@ CLAIMS = [
         locator="Sec. 2.3",
         quantity="the initial errors in position, velocity and misalignment have very little effect on "
         "the performance of the system (after a significant time)",
-        published=True,
-        unit="statement",
         compute=_initial_errors_little_effect,
-        tolerance=EXACT,
         expected_status="consistent",
         note="Tightly coupled 1 nmi/h sequential outage run once with the Table 2.4 initial position and "
         "velocity errors and the gyrocompass misalignment as they are, and once with all three "
@@ -822,32 +793,26 @@ CLAIMS = [
         "noticeable change (10 %; 1 % in the other reading). " + _MISSION_NOTE,
         discussed_in="sp/21-missions",
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.4-misalignment-not-critical",
         printed="Its values are not critical for the analysis because improvements in alignment due to "
         "in-flight maneuvers soon dominate the navigation results.",
         locator="Sec. 2.4 (after Table 2.5)",
         quantity="the initial misalignment's values are not critical, because in-flight alignment soon "
         "dominates",
-        published=True,
-        unit="statement",
         compute=_misalignment_not_critical,
-        tolerance=EXACT,
         expected_status="consistent",
         note="As SP-sec2.3-initial-errors with only the gyrocompass misalignment (its rows and columns, "
         "so its correlation with the instrument errors too) multiplied and divided by the check's "
         "factor. " + _MISSION_NOTE,
         discussed_in="sp/21-missions",
     ),
-    Claim(
+    Claim.statement(
         id="SP-tab2.4-clock-offset",
         printed="GPS user clock: Initial offset 5000 ms",
         locator="Table 2.4 (GPS user clock, initial offset '5000 ms')",
         quantity="no result depends on the unit of Table 2.4's initial clock offset",
-        published=True,
-        unit="statement",
         compute=_clock_offset_reading_immaterial,
-        tolerance=EXACT,
         expected_status="consistent",
         erratum="SP-E-tab2.4-clock-offset-unit",
         note="The printed '5000 ms' read as 5000 m (the book's reading) and as 5000 ns (1499 m): the "
@@ -855,17 +820,14 @@ CLAIMS = [
         "table prints (the missions page counts them). " + _MISSION_NOTE,
         discussed_in="sp/21-missions",
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.6.4-momentary-carrier-loss",
         printed="The resulting flight profile has high levels of acceleration and jerk, which caused "
         "occasional momentary loss of carrier lock. No effect on mission performance can be "
         "seen.",
         locator="Sec. 2.6.4",
         quantity="occasional momentary loss of carrier lock has no visible effect on mission performance",
-        published=True,
-        unit="statement",
         compute=lambda: momentary_loss_effect_pct() < IN.noticeable_change_pct,
-        tolerance=EXACT,
         expected_status="not-reproducible",
         note="The helicopter without Doppler (both grades) with every carrier lost for 1-5 s (assumed) "
         "at each terrain pull-up, once an undulation, through the GPS-aided flight, against the "
@@ -874,17 +836,14 @@ CLAIMS = [
         "terrain following (their dynamic error stays below a degree), so the losses are imposed.",
         discussed_in="sp/21-missions",
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.8-coupling-short-term",
         printed="For short time intervals after GPS loss, coupling architectures can make a difference "
         "in performance (because they affect calibration and alignment quality).",
         locator="Sec. 2.8, assertion 4",
         quantity="for short intervals after GPS loss coupling architectures make a difference (they "
         "affect calibration and alignment), which fades in the long run",
-        published=True,
-        unit="statement",
         compute=_coupling_matters_short_term,
-        tolerance=EXACT,
         expected_status="consistent",
         note="The head-on approach, where all satellites are lost together so that the architectures "
         "differ only in the calibration and alignment they reached: the loosely and tightly coupled "
@@ -912,15 +871,12 @@ _CROSS_CHECKS = [
         "the code losses and the 20-min outage (arithmetic on printed numbers).",
         discussed_in="sp/21-missions",
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.6.1-code-after-fourth-carrier",
         locator="Sec. 2.6.1",
         quantity="the first code loss (1020 s) follows the fourth carrier loss (360 s + $3\\times$ 3 min)",
-        published=True,
-        unit="statement",
         kind="cross-check",
         compute=code_loss_after_fourth_carrier,
-        tolerance=EXACT,
         expected_status="consistent",
         note="The fourth carrier loss is at $360 + 3\\times 180 = 900$ s, so code loss 'began after the "
         "fourth "
@@ -941,15 +897,12 @@ _CROSS_CHECKS = [
         note="159 s - 153 s of free inertial flight before bomb release (Sec. 2.6.3).",
         discussed_in="sp/21-missions",
     ),
-    Claim(
+    Claim.statement(
         id="SP-tab2.5-half-column",
         locator="Table 2.5",
         quantity="the 0.5 nmi/h column is half the 1.0 nmi/h column in every row but the gyro scale factor",
-        published=True,
-        unit="statement",
         kind="cross-check",
         compute=half_column_except_gyro_sf,
-        tolerance=EXACT,
         expected_status="consistent",
         note="Each 0.5 nmi/h cell against half the 1.0 nmi/h cell, within half a unit of the 0.5 cell's "
         "last digit plus half of the 1.0 cell's (the printed cells are both rounded): "

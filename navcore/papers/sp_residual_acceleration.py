@@ -218,6 +218,7 @@ def _col3_claim(g: str) -> Claim:
         expected_status="consistent",
         note=f"Column 2 ({TAB26_COL2_PPM[g]} ppm of a unit step, printed) times the printed 6 g: arithmetic "
         "on printed numbers, a cross-check.",
+        discussed_in=PAGE,
     )
 
 
@@ -236,6 +237,7 @@ def _col4_claim(g: str) -> Claim:
         "figures; the paper's worked example uses 0.011 g). With column 2 $\\times$ 6 g unrounded the "
         "10 nmi/h row would be 0.78. With the L1 carrier all values are 1.243 times larger "
         "(erratum SP-E-phase-conversion).",
+        discussed_in=PAGE,
     )
 
 
@@ -259,6 +261,7 @@ def _col2_claim(g: str) -> Claim:
         "radii need about 100, 12 and 12 arcsec of attitude error for the 10, 0.5 and 0.2 nmi/h IMUs, "
         "and a scale factor below the a-priori 179 ppm for the 1 nmi/h IMU, plausible after "
         "calibration. Used as input.",
+        discussed_in=PAGE,
     )
 
 
@@ -280,6 +283,7 @@ CLAIMS = [
         expected_status="consistent",
         note="Fig. 2.1's 17.67 rad/s with the fitted conversion (one cycle per foot), printed as 18; the "
         "table's other rows use 18. It reads the fitted conversion.",
+        discussed_in=PAGE,
     ),
     Claim(
         id="SP-eq2.u7-worked-example",
@@ -294,32 +298,28 @@ CLAIMS = [
         expected_status="consistent",
         note="0.7707 rad/s: the worked example's own arithmetic on printed numbers (0.011 g, 6 g, 18 rad/s), "
         "a cross-check.",
+        discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.5-right-factor",
         locator="Sec. 2.5, covariance of the residual acceleration",
         quantity="the printed right factor of the covariance is the transpose of the printed "
         "$3\\times 6$ matrix",
-        published=True,
-        unit="statement",
         kind="cross-check",
         compute=right_factor_is_transpose,
-        tolerance=EXACT,
         expected_status="consistent",
         note="$\\langle \\delta a\\, \\delta a^T \\rangle = H P H^T$ with the middle factor a "
         "$6\\times 6$ block "
         "matrix written in $2\\times 2$ shorthand; a "
         "check of the two printed matrices against each other, a cross-check.",
+        discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.5-H-sign",
         locator=r"Sec. 2.5, $3\times 6$ sensitivity matrix",
         quantity="the printed $3\\times 6$ matrix is the sensitivity of "
         "$\\operatorname{diag}(sf)\\, a + [\\delta\\theta \\times]\\, a$ for $a = (1,1,1)$",
-        published=True,
-        unit="statement",
         compute=printed_h_matches_skew_model,
-        tolerance=EXACT,
         expected_status="discrepant",
         erratum="SP-E-misalignment-sign",
         oracle=printed_h_matches_cross_product_jacobian,
@@ -327,6 +327,7 @@ CLAIMS = [
         note="The misalignment block has the opposite sign ($a \\times \\delta\\theta$); immaterial for "
         "uncorrelated "
         "errors, as in the radii computed here.",
+        discussed_in=PAGE,
     ),
 ]
 

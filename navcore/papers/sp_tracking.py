@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 from scipy import signal
 
-from navcore.claims import EXACT, Claim, Erratum, InputSet, Tolerance, input_cache, printed
+from navcore.claims import Claim, Erratum, InputSet, Tolerance, input_cache, printed
 from navcore.gnss.tracking import (
     aided_natural_frequency,
     distance_to_phase_deg,
@@ -180,6 +180,7 @@ CLAIMS = [
         "to this printed pair (90 deg at 17.67 rad/s): 360 deg per 0.3048 m. Not evidence. The stated "
         "300-m code length and the L1 carrier do not reproduce it (see the two discrepant claims and "
         "erratum SP-E-phase-conversion).",
+        discussed_in=PAGE,
     ),
     Claim(
         id="SP-fig2.1-omega0",
@@ -195,6 +196,7 @@ CLAIMS = [
         "360 deg per foot (fitted to "
         "this claim and SP-fig2.1-peak; not evidence). With the L1 carrier the same requirement gives "
         "22.37 rad/s. The conversion is a fit.",
+        discussed_in=PAGE,
     ),
     Claim(
         id="SP-fig2.1-peak-code300",
@@ -209,6 +211,7 @@ CLAIMS = [
         oracle=lambda: lsim_peak_deg(IN.code_length_m),
         oracle_tolerance=_LSIM_TOL,
         note="The conversion the text states gives a peak about 1000 times smaller than printed.",
+        discussed_in=PAGE,
     ),
     Claim(
         id="SP-fig2.1-peak-L1",
@@ -224,33 +227,28 @@ CLAIMS = [
         oracle_tolerance=_LSIM_TOL,
         note="A carrier loop tracks the L1 carrier, whose wavelength is c/1575.42 MHz = 0.1903 m: the 6-g "
         "step then peaks at 144.2 deg, and a 90 deg limit needs 22.37 rad/s.",
+        discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="SP-eq2.u1-closed-form",
         locator="Sec. 2.5, equation above Fig. 2.1",
         quantity="the closed form (exponent read as $-\\omega_0 t/2$) is the third-order loop's step error",
-        published=True,
-        unit="statement",
         compute=closed_form_matches_simulation,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Compared with a linear-system simulation of "
         "$E/\\Theta = s^3/(s^3 + 2\\omega_0 s^2 + 2\\omega_0^2 s + \\omega_0^3)$ driven by $t^2/2$ "
         "(Butterworth poles, $a_3 = b_3 = 2$); the $t^2$ of the source text is a misprint or a "
         "misreading of $t/2$ (erratum SP-E-exponent-t2).",
+        discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="SP-eq2.1-keeps-peak",
         locator="Eq. (2.1)",
         quantity="scaling $\\omega_0$ by the square root of the step ratio keeps the peak error unchanged",
-        published=True,
-        unit="statement",
         compute=eq21_keeps_peak,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Peaks found on a fine time grid (not from the peak factor) for the four aided steps of "
         "Table 2.6 against the 6 g, 18 rad/s unaided loop: equal to $10^{-9}$ relative, because the error is "
         "$R/\\omega_0^2$ times a function of $\\omega_0 t$.",
+        discussed_in=PAGE,
     ),
     Claim(
         id="SP-sec2.5-jerk-6g",
@@ -265,21 +263,19 @@ CLAIMS = [
         note="The step the paper substitutes for the jerk has the jerk's final acceleration: "
         "$10\\ \\mathrm{g/s} \\times 0.6\\ \\mathrm{s}$, "
         "arithmetic on printed numbers, a cross-check.",
+        discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="SP-sec2.5-step-vs-jerk",
         locator="Sec. 2.5",
         quantity="the 6-g step gives a larger peak error than the 10-g/s, 0.6-s jerk (more stringent)",
-        published=True,
-        unit="statement",
         compute=step_more_stringent_than_jerk,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Peaks at 17.67 rad/s with the L1 carrier; the ratio (about 4) does not depend on the "
         "conversion. 'Slightly' has no band in the prose table, and the requirement sets the natural "
         "frequency: there the step needs a natural frequency about 1.6 times the one the jerk needs (the "
         "jerk pulse's peak falls about as the cube of the natural frequency), while its peak error at "
         "one natural frequency is about 4 times the jerk's.",
+        discussed_in=PAGE,
     ),
     Claim(
         id="SP-sec2.5-half-chip-ns",
@@ -293,6 +289,7 @@ CLAIMS = [
         note="Half a P(Y) chip (10.23 Mchip/s) is 48.9 ns, which rounds to the printed 50 ns if its trailing "
         "zero is not significant; half a C/A chip would be 489 ns, so the code loop here tracks P(Y), "
         "while the 300-m phase convention of Fig. 2.1 suggests C/A.",
+        discussed_in=PAGE,
     ),
     Claim(
         id="SP-sec2.5-loose-carrier-5.83Hz",
@@ -308,6 +305,7 @@ CLAIMS = [
         "$\\omega_0 = 7.0$ rad/s. Missing: the loosely "
         "coupled loop's coefficients and the requirement behind 5.83 Hz, which Sec. 2.5 should give "
         "next to the value.",
+        discussed_in=PAGE,
     ),
 ]
 
