@@ -14,8 +14,8 @@ import numpy as np
 from scipy import optimize
 
 from navcore.claims import EXACT, Claim, Erratum, printed, prose
-from navcore.claims.core import PROSE_WORDS
 from navcore.claims.inputs import input_cache
+from navcore.claims.tolerances import PROSE_WORDS
 from navcore.location.clock_model import (
     clock_covariance,
 )

@@ -12,8 +12,8 @@ import numpy as np
 from scipy import optimize, special
 
 from navcore.claims import EXACT, Claim, Erratum, printed
-from navcore.claims.core import monte_carlo, prose
 from navcore.claims.inputs import input_cache
+from navcore.claims.tolerances import monte_carlo, prose
 from navcore.detection import jamming as jm
 from navcore.detection.neyman_pearson import (
     detection_index_from_jammer_ratio,
