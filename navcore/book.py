@@ -24,7 +24,7 @@ from typing import Any
 
 from navcore import figures as _figures
 from navcore import ledger
-from navcore.claims.core import STATUSES
+from navcore.claims.declarations import STATUSES
 from navcore.formatting import estimate_text, format_number, math_spans, number_formatter, tidy_numbers
 from navcore.ledger import text as ledger_text
 from navcore.ledger.interactive import InteractiveLedger

@@ -279,7 +279,7 @@ def summary_frame() -> Any:
     Returns
     -------
     pandas.DataFrame
-        One row per paper of :data:`~navcore.claims.core.PAPERS` (from :func:`summary`),
+        One row per paper of :data:`~navcore.claims.declarations.PAPERS` (from :func:`summary`),
         columns ``Paper``, ``Printed items``, ``With a claim``, ``Covered`` (a percentage as
         text), ``Numbered equations``, ``Checked by a claim``, ``Errata`` and ``Errata with
         a claim``.

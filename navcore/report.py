@@ -48,15 +48,15 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from navcore.claims.core import (
+from navcore.claims.declarations import (
     ERRATUM_BASES,
     ERRATUM_KINDS,
     PAPERS,
     STATUSES,
     TEXT_ONLY_CAVEAT,
     Erratum,
-    Evaluation,
 )
+from navcore.claims.evaluation import Evaluation
 from navcore.ledger.summary import findings_phrase
 from navcore.provenance import BuildProvenance, build_provenance, project_root
 
@@ -202,7 +202,7 @@ def findings_frame(errata: Sequence[Erratum]) -> Any:
     -------
     pandas.DataFrame
         Columns ``Kind``, one per basis that has findings, and ``all``; one row per kind of
-        :data:`~navcore.claims.core.ERRATUM_KINDS` and a last row ``all``, the counts of
+        :data:`~navcore.claims.declarations.ERRATUM_KINDS` and a last row ``all``, the counts of
         :func:`navcore.ledger.summary.findings_count_table`.
 
     Examples
@@ -764,7 +764,7 @@ def build_report(
     Parameters
     ----------
     paper : str
-        Paper key, one of :data:`~navcore.claims.core.PAPERS`.
+        Paper key, one of :data:`~navcore.claims.declarations.PAPERS`.
     evals : sequence of Evaluation, optional
         The paper's evaluations; ``None`` evaluates them through the ledger (and its on-disk
         cache, :func:`~navcore.ledger.registry.cache_dir`).

@@ -14,7 +14,7 @@ import re
 import pytest
 
 from navcore import ledger
-from navcore.claims.core import claim_quote
+from navcore.claims.quotes import claim_quote
 from navcore.papers.atc10_quotes import QUOTES
 from navcore.traceability import paper_text_path
 

@@ -1,6 +1,6 @@
 """One test per ledger claim, named by its id: the claim must pass its own check.
 
-The check depends on the declared status (see ``navcore.claims.core``): a reproduced or
+The check depends on the declared status (see ``navcore.claims.verdict``): a reproduced or
 consistent claim must agree with the published value within its tolerance; a discrepant claim
 must still disagree and must match its independent oracle; a not-reproducible claim whose band
 is too wide to decide must still derive that verdict; a claim that computes nothing is skipped

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from navcore import ledger
-from navcore.claims.core import ERRATUM_KINDS, Erratum
+from navcore.claims.declarations import ERRATUM_KINDS, Erratum
 
 
 def test_every_erratum_has_a_kind_in_the_vocabulary():

@@ -1214,7 +1214,7 @@ def test_canonical() -> None:
     assert gate._canonical(1.5) == "1.5"
     assert gate._canonical({"b": 1, "a": [2.0, 3]}) == '{"a": [2.0, 3], "b": 1}'
     assert gate._canonical(np.array([1.0, 2.0])) == "[1.0, 2.0]"
-    from navcore.claims.core import jsonable
+    from navcore.claims.json_coding import jsonable
 
     assert gate._canonical(float("nan")) == json.dumps(jsonable(float("nan")))
 

@@ -13,7 +13,7 @@ import sys
 
 import pytest
 
-from navcore.claims.core import from_jsonable, jsonable
+from navcore.claims.json_coding import from_jsonable, jsonable
 from navcore.ledger import EXACT, Claim, Erratum, Tolerance, evaluate, printed, validate_registry
 from navcore.ledger.tables import LedgerTable, json_dump
 from navcore.provenance import build_provenance

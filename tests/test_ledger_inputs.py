@@ -21,8 +21,8 @@ from pathlib import Path
 import pytest
 
 from navcore import ledger
-from navcore.claims.core import jsonable
 from navcore.claims.inputs import InputReadError, all_inputs, overriding, recording
+from navcore.claims.json_coding import jsonable
 from navcore.ledger import Claim, Evaluation, InputSet, Tolerance, evaluate, input_cache, printed, prose
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -523,7 +523,7 @@ def test_a_wrong_value_changes_the_verdict_not_the_tolerance(paper):
     """Substitute a value that reverses the claim's agreement with the print (far outside it when
     the claim agrees, the printed value itself when it does not): the derived verdict changes and
     the ledger fails; the tolerance, fixed before the computation, stays what it was."""
-    from navcore.claims.core import resolve_tolerance
+    from navcore.claims.declarations import resolve_tolerance
 
     for c in ledger.claims(paper):
         if c.compute is None:

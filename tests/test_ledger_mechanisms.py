@@ -3,8 +3,8 @@
 Each test builds its own inputs and claims here and never imports a paper module, so a
 mechanism that breaks fails here, not only through one registry claim among hundreds.
 
-Oracle in every test: the rule of LEDGER.md (and of :mod:`navcore.claims.core`'s and
-:mod:`navcore.claims.inputs`' docstrings) written out by hand for claims whose values are
+Oracle in every test: the rule of LEDGER.md (and of the docstrings of :mod:`navcore.claims.verdict`,
+:mod:`navcore.claims.runs` and :mod:`navcore.claims.inputs`) written out by hand for claims whose values are
 simple closed forms of their inputs, so which runs are made, which band results and which
 verdict follows can be counted by hand.
 
@@ -29,15 +29,12 @@ import itertools
 import pytest
 
 from navcore._validate import ModelDomainError
-from navcore.claims.core import (
-    MAX_CORNER_INPUTS,
-    MAX_READING_COMBINATIONS,
-    STATUSES,
-    from_jsonable,
-    jsonable,
-    left_out_of_band,
-)
+from navcore.claims.declarations import STATUSES
+from navcore.claims.evaluation import left_out_of_band
 from navcore.claims.inputs import Input, overriding, recording
+from navcore.claims.json_coding import from_jsonable, jsonable
+from navcore.claims.runs import MAX_READING_COMBINATIONS
+from navcore.claims.verdict import MAX_CORNER_INPUTS
 from navcore.ledger import Claim, InputSet, Tolerance, evaluate, input_cache, printed
 from navcore.ledger.interactive import InteractiveLedger
 from navcore.ledger.text import _band_text
@@ -210,7 +207,7 @@ def test_the_additive_envelope_only_widens_when_an_input_is_added():
     over random rows (seeded)."""
     import numpy as np
 
-    from navcore.claims.core import additive_envelope
+    from navcore.claims.verdict import additive_envelope
 
     rng = np.random.default_rng(27)
     for _ in range(200):

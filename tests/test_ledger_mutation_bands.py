@@ -3,8 +3,9 @@
 Each claim's computation logs the values of the inputs it read, so a test sees exactly which runs
 ``_band_runs`` made, in which order and under which overrides. No paper module is imported.
 
-Oracle in every test: the module docstring of :mod:`navcore.claims.core` ("Band runs", "Beyond
-six inputs", "Readings") written out by hand: each assumed input one at a time over its band
+Oracle in every test: the module docstrings of :mod:`navcore.claims.runs` ("Band runs") and
+:mod:`navcore.claims.verdict` ("Beyond six inputs", "Readings") written out by hand: each
+assumed input one at a time over its band
 points (the others nominal), then every corner of the box up to six inputs, beyond that the two
 diagonal corners, the two half-and-half corners and the two steepest corners; the additive
 envelope is the nominal value plus each input's largest rise and minus each largest fall.
@@ -18,14 +19,9 @@ import math
 import pytest
 
 from navcore._validate import ModelDomainError
-from navcore.claims.core import (
-    MAX_READING_COMBINATIONS,
-    _band_runs,
-    _steepest_corners,
-    additive_envelope,
-    reading_combinations,
-)
 from navcore.claims.inputs import Input, band_ahead, for_each_band_run
+from navcore.claims.runs import MAX_READING_COMBINATIONS, _band_runs, _steepest_corners, reading_combinations
+from navcore.claims.verdict import additive_envelope
 from navcore.ledger import Claim, InputSet, Tolerance
 
 TOL = Tolerance(reason="test", abs=0.5, policy="printed-digits")

@@ -2,8 +2,8 @@
 band, readings, precision readings, envelope, left-out runs) and the note and JSON it writes
 (issue 31, mutation survivors). No paper module is imported; every claim is a closed form.
 
-Oracle in every test: the verdict rule and the record described in :mod:`navcore.claims.core`
-(module docstring, :class:`~navcore.claims.core.Evaluation`) applied by hand to claims such as
+Oracle in every test: the verdict rule and the record described in :mod:`navcore.claims.verdict`
+(module docstring, :class:`~navcore.claims.evaluation.Evaluation`) applied by hand to claims such as
 ``14 - loss`` with ``loss`` over [1, 3], whose values, bands and verdicts are read off directly.
 """
 
@@ -13,16 +13,11 @@ import numpy as np
 import pytest
 
 from navcore._validate import ModelDomainError
-from navcore.claims.core import (
-    EXACT,
-    PRECISION_LOOSE,
-    PRECISION_READING,
-    PRECISION_STRICT,
-    _coerce,
-    claim_quote,
-    jsonable,
-    resolve_tolerance,
-)
+from navcore.claims.declarations import resolve_tolerance
+from navcore.claims.json_coding import jsonable
+from navcore.claims.quotes import claim_quote
+from navcore.claims.runs import _coerce
+from navcore.claims.tolerances import EXACT, PRECISION_LOOSE, PRECISION_READING, PRECISION_STRICT
 from navcore.ledger import Claim, InputSet, Tolerance, evaluate, printed
 
 IN = InputSet("SP", "mutation_evaluate")
@@ -389,7 +384,7 @@ def test_claim_quote_sources():
     value, tol = printed("17.67")
     c = make(published=value, tolerance=tol)
     assert claim_quote(c) == ("17.67", "digits")
-    from navcore.claims.core import prose
+    from navcore.claims.tolerances import prose
 
     assert claim_quote(make(tolerance=prose("about"))) == ("about", "word")
     assert claim_quote(make(tolerance=HALF)) == ("", "none")

@@ -2,7 +2,7 @@
 survivors of ``Evaluation.note``, ``_reading_words``, ``_reading_text``, ``as_json``, ``_plain``,
 ``Tolerance.describe``, and the ledger table's ``format_value`` and ``rows``).
 
-Each test builds an :class:`~navcore.claims.core.Evaluation` directly (its readings, band, inputs
+Each test builds an :class:`~navcore.claims.evaluation.Evaluation` directly (its readings, band, inputs
 and flags written by hand), so the sentence the note must add is fixed by the record alone.
 
 Oracle: the sentences and formats the docstrings of :meth:`Evaluation.note` and
@@ -15,15 +15,8 @@ import math
 
 import pytest
 
-from navcore.claims.core import (
-    EXACT,
-    PRECISION_LOOSE,
-    PRECISION_READING,
-    PRECISION_STRICT,
-    Evaluation,
-    _plain,
-    printed,
-)
+from navcore.claims.evaluation import Evaluation, _plain
+from navcore.claims.tolerances import EXACT, PRECISION_LOOSE, PRECISION_READING, PRECISION_STRICT, printed
 from navcore.ledger import Claim, Erratum, InputSet, Tolerance
 from navcore.ledger.tables import rows
 from navcore.ledger.text import format_value, published_text

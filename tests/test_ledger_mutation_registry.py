@@ -24,9 +24,9 @@ import joblib
 import numpy as np
 import pytest
 
-from navcore.claims import core as ledger_core
+from navcore.claims import declarations as claim_declarations
 from navcore.claims import inputs as ledger_inputs
-from navcore.claims.core import from_jsonable, jsonable
+from navcore.claims.json_coding import from_jsonable, jsonable
 from navcore.ledger import EXACT, Claim, Erratum, InputSet, evaluate, printed, registry
 
 IN = InputSet("WF", "mutation_registry")
@@ -71,11 +71,11 @@ class _Exploding(types.ModuleType):
 
 
 # the synthetic source tree: paper module -> navcore.models.a -> navcore.models.b (in a
-# function); the claims' core imports navcore.models.c, which is not followed
+# function); a claims module imports navcore.models.c, which is not followed
 SOURCES = {
     "__init__.py": "",
     "claims/__init__.py": "",
-    "claims/core.py": "import navcore.models.c\n",
+    "claims/runs.py": "import navcore.models.c\n",
     "ledger/__init__.py": "",
     "papers/__init__.py": "",
     "models/__init__.py": "",
@@ -93,7 +93,7 @@ SOURCES = {
 @pytest.fixture(autouse=True)
 def _own_errata(monkeypatch):
     """Every erratum constructed registers itself (``claim_errata``): the synthetic ones here only."""
-    monkeypatch.setattr(ledger_core, "_ERRATA_BY_ID", dict(ledger_core._ERRATA_BY_ID))
+    monkeypatch.setattr(claim_declarations, "_ERRATA_BY_ID", dict(claim_declarations._ERRATA_BY_ID))
 
 
 @pytest.fixture
@@ -355,7 +355,7 @@ def test_module_file_and_dependencies(synthetic):
     assert registry._module_file("navcore.models.nothing") is None
     assert registry._module_file("navcore.data") is None
     expected = (
-        "__init__.py", "claims/__init__.py", "claims/core.py", "data/read.txt", "data/rows.csv",
+        "__init__.py", "claims/__init__.py", "claims/runs.py", "data/read.txt", "data/rows.csv",
         "data/table.json", "ledger/__init__.py", "models/__init__.py", "models/a.py", "models/b.py",
         "papers/__init__.py", "papers/wf_alpha.py",
     )  # fmt: skip
@@ -719,12 +719,12 @@ def test_evaluations_and_counts(synthetic, monkeypatch):
     assert parallel_calls[-1] == (ALL_IDS, -1)
     assert registry.evaluations("KZL", "KZL-none") == []
 
-    zero = dict.fromkeys(ledger_core.STATUSES, 0)
+    zero = dict.fromkeys(claim_declarations.STATUSES, 0)
     wf = zero | {"reproduced": 3, "discrepant": 1, "error": 1, "total": 5}
     assert registry.counts("WF") == {"WF": wf}
-    assert list(registry.counts("WF")["WF"]) == [*ledger_core.STATUSES, "error", "total"]
+    assert list(registry.counts("WF")["WF"]) == [*claim_declarations.STATUSES, "error", "total"]
     everything = registry.counts()
-    assert list(everything) == list(ledger_core.PAPERS)
+    assert list(everything) == list(claim_declarations.PAPERS)
     assert everything == {
         "WF": wf,
         "SP": zero | {"total": 0},

@@ -15,7 +15,8 @@ from types import SimpleNamespace
 
 import pytest
 
-from navcore.claims.core import TEXT_ONLY_CAVEAT, Evaluation
+from navcore.claims.declarations import TEXT_ONLY_CAVEAT
+from navcore.claims.evaluation import Evaluation
 from navcore.ledger import Claim, Erratum, Tolerance, evaluate
 from navcore.ledger import tables as tables_module
 from navcore.ledger.tables import CountsTable, ErrataList, FindingsTable, _claim_link_html
@@ -264,7 +265,7 @@ def test_counts_table(fake_counts):
 
 
 def test_small_pieces_of_the_ledger_page():
-    from navcore.claims.core import _n_runs, left_out_of_band
+    from navcore.claims.evaluation import _n_runs, left_out_of_band
     from navcore.ledger.interactive import InteractiveLedger, _band_html, _left_out_brief
     from navcore.ledger.tables import LedgerTable
     from navcore.ledger.text import _md_escape, quote_text

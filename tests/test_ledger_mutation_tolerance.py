@@ -1,6 +1,6 @@
 """The ledger's tolerance policies and quote rules, value by value (issue 31, mutation survivors).
 
-Oracle in every test: the policy as LEDGER.md and :mod:`navcore.claims.core` state it, applied by
+Oracle in every test: the policy as LEDGER.md and :mod:`navcore.claims.tolerances` state it, applied by
 hand to a printed text: half a unit in the last printed digit (``"17.67"`` -> 0.005, ``"1.2e-3"``
 -> 5e-5, ``"2750"`` -> 0.5, or 5 if its trailing zero is not significant), the prose table's
 bands, a figure's reading resolution, and the numbers a quote prints. Synthetic, no registry.
@@ -12,19 +12,16 @@ import math
 
 import pytest
 
-from navcore.claims.core import (
+from navcore.claims.quotes import label_prints_value, quote_has_number, quote_numbers, quote_policies
+from navcore.claims.tolerances import (
     PROSE_WORDS,
     Tolerance,
     _number_math,
     _trailing_zeros,
     figure_reading,
-    label_prints_value,
     monte_carlo,
     printed,
     prose,
-    quote_has_number,
-    quote_numbers,
-    quote_policies,
 )
 
 # --- Tolerance --------------------------------------------------------------------------------

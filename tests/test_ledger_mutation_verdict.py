@@ -1,7 +1,8 @@
 """The ledger's verdict rule at its edges, on synthetic claims (issue 31, mutation survivors).
 
-Each test pins one comparison of the rule (:mod:`navcore.claims.core`, "Verdicts", "A band too
-wide to decide", "Trailing zeros") at the value where a changed operator or constant would give
+Each test pins one comparison of the rule (:mod:`navcore.claims.verdict`, "Verdicts", "A band too
+wide to decide"; :mod:`navcore.claims.tolerances`, "Trailing zeros") at the value where a
+changed operator or constant would give
 another answer: a value exactly at the tolerance's edge, a band exactly a factor 3 wide, a band
 touching zero. No paper module is imported and nothing is evaluated over the registry.
 
@@ -16,9 +17,9 @@ import math
 
 import pytest
 
-from navcore.claims.core import (
+from navcore.claims.tolerances import EXACT
+from navcore.claims.verdict import (
     BAND_FACTOR,
-    EXACT,
     _band_satisfies,
     _outcome,
     _satisfies,
@@ -348,7 +349,7 @@ def test_numpy_booleans_are_truth_values():
     a numpy boolean for a number (found by mutation testing)."""
     import numpy as np
 
-    from navcore.claims.core import _is_truth, additive_envelope
+    from navcore.claims.verdict import _is_truth, additive_envelope
     from navcore.ledger import text
 
     # oracle: the docstrings ("a Python or numpy boolean"; the envelope is None for a truth value)

@@ -3,7 +3,7 @@ what agrees (the value, or only part of its band), which readings are named, sen
 a noun phrase, numbers at the claim's digits, singular count units, table-valued inputs as text,
 the ledger's table of prose words named, and no range whose two ends print the same.
 
-Each test builds an :class:`~navcore.claims.core.Evaluation` by hand (its readings, band and
+Each test builds an :class:`~navcore.claims.evaluation.Evaluation` by hand (its readings, band and
 tolerance written out), so the sentence is fixed by the record alone.
 """
 
@@ -11,17 +11,8 @@ from __future__ import annotations
 
 import math
 
-from navcore.claims.core import (
-    EXACT,
-    PRECISION_LOOSE,
-    PRECISION_READING,
-    PRECISION_STRICT,
-    Evaluation,
-    _plain,
-    note_digits,
-    printed,
-    reader_label,
-)
+from navcore.claims.evaluation import Evaluation, _plain, note_digits, reader_label
+from navcore.claims.tolerances import EXACT, PRECISION_LOOSE, PRECISION_READING, PRECISION_STRICT, printed
 from navcore.ledger import Claim, InputSet, Tolerance
 from navcore.ledger.interactive import _band_html
 from navcore.ledger.text import _agreeing_reading_text, _band_text, _table_value_text

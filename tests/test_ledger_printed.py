@@ -3,7 +3,7 @@
 Nothing is evaluated here: the claims are loaded and their quoted printed text is read.
 
 * every claim that quotes the paper has a tolerance policy its words admit
-  (:func:`~navcore.claims.core.quote_policies`: "approximately", "about", "~", "of the order
+  (:func:`~navcore.claims.quotes.quote_policies`: "approximately", "about", "~", "of the order
   of", "roughly", "nearly" -> prose; "read from the figures" -> figure-reading; otherwise the
   printed digits, exact for integers and truth values, a run count's Monte Carlo);
 * a claim with no quote of the paper yet is listed in ``printed_quote_todo.txt`` (a new claim
@@ -16,7 +16,8 @@ from __future__ import annotations
 from pathlib import Path
 
 from navcore import ledger
-from navcore.claims.core import claim_quote, quote_has_number, quote_policies, resolve_tolerance
+from navcore.claims.declarations import resolve_tolerance
+from navcore.claims.quotes import claim_quote, quote_has_number, quote_policies
 from navcore.ledger.allowlists import PUBLISHED_NOT_IN_QUOTE
 
 TODO = Path(__file__).with_name("printed_quote_todo.txt")

@@ -22,21 +22,10 @@ import math
 
 import pytest
 
-from navcore.claims.core import (
-    BAND_FACTOR,
-    MAX_READING_COMBINATIONS,
-    TEXT_ONLY_CAVEAT,
-    Erratum,
-    band_spread,
-    band_too_wide,
-    claim_errata,
-    claim_quote,
-    derive_status,
-    quote_has_number,
-    quote_numbers,
-    quote_policies,
-    reading_combinations,
-)
+from navcore.claims.declarations import TEXT_ONLY_CAVEAT, Erratum, claim_errata
+from navcore.claims.quotes import claim_quote, quote_has_number, quote_numbers, quote_policies
+from navcore.claims.runs import MAX_READING_COMBINATIONS, reading_combinations
+from navcore.claims.verdict import BAND_FACTOR, band_spread, band_too_wide, derive_status
 from navcore.ledger import Claim, InputSet, Tolerance, evaluate, printed, prose
 from navcore.ledger.registry import validate_registry
 

@@ -19,7 +19,7 @@ def test_presentation_modules_are_not_in_a_claim_key_but_the_evaluation_is():
     evaluating ledger modules and none of the presentation modules."""
     for c in registry.claims():
         deps = set(registry.claim_dependencies(c.id))
-        assert {"claims/core.py", "claims/inputs.py", "ledger/registry.py"} <= deps, c.id
+        assert {"claims/runs.py", "claims/inputs.py", "ledger/registry.py"} <= deps, c.id
         assert not {f"ledger/{name}" for name in registry._PRESENTATION} & deps, c.id
 
 
@@ -45,7 +45,7 @@ def test_evaluating_claims_imports_no_presentation_module():
         [sys.executable, "-c", code], cwd=ROOT, env=env, capture_output=True, text=True, check=True
     )
     loaded = set(json.loads(out.stdout.strip().splitlines()[-1]))
-    assert "navcore.claims.core" in loaded
+    assert "navcore.claims.runs" in loaded
     assert not {f"navcore.ledger.{name.removesuffix('.py')}" for name in registry._PRESENTATION} & loaded
 
 

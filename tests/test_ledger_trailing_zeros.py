@@ -14,13 +14,9 @@ import json
 
 import pytest
 
-from navcore.claims.core import (
-    PRECISION_LOOSE,
-    PRECISION_READING,
-    PRECISION_STRICT,
-    Erratum,
-    precision_status,
-)
+from navcore.claims.declarations import Erratum
+from navcore.claims.tolerances import PRECISION_LOOSE, PRECISION_READING, PRECISION_STRICT
+from navcore.claims.verdict import precision_status
 from navcore.ledger import Claim, InputSet, Tolerance, evaluate, printed
 
 IN = InputSet("SP", "synthetic_trailing_zeros")

@@ -15,7 +15,7 @@ import re
 import pytest
 
 from navcore import ledger
-from navcore.claims.core import claim_quote
+from navcore.claims.quotes import claim_quote
 from navcore.papers import kzl_quotes, sp_quotes, wf_quotes
 from navcore.traceability import paper_text_path
 

@@ -151,4 +151,4 @@ def test_claim_dependencies_follow_the_imports():
     deps = registry.claim_dependencies("KZL-fig4-dd-phases-robust")
     assert {"integration/ekf_ins_gnss.py", "inertial/strapdown.py", "papers/kzl_scenario.py"} <= set(deps)
     assert not any(d.startswith("detection/") for d in deps)
-    assert "claims/core.py" in deps and "papers/paper_items.json" in deps
+    assert "claims/runs.py" in deps and "papers/paper_items.json" in deps

@@ -235,7 +235,7 @@ def test_every_quote_sets_its_formulas_as_math():
     the JSON and CSV exports) sets each formula as math: the transcription left many bare
     (``\\mathbf{H}``, ``p_d``, ``P_{DL}``, a displayed equation cut at one of its ``$$``)."""
     from navcore import ledger
-    from navcore.claims.core import claim_quote
+    from navcore.claims.quotes import claim_quote
 
     quotes = [(c.id, claim_quote(c)) for c in ledger.claims()]
     assert sum(src == "claim" for _, (_, src) in quotes) > 400
@@ -300,7 +300,7 @@ def test_quote_markup_is_rendered_not_shown():
     rendered in a claim row, HTML and PDF, and its words are kept: no quote shows plain math or
     literal asterisks. Oracle: hand-written cells, then every claim's quote."""
     from navcore import ledger
-    from navcore.claims.core import claim_quote
+    from navcore.claims.quotes import claim_quote
     from navcore.ledger.text import _printed_html, _printed_tex
 
     cell = _printed_html("the performance of the matched filter detector **deteriorates**")

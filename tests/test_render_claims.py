@@ -408,7 +408,7 @@ def test_quote_math_makes_a_cut_formula_whole(piece, made_whole):
 
 def _claim_quotes() -> list[tuple[str, str]]:
     from navcore import ledger
-    from navcore.claims.core import claim_quote
+    from navcore.claims.quotes import claim_quote
 
     quotes = [(c.id, claim_quote(c)) for c in ledger.claims()]
     return [(cid, q) for cid, (q, src) in quotes if src == "claim"]

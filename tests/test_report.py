@@ -14,7 +14,7 @@ import pytest
 
 from navcore import ledger
 from navcore.__main__ import main
-from navcore.claims.core import STATUSES
+from navcore.claims.declarations import STATUSES
 from navcore.report import (
     UNRESOLVED,
     FindingsBlock,

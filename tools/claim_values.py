@@ -80,7 +80,7 @@ def declared(claim: Any) -> dict[str, Any]:
     >>> d["published"], d["unit"], d["tolerance"]["policy"], d["computes"]
     (2.0, 'm', 'exact', False)
     """
-    from navcore.claims.core import resolve_tolerance
+    from navcore.claims.declarations import resolve_tolerance
 
     return {
         "published": claim.published if isinstance(claim.published, bool) else float(claim.published),
@@ -126,7 +126,7 @@ def values(evaluation: Any) -> dict[str, Any]:
     >>> values(ev)["readings"], values(ev)["sensitivity"]
     ([[1.4, None]], [['P.m.x', [[0.5, 1.0], [2.0, 2.0]]]])
     """
-    from navcore.claims.core import jsonable
+    from navcore.claims.json_coding import jsonable
 
     record = evaluation.as_json()
     return {

@@ -1371,7 +1371,7 @@ def _load_claims(target: Target) -> dict[str, tuple[Any, str]]:
 
 
 def _canonical(value: Any) -> str:
-    from navcore.claims.core import jsonable
+    from navcore.claims.json_coding import jsonable
 
     try:
         return json.dumps(jsonable(value), sort_keys=True)
@@ -1382,7 +1382,7 @@ def _canonical(value: Any) -> str:
 def claims_metadata(target: Target) -> dict[str, Any]:
     """Run in a child: every claim's paper, module, published value and tolerance; the third-party
     modules the package imports (the perturbation parent preloads them)."""
-    from navcore.claims.core import resolve_tolerance
+    from navcore.claims.declarations import resolve_tolerance
 
     claims = _load_claims(target)
     meta = {}
@@ -1450,7 +1450,7 @@ class _Exposure:
 
 
 def _evaluate(claim: Any, exposure_prefix: str) -> dict[str, Any]:
-    from navcore.claims.core import _run
+    from navcore.claims.runs import _run
 
     t0 = time.perf_counter()
     expo = _Exposure(exposure_prefix) if (claim.is_statement and exposure_prefix) else None

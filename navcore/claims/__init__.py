@@ -1,9 +1,12 @@
 """Claims, errata, inputs and the verdict rule: what a paper module declares.
 
 A paper module (``navcore.papers``) states, for each number the paper publishes, a
-:class:`~navcore.claims.core.Claim` with its tolerance and expected verdict, each erratum as an
-:class:`~navcore.claims.core.Erratum`, and its inputs in an :class:`~navcore.claims.inputs.InputSet`;
-:func:`~navcore.claims.core.evaluate` derives a claim's verdict. The
+:class:`~navcore.claims.declarations.Claim` with its tolerance
+(:mod:`~navcore.claims.tolerances`) and expected verdict, each erratum as an
+:class:`~navcore.claims.declarations.Erratum`, and its inputs in an
+:class:`~navcore.claims.inputs.InputSet`; :func:`~navcore.claims.runs.evaluate` derives a
+claim's verdict by the rule of :mod:`~navcore.claims.verdict`, into an
+:class:`~navcore.claims.evaluation.Evaluation`. The
 registry of every paper's claims, its rendering and its summaries are the ledger's
 (``navcore.ledger``), which re-exports these names. Typical use from a paper module::
 
@@ -26,31 +29,32 @@ registry of every paper's claims, its rendering and its summaries are the ledger
     ]
 """
 
-from navcore.claims.core import (
-    BAND_FACTOR,
+from navcore.claims.declarations import (
     ERRATUM_BASES,
-    EXACT,
     KINDS,
     PAPERS,
-    POLICIES,
-    PROSE_WORDS,
     RELATIONS,
     STATUSES,
     TEXT_ONLY_CAVEAT,
     Claim,
     Erratum,
-    Evaluation,
-    Tolerance,
     claim_errata,
-    claim_quote,
-    evaluate,
+)
+from navcore.claims.evaluation import Evaluation
+from navcore.claims.inputs import Input, InputSet, band_ahead, for_each_band_run, input_cache
+from navcore.claims.quotes import claim_quote, quote_policies
+from navcore.claims.runs import evaluate
+from navcore.claims.tolerances import (
+    EXACT,
+    POLICIES,
+    PROSE_WORDS,
+    Tolerance,
     figure_reading,
     monte_carlo,
     printed,
     prose,
-    quote_policies,
 )
-from navcore.claims.inputs import Input, InputSet, band_ahead, for_each_band_run, input_cache
+from navcore.claims.verdict import BAND_FACTOR
 
 __all__ = [
     "BAND_FACTOR",

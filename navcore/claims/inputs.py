@@ -10,7 +10,7 @@ module defines. Each input is declared once with where it comes from:
     read from a figure against one computed, a modelling constant with a standard
     alternative); ``readings`` labels every admissible reading in words, the one used
     included (a single ``alternative`` is shorthand for two readings), and the ledger weighs
-    them all (:mod:`navcore.claims.core`, "Readings").
+    them all (:mod:`navcore.claims.verdict`, "Readings").
 ``assumed``
     not in the paper; a nominal value, a plausible ``low``-``high`` range and the reason for
     both. The ledger evaluates the claim across the range and reports the band.
@@ -388,7 +388,7 @@ class InputSet:
         """Declare a reading the text leaves open, with every admissible reading.
 
         The ledger evaluates each claim that reads it under every reading and weighs them
-        (:mod:`navcore.claims.core`, "Readings"): a claim is discrepant only if every
+        (:mod:`navcore.claims.verdict`, "Readings"): a claim is discrepant only if every
         admissible reading disagrees.
 
         Parameters

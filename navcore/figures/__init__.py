@@ -32,7 +32,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.figure import Figure
 
-from navcore.claims.core import PAPERS
+from navcore.claims.declarations import PAPERS
 
 __all__ = [
     "STYLE",
@@ -213,7 +213,7 @@ def register(
     fig_id : str
         File stem and glue name, starting with the paper key (``"SP-fig2.1"``); unique.
     paper : str
-        Paper key, one of :data:`~navcore.claims.core.PAPERS`.
+        Paper key, one of :data:`~navcore.claims.declarations.PAPERS`.
     reproduces : str
         The paper figure it reproduces (``"Fig. 2.1"``), or ``"new"``.
     caption : str

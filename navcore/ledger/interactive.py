@@ -11,11 +11,8 @@ from collections.abc import Sequence
 from importlib import resources
 from typing import Any
 
-from navcore.claims.core import (
-    STATUSES,
-    Evaluation,
-    _n_runs,
-)
+from navcore.claims.declarations import STATUSES
+from navcore.claims.evaluation import Evaluation, _n_runs
 from navcore.formatting import unit_text
 from navcore.ledger.tables import (
     LedgerTable,
@@ -84,7 +81,7 @@ class InteractiveLedger:
     HTML: a plain table (readable without JavaScript) with a small inline script that sorts
     by any column, filters by paper, verdict and (when the claims carry it) kind, searches the
     text, and downloads the rows shown as CSV or JSON (the records of
-    :meth:`~navcore.claims.core.Evaluation.as_json`, so the download is the command line's
+    :meth:`~navcore.claims.evaluation.Evaluation.as_json`, so the download is the command line's
     JSON; see :func:`~navcore.ledger.tables.json_export` and
     :func:`~navcore.ledger.tables.csv_export`), with the build's provenance where the book put it
     on the page (a JSON script element ``navcore-provenance``). Columns for

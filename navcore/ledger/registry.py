@@ -21,16 +21,10 @@ from functools import cache
 from pathlib import Path
 from typing import Any
 
-from navcore.claims.core import (
-    PAPERS,
-    STATUSES,
-    Claim,
-    Erratum,
-    Evaluation,
-    evaluate,
-    from_jsonable,
-    jsonable,
-)
+from navcore.claims.declarations import PAPERS, STATUSES, Claim, Erratum
+from navcore.claims.evaluation import Evaluation
+from navcore.claims.json_coding import from_jsonable, jsonable
+from navcore.claims.runs import evaluate
 
 __all__ = [
     "cache_dir",
@@ -199,7 +193,7 @@ def validate_registry(all_claims: list[Claim], all_errata: list[Erratum]) -> Non
 def _check_published_is_printed(all_claims: list[Claim]) -> None:
     """Refuse a number claim whose quote (the claim's own, or the digits given to ``printed``)
     does not print its published value, unless it is a reasoned exception."""
-    from navcore.claims.core import claim_quote, quote_has_number
+    from navcore.claims.quotes import claim_quote, quote_has_number
     from navcore.ledger.allowlists import PUBLISHED_NOT_IN_QUOTE
 
     for c in all_claims:
@@ -222,7 +216,7 @@ def claims(paper: str | None = None, prefix: str | None = None) -> tuple[Claim, 
     Parameters
     ----------
     paper : str or None, optional
-        Paper key, one of :data:`~navcore.claims.core.PAPERS` (``"KZL"``); ``None`` for
+        Paper key, one of :data:`~navcore.claims.declarations.PAPERS` (``"KZL"``); ``None`` for
         every paper. Only that paper's modules are imported.
     prefix : str or None, optional
         Keep only the claims whose id starts with it (``"KZL-eq"``); a prefix that starts
@@ -231,7 +225,7 @@ def claims(paper: str | None = None, prefix: str | None = None) -> tuple[Claim, 
     Returns
     -------
     tuple of Claim
-        The claims, by paper in the order of :data:`~navcore.claims.core.PAPERS`, then in
+        The claims, by paper in the order of :data:`~navcore.claims.declarations.PAPERS`, then in
         the order their modules define them.
 
     Raises
@@ -261,12 +255,12 @@ def errata(paper: str | None = None) -> tuple[Erratum, ...]:
     Parameters
     ----------
     paper : str or None, optional
-        Paper key, one of :data:`~navcore.claims.core.PAPERS`; ``None`` for every paper.
+        Paper key, one of :data:`~navcore.claims.declarations.PAPERS`; ``None`` for every paper.
 
     Returns
     -------
     tuple of Erratum
-        The errata, by paper in the order of :data:`~navcore.claims.core.PAPERS`, then in
+        The errata, by paper in the order of :data:`~navcore.claims.declarations.PAPERS`, then in
         the order their modules define them.
 
     Raises
@@ -455,7 +449,7 @@ def claim_dependencies(claim_id: str) -> tuple[str, ...]:
     Examples
     --------
     >>> deps = claim_dependencies(claims("KZL")[0].id)
-    >>> "claims/core.py" in deps, "integration/ekf_ins_gnss.py" in deps, "detection/roc.py" in deps
+    >>> "claims/runs.py" in deps, "integration/ekf_ins_gnss.py" in deps, "detection/roc.py" in deps
     (True, True, False)
     >>> "ledger/tables.py" in deps
     False
@@ -568,7 +562,7 @@ def _cached(claim_id: str) -> Evaluation | None:
         if _strict_evaluation() and data.get("strict") is not True:
             return None  # made without the strict rules: it may hide a warning
         c = claim(claim_id)
-        from navcore.claims.core import resolve_tolerance
+        from navcore.claims.declarations import resolve_tolerance
 
         fields = {k: from_jsonable(data[k]) for k in _RECORD_FIELDS if k != "inputs"}
         inputs = tuple(from_jsonable(data["inputs"], sequence=list))
@@ -618,7 +612,7 @@ def evaluate_claim(claim_id: str) -> Evaluation:
     Returns
     -------
     Evaluation
-        The claim's evaluation (:func:`~navcore.claims.core.evaluate`); the same object on
+        The claim's evaluation (:func:`~navcore.claims.runs.evaluate`); the same object on
         every later call in the process.
 
     Raises
@@ -771,7 +765,7 @@ def evaluate_in_parallel(claim_ids: list[str], n_jobs: int | None = -1) -> dict[
 
     The claims that are neither memoised nor on disk go to :func:`navcore.parallel.run_tasks`
     in the tasks of :func:`ledger_tasks`; each evaluation is the one a serial run gives, bit
-    for bit (the workers run the same :func:`~navcore.claims.core.evaluate`, and the fields
+    for bit (the workers run the same :func:`~navcore.claims.runs.evaluate`, and the fields
     come back pickled). Later calls of :func:`evaluate_claim` return them.
 
     Parameters
@@ -805,7 +799,7 @@ def evaluate_in_parallel(claim_ids: list[str], n_jobs: int | None = -1) -> dict[
     seconds: dict[str, float] = {}
     if not todo:
         return seconds
-    from navcore.claims.core import resolve_tolerance
+    from navcore.claims.declarations import resolve_tolerance
 
     for records in run_tasks(_group_records, [(t,) for t in ledger_tasks(todo)], n_jobs=n_jobs):
         for cid, fields, elapsed in records:
@@ -829,7 +823,7 @@ def evaluations(
     Parameters
     ----------
     paper : str or None, optional
-        Paper key, one of :data:`~navcore.claims.core.PAPERS`; ``None`` for every paper.
+        Paper key, one of :data:`~navcore.claims.declarations.PAPERS`; ``None`` for every paper.
     prefix : str or None, optional
         Keep only the claims whose id starts with it.
     n_jobs : int or None, optional
@@ -868,14 +862,14 @@ def counts(paper: str | None = None) -> dict[str, dict[str, int]]:
     Parameters
     ----------
     paper : str or None, optional
-        Paper key, one of :data:`~navcore.claims.core.PAPERS`; ``None`` (or ``""``) for
+        Paper key, one of :data:`~navcore.claims.declarations.PAPERS`; ``None`` (or ``""``) for
         every paper.
 
     Returns
     -------
     dict of str to dict of str to int
         For each paper, the number of claims with each derived verdict of
-        :data:`~navcore.claims.core.STATUSES` (zero included), any other status met (an
+        :data:`~navcore.claims.declarations.STATUSES` (zero included), any other status met (an
         ``error`` of a claim whose evaluation failed) and ``total``.
 
     Raises

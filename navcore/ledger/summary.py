@@ -13,7 +13,7 @@ import textwrap
 from collections.abc import Sequence
 from typing import Any
 
-from navcore.claims.core import (
+from navcore.claims.declarations import (
     ERRATUM_BASES,
     ERRATUM_KINDS,
     KINDS,
@@ -21,8 +21,8 @@ from navcore.claims.core import (
     STATUSES,
     TEXT_ONLY_CAVEAT,
     Erratum,
-    Evaluation,
 )
+from navcore.claims.evaluation import Evaluation
 from navcore.claims.inputs import Input, get_input
 from navcore.formatting import unit_text
 from navcore.ledger.text import format_value, published_text
@@ -57,8 +57,8 @@ def count_table(evals: Sequence[Evaluation]) -> list[dict[str, Any]]:
     -------
     list of dict
         One row per (paper, kind) with claims, in the order of
-        :data:`~navcore.claims.core.PAPERS` and :data:`~navcore.claims.core.KINDS`: a count
-        per verdict of :data:`~navcore.claims.core.STATUSES`, ``error`` (claims whose
+        :data:`~navcore.claims.declarations.PAPERS` and :data:`~navcore.claims.declarations.KINDS`: a count
+        per verdict of :data:`~navcore.claims.declarations.STATUSES`, ``error`` (claims whose
         evaluation failed) and ``total``; the last row, paper and kind ``"all"``, sums them.
 
     Examples
@@ -149,8 +149,8 @@ def findings_count_table(errata: Sequence[Erratum]) -> list[dict[str, Any]]:
     -------
     list of dict
         One row per (paper, basis) with findings, in the order of
-        :data:`~navcore.claims.core.PAPERS` and :data:`~navcore.claims.core.ERRATUM_BASES`,
-        a count per kind of :data:`~navcore.claims.core.ERRATUM_KINDS` and ``total``; then,
+        :data:`~navcore.claims.declarations.PAPERS` and :data:`~navcore.claims.declarations.ERRATUM_BASES`,
+        a count per kind of :data:`~navcore.claims.declarations.ERRATUM_KINDS` and ``total``; then,
         for more than one paper, one row per basis over all papers (paper ``"all"``); the
         last row, paper and basis ``"all"``, sums them.
 
@@ -437,7 +437,7 @@ def prose_words_frame() -> Any:
     Returns
     -------
     pandas.DataFrame
-        One row per word of :data:`~navcore.claims.core.PROSE_WORDS`, columns ``Word in the
+        One row per word of :data:`~navcore.claims.tolerances.PROSE_WORDS`, columns ``Word in the
         paper`` and ``Band the ledger uses`` (the ledger's rules, "Tolerance: fixed before the value
         is computed").
 
@@ -450,7 +450,7 @@ def prose_words_frame() -> Any:
     """
     import pandas as pd
 
-    from navcore.claims.core import PROSE_WORDS
+    from navcore.claims.tolerances import PROSE_WORDS
 
     return pd.DataFrame(
         [{"Word in the paper": w, "Band the ledger uses": b["meaning"]} for w, b in PROSE_WORDS.items()]
@@ -742,8 +742,8 @@ def findings_phrase(items: Sequence[Erratum]) -> str:
     Returns
     -------
     str
-        The phrase, bases in the order of :data:`~navcore.claims.core.ERRATUM_BASES` and kinds
-        in that of :data:`~navcore.claims.core.ERRATUM_KINDS`; ``"0 findings"`` for none.
+        The phrase, bases in the order of :data:`~navcore.claims.declarations.ERRATUM_BASES` and kinds
+        in that of :data:`~navcore.claims.declarations.ERRATUM_KINDS`; ``"0 findings"`` for none.
 
     Examples
     --------

@@ -16,13 +16,8 @@ import json
 import re
 from collections.abc import Iterable, Sequence
 
-from navcore.claims.core import (
-    ERRATUM_BASES,
-    STATUSES,
-    TEXT_ONLY_CAVEAT,
-    Erratum,
-    Evaluation,
-)
+from navcore.claims.declarations import ERRATUM_BASES, STATUSES, TEXT_ONLY_CAVEAT, Erratum
+from navcore.claims.evaluation import Evaluation
 from navcore.formatting import math_spans
 from navcore.ledger.registry import counts, errata, evaluations
 from navcore.ledger.summary import finding_evidence, findings_count_table, summary_text
@@ -185,7 +180,7 @@ def json_dump(evals: Sequence[Evaluation]) -> str:
     -------
     str
         A JSON array (indented by two spaces, Unicode kept) of
-        :meth:`~navcore.claims.core.Evaluation.as_json` records.
+        :meth:`~navcore.claims.evaluation.Evaluation.as_json` records.
 
     Examples
     --------
@@ -943,7 +938,7 @@ class ErrataList:
     The entries are grouped by basis, computed findings first; each says its basis and
     kind, what the paper prints, what the book finds, the evidence, and the claims that are
     its evidence (with their verdicts when ``evals`` is given). The text-only caveat
-    (:data:`~navcore.claims.core.TEXT_ONLY_CAVEAT`) is said once, under the heading of the
+    (:data:`~navcore.claims.declarations.TEXT_ONLY_CAVEAT`) is said once, under the heading of the
     text-only findings, never per entry.
 
     Parameters
@@ -1085,7 +1080,7 @@ class FindingsTable:
     """The findings (errata) counted by paper, basis and kind, and optionally listed with
     the claims that are their evidence (HTML and PDF).
 
-    The text-only caveat (:data:`~navcore.claims.core.TEXT_ONLY_CAVEAT`) follows the counts
+    The text-only caveat (:data:`~navcore.claims.declarations.TEXT_ONLY_CAVEAT`) follows the counts
     once, when a text-only finding is counted.
 
     Parameters
@@ -1128,7 +1123,7 @@ class FindingsTable:
         self.evidence = finding_evidence(self.items, list(evals))
 
     def _table(self) -> tuple[list[str], list[list[str]]]:
-        from navcore.claims.core import ERRATUM_KINDS
+        from navcore.claims.declarations import ERRATUM_KINDS
 
         head = ["Paper", "Basis", *(k.replace("-", " ") for k in ERRATUM_KINDS), "Findings"]
         body = [

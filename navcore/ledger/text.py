@@ -14,16 +14,11 @@ import math
 import re
 from typing import Any
 
-from navcore.claims.core import (
-    COUNT_UNITS,
-    PRECISION_STRICT,
-    Evaluation,
-    claim_quote,
-    left_out_of_band,
-    reader_label,
-)
-from navcore.claims.core import _is_truth as _core_is_truth
+from navcore.claims.evaluation import COUNT_UNITS, Evaluation, left_out_of_band, reader_label
 from navcore.claims.inputs import _label_and_unit, get_input
+from navcore.claims.quotes import claim_quote
+from navcore.claims.tolerances import PRECISION_STRICT
+from navcore.claims.verdict import _is_truth as _core_is_truth
 from navcore.formatting import format_number, math_spans, unit_text
 
 __all__ = [
@@ -693,7 +688,7 @@ def claim_group(locator: str) -> str:
 
 
 def _is_truth(value: Any) -> bool:
-    """A Python or numpy boolean (:func:`navcore.claims.core._is_truth`, its one home)."""
+    """A Python or numpy boolean (:func:`navcore.claims.verdict._is_truth`, its one home)."""
     return _core_is_truth(value)
 
 
@@ -1258,7 +1253,7 @@ def _inputs_text(e: Evaluation) -> str:
 
 def _band_text(e: Evaluation) -> str:
     """The details' band line: its ends at the digits of the note's sentences (one precision per
-    claim, :func:`~navcore.claims.core.note_digits`); ``""`` when they print the same."""
+    claim, :func:`~navcore.claims.evaluation.note_digits`); ``""`` when they print the same."""
     if e.band is None or e.claim.is_statement:
         return ""
     lo, hi = e.band
@@ -1278,7 +1273,7 @@ def _agreeing_reading_text(e: Evaluation) -> str:
     """Where only readings other than the one used agree, or the one used agrees only over a
     band too wide to decide while another decides: "agrees under: <labels>".
 
-    Each agreeing reading the note shows (:meth:`~navcore.claims.core.Evaluation.shown_readings`:
+    Each agreeing reading the note shows (:meth:`~navcore.claims.evaluation.Evaluation.shown_readings`:
     not those that differ only in conventions whose readings change nothing) is named by what
     it changes from the one used (the labels of the reading used are not repeated); a reading
     that only adds changes to another agreeing reading listed is left out."""

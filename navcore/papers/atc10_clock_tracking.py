@@ -15,8 +15,7 @@ import math
 import numpy as np
 from scipy import optimize
 
-from navcore.claims import EXACT, Claim, Erratum
-from navcore.claims.core import PROSE_WORDS
+from navcore.claims import EXACT, PROSE_WORDS, Claim, Erratum
 from navcore.claims.inputs import input_cache
 from navcore.location.clock_model import (
     clock_covariance,

@@ -11,8 +11,7 @@ import math
 import numpy as np
 from scipy import optimize, special
 
-from navcore.claims import Claim, Erratum, printed
-from navcore.claims.core import monte_carlo, prose
+from navcore.claims import Claim, Erratum, monte_carlo, printed, prose
 from navcore.claims.inputs import input_cache
 from navcore.detection import jamming as jm
 from navcore.detection.neyman_pearson import (

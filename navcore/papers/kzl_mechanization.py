@@ -287,16 +287,12 @@ CLAIMS = [
         "arctangent of the printed ratio it returns 0, the Table 1 roll (for any roll within $\\pm 90$ deg).",
         discussed_in=PAGE1,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-eq2-pitch-sign",
         locator="Eq. (2)",
         quantity="the printed levelling formula (Eq. 2), applied to the specific force of Eq. (8), returns "
         "the pitch of a nose-up or nose-down attitude with its sign",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=printed_pitch_has_its_sign,
-        tolerance=EXACT,
         expected_status="discrepant",
         note="At pitch +-1, 5, 20 and 60 deg (Table 1 roll and heading) printed Eq. (2) returns minus the "
         "pitch: it is right for a = -f, while Eq. (8) makes a the specific force. Table 1 is level, so "
@@ -309,34 +305,26 @@ CLAIMS = [
         "[...] $$\\dot{\\mathbf{v}}^n = R_b^n \\mathbf{a}_{ib}^b + \\mathbf{g}_l^n \\tag{8}$$",
         discussed_in=PAGE1,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-sec3.1-gyro-bias-swamps-earth-rate",
         aliases=("KZL-c11-earth-rate",),
         locator="Sec. 3.1",
         quantity="a MEMS gyro bias of several 100 deg/h swamps the horizontal Earth rate (no gyrocompassing)",
-        published=True,
-        unit="statement",
         compute=lambda: (
             kzl_imu().gyro_bias > 10 * float(np.linalg.norm(earth_rate_ned(SCEN.lat_deg * DEG)[:2]))
         ),
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Table 1 gyro bias 360 deg/h against the horizontal Earth rate 9.46 deg/h at 51° N (38 times "
         "smaller).",
         discussed_in=PAGE1,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-sec3.2-earth-transport-rates-negligible",
         aliases=("KZL-c13-neglected-rates",),
         locator="Secs. 3.1-3.2, Eq. (9)",
         quantity="Earth and transport rate are negligible against the low-cost gyro bias",
-        published=True,
-        unit="statement",
         compute=lambda: (
             neglected_rates_deg_per_h() < IN.negligible_fraction * kzl_imu().gyro_bias / DEG_PER_H
         ),
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="'Can be neglected' read as below a tenth (or a fifth) of the gyro bias: $|\\omega_{in}|$ = "
         "20.7 deg/h against 360 deg/h (factor 17). "
         "The neglected Coriolis term (about 1900 µg) is not small against the 2400 µg "
@@ -344,61 +332,44 @@ CLAIMS = [
         "states. The computation reads published inputs only.",
         discussed_in=PAGE1,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-eq5-series",
         locator="Eq. (5)",
         quantity="$e^{FT} = I + FT + (FT)^2/2 + \\ldots$ for the 17-state $F$",
-        published=True,
-        unit="statement",
         compute=series_terminates,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="$F$ is nilpotent ($F^4 = 0$): the series ends at $(FT)^3/6$ and equals scipy's expm to "
         "$10^{-12}$.",
         discussed_in=PAGE1,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-sec3.1-observability-needs-attitude",
         aliases=("KZL-c12-observability",),
         locator="Sec. 3.1",
         quantity="complete observability only with redundant attitude information, depending on $\\nu$",
-        published=True,
-        unit="statement",
         compute=_complete_only_with_attitude,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="LTI observability rank in straight and level flight at the Table 1 attitude: code and "
         "$\\delta$ range alone never reach 17 (heading and z-gyro bias are unobservable); with Euler "
         "attitude or DD phases the rank is 17 for $\\nu \\ge 4$.",
         discussed_in=PAGE2,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-eq6-first-order",
         locator="Eq. (6)",
         quantity="$A \\approx I + FT$: the first-order transition gives the 180 s stand-alone north-position "
         "$\\sigma$ of $e^{FT}$, at the Table 1 GPS interval",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=_eq6_approximates,
-        tolerance=EXACT,
         expected_status="consistent",
         note="Covariance propagation of the 17-state model over the Table 1 flight at $T$ = 1 s; the "
         "first-order noise $Q_d = G Q G^T T$ goes with Eq. (6). '≈' read as within 10 % (the reading "
         "of 'approximately' in the ledger's table of prose words) or 1 %.",
         discussed_in=PAGE1,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-eq9-quaternion",
         locator="Eq. (9)",
         quantity="the quaternion rate $\\dot q = q \\otimes [0, \\omega]/2$ integrates to the rotation of "
         "the body rate",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=_eq9_holds,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Constant body rate (0.1, -0.2, 0.3) rad/s from the Table 1 attitude, $\\omega_{in}$ neglected "
         "as the paper does: RK4 at 1 ms steps ends within $10^{-6}$ deg of scipy's closed form after 1 s.",
         discussed_in=PAGE1,

@@ -13,7 +13,7 @@ import itertools
 
 import numpy as np
 
-from navcore.claims import EXACT, Claim, Erratum, InputSet, printed, prose
+from navcore.claims import Claim, Erratum, InputSet, printed, prose
 from navcore.claims import monte_carlo as mc_tolerance
 from navcore.papers.kzl_quotes import quoted
 from navcore.papers.kzl_requirements import IN as MODELS
@@ -297,16 +297,12 @@ CLAIMS = [
         "KZL-sec3.6-heading-without-init-covariance.",
         discussed_in=PAGE3,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-sec3.6-heading-largest-attitude-error",
         aliases=("KZL-c18",),
         locator="Sec. 3.6",
         quantity="stand-alone IMU: the largest attitude error is in heading",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=_heading_largest_standalone,
-        tolerance=EXACT,
         expected_status="not-reproducible",
         note="Read in the filter's $1\\sigma$ at 180 s (the root of the run-averaged covariance, not the "
         "RMS of the runs' errors that the table on the page shows), the heading error is above the "
@@ -349,33 +345,25 @@ CLAIMS = [
         "(150-600 s).",
         discussed_in=PAGE3,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-fig4-tight-improves-roll-pitch",
         aliases=("KZL-c19-tilt",),
         locator="Sec. 3.6, discussion of Fig. 4",
         quantity="tight coupling without attitude information improves roll and pitch over the INS alone",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=_tc_improves_tilt,
-        tolerance=EXACT,
         expected_status="consistent",
         note="'Improves' read as a time-averaged roll/pitch RMS of TC at least a tenth (or a twentieth) "
         "below that of the initialised INS. TC's lies far below that line in roll and in pitch; the page "
         "shows the factor in each. " + _MC_NOTE + " The Monte Carlo reads assumed inputs.",
         discussed_in=PAGE3,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-fig4-tight-improves-heading",
         aliases=("KZL-c19-heading",),
         locator="Sec. 3.6, discussion of Fig. 4",
         quantity="the attitude results of tight coupling (without attitude information) are better than "
         "those of the INS alone, 'attitude' read as every angle, the heading included",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=tc_attitude_better,
-        tolerance=EXACT,
         expected_status="consistent",
         note="Read per angle the heading cannot be better: in the straight and level flight of Table 1 "
         "the heading error is unobservable from code and $\\delta$ range (8 satellites, published inputs "
@@ -387,32 +375,24 @@ CLAIMS = [
         "constant velocity; accelerations would make the heading observable.",
         discussed_in=PAGE3,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-fig4-redundant-attitude",
         aliases=("KZL-c20",),
         locator="Sec. 3.6, discussion of Fig. 4",
         quantity="redundant attitude: much better attitude, much larger errors with fewer than 4 satellites",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=_attitude_aiding_much_better_and_degrades_below_4,
-        tolerance=EXACT,
         expected_status="consistent",
         note="Heading RMS with Eq. (12) aiding a factor 3 (or 2), the readings of 'much', below TC in the "
         "8-, 4- and 5-satellite segments, and as much above its 8-satellite value in the 3- or "
         "2-satellite segments. " + _MC_NOTE + " The Monte Carlo reads assumed inputs.",
         discussed_in=PAGE3,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-fig4-dd-phases-robust",
         aliases=("KZL-c21",),
         locator="Sec. 3.6, discussion of Fig. 4",
         quantity="DD phases: comparable with $\\ge 4$ satellites, robust and accurate with 2 or 3",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=_dd_robust_with_2_3,
-        tolerance=EXACT,
         expected_status="consistent",
         note="Heading RMS with DD within 1.5$\\times$ (or 2$\\times$), the readings of 'comparable', of the "
         "attitude-aided filter with $\\ge 4$ satellites, lower with 2-3, and every attitude RMS below "
@@ -420,16 +400,12 @@ CLAIMS = [
         "phase, 0.17 deg Euler). " + _MC_NOTE + " The Monte Carlo reads assumed inputs.",
         discussed_in=PAGE3,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-fig5-tight-three-bounded",
         aliases=("KZL-c23-c24",),
         locator="Sec. 3.6, discussion of Fig. 5",
         quantity="TC position error bounded with 3 satellites, growing remarkably with 2",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=_pos_bounded_3_grows_2,
-        tolerance=EXACT,
         expected_status="consistent",
         note="Horizontal RMS at the end of the 2-satellite segment more than 3 (or 2) times that at the "
         "end of "
@@ -438,16 +414,12 @@ CLAIMS = [
         + _MC_NOTE,
         discussed_in=PAGE3,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-fig5-dd-best",
         aliases=("KZL-c25",),
         locator="Sec. 3.6, discussion of Fig. 5",
         quantity="the DD carrier-phase integration yields the best results",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=_dd_best,
-        tolerance=EXACT,
         expected_status="consistent",
         note="Time-averaged RMS norm of position, velocity and attitude errors lowest for TC + DD (5 % "
         "or 10 % slack for sampling; the runs share random numbers). " + _MC_NOTE + " The Monte Carlo reads "
@@ -472,32 +444,24 @@ CLAIMS = [
         "'about' allows. " + _MC_NOTE,
         discussed_in=PAGE3,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-fig5-loose-three-unbounded",
         aliases=("KZL-c33-loose-three",),
         locator="Sec. 3.6, discussion of Fig. 5",
         quantity="with three satellites a loosely coupled integration is not bounded: the receiver's "
         "code geometry has rank 3 < 4 unknowns, so it gives no fix to the fusion filter",
-        published=True,
-        unit="statement",
         compute=_loose_three_no_fix,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Table 1 sky, first three satellites. Without a fix the loosely coupled filter runs free "
         "inertial, whose error grows to about 1 km in 3 min (KZL-fig5-ins-position).",
         discussed_in=PAGE3,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-sec3.7-baseline-tradeoff",
         aliases=("KZL-c34-baselines",),
         locator="Sec. 3.7",
         quantity="shorter baselines shrink the integer search, longer baselines improve the attitude: "
         "over 0.5, 1, 2, 4 m the candidates per DD rise and the attitude error falls",
-        published=True,
-        unit="statement",
         compute=_baseline_tradeoff,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Candidates $2 B / \\lambda + 1$ (about 22 for the Table 1 2 m baselines); attitude error "
         "$0.01 \\lambda / B$ (about 1 mrad at 2 m).",
         discussed_in=PAGE3,

@@ -356,57 +356,41 @@ ERRATA = [
 
 # --- claims --------------------------------------------------------------------------------------
 CLAIMS = [
-    Claim(
+    Claim.statement(
         id="KZL-dim13",
         locator="Sec. 3.4, after Eq. (13)",
         quantity="rows of the observation matrix with redundant attitude = $3 + 2\\nu$ ($\\nu$ = 1..8)",
-        published=True,
-        unit="statement",
         compute=_row_counts_eq13,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Counted from the stacked measurement matrix built by the carrier-phase model.",
         discussed_in=PAGE2,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-dim17",
         locator="Sec. 3.4, before Eq. (17)",
         quantity="rows of the DD observation matrix = $2 + 4 (\\nu - 1)$ ($\\nu$ = 1..8)",
-        published=True,
-        unit="statement",
         compute=_row_counts_eq17,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Code and $\\delta$ range per satellite plus two DDs (baselines $A_0$-$A_1$, $A_0$-$A_2$) per "
         "non-master "
         "satellite. Eq. (14) as printed has 7 rows for $\\nu = 2$ (a duplicated row); the formula gives 6.",
         discussed_in=PAGE2,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-sec3.4-sequential-update",
         aliases=("KZL-c14-sequential",),
         locator="Sec. 3.4",
         quantity="sequential processing gives the batch update without inverting the full innovation matrix",
-        published=True,
-        unit="statement",
         compute=_sequential_equals_batch,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Equal posteriors for 8 satellites with DD rows, provided the correlated DD phases are "
         "whitened (Cholesky) first; the paper does not mention the correlation. The computation reads "
         "published inputs only (the whitening is part of the method).",
         discussed_in=PAGE2,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-eq13-R",
         locator="Eq. (13), block R",
         quantity="the block R of Eq. (13), body-axes rates to Euler-angle rates, is the Jacobian of the "
         "Euler angles with respect to the n-frame attitude error (at the Table 1 attitude)",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=printed_R_is_euler_jacobian,
-        tolerance=EXACT,
         expected_status="discrepant",
         note="At heading 90 deg the true block is $J_b^{-1} R_n^b$, a north/east swap of $J_b^{-1} = I$: "
         "entries differ by 1. The paper describes R in words and prints no number from it. Checked "
@@ -416,16 +400,12 @@ CLAIMS = [
         oracle_tolerance=EXACT,
         discussed_in=PAGE2,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-qcorr",
         locator="Sec. 3.5",
         quantity="the printed correction $q^+ = q^- \\otimes q^n$ (right product) removes an estimated "
         "n-frame attitude error",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=printed_correction_removes_error,
-        tolerance=EXACT,
         expected_status="discrepant",
         note="Tried with an estimated (1, -0.5, 2) deg n-frame error at the Table 1 attitude (any error "
         "not about the vertical shows it): the right product leaves 1.58 deg, the left product nothing. "
@@ -436,18 +416,13 @@ CLAIMS = [
         oracle_tolerance=EXACT,
         discussed_in=PAGE2,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-sec3.5-small-rotation-euler-angles",
         aliases=("KZL-c15",),
         locator="Sec. 3.5",
         quantity="for a small rotation there is approximately no difference between the components of its "
         "rotation vector and its Euler angles (the Jacobian at the identity is I)",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=_small_rotation_same,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="The derivative of the Euler angles (roll, pitch, heading) of a rotation with respect to its "
         "rotation vector is the identity at zero rotation: the two agree to first order (the rotation "
         "vector (1, -0.5, 2) deg has Euler angles (0.991, -0.517, 1.996) deg). This is the small error "
@@ -455,32 +430,23 @@ CLAIMS = [
         "the block R of Eq. (13) (KZL-E4).",
         discussed_in=PAGE2,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-eq10-11-fd",
         locator="Eqs. (10)-(11)",
         quantity="the velocity-attitude block of F (the explicit matrix of Eq. (11)) equals finite "
         "differences of the velocity-error rate",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=_eq10_11_holds,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Error = computed $-$ true, $\\hat R = e^{[\\Delta\\psi \\times]} R$; Table 1 attitude, "
         "specific force "
         "(0.5, -0.3, $-g$) m/s$^2$ in NED; central differences at $10^{-6}$ rad agree to $10^{-6}$ of g.",
         discussed_in=PAGE2,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-eq11-bracket",
         locator="Eq. (11)",
         quantity="the explicit matrix of Eq. (11) is the cross-product matrix its bracket $[a \\times]$ "
         "names",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=_eq11_is_bracket,
-        tolerance=EXACT,
         expected_status="discrepant",
         erratum="KZL-E3-skew-notation",
         oracle=_eq11_oracle,
@@ -493,30 +459,21 @@ CLAIMS = [
         "directly.",
         discussed_in=PAGE2,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-eq15-orderings",
         locator="Eq. (15)",
         quantity="the two groupings of the double difference in Eq. (15) are equal",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=_eq15_holds,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Between-satellite then between-antenna, or the reverse, over 1000 random range sets: equal to "
         "$10^{-6}$ relative (floating point on $2 \\times 10^{7}$ m ranges).",
         discussed_in=PAGE2,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-eq17-printed-rank",
         locator="Eq. (17)",
         quantity="the two DD attitude rows of Eq. (17) as printed (both rows with $l_{02}$) are two "
         "independent observations of one satellite pair, as two baselines should give",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=_eq17_printed_two_rows,
-        tolerance=EXACT,
         expected_status="discrepant",
         erratum="KZL-E5-dd-typos",
         oracle=_eq17_oracle,
@@ -526,17 +483,12 @@ CLAIMS = [
         "number depends on it.",
         discussed_in=PAGE2,
     ),
-    Claim(
+    Claim.statement(
         id="KZL-eq17-rank",
         locator="Eq. (17)",
         quantity="the DD attitude rows with $l_{01}$ and $l_{02}$ (corrected Eq. (17)) are two independent "
         "observations",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=_eq17_corrected_two_rows,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Two satellites give two independent attitude observations, as Sec. 3.6 relies on.",
         discussed_in=PAGE2,
     ),

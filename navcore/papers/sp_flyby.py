@@ -46,7 +46,7 @@ import numpy as np
 
 from navcore._validate import ModelDomainError
 from navcore.claims import Claim, input_cache, printed, prose
-from navcore.claims.core import Status
+from navcore.claims.declarations import Status
 from navcore.claims.inputs import InputSet
 from navcore.gnss.acquisition import search_cells, search_time
 from navcore.gnss.constellation import Constellation

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from navcore.claims import EXACT, PROSE_WORDS, Claim, input_cache, printed, prose
+from navcore.claims import PROSE_WORDS, Claim, input_cache, printed, prose
 from navcore.location.emitter import (
     doppler_gradient_position,
     doppler_gradient_velocity,
@@ -179,17 +179,13 @@ CLAIMS = [
         "accuracy of 15 m or worse (or a smaller deflection).",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-sec3-flexible-mode-velocity",
         aliases=("WF-c4-flexible-mode",),
         locator="Sec. III",
         quantity="a first flexible mode of several hertz gives an aperture velocity amplitude of several "
         "m/s (3 to 9 m/s, the reading of 'several' in the ledger's table of prose words)",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=flexible_mode_is_several,
-        tolerance=EXACT,
         expected_status="not-reproducible",
         note="The velocity amplitude $2\\pi f A$ of the assumed first wing mode: $f$ = 3 Hz (3-9, "
         "'several Hertz') with a tip amplitude $A$ = 0.1 m (5-30 cm) gives 1.9 m/s, below 'several'. The "
@@ -228,28 +224,20 @@ CLAIMS = [
         "printed values, a cross-check.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-eq8-norm",
         locator="Eq. (8)",
         quantity="$\\|\\partial f/\\partial \\mathbf{v}\\| = f_0/c$ for every geometry",
-        published=True,
-        unit="statement",
         compute=_eq8_identity,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="2000 seeded random geometries; relative deviation < $10^{-12}$.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-eq9-bound",
         locator="Eq. (9)",
         quantity="$\\|\\partial f/\\partial \\mathbf{p}\\| \\le (f_0/c)\\, 2\\|\\mathbf{v}\\|/R$ for every "
         "geometry",
-        published=True,
-        unit="statement",
         compute=_eq9_bound_holds,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="2000 seeded random geometries. The exact norm is $(f_0/c)\\|\\mathbf{v}_\\perp\\|/R$, so the "
         "bound is "
         "loose by at least a factor 2.",

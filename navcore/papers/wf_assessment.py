@@ -364,17 +364,13 @@ CLAIMS = [
         "$\\sigma_a$ range: arithmetic on printed values, a cross-check.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-eq24-PN",
         locator="Eq. (24)",
         quantity="$P_N P_N^T = \\sigma_N^2 I$ is consistent with Eq. (11): the "
         "literal reading gives the same "
         "$\\sigma_{DN}$ in any velocity unit",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=eq24_literal_is_unit_consistent,
-        tolerance=EXACT,
         expected_status="discrepant",
         erratum="WF-E2-eq24-PN",
         oracle=_eq24_oracle,
@@ -452,97 +448,71 @@ CLAIMS = [
         "values, a cross-check.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-fig1-slope",
         locator="Fig. 1",
         quantity="the $\\sigma_T$ = 2 m/s curve rises 20 dB per decade of accelerometer resolution",
-        published=True,
-        unit="statement",
         compute=_fig1_slope,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Figure-only (no curve values printed); least-squares slope within 0.5 (or 1) dB/decade of 20 "
         "over 10 µm/s² to 10 mm/s², as $\\sigma_{DL} \\approx 2\\,\\mathrm{s} \\cdot \\sigma_a$ "
         "predicts. The computation reads published inputs and the reading of the slope only.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-fig1-order",
         locator="Fig. 1",
         quantity="larger lever-arm uncertainty gives more improvement: the curves $\\sigma_T$ = 2 below 0.2 "
         "below 0 m/s over the stated range",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=_fig1_ordered,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Figure-only; over the stated axis range 10 µm/s² to 10 mm/s², the curves are apart by at least "
         "19 dB. The page also shows that every curve is at or below 0 dB and that the $\\sigma_T = 2$ m/s "
         "curve rises monotonically. The computation reads published inputs only.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-fig2-gps-adds-little",
         aliases=("WF-c18-gps-little",),
         locator="Sec. IV.D, Fig. 2",
         quantity="GPS adds little to the accelerometer over the stated range (less than a noticeable change)",
-        published=True,
-        unit="statement",
         compute=_gps_adds_little,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Fig. 2 differs from Fig. 1 by less than 1 dB (or 3 dB), the readings of 'noticeable', for 1 "
         "and 3 satellites, every $\\sigma_T$ and every $\\sigma_a$ in 10 µm/s² to 10 mm/s² (the page "
         "shows the largest difference). Beyond about 30 mm/s² it no "
         "longer holds.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-sec4d-gps-noticeable-only-when-severe",
         aliases=("WF-c19-gps-noticeable",),
         locator="Sec. IV.D",
         quantity="GPS is noticeable only with severe $\\sigma_T$, a poor accelerometer and 3 satellites",
-        published=True,
-        unit="statement",
         compute=_gps_noticeable_only_when,
-        tolerance=EXACT,
         expected_status="consistent",
         note="Holds only if the axis extends beyond the stated 10 mm/s²: inside the range no benefit "
         "exceeds 1 dB ('noticeable' read as 1 or 3 dB); on 10 µm/s² to the assumed 'very poor' end "
         "(1 m/s², range 0.1-1) the largest one is at $\\sigma_T = 2$ m/s, 3 satellites, above 10 mm/s².",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-fig2-three-vs-one-satellite",
         aliases=("WF-c20-three-vs-one",),
         locator="Sec. IV.D, Fig. 2",
         quantity="3 satellites virtually identical to 1 at $\\sigma_T$ = 0: the two "
         "improvement curves closer "
         "than Fig. 2 can show over the stated range",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=_three_as_one,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Over the stated $\\sigma_a$ range the two curves differ by less than the figure can show "
         "(the page gives the largest difference). 'Virtually "
         "identical' (the 3-satellite curve is not drawn) is read as closer than the figure's resolution "
         "(half or a tenth of a dB).",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-fig2-order",
         locator="Sec. IV.D, Fig. 2",
         quantity="more GPS satellites never give less improvement (3 satellites over 1, 1 over none, any "
         "$\\sigma_T$, over the stated $\\sigma_a$ range), as far as Fig. 2 can show",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=_fig2_ordered,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Figure-only (the paper's 'benefits' of GPS, Fig. 2 curves in order). The correlation-free "
         "bound is not monotone in the estimators: the GPS estimate is the accelerometer prior updated "
         "once, and an estimator worse than the current bound pulls the bound towards itself; while the "
@@ -568,17 +538,14 @@ CLAIMS = [
         note="1 / 0.02 s = 50 Hz: the label and the parameter list agree.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-sec4d-mems-ten-times-more-sensitive",
         aliases=("WF-c22-mems-sensitive",),
         locator="Sec. IV.D, after Fig. 2",
         quantity="MEMS devices an order of magnitude more sensitive than 100 µg: the high-resolution end "
         "(10 µm/s²) of the range Sec. IV.D lists from [4] is at least that much finer",
-        published=True,
-        unit="statement",
         kind="cross-check",
         compute=_an_order_of_magnitude_finer,
-        tolerance=EXACT,
         expected_status="consistent",
         note="100 µg = 981 µm/s², about 98 times 10 µm/s² (about 1 µg): the paper's own parameter list "
         "already holds devices two orders of magnitude finer, more than 'an order of magnitude' (read "
@@ -586,17 +553,13 @@ CLAIMS = [
         "device list itself is not checked.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-sec5-aperture-errors-negligible",
         aliases=("WF-c23-negligible",),
         locator="Sec. V",
         quantity="the processing reduces the aperture errors' impact to a negligible level: the fused bound "
         "$\\sigma_D$ at 100 µg and $\\sigma_T$ = 2 m/s is below the on-board navigation accuracy $\\sigma_N$",
-        published=True,
-        unit="statement",
         compute=_negligible,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="$\\sigma_D$ about 0.0020 m/s against $\\sigma_N = 0.02$ m/s: the aperture adds less velocity "
         "error than the navigation system has without any flexure ('negligible' read as below $\\sigma_N$, "
         "or below a tenth of it).",

@@ -312,15 +312,11 @@ ERRATA = [
 
 # ----------------------------------------------------------------------------- claims
 CLAIMS = [
-    Claim(
+    Claim.statement(
         id="WF-eq20-PNG",
         locator="Eq. (20)",
         quantity="the printed joint matrix (block (2,3) = $P_{NG}$) is the covariance of the stacked errors",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=eq20_printed_is_covariance,
-        tolerance=EXACT,
         expected_status="discrepant",
         erratum="WF-E3-eq20-PNG",
         oracle=_eq20_oracle,
@@ -331,58 +327,42 @@ CLAIMS = [
         "cross-covariance.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-eq19-outage-infinite-covariance",
         aliases=("WF-c11-outage",),
         locator="Sec. IV.C, after Eq. (19)",
         quantity="an outage is handled by setting its covariance to infinity",
-        published=True,
-        unit="statement",
         compute=_outage_is_infinite_covariance,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Infinite covariance = fusion of the remaining estimators = limit of a huge covariance.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-eq19-weighted-least-squares",
         aliases=("WF-c12-wls",),
         locator="Sec. IV.C, after Eq. (19)",
         quantity="Eq. (18) is the solution of a weighted least-squares cost",
-        published=True,
-        unit="statement",
         compute=_fusion_is_wls,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="The gradient of $\\sum_i (\\mathbf x - \\hat{\\mathbf x}_i)^T \\mathbf P_i^{-1} (\\mathbf x "
         "- \\hat{\\mathbf x}_i)$ vanishes at the fused estimate. The "
         "proof "
         "in [7] is not available; the minimum-variance reading holds for uncorrelated local errors.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-thm-bound",
         locator="Theorem, Eqs. (21)-(23)",
         quantity="the matrix bound (21) and both inequalities of (23) hold for any correlation",
-        published=True,
-        unit="statement",
         compute=_theorem_holds,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="200 seeded random joint covariances (3 estimators, 3 states, correlation uniform in "
         "[0, 1]) with random $z_i$ in Eq. (22); exact covariance from Eq. (20).",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-thm-montecarlo",
         locator="Theorem, Eqs. (21)-(23)",
         quantity="sampled fused errors stay below the bounds (21) and (23) and match Eq. (20), within "
         "sampling error",
-        published=True,
-        unit="statement",
         compute=_theorem_mc_holds,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="12 seeded cases (2-4 estimators, 3 states; generic, mixed and completely correlated joint "
         "covariances), 20 000 draws each, fused with the Eqs. (18)-(19) weights. Criterion: the excess of "
         "the sample covariance over the bound (largest eigenvalue after whitening by the bound), the trace "
@@ -390,54 +370,38 @@ CLAIMS = [
         "deviations; Eq. (20) on the sample joint covariance equals the sample covariance to round-off.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-rem1-weights",
         locator="Remark (i)",
         quantity="$k_i = \\sum_j \\sqrt{\\sigma_j}/\\sqrt{\\sigma_i}$ is feasible",
-        published=True,
-        unit="statement",
         compute=_remark1_any_sigma,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="$\\sum 1/k_i = 1$ for any positive $\\sigma_j$, so the remark's range restriction is not "
         "needed.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-rem2-isotropic",
         locator="Remark (ii)",
         quantity="the bound is exact for completely correlated errors (isotropic covariances)",
-        published=True,
-        unit="statement",
         compute=lambda: abs(bound_tightness(1.0, "isotropic") - 1) < 1e-9,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Sec. IV.D-like sigmas; trace of the Minkowski bound / true trace = 1.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-rem2-one-small",
         locator="Remark (ii)",
         quantity="the bound tends to be exact when one sensor error is much smaller",
-        published=True,
-        unit="statement",
         compute=lambda: bound_tightness(0.0, "one-small") - 1.0 <= IN.close_rel,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="One sensor 1000 times better, uncorrelated errors; 'tends to be exact' read as within 1 % (or "
         "10 %) of the true trace.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-rem2-generic",
         locator="Remark (ii)",
         quantity="the bound tends to be exact for completely correlated errors, general (non-commuting) "
         "covariances",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=remark2_generic_exact,
-        tolerance=EXACT,
         expected_status="discrepant",
         erratum="WF-E4-remark2-correlated",
         oracle=_remark2_generic_oracle,
@@ -447,16 +411,12 @@ CLAIMS = [
         "Monte Carlo of the fused error (100 000 draws).",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-rem2-weaker-correlation",
         locator="Remark (ii)",
         quantity="the bound grows more conservative as the correlation weakens: the ratio of the bound's "
         "trace to the true trace increases strictly as $\\rho$ falls from 1 to 0, and is 1 at $\\rho = 1$",
-        published=True,
-        unit="statement",
         compute=_more_conservative_as_weaker,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Three isotropic local errors with the Sec. IV.D-like sigmas (0.02, 0.002, 0.0019 m/s), "
         "pairwise correlation $\\rho = 1$, 0.9, 0.7, 0.5, 0.3, 0; exact covariance of the fused error "
         "(Eq. (20)) against the middle term of Eq. (23).",

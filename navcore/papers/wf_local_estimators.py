@@ -184,16 +184,12 @@ ERRATA = [
 
 # ----------------------------------------------------------------------------- claims
 CLAIMS = [
-    Claim(
+    Claim.statement(
         id="WF-eq13-innovation",
         locator="Eq. (13)",
         quantity="the innovation of the printed filter, $y_a(k) - \\hat x_{DL}(k/k-1)$, is a velocity "
         "residual (a difference of like quantities), as a Kalman filter of Eq. (12) needs",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=eq13_innovation_is_a_velocity_residual,
-        tolerance=EXACT,
         expected_status="discrepant",
         erratum="WF-E1-eq13-innovation",
         oracle=_eq13_oracle,
@@ -205,46 +201,33 @@ CLAIMS = [
         "the covariance of Eq. (14). No printed number uses Eq. (13) (Figs. 1-2 follow Eq. (14)).",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-eq11-covariance",
         locator="Eq. (11)",
         quantity="$P_{DN} = \\tau P_N \\tau^T + Q_T$ is the covariance of the Eq. (10) error",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=_eq11_holds,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Seeded random $\\tau$, $P_N$ and $Q_T$, independent $w_T$ and navigation error; a 200 000-draw "
         "sample covariance within 5 (or 3) sampling standard deviations of the formula, which holds for "
         "any such matrices (linearity of the covariance).",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-eq11-large-QT",
         locator="Sec. IV.B.1, after Eq. (11)",
         quantity="with a large $Q_T$, $P_{DN}$ is large regardless of $P_N$: $\\sigma_{DN} / \\sigma_T$ at "
         "$\\sigma_T$ = 2 m/s hardly varies between $\\sigma_N$ = 0, 0.02 and 0.2 m/s",
-        published=True,
-        unit="statement",
         compute=_large_qt_regardless,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="With Eq. (24) read as $\\tau P_N \\tau^T = \\sigma_N^2 I$ (WF-E2), "
         "$\\sigma_{DN} = \\sqrt{\\sigma_N^2 + \\sigma_T^2}$: 1, 1.00005 and 1.005 times $\\sigma_T$ for "
         "$\\sigma_N$ = 0, 0.02 and 0.2 m/s, within 1 % (or 10 %), the readings of 'regardless'.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-eq14-three-factors",
         locator="Sec. IV.B.2, after Eq. (14)",
         quantity="the local accuracy depends on $Q_a$, $R_L$ and the update rate: doubling each of $Q_a$, "
         "$R_L$, $T_s$ in turn raises the steady-state $\\sqrt{P_{DL}(k/k)}$",
-        published=True,
-        unit="statement",
         compute=_eq14_three_factors,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="Steady state of Eq. (14) at 100 µg, $T_s$ = 0.02 s, $\\sigma_L = 200 \\sigma_a$: about 0.0020 "
         "m/s; doubling $Q_a$ or $R_L$ raises it by about 19 % (the fourth root of 2), doubling $T_s$ by "
         "about 41 % "
@@ -252,17 +235,12 @@ CLAIMS = [
         "10 %) for a doubling (or an increase by half) of each factor.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-eq16-17-information",
         locator="Eqs. (16)-(17)",
         quantity="the single-step Kalman update of Eq. (16) gives the covariance of Eq. (17): $(I - K H_G) "
         "P_{DL} = [P_{DL}^{-1} + H_G^T R_G^{-1} H_G]^{-1}$",
-        published=True,
-        unit="statement",
-        kind="statement",
         compute=_eq16_17_agree,
-        tolerance=EXACT,
-        expected_status="reproduced",
         note="$H_G$ of Eq. (25) (three and one satellite) with the printed "
         "$f_{L1}/c$, $R_G = \\sigma_G^2 I$, "
         "20 seeded priors each (the matrix inversion lemma); agreement to $10^{-9}$ relative, floating "

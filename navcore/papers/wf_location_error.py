@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from navcore.claims import EXACT, Claim, input_cache
+from navcore.claims import Claim, input_cache
 from navcore.location.emitter import (
     doppler_frequency,
     doppler_jacobian_emitter,
@@ -127,14 +127,11 @@ def _eq6_mc_agrees() -> bool:
 
 # ----------------------------------------------------------------------------- claims
 CLAIMS = [
-    Claim(
+    Claim.statement(
         id="WF-eq3-normal",
         locator="Eq. (3)",
         quantity="the Gauss-Newton solution satisfies the weighted LS normal equation",
-        published=True,
-        unit="statement",
         compute=lambda: _ls_trial()["normal_rel"] < 1e-12,
-        tolerance=EXACT,
         expected_status="consistent",
         note="Book geometry (2 deg/s turn at 8 km, 200 m/s, 120 s, 200 samples, the ground "
         "emitter of the chapter's geometry (its mean range is on the page), "
@@ -143,44 +140,35 @@ CLAIMS = [
         "is below $10^{-12}$.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-eq6-linear",
         locator="Eq. (6)",
         quantity="first-order location error agrees with the nonlinear estimate (within 1 %)",
-        published=True,
-        unit="statement",
         compute=lambda: _ls_trial()["rel_lin"] < IN.close_rel,
-        tolerance=EXACT,
         expected_status="consistent",
         note="50 seeded trials on the book geometry, RMS difference over RMS linearised error; the "
         "difference is second order in the errors. "
         "'Agrees' is read as within 1 % (or 10 %): the paper prints no accuracy.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-eq6-montecarlo",
         locator="Eq. (6)",
         quantity="Eq. (6) predicts the Monte Carlo spread of the nonlinear estimator (each axis within the "
         "sampling error)",
-        published=True,
-        unit="statement",
         compute=_eq6_mc_agrees,
-        tolerance=EXACT,
         expected_status="consistent",
         note="400 seeded trials; 1 Hz white frequency noise and 0.05 m/s white velocity errors per axis; "
         "each axis's sample standard deviation within 5 (or 3) sampling standard deviations (3.5 % each "
         "for 400 draws) of the Eq. (6) prediction.",
         discussed_in=PAGE,
     ),
-    Claim(
+    Claim.statement(
         id="WF-eq6-model-error-acts-like-noise",
         aliases=("WF-c1-additive",),
         locator="Sec. II, after Eq. (6)",
         quantity="a signal-model error moves the estimate as much as the same measurement error",
-        published=True,
-        unit="statement",
         compute=lambda: _ls_trial()["rel_same"] < IN.close_rel,
-        tolerance=EXACT,
         expected_status="consistent",
         note="The nonlinear fit with wrong aperture velocities vs the fit with exact velocities and the "
         "same frequency error added to the measurements, 50 seeded trials, RMS difference over RMS "
