@@ -70,7 +70,8 @@ class Evaluation:
         one was run) and ``band_too_wide``.
     band_too_wide : bool
         Whether the verdict is ``not-reproducible`` because every band that agrees is too
-        wide to decide (:func:`band_too_wide`; each reading's own flag is in ``readings``).
+        wide to decide (:func:`~navcore.claims.verdict.band_too_wide`; each reading's own flag is
+        in ``readings``).
     left_out : tuple of dict
         The band runs left out as outside the model's domain (:mod:`navcore.claims.runs`, "Band runs"),
         one per case in the order met: ``case`` (the reader's words of the
@@ -583,9 +584,9 @@ def _alternatives_phrase(name: str, labels: Sequence[str]) -> str:
 
 def _label_prints(label: str, value: Any) -> bool:
     """Whether a reading's label prints this one of its values, as far as a reader can tell:
-    :func:`label_prints_value`, or one of the label's numbers (times a power of 1000) within
-    its last printed digits of the value (0.98357 ft/ns for 0.983571), or a zero the label
-    prints; a code word (a string) is never shown, so it counts as printed."""
+    :func:`~navcore.claims.quotes.label_prints_value`, or one of the label's numbers (times a
+    power of 1000) within its last printed digits of the value (0.98357 ft/ns for 0.983571), or
+    a zero the label prints; a code word (a string) is never shown, so it counts as printed."""
     if isinstance(value, str):
         return True
     if isinstance(value, bool) or not isinstance(value, int | float):

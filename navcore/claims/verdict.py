@@ -247,7 +247,7 @@ def additive_envelope(
     value : float or bool
         The claim's value at the nominal inputs.
     sensitivity : sequence of (str, sequence of (point, value))
-        Per assumed input, its one-at-a-time runs (:attr:`Evaluation.sensitivity`).
+        Per assumed input, its one-at-a-time runs (:attr:`~navcore.claims.evaluation.Evaluation.sensitivity`).
 
     Returns
     -------
@@ -324,7 +324,7 @@ def precision_status(loose_status: str) -> str:
     Parameters
     ----------
     loose_status : str
-        The verdict derived with the loose tolerance (:meth:`Tolerance.loose`).
+        The verdict derived with the loose tolerance (:meth:`~navcore.claims.tolerances.Tolerance.loose`).
 
     Returns
     -------
@@ -378,7 +378,8 @@ def derive_status(
     Returns
     -------
     str
-        One of :data:`STATUSES` (module docstring, "Verdicts, as derived" and "Readings").
+        One of :data:`~navcore.claims.declarations.STATUSES` (module docstring, "Verdicts, as
+        derived" and "Readings").
 
     Examples
     --------
