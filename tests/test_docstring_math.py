@@ -342,3 +342,16 @@ def _escaped(lines: list[str], ext) -> list[str]:
     lines = list(lines)
     ext.escape_citation_initials(lines)
     return lines
+
+
+def test_api_docstrings_hold_no_control_character():
+    """A backslash in a docstring that is not raw can make a control character: ``\\a`` in
+    ``"``\\allowbreak{}``"`` is BEL, which the PDF build cannot typeset (it failed a CI run
+    once). Oracle: the characters themselves, below a space and not a tab or newline."""
+    bad = [
+        (name, hex(ord(ch)))
+        for name, doc in api_docstrings()
+        for ch in doc
+        if ord(ch) < 32 and ch not in "\n\t"
+    ]
+    assert not bad, f"control characters in docstrings (a raw docstring or a doubled backslash): {bad}"

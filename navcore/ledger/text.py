@@ -183,7 +183,7 @@ def tex_breakable(text: str) -> str:
     Returns
     -------
     str
-        The escaped text with ``\allowbreak{}`` at the places it may break.
+        The escaped text with ``\\allowbreak{}`` at the places it may break.
 
     Examples
     --------
