@@ -26,6 +26,7 @@ __all__ = [
     "claim_group",
     "format_value",
     "html_text",
+    "mark_compared_number",
     "math_breaks",
     "published_text",
     "quote_math",
@@ -700,13 +701,69 @@ def _statement_word(value: Any, *, printed: bool) -> str:
     return "holds" if value else "does not hold"
 
 
+def mark_compared_number(quote: str, digits: str) -> str:
+    r"""A claim's quote with the number it compares set in bold (``**0.011**``), where the quote
+    holds more than that number (a printed table row, a sentence) and names it once.
+
+    The number is the one the claim's tolerance was given as printed (``digits``). It is marked
+    only where the reader could not tell it for sure otherwise, and only where marking cannot
+    misread the quote: it must stand in the quote's words (not in a formula) exactly once, as a
+    whole number (no digit or decimal point touching it), and the quote must hold no emphasis of
+    its own and no LaTeX outside its formulas. Any other quote is returned as it is.
+
+    Parameters
+    ----------
+    quote : str
+        What the claim quotes of the paper (its ``printed``).
+    digits : str
+        The number as the paper printed it, as the claim's tolerance holds it (``"0.011"``);
+        ``""`` when the tolerance holds none.
+
+    Returns
+    -------
+    str
+        The quote, with ``**`` around the number when it is marked.
+
+    Examples
+    --------
+    >>> mark_compared_number("10 nmi/h 1880 0.011 g 0.77", "0.011")
+    '10 nmi/h 1880 **0.011** g 0.77'
+    >>> mark_compared_number("10 nmi/h 1880 0.011 g 0.77", "18")  # not a whole number there
+    '10 nmi/h 1880 0.011 g 0.77'
+    >>> mark_compared_number("50 nsec 50 nsec", "50")  # twice: which one is not sure
+    '50 nsec 50 nsec'
+    >>> mark_compared_number("0.77", "0.77")  # the quote is the number
+    '0.77'
+    """
+    digits = digits.strip()
+    if not digits or quote.strip() == digits or "*" in quote or "$$" in quote:
+        return quote
+    if not re.fullmatch(r"[\d.]+", digits):
+        return quote
+    number = re.compile(r"(?<![\d.])" + re.escape(digits) + r"(?![\d]|\.\d)")
+    hits, pos = [], 0
+    for is_math, piece in math_spans(quote):
+        width = len(piece) + 2 if is_math else len(piece)  # a formula's piece lost its two "$"
+        if is_math and number.search(piece):
+            return quote
+        if not is_math:
+            if "\\" in piece.replace("\\$", ""):  # LaTeX outside a formula: shown as source
+                return quote
+            hits += [(pos + m.start(), pos + m.end()) for m in number.finditer(piece)]
+        pos += width
+    if len(hits) != 1 or pos != len(quote):
+        return quote
+    ((a, b),) = hits
+    return quote[:a] + "**" + quote[a:b] + "**" + quote[b:]
+
+
 def _printed_text(e: Evaluation) -> str:
     """What the paper printed: its words as the claim quotes them; else the number as printed
     with its relation and unit, or "stated" for a statement the book checks."""
     c = e.claim
     quote, source = claim_quote(c, e.tolerance)
     if source == "claim":
-        return quote
+        return mark_compared_number(quote, getattr(e.tolerance, "quote", ""))
     if _is_truth(c.published):
         return _statement_word(c.published, printed=True)
     rel = "" if c.relation == "=" else c.relation.replace(">=", "≥").replace("<=", "≤") + " "
@@ -981,6 +1038,11 @@ def _printed_tex(text: str) -> str:
     return "".join(out)
 
 
+#: A quote of at most 16 characters besides the bold of its compared number
+#: (:func:`mark_compared_number`), kept on one line like a short value.
+_MARKED_SHORT = re.compile(r"(?=.{0,20}$)([^$\\^*]*)\*\*([\d.]+)\*\*([^$\\^*]*)")
+
+
 def _printed_html(text: str, *, fold: int = 0) -> str:
     r"""The Printed cell of an HTML claim table: the paper's words as text and its formulas as
     MathJax math (a display formula inline, without its equation number), a long formula in a
@@ -1010,6 +1072,10 @@ def _printed_html(text: str, *, fold: int = 0) -> str:
     """
     if len(text) <= 16 and not any(ch in text for ch in "$\\^*"):
         return _nowrap(text)
+    marked = _MARKED_SHORT.fullmatch(text)
+    if marked:  # a short quote with its compared number in bold (:func:`mark_compared_number`)
+        before, number, after = (html.escape(g).replace(" ", "&nbsp;") for g in marked.groups())
+        return f"{before}<strong>{number}</strong>{after}"
     text = _DISPLAY.sub(lambda m: "$" + _EQ_NUMBER.sub("", m.group(1)).strip() + "$", text)
     pieces = math_spans(text)
     if any(_latex_source(piece) for is_math, piece in pieces if not is_math):  # LaTeX without delimiters
@@ -1026,7 +1092,8 @@ def _printed_html(text: str, *, fold: int = 0) -> str:
                 continue
             out.append(_math_html(quote_math(piece), _FIT_MATH_CHARS))
         body = "".join(out)
-    if fold and (len(text) > fold or not _fits_printed_column(text)):
+    plain = text.replace("**", "")  # a quote's bold (the compared number) is no wider
+    if fold and (len(plain) > fold or not _fits_printed_column(plain)):
         return f'<details class="ledger-quote"><summary>quote</summary>{body}</details>'
     return body
 
