@@ -482,10 +482,6 @@ def _codes(seed: int = 3, L: int = 31):
     return [rng.choice([-1.0, 1.0], L) / math.sqrt(L) for _ in range(4)]
 
 
-def _r(code):
-    return aperiodic_autocorrelation(code)
-
-
 def appf_identity() -> bool:
     """(F.5): int X_ij^2 = int R_ii R_jj for random codes (piecewise-linear, chip = 1)."""
     cs = _codes()
@@ -493,7 +489,9 @@ def appf_identity() -> bool:
         for j in range(i + 1, len(cs)):
             x = np.correlate(cs[i], cs[j], mode="full")
             lhs = piecewise_linear_inner(x, x, 1.0)
-            rhs = piecewise_linear_inner(_r(cs[i]), _r(cs[j]), 1.0)
+            rhs = piecewise_linear_inner(
+                aperiodic_autocorrelation(cs[i]), aperiodic_autocorrelation(cs[j]), 1.0
+            )
             if abs(lhs - rhs) > 1e-12:
                 return False
     return True
@@ -501,11 +499,13 @@ def appf_identity() -> bool:
 
 def thm33_equality() -> bool:
     cs = _codes()
-    ri = _r(cs[0])
+    ri = aperiodic_autocorrelation(cs[0])
     eq = piecewise_linear_inner(ri, ri, 1.0)
-    rj = _r(cs[1])
+    rj = aperiodic_autocorrelation(cs[1])
     strict = piecewise_linear_inner(ri, rj, 1.0) < math.sqrt(eq * piecewise_linear_inner(rj, rj, 1.0)) - 1e-9
-    rrev = _r(cs[0][::-1])  # the time-reversed code has the same autocorrelation: equality
+    rrev = aperiodic_autocorrelation(
+        cs[0][::-1]
+    )  # the time-reversed code has the same autocorrelation: equality
     return strict and abs(piecewise_linear_inner(ri, rrev, 1.0) - eq) < 1e-12
 
 
