@@ -13,7 +13,6 @@ import math
 from fractions import Fraction
 
 import numpy as np
-import sympy as sp
 from scipy import special
 
 from navcore.claims import EXACT, Claim, Erratum
@@ -30,6 +29,7 @@ from navcore.detection.roc_bounds import (
     chernoff_log_tail,
     gallager_log_tail_lower,
     gallager_log_tails_lower,
+    gated_cosh_log_curvature,
     gaussian_chernoff_exponent,
     quasi_optimal_exponent,
     quasi_optimal_exponent_approx,
@@ -449,22 +449,14 @@ def smallest_peak() -> bool:
     )
 
 
-def _g2(xs: np.ndarray, q: float) -> np.ndarray:
-    """Second derivative in beta of ln(1 - q + q cosh(rho sqrt beta)) at rho = 1, beta = x^2."""
-    bsym, qs = sp.symbols("beta q", positive=True)
-    g = sp.log(1 - qs + qs * sp.cosh(sp.sqrt(bsym)))
-    f = sp.lambdify((bsym, qs), sp.diff(g, bsym, 2), "mpmath")
-    return np.array([float(f(float(x) ** 2, q)) for x in xs])
-
-
 def convex_operating() -> bool:
     q = 2 * MA.tau_over_alpha_sec36
-    return bool(np.all(_g2(np.linspace(0.05, 8.0, 80), q) > 0))
+    return bool(np.all(gated_cosh_log_curvature(np.linspace(0.05, 8.0, 80), q) > 0))
 
 
 def convex_unconditional() -> bool:
     q = 2 * MA.tau_over_alpha_sec36
-    return bool(np.all(_g2(np.linspace(0.05, 30.0, 300), q) > 0))
+    return bool(np.all(gated_cosh_log_curvature(np.linspace(0.05, 30.0, 300), q) > 0))
 
 
 def convex_unconditional_oracle() -> bool:
