@@ -10,6 +10,7 @@ import pytest
 from navcore.location.clock_model import (
     clock_covariance,
     clock_increment_covariance,
+    clock_state_tau_map,
     mandelbrot_van_ness_constant,
     mandelbrot_van_ness_constant_integral,
     sample_clock_paths,
@@ -163,3 +164,33 @@ def test_clock_prediction_variance_rejects_bad_arguments():
     ):
         with pytest.raises(ValueError, match=name):
             clock_prediction_variance(*args)
+
+
+def test_clock_state_tau_map_is_the_unrolled_recursion():
+    """Oracle: the state model (4.5.9) unrolled by hand, tau_n = n alpha_0 + w_1 + ... + w_n
+    (tau_1 = alpha_0 + w_1, alpha_1 = -w_1, tau_2 = 2 alpha_0 + w_1 + w_2, ...), and a seeded
+    simulation of the scalar recursion tau_n = 2 tau_{n-1} + alpha_{n-1} + w_n,
+    alpha_n = -tau_{n-1} - w_n; its covariance is (4.3.1b), min(m, n) + m n."""
+    n_max = 12
+    coef = clock_state_tau_map(n_max)
+    want = np.zeros((n_max + 1, n_max + 1))
+    for n in range(1, n_max + 1):
+        want[n, 0] = n
+        want[n, 1 : n + 1] = 1.0
+    np.testing.assert_array_equal(coef, want)
+    rng = np.random.default_rng(459)
+    draws = rng.normal(size=n_max + 1)  # (alpha_0, w_1, ..., w_n_max)
+    tau, alpha, path = 0.0, draws[0], [0.0]
+    for n in range(1, n_max + 1):
+        tau, alpha = 2 * tau + alpha + draws[n], -tau - draws[n]
+        path.append(tau)
+    np.testing.assert_allclose(coef @ draws, path, rtol=1e-12, atol=1e-12)
+    m, k = np.meshgrid(np.arange(n_max + 1), np.arange(n_max + 1), indexing="ij")
+    np.testing.assert_allclose(coef @ coef.T, np.minimum(m, k) + m * k, rtol=1e-12)
+
+
+@pytest.mark.parametrize(("bad", "error"), [(-1, ValueError), (2.5, TypeError), (True, TypeError)])
+def test_clock_state_tau_map_rejects_bad_n_max(bad, error):
+    """Oracle: the documented boundary (a non-negative integer), named as the caller spelled it."""
+    with pytest.raises(error, match="n_max"):
+        clock_state_tau_map(bad)

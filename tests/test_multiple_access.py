@@ -16,6 +16,7 @@ from navcore.detection.multiple_access import (
     PointMassDensity,
     TriangularDensity,
     UniformDensity,
+    carrier_phase_density,
     cumulants_from_raw_moments,
     edgeworth_density,
     edgeworth_tail,
@@ -667,3 +668,27 @@ def test_irwin_hall_and_exact_tails_refuse_bad_input():
             fn(0.1, 10, 1.5, [0.5])
         with pytest.raises(ValueError, match="n_interferers"):
             fn(0.1, -1, 0.1, [0.5])
+
+
+@pytest.mark.parametrize("n_phases", [6, 12])
+def test_carrier_phase_density_moments_against_quadrature(n_phases):
+    """Oracle: scipy quadrature of E cos^r(phi) over a uniform phase times the envelope's own
+    moments, E n^r = E cos^r E X^r (ATC-10 Sec. 3.4): exact for every order r < n_phases, so the
+    odd moments vanish (lambda_3 = 0) though the envelope is skewed."""
+    values, weights = (0.5, 2.0), (0.8, 0.2)
+    d = carrier_phase_density(values, weights, n_phases=n_phases)
+    assert len(d.values) == n_phases * len(values)
+    for r in range(1, n_phases):
+        e_cos, _ = integrate.quad(lambda ph, r=r: np.cos(ph) ** r / (2 * np.pi), 0.0, 2 * np.pi)
+        e_x = sum(w * v**r for v, w in zip(values, weights, strict=True))
+        assert d.moment(r) == pytest.approx(e_cos * e_x, abs=1e-12), r
+
+
+def test_carrier_phase_density_rejects_bad_arguments():
+    """Oracle: the documented boundary, each argument named as the caller spelled it."""
+    with pytest.raises(ValueError, match="n_phases"):
+        carrier_phase_density((1.0,), (1.0,), n_phases=0)
+    with pytest.raises(ValueError, match="envelope_values and envelope_weights"):
+        carrier_phase_density((1.0, 2.0), (1.0,))
+    with pytest.raises(ValueError, match="envelope_weights"):
+        carrier_phase_density((1.0,), (np.nan,))

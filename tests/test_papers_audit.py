@@ -28,6 +28,8 @@ from navcore.claims import Claim, InputSet
 
 IN = InputSet("ATC10", "chapter")
 
+CH = IN
+
 
 def reads_input():
     return IN.x
@@ -39,6 +41,10 @@ def through_a_reader():
 
 def plain_helper():
     return 2
+
+
+def reads_second_name():
+    return CH.z
 
 
 def _s(cid, compute):
@@ -54,7 +60,7 @@ CLAIMS = [_s("ATC10-a", local_compute)]
 
 SECTION = """
 from navcore.claims import Claim
-from navcore.papers.atc10_chapter import IN, _s
+from navcore.papers.atc10_chapter import CH, IN, _s
 
 
 def imported_builder_compute():
@@ -67,6 +73,10 @@ def reads_imported_set():
 
 def leftover():
     return 4
+
+
+def reads_imported_second_name():
+    return CH.w
 
 
 def statement_compute():
@@ -92,4 +102,7 @@ def test_reads_computes_and_leftovers_across_two_modules(tmp_path: Path):
     chapter, section = mods["atc10_chapter"].functions, mods["atc10_section"].functions
     assert chapter["through_a_reader"].reads and not chapter["through_a_reader"].reads_directly
     assert section["reads_imported_set"].reads_directly
+    # a second name of an input set (CH = IN) is an input set, here and where it is imported
+    assert chapter["reads_second_name"].reads_directly
+    assert section["reads_imported_second_name"].reads_directly
     assert chapter["_s"].builds and not chapter["local_compute"].builds

@@ -29,6 +29,7 @@ from navcore.detection.roc_bounds import (
     exponent_from_gaussian_exponent_large_n,
     gallager_log_tail_lower,
     gallager_log_tails_lower,
+    gated_cosh_log_curvature,
     gaussian_chernoff_exponent,
     gaussian_roc,
     quasi_optimal_amplitude,
@@ -337,3 +338,25 @@ def test_best_pf_at_pd_rejects_bad_arguments(args, name):
 
     with pytest.raises(ValueError, match=name):
         best_pf_at_pd(*args)
+
+
+@pytest.mark.parametrize("q", [4e-5, 0.3])
+def test_gated_cosh_log_curvature_against_hand_derivative(q):
+    """Oracle: the second derivative in beta of ln(1 - q + q cosh sqrt(beta)) by hand, with
+    u = sqrt(beta), D = 1 - q + q cosh u: g' = q sinh u / (2 u D) and
+    g'' = [q cosh u / (u D) - q sinh u / (u^2 D) - (q sinh u)^2 / (u D^2)] / (4 u), in float64
+    (cosh(25) does not overflow); and the sign the Theorem 3.2 claims read (ATC-10 Eq. 3.7.15):
+    convex at small x, concave at large x where g grows as sqrt(beta)."""
+    x = np.linspace(0.5, 25.0, 50)
+    c, s, d = q * np.cosh(x), q * np.sinh(x), 1 - q + q * np.cosh(x)
+    hand = (c / (x * d) - s / (x**2 * d) - s**2 / (x * d**2)) / (4 * x)
+    np.testing.assert_allclose(gated_cosh_log_curvature(x, q), hand, rtol=1e-8, atol=1e-300)
+    assert gated_cosh_log_curvature([1.0], q)[0] > 0 > gated_cosh_log_curvature([30.0], q)[0]
+
+
+def test_gated_cosh_log_curvature_rejects_bad_arguments():
+    """Oracle: the documented boundary, each argument named as the caller spelled it."""
+    with pytest.raises(ValueError, match="q"):
+        gated_cosh_log_curvature([1.0], 1.5)
+    with pytest.raises(ValueError, match="x"):
+        gated_cosh_log_curvature([np.inf], 0.1)

@@ -11,8 +11,9 @@ may still read inputs through a function they call: the looser count of the issu
 The classification is static and transitive:
 
 * a function *reads a paper input* when its body names an input set (a module-level
-  ``X = InputSet(...)``, an input set imported from another paper module, or ``alias.IN``
-  of an imported paper module) or names a function of ``navcore/papers`` that does;
+  ``X = InputSet(...)`` or a second name ``Y = X`` of one, an input set imported from another
+  paper module, or ``alias.IN`` of an imported paper module) or names a function of
+  ``navcore/papers`` that does;
 * a function is a *claim's compute* when it is named inside a call that builds a claim:
   ``Claim(...)``, ``Erratum(...)`` or a function of the module whose body calls ``Claim``
   (``compute=f``, ``compute=lambda: f(...)``, ``_s("id", ..., f, ...)``), or builds one
@@ -126,6 +127,9 @@ def read_module(path: Path) -> Module:
     for node in tree.body:
         if isinstance(node, ast.Assign) and isinstance(node.value, ast.Call):
             if _call_name(node.value) == "InputSet":
+                mod.input_sets |= {t.id for t in node.targets if isinstance(t, ast.Name)}
+        elif isinstance(node, ast.Assign) and isinstance(node.value, ast.Name):
+            if node.value.id in mod.input_sets:  # a second name of an input set (``MA = IN``)
                 mod.input_sets |= {t.id for t in node.targets if isinstance(t, ast.Name)}
     defs: list[tuple[str, ast.AST]] = []
     for node in tree.body:

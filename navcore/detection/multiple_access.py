@@ -57,6 +57,7 @@ __all__ = [
     "StratifiedSums",
     "TriangularDensity",
     "UniformDensity",
+    "carrier_phase_density",
     "cumulants_from_raw_moments",
     "edgeworth_density",
     "edgeworth_tail",
@@ -257,6 +258,72 @@ def tabulated_density(
     t, w = np.polynomial.legendre.leggauss(n)
     x = 0.5 * (hi - lo) * t + 0.5 * (hi + lo)
     return PointMassDensity(tuple(x), tuple(w * pdf(x) * 0.5 * (hi - lo)), name=name)
+
+
+@implements("ATC10 3.3.7")
+def carrier_phase_density(
+    envelope_values: ArrayLike,
+    envelope_weights: ArrayLike,
+    n_phases: int = 12,
+    name: str = "cos(phase) x envelope",
+) -> PointMassDensity:
+    r"""Amplitude density of :math:`n_{ij} = \cos(2\pi f_0 (t_i - t_j))\, X` with a uniform carrier
+    phase and a point-mass envelope :math:`X` (ATC-10 Sec. 3.4, the overlap integral of Eq. 3.3.7).
+
+    Sec. 3.4 takes the arrival time :math:`t_j` uniform over :math:`\alpha` with
+    :math:`f_0 \alpha` an integer, so the carrier phase is uniform over :math:`[0, 2\pi)`
+    whatever the envelope. The phase is represented by ``n_phases`` equally spaced values
+    :math:`2\pi k / n`, :math:`k = 0, \ldots, n - 1`, each of probability :math:`1/n`, which
+    give every moment :math:`E \cos^r` of order :math:`r < n` exactly (odd ones zero, so the
+    density is symmetric and :math:`\lambda_3 = 0` of Appendix E's Eq. E.15). The atoms are the
+    products :math:`\cos(\phi_k)\, x_m`, phase-major, with weights :math:`w_m / n`.
+
+    Parameters
+    ----------
+    envelope_values : array_like
+        Atom positions :math:`x_m` of the envelope :math:`X` (finite).
+    envelope_weights : array_like
+        Their probabilities :math:`w_m` (``>= 0``; same length as ``envelope_values``).
+    n_phases : int, default 12
+        Number of equally spaced carrier phases (``>= 1``).
+    name : str, default "cos(phase) x envelope"
+        Label of the density.
+
+    Returns
+    -------
+    PointMassDensity
+        ``n_phases * len(envelope_values)`` point masses.
+
+    Raises
+    ------
+    ValueError
+        If ``n_phases`` is not a positive integer, or ``envelope_values`` and
+        ``envelope_weights`` are empty, of different lengths, or not finite (the weights
+        negative).
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Sec. 3.4 and Eq. (3.3.7).
+
+    Examples
+    --------
+    >>> d = carrier_phase_density((0.5, 2.0), (0.8, 0.2), n_phases=4)
+    >>> len(d.values), round(d.moment(2), 12)  # E cos^2 = 1/2 times E X^2 = 1.0
+    (8, 0.5)
+    """
+    require_integer("n_phases", n_phases, minimum=1)
+    x = as_finite_array("envelope_values", envelope_values).ravel()
+    w = as_finite_array("envelope_weights", envelope_weights).ravel()
+    if x.size == 0 or x.shape != w.shape:
+        raise ValueError(
+            "envelope_values and envelope_weights must be non-empty and of equal length, "
+            f"got {x.size} and {w.size}"
+        )
+    phases = 2.0 * np.pi * np.arange(n_phases) / n_phases
+    vals = [np.cos(ph) * xm for ph in phases for xm in x]
+    probs = [wm / phases.size for _ in phases for wm in w]
+    return PointMassDensity(tuple(vals), tuple(probs), name=name)
 
 
 @dataclass(frozen=True)

@@ -58,6 +58,7 @@ __all__ = [
     "exponent_from_gaussian_exponent_large_n",
     "gallager_log_tail_lower",
     "gallager_log_tails_lower",
+    "gated_cosh_log_curvature",
     "gaussian_chernoff_exponent",
     "gaussian_roc",
     "quasi_optimal_amplitude",
@@ -821,6 +822,58 @@ def exponent_from_gaussian_exponent_large_n(
     r = np.asarray(tau_over_alpha, dtype=float)
     g = np.asarray(exp_g, dtype=float)
     return g - g**2 * (1.0 - 6.0 * r) / (12.0 * n * r)
+
+
+@implements("ATC10 3.7.15")
+def gated_cosh_log_curvature(x: ArrayLike, q: float) -> FloatArray:
+    r"""Second derivative in :math:`\beta` of :math:`\ln(1 - q + q \cosh\sqrt{\beta})` at
+    :math:`\beta = x^2` (the convexity the proof of Theorem 3.2 invokes, ATC-10 Eq. 3.7.15).
+
+    The proof of Theorem 3.2 needs :math:`\ln(1 - q + q \cosh(\rho \sqrt{\beta}))` convex in
+    the power :math:`\beta` of one interferer; at :math:`\rho = 1` (the curvature at another
+    :math:`\rho` is this one at :math:`x = \rho \sqrt{\beta}`, times :math:`\rho^4`) it is
+    convex where this second derivative is positive. It is positive at the operating points and
+    turns negative for large :math:`x`, where the function grows as :math:`\sqrt{\beta}`. The
+    derivative is taken symbolically (sympy) and evaluated with mpmath, so :math:`\cosh`
+    does not overflow at large :math:`x`.
+
+    Parameters
+    ----------
+    x : array_like
+        Points :math:`x = \sqrt{\beta}` (1-D, finite).
+    q : float
+        Probability that a cross term is non-zero, :math:`q = 2 \tau / \alpha`
+        (``0 <= q <= 1``).
+
+    Returns
+    -------
+    ndarray
+        The second derivative at each ``x``.
+
+    Raises
+    ------
+    ValueError
+        If ``x`` is not a finite 1-D array or ``q`` is not a probability.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Theorem 3.2, Eq. (3.7.15).
+
+    Examples
+    --------
+    >>> g2 = gated_cosh_log_curvature([1.0, 20.0], 4e-5)
+    >>> bool(g2[0] > 0), bool(g2[1] < 0)
+    (True, True)
+    """
+    import sympy as sp
+
+    xs = as_finite_array("x", x, ndim=1)
+    require_probability("q", q)
+    bsym, qs = sp.symbols("beta q", positive=True)
+    g = sp.log(1 - qs + qs * sp.cosh(sp.sqrt(bsym)))
+    f = sp.lambdify((bsym, qs), sp.diff(g, bsym, 2), "mpmath")
+    return np.array([float(f(float(x) ** 2, q)) for x in xs])
 
 
 # Every public function checks its arguments against their annotations (finite numbers,

@@ -52,6 +52,7 @@ __all__ = [
     "clock_covariance",
     "clock_increment_covariance",
     "clock_prediction_variance",
+    "clock_state_tau_map",
     "mandelbrot_van_ness_constant",
     "mandelbrot_van_ness_constant_integral",
     "sample_clock_paths",
@@ -248,6 +249,68 @@ def clock_increment_covariance(n_epochs: int, sigma0: float) -> np.ndarray:
     n_epochs = require_integer("n_epochs", n_epochs, minimum=1)
     require_nonnegative("sigma0", sigma0)
     return sigma0**2 * (np.ones((n_epochs, n_epochs)) + np.eye(n_epochs))
+
+
+@implements("ATC10 4.5.9")
+def clock_state_tau_map(n_max: int) -> np.ndarray:
+    r"""Clock offsets :math:`\tau_n` of the state model Eq. 4.5.9 as a linear map of the draws.
+
+    The state :math:`(\tau_n, \alpha_n)` starts at :math:`\tau_0 = 0` with :math:`\alpha_0`
+    free and evolves as
+
+    .. math::
+
+        \begin{pmatrix} \tau_n \\ \alpha_n \end{pmatrix}
+        = \begin{pmatrix} 2 & 1 \\ -1 & 0 \end{pmatrix}
+          \begin{pmatrix} \tau_{n-1} \\ \alpha_{n-1} \end{pmatrix}
+        + \begin{pmatrix} 1 \\ -1 \end{pmatrix} w_n ,
+
+    propagated exactly for :math:`n = 1, \ldots, n_{\max}`. Row :math:`n` of the result holds
+    the coefficients of :math:`(\alpha_0, w_1, \ldots, w_{n_{\max}})` in :math:`\tau_n`, so
+    with :math:`\alpha_0` and the :math:`w_n` independent of variance :math:`\sigma_0^2` the
+    covariance of the offsets is :math:`\sigma_0^2 M M^\mathsf{T}`, which Sec. 4.5.2 states
+    is that of Eq. 4.3.1.
+
+    Parameters
+    ----------
+    n_max : int
+        Last epoch (``>= 0``).
+
+    Returns
+    -------
+    (n_max + 1, n_max + 1) ndarray
+        Row ``n`` (``n = 0..n_max``): the coefficients of ``(alpha_0, w_1, ..., w_n_max)`` in
+        :math:`\tau_n`; row 0 is zero.
+
+    Raises
+    ------
+    TypeError
+        If ``n_max`` is not an integer.
+    ValueError
+        If ``n_max`` is negative.
+
+    References
+    ----------
+    Schneider, Stiglitz & Eckberg, "Surveillance Aspects of the Advanced Air Traffic
+    Management System", MIT Lincoln Laboratory ATC-10 (1972), Eq. (4.5.9) and Sec. 4.5.2.
+
+    Examples
+    --------
+    >>> clock_state_tau_map(3).tolist()
+    [[0.0, 0.0, 0.0, 0.0], [1.0, 1.0, 0.0, 0.0], [2.0, 1.0, 1.0, 0.0], [3.0, 1.0, 1.0, 1.0]]
+    """
+    n_max = require_integer("n_max", n_max, minimum=0)
+    T = np.array([[2.0, 1.0], [-1.0, 0.0]])
+    B = np.array([1.0, -1.0])
+    coef = np.zeros((n_max + 1, n_max + 1))
+    state = np.zeros((2, n_max + 1))
+    state[1, 0] = 1.0
+    for n in range(1, n_max + 1):
+        e = np.zeros(n_max + 1)
+        e[n] = 1.0
+        state = T @ state + np.outer(B, e)
+        coef[n] = state[0]
+    return coef
 
 
 def clock_prediction_variance(covariance: ArrayLike, noise_variance: float, n_observed: int) -> float:

@@ -19,6 +19,7 @@ from navcore.claims import EXACT, PROSE_WORDS, Claim, Erratum
 from navcore.claims.inputs import input_cache
 from navcore.location.clock_model import (
     clock_covariance,
+    clock_state_tau_map,
 )
 from navcore.location.clock_tracking import (
     alpha_parameter,
@@ -187,27 +188,11 @@ def least_squares_forms() -> bool:
     return bool(ok)
 
 
-def _tau_linear_map(n_max: int) -> np.ndarray:
-    """Rows n = 0..n_max: tau_n of the state model [tau, alpha] (tau_0 = 0, alpha_0 free) as a
-    linear map of (alpha_0, w_1, ..., w_n_max)."""
-    T = np.array([[2.0, 1.0], [-1.0, 0.0]])
-    B = np.array([1.0, -1.0])
-    coef = np.zeros((n_max + 1, n_max + 1))
-    state = np.zeros((2, n_max + 1))
-    state[1, 0] = 1.0
-    for n in range(1, n_max + 1):
-        e = np.zeros(n_max + 1)
-        e[n] = 1.0
-        state = T @ state + np.outer(B, e)
-        coef[n] = state[0]
-    return coef
-
-
 def state_model_matches() -> bool:
     """(4.5.9) propagated exactly gives the covariance (4.3.1b): sigma0^2 [min(m, n) + m n]."""
     s0 = TR.sigma0_low_ns
     n_max = 30
-    coef = _tau_linear_map(n_max)
+    coef = clock_state_tau_map(n_max)
     cov = s0**2 * coef @ coef.T
     rows, cols = np.meshgrid(np.arange(n_max + 1), np.arange(n_max + 1), indexing="ij")
     want = s0**2 * (np.minimum(rows, cols) + rows * cols)
@@ -324,7 +309,7 @@ def increment_covariance_matches() -> bool:
     Delta_n = tau_n - tau_{n-1} - tau_bar, from the covariance (4.3.1b) of the state model
     (4.5.9) propagated exactly (as :func:`state_model_matches`)."""
     s0 = TR.sigma0_low_ns
-    coef = _tau_linear_map(30)
+    coef = clock_state_tau_map(30)
     d = np.diff(coef, axis=0)  # Delta_1 .. Delta_n as linear maps of (alpha_0, w_1..w_n)
     cov = s0**2 * d @ d.T
     want = s0**2 * (np.ones_like(cov) + np.eye(len(cov)))

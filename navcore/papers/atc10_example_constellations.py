@@ -15,16 +15,11 @@ from navcore.claims import EXACT, Claim, Erratum, Tolerance, printed
 from navcore.location.multilateration import (
     beta_parameter,
     clock_direction_term,
-    frame_dependent_clock_term,
-    line_of_sight_matrix,
     position_dilution_covariance,
-    position_on_sphere,
     position_trace,
-    synchronous_orbit_radius,
 )
 from navcore.papers.atc10_quotes import quoted
 from navcore.papers.atc10_tracking_geometry import (
-    _TABLE_4_1,
     COLUMN_NAMES,
     COLUMNS,
     EXAMPLES,
@@ -75,9 +70,9 @@ _e2_claims: list[str] = []
 #: The paper's own rounding of Table 4.1 (coordinates printed to 0.1 deg): Table 4.2 was computed
 #: from the coordinates before rounding, so each Table 4.2 claim adds the largest change of its
 #: quantity when every coordinate moves within +-0.05 deg (the linearised worst case, rounded up
-#: to two figures; :func:`table_4_1_rounding_allowance` recomputes it and a test checks these
-#: values). Keyed (geometry, example, column): "physical" at the synchronous orbit (invariant S3),
-#: "fitted" at the fitted ratio (col. 5 with the printed formula).
+#: to two figures; tests/test_atc10_tracking.py recomputes it from the printed coordinates and
+#: checks these values). Keyed (geometry, example, column): "physical" at the synchronous orbit
+#: (invariant S3), "fitted" at the fitted ratio (col. 5 with the printed formula).
 _TAB41_ALLOWANCE: dict[tuple[str, str, str], float] = {
     ("physical", "I", "beta"): 6.2e-4,
     ("physical", "I", "trace_all"): 0.064,
@@ -106,42 +101,6 @@ _TAB41_WHY = (
     "Table 4.1's coordinates are printed to 0.1 deg; moving each within its rounding moves this "
     "value by up to"
 )
-
-
-def table_4_1_rounding_allowance(geometry: str, example: str, column: str, step_deg: float = 0.05) -> float:
-    """Largest change of a Table 4.2 column when each Table 4.1 coordinate moves by ``step_deg``.
-
-    The linearised worst case (sum of |partial derivative| x step) from the coordinates as
-    printed (the module's table, not the inputs), at the synchronous orbit (``"physical"``,
-    invariant S3) or the fitted ratio (``"fitted"``, col. 5 with the printed formula), aircraft
-    at 45 deg N, 120 deg on the surface. Only a test calls it, to check :data:`_TAB41_ALLOWANCE`.
-    """
-    ratio = 9.235 if geometry == "fitted" else synchronous_orbit_radius() / 6_371_000.0
-
-    def value(pts: np.ndarray) -> float:
-        sats = position_on_sphere(pts[:, 0], pts[:, 1], ratio, deg=True)
-        U = -line_of_sight_matrix(position_on_sphere(45.0, 120.0, 1.0, deg=True), sats)
-        if column == "s_123":
-            return float(
-                frame_dependent_clock_term(U[:3]) if geometry == "fitted" else clock_direction_term(U[:3])
-            )
-        return float(
-            {
-                "beta": beta_parameter,
-                "trace_all": position_trace,
-                "s_all": clock_direction_term,
-                "trace_123": lambda u: position_trace(u[:3]),
-            }[column](U)
-        )
-
-    pts = np.array(_TABLE_4_1[example], dtype=float)
-    base, h, total = value(pts), 1e-4, 0.0
-    for i in range(pts.shape[0]):
-        for j in range(2):
-            moved = pts.copy()
-            moved[i, j] += h
-            total += abs(value(moved) - base) / h * step_deg
-    return total
 
 
 def _tab42_tolerance(geometry: str, example: str, column: str) -> Tolerance:

@@ -389,11 +389,6 @@ def _false_tracks_above_bound() -> bool:
     return bool(ok)
 
 
-def min_nonempty_lists(k: int, t: float) -> int:
-    """Fewest non-empty lists among K for which the rule 'more than Kt non-empty' decides H1 (enumeration)."""
-    return min(sum(r) for r in itertools.product((0, 1), repeat=k) if sum(r) > k * t)
-
-
 def _window_empty_ratio(rho: float) -> float:
     """P(no declaration in an n-sample window) for neighbours correlated rho, over (1 - p_f)^n."""
     n, pf = window_n(), window_pf()
@@ -414,7 +409,8 @@ def b9_real_exponent_bound_holds(n_f: int = 99) -> bool:
     """(B.10)-(B.11) with a real exponent: F^(Kt+1) <= P(at least floor(Kt)+1 of K lists non-empty),
     K = 10 (Table 2.1), t = 0.25, over a grid of list probabilities F in (0, 1)."""
     k = int(IN_J.tab21_k10)
-    need = min_nonempty_lists(k, B9_T)
+    # fewest non-empty lists among K for which the rule 'more than Kt non-empty' decides H1 (enumeration)
+    need = min(sum(r) for r in itertools.product((0, 1), repeat=k) if sum(r) > k * B9_T)
     f = np.linspace(0.0, 1.0, n_f + 2)[1:-1]  # n_f points strictly inside (0, 1)
     exact = stats.binom.sf(need - 1, k, f)
     return bool(need == math.floor(k * B9_T) + 1 and np.all(f ** (k * B9_T + 1) <= exact + 1e-15))

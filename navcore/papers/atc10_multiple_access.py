@@ -28,6 +28,7 @@ from navcore.detection.multiple_access import (
     PointMassDensity,
     TriangularDensity,
     UniformDensity,
+    carrier_phase_density,
     cumulants_from_raw_moments,
     edgeworth_density,
     gaussian_mixture_exact_tail,
@@ -40,9 +41,6 @@ from navcore.detection.roc_bounds import (
     gaussian_roc,
     quasi_optimal_exponent,
     roc_upper_bound,
-)
-from navcore.detection.zakai import (
-    m_sequence,
 )
 from navcore.papers.atc10_quotes import quoted
 
@@ -298,16 +296,6 @@ IN.assumed(
 CHECK_CONTOURS = (3.0, 4.0, 5.0, 6.0, 8.0)
 
 
-def density(name: str, b: float):
-    """The book's C1..C4 of second moment b (Sec. 3.6; Fig. 3.2 is lost)."""
-    return {
-        "C1 uniform": UniformDensity(b),
-        "C2 two-point": two_point_density(b),
-        "C3 triangular": TriangularDensity(b),
-        "C4 Gaussian": GaussianDensity(b),
-    }[name]
-
-
 DENSITY_NAMES = ("C1 uniform", "C2 two-point", "C3 triangular", "C4 Gaussian")
 
 
@@ -317,7 +305,16 @@ def b_of_contour(x: float) -> float:
 
 
 def noise_sec36(name: str, x: float) -> MultipleAccessNoise:
-    return MultipleAccessNoise(IN.n_sec36, IN.tau_over_alpha_sec36, density(name, b_of_contour(x)))
+    """The noise of Sec. 3.6 (N, tau/alpha published) with the book's C1..C4 of second moment b
+    at the contour x = 1/sqrt(3b) (Fig. 3.2 is lost)."""
+    b = b_of_contour(x)
+    density = {
+        "C1 uniform": UniformDensity(b),
+        "C2 two-point": two_point_density(b),
+        "C3 triangular": TriangularDensity(b),
+        "C4 Gaussian": GaussianDensity(b),
+    }[name]
+    return MultipleAccessNoise(IN.n_sec36, IN.tau_over_alpha_sec36, density)
 
 
 def gaussian_best_pf(x: float, pd_min: float) -> float:
@@ -366,31 +363,16 @@ def worked_example_exp_oracle() -> float:
 _N_PHASES = 12
 
 
-_PHASES = 2.0 * np.pi * np.arange(_N_PHASES) / _N_PHASES
-
-
 #: A positive, skewed envelope X (the overlap integral of (3.3.7) is not symmetric by itself).
 _ENVELOPE = ((0.5, 2.0), (0.8, 0.2))
-
-
-def paper_model_density() -> PointMassDensity:
-    """The amplitude density C of the paper's model: cos(phase) x X, phase uniform, X skewed > 0."""
-    vals = [np.cos(ph) * x for ph in _PHASES for x in _ENVELOPE[0]]
-    probs = [pr / _PHASES.size for _ in _PHASES for pr in _ENVELOPE[1]]
-    return PointMassDensity(tuple(vals), tuple(probs), name="cos(phase) x envelope")
-
-
-def paper_model_third_moment() -> float:
-    """E[n_ij^3] of the paper's model: E[cos^3] E[X^3] = 0 (lambda_3 = 0, C symmetric)."""
-    d = paper_model_density()
-    return float(np.sum(np.asarray(d.weights) * np.asarray(d.values) ** 3))
 
 
 def _term_scaling_exponent(order: int) -> float:
     """Decay rate in N (the term falls as N^-rate) of the Gaussian term (order 0) or of the
     corrections to it (order > 0: the lambda_3 term, zero here, and the lambda_4 term) of (E.15)
-    at n = sigma, for the amplitude density of the paper's model (:func:`paper_model_density`)."""
-    dens = paper_model_density()
+    at n = sigma, for the amplitude density of the paper's model, cos(phase) x the envelope
+    :data:`_ENVELOPE` (:func:`~navcore.detection.multiple_access.carrier_phase_density`)."""
+    dens = carrier_phase_density(*_ENVELOPE, n_phases=_N_PHASES)
     vals = []
     ns = (10**6, 10**8)
     for n in ns:
@@ -432,17 +414,6 @@ def clt_tail_convergence() -> tuple[float, ...]:
         exact = float(gaussian_mixture_exact_tail(b, n - 1, noise.q, np.array([k_sigma * sig]))[0])
         out.append(abs(exact - special.ndtr(-k_sigma)))
     return tuple(out)
-
-
-def w_chip_msequence_oracle(degree: int = 10) -> float:
-    """Brute force: correlate the sampled chip waveform and integrate R(t)^2 by Simpson's rule."""
-    c = m_sequence(degree)
-    over = 4
-    s = np.repeat(c, over) / np.sqrt(c.size)  # chip = 1 s, unit energy
-    r = np.concatenate([[0.0], np.correlate(s, s, mode="full") / over, [0.0]])  # exact at the samples
-    t = np.arange(r.size) / over
-    energy = integrate.simpson(r**2, x=t)  # exact for a square of a linear function per chip pair
-    return 1.0 / (2.0 * energy)
 
 
 @input_cache

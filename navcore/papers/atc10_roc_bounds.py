@@ -13,7 +13,6 @@ import math
 from fractions import Fraction
 
 import numpy as np
-import sympy as sp
 from scipy import special
 
 from navcore.claims import EXACT, Claim, Erratum
@@ -30,6 +29,7 @@ from navcore.detection.roc_bounds import (
     chernoff_log_tail,
     gallager_log_tail_lower,
     gallager_log_tails_lower,
+    gated_cosh_log_curvature,
     gaussian_chernoff_exponent,
     quasi_optimal_exponent,
     quasi_optimal_exponent_approx,
@@ -449,22 +449,14 @@ def smallest_peak() -> bool:
     )
 
 
-def _g2(xs: np.ndarray, q: float) -> np.ndarray:
-    """Second derivative in beta of ln(1 - q + q cosh(rho sqrt beta)) at rho = 1, beta = x^2."""
-    bsym, qs = sp.symbols("beta q", positive=True)
-    g = sp.log(1 - qs + qs * sp.cosh(sp.sqrt(bsym)))
-    f = sp.lambdify((bsym, qs), sp.diff(g, bsym, 2), "mpmath")
-    return np.array([float(f(float(x) ** 2, q)) for x in xs])
-
-
 def convex_operating() -> bool:
     q = 2 * MA.tau_over_alpha_sec36
-    return bool(np.all(_g2(np.linspace(0.05, 8.0, 80), q) > 0))
+    return bool(np.all(gated_cosh_log_curvature(np.linspace(0.05, 8.0, 80), q) > 0))
 
 
 def convex_unconditional() -> bool:
     q = 2 * MA.tau_over_alpha_sec36
-    return bool(np.all(_g2(np.linspace(0.05, 30.0, 300), q) > 0))
+    return bool(np.all(gated_cosh_log_curvature(np.linspace(0.05, 30.0, 300), q) > 0))
 
 
 def convex_unconditional_oracle() -> bool:
@@ -482,10 +474,6 @@ def _codes(seed: int = 3, L: int = 31):
     return [rng.choice([-1.0, 1.0], L) / math.sqrt(L) for _ in range(4)]
 
 
-def _r(code):
-    return aperiodic_autocorrelation(code)
-
-
 def appf_identity() -> bool:
     """(F.5): int X_ij^2 = int R_ii R_jj for random codes (piecewise-linear, chip = 1)."""
     cs = _codes()
@@ -493,7 +481,9 @@ def appf_identity() -> bool:
         for j in range(i + 1, len(cs)):
             x = np.correlate(cs[i], cs[j], mode="full")
             lhs = piecewise_linear_inner(x, x, 1.0)
-            rhs = piecewise_linear_inner(_r(cs[i]), _r(cs[j]), 1.0)
+            rhs = piecewise_linear_inner(
+                aperiodic_autocorrelation(cs[i]), aperiodic_autocorrelation(cs[j]), 1.0
+            )
             if abs(lhs - rhs) > 1e-12:
                 return False
     return True
@@ -501,11 +491,13 @@ def appf_identity() -> bool:
 
 def thm33_equality() -> bool:
     cs = _codes()
-    ri = _r(cs[0])
+    ri = aperiodic_autocorrelation(cs[0])
     eq = piecewise_linear_inner(ri, ri, 1.0)
-    rj = _r(cs[1])
+    rj = aperiodic_autocorrelation(cs[1])
     strict = piecewise_linear_inner(ri, rj, 1.0) < math.sqrt(eq * piecewise_linear_inner(rj, rj, 1.0)) - 1e-9
-    rrev = _r(cs[0][::-1])  # the time-reversed code has the same autocorrelation: equality
+    rrev = aperiodic_autocorrelation(
+        cs[0][::-1]
+    )  # the time-reversed code has the same autocorrelation: equality
     return strict and abs(piecewise_linear_inner(ri, rrev, 1.0) - eq) < 1e-12
 
 

@@ -64,8 +64,9 @@ def three_satellites_prior_mean() -> bool:
     return True
 
 
-def newton_error_exponent() -> tuple[float, float]:
-    """First Newton iterate's error vs lambda: log-slope and error/((k/f0) lambda^2) at the largest lambda.
+def newton_error_order() -> bool:
+    """The first Newton iterate's error is of order lambda^2: its log-slope against lambda is 2 and
+    error/((k/f0) lambda^2) at the largest lambda is of order one.
 
     f_eps(t) = lambda f0 cos(2 pi t / 3 s); lambda from 1e-4 down to 1e-5 (1e-9 is below
     double precision for t of seconds; the error's order in lambda is what is checked).
@@ -82,11 +83,7 @@ def newton_error_exponent() -> tuple[float, float]:
         t1 = k / f0 - (lam * 3.0 / (2 * math.pi)) * math.sin(2 * math.pi * (k / f0) / 3.0)
         errs.append(abs(t1 - t_true))
     slope = math.log(errs[0] / errs[1]) / math.log(lams[0] / lams[1])
-    return slope, errs[0] / ((k / f0) * lams[0] ** 2)
-
-
-def newton_error_order() -> bool:
-    slope, scaled = newton_error_exponent()
+    scaled = errs[0] / ((k / f0) * lams[0] ** 2)
     return abs(slope - 2.0) < 0.1 and scaled < 10.0
 
 

@@ -13,6 +13,7 @@ import numpy as np
 from navcore.claims import EXACT, Claim, Erratum, monte_carlo, printed, prose
 from navcore.detection.zakai import (
     alternating_sidelobe_autocorrelation,
+    aperiodic_autocorrelation,
     m_sequence,
     paper_psk_zakai_bandwidth,
     piecewise_linear_inner,
@@ -28,7 +29,7 @@ from navcore.papers.atc10_multiple_access import (
     psk_physical_samples,
 )
 from navcore.papers.atc10_quotes import quoted
-from navcore.papers.atc10_roc_bounds import _codes, _r
+from navcore.papers.atc10_roc_bounds import _codes
 
 CLAIMS: list[Claim] = []
 ERRATA: list[Erratum] = []
@@ -186,9 +187,9 @@ def peak_sir_identity() -> bool:
 
 def thm33_bound() -> bool:
     cs = _codes()
-    ri = _r(cs[0])
+    ri = aperiodic_autocorrelation(cs[0])
     for c in cs[1:]:
-        rj = _r(c)
+        rj = aperiodic_autocorrelation(c)
         if (
             piecewise_linear_inner(ri, rj, 1.0)
             > math.sqrt(piecewise_linear_inner(ri, ri, 1.0) * piecewise_linear_inner(rj, rj, 1.0)) + 1e-12
@@ -200,7 +201,7 @@ def thm33_bound() -> bool:
 def thm33_printed_unit_free() -> bool:
     """Is the printed bound 1/(4 alpha sqrt(W_j) W_j) independent of the time unit (as E(n^2) is)?"""
     code = m_sequence(5) / math.sqrt(31)
-    r = _r(code)
+    r = aperiodic_autocorrelation(code)
     vals = []
     for chip in (1e-7, 1e-1):  # the same code in seconds, then in units of 1e-6 s
         w = 1.0 / (2 * piecewise_linear_inner(r, r, chip))
