@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from navcore.claims import EXACT, Claim, Erratum, Tolerance, printed
+from navcore.claims import EXACT, Claim, Erratum, Tolerance, printed, with_quotes
 from navcore.location.multilateration import (
     beta_parameter,
     clock_direction_term,
@@ -22,7 +22,7 @@ from navcore.location.multilateration import (
     position_trace,
     synchronous_orbit_radius,
 )
-from navcore.papers.atc10_quotes import quoted
+from navcore.papers.atc10_quotes import QUOTES
 from navcore.papers.atc10_tracking_geometry import (
     _TABLE_4_1,
     COLUMN_NAMES,
@@ -447,4 +447,4 @@ _e1_claims.append("ATC10-sec4.6-rule4-common-threshold")
 
 
 #: Every claim quotes the paper (issue 27, item 5).
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

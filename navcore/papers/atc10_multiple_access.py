@@ -20,7 +20,7 @@ import numpy as np
 import sympy as sp
 from scipy import integrate, special, stats
 
-from navcore.claims import Claim, Erratum, Tolerance, printed
+from navcore.claims import Claim, Erratum, Tolerance, printed, with_quotes
 from navcore.claims.inputs import InputSet, input_cache
 from navcore.detection.multiple_access import (
     GaussianDensity,
@@ -44,7 +44,7 @@ from navcore.detection.roc_bounds import (
 from navcore.detection.zakai import (
     m_sequence,
 )
-from navcore.papers.atc10_quotes import quoted
+from navcore.papers.atc10_quotes import QUOTES
 
 CLAIMS: list[Claim] = []
 ERRATA: list[Erratum] = []
@@ -831,4 +831,4 @@ CLAIMS += [
 ]
 
 #: Every claim quotes the paper (issue 27, item 5).
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

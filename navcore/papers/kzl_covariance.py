@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from navcore.claims import Claim, input_cache, printed, prose
+from navcore.claims import Claim, input_cache, printed, prose, with_quotes
 from navcore.inertial.error_dynamics import (
     ErrorSources,
     initial_covariance,
@@ -37,7 +37,7 @@ from navcore.inertial.error_dynamics import (
 from navcore.inertial.imu import gyro_bias_calibrated_at_rest
 from navcore.inertial.trajectories import straight_and_level
 from navcore.integration.engine import CovarianceAnalysis, run_covariance_analysis
-from navcore.papers.kzl_quotes import quoted
+from navcore.papers.kzl_quotes import QUOTES
 from navcore.papers.kzl_scenario import IN, initial_fix_sigmas, kzl_imu
 from navcore.papers.kzl_simulation import PAGE3
 from navcore.units import DEG, G0
@@ -220,4 +220,4 @@ CLAIMS = [
     ),
 ]
 
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

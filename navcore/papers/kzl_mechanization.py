@@ -9,12 +9,12 @@ import numpy as np
 import scipy.linalg
 from scipy.spatial.transform import Rotation
 
-from navcore.claims import EXACT, Claim, Erratum, InputSet, input_cache, printed
+from navcore.claims import EXACT, Claim, Erratum, InputSet, input_cache, printed, with_quotes
 from navcore.frames import dcm_from_euler
 from navcore.inertial.alignment import heading_from_velocity, levelling_as_printed
 from navcore.inertial.error_model17 import ERROR_LAYOUT_17, error_dynamics_17, transition_exact
 from navcore.inertial.strapdown import earth_rate_ned, transport_rate_ned
-from navcore.papers.kzl_quotes import quoted
+from navcore.papers.kzl_quotes import QUOTES
 from navcore.papers.kzl_scenario import IN as SCEN
 from navcore.papers.kzl_scenario import kzl_imu, table1_attitude, table1_scenario
 from navcore.papers.kzl_tightly_coupled_filter import PAGE2, observability_ranks, table1_F
@@ -376,4 +376,4 @@ CLAIMS = [
     ),
 ]
 
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

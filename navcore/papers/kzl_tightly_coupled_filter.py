@@ -9,7 +9,7 @@ import numpy as np
 import scipy.linalg
 from scipy.spatial.transform import Rotation
 
-from navcore.claims import EXACT, Claim, Erratum, input_cache
+from navcore.claims import EXACT, Claim, Erratum, input_cache, with_quotes
 from navcore.estimation import kf_update
 from navcore.frames import dcm_from_quat, euler_from_dcm, quat_from_dcm, skew
 from navcore.gnss.carrier_phase import dd_covariance, euler_rate_matrix_body
@@ -27,7 +27,7 @@ from navcore.integration.measurement_rows import (
     tc_attitude_observation_matrix,
     tc_dd_observation_matrix,
 )
-from navcore.papers.kzl_quotes import quoted
+from navcore.papers.kzl_quotes import QUOTES
 from navcore.papers.kzl_scenario import IN as SCEN
 from navcore.papers.kzl_scenario import table1_attitude, table1_baselines_b, table1_los
 from navcore.units import DEG, G0, GPS_L1_WAVELENGTH_M
@@ -494,4 +494,4 @@ CLAIMS = [
     ),
 ]
 
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

@@ -12,7 +12,17 @@ from typing import Any
 
 import numpy as np
 
-from navcore.claims import EXACT, PROSE_WORDS, Claim, Erratum, figure_reading, input_cache, printed, prose
+from navcore.claims import (
+    EXACT,
+    PROSE_WORDS,
+    Claim,
+    Erratum,
+    figure_reading,
+    input_cache,
+    printed,
+    prose,
+    with_quotes,
+)
 from navcore.estimation.federated import (
     accelerometer_steady_state_isotropic,
     federated_improvement_db,
@@ -21,7 +31,7 @@ from navcore.estimation.federated import (
 )
 from navcore.papers.wf_inputs import IN, f_l1_over_c_printed, sigma_a_example, sigma_t_values
 from navcore.papers.wf_local_estimators import SPEED_DIMENSION, dim_product
-from navcore.papers.wf_quotes import quoted
+from navcore.papers.wf_quotes import QUOTES
 from navcore.trace import implements
 from navcore.units import GPS_L1_HZ, C
 
@@ -567,4 +577,4 @@ CLAIMS = [
     ),
 ]
 
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

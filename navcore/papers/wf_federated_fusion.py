@@ -13,7 +13,7 @@ import itertools
 
 import numpy as np
 
-from navcore.claims import EXACT, Claim, Erratum, input_cache
+from navcore.claims import EXACT, Claim, Erratum, input_cache, with_quotes
 from navcore.estimation.federated import (
     correlated_joint_covariance,
     feasible_weights,
@@ -24,7 +24,7 @@ from navcore.estimation.federated import (
     optimal_weights,
 )
 from navcore.papers.wf_inputs import IN
-from navcore.papers.wf_quotes import quoted
+from navcore.papers.wf_quotes import QUOTES
 
 #: The page that discusses the claims of Secs. IV.B and IV.C.
 PAGE = "wf/03-local-estimators"
@@ -424,4 +424,4 @@ CLAIMS = [
     ),
 ]
 
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

@@ -10,10 +10,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from navcore.claims import EXACT, Claim, Erratum
+from navcore.claims import EXACT, Claim, Erratum, with_quotes
 from navcore.estimation.federated import accelerometer_steady_state_isotropic
 from navcore.papers.wf_inputs import IN, f_l1_over_c_printed, sigma_a_example
-from navcore.papers.wf_quotes import quoted
+from navcore.papers.wf_quotes import QUOTES
 
 #: The page that discusses the claims of Secs. IV.B and IV.C.
 PAGE = "wf/03-local-estimators"
@@ -249,4 +249,4 @@ CLAIMS = [
     ),
 ]
 
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)
