@@ -45,7 +45,6 @@ from navcore.units import DEG, G0
 __all__ = [
     "CLAIMS",
     "standalone_covariance",
-    "standalone_layout",
     "standalone_sigma",
 ]
 
@@ -56,20 +55,6 @@ def _accel_random_walk() -> float:
     if vrw is None:
         raise ValueError("the KZL IMU has no accelerometer random walk")
     return vrw
-
-
-def standalone_layout():
-    """Error states of the stand-alone INS: navigation errors and every Table 1 sensor error."""
-    return ins_error_layout(
-        "position",
-        "velocity",
-        "misalignment",
-        "gyro bias",
-        "gyro scale factor",
-        "accel bias",
-        "accel scale factor",
-        name="KZL stand-alone INS",
-    )
 
 
 @input_cache
@@ -85,7 +70,17 @@ def standalone_covariance(initialise: bool = True, init_time: float | None = Non
         Averaging time of the initialisation (s); ``None`` reads the assumed input
         ``init_time_s`` (the paper does not give it).
     """
-    layout = standalone_layout()
+    # error states of the stand-alone INS: navigation errors and every Table 1 sensor error
+    layout = ins_error_layout(
+        "position",
+        "velocity",
+        "misalignment",
+        "gyro bias",
+        "gyro scale factor",
+        "accel bias",
+        "accel scale factor",
+        name="KZL stand-alone INS",
+    )
     lat, lon = IN.lat_deg * DEG, IN.lon_deg * DEG
     ve, vn = IN.velocity_east_mps, IN.velocity_north_mps
     speed = float(np.hypot(ve, vn))
