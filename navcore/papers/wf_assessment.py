@@ -33,7 +33,7 @@ from navcore.papers.wf_inputs import IN, f_l1_over_c_printed, sigma_a_example, s
 from navcore.papers.wf_local_estimators import SPEED_DIMENSION
 from navcore.papers.wf_quotes import QUOTES
 from navcore.trace import implements
-from navcore.units import GPS_L1_HZ, C
+from navcore.units import GPS_L1_HZ
 
 #: The page that discusses the claims of Secs. IV.D and V.
 PAGE = "wf/04-assessment"
@@ -41,11 +41,6 @@ PAGE = "wf/04-assessment"
 
 #: Sec. IV.D printed L1 frequency over c, 1/m (the figures read the published input).
 F_L1_OVER_C_PRINTED = "5.25"
-
-
-def f_l1_over_c() -> float:
-    """GPS L1 frequency over the defined speed of light, 1/m (5.2550)."""
-    return GPS_L1_HZ / C
 
 
 def f_l1_over_c_read() -> float:
