@@ -130,7 +130,8 @@ def with_quotes(claims: Iterable[Claim], quotes: Mapping[str, str]) -> list[Clai
     Raises
     ------
     TypeError
-        If ``quotes`` is not a mapping or an item of ``claims`` is not a :class:`Claim`.
+        If ``quotes`` is not a mapping or an item of ``claims`` is not a
+        :class:`~navcore.claims.declarations.Claim`.
 
     Examples
     --------
