@@ -1147,6 +1147,7 @@ def federated_bound_monte_carlo(
     N = require_integer("n_estimators", n_estimators, minimum=1)
     require_integer("samples", samples, minimum=2)
     n = 3
+    J: NDArray[Any]
     if kind == "generic":
         J = random_covariance(rng, n * N)
     elif kind == "mixed":
