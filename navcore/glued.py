@@ -290,9 +290,9 @@ def factor_three_db() -> float:
 @register("wf89-fl1c", "wf/89-summary", "f_L1 / c with the defined c (cycles per metre)")
 def f_l1_over_defined_c() -> float:
     """The GPS L1 carrier frequency over the defined speed of light (Wu & Fowler Sec. IV.D), 1/m."""
-    from navcore.papers import wf_assessment
+    from navcore.units import GPS_L1_HZ, C
 
-    return float(wf_assessment.f_l1_over_c())
+    return float(GPS_L1_HZ / C)
 
 
 @register("wf89-fl1c-3e8", "wf/89-summary", "f_L1 / c with c read as 3e8 m/s (cycles per metre)")

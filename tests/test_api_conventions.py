@@ -504,6 +504,20 @@ REGISTRY: dict[str, tuple[Callable[[], dict[str, Any]], dict[str, str]]] = {
         lambda: {"covariances": [SPD2, 4.0 * SPD2]},
         {"covariances": COVARIANCE},
     ),
+    "estimation.federated.fusion_gains": (
+        lambda: {"covariances": [SPD2, 4.0 * SPD2]},
+        {"covariances": COVARIANCE},
+    ),
+    "estimation.federated.navigation_mapped_error_samples": (
+        lambda: {
+            "tau": [[1.0, 2.0]],
+            "P_N": SPD2,
+            "Q_T": [[0.5]],
+            "rng": np.random.default_rng(0),
+            "draws": 10,
+        },
+        {"P_N": COVARIANCE, "Q_T": COVARIANCE},
+    ),
     "integration.ekf_ins_gnss.correct_attitude": (
         lambda: {"q": np.stack([Q1, Q1]), "dpsi": np.zeros((2, 3))},
         {"q": QUATERNION},

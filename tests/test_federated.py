@@ -12,18 +12,25 @@ from navcore.estimation.federated import (
     accelerometer_predict,
     accelerometer_steady_state,
     accelerometer_steady_state_isotropic,
+    completely_correlated_trace_ratio,
     correlated_joint_covariance,
     feasible_weights,
+    federated_bound_margins,
+    federated_bound_monte_carlo,
+    federated_bound_monte_carlo_sweep,
     federated_covariance_bound,
     federated_fusion,
     fused_error_covariance,
+    fusion_gains,
     gps_doppler_covariance,
     gps_doppler_update,
     lever_arm_velocity,
     local_velocity_update,
     minkowski_trace_bound,
     navigation_mapped_covariance,
+    navigation_mapped_error_samples,
     optimal_weights,
+    random_covariance,
 )
 
 
@@ -215,8 +222,8 @@ def test_theorem_bound_monte_carlo(N, kind):
     Local errors of 3 states with a random joint covariance J ("generic": A A' + 0.1 I; "mixed": a
     common and an independent part, correlation uniform in [0, 1]; "complete": e_i = sigma_i w,
     where the bound with the optimal weights is exact) are fused with the weights of WF Eqs. (18)-(19)
-    (``wf_federated_fusion.theorem_monte_carlo_case``, which the ledger claim WF-thm-montecarlo also
-    runs, on other seeds). Criteria, in sampling standard deviations (sd) of S:
+    (``federated_bound_monte_carlo``, which the ledger claim WF-thm-montecarlo also runs, on other
+    seeds). Criteria, in sampling standard deviations (sd) of S:
 
     * WF Eq. (21): whitening by the bound B, lambda_max(B^-1/2 S B^-1/2) - 1 <= 5 sd, sd = sqrt(2/(n-1))
       (the sd of a whitened sample variance whose true value is 1, the largest it can be);
@@ -224,10 +231,8 @@ def test_theorem_bound_monte_carlo(N, kind):
     * WF Eq. (20): |S_jk - C_jk| <= 5 sd_jk, sd_jk = sqrt((S_jj S_kk + S_jk^2)/(n-1)); and Eq. (20) applied to
       the sample joint covariance of the local errors is S itself (to round-off), so E[S] = Eq. (20) exactly.
     """
-    from navcore.papers import wf_federated_fusion
-
     rng = np.random.default_rng([N, ("generic", "mixed", "complete").index(kind), 31])
-    r = wf_federated_fusion.theorem_monte_carlo_case(rng, N, kind, 20_000)
+    r = federated_bound_monte_carlo(rng, N, kind, 20_000)
     assert r["z_bound"] <= 5 and r["z_trace"] <= 5 and r["z_eq20"] <= 5
     assert r["exact"] < 1e-10
     if kind == "complete":  # the criterion has power: it rejects the naive P_D of Eq. (19) as a bound
@@ -254,3 +259,134 @@ def test_weights_validation():
     """Validation: infeasible weights are rejected with the constraint named."""
     with pytest.raises(ValueError, match="weights"):
         federated_covariance_bound([np.eye(2), np.eye(2)], [1.5, 1.5])
+
+
+def test_random_covariance_mean_and_floor():
+    """Oracle: closed forms. E[A A^T] = n I for standard normal A, so the mean of 20 000 draws is
+    (n + f) I within 5 sampling sd (an entry of A A^T has variance n (1 + delta_jk)); Weyl's
+    inequality puts every eigenvalue at or above the floor f."""
+    rng = np.random.default_rng(2024)
+    n, f, m = 4, 0.7, 20_000
+    draws = np.stack([random_covariance(rng, n, f) for _ in range(m)])
+    assert np.abs(draws.mean(axis=0) - (n + f) * np.eye(n)).max() <= 5 * np.sqrt(2 * n / m)
+    assert np.linalg.eigvalsh(draws).min() >= f - 1e-12
+    assert np.array_equal(draws[0], draws[0].T)
+
+
+def test_random_covariance_validation():
+    """Validation: each argument is named as the caller spelled it."""
+    with pytest.raises(TypeError, match="rng"):
+        random_covariance(0, 3)  # type: ignore[arg-type]
+    with pytest.raises(ValueError, match="n"):
+        random_covariance(np.random.default_rng(0), 0)
+    with pytest.raises(ValueError, match="floor"):
+        random_covariance(np.random.default_rng(0), 3, -1.0)
+
+
+def test_fusion_gains_closed_form():
+    """Oracle: the closed form G_i = P_D P_i^-1, P_D = (sum_i P_i^-1)^-1 (WF Eqs. (18)-(19)), with
+    numpy's inverse; an outage has a zero map and the maps of the others sum to I."""
+    rng = np.random.default_rng(44)
+    Ps = [_spd(rng, 3) for _ in range(3)]
+    P_D = np.linalg.inv(sum(np.linalg.inv(P) for P in Ps))
+    for G, P in zip(fusion_gains(Ps), Ps, strict=True):
+        np.testing.assert_allclose(G, P_D @ np.linalg.inv(P), atol=1e-12)
+    G = fusion_gains([Ps[0], None, Ps[2]])
+    assert not np.any(G[1])
+    np.testing.assert_allclose(G[0] + G[2], np.eye(3), atol=1e-12)
+
+
+def _margins_by_hand(rng, cases):
+    """The margins of WF Eqs. (21)-(23) written from the closed forms with numpy only."""
+    out = {"eig": np.inf, "first": np.inf, "second": np.inf}
+    for _ in range(cases):
+        J = correlated_joint_covariance(rng, 3, 3, rng.uniform())
+        Ps = [J[3 * i : 3 * i + 3, 3 * i : 3 * i + 3] for i in range(3)]
+        infos = [np.linalg.inv(P) for P in Ps]
+        P_D = np.linalg.inv(sum(infos))
+        A = np.hstack([P_D @ Y for Y in infos])
+        C = A @ J @ A.T  # Eq. (20)
+        z = [rng.normal(size=3) for _ in range(3)]
+        s = np.array([np.sqrt(zi @ P @ zi) for zi, P in zip(z, Ps, strict=True)])
+        k = s.sum() / s  # Eq. (22)
+        B = P_D @ sum(ki * Y for ki, Y in zip(k, infos, strict=True)) @ P_D  # Eq. (21)
+        m = sum(np.sqrt(np.trace(P_D @ Y @ P_D)) for Y in infos) ** 2  # Eq. (23)
+        out["eig"] = min(out["eig"], np.linalg.eigvalsh(B - C)[0] / np.linalg.norm(B))
+        out["first"] = min(out["first"], (m - np.trace(C)) / m)
+        out["second"] = min(out["second"], (np.trace(B) - m) / np.trace(B))
+    return out
+
+
+def test_federated_bound_margins_against_the_closed_forms():
+    """Oracle: the margins recomputed from the closed forms of Eqs. (20)-(23) with numpy
+    (``_margins_by_hand``), on a seed the claim does not use; the theorem: all non-negative."""
+    got = federated_bound_margins(np.random.default_rng(5), 25)
+    want = _margins_by_hand(np.random.default_rng(5), 25)
+    for key in ("eig", "first", "second"):
+        assert got[key] == pytest.approx(want[key], rel=1e-6, abs=1e-12)
+        assert got[key] >= -1e-12
+    with pytest.raises(ValueError, match="cases"):
+        federated_bound_margins(np.random.default_rng(5), 0)
+    with pytest.raises(TypeError, match="rng"):
+        federated_bound_margins(5, 3)  # type: ignore[arg-type]
+
+
+def test_federated_bound_monte_carlo_sweep_cases_and_criteria():
+    """Oracle: the case plan written out by hand (three cases per kind, 2-4 estimators), and on a
+    seed and sample count the claim does not use (seed 7, 8 000 draws) every criterion within 5
+    sampling sd and Eq. (20) on the sample joint equal to S to round-off."""
+    out = federated_bound_monte_carlo_sweep(7, 8_000, 7)
+    assert [(r["N"], r["kind"]) for r in out] == [
+        (2, "generic"), (3, "generic"), (4, "generic"),
+        (2, "mixed"), (3, "mixed"), (4, "mixed"),
+        (2, "complete"),
+    ]  # fmt: skip
+    for r in out:
+        assert r["z_bound"] <= 5 and r["z_trace"] <= 5 and r["z_eq20"] <= 5 and r["exact"] < 1e-10
+    with pytest.raises(ValueError, match="kind"):
+        federated_bound_monte_carlo(np.random.default_rng(0), 2, "other", 100)
+    with pytest.raises(ValueError, match="samples"):
+        federated_bound_monte_carlo_sweep(2, 1, 0)
+
+
+def test_completely_correlated_trace_ratio_against_eq20():
+    """Oracle: the exact ratio, Minkowski term over tr of Eq. (20) with the joint covariance of
+    e_i = L_i w (blocks L_i L_j^T), computed with numpy; the Monte Carlo on 200 000 draws within 5
+    sampling sd of it (the relative sd of a sample trace is at most sqrt(2/(n-1))). Isotropic
+    factors make the bound exact (WF Remark (ii)); non-commuting ones do not."""
+    rng = np.random.default_rng(77)
+    L = [np.linalg.cholesky(_spd(rng, 3)) for _ in range(3)]
+    common = np.vstack(L)
+    Ps = [Li @ Li.T for Li in L]
+    infos = [np.linalg.inv(P) for P in Ps]
+    P_D = np.linalg.inv(sum(infos))
+    A = np.hstack([P_D @ Y for Y in infos])
+    exact = minkowski_trace_bound(Ps) / np.trace(A @ common @ common.T @ A.T)
+    samples = 200_000
+    got = completely_correlated_trace_ratio(L, np.random.default_rng(78), samples)
+    assert got == pytest.approx(exact, rel=5 * np.sqrt(2 / (samples - 1)))
+    assert exact > 1.01
+    iso = completely_correlated_trace_ratio([np.eye(3), 3.0 * np.eye(3)], np.random.default_rng(79), samples)
+    assert iso == pytest.approx(1.0, rel=5 * np.sqrt(2 / (samples - 1)))
+    with pytest.raises(ValueError, match=r"factors\[1\]"):
+        completely_correlated_trace_ratio([np.eye(3), np.eye(2)], np.random.default_rng(0), 10)
+
+
+def test_navigation_mapped_error_samples_covariance_is_eq11():
+    """Oracle: WF Eq. (11) in closed form, tau P_N tau^T + Q_T (``navigation_mapped_covariance``),
+    against the sample covariance of 100 000 draws of tau e_N + w_T (a 2 x 4 map), within 5
+    sampling sd per entry, sqrt((S_jj S_kk + S_jk^2)/(n-1))."""
+    rng = np.random.default_rng(1011)
+    tau = rng.normal(size=(2, 4))
+    P_N, Q_T = _spd(rng, 4, 0.3), _spd(rng, 2, 0.2)
+    n = 100_000
+    e = navigation_mapped_error_samples(tau, P_N, Q_T, rng, n)
+    assert e.shape == (n, 2)
+    S = np.cov(e.T)
+    C = navigation_mapped_covariance(tau, P_N, Q_T)
+    sd = np.sqrt((np.outer(np.diag(S), np.diag(S)) + S**2) / (n - 1))
+    assert np.all(np.abs(S - C) <= 5 * sd)
+    with pytest.raises(ValueError, match="tau"):
+        navigation_mapped_error_samples(np.eye(3), P_N, Q_T, rng, 10)
+    with pytest.raises(TypeError, match="rng"):
+        navigation_mapped_error_samples(tau, P_N, Q_T, None, 10)  # type: ignore[arg-type]

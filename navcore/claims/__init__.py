@@ -42,7 +42,7 @@ from navcore.claims.declarations import (
 )
 from navcore.claims.evaluation import Evaluation
 from navcore.claims.inputs import Input, InputSet, band_ahead, for_each_band_run, input_cache
-from navcore.claims.quotes import claim_quote, quote_policies
+from navcore.claims.quotes import claim_quote, quote_policies, with_quotes
 from navcore.claims.runs import evaluate
 from navcore.claims.tolerances import (
     EXACT,
@@ -84,4 +84,5 @@ __all__ = [
     "printed",
     "prose",
     "quote_policies",
+    "with_quotes",
 ]

@@ -12,14 +12,23 @@ convention (:func:`quote_has_number`).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import re
+from collections.abc import Iterable, Mapping
 from typing import Any
 
 from navcore.claims.declarations import Claim, resolve_tolerance
 from navcore.claims.tolerances import PROSE_WORDS, Tolerance
 
-__all__ = ["claim_quote", "label_prints_value", "quote_has_number", "quote_numbers", "quote_policies"]
+__all__ = [
+    "claim_quote",
+    "label_prints_value",
+    "quote_has_number",
+    "quote_numbers",
+    "quote_policies",
+    "with_quotes",
+]
 
 
 #: Words and signs of approximation in a quote: the tolerance is the prose table's band.
@@ -96,6 +105,51 @@ _POW10 = re.compile(r"(?<![\d.])10\s*(?:\^|\*\*)\s*\{?\s*([+-]?\d+)\s*\}?")
 
 
 _PLAIN = re.compile(r"(?<![\w.])[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?(\s*%)?")
+
+
+def with_quotes(claims: Iterable[Claim], quotes: Mapping[str, str]) -> list[Claim]:
+    """The claims, each with its ``printed`` quote taken from ``quotes`` unless it gives one.
+
+    A paper keeps the words behind its claims in one mapping (``navcore.papers.<paper>_quotes``
+    ``QUOTES``: claim id -> the paper's words or formula as transcribed); a paper module applies it
+    to its ``CLAIMS`` once, after declaring them. A claim that gives ``printed=`` itself (a
+    non-blank quote) keeps it; a claim whose id the mapping lacks is returned unchanged.
+
+    Parameters
+    ----------
+    claims : iterable of Claim
+        The claims of one paper module, in order.
+    quotes : mapping of str to str
+        Claim id -> the quote to fill in.
+
+    Returns
+    -------
+    list of Claim
+        The claims in the same order; those filled are copies (:func:`dataclasses.replace`).
+
+    Raises
+    ------
+    TypeError
+        If ``quotes`` is not a mapping or an item of ``claims`` is not a
+        :class:`~navcore.claims.declarations.Claim`.
+
+    Examples
+    --------
+    >>> from navcore.claims import Claim
+    >>> c = Claim.statement(id="WF-doc-eq1", locator="Eq. (1)", quantity="q", compute=lambda: True, note="n")
+    >>> with_quotes([c], {"WF-doc-eq1": "a = b"})[0].printed
+    'a = b'
+    """
+    if not isinstance(quotes, Mapping):
+        raise TypeError(f"quotes must be a mapping of claim id to quote, got {type(quotes).__name__}")
+    out = []
+    for i, c in enumerate(claims):
+        if not isinstance(c, Claim):
+            raise TypeError(f"claims[{i}] must be a Claim, got {type(c).__name__}")
+        out.append(
+            c if c.printed.strip() or c.id not in quotes else dataclasses.replace(c, printed=quotes[c.id])
+        )
+    return out
 
 
 _FRACTION = re.compile(r"(?<![\w.])(\d+(?:\.\d+)?)\s*/\s*(\d+(?:\.\d+)?)(?![\w.])")

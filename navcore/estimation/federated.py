@@ -25,7 +25,22 @@ Fusion (WF Sec. IV.C)
   :math:`k_i > 0` with :math:`\sum_i 1/k_i = 1` give a valid matrix bound; WF Eq. (22) and the
   remark's choice are such weights.
 * :func:`correlated_joint_covariance`: a random joint covariance of correlated local
-  errors (a common and an independent part), on which the theorem can be exercised.
+  errors (a common and an independent part), on which the theorem can be exercised;
+  :func:`random_covariance` draws one covariance.
+
+Checking the theorem (WF Eqs. (20)-(23))
+----------------------------------------
+* :func:`fusion_gains`: the linear maps :math:`\hat{\mathbf x}_i \mapsto \hat{\mathbf x}_D`
+  of WF Eqs. (18)-(19), read off :func:`federated_fusion`.
+* :func:`federated_bound_margins`: the margins of the bound (21) and of both inequalities of
+  (23) over random correlated joint covariances, exactly (Eq. (20)).
+* :func:`federated_bound_monte_carlo` and :func:`federated_bound_monte_carlo_sweep`: seeded
+  Monte Carlo of the fused error against the bound, the Minkowski term and Eq. (20), in
+  sampling standard deviations.
+* :func:`completely_correlated_trace_ratio`: Monte Carlo of the Minkowski term over the trace
+  of the fused error for completely correlated local errors (WF Remark (ii)).
+* :func:`navigation_mapped_error_samples`: draws of the navigation-mapped error of WF Eq. (10),
+  whose covariance is Eq. (11).
 
 Everything is general: any state dimension, any number of local estimators.
 """
@@ -34,6 +49,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -47,6 +63,7 @@ from navcore._validate import (
     check_public,
     require_in_range,
     require_integer,
+    require_nonnegative,
     require_positive,
     require_symmetric_psd,
 )
@@ -59,19 +76,26 @@ __all__ = [
     "accelerometer_predict",
     "accelerometer_steady_state",
     "accelerometer_steady_state_isotropic",
+    "completely_correlated_trace_ratio",
     "correlated_joint_covariance",
     "feasible_weights",
+    "federated_bound_margins",
+    "federated_bound_monte_carlo",
+    "federated_bound_monte_carlo_sweep",
     "federated_covariance_bound",
     "federated_fusion",
     "federated_improvement_db",
     "fused_error_covariance",
+    "fusion_gains",
     "gps_doppler_covariance",
     "gps_doppler_update",
     "lever_arm_velocity",
     "local_velocity_update",
     "minkowski_trace_bound",
     "navigation_mapped_covariance",
+    "navigation_mapped_error_samples",
     "optimal_weights",
+    "random_covariance",
 ]
 
 Array = NDArray[np.float64]
@@ -839,8 +863,8 @@ def correlated_joint_covariance(
 
     Each local covariance is :math:`\mathbf P_i = \mathbf L_i \mathbf L_i^T` with
     :math:`\mathbf L_i` the Cholesky factor of :math:`\mathbf A_i \mathbf A_i^T + 0.1\,\mathbf I`,
-    :math:`\mathbf A_i` standard normal. The local errors share a common part of weight
-    :math:`\rho`: :math:`\mathbf e_i = \mathbf L_i(\sqrt{\rho}\,\mathbf w +
+    :math:`\mathbf A_i` standard normal (:func:`random_covariance`). The local errors share a
+    common part of weight :math:`\rho`: :math:`\mathbf e_i = \mathbf L_i(\sqrt{\rho}\,\mathbf w +
     \sqrt{1 - \rho}\,\mathbf u_i)` with :math:`\mathbf w, \mathbf u_i` independent white, so
     the joint covariance has blocks :math:`\mathbf J_{ii} = \mathbf P_i` and
     :math:`\mathbf J_{ij} = \rho\,\mathbf L_i \mathbf L_j^T`. :math:`\rho = 0` gives
@@ -893,15 +917,439 @@ def correlated_joint_covariance(
     if n * N > MAX_JOINT_SIZE:
         raise ValueError(f"n_states * n_estimators must be at most {MAX_JOINT_SIZE}, got {n * N}")
     require_in_range("rho", rho, 0.0, 1.0)
-    L = []
-    for _ in range(N):
-        A = rng.normal(size=(n, n))
-        L.append(np.linalg.cholesky(A @ A.T + 0.1 * np.eye(n)))
+    L = [np.linalg.cholesky(random_covariance(rng, n)) for _ in range(N)]
     common = np.vstack(L)
     J = rho * common @ common.T
     for i, Li in enumerate(L):
         J[n * i : n * i + n, n * i : n * i + n] += (1 - rho) * Li @ Li.T
     return J
+
+
+def random_covariance(rng: np.random.Generator, n: int, floor: float = 0.1) -> Array:
+    r"""Draw a random covariance :math:`\mathbf A \mathbf A^T + f\,\mathbf I` of size ``n``.
+
+    :math:`\mathbf A` is ``n x n`` standard normal (one draw of ``rng``) and :math:`f` the
+    ``floor`` that keeps the matrix away from singular: its smallest eigenvalue is at least
+    :math:`f`, and its mean is :math:`(n + f)\,\mathbf I`. The local covariances on which
+    WF's statements about Eqs. (11), (16)-(23) are exercised (they hold for any covariance)
+    are such draws.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        Source of :math:`\mathbf A`.
+    n : int
+        Size, ``>= 1`` and at most ``MAX_JOINT_SIZE``.
+    floor : float, optional
+        :math:`f \ge 0` added to the diagonal (0.1).
+
+    Returns
+    -------
+    (n, n) ndarray
+        The symmetric positive semi-definite (definite for ``floor > 0``) matrix.
+
+    Raises
+    ------
+    TypeError
+        If ``rng`` is not a ``numpy.random.Generator``.
+    ValueError
+        If ``n`` is not a positive integer up to ``MAX_JOINT_SIZE`` or ``floor`` is negative.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eqs. (11),
+    (16)-(23).
+
+    Examples
+    --------
+    >>> P = random_covariance(np.random.default_rng(0), 3, floor=0.5)
+    >>> bool(np.allclose(P, P.T) and np.linalg.eigvalsh(P)[0] >= 0.5)
+    True
+    """
+    if not isinstance(rng, np.random.Generator):
+        raise TypeError(f"rng must be a numpy.random.Generator, got {type(rng).__name__}")
+    n = require_integer("n", n, minimum=1)
+    if n > MAX_JOINT_SIZE:
+        raise ValueError(f"n must be at most {MAX_JOINT_SIZE}, got {n}")
+    require_nonnegative("floor", floor)
+    A = rng.normal(size=(n, n))
+    return A @ A.T + floor * np.eye(n)
+
+
+def fusion_gains(covariances: Sequence[ArrayLike | float | None]) -> list[Array]:
+    r"""The linear maps :math:`\hat{\mathbf x}_i \mapsto \hat{\mathbf x}_D` of WF Eqs. (18)-(19).
+
+    :math:`\hat{\mathbf x}_D = \sum_i \mathbf G_i \hat{\mathbf x}_i` with
+    :math:`\mathbf G_i = \mathbf P_D \mathbf P_i^{-1}`; each :math:`\mathbf G_i` is read off
+    :func:`federated_fusion` column by column (the fusion of unit estimates), so it is the map
+    the fusion applies, round-off included.
+
+    Parameters
+    ----------
+    covariances : sequence of (n, n) array, float or None
+        Covariance of each local estimator; ``None``, ``inf`` or an infinite diagonal marks an
+        outage (its map is zero).
+
+    Returns
+    -------
+    list of (n, n) ndarray
+        :math:`\mathbf G_i`, one per estimator.
+
+    Raises
+    ------
+    ValueError
+        As :func:`federated_fusion`.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eqs. (18)-(19).
+
+    Examples
+    --------
+    >>> G = fusion_gains([np.eye(2), 3.0 * np.eye(2)])
+    >>> [float(g[0, 0]) for g in G]
+    [0.75, 0.25]
+    """
+    n, N = _state_size(covariances), len(covariances)
+    maps = []
+    for i in range(N):
+        cols = []
+        for d in np.eye(n):
+            xs = [d if j == i else np.zeros(n) for j in range(N)]
+            cols.append(federated_fusion(xs, covariances)[0])
+        maps.append(np.column_stack(cols))
+    return maps
+
+
+def federated_bound_margins(rng: np.random.Generator, cases: int) -> dict[str, float]:
+    r"""Smallest margins of the theorem of WF Eqs. (21)-(23) over random correlated errors.
+
+    Each of ``cases`` draws a joint covariance of three local errors of three states
+    (:func:`correlated_joint_covariance`, correlation weight uniform in [0, 1], drawn first)
+    and random directions :math:`\mathbf z_i` for the weights of Eq. (22)
+    (:func:`feasible_weights`), and computes the exact covariance :math:`\mathbf C` of the
+    fused error (Eq. (20)), the bound :math:`\mathbf B` of Eq. (21) and the Minkowski term
+    :math:`m` of Eq. (23). The theorem holds when every margin is non-negative.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        Source of the cases.
+    cases : int
+        Number of random cases, ``>= 1``.
+
+    Returns
+    -------
+    dict
+        ``"eig"``: smallest :math:`\lambda_{\min}(\mathbf B - \mathbf C)/\|\mathbf B\|` (Eq.
+        (21)); ``"first"``: smallest :math:`(m - \operatorname{tr}\mathbf C)/m` and ``"second"``:
+        smallest :math:`(\operatorname{tr}\mathbf B - m)/\operatorname{tr}\mathbf B` (the two
+        inequalities of Eq. (23)).
+
+    Raises
+    ------
+    TypeError
+        If ``rng`` is not a ``numpy.random.Generator``.
+    ValueError
+        If ``cases`` is not a positive integer.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eqs. (20)-(23).
+
+    Examples
+    --------
+    >>> m = federated_bound_margins(np.random.default_rng(0), 5)
+    >>> all(v >= -1e-12 for v in m.values())
+    True
+    """
+    if not isinstance(rng, np.random.Generator):
+        raise TypeError(f"rng must be a numpy.random.Generator, got {type(rng).__name__}")
+    require_integer("cases", cases, minimum=1)
+    eig_margin, first, second = np.inf, np.inf, np.inf
+    for _ in range(cases):
+        J = correlated_joint_covariance(rng, 3, 3, rng.uniform())
+        Ps = [J[3 * i : 3 * i + 3, 3 * i : 3 * i + 3] for i in range(3)]
+        cov = fused_error_covariance(Ps, J)
+        k = feasible_weights(Ps, directions=[rng.normal(size=3) for _ in range(3)])
+        B = federated_covariance_bound(Ps, k)
+        eig_margin = min(eig_margin, np.linalg.eigvalsh(B - cov)[0] / np.linalg.norm(B))
+        mink = minkowski_trace_bound(Ps)
+        first = min(first, (mink - np.trace(cov)) / mink)
+        second = min(second, (np.trace(B) - mink) / np.trace(B))
+    return {"eig": float(eig_margin), "first": float(first), "second": float(second)}
+
+
+#: Kinds of joint covariance :func:`federated_bound_monte_carlo` draws.
+MONTE_CARLO_KINDS = ("generic", "mixed", "complete")
+
+
+def federated_bound_monte_carlo(
+    rng: np.random.Generator, n_estimators: int, kind: str, samples: int
+) -> dict[str, Any]:
+    r"""Seeded Monte Carlo of the fused error against the theorem, WF Eqs. (18)-(23).
+
+    Draws a joint covariance :math:`\mathbf J` of ``n_estimators`` local errors of 3 states:
+    ``"generic"`` (:func:`random_covariance`, arbitrary correlations), ``"mixed"``
+    (:func:`correlated_joint_covariance`, correlation weight uniform in [0, 1]) or
+    ``"complete"`` (:math:`\mathbf e_i = \sigma_i \mathbf w` with one common :math:`\mathbf w`,
+    isotropic, :math:`\sigma_i` uniform in [0.1, 2]). ``samples`` errors are drawn, fused with
+    the maps of Eqs. (18)-(19) (:func:`fusion_gains`), and their sample covariance
+    :math:`\mathbf S` is compared with the bound :math:`\mathbf B` of Eq. (21) (weights of Eq.
+    (22) with random :math:`\mathbf z_i`; for ``"complete"`` the optimal weights, an instance of
+    Eq. (22) for which :math:`\mathbf B` equals the true covariance, so the check has no slack),
+    the Minkowski term of Eq. (23) and the exact covariance :math:`\mathbf C` of Eq. (20).
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        Source of the covariance, the errors and the directions, drawn in that order.
+    n_estimators : int
+        Number of local estimators, ``>= 1``.
+    kind : {"generic", "mixed", "complete"}
+        The joint covariance.
+    samples : int
+        Draws of the local errors, ``>= 2``.
+
+    Returns
+    -------
+    dict
+        ``"N"`` and ``"kind"`` as given; the criteria, in sampling standard deviations:
+        ``"z_bound"`` :math:`(\lambda_{\max}(\mathbf B^{-1/2}\mathbf S\mathbf B^{-1/2}) - 1) /
+        \sqrt{2/(n-1)}` (in any direction the whitened sample variance has sampling sd
+        :math:`\sqrt{2/(n-1)}` times a true value at most 1), ``"z_trace"``
+        :math:`(\operatorname{tr}\mathbf S - m) / \sqrt{2\operatorname{tr}(\mathbf S^2)/(n-1)}`,
+        ``"z_eq20"`` the largest :math:`|S_{jk} - C_{jk}|` over its sampling sd
+        :math:`\sqrt{(S_{jj}S_{kk} + S_{jk}^2)/(n-1)}`; ``"exact"`` the relative difference
+        between :math:`\mathbf S` and Eq. (20) applied to the sample joint covariance of the
+        local errors (zero to round-off: :math:`E[\mathbf S]` is Eq. (20) exactly); and, for
+        further checks, the local covariances ``"Ps"``, ``"S"`` and ``"dof"`` (``samples - 1``).
+
+    Raises
+    ------
+    TypeError
+        If ``rng`` is not a ``numpy.random.Generator``.
+    ValueError
+        If ``kind`` is not one of the three, or ``n_estimators`` or ``samples`` is too small.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eqs. (18)-(23).
+
+    Examples
+    --------
+    >>> r = federated_bound_monte_carlo(np.random.default_rng(1), 2, "mixed", 5000)
+    >>> bool(r["z_bound"] <= 5 and r["exact"] < 1e-10)
+    True
+    """
+    if not isinstance(rng, np.random.Generator):
+        raise TypeError(f"rng must be a numpy.random.Generator, got {type(rng).__name__}")
+    N = require_integer("n_estimators", n_estimators, minimum=1)
+    require_integer("samples", samples, minimum=2)
+    n = 3
+    J: NDArray[Any]
+    if kind == "generic":
+        J = random_covariance(rng, n * N)
+    elif kind == "mixed":
+        J = correlated_joint_covariance(rng, n, N, rng.uniform())
+    elif kind == "complete":
+        sig = rng.uniform(0.1, 2.0, N)
+        J = np.kron(np.outer(sig, sig), np.eye(n))
+    else:
+        raise ValueError(f"kind must be 'generic', 'mixed' or 'complete', got {kind!r}")
+    Ps = [J[n * i : n * i + n, n * i : n * i + n] for i in range(N)]
+    w, V = np.linalg.eigh(J)
+    E = rng.normal(size=(samples, n * N)) @ (V * np.sqrt(np.clip(w, 0.0, None))).T
+    fused = sum(E[:, n * i : n * i + n] @ A.T for i, A in enumerate(fusion_gains(Ps)))
+    S = np.cov(fused.T)
+    C = fused_error_covariance(Ps, J)
+    z = list(rng.normal(size=(N, n)))
+    k = optimal_weights(Ps) if kind == "complete" else feasible_weights(Ps, directions=z)
+    B = federated_covariance_bound(Ps, k)
+    Li = np.linalg.inv(np.linalg.cholesky(B))
+    dof = samples - 1
+    sd = np.sqrt((np.outer(np.diag(S), np.diag(S)) + S**2) / dof)
+    return {
+        "N": N,
+        "kind": kind,
+        "z_bound": float((np.linalg.eigvalsh(Li @ S @ Li.T)[-1] - 1) / np.sqrt(2 / dof)),
+        "z_trace": float((np.trace(S) - minkowski_trace_bound(Ps)) / np.sqrt(2 * np.trace(S @ S) / dof)),
+        "z_eq20": float(np.max(np.abs(S - C) / sd)),
+        "exact": float(np.linalg.norm(S - fused_error_covariance(Ps, np.cov(E.T))) / np.linalg.norm(S)),
+        "Ps": Ps,
+        "S": S,
+        "dof": dof,
+    }
+
+
+def federated_bound_monte_carlo_sweep(cases: int, samples: int, seed: int) -> tuple[dict[str, Any], ...]:
+    r"""Cases of :func:`federated_bound_monte_carlo` over the kinds and 2-4 estimators.
+
+    Case ``c`` (from 0) draws ``2 + c % 3`` estimators of kind
+    ``MONTE_CARLO_KINDS[(c // 3) % 3]`` (three cases per kind, the kinds in turn), all from
+    one generator seeded with ``seed``.
+
+    Parameters
+    ----------
+    cases : int
+        Number of cases, ``>= 1``.
+    samples : int
+        Draws per case, ``>= 2``.
+    seed : int
+        Seed of :func:`numpy.random.default_rng`.
+
+    Returns
+    -------
+    tuple of dict
+        Per case, ``"N"``, ``"kind"``, ``"z_bound"``, ``"z_trace"``, ``"z_eq20"`` and
+        ``"exact"`` of :func:`federated_bound_monte_carlo`.
+
+    Raises
+    ------
+    ValueError
+        If ``cases`` or ``samples`` is too small.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eqs. (18)-(23).
+
+    Examples
+    --------
+    >>> [(r["N"], r["kind"]) for r in federated_bound_monte_carlo_sweep(4, 1000, 0)]
+    [(2, 'generic'), (3, 'generic'), (4, 'generic'), (2, 'mixed')]
+    """
+    require_integer("cases", cases, minimum=1)
+    rng = np.random.default_rng(seed)
+    out = []
+    for case in range(cases):
+        kind = MONTE_CARLO_KINDS[(case // 3) % 3]
+        r = federated_bound_monte_carlo(rng, 2 + case % 3, kind, samples)
+        out.append({key: r[key] for key in ("N", "kind", "z_bound", "z_trace", "z_eq20", "exact")})
+    return tuple(out)
+
+
+def completely_correlated_trace_ratio(
+    factors: Sequence[ArrayLike], rng: np.random.Generator, samples: int
+) -> float:
+    r"""Monte Carlo of WF Remark (ii): the Minkowski term over the fused error's mean square.
+
+    The local errors are completely correlated, :math:`\mathbf e_i = \mathbf L_i \mathbf w`
+    with one common white :math:`\mathbf w`, so :math:`\mathbf P_i = \mathbf L_i \mathbf L_i^T`.
+    ``samples`` draws of :math:`\mathbf w` are fused with the weights of Eqs. (18)-(19),
+    :math:`\mathbf P_D \mathbf P_i^{-1}`; the result is the Minkowski term of Eq. (23)
+    (:func:`minkowski_trace_bound`) over the trace of the sample covariance of the fused error.
+    It tends to 1 (the bound exact) when the weighted errors are parallel (isotropic or
+    commuting covariances), and stays above 1 otherwise.
+
+    Parameters
+    ----------
+    factors : sequence of (n, n) array
+        :math:`\mathbf L_i`, invertible, one per estimator.
+    rng : numpy.random.Generator
+        Source of :math:`\mathbf w`.
+    samples : int
+        Draws of :math:`\mathbf w`, ``>= 2``.
+
+    Returns
+    -------
+    float
+        Minkowski term over the sample mean square of the fused error.
+
+    Raises
+    ------
+    TypeError
+        If ``rng`` is not a ``numpy.random.Generator``.
+    ValueError
+        If a factor is not a square matrix of the common size or ``samples`` is too small.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eq. (23) and
+    Remark (ii).
+
+    Examples
+    --------
+    >>> r = completely_correlated_trace_ratio([np.eye(2), 2.0 * np.eye(2)], np.random.default_rng(0), 1000)
+    >>> bool(abs(r - 1.0) < 0.2)  # isotropic: the bound is exact, up to sampling
+    True
+    """
+    if not isinstance(rng, np.random.Generator):
+        raise TypeError(f"rng must be a numpy.random.Generator, got {type(rng).__name__}")
+    require_integer("samples", samples, minimum=2)
+    if isinstance(factors, str) or not isinstance(factors, Sequence | np.ndarray) or not len(factors):
+        raise ValueError("factors must be a non-empty sequence of square matrices")
+    L = [as_finite_array(f"factors[{i}]", Li, ndim=2) for i, Li in enumerate(factors)]
+    n = L[0].shape[0]
+    for i, Li in enumerate(L):
+        if Li.shape != (n, n):
+            raise ValueError(f"factors[{i}] must have shape ({n}, {n}), got {Li.shape}")
+    Ps = [Li @ Li.T for Li in L]
+    w = rng.normal(size=(samples, n))
+    infos = [np.linalg.inv(P) for P in Ps]
+    PD = np.linalg.inv(sum(infos))
+    fused = sum((w @ (PD @ Y @ Li).T for Y, Li in zip(infos, L, strict=True)), start=np.zeros(w.shape))
+    return float(minkowski_trace_bound(Ps) / np.trace(np.cov(fused.T)))
+
+
+def navigation_mapped_error_samples(
+    tau: ArrayLike, P_N: ArrayLike, Q_T: ArrayLike, rng: np.random.Generator, draws: int
+) -> Array:
+    r"""Draws of the navigation-mapped error :math:`\boldsymbol\tau\mathbf e_N + \mathbf w_T` (WF Eq. (10)).
+
+    :math:`\mathbf e_N \sim N(0, \mathbf P_N)` and :math:`\mathbf w_T \sim N(0, \mathbf Q_T)`
+    independent (each a standard normal draw times the Cholesky factor, :math:`\mathbf e_N`
+    first); their covariance is :math:`\mathbf P_{DN}` of WF Eq. (11)
+    (:func:`navigation_mapped_covariance`).
+
+    Parameters
+    ----------
+    tau : (m, k) array
+        Jacobian :math:`\boldsymbol\tau` of the map.
+    P_N : (k, k) array
+        Covariance of the navigation error, positive definite.
+    Q_T : (m, m) array
+        Covariance of the mapping uncertainty, positive definite.
+    rng : numpy.random.Generator
+        Source of the draws.
+    draws : int
+        Number of draws, ``>= 1``.
+
+    Returns
+    -------
+    (draws, m) ndarray
+        One error per row.
+
+    Raises
+    ------
+    TypeError
+        If ``rng`` is not a ``numpy.random.Generator``.
+    ValueError
+        If the shapes do not agree, a covariance is not positive definite, or ``draws`` is
+        not a positive integer.
+
+    References
+    ----------
+    Wu & Fowler, "Application of MEMS for Improved Emitter Location Accuracy", Eqs. (10)-(11).
+
+    Examples
+    --------
+    >>> e = navigation_mapped_error_samples(np.eye(2), np.eye(2), np.eye(2), np.random.default_rng(0), 10)
+    >>> e.shape
+    (10, 2)
+    """
+    if not isinstance(rng, np.random.Generator):
+        raise TypeError(f"rng must be a numpy.random.Generator, got {type(rng).__name__}")
+    n = require_integer("draws", draws, minimum=1)
+    t = as_finite_array("tau", tau, ndim=2)
+    PN = require_symmetric_psd("P_N", P_N, definite=True)
+    QT = require_symmetric_psd("Q_T", Q_T, definite=True)
+    if t.shape != (QT.shape[0], PN.shape[0]):
+        raise ValueError(
+            f"tau must have shape ({QT.shape[0]}, {PN.shape[0]}) to map P_N onto Q_T, got {t.shape}"
+        )
+    eN = rng.normal(size=(n, PN.shape[0])) @ np.linalg.cholesky(PN).T
+    wT = rng.normal(size=(n, QT.shape[0])) @ np.linalg.cholesky(QT).T
+    return eN @ t.T + wT
 
 
 # Every public function checks its arguments against their annotations (finite numbers,

@@ -15,7 +15,7 @@ import math
 import numpy as np
 from scipy import optimize
 
-from navcore.claims import EXACT, PROSE_WORDS, Claim, Erratum
+from navcore.claims import EXACT, PROSE_WORDS, Claim, Erratum, with_quotes
 from navcore.claims.inputs import input_cache
 from navcore.location.clock_model import (
     clock_covariance,
@@ -32,7 +32,7 @@ from navcore.location.clock_tracking import (
 from navcore.location.multilateration import (
     beta_parameter,
 )
-from navcore.papers.atc10_quotes import quoted
+from navcore.papers.atc10_quotes import QUOTES
 from navcore.papers.atc10_tracking_geometry import (
     IN,
     IN_COV,
@@ -570,4 +570,4 @@ CLAIMS += [
 ]
 
 #: Every claim quotes the paper (issue 27, item 5).
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

@@ -11,14 +11,14 @@ from __future__ import annotations
 
 import numpy as np
 
-from navcore.claims import EXACT, Claim, Erratum, Tolerance, printed
+from navcore.claims import EXACT, Claim, Erratum, Tolerance, printed, with_quotes
 from navcore.location.multilateration import (
     beta_parameter,
     clock_direction_term,
     position_dilution_covariance,
     position_trace,
 )
-from navcore.papers.atc10_quotes import quoted
+from navcore.papers.atc10_quotes import QUOTES
 from navcore.papers.atc10_tracking_geometry import (
     COLUMN_NAMES,
     COLUMNS,
@@ -406,4 +406,4 @@ _e1_claims.append("ATC10-sec4.6-rule4-common-threshold")
 
 
 #: Every claim quotes the paper (issue 27, item 5).
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

@@ -14,7 +14,7 @@ import numpy as np
 import sympy as sp
 from scipy import integrate, special, stats
 
-from navcore.claims import EXACT, Claim, Erratum, Tolerance, printed, prose
+from navcore.claims import EXACT, Claim, Erratum, Tolerance, printed, prose, with_quotes
 from navcore.claims.inputs import input_cache
 from navcore.detection.multiple_access import (
     MultipleAccessNoise,
@@ -45,7 +45,7 @@ from navcore.papers.atc10_multiple_access import (
     worked_example_exp_g,
     worked_example_power,
 )
-from navcore.papers.atc10_quotes import quoted
+from navcore.papers.atc10_quotes import QUOTES
 from navcore.papers.atc10_roc_bounds import THETAS, contours
 
 CLAIMS: list[Claim] = []
@@ -684,4 +684,4 @@ CLAIMS += [
 ]
 
 #: Every claim quotes the paper (issue 27, item 5).
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

@@ -25,11 +25,11 @@ import numpy as np
 from scipy import optimize, special, stats
 
 from navcore import units
-from navcore.claims import Claim, Erratum
+from navcore.claims import Claim, Erratum, with_quotes
 from navcore.claims.inputs import InputSet, input_cache
 from navcore.detection import antenna
 from navcore.detection import jamming as jm
-from navcore.papers.atc10_quotes import quoted
+from navcore.papers.atc10_quotes import QUOTES
 
 CLAIMS: list[Claim] = []
 ERRATA: list[Erratum] = []
@@ -715,4 +715,4 @@ CLAIMS += [
 ]
 
 #: Every claim quotes the paper (issue 27, item 5).
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

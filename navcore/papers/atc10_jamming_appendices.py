@@ -17,7 +17,7 @@ import sympy as sp
 from scipy import special, stats
 
 from navcore import units
-from navcore.claims import EXACT, Claim, Erratum
+from navcore.claims import EXACT, Claim, Erratum, with_quotes
 from navcore.detection import jamming as jm
 from navcore.detection import jamming_monte_carlo as mc
 from navcore.detection.neyman_pearson import (
@@ -34,7 +34,7 @@ from navcore.papers.atc10_jamming import (
     level,
     table21_design,
 )
-from navcore.papers.atc10_quotes import quoted
+from navcore.papers.atc10_quotes import QUOTES
 from navcore.papers.atc10_tracking_lists import threshold_log_pf
 
 CLAIMS: list[Claim] = []
@@ -666,4 +666,4 @@ CLAIMS += [
 ]
 
 #: Every claim quotes the paper (issue 27, item 5).
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

@@ -20,7 +20,7 @@ import numpy as np
 import sympy as sp
 from scipy import integrate, special, stats
 
-from navcore.claims import Claim, Erratum, Tolerance, printed
+from navcore.claims import Claim, Erratum, Tolerance, printed, with_quotes
 from navcore.claims.inputs import InputSet, input_cache
 from navcore.detection.multiple_access import (
     GaussianDensity,
@@ -42,7 +42,7 @@ from navcore.detection.roc_bounds import (
     quasi_optimal_exponent,
     roc_upper_bound,
 )
-from navcore.papers.atc10_quotes import quoted
+from navcore.papers.atc10_quotes import QUOTES
 
 CLAIMS: list[Claim] = []
 ERRATA: list[Erratum] = []
@@ -802,4 +802,4 @@ CLAIMS += [
 ]
 
 #: Every claim quotes the paper (issue 27, item 5).
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

@@ -5,17 +5,12 @@ by single spaces; LaTeX as transcribed); pieces of one passage are joined by " [
 tolerance policy of each claim follows its quote by the ledger's rule, and a number claim's quote
 prints its published number. The independent audit of issue 27 verified each piece against the
 transcription; ``tests/test_atc10_quotes.py`` checks them again wherever the transcription is present.
-Claims that give ``printed=`` themselves keep it; :func:`quoted` fills the others.
+Claims that give ``printed=`` themselves keep it; :func:`navcore.claims.quotes.with_quotes` fills the others.
 """
 
 from __future__ import annotations
 
-import dataclasses
-from collections.abc import Iterable
-
-from navcore.claims import Claim
-
-__all__ = ["QUOTES", "quoted"]
+__all__ = ["QUOTES"]
 
 #: Claim id -> the paper's words or formula as quoted.
 QUOTES: dict[str, str] = {
@@ -565,11 +560,3 @@ QUOTES: dict[str, str] = {
         "$$E(n^2) \\leq \\sum_{\\substack{j=1 \\\\ j \\neq i}}^N \\frac{1}{4\\alpha \\sqrt{W_j} W_j}$$"
     ),
 }
-
-
-def quoted(claims: Iterable[Claim]) -> list[Claim]:
-    """The claims with their ``printed`` quote from :data:`QUOTES` (a claim's own quote wins)."""
-    return [
-        c if c.printed.strip() or c.id not in QUOTES else dataclasses.replace(c, printed=QUOTES[c.id])
-        for c in claims
-    ]

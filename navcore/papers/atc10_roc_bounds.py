@@ -15,7 +15,7 @@ from fractions import Fraction
 import numpy as np
 from scipy import special
 
-from navcore.claims import EXACT, Claim, Erratum
+from navcore.claims import EXACT, Claim, Erratum, with_quotes
 from navcore.claims.inputs import input_cache
 from navcore.detection.multiple_access import (
     GaussianDensity,
@@ -54,7 +54,7 @@ from navcore.papers.atc10_multiple_access import (
     b_of_contour,
     noise_sec36,
 )
-from navcore.papers.atc10_quotes import quoted
+from navcore.papers.atc10_quotes import QUOTES
 
 CLAIMS: list[Claim] = []
 ERRATA: list[Erratum] = []
@@ -640,4 +640,4 @@ CLAIMS += [
 ]
 
 #: Every claim quotes the paper (issue 27, item 5).
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

@@ -11,7 +11,7 @@ import math
 import numpy as np
 
 from navcore import units
-from navcore.claims import Claim, Erratum, Tolerance, figure_reading, printed
+from navcore.claims import Claim, Erratum, Tolerance, figure_reading, printed, with_quotes
 from navcore.claims.inputs import input_cache
 from navcore.detection import jamming as jm
 from navcore.papers.atc10_jamming import (
@@ -27,7 +27,7 @@ from navcore.papers.atc10_jamming import (
     required_erp_dbw,
     table21_finite_designs,
 )
-from navcore.papers.atc10_quotes import quoted
+from navcore.papers.atc10_quotes import QUOTES
 
 CLAIMS: list[Claim] = []
 ERRATA: list[Erratum] = []
@@ -230,4 +230,4 @@ CLAIMS += [
 ]
 
 #: Every claim quotes the paper (issue 27, item 5).
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

@@ -13,7 +13,7 @@ import numpy as np
 from scipy import stats
 
 from navcore import units
-from navcore.claims import EXACT, Claim, Erratum, Tolerance, printed
+from navcore.claims import EXACT, Claim, Erratum, Tolerance, printed, with_quotes
 from navcore.claims.inputs import input_cache
 from navcore.detection import antenna
 from navcore.detection import jamming as jm
@@ -29,7 +29,7 @@ from navcore.papers.atc10_jamming import (
     required_erp_dbw,
     table11_diameter_ft,
 )
-from navcore.papers.atc10_quotes import quoted
+from navcore.papers.atc10_quotes import QUOTES
 from navcore.papers.atc10_single_pulse import FIGURE_DB_RESOLUTION, _figure_tolerance
 
 CLAIMS: list[Claim] = []
@@ -500,4 +500,4 @@ CLAIMS += [
 ]
 
 #: Every claim quotes the paper (issue 27, item 5).
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

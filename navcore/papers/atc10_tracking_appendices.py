@@ -13,13 +13,13 @@ import math
 import numpy as np
 from scipy import optimize, special
 
-from navcore.claims import EXACT, Claim, Erratum
+from navcore.claims import EXACT, Claim, Erratum, with_quotes
 from navcore.location.clock_model import (
     mandelbrot_van_ness_constant,
     mandelbrot_van_ness_constant_integral,
 )
 from navcore.papers.atc10_clock_tracking import _APPROX, PAGE_TRACKER
-from navcore.papers.atc10_quotes import quoted
+from navcore.papers.atc10_quotes import QUOTES
 from navcore.papers.atc10_tracking_geometry import IN_COV, _physical_geometry
 
 CLAIMS: list[Claim] = []
@@ -423,4 +423,4 @@ CLAIMS += [
 ]
 
 #: Every claim quotes the paper (issue 27, item 5).
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

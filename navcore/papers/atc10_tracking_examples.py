@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 
-from navcore.claims import EXACT, Claim, Erratum, Tolerance, figure_reading, printed, prose
+from navcore.claims import EXACT, Claim, Erratum, Tolerance, figure_reading, printed, prose, with_quotes
 from navcore.location.clock_model import (
     clock_covariance,
     clock_prediction_variance,
@@ -26,7 +26,7 @@ from navcore.location.clock_tracking import (
 )
 from navcore.papers.atc10_clock_tracking import _cases, sigma0_values, table_4_3_row
 from navcore.papers.atc10_example_constellations import _E1, _e1_claims
-from navcore.papers.atc10_quotes import quoted
+from navcore.papers.atc10_quotes import QUOTES
 from navcore.papers.atc10_tracking_geometry import (
     COLUMNS,
     EXAMPLES,
@@ -639,4 +639,4 @@ CLAIMS += [
 ]
 
 #: Every claim quotes the paper (issue 27, item 5).
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

@@ -41,7 +41,7 @@ from typing import Any
 
 import numpy as np
 
-from navcore.claims import Claim, Erratum, printed, prose
+from navcore.claims import Claim, Erratum, printed, prose, with_quotes
 from navcore.claims.inputs import InputSet, input_cache
 from navcore.location.multilateration import (
     beta_parameter,
@@ -56,7 +56,7 @@ from navcore.location.multilateration import (
     synchronous_orbit_radius,
     zenith_angles,
 )
-from navcore.papers.atc10_quotes import quoted
+from navcore.papers.atc10_quotes import QUOTES
 
 CLAIMS: list[Claim] = []
 ERRATA: list[Erratum] = []
@@ -831,4 +831,4 @@ CLAIMS += [
 ]
 
 #: Every claim quotes the paper (issue 27, item 5).
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

@@ -11,7 +11,7 @@ import math
 import numpy as np
 from scipy import optimize, special
 
-from navcore.claims import Claim, Erratum, monte_carlo, printed, prose
+from navcore.claims import Claim, Erratum, monte_carlo, printed, prose, with_quotes
 from navcore.claims.inputs import input_cache
 from navcore.detection import jamming as jm
 from navcore.detection.neyman_pearson import (
@@ -31,7 +31,7 @@ from navcore.papers.atc10_jamming import (
     table21_design,
     table21_finite_designs,
 )
-from navcore.papers.atc10_quotes import quoted
+from navcore.papers.atc10_quotes import QUOTES
 from navcore.papers.atc10_single_pulse import _designs, _figure_tolerance, _threshold_behaviour
 
 CLAIMS: list[Claim] = []
@@ -467,4 +467,4 @@ CLAIMS += [
 ]
 
 #: Every claim quotes the paper (issue 27, item 5).
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

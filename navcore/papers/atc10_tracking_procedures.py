@@ -14,7 +14,7 @@ import math
 
 import numpy as np
 
-from navcore.claims import EXACT, Claim, Erratum, printed, prose
+from navcore.claims import EXACT, Claim, Erratum, printed, prose, with_quotes
 from navcore.location.clock_tracking import (
     alpha_parameter,
     convergence_steps,
@@ -34,7 +34,7 @@ from navcore.papers.atc10_clock_tracking import (
     table_4_3_row,
     tracker_monte_carlo,
 )
-from navcore.papers.atc10_quotes import quoted
+from navcore.papers.atc10_quotes import QUOTES
 from navcore.papers.atc10_tracking_geometry import (
     EXAMPLES,
     IN,
@@ -501,4 +501,4 @@ CLAIMS += [
 
 
 #: Every claim quotes the paper (issue 27, item 5).
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

@@ -10,7 +10,7 @@ import math
 
 import numpy as np
 
-from navcore.claims import EXACT, Claim, Erratum, monte_carlo, printed, prose
+from navcore.claims import EXACT, Claim, Erratum, monte_carlo, printed, prose, with_quotes
 from navcore.detection.zakai import (
     alternating_sidelobe_autocorrelation,
     aperiodic_autocorrelation,
@@ -28,7 +28,7 @@ from navcore.papers.atc10_multiple_access import (
     Z_,
     psk_physical_samples,
 )
-from navcore.papers.atc10_quotes import quoted
+from navcore.papers.atc10_quotes import QUOTES
 from navcore.papers.atc10_roc_bounds import _codes
 
 CLAIMS: list[Claim] = []
@@ -248,4 +248,4 @@ CLAIMS += [
 ]
 
 #: Every claim quotes the paper (issue 27, item 5).
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

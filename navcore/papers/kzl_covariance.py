@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from navcore.claims import Claim, input_cache, printed, prose
+from navcore.claims import Claim, input_cache, printed, prose, with_quotes
 from navcore.inertial.error_dynamics import (
     ErrorSources,
     initial_covariance,
@@ -37,7 +37,7 @@ from navcore.inertial.error_dynamics import (
 from navcore.inertial.imu import gyro_bias_calibrated_at_rest
 from navcore.inertial.trajectories import straight_and_level
 from navcore.integration.engine import CovarianceAnalysis, run_covariance_analysis
-from navcore.papers.kzl_quotes import quoted
+from navcore.papers.kzl_quotes import QUOTES
 from navcore.papers.kzl_scenario import IN, initial_fix_sigmas, kzl_imu
 from navcore.papers.kzl_simulation import PAGE3
 from navcore.units import DEG, G0
@@ -45,7 +45,6 @@ from navcore.units import DEG, G0
 __all__ = [
     "CLAIMS",
     "standalone_covariance",
-    "standalone_layout",
     "standalone_sigma",
 ]
 
@@ -56,20 +55,6 @@ def _accel_random_walk() -> float:
     if vrw is None:
         raise ValueError("the KZL IMU has no accelerometer random walk")
     return vrw
-
-
-def standalone_layout():
-    """Error states of the stand-alone INS: navigation errors and every Table 1 sensor error."""
-    return ins_error_layout(
-        "position",
-        "velocity",
-        "misalignment",
-        "gyro bias",
-        "gyro scale factor",
-        "accel bias",
-        "accel scale factor",
-        name="KZL stand-alone INS",
-    )
 
 
 @input_cache
@@ -85,7 +70,17 @@ def standalone_covariance(initialise: bool = True, init_time: float | None = Non
         Averaging time of the initialisation (s); ``None`` reads the assumed input
         ``init_time_s`` (the paper does not give it).
     """
-    layout = standalone_layout()
+    # error states of the stand-alone INS: navigation errors and every Table 1 sensor error
+    layout = ins_error_layout(
+        "position",
+        "velocity",
+        "misalignment",
+        "gyro bias",
+        "gyro scale factor",
+        "accel bias",
+        "accel scale factor",
+        name="KZL stand-alone INS",
+    )
     lat, lon = IN.lat_deg * DEG, IN.lon_deg * DEG
     ve, vn = IN.velocity_east_mps, IN.velocity_north_mps
     speed = float(np.hypot(ve, vn))
@@ -220,4 +215,4 @@ CLAIMS = [
     ),
 ]
 
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

@@ -9,12 +9,12 @@ import numpy as np
 import scipy.linalg
 from scipy.spatial.transform import Rotation
 
-from navcore.claims import EXACT, Claim, Erratum, InputSet, input_cache, printed
-from navcore.frames import dcm_from_euler
+from navcore.claims import EXACT, Claim, Erratum, InputSet, input_cache, printed, with_quotes
+from navcore.frames import dcm_from_euler, quat_multiply
 from navcore.inertial.alignment import heading_from_velocity, levelling_as_printed
 from navcore.inertial.error_model17 import ERROR_LAYOUT_17, error_dynamics_17, transition_exact
 from navcore.inertial.strapdown import earth_rate_ned, transport_rate_ned
-from navcore.papers.kzl_quotes import quoted
+from navcore.papers.kzl_quotes import QUOTES
 from navcore.papers.kzl_scenario import IN as SCEN
 from navcore.papers.kzl_scenario import kzl_imu, table1_attitude, table1_scenario
 from navcore.papers.kzl_tightly_coupled_filter import PAGE2, observability_ranks, table1_F
@@ -161,11 +161,6 @@ def _eq6_approximates() -> bool:
     return abs(eq6_position_ratio() - 1.0) <= IN_COVERAGE.approx_rel
 
 
-def _qmul(p: np.ndarray, q: np.ndarray) -> np.ndarray:
-    w1, v1, w2, v2 = p[0], p[1:], q[0], q[1:]
-    return np.concatenate([[w1 * w2 - v1 @ v2], w1 * v2 + w2 * v1 + np.cross(v1, v2)])
-
-
 def eq9_quaternion_error_deg() -> float:
     """Integrate q' = q (x) [0, w]/2 (Eq. 9, omega_in neglected) over 1 s at a constant body rate
     with RK4 (1000 steps) from the Table 1 attitude; angle to scipy's closed form, deg."""
@@ -173,7 +168,7 @@ def eq9_quaternion_error_deg() -> float:
     R0 = Rotation.from_matrix(table1_attitude())
     x, y, z, s = R0.as_quat()
     q = np.array([s, x, y, z])
-    f = lambda q: 0.5 * _qmul(q, np.concatenate([[0.0], w]))
+    f = lambda q: 0.5 * quat_multiply(q, np.concatenate([[0.0], w]))
     # RK4 over T = 1 s in 1000 steps (a resolution: the claim asks whether Eq. (9) holds)
     T, steps = 1.0, 1000
     h = T / steps
@@ -376,4 +371,4 @@ CLAIMS = [
     ),
 ]
 
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

@@ -5,17 +5,12 @@ pieces of one passage are joined by " [...] ". The independent audit of issue 27
 piece against the transcription, and ``tests/test_paper_quotes.py`` checks them again wherever the
 transcription is present. The tolerance policy of each claim follows its quote by the ledger's
 rule, and a number claim's quote prints its published number. A claim that gives ``printed=``
-itself keeps it; :func:`quoted` fills the others.
+itself keeps it; :func:`navcore.claims.quotes.with_quotes` fills the others.
 """
 
 from __future__ import annotations
 
-import dataclasses
-from collections.abc import Iterable
-
-from navcore.claims import Claim
-
-__all__ = ["QUOTES", "quoted"]
+__all__ = ["QUOTES"]
 
 #: Claim id -> the paper's words or formula as quoted.
 QUOTES: dict[str, str] = {
@@ -212,11 +207,3 @@ QUOTES: dict[str, str] = {
         "however, the longer the baselines the better the expected attitude accuracy."
     ),
 }
-
-
-def quoted(claims: Iterable[Claim]) -> list[Claim]:
-    """The claims with their ``printed`` quote from :data:`QUOTES` (a claim's own quote wins)."""
-    return [
-        c if c.printed.strip() or c.id not in QUOTES else dataclasses.replace(c, printed=QUOTES[c.id])
-        for c in claims
-    ]

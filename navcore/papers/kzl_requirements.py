@@ -7,8 +7,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from navcore.claims import PROSE_WORDS, Claim, InputSet, printed, prose
-from navcore.papers.kzl_quotes import quoted
+from navcore.claims import PROSE_WORDS, Claim, InputSet, printed, prose, with_quotes
+from navcore.papers.kzl_quotes import QUOTES
 from navcore.papers.kzl_scenario import IN as SCEN
 from navcore.papers.kzl_scenario import table1_los
 from navcore.units import ARCSEC, DEG, DEG_PER_H
@@ -389,4 +389,4 @@ CLAIMS = [
     ),
 ]
 
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

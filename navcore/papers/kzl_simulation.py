@@ -13,9 +13,9 @@ import itertools
 
 import numpy as np
 
-from navcore.claims import Claim, Erratum, InputSet, printed, prose
+from navcore.claims import Claim, Erratum, InputSet, printed, prose, with_quotes
 from navcore.claims import monte_carlo as mc_tolerance
-from navcore.papers.kzl_quotes import quoted
+from navcore.papers.kzl_quotes import QUOTES
 from navcore.papers.kzl_requirements import IN as MODELS
 from navcore.papers.kzl_scenario import IN, N_RUNS, kzl_imu, monte_carlo, table1_los, visibility_schedule
 from navcore.units import DEG, GPS_L1_WAVELENGTH_M
@@ -468,4 +468,4 @@ CLAIMS = [
     ),
 ]
 
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

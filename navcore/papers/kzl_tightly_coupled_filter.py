@@ -9,7 +9,7 @@ import numpy as np
 import scipy.linalg
 from scipy.spatial.transform import Rotation
 
-from navcore.claims import EXACT, Claim, Erratum, input_cache
+from navcore.claims import EXACT, Claim, Erratum, input_cache, with_quotes
 from navcore.estimation import kf_update
 from navcore.frames import dcm_from_quat, euler_from_dcm, quat_from_dcm, skew
 from navcore.gnss.carrier_phase import dd_covariance, euler_rate_matrix_body
@@ -27,7 +27,7 @@ from navcore.integration.measurement_rows import (
     tc_attitude_observation_matrix,
     tc_dd_observation_matrix,
 )
-from navcore.papers.kzl_quotes import quoted
+from navcore.papers.kzl_quotes import QUOTES
 from navcore.papers.kzl_scenario import IN as SCEN
 from navcore.papers.kzl_scenario import table1_attitude, table1_baselines_b, table1_los
 from navcore.units import DEG, G0, GPS_L1_WAVELENGTH_M
@@ -131,19 +131,15 @@ def _row_counts_eq17() -> bool:
     return all(dd_observation_rows_count(nu, nb) == 2 + 4 * (nu - 1) for nu in range(1, 9))
 
 
-def eq15_orderings() -> float:
-    """Largest difference (rad) of the two groupings of Eq. (15) over random ranges."""
+def _eq15_holds() -> bool:
+    """The two groupings of Eq. (15) agree over 1000 random range sets: their largest difference
+    (rad) relative to the largest double difference, below 1e-6 (floating point on 2e7 m ranges)."""
     rng = np.random.default_rng(15)
     rho = rng.uniform(2.0e7, 2.6e7, size=(1000, 2, 2))  # [antenna A0/A1, satellite m/n]
     k = 2 * np.pi / GPS_L1_WAVELENGTH_M
     first = k * ((rho[:, 1, 1] - rho[:, 1, 0]) - (rho[:, 0, 1] - rho[:, 0, 0]))
     second = k * ((rho[:, 1, 1] - rho[:, 0, 1]) - (rho[:, 1, 0] - rho[:, 0, 0]))
-    return float(np.max(np.abs(first - second)) / np.max(np.abs(first)))
-
-
-def _eq15_holds() -> bool:
-    # floating point on 2e7 m ranges: 1e-6 relative
-    return eq15_orderings() < 1e-6
+    return float(np.max(np.abs(first - second)) / np.max(np.abs(first))) < 1e-6
 
 
 def _dd_rows(b_first: np.ndarray, b_second: np.ndarray) -> np.ndarray:
@@ -264,23 +260,11 @@ def _printed_R_block_oracle() -> float:
     return float(np.max(np.abs(euler_rate_matrix_body(0.0, 0.0) - J)))
 
 
-def rotation_vector_euler_mismatch() -> float:
-    """Largest entry of d(roll, pitch, heading)/d(rotation vector) - I of a small rotation: the
-    Jacobian at the identity (the rotation vector and the Euler angles of the rotation itself)."""
-    return float(np.max(np.abs(euler_attitude_rows(np.eye(3), 0.0, 0.0)[:, 6:9] - np.eye(3))))
-
-
 def _small_rotation_same() -> bool:
-    # the Jacobian at the identity is exactly I (round-off)
-    return rotation_vector_euler_mismatch() < 1e-9
-
-
-def small_rotation_example_deg() -> tuple[np.ndarray, np.ndarray]:
-    """The rotation vector (1, -0.5, 2) deg and the Euler angles (roll, pitch, heading) of its
-    rotation, deg: equal to first order, apart by the second-order terms."""
-    v = np.array([1.0, -0.5, 2.0])
-    euler = Rotation.from_rotvec(v * DEG).as_euler("ZYX", degrees=True)[::-1]
-    return v, euler
+    """The largest entry of d(roll, pitch, heading)/d(rotation vector) - I of a small rotation (the
+    Jacobian at the identity: the rotation vector and the Euler angles of the rotation itself) is
+    below 1e-9: the Jacobian is exactly I, to round-off."""
+    return float(np.max(np.abs(euler_attitude_rows(np.eye(3), 0.0, 0.0)[:, 6:9] - np.eye(3)))) < 1e-9
 
 
 # --- errata -----------------------------------------------------------------------------------
@@ -494,4 +478,4 @@ CLAIMS = [
     ),
 ]
 
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

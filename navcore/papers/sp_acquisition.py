@@ -12,7 +12,7 @@ import math
 
 import numpy as np
 
-from navcore.claims import Claim, Erratum, InputSet, printed, prose
+from navcore.claims import Claim, Erratum, InputSet, printed, prose, with_quotes
 from navcore.gnss.acquisition import (
     doppler_cell_hz,
     probability_outside_sigma_box,
@@ -22,7 +22,7 @@ from navcore.gnss.acquisition import (
 from navcore.gnss.tracking import distance_to_phase_deg
 from navcore.location.target_location import target_location_rss
 from navcore.papers import sp_tracking as spt
-from navcore.papers.sp_quotes import quoted
+from navcore.papers.sp_quotes import QUOTES
 from navcore.papers.sp_tables import TABLE_2_5_PRINTED
 from navcore.units import DEG, DEG_PER_H, GPS_L1_WAVELENGTH_M, OMEGA_EARTH
 
@@ -289,4 +289,4 @@ CLAIMS = [
     ),
 ]
 
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

@@ -31,6 +31,7 @@ from navcore.claims import (
     monte_carlo,
     printed,
     prose,
+    with_quotes,
 )
 from navcore.estimation.covariance import biased_filter_error_covariance
 from navcore.gnss.antijam import (
@@ -45,7 +46,7 @@ from navcore.gnss.antijam import (
     spectral_separation_q,
 )
 from navcore.papers import sp_tracking as spt
-from navcore.papers.sp_quotes import quoted
+from navcore.papers.sp_quotes import QUOTES
 from navcore.units import (
     DEG_PER_H,
     DEG_PER_SQRT_H,
@@ -871,4 +872,4 @@ CLAIMS = [
     ),
 ]
 
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

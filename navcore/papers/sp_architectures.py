@@ -7,13 +7,13 @@ Published inputs are the component rows of Tables 2.1-2.3; the totals and each p
 
 from __future__ import annotations
 
-from navcore.claims import EXACT, Claim, InputSet
+from navcore.claims import EXACT, Claim, InputSet, with_quotes
 from navcore.gnss.architectures import (
     loosely_coupled_layout,
     receiver_pva_layout,
     tightly_coupled_layout,
 )
-from navcore.papers.sp_quotes import quoted
+from navcore.papers.sp_quotes import QUOTES
 
 #: Table rows as printed (state element, components).
 _TABLE_2_1 = (
@@ -191,4 +191,4 @@ CLAIMS = [
     ),
 ]
 
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

@@ -45,7 +45,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from navcore._validate import ModelDomainError
-from navcore.claims import Claim, input_cache, printed, prose
+from navcore.claims import Claim, input_cache, printed, prose, with_quotes
 from navcore.claims.declarations import Status
 from navcore.claims.inputs import InputSet
 from navcore.gnss.acquisition import search_cells, search_time
@@ -66,7 +66,7 @@ from navcore.integration.geometry import SatelliteGeometry, satellite_geometry
 from navcore.papers import sp_acquisition as spa
 from navcore.papers import sp_residual_acceleration as spr
 from navcore.papers import sp_scenario_wiring as sc
-from navcore.papers.sp_quotes import quoted
+from navcore.papers.sp_quotes import QUOTES
 from navcore.papers.sp_tables import GRADE_LABELS_NMI_PER_H
 from navcore.units import DEG, G0, GPS_L1_WAVELENGTH_M, MINUTE, PPM
 
@@ -1210,4 +1210,4 @@ _CELLS_AND_SEC_2_8 = [
         discussed_in=PAGE,
     ),
 ]
-CLAIMS += quoted(_CELLS_AND_SEC_2_8)
+CLAIMS += with_quotes(_CELLS_AND_SEC_2_8, QUOTES)

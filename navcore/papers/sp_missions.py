@@ -16,7 +16,7 @@ from decimal import ROUND_HALF_UP, Decimal
 
 import numpy as np
 
-from navcore.claims import EXACT, Claim, Erratum, input_cache, printed, prose
+from navcore.claims import EXACT, Claim, Erratum, input_cache, printed, prose, with_quotes
 from navcore.claims.inputs import InputSet
 from navcore.estimation.discretize import discretize
 from navcore.inertial.error_dynamics import (
@@ -32,7 +32,7 @@ from navcore.inertial.imu import noise_only
 from navcore.inertial.trajectories import straight_and_level
 from navcore.integration.engine import circular_error_probable, run_covariance_analysis
 from navcore.papers import sp_mission_flights as sc
-from navcore.papers.sp_quotes import quoted
+from navcore.papers.sp_quotes import QUOTES
 from navcore.papers.sp_tables import (
     GRADE_LABELS_NMI_PER_H,
     TABLE_2_5_ROWS,
@@ -930,4 +930,4 @@ _CROSS_CHECKS = [
         discussed_in="sp/21-missions",
     ),
 ]
-CLAIMS += quoted(_CROSS_CHECKS)
+CLAIMS += with_quotes(_CROSS_CHECKS, QUOTES)

@@ -5,19 +5,14 @@ pieces of one passage are joined by " [...] ". The independent audit of issue 27
 piece against the transcription, and ``tests/test_paper_quotes.py`` checks them again wherever the
 transcription is present. The tolerance policy of each claim follows its quote by the ledger's
 rule, and a number claim's quote prints its published number. A claim that gives ``printed=``
-itself keeps it; :func:`quoted` fills the others.
+itself keeps it; :func:`navcore.claims.quotes.with_quotes` fills the others.
 The claims of the flyby and mission modules (and Table 2.7's cells, which the flyby model
 computes) are quoted where they are made.
 """
 
 from __future__ import annotations
 
-import dataclasses
-from collections.abc import Iterable
-
-from navcore.claims import Claim
-
-__all__ = ["QUOTES", "quoted"]
+__all__ = ["QUOTES"]
 
 #: Claim id -> the paper's words or formula as quoted.
 QUOTES: dict[str, str] = {
@@ -231,11 +226,3 @@ QUOTES: dict[str, str] = {
     "SP-tab2.6-unaided": "No inertial aiding\tNot applicable\t6 g\t18 rad/s",
     "SP-tab2.7-ordering": "Table 2.7: Search for Range Phase as a Function of IMU Quality",
 }
-
-
-def quoted(claims: Iterable[Claim]) -> list[Claim]:
-    """The claims with their ``printed`` quote from :data:`QUOTES` (a claim's own quote wins)."""
-    return [
-        c if c.printed.strip() or c.id not in QUOTES else dataclasses.replace(c, printed=QUOTES[c.id])
-        for c in claims
-    ]

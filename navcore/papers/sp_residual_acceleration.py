@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from navcore.claims import EXACT, Claim, Erratum, InputSet, Tolerance, printed
+from navcore.claims import EXACT, Claim, Erratum, InputSet, Tolerance, printed, with_quotes
 from navcore.gnss.tracking import aided_natural_frequency, natural_frequency_for_peak_error
 from navcore.inertial.residual_acceleration import (
     residual_acceleration_covariance,
@@ -20,7 +20,7 @@ from navcore.inertial.residual_acceleration import (
     sphere_radius,
 )
 from navcore.papers import sp_tracking as spt
-from navcore.papers.sp_quotes import quoted
+from navcore.papers.sp_quotes import QUOTES
 from navcore.units import ARCSEC, GPS_L1_WAVELENGTH_M, PPM
 
 PAGE = "sp/03-residual-acceleration"
@@ -331,4 +331,4 @@ CLAIMS = [
     ),
 ]
 
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

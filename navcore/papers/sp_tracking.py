@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 from scipy import signal
 
-from navcore.claims import Claim, Erratum, InputSet, Tolerance, input_cache, printed
+from navcore.claims import Claim, Erratum, InputSet, Tolerance, input_cache, printed, with_quotes
 from navcore.gnss.tracking import (
     aided_natural_frequency,
     distance_to_phase_deg,
@@ -21,7 +21,7 @@ from navcore.gnss.tracking import (
     third_order_loop_step_error,
     third_order_peak_step_error,
 )
-from navcore.papers.sp_quotes import quoted
+from navcore.papers.sp_quotes import QUOTES
 from navcore.units import FT, G0, GPS_L1_WAVELENGTH_M, GPS_P_CHIP_RATE_HZ
 
 IN = InputSet("SP", "tracking")
@@ -309,4 +309,4 @@ CLAIMS = [
     ),
 ]
 
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from navcore.claims import PROSE_WORDS, Claim, input_cache, printed, prose
+from navcore.claims import PROSE_WORDS, Claim, input_cache, printed, prose, with_quotes
 from navcore.location.emitter import (
     doppler_gradient_position,
     doppler_gradient_velocity,
@@ -24,7 +24,7 @@ from navcore.location.emitter import (
 )
 from navcore.papers.wf_inputs import IN
 from navcore.papers.wf_location_error import EMITTER, F0, orbit
-from navcore.papers.wf_quotes import quoted
+from navcore.papers.wf_quotes import QUOTES
 from navcore.units import FT, C
 
 #: The page that discusses the claims of Sec. III.
@@ -283,4 +283,4 @@ CLAIMS = [
     ),
 ]
 
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

@@ -12,7 +12,17 @@ from typing import Any
 
 import numpy as np
 
-from navcore.claims import EXACT, PROSE_WORDS, Claim, Erratum, figure_reading, input_cache, printed, prose
+from navcore.claims import (
+    EXACT,
+    PROSE_WORDS,
+    Claim,
+    Erratum,
+    figure_reading,
+    input_cache,
+    printed,
+    prose,
+    with_quotes,
+)
 from navcore.estimation.federated import (
     accelerometer_steady_state_isotropic,
     federated_improvement_db,
@@ -20,10 +30,10 @@ from navcore.estimation.federated import (
     minkowski_trace_bound,
 )
 from navcore.papers.wf_inputs import IN, f_l1_over_c_printed, sigma_a_example, sigma_t_values
-from navcore.papers.wf_local_estimators import SPEED_DIMENSION, dim_product
-from navcore.papers.wf_quotes import quoted
+from navcore.papers.wf_local_estimators import SPEED_DIMENSION
+from navcore.papers.wf_quotes import QUOTES
 from navcore.trace import implements
-from navcore.units import GPS_L1_HZ, C
+from navcore.units import GPS_L1_HZ
 
 #: The page that discusses the claims of Secs. IV.D and V.
 PAGE = "wf/04-assessment"
@@ -31,11 +41,6 @@ PAGE = "wf/04-assessment"
 
 #: Sec. IV.D printed L1 frequency over c, 1/m (the figures read the published input).
 F_L1_OVER_C_PRINTED = "5.25"
-
-
-def f_l1_over_c() -> float:
-    """GPS L1 frequency over the defined speed of light, 1/m (5.2550)."""
-    return GPS_L1_HZ / C
 
 
 def f_l1_over_c_read() -> float:
@@ -69,8 +74,9 @@ def eq24_literal_is_unit_consistent() -> bool:
 def _eq24_oracle() -> bool:
     """Independent derivation: P_N P_N^T is in (m/s)^4 against sigma_N^2 in (m/s)^2; the two sides
     have the same dimension only if a variance squared is a variance."""
-    variance = dim_product(SPEED_DIMENSION, SPEED_DIMENSION)
-    return dim_product(variance, variance) == variance
+    # (length, time) exponents add in a product: a variance is speed x speed
+    variance = tuple(2 * d for d in SPEED_DIMENSION)
+    return tuple(2 * d for d in variance) == variance
 
 
 #: The satellite cases of Figs. 1-2 (Eq. (25)): no GPS, one satellite, three satellites; labels
@@ -567,4 +573,4 @@ CLAIMS = [
     ),
 ]
 
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

@@ -13,18 +13,19 @@ import itertools
 
 import numpy as np
 
-from navcore.claims import EXACT, Claim, Erratum, input_cache
+from navcore.claims import EXACT, Claim, Erratum, with_quotes
 from navcore.estimation.federated import (
-    correlated_joint_covariance,
+    completely_correlated_trace_ratio,
     feasible_weights,
-    federated_covariance_bound,
+    federated_bound_margins,
+    federated_bound_monte_carlo_sweep,
     federated_fusion,
     fused_error_covariance,
     minkowski_trace_bound,
-    optimal_weights,
+    random_covariance,
 )
 from navcore.papers.wf_inputs import IN
-from navcore.papers.wf_quotes import quoted
+from navcore.papers.wf_quotes import QUOTES
 
 #: The page that discusses the claims of Secs. IV.B and IV.C.
 PAGE = "wf/03-local-estimators"
@@ -32,7 +33,7 @@ PAGE = "wf/03-local-estimators"
 
 def _fusion_is_wls() -> bool:
     rng = np.random.default_rng(12)
-    Ps = [_spd(rng, 3) for _ in range(3)]
+    Ps = [random_covariance(rng, 3) for _ in range(3)]
     xs = [rng.normal(size=3) for _ in range(3)]
     x, _ = federated_fusion(xs, Ps)
     # weighted LS cost sum (x - x_i)' P_i^-1 (x - x_i): its gradient vanishes at x
@@ -42,7 +43,7 @@ def _fusion_is_wls() -> bool:
 
 def _outage_is_infinite_covariance() -> bool:
     rng = np.random.default_rng(13)
-    Ps = [_spd(rng, 3) for _ in range(3)]
+    Ps = [random_covariance(rng, 3) for _ in range(3)]
     xs = [rng.normal(size=3) for _ in range(3)]
     a = federated_fusion(xs, [Ps[0], np.diag([np.inf] * 3), Ps[2]])
     b = federated_fusion([xs[0], xs[2]], [Ps[0], Ps[2]])
@@ -50,24 +51,16 @@ def _outage_is_infinite_covariance() -> bool:
     return bool(np.allclose(a[0], b[0]) and np.allclose(a[1], b[1]) and np.allclose(big[0], b[0], atol=1e-9))
 
 
-def _joint_for_eq20() -> tuple[list[np.ndarray], np.ndarray]:
-    rng = np.random.default_rng(17)
-    A = rng.normal(size=(9, 9))
-    J = A @ A.T + 0.5 * np.eye(9)
-    return [J[3 * i : 3 * i + 3, 3 * i : 3 * i + 3] for i in range(3)], J
-
-
-def _printed_joint(J: np.ndarray) -> np.ndarray:
-    """The joint matrix as WF Eq. (20) prints it: block (2, 3) is P_NG instead of P_LG."""
-    Jp = J.copy()
-    Jp[3:6, 6:9] = J[0:3, 6:9]
-    return Jp
+#: Seed of the random 9 x 9 joint covariance (three estimators N, L, G of three states) on which
+#: the printed Eq. (20) is checked; its diagonal floor is 0.5 (:func:`random_covariance`).
+EQ20_JOINT_SEED = 17
 
 
 def eq20_printed_block_error() -> float:
     """Largest entry of (printed block (2, 3) - the L-G cross-covariance), over the largest entry of J."""
-    _, J = _joint_for_eq20()
-    Jp = _printed_joint(J)
+    J = random_covariance(np.random.default_rng(EQ20_JOINT_SEED), 9, 0.5)
+    Jp = J.copy()  # the joint matrix as WF Eq. (20) prints it: block (2, 3) is P_NG instead of P_LG
+    Jp[3:6, 6:9] = J[0:3, 6:9]
     return float(np.max(np.abs(Jp[3:6, 6:9] - J[3:6, 6:9])) / np.max(np.abs(J)))
 
 
@@ -81,7 +74,7 @@ def _eq20_oracle() -> bool:
     """Oracle: seeded Monte Carlo of the stacked errors; the printed P_NG in block (2, 3) against the
     sample (L, G) cross-covariance, within the allowed sampling standard deviations (sqrt(2/n) of the
     largest entry)."""
-    _, J = _joint_for_eq20()
+    J = random_covariance(np.random.default_rng(EQ20_JOINT_SEED), 9, 0.5)
     rng = np.random.default_rng(18)
     n = 200_000
     E = rng.multivariate_normal(np.zeros(9), J, n)
@@ -90,128 +83,28 @@ def _eq20_oracle() -> bool:
     return deviation <= IN.mc_sigmas * np.sqrt(2.0 / n)
 
 
-def _spd(rng: np.random.Generator, n: int) -> np.ndarray:
-    A = rng.normal(size=(n, n))
-    return A @ A.T + 0.1 * np.eye(n)
-
-
-@input_cache
-def theorem_margins(cases: int = 200) -> dict[str, float]:
-    """Check WF Eqs. (21)-(23) on random correlated joint covariances (3 estimators, 3 states)."""
-    rng = np.random.default_rng(21)
-    eig_margin, first, second = np.inf, np.inf, np.inf
-    for _ in range(cases):
-        J = correlated_joint_covariance(rng, 3, 3, rng.uniform())
-        Ps = [J[3 * i : 3 * i + 3, 3 * i : 3 * i + 3] for i in range(3)]
-        cov = fused_error_covariance(Ps, J)
-        k = feasible_weights(Ps, directions=[rng.normal(size=3) for _ in range(3)])
-        B = federated_covariance_bound(Ps, k)
-        eig_margin = min(eig_margin, np.linalg.eigvalsh(B - cov)[0] / np.linalg.norm(B))
-        mink = minkowski_trace_bound(Ps)
-        first = min(first, (mink - np.trace(cov)) / mink)
-        second = min(second, (np.trace(B) - mink) / np.trace(B))
-    return {"eig": float(eig_margin), "first": float(first), "second": float(second)}
-
-
 def _theorem_holds() -> bool:
-    m = theorem_margins()
+    # 200 seeded cases of federated_bound_margins: 3 estimators, 3 states, correlation in [0, 1]
+    m = federated_bound_margins(np.random.default_rng(21), 200)
     return m["eig"] >= -1e-12 and m["first"] >= -1e-12 and m["second"] >= -1e-12
 
 
-def _fusion_maps(Ps: list[np.ndarray]) -> list[np.ndarray]:
-    """The linear maps x_i -> x_D of WF Eqs. (18)-(19), read off federated_fusion column by column."""
-    n, N = Ps[0].shape[0], len(Ps)
-    maps = []
-    for i in range(N):
-        cols = []
-        for d in np.eye(n):
-            xs = [d if j == i else np.zeros(n) for j in range(N)]
-            cols.append(federated_fusion(xs, Ps)[0])
-        maps.append(np.column_stack(cols))
-    return maps
-
-
-@input_cache
-def theorem_monte_carlo(cases: int = 12, samples: int = 20_000, seed: int = 29) -> tuple[dict, ...]:
-    """Seeded Monte Carlo of the theorem, WF Eqs. (18)-(23), on correlated local errors.
-
-    Each case draws a joint covariance J of N = 2, 3 or 4 local errors of 3 states: "generic"
-    (J = A A' + 0.1 I, arbitrary correlations), "mixed" (a common and an independent part,
-    correlation uniform in [0, 1]) or "complete" (e_i = sigma_i w with one common w, isotropic).
-    ``samples`` errors are drawn, fused with the weights of Eqs. (18)-(19), and their sample
-    covariance S is compared with the bound B of Eq. (21) (weights of Eq. (22) with random z_i;
-    for "complete" the optimal weights, an instance of Eq. (22) for which B equals the true
-    covariance, so the check has no slack), the Minkowski term of Eq. (23) and the exact
-    covariance C of Eq. (20). For each case:
-
-    * ``z_bound``: (lambda_max(B^-1/2 S B^-1/2) - 1) / sqrt(2/(n-1)); in any direction the
-      whitened sample variance has sampling sd sqrt(2/(n-1)) times a true value <= 1;
-    * ``z_trace``: (tr S - Minkowski term) / sqrt(2 tr(S^2)/(n-1));
-    * ``z_eq20``: largest |S_jk - C_jk| over its sampling sd sqrt((S_jj S_kk + S_jk^2)/(n-1));
-    * ``exact``: relative difference between S and Eq. (20) applied to the sample joint
-      covariance of the local errors (zero up to round-off: E[S] equals Eq. (20) exactly).
-    """
-    rng = np.random.default_rng(seed)
-    out = []
-    for case in range(cases):
-        kind = ("generic", "mixed", "complete")[(case // 3) % 3]
-        r = theorem_monte_carlo_case(rng, 2 + case % 3, kind, samples)
-        out.append({key: r[key] for key in ("N", "kind", "z_bound", "z_trace", "z_eq20", "exact")})
-    return tuple(out)
-
-
-def theorem_monte_carlo_case(rng: np.random.Generator, N: int, kind: str, samples: int) -> dict:
-    """One case of :func:`theorem_monte_carlo`: ``N`` local errors of 3 states of the given kind.
-
-    Returns the criteria (``z_bound``, ``z_trace``, ``z_eq20``, ``exact``) and, for further checks,
-    the local covariances ``Ps``, the sample covariance ``S`` of the fused error and ``dof``.
-    """
-    n = 3
-    if kind == "generic":
-        J = _spd(rng, n * N)
-    elif kind == "mixed":
-        J = correlated_joint_covariance(rng, n, N, rng.uniform())
-    elif kind == "complete":
-        sig = rng.uniform(0.1, 2.0, N)
-        J = np.kron(np.outer(sig, sig), np.eye(n))
-    else:
-        raise ValueError(f"kind must be 'generic', 'mixed' or 'complete', got {kind!r}")
-    Ps = [J[n * i : n * i + n, n * i : n * i + n] for i in range(N)]
-    w, V = np.linalg.eigh(J)
-    E = rng.normal(size=(samples, n * N)) @ (V * np.sqrt(np.clip(w, 0.0, None))).T
-    fused = sum(E[:, n * i : n * i + n] @ A.T for i, A in enumerate(_fusion_maps(Ps)))
-    S = np.cov(fused.T)
-    C = fused_error_covariance(Ps, J)
-    z = list(rng.normal(size=(N, n)))
-    k = optimal_weights(Ps) if kind == "complete" else feasible_weights(Ps, directions=z)
-    B = federated_covariance_bound(Ps, k)
-    Li = np.linalg.inv(np.linalg.cholesky(B))
-    dof = samples - 1
-    sd = np.sqrt((np.outer(np.diag(S), np.diag(S)) + S**2) / dof)
-    return {
-        "N": N,
-        "kind": kind,
-        "z_bound": float((np.linalg.eigvalsh(Li @ S @ Li.T)[-1] - 1) / np.sqrt(2 / dof)),
-        "z_trace": float((np.trace(S) - minkowski_trace_bound(Ps)) / np.sqrt(2 * np.trace(S @ S) / dof)),
-        "z_eq20": float(np.max(np.abs(S - C) / sd)),
-        "exact": float(np.linalg.norm(S - fused_error_covariance(Ps, np.cov(E.T))) / np.linalg.norm(S)),
-        "Ps": Ps,
-        "S": S,
-        "dof": dof,
-    }
+#: The seeded Monte Carlo of the theorem (claim WF-thm-montecarlo): cases, draws per case and
+#: seed of :func:`~navcore.estimation.federated.federated_bound_monte_carlo_sweep`.
+THEOREM_MC_CASES, THEOREM_MC_SAMPLES, THEOREM_MC_SEED = 12, 20_000, 29
 
 
 def _theorem_mc_holds() -> bool:
     k = IN.mc_sigmas
     return all(
         r["z_bound"] <= k and r["z_trace"] <= k and r["z_eq20"] <= k and r["exact"] < 1e-12
-        for r in theorem_monte_carlo()
+        for r in federated_bound_monte_carlo_sweep(THEOREM_MC_CASES, THEOREM_MC_SAMPLES, THEOREM_MC_SEED)
     )
 
 
 def _remark1_any_sigma() -> bool:
     rng = np.random.default_rng(5)
-    Ps = [_spd(rng, 3) for _ in range(3)]
+    Ps = [random_covariance(rng, 3) for _ in range(3)]
     ok = True
     for _ in range(100):
         k = feasible_weights(Ps, sigmas=rng.uniform(1e-3, 1e3, 3))
@@ -229,7 +122,7 @@ def bound_tightness(rho: float, kind: str = "isotropic") -> float:
     n = 3
     if kind == "generic":
         rng = np.random.default_rng(9)
-        L = [np.linalg.cholesky(_spd(rng, n)) for _ in range(3)]
+        L = [np.linalg.cholesky(random_covariance(rng, n)) for _ in range(3)]
     else:
         s = (0.02, 0.002, 0.0019) if kind == "isotropic" else (1.0, 1.0, 1e-3)
         L = [si * np.eye(n) for si in s]
@@ -250,31 +143,20 @@ def remark2_generic_exact() -> bool:
 def _remark2_generic_oracle() -> bool:
     """Oracle: Monte Carlo of completely correlated generic errors, the bound against the sample trace,
     within the declared closeness."""
-    return abs(_remark2_generic_ratio_mc() - 1.0) <= IN.close_rel
-
-
-def _remark2_generic_ratio_mc() -> float:
-    """Monte Carlo of completely correlated generic errors: Minkowski trace bound over the sample trace."""
+    # the covariances of bound_tightness(1.0, "generic") (seed 9), drawn afresh; 100 000 draws (seed 10)
     rng = np.random.default_rng(9)
-    L = [np.linalg.cholesky(_spd(rng, 3)) for _ in range(3)]
-    Ps = [Li @ Li.T for Li in L]
-    w = np.random.default_rng(10).normal(size=(100_000, 3))
-    infos = [np.linalg.inv(P) for P in Ps]
-    PD = np.linalg.inv(sum(infos))
-    fused = sum((w @ (PD @ Y @ Li).T for Y, Li in zip(infos, L, strict=True)), start=np.zeros(w.shape))
-    return float(minkowski_trace_bound(Ps) / np.trace(np.cov(fused.T)))
+    L = [np.linalg.cholesky(random_covariance(rng, 3)) for _ in range(3)]
+    ratio = completely_correlated_trace_ratio(L, np.random.default_rng(10), 100_000)
+    return abs(ratio - 1.0) <= IN.close_rel
 
 
+#: The correlations of claim WF-rem2-weaker-correlation, from complete to none.
 RHOS = (1.0, 0.9, 0.7, 0.5, 0.3, 0.0)
 
 
-def tightness_by_correlation() -> dict[str, float]:
-    """tr(bound)/tr(true) of Eq. (23) for the Sec. IV.D-like isotropic case, by correlation rho."""
-    return {f"rho={r:g}": bound_tightness(r) for r in RHOS}
-
-
 def _more_conservative_as_weaker() -> bool:
-    v = list(tightness_by_correlation().values())
+    # tr(bound)/tr(true) of Eq. (23) for the Sec. IV.D-like isotropic case, by correlation rho
+    v = [bound_tightness(r) for r in RHOS]
     return all(b > a for a, b in itertools.pairwise(v)) and abs(v[0] - 1.0) < 1e-9
 
 
@@ -424,4 +306,4 @@ CLAIMS = [
     ),
 ]
 
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

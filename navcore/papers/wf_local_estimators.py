@@ -10,42 +10,34 @@ from __future__ import annotations
 
 import numpy as np
 
-from navcore.claims import EXACT, Claim, Erratum
-from navcore.estimation.federated import accelerometer_steady_state_isotropic
+from navcore.claims import EXACT, Claim, Erratum, with_quotes
+from navcore.estimation.federated import (
+    accelerometer_steady_state_isotropic,
+    navigation_mapped_error_samples,
+    random_covariance,
+)
 from navcore.papers.wf_inputs import IN, f_l1_over_c_printed, sigma_a_example
-from navcore.papers.wf_quotes import quoted
+from navcore.papers.wf_quotes import QUOTES
 
 #: The page that discusses the claims of Secs. IV.B and IV.C.
 PAGE = "wf/03-local-estimators"
-
-
-def _spd(rng: np.random.Generator, n: int = 3) -> np.ndarray:
-    A = rng.normal(size=(n, n))
-    return A @ A.T + n * np.eye(n)
 
 
 #: Draws of the Eq. (11) Monte Carlo.
 EQ11_DRAWS = 200_000
 
 
-def eq11_sample_error() -> float:
-    """Largest relative difference between tau P_N tau^T + Q_T (Eq. (11)) and the sample covariance
-    of tau e_N + w_T (Eq. (10)) for seeded random tau, P_N, Q_T (200 000 draws)."""
+def _eq11_holds() -> bool:
+    """Eq. (11) is the covariance of the Eq. (10) error: for seeded random tau, P_N, Q_T (diagonal
+    floor 3), the sample covariance of tau e_N + w_T (200 000 draws) within the allowed sampling
+    standard deviations (sqrt(2/n) of the largest entry) of tau P_N tau^T + Q_T."""
     rng = np.random.default_rng(111)
     tau = rng.normal(size=(3, 3))
-    PN, QT = _spd(rng), _spd(rng)
-    n = EQ11_DRAWS
-    eN = rng.normal(size=(n, 3)) @ np.linalg.cholesky(PN).T
-    wT = rng.normal(size=(n, 3)) @ np.linalg.cholesky(QT).T
-    sample = np.cov((eN @ tau.T + wT).T)
+    PN, QT = random_covariance(rng, 3, 3.0), random_covariance(rng, 3, 3.0)
+    sample = np.cov(navigation_mapped_error_samples(tau, PN, QT, rng, EQ11_DRAWS).T)
     formula = tau @ PN @ tau.T + QT
-    return float(np.max(np.abs(sample - formula)) / np.max(np.abs(formula)))
-
-
-def _eq11_holds() -> bool:
-    """Eq. (11) is the covariance of the Eq. (10) error: the sample covariance within the allowed
-    sampling standard deviations (sqrt(2/n) of the largest entry) of the formula."""
-    return eq11_sample_error() <= IN.mc_sigmas * np.sqrt(2.0 / EQ11_DRAWS)
+    error = float(np.max(np.abs(sample - formula)) / np.max(np.abs(formula)))
+    return error <= IN.mc_sigmas * np.sqrt(2.0 / EQ11_DRAWS)
 
 
 def large_qt_dominates() -> dict[str, float]:
@@ -111,10 +103,6 @@ SPEED_DIMENSION = (1, -1)
 ACCEL_DIMENSION = (1, -2)
 
 
-def dim_product(*dims: tuple[int, int]) -> tuple[int, int]:
-    return (sum(d[0] for d in dims), sum(d[1] for d in dims))
-
-
 def eq14_dependence() -> dict[str, float]:
     """Steady-state sqrt(P_DL(k/k)) of Eq. (14) at the Sec. IV.D example (100 ug, T_s, sigma_L =
     200 sigma_a), and with Q_a, R_L, T_s each multiplied in turn by the declared change (doubled)
@@ -150,7 +138,7 @@ def eq16_17_information_form() -> float:
         H = f_l1_over_c_printed() * (np.eye(3) if n_sat == 3 else np.array([[1.0, 0.0, 0.0]]))
         R = IN.sigma_g**2 * np.eye(n_sat)
         for _ in range(20):
-            P = 1e-4 * _spd(rng)
+            P = 1e-4 * random_covariance(rng, 3, 3.0)
             K = P @ H.T @ np.linalg.inv(H @ P @ H.T + R)
             short_form = P - K @ H @ P  # (I - K H) P of Eq. (16)
             info = np.linalg.inv(np.linalg.inv(P) + H.T @ np.linalg.inv(R) @ H)
@@ -249,4 +237,4 @@ CLAIMS = [
     ),
 ]
 
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from navcore.claims import Claim, input_cache
+from navcore.claims import Claim, input_cache, with_quotes
 from navcore.location.emitter import (
     doppler_frequency,
     doppler_jacobian_emitter,
@@ -21,7 +21,7 @@ from navcore.location.emitter import (
     signal_model_error,
 )
 from navcore.papers.wf_inputs import IN
-from navcore.papers.wf_quotes import quoted
+from navcore.papers.wf_quotes import QUOTES
 from navcore.units import C
 
 #: The page that discusses the claims of Sec. II.
@@ -177,4 +177,4 @@ CLAIMS = [
     ),
 ]
 
-CLAIMS = quoted(CLAIMS)
+CLAIMS = with_quotes(CLAIMS, QUOTES)
