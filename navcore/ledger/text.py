@@ -702,7 +702,7 @@ def _statement_word(value: Any, *, printed: bool) -> str:
 
 
 def mark_compared_number(quote: str, digits: str) -> str:
-    r"""A claim's quote with the number it compares set in bold (``**0.011**``), where the quote
+    r"""A claim's quote with the number it compares set in bold (Markdown bold), where the quote
     holds more than that number (a printed table row, a sentence) and names it once.
 
     The number is the one the claim's tolerance was given as printed (``digits``). It is marked
@@ -722,7 +722,7 @@ def mark_compared_number(quote: str, digits: str) -> str:
     Returns
     -------
     str
-        The quote, with ``**`` around the number when it is marked.
+        The quote, with the number between double asterisks when it is marked.
 
     Examples
     --------
