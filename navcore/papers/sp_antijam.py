@@ -9,8 +9,8 @@ code reacquisition time, the geometry, the initial tilt and the code loop's inte
 the tracked code (P(Y)) and the J/S levels the Sec. 3.1 improvement compares are conventions.
 The CEP of Figs. 3.6-3.8 comes from a reduced two-channel navigator
 (:func:`navcore.gnss.antijam.simulate_impact_errors`), not the paper's 6-DOF simulation; the
-claims use its exact error covariance (:func:`impact_rms_m`), the figures a seeded Monte Carlo
-with the paper's 25 runs.
+claims use its exact error covariance (:func:`navcore.gnss.antijam.impact_rms_m`), the figures a
+seeded Monte Carlo with the paper's 25 runs.
 """
 
 from __future__ import annotations
@@ -32,14 +32,13 @@ from navcore.claims import (
     printed,
     prose,
 )
-from navcore.estimation.covariance import biased_filter_error_covariance
 from navcore.gnss.antijam import (
     NavigatorErrorModel,
-    _channel_matrices,
     cep_from_horizontal_errors,
     code_tracking_sigma_chips,
     effective_cn0_dbhz,
     free_space_js_db,
+    impact_rms_m,
     js_for_effective_cn0,
     simulate_impact_errors,
     spectral_separation_q,
@@ -407,32 +406,6 @@ def _locked(above: np.ndarray, reacquisition_s: float) -> np.ndarray:
     t = np.arange(above.shape[-1], dtype=float)
     last_lost = np.maximum.accumulate(np.where(above, -np.inf, t), axis=-1)
     return above & (t - last_lost > reacquisition_s)
-
-
-def impact_rms_m(model: NavigatorErrorModel, fix_sigma: np.ndarray) -> np.ndarray:
-    """Exact per-axis rms impact error of the reduced navigator for each row of ``fix_sigma``.
-
-    The same linear model as :func:`navcore.gnss.antijam.simulate_impact_errors`, evaluated without
-    sampling: the filter's gains follow its own covariance recursion, and the true error
-    ``e = x - x_hat`` together with the unestimated range bias ``b`` obeys
-    ``e+ = (I - K H)(Phi e + w) - K (b + v)``, whose 7x7 covariance is propagated exactly. The
-    error is Gaussian, so the CEP is 1.1774 times the per-axis rms. Rows (one per jammer power)
-    are propagated together.
-    """
-    Phi, Q = _channel_matrices(model, 1.0)
-    P0 = np.diag(
-        [
-            model.init_pos**2,
-            model.init_vel**2,
-            model.init_tilt**2,
-            model.accel_bias**2,
-            model.gyro_bias**2,
-            model.nonorthogonality**2,
-        ]
-    )
-    h = np.eye(6)[0]  # the fix measures the position error
-    Cov = biased_filter_error_covariance(Phi, Q, P0, h, fix_sigma, model.hdop_axis * model.range_bias)
-    return np.sqrt(Cov[:, 0, 0])
 
 
 _CEP_PER_RMS = math.sqrt(2.0 * math.log(2.0))
