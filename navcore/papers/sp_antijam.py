@@ -397,15 +397,13 @@ def fix_sigma_m(power_w: float | np.ndarray, arch: str, kind: str) -> np.ndarray
         )
     )
     sigma = IN.hdop / math.sqrt(2.0) * (C / rc) * chips
-    return np.where(_locked(cn0 >= threshold_dbhz(arch), IN.reacquisition_s), sigma, np.nan)
-
-
-def _locked(above: np.ndarray, reacquisition_s: float) -> np.ndarray:
-    """Code lock along the 1-s samples of the flight (last axis): lost when the effective C/N0 falls
-    below the threshold, regained only after ``reacquisition_s`` seconds back above it."""
+    # code lock along the 1-s samples of the flight (last axis): lost when the effective C/N0 falls
+    # below the threshold, regained only after the reacquisition time back above it
+    above = cn0 >= threshold_dbhz(arch)
     t = np.arange(above.shape[-1], dtype=float)
     last_lost = np.maximum.accumulate(np.where(above, -np.inf, t), axis=-1)
-    return above & (t - last_lost > reacquisition_s)
+    locked = above & (t - last_lost > IN.reacquisition_s)
+    return np.where(locked, sigma, np.nan)
 
 
 _CEP_PER_RMS = math.sqrt(2.0 * math.log(2.0))
@@ -430,12 +428,6 @@ def model_cep(arch: str, power_w: float, kind: str = "wideband") -> float:
     return float(model_ceps(arch, kind, (p,))[0])
 
 
-def _seed(power_w: float, arch: str, kind: str) -> int:
-    return (
-        SEED + 10 * POWERS_W.index(power_w) + (1 if arch == "DI" else 0) + (5 if kind == "narrowband" else 0)
-    )
-
-
 @input_cache
 def cep_curve(arch: str, kind: str) -> tuple[np.ndarray, tuple[int, ...]]:
     """Seeded Monte Carlo CEP at impact (m), the paper's run count per power of :data:`POWERS_W`; seeds."""
@@ -443,7 +435,7 @@ def cep_curve(arch: str, kind: str) -> tuple[np.ndarray, tuple[int, ...]]:
     model = navigator_model()
     ceps, seeds = [], []
     for p in POWERS_W:
-        seed = _seed(p, arch, kind)
+        seed = SEED + 10 * POWERS_W.index(p) + (1 if arch == "DI" else 0) + (5 if kind == "narrowband" else 0)
         res = simulate_impact_errors(model, fix_sigma_m(p, arch, kind), runs=runs, seed=seed)
         ceps.append(cep_from_horizontal_errors(res.impact_errors_m))
         seeds.append(seed)
@@ -528,19 +520,6 @@ ERRATA: list[Erratum] = []
 _js54 = printed("54")
 
 
-def _cep_tolerance(text: str) -> Tolerance:
-    """Two standard errors of a 25-run CEP (1.1774 x rms of 50 axis samples: 10 % each)."""
-    runs = int(RUNS_TEXT)
-    rel = 2.0 * cep_relative_sd(runs)
-    return monte_carlo(
-        rel=rel,
-        runs=runs,
-        why=f"two standard errors ({100 * rel:.0f} %) of a CEP estimated from 25 runs (50 horizontal-axis "
-        f"samples) around the printed {text} m; the book's value is the model's exact CEP "
-        "(no sampling error)",
-    )
-
-
 def _aj_tolerance() -> Tolerance:
     """The reading of an A/J improvement off Fig. 3.8: one standard error of the horizontal distance
     between two 25-run CEP curves (coarser than the figure's dB axis can be read).
@@ -572,6 +551,19 @@ def _cep_claim(arch: str, power: float) -> Claim:
     cid = f"SP-sec3.3-cep-{arch.lower()}-{int(power)}W"
     name = "deeply integrated" if arch == "DI" else "tightly coupled"
     quantity = f"CEP at impact, {name}, {power:g}-W wideband jammer (paper: 25-run Monte Carlo)"
+
+    def tolerance() -> Tolerance:
+        """Two standard errors of a 25-run CEP (1.1774 x rms of 50 axis samples: 10 % each)."""
+        runs = int(RUNS_TEXT)
+        rel = 2.0 * cep_relative_sd(runs)
+        return monte_carlo(
+            rel=rel,
+            runs=runs,
+            why=f"two standard errors ({100 * rel:.0f} %) of a CEP estimated from 25 runs "
+            f"(50 horizontal-axis samples) around the printed {text} m; the book's value is the model's "
+            "exact CEP (no sampling error)",
+        )
+
     common: dict[str, Any] = dict(
         id=cid,
         locator="Sec. 3.3, Fig. 3.6",
@@ -579,7 +571,7 @@ def _cep_claim(arch: str, power: float) -> Claim:
         published=value,
         unit="m",
         compute=lambda: model_cep(arch, power),
-        tolerance=lambda: _cep_tolerance(text),
+        tolerance=tolerance,
         discussed_in=PAGE,
     )
     if arch == "DI":

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from navcore.claims import EXACT, Claim, Erratum, InputSet, Tolerance, printed
+from navcore.claims import EXACT, Claim, Erratum, InputSet, printed
 from navcore.gnss.tracking import aided_natural_frequency, natural_frequency_for_peak_error
 from navcore.inertial.residual_acceleration import (
     residual_acceleration_covariance,
@@ -156,14 +156,6 @@ def printed_h_matches_cross_product_jacobian() -> bool:
     return bool(np.allclose(J, printed_h(), atol=1e-9))
 
 
-def _tie_tolerance(text: str) -> tuple[float, Tolerance]:
-    return printed(
-        text,
-        extra_abs=1e-12,
-        why="floating-point slack: 225 ppm × 6 g = 0.00135 g is an exact tie that rounds half up to 0.0014",
-    )
-
-
 ERRATA = [
     Erratum(
         id="SP-E-misalignment-sign",
@@ -205,7 +197,11 @@ ERRATA = [
 
 
 def _col3_claim(g: str) -> Claim:
-    value, tol = _tie_tolerance(TAB26_COL3_G[g])
+    value, tol = printed(
+        TAB26_COL3_G[g],
+        extra_abs=1e-12,
+        why="floating-point slack: 225 ppm × 6 g = 0.00135 g is an exact tie that rounds half up to 0.0014",
+    )
     return Claim(
         id=f"SP-tab2.6-col3-{g}",
         locator="Table 2.6, column 3",
