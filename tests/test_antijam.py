@@ -410,3 +410,15 @@ def test_spectral_separation_of_a_very_wide_jammer() -> None:
     f = np.linspace(-b / 2, b / 2, 2_000_001)
     kappa = np.trapezoid(np.sinc(f / rc) ** 2 / rc, f) / b
     assert aj.spectral_separation_q(b, rc) == pytest.approx(1 / (rc * kappa), rel=1e-6)
+
+
+def test_cep_relative_sd_matches_repeated_monte_carlo_ceps() -> None:
+    """Oracle: 20000 seeded repetitions (seed 13) of a 25-run CEP of unit circular-normal errors
+    (cep_from_horizontal_errors on 25 x 2 draws): the sample standard deviation of the CEPs over
+    their mean is within 3 % of the first-order 1/sqrt(4 x 25) = 0.1."""
+    rng = np.random.default_rng(13)
+    ceps = np.array([aj.cep_from_horizontal_errors(rng.standard_normal((25, 2))) for _ in range(20000)])
+    assert float(np.std(ceps) / np.mean(ceps)) == pytest.approx(aj.cep_relative_sd(25), rel=0.03)
+    assert aj.cep_relative_sd(1) == 0.5
+    with pytest.raises(ValueError, match="runs"):
+        aj.cep_relative_sd(0)

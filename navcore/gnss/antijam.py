@@ -68,6 +68,7 @@ __all__ = [
     "NavigatorErrorModel",
     "RunResult",
     "cep_from_horizontal_errors",
+    "cep_relative_sd",
     "code_tracking_sigma_chips",
     "early_minus_late",
     "effective_cn0_dbhz",
@@ -447,6 +448,42 @@ def cep_from_horizontal_errors(errors_m: ArrayLike) -> float:
     if e.ndim != 2 or e.shape[1] != 2:
         raise ValueError(f"errors_m must have shape (N, 2), got {e.shape}")
     return float(math.sqrt(2.0 * math.log(2.0)) * math.sqrt(np.mean(e**2)))
+
+
+def cep_relative_sd(runs: int) -> float:
+    r"""Relative standard error of a CEP taken by :func:`cep_from_horizontal_errors` from ``runs`` runs.
+
+    The CEP is 1.1774 times the rms of :math:`n = 2 \cdot` ``runs`` zero-mean Gaussian axis
+    samples; the mean square has relative variance :math:`2/n`, so its square root, and the CEP
+    with it, has relative standard error :math:`\tfrac{1}{2}\sqrt{2/n} = 1/\sqrt{4\,\mathrm{runs}}`
+    (first order in :math:`1/n`).
+
+    Parameters
+    ----------
+    runs : int
+        Monte Carlo runs, each giving one horizontal (two-axis) error (``>= 1``).
+
+    Returns
+    -------
+    float
+        Relative standard error of the CEP (a fraction of it).
+
+    Raises
+    ------
+    ValueError
+        If ``runs`` is not a positive integer.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons", Sec. 3.3
+    (the CEP of 25 runs per jammer power of Figs. 3.6-3.8).
+
+    Examples
+    --------
+    >>> cep_relative_sd(25)
+    0.1
+    """
+    return 1.0 / math.sqrt(4.0 * runs)
 
 
 @dataclass(frozen=True)

@@ -35,6 +35,7 @@ from navcore.claims import (
 from navcore.gnss.antijam import (
     NavigatorErrorModel,
     cep_from_horizontal_errors,
+    cep_relative_sd,
     code_tracking_sigma_chips,
     effective_cn0_dbhz,
     free_space_js_db,
@@ -440,11 +441,6 @@ def cep_curve(arch: str, kind: str) -> tuple[np.ndarray, tuple[int, ...]]:
         ceps.append(cep_from_horizontal_errors(res.impact_errors_m))
         seeds.append(seed)
     return np.array(ceps), tuple(seeds)
-
-
-def cep_relative_sd(runs: int) -> float:
-    """Relative standard error of a CEP taken as 1.1774 x rms of ``runs`` 2-D samples: 1/sqrt(4 runs)."""
-    return 1.0 / math.sqrt(4.0 * runs)
 
 
 def aj_improvement_db(kind: str, cep_m: np.ndarray | float) -> np.ndarray:

@@ -14,14 +14,10 @@ import numpy as np
 
 from navcore.claims import EXACT, Claim, Erratum, InputSet, printed
 from navcore.gnss.tracking import aided_natural_frequency, natural_frequency_for_peak_error
-from navcore.inertial.residual_acceleration import (
-    residual_acceleration_covariance,
-    scale_factor_misalignment_sensitivity,
-    sphere_radius,
-)
+from navcore.inertial.residual_acceleration import scale_factor_misalignment_sensitivity
 from navcore.papers import sp_tracking as spt
 from navcore.papers.sp_quotes import quoted
-from navcore.units import ARCSEC, GPS_L1_WAVELENGTH_M, PPM
+from navcore.units import GPS_L1_WAVELENGTH_M, PPM
 
 PAGE = "sp/03-residual-acceleration"
 
@@ -119,13 +115,6 @@ def unaided_omega0(wavelength_m: float | None = None) -> float:
 def col4_l1_rad_s(grade: str) -> float:
     """Column 4 recomputed with the L1 carrier (unaided 22.37 rad/s, unrounded column 3)."""
     return float(aided_natural_frequency(col3_g(grade), spt.IN.step_g, unaided_omega0(GPS_L1_WAVELENGTH_M)))
-
-
-def r90_from_apriori_ppm(sf_ppm: float, mis_arcsec: float, accel=(1.0, 1.0, 1.0)) -> float:
-    """90 % sphere radius (ppm of the step) from isotropic a-priori scale-factor and misalignment errors."""
-    H = scale_factor_misalignment_sensitivity(accel, convention="printed")
-    P = np.diag([(sf_ppm * PPM) ** 2] * 3 + [(mis_arcsec * ARCSEC) ** 2] * 3)
-    return sphere_radius(residual_acceleration_covariance(H, P), 0.9) / PPM
 
 
 def printed_h() -> np.ndarray:
