@@ -396,9 +396,10 @@ def kzl_rms_relative_error_pct() -> float:
 )
 def sp_cep_sd_pct() -> float:
     """Relative standard error of a CEP taken from the runs per point of SP Sec. 3, in percent."""
+    from navcore.gnss.antijam import cep_relative_sd
     from navcore.papers import sp_antijam as spj
 
-    return float(100 * spj.cep_relative_sd(spj.IN.runs))
+    return float(100 * cep_relative_sd(spj.IN.runs))
 
 
 @register("sp03-chi2", "sp/03-residual-acceleration", "radius holding 90 % of a 3-D standard normal (sigmas)")
@@ -3277,12 +3278,13 @@ def sp03_iso() -> float:
 def _sp03_apriori_ratios() -> list[float]:
     """Table 2.6 column 2 over the 90 % radius of Table 2.5's a-priori accelerometer scale factor
     and misalignment, per grade."""
+    from navcore.inertial.residual_acceleration import r90_from_apriori_ppm
     from navcore.papers import sp_residual_acceleration as spr
     from navcore.papers.sp_tables import TABLE_2_5_PRINTED
 
     sf = TABLE_2_5_PRINTED["accel_scale_factor_ppm"]
     mis = TABLE_2_5_PRINTED["accel_misalignment_arcsec"]
-    return [spr.col2_ppm(g) / spr.r90_from_apriori_ppm(sf[j], mis[j]) for j, g in enumerate(spr.GRADES)]
+    return [spr.col2_ppm(g) / r90_from_apriori_ppm(sf[j], mis[j]) for j, g in enumerate(spr.GRADES)]
 
 
 @register(
@@ -4386,10 +4388,11 @@ def sp03_needed_sf_1() -> float:
     of the 1 nmi/h IMU (Sec. 2.5's sensitivity at a = (1, 1, 1))."""
     from scipy.optimize import brentq
 
+    from navcore.inertial.residual_acceleration import r90_from_apriori_ppm
     from navcore.papers import sp_residual_acceleration as spr
 
     return float(
-        brentq(lambda s: spr.r90_from_apriori_ppm(s, 0.0) - spr.col2_ppm("1"), 1e-3, sp03_apriori_sf_1())
+        brentq(lambda s: r90_from_apriori_ppm(s, 0.0) - spr.col2_ppm("1"), 1e-3, sp03_apriori_sf_1())
     )
 
 
@@ -4403,11 +4406,12 @@ def sp03_needed_mis(g: str) -> float:
     grade ``g``, is the printed column 2 of that grade."""
     from scipy.optimize import brentq
 
+    from navcore.inertial.residual_acceleration import r90_from_apriori_ppm
     from navcore.papers import sp_residual_acceleration as spr
     from navcore.papers.sp_tables import TABLE_2_5_PRINTED
 
     sf = float(TABLE_2_5_PRINTED["accel_scale_factor_ppm"][list(spr.GRADES).index(g)])
-    return float(brentq(lambda m: spr.r90_from_apriori_ppm(sf, m) - spr.col2_ppm(g), 0.0, 1e3))
+    return float(brentq(lambda m: r90_from_apriori_ppm(sf, m) - spr.col2_ppm(g), 0.0, 1e3))
 
 
 @register(

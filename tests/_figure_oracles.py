@@ -668,6 +668,7 @@ def _sp_cep(data: Data, fig_id: str) -> None:
     """Monte Carlo CEPs and the model's exact CEP recomputed (paper module). Oracle: each seeded
     25-run CEP is within 4 relative standard errors (1/sqrt(4 runs) each) of the exact CEP at
     its power; on Fig. 3.6 the text's four CEPs are marked at their printed values."""
+    from navcore.gnss.antijam import cep_relative_sd
     from navcore.papers import sp_antijam as spj
 
     kind = "wideband" if fig_id.endswith("3.6") else "narrowband"
@@ -678,7 +679,7 @@ def _sp_cep(data: Data, fig_id: str) -> None:
         near(mc.y, cep)
         near(exact.y, spj.model_ceps(arch, kind, spj.FINE_POWERS_W))
         model = spj.model_ceps(arch, kind, spj.POWERS_W)
-        rel = 4 * spj.cep_relative_sd(spj.IN.runs)
+        rel = 4 * cep_relative_sd(spj.IN.runs)
         assert np.all(np.abs(np.log(mc.y / model)) < np.log(1 + rel) * 1.5), (arch, mc.y / model)
     marks = sorted((s.x[0], s.y[0]) for s in lines(ax) if len(s.x) == 1)
     if kind == "wideband":

@@ -323,6 +323,32 @@ def test_bad_input_raises(call, match) -> None:
         call()
 
 
+def test_impact_rms_without_range_bias_is_the_filters_own_sigma() -> None:
+    """Oracle: the filter's own covariance recursion inside simulate_impact_errors (its Joseph
+    update, not the augmented covariance): with no range bias the filter is optimal, so the true
+    error's rms equals the filter's final sigma, here along a history with a 20-s outage."""
+    sig = np.full(120, 4.0)
+    sig[60:80] = np.nan
+    m = _model()
+    own = aj.simulate_impact_errors(m, sig, runs=1, seed=0).filter_sigma_m
+    assert aj.impact_rms_m(m, sig)[0] == pytest.approx(own, rel=1e-9)
+
+
+def test_impact_rms_matches_a_seeded_monte_carlo() -> None:
+    """Oracle: a seeded Monte Carlo of the same navigator (simulate_impact_errors, 20000 runs,
+    40000 axis samples, seed 5) with a 3-m range bias and an outage: the sample rms of the impact
+    errors is within 2 % (about 6 standard errors) of the exact rms; rows are propagated alone."""
+    m = _model(range_bias=3.0)
+    sig = np.full(90, 6.0)
+    sig[40:55] = np.nan
+    exact = aj.impact_rms_m(m, np.stack([sig, np.full(90, 2.0)]))
+    res = aj.simulate_impact_errors(m, sig, runs=20000, seed=5)
+    assert float(np.sqrt(np.mean(res.impact_errors_m**2))) == pytest.approx(exact[0], rel=0.02)
+    assert exact[1] == pytest.approx(aj.impact_rms_m(m, np.full(90, 2.0))[0], rel=1e-12)
+    with pytest.raises(ValueError, match="fix_sigma_m"):
+        aj.impact_rms_m(m, -sig)
+
+
 def test_sp_exact_impact_covariance_matches_monte_carlo() -> None:
     """Oracle: the seeded Monte Carlo of the same reduced navigator (4000 runs, seed 11) for the SP
     PGM claims' exact CEP, at a power with an outage (100 W) and one without (1 W)."""
@@ -384,3 +410,15 @@ def test_spectral_separation_of_a_very_wide_jammer() -> None:
     f = np.linspace(-b / 2, b / 2, 2_000_001)
     kappa = np.trapezoid(np.sinc(f / rc) ** 2 / rc, f) / b
     assert aj.spectral_separation_q(b, rc) == pytest.approx(1 / (rc * kappa), rel=1e-6)
+
+
+def test_cep_relative_sd_matches_repeated_monte_carlo_ceps() -> None:
+    """Oracle: 20000 seeded repetitions (seed 13) of a 25-run CEP of unit circular-normal errors
+    (cep_from_horizontal_errors on 25 x 2 draws): the sample standard deviation of the CEPs over
+    their mean is within 3 % of the first-order 1/sqrt(4 x 25) = 0.1."""
+    rng = np.random.default_rng(13)
+    ceps = np.array([aj.cep_from_horizontal_errors(rng.standard_normal((25, 2))) for _ in range(20000)])
+    assert float(np.std(ceps) / np.mean(ceps)) == pytest.approx(aj.cep_relative_sd(25), rel=0.03)
+    assert aj.cep_relative_sd(1) == 0.5
+    with pytest.raises(ValueError, match="runs"):
+        aj.cep_relative_sd(0)

@@ -28,6 +28,7 @@ from navcore.integration.schedules import (
     combine_schedules,
     loosely_coupled_schedule,
     tightly_coupled_schedule,
+    without_step,
 )
 from navcore.units import DEG, DEG_PER_H, MICRO_G
 
@@ -658,3 +659,24 @@ def test_random_constants_skipped_only_where_they_are_constant(monkeypatch):
         want_f.append(np.diag(Pf))
     np.testing.assert_allclose(got.true_var, want_t, rtol=1e-9, atol=1e-24)
     np.testing.assert_allclose(got.filter_var, want_f, rtol=1e-9, atol=1e-24)
+
+
+def test_without_step_drops_one_step_only() -> None:
+    """Oracle: the schedule's own output, step by step: the same measurements (H and R) at every
+    step but the dropped one, none there; a negative step is rejected by name."""
+    from navcore.inertial.error_dynamics import ins_error_layout
+
+    both = combine_schedules(
+        baro_schedule(ins_error_layout("position", "velocity"), noise_m=3.0, every=2),
+        baro_schedule(ins_error_layout("position", "velocity"), noise_m=5.0),
+    )
+    cut = without_step(both, 4)
+    for k in range(8):
+        want = [] if k == 4 else both(k)
+        got = cut(k)
+        assert len(got) == len(want)
+        for a, b in zip(got, want, strict=True):
+            np.testing.assert_array_equal(a.H, b.H)
+            np.testing.assert_array_equal(a.R, b.R)
+    with pytest.raises(ValueError, match="step"):
+        without_step(both, -1)

@@ -15,6 +15,7 @@ from navcore.inertial.error_dynamics import (
     GaussMarkov,
     earth_rate_ned,
     error_dynamics,
+    gravity_tuning_psd,
     gyrocompass_alignment,
     initial_covariance,
     ins_error_layout,
@@ -640,3 +641,24 @@ def test_psi_sign_convention_against_a_strapdown_step_and_its_conversion():
     np.testing.assert_array_equal(T @ T, np.eye(lay.size))
     with pytest.raises(ValueError, match="misalignment"):
         psi_to_attitude_error(ins_error_layout("position", "velocity"))
+
+
+def test_gravity_tuning_is_the_zero_frequency_psd_of_the_anomaly() -> None:
+    """Oracle: the PSD at zero frequency of a stationary first-order Gauss-Markov process is the
+    integral of its autocorrelation sigma^2 exp(-|t| / tau) over all lags (Wiener-Khinchin),
+    taken by scipy.integrate.quad with tau = d / v out to 60 tau (the tail is e^-60); it lands on
+    the velocity states only, and a missing anomaly or a vehicle at rest gives no tuning."""
+    from scipy.integrate import quad
+
+    lay = ins_error_layout("position", "velocity", "misalignment", "accel bias")
+    sigma, d, v = 3e-4, 25_000.0, 180.0
+    src = ErrorSources(ImuSpec("ideal"), gravity=GaussMarkov(sigma, d))
+    tau = d / v
+    psd0 = 2 * quad(lambda t: sigma**2 * np.exp(-t / tau), 0.0, 60 * tau, epsabs=0.0, epsrel=1e-12)[0]
+    q = gravity_tuning_psd(lay, src, v)
+    np.testing.assert_allclose(q[lay.slice("velocity")], psd0, rtol=1e-9)
+    assert not q[: lay.slice("velocity").start].any() and not q[lay.slice("velocity").stop :].any()
+    assert not gravity_tuning_psd(lay, src, 0.0).any()
+    assert not gravity_tuning_psd(lay, ErrorSources(ImuSpec("ideal")), v).any()
+    with pytest.raises(ValueError, match="speed_mps"):
+        gravity_tuning_psd(lay, src, -1.0)

@@ -13,7 +13,13 @@ import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
 
-from navcore.inertial.trajectories import Segment, euler_to_dcm_stack, fly, straight_and_level
+from navcore.inertial.trajectories import (
+    Segment,
+    euler_to_dcm_stack,
+    fly,
+    straight_and_level,
+    trajectory_window,
+)
 from navcore.units import G0, WGS84_A
 
 
@@ -234,3 +240,16 @@ def test_latitude_is_integrated_along_a_path_that_climbs_after_a_leg_north():
     assert tr.h[-1] - h0 > 9000.0
     np.testing.assert_allclose(tr.h, sol.y[1], rtol=0, atol=0.01)
     np.testing.assert_allclose(tr.lat, sol.y[0], rtol=0, atol=1e-8)  # 6 cm
+
+
+def test_trajectory_window_slices_every_field_alike() -> None:
+    """Oracle: numpy slicing by hand of each field with the indices of the nearest samples
+    (t = 0, 0.5, ..., 30 s; 3.1 s -> index 6, 20.2 s -> index 40), every 4th sample."""
+    tr = fly([Segment(10.0), Segment(20.0, turn_rate=0.02)], dt=0.5, speed0=80.0)
+    w = trajectory_window(tr, 3.1, 20.2, step=4)
+    for name in ("t", "lat", "lon", "h", "pos_ned", "vel_ned", "f_ned", "C_bn", "omega_nb_b"):
+        np.testing.assert_array_equal(getattr(w, name), getattr(tr, name)[6:41:4])
+    assert w.t[0] == 3.0 and w.t[-1] == 19.0
+    assert len(trajectory_window(tr, 0.0, 30.0)) == len(tr)
+    with pytest.raises(ValueError, match="step"):
+        trajectory_window(tr, 0.0, 1.0, step=0)

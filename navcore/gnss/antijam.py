@@ -59,6 +59,7 @@ from navcore._validate import (
     require_integer,
     require_positive,
 )
+from navcore.estimation.covariance import biased_filter_error_covariance
 from navcore.estimation.kalman import joseph_unchecked
 from navcore.trace import implements
 from navcore.units import G0
@@ -67,11 +68,13 @@ __all__ = [
     "NavigatorErrorModel",
     "RunResult",
     "cep_from_horizontal_errors",
+    "cep_relative_sd",
     "code_tracking_sigma_chips",
     "early_minus_late",
     "effective_cn0_dbhz",
     "free_space_js_db",
     "ideal_correlation",
+    "impact_rms_m",
     "js_for_effective_cn0",
     "simulate_impact_errors",
     "spectral_separation_q",
@@ -447,6 +450,42 @@ def cep_from_horizontal_errors(errors_m: ArrayLike) -> float:
     return float(math.sqrt(2.0 * math.log(2.0)) * math.sqrt(np.mean(e**2)))
 
 
+def cep_relative_sd(runs: int) -> float:
+    r"""Relative standard error of a CEP taken by :func:`cep_from_horizontal_errors` from ``runs`` runs.
+
+    The CEP is 1.1774 times the rms of :math:`n = 2 \cdot` ``runs`` zero-mean Gaussian axis
+    samples; the mean square has relative variance :math:`2/n`, so its square root, and the CEP
+    with it, has relative standard error :math:`\tfrac{1}{2}\sqrt{2/n} = 1/\sqrt{4\,\mathrm{runs}}`
+    (first order in :math:`1/n`).
+
+    Parameters
+    ----------
+    runs : int
+        Monte Carlo runs, each giving one horizontal (two-axis) error (``>= 1``).
+
+    Returns
+    -------
+    float
+        Relative standard error of the CEP (a fraction of it).
+
+    Raises
+    ------
+    ValueError
+        If ``runs`` is not a positive integer.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons", Sec. 3.3
+    (the CEP of 25 runs per jammer power of Figs. 3.6-3.8).
+
+    Examples
+    --------
+    >>> cep_relative_sd(25)
+    0.1
+    """
+    return 1.0 / math.sqrt(4.0 * runs)
+
+
 @dataclass(frozen=True)
 class NavigatorErrorModel:
     r"""One horizontal channel of the reduced INS/GPS navigator (SI units, 1-:math:`\sigma`).
@@ -610,6 +649,73 @@ def simulate_impact_errors(
     return RunResult(err, float(math.sqrt(P[0, 0])), locked, seed)
 
 
+@implements("SP Sec. 3.3")
+def impact_rms_m(model: NavigatorErrorModel, fix_sigma_m: ArrayLike) -> Array:
+    r"""Exact per-axis rms impact error of the reduced navigator, per fix-noise history.
+
+    The same linear model as :func:`simulate_impact_errors` (1-s steps), evaluated without
+    sampling: the filter's gains follow its own covariance recursion, and the true error
+    :math:`e = x - \hat x` together with the unestimated range bias :math:`b` (standard
+    deviation ``hdop_axis * range_bias``) obeys :math:`e^+ = (I - K H)(\Phi e + w) - K (b + v)`,
+    whose 7x7 covariance is propagated exactly
+    (:func:`navcore.estimation.covariance.biased_filter_error_covariance`). The error is
+    Gaussian, so the CEP is 1.1774 times the per-axis rms. Rows (one per jammer power, say) are
+    propagated together.
+
+    Parameters
+    ----------
+    model : NavigatorErrorModel
+        Sensor, initial and geometry errors of one horizontal channel (SI, 1-:math:`\sigma`).
+    fix_sigma_m : (N,) or (B, N) array_like
+        Per-axis position-fix noise at each 1-s step (m); NaN marks steps with no fix (code
+        loop out of lock: free inertial).
+
+    Returns
+    -------
+    (B,) ndarray
+        Per-axis rms of the true position error after the last step, m, one per row of
+        ``fix_sigma_m`` (``B = 1`` for a 1-D history).
+
+    Raises
+    ------
+    ValueError
+        If ``fix_sigma_m`` is not a (N,) or (B, N) array of standard deviations >= 0 or NaN.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",
+    Sec. 3.3 (impact accuracy under jamming, Figs. 3.6-3.8); Gelb, *Applied Optimal
+    Estimation* (1974), Sec. 7.2 (the error covariance of a suboptimal filter).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> m = NavigatorErrorModel(accel_bias=1e-2, accel_tau_s=300.0, gyro_bias=5e-5, gyro_tau_s=300.0,
+    ...     accel_vrw=1e-4, gyro_arw=1e-5, nonorthogonality=1e-3, init_pos=10.0, init_vel=0.2,
+    ...     init_tilt=1e-3, range_bias=2.0, hdop_axis=1.0)
+    >>> rms = impact_rms_m(m, np.full((2, 60), 5.0))
+    >>> rms.shape, bool(rms[0] == rms[1]), bool(rms[0] > 2.0)
+    ((2,), True, True)
+    """
+    sig = np.asarray(fix_sigma_m, dtype=float)
+    if sig.ndim not in (1, 2) or np.isinf(sig).any() or (sig < 0).any():
+        raise ValueError("fix_sigma_m must be a (N,) or (B, N) array of standard deviations >= 0 or NaN")
+    Phi, Q = _channel_matrices(model, 1.0)
+    P0 = np.diag(
+        [
+            model.init_pos**2,
+            model.init_vel**2,
+            model.init_tilt**2,
+            model.accel_bias**2,
+            model.gyro_bias**2,
+            model.nonorthogonality**2,
+        ]
+    )
+    h = np.eye(6)[0]  # the fix measures the position error
+    Cov = biased_filter_error_covariance(Phi, Q, P0, h, sig, model.hdop_axis * model.range_bias)
+    return np.sqrt(Cov[:, 0, 0])
+
+
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
 check_public(
@@ -632,4 +738,5 @@ check_public(
         "jammer_power_w": NONNEGATIVE,
     },
     simulate_impact_errors={"skip": ("fix_sigma_m",)},
+    impact_rms_m={"skip": ("fix_sigma_m",)},
 )

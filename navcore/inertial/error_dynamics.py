@@ -105,6 +105,7 @@ __all__ = [
     "GaussMarkov",
     "earth_rate_ned",
     "error_dynamics",
+    "gravity_tuning_psd",
     "gyrocompass_alignment",
     "initial_covariance",
     "ins_error_layout",
@@ -700,6 +701,59 @@ def _process_noise_diag_stack(layout: StateLayout, sources: ErrorSources, speed_
             q[:, layout.slice("clock bias")] = sources.clock.bias_psd
         if "clock drift" in names:
             q[:, layout.slice("clock drift")] = sources.clock.drift_psd
+    return q
+
+
+def gravity_tuning_psd(layout: StateLayout, sources: ErrorSources, speed_mps: float) -> Array:
+    r"""Filter tuning for an unmodelled gravity anomaly: white acceleration noise on the velocity.
+
+    A filter without the ``gravity`` states stands the first-order Gauss-Markov anomaly of
+    ``sources.gravity`` (stationary :math:`\sigma`, distance constant :math:`d`) in with white
+    noise of its low-frequency power spectral density: the PSD
+    :math:`2\sigma^2\tau / (1 + \omega^2\tau^2)` at :math:`\omega = 0`, :math:`2\sigma^2\tau`,
+    with the correlation time :math:`\tau = d / v` at ground speed :math:`v`.
+
+    Parameters
+    ----------
+    layout : StateLayout
+        The filter's layout (must have a ``velocity`` block).
+    sources : ErrorSources
+        Error sources; ``sources.gravity`` is the anomaly (``None``: no tuning).
+    speed_mps : float
+        Ground speed, m/s (``>= 0``; ``0`` gives no tuning).
+
+    Returns
+    -------
+    (n,) ndarray
+        Added PSD per state of ``layout`` ((m/s²)²/Hz on the three velocity states, zero
+        elsewhere), the ``filter_added_psd`` of
+        :func:`navcore.integration.engine.run_covariance_analysis`.
+
+    Raises
+    ------
+    ValueError
+        If ``speed_mps`` is negative or not finite.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",
+    Sec. 2.6 (the integration filters of Figs. 2.4-2.8 do not model the gravity anomaly of
+    their truth model); Gelb, *Applied Optimal Estimation* (1974), Table 3.8-1 (the PSD of a
+    first-order Gauss-Markov process).
+
+    Examples
+    --------
+    >>> from navcore.inertial.imu import ImuSpec
+    >>> lay = ins_error_layout("position", "velocity", "misalignment")
+    >>> src = ErrorSources(ImuSpec("ideal"), gravity=GaussMarkov(1e-4, 20_000.0))
+    >>> q = gravity_tuning_psd(lay, src, 200.0)
+    >>> [float(x) for x in q[3:6]], float(q[:3].sum() + q[6:].sum())
+    ([2e-06, 2e-06, 2e-06], 0.0)
+    """
+    q = np.zeros(layout.size)
+    gm = sources.gravity
+    if gm is not None and speed_mps > 0:
+        q[layout.slice("velocity")] = 2 * gm.sigma**2 * gm.distance_constant_m / speed_mps
     return q
 
 

@@ -70,8 +70,10 @@ from navcore._validate import (
 )
 from navcore.frames import skew
 from navcore.trace import implements
+from navcore.units import ARCSEC, PPM
 
 __all__ = [
+    "r90_from_apriori_ppm",
     "residual_acceleration_covariance",
     "scale_factor_misalignment_sensitivity",
     "sphere_probability",
@@ -344,4 +346,64 @@ def sphere_radius_monte_carlo(cov: ArrayLike, p: float = 0.9, n: int = 200_000, 
 
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
-check_public(globals(), {"n": COUNT, "p": OPEN_PROBABILITY, "radius": NONNEGATIVE})
+@implements("SP Table 2.6")
+def r90_from_apriori_ppm(sf_ppm: float, mis_arcsec: float, accel: ArrayLike = (1.0, 1.0, 1.0)) -> float:
+    r"""90 % sphere radius of the residual acceleration from isotropic scale-factor and
+    misalignment errors, in ppm of the acceleration step.
+
+    The three accelerometer scale factors (1-:math:`\sigma` ``sf_ppm`` each) and the three
+    misalignment angles (``mis_arcsec`` each) are independent; their covariance goes through the
+    paper's printed sensitivity (:func:`scale_factor_misalignment_sensitivity` with
+    ``convention="printed"``; with independent errors the sign of the misalignment block does not
+    change the covariance) to the residual acceleration's covariance
+    (:func:`residual_acceleration_covariance`), whose 90 % sphere radius
+    (:func:`sphere_radius`) is returned per unit of the step.
+
+    Parameters
+    ----------
+    sf_ppm : float
+        Scale-factor error per axis, ppm (1-:math:`\sigma`, ``>= 0``).
+    mis_arcsec : float
+        Misalignment per axis, arcsec (1-:math:`\sigma`, ``>= 0``).
+    accel : array_like, shape (3,), default (1, 1, 1)
+        The acceleration step (the paper's "unit acceleration step" by default).
+
+    Returns
+    -------
+    float
+        The 90 % sphere radius, ppm of the step's unit.
+
+    Raises
+    ------
+    ValueError
+        If an error is negative or not finite, both are zero, or ``accel`` is not a finite
+        3-vector.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons", Sec. 2.5,
+    Table 2.6 column 2 (the 90 % residual error due to scale factor and misalignment).
+
+    Examples
+    --------
+    With no misalignment, the residual on each axis is ``sf`` times the unit step, so the radius
+    is that of :math:`s^2 I` in 3-D, :math:`2.500278\,s`:
+
+    >>> round(r90_from_apriori_ppm(100.0, 0.0), 4)
+    250.0278
+    """
+    H = scale_factor_misalignment_sensitivity(accel, convention="printed")
+    P = np.diag([(sf_ppm * PPM) ** 2] * 3 + [(mis_arcsec * ARCSEC) ** 2] * 3)
+    return sphere_radius(residual_acceleration_covariance(H, P), 0.9) / PPM
+
+
+check_public(
+    globals(),
+    {
+        "n": COUNT,
+        "p": OPEN_PROBABILITY,
+        "radius": NONNEGATIVE,
+        "sf_ppm": NONNEGATIVE,
+        "mis_arcsec": NONNEGATIVE,
+    },
+)

@@ -45,12 +45,13 @@ climbs, dives, turns and terrain-following height changes.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 from numpy.typing import NDArray
 
 from navcore._validate import (
+    COUNT,
     LATITUDE,
     LONGITUDE,
     NONNEGATIVE,
@@ -62,7 +63,7 @@ from navcore._validate import (
 )
 from navcore.units import G0, WGS84_A
 
-__all__ = ["Segment", "Trajectory", "euler_to_dcm_stack", "fly", "straight_and_level"]
+__all__ = ["Segment", "Trajectory", "euler_to_dcm_stack", "fly", "straight_and_level", "trajectory_window"]
 
 Array = NDArray[np.float64]
 
@@ -359,6 +360,50 @@ def straight_and_level(
     )
 
 
+def trajectory_window(trajectory: Trajectory, t0: float, t1: float, step: int = 1) -> Trajectory:
+    """The samples of ``trajectory`` from the one nearest ``t0`` to the one nearest ``t1``.
+
+    Every field is sliced alike (inclusive of both ends), keeping every ``step``-th sample, so
+    a phase of a flight can be analysed on its own (at a coarser step if wanted).
+
+    Parameters
+    ----------
+    trajectory : Trajectory
+        The whole flight.
+    t0, t1 : float
+        Start and end times, s; each is taken to its nearest sample (the first on a tie).
+    step : int, default 1
+        Keep every ``step``-th sample from the start (``>= 1``).
+
+    Returns
+    -------
+    Trajectory
+        The window; empty when ``t1``'s sample precedes ``t0``'s.
+
+    Raises
+    ------
+    ValueError
+        If a time is not finite or ``step`` is not a positive integer.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",
+    Sec. 2.6 (the missions of Figs. 2.4-2.8, evaluated in phases).
+
+    Examples
+    --------
+    >>> tr = straight_and_level(10.0, speed=50.0)
+    >>> w = trajectory_window(tr, 2.2, 8.0, step=3)
+    >>> w.t.tolist(), w.pos_ned[:, 0].tolist()
+    ([2.0, 5.0, 8.0], [100.0, 250.0, 400.0])
+    """
+    tr = trajectory
+    i0 = int(np.argmin(np.abs(tr.t - t0)))
+    i1 = int(np.argmin(np.abs(tr.t - t1)))
+    sl = slice(i0, i1 + 1, step)
+    return Trajectory(*(getattr(tr, f.name)[sl] for f in fields(tr)))
+
+
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
 check_public(
@@ -370,5 +415,6 @@ check_public(
         "lat0": LATITUDE,
         "lon0": LONGITUDE,
         "path_angle0": Angle(90.0, "a flight-path angle"),
+        "step": COUNT,
     },
 )

@@ -25,6 +25,7 @@ from numpy.typing import NDArray
 
 from navcore._validate import (
     COUNT,
+    COUNT0,
     NONNEGATIVE,
     POSITIVE,
     check_public,
@@ -43,6 +44,7 @@ __all__ = [
     "doppler_schedule",
     "loosely_coupled_schedule",
     "tightly_coupled_schedule",
+    "without_step",
 ]
 
 Array = NDArray[np.float64]
@@ -501,6 +503,49 @@ def combine_schedules(*schedules: Schedule | None) -> Schedule:
     return sched
 
 
+def without_step(schedule: Schedule, step: int) -> Schedule:
+    """``schedule`` with no measurement at step ``step`` (the same measurements elsewhere).
+
+    A phase of a covariance analysis that another phase resumes from its last sample leaves
+    that sample's measurements to the resumed phase, so that they are processed once.
+
+    Parameters
+    ----------
+    schedule : callable
+        Schedule ``k -> list[Measurement]``.
+    step : int
+        The step index whose measurements are dropped (``>= 0``).
+
+    Returns
+    -------
+    callable
+        Schedule returning ``[]`` at ``step`` and ``schedule(k)`` at every other step.
+
+    Raises
+    ------
+    ValueError
+        If ``step`` is negative or not an integer.
+
+    References
+    ----------
+    Schmidt & Phillips, "INS/GPS Integration Architecture Performance Comparisons",
+    Sec. 2.6 (the missions of Figs. 2.4-2.8, evaluated in phases).
+
+    Examples
+    --------
+    >>> from navcore.inertial.error_dynamics import ins_error_layout
+    >>> baro = baro_schedule(ins_error_layout("position", "velocity"), noise_m=3.0)
+    >>> cut = without_step(baro, 2)
+    >>> len(cut(1)), len(cut(2))
+    (1, 0)
+    """
+
+    def sched(k: int) -> Sequence[Measurement]:
+        return [] if k == step else schedule(k)
+
+    return sched
+
+
 # Every public function checks its arguments against their annotations (finite numbers,
 # numeric arrays) and names the parameter when it raises: see navcore._validate.checked.
 check_public(
@@ -514,5 +559,6 @@ check_public(
         "range_rate_noise": NONNEGATIVE,
         "pseudorange_bias_sigma": NONNEGATIVE,
         "max_ehe_m": POSITIVE,
+        "step": COUNT0,
     },
 )

@@ -9,8 +9,8 @@ code reacquisition time, the geometry, the initial tilt and the code loop's inte
 the tracked code (P(Y)) and the J/S levels the Sec. 3.1 improvement compares are conventions.
 The CEP of Figs. 3.6-3.8 comes from a reduced two-channel navigator
 (:func:`navcore.gnss.antijam.simulate_impact_errors`), not the paper's 6-DOF simulation; the
-claims use its exact error covariance (:func:`impact_rms_m`), the figures a seeded Monte Carlo
-with the paper's 25 runs.
+claims use its exact error covariance (:func:`navcore.gnss.antijam.impact_rms_m`), the figures a
+seeded Monte Carlo with the paper's 25 runs.
 """
 
 from __future__ import annotations
@@ -33,14 +33,14 @@ from navcore.claims import (
     prose,
     with_quotes,
 )
-from navcore.estimation.covariance import biased_filter_error_covariance
 from navcore.gnss.antijam import (
     NavigatorErrorModel,
-    _channel_matrices,
     cep_from_horizontal_errors,
+    cep_relative_sd,
     code_tracking_sigma_chips,
     effective_cn0_dbhz,
     free_space_js_db,
+    impact_rms_m,
     js_for_effective_cn0,
     simulate_impact_errors,
     spectral_separation_q,
@@ -399,41 +399,13 @@ def fix_sigma_m(power_w: float | np.ndarray, arch: str, kind: str) -> np.ndarray
         )
     )
     sigma = IN.hdop / math.sqrt(2.0) * (C / rc) * chips
-    return np.where(_locked(cn0 >= threshold_dbhz(arch), IN.reacquisition_s), sigma, np.nan)
-
-
-def _locked(above: np.ndarray, reacquisition_s: float) -> np.ndarray:
-    """Code lock along the 1-s samples of the flight (last axis): lost when the effective C/N0 falls
-    below the threshold, regained only after ``reacquisition_s`` seconds back above it."""
+    # code lock along the 1-s samples of the flight (last axis): lost when the effective C/N0 falls
+    # below the threshold, regained only after the reacquisition time back above it
+    above = cn0 >= threshold_dbhz(arch)
     t = np.arange(above.shape[-1], dtype=float)
     last_lost = np.maximum.accumulate(np.where(above, -np.inf, t), axis=-1)
-    return above & (t - last_lost > reacquisition_s)
-
-
-def impact_rms_m(model: NavigatorErrorModel, fix_sigma: np.ndarray) -> np.ndarray:
-    """Exact per-axis rms impact error of the reduced navigator for each row of ``fix_sigma``.
-
-    The same linear model as :func:`navcore.gnss.antijam.simulate_impact_errors`, evaluated without
-    sampling: the filter's gains follow its own covariance recursion, and the true error
-    ``e = x - x_hat`` together with the unestimated range bias ``b`` obeys
-    ``e+ = (I - K H)(Phi e + w) - K (b + v)``, whose 7x7 covariance is propagated exactly. The
-    error is Gaussian, so the CEP is 1.1774 times the per-axis rms. Rows (one per jammer power)
-    are propagated together.
-    """
-    Phi, Q = _channel_matrices(model, 1.0)
-    P0 = np.diag(
-        [
-            model.init_pos**2,
-            model.init_vel**2,
-            model.init_tilt**2,
-            model.accel_bias**2,
-            model.gyro_bias**2,
-            model.nonorthogonality**2,
-        ]
-    )
-    h = np.eye(6)[0]  # the fix measures the position error
-    Cov = biased_filter_error_covariance(Phi, Q, P0, h, fix_sigma, model.hdop_axis * model.range_bias)
-    return np.sqrt(Cov[:, 0, 0])
+    locked = above & (t - last_lost > IN.reacquisition_s)
+    return np.where(locked, sigma, np.nan)
 
 
 _CEP_PER_RMS = math.sqrt(2.0 * math.log(2.0))
@@ -458,12 +430,6 @@ def model_cep(arch: str, power_w: float, kind: str = "wideband") -> float:
     return float(model_ceps(arch, kind, (p,))[0])
 
 
-def _seed(power_w: float, arch: str, kind: str) -> int:
-    return (
-        SEED + 10 * POWERS_W.index(power_w) + (1 if arch == "DI" else 0) + (5 if kind == "narrowband" else 0)
-    )
-
-
 @input_cache
 def cep_curve(arch: str, kind: str) -> tuple[np.ndarray, tuple[int, ...]]:
     """Seeded Monte Carlo CEP at impact (m), the paper's run count per power of :data:`POWERS_W`; seeds."""
@@ -471,16 +437,11 @@ def cep_curve(arch: str, kind: str) -> tuple[np.ndarray, tuple[int, ...]]:
     model = navigator_model()
     ceps, seeds = [], []
     for p in POWERS_W:
-        seed = _seed(p, arch, kind)
+        seed = SEED + 10 * POWERS_W.index(p) + (1 if arch == "DI" else 0) + (5 if kind == "narrowband" else 0)
         res = simulate_impact_errors(model, fix_sigma_m(p, arch, kind), runs=runs, seed=seed)
         ceps.append(cep_from_horizontal_errors(res.impact_errors_m))
         seeds.append(seed)
     return np.array(ceps), tuple(seeds)
-
-
-def cep_relative_sd(runs: int) -> float:
-    """Relative standard error of a CEP taken as 1.1774 x rms of ``runs`` 2-D samples: 1/sqrt(4 runs)."""
-    return 1.0 / math.sqrt(4.0 * runs)
 
 
 def aj_improvement_db(kind: str, cep_m: np.ndarray | float) -> np.ndarray:
@@ -556,19 +517,6 @@ ERRATA: list[Erratum] = []
 _js54 = printed("54")
 
 
-def _cep_tolerance(text: str) -> Tolerance:
-    """Two standard errors of a 25-run CEP (1.1774 x rms of 50 axis samples: 10 % each)."""
-    runs = int(RUNS_TEXT)
-    rel = 2.0 * cep_relative_sd(runs)
-    return monte_carlo(
-        rel=rel,
-        runs=runs,
-        why=f"two standard errors ({100 * rel:.0f} %) of a CEP estimated from 25 runs (50 horizontal-axis "
-        f"samples) around the printed {text} m; the book's value is the model's exact CEP "
-        "(no sampling error)",
-    )
-
-
 def _aj_tolerance() -> Tolerance:
     """The reading of an A/J improvement off Fig. 3.8: one standard error of the horizontal distance
     between two 25-run CEP curves (coarser than the figure's dB axis can be read).
@@ -600,6 +548,19 @@ def _cep_claim(arch: str, power: float) -> Claim:
     cid = f"SP-sec3.3-cep-{arch.lower()}-{int(power)}W"
     name = "deeply integrated" if arch == "DI" else "tightly coupled"
     quantity = f"CEP at impact, {name}, {power:g}-W wideband jammer (paper: 25-run Monte Carlo)"
+
+    def tolerance() -> Tolerance:
+        """Two standard errors of a 25-run CEP (1.1774 x rms of 50 axis samples: 10 % each)."""
+        runs = int(RUNS_TEXT)
+        rel = 2.0 * cep_relative_sd(runs)
+        return monte_carlo(
+            rel=rel,
+            runs=runs,
+            why=f"two standard errors ({100 * rel:.0f} %) of a CEP estimated from 25 runs "
+            f"(50 horizontal-axis samples) around the printed {text} m; the book's value is the model's "
+            "exact CEP (no sampling error)",
+        )
+
     common: dict[str, Any] = dict(
         id=cid,
         locator="Sec. 3.3, Fig. 3.6",
@@ -607,7 +568,7 @@ def _cep_claim(arch: str, power: float) -> Claim:
         published=value,
         unit="m",
         compute=lambda: model_cep(arch, power),
-        tolerance=lambda: _cep_tolerance(text),
+        tolerance=tolerance,
         discussed_in=PAGE,
     )
     if arch == "DI":

@@ -64,15 +64,11 @@ _NORM = {
 }
 
 
-def _printed_rows_match_layout(rows: tuple[tuple[str, int], ...], layout_rows: list[tuple[str, int]]) -> bool:
-    """The layout has the printed rows, in order, with the printed sizes."""
-    printed_rows = [(_NORM.get(n.lower(), n.lower()), k) for n, k in rows]
-    return printed_rows == [(n.lower(), k) for n, k in layout_rows]
-
-
 def _layout_size(layout, rows: tuple[tuple[str, int], ...]) -> int:
-    """The layout's state count, after checking that its blocks are the printed rows."""
-    if not _printed_rows_match_layout(rows, layout.table()):
+    """The layout's state count, after checking that its blocks are the printed rows, in order,
+    with the printed sizes."""
+    printed_rows = [(_NORM.get(n.lower(), n.lower()), k) for n, k in rows]
+    if printed_rows != [(n.lower(), k) for n, k in layout.table()]:
         raise ValueError("the library layout does not have the printed rows")
     return layout.size
 

@@ -768,22 +768,6 @@ def errors_before_reacquisition() -> dict[str, float]:
 # ------------------------------------------------------------------ Table 2.7
 
 
-def _table_systems() -> dict[str, str]:
-    """Table 2.7 row label -> the book's system label."""
-    return {
-        "Tightly coupled 10 nmi/h": "TC 10 nmi/h",
-        "Loosely coupled 1.0 nmi/h": "LC 1 nmi/h",
-        "Tightly coupled 1.0 nmi/h": "TC 1 nmi/h",
-        "Tightly coupled 0.5 nmi/h": "TC 0.5 nmi/h",
-        "Tightly coupled 0.2 nmi/h": "TC 0.2 nmi/h",
-    }
-
-
-def _rank(values, keys) -> list[int]:
-    """Order of ``keys`` by decreasing ``values`` (ties by increasing key)."""
-    return [k for _, k in sorted(zip((-v for v in values), keys, strict=True))]
-
-
 @input_cache
 def table_2_7_cells() -> dict[str, dict[int, int]]:
     """The book's Table 2.7: for each printed row, each printed satellite's count (30-m cells
@@ -794,7 +778,18 @@ def table_2_7_cells() -> dict[str, dict[int, int]]:
         lab: dict(zip(v["prn"], (int(x) for x in v["range_cells"]), strict=True)) for lab, v in search.items()
     }
     sats = spa.TABLE_2_7_SATELLITES
-    rows = _table_systems()
+    rows = {  # Table 2.7 row label -> the book's system label
+        "Tightly coupled 10 nmi/h": "TC 10 nmi/h",
+        "Loosely coupled 1.0 nmi/h": "LC 1 nmi/h",
+        "Tightly coupled 1.0 nmi/h": "TC 1 nmi/h",
+        "Tightly coupled 0.5 nmi/h": "TC 0.5 nmi/h",
+        "Tightly coupled 0.2 nmi/h": "TC 0.2 nmi/h",
+    }
+
+    def rank(values, keys) -> list[int]:
+        """Order of ``keys`` by decreasing ``values`` (ties by increasing key)."""
+        return [k for _, k in sorted(zip((-v for v in values), keys, strict=True))]
+
     out: dict[str, dict[int, int]] = {}
     ref_row = "Tightly coupled 10 nmi/h"
     for label in rows.values():
@@ -806,9 +801,9 @@ def table_2_7_cells() -> dict[str, dict[int, int]]:
             )
     for row, label in rows.items():
         basis = ref_row if IN.table27_matching == "tc10-rank" else row
-        printed_rank = _rank(spa.table_2_7(basis), sats)
+        printed_rank = rank(spa.table_2_7(basis), sats)
         b = book_cells[rows[basis]]
-        book_rank = _rank(list(b.values()), list(b))
+        book_rank = rank(list(b.values()), list(b))
         match = dict(zip(printed_rank, book_rank, strict=True))
         out[row] = {sv: book_cells[label][match[sv]] for sv in sats}
     return out

@@ -27,8 +27,8 @@ from navcore.claims import input_cache
 from navcore.claims.inputs import InputSet
 from navcore.estimation.layout import StateLayout
 from navcore.gnss.architectures import tightly_coupled_layout
-from navcore.inertial.error_dynamics import ErrorSources
-from navcore.inertial.trajectories import Segment, Trajectory, fly
+from navcore.inertial.error_dynamics import ErrorSources, gravity_tuning_psd
+from navcore.inertial.trajectories import Segment, Trajectory, fly, trajectory_window
 from navcore.integration.engine import CovarianceAnalysis, concatenate_analyses
 from navcore.integration.geometry import best_geometry_channels, lock_table, satellite_geometry
 from navcore.integration.schedules import baro_schedule, combine_schedules, tightly_coupled_schedule
@@ -39,11 +39,9 @@ from navcore.papers.sp_scenario_wiring import (
     SYSTEMS,
     AprioriTransform,
     System,
-    _gravity_tuning,
     _initial_covariance,
     _run,
     _run_list,
-    _slice,
     calibration_turns,
     error_sources,
     gps_constellation,
@@ -377,7 +375,7 @@ def engine_inputs(system: System, seconds: float) -> EngineInputs:
     if system.architecture != "tight":
         raise ValueError("system must be tightly coupled")
     tr_all = sequential_outage_trajectory(end_free_s())
-    tr = _slice(tr_all, 0.0, seconds)
+    tr = trajectory_window(tr_all, 0.0, seconds)
     channels = _channels(end_free_s())
     truth = truth_layout(channels=len(channels))
     geo = satellite_geometry(tr, gps_constellation(), [int(c) for c in channels])
@@ -402,7 +400,7 @@ def engine_inputs(system: System, seconds: float) -> EngineInputs:
         src,
         _initial_covariance(truth, src, tr),
         combine_schedules(gps, baro),
-        _gravity_tuning(filt, src, float(np.mean(tr.speed))),
+        gravity_tuning_psd(filt, src, float(np.mean(tr.speed))),
     )
 
 
@@ -489,7 +487,7 @@ def _phase(systems, tr_full, channels, t0, t1, step, events, resume, measure_las
     so its measurements belong to one of them only: to the next phase unless ``measure_last``
     (the mission's final phase), so that nothing is applied twice at a boundary and a
     reacquisition at the boundary belongs to the phase that has it."""
-    tr = _slice(tr_full, t0, t1, step)
+    tr = trajectory_window(tr_full, t0, t1, step)
     code, carrier = lock_table(tr.t, len(channels), events)
     return _run(systems, tr, code, carrier, channels, resume=resume, measure_last=measure_last)
 
@@ -573,7 +571,7 @@ def initial_error_runs(scale: float) -> dict[str, CovarianceAnalysis]:
     systems = (system,) * len(names)
     parts: list[list[CovarianceAnalysis]] = []
     for t0, t1 in ((0.0, last_code_loss_s()), (last_code_loss_s(), reacquisition_s())):
-        trp = _slice(tr, t0, t1)
+        trp = trajectory_window(tr, t0, t1)
         code, carrier = lock_table(trp.t, len(channels), ev)
         parts.append(
             _run_list(

@@ -12,16 +12,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from navcore.claims import EXACT, Claim, Erratum, InputSet, Tolerance, printed, with_quotes
+from navcore.claims import EXACT, Claim, Erratum, InputSet, printed, with_quotes
 from navcore.gnss.tracking import aided_natural_frequency, natural_frequency_for_peak_error
-from navcore.inertial.residual_acceleration import (
-    residual_acceleration_covariance,
-    scale_factor_misalignment_sensitivity,
-    sphere_radius,
-)
+from navcore.inertial.residual_acceleration import scale_factor_misalignment_sensitivity
 from navcore.papers import sp_tracking as spt
 from navcore.papers.sp_quotes import QUOTES
-from navcore.units import ARCSEC, GPS_L1_WAVELENGTH_M, PPM
+from navcore.units import GPS_L1_WAVELENGTH_M, PPM
 
 PAGE = "sp/03-residual-acceleration"
 
@@ -121,13 +117,6 @@ def col4_l1_rad_s(grade: str) -> float:
     return float(aided_natural_frequency(col3_g(grade), spt.IN.step_g, unaided_omega0(GPS_L1_WAVELENGTH_M)))
 
 
-def r90_from_apriori_ppm(sf_ppm: float, mis_arcsec: float, accel=(1.0, 1.0, 1.0)) -> float:
-    """90 % sphere radius (ppm of the step) from isotropic a-priori scale-factor and misalignment errors."""
-    H = scale_factor_misalignment_sensitivity(accel, convention="printed")
-    P = np.diag([(sf_ppm * PPM) ** 2] * 3 + [(mis_arcsec * ARCSEC) ** 2] * 3)
-    return sphere_radius(residual_acceleration_covariance(H, P), 0.9) / PPM
-
-
 def printed_h() -> np.ndarray:
     """The printed 3x6 sensitivity matrix (published input)."""
     return np.array(IN.printed_h, dtype=float)
@@ -154,14 +143,6 @@ def printed_h_matches_cross_product_jacobian() -> bool:
     eps = 1e-6
     J = np.column_stack([(da(eps * e) - da(-eps * e)) / (2 * eps) for e in np.eye(6)])
     return bool(np.allclose(J, printed_h(), atol=1e-9))
-
-
-def _tie_tolerance(text: str) -> tuple[float, Tolerance]:
-    return printed(
-        text,
-        extra_abs=1e-12,
-        why="floating-point slack: 225 ppm × 6 g = 0.00135 g is an exact tie that rounds half up to 0.0014",
-    )
 
 
 ERRATA = [
@@ -205,7 +186,11 @@ ERRATA = [
 
 
 def _col3_claim(g: str) -> Claim:
-    value, tol = _tie_tolerance(TAB26_COL3_G[g])
+    value, tol = printed(
+        TAB26_COL3_G[g],
+        extra_abs=1e-12,
+        why="floating-point slack: 225 ppm × 6 g = 0.00135 g is an exact tie that rounds half up to 0.0014",
+    )
     return Claim(
         id=f"SP-tab2.6-col3-{g}",
         locator="Table 2.6, column 3",

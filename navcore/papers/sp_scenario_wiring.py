@@ -21,7 +21,7 @@ into them.
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, fields
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -34,6 +34,7 @@ from navcore.inertial.error_dynamics import (
     ClockModel,
     ErrorSources,
     GaussMarkov,
+    gravity_tuning_psd,
     gyrocompass_alignment,
     initial_covariance,
     ins_error_layout,
@@ -48,6 +49,7 @@ from navcore.integration.schedules import (
     doppler_schedule,
     loosely_coupled_schedule,
     tightly_coupled_schedule,
+    without_step,
 )
 from navcore.papers import sp_tables as tab
 from navcore.papers.sp_tables import (
@@ -346,13 +348,6 @@ SYSTEMS: tuple[System, ...] = (
 )
 
 
-def _final(covariance: np.ndarray | None) -> np.ndarray:
-    """A run's final covariance, which a resumed phase starts from (every run keeps one)."""
-    if covariance is None:
-        raise ValueError("the previous phase kept no final covariance to resume from")
-    return covariance
-
-
 def truth_layout(*, doppler: bool = False, channels: int | None = None, clock: bool = True) -> StateLayout:
     """Truth states: the 24 tightly coupled states plus everything Table 2.4/2.5 lists that
     the filters do not carry (instrument misalignments, gravity anomaly, clock
@@ -409,16 +404,6 @@ def error_sources(spec: ImuSpec, doppler: bool = True, clock: bool = True) -> Er
     )
 
 
-def _gravity_tuning(filt: StateLayout, sources: ErrorSources, speed: float) -> np.ndarray:
-    """Filter tuning for the unmodelled gravity anomaly: white acceleration noise with the
-    low-frequency PSD ``2 sigma^2 tau`` of the Gauss-Markov process (``tau = d / v``)."""
-    q = np.zeros(filt.size)
-    gm = sources.gravity
-    if gm is not None and speed > 0:
-        q[filt.slice("velocity")] = 2 * gm.sigma**2 * gm.distance_constant_m / speed
-    return q
-
-
 def _initial_covariance(truth: StateLayout, sources: ErrorSources, tr: Trajectory) -> np.ndarray:
     t = tab.table_2_4()
     ph = t["initial position (horizontal)"].si
@@ -429,14 +414,6 @@ def _initial_covariance(truth: StateLayout, sources: ErrorSources, tr: Trajector
         velocity_sigma=(t["initial velocity"].si,) * 3,
     )
     return gyrocompass_alignment(P0, truth, lat=float(tr.lat[0]), C_bn=tr.C_bn[0])
-
-
-def _slice(tr: Trajectory, t0: float, t1: float, step: int = 1) -> Trajectory:
-    """Samples of ``tr`` from ``t0`` to ``t1`` (inclusive), every ``step``-th."""
-    i0 = int(np.argmin(np.abs(tr.t - t0)))
-    i1 = int(np.argmin(np.abs(tr.t - t1)))
-    sl = slice(i0, i1 + 1, step)
-    return Trajectory(*(getattr(tr, f.name)[sl] for f in fields(tr)))
 
 
 #: A change of a member's a-priori covariance (truth layout) before a run: ``f(P0, layout)``.
@@ -564,9 +541,15 @@ def _run_list(
                     j = truth.index("position", i)
                     P0[:, j, :] = 0.0
                     P0[:, :, j] = 0.0
-        else:
-            P0 = np.stack([_final(resume[i].final_true) for i in members])
-            Pf0 = np.stack([_final(resume[i].final_filter) for i in members])
+        else:  # a resumed phase starts from the final covariances of the phase before
+            trues, filters = [], []
+            for i in members:
+                true, filt0 = resume[i].final_true, resume[i].final_filter
+                if true is None or filt0 is None:
+                    raise ValueError("the previous phase kept no final covariance to resume from")
+                trues.append(true)
+                filters.append(filt0)
+            P0, Pf0 = np.stack(trues), np.stack(filters)
         steps = np.zeros(len(tr), dtype=bool)
         steps[::every] = True  # barometer
         if arch == "loose":
@@ -578,7 +561,7 @@ def _run_list(
         schedule = combine_schedules(gps, baro, dop)
         if not measure_last:  # the last sample's measurements belong to the phase resumed from it
             steps[-1] = False
-            schedule = _without_step(schedule, len(tr) - 1)
+            schedule = without_step(schedule, len(tr) - 1)
         res = run_covariance_analysis(
             tr,
             truth,
@@ -590,20 +573,11 @@ def _run_list(
             P0_filter=Pf0,
             P0_apriori=apriori,
             measurement_steps=steps,
-            filter_added_psd=_gravity_tuning(filt, sources[0], float(np.mean(tr.speed))),
+            filter_added_psd=gravity_tuning_psd(filt, sources[0], float(np.mean(tr.speed))),
         )
         assert isinstance(res, list)  # a stack of initial covariances gives one run each
         out.update(zip(members, res, strict=True))
     return [out[i] for i in range(len(systems))]
-
-
-def _without_step(schedule: Callable, last: int) -> Callable:
-    """``schedule`` with no measurement at step ``last``."""
-
-    def sched(k: int) -> list:
-        return [] if k == last else schedule(k)
-
-    return sched
 
 
 def calibration_turn_s() -> float:
