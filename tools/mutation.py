@@ -161,6 +161,7 @@ PACKAGES: dict[str, Package] = {
             "test_constellation_geometry.py",
             "test_carrier_phase_geometry.py",
             "test_dop.py",
+            "test_gnss_mutants.py",
         ],
     ),
     "integration": Package(
