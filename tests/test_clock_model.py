@@ -189,7 +189,10 @@ def test_clock_state_tau_map_is_the_unrolled_recursion():
     np.testing.assert_allclose(coef @ coef.T, np.minimum(m, k) + m * k, rtol=1e-12)
 
 
-@pytest.mark.parametrize(("bad", "error"), [(-1, ValueError), (2.5, TypeError), (True, TypeError)])
+@pytest.mark.parametrize(
+    ("bad", "error"),
+    [(-1, ValueError), (2.5, TypeError), (True, TypeError), (3001, ValueError), (10**9, ValueError)],
+)
 def test_clock_state_tau_map_rejects_bad_n_max(bad, error):
     """Oracle: the documented boundary (a non-negative integer), named as the caller spelled it."""
     with pytest.raises(error, match="n_max"):

@@ -692,3 +692,7 @@ def test_carrier_phase_density_rejects_bad_arguments():
         carrier_phase_density((1.0, 2.0), (1.0,))
     with pytest.raises(ValueError, match="envelope_weights"):
         carrier_phase_density((1.0,), (np.nan,))
+    with pytest.raises(ValueError, match="envelope_weights must be > 0"):  # no atom of zero probability
+        carrier_phase_density((1.0, 2.0), (1.0, 0.0))
+    with pytest.raises(ValueError, match="envelope_values"):  # a matrix is not a list of atoms
+        carrier_phase_density(np.eye(3), np.eye(3))

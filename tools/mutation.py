@@ -222,6 +222,8 @@ PACKAGES: dict[str, Package] = {
             "test_ledger_readings.py",
             "test_ledger_mechanisms.py",
             "test_ledger_printed.py",
+            "test_ledger_compared_number.py",
+            "test_claims_with_quotes.py",
             "test_render_claims.py",
             "test_errata_kinds.py",
             "test_ledger_mutation_verdict.py",

@@ -281,9 +281,9 @@ def carrier_phase_density(
     Parameters
     ----------
     envelope_values : array_like
-        Atom positions :math:`x_m` of the envelope :math:`X` (finite).
+        Atom positions :math:`x_m` of the envelope :math:`X` (1-D, finite).
     envelope_weights : array_like
-        Their probabilities :math:`w_m` (``>= 0``; same length as ``envelope_values``).
+        Their probabilities :math:`w_m` (``> 0``; 1-D, the length of ``envelope_values``).
     n_phases : int, default 12
         Number of equally spaced carrier phases (``>= 1``).
     name : str, default "cos(phase) x envelope"
@@ -298,8 +298,8 @@ def carrier_phase_density(
     ------
     ValueError
         If ``n_phases`` is not a positive integer, or ``envelope_values`` and
-        ``envelope_weights`` are empty, of different lengths, or not finite (the weights
-        negative).
+        ``envelope_weights`` are not 1-D, empty, of different lengths or not finite, or a
+        weight is not positive.
 
     References
     ----------
@@ -313,13 +313,15 @@ def carrier_phase_density(
     (8, 0.5)
     """
     require_integer("n_phases", n_phases, minimum=1)
-    x = as_finite_array("envelope_values", envelope_values).ravel()
-    w = as_finite_array("envelope_weights", envelope_weights).ravel()
+    x = as_finite_array("envelope_values", envelope_values, ndim=1)
+    w = as_finite_array("envelope_weights", envelope_weights, ndim=1)
     if x.size == 0 or x.shape != w.shape:
         raise ValueError(
             "envelope_values and envelope_weights must be non-empty and of equal length, "
             f"got {x.size} and {w.size}"
         )
+    if np.any(w <= 0.0):
+        raise ValueError(f"envelope_weights must be > 0 (an atom of zero probability is none), got {w}")
     phases = 2.0 * np.pi * np.arange(n_phases) / n_phases
     vals = [np.cos(ph) * xm for ph in phases for xm in x]
     probs = [wm / phases.size for _ in phases for wm in w]

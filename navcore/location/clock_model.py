@@ -49,6 +49,7 @@ from navcore._validate import (
 from navcore.trace import implements
 
 __all__ = [
+    "MAX_TAU_MAP_EPOCHS",
     "clock_covariance",
     "clock_increment_covariance",
     "clock_prediction_variance",
@@ -251,6 +252,12 @@ def clock_increment_covariance(n_epochs: int, sigma0: float) -> np.ndarray:
     return sigma0**2 * (np.ones((n_epochs, n_epochs)) + np.eye(n_epochs))
 
 
+#: Largest ``n_max`` of :func:`clock_state_tau_map`: its map holds ``(n_max + 1)^2`` floats
+#: (80 MB at this bound) and its loop costs ``n_max^2`` operations; Sec. 4.5 tracks a few
+#: hundred epochs.
+MAX_TAU_MAP_EPOCHS = 3_000
+
+
 @implements("ATC10 4.5.9")
 def clock_state_tau_map(n_max: int) -> np.ndarray:
     r"""Clock offsets :math:`\tau_n` of the state model Eq. 4.5.9 as a linear map of the draws.
@@ -287,7 +294,7 @@ def clock_state_tau_map(n_max: int) -> np.ndarray:
     TypeError
         If ``n_max`` is not an integer.
     ValueError
-        If ``n_max`` is negative.
+        If ``n_max`` is negative or above :data:`MAX_TAU_MAP_EPOCHS`.
 
     References
     ----------
@@ -300,6 +307,11 @@ def clock_state_tau_map(n_max: int) -> np.ndarray:
     [[0.0, 0.0, 0.0, 0.0], [1.0, 1.0, 0.0, 0.0], [2.0, 1.0, 1.0, 0.0], [3.0, 1.0, 1.0, 1.0]]
     """
     n_max = require_integer("n_max", n_max, minimum=0)
+    if n_max > MAX_TAU_MAP_EPOCHS:
+        raise ValueError(
+            f"n_max must be at most {MAX_TAU_MAP_EPOCHS} (the map holds (n_max + 1)^2 coefficients), "
+            f"got {n_max}"
+        )
     T = np.array([[2.0, 1.0], [-1.0, 0.0]])
     B = np.array([1.0, -1.0])
     coef = np.zeros((n_max + 1, n_max + 1))
