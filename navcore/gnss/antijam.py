@@ -541,6 +541,13 @@ class RunResult:
     seed: int
 
 
+def _initial_covariance(m: NavigatorErrorModel) -> Array:
+    """The reduced navigator's a-priori covariance: its six initial sigmas, squared, on the diagonal."""
+    return np.diag(
+        [m.init_pos**2, m.init_vel**2, m.init_tilt**2, m.accel_bias**2, m.gyro_bias**2, m.nonorthogonality**2]
+    )
+
+
 def _channel_matrices(m: NavigatorErrorModel, dt: float) -> tuple[Array, Array]:
     """Discrete transition and process noise of [pos, vel, tilt, b_a, b_g, n] (first order in dt)."""
     F = np.zeros((6, 6))
@@ -617,16 +624,7 @@ def simulate_impact_errors(
     Phi, Q = _channel_matrices(model, dt)
     rng = np.random.default_rng(seed)
     n = 2 * runs
-    P0 = np.diag(
-        [
-            model.init_pos**2,
-            model.init_vel**2,
-            model.init_tilt**2,
-            model.accel_bias**2,
-            model.gyro_bias**2,
-            model.nonorthogonality**2,
-        ]
-    )
+    P0 = _initial_covariance(model)
     x = rng.standard_normal((n, 6)) * np.sqrt(np.diag(P0))  # truth errors
     xh = np.zeros((n, 6))  # filter estimates
     bias = model.hdop_axis * model.range_bias * rng.standard_normal(n)  # unestimated, per channel
@@ -701,16 +699,7 @@ def impact_rms_m(model: NavigatorErrorModel, fix_sigma_m: ArrayLike) -> Array:
     if sig.ndim not in (1, 2) or np.isinf(sig).any() or (sig < 0).any():
         raise ValueError("fix_sigma_m must be a (N,) or (B, N) array of standard deviations >= 0 or NaN")
     Phi, Q = _channel_matrices(model, 1.0)
-    P0 = np.diag(
-        [
-            model.init_pos**2,
-            model.init_vel**2,
-            model.init_tilt**2,
-            model.accel_bias**2,
-            model.gyro_bias**2,
-            model.nonorthogonality**2,
-        ]
-    )
+    P0 = _initial_covariance(model)
     h = np.eye(6)[0]  # the fix measures the position error
     Cov = biased_filter_error_covariance(Phi, Q, P0, h, sig, model.hdop_axis * model.range_bias)
     return np.sqrt(Cov[:, 0, 0])
