@@ -125,7 +125,7 @@ def with_quotes(claims: Iterable[Claim], quotes: Mapping[str, str]) -> list[Clai
     Returns
     -------
     list of Claim
-        The claims in the same order; those filled are copies (:func:`dataclasses.replace`).
+        The claims in the same order; those filled are copies (``dataclasses.replace``).
 
     Raises
     ------

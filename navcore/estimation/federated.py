@@ -1196,7 +1196,7 @@ def federated_bound_monte_carlo_sweep(cases: int, samples: int, seed: int) -> tu
     samples : int
         Draws per case, ``>= 2``.
     seed : int
-        Seed of :func:`numpy.random.default_rng`.
+        Seed of ``numpy.random.default_rng``.
 
     Returns
     -------
