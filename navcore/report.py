@@ -389,7 +389,8 @@ def unresolved_frame(evals: Sequence[Evaluation]) -> Any:
                 "Claim": e.claim.id,
                 "Verdict": e.status,
                 "Where": e.claim.locator,
-                "Printed": quote_text(_printed_text(e)),
+                # the report's tables print Markdown as text: the quote as the paper printed it
+                "Printed": quote_text(_printed_text(e, mark=False)),
                 "Computed": computed,
                 "Why": why,
             }

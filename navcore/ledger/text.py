@@ -757,13 +757,14 @@ def mark_compared_number(quote: str, digits: str) -> str:
     return quote[:a] + "**" + quote[a:b] + "**" + quote[b:]
 
 
-def _printed_text(e: Evaluation) -> str:
-    """What the paper printed: its words as the claim quotes them; else the number as printed
-    with its relation and unit, or "stated" for a statement the book checks."""
+def _printed_text(e: Evaluation, *, mark: bool = True) -> str:
+    """What the paper printed: its words as the claim quotes them (with the number the claim
+    compares in bold, :func:`mark_compared_number`, unless ``mark`` is false); else the number
+    as printed with its relation and unit, or "stated" for a statement the book checks."""
     c = e.claim
     quote, source = claim_quote(c, e.tolerance)
     if source == "claim":
-        return mark_compared_number(quote, getattr(e.tolerance, "quote", ""))
+        return mark_compared_number(quote, getattr(e.tolerance, "quote", "")) if mark else quote
     if _is_truth(c.published):
         return _statement_word(c.published, printed=True)
     rel = "" if c.relation == "=" else c.relation.replace(">=", "≥").replace("<=", "≤") + " "
