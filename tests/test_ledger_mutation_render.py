@@ -817,6 +817,12 @@ def test_tex_breakable_and_widths():
     assert tex_breakable("abcdefghijklmnop") == r"abcdefg\allowbreak{}hijklmn\allowbreak{}op"  # 16 letters
     assert tex_breakable("abcdefghijklmn") == "abcdefghijklmn"  # 14 letters: whole
     assert tex_breakable("a1b2c3d4e5") == "a1b2c3d4e5"  # 10 characters: whole
+    # no line ends at a decimal point or after a minus sign (a number would break in two)
+    assert tex_breakable("0.0019 g") == "0.0019 g"
+    assert tex_breakable("(-3.5 dB)") == "(-3.5 dB)"
+    assert tex_breakable("x.5") == r"x.\allowbreak{}5"  # a "." after a letter still may
+    assert tex_breakable("5.x") == r"5.\allowbreak{}x"
+    assert tex_breakable("L-2") == r"L-\allowbreak{}2"  # a hyphen after a letter still may
     assert _word_pt("ab") == 8.0 and _word_pt("AB") == 10.0 and _word_pt("a%&@") == 19.0
     assert _word_pt("MW") == 10.0 and _word_pt("ab", bold=True) == pytest.approx(8.8)
     assert _text_pieces("x $K_1$ y") == [(False, "x "), (True, "K_1"), (False, " y")]

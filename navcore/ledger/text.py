@@ -192,6 +192,8 @@ def tex_breakable(text: str) -> str:
     False
     >>> tex_breakable("KZLsec36headingX").count("allowbreak")
     2
+    >>> tex_breakable("0.0019 g, -3.5 dB")  # no break at a decimal point or after a minus sign
+    '0.0019 g, -3.5 dB'
     """
     pieces = re.split(r"([-./_ ])", text)
     out = []
@@ -200,8 +202,11 @@ def tex_breakable(text: str) -> str:
             piece = "\x00".join(piece[i : i + 7] for i in range(0, len(piece), 7))
         out.append(piece)
     escaped = tex_escape("".join(out)).replace("\x00", r"\allowbreak{}")
-    for ch in ("-", ".", "/"):
-        escaped = escaped.replace(ch, ch + r"\allowbreak{}")
+    # a "." between two digits is a decimal point and a "-" before a digit that follows no
+    # letter or digit is a minus sign: neither may end a line ("0." / "0019", "-" / "3.5")
+    escaped = re.sub(r"\.(?!\d)|(?<!\d)\.", r".\\allowbreak{}", escaped)
+    escaped = re.sub(r"-(?!\d)|(?<=[A-Za-z0-9])-", r"-\\allowbreak{}", escaped)
+    escaped = escaped.replace("/", r"/\allowbreak{}")
     return escaped.replace(r"\_", r"\_\allowbreak{}")
 
 
