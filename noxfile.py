@@ -463,8 +463,10 @@ def mutation(session: nox.Session) -> None:
     copy under ``_build/mutation/`` with only the test files that exercise it
     (tools/mutation.py); ``nox -s mutation -- gnss frames`` runs some,
     ``-- --budget-min 20`` bounds each package's wall-clock time (default 30 min on 2 cores),
-    ``-- --report-only`` tabulates the last runs. A developer's session: ``.ci/run`` does not
-    run it. Equivalent mutants are documented in ``tests/mutation_equivalents.md``.
+    ``-- --report-only`` tabulates the last runs, ``-- papers --sample 300 --seed 0`` runs a seeded
+    random sample of a package's mutants and reports its score with a 95 % interval. A developer's
+    session: ``.ci/run`` does not run it. Equivalent mutants are documented in
+    ``tests/mutation_equivalents.md``.
     """
     _install(session)
     session.run("python", "tools/mutation.py", *session.posargs)

@@ -606,3 +606,118 @@ def test_mutation_every_unit_test_file_is_in_a_run():
             missing.append(f"{path.name} ({packages.pop()})")
     assert not missing, "unit test files in no mutation run: " + ", ".join(missing)
     assert set(NOT_IN_A_RUN) <= {p.name for p in (ROOT / "tests").glob("test_*.py")} - listed
+
+
+# --- sampled runs ------------------------------------------------------------------------------
+
+
+def test_mutation_mutant_names_reads_every_meta_file_sorted(tmp_path):
+    """Oracle: two modules' ``.meta`` files (one unchecked, as generation leaves them) and a file
+    that is not one: every name, sorted by hand."""
+    _meta(tmp_path, "navcore/b.py.meta", {"navcore.b.x_g__mutmut_2": None, "navcore.b.x_g__mutmut_1": None})
+    _meta(tmp_path, "navcore/a.py.meta", {"navcore.a.x_f__mutmut_1": 0})
+    _write(tmp_path / "mutants" / "navcore" / "c.py", "x = 1\n")
+    assert mutation.mutant_names(tmp_path) == [
+        "navcore.a.x_f__mutmut_1",
+        "navcore.b.x_g__mutmut_1",
+        "navcore.b.x_g__mutmut_2",
+    ]
+    assert mutation.mutant_names(tmp_path / "none") == []
+
+
+def test_mutation_sample_mutants_is_a_seeded_sorted_subset():
+    """Oracle: the sample's defining properties: its size, a subset, sorted, the same for the
+    same seed whatever the names' order, another for another seed; all names when the sample
+    is as large; a size that is not a positive integer refused, naming the parameter."""
+    names = [f"m{i:03d}" for i in range(200)]
+    one = mutation.sample_mutants(names, 20, 7)
+    assert len(one) == len(set(one)) == 20 and set(one) <= set(names) and one == sorted(one)
+    assert mutation.sample_mutants(names[::-1], 20, 7) == one
+    assert mutation.sample_mutants(names, 20, 8) != one
+    assert mutation.sample_mutants(names[:5], 5, 0) == names[:5]
+    assert mutation.sample_mutants(names[4::-1], 9, 0) == names[:5]
+    for bad in (0, -1, True, 2.5):
+        with pytest.raises(ValueError, match="size must be a positive integer"):
+            mutation.sample_mutants(names, bad, 0)
+
+
+@pytest.mark.parametrize(("killed", "judged"), [(142, 181), (75, 100), (12, 12), (0, 9), (1, 1)])
+def test_mutation_wilson_interval_is_scipys(killed, judged):
+    """Oracle: scipy's ``binomtest(...).proportion_ci(method="wilson")`` at 95 %."""
+    from scipy.stats import binomtest
+
+    ci = binomtest(killed, judged).proportion_ci(confidence_level=0.95, method="wilson")
+    assert mutation.wilson_interval(killed, judged) == pytest.approx((ci.low, ci.high), abs=1e-12)
+
+
+def test_mutation_wilson_interval_refuses_impossible_counts():
+    """Oracle: counts no run can give (nothing judged, more killed than judged, negative)."""
+    for killed, judged in ((0, 0), (3, 2), (-1, 4)):
+        with pytest.raises(ValueError, match="killed <= judged"):
+            mutation.wilson_interval(killed, judged)
+
+
+def test_mutation_run_package_runs_a_seeded_sample_of_the_generated_mutants(tmp_path, monkeypatch):
+    """Oracle: the generation (a stand-in writing ten unchecked names, as mutmut's generation
+    does) runs before mutmut, in the scratch project, with the run's environment; mutmut is given
+    the sample drawn by :func:`sample_mutants` from those ten; the counts say the sample's size,
+    seed and population. Named mutants and a sample together are refused."""
+    proc = _Mutmut()
+    projects = _run_setup(tmp_path, monkeypatch, proc)
+    work = tmp_path / "work"
+    generated = []
+
+    def generate(cmd, **kwargs):
+        generated.append((cmd, kwargs["cwd"], kwargs["env"]["NAVCORE_NO_DISK_CACHE"], kwargs["check"]))
+        _meta(work, "navcore/a.py.meta", {f"navcore.a.x_f__mutmut_{i}": None for i in range(10)})
+
+    monkeypatch.setattr(mutation.subprocess, "run", generate)
+    counts = mutation.run_package("gnss", 1.0, 1, sample=4, seed=11)
+    assert generated == [([sys.executable, "-c", mutation._GENERATE], work, "1", True)]
+    names = [f"navcore.a.x_f__mutmut_{i}" for i in range(10)]
+    assert proc.calls[0][0][4:] == ["--max-children", "1", *mutation.sample_mutants(names, 4, 11)]
+    assert projects == [("gnss", False)]  # a sample starts afresh
+    assert (counts["sample"], counts["seed"], counts["population"]) == (4, 11, 10)
+    with pytest.raises(ValueError, match="mutants or sample, not both"):
+        mutation.run_package("gnss", 1.0, 1, mutants=["x*"], sample=3)
+
+
+def test_mutation_table_reports_a_sample_with_its_interval():
+    """Oracle: a sample of 20 of 100 mutants, 15 killed and 4 survived (one unchecked, cut): the
+    score of the 19 judged and scipy's Wilson interval, and how many of the sample were not
+    checked; without the unchecked one, no such clause."""
+    from scipy.stats import binomtest
+
+    row = {**_row("papers", 15, 4, not_checked=81), "sample": 20, "seed": 5, "population": 100}
+    ci = binomtest(15, 19).proportion_ci(method="wilson")
+    text = mutation.table([row])
+    assert (
+        f"| papers | 100 | 15 | 4 | 81 | 78.9 % | 1.3 | sample of 20 (seed 5), 95 % interval "
+        f"{100 * ci.low:.1f}-{100 * ci.high:.1f} %, 1 of the sample not checked |"
+    ) in text
+    row = {**_row("papers", 16, 4, not_checked=80), "sample": 20, "seed": 5, "population": 100}
+    assert mutation.table([row]).count("of the sample not checked") == 0
+
+
+def test_mutation_main_passes_a_sample_and_refuses_bad_ones(monkeypatch, capsys):
+    """Oracle: ``--sample 30 --seed 4`` reaches each run as keywords; a non-positive sample, or a
+    sample with named mutants, kept verdicts or a report: usage errors (status 2), nothing run."""
+    runs = []
+    monkeypatch.setattr(
+        mutation, "run_package", lambda *a, **k: runs.append((a, k)) or _row(a[0], 1, 0, minutes=0.5)
+    )
+    monkeypatch.setattr(mutation, "WORK", Path("/nonexistent"))
+    out = Path(os.devnull)
+    assert mutation.main(["papers", "--sample", "30", "--seed", "4", "--out", str(out)]) == 0
+    assert runs == [(("papers", 30.0, 2, False, None), {"sample": 30, "seed": 4})]
+    for argv, message in (
+        (["papers", "--sample", "0"], "--sample must be a positive number of mutants, got 0"),
+        (["papers", "--sample", "3", "--keep"], "--sample runs afresh"),
+        (["papers", "--sample", "3", "--mutants", "x*"], "--sample runs afresh"),
+        (["papers", "--sample", "3", "--report-only"], "--sample runs afresh"),
+    ):
+        with pytest.raises(SystemExit) as exc:
+            mutation.main(argv)
+        assert exc.value.code == 2
+        assert message in capsys.readouterr().err
+    assert len(runs) == 1

@@ -25,6 +25,13 @@ project, after refreshing its tests (mutmut finds the new tests and records what
 the quick check that a new test kills the survivors it was written for, e.g.
 ``nox -s mutation -- gnss --mutants 'navcore.gnss.antijam.x_code_tracking*'``.
 
+``--sample N`` (with ``--seed S``, default 0) runs a seeded random sample of N of a package's
+mutants instead of all of them: the estimate for a package whose complete run takes hours (the
+paper modules: each mutant's claim tests evaluate their claims afresh, 1-20 s). The mutants are
+generated first (mutmut's own generation, no test run), their names sorted and sampled with
+``random.Random(S)``, and only the sample is run; the row reports the sample's score with its
+95 % Wilson interval, and the mutants outside the sample as not checked.
+
 ``mutmut run`` gets ``--budget-min`` minutes of wall-clock time per package (default 30; the
 machine has 2 cores); a run cut short reports what it checked, and the unchecked mutants
 are counted as such, never as killed. The score is ``killed / (killed + survived + no
@@ -45,7 +52,9 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import os
+import random
 import shutil
 import subprocess
 import sys
@@ -368,10 +377,71 @@ def scratch_project(package: str, keep: bool = False) -> Path:
     return work
 
 
+#: mutmut's mutant generation alone (mutmut 3.8's ``run`` takes these steps, in this order,
+#: before it runs any test): it writes every mutant's name, unchecked, in the ``.meta`` files.
+_GENERATE = (
+    "import os\n"
+    "import mutmut.__main__ as m\n"
+    "m.set_mutant_under_test('mutant_generation')\n"
+    "os.makedirs('mutants', exist_ok=True)\n"
+    "m.copy_src_dir()\n"
+    "m.copy_also_copy_files()\n"
+    "m.setup_source_paths()\n"
+    "m.store_lines_covered_by_tests()\n"
+    "m.create_mutants(1)\n"
+)
+
+
+def mutant_names(work: Path) -> list[str]:
+    """Every mutant's name in a scratch project's ``.meta`` files, sorted."""
+    names: list[str] = []
+    for meta in (work / "mutants").rglob("*.py.meta"):
+        names += json.loads(meta.read_text()).get("exit_code_by_key", {})
+    return sorted(names)
+
+
+def sample_mutants(names: list[str], size: int, seed: int) -> list[str]:
+    """A seeded random sample of ``size`` of ``names`` (all of them if there are no more), sorted.
+
+    The draw is ``random.Random(seed).sample`` of the sorted names, so the same names, size and
+    seed give the same sample on any machine.
+    """
+    if isinstance(size, bool) or not isinstance(size, int) or size < 1:
+        raise ValueError(f"size must be a positive integer, got {size!r}")
+    population = sorted(names)
+    if size >= len(population):
+        return population
+    return sorted(random.Random(seed).sample(population, size))
+
+
+def wilson_interval(killed: int, judged: int, z: float = 1.959963984540054) -> tuple[float, float]:
+    """The Wilson score interval (95 % by default) of a proportion ``killed / judged``.
+
+    Used for a sampled run's score: the package's score lies in it with 95 % confidence (the
+    sample is drawn without replacement from a finite population, so the interval is slightly
+    conservative).
+    """
+    if judged < 1 or not 0 <= killed <= judged:
+        raise ValueError(f"need 0 <= killed <= judged and judged >= 1, got killed={killed}, judged={judged}")
+    p = killed / judged
+    centre = (p + z * z / (2 * judged)) / (1 + z * z / judged)
+    half = z / (1 + z * z / judged) * math.sqrt(p * (1 - p) / judged + z * z / (4 * judged * judged))
+    return max(0.0, centre - half), min(1.0, centre + half)
+
+
 def run_package(
-    package: str, budget_min: float, max_children: int, keep: bool = False, mutants: list[str] | None = None
+    package: str,
+    budget_min: float,
+    max_children: int,
+    keep: bool = False,
+    mutants: list[str] | None = None,
+    sample: int | None = None,
+    seed: int = 0,
 ) -> dict:
-    """Run mutmut on one package within the budget (only ``mutants``, if given); return its counts."""
+    """Run mutmut on one package within the budget (only ``mutants``, if given, or a seeded sample
+    of ``sample`` mutants); return its counts."""
+    if sample is not None and mutants:
+        raise ValueError("give mutants or sample, not both")
     work = scratch_project(package, keep or bool(mutants))
     # no ledger cache on disk: every mutant's file has the same contents (mutmut switches the
     # mutants at run time), so an evaluation a mutant's run stored would be read by the next
@@ -385,6 +455,14 @@ def run_package(
     }
     start = time.monotonic()
     cut = False
+    population = 0
+    if sample is not None:
+        with (work / "mutmut-generate.log").open("w") as log:
+            command = [sys.executable, "-c", _GENERATE]
+            subprocess.run(command, cwd=work, env=env, stdout=log, stderr=subprocess.STDOUT, check=True)
+        names = mutant_names(work)
+        population = len(names)
+        mutants = sample_mutants(names, sample, seed)
     with (work / "mutmut-run.log").open("w") as log:
         proc = subprocess.Popen(
             [sys.executable, "-m", "mutmut", "run", "--max-children", str(max_children), *(mutants or [])],
@@ -403,6 +481,8 @@ def run_package(
     counts = count_results(work)
     minutes = (time.monotonic() - start) / 60
     counts.update(package=package, minutes=minutes, cut=cut, returncode=proc.returncode)
+    if sample is not None:
+        counts.update(sample=len(mutants or ()), seed=seed, population=population)
     return counts
 
 
@@ -436,7 +516,15 @@ def _completeness(r: dict) -> str:
     mutants mutmut reports as neither killed nor survived (skipped, suspicious, interrupted)
     are counted after it."""
     code = r.get("returncode") or 0  # a --report-only row has none
-    if code and not r["cut"]:
+    if r.get("sample") is not None:
+        judged = r["killed"] + r["survived"]
+        unrun = r["not checked"] - (r["population"] - r["sample"])  # the rest are outside the sample
+        low, high = wilson_interval(r["killed"], judged) if judged else (math.nan, math.nan)
+        band = f"{100 * low:.1f}-{100 * high:.1f} %" if judged else "-"
+        done = f"sample of {r['sample']} (seed {r['seed']}), 95 % interval {band}"
+        if unrun > 0:
+            done += f", {unrun} of the sample not checked"
+    elif code and not r["cut"]:
         done = f"no (mutmut exited {code})"
     elif r["cut"] or r["not checked"]:
         done = "no (budget)"
@@ -491,7 +579,15 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument(
         "--mutants", nargs="+", metavar="PATTERN", help="re-run only these mutants (globs), one package"
     )
+    parser.add_argument(
+        "--sample", type=int, metavar="N", help="run a seeded random sample of N mutants of each package"
+    )
+    parser.add_argument("--seed", type=int, default=0, help="the sample's seed (default 0)")
     args = parser.parse_args(argv)
+    if args.sample is not None and args.sample < 1:
+        parser.error(f"--sample must be a positive number of mutants, got {args.sample}")
+    if args.sample is not None and (args.mutants or args.keep or args.report_only):
+        parser.error("--sample runs afresh: it takes no --mutants, --keep or --report-only")
     unknown = [p for p in args.packages if p not in PACKAGES]
     if unknown:
         parser.error(f"unknown package {unknown[0]!r}; choose from {', '.join(PACKAGES)}")
@@ -505,7 +601,8 @@ def main(argv: list[str] | None = None) -> int:
             r.update(package=package, minutes=0.0, cut=False)
         else:
             print(f"mutation testing navcore.{package} ({args.budget_min:g} min budget)", flush=True)
-            r = run_package(package, args.budget_min, args.max_children, args.keep, args.mutants)
+            extra = {} if args.sample is None else {"sample": args.sample, "seed": args.seed}
+            r = run_package(package, args.budget_min, args.max_children, args.keep, args.mutants, **extra)
         rows.append(r)
     text = table(rows)
     print(text)
