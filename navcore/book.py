@@ -53,6 +53,7 @@ __all__ = [
     "setup",
     "show_figure",
     "table",
+    "table_claims",
     "text_table",
 ]
 
@@ -203,12 +204,57 @@ def select_claims(paper: str | None, items: list[str]) -> list[str]:
     return out
 
 
+def table_claims(paper: str | None, table: str) -> list[str]:
+    """The ids of the claims of a paper that its page's table ``table`` shows.
+
+    A claim that its locator's printed item does not place on a table names its table itself
+    (:attr:`~navcore.claims.declarations.Claim.table`), so a page selects it by that name and a
+    new claim joins a table with no change to the page. Nothing is evaluated.
+
+    Parameters
+    ----------
+    paper : str or None
+        Paper key (``"KZL"``); table names are the pages' own, and a page is one paper's.
+    table : str
+        The table's name (``"heading"``).
+
+    Returns
+    -------
+    list of str
+        The ids of the claims of ``paper`` whose ``table`` is ``table``, in the ledger's order
+        (:func:`navcore.ledger.claims`: the paper modules' order of declaration).
+
+    Raises
+    ------
+    ValueError
+        If ``paper`` is ``None``, no claim of the paper names the table, or the claims that name
+        it are discussed on more than one page (a table is one page's).
+
+    Examples
+    --------
+    >>> table_claims("KZL", "no-such-table")
+    Traceback (most recent call last):
+    ...
+    ValueError: table='no-such-table' selects no claim of KZL: no claim declares table='no-such-table'
+    """
+    if paper is None:
+        raise ValueError(f"selecting claims by table (table={table!r}) needs the paper's key")
+    found = [c for c in ledger.claims(paper) if c.table == table]
+    if not found:
+        raise ValueError(f"table={table!r} selects no claim of {paper}: no claim declares table={table!r}")
+    pages = sorted({c.discussed_in for c in found})
+    if len(pages) > 1:
+        raise ValueError(f"table={table!r} of {paper} is named by claims of several pages: {pages}")
+    return [c.id for c in found]
+
+
 def claims_table(
     paper: str | None = None,
     prefix: str | None = None,
     ids: list[str] | None = None,
     *,
     items: list[str] | None = None,
+    table: str | None = None,
     notes: bool = True,
     root: str | None = None,
     link_pages: bool = False,
@@ -217,8 +263,11 @@ def claims_table(
 
     A section's table selects its claims by the printed items they check (``items``, see
     :func:`select_claims`), so that a new claim whose locator names one of them joins the
-    table with no change to the page; ``ids`` names claims one by one, where a table shows a
-    hand-picked part of an item's claims.
+    table with no change to the page. A table that shows a part of an item's claims (a
+    section's statements, one figure's bounds) has a name on its page, and its claims name it
+    (:attr:`~navcore.claims.declarations.Claim.table`, :func:`table_claims`): a new claim joins
+    it by its declaration alone. ``ids`` names claims one by one (in a notebook; the book's
+    pages do not type claim ids).
 
     ``root`` is the link prefix to the book's root (default: found from the working
     directory, see :func:`book_root_prefix`); ``link_pages`` links each claim to the page
@@ -227,17 +276,21 @@ def claims_table(
     Parameters
     ----------
     paper : str or None, optional
-        Paper key of the claims to show (with ``prefix``, or with ``items``, which need it;
-        ignored when only ``ids`` is given).
+        Paper key of the claims to show (with ``prefix``, or with ``items`` or ``table``,
+        which need it; ignored when only ``ids`` is given).
     prefix : str or None, optional
         Id prefix of the claims to show (``"WF-sec3"``).
     ids : list of str or None, optional
         The claims to show, in this order (ids or former ids); overrides ``prefix``. With
-        ``items``, shown after the items' claims.
+        ``items`` or ``table``, shown after their claims (those not shown already).
     items : list of str or None, optional
         Printed items of ``paper`` (``"Eq. (4.5.37)"``, ``"Table 4.3"``, ``"Sec. 4.6"``):
         every claim whose locator names one of them, in this order
         (:func:`select_claims`); overrides ``prefix``.
+    table : str or None, optional
+        The name of a table of the page: every claim of ``paper`` that names it
+        (:func:`table_claims`), in the ledger's order; with ``items``, shown after the items'
+        claims (those not shown already). Overrides ``prefix``.
     notes : bool, optional
         Show each claim's note, tolerance, band and inputs.
     root : str or None, optional
@@ -254,8 +307,8 @@ def claims_table(
     Raises
     ------
     ValueError
-        If no claim is selected, an id is not in the ledger, ``items`` is given without
-        ``paper`` or an item selects no claim.
+        If no claim is selected, an id is not in the ledger, ``items`` or ``table`` is given
+        without ``paper``, an item selects no claim, or ``table`` names no claim's table.
 
     Examples
     --------
@@ -274,11 +327,12 @@ def claims_table(
     >>> [g.heading for g in t.groups()], t.root
     (['Fig. 2.1'], '../')
     """
-    if items is not None or ids is not None:
-        chosen = list(ids or ())
-        if items is not None:  # the items' claims, then the typed ids not among them
-            chosen = select_claims(paper, items)
-            chosen += [i for i in ids or () if ledger.claim(i).id not in chosen]
+    if items is not None or table is not None or ids is not None:
+        # the items' claims, then the table's not among them, then the typed ids not among them
+        chosen = select_claims(paper, items) if items is not None else []
+        if table is not None:
+            chosen += [i for i in table_claims(paper, table) if i not in chosen]
+        chosen += [i for i in ids or () if ledger.claim(i).id not in chosen]
         evals = [ledger.evaluate_claim(i) for i in chosen]
     else:
         evals = ledger.evaluations(paper=paper, prefix=prefix)

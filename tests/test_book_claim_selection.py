@@ -1,9 +1,12 @@
-"""Pages select their claims tables by printed item: the selection, and every claim on one page.
+"""Pages select their claims tables by printed item or by table name: the selection, and every
+claim on one page.
 
 A claims table names the printed items its claims check (``items=["Table 4.3"]``): every claim
 whose locator names one of them is shown, so a new claim of an existing item joins its page with
-no change to the page. The page scan below reads each table's selection from the pages' source
-(literal ``items``, ``ids`` and ``prefix`` arguments) without evaluating any claim.
+no change to the page. A table that shows a part of an item's claims has a name on its page
+(``table="heading"``), which its claims declare (``Claim(table="heading")``): a new claim joins
+it by its declaration. The page scan below reads each table's selection from the pages' source
+(literal ``items``, ``table``, ``ids`` and ``prefix`` arguments) without evaluating any claim.
 """
 
 from __future__ import annotations
@@ -20,11 +23,12 @@ from navcore.ledger import Claim, printed
 ROOT = Path(__file__).resolve().parents[1]
 
 
-def _claim(cid: str, locator: str, paper: str = "SP") -> Claim:
+def _claim(cid: str, locator: str, paper: str = "SP", table: str = "", page: str = "sp/p") -> Claim:
     value, tol = printed("17.67")
     return Claim(
         id=cid, paper=paper, locator=locator, quantity="a number", published=value, unit="",
         compute=lambda: 17.67, tolerance=tol, expected_status="reproduced", note="synthetic",
+        discussed_in=page, table=table,
     )  # fmt: skip
 
 
@@ -46,8 +50,10 @@ def table_selection(call: ast.Call) -> list[str] | None:
     except ValueError:
         return None
     paper = kw.get("paper", args[0] if args else None)
-    if "items" in kw or "ids" in kw:
+    if "items" in kw or "table" in kw or "ids" in kw:
         chosen = book.select_claims(paper, kw["items"]) if "items" in kw else []
+        if "table" in kw:
+            chosen += [i for i in book.table_claims(paper, kw["table"]) if i not in chosen]
         return chosen + [ledger.claim(i).id for i in kw.get("ids", ()) if ledger.claim(i).id not in chosen]
     return [c.id for c in ledger.claims(paper, kw.get("prefix", args[1] if len(args) > 1 else None))]
 
@@ -73,9 +79,12 @@ def registry(monkeypatch):
     """A synthetic SP ledger (no paper module is read): claims in registry order."""
     claims = [
         _claim("SP-a", "Table 2.6"),
-        _claim("SP-b", "Eq. (2.1), Table 2.6"),
+        _claim("SP-b", "Eq. (2.1), Table 2.6", table="sums"),
         _claim("SP-c", "Fig. 2.1"),
         _claim("SP-d", "Sec. 2.5"),
+        _claim("SP-e", "Sec. 2.8", table="sums"),
+        _claim("SP-f", "Sec. 2.8", table="bounds", page="sp/q"),
+        _claim("SP-g", "Sec. 2.4", table="sums"),
     ]
 
     def fake(paper=None, prefix=None):
@@ -111,20 +120,53 @@ def test_typed_ids_follow_the_items_claims(registry):
     assert table_selection(call) == ["SP-c", "SP-d"]
 
 
-def test_a_new_claim_of_an_existing_item_lands_on_the_page_that_selects_the_item(registry, tmp_path):
-    (tmp_path / "sp").mkdir()
-    (tmp_path / "sp" / "p.md").write_text('book.claims_table("SP", items=["Table 2.6"])\n')
-    (tmp_path / "sp" / "q.md").write_text('book.claims_table("SP", items=["Fig. 2.1", "Sec. 2.5"])\n')
-    registry.append(_claim("SP-new", "Table 2.6, last row"))
-    shown, opaque = page_selections(tmp_path)
-    assert shown == {
-        "SP-a": ["sp/p"],
-        "SP-b": ["sp/p"],
-        "SP-new": ["sp/p"],
-        "SP-c": ["sp/q"],
-        "SP-d": ["sp/q"],
-    }
-    assert not opaque
+def test_a_table_selects_the_claims_that_name_it_in_the_ledgers_order(registry):
+    """Oracle: the synthetic claims' ``table`` fields read by hand, in the registry's order."""
+    assert book.table_claims("SP", "sums") == ["SP-b", "SP-e", "SP-g"]
+    assert book.table_claims("SP", "bounds") == ["SP-f"]
+
+
+def _selected(monkeypatch, **kw):
+    """The ids ``claims_table`` selects, in order, with the evaluation and the table replaced."""
+    monkeypatch.setattr(ledger, "evaluate_claim", lambda cid: cid)
+    monkeypatch.setattr(book, "LedgerTable", lambda evals, **_: list(evals))
+    return book.claims_table(root="", **kw)
+
+
+def test_a_table_follows_the_items_claims_once_each(registry, monkeypatch):
+    """Items' claims first, then the table's not among them (``SP-b`` checks Table 2.6 and names
+    the table: shown once, with the item); then typed ids not among them. Oracle: by hand."""
+    sums = ["SP-b", "SP-e", "SP-g"]
+    assert _selected(monkeypatch, paper="SP", table="sums") == sums
+    assert _selected(monkeypatch, paper="SP", items=["Table 2.6"], table="sums") == ["SP-a", *sums]
+    both = _selected(monkeypatch, paper="SP", items=["Fig. 2.1"], table="bounds", ids=["SP-f", "SP-d"])
+    assert both == ["SP-c", "SP-f", "SP-d"]
+    call = next(_calls('book.claims_table("SP", items=["Table 2.6"], table="sums")'))
+    assert table_selection(call) == ["SP-a", "SP-b", "SP-e", "SP-g"]
+
+
+def test_a_table_that_selects_nothing_or_no_paper_is_an_error(registry, monkeypatch):
+    with pytest.raises(ValueError, match="table='sum' selects no claim of SP"):
+        book.table_claims("SP", "sum")
+    with pytest.raises(ValueError, match="table='sum' selects no claim of SP"):
+        _selected(monkeypatch, paper="SP", items=["Table 2.6"], table="sum")
+    with pytest.raises(ValueError, match="paper"):
+        book.table_claims(None, "sums")
+
+
+def test_a_table_name_is_one_pages(registry):
+    """A table is one page's: the same name on claims of two pages is refused, not merged."""
+    registry.append(_claim("SP-h", "Sec. 2.9", table="bounds", page="sp/p"))
+    with pytest.raises(ValueError, match="several pages"):
+        book.table_claims("SP", "bounds")
+
+
+def test_a_claim_names_its_table_in_kebab_case_on_its_page():
+    with pytest.raises(ValueError, match="kebab-case"):
+        _claim("SP-x", "Sec. 2.9", table="Fig 5")
+    with pytest.raises(ValueError, match="discussed_in"):
+        _claim("SP-x", "Sec. 2.9", table="fig5-bounds", page="")
+    assert _claim("SP-x", "Sec. 2.9").table == ""
 
 
 def test_every_claim_is_shown_on_one_page_its_own():

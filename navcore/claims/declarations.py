@@ -116,6 +116,9 @@ TEXT_ONLY_CAVEAT = (
 
 _ID_RE = re.compile(r"^(WF|SP|ATC10|KZL)-[A-Za-z0-9][A-Za-z0-9._+-]*$")
 
+#: A claims table's name (:attr:`Claim.table`): kebab-case, ``"heading"``, ``"fig5-bounds"``.
+_TABLE_RE = re.compile(r"^[a-z0-9]+(-[a-z0-9]+)*$")
+
 
 @dataclass(frozen=True, kw_only=True)
 class Erratum:
@@ -322,6 +325,12 @@ class Claim:
         How closely ``compute()`` must agree with ``oracle()``.
     discussed_in : str
         Book docname where the claim is derived (for cross-links).
+    table : str
+        The name of the claims table on its page (``discussed_in``) that shows it, for a claim
+        its locator's printed item does not place; a page selects it with
+        ``claims_table(paper, table=...)`` (:func:`navcore.book.claims_table`). Kebab-case
+        (``"heading"``, ``"fig5-bounds"``); empty for a claim its printed item places. A table
+        name is the page's: the claims that give it are all discussed on one page.
     aliases : tuple of str
         Former ids that still refer to this claim.
     printed : str
@@ -337,8 +346,9 @@ class Claim:
         If the id does not start with its paper key and a dash, a value is not one of its
         table (:data:`PAPERS`, :data:`STATUSES`, :data:`RELATIONS`, :data:`KINDS`), the
         note is empty, a truth value is a ``reproduction`` or uses a bound, ``printed`` is
-        not a string, or a discrepant claim lacks its erratum, oracle or oracle tolerance.
-        (A computed claim may expect ``not-reproducible``: a band too wide to decide.)
+        not a string, a discrepant claim lacks its erratum, oracle or oracle tolerance, or
+        ``table`` is not kebab-case or is given without ``discussed_in``. (A computed claim
+        may expect ``not-reproducible``: a band too wide to decide.)
 
     Examples
     --------
@@ -372,6 +382,7 @@ class Claim:
     oracle: Callable[..., Any] | None = None
     oracle_tolerance: Tolerance | None = None
     discussed_in: str = ""
+    table: str = ""
     aliases: tuple[str, ...] = ()
     printed: str = ""
     _meta: dict[str, Any] = field(default_factory=dict, compare=False, repr=False)
@@ -416,6 +427,10 @@ class Claim:
                 raise ValueError(
                     f"a discrepant claim needs an independent oracle and oracle_tolerance (claim {self.id})"
                 )
+        if self.table and not _TABLE_RE.match(self.table):
+            raise ValueError(f"Claim.table must be a kebab-case name, got {self.table!r} (claim {self.id})")
+        if self.table and not self.discussed_in:
+            raise ValueError(f"Claim.table is a table of the claim's page: needs discussed_in ({self.id})")
         if isinstance(self.published, bool) and self.relation != "=":
             raise ValueError(f"a statement claim uses relation '=' (claim {self.id})")
 
