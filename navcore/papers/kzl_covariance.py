@@ -157,6 +157,7 @@ CLAIMS = [
         expected_status="consistent",
         note=_NOTE_INIT + " The Monte Carlo RMS of the same flight is KZL-sec3.6-heading-with-init.",
         discussed_in=PAGE3,
+        table="standalone-covariance",
     ),
     Claim(
         id="KZL-sec3.6-heading-without-init-covariance",
@@ -179,6 +180,7 @@ CLAIMS = [
         "remove that heading too (the closed form $\\sqrt{(b t)^2 + N^2 t + \\sigma_0^2}$ agrees to "
         "0.1 %). One printed number, two claims: the Monte Carlo RMS is KZL-sec3.6-heading-without-init.",
         discussed_in=PAGE3,
+        table="standalone-covariance",
     ),
     Claim(
         id="KZL-fig5-ins-position-covariance",
@@ -195,6 +197,7 @@ CLAIMS = [
         "to 0.1 %). The Monte Carlo RMS is KZL-fig5-ins-position. The tolerance is the prose 'about'; the "
         "averaging time is an assumed input whose band decides.",
         discussed_in=PAGE3,
+        table="standalone-covariance",
     ),
     Claim(
         id="KZL-fig5-ins-velocity-covariance",
@@ -212,6 +215,7 @@ CLAIMS = [
         "KZL-fig5-ins-velocity. The tolerance is the prose 'about'; the averaging time is an assumed "
         "input whose band decides.",
         discussed_in=PAGE3,
+        table="standalone-covariance",
     ),
 ]
 

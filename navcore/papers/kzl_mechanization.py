@@ -311,6 +311,7 @@ CLAIMS = [
         note="Table 1 gyro bias 360 deg/h against the horizontal Earth rate 9.46 deg/h at 51° N (38 times "
         "smaller).",
         discussed_in=PAGE1,
+        table="levelling",
     ),
     Claim.statement(
         id="KZL-sec3.2-earth-transport-rates-negligible",
@@ -346,6 +347,7 @@ CLAIMS = [
         "$\\delta$ range alone never reach 17 (heading and z-gyro bias are unobservable); with Euler "
         "attitude or DD phases the rank is 17 for $\\nu \\ge 4$.",
         discussed_in=PAGE2,
+        table="observability",
     ),
     Claim.statement(
         id="KZL-eq6-first-order",

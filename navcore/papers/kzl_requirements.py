@@ -264,6 +264,7 @@ CLAIMS = [
         "the assumed aircraft speed; the paper gives neither. A ratio of 76 means about 100 m/s; Table 1's "
         "110 m/s would give 69. The book computes it under stated assumptions.",
         discussed_in=PAGE0,
+        table="footprint-chasing",
     ),
     Claim(
         id="KZL-sec2.1-ins-drift-per-hour",
@@ -281,6 +282,7 @@ CLAIMS = [
         "$R\\varepsilon$, with the assumed $\\varepsilon$ = 0.01 deg/h (0.005-0.02) giving 1.1 km/h, "
         "the classic 1 nmi/h class.",
         discussed_in=PAGE0,
+        table="ins-gnss",
     ),
     Claim.statement(
         id="KZL-sec2.1-four-measurements",
@@ -291,6 +293,7 @@ CLAIMS = [
         note="Rank of the pseudorange geometry matrix $[-l^T\\ 1]$ is $\\min(\\nu, 4)$ for the first $\\nu$ "
         "satellites of the simulation's sky.",
         discussed_in=PAGE2,
+        table="observability",
     ),
     Claim.statement(
         id="KZL-sec1-footprint-overlap",
@@ -305,6 +308,7 @@ CLAIMS = [
         "footprint gives about 2.2 s, 5-30 km gives 0.7-4.4 s: 'a few' at the nominal footprint, not "
         "over the whole assumed range.",
         discussed_in=PAGE0,
+        table="footprint-chasing",
     ),
     Claim.statement(
         id="KZL-sec1-positioning-less-strict",
@@ -318,6 +322,7 @@ CLAIMS = [
         "acceptable 0.5 deg pointing error of Sec. 1 moves the footprint by about 30 m, against 5-15 m of "
         "L1 code positioning.",
         discussed_in=PAGE0,
+        table="footprint-chasing",
     ),
     Claim.statement(
         id="KZL-sec1-baseline-tilt-accuracy",
@@ -331,6 +336,7 @@ CLAIMS = [
         "0.7 arcsec at 30 deg, 0.4-1.1 arcsec over 20-45 deg. The paper names the unit, not a value: "
         "'arcsec accuracy' read as within half a decade (or a decade) of an arcsec.",
         discussed_in=PAGE0,
+        table="footprint-chasing",
     ),
     Claim.statement(
         id="KZL-sec1-baseline-length-accuracy",
@@ -345,6 +351,7 @@ CLAIMS = [
         "the band. The paper names units, not a value: 'mm/cm accuracy' read as within half a decade (or "
         "a decade) of 1 mm to 1 cm. The 'cm' of the text fits longer baselines or airborne geometries.",
         discussed_in=PAGE0,
+        table="footprint-chasing",
     ),
     Claim(
         id="KZL-sec2.1-ins-data-rate",
@@ -359,6 +366,7 @@ CLAIMS = [
         expected_status="consistent",
         note="Both 100 Hz (also the 'e.g., 100 Hz' of Sec. 3.5).",
         discussed_in=PAGE0,
+        table="ins-gnss",
     ),
     Claim(
         id="KZL-sec2.1-gnss-output-rate",
@@ -373,6 +381,7 @@ CLAIMS = [
         expected_status="consistent",
         note="Both 1 Hz.",
         discussed_in=PAGE0,
+        table="ins-gnss",
     ),
     Claim.statement(
         id="KZL-sec2.2-cascaded-nearly-uncorrelated",
@@ -386,6 +395,7 @@ CLAIMS = [
         "s. The paper "
         "prints no correlation: 'nearly uncorrelated' is the book's reading, below 1/e (or 0.1).",
         discussed_in=PAGE0,
+        table="ins-gnss",
     ),
 ]
 

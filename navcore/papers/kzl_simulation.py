@@ -274,6 +274,7 @@ CLAIMS = [
         + _MC_NOTE
         + " The averaging time and crab angle are assumed inputs.",
         discussed_in=PAGE3,
+        table="standalone-imu",
     ),
     Claim(
         id="KZL-sec3.6-heading-without-init",
@@ -296,6 +297,7 @@ CLAIMS = [
         "\\sigma_0^2}$ = 18 deg with the crab angle alone). One printed number, two claims: this and "
         "KZL-sec3.6-heading-without-init-covariance.",
         discussed_in=PAGE3,
+        table="standalone-imu",
     ),
     Claim.statement(
         id="KZL-sec3.6-heading-largest-attitude-error",
@@ -311,6 +313,7 @@ CLAIMS = [
         "difference, and without initialisation all three angles end with errors of similar size. "
         + _MC_NOTE,
         discussed_in=PAGE3,
+        table="standalone-imu",
     ),
     Claim(
         id="KZL-fig5-ins-position",
@@ -328,6 +331,7 @@ CLAIMS = [
         "calibration residual of the gyro bias. " + _MC_NOTE + " The averaging time is an assumed input "
         "(150-600 s).",
         discussed_in=PAGE3,
+        table="standalone-imu",
     ),
     Claim(
         id="KZL-fig5-ins-velocity",
@@ -344,6 +348,7 @@ CLAIMS = [
         "RMS itself is uncertain by about 13 %. " + _MC_NOTE + " The averaging time is an assumed input "
         "(150-600 s).",
         discussed_in=PAGE3,
+        table="standalone-imu",
     ),
     Claim.statement(
         id="KZL-fig4-tight-improves-roll-pitch",
@@ -413,6 +418,7 @@ CLAIMS = [
         "direction is unobservable, so the error still grows slowly: bounded over 30 s, not for ever. "
         + _MC_NOTE,
         discussed_in=PAGE3,
+        table="fig5-tight",
     ),
     Claim.statement(
         id="KZL-fig5-dd-best",
@@ -425,6 +431,7 @@ CLAIMS = [
         "or 10 % slack for sampling; the runs share random numbers). " + _MC_NOTE + " The Monte Carlo reads "
         "assumed inputs.",
         discussed_in=PAGE3,
+        table="fig5-tight",
     ),
     Claim(
         id="KZL-sec1-pointing-half-degree",
@@ -443,6 +450,7 @@ CLAIMS = [
         "satellites. 'About 0.5 deg' is read as an upper bound: at most 0.5 deg, with the 10 % that "
         "'about' allows. " + _MC_NOTE,
         discussed_in=PAGE3,
+        table="fig4-attitude",
     ),
     Claim.statement(
         id="KZL-fig5-loose-three-unbounded",
@@ -454,6 +462,7 @@ CLAIMS = [
         note="Table 1 sky, first three satellites. Without a fix the loosely coupled filter runs free "
         "inertial, whose error grows to about 1 km in 3 min (KZL-fig5-ins-position).",
         discussed_in=PAGE3,
+        table="fig5-loose",
     ),
     Claim.statement(
         id="KZL-sec3.7-baseline-tradeoff",
@@ -465,6 +474,7 @@ CLAIMS = [
         note="Candidates $2 B / \\lambda + 1$ (about 22 for the Table 1 2 m baselines); attitude error "
         "$0.01 \\lambda / B$ (about 1 mrad at 2 m).",
         discussed_in=PAGE3,
+        table="fig5-loose",
     ),
 ]
 

@@ -357,6 +357,7 @@ CLAIMS = [
         "non-master "
         "satellite. Eq. (14) as printed has 7 rows for $\\nu = 2$ (a duplicated row); the formula gives 6.",
         discussed_in=PAGE2,
+        table="state-dimensions",
     ),
     Claim.statement(
         id="KZL-sec3.4-sequential-update",
@@ -368,6 +369,7 @@ CLAIMS = [
         "whitened (Cholesky) first; the paper does not mention the correlation. The computation reads "
         "published inputs only (the whitening is part of the method).",
         discussed_in=PAGE2,
+        table="sequential-update",
     ),
     Claim.statement(
         id="KZL-eq13-R",
@@ -399,6 +401,7 @@ CLAIMS = [
         oracle=_printed_correction_oracle_removes,
         oracle_tolerance=EXACT,
         discussed_in=PAGE2,
+        table="sequential-update",
     ),
     Claim.statement(
         id="KZL-sec3.5-small-rotation-euler-angles",
@@ -413,6 +416,7 @@ CLAIMS = [
         "rotation of Sec. 3.5 itself; the vehicle's Euler angles at heading 90 deg are another matter, "
         "the block R of Eq. (13) (KZL-E4).",
         discussed_in=PAGE2,
+        table="sequential-update",
     ),
     Claim.statement(
         id="KZL-eq10-11-fd",
@@ -466,6 +470,7 @@ CLAIMS = [
         "rows coincide (rank 1); with $l_{01}$ and $l_{02}$ the rank is 2 (KZL-eq17-rank). No printed "
         "number depends on it.",
         discussed_in=PAGE2,
+        table="jacobian-checks",
     ),
     Claim.statement(
         id="KZL-eq17-rank",
@@ -475,6 +480,7 @@ CLAIMS = [
         compute=_eq17_corrected_two_rows,
         note="Two satellites give two independent attitude observations, as Sec. 3.6 relies on.",
         discussed_in=PAGE2,
+        table="jacobian-checks",
     ),
 ]
 
