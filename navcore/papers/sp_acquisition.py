@@ -177,6 +177,7 @@ CLAIMS = [
         note="36 deg per 30 m is the section's 360 deg per 300 m convention (close to a C/A chip, 293 m): "
         "arithmetic on printed numbers, a cross-check.",
         discussed_in=PAGE,
+        table="acquisition",
     ),
     Claim(
         id="SP-sec2.5-doppler-cell-hz",
@@ -189,6 +190,7 @@ CLAIMS = [
         expected_status="reproduced",
         note="The frequency resolution of a T = 20 ms integration is 1/T.",
         discussed_in=PAGE,
+        table="acquisition",
     ),
     Claim(
         id="SP-sec2.5-doppler-cell-mps",
@@ -201,6 +203,7 @@ CLAIMS = [
         expected_status="reproduced",
         note="$50\\ \\mathrm{Hz} \\times 0.1903\\ \\mathrm{m} = 9.51$ m/s, printed as 10 m/s.",
         discussed_in=PAGE,
+        table="acquisition",
     ),
     Claim.statement(
         id="SP-tab2.7-ordering",
@@ -213,6 +216,7 @@ CLAIMS = [
         "$\\ge$ TC0.2), the "
         "ordering the text attributes to better calibration: a check on printed numbers, a cross-check.",
         discussed_in=PAGE,
+        table="acquisition",
     ),
     Claim(
         id="SP-sec2.6.2-search-better",
@@ -232,6 +236,7 @@ CLAIMS = [
         "10 m/s' bounds "
         "the whole uncertainty span; the 30-m interval called a 'chip' is a P(Y) chip (29.3 m).",
         discussed_in=PAGE,
+        table="acquisition",
     ),
     Claim(
         id="SP-sec2.6.2-search-10-min",
@@ -245,6 +250,7 @@ CLAIMS = [
         expected_status="consistent",
         note="42 intervals $\\times$ 20 ms = 0.84 s, arithmetic on printed numbers, a cross-check.",
         discussed_in=PAGE,
+        table="acquisition",
     ),
     Claim(
         id="SP-sec2.6.2-search-10-max",
@@ -258,6 +264,7 @@ CLAIMS = [
         expected_status="consistent",
         note="82 intervals $\\times$ 20 ms = 1.64 s, arithmetic on printed numbers, a cross-check.",
         discussed_in=PAGE,
+        table="acquisition",
     ),
     Claim(
         id="SP-sec2.6.2-outside-1sigma",
@@ -270,6 +277,7 @@ CLAIMS = [
         expected_status="reproduced",
         note="One-dimensional (code phase only, one Doppler cell): 31.73 %.",
         discussed_in=PAGE,
+        table="acquisition",
     ),
     Claim.statement(
         id="SP-sec2.6.4-pointing-gyrocompass",
@@ -286,6 +294,7 @@ CLAIMS = [
         "The mission pages check the same statement "
         "with their end-of-mission covariance (SP-sec2.6.4-pointing-negligible).",
         discussed_in=PAGE_TGT,
+        table="gyrocompass-pointing",
     ),
 ]
 

@@ -951,6 +951,7 @@ def _t27_claim(system: str, col: int) -> Claim:
         expected_status=_T27_EXPECTED.get(f"SP-tab2.7-{key}-sv{sat}", "inconsistent"),
         note=_T27_NOTE,
         discussed_in=PAGE,
+        table="tab2-7-cells",
         aliases=("SP-tab2.7-intervals",) if (key == "tc10" and sat == 3) else (),
     )
 
@@ -1019,6 +1020,7 @@ CLAIMS = [
         "the jammer, so the book solves the jammer's strength for a 20-min loosely coupled blackout "
         "(fewer than four codes, on the 1-s lock tables). The value is a fit, not evidence. " + _MODEL,
         discussed_in=PAGE,
+        table="flyby",
     ),
     Claim(
         id="SP-sec2.6.2-blackout-reduction",
@@ -1038,6 +1040,7 @@ CLAIMS = [
         "geometry. The carrier-loop bandwidth does not enter (SP-sec2.6.2-blackout-bandwidth) and the "
         "search at reacquisition adds seconds." + _FIT + " " + _MODEL,
         discussed_in=PAGE,
+        table="flyby",
     ),
     Claim.statement(
         id="SP-sec2.6.2-tc-shorter",
@@ -1051,6 +1054,7 @@ CLAIMS = [
         note="Blackout: fewer than four codes (loosely coupled, no receiver solution) or no code at all "
         "(tightly coupled), plus the Sec. 2.5 search at reacquisition." + _FIT + " " + _MODEL,
         discussed_in=PAGE,
+        table="flyby",
     ),
     Claim.statement(
         id="SP-sec2.6.2-blackout-bandwidth",
@@ -1075,6 +1079,7 @@ CLAIMS = [
         + " "
         + _MODEL,
         discussed_in=PAGE,
+        table="flyby",
     ),
     Claim.statement(
         id="SP-fig2.6-blackout-grade",
@@ -1091,6 +1096,7 @@ CLAIMS = [
         "$C/N_0$; read in each loop's own bandwidth, the grade's loop sets when the code is lost and the "
         "blackouts differ by minutes, the best instruments' longest." + _FIT + " " + _MODEL,
         discussed_in=PAGE,
+        table="flyby",
     ),
     Claim.statement(
         id="SP-sec2.6.2-calibration-not-resistance",
@@ -1108,6 +1114,7 @@ CLAIMS = [
         "model the jamming resistance adds nothing and calibration a fraction of a second: the "
         "architecture makes the difference." + _FIT + " " + _MODEL,
         discussed_in=PAGE,
+        table="flyby",
     ),
     Claim(
         id="SP-fig2.7-tc10",
@@ -1124,6 +1131,7 @@ CLAIMS = [
         "the outage (the gyro random walk dominates), so it follows the tightly coupled blackout, which "
         "the antenna pattern and geometry set (SP-sec2.6.2-blackout-reduction)." + _FIT + " " + _MODEL,
         discussed_in=PAGE,
+        table="flyby",
     ),
     Claim(
         id="SP-fig2.7-tc1",
@@ -1141,6 +1149,7 @@ CLAIMS = [
         "assumed box (a longer blackout or a poorer calibration, e.g. noisier pseudoranges or a faster "
         "aircraft, raises it)." + _FIT + " " + _MODEL,
         discussed_in=PAGE,
+        table="flyby",
     ),
     Claim.statement(
         id="SP-fig2.7-tc1-below-lc1",
@@ -1159,6 +1168,7 @@ CLAIMS = [
         + " "
         + _MODEL,
         discussed_in=PAGE,
+        table="flyby",
     ),
     Claim.statement(
         id="SP-fig2.7-monotone-grade",
@@ -1171,6 +1181,7 @@ CLAIMS = [
         expected_status="consistent",
         note=_MODEL + _FIT,
         discussed_in=PAGE,
+        table="flyby",
     ),
     Claim.statement(
         id="SP-sec2.6.2-range-rate-cell",
@@ -1184,6 +1195,7 @@ CLAIMS = [
         "reacquisition (velocity; the clock drift too in the convention's other reading), all systems "
         "and satellites." + _FIT + " " + _MODEL,
         discussed_in=PAGE,
+        table="flyby",
     ),
 ]
 
@@ -1203,6 +1215,7 @@ _CELLS_AND_SEC_2_8 = [
         "against the 50:1 of the grades; 'not as dramatic' read as below a fifth of the grade ratio. The GPS "
         "measurements bound both errors.",
         discussed_in=PAGE,
+        table="gps-aided",
     ),
 ]
 CLAIMS += with_quotes(_CELLS_AND_SEC_2_8, QUOTES)

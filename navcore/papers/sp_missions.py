@@ -651,6 +651,7 @@ CLAIMS = [
         "without the 600 m initial position error the order reverses at 84 min (one Schuler "
         "period, where initial tilt and velocity errors cancel); the page shows both. " + _MISSION_NOTE,
         discussed_in="sp/21-missions",
+        table="better-gain",
     ),
     Claim(
         id="SP-sec2.6.2-ratio-printed",
@@ -667,6 +668,7 @@ CLAIMS = [
         "book's own sequential-outage run gives the ratio of SP-sec2.6.1-20min-ratio, close to 10 "
         "rather than above it. A cross-check is at best consistent.",
         discussed_in="sp/21-missions",
+        table="flyby-ratio",
     ),
     Claim(
         id="SP-sec2.6.3-minutes",
@@ -713,6 +715,7 @@ CLAIMS = [
         kind="cross-check",
         note="Arithmetic on the printed values (14.3); a cross-check is at best consistent.",
         discussed_in="sp/21-missions",
+        table="target-location",
     ),
     Claim(
         id="SP-sec2.6.4-2750-noise-only",
@@ -731,6 +734,7 @@ CLAIMS = [
         "or with a latitude outside 30-60 deg. The tolerance is the printed digits: the text fixes "
         "no wider one.",
         discussed_in="sp/21-missions",
+        table="target-location",
     ),
     Claim.statement(
         id="SP-sec2.6.4-pointing-negligible",
@@ -747,6 +751,7 @@ CLAIMS = [
         "assumed input; the paper gives only the 8 km). The helicopter track, speed and its 30 min "
         "of GPS-aided flight are fixed scenario design.",
         discussed_in="sp/21-missions",
+        table="target-location",
     ),
     Claim.statement(
         id="SP-sec2.6.4-doppler-improves",
@@ -757,6 +762,7 @@ CLAIMS = [
         note="Table 2.8 Doppler errors (bias and scale factor estimated by the filter, "
         "misalignment unmodelled), white noise assumed (0.1 m/s, band 0.03-0.3 m/s).",
         discussed_in="sp/21-missions",
+        table="target-location",
     ),
     Claim(
         id="SP-sec2.6.4-doppler-50pct",
@@ -775,6 +781,7 @@ CLAIMS = [
         "row's inputs show. The book's nominal value is well above the printed 50 %, but the band "
         "over the assumed ranges contains 50 %: the ratio rests on unpublished inputs.",
         discussed_in="sp/21-missions",
+        table="target-location",
     ),
     Claim.statement(
         id="SP-sec2.3-initial-errors",
@@ -806,6 +813,7 @@ CLAIMS = [
         "so its correlation with the instrument errors too) multiplied and divided by the check's "
         "factor. " + _MISSION_NOTE,
         discussed_in="sp/21-missions",
+        table="initial-errors",
     ),
     Claim.statement(
         id="SP-tab2.4-clock-offset",
@@ -835,6 +843,7 @@ CLAIMS = [
         "less than the noticeable change. The book's aided loops do not lose lock by themselves in this "
         "terrain following (their dynamic error stays below a degree), so the losses are imposed.",
         discussed_in="sp/21-missions",
+        table="target-location",
     ),
     Claim.statement(
         id="SP-sec2.8-coupling-short-term",
@@ -851,6 +860,7 @@ CLAIMS = [
         "change, and in the sequential outage the relative gap after 84 min is smaller than after "
         "20 min (SP-sec2.6.1-difference-shrinks). " + _MISSION_NOTE,
         discussed_in="sp/21-missions",
+        table="short-term-coupling",
     ),
 ]
 
@@ -911,6 +921,7 @@ _CROSS_CHECKS = [
         "0.13/2 = 0.065 against 0.066 all round to the printed cell; only the gyro scale factor "
         "breaks the rule (7.5/2 = 3.75 against 3.5 ppm).",
         discussed_in="sp/21-missions",
+        table="half-column",
     ),
     Claim(
         id="SP-fig2.9-heli-1nmi",
@@ -928,6 +939,7 @@ _CROSS_CHECKS = [
         "are not published; they are assumed inputs with ranges, and the band over all of them stays "
         "above the printed 192 m. Its 10 nmi/h counterpart is close to the printed 2750 m.",
         discussed_in="sp/21-missions",
+        table="heli-1nmi",
     ),
 ]
 CLAIMS += with_quotes(_CROSS_CHECKS, QUOTES)

@@ -204,6 +204,7 @@ def _col3_claim(g: str) -> Claim:
         note=f"Column 2 ({TAB26_COL2_PPM[g]} ppm of a unit step, printed) times the printed 6 g: arithmetic "
         "on printed numbers, a cross-check.",
         discussed_in=PAGE,
+        table="residual-acceleration",
     )
 
 
@@ -223,6 +224,7 @@ def _col4_claim(g: str) -> Claim:
         "10 nmi/h row would be 0.78. With the L1 carrier all values are 1.243 times larger "
         "(erratum SP-E-phase-conversion).",
         discussed_in=PAGE,
+        table="residual-acceleration",
     )
 
 
@@ -247,6 +249,7 @@ def _col2_claim(g: str) -> Claim:
         "and a scale factor below the a-priori 179 ppm for the 1 nmi/h IMU, plausible after "
         "calibration. Used as input.",
         discussed_in=PAGE,
+        table="residual-acceleration",
     )
 
 
@@ -269,6 +272,7 @@ CLAIMS = [
         note="Fig. 2.1's 17.67 rad/s with the fitted conversion (one cycle per foot), printed as 18; the "
         "table's other rows use 18. It reads the fitted conversion.",
         discussed_in=PAGE,
+        table="residual-acceleration",
     ),
     Claim(
         id="SP-eq2.u7-worked-example",
@@ -284,6 +288,7 @@ CLAIMS = [
         note="0.7707 rad/s: the worked example's own arithmetic on printed numbers (0.011 g, 6 g, 18 rad/s), "
         "a cross-check.",
         discussed_in=PAGE,
+        table="residual-acceleration",
     ),
     Claim.statement(
         id="SP-sec2.5-right-factor",
@@ -298,6 +303,7 @@ CLAIMS = [
         "matrix written in $2\\times 2$ shorthand; a "
         "check of the two printed matrices against each other, a cross-check.",
         discussed_in=PAGE,
+        table="residual-acceleration",
     ),
     Claim.statement(
         id="SP-sec2.5-H-sign",
@@ -313,6 +319,7 @@ CLAIMS = [
         "uncorrelated "
         "errors, as in the radii computed here.",
         discussed_in=PAGE,
+        table="residual-acceleration",
     ),
 ]
 

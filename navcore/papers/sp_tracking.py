@@ -181,6 +181,7 @@ CLAIMS = [
         "300-m code length and the L1 carrier do not reproduce it (see the two discrepant claims and "
         "erratum SP-E-phase-conversion).",
         discussed_in=PAGE,
+        table="tracking-loop",
     ),
     Claim(
         id="SP-fig2.1-omega0",
@@ -197,6 +198,7 @@ CLAIMS = [
         "this claim and SP-fig2.1-peak; not evidence). With the L1 carrier the same requirement gives "
         "22.37 rad/s. The conversion is a fit.",
         discussed_in=PAGE,
+        table="tracking-loop",
     ),
     Claim(
         id="SP-fig2.1-peak-code300",
@@ -212,6 +214,7 @@ CLAIMS = [
         oracle_tolerance=_LSIM_TOL,
         note="The conversion the text states gives a peak about 1000 times smaller than printed.",
         discussed_in=PAGE,
+        table="tracking-loop",
     ),
     Claim(
         id="SP-fig2.1-peak-L1",
@@ -228,6 +231,7 @@ CLAIMS = [
         note="A carrier loop tracks the L1 carrier, whose wavelength is c/1575.42 MHz = 0.1903 m: the 6-g "
         "step then peaks at 144.2 deg, and a 90 deg limit needs 22.37 rad/s.",
         discussed_in=PAGE,
+        table="tracking-loop",
     ),
     Claim.statement(
         id="SP-eq2.u1-closed-form",
@@ -239,6 +243,7 @@ CLAIMS = [
         "(Butterworth poles, $a_3 = b_3 = 2$); the $t^2$ of the source text is a misprint or a "
         "misreading of $t/2$ (erratum SP-E-exponent-t2).",
         discussed_in=PAGE,
+        table="tracking-loop",
     ),
     Claim.statement(
         id="SP-eq2.1-keeps-peak",
@@ -249,6 +254,7 @@ CLAIMS = [
         "Table 2.6 against the 6 g, 18 rad/s unaided loop: equal to $10^{-9}$ relative, because the error is "
         "$R/\\omega_0^2$ times a function of $\\omega_0 t$.",
         discussed_in=PAGE,
+        table="tracking-loop",
     ),
     Claim(
         id="SP-sec2.5-jerk-6g",
@@ -264,6 +270,7 @@ CLAIMS = [
         "$10\\ \\mathrm{g/s} \\times 0.6\\ \\mathrm{s}$, "
         "arithmetic on printed numbers, a cross-check.",
         discussed_in=PAGE,
+        table="tracking-loop",
     ),
     Claim.statement(
         id="SP-sec2.5-step-vs-jerk",
@@ -276,6 +283,7 @@ CLAIMS = [
         "jerk pulse's peak falls about as the cube of the natural frequency), while its peak error at "
         "one natural frequency is about 4 times the jerk's.",
         discussed_in=PAGE,
+        table="tracking-loop",
     ),
     Claim(
         id="SP-sec2.5-half-chip-ns",
@@ -290,6 +298,7 @@ CLAIMS = [
         "zero is not significant; half a C/A chip would be 489 ns, so the code loop here tracks P(Y), "
         "while the 300-m phase convention of Fig. 2.1 suggests C/A.",
         discussed_in=PAGE,
+        table="tracking-loop",
     ),
     Claim(
         id="SP-sec2.5-loose-carrier-5.83Hz",
@@ -306,6 +315,7 @@ CLAIMS = [
         "coupled loop's coefficients and the requirement behind 5.83 Hz, which Sec. 2.5 should give "
         "next to the value.",
         discussed_in=PAGE,
+        table="tracking-loop",
     ),
 ]
 
