@@ -317,6 +317,7 @@ CLAIMS = [
         "(5.2549) it rounds to the printed 5.25. "
         "The figures use the printed 5.25.",
         discussed_in=PAGE,
+        table="fig2-gps",
     ),
     Claim(
         id="WF-sec4d-sigma-g-from-gps-doppler",
@@ -337,6 +338,7 @@ CLAIMS = [
         "above "
         "$\\sigma_N$, which is an integrated INS/GPS accuracy ([3]) and not the quantity meant.",
         discussed_in=PAGE,
+        table="fig1-improvement",
     ),
     Claim(
         id="WF-sec4d-sigma-l-high-resolution",
@@ -353,6 +355,7 @@ CLAIMS = [
         "printed "
         "$\\sigma_a$ range: arithmetic on printed values, a cross-check.",
         discussed_in=PAGE,
+        table="fig1-improvement",
     ),
     Claim(
         id="WF-sec4d-sigma-l-medium-resolution",
@@ -369,6 +372,7 @@ CLAIMS = [
         "printed "
         "$\\sigma_a$ range: arithmetic on printed values, a cross-check.",
         discussed_in=PAGE,
+        table="fig1-improvement",
     ),
     Claim.statement(
         id="WF-eq24-PN",
@@ -408,6 +412,7 @@ CLAIMS = [
         "(the whole middle term of Eq. (23), not a third of it) the reduction falls short of 60 dB; the "
         "page shows the value.",
         discussed_in=PAGE,
+        table="fig1-improvement",
     ),
     Claim(
         id="WF-sec4d-improvement-factor",
@@ -424,6 +429,7 @@ CLAIMS = [
         relation=">=",
         note="'A factor of $10^3$', read with the 'at least' of the same sentence.",
         discussed_in=PAGE,
+        table="fig1-improvement",
     ),
     Claim(
         id="WF-sec4d-fused-velocity-accuracy",
@@ -438,6 +444,7 @@ CLAIMS = [
         relation="<=",
         note="'At least $2 \\times 10^{-3} = 0.002$ m/s': the per-axis bound is $1.963 \\times 10^{-3}$ m/s.",
         discussed_in=PAGE,
+        table="fig1-improvement",
     ),
     Claim(
         id="WF-sec4d-unfiltered-velocity-accuracy",
@@ -453,6 +460,7 @@ CLAIMS = [
         note="$\\sigma_L = 200 \\sigma_a = 0.196$ m/s, from printed values (and g): arithmetic on printed "
         "values, a cross-check.",
         discussed_in=PAGE,
+        table="fig1-improvement",
     ),
     Claim.statement(
         id="WF-fig1-slope",
@@ -463,6 +471,7 @@ CLAIMS = [
         "over 10 µm/s² to 10 mm/s², as $\\sigma_{DL} \\approx 2\\,\\mathrm{s} \\cdot \\sigma_a$ "
         "predicts. The computation reads published inputs and the reading of the slope only.",
         discussed_in=PAGE,
+        table="fig1-improvement",
     ),
     Claim.statement(
         id="WF-fig1-order",
@@ -474,6 +483,7 @@ CLAIMS = [
         "19 dB. The page also shows that every curve is at or below 0 dB and that the $\\sigma_T = 2$ m/s "
         "curve rises monotonically. The computation reads published inputs only.",
         discussed_in=PAGE,
+        table="fig1-improvement",
     ),
     Claim.statement(
         id="WF-fig2-gps-adds-little",
@@ -486,6 +496,7 @@ CLAIMS = [
         "shows the largest difference). Beyond about 30 mm/s² it no "
         "longer holds.",
         discussed_in=PAGE,
+        table="fig2-gps",
     ),
     Claim.statement(
         id="WF-sec4d-gps-noticeable-only-when-severe",
@@ -498,6 +509,7 @@ CLAIMS = [
         "exceeds 1 dB ('noticeable' read as 1 or 3 dB); on 10 µm/s² to the assumed 'very poor' end "
         "(1 m/s², range 0.1-1) the largest one is at $\\sigma_T = 2$ m/s, 3 satellites, above 10 mm/s².",
         discussed_in=PAGE,
+        table="fig2-gps",
     ),
     Claim.statement(
         id="WF-fig2-three-vs-one-satellite",
@@ -512,6 +524,7 @@ CLAIMS = [
         "identical' (the 3-satellite curve is not drawn) is read as closer than the figure's resolution "
         "(half or a tenth of a dB).",
         discussed_in=PAGE,
+        table="fig2-gps",
     ),
     Claim.statement(
         id="WF-fig2-order",
@@ -529,6 +542,7 @@ CLAIMS = [
         "satellite at $\\sigma_T = 0$). Read at the figure's resolution (half or a tenth of a dB): the "
         "largest rise is 0.0002 dB.",
         discussed_in=PAGE,
+        table="fig2-gps",
     ),
     Claim(
         id="WF-fig1-update-rate-50hz",
@@ -543,6 +557,7 @@ CLAIMS = [
         expected_status="consistent",
         note="1 / 0.02 s = 50 Hz: the label and the parameter list agree.",
         discussed_in=PAGE,
+        table="conclusions",
     ),
     Claim.statement(
         id="WF-sec4d-mems-ten-times-more-sensitive",
@@ -558,6 +573,7 @@ CLAIMS = [
         "as in the ledger's table of prose words: a factor 10 within half a decade). Reference [4]'s "
         "device list itself is not checked.",
         discussed_in=PAGE,
+        table="conclusions",
     ),
     Claim.statement(
         id="WF-sec5-aperture-errors-negligible",
@@ -570,6 +586,7 @@ CLAIMS = [
         "error than the navigation system has without any flexure ('negligible' read as below $\\sigma_N$, "
         "or below a tenth of it).",
         discussed_in=PAGE,
+        table="conclusions",
     ),
 ]
 
