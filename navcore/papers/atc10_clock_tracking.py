@@ -482,6 +482,7 @@ CLAIMS += [
         "Example II $\\beta$: rms error over the last 100 epochs of the KF exceeds the constrained "
         "tracker's.",
         discussed_in=PAGE_TRACKER,
+        table="clock-checks",
         expected_status="consistent",
     ),
     Claim.statement(
@@ -512,6 +513,7 @@ CLAIMS += [
         compute=not_markov,
         note="Partial autocorrelations of the $\\rho$-increments nonzero at lags 1..20.",
         discussed_in=PAGE_TRACKER,
+        table="clock-checks",
         expected_status="consistent",
     ),
     Claim.statement(

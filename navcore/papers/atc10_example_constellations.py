@@ -342,6 +342,7 @@ CLAIMS += [
         compute=tr_increases,
         note="Physical geometry: 8.64 > 7.19 (I), 13.6 > 3.68 (II).",
         discussed_in=PAGE_GEOMETRY,
+        table="geometry-checks",
     ),
     Claim.statement(
         id="ATC10-sec4.6-s-increases-printed",
@@ -361,6 +362,7 @@ CLAIMS += [
         note="Physical geometry: 1.40 > 1.33 (I), 1.19 > 1.18 (II): an increase, though slight (erratum "
         "ATC10-E4.1-three-satellite-clock-term).",
         discussed_in=PAGE_GEOMETRY,
+        table="geometry-checks",
     ),
     Claim.statement(
         id="ATC10-sec4.6-second-term-dominates-p0",
@@ -369,6 +371,7 @@ CLAIMS += [
         compute=second_term_dominates_p0,
         note="Share of $S/\\beta$ in $k^2$: 0.75 (I), 0.988 (II), printed Table 4.2.",
         discussed_in=PAGE_GEOMETRY,
+        table="geometry-checks",
     ),
     Claim.statement(
         id="ATC10-sec4.6-dominance-stronger-exII",
@@ -377,6 +380,7 @@ CLAIMS += [
         compute=dominance_stronger_exII,
         note="0.988 (II) > 0.75 (I).",
         discussed_in=PAGE_GEOMETRY,
+        table="geometry-checks",
     ),
     Claim.statement(
         id="ATC10-sec4.6-k-identity",
@@ -385,6 +389,7 @@ CLAIMS += [
         compute=k_identity,
         note="Both examples, physical geometry.",
         discussed_in=PAGE_GEOMETRY,
+        table="geometry-checks",
     ),
     Claim.statement(
         id="ATC10-sec4.6-satellite-count",

@@ -344,6 +344,7 @@ CLAIMS += [
         "$10^{7}$ "
         "($\\tau/\\alpha = 10^{-5}$).",
         discussed_in=PAGE_GAUSS,
+        table="exp-vs-expg",
     ),
     Claim.statement(
         id="ATC10-fig3.10-linear",
@@ -356,6 +357,7 @@ CLAIMS += [
         "0.95-0.999); the curve is visibly concave for $N \\le 2 \\times 10^{5}$ and straighter for "
         "$N \\ge 10^{6}$.",
         discussed_in=PAGE_GAUSS,
+        table="exp-vs-expg",
     ),
     Claim(
         id="ATC10-sec3.8-example-p",
@@ -373,6 +375,7 @@ CLAIMS += [
             reason="float against exact rational arithmetic", rel=1e-12, policy="exact"
         ),
         discussed_in=PAGE_GAUSS,
+        table="worked-example",
     ),
     Claim(
         id="ATC10-sec3.8-example-expg",
@@ -387,6 +390,7 @@ CLAIMS += [
         "matched-filter output variance is $N_0/2$, so (3.8.8) gives $a^2/(2 \\cdot N_0/2) = a^2/p$ = 12.5, "
         "as the example writes it. Read as the output variance, (3.8.8)'s $a^2/(2p)$ gives 6.25.",
         discussed_in=PAGE_GAUSS,
+        table="worked-example",
     ),
     Claim(
         id="ATC10-sec3.8-example-exp",
@@ -399,6 +403,7 @@ CLAIMS += [
         expected_status="reproduced",
         note="Eq. (3.8.16) gives 9.70, within the prose band of '≈' (8.1-9.9); $N = 10^{5}$ would give 8.62.",
         discussed_in=PAGE_GAUSS,
+        table="worked-example",
     ),
     Claim(
         id="ATC10-sec3.8-example-ratio",
@@ -412,6 +417,7 @@ CLAIMS += [
         note="12.5/9.70 = 1.29, within the prose band of 'approximately' (1.26-1.54); the paper's own "
         "12.5/9 = 1.39.",
         discussed_in=PAGE_GAUSS,
+        table="worked-example",
     ),
     Claim.statement(
         id="ATC10-sec3.8-example-optimistic",
@@ -422,6 +428,7 @@ CLAIMS += [
         "optimistic' is "
         "a judgement.",
         discussed_in=PAGE_GAUSS,
+        table="worked-example",
     ),
     Claim.statement(
         id="ATC10-sec3.1.3B-psk",
@@ -579,6 +586,7 @@ CLAIMS += [
         note="The exact sum over the lattice of two-point amplitudes puts the actual $4\\sigma$ tail at 7.2 "
         "times the Gaussian one.",
         discussed_in=G_,
+        table="gaussian-checks",
     ),
     Claim.statement(
         id="ATC10-sec3.8-exp-limit",
@@ -601,6 +609,7 @@ CLAIMS += [
         kind="cross-check",
         note="$10^{5} \\times 5/2.5 = 10^{5} \\times 4/2 = 2 \\times 10^{5}$.",
         discussed_in=G_,
+        table="gaussian-checks",
     ),
     Claim.statement(
         id="ATC10-eq3.8.3-gaussian-roc",
@@ -664,6 +673,7 @@ CLAIMS += [
         "densities beat it; the contour labels are lost (assumed). The bound's $p_d$ line is misprinted "
         "(ATC10-sec3.8-pd-line).",
         discussed_in=PAGE_GAUSS,
+        table="too-optimistic",
     ),
     Claim.statement(
         id="ATC10-sec3.8-pd-line",
@@ -680,6 +690,7 @@ CLAIMS += [
         note="At the check powers (Sec. 3.6 N and $\\tau/\\alpha$) and thresholds 0.05-0.95 without "
         "1/2: the printed line has $\\theta$ where (3.8.4) has $1 - \\theta$.",
         discussed_in=PAGE_GAUSS,
+        table="too-optimistic",
     ),
 ]
 

@@ -502,6 +502,7 @@ CLAIMS += [
         note="Closed form against bounded numerical maximisation over $\\nu \\ge 0$ at five (t, q) pairs, to "
         "$10^{-10}$.",
         discussed_in=PAGE,
+        table="log-domain",
     ),
 ]
 
@@ -669,6 +670,7 @@ CLAIMS += [
         "and $p_f$ "
         "from $10^{-9}$ to 0.3.",
         discussed_in=PAGE,
+        table="appendix-steps",
     ),
     Claim.statement(
         id="ATC10-sec2.3-segment-holds-signature",
@@ -679,6 +681,7 @@ CLAIMS += [
         note="20000 seeded random phases, satellite delays in [0, $\\beta$] and segment origins, $\\alpha = "
         "1$ s, $\\beta = 24$ ms: every segment holds a complete quadruplet and some hold two.",
         discussed_in=PAGE,
+        table="appendix-steps",
     ),
     Claim.statement(
         id="ATC10-eq2.5.10-random-pick",

@@ -211,6 +211,7 @@ CLAIMS += [
         note="$p_d = 0.7$ ($p_d^4 = 0.24$), $t = 0.2$: the bound does not decrease with K and exceeds "
         "$1 - 10^{-12}$ by $K = 10^{6}$.",
         discussed_in=PAGE,
+        table="log-domain",
     ),
     Claim.statement(
         id="ATC10-eqA.9-rule-at-design",
@@ -252,6 +253,7 @@ CLAIMS += [
         "that all ten lists are empty; with the lost minus, $1 - \\exp(-K E)$ = 0.999 as designed. "
         "(2.4.2), (A.17) and (2.5.12) print the minus.",
         discussed_in=PAGE,
+        table="log-domain",
     ),
     Claim.statement(
         id="ATC10-eqC.1-printed",
@@ -555,6 +557,7 @@ CLAIMS += [
         "$P_D$ in "
         "{0.88, 0.98, 0.999} and K in {2, 10, 100, 1000}.",
         discussed_in=PAGE,
+        table="appendix-steps",
     ),
     Claim.statement(
         id="ATC10-eqB.11-monte-carlo",
@@ -591,6 +594,7 @@ CLAIMS += [
         "list probability F, since $F \\le 1$. The real exponent gives a valid, slightly looser bound; "
         "for an integer Kt the two coincide.",
         discussed_in=PAGE,
+        table="appendix-steps",
     ),
     Claim.statement(
         id="ATC10-eqB.6-correlated-samples",

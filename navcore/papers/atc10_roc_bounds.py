@@ -332,6 +332,7 @@ CLAIMS += [
         oracle=bounds_tight_gaussian_limit_oracle,
         oracle_tolerance=EXACT,
         discussed_in=PAGE_ROC,
+        table="chernoff-gap",
     ),
 ]
 

@@ -82,6 +82,7 @@ CLAIMS += [
         "the peak power: the two agree for a constant-envelope (PSK) signature, and only $E = P_0 \\tau$ "
         "enters any result.",
         discussed_in=PAGE_K1,
+        table="nominal-level",
     ),
     Claim(
         id="ATC10-sec2.7-nominal-33dBW",
@@ -98,6 +99,7 @@ CLAIMS += [
         "is "
         "34.0 dBW at $P_{DL}$ = 0.9.",
         discussed_in=PAGE_K1,
+        table="nominal-level",
     ),
     Claim(
         id="ATC10-sec2.7-lt2dB-ADL",
@@ -115,6 +117,7 @@ CLAIMS += [
         kind="reproduction",
         note="Thresholds at $N_{ADL} = 0.01 N_T$; higher $P_{DL}$ needs less jamming.",
         discussed_in=PAGE_K1,
+        table="nominal-level",
     ),
     Claim(
         id="ATC10-sec2.7-lt2dB-FL",
@@ -131,6 +134,7 @@ CLAIMS += [
         kind="reproduction",
         note="Thresholds at 99 % of the $N_{FL}$ supremum 0.9 $N_T$.",
         discussed_in=PAGE_K1,
+        table="nominal-level",
     ),
     Claim.statement(
         id="ATC10-sec2.7-plateau",
@@ -144,6 +148,7 @@ CLAIMS += [
         "0.9, "
         "0.99, 0.999}; the threshold falls 2-4 dB further down.",
         discussed_in=PAGE_K1,
+        table="nominal-level",
     ),
 ]
 
@@ -215,6 +220,7 @@ CLAIMS += [
         "rapidly'. The widths of every design are computed together, which is why the inputs list Table "
         "2.1's rows; only the $K = 1$ widths decide this claim.",
         discussed_in=PAGE_K1,
+        table="threshold-sharpness",
     ),
     Claim.statement(
         id="ATC10-sec2.7-levels-near-threshold",
@@ -226,6 +232,7 @@ CLAIMS += [
         note="x where $N_{ADL} = 0.01 N_T$ and where $N_{FL} = 99$ % of 0.9 $N_T$, against x where each "
         "bound is half its ceiling, $P_{DL}$ 0.9 and 0.999, 0.01 dB grid: the largest gap is 0.37 dB.",
         discussed_in=PAGE_K1,
+        table="threshold-sharpness",
     ),
 ]
 

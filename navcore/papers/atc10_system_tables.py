@@ -262,6 +262,7 @@ CLAIMS += [
         "and 10, of the size Table 1.1 equips with at most 20 dBW (100 W) of rf power and a 4 ft dish; the "
         "dollar cost is not testable.",
         discussed_in=PAGE_T11,
+        table="jammer-cost",
     ),
     Claim.statement(
         id="ATC10-sec1.1-K1000-prohibitive",
@@ -280,6 +281,7 @@ CLAIMS += [
         "ATC10-tab1.1-K1000-erp); there 'prohibit' can only mean cost and complexity (Table 1.1: 40 dBW rf, "
         "an 18 ft dish), which the book cannot test.",
         discussed_in=PAGE_T11,
+        table="jammer-cost",
     ),
     Claim(
         id="ATC10-sec1.3-oscillator",
@@ -308,6 +310,7 @@ CLAIMS += [
         note="2 ft from Table 1.1; the dish gain needs a frequency and an efficiency the paper does not give "
         "(assumed: L band 1-2 GHz, efficiency 0.5-0.7; 31.8 W at 1.6 GHz, 0.6).",
         discussed_in=PAGE_T11,
+        table="hardware",
     ),
     Claim(
         id="ATC10-sec2.7-20deg",
@@ -323,6 +326,7 @@ CLAIMS += [
         "was solved from this value (26 600 deg$^2$): a fit claim, not evidence. The rows of Table 1.1 "
         "are then checked against it.",
         discussed_in=PAGE_T11,
+        table="hardware",
     ),
     Claim(
         id="ATC10-tab1.1-K1-erp",
@@ -496,6 +500,7 @@ CLAIMS += [
         note="Arithmetic on printed values: 10 % (Sec. 1.1) of $N = 0.1 N_T$ (Sec. 2.7) against the level "
         "(0.01) $N_T$ of Secs. 2.1 and 2.7, which the thresholds use.",
         discussed_in=PAGE_T11,
+        table="level-10pct",
     ),
 ]
 

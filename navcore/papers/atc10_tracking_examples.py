@@ -570,6 +570,7 @@ CLAIMS += [
         compute=tracking_reduces,
         note="$sd_N < sd_0$ in all six Table 4.3 cases, from the printed Table 4.2.",
         discussed_in=PAGE_EXAMPLES,
+        table="examples-checks",
     ),
     Claim.statement(
         id="ATC10-sec4.6-marginal-gains",
@@ -579,6 +580,7 @@ CLAIMS += [
         note="At $\\sigma_0 = 10 \\sigma$ the mean-square ratio $sd_N^2/sd_0^2$ is 0.94 (I) and 0.64 (II), "
         "above the assumed 'significant' fraction.",
         discussed_in=PAGE_EXAMPLES,
+        table="examples-checks",
         expected_status="consistent",
     ),
     Claim.statement(
@@ -588,6 +590,7 @@ CLAIMS += [
         compute=gains_only_below_sigma,
         note="Every significant reduction (ratio below the assumed fraction) is at $\\sigma_0 \\le$ 50 ns.",
         discussed_in=PAGE_EXAMPLES,
+        table="examples-checks",
         expected_status="consistent",
     ),
     Claim.statement(
@@ -598,6 +601,7 @@ CLAIMS += [
         note="With the fitted threshold of rule 4: under 20 s at $\\sigma_0 = \\sigma$, 30-59 s at $0.1 "
         "\\sigma$ (printed $S_3$).",
         discussed_in=PAGE_EXAMPLES,
+        table="examples-checks",
         expected_status="consistent",
     ),
     Claim.statement(
@@ -616,6 +620,7 @@ CLAIMS += [
         note="LMMSE extrapolation error 30 s after 60 epochs (Example I, 5 ns): smaller with "
         "$\\sigma_2 = \\sigma_1/10$ than with $\\sigma_2 = \\sigma_1$.",
         discussed_in=PAGE_EXAMPLES,
+        table="examples-checks",
         expected_status="consistent",
     ),
     Claim(

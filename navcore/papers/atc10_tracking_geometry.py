@@ -638,6 +638,7 @@ CLAIMS += [
         note="True with $\\beta = K - 1'P1$ ($P = I$ for $K = 3$); the printed $K^{-1} 1'1$ would give 1, "
         "not 0.",
         discussed_in=PAGE_GEOMETRY,
+        table="three-satellites",
     ),
     Claim.statement(
         id="ATC10-sec4.1-dilution-range",
@@ -653,6 +654,7 @@ CLAIMS += [
         "The two examples of the stated system give k = 5.2 (I) and 16.8 (II); Example I is at the low "
         "end (the fitted radius ratio, not a reading of the text, gives 5.6 and 18.3).",
         discussed_in=PAGE_GEOMETRY,
+        table="three-satellites",
     ),
 ]
 
@@ -802,6 +804,7 @@ CLAIMS += [
         note="Differencing $H$ on the Table 4.1 geometry: $\\operatorname{rank}(HF) = 3$ with all "
         "satellites, 2 with satellites 1-3.",
         discussed_in=PAGE_GEOMETRY,
+        table="geometry-checks",
     ),
     Claim.statement(
         id="ATC10-sec4.5.1-equivalent",
@@ -827,6 +830,7 @@ CLAIMS += [
         compute=beta_rotation_invariant,
         note="A random rotation of both examples' unit vectors.",
         discussed_in=PAGE_GEOMETRY,
+        table="geometry-checks",
     ),
 ]
 

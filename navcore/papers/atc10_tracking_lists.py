@@ -356,6 +356,7 @@ CLAIMS += [
         "the "
         "text. The book draws t in {0, 0.05, 0.1, 0.2, 0.3}.",
         discussed_in=PAGE_K,
+        table="curve-sets",
     ),
 ]
 
@@ -435,6 +436,7 @@ CLAIMS += [
         "every finite Table 2.1 design, $t = 0$ and 0.1. More interference raises the noise at the filter "
         "output, which acts as a larger J.",
         discussed_in=PAGE_K,
+        table="monotone-in-j",
     ),
     Claim.statement(
         id="ATC10-sec2.8-pd-rises-with-t",

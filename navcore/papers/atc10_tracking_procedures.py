@@ -181,6 +181,7 @@ CLAIMS += [
         oracle=lambda: abs(_oracle_convergence_rule_worst_ratio() - 1.0) <= _APPROX_REL,
         oracle_tolerance=EXACT,
         discussed_in=PAGE_TRACKER,
+        table="convergence",
     ),
     Claim.statement(
         id="ATC10-sec4.5.4-steps-formula-sign",
@@ -194,6 +195,7 @@ CLAIMS += [
         oracle=_brute_force_steps_positive,
         oracle_tolerance=EXACT,
         discussed_in=PAGE_TRACKER,
+        table="convergence",
     ),
 ]
 
@@ -391,6 +393,7 @@ CLAIMS += [
         compute=psi_is_reduction_factor,
         note="$\\gamma_N \\beta$ from 3000 steps of the recursion equals $\\psi(\\alpha)$ to $10^{-6}$.",
         discussed_in=PAGE_TRACKER,
+        table="clock-checks",
     ),
     Claim.statement(
         id="ATC10-sec4.5.4-second-term-dominates",
@@ -400,6 +403,7 @@ CLAIMS += [
         note="At the tracking limit $\\gamma S = (\\psi/\\beta) S$: Example I at 5 ns gives 2.38 against "
         "$\\operatorname{tr} = 7.84$.",
         discussed_in=PAGE_TRACKER,
+        table="clock-checks",
         expected_status="discrepant",
         erratum="ATC10-E4.11-second-term",
         oracle=second_term_dominates_oracle,
@@ -418,6 +422,7 @@ CLAIMS += [
         note="The ratio is 3.24: $\\sqrt{\\psi} \\times$ 282 ft = 89 ft against the 160 ft of Table 4.3, "
         "from the paper's own printed numbers.",
         discussed_in=PAGE_TRACKER,
+        table="clock-checks",
     ),
     Claim.statement(
         id="ATC10-sec4.5.4-psi-approx-exII-s50",
@@ -427,6 +432,7 @@ CLAIMS += [
         compute=lambda: abs(psi_approx_ratio("II", "sigma0_mid_ns") - 1.0) <= _APPROX,
         note="The ratio is 1.05: the approximation holds where $S/\\beta$ dominates.",
         discussed_in=PAGE_TRACKER,
+        table="clock-checks",
     ),
     Claim.statement(
         id="ATC10-fig4.1-large-alpha",
@@ -436,6 +442,7 @@ CLAIMS += [
         compute=lambda: approx_large_alpha_error() <= _APPROX,
         note="4.7 % at $\\alpha = 1$, falling as $1/\\alpha^2$.",
         discussed_in=PAGE_TRACKER,
+        table="clock-checks",
     ),
     Claim.statement(
         id="ATC10-fig4.1-small-alpha",
@@ -445,6 +452,7 @@ CLAIMS += [
         compute=lambda: approx_small_alpha_error() <= _APPROX,
         note="5.3 % at $\\alpha = 0.3$.",
         discussed_in=PAGE_TRACKER,
+        table="clock-checks",
     ),
     Claim.statement(
         id="ATC10-eq4.5.31-printed",
