@@ -169,6 +169,35 @@ def test_a_claim_names_its_table_in_kebab_case_on_its_page():
     assert _claim("SP-x", "Sec. 2.9").table == ""
 
 
+def test_no_page_types_the_claims_of_a_table():
+    """No page's ``claims_table`` call names claims by ``ids`` (by keyword or as the third
+    positional argument): a table selects its claims by printed item, id prefix or table name,
+    so that adding a claim to an existing table touches its paper module only, never the page
+    (issue 33). ``ids`` remains for notebooks outside the book. Oracle: the pages' sources."""
+    typed = []
+    for path in sorted((ROOT / "book").rglob("*.md")):
+        for call in _calls(path.read_text()):
+            if len(call.args) > 2 or any(k.arg == "ids" for k in call.keywords):
+                typed.append(f"{path.relative_to(ROOT)}: {ast.unparse(call)[:80]}")
+    assert not typed, "tables that type claim ids:\n" + "\n".join(typed)
+
+
+def test_a_new_claim_of_an_existing_item_lands_on_the_page_that_selects_the_item(registry, tmp_path):
+    (tmp_path / "sp").mkdir()
+    (tmp_path / "sp" / "p.md").write_text('book.claims_table("SP", items=["Table 2.6"])\n')
+    (tmp_path / "sp" / "q.md").write_text('book.claims_table("SP", items=["Fig. 2.1", "Sec. 2.5"])\n')
+    registry.append(_claim("SP-new", "Table 2.6, last row"))
+    shown, opaque = page_selections(tmp_path)
+    assert shown == {
+        "SP-a": ["sp/p"],
+        "SP-b": ["sp/p"],
+        "SP-new": ["sp/p"],
+        "SP-c": ["sp/q"],
+        "SP-d": ["sp/q"],
+    }
+    assert not opaque
+
+
 def test_every_claim_is_shown_on_one_page_its_own():
     """No claim is shown by two tables; one a literal table shows is shown on the page its record
     names (``discussed_in``); one that no literal table shows is on a page whose table selects
