@@ -327,7 +327,9 @@ def claims_table(
     >>> [g.heading for g in t.groups()], t.root
     (['Fig. 2.1'], '../')
     """
-    if items is not None or table is not None or ids is not None:
+    if items is None and table is None and ids is not None:
+        evals = [ledger.evaluate_claim(i) for i in ids]
+    elif items is not None or table is not None:
         # the items' claims, then the table's not among them, then the typed ids not among them
         chosen = select_claims(paper, items) if items is not None else []
         if table is not None:
