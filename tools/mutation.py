@@ -228,6 +228,7 @@ PACKAGES: dict[str, Package] = {
             "test_ledger.py",
             "test_ledger_inputs.py",
             "test_run_store.py",
+            "test_claims_run_memo.py",
             "test_ledger_readings.py",
             "test_ledger_mechanisms.py",
             "test_ledger_printed.py",

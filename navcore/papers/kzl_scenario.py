@@ -33,14 +33,13 @@ convention (``constellation``); the Monte Carlo ensemble size is a declared read
 
 from __future__ import annotations
 
-from collections import OrderedDict
 from dataclasses import replace
-from typing import cast
+from typing import NamedTuple, cast
 
 import numpy as np
 
 from navcore.claims import InputSet, for_each_band_run, input_cache
-from navcore.claims.run_store import RunStore
+from navcore.claims.run_store import RunMemo, RunStore
 from navcore.frames import dcm_ecef_to_ned, dcm_from_euler, ecef_to_ned
 from navcore.gnss.constellation import nominal_gps_constellation
 from navcore.gnss.dop import satellite_priority
@@ -458,39 +457,34 @@ _STORE = RunStore(
     ),
 )
 
-
-def _label(mode: str, initialise: bool) -> str:
-    """The readable prefix of a run's file name in the store."""
-    return f"{mode}-{initialise}"
-
-
-#: Monte Carlo runs made in this process, by :func:`~navcore.integration.ekf_ins_gnss.monte_carlo_key`
-#: (most recently used last; at most :data:`_RUNS_KEPT`). A band's corners that differ only in
-#: inputs a configuration never reads, and the claims that read the same configuration at the same
-#: inputs, share one run (the input cache above it is keyed on every input a configuration reads,
-#: so it cannot tell that a mode ignores one of them); a batched band stores its runs here too.
-_RUNS: OrderedDict[str, MonteCarloResult] = OrderedDict()
-_RUNS_KEPT = 1024
+#: Monte Carlo runs made or read in this process, by
+#: :func:`~navcore.integration.ekf_ins_gnss.monte_carlo_key` (the 1024 most recently used; a
+#: :class:`~navcore.claims.run_store.RunMemo` before :data:`_STORE`). A band's corners that differ
+#: only in inputs a configuration never reads, and the claims that read the same configuration at
+#: the same inputs, share one run (the input cache above it is keyed on every input a configuration
+#: reads, so it cannot tell that a mode ignores one of them); a batched band keeps its runs here too.
+_RUNS: RunMemo[MonteCarloResult] = RunMemo(_STORE, MonteCarloResult, size=1024)
 
 
-def _run_arguments(mode: str, initialise: bool, imu_name: str) -> tuple[Scenario, int, dict[str, int]]:
-    """The scenario, the ensemble size and the extra arguments of one configuration's run, from the
-    inputs (every input :func:`monte_carlo` reads is read here)."""
+class _RunArguments(NamedTuple):
+    """One configuration's run: its scenario, ensemble size, extra arguments and key."""
+
+    scenario: Scenario
+    runs: int
+    extra: dict[str, int]
+    key: str
+
+
+def _run_arguments(mode: str, initialise: bool, imu_name: str) -> _RunArguments:
+    """The scenario, the ensemble size, the extra arguments and the key
+    (:func:`~navcore.integration.ekf_ins_gnss.monte_carlo_key`) of one configuration's run, from
+    the inputs (every input :func:`monte_carlo` reads is read here)."""
     sc = table1_scenario(mode, initialise, imu_name == "swapped")
     # Eq. (12)'s attitude rows need the multi-antenna attitude, which Sec. 3.6 says needs 4 satellites
     extra = {"attitude_min_sats": int(IN.attitude_min_sats)} if mode in ("tc_att", "all") else {}
-    return sc, n_runs(), extra
-
-
-def _run_key(mode: str, initialise: bool, args: tuple[Scenario, int, dict[str, int]]) -> str:
-    sc, runs, extra = args
-    return monte_carlo_key(sc, cast(Mode, mode), runs, SEED, initialise=initialise, **extra)
-
-
-def _remember(key: str, result: MonteCarloResult) -> None:
-    _RUNS[key] = result
-    if len(_RUNS) > _RUNS_KEPT:
-        _RUNS.popitem(last=False)
+    runs = n_runs()
+    key = monte_carlo_key(sc, cast(Mode, mode), runs, SEED, initialise=initialise, **extra)
+    return _RunArguments(sc, runs, extra, key)
 
 
 def _echo(result: MonteCarloResult, sc: Scenario) -> MonteCarloResult:
@@ -502,21 +496,13 @@ def _echo(result: MonteCarloResult, sc: Scenario) -> MonteCarloResult:
 
 @input_cache
 def _monte_carlo(mode: str, initialise: bool, imu_name: str) -> MonteCarloResult:
-    args = _run_arguments(mode, initialise, imu_name)
-    key = _run_key(mode, initialise, args)
-    result = _RUNS.get(key)
-    if result is None:
-        sc, runs, extra = args
-        result = _STORE.read_or_run(
-            key,
-            _label(mode, initialise),
-            MonteCarloResult,
-            lambda: run_monte_carlo(sc, cast(Mode, mode), runs, SEED, initialise=initialise, **extra),
-        )
-        _remember(key, result)
-    else:
-        _RUNS.move_to_end(key)
-    return _echo(result, args[0])
+    sc, runs, extra, key = _run_arguments(mode, initialise, imu_name)
+    result = _RUNS.get_or_run(
+        key,
+        f"{mode}-{initialise}",  # the readable prefix of the run's file name in the store
+        lambda: run_monte_carlo(sc, cast(Mode, mode), runs, SEED, initialise=initialise, **extra),
+    )
+    return _echo(result, sc)
 
 
 #: Most rows (band runs x Monte Carlo runs) of one batched call: a band's runs are split into
@@ -525,40 +511,6 @@ def _monte_carlo(mode: str, initialise: bool, imu_name: str) -> MonteCarloResult
 #: 6.2 s of 240 and 6.9 s of 480 (larger arrays cost page faults: system time 0.1-0.7 s at 120
 #: rows, 1.2 s at 480).
 _BATCH_ROWS = 240
-
-
-def _run_band(mode: str, initialise: bool, ahead: list[tuple[Scenario, int, dict[str, int]]]) -> None:
-    """Make the runs of an announced band batch that no memo or disk holds, in batched calls: one
-    per group of scenarios that can share arrays (the same ensemble size, attitude threshold and
-    :func:`~navcore.integration.ekf_ins_gnss.batch_group_key`), split at :data:`_BATCH_ROWS`."""
-    groups: dict[tuple[int, int, str], dict[str, Scenario]] = {}
-    for args in ahead:
-        key = _run_key(mode, initialise, args)
-        if key in _RUNS:
-            _RUNS.move_to_end(key)
-            continue
-        sc, runs, extra = args
-        stored = _STORE.read(key, _label(mode, initialise), MonteCarloResult)
-        if stored is not None:
-            _remember(key, stored)
-            continue
-        group = (runs, extra.get("attitude_min_sats", 4), batch_group_key(sc))
-        groups.setdefault(group, {}).setdefault(key, sc)
-    for (runs, min_sats, _), members in groups.items():
-        keys = list(members)
-        size = max(1, _BATCH_ROWS // runs)
-        for start in range(0, len(keys), size):
-            chunk = keys[start : start + size]
-            results = run_monte_carlo_batch(
-                [members[k] for k in chunk],
-                cast(Mode, mode),
-                runs,
-                SEED,
-                initialise=initialise,
-                attitude_min_sats=min_sats,
-            )
-            for k, result in zip(chunk, results, strict=True):
-                _remember(k, _STORE.write(k, _label(mode, initialise), result))
 
 
 def monte_carlo(mode: str, initialise: bool = True, imu_name: str = "table1") -> MonteCarloResult:
@@ -583,9 +535,34 @@ def monte_carlo(mode: str, initialise: bool = True, imu_name: str = "table1") ->
         ("KZL Monte Carlo", mode, initialise, imu_name), lambda: _run_arguments(mode, initialise, imu_name)
     )
     if ahead:
-        _run_band(mode, initialise, [args for _, args in ahead])
+        # the band's runs that no memo or disk holds, in batched calls: one per group of scenarios
+        # that can share arrays (the same ensemble size, attitude threshold and batch_group_key),
+        # split at _BATCH_ROWS rows
+        results = _RUNS.get_or_run_batched(
+            [args for _, args in ahead],
+            key=lambda args: args.key,
+            label=lambda args: f"{mode}-{initialise}",
+            group=lambda args: (
+                args.runs,
+                args.extra.get("attitude_min_sats", 4),
+                batch_group_key(args.scenario),
+            ),
+            rows=lambda args: args.runs,
+            run_batch=lambda chunk: run_monte_carlo_batch(
+                [args.scenario for args in chunk],
+                cast(Mode, mode),
+                chunk[0].runs,
+                SEED,
+                initialise=initialise,
+                attitude_min_sats=chunk[0].extra.get("attitude_min_sats", 4),
+            ),
+            rows_per_call=_BATCH_ROWS,
+        )
         _monte_carlo.prime(  # type: ignore[attr-defined]
-            [(reads, _echo(_RUNS[_run_key(mode, initialise, args)], args[0])) for reads, args in ahead],
+            [
+                (reads, _echo(result, args.scenario))
+                for (reads, args), result in zip(ahead, results, strict=True)
+            ],
             mode,
             initialise,
             imu_name,
