@@ -472,3 +472,17 @@ def test_input_cache_guard_inside_declaring():
 
     with declaring(), pytest.raises(InputReadError, match="read while a tolerance"):
         d()
+
+
+def test_an_input_set_records_the_module_that_made_it_through_a_mutation_wrapper():
+    """Oracle: two modules made by hand: ``declarer`` makes an input set directly and through a
+    function of a module named ``mutmut.trampoline_stand_in`` (as mutmut's trampoline calls a
+    mutated ``__init__``); both sets name ``declarer``, never the wrapper."""
+    from navcore.claims.inputs import InputSet
+
+    wrapper = {"__name__": "mutmut.trampoline_stand_in", "InputSet": InputSet}
+    exec("def make(paper, section):\n    return InputSet(paper, section)\n", wrapper)
+    declarer = {"__name__": "declarer", "InputSet": InputSet, "make": wrapper["make"]}
+    exec("direct = InputSet('WF', 'frame_direct')\nwrapped = make('WF', 'frame_wrapped')\n", declarer)
+    assert declarer["direct"]._module == "declarer"
+    assert declarer["wrapped"]._module == "declarer"

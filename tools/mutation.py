@@ -254,7 +254,8 @@ PACKAGES: dict[str, Package] = {
             "test_book_format.py",
         ],
         deselect="each_published_input_moves or every_tolerance_has_a_policy or no_old_id_left",
-        copy=("_config.yml",),  # a rendering test reads the book's LaTeX settings
+        # the rendering tests read the book's LaTeX settings and its stylesheet
+        copy=("_config.yml", "book"),
     ),
     "units": Package(
         ["navcore/units.py", "navcore/_validate.py"],

@@ -54,6 +54,7 @@ import math
 import sys
 from collections.abc import Callable, Hashable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
+from types import FrameType
 from typing import Any, Literal, TypeVar
 
 import numpy as np
@@ -312,6 +313,26 @@ def _read(inp: Input) -> Any:
     return overrides[inp.name] if inp.name in overrides else inp.value
 
 
+def _declaring_module() -> str:
+    """The module whose code made an :class:`InputSet`: the caller of ``InputSet.__init__``.
+
+    The wrapper that mutation testing puts between a function and its caller is skipped (mutmut
+    calls the mutated ``__init__`` from a trampoline of its own, module ``mutmut.*``, reached
+    from a stand-in ``__init__`` in this module): under it every input would otherwise be
+    declared by the trampoline, and the registry's checks of the paper modules' inputs (which
+    select them by module) would find none. No code of this module makes an input set.
+    """
+    frame = sys._getframe(2)
+
+    def wrapper(f: FrameType) -> bool:
+        name = str(f.f_globals.get("__name__", ""))
+        return name.startswith("mutmut.") or name == __name__
+
+    while frame.f_back is not None and wrapper(frame):
+        frame = frame.f_back
+    return str(frame.f_globals.get("__name__", ""))
+
+
 class InputSet:
     """The registered inputs of one paper module, read as attributes.
 
@@ -339,7 +360,7 @@ class InputSet:
     """
 
     def __init__(self, paper: str, section: str) -> None:
-        object.__setattr__(self, "_module", sys._getframe(1).f_globals.get("__name__", ""))
+        object.__setattr__(self, "_module", _declaring_module())
         object.__setattr__(self, "_paper", paper)
         object.__setattr__(self, "_section", section)
         object.__setattr__(self, "_inputs", {})
