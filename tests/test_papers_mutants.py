@@ -1,0 +1,106 @@
+"""Gaps in the tests of the paper modules found by mutation testing (issue 31, 8 December 2026).
+
+The paper modules' claims are their tests; these tests reach what the claims leave unseen: a
+statement whose check is never shown to fail (a planted counter-example must make it return
+False, a case just inside its threshold True), a term of a statement's formula that the
+published inputs make too small to see (an input moved with ``overriding`` makes it visible),
+and helpers that only a book page calls. Each test names its oracle.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from navcore.claims.inputs import overriding
+from navcore.papers import atc10_multiple_access as atc10_ma
+from navcore.papers import sp_mission_flights as sp_flights
+from navcore.papers import sp_scenario_wiring as sp_wiring
+from navcore.papers import sp_tables
+from navcore.papers import wf_aperture_velocity as wf_velocity
+
+# --- ATC-10 Appendix E ---------------------------------------------------------------------
+
+
+def test_appendix_e_cumulants_hold_where_the_sixth_order_terms_are_visible():
+    """Oracle: Eqs. (E.4)-(E.9) hold for every overlap probability q = 2 tau/alpha in (0, 1],
+    and at q = 1/2 (tau/alpha = 1/4) the three terms of the sixth cumulant are of one order
+    (q m6 = 4.6e-6, 15 q^2 m4 m2 = 1.6e-5, 30 q^3 m2^3 = 8.9e-6 for the uniform C of contour
+    x = 5), so the statement's check compares all of them (at the published q = 4e-5 the
+    sixth cumulant, 3.7e-10, is below numpy's default atol and q^3 vs q^4 is invisible)."""
+    name = atc10_ma.IN.input("tau_over_alpha_sec36").name
+    with overriding({name: 0.25}):
+        assert atc10_ma.appe_cumulants() is True
+    # the statement at q = 1/2 is not vacuous: the q^3 term is about twice the q^4 term's size
+    q, b = 0.5, atc10_ma.b_of_contour(5.0)
+    assert 30 * q**3 * b**3 - 30 * q**4 * b**3 > 1e-3 * abs(q * 27 * b**3 / 7)
+
+
+# --- WF Eq. (8) ----------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("relative_error", "holds"), [(0.0, True), (1e-13, True), (1e-9, False), (0.5, False)]
+)
+def test_eq8_identity_rejects_a_gradient_off_by_more_than_its_threshold(monkeypatch, relative_error, holds):
+    """Oracle: a planted counter-example. Eq. (8) says ||df/dv|| = f0/c for every geometry; a
+    velocity gradient scaled by 1 + e violates it by e, and the statement's check (relative
+    deviation < 1e-12) must reject e = 1e-9 and 0.5 and accept the true gradient and e = 1e-13
+    (just inside, round-off being 2e-16)."""
+    true_gradient = wf_velocity.doppler_gradient_velocity
+
+    def planted(*args, **kwargs):
+        return true_gradient(*args, **kwargs) * (1.0 + relative_error)
+
+    monkeypatch.setattr(wf_velocity, "doppler_gradient_velocity", planted)
+    assert wf_velocity._eq8_identity() is holds
+
+
+# --- SP Table 2.5 --------------------------------------------------------------------------
+
+#: SP Table 2.5 as printed (rows in the order of the table, columns 10, 1.0, 0.5, 0.2 nmi/h),
+#: typed from the paper for this test.
+PRINTED_TABLE_2_5 = {
+    "accel_bias_micro_g": (223.0, 37.0, 19.0, 4.2),
+    "accel_scale_factor_ppm": (223.0, 179.0, 90.0, 21.0),
+    "accel_misalignment_arcsec": (22.0, 3.0, 1.5, 0.4),
+    "accel_random_walk_micro_g_per_sqrt_hz": (56.0, 15.0, 7.5, 4.2),
+    "gyro_bias_deg_per_h": (0.11, 0.0045, 0.0022, 0.00084),
+    "gyro_scale_factor_ppm": (112.0, 7.5, 3.5, 1.67),
+    "gyro_misalignment_arcsec": (22.0, 2.2, 1.1, 0.4),
+    "gyro_random_walk_deg_per_h_per_sqrt_hz": (4.7, 0.13, 0.066, 0.03),
+}
+
+
+def test_table_2_5_printed_reads_every_cell():
+    """Oracle: the printed Table 2.5, typed above; ``table_2_5_printed`` and the lazy view
+    ``TABLE_2_5_PRINTED`` give it row by row in the printed order."""
+    got = sp_tables.table_2_5_printed()
+    assert list(got) == list(PRINTED_TABLE_2_5)
+    assert got == PRINTED_TABLE_2_5
+    assert dict(sp_tables.TABLE_2_5_PRINTED) == PRINTED_TABLE_2_5
+
+
+# --- SP mission flights: the engine's inputs of the book's worked loop ---------------------
+
+
+@pytest.mark.parametrize("seconds", [30.0, 10.0])
+def test_engine_inputs_fly_the_first_seconds_of_the_sequential_outage(seconds):
+    """Oracle: the docstring's definition. The trajectory is the sequential-outage mission's
+    first ``seconds`` (its 1-s samples 0, 1, ..., seconds, both ends included: the mission's
+    arrays sliced by index here), the a-priori covariance is square over the truth states, and
+    the filter's added noise has one entry per filter state."""
+    m = sp_flights.engine_inputs(sp_wiring.System("tight", 1.0), seconds=seconds)
+    mission = sp_flights.sequential_outage_trajectory(sp_flights.end_free_s())
+    n = int(seconds) + 1
+    np.testing.assert_array_equal(m.trajectory.t, np.arange(n, dtype=float))
+    for field in ("t", "lat", "lon", "h", "pos_ned", "vel_ned", "f_ned", "C_bn", "omega_nb_b"):
+        np.testing.assert_array_equal(getattr(m.trajectory, field), getattr(mission, field)[:n])
+    assert m.P0.shape == (m.truth.size, m.truth.size)
+    assert len(m.filter_added_psd) == m.filter.size
+
+
+def test_engine_inputs_refuse_a_loosely_coupled_system():
+    """Oracle: the docstring: the engine's inputs are those of a tightly coupled system."""
+    with pytest.raises(ValueError, match="tightly coupled"):
+        sp_flights.engine_inputs(sp_wiring.System("loose", 1.0), seconds=10.0)
