@@ -9,10 +9,16 @@ and helpers that only a book page calls. Each test names its oracle.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pytest
+from scipy import stats
 
 from navcore.claims.inputs import overriding
+from navcore.detection.roc_bounds import exponent_from_gaussian_exponent
+from navcore.papers import atc10_gaussian_comparison as atc10_gauss
+from navcore.papers import atc10_jamming_appendices as atc10_jam_app
 from navcore.papers import atc10_multiple_access as atc10_ma
 from navcore.papers import sp_mission_flights as sp_flights
 from navcore.papers import sp_scenario_wiring as sp_wiring
@@ -34,6 +40,44 @@ def test_appendix_e_cumulants_hold_where_the_sixth_order_terms_are_visible():
     # the statement at q = 1/2 is not vacuous: the q^3 term is about twice the q^4 term's size
     q, b = 0.5, atc10_ma.b_of_contour(5.0)
     assert 30 * q**3 * b**3 - 30 * q**4 * b**3 > 1e-3 * abs(q * 27 * b**3 / 7)
+
+
+# --- ATC-10 Appendix A: the printed (A.7) against (A.4) -------------------------------------
+
+
+def _a7_disagreements_by_hand(k: int) -> int:
+    """With p0 = 1/5, p1 = 3/5 (a = 2, b = 1/3), (A.4) reads 6^K0 <= (3 lambda_1)^K and the printed
+    (A.7) 6^K0 <= (lambda_1 / 3)^K; the second implies the first, so they disagree exactly for
+    K ln(lambda_1/3)/ln 6 < K0 <= K ln(3 lambda_1)/ln 6, K0 in 0..K: floor(K ln 1.5/ln 6) + 1
+    cases at lambda_1 = 1/2, floor(K ln 3/ln 6) + 1 at 1, and K at 3 (K0 = 0 is a tie, where
+    both accept)."""
+    return math.floor(k * math.log(1.5) / math.log(6)) + 1 + math.floor(k * math.log(3) / math.log(6)) + 1 + k
+
+
+@pytest.mark.parametrize(("k", "exact"), [(10, True), (10, False), (400, False), (1000, True)])
+def test_printed_a7_disagreements_count_by_hand(k, exact):
+    """Oracle: the count worked by hand above (20 at the published K = 10, 737 at K = 400, 1841 at
+    K = 1000, a transmission length of Table 2.1, moved into the K = 10 input), in exact rational
+    arithmetic and in logarithms; at K = 1000, 6^K0 and 3^K leave the range of floats, which
+    only the exact fractions survive."""
+    name = atc10_jam_app.IN_J.input("tab21_k10").name
+    with overriding({name: k}):
+        assert atc10_jam_app.printed_a7_disagreements(exact) == _a7_disagreements_by_hand(k)
+
+
+# --- ATC-10 Fig. 3.10: Exp practically linear in Exp_g -------------------------------------
+
+
+@pytest.mark.parametrize("n", [1e4, 1e5])
+def test_exp_linearity_r2_is_the_squared_correlation_of_the_curve_from_zero(n):
+    """Oracle: R^2 of a least-squares line with intercept is the squared correlation coefficient
+    (scipy.stats.linregress), on Exp_g = 0, 0.25, ..., 20 with Exp(0) = 0, the limit of Eq.
+    (3.8.16) as Exp_g -> 0 (both of its terms vanish)."""
+    g = np.linspace(0.0, 20.0, 81)
+    e = np.zeros_like(g)
+    e[1:] = exponent_from_gaussian_exponent(n, atc10_gauss.IN.tau_over_alpha_fig310, g[1:])
+    expected = stats.linregress(g, e).rvalue ** 2
+    assert atc10_gauss.exp_linearity_r2(n) == pytest.approx(expected, abs=1e-9)
 
 
 # --- WF Eq. (8) ----------------------------------------------------------------------------
