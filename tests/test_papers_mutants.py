@@ -68,6 +68,20 @@ def test_printed_a7_disagreements_count_by_hand(k, exact):
         assert atc10_jam_app.printed_a7_disagreements(exact) == _a7_disagreements_by_hand(k)
 
 
+# --- ATC-10 Appendix C: the tracking window ------------------------------------------------
+
+
+@pytest.mark.parametrize("alpha_s", [1.0, 0.1, 0.01])
+def test_track_window_holds_at_shorter_repetition_periods(alpha_s):
+    """Oracle: the triangle inequality. Between pulses an aircraft moves by |step| <= v alpha,
+    so each satellite range changes by at most v alpha and their difference d_1 by at most
+    2 v alpha (C.5), for any alpha: the statement holds at the printed alpha = 1 s and with
+    the repetition period moved to 0.1 and 0.01 s (where a step drawn otherwise than with
+    length uniform in [0, v alpha] leaves the bound)."""
+    with overriding({atc10_jam_app.IN_J.input("repetition_s").name: alpha_s}):
+        assert atc10_jam_app._track_window_holds() is True
+
+
 # --- ATC-10 Fig. 3.10: Exp practically linear in Exp_g -------------------------------------
 
 
