@@ -45,6 +45,20 @@ def test_appendix_e_cumulants_hold_where_the_sixth_order_terms_are_visible():
     assert 30 * q**3 * b**3 - 30 * q**4 * b**3 > 1e-3 * abs(q * 27 * b**3 / 7)
 
 
+# --- ATC-10 Eq. (3.8.6): the Gaussian moment generating function ---------------------------
+
+
+def test_printed_386_oracle_is_the_log_mgf_of_the_worked_example():
+    """Oracle: the Gaussian MGF E exp(mu n) = exp(mu^2 p / 2), so at mu = 1 its logarithm is p/2
+    with the worked example's p = (N - 1)/(B alpha) (computed here from the inputs); the
+    quadrature of ``printed_386_log_mgf`` over [-1, 1] (seven standard deviations) agrees with
+    it to its truncation, 1e-8 relative."""
+    ma = atc10_gauss.MA
+    p = (ma.n_effective_example - 1) / (ma.bandwidth_example_hz * ma.alpha_example_s)
+    assert atc10_gauss.printed_386_oracle() == pytest.approx(p / 2, rel=1e-12)
+    assert atc10_gauss.printed_386_log_mgf() == pytest.approx(p / 2, rel=1e-8)
+
+
 # --- ATC-10 Appendix A: the printed (A.7) against (A.4) -------------------------------------
 
 
