@@ -23,6 +23,7 @@ from navcore.papers import atc10_multiple_access as atc10_ma
 from navcore.papers import atc10_roc_bounds as atc10_roc
 from navcore.papers import atc10_tracking_examples as atc10_track_ex
 from navcore.papers import atc10_tracking_procedures as atc10_track_proc
+from navcore.papers import kzl_tightly_coupled_filter as kzl_tc
 from navcore.papers import sp_mission_flights as sp_flights
 from navcore.papers import sp_scenario_wiring as sp_wiring
 from navcore.papers import sp_tables
@@ -164,6 +165,25 @@ def test_a_later_crossover_helps_at_every_sigma0(sigma0_attr, crossover_n, helps
     }
     with overriding(moved):
         assert atc10_track_ex.crossover_100_helps() is helps
+
+
+# --- KZL: heading observability with the default arguments ---------------------------------
+
+
+def test_heading_observable_defaults_to_code_and_delta_range_with_eight_satellites():
+    """Oracle: the docstring's defaults (``mode="tc"``: code and delta range; ``nu`` = 8) and the
+    row-space test: the heading's unit vector e against the normalised rows of
+    [H; HF; ...; HF^16], observable exactly when the least-squares residual is zero."""
+    from navcore.inertial.error_model17 import ERROR_LAYOUT_17
+
+    F, H = kzl_tc.table1_F(), np.atleast_2d(kzl_tc.code_doppler_rows(kzl_tc.table1_los(8)))
+    rows = np.vstack([H @ np.linalg.matrix_power(F, k) for k in range(F.shape[0])])
+    rows = rows[np.linalg.norm(rows, axis=1) > 0]
+    rows = rows / np.linalg.norm(rows, axis=1)[:, None]
+    e = np.zeros(F.shape[0])
+    e[ERROR_LAYOUT_17.slice("misalignment").start + 2] = 1.0
+    c = np.linalg.lstsq(rows.T, e, rcond=1e-9)[0]
+    assert kzl_tc.heading_observable() == bool(np.linalg.norm(rows.T @ c - e) < 1e-6)
 
 
 # --- WF Eq. (8) ----------------------------------------------------------------------------
