@@ -17,6 +17,7 @@ from scipy import stats
 
 from navcore.claims.inputs import overriding
 from navcore.detection.roc_bounds import exponent_from_gaussian_exponent
+from navcore.papers import atc10_clock_tracking as atc10_clock
 from navcore.papers import atc10_gaussian_comparison as atc10_gauss
 from navcore.papers import atc10_jamming_appendices as atc10_jam_app
 from navcore.papers import atc10_multiple_access as atc10_ma
@@ -143,6 +144,17 @@ def test_printed_4531_closed_form_is_the_limit_of_the_printed_recursion(example,
     closed = atc10_track_proc.printed_4531_oracle(example, sigma0)
     assert closed == pytest.approx(atc10_track_proc.printed_4531_sdn(example, sigma0_attr), rel=1e-9)
     assert closed == pytest.approx(atc10_track_proc.printed_4531_oracle(example, 1.0), rel=1e-12)
+
+
+# --- ATC-10 Sec. 4.5.2: the printed tau_n = sum w_i + alpha_0 -------------------------------
+
+
+@pytest.mark.parametrize("n", [1, 2, 10, 30])
+def test_printed_tau_sum_oracle_is_the_variance_of_n_plus_one_draws(n):
+    """Oracle: closed form. The printed tau_n adds n + 1 independent N(0, sigma0^2) terms, so its
+    variance is (n + 1) sigma0^2 and the ratio to (4.3.1c)'s (n + n^2) sigma0^2 is 1/n: the
+    Monte Carlo of 2e5 draws agrees to 2 % (its relative standard error is sqrt(2/2e5) = 0.3 %)."""
+    assert atc10_clock.printed_tau_sum_oracle(n) == pytest.approx((n + 1) / (n + n * n), rel=0.02)
 
 
 # --- ATC-10 Sec. 4.7: a later 1/f crossover helps -------------------------------------------
