@@ -19,6 +19,7 @@ from navcore.claims.inputs import overriding
 from navcore.detection.roc_bounds import exponent_from_gaussian_exponent
 from navcore.papers import atc10_clock_tracking as atc10_clock
 from navcore.papers import atc10_gaussian_comparison as atc10_gauss
+from navcore.papers import atc10_jamming as atc10_jam
 from navcore.papers import atc10_jamming_appendices as atc10_jam_app
 from navcore.papers import atc10_multiple_access as atc10_ma
 from navcore.papers import atc10_roc_bounds as atc10_roc
@@ -29,6 +30,7 @@ from navcore.papers import sp_mission_flights as sp_flights
 from navcore.papers import sp_scenario_wiring as sp_wiring
 from navcore.papers import sp_tables
 from navcore.papers import wf_aperture_velocity as wf_velocity
+from navcore.papers import wf_federated_fusion as wf_fusion
 
 # --- ATC-10 Appendix E ---------------------------------------------------------------------
 
@@ -59,6 +61,20 @@ def test_printed_386_oracle_is_the_log_mgf_of_the_worked_example():
     p = (ma.n_effective_example - 1) / (ma.bandwidth_example_hz * ma.alpha_example_s)
     assert atc10_gauss.printed_386_oracle() == pytest.approx(p / 2, rel=1e-12)
     assert atc10_gauss.printed_386_log_mgf() == pytest.approx(p / 2, rel=1e-8)
+
+
+# --- ATC-10 Sec. 2.3: a segment of length alpha + beta holds a signature -------------------
+
+
+@pytest.mark.parametrize("alpha_s", [0.05, 0.5, 1.0, 2.0])
+def test_segment_holds_signature_at_other_repetition_periods(alpha_s):
+    """Oracle: by hand. The quadruplet whose first pulse falls in the first alpha of a segment of
+    length alpha + beta ends less than beta later (the delays lie in [0, beta)), so every segment
+    holds one complete quadruplet whatever alpha (> beta = 24 ms) and the pulse phase, and some
+    hold two: the statement holds with the repetition period moved from 1 s to 50 ms, 0.5 s
+    and 2 s, phases drawn over the whole period."""
+    with overriding({atc10_jam.IN_J.input("repetition_s").name: alpha_s}):
+        assert atc10_jam._segment_holds_signature() is True
 
 
 # --- ATC-10 Appendix A: the printed (A.7) against (A.4) -------------------------------------
@@ -157,6 +173,44 @@ def test_printed_tau_sum_oracle_is_the_variance_of_n_plus_one_draws(n):
     assert atc10_clock.printed_tau_sum_oracle(n) == pytest.approx((n + 1) / (n + n * n), rel=0.02)
 
 
+# --- ATC-10 Sec. 4.5: the first tracking step of the printed (4.5.10) -----------------------
+
+
+@pytest.mark.parametrize("example", ["I", "II"])
+def test_first_step_variance_agrees_with_its_monte_carlo_and_the_optimal_gain(example):
+    """Oracles: (a) a seeded Monte Carlo of the first step (``printed_4510_oracle``: 400 000 draws
+    of the least-squares error, the clock increment and the projected noise) against the
+    closed-form error variance of the printed gain 1/gamma_1, within five standard errors
+    (sqrt(2/400 000) relative each); (b) algebra: with the optimal gain c = gamma_1 = s_1 /
+    (sigma^2 + beta s_1) the variance c^2 sigma^2 beta + (1 - c beta)^2 s_1 is sigma^2 gamma_1
+    exactly ((4.5.18))."""
+    closed = atc10_clock.printed_4510_variance_ratio(example)
+    assert atc10_clock.printed_4510_oracle(example) == pytest.approx(closed, rel=5 * math.sqrt(2 / 400_000))
+    _, g1, var, _ = atc10_clock._first_step(example, atc10_clock.TR.sigma0_low_ns, inverse_gain=False)
+    assert var == pytest.approx(atc10_clock.TR.sigma_ns**2 * g1, rel=1e-12)
+
+
+# --- ATC-10 Sec. 4.5.4: the convergence rule's worst case ----------------------------------
+
+
+@pytest.mark.parametrize("fraction", [0.1, 0.5])
+def test_convergence_rule_worst_ratio_is_the_one_farthest_from_one(fraction):
+    """Oracle: the docstring's definition, the ratio of the six whose logarithm is largest in
+    magnitude, taken here from the six ratios (printed estimate -ln f / psi over the oracle's
+    count + 1). At the printed f = 0.1 all exceed 1; with the criterion loosened to f = 0.5 all
+    fall below 1, so the worst is the smallest, not the largest."""
+    proc = atc10_track_proc
+    with overriding({proc.IN.input("convergence_fraction").name: fraction}):
+        ratios = []
+        for (b, s0), count in zip(proc._six_cases(), proc._oracle_convergence_counts(), strict=True):
+            p = float(proc.psi(proc.alpha_parameter(s0, proc.IN.sigma_ns, b)))
+            ratios.append(-math.log(fraction) / p / (count + 1.0))
+        worst = max(ratios, key=lambda r: abs(math.log(r)))
+        assert proc._oracle_convergence_rule_worst_ratio() == pytest.approx(worst, rel=1e-12)
+    if fraction == 0.5:
+        assert worst == min(ratios) < 1.0
+
+
 # --- ATC-10 Sec. 4.7: a later 1/f crossover helps -------------------------------------------
 
 
@@ -216,6 +270,21 @@ def test_eq8_identity_rejects_a_gradient_off_by_more_than_its_threshold(monkeypa
 
     monkeypatch.setattr(wf_velocity, "doppler_gradient_velocity", planted)
     assert wf_velocity._eq8_identity() is holds
+
+
+# --- WF Remark (ii): the statement's closeness --------------------------------------------
+
+
+def test_remark2_generic_flips_at_its_declared_closeness():
+    """Oracle: the statement's definition, |tr(bound)/tr(true) - 1| <= close_rel. With the
+    closeness input moved just above the seeded generic case's distance from 1 the statement
+    holds, just below it does not (at the convention's readings, 1 % and 10 %, it does not:
+    the generic bound is not exact)."""
+    gap = abs(wf_fusion.bound_tightness(1.0, "generic") - 1.0)
+    name = wf_fusion.IN.input("close_rel").name
+    for close, holds in ((gap * 1.01, True), (gap * 0.99, False), (0.01, False), (0.1, False)):
+        with overriding({name: close}):
+            assert wf_fusion.remark2_generic_exact() is holds, close
 
 
 # --- SP Table 2.5 --------------------------------------------------------------------------
