@@ -63,6 +63,25 @@ def test_printed_386_oracle_is_the_log_mgf_of_the_worked_example():
     assert atc10_gauss.printed_386_log_mgf() == pytest.approx(p / 2, rel=1e-8)
 
 
+# --- ATC-10 Sec. 2.8: the 10-dB steps keep their former ids ------------------------------
+
+
+def test_printed_items_name_registered_claims_and_the_sec28_steps_keep_their_former_ids():
+    """Oracle: the committed inventory of printed items (``navcore/papers/paper_items.json``),
+    which names the Sec. 2.8 steps by their former ids ``...-pdl0.999`` and ``...-pdl0.88``:
+    every claim an item names is a registered claim's id or alias, and those former ids
+    resolve to the step claims ``ATC10-sec2.8-10dB-K1to10`` and ``-K10to100``."""
+    from navcore import coverage, ledger
+
+    assert [p for p in coverage.problems() if "unknown claim" in p] == []
+    named = {c for it in coverage.items() for c in it.claims}
+    for k_from, k_to in ((1, 10), (10, 100)):
+        for p_dl in ("0.999", "0.88"):
+            former = f"ATC10-sec2.8-10dB-K{k_from}to{k_to}-pdl{p_dl}"
+            assert former in named
+            assert ledger.claim(former).id == f"ATC10-sec2.8-10dB-K{k_from}to{k_to}"
+
+
 # --- ATC-10 Sec. 2.3: a segment of length alpha + beta holds a signature -------------------
 
 
