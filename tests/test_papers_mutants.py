@@ -26,9 +26,9 @@ from navcore.papers import atc10_roc_bounds as atc10_roc
 from navcore.papers import atc10_tracking_examples as atc10_track_ex
 from navcore.papers import atc10_tracking_procedures as atc10_track_proc
 from navcore.papers import kzl_tightly_coupled_filter as kzl_tc
+from navcore.papers import sp_antijam, sp_tables
 from navcore.papers import sp_mission_flights as sp_flights
 from navcore.papers import sp_scenario_wiring as sp_wiring
-from navcore.papers import sp_tables
 from navcore.papers import wf_aperture_velocity as wf_velocity
 from navcore.papers import wf_federated_fusion as wf_fusion
 
@@ -304,6 +304,22 @@ def test_remark2_generic_flips_at_its_declared_closeness():
     for close, holds in ((gap * 1.01, True), (gap * 0.99, False), (0.01, False), (0.1, False)):
         with overriding({name: close}):
             assert wf_fusion.remark2_generic_exact() is holds, close
+
+
+# --- SP Sec. 3.3: the CEP claims compute the reduced model's CEP --------------------------
+
+
+@pytest.mark.parametrize(("arch", "power"), [("DI", 100.0), ("TC", 100.0), ("DI", 10.0), ("TC", 10.0)])
+def test_cep_claims_compute_the_reduced_models_cep(arch, power):
+    """Oracle: the claims' declaration (the book's value is the reduced model's exact CEP at
+    impact, no sampling): each Fig. 3.6 claim computes ``model_cep`` of its architecture and
+    jammer power, a positive length in metres."""
+    from navcore import ledger
+
+    claim = ledger.claim(f"SP-sec3.3-cep-{arch.lower()}-{int(power)}W")
+    value = claim.compute()
+    assert value == sp_antijam.model_cep(arch, power)
+    assert math.isfinite(value) and value > 0.0
 
 
 # --- SP Table 2.5 --------------------------------------------------------------------------
