@@ -13,7 +13,7 @@ import math
 
 import numpy as np
 import pytest
-from scipy import stats
+from scipy import optimize, stats
 
 from navcore.claims.inputs import overriding
 from navcore.detection.roc_bounds import exponent_from_gaussian_exponent
@@ -320,6 +320,40 @@ def test_cep_claims_compute_the_reduced_models_cep(arch, power):
     value = claim.compute()
     assert value == sp_antijam.model_cep(arch, power)
     assert math.isfinite(value) and value > 0.0
+
+
+# --- SP Sec. 3.3: the A/J improvement at equal CEP ----------------------------------------
+
+
+@pytest.mark.parametrize("cep_m", [10.0, 30.0])
+def test_aj_improvement_is_the_power_ratio_at_equal_cep(cep_m):
+    """Oracle: the definition, solved independently. The TC and DI jammer powers (dB) at which the
+    reduced model's CEP equals ``cep_m`` are found by root finding on the model's own curve
+    (scipy's brentq on log CEP against 10 log10 P); their difference is the improvement, which
+    the interpolation on the eighth-decade grid reproduces to 0.5 dB (0.3 dB at most here)."""
+    powers_db = []
+    for arch in ("TC", "DI"):
+
+        def gap(x_db, arch=arch):
+            return math.log(sp_antijam.model_cep(arch, 10 ** (x_db / 10))) - math.log(cep_m)
+
+        powers_db.append(optimize.brentq(gap, -20.0, 60.0, xtol=1e-6))
+    expected = powers_db[1] - powers_db[0]
+    assert sp_antijam.aj_improvement_db("wideband", cep_m)[0] == pytest.approx(expected, abs=0.5)
+
+
+# --- SP Sec. 2.6.3: the head-on mission starts along the assumed heading -------------------
+
+
+@pytest.mark.parametrize("heading_deg", [0.0, 90.0, 180.0, 270.0])
+def test_head_on_trajectory_starts_along_the_assumed_heading(heading_deg):
+    """Oracle: the docstring ('from the assumed heading'): after take-off the aircraft's ground
+    velocity points along the heading input, at each of its grid values (north, east, south,
+    west)."""
+    with overriding({sp_wiring.IN.input("heading_deg").name: heading_deg}):
+        v = sp_flights.head_on_trajectory().vel_ned[1]
+    azimuth = math.degrees(math.atan2(v[1], v[0])) % 360.0
+    assert azimuth == pytest.approx(heading_deg, abs=1e-6)
 
 
 # --- SP Table 2.5 --------------------------------------------------------------------------
