@@ -322,6 +322,25 @@ def test_cep_claims_compute_the_reduced_models_cep(arch, power):
     assert math.isfinite(value) and value > 0.0
 
 
+# --- SP Fig. 3.4: the guided munition's trajectory -----------------------------------------
+
+
+def test_pgm_trajectory_is_sampled_every_second_from_launch():
+    """Oracle: closed form of the Fig. 3.4 reconstruction: one sample a second from t = 1 s to the
+    last whole second before the target range L at the assumed speed v (n = floor(L / v)),
+    along-track x = v t, altitude the cruise altitude until the dive starts, then falling
+    linearly towards the target (floored at 1 m)."""
+    a = sp_antijam.IN
+    length = a.target_range_nmi * 1852.0
+    n = int(length // a.speed_mps)
+    t, x, alt = sp_antijam.pgm_trajectory()
+    np.testing.assert_array_equal(t, np.arange(1.0, n + 1.0))
+    np.testing.assert_allclose(x, a.speed_mps * t, rtol=1e-15)
+    to_go = length - x
+    expected = np.where(to_go > a.dive_start_m, a.cruise_alt_m, a.cruise_alt_m * to_go / a.dive_start_m)
+    np.testing.assert_allclose(alt, np.maximum(expected, 1.0), rtol=1e-12)
+
+
 # --- SP Sec. 3.3: the A/J improvement at equal CEP ----------------------------------------
 
 
