@@ -322,6 +322,29 @@ def test_cep_claims_compute_the_reduced_models_cep(arch, power):
     assert math.isfinite(value) and value > 0.0
 
 
+# --- SP Sec. 2.6.2: the sequential outage's systems ---------------------------------------
+
+
+@pytest.mark.parametrize(("architecture", "asked"), [(None, ["loose", "tight"]), ("tight", ["tight"])])
+def test_sequential_outage_runs_each_architecture_once_and_returns_the_five_systems(
+    monkeypatch, architecture, asked
+):
+    """Oracle: the docstring: without an architecture the five systems of the table, loosely and
+    tightly coupled, each architecture run once (the runs replaced here by a stand-in that
+    records what is asked, so no mission is flown), returned in the table's order."""
+    calls = []
+
+    def stand_in(arch, free_inertial):
+        calls.append(arch)
+        return {s: (arch, s.grade) for s in sp_wiring.SYSTEMS if s.architecture == arch}
+
+    monkeypatch.setattr(sp_flights, "_sequential_group", stand_in)
+    out = sp_flights.sequential_outage(architecture=architecture)
+    assert calls == asked
+    assert list(out) == [s for s in sp_wiring.SYSTEMS if s.architecture in asked]
+    assert all(v == (s.architecture, s.grade) for s, v in out.items())
+
+
 # --- SP Fig. 3.4: the guided munition's trajectory -----------------------------------------
 
 
@@ -339,6 +362,31 @@ def test_pgm_trajectory_is_sampled_every_second_from_launch():
     to_go = length - x
     expected = np.where(to_go > a.dive_start_m, a.cruise_alt_m, a.cruise_alt_m * to_go / a.dive_start_m)
     np.testing.assert_allclose(alt, np.maximum(expected, 1.0), rtol=1e-12)
+
+
+# --- SP Sec. 3.3: one jammer power or several --------------------------------------------
+
+
+def test_pgm_js_db_of_one_power_is_a_history_and_scales_with_the_power():
+    """Oracle: free space: J/S grows by 10 log10 of the power ratio at every sample (10 dB from
+    10 W to 100 W), and one scalar power gives the history that the same power gives as a row
+    of an array of powers (the docstring)."""
+    one, ten = sp_antijam.pgm_js_db(10.0), sp_antijam.pgm_js_db(100.0)
+    np.testing.assert_allclose(ten - one, 10.0, atol=1e-9)
+    np.testing.assert_allclose(
+        sp_antijam.pgm_js_db(np.array([10.0, 100.0])), np.vstack([one, ten]), rtol=1e-13
+    )
+
+
+@pytest.mark.parametrize("arch", ["TC", "DI"])
+def test_fix_sigma_of_one_power_is_the_row_of_the_batched_call(arch):
+    """Oracle: the docstring: the noise history of one jammer power (the Monte Carlo's call) is the
+    row of that power in the batched call over powers (the exact model's), lock losses (NaN)
+    included."""
+    powers = np.array([10.0, 1000.0])
+    batched = sp_antijam.fix_sigma_m(powers, arch, "wideband")
+    for row, p in zip(batched, powers, strict=True):
+        np.testing.assert_array_equal(sp_antijam.fix_sigma_m(float(p), arch, "wideband"), row)
 
 
 # --- SP Sec. 3.3: the A/J improvement at equal CEP ----------------------------------------
