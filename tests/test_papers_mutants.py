@@ -26,7 +26,7 @@ from navcore.papers import atc10_roc_bounds as atc10_roc
 from navcore.papers import atc10_tracking_examples as atc10_track_ex
 from navcore.papers import atc10_tracking_procedures as atc10_track_proc
 from navcore.papers import kzl_tightly_coupled_filter as kzl_tc
-from navcore.papers import sp_antijam, sp_tables
+from navcore.papers import sp_antijam, sp_flyby, sp_tables
 from navcore.papers import sp_mission_flights as sp_flights
 from navcore.papers import sp_scenario_wiring as sp_wiring
 from navcore.papers import wf_aperture_velocity as wf_velocity
@@ -343,6 +343,25 @@ def test_sequential_outage_runs_each_architecture_once_and_returns_the_five_syst
     assert calls == asked
     assert list(out) == [s for s in sp_wiring.SYSTEMS if s.architecture in asked]
     assert all(v == (s.architecture, s.grade) for s, v in out.items())
+
+
+# --- SP Sec. 2.5: the carrier loop's phase error in the flyby --------------------------------
+
+
+@pytest.mark.parametrize("system", [sp_wiring.System("loose", 1.0), sp_wiring.System("tight", 1.0)])
+def test_flyby_carrier_phase_is_k_sigma_thermal_jitter_plus_the_dynamic_error(system):
+    """Oracle: Kaplan & Hegarty's PLL thermal jitter, sigma^2 = B_n/(C/N0) (1 + 1/(2 T C/N0)) rad^2,
+    typed here with the system's loop noise bandwidth and the coherent time, times the k-sigma
+    input, plus the loop's dynamic error: the phase error the lock rules compare with the
+    carrier-loss limit, at every sample of the flyby (a jammer 20 dB above thermal at 100 km)."""
+    jammer_db = 20.0
+    loop = sp_flyby.carrier_loop(system)
+    c = 10.0 ** (sp_flyby.effective_cn0(jammer_db) / 10.0)
+    T = sp_flyby.IN.coherent_s
+    jitter = np.degrees(np.sqrt(loop.bandwidth_hz / c * (1.0 + 1.0 / (2.0 * T * c))))
+    dyn = sp_flyby.dynamic_phase_error_deg(loop.omega0, loop.aided, system.grade)
+    expected = sp_flyby.IN.jitter_k_sigma * jitter + dyn
+    np.testing.assert_allclose(sp_flyby.locks(system, jammer_db).carrier_phase_deg, expected, rtol=1e-12)
 
 
 # --- SP Fig. 3.4: the guided munition's trajectory -----------------------------------------
