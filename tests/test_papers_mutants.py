@@ -467,6 +467,20 @@ def test_table_2_5_printed_reads_every_cell():
     assert dict(sp_tables.TABLE_2_5_PRINTED) == PRINTED_TABLE_2_5
 
 
+# --- SP Table 2.8: the Doppler sensor's errors in the error sources ---------------------------
+
+
+def test_error_sources_carry_table_2_8_doppler_errors():
+    """Oracle: SP Table 2.8 as printed, typed here (bias 0.1 / 0.05 nmi/h, scale factor 0.25 % /
+    0.1 %, boresight misalignment 2.0 mrad), in SI (1 nmi = 1852 m): the error sources of a
+    system with the Doppler sensor carry every one of them, horizontal on the first two axes."""
+    kt = 1852.0 / 3600.0
+    src = sp_wiring.error_sources(sp_tables.sp_imu_grade(1.0), doppler=True)
+    np.testing.assert_allclose(src.doppler_bias, (0.1 * kt, 0.1 * kt, 0.05 * kt), rtol=1e-12)
+    np.testing.assert_allclose(src.doppler_scale_factor, (0.0025, 0.0025, 0.001), rtol=1e-12)
+    assert src.doppler_misalignment == pytest.approx(2.0e-3, rel=1e-12)
+
+
 # --- SP mission flights: the engine's inputs of the book's worked loop ---------------------
 
 
