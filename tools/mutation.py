@@ -283,6 +283,7 @@ PACKAGES: dict[str, Package] = {
             "test_glue_values.py",
             "test_atc10_oracles.py",
             "test_claims.py",
+            "test_papers_mutants.py",
         ],
         copy=("book",),
         import_time=True,
