@@ -306,7 +306,7 @@ PACKAGES: dict[str, Package] = {
             "test_papers_audit.py",
         ],
         sources=("navcore", "tools"),
-        copy=("book",),
+        copy=("book", "ARCHITECTURE.md"),  # the import-layer test reads the layer map
         deselect="errata_and_ledger_links or interactive_ledger_filters",
     ),
     "book_ext": Package(
