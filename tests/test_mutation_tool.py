@@ -88,6 +88,7 @@ def _repo(root: Path) -> Path:
         _write(root / folder / "_build" / "x.html", "")
     _write(root / "book" / "_ext" / "e.py", "# ext\n")
     _write(root / "_config.yml", "title: T\n")
+    _write(root / "ARCHITECTURE.md", "# layers\n")
     _write(root / "pyproject.toml", PYPROJECT)
     return root
 
@@ -184,19 +185,20 @@ def test_mutation_scratch_project_options_of_a_package(repo, tmp_path, monkeypat
 
 def test_mutation_scratch_project_of_the_tools_package(repo, tmp_path):
     """Oracle: the repository's own ``tools`` package: its tests, its deselection, the tools
-    among the sources (so not copied again) and the book copied."""
+    among the sources (so not copied again), the book and the layer map copied."""
     work = mutation.scratch_project("tools")
     mutmut = tomllib.loads((work / "pyproject.toml").read_text())["tool"]["mutmut"]
     spec = mutation.PACKAGES["tools"]
     assert mutmut["source_paths"] == ["navcore", "tools"]
-    assert mutmut["also_copy"] == ["book"]
+    assert mutmut["also_copy"] == ["book", "ARCHITECTURE.md"]
     assert mutmut["only_mutate"] == ["tools/*"]
     assert mutmut["pytest_add_cli_args_test_selection"] == [
         *("tests/" + t for t in spec.tests),
         "-k",
         "not (errata_and_ledger_links or interactive_ledger_filters)",
     ]
-    assert sorted(p.name for p in work.iterdir()) == ["book", "navcore", "pyproject.toml", "tests", "tools"]
+    names = sorted(p.name for p in work.iterdir())
+    assert names == ["ARCHITECTURE.md", "book", "navcore", "pyproject.toml", "tests", "tools"]
 
 
 def test_mutation_scratch_project_refreshes_copies_and_drops_old_verdicts(repo, tmp_path, monkeypatch):
