@@ -60,6 +60,39 @@ def _owner(qualname: str) -> tuple[object, object | None]:
     raise ValueError(qualname)
 
 
+def _automodules() -> set[str]:
+    """The modules the reference renders: its pages' ``automodule`` directives."""
+    from pathlib import Path
+
+    pages = (Path(__file__).resolve().parents[1] / "book" / "reference").iterdir()
+    text = "\n".join(p.read_text(encoding="utf-8") for p in pages if p.suffix in (".rst", ".md"))
+    return set(re.findall(r"automodule::\s*(navcore[\w.]*)", text))
+
+
+def _rendered(target: str, role: str) -> bool:
+    """Whether a full path into navcore names something the reference renders: a module it
+    documents, a public name of one (its ``__all__``), or a documented member of such a class
+    (``navcore.book`` is not in the reference, so ``navcore.book.claims_table`` resolves to
+    nothing: a strict build failed on it in December 2026)."""
+    modules = _automodules()
+    if target in modules:
+        return True
+    parts = target.split(".")
+    for cut in range(len(parts) - 1, 0, -1):
+        name = ".".join(parts[:cut])
+        if name not in modules:
+            continue
+        module = importlib.import_module(name)
+        head, *rest = parts[cut:]
+        if head not in getattr(module, "__all__", ()):
+            return False
+        if not rest:
+            return True
+        owner = getattr(module, head, None)
+        return len(rest) == 1 and inspect.isclass(owner) and _documented_member(owner, rest[0], role)
+    return False
+
+
 def unresolved(qualname: str, doc: str) -> list[str]:
     """The short references of ``doc`` (the docstring of ``qualname``) that resolve to nothing
     the reference documents: not in the module's ``__all__``, not a member of the class."""
@@ -68,8 +101,11 @@ def unresolved(qualname: str, doc: str) -> list[str]:
     out = []
     for role, target in _ROLE.findall(doc):
         head, _, member = target.partition(".")
-        if head == "navcore":
-            continue  # a full path into navcore: left to Sphinx
+        if head == "navcore":  # a full path into navcore: a module the reference renders
+            if _rendered(target, role):
+                continue
+            out.append(f":{role}:`{target}`")
+            continue
         if member:  # Class.member: a public class of this module and one of its members
             owner = getattr(module, head, None)
             if "." not in member and head in public and inspect.isclass(owner):
@@ -121,6 +157,22 @@ def test_the_check_finds_a_reference_outside_navcore():
     assert unresolved("navcore.claims.evaluation.Evaluation", doc) == [
         ":func:`numpy.random.default_rng`",
         ":func:`dataclasses.replace`",
+    ]
+
+
+def test_the_check_finds_a_full_path_to_something_the_reference_does_not_render():
+    """A full path resolves only to what the reference renders: ``navcore.book`` (the pages'
+    helpers) is not in it, nor a private helper of a module that is (a strict build failed on
+    ``navcore.book.claims_table`` in a Claim docstring, December 2026)."""
+    doc = (
+        ":func:`navcore.book.claims_table`, :func:`navcore.claims.quotes._no_such_helper`, "
+        ":mod:`navcore.claims.quotes`, :attr:`navcore.claims.declarations.Claim.table`, "
+        ":class:`navcore.claims.declarations.Claim`, :meth:`navcore.claims.declarations.Claim.nope`"
+    )
+    assert unresolved("navcore.claims.evaluation.Evaluation", doc) == [
+        ":func:`navcore.book.claims_table`",
+        ":func:`navcore.claims.quotes._no_such_helper`",
+        ":meth:`navcore.claims.declarations.Claim.nope`",
     ]
 
 

@@ -328,7 +328,7 @@ class Claim:
     table : str
         The name of the claims table on its page (``discussed_in``) that shows it, for a claim
         its locator's printed item does not place; a page selects it with
-        ``claims_table(paper, table=...)`` (:func:`navcore.book.claims_table`). Kebab-case
+        ``navcore.book.claims_table(paper, table=...)`` (the book pages' helper). Kebab-case
         (``"heading"``, ``"fig5-bounds"``); empty for a claim its printed item places. A table
         name is the page's: the claims that give it are all discussed on one page.
     aliases : tuple of str
