@@ -251,6 +251,7 @@ PACKAGES: dict[str, Package] = {
             "test_ledger_trailing_zeros.py",
             "test_ledger_note_text.py",
             "test_plain_math.py",
+            "test_ledger_sample_mutants.py",
             "test_book_format.py",
         ],
         deselect="each_published_input_moves or every_tolerance_has_a_policy or no_old_id_left",
