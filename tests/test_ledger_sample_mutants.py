@@ -111,3 +111,20 @@ def test_text_widths_by_hand():
 def test_math_widths_by_hand(tex, width):
     """Oracle: Computer Modern widths of ``_EM`` summed by hand for each formula."""
     assert math_em(tex) == pytest.approx(width)
+
+
+def test_envelope_lead_names_only_an_undecided_other_reading():
+    """Oracle: ``Evaluation.note``'s rule, sentences written by hand: the envelope sentence's
+    lead names another reading only when that reading is undecided; a decided other reading
+    (listed first) is not named."""
+    from test_ledger_mutation_note import NAME, OTHER, USED, ev, reading
+
+    inputs = ({"name": "x", "provenance": "assumed"}, {"name": "p", "provenance": "published"})
+    kw = dict(band=(1.0, 90.0), envelope=(0.5, 150.0), inputs=inputs, status="not-reproducible")
+    tail = "runs over the 1 assumed inputs do not reach the printed value, but the inputs' "
+    decided = (reading(USED, 2.0, nominal=True), reading(OTHER, 20.0))
+    assert ". The " + tail in ev(readings=decided, **kw).note()
+    code = {NAME + "code": "the other reading"}
+    both = (*decided, reading(code, 30.0, undecided=True))
+    lead = "With the chip rate read as the other reading ($1.023 \\times 10^{7}$ Hz), the " + tail
+    assert lead in ev(readings=both, **kw).note()
