@@ -18,7 +18,7 @@ from navcore.claims.json_coding import jsonable
 from navcore.claims.run_store import RunMemo, RunStore
 from navcore.formatting import number_formatter, unit_text
 from navcore.ledger.summary import findings_phrase
-from navcore.ledger.text import _text_em, math_em
+from navcore.ledger.text import _text_em, math_breaks, math_em, quote_math
 
 
 def test_input_set_records_the_module_that_makes_it(monkeypatch):
@@ -128,3 +128,30 @@ def test_envelope_lead_names_only_an_undecided_other_reading():
     both = (*decided, reading(code, 30.0, undecided=True))
     lead = "With the chip rate read as the other reading ($1.023 \\times 10^{7}$ Hz), the " + tail
     assert lead in ev(readings=both, **kw).note()
+
+
+def test_math_breaks_after_a_right_delimiter_and_inside_brackets():
+    """Oracle: ``math_breaks``'s docstring examples, cut by hand at the outer relations and
+    operators (after ``\\right|``'s delimiter the scan goes on; with ``brackets``, inside the
+    outermost bracket only, not inside ``(k-1)``)."""
+    assert math_breaks(r"\left| a - b \right| = -c + d^{-1}") == [
+        r"\left| a - b \right| ={}",
+        "-c +{}",
+        "d^{-1}",
+    ]
+    assert math_breaks(r"[a(k-1) + b_1 + c_2]^{-1}", brackets=True) == ["[a(k-1) +{}", "b_1 +{}", "c_2]^{-1}"]
+
+
+def test_math_breaks_never_after_a_subscript_sign():
+    """Oracle: TeX's rule, by hand: the ``-`` of ``\\sigma_-`` is a subscript, not a binary
+    operator, so no piece ends after it; the pieces still read as the whole formula."""
+    tex = r"\sigma_- = a_1 b_1 + a_2 b_2"
+    pieces = math_breaks(tex)
+    assert not any(p.endswith("_-{}") for p in pieces)
+    assert " ".join(p.removesuffix("{}") for p in pieces).split() == tex.split()
+
+
+def test_quote_math_closes_two_unopened_groups_in_order():
+    """Oracle: the opening written by hand: a quote that begins inside ``\\left( ... {`` gets
+    the empty ``\\left.`` and then the brace, outermost first."""
+    assert quote_math(r"x} \right) = 2") == r"\left.{x} \right) = 2"
