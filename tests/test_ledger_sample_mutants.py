@@ -18,7 +18,7 @@ from navcore.claims.json_coding import jsonable
 from navcore.claims.run_store import RunMemo, RunStore
 from navcore.formatting import number_formatter, unit_text
 from navcore.ledger.summary import findings_phrase
-from navcore.ledger.text import _text_em, math_breaks, math_em, quote_math
+from navcore.ledger.text import _text_em, math_breaks, math_em, quote_below, quote_math
 
 
 def test_input_set_records_the_module_that_makes_it(monkeypatch):
@@ -155,3 +155,10 @@ def test_quote_math_closes_two_unopened_groups_in_order():
     """Oracle: the opening written by hand: a quote that begins inside ``\\left( ... {`` gets
     the empty ``\\left.`` and then the brace, outermost first."""
     assert quote_math(r"x} \right) = 2") == r"\left.{x} \right) = 2"
+
+
+def test_quote_below_only_when_strictly_wider_than_the_bound():
+    """Oracle: ``quote_below``'s docstring ("wider than 17.5 em") and ``_EM`` by hand: 35 digits
+    are 35 x 0.5 = 17.5 em exactly (binary-exact), not wider; 36 digits are 18 em."""
+    assert quote_below("$" + "1" * 35 + "$") is False
+    assert quote_below("$" + "1" * 36 + "$") is True
