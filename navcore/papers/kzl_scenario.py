@@ -467,12 +467,14 @@ _RUNS: RunMemo[MonteCarloResult] = RunMemo(_STORE, MonteCarloResult, size=1024)
 
 
 class _RunArguments(NamedTuple):
-    """One configuration's run: its scenario, ensemble size, extra arguments and key."""
+    """One configuration's run: its scenario, ensemble size, extra arguments, key and label (the
+    readable prefix of its file name in the store)."""
 
     scenario: Scenario
     runs: int
     extra: dict[str, int]
     key: str
+    label: str
 
 
 def _run_arguments(mode: str, initialise: bool, imu_name: str) -> _RunArguments:
@@ -484,7 +486,7 @@ def _run_arguments(mode: str, initialise: bool, imu_name: str) -> _RunArguments:
     extra = {"attitude_min_sats": int(IN.attitude_min_sats)} if mode in ("tc_att", "all") else {}
     runs = n_runs()
     key = monte_carlo_key(sc, cast(Mode, mode), runs, SEED, initialise=initialise, **extra)
-    return _RunArguments(sc, runs, extra, key)
+    return _RunArguments(sc, runs, extra, key, f"{mode}-{initialise}")
 
 
 def _echo(result: MonteCarloResult, sc: Scenario) -> MonteCarloResult:
@@ -496,10 +498,10 @@ def _echo(result: MonteCarloResult, sc: Scenario) -> MonteCarloResult:
 
 @input_cache
 def _monte_carlo(mode: str, initialise: bool, imu_name: str) -> MonteCarloResult:
-    sc, runs, extra, key = _run_arguments(mode, initialise, imu_name)
+    sc, runs, extra, key, label = _run_arguments(mode, initialise, imu_name)
     result = _RUNS.get_or_run(
         key,
-        f"{mode}-{initialise}",  # the readable prefix of the run's file name in the store
+        label,
         lambda: run_monte_carlo(sc, cast(Mode, mode), runs, SEED, initialise=initialise, **extra),
     )
     return _echo(result, sc)
@@ -541,7 +543,7 @@ def monte_carlo(mode: str, initialise: bool = True, imu_name: str = "table1") ->
         results = _RUNS.get_or_run_batched(
             [args for _, args in ahead],
             key=lambda args: args.key,
-            label=lambda args: f"{mode}-{initialise}",
+            label=lambda args: args.label,
             group=lambda args: (
                 args.runs,
                 args.extra.get("attitude_min_sats", 4),
